@@ -1,0 +1,111 @@
+"""Force-law exponents as exact rationals.
+
+The series in tau^(1/p) only exists when alpha and gamma are rational; the paper
+approximates them by q_alpha/p and q_gamma/p with a common denominator p. We do the
+same, and say how far the rational is from a float the user gave.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+
+from .errors import ParameterError
+
+#: Largest denominator accepted when a float must be turned into a rational.
+MAX_DENOMINATOR = 12
+#: A float is taken as the rational r when |float - r| is at most this.
+EXACT_FLOAT_TOLERANCE = 1e-12
+
+
+def parse_exponent(field: str, value, *, minimum: Fraction, inclusive: bool,
+                   max_denominator: int = MAX_DENOMINATOR) -> tuple[Fraction, float]:
+    """Read an exponent given as "3/2", "1", 1.5, Fraction(3, 2) or a float.
+
+    Returns ``(rational, approximation_error)``: the error is 0 when the input is
+    exactly that rational, otherwise ``|float(input) - rational|`` after bounding the
+    denominator by ``max_denominator``.
+    """
+    bound = f"{'>=' if inclusive else '>'} {minimum}"
+    allowed = f"must be a rational number {bound} (e.g. 3/2), denominator <= {max_denominator}"
+    if isinstance(value, bool):
+        raise ParameterError(field, value, allowed)
+    if isinstance(value, Fraction):
+        exact = value
+    elif isinstance(value, int):
+        exact = Fraction(value)
+    elif isinstance(value, float):
+        if not math.isfinite(value):
+            raise ParameterError(field, value, allowed)
+        exact = None
+    elif isinstance(value, str):
+        text = value.strip()
+        try:
+            exact = Fraction(text)
+        except (ValueError, ZeroDivisionError):
+            raise ParameterError(field, value, allowed) from None
+        if "/" not in text and ("." in text or "e" in text.lower()):
+            # A decimal string is a float in disguise: treat it like one.
+            value, exact = float(exact), None
+    else:
+        raise ParameterError(field, value, allowed)
+
+    if exact is None:
+        approx = Fraction(value).limit_denominator(max_denominator)
+        error = abs(float(approx) - value)
+        if error <= EXACT_FLOAT_TOLERANCE * max(1.0, abs(value)):
+            error = 0.0
+        exact = approx
+    else:
+        error = 0.0
+        if exact.denominator > max_denominator:
+            raise ParameterError(field, value, allowed)
+
+    if exact < minimum or (exact == minimum and not inclusive):
+        raise ParameterError(field, value, allowed)
+    return exact, error
+
+
+@dataclass(frozen=True)
+class Exponents:
+    """alpha (elastic) and gamma (dissipative) as rationals q_alpha/p and q_gamma/p."""
+
+    alpha: Fraction
+    gamma: Fraction
+    alpha_error: float = 0.0
+    gamma_error: float = 0.0
+
+    @classmethod
+    def parse(cls, alpha, gamma) -> "Exponents":
+        a, ea = parse_exponent("alpha", alpha, minimum=Fraction(0), inclusive=False)
+        g, eg = parse_exponent("gamma", gamma, minimum=Fraction(0), inclusive=True)
+        return cls(a, g, ea, eg)
+
+    @property
+    def p(self) -> int:
+        """Least common denominator of alpha and gamma."""
+        return math.lcm(self.alpha.denominator, self.gamma.denominator)
+
+    @property
+    def q_alpha(self) -> int:
+        return int(self.alpha * self.p)
+
+    @property
+    def q_gamma(self) -> int:
+        return int(self.gamma * self.p)
+
+    @property
+    def omega_exponent(self) -> Fraction:
+        """Power of the impact speed g in Omega: (alpha - 1 - 2 gamma) / (gamma + 1)."""
+        return (self.alpha - 1 - 2 * self.gamma) / (self.gamma + 1)
+
+    def __str__(self) -> str:
+        return f"alpha={self.alpha}, gamma={self.gamma}"
+
+
+def as_exponents(alpha, gamma=None) -> Exponents:
+    """Accept an Exponents object, or anything parse() takes."""
+    if isinstance(alpha, Exponents) and gamma is None:
+        return alpha
+    return Exponents.parse(alpha, gamma)

@@ -1,0 +1,101 @@
+"""Material parameters and the scaling that reduces the collision to one parameter Omega.
+
+    xi'' + D1 xi^alpha + D2 xi^gamma xi' = 0,  xi(0) = 0, xi'(0) = g
+
+becomes x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1 with xi = A x,
+t = B tau, A = (g / D2)^(1/(gamma+1)), B = (D2 g^gamma)^(-1/(gamma+1)) and
+
+    Omega = D1 g^((alpha-1-2 gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1)).
+
+This form is the paper's D* v^((alpha-1-2gamma)/(gamma+1)) with v = D2^(1/gamma) g
+rewritten so that it also holds for gamma = 0, where D* is undefined.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import ParameterError, require_positive_finite
+from .exponents import Exponents, as_exponents
+
+VISCOUS = "viscous-dominant"
+ELASTIC = "elastic-dominant"
+
+
+def positive_speeds(g, field: str = "g") -> np.ndarray:
+    """Impact speeds as a float array, every entry finite and > 0."""
+    try:
+        arr = np.asarray(g, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(field, g, "must be finite numbers > 0") from None
+    if arr.size == 0 or not np.all(np.isfinite(arr)) or not np.all(arr > 0):
+        bad = arr[~(np.isfinite(arr) & (arr > 0))] if arr.size else arr
+        shown = bad.flat[0] if bad.size else g
+        raise ParameterError(field, float(shown) if bad.size else shown, "must be finite numbers > 0")
+    return arr
+
+
+@dataclass(frozen=True)
+class Material:
+    """A viscoelastic pair: force-law exponents and the constants D1 (elastic), D2 (dissipative)."""
+
+    exponents: Exponents
+    D1: float
+    D2: float
+
+    def __init__(self, alpha, gamma, D1, D2):
+        object.__setattr__(self, "exponents", as_exponents(alpha, gamma))
+        object.__setattr__(self, "D1", require_positive_finite("D1", D1))
+        object.__setattr__(self, "D2", require_positive_finite("D2", D2))
+
+    @property
+    def alpha(self):
+        return self.exponents.alpha
+
+    @property
+    def gamma(self):
+        return self.exponents.gamma
+
+    def omega(self, g):
+        """Omega at impact speed(s) g; same shape as g (a float for a scalar)."""
+        speeds = positive_speeds(g)
+        a, c = self.alpha, self.gamma
+        # Work in logs: D2^(-(alpha+1)/(gamma+1)) overflows for tiny D2 long before Omega does.
+        log_omega = (math.log(self.D1) + float((a - 1 - 2 * c) / (c + 1)) * np.log(speeds)
+                     - float((a + 1) / (c + 1)) * math.log(self.D2))
+        out = np.exp(log_omega)
+        return float(out) if np.ndim(out) == 0 else out
+
+    @property
+    def d_star(self) -> float | None:
+        """The paper's D* = D1 / D2^((alpha-1)/gamma); None for gamma = 0, where it is undefined."""
+        if self.gamma == 0:
+            return None
+        return math.exp(math.log(self.D1) - float((self.alpha - 1) / self.gamma) * math.log(self.D2))
+
+    @property
+    def regime(self) -> str | None:
+        """'viscous-dominant' for D* < 1, 'elastic-dominant' otherwise (None when D* is undefined)."""
+        d = self.d_star
+        if d is None:
+            return None
+        return VISCOUS if d < 1 else ELASTIC
+
+    def length_scale(self, g):
+        """A with xi = A x."""
+        speeds = positive_speeds(g)
+        out = (speeds / self.D2) ** (1.0 / float(self.gamma + 1))
+        return float(out) if np.ndim(out) == 0 else out
+
+    def time_scale(self, g):
+        """B with t = B tau."""
+        speeds = positive_speeds(g)
+        out = (self.D2 * speeds ** float(self.gamma)) ** (-1.0 / float(self.gamma + 1))
+        return float(out) if np.ndim(out) == 0 else out
+
+    def as_dict(self) -> dict:
+        return {"alpha": str(self.alpha), "gamma": str(self.gamma), "D1": self.D1, "D2": self.D2,
+                "d_star": self.d_star, "regime": self.regime}
