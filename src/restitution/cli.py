@@ -1,0 +1,148 @@
+"""Command line: `restitution series`, `restitution collide`.
+
+User mistakes end in one line on stderr and exit status 2, never a traceback.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+
+from .errors import ParameterError
+
+EXIT_USAGE = 2
+
+
+class _OneLineParser(argparse.ArgumentParser):
+    """argparse prints the whole usage block on error; we print one line."""
+
+    def error(self, message):  # noqa: D401 - argparse hook
+        raise _UsageError(f"{self.prog}: {message}")
+
+
+class _UsageError(Exception):
+    pass
+
+
+def _number(text: str) -> float:
+    """A float from the command line; NaN and inf pass here and are judged by the physics."""
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not an integer: {text!r}") from None
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must be >= 0, got {value}")
+    return value
+
+
+def _add_exponents(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--alpha", required=True, help="elastic exponent, a rational > 0 such as 3/2")
+    p.add_argument("--gamma", required=True, help="dissipative exponent, a rational >= 0 such as 1")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _OneLineParser(prog="restitution",
+                            description="Coefficient of restitution of viscoelastic collisions.")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=_OneLineParser)
+
+    s = sub.add_parser("series", help="exact perturbation series x_n(tau) of the scaled equation")
+    _add_exponents(s)
+    s.add_argument("--omega-order", type=_positive_int, default=4, help="highest power of Omega (default 4)")
+    s.add_argument("--max-power", default="11", help="highest power of tau kept, a rational >= 1 (default 11)")
+    s.add_argument("--inverse", action="store_true", help="the inverse collision x'' + Omega x^a - x^g x' = 0")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
+
+    c = sub.add_parser("collide", help="integrate one collision: eps, tau_b, x_b, tau_c, x_c")
+    _add_exponents(c)
+    c.add_argument("--omega", type=_number, help="scaled parameter Omega > 0")
+    c.add_argument("--D1", type=_number, help="elastic constant D1 > 0 (with --D2 and --g)")
+    c.add_argument("--D2", type=_number, help="dissipative constant D2 > 0")
+    c.add_argument("--g", type=_number, help="impact speed g > 0")
+    c.add_argument("--rtol", type=_number, default=1e-12, help="relative tolerance (default 1e-12)")
+    c.add_argument("--json", action="store_true", help="machine-readable output")
+    return parser
+
+
+def _omega_from_args(args) -> float:
+    physical = [args.D1, args.D2, args.g]
+    if args.omega is not None:
+        if any(v is not None for v in physical):
+            raise _UsageError("restitution collide: give either --omega or all of --D1 --D2 --g, not both")
+        return args.omega
+    if any(v is None for v in physical):
+        raise _UsageError("restitution collide: give --omega, or all of --D1 --D2 --g")
+    from .model import Material
+    return Material(args.alpha, args.gamma, args.D1, args.D2).omega(args.g)
+
+
+def _report_approximation(args) -> None:
+    """Say on stderr when a float exponent was replaced by a nearby rational, and by how much."""
+    from .exponents import Exponents
+    ex = Exponents.parse(args.alpha, args.gamma)
+    for name, given, exact, err in (("alpha", args.alpha, ex.alpha, ex.alpha_error),
+                                    ("gamma", args.gamma, ex.gamma, ex.gamma_error)):
+        if err:
+            print(f"restitution: note: {name} = {given} taken as {exact} (|difference| = {err:.3g})",
+                  file=sys.stderr)
+
+
+def _write_json(data, out) -> None:
+    json.dump(data, out, separators=(", ", ": "))
+    out.write("\n")
+
+
+def _run_series(args, out) -> None:
+    from .series import perturbation_series
+    ps = perturbation_series(args.alpha, args.gamma, args.omega_order, args.max_power,
+                             "inverse" if args.inverse else "forward")
+    _report_approximation(args)
+    data = ps.as_dict()
+    if args.json:
+        _write_json(data, out)
+        return
+    out.write(f"{data['direction']} collision, alpha = {data['alpha']}, gamma = {data['gamma']}, "
+              f"p = {data['p']}: x = sum_n Omega^n x_n(tau)\n")
+    out.write(f"{'n':>3}  {'power':>8}  coefficient\n")
+    for n, terms in data["orders"].items():
+        for power, coeff in terms:
+            out.write(f"{n:>3}  {power:>8}  {coeff}\n")
+
+
+def _run_collide(args, out) -> None:
+    omega = _omega_from_args(args)
+    from .collision import collide
+    result = collide(args.alpha, args.gamma, omega, rtol=args.rtol).as_dict()
+    _report_approximation(args)
+    if args.json:
+        _write_json(result, out)
+        return
+    for key, value in result.items():
+        shown = f"{value:.12g}" if isinstance(value, float) and math.isfinite(value) else value
+        out.write(f"{key:>6}  {shown}\n")
+
+
+def main(argv=None, out=None) -> int:
+    out = sys.stdout if out is None else out
+    try:
+        args = build_parser().parse_args(argv)
+        {"series": _run_series, "collide": _run_collide}[args.command](args, out)
+    except _UsageError as exc:
+        print(str(exc), file=sys.stderr)
+        return EXIT_USAGE
+    except ParameterError as exc:
+        print(f"restitution: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
