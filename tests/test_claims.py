@@ -1,0 +1,124 @@
+"""The claims ledger: values computed by the library, verdicts decided from them (and only them)."""
+
+import copy
+import math
+
+import pytest
+
+from restitution import claims, printed
+from restitution.connection import Reading
+
+PAPER = {"alpha": printed.ALPHA, "gamma": printed.GAMMA, "D1": printed.D1, "D2": printed.D2}
+FAST = {"points": 6, "tracking_samples": 301, "radius_max_power": 61,
+        "readings": [Reading(omega_orders=2), Reading()]}
+
+
+@pytest.fixture(scope="module")
+def values():
+    return claims.compute_claim_values(PAPER, FAST)
+
+
+@pytest.fixture(scope="module")
+def rows(values):
+    return claims.build_claims(values)
+
+
+def _find(rows, text):
+    hits = [r for r in rows if text in r["claim"]]
+    assert hits, f"no row with {text!r}"
+    return hits[0]
+
+
+def test_every_row_has_every_column_and_a_valid_verdict(rows):
+    assert len(rows) > 20
+    for r in rows:
+        assert tuple(r) == claims.COLUMNS
+        assert r["verdict"] in claims.VERDICTS
+        assert r["claim"] and r["where"] and r["our_value"] != ""
+
+
+def test_every_claim_of_the_issue_has_a_row(rows):
+    for text in ["forward series x_0", "inverse series x~_4", "D* =", "Omega at g", "tau_b at g",
+                 "forward series stop tracking", "inverse series stop tracking", "reading P-N2",
+                 "c0 against the least-squares fit", "c2 against", "Omega proportional to g^(-3/4)",
+                 "terms in g^(1/4)", "shape of figure 4", "Taylor series valid", "G tanh",
+                 "Delta = tau_b - tau_0", "Delta~ ="]:
+        _find(rows, text)
+
+
+def test_computed_values_and_their_verdicts(values, rows):
+    # computed, not typed: the formula gives ~0.473 where the paper prints 0.5521
+    assert values["omega_at_g"] == pytest.approx(0.4726, abs=1e-4)
+    assert _find(rows, "Omega at g")["verdict"] == claims.NOT_REPRODUCED
+    assert values["d_star"] == pytest.approx(2.835e-3, rel=1e-3)
+    assert _find(rows, "D* =")["verdict"] == claims.REPRODUCED
+    assert all(r["verdict"] == claims.REPRODUCED for r in rows if "series x" in r["claim"])
+    assert _find(rows, "Omega proportional")["verdict"] == claims.REPRODUCED
+    assert values["radius_forward"] == pytest.approx(math.pi / math.sqrt(2), rel=1e-4)
+    assert values["radius_inverse"] == pytest.approx(math.pi / math.sqrt(2), rel=1e-4)
+    assert _find(rows, "forward damped-only Taylor")["verdict"] == claims.REPRODUCED
+    assert _find(rows, "inverse damped-only Taylor")["verdict"] == claims.NOT_REPRODUCED
+    assert _find(rows, "G tanh")["verdict"] == claims.NOT_REPRODUCED
+    assert _find(rows, "Delta = tau_b")["verdict"] == claims.REPRODUCED
+
+
+@pytest.mark.parametrize("path,new,claim,before,after", [
+    (("omega_at_g",), printed.OMEGA_AT_G, "Omega at g", claims.NOT_REPRODUCED, claims.REPRODUCED),
+    (("d_star",), 1e-2, "D* =", claims.REPRODUCED, claims.NOT_REPRODUCED),
+    (("tau_b_at_g",), 2.21, "tau_b at g", claims.NOT_REPRODUCED, claims.REPRODUCED),
+    (("radius_inverse",), math.sqrt(2), "inverse damped-only Taylor", claims.NOT_REPRODUCED, claims.REPRODUCED),
+    (("omega_g_exponent",), "-2/3", "Omega proportional", claims.REPRODUCED, claims.NOT_REPRODUCED),
+    (("delta_equal",), [False, True], "Delta = tau_b", claims.REPRODUCED, claims.NOT_REPRODUCED),
+])
+def test_perturbing_a_value_flips_its_verdict(values, path, new, claim, before, after):
+    assert _find(claims.build_claims(values), claim)["verdict"] == before
+    changed = copy.deepcopy(values)
+    changed[path[0]] = new
+    assert _find(claims.build_claims(changed), claim)["verdict"] == after
+
+
+def test_a_reading_that_hit_the_printed_coefficients_would_be_reproduced(values):
+    changed = copy.deepcopy(values)
+    changed["readings"][0]["c"] = list(printed.PRINTED_C)
+    row = [r for r in claims.build_claims(changed) if "reading" in r["claim"]][0]
+    assert row["verdict"] == claims.REPRODUCED
+    changed["readings"][0]["c"][2] += 1e-3
+    row = [r for r in claims.build_claims(changed) if "reading" in r["claim"]][0]
+    assert row["verdict"] == claims.NOT_REPRODUCED
+
+
+def test_series_mismatch_is_reported(values):
+    changed = copy.deepcopy(values)
+    changed["series"][1]["n_match"] -= 1
+    changed["series"][1]["mismatches"] = [["7/2", "-4/35", "-3/35"]]
+    row = claims.build_claims(changed)[1]
+    assert row["verdict"] == claims.NOT_REPRODUCED and "7/2" in row["note"]
+
+
+def test_tracking_verdict_depends_on_the_values(values):
+    changed = copy.deepcopy(values)
+    for thr in changed["tracking"]["forward"].values():
+        for order in thr:
+            thr[order] = printed.FORWARD_DIVERGENCE_TAU
+    assert _find(claims.build_claims(changed), "forward series stop tracking")["verdict"] == claims.REPRODUCED
+    first = next(iter(changed["tracking"]["forward"]))
+    for order in changed["tracking"]["forward"][first]:
+        changed["tracking"]["forward"][first][order] = 1.0
+    assert _find(claims.build_claims(changed), "forward series stop tracking")["verdict"] == claims.AMBIGUOUS
+
+
+def test_eps_exponent_row_turns_reproduced_only_for_a_quarter(values):
+    changed = copy.deepcopy(values)
+    changed["eps_scaling"]["loss_g_exponent_small_g"] = 0.25
+    assert _find(claims.build_claims(changed), "terms in g^(1/4)")["verdict"] == claims.REPRODUCED
+    changed["eps_scaling"]["paper_relation_powers_of_g_quarter"] = False
+    changed["eps_scaling"]["loss_g_exponent_small_g"] = 0.6
+    assert _find(claims.build_claims(changed), "terms in g^(1/4)")["verdict"] == claims.NOT_REPRODUCED
+
+
+def test_other_exponents_make_every_verdict_ambiguous(values):
+    rows = claims.build_claims({"series": None, "alpha": "5/2", "gamma": "1/2"})
+    assert len(rows) == 1 and rows[0]["verdict"] == claims.AMBIGUOUS
+    changed = copy.deepcopy(values)
+    changed["alpha"] = "5/2"
+    assert {r["verdict"] for r in claims.build_claims(changed)} == {claims.AMBIGUOUS}
