@@ -1,0 +1,684 @@
+"""Reference integration of the scaled collision equation.
+
+    x'' + Omega x^alpha + s x^gamma x' = 0,   x(0) = x_start, x'(0) = 1,
+
+with s = +1 for the forward collision and s = -1 for the paper's "inverse" collision (time run
+backwards, so the damping pumps energy in).
+
+x^alpha and x^gamma are not smooth at x = 0, which costs a plain integrator in tau its order
+exactly where contact starts (and where a separation end finishes). With alpha = q_alpha/p and
+gamma = q_gamma/p, the variable u = x^(1/p) turns the equation into a polynomial one,
+
+    dv/du   = -p u^(p-1) (Omega u^q_alpha + s u^q_gamma v) / v,     dtau/du = p u^(p-1) / v,
+
+smooth at u = 0 but singular where v = 0. So a collision is integrated in up to four legs:
+
+1. ``rise``      in u from u_start while v is large (stops when v falls to V_HANDOFF),
+2. ``compress``  in tau up to maximum compression (v = 0),
+3. ``release``   in tau until the force vanishes or x falls below SWITCH_FRACTION * x_b,
+4. ``land``      in u down to u = 0 (separation) unless the force vanishes first.
+
+In the forward legs 3 and 4 the force f = Omega x^(alpha-gamma) + v is carried as a state of its
+own. When Omega is small, v creeps along -Omega x^(alpha-gamma) and f is a tiny difference of two
+nearly equal numbers: computing it by subtraction would make tau_c (and, for alpha <= gamma, the
+whole creeping return) only as accurate as rtol / Omega. Integrated directly, f keeps its own
+relative accuracy.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Callable, Sequence
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from .errors import ParameterError, require_positive_finite
+from .exponents import Exponents, as_exponents
+
+#: Accepted range of the relative tolerance.
+RTOL_MIN, RTOL_MAX = 1e-14, 1e-3
+#: solve_ivp refuses anything tighter than this (it warns and clips); we clip quietly.
+SOLVER_RTOL_FLOOR = 100 * np.finfo(float).eps
+#: atol = ATOL_MARGIN * rtol * (typical size of the component), so that the relative tolerance
+#: governs even when the component is a small fraction of its typical size (e.g. v near tau_b).
+ATOL_MARGIN = 1e-3
+#: Leg 1 hands over to tau when v has fallen to this: far enough from v = 0 for dv/du to stay
+#: tame, and reached while x is still a sizeable fraction of x_b.
+V_HANDOFF = 0.5
+#: Legs in u take at least this many steps (see _integrate).
+U_STEPS_MIN = 16
+#: Leg 3 hands over to u when x < SWITCH_FRACTION * x_b.
+SWITCH_FRACTION = 0.25
+#: Above this ratio of creeping time to relaxation time the release is stiff (only when
+#: alpha <= gamma does the release creep all the way back); there we use Radau instead of DOP853.
+STIFFNESS_LIMIT = 1.0e3
+#: An inverse run still rising this many times above all its natural scales is declared a runaway.
+RUNAWAY_FACTOR = 1.0e12
+
+
+class RunawayError(ParameterError):
+    """The inverse collision never turns around: x~ grows without bound for these parameters."""
+
+
+class IntegrationError(RuntimeError):
+    """solve_ivp failed or a leg did not end the way the physics says it must (a bug, not bad input)."""
+
+
+# ----------------------------------------------------------------------------------- results
+@dataclass(frozen=True)
+class Trajectory:
+    """Samples of the solution at requested tau (samples beyond the end of contact are dropped)."""
+
+    tau: np.ndarray
+    x: np.ndarray
+    v: np.ndarray
+
+
+@dataclass(frozen=True)
+class Collision:
+    """End-of-contact quantities of one forward collision in scaled variables.
+
+    ``end`` is "force" when contact ends where the total force vanishes
+    (Omega x^(alpha-gamma) + x' = 0), "separation" when x returns to 0 first. ``rtol`` is the
+    tolerance the integration ran at (0.0 for a closed form).
+    """
+
+    alpha: Fraction
+    gamma: Fraction
+    omega: float
+    direction: str
+    eps: float
+    tau_b: float
+    x_b: float
+    tau_c: float
+    x_c: float
+    end: str
+    rtol: float
+    trajectory: Trajectory | None = None
+
+    def as_dict(self) -> dict:
+        return {
+            "alpha": str(self.alpha),
+            "gamma": str(self.gamma),
+            "omega": float(self.omega),
+            "eps": float(self.eps),
+            "tau_b": float(self.tau_b),
+            "x_b": float(self.x_b),
+            "tau_c": float(self.tau_c),
+            "x_c": float(self.x_c),
+            "end": self.end,
+        }
+
+
+@dataclass(frozen=True)
+class InverseCollision:
+    """x~'' + Omega~ x~^alpha - x~^gamma x~' = 0 from x~(0) = x_start, x~'(0) = 1 back to x~ = 0."""
+
+    alpha: Fraction
+    gamma: Fraction
+    omega: float
+    x_start: float
+    tau_b: float
+    x_b: float
+    tau_end: float
+    v_end: float
+    rtol: float
+    trajectory: Trajectory | None = None
+
+    def as_dict(self) -> dict:
+        return {
+            "alpha": str(self.alpha),
+            "gamma": str(self.gamma),
+            "omega": float(self.omega),
+            "x_start": float(self.x_start),
+            "tau_b": float(self.tau_b),
+            "x_b": float(self.x_b),
+            "tau_end": float(self.tau_end),
+            "v_end": float(self.v_end),
+        }
+
+
+# ----------------------------------------------------------------------------------- the law
+def _overshoot_is_nan():
+    """A trial stage of a long step may land at x < 0 (only ever past the x_switch event). Its
+    fractional powers are then NaN, which makes solve_ivp reject and shrink the step: exactly what
+    we want, so the warning is noise."""
+    return np.errstate(invalid="ignore")
+
+
+@dataclass(frozen=True)
+class _Law:
+    """The scaled equation with integer exponents of u = x^(1/p); sign = +1 forward, -1 inverse."""
+
+    omega: float
+    p: int
+    qa: int
+    qg: int
+    sign: int
+
+    @classmethod
+    def of(cls, ex: Exponents, omega: float, sign: int) -> "_Law":
+        return cls(omega, ex.p, ex.q_alpha, ex.q_gamma, sign)
+
+    @property
+    def alpha(self) -> float:
+        return self.qa / self.p
+
+    @property
+    def gamma(self) -> float:
+        return self.qg / self.p
+
+    @property
+    def k(self) -> int:
+        """p (alpha - gamma): the power of u in Omega u^k + v, the force up to a positive factor."""
+        return self.qa - self.qg
+
+    def elastic_scale(self) -> float:
+        """x at which the elastic energy alone would absorb the initial kinetic energy 1/2."""
+        return ((self.alpha + 1.0) / (2.0 * self.omega)) ** (1.0 / (self.alpha + 1.0))
+
+    def velocity_scale(self, x: float) -> float:
+        """|x'| of the slow return, where v creeps along -Omega x^(alpha-gamma); capped at 1."""
+        return min(1.0, self.omega * x ** (self.alpha - self.gamma))
+
+    # -- right-hand sides in u, state (v, tau)
+    def du_rhs(self, u, y):
+        v = y[0]
+        w = self.p * u ** (self.p - 1)
+        return np.array([-w * (self.omega * u ** self.qa + self.sign * u ** self.qg * v) / v, w / v])
+
+    def du_jac(self, u, y):
+        v = y[0]
+        w = self.p * u ** (self.p - 1)
+        return np.array([[w * self.omega * u ** self.qa / v ** 2, 0.0], [-w / v ** 2, 0.0]])
+
+    # -- right-hand side in tau, state (x, v)
+    def dtau_rhs(self, tau, y):
+        x, v = y
+        with _overshoot_is_nan():
+            return np.array([v, -self.omega * x ** self.alpha - self.sign * x ** self.gamma * v])
+
+
+@dataclass(frozen=True)
+class _ForceForm:
+    """Forward release with the force carried as a state (see the module docstring).
+
+    In tau the state is (x, v, f), f = Omega x^(alpha-gamma) + v, and v' = -x^gamma f.
+    In u the state is (v, tau, g) with g = Omega u^a + u^m v, a = max(k, 0), m = max(-k, 0):
+    g = f when alpha >= gamma and g = u^m f otherwise, so g stays bounded at u = 0 and has the
+    sign of f. Then Omega u^q_alpha + u^q_gamma v = u^n g with n = min(q_alpha, q_gamma).
+    """
+
+    law: _Law
+
+    @property
+    def a(self) -> int:
+        return max(self.law.k, 0)
+
+    @property
+    def m(self) -> int:
+        return max(-self.law.k, 0)
+
+    @property
+    def n(self) -> int:
+        return min(self.law.qa, self.law.qg)
+
+    # -- tau, state (x, v, f)
+    def dtau_rhs(self, tau, y):
+        x, v, f = y
+        L = self.law
+        with _overshoot_is_nan():
+            xg = x ** L.gamma
+            drift = L.omega * (L.alpha - L.gamma) * x ** (L.alpha - L.gamma - 1.0) * v
+        return np.array([v, -xg * f, -xg * f + drift])
+
+    def dtau_jac(self, tau, y):
+        x, v, f = y
+        L = self.law
+        d = L.alpha - L.gamma
+        with _overshoot_is_nan():
+            xg = x ** L.gamma
+            dxg = L.gamma * x ** (L.gamma - 1.0) if L.gamma else 0.0
+            ddrift_dx = L.omega * d * (d - 1.0) * x ** (d - 2.0) * v
+            ddrift_dv = L.omega * d * x ** (d - 1.0)
+        return np.array([
+            [0.0, 1.0, 0.0],
+            [-dxg * f, 0.0, -xg],
+            [-dxg * f + ddrift_dx, ddrift_dv, -xg],
+        ])
+
+    def dtau_force(self, tau, y):
+        return y[2]
+
+    # -- u, state (v, tau, g)
+    def du_rhs(self, u, y):
+        v, _, g = y
+        L, a, m, n = self.law, self.a, self.m, self.n
+        w = L.p * u ** (L.p - 1)
+        dv = -w * u ** n * g / v
+        dg = -w * u ** L.qg * g / v
+        if a:
+            dg += a * L.omega * u ** (a - 1)
+        if m:
+            dg += m * u ** (m - 1) * v
+        return np.array([dv, w / v, dg])
+
+    def du_jac(self, u, y):
+        v, _, g = y
+        L, m, n = self.law, self.m, self.n
+        w = L.p * u ** (L.p - 1)
+        dg_dv = w * u ** L.qg * g / v ** 2 + (m * u ** (m - 1) if m else 0.0)
+        return np.array([
+            [w * u ** n * g / v ** 2, 0.0, -w * u ** n / v],
+            [-w / v ** 2, 0.0, 0.0],
+            [dg_dv, 0.0, -w * u ** L.qg / v],
+        ])
+
+    def du_force(self, u, y):
+        return y[2]
+
+    def g_from_f(self, u: float, f: float) -> float:
+        return f * u ** self.m
+
+
+# ----------------------------------------------------------------------------------- legs
+@dataclass(frozen=True)
+class _Piece:
+    """One leg's dense output, for sampling the trajectory. In u legs the state is (v, tau, ...)."""
+
+    in_u: bool
+    sol: Callable
+    lo: float   # independent-variable range, sorted
+    hi: float
+    p: int
+
+
+@dataclass(frozen=True)
+class _State:
+    tau: float
+    x: float
+    v: float
+    f: float | None = None   # the carried force, forward release only
+
+
+def _event(fun, *, terminal: bool = True, direction: float = 0.0):
+    """A plain callable tagged the way solve_ivp expects an event (wrapped: methods take no tags)."""
+    def event(t, y):
+        return fun(t, y)
+    event.terminal = terminal
+    event.direction = direction
+    return event
+
+
+def _integrate(fun, span, y0, *, rtol, atol, events=(), jac=None, stiff=False, in_u=False):
+    kwargs = {"method": "Radau", "jac": jac} if stiff else {"method": "DOP853"}
+    if in_u:
+        # Near u = 0 the right-hand side is flat (a factor u^(p-1)), so the first steps grow
+        # large before the error estimate sees the curvature further out; capping them keeps the
+        # global error near rtol for p >= 3 at no extra cost.
+        kwargs["max_step"] = abs(span[1] - span[0]) / U_STEPS_MIN
+    sol = solve_ivp(fun, span, np.asarray(y0, float), rtol=max(rtol, SOLVER_RTOL_FLOOR),
+                    atol=np.asarray(atol, float), events=list(events) or None, dense_output=True,
+                    **kwargs)
+    if sol.status < 0:
+        raise IntegrationError(f"solve_ivp failed on {span}: {sol.message}")
+    return sol
+
+
+def _fired(sol, i: int) -> bool:
+    return sol.status == 1 and sol.t_events[i].size > 0
+
+
+def _rise(law: _Law, x_start: float, x_stop: float, rtol: float, pieces: list) -> _State:
+    """Leg 1: leave x = x_start in u until v has fallen to V_HANDOFF or x reaches x_stop."""
+    u0, u1 = x_start ** (1.0 / law.p), x_stop ** (1.0 / law.p)
+    if u1 <= u0:
+        return _State(0.0, x_start, 1.0)
+    handoff = _event(lambda u, y: y[0] - V_HANDOFF, direction=-1)
+    sol = _integrate(law.du_rhs, (u0, u1), [1.0, 0.0], rtol=rtol,
+                     atol=ATOL_MARGIN * rtol * np.array([1.0, x_stop]), events=[handoff], in_u=True)
+    u, (v, tau) = sol.t[-1], sol.y[:, -1]
+    pieces.append(_Piece(True, sol.sol, u0, u, law.p))
+    return _State(tau, u ** law.p, v)
+
+
+def _compress(law: _Law, start: _State, rtol: float, pieces: list) -> _State:
+    """Leg 2: in tau up to maximum compression, v = 0.
+
+    Forward, v' < -Omega x^alpha < 0 while v > 0, so the turn must come. Inverse, the damping pumps
+    energy in and the turn may never come: see _Runaway.
+    """
+    top = _event(lambda t, y: y[1], direction=-1)
+    events = [top]
+    runaway = _Runaway(law, start.x) if law.sign < 0 else None
+    if runaway is not None:
+        runaway.check_start(start)
+        events += [_event(runaway.trapped, direction=1), _event(runaway.too_far, direction=1)]
+    atol = ATOL_MARGIN * rtol * np.array([start.x, law.velocity_scale(start.x)])
+    sol = _integrate(law.dtau_rhs, (start.tau, start.tau + _time_guard(law, start.x)), [start.x, start.v],
+                     rtol=rtol, atol=atol, events=events)
+    if runaway is not None and not _fired(sol, 0):
+        # Trapped, too far, or (on the separatrix itself) still rising at the time guard.
+        runaway.fail(sol.y[0, -1], proved=_fired(sol, 1))
+    if not _fired(sol, 0):
+        raise IntegrationError("maximum compression not reached within the time guard")
+    pieces.append(_Piece(False, sol.sol, start.tau, sol.t[-1], law.p))
+    return _State(sol.t[-1], sol.y[0, -1], sol.y[1, -1])
+
+
+class _Runaway:
+    """Detect an inverse collision that never turns around.
+
+    Above the nullcline v = Omega x^(alpha-gamma) the negative damping speeds the motion up. On the
+    curve v = 2 Omega x^(alpha-gamma), dv/dx = x^gamma / 2, which is steeper than the curve itself
+    wherever x^(2 gamma + 1 - alpha) >= 4 Omega (alpha - gamma). So once v >= 2 Omega x^(alpha-gamma)
+    at such an x, v can never come back down to 0: the run is proved to escape (this needs
+    alpha <= 2 gamma + 1; for alpha > 2 gamma + 1, v <= 1 + x^(gamma+1)/(gamma+1) means the elastic
+    force always wins in the end). E.g. alpha = 1, gamma = 0 from x~ = 0 escapes iff Omega~ <= 1/4.
+    Near that threshold the turn can come at astronomically large x~ (e^(pi/(2w))/w for the linear
+    case), so a bound far beyond every natural scale stops the run as well.
+    """
+
+    def __init__(self, law: _Law, x_start: float):
+        self.law = law
+        self.d = law.alpha - law.gamma
+        self.excess = 2.0 * law.gamma + 1.0 - law.alpha
+        scales = [1.0, x_start, law.elastic_scale()]
+        if law.qa != law.qg:
+            scales.append(law.omega ** (-1.0 / self.d))
+        if self.excess < 0:
+            scales.append(((law.gamma + 1.0) / law.omega) ** (-1.0 / self.excess))
+        self.x_far = RUNAWAY_FACTOR * max(scales)
+
+    def trapped(self, tau, y) -> float:
+        """>= 0 exactly inside the escape region described in the class docstring."""
+        if self.excess < 0:
+            return -1.0
+        x, v = y
+        above = v - 2.0 * self.law.omega * x ** self.d
+        far_enough = x ** self.excess - 4.0 * self.law.omega * self.d
+        return min(above, far_enough)
+
+    def too_far(self, tau, y) -> float:
+        return y[0] - self.x_far
+
+    def check_start(self, start: _State) -> None:
+        if self.trapped(start.tau, [start.x, start.v]) >= 0.0:
+            self.fail(start.x, proved=True)
+
+    def fail(self, x: float, *, proved: bool) -> None:
+        if proved:
+            why = (f"x~' >= 2 Omega~ x~^(alpha-gamma) at x~ = {x:.3g}, from where negative damping "
+                   "outruns the elastic force for good")
+        else:
+            why = (f"still rising at x~ = {x:.3g}, beyond {RUNAWAY_FACTOR:g} times every natural scale "
+                   "or after a time no returning run comes near")
+        raise RunawayError("omega_tilde", self.law.omega,
+                           f"the inverse collision does not turn around: {why}")
+
+
+def _time_guard(law: _Law, x: float) -> float:
+    """A bound on any leg's duration that no legitimate run comes near (it only stops bugs)."""
+    return 1e6 * (1.0 + x / max(law.velocity_scale(x), 1e-300))
+
+
+def _release_forward(law: _Law, top: _State, rtol: float, pieces: list, stiff: bool):
+    """Leg 3, forward: (x, v, f) in tau until f = 0 (force end) or x < SWITCH_FRACTION x_b."""
+    form = _ForceForm(law)
+    x_switch = SWITCH_FRACTION * top.x
+    f0 = law.omega * top.x ** (law.alpha - law.gamma) + top.v
+    vs = law.velocity_scale(top.x)
+    atol = ATOL_MARGIN * rtol * np.array([top.x, vs, _force_scale(law, top.x)])
+    low = _event(lambda t, y: y[0] - x_switch, direction=-1)
+    events = [low]
+    if law.qa > law.qg:
+        # Only then can f reach 0: at f = 0, f' = Omega (alpha-gamma) x^(alpha-gamma-1) v has the
+        # sign of (alpha - gamma) (v < 0). For alpha <= gamma f stays positive but may decay far
+        # below atol, where an event on it would fire on noise.
+        events.append(_event(form.dtau_force, direction=-1))
+    tau, y = top.tau, [top.x, top.v, f0]
+    t_guard = top.tau + _time_guard(law, top.x)
+    if stiff:
+        # Radau is slow at tight tolerances while the fast relaxation of f is still visible, and
+        # DOP853 is cheap there; hand over to Radau once that transient has decayed below atol.
+        t_relax = tau + (math.log(1.0 / rtol) + math.log1p(1.0 / law.omega) + 5.0) / top.x ** law.gamma
+        sol = _integrate(form.dtau_rhs, (tau, t_relax), y, rtol=rtol, atol=atol, events=events)
+        pieces.append(_Piece(False, sol.sol, tau, sol.t[-1], law.p))
+        tau, y = sol.t[-1], sol.y[:, -1]
+    if not stiff or sol.status == 0:
+        sol = _integrate(form.dtau_rhs, (tau, t_guard), y, rtol=rtol, atol=atol, events=events,
+                         jac=form.dtau_jac, stiff=stiff)
+        pieces.append(_Piece(False, sol.sol, tau, sol.t[-1], law.p))
+    x, v, f = sol.y[:, -1]
+    state = _State(sol.t[-1], x, v, f)
+    if len(events) > 1 and _fired(sol, 1):
+        return "force", state
+    if _fired(sol, 0):
+        return "switch", state
+    raise IntegrationError("release ended neither at zero force nor near x = 0 within the time guard")
+
+
+def _force_scale(law: _Law, x_b: float) -> float:
+    """Size of f where it matters. For small Omega, f sinks from Omega x_b^(alpha-gamma) to the level
+    Omega (alpha-gamma) x^(alpha-gamma-1) v / x^gamma ~ v_scale^2 / x_b^(gamma+1) set by its drift
+    term, where it crosses zero (alpha > gamma) or settles (alpha < gamma); errors below that level
+    also keep v = integral of -x^gamma f accurate over the creeping return."""
+    vs = law.velocity_scale(x_b)
+    return vs * min(1.0, vs / x_b ** (law.gamma + 1.0))
+
+
+def _land_forward(law: _Law, start: _State, x_b: float, rtol: float, pieces: list, stiff: bool):
+    """Leg 4, forward: (v, tau, g) in u from x_switch down to u = 0 unless the force vanishes."""
+    form = _ForceForm(law)
+    u0 = start.x ** (1.0 / law.p)
+    g0 = form.g_from_f(u0, start.f)
+    g_scale = _force_scale(law, x_b) * u0 ** form.m
+    atol = ATOL_MARGIN * rtol * np.array([abs(start.v), start.tau, g_scale])
+    events = [_event(form.du_force, direction=0)] if law.qa > law.qg else []
+    sol = _integrate(form.du_rhs, (u0, 0.0), [start.v, start.tau, g0], rtol=rtol, atol=atol,
+                     events=events, jac=form.du_jac, stiff=stiff, in_u=True)
+    u, (v, tau, _) = sol.t[-1], sol.y[:, -1]
+    pieces.append(_Piece(True, sol.sol, u, u0, law.p))
+    if events and _fired(sol, 0):
+        return "force", _State(tau, u ** law.p, v)
+    return "separation", _State(tau, 0.0, v)
+
+
+def _release_inverse(law: _Law, top: _State, rtol: float, pieces: list) -> _State:
+    """Leg 3, inverse: (x, v) in tau until x < SWITCH_FRACTION x_b (v < 0 and falling throughout)."""
+    x_switch = SWITCH_FRACTION * top.x
+    low = _event(lambda t, y: y[0] - x_switch, direction=-1)
+    atol = ATOL_MARGIN * rtol * np.array([top.x, law.velocity_scale(top.x)])
+    sol = _integrate(law.dtau_rhs, (top.tau, top.tau + _time_guard(law, top.x)), [top.x, top.v],
+                     rtol=rtol, atol=atol, events=[low])
+    if not _fired(sol, 0):
+        raise IntegrationError("inverse release did not come back near x~ = 0 within the time guard")
+    pieces.append(_Piece(False, sol.sol, top.tau, sol.t[-1], law.p))
+    return _State(sol.t[-1], sol.y[0, -1], sol.y[1, -1])
+
+
+def _land_inverse(law: _Law, start: _State, rtol: float, pieces: list) -> _State:
+    """Leg 4, inverse: (v, tau) in u down to u = 0; both force terms push the same way, no event."""
+    u0 = start.x ** (1.0 / law.p)
+    atol = ATOL_MARGIN * rtol * np.array([abs(start.v), start.tau])
+    sol = _integrate(law.du_rhs, (u0, 0.0), [start.v, start.tau], rtol=rtol, atol=atol, in_u=True)
+    v, tau = sol.y[:, -1]
+    pieces.append(_Piece(True, sol.sol, 0.0, u0, law.p))
+    return _State(tau, 0.0, v)
+
+
+def _is_stiff(law: _Law, x: float) -> bool:
+    """A creeping return from x (alpha <= gamma) lasts ~ x / v_scale while f relaxes at rate x^gamma.
+
+    (In u the same ratio appears as the integral of |d(dv/du)/dv|.) When alpha > gamma the force
+    vanishes a few relaxation times after tau_b instead, and nothing is stiff.
+    """
+    if law.qa > law.qg:
+        return False
+    return x ** (law.gamma + 1.0) / law.velocity_scale(x) > STIFFNESS_LIMIT
+
+
+# ----------------------------------------------------------------------------------- sampling
+def _sample(pieces: Sequence[_Piece], t_eval: np.ndarray, tau_end: float) -> Trajectory:
+    t_eval = t_eval[t_eval <= tau_end]
+    x = np.full(t_eval.shape, np.nan)
+    v = np.full(t_eval.shape, np.nan)
+    for piece in pieces:
+        if piece.in_u:
+            t_lo, t_hi = sorted(piece.sol(np.array([piece.lo, piece.hi]))[1])
+        else:
+            t_lo, t_hi = piece.lo, piece.hi
+        mask = (t_eval >= t_lo) & (t_eval <= t_hi) & np.isnan(x)
+        if not mask.any():
+            continue
+        if piece.in_u:
+            u = _invert_tau(piece, t_eval[mask])
+            x[mask] = u ** piece.p
+            v[mask] = piece.sol(u)[0]
+        else:
+            y = piece.sol(t_eval[mask])
+            x[mask], v[mask] = y[0], y[1]
+    return Trajectory(_frozen(t_eval), _frozen(x), _frozen(v))
+
+
+_EPS = float(np.finfo(float).eps)
+_BISECTION_STEPS = 120
+
+
+def _invert_tau(piece: _Piece, tau: np.ndarray) -> np.ndarray:
+    """u with tau(u) = tau on a u leg, by vectorised bisection (tau is monotone in u there)."""
+    lo = np.full(tau.shape, piece.lo)
+    hi = np.full(tau.shape, piece.hi)
+    rising = piece.sol(np.array([piece.hi]))[1, 0] >= piece.sol(np.array([piece.lo]))[1, 0]
+    for _ in range(_BISECTION_STEPS):
+        if np.all(hi - lo <= 4.0 * _EPS * hi):
+            break
+        mid = 0.5 * (lo + hi)
+        below = piece.sol(mid)[1] < tau
+        go_up = below if rising else ~below
+        lo = np.where(go_up, mid, lo)
+        hi = np.where(go_up, hi, mid)
+    closer_lo = np.abs(piece.sol(lo)[1] - tau) <= np.abs(piece.sol(hi)[1] - tau)
+    u = np.where(closer_lo, lo, hi)
+    # Exact at the leg's u = 0 end, where tau(u) ~ u^p is too flat for bisection to reach 0.
+    tau_at_lo = piece.sol(np.array([piece.lo]))[1, 0]
+    at_lo = tau <= tau_at_lo if rising else tau >= tau_at_lo
+    return np.where(at_lo, piece.lo, u)
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    a = np.asarray(a, float)
+    a.setflags(write=False)
+    return a
+
+
+# ----------------------------------------------------------------------------------- validation
+def _check_rtol(rtol) -> float:
+    allowed = f"must be a number in [{RTOL_MIN:g}, {RTOL_MAX:g}]"
+    try:
+        value = float(rtol)
+    except (TypeError, ValueError):
+        raise ParameterError("rtol", rtol, allowed) from None
+    if isinstance(rtol, bool) or not (RTOL_MIN <= value <= RTOL_MAX):
+        raise ParameterError("rtol", rtol, allowed)
+    return value
+
+
+def _check_t_eval(t_eval) -> np.ndarray | None:
+    if t_eval is None:
+        return None
+    allowed = "must be a 1-D non-decreasing array of finite tau >= 0"
+    try:
+        t = np.asarray(t_eval, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError("t_eval", t_eval, allowed) from None
+    if t.ndim != 1 or not np.all(np.isfinite(t)) or (t.size and t[0] < 0) or np.any(np.diff(t) < 0):
+        raise ParameterError("t_eval", t_eval, allowed)
+    return t
+
+
+def _check_x_start(x_start) -> float:
+    allowed = "must be a finite number >= 0"
+    try:
+        value = float(x_start)
+    except (TypeError, ValueError):
+        raise ParameterError("x_start", x_start, allowed) from None
+    if isinstance(x_start, bool) or not math.isfinite(value) or value < 0:
+        raise ParameterError("x_start", x_start, allowed)
+    return value
+
+
+# ----------------------------------------------------------------------------------- public API
+def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None) -> Collision:
+    """Forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to end of contact.
+
+    ``alpha``, ``gamma``: anything Exponents.parse accepts (or an Exponents as ``alpha`` with
+    ``gamma=None``). ``omega``: finite > 0. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below
+    2.2e-14). ``t_eval``: tau samples for ``trajectory``.
+    """
+    ex = as_exponents(alpha, gamma)
+    omega = require_positive_finite("omega", omega)
+    rtol = _check_rtol(rtol)
+    t_eval = _check_t_eval(t_eval)
+    law = _Law.of(ex, omega, +1)
+
+    pieces: list[_Piece] = []
+    risen = _rise(law, 0.0, min(1.0, law.elastic_scale()), rtol, pieces)
+    top = _compress(law, risen, rtol, pieces)
+    end, last = _release_forward(law, top, rtol, pieces, _is_stiff(law, top.x))
+    if end == "switch":
+        end, last = _land_forward(law, last, top.x, rtol, pieces, _is_stiff(law, last.x))
+    eps = -last.v
+    if end == "force":
+        # At the event Omega x_c^(alpha-gamma) = eps exactly; this stays accurate when x_c is
+        # far below what the located event time resolves (huge Omega).
+        x_c = (eps / omega) ** (1.0 / (law.alpha - law.gamma))
+    else:
+        x_c = 0.0
+    if not (0.0 < eps and math.isfinite(last.tau)):
+        raise IntegrationError(f"unphysical end of contact: eps = {eps!r}, tau_c = {last.tau!r}")
+    trajectory = _sample(pieces, t_eval, last.tau) if t_eval is not None else None
+    return Collision(ex.alpha, ex.gamma, omega, "forward", float(eps), float(top.tau), float(top.x),
+                     float(last.tau), float(x_c), end, rtol, trajectory)
+
+
+def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,
+                    t_eval=None) -> InverseCollision:
+    """Inverse collision x~'' + Omega~ x~^alpha - x~^gamma x~' = 0, x~(0) = x_start, x~'(0) = 1.
+
+    Integrated until x~ returns to 0. Once x~' < 0 both force terms accelerate the return, so it
+    always comes back after turning around; but the negative damping can outgrow the elastic
+    force before the turn (e.g. alpha = 1, gamma = 0, Omega~ < 1/4 from x_start = 0), and then
+    RunawayError (a ParameterError) is raised.
+    """
+    ex = as_exponents(alpha, gamma)
+    omega = require_positive_finite("omega_tilde", omega_tilde)
+    x_start = _check_x_start(x_start)
+    rtol = _check_rtol(rtol)
+    t_eval = _check_t_eval(t_eval)
+    law = _Law.of(ex, omega, -1)
+
+    pieces: list[_Piece] = []
+    risen = _rise(law, x_start, min(1.0, law.elastic_scale()), rtol, pieces)
+    top = _compress(law, risen, rtol, pieces)
+    low = _release_inverse(law, top, rtol, pieces)
+    last = _land_inverse(law, low, rtol, pieces)
+    trajectory = _sample(pieces, t_eval, last.tau) if t_eval is not None else None
+    return InverseCollision(ex.alpha, ex.gamma, omega, x_start, float(top.tau), float(top.x),
+                            float(last.tau), float(last.v), rtol, trajectory)
+
+
+def collide_many(alpha, gamma, omegas, *, rtol: float = 1e-12) -> dict[str, np.ndarray]:
+    """collide() over an array of Omega; returns arrays keyed eps, tau_b, x_b, tau_c, x_c, end."""
+    ex = as_exponents(alpha, gamma)
+    omegas = np.asarray(omegas, dtype=float)
+    if omegas.ndim != 1:
+        raise ParameterError("omegas", omegas, "must be a 1-D array of finite numbers > 0")
+    hits = [collide(ex, None, w, rtol=rtol) for w in omegas]
+    out = {name: np.array([getattr(h, name) for h in hits], dtype=float)
+           for name in ("eps", "tau_b", "x_b", "tau_c", "x_c")}
+    out["end"] = np.array([h.end for h in hits], dtype=str)
+    return out
