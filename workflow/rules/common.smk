@@ -1,0 +1,177 @@
+# Helpers shared by every stage: configuration (validated, one-line errors), variants,
+# the package sources each rule imports, and the lists of final outputs.
+
+import ast
+import os
+import re
+import sys
+from fractions import Fraction
+from pathlib import Path
+
+from snakemake.utils import validate
+
+ROOT = Path(workflow.basedir)
+# This tree's package and workflow helpers come first, whatever is installed.
+sys.path[:0] = [str(ROOT / "src"), str(ROOT / "workflow" / "scripts")]
+
+from _config import ConfigError, check_config  # noqa: E402  (workflow/scripts/_config.py)
+
+# Every generated file carries this date instead of "now" (the Makefile exports the same value),
+# and the scripts import the package from this tree's src/, whatever is installed.
+os.environ.setdefault("SOURCE_DATE_EPOCH", "1700000000")
+os.environ.setdefault("PYTHONHASHSEED", "0")
+os.environ["PYTHONPATH"] = os.pathsep.join(
+    [str(ROOT / "src")] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
+)
+
+
+# ---------------------------------------------------------------------------------------------
+# Configuration
+# ---------------------------------------------------------------------------------------------
+
+try:
+    check_config(config, str(ROOT / "workflow" / "schemas" / "config.schema.yaml"))
+except ConfigError as err:
+    # One line naming the field and what is allowed; no traceback.
+    sys.stderr.write(f"config error: {err}\n")
+    sys.exit(2)
+# Snakemake's own validation on top (it also fills in the schema's defaults, already applied).
+validate(config, "../schemas/config.schema.yaml")
+
+VARIANTS = {v["name"]: v for v in config["variants"]}
+MAIN = config["main_variant"]
+NUMERICS = config["numerics"]
+SERIES = config["series"]
+
+wildcard_constraints:
+    variant="|".join(re.escape(name) for name in VARIANTS),
+    fig="fig[1-4]",
+    ext="pdf|png",
+
+
+def vparam(key):
+    """A params: entry taking `key` from the variant of the job (keeps params per-rule minimal)."""
+    return lambda wildcards: VARIANTS[wildcards.variant][key]
+
+
+def exponents(wildcards):
+    return {"alpha": str(VARIANTS[wildcards.variant]["alpha"]),
+            "gamma": str(VARIANTS[wildcards.variant]["gamma"])}
+
+
+# The printed numbers of Kim's paper (series, c0-c2) only apply to its exponents.
+PAPER_EXPONENTS = (Fraction(3, 2), Fraction(1))
+
+
+def is_paper_case(name):
+    v = VARIANTS[name]
+    return (Fraction(str(v["alpha"])), Fraction(str(v["gamma"]))) == PAPER_EXPONENTS
+
+
+# ---------------------------------------------------------------------------------------------
+# Package sources a script imports: declared as inputs so a physics change reruns exactly the
+# rules that use it (Snakemake does not follow a script's imports by itself).
+# ---------------------------------------------------------------------------------------------
+
+PKG = ROOT / "src" / "restitution"
+
+
+def _imports_of(module):
+    """restitution.* modules imported by src/restitution/<module>.py (relative or absolute)."""
+    tree = ast.parse((PKG / f"{module}.py").read_text(), filename=f"{module}.py")
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            if node.level == 1 and node.module:
+                found.add(node.module.split(".")[0])
+            elif node.level == 1:
+                found.update(a.name for a in node.names)
+            elif node.level == 0 and node.module and node.module.startswith("restitution."):
+                found.add(node.module.split(".")[1])
+            elif node.level == 0 and node.module == "restitution":
+                found.update(a.name for a in node.names)
+        elif isinstance(node, ast.Import):
+            for a in node.names:
+                if a.name.startswith("restitution."):
+                    found.add(a.name.split(".")[1])
+    return {m for m in found if (PKG / f"{m}.py").exists()}
+
+
+def lib(*modules):
+    """src/restitution files the given modules need (their import closure, plus __init__.py)."""
+    seen, todo = set(), list(modules)
+    while todo:
+        m = todo.pop()
+        if m in seen:
+            continue
+        if not (PKG / f"{m}.py").exists():
+            # Still being written: depend on the path anyway, Snakemake reports it missing.
+            seen.add(m)
+            continue
+        seen.add(m)
+        todo.extend(_imports_of(m) - seen)
+    return sorted(str(Path("src/restitution") / f"{m}.py") for m in seen | {"__init__"})
+
+
+def script_file(name):
+    """Path of a workflow script for `script:` (relative to the .smk files) ..."""
+    return f"../scripts/{name}"
+
+
+def code(name):
+    """... and the same file as an input, so touching it reruns the rule (and its dependants)."""
+    return [f"workflow/scripts/{name}", "workflow/scripts/_pipeline.py"]
+
+
+# ---------------------------------------------------------------------------------------------
+# Figure 4 relations Omega~ = c0 + c1 Omega + c2 Omega^2 to draw next to the reference eps(g).
+# Each is a JSON file {"label", "source", "c": [c0, c1, ...]}. Later stages (derived and fitted
+# c's) append their files here.
+# ---------------------------------------------------------------------------------------------
+
+RELATIONS = {
+    # kind -> (applies to variant?, path template)
+    "printed": (is_paper_case, "results/{variant}/relations/printed.json"),
+}
+
+
+def relation_files(wildcards):
+    return [tpl.format(variant=wildcards.variant)
+            for applies, tpl in RELATIONS.values() if applies(wildcards.variant)]
+
+
+# ---------------------------------------------------------------------------------------------
+# Final outputs
+# ---------------------------------------------------------------------------------------------
+
+FIGURES = ["fig1", "fig2", "fig3", "fig4"]
+PAPER_PDF = "results/paper/restitution.pdf"
+
+
+def variant_outputs(name):
+    out = [
+        f"results/{name}/series/forward.json",
+        f"results/{name}/series/inverse.json",
+        f"results/{name}/series/table.tex",
+        f"results/{name}/reference/summary.json",
+        f"results/{name}/reference/eps_curve.csv",
+        f"results/{name}/reference/accuracy.csv",
+        f"results/{name}/values/values.tex",
+        f"results/{name}/values/values.json",
+    ]
+    out += [f"results/{name}/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
+    return out
+
+
+def all_outputs_but_pdf():
+    out = [f for name in VARIANTS for f in variant_outputs(name)]
+    out += [f"results/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
+    return out
+
+
+# The manuscript's inputs besides paper/*: extended by later stages (claims ledger, variants).
+MANUSCRIPT_INPUTS = [
+    "results/paper/inputs.tex",
+    f"results/{MAIN}/values/values.tex",
+    f"results/{MAIN}/series/table.tex",
+] + [f"results/{MAIN}/figures/{f}.pdf" for f in FIGURES]

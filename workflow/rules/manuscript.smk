@@ -1,0 +1,37 @@
+# Stage 5: the reproduction article. paper/restitution.tex \input's generated files only
+# (values, tables) and includes the main variant's figures; latexmk runs in build/paper/
+# (scratch, not reproducible byte for byte) and only the PDF is copied to results/paper/.
+
+
+rule manuscript_inputs:
+    """Where the manuscript finds the main variant's generated files."""
+    output:
+        "results/paper/inputs.tex",
+    params:
+        main=MAIN,
+    log:
+        "logs/manuscript_inputs.log",
+    script:
+        script_file("manuscript_inputs.py")
+
+
+rule manuscript:
+    input:
+        tex="paper/restitution.tex",
+        bib="paper/restitution.bib",
+        generated=MANUSCRIPT_INPUTS,
+    output:
+        PAPER_PDF,
+    log:
+        "logs/manuscript.log",
+    params:
+        build="build/paper",
+    shell:
+        # FORCE_SOURCE_DATE makes pdfTeX take dates from SOURCE_DATE_EPOCH; the .tex file removes
+        # the trailer ID and the PTEX info, so the PDF bytes depend on the sources only.
+        "rm -rf {params.build} && mkdir -p {params.build} && "
+        "FORCE_SOURCE_DATE=1 SOURCE_DATE_EPOCH=${{SOURCE_DATE_EPOCH:-1700000000}} "
+        "latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error "
+        "-outdir={params.build} {input.tex} > {log} 2>&1 "
+        "|| (tail -n 40 {log} >&2; exit 1); "
+        "cp {params.build}/restitution.pdf {output}"

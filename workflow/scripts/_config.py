@@ -1,0 +1,148 @@
+"""Validation of config.yaml with one-line messages (used by workflow/rules/common.smk).
+
+jsonschema's own messages are several lines long and name the failing keyword, not the
+field. Here every error becomes ``<field> = <value>: <what is allowed>``, e.g.
+``variants[kim].D1 = -1: must be > 0``. The schema's defaults are filled in as well.
+"""
+
+from __future__ import annotations
+
+import copy
+from fractions import Fraction
+
+import jsonschema
+import yaml
+
+
+class ConfigError(ValueError):
+    """A configuration value outside what the workflow accepts (message is one line)."""
+
+
+def _field(config: dict, path) -> str:
+    """variants[0].D1 -> variants[kim].D1 when the variant has a name."""
+    out = ""
+    node = config
+    for part in path:
+        if isinstance(part, int):
+            name = node[part].get("name") if isinstance(node, list) and isinstance(node[part], dict) else None
+            out += f"[{name}]" if isinstance(name, str) else f"[{part}]"
+        else:
+            out += f".{part}" if out else str(part)
+        try:
+            node = node[part]
+        except (KeyError, IndexError, TypeError):
+            node = None
+    return out or "config"
+
+
+def _allowed(error: jsonschema.ValidationError) -> str:
+    v, s = error.validator, error.validator_value
+    description = error.schema.get("description") if isinstance(error.schema, dict) else None
+    text = {
+        "minimum": lambda: f"must be >= {s}",
+        "maximum": lambda: f"must be <= {s}",
+        "exclusiveMinimum": lambda: f"must be > {s}",
+        "exclusiveMaximum": lambda: f"must be < {s}",
+        "minItems": lambda: f"needs at least {s} entries",
+        "maxItems": lambda: f"allows at most {s} entries",
+        "enum": lambda: "must be one of " + ", ".join(map(str, s)),
+        "type": lambda: f"must be of type {s if isinstance(s, str) else ' or '.join(s)}",
+        "pattern": lambda: f"must match {s}",
+    }.get(v, lambda: None)()
+    if v == "required":
+        missing = [k for k in s if k not in error.instance]
+        return f"missing required field(s) {', '.join(missing)}"
+    if v == "additionalProperties":
+        allowed = ", ".join(sorted(error.schema.get("properties", {})))
+        return f"unknown field(s); allowed: {allowed}"
+    if v == "oneOf" and description:
+        return f"must be {description}"
+    if text is None:
+        text = error.message
+    return f"{text} ({description})" if description and v != "type" else text
+
+
+def _resolve(schema, root):
+    if "$ref" in schema:
+        ref = schema["$ref"].split("/")[-1]
+        schema = {**root["$defs"][ref], **{k: v for k, v in schema.items() if k != "$ref"}}
+    return schema
+
+
+def _as_number(value):
+    """YAML 1.1 reads 1e-10 (no dot) as text; accept it as the number it means."""
+    if isinstance(value, str):
+        try:
+            return float(value)
+        except ValueError:
+            return value
+    return value
+
+
+def _fill_defaults(node, schema, root):
+    """Apply `default` values of the schema (objects and arrays of objects), and read numbers
+    written as 1e-10 as numbers where the schema wants a number."""
+    schema = _resolve(schema, root)
+    if isinstance(node, dict):
+        for key, sub in schema.get("properties", {}).items():
+            if key not in node and "default" in sub:
+                node[key] = copy.deepcopy(sub["default"])
+            if key in node:
+                sub_r = _resolve(sub, root)
+                if sub_r.get("type") == "number":
+                    node[key] = _as_number(node[key])
+                _fill_defaults(node[key], sub, root)
+    elif isinstance(node, list) and isinstance(schema.get("items"), dict):
+        items = _resolve(schema["items"], root)
+        for i, item in enumerate(node):
+            if items.get("type") == "number":
+                node[i] = _as_number(item)
+            _fill_defaults(node[i], schema["items"], root)
+
+
+def check_config(config: dict, schema_path: str) -> dict:
+    """Validate ``config`` in place (defaults filled in); raise ConfigError with one line."""
+    with open(schema_path) as fh:
+        schema = yaml.safe_load(fh)
+    _fill_defaults(config, schema, schema)
+    validator = jsonschema.Draft202012Validator(schema)
+    errors = list(validator.iter_errors(config))
+    if errors:
+        error = jsonschema.exceptions.best_match(errors)
+        field = _field(config, error.absolute_path)
+        value = error.instance if error.validator not in ("required", "additionalProperties") else "{...}"
+        if error.validator == "additionalProperties":
+            extra = sorted(set(error.instance) - set(error.schema.get("properties", {})))
+            field = f"{field}.{extra[0]}" if field != "config" else extra[0]
+            value = error.instance[extra[0]]
+        raise ConfigError(f"{field} = {value!r}: {_allowed(error)}")
+
+    names = [v["name"] for v in config["variants"]]
+    dupes = sorted({n for n in names if names.count(n) > 1})
+    if dupes:
+        raise ConfigError(f"variants[].name = {dupes[0]!r}: must be unique")
+    if config["main_variant"] not in names:
+        raise ConfigError(f"main_variant = {config['main_variant']!r}: "
+                          f"must be one of {', '.join(names)}")
+
+    # Physics-level checks through the library, so the messages match the CLI's.
+    from restitution.errors import ParameterError
+    from restitution.exponents import Exponents
+
+    for v in config["variants"]:
+        try:
+            Exponents.parse(v["alpha"], v["gamma"])
+        except ParameterError as err:
+            raise ConfigError(f"variants[{v['name']}].{err}") from None
+        g = v["g_range"]
+        if not g["min"] < g["max"]:
+            raise ConfigError(f"variants[{v['name']}].g_range.max = {g['max']!r}: "
+                              f"must be > g_range.min = {g['min']!r}")
+    max_power = config["series"]["max_power"]
+    try:
+        if Fraction(str(max_power)) < 1:
+            raise ValueError
+    except (ValueError, ZeroDivisionError):
+        raise ConfigError(f"series.max_power = {max_power!r}: "
+                          "must be a rational number >= 1") from None
+    return config

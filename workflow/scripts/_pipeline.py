@@ -1,0 +1,167 @@
+"""Plumbing shared by the workflow scripts: logging, deterministic output, notebook replay.
+
+Every script starts with
+
+    if "snakemake" not in globals():      # opened as a notebook, not run by Snakemake
+        ...; snakemake = replay("fig1")
+
+Under Snakemake, ``start(snakemake)`` records the job (inputs, outputs, params) in
+build/jobs/ so that the notebook rendered by ``make notebooks`` can replay it with the
+same files and parameters. Nothing here does physics.
+"""
+
+from __future__ import annotations
+
+import json
+import logging
+import math
+import os
+import pickle
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+JOBS = Path("build") / "jobs"
+_REPLAYED = False
+
+# Fixed build date for every generated file (also exported by the Makefile and common.smk).
+os.environ.setdefault("SOURCE_DATE_EPOCH", "1700000000")
+
+
+def _job_file(rule: str, variant: str | None) -> Path:
+    return JOBS / f"{rule}-{variant or 'all'}.pickle"
+
+
+def start(snakemake) -> None:
+    """Under Snakemake: send prints and warnings to the rule's log file and record the job
+    (build/jobs/, scratch space outside results/) so the notebook can replay it.
+    In a notebook (after replay()) this does nothing."""
+    if not in_pipeline():
+        return
+    if snakemake.log:
+        log = Path(snakemake.log[0])
+        log.parent.mkdir(parents=True, exist_ok=True)
+        stream = open(log, "w", buffering=1)
+        sys.stdout = sys.stderr = stream
+        logging.basicConfig(stream=stream, level=logging.INFO, force=True)
+    variant = getattr(snakemake.wildcards, "variant", None)
+    path = _job_file(snakemake.rule, variant)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with open(path, "wb") as fh:
+        pickle.dump(snakemake, fh, protocol=4)
+
+
+def replay(rule: str, variant: str | None = None):
+    """The snakemake object of the pipeline's last run of ``rule`` (main variant by default).
+
+    Changes the working directory to the project root, as under Snakemake.
+    """
+    global _REPLAYED
+    _REPLAYED = True
+    os.chdir(ROOT)
+    if variant is None:
+        import yaml
+
+        with open("config.yaml") as fh:
+            variant = yaml.safe_load(fh)["main_variant"]
+    path = _job_file(rule, variant)
+    if not path.exists():
+        path = _job_file(rule, None)
+    if not path.exists():
+        raise SystemExit(f"no recorded run of rule {rule!r}: run `make paper` (or snakemake) first")
+    with open(path, "rb") as fh:
+        return pickle.load(fh)
+
+
+def in_pipeline() -> bool:
+    """False once replay() ran, i.e. in a notebook."""
+    return not _REPLAYED
+
+
+def clean(obj):
+    """JSON-ready copy: numpy scalars to Python, NaN/inf to None."""
+    try:
+        import numpy as np
+    except ImportError:  # pragma: no cover
+        np = None
+    if isinstance(obj, dict):
+        return {str(k): clean(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [clean(v) for v in obj]
+    if np is not None and isinstance(obj, np.ndarray):
+        return [clean(v) for v in obj.tolist()]
+    if np is not None and isinstance(obj, np.generic):
+        obj = obj.item()
+    if isinstance(obj, float) and not math.isfinite(obj):
+        return None
+    return obj
+
+
+def write_json(path, obj) -> None:
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    text = json.dumps(clean(obj), indent=2, allow_nan=False)
+    Path(path).write_text(text + "\n")
+
+
+def read_json(path):
+    with open(path) as fh:
+        return json.load(fh)
+
+
+def write_text(path, text: str) -> None:
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    if not text.endswith("\n"):
+        text += "\n"
+    Path(path).write_text(text)
+
+
+def write_csv(path, frame) -> None:
+    """A tidy table with full float precision and Unix newlines."""
+    Path(path).parent.mkdir(parents=True, exist_ok=True)
+    frame.to_csv(path, index=False, lineterminator="\n")
+
+
+# ---------------------------------------------------------------------------------------------
+# Figures
+# ---------------------------------------------------------------------------------------------
+
+#: One look for every figure: sized for a one-column article, readable when printed.
+STYLE = {
+    "figure.figsize": (5.6, 3.8),
+    "figure.dpi": 100,
+    "savefig.dpi": 200,
+    "font.size": 10,
+    "axes.labelsize": 10,
+    "legend.fontsize": 8,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "mathtext.fontset": "cm",
+    "svg.hashsalt": "restitution",
+    "pdf.compression": 6,
+    "path.simplify": False,
+}
+
+#: Metadata that would change from build to build (dates, versions) is dropped or fixed.
+PDF_METADATA = {"Creator": "restitution pipeline", "Producer": "restitution pipeline",
+                "CreationDate": None, "ModDate": None}
+PNG_METADATA = {"Software": None}
+
+
+def setup_matplotlib():
+    import matplotlib
+
+    if in_pipeline():
+        matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.rcdefaults()
+    plt.rcParams.update(STYLE)
+    return plt
+
+
+def save_figure(fig, pdf, png) -> None:
+    """Write the figure as PDF (for LaTeX) and PNG (for people), byte-reproducibly."""
+    for path in (pdf, png):
+        Path(path).parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(pdf, metadata=PDF_METADATA, bbox_inches="tight")
+    fig.savefig(png, metadata=PNG_METADATA, bbox_inches="tight")

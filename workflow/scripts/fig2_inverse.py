@@ -1,0 +1,80 @@
+# %% [markdown]
+# # Figure 2: inverse collision, reference vs perturbation series
+#
+# The reference is the forward trajectory at g_figure run backwards from the end of contact
+# and rescaled into the inverse variables (see reference_trajectories.py): it starts at
+# x~(0) = x~_c > 0 with x~'(0) = 1. The series are the paper's, with x~(0) = 0, evaluated at
+# Omega~ = Omega eps^((alpha-1-2 gamma)/(gamma+1)). The bottom axis is the inverse time tau~;
+# the top axis gives the same instants in the forward time tau = tau_c - tau~ eps^(-gamma/(gamma+1)).
+
+# %%
+if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
+    import pathlib, sys  # noqa: E401
+    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
+    sys.path.insert(0, str(here / "workflow" / "scripts"))
+    from _pipeline import replay
+    snakemake = replay("fig2_inverse")
+
+from fractions import Fraction  # noqa: E402
+
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+from _pipeline import read_json, save_figure, setup_matplotlib, start  # noqa: E402
+
+from restitution.series import perturbation_series  # noqa: E402
+
+start(snakemake)
+plt = setup_matplotlib()
+
+# %%
+p = snakemake.params
+ref = pd.read_csv(snakemake.input.trajectory)
+summary = read_json(snakemake.input.summary)
+inv = summary["inverse"]
+series = perturbation_series(p.exponents["alpha"], p.exponents["gamma"], omega_order=p.omega_order,
+                             max_power=p.max_power, direction="inverse")
+omega_t = inv["omega_tilde"]
+gamma = float(Fraction(p.exponents["gamma"]))
+t_scale = summary["eps"] ** (gamma / (gamma + 1.0))  # tau~ = t_scale (tau_c - tau)
+tau_t = np.linspace(0.0, inv["tau_tilde_end"], 801)
+x_max = float(ref["x_tilde"].max())
+
+# %%
+fig, (ax, ax_err) = plt.subplots(2, 1, sharex=True, figsize=(5.6, 5.8),
+                                 gridspec_kw={"height_ratios": [3, 1.5]})
+ax.plot(ref["tau_tilde"], ref["x_tilde"], color="black", lw=2.4,
+        label=r"reference: forward run reversed ($\tilde x(0) = \tilde x_c$)")
+has_zero = "x_tilde_from_zero" in ref
+if has_zero:
+    ax.plot(ref["tau_tilde"], ref["x_tilde_from_zero"], color="grey", lw=1.6,
+            label=r"inverse equation integrated from $\tilde x(0) = 0$")
+    target = ref["x_tilde_from_zero"].to_numpy()
+else:
+    target = ref["x_tilde"].to_numpy()
+colors = plt.cm.plasma(np.linspace(0.0, 0.85, p.omega_order + 1))
+grid = ref["tau_tilde"].to_numpy()
+for n in range(p.omega_order + 1):
+    ax.plot(tau_t, series.evaluate(tau_t, omega_t, order=n), ls="--", lw=1.3, color=colors[n],
+            label=rf"series to $\tilde\Omega^{{{n}}}$")
+    err = np.abs(series.evaluate(grid, omega_t, order=n) - target)
+    ax_err.semilogy(grid, np.maximum(err, 1e-16), color=colors[n], lw=1.1)
+for a in (ax, ax_err):
+    a.axvline(inv["tau_tilde_b"], color="grey", ls=":", lw=1)
+ax.annotate(r"$\tilde\tau_b$", (inv["tau_tilde_b"], 0.05 * x_max), xytext=(4, 0),
+            textcoords="offset points", color="grey")
+ax.set_ylim(-0.1 * x_max, p.plot["y_margin"] * x_max)
+ax.set_xlim(0.0, inv["tau_tilde_end"])
+ax.set_ylabel(r"inverse scaled deformation $\tilde x$")
+fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False)
+top = ax.secondary_xaxis("top", functions=(lambda s: summary["tau_c"] - s / t_scale,
+                                           lambda t: (summary["tau_c"] - t) * t_scale))
+top.set_xlabel(r"forward scaled time $\tau = \tau_c - \tilde\tau\,\varepsilon^{-\gamma/(\gamma+1)}$")
+ax.text(0.02, 0.97, rf"inverse collision, $g = {summary['g']:g}$, $\tilde\Omega = {omega_t:.4f}$;" "\n"
+        rf"each $\tilde x_n$ to $\tilde\tau^{{{p.max_power}}}$", transform=ax.transAxes, ha="left",
+        va="top", fontsize=8)
+ax_err.set_ylim(1e-10, 10)
+ax_err.set_xlabel(r"inverse scaled time $\tilde\tau$ (measured from the end of contact)")
+ax_err.set_ylabel(r"$|\tilde x_{\rm series} - \tilde x_{\rm ref}|$" + ("\n" + r"(ref. from $\tilde x = 0$)" if has_zero else ""))
+fig.align_ylabels()
+fig.tight_layout(rect=(0, 0.12, 1, 1))
+save_figure(fig, snakemake.output.pdf, snakemake.output.png)

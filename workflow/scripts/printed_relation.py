@@ -1,0 +1,27 @@
+# %% [markdown]
+# # The paper's connection Omega~ = c0 + c1 Omega + c2 Omega^2 (printed c's)
+#
+# Written as a relation file for figure 4. Later stages add our derived and fitted c's as
+# files of the same shape ({"label", "source", "c"}).
+
+# %%
+if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
+    import pathlib, sys  # noqa: E401
+    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
+    sys.path.insert(0, str(here / "workflow" / "scripts"))
+    from _pipeline import replay
+    snakemake = replay("printed_relation")
+
+from _pipeline import start, write_json  # noqa: E402
+
+from restitution.printed import PRINTED_C  # noqa: E402
+
+start(snakemake)
+
+# %%
+write_json(snakemake.output[0], {
+    "kind": "printed",
+    "label": r"paper's $c_0, c_1, c_2$",
+    "source": "Kim, Sec. V (c0 = 6.0203, c1 = -1.5257, c2 = 0.0256)",
+    "c": list(PRINTED_C),
+})

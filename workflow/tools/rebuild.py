@@ -1,0 +1,314 @@
+"""Clean rebuilds of the pipeline: the reproducibility check, the determinism check, the benchmark.
+
+    python workflow/tools/rebuild.py check        rebuild from clean in a temporary directory and
+                                                  compare with tests/expected/manifest.json
+    python workflow/tools/rebuild.py twice        two clean rebuilds; every file under results/
+                                                  must have the same sha256
+    python workflow/tools/rebuild.py bench        time of one cold pipeline run (after install)
+    python workflow/tools/rebuild.py manifest     (re)write tests/expected/manifest.json from the
+                                                  current results/ (after an intended change)
+
+The manifest holds what a rebuild must reproduce: exact rationals exactly (series), numbers within
+the tolerance stated next to each (values, reference tables), generated text by sha256, and the
+list of files. Figures and the PDF are checked for presence here and for identical bytes between
+two builds by `twice` (their bytes depend on the matplotlib and TeX versions, so they are not
+pinned in the manifest).
+"""
+
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+MANIFEST = ROOT / "tests" / "expected" / "manifest.json"
+#: Not copied into a clean build: environments, outputs, caches.
+IGNORE = shutil.ignore_patterns(".venv", ".git", "results", ".snakemake", "build", "logs", "notebooks",
+                                "__pycache__", ".pytest_cache", "*.egg-info", ".ipynb_checkpoints")
+ENV = {"SOURCE_DATE_EPOCH": "1700000000", "PYTHONHASHSEED": "0"}
+
+#: Tolerances for the reference tables (relative, plus an absolute floor for values near 0).
+TABLE_RTOL = 1e-6
+TABLE_ATOL = 1e-12
+#: Columns of the reference tables pinned in the manifest.
+TABLE_COLUMNS = {
+    "reference/eps_curve.csv": ["g", "omega", "eps", "tau_b", "x_b", "tau_c", "x_c", "end"],
+    "reference/accuracy.csv": ["rtol", "eps", "tau_b", "tau_c"],
+}
+#: Generated text compared by hash (exact outputs, and the numbers exactly as the PDF prints them).
+HASHED = ["series/forward.json", "series/inverse.json", "series/table.tex", "series/agreement.json",
+          "values/values.tex", "relations/printed.json"]
+HASHED_TOP = ["paper/inputs.tex"]
+#: Built only when TeX is available.
+REQUIRES_TEX = ["results/paper/restitution.pdf"]
+
+
+def _outputs(tree: Path) -> list[Path]:
+    """Files under results/ (placeholders such as .gitkeep excluded)."""
+    return [p for p in sorted((tree / "results").rglob("*")) if p.is_file() and not p.name.startswith(".")]
+
+
+def have_tex() -> bool:
+    return shutil.which("pdflatex") is not None and shutil.which("latexmk") is not None
+
+
+def sha256(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+# ------------------------------------------------------------------------------------------ builds
+def copy_tree(dest: Path) -> Path:
+    """A copy of the project without outputs or caches, as a fresh clone would have it."""
+    shutil.copytree(ROOT, dest, ignore=IGNORE, symlinks=True)
+    return dest
+
+
+def run_pipeline(tree: Path, cores: int = 2, target: str | None = None, quiet: bool = True) -> float:
+    """Run snakemake in `tree`; returns the wall time in seconds."""
+    if target is None:
+        target = "all" if have_tex() else "outputs"
+    cmd = [sys.executable, "-m", "snakemake", "--cores", str(cores), target]
+    if quiet:
+        cmd += ["--quiet", "rules"]
+    env = {**os.environ, **ENV}
+    t0 = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=tree, env=env, capture_output=quiet, text=True)
+    elapsed = time.perf_counter() - t0
+    if proc.returncode != 0:
+        if quiet:
+            sys.stderr.write(proc.stdout[-4000:] + proc.stderr[-4000:])
+        raise SystemExit(f"pipeline failed in {tree} (exit {proc.returncode})")
+    return elapsed
+
+
+def clean_build(parent: Path, name: str = "build", cores: int = 2) -> tuple[Path, float]:
+    tree = copy_tree(parent / name)
+    return tree, run_pipeline(tree, cores=cores)
+
+
+def digest_results(tree: Path) -> dict[str, str]:
+    return {str(p.relative_to(tree)): sha256(p) for p in _outputs(tree)}
+
+
+# ------------------------------------------------------------------------------------------ manifest
+def _read_csv(path: Path) -> dict[str, list]:
+    import csv
+
+    with open(path, newline="") as fh:
+        rows = list(csv.DictReader(fh))
+    return {k: [r[k] for r in rows] for k in (rows[0].keys() if rows else [])}
+
+
+def _variants(tree: Path) -> list[str]:
+    return sorted(p.parent.parent.name for p in (tree / "results").glob("*/values/values.json"))
+
+
+def make_manifest(tree: Path) -> dict:
+    """What a rebuild of `tree` must reproduce (see the module docstring)."""
+    res = tree / "results"
+    manifest: dict = {
+        "about": "Expected outputs of a clean rebuild; written by `make expected`, checked by "
+                 "`make check` (workflow/tools/rebuild.py). Rationals compare exactly, numbers within "
+                 "the stated relative tolerance, text by sha256.",
+        "files": sorted(str(p.relative_to(tree)) for p in _outputs(tree)
+                        if str(p.relative_to(tree)) not in REQUIRES_TEX),
+        "requires_tex": REQUIRES_TEX,
+        "rationals": {},
+        "values": {},
+        "tables": {},
+        "sha256": {},
+    }
+    for v in _variants(tree):
+        for d in ("forward", "inverse"):
+            rel = f"results/{v}/series/{d}.json"
+            manifest["rationals"][rel] = json.loads((tree / rel).read_text())["orders"]
+        rel = f"results/{v}/values/values.json"
+        items = json.loads((tree / rel).read_text())
+        manifest["values"][rel] = {k: {"value": it["value"], "tolerance": it["tolerance"]}
+                                   for k, it in items.items()}
+        for table, cols in TABLE_COLUMNS.items():
+            rel = f"results/{v}/{table}"
+            data = _read_csv(tree / rel)
+            manifest["tables"][rel] = {"rtol": TABLE_RTOL, "atol": TABLE_ATOL,
+                                       "columns": {c: data[c] for c in cols if c in data}}
+        for h in HASHED:
+            rel = f"results/{v}/{h}"
+            if (tree / rel).exists():
+                manifest["sha256"][rel] = sha256(tree / rel)
+    for h in HASHED_TOP:
+        rel = f"results/{h}"
+        if (tree / rel).exists():
+            manifest["sha256"][rel] = sha256(tree / rel)
+    return manifest
+
+
+def _close(a: float, b: float, rtol: float, atol: float = 0.0) -> bool:
+    if rtol == 0.0 and atol == 0.0:
+        return a == b
+    return math.isclose(a, b, rel_tol=rtol, abs_tol=atol)
+
+
+def _num(text):
+    try:
+        return float(text)
+    except (TypeError, ValueError):
+        return None
+
+
+def compare(tree: Path, manifest: dict, tex: bool | None = None) -> list[str]:
+    """Differences between the outputs in `tree` and the manifest (empty list: all good)."""
+    tex = have_tex() if tex is None else tex
+    out: list[str] = []
+    res = tree / "results"
+    present = {str(p.relative_to(tree)) for p in _outputs(tree)}
+    wanted = set(manifest["files"]) | (set(manifest["requires_tex"]) if tex else set())
+    for f in sorted(wanted - present):
+        out.append(f"{f}: missing")
+    for f in sorted(present - wanted - set(manifest["requires_tex"])):
+        out.append(f"{f}: not in the manifest (new output? run `make expected`)")
+
+    for rel, orders in manifest["rationals"].items():
+        if not (tree / rel).exists():
+            continue
+        got = json.loads((tree / rel).read_text())["orders"]
+        for n in sorted(set(orders) | set(got), key=int):
+            exp_terms = {pw: c for pw, c in orders.get(n, [])}
+            got_terms = {pw: c for pw, c in got.get(n, [])}
+            for pw in sorted(set(exp_terms) | set(got_terms), key=lambda s: eval_fraction(s)):
+                if exp_terms.get(pw) != got_terms.get(pw):
+                    out.append(f"{rel}: x_{n} coefficient of tau^{pw} = {got_terms.get(pw, 'absent')}"
+                               f" (expected {exp_terms.get(pw, 'absent')}, exact)")
+
+    for rel, items in manifest["values"].items():
+        if not (tree / rel).exists():
+            continue
+        got = json.loads((tree / rel).read_text())
+        for name, exp in items.items():
+            if name not in got:
+                out.append(f"{rel}: {name} missing (expected {exp['value']!r})")
+                continue
+            a, b = got[name]["value"], exp["value"]
+            if isinstance(a, (int, float)) and isinstance(b, (int, float)) and not isinstance(a, bool):
+                if not _close(float(a), float(b), exp["tolerance"]):
+                    out.append(f"{rel}: {name} = {a!r} (expected {b!r}, rtol {exp['tolerance']:g})")
+            elif a != b:
+                out.append(f"{rel}: {name} = {a!r} (expected {b!r}, exact)")
+        for name in sorted(set(got) - set(items)):
+            out.append(f"{rel}: {name} is new (not in the manifest)")
+
+    for rel, spec in manifest["tables"].items():
+        if not (tree / rel).exists():
+            continue
+        got = _read_csv(tree / rel)
+        for col, exp_values in spec["columns"].items():
+            values = got.get(col)
+            if values is None or len(values) != len(exp_values):
+                out.append(f"{rel}: column {col} has {None if values is None else len(values)} rows "
+                           f"(expected {len(exp_values)})")
+                continue
+            bad = []
+            for i, (a, b) in enumerate(zip(values, exp_values)):
+                fa, fb = _num(a), _num(b)
+                ok = (a == b) if fa is None or fb is None else _close(fa, fb, spec["rtol"], spec["atol"])
+                if not ok:
+                    bad.append(f"row {i}: {a} (expected {b})")
+            if bad:
+                out.append(f"{rel}: column {col}: {len(bad)} value(s) off by more than rtol "
+                           f"{spec['rtol']:g}; first {bad[0]}")
+
+    for rel, digest in manifest["sha256"].items():
+        if (tree / rel).exists() and sha256(tree / rel) != digest:
+            out.append(f"{rel}: sha256 {sha256(tree / rel)[:16]}... (expected {digest[:16]}...)")
+    return out
+
+
+def eval_fraction(text: str) -> float:
+    num, _, den = text.partition("/")
+    return int(num) / int(den or 1)
+
+
+# ------------------------------------------------------------------------------------------ commands
+def cmd_check(args) -> int:
+    manifest = json.loads(Path(args.manifest).read_text())
+    with tempfile.TemporaryDirectory(prefix="restitution-check-") as tmp:
+        print(f"clean rebuild in {tmp} ...", flush=True)
+        tree, elapsed = clean_build(Path(tmp), cores=args.cores)
+        print(f"pipeline finished in {elapsed:.1f} s; comparing with {args.manifest}")
+        problems = compare(tree, manifest)
+        if not have_tex():
+            print("note: pdflatex/latexmk not found, the PDF was not built or checked")
+    if problems:
+        print(f"check FAILED: {len(problems)} difference(s)")
+        for p in problems:
+            print(f"  {p}")
+        return 1
+    n = (sum(len(v) for v in manifest["values"].values())
+         + sum(len(t) for o in manifest["rationals"].values() for t in o.values()))
+    print(f"check passed: {len(manifest['files'])} files present, {n} numbers and rationals as expected, "
+          f"{len(manifest['sha256'])} text outputs identical")
+    return 0
+
+
+def cmd_twice(args) -> int:
+    with tempfile.TemporaryDirectory(prefix="restitution-twice-") as tmp:
+        digests = []
+        for name in ("a", "b"):
+            tree, elapsed = clean_build(Path(tmp), name=name, cores=args.cores)
+            print(f"build {name}: {elapsed:.1f} s")
+            digests.append(digest_results(tree))
+    a, b = digests
+    differ = sorted(f for f in set(a) | set(b) if a.get(f) != b.get(f))
+    if differ:
+        print(f"NOT reproducible: {len(differ)} of {len(set(a) | set(b))} files differ:")
+        for f in differ:
+            print(f"  {f}")
+        return 1
+    print(f"reproducible: all {len(a)} files under results/ have identical sha256")
+    return 0
+
+
+def cmd_bench(args) -> int:
+    with tempfile.TemporaryDirectory(prefix="restitution-bench-") as tmp:
+        tree = copy_tree(Path(tmp) / "build")
+        elapsed = run_pipeline(tree, cores=args.cores)
+    what = "with the PDF" if have_tex() else "without the PDF (no TeX)"
+    print(f"cold pipeline ({what}, --cores {args.cores}): {elapsed:.1f} s")
+    return 0
+
+
+def cmd_manifest(args) -> int:
+    tree = Path(args.tree).resolve()
+    manifest = make_manifest(tree)
+    out = Path(args.manifest)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+    print(f"wrote {out} from {tree / 'results'}")
+    return 0
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--cores", type=int, default=2)
+    parser.add_argument("--manifest", default=str(MANIFEST))
+    sub = parser.add_subparsers(dest="command", required=True)
+    sub.add_parser("check").set_defaults(func=cmd_check)
+    sub.add_parser("twice").set_defaults(func=cmd_twice)
+    sub.add_parser("bench").set_defaults(func=cmd_bench)
+    p = sub.add_parser("manifest")
+    p.add_argument("--tree", default=str(ROOT), help="project tree whose results/ to record")
+    p.set_defaults(func=cmd_manifest)
+    args = parser.parse_args(argv)
+    return args.func(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
