@@ -66,6 +66,18 @@ def test_collide_from_material_constants_uses_the_scaled_omega():
                                                               rel=1e-15)
 
 
+def test_eps_json_contract():
+    proc = run("eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "2", "--tol", "1e-8", "--no-build",
+               "--json")
+    assert proc.returncode == 0, proc.stderr
+    data = json.loads(proc.stdout)
+    assert set(data) == {"eps", "method", "error_bound"}
+    assert len(data["eps"]) == 2 and data["error_bound"] <= 1e-8
+    from restitution.collision import collide
+    for om, e in zip((0.5, 2.0), data["eps"]):
+        assert e == pytest.approx(collide("3/2", 1, om).eps, rel=2e-8)
+
+
 BAD = [
     ("series", "--alpha", "0", "--gamma", "1"),
     ("series", "--alpha", "-3/2", "--gamma", "1"),
@@ -89,6 +101,13 @@ BAD = [
     ("collide", "--alpha", "3/2", "--gamma", "1", "--D1", "1", "--D2", "1"),
     ("collide", "--alpha", "3/2", "--gamma", "1", "--omega", "1", "--g", "1"),
     ("collide", "--alpha", "3/2", "--gamma", "1", "--omega", "1", "--rtol", "0"),
+    ("eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0"),
+    ("eps", "--alpha", "3/2", "--gamma", "1", "--omega", "1", "nan"),
+    ("eps", "--alpha", "3/2", "--gamma", "1", "--omega", "1", "--tol", "1e-30"),
+    ("eps", "--alpha", "3/2", "--gamma", "1", "--omega", "1", "--tol", "2"),
+    ("eps", "--alpha", "3/2", "--gamma", "1", "--D1", "1", "--D2", "1"),
+    ("eps", "--alpha", "3/2", "--gamma", "1", "--omega", "1", "--g", "1"),
+    ("eps", "--alpha", "0", "--gamma", "1", "--omega", "1"),
     ("frobnicate",),
     (),
 ]

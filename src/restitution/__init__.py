@@ -9,7 +9,8 @@ from .exponents import Exponents
 from .model import Material
 from .series import perturbation_series
 
-__all__ = ["ParameterError", "Exponents", "Material", "perturbation_series", "collide", "inverse_collide"]
+__all__ = ["ParameterError", "Exponents", "Material", "perturbation_series", "collide", "inverse_collide",
+           "epsilon", "EpsResult"]
 __version__ = "0.1.0"
 
 
@@ -17,4 +18,7 @@ def __getattr__(name):
     if name in ("collide", "inverse_collide", "collide_many"):
         from . import collision
         return getattr(collision, name)
+    if name in ("epsilon", "EpsResult"):
+        from . import ladder
+        return getattr(ladder, name)
     raise AttributeError(f"module 'restitution' has no attribute {name!r}")

@@ -1,4 +1,4 @@
-"""Command line: `restitution series`, `restitution collide`.
+"""Command line: `restitution series`, `restitution collide`, `restitution eps`.
 
 User mistakes end in one line on stderr and exit status 2, never a traceback.
 """
@@ -69,6 +69,9 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--g", type=_number, help="impact speed g > 0")
     c.add_argument("--rtol", type=_number, default=1e-12, help="relative tolerance (default 1e-12)")
     c.add_argument("--json", action="store_true", help="machine-readable output")
+
+    from .eps_cli import add_eps_subcommand
+    add_eps_subcommand(sub)
     return parser
 
 
@@ -134,7 +137,8 @@ def main(argv=None, out=None) -> int:
     out = sys.stdout if out is None else out
     try:
         args = build_parser().parse_args(argv)
-        {"series": _run_series, "collide": _run_collide}[args.command](args, out)
+        from .eps_cli import run_eps
+        {"series": _run_series, "collide": _run_collide, "eps": run_eps}[args.command](args, out)
     except _UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_USAGE

@@ -1,0 +1,312 @@
+"""Speed against accuracy of every way to get eps(Omega), side by side in one run.
+
+    .venv/bin/python benchmarks/speed_accuracy.py [--out results/bench] [--points 64] [--quick]
+
+Writes ``<out>/speed_accuracy.csv`` (one row per method and setting: cost per evaluation, evaluations
+per second, max and median relative error against the mpmath reference over a fixed Omega set),
+``<out>/summary.json`` (the targets of issue 5 and whether they are met) and ``<out>/pareto.pdf``,
+``<out>/pareto.png`` (error against cost).
+
+The Omega set: 1e-6, 1e6 and ``--points`` - 2 log-uniform random Omegas between (fixed seed, so not
+nodes of any fit), per exponent pair; the reference is restitution.highprec at 25 digits. Rungs that only apply on
+part of the range (expansions) are scored on that part (columns omega_min, omega_max, n_points).
+Exponents: the paper's (alpha = 3/2, gamma = 1) and Hertz/Kuwabara-Kono (3/2, 1/2), where the
+Mueller & Poeschel Pade expression is a peer. Timings are wall-clock on one core (numba kernels are
+single-threaded; best of several repeats), so they vary from machine to machine and run to run.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "src"))
+
+from restitution.asymptotics import elastic_limit, viscous_limit  # noqa: E402
+from restitution.exponents import as_exponents  # noqa: E402
+from restitution.fast import collide_fast  # noqa: E402
+from restitution.highprec import reference_collision  # noqa: E402
+from restitution.ladder import (Calibration, Ladder, _relation_eps, build_calibration,  # noqa: E402
+                                pade_mp2011)
+from restitution.master import MasterSettings  # noqa: E402
+
+SEED = 12345
+OMEGA_RANGE = (1e-6, 1e6)
+REF_DIGITS = 25
+FAST_TARGET = 1e7          # evaluations per second
+FAST_ERR_TARGET = 1e-9     # max relative error over OMEGA_RANGE
+EXACT_SPEEDUP_TARGET = 10.0
+EXPONENTS = (("3/2", "1"), ("3/2", "1/2"))
+
+
+# ------------------------------------------------------------------------------------ peers
+def plain_solve_ivp_eps(alpha: float, gamma: float, omega: float, rtol: float) -> float:
+    """What a user would write: integrate in tau from x = 0, stop where the total force vanishes."""
+    def rhs(t, y):
+        x, v = y
+        xp = max(x, 0.0)
+        return [v, -omega * xp ** alpha - xp ** gamma * v]
+
+    def contact_end(t, y):  # force / x^gamma = Omega x^(alpha-gamma) + x'
+        x, v = y
+        return omega * max(x, 0.0) ** (alpha - gamma) + v
+
+    contact_end.terminal = True
+    contact_end.direction = -1
+    t_max = 100.0 + 10.0 * math.log1p(1.0 / omega)
+    sol = solve_ivp(rhs, (0.0, t_max), [0.0, 1.0], method="DOP853", rtol=rtol, atol=1e-3 * rtol,
+                    events=contact_end)
+    if sol.t_events[0].size:
+        return float(-sol.y_events[0][0][1])
+    return float(-sol.y[1, -1])
+
+
+def _time_per_point(fun, n: int, repeats: int = 3) -> float:
+    best = math.inf
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        fun()
+        best = min(best, time.perf_counter() - t0)
+    return best / n
+
+
+def _errors(approx, ref):
+    with np.errstate(invalid="ignore", divide="ignore"):
+        e = np.abs(np.asarray(approx, float) / ref - 1.0)
+    e = np.where(np.isfinite(e), e, np.inf)
+    return float(np.max(e)), float(np.median(e))
+
+
+# ------------------------------------------------------------------------------------ one pair
+def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, log) -> list[dict]:
+    ex = as_exponents(alpha, gamma)
+    rng = np.random.default_rng(SEED)
+    inner = np.exp(rng.uniform(math.log(OMEGA_RANGE[0]), math.log(OMEGA_RANGE[1]), n_points - 2))
+    omegas = np.sort(np.concatenate([OMEGA_RANGE, inner]))  # both ends of the range, and random points
+    log(f"[{alpha}, {gamma}] mpmath reference at {n_points} Omegas ({REF_DIGITS} digits)")
+    t0 = time.perf_counter()
+    ref = np.array([float(reference_collision(ex, None, float(w), digits=REF_DIGITS).eps) for w in omegas])
+    hp_cost = (time.perf_counter() - t0) / n_points
+    rows = []
+
+    def row(method, setting, cost, sel=None, approx=None, note=""):
+        s = np.ones(omegas.size, bool) if sel is None else sel
+        mx, md = _errors(approx, ref[s])
+        rows.append({"alpha": alpha, "gamma": gamma, "method": method, "setting": setting,
+                     "cost_per_eval_s": cost, "evals_per_s": 1.0 / cost if cost > 0 else math.inf,
+                     "max_rel_err": mx, "median_rel_err": md, "omega_min": float(omegas[s].min()),
+                     "omega_max": float(omegas[s].max()), "n_points": int(s.sum()), "note": note})
+        log(f"  {method:18s} {setting:14s} {cost:9.3g} s/eval  max err {mx:9.3g}  median {md:9.3g}")
+
+    row("highprec", f"digits={REF_DIGITS}", hp_cost, approx=ref, note="the reference itself (error 0 by definition)")
+    d16 = [float(reference_collision(ex, None, float(w), digits=16).eps) for w in omegas[:: max(1, n_points // 8)]]
+    sel16 = np.zeros(omegas.size, bool)
+    sel16[:: max(1, n_points // 8)] = True
+    t16 = _time_per_point(lambda: [reference_collision(ex, None, float(w), digits=16) for w in omegas[sel16][:3]], 3, 1)
+    row("highprec", "digits=16", t16, sel16, d16)
+
+    # -- calibration (master curve and the relation rungs), timed as a build
+    log(f"[{alpha}, {gamma}] building the master curve")
+    t0 = time.perf_counter()
+    cal: Calibration = build_calibration(ex, None, MasterSettings(), progress=lambda m: None)
+    build_s = time.perf_counter() - t0
+    (out / "cache").mkdir(parents=True, exist_ok=True)
+    with open(out / "cache" / f"calibration-{alpha.replace('/', '_')}-{gamma.replace('/', '_')}.json", "w") as fh:
+        json.dump(cal.as_dict(), fh, separators=(",", ":"))
+    m = cal.master
+
+    # -- fast rung: the master curve, timed on 1e7 points (one core)
+    n_fast = 10_000_000 if not quick else 1_000_000
+    big = np.exp(np.random.default_rng(SEED + 1).uniform(math.log(OMEGA_RANGE[0]), math.log(OMEGA_RANGE[1]), n_fast))
+    m.eps(big[:10])
+    fast_cost = _time_per_point(lambda: m.eps(big), n_fast, 5)
+    row("master", f"{m.coef.shape[0]}x{m.coef.shape[1] - 1} Chebyshev", fast_cost, approx=m.eps(omegas),
+        note=f"build {build_s:.1f} s once; claimed bound {m.bound(omegas):.2g}")
+
+    # -- expansions on their domains
+    V, E = viscous_limit(ex, None), elastic_limit(ex, None)
+    sv = omegas <= 1e-3
+    if sv.any():
+        ev = lambda: V.eps(big, 1)  # noqa: E731
+        row("viscous", "order 1", _time_per_point(ev, n_fast, 3), sv, V.eps(omegas[sv], 1),
+            note="Omega <= 1e-3")
+        row("viscous", "order 0", _time_per_point(lambda: V.eps(big, 0), n_fast, 3), sv, V.eps(omegas[sv], 0),
+            note="eps = k Omega")
+    se = omegas >= 1e2
+    if se.any():
+        row("elastic", "C1,C2,E", _time_per_point(lambda: E.eps(big, 2), n_fast, 3), se, E.eps(omegas[se], 2),
+            note="Omega >= 100")
+        row("elastic", "C1 only", _time_per_point(lambda: E.eps(big, 1), n_fast, 3), se, E.eps(omegas[se], 1),
+            note="Omega >= 100")
+
+    # -- relations
+    for name, r in cal.relations.items():
+        c = r["c"]
+        row(name, "c0-c2", _time_per_point(lambda: _relation_eps(ex, big, c), n_fast, 3),
+            approx=_relation_eps(ex, omegas, c), note=r["source"])
+    for name, why in cal.unavailable.items():
+        log(f"  {name:18s} unavailable: {why}")
+    if ex.alpha == as_exponents("3/2", "1/2").alpha and ex.gamma == as_exponents("3/2", "1/2").gamma:
+        row("pade-mp2011", "Mueller-Poeschel", _time_per_point(lambda: pade_mp2011(big), n_fast, 3),
+            approx=pade_mp2011(omegas), note="coefficients from a public implementation (see ladder.py)")
+
+    # -- exact rungs: compiled integrator vs scipy
+    collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas[:2], 1e-8)
+    for rtol in (1e-6, 1e-8, 1e-10, 1e-12, 1e-14):
+        res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, rtol)
+        cost = _time_per_point(lambda r=rtol: collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, r), omegas.size, 3)
+        row("integrator", f"rtol={rtol:g}", cost, approx=res[:, 0], note="compiled DOP853 (restitution.fast)")
+    sub = omegas if not quick else omegas[::4]
+    ssel = np.isin(omegas, sub)
+    fa, fg = float(ex.alpha), float(ex.gamma)
+    for rtol in ((1e-6, 1e-8, 1e-10, 1e-12) if not quick else (1e-8, 1e-12)):
+        vals = []
+        t0 = time.perf_counter()
+        for w in sub:
+            vals.append(plain_solve_ivp_eps(fa, fg, float(w), rtol))
+        cost = (time.perf_counter() - t0) / sub.size
+        row("solve_ivp plain", f"rtol={rtol:g}", cost, ssel, vals, note="per-point scipy DOP853 as a user writes it")
+    from restitution.collision import collide
+    for rtol in ((1e-8, 1e-12) if not quick else (1e-12,)):
+        t0 = time.perf_counter()
+        vals = [collide(ex, None, float(w), rtol=rtol).eps for w in sub]
+        cost = (time.perf_counter() - t0) / sub.size
+        row("collide (scipy)", f"rtol={rtol:g}", cost, ssel, vals, note="restitution.collision.collide")
+
+    # -- the public call end to end: 1e6 impact speeds at tol = 1e-6, master cached
+    lad = Ladder(ex, None, cache_dir=str(out / "cache" / "ladder"), stream=open(os.devnull, "w"))
+    lad._cal = cal  # the calibration just built (what a cached one would load)
+    g_speeds = np.geomspace(1e-3, 10, 1_000_000)
+    from restitution.model import Material
+    mat = Material(ex, None, 0.000296, 0.0109)
+    om_g = mat.omega(g_speeds)
+    t_call = _time_per_point(lambda: lad.evaluate(mat.omega(g_speeds), tol=1e-6), 1, 3)
+    chosen = lad.evaluate(om_g, tol=1e-6)
+    rows.append({"alpha": alpha, "gamma": gamma, "method": "epsilon()", "setting": "tol=1e-6, 1e6 speeds",
+                 "cost_per_eval_s": t_call / g_speeds.size, "evals_per_s": g_speeds.size / t_call,
+                 "max_rel_err": math.nan, "median_rel_err": math.nan, "omega_min": float(om_g.min()),
+                 "omega_max": float(om_g.max()), "n_points": g_speeds.size,
+                 "note": f"total {t_call:.3f} s incl. Omega(g) and the choice; picked {chosen.method}"})
+    log(f"  epsilon(tol=1e-6) on 1e6 speeds: {t_call:.3f} s ({chosen.method})")
+    return rows
+
+
+# ------------------------------------------------------------------------------------ summary, plot
+def summarise(rows: list[dict]) -> dict:
+    out = {}
+    for alpha, gamma in EXPONENTS:
+        rs = [r for r in rows if r["alpha"] == alpha and r["gamma"] == gamma]
+        if not rs:
+            continue
+        fast = next(r for r in rs if r["method"] == "master")
+        integ = [r for r in rs if r["method"] == "integrator"]
+        plain = [r for r in rs if r["method"] == "solve_ivp plain"]
+        speedups = []
+        for p in plain:
+            match = [r for r in integ if r["max_rel_err"] <= p["max_rel_err"]]
+            if match:
+                best = min(match, key=lambda r: r["cost_per_eval_s"])
+                speedups.append({"solve_ivp": p["setting"], "solve_ivp_err": p["max_rel_err"],
+                                 "integrator": best["setting"], "integrator_err": best["max_rel_err"],
+                                 "speedup": p["cost_per_eval_s"] / best["cost_per_eval_s"]})
+        call = next((r for r in rs if r["method"] == "epsilon()"), None)
+        out[f"{alpha},{gamma}"] = {
+            "fast_evals_per_s": fast["evals_per_s"], "fast_max_rel_err": fast["max_rel_err"],
+            "fast_target_met": bool(fast["evals_per_s"] >= FAST_TARGET and fast["max_rel_err"] <= FAST_ERR_TARGET),
+            "exact_speedups": speedups,
+            "exact_target_met": bool(speedups and min(s["speedup"] for s in speedups) >= EXACT_SPEEDUP_TARGET),
+            "epsilon_1e6_speeds_s": call["cost_per_eval_s"] * call["n_points"] if call else None,
+        }
+    return out
+
+
+def pareto(rows: list[dict], path_pdf: Path, path_png: Path) -> None:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.rcParams.update({"svg.hashsalt": "restitution", "font.size": 8})
+    fig, axes = plt.subplots(1, len(EXPONENTS), figsize=(7.0, 3.4), sharey=True)
+    markers = {"master": "*", "integrator": "o", "solve_ivp plain": "s", "collide (scipy)": "D",
+               "highprec": "P", "viscous": "<", "elastic": ">", "pade-mp2011": "X", "paper-c": "v",
+               "fitted-c": "^", "perturbation-N1": "1", "perturbation-N2": "2", "perturbation-N3": "3",
+               "perturbation-N4": "4"}
+    for ax, (alpha, gamma) in zip(np.atleast_1d(axes), EXPONENTS):
+        rs = [r for r in rows if r["alpha"] == alpha and r["gamma"] == gamma and r["method"] != "epsilon()"
+              and not (r["method"] == "highprec" and r["setting"] == f"digits={REF_DIGITS}")]
+        for method in dict.fromkeys(r["method"] for r in rs):
+            pts = sorted((r["cost_per_eval_s"], max(r["max_rel_err"], 1e-17)) for r in rs if r["method"] == method)
+            pts = [(c, min(e, 1e3)) for c, e in pts]
+            xs, ys = zip(*pts)
+            ax.plot(xs, ys, marker=markers.get(method, "."), linestyle="-" if len(xs) > 1 else "none",
+                    label=method, markersize=5)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("cost per evaluation (s, one core)")
+        ax.set_title(f"alpha = {alpha}, gamma = {gamma}")
+        ax.grid(True, which="major", alpha=0.3)
+    np.atleast_1d(axes)[0].set_ylabel("max relative error vs mpmath (capped at 1e3)")
+    handles = {}
+    for ax in np.atleast_1d(axes):
+        for h, lab in zip(*ax.get_legend_handles_labels()):
+            handles.setdefault(lab, h)
+    fig.legend(list(handles.values()), list(handles.keys()), fontsize=6, loc="lower center", ncol=7,
+               frameon=False)
+    fig.subplots_adjust(bottom=0.28)
+    fig.tight_layout(rect=(0, 0.12, 1, 1))
+    fig.savefig(path_pdf, metadata={"CreationDate": None, "ModDate": None, "Producer": None, "Creator": None})
+    fig.savefig(path_png, dpi=150, metadata={"Software": None})
+    plt.close(fig)
+
+
+FIELDS = ["alpha", "gamma", "method", "setting", "cost_per_eval_s", "evals_per_s", "max_rel_err",
+          "median_rel_err", "omega_min", "omega_max", "n_points", "note"]
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--out", default=str(ROOT / "results" / "bench"))
+    ap.add_argument("--points", type=int, default=64, help="Omegas in the fixed error set (default 64)")
+    ap.add_argument("--quick", action="store_true", help="fewer points and settings (for CI)")
+    args = ap.parse_args(argv)
+    out = Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    n = args.points if not args.quick else min(args.points, 16)
+
+    def log(msg):
+        print(msg, file=sys.stderr, flush=True)
+
+    rows = []
+    for alpha, gamma in EXPONENTS:
+        rows += bench_pair(alpha, gamma, n, args.quick, out, log)
+    tmp = out / "speed_accuracy.csv.tmp"
+    with open(tmp, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=FIELDS)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
+    os.replace(tmp, out / "speed_accuracy.csv")
+    summary = summarise(rows)
+    tmp = out / "summary.json.tmp"
+    with open(tmp, "w") as fh:
+        json.dump(summary, fh, indent=1, default=float)
+    os.replace(tmp, out / "summary.json")
+    pareto(rows, out / "pareto.pdf", out / "pareto.png")
+    log(json.dumps(summary, indent=1, default=float))
+    ok = all(v["fast_target_met"] and v["exact_target_met"] for v in summary.values())
+    log("targets met" if ok else "TARGETS NOT MET")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,94 @@
+"""On-disk cache for built objects (master curves): plain JSON, written atomically.
+
+Location: ``$RESTITUTION_CACHE`` if set, else ``~/.cache/restitution``. A file is written to a
+temporary name in the same directory and renamed into place, so a reader never sees half a file and
+a killed build leaves at most a stray ``*.tmp`` behind (ignored, and cleaned up by the next write of
+the same key). A file that cannot be read or does not validate is treated as missing and rebuilt.
+A cache directory that cannot be written is not an error: the object is built, used and a note is
+printed on stderr.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Callable
+
+__all__ = ["cache_dir", "cache_path", "load_json", "save_json_atomic", "get_or_build"]
+
+ENV_VAR = "RESTITUTION_CACHE"
+
+
+def cache_dir() -> Path:
+    """The cache directory (not created here)."""
+    env = os.environ.get(ENV_VAR)
+    if env:
+        return Path(env).expanduser()
+    return Path.home() / ".cache" / "restitution"
+
+
+def _safe(text: str) -> str:
+    return "".join(c if c.isalnum() or c in "-_." else "_" for c in text)
+
+
+def cache_path(key: str, directory: Path | None = None) -> Path:
+    """Path of the JSON file for ``key`` (characters outside [A-Za-z0-9-_.] become '_')."""
+    return (directory or cache_dir()) / f"{_safe(key)}.json"
+
+
+def load_json(path: Path) -> dict | None:
+    """The stored dict, or None when the file is missing or unreadable."""
+    try:
+        with open(path, encoding="utf-8") as fh:
+            data = json.load(fh)
+    except (OSError, ValueError):
+        return None
+    return data if isinstance(data, dict) else None
+
+
+def save_json_atomic(path: Path, data: dict) -> None:
+    """Write ``data`` as JSON to ``path`` through a temporary file and an atomic rename."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as fh:
+            json.dump(data, fh, separators=(",", ":"), allow_nan=False)
+            fh.write("\n")
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+
+
+def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict], bool] = lambda d: True,
+                 what: str = "", directory: Path | None = None, stream=None) -> dict:
+    """The cached dict for ``key`` if present and ``valid``; otherwise ``build()`` it and store it.
+
+    Progress ("building ..." / "done") goes to ``stream`` (default stderr).
+    """
+    stream = sys.stderr if stream is None else stream
+    path = cache_path(key, directory)
+    data = load_json(path)
+    if data is not None and valid(data):
+        return data
+    label = what or key
+    print(f"restitution: building {label} (cached in {path}) ...", file=stream, flush=True)
+    t0 = time.perf_counter()
+    data = build()
+    try:
+        save_json_atomic(path, data)
+    except OSError as exc:
+        print(f"restitution: note: could not write the cache ({exc}); using the result without "
+              "caching it", file=stream, flush=True)
+    print(f"restitution: built {label} in {time.perf_counter() - t0:.1f} s", file=stream, flush=True)
+    return data

@@ -1,0 +1,548 @@
+"""The method ladder for eps(Omega) and ``epsilon()``, which picks the cheapest rung that meets a tolerance.
+
+Rungs (cheapest first; bounds are relative errors in eps, measured against the references on points
+not used to build the rung; "cal" = needs the calibration bundle, built once per exponents and cached):
+
+======================  =========================================  ============================  ========
+rung                    what                                       domain                        cost/pt
+======================  =========================================  ============================  ========
+paper-c          (cal)  Omega~ = c0 + c1 Omega + c2 Omega^2 with    alpha=3/2, gamma=1 where the   ~2e-8 s
+                        the paper's printed c0-c2, eps =            measured error is finite
+                        (Omega~/Omega)^((gamma+1)/(alpha-1-2gamma))
+fitted-c         (cal)  the same with c0-c2 fitted (least squares)  alpha-1-2gamma != 0            ~2e-8 s
+                        to the exact connection, Omega in [0.1, 3]
+perturbation-N<n>(cal)  the same with c0-c2 from the paper's        where the reading is defined   ~2e-8 s
+                        procedure on the exact series to Omega^n
+                        (n = 1..4, reading "converged, linear Delta")
+pade-mp2011      (cal)  Mueller & Poeschel's Pade form in           alpha=3/2, gamma=1/2           ~2e-8 s
+                        v = Omega^(-3/10)
+viscous          (cal)  small-Omega expansion (asymptotics)         Omega <= 1e-3                  ~2e-8 s
+elastic          (cal)  large-Omega expansion (asymptotics)         Omega >= 1e2                   ~3e-8 s
+closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma; alpha=1,gamma=0   5e-7 s
+                        linear spring-dashpot (restitution.dashpot)                                5e-6 s
+master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
+integrator              compiled DOP853 (restitution.fast),         Omega in [1e-12, 1e14]         2e-5 to
+                        rtol from tol                               (alpha<=gamma: >= 1e-5)        7e-5 s
+reference               restitution.collision.collide (scipy)       all                            ~1e-2 s
+highprec                restitution.highprec (mpmath Taylor)        all (alpha<=gamma: >= 1e-3)    ~0.3 s
+======================  =========================================  ============================  ========
+
+Bounds:
+
+* relation rungs, Pade, expansions inside the calibration grid (Omega 1e-12..1e14 in steps of
+  0.1 decade): SAFETY x the largest error at the grid points bracketing the inputs + the grid's own
+  accuracy; expansions beyond the grid: the fitted remainder model of :mod:`restitution.master`;
+* master: measured held-out error inside its range (x2), expansion bounds outside;
+* integrator: INTEGRATOR_BOUND_FACTOR rtol + INTEGRATOR_BOUND_FLOOR (validated against mpmath);
+* reference: 10 rtol + 1e-13 (validated against mpmath); highprec: 10^(1 - digits), at least the
+  2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
+* closed-form: 2e-14 (validated against mpmath).
+
+Choice: among rungs whose domain holds every input and whose bound over the inputs is <= tol, the
+least expected time (setup + n x cost). The calibration bundle is built (seconds, cached on disk) only
+when that is cheaper than the best rung that does not need it, or when nothing else meets tol.
+A tolerance no rung meets raises ParameterError naming the best bound available.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import sys
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Callable
+
+import numpy as np
+
+from . import asymptotics as asy
+from . import cache as _cache
+from .errors import ParameterError
+from .exponents import Exponents, as_exponents
+from .master import (MASTER_VERSION, MasterCurve, MasterSettings, build_master, integrator_bound,
+                     reference_eps, stiff_omega_min)
+
+__all__ = ["EpsResult", "Ladder", "epsilon", "RUNG_NAMES", "SAFETY", "MUELLER_POESCHEL_PADE"]
+
+#: Profile bounds are SAFETY times the largest measured error at the bracketing grid points.
+SAFETY = 3.0
+#: Version of the calibration bundle (master curve + profiles); bump to invalidate caches.
+CALIBRATION_VERSION = 2
+#: Omega range of the c0-c2 fit (the claims ledger fits the paper's material over g in [0.01, 1],
+#: i.e. Omega in [0.098, 3.1]).
+FIT_OMEGA = (0.1, 3.0, 41)
+#: Orders of the perturbation route: the paper's procedure on the converged exact series, with
+#: Delta, Delta~ from x' expanded to first order in Delta and solved exactly (connection.Reading
+#: delta="linear"). That reading is fixed in advance because it is defined at every order; the
+#: printed lowest-order Delta formulas give no root c0 at odd orders for the paper's exponents.
+PERTURBATION_ORDERS = (1, 2, 3, 4)
+PERTURBATION_READING = {"truncation": "converged", "delta": "linear"}
+#: Mueller & Poeschel, PRE 84, 021302 (2011), alpha = 3/2, gamma = 1/2:
+#: eps = (1 + a v) / (1 + a v + b2 v^2 + b3 v^3 + b4 v^4), v = Omega^(-3/10) (their sqrt(beta) g^(1/10)
+#: in our scaling). Coefficients as used in a public implementation; we could not read the paper
+#: itself. They are consistent with the exact expansion: the v^2 term is -C1, the v^3 term vanishes
+#: (b3 = a b2 to 6 digits) and the v^4 term is C2 = (3/5) C1^2 to 6 digits (checked in the tests).
+MUELLER_POESCHEL_PADE = {"a": 0.501086, "b2": 1.15345, "b3": 0.577977, "b4": 0.532178}
+
+#: Rough seconds per point (measured by benchmarks/speed_accuracy.py on one core).
+COST = {"relation": 2e-8, "pade": 2e-8, "viscous": 2e-8, "elastic": 3e-8, "closed-equal": 5e-7,
+        "closed-dashpot": 5e-6, "master": 4e-8, "integrator": 6e-5, "reference": 1e-2, "highprec": 0.4}
+#: Rough seconds to build a calibration bundle that is not cached.
+BUILD_COST = {"alpha>gamma": 15.0, "alpha<=gamma": 30.0}
+
+
+# ------------------------------------------------------------------------------------------ result
+@dataclass(frozen=True)
+class EpsResult:
+    """What ``epsilon`` returns: eps (numpy array, same shape as the input), the rung used and its bound.
+
+    ``setting`` describes the rung's parameter (e.g. "rtol=1e-10"); ``candidates`` is the chooser's
+    table: one dict per rung with its bound over these inputs (inf when outside its domain), the
+    expected cost and why it was or was not eligible.
+    """
+
+    eps: np.ndarray
+    method: str
+    error_bound: float
+    omega: np.ndarray
+    alpha: Fraction
+    gamma: Fraction
+    tol: float
+    setting: str = ""
+    candidates: tuple = ()
+
+    def __array__(self, dtype=None, copy=None):
+        return np.asarray(self.eps, dtype=dtype)
+
+    def as_dict(self) -> dict:
+        return {"eps": np.asarray(self.eps, float).ravel().tolist(), "method": self.method,
+                "error_bound": float(self.error_bound), "alpha": str(self.alpha), "gamma": str(self.gamma),
+                "tol": self.tol, "setting": self.setting}
+
+
+# ------------------------------------------------------------------------------------------ helpers
+def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
+    allowed = "must be finite numbers > 0 (at least one)"
+    if isinstance(omega, (bool, np.bool_)):
+        raise ParameterError(field_name, omega, allowed)
+    try:
+        arr = np.asarray(omega, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(field_name, omega, allowed) from None
+    if arr.size == 0:
+        raise ParameterError(field_name, omega, allowed)
+    bad = ~(np.isfinite(arr) & (arr > 0))
+    if np.any(bad):
+        raise ParameterError(field_name, float(arr[bad].flat[0]), allowed)
+    return arr
+
+
+#: No method returns a double closer than this to the true eps (rounding of the result itself).
+TOL_FLOOR = 2.3e-16
+
+
+def _check_tol(tol) -> float:
+    allowed = f"must be a number in [{TOL_FLOOR:g}, 1): no method returns a double closer than that"
+    if isinstance(tol, (bool, np.bool_)):
+        raise ParameterError("tol", tol, allowed)
+    try:
+        t = float(tol)
+    except (TypeError, ValueError):
+        raise ParameterError("tol", tol, allowed) from None
+    # Refuse an unreachable tolerance at once, before any master curve is built for nothing.
+    if not (math.isfinite(t) and TOL_FLOOR <= t < 1.0):
+        raise ParameterError("tol", tol, allowed)
+    return t
+
+
+def _relation_eps(ex: Exponents, omega: np.ndarray, c) -> np.ndarray:
+    """eps from Omega~ = c0 + c1 Omega + c2 Omega^2 (NaN where Omega~ <= 0)."""
+    k = float(ex.omega_exponent)
+    wt = c[0] + c[1] * omega + c[2] * omega * omega
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(wt > 0, (wt / omega) ** (1.0 / k), np.nan)
+
+
+def pade_mp2011(omega) -> np.ndarray:
+    """Mueller & Poeschel's Pade approximant (alpha = 3/2, gamma = 1/2) in our Omega."""
+    c = MUELLER_POESCHEL_PADE
+    v = np.asarray(omega, dtype=float) ** -0.3
+    return (1.0 + c["a"] * v) / (1.0 + v * (c["a"] + v * (c["b2"] + v * (c["b3"] + v * c["b4"]))))
+
+
+def _rel_err(approx: np.ndarray, ref: np.ndarray) -> np.ndarray:
+    with np.errstate(invalid="ignore", divide="ignore"):
+        e = np.abs(approx / ref - 1.0)
+    return np.where(np.isfinite(e), e, np.inf)
+
+
+# ------------------------------------------------------------------------------------- calibration
+@dataclass
+class Calibration:
+    """Master curve + measured error profiles of the approximate rungs on the calibration grid."""
+
+    master: MasterCurve
+    profiles: dict            # rung -> np.ndarray of relative errors on master.grid_log10_omega
+    relations: dict           # rung -> {"c": [c0, c1, c2], "source": str}
+    unavailable: dict         # rung -> reason
+
+    def as_dict(self) -> dict:
+        return {"version": CALIBRATION_VERSION, "master": self.master.as_dict(),
+                "profiles": {k: [None if not np.isfinite(x) else float(x) for x in v]
+                             for k, v in self.profiles.items()},
+                "relations": self.relations, "unavailable": self.unavailable}
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "Calibration":
+        if d.get("version") != CALIBRATION_VERSION:
+            raise ValueError("calibration version mismatch")
+        prof = {k: np.array([np.inf if x is None else x for x in v], dtype=float)
+                for k, v in d["profiles"].items()}
+        return cls(MasterCurve.from_dict(d["master"]), prof, d["relations"], d["unavailable"])
+
+
+def _relations_for(ex: Exponents, progress) -> tuple[dict, dict]:
+    """c0-c2 of the relation rungs: the paper's, our fit, the perturbation route at each order."""
+    rel, missing = {}, {}
+    if ex.omega_exponent == 0:
+        reason = "alpha - 1 - 2 gamma = 0: Omega~ = Omega whatever eps is, the relation is empty"
+        missing.update({"paper-c": reason, "fitted-c": reason})
+        missing.update({f"perturbation-N{n}": reason for n in PERTURBATION_ORDERS})
+        return rel, missing
+    from . import printed
+    if ex.alpha == Fraction(3, 2) and ex.gamma == 1:
+        rel["paper-c"] = {"c": list(printed.PRINTED_C), "source": "printed in the paper"}
+    else:
+        missing["paper-c"] = "the printed c0-c2 belong to alpha = 3/2, gamma = 1"
+    lo, hi, n = FIT_OMEGA
+    om = np.geomspace(lo, hi, n)
+    try:
+        from .connection import fit_quadratic
+        eps = reference_eps(ex, None, om, 1e-13)
+        fit = fit_quadratic(om, om * eps ** float(ex.omega_exponent))
+        rel["fitted-c"] = {"c": list(fit.c), "source": f"least squares on Omega in [{lo}, {hi}], {n} points"}
+    except Exception as exc:  # noqa: BLE001 - a rung that cannot be built is reported, not fatal
+        missing["fitted-c"] = f"fit failed: {exc}"
+    for order in PERTURBATION_ORDERS:
+        name = f"perturbation-N{order}"
+        try:
+            from .connection import Reading, paper_procedure
+            progress(f"perturbation route, order {order}")
+            cc = paper_procedure(ex, None, Reading(omega_orders=order, **PERTURBATION_READING))
+            if cc.defined and all(math.isfinite(x) for x in cc.c):
+                rel[name] = {"c": [float(x) for x in cc.c], "source": f"paper's procedure, reading {cc.reading.label}"}
+            else:
+                missing[name] = f"paper's procedure undefined: {cc.reason}"
+        except Exception as exc:  # noqa: BLE001
+            missing[name] = f"paper's procedure failed: {type(exc).__name__}: {exc}"
+    return rel, missing
+
+
+def build_calibration(alpha, gamma, settings: MasterSettings | None = None, progress=None) -> Calibration:
+    ex = as_exponents(alpha, gamma)
+    say = progress or (lambda m: None)
+    master = build_master(ex, None, settings, progress=say)
+    grid = 10.0 ** master.grid_log10_omega
+    ref = master.grid_eps
+    rel, missing = _relations_for(ex, say)
+    profiles = {name: _rel_err(_relation_eps(ex, grid, r["c"]), ref) for name, r in rel.items()}
+    if ex.alpha == Fraction(3, 2) and ex.gamma == Fraction(1, 2):
+        profiles["pade-mp2011"] = _rel_err(pade_mp2011(grid), ref)
+    else:
+        missing["pade-mp2011"] = "the Pade form is for alpha = 3/2, gamma = 1/2 only"
+    profiles["viscous"] = _rel_err(_viscous_eval(master, grid), ref)
+    profiles["elastic"] = _rel_err(master.elastic.eps(grid, 2), ref)
+    return Calibration(master, profiles, rel, missing)
+
+
+def _viscous_eval(master: MasterCurve, om: np.ndarray) -> np.ndarray:
+    V = master.viscous
+    if V.kind == "closed":
+        return np.asarray(om, dtype=float).copy()  # eps = Omega, exponentially small error
+    return V.eps(om, 1)
+
+
+# ------------------------------------------------------------------------------------------ rungs
+@dataclass
+class _Quote:
+    name: str
+    bound: float
+    cost: float
+    setting: str = ""
+    reason: str = ""
+    needs_cal: bool = False
+    run: Callable | None = None
+
+
+RUNG_NAMES = ("paper-c", "fitted-c", *[f"perturbation-N{n}" for n in PERTURBATION_ORDERS],
+              "pade-mp2011", "viscous", "elastic", "closed-form", "master", "integrator",
+              "reference", "highprec")
+
+
+class Ladder:
+    """The ladder for one pair of exponents (and one calibration setting / cache directory)."""
+
+    def __init__(self, alpha, gamma, *, settings: MasterSettings | None = None, cache_dir=None,
+                 stream=None):
+        self.ex = as_exponents(alpha, gamma)
+        self.settings = settings or MasterSettings()
+        self.cache_dir = cache_dir
+        self.stream = stream
+        self._cal: Calibration | None = None
+
+    # -- calibration bundle
+    @property
+    def cache_key(self) -> str:
+        return (f"calibration-a{self.ex.alpha}-g{self.ex.gamma}-v{CALIBRATION_VERSION}.{MASTER_VERSION}"
+                f"-{hashlib.sha256(self.settings.key().encode()).hexdigest()[:12]}")
+
+    def _valid(self, d: dict) -> bool:
+        try:
+            cal = Calibration.from_dict(d)
+        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
+            return False
+        return (cal.master.alpha == self.ex.alpha and cal.master.gamma == self.ex.gamma
+                and cal.master.settings == self.settings)
+
+    def cached_calibration(self) -> Calibration | None:
+        if self._cal is None:
+            from pathlib import Path
+            d = _cache.load_json(_cache.cache_path(self.cache_key, Path(self.cache_dir) if self.cache_dir else None))
+            if d is not None and self._valid(d):
+                self._cal = Calibration.from_dict(d)
+        return self._cal
+
+    def calibration(self) -> Calibration:
+        if self.cached_calibration() is None:
+            from pathlib import Path
+            stream = sys.stderr if self.stream is None else self.stream
+
+            def progress(msg):
+                print(f"restitution:   {msg}", file=stream, flush=True)
+
+            d = _cache.get_or_build(
+                self.cache_key, lambda: build_calibration(self.ex, None, self.settings, progress).as_dict(),
+                valid=self._valid, what=f"the master curve for alpha={self.ex.alpha}, gamma={self.ex.gamma}",
+                directory=Path(self.cache_dir) if self.cache_dir else None, stream=stream)
+            self._cal = Calibration.from_dict(d)
+        return self._cal
+
+    @property
+    def master(self) -> MasterCurve:
+        return self.calibration().master
+
+    # -- quotes
+    def _profile_bound(self, cal: Calibration, name: str, lo10: float, hi10: float) -> float:
+        g = cal.master.grid_log10_omega
+        e = cal.profiles[name]
+        if lo10 < g[0] - 1e-9 or hi10 > g[-1] + 1e-9:
+            return math.inf
+        i0 = max(0, int(np.searchsorted(g, lo10, side="right")) - 1)
+        i1 = min(g.size - 1, int(np.searchsorted(g, hi10, side="left")))
+        worst = float(np.max(e[i0:i1 + 1]))
+        return SAFETY * worst + integrator_bound(cal.master.settings.rtol)
+
+    def quotes(self, omega: np.ndarray, tol: float) -> list[_Quote]:
+        """Every rung with its bound over ``omega``, cost and a runner (None when not applicable)."""
+        ex = self.ex
+        n = omega.size
+        lo, hi = float(omega.min()), float(omega.max())
+        lo10, hi10 = math.log10(lo), math.log10(hi)
+        cal = self.cached_calibration()
+        out: list[_Quote] = []
+        big = ex.alpha > ex.gamma
+
+        # calibrated rungs
+        cal_names = ["paper-c", "fitted-c", *[f"perturbation-N{k}" for k in PERTURBATION_ORDERS],
+                     "pade-mp2011", "viscous", "elastic", "master"]
+        if cal is None:
+            for name in cal_names:
+                cost = COST["master"] if name == "master" else COST["relation"]
+                out.append(_Quote(name, math.nan, cost * n, reason="needs the calibration bundle (not built yet)",
+                                  needs_cal=True))
+        else:
+            for name in cal_names:
+                out.append(self._cal_quote(cal, name, omega, lo10, hi10, n))
+
+        # closed forms
+        if ex.alpha == ex.gamma:
+            out.append(_Quote("closed-form", 2e-14, COST["closed-equal"] * n, "alpha = gamma",
+                              run=lambda om: asy.equal_exponents_eps(om)))
+        elif ex.alpha == 1 and ex.gamma == 0:
+            out.append(_Quote("closed-form", 2e-14, COST["closed-dashpot"] * n, "spring-dashpot",
+                              run=_dashpot_eps))
+        else:
+            out.append(_Quote("closed-form", math.inf, 0.0, reason="only for alpha = gamma or alpha=1, gamma=0"))
+
+        # compiled integrator
+        wmin = stiff_omega_min(ex, None)
+        if lo < wmin or hi > 1e14:
+            out.append(_Quote("integrator", math.inf, math.inf,
+                              reason=f"Omega outside [{wmin:g}, 1e14] (explicit method; stiff below)"))
+        else:
+            rtol = min(1e-6, max(1e-14, (tol - integrator_bound(0.0)) / (2 * 10.0)))
+            cost = COST["integrator"] * n * (1.0 if big else (1.0 + 1e-3 / lo))
+            out.append(_Quote("integrator", integrator_bound(rtol), cost, f"rtol={rtol:.3g}",
+                              run=lambda om, r=rtol: reference_eps(ex, None, om, r)))
+
+        # scipy reference
+        rtol_s = min(1e-6, max(1e-14, (tol - 1e-13) / 20.0))
+        out.append(_Quote("reference", 10.0 * rtol_s + 1e-13, COST["reference"] * n, f"rtol={rtol_s:.3g}",
+                          run=lambda om, r=rtol_s: _scipy_eps(ex, om, r)))
+
+        # mpmath reference
+        if not big and lo < 1e-3:
+            out.append(_Quote("highprec", math.inf, math.inf, reason="Omega < 1e-3 with alpha <= gamma (creeping)"))
+        else:
+            digits = int(min(60, max(15, math.ceil(-math.log10(tol)) + 3)))
+            out.append(_Quote("highprec", max(10.0 ** (1 - digits), TOL_FLOOR), COST["highprec"] * n, f"digits={digits}",
+                              run=lambda om, d=digits: _highprec_eps(ex, om, d)))
+        return out
+
+    def _cal_quote(self, cal: Calibration, name: str, omega, lo10, hi10, n) -> _Quote:
+        ex = self.ex
+        m = cal.master
+        if name == "master":
+            return _Quote(name, m.bound(omega), COST["master"] * n, f"{m.coef.shape[0]} panels",
+                          run=lambda om: m.eps(om))
+        if name in cal.unavailable:
+            return _Quote(name, math.inf, 0.0, reason=cal.unavailable[name])
+        if name in ("viscous", "elastic"):
+            if name == "viscous":
+                limit = 1e-2 if m.viscous.kind != "force" else 1e-3
+                if 10 ** hi10 > limit:
+                    return _Quote(name, math.inf, 0.0, reason=f"Omega > {limit:g}")
+                model = m.viscous_bound
+                run = lambda om: _viscous_eval(m, om)  # noqa: E731
+            else:
+                if 10 ** lo10 < 1e2:
+                    return _Quote(name, math.inf, 0.0, reason="Omega < 100")
+                model = m.elastic_bound
+                run = lambda om: m.elastic.eps(om, 2)  # noqa: E731
+            g = m.grid_log10_omega
+            b = 0.0
+            if hi10 >= g[0] and lo10 <= g[-1]:
+                b = self._profile_bound(cal, name, max(lo10, g[0]), min(hi10, g[-1]))
+            ends = np.array([10 ** lo10, 10 ** hi10])
+            outside = ends[(np.log10(ends) < g[0]) | (np.log10(ends) > g[-1])]
+            if outside.size:
+                b = max(b, float(np.max(SAFETY * model(outside))))
+            return _Quote(name, b, COST[name] * n, "expansion", run=run)
+        if name not in cal.profiles:
+            return _Quote(name, math.inf, 0.0, reason="not calibrated")
+        b = self._profile_bound(cal, name, lo10, hi10)
+        if name == "pade-mp2011":
+            run = pade_mp2011
+            cost = COST["pade"]
+        else:
+            c = cal.relations[name]["c"]
+            run = lambda om, c=c: _relation_eps(ex, om, c)  # noqa: E731
+            cost = COST["relation"]
+        reason = "" if math.isfinite(b) else "no finite measured error over these Omegas (outside the grid or the relation breaks down)"
+        return _Quote(name, b, cost * n, "c0-c2" if name != "pade-mp2011" else "", reason=reason, run=run)
+
+    # -- the choice
+    def evaluate(self, omega, *, tol: float = 1e-9, method: str | None = None, build: bool | None = None) -> EpsResult:
+        om = _omega_array(omega)
+        tol = _check_tol(tol)
+        if method is not None and method not in RUNG_NAMES:
+            raise ParameterError("method", method, f"must be one of {', '.join(RUNG_NAMES)}")
+        flat = om.ravel()
+        quotes = self.quotes(flat, tol)
+        if build is not False and self.cached_calibration() is None:
+            need = method is not None and any(q.name == method and q.needs_cal for q in quotes)
+            if build or need or self._building_pays(quotes, tol, flat.size):
+                self.calibration()
+                quotes = self.quotes(flat, tol)
+        if method is not None:
+            q = next(q for q in quotes if q.name == method)
+            if q.run is None:
+                raise ParameterError("method", method, f"not available here: {q.reason or 'needs the calibration'}")
+            if not q.bound <= tol:
+                raise ParameterError("tol", tol, f"method {method} has bound {q.bound:.3g} over these Omegas")
+            chosen = q
+        else:
+            ok = [q for q in quotes if q.run is not None and q.bound <= tol]
+            if not ok:
+                finite = [q for q in quotes if q.run is not None and math.isfinite(q.bound)]
+                best = min(finite, key=lambda q: q.bound) if finite else None
+                hint = (f"the smallest bound over these Omegas is {best.bound:.3g} ({best.name})" if best
+                        else "no method covers these Omegas")
+                raise ParameterError("tol", tol, f"no method reaches it: {hint}")
+            chosen = min(ok, key=lambda q: (q.cost, q.bound))
+        eps = np.asarray(chosen.run(flat), dtype=float)
+        if not np.all(np.isfinite(eps)):
+            raise ArithmeticError(f"method {chosen.name} returned non-finite eps")
+        table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
+                       "available": q.run is not None, "reason": q.reason} for q in quotes)
+        return EpsResult(eps.reshape(om.shape), chosen.name, float(chosen.bound), om, self.ex.alpha,
+                         self.ex.gamma, tol, chosen.setting, table)
+
+    def _building_pays(self, quotes, tol: float, n: int) -> bool:
+        """Build the calibration when nothing else meets tol, or when it is cheaper overall."""
+        plain = [q.cost for q in quotes if not q.needs_cal and q.run is not None and q.bound <= tol]
+        setup = BUILD_COST["alpha>gamma" if self.ex.alpha > self.ex.gamma else "alpha<=gamma"]
+        return not plain or setup + COST["master"] * n < min(plain)
+
+
+def _dashpot_eps(om: np.ndarray) -> np.ndarray:
+    from .dashpot import dashpot_collision
+    return np.array([dashpot_collision(float(w)).eps for w in np.ravel(om)])
+
+
+def _scipy_eps(ex: Exponents, om: np.ndarray, rtol: float) -> np.ndarray:
+    from .collision import collide
+    return np.array([collide(ex, None, float(w), rtol=rtol).eps for w in np.ravel(om)])
+
+
+def _highprec_eps(ex: Exponents, om: np.ndarray, digits: int) -> np.ndarray:
+    from .highprec import reference_collision
+    out = []
+    for w in np.ravel(om):
+        r = reference_collision(ex, None, float(w), digits=digits)
+        if not r.error_estimate <= 10.0 ** (1 - digits):
+            raise ArithmeticError(f"mpmath reference did not converge at Omega = {w} "
+                                  f"(estimate {float(r.error_estimate):.3g})")
+        out.append(float(r.eps))
+    return np.array(out)
+
+
+# --------------------------------------------------------------------------------- the public call
+_LADDERS: dict = {}
+
+
+def _ladder(alpha, gamma) -> Ladder:
+    ex = as_exponents(alpha, gamma)
+    key = (ex.alpha, ex.gamma, _cache.cache_dir())
+    if key not in _LADDERS:
+        _LADDERS[key] = Ladder(ex, None)
+    return _LADDERS[key]
+
+
+def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 1e-9,
+            method: str | None = None, build: bool | None = None) -> EpsResult:
+    """Coefficient of restitution to a relative tolerance ``tol``, by the cheapest adequate method.
+
+    Give either ``omega`` (scaled parameter, scalar or array) or the impact speeds ``g`` with the
+    material constants ``D1``, ``D2`` (Omega = D1 g^((alpha-1-2gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1))).
+    Returns an :class:`EpsResult`: ``.eps`` (numpy array shaped like the input), ``.method``,
+    ``.error_bound`` (relative, over all inputs), ``.candidates`` (the chooser's table).
+    ``method`` forces a rung (it must still meet ``tol``); ``build`` = False never builds the
+    calibration bundle, True always does, None (default) builds it when that pays.
+    Raises ParameterError for bad input and for a tolerance no rung meets.
+    """
+    ex = as_exponents(alpha, gamma)
+    if omega is not None:
+        if g is not None or D1 is not None or D2 is not None:
+            raise ParameterError("omega", omega, "give either omega or all of g, D1, D2, not both")
+        om = _omega_array(omega, "omega")
+    else:
+        if g is None or D1 is None or D2 is None:
+            missing = [n for n, v in (("g", g), ("D1", D1), ("D2", D2)) if v is None]
+            raise ParameterError(missing[0], None, "give omega, or all of g, D1, D2")
+        from .model import Material
+        gs = _omega_array(g, "g")
+        with np.errstate(over="ignore", under="ignore"):
+            om = np.asarray(Material(ex, None, D1, D2).omega(gs), dtype=float).reshape(gs.shape)
+        om = _omega_array(om, "omega")  # Omega itself may over/underflow for extreme inputs
+    return _ladder(ex, None).evaluate(om, tol=tol, method=method, build=build)

@@ -1,0 +1,291 @@
+"""The method ladder and restitution.epsilon(): every rung's bound against the mpmath reference on
+held-out points, the chooser never exceeding tol, refusals and bad input.
+
+Calibrations are small (Omega grid 1e-4..1e4) and built into a temporary cache in this session.
+"""
+
+from __future__ import annotations
+
+import argparse
+import io
+import json
+import math
+import time
+
+import numpy as np
+import pytest
+
+from restitution.errors import ParameterError
+from restitution.exponents import as_exponents
+from restitution.highprec import reference_collision
+from restitution.ladder import RUNG_NAMES, Ladder, epsilon
+from restitution.master import MasterSettings, integrator_bound, reference_eps
+from restitution.model import Material
+
+SMALL = MasterSettings(log10_omega_min=-4.0, log10_omega_max=4.0, grid_step=0.25, degree=12, width=1.0,
+                       heldout_per_panel=2, n_highprec=1)
+# held-out Omegas: not grid points, not nodes, spread over every rung's domain
+HELD_OUT = np.array([3.3e-6, 2.1e-5, 4.7e-4, 0.031, 0.77, 5.3, 260.0, 4.1e4, 3.7e7])
+
+
+@pytest.fixture(scope="module")
+def cache_root(tmp_path_factory):
+    return tmp_path_factory.mktemp("rcache")
+
+
+@pytest.fixture(scope="module")
+def kim(cache_root):
+    lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(cache_root), stream=io.StringIO())
+    lad.calibration()
+    return lad
+
+
+@pytest.fixture(scope="module")
+def hertz(cache_root):
+    lad = Ladder("3/2", "1/2", settings=SMALL, cache_dir=str(cache_root), stream=io.StringIO())
+    lad.calibration()
+    return lad
+
+
+_HP: dict = {}
+
+
+def hp(alpha, gamma, w):
+    key = (alpha, gamma, float(w))
+    if key not in _HP:
+        _HP[key] = float(reference_collision(alpha, gamma, float(w), digits=20).eps)
+    return _HP[key]
+
+
+@pytest.mark.parametrize("which", ["kim", "hertz"])
+@pytest.mark.parametrize("tol", [1e-5, 1e-10])
+def test_every_rung_meets_its_bound_on_held_out_points(which, tol, request):
+    lad = request.getfixturevalue(which)
+    a, g = str(lad.ex.alpha), str(lad.ex.gamma)
+    checked = set()
+    for w in HELD_OUT:
+        om = np.array([w])
+        for q in lad.quotes(om, tol):
+            if q.run is None or not math.isfinite(q.bound):
+                continue
+            if q.name in ("reference", "highprec") and (tol < 1e-6 or w not in HELD_OUT[2::3]):
+                continue  # slow rungs (tens of ms, ~0.3 s per point): three points, looser tol
+            got = float(np.asarray(q.run(om))[0])
+            err = abs(got / hp(a, g, w) - 1)
+            assert err <= q.bound, f"{q.name} at Omega={w}: error {err:.3g} > bound {q.bound:.3g}"
+            checked.add(q.name)
+    expected = {"master", "integrator", "viscous", "elastic", "fitted-c"}
+    if which == "kim":
+        expected |= {"paper-c"}
+    else:
+        expected |= {"pade-mp2011"}
+    if tol >= 1e-6:
+        expected |= {"reference", "highprec"}
+    # relation rungs with O(1) errors have finite bounds only where their error is finite
+    assert expected - {"paper-c", "fitted-c", "pade-mp2011"} <= checked
+    assert checked & {"paper-c", "fitted-c", "pade-mp2011"}
+
+
+@pytest.mark.parametrize("tol", [0.5, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13])
+@pytest.mark.parametrize("omegas", [[0.5521], [1e-6, 3e-5], [2e2, 7e6], list(np.geomspace(1e-6, 1e6, 9)),
+                                    list(np.geomspace(0.02, 20, 2000))])
+def test_chooser_never_exceeds_tol(kim, tol, omegas):
+    om = np.asarray(omegas)
+    if tol < 1e-12 and om.size > 10:
+        pytest.skip("would run the mpmath reference on many points")
+    res = kim.evaluate(om, tol=tol)
+    assert res.error_bound <= tol
+    eligible = [c for c in res.candidates if c["available"] and c["bound"] <= tol]
+    assert res.method == min(eligible, key=lambda c: (c["cost"], c["bound"]))["method"]
+    chosen = next(c for c in res.candidates if c["method"] == res.method)
+    assert chosen["bound"] == res.error_bound
+    # the claim holds: compare with the compiled integrator at its tightest (~1e-14)
+    ref = reference_eps("3/2", "1", om, 1e-14)
+    assert np.max(np.abs(res.eps / ref - 1)) <= tol + 2 * integrator_bound(1e-14)
+
+
+def test_refuses_a_tolerance_below_double_rounding_at_once(kim):
+    with pytest.raises(ParameterError) as exc:
+        kim.evaluate(np.array([0.3, 3.0]), tol=1e-30)
+    assert exc.value.field == "tol" and "2.3e-16" in str(exc.value)
+
+
+def test_refuses_a_tolerance_no_rung_meets_on_these_inputs():
+    # alpha < gamma at Omega = 1e-5 is outside the high-precision rung's domain, and every
+    # double-precision rung's bound is above 1e-15 there.
+    from restitution.ladder import Ladder
+    with pytest.raises(ParameterError) as exc:
+        Ladder("1", "3/2").evaluate(np.array([1e-5]), tol=1e-15, build=False)
+    assert exc.value.field == "tol" and "smallest bound" in str(exc.value)
+
+
+def test_forced_method(kim):
+    r = kim.evaluate(np.array([0.1, 1.0]), tol=1e-6, method="integrator")
+    assert r.method == "integrator" and r.error_bound <= 1e-6
+    with pytest.raises(ParameterError) as exc:
+        kim.evaluate(np.array([0.1, 1.0]), tol=1e-6, method="paper-c")
+    assert exc.value.field == "tol"
+    with pytest.raises(ParameterError) as exc:
+        kim.evaluate(np.array([0.1]), tol=1e-6, method="closed-form")
+    assert exc.value.field == "method"
+
+
+def test_a_million_speeds_well_under_a_second(kim):
+    mat = Material("3/2", "1", 0.000296, 0.0109)
+    g = np.geomspace(1e-3, 10, 1_000_000)
+    kim.evaluate(mat.omega(g[:10]), tol=1e-6)
+    t0 = time.perf_counter()
+    r = kim.evaluate(mat.omega(g), tol=1e-6)
+    dt = time.perf_counter() - t0
+    assert r.method == "master" and r.eps.shape == g.shape
+    assert dt < 1.0
+
+
+def test_small_requests_do_not_build(tmp_path, monkeypatch):
+    lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
+    r = lad.evaluate(np.array([0.2, 2.0, 20.0]), tol=1e-9)
+    assert r.method == "integrator" and r.error_bound <= 1e-9
+    assert not list(tmp_path.iterdir())
+    import restitution.ladder as ladder
+    monkeypatch.setattr(ladder, "BUILD_COST", {"alpha>gamma": 0.0, "alpha<=gamma": 0.0})
+    assert lad._building_pays(lad.quotes(np.array([0.2, 2.0]), 1e-9), 1e-9, 2)  # would build now ...
+    r = lad.evaluate(np.array([0.2, 2.0]), tol=1e-9, build=False)
+    assert r.method == "integrator"  # ... but was asked not to
+    assert not list(tmp_path.iterdir())
+
+
+def test_large_requests_build_and_cache(tmp_path):
+    err = io.StringIO()
+    lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=err)
+    r = lad.evaluate(np.geomspace(0.1, 10, 300_000), tol=1e-9)
+    assert r.method == "master"
+    assert "building the master curve" in err.getvalue()
+    files = [p.name for p in tmp_path.iterdir()]
+    assert len(files) == 1 and files[0].endswith(".json")
+    lad2 = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=err)
+    assert lad2.cached_calibration() is not None
+
+
+@pytest.mark.parametrize("alpha,gamma", [("3/2", "1"), ("3/2", "1/2"), ("1", "0"), ("5/2", "1/2"), ("2", "1")])
+def test_integrator_bound_against_mpmath(alpha, gamma):
+    ex = as_exponents(alpha, gamma)
+    rng = np.random.default_rng(hash((alpha, gamma)) % 2**32)
+    pts = np.exp(rng.uniform(math.log(1e-8), math.log(1e10), 3))
+    ref = np.array([hp(alpha, gamma, w) for w in pts])
+    for rtol in (1e-6, 1e-9, 1e-12, 1e-14):
+        got = reference_eps(ex, None, pts, rtol)
+        assert np.all(np.abs(got / ref - 1) <= integrator_bound(rtol)), rtol
+
+
+@pytest.mark.parametrize("alpha,gamma", [("1", "1"), ("3/2", "3/2"), ("1", "0")])
+def test_closed_form_rungs_against_mpmath(alpha, gamma, tmp_path):
+    lad = Ladder(alpha, gamma, cache_dir=str(tmp_path), stream=io.StringIO())
+    om = np.array([0.07, 1.3, 450.0])
+    q = next(q for q in lad.quotes(om, 1e-12) if q.name == "closed-form")
+    got = q.run(om)
+    ref = np.array([hp(alpha, gamma, w) for w in om])
+    assert np.all(np.abs(got / ref - 1) <= q.bound)
+    r = lad.evaluate(om, tol=1e-12)
+    assert r.method == "closed-form"
+
+
+# ----------------------------------------------------------------------------- the public call
+def test_epsilon_public_call(monkeypatch, tmp_path):
+    monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
+    r = epsilon(alpha="3/2", gamma="1", omega=0.5521, tol=1e-9)
+    assert r.eps.shape == () and abs(float(r.eps) / hp("3/2", "1", 0.5521) - 1) <= r.error_bound
+    r2 = epsilon(alpha="3/2", gamma="1", omega=[[0.5521, 2.0], [3.0, 4.0]], tol=1e-9)
+    assert r2.eps.shape == (2, 2)
+    mat = Material("3/2", "1", 0.000296, 0.0109)
+    rg = epsilon(alpha="3/2", gamma="1", g=[0.1, 1.0], D1=0.000296, D2=0.0109, tol=1e-9)
+    ro = epsilon(alpha="3/2", gamma="1", omega=mat.omega(np.array([0.1, 1.0])), tol=1e-9)
+    assert np.array_equal(rg.eps, ro.eps) and rg.method == ro.method
+    assert np.asarray(rg).shape == (2,)
+    assert json.loads(json.dumps(rg.as_dict()))["method"] == rg.method
+
+
+BAD = [
+    (dict(omega=float("nan")), "omega"),
+    (dict(omega=float("inf")), "omega"),
+    (dict(omega=-1.0), "omega"),
+    (dict(omega=0.0), "omega"),
+    (dict(omega=[]), "omega"),
+    (dict(omega="abc"), "omega"),
+    (dict(omega=True), "omega"),
+    (dict(omega=[1.0, float("nan")]), "omega"),
+    (dict(omega=1.0, g=1.0, D1=1.0, D2=1.0), "omega"),
+    (dict(g=1.0, D1=1.0), "D2"),
+    (dict(g=1.0, D2=1.0), "D1"),
+    (dict(D1=1.0, D2=1.0), "g"),
+    (dict(g=-1.0, D1=1.0, D2=1.0), "g"),
+    (dict(g=1.0, D1=-1.0, D2=1.0), "D1"),
+    (dict(g=1.0, D1=1.0, D2=float("nan")), "D2"),
+    (dict(g=1e-300, D1=1e300, D2=1e-300), "omega"),  # Omega overflows
+    (dict(omega=1.0, tol=0.0), "tol"),
+    (dict(omega=1.0, tol=1.0), "tol"),
+    (dict(omega=1.0, tol=float("nan")), "tol"),
+    (dict(omega=1.0, tol="tight"), "tol"),
+    (dict(omega=1.0, tol=True), "tol"),
+    (dict(omega=1.0, method="fastest"), "method"),
+]
+
+
+@pytest.mark.parametrize("kwargs,field", BAD)
+def test_bad_input(kwargs, field, monkeypatch, tmp_path):
+    monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
+    with pytest.raises(ParameterError) as exc:
+        epsilon(alpha="3/2", gamma="1", **kwargs)
+    assert exc.value.field == field
+    assert "\n" not in str(exc.value)
+
+
+@pytest.mark.parametrize("alpha,gamma,field", [("0", "1", "alpha"), ("-3/2", "1", "alpha"), ("3/2", "-1", "gamma"),
+                                               ("pi", "1", "alpha"), ("3/2", "1/13", "gamma"),
+                                               ("nan", "1", "alpha"), ("3/2", None, "gamma")])
+def test_bad_exponents(alpha, gamma, field):
+    with pytest.raises(ParameterError) as exc:
+        epsilon(alpha=alpha, gamma=gamma, omega=1.0)
+    assert exc.value.field == field
+
+
+def _cli(argv, monkeypatch, tmp_path):
+    from restitution.eps_cli import add_eps_subcommand, run_eps
+    monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
+    parser = argparse.ArgumentParser()
+    add_eps_subcommand(parser.add_subparsers(dest="command"))
+    out = io.StringIO()
+    run_eps(parser.parse_args(["eps", *argv]), out)
+    return out.getvalue()
+
+
+def test_cli_json(monkeypatch, tmp_path):
+    text = _cli(["--alpha", "3/2", "--gamma", "1", "--omega", "0.5521", "2", "--json"], monkeypatch, tmp_path)
+    data = json.loads(text)
+    assert set(data) == {"eps", "method", "error_bound"}
+    assert len(data["eps"]) == 2 and data["error_bound"] <= 1e-9
+    assert abs(data["eps"][0] / hp("3/2", "1", 0.5521) - 1) <= data["error_bound"]
+    text = _cli(["--alpha", "3/2", "--gamma", "1", "--D1", "0.000296", "--D2", "0.0109", "--g", "0.1",
+                 "--tol", "1e-6", "--json"], monkeypatch, tmp_path)
+    assert json.loads(text)["error_bound"] <= 1e-6
+    text = _cli(["--alpha", "3/2", "--gamma", "1", "--omega", "1"], monkeypatch, tmp_path)
+    assert "method integrator" in text
+
+
+@pytest.mark.parametrize("argv,field", [
+    (["--omega", "1", "--g", "1"], "omega"),
+    (["--D1", "1", "--g", "1"], "D2"),
+    (["--omega", "nan"], "omega"),
+    (["--omega", "1", "--tol", "2"], "tol"),
+    (["--omega", "1", "--method", "bogus"], "method"),
+])
+def test_cli_bad_input(argv, field, monkeypatch, tmp_path):
+    with pytest.raises(ParameterError) as exc:
+        _cli(["--alpha", "3/2", "--gamma", "1", *argv], monkeypatch, tmp_path)
+    assert exc.value.field == field
+
+
+def test_rung_names_are_documented():
+    import restitution.ladder as ladder
+    for name in RUNG_NAMES:
+        stem = name.split("-N")[0]
+        assert stem in ladder.__doc__
