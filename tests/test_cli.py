@@ -41,7 +41,7 @@ def test_series_table_is_human_readable():
 
 
 def test_float_exponent_note_goes_to_stderr_and_json_stays_clean():
-    proc = run("series", "--alpha", "1.41421356", "--gamma", "1", "--omega-order", "0", "--max-power", "3",
+    proc = run("series", "--alpha", "1.4166667", "--gamma", "1", "--omega-order", "0", "--max-power", "3",
                "--json")
     assert proc.returncode == 0
     assert json.loads(proc.stdout)["alpha"] == "17/12"
@@ -108,6 +108,10 @@ BAD = [
     ("eps", "--alpha", "3/2", "--gamma", "1", "--D1", "1", "--D2", "1"),
     ("eps", "--alpha", "3/2", "--gamma", "1", "--omega", "1", "--g", "1"),
     ("eps", "--alpha", "0", "--gamma", "1", "--omega", "1"),
+    ("collide", "--alpha", "3/2", "--gamma", "1", "--omega", "-inf"),
+    ("collide", "--alpha", "3/2", "--gamma", "-1/2", "--omega", "1"),
+    ("collide", "--alpha", "3/2", "--gamma", "1", "--omega", "1e300"),
+    ("collide", "--alpha", "1.41421356", "--gamma", "1", "--omega", "1"),
     ("frobnicate",),
     (),
 ]

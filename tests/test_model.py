@@ -63,6 +63,13 @@ def test_omega_is_vectorised_and_finite_for_extreme_constants():
     assert out.shape == (7,) and np.all(np.isfinite(out)) and np.all(out > 0)
 
 
+@pytest.mark.parametrize("D1,D2,g", [(1e300, 1e-300, 1e300), (1e-300, 1e300, 1e-300)])
+def test_omega_leaving_double_precision_is_refused(D1, D2, g):
+    with pytest.raises(ParameterError) as info:
+        Material("3/2", 1, D1, D2).omega(g)
+    assert info.value.field == "g" and "Omega" in str(info.value)
+
+
 @pytest.mark.parametrize("text,expected", [("3/2", Fraction(3, 2)), ("1", Fraction(1)), (1.5, Fraction(3, 2)),
                                            ("0.5", Fraction(1, 2)), (2, Fraction(2)), (Fraction(5, 4), Fraction(5, 4))])
 def test_exponents_parse_exactly(text, expected):
@@ -70,11 +77,23 @@ def test_exponents_parse_exactly(text, expected):
     assert ex.alpha == expected and ex.alpha_error == 0.0
 
 
-def test_float_exponent_is_approximated_and_the_error_reported():
-    ex = Exponents.parse(math.sqrt(2), 1)
+def test_float_exponent_near_a_short_rational_is_approximated_and_the_error_reported():
+    ex = Exponents.parse(1.4166667, 1)  # 17/12 typed to 7 digits
     assert ex.alpha == Fraction(17, 12)
-    assert ex.alpha_error == pytest.approx(abs(math.sqrt(2) - 17 / 12))
+    assert ex.alpha_error == pytest.approx(abs(1.4166667 - 17 / 12))
+    assert 0 < ex.alpha_error < 1e-6
     assert ex.p == 12 and ex.q_alpha == 17 and ex.q_gamma == 12
+
+
+def test_float_exponent_far_from_short_rationals_is_refused_naming_the_nearest():
+    with pytest.raises(ParameterError) as info:
+        Exponents.parse(math.sqrt(2), 1)
+    assert info.value.field == "alpha" and "17/12" in str(info.value)
+
+
+@pytest.mark.parametrize("value", [np.int64(2), np.float64(1.5), Fraction(3, 2)])
+def test_numpy_and_fraction_exponents_are_accepted(value):
+    assert Exponents.parse(value, 1).alpha in (Fraction(2), Fraction(3, 2))
 
 
 @pytest.mark.parametrize("field,kwargs", [
@@ -82,6 +101,8 @@ def test_float_exponent_is_approximated_and_the_error_reported():
     ("alpha", dict(alpha=float("nan"), gamma=1)), ("alpha", dict(alpha="inf", gamma=1)),
     ("alpha", dict(alpha="1/97", gamma=1)), ("alpha", dict(alpha="three", gamma=1)),
     ("alpha", dict(alpha=True, gamma=1)), ("gamma", dict(alpha=1, gamma=-0.5)),
+    ("alpha", dict(alpha="1e400", gamma=1)), ("alpha", dict(alpha=1e300, gamma=1)),
+    ("gamma", dict(alpha=1, gamma="17")), ("alpha", dict(alpha=3.14159, gamma=1)),
 ])
 def test_bad_exponents_name_the_field(field, kwargs):
     with pytest.raises(ParameterError) as info:

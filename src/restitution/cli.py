@@ -8,6 +8,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import re
 import sys
 
 from .errors import ParameterError
@@ -133,10 +134,31 @@ def _run_collide(args, out) -> None:
         out.write(f"{key:>6}  {shown}\n")
 
 
+_NEGATIVE_VALUE = re.compile(r"^-(\d|\.\d|inf|nan)", re.IGNORECASE)
+
+
+def _attach_negative_values(argv: list[str]) -> list[str]:
+    """`--gamma -1/2` -> `--gamma=-1/2`: argparse would read -1/2 or -inf as an option and say only
+    "expected one argument"; attached, the value reaches the physics, which names the allowed range."""
+    out: list[str] = []
+    i = 0
+    while i < len(argv):
+        tok = argv[i]
+        if (tok.startswith("--") and "=" not in tok and i + 1 < len(argv)
+                and _NEGATIVE_VALUE.match(argv[i + 1])):
+            out.append(f"{tok}={argv[i + 1]}")
+            i += 2
+            continue
+        out.append(tok)
+        i += 1
+    return out
+
+
 def main(argv=None, out=None) -> int:
     out = sys.stdout if out is None else out
+    argv = sys.argv[1:] if argv is None else list(argv)
     try:
-        args = build_parser().parse_args(argv)
+        args = build_parser().parse_args(_attach_negative_values(argv))
         from .eps_cli import run_eps
         {"series": _run_series, "collide": _run_collide, "eps": run_eps}[args.command](args, out)
     except _UsageError as exc:

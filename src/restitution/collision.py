@@ -612,15 +612,31 @@ def _check_x_start(x_start) -> float:
 
 
 # ----------------------------------------------------------------------------------- public API
+#: Omega for which the stated accuracy (relative 10 rtol + 1e-13 in eps, tau_b, x_b, tau_c) has
+#: been verified (stability atlas, mpmath reference, closed forms). Beyond 1e10, 1 - eps for
+#: alpha <= gamma falls below the absolute error of eps (eps > 1 was seen at 3e10); below 1e-12
+#: contacts for alpha <= gamma last ~1/Omega and the integration breaks down. The asymptotic
+#: rungs of restitution.epsilon cover both ends.
+OMEGA_RANGE = (1e-12, 1e10)
+
+
+def _check_omega(field: str, omega) -> float:
+    value = require_positive_finite(field, omega)
+    if not OMEGA_RANGE[0] <= value <= OMEGA_RANGE[1]:
+        raise ParameterError(field, omega, f"must be in [{OMEGA_RANGE[0]:g}, {OMEGA_RANGE[1]:g}] for the "
+                                           "reference integrator (restitution.epsilon covers the limits)")
+    return value
+
+
 def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None) -> Collision:
     """Forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to end of contact.
 
     ``alpha``, ``gamma``: anything Exponents.parse accepts (or an Exponents as ``alpha`` with
-    ``gamma=None``). ``omega``: finite > 0. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below
+    ``gamma=None``). ``omega``: in OMEGA_RANGE. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below
     2.2e-14). ``t_eval``: tau samples for ``trajectory``.
     """
     ex = as_exponents(alpha, gamma)
-    omega = require_positive_finite("omega", omega)
+    omega = _check_omega("omega", omega)
     rtol = _check_rtol(rtol)
     t_eval = _check_t_eval(t_eval)
     law = _Law.of(ex, omega, +1)
@@ -655,7 +671,7 @@ def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: fl
     RunawayError (a ParameterError) is raised.
     """
     ex = as_exponents(alpha, gamma)
-    omega = require_positive_finite("omega_tilde", omega_tilde)
+    omega = _check_omega("omega_tilde", omega_tilde)
     x_start = _check_x_start(x_start)
     rtol = _check_rtol(rtol)
     t_eval = _check_t_eval(t_eval)

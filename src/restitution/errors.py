@@ -21,6 +21,8 @@ class ParameterError(ValueError):
 
 def require_positive_finite(field: str, value) -> float:
     """Return ``value`` as a float, or raise ParameterError unless it is finite and > 0."""
+    if isinstance(value, bool) or type(value).__name__ == "bool_":
+        raise ParameterError(field, value, "must be a finite number > 0")
     try:
         x = float(value)
     except (TypeError, ValueError):

@@ -8,6 +8,7 @@ same, and say how far the rational is from a float the user gave.
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -15,8 +16,14 @@ from .errors import ParameterError
 
 #: Largest denominator accepted when a float must be turned into a rational.
 MAX_DENOMINATOR = 12
-#: A float is taken as the rational r when |float - r| is at most this.
+#: A float is taken as the rational r when |float - r| is at most this (no note: just rounding).
 EXACT_FLOAT_TOLERANCE = 1e-12
+#: A float farther than this (relative) from every rational with denominator <= MAX_DENOMINATOR
+#: is refused: eps would change at that level, so silently rounding the exponent would hide it.
+APPROXIMATION_TOLERANCE = 1e-6
+#: Largest exponent accepted. The physics has no bound, but beyond this the force laws are so
+#: steep that the integrator's stated accuracy has not been verified.
+MAX_EXPONENT = Fraction(8)
 
 
 def parse_exponent(field: str, value, *, minimum: Fraction, inclusive: bool,
@@ -27,44 +34,64 @@ def parse_exponent(field: str, value, *, minimum: Fraction, inclusive: bool,
     exactly that rational, otherwise ``|float(input) - rational|`` after bounding the
     denominator by ``max_denominator``.
     """
-    bound = f"{'>=' if inclusive else '>'} {minimum}"
+    given = value  # errors quote what the user typed, not our conversion of it
+    bound = f"in {'[' if inclusive else '('}{minimum}, {MAX_EXPONENT}]"
     allowed = f"must be a rational number {bound} (e.g. 3/2), denominator <= {max_denominator}"
-    if isinstance(value, bool):
-        raise ParameterError(field, value, allowed)
+    if isinstance(value, (bool, np_bool_types())):
+        raise ParameterError(field, given, allowed)
     if isinstance(value, Fraction):
         exact = value
-    elif isinstance(value, int):
-        exact = Fraction(value)
+    elif isinstance(value, numbers.Integral):
+        exact = Fraction(int(value))
+    elif isinstance(value, numbers.Real) and not isinstance(value, float):
+        value = float(value)
+        exact = None
+        if not math.isfinite(value):
+            raise ParameterError(field, given, allowed)
     elif isinstance(value, float):
         if not math.isfinite(value):
-            raise ParameterError(field, value, allowed)
+            raise ParameterError(field, given, allowed)
         exact = None
     elif isinstance(value, str):
         text = value.strip()
         try:
             exact = Fraction(text)
         except (ValueError, ZeroDivisionError):
-            raise ParameterError(field, value, allowed) from None
+            raise ParameterError(field, given, allowed) from None
+        if abs(exact) > MAX_EXPONENT:
+            raise ParameterError(field, given, allowed)
         if "/" not in text and ("." in text or "e" in text.lower()):
             # A decimal string is a float in disguise: treat it like one.
             value, exact = float(exact), None
     else:
-        raise ParameterError(field, value, allowed)
+        raise ParameterError(field, given, allowed)
 
     if exact is None:
+        if abs(value) > MAX_EXPONENT:
+            raise ParameterError(field, given, allowed)
         approx = Fraction(value).limit_denominator(max_denominator)
         error = abs(float(approx) - value)
-        if error <= EXACT_FLOAT_TOLERANCE * max(1.0, abs(value)):
+        scale = max(1.0, abs(value))
+        if error > APPROXIMATION_TOLERANCE * scale:
+            raise ParameterError(field, given, f"{allowed}; the nearest such rational, {approx}, is "
+                                               f"{error:.2g} away (more than {APPROXIMATION_TOLERANCE:g})")
+        if error <= EXACT_FLOAT_TOLERANCE * scale:
             error = 0.0
         exact = approx
     else:
         error = 0.0
         if exact.denominator > max_denominator:
-            raise ParameterError(field, value, allowed)
+            raise ParameterError(field, given, allowed)
 
-    if exact < minimum or (exact == minimum and not inclusive):
-        raise ParameterError(field, value, allowed)
+    if exact < minimum or (exact == minimum and not inclusive) or exact > MAX_EXPONENT:
+        raise ParameterError(field, given, allowed)
     return exact, error
+
+
+def np_bool_types() -> tuple:
+    """numpy's bool type when numpy is loaded (a bool is not a number of anything here)."""
+    import numpy as np
+    return (np.bool_,)
 
 
 @dataclass(frozen=True)

@@ -58,6 +58,7 @@ import numpy as np
 from . import asymptotics as asy
 from . import cache as _cache
 from .errors import ParameterError
+from .model import OMEGA_REPRESENTABLE
 from .exponents import Exponents, as_exponents
 from .master import (MASTER_VERSION, MasterCurve, MasterSettings, build_master, integrator_bound,
                      reference_eps, stiff_omega_min)
@@ -122,7 +123,8 @@ class EpsResult:
 
 # ------------------------------------------------------------------------------------------ helpers
 def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
-    allowed = "must be finite numbers > 0 (at least one)"
+    lo, hi = OMEGA_REPRESENTABLE
+    allowed = f"must be numbers in [{lo:g}, {hi:g}] (at least one)"
     if isinstance(omega, (bool, np.bool_)):
         raise ParameterError(field_name, omega, allowed)
     try:
@@ -131,7 +133,8 @@ def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
         raise ParameterError(field_name, omega, allowed) from None
     if arr.size == 0:
         raise ParameterError(field_name, omega, allowed)
-    bad = ~(np.isfinite(arr) & (arr > 0))
+    # Subnormal or near-overflow Omega leaves no headroom for the expansions' powers of Omega.
+    bad = ~(np.isfinite(arr) & (arr >= lo) & (arr <= hi))
     if np.any(bad):
         raise ParameterError(field_name, float(arr[bad].flat[0]), allowed)
     return arr

@@ -21,6 +21,9 @@ import numpy as np
 from .errors import ParameterError, require_positive_finite
 from .exponents import Exponents, as_exponents
 
+#: Omega outside this range is refused here: no method in the package works with it in doubles.
+OMEGA_REPRESENTABLE = (1e-300, 1e300)
+
 VISCOUS = "viscous-dominant"
 ELASTIC = "elastic-dominant"
 
@@ -66,7 +69,16 @@ class Material:
         # Work in logs: D2^(-(alpha+1)/(gamma+1)) overflows for tiny D2 long before Omega does.
         log_omega = (math.log(self.D1) + float((a - 1 - 2 * c) / (c + 1)) * np.log(speeds)
                      - float((a + 1) / (c + 1)) * math.log(self.D2))
-        out = np.exp(log_omega)
+        with np.errstate(over="ignore", under="ignore"):
+            out = np.exp(log_omega)
+        if not np.all((out >= OMEGA_REPRESENTABLE[0]) & (out <= OMEGA_REPRESENTABLE[1])):
+            # The inputs are fine one by one; together they leave double precision.
+            outside = ~((out >= OMEGA_REPRESENTABLE[0]) & (out <= OMEGA_REPRESENTABLE[1]))
+            bad = float(np.asarray(speeds).flat[int(np.argmax(outside))])
+            raise ParameterError("g", bad, f"with D1 = {self.D1:g}, D2 = {self.D2:g} gives Omega = "
+                                           f"exp({float(np.max(np.abs(log_omega))):.4g}) in magnitude, "
+                                           "outside double precision; choose D1, D2, g with Omega in "
+                                           "[1e-300, 1e300]")
         return float(out) if np.ndim(out) == 0 else out
 
     @property
