@@ -27,6 +27,12 @@ test: $(STAMP)
 # results/paper/restitution.pdf. CORES=all uses every core.
 CORES        ?= 2
 SNAKEMAKE    := $(BIN)/snakemake --cores $(CORES) --rerun-incomplete
+# Runs in this tree go through workflow/tools/guard.py: results/ (and logs/, build/, .snakemake/)
+# must be writable with room to spare, one run at a time (a second `make paper` waits for the
+# first; LOCK_WAIT=S gives up after S seconds, LOCK_WAIT=0 at once), locks left by a killed run
+# are cleared, and half-done jobs are redone.
+LOCK_WAIT    ?=
+GUARDED      := $(BIN)/python workflow/tools/guard.py $(if $(LOCK_WAIT),--wait $(LOCK_WAIT)) --
 # Progress and finished jobs, without the per-job detail (targets go before this: --quiet
 # takes a list).
 QUIET        := --quiet host rules
@@ -42,9 +48,9 @@ HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/
 # everything except the PDF, and a message saying how to get it.
 paper: $(STAMP) tex
 	@if $(HAVE_TEX); then \
-	  $(SNAKEMAKE) all $(QUIET) && echo "PDF: $(CURDIR)/$(PDF)"; \
+	  $(GUARDED) $(SNAKEMAKE) all $(QUIET) && echo "PDF: $(CURDIR)/$(PDF)"; \
 	else \
-	  $(SNAKEMAKE) outputs $(QUIET) && \
+	  $(GUARDED) $(SNAKEMAKE) outputs $(QUIET) && \
 	  echo "Built everything under results/ except the PDF: pdflatex/latexmk are missing." && \
 	  echo "To get $(PDF): as root, apt-get install $(TEX_PACKAGES); then run make paper again."; \
 	fi
@@ -64,13 +70,13 @@ tex:
 
 # Everything except the PDF (no TeX needed).
 outputs: $(STAMP)
-	$(SNAKEMAKE) outputs $(QUIET)
+	$(GUARDED) $(SNAKEMAKE) outputs $(QUIET)
 
 # Rebuild from clean in a temporary directory and compare with tests/expected/manifest.json.
 check: $(STAMP)
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) check
 
-# Rewrite tests/expected/manifest.json from the current results/ (after an intended change).
+# Rewrite tests/expected/manifest.json from a clean rebuild (after an intended change).
 expected: paper
 	$(BIN)/python workflow/tools/rebuild.py manifest
 

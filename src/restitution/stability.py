@@ -1,0 +1,587 @@
+"""The stability atlas: the reference integrator swept over Omega and the exponents, and its invariants.
+
+For every (alpha, gamma) of a grid and every Omega of a log-spaced grid (1e-8 to 1e8 by default),
+``restitution.collision.collide`` is run at the atlas tolerance and the result is checked:
+
+* ``finite``      eps, tau_b, x_b, tau_c, x_c are finite (and the integrator did not fail);
+* ``eps_range``   0 < eps < 1;
+* ``order``       0 < tau_b < tau_c, 0 <= x_c < x_b;
+* ``x_c``         x_c > 0 where contact ends by the force;
+* ``end``         contact ends by the force when alpha > gamma and by separation when alpha <= gamma
+                  (for alpha = gamma the force Omega + x' never vanishes while x > 0; for alpha < gamma
+                  it stays positive, see restitution.collision);
+* ``monotone``    eps increases with Omega: a step down by more than twice the stated accuracy is a
+                  violation; smaller ones are counted as "unresolved", not as violations;
+* ``tight``       on a subset of Omega, every quantity agrees with a run at ``tight_rtol`` within the
+                  stated accuracy (relative);
+* ``reference``   on a sparse subset, every quantity agrees with the independent mpmath integrator
+                  ``restitution.highprec.reference_collision`` within the stated accuracy;
+* ``exact``       where a closed form exists, the quantities it gives agree within the stated accuracy:
+                  eps for alpha = gamma (``asymptotics.equal_exponents_eps``), everything for the linear
+                  spring-dashpot alpha = 1, gamma = 0 (``restitution.dashpot``).
+
+"Stated accuracy" is the relative error claimed for every quantity at ``AtlasSpec.rtol``: by default
+10 rtol + 1e-13, the bound ``restitution.ladder`` states for its "reference" rung (collide); set
+``AtlasSpec.accuracy`` to claim something else.
+
+The high-precision reference costs 0.1-1 s per point when alpha > gamma at any Omega, but for
+alpha <= gamma its cost grows like 1/Omega (the creeping return must be resolved by an explicit
+method): there it is run at ``reference_min_omega_creep`` instead of below it, and the exact closed
+forms and the tight runs cover the rest.
+
+Everything here is pure computation (no file I/O); the workflow's scripts write the tables.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, replace
+from fractions import Fraction
+from typing import Iterable, Sequence
+
+import numpy as np
+
+from .errors import ParameterError
+from .exponents import Exponents, as_exponents
+
+__all__ = ["AtlasSpec", "AtlasPoint", "Violation", "CHECKS", "QUANTITIES", "omega_grid", "plan",
+           "shard", "estimated_cost", "limit_agreement", "run_point", "run_atlas", "check_invariants", "summarize", "pair_label",
+           "DEFAULT_ALPHAS", "DEFAULT_GAMMAS"]
+
+DEFAULT_ALPHAS = ("1", "5/4", "3/2", "2", "5/2")
+DEFAULT_GAMMAS = ("0", "1/2", "1", "3/2")
+#: Quantities compared between runs (x_c only where contact ends by the force: it is 0 otherwise).
+QUANTITIES = ("eps", "tau_b", "x_b", "tau_c", "x_c")
+#: The invariants, in the order they are reported.
+CHECKS = ("finite", "eps_range", "order", "x_c", "end", "monotone", "tight", "reference", "exact")
+#: Largest Omega range the atlas accepts (collide itself takes any finite Omega > 0). Measured at
+#: rtol 1e-10 beyond the default 1e-8..1e8: for alpha <= gamma, 1 - eps falls below the absolute
+#: accuracy of eps from Omega ~ 3e10 on and eps comes out > 1 (e.g. 1 + 5.9e-11 for alpha = gamma = 1
+#: at 1e11); alpha = 5/2, gamma = 1/2 misses tau_c by 1.8e-9 at 1e12. The atlas reports both.
+OMEGA_LIMITS = (1e-12, 1e12)
+#: Default stated accuracy: ACCURACY_FACTOR rtol + ACCURACY_FLOOR (the ladder's bound for collide).
+ACCURACY_FACTOR, ACCURACY_FLOOR = 10.0, 1e-13
+
+
+# ------------------------------------------------------------------------------------------ spec
+def _positive(name: str, value, lo: float | None = None, hi: float | None = None) -> float:
+    allowed = "must be a finite number > 0" if lo is None else f"must be a number in [{lo:g}, {hi:g}]"
+    if isinstance(value, bool):
+        raise ParameterError(name, value, allowed)
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ParameterError(name, value, allowed) from None
+    if not math.isfinite(x) or x <= 0 or (lo is not None and not lo <= x <= hi):
+        raise ParameterError(name, value, allowed)
+    return x
+
+
+def _count(name: str, value, lo: int, hi: int) -> int:
+    allowed = f"must be an integer in [{lo}, {hi}]"
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
+        raise ParameterError(name, value, allowed)
+    return int(value)
+
+
+@dataclass(frozen=True)
+class AtlasSpec:
+    """What the atlas computes. Build it with :meth:`from_config` (validates every field).
+
+    alphas, gammas: exponent grid (exact rationals as strings). omega_min, omega_max, per_decade:
+    Omega = 10^(k / per_decade) for integer k from log10(omega_min) to log10(omega_max) (both must be
+    powers of ten). rtol: tolerance of the atlas runs; accuracy: the relative error claimed at rtol.
+    tight_rtol, tight_decades: the grid points every ``tight_decades`` decades from omega_min (and the
+    last one) are rerun at tight_rtol. reference_omegas: Omega values (on the grid) where the mpmath reference is run at
+    ``reference_digits`` digits (for alpha <= gamma none below reference_min_omega_creep: see plan).
+    """
+
+    alphas: tuple[str, ...] = DEFAULT_ALPHAS
+    gammas: tuple[str, ...] = DEFAULT_GAMMAS
+    omega_min: float = 1e-8
+    omega_max: float = 1e8
+    per_decade: int = 2
+    rtol: float = 1e-10
+    accuracy: float | None = None
+    tight_rtol: float = 1e-14
+    tight_decades: int = 4
+    reference_omegas: tuple[float, ...] = (1e-8, 1e8)
+    reference_digits: int = 16
+    reference_min_omega_creep: float = 1e-2
+
+    @classmethod
+    def from_config(cls, cfg: dict | None = None, also_allowed: Sequence[str] = ()) -> "AtlasSpec":
+        """The spec from a config mapping (keys as the fields; missing keys take the defaults).
+
+        Raises ParameterError (one line naming the field and the allowed range) on any bad value.
+        ``also_allowed``: keys the caller handles itself (named in the unknown-field message only).
+        """
+        if cfg is not None and not isinstance(cfg, dict):
+            raise ParameterError("stability", cfg, "must be a mapping of atlas settings")
+        cfg = dict(cfg or {})
+        known = set(cls.__dataclass_fields__)
+        unknown = sorted(set(cfg) - known)
+        if unknown:
+            allowed = ", ".join(sorted(known | set(also_allowed)))
+            raise ParameterError(unknown[0], cfg[unknown[0]], f"unknown field; allowed: {allowed}")
+        spec = replace(cls(), **cfg)
+        return spec.validated()
+
+    def validated(self) -> "AtlasSpec":
+        alphas = self._exponents("alphas", self.alphas, "alpha")
+        gammas = self._exponents("gammas", self.gammas, "gamma")
+        lo, hi = OMEGA_LIMITS
+        omin = _positive("omega_min", self.omega_min, lo, hi)
+        omax = _positive("omega_max", self.omega_max, lo, hi)
+        for name, w in (("omega_min", omin), ("omega_max", omax)):
+            if not _is_power_of_ten(w):
+                raise ParameterError(name, w, f"must be a power of ten in [{lo:g}, {hi:g}]")
+        if not omin < omax:
+            raise ParameterError("omega_max", self.omega_max, f"must be > omega_min = {omin:g}")
+        per_decade = _count("per_decade", self.per_decade, 1, 1000)
+        rtol = _positive("rtol", self.rtol, 1e-14, 1e-3)
+        accuracy = None if self.accuracy is None else _positive("accuracy", self.accuracy, rtol, 1e-1)
+        tight_rtol = _positive("tight_rtol", self.tight_rtol, 1e-14, rtol)
+        tight_decades = _count("tight_decades", self.tight_decades, 1, 100)
+        refs = self.reference_omegas
+        if isinstance(refs, (str, bytes)) or not isinstance(refs, Iterable):
+            raise ParameterError("reference_omegas", refs, "must be a list of Omega values on the grid")
+        refs = tuple(sorted({_positive("reference_omegas", w, omin, omax) for w in refs}))
+        grid = omega_grid(omin, omax, per_decade)
+        for w in refs:
+            if not np.any(np.isclose(grid, w, rtol=1e-12, atol=0)):
+                raise ParameterError("reference_omegas", w,
+                                     f"must lie on the Omega grid (10^(k/{per_decade}) in [{omin:g}, {omax:g}])")
+        digits = _count("reference_digits", self.reference_digits, 8, 60)
+        creep = _positive("reference_min_omega_creep", self.reference_min_omega_creep, lo, hi)
+        return replace(self, alphas=alphas, gammas=gammas, omega_min=omin, omega_max=omax,
+                       per_decade=per_decade, rtol=rtol, accuracy=accuracy, tight_rtol=tight_rtol,
+                       tight_decades=tight_decades, reference_omegas=refs, reference_digits=digits,
+                       reference_min_omega_creep=creep)
+
+    @staticmethod
+    def _exponents(name: str, values, which: str) -> tuple[str, ...]:
+        if isinstance(values, (str, bytes)) or not isinstance(values, Iterable):
+            raise ParameterError(name, values, f"must be a non-empty list of {which} exponents")
+        values = list(values)
+        if not values:
+            raise ParameterError(name, values, f"must be a non-empty list of {which} exponents")
+        out = []
+        for v in values:
+            try:
+                ex = Exponents.parse(v, 0) if which == "alpha" else Exponents.parse(1, v)
+            except ParameterError as err:
+                raise ParameterError(f"{name}[{v!r}]", v, err.allowed) from None
+            exact = ex.alpha if which == "alpha" else ex.gamma
+            out.append(str(exact))
+        if len(set(out)) != len(out):
+            raise ParameterError(name, values, "must not repeat an exponent")
+        return tuple(out)
+
+    @property
+    def stated_accuracy(self) -> float:
+        """Relative error claimed for every quantity of every atlas point."""
+        return ACCURACY_FACTOR * self.rtol + ACCURACY_FLOOR if self.accuracy is None else self.accuracy
+
+    @property
+    def pairs(self) -> list[tuple[str, str]]:
+        return [(a, g) for a in self.alphas for g in self.gammas]
+
+    def omegas(self) -> np.ndarray:
+        return omega_grid(self.omega_min, self.omega_max, self.per_decade)
+
+    def as_dict(self) -> dict:
+        return {k: (list(v) if isinstance(v, tuple) else v) for k, v in self.__dict__.items()}
+
+
+def _is_power_of_ten(w: float) -> bool:
+    k = round(math.log10(w))
+    return math.isclose(w, 10.0 ** k, rel_tol=1e-12)
+
+
+def omega_grid(omega_min: float = 1e-8, omega_max: float = 1e8, per_decade: int = 4) -> np.ndarray:
+    """10^(k / per_decade) for k = per_decade log10(omega_min) .. per_decade log10(omega_max).
+
+    Exact decades (10.0 ** -8 is the double nearest 1e-8) and the same floats on every machine.
+    """
+    k0 = round(math.log10(omega_min) * per_decade)
+    k1 = round(math.log10(omega_max) * per_decade)
+    return np.array([10.0 ** (k / per_decade) if k % per_decade else 10.0 ** (k // per_decade)
+                     for k in range(k0, k1 + 1)])
+
+
+def pair_label(alpha, gamma) -> str:
+    """A file-name-safe label of an exponent pair: a3_2-g1 for alpha = 3/2, gamma = 1."""
+    return f"a{str(Fraction(str(alpha))).replace('/', '_')}-g{str(Fraction(str(gamma))).replace('/', '_')}"
+
+
+# ------------------------------------------------------------------------------------------ plan
+@dataclass(frozen=True)
+class AtlasPoint:
+    """One point of the atlas and which comparisons it gets."""
+
+    alpha: str
+    gamma: str
+    omega: float
+    index: int          # position on the Omega grid
+    tight: bool
+    reference: bool
+
+
+def plan(spec: AtlasSpec) -> list[AtlasPoint]:
+    """Every point of the atlas, pair by pair, Omega increasing.
+
+    Tight runs: every ``tight_decades`` decades from omega_min, and the last point. Reference runs:
+    at ``reference_omegas``; for alpha <= gamma a reference Omega below reference_min_omega_creep is
+    moved up to the first grid point at or above it (the mpmath cost grows like 1/Omega there).
+    """
+    omegas = spec.omegas()
+    last = len(omegas) - 1
+    tight = {i for i in range(len(omegas)) if i % (spec.per_decade * spec.tight_decades) == 0} | {last}
+    ref_at = [int(np.argmin(np.abs(np.log(omegas / w)))) for w in spec.reference_omegas]
+    floor = next((i for i, w in enumerate(omegas) if w >= spec.reference_min_omega_creep * (1 - 1e-12)), last)
+    out = []
+    for a, g in spec.pairs:
+        creeps = Fraction(a) <= Fraction(g)
+        refs = {max(i, floor) for i in ref_at} if creeps else set(ref_at)
+        for i, w in enumerate(omegas):
+            out.append(AtlasPoint(a, g, float(w), i, i in tight, i in refs))
+    return out
+
+
+def estimated_cost(point: AtlasPoint, spec: AtlasSpec) -> float:
+    """Rough seconds one point costs (measured on one core; only used to balance shards).
+
+    collide: ~0.02 s, but ~0.5 s where alpha < gamma and Omega < 1e-2 (stiff creeping return,
+    Radau), ~0.08 s there for alpha = gamma; the tight run about 2x that (10x in the stiff case at
+    rtol 1e-14); the mpmath reference 0.2-0.6 s, growing like 1/Omega when alpha <= gamma.
+    """
+    a, g, w = Fraction(point.alpha), Fraction(point.gamma), point.omega
+    creep = w < 1e-2
+    base = 0.5 if (a < g and creep) else 0.08 if (a == g and creep) else 0.02
+    cost = base
+    if point.tight:
+        cost += base * (10.0 if (a < g and creep) else 2.0)
+    if point.reference:
+        cost += (0.6 if w < 1e-2 else 0.3) * (max(1.0, 1e-2 / w) if a <= g else 1.0)
+    return cost
+
+
+def shard(points: Sequence[AtlasPoint], k: int, n: int, spec: AtlasSpec | None = None) -> list[AtlasPoint]:
+    """The k-th of n shards (k = 0..n-1), balanced by estimated cost (largest first onto the least
+    loaded shard; deterministic). Returned in the order of ``points``."""
+    n = _count("shards", n, 1, 10**6)
+    if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or not 0 <= k < n:
+        raise ParameterError("shard", k, f"must be an integer in [0, {n - 1}]")
+    spec = spec or AtlasSpec()
+    costs = [estimated_cost(p, spec) for p in points]
+    order = sorted(range(len(points)), key=lambda i: (-costs[i], i))
+    load = [0.0] * n
+    owner = [0] * len(points)
+    for i in order:
+        j = min(range(n), key=lambda s: (load[s], s))
+        owner[i] = j
+        load[j] += costs[i]
+    return [p for i, p in enumerate(points) if owner[i] == k]
+
+
+# ------------------------------------------------------------------------------------------ runs
+def _values(hit) -> dict:
+    return {q: float(getattr(hit, q)) for q in QUANTITIES}
+
+
+def _rel(a: float, b: float) -> float:
+    if b == 0.0:
+        return abs(a)
+    return abs(a - b) / abs(b)
+
+
+def _worst(got: dict, truth: dict, with_xc: bool) -> tuple[float, str]:
+    names = [q for q in QUANTITIES if with_xc or q != "x_c"]
+    errs = {q: _rel(got[q], truth[q]) for q in names}
+    if not all(math.isfinite(v) for v in errs.values()):
+        return math.inf, next(q for q, v in errs.items() if not math.isfinite(v))
+    q = max(errs, key=errs.get)
+    return errs[q], q
+
+
+def _exact(alpha: Fraction, gamma: Fraction, omega: float) -> dict | None:
+    """Closed-form values where they exist (eps only for alpha = gamma)."""
+    if alpha == 1 and gamma == 0:
+        from .dashpot import dashpot_collision
+        return _values(dashpot_collision(omega))
+    if alpha == gamma:
+        from .asymptotics import equal_exponents_eps
+        return {"eps": float(equal_exponents_eps(np.array([omega]))[0])}
+    return None
+
+
+def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -> dict:
+    """Integrate one atlas point (and its comparisons); a failure of the integrator is recorded.
+
+    Returns a flat record: alpha, gamma, omega, the five quantities, end, status ("ok" or the
+    exception's one-line message), and the comparisons err_tight / worst_tight (atlas run against
+    tight_rtol), err_ref / worst_ref (against the mpmath reference), tight_ref (tight run against the
+    reference), ref_estimate (the reference's own error estimate), err_exact / worst_exact (against a
+    closed form). Comparisons not made are NaN (worst_*: ""). ``timings`` (optional dict) receives
+    the seconds spent per kind of run; they are never part of the record, so records are reproducible.
+    """
+    from .collision import collide
+
+    ex = as_exponents(point.alpha, point.gamma)
+    rec = {"alpha": str(ex.alpha), "gamma": str(ex.gamma), "omega": point.omega, "index": point.index}
+    rec.update({q: math.nan for q in QUANTITIES})
+    rec.update(end="", status="ok", err_tight=math.nan, worst_tight="", err_ref=math.nan, worst_ref="",
+               tight_ref=math.nan, ref_estimate=math.nan, err_exact=math.nan, worst_exact="")
+    clock = _Clock(timings)
+    try:
+        with clock("atlas"):
+            hit = collide(ex, None, point.omega, rtol=spec.rtol)
+    except Exception as err:  # noqa: BLE001 - the atlas records what broke and carries on
+        rec["status"] = f"{type(err).__name__}: {err}".replace("\n", " ")
+        return rec
+    got = _values(hit)
+    rec.update(got, end=hit.end)
+    with_xc = hit.end == "force"
+
+    tight = None
+    if point.tight:
+        try:
+            with clock("tight"):
+                tight = _values(collide(ex, None, point.omega, rtol=spec.tight_rtol))
+            rec["err_tight"], rec["worst_tight"] = _worst(got, tight, with_xc)
+        except Exception as err:  # noqa: BLE001
+            rec["status"] = f"tight run failed: {type(err).__name__}: {err}".replace("\n", " ")
+    if point.reference:
+        from .highprec import reference_collision
+        try:
+            with clock("reference"):
+                ref = reference_collision(ex, None, point.omega, digits=spec.reference_digits)
+        except Exception as err:  # noqa: BLE001
+            rec["status"] = f"reference failed: {type(err).__name__}: {err}".replace("\n", " ")
+        else:
+            truth = {q: float(getattr(ref, q)) for q in QUANTITIES}
+            both_force = with_xc and ref.end == "force"
+            rec["err_ref"], rec["worst_ref"] = _worst(got, truth, both_force)
+            if ref.end != hit.end:
+                rec["err_ref"], rec["worst_ref"] = math.inf, "end"
+            rec["ref_estimate"] = float(ref.error_estimate)
+            if tight is not None:
+                rec["tight_ref"] = _worst(tight, truth, both_force)[0]
+    exact = _exact(ex.alpha, ex.gamma, point.omega)
+    if exact is not None:
+        errs = {q: _rel(got[q], v) for q, v in exact.items() if q != "x_c" or with_xc}
+        q = max(errs, key=errs.get)
+        rec["err_exact"], rec["worst_exact"] = errs[q], q
+    return rec
+
+
+class _Clock:
+    def __init__(self, sink: dict | None):
+        self.sink = sink
+
+    def __call__(self, kind: str):
+        return _Timed(self.sink, kind)
+
+
+class _Timed:
+    def __init__(self, sink, kind):
+        self.sink, self.kind = sink, kind
+
+    def __enter__(self):
+        self.t0 = time.perf_counter()
+
+    def __exit__(self, *exc):
+        if self.sink is not None:
+            self.sink[self.kind] = self.sink.get(self.kind, 0.0) + time.perf_counter() - self.t0
+        return False
+
+
+def run_atlas(spec: AtlasSpec, points: Sequence[AtlasPoint] | None = None, timings: dict | None = None,
+              progress=None) -> list[dict]:
+    """Records of ``points`` (default: the whole plan of ``spec``), in the order given."""
+    spec = spec.validated()
+    points = plan(spec) if points is None else points
+    out = []
+    for i, p in enumerate(points):
+        out.append(run_point(p, spec, timings))
+        if progress is not None:
+            progress(i + 1, len(points), p)
+    return out
+
+
+# ------------------------------------------------------------------------------------------ checks
+@dataclass(frozen=True)
+class Violation:
+    """One failed invariant at one point: ``value`` against ``limit`` (see the module docstring)."""
+
+    check: str
+    alpha: str
+    gamma: str
+    omega: float
+    value: float
+    limit: float
+    detail: str = ""
+
+    def __str__(self) -> str:
+        return (f"{self.check} at alpha={self.alpha}, gamma={self.gamma}, Omega={self.omega:.6g}: "
+                f"{self.detail or f'{self.value:.3g} vs {self.limit:.3g}'}")
+
+    def as_dict(self) -> dict:
+        return dict(self.__dict__)
+
+
+def _by_pair(records: Iterable[dict]) -> dict[tuple[str, str], list[dict]]:
+    groups: dict[tuple[str, str], list[dict]] = {}
+    for r in records:
+        groups.setdefault((str(r["alpha"]), str(r["gamma"])), []).append(r)
+    for rows in groups.values():
+        rows.sort(key=lambda r: float(r["omega"]))
+    return groups
+
+
+def _nan(x) -> bool:
+    try:
+        return math.isnan(float(x))
+    except (TypeError, ValueError):
+        return True
+
+
+def check_invariants(records: Iterable[dict], accuracy: float) -> tuple[list[Violation], dict]:
+    """All violations of the invariants, and per-pair counts of unresolved monotonicity steps.
+
+    ``records`` may come from run_atlas or from the atlas CSV (values as read by pandas or csv:
+    numbers may be strings). Returns (violations, {(alpha, gamma): unresolved steps}).
+    """
+    out: list[Violation] = []
+    unresolved: dict[tuple[str, str], int] = {}
+    for (a, g), rows in _by_pair(records).items():
+        fa, fg = Fraction(a), Fraction(g)
+        expected_end = "force" if fa > fg else "separation"
+        prev = None
+        unresolved[(a, g)] = 0
+        for r in rows:
+            w = float(r["omega"])
+            vals = {q: float(r[q]) for q in QUANTITIES}
+
+            def bad(check, value, limit, detail=""):
+                out.append(Violation(check, a, g, w, float(value), float(limit), detail))
+
+            if str(r.get("status", "ok")) not in ("ok", "", "nan"):
+                bad("finite", math.nan, 0.0, f"run failed: {r['status']}")
+                prev = None
+                continue
+            nonfinite = [q for q, v in vals.items() if not math.isfinite(v)]
+            if nonfinite:
+                bad("finite", vals[nonfinite[0]], 0.0, f"{nonfinite[0]} = {vals[nonfinite[0]]!r}")
+                prev = None
+                continue
+            eps = vals["eps"]
+            if not 0.0 < eps < 1.0:
+                bad("eps_range", eps, 1.0, f"eps = {eps!r} outside (0, 1)")
+            if not 0.0 < vals["tau_b"] < vals["tau_c"]:
+                bad("order", vals["tau_b"], vals["tau_c"], f"tau_b = {vals['tau_b']!r}, tau_c = {vals['tau_c']!r}")
+            if not 0.0 <= vals["x_c"] < vals["x_b"]:
+                bad("order", vals["x_c"], vals["x_b"], f"x_c = {vals['x_c']!r}, x_b = {vals['x_b']!r}")
+            if r["end"] == "force" and not vals["x_c"] > 0.0:
+                bad("x_c", vals["x_c"], 0.0, f"force end with x_c = {vals['x_c']!r}")
+            if r["end"] != expected_end:
+                bad("end", math.nan, math.nan, f"ended by {r['end']}, expected {expected_end}")
+            if prev is not None:
+                step = eps - prev
+                allowance = 2.0 * accuracy * max(eps, prev)
+                if step <= 0.0:
+                    if step < -allowance:
+                        bad("monotone", step, -allowance,
+                            f"eps falls by {-step:.3g} from Omega={prev_w:.6g} (more than {allowance:.3g})")
+                    else:
+                        unresolved[(a, g)] += 1
+            prev, prev_w = eps, w
+            for check, col, worst in (("tight", "err_tight", "worst_tight"), ("reference", "err_ref", "worst_ref"),
+                                      ("exact", "err_exact", "worst_exact")):
+                if not _nan(r.get(col)) and not float(r[col]) <= accuracy:
+                    bad(check, float(r[col]), accuracy,
+                        f"{r.get(worst) or 'a quantity'} off by {float(r[col]):.3g} (stated accuracy {accuracy:.3g})")
+    return out, unresolved
+
+
+# ------------------------------------------------------------------------------------------ summary
+def _max_at(rows: list[dict], col: str) -> tuple[float, float]:
+    """(largest finite-or-inf value of col, Omega where it occurs); (nan, nan) if never computed."""
+    vals = [(float(r[col]), float(r["omega"])) for r in rows if not _nan(r.get(col))]
+    if not vals:
+        return math.nan, math.nan
+    return max(vals, key=lambda t: t[0])
+
+
+def summarize(records: Iterable[dict], accuracy: float) -> list[dict]:
+    """One row per exponent pair: extent of the quantities, worst errors and invariant counts."""
+    records = list(records)
+    violations, unresolved = check_invariants(records, accuracy)
+    rows = []
+    for (a, g), rs in _by_pair(records).items():
+        ok = [r for r in rs if str(r.get("status", "ok")) in ("ok", "", "nan")]
+        ends = sorted({r["end"] for r in ok})
+        eps = [float(r["eps"]) for r in ok]
+        xc = [float(r["x_c"]) for r in ok if r["end"] == "force"]
+        row = {
+            "alpha": a, "gamma": g, "accuracy": accuracy, "points": len(rs), "failed": len(rs) - len(ok),
+            "end": "/".join(ends),
+            "eps_min": min(eps) if eps else math.nan, "eps_max": max(eps) if eps else math.nan,
+            "one_minus_eps_min": 1.0 - max(eps) if eps else math.nan,
+            "tau_c_max": max((float(r["tau_c"]) for r in ok), default=math.nan),
+            "x_c_min": min(xc) if xc else math.nan,
+        }
+        for name, col in (("tight", "err_tight"), ("ref", "err_ref"), ("exact", "err_exact")):
+            err, at = _max_at(rs, col)
+            row[f"n_{name}"] = sum(1 for r in rs if not _nan(r.get(col)))
+            row[f"max_err_{name}"] = err
+            row[f"omega_max_err_{name}"] = at
+        row["max_tight_ref"] = _max_at(rs, "tight_ref")[0]
+        row["max_ref_estimate"] = _max_at(rs, "ref_estimate")[0]
+        row["unresolved_steps"] = unresolved.get((a, g), 0)
+        row["violations"] = sum(1 for v in violations if (v.alpha, v.gamma) == (a, g))
+        row["violated"] = ",".join(sorted({v.check for v in violations if (v.alpha, v.gamma) == (a, g)}))
+        rows.append(row)
+    return rows
+
+
+# ------------------------------------------------------------------------------------------ limits
+def limit_agreement(records: Iterable[dict]) -> list[dict]:
+    """How the atlas meets the limits of ``restitution.asymptotics`` at its two ends, per pair.
+
+    At the smallest Omega: eps against the viscous expansion (with its first correction where it has
+    one) and, for alpha > gamma, tau_c against (2 ln(1/Omega) + L) / lambda. At the largest Omega:
+    1 - eps against 1 - (1 - C1 delta + C2 delta^2 + ...) and tau_c against T0 Omega^(-1/(alpha+1)).
+    Relative deviations; they contain both the truncation of the expansion and the atlas's own
+    error (1 - eps loses the digits that eps has near 1). Empty if asymptotics is not available.
+    """
+    try:
+        from . import asymptotics as asy
+    except ImportError:  # pragma: no cover - built by another stage
+        return []
+    out = []
+    for (a, g), rows in _by_pair(records).items():
+        ok = [r for r in rows if str(r.get("status", "ok")) in ("ok", "", "nan")]
+        if not ok:
+            continue
+        lo, hi = ok[0], ok[-1]
+        vl, el = asy.viscous_limit(a, g), asy.elastic_limit(a, g)
+        w_lo, w_hi = float(lo["omega"]), float(hi["omega"])
+        eps_v = float(vl.eps(w_lo, order=1))
+        tc_v = float(vl.tau_c(w_lo)) if vl.kind == "force" else math.nan
+        one_minus_el = 1.0 - float(el.eps(w_hi, order=2))
+        tc_e = float(el.tau_c(w_hi))
+        out.append({
+            "alpha": a, "gamma": g, "viscous_kind": vl.kind,
+            "omega_lo": w_lo, "eps_lo": float(lo["eps"]), "eps_viscous": eps_v,
+            "dev_eps_viscous": _rel(float(lo["eps"]), eps_v),
+            "tau_c_lo": float(lo["tau_c"]), "tau_c_viscous": tc_v,
+            "dev_tau_c_viscous": _rel(float(lo["tau_c"]), tc_v) if math.isfinite(tc_v) else math.nan,
+            "omega_hi": w_hi, "one_minus_eps_hi": 1.0 - float(hi["eps"]), "one_minus_eps_elastic": one_minus_el,
+            "dev_one_minus_eps_elastic": _rel(1.0 - float(hi["eps"]), one_minus_el),
+            "tau_c_hi": float(hi["tau_c"]), "tau_c_elastic": tc_e,
+            "dev_tau_c_elastic": _rel(float(hi["tau_c"]), tc_e),
+        })
+    return out

@@ -1,0 +1,327 @@
+"""Faults: killed runs, two runs at once, read-only or full results/, half-written files.
+
+Unit tests cover the pieces (workflow/scripts/_atomic.py, workflow/tools/guard.py); the slow
+tests run the real pipeline (`make outputs`, no TeX) in temporary copies of the project and
+compare what they end with against one clean build, byte for byte.
+"""
+
+from __future__ import annotations
+
+import errno
+import fcntl
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from pipeline_tree import (ENV, ROOT, built_tree, copy_built, descendants, digests, fresh_tree, make,
+                           make_cmd, running_jobs, snakemake_pid, stop_all, wait_for)
+
+sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
+sys.path.insert(0, str(ROOT / "workflow" / "tools"))
+import _atomic  # noqa: E402
+import guard  # noqa: E402
+
+
+def can_mount() -> bool:
+    """Root with mount namespaces (unshare -m): read-only and tiny file systems can be made for real."""
+    if os.geteuid() != 0 or shutil.which("unshare") is None:
+        return False
+    return subprocess.run(["unshare", "-m", "true"], capture_output=True).returncode == 0
+
+
+needs_mount = pytest.mark.skipif(not can_mount(), reason="needs root and unshare -m (mount namespaces)")
+
+
+# ------------------------------------------------------------------------------------ atomic writes
+def test_atomic_path_renames_only_a_finished_file(tmp_path):
+    final = tmp_path / "sub" / "table.csv"
+    with _atomic.atomic_path(final) as tmp:
+        assert tmp.parent == final.parent and tmp.name.startswith(".table.csv.") and tmp.suffix == ".csv"
+        tmp.write_text("a,b\n")
+        assert not final.exists()          # nothing under the final name while writing
+    assert final.read_text() == "a,b\n"
+    assert [p.name for p in final.parent.iterdir()] == ["table.csv"]
+
+
+def test_atomic_path_keeps_the_old_file_when_writing_fails(tmp_path):
+    final = tmp_path / "values.tex"
+    final.write_text("old\n")
+    with pytest.raises(RuntimeError):
+        with _atomic.atomic_path(final) as tmp:
+            tmp.write_text("half")
+            raise RuntimeError("killed halfway")
+    assert final.read_text() == "old\n"
+    assert [p.name for p in tmp_path.iterdir()] == ["values.tex"]
+
+
+def test_atomic_path_full_disk_is_one_clear_line(tmp_path, monkeypatch):
+    def full(src, dst):
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(_atomic.os, "replace", full)
+    with pytest.raises(_atomic.OutputError) as err:
+        _atomic.write_text_atomic(tmp_path / "x.txt", "data")
+    message = str(err.value)
+    assert "\n" not in message and "x.txt" in message and "full" in message and "ENOSPC" in message
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_atomic_path_file_in_the_way(tmp_path):
+    (tmp_path / "results").write_text("not a directory")
+    with pytest.raises(_atomic.OutputError) as err:
+        _atomic.write_text_atomic(tmp_path / "results" / "stability" / "atlas.csv", "x")
+    assert "a file is in the way" in str(err.value)
+
+
+def test_pipeline_scripts_of_this_stage_write_atomically():
+    for name in ("stability_atlas.py", "fig_stability.py"):
+        text = (ROOT / "workflow" / "scripts" / name).read_text()
+        assert "atomic_path" in text or "write_text_atomic" in text, name
+        assert ".to_csv(snakemake" not in text and ".savefig(snakemake" not in text, name
+
+
+# ------------------------------------------------------------------------------------ the guard
+def test_preflight_passes_on_a_writable_tree(tmp_path):
+    assert guard.preflight(tmp_path, min_free_mb=0) == []
+    assert {p.name for p in tmp_path.iterdir()} == set(guard.WRITABLE)
+    assert not any(p.name.startswith(".write-probe") for d in tmp_path.iterdir() for p in d.iterdir())
+
+
+def test_preflight_file_in_the_way(tmp_path):
+    (tmp_path / "results").write_text("oops")
+    problems = guard.preflight(tmp_path, min_free_mb=0)
+    assert problems == ["results/ is not a directory (a file is in the way): move it away"]
+
+
+def test_preflight_too_little_space(tmp_path):
+    problems = guard.preflight(tmp_path, min_free_mb=1e12)
+    assert len(problems) == 4 and all("MB free" in p for p in problems)
+
+
+def test_second_run_waits_or_stops(tmp_path, capsys):
+    (tmp_path / "build").mkdir()
+    first = guard.acquire(tmp_path, None, "make paper")
+    assert first is not None
+    assert guard.acquire(tmp_path, 0, "make paper") is None
+    assert "not starting a second one" in capsys.readouterr().err
+    t0 = time.monotonic()
+    assert guard.acquire(tmp_path, 0.6, "make paper") is None
+    assert time.monotonic() - t0 >= 0.5
+    assert "still running after" in capsys.readouterr().err
+    first.close()
+    second = guard.acquire(tmp_path, 0, "make paper")
+    assert second is not None
+    assert json.loads((tmp_path / guard.LOCK).read_text())["pid"] == os.getpid()
+    second.close()
+
+
+def test_stale_snakemake_locks_are_cleared_only_when_nothing_runs(tmp_path, capsys):
+    locks = tmp_path / ".snakemake" / "locks"
+    locks.mkdir(parents=True)
+    (locks / "0.output.lock").write_text("results/x\n")
+    # a snakemake started by hand in this tree: its locks are not stale
+    fake = tmp_path / "snakemake"
+    fake.write_text("import time\ntime.sleep(60)\n")
+    other = subprocess.Popen([sys.executable, str(fake)], cwd=tmp_path)
+    try:
+        assert wait_for(lambda: guard.snakemake_running_in(tmp_path) == [other.pid], 10)
+        guard.clear_stale_locks(tmp_path)
+        assert list(locks.iterdir()) and "its locks are left alone" in capsys.readouterr().err
+    finally:
+        other.kill()
+        other.wait()
+    guard.clear_stale_locks(tmp_path)
+    assert not list(locks.iterdir())
+    assert "stale Snakemake lock" in capsys.readouterr().err
+
+
+def test_guard_stops_the_jobs_of_a_killed_snakemake(tmp_path):
+    """A snakemake killed by SIGKILL leaves its jobs running; the guard stops them."""
+    (tmp_path / "child.sh").write_text("sleep 60 &\necho $! > job.pid\nkill -9 $$\n")
+    t0 = time.monotonic()
+    rc = guard.run(["sh", "child.sh"], tmp_path)
+    assert rc == 128 + signal.SIGKILL
+    job = int((tmp_path / "job.pid").read_text())
+    assert wait_for(lambda: not Path(f"/proc/{job}").exists() or
+                    Path(f"/proc/{job}/stat").read_text().split(") ")[1].startswith("Z"), 10)
+    assert time.monotonic() - t0 < 30
+
+
+# ------------------------------------------------------------------------------------ the real pipeline
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    return built_tree(tmp_path_factory)
+
+
+def _start(tree: Path, env: dict | None = None) -> subprocess.Popen:
+    return subprocess.Popen(make_cmd("outputs"), cwd=tree, env={**ENV, **(env or {})}, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+
+
+def _change(path: Path) -> None:
+    """Change a source file's content (not only its time stamp: Snakemake compares checksums)."""
+    path.write_text(path.read_text() + "\n# changed by a test\n")
+
+
+def _half_written(tree: Path) -> list[str]:
+    """Outputs that exist although Snakemake marks them incomplete (the restart must redo them)."""
+    inc = tree / ".snakemake" / "incomplete"
+    if not inc.is_dir():
+        return []
+    import base64
+
+    names = [base64.b64decode(p.name).decode() for p in inc.iterdir() if p.is_file()]
+    return [n for n in names if (tree / n).exists()]
+
+
+def _no_process_left(pids) -> bool:
+    def gone(pid):
+        stat = Path(f"/proc/{pid}/stat")
+        try:
+            return stat.read_text().split(") ")[1].startswith("Z")
+        except (OSError, IndexError):
+            return True
+    return all(gone(p) for p in pids)
+
+
+@pytest.mark.slow
+def test_killed_runs_restart_to_the_clean_build(built, tmp_path):
+    """A change to the atlas code reruns the stability stage (two ~15 s shard jobs, the merge, the
+    figure). 1: SIGKILL to snakemake while the shards run; 2: `make outputs` again, SIGTERM to
+    snakemake during the merge or the figure; 3: `make outputs` finishes. The result is byte for
+    byte the clean build."""
+    tree = copy_built(built, tmp_path / "t")
+    _change(tree / "src" / "restitution" / "stability.py")
+    shards = tree / "results" / "stability" / "shards"
+
+    # 1. SIGKILL in the middle of the shard jobs
+    proc = _start(tree)
+    try:
+        assert wait_for(lambda: len(running_jobs(proc.pid, "stability_atlas.py")) >= 2, 300)
+        time.sleep(2.0)
+        smk = snakemake_pid(proc.pid)
+        jobs = descendants(smk)
+        os.kill(smk, signal.SIGKILL)
+        out, err = proc.communicate(timeout=120)
+    finally:
+        stop_all(proc)
+    assert proc.returncode != 0
+    assert "snakemake was killed (signal 9)" in err, err[-2000:]
+    assert wait_for(lambda: _no_process_left(jobs), 20), "a job outlived its snakemake"
+    assert list((tree / ".snakemake" / "locks").glob("*.lock")), "a SIGKILLed snakemake leaves its locks"
+    assert not list(shards.glob("*.csv")), "half-done shards must not exist under their final names"
+    assert not list((tree / "results").rglob(".*.tmp*"))
+
+    # 2. restart; SIGTERM once the shards are done (merge or figure running)
+    proc = _start(tree)
+    try:
+        assert wait_for(lambda: len(list(shards.glob("*.csv"))) == 2, 300)
+        smk = snakemake_pid(proc.pid)
+        os.kill(smk, signal.SIGTERM)
+        out, err = proc.communicate(timeout=300)
+    finally:
+        stop_all(proc)
+    assert "removed 2 stale Snakemake lock(s)" in err, err[-2000:]
+    assert not list((tree / ".snakemake" / "locks").glob("*.lock")), "SIGTERM: snakemake releases its locks"
+    for name in ("0-of-2.csv", "1-of-2.csv"):
+        assert (shards / name).read_bytes() == (built / "results" / "stability" / "shards" / name).read_bytes()
+    assert not list((tree / "results").rglob(".*.tmp*"))
+
+    # 3. restart to the end
+    restart = make(tree)
+    assert restart.returncode == 0, restart.stderr[-3000:]
+    assert _half_written(tree) == []
+    assert digests(tree) == digests(built)
+
+
+@pytest.mark.slow
+def test_two_make_runs_at_once(built, tmp_path):
+    """The second `make outputs` waits for the first and then finds nothing to do; with LOCK_WAIT=0
+    it stops at once and says why. Either way the outputs are those of a clean build."""
+    tree = copy_built(built, tmp_path / "t")
+    _change(tree / "workflow" / "scripts" / "fig_stability.py")
+    first = _start(tree)
+    try:
+        assert wait_for(lambda: len(running_jobs(first.pid, "fig_stability.py")) >= 1, 300)
+        impatient = make(tree, env={"LOCK_WAIT": "0"})
+        assert impatient.returncode != 0
+        assert "not starting a second one (nothing was changed)" in impatient.stderr
+        second = _start(tree)
+        out2, err2 = second.communicate(timeout=600)
+        out1, err1 = first.communicate(timeout=600)
+    finally:
+        stop_all(first)
+    assert first.returncode == 0, err1[-2000:]
+    assert second.returncode == 0, err2[-2000:]
+    assert "waiting for it to finish" in err2 and "the other run has finished" in err2
+    assert "Nothing to be done" in out2 + err2
+    assert digests(tree) == digests(built)
+
+
+def test_results_is_a_file_gives_a_clear_message(tmp_path):
+    tree = fresh_tree(tmp_path / "t")
+    (tree / "results").write_text("a file where the outputs should go\n")
+    proc = make(tree)
+    assert proc.returncode != 0
+    assert "pipeline: results/ is not a directory (a file is in the way): move it away" in proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert (tree / "results").read_text() == "a file where the outputs should go\n"
+
+
+@needs_mount
+@pytest.mark.slow
+def test_read_only_results_gives_a_clear_message_and_changes_nothing(built, tmp_path):
+    tree = copy_built(built, tmp_path / "t")
+    _change(tree / "workflow" / "scripts" / "fig_stability.py")   # there would be work to do
+    before = digests(tree)
+    script = ("mount --bind results results && mount -o remount,bind,ro results && "
+              f"exec {' '.join(make_cmd('outputs'))}")
+    proc = subprocess.run(["unshare", "-m", "sh", "-c", script], cwd=tree, env=ENV, capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode != 0
+    assert "pipeline: cannot write in results/: the file system is read-only" in proc.stderr, proc.stderr
+    assert digests(tree) == before
+
+
+@needs_mount
+def test_full_results_gives_a_clear_message_before_starting(tmp_path):
+    tree = fresh_tree(tmp_path / "t")
+    (tree / "results").mkdir()
+    script = f"mount -t tmpfs -o size=256k tmpfs results && exec {' '.join(make_cmd('outputs'))}"
+    proc = subprocess.run(["unshare", "-m", "sh", "-c", script], cwd=tree, env=ENV, capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode != 0
+    assert "pipeline: results/ has only" in proc.stderr and "MB free" in proc.stderr, proc.stderr
+    assert "free some space" in proc.stderr
+    assert not (tree / ".snakemake" / "log").exists()       # snakemake never started
+
+
+@needs_mount
+@pytest.mark.slow
+def test_disk_full_during_a_job_is_diagnosed_and_nothing_half_written_remains(built, tmp_path):
+    """results/stability on a file system just large enough for the inputs: the figure cannot be
+    written. The run fails with a message about the disk, and no partial figure is left."""
+    tree = copy_built(built, tmp_path / "t")
+    _change(tree / "workflow" / "scripts" / "fig_stability.py")
+    stab = tree / "results" / "stability"
+    saved = tmp_path / "saved"
+    shutil.copytree(stab, saved)
+    for f in ("atlas.pdf", "atlas.png"):
+        (saved / f).unlink()
+    size_kb = sum(f.stat().st_size for f in saved.rglob("*") if f.is_file()) // 1024 + 48
+    script = (f"mount -t tmpfs -o size={size_kb}k tmpfs results/stability && cp -a {saved}/. results/stability/ && "
+              f"{' '.join(make_cmd('outputs'))}; rc=$?; echo LISTING; ls -a results/stability; exit $rc")
+    proc = subprocess.run(["unshare", "-m", "sh", "-c", script], cwd=tree, env={**ENV, "PIPELINE_MIN_FREE_MB": "0"},
+                          capture_output=True, text=True, timeout=600)
+    assert proc.returncode != 0
+    assert "the run failed" in proc.stderr and ("full" in proc.stderr or "No space" in proc.stderr), proc.stderr[-3000:]
+    listing = proc.stdout.split("LISTING", 1)[1].split()
+    assert "atlas.png" not in listing and "atlas.pdf" not in listing
+    assert not [n for n in listing if n.endswith(".tmp.png") or n.endswith(".tmp.pdf")]

@@ -1,0 +1,108 @@
+# Stability atlas (issue 6): the reference integrator over Omega = 1e-8 .. 1e8 and a grid of
+# exponents, every point checked against its invariants, a tighter tolerance, the mpmath
+# reference and the closed forms (restitution.stability). Split into `shards` parallel jobs of
+# equal estimated cost; the merged table does not depend on the number of shards.
+#
+# Needs from the including Snakefile: common.smk (lib, code, script_file, STABILITY_OUTPUTS,
+# MANUSCRIPT_INPUTS); include this file before manuscript.smk so the appendix's inputs reach the
+# manuscript rule. Settings: config["stability"] (all optional, see restitution.stability.AtlasSpec).
+
+from restitution.errors import ParameterError as _StabilityParameterError
+from restitution.stability import AtlasSpec as _AtlasSpec
+
+
+def _stability_settings():
+    """(AtlasSpec fields as plain values, number of shards), or one config error line and exit 2."""
+    cfg = config.get("stability") or {}
+    if not isinstance(cfg, dict):
+        sys.stderr.write(f"config error: stability = {cfg!r}: must be a mapping of atlas settings\n")
+        sys.exit(2)
+    cfg = dict(cfg)
+    shards = cfg.pop("shards", 2)
+    try:
+        if isinstance(shards, bool) or not isinstance(shards, int) or not 1 <= shards <= 1000:
+            raise _StabilityParameterError("shards", shards, "must be an integer in [1, 1000]")
+        spec = _AtlasSpec.from_config(cfg, also_allowed=["shards"])
+    except _StabilityParameterError as err:
+        sys.stderr.write(f"config error: stability.{err}\n")
+        sys.exit(2)
+    return spec.as_dict(), shards
+
+
+STABILITY_SPEC, STABILITY_SHARDS = _stability_settings()
+# Modules the atlas imports (collision, highprec, asymptotics, dashpot through stability).
+STABILITY_SRC = lib("stability")
+
+STABILITY_OUTPUTS.extend([
+    "results/stability/atlas.csv",
+    "results/stability/summary.csv",
+    "results/stability/limits.csv",
+    "results/stability/violations.csv",
+    "results/stability/summary.tex",
+    "results/stability/values.tex",
+    "results/stability/atlas.pdf",
+    "results/stability/atlas.png",
+])
+MANUSCRIPT_INPUTS.extend([
+    "paper/sections/stability.tex",
+    "results/stability/values.tex",
+    "results/stability/summary.tex",
+    "results/stability/atlas.pdf",
+])
+
+
+rule stability_shard:
+    """One shard of the atlas: collide (and the comparisons) at its share of the points."""
+    input:
+        src=STABILITY_SRC,
+        code=code("stability_atlas.py") + ["workflow/scripts/_atomic.py"],
+    output:
+        "results/stability/shards/{shard}-of-{shards}.csv",
+    wildcard_constraints:
+        shard=r"\d+",
+        shards=r"\d+",
+    params:
+        spec=STABILITY_SPEC,
+    log:
+        "logs/stability/shard-{shard}-of-{shards}.log",
+    script:
+        script_file("stability_atlas.py")
+
+
+rule stability_atlas:
+    """The merged atlas, its invariants, the per-pair summary, the limits, and the appendix's numbers."""
+    input:
+        shards=expand("results/stability/shards/{shard}-of-{shards}.csv",
+                      shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
+        src=STABILITY_SRC,
+        code=code("stability_atlas.py") + ["workflow/scripts/_atomic.py", "workflow/scripts/_latex.py"],
+    output:
+        atlas="results/stability/atlas.csv",
+        summary="results/stability/summary.csv",
+        limits="results/stability/limits.csv",
+        violations="results/stability/violations.csv",
+        table="results/stability/summary.tex",
+        values="results/stability/values.tex",
+    params:
+        spec=STABILITY_SPEC,
+    log:
+        "logs/stability/atlas.log",
+    script:
+        script_file("stability_atlas.py")
+
+
+rule fig_stability:
+    """The atlas figure: eps, 1 - eps, tau_c against Omega with the limits, and the measured errors."""
+    input:
+        atlas=rules.stability_atlas.output.atlas,
+        src=lib("asymptotics"),
+        code=code("fig_stability.py") + ["workflow/scripts/_atomic.py"],
+    output:
+        pdf="results/stability/atlas.pdf",
+        png="results/stability/atlas.png",
+    params:
+        spec=STABILITY_SPEC,
+    log:
+        "logs/stability/fig_stability.log",
+    script:
+        script_file("fig_stability.py")

@@ -1,0 +1,107 @@
+# %% [markdown]
+# # The stability atlas as a figure
+#
+# One column per damping exponent gamma, one colour per elastic exponent alpha. Rows:
+# eps against Omega with the viscous limit (dashed), 1 - eps with the elastic limit (dashed),
+# the contact time tau_c with both limits, and the measured relative errors of the atlas runs
+# (against the tight tolerance, the mpmath reference and the closed forms) under the stated
+# accuracy (grey line). The limits come from `restitution.asymptotics`; this script only draws.
+
+# %%
+if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
+    import pathlib, sys  # noqa: E401
+    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
+    sys.path.insert(0, str(here / "workflow" / "scripts"))
+    from _pipeline import replay
+    snakemake = replay("fig_stability")
+
+from fractions import Fraction  # noqa: E402
+
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+from _atomic import atomic_path  # noqa: E402
+from _pipeline import PDF_METADATA, PNG_METADATA, setup_matplotlib, start  # noqa: E402
+
+from restitution import stability as st  # noqa: E402
+
+try:
+    from restitution import asymptotics as asy  # noqa: E402
+except ImportError:  # pragma: no cover - the limits are another stage's work
+    asy = None
+
+start(snakemake)
+plt = setup_matplotlib()
+spec = st.AtlasSpec.from_config(snakemake.params.spec)
+atlas = pd.read_csv(snakemake.input.atlas, dtype={"alpha": str, "gamma": str}, keep_default_na=False,
+                    na_values=["", "nan", "NaN"])
+ok = atlas[atlas["status"].fillna("ok").isin(["ok", ""])]
+
+# %%
+alphas, gammas = list(spec.alphas), list(spec.gammas)
+colours = dict(zip(alphas, plt.get_cmap("viridis")(np.linspace(0.0, 0.85, len(alphas)))))
+rows = ("eps", "one_minus", "tau_c", "error")
+fig, axes = plt.subplots(len(rows), len(gammas), figsize=(7.2, 8.6), sharex=True, sharey="row",
+                         squeeze=False)
+w_lo, w_hi = spec.omega_min, spec.omega_max
+viscous_w = np.logspace(np.log10(w_lo), -2, 60)
+elastic_w = np.logspace(2, np.log10(w_hi), 60)
+
+
+def frac(text):
+    q = Fraction(text)
+    return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
+
+
+for j, g in enumerate(gammas):
+    for a in alphas:
+        d = ok[(ok["alpha"] == a) & (ok["gamma"] == g)].sort_values("omega")
+        if d.empty:
+            continue
+        c = colours[a]
+        w = d["omega"].to_numpy()
+        axes[0, j].plot(w, d["eps"], "-", color=c, lw=1.2, label=rf"$\alpha = {frac(a)}$")
+        axes[1, j].plot(w, 1.0 - d["eps"], "-", color=c, lw=1.2)
+        axes[2, j].plot(w, d["tau_c"], "-", color=c, lw=1.2)
+        for col, marker, size in (("err_tight", "o", 9), ("err_ref", "s", 16), ("err_exact", "x", 9)):
+            e = d[col].to_numpy(dtype=float)
+            m = np.isfinite(e)
+            axes[3, j].scatter(w[m], np.maximum(e[m], 1e-17), s=size, marker=marker,
+                               facecolors="none" if marker != "x" else c, edgecolors=c if marker != "x" else None,
+                               color=c if marker == "x" else None, lw=0.8)
+        if asy is not None:
+            vl, el = asy.viscous_limit(a, g), asy.elastic_limit(a, g)
+            axes[0, j].plot(viscous_w, vl.eps(viscous_w, order=1), "--", color="black", lw=0.7)
+            axes[1, j].plot(elastic_w, 1.0 - el.eps(elastic_w, order=2), "--", color="black", lw=0.7)
+            axes[2, j].plot(elastic_w, el.tau_c(elastic_w), "--", color="black", lw=0.7)
+            if vl.kind == "force":
+                axes[2, j].plot(viscous_w, vl.tau_c(viscous_w), "--", color="black", lw=0.7)
+    axes[0, j].set_title(rf"$\gamma = {frac(g)}$", fontsize=9)
+    axes[3, j].axhline(spec.stated_accuracy, color="grey", lw=1.0)
+
+for ax in axes.flat:
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.grid(True, which="major", alpha=0.3)
+    ax.tick_params(labelsize=7)
+    ax.set_xticks([1e-8, 1e-4, 1, 1e4, 1e8][:: 1 if len(gammas) < 3 else 2])
+for ax, label in zip(axes[:, 0], (r"$\varepsilon$", r"$1-\varepsilon$", r"$\tau_c$", "relative error")):
+    ax.set_ylabel(label, fontsize=9 if label.startswith("$") else 8)
+axes[3, 0].set_ylim(1e-17, 1e-6)
+for ax in axes[-1]:
+    ax.set_xlabel(r"$\Omega$")
+for ax in axes[:, 0]:
+    ax.set_xlim(w_lo, w_hi)
+handles, labels = axes[0, 0].get_legend_handles_labels()
+handles += [plt.Line2D([], [], ls="--", color="black", lw=0.7),
+            plt.Line2D([], [], ls="", marker="o", mfc="none", color="grey"),
+            plt.Line2D([], [], ls="", marker="s", mfc="none", color="grey"),
+            plt.Line2D([], [], ls="", marker="x", color="grey"),
+            plt.Line2D([], [], color="grey")]
+labels += ["limits", f"vs rtol {spec.tight_rtol:.0e}", "vs mpmath", "vs closed form", "stated accuracy"]
+fig.legend(handles, labels, loc="lower center", ncol=5, fontsize=7, frameon=False, bbox_to_anchor=(0.5, 0.0))
+fig.tight_layout(rect=(0, 0.05, 1, 1), h_pad=0.4, w_pad=0.3)
+
+# %%
+for path, meta in ((snakemake.output.pdf, PDF_METADATA), (snakemake.output.png, PNG_METADATA)):
+    with atomic_path(path) as tmp:
+        fig.savefig(tmp, metadata=meta, bbox_inches="tight", format=path.rsplit(".", 1)[-1])
