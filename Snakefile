@@ -3,6 +3,7 @@
 #   snakemake --cores 2                     everything, manuscript PDF included (results/paper/)
 #   snakemake --cores 2 outputs             everything except the PDF (no TeX needed)
 #   snakemake results/figures/fig1.pdf      one figure of the main variant, and only what it needs
+#   snakemake results/hertz/study.txt       the whole study of one variant, and nothing else
 #
 # Per-variant outputs live under results/<variant>/; see config.yaml for the variants.
 
@@ -12,9 +13,16 @@ configfile: "config.yaml"
 include: "workflow/rules/common.smk"     # config validation, variants, package-source inputs
 include: "workflow/rules/series.smk"     # exact perturbation series and their LaTeX tables
 include: "workflow/rules/reference.smk"  # reference integrations (trajectories, eps(g), accuracy)
+include: "workflow/rules/connection.smk" # c0-c2 three ways, eps(g) every way, the claims ledger
 include: "workflow/rules/figures.smk"    # figures 1-4 (PDF + PNG)
+include: "workflow/rules/variants.smk"   # validation, cross-variant figure, generated sections
 include: "workflow/rules/values.smk"     # every number the manuscript prints, as LaTeX macros
+include: "workflow/rules/stability.smk"  # appendix: the stability atlas at the extremes (issue 6)
 include: "workflow/rules/manuscript.smk" # the reproduction article, built with latexmk
+
+
+# Bookkeeping that a cluster executor runs on the submitting host, not as a queued job.
+localrules: all, outputs, study, main_figure, manuscript_inputs, variants_tex
 
 
 rule all:

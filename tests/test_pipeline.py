@@ -35,9 +35,9 @@ def snakemake(tree: Path, *args: str, check: bool = True) -> subprocess.Complete
     return proc
 
 
-def planned(tree: Path, *targets: str) -> Counter:
+def planned(tree: Path, *targets: str, extra: tuple = ()) -> Counter:
     """Jobs a dry run would execute, by rule (the 'Job stats' table)."""
-    out = snakemake(tree, *targets, "--dry-run", "--cores", "1").stdout
+    out = snakemake(tree, *targets, "--dry-run", "--cores", "1", *extra).stdout
     if "Nothing to be done" in out:
         return Counter()
     table = out.split("Job stats:", 1)[1]
@@ -56,11 +56,21 @@ def copy_built(src: Path, dest: Path) -> Path:
     return dest
 
 
+_BUILT: dict[str, Path] = {}
+
+
+def shared_build(tmp_path_factory) -> Path:
+    """One clean build per test session, shared by every module that asks (test_variants.py too)."""
+    if "tree" not in _BUILT:
+        tree = rebuild.copy_tree(tmp_path_factory.mktemp("built") / "tree")
+        rebuild.run_pipeline(tree, cores=2, target=ALL)
+        _BUILT["tree"] = tree
+    return _BUILT["tree"]
+
+
 @pytest.fixture(scope="module")
 def built(tmp_path_factory) -> Path:
-    tree = rebuild.copy_tree(tmp_path_factory.mktemp("built") / "tree")
-    rebuild.run_pipeline(tree, cores=2, target=ALL)
-    return tree
+    return shared_build(tmp_path_factory)
 
 
 @pytest.fixture
@@ -101,13 +111,20 @@ def test_one_figure_target_runs_only_what_it_needs(fresh):
         {"reference_trajectories": 1, "fig1_forward": 1, "main_figure": 1})
 
 
+VARIANT_NAMES = ("kim", "hertz", "dashpot")
+PER_VARIANT = ("series", "series_table", "reference_trajectories", "reference_eps_curve",
+               "fig1_forward", "fig2_inverse", "fig3_phase", "fig4_eps", "connection_readings", "connection_fit",
+               "eps_compare", "validation", "values", "study")
+
+
 def test_the_full_plan(fresh):
     jobs = planned(fresh, ALL)
-    for rule in ("series", "series_table", "reference_trajectories", "reference_eps_curve",
-                 "reference_accuracy", "fig1_forward", "fig2_inverse", "fig3_phase", "fig4_eps",
-                 "values", "printed_relation"):
-        assert jobs[rule] == 1, rule
-    assert jobs["main_figure"] == 8
+    for rule in PER_VARIANT:
+        assert jobs[rule] == len(VARIANT_NAMES), rule
+    # the paper's exponents only (kim), the main variant only, every variant but the main one
+    for rule, n in (("printed_relation", 1), ("claims", 1), ("reference_accuracy", 1), ("variant_section", 2),
+                    ("compare_variants", 1), ("variants_tex", 1), ("main_figure", 8)):
+        assert jobs[rule] == n, rule
     assert jobs["manuscript"] == (1 if ALL == "all" else 0)
 
 
@@ -118,7 +135,7 @@ def test_nothing_to_do_after_a_build(built):
 def test_touching_a_figure_script_reruns_that_figure_and_the_manuscript(built, tmp_path):
     tree = copy_built(built, tmp_path / "t")
     (tree / "workflow/scripts/fig1_forward.py").touch()
-    expected = {"fig1_forward": 1, "main_figure": 2, ALL: 1}
+    expected = {"fig1_forward": len(VARIANT_NAMES), "main_figure": 2, "study": len(VARIANT_NAMES), ALL: 1}
     if ALL == "all":
         expected["manuscript"] = 1
     assert planned(tree, ALL) == Counter(expected)
@@ -130,7 +147,9 @@ def test_changing_d1_reruns_what_depends_on_omega_only(built, tmp_path):
     cfg.write_text(cfg.read_text().replace("D1: 0.000296", "D1: 0.0003"))
     jobs = planned(tree, ALL)
     assert {"reference_trajectories", "reference_eps_curve", "reference_accuracy", "fig1_forward",
-            "fig2_inverse", "fig4_eps", "values"} <= set(jobs)
+            "fig2_inverse", "fig4_eps", "values", "connection_fit", "claims"} <= set(jobs)
+    for rule in ("reference_trajectories", "reference_eps_curve", "fig1_forward", "values"):
+        assert jobs[rule] == 1, rule  # kim's only: the other variants keep their results
     for untouched in ("series", "series_table", "fig3_phase", "printed_relation", "manuscript_inputs"):
         assert untouched not in jobs
 
@@ -140,7 +159,7 @@ def test_a_change_in_the_integrator_reruns_reference_rules_not_series(built, tmp
     src = tree / "src/restitution/collision.py"
     src.write_text(src.read_text() + "\n# a change\n")
     jobs = planned(tree, ALL)
-    assert {"reference_trajectories", "reference_eps_curve", "reference_accuracy"} <= set(jobs)
+    assert {"reference_trajectories", "reference_eps_curve", "reference_accuracy", "validation"} <= set(jobs)
     for untouched in ("series", "series_table", "fig3_phase", "printed_relation"):
         assert untouched not in jobs
 
@@ -150,7 +169,7 @@ def test_a_change_in_the_series_module_does_not_rerun_integrations(built, tmp_pa
     src = tree / "src/restitution/series.py"
     src.write_text(src.read_text() + "\n# a change\n")
     jobs = planned(tree, ALL)
-    assert {"series", "fig1_forward", "fig2_inverse", "values"} <= set(jobs)
+    assert {"series", "fig1_forward", "fig2_inverse", "connection_readings", "values"} <= set(jobs)
     for untouched in ("reference_trajectories", "reference_eps_curve", "reference_accuracy", "fig3_phase"):
         assert untouched not in jobs
 
@@ -163,8 +182,8 @@ def test_outputs_match_the_committed_manifest(built):
 
 def test_an_altered_expected_value_fails_the_check(built):
     manifest = json.loads(rebuild.MANIFEST.read_text())
-    values_file = next(iter(manifest["values"]))
-    series_file = next(iter(manifest["rationals"]))
+    values_file = "results/kim/values/values.json"
+    series_file = "results/kim/series/forward.json"
     hashed = next(iter(manifest["sha256"]))
 
     bad = copy.deepcopy(manifest)
@@ -180,9 +199,19 @@ def test_an_altered_expected_value_fails_the_check(built):
     assert any(hashed in p and "sha256" in p for p in rebuild.compare(built, bad))
 
     bad = copy.deepcopy(manifest)
-    table = next(iter(bad["tables"]))
+    table = "results/kim/reference/eps_curve.csv"
     bad["tables"][table]["columns"]["eps"][3] = "0.123"
     assert any(table in p and "column eps" in p for p in rebuild.compare(built, bad))
+
+    bad = copy.deepcopy(manifest)
+    ledger = bad["claims"]["results/kim/claims.csv"]
+    ledger[0][2] = "not reproduced" if ledger[0][2] != "not reproduced" else "reproduced"
+    assert any("claims.csv" in p and "verdict" in p for p in rebuild.compare(built, bad))
+
+    bad = copy.deepcopy(manifest)
+    checks = bad["validation"]["results/dashpot/validation/validation.json"]
+    checks[0]["passed"] = not checks[0]["passed"]
+    assert any("validation.json" in p and "passed" in p for p in rebuild.compare(built, bad))
 
 
 def test_values_the_manuscript_prints(built):
@@ -192,6 +221,115 @@ def test_values_the_manuscript_prints(built):
     assert macros["SeriesAgreeFwd"] == macros["SeriesPrintedFwd"]
     values = json.loads((built / "results/kim/values/values.json").read_text())
     assert values["OmegaAtG"]["value"] == pytest.approx(0.000296 * 0.1 ** -0.75 * 0.0109 ** -1.25, rel=1e-12)
+
+
+# ------------------------------------------------------------------------------ connection and claims
+def read_csv(path: Path):
+    import pandas as pd
+
+    return pd.read_csv(path, keep_default_na=False, na_values=[""])
+
+
+def macros(tree: Path, variant: str = "kim") -> dict:
+    tex = (tree / f"results/{variant}/values/values.tex").read_text()
+    return dict(re.findall(r"\\newcommand\{\\(\w+)\}\{(.*?)\}(?:\s|$)", tex))
+
+
+def test_the_readings_table_reports_every_reading(built):
+    from restitution import connection as cn
+
+    table = read_csv(built / "results/kim/connection/readings.csv")
+    data = json.loads((built / "results/kim/connection/readings.json").read_text())
+    labels = [r.label for r in cn.all_readings(data["x_tilde_c"])]
+    assert table["reading"].tolist() == labels  # config: readings: all, for the paper's case
+    defined = table[table["defined"]]
+    assert len(defined) and defined[["c0", "c1", "c2"]].notna().all().all()
+    assert table[~table["defined"]][["c0", "c1", "c2"]].isna().all().all()
+    assert (table[~table["defined"]]["reason"] != "").all()
+    # the figure reading: the configured one, flagged once, and the relation drawn in figure 4
+    assert table["figure"].sum() == 1
+    chosen = table[table["figure"]].iloc[0]
+    assert chosen["reading"] == "C-N2-K2-Dprinted"
+    derived = json.loads((built / "results/kim/relations/derived.json").read_text())
+    assert derived["c"] == pytest.approx([chosen["c0"], chosen["c1"], chosen["c2"]], rel=1e-12)
+    tex = (built / "results/kim/connection/readings.tex").read_text()
+    assert tex.count(r"\texttt{") == len(table) and tex.count(r"$\dagger$") == 1
+
+
+def test_the_fit_reproduces_the_exact_connection_within_its_residual(built):
+    fit = json.loads((built / "results/kim/connection/fit.json").read_text())
+    curve = read_csv(built / "results/kim/reference/eps_curve.csv")
+    assert fit["applies"] and fit["n"] >= 4
+    inside = curve[(curve["g"] >= fit["g_min"] * (1 - 1e-12)) & (curve["g"] <= fit["g_max"] * (1 + 1e-12))]
+    assert len(inside) == fit["n"]
+    o = inside["omega"].to_numpy()
+    resid = inside["omega_tilde"].to_numpy() - (fit["c"][0] + fit["c"][1] * o + fit["c"][2] * o ** 2)
+    assert abs(resid).max() <= fit["max_abs_residual"] * (1 + 1e-9)
+    assert abs(resid).max() == pytest.approx(fit["max_abs_residual"], rel=1e-9)
+    assert all(e > 0 for e in fit["stderr"])
+    # the retrace check of the exact connection (issue 4 acceptance: 1e-8)
+    assert fit["retrace"]["max_deviation"] < 1e-8
+
+
+def test_eps_every_way_and_its_error_table(built):
+    import numpy as np
+
+    curves = read_csv(built / "results/kim/connection/eps_compare.csv")
+    errors = read_csv(built / "results/kim/connection/eps_errors.csv")
+    assert set(errors["kind"]) == {"printed", "derived", "fitted"}
+    ref = curves["eps_reference"].to_numpy()
+    for _, row in errors.iterrows():
+        eps = curves[f"eps_{row['kind']}"].to_numpy()
+        ok = np.isfinite(eps)
+        assert row["n_undefined"] == (~ok).sum()
+        rel = np.abs(eps - ref)[ok] / ref[ok]
+        assert row["max_rel_error"] == pytest.approx(rel.max(), rel=1e-12)
+        assert row["median_rel_error"] == pytest.approx(np.median(rel), rel=1e-12)
+    # the table in the PDF is this file: one line per relation, numbers as printed
+    tex = (built / "results/kim/connection/eps_errors.tex").read_text()
+    assert tex.count(r"\\") - 2 == len(errors)
+
+
+def test_the_claims_ledger_lists_every_claim_with_a_computed_value(built):
+    from restitution import claims as cl
+
+    ledger = read_csv(built / "results/kim/claims.csv")
+    assert list(ledger.columns) == ["row"] + list(cl.COLUMNS)
+    assert ledger["row"].tolist() == list(range(1, len(ledger) + 1))
+    assert set(ledger["verdict"]) <= set(cl.VERDICTS)
+    claims = ledger["claim"].tolist()
+    for needle in ("forward series x_0", "inverse series x~_4", "D* =", "Omega at g", "tau_b at g",
+                   "higher-order forward series", "higher-order inverse series", "reading P-N1-K2-Dprinted",
+                   "c0 against the least-squares", "c2 against the least-squares", "Omega proportional",
+                   "eps has terms", "shape of figure 4"):
+        assert any(needle in c for c in claims), needle
+    readings = read_csv(built / "results/kim/connection/readings.csv")
+    assert sum("procedure, reading" in c for c in claims) == len(readings)
+    # our values are computed: the ledger's Omega and fitted c0 are those of the other stages
+    values = json.loads((built / "results/kim/values/values.json").read_text())
+    fit = json.loads((built / "results/kim/connection/fit.json").read_text())
+    row = ledger[ledger["claim"].str.startswith("Omega at g")].iloc[0]
+    assert float(row["our_value"]) == pytest.approx(values["OmegaAtG"]["value"], abs=5e-5)
+    row = ledger[ledger["claim"].str.startswith("c0 against")].iloc[0]
+    assert float(row["our_value"].split()[0]) == pytest.approx(fit["c"][0], abs=5e-5)
+
+
+def test_the_ledger_table_and_discussion_are_generated_from_claims_csv(built):
+    ledger = read_csv(built / "results/kim/claims.csv")
+    table = (built / "results/kim/claims/table.tex").read_text()
+    rows = re.findall(r"^(\d+) & .* & (reproduced|\\textbf\{not\}.*|\\textit\{ambiguous\}) \\\\$", table, re.M)
+    assert [int(r) for r, _ in rows] == ledger["row"].tolist()
+    discussion = (built / "results/kim/claims/discussion.tex").read_text()
+    listed = re.search(r"% rows not reproduced: (.*)", discussion).group(1)
+    bad = ledger[ledger["verdict"] == "not reproduced"]["row"].tolist()
+    assert [int(x) for x in listed.split(", ")] == bad
+    # every failed row is discussed: its own item, or inside the span of the readings item
+    items = re.findall(r"\\item\[(\d+)(?:--(\d+))?\.\]", discussion)
+    covered = {n for a, b in items for n in range(int(a), int(b or a) + 1)}
+    assert set(bad) <= covered
+    m = macros(built)
+    assert int(m["ClaimsNotReproduced"]) == len(bad)
+    assert int(m["ClaimsTotal"]) == len(ledger)
 
 
 @pytest.mark.skipif(not rebuild.have_tex(), reason="needs pdflatex and latexmk")
@@ -215,9 +353,10 @@ def test_a_figure_script_runs_as_a_notebook(built, tmp_path):
 def test_jupytext_renders_the_scripts_as_notebooks(tmp_path):
     import jupytext
 
-    for script in sorted((ROOT / "workflow/scripts").glob("fig*.py")):
+    for script in sorted((ROOT / "workflow/scripts").glob("[!_]*.py")):  # every script a rule runs
         nb = jupytext.read(script)
         assert len(nb.cells) >= 3, script.name
+        assert nb.cells[0].cell_type == "markdown", script.name  # what the notebook is about
 
 
 # ------------------------------------------------------------------------------ clean rebuilds
@@ -226,19 +365,19 @@ def test_two_clean_builds_give_identical_bytes(built, tmp_path):
     other = rebuild.copy_tree(tmp_path / "other")
     rebuild.run_pipeline(other, cores=2, target=ALL)
     a, b = rebuild.digest_results(built), rebuild.digest_results(other)
-    assert len(a) >= 28
+    assert len(a) >= 100
     assert [f for f in sorted(set(a) | set(b)) if a.get(f) != b.get(f)] == []
 
 
-@pytest.mark.slow
-def test_make_check_fails_on_an_altered_manifest(tmp_path):
+def test_the_check_command_fails_on_an_altered_manifest(built, tmp_path):
+    """The CLI behind `make check`, on the session's clean build (`make check` itself rebuilds)."""
     manifest = json.loads(rebuild.MANIFEST.read_text())
-    values_file = next(iter(manifest["values"]))
+    values_file = "results/kim/values/values.json"
     manifest["values"][values_file]["EpsAtG"]["value"] = 0.5
     altered = tmp_path / "manifest.json"
     altered.write_text(json.dumps(manifest))
     proc = subprocess.run([sys.executable, str(ROOT / "workflow/tools/rebuild.py"), "--manifest", str(altered),
-                           "check"], env=ENV, capture_output=True, text=True)
+                           "check", "--tree", str(built)], env=ENV, capture_output=True, text=True)
     assert proc.returncode == 1, proc.stdout + proc.stderr
     assert "check FAILED: 1 difference(s)" in proc.stdout
     assert "EpsAtG" in proc.stdout and "expected 0.5" in proc.stdout

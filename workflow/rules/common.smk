@@ -38,10 +38,14 @@ except ConfigError as err:
 # Snakemake's own validation on top (it also fills in the schema's defaults, already applied).
 validate(config, "../schemas/config.schema.yaml")
 
-VARIANTS = {v["name"]: v for v in config["variants"]}
+# `extra_variants` (empty in config.yaml) adds variants for one run: snakemake --config / --configfile.
+VARIANTS = {v["name"]: v for v in config["variants"] + config["extra_variants"]}
 MAIN = config["main_variant"]
 NUMERICS = config["numerics"]
 SERIES = config["series"]
+CONNECTION = config["connection"]
+COMPARE = config["compare"]
+VALIDATION = config["validation"]
 
 wildcard_constraints:
     variant="|".join(re.escape(name) for name in VARIANTS),
@@ -63,9 +67,24 @@ def exponents(wildcards):
 PAPER_EXPONENTS = (Fraction(3, 2), Fraction(1))
 
 
-def is_paper_case(name):
+def _exponents_of(name):
+    from restitution.exponents import Exponents
+
     v = VARIANTS[name]
-    return (Fraction(str(v["alpha"])), Fraction(str(v["gamma"]))) == PAPER_EXPONENTS
+    ex = Exponents.parse(v["alpha"], v["gamma"])
+    return ex.alpha, ex.gamma
+
+
+def is_paper_case(name):
+    """The paper's exponents: its printed numbers (series, c0-c2, claims) apply."""
+    return _exponents_of(name) == PAPER_EXPONENTS
+
+
+if not is_paper_case(MAIN):
+    sys.stderr.write(f"config error: main_variant = {MAIN!r}: must have the paper's exponents alpha = 3/2, "
+                     "gamma = 1 (the manuscript audits the paper's claims); study other materials as further "
+                     "variants\n")
+    sys.exit(2)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -125,13 +144,16 @@ def code(name):
 
 # ---------------------------------------------------------------------------------------------
 # Figure 4 relations Omega~ = c0 + c1 Omega + c2 Omega^2 to draw next to the reference eps(g).
-# Each is a JSON file {"label", "source", "c": [c0, c1, ...]}. Later stages (derived and fitted
-# c's) append their files here.
+# Each is a JSON file {"kind", "label", "source", "c"} ("c": null and a "reason" where the
+# relation does not exist for the variant): the paper's printed c's (its exponents only), ours
+# from the paper's procedure (connection_readings) and ours from least squares (connection_fit).
 # ---------------------------------------------------------------------------------------------
 
 RELATIONS = {
     # kind -> (applies to variant?, path template)
     "printed": (is_paper_case, "results/{variant}/relations/printed.json"),
+    "derived": (lambda name: True, "results/{variant}/relations/derived.json"),
+    "fitted": (lambda name: True, "results/{variant}/relations/fitted.json"),
 }
 
 
@@ -140,38 +162,76 @@ def relation_files(wildcards):
             for applies, tpl in RELATIONS.values() if applies(wildcards.variant)]
 
 
+def optional_lib(*modules):
+    """lib() of modules that may not exist yet (being written elsewhere): the existing ones only.
+    The scripts that use them say "not available" for the missing ones."""
+    return lib(*[m for m in modules if (PKG / f"{m}.py").exists()])
+
+
 # ---------------------------------------------------------------------------------------------
 # Final outputs
 # ---------------------------------------------------------------------------------------------
 
 FIGURES = ["fig1", "fig2", "fig3", "fig4"]
 PAPER_PDF = "results/paper/restitution.pdf"
+EXTRA = [name for name in VARIANTS if name != MAIN]   # variants with a generated section
 
 
 def variant_outputs(name):
+    """Everything the study of one variant produces (the target of results/<name>/study.txt)."""
     out = [
         f"results/{name}/series/forward.json",
         f"results/{name}/series/inverse.json",
         f"results/{name}/series/table.tex",
         f"results/{name}/reference/summary.json",
         f"results/{name}/reference/eps_curve.csv",
-        f"results/{name}/reference/accuracy.csv",
+        f"results/{name}/validation/known.csv",
+        f"results/{name}/connection/readings.csv",
+        f"results/{name}/connection/readings.tex",
+        f"results/{name}/connection/fit.json",
+        f"results/{name}/connection/eps_errors.csv",
+        f"results/{name}/connection/eps_errors.tex",
+        f"results/{name}/validation/validation.json",
         f"results/{name}/values/values.tex",
         f"results/{name}/values/values.json",
     ]
     out += [f"results/{name}/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
+    if name == MAIN:  # the tolerance study is printed for the main variant only
+        out.append(f"results/{name}/reference/accuracy.csv")
+    if is_paper_case(name):
+        out += [f"results/{name}/claims.csv", f"results/{name}/claims/table.tex"]
+    if name != MAIN:
+        out.append(f"results/{name}/section.tex")
     return out
 
 
 def all_outputs_but_pdf():
-    out = [f for name in VARIANTS for f in variant_outputs(name)]
+    out = [f"results/{name}/study.txt" for name in VARIANTS]
     out += [f"results/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
+    out += ["results/paper/variants.tex", "results/paper/validation.tex",
+            "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
+    out += STABILITY_OUTPUTS
     return out
 
 
-# The manuscript's inputs besides paper/*: extended by later stages (claims ledger, variants).
+# Written by workflow/rules/stability.smk (issue 6) when it is included; empty otherwise.
+STABILITY_OUTPUTS = []
+
+# The manuscript's inputs besides paper/*.
 MANUSCRIPT_INPUTS = [
     "results/paper/inputs.tex",
+    "results/paper/variants.tex",
+    "results/paper/validation.tex",
+    "results/paper/variants_values.tex",
+    "results/paper/eps_omega.pdf",
     f"results/{MAIN}/values/values.tex",
     f"results/{MAIN}/series/table.tex",
-] + [f"results/{MAIN}/figures/{f}.pdf" for f in FIGURES]
+    f"results/{MAIN}/connection/readings.tex",
+    f"results/{MAIN}/connection/eps_errors.tex",
+    f"results/{MAIN}/claims/table.tex",
+    f"results/{MAIN}/claims/discussion.tex",
+] + [f"results/{MAIN}/figures/{f}.pdf" for f in FIGURES] + [
+    f for name in EXTRA for f in
+    [f"results/{name}/section.tex", f"results/{name}/series/table.tex", f"results/{name}/connection/readings.tex",
+     f"results/{name}/connection/eps_errors.tex"] + [f"results/{name}/figures/{f}.pdf" for f in FIGURES]
+]

@@ -76,11 +76,10 @@ rule printed_relation:
 
 
 rule fig4_eps:
-    """eps(g): reference integration and every available Omega~(Omega) relation."""
+    """eps(g): reference integration and every available Omega~(Omega) relation (eps_compare)."""
     input:
-        curve=rules.reference_eps_curve.output[0],
-        relations=relation_files,
-        src=lib("exponents"),
+        curves=rules.eps_compare.output.curves,
+        errors=rules.eps_compare.output.errors,
         code=code("fig4_eps.py"),
     output:
         pdf="results/{variant}/figures/fig4.pdf",
@@ -88,6 +87,7 @@ rule fig4_eps:
     params:
         exponents=exponents,
         g_figure=vparam("g_figure"),
+        fit_g_range=vparam("fit_g_range"),
     log:
         "logs/{variant}/fig4.log",
     script:

@@ -19,6 +19,7 @@ rule reference_trajectories:
         g=vparam("g_figure"),
         rtol=NUMERICS["rtol"],
         points=NUMERICS["trajectory_points"],
+    priority: 50  # first: the slow symbolic connection (next stage) waits for its x~_c
     log:
         "logs/{variant}/reference_trajectories.log",
     script:
@@ -61,3 +62,4 @@ rule reference_accuracy:
         "logs/{variant}/reference_accuracy.log",
     script:
         script_file("reference_accuracy.py")
+

@@ -69,14 +69,24 @@ def _resolve(schema, root):
     return schema
 
 
-def _as_number(value):
-    """YAML 1.1 reads 1e-10 (no dot) as text; accept it as the number it means."""
+def _as_number(value, kind: str = "number"):
+    """YAML 1.1 reads 1e-10 (no dot) as text, and `snakemake --config` passes every value of a
+    nested structure as text; accept such text as the number it means."""
     if isinstance(value, str):
         try:
-            return float(value)
+            return int(value) if kind == "integer" else float(value)
         except ValueError:
             return value
     return value
+
+
+def _object_branch(schema, root):
+    """The object alternative of a oneOf (e.g. "null or {min, max}"), else the schema itself."""
+    for alt in schema.get("oneOf", []):
+        alt = _resolve(alt, root)
+        if alt.get("type") == "object":
+            return alt
+    return schema
 
 
 def _fill_defaults(node, schema, root):
@@ -84,19 +94,20 @@ def _fill_defaults(node, schema, root):
     written as 1e-10 as numbers where the schema wants a number."""
     schema = _resolve(schema, root)
     if isinstance(node, dict):
+        schema = _object_branch(schema, root)
         for key, sub in schema.get("properties", {}).items():
             if key not in node and "default" in sub:
                 node[key] = copy.deepcopy(sub["default"])
             if key in node:
                 sub_r = _resolve(sub, root)
-                if sub_r.get("type") == "number":
-                    node[key] = _as_number(node[key])
+                if sub_r.get("type") in ("number", "integer"):
+                    node[key] = _as_number(node[key], sub_r["type"])
                 _fill_defaults(node[key], sub, root)
     elif isinstance(node, list) and isinstance(schema.get("items"), dict):
         items = _resolve(schema["items"], root)
         for i, item in enumerate(node):
-            if items.get("type") == "number":
-                node[i] = _as_number(item)
+            if items.get("type") in ("number", "integer"):
+                node[i] = _as_number(item, items["type"])
             _fill_defaults(node[i], schema["items"], root)
 
 
@@ -117,27 +128,46 @@ def check_config(config: dict, schema_path: str) -> dict:
             value = error.instance[extra[0]]
         raise ConfigError(f"{field} = {value!r}: {_allowed(error)}")
 
-    names = [v["name"] for v in config["variants"]]
+    every = config["variants"] + config["extra_variants"]
+    names = [v["name"] for v in every]
     dupes = sorted({n for n in names if names.count(n) > 1})
     if dupes:
-        raise ConfigError(f"variants[].name = {dupes[0]!r}: must be unique")
+        raise ConfigError(f"variants[].name = {dupes[0]!r}: must be unique "
+                          "(over variants and extra_variants)")
     if config["main_variant"] not in names:
         raise ConfigError(f"main_variant = {config['main_variant']!r}: "
                           f"must be one of {', '.join(names)}")
+    if not config["compare"]["omega_min"] < config["compare"]["omega_max"]:
+        raise ConfigError(f"compare.omega_max = {config['compare']['omega_max']!r}: "
+                          f"must be > compare.omega_min = {config['compare']['omega_min']!r}")
 
     # Physics-level checks through the library, so the messages match the CLI's.
     from restitution.errors import ParameterError
     from restitution.exponents import Exponents
 
-    for v in config["variants"]:
+    labels = reading_labels()
+    for v in every:
+        where = "variants" if v in config["variants"] else "extra_variants"
         try:
             Exponents.parse(v["alpha"], v["gamma"])
         except ParameterError as err:
-            raise ConfigError(f"variants[{v['name']}].{err}") from None
+            raise ConfigError(f"{where}[{v['name']}].{err}") from None
         g = v["g_range"]
         if not g["min"] < g["max"]:
-            raise ConfigError(f"variants[{v['name']}].g_range.max = {g['max']!r}: "
+            raise ConfigError(f"{where}[{v['name']}].g_range.max = {g['max']!r}: "
                               f"must be > g_range.min = {g['min']!r}")
+        fit = v["fit_g_range"]
+        if fit is not None and not (fit["min"] < fit["max"]):
+            raise ConfigError(f"{where}[{v['name']}].fit_g_range.max = {fit['max']!r}: "
+                              f"must be > fit_g_range.min = {fit['min']!r}")
+        if v["readings"] != "all":
+            for label in v["readings"]:
+                if label not in labels:
+                    raise ConfigError(f"{where}[{v['name']}].readings = {label!r}: must be one of "
+                                      f"{', '.join(labels)} (or the word all)")
+    if config["connection"]["figure_reading"] not in labels:
+        raise ConfigError(f"connection.figure_reading = {config['connection']['figure_reading']!r}: "
+                          f"must be one of {', '.join(labels)}")
     max_power = config["series"]["max_power"]
     try:
         if Fraction(str(max_power)) < 1:
@@ -146,3 +176,18 @@ def check_config(config: dict, schema_path: str) -> dict:
         raise ConfigError(f"series.max_power = {max_power!r}: "
                           "must be a rational number >= 1") from None
     return config
+
+
+#: Suffix of the reading whose inverse series start at x~_c (its label carries the number).
+XC_SUFFIX = "-xc"
+
+
+def reading_labels() -> list[str]:
+    """Labels a variant may list under `readings` (restitution.connection.all_readings)."""
+    from restitution.connection import all_readings
+
+    out = [r.label for r in all_readings(None)]
+    with_xc = [r for r in all_readings(0.5) if r.x_tilde_c]
+    out += [r.label.split(XC_SUFFIX)[0] + XC_SUFFIX for r in with_xc]
+    return out
+

@@ -1,10 +1,12 @@
 # %% [markdown]
 # # Every number the manuscript prints
 #
-# Collected from the stage outputs (reference integrations, series, accuracy study, relations)
-# and written twice: values.tex with one \newcommand per number (the manuscript \input's it,
-# so no number is typed by hand) and values.json with the raw values, their kind and the
-# tolerance `make check` allows.
+# Collected from the stage outputs (reference integrations, series, accuracy study, connection,
+# eps errors, validation and, for the paper's exponents, the claims ledger) and written twice:
+# values.tex with one \newcommand per number (the manuscript \input's it, so no number is typed
+# by hand) and values.json with the raw values, their kind and the tolerance `make check` allows.
+# Nothing is computed here that another stage computes: each number has one source, and the
+# paper's printed numbers come from `restitution.printed`.
 
 # %%
 if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
@@ -20,37 +22,18 @@ from fractions import Fraction  # noqa: E402
 
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+from _latex import esc, frac_tex, math_text, sci  # noqa: E402
 from _pipeline import read_json, start, write_json, write_text  # noqa: E402
 
-from restitution import damped, printed  # noqa: E402
+from restitution import printed  # noqa: E402
 from restitution.model import Material  # noqa: E402
-from restitution.series import perturbation_series  # noqa: E402
 
 start(snakemake)
 
 #: make check tolerances (relative) by where a number comes from.
 TOLERANCE = {"exact": 0.0, "formula": 1e-12, "integration": 1e-6, "config": 0.0, "paper": 0.0}
-WORDS = ["Zero", "One", "Two", "Three", "Four", "Five", "Six", "Seven", "Eight"]
-
-
-def sci(x: float, sig: int = 4) -> str:
-    """x with `sig` significant digits; scientific as a\\times10^{b} outside [1e-3, 1e5)."""
-    if x is None or (isinstance(x, float) and not math.isfinite(x)):
-        return "---"
-    if x == 0:
-        return "0"
-    mant, exp = f"{x:.{sig - 1}e}".split("e")
-    e = int(exp)
-    if -3 <= e < 5:
-        return f"{x:.{max(sig - 1 - e, 0)}f}"
-    return rf"\ensuremath{{{mant}\times 10^{{{e}}}}}"
-
-
-def frac_tex(q: Fraction) -> str:
-    if q.denominator == 1:
-        return rf"\ensuremath{{{q.numerator}}}"
-    sign = "-" if q < 0 else ""
-    return rf"\ensuremath{{{sign}{abs(q.numerator)}/{q.denominator}}}"
+KINDS = {"printed": "Printed", "derived": "Derived", "fitted": "Fitted"}
+C_NAMES = ("CZero", "COne", "CTwo")
 
 
 class Values:
@@ -64,6 +47,8 @@ class Values:
             raise ValueError(f"LaTeX macro names are letters only: {name!r}")
         if name in self.items:
             raise ValueError(f"duplicate value {name!r}")
+        if isinstance(value, (np.floating, np.integer, np.bool_)):
+            value = value.item()
         if tex is None:
             if isinstance(value, Fraction):
                 tex = frac_tex(value)
@@ -73,40 +58,31 @@ class Values:
                 tex = str(value)
             elif isinstance(value, float):
                 tex = sci(value, sig)
+            elif value is None:
+                tex = "---"
             else:
-                tex = str(value)
+                tex = esc(value)
         raw = str(value) if isinstance(value, Fraction) else value
         if isinstance(raw, float) and not math.isfinite(raw):
             raw = None
         self.items[name] = {"value": raw, "tex": tex, "kind": kind,
                             "tolerance": TOLERANCE[kind], "note": note}
 
-    def verdict(self, name, ok: bool, note=""):
-        self.add(name, "reproduced" if ok else "not reproduced", kind="exact", note=note)
-
-
-def first_departure(tau, x_series, x_ref, tol):
-    """First tau where the series is off the reference by more than tol (None if never)."""
-    off = np.abs(np.asarray(x_series) - np.asarray(x_ref)) > tol
-    return float(tau[np.argmax(off)]) if off.any() else None
-
 
 # %% Inputs
-p = snakemake.params
+inp, p = snakemake.input, snakemake.params
 V = Values()
-summary = read_json(snakemake.input.summary)
-fwd = pd.read_csv(snakemake.input.forward)
-inv = pd.read_csv(snakemake.input.inverse)
-curve = pd.read_csv(snakemake.input.curve)
-acc = pd.read_csv(snakemake.input.accuracy)
-agreement = read_json(snakemake.input.agreement)
-relations = {r["kind"]: r for r in (read_json(f) for f in snakemake.input.relations)}
+summary = read_json(inp.summary)
+curve = pd.read_csv(inp.curve)
+agreement = read_json(inp.agreement)
+readings = read_json(inp.readings)
+fit = read_json(inp.fit)
+errors = pd.read_csv(inp.errors, keep_default_na=False, na_values=[""])
 mat = Material(p.exponents["alpha"], p.exponents["gamma"], p.D1, p.D2)
 ex = mat.exponents
 g = summary["g"]
 omega = summary["omega"]
 eps = summary["eps"]
-e_omega = float(ex.omega_exponent)
 
 # %% Model and scaling
 V.add("ExpAlpha", ex.alpha, kind="config")
@@ -114,13 +90,13 @@ V.add("ExpGamma", ex.gamma, kind="config")
 V.add("ExpP", ex.p, kind="exact", note="common denominator of alpha and gamma")
 V.add("DOne", p.D1, tex=f"{p.D1:g}", kind="config")
 V.add("DTwo", p.D2, tex=f"{p.D2:g}", kind="config")
-V.add("Dstar", mat.d_star, kind="formula", note="D* = D1 / D2^((alpha-1)/gamma)")
+V.add("Dstar", mat.d_star, kind="formula", note="D* = D1 / D2^((alpha-1)/gamma); undefined for gamma = 0")
 V.add("Regime", mat.regime or "undefined", kind="exact")
 V.add("GFig", g, tex=f"{g:g}", kind="config")
 V.add("OmegaExponent", ex.omega_exponent, kind="exact", note="Omega proportional to g^this")
 # When alpha - 1 - 2 gamma = 0, Omega does not depend on g, Omega~ = Omega and eps is g-independent.
 V.add("EpsExponent", 1 / ex.omega_exponent if ex.omega_exponent else None, kind="exact",
-      note="eps = (Omega~/Omega)^this for the paper's relation")
+      note="eps = (Omega~/Omega)^this for a relation Omega~(Omega)")
 V.add("OmegaAtG", omega, kind="formula")
 V.add("LengthScaleAtG", summary["length_scale"], kind="formula", note="A, xi = A x")
 V.add("TimeScaleAtG", summary["time_scale"], kind="formula", note="B, t = B tau")
@@ -140,38 +116,9 @@ V.add("TauTildeBAtG", summary["inverse"]["tau_tilde_b"])
 V.add("TauTildeEndAtG", summary["inverse"]["tau_tilde_end"])
 V.add("RTol", p.rtol, tex=sci(p.rtol, 1), kind="config")
 
-# %% Where each truncation of the series stops tracking the reference
-tol = p.track_tolerance
-V.add("TrackTol", tol, tex=f"{tol:g}", kind="config")
+# %% Series agreement with the printed coefficients
 V.add("SeriesOmegaOrder", p.omega_order, kind="config")
 V.add("SeriesMaxPower", Fraction(p.max_power), kind="config")
-s_fwd = perturbation_series(ex.alpha, ex.gamma, omega_order=p.omega_order, max_power=p.max_power,
-                            direction="forward")
-s_inv = perturbation_series(ex.alpha, ex.gamma, omega_order=p.omega_order, max_power=p.max_power,
-                            direction="inverse")
-tau = fwd["tau"].to_numpy()
-for n in range(p.omega_order + 1):
-    t_off = first_departure(tau, s_fwd.evaluate(tau, omega, order=n), fwd["x"], tol)
-    V.add(f"FwdTrack{WORDS[n]}", t_off, note=f"forward, series to Omega^{n}: first tau off by > tol")
-# The inverse series start at x~(0) = 0; the physical inverse run starts at x~_c. Compared with
-# the latter they are off from the start whenever x~_c > tol, so report both.
-omega_t = summary["inverse"]["omega_tilde"]
-tau_t = inv["tau_tilde"].to_numpy()
-t_scale = eps ** (float(ex.gamma) / float(ex.gamma + 1))
-for n in range(p.omega_order + 1):
-    t_off = first_departure(tau_t, s_inv.evaluate(tau_t, omega_t, order=n), inv["x_tilde"], tol)
-    V.add(f"InvTrack{WORDS[n]}", t_off, note=f"inverse vs reversed forward run, series to Omega~^{n}")
-    if "x_tilde_from_zero" in inv:
-        ok = inv["x_tilde_from_zero"].notna().to_numpy()
-        t_off0 = first_departure(tau_t[ok], s_inv.evaluate(tau_t[ok], omega_t, order=n),
-                                 inv["x_tilde_from_zero"][ok], tol)
-        V.add(f"InvZeroTrack{WORDS[n]}", t_off0,
-              note=f"inverse vs x~(0) = 0 integration, series to Omega~^{n}")
-        V.add(f"InvZeroTrackFwdTau{WORDS[n]}",
-              None if t_off0 is None else summary["tau_c"] - t_off0 / t_scale,
-              note="the same instant in forward time tau = tau_c - tau~ eps^(-gamma/(gamma+1))")
-
-# %% Series agreement with the printed coefficients
 for d, D in (("forward", "Fwd"), ("inverse", "Inv")):
     a = agreement[d]
     V.add(f"SeriesTerms{D}", a["ours"], kind="exact", note="nonzero coefficients we derive")
@@ -192,94 +139,165 @@ V.add("OmegaTildeMax", float(curve["omega_tilde"].max()))
 V.add("ForceEnds", int((curve["end"] == "force").sum()), kind="exact",
       note="impact speeds whose contact ends where the force vanishes")
 
-# %% Accuracy of the reference integration (tolerance study)
-acc = acc.sort_values("rtol")
-best, loose = acc.iloc[0], acc.iloc[-1]
-V.add("AccRTolTight", float(best["rtol"]), tex=sci(best["rtol"], 1), kind="config")
-V.add("AccRTolLoose", float(loose["rtol"]), tex=sci(loose["rtol"], 1), kind="config")
-V.add("AccEpsErrLoose", float(loose["eps_error"]), sig=2, note="|eps(loosest) - eps(tightest)|")
-V.add("AccTauCErrLoose", float(loose["tau_c_error"]), sig=2)
-at = acc[np.isclose(acc["rtol"], p.rtol, rtol=1e-9, atol=0)]
-if len(at) and at.iloc[0]["rtol"] != best["rtol"]:
-    V.add("AccEpsErrWorking", float(at.iloc[0]["eps_error"]), sig=2,
-          note="|eps(working rtol) - eps(tightest)|")
-    V.add("AccTauCErrWorking", float(at.iloc[0]["tau_c_error"]), sig=2)
+# %% Accuracy of the reference integration (tolerance study; main variant)
+if p.accuracy:
+    acc = pd.read_csv(inp.accuracy).sort_values("rtol")
+    best, loose = acc.iloc[0], acc.iloc[-1]
+    V.add("AccRTolTight", float(best["rtol"]), tex=sci(best["rtol"], 1), kind="config")
+    V.add("AccRTolLoose", float(loose["rtol"]), tex=sci(loose["rtol"], 1), kind="config")
+    V.add("AccEpsErrLoose", float(loose["eps_error"]), sig=2, note="|eps(loosest) - eps(tightest)|")
+    V.add("AccTauCErrLoose", float(loose["tau_c_error"]), sig=2)
+    at = acc[np.isclose(acc["rtol"], p.rtol, rtol=1e-9, atol=0)]
+    if len(at) and at.iloc[0]["rtol"] != best["rtol"]:
+        V.add("AccEpsErrWorking", float(at.iloc[0]["eps_error"]), sig=2,
+              note="|eps(working rtol) - eps(tightest)|")
+        V.add("AccTauCErrWorking", float(at.iloc[0]["tau_c_error"]), sig=2)
 
-# %% Comparison with the paper's printed numbers (only for the paper's exponents)
-if p.compare_with_paper:
+# %% The paper's procedure (connection_readings.py)
+rows = readings["readings"]
+V.add("ReadingsComputed", len(rows), kind="exact")
+V.add("ReadingsDefined", sum(1 for r in rows if r["defined"]), kind="exact")
+V.add("XTildeCReading", readings["x_tilde_c"], note="x~_c at g_figure, start of the x~_c reading")
+chosen = next((r for r in rows if r["reading"] == readings["figure_reading"]), None)
+V.add("FigReading", chosen["reading"] if chosen else "none", tex=rf"\texttt{{{esc(chosen['reading'])}}}"
+      if chosen else "none", kind="exact", note="reading drawn in figure 4")
+V.add("FigReadingText", chosen["description"] if chosen else "", tex=math_text(chosen["description"])
+      if chosen else "", kind="exact")
+for i, name in enumerate(C_NAMES):
+    V.add(f"Fig{name}", chosen["c"][i] if chosen else None, kind="formula",
+          note="c_i of the figure-4 reading (sympy/mpmath, deterministic)")
+if chosen:
+    V.add("FigTauZero", chosen["tau0"], kind="formula")
+    V.add("FigTauZeroTilde", chosen["tau0_tilde"], kind="formula")
+plain = next((r for r in rows if r["reading"] == "P-N1-K2-Dprinted"), None)
+if plain is not None:
+    status = (rf"gives $c_0 = {plain['c'][0]:.4f}$, $c_1 = {plain['c'][1]:.4f}$, $c_2 = {plain['c'][2]:.4f}$"
+              if plain["defined"] else "has no solution: " + math_text(plain["reason"]))
+    V.add("PlainReadingStatus", bool(plain["defined"]), tex=status, kind="exact",
+          note="the plainest reading P-N1-K2-Dprinted")
+if rows and not any(r["defined"] for r in rows):
+    V.add("ReadingsReason", rows[0].get("reason", ""), tex=math_text(rows[0].get("reason", "")), kind="exact")
+
+# %% The least-squares fit and the retrace check (connection_fit.py)
+V.add("FitApplies", bool(fit["applies"]), kind="exact")
+V.add("FitGMin", fit["g_min"], tex=f"{fit['g_min']:g}", kind="config")
+V.add("FitGMax", fit["g_max"], tex=f"{fit['g_max']:g}", kind="config")
+V.add("FitPoints", fit["n"], kind="exact")
+if fit["applies"]:
+    V.add("FitOmegaMin", fit["omega_min"], kind="formula")
+    V.add("FitOmegaMax", fit["omega_max"], kind="formula")
+    for i, name in enumerate(C_NAMES):
+        V.add(f"Fit{name}", fit["c"][i], sig=4)
+        V.add(f"Fit{name}Err", fit["stderr"][i], sig=2, note="OLS standard error (model misfit)")
+    V.add("FitMaxResidual", fit["max_abs_residual"], sig=2)
+    V.add("FitRMS", fit["rms"], sig=2)
+    V.add("FitMaxRelResidual", fit["max_rel_residual"], sig=2)
+else:
+    V.add("FitReason", fit["reason"], tex=math_text(fit["reason"]), kind="exact")
+rt = fit["retrace"]
+if "max_deviation" in rt:
+    V.add("RetraceMaxDev", rt["max_deviation"], sig=2, note="max |x_retraced - x_forward| / x_b")
+    V.add("RetraceVEnd", rt["v_end_error"], sig=2)
+    V.add("RetraceTau", rt["tau_error"], sig=2)
+    V.add("RetraceSamples", rt["samples"], kind="exact")
+
+# %% eps(g) every way (eps_compare.py)
+for _, r in errors.iterrows():
+    K = KINDS[r["kind"]]
+    defined = int(r["n_defined"]) > 0
+    V.add(f"{K}EpsDefined", defined, kind="exact")
+    for col, name in (("max_abs_error", "MaxAbs"), ("median_abs_error", "MedianAbs"),
+                      ("max_rel_error", "MaxRel"), ("median_rel_error", "MedianRel"),
+                      ("max_rel_error_fit_range", "MaxRelFit")):
+        V.add(f"{K}Eps{name}", float(r[col]) if defined and r[col] != "" else None, sig=2)
+    V.add(f"{K}EpsUndefined", int(r["n_undefined"]), kind="exact", note="speeds with Omega~ <= 0 (no eps)")
+    V.add(f"{K}EpsAboveOne", int(r["n_above_one"]), kind="exact", note="speeds with eps > 1")
+
+# %% The claims ledger (paper's exponents only)
+if p.claims:
+    cv = read_json(inp.claims_values)
+    ledger = pd.read_csv(inp.claims_csv, keep_default_na=False)
+    counts = ledger["verdict"].value_counts()
+    V.add("ClaimsTotal", int(len(ledger)), kind="exact")
+    V.add("ClaimsReproduced", int(counts.get("reproduced", 0)), kind="exact")
+    V.add("ClaimsNotReproduced", int(counts.get("not reproduced", 0)), kind="exact")
+    V.add("ClaimsAmbiguous", int(counts.get("ambiguous", 0)), kind="exact")
+    # Row numbers of the ledger, so the text can point at them (rows are found by their claim).
+    ROWS = {"RowDstar": "D* =", "RowOmega": "Omega at g", "RowTauB": "tau_b at g",
+            "RowFwdTrack": "higher-order forward series", "RowFirstOrder": "for tau > 2",
+            "RowInvTrack": "higher-order inverse series", "RowRadiusFwd": "forward damped-only Taylor",
+            "RowRadiusInv": "inverse damped-only Taylor", "RowInvForm": "x~0 = G tanh",
+            "RowDelta": "Delta = tau_b", "RowFitCZero": "c0 against the least-squares",
+            "RowRelation": "Omega~(Omega) = c0", "RowOmegaScaling": "Omega proportional",
+            "RowEpsScaling": "eps has terms", "RowShape": "shape of figure 4", "RowFigFour": "eps(g) from the printed"}
+    for name, prefix in ROWS.items():
+        hit = ledger[ledger["claim"].str.startswith(prefix)]
+        V.add(name, int(hit["row"].iloc[0]), kind="exact", note=prefix)
+        V.add(name.replace("Row", "Verdict", 1), hit["verdict"].iloc[0], kind="exact")
+    reading_rows = ledger[ledger["claim"].str.contains("procedure, reading")]
+    V.add("RowReadingsFirst", int(reading_rows["row"].min()), kind="exact")
+    V.add("RowReadingsLast", int(reading_rows["row"].max()), kind="exact")
+    V.add("ReadingsReproduced", int((reading_rows["verdict"] == "reproduced").sum()), kind="exact",
+          note="readings whose c0-c2 equal the printed ones within the ledger's tolerance")
+
+    # The paper's printed numbers (restitution.printed) and ours next to them.
     V.add("PaperDstar", printed.D_STAR, tex=r"\ensuremath{3\times 10^{-3}}", kind="paper")
     V.add("PaperOmegaAtG", printed.OMEGA_AT_G, tex=f"{printed.OMEGA_AT_G}", kind="paper")
     V.add("PaperTauBAtG", printed.TAU_B_AT_G, tex=f"{printed.TAU_B_AT_G}", kind="paper")
     V.add("PaperOmegaExponent", Fraction(printed.OMEGA_G_EXPONENT), kind="paper")
-    V.add("PaperFwdDiverge", printed.FORWARD_DIVERGENCE_TAU, tex=f"{printed.FORWARD_DIVERGENCE_TAU}",
-          kind="paper")
-    V.add("PaperInvDiverge", printed.INVERSE_DIVERGENCE_TAU, tex=f"{printed.INVERSE_DIVERGENCE_TAU}",
-          kind="paper")
-    # D* is printed to one digit ("~ 3 x 10^-3"); Omega to four; tau_b to two.
-    V.verdict("DstarVerdict", abs(mat.d_star - printed.D_STAR) <= 0.5e-3)
-    V.add("OmegaRelDiff", 100.0 * (printed.OMEGA_AT_G - omega) / omega, sig=3, kind="formula",
-          note="(paper - ours) / ours, percent")
-    V.verdict("OmegaVerdict", abs(omega - printed.OMEGA_AT_G) <= 0.5e-4)
-    # The impact speed at which the paper's own formula would give the printed Omega.
-    V.add("GForPaperOmega", (printed.OMEGA_AT_G / mat.omega(1.0)) ** (1.0 / e_omega), kind="formula")
-    V.verdict("OmegaExponentVerdict", ex.omega_exponent == Fraction(printed.OMEGA_G_EXPONENT))
-    V.add("TauBDiff", summary["tau_b"] - printed.TAU_B_AT_G, sig=3)
-    V.verdict("TauBVerdict", abs(summary["tau_b"] - printed.TAU_B_AT_G) <= 0.05)
-    V.verdict("SeriesVerdict", agreement["forward"]["agree"] == agreement["forward"]["printed_within_max_power"]
-              and agreement["inverse"]["agree"] == agreement["inverse"]["printed_within_max_power"])
-    # Where the higher orders stop tracking: the paper gives one decimal; we allow +-0.1.
-    fwd_top = V.items[f"FwdTrack{WORDS[p.omega_order]}"]["value"]
-    V.verdict("FwdDivergeVerdict", fwd_top is not None
-              and abs(fwd_top - printed.FORWARD_DIVERGENCE_TAU) <= 0.1,
-              note="highest-order forward truncation leaves the reference near the paper's tau")
-    key = f"InvZeroTrackFwdTau{WORDS[p.omega_order]}"
-    inv_top = V.items[key]["value"] if key in V.items else None
-    V.verdict("InvDivergeVerdict", inv_top is not None
-              and abs(inv_top - printed.INVERSE_DIVERGENCE_TAU) <= 0.1,
-              note="highest-order inverse truncation (vs the x~(0) = 0 run) leaves it near the paper's tau")
-    c = list(printed.PRINTED_C)
-    for i, name in enumerate(("CZeroPaper", "COnePaper", "CTwoPaper")):
-        V.add(name, c[i], tex=f"{c[i]}", kind="paper")
-    rel_t = float(np.polynomial.polynomial.polyval(omega, c))
-    V.add("PaperOmegaTildeAtG", rel_t, kind="formula", note="c0 + c1 Omega + c2 Omega^2 at g_figure")
-    eps_paper = (rel_t / omega) ** (1.0 / e_omega) if rel_t > 0 else None
-    V.add("PaperEpsAtG", eps_paper, kind="formula", note="eps from the paper's relation at g_figure")
-    # The relation is judged by the eps it gives, against the reference: within 5 percent.
-    V.verdict("EpsRelationVerdict", eps_paper is not None and abs(eps_paper - eps) <= 0.05 * eps)
-    if "printed" in relations:
-        o = curve["omega"].to_numpy()
-        rel = np.polynomial.polynomial.polyval(o, relations["printed"]["c"])
-        with np.errstate(invalid="ignore"):
-            eps_rel = np.where(rel > 0, (rel / o) ** (1.0 / e_omega), np.nan)
-        err = np.abs(eps_rel - curve["eps"].to_numpy()) / curve["eps"].to_numpy()
-        V.add("PaperEpsMaxRelErr", float(np.nanmax(err)) if np.isfinite(err).any() else None, sig=3,
-              kind="integration", note="max over the g range of |eps_paper - eps_ref| / eps_ref")
-        V.add("PaperEpsMinRelErr", float(np.nanmin(err)) if np.isfinite(err).any() else None, sig=3,
-              kind="integration")
-        V.add("PaperEpsUndefined", int(np.isnan(eps_rel).sum()), kind="integration",
-              note="impact speeds where the paper's Omega~ <= 0")
+    V.add("PaperEpsExponent", Fraction(printed.EPS_G_EXPONENT), kind="paper")
+    V.add("PaperFwdDiverge", printed.FORWARD_DIVERGENCE_TAU, tex=f"{printed.FORWARD_DIVERGENCE_TAU}", kind="paper")
+    V.add("PaperInvDiverge", printed.INVERSE_DIVERGENCE_TAU, tex=f"{printed.INVERSE_DIVERGENCE_TAU}", kind="paper")
+    for i, name in enumerate(C_NAMES):
+        V.add(f"{name}Paper", printed.PRINTED_C[i], tex=rf"\ensuremath{{{printed.PRINTED_C[i]}}}", kind="paper")
+    V.add("OmegaRatio", printed.OMEGA_AT_G / cv["omega_at_g"], kind="formula", note="printed / ours")
+    # The impact speed at which our (and the paper's) formula gives the printed Omega.
+    V.add("GForPaperOmega", (printed.OMEGA_AT_G / mat.omega(1.0)) ** (1.0 / float(ex.omega_exponent)),
+          kind="formula")
+    V.add("TauZero", cv["tau0"], kind="formula", note="damped-only forward solution reaches x = 1")
+    V.add("TauZeroTilde", cv["tau0_tilde"], kind="formula")
+    V.add("TauBLowestOrder", cv["tau_b_lowest_order"], note="tau_0 + Delta, lowest order, converged x1'")
+    V.add("TauBLowestOrderAtZero", cv["tau_b_lowest_order_at_zero"], kind="formula", note="tau_0 + 1")
+    tr = cv["tracking"]
+    keys = [str(float(t)) for t in tr["thresholds"]]
+    mid = keys[len(keys) // 2]
+    V.add("TrackThreshold", float(mid), tex=f"{float(mid):g}", kind="config",
+          note="|series - reference| > this x x_b")
+    V.add("TrackThresholdLow", float(keys[0]), tex=f"{float(keys[0]):g}", kind="config")
+    V.add("TrackThresholdHigh", float(keys[-1]), tex=f"{float(keys[-1]):g}", kind="config")
 
-# %% The paper's printed damped-only inverse solution (gamma = 1 only)
-if ex.gamma == 1:
-    import sympy as sp
-
-    t, xc = sp.symbols("tau x_c", nonnegative=True)
-    G = sp.sqrt(xc ** 2 + 2)
-    y = G * sp.tanh(sp.atanh(xc / G) + G * t / 2)
-    fwd_res = sp.simplify((y.diff(t, 2) + y * y.diff(t)).rewrite(sp.exp))
-    inv_res = y.diff(t, 2) - y * y.diff(t)
-    V.add("PaperInvClosedFormForwardResidual", str(fwd_res), tex=rf"\ensuremath{{{sp.latex(fwd_res)}}}", kind="exact",
-          note="the paper's G tanh(...) in x'' + x x' (forward damped-only)")
-    x_t = summary["inverse"]["x_tilde_c"]
-    taus = np.linspace(0.0, 1.0, 101)
-    res = sp.lambdify(t, inv_res.subs(xc, x_t), "numpy")(taus)
-    V.add("PaperInvClosedFormInverseResidual", float(np.max(np.abs(res))), kind="formula",
-          note="max over tau~ in [0, 1] of |y'' - y y'| at x~_c of g_figure")
-    same = np.max(np.abs(damped.paper_inverse_closed_form(taus, x_t) - damped.forward(taus, x_t)[0]))
-    V.add("PaperInvClosedFormVsForward", float(same), sig=2, kind="formula",
-          note="max |paper's inverse closed form - forward damped-only solution| on [0, 1]")
-    V.verdict("InvClosedFormVerdict", float(np.max(np.abs(res))) < 1e-8,
-              note="does the paper's closed form solve the inverse damped-only equation?")
+    def first(d, pick):
+        vals = [v for k, v in d.items() if int(k) >= 2 and v is not None]
+        return pick(vals) if vals else None
+    for key, name in ((keys[0], "Low"), (mid, ""), (keys[-1], "High")):
+        V.add(f"FwdDepart{name}", first(tr["forward"][key], min), note="first departure, orders >= 2")
+        V.add(f"InvDepartPaper{name}", first(tr["inverse_tau_paper"][key], max),
+              note="inverse, forward time tau_c - tau~")
+        V.add(f"InvDepartScaled{name}", first(tr["inverse_tau_scaled"][key], max),
+              note="inverse, forward time with the time scale applied")
+    V.add("FwdDepartOrderOne", tr["forward"][mid]["1"])
+    V.add("FirstOrderBetterShare", 100.0 * tr["first_order_best_after_2"], sig=2,
+          note="percent of the tau > 2 samples where x0 + Omega x1 is closest")
+    V.add("TrackOmegaTilde", tr["omega_tilde"])
+    V.add("RadiusFwd", cv["radius_forward"], kind="formula")
+    V.add("RadiusInv", cv["radius_inverse"], kind="formula")
+    pf = cv["paper_inverse_form"]
+    V.add("InvFormXc", pf["x_c"], tex=f"{pf['x_c']:g}", kind="config")
+    V.add("InvFormResidualInverse", pf["residual_inverse"], sig=2, note="finite differences")
+    V.add("InvFormResidualForward", pf["residual_forward"], sig=1, note="finite differences")
+    V.add("RelationMaxRelError", cv["fig4"]["paper_relation_omega_tilde_max_rel_error_in_fit_range"], sig=3,
+          note="max |Omega~_printed - Omega~_exact| / Omega~_exact over the fit range")
+    V.add("OmegaTildeSmallExponent", cv["omega_tilde_small_omega_exponent"], sig=3,
+          note="local slope of the exact Omega~ at Omega = 1e-4")
+    es = cv["eps_scaling"]
+    V.add("LossExponentSmallG", es["loss_g_exponent_small_g"], sig=3, note="1 - eps ~ g^this as g -> 0")
+    V.add("LossExponentAtGMin", es["loss_g_exponent_at_g_min"], sig=3)
+    V.add("EpsExponentLargeG", es["eps_g_exponent_large_g"], sig=3, note="eps ~ g^this as g -> infinity")
+    validity = cv.get("paper_relation_validity") or {}
+    nonpos = validity.get("omega_tilde_nonpositive", [])
+    if nonpos:
+        V.add("PrintedNoEpsGMin", nonpos[0]["g"][0], sig=3)
+        V.add("PrintedNoEpsGMax", nonpos[0]["g"][1], sig=3)
 
 # %% Write
 lines = [f"% generated by workflow/scripts/values.py for variant {snakemake.wildcards.variant}"

@@ -5,12 +5,14 @@
     python workflow/tools/rebuild.py twice        two clean rebuilds; every file under results/
                                                   must have the same sha256
     python workflow/tools/rebuild.py bench        time of one cold pipeline run (after install)
-    python workflow/tools/rebuild.py manifest     (re)write tests/expected/manifest.json from the
-                                                  current results/ (after an intended change)
+    python workflow/tools/rebuild.py manifest     (re)write tests/expected/manifest.json from a clean
+                                                  rebuild (after an intended change); --tree DIR
+                                                  records an already built tree instead
 
 The manifest holds what a rebuild must reproduce: exact rationals exactly (series), numbers within
-the tolerance stated next to each (values, reference tables), generated text by sha256, and the
-list of files. Figures and the PDF are checked for presence here and for identical bytes between
+the tolerance stated next to each (values, reference and connection tables), the verdict of every
+row of the claims ledger and every validation check, generated text by sha256, and the list of
+files. Figures and the PDF are checked for presence here and for identical bytes between
 two builds by `twice` (their bytes depend on the matplotlib and TeX versions, so they are not
 pinned in the manifest).
 """
@@ -39,15 +41,24 @@ ENV = {"SOURCE_DATE_EPOCH": "1700000000", "PYTHONHASHSEED": "0"}
 #: Tolerances for the reference tables (relative, plus an absolute floor for values near 0).
 TABLE_RTOL = 1e-6
 TABLE_ATOL = 1e-12
-#: Columns of the reference tables pinned in the manifest.
+#: Columns of the tables pinned in the manifest (per variant, where the file exists).
 TABLE_COLUMNS = {
     "reference/eps_curve.csv": ["g", "omega", "eps", "tau_b", "x_b", "tau_c", "x_c", "end"],
+    "validation/known.csv": ["omega", "eps_reference", "tau_c", "end"],
     "reference/accuracy.csv": ["rtol", "eps", "tau_b", "tau_c"],
+    "connection/readings.csv": ["reading", "defined", "c0", "c1", "c2", "figure"],
+    "connection/fit_residuals.csv": ["g", "omega", "omega_tilde", "residual"],
+    "connection/eps_errors.csv": ["kind", "reading", "n_defined", "n_undefined", "n_above_one", "max_abs_error",
+                                  "median_abs_error", "max_rel_error", "median_rel_error"],
 }
 #: Generated text compared by hash (exact outputs, and the numbers exactly as the PDF prints them).
 HASHED = ["series/forward.json", "series/inverse.json", "series/table.tex", "series/agreement.json",
-          "values/values.tex", "relations/printed.json"]
-HASHED_TOP = ["paper/inputs.tex"]
+          "values/values.tex", "relations/printed.json", "connection/readings.tex", "connection/eps_errors.tex",
+          "claims.csv", "claims/table.tex", "claims/discussion.tex", "section.tex"]
+HASHED_TOP = ["paper/inputs.tex", "paper/variants.tex", "paper/validation.tex", "paper/variants_values.tex"]
+#: Validation measurements are errors of order rtol: compared loosely (their pass/fail exactly).
+VALIDATION_RTOL = 1e-2
+VALIDATION_ATOL = 1e-9
 #: Built only when TeX is available.
 REQUIRES_TEX = ["results/paper/restitution.pdf"]
 
@@ -125,6 +136,8 @@ def make_manifest(tree: Path) -> dict:
         "rationals": {},
         "values": {},
         "tables": {},
+        "claims": {},
+        "validation": {},
         "sha256": {},
     }
     for v in _variants(tree):
@@ -137,9 +150,21 @@ def make_manifest(tree: Path) -> dict:
                                    for k, it in items.items()}
         for table, cols in TABLE_COLUMNS.items():
             rel = f"results/{v}/{table}"
+            if not (tree / rel).exists():
+                continue
             data = _read_csv(tree / rel)
             manifest["tables"][rel] = {"rtol": TABLE_RTOL, "atol": TABLE_ATOL,
                                        "columns": {c: data[c] for c in cols if c in data}}
+        rel = f"results/{v}/claims.csv"
+        if (tree / rel).exists():
+            data = _read_csv(tree / rel)
+            manifest["claims"][rel] = [[int(r), c, vd] for r, c, vd in
+                                       zip(data["row"], data["claim"], data["verdict"])]
+        rel = f"results/{v}/validation/validation.json"
+        if (tree / rel).exists():
+            manifest["validation"][rel] = [
+                {"check": c["check"], "measured": c["measured"], "passed": c["passed"]}
+                for c in json.loads((tree / rel).read_text())["checks"]]
         for h in HASHED:
             rel = f"results/{v}/{h}"
             if (tree / rel).exists():
@@ -225,6 +250,36 @@ def compare(tree: Path, manifest: dict, tex: bool | None = None) -> list[str]:
                 out.append(f"{rel}: column {col}: {len(bad)} value(s) off by more than rtol "
                            f"{spec['rtol']:g}; first {bad[0]}")
 
+    for rel, rows in manifest.get("claims", {}).items():
+        if not (tree / rel).exists():
+            continue
+        data = _read_csv(tree / rel)
+        got = {c: (int(r), vd) for r, c, vd in zip(data.get("row", []), data.get("claim", []),
+                                                    data.get("verdict", []))}
+        for row, claim, verdict in rows:
+            if claim not in got:
+                out.append(f"{rel}: claim {claim!r} missing (expected row {row}, {verdict})")
+            elif got[claim][1] != verdict:
+                out.append(f"{rel}: row {got[claim][0]} ({claim}): verdict {got[claim][1]!r} "
+                           f"(expected {verdict!r})")
+        for claim in sorted(set(got) - {c for _, c, _ in rows}):
+            out.append(f"{rel}: claim {claim!r} is new (not in the manifest)")
+
+    for rel, checks in manifest.get("validation", {}).items():
+        if not (tree / rel).exists():
+            continue
+        got = {c["check"]: c for c in json.loads((tree / rel).read_text())["checks"]}
+        for exp in checks:
+            c = got.get(exp["check"])
+            if c is None:
+                out.append(f"{rel}: check {exp['check']!r} missing")
+                continue
+            if c["passed"] != exp["passed"]:
+                out.append(f"{rel}: {exp['check']}: passed = {c['passed']} (expected {exp['passed']})")
+            a, b = c["measured"], exp["measured"]
+            if (a is None) != (b is None) or (a is not None and not _close(a, b, VALIDATION_RTOL, VALIDATION_ATOL)):
+                out.append(f"{rel}: {exp['check']}: measured {a!r} (expected {b!r}, rtol {VALIDATION_RTOL:g})")
+
     for rel, digest in manifest["sha256"].items():
         if (tree / rel).exists() and sha256(tree / rel) != digest:
             out.append(f"{rel}: sha256 {sha256(tree / rel)[:16]}... (expected {digest[:16]}...)")
@@ -240,9 +295,13 @@ def eval_fraction(text: str) -> float:
 def cmd_check(args) -> int:
     manifest = json.loads(Path(args.manifest).read_text())
     with tempfile.TemporaryDirectory(prefix="restitution-check-") as tmp:
-        print(f"clean rebuild in {tmp} ...", flush=True)
-        tree, elapsed = clean_build(Path(tmp), cores=args.cores)
-        print(f"pipeline finished in {elapsed:.1f} s; comparing with {args.manifest}")
+        if args.tree:  # an already built tree (the tests use this; `make check` always rebuilds)
+            tree = Path(args.tree).resolve()
+            print(f"comparing {tree / 'results'} with {args.manifest}")
+        else:
+            print(f"clean rebuild in {tmp} ...", flush=True)
+            tree, elapsed = clean_build(Path(tmp), cores=args.cores)
+            print(f"pipeline finished in {elapsed:.1f} s; comparing with {args.manifest}")
         problems = compare(tree, manifest)
         if not have_tex():
             print("note: pdflatex/latexmk not found, the PDF was not built or checked")
@@ -253,8 +312,9 @@ def cmd_check(args) -> int:
         return 1
     n = (sum(len(v) for v in manifest["values"].values())
          + sum(len(t) for o in manifest["rationals"].values() for t in o.values()))
+    n_claims = sum(len(v) for v in manifest.get("claims", {}).values())
     print(f"check passed: {len(manifest['files'])} files present, {n} numbers and rationals as expected, "
-          f"{len(manifest['sha256'])} text outputs identical")
+          f"{n_claims} claim verdicts unchanged, {len(manifest['sha256'])} text outputs identical")
     return 0
 
 
@@ -286,12 +346,20 @@ def cmd_bench(args) -> int:
 
 
 def cmd_manifest(args) -> int:
-    tree = Path(args.tree).resolve()
-    manifest = make_manifest(tree)
+    """From a clean rebuild by default: results/ of a working tree may hold files that the pipeline no
+    longer makes (or that other tools put there), which a clean rebuild would then report missing."""
     out = Path(args.manifest)
     out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
-    print(f"wrote {out} from {tree / 'results'}")
+    with tempfile.TemporaryDirectory(prefix="restitution-manifest-") as tmp:
+        if args.tree:
+            tree = Path(args.tree).resolve()
+        else:
+            print(f"clean rebuild in {tmp} ...", flush=True)
+            tree, elapsed = clean_build(Path(tmp), cores=args.cores)
+            print(f"pipeline finished in {elapsed:.1f} s")
+        manifest = make_manifest(tree)
+        out.write_text(json.dumps(manifest, indent=1, sort_keys=True) + "\n")
+    print(f"wrote {out} from {'a clean rebuild' if not args.tree else tree / 'results'}")
     return 0
 
 
@@ -300,11 +368,14 @@ def main(argv=None) -> int:
     parser.add_argument("--cores", type=int, default=2)
     parser.add_argument("--manifest", default=str(MANIFEST))
     sub = parser.add_subparsers(dest="command", required=True)
-    sub.add_parser("check").set_defaults(func=cmd_check)
+    p = sub.add_parser("check")
+    p.add_argument("--tree", default=None, help="compare this built tree instead of a clean rebuild")
+    p.set_defaults(func=cmd_check)
     sub.add_parser("twice").set_defaults(func=cmd_twice)
     sub.add_parser("bench").set_defaults(func=cmd_bench)
     p = sub.add_parser("manifest")
-    p.add_argument("--tree", default=str(ROOT), help="project tree whose results/ to record")
+    p.add_argument("--tree", default=None,
+                   help="record the results/ of this built tree instead of a clean rebuild")
     p.set_defaults(func=cmd_manifest)
     args = parser.parse_args(argv)
     return args.func(args)

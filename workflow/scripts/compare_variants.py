@@ -1,0 +1,56 @@
+# %% [markdown]
+# # eps(Omega) across variants, with the known results they are validated against
+#
+# One curve per variant from its reference integrations on the common grid of Omega
+# (validation.py); the part of the grid its figure-4 impact speeds cover is drawn bold.
+# The known results of validation.py (closed forms, the elastic-limit series, the Pade form) are
+# drawn over the curve of the variant they apply to.
+
+# %%
+if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
+    import pathlib, sys  # noqa: E401
+    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
+    sys.path.insert(0, str(here / "workflow" / "scripts"))
+    from _pipeline import replay
+    snakemake = replay("compare_variants")
+
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+from _pipeline import save_figure, setup_matplotlib, start  # noqa: E402
+
+start(snakemake)
+plt = setup_matplotlib()
+
+KNOWN = {"eps_dashpot": ("linear dashpot, closed form", dict(ls="none", marker="o", ms=4, mfc="none")),
+         "eps_equal_exponents": (r"$\alpha = \gamma$, closed form", dict(ls="none", marker="s", ms=4, mfc="none")),
+         "eps_elastic_series": ("elastic-limit series (Ramirez et al.)", dict(ls="--", lw=1.2)),
+         "eps_pade": ("Pade form (Mueller & Poeschel)", dict(ls=":", lw=1.8))}
+
+# %%
+p = snakemake.params
+fig, ax = plt.subplots(figsize=(5.6, 4.2))
+colors = plt.cm.tab10(np.arange(len(p.variants)) % 10)
+for i, (name, known_file, curve_file) in enumerate(zip(p.variants, snakemake.input.known, snakemake.input.curves)):
+    known = pd.read_csv(known_file)
+    curve = pd.read_csv(curve_file)
+    alpha, gamma = p.exponents[name]
+    ax.plot(known["omega"], known["eps_reference"], color=colors[i], lw=1.4,
+            label=rf"{name} ($\alpha = {alpha}$, $\gamma = {gamma}$)")
+    lo, hi = curve["omega"].min(), curve["omega"].max()
+    if hi > lo * (1 + 1e-9):
+        ax.plot(curve["omega"], curve["eps"], color=colors[i], lw=3.5, alpha=0.6, solid_capstyle="butt")
+    else:  # one Omega for every g (alpha - 1 - 2 gamma = 0)
+        ax.plot([lo], [curve["eps"].iloc[0]], "D", color=colors[i], ms=6, alpha=0.7)
+    for col, (label, style) in KNOWN.items():
+        if col in known:
+            ok = np.isfinite(known[col]) & (known[col] > 0)
+            ax.plot(known["omega"][ok], known[col][ok], color="black", label=f"{name}: {label}", **style)
+ax.set_xscale("log")
+ax.set_yscale("log")
+ax.set_ylim(max(ax.get_ylim()[0], 1e-4), 1.5)
+ax.set_xlim(min(p.grid["omega_min"], ax.get_xlim()[0]), p.grid["omega_max"])
+ax.set_xlabel(r"$\Omega$")
+ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
+ax.legend(loc="lower right", fontsize=7)
+fig.tight_layout()
+save_figure(fig, snakemake.output.pdf, snakemake.output.png)

@@ -1,0 +1,141 @@
+# %% [markdown]
+# # Validation of a variant against known results
+#
+# eps depends on (alpha, gamma, Omega) only, so variants are compared, and validated, on one
+# log-spaced grid of Omega (`compare` in config.yaml) rather than on their impact-speed ranges (for
+# the dashpot every g gives the same Omega). The reference eps on that grid
+# (`restitution.collision.collide_many`) is compared with every known result that applies to the
+# variant's exponents:
+#
+# * alpha = 1, gamma = 0: the exact linear spring-dashpot (`restitution.dashpot`), force-zero end;
+# * alpha = gamma: the exact parametric solution (`restitution.asymptotics.equal_exponents_eps`);
+# * alpha = 3/2, gamma = 1/2 (viscoelastic spheres): the elastic-limit series of Ramirez et al.
+#   (1999), eps = 1 - C1 delta + C2 delta^2 + ..., delta = Omega^(-3/5)
+#   (`restitution.asymptotics.elastic_limit`): its error must fall like the first omitted power,
+#   delta^3, so the slope of log(error) against log(Omega) over the top decade of the grid is
+#   compared with -3A, A = (gamma+1)/(alpha+1); and the Pade form of Mueller and Poeschel (2011)
+#   (`restitution.ladder.pade_mp2011`) where delta <= `pade_delta_max`;
+# * alpha - 1 - 2 gamma = 0: eps does not depend on g (spread of the figure-4 curve).
+#
+# A result whose library module is missing is listed as "not available" instead of failing.
+
+# %%
+if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
+    import pathlib, sys  # noqa: E401
+    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
+    sys.path.insert(0, str(here / "workflow" / "scripts"))
+    from _pipeline import replay
+    snakemake = replay("validation")
+
+from fractions import Fraction  # noqa: E402
+
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
+from _pipeline import start, write_csv, write_json  # noqa: E402
+
+from restitution.collision import collide_many  # noqa: E402
+from restitution.dashpot import dashpot_collision  # noqa: E402
+from restitution.exponents import Exponents  # noqa: E402
+
+start(snakemake)
+
+try:
+    from restitution import asymptotics
+except ImportError:  # being written elsewhere: the checks that need it say so
+    asymptotics = None
+try:
+    from restitution.ladder import pade_mp2011
+except ImportError:
+    pade_mp2011 = None
+
+HERTZ = (Fraction(3, 2), Fraction(1, 2))
+
+# %%
+p = snakemake.params
+tol = p.tolerances
+ex = Exponents.parse(p.exponents["alpha"], p.exponents["gamma"])
+curve = pd.read_csv(snakemake.input.curve)
+omega = np.geomspace(p.grid["omega_min"], p.grid["omega_max"], p.grid["points"])
+res = collide_many(ex, None, omega, rtol=p.rtol)
+ref = res["eps"]
+known = pd.DataFrame({"omega": omega, "eps_reference": ref, "tau_c": res["tau_c"], "end": res["end"]})
+checks = []
+
+
+def check(name, reference, measured, limit, passed, *, what, note="", omega_range=None, n=None):
+    checks.append({"variant": p.variant, "check": name, "reference": reference, "what": what,
+                   "measured": None if measured is None else float(measured), "tolerance": limit,
+                   "passed": None if passed is None else bool(passed), "note": note,
+                   "omega_min": None if omega_range is None else float(omega_range[0]),
+                   "omega_max": None if omega_range is None else float(omega_range[1]),
+                   "n": n})
+
+
+def rel_err(a, b):
+    return np.abs(np.asarray(a, float) / b - 1.0)
+
+
+# %% Closed forms
+if (ex.alpha, ex.gamma) == (1, 0):
+    exact = np.array([dashpot_collision(w).eps for w in omega])
+    known["eps_dashpot"] = exact
+    err = rel_err(ref, exact).max()
+    check("linear spring-dashpot, closed form", "schwager2008", err, tol["closed_form_tolerance"],
+          err <= tol["closed_form_tolerance"], what="max relative error",
+          note="contact ends where the force vanishes", omega_range=(omega.min(), omega.max()), n=len(omega))
+
+if ex.alpha == ex.gamma:
+    if asymptotics is None:
+        check("alpha = gamma, closed form", "", None, None, None, what="", note="restitution.asymptotics not available")
+    else:
+        exact = asymptotics.equal_exponents_eps(omega)
+        known["eps_equal_exponents"] = exact
+        err = rel_err(ref, exact).max()
+        check("alpha = gamma, parametric closed form", "", err, tol["closed_form_tolerance"],
+              err <= tol["closed_form_tolerance"], what="max relative error",
+              omega_range=(omega.min(), omega.max()), n=len(omega))
+
+# %% Viscoelastic spheres: elastic-limit series and the Pade form
+if (ex.alpha, ex.gamma) == HERTZ:
+    A = float((ex.gamma + 1) / (ex.alpha + 1))
+    if asymptotics is None:
+        check("elastic-limit series", "ramirez1999", None, None, None, what="",
+              note="restitution.asymptotics not available")
+    else:
+        series = asymptotics.elastic_limit(ex.alpha, ex.gamma)
+        known["eps_elastic_series"] = series.eps(omega, order=2)
+        err = rel_err(known["eps_elastic_series"], ref)
+        top = omega >= omega.max() / 10.0
+        slope = float(np.polyfit(np.log(omega[top]), np.log(err[top]), 1)[0])
+        expected = -3.0 * A
+        check("elastic-limit series, error exponent", "ramirez1999", slope, tol["series_slope_tolerance"],
+              abs(slope - expected) <= tol["series_slope_tolerance"], what=f"slope (expected {expected:g})",
+              note=f"C1 = {series.C1:.7f}, C2 = {series.C2:.7f}; error {err[-1]:.2e} at the largest Omega",
+              omega_range=(omega[top].min(), omega[top].max()), n=int(top.sum()))
+    if pade_mp2011 is None:
+        check("Pade form", "mueller2011", None, None, None, what="", note="restitution.ladder not available")
+    else:
+        known["eps_pade"] = pade_mp2011(omega)
+        delta = omega ** (-A)
+        near = delta <= tol["pade_delta_max"]
+        err = rel_err(known["eps_pade"], ref)[near]
+        check("Pade form", "mueller2011", err.max() if near.any() else None, tol["pade_tolerance"],
+              bool(near.any()) and err.max() <= tol["pade_tolerance"], what="max relative error",
+              note=f"where delta = Omega^(-{A:g}) <= {tol['pade_delta_max']:g}",
+              omega_range=(omega[near].min(), omega[near].max()) if near.any() else None, n=int(near.sum()))
+
+# %% alpha - 1 - 2 gamma = 0: eps independent of g
+if ex.omega_exponent == 0:
+    e = curve["eps"].to_numpy()
+    spread = float((e.max() - e.min()) / e.mean())
+    check("eps independent of g", "", spread, tol["g_independence_tolerance"],
+          spread <= tol["g_independence_tolerance"], what="relative spread of eps over g",
+          note=f"{len(e)} impact speeds from {curve['g'].min():g} to {curve['g'].max():g}",
+          omega_range=(float(curve["omega"].min()), float(curve["omega"].max())), n=len(e))
+
+# %%
+write_csv(snakemake.output.known, known)
+write_json(snakemake.output.json, {"variant": p.variant, "alpha": str(ex.alpha), "gamma": str(ex.gamma),
+                                   "checks": checks})
+for c in checks:
+    print(c)
