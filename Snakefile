@@ -7,6 +7,13 @@
 #
 # Per-variant outputs live under results/<variant>/; see config.yaml for the variants.
 
+# A YAML syntax error in config.yaml: one line with its line number, before Snakemake's
+# `configfile:` would report it in two lines without one (workflow/scripts/_config.py).
+sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "scripts"))
+from _config import precheck_file  # noqa: E402
+
+precheck_file("config.yaml")  # the path `configfile:` reads (relative to the working directory)
+
 configfile: "config.yaml"
 
 

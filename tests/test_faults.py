@@ -11,6 +11,7 @@ import errno
 import fcntl
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -85,6 +86,37 @@ def test_pipeline_scripts_of_this_stage_write_atomically():
         text = (ROOT / "workflow" / "scripts" / name).read_text()
         assert "atomic_path" in text or "write_text_atomic" in text, name
         assert ".to_csv(snakemake" not in text and ".savefig(snakemake" not in text, name
+
+
+# A file-writing call whose target is not a temporary path from _atomic.atomic_path.
+_DIRECT_WRITE = re.compile(r"""\.to_csv\(|\.savefig\(|\.write_text\(|\.write_bytes\(|\bopen\([^)]*["'][wax]b?["']""")
+
+
+def test_every_workflow_script_writes_outputs_through_the_atomic_helpers():
+    """Every output is written under a temporary name and renamed: scripts call _pipeline's writers
+    (write_json, write_text, write_csv, save_figure) or _atomic directly; a direct write may only
+    target the temporary path (or the job's log, which Snakemake does not treat as an output)."""
+    offenders = []
+    for path in sorted((ROOT / "workflow" / "scripts").glob("*.py")):
+        if path.name == "_atomic.py":
+            continue
+        for number, line in enumerate(path.read_text().splitlines(), 1):
+            code = line.split("#", 1)[0]
+            if _DIRECT_WRITE.search(code) and "tmp" not in code and "open(log" not in code:
+                offenders.append(f"{path.name}:{number}: {line.strip()}")
+    assert not offenders, "\n".join(offenders)
+    pipeline = (ROOT / "workflow" / "scripts" / "_pipeline.py").read_text()
+    assert "from _atomic import atomic_path" in pipeline
+
+
+def test_shell_rules_rename_their_outputs_into_place():
+    """The rules that write with shell commands (PDF copy, main figures, study list) go through a
+    hidden temporary name beside the output and mv."""
+    for smk, rule in (("manuscript.smk", "rule manuscript:"), ("figures.smk", "rule main_figure:"),
+                      ("variants.smk", "rule study:")):
+        text = (ROOT / "workflow" / "rules" / smk).read_text()
+        body = text[text.index(rule):].split("\nrule ", 1)[0]
+        assert ".tmp" in body and 'mv -f "$tmp" {output}' in body.replace('\\"', '"'), (smk, rule)
 
 
 # ------------------------------------------------------------------------------------ the guard

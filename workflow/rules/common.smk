@@ -138,8 +138,9 @@ def script_file(name):
 
 
 def code(name):
-    """... and the same file as an input, so touching it reruns the rule (and its dependants)."""
-    return [f"workflow/scripts/{name}", "workflow/scripts/_pipeline.py"]
+    """... and the same file as an input, so touching it reruns the rule (and its dependants),
+    with the helpers every script writes through (_pipeline.py imports _atomic.py)."""
+    return [f"workflow/scripts/{name}", "workflow/scripts/_pipeline.py", "workflow/scripts/_atomic.py"]
 
 
 # ---------------------------------------------------------------------------------------------

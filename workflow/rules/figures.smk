@@ -103,4 +103,6 @@ rule main_figure:
     log:
         "logs/main_figure_{fig}_{ext}.log",
     shell:
-        "cp {input} {output} 2> {log}"
+        # a hidden temporary name beside the output, then renamed (never a half-copied figure)
+        'tmp="$(dirname {output})/.$(basename {output}).$$.tmp"; '
+        'cp {input} "$tmp" 2> {log} && mv -f "$tmp" {output} || {{ rm -f "$tmp"; exit 1; }}'

@@ -5,6 +5,8 @@
 
 rule manuscript_inputs:
     """Where the manuscript finds the main variant's generated files."""
+    input:
+        code=code("manuscript_inputs.py"),
     output:
         "results/paper/inputs.tex",
     params:
@@ -34,4 +36,7 @@ rule manuscript:
         "latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error "
         "-outdir={params.build} {input.tex} > {log} 2>&1 "
         "|| (tail -n 40 {log} >&2; exit 1); "
-        "cp {params.build}/restitution.pdf {output}"
+        # copied under a hidden temporary name beside the output, then renamed: a killed job never
+        # leaves a truncated PDF under the final name
+        'tmp="$(dirname {output})/.$(basename {output}).$$.tmp"; '
+        'cp {params.build}/restitution.pdf "$tmp" && mv -f "$tmp" {output} || {{ rm -f "$tmp"; exit 1; }}'

@@ -53,7 +53,10 @@ rule study:
     log:
         "logs/{variant}/study.log",
     shell:
-        "(echo '{params.header}'; printf '%s\\n' {input} | LC_ALL=C sort) > {output} 2> {log}"
+        # written under a hidden temporary name beside the output, then renamed
+        "tmp=\"$(dirname {output})/.$(basename {output}).$$.tmp\"; "
+        "(echo '{params.header}'; printf '%s\\n' {input} | LC_ALL=C sort) > \"$tmp\" 2> {log} "
+        "&& mv -f \"$tmp\" {output} || {{ rm -f \"$tmp\"; exit 1; }}"
 
 
 rule compare_variants:

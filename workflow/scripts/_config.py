@@ -8,10 +8,15 @@ field. Here every error becomes ``<field> = <value>: <what is allowed>``, e.g.
 from __future__ import annotations
 
 import copy
+import math
 from fractions import Fraction
 
 import jsonschema
 import yaml
+
+
+#: Longest variant name (the schema's maxLength: results/<name>/... must stay a valid path).
+MAX_NAME = 64
 
 
 class ConfigError(ValueError):
@@ -25,7 +30,8 @@ def _field(config: dict, path) -> str:
     for part in path:
         if isinstance(part, int):
             name = node[part].get("name") if isinstance(node, list) and isinstance(node[part], dict) else None
-            out += f"[{name}]" if isinstance(name, str) else f"[{part}]"
+            # a name too long to be valid would swamp the line: the index instead
+            out += f"[{name}]" if isinstance(name, str) and len(name) <= MAX_NAME else f"[{part}]"
         else:
             out += f".{part}" if out else str(part)
         try:
@@ -48,6 +54,8 @@ def _allowed(error: jsonschema.ValidationError) -> str:
         "enum": lambda: "must be one of " + ", ".join(map(str, s)),
         "type": lambda: f"must be of type {s if isinstance(s, str) else ' or '.join(s)}",
         "pattern": lambda: f"must match {s}",
+        "maxLength": lambda: f"must be at most {s} characters long",
+        "minLength": lambda: f"must be at least {s} characters long",
     }.get(v, lambda: None)()
     if v == "required":
         missing = [k for k in s if k not in error.instance]
@@ -78,6 +86,87 @@ def _as_number(value, kind: str = "number"):
         except ValueError:
             return value
     return value
+
+
+def _show(value) -> str:
+    """repr of a value for the one-line message, shortened when it is very long."""
+    text = repr(value)
+    if len(text) > 80:
+        text = f"{text[:60]}... ({len(value) if isinstance(value, str) else len(text)} characters)"
+    return text
+
+
+def _number_branch(schema, root):
+    """The numeric alternative of a schema (itself, or its number branch of a oneOf), else None."""
+    schema = _resolve(schema, root)
+    if schema.get("type") in ("number", "integer"):
+        return schema
+    for alt in schema.get("oneOf", []):
+        alt = _resolve(alt, root)
+        if alt.get("type") in ("number", "integer"):
+            return {**alt, "description": alt.get("description", schema.get("description"))}
+    return None
+
+
+def _finite_range(schema) -> str:
+    """'must be a finite number in [a, b]' (or > a, ...) from a number schema's bounds."""
+    if schema is None:
+        return "must be a finite number"
+    lo = ("(", schema["exclusiveMinimum"]) if "exclusiveMinimum" in schema else \
+        ("[", schema["minimum"]) if "minimum" in schema else None
+    hi = (")", schema["exclusiveMaximum"]) if "exclusiveMaximum" in schema else \
+        ("]", schema["maximum"]) if "maximum" in schema else None
+    if lo and hi:
+        text = f"must be a finite number in {lo[0]}{lo[1]}, {hi[1]}{hi[0]}"
+    elif lo:
+        text = f"must be a finite number {'>' if lo[0] == '(' else '>='} {lo[1]}"
+    elif hi:
+        text = f"must be a finite number {'<' if hi[0] == ')' else '<='} {hi[1]}"
+    else:
+        text = "must be a finite number"
+    description = schema.get("description")
+    return f"{text} ({description})" if description else text
+
+
+#: $defs whose values a later, more specific check reads (exponents: restitution.exponents,
+#: whose message gives the allowed rationals); the walk below leaves them to it.
+_CHECKED_ELSEWHERE = ("#/$defs/exponent",)
+
+
+def _non_finite(node, schema, root, path=()):
+    """(path, value, allowed) of the first NaN or infinity in the config, else None.
+
+    YAML reads .nan/.inf as floats and the schema's bounds cannot catch them (every comparison
+    with NaN is false, inf passes a lower bound); text such as "nan" given on the command line
+    has become a float in _fill_defaults. A free-form block (an object schema without
+    properties: `stability`, whose stage checks every field with its allowed range, NaN and
+    infinities included) is left to its own checks."""
+    if schema is not None and schema.get("$ref") in _CHECKED_ELSEWHERE:
+        return None
+    resolved = _resolve(schema, root) if schema is not None else None
+    if resolved is not None and resolved.get("type") == "object" and "properties" not in resolved:
+        return None
+    if isinstance(node, float) and not math.isfinite(node):
+        return path, node, _finite_range(_number_branch(schema, root) if schema is not None else None)
+    if isinstance(node, dict):
+        obj = _object_branch(resolved, root) if resolved is not None else None
+        props = obj.get("properties", {}) if obj is not None else {}
+        for key, value in node.items():
+            found = _non_finite(value, props.get(key), root, path + (key,))
+            if found:
+                return found
+    elif isinstance(node, list):
+        items = None
+        if resolved is not None:
+            for alt in [resolved] + [_resolve(a, root) for a in resolved.get("oneOf", [])]:
+                if isinstance(alt.get("items"), dict):
+                    items = alt["items"]
+                    break
+        for i, value in enumerate(node):
+            found = _non_finite(value, items, root, path + (i,))
+            if found:
+                return found
+    return None
 
 
 def _object_branch(schema, root):
@@ -126,7 +215,13 @@ def check_config(config: dict, schema_path: str) -> dict:
             extra = sorted(set(error.instance) - set(error.schema.get("properties", {})))
             field = f"{field}.{extra[0]}" if field != "config" else extra[0]
             value = error.instance[extra[0]]
-        raise ConfigError(f"{field} = {value!r}: {_allowed(error)}")
+        raise ConfigError(f"{field} = {_show(value)}: {_allowed(error)}")
+
+    # NaN and infinities pass every bound of the schema: refused here, naming the field.
+    found = _non_finite(config, schema, schema)
+    if found:
+        path, value, allowed = found
+        raise ConfigError(f"{_field(config, path)} = {value!r}: {allowed}")
 
     every = config["variants"] + config["extra_variants"]
     names = [v["name"] for v in every]
@@ -191,3 +286,52 @@ def reading_labels() -> list[str]:
     out += [r.label.split(XC_SUFFIX)[0] + XC_SUFFIX for r in with_xc]
     return out
 
+
+
+def read_config_file(path) -> dict:
+    """config.yaml as a mapping, or ConfigError with one line giving the line of a YAML syntax
+    error (Snakemake's own message for it is two lines and names no line of the file)."""
+    try:
+        with open(path) as fh:
+            text = fh.read()
+    except OSError as err:
+        raise ConfigError(f"{path}: cannot be read: {err.strerror}") from None
+    try:
+        data = yaml.safe_load(text)
+    except yaml.YAMLError as err:
+        mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
+        where = f"{path}, line {mark.line + 1}, column {mark.column + 1}" if mark else str(path)
+        what = " ".join(str(getattr(err, "problem", None) or err).split())
+        context = getattr(err, "context", None)
+        if context and getattr(err, "problem", None):
+            what = f"{what} ({' '.join(str(context).split())})"
+        raise ConfigError(f"{where}: not valid YAML: {what}") from None
+    if data is None:
+        data = {}
+    if not isinstance(data, dict):
+        raise ConfigError(f"{path} = {_show(data)}: must be a mapping of settings (main_variant: ..., "
+                          "variants: ...)")
+    return data
+
+
+def precheck_file(path) -> None:
+    """For the Snakefile, before its `configfile:` loads ``path``: a YAML syntax error becomes
+    one line, "config error: <path>, line N, column M: ...", and exit status 2. A missing file
+    is left to Snakemake (which says so)."""
+    import os
+    import sys
+
+    if not os.path.exists(path):
+        return
+    try:
+        read_config_file(path)
+    except ConfigError as err:
+        sys.stderr.write(f"config error: {err}\n")
+        sys.exit(2)
+
+
+if __name__ == "__main__":  # python workflow/scripts/_config.py config.yaml: the same check
+    import sys
+
+    for arg in sys.argv[1:] or ["config.yaml"]:
+        precheck_file(arg)

@@ -20,6 +20,8 @@ import pickle
 import sys
 from pathlib import Path
 
+from _atomic import atomic_path  # workflow/scripts/_atomic.py: a temporary name, then rename
+
 ROOT = Path(__file__).resolve().parents[2]
 JOBS = Path("build") / "jobs"
 _REPLAYED = False
@@ -47,7 +49,7 @@ def start(snakemake) -> None:
     variant = getattr(snakemake.wildcards, "variant", None)
     path = _job_file(snakemake.rule, variant)
     path.parent.mkdir(parents=True, exist_ok=True)
-    with open(path, "wb") as fh:
+    with atomic_path(path) as tmp, open(tmp, "wb") as fh:
         pickle.dump(snakemake, fh, protocol=4)
 
 
@@ -97,10 +99,13 @@ def clean(obj):
     return obj
 
 
+# Every writer below writes to a hidden temporary name in the output's directory and renames it
+# into place (_atomic.atomic_path), so a killed job never leaves a truncated output behind.
+
 def write_json(path, obj) -> None:
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
     text = json.dumps(clean(obj), indent=2, allow_nan=False)
-    Path(path).write_text(text + "\n")
+    with atomic_path(path) as tmp:
+        tmp.write_text(text + "\n")
 
 
 def read_json(path):
@@ -109,16 +114,16 @@ def read_json(path):
 
 
 def write_text(path, text: str) -> None:
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
     if not text.endswith("\n"):
         text += "\n"
-    Path(path).write_text(text)
+    with atomic_path(path) as tmp:
+        tmp.write_text(text)
 
 
 def write_csv(path, frame) -> None:
     """A tidy table with full float precision and Unix newlines."""
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    frame.to_csv(path, index=False, lineterminator="\n")
+    with atomic_path(path) as tmp:
+        frame.to_csv(tmp, index=False, lineterminator="\n")
 
 
 # ---------------------------------------------------------------------------------------------
@@ -161,7 +166,7 @@ def setup_matplotlib():
 
 def save_figure(fig, pdf, png) -> None:
     """Write the figure as PDF (for LaTeX) and PNG (for people), byte-reproducibly."""
-    for path in (pdf, png):
-        Path(path).parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(pdf, metadata=PDF_METADATA, bbox_inches="tight")
-    fig.savefig(png, metadata=PNG_METADATA, bbox_inches="tight")
+    for path, metadata in ((pdf, PDF_METADATA), (png, PNG_METADATA)):
+        with atomic_path(path) as tmp:
+            # the format from the final name (the temporary one ends in .tmp.<ext> anyway)
+            fig.savefig(tmp, format=Path(path).suffix[1:], metadata=metadata, bbox_inches="tight")
