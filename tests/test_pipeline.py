@@ -88,11 +88,16 @@ def fresh(tmp_path) -> Path:
     ("spacing: log", "spacing: cubic", "config error: variants[kim].g_range.spacing = 'cubic': must be one of"),
 ])
 def test_bad_config_is_one_line_naming_the_field(fresh, old, new, message):
-    cfg = fresh / "config.yaml"
+    assert_one_config_error(fresh, old, new, message)
+
+
+def assert_one_config_error(tree: Path, old: str, new: str, message: str) -> None:
+    """Replace `old` by `new` in the tree's config.yaml; a dry run must stop with one line starting `message`."""
+    cfg = tree / "config.yaml"
     text = cfg.read_text()
     assert old in text
     cfg.write_text(text.replace(old, new, 1))
-    proc = snakemake(fresh, "--dry-run", check=False)
+    proc = snakemake(tree, "--dry-run", check=False)
     assert proc.returncode != 0
     errors = [line for line in proc.stderr.splitlines() if line.startswith("config error:")]
     assert len(errors) == 1 and errors[0].startswith(message), proc.stderr

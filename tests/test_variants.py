@@ -17,7 +17,7 @@ import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from test_pipeline import (ALL, PER_VARIANT, ROOT, VARIANT_NAMES, copy_built, planned, read_csv,  # noqa: E402
+from test_pipeline import (ALL, assert_one_config_error, PER_VARIANT, ROOT, VARIANT_NAMES, copy_built, planned, read_csv,  # noqa: E402
                            rebuild, shared_build, snakemake)
 
 #: A fourth material with gamma = (alpha - 1)/2 > 0: Omega, and so eps, must not depend on g.
@@ -188,15 +188,7 @@ def test_a_one_off_study_runs_into_its_own_folder(built, tmp_path):
     ("  - name: dashpot", "  - name: hertz", "config error: variants[].name = 'hertz': must be unique"),
 ])
 def test_bad_variant_config_is_one_line(fresh, old, new, message):
-    cfg = fresh / "config.yaml"
-    text = cfg.read_text()
-    assert old in text
-    cfg.write_text(text.replace(old, new, 1))
-    proc = snakemake(fresh, "--dry-run", check=False)
-    assert proc.returncode != 0
-    errors = [line for line in proc.stderr.splitlines() if line.startswith("config error:")]
-    assert len(errors) == 1 and errors[0].startswith(message), proc.stderr
-    assert "Traceback" not in proc.stderr
+    assert_one_config_error(fresh, old, new, message)
 
 
 # ------------------------------------------------------------------------------ cluster profile

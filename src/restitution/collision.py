@@ -100,17 +100,13 @@ class Collision:
     trajectory: Trajectory | None = None
 
     def as_dict(self) -> dict:
-        return {
-            "alpha": str(self.alpha),
-            "gamma": str(self.gamma),
-            "omega": float(self.omega),
-            "eps": float(self.eps),
-            "tau_b": float(self.tau_b),
-            "x_b": float(self.x_b),
-            "tau_c": float(self.tau_c),
-            "x_c": float(self.x_c),
-            "end": self.end,
-        }
+        return {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.end}
+
+
+def _json_numbers(result, names) -> dict:
+    """JSON-ready fields: exponents as exact rational strings, then the named numbers as floats."""
+    return {"alpha": str(result.alpha), "gamma": str(result.gamma),
+            **{name: float(getattr(result, name)) for name in names}}
 
 
 @dataclass(frozen=True)
@@ -129,16 +125,7 @@ class InverseCollision:
     trajectory: Trajectory | None = None
 
     def as_dict(self) -> dict:
-        return {
-            "alpha": str(self.alpha),
-            "gamma": str(self.gamma),
-            "omega": float(self.omega),
-            "x_start": float(self.x_start),
-            "tau_b": float(self.tau_b),
-            "x_b": float(self.x_b),
-            "tau_end": float(self.tau_end),
-            "v_end": float(self.v_end),
-        }
+        return _json_numbers(self, ("omega", "x_start", "tau_b", "x_b", "tau_end", "v_end"))
 
 
 # ----------------------------------------------------------------------------------- the law
