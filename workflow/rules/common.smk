@@ -212,6 +212,7 @@ def all_outputs_but_pdf():
     out += ["results/paper/variants.tex", "results/paper/validation.tex",
             "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
     out += STABILITY_OUTPUTS
+    out += ["results/paper/bench_table.tex", "results/paper/bench_pareto.pdf", "results/paper/bench_pareto.png"]
     return out
 
 
@@ -221,6 +222,8 @@ STABILITY_OUTPUTS = []
 # The manuscript's inputs besides paper/*.
 MANUSCRIPT_INPUTS = [
     "results/paper/inputs.tex",
+    "results/paper/bench_table.tex",
+    "results/paper/bench_pareto.pdf",
     "results/paper/variants.tex",
     "results/paper/validation.tex",
     "results/paper/variants_values.tex",

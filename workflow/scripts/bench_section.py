@@ -1,0 +1,59 @@
+# %% [markdown]
+# # Speed against accuracy (from the recorded `make bench` table)
+#
+# One row per method and setting for the main variant's exponents: cost per evaluation, and the
+# maximum and median relative error in eps against the mpmath reference over the benchmark's fixed
+# Omega set. The plot puts every method on the error-cost plane; lower left is better.
+
+# %%
+if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
+    import pathlib, sys  # noqa: E401
+    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
+    sys.path.insert(0, str(here / "workflow" / "scripts"))
+    from _pipeline import replay
+    snakemake = replay("bench_section")
+
+import math  # noqa: E402
+
+import pandas as pd  # noqa: E402
+from _latex import esc, sci  # noqa: E402
+from _pipeline import save_figure, setup_matplotlib, start, write_text  # noqa: E402
+
+start(snakemake)
+plt = setup_matplotlib()
+
+# %%
+ex = snakemake.params.exponents
+bench = pd.read_csv(snakemake.input.table, dtype={"alpha": str, "gamma": str})
+rows = bench[(bench["alpha"] == ex["alpha"]) & (bench["gamma"] == ex["gamma"])]
+# The reference itself (error 0 by definition) and the bulk call (no error column) are not methods
+# to compare on this plane.
+rows = rows[rows["max_rel_err"].notna() & (rows["max_rel_err"] > 0)]
+
+
+def err(x):
+    return "no value" if not math.isfinite(x) else sci(float(x), 2)
+
+
+lines = [r"\begin{tabular}{llrrr}", r"\toprule",
+         r"method & setting & evaluations/s & max rel.\ error & median rel.\ error \\", r"\midrule"]
+for _, r in rows.iterrows():
+    lines.append(f"{esc(r['method'])} & {esc(str(r['setting']))} & {sci(float(r['evals_per_s']), 2)} & "
+                 f"{err(r['max_rel_err'])} & {err(r['median_rel_err'])} \\\\")
+lines += [r"\bottomrule", r"\end{tabular}"]
+write_text(snakemake.output.table, "\n".join(lines))
+
+# %%
+fig, ax = plt.subplots()
+for method, group in rows.groupby("method", sort=True):
+    finite = group[group["max_rel_err"].apply(math.isfinite)]
+    if finite.empty:
+        continue
+    ax.plot(finite["cost_per_eval_s"], finite["max_rel_err"], marker="o", linestyle="-", label=method)
+ax.set_xscale("log")
+ax.set_yscale("log")
+ax.set_xlabel("cost per evaluation (s, one core, recorded)")
+ax.set_ylabel(r"max relative error in $\varepsilon$")
+ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$: error against cost")
+ax.legend(fontsize=6, ncol=2)
+save_figure(fig, snakemake.output.pdf, snakemake.output.png)
