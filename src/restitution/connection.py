@@ -42,7 +42,7 @@ import sympy as sp
 
 from .errors import ParameterError, require_positive_finite
 from .exponents import Exponents, as_exponents
-from .series import perturbation_series
+from .series import falling_factorial, perturbation_series
 
 __all__ = [
     "Reading", "ConnectionCoefficients", "FitResult", "RetraceResult",
@@ -269,9 +269,7 @@ def _series_derivative(terms, t, j: int) -> sp.Expr:
     """sum c (pw)_j t^(pw - j) for exact (power, coeff) pairs: the j-th derivative at t."""
     total = sp.Integer(0)
     for pw, c in terms:
-        fall = Fraction(1)
-        for i in range(j):
-            fall *= pw - i
+        fall = falling_factorial(pw, j)
         if fall:
             total += sp.Rational((c * fall).numerator, (c * fall).denominator) * \
                 t ** sp.Rational((pw - j).numerator, (pw - j).denominator)
@@ -342,9 +340,7 @@ def _series_value(terms, t: mpmath.mpf, j: int) -> mpmath.mpf:
     """Numeric j-th derivative at t of sum c t^pw (exact rationals, evaluated in mpmath)."""
     total = mpmath.mpf(0)
     for pw, c in terms:
-        fall = Fraction(1)
-        for i in range(j):
-            fall *= pw - i
+        fall = falling_factorial(pw, j)
         if fall:
             cf = c * fall
             total += mpmath.mpf(cf.numerator) / cf.denominator * \

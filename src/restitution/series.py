@@ -121,6 +121,14 @@ def _coefficients(alpha: Fraction, gamma: Fraction, sign: int, omega_order: int,
     return tuple(tuple(C[k][n] for k in range(max_index + 1)) for n in range(N + 1))
 
 
+def falling_factorial(x: Fraction, j: int) -> Fraction:
+    """x (x-1) ... (x-j+1): the factor d^j/dtau^j brings down from tau^x."""
+    out = Fraction(1)
+    for i in range(j):
+        out *= x - i
+    return out
+
+
 def _as_power(field: str, value) -> Fraction:
     try:
         f = Fraction(str(value)) if not isinstance(value, Fraction) else value
@@ -175,9 +183,7 @@ class PerturbationSeries:
         tau = np.asarray(tau, dtype=float)
         out = np.zeros_like(tau)
         for pw, c in self.terms(n):
-            fall = 1.0
-            for d in range(derivative):
-                fall *= float(pw - d)
+            fall = float(falling_factorial(pw, derivative))
             if fall == 0.0:
                 continue
             e = float(pw) - derivative
