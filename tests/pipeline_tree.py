@@ -1,18 +1,19 @@
 """Helpers for tests that run the real pipeline in temporary copies of the project.
 
 Never runs anything in the working tree. A copy gets the project minus .venv/results/.snakemake/
-logs/build (workflow/tools/rebuild.py's copy_tree), a symlink to this checkout's .venv (so that
-`make` finds its tools; make runs with `-o .venv/.installed-stamp` so it can never reinstall the
-shared environment), and, until the pipeline includes it, the stability stage wired in
-(`wire`): the include in the Snakefile and the `stability` entry of the config schema.
+logs/build (workflow/tools/rebuild.py's copy_tree) and a symlink to this checkout's .venv (so that
+`make` finds its tools; make runs with `-o .venv/.installed-stamp -o tex` so it can never reinstall
+the shared environment or install TeX).
 
-One clean `outputs` build is shared by every test module that asks for it (`built_tree`), and every
-tree starts from one snapshot of the sources taken at the first use (`source_snapshot`).
+One clean build (`make paper`) is shared by every test module that asks for it (`built_tree`, the
+`built` fixture of conftest.py), and every tree starts from one snapshot of the sources taken at
+the first use (`source_snapshot`).
 """
 
 from __future__ import annotations
 
 import atexit
+import fcntl
 import hashlib
 import os
 import shutil
@@ -23,7 +24,6 @@ import tempfile
 import time
 from pathlib import Path
 
-import yaml
 
 ROOT = Path(__file__).resolve().parents[1]
 BIN = ROOT / ".venv" / "bin"
@@ -34,109 +34,10 @@ import rebuild  # noqa: E402  (workflow/tools/rebuild.py)
 ENV = {**os.environ, **rebuild.ENV}
 ENV.pop("LOCK_WAIT", None)
 ENV.pop("PIPELINE_MIN_FREE_MB", None)
-
-#: The `stability` entry of workflow/schemas/config.schema.yaml (what the pipeline must add).
-STABILITY_SCHEMA = yaml.safe_load("""
-description: the stability atlas (restitution.stability, workflow/rules/stability.smk)
-type: object
-additionalProperties: false
-default: {}
-properties:
-  alphas:
-    description: elastic exponents of the atlas
-    type: array
-    minItems: 1
-    items: {$ref: "#/$defs/exponent"}
-    default: ["1", "5/4", "3/2", "2", "5/2"]
-  gammas:
-    description: dissipative exponents of the atlas
-    type: array
-    minItems: 1
-    items: {$ref: "#/$defs/exponent"}
-    default: ["0", "1/2", "1", "3/2"]
-  omega_min:
-    description: smallest Omega, a power of ten in [1e-12, 1e12]
-    type: number
-    exclusiveMinimum: 0
-    default: 1.0e-8
-  omega_max:
-    description: largest Omega, a power of ten in [1e-12, 1e12]
-    type: number
-    exclusiveMinimum: 0
-    default: 1.0e+8
-  per_decade:
-    description: Omega values per decade (the atlas's density; its cost grows in proportion)
-    type: integer
-    minimum: 1
-    maximum: 1000
-    default: 2
-  rtol:
-    description: relative tolerance of the atlas runs
-    type: number
-    minimum: 1.0e-14
-    maximum: 1.0e-3
-    default: 1.0e-10
-  accuracy:
-    description: relative accuracy claimed for every quantity (null = 10 rtol + 1e-13)
-    oneOf:
-      - type: "null"
-      - type: number
-        exclusiveMinimum: 0
-        maximum: 0.1
-    default: null
-  tight_rtol:
-    description: tolerance of the comparison runs (<= rtol)
-    type: number
-    minimum: 1.0e-14
-    maximum: 1.0e-3
-    default: 1.0e-14
-  tight_decades:
-    description: a comparison run every this many decades of Omega (and at omega_max)
-    type: integer
-    minimum: 1
-    maximum: 100
-    default: 4
-  reference_omegas:
-    description: Omega values (on the grid) where the mpmath reference runs
-    type: array
-    items: {type: number, exclusiveMinimum: 0}
-    default: [1.0e-8, 1.0e+8]
-  reference_digits:
-    description: significant digits of the mpmath reference
-    type: integer
-    minimum: 8
-    maximum: 60
-    default: 16
-  reference_min_omega_creep:
-    description: for alpha <= gamma the mpmath reference runs at this Omega instead of below it
-    type: number
-    exclusiveMinimum: 0
-    default: 1.0e-2
-  shards:
-    description: parallel jobs the atlas is split into
-    type: integer
-    minimum: 1
-    maximum: 1000
-    default: 2
-""")
+#: The default target of a full build: the PDF needs TeX.
+ALL = "all" if rebuild.have_tex() else "outputs"
 
 _BUILT: dict[str, Path] = {}
-
-
-def wire(tree: Path) -> Path:
-    """Include the stability stage in `tree` if its Snakefile and schema do not yet (no-op once wired)."""
-    snakefile = tree / "Snakefile"
-    text = snakefile.read_text()
-    if "workflow/rules/stability.smk" not in text:
-        marker = 'include: "workflow/rules/manuscript.smk"'
-        assert marker in text, "Snakefile has no manuscript include to put the stability stage before"
-        snakefile.write_text(text.replace(marker, 'include: "workflow/rules/stability.smk"\n' + marker, 1))
-    schema_path = tree / "workflow" / "schemas" / "config.schema.yaml"
-    schema = yaml.safe_load(schema_path.read_text())
-    if "stability" not in schema.get("properties", {}):
-        schema["properties"]["stability"] = STABILITY_SCHEMA
-        schema_path.write_text(yaml.safe_dump(schema, sort_keys=False))
-    return tree
 
 
 def source_snapshot() -> Path:
@@ -150,10 +51,10 @@ def source_snapshot() -> Path:
 
 
 def fresh_tree(dest: Path) -> Path:
-    """A clean copy of the project (from the session's snapshot), wired, with the shared .venv linked in."""
+    """A clean copy of the project (from the session's snapshot), with the shared .venv linked in."""
     tree = Path(shutil.copytree(source_snapshot(), dest, symlinks=True))
     (tree / ".venv").symlink_to(ROOT / ".venv", target_is_directory=True)
-    return wire(tree)
+    return tree
 
 
 def copy_built(src: Path, dest: Path) -> Path:
@@ -163,8 +64,9 @@ def copy_built(src: Path, dest: Path) -> Path:
 
 
 def make_cmd(target: str = "outputs", *extra: str) -> list[str]:
-    # -o: never remake the environment stamp (the .venv is shared with the working tree)
-    return ["make", "--no-print-directory", "-o", ".venv/.installed-stamp", target, *extra]
+    # -o: never remake the environment stamp (the .venv is shared with the working tree), and never
+    # install TeX from inside a test (`make test` did that, or it cannot be done here)
+    return ["make", "--no-print-directory", "-o", ".venv/.installed-stamp", "-o", "tex", target, *extra]
 
 
 def make(tree: Path, target: str = "outputs", *extra: str, env: dict | None = None,
@@ -187,13 +89,31 @@ def digests(tree: Path) -> dict[str, str]:
     return out
 
 
-def built_tree(tmp_path_factory) -> Path:
-    """One clean `make outputs` build per test session (shared by every module that asks)."""
+def shared_dir(base: Path) -> Path:
+    """A directory every pytest-xdist worker of this test run shares (this session's own without xdist)."""
+    run = os.environ.get("PYTEST_XDIST_TESTRUNUID")
+    path = base.parent / f"shared-{run}" if run else base / "shared"
+    path.mkdir(exist_ok=True)
+    return path
+
+
+def built_tree(base: Path) -> Path:
+    """One clean build per test run, through `make paper` as a user runs it (the PDF too when TeX
+    is there), shared by every module and every worker: the first to ask builds it (conftest.py
+    starts that early), the others wait on the lock. Tests only read it, or work on copies."""
     if "tree" not in _BUILT:
-        tree = fresh_tree(tmp_path_factory.getbasetemp() / "stability-built")
-        proc = make(tree)
-        if proc.returncode != 0:
-            raise AssertionError(f"clean build failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
+        shared = shared_dir(base)
+        tree, ok, failed = shared / "session-build", shared / "session-build.ok", shared / "session-build.failed"
+        with open(shared / "build.lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            if failed.exists():
+                raise AssertionError(failed.read_text())
+            if not ok.exists():
+                proc = make(fresh_tree(tree), "paper")
+                if proc.returncode != 0:
+                    failed.write_text(f"clean build failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
+                    raise AssertionError(failed.read_text())
+                ok.touch()
         _BUILT["tree"] = tree
     return _BUILT["tree"]
 

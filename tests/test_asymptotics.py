@@ -57,6 +57,7 @@ def test_gamma_one_constants_match_tanh_solution():
     assert V.K0 == pytest.approx(k0, rel=1e-12)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("alpha,gamma", FORCE_CASES)
 def test_viscous_leading_constant(alpha, gamma):
     """eps/Omega -> k = (gamma+1)^((alpha-gamma)/(gamma+1)), at the rate Omega ln(1/Omega)."""

@@ -23,7 +23,7 @@ import yaml
 from restitution import cli
 from restitution.errors import ParameterError
 
-from pipeline_tree import BIN, ENV, ROOT, STABILITY_SCHEMA, built_tree, copy_built, digests, fresh_tree, make, snakemake
+from pipeline_tree import BIN, ENV, ROOT, copy_built, digests, fresh_tree, make, snakemake
 
 sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
 from _config import ConfigError, check_config  # noqa: E402  (workflow/scripts/_config.py)
@@ -253,13 +253,8 @@ SCHEMA = ROOT / "workflow" / "schemas" / "config.schema.yaml"
 
 
 @pytest.fixture(scope="module")
-def schema_path(tmp_path_factory):
-    """The config schema, with the stability entry if the pipeline does not have it yet."""
-    schema = yaml.safe_load(SCHEMA.read_text())
-    schema["properties"].setdefault("stability", STABILITY_SCHEMA)
-    path = tmp_path_factory.mktemp("schema") / "config.schema.yaml"
-    path.write_text(yaml.safe_dump(schema, sort_keys=False))
-    return str(path)
+def schema_path():
+    return str(SCHEMA)
 
 
 BASE = yaml.safe_load((ROOT / "config.yaml").read_text())
@@ -377,6 +372,7 @@ def test_config_name_of_64_characters_is_accepted(schema_path):
     ('main_variant: "kim\n', "config.yaml, line 2, column 1: not valid YAML"),
     ("- kim\n", "config.yaml = ['kim']: must be a mapping"),
 ])
+@pytest.mark.pipeline
 def test_config_yaml_syntax_error_is_one_line_with_the_line_number(tmp_path, text, where):
     """Through Snakemake: the Snakefile checks config.yaml before its `configfile:` loads it."""
     tree = fresh_tree(tmp_path / "tree")
@@ -427,9 +423,9 @@ BREAKS = [
 
 
 @pytest.mark.slow
-def test_a_bad_config_leaves_earlier_results_untouched(tmp_path_factory, tmp_path):
+def test_a_bad_config_leaves_earlier_results_untouched(built, tmp_path):
     """Build, break config.yaml, run `make outputs`: one line, exit != 0, results/ byte-identical."""
-    tree = copy_built(built_tree(tmp_path_factory), tmp_path / "t")
+    tree = copy_built(built, tmp_path / "t")
     before = digests(tree)
     original = (tree / "config.yaml").read_text()
     for old, new, field in BREAKS:

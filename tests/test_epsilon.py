@@ -57,6 +57,7 @@ def hp(alpha, gamma, w):
     return _HP[key]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("which", ["kim", "hertz"])
 @pytest.mark.parametrize("tol", [1e-5, 1e-10])
 def test_every_rung_meets_its_bound_on_held_out_points(which, tol, request):

@@ -1,7 +1,7 @@
 """Variants as pipeline inputs: per-variant results and sections, caching per variant, validation
 against known results, one-off studies and the cluster profile.
 
-Uses the session's clean build of test_pipeline.py (one build for both modules); tests that change
+Uses the session's clean build (conftest.py's `built`); tests that change
 files work on copies of it or on fresh copies of the project.
 """
 
@@ -17,8 +17,9 @@ import yaml
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from test_pipeline import (ALL, assert_one_config_error, PER_VARIANT, ROOT, VARIANT_NAMES, copy_built, planned, read_csv,  # noqa: E402
-                           rebuild, shared_build, snakemake)
+from pipeline_tree import ALL, copy_built  # noqa: E402
+from test_pipeline import (assert_one_config_error, PER_VARIANT, ROOT, VARIANT_NAMES, planned, read_csv,  # noqa: E402
+                           rebuild, snakemake)
 
 #: A fourth material with gamma = (alpha - 1)/2 > 0: Omega, and so eps, must not depend on g.
 FLAT = {"name": "flat", "alpha": "2", "gamma": "1/2", "D1": 0.01, "D2": 0.1,
@@ -29,16 +30,6 @@ FLAT_CONFIG = ('extra_variants=[{name: flat, alpha: "2", gamma: "1/2", D1: 0.01,
                'g_range: {min: 0.01, max: 10, points: 5}, readings: [P-N2-K2-Dprinted]}]')
 #: Manuscript-level jobs: they gather every variant, so a new variant reruns them.
 GATHERING = {"compare_variants", "variants_tex", "manuscript", ALL}
-
-
-@pytest.fixture(scope="module")
-def built(tmp_path_factory) -> Path:
-    return shared_build(tmp_path_factory)
-
-
-@pytest.fixture
-def fresh(tmp_path) -> Path:
-    return rebuild.copy_tree(tmp_path / "fresh")
 
 
 def jobs_by_variant(tree: Path, *args: str) -> dict[str, set]:
