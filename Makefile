@@ -9,7 +9,7 @@ STAMP  := $(VENV)/.installed-stamp
 export SOURCE_DATE_EPOCH ?= 1700000000
 export PYTHONHASHSEED := 0
 
-.PHONY: venv test
+.PHONY: venv test test-fast
 
 $(STAMP): pyproject.toml constraints.txt
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -19,8 +19,14 @@ $(STAMP): pyproject.toml constraints.txt
 
 venv: $(STAMP)
 
-test: $(STAMP)
-	$(BIN)/python -m pytest -q
+# The whole suite, pipeline builds included; installs TeX first like `make paper` (the tests that
+# need a PDF are skipped, with the reason in the summary, where TeX cannot be installed).
+test: $(STAMP) tex
+	$(BIN)/python -m pytest -q -rs -n 2
+
+# The library and the CLI only, no pipeline build and no long sweeps (under a minute).
+test-fast: $(STAMP)
+	$(BIN)/python -m pytest -q -rs -n 2 -m "not pipeline and not slow"
 
 # ---------------------------------------------------------------------------------------------
 # The paper pipeline (Snakefile, config.yaml, workflow/). Outputs under results/, the PDF at
@@ -32,7 +38,7 @@ SNAKEMAKE    := $(BIN)/snakemake --cores $(CORES) --rerun-incomplete
 # first; LOCK_WAIT=S gives up after S seconds, LOCK_WAIT=0 at once), locks left by a killed run
 # are cleared, and half-done jobs are redone.
 LOCK_WAIT    ?=
-GUARDED      := $(BIN)/python workflow/tools/guard.py $(if $(LOCK_WAIT),--wait $(LOCK_WAIT)) --
+GUARDED      := PYTHONPATH=workflow/scripts $(BIN)/python workflow/tools/guard.py $(if $(LOCK_WAIT),--wait $(LOCK_WAIT)) --
 # Progress and finished jobs, without the per-job detail (targets go before this: --quiet
 # takes a list).
 QUIET        := --quiet host rules
@@ -42,7 +48,7 @@ PDF          := results/paper/restitution.pdf
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk
 HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/null 2>&1
 
-.PHONY: paper tex outputs check expected reproducible bench notebooks
+.PHONY: paper tex outputs verify check expected reproducible bench notebooks
 
 # Everything, PDF included; a second run does nothing. Without TeX (and no root to install it),
 # everything except the PDF, and a message saying how to get it.
@@ -59,10 +65,12 @@ paper: $(STAMP) tex
 tex:
 	@if ! { $(HAVE_TEX); }; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
-	    echo "Installing TeX Live (Debian packages: $(TEX_PACKAGES)) ..."; \
-	    DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
-	    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(TEX_PACKAGES) \
-	      || echo "TeX Live could not be installed; the PDF will be skipped."; \
+	    echo "Installing TeX Live (Debian packages: $(TEX_PACKAGES); about 1-2 min, log in build/tex-install.log) ..."; \
+	    mkdir -p build; \
+	    { DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	      DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(TEX_PACKAGES); \
+	    } > build/tex-install.log 2>&1 \
+	      || echo "TeX Live could not be installed (see build/tex-install.log); the PDF will be skipped."; \
 	  else \
 	    echo "pdflatex not found and not root: the PDF will be skipped."; \
 	  fi; \
@@ -71,6 +79,11 @@ tex:
 # Everything except the PDF (no TeX needed).
 outputs: $(STAMP)
 	$(GUARDED) $(SNAKEMAKE) outputs $(QUIET)
+
+# Outputs whose bytes are no longer what the pipeline wrote (make paper moves them aside and
+# rebuilds them by itself; this only reports).
+verify: $(STAMP)
+	@$(BIN)/python workflow/scripts/common/atomic.py verify .
 
 # Rebuild from clean in a temporary directory and compare with tests/expected/manifest.json.
 check: $(STAMP)
@@ -93,13 +106,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/speed_accuracy.py --out results/bench
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) bench
 
-# The figure and table scripts as Jupyter notebooks (notebooks/, not tracked). They replay the
-# pipeline's last run of their rule, so run `make paper` first.
-NOTEBOOK_SCRIPTS := $(wildcard workflow/scripts/fig*.py) workflow/scripts/series_table.py \
-                    workflow/scripts/values.py
+# The workflow scripts as Jupyter notebooks (notebooks/, not tracked), each with a first cell that
+# replays the pipeline's last run of its rule, so run `make paper` first.
 notebooks: $(STAMP)
-	@mkdir -p notebooks
-	@for f in $(NOTEBOOK_SCRIPTS); do \
-	  $(BIN)/jupytext --quiet --to ipynb --output notebooks/$$(basename $$f .py).ipynb $$f || exit 1; \
-	done
-	@echo "notebooks/: $$(ls notebooks | tr '\n' ' ')"
+	$(BIN)/python workflow/tools/notebooks.py --out notebooks

@@ -1,6 +1,6 @@
 """Faults: killed runs, two runs at once, read-only or full results/, half-written files.
 
-Unit tests cover the pieces (workflow/scripts/_atomic.py, workflow/tools/guard.py); the slow
+Unit tests cover the pieces (workflow/scripts/common/atomic.py, workflow/tools/guard.py and preflight.py); the slow
 tests run the real pipeline (`make outputs`, no TeX) in temporary copies of the project and
 compare what they end with against one clean build, byte for byte.
 """
@@ -21,13 +21,14 @@ from pathlib import Path
 
 import pytest
 
-from pipeline_tree import (ENV, ROOT, built_tree, copy_built, descendants, digests, fresh_tree, make,
-                           make_cmd, running_jobs, snakemake_pid, stop_all, wait_for)
+from pipeline_tree import (ENV, ROOT, cmdline, copy_built, descendants, digests, fresh_tree, make, make_cmd,
+                           running_jobs, snakemake_pid, stop_all, wait_for)
 
 sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
 sys.path.insert(0, str(ROOT / "workflow" / "tools"))
-import _atomic  # noqa: E402
 import guard  # noqa: E402
+import preflight  # noqa: E402
+from common import atomic as _atomic  # noqa: E402
 
 
 def can_mount() -> bool:
@@ -88,97 +89,153 @@ def test_pipeline_scripts_of_this_stage_write_atomically():
         assert ".to_csv(snakemake" not in text and ".savefig(snakemake" not in text, name
 
 
-# A file-writing call whose target is not a temporary path from _atomic.atomic_path.
+# A file-writing call whose target is not a temporary path from common.atomic.atomic_path.
 _DIRECT_WRITE = re.compile(r"""\.to_csv\(|\.savefig\(|\.write_text\(|\.write_bytes\(|\bopen\([^)]*["'][wax]b?["']""")
 
 
 def test_every_workflow_script_writes_outputs_through_the_atomic_helpers():
     """Every output is written under a temporary name and renamed: scripts call _pipeline's writers
-    (write_json, write_text, write_csv, save_figure) or _atomic directly; a direct write may only
+    (write_json, write_text, write_csv, save_figure) or common.atomic directly; a direct write may only
     target the temporary path (or the job's log, which Snakemake does not treat as an output)."""
     offenders = []
-    for path in sorted((ROOT / "workflow" / "scripts").glob("*.py")):
-        if path.name == "_atomic.py":
-            continue
+    scripts = ROOT / "workflow" / "scripts"
+    for path in sorted([*scripts.glob("*.py"), scripts / "common" / "pipeline.py", scripts / "common" / "latex.py"]):
         for number, line in enumerate(path.read_text().splitlines(), 1):
             code = line.split("#", 1)[0]
             if _DIRECT_WRITE.search(code) and "tmp" not in code and "open(log" not in code:
                 offenders.append(f"{path.name}:{number}: {line.strip()}")
     assert not offenders, "\n".join(offenders)
-    pipeline = (ROOT / "workflow" / "scripts" / "_pipeline.py").read_text()
-    assert "from _atomic import atomic_path" in pipeline
+    pipeline = (ROOT / "workflow" / "scripts" / "common" / "pipeline.py").read_text()
+    assert "from .atomic import atomic_path" in pipeline
 
 
-def test_shell_rules_rename_their_outputs_into_place():
-    """The rules that write with shell commands (PDF copy, main figures, study list) go through a
-    hidden temporary name beside the output and mv."""
+def test_shell_rules_write_through_the_atomic_writer():
+    """The rules that write with shell commands (PDF copy, main figures, study list) go through the
+    one atomic writer (a hidden temporary name, renamed; the digest recorded), placeholders quoted."""
     for smk, rule in (("manuscript.smk", "rule manuscript:"), ("figures.smk", "rule main_figure:"),
                       ("variants.smk", "rule study:")):
         text = (ROOT / "workflow" / "rules" / smk).read_text()
         body = text[text.index(rule):].split("\nrule ", 1)[0]
-        assert ".tmp" in body and 'mv -f "$tmp" {output}' in body.replace('\\"', '"'), (smk, rule)
+        assert "{ATOMIC} install" in body or "{ATOMIC} write" in body, (smk, rule)
+        assert "{output:q}" in body and "{output}" not in body, (smk, rule)
+
+
+def test_the_atomic_writer_records_what_it_wrote_and_installs_for_shell_rules(tmp_path):
+    src = tmp_path / "build" / "made.pdf"
+    src.parent.mkdir()
+    src.write_bytes(b"%PDF finished")
+    dest = tmp_path / "results" / "paper" / "x.pdf"
+    proc = subprocess.run([sys.executable, str(ROOT / "workflow/scripts/common/atomic.py"), "install", str(src), str(dest)],
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    proc = subprocess.run([sys.executable, str(ROOT / "workflow/scripts/common/atomic.py"), "write",
+                           str(tmp_path / "results" / "list.txt")], input="a\nb\n", capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    assert dest.read_bytes() == b"%PDF finished"
+    assert set(_atomic.written(tmp_path)) == {"results/paper/x.pdf", "results/list.txt"}
+    assert _atomic.verify_written(tmp_path) == ([], [])
+    dest.write_bytes(b"%PDF changed")
+    assert _atomic.verify_written(tmp_path) == (["results/paper/x.pdf"], [])
 
 
 # ------------------------------------------------------------------------------------ the guard
 def test_preflight_passes_on_a_writable_tree(tmp_path):
-    assert guard.preflight(tmp_path, min_free_mb=0) == []
-    assert {p.name for p in tmp_path.iterdir()} == set(guard.WRITABLE)
+    assert preflight.preflight(tmp_path, min_free_mb=0) == []
+    assert {p.name for p in tmp_path.iterdir()} == set(preflight.WRITABLE)
     assert not any(p.name.startswith(".write-probe") for d in tmp_path.iterdir() for p in d.iterdir())
 
 
 def test_preflight_file_in_the_way(tmp_path):
     (tmp_path / "results").write_text("oops")
-    problems = guard.preflight(tmp_path, min_free_mb=0)
+    problems = preflight.preflight(tmp_path, min_free_mb=0)
     assert problems == ["results/ is not a directory (a file is in the way): move it away"]
 
 
 def test_preflight_too_little_space(tmp_path):
-    problems = guard.preflight(tmp_path, min_free_mb=1e12)
+    problems = preflight.preflight(tmp_path, min_free_mb=1e12)
     assert len(problems) == 4 and all("MB free" in p for p in problems)
 
 
 def test_second_run_waits_or_stops(tmp_path, capsys):
     (tmp_path / "build").mkdir()
-    first = guard.acquire(tmp_path, None, "make paper")
+    first = guard.acquire(tmp_path, None)
     assert first is not None
-    assert guard.acquire(tmp_path, 0, "make paper") is None
+    assert guard.acquire(tmp_path, 0) is None
     assert "not starting a second one" in capsys.readouterr().err
     t0 = time.monotonic()
-    assert guard.acquire(tmp_path, 0.6, "make paper") is None
+    assert guard.acquire(tmp_path, 0.6) is None
     assert time.monotonic() - t0 >= 0.5
     assert "still running after" in capsys.readouterr().err
-    first.close()
-    second = guard.acquire(tmp_path, 0, "make paper")
+    os.close(first)
+    second = guard.acquire(tmp_path, 0)
     assert second is not None
-    assert json.loads((tmp_path / guard.LOCK).read_text())["pid"] == os.getpid()
-    second.close()
+    os.close(second)
 
 
-def test_stale_snakemake_locks_are_cleared_only_when_nothing_runs(tmp_path, capsys):
-    locks = tmp_path / ".snakemake" / "locks"
-    locks.mkdir(parents=True)
-    (locks / "0.output.lock").write_text("results/x\n")
-    # a snakemake started by hand in this tree: its locks are not stale
-    fake = tmp_path / "snakemake"
-    fake.write_text("import time\ntime.sleep(60)\n")
-    other = subprocess.Popen([sys.executable, str(fake)], cwd=tmp_path)
+def _guarded(tree: Path, *cmd: str) -> subprocess.Popen:
+    return subprocess.Popen([sys.executable, str(ROOT / "workflow/tools/guard.py"), "--", *cmd], cwd=tree,
+                            stderr=subprocess.PIPE, text=True,
+                            env={**ENV, "PIPELINE_MIN_FREE_MB": "0", "PYTHONPATH": str(ROOT / "workflow/scripts")})
+
+
+def test_the_lock_lives_as_long_as_the_build_even_when_the_wrapper_is_killed(tmp_path):
+    """kill -9 of the wrapper: the build it started still holds the lock, so a second run waits."""
+    build = _guarded(tmp_path, "sleep", "60")
     try:
-        assert wait_for(lambda: guard.snakemake_running_in(tmp_path) == [other.pid], 10)
-        guard.clear_stale_locks(tmp_path)
-        assert list(locks.iterdir()) and "its locks are left alone" in capsys.readouterr().err
+        assert wait_for(lambda: any("sleep 60" in cmdline(p) for p in descendants(build.pid)), 20)
+        sleeper = next(p for p in descendants(build.pid) if "sleep 60" in cmdline(p))
+        build.kill()
+        build.wait()
+        assert guard.acquire(tmp_path, 0) is None, "the lock died with the wrapper"
+        os.kill(sleeper, signal.SIGKILL)
+        assert wait_for(lambda: _no_process_left([sleeper]), 10)
+        fd = guard.acquire(tmp_path, 5)
+        assert fd is not None, "the lock outlived the build"
+        os.close(fd)
     finally:
-        other.kill()
-        other.wait()
-    guard.clear_stale_locks(tmp_path)
-    assert not list(locks.iterdir())
-    assert "stale Snakemake lock" in capsys.readouterr().err
+        stop_all(build)
+
+
+def test_stray_temporary_files_of_killed_jobs_are_removed(tmp_path):
+    stab = tmp_path / "results" / "stability"
+    stab.mkdir(parents=True)
+    strays = [stab / ".atlas.png.k2j3.tmp.png", tmp_path / "results" / ".x.csv.1234.tmp"]
+    for f in strays:
+        f.write_bytes(b"")
+    (stab / "atlas.png").write_bytes(b"a finished figure")
+    (tmp_path / "build").mkdir()
+    preflight.tidy(tmp_path, "true")
+    assert not any(f.exists() for f in strays)
+    assert (stab / "atlas.png").read_bytes() == b"a finished figure"
+
+
+def test_outputs_changed_after_they_were_written_are_moved_aside(tmp_path, capsys):
+    """What the writer recorded is checked before every run: changed bytes (even with the time
+    stamp put back) are moved to build/damaged/, a deleted output is reported, good ones stay."""
+    res = tmp_path / "results" / "kim"
+    for name in ("eps_curve.csv", "claims.csv", "fit.json"):
+        _atomic.write_text_atomic(res / name, f"the pipeline's {name}")
+    stat = (res / "eps_curve.csv").stat()
+    (res / "eps_curve.csv").write_text("the pipe")          # truncated ...
+    os.utime(res / "eps_curve.csv", ns=(stat.st_atime_ns, stat.st_mtime_ns))   # ... time stamp restored
+    (res / "claims.csv").unlink()
+    assert _atomic.verify_written(tmp_path) == (["results/kim/eps_curve.csv"], ["results/kim/claims.csv"])
+    preflight.tidy(tmp_path, "true")
+    err = capsys.readouterr().err
+    assert "results/kim/eps_curve.csv is not what the pipeline wrote" in err
+    assert "results/kim/claims.csv is missing: rebuilding it" in err
+    assert not (res / "eps_curve.csv").exists()
+    assert (tmp_path / "build/damaged/results/kim/eps_curve.csv").read_text() == "the pipe"
+    assert (res / "fit.json").read_text() == "the pipeline's fit.json\n"
+    assert _atomic.verify_written(tmp_path) == ([], ["results/kim/claims.csv", "results/kim/eps_curve.csv"])
 
 
 def test_guard_stops_the_jobs_of_a_killed_snakemake(tmp_path):
     """A snakemake killed by SIGKILL leaves its jobs running; the guard stops them."""
     (tmp_path / "child.sh").write_text("sleep 60 &\necho $! > job.pid\nkill -9 $$\n")
     t0 = time.monotonic()
-    rc = guard.run(["sh", "child.sh"], tmp_path)
+    with open(tmp_path / "lock", "w") as lock:
+        rc = guard.run(["sh", "child.sh"], tmp_path, lock.fileno())
     assert rc == 128 + signal.SIGKILL
     job = int((tmp_path / "job.pid").read_text())
     assert wait_for(lambda: not Path(f"/proc/{job}").exists() or
@@ -187,11 +244,6 @@ def test_guard_stops_the_jobs_of_a_killed_snakemake(tmp_path):
 
 
 # ------------------------------------------------------------------------------------ the real pipeline
-@pytest.fixture(scope="module")
-def built(tmp_path_factory):
-    return built_tree(tmp_path_factory)
-
-
 def _start(tree: Path, env: dict | None = None) -> subprocess.Popen:
     return subprocess.Popen(make_cmd("outputs"), cwd=tree, env={**ENV, **(env or {})}, stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True)
@@ -247,21 +299,25 @@ def test_killed_runs_restart_to_the_clean_build(built, tmp_path):
     assert proc.returncode != 0
     assert "snakemake was killed (signal 9)" in err, err[-2000:]
     assert wait_for(lambda: _no_process_left(jobs), 20), "a job outlived its snakemake"
-    assert list((tree / ".snakemake" / "locks").glob("*.lock")), "a SIGKILLed snakemake leaves its locks"
+    # a SIGKILLed snakemake leaves its locks; the guard, still holding the pipeline's lock, clears them
+    assert "removed 2 stale Snakemake lock(s)" in err, err[-2000:]
+    assert not list((tree / ".snakemake" / "locks").glob("*.lock"))
     assert not list(shards.glob("*.csv")), "half-done shards must not exist under their final names"
     assert not list((tree / "results").rglob(".*.tmp*"))
 
-    # 2. restart; SIGTERM once the shards are done (merge or figure running)
-    proc = _start(tree)
+    # 2. restart; SIGTERM (as `kill` or a closed terminal sends it to the run) once the shards are
+    # done (merge or figure running). Snakemake stops, or, if it hangs in its own signal handler
+    # (it can), the guard kills it after PIPELINE_STOP_GRACE seconds.
+    proc = _start(tree, env={"PIPELINE_STOP_GRACE": "10"})
     try:
         assert wait_for(lambda: len(list(shards.glob("*.csv"))) == 2, 300)
-        smk = snakemake_pid(proc.pid)
-        os.kill(smk, signal.SIGTERM)
+        guard_pid = next(p for p in descendants(proc.pid) if "guard.py" in cmdline(p))
+        os.kill(guard_pid, signal.SIGTERM)
         out, err = proc.communicate(timeout=300)
     finally:
         stop_all(proc)
-    assert "removed 2 stale Snakemake lock(s)" in err, err[-2000:]
-    assert not list((tree / ".snakemake" / "locks").glob("*.lock")), "SIGTERM: snakemake releases its locks"
+    assert "stopped by signal 15" in err, err[-2000:]
+    assert not list((tree / ".snakemake" / "locks").glob("*.lock")), "SIGTERM: no Snakemake lock is left"
     for name in ("0-of-2.csv", "1-of-2.csv"):
         assert (shards / name).read_bytes() == (built / "results" / "stability" / "shards" / name).read_bytes()
     assert not list((tree / "results").rglob(".*.tmp*"))
@@ -357,3 +413,40 @@ def test_disk_full_during_a_job_is_diagnosed_and_nothing_half_written_remains(bu
     listing = proc.stdout.split("LISTING", 1)[1].split()
     assert "atlas.png" not in listing and "atlas.pdf" not in listing
     assert not [n for n in listing if n.endswith(".tmp.png") or n.endswith(".tmp.pdf")]
+
+
+@pytest.mark.slow
+def test_a_damaged_or_deleted_output_is_rebuilt_never_used(built, tmp_path):
+    """Truncated with its time stamp put back, changed in place, deleted (an intermediate and a
+    final output): `make verify` names each, `make outputs` moves the changed ones aside and
+    rebuilds all of them from their inputs, and ends with the clean build's bytes."""
+    tree = copy_built(built, tmp_path / "t")
+    curve = tree / "results/kim/reference/eps_curve.csv"
+    stamp = curve.stat()
+    with open(curve, "r+b") as fh:
+        fh.truncate(2000)
+    os.utime(curve, ns=(stamp.st_atime_ns, stamp.st_mtime_ns))
+    fit = tree / "results/kim/connection/fit.json"
+    fit.write_text(fit.read_text().replace('"applies": true', '"applies": false'))
+    for gone in ("results/kim/series/forward.json", "results/kim/claims.csv"):
+        (tree / gone).unlink()
+    assert "Nothing to be done" not in snakemake_dry_run(tree)
+
+    check = make(tree, "verify")
+    assert check.returncode != 0
+    for rel, what in (("results/kim/reference/eps_curve.csv", "changed"), ("results/kim/connection/fit.json", "changed"),
+                      ("results/kim/series/forward.json", "missing"), ("results/kim/claims.csv", "missing")):
+        assert f"verify: {rel}: {what}" in check.stdout, check.stdout
+
+    proc = make(tree)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert "results/kim/reference/eps_curve.csv is not what the pipeline wrote" in proc.stderr
+    assert (tree / "build/damaged/results/kim/reference/eps_curve.csv").stat().st_size == 2000
+    assert digests(tree) == digests(built)
+    assert make(tree, "verify").returncode == 0
+
+
+def snakemake_dry_run(tree: Path) -> str:
+    proc = subprocess.run([str(ROOT / ".venv/bin/snakemake"), "outputs", "--dry-run", "--cores", "1"], cwd=tree,
+                          env=ENV, capture_output=True, text=True)
+    return proc.stdout + proc.stderr

@@ -1,6 +1,6 @@
 """The paper pipeline end to end, in temporary copies of the project (never in the working tree).
 
-One clean build per session (module fixture `built`) backs most tests; tests that change files
+The session's one clean build (conftest.py's `built`) backs most tests; tests that change files
 work on a copy of that build. Marked slow: the ones that need extra clean builds.
 """
 
@@ -22,9 +22,9 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "workflow" / "tools"))
 
 import rebuild  # noqa: E402  (workflow/tools/rebuild.py)
+from pipeline_tree import ALL, copy_built  # noqa: E402
 
 ENV = {**os.environ, **rebuild.ENV}
-ALL = "all" if rebuild.have_tex() else "outputs"
 
 
 def snakemake(tree: Path, *args: str, check: bool = True) -> subprocess.CompletedProcess:
@@ -48,35 +48,6 @@ def planned(tree: Path, *targets: str, extra: tuple = ()) -> Counter:
             break
         jobs[parts[0]] = int(parts[1])
     return jobs
-
-
-def copy_built(src: Path, dest: Path) -> Path:
-    """A copy of a built tree with outputs, timestamps and Snakemake's metadata."""
-    shutil.copytree(src, dest, symlinks=True, ignore=shutil.ignore_patterns(".venv", ".git"))
-    return dest
-
-
-_BUILT: dict[str, Path] = {}
-
-
-def shared_build(tmp_path_factory) -> Path:
-    """One clean build per test session, shared by every module that asks (test_variants.py too)."""
-    if "tree" not in _BUILT:
-        tree = rebuild.copy_tree(tmp_path_factory.mktemp("built") / "tree")
-        rebuild.run_pipeline(tree, cores=2, target=ALL)
-        _BUILT["tree"] = tree
-    return _BUILT["tree"]
-
-
-@pytest.fixture(scope="module")
-def built(tmp_path_factory) -> Path:
-    return shared_build(tmp_path_factory)
-
-
-@pytest.fixture
-def fresh(tmp_path) -> Path:
-    """A clean copy of the project, nothing built."""
-    return rebuild.copy_tree(tmp_path / "fresh")
 
 
 # ------------------------------------------------------------------------------ configuration
@@ -133,6 +104,17 @@ def test_the_full_plan(fresh):
     assert jobs["manuscript"] == (1 if ALL == "all" else 0)
 
 
+def test_every_output_is_a_target_of_all(built):
+    """A deleted output is rebuilt only if it is requested itself: every file the build makes is an
+    input of the top rule (the PDF is its own input of `all`)."""
+    out = snakemake(built, ALL, "--dry-run", "--forceall", "--cores", "1").stdout
+    block = re.split(rf"\n(?:local)?rule {ALL}:", out, maxsplit=1)[1].split("\n\n", 1)[0]
+    requested = set(re.search(r"input: (.*)", block).group(1).split(", "))
+    made = set(rebuild.digest_results(built))
+    assert len(made) > 100
+    assert sorted(made - requested) == []
+
+
 def test_nothing_to_do_after_a_build(built):
     assert planned(built, ALL) == Counter()
 
@@ -182,7 +164,7 @@ def test_a_change_in_the_series_module_does_not_rerun_integrations(built, tmp_pa
 # ------------------------------------------------------------------------------ outputs
 def test_outputs_match_the_committed_manifest(built):
     manifest = json.loads(rebuild.MANIFEST.read_text())
-    assert rebuild.compare(built, manifest) == []
+    assert rebuild.compare(built, manifest, tex=ALL == "all") == []
 
 
 def test_an_altered_expected_value_fails_the_check(built):
@@ -346,22 +328,29 @@ def test_the_pdf_has_no_unresolved_references(built):
 
 
 def test_a_figure_script_runs_as_a_notebook(built, tmp_path):
-    """Outside Snakemake the script replays the pipeline's last run of its rule."""
+    """As `make notebooks` renders it, the script replays the pipeline's last run of its rule."""
     tree = copy_built(built, tmp_path / "t")
     before = (tree / "results/kim/figures/fig3.png").read_bytes()
-    proc = subprocess.run([sys.executable, "../workflow/scripts/fig3_phase.py"], cwd=tree / "paper",
+    proc = subprocess.run([sys.executable, "workflow/tools/notebooks.py", "--to", "py:percent", "--out", "notebooks",
+                           "workflow/scripts/fig3_phase.py"], cwd=tree, env=ENV, capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stderr
+    proc = subprocess.run([sys.executable, "../notebooks/fig3_phase.py"], cwd=tree / "paper",
                           env=ENV, capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     assert (tree / "results/kim/figures/fig3.png").read_bytes() == before
 
 
 def test_jupytext_renders_the_scripts_as_notebooks(tmp_path):
-    import jupytext
+    sys.path.insert(0, str(ROOT / "workflow" / "tools"))
+    import notebooks
 
     for script in sorted((ROOT / "workflow/scripts").glob("[!_]*.py")):  # every script a rule runs
-        nb = jupytext.read(script)
-        assert len(nb.cells) >= 3, script.name
+        text = script.read_text()
+        assert "noqa: E402" not in text and 'not in globals()' not in text, script.name  # plain scripts
+        nb = notebooks.notebook(script)
+        assert len(nb.cells) >= 4, script.name
         assert nb.cells[0].cell_type == "markdown", script.name  # what the notebook is about
+        assert f"replay({script.stem!r})" in nb.cells[1].source, script.name
 
 
 # ------------------------------------------------------------------------------ clean rebuilds

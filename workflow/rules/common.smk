@@ -2,8 +2,10 @@
 # the package sources each rule imports, and the lists of final outputs.
 
 import ast
+import functools
 import os
 import re
+import shlex
 import sys
 from fractions import Fraction
 from pathlib import Path
@@ -95,6 +97,7 @@ if not is_paper_case(MAIN):
 PKG = ROOT / "src" / "restitution"
 
 
+@functools.cache   # every rule asks again; parsing each module once keeps a no-op run fast
 def _imports_of(module):
     """restitution.* modules imported by src/restitution/<module>.py (relative or absolute)."""
     tree = ast.parse((PKG / f"{module}.py").read_text(), filename=f"{module}.py")
@@ -132,6 +135,10 @@ def lib(*modules):
     return sorted(str(Path("src/restitution") / f"{m}.py") for m in seen | {"__init__"})
 
 
+# The one atomic writer, for shell rules: `{ATOMIC} install SRC DEST`, `... | {ATOMIC} write DEST`.
+ATOMIC = f"{shlex.quote(sys.executable)} {shlex.quote(str(ROOT / 'workflow' / 'scripts' / 'common' / 'atomic.py'))}"
+
+
 def script_file(name):
     """Path of a workflow script for `script:` (relative to the .smk files) ..."""
     return f"../scripts/{name}"
@@ -139,8 +146,8 @@ def script_file(name):
 
 def code(name):
     """... and the same file as an input, so touching it reruns the rule (and its dependants),
-    with the helpers every script writes through (_pipeline.py imports _atomic.py)."""
-    return [f"workflow/scripts/{name}", "workflow/scripts/_pipeline.py", "workflow/scripts/_atomic.py"]
+    with the helpers every script writes through (common/pipeline.py imports common/atomic.py)."""
+    return [f"workflow/scripts/{name}", "workflow/scripts/common/pipeline.py", "workflow/scripts/common/atomic.py"]
 
 
 # ---------------------------------------------------------------------------------------------
@@ -179,19 +186,28 @@ EXTRA = [name for name in VARIANTS if name != MAIN]   # variants with a generate
 
 
 def variant_outputs(name):
-    """Everything the study of one variant produces (the target of results/<name>/study.txt)."""
+    """Everything the study of one variant produces, intermediates included (the target of
+    results/<name>/study.txt, and so of `all`): a deleted file is rebuilt, never silently missing."""
     out = [
         f"results/{name}/series/forward.json",
         f"results/{name}/series/inverse.json",
         f"results/{name}/series/table.tex",
+        f"results/{name}/series/agreement.json",
         f"results/{name}/reference/summary.json",
+        f"results/{name}/reference/forward.csv",
+        f"results/{name}/reference/inverse.csv",
         f"results/{name}/reference/eps_curve.csv",
         f"results/{name}/validation/known.csv",
+        f"results/{name}/connection/readings.json",
         f"results/{name}/connection/readings.csv",
         f"results/{name}/connection/readings.tex",
         f"results/{name}/connection/fit.json",
+        f"results/{name}/connection/fit_residuals.csv",
+        f"results/{name}/connection/eps_compare.csv",
         f"results/{name}/connection/eps_errors.csv",
         f"results/{name}/connection/eps_errors.tex",
+        f"results/{name}/relations/derived.json",
+        f"results/{name}/relations/fitted.json",
         f"results/{name}/validation/validation.json",
         f"results/{name}/values/values.tex",
         f"results/{name}/values/values.json",
@@ -200,17 +216,22 @@ def variant_outputs(name):
     if name == MAIN:  # the tolerance study is printed for the main variant only
         out.append(f"results/{name}/reference/accuracy.csv")
     if is_paper_case(name):
-        out += [f"results/{name}/claims.csv", f"results/{name}/claims/table.tex"]
+        out += [f"results/{name}/claims.csv", f"results/{name}/claims/table.tex",
+                f"results/{name}/claims/discussion.tex", f"results/{name}/claims/values.json",
+                f"results/{name}/relations/printed.json"]
     if name != MAIN:
         out.append(f"results/{name}/section.tex")
     return out
 
 
 def all_outputs_but_pdf():
-    out = [f"results/{name}/study.txt" for name in VARIANTS]
+    """Every output the pipeline promises, listed directly: Snakemake rebuilds a missing file only
+    when it is requested itself (a missing intermediate whose consumers are up to date is not)."""
+    out = [f for name in VARIANTS for f in variant_outputs(name)]
+    out += [f"results/{name}/study.txt" for name in VARIANTS]
     out += [f"results/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
-    out += ["results/paper/variants.tex", "results/paper/validation.tex",
-            "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
+    out += ["results/paper/inputs.tex", "results/paper/variants.tex", "results/paper/variants_values.tex",
+            "results/paper/validation.tex", "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
     out += STABILITY_OUTPUTS
     out += ["results/paper/bench_table.tex", "results/paper/bench_pareto.pdf", "results/paper/bench_pareto.png"]
     return out

@@ -9,7 +9,7 @@ rule connection_readings:
     input:
         summary=rules.reference_trajectories.output.summary,
         src=lib("connection"),
-        code=code("connection_readings.py") + ["workflow/scripts/_config.py", "workflow/scripts/_latex.py"],
+        code=code("connection_readings.py") + ["workflow/scripts/_config.py", "workflow/scripts/common/latex.py"],
     output:
         json="results/{variant}/connection/readings.json",
         csv="results/{variant}/connection/readings.csv",
@@ -54,7 +54,7 @@ rule eps_compare:
         curve=rules.reference_eps_curve.output[0],
         relations=relation_files,
         src=lib("connection"),
-        code=code("eps_compare.py") + ["workflow/scripts/_latex.py"],
+        code=code("eps_compare.py") + ["workflow/scripts/common/latex.py"],
     output:
         curves="results/{variant}/connection/eps_compare.csv",
         errors="results/{variant}/connection/eps_errors.csv",
@@ -76,7 +76,7 @@ rule claims:
         fit=rules.connection_fit.output.json,
         curve=rules.reference_eps_curve.output[0],
         src=lib("claims", "connection", "collision", "model", "series", "damped", "printed"),
-        code=code("claims_ledger.py") + ["workflow/scripts/_latex.py"],
+        code=code("claims.py") + ["workflow/scripts/common/latex.py"],
     output:
         csv="results/{variant}/claims.csv",
         values="results/{variant}/claims/values.json",
@@ -90,4 +90,4 @@ rule claims:
     log:
         "logs/{variant}/claims.log",
     script:
-        script_file("claims_ledger.py")
+        script_file("claims.py")

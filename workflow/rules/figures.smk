@@ -103,6 +103,5 @@ rule main_figure:
     log:
         "logs/main_figure_{fig}_{ext}.log",
     shell:
-        # a hidden temporary name beside the output, then renamed (never a half-copied figure)
-        'tmp="$(dirname {output})/.$(basename {output}).$$.tmp"; '
-        'cp {input} "$tmp" 2> {log} && mv -f "$tmp" {output} || {{ rm -f "$tmp"; exit 1; }}'
+        # through the one atomic writer: never a half-copied figure, and its digest recorded
+        "{ATOMIC} install {input:q} {output:q} 2> {log:q}"

@@ -31,12 +31,10 @@ rule manuscript:
     shell:
         # FORCE_SOURCE_DATE makes pdfTeX take dates from SOURCE_DATE_EPOCH; the .tex file removes
         # the trailer ID and the PTEX info, so the PDF bytes depend on the sources only.
-        "rm -rf {params.build} && mkdir -p {params.build} && "
+        "rm -rf {params.build:q} && mkdir -p {params.build:q} && "
         "FORCE_SOURCE_DATE=1 SOURCE_DATE_EPOCH=${{SOURCE_DATE_EPOCH:-1700000000}} "
         "latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error "
-        "-outdir={params.build} {input.tex} > {log} 2>&1 "
-        "|| (tail -n 40 {log} >&2; exit 1); "
-        # copied under a hidden temporary name beside the output, then renamed: a killed job never
-        # leaves a truncated PDF under the final name
-        'tmp="$(dirname {output})/.$(basename {output}).$$.tmp"; '
-        'cp {params.build}/restitution.pdf "$tmp" && mv -f "$tmp" {output} || {{ rm -f "$tmp"; exit 1; }}'
+        "-outdir={params.build:q} {input.tex:q} > {log:q} 2>&1 "
+        "|| (tail -n 40 {log:q} >&2; exit 1); "
+        # through the one atomic writer: never a truncated PDF under the final name
+        "{ATOMIC} install {params.build:q}/restitution.pdf {output:q}"

@@ -42,7 +42,7 @@ STABILITY_OUTPUTS.extend([
     "results/stability/values.tex",
     "results/stability/atlas.pdf",
     "results/stability/atlas.png",
-])
+] + [f"results/stability/shards/{i}-of-{STABILITY_SHARDS}.csv" for i in range(STABILITY_SHARDS)])
 MANUSCRIPT_INPUTS.extend([
     "paper/sections/stability.tex",
     "results/stability/values.tex",
@@ -78,7 +78,7 @@ rule stability_atlas:
         shards=expand("results/stability/shards/{shard}-of-{shards}.csv",
                       shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
         src=STABILITY_SRC,
-        code=code("stability_atlas.py") + ["workflow/scripts/_latex.py"],
+        code=code("stability_atlas.py") + ["workflow/scripts/common/latex.py"],
     output:
         atlas="results/stability/atlas.csv",
         summary="results/stability/summary.csv",

@@ -24,7 +24,7 @@ rule values:
         fit=rules.connection_fit.output.json,
         errors=rules.eps_compare.output.errors,
         src=lib("model", "printed"),
-        code=code("values.py") + ["workflow/scripts/_latex.py"],
+        code=code("values.py") + ["workflow/scripts/common/latex.py"],
     output:
         tex="results/{variant}/values/values.tex",
         json="results/{variant}/values/values.json",

@@ -32,7 +32,7 @@ rule variant_section:
     input:
         values="results/{variant}/values/values.json",
         validation=rules.validation.output.json,
-        code=code("variant_section.py") + ["workflow/scripts/_latex.py"],
+        code=code("variant_section.py") + ["workflow/scripts/common/latex.py"],
     output:
         "results/{variant}/section.tex",
     log:
@@ -53,10 +53,9 @@ rule study:
     log:
         "logs/{variant}/study.log",
     shell:
-        # written under a hidden temporary name beside the output, then renamed
-        "tmp=\"$(dirname {output})/.$(basename {output}).$$.tmp\"; "
-        "(echo '{params.header}'; printf '%s\\n' {input} | LC_ALL=C sort) > \"$tmp\" 2> {log} "
-        "&& mv -f \"$tmp\" {output} || {{ rm -f \"$tmp\"; exit 1; }}"
+        # through the one atomic writer (a temporary name, then renamed; the digest recorded)
+        "(echo {params.header:q}; printf '%s\\n' {input:q} | LC_ALL=C sort) "
+        "| {ATOMIC} write {output:q} 2> {log:q}"
 
 
 rule compare_variants:
@@ -83,7 +82,7 @@ rule variants_tex:
     input:
         sections=expand("results/{variant}/section.tex", variant=EXTRA),
         validation=expand("results/{variant}/validation/validation.json", variant=list(VARIANTS)),
-        code=code("variants_tex.py") + ["workflow/scripts/_latex.py"],
+        code=code("variants_tex.py") + ["workflow/scripts/common/latex.py"],
     output:
         sections="results/paper/variants.tex",
         validation="results/paper/validation.tex",

@@ -6,18 +6,11 @@
 # Omega set. The plot puts every method on the error-cost plane; lower left is better.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("bench_section")
+import math
 
-import math  # noqa: E402
-
-import pandas as pd  # noqa: E402
-from _latex import esc, sci  # noqa: E402
-from _pipeline import save_figure, setup_matplotlib, start, write_text  # noqa: E402
+import pandas as pd
+from common.latex import esc, sci
+from common.pipeline import save_figure, setup_matplotlib, start, write_text
 
 start(snakemake)
 plt = setup_matplotlib()

@@ -12,22 +12,15 @@
 # every row that was not reproduced.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("claims")
+import math
 
-import math  # noqa: E402
+import numpy as np
+import pandas as pd
+from common.latex import esc, math_text, sentence
+from common.pipeline import read_json, start, write_csv, write_json, write_text
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _latex import esc, math_text, sentence  # noqa: E402
-from _pipeline import read_json, start, write_csv, write_json, write_text  # noqa: E402
-
-from restitution import claims as cl  # noqa: E402
-from restitution import printed  # noqa: E402
+from restitution import claims as cl
+from restitution import printed
 
 start(snakemake)
 

@@ -13,20 +13,13 @@
 # retrace the forward trajectory.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("connection_fit")
+import numpy as np
+import pandas as pd
+from common.pipeline import read_json, start, write_csv, write_json
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _pipeline import read_json, start, write_csv, write_json  # noqa: E402
-
-from restitution import connection as cn  # noqa: E402
-from restitution.errors import ParameterError  # noqa: E402
-from restitution.exponents import Exponents  # noqa: E402
+from restitution import connection as cn
+from restitution.errors import ParameterError
+from restitution.exponents import Exponents
 
 start(snakemake)
 

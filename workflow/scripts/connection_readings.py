@@ -11,22 +11,15 @@
 # damped-only motion never reaches x = 1, so there is no tau_0) every row says so.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("connection_readings")
+import math
 
-import math  # noqa: E402
+import pandas as pd
+from _config import XC_SUFFIX
+from common.latex import esc, fixed
+from common.pipeline import read_json, start, write_csv, write_json, write_text
 
-import pandas as pd  # noqa: E402
-from _config import XC_SUFFIX  # noqa: E402
-from _latex import esc, fixed  # noqa: E402
-from _pipeline import read_json, start, write_csv, write_json, write_text  # noqa: E402
-
-from restitution import connection as cn  # noqa: E402
-from restitution.errors import ParameterError  # noqa: E402
+from restitution import connection as cn
+from restitution.errors import ParameterError
 
 start(snakemake)
 

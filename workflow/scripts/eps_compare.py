@@ -10,20 +10,13 @@
 # the error table both read this file.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("eps_compare")
+import numpy as np
+import pandas as pd
+from common.latex import esc, sci
+from common.pipeline import read_json, start, write_csv, write_text
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _latex import esc, sci  # noqa: E402
-from _pipeline import read_json, start, write_csv, write_text  # noqa: E402
-
-from restitution.connection import eps_from_connection  # noqa: E402
-from restitution.exponents import Exponents  # noqa: E402
+from restitution.connection import eps_from_connection
+from restitution.exponents import Exponents
 
 start(snakemake)
 

@@ -7,18 +7,11 @@
 # truncation is from the reference.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("fig1_forward")
+import numpy as np
+import pandas as pd
+from common.pipeline import read_json, save_figure, setup_matplotlib, start
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _pipeline import read_json, save_figure, setup_matplotlib, start  # noqa: E402
-
-from restitution.series import perturbation_series  # noqa: E402
+from restitution.series import perturbation_series
 
 start(snakemake)
 plt = setup_matplotlib()

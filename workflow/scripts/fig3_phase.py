@@ -9,19 +9,12 @@
 # (restitution.damped) are drawn as markers on top of the curves.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("fig3_phase")
+from fractions import Fraction
 
-from fractions import Fraction  # noqa: E402
+import numpy as np
+from common.pipeline import save_figure, setup_matplotlib, start
 
-import numpy as np  # noqa: E402
-from _pipeline import save_figure, setup_matplotlib, start  # noqa: E402
-
-from restitution import damped  # noqa: E402
+from restitution import damped
 
 start(snakemake)
 plt = setup_matplotlib()

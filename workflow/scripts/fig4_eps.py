@@ -8,16 +8,9 @@
 # script only draws them. Where a relation gives no real eps (Omega~ <= 0) its curve has a gap.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("fig4_eps")
-
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _pipeline import save_figure, setup_matplotlib, start  # noqa: E402
+import numpy as np
+import pandas as pd
+from common.pipeline import save_figure, setup_matplotlib, start
 
 start(snakemake)
 plt = setup_matplotlib()

@@ -8,24 +8,17 @@
 # accuracy (grey line). The limits come from `restitution.asymptotics`; this script only draws.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("fig_stability")
+from fractions import Fraction
 
-from fractions import Fraction  # noqa: E402
+import numpy as np
+import pandas as pd
+from common.atomic import atomic_path
+from common.pipeline import PDF_METADATA, PNG_METADATA, setup_matplotlib, start
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _atomic import atomic_path  # noqa: E402
-from _pipeline import PDF_METADATA, PNG_METADATA, setup_matplotlib, start  # noqa: E402
-
-from restitution import stability as st  # noqa: E402
+from restitution import stability as st
 
 try:
-    from restitution import asymptotics as asy  # noqa: E402
+    from restitution import asymptotics as asy
 except ImportError:  # pragma: no cover - the limits are another stage's work
     asy = None
 

@@ -5,14 +5,7 @@
 # main variant in config.yaml needs no edit of the article.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("manuscript_inputs")
-
-from _pipeline import start, write_text  # noqa: E402
+from common.pipeline import start, write_text
 
 start(snakemake)
 

@@ -5,16 +5,9 @@
 # files of the same shape ({"label", "source", "c"}).
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("printed_relation")
+from common.pipeline import start, write_json
 
-from _pipeline import start, write_json  # noqa: E402
-
-from restitution.printed import PRINTED_C  # noqa: E402
+from restitution.printed import PRINTED_C
 
 start(snakemake)
 

@@ -6,20 +6,13 @@
 # times go to the log only (they are not reproducible, the results are).
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("reference_accuracy")
+import time
 
-import time  # noqa: E402
+import pandas as pd
+from common.pipeline import start, write_csv
 
-import pandas as pd  # noqa: E402
-from _pipeline import start, write_csv  # noqa: E402
-
-from restitution.collision import collide  # noqa: E402
-from restitution.model import Material  # noqa: E402
+from restitution.collision import collide
+from restitution.model import Material
 
 start(snakemake)
 

@@ -6,19 +6,12 @@
 # the exact connection the paper's c0 + c1 Omega + c2 Omega^2 approximates.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("reference_eps_curve")
+import numpy as np
+import pandas as pd
+from common.pipeline import start, write_csv
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _pipeline import start, write_csv  # noqa: E402
-
-from restitution.collision import collide_many  # noqa: E402
-from restitution.model import Material  # noqa: E402
+from restitution.collision import collide_many
+from restitution.model import Material
 
 start(snakemake)
 

@@ -11,20 +11,13 @@
 # which solves x~'' + Omega~ x~^alpha - x~^gamma x~' = 0 with x~(0) = x~_c, x~'(0) = 1.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("reference_trajectories")
+import numpy as np
+import pandas as pd
+from common.pipeline import start, write_csv, write_json
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _pipeline import start, write_csv, write_json  # noqa: E402
-
-from restitution.collision import collide, inverse_collide  # noqa: E402
-from restitution.errors import ParameterError  # noqa: E402
-from restitution.model import Material  # noqa: E402
+from restitution.collision import collide, inverse_collide
+from restitution.errors import ParameterError
+from restitution.model import Material
 
 start(snakemake)
 

@@ -6,16 +6,9 @@
 # rationals as strings ("-4/35"), so nothing is rounded.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("series")
+from common.pipeline import start, write_json
 
-from _pipeline import start, write_json  # noqa: E402
-
-from restitution.series import perturbation_series  # noqa: E402
+from restitution.series import perturbation_series
 
 start(snakemake)
 

@@ -7,18 +7,11 @@
 # agreement.json counts the matches for the manuscript's text.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("series_table")
+from fractions import Fraction
 
-from fractions import Fraction  # noqa: E402
+from common.pipeline import read_json, start, write_json, write_text
 
-from _pipeline import read_json, start, write_json, write_text  # noqa: E402
-
-from restitution.printed import PRINTED_SERIES  # noqa: E402
+from restitution.printed import PRINTED_SERIES
 
 start(snakemake)
 

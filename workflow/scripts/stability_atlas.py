@@ -6,24 +6,17 @@
 # checks the invariants over the whole grid, and writes the atlas, the per-pair summary, the
 # agreement with the limits, the list of violations and the appendix's numbers (LaTeX macros).
 # All physics lives in `restitution.stability`; every file is written under a temporary name
-# and renamed (`_atomic.py`).
+# and renamed (`common/atomic.py`).
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("stability_atlas")
+import math
+import time
 
-import math  # noqa: E402
-import time  # noqa: E402
+import pandas as pd
+from common.atomic import atomic_path, write_text_atomic
+from common.pipeline import start
 
-import pandas as pd  # noqa: E402
-from _atomic import atomic_path, write_text_atomic  # noqa: E402
-from _pipeline import start  # noqa: E402
-
-from restitution import stability as st  # noqa: E402
+from restitution import stability as st
 
 start(snakemake)
 spec = st.AtlasSpec.from_config(snakemake.params.spec)
@@ -96,8 +89,8 @@ if snakemake.rule == "stability_atlas":
 
 # %%
 if snakemake.rule == "stability_atlas":
-    from _latex import frac_tex, sci  # noqa: E402
-    from fractions import Fraction  # noqa: E402
+    from common.latex import frac_tex, sci
+    from fractions import Fraction
 
     def ex(text):
         return frac_tex(Fraction(text))

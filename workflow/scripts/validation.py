@@ -20,22 +20,15 @@
 # A result whose library module is missing is listed as "not available" instead of failing.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("validation")
+from fractions import Fraction
 
-from fractions import Fraction  # noqa: E402
+import numpy as np
+import pandas as pd
+from common.pipeline import start, write_csv, write_json
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _pipeline import start, write_csv, write_json  # noqa: E402
-
-from restitution.collision import collide_many  # noqa: E402
-from restitution.dashpot import dashpot_collision  # noqa: E402
-from restitution.exponents import Exponents  # noqa: E402
+from restitution.collision import collide_many
+from restitution.dashpot import dashpot_collision
+from restitution.exponents import Exponents
 
 start(snakemake)
 

@@ -9,24 +9,17 @@
 # paper's printed numbers come from `restitution.printed`.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("values")
+import math
+import re
+from fractions import Fraction
 
-import math  # noqa: E402
-import re  # noqa: E402
-from fractions import Fraction  # noqa: E402
+import numpy as np
+import pandas as pd
+from common.latex import esc, frac_tex, math_text, sci
+from common.pipeline import read_json, start, write_json, write_text
 
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-from _latex import esc, frac_tex, math_text, sci  # noqa: E402
-from _pipeline import read_json, start, write_json, write_text  # noqa: E402
-
-from restitution import printed  # noqa: E402
-from restitution.model import Material  # noqa: E402
+from restitution import printed
+from restitution.model import Material
 
 start(snakemake)
 

@@ -8,15 +8,8 @@
 # fit and no eps from a relation), the section says so instead of showing it.
 
 # %%
-if "snakemake" not in globals():  # opened as a notebook: replay the pipeline's last run
-    import pathlib, sys  # noqa: E401
-    here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-    sys.path.insert(0, str(here / "workflow" / "scripts"))
-    from _pipeline import replay
-    snakemake = replay("variant_section")
-
-from _latex import esc, math_text, sci  # noqa: E402
-from _pipeline import read_json, start, write_text  # noqa: E402
+from common.latex import esc, math_text, sci
+from common.pipeline import read_json, start, write_text
 
 start(snakemake)
 

@@ -1,11 +1,8 @@
 """Plumbing shared by the workflow scripts: logging, deterministic output, notebook replay.
 
-Every script starts with
-
-    if "snakemake" not in globals():      # opened as a notebook, not run by Snakemake
-        ...; snakemake = replay("fig1")
-
-Under Snakemake, ``start(snakemake)`` records the job (inputs, outputs, params) in
+A notebook made by `make notebooks` (workflow/tools/notebooks.py) starts with a cell that calls
+``replay(rule)`` to get the ``snakemake`` object; the scripts themselves have no such code. Under
+Snakemake, ``start(snakemake)`` records the job (inputs, outputs, params) in
 build/jobs/ so that the notebook rendered by ``make notebooks`` can replay it with the
 same files and parameters. Nothing here does physics.
 """
@@ -20,9 +17,9 @@ import pickle
 import sys
 from pathlib import Path
 
-from _atomic import atomic_path  # workflow/scripts/_atomic.py: a temporary name, then rename
+from .atomic import atomic_path  # a temporary name, then rename
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[3]
 JOBS = Path("build") / "jobs"
 _REPLAYED = False
 
@@ -100,7 +97,7 @@ def clean(obj):
 
 
 # Every writer below writes to a hidden temporary name in the output's directory and renames it
-# into place (_atomic.atomic_path), so a killed job never leaves a truncated output behind.
+# into place (common.atomic.atomic_path), so a killed job never leaves a truncated output behind.
 
 def write_json(path, obj) -> None:
     text = json.dumps(clean(obj), indent=2, allow_nan=False)
