@@ -305,6 +305,8 @@ def cmd_check(args) -> int:
         problems = compare(tree, manifest)
         if not have_tex():
             print("note: pdflatex/latexmk not found, the PDF was not built or checked")
+        if not args.tree:
+            problems += compare_with_working_tree(tree)
     if problems:
         print(f"check FAILED: {len(problems)} difference(s)")
         for p in problems:
@@ -318,6 +320,40 @@ def cmd_check(args) -> int:
     return 0
 
 
+def working_tree_is_current() -> str | None:
+    """Why this checkout's results/ is not a finished build of its sources (None if it is one)."""
+    if not (ROOT / "build" / "written.jsonl").exists():
+        return "no build here"
+    dry = subprocess.run([sys.executable, "-m", "snakemake", "--dry-run", "all" if have_tex() else "outputs"],
+                         cwd=ROOT, env={**os.environ, **ENV}, capture_output=True, text=True)
+    if dry.returncode != 0 or "Nothing to be done" not in dry.stdout + dry.stderr:
+        return "not up to date with its sources"
+    sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
+    from common.atomic import verify_written
+
+    if verify_written(ROOT) != ([], []):
+        return "changed since it was written (make verify)"
+    return None
+
+
+def differing(a: dict[str, str], b: dict[str, str]) -> list[str]:
+    return sorted(f for f in set(a) | set(b) if a.get(f) != b.get(f))
+
+
+def compare_with_working_tree(clean: Path) -> list[str]:
+    """A clean rebuild and this checkout's own finished build (`make paper` before `make check`, as
+    CI runs them) must be byte-identical, PDF included: the determinism check at no extra cost."""
+    why = working_tree_is_current()
+    if why:
+        print(f"note: results/ of this checkout not compared ({why}); `make reproducible` checks determinism")
+        return []
+    mine, theirs = digest_results(ROOT), digest_results(clean)
+    bad = differing(mine, theirs)
+    if not bad:
+        print(f"and byte-identical to this checkout's results/ ({len(mine)} files): two builds agree")
+    return [f"{f}: differs from this checkout's results/ (not reproducible)" for f in bad]
+
+
 def cmd_twice(args) -> int:
     with tempfile.TemporaryDirectory(prefix="restitution-twice-") as tmp:
         digests = []
@@ -326,7 +362,7 @@ def cmd_twice(args) -> int:
             print(f"build {name}: {elapsed:.1f} s")
             digests.append(digest_results(tree))
     a, b = digests
-    differ = sorted(f for f in set(a) | set(b) if a.get(f) != b.get(f))
+    differ = differing(a, b)
     if differ:
         print(f"NOT reproducible: {len(differ)} of {len(set(a) | set(b))} files differ:")
         for f in differ:
