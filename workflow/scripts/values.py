@@ -25,8 +25,6 @@ start(snakemake)
 
 #: make check tolerances (relative) by where a number comes from.
 TOLERANCE = {"exact": 0.0, "formula": 1e-12, "integration": 1e-6, "config": 0.0, "paper": 0.0}
-KINDS = {"printed": "Printed", "derived": "Derived", "fitted": "Fitted"}
-C_NAMES = ("CZero", "COne", "CTwo")
 
 
 class Values:
@@ -112,12 +110,14 @@ V.add("RTol", p.rtol, tex=sci(p.rtol, 1), kind="config")
 # %% Series agreement with the printed coefficients
 V.add("SeriesOmegaOrder", p.omega_order, kind="config")
 V.add("SeriesMaxPower", Fraction(p.max_power), kind="config")
-for d, D in (("forward", "Fwd"), ("inverse", "Inv")):
+for d, terms, printed_n, agree, differ in (
+        ("forward", "SeriesTermsFwd", "SeriesPrintedFwd", "SeriesAgreeFwd", "SeriesDifferFwd"),
+        ("inverse", "SeriesTermsInv", "SeriesPrintedInv", "SeriesAgreeInv", "SeriesDifferInv")):
     a = agreement[d]
-    V.add(f"SeriesTerms{D}", a["ours"], kind="exact", note="nonzero coefficients we derive")
-    V.add(f"SeriesPrinted{D}", a["printed_within_max_power"], kind="exact")
-    V.add(f"SeriesAgree{D}", a["agree"], kind="exact")
-    V.add(f"SeriesDiffer{D}", len(a["differ"]), kind="exact")
+    V.add(terms, a["ours"], kind="exact", note="nonzero coefficients we derive")
+    V.add(printed_n, a["printed_within_max_power"], kind="exact")
+    V.add(agree, a["agree"], kind="exact")
+    V.add(differ, len(a["differ"]), kind="exact")
 
 # %% Impact-speed range of figure 4
 V.add("GMin", float(curve["g"].min()), tex=f"{curve['g'].min():g}", kind="config")
@@ -156,8 +156,8 @@ V.add("FigReading", chosen["reading"] if chosen else "none", tex=rf"\texttt{{{es
       if chosen else "none", kind="exact", note="reading drawn in figure 4")
 V.add("FigReadingText", chosen["description"] if chosen else "", tex=math_text(chosen["description"])
       if chosen else "", kind="exact")
-for i, name in enumerate(C_NAMES):
-    V.add(f"Fig{name}", chosen["c"][i] if chosen else None, kind="formula",
+for i, name in enumerate(("FigCZero", "FigCOne", "FigCTwo")):
+    V.add(name, chosen["c"][i] if chosen else None, kind="formula",
           note="c_i of the figure-4 reading (sympy/mpmath, deterministic)")
 if chosen:
     V.add("FigTauZero", chosen["tau0"], kind="formula")
@@ -179,9 +179,10 @@ V.add("FitPoints", fit["n"], kind="exact")
 if fit["applies"]:
     V.add("FitOmegaMin", fit["omega_min"], kind="formula")
     V.add("FitOmegaMax", fit["omega_max"], kind="formula")
-    for i, name in enumerate(C_NAMES):
-        V.add(f"Fit{name}", fit["c"][i], sig=4)
-        V.add(f"Fit{name}Err", fit["stderr"][i], sig=2, note="OLS standard error (model misfit)")
+    for i, (name, err) in enumerate((("FitCZero", "FitCZeroErr"), ("FitCOne", "FitCOneErr"),
+                                     ("FitCTwo", "FitCTwoErr"))):
+        V.add(name, fit["c"][i], sig=4)
+        V.add(err, fit["stderr"][i], sig=2, note="OLS standard error (model misfit)")
     V.add("FitMaxResidual", fit["max_abs_residual"], sig=2)
     V.add("FitRMS", fit["rms"], sig=2)
     V.add("FitMaxRelResidual", fit["max_rel_residual"], sig=2)
@@ -195,16 +196,27 @@ if "max_deviation" in rt:
     V.add("RetraceSamples", rt["samples"], kind="exact")
 
 # %% eps(g) every way (eps_compare.py)
+ERROR_COLUMNS = ("max_abs_error", "median_abs_error", "max_rel_error", "median_rel_error", "max_rel_error_fit_range")
+#: kind -> (defined, one macro per ERROR_COLUMNS, undefined count, count above one)
+EPS_MACROS = {
+    "printed": ("PrintedEpsDefined", ("PrintedEpsMaxAbs", "PrintedEpsMedianAbs", "PrintedEpsMaxRel",
+                                      "PrintedEpsMedianRel", "PrintedEpsMaxRelFit"),
+                "PrintedEpsUndefined", "PrintedEpsAboveOne"),
+    "derived": ("DerivedEpsDefined", ("DerivedEpsMaxAbs", "DerivedEpsMedianAbs", "DerivedEpsMaxRel",
+                                      "DerivedEpsMedianRel", "DerivedEpsMaxRelFit"),
+                "DerivedEpsUndefined", "DerivedEpsAboveOne"),
+    "fitted": ("FittedEpsDefined", ("FittedEpsMaxAbs", "FittedEpsMedianAbs", "FittedEpsMaxRel",
+                                    "FittedEpsMedianRel", "FittedEpsMaxRelFit"),
+               "FittedEpsUndefined", "FittedEpsAboveOne"),
+}
 for _, r in errors.iterrows():
-    K = KINDS[r["kind"]]
+    defined_name, error_names, undefined_name, above_name = EPS_MACROS[r["kind"]]
     defined = int(r["n_defined"]) > 0
-    V.add(f"{K}EpsDefined", defined, kind="exact")
-    for col, name in (("max_abs_error", "MaxAbs"), ("median_abs_error", "MedianAbs"),
-                      ("max_rel_error", "MaxRel"), ("median_rel_error", "MedianRel"),
-                      ("max_rel_error_fit_range", "MaxRelFit")):
-        V.add(f"{K}Eps{name}", float(r[col]) if defined and r[col] != "" else None, sig=2)
-    V.add(f"{K}EpsUndefined", int(r["n_undefined"]), kind="exact", note="speeds with Omega~ <= 0 (no eps)")
-    V.add(f"{K}EpsAboveOne", int(r["n_above_one"]), kind="exact", note="speeds with eps > 1")
+    V.add(defined_name, defined, kind="exact")
+    for col, name in zip(ERROR_COLUMNS, error_names):
+        V.add(name, float(r[col]) if defined and r[col] != "" else None, sig=2)
+    V.add(undefined_name, int(r["n_undefined"]), kind="exact", note="speeds with Omega~ <= 0 (no eps)")
+    V.add(above_name, int(r["n_above_one"]), kind="exact", note="speeds with eps > 1")
 
 # %% The claims ledger (paper's exponents only)
 if p.claims:
@@ -216,17 +228,24 @@ if p.claims:
     V.add("ClaimsNotReproduced", int(counts.get("not reproduced", 0)), kind="exact")
     V.add("ClaimsAmbiguous", int(counts.get("ambiguous", 0)), kind="exact")
     # Row numbers of the ledger, so the text can point at them (rows are found by their claim).
-    ROWS = {"RowDstar": "D* =", "RowOmega": "Omega at g", "RowTauB": "tau_b at g",
-            "RowFwdTrack": "higher-order forward series", "RowFirstOrder": "for tau > 2",
-            "RowInvTrack": "higher-order inverse series", "RowRadiusFwd": "forward damped-only Taylor",
-            "RowRadiusInv": "inverse damped-only Taylor", "RowInvForm": "x~0 = G tanh",
-            "RowDelta": "Delta = tau_b", "RowFitCZero": "c0 against the least-squares",
-            "RowRelation": "Omega~(Omega) = c0", "RowOmegaScaling": "Omega proportional",
-            "RowEpsScaling": "eps has terms", "RowShape": "shape of figure 4", "RowFigFour": "eps(g) from the printed"}
-    for name, prefix in ROWS.items():
+    ROWS = (("RowDstar", "VerdictDstar", "D* ="), ("RowOmega", "VerdictOmega", "Omega at g"),
+            ("RowTauB", "VerdictTauB", "tau_b at g"),
+            ("RowFwdTrack", "VerdictFwdTrack", "higher-order forward series"),
+            ("RowFirstOrder", "VerdictFirstOrder", "for tau > 2"),
+            ("RowInvTrack", "VerdictInvTrack", "higher-order inverse series"),
+            ("RowRadiusFwd", "VerdictRadiusFwd", "forward damped-only Taylor"),
+            ("RowRadiusInv", "VerdictRadiusInv", "inverse damped-only Taylor"),
+            ("RowInvForm", "VerdictInvForm", "x~0 = G tanh"), ("RowDelta", "VerdictDelta", "Delta = tau_b"),
+            ("RowFitCZero", "VerdictFitCZero", "c0 against the least-squares"),
+            ("RowRelation", "VerdictRelation", "Omega~(Omega) = c0"),
+            ("RowOmegaScaling", "VerdictOmegaScaling", "Omega proportional"),
+            ("RowEpsScaling", "VerdictEpsScaling", "eps has terms"),
+            ("RowShape", "VerdictShape", "shape of figure 4"),
+            ("RowFigFour", "VerdictFigFour", "eps(g) from the printed"))
+    for row_name, verdict_name, prefix in ROWS:
         hit = ledger[ledger["claim"].str.startswith(prefix)]
-        V.add(name, int(hit["row"].iloc[0]), kind="exact", note=prefix)
-        V.add(name.replace("Row", "Verdict", 1), hit["verdict"].iloc[0], kind="exact")
+        V.add(row_name, int(hit["row"].iloc[0]), kind="exact", note=prefix)
+        V.add(verdict_name, hit["verdict"].iloc[0], kind="exact")
     reading_rows = ledger[ledger["claim"].str.contains("procedure, reading")]
     V.add("RowReadingsFirst", int(reading_rows["row"].min()), kind="exact")
     V.add("RowReadingsLast", int(reading_rows["row"].max()), kind="exact")
@@ -241,8 +260,8 @@ if p.claims:
     V.add("PaperEpsExponent", Fraction(printed.EPS_G_EXPONENT), kind="paper")
     V.add("PaperFwdDiverge", printed.FORWARD_DIVERGENCE_TAU, tex=f"{printed.FORWARD_DIVERGENCE_TAU}", kind="paper")
     V.add("PaperInvDiverge", printed.INVERSE_DIVERGENCE_TAU, tex=f"{printed.INVERSE_DIVERGENCE_TAU}", kind="paper")
-    for i, name in enumerate(C_NAMES):
-        V.add(f"{name}Paper", printed.PRINTED_C[i], tex=rf"\ensuremath{{{printed.PRINTED_C[i]}}}", kind="paper")
+    for i, name in enumerate(("CZeroPaper", "COnePaper", "CTwoPaper")):
+        V.add(name, printed.PRINTED_C[i], tex=rf"\ensuremath{{{printed.PRINTED_C[i]}}}", kind="paper")
     V.add("OmegaRatio", printed.OMEGA_AT_G / cv["omega_at_g"], kind="formula", note="printed / ours")
     # The impact speed at which our (and the paper's) formula gives the printed Omega.
     V.add("GForPaperOmega", (printed.OMEGA_AT_G / mat.omega(1.0)) ** (1.0 / float(ex.omega_exponent)),
@@ -262,11 +281,13 @@ if p.claims:
     def first(d, pick):
         vals = [v for k, v in d.items() if int(k) >= 2 and v is not None]
         return pick(vals) if vals else None
-    for key, name in ((keys[0], "Low"), (mid, ""), (keys[-1], "High")):
-        V.add(f"FwdDepart{name}", first(tr["forward"][key], min), note="first departure, orders >= 2")
-        V.add(f"InvDepartPaper{name}", first(tr["inverse_tau_paper"][key], max),
-              note="inverse, forward time tau_c - tau~")
-        V.add(f"InvDepartScaled{name}", first(tr["inverse_tau_scaled"][key], max),
+    for key, fwd, inv_paper, inv_scaled in (
+            (keys[0], "FwdDepartLow", "InvDepartPaperLow", "InvDepartScaledLow"),
+            (mid, "FwdDepart", "InvDepartPaper", "InvDepartScaled"),
+            (keys[-1], "FwdDepartHigh", "InvDepartPaperHigh", "InvDepartScaledHigh")):
+        V.add(fwd, first(tr["forward"][key], min), note="first departure, orders >= 2")
+        V.add(inv_paper, first(tr["inverse_tau_paper"][key], max), note="inverse, forward time tau_c - tau~")
+        V.add(inv_scaled, first(tr["inverse_tau_scaled"][key], max),
               note="inverse, forward time with the time scale applied")
     V.add("FwdDepartOrderOne", tr["forward"][mid]["1"])
     V.add("FirstOrderBetterShare", 100.0 * tr["first_order_best_after_2"], sig=2,
