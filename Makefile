@@ -44,11 +44,12 @@ GUARDED      := PYTHONPATH=workflow/scripts $(BIN)/python workflow/tools/guard.p
 QUIET        := --quiet host rules
 PDF          := results/paper/restitution.pdf
 # The only TeX the manuscript needs (article, amsmath/amssymb, graphicx, booktabs, microtype,
-# geometry, hyperref, bibtex, latexmk), as Debian packages.
-TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk
+# geometry, hyperref, bibtex, latexmk), as Debian packages, and poppler-utils (pdfinfo, pdftotext,
+# pdftoppm) with which the tests read the PDF.
+TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk poppler-utils
 HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/null 2>&1
 
-.PHONY: paper tex outputs verify check expected reproducible bench notebooks
+.PHONY: paper tex outputs verify arxiv check expected reproducible bench notebooks
 
 # Everything, PDF included; a second run does nothing. Without TeX (and no root to install it),
 # everything except the PDF, and a message saying how to get it.
@@ -79,6 +80,12 @@ tex:
 # Everything except the PDF (no TeX needed).
 outputs: $(STAMP)
 	$(GUARDED) $(SNAKEMAKE) outputs $(QUIET)
+
+# results/paper/arxiv.tar.gz: the manuscript source, its generated inputs, figures and .bbl, which
+# compile with plain pdflatex (what arXiv runs).
+arxiv: $(STAMP) tex
+	$(GUARDED) $(SNAKEMAKE) results/paper/arxiv.tar.gz $(QUIET)
+	@echo "arXiv bundle: $(CURDIR)/results/paper/arxiv.tar.gz"
 
 # Outputs whose bytes are no longer what the pipeline wrote (make paper moves them aside and
 # rebuilds them by itself; this only reports).

@@ -30,7 +30,7 @@ include: "workflow/rules/manuscript.smk" # the reproduction article, built with 
 
 
 # Bookkeeping that a cluster executor runs on the submitting host, not as a queued job.
-localrules: all, outputs, study, main_figure, manuscript_inputs, variants_tex
+localrules: all, outputs, study, main_figure, manuscript_inputs, variants_tex, arxiv
 
 
 rule all:
@@ -38,6 +38,7 @@ rule all:
     input:
         all_outputs_but_pdf(),
         PAPER_PDF,
+        PAPER_BBL,
 
 
 rule outputs:

@@ -13,6 +13,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tarfile
 from collections import Counter
 from pathlib import Path
 
@@ -22,7 +23,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "workflow" / "tools"))
 
 import rebuild  # noqa: E402  (workflow/tools/rebuild.py)
-from pipeline_tree import ALL, copy_built  # noqa: E402
+from pipeline_tree import ALL, copy_built, make  # noqa: E402
 
 ENV = {**os.environ, **rebuild.ENV}
 
@@ -325,6 +326,37 @@ def test_the_pdf_has_no_unresolved_references(built):
     log = (built / "build/paper/restitution.log").read_text(errors="replace")
     assert "undefined" not in log.lower(), [l for l in log.splitlines() if "undefined" in l.lower()]
     assert "Rerun to get" not in log
+
+
+@pytest.mark.skipif(not (rebuild.have_tex() and shutil.which("pdfinfo") and shutil.which("pdftotext")),
+                    reason="needs pdflatex, latexmk and poppler-utils (make test installs them as root)")
+def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
+    tree = copy_built(built, tmp_path / "t")
+    proc = make(tree, "arxiv")
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    bundle = tree / "results/paper/arxiv.tar.gz"
+    with tarfile.open(bundle) as tar:
+        names = tar.getnames()
+        assert all(not n.startswith("/") and ".." not in Path(n).parts for n in names), names
+        assert "restitution.bbl" in names and not any(n.endswith(".bib") for n in names)
+        tar.extractall(tmp_path / "arxiv", filter="data")
+    for _ in range(2):   # what arXiv does: pdflatex, twice, no bibtex, nothing but the bundle
+        run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", "restitution.tex"],
+                             cwd=tmp_path / "arxiv", capture_output=True, text=True,
+                             env={**ENV, "FORCE_SOURCE_DATE": "1"})
+        assert run.returncode == 0, run.stdout[-3000:]
+    log = (tmp_path / "arxiv" / "restitution.log").read_text(errors="replace")
+    assert "undefined" not in log.lower() and "Rerun to get" not in log
+
+    def pages_and_text(pdf):
+        info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True).stdout
+        text = subprocess.run(["pdftotext", str(pdf), "-"], capture_output=True, text=True).stdout
+        return re.search(r"Pages:\s+(\d+)", info).group(1), text
+    assert pages_and_text(tmp_path / "arxiv" / "restitution.pdf") == \
+        pages_and_text(tree / "results/paper/restitution.pdf")
+    first = bundle.read_bytes()   # byte-reproducible: made again, the same bytes
+    bundle.unlink()
+    assert make(tree, "arxiv").returncode == 0 and bundle.read_bytes() == first
 
 
 def test_a_figure_script_runs_as_a_notebook(built, tmp_path):

@@ -182,6 +182,7 @@ def optional_lib(*modules):
 
 FIGURES = ["fig1", "fig2", "fig3", "fig4"]
 PAPER_PDF = "results/paper/restitution.pdf"
+PAPER_BBL = "results/paper/restitution.bbl"
 EXTRA = [name for name in VARIANTS if name != MAIN]   # variants with a generated section
 
 

@@ -23,7 +23,8 @@ rule manuscript:
         bib="paper/restitution.bib",
         generated=MANUSCRIPT_INPUTS,
     output:
-        PAPER_PDF,
+        pdf=PAPER_PDF,
+        bbl=PAPER_BBL,   # the bibliography as typeset: what an arXiv bundle carries instead of the .bib
     log:
         "logs/manuscript.log",
     params:
@@ -37,4 +38,21 @@ rule manuscript:
         "-outdir={params.build:q} {input.tex:q} > {log:q} 2>&1 "
         "|| (tail -n 40 {log:q} >&2; exit 1); "
         # through the one atomic writer: never a truncated PDF under the final name
-        "{ATOMIC} install {params.build:q}/restitution.pdf {output:q}"
+        "{ATOMIC} install {params.build:q}/restitution.bbl {output.bbl:q} && "
+        "{ATOMIC} install {params.build:q}/restitution.pdf {output.pdf:q}"
+
+
+rule arxiv:
+    """results/paper/arxiv.tar.gz: what arXiv compiles with plain pdflatex, no bibtex (`make arxiv`)."""
+    input:
+        tex="paper/restitution.tex",
+        bbl=PAPER_BBL,
+        pdf=PAPER_PDF,
+        generated=MANUSCRIPT_INPUTS,
+        code=code("arxiv_bundle.py"),
+    output:
+        "results/paper/arxiv.tar.gz",
+    log:
+        "logs/arxiv.log",
+    script:
+        script_file("arxiv_bundle.py")

@@ -60,7 +60,7 @@ HASHED_TOP = ["paper/inputs.tex", "paper/variants.tex", "paper/validation.tex", 
 VALIDATION_RTOL = 1e-2
 VALIDATION_ATOL = 1e-9
 #: Built only when TeX is available.
-REQUIRES_TEX = ["results/paper/restitution.pdf"]
+REQUIRES_TEX = ["results/paper/restitution.pdf", "results/paper/restitution.bbl"]
 
 
 def _outputs(tree: Path) -> list[Path]:
