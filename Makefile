@@ -49,7 +49,7 @@ PDF          := results/paper/restitution.pdf
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk poppler-utils
 HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/null 2>&1
 
-.PHONY: paper tex outputs verify arxiv check expected reproducible bench notebooks
+.PHONY: paper tex outputs verify arxiv report check expected reproducible bench notebooks
 
 # Everything, PDF included; a second run does nothing. Without TeX (and no root to install it),
 # everything except the PDF, and a message saying how to get it.
@@ -86,6 +86,13 @@ outputs: $(STAMP)
 arxiv: $(STAMP) tex
 	$(GUARDED) $(SNAKEMAKE) results/paper/arxiv.tar.gz $(QUIET)
 	@echo "arXiv bundle: $(CURDIR)/results/paper/arxiv.tar.gz"
+
+# results/report.html: Snakemake's report of the last build: every figure and table with its caption,
+# the code and parameters of the rule that made it, and the software versions.
+report: $(STAMP)
+	$(MAKE) --no-print-directory paper
+	$(BIN)/snakemake --report results/report.html --quiet
+	@echo "report: $(CURDIR)/results/report.html"
 
 # Outputs whose bytes are no longer what the pipeline wrote (make paper moves them aside and
 # rebuilds them by itself; this only reports).

@@ -359,6 +359,21 @@ def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
     assert make(tree, "arxiv").returncode == 0 and bundle.read_bytes() == first
 
 
+def test_the_report_carries_every_figure_and_table_with_its_rule(built, tmp_path):
+    """`make report` is Snakemake's --report of the build: the four figures of every variant, the
+    atlas, the cross-variant figure and the ledger, each with its caption and its rule's code."""
+    tree = copy_built(built, tmp_path / "t")
+    proc = snakemake(tree, "--report", "results/report.html")
+    html = (tree / "results/report.html").read_text()
+    for variant in VARIANT_NAMES:
+        for n in (1, 2, 3, 4):
+            assert f"results/{variant}/figures/fig{n}.png" in html, (variant, n, proc.stderr[-2000:])
+    for item in ("results/stability/atlas.png", "results/paper/eps_omega.png", "results/kim/claims.csv"):
+        assert item in html, item
+    assert "the reference integration against the perturbation series" in html   # a caption
+    assert "reference_trajectories" in html and "fig1_forward" in html           # the rules behind them
+
+
 def test_a_figure_script_runs_as_a_notebook(built, tmp_path):
     """As `make notebooks` renders it, the script replays the pipeline's last run of its rule."""
     tree = copy_built(built, tmp_path / "t")

@@ -57,7 +57,8 @@ rule eps_compare:
         code=code("eps_compare.py") + ["workflow/scripts/common/latex.py"],
     output:
         curves="results/{variant}/connection/eps_compare.csv",
-        errors="results/{variant}/connection/eps_errors.csv",
+        errors=report("results/{variant}/connection/eps_errors.csv", caption="../report/eps_errors.rst",
+                      category="Tables", subcategory="{variant}"),
         tex="results/{variant}/connection/eps_errors.tex",
     params:
         exponents=exponents,
@@ -78,7 +79,8 @@ rule claims:
         src=lib("claims", "connection", "collision", "model", "series", "damped", "printed"),
         code=code("claims.py") + ["workflow/scripts/common/latex.py"],
     output:
-        csv="results/{variant}/claims.csv",
+        csv=report("results/{variant}/claims.csv", caption="../report/claims.rst", category="Tables",
+                   subcategory="{variant}"),
         values="results/{variant}/claims/values.json",
         table="results/{variant}/claims/table.tex",
         discussion="results/{variant}/claims/discussion.tex",

@@ -12,7 +12,8 @@ rule fig1_forward:
         code=code("fig1_forward.py"),
     output:
         pdf="results/{variant}/figures/fig1.pdf",
-        png="results/{variant}/figures/fig1.png",
+        png=report("results/{variant}/figures/fig1.png", caption="../report/fig1.rst",
+                   category="Figures", subcategory="{variant}"),
     params:
         exponents=exponents,
         omega_order=SERIES["omega_order"],
@@ -33,7 +34,8 @@ rule fig2_inverse:
         code=code("fig2_inverse.py"),
     output:
         pdf="results/{variant}/figures/fig2.pdf",
-        png="results/{variant}/figures/fig2.png",
+        png=report("results/{variant}/figures/fig2.png", caption="../report/fig2.rst",
+                   category="Figures", subcategory="{variant}"),
     params:
         exponents=exponents,
         omega_order=SERIES["omega_order"],
@@ -52,7 +54,8 @@ rule fig3_phase:
         code=code("fig3_phase.py"),
     output:
         pdf="results/{variant}/figures/fig3.pdf",
-        png="results/{variant}/figures/fig3.png",
+        png=report("results/{variant}/figures/fig3.png", caption="../report/fig3.rst",
+                   category="Figures", subcategory="{variant}"),
     params:
         gamma=lambda wc: str(VARIANTS[wc.variant]["gamma"]),
         points=NUMERICS["phase_points"],
@@ -83,7 +86,8 @@ rule fig4_eps:
         code=code("fig4_eps.py"),
     output:
         pdf="results/{variant}/figures/fig4.pdf",
-        png="results/{variant}/figures/fig4.png",
+        png=report("results/{variant}/figures/fig4.png", caption="../report/fig4.rst",
+                   category="Figures", subcategory="{variant}"),
     params:
         exponents=exponents,
         g_figure=vparam("g_figure"),

@@ -102,7 +102,8 @@ rule fig_stability:
         code=code("fig_stability.py"),
     output:
         pdf="results/stability/atlas.pdf",
-        png="results/stability/atlas.png",
+        png=report("results/stability/atlas.png", caption="../report/atlas.rst", category="Figures",
+                   subcategory="all variants"),
     params:
         spec=STABILITY_SPEC,
     log:

@@ -66,7 +66,8 @@ rule compare_variants:
         code=code("compare_variants.py"),
     output:
         pdf="results/paper/eps_omega.pdf",
-        png="results/paper/eps_omega.png",
+        png=report("results/paper/eps_omega.png", caption="../report/eps_omega.rst", category="Figures",
+                   subcategory="all variants"),
     params:
         variants=list(VARIANTS),
         exponents={name: (str(v["alpha"]), str(v["gamma"])) for name, v in VARIANTS.items()},
