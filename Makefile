@@ -49,7 +49,7 @@ PDF          := results/paper/restitution.pdf
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk poppler-utils
 HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/null 2>&1
 
-.PHONY: paper tex outputs verify arxiv report check expected reproducible bench notebooks
+.PHONY: paper tex outputs verify arxiv report diff check expected reproducible bench notebooks
 
 # Everything, PDF included; a second run does nothing. Without TeX (and no root to install it),
 # everything except the PDF, and a message saying how to get it.
@@ -93,6 +93,20 @@ report: $(STAMP)
 	$(MAKE) --no-print-directory paper
 	$(BIN)/snakemake --report results/report.html --quiet
 	@echo "report: $(CURDIR)/results/report.html"
+
+# results/paper/diff.pdf: what changed in the paper since BASE (a git revision), changed numbers
+# included; the manuscript at BASE is built in build/diff/<commit>/ (kept for the next diff).
+diff: $(STAMP) tex
+	@test -n "$(BASE)" || { echo "make diff needs BASE=<git revision>, e.g. make diff BASE=HEAD~1" >&2; exit 2; }
+	@command -v latexdiff >/dev/null 2>&1 || { \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	    echo "Installing latexdiff (Debian package) ..."; \
+	    mkdir -p build; DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends latexdiff > build/latexdiff-install.log 2>&1 \
+	      || { DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	           DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends latexdiff; } >> build/latexdiff-install.log 2>&1; \
+	  else echo "make diff needs latexdiff: as root, apt-get install latexdiff" >&2; exit 2; fi; }
+	$(MAKE) --no-print-directory paper
+	$(BIN)/python workflow/tools/build_diff.py "$(BASE)"
 
 # Outputs whose bytes are no longer what the pipeline wrote (make paper moves them aside and
 # rebuilds them by itself; this only reports).

@@ -430,9 +430,17 @@ def test_the_check_command_fails_on_an_altered_manifest(built, tmp_path):
 
 @pytest.mark.slow
 def test_changing_d1_changes_omega_in_the_manuscript(built, tmp_path):
+    """And `make diff` marks the changed number (the copy is made a git repository: base commit =
+    the session's build, then the D1 change)."""
     tree = copy_built(built, tmp_path / "t")
+    git = lambda *a: subprocess.run(["git", "-c", "user.name=t", "-c", "user.email=t@t", *a], cwd=tree,  # noqa: E731
+                                    capture_output=True, text=True, check=True).stdout.strip()
+    git("init", "-q")
+    git("add", "-A", ".")
+    git("commit", "-q", "-m", "base")
     cfg = tree / "config.yaml"
     cfg.write_text(cfg.read_text().replace("D1: 0.000296", "D1: 0.0004"))
+    git("commit", "-q", "-am", "D1")
     old = (built / "results/kim/values/values.tex").read_text()
     rebuild.run_pipeline(tree, cores=2, target=ALL)
     new = (tree / "results/kim/values/values.tex").read_text()
@@ -441,3 +449,21 @@ def test_changing_d1_changes_omega_in_the_manuscript(built, tmp_path):
     if ALL == "all":
         assert (tree / "results/paper/restitution.pdf").read_bytes() != \
             (built / "results/paper/restitution.pdf").read_bytes()
+    if ALL != "all" or not shutil.which("latexdiff"):
+        return
+    # the base's worktree, with the session's build of the same sources in it (nothing to redo)
+    base = tree / "build" / "diff" / git("rev-parse", "HEAD~1")[:12]
+    git("worktree", "add", "-q", "--detach", str(base), "HEAD~1")
+    for name in ("results", ".snakemake", "build"):
+        shutil.copytree(built / name, base / name, symlinks=True, dirs_exist_ok=True)
+    for path in base.rglob("*"):
+        if path.is_file() and not path.is_symlink() and path.relative_to(base).parts[0] not in \
+                ("results", ".snakemake", "build", ".git"):
+            os.utime(path, (1e9, 1e9))
+    proc = subprocess.run([sys.executable, "workflow/tools/build_diff.py", "HEAD~1"], cwd=tree, env=ENV,
+                          capture_output=True, text=True)
+    assert proc.returncode == 0, proc.stdout[-2000:] + proc.stderr[-2000:]
+    assert (tree / "results/paper/diff.pdf").stat().st_size > 50_000
+    marked = (tree / "build/diff/diff.tex").read_text()
+    assert re.search(r"\\DIFdel\{[^}]*" + re.escape(get(old)), marked), "old Omega not marked as deleted"
+    assert re.search(r"\\DIFadd\{[^}]*" + re.escape(get(new)), marked), "new Omega not marked as added"
