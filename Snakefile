@@ -30,7 +30,7 @@ include: "workflow/rules/manuscript.smk" # the reproduction article, built with 
 
 
 # Bookkeeping that a cluster executor runs on the submitting host, not as a queued job.
-localrules: all, outputs, study, main_figure, manuscript_inputs, variants_tex, arxiv
+localrules: all, outputs, study, main_figure, manuscript_inputs, provenance, variants_tex, arxiv
 
 
 rule all:

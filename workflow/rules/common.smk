@@ -16,6 +16,7 @@ ROOT = Path(workflow.basedir)
 # This tree's package and workflow helpers come first, whatever is installed.
 sys.path[:0] = [str(ROOT / "src"), str(ROOT / "workflow" / "scripts")]
 
+from common.provenance import build_commit, versions
 from _config import ConfigError, check_config  # noqa: E402  (workflow/scripts/_config.py)
 
 # Every generated file carries this date instead of "now" (the Makefile exports the same value),
@@ -135,6 +136,9 @@ def lib(*modules):
     return sorted(str(Path("src/restitution") / f"{m}.py") for m in seen | {"__init__"})
 
 
+BUILD_COMMIT, BUILD_VERSIONS = build_commit(ROOT), versions()
+
+
 # The one atomic writer, for shell rules: `{ATOMIC} install SRC DEST`, `... | {ATOMIC} write DEST`.
 ATOMIC = f"{shlex.quote(sys.executable)} {shlex.quote(str(ROOT / 'workflow' / 'scripts' / 'common' / 'atomic.py'))}"
 
@@ -231,7 +235,7 @@ def all_outputs_but_pdf():
     out = [f for name in VARIANTS for f in variant_outputs(name)]
     out += [f"results/{name}/study.txt" for name in VARIANTS]
     out += [f"results/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
-    out += ["results/paper/inputs.tex", "results/paper/variants.tex", "results/paper/variants_values.tex",
+    out += ["results/paper/inputs.tex", "results/paper/provenance.tex", "results/paper/variants.tex", "results/paper/variants_values.tex",
             "results/paper/validation.tex", "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
     out += STABILITY_OUTPUTS
     out += ["results/paper/bench_table.tex", "results/paper/bench_pareto.pdf", "results/paper/bench_pareto.png"]
@@ -244,6 +248,7 @@ STABILITY_OUTPUTS = []
 # The manuscript's inputs besides paper/*.
 MANUSCRIPT_INPUTS = [
     "results/paper/inputs.tex",
+    "results/paper/provenance.tex",
     "results/paper/bench_table.tex",
     "results/paper/bench_pareto.pdf",
     "results/paper/variants.tex",

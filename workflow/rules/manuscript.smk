@@ -17,6 +17,21 @@ rule manuscript_inputs:
         script_file("manuscript_inputs.py")
 
 
+rule provenance:
+    """The commit and software versions the manuscript names (parameters: a change reruns it)."""
+    input:
+        code=code("provenance.py"),
+    output:
+        "results/paper/provenance.tex",
+    params:
+        commit=BUILD_COMMIT,
+        versions=BUILD_VERSIONS,
+    log:
+        "logs/provenance.log",
+    script:
+        script_file("provenance.py")
+
+
 rule manuscript:
     input:
         tex="paper/restitution.tex",

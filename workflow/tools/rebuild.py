@@ -59,6 +59,8 @@ HASHED_TOP = ["paper/inputs.tex", "paper/variants.tex", "paper/validation.tex", 
 #: Validation measurements are errors of order rtol: compared loosely (their pass/fail exactly).
 VALIDATION_RTOL = 1e-2
 VALIDATION_ATOL = 1e-9
+#: Made on request only (make arxiv, make diff, make report), never by a build: not compared.
+ON_REQUEST = ["results/paper/arxiv.tar.gz", "results/paper/diff.pdf", "results/report.html"]
 #: Built only when TeX is available.
 REQUIRES_TEX = ["results/paper/restitution.pdf", "results/paper/restitution.bbl"]
 
@@ -83,6 +85,14 @@ def copy_tree(dest: Path) -> Path:
     return dest
 
 
+def build_commit() -> str:
+    """What this checkout's manuscript names as its commit, for a copy that has no .git."""
+    sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
+    from common.provenance import build_commit as commit_of
+
+    return commit_of(ROOT)
+
+
 def run_pipeline(tree: Path, cores: int = 2, target: str | None = None, quiet: bool = True) -> float:
     """Run snakemake in `tree`; returns the wall time in seconds."""
     if target is None:
@@ -90,7 +100,7 @@ def run_pipeline(tree: Path, cores: int = 2, target: str | None = None, quiet: b
     cmd = [sys.executable, "-m", "snakemake", "--cores", str(cores), target]
     if quiet:
         cmd += ["--quiet", "rules"]
-    env = {**os.environ, **ENV}
+    env = {**os.environ, **ENV, "RESTITUTION_COMMIT": build_commit()}
     t0 = time.perf_counter()
     proc = subprocess.run(cmd, cwd=tree, env=env, capture_output=quiet, text=True)
     elapsed = time.perf_counter() - t0
@@ -194,7 +204,7 @@ def compare(tree: Path, manifest: dict, tex: bool | None = None) -> list[str]:
     tex = have_tex() if tex is None else tex
     out: list[str] = []
     res = tree / "results"
-    present = {str(p.relative_to(tree)) for p in _outputs(tree)}
+    present = {str(p.relative_to(tree)) for p in _outputs(tree)} - set(ON_REQUEST)
     wanted = set(manifest["files"]) | (set(manifest["requires_tex"]) if tex else set())
     for f in sorted(wanted - present):
         out.append(f"{f}: missing")
@@ -348,7 +358,8 @@ def compare_with_working_tree(clean: Path) -> list[str]:
         print(f"note: results/ of this checkout not compared ({why}); `make reproducible` checks determinism")
         return []
     mine, theirs = digest_results(ROOT), digest_results(clean)
-    bad = differing(mine, theirs)
+    # what only the checkout has (make report, arxiv, diff) is not part of a build
+    bad = differing({f: d for f, d in mine.items() if f in theirs}, theirs)
     if not bad:
         print(f"and byte-identical to this checkout's results/ ({len(mine)} files): two builds agree")
     return [f"{f}: differs from this checkout's results/ (not reproducible)" for f in bad]
