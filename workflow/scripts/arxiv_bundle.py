@@ -30,7 +30,7 @@ for name in members:
 
 # %% Write it
 buffer = io.BytesIO()
-with tarfile.open(fileobj=buffer, mode="w", format=tarfile.USTAR_FORMAT) as tar:
+with tarfile.TarFile(fileobj=buffer, mode="w", format=tarfile.USTAR_FORMAT) as tar:   # in memory
     for name in sorted(members):
         data = members[name].read_bytes()
         info = tarfile.TarInfo(name)

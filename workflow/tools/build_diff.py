@@ -36,7 +36,9 @@ def _braced(text: str, start: int) -> int:
 
 
 def _expand(text: str, macros: dict[str, str]) -> str:
-    use = re.compile(r"\\([A-Za-z]+)(?![A-Za-z])")
+    """Generated macros replaced by their values (a `\\Name{}` spacing guard goes with the macro:
+    latexdiff would otherwise split `\\texttt{...}{}` across its markup)."""
+    use = re.compile(r"\\([A-Za-z]+)(\{\})?(?![A-Za-z])")
     for _ in range(5):   # values may use other generated macros
         new = use.sub(lambda m: macros.get(m.group(1), m.group(0)), text)
         if new == text:
