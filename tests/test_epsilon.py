@@ -290,3 +290,56 @@ def test_rung_names_are_documented():
     for name in RUNG_NAMES:
         stem = name.split("-N")[0]
         assert stem in ladder.__doc__
+
+
+# ------------------------------------------------------------------------------ a tampered cache
+def _tamper(path, change, reseal: bool):
+    import hashlib
+    import json
+
+    stored = json.loads(path.read_text())
+    change(stored["content"])
+    if reseal:   # a deliberate edit that also fixes the digest: the spot checks must catch it
+        text = json.dumps(stored["content"], sort_keys=True, separators=(",", ":"))
+        stored["sha256"] = hashlib.sha256(text.encode()).hexdigest()
+    path.write_text(json.dumps(stored))
+
+
+def _panel(c, omega=0.47):
+    """The Chebyshev panel of the stored master curve that serves ``omega``."""
+    m = c["master"]
+    return m["coef"][int((math.log(omega) - m["s0"]) / m["width"])]
+
+
+@pytest.mark.parametrize("change, reseal", [
+    (lambda c: _panel(c).__setitem__(0, _panel(c)[0] + 0.01), False),
+    (lambda c: _panel(c).__setitem__(0, _panel(c)[0] + 0.01), True),
+    (lambda c: [row.__setitem__(0, row[0] + 0.01) for row in c["master"]["coef"]], True),
+    (lambda c: _panel(c, 3.0).__setitem__(1, float("nan")), False),
+])
+def test_a_tampered_calibration_is_never_used(tmp_path, change, reseal):
+    """Valid JSON with a shifted coefficient (sealed again or not) or a NaN: not used with its tight
+    bound. Without building it is refused; with building it is rebuilt and eps is right again."""
+    lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=io.StringIO())
+    lad.calibration()
+    omega = np.geomspace(0.05, 20.0, 7)
+    good = lad.evaluate(omega, tol=1e-9, method="master").eps
+    (path,) = tmp_path.glob("*.json")
+    if "master" not in json_keys(path):
+        pytest.skip("calibration layout changed")
+    _tamper(path, change, reseal)
+    fresh = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=io.StringIO())
+    assert fresh.cached_calibration() is None
+    with pytest.raises(ParameterError, match="method"):
+        fresh.evaluate(omega, tol=1e-9, method="master", build=False)
+    rebuilt = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=io.StringIO())
+    r = rebuilt.evaluate(omega, tol=1e-9, method="master")
+    np.testing.assert_allclose(r.eps, good, rtol=1e-12)
+    ref = reference_eps(as_exponents("3/2", "1"), None, omega, 1e-13)
+    assert np.max(np.abs(r.eps - ref) / ref) <= r.error_bound
+
+
+def json_keys(path):
+    import json
+
+    return json.loads(path.read_text())["content"].keys()

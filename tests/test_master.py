@@ -6,6 +6,7 @@ builds the default curve for the paper's exponents and tests the fast-rung targe
 
 from __future__ import annotations
 
+import copy
 import io
 import json
 import math
@@ -144,6 +145,23 @@ def test_atomic_write_and_load(tmp_path):
         cache.save_json_atomic(p, {"a": math.nan})
     assert cache.load_json(p) == {"a": 1}
     assert not [q for q in p.parent.iterdir() if q.suffix == ".tmp"]
+
+
+def test_a_changed_cache_file_is_refused_even_as_valid_json(tmp_path):
+    p = tmp_path / "x.json"
+    cache.save_json_atomic(p, {"coef": [[1.0, 2.0]], "rtol": 1e-12})
+    stored = json.loads(p.read_text())
+    for change in (lambda c: c["coef"][0].__setitem__(0, 1.01), lambda c: c.__setitem__("rtol", 1e-6),
+                   lambda c: c["coef"][0].__setitem__(1, "NaN")):
+        bad = copy.deepcopy(stored)
+        change(bad["content"])
+        p.write_text(json.dumps(bad))
+        err = io.StringIO()
+        assert cache.load_json(p, err) is None and "changed after it was written" in err.getvalue()
+    p.write_text('{"coef": [[1.0, 2.0]]}')   # no seal at all (an older or foreign file)
+    assert cache.load_json(p, io.StringIO()) is None
+    p.write_text(json.dumps(stored)[:20])     # truncated
+    assert cache.load_json(p, io.StringIO()) is None
 
 
 def test_get_or_build_rebuilds_corrupt_and_invalid(tmp_path):

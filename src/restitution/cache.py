@@ -3,13 +3,15 @@
 Location: ``$RESTITUTION_CACHE`` if set, else ``~/.cache/restitution``. A file is written to a
 temporary name in the same directory and renamed into place, so a reader never sees half a file and
 a killed build leaves at most a stray ``*.tmp`` behind (ignored, and cleaned up by the next write of
-the same key). A file that cannot be read or does not validate is treated as missing and rebuilt.
+the same key). Each file carries the sha256 of its content: a file that cannot be read, does not
+match its digest (changed after it was written) or does not validate is not used, but rebuilt.
 A cache directory that cannot be written is not an error: the object is built, used and a note is
 printed on stderr.
 """
 
 from __future__ import annotations
 
+import hashlib
 import json
 import os
 import sys
@@ -40,24 +42,45 @@ def cache_path(key: str, directory: Path | None = None) -> Path:
     return (directory or cache_dir()) / f"{_safe(key)}.json"
 
 
-def load_json(path: Path) -> dict | None:
-    """The stored dict, or None when the file is missing or unreadable."""
+def _digest(data: dict) -> str:
+    """sha256 of the canonical JSON of ``data`` (what was written, whatever the file's layout)."""
+    text = json.dumps(data, sort_keys=True, separators=(",", ":"), allow_nan=False)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+def load_json(path: Path, stream=None) -> dict | None:
+    """The stored dict, or None when the file is missing, unreadable, or not what was written: the
+    content must match the sha256 sealed with it, so an edited value (even valid JSON) is refused
+    and rebuilt instead of being used with the bound of the original. A damaged file is named on
+    ``stream`` (default stderr); a missing one is not."""
     try:
         with open(path, encoding="utf-8") as fh:
-            data = json.load(fh)
-    except (OSError, ValueError):
+            stored = json.load(fh)
+    except FileNotFoundError:
         return None
-    return data if isinstance(data, dict) else None
+    except (OSError, ValueError):
+        stored = None
+    try:
+        if isinstance(stored, dict) and isinstance(stored.get("content"), dict) \
+                and stored.get("sha256") == _digest(stored["content"]):
+            return stored["content"]
+    except ValueError:   # NaN or infinity in the content: never written by us
+        pass
+    print(f"restitution: the cache file {path} is damaged or was changed after it was written; "
+          "it is not used", file=sys.stderr if stream is None else stream, flush=True)
+    return None
 
 
 def save_json_atomic(path: Path, data: dict) -> None:
-    """Write ``data`` as JSON to ``path`` through a temporary file and an atomic rename."""
+    """Write ``data`` as JSON to ``path``, sealed with its sha256, through a temporary file and an
+    atomic rename."""
     path = Path(path)
+    sealed = {"sha256": _digest(data), "content": data}
     path.parent.mkdir(parents=True, exist_ok=True)
     fd, tmp = tempfile.mkstemp(prefix=path.name + ".", suffix=".tmp", dir=path.parent)
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            json.dump(data, fh, separators=(",", ":"), allow_nan=False)
+            json.dump(sealed, fh, separators=(",", ":"), allow_nan=False)
             fh.write("\n")
             fh.flush()
             os.fsync(fh.fileno())
@@ -78,7 +101,7 @@ def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict],
     """
     stream = sys.stderr if stream is None else stream
     path = cache_path(key, directory)
-    data = load_json(path)
+    data = load_json(path, stream)
     if data is not None and valid(data):
         return data
     label = what or key

@@ -282,6 +282,26 @@ RUNG_NAMES = ("paper-c", "fitted-c", *[f"perturbation-N{n}" for n in PERTURBATIO
               "reference", "highprec")
 
 
+#: Where in each Chebyshev panel a loaded master curve is checked against the integrator (a
+#: fraction of the panel's width, away from the nodes the curve was fitted on).
+SPOT_CHECK_AT = 0.37
+
+
+def _spot_checks_pass(ex: Exponents, m: MasterCurve) -> bool:
+    """Every panel of the curve agrees with a fresh integration at one point, to its own bound (plus
+    the integrator's): the sealed digest catches a damaged file, this a wrong curve (a few ms)."""
+    om = np.exp(m.s0 + (np.arange(m.coef.shape[0]) + SPOT_CHECK_AT) * m.width)
+    ref = reference_eps(ex, None, om, 1e-13)
+    err = np.abs(m.eps(om) - ref) / ref
+    return bool(np.all(err <= 10.0 * (m.bound_at(om) + integrator_bound(1e-13))))
+
+
+def _viscous_domain(ex: Exponents, omega_max: float) -> str | None:
+    """Why the viscous expansion does not serve up to ``omega_max`` (None if it does)."""
+    limit = 1e-3 if ex.alpha > ex.gamma else 1e-2   # the "force" kind of asy.viscous_limit
+    return f"Omega > {limit:g}" if omega_max > limit else None
+
+
 class Ladder:
     """The ladder for one pair of exponents (and one calibration setting / cache directory)."""
 
@@ -304,15 +324,21 @@ class Ladder:
             cal = Calibration.from_dict(d)
         except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
             return False
-        return (cal.master.alpha == self.ex.alpha and cal.master.gamma == self.ex.gamma
-                and cal.master.settings == self.settings)
+        m = cal.master
+        return (m.alpha == self.ex.alpha and m.gamma == self.ex.gamma and m.settings == self.settings
+                and bool(np.all(np.isfinite(m.coef))) and _spot_checks_pass(self.ex, m))
 
     def cached_calibration(self) -> Calibration | None:
         if self._cal is None:
             from pathlib import Path
-            d = _cache.load_json(_cache.cache_path(self.cache_key, Path(self.cache_dir) if self.cache_dir else None))
+            stream = sys.stderr if self.stream is None else self.stream
+            path = _cache.cache_path(self.cache_key, Path(self.cache_dir) if self.cache_dir else None)
+            d = _cache.load_json(path, stream)
             if d is not None and self._valid(d):
                 self._cal = Calibration.from_dict(d)
+            elif d is not None:
+                print(f"restitution: the cached master curve {path} does not pass its checks against the "
+                      "integrator; it is not used", file=stream, flush=True)
         return self._cal
 
     def calibration(self) -> Calibration:
@@ -361,7 +387,11 @@ class Ladder:
         if cal is None:
             for name in cal_names:
                 cost = COST["master"] if name == "master" else COST["relation"]
-                out.append(_Quote(name, math.nan, cost * n, reason="needs the calibration bundle (not built yet)",
+                # a rung's domain does not depend on the cache: say it first, so the answer is the
+                # same on a fresh machine and on one that built the bundle
+                outside = _viscous_domain(ex, hi) if name == "viscous" else None
+                out.append(_Quote(name, math.inf, 0.0, reason=outside) if outside else
+                           _Quote(name, math.nan, cost * n, reason="needs the calibration bundle (not built yet)",
                                   needs_cal=True))
         else:
             for name in cal_names:
@@ -412,9 +442,9 @@ class Ladder:
             return _Quote(name, math.inf, 0.0, reason=cal.unavailable[name])
         if name in ("viscous", "elastic"):
             if name == "viscous":
-                limit = 1e-2 if m.viscous.kind != "force" else 1e-3
-                if 10 ** hi10 > limit:
-                    return _Quote(name, math.inf, 0.0, reason=f"Omega > {limit:g}")
+                outside = _viscous_domain(ex, 10 ** hi10)
+                if outside:
+                    return _Quote(name, math.inf, 0.0, reason=outside)
                 model = m.viscous_bound
                 run = lambda om: _viscous_eval(m, om)  # noqa: E731
             else:
