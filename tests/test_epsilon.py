@@ -343,3 +343,18 @@ def json_keys(path):
     import json
 
     return json.loads(path.read_text())["content"].keys()
+
+
+# ------------------------------------------------------------------------------ eps never above 1
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "1"), ("1/12", "8"), ("3/2", "1/2"), ("1", "0"), ("5/2", "1/2"),
+                                          ("1", "3/2")])
+def test_eps_is_never_above_one_even_where_one_minus_eps_is_below_the_tolerance(alpha, gamma, empty_cache):
+    """Deep in the elastic regime 1 - eps falls below any tolerance: a method within its bound could
+    land above 1 (1.00000013844 at Omega = 1e14, tol 1e-6; 1 + 7e-14 from collide at 1/12, 8)."""
+    from restitution.collision import collide
+
+    for tol in (1e-6, 1e-9):
+        r = epsilon(alpha=alpha, gamma=gamma, omega=[1e6, 1e9, 1e12, 1e14], tol=tol, build=False)
+        assert np.all(r.eps <= 1.0), (r.method, r.eps)
+    for omega in (1e2, 1e6, 1e10):
+        assert collide(alpha, gamma, omega).eps <= 1.0

@@ -37,6 +37,7 @@ from scipy.integrate import solve_ivp
 
 from .errors import ParameterError, require_positive_finite
 from .exponents import Exponents, as_exponents
+from .model import at_most_one
 
 #: Accepted range of the relative tolerance.
 RTOL_MIN, RTOL_MAX = 1e-14, 1e-3
@@ -644,7 +645,7 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None) -> Collisi
     if not (0.0 < eps and math.isfinite(last.tau)):
         raise IntegrationError(f"unphysical end of contact: eps = {eps!r}, tau_c = {last.tau!r}")
     trajectory = _sample(pieces, t_eval, last.tau) if t_eval is not None else None
-    return Collision(ex.alpha, ex.gamma, omega, "forward", float(eps), float(top.tau), float(top.x),
+    return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
                      float(last.tau), float(x_c), end, rtol, trajectory)
 
 

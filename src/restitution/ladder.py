@@ -58,7 +58,7 @@ import numpy as np
 from . import asymptotics as asy
 from . import cache as _cache
 from .errors import ParameterError
-from .model import OMEGA_REPRESENTABLE
+from .model import OMEGA_REPRESENTABLE, at_most_one
 from .exponents import Exponents, as_exponents
 from .master import (MASTER_VERSION, MasterCurve, MasterSettings, build_master, integrator_bound,
                      reference_eps, stiff_omega_min)
@@ -506,6 +506,7 @@ class Ladder:
         eps = np.asarray(chosen.run(flat), dtype=float)
         if not np.all(np.isfinite(eps)):
             raise ArithmeticError(f"method {chosen.name} returned non-finite eps")
+        eps = at_most_one(eps)
         table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(chosen.bound), om, self.ex.alpha,

@@ -111,3 +111,10 @@ class Material:
     def as_dict(self) -> dict:
         return {"alpha": str(self.alpha), "gamma": str(self.gamma), "D1": self.D1, "D2": self.D2,
                 "d_star": self.d_star, "regime": self.regime}
+
+
+def at_most_one(eps):
+    """eps capped at 1. The collision only dissipates energy, so eps <= 1 exactly; a value computed
+    above 1 (integrator tolerance or rounding where 1 - eps is below them) lies within its error
+    bound of the truth, and 1 lies closer to the truth still: capping never widens the bound."""
+    return np.minimum(eps, 1.0) if isinstance(eps, np.ndarray) else min(float(eps), 1.0)
