@@ -235,3 +235,14 @@ def test_mueller_poeschel_pade_is_consistent_with_the_expansion():
     assert abs(b3 - a * b2) < 5e-6
     c4 = b2 * (b2 - a * a) + a * b3 - b4
     assert c4 == pytest.approx(asy.RAMIREZ_C2, rel=1e-5)
+
+
+@pytest.mark.parametrize("omega", [1.6e16, 2e16, 1e20, 1e100, 1e300])
+def test_equal_exponents_closed_form_deep_in_the_elastic_regime(omega):
+    """Newton's slope used to be 0/0 from Omega ~ 1.6e16 on (a traceback through `eps`): here
+    1 - eps = 2/(3 Omega) to leading order (u = 2/Omega, eps = 1 - u/3 + ...)."""
+    from restitution.asymptotics import equal_exponents_eps
+
+    eps = float(equal_exponents_eps(omega))
+    assert math.isfinite(eps) and eps <= 1.0
+    assert 1.0 - eps == pytest.approx(2.0 / (3.0 * omega), rel=1e-3, abs=2.3e-16)

@@ -358,3 +358,18 @@ def test_eps_is_never_above_one_even_where_one_minus_eps_is_below_the_tolerance(
         assert np.all(r.eps <= 1.0), (r.method, r.eps)
     for omega in (1e2, 1e6, 1e10):
         assert collide(alpha, gamma, omega).eps <= 1.0
+
+
+@pytest.mark.slow   # mpmath at both ends: about a minute
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "1")])
+def test_the_promised_omega_range_works_on_an_empty_cache(alpha, gamma, empty_cache):
+    """README: eps covers Omega in [1e-300, 1e300]. On an empty cache and without building, the
+    extremes used to be refused by the scipy reference, which quoted a bound outside its range.
+    (For alpha = 3/2, gamma = 1/2 the answer comes from mpmath too, but takes minutes.)"""
+    ex = as_exponents(alpha, gamma)
+    r = epsilon(alpha=alpha, gamma=gamma, omega=[1e-300], tol=1e-9, build=False)
+    k = float(ex.gamma + 1) ** (float(ex.alpha - ex.gamma) / float(ex.gamma + 1))  # viscous limit eps/Omega
+    np.testing.assert_allclose(r.eps, k * 1e-300, rtol=1e-9)
+    assert np.all(epsilon(alpha=alpha, gamma=gamma, omega=[1e300], tol=1e-9, build=False).eps <= 1.0)
+    quotes = {q.name: q for q in Ladder(alpha, gamma).quotes(np.array([1e-300]), 1e-9)}
+    assert not math.isfinite(quotes["reference"].bound) and quotes["reference"].run is None

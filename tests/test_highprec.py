@@ -211,3 +211,13 @@ def test_caller_precision_untouched():
 def test_bad_parameters(kwargs):
     with pytest.raises(ParameterError):
         reference_collision(**kwargs)
+
+
+@pytest.mark.parametrize("alpha, gamma, omega", [("1/11", "1/12", 1.0), ("5/12", "7/11", 3.0), ("11/12", "1/11", 0.5)])
+def test_denominators_eleven_and_twelve_agree_with_the_scipy_reference(alpha, gamma, omega):
+    """p = 132: the Taylor order must reach past the gap of the sparse series at u = 0 (it used to
+    fail with an IndexError, and a too-short series would have looked converged)."""
+    from restitution.collision import collide
+
+    ref = reference_collision(alpha, gamma, omega, digits=16)
+    assert float(ref.eps) == pytest.approx(collide(alpha, gamma, omega).eps, rel=1e-9)

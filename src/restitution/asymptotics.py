@@ -281,11 +281,19 @@ def _eps_of_u(u: np.ndarray) -> np.ndarray:
 
 
 def _deps_du(u: np.ndarray, e: np.ndarray) -> np.ndarray:
-    """d eps / du = (N' D - N D') / D^2 with N' = u e^-u, D' = 1 - e^-u (used for Newton only)."""
+    """d eps / du = (N' D - N D') / D^2 with N' = u e^-u, D' = 1 - e^-u (used for Newton only).
+    For small u, D = u - 1 + e^-u cancels to nothing (0/0 from u ~ 1e-16, Omega ~ 2e16): there a
+    central difference of the stable eps(u) instead (Newton needs only an approximate slope)."""
     em = np.exp(-u)
     D = u + np.expm1(-u)
     N = e * D
-    return (u * em * D - N * (-np.expm1(-u))) / (D * D)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):   # replaced where it matters
+        exact = (u * em * D - N * (-np.expm1(-u))) / (D * D)
+    small = u < 0.5
+    if np.any(small):
+        h = 1e-4 * u[small]
+        exact[small] = (_eps_of_u(u[small] + h) - _eps_of_u(u[small] - h)) / (2.0 * h)
+    return exact
 
 
 def equal_exponents_eps(omega) -> np.ndarray:

@@ -342,7 +342,11 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int) -> dict:
     dps = eff + _GUARD_DIGITS
     with mp.workdps(dps):
         omega = _to_mpf(omega_in)
-        order = _order_for(eff)
+        # At u = 0 the series are sparse (powers of u^d with d up to p + q): the order must reach
+        # past the first gap, or the truncated series would look converged while it is not (with
+        # denominators 11 and 12, p = 132 is far beyond the order that the tolerance asks for).
+        p_ = math.lcm(alpha.denominator, gamma.denominator)
+        order = max(_order_for(eff), p_ + int(max(alpha, gamma) * p_) + 3)
         log2_tol = -(eff + _TOL_EXTRA) * math.log2(10)
         model = _Model(alpha, gamma, omega, order)
         p = model.p

@@ -418,10 +418,16 @@ class Ladder:
             out.append(_Quote("integrator", integrator_bound(rtol), cost, f"rtol={rtol:.3g}",
                               run=lambda om, r=rtol: reference_eps(ex, None, om, r)))
 
-        # scipy reference
+        # scipy reference, only where its accuracy was verified (collision.OMEGA_RANGE)
+        from .collision import OMEGA_RANGE
+
         rtol_s = min(1e-6, max(1e-14, (tol - 1e-13) / 20.0))
-        out.append(_Quote("reference", 10.0 * rtol_s + 1e-13, COST["reference"] * n, f"rtol={rtol_s:.3g}",
-                          run=lambda om, r=rtol_s: _scipy_eps(ex, om, r)))
+        if lo < OMEGA_RANGE[0] or hi > OMEGA_RANGE[1]:
+            out.append(_Quote("reference", math.inf, math.inf,
+                              reason=f"Omega outside [{OMEGA_RANGE[0]:g}, {OMEGA_RANGE[1]:g}] (its verified range)"))
+        else:
+            out.append(_Quote("reference", 10.0 * rtol_s + 1e-13, COST["reference"] * n, f"rtol={rtol_s:.3g}",
+                              run=lambda om, r=rtol_s: _scipy_eps(ex, om, r)))
 
         # mpmath reference
         if not big and lo < 1e-3:
