@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 from fractions import Fraction
 
 import jsonschema
@@ -30,8 +31,9 @@ def _field(config: dict, path) -> str:
     for part in path:
         if isinstance(part, int):
             name = node[part].get("name") if isinstance(node, list) and isinstance(node[part], dict) else None
-            # a name too long to be valid would swamp the line: the index instead
-            out += f"[{name}]" if isinstance(name, str) and len(name) <= MAX_NAME else f"[{part}]"
+            # only a valid name labels the field: a long one would swamp the line, a newline break it
+            valid = isinstance(name, str) and len(name) <= MAX_NAME and re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", name)
+            out += f"[{name}]" if valid else f"[{part}]"
         else:
             out += f".{part}" if out else str(part)
         try:
@@ -288,16 +290,64 @@ def reading_labels() -> list[str]:
 
 
 
+#: Far above any real configuration, far below what takes a parser long (an alias bomb expands
+#: a few hundred bytes into gigabytes: its expanded size is counted before anything is built).
+MAX_CONFIG_BYTES = 1_000_000
+MAX_NODES = 100_000
+
+
+def _expanded_nodes(node, sizes: dict) -> int:
+    """Nodes the document would have with every alias expanded (an alias shares its anchor's node)."""
+    if id(node) not in sizes:
+        sizes[id(node)] = 0   # a recursive alias counts once
+        children = node.value if isinstance(node, yaml.SequenceNode) else \
+            [n for pair in node.value for n in pair] if isinstance(node, yaml.MappingNode) else []
+        sizes[id(node)] = min(MAX_NODES + 1, 1 + sum(_expanded_nodes(c, sizes) for c in children))
+    return sizes[id(node)]
+
+
+class _StrictLoader(yaml.SafeLoader):
+    """PyYAML's safe loader, refusing a key given twice in one mapping (it would keep the last)."""
+
+    def construct_mapping(self, node, deep=False):
+        seen = {}
+        for key_node, _ in node.value:
+            key = self.construct_object(key_node, deep=True)
+            if key in seen:
+                raise ConfigError(f"line {key_node.start_mark.line + 1}: {key} = given twice in one mapping "
+                                  f"(also on line {seen[key] + 1}): each key at most once")
+            seen[key] = key_node.start_mark.line
+        return super().construct_mapping(node, deep)
+
+
 def read_config_file(path) -> dict:
-    """config.yaml as a mapping, or ConfigError with one line giving the line of a YAML syntax
-    error (Snakemake's own message for it is two lines and names no line of the file)."""
+    """config.yaml as a mapping, or ConfigError with one line: a YAML syntax error with its line
+    (Snakemake's own message is two lines and names none), a missing, empty, non-UTF-8 or oversized
+    file, a key given twice, or more aliases than a configuration needs (an alias bomb)."""
     try:
-        with open(path) as fh:
-            text = fh.read()
+        with open(path, "rb") as fh:
+            raw = fh.read(MAX_CONFIG_BYTES + 1)
+    except FileNotFoundError:
+        raise ConfigError(f"{path}: not found (the study's settings; see README.md)") from None
     except OSError as err:
         raise ConfigError(f"{path}: cannot be read: {err.strerror}") from None
+    if len(raw) > MAX_CONFIG_BYTES:
+        raise ConfigError(f"{path}: larger than {MAX_CONFIG_BYTES} bytes: not a configuration")
     try:
-        data = yaml.safe_load(text)
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as err:
+        line = raw[:err.start].count(b"\n") + 1
+        raise ConfigError(f"{path}, line {line}: byte 0x{raw[err.start]:02x} is not UTF-8 text") from None
+    if not text.strip() or all(not l.strip() or l.lstrip().startswith("#") for l in text.splitlines()):
+        raise ConfigError(f"{path}: empty: it must set main_variant and variants (see README.md)")
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        if root is not None and _expanded_nodes(root, {}) > MAX_NODES:
+            raise ConfigError(f"{path}: its YAML aliases (*name) expand to more than {MAX_NODES} values: "
+                              "not a configuration")
+        data = yaml.load(text, Loader=_StrictLoader)  # noqa: S506 - a SafeLoader subclass
+    except ConfigError as err:
+        raise ConfigError(f"{path}, {err}" if str(err).startswith("line ") else str(err)) from None
     except yaml.YAMLError as err:
         mark = getattr(err, "problem_mark", None) or getattr(err, "context_mark", None)
         where = f"{path}, line {mark.line + 1}, column {mark.column + 1}" if mark else str(path)
@@ -316,13 +366,11 @@ def read_config_file(path) -> dict:
 
 def precheck_file(path) -> None:
     """For the Snakefile, before its `configfile:` loads ``path``: a YAML syntax error becomes
-    one line, "config error: <path>, line N, column M: ...", and exit status 2. A missing file
-    is left to Snakemake (which says so)."""
+    one line, "config error: <path>, line N, column M: ...", and exit status 2; so does a missing,
+    empty or non-UTF-8 file, a duplicated key and an alias bomb (read_config_file)."""
     import os
     import sys
 
-    if not os.path.exists(path):
-        return
     try:
         read_config_file(path)
     except ConfigError as err:

@@ -1,0 +1,95 @@
+"""Configuration that used to slip through: duplicate keys, alias bombs, empty, non-UTF-8 or
+missing files, variant names with a newline or a shell metacharacter. Each is refused in one line
+naming the field (or the line of the file), before anything runs."""
+
+from __future__ import annotations
+
+import copy
+import sys
+import time
+from pathlib import Path
+
+import pytest
+import yaml
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
+
+import _config  # noqa: E402
+
+from pipeline_tree import snakemake  # noqa: E402
+
+SCHEMA = str(ROOT / "workflow" / "schemas" / "config.schema.yaml")
+BASE = (ROOT / "config.yaml").read_text()
+
+
+def refused(tmp_path, text: str | bytes) -> str:
+    path = tmp_path / "config.yaml"
+    path.write_bytes(text if isinstance(text, bytes) else text.encode())
+    with pytest.raises(_config.ConfigError) as err:
+        _config.read_config_file(path)
+    return str(err.value)
+
+
+@pytest.mark.parametrize("old, new, key", [
+    ("D1: 0.000296", "D1: 0.000296\n    D1: 0.0004", "D1"),
+    ("main_variant: kim", "main_variant: kim\nmain_variant: hertz", "main_variant"),
+])
+def test_a_key_given_twice_is_refused_with_both_lines(tmp_path, old, new, key):
+    assert old in BASE
+    message = refused(tmp_path, BASE.replace(old, new, 1))
+    assert f"{key} = given twice" in message and "line" in message
+
+
+@pytest.mark.parametrize("field", ["readings", "accuracy_rtols", "extra_variants"])
+def test_an_alias_bomb_is_refused_at_once(tmp_path, field):
+    levels = ["a: &a [x, x, x, x, x, x, x, x, x]"]
+    for i, name in enumerate("bcdefghij"):
+        prev = "abcdefghij"[i]
+        levels.append(f"{name}: &{name} [{', '.join(['*' + prev] * 9)}]")
+    text = "\n".join(levels) + f"\n{field}: [*j, *j, *j]\n"
+    t0 = time.monotonic()
+    assert "expand to more than" in refused(tmp_path, text)
+    assert time.monotonic() - t0 < 5
+
+
+def test_a_few_aliases_are_fine(tmp_path):
+    path = tmp_path / "c.yaml"
+    path.write_text("common: &c {points: 5}\nx: *c\ny: *c\n")
+    assert _config.read_config_file(path) == {"common": {"points": 5}, "x": {"points": 5}, "y": {"points": 5}}
+
+
+@pytest.mark.parametrize("text, words", [
+    ("", "empty"), ("# only a comment\n\n", "empty"), (b"main_variant: k\xffim\n", "is not UTF-8"),
+    (b"\xfe\xff\x00m", "is not UTF-8"),
+])
+def test_empty_or_non_utf8_config_is_one_line(tmp_path, text, words):
+    message = refused(tmp_path, text)
+    assert words in message and "\n" not in message
+
+
+def test_a_missing_config_is_one_line(tmp_path):
+    with pytest.raises(_config.ConfigError, match="not found"):
+        _config.read_config_file(tmp_path / "nothing.yaml")
+
+
+@pytest.mark.parametrize("name", ["hertz\n", "hertz\ntouch PWNED", "a;b", "a|b", "a&b", "a$b", "a`b`", "a'b",
+                                  'a"b', "a\\b", "a b", "a\tb", "-x", "..", "a/b", "a\x00b", "a\rb"])
+def test_variant_names_with_shell_or_control_characters_are_refused(name):
+    cfg = yaml.safe_load(BASE)
+    cfg = copy.deepcopy(cfg)
+    cfg["variants"][1]["name"] = name
+    with pytest.raises(_config.ConfigError) as err:
+        _config.check_config(cfg, SCHEMA)
+    assert "name" in str(err.value)
+
+
+def test_through_snakemake_each_is_one_line_and_exit_2(fresh):
+    for text in ("", BASE.replace("D1: 0.000296", "D1: 0.000296\n    D1: 0.0004", 1),
+                 BASE.replace("name: hertz", 'name: "hertz\\n"', 1)):
+        (fresh / "config.yaml").write_text(text)
+        proc = snakemake(fresh, "--dry-run", "outputs")
+        lines = [line for line in proc.stderr.splitlines() if line.strip()]
+        assert proc.returncode == 2, proc.stderr[-2000:]
+        assert len(lines) == 1 and lines[0].startswith("config error:"), proc.stderr[-2000:]
+    assert not (fresh / "results").exists() or not any((fresh / "results").rglob("*.csv"))
