@@ -93,3 +93,14 @@ def test_through_snakemake_each_is_one_line_and_exit_2(fresh):
         assert proc.returncode == 2, proc.stderr[-2000:]
         assert len(lines) == 1 and lines[0].startswith("config error:"), proc.stderr[-2000:]
     assert not (fresh / "results").exists() or not any((fresh / "results").rglob("*.csv"))
+
+
+@pytest.mark.parametrize("max_power, allowed", [(1_000_000_000, "400"), ("201", "200"), (250, "200")])
+def test_a_series_length_the_engine_cannot_serve_is_refused_before_anything_runs(max_power, allowed):
+    """`series: max_power: 1000000000` used to pass, then every series job failed and deleted good
+    outputs; the limit depends on the exponents' denominator (p = 2 for the paper's)."""
+    cfg = yaml.safe_load(BASE)
+    cfg["series"]["max_power"] = max_power
+    with pytest.raises(_config.ConfigError) as err:
+        _config.check_config(cfg, SCHEMA)
+    assert str(err.value).startswith("series.max_power") and allowed in str(err.value)

@@ -243,12 +243,25 @@ def check_config(config: dict, schema_path: str) -> dict:
     from restitution.exponents import Exponents
 
     labels = reading_labels()
+    max_power = config["series"]["max_power"]
+    try:
+        max_power = Fraction(str(max_power))
+        if max_power < 1:
+            raise ValueError
+    except (ValueError, ZeroDivisionError):
+        raise ConfigError(f"series.max_power = {config['series']['max_power']!r}: "
+                          "must be a rational number >= 1") from None
     for v in every:
         where = "variants" if v in config["variants"] else "extra_variants"
         try:
-            Exponents.parse(v["alpha"], v["gamma"])
+            ex = Exponents.parse(v["alpha"], v["gamma"])
         except ParameterError as err:
             raise ConfigError(f"{where}[{v['name']}].{err}") from None
+        # the series engine's limit (restitution.series: 400 powers of tau^(1/p)); checked here so
+        # that a value it cannot serve stops the run before any job, not inside every series job
+        if max_power * ex.p > SERIES_MAX_INDEX:
+            raise ConfigError(f"series.max_power = {max_power}: must be at most {Fraction(SERIES_MAX_INDEX, ex.p)} "
+                              f"for variant {v['name']} (exponent denominator p = {ex.p})")
         g = v["g_range"]
         if not g["min"] < g["max"]:
             raise ConfigError(f"{where}[{v['name']}].g_range.max = {g['max']!r}: "
@@ -265,15 +278,11 @@ def check_config(config: dict, schema_path: str) -> dict:
     if config["connection"]["figure_reading"] not in labels:
         raise ConfigError(f"connection.figure_reading = {config['connection']['figure_reading']!r}: "
                           f"must be one of {', '.join(labels)}")
-    max_power = config["series"]["max_power"]
-    try:
-        if Fraction(str(max_power)) < 1:
-            raise ValueError
-    except (ValueError, ZeroDivisionError):
-        raise ConfigError(f"series.max_power = {max_power!r}: "
-                          "must be a rational number >= 1") from None
     return config
 
+
+#: Highest index k of tau^(k/p) the series engine computes (restitution.series).
+SERIES_MAX_INDEX = 400
 
 #: Suffix of the reading whose inverse series start at x~_c (its label carries the number).
 XC_SUFFIX = "-xc"
