@@ -311,7 +311,9 @@ def test_killed_runs_restart_to_the_clean_build(built, tmp_path):
     # (it can), the guard kills it after PIPELINE_STOP_GRACE seconds.
     proc = _start(tree, env={"PIPELINE_STOP_GRACE": "10"})
     try:
-        assert wait_for(lambda: len(list(shards.glob("*.csv"))) == 2, 300)
+        # both shards written and recorded as finished by Snakemake (no incomplete marker left)
+        assert wait_for(lambda: len(list(shards.glob("*.csv"))) == 2 and
+                        not [n for n in _half_written(tree) if "shards" in n], 300)
         guard_pid = next(p for p in descendants(proc.pid)
                          if "guard.py" in cmdline(p) and cmdline(p).split()[0].endswith("python"))
         os.kill(guard_pid, signal.SIGTERM)

@@ -12,6 +12,7 @@ import re
 import sys
 
 from .errors import ParameterError
+from .exponents import NUMBER_TEXT
 
 EXIT_USAGE = 2
 
@@ -28,11 +29,12 @@ class _UsageError(Exception):
 
 
 def _number(text: str) -> float:
-    """A float from the command line; NaN and inf pass here and are judged by the physics."""
-    try:
-        return float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    """A float written as the README writes numbers (a sign is read here and judged by the physics,
+    like NaN and inf, which then name the field); "1_000" or " 2" are not numbers here."""
+    body = text[1:] if text[:1] in "+-" else text
+    if not (NUMBER_TEXT.fullmatch(body) or body.lower() in ("nan", "inf", "infinity")):
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}")
+    return float(text)
 
 
 def _positive_int(text: str) -> int:
@@ -154,10 +156,23 @@ def _attach_negative_values(argv: list[str]) -> list[str]:
     return out
 
 
+def _refuse_repeated_options(argv) -> None:
+    """argparse keeps the last of `--omega 1 --omega 2` silently; a value given twice is a mistake."""
+    seen = set()
+    for token in argv:
+        if token.startswith("--"):
+            name = token.split("=", 1)[0]
+            if name in seen:
+                raise _UsageError(f"restitution: {name} given twice: give it once (several values "
+                                  "go after one option: --omega 0.1 0.5)")
+            seen.add(name)
+
+
 def main(argv=None, out=None) -> int:
     out = sys.stdout if out is None else out
     argv = sys.argv[1:] if argv is None else list(argv)
     try:
+        _refuse_repeated_options(argv)
         args = build_parser().parse_args(_attach_negative_values(argv))
         from .eps_cli import run_eps
         {"series": _run_series, "collide": _run_collide, "eps": run_eps}[args.command](args, out)

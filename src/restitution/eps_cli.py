@@ -13,16 +13,18 @@ import argparse
 import json
 
 from .errors import ParameterError
+from .exponents import NUMBER_TEXT
 
 __all__ = ["add_eps_subcommand", "run_eps"]
 
 
 def _number(text: str) -> float:
-    """A float; NaN and inf pass here and are rejected by epsilon() with the field name."""
-    try:
-        return float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    """A float written as the README writes numbers (a sign is read here and judged by the physics,
+    like NaN and inf, which then name the field); "1_000" or " 2" are not numbers here."""
+    body = text[1:] if text[:1] in "+-" else text
+    if not (NUMBER_TEXT.fullmatch(body) or body.lower() in ("nan", "inf", "infinity")):
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}")
+    return float(text)
 
 
 def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:

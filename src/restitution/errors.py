@@ -19,9 +19,32 @@ class ParameterError(ValueError):
         super().__init__(f"{field} = {value!r}: {allowed}")
 
 
+def _not_a_number(x) -> bool:
+    """Values Python or numpy would quietly turn into a float: True (1), "0.5", a complex (its
+    imaginary part dropped). The API takes the CLI's rules: numbers only."""
+    return isinstance(x, (bool, str, bytes, complex)) or type(x).__name__ in ("bool_", "str_", "bytes_") \
+        or (hasattr(x, "dtype") and getattr(x.dtype, "kind", "f") not in "iuf")
+
+
+def real_array(field: str, value, allowed: str):
+    """``value`` (a number or a sequence or array of numbers) as a float array, or ParameterError."""
+    import numpy as np
+
+    items = value if isinstance(value, (list, tuple)) else [value]
+    if any(_not_a_number(x) for x in items):
+        raise ParameterError(field, value, allowed)
+    try:
+        raw = np.asarray(value)
+        if raw.dtype.kind not in "iuf":
+            raise TypeError
+        return raw.astype(float)
+    except (TypeError, ValueError):
+        raise ParameterError(field, value, allowed) from None
+
+
 def require_positive_finite(field: str, value) -> float:
     """Return ``value`` as a float, or raise ParameterError unless it is finite and > 0."""
-    if isinstance(value, bool) or type(value).__name__ == "bool_":
+    if _not_a_number(value):
         raise ParameterError(field, value, "must be a finite number > 0")
     try:
         x = float(value)

@@ -8,6 +8,7 @@ same, and say how far the rational is from a float the user gave.
 from __future__ import annotations
 
 import math
+import re
 import numbers
 from dataclasses import dataclass
 from fractions import Fraction
@@ -24,6 +25,12 @@ APPROXIMATION_TOLERANCE = 1e-6
 #: Largest exponent accepted. The physics has no bound, but beyond this the force laws are so
 #: steep that the integrator's stated accuracy has not been verified.
 MAX_EXPONENT = Fraction(8)
+
+
+#: How the README writes numbers and exponents: 3/2, 1, 1.5, 2.5e-3. No sign, spaces or digit
+#: separators: Python would read " 3/2 ", "-0" or "1_0/4" (as 5/2), which nobody means.
+NUMBER_TEXT = re.compile(r"(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?")
+RATIONAL_TEXT = re.compile(r"\d+/[1-9]\d*")
 
 
 def parse_exponent(field: str, value, *, minimum: Fraction, inclusive: bool,
@@ -53,7 +60,9 @@ def parse_exponent(field: str, value, *, minimum: Fraction, inclusive: bool,
             raise ParameterError(field, given, allowed)
         exact = None
     elif isinstance(value, str):
-        text = value.strip()
+        text = value
+        if not (RATIONAL_TEXT.fullmatch(text) or NUMBER_TEXT.fullmatch(text)):
+            raise ParameterError(field, given, allowed)
         try:
             exact = Fraction(text)
         except (ValueError, ZeroDivisionError):

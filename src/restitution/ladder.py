@@ -57,7 +57,7 @@ import numpy as np
 
 from . import asymptotics as asy
 from . import cache as _cache
-from .errors import ParameterError
+from .errors import ParameterError, real_array
 from .model import OMEGA_REPRESENTABLE, at_most_one
 from .exponents import Exponents, as_exponents
 from .master import (MASTER_VERSION, MasterCurve, MasterSettings, build_master, integrator_bound,
@@ -125,12 +125,7 @@ class EpsResult:
 def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
     lo, hi = OMEGA_REPRESENTABLE
     allowed = f"must be numbers in [{lo:g}, {hi:g}] (at least one)"
-    if isinstance(omega, (bool, np.bool_)):
-        raise ParameterError(field_name, omega, allowed)
-    try:
-        arr = np.asarray(omega, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError(field_name, omega, allowed) from None
+    arr = real_array(field_name, omega, allowed)
     if arr.size == 0:
         raise ParameterError(field_name, omega, allowed)
     # Subnormal or near-overflow Omega leaves no headroom for the expansions' powers of Omega.
@@ -484,6 +479,8 @@ class Ladder:
     def evaluate(self, omega, *, tol: float = 1e-9, method: str | None = None, build: bool | None = None) -> EpsResult:
         om = _omega_array(omega)
         tol = _check_tol(tol)
+        if build is not None and not isinstance(build, bool):   # build="no" is truthy: it would build
+            raise ParameterError("build", build, "must be True, False or None")
         if method is not None and method not in RUNG_NAMES:
             raise ParameterError("method", method, f"must be one of {', '.join(RUNG_NAMES)}")
         flat = om.ravel()

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import ParameterError, require_positive_finite
+from .errors import ParameterError, real_array, require_positive_finite
 from .exponents import Exponents, as_exponents
 
 #: Omega outside this range is refused here: no method in the package works with it in doubles.
@@ -30,10 +30,7 @@ ELASTIC = "elastic-dominant"
 
 def positive_speeds(g, field: str = "g") -> np.ndarray:
     """Impact speeds as a float array, every entry finite and > 0."""
-    try:
-        arr = np.asarray(g, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError(field, g, "must be finite numbers > 0") from None
+    arr = real_array(field, g, "must be finite numbers > 0")
     if arr.size == 0 or not np.all(np.isfinite(arr)) or not np.all(arr > 0):
         bad = arr[~(np.isfinite(arr) & (arr > 0))] if arr.size else arr
         shown = bad.flat[0] if bad.size else g

@@ -51,9 +51,11 @@ def run(cmd: list[str], tree: Path, lock_fd: int) -> int:
     received = []
 
     def forward(signum, _frame):
+        # to Snakemake alone: it stops its own jobs and keeps what they finished (a signal to the
+        # whole group would hit a job between writing its output and Snakemake recording it)
         received.append((signum, time.monotonic()))
         with contextlib.suppress(ProcessLookupError):
-            os.killpg(child.pid, signum)
+            os.kill(child.pid, signum)
 
     for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
         signal.signal(s, forward)
