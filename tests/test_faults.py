@@ -159,16 +159,16 @@ def test_preflight_too_little_space(tmp_path):
 
 def test_second_run_waits_or_stops(tmp_path, capsys):
     (tmp_path / "build").mkdir()
-    first = guard.acquire(tmp_path, None)
+    first = preflight.acquire(tmp_path, None)
     assert first is not None
-    assert guard.acquire(tmp_path, 0) is None
+    assert preflight.acquire(tmp_path, 0) is None
     assert "not starting a second one" in capsys.readouterr().err
     t0 = time.monotonic()
-    assert guard.acquire(tmp_path, 0.6) is None
+    assert preflight.acquire(tmp_path, 0.6) is None
     assert time.monotonic() - t0 >= 0.5
     assert "still running after" in capsys.readouterr().err
     os.close(first)
-    second = guard.acquire(tmp_path, 0)
+    second = preflight.acquire(tmp_path, 0)
     assert second is not None
     os.close(second)
 
@@ -187,10 +187,10 @@ def test_the_lock_lives_as_long_as_the_build_even_when_the_wrapper_is_killed(tmp
         sleeper = next(p for p in descendants(build.pid) if "sleep 60" in cmdline(p))
         build.kill()
         build.wait()
-        assert guard.acquire(tmp_path, 0) is None, "the lock died with the wrapper"
+        assert preflight.acquire(tmp_path, 0) is None, "the lock died with the wrapper"
         os.kill(sleeper, signal.SIGKILL)
         assert wait_for(lambda: _no_process_left([sleeper]), 10)
-        fd = guard.acquire(tmp_path, 5)
+        fd = preflight.acquire(tmp_path, 5)
         assert fd is not None, "the lock outlived the build"
         os.close(fd)
     finally:

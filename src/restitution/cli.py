@@ -12,7 +12,7 @@ import re
 import sys
 
 from .errors import ParameterError
-from .exponents import NUMBER_TEXT
+from .exponents import number_argument
 
 EXIT_USAGE = 2
 
@@ -26,15 +26,6 @@ class _OneLineParser(argparse.ArgumentParser):
 
 class _UsageError(Exception):
     pass
-
-
-def _number(text: str) -> float:
-    """A float written as the README writes numbers (a sign is read here and judged by the physics,
-    like NaN and inf, which then name the field); "1_000" or " 2" are not numbers here."""
-    body = text[1:] if text[:1] in "+-" else text
-    if not (NUMBER_TEXT.fullmatch(body) or body.lower() in ("nan", "inf", "infinity")):
-        raise argparse.ArgumentTypeError(f"not a number: {text!r}")
-    return float(text)
 
 
 def _positive_int(text: str) -> int:
@@ -66,11 +57,11 @@ def build_parser() -> argparse.ArgumentParser:
 
     c = sub.add_parser("collide", help="integrate one collision: eps, tau_b, x_b, tau_c, x_c")
     _add_exponents(c)
-    c.add_argument("--omega", type=_number, help="scaled parameter Omega > 0")
-    c.add_argument("--D1", type=_number, help="elastic constant D1 > 0 (with --D2 and --g)")
-    c.add_argument("--D2", type=_number, help="dissipative constant D2 > 0")
-    c.add_argument("--g", type=_number, help="impact speed g > 0")
-    c.add_argument("--rtol", type=_number, default=1e-12, help="relative tolerance (default 1e-12)")
+    c.add_argument("--omega", type=number_argument, help="scaled parameter Omega > 0")
+    c.add_argument("--D1", type=number_argument, help="elastic constant D1 > 0 (with --D2 and --g)")
+    c.add_argument("--D2", type=number_argument, help="dissipative constant D2 > 0")
+    c.add_argument("--g", type=number_argument, help="impact speed g > 0")
+    c.add_argument("--rtol", type=number_argument, default=1e-12, help="relative tolerance (default 1e-12)")
     c.add_argument("--json", action="store_true", help="machine-readable output")
 
     from .eps_cli import add_eps_subcommand

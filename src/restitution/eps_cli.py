@@ -13,18 +13,9 @@ import argparse
 import json
 
 from .errors import ParameterError
-from .exponents import NUMBER_TEXT
+from .exponents import number_argument
 
 __all__ = ["add_eps_subcommand", "run_eps"]
-
-
-def _number(text: str) -> float:
-    """A float written as the README writes numbers (a sign is read here and judged by the physics,
-    like NaN and inf, which then name the field); "1_000" or " 2" are not numbers here."""
-    body = text[1:] if text[:1] in "+-" else text
-    if not (NUMBER_TEXT.fullmatch(body) or body.lower() in ("nan", "inf", "infinity")):
-        raise argparse.ArgumentTypeError(f"not a number: {text!r}")
-    return float(text)
 
 
 def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
@@ -34,11 +25,11 @@ def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
                     "was used and its error bound.")
     p.add_argument("--alpha", required=True, help="elastic exponent, a rational > 0 such as 3/2")
     p.add_argument("--gamma", required=True, help="dissipative exponent, a rational >= 0 such as 1")
-    p.add_argument("--omega", type=_number, nargs="+", metavar="W", help="scaled parameter(s) Omega > 0")
-    p.add_argument("--D1", type=_number, help="elastic constant D1 > 0 (with --D2 and --g)")
-    p.add_argument("--D2", type=_number, help="dissipative constant D2 > 0")
-    p.add_argument("--g", type=_number, nargs="+", metavar="V", help="impact speed(s) g > 0")
-    p.add_argument("--tol", type=_number, default=1e-9, help="relative tolerance in (0, 1) (default 1e-9)")
+    p.add_argument("--omega", type=number_argument, nargs="+", metavar="W", help="scaled parameter(s) Omega > 0")
+    p.add_argument("--D1", type=number_argument, help="elastic constant D1 > 0 (with --D2 and --g)")
+    p.add_argument("--D2", type=number_argument, help="dissipative constant D2 > 0")
+    p.add_argument("--g", type=number_argument, nargs="+", metavar="V", help="impact speed(s) g > 0")
+    p.add_argument("--tol", type=number_argument, default=1e-9, help="relative tolerance in (0, 1) (default 1e-9)")
     p.add_argument("--method", default=None,
                    help="force one rung of the ladder (it must still meet --tol), e.g. master, integrator")
     p.add_argument("--no-build", action="store_true",

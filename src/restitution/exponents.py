@@ -33,6 +33,17 @@ NUMBER_TEXT = re.compile(r"(\d+(\.\d*)?|\.\d+)([eE][+-]?\d+)?")
 RATIONAL_TEXT = re.compile(r"\d+/[1-9]\d*")
 
 
+def number_argument(text: str) -> float:
+    """An argparse type: a float written as the README writes numbers (a sign is read here and
+    judged by the physics, like NaN and inf, which then name the field); "1_000" or " 2" are not."""
+    import argparse
+
+    body = text[1:] if text[:1] in "+-" else text
+    if not (NUMBER_TEXT.fullmatch(body) or body.lower() in ("nan", "inf", "infinity")):
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}")
+    return float(text)
+
+
 def parse_exponent(field: str, value, *, minimum: Fraction, inclusive: bool,
                    max_denominator: int = MAX_DENOMINATOR) -> tuple[Fraction, float]:
     """Read an exponent given as "3/2", "1", 1.5, Fraction(3, 2) or a float.

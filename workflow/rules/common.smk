@@ -17,7 +17,7 @@ ROOT = Path(workflow.basedir)
 sys.path[:0] = [str(ROOT / "src"), str(ROOT / "workflow" / "scripts")]
 
 from common.provenance import build_commit, versions
-from _config import ConfigError, check_config  # noqa: E402  (workflow/scripts/_config.py)
+from _config import ConfigError, check_config  # workflow/scripts/_config.py
 
 # Every generated file carries this date instead of "now" (the Makefile exports the same value),
 # and the scripts import the package from this tree's src/, whatever is installed.

@@ -1,17 +1,12 @@
-"""Run Snakemake so that faults end in a clear message and a rerun finishes the job.
-
-    python workflow/tools/guard.py [--wait SECONDS] -- snakemake --cores 2 --rerun-incomplete all
-
-One run at a time: an flock on build/.pipeline.lock that Snakemake inherits, so the lock lives
-exactly as long as the build, whoever is killed. Before the run, preflight.py's checks and tidy-up.
-Exit status: the command's, or 1 (preflight), 75 (lock not obtained in time), 128+N (signal N).
+"""`guard.py [--wait S] -- snakemake ...`: one run at a time (preflight.acquire's flock, inherited
+by Snakemake so it lives exactly as long as the build), preflight checks and tidy-up before it,
+a clear message after. Exit: the command's, 1 (preflight), 75 (lock not had in time), 128+N (signal N).
 """
 
 from __future__ import annotations
 
 import argparse
 import contextlib
-import fcntl
 import os
 import signal
 import subprocess
@@ -19,31 +14,9 @@ import sys
 import time
 from pathlib import Path
 
-from preflight import compact_written, diagnose, preflight, say, tidy, unlock
+from preflight import acquire, compact_written, diagnose, preflight, say, tidy, unlock
 
-LOCK = Path("build") / ".pipeline.lock"
 GRACE = float(os.environ.get("PIPELINE_STOP_GRACE", "20"))  # seconds from a signal to SIGKILL
-
-
-def acquire(tree: Path, wait: float | None) -> int | None:
-    """A descriptor holding the lock, or None if it was not obtained within `wait` seconds."""
-    fd = os.open(tree / LOCK, os.O_RDWR | os.O_CREAT, 0o666)
-    deadline = None if wait is None else time.monotonic() + wait
-    for attempt in range(sys.maxsize):
-        with contextlib.suppress(BlockingIOError):
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-            if attempt:
-                say("the other run has finished; going on.")
-            return fd
-        if wait is not None and wait <= 0:
-            say("another run is running in this tree; not starting a second one (nothing was changed)")
-            return os.close(fd)
-        if attempt == 0:
-            say("another run is running in this tree; waiting for it to finish (LOCK_WAIT=0 stops instead) ...")
-        if deadline is not None and time.monotonic() >= deadline:
-            say(f"the other run is still running after {wait:g} s; stopped without changing anything.")
-            return os.close(fd)
-        time.sleep(0.2)
 
 
 def run(cmd: list[str], tree: Path, lock_fd: int) -> int:
@@ -87,9 +60,7 @@ def main(argv=None) -> int:
     parser.add_argument("command", nargs=argparse.REMAINDER, help="-- then the snakemake command")
     args = parser.parse_args(argv)
     cmd, tree = args.command[1:] if args.command[:1] == ["--"] else args.command, Path.cwd()
-    problems = preflight(tree)
-    for p in problems:
-        say(p)
+    problems = [say(p) or p for p in preflight(tree)]
     lock = None if problems else acquire(tree, args.wait)
     if lock is None:
         return 1 if problems else 75

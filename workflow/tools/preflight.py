@@ -9,15 +9,20 @@ and a run that cannot start say the same thing.
 
 from __future__ import annotations
 
+import contextlib
+import fcntl
 import os
 import shutil
 import subprocess
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 from common.atomic import advice, compact_written, verify_written  # workflow/scripts (PYTHONPATH)
 
+#: One run at a time in a tree: whoever holds an flock on this file (guard.py passes it to Snakemake).
+LOCK = Path("build") / ".pipeline.lock"
 #: Directories the pipeline writes to (relative to the tree).
 WRITABLE = ("results", "logs", "build", ".snakemake")
 MIN_FREE_MB = float(os.environ.get("PIPELINE_MIN_FREE_MB", "50"))
@@ -96,3 +101,24 @@ def unlock(tree: Path, snakemake: str) -> None:
     if locks and subprocess.run([snakemake, "--unlock", "--quiet"], cwd=tree, capture_output=True).returncode == 0:
         say(f"removed {len(locks)} stale Snakemake lock(s) left by a run that was stopped; "
             "its unfinished jobs will be rerun")
+
+
+def acquire(tree: Path, wait: float | None) -> int | None:
+    """A descriptor holding the lock, or None if it was not obtained within `wait` seconds."""
+    fd = os.open(tree / LOCK, os.O_RDWR | os.O_CREAT, 0o666)
+    deadline = None if wait is None else time.monotonic() + wait
+    for attempt in range(sys.maxsize):
+        with contextlib.suppress(BlockingIOError):
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            if attempt:
+                say("the other run has finished; going on.")
+            return fd
+        if wait is not None and wait <= 0:
+            say("another run is running in this tree; not starting a second one (nothing was changed)")
+            return os.close(fd)
+        if attempt == 0:
+            say("another run is running in this tree; waiting for it to finish (LOCK_WAIT=0 stops instead) ...")
+        if deadline is not None and time.monotonic() >= deadline:
+            say(f"the other run is still running after {wait:g} s; stopped without changing anything.")
+            return os.close(fd)
+        time.sleep(0.2)
