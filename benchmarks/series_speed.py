@@ -9,7 +9,7 @@ from __future__ import annotations
 import sys
 import time
 
-from restitution.series import _coefficients, perturbation_series
+from restitution.core.series import _coefficients, perturbation_series
 
 CASES = [
     ("3/2", "1", 8, 20, "forward"),

@@ -8,7 +8,7 @@ per second, max and median relative error against the mpmath reference over a fi
 ``<out>/pareto.png`` (error against cost).
 
 The Omega set: 1e-6, 1e6 and ``--points`` - 2 log-uniform random Omegas between (fixed seed, so not
-nodes of any fit), per exponent pair; the reference is restitution.highprec at 25 digits. Rungs that only apply on
+nodes of any fit), per exponent pair; the reference is restitution.core.highprec at 25 digits. Rungs that only apply on
 part of the range (expansions) are scored on that part (columns omega_min, omega_max, n_points).
 Exponents: the paper's (alpha = 3/2, gamma = 1) and Hertz/Kuwabara-Kono (3/2, 1/2), where the
 Mueller & Poeschel Pade expression is a peer. Timings are wall-clock on one core (numba kernels are
@@ -32,13 +32,13 @@ from scipy.integrate import solve_ivp
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "src"))
 
-from restitution.asymptotics import elastic_limit, viscous_limit  # noqa: E402
-from restitution.exponents import as_exponents  # noqa: E402
-from restitution.fast import collide_fast  # noqa: E402
-from restitution.highprec import reference_collision  # noqa: E402
-from restitution.ladder import (Calibration, Ladder, _relation_eps, build_calibration,  # noqa: E402
-                                pade_mp2011)
-from restitution.master import MasterSettings  # noqa: E402
+from restitution.core.asymptotics import elastic_limit, viscous_limit  # noqa: E402
+from restitution.core.exponents import as_exponents  # noqa: E402
+from restitution.fast.integrator import collide_fast  # noqa: E402
+from restitution.core.highprec import reference_collision  # noqa: E402
+from restitution.api import RELATIONS, Ladder  # noqa: E402
+from restitution.fast.calibration import Calibration, _relation_eps, build_calibration, pade_mp2011  # noqa: E402
+from restitution.fast.master import MasterSettings  # noqa: E402
 
 SEED = 12345
 OMEGA_RANGE = (1e-6, 1e6)
@@ -118,7 +118,7 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
     # -- calibration (master curve and the relation rungs), timed as a build
     log(f"[{alpha}, {gamma}] building the master curve")
     t0 = time.perf_counter()
-    cal: Calibration = build_calibration(ex, None, MasterSettings(), progress=lambda m: None)
+    cal: Calibration = build_calibration(ex, None, MasterSettings(), progress=lambda m: None, relations=RELATIONS)
     build_s = time.perf_counter() - t0
     (out / "cache").mkdir(parents=True, exist_ok=True)
     with open(out / "cache" / f"calibration-{alpha.replace('/', '_')}-{gamma.replace('/', '_')}.json", "w") as fh:
@@ -165,7 +165,7 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
     for rtol in (1e-6, 1e-8, 1e-10, 1e-12, 1e-14):
         res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, rtol)
         cost = _time_per_point(lambda r=rtol: collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, r), omegas.size, 3)
-        row("integrator", f"rtol={rtol:g}", cost, approx=res[:, 0], note="compiled DOP853 (restitution.fast)")
+        row("integrator", f"rtol={rtol:g}", cost, approx=res[:, 0], note="compiled DOP853 (restitution.fast.integrator)")
     sub = omegas if not quick else omegas[::4]
     ssel = np.isin(omegas, sub)
     fa, fg = float(ex.alpha), float(ex.gamma)
@@ -176,18 +176,18 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
             vals.append(plain_solve_ivp_eps(fa, fg, float(w), rtol))
         cost = (time.perf_counter() - t0) / sub.size
         row("solve_ivp plain", f"rtol={rtol:g}", cost, ssel, vals, note="per-point scipy DOP853 as a user writes it")
-    from restitution.collision import collide
+    from restitution.core.collision import collide
     for rtol in ((1e-8, 1e-12) if not quick else (1e-12,)):
         t0 = time.perf_counter()
         vals = [collide(ex, None, float(w), rtol=rtol).eps for w in sub]
         cost = (time.perf_counter() - t0) / sub.size
-        row("collide (scipy)", f"rtol={rtol:g}", cost, ssel, vals, note="restitution.collision.collide")
+        row("collide (scipy)", f"rtol={rtol:g}", cost, ssel, vals, note="restitution.core.collision.collide")
 
     # -- the public call end to end: 1e6 impact speeds at tol = 1e-6, master cached
     lad = Ladder(ex, None, cache_dir=str(out / "cache" / "ladder"), stream=open(os.devnull, "w"))
     lad._cal = cal  # the calibration just built (what a cached one would load)
     g_speeds = np.geomspace(1e-3, 10, 1_000_000)
-    from restitution.model import Material
+    from restitution.core.model import Material
     mat = Material(ex, None, 0.000296, 0.0109)
     om_g = mat.omega(g_speeds)
     t_call = _time_per_point(lambda: lad.evaluate(mat.omega(g_speeds), tol=1e-6), 1, 3)

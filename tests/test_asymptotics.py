@@ -1,6 +1,6 @@
-"""The viscous and elastic limits derived in restitution.asymptotics, checked against the integrators.
+"""The viscous and elastic limits derived in restitution.core.asymptotics, checked against the integrators.
 
-The compiled integrator (restitution.fast) at rtol 1e-14 is accurate to ~1e-14 (checked against
+The compiled integrator (restitution.fast.integrator) at rtol 1e-14 is accurate to ~1e-14 (checked against
 the mpmath reference in test_epsilon.py); the published constants are checked both as formulas and
 by extracting them from high-precision data alone.
 """
@@ -14,12 +14,12 @@ import numpy as np
 import pytest
 from scipy import special
 
-from restitution import asymptotics as asy
-from restitution.exponents import as_exponents
-from restitution.fast import collide_fast
-from restitution.highprec import reference_collision
-from restitution.ladder import MUELLER_POESCHEL_PADE
-from restitution.model import Material
+from restitution.core import asymptotics as asy
+from restitution.core.exponents import as_exponents
+from restitution.fast.integrator import collide_fast
+from restitution.core.highprec import reference_collision
+from restitution.fast.calibration import MUELLER_POESCHEL_PADE
+from restitution.core.model import Material
 
 
 def ref(alpha, gamma, omegas, rtol=1e-14):
@@ -241,7 +241,7 @@ def test_mueller_poeschel_pade_is_consistent_with_the_expansion():
 def test_equal_exponents_closed_form_deep_in_the_elastic_regime(omega):
     """Newton's slope used to be 0/0 from Omega ~ 1.6e16 on (a traceback through `eps`): here
     1 - eps = 2/(3 Omega) to leading order (u = 2/Omega, eps = 1 - u/3 + ...)."""
-    from restitution.asymptotics import equal_exponents_eps
+    from restitution.core.asymptotics import equal_exponents_eps
 
     eps = float(equal_exponents_eps(omega))
     assert math.isfinite(eps) and eps <= 1.0

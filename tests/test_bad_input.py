@@ -21,7 +21,7 @@ import pytest
 import yaml
 
 from restitution import cli
-from restitution.errors import ParameterError
+from restitution.core.errors import ParameterError
 
 from pipeline_tree import BIN, ENV, ROOT, copy_built, digests, fresh_tree, make, snakemake
 
@@ -163,8 +163,8 @@ def test_cli_exit_status_and_stderr_as_a_process():
 # ------------------------------------------------------------------------------------ Python API
 def _api_cases():
     from restitution import Material, collide, perturbation_series
-    from restitution.collision import collide_many, inverse_collide
-    from restitution.highprec import reference_collision
+    from restitution.core.collision import collide_many, inverse_collide
+    from restitution.core.highprec import reference_collision
 
     return [
         ("omega", lambda: collide("3/2", 1, 0)),
@@ -217,7 +217,7 @@ def test_api_bad_input_raises_parameter_error_naming_the_field(i):
 
 
 def test_api_epsilon_refuses_what_no_rung_supports():
-    from restitution import ladder
+    from restitution import api as ladder
 
     with pytest.raises(ParameterError, match="tol"):
         ladder.epsilon(alpha="3/2", gamma=1, omega=[1.0], tol=1e-20, build=False)

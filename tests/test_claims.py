@@ -5,8 +5,9 @@ import math
 
 import pytest
 
-from restitution import claims, printed
-from restitution.connection import Reading
+from restitution.audit import claims
+from restitution.audit import printed
+from restitution.audit.readings import Reading
 
 PAPER = {"alpha": printed.ALPHA, "gamma": printed.GAMMA, "D1": printed.D1, "D2": printed.D2}
 FAST = {"points": 6, "tracking_samples": 301, "radius_max_power": 61,

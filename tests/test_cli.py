@@ -8,7 +8,7 @@ from fractions import Fraction
 
 import pytest
 
-from restitution.printed import PRINTED_SERIES
+from restitution.audit.printed import PRINTED_SERIES
 
 EXE = os.path.join(os.path.dirname(sys.executable), "restitution")
 
@@ -58,7 +58,7 @@ def test_collide_json_fields():
 
 
 def test_collide_from_material_constants_uses_the_scaled_omega():
-    from restitution.model import Material
+    from restitution.core.model import Material
     proc = run("collide", "--alpha", "3/2", "--gamma", "1", "--D1", "0.000296", "--D2", "0.0109", "--g", "0.1",
                "--json")
     assert proc.returncode == 0, proc.stderr
@@ -73,7 +73,7 @@ def test_eps_json_contract():
     data = json.loads(proc.stdout)
     assert set(data) == {"eps", "method", "error_bound"}
     assert len(data["eps"]) == 2 and data["error_bound"] <= 1e-8
-    from restitution.collision import collide
+    from restitution.core.collision import collide
     for om, e in zip((0.5, 2.0), data["eps"]):
         assert e == pytest.approx(collide("3/2", 1, om).eps, rel=2e-8)
 

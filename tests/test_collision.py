@@ -9,11 +9,11 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from restitution.collision import (Collision, InverseCollision, RunawayError, Trajectory, collide,
+from restitution.core.collision import (Collision, InverseCollision, RunawayError, Trajectory, collide,
                                    collide_many, inverse_collide)
-from restitution.dashpot import dashpot_collision, dashpot_trajectory
-from restitution.errors import ParameterError
-from restitution.exponents import Exponents
+from restitution.core.dashpot import dashpot_collision, dashpot_trajectory
+from restitution.core.errors import ParameterError
+from restitution.core.exponents import Exponents
 
 QUANTITIES = ("eps", "tau_b", "x_b", "tau_c", "x_c")
 PAIRS = [("3/2", "1"), ("3/2", "1/2"), ("1", "0"), ("2", "1"), ("3", "3/2"), ("1", "1"), ("5/4", "3/2"),

@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from restitution import damped
+from restitution.core import damped
 
 TAU = np.linspace(0.0, 1.0, 11)
 
@@ -58,6 +58,6 @@ def test_first_integrals_generalise_in_gamma():
 
 
 def test_negative_start_is_refused():
-    from restitution.errors import ParameterError
+    from restitution.core.errors import ParameterError
     with pytest.raises(ParameterError):
         damped.forward(TAU, -0.1)

@@ -8,8 +8,8 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from restitution.dashpot import contact_times, dashpot_collision, dashpot_trajectory
-from restitution.errors import ParameterError
+from restitution.core.dashpot import contact_times, dashpot_collision, dashpot_trajectory
+from restitution.core.errors import ParameterError
 
 QUANTITIES = ("eps", "tau_b", "x_b", "tau_c", "x_c")
 QUARTER = 0.25

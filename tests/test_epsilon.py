@@ -15,12 +15,12 @@ import time
 import numpy as np
 import pytest
 
-from restitution.errors import ParameterError
-from restitution.exponents import as_exponents
-from restitution.highprec import reference_collision
-from restitution.ladder import RUNG_NAMES, Ladder, epsilon
-from restitution.master import MasterSettings, integrator_bound, reference_eps
-from restitution.model import Material
+from restitution.core.errors import ParameterError
+from restitution.core.exponents import as_exponents
+from restitution.core.highprec import reference_collision
+from restitution.api import RUNG_NAMES, Ladder, epsilon
+from restitution.fast.master import MasterSettings, integrator_bound, reference_eps
+from restitution.core.model import Material
 
 SMALL = MasterSettings(log10_omega_min=-4.0, log10_omega_max=4.0, grid_step=0.25, degree=12, width=1.0,
                        heldout_per_panel=2, n_highprec=1)
@@ -114,7 +114,7 @@ def test_refuses_a_tolerance_below_double_rounding_at_once(kim):
 def test_refuses_a_tolerance_no_rung_meets_on_these_inputs():
     # alpha < gamma at Omega = 1e-5 is outside the high-precision rung's domain, and every
     # double-precision rung's bound is above 1e-15 there.
-    from restitution.ladder import Ladder
+    from restitution.api import Ladder
     with pytest.raises(ParameterError) as exc:
         Ladder("1", "3/2").evaluate(np.array([1e-5]), tol=1e-15, build=False)
     assert exc.value.field == "tol" and "smallest bound" in str(exc.value)
@@ -147,7 +147,7 @@ def test_small_requests_do_not_build(tmp_path, monkeypatch):
     r = lad.evaluate(np.array([0.2, 2.0, 20.0]), tol=1e-9)
     assert r.method == "integrator" and r.error_bound <= 1e-9
     assert not list(tmp_path.iterdir())
-    import restitution.ladder as ladder
+    import restitution.fast.ladder as ladder
     monkeypatch.setattr(ladder, "BUILD_COST", {"alpha>gamma": 0.0, "alpha<=gamma": 0.0})
     assert lad._building_pays(lad.quotes(np.array([0.2, 2.0]), 1e-9), 1e-9, 2)  # would build now ...
     r = lad.evaluate(np.array([0.2, 2.0]), tol=1e-9, build=False)
@@ -250,7 +250,7 @@ def test_bad_exponents(alpha, gamma, field):
 
 
 def _cli(argv, monkeypatch, tmp_path):
-    from restitution.eps_cli import add_eps_subcommand, run_eps
+    from restitution.cli import add_eps_subcommand, run_eps
     monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
     parser = argparse.ArgumentParser()
     add_eps_subcommand(parser.add_subparsers(dest="command"))
@@ -286,7 +286,7 @@ def test_cli_bad_input(argv, field, monkeypatch, tmp_path):
 
 
 def test_rung_names_are_documented():
-    import restitution.ladder as ladder
+    import restitution.fast.ladder as ladder
     for name in RUNG_NAMES:
         stem = name.split("-N")[0]
         assert stem in ladder.__doc__
@@ -351,7 +351,7 @@ def json_keys(path):
 def test_eps_is_never_above_one_even_where_one_minus_eps_is_below_the_tolerance(alpha, gamma, empty_cache):
     """Deep in the elastic regime 1 - eps falls below any tolerance: a method within its bound could
     land above 1 (1.00000013844 at Omega = 1e14, tol 1e-6; 1 + 7e-14 from collide at 1/12, 8)."""
-    from restitution.collision import collide
+    from restitution.core.collision import collide
 
     for tol in (1e-6, 1e-9):
         r = epsilon(alpha=alpha, gamma=gamma, omega=[1e6, 1e9, 1e12, 1e14], tol=tol, build=False)

@@ -5,8 +5,8 @@ from fractions import Fraction
 import pytest
 from mpmath import mp
 
-from restitution.errors import ParameterError
-from restitution.highprec import HighPrecisionCollision, reference_collision
+from restitution.core.errors import ParameterError
+from restitution.core.highprec import HighPrecisionCollision, reference_collision
 
 QUANTITIES = ("eps", "tau_b", "x_b", "tau_c")
 
@@ -217,7 +217,7 @@ def test_bad_parameters(kwargs):
 def test_denominators_eleven_and_twelve_agree_with_the_scipy_reference(alpha, gamma, omega):
     """p = 132: the Taylor order must reach past the gap of the sparse series at u = 0 (it used to
     fail with an IndexError, and a too-short series would have looked converged)."""
-    from restitution.collision import collide
+    from restitution.core.collision import collide
 
     ref = reference_collision(alpha, gamma, omega, digits=16)
     assert float(ref.eps) == pytest.approx(collide(alpha, gamma, omega).eps, rel=1e-9)

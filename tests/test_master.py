@@ -15,11 +15,11 @@ import time
 import numpy as np
 import pytest
 
-from restitution import cache
-from restitution.exponents import as_exponents
-from restitution.fast import collide_fast
-from restitution.highprec import reference_collision
-from restitution.master import MasterCurve, MasterSettings, build_master, reference_eps
+from restitution.fast import cache
+from restitution.core.exponents import as_exponents
+from restitution.fast.integrator import collide_fast
+from restitution.core.highprec import reference_collision
+from restitution.fast.master import MasterCurve, MasterSettings, build_master, reference_eps
 
 SMALL = MasterSettings(log10_omega_min=-4.0, log10_omega_max=4.0, grid_step=0.25, degree=12, width=1.0,
                        heldout_per_panel=2, n_highprec=2)
@@ -83,7 +83,7 @@ def test_json_roundtrip(small_kim):
 def test_equal_exponents_master_uses_the_closed_form():
     m = build_master("1", "1", MasterSettings(**{**SMALL.as_dict(), "n_highprec": 1}))
     pts = np.geomspace(1e-7, 1e9, 61)
-    from restitution.asymptotics import equal_exponents_eps
+    from restitution.core.asymptotics import equal_exponents_eps
     err = np.abs(m.eps(pts) / equal_exponents_eps(pts) - 1)
     assert np.all(err <= m.bound_at(pts))
     assert m.bound_inside < 1e-9  # wide test panels; exp(-1/Omega) makes the curve steep near 0.05

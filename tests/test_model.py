@@ -6,10 +6,10 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from restitution import printed
-from restitution.errors import ParameterError
-from restitution.exponents import Exponents
-from restitution.model import ELASTIC, VISCOUS, Material
+from restitution.audit import printed
+from restitution.core.errors import ParameterError
+from restitution.core.exponents import Exponents
+from restitution.core.model import ELASTIC, VISCOUS, Material
 
 
 @pytest.mark.parametrize("alpha,gamma,D1,D2,g", [

@@ -224,11 +224,11 @@ def macros(tree: Path, variant: str = "kim") -> dict:
 
 
 def test_the_readings_table_reports_every_reading(built):
-    from restitution import connection as cn
+    from restitution.audit import readings
 
     table = read_csv(built / "results/kim/connection/readings.csv")
     data = json.loads((built / "results/kim/connection/readings.json").read_text())
-    labels = [r.label for r in cn.all_readings(data["x_tilde_c"])]
+    labels = [r.label for r in readings.all_readings(data["x_tilde_c"])]
     assert table["reading"].tolist() == labels  # config: readings: all, for the paper's case
     defined = table[table["defined"]]
     assert len(defined) and defined[["c0", "c1", "c2"]].notna().all().all()
@@ -279,7 +279,7 @@ def test_eps_every_way_and_its_error_table(built):
 
 
 def test_the_claims_ledger_lists_every_claim_with_a_computed_value(built):
-    from restitution import claims as cl
+    from restitution.audit import claims as cl
 
     ledger = read_csv(built / "results/kim/claims.csv")
     assert list(ledger.columns) == ["row"] + list(cl.COLUMNS)

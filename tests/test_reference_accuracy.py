@@ -1,6 +1,6 @@
 """Acceptance test of the double-precision integrator against the mpmath reference.
 
-``restitution.collision.collide`` (scipy DOP853/Radau) and ``restitution.highprec``
+``restitution.core.collision.collide`` (scipy DOP853/Radau) and ``restitution.core.highprec``
 (Taylor series in mpmath) share no code, so agreement to 1e-8 relative over the whole
 Omega range and several exponent pairs is evidence that both are right, not that they
 repeat the same mistake. The reference runs at 20 digits: its own error estimate must be
@@ -11,8 +11,8 @@ from functools import lru_cache
 
 import pytest
 
-collision = pytest.importorskip("restitution.collision")
-from restitution.highprec import reference_collision  # noqa: E402
+collision = pytest.importorskip("restitution.core.collision")
+from restitution.core.highprec import reference_collision  # noqa: E402
 
 #: Acceptance bar for collide(rtol=1e-12); the brief aims for 1e-9.
 TOLERANCE = 1e-8

@@ -6,9 +6,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from restitution.errors import ParameterError
-from restitution.printed import PRINTED_SERIES
-from restitution.series import perturbation_series
+from restitution.core.errors import ParameterError
+from restitution.audit.printed import PRINTED_SERIES
+from restitution.core.series import perturbation_series
 
 PRINTED_CASES = [(direction, n, Fraction(power), Fraction(coeff))
                  for direction, orders in PRINTED_SERIES.items()

@@ -15,8 +15,8 @@ from fractions import Fraction
 import numpy as np
 import pytest
 
-from restitution import stability as st
-from restitution.errors import ParameterError
+from restitution.audit import stability as st
+from restitution.core.errors import ParameterError
 
 
 
@@ -170,7 +170,7 @@ def test_records_from_a_csv_are_checked_the_same(tmp_path):
 
 
 def test_a_failing_integration_is_recorded_not_raised(monkeypatch):
-    import restitution.collision as collision
+    import restitution.core.collision as collision
 
     def broken(*args, **kwargs):
         raise collision.IntegrationError("solve_ivp failed on (0, 1): step size too small")
@@ -234,7 +234,7 @@ def test_shards_give_the_same_records_as_one_run(coarse):
 
 @pytest.mark.slow
 def test_the_limits_meet_the_ends_of_the_atlas(coarse):
-    pytest.importorskip("restitution.asymptotics")
+    pytest.importorskip("restitution.core.asymptotics")
     spec, records = coarse
     limits = {(d["alpha"], d["gamma"]): d for d in st.limit_agreement(records)}
     assert len(limits) == 20
@@ -242,7 +242,7 @@ def test_the_limits_meet_the_ends_of_the_atlas(coarse):
         if Fraction(a) > Fraction(g):
             assert d["dev_eps_viscous"] < 1e-9 and d["dev_tau_c_viscous"] < 1e-5, d
     # Hertz with Kuwabara-Kono damping: 1 - eps at Omega = 1e8 against Ramirez et al.'s C1, C2
-    from restitution.asymptotics import elastic_limit
+    from restitution.core.asymptotics import elastic_limit
 
     hertz = elastic_limit("3/2", "1/2")
     assert hertz.C1 == pytest.approx(1.1534489, abs=1e-6) and hertz.C2 == pytest.approx(0.7982666, abs=1e-6)

@@ -12,9 +12,9 @@ import pytest
 
 from restitution import epsilon
 from restitution.cli import main
-from restitution.collision import collide
-from restitution.errors import ParameterError
-from restitution.model import Material
+from restitution.core.collision import collide
+from restitution.core.errors import ParameterError
+from restitution.core.model import Material
 
 
 @pytest.mark.parametrize("argv, field", [

@@ -94,7 +94,7 @@ def test_every_validation_check_passes_and_the_expected_ones_are_there(built):
 
 
 def test_dashpot_matches_its_closed_form_directly(built):
-    from restitution.dashpot import dashpot_collision
+    from restitution.core.dashpot import dashpot_collision
 
     grid = read_csv(built / "results/dashpot/validation/known.csv")
     worst = max(abs(e / dashpot_collision(w).eps - 1) for w, e in zip(grid["omega"], grid["eps_reference"]))

@@ -4,10 +4,10 @@ Heavier modules (the integrators) load on first use so that `import restitution`
 for the command line and for workflow scripts that need only the series.
 """
 
-from .errors import ParameterError
-from .exponents import Exponents
-from .model import Material
-from .series import perturbation_series
+from .core.errors import ParameterError
+from .core.exponents import Exponents
+from .core.model import Material
+from .core.series import perturbation_series
 
 __all__ = ["ParameterError", "Exponents", "Material", "perturbation_series", "collide", "inverse_collide",
            "epsilon", "EpsResult"]
@@ -15,10 +15,7 @@ __version__ = "0.1.0"
 
 
 def __getattr__(name):
-    if name in ("collide", "inverse_collide", "collide_many"):
-        from . import collision
-        return getattr(collision, name)
-    if name in ("epsilon", "EpsResult"):
-        from . import ladder
-        return getattr(ladder, name)
+    if name in ("collide", "inverse_collide", "collide_many", "epsilon", "EpsResult"):
+        from . import api
+        return getattr(api, name)
     raise AttributeError(f"module 'restitution' has no attribute {name!r}")

@@ -11,8 +11,8 @@ import math
 import re
 import sys
 
-from .errors import ParameterError
-from .exponents import number_argument
+from .core.errors import ParameterError
+from .core.exponents import number_argument
 
 EXIT_USAGE = 2
 
@@ -64,9 +64,56 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--rtol", type=number_argument, default=1e-12, help="relative tolerance (default 1e-12)")
     c.add_argument("--json", action="store_true", help="machine-readable output")
 
-    from .eps_cli import add_eps_subcommand
     add_eps_subcommand(sub)
     return parser
+
+
+def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
+    p = subparsers.add_parser(
+        "eps", help="coefficient of restitution to a tolerance (picks the cheapest adequate method)",
+        description="eps for Omega values or impact speeds, to a relative tolerance; says which method "
+                    "was used and its error bound.")
+    p.add_argument("--alpha", required=True, help="elastic exponent, a rational > 0 such as 3/2")
+    p.add_argument("--gamma", required=True, help="dissipative exponent, a rational >= 0 such as 1")
+    p.add_argument("--omega", type=number_argument, nargs="+", metavar="W", help="scaled parameter(s) Omega > 0")
+    p.add_argument("--D1", type=number_argument, help="elastic constant D1 > 0 (with --D2 and --g)")
+    p.add_argument("--D2", type=number_argument, help="dissipative constant D2 > 0")
+    p.add_argument("--g", type=number_argument, nargs="+", metavar="V", help="impact speed(s) g > 0")
+    p.add_argument("--tol", type=number_argument, default=1e-9, help="relative tolerance in (0, 1) (default 1e-9)")
+    p.add_argument("--method", default=None,
+                   help="force one rung of the ladder (it must still meet --tol), e.g. master, integrator")
+    p.add_argument("--no-build", action="store_true",
+                   help="never build the master curve; use only methods that need nothing cached")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+    return p
+
+
+def run_eps(args, out) -> None:
+    from .api import epsilon
+
+    physical = (args.D1, args.D2, args.g)
+    if args.omega is not None and any(v is not None for v in physical):
+        raise ParameterError("omega", args.omega, "give either --omega or all of --D1 --D2 --g, not both")
+    if args.omega is None and any(v is None for v in physical):
+        missing = next(n for n, v in zip(("--D1", "--D2", "--g"), physical) if v is None)
+        raise ParameterError(missing.lstrip("-"), None, "give --omega, or all of --D1 --D2 --g")
+    kwargs = dict(alpha=args.alpha, gamma=args.gamma, tol=args.tol, method=args.method,
+                  build=False if args.no_build else None)
+    if args.omega is not None:
+        res = epsilon(omega=args.omega, **kwargs)
+    else:
+        res = epsilon(g=args.g, D1=args.D1, D2=args.D2, **kwargs)
+    eps = [float(e) for e in res.eps.ravel()]
+    if args.json:
+        json.dump({"eps": eps, "method": res.method, "error_bound": float(res.error_bound)}, out,
+                  separators=(", ", ": "))
+        out.write("\n")
+        return
+    out.write(f"method {res.method} ({res.setting or 'no setting'}), relative error bound "
+              f"{res.error_bound:.3g} (tol {res.tol:.3g})\n")
+    out.write(f"{'Omega':>22}  {'eps':>22}\n")
+    for w, e in zip(res.omega.ravel(), eps):
+        out.write(f"{w:22.15g}  {e:22.15g}\n")
 
 
 def _omega_from_args(args) -> float:
@@ -77,13 +124,13 @@ def _omega_from_args(args) -> float:
         return args.omega
     if any(v is None for v in physical):
         raise _UsageError("restitution collide: give --omega, or all of --D1 --D2 --g")
-    from .model import Material
+    from .core.model import Material
     return Material(args.alpha, args.gamma, args.D1, args.D2).omega(args.g)
 
 
 def _report_approximation(args) -> None:
     """Say on stderr when a float exponent was replaced by a nearby rational, and by how much."""
-    from .exponents import Exponents
+    from .core.exponents import Exponents
     ex = Exponents.parse(args.alpha, args.gamma)
     for name, given, exact, err in (("alpha", args.alpha, ex.alpha, ex.alpha_error),
                                     ("gamma", args.gamma, ex.gamma, ex.gamma_error)):
@@ -98,7 +145,7 @@ def _write_json(data, out) -> None:
 
 
 def _run_series(args, out) -> None:
-    from .series import perturbation_series
+    from .core.series import perturbation_series
     ps = perturbation_series(args.alpha, args.gamma, args.omega_order, args.max_power,
                              "inverse" if args.inverse else "forward")
     _report_approximation(args)
@@ -116,7 +163,7 @@ def _run_series(args, out) -> None:
 
 def _run_collide(args, out) -> None:
     omega = _omega_from_args(args)
-    from .collision import collide
+    from .core.collision import collide
     result = collide(args.alpha, args.gamma, omega, rtol=args.rtol).as_dict()
     _report_approximation(args)
     if args.json:
@@ -165,7 +212,6 @@ def main(argv=None, out=None) -> int:
     try:
         _refuse_repeated_options(argv)
         args = build_parser().parse_args(_attach_negative_values(argv))
-        from .eps_cli import run_eps
         {"series": _run_series, "collide": _run_collide, "eps": run_eps}[args.command](args, out)
     except _UsageError as exc:
         print(str(exc), file=sys.stderr)

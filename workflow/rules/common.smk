@@ -71,7 +71,7 @@ PAPER_EXPONENTS = (Fraction(3, 2), Fraction(1))
 
 
 def _exponents_of(name):
-    from restitution.exponents import Exponents
+    from restitution.core.exponents import Exponents
 
     v = VARIANTS[name]
     ex = Exponents.parse(v["alpha"], v["gamma"])
@@ -98,42 +98,55 @@ if not is_paper_case(MAIN):
 PKG = ROOT / "src" / "restitution"
 
 
+def _module_file(dotted):
+    """src/restitution file of `core.collision` (a module) or `core` (a package), or None."""
+    base = PKG.joinpath(*dotted.split(".")) if dotted else PKG
+    for f in (base.with_suffix(".py"), base / "__init__.py"):
+        if f.exists():
+            return f
+    return None
+
+
 @functools.cache   # every rule asks again; parsing each module once keeps a no-op run fast
-def _imports_of(module):
-    """restitution.* modules imported by src/restitution/<module>.py (relative or absolute)."""
-    tree = ast.parse((PKG / f"{module}.py").read_text(), filename=f"{module}.py")
+def _imports_of(dotted):
+    """Dotted names (below restitution) of the package modules that module `dotted` imports."""
+    f = _module_file(dotted)
+    here = [p for p in dotted.split(".") if p] + (["__init__"] if f.name == "__init__.py" else [])
     found = set()
-    for node in ast.walk(tree):
+    for node in ast.walk(ast.parse(f.read_text(), filename=str(f))):
         if isinstance(node, ast.ImportFrom):
-            if node.level == 1 and node.module:
-                found.add(node.module.split(".")[0])
-            elif node.level == 1:
-                found.update(a.name for a in node.names)
-            elif node.level == 0 and node.module and node.module.startswith("restitution."):
-                found.add(node.module.split(".")[1])
-            elif node.level == 0 and node.module == "restitution":
-                found.update(a.name for a in node.names)
+            if node.level:
+                base = here[:len(here) - node.level]
+            elif node.module and (node.module + ".").startswith("restitution."):
+                base = []
+            else:
+                continue
+            mod = [part for part in (node.module or "").split(".") if part]
+            if not node.level:
+                mod = mod[1:]   # drop "restitution"
+            found.add(".".join(base + mod))
+            found.update(".".join(base + mod + [a.name]) for a in node.names)
         elif isinstance(node, ast.Import):
-            for a in node.names:
-                if a.name.startswith("restitution."):
-                    found.add(a.name.split(".")[1])
-    return {m for m in found if (PKG / f"{m}.py").exists()}
+            found.update(a.name.split(".", 1)[1] for a in node.names if a.name.startswith("restitution."))
+    return {m for m in found if m and _module_file(m)}
 
 
 def lib(*modules):
-    """src/restitution files the given modules need (their import closure, plus __init__.py)."""
-    seen, todo = set(), list(modules)
+    """src/restitution files the given modules ("core.collision", ...) need: their import closure
+    with the __init__.py of every package on the way (Python runs those on import)."""
+    seen, todo = set(), ["", *modules]   # "": the package itself, whose __init__ runs first
     while todo:
         m = todo.pop()
         if m in seen:
             continue
-        if not (PKG / f"{m}.py").exists():
-            # Still being written: depend on the path anyway, Snakemake reports it missing.
-            seen.add(m)
-            continue
         seen.add(m)
+        if _module_file(m) is None:
+            continue   # Snakemake reports the missing input by its path below
+        parts = m.split(".")
+        todo.extend(".".join(parts[:i]) for i in range(1, len(parts)) if parts[0])
         todo.extend(_imports_of(m) - seen)
-    return sorted(str(Path("src/restitution") / f"{m}.py") for m in seen | {"__init__"})
+    files = {_module_file(m) or PKG.joinpath(*m.split(".")).with_suffix(".py") for m in seen}
+    return sorted(str(f.relative_to(ROOT)) for f in files)
 
 
 BUILD_COMMIT, BUILD_VERSIONS = build_commit(ROOT), versions()
@@ -172,12 +185,6 @@ RELATIONS = {
 def relation_files(wildcards):
     return [tpl.format(variant=wildcards.variant)
             for applies, tpl in RELATIONS.values() if applies(wildcards.variant)]
-
-
-def optional_lib(*modules):
-    """lib() of modules that may not exist yet (being written elsewhere): the existing ones only.
-    The scripts that use them say "not available" for the missing ones."""
-    return lib(*[m for m in modules if (PKG / f"{m}.py").exists()])
 
 
 # ---------------------------------------------------------------------------------------------

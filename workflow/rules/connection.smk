@@ -1,14 +1,14 @@
 # Stage 4: the connection Omega~ = c0 + c1 Omega + c2 Omega^2 between the forward and inverse
-# collisions (restitution.connection), three ways: the paper's procedure for each reading of its
+# collisions, three ways (restitution.audit.matching, restitution.core.connection): the paper's procedure for each reading of its
 # text, a least-squares fit to the exact connection, and the eps(g) each relation implies against
-# the reference. Where the paper's exponents apply, the claims ledger (restitution.claims).
+# the reference. Where the paper's exponents apply, the claims ledger (restitution.audit.claims).
 
 
 rule connection_readings:
     """c0-c2 from the paper's procedure, one row per reading (symbolic; the slow step)."""
     input:
         summary=rules.reference_trajectories.output.summary,
-        src=lib("connection"),
+        src=lib("audit.matching"),
         code=code("connection_readings.py") + ["workflow/scripts/_config.py", "workflow/scripts/common/latex.py"],
     output:
         json="results/{variant}/connection/readings.json",
@@ -32,7 +32,7 @@ rule connection_fit:
     input:
         curve=rules.reference_eps_curve.output[0],
         summary=rules.reference_trajectories.output.summary,
-        src=lib("connection"),
+        src=lib("core.connection"),
         code=code("connection_fit.py"),
     output:
         json="results/{variant}/connection/fit.json",
@@ -53,7 +53,7 @@ rule eps_compare:
     input:
         curve=rules.reference_eps_curve.output[0],
         relations=relation_files,
-        src=lib("connection"),
+        src=lib("core.connection"),
         code=code("eps_compare.py") + ["workflow/scripts/common/latex.py"],
     output:
         curves="results/{variant}/connection/eps_compare.csv",
@@ -76,7 +76,7 @@ rule claims:
         readings=rules.connection_readings.output.json,
         fit=rules.connection_fit.output.json,
         curve=rules.reference_eps_curve.output[0],
-        src=lib("claims", "connection", "collision", "model", "series", "damped", "printed"),
+        src=lib("audit.claims"),
         code=code("claims.py") + ["workflow/scripts/common/latex.py"],
     output:
         csv=report("results/{variant}/claims.csv", caption="../report/claims.rst", category="Tables",

@@ -1,11 +1,11 @@
 # Stage 1: the exact perturbation series x(tau; Omega) = sum_n Omega^n x_n(tau), forward and
-# inverse, with rational coefficients (restitution.series), and their LaTeX tables marked
+# inverse, with rational coefficients (restitution.core.series), and their LaTeX tables marked
 # against the coefficients the paper prints.
 
 
 rule series:
     input:
-        src=lib("series"),
+        src=lib("core.series"),
         code=code("series.py"),
     output:
         forward="results/{variant}/series/forward.json",
@@ -24,7 +24,7 @@ rule series_table:
     input:
         forward=rules.series.output.forward,
         inverse=rules.series.output.inverse,
-        src=lib("printed"),
+        src=lib("audit.printed"),
         code=code("series_table.py"),
     output:
         table="results/{variant}/series/table.tex",

@@ -1,14 +1,14 @@
 # Stability atlas (issue 6): the reference integrator over Omega = 1e-8 .. 1e8 and a grid of
 # exponents, every point checked against its invariants, a tighter tolerance, the mpmath
-# reference and the closed forms (restitution.stability). Split into `shards` parallel jobs of
+# reference and the closed forms (restitution.audit.stability). Split into `shards` parallel jobs of
 # equal estimated cost; the merged table does not depend on the number of shards.
 #
 # Needs from the including Snakefile: common.smk (lib, code, script_file, STABILITY_OUTPUTS,
 # MANUSCRIPT_INPUTS); include this file before manuscript.smk so the appendix's inputs reach the
-# manuscript rule. Settings: config["stability"] (all optional, see restitution.stability.AtlasSpec).
+# manuscript rule. Settings: config["stability"] (all optional, see restitution.audit.stability.AtlasSpec).
 
-from restitution.errors import ParameterError as _StabilityParameterError
-from restitution.stability import AtlasSpec as _AtlasSpec
+from restitution.core.errors import ParameterError as _StabilityParameterError
+from restitution.audit.stability import AtlasSpec as _AtlasSpec
 
 
 def _stability_settings():
@@ -31,7 +31,7 @@ def _stability_settings():
 
 STABILITY_SPEC, STABILITY_SHARDS = _stability_settings()
 # Modules the atlas imports (collision, highprec, asymptotics, dashpot through stability).
-STABILITY_SRC = lib("stability")
+STABILITY_SRC = lib("audit.stability")
 
 STABILITY_OUTPUTS.extend([
     "results/stability/atlas.csv",
@@ -98,7 +98,7 @@ rule fig_stability:
     """The atlas figure: eps, 1 - eps, tau_c against Omega with the limits, and the measured errors."""
     input:
         atlas=rules.stability_atlas.output.atlas,
-        src=lib("asymptotics"),
+        src=lib("core.asymptotics"),
         code=code("fig_stability.py"),
     output:
         pdf="results/stability/atlas.pdf",

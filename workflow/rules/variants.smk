@@ -10,7 +10,7 @@ rule validation:
     g-independence where it must hold."""
     input:
         curve=rules.reference_eps_curve.output[0],
-        src=lib("collision", "dashpot", "exponents") + optional_lib("asymptotics", "ladder"),
+        src=lib("core.collision", "core.dashpot", "core.exponents") + lib("core.asymptotics", "fast.calibration"),
         code=code("validation.py"),
     output:
         json="results/{variant}/validation/validation.json",

@@ -130,7 +130,7 @@ def _finite_range(schema) -> str:
     return f"{text} ({description})" if description else text
 
 
-#: $defs whose values a later, more specific check reads (exponents: restitution.exponents,
+#: $defs whose values a later, more specific check reads (exponents: restitution.core.exponents,
 #: whose message gives the allowed rationals); the walk below leaves them to it.
 _CHECKED_ELSEWHERE = ("#/$defs/exponent",)
 
@@ -239,8 +239,8 @@ def check_config(config: dict, schema_path: str) -> dict:
                           f"must be > compare.omega_min = {config['compare']['omega_min']!r}")
 
     # Physics-level checks through the library, so the messages match the CLI's.
-    from restitution.errors import ParameterError
-    from restitution.exponents import Exponents
+    from restitution.core.errors import ParameterError
+    from restitution.core.exponents import Exponents
 
     labels = reading_labels()
     max_power = config["series"]["max_power"]
@@ -257,7 +257,7 @@ def check_config(config: dict, schema_path: str) -> dict:
             ex = Exponents.parse(v["alpha"], v["gamma"])
         except ParameterError as err:
             raise ConfigError(f"{where}[{v['name']}].{err}") from None
-        # the series engine's limit (restitution.series: 400 powers of tau^(1/p)); checked here so
+        # the series engine's limit (restitution.core.series: 400 powers of tau^(1/p)); checked here so
         # that a value it cannot serve stops the run before any job, not inside every series job
         if max_power * ex.p > SERIES_MAX_INDEX:
             raise ConfigError(f"series.max_power = {max_power}: must be at most {Fraction(SERIES_MAX_INDEX, ex.p)} "
@@ -281,7 +281,7 @@ def check_config(config: dict, schema_path: str) -> dict:
     return config
 
 
-#: Highest index k of tau^(k/p) the series engine computes (restitution.series).
+#: Highest index k of tau^(k/p) the series engine computes (restitution.core.series).
 SERIES_MAX_INDEX = 400
 
 #: Suffix of the reading whose inverse series start at x~_c (its label carries the number).
@@ -289,8 +289,8 @@ XC_SUFFIX = "-xc"
 
 
 def reading_labels() -> list[str]:
-    """Labels a variant may list under `readings` (restitution.connection.all_readings)."""
-    from restitution.connection import all_readings
+    """Labels a variant may list under `readings` (restitution.audit.readings.all_readings)."""
+    from restitution.audit.readings import all_readings
 
     out = [r.label for r in all_readings(None)]
     with_xc = [r for r in all_readings(0.5) if r.x_tilde_c]
@@ -377,7 +377,6 @@ def precheck_file(path) -> None:
     """For the Snakefile, before its `configfile:` loads ``path``: a YAML syntax error becomes
     one line, "config error: <path>, line N, column M: ...", and exit status 2; so does a missing,
     empty or non-UTF-8 file, a duplicated key and an alias bomb (read_config_file)."""
-    import os
     import sys
 
     try:

@@ -1,8 +1,8 @@
 # %% [markdown]
 # # The claims ledger: every quantitative statement of the paper next to our value
 #
-# `restitution.claims.compute_claim_values` computes the numbers behind each statement and
-# `restitution.claims.build_claims` turns them into rows (claim, where, paper_value, our_value,
+# `restitution.audit.claims.compute_claim_values` computes the numbers behind each statement and
+# `restitution.audit.claims.build_claims` turns them into rows (claim, where, paper_value, our_value,
 # tolerance, verdict, note). Two stages of this pipeline already computed parts of it and are
 # not repeated here: the c0-c2 of every reading of the paper's procedure (connection_readings.py)
 # and the least-squares c0-c2 (connection_fit.py). The ledger's fit runs on the same impact speeds
@@ -12,15 +12,14 @@
 # every row that was not reproduced.
 
 # %%
-import math
 
 import numpy as np
 import pandas as pd
 from common.latex import esc, math_text, sentence
 from common.pipeline import read_json, start, write_csv, write_json, write_text
 
-from restitution import claims as cl
-from restitution import printed
+from restitution.audit import claims as cl
+from restitution.audit import printed
 
 start(snakemake)
 

@@ -4,22 +4,21 @@
 # The reference eps(g) of figure 4 gives the exact connection Omega~ = Omega eps^k,
 # k = (alpha-1-2 gamma)/(gamma+1), at every impact speed of the curve. Fitting
 # c0 + c1 Omega + c2 Omega^2 to the points whose g lies in the variant's `fit_g_range`
-# (`restitution.connection.fit_quadratic`) needs no integration of its own. The fit does not
+# (`restitution.core.connection.fit_quadratic`) needs no integration of its own. The fit does not
 # exist when k = 0 (then Omega does not depend on g and Omega~ = Omega identically) or when fewer
 # than four points fall in the range.
 #
-# Check of the exact connection (`restitution.connection.retrace`): the inverse collision
+# Check of the exact connection (`restitution.core.connection.retrace`): the inverse collision
 # integrated from the forward end state at g_figure and mapped back into forward variables must
 # retrace the forward trajectory.
 
 # %%
-import numpy as np
 import pandas as pd
 from common.pipeline import read_json, start, write_csv, write_json
 
-from restitution import connection as cn
-from restitution.errors import ParameterError
-from restitution.exponents import Exponents
+from restitution.core import connection
+from restitution.core.errors import ParameterError
+from restitution.core.exponents import Exponents
 
 start(snakemake)
 
@@ -40,9 +39,9 @@ if ex.omega_exponent == 0:
 elif pts["omega"].nunique() < 4:
     fit["reason"] = f"only {pts['omega'].nunique()} distinct Omega in the fit range (4 needed)"
 else:
-    res = cn.fit_quadratic(pts["omega"].to_numpy(), pts["omega_tilde"].to_numpy())
+    res = connection.fit_quadratic(pts["omega"].to_numpy(), pts["omega_tilde"].to_numpy())
     fit.update(res.as_dict(), applies=True, g_min=rng["min"], g_max=rng["max"])
-    validity = cn.connection_validity(ex, None, res.c)
+    validity = connection.connection_validity(ex, None, res.c)
     fit["validity"] = {k: [list(iv) for iv in v] for k, v in validity.items()}
     residuals = pd.DataFrame({"g": pts["g"], "omega": pts["omega"], "omega_tilde": pts["omega_tilde"],
                               "omega_tilde_fit": pts["omega_tilde"] - res.residuals,
@@ -52,7 +51,7 @@ else:
 # %% The retrace check at g_figure
 summary = read_json(snakemake.input.summary)
 try:
-    rt = cn.retrace(ex, None, summary["omega"], rtol=p.rtol)
+    rt = connection.retrace(ex, None, summary["omega"], rtol=p.rtol)
     fit["retrace"] = {"omega": rt.omega, "omega_tilde": rt.omega_tilde, "eps": rt.eps,
                       "x_tilde_start": rt.x_tilde_start, "samples": int(rt.tau.size),
                       "max_deviation": rt.max_deviation, "v_end_error": rt.v_end_error,
@@ -65,7 +64,7 @@ except ParameterError as err:
 write_json(snakemake.output.json, fit)
 write_csv(snakemake.output.residuals, residuals)
 write_json(snakemake.output.relation, {
-    "kind": "fitted", "source": "least squares on the exact connection (restitution.connection.fit_quadratic)",
+    "kind": "fitted", "source": "least squares on the exact connection (restitution.core.connection.fit_quadratic)",
     "label": r"least-squares $c_0, c_1, c_2$" if fit["applies"] else None,
     "c": fit.get("c"), "reason": fit.get("reason", ""),
 })

@@ -1,7 +1,7 @@
 # %% [markdown]
 # # c0, c1, c2 from the paper's connection procedure, one row per reading
 #
-# `restitution.connection.paper_procedure` joins the forward and inverse series at maximum
+# `restitution.audit.matching.paper_procedure` joins the forward and inverse series at maximum
 # compression through the reference points tau_0, tau~_0 and solves for the coefficients of
 # Omega~ = c0 + c1 Omega + c2 Omega^2 order by order. The paper leaves several choices open
 # (truncation, orders kept, how Delta is expanded, scale change, start of the inverse run); each
@@ -18,8 +18,8 @@ from _config import XC_SUFFIX
 from common.latex import esc, fixed
 from common.pipeline import read_json, start, write_csv, write_json, write_text
 
-from restitution import connection as cn
-from restitution.errors import ParameterError
+from restitution.audit import matching, readings
+from restitution.core.errors import ParameterError
 
 start(snakemake)
 
@@ -29,7 +29,7 @@ alpha, gamma = p.exponents["alpha"], p.exponents["gamma"]
 summary = read_json(snakemake.input.summary)
 x_tilde_c = summary["inverse"]["x_tilde_c"]
 # The x~_c reading needs a start inside [0, 1): the reference point x~ = 1 must lie ahead.
-readings = cn.all_readings(x_tilde_c if 0 < x_tilde_c < 1 else None)
+readings = readings.all_readings(x_tilde_c if 0 < x_tilde_c < 1 else None)
 
 
 def key(reading) -> str:
@@ -45,7 +45,7 @@ if p.readings != "all":
 rows = []
 for r in readings:
     try:
-        cc = cn.paper_procedure(alpha, gamma, r)
+        cc = matching.paper_procedure(alpha, gamma, r)
         rows.append({**cc.as_dict(), "c": [cc.c0, cc.c1, cc.c2]})
     except ParameterError as err:  # the procedure itself does not exist for these exponents
         rows.append({"reading": r.label, "description": r.describe(), "defined": False,
@@ -62,7 +62,7 @@ else:
     if chosen is not None:
         why = ("not computed for this variant" if p.figure_reading not in by_key
                else "no solution for this variant")
-derived = {"kind": "derived", "source": "restitution.connection.paper_procedure"}
+derived = {"kind": "derived", "source": "restitution.audit.matching.paper_procedure"}
 if chosen is not None:
     derived.update(label=rf"paper's procedure, reading {chosen['reading']}", c=chosen["c"],
                    reading=chosen["reading"], description=chosen["description"], choice=why,

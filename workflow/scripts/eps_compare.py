@@ -3,7 +3,7 @@
 #
 # For each relation of the variant (the paper's printed c's, our c's from the paper's procedure,
 # our least-squares c's) eps = (Omega~/Omega)^((gamma+1)/(alpha-1-2 gamma))
-# (`restitution.connection.eps_from_connection`) at the impact speeds of figure 4, and its error
+# (`restitution.core.connection.eps_from_connection`) at the impact speeds of figure 4, and its error
 # against the reference integration: max and median of |eps - eps_ref| and of
 # |eps - eps_ref| / eps_ref over the speeds where the relation gives a real eps (Omega~ > 0), with
 # the number of speeds where it gives none and where it gives eps > 1 (unphysical). Figure 4 and
@@ -15,8 +15,8 @@ import pandas as pd
 from common.latex import esc, sci
 from common.pipeline import read_json, start, write_csv, write_text
 
-from restitution.connection import eps_from_connection
-from restitution.exponents import Exponents
+from restitution.core.connection import eps_from_connection
+from restitution.core.exponents import Exponents
 
 start(snakemake)
 

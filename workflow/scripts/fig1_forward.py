@@ -11,7 +11,7 @@ import numpy as np
 import pandas as pd
 from common.pipeline import read_json, save_figure, setup_matplotlib, start
 
-from restitution.series import perturbation_series
+from restitution.core.series import perturbation_series
 
 start(snakemake)
 plt = setup_matplotlib()

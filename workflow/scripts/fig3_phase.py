@@ -6,7 +6,7 @@
 # inverse curve down by 1 makes the two cross where x^(gamma+1)/(gamma+1) = 1/2, which is the
 # line x = 1 for gamma = 1: the reference point the paper uses to join the two solutions.
 # For gamma = 1 the closed forms sqrt(2) tanh(tau/sqrt(2)) and sqrt(2) tan(tau/sqrt(2))
-# (restitution.damped) are drawn as markers on top of the curves.
+# (restitution.core.damped) are drawn as markers on top of the curves.
 
 # %%
 from fractions import Fraction
@@ -14,7 +14,7 @@ from fractions import Fraction
 import numpy as np
 from common.pipeline import save_figure, setup_matplotlib, start
 
-from restitution import damped
+from restitution.core import damped
 
 start(snakemake)
 plt = setup_matplotlib()

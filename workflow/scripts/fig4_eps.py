@@ -4,7 +4,7 @@
 # The reference eps(g) from one integration per impact speed, and eps implied by each relation
 # Omega~ = c0 + c1 Omega + c2 Omega^2 of the variant: the paper's printed c's (paper's exponents
 # only), our c's from the paper's procedure (one documented reading) and our least-squares c's.
-# The curves are computed by eps_compare.py (`restitution.connection.eps_from_connection`); this
+# The curves are computed by eps_compare.py (`restitution.core.connection.eps_from_connection`); this
 # script only draws them. Where a relation gives no real eps (Omega~ <= 0) its curve has a gap.
 
 # %%

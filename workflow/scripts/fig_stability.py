@@ -5,7 +5,7 @@
 # eps against Omega with the viscous limit (dashed), 1 - eps with the elastic limit (dashed),
 # the contact time tau_c with both limits, and the measured relative errors of the atlas runs
 # (against the tight tolerance, the mpmath reference and the closed forms) under the stated
-# accuracy (grey line). The limits come from `restitution.asymptotics`; this script only draws.
+# accuracy (grey line). The limits come from `restitution.core.asymptotics`; this script only draws.
 
 # %%
 from fractions import Fraction
@@ -15,10 +15,10 @@ import pandas as pd
 from common.atomic import atomic_path
 from common.pipeline import PDF_METADATA, PNG_METADATA, setup_matplotlib, start
 
-from restitution import stability as st
+from restitution.audit import stability as st
 
 try:
-    from restitution import asymptotics as asy
+    from restitution.core import asymptotics as asy
 except ImportError:  # pragma: no cover - the limits are another stage's work
     asy = None
 

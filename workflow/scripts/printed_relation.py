@@ -7,7 +7,7 @@
 # %%
 from common.pipeline import start, write_json
 
-from restitution.printed import PRINTED_C
+from restitution.audit.printed import PRINTED_C
 
 start(snakemake)
 

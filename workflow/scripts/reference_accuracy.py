@@ -11,8 +11,8 @@ import time
 import pandas as pd
 from common.pipeline import start, write_csv
 
-from restitution.collision import collide
-from restitution.model import Material
+from restitution.core.collision import collide
+from restitution.core.model import Material
 
 start(snakemake)
 

@@ -1,7 +1,7 @@
 # %% [markdown]
 # # Reference eps(g) over the impact speeds of figure 4
 #
-# One integration per impact speed (restitution.collision.collide_many); g enters only
+# One integration per impact speed (restitution.core.collision.collide_many); g enters only
 # through Omega(g). The table also carries Omega~ = Omega eps^((alpha-1-2 gamma)/(gamma+1)),
 # the exact connection the paper's c0 + c1 Omega + c2 Omega^2 approximates.
 
@@ -10,8 +10,8 @@ import numpy as np
 import pandas as pd
 from common.pipeline import start, write_csv
 
-from restitution.collision import collide_many
-from restitution.model import Material
+from restitution.core.collision import collide_many
+from restitution.core.model import Material
 
 start(snakemake)
 

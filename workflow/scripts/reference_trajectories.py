@@ -2,7 +2,7 @@
 # # Reference trajectories at the impact speed of figures 1 and 2
 #
 # The forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1 is integrated
-# to the end of contact (restitution.collision). The inverse collision of the paper is the same
+# to the end of contact (restitution.core.collision). The inverse collision of the paper is the same
 # motion run backwards from tau_c and rescaled with the rebound speed g~ = eps g:
 #
 #     x~ = x eps^(-1/(gamma+1)),  tau~ = (tau_c - tau) eps^(gamma/(gamma+1)),  x~' = -x'/eps,
@@ -15,9 +15,9 @@ import numpy as np
 import pandas as pd
 from common.pipeline import start, write_csv, write_json
 
-from restitution.collision import collide, inverse_collide
-from restitution.errors import ParameterError
-from restitution.model import Material
+from restitution.core.collision import collide, inverse_collide
+from restitution.core.errors import ParameterError
+from restitution.core.model import Material
 
 start(snakemake)
 

@@ -2,13 +2,13 @@
 # # Exact perturbation series (forward and inverse)
 #
 # x(tau; Omega) = sum_n Omega^n x_n(tau), each x_n a series in tau^(1/p) with rational
-# coefficients, from `restitution.series.perturbation_series`. Written as JSON with the
+# coefficients, from `restitution.core.series.perturbation_series`. Written as JSON with the
 # rationals as strings ("-4/35"), so nothing is rounded.
 
 # %%
 from common.pipeline import start, write_json
 
-from restitution.series import perturbation_series
+from restitution.core.series import perturbation_series
 
 start(snakemake)
 

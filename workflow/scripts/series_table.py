@@ -11,7 +11,7 @@ from fractions import Fraction
 
 from common.pipeline import read_json, start, write_json, write_text
 
-from restitution.printed import PRINTED_SERIES
+from restitution.audit.printed import PRINTED_SERIES
 
 start(snakemake)
 

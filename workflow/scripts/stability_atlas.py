@@ -2,10 +2,10 @@
 # # Stability atlas: the reference integrator at the extremes
 #
 # Two rules run this script. `stability_shard` integrates its share of the atlas points
-# (`restitution.stability.run_atlas`) and writes one CSV; `stability_atlas` merges the shards,
+# (`restitution.audit.stability.run_atlas`) and writes one CSV; `stability_atlas` merges the shards,
 # checks the invariants over the whole grid, and writes the atlas, the per-pair summary, the
 # agreement with the limits, the list of violations and the appendix's numbers (LaTeX macros).
-# All physics lives in `restitution.stability`; every file is written under a temporary name
+# All physics lives in `restitution.audit.stability`; every file is written under a temporary name
 # and renamed (`common/atomic.py`).
 
 # %%
@@ -16,7 +16,7 @@ import pandas as pd
 from common.atomic import atomic_path, write_text_atomic
 from common.pipeline import start
 
-from restitution import stability as st
+from restitution.audit import stability as st
 
 start(snakemake)
 spec = st.AtlasSpec.from_config(snakemake.params.spec)

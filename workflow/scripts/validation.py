@@ -4,17 +4,17 @@
 # eps depends on (alpha, gamma, Omega) only, so variants are compared, and validated, on one
 # log-spaced grid of Omega (`compare` in config.yaml) rather than on their impact-speed ranges (for
 # the dashpot every g gives the same Omega). The reference eps on that grid
-# (`restitution.collision.collide_many`) is compared with every known result that applies to the
+# (`restitution.core.collision.collide_many`) is compared with every known result that applies to the
 # variant's exponents:
 #
-# * alpha = 1, gamma = 0: the exact linear spring-dashpot (`restitution.dashpot`), force-zero end;
-# * alpha = gamma: the exact parametric solution (`restitution.asymptotics.equal_exponents_eps`);
+# * alpha = 1, gamma = 0: the exact linear spring-dashpot (`restitution.core.dashpot`), force-zero end;
+# * alpha = gamma: the exact parametric solution (`restitution.core.asymptotics.equal_exponents_eps`);
 # * alpha = 3/2, gamma = 1/2 (viscoelastic spheres): the elastic-limit series of Ramirez et al.
 #   (1999), eps = 1 - C1 delta + C2 delta^2 + ..., delta = Omega^(-3/5)
-#   (`restitution.asymptotics.elastic_limit`): its error must fall like the first omitted power,
+#   (`restitution.core.asymptotics.elastic_limit`): its error must fall like the first omitted power,
 #   delta^3, so the slope of log(error) against log(Omega) over the top decade of the grid is
 #   compared with -3A, A = (gamma+1)/(alpha+1); and the Pade form of Mueller and Poeschel (2011)
-#   (`restitution.ladder.pade_mp2011`) where delta <= `pade_delta_max`;
+#   (`restitution.fast.calibration.pade_mp2011`) where delta <= `pade_delta_max`;
 # * alpha - 1 - 2 gamma = 0: eps does not depend on g (spread of the figure-4 curve).
 #
 # A result whose library module is missing is listed as "not available" instead of failing.
@@ -26,18 +26,18 @@ import numpy as np
 import pandas as pd
 from common.pipeline import start, write_csv, write_json
 
-from restitution.collision import collide_many
-from restitution.dashpot import dashpot_collision
-from restitution.exponents import Exponents
+from restitution.core.collision import collide_many
+from restitution.core.dashpot import dashpot_collision
+from restitution.core.exponents import Exponents
 
 start(snakemake)
 
 try:
-    from restitution import asymptotics
+    from restitution.core import asymptotics
 except ImportError:  # being written elsewhere: the checks that need it say so
     asymptotics = None
 try:
-    from restitution.ladder import pade_mp2011
+    from restitution.fast.calibration import pade_mp2011
 except ImportError:
     pade_mp2011 = None
 
@@ -79,7 +79,7 @@ if (ex.alpha, ex.gamma) == (1, 0):
 
 if ex.alpha == ex.gamma:
     if asymptotics is None:
-        check("alpha = gamma, closed form", "", None, None, None, what="", note="restitution.asymptotics not available")
+        check("alpha = gamma, closed form", "", None, None, None, what="", note="restitution.core.asymptotics not available")
     else:
         exact = asymptotics.equal_exponents_eps(omega)
         known["eps_equal_exponents"] = exact
@@ -93,7 +93,7 @@ if (ex.alpha, ex.gamma) == HERTZ:
     A = float((ex.gamma + 1) / (ex.alpha + 1))
     if asymptotics is None:
         check("elastic-limit series", "ramirez1999", None, None, None, what="",
-              note="restitution.asymptotics not available")
+              note="restitution.core.asymptotics not available")
     else:
         series = asymptotics.elastic_limit(ex.alpha, ex.gamma)
         known["eps_elastic_series"] = series.eps(omega, order=2)
@@ -106,7 +106,7 @@ if (ex.alpha, ex.gamma) == HERTZ:
               note=f"C1 = {series.C1:.7f}, C2 = {series.C2:.7f}; error {err[-1]:.2e} at the largest Omega",
               omega_range=(omega[top].min(), omega[top].max()), n=int(top.sum()))
     if pade_mp2011 is None:
-        check("Pade form", "mueller2011", None, None, None, what="", note="restitution.ladder not available")
+        check("Pade form", "mueller2011", None, None, None, what="", note="restitution.fast.ladder not available")
     else:
         known["eps_pade"] = pade_mp2011(omega)
         delta = omega ** (-A)

@@ -6,7 +6,7 @@
 # values.tex with one \newcommand per number (the manuscript \input's it, so no number is typed
 # by hand) and values.json with the raw values, their kind and the tolerance `make check` allows.
 # Nothing is computed here that another stage computes: each number has one source, and the
-# paper's printed numbers come from `restitution.printed`.
+# paper's printed numbers come from `restitution.audit.printed`.
 
 # %%
 import math
@@ -18,8 +18,8 @@ import pandas as pd
 from common.latex import esc, frac_tex, math_text, sci
 from common.pipeline import read_json, start, write_json, write_text
 
-from restitution import printed
-from restitution.model import Material
+from restitution.audit import printed
+from restitution.core.model import Material
 
 start(snakemake)
 
@@ -252,7 +252,7 @@ if p.claims:
     V.add("ReadingsReproduced", int((reading_rows["verdict"] == "reproduced").sum()), kind="exact",
           note="readings whose c0-c2 equal the printed ones within the ledger's tolerance")
 
-    # The paper's printed numbers (restitution.printed) and ours next to them.
+    # The paper's printed numbers (restitution.audit.printed) and ours next to them.
     V.add("PaperDstar", printed.D_STAR, tex=r"\ensuremath{3\times 10^{-3}}", kind="paper")
     V.add("PaperOmegaAtG", printed.OMEGA_AT_G, tex=f"{printed.OMEGA_AT_G}", kind="paper")
     V.add("PaperTauBAtG", printed.TAU_B_AT_G, tex=f"{printed.TAU_B_AT_G}", kind="paper")

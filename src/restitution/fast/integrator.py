@@ -14,7 +14,7 @@ loop per point or per step:
   the same arithmetic costs well under a microsecond per step, so one collision takes tens of
   microseconds instead of tens of milliseconds. That is why numba is used here (and only here).
 
-  The formulation is the smooth one of :mod:`restitution.collision` (and of the mpmath reference):
+  The formulation is the smooth one of :mod:`restitution.core.collision` (and of the mpmath reference):
   the start and the end near x = 0 are integrated in u = x^(1/p) (alpha = q_alpha/p,
   gamma = q_gamma/p), where the equations are polynomial; the middle in tau with the force
   f = Omega x^(alpha-gamma) + x' carried as a state of its own (when Omega is small, f is a tiny

@@ -21,7 +21,7 @@ from fractions import Fraction
 import numpy as np
 
 from . import printed
-from .errors import ParameterError
+from ..core.errors import ParameterError
 
 COLUMNS = ("claim", "where", "paper_value", "our_value", "tolerance", "verdict", "note")
 REPRODUCED, NOT_REPRODUCED, AMBIGUOUS = "reproduced", "not reproduced", "ambiguous"
@@ -63,8 +63,8 @@ DEFAULT_SETTINGS = {
 # ===================================================================================== computing
 def _series_values(alpha, gamma) -> list[dict] | None:
     """Each printed x_n (forward, inverse) against the exact engine; None for other exponents."""
-    from .exponents import as_exponents
-    from .series import perturbation_series
+    from ..core.exponents import as_exponents
+    from ..core.series import perturbation_series
 
     ex = as_exponents(alpha, gamma)
     if ex != as_exponents(printed.ALPHA, printed.GAMMA):
@@ -103,9 +103,9 @@ def tracking_values(alpha, gamma, omega, omega_tilde, *, thresholds=(0.01, 0.05,
     and with the change of time scale, tau = tau_c - eps^(-gamma/(gamma+1)) tau~.
     Keys of the per-threshold dicts are str(threshold), then str(order).
     """
-    from .collision import collide, inverse_collide
-    from .exponents import as_exponents
-    from .series import perturbation_series
+    from ..core.collision import collide, inverse_collide
+    from ..core.exponents import as_exponents
+    from ..core.series import perturbation_series
 
     fwd = collide(alpha, gamma, omega, rtol=rtol)
     tau = np.linspace(0.0, fwd.tau_c, samples)
@@ -147,7 +147,7 @@ def radius_estimate(gamma, direction: str, max_power=201) -> float:
 
     R = |c_k / c_k'|^(1/(k' - k)) (ratio test); for tanh / tan the corrections fall like 3^-k.
     """
-    from .series import perturbation_series
+    from ..core.series import perturbation_series
 
     ps = perturbation_series(2, gamma, 0, max_power, direction)  # x0 does not depend on alpha
     terms = ps.terms(0)
@@ -157,7 +157,7 @@ def radius_estimate(gamma, direction: str, max_power=201) -> float:
 
 def _inverse_form_values(x_c: float = 0.5, h: float = 1e-4) -> dict:
     """Residuals of the paper's printed inverse closed form in the inverse and forward equations."""
-    from .damped import paper_inverse_closed_form
+    from ..core.damped import paper_inverse_closed_form
 
     tau = np.linspace(0.05, 0.6, 12)
     f = lambda t: paper_inverse_closed_form(t, x_c)  # noqa: E731
@@ -194,10 +194,10 @@ def compute_claim_values(material_params: dict, settings: dict | None = None) ->
     ``material_params``: alpha, gamma, D1, D2 (e.g. a variant of config.yaml; other keys ignored).
     ``settings``: see DEFAULT_SETTINGS (missing keys take the defaults).
     """
-    from . import connection as cn
-    from .collision import collide
-    from .exponents import as_exponents
-    from .model import Material
+    from ..core import connection
+    from . import matching, readings
+    from ..core.collision import collide
+    from ..core.model import Material
 
     st = {**DEFAULT_SETTINGS, **(settings or {})}
     mat = Material(material_params["alpha"], material_params["gamma"], material_params["D1"],
@@ -225,29 +225,29 @@ def compute_claim_values(material_params: dict, settings: dict | None = None) ->
 
     # Delta formulas and the reference points
     try:
-        delta, delta_t = cn.lowest_order_deltas(ex, None)
-        tau0, tau0t = cn.reference_times(ex, None)
+        delta, delta_t = matching.lowest_order_deltas(ex, None)
+        tau0, tau0t = readings.reference_times(ex, None)
         values["tau0"], values["tau0_tilde"] = float(tau0.evalf(20)), float(tau0t.evalf(20))
         values["delta_derived"] = [str(delta), str(delta_t)]
-        p_delta, p_delta_t = cn.printed_deltas()
+        p_delta, p_delta_t = matching.printed_deltas()
         values["delta_printed"] = [str(p_delta), str(p_delta_t)]
         values["delta_equal"] = [bool((delta - p_delta).expand() == 0),
                                  bool((delta_t - p_delta_t).expand() == 0)]
         # tau_b from the lowest-order Delta with converged x1'(tau_0)
-        vals = cn.reference_derivatives(ex, None, cn.Reading(truncation="converged"))
-        a11 = float(vals.a[cn.a_sym(1, 1)])
-        values["tau_b_lowest_order"] = values["tau0"] + float(delta.subs({cn.W: omega_fig, cn.a_sym(1, 1): a11}))
-        values["tau_b_lowest_order_at_zero"] = values["tau0"] + float(delta.subs(cn.W, 0))
+        vals = readings.reference_derivatives(ex, None, readings.Reading(truncation="converged"))
+        a11 = float(vals.a[readings.a_sym(1, 1)])
+        values["tau_b_lowest_order"] = values["tau0"] + float(delta.subs({readings.W: omega_fig, readings.a_sym(1, 1): a11}))
+        values["tau_b_lowest_order_at_zero"] = values["tau0"] + float(delta.subs(readings.W, 0))
     except ParameterError as err:  # gamma = 0: the reference point tau_0 does not exist
         values["delta_error"] = str(err)
 
     # the connection, every reading
-    readings = st["readings"] if st["readings"] is not None else cn.all_readings(
+    readings = st["readings"] if st["readings"] is not None else readings.all_readings(
         x_tilde_c_fig if 0 < x_tilde_c_fig < 1 else None)
     rows = []
     for r in readings:
         try:
-            cc = cn.paper_procedure(ex, None, r)
+            cc = matching.paper_procedure(ex, None, r)
             rows.append({**cc.as_dict(), "c": [cc.c0, cc.c1, cc.c2]})
         except ParameterError as err:
             rows.append({"reading": r.label, "description": r.describe(), "defined": False,
@@ -260,18 +260,18 @@ def compute_claim_values(material_params: dict, settings: dict | None = None) ->
 
     for key, (lo, hi) in (("fit", st["g_fit"]), ("fit_wide", st["g_wide"])):
         omegas = np.sort(mat.omega(g_grid(lo, hi)))
-        fit = cn.fit_connection(ex, None, omegas, rtol=rtol)
+        fit = connection.fit_connection(ex, None, omegas, rtol=rtol)
         values[key] = {**fit.as_dict(), "g_min": float(lo), "g_max": float(hi)}
 
     # figure 4: eps(g) from the paper's relation and from the reference
     g = g_grid(*st["g_wide"])
     omegas = mat.omega(g)
-    exact = cn.exact_omega_tilde(ex, None, omegas, rtol=rtol)
+    exact = connection.exact_omega_tilde(ex, None, omegas, rtol=rtol)
     eps_ref = exact["eps"]
     if k != 0:
-        eps_paper = np.asarray(cn.eps_from_connection(ex, None, omegas, printed.PRINTED_C), float)
+        eps_paper = np.asarray(connection.eps_from_connection(ex, None, omegas, printed.PRINTED_C), float)
         fit_c = values["fit"]["c"]
-        eps_fit = np.asarray(cn.eps_from_connection(ex, None, omegas, fit_c), float)
+        eps_fit = np.asarray(connection.eps_from_connection(ex, None, omegas, fit_c), float)
     else:
         eps_paper = eps_fit = np.full(g.shape, np.nan)
     in_fit = (g >= st["g_fit"][0]) & (g <= st["g_fit"][1])
@@ -281,12 +281,12 @@ def compute_claim_values(material_params: dict, settings: dict | None = None) ->
         "max_abs_error_paper_in_fit_range": _nanmax(np.abs(eps_paper - eps_ref)[in_fit]),
         "max_abs_error_fit_in_fit_range": _nanmax(np.abs(eps_fit - eps_ref)[in_fit]),
         "paper_relation_omega_tilde_max_rel_error_in_fit_range": _nanmax(
-            np.abs(cn.omega_tilde_from_c(omegas, printed.PRINTED_C) - exact["omega_tilde"])[in_fit]
+            np.abs(connection.omega_tilde_from_c(omegas, printed.PRINTED_C) - exact["omega_tilde"])[in_fit]
             / exact["omega_tilde"][in_fit]),
     }
 
     if k != 0:
-        val = cn.connection_validity(ex, None, printed.PRINTED_C)
+        val = connection.connection_validity(ex, None, printed.PRINTED_C)
         to_g = lambda w: (w / mat.omega(1.0)) ** (1.0 / float(k)) if math.isfinite(w) and w > 0 else (  # noqa: E731
             math.inf if float(k) < 0 else 0.0)
         values["paper_relation_validity"] = {

@@ -3,9 +3,9 @@
 Construction (``build_master``):
 
 1. Reference values on a calibration grid (log10 Omega in steps of 0.1) from the compiled
-   integrator at rtol = 1e-14 (:func:`restitution.fast.collide_fast`), or from the exact closed form
+   integrator at rtol = 1e-14 (:func:`restitution.fast.integrator.collide_fast`), or from the exact closed form
    when alpha = gamma.
-2. The asymptotic expansions of :mod:`restitution.asymptotics` are compared with the grid; their
+2. The asymptotic expansions of :mod:`restitution.core.asymptotics` are compared with the grid; their
    remainders are fitted by the form the derivation predicts (viscous, alpha > gamma:
    Omega^2 (a L^2 + b L + c), L = ln 1/Omega; elastic: delta^q, q = min(3, end_power + 1)), which
    gives an error bound for each expansion that extends beyond the grid.
@@ -14,10 +14,10 @@ Construction (``build_master``):
    on uniform panels of width ``width`` in s = ln Omega (values from the integrator at the nodes).
 4. Errors are measured on points that were not nodes: random points in every panel and the whole
    calibration grid against the integrator, and ``n_highprec`` random points against the mpmath
-   reference (:mod:`restitution.highprec`). The bound claimed inside [Omega_lo, Omega_hi] is twice
+   reference (:mod:`restitution.core.highprec`). The bound claimed inside [Omega_lo, Omega_hi] is twice
    the larger of (fit error + integrator error) and the error against the mpmath reference.
 
-Evaluation (``MasterCurve.eps``) runs one compiled loop (:func:`restitution.fast.chebyshev_panels_eval`):
+Evaluation (``MasterCurve.eps``) runs one compiled loop (:func:`restitution.fast.integrator.chebyshev_panels_eval`):
 Chebyshev inside, the expansions outside. ``MasterCurve.bound(omega)`` is the largest bound over the
 given Omegas. A curve serialises to a plain dict (``as_dict``/``from_dict``) for JSON.
 """
@@ -31,10 +31,10 @@ from fractions import Fraction
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
-from . import asymptotics as asy
-from .errors import ParameterError
-from .exponents import as_exponents
-from .fast import END_FAILED, chebyshev_panels_eval, collide_fast
+from ..core import asymptotics as asy
+from ..core.errors import ParameterError
+from ..core.exponents import as_exponents
+from .integrator import END_FAILED, chebyshev_panels_eval, collide_fast
 
 __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps",
            "INTEGRATOR_BOUND_FACTOR", "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "stiff_omega_min"]
@@ -380,7 +380,7 @@ def build_master(alpha, gamma, settings: MasterSettings | None = None, *, progre
     # ---- held-out errors against the mpmath reference
     hp = {"n": 0, "max_rel_err_master": 0.0, "max_rel_err_integrator": 0.0}
     if s.n_highprec > 0:
-        from .highprec import reference_collision
+        from ..core.highprec import reference_collision
 
         lo_hp, hi_hp = math.log(max(grid[0], curve.omega_lo / 100)), math.log(min(grid[-1], curve.omega_hi * 100))
         pts = np.exp(rng.uniform(lo_hp, hi_hp, s.n_highprec))

@@ -7,7 +7,7 @@ Solves the scaled problem
 to a requested number of significant digits, and returns the bound (maximum compression)
 point, the end of contact and the coefficient of restitution.
 
-This module exists to check ``restitution.collision`` (double precision, scipy), so it
+This module exists to check ``restitution.core.collision`` (double precision, scipy), so it
 shares no code with it and uses a different method: explicit Taylor series of high order,
 whose coefficients come from power-series recurrences (automatic differentiation), with
 the step size and the order chosen from the series' own tail. Events are roots of the
@@ -461,7 +461,7 @@ _COMPARED = ("eps", "tau_b", "x_b", "tau_c")
 def reference_collision(alpha, gamma, omega, *, digits: int = 30) -> HighPrecisionCollision:
     """Collision quantities to about ``digits`` significant digits.
 
-    ``alpha`` and ``gamma`` are anything :class:`~restitution.exponents.Exponents`
+    ``alpha`` and ``gamma`` are anything :class:`~restitution.core.exponents.Exponents`
     parses ("3/2", Fraction(3, 2), 1.5, ...); ``omega`` may be a float, int, Fraction,
     decimal string or mpf (strings and Fractions are read at full working precision;
     a float is taken as the exact binary number it is).

@@ -1,7 +1,7 @@
 """The stability atlas: the reference integrator swept over Omega and the exponents, and its invariants.
 
 For every (alpha, gamma) of a grid and every Omega of a log-spaced grid (1e-8 to 1e8 by default),
-``restitution.collision.collide`` is run at the atlas tolerance and the result is checked:
+``restitution.core.collision.collide`` is run at the atlas tolerance and the result is checked:
 
 * ``finite``      eps, tau_b, x_b, tau_c, x_c are finite (and the integrator did not fail);
 * ``eps_range``   0 < eps < 1;
@@ -9,19 +9,19 @@ For every (alpha, gamma) of a grid and every Omega of a log-spaced grid (1e-8 to
 * ``x_c``         x_c > 0 where contact ends by the force;
 * ``end``         contact ends by the force when alpha > gamma and by separation when alpha <= gamma
                   (for alpha = gamma the force Omega + x' never vanishes while x > 0; for alpha < gamma
-                  it stays positive, see restitution.collision);
+                  it stays positive, see restitution.core.collision);
 * ``monotone``    eps increases with Omega: a step down by more than twice the stated accuracy is a
                   violation; smaller ones are counted as "unresolved", not as violations;
 * ``tight``       on a subset of Omega, every quantity agrees with a run at ``tight_rtol`` within the
                   stated accuracy (relative);
 * ``reference``   on a sparse subset, every quantity agrees with the independent mpmath integrator
-                  ``restitution.highprec.reference_collision`` within the stated accuracy;
+                  ``restitution.core.highprec.reference_collision`` within the stated accuracy;
 * ``exact``       where a closed form exists, the quantities it gives agree within the stated accuracy:
                   eps for alpha = gamma (``asymptotics.equal_exponents_eps``), everything for the linear
-                  spring-dashpot alpha = 1, gamma = 0 (``restitution.dashpot``).
+                  spring-dashpot alpha = 1, gamma = 0 (``restitution.core.dashpot``).
 
 "Stated accuracy" is the relative error claimed for every quantity at ``AtlasSpec.rtol``: by default
-10 rtol + 1e-13, the bound ``restitution.ladder`` states for its "reference" rung (collide); set
+10 rtol + 1e-13, the bound ``restitution.fast.ladder`` states for its "reference" rung (collide); set
 ``AtlasSpec.accuracy`` to claim something else.
 
 The high-precision reference costs 0.1-1 s per point when alpha > gamma at any Omega, but for
@@ -42,8 +42,8 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from .errors import ParameterError
-from .exponents import Exponents, as_exponents
+from ..core.errors import ParameterError
+from ..core.exponents import Exponents, as_exponents
 
 __all__ = ["AtlasSpec", "AtlasPoint", "Violation", "CHECKS", "QUANTITIES", "omega_grid", "plan",
            "shard", "estimated_cost", "limit_agreement", "run_point", "run_atlas", "check_invariants", "summarize", "pair_label",
@@ -309,10 +309,10 @@ def _worst(got: dict, truth: dict, with_xc: bool) -> tuple[float, str]:
 def _exact(alpha: Fraction, gamma: Fraction, omega: float) -> dict | None:
     """Closed-form values where they exist (eps only for alpha = gamma)."""
     if alpha == 1 and gamma == 0:
-        from .dashpot import dashpot_collision
+        from ..core.dashpot import dashpot_collision
         return _values(dashpot_collision(omega))
     if alpha == gamma:
-        from .asymptotics import equal_exponents_eps
+        from ..core.asymptotics import equal_exponents_eps
         return {"eps": float(equal_exponents_eps(np.array([omega]))[0])}
     return None
 
@@ -327,7 +327,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
     closed form). Comparisons not made are NaN (worst_*: ""). ``timings`` (optional dict) receives
     the seconds spent per kind of run; they are never part of the record, so records are reproducible.
     """
-    from .collision import collide
+    from ..core.collision import collide
 
     ex = as_exponents(point.alpha, point.gamma)
     rec = {"alpha": str(ex.alpha), "gamma": str(ex.gamma), "omega": point.omega, "index": point.index}
@@ -354,7 +354,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
         except Exception as err:  # noqa: BLE001
             rec["status"] = f"tight run failed: {type(err).__name__}: {err}".replace("\n", " ")
     if point.reference:
-        from .highprec import reference_collision
+        from ..core.highprec import reference_collision
         try:
             with clock("reference"):
                 ref = reference_collision(ex, None, point.omega, digits=spec.reference_digits)
@@ -549,7 +549,7 @@ def summarize(records: Iterable[dict], accuracy: float) -> list[dict]:
 
 # ------------------------------------------------------------------------------------------ limits
 def limit_agreement(records: Iterable[dict]) -> list[dict]:
-    """How the atlas meets the limits of ``restitution.asymptotics`` at its two ends, per pair.
+    """How the atlas meets the limits of ``restitution.core.asymptotics`` at its two ends, per pair.
 
     At the smallest Omega: eps against the viscous expansion (with its first correction where it has
     one) and, for alpha > gamma, tau_c against (2 ln(1/Omega) + L) / lambda. At the largest Omega:
@@ -558,7 +558,7 @@ def limit_agreement(records: Iterable[dict]) -> list[dict]:
     error (1 - eps loses the digits that eps has near 1). Empty if asymptotics is not available.
     """
     try:
-        from . import asymptotics as asy
+        from ..core import asymptotics as asy
     except ImportError:  # pragma: no cover - built by another stage
         return []
     out = []

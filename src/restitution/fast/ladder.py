@@ -19,19 +19,19 @@ pade-mp2011      (cal)  Mueller & Poeschel's Pade form in           alpha=3/2, g
 viscous          (cal)  small-Omega expansion (asymptotics)         Omega <= 1e-3                  ~2e-8 s
 elastic          (cal)  large-Omega expansion (asymptotics)         Omega >= 1e2                   ~3e-8 s
 closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma; alpha=1,gamma=0   5e-7 s
-                        linear spring-dashpot (restitution.dashpot)                                5e-6 s
+                        linear spring-dashpot (restitution.core.dashpot)                                5e-6 s
 master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
-integrator              compiled DOP853 (restitution.fast),         Omega in [1e-12, 1e14]         2e-5 to
+integrator              compiled DOP853 (restitution.fast.integrator),         Omega in [1e-12, 1e14]         2e-5 to
                         rtol from tol                               (alpha<=gamma: >= 1e-5)        7e-5 s
-reference               restitution.collision.collide (scipy)       all                            ~1e-2 s
-highprec                restitution.highprec (mpmath Taylor)        all (alpha<=gamma: >= 1e-3)    ~0.3 s
+reference               restitution.core.collision.collide (scipy)       all                            ~1e-2 s
+highprec                restitution.core.highprec (mpmath Taylor)        all (alpha<=gamma: >= 1e-3)    ~0.3 s
 ======================  =========================================  ============================  ========
 
 Bounds:
 
 * relation rungs, Pade, expansions inside the calibration grid (Omega 1e-12..1e14 in steps of
   0.1 decade): SAFETY x the largest error at the grid points bracketing the inputs + the grid's own
-  accuracy; expansions beyond the grid: the fitted remainder model of :mod:`restitution.master`;
+  accuracy; expansions beyond the grid: the fitted remainder model of :mod:`restitution.fast.master`;
 * master: measured held-out error inside its range (x2), expansion bounds outside;
 * integrator: INTEGRATOR_BOUND_FACTOR rtol + INTEGRATOR_BOUND_FLOOR (validated against mpmath);
 * reference: 10 rtol + 1e-13 (validated against mpmath); highprec: 10^(1 - digits), at least the
@@ -55,36 +55,19 @@ from typing import Callable
 
 import numpy as np
 
-from . import asymptotics as asy
+from ..core import asymptotics as asy
 from . import cache as _cache
-from .errors import ParameterError, real_array
-from .model import OMEGA_REPRESENTABLE, at_most_one
-from .exponents import Exponents, as_exponents
-from .master import (MASTER_VERSION, MasterCurve, MasterSettings, build_master, integrator_bound,
-                     reference_eps, stiff_omega_min)
+from ..core.errors import ParameterError, real_array
+from ..core.model import OMEGA_REPRESENTABLE, at_most_one
+from ..core.exponents import Exponents, as_exponents
+from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
+                          _relation_eps, _viscous_eval, build_calibration, pade_mp2011)
+from .master import MASTER_VERSION, MasterCurve, MasterSettings, integrator_bound, reference_eps, stiff_omega_min
 
-__all__ = ["EpsResult", "Ladder", "epsilon", "RUNG_NAMES", "SAFETY", "MUELLER_POESCHEL_PADE"]
+__all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE"]
 
 #: Profile bounds are SAFETY times the largest measured error at the bracketing grid points.
 SAFETY = 3.0
-#: Version of the calibration bundle (master curve + profiles); bump to invalidate caches.
-CALIBRATION_VERSION = 2
-#: Omega range of the c0-c2 fit (the claims ledger fits the paper's material over g in [0.01, 1],
-#: i.e. Omega in [0.098, 3.1]).
-FIT_OMEGA = (0.1, 3.0, 41)
-#: Orders of the perturbation route: the paper's procedure on the converged exact series, with
-#: Delta, Delta~ from x' expanded to first order in Delta and solved exactly (connection.Reading
-#: delta="linear"). That reading is fixed in advance because it is defined at every order; the
-#: printed lowest-order Delta formulas give no root c0 at odd orders for the paper's exponents.
-PERTURBATION_ORDERS = (1, 2, 3, 4)
-PERTURBATION_READING = {"truncation": "converged", "delta": "linear"}
-#: Mueller & Poeschel, PRE 84, 021302 (2011), alpha = 3/2, gamma = 1/2:
-#: eps = (1 + a v) / (1 + a v + b2 v^2 + b3 v^3 + b4 v^4), v = Omega^(-3/10) (their sqrt(beta) g^(1/10)
-#: in our scaling). Coefficients as used in a public implementation; we could not read the paper
-#: itself. They are consistent with the exact expansion: the v^2 term is -C1, the v^3 term vanishes
-#: (b3 = a b2 to 6 digits) and the v^4 term is C2 = (3/5) C1^2 to 6 digits (checked in the tests).
-MUELLER_POESCHEL_PADE = {"a": 0.501086, "b2": 1.15345, "b3": 0.577977, "b4": 0.532178}
-
 #: Rough seconds per point (measured by benchmarks/speed_accuracy.py on one core).
 COST = {"relation": 2e-8, "pade": 2e-8, "viscous": 2e-8, "elastic": 3e-8, "closed-equal": 5e-7,
         "closed-dashpot": 5e-6, "master": 4e-8, "integrator": 6e-5, "reference": 1e-2, "highprec": 0.4}
@@ -153,113 +136,6 @@ def _check_tol(tol) -> float:
     return t
 
 
-def _relation_eps(ex: Exponents, omega: np.ndarray, c) -> np.ndarray:
-    """eps from Omega~ = c0 + c1 Omega + c2 Omega^2 (NaN where Omega~ <= 0)."""
-    k = float(ex.omega_exponent)
-    wt = c[0] + c[1] * omega + c[2] * omega * omega
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(wt > 0, (wt / omega) ** (1.0 / k), np.nan)
-
-
-def pade_mp2011(omega) -> np.ndarray:
-    """Mueller & Poeschel's Pade approximant (alpha = 3/2, gamma = 1/2) in our Omega."""
-    c = MUELLER_POESCHEL_PADE
-    v = np.asarray(omega, dtype=float) ** -0.3
-    return (1.0 + c["a"] * v) / (1.0 + v * (c["a"] + v * (c["b2"] + v * (c["b3"] + v * c["b4"]))))
-
-
-def _rel_err(approx: np.ndarray, ref: np.ndarray) -> np.ndarray:
-    with np.errstate(invalid="ignore", divide="ignore"):
-        e = np.abs(approx / ref - 1.0)
-    return np.where(np.isfinite(e), e, np.inf)
-
-
-# ------------------------------------------------------------------------------------- calibration
-@dataclass
-class Calibration:
-    """Master curve + measured error profiles of the approximate rungs on the calibration grid."""
-
-    master: MasterCurve
-    profiles: dict            # rung -> np.ndarray of relative errors on master.grid_log10_omega
-    relations: dict           # rung -> {"c": [c0, c1, c2], "source": str}
-    unavailable: dict         # rung -> reason
-
-    def as_dict(self) -> dict:
-        return {"version": CALIBRATION_VERSION, "master": self.master.as_dict(),
-                "profiles": {k: [None if not np.isfinite(x) else float(x) for x in v]
-                             for k, v in self.profiles.items()},
-                "relations": self.relations, "unavailable": self.unavailable}
-
-    @classmethod
-    def from_dict(cls, d: dict) -> "Calibration":
-        if d.get("version") != CALIBRATION_VERSION:
-            raise ValueError("calibration version mismatch")
-        prof = {k: np.array([np.inf if x is None else x for x in v], dtype=float)
-                for k, v in d["profiles"].items()}
-        return cls(MasterCurve.from_dict(d["master"]), prof, d["relations"], d["unavailable"])
-
-
-def _relations_for(ex: Exponents, progress) -> tuple[dict, dict]:
-    """c0-c2 of the relation rungs: the paper's, our fit, the perturbation route at each order."""
-    rel, missing = {}, {}
-    if ex.omega_exponent == 0:
-        reason = "alpha - 1 - 2 gamma = 0: Omega~ = Omega whatever eps is, the relation is empty"
-        missing.update({"paper-c": reason, "fitted-c": reason})
-        missing.update({f"perturbation-N{n}": reason for n in PERTURBATION_ORDERS})
-        return rel, missing
-    from . import printed
-    if ex.alpha == Fraction(3, 2) and ex.gamma == 1:
-        rel["paper-c"] = {"c": list(printed.PRINTED_C), "source": "printed in the paper"}
-    else:
-        missing["paper-c"] = "the printed c0-c2 belong to alpha = 3/2, gamma = 1"
-    lo, hi, n = FIT_OMEGA
-    om = np.geomspace(lo, hi, n)
-    try:
-        from .connection import fit_quadratic
-        eps = reference_eps(ex, None, om, 1e-13)
-        fit = fit_quadratic(om, om * eps ** float(ex.omega_exponent))
-        rel["fitted-c"] = {"c": list(fit.c), "source": f"least squares on Omega in [{lo}, {hi}], {n} points"}
-    except Exception as exc:  # noqa: BLE001 - a rung that cannot be built is reported, not fatal
-        missing["fitted-c"] = f"fit failed: {exc}"
-    for order in PERTURBATION_ORDERS:
-        name = f"perturbation-N{order}"
-        try:
-            from .connection import Reading, paper_procedure
-            progress(f"perturbation route, order {order}")
-            cc = paper_procedure(ex, None, Reading(omega_orders=order, **PERTURBATION_READING))
-            if cc.defined and all(math.isfinite(x) for x in cc.c):
-                rel[name] = {"c": [float(x) for x in cc.c], "source": f"paper's procedure, reading {cc.reading.label}"}
-            else:
-                missing[name] = f"paper's procedure undefined: {cc.reason}"
-        except Exception as exc:  # noqa: BLE001
-            missing[name] = f"paper's procedure failed: {type(exc).__name__}: {exc}"
-    return rel, missing
-
-
-def build_calibration(alpha, gamma, settings: MasterSettings | None = None, progress=None) -> Calibration:
-    ex = as_exponents(alpha, gamma)
-    say = progress or (lambda m: None)
-    master = build_master(ex, None, settings, progress=say)
-    grid = 10.0 ** master.grid_log10_omega
-    ref = master.grid_eps
-    rel, missing = _relations_for(ex, say)
-    profiles = {name: _rel_err(_relation_eps(ex, grid, r["c"]), ref) for name, r in rel.items()}
-    if ex.alpha == Fraction(3, 2) and ex.gamma == Fraction(1, 2):
-        profiles["pade-mp2011"] = _rel_err(pade_mp2011(grid), ref)
-    else:
-        missing["pade-mp2011"] = "the Pade form is for alpha = 3/2, gamma = 1/2 only"
-    profiles["viscous"] = _rel_err(_viscous_eval(master, grid), ref)
-    profiles["elastic"] = _rel_err(master.elastic.eps(grid, 2), ref)
-    return Calibration(master, profiles, rel, missing)
-
-
-def _viscous_eval(master: MasterCurve, om: np.ndarray) -> np.ndarray:
-    V = master.viscous
-    if V.kind == "closed":
-        return np.asarray(om, dtype=float).copy()  # eps = Omega, exponentially small error
-    return V.eps(om, 1)
-
-
 # ------------------------------------------------------------------------------------------ rungs
 @dataclass
 class _Quote:
@@ -272,9 +148,14 @@ class _Quote:
     run: Callable | None = None
 
 
-RUNG_NAMES = ("paper-c", "fitted-c", *[f"perturbation-N{n}" for n in PERTURBATION_ORDERS],
-              "pade-mp2011", "viscous", "elastic", "closed-form", "master", "integrator",
-              "reference", "highprec")
+def _calibrated_names(relations) -> list[str]:
+    return [*(r.name for r in relations), "pade-mp2011", "viscous", "elastic", "master"]
+
+
+def rung_names(relations=(FITTED_C,)) -> tuple[str, ...]:
+    """The ladder's rungs, cheapest kinds first, for these relation rungs."""
+    *cal, master = _calibrated_names(relations)
+    return (*cal, "closed-form", master, "integrator", "reference", "highprec")
 
 
 #: Where in each Chebyshev panel a loaded master curve is checked against the integrator (a
@@ -301,8 +182,10 @@ class Ladder:
     """The ladder for one pair of exponents (and one calibration setting / cache directory)."""
 
     def __init__(self, alpha, gamma, *, settings: MasterSettings | None = None, cache_dir=None,
-                 stream=None):
+                 stream=None, relations: tuple[Relation, ...] = (FITTED_C,)):
         self.ex = as_exponents(alpha, gamma)
+        self.relations = tuple(relations)
+        self.rung_names = rung_names(self.relations)
         self.settings = settings or MasterSettings()
         self.cache_dir = cache_dir
         self.stream = stream
@@ -311,8 +194,10 @@ class Ladder:
     # -- calibration bundle
     @property
     def cache_key(self) -> str:
+        # the relation rungs are part of the bundle: a ladder with other ones builds its own
+        key = self.settings.key() + "|" + ",".join(r.name for r in self.relations)
         return (f"calibration-a{self.ex.alpha}-g{self.ex.gamma}-v{CALIBRATION_VERSION}.{MASTER_VERSION}"
-                f"-{hashlib.sha256(self.settings.key().encode()).hexdigest()[:12]}")
+                f"-{hashlib.sha256(key.encode()).hexdigest()[:12]}")
 
     def _valid(self, d: dict) -> bool:
         try:
@@ -345,7 +230,7 @@ class Ladder:
                 print(f"restitution:   {msg}", file=stream, flush=True)
 
             d = _cache.get_or_build(
-                self.cache_key, lambda: build_calibration(self.ex, None, self.settings, progress).as_dict(),
+                self.cache_key, lambda: build_calibration(self.ex, None, self.settings, progress, self.relations).as_dict(),
                 valid=self._valid, what=f"the master curve for alpha={self.ex.alpha}, gamma={self.ex.gamma}",
                 directory=Path(self.cache_dir) if self.cache_dir else None, stream=stream)
             self._cal = Calibration.from_dict(d)
@@ -377,8 +262,7 @@ class Ladder:
         big = ex.alpha > ex.gamma
 
         # calibrated rungs
-        cal_names = ["paper-c", "fitted-c", *[f"perturbation-N{k}" for k in PERTURBATION_ORDERS],
-                     "pade-mp2011", "viscous", "elastic", "master"]
+        cal_names = _calibrated_names(self.relations)
         if cal is None:
             for name in cal_names:
                 cost = COST["master"] if name == "master" else COST["relation"]
@@ -414,7 +298,7 @@ class Ladder:
                               run=lambda om, r=rtol: reference_eps(ex, None, om, r)))
 
         # scipy reference, only where its accuracy was verified (collision.OMEGA_RANGE)
-        from .collision import OMEGA_RANGE
+        from ..core.collision import OMEGA_RANGE
 
         rtol_s = min(1e-6, max(1e-14, (tol - 1e-13) / 20.0))
         if lo < OMEGA_RANGE[0] or hi > OMEGA_RANGE[1]:
@@ -481,8 +365,8 @@ class Ladder:
         tol = _check_tol(tol)
         if build is not None and not isinstance(build, bool):   # build="no" is truthy: it would build
             raise ParameterError("build", build, "must be True, False or None")
-        if method is not None and method not in RUNG_NAMES:
-            raise ParameterError("method", method, f"must be one of {', '.join(RUNG_NAMES)}")
+        if method is not None and method not in self.rung_names:
+            raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
         flat = om.ravel()
         quotes = self.quotes(flat, tol)
         if build is not False and self.cached_calibration() is None:
@@ -523,17 +407,17 @@ class Ladder:
 
 
 def _dashpot_eps(om: np.ndarray) -> np.ndarray:
-    from .dashpot import dashpot_collision
+    from ..core.dashpot import dashpot_collision
     return np.array([dashpot_collision(float(w)).eps for w in np.ravel(om)])
 
 
 def _scipy_eps(ex: Exponents, om: np.ndarray, rtol: float) -> np.ndarray:
-    from .collision import collide
+    from ..core.collision import collide
     return np.array([collide(ex, None, float(w), rtol=rtol).eps for w in np.ravel(om)])
 
 
 def _highprec_eps(ex: Exponents, om: np.ndarray, digits: int) -> np.ndarray:
-    from .highprec import reference_collision
+    from ..core.highprec import reference_collision
     out = []
     for w in np.ravel(om):
         r = reference_collision(ex, None, float(w), digits=digits)
@@ -548,16 +432,16 @@ def _highprec_eps(ex: Exponents, om: np.ndarray, digits: int) -> np.ndarray:
 _LADDERS: dict = {}
 
 
-def _ladder(alpha, gamma) -> Ladder:
-    ex = as_exponents(alpha, gamma)
-    key = (ex.alpha, ex.gamma, _cache.cache_dir())
+def _ladder(ex: Exponents, relations) -> Ladder:
+    key = (ex.alpha, ex.gamma, _cache.cache_dir(), tuple(relations))
     if key not in _LADDERS:
-        _LADDERS[key] = Ladder(ex, None)
+        _LADDERS[key] = Ladder(ex, None, relations=relations)
     return _LADDERS[key]
 
 
 def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 1e-9,
-            method: str | None = None, build: bool | None = None) -> EpsResult:
+            method: str | None = None, build: bool | None = None,
+            relations: tuple[Relation, ...] = (FITTED_C,)) -> EpsResult:
     """Coefficient of restitution to a relative tolerance ``tol``, by the cheapest adequate method.
 
     Give either ``omega`` (scaled parameter, scalar or array) or the impact speeds ``g`` with the
@@ -566,6 +450,7 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 
     ``.error_bound`` (relative, over all inputs), ``.candidates`` (the chooser's table).
     ``method`` forces a rung (it must still meet ``tol``); ``build`` = False never builds the
     calibration bundle, True always does, None (default) builds it when that pays.
+    ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's).
     Raises ParameterError for bad input and for a tolerance no rung meets.
     """
     ex = as_exponents(alpha, gamma)
@@ -577,9 +462,9 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 
         if g is None or D1 is None or D2 is None:
             missing = [n for n, v in (("g", g), ("D1", D1), ("D2", D2)) if v is None]
             raise ParameterError(missing[0], None, "give omega, or all of g, D1, D2")
-        from .model import Material
+        from ..core.model import Material
         gs = _omega_array(g, "g")
         with np.errstate(over="ignore", under="ignore"):
             om = np.asarray(Material(ex, None, D1, D2).omega(gs), dtype=float).reshape(gs.shape)
         om = _omega_array(om, "omega")  # Omega itself may over/underflow for extreme inputs
-    return _ladder(ex, None).evaluate(om, tol=tol, method=method, build=build)
+    return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build)
