@@ -5,7 +5,7 @@ import math
 
 import pytest
 
-from restitution.audit import claims
+from restitution.audit import claim_values, claims
 from restitution.audit import printed
 from restitution.audit.readings import Reading
 
@@ -16,7 +16,7 @@ FAST = {"points": 6, "tracking_samples": 301, "radius_max_power": 61,
 
 @pytest.fixture(scope="module")
 def values():
-    return claims.compute_claim_values(PAPER, FAST)
+    return claim_values.compute_claim_values(PAPER, FAST)
 
 
 @pytest.fixture(scope="module")

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from restitution.audit import stability as st
+from restitution.audit import stability_checks as sc
 from restitution.core.errors import ParameterError
 
 
@@ -144,17 +145,17 @@ def _record(omega, eps, **kw):
     ({"err_exact": 2e-9, "worst_exact": "eps"}, "exact"),
 ])
 def test_each_invariant_is_checked(bad, check):
-    good, _ = st.check_invariants([_record(2.0, 0.4)], accuracy=1e-9)
+    good, _ = sc.check_invariants([_record(2.0, 0.4)], accuracy=1e-9)
     assert good == []
-    violations, _ = st.check_invariants([_record(2.0, **{"eps": 0.4, **bad})], accuracy=1e-9)
+    violations, _ = sc.check_invariants([_record(2.0, **{"eps": 0.4, **bad})], accuracy=1e-9)
     assert [v.check for v in violations] == [check], violations
     assert violations[0].omega == 2.0 and "alpha=3/2" in str(violations[0])
 
 
 def test_monotonicity_allows_only_unresolvable_steps():
-    ok, unresolved = st.check_invariants([_record(1.0, 0.5), _record(2.0, 0.5 - 1e-10), _record(3.0, 0.6)], 1e-9)
+    ok, unresolved = sc.check_invariants([_record(1.0, 0.5), _record(2.0, 0.5 - 1e-10), _record(3.0, 0.6)], 1e-9)
     assert ok == [] and unresolved == {("3/2", "1"): 1}
-    bad, _ = st.check_invariants([_record(1.0, 0.5), _record(2.0, 0.5 - 1e-6), _record(3.0, 0.6)], 1e-9)
+    bad, _ = sc.check_invariants([_record(1.0, 0.5), _record(2.0, 0.5 - 1e-6), _record(3.0, 0.6)], 1e-9)
     assert [v.check for v in bad] == ["monotone"]
 
 
@@ -165,7 +166,7 @@ def test_records_from_a_csv_are_checked_the_same(tmp_path):
         w = csv.DictWriter(fh, fieldnames=list(records[0]))
         w.writeheader()
         w.writerows(records)
-    violations, _ = st.check_invariants(_read(path), 1e-9)
+    violations, _ = sc.check_invariants(_read(path), 1e-9)
     assert [v.check for v in violations] == ["eps_range"]
 
 
@@ -180,7 +181,7 @@ def test_a_failing_integration_is_recorded_not_raised(monkeypatch):
                                      "omega_min": 1e-1, "omega_max": 1e1, "reference_omegas": []})
     records = st.run_atlas(spec)
     assert all(r["status"].startswith("IntegrationError") for r in records)
-    violations, _ = st.check_invariants(records, spec.stated_accuracy)
+    violations, _ = sc.check_invariants(records, spec.stated_accuracy)
     assert {v.check for v in violations} == {"finite"} and len(violations) == len(records)
 
 
@@ -196,7 +197,7 @@ def coarse():
 @pytest.mark.slow
 def test_coarse_atlas_holds_every_invariant(coarse):
     spec, records = coarse
-    violations, unresolved = st.check_invariants(records, spec.stated_accuracy)
+    violations, unresolved = sc.check_invariants(records, spec.stated_accuracy)
     assert violations == [], "\n".join(map(str, violations))
     assert sum(unresolved.values()) == 0
     assert len(records) == 20 * 17
@@ -208,7 +209,7 @@ def test_coarse_atlas_holds_every_invariant(coarse):
 @pytest.mark.slow
 def test_coarse_atlas_compares_where_it_should(coarse):
     spec, records = coarse
-    summary = {(r["alpha"], r["gamma"]): r for r in st.summarize(records, spec.stated_accuracy)}
+    summary = {(r["alpha"], r["gamma"]): r for r in sc.summarize(records, spec.stated_accuracy)}
     assert all(r["n_tight"] == 3 and r["n_ref"] == 1 for r in summary.values())
     assert summary[("1", "0")]["n_exact"] == 17 and summary[("1", "1")]["n_exact"] == 17
     assert summary[("3/2", "1")]["n_exact"] == 0
@@ -236,7 +237,7 @@ def test_shards_give_the_same_records_as_one_run(coarse):
 def test_the_limits_meet_the_ends_of_the_atlas(coarse):
     pytest.importorskip("restitution.core.asymptotics")
     spec, records = coarse
-    limits = {(d["alpha"], d["gamma"]): d for d in st.limit_agreement(records)}
+    limits = {(d["alpha"], d["gamma"]): d for d in sc.limit_agreement(records)}
     assert len(limits) == 20
     for (a, g), d in limits.items():
         if Fraction(a) > Fraction(g):
@@ -262,7 +263,7 @@ def _assert_pipeline_atlas(results):
     summary = _read(results / "stability" / "summary.csv")
     accuracy = float(summary[0]["accuracy"])
     assert len(summary) == len(pairs) and all(float(r["accuracy"]) == accuracy for r in summary)
-    violations, unresolved = st.check_invariants(rows, accuracy)
+    violations, unresolved = sc.check_invariants(rows, accuracy)
     assert violations == [], "\n".join(map(str, violations))
     assert _read(results / "stability" / "violations.csv") == []
     assert sum(1 for r in rows if r["err_ref"]) >= 2 * len(pairs)

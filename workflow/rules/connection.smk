@@ -76,7 +76,7 @@ rule claims:
         readings=rules.connection_readings.output.json,
         fit=rules.connection_fit.output.json,
         curve=rules.reference_eps_curve.output[0],
-        src=lib("audit.claims"),
+        src=lib("audit.claims", "audit.claim_values"),
         code=code("claims.py") + ["workflow/scripts/common/latex.py"],
     output:
         csv=report("results/{variant}/claims.csv", caption="../report/claims.rst", category="Tables",

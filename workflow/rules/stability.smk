@@ -77,7 +77,7 @@ rule stability_atlas:
     input:
         shards=expand("results/stability/shards/{shard}-of-{shards}.csv",
                       shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
-        src=STABILITY_SRC,
+        src=lib("audit.stability", "audit.stability_checks"),
         code=code("stability_atlas.py") + ["workflow/scripts/common/latex.py"],
     output:
         atlas="results/stability/atlas.csv",

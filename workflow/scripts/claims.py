@@ -1,7 +1,7 @@
 # %% [markdown]
 # # The claims ledger: every quantitative statement of the paper next to our value
 #
-# `restitution.audit.claims.compute_claim_values` computes the numbers behind each statement and
+# `restitution.audit.claim_values.compute_claim_values` computes the numbers behind each statement and
 # `restitution.audit.claims.build_claims` turns them into rows (claim, where, paper_value, our_value,
 # tolerance, verdict, note). Two stages of this pipeline already computed parts of it and are
 # not repeated here: the c0-c2 of every reading of the paper's procedure (connection_readings.py)
@@ -18,6 +18,7 @@ import pandas as pd
 from common.latex import esc, math_text, sentence
 from common.pipeline import read_json, start, write_csv, write_json, write_text
 
+from restitution.audit import claim_values
 from restitution.audit import claims as cl
 from restitution.audit import printed
 
@@ -43,7 +44,7 @@ settings = {
 }
 
 # %% Compute, then put in what the other stages computed
-values = cl.compute_claim_values(p.material, settings)
+values = claim_values.compute_claim_values(p.material, settings)
 values["readings"] = readings["readings"]
 if fit["applies"]:
     own = values["fit"]

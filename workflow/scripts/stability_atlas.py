@@ -17,6 +17,7 @@ from common.atomic import atomic_path, write_text_atomic
 from common.pipeline import start
 
 from restitution.audit import stability as st
+from restitution.audit import stability_checks as sc
 
 start(snakemake)
 spec = st.AtlasSpec.from_config(snakemake.params.spec)
@@ -70,9 +71,9 @@ if snakemake.rule == "stability_atlas":
     records = atlas.to_dict("records")
 
     accuracy = spec.stated_accuracy
-    violations, unresolved = st.check_invariants(records, accuracy)
-    summary = st.summarize(records, accuracy)
-    limits = st.limit_agreement(records)
+    violations, unresolved = sc.check_invariants(records, accuracy)
+    summary = sc.summarize(records, accuracy)
+    limits = sc.limit_agreement(records)
 
     write_csv(snakemake.output.atlas, records, RECORD_COLUMNS)
     write_csv(snakemake.output.summary, summary, list(summary[0]))

@@ -31,7 +31,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from .collision import Collision
+from .results import Collision
 from .errors import require_positive_finite
 
 #: Below this argument atanh(y)/y is used; above it the logarithmic forms (no 1 - y cancellation).

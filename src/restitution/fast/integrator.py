@@ -1,44 +1,26 @@
-"""Compiled kernels: a per-point "exact" integrator and vectorised master-curve evaluation.
+"""The compiled per-point "exact" integrator: ``collide_fast`` integrates
 
-Two things here must be fast, and both are loops that numpy cannot express without a Python-level
-loop per point or per step:
+    x'' + Omega x^alpha + x^gamma x' = 0,   x(0) = 0, x'(0) = 1,
 
-* ``collide_fast`` integrates the scaled collision
+to the end of contact with the adaptive Dormand-Prince 8(5,3) method (scipy's DOP853 tableau, taken
+from scipy so the two cannot drift apart). ``solve_ivp`` spends most of its time in Python overhead
+per step and a collision needs a few hundred steps; compiled with numba a step costs well under a
+microsecond, so a collision takes tens of microseconds instead of tens of milliseconds.
 
-      x'' + Omega x^alpha + x^gamma x' = 0,   x(0) = 0, x'(0) = 1,
+The formulation is the smooth one of :mod:`restitution.core.collision`: the start and the end near
+x = 0 in u = x^(1/p) (alpha = q_alpha/p, gamma = q_gamma/p), where the equations are polynomial;
+the middle in tau with the force f = Omega x^(alpha-gamma) + x' carried as a state of its own (for
+small Omega, f is a tiny difference of nearly equal numbers and must not be formed by subtraction):
 
-  to the end of contact with an adaptive Dormand-Prince 8(5,3) Runge-Kutta method (the DOP853
-  tableau that scipy uses, taken from scipy so the two cannot drift apart). ``solve_ivp`` spends
-  almost all of its time in Python overhead per step (~12 right-hand-side calls through Python,
-  array allocation, event bookkeeping); a collision needs a few hundred steps. Compiled with numba
-  the same arithmetic costs well under a microsecond per step, so one collision takes tens of
-  microseconds instead of tens of milliseconds. That is why numba is used here (and only here).
+1. rise      in u from u = 0, state (v, tau, g), until v has fallen to 1/2;
+2. compress  in tau, state (x, v, f), until v = 0 (maximum compression, located exactly);
+3. release   in tau from (x_b, 0, Omega x_b^(alpha-gamma)) until f = 0 (force end) or x < x_b / 4;
+4. land      in u down to u = 0 (separation) unless g = 0 (force end) first.
 
-  The formulation is the smooth one of :mod:`restitution.core.collision` (and of the mpmath reference):
-  the start and the end near x = 0 are integrated in u = x^(1/p) (alpha = q_alpha/p,
-  gamma = q_gamma/p), where the equations are polynomial; the middle in tau with the force
-  f = Omega x^(alpha-gamma) + x' carried as a state of its own (when Omega is small, f is a tiny
-  difference of two nearly equal numbers and must not be formed by subtraction). Four legs:
-
-  1. rise      in u from u = 0, state (v, tau, g), until v has fallen to 1/2;
-  2. compress  in tau, state (x, v, f), until v = 0 (maximum compression, located exactly);
-  3. release   in tau from (x_b, 0, Omega x_b^(alpha-gamma)) until f = 0 (force end) or
-               x < x_b / 4;
-  4. land      in u down to u = 0 (separation) unless g = 0 (force end) first.
-
-  g = Omega u^a + u^m v with a = max(k, 0), m = max(-k, 0), k = q_alpha - q_gamma: g = f when
-  alpha >= gamma and u^m f otherwise, so that g is bounded at u = 0 and has the sign of f.
-
-  Events (v = 0, f = 0, g = 0) are located by re-stepping from the start of the step that
-  crossed them with a trial step size found by the Illinois variant of regula falsi, so an event
-  is as accurate as a step.
-
-* ``chebyshev_panels_eval`` evaluates a master curve: uniform panels in s = ln Omega, a Chebyshev
-  series of ln eps in each, and the asymptotic expansions beyond both ends. One fused compiled loop
-  costs a few tens of nanoseconds per point; the same in numpy needs ~3 array passes per Chebyshev
-  term, i.e. several times more memory traffic.
-
-If numba is missing the functions still work (plain Python, much slower); ``HAVE_NUMBA`` says which.
+g = Omega u^a + u^m v with a = max(k, 0), m = max(-k, 0), k = q_alpha - q_gamma: g = f when
+alpha >= gamma and u^m f otherwise, so that g is bounded at u = 0 and has the sign of f. Events
+(v = 0, f = 0, g = 0) are located by re-stepping from the start of the crossing step with a step
+size from the Illinois variant of regula falsi, so an event is as accurate as a step.
 """
 
 from __future__ import annotations
@@ -48,19 +30,9 @@ import math
 import numpy as np
 from scipy.integrate._ivp import dop853_coefficients as _dop
 
-try:  # numba is an optional accelerator: everything below is also valid plain Python.
-    from numba import njit
+from .jit import HAVE_NUMBA, njit
 
-    HAVE_NUMBA = True
-except ImportError:  # pragma: no cover - exercised only without numba
-    HAVE_NUMBA = False
-
-    def njit(*args, **kwargs):
-        if args and callable(args[0]):
-            return args[0]
-        return lambda f: f
-
-__all__ = ["HAVE_NUMBA", "collide_fast", "law_parameters", "chebyshev_panels_eval",
+__all__ = ["HAVE_NUMBA", "collide_fast", "law_parameters",
            "END_FORCE", "END_SEPARATION", "END_FAILED"]
 
 # ---------------------------------------------------------------------------- DOP853 tableau
@@ -500,17 +472,7 @@ def _collide_one(P, rtol, out):
 
 
 @njit(cache=True)
-def _collide_many(p, qa, qg, omegas, rtol, res):
-    P = np.empty(9)
-    k = qa - qg
-    P[_P_P] = p
-    P[_P_QA] = qa
-    P[_P_QG] = qg
-    P[_P_ALPHA] = qa / p
-    P[_P_GAMMA] = qg / p
-    P[_P_A] = max(k, 0)
-    P[_P_M] = max(-k, 0)
-    P[_P_N] = min(qa, qg)
+def _collide_many(P, omegas, rtol, res):
     out = np.empty(7)
     for i in range(omegas.size):
         P[_P_OMEGA] = omegas[i]
@@ -532,72 +494,5 @@ def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12) -> np.nd
     """
     om = np.ascontiguousarray(np.atleast_1d(np.asarray(omegas, dtype=np.float64)))
     res = np.empty((om.size, 7))
-    _collide_many(int(p), int(qa), int(qg), om, float(rtol), res)
+    _collide_many(law_parameters(int(p), int(qa), int(qg), 0.0), om, float(rtol), res)
     return res
-
-
-# ---------------------------------------------------------------------------- master-curve kernel
-@njit(cache=True)
-def _viscous_eval(om, vis):
-    """Viscous-limit expansion; vis = (kind, k, c_log, c_const, power).
-
-    kind 0 (alpha > gamma): eps = k Omega (1 - Omega (c_log ln(1/Omega) + c_const)).
-    kind 1 (alpha < gamma): eps = k Omega^power.
-    """
-    if vis[0] == 0.0:
-        return vis[1] * om * (1.0 - om * (vis[2] * math.log(1.0 / om) + vis[3]))
-    return vis[1] * math.exp(vis[4] * math.log(om))
-
-
-@njit(cache=True)
-def _elastic_eval(om, el):
-    """Elastic-limit expansion; el = (a, c1, c2, end_power, end_coeff).
-
-    delta = Omega^(-a); eps = 1 - c1 delta + c2 delta^2 + end_coeff delta^end_power.
-    """
-    dl = math.exp(-el[0] * math.log(om))
-    r = 1.0 - el[1] * dl + el[2] * dl * dl
-    if el[4] != 0.0:
-        r += el[4] * math.exp(el[3] * math.log(dl))
-    return r
-
-
-@njit(cache=True)
-def _panels_eval(omegas, s0, inv_w, coef, vis, el, out):
-    npan = coef.shape[0]
-    deg = coef.shape[1] - 1
-    s_hi = s0 + npan / inv_w
-    for i in range(omegas.size):
-        om = omegas[i]
-        s = math.log(om)
-        if s < s0:
-            out[i] = _viscous_eval(om, vis)
-            continue
-        if s > s_hi:
-            out[i] = _elastic_eval(om, el)
-            continue
-        z = (s - s0) * inv_w
-        j = int(z)
-        if j >= npan:
-            j = npan - 1
-        t = 2.0 * (z - j) - 1.0
-        # Clenshaw
-        b1 = 0.0
-        b2 = 0.0
-        t2 = 2.0 * t
-        for r in range(deg, 0, -1):
-            b0 = coef[j, r] + t2 * b1 - b2
-            b2 = b1
-            b1 = b0
-        out[i] = math.exp(coef[j, 0] + t * b1 - b2)
-
-
-def chebyshev_panels_eval(omegas, s0: float, width: float, coef: np.ndarray, viscous: np.ndarray,
-                          elastic: np.ndarray) -> np.ndarray:
-    """eps at each Omega from panel Chebyshev coefficients of ln eps (see master.MasterCurve)."""
-    om = np.ascontiguousarray(np.asarray(omegas, dtype=np.float64).ravel())
-    out = np.empty(om.size)
-    _panels_eval(om, float(s0), 1.0 / float(width), np.ascontiguousarray(coef, dtype=np.float64),
-                 np.ascontiguousarray(viscous, dtype=np.float64),
-                 np.ascontiguousarray(elastic, dtype=np.float64), out)
-    return out

@@ -17,7 +17,7 @@ Construction (``build_master``):
    reference (:mod:`restitution.core.highprec`). The bound claimed inside [Omega_lo, Omega_hi] is twice
    the larger of (fit error + integrator error) and the error against the mpmath reference.
 
-Evaluation (``MasterCurve.eps``) runs one compiled loop (:func:`restitution.fast.integrator.chebyshev_panels_eval`):
+Evaluation (``MasterCurve.eps``) runs one compiled loop (:func:`restitution.fast.panels.chebyshev_panels_eval`):
 Chebyshev inside, the expansions outside. ``MasterCurve.bound(omega)`` is the largest bound over the
 given Omegas. A curve serialises to a plain dict (``as_dict``/``from_dict``) for JSON.
 """
@@ -34,7 +34,8 @@ from numpy.polynomial import chebyshev as cheb
 from ..core import asymptotics as asy
 from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
-from .integrator import END_FAILED, chebyshev_panels_eval, collide_fast
+from .integrator import END_FAILED, collide_fast
+from .panels import chebyshev_panels_eval
 
 __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps",
            "INTEGRATOR_BOUND_FACTOR", "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "stiff_omega_min"]

@@ -1,0 +1,75 @@
+"""What a collision returns: end-of-contact quantities and, on request, sampled trajectories.
+
+The scipy reference (:mod:`restitution.core.collision`), the mpmath one
+(:mod:`restitution.core.highprec`) and the closed forms (:mod:`restitution.core.dashpot`) all return
+:class:`Collision`; the paper's inverse collision returns :class:`InverseCollision`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fractions import Fraction
+
+import numpy as np
+
+__all__ = ["Trajectory", "Collision", "InverseCollision"]
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """Samples of the solution at requested tau (samples beyond the end of contact are dropped)."""
+
+    tau: np.ndarray
+    x: np.ndarray
+    v: np.ndarray
+
+
+@dataclass(frozen=True)
+class Collision:
+    """End-of-contact quantities of one forward collision in scaled variables.
+
+    ``end`` is "force" when contact ends where the total force vanishes
+    (Omega x^(alpha-gamma) + x' = 0), "separation" when x returns to 0 first. ``rtol`` is the
+    tolerance the integration ran at (0.0 for a closed form).
+    """
+
+    alpha: Fraction
+    gamma: Fraction
+    omega: float
+    direction: str
+    eps: float
+    tau_b: float
+    x_b: float
+    tau_c: float
+    x_c: float
+    end: str
+    rtol: float
+    trajectory: Trajectory | None = None
+
+    def as_dict(self) -> dict:
+        return {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.end}
+
+
+def _json_numbers(result, names) -> dict:
+    """JSON-ready fields: exponents as exact rational strings, then the named numbers as floats."""
+    return {"alpha": str(result.alpha), "gamma": str(result.gamma),
+            **{name: float(getattr(result, name)) for name in names}}
+
+
+@dataclass(frozen=True)
+class InverseCollision:
+    """x~'' + Omega~ x~^alpha - x~^gamma x~' = 0 from x~(0) = x_start, x~'(0) = 1 back to x~ = 0."""
+
+    alpha: Fraction
+    gamma: Fraction
+    omega: float
+    x_start: float
+    tau_b: float
+    x_b: float
+    tau_end: float
+    v_end: float
+    rtol: float
+    trajectory: Trajectory | None = None
+
+    def as_dict(self) -> dict:
+        return _json_numbers(self, ("omega", "x_start", "tau_b", "x_b", "tau_end", "v_end"))
