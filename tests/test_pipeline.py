@@ -144,7 +144,7 @@ def test_changing_d1_reruns_what_depends_on_omega_only(built, tmp_path):
 
 def test_a_change_in_the_integrator_reruns_reference_rules_not_series(built, tmp_path):
     tree = copy_built(built, tmp_path / "t")
-    src = tree / "src/restitution/collision.py"
+    src = tree / "src/restitution/core/collision.py"
     src.write_text(src.read_text() + "\n# a change\n")
     jobs = planned(tree, ALL)
     assert {"reference_trajectories", "reference_eps_curve", "reference_accuracy", "validation"} <= set(jobs)
@@ -154,7 +154,7 @@ def test_a_change_in_the_integrator_reruns_reference_rules_not_series(built, tmp
 
 def test_a_change_in_the_series_module_does_not_rerun_integrations(built, tmp_path):
     tree = copy_built(built, tmp_path / "t")
-    src = tree / "src/restitution/series.py"
+    src = tree / "src/restitution/core/series.py"
     src.write_text(src.read_text() + "\n# a change\n")
     jobs = planned(tree, ALL)
     assert {"series", "fig1_forward", "fig2_inverse", "connection_readings", "values"} <= set(jobs)

@@ -1,7 +1,23 @@
-"""Coefficient of restitution for viscoelastic collisions (a rebuild and audit of S. Kim's paper).
+"""Coefficient of restitution for viscoelastic collisions: a rebuild and audit of S. Kim's paper.
 
-Heavier modules (the integrators) load on first use so that `import restitution` stays cheap
-for the command line and for workflow scripts that need only the series.
+The contact law x'' + Omega x^gamma x' + x^alpha = 0 (scaled), in three layers; imports point down
+only (checked by tests/test_layers.py):
+
+====================  ===================================================================
+``restitution.core``  the physics: exponents, materials and Omega, the exact perturbation
+                      series, closed forms, the scipy and mpmath reference collisions, the
+                      small- and large-Omega expansions, the exact Omega~(Omega) connection
+``restitution.fast``  eps(Omega) fast and to a stated accuracy: compiled integrator, master
+                      curve, the calibrated method ladder, the sealed disk cache (uses core)
+``restitution.audit`` the paper: its printed numbers, its matching procedure for c0-c2 as
+                      its text can be read, the claims ledger, the stability atlas (uses core)
+``api``, ``cli``      on top: ``epsilon`` with every rung (the paper's c's included) and the
+                      ``restitution`` command
+====================  ===================================================================
+
+The names below are the everyday entry points. Heavier modules (the integrators) load on first
+use, so ``import restitution`` stays cheap for the command line and for scripts that need only
+the series.
 """
 
 from .core.errors import ParameterError

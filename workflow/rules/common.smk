@@ -132,20 +132,21 @@ def _imports_of(dotted):
 
 
 def lib(*modules):
-    """src/restitution files the given modules ("core.collision", ...) need: their import closure
-    with the __init__.py of every package on the way (Python runs those on import)."""
-    seen, todo = set(), ["", *modules]   # "": the package itself, whose __init__ runs first
+    """src/restitution files the given modules ("core.collision", ...) need: their import closure,
+    and the __init__.py of each package on the way. Those run on import, but only to import
+    names: their own imports are not followed, so a change to the series does not rerun the
+    integrations because restitution/__init__.py imports both."""
+    seen, todo = set(), list(modules)
     while todo:
         m = todo.pop()
         if m in seen:
             continue
         seen.add(m)
-        if _module_file(m) is None:
-            continue   # Snakemake reports the missing input by its path below
-        parts = m.split(".")
-        todo.extend(".".join(parts[:i]) for i in range(1, len(parts)) if parts[0])
-        todo.extend(_imports_of(m) - seen)
-    files = {_module_file(m) or PKG.joinpath(*m.split(".")).with_suffix(".py") for m in seen}
+        f = _module_file(m)
+        if f is not None and f.name != "__init__.py":
+            todo.extend(_imports_of(m) - seen)
+    packages = {".".join(m.split(".")[:i]) for m in seen for i in range(len(m.split(".")))}
+    files = {_module_file(m) or PKG.joinpath(*m.split(".")).with_suffix(".py") for m in seen | packages}
     return sorted(str(f.relative_to(ROOT)) for f in files)
 
 
