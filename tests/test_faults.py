@@ -283,7 +283,7 @@ def test_killed_runs_restart_to_the_clean_build(built, tmp_path):
     snakemake during the merge or the figure; 3: `make outputs` finishes. The result is byte for
     byte the clean build."""
     tree = copy_built(built, tmp_path / "t")
-    _change(tree / "src" / "restitution" / "stability.py")
+    _change(tree / "src" / "restitution" / "audit" / "stability.py")
     shards = tree / "results" / "stability" / "shards"
 
     # 1. SIGKILL in the middle of the shard jobs

@@ -26,20 +26,13 @@ import numpy as np
 import pandas as pd
 from common.pipeline import start, write_csv, write_json
 
+from restitution.core import asymptotics
 from restitution.core.collision import collide_many
 from restitution.core.dashpot import dashpot_collision
 from restitution.core.exponents import Exponents
+from restitution.fast.calibration import pade_mp2011
 
 start(snakemake)
-
-try:
-    from restitution.core import asymptotics
-except ImportError:  # being written elsewhere: the checks that need it say so
-    asymptotics = None
-try:
-    from restitution.fast.calibration import pade_mp2011
-except ImportError:
-    pade_mp2011 = None
 
 HERTZ = (Fraction(3, 2), Fraction(1, 2))
 
@@ -55,9 +48,10 @@ known = pd.DataFrame({"omega": omega, "eps_reference": ref, "tau_c": res["tau_c"
 checks = []
 
 
-def check(name, reference, measured, limit, passed, *, what, note="", omega_range=None, n=None):
+def check(name, reference, measured, limit, passed, *, what, note="", omega_range=None, n=None, digits=3):
+    """One row; ``digits``: the significant digits of ``measured`` that the measurement supports."""
     checks.append({"variant": p.variant, "check": name, "reference": reference, "what": what,
-                   "measured": None if measured is None else float(measured), "tolerance": limit,
+                   "measured": None if measured is None else float(measured), "digits": digits, "tolerance": limit,
                    "passed": None if passed is None else bool(passed), "note": note,
                    "omega_min": None if omega_range is None else float(omega_range[0]),
                    "omega_max": None if omega_range is None else float(omega_range[1]),
@@ -78,44 +72,37 @@ if (ex.alpha, ex.gamma) == (1, 0):
           note="contact ends where the force vanishes", omega_range=(omega.min(), omega.max()), n=len(omega))
 
 if ex.alpha == ex.gamma:
-    if asymptotics is None:
-        check("alpha = gamma, closed form", "", None, None, None, what="", note="restitution.core.asymptotics not available")
-    else:
-        exact = asymptotics.equal_exponents_eps(omega)
-        known["eps_equal_exponents"] = exact
-        err = rel_err(ref, exact).max()
-        check("alpha = gamma, parametric closed form", "", err, tol["closed_form_tolerance"],
-              err <= tol["closed_form_tolerance"], what="max relative error",
-              omega_range=(omega.min(), omega.max()), n=len(omega))
+    exact = asymptotics.equal_exponents_eps(omega)
+    known["eps_equal_exponents"] = exact
+    err = rel_err(ref, exact).max()
+    check("alpha = gamma, parametric closed form", "", err, tol["closed_form_tolerance"],
+          err <= tol["closed_form_tolerance"], what="max relative error",
+          omega_range=(omega.min(), omega.max()), n=len(omega))
 
 # %% Viscoelastic spheres: elastic-limit series and the Pade form
 if (ex.alpha, ex.gamma) == HERTZ:
     A = float((ex.gamma + 1) / (ex.alpha + 1))
-    if asymptotics is None:
-        check("elastic-limit series", "ramirez1999", None, None, None, what="",
-              note="restitution.core.asymptotics not available")
-    else:
-        series = asymptotics.elastic_limit(ex.alpha, ex.gamma)
-        known["eps_elastic_series"] = series.eps(omega, order=2)
-        err = rel_err(known["eps_elastic_series"], ref)
-        top = omega >= omega.max() / 10.0
-        slope = float(np.polyfit(np.log(omega[top]), np.log(err[top]), 1)[0])
-        expected = -3.0 * A
-        check("elastic-limit series, error exponent", "ramirez1999", slope, tol["series_slope_tolerance"],
-              abs(slope - expected) <= tol["series_slope_tolerance"], what=f"slope (expected {expected:g})",
-              note=f"C1 = {series.C1:.7f}, C2 = {series.C2:.7f}; error {err[-1]:.2e} at the largest Omega",
-              omega_range=(omega[top].min(), omega[top].max()), n=int(top.sum()))
-    if pade_mp2011 is None:
-        check("Pade form", "mueller2011", None, None, None, what="", note="restitution.fast.ladder not available")
-    else:
-        known["eps_pade"] = pade_mp2011(omega)
-        delta = omega ** (-A)
-        near = delta <= tol["pade_delta_max"]
-        err = rel_err(known["eps_pade"], ref)[near]
-        check("Pade form", "mueller2011", err.max() if near.any() else None, tol["pade_tolerance"],
-              bool(near.any()) and err.max() <= tol["pade_tolerance"], what="max relative error",
-              note=f"where delta = Omega^(-{A:g}) <= {tol['pade_delta_max']:g}",
-              omega_range=(omega[near].min(), omega[near].max()) if near.any() else None, n=int(near.sum()))
+    series = asymptotics.elastic_limit(ex.alpha, ex.gamma)
+    known["eps_elastic_series"] = series.eps(omega, order=2)
+    err = rel_err(known["eps_elastic_series"], ref)
+    top = omega >= omega.max() / 10.0
+    slope = float(np.polyfit(np.log(omega[top]), np.log(err[top]), 1)[0])
+    expected = -3.0 * A
+    check("elastic-limit series, error exponent", "ramirez1999", slope, tol["series_slope_tolerance"],
+          abs(slope - expected) <= tol["series_slope_tolerance"], what=f"slope (expected {expected:g})",
+          note=f"C1 = {series.C1:.7f}, C2 = {series.C2:.7f}; error {err[-1]:.2e} at the largest Omega",
+          omega_range=(omega[top].min(), omega[top].max()), n=int(top.sum()),
+          # the fitted errors (down to ~3e-8) carry the reference's own error: the slope's third
+          # digit moves with the CPU's rounding (-1.8249 and -1.8251 on two machines)
+          digits=2)
+    known["eps_pade"] = pade_mp2011(omega)
+    delta = omega ** (-A)
+    near = delta <= tol["pade_delta_max"]
+    err = rel_err(known["eps_pade"], ref)[near]
+    check("Pade form", "mueller2011", err.max() if near.any() else None, tol["pade_tolerance"],
+          bool(near.any()) and err.max() <= tol["pade_tolerance"], what="max relative error",
+          note=f"where delta = Omega^(-{A:g}) <= {tol['pade_delta_max']:g}",
+          omega_range=(omega[near].min(), omega[near].max()) if near.any() else None, n=int(near.sum()))
 
 # %% alpha - 1 - 2 gamma = 0: eps independent of g
 if ex.omega_exponent == 0:

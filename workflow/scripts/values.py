@@ -23,8 +23,11 @@ from restitution.core.model import Material
 
 start(snakemake)
 
-#: make check tolerances (relative) by where a number comes from.
-TOLERANCE = {"exact": 0.0, "formula": 1e-12, "integration": 1e-6, "config": 0.0, "paper": 0.0}
+#: make check tolerances (relative) by where a number comes from. An "error" is a difference of
+#: two computed numbers near the rounding floor (a retrace deviation, |eps(rtol) - eps(tightest)|):
+#: its last digits move with the CPU's rounding (up to 1.5e-4 relative between two machines), so
+#: it is pinned like the validation measurements, to 1e-2.
+TOLERANCE = {"exact": 0.0, "formula": 1e-12, "integration": 1e-6, "error": 1e-2, "config": 0.0, "paper": 0.0}
 
 
 class Values:
@@ -138,13 +141,13 @@ if p.accuracy:
     best, loose = acc.iloc[0], acc.iloc[-1]
     V.add("AccRTolTight", float(best["rtol"]), tex=sci(best["rtol"], 1), kind="config")
     V.add("AccRTolLoose", float(loose["rtol"]), tex=sci(loose["rtol"], 1), kind="config")
-    V.add("AccEpsErrLoose", float(loose["eps_error"]), sig=2, note="|eps(loosest) - eps(tightest)|")
-    V.add("AccTauCErrLoose", float(loose["tau_c_error"]), sig=2)
+    V.add("AccEpsErrLoose", float(loose["eps_error"]), sig=2, kind="error", note="|eps(loosest) - eps(tightest)|")
+    V.add("AccTauCErrLoose", float(loose["tau_c_error"]), sig=2, kind="error")
     at = acc[np.isclose(acc["rtol"], p.rtol, rtol=1e-9, atol=0)]
     if len(at) and at.iloc[0]["rtol"] != best["rtol"]:
-        V.add("AccEpsErrWorking", float(at.iloc[0]["eps_error"]), sig=2,
+        V.add("AccEpsErrWorking", float(at.iloc[0]["eps_error"]), sig=2, kind="error",
               note="|eps(working rtol) - eps(tightest)|")
-        V.add("AccTauCErrWorking", float(at.iloc[0]["tau_c_error"]), sig=2)
+        V.add("AccTauCErrWorking", float(at.iloc[0]["tau_c_error"]), sig=2, kind="error")
 
 # %% The paper's procedure (connection_readings.py)
 rows = readings["readings"]
@@ -190,9 +193,9 @@ else:
     V.add("FitReason", fit["reason"], tex=math_text(fit["reason"]), kind="exact")
 rt = fit["retrace"]
 if "max_deviation" in rt:
-    V.add("RetraceMaxDev", rt["max_deviation"], sig=2, note="max |x_retraced - x_forward| / x_b")
-    V.add("RetraceVEnd", rt["v_end_error"], sig=2)
-    V.add("RetraceTau", rt["tau_error"], sig=2)
+    V.add("RetraceMaxDev", rt["max_deviation"], sig=2, kind="error", note="max |x_retraced - x_forward| / x_b")
+    V.add("RetraceVEnd", rt["v_end_error"], sig=2, kind="error")
+    V.add("RetraceTau", rt["tau_error"], sig=2, kind="error")
     V.add("RetraceSamples", rt["samples"], kind="exact")
 
 # %% eps(g) every way (eps_compare.py)
@@ -297,8 +300,8 @@ if p.claims:
     V.add("RadiusInv", cv["radius_inverse"], kind="formula")
     pf = cv["paper_inverse_form"]
     V.add("InvFormXc", pf["x_c"], tex=f"{pf['x_c']:g}", kind="config")
-    V.add("InvFormResidualInverse", pf["residual_inverse"], sig=2, note="finite differences")
-    V.add("InvFormResidualForward", pf["residual_forward"], sig=1, note="finite differences")
+    V.add("InvFormResidualInverse", pf["residual_inverse"], sig=2, kind="error", note="finite differences")
+    V.add("InvFormResidualForward", pf["residual_forward"], sig=1, kind="error", note="finite differences")
     V.add("RelationMaxRelError", cv["fig4"]["paper_relation_omega_tilde_max_rel_error_in_fit_range"], sig=3,
           note="max |Omega~_printed - Omega~_exact| / Omega~_exact over the fit range")
     V.add("OmegaTildeSmallExponent", cv["omega_tilde_small_omega_exponent"], sig=3,

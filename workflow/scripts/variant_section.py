@@ -130,7 +130,7 @@ else:
             continue
         cite = rf"~\cite{{{c['reference']}}}" if c["reference"] else ""
         verdict = "passed" if c["passed"] else r"\textbf{failed}"
-        parts.append(rf"{esc(c['check'])}{cite}: {math_text(c['what'])} {sci(c['measured'], 3)} "
+        parts.append(rf"{esc(c['check'])}{cite}: {math_text(c['what'])} {sci(c['measured'], c['digits'])} "
                      rf"against a tolerance of {sci(c['tolerance'], 2)} ({verdict})")
     out.append(r"Against known results (Table~\ref{tab:validation}): " + "; ".join(parts) + ".")
 write_text(snakemake.output[0], "\n".join(out))
