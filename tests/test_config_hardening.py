@@ -104,3 +104,33 @@ def test_a_series_length_the_engine_cannot_serve_is_refused_before_anything_runs
     with pytest.raises(_config.ConfigError) as err:
         _config.check_config(cfg, SCHEMA)
     assert str(err.value).startswith("series.max_power") and allowed in str(err.value)
+
+
+def _refused_field(change) -> str:
+    cfg = yaml.safe_load(BASE)
+    change(cfg)
+    with pytest.raises(_config.ConfigError) as err:
+        _config.check_config(cfg, SCHEMA)
+    return str(err.value)
+
+
+@pytest.mark.parametrize("change, field, allowed", [
+    # each alone is a positive number; together they leave the integrator's verified range
+    (lambda c: c["variants"][0].update(D1=1e30), "variants[kim].g_figure", "[1e-12, 1e+10]"),
+    (lambda c: c["variants"][0].update(g_figure=1e-30), "variants[kim].g_figure", "[1e-12, 1e+10]"),
+    (lambda c: c["variants"][1]["g_range"].update(min=1e-40), "variants[hertz].g_range.min", "[1e-12, 1e+10]"),
+    (lambda c: c["variants"][0].update(D2=1e-300), "variants[kim].g_figure", "outside double precision"),
+    (lambda c: c["compare"].update(omega_max=1e12), "compare.omega_max", "<= 10000000000.0"),
+    (lambda c: c["compare"].update(omega_min=1e-20), "compare.omega_min", ">= 1e-12"),
+    (lambda c: c["validation"].update(pade_tolerance=5), "validation.pade_tolerance", "<= 1"),
+    (lambda c: c["variants"][0]["plot"].update(tau_max_forward=1e9), "variants[kim].plot.tau_max_forward", "(0, 100]"),
+])
+def test_numbers_the_library_cannot_serve_are_refused_before_anything_runs(change, field, allowed):
+    """Every numeric field has a range the library serves (class 4 of the adversarial pass): a value
+    outside it would fail its jobs, and Snakemake deletes a failed job's outputs."""
+    message = _refused_field(change)
+    assert message.startswith(field + " = ") and allowed in message and "\n" not in message, message
+
+
+def test_the_defaults_are_inside_every_range():
+    _config.check_config(yaml.safe_load(BASE), SCHEMA)

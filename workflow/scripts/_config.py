@@ -270,6 +270,7 @@ def check_config(config: dict, schema_path: str) -> dict:
         if fit is not None and not (fit["min"] < fit["max"]):
             raise ConfigError(f"{where}[{v['name']}].fit_g_range.max = {fit['max']!r}: "
                               f"must be > fit_g_range.min = {fit['min']!r}")
+        _check_omega_served(f"{where}[{v['name']}]", v, ex)
         if v["readings"] != "all":
             for label in v["readings"]:
                 if label not in labels:
@@ -279,6 +280,29 @@ def check_config(config: dict, schema_path: str) -> dict:
         raise ConfigError(f"connection.figure_reading = {config['connection']['figure_reading']!r}: "
                           f"must be one of {', '.join(labels)}")
     return config
+
+
+def _check_omega_served(where: str, v: dict, ex) -> None:
+    """Every impact speed of a variant must give an Omega the reference integrator serves: D1, D2
+    and g are each fine alone, but together they set Omega (Omega is a power of g, so the ends of
+    each range suffice)."""
+    from restitution.core.collision import OMEGA_RANGE
+    from restitution.core.errors import ParameterError
+    from restitution.core.model import Material
+
+    material = Material(ex, None, v["D1"], v["D2"])
+    speeds = [("g_figure", v["g_figure"]), ("g_range.min", v["g_range"]["min"]), ("g_range.max", v["g_range"]["max"])]
+    if v["fit_g_range"] is not None:
+        speeds += [("fit_g_range.min", v["fit_g_range"]["min"]), ("fit_g_range.max", v["fit_g_range"]["max"])]
+    lo, hi = OMEGA_RANGE
+    for field, g in speeds:
+        try:
+            omega = float(material.omega(g))
+        except ParameterError as err:   # Omega beyond double precision
+            raise ConfigError(f"{where}.{field} = {g!r}: {err.allowed}") from None
+        if not lo <= omega <= hi:
+            raise ConfigError(f"{where}.{field} = {g!r}: gives Omega = {omega:.3g} with D1 = {v['D1']!r}, "
+                              f"D2 = {v['D2']!r}; the reference integrator serves Omega in [{lo:g}, {hi:g}]")
 
 
 #: Highest index k of tau^(k/p) the series engine computes (restitution.core.series).
