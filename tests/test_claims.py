@@ -16,7 +16,8 @@ FAST = {"points": 6, "tracking_samples": 301, "radius_max_power": 61,
 
 @pytest.fixture(scope="module")
 def values():
-    return claim_values.compute_claim_values(PAPER, FAST)
+    inputs = claim_values.reference_inputs(PAPER, FAST)
+    return claim_values.compute_claim_values(PAPER, FAST, **inputs)
 
 
 @pytest.fixture(scope="module")
@@ -123,3 +124,24 @@ def test_other_exponents_make_every_verdict_ambiguous(values):
     changed = copy.deepcopy(values)
     changed["alpha"] = "5/2"
     assert {r["verdict"] for r in claims.build_claims(changed)} == {claims.AMBIGUOUS}
+
+
+def test_the_ledger_consumes_what_other_stages_computed(monkeypatch):
+    """One source per number: given the pipeline's outputs, the ledger never runs the fit, the exact
+    connection or the paper's procedure itself (those belong to connection_fit, reference_eps_curve
+    and connection_readings)."""
+    from restitution.audit import matching
+    from restitution.core import connection
+
+    inputs = claim_values.reference_inputs(PAPER, FAST)
+
+    def forbidden(*args, **kwargs):
+        raise AssertionError("the ledger computed what another stage computes")
+
+    for module, name in ((connection, "fit_connection"), (connection, "exact_omega_tilde"),
+                         (matching, "paper_procedure")):
+        monkeypatch.setattr(module, name, forbidden)
+    values = claim_values.compute_claim_values(PAPER, FAST, **inputs)
+    assert values["fit"]["c"] == inputs["fit"]["c"]
+    assert values["eps_at_g"] == inputs["at_figure"]["eps"]
+    assert values["readings"] == inputs["readings"]

@@ -76,6 +76,7 @@ rule claims:
         readings=rules.connection_readings.output.json,
         fit=rules.connection_fit.output.json,
         curve=rules.reference_eps_curve.output[0],
+        summary=rules.reference_trajectories.output.summary,
         src=lib("audit.claims", "audit.claim_values"),
         code=code("claims.py") + ["workflow/scripts/common/latex.py"],
     output:

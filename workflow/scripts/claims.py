@@ -1,12 +1,12 @@
 # %% [markdown]
 # # The claims ledger: every quantitative statement of the paper next to our value
 #
-# `restitution.audit.claim_values.compute_claim_values` computes the numbers behind each statement and
+# `restitution.audit.claim_values.compute_claim_values` gathers the numbers behind each statement and
 # `restitution.audit.claims.build_claims` turns them into rows (claim, where, paper_value, our_value,
-# tolerance, verdict, note). Two stages of this pipeline already computed parts of it and are
-# not repeated here: the c0-c2 of every reading of the paper's procedure (connection_readings.py)
-# and the least-squares c0-c2 (connection_fit.py). The ledger's fit runs on the same impact speeds
-# as ours (the figure-4 points inside the fit range), and the fit in the ledger is ours.
+# tolerance, verdict, note). What other stages computed is read, not computed again: the reference
+# collision at g_figure (reference_trajectories), the eps curve (reference_eps_curve), the
+# least-squares c0-c2 (connection_fit) and every reading of the paper's procedure
+# (connection_readings).
 #
 # Outputs: claims.csv (pandas), the ledger as a LaTeX longtable, and a generated discussion of
 # every row that was not reproduced.
@@ -40,17 +40,15 @@ settings = {
     "g_fit": (float(in_fit.min()), float(in_fit.max())),
     "g_wide": (float(g.min()), float(g.max())),
     "points": int(len(in_fit)),
-    "readings": [],            # computed by connection_readings.py, put in below
 }
 
-# %% Compute, then put in what the other stages computed
-values = claim_values.compute_claim_values(p.material, settings)
-values["readings"] = readings["readings"]
-if fit["applies"]:
-    own = values["fit"]
-    diff = max(abs(a - b) for a, b in zip(own["c"], fit["c"]))
-    print(f"ledger's own fit differs from connection_fit.py by {diff:.2e} in c (same speeds)")
-    values["fit"] = {k: fit[k] for k in FIT_KEYS}
+# %% The ledger consumes what the other stages computed
+summary = read_json(snakemake.input.summary)
+at_figure = {key: summary[key] for key in ("omega", "eps", "tau_b", "x_c")}
+fit_values = {k: fit[k] for k in FIT_KEYS if k in fit}
+values = claim_values.compute_claim_values(
+    p.material, settings, at_figure=at_figure, curve={c: curve[c].to_numpy() for c in ("g", "omega", "eps", "omega_tilde")},
+    fit=fit_values, readings=readings["readings"])
 values["settings"]["readings"] = "connection_readings.py"
 rows = cl.build_claims(values)
 ledger = pd.DataFrame(rows, columns=list(cl.COLUMNS))

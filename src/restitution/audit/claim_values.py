@@ -158,16 +158,61 @@ def _curve_shape(g, eps) -> dict:
             "g_min": float(g.min()), "g_max": float(g.max())}
 
 
-def compute_claim_values(material_params: dict, settings: dict | None = None) -> dict:
-    """Compute every value the ledger needs (slow: reference integrations and the readings).
-
-    ``material_params``: alpha, gamma, D1, D2 (e.g. a variant of config.yaml; other keys ignored).
-    ``settings``: see DEFAULT_SETTINGS (missing keys take the defaults).
-    """
+def reference_inputs(material_params: dict, settings: dict | None = None) -> dict:
+    """What the pipeline's rules hand to :func:`compute_claim_values`, computed here with the same
+    library calls (for tests and for use outside the pipeline): the reference collision at
+    g_figure (reference_trajectories), the eps curve on g_wide (reference_eps_curve), the fit on
+    g_fit (connection_fit) and every reading of the paper's procedure (connection_readings)."""
     from ..core import connection
-    from . import matching, readings
     from ..core.collision import collide
     from ..core.model import Material
+    from . import matching, readings
+
+    st = {**DEFAULT_SETTINGS, **(settings or {})}
+    mat = Material(material_params["alpha"], material_params["gamma"], material_params["D1"],
+                   material_params["D2"])
+    ex, rtol = mat.exponents, float(st["rtol"])
+    omega_fig = mat.omega(float(st["g_figure"]))
+    fig = collide(ex, None, omega_fig, rtol=rtol)
+    g = np.geomspace(float(st["g_wide"][0]), float(st["g_wide"][1]), int(st["points"]))
+    exact = connection.exact_omega_tilde(ex, None, mat.omega(g), rtol=rtol)
+    curve = {"g": g, "omega": exact["omega"], "eps": exact["eps"], "omega_tilde": exact["omega_tilde"]}
+    lo, hi = st["g_fit"]
+    fit = connection.fit_connection(ex, None, np.sort(mat.omega(np.geomspace(lo, hi, int(st["points"])))), rtol=rtol)
+    x_tilde_c = fig.x_c * fig.eps ** (-1.0 / float(ex.gamma + 1))
+    chosen = st["readings"] if st["readings"] is not None else readings.all_readings(
+        x_tilde_c if 0 < x_tilde_c < 1 else None)
+    rows = []
+    for r in chosen:
+        try:
+            cc = matching.paper_procedure(ex, None, r)
+            rows.append({**cc.as_dict(), "c": [cc.c0, cc.c1, cc.c2]})
+        except ParameterError as err:
+            rows.append({"reading": r.label, "description": r.describe(), "defined": False,
+                         "reason": str(err), "c": [math.nan] * 3})
+    return {"at_figure": {"omega": omega_fig, "eps": fig.eps, "tau_b": fig.tau_b, "x_c": fig.x_c},
+            "curve": curve, "fit": {**fit.as_dict(), "g_min": float(lo), "g_max": float(hi)},
+            "readings": rows}
+
+
+def compute_claim_values(material_params: dict, settings: dict | None = None, *, at_figure: dict,
+                         curve: dict, fit: dict, readings: list) -> dict:
+    """Every value the ledger needs. It consumes what other stages computed and computes only
+    what no other stage does (the series comparison, the Delta formulas, where the series stop
+    tracking, local slopes, radii, the wide fit, figure 4's shape).
+
+    ``material_params``: alpha, gamma, D1, D2 (other keys ignored). ``settings``: see
+    DEFAULT_SETTINGS. ``at_figure``: omega, eps, tau_b, x_c of the reference collision at
+    g_figure; ``curve``: arrays g, omega, eps, omega_tilde of the reference eps curve (g_wide);
+    ``fit``: the least-squares c0-c2 on g_fit (FitResult.as_dict with g_min, g_max);
+    ``readings``: the paper's procedure for each reading (ConnectionCoefficients.as_dict with c).
+    :func:`reference_inputs` computes all four the way the pipeline does.
+    """
+    from ..core import connection
+    from ..core.collision import collide
+    from ..core.model import Material
+    from . import matching
+    from . import readings as rd
 
     st = {**DEFAULT_SETTINGS, **(settings or {})}
     mat = Material(material_params["alpha"], material_params["gamma"], material_params["D1"],
@@ -175,11 +220,10 @@ def compute_claim_values(material_params: dict, settings: dict | None = None) ->
     ex = mat.exponents
     rtol = float(st["rtol"])
     g_fig = float(st["g_figure"])
-    omega_fig = mat.omega(g_fig)
-    fig = collide(ex, None, omega_fig, rtol=rtol)
+    omega_fig = float(at_figure["omega"])
     k = ex.omega_exponent
-    omega_t_fig = omega_fig * fig.eps ** float(k)
-    x_tilde_c_fig = fig.x_c * fig.eps ** (-1.0 / float(ex.gamma + 1))
+    omega_t_fig = omega_fig * at_figure["eps"] ** float(k)
+    x_tilde_c_fig = at_figure["x_c"] * at_figure["eps"] ** (-1.0 / float(ex.gamma + 1))
 
     values: dict = {
         "alpha": str(ex.alpha), "gamma": str(ex.gamma), "D1": mat.D1, "D2": mat.D2,
@@ -188,15 +232,15 @@ def compute_claim_values(material_params: dict, settings: dict | None = None) ->
     values["series"] = _series_values(ex.alpha, ex.gamma)
     values["d_star"] = mat.d_star
     values["omega_at_g"] = omega_fig
-    values["tau_b_at_g"] = fig.tau_b
-    values["eps_at_g"] = fig.eps
+    values["tau_b_at_g"] = float(at_figure["tau_b"])
+    values["eps_at_g"] = float(at_figure["eps"])
     values["omega_tilde_at_g"] = omega_t_fig
     values["x_tilde_c_at_g"] = x_tilde_c_fig
 
     # Delta formulas and the reference points
     try:
         delta, delta_t = matching.lowest_order_deltas(ex, None)
-        tau0, tau0t = readings.reference_times(ex, None)
+        tau0, tau0t = rd.reference_times(ex, None)
         values["tau0"], values["tau0_tilde"] = float(tau0.evalf(20)), float(tau0t.evalf(20))
         values["delta_derived"] = [str(delta), str(delta_t)]
         p_delta, p_delta_t = matching.printed_deltas()
@@ -204,55 +248,43 @@ def compute_claim_values(material_params: dict, settings: dict | None = None) ->
         values["delta_equal"] = [bool((delta - p_delta).expand() == 0),
                                  bool((delta_t - p_delta_t).expand() == 0)]
         # tau_b from the lowest-order Delta with converged x1'(tau_0)
-        vals = readings.reference_derivatives(ex, None, readings.Reading(truncation="converged"))
-        a11 = float(vals.a[readings.a_sym(1, 1)])
-        values["tau_b_lowest_order"] = values["tau0"] + float(delta.subs({readings.W: omega_fig, readings.a_sym(1, 1): a11}))
-        values["tau_b_lowest_order_at_zero"] = values["tau0"] + float(delta.subs(readings.W, 0))
+        vals = rd.reference_derivatives(ex, None, rd.Reading(truncation="converged"))
+        a11 = float(vals.a[rd.a_sym(1, 1)])
+        values["tau_b_lowest_order"] = values["tau0"] + float(delta.subs({rd.W: omega_fig, rd.a_sym(1, 1): a11}))
+        values["tau_b_lowest_order_at_zero"] = values["tau0"] + float(delta.subs(rd.W, 0))
     except ParameterError as err:  # gamma = 0: the reference point tau_0 does not exist
         values["delta_error"] = str(err)
 
-    # the connection, every reading
-    readings = st["readings"] if st["readings"] is not None else readings.all_readings(
-        x_tilde_c_fig if 0 < x_tilde_c_fig < 1 else None)
-    rows = []
-    for r in readings:
-        try:
-            cc = matching.paper_procedure(ex, None, r)
-            rows.append({**cc.as_dict(), "c": [cc.c0, cc.c1, cc.c2]})
-        except ParameterError as err:
-            rows.append({"reading": r.label, "description": r.describe(), "defined": False,
-                         "reason": str(err), "c": [math.nan] * 3})
-    values["readings"] = rows
+    values["readings"] = list(readings)
 
-    # the exact connection and the fits
-    def g_grid(lo, hi):
-        return np.geomspace(float(lo), float(hi), int(st["points"]))
-
-    for key, (lo, hi) in (("fit", st["g_fit"]), ("fit_wide", st["g_wide"])):
-        omegas = np.sort(mat.omega(g_grid(lo, hi)))
-        fit = connection.fit_connection(ex, None, omegas, rtol=rtol)
-        values[key] = {**fit.as_dict(), "g_min": float(lo), "g_max": float(hi)}
+    # the fit on g_fit (connection_fit), and one on the whole curve (the ledger's own)
+    values["fit"] = dict(fit)
+    g = np.asarray(curve["g"], float)
+    omegas = np.asarray(curve["omega"], float)
+    omega_tilde = np.asarray(curve["omega_tilde"], float)
+    if k != 0:   # else Omega~ = Omega: nothing to fit
+        order = np.argsort(omegas)
+        wide = connection.fit_quadratic(omegas[order], omega_tilde[order])
+        values["fit_wide"] = {**wide.as_dict(), "g_min": float(g.min()), "g_max": float(g.max())}
 
     # figure 4: eps(g) from the paper's relation and from the reference
-    g = g_grid(*st["g_wide"])
-    omegas = mat.omega(g)
-    exact = connection.exact_omega_tilde(ex, None, omegas, rtol=rtol)
-    eps_ref = exact["eps"]
+    eps_ref = np.asarray(curve["eps"], float)
     if k != 0:
         eps_paper = np.asarray(connection.eps_from_connection(ex, None, omegas, printed.PRINTED_C), float)
-        fit_c = values["fit"]["c"]
-        eps_fit = np.asarray(connection.eps_from_connection(ex, None, omegas, fit_c), float)
+        fit_c = values["fit"].get("c")
+        eps_fit = (np.asarray(connection.eps_from_connection(ex, None, omegas, fit_c), float) if fit_c is not None
+                   else np.full(g.shape, np.nan))
     else:
         eps_paper = eps_fit = np.full(g.shape, np.nan)
-    in_fit = (g >= st["g_fit"][0]) & (g <= st["g_fit"][1])
+    in_fit = (g >= fit["g_min"] * (1 - 1e-12)) & (g <= fit["g_max"] * (1 + 1e-12))
     values["fig4"] = {
         "paper": _curve_shape(g, eps_paper), "reference": _curve_shape(g, eps_ref),
         "fit": _curve_shape(g, eps_fit),
         "max_abs_error_paper_in_fit_range": _nanmax(np.abs(eps_paper - eps_ref)[in_fit]),
         "max_abs_error_fit_in_fit_range": _nanmax(np.abs(eps_fit - eps_ref)[in_fit]),
         "paper_relation_omega_tilde_max_rel_error_in_fit_range": _nanmax(
-            np.abs(connection.omega_tilde_from_c(omegas, printed.PRINTED_C) - exact["omega_tilde"])[in_fit]
-            / exact["omega_tilde"][in_fit]),
+            np.abs(connection.omega_tilde_from_c(omegas, printed.PRINTED_C) - omega_tilde)[in_fit]
+            / omega_tilde[in_fit]),
     }
 
     if k != 0:
