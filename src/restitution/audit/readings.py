@@ -25,7 +25,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from ..core.errors import ParameterError
+from ..core.errors import ParameterError, integer_in
 from ..core.exponents import Exponents, as_exponents
 from ..core.series import falling_factorial, perturbation_series
 
@@ -107,9 +107,7 @@ class Reading:
             raise ParameterError("convention", self.convention, f"must be one of {_CONVENTIONS}")
         if self.truncation not in _TRUNCATIONS:
             raise ParameterError("truncation", self.truncation, f"must be one of {_TRUNCATIONS}")
-        if isinstance(self.omega_orders, bool) or not isinstance(self.omega_orders, (int, np.integer)) \
-                or not 1 <= self.omega_orders <= 8:
-            raise ParameterError("omega_orders", self.omega_orders, "must be an integer in [1, 8]")
+        integer_in("omega_orders", self.omega_orders, 1, 8)
         if self.match_order not in (1, 2):
             raise ParameterError("match_order", self.match_order, "must be 1 or 2")
         if self.delta not in _DELTAS:

@@ -43,7 +43,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
-from ..core.errors import ParameterError
+from ..core.errors import ParameterError, integer_in, number_in, require_positive_finite
 from ..core.exponents import Exponents, as_exponents
 
 __all__ = ["AtlasSpec", "AtlasPoint", "CHECKS", "QUANTITIES", "omega_grid", "plan", "shard", "estimated_cost",
@@ -66,23 +66,10 @@ ACCURACY_FACTOR, ACCURACY_FLOOR = 10.0, 1e-13
 
 # ------------------------------------------------------------------------------------------ spec
 def _positive(name: str, value, lo: float | None = None, hi: float | None = None) -> float:
-    allowed = "must be a finite number > 0" if lo is None else f"must be a number in [{lo:g}, {hi:g}]"
-    if isinstance(value, bool):
-        raise ParameterError(name, value, allowed)
-    try:
-        x = float(value)
-    except (TypeError, ValueError):
-        raise ParameterError(name, value, allowed) from None
-    if not math.isfinite(x) or x <= 0 or (lo is not None and not lo <= x <= hi):
-        raise ParameterError(name, value, allowed)
-    return x
+    return require_positive_finite(name, value) if lo is None else number_in(name, value, lo, hi)
 
 
-def _count(name: str, value, lo: int, hi: int) -> int:
-    allowed = f"must be an integer in [{lo}, {hi}]"
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
-        raise ParameterError(name, value, allowed)
-    return int(value)
+_count = integer_in
 
 
 @dataclass(frozen=True)

@@ -34,7 +34,7 @@ from typing import Callable, Sequence
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from .errors import ParameterError, require_positive_finite
+from .errors import ParameterError, number_in, require_positive_finite
 from .exponents import as_exponents
 from .law import _ForceForm, _Law
 from .model import at_most_one
@@ -362,14 +362,7 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 
 # ----------------------------------------------------------------------------------- validation
 def _check_rtol(rtol) -> float:
-    allowed = f"must be a number in [{RTOL_MIN:g}, {RTOL_MAX:g}]"
-    try:
-        value = float(rtol)
-    except (TypeError, ValueError):
-        raise ParameterError("rtol", rtol, allowed) from None
-    if isinstance(rtol, bool) or not (RTOL_MIN <= value <= RTOL_MAX):
-        raise ParameterError("rtol", rtol, allowed)
-    return value
+    return number_in("rtol", rtol, RTOL_MIN, RTOL_MAX)
 
 
 def _check_t_eval(t_eval) -> np.ndarray | None:

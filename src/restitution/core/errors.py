@@ -53,3 +53,27 @@ def require_positive_finite(field: str, value) -> float:
     if not math.isfinite(x) or x <= 0.0:
         raise ParameterError(field, value, "must be a finite number > 0")
     return x
+
+
+def integer_in(field: str, value, lo: int, hi: int) -> int:
+    """``value`` as an int, or ParameterError unless it is an integer (not a bool) in [lo, hi]."""
+    import numpy as np
+
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
+        raise ParameterError(field, value, f"must be an integer in [{lo}, {hi}]")
+    return int(value)
+
+
+def number_in(field: str, value, lo: float, hi: float, *, hi_open: bool = False, why: str = "") -> float:
+    """``value`` as a float, or ParameterError unless it is a finite number in [lo, hi] (or [lo, hi)
+    with ``hi_open``); ``why`` is added to the message after a colon."""
+    allowed = f"must be a number in [{lo:g}, {hi:g}{')' if hi_open else ']'}" + (f": {why}" if why else "")
+    if _not_a_number(value):
+        raise ParameterError(field, value, allowed)
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ParameterError(field, value, allowed) from None
+    if not (math.isfinite(x) and lo <= x and (x < hi if hi_open else x <= hi)):
+        raise ParameterError(field, value, allowed)
+    return x

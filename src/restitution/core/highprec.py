@@ -57,7 +57,7 @@ from fractions import Fraction
 import mpmath
 from mpmath import mp
 
-from .errors import ParameterError
+from .errors import ParameterError, integer_in
 from .exponents import as_exponents
 
 __all__ = ["HighPrecisionCollision", "reference_collision"]
@@ -471,10 +471,7 @@ def reference_collision(alpha, gamma, omega, *, digits: int = 30) -> HighPrecisi
     """
     ex = as_exponents(alpha, gamma)
     _check_omega(omega)
-    if isinstance(digits, bool) or not isinstance(digits, int) or not (
-            _MIN_DIGITS <= digits <= _MAX_DIGITS):
-        raise ParameterError("digits", digits,
-                             f"must be an integer in [{_MIN_DIGITS}, {_MAX_DIGITS}]")
+    integer_in("digits", digits, _MIN_DIGITS, _MAX_DIGITS)
     main = _integrate(ex.alpha, ex.gamma, omega, digits)
     check = _integrate(ex.alpha, ex.gamma, omega, digits + _CHECK_EXTRA)
     with mp.workdps(digits + _CHECK_EXTRA + _GUARD_DIGITS + _small_omega_digits(omega)):

@@ -26,7 +26,7 @@ import numpy as np
 
 from .damped import forward as damped_only_forward  # noqa: F401 - closed forms live beside the series
 from .damped import inverse as damped_only_inverse  # noqa: F401
-from .errors import ParameterError
+from .errors import ParameterError, integer_in
 from .exponents import Exponents, as_exponents
 
 DIRECTIONS = {"forward": 1, "inverse": -1}
@@ -234,9 +234,7 @@ def perturbation_series(alpha, gamma, omega_order: int = 4, max_power=11,
     ex = as_exponents(alpha, gamma)
     if direction not in DIRECTIONS:
         raise ParameterError("direction", direction, "must be 'forward' or 'inverse'")
-    if isinstance(omega_order, bool) or not isinstance(omega_order, (int, np.integer)) \
-            or not 0 <= omega_order <= 64:
-        raise ParameterError("omega_order", omega_order, "must be an integer in [0, 64]")
+    integer_in("omega_order", omega_order, 0, 64)
     max_power = _as_power("max_power", max_power)
     max_index = math.floor(max_power * ex.p)
     if max_index > 400:

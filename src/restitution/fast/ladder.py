@@ -57,7 +57,7 @@ import numpy as np
 
 from ..core import asymptotics as asy
 from . import cache as _cache
-from ..core.errors import ParameterError, real_array
+from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
 from ..core.exponents import Exponents, as_exponents
 from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
@@ -123,16 +123,8 @@ TOL_FLOOR = 2.3e-16
 
 
 def _check_tol(tol) -> float:
-    allowed = f"must be a number in [{TOL_FLOOR:g}, 1): no method returns a double closer than that"
-    if isinstance(tol, (bool, np.bool_)):
-        raise ParameterError("tol", tol, allowed)
-    try:
-        t = float(tol)
-    except (TypeError, ValueError):
-        raise ParameterError("tol", tol, allowed) from None
     # Refuse an unreachable tolerance at once, before any master curve is built for nothing.
-    if not (math.isfinite(t) and TOL_FLOOR <= t < 1.0):
-        raise ParameterError("tol", tol, allowed)
+    t = number_in("tol", tol, TOL_FLOOR, 1.0, hi_open=True, why="no method returns a double closer than that")
     return t
 
 
