@@ -1,5 +1,6 @@
 """The public calls, on top of the three layers: ``epsilon`` with every rung of the ladder (the fast
-layer's, and the paper's relations from the audit layer), and ``collide``.
+layer's, and the paper's relations from the audit layer), and ``collide``: one collision by any of
+the integrators, as one result type.
 
 ``Ladder`` and ``RUNG_NAMES`` here are the full ladder; :mod:`restitution.fast.ladder` alone knows
 only the rungs that do not need the paper.
@@ -8,13 +9,17 @@ only the rungs that do not need the paper.
 from __future__ import annotations
 
 from .audit.relations import PAPER_C, PERTURBATION
-from .core.collision import collide, collide_many, inverse_collide
+from .core import collision as _collision
+from .core.collision import collide_many, inverse_collide
+from .core.errors import ParameterError, number_in
+from .core.exponents import as_exponents
+from .core.results import Collision
 from .fast import ladder as _ladder
 from .fast.calibration import FITTED_C
 from .fast.ladder import EpsResult
 
-__all__ = ["epsilon", "EpsResult", "Ladder", "RUNG_NAMES", "RELATIONS", "collide", "inverse_collide",
-           "collide_many"]
+__all__ = ["epsilon", "EpsResult", "Ladder", "RUNG_NAMES", "RELATIONS", "collide", "Collision", "METHODS",
+           "inverse_collide", "collide_many"]
 
 #: The relation rungs of the full ladder, in the order the chooser lists them.
 RELATIONS = (PAPER_C, FITTED_C, *PERTURBATION)
@@ -35,3 +40,60 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 
     the full ladder (see :func:`restitution.fast.ladder.epsilon` for the arguments and result)."""
     return _ladder.epsilon(alpha=alpha, gamma=gamma, omega=omega, g=g, D1=D1, D2=D2, tol=tol,
                            method=method, build=build, relations=RELATIONS)
+
+
+#: The integrators ``collide`` can run.
+METHODS = ("reference", "fast", "highprec", "closed-form")
+
+
+def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-12, t_eval=None,
+            digits: int = 30) -> Collision:
+    """One forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to the end of
+    contact; every method returns a :class:`~restitution.core.results.Collision`.
+
+    ``method``:
+
+    * ``"reference"`` (default): scipy's DOP853/Radau in smooth variables
+      (:func:`restitution.core.collision.collide`), Omega in [1e-12, 1e10], ``t_eval`` samples the
+      trajectory; relative accuracy 10 rtol + 1e-13.
+    * ``"fast"``: the compiled integrator (:mod:`restitution.fast.integrator`), tens of
+      microseconds; Omega in [1e-12, 1e14] (alpha <= gamma: from 1e-5, where the return is not stiff).
+    * ``"highprec"``: mpmath Taylor series at ``digits`` digits (:mod:`restitution.core.highprec`),
+      rounded to doubles; ``rtol`` of the result is 10^(1 - digits).
+    * ``"closed-form"``: exact, for the linear spring-dashpot alpha = 1, gamma = 0 only.
+    """
+    if method not in METHODS:
+        raise ParameterError("method", method, f"must be one of {', '.join(METHODS)}")
+    if t_eval is not None and method != "reference":
+        raise ParameterError("t_eval", "...", 'trajectories come from method "reference" only')
+    ex = as_exponents(alpha, gamma)
+    if method == "reference":
+        return _collision.collide(ex, None, omega, rtol=rtol, t_eval=t_eval)
+    if method == "closed-form":
+        if (ex.alpha, ex.gamma) != (1, 0):
+            raise ParameterError("method", method, "the closed form is for alpha = 1, gamma = 0 only")
+        from .core.dashpot import dashpot_collision
+        return dashpot_collision(omega)
+    if method == "highprec":
+        from .core.highprec import reference_collision
+        r = reference_collision(ex, None, omega, digits=digits)
+        return Collision(ex.alpha, ex.gamma, float(r.omega), "forward", float(r.eps), float(r.tau_b),
+                         float(r.x_b), float(r.tau_c), float(r.x_c), r.end, 10.0 ** (1 - r.digits))
+    return _fast_collision(ex, omega, rtol)
+
+
+def _fast_collision(ex, omega, rtol) -> Collision:
+    from .fast.integrator import COLUMNS, END_FORCE, END_SEPARATION, collide_fast
+    from .core.model import at_most_one
+    from .fast.master import stiff_omega_min
+
+    lo = stiff_omega_min(ex, None)
+    omega = number_in("omega", omega, lo, 1e14, why="the compiled integrator's range (method reference "
+                      "or epsilon() cover the rest)")
+    rtol = number_in("rtol", rtol, _collision.RTOL_MIN, 1e-6)
+    row = dict(zip(COLUMNS, collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol)[0]))
+    ends = {END_FORCE: "force", END_SEPARATION: "separation"}
+    if int(row["end"]) not in ends:
+        raise ArithmeticError(f"the compiled integrator failed at Omega = {omega:g}")
+    return Collision(ex.alpha, ex.gamma, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
+                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol)

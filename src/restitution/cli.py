@@ -62,6 +62,10 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--D2", type=number_argument, help="dissipative constant D2 > 0")
     c.add_argument("--g", type=number_argument, help="impact speed g > 0")
     c.add_argument("--rtol", type=number_argument, default=1e-12, help="relative tolerance (default 1e-12)")
+    c.add_argument("--method", default="reference",
+                   help="reference (scipy, default), fast (compiled), highprec (mpmath) or closed-form "
+                        "(alpha = 1, gamma = 0)")
+    c.add_argument("--digits", type=int, default=30, help="digits of --method highprec (default 30)")
     c.add_argument("--json", action="store_true", help="machine-readable output")
 
     add_eps_subcommand(sub)
@@ -163,8 +167,9 @@ def _run_series(args, out) -> None:
 
 def _run_collide(args, out) -> None:
     omega = _omega_from_args(args)
-    from .core.collision import collide
-    result = collide(args.alpha, args.gamma, omega, rtol=args.rtol).as_dict()
+    from .api import collide
+    result = collide(args.alpha, args.gamma, omega, method=args.method, rtol=args.rtol,
+                     digits=args.digits).as_dict()
     _report_approximation(args)
     if args.json:
         _write_json(result, out)
