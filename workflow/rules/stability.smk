@@ -5,31 +5,14 @@
 #
 # Needs from the including Snakefile: common.smk (lib, code, script_file, STABILITY_OUTPUTS,
 # MANUSCRIPT_INPUTS); include this file before manuscript.smk so the appendix's inputs reach the
-# manuscript rule. Settings: config["stability"] (all optional, see restitution.audit.stability.AtlasSpec).
+# manuscript rule. Settings: config["stability"] (all optional; the schema lists them).
 
-from restitution.core.errors import ParameterError as _StabilityParameterError
 from restitution.audit.stability import AtlasSpec as _AtlasSpec
+from _config import atlas_settings as _atlas_settings
 
-
-def _stability_settings():
-    """(AtlasSpec fields as plain values, number of shards), or one config error line and exit 2."""
-    cfg = config.get("stability") or {}
-    if not isinstance(cfg, dict):
-        sys.stderr.write(f"config error: stability = {cfg!r}: must be a mapping of atlas settings\n")
-        sys.exit(2)
-    cfg = dict(cfg)
-    shards = cfg.pop("shards", 2)
-    try:
-        if isinstance(shards, bool) or not isinstance(shards, int) or not 1 <= shards <= 1000:
-            raise _StabilityParameterError("shards", shards, "must be an integer in [1, 1000]")
-        spec = _AtlasSpec.from_config(cfg, also_allowed=["shards"])
-    except _StabilityParameterError as err:
-        sys.stderr.write(f"config error: stability.{err}\n")
-        sys.exit(2)
-    return spec.as_dict(), shards
-
-
-STABILITY_SPEC, STABILITY_SHARDS = _stability_settings()
+# config["stability"] was checked with the rest of the config (common.smk): schema and AtlasSpec.
+STABILITY_SPEC = _AtlasSpec.from_config(_atlas_settings(config)).as_dict()
+STABILITY_SHARDS = config["stability"]["shards"]
 # Modules the atlas imports (collision, highprec, asymptotics, dashpot through stability).
 STABILITY_SRC = lib("audit.stability")
 

@@ -140,9 +140,8 @@ def _non_finite(node, schema, root, path=()):
 
     YAML reads .nan/.inf as floats and the schema's bounds cannot catch them (every comparison
     with NaN is false, inf passes a lower bound); text such as "nan" given on the command line
-    has become a float in _fill_defaults. A free-form block (an object schema without
-    properties: `stability`, whose stage checks every field with its allowed range, NaN and
-    infinities included) is left to its own checks."""
+    has become a float in _fill_defaults. An object schema without properties (free-form) would be
+    left to its own checks; the schema has none today."""
     if schema is not None and schema.get("$ref") in _CHECKED_ELSEWHERE:
         return None
     resolved = _resolve(schema, root) if schema is not None else None
@@ -279,7 +278,18 @@ def check_config(config: dict, schema_path: str) -> dict:
     if config["connection"]["figure_reading"] not in labels:
         raise ConfigError(f"connection.figure_reading = {config['connection']['figure_reading']!r}: "
                           f"must be one of {', '.join(labels)}")
+    # the atlas's rules between fields, by the library's own check (its messages match the API's)
+    from restitution.audit.stability import AtlasSpec
+    try:
+        AtlasSpec.from_config(atlas_settings(config))
+    except ParameterError as err:
+        raise ConfigError(f"stability.{err}") from None
     return config
+
+
+def atlas_settings(config: dict) -> dict:
+    """The stability block without `shards` (the workflow's, not the atlas's)."""
+    return {k: v for k, v in config["stability"].items() if k != "shards"}
 
 
 def _check_omega_served(where: str, v: dict, ex) -> None:
