@@ -373,3 +373,16 @@ def test_the_promised_omega_range_works_on_an_empty_cache(alpha, gamma, empty_ca
     assert np.all(epsilon(alpha=alpha, gamma=gamma, omega=[1e300], tol=1e-9, build=False).eps <= 1.0)
     quotes = {q.name: q for q in Ladder(alpha, gamma).quotes(np.array([1e-300]), 1e-9)}
     assert not math.isfinite(quotes["reference"].bound) and quotes["reference"].run is None
+
+
+def test_the_mpmath_cost_grows_at_tiny_omega_so_the_chooser_builds_instead(empty_cache):
+    """eps at Omega = 1e-300 for alpha = 3/2, gamma = 1/2 took 195 s: the chooser priced the mpmath
+    reference at 0.4 s, though it carries log10(1/Omega) extra digits. Priced by its digits, it
+    loses to building the calibration (~16 s, then the viscous expansion)."""
+    lad = Ladder("3/2", "1/2")
+    quotes = lad.quotes(np.array([1e-300]), 1e-9)
+    highprec = next(q for q in quotes if q.name == "highprec")
+    assert highprec.cost > 100.0
+    assert lad._building_pays(quotes, 1e-9, 1)
+    at_one = next(q for q in lad.quotes(np.array([1.0]), 1e-9) if q.name == "highprec")
+    assert at_one.cost < 1.0

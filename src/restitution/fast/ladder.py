@@ -305,8 +305,8 @@ class Ladder:
             out.append(_Quote("highprec", math.inf, math.inf, reason="Omega < 1e-3 with alpha <= gamma (creeping)"))
         else:
             digits = int(min(60, max(15, math.ceil(-math.log10(tol)) + 3)))
-            out.append(_Quote("highprec", max(10.0 ** (1 - digits), TOL_FLOOR), COST["highprec"] * n, f"digits={digits}",
-                              run=lambda om, d=digits: _highprec_eps(ex, om, d)))
+            out.append(_Quote("highprec", max(10.0 ** (1 - digits), TOL_FLOOR), _highprec_cost(omega, digits),
+                              f"digits={digits}", run=lambda om, d=digits: _highprec_eps(ex, om, d, self.stream)))
         return out
 
     def _cal_quote(self, cal: Calibration, name: str, omega, lo10, hi10, n) -> _Quote:
@@ -408,8 +408,20 @@ def _scipy_eps(ex: Exponents, om: np.ndarray, rtol: float) -> np.ndarray:
     return np.array([collide(ex, None, float(w), rtol=rtol).eps for w in np.ravel(om)])
 
 
-def _highprec_eps(ex: Exponents, om: np.ndarray, digits: int) -> np.ndarray:
+def _highprec_cost(omega: np.ndarray, digits: int) -> float:
+    """Seconds for the mpmath reference: below Omega = 1 it carries log10(1/Omega) more digits
+    (core.highprec), and its time grows like the 2.5th power of the digits (measured, alpha = 3/2,
+    gamma = 1/2, 16 digits: 0.15 s at Omega = 1, 0.75 s at 1e-12, 6 s at 1e-60, 190 s at 1e-300)."""
+    extra = np.maximum(0.0, np.ceil(-np.log10(np.asarray(omega, float))))
+    return float(np.sum(COST["highprec"] * ((digits + extra) / digits) ** 2.5))
+
+
+def _highprec_eps(ex: Exponents, om: np.ndarray, digits: int, stream=None) -> np.ndarray:
     from ..core.highprec import reference_collision
+    seconds = _highprec_cost(om, digits)
+    if seconds > 10.0:   # a long wait says so at its start
+        print(f"restitution: the mpmath reference on {np.size(om)} point(s) takes about {seconds:.0f} s",
+              file=sys.stderr if stream is None else stream, flush=True)
     out = []
     for w in np.ravel(om):
         r = reference_collision(ex, None, float(w), digits=digits)
