@@ -135,6 +135,9 @@ if snakemake.rule == "stability_atlas":
         "StabPoints": str(len(records)),
         "StabRtol": sci(spec.rtol, 2),
         "StabAccuracy": sci(accuracy, 3),
+        "StabAccuracyWhy": (r"set in \texttt{config.yaml}" if spec.accuracy is not None else
+                            f"{st.ACCURACY_FACTOR:g} times the tolerance plus {sci(st.ACCURACY_FLOOR, 1)}, the bound "
+                            "the method ladder quotes for this integrator"),
         "StabTightRtol": sci(spec.tight_rtol, 2),
         "StabTightDecades": str(spec.tight_decades),
         "StabTightPoints": str(sum(r["n_tight"] for r in summary)),
