@@ -339,13 +339,14 @@ class ElasticLimit:
     def delta(self, omega) -> np.ndarray:
         return np.asarray(omega, dtype=float) ** (-self.A)
 
-    def eps(self, omega, order: int = 2) -> np.ndarray:
-        """order 1: 1 - C1 delta; 2: + C2 delta^2 and the end-of-contact term."""
+    def eps(self, omega, order: int = 2, *, end_term: bool = True) -> np.ndarray:
+        """order 1: 1 - C1 delta; 2: + C2 delta^2 and (``end_term``) the end-of-contact term, which
+        the two-term series of Ramirez et al. does not have."""
         d = self.delta(omega)
         out = 1.0 - self.C1 * d
         if order >= 2:
             out = out + self.C2 * d * d
-            if self.E:
+            if self.E and end_term:
                 out = out + self.E * d ** self.end_power
         return out
 
