@@ -41,8 +41,8 @@ def test_every_row_has_every_column_and_a_valid_verdict(rows):
 
 def test_every_claim_of_the_issue_has_a_row(rows):
     for text in ["forward series x_0", "inverse series x~_4", "D* =", "Omega at g", "tau_b at g",
-                 "forward series stop tracking", "inverse series stop tracking", "reading P-N2",
-                 "c0 against the least-squares fit", "c2 against", "Omega proportional to g^(-3/4)",
+                 "forward series stop tracking", "inverse series stop tracking",
+                 "c0, c1, c2 of the connection", "Omega proportional to g^(-3/4)",
                  "terms in g^(1/4)", "shape of figure 4", "Taylor series valid", "G tanh",
                  "Delta = tau_b - tau_0", "Delta~ ="]:
         _find(rows, text)
@@ -79,14 +79,34 @@ def test_perturbing_a_value_flips_its_verdict(values, path, new, claim, before, 
     assert _find(claims.build_claims(changed), claim)["verdict"] == after
 
 
+def _triple(rows):
+    return next(r for r in rows if r["id"] == "c-triple")
+
+
 def test_a_reading_that_hit_the_printed_coefficients_would_be_reproduced(values):
     changed = copy.deepcopy(values)
     changed["readings"][0]["c"] = list(printed.PRINTED_C)
-    row = [r for r in claims.build_claims(changed) if "reading" in r["claim"]][0]
-    assert row["verdict"] == claims.REPRODUCED
+    changed["readings"][0]["defined"] = True
+    row = _triple(claims.build_claims(changed))
+    assert row["verdict"] == claims.REPRODUCED and row["our_value"].startswith("1 of 2 readings")
     changed["readings"][0]["c"][2] += 1e-3
-    row = [r for r in claims.build_claims(changed) if "reading" in r["claim"]][0]
-    assert row["verdict"] == claims.NOT_REPRODUCED
+    assert _triple(claims.build_claims(changed))["verdict"] == claims.NOT_REPRODUCED
+
+
+def test_one_row_per_statement_of_the_paper(rows, values):
+    """The printed (c0, c1, c2) is one statement: the readings, the least-squares fit and the
+    consequences of using the printed c's are evidence in its one row, judged to the printed
+    digits (not to the fit's standard errors, which are not statistical)."""
+    ids = [r["id"] for r in rows]
+    assert len(set(ids)) == len(ids)
+    triple = f"({printed.PRINTED_C[0]}, {printed.PRINTED_C[1]}, {printed.PRINTED_C[2]})"
+    assert [r["id"] for r in rows if r["paper_value"] == triple] == ["c-triple"]
+    row = _triple(rows)
+    assert row["verdict"] == claims.NOT_REPRODUCED and "5e-05 each" in row["tolerance"]
+    assert f"{values['fit']['c'][0]:.4f}" in row["our_value"] and "readings" in row["our_value"]
+    fitted_on_the_printed = copy.deepcopy(values)
+    fitted_on_the_printed["fit"]["c"] = list(printed.PRINTED_C)
+    assert _triple(claims.build_claims(fitted_on_the_printed))["verdict"] == claims.REPRODUCED
 
 
 def test_series_mismatch_is_reported(values):
@@ -145,3 +165,19 @@ def test_the_ledger_consumes_what_other_stages_computed(monkeypatch):
     assert values["fit"]["c"] == inputs["fit"]["c"]
     assert values["eps_at_g"] == inputs["at_figure"]["eps"]
     assert values["readings"] == inputs["readings"]
+
+
+def test_first_order_is_judged_only_where_a_truncation_still_follows_the_solution(values):
+    """'For tau > 2 the first order is better' is compared on the samples where some truncation is
+    within the threshold of the reference; with none there, no verdict can be given."""
+    tr = values["tracking"]
+    assert all(n <= tr["samples_after_2"] for n in tr["comparable_samples_after_2"].values())
+    row = next(r for r in claims.build_claims(values) if r["id"] == "first-order")
+    assert "comparable samples" in row["our_value"]
+    changed = copy.deepcopy(values)
+    changed["tracking"]["first_order_best_after_2"] = {k: None for k in tr["first_order_best_after_2"]}
+    row = next(r for r in claims.build_claims(changed) if r["id"] == "first-order")
+    assert row["verdict"] == claims.AMBIGUOUS
+    changed["tracking"]["first_order_best_after_2"] = {k: 0.2 for k in tr["first_order_best_after_2"]}
+    row = next(r for r in claims.build_claims(changed) if r["id"] == "first-order")
+    assert row["verdict"] == claims.NOT_REPRODUCED

@@ -287,19 +287,33 @@ def test_the_claims_ledger_lists_every_claim_with_a_computed_value(built):
     assert set(ledger["verdict"]) <= set(cl.VERDICTS)
     claims = ledger["claim"].tolist()
     for needle in ("forward series x_0", "inverse series x~_4", "D* =", "Omega at g", "tau_b at g",
-                   "higher-order forward series", "higher-order inverse series", "reading P-N1-K2-Dprinted",
-                   "c0 against the least-squares", "c2 against the least-squares", "Omega proportional",
-                   "eps has terms", "shape of figure 4"):
+                   "higher-order forward series", "higher-order inverse series", "c0, c1, c2 of the connection",
+                   "Omega proportional", "eps has terms", "shape of figure 4"):
         assert any(needle in c for c in claims), needle
+    assert ledger["id"].is_unique
     readings = read_csv(built / "results/kim/connection/readings.csv")
-    assert sum("procedure, reading" in c for c in claims) == len(readings)
+    triple = ledger[ledger["id"] == "c-triple"].iloc[0]
+    assert f"of {len(readings)} readings" in triple["our_value"]
     # our values are computed: the ledger's Omega and fitted c0 are those of the other stages
     values = json.loads((built / "results/kim/values/values.json").read_text())
     fit = json.loads((built / "results/kim/connection/fit.json").read_text())
     row = ledger[ledger["claim"].str.startswith("Omega at g")].iloc[0]
     assert float(row["our_value"]) == pytest.approx(values["OmegaAtG"]["value"], abs=5e-5)
-    row = ledger[ledger["claim"].str.startswith("c0 against")].iloc[0]
-    assert float(row["our_value"].split()[0]) == pytest.approx(fit["c"][0], abs=5e-5)
+    assert f"({fit['c'][0]:.4f}, {fit['c'][1]:.4f}, {fit['c'][2]:.4f})" in triple["our_value"]
+
+
+def test_the_figure_4_claims_are_computed_on_the_figure_4_data(built):
+    """The ledger's figure-4 numbers are those of the figure's own data file, recomputed here: the
+    largest |eps_printed - eps_reference| over the fit range, and how many speeds have no eps."""
+    curves = read_csv(built / "results/kim/connection/eps_compare.csv")
+    fit = json.loads((built / "results/kim/connection/fit.json").read_text())
+    f4 = json.loads((built / "results/kim/claims/values.json").read_text())["fig4"]
+    inside = (curves["g"] >= fit["g_min"] * (1 - 1e-12)) & (curves["g"] <= fit["g_max"] * (1 + 1e-12))
+    gap = (curves["eps_printed"] - curves["eps_reference"]).abs()[inside]
+    assert f4["max_abs_error_paper_in_fit_range"] == pytest.approx(gap.max(), rel=1e-12)
+    assert f4["paper"]["n"] == len(curves)
+    assert f4["paper"]["n_undefined"] == int(curves["eps_printed"].isna().sum())
+    assert f4["paper"]["n_above_1"] == int((curves["eps_printed"] > 1).sum())
 
 
 def test_the_ledger_table_and_discussion_are_generated_from_claims_csv(built):

@@ -23,7 +23,7 @@ rule values:
         readings=rules.connection_readings.output.json,
         fit=rules.connection_fit.output.json,
         errors=rules.eps_compare.output.errors,
-        src=lib("core.model", "audit.printed"),
+        src=lib("core.model", "audit.printed", "audit.claims", "audit.readings"),
         code=code("values.py") + ["workflow/scripts/common/latex.py"],
     output:
         tex="results/{variant}/values/values.tex",

@@ -18,7 +18,9 @@ import pandas as pd
 from common.latex import esc, frac_tex, math_text, sci
 from common.pipeline import read_json, start, write_json, write_text
 
+from restitution.audit import claims as cl
 from restitution.audit import printed
+from restitution.audit.readings import PRINTED_MAX_POWER
 from restitution.core.model import Material
 
 start(snakemake)
@@ -81,6 +83,8 @@ eps = summary["eps"]
 # %% Model and scaling
 V.add("ExpAlpha", ex.alpha, kind="config")
 V.add("ExpGamma", ex.gamma, kind="config")
+V.add("RefPointSlope", ex.gamma / (ex.gamma + 1), kind="exact",
+      note="x' = 1 - x^(gamma+1)/(gamma+1) of the damped-only motion at x = 1: the paper's reference point")
 V.add("ExpP", ex.p, kind="exact", note="common denominator of alpha and gamma")
 V.add("DOne", p.D1, tex=f"{p.D1:g}", kind="config")
 V.add("DTwo", p.D2, tex=f"{p.D2:g}", kind="config")
@@ -230,32 +234,37 @@ if p.claims:
     V.add("ClaimsReproduced", int(counts.get("reproduced", 0)), kind="exact")
     V.add("ClaimsNotReproduced", int(counts.get("not reproduced", 0)), kind="exact")
     V.add("ClaimsAmbiguous", int(counts.get("ambiguous", 0)), kind="exact")
-    # Row numbers of the ledger, so the text can point at them (rows are found by their claim).
-    ROWS = (("RowDstar", "VerdictDstar", "D* ="), ("RowOmega", "VerdictOmega", "Omega at g"),
-            ("RowTauB", "VerdictTauB", "tau_b at g"),
-            ("RowFwdTrack", "VerdictFwdTrack", "higher-order forward series"),
-            ("RowFirstOrder", "VerdictFirstOrder", "for tau > 2"),
-            ("RowInvTrack", "VerdictInvTrack", "higher-order inverse series"),
-            ("RowRadiusFwd", "VerdictRadiusFwd", "forward damped-only Taylor"),
-            ("RowRadiusInv", "VerdictRadiusInv", "inverse damped-only Taylor"),
-            ("RowInvForm", "VerdictInvForm", "x~0 = G tanh"), ("RowDelta", "VerdictDelta", "Delta = tau_b"),
-            ("RowFitCZero", "VerdictFitCZero", "c0 against the least-squares"),
-            ("RowRelation", "VerdictRelation", "Omega~(Omega) = c0"),
-            ("RowOmegaScaling", "VerdictOmegaScaling", "Omega proportional"),
-            ("RowEpsScaling", "VerdictEpsScaling", "eps has terms"),
-            ("RowShape", "VerdictShape", "shape of figure 4"),
-            ("RowFigFour", "VerdictFigFour", "eps(g) from the printed"))
-    for row_name, verdict_name, prefix in ROWS:
-        hit = ledger[ledger["claim"].str.startswith(prefix)]
-        V.add(row_name, int(hit["row"].iloc[0]), kind="exact", note=prefix)
-        V.add(verdict_name, hit["verdict"].iloc[0], kind="exact")
-    reading_rows = ledger[ledger["claim"].str.contains("procedure, reading")]
-    V.add("RowReadingsFirst", int(reading_rows["row"].min()), kind="exact")
-    V.add("RowReadingsLast", int(reading_rows["row"].max()), kind="exact")
-    V.add("ReadingsReproduced", int((reading_rows["verdict"] == "reproduced").sum()), kind="exact",
+    # Row numbers and verdicts of the ledger, so the text can point at them (rows by their stable id).
+    by_id = ledger.set_index("id")
+
+    def row(row_name, verdict_name, row_id):
+        V.add(row_name, int(by_id.loc[row_id, "row"]), kind="exact", note=row_id)
+        V.add(verdict_name, by_id.loc[row_id, "verdict"], kind="exact")
+
+    row("RowDstar", "VerdictDstar", "dstar")
+    row("RowOmega", "VerdictOmega", "omega")
+    row("RowTauB", "VerdictTauB", "tau-b")
+    row("RowFwdTrack", "VerdictFwdTrack", "fwd-track")
+    row("RowFirstOrder", "VerdictFirstOrder", "first-order")
+    row("RowInvTrack", "VerdictInvTrack", "inv-track")
+    row("RowRadiusFwd", "VerdictRadiusFwd", "radius-forward")
+    row("RowRadiusInv", "VerdictRadiusInv", "radius-inverse")
+    row("RowInvForm", "VerdictInvForm", "inv-form")
+    row("RowDelta", "VerdictDelta", "delta")
+    row("RowCTriple", "VerdictCTriple", "c-triple")
+    row("RowOmegaScaling", "VerdictOmegaScaling", "omega-scaling")
+    row("RowEpsScaling", "VerdictEpsScaling", "eps-scaling")
+    row("RowShape", "VerdictShape", "fig4-shape")
+    series_rows = ledger[ledger["id"].str.startswith("series")]["row"]
+    V.add("RowSeriesFirst", int(series_rows.min()), kind="exact", note="ledger rows of the printed series")
+    V.add("RowSeriesLast", int(series_rows.max()), kind="exact")
+    V.add("ReadingsReproduced", sum(cl.reproduces_printed_c(r["c"]) for r in cv["readings"]), kind="exact",
           note="readings whose c0-c2 equal the printed ones within the ledger's tolerance")
 
     # The paper's printed numbers (restitution.audit.printed) and ours next to them.
+    V.add("PaperAlpha", Fraction(printed.ALPHA), kind="paper")
+    V.add("PaperGamma", Fraction(printed.GAMMA), kind="paper")
+    V.add("PaperSeriesMaxPower", PRINTED_MAX_POWER, kind="paper", note="the paper prints every series to this power of tau")
     V.add("PaperDstar", printed.D_STAR, tex=r"\ensuremath{3\times 10^{-3}}", kind="paper")
     V.add("PaperOmegaAtG", printed.OMEGA_AT_G, tex=f"{printed.OMEGA_AT_G}", kind="paper")
     V.add("PaperTauBAtG", printed.TAU_B_AT_G, tex=f"{printed.TAU_B_AT_G}", kind="paper")
@@ -293,8 +302,12 @@ if p.claims:
         V.add(inv_scaled, first(tr["inverse_tau_scaled"][key], max),
               note="inverse, forward time with the time scale applied")
     V.add("FwdDepartOrderOne", tr["forward"][mid]["1"])
-    V.add("FirstOrderBetterShare", 100.0 * tr["first_order_best_after_2"], sig=2,
-          note="percent of the tau > 2 samples where x0 + Omega x1 is closest")
+    share = tr["first_order_best_after_2"].get(mid)
+    V.add("FirstOrderBetterShare", None if share is None else 100.0 * share, sig=2,
+          note="percent of the comparable tau > 2 samples where x0 + Omega x1 is closest")
+    V.add("FirstOrderComparable", tr["comparable_samples_after_2"][mid], kind="exact",
+          note="tau > 2 samples where some truncation is within the threshold of the reference")
+    V.add("FirstOrderSamples", tr["samples_after_2"], kind="exact")
     V.add("TrackOmegaTilde", tr["omega_tilde"])
     V.add("RadiusFwd", cv["radius_forward"], kind="formula")
     V.add("RadiusInv", cv["radius_inverse"], kind="formula")
