@@ -83,6 +83,7 @@ rule fig4_eps:
     input:
         curves=rules.eps_compare.output.curves,
         errors=rules.eps_compare.output.errors,
+        known="results/{variant}/validation/known.csv",   # eps(Omega) where g does not matter
         code=code("fig4_eps.py"),
     output:
         pdf="results/{variant}/figures/fig4.pdf",

@@ -9,7 +9,7 @@
 # %%
 import numpy as np
 import pandas as pd
-from common.pipeline import read_json, save_figure, setup_matplotlib, start
+from common.pipeline import order_style, read_json, save_figure, setup_matplotlib, start
 
 from restitution.core.series import perturbation_series
 
@@ -35,9 +35,9 @@ colors = plt.cm.viridis(np.linspace(0.0, 0.85, p.omega_order + 1))
 ref_on_grid = ref["tau"].to_numpy()
 for n in range(p.omega_order + 1):
     label = rf"series to $\Omega^{{{n}}}$"
-    ax.plot(tau, series.evaluate(tau, omega, order=n), ls="--", lw=1.3, color=colors[n], label=label)
+    ax.plot(tau, series.evaluate(tau, omega, order=n), lw=1.3, label=label, **order_style(n, colors[n], tau.size))
     err = np.abs(series.evaluate(ref_on_grid, omega, order=n) - ref["x"].to_numpy())
-    ax_err.semilogy(ref_on_grid, np.maximum(err, 1e-16), color=colors[n], lw=1.1)
+    ax_err.semilogy(ref_on_grid, np.maximum(err, 1e-16), lw=1.1, **order_style(n, colors[n], ref_on_grid.size))
 for a in (ax, ax_err):
     a.axvline(summary["tau_b"], color="grey", ls=":", lw=1)
 ax.annotate(r"$\tau_b$", (summary["tau_b"], 0.05 * x_max), xytext=(4, 0), textcoords="offset points",

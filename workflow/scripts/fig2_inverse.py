@@ -12,7 +12,7 @@ from fractions import Fraction
 
 import numpy as np
 import pandas as pd
-from common.pipeline import read_json, save_figure, setup_matplotlib, start
+from common.pipeline import order_style, read_json, save_figure, setup_matplotlib, start
 
 from restitution.core.series import perturbation_series
 
@@ -47,10 +47,10 @@ else:
 colors = plt.cm.plasma(np.linspace(0.0, 0.85, p.omega_order + 1))
 grid = ref["tau_tilde"].to_numpy()
 for n in range(p.omega_order + 1):
-    ax.plot(tau_t, series.evaluate(tau_t, omega_t, order=n), ls="--", lw=1.3, color=colors[n],
-            label=rf"series to $\tilde\Omega^{{{n}}}$")
+    ax.plot(tau_t, series.evaluate(tau_t, omega_t, order=n), lw=1.3, label=rf"series to $\tilde\Omega^{{{n}}}$",
+            **order_style(n, colors[n], tau_t.size))
     err = np.abs(series.evaluate(grid, omega_t, order=n) - target)
-    ax_err.semilogy(grid, np.maximum(err, 1e-16), color=colors[n], lw=1.1)
+    ax_err.semilogy(grid, np.maximum(err, 1e-16), lw=1.1, **order_style(n, colors[n], grid.size))
 for a in (ax, ax_err):
     a.axvline(inv["tau_tilde_b"], color="grey", ls=":", lw=1)
 ax.annotate(r"$\tilde\tau_b$", (inv["tau_tilde_b"], 0.05 * x_max), xytext=(4, 0),

@@ -6,6 +6,8 @@
 # only), our c's from the paper's procedure (one documented reading) and our least-squares c's.
 # The curves are computed by eps_compare.py (`restitution.core.connection.eps_from_connection`); this
 # script only draws them. Where a relation gives no real eps (Omega~ <= 0) its curve has a gap.
+# When alpha - 1 - 2 gamma = 0, Omega and eps do not depend on g and eps(g) is a flat line: the
+# figure then shows what does vary, eps(Omega) on the validation grid, with this material's Omega.
 
 # %%
 import numpy as np
@@ -23,31 +25,62 @@ p = snakemake.params
 curves = pd.read_csv(snakemake.input.curves)
 errors = pd.read_csv(snakemake.input.errors, keep_default_na=False)
 
-fig, ax = plt.subplots()
-ax.plot(curves["g"], curves["eps_reference"], color="black", lw=2.6, label="reference integration")
-drawn = [curves["eps_reference"].to_numpy()]
-for _, rel in errors.iterrows():
-    col = f"eps_{rel['kind']}"
-    if col not in curves:
-        continue
-    style = {"lw": 1.6, **STYLE[rel["kind"]]}
-    ax.plot(curves["g"], curves[col], label=rel["label"], **style)
-    drawn.append(curves[col].to_numpy())
-ax.axvline(p.g_figure, color="grey", ls=":", lw=1)
-ax.axhline(1.0, color="grey", ls="-", lw=0.8)
-if p.fit_g_range:
-    ax.axvspan(p.fit_g_range["min"], p.fit_g_range["max"], color="tab:green", alpha=0.07, lw=0)
-ax.set_xscale("log")
-ax.set_yscale("log")
-# Room for every curve, but not for a relation that runs off to 0 or infinity.
-values = np.concatenate(drawn)
-values = values[np.isfinite(values) & (values > 0)]
-ax.set_ylim(max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0))
-ax.annotate(rf"$g = {p.g_figure:g}$ (figs. 1-2)", (p.g_figure, 1.0), xytext=(4, -12),
-            textcoords="offset points", color="grey", fontsize=8)
-ax.set_xlim(curves["g"].min(), curves["g"].max())
-ax.set_xlabel(r"impact speed $g$ (units of the $D_1$, $D_2$ fit)")
-ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
-ax.legend(loc="lower left", title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
-fig.tight_layout()
+
+def draw_eps_of_omega():
+    """alpha - 1 - 2 gamma = 0: eps(Omega) on the validation grid, this material's Omega marked."""
+    known = pd.read_csv(snakemake.input.known)
+    fig, ax = plt.subplots(figsize=(5.6, 4.6))
+    ax.loglog(known["omega"], known["eps_reference"], color="black", lw=2.6, label="reference integration")
+    closed = [c for c in known.columns if c.startswith("eps_") and c != "eps_reference"]
+    for c, marker in zip(closed, "osD^"):
+        ax.loglog(known["omega"], known[c], ls="none", marker=marker, mfc="none", color="tab:orange",
+                  label=f"closed form ({c[4:]})")
+    w = float(curves["omega"].iloc[0])
+    ax.plot([w], [float(curves["eps_reference"].iloc[0])], "o", color="tab:red", ms=8,
+            label=rf"this material: $\Omega = {w:.4g}$ for every $g$")
+    ax.set_xlabel(r"$\Omega$ (here independent of the impact speed)")
+    ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False,
+               title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
+    fig.tight_layout(rect=(0, 0.25, 1, 1))
+    return fig
+
+
+def draw_eps_of_g():
+    """eps(g) from the reference and from every relation."""
+    fig, ax = plt.subplots(figsize=(5.6, 4.6))
+    ax.plot(curves["g"], curves["eps_reference"], color="black", lw=2.6, label="reference integration")
+    drawn = [curves["eps_reference"].to_numpy()]
+    for _, rel in errors.iterrows():
+        col = f"eps_{rel['kind']}"
+        if col not in curves:
+            continue
+        style = {"lw": 1.6, **STYLE[rel["kind"]]}
+        ax.plot(curves["g"], curves[col], label=rel["label"], **style)
+        drawn.append(curves[col].to_numpy())
+    ax.axvline(p.g_figure, color="grey", ls=":", lw=1)
+    ax.axhline(1.0, color="grey", ls="-", lw=0.8)
+    if p.fit_g_range:
+        ax.axvspan(p.fit_g_range["min"], p.fit_g_range["max"], color="tab:green", alpha=0.07, lw=0)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    # Room for every curve, but not for a relation that runs off to 0 or infinity.
+    values = np.concatenate(drawn)
+    values = values[np.isfinite(values) & (values > 0)]
+    ax.set_ylim(max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0))
+    # the label sits at the foot of its line, where no curve runs (the curves keep to the upper part)
+    ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 0.0), xycoords=("data", "axes fraction"), xytext=(3, 3),
+                textcoords="offset points", color="grey", fontsize=8.5)
+    ax.set_xlim(curves["g"].min(), curves["g"].max())
+    ax.set_xlabel(r"impact speed $g$ (units of the $D_1$, $D_2$ fit)")
+    ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
+    # below the axes: inside, it covered a curve for some variants
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False,
+               title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
+    fig.tight_layout(rect=(0, 0.17, 1, 1))
+    return fig
+
+
+# %%
+fig = draw_eps_of_omega() if curves["omega"].nunique() == 1 else draw_eps_of_g()
 save_figure(fig, snakemake.output.pdf, snakemake.output.png)

@@ -78,7 +78,7 @@ for ax in axes.flat:
     ax.tick_params(labelsize=7)
     ax.set_xticks([1e-8, 1e-4, 1, 1e4, 1e8][:: 1 if len(gammas) < 3 else 2])
 for ax, label in zip(axes[:, 0], (r"$\varepsilon$", r"$1-\varepsilon$", r"$\tau_c$", "relative error")):
-    ax.set_ylabel(label, fontsize=9 if label.startswith("$") else 8)
+    ax.set_ylabel(label, fontsize=9)
 axes[3, 0].set_ylim(1e-17, 1e-6)
 for ax in axes[-1]:
     ax.set_xlabel(r"$\Omega$")
@@ -91,7 +91,7 @@ handles += [plt.Line2D([], [], ls="--", color="black", lw=0.7),
             plt.Line2D([], [], ls="", marker="x", color="grey"),
             plt.Line2D([], [], color="grey")]
 labels += ["limits", f"vs rtol {spec.tight_rtol:.0e}", "vs mpmath", "vs closed form", "stated accuracy"]
-fig.legend(handles, labels, loc="lower center", ncol=5, fontsize=7, frameon=False, bbox_to_anchor=(0.5, 0.0))
+fig.legend(handles, labels, loc="lower center", ncol=5, fontsize=8.5, frameon=False, bbox_to_anchor=(0.5, 0.0))
 fig.tight_layout(rect=(0, 0.05, 1, 1), h_pad=0.4, w_pad=0.3)
 
 # %%

@@ -132,6 +132,11 @@ V.add("GMax", float(curve["g"].max()), tex=f"{curve['g'].max():g}", kind="config
 V.add("GPoints", int(len(curve)), kind="config")
 V.add("OmegaMin", float(curve["omega"].min()), kind="formula")
 V.add("OmegaMax", float(curve["omega"].max()), kind="formula")
+# The balance of the two forces in one impact is Omega (elastic over dissipative), not D*.
+V.add("ElasticSpeeds", int((curve["omega"] > 1.0).sum()), kind="exact",
+      note="figure-4 speeds with Omega > 1: the elastic force dominates")
+V.add("GOmegaOne", mat.omega(1.0) ** (-1.0 / float(ex.omega_exponent)) if ex.omega_exponent else None,
+      sig=3, kind="formula", note="impact speed with Omega = 1")
 V.add("EpsMin", float(curve["eps"].min()))
 V.add("EpsMax", float(curve["eps"].max()))
 V.add("OmegaTildeMin", float(curve["omega_tilde"].min()))

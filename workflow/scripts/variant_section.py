@@ -47,23 +47,26 @@ else:
              rf"$\varepsilon$ from ${T['EpsMax']}$ to ${T['EpsMin']}$. ")
 text += (rf"At $g = {T['GFig']}$ ($\Omega = {T['OmegaAtG']}$) maximum compression comes at "
          rf"$\tau_b = {T['TauBAtG']}$ ($x_b = {T['XBAtG']}$) and contact ends at $\tau_c = {T['TauCAtG']}$ "
-         rf"(ended by: {T['EndAtG']}) with $\varepsilon = {T['EpsAtG']}$. Figure~\ref{{fig:{v}}} shows "
-         r"the equivalents of figures~1--4 for this variant, and Table~\ref{tab:series-" + v + "} its exact "
+         rf"(ended by: {T['EndAtG']}) with $\varepsilon = {T['EpsAtG']}$. Figures~\ref{{fig:{v}-fig1}}--"
+         rf"\ref{{fig:{v}-fig4}} show the main figures' equivalents for this variant, and Table~\ref{{tab:series-{v}}} its exact "
          r"series coefficients.")
 out += [text, ""]
 
-# %% Figures 1-4
-out += [r"\begin{figure}[tbp]", r"  \centering"]
-for i, f in enumerate(("fig1", "fig2", "fig3", "fig4")):
-    out.append(rf"  \includegraphics[width=0.49\textwidth]{{{d}/figures/{f}.pdf}}" + ("\\hfill" if i % 2 == 0 else ""))
-    if i == 1:
-        out.append(r"  \\[2mm]")
-out += [rf"  \caption{{Variant {name} ($\alpha = {T['ExpAlpha']}$, $\gamma = {T['ExpGamma']}$, $D_1 = {T['DOne']}$, "
-        rf"$D_2 = {T['DTwo']}$): forward and inverse collision at $g = {T['GFig']}$ against the series "
-        r"(top), the damped-only phase portrait and $\varepsilon(g)$ (bottom); compare "
-        r"Figs.~\ref{fig:forward}--\ref{fig:eps}. Made by the same scripts for this variant's "
-        rf"parameters (\texttt{{{d}/figures/}}).}}",
-        rf"  \label{{fig:{v}}}", r"\end{figure}", ""]
+# %% Figures 1-4: one float each, printed at the main figures' width so that their lettering keeps its
+# size (two to a row, it shrank to about 4 pt)
+what = {"fig1": rf"forward collision at $g = {T['GFig']}$ against the series (compare Fig.~\ref{{fig:forward}})",
+        "fig2": r"inverse collision against the inverse series (compare Fig.~\ref{fig:inverse})",
+        "fig3": r"damped-only phase portrait (compare Fig.~\ref{fig:phase})",
+        "fig4": (r"$\varepsilon(\Om)$ from the reference and the closed form: $\varepsilon$ does not depend on $g$ "
+                 r"here, so $\varepsilon(g)$ would be a flat line; the dot is this material" if k_zero else
+                 r"$\varepsilon(g)$ from the reference and the relations (compare Fig.~\ref{fig:eps})")}
+for f, text in what.items():
+    out += [r"\begin{figure}[tbp]", r"  \centering",
+            rf"  \includegraphics[width=0.75\textwidth]{{{d}/figures/{f}.pdf}}",
+            rf"  \caption{{Variant {name} ($\alpha = {T['ExpAlpha']}$, $\gamma = {T['ExpGamma']}$, "
+            rf"$D_1 = {T['DOne']}$, $D_2 = {T['DTwo']}$): {text}. Made by the same script as the main figure, "
+            rf"for this variant's parameters (\texttt{{{d}/figures/{f}.pdf}}).}}",
+            rf"  \label{{fig:{v}-{f}}}", r"\end{figure}", ""]
 out += [r"\begin{table}[tbp]", r"  \centering", r"  \scriptsize",
         rf"  \input{{{d}/series/table.tex}}",
         rf"  \caption{{Nonzero coefficients of the forward and inverse series for variant {name}, "
@@ -90,7 +93,7 @@ else:
                  r"whatever $\varepsilon$ is, so no relation $\tilde\Omega(\Omega)$ determines $\varepsilon$ "
                  r"and none is drawn.")
     else:
-        text += rf"figure~\ref{{fig:{v}}} draws reading {T['FigReading']}."
+        text += rf"figure~\ref{{fig:{v}-fig4}} draws reading {T['FigReading']}."
     out.append(text)
     out += ["", r"\begin{table}[tbp]", r"  \centering", r"  \small",
             rf"  \input{{{d}/connection/readings.tex}}",
