@@ -21,6 +21,7 @@ from common.pipeline import read_json, start, write_json, write_text
 from restitution.audit import claims as cl
 from restitution.audit import printed
 from restitution.audit.readings import PRINTED_MAX_POWER
+from restitution.core.connection import eps_from_connection
 from restitution.core.model import Material
 
 start(snakemake)
@@ -267,6 +268,9 @@ if p.claims:
           note="readings whose c0-c2 equal the printed ones within the ledger's tolerance")
 
     # The paper's printed numbers (restitution.audit.printed) and ours next to them.
+    # the sharpest consequence of the printed c's: eps at the paper's own impact speed
+    V.add("PrintedEpsAtG", eps_from_connection(ex, None, omega, printed.PRINTED_C), kind="formula",
+          note="eps from the printed c0-c2 at g_figure (the reference gives EpsAtG)")
     V.add("PaperAlpha", Fraction(printed.ALPHA), kind="paper")
     V.add("PaperGamma", Fraction(printed.GAMMA), kind="paper")
     V.add("PaperSeriesMaxPower", PRINTED_MAX_POWER, kind="paper", note="the paper prints every series to this power of tau")
