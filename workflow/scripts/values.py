@@ -323,7 +323,7 @@ if p.claims:
     pf = cv["paper_inverse_form"]
     V.add("InvFormXc", pf["x_c"], tex=f"{pf['x_c']:g}", kind="config")
     V.add("InvFormResidualInverse", pf["residual_inverse"], sig=2, kind="error", note="finite differences")
-    V.add("InvFormResidualForward", pf["residual_forward"], sig=1, kind="error", note="finite differences")
+    V.add("InvFormResidualForward", pf["residual_forward"], sig=2, kind="error", note="finite differences")
     V.add("RelationMaxRelError", cv["fig4"]["paper_relation_omega_tilde_max_rel_error_in_fit_range"], sig=3,
           note="max |Omega~_printed - Omega~_exact| / Omega~_exact over the fit range")
     V.add("OmegaTildeSmallExponent", cv["omega_tilde_small_omega_exponent"], sig=3,

@@ -21,7 +21,9 @@ def sci(x, sig: int = 4) -> str:
     mant, exp = f"{x:.{sig - 1}e}".split("e")
     e = int(exp)
     if -3 <= e < 5:
-        return f"{x:.{max(sig - 1 - e, 0)}f}"
+        text = f"{x:.{max(sig - 1 - e, 0)}f}"
+        # in running text a bare "-" is a hyphen: math mode makes it a minus sign
+        return rf"\ensuremath{{{text}}}" if x < 0 else text
     return rf"\ensuremath{{{mant}\times 10^{{{e}}}}}"
 
 
