@@ -181,3 +181,21 @@ def test_first_order_is_judged_only_where_a_truncation_still_follows_the_solutio
     changed["tracking"]["first_order_best_after_2"] = {k: 0.2 for k in tr["first_order_best_after_2"]}
     row = next(r for r in claims.build_claims(changed) if r["id"] == "first-order")
     assert row["verdict"] == claims.NOT_REPRODUCED
+
+
+def test_tracking_times_are_located_not_read_off_the_grid(values):
+    """The time a series stops tracking is where its error crosses the threshold, to the precision
+    printed: recomputed here at that time, the error equals threshold x x_b."""
+    from restitution.core.collision import collide
+    from restitution.core.series import perturbation_series
+
+    tr = values["tracking"]
+    key = str(float(tr["thresholds"][1]))
+    ps = perturbation_series("3/2", 1, 4, 11, "forward")
+    for order in ("2", "4"):
+        t = tr["forward"][key][order]
+        x_ref = collide("3/2", 1, tr["omega"], rtol=1e-10, t_eval=[t]).trajectory.x[0]
+        err = abs(ps.evaluate([t], tr["omega"], order=int(order))[0] - x_ref)
+        assert err == pytest.approx(float(key) * tr["x_b"], rel=1e-6)
+        grid_step = tr["tau_c"] / (values["settings"]["tracking_samples"] - 1)
+        assert not math.isclose(t / grid_step, round(t / grid_step), abs_tol=1e-6)   # not a grid point

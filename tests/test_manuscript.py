@@ -47,3 +47,15 @@ def test_no_number_is_typed_by_hand(path):
 def test_the_scan_finds_a_typed_result():
     text = "\\begin{document}\nThe fit gives $c_0 = 0.4647$ over rows 1--10 at $\\alpha = 3/2$ (Fig.~\\ref{fig:4}).\n"
     assert [tok for _, tok in typed_numbers(text)] == ["0.4647", "10", "3/2"]
+
+
+def test_generated_text_writes_numbers_and_minus_signs_as_mathematics():
+    """The ledger's plain-text values become LaTeX: 1.6e-08 a power of ten, a spaced or leading '-'
+    a minus sign (a bare '-' in text is a hyphen), hyphenated labels untouched."""
+    import sys
+    sys.path.insert(0, str(PAPER.parent / "workflow" / "scripts"))
+    from common.latex import math_text
+
+    assert math_text("1.6e-08 in the forward one") == r"\(1.6\times 10^{-8}\) in the forward one"
+    assert r"\(-\)" in math_text("tau_b - tau_0") and r"\(-\)" in math_text("-1 - (2/3)")
+    assert math_text("P-N2-K2-Dprinted") == "P-N2-K2-Dprinted"

@@ -59,6 +59,7 @@ _GREEK = {"Omega": r"\Omega", "tau": r"\tau", "Delta": r"\Delta", "eps": r"\vare
 _SUB = r"(?:_(?:[0-9]+|[A-Za-z]+)|[0-9](?![0-9.]))"
 _TOKEN = re.compile(
     r"(?P<graphics>\\includegraphics)"
+    r"|(?P<sci>(?<![\w.])(?P<mant>[0-9]+(?:\.[0-9]+)?)e(?P<exp>[-+]?[0-9]+)(?![\w.]))"
     r"|(?P<sqrtp>sqrt\((?P<sqrtarg>[^()]*)\))"
     r"|(?P<sqrt>sqrt(?P<sqrtnum>[0-9]))"
     r"|(?P<func>\b(?:atanh|atan|tanh|tan|log|exp)\b)"
@@ -73,6 +74,7 @@ _TOKEN = re.compile(
     r"|(?P<le><=)"
     r"|(?P<ge>>=)"
     r"|(?P<minus>(?<![\w.)])-(?=[0-9]))"
+    r"|(?P<bminus>(?<=\s)-(?=\s))"
     r"|(?P<lt><)"
     r"|(?P<gt>>)"
     r"|(?P<bar>\|)"
@@ -117,6 +119,8 @@ def math_text(text: str) -> str:
         k = m.lastgroup
         if m.group("graphics"):
             out.append(r"\texttt{\textbackslash includegraphics}")
+        elif m.group("sci"):   # 1.6e-08 as a number, not as text
+            out.append(_math(rf"{m.group('mant')}\times 10^{{{int(m.group('exp'))}}}"))
         elif m.group("sqrtp") is not None:
             out.append(_math(rf"\sqrt{{{_inner(m.group('sqrtarg'))}}}"))
         elif m.group("sqrt"):
@@ -145,7 +149,7 @@ def math_text(text: str) -> str:
             out.append(_math(r"\le"))
         elif m.group("ge"):
             out.append(_math(r"\ge"))
-        elif m.group("minus"):
+        elif m.group("minus") or m.group("bminus"):
             out.append(_math("-"))
         elif m.group("lt"):
             out.append(_math("<"))
