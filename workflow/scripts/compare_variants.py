@@ -16,12 +16,12 @@ plt = setup_matplotlib()
 
 KNOWN = {"eps_dashpot": ("linear dashpot, closed form", dict(ls="none", marker="o", ms=4, mfc="none")),
          "eps_equal_exponents": (r"$\alpha = \gamma$, closed form", dict(ls="none", marker="s", ms=4, mfc="none")),
-         "eps_elastic_series": ("elastic-limit series (Ramirez et al.)", dict(ls="--", lw=1.2)),
+         "eps_elastic_series": ("elastic-limit series (Ramirez et al. + end-of-contact term)", dict(ls="--", lw=1.2)),
          "eps_pade": ("Pade form (Mueller & Poeschel)", dict(ls=":", lw=1.8))}
 
 # %%
 p = snakemake.params
-fig, ax = plt.subplots(figsize=(5.6, 4.2))
+fig, ax = plt.subplots(figsize=(5.6, 5.8))
 colors = plt.cm.tab10(np.arange(len(p.variants)) % 10)
 for i, (name, known_file, curve_file) in enumerate(zip(p.variants, snakemake.input.known, snakemake.input.curves)):
     known = pd.read_csv(known_file)
@@ -44,6 +44,7 @@ ax.set_ylim(max(ax.get_ylim()[0], 1e-4), 1.5)
 ax.set_xlim(min(p.grid["omega_min"], ax.get_xlim()[0]), p.grid["omega_max"])
 ax.set_xlabel(r"$\Omega$")
 ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
-ax.legend(loc="lower right")
-fig.tight_layout()
+# below the axes: inside, it covered the curves at small Omega
+fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False)
+fig.tight_layout(rect=(0, 0.25, 1, 1))
 save_figure(fig, snakemake.output.pdf, snakemake.output.png)

@@ -33,7 +33,7 @@ tau_t = np.linspace(0.0, inv["tau_tilde_end"], 801)
 x_max = float(ref["x_tilde"].max())
 
 # %%
-fig, (ax, ax_err) = plt.subplots(2, 1, sharex=True, figsize=(5.6, 5.8),
+fig, (ax, ax_err) = plt.subplots(2, 1, sharex=True, figsize=(5.6, 6.3),
                                  gridspec_kw={"height_ratios": [3, 1.5]})
 ax.plot(ref["tau_tilde"], ref["x_tilde"], color="black", lw=2.4,
         label=r"reference: forward run reversed ($\tilde x(0) = \tilde x_c$)")
@@ -69,5 +69,5 @@ ax_err.set_ylim(1e-10, 10)
 ax_err.set_xlabel(r"inverse scaled time $\tilde\tau$ (measured from the end of contact)")
 ax_err.set_ylabel(r"$|\tilde x_{\rm series} - \tilde x_{\rm ref}|$" + ("\n" + r"(ref. from $\tilde x = 0$)" if has_zero else ""))
 fig.align_ylabels()
-fig.tight_layout(rect=(0, 0.12, 1, 1))
+fig.tight_layout(rect=(0, 0.17, 1, 1))
 save_figure(fig, snakemake.output.pdf, snakemake.output.png)
