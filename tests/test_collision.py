@@ -200,7 +200,8 @@ def test_as_dict_is_json_ready():
     hit = collide("3/2", 1, 0.5)
     data = json.loads(json.dumps(hit.as_dict()))
     assert data == {"alpha": "3/2", "gamma": "1", "omega": 0.5, "eps": hit.eps, "tau_b": hit.tau_b,
-                    "x_b": hit.x_b, "tau_c": hit.tau_c, "x_c": hit.x_c, "end": "force"}
+                    "x_b": hit.x_b, "tau_c": hit.tau_c, "x_c": hit.x_c, "end": "force",
+                    "one_minus_eps": hit.one_minus_eps}
     assert hit.direction == "forward" and hit.rtol == 1e-12 and hit.trajectory is None
     assert isinstance(hit.alpha, Fraction) and hit.alpha == Fraction(3, 2)
     json.dumps(inverse_collide("3/2", 1, 6.0).as_dict())
@@ -250,3 +251,22 @@ def test_bad_omegas_array_is_a_parameter_error():
         collide_many("3/2", 1, [[1.0, 2.0]])
     with pytest.raises(ParameterError):
         collide_many("3/2", 1, [1.0, -2.0])
+
+
+@pytest.mark.parametrize("alpha, gamma, omega", [("3/2", "1", 1e4), ("3/2", "1", 1e10), ("1", "3/2", 1e8),
+                                                 ("1", "3/2", 1e10), ("2", "1/2", 1e9), ("3/2", "1/2", 100.0),
+                                                 ("3/2", "1", 0.5)])
+def test_one_minus_eps_is_accurate_relative_to_itself(alpha, gamma, omega):
+    """1 - eps from the dissipated energy keeps its relative accuracy where 1 - eps by subtraction
+    has none (the elastic limit): against the mpmath reference at 30 digits, to 1e-9 relative."""
+    from restitution.core.highprec import reference_collision
+
+    hit = collide(alpha, gamma, omega, rtol=1e-12)
+    exact = float(1 - reference_collision(alpha, gamma, omega, digits=30).eps)
+    assert hit.one_minus_eps == pytest.approx(exact, rel=1e-9)
+    assert hit.eps < 1.0 or hit.one_minus_eps < 1e-16   # never above one; 1.0 only where the loss rounds away
+
+
+def test_one_minus_eps_agrees_with_a_tighter_run():
+    loose, tight = (collide("1", "3/2", 1e6, rtol=r).one_minus_eps for r in (1e-10, 1e-13))
+    assert loose == pytest.approx(tight, rel=1e-8)

@@ -55,9 +55,11 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
 
     * ``"reference"`` (default): scipy's DOP853/Radau in smooth variables
       (:func:`restitution.core.collision.collide`), Omega in [1e-12, 1e10], ``t_eval`` samples the
-      trajectory; relative accuracy 10 rtol + 1e-13.
+      trajectory; relative accuracy 10 rtol + 1e-13, for ``one_minus_eps`` too (from the dissipated
+      energy).
     * ``"fast"``: the compiled integrator (:mod:`restitution.fast.integrator`), tens of
-      microseconds; Omega in [1e-12, 1e14] (alpha <= gamma: from 1e-5, where the return is not stiff).
+      microseconds; Omega in [1e-12, 1e14] (alpha <= gamma: from 1e-5, where the return is not stiff);
+      no ``one_minus_eps``.
     * ``"highprec"``: mpmath Taylor series at ``digits`` digits (:mod:`restitution.core.highprec`),
       rounded to doubles; ``rtol`` of the result is 10^(1 - digits).
     * ``"closed-form"``: exact, for the linear spring-dashpot alpha = 1, gamma = 0 only.
@@ -78,7 +80,8 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
         from .core.highprec import reference_collision
         r = reference_collision(ex, None, omega, digits=digits)
         return Collision(ex.alpha, ex.gamma, float(r.omega), "forward", float(r.eps), float(r.tau_b),
-                         float(r.x_b), float(r.tau_c), float(r.x_c), r.end, 10.0 ** (1 - r.digits))
+                         float(r.x_b), float(r.tau_c), float(r.x_c), r.end, 10.0 ** (1 - r.digits),
+                         one_minus_eps=float(1 - r.eps))
     return _fast_collision(ex, omega, rtol)
 
 

@@ -87,7 +87,7 @@ def dashpot_collision(omega) -> Collision:
     eps = math.exp(-0.5 * tau_c)
     x_c = eps / omega
     return Collision(Fraction(1), Fraction(0), omega, "forward", eps, tau_b, x_b, tau_c, x_c,
-                     "force", 0.0, None)
+                     "force", 0.0, None, -math.expm1(-0.5 * tau_c))
 
 
 def dashpot_trajectory(tau, omega) -> tuple[np.ndarray, np.ndarray]:

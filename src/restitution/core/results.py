@@ -30,7 +30,9 @@ class Collision:
 
     ``end`` is "force" when contact ends where the total force vanishes
     (Omega x^(alpha-gamma) + x' = 0), "separation" when x returns to 0 first. ``rtol`` is the
-    tolerance the integration ran at (0.0 for a closed form).
+    tolerance the integration ran at (0.0 for a closed form). ``one_minus_eps`` is 1 - eps to
+    relative accuracy (from the dissipated energy, not by subtraction), None where the method does
+    not provide it.
     """
 
     alpha: Fraction
@@ -45,9 +47,13 @@ class Collision:
     end: str
     rtol: float
     trajectory: Trajectory | None = None
+    one_minus_eps: float | None = None
 
     def as_dict(self) -> dict:
-        return {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.end}
+        out = {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.end}
+        if self.one_minus_eps is not None:
+            out["one_minus_eps"] = float(self.one_minus_eps)
+        return out
 
 
 def _json_numbers(result, names) -> dict:
