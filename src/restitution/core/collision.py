@@ -36,6 +36,7 @@ from scipy.integrate import solve_ivp
 
 from .errors import ParameterError, number_in, require_positive_finite
 from .exponents import as_exponents
+from .energy import NEAR_ELASTIC, dissipated, one_minus_eps
 from .law import _ForceForm, _Law
 from .model import at_most_one
 from .results import Collision, InverseCollision, Trajectory
@@ -434,7 +435,7 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None) -> Collisi
         x_c = 0.0
     if not (0.0 < eps and math.isfinite(last.tau)):
         raise IntegrationError(f"unphysical end of contact: eps = {eps!r}, tau_c = {last.tau!r}")
-    loss = one_minus_eps(_dissipated(pieces, law), omega * x_c ** (law.alpha + 1.0) / (law.alpha + 1.0), eps)
+    loss = one_minus_eps(dissipated(pieces, law), omega * x_c ** (law.alpha + 1.0) / (law.alpha + 1.0), eps)
     if loss < NEAR_ELASTIC:
         # eps from 1 - eps: -x'(tau_c) carries an absolute error ~ rtol that would swamp so small
         # a loss (and could even exceed 1); the loss itself is accurate to about rtol relative
@@ -442,41 +443,6 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None) -> Collisi
     trajectory = _sample(pieces, t_eval, last.tau) if t_eval is not None else None
     return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
                      float(last.tau), float(x_c), end, rtol, trajectory, loss)
-
-
-#: Below this 1 - eps, eps is taken as 1 - (1 - eps) (see collide).
-NEAR_ELASTIC = 1e-3
-
-
-def one_minus_eps(dissipated: float, potential_end: float, eps: float) -> float:
-    """1 - eps without cancellation. The energy E = x'^2/2 + Omega x^(alpha+1)/(alpha+1) starts at
-    1/2 and loses dE/dtau = -x^gamma x'^2; at the end of contact E = eps^2/2 + U_c. So
-    1 - eps^2 = 2 (D + U_c) with D the dissipated energy and U_c the potential energy left at x_c,
-    both positive: 1 - eps = 2 (D + U_c) / (1 + eps)."""
-    return 2.0 * (dissipated + potential_end) / (1.0 + eps)
-
-
-_GAUSS_X, _GAUSS_W = np.polynomial.legendre.leggauss(10)
-
-
-def _dissipated(pieces: Sequence[_Piece], law: _Law) -> float:
-    """D = integral of x^gamma x'^2 dtau over the contact: Gauss-Legendre on every step of every
-    leg's dense output (tau legs: state (x, v); u legs, x = u^p: dtau = p u^(p-1) du / |v|, so the
-    integrand is p u^(q_gamma + p - 1) |v|)."""
-    total = 0.0
-    for piece in pieces:
-        ts = np.unique(np.clip(np.asarray(piece.sol.ts, dtype=float), piece.lo, piece.hi))
-        if ts.size < 2:
-            continue
-        mid, half = 0.5 * (ts[1:] + ts[:-1]), 0.5 * (ts[1:] - ts[:-1])
-        nodes = (mid[:, None] + half[:, None] * _GAUSS_X).ravel()
-        y = piece.sol(nodes)
-        if piece.in_u:
-            f = law.p * nodes ** (law.qg + law.p - 1) * np.abs(y[0])
-        else:
-            f = np.abs(y[0]) ** law.gamma * y[1] ** 2
-        total += float(np.sum(half[:, None] * _GAUSS_W * f.reshape(half.size, -1)))
-    return total
 
 
 def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,
