@@ -37,7 +37,8 @@ from restitution.core.exponents import as_exponents  # noqa: E402
 from restitution.fast.integrator import collide_fast  # noqa: E402
 from restitution.core.highprec import reference_collision  # noqa: E402
 from restitution.api import RELATIONS, Ladder  # noqa: E402
-from restitution.fast.calibration import Calibration, _relation_eps, build_calibration, pade_mp2011  # noqa: E402
+from restitution.core.connection import eps_from_connection  # noqa: E402
+from restitution.fast.calibration import Calibration, build_calibration, pade_mp2011  # noqa: E402
 from restitution.fast.master import MasterSettings  # noqa: E402
 
 SEED = 12345
@@ -152,8 +153,8 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
     # -- relations
     for name, r in cal.relations.items():
         c = r["c"]
-        row(name, "c0-c2", _time_per_point(lambda: _relation_eps(ex, big, c), n_fast, 3),
-            approx=_relation_eps(ex, omegas, c), note=r["source"])
+        row(name, "c0-c2", _time_per_point(lambda: eps_from_connection(ex, None, big, c), n_fast, 3),
+            approx=eps_from_connection(ex, None, omegas, c), note=r["source"])
     for name, why in cal.unavailable.items():
         log(f"  {name:18s} unavailable: {why}")
     if ex.alpha == as_exponents("3/2", "1/2").alpha and ex.gamma == as_exponents("3/2", "1/2").gamma:

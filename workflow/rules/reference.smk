@@ -6,7 +6,7 @@
 rule reference_trajectories:
     """Forward collision at g_figure, and its time-reversed, rescaled image (the inverse collision)."""
     input:
-        src=lib("core.collision", "core.model"),
+        src=lib("core.collision", "core.model", "core.connection"),
         code=code("reference_trajectories.py"),
     output:
         forward="results/{variant}/reference/forward.csv",

@@ -19,7 +19,6 @@ from common.latex import esc, fixed
 from common.pipeline import read_json, start, write_csv, write_json, write_text
 
 from restitution.audit import matching, readings
-from restitution.core.errors import ParameterError
 
 start(snakemake)
 
@@ -44,12 +43,7 @@ if p.readings != "all":
 # %% The procedure, reading by reading
 rows = []
 for r in readings:
-    try:
-        cc = matching.paper_procedure(alpha, gamma, r)
-        rows.append({**cc.as_dict(), "c": [cc.c0, cc.c1, cc.c2]})
-    except ParameterError as err:  # the procedure itself does not exist for these exponents
-        rows.append({"reading": r.label, "description": r.describe(), "defined": False,
-                     "reason": str(err), "c": [math.nan] * 3})
+    rows.append(matching.reading_row(alpha, gamma, r))
     print(f"{r.label}: {rows[-1]['c']} {rows[-1].get('reason', '')}")
 
 # %% The reading for figure 4

@@ -26,6 +26,16 @@ curves = pd.read_csv(snakemake.input.curves)
 errors = pd.read_csv(snakemake.input.errors, keep_default_na=False)
 
 
+def finish(fig, ax, xlabel, *, ncol, bottom):
+    """Axis labels, and the legend below the axes (inside, it covered a curve for some variants)."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=ncol, frameon=False,
+               title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
+    fig.tight_layout(rect=(0, bottom, 1, 1))
+    return fig
+
+
 def draw_eps_of_omega():
     """alpha - 1 - 2 gamma = 0: eps(Omega) on the validation grid, this material's Omega marked."""
     known = pd.read_csv(snakemake.input.known)
@@ -38,12 +48,7 @@ def draw_eps_of_omega():
     w = float(curves["omega"].iloc[0])
     ax.plot([w], [float(curves["eps_reference"].iloc[0])], "o", color="tab:red", ms=8,
             label=rf"this material: $\Omega = {w:.4g}$ for every $g$")
-    ax.set_xlabel(r"$\Omega$ (here independent of the impact speed)")
-    ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
-    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False,
-               title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
-    fig.tight_layout(rect=(0, 0.25, 1, 1))
-    return fig
+    return finish(fig, ax, r"$\Omega$ (here independent of the impact speed)", ncol=1, bottom=0.25)
 
 
 def draw_eps_of_g():
@@ -72,13 +77,7 @@ def draw_eps_of_g():
     ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 0.0), xycoords=("data", "axes fraction"), xytext=(3, 3),
                 textcoords="offset points", color="grey", fontsize=8.5)
     ax.set_xlim(curves["g"].min(), curves["g"].max())
-    ax.set_xlabel(r"impact speed $g$ (units of the $D_1$, $D_2$ fit)")
-    ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
-    # below the axes: inside, it covered a curve for some variants
-    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False,
-               title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
-    fig.tight_layout(rect=(0, 0.17, 1, 1))
-    return fig
+    return finish(fig, ax, r"impact speed $g$ (units of the $D_1$, $D_2$ fit)", ncol=2, bottom=0.17)
 
 
 # %%

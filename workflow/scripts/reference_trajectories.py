@@ -16,6 +16,7 @@ import pandas as pd
 from common.pipeline import start, write_csv, write_json
 
 from restitution.core.collision import collide, inverse_collide
+from restitution.core.connection import rebound_omega
 from restitution.core.errors import ParameterError
 from restitution.core.model import Material
 
@@ -42,7 +43,7 @@ eps = float(hit.eps)
 k = float(ex.gamma + 1)
 x_scale = eps ** (-1.0 / k)           # x~ = x_scale * x
 t_scale = eps ** (float(ex.gamma) / k)  # tau~ = t_scale * (tau_c - tau)
-omega_tilde = omega * eps ** float(ex.omega_exponent)
+omega_tilde = rebound_omega(ex, omega, eps)
 inv = pd.DataFrame({
     "tau_tilde": (hit.tau_c - fwd["tau"]) * t_scale,
     "x_tilde": fwd["x"] * x_scale,

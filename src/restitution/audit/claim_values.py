@@ -209,17 +209,10 @@ def reference_inputs(material_params: dict, settings: dict | None = None) -> dic
     curve = {"g": g, "omega": exact["omega"], "eps": exact["eps"], "omega_tilde": exact["omega_tilde"]}
     lo, hi = st["g_fit"]
     fit = connection.fit_connection(ex, None, np.sort(mat.omega(np.geomspace(lo, hi, int(st["points"])))), rtol=rtol)
-    x_tilde_c = fig.x_c * fig.eps ** (-1.0 / float(ex.gamma + 1))
+    x_tilde_c = connection.rebound_start(ex, fig.x_c, fig.eps)
     chosen = st["readings"] if st["readings"] is not None else readings.all_readings(
         x_tilde_c if 0 < x_tilde_c < 1 else None)
-    rows = []
-    for r in chosen:
-        try:
-            cc = matching.paper_procedure(ex, None, r)
-            rows.append({**cc.as_dict(), "c": [cc.c0, cc.c1, cc.c2]})
-        except ParameterError as err:
-            rows.append({"reading": r.label, "description": r.describe(), "defined": False,
-                         "reason": str(err), "c": [math.nan] * 3})
+    rows = [matching.reading_row(ex, None, r) for r in chosen]
     return {"at_figure": {"omega": omega_fig, "eps": fig.eps, "tau_b": fig.tau_b, "x_c": fig.x_c},
             "curve": curve, "fit": {**fit.as_dict(), "g_min": float(lo), "g_max": float(hi)},
             "readings": rows}
@@ -252,8 +245,8 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
     g_fig = float(st["g_figure"])
     omega_fig = float(at_figure["omega"])
     k = ex.omega_exponent
-    omega_t_fig = omega_fig * at_figure["eps"] ** float(k)
-    x_tilde_c_fig = at_figure["x_c"] * at_figure["eps"] ** (-1.0 / float(ex.gamma + 1))
+    omega_t_fig = connection.rebound_omega(ex, omega_fig, at_figure["eps"])
+    x_tilde_c_fig = connection.rebound_start(ex, at_figure["x_c"], at_figure["eps"])
 
     values: dict = {
         "alpha": str(ex.alpha), "gamma": str(ex.gamma), "D1": mat.D1, "D2": mat.D2,

@@ -27,7 +27,7 @@ from .readings import (C0_SEARCH_MAX, DT, D, Reading, U, W, WT, _check_gamma_for
                        a_sym, b_sym, reference_derivatives)
 
 __all__ = ["ConnectionCoefficients", "lowest_order_deltas", "printed_deltas", "symbolic_system",
-           "paper_procedure"]
+           "paper_procedure", "reading_row"]
 
 
 # ------------------------------------------------------------------------------------ the equations
@@ -186,6 +186,17 @@ def _solve_delta(expr, var, guess):
         return None
     roots = [(-B + sg * math.sqrt(disc)) / (2 * A) for sg in (1, -1)]
     return sp.Float(min(roots, key=lambda r: abs(r - guess)), 30)
+
+
+def reading_row(alpha, gamma, reading: Reading) -> dict:
+    """The procedure under one reading as a JSON-ready row with ``c``; where the procedure itself
+    does not exist for these exponents (ParameterError), a row that says why."""
+    try:
+        cc = paper_procedure(alpha, gamma, reading)
+    except ParameterError as err:
+        return {"reading": reading.label, "description": reading.describe(), "defined": False,
+                "reason": str(err), "c": [math.nan] * 3}
+    return {**cc.as_dict(), "c": [cc.c0, cc.c1, cc.c2]}
 
 
 def paper_procedure(alpha, gamma, reading: Reading | None = None, *, digits: int = 30) -> ConnectionCoefficients:

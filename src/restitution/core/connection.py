@@ -22,8 +22,18 @@ import numpy as np
 from .errors import ParameterError, require_positive_finite
 from .exponents import as_exponents
 
-__all__ = ["FitResult", "RetraceResult", "exact_omega_tilde", "fit_connection", "fit_quadratic",
+__all__ = ["FitResult", "RetraceResult", "rebound_omega", "rebound_start", "exact_omega_tilde", "fit_connection", "fit_quadratic",
            "eps_from_connection", "omega_tilde_from_c", "connection_validity", "retrace"]
+
+def rebound_omega(ex, omega, eps):
+    """Omega~ = Omega eps^((alpha-1-2gamma)/(gamma+1)): Omega with the rebound speed eps g for g."""
+    return omega * eps ** float(ex.omega_exponent)
+
+
+def rebound_start(ex, x_c, eps):
+    """x~_c = x_c eps^(-1/(gamma+1)): the end of contact in the inverse collision's own variables."""
+    return x_c * eps ** (-1.0 / float(ex.gamma + 1))
+
 
 def exact_omega_tilde(alpha, gamma, omegas, *, rtol: float = 1e-12) -> dict:
     """The true connection from the reference integrator.
@@ -37,10 +47,9 @@ def exact_omega_tilde(alpha, gamma, omegas, *, rtol: float = 1e-12) -> dict:
     ex = as_exponents(alpha, gamma)
     omegas = np.asarray(omegas, dtype=float)
     res = collide_many(ex, None, omegas, rtol=rtol)
-    k = float(ex.omega_exponent)
     eps = res["eps"]
-    return {"omega": omegas, "omega_tilde": omegas * eps ** k, "eps": eps, "x_c": res["x_c"],
-            "x_tilde_c": res["x_c"] * eps ** (-1.0 / float(ex.gamma + 1)), "tau_b": res["tau_b"],
+    return {"omega": omegas, "omega_tilde": rebound_omega(ex, omegas, eps), "eps": eps, "x_c": res["x_c"],
+            "x_tilde_c": rebound_start(ex, res["x_c"], eps), "tau_b": res["tau_b"],
             "x_b": res["x_b"], "tau_c": res["tau_c"], "end": res["end"]}
 
 
@@ -208,7 +217,7 @@ def retrace(alpha, gamma, omega, *, rtol: float = 1e-12, samples: int = 201) -> 
     fwd = collide(ex, None, omega, rtol=rtol)
     gp1 = float(ex.gamma + 1)
     s = fwd.eps ** (1.0 / gp1)
-    omega_t = omega * fwd.eps ** float(ex.omega_exponent)
+    omega_t = rebound_omega(ex, omega, fwd.eps)
     x_start = fwd.x_c / s
     # common samples strictly inside the contact, forward time
     tau = np.linspace(0.0, fwd.tau_c, samples)

@@ -15,7 +15,7 @@ from typing import Callable
 
 import numpy as np
 
-from ..core.connection import fit_quadratic
+from ..core.connection import eps_from_connection, fit_quadratic, rebound_omega
 from ..core.exponents import Exponents, as_exponents
 from .master import MasterCurve, MasterSettings, build_master, reference_eps
 
@@ -33,14 +33,6 @@ FIT_OMEGA = (0.1, 3.0, 41)
 #: itself. They are consistent with the exact expansion: the v^2 term is -C1, the v^3 term vanishes
 #: (b3 = a b2 to 6 digits) and the v^4 term is C2 = (3/5) C1^2 to 6 digits (checked in the tests).
 MUELLER_POESCHEL_PADE = {"a": 0.501086, "b2": 1.15345, "b3": 0.577977, "b4": 0.532178}
-
-
-def _relation_eps(ex: Exponents, omega: np.ndarray, c) -> np.ndarray:
-    """eps from Omega~ = c0 + c1 Omega + c2 Omega^2 (NaN where Omega~ <= 0)."""
-    k = float(ex.omega_exponent)
-    wt = c[0] + c[1] * omega + c[2] * omega * omega
-    with np.errstate(invalid="ignore", divide="ignore"):
-        return np.where(wt > 0, (wt / omega) ** (1.0 / k), np.nan)
 
 
 def pade_mp2011(omega) -> np.ndarray:
@@ -74,7 +66,7 @@ def _fitted_c(ex: Exponents, progress) -> tuple:
     om = np.geomspace(lo, hi, n)
     try:
         eps = reference_eps(ex, None, om, 1e-13)
-        fit = fit_quadratic(om, om * eps ** float(ex.omega_exponent))
+        fit = fit_quadratic(om, rebound_omega(ex, om, eps))
     except Exception as exc:  # noqa: BLE001 - a rung that cannot be built is reported, not fatal
         raise RelationUnavailable(f"fit failed: {exc}") from exc
     return fit.c, f"least squares on Omega in [{lo}, {hi}], {n} points"
@@ -133,7 +125,7 @@ def build_calibration(alpha, gamma, settings: MasterSettings | None = None, prog
     grid = 10.0 ** master.grid_log10_omega
     ref = master.grid_eps
     rel, missing = _relations_for(ex, relations, say)
-    profiles = {name: _rel_err(_relation_eps(ex, grid, r["c"]), ref) for name, r in rel.items()}
+    profiles = {name: _rel_err(eps_from_connection(ex, None, grid, r["c"]), ref) for name, r in rel.items()}
     if ex.alpha == Fraction(3, 2) and ex.gamma == Fraction(1, 2):
         profiles["pade-mp2011"] = _rel_err(pade_mp2011(grid), ref)
     else:

@@ -19,12 +19,14 @@ pade-mp2011      (cal)  Mueller & Poeschel's Pade form in           alpha=3/2, g
 viscous          (cal)  small-Omega expansion (asymptotics)         Omega <= 1e-3                  ~2e-8 s
 elastic          (cal)  large-Omega expansion (asymptotics)         Omega >= 1e2                   ~3e-8 s
 closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma; alpha=1,gamma=0   5e-7 s
-                        linear spring-dashpot (restitution.core.dashpot)                                5e-6 s
+                        linear spring-dashpot (core.dashpot)                                       5e-6 s
 master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
-integrator              compiled DOP853 (restitution.fast.integrator),         Omega in [1e-12, 1e14]         2e-5 to
-                        rtol from tol                               (alpha<=gamma: >= 1e-5)        7e-5 s
-reference               restitution.core.collision.collide (scipy)       all                            ~1e-2 s
-highprec                restitution.core.highprec (mpmath Taylor)        all (alpha<=gamma: >= 1e-3)    ~0.3 s
+integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-12, 1e14]         2e-5 to
+                        from tol                                    (alpha<=gamma: >= 1e-5)        7e-5 s
+reference               core.collision.collide (scipy)              all                            ~1e-2 s
+highprec                core.highprec (mpmath Taylor)               all (alpha<=gamma: >= 1e-3)    0.15 s and
+                                                                                                   more at small
+                                                                                                   Omega
 ======================  =========================================  ============================  ========
 
 Bounds:
@@ -60,8 +62,9 @@ from . import cache as _cache
 from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
 from ..core.exponents import Exponents, as_exponents
+from ..core.connection import eps_from_connection
 from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
-                          _relation_eps, _viscous_eval, build_calibration, pade_mp2011)
+                          _viscous_eval, build_calibration, pade_mp2011)
 from .master import MASTER_VERSION, MasterCurve, MasterSettings, integrator_bound, reference_eps, stiff_omega_min
 
 __all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE"]
@@ -124,8 +127,7 @@ TOL_FLOOR = 2.3e-16
 
 def _check_tol(tol) -> float:
     # Refuse an unreachable tolerance at once, before any master curve is built for nothing.
-    t = number_in("tol", tol, TOL_FLOOR, 1.0, hi_open=True, why="no method returns a double closer than that")
-    return t
+    return number_in("tol", tol, TOL_FLOOR, 1.0, hi_open=True, why="no method returns a double closer than that")
 
 
 # ------------------------------------------------------------------------------------------ rungs
@@ -346,7 +348,7 @@ class Ladder:
             cost = COST["pade"]
         else:
             c = cal.relations[name]["c"]
-            run = lambda om, c=c: _relation_eps(ex, om, c)  # noqa: E731
+            run = lambda om, c=c: eps_from_connection(ex, None, om, c)  # noqa: E731
             cost = COST["relation"]
         reason = "" if math.isfinite(b) else "no finite measured error over these Omegas (outside the grid or the relation breaks down)"
         return _Quote(name, b, cost * n, "c0-c2" if name != "pade-mp2011" else "", reason=reason, run=run)
