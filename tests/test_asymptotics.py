@@ -57,6 +57,50 @@ def test_gamma_one_constants_match_tanh_solution():
     assert V.K0 == pytest.approx(k0, rel=1e-12)
 
 
+@pytest.mark.parametrize("alpha,gamma", FORCE_CASES + [("2", "3/2")])
+def test_damped_constants_closed_forms_equal_their_quadratures(alpha, gamma):
+    """B and K0 in digamma form against the defining quadratures of the damped-only motion."""
+    ex = as_exponents(alpha, gamma)
+    a, n = float(ex.alpha), float(ex.gamma) + 1
+    X, lam, B, K0 = asy._damped_constants(ex.alpha, ex.gamma)
+    with mpmath.workdps(40):   # X in 40 digits, so that 1 - G(y) vanishes at y = X as it must
+        n_, a_ = mpmath.mpf(ex.gamma.numerator) / ex.gamma.denominator + 1, mpmath.mpf(a)
+        X_ = n_ ** (1 / n_)
+        lam_ = X_ ** (n_ - 1)
+        # in d = X - y, with 1 - G(X - d) = -expm1(n log1p(-d/X)): no cancellation as d -> 0
+        one_minus_G = lambda d: -mpmath.expm1(n_ * mpmath.log1p(-d / X_))  # noqa: E731
+        lnB = mpmath.log(X_) + mpmath.quad(lambda d: lam_ / one_minus_G(d) - 1 / d, [0, X_ / 2, X_])
+        k0 = mpmath.quad(lambda d: (X_ ** a_ - (X_ - d) ** a_) / one_minus_G(d), [0, X_ / 2, X_])
+        lnB, k0 = float(lnB), float(k0)
+    assert B == pytest.approx(math.exp(lnB), rel=1e-13)
+    assert K0 == pytest.approx(k0, rel=1e-13)
+
+
+def test_paper_exponents_viscous_constants_are_elementary():
+    """alpha = 3/2, gamma = 1: c_log = 2^(1/4)/2, c_const = (2^(1/4)/4)((9/2) ln 2 + pi/2 - 5)."""
+    V = asy.viscous_limit("3/2", "1")
+    q = 2 ** 0.25
+    assert V.c_log == pytest.approx(q / 2, rel=1e-15)
+    assert V.L == pytest.approx(3.5 * math.log(2), rel=1e-14)
+    assert V.K0 == pytest.approx(q * (4 - math.pi / 2 - math.log(2)), rel=1e-14)
+    assert V.c_const == pytest.approx(q / 4 * (4.5 * math.log(2) + math.pi / 2 - 5), rel=1e-13)
+
+
+@pytest.mark.parametrize("alpha,gamma", [("3/2", "1"), ("3/2", "1/2"), ("1", "0"), ("2", "1")])
+def test_viscous_correction_constant_extracted_from_the_integrator(alpha, gamma):
+    """c_const from data alone: c(Omega) = (1 - eps/(k Omega))/Omega - c_log ln(1/Omega) fitted by
+    c_const + Omega (a L^2 + b L + c) + Omega^2 (d L^4 + e L^3 + f L^2) on Omega in [1e-6, 1e-3]
+    (eps to ~1e-14, so c(Omega) to ~1e-8 at the smallest Omega); the derived constant within 1e-8."""
+    V = asy.viscous_limit(alpha, gamma)
+    om = np.geomspace(1e-6, 1e-3, 25)
+    L = np.log(1 / om)
+    c = (1 - ref(alpha, gamma, om)[:, 0] / (V.k * om)) / om - V.c_log * L
+    M = np.vstack([np.ones_like(om), om * L * L, om * L, om, om * om * L ** 4, om * om * L ** 3,
+                   om * om * L * L]).T
+    fitted = np.linalg.lstsq(M, c, rcond=None)[0][0]
+    assert abs(fitted - V.c_const) < 1e-8
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("alpha,gamma", FORCE_CASES)
 def test_viscous_leading_constant(alpha, gamma):

@@ -34,10 +34,14 @@ and J(tau_c) = X^alpha tau_c - K0 + O(Omega tau_c^2), K0 = int_0^inf (X^alpha - 
     eps = k Omega [1 - Omega (c_log ln(1/Omega) + c_const)] + O(Omega^3 ln^2 Omega),
     c_log = 2 r k,   c_const = r (k L - K0 - k),
 
-with B and K0 single quadratures of the damped-only motion (closed forms: gamma = 0 gives X = B = 1,
-K0 = H_alpha (harmonic number); gamma = 1 gives X = lambda = sqrt 2, B = 2 sqrt 2).
-gamma = 0 needs no separate formula, but it is the one case where x0 = 1 - exp(-tau) is elementary
-for every alpha, so it is the closed-form check of the quadratures.
+with B and K0 in closed form (psi = digamma, n = gamma + 1; derived in _damped_constants):
+
+    ln B = ln X - gamma_E - psi(1/n) - ln n,   K0 = X^(alpha+1) [psi((alpha+1)/n) - psi(1/n)] / n.
+
+gamma = 0 gives X = B = 1, K0 = H_alpha (harmonic number); gamma = 1 gives X = lambda = sqrt 2,
+B = 2 sqrt 2. For the paper's alpha = 3/2, gamma = 1 everything is elementary:
+k = 2^(1/4), c_log = 2^(1/4)/2, L = (7/2) ln 2, K0 = 2^(1/4) (4 - pi/2 - ln 2) and
+c_const = (2^(1/4)/4) ((9/2) ln 2 + pi/2 - 5).
 
 alpha = gamma. Then f = Omega + x' and f' = -x^gamma f exactly: the force never vanishes and contact
 ends at x = 0. Over the whole contact, with J = int_0^tau_c x^gamma = int_0^tau_c x^alpha,
@@ -173,36 +177,25 @@ class ViscousLimit:
                 "lambda": self.lam, "B": self.B, "K0": self.K0, "L": self.L}
 
 
-def _one_minus_G(d: float, X: float, g1: float) -> float:
-    """1 - G(X - d) without cancellation: G(X) = 1, so 1 - G = -expm1(g1 log1p(-d/X))."""
-    return -math.expm1(g1 * math.log1p(-d / X))
-
-
 @lru_cache(maxsize=64)
 def _damped_constants(alpha: Fraction, gamma: Fraction) -> tuple[float, float, float, float]:
-    """X, lambda, B, K0 of the damped-only motion x0' = 1 - G(x0) (quadratures in d = X - x)."""
-    g1 = float(gamma) + 1.0
+    """X, lambda, B, K0 of the damped-only motion x0' = 1 - G(x0), in closed form.
+
+    With x = X s and t = s^(gamma+1) both defining quadratures become Euler integrals
+    int_0^1 (t^(p-1) - t^(q-1))/(1 - t) dt = psi(q) - psi(p) (n = gamma + 1, psi = digamma):
+
+        ln B = ln X + int_0^1 [n/(1 - s^n) - 1/(1 - s)] ds = ln X - gamma_E - psi(1/n) - ln n,
+        K0   = X^(alpha+1) int_0^1 (1 - s^alpha)/(1 - s^n) ds = X^(alpha+1) [psi((alpha+1)/n) - psi(1/n)] / n.
+
+    (tests/test_asymptotics.py checks both against the quadratures to 1e-13.)
+    """
+    n = float(gamma) + 1.0
     a = float(alpha)
-    X = g1 ** (1.0 / g1)
+    X = n ** (1.0 / n)
     lam = X ** float(gamma)
-
-    # ln B = ln X + int_0^X [lambda/(1 - G(y)) - 1/(X - y)] dy   (y = X - d)
-    def b_integrand(d):
-        if d <= 0.0:
-            # limit d -> 0: 1 - G ~ lam d - gamma X^(gamma-1) d^2 / 2 ... gives a finite value
-            return float(gamma) / (2.0 * X)
-        return lam / _one_minus_G(d, X, g1) - 1.0 / d
-
-    # K0 = int_0^X (X^alpha - y^alpha) / (1 - G(y)) dy
-    def k_integrand(d):
-        if d <= 0.0:
-            return a * X ** (a - 1.0) / lam
-        return -X ** a * math.expm1(a * math.log1p(-d / X)) / _one_minus_G(d, X, g1)
-
-    opts = dict(epsabs=1e-15, epsrel=1e-13, limit=400)
-    ib, _ = integrate.quad(b_integrand, 0.0, X, **opts)
-    ik, _ = integrate.quad(k_integrand, 0.0, X, **opts)
-    return X, lam, X * math.exp(ib), ik
+    B = X * math.exp(-np.euler_gamma - special.digamma(1.0 / n) - math.log(n))
+    K0 = X ** (a + 1.0) * (special.digamma((a + 1.0) / n) - special.digamma(1.0 / n)) / n
+    return X, lam, float(B), float(K0)
 
 
 @lru_cache(maxsize=64)
