@@ -126,9 +126,14 @@ def test_forced_method(kim):
     with pytest.raises(ParameterError) as exc:
         kim.evaluate(np.array([0.1, 1.0]), tol=1e-6, method="paper-c")
     assert exc.value.field == "tol"
-    with pytest.raises(ParameterError) as exc:
+    with pytest.raises(ParameterError) as exc:   # the uniform form exists, but its bound is ~1e-5
         kim.evaluate(np.array([0.1]), tol=1e-6, method="closed-form")
-    assert exc.value.field == "method"
+    assert exc.value.field == "tol" and "closed-form" in str(exc.value)
+    with pytest.raises(ParameterError) as exc:   # outside the range its bound was measured on
+        kim.evaluate(np.array([1e-9]), method="closed-form", tol=None)
+    assert exc.value.field == "method" and "1e-08" in str(exc.value)
+    r = kim.evaluate(np.array([0.1]), method="closed-form", tol=None)   # no tol: its own bound
+    assert r.method == "closed-form" and r.tol is None and 0 < r.error_bound <= 1e-4
 
 
 def test_a_million_speeds_well_under_a_second(kim):

@@ -34,7 +34,7 @@ class Ladder(_ladder.Ladder):
         super().__init__(alpha, gamma, **kwargs)
 
 
-def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 1e-9,
+def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | None = 1e-9,
             method: str | None = None, build: bool | None = None) -> EpsResult:
     """Coefficient of restitution to a relative tolerance ``tol`` by the cheapest adequate rung of
     the full ladder (see :func:`restitution.fast.ladder.epsilon` for the arguments and result)."""

@@ -83,9 +83,10 @@ def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
     p.add_argument("--D1", type=number_argument, help="elastic constant D1 > 0 (with --D2 and --g)")
     p.add_argument("--D2", type=number_argument, help="dissipative constant D2 > 0")
     p.add_argument("--g", type=number_argument, nargs="+", metavar="V", help="impact speed(s) g > 0")
-    p.add_argument("--tol", type=number_argument, default=1e-9, help="relative tolerance in (0, 1) (default 1e-9)")
+    p.add_argument("--tol", type=number_argument, default=None,
+                   help="relative tolerance in (0, 1) (default 1e-9; with --method and no --tol, that method's own bound)")
     p.add_argument("--method", default=None,
-                   help="force one rung of the ladder (it must still meet --tol), e.g. master, integrator")
+                   help="force one rung of the ladder (it must meet --tol if given), e.g. closed-form, master, integrator")
     p.add_argument("--no-build", action="store_true",
                    help="never build the master curve; use only methods that need nothing cached")
     p.add_argument("--json", action="store_true", help="machine-readable output")
@@ -101,7 +102,8 @@ def run_eps(args, out) -> None:
     if args.omega is None and any(v is None for v in physical):
         missing = next(n for n, v in zip(("--D1", "--D2", "--g"), physical) if v is None)
         raise ParameterError(missing.lstrip("-"), None, "give --omega, or all of --D1 --D2 --g")
-    kwargs = dict(alpha=args.alpha, gamma=args.gamma, tol=args.tol, method=args.method,
+    tol = 1e-9 if args.tol is None and args.method is None else args.tol
+    kwargs = dict(alpha=args.alpha, gamma=args.gamma, tol=tol, method=args.method,
                   build=False if args.no_build else None)
     if args.omega is not None:
         res = epsilon(omega=args.omega, **kwargs)
@@ -109,12 +111,13 @@ def run_eps(args, out) -> None:
         res = epsilon(g=args.g, D1=args.D1, D2=args.D2, **kwargs)
     eps = [float(e) for e in res.eps.ravel()]
     if args.json:
-        json.dump({"eps": eps, "method": res.method, "error_bound": float(res.error_bound)}, out,
+        extra = {} if res.coefficients is None else {"coefficients": res.coefficients}
+        json.dump({"eps": eps, "method": res.method, "error_bound": float(res.error_bound), **extra}, out,
                   separators=(", ", ": "))
         out.write("\n")
         return
     out.write(f"method {res.method} ({res.setting or 'no setting'}), relative error bound "
-              f"{res.error_bound:.3g} (tol {res.tol:.3g})\n")
+              f"{res.error_bound:.3g}" + ("" if res.tol is None else f" (tol {res.tol:.3g})") + "\n")
     out.write(f"{'Omega':>22}  {'eps':>22}\n")
     for w, e in zip(res.omega.ravel(), eps):
         out.write(f"{w:22.15g}  {e:22.15g}\n")

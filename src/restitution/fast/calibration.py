@@ -17,13 +17,15 @@ import numpy as np
 
 from ..core.connection import eps_from_connection, fit_quadratic, rebound_omega
 from ..core.exponents import Exponents, as_exponents
+from ..core.uniform import UniformForm
 from .master import MasterCurve, MasterSettings, build_master, reference_eps
+from .uniform_build import build_uniform
 
 __all__ = ["Calibration", "Relation", "RelationUnavailable", "FITTED_C", "build_calibration", "pade_mp2011",
            "MUELLER_POESCHEL_PADE", "CALIBRATION_VERSION"]
 
 #: Version of the calibration bundle (master curve + profiles); bump to invalidate caches.
-CALIBRATION_VERSION = 2
+CALIBRATION_VERSION = 3
 #: Omega range of the c0-c2 fit (the claims ledger fits the paper's material over g in [0.01, 1],
 #: i.e. Omega in [0.098, 3.1]).
 FIT_OMEGA = (0.1, 3.0, 41)
@@ -100,12 +102,14 @@ class Calibration:
     profiles: dict            # rung -> np.ndarray of relative errors on master.grid_log10_omega
     relations: dict           # rung -> {"c": [c0, c1, c2], "source": str}
     unavailable: dict         # rung -> reason
+    uniform: UniformForm | None = None   # the uniform closed form (alpha > gamma)
 
     def as_dict(self) -> dict:
         return {"version": CALIBRATION_VERSION, "master": self.master.as_dict(),
                 "profiles": {k: [None if not np.isfinite(x) else float(x) for x in v]
                              for k, v in self.profiles.items()},
-                "relations": self.relations, "unavailable": self.unavailable}
+                "relations": self.relations, "unavailable": self.unavailable,
+                "uniform": None if self.uniform is None else self.uniform.as_dict()}
 
     @classmethod
     def from_dict(cls, d: dict) -> "Calibration":
@@ -113,7 +117,9 @@ class Calibration:
             raise ValueError("calibration version mismatch")
         prof = {k: np.array([np.inf if x is None else x for x in v], dtype=float)
                 for k, v in d["profiles"].items()}
-        return cls(MasterCurve.from_dict(d["master"]), prof, d["relations"], d["unavailable"])
+        uni = d.get("uniform")
+        return cls(MasterCurve.from_dict(d["master"]), prof, d["relations"], d["unavailable"],
+                   None if uni is None else UniformForm.from_dict(uni))
 
 
 def build_calibration(alpha, gamma, settings: MasterSettings | None = None, progress=None,
@@ -132,7 +138,8 @@ def build_calibration(alpha, gamma, settings: MasterSettings | None = None, prog
         missing["pade-mp2011"] = "the Pade form is for alpha = 3/2, gamma = 1/2 only"
     profiles["viscous"] = _rel_err(_viscous_eval(master, grid), ref)
     profiles["elastic"] = _rel_err(master.elastic.eps(grid, 2), ref)
-    return Calibration(master, profiles, rel, missing)
+    uniform = build_uniform(ex, None, say) if ex.alpha > ex.gamma else None
+    return Calibration(master, profiles, rel, missing, uniform)
 
 
 def _viscous_eval(master: MasterCurve, om: np.ndarray) -> np.ndarray:

@@ -19,7 +19,9 @@ pade-mp2011      (cal)  Mueller & Poeschel's Pade form in           alpha=3/2, g
 viscous          (cal)  small-Omega expansion (asymptotics)         Omega <= 1e-3                  ~2e-8 s
 elastic          (cal)  large-Omega expansion (asymptotics)         Omega >= 1e2                   ~3e-8 s
 closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma; alpha=1,gamma=0   5e-7 s
-                        linear spring-dashpot (core.dashpot)                                       5e-6 s
+                        linear spring-dashpot (core.dashpot);                                      5e-6 s
+                 (cal)  otherwise the uniform form (core.uniform)   alpha>gamma, Omega in          ~1e-7 s
+                                                                    [1e-8, 1e8]
 master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
 integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-12, 1e14]         2e-5 to
                         from tol                                    (alpha<=gamma: >= 1e-5)        7e-5 s
@@ -38,7 +40,8 @@ Bounds:
 * integrator: INTEGRATOR_BOUND_FACTOR rtol + INTEGRATOR_BOUND_FLOOR (validated against mpmath);
 * reference: 10 rtol + 1e-13 (validated against mpmath); highprec: 10^(1 - digits), at least the
   2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
-* closed-form: 2e-14 (validated against mpmath).
+* closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
+  (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
 Choice: among rungs whose domain holds every input and whose bound over the inputs is <= tol, the
 least expected time (setup + n x cost). The calibration bundle is built (seconds, cached on disk) only
@@ -72,7 +75,7 @@ __all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_PO
 #: Profile bounds are SAFETY times the largest measured error at the bracketing grid points.
 SAFETY = 3.0
 #: Rough seconds per point (measured by benchmarks/speed_accuracy.py on one core).
-COST = {"relation": 2e-8, "pade": 2e-8, "viscous": 2e-8, "elastic": 3e-8, "closed-equal": 5e-7,
+COST = {"relation": 2e-8, "pade": 2e-8, "viscous": 2e-8, "elastic": 3e-8, "closed-equal": 5e-7, "uniform": 1e-7,
         "closed-dashpot": 5e-6, "master": 4e-8, "integrator": 6e-5, "reference": 1e-2, "highprec": 0.4}
 #: Rough seconds to build a calibration bundle that is not cached.
 BUILD_COST = {"alpha>gamma": 15.0, "alpha<=gamma": 30.0}
@@ -97,6 +100,7 @@ class EpsResult:
     tol: float
     setting: str = ""
     candidates: tuple = ()
+    coefficients: dict | None = None   # the closed form's numbers, when that rung answered
 
     def __array__(self, dtype=None, copy=None):
         return np.asarray(self.eps, dtype=dtype)
@@ -104,7 +108,8 @@ class EpsResult:
     def as_dict(self) -> dict:
         return {"eps": np.asarray(self.eps, float).ravel().tolist(), "method": self.method,
                 "error_bound": float(self.error_bound), "alpha": str(self.alpha), "gamma": str(self.gamma),
-                "tol": self.tol, "setting": self.setting}
+                "tol": self.tol, "setting": self.setting,
+                **({} if self.coefficients is None else {"coefficients": self.coefficients})}
 
 
 # ------------------------------------------------------------------------------------------ helpers
@@ -121,6 +126,8 @@ def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
     return arr
 
 
+#: Tolerance when none is given (and no method is forced).
+DEFAULT_TOL = 1e-9
 #: No method returns a double closer than this to the true eps (rounding of the result itself).
 TOL_FLOOR = 2.3e-16
 
@@ -140,6 +147,7 @@ class _Quote:
     reason: str = ""
     needs_cal: bool = False
     run: Callable | None = None
+    coefficients: dict | None = None
 
 
 def _calibrated_names(relations) -> list[str]:
@@ -164,6 +172,17 @@ def _spot_checks_pass(ex: Exponents, m: MasterCurve) -> bool:
     ref = reference_eps(ex, None, om, 1e-13)
     err = np.abs(m.eps(om) - ref) / ref
     return bool(np.all(err <= 10.0 * (m.bound_at(om) + integrator_bound(1e-13))))
+
+
+def _uniform_checks_pass(ex: Exponents, u) -> bool:
+    """The stored uniform form is there exactly when it should be and meets its bound at a few points."""
+    if u is None:
+        return not ex.alpha > ex.gamma
+    if (u.alpha, u.gamma) != (ex.alpha, ex.gamma) or not 0 < u.bound_eps < 1:
+        return False
+    om = np.geomspace(1e-7, 1e7, 8) * 1.37
+    ref = reference_eps(ex, None, om, 1e-13)
+    return bool(np.all(np.abs(u.eps(om) / ref - 1) <= u.bound_eps))
 
 
 def _viscous_domain(ex: Exponents, omega_max: float) -> str | None:
@@ -200,7 +219,8 @@ class Ladder:
             return False
         m = cal.master
         return (m.alpha == self.ex.alpha and m.gamma == self.ex.gamma and m.settings == self.settings
-                and bool(np.all(np.isfinite(m.coef))) and _spot_checks_pass(self.ex, m))
+                and bool(np.all(np.isfinite(m.coef))) and _spot_checks_pass(self.ex, m)
+                and _uniform_checks_pass(self.ex, cal.uniform))
 
     def cached_calibration(self) -> Calibration | None:
         if self._cal is None:
@@ -273,12 +293,16 @@ class Ladder:
         # closed forms
         if ex.alpha == ex.gamma:
             out.append(_Quote("closed-form", 2e-14, COST["closed-equal"] * n, "alpha = gamma",
-                              run=lambda om: asy.equal_exponents_eps(om)))
+                              run=lambda om: asy.equal_exponents_eps(om),
+                              coefficients={"exact": "alpha = gamma (restitution.core.asymptotics.equal_exponents_eps)"}))
         elif ex.alpha == 1 and ex.gamma == 0:
             out.append(_Quote("closed-form", 2e-14, COST["closed-dashpot"] * n, "spring-dashpot",
-                              run=_dashpot_eps))
+                              run=_dashpot_eps, coefficients={"exact": "linear spring-dashpot (restitution.core.dashpot)"}))
+        elif not big:
+            out.append(_Quote("closed-form", math.inf, 0.0, reason="alpha < gamma: the viscous limit's first "
+                              "correction, which the uniform form needs, is not known in closed form"))
         else:
-            out.append(_Quote("closed-form", math.inf, 0.0, reason="only for alpha = gamma or alpha=1, gamma=0"))
+            out.append(self._uniform_quote(cal, lo, hi, n))
 
         # compiled integrator
         wmin = stiff_omega_min(ex, None)
@@ -310,6 +334,18 @@ class Ladder:
             out.append(_Quote("highprec", max(10.0 ** (1 - digits), TOL_FLOOR), _highprec_cost(omega, digits),
                               f"digits={digits}", run=lambda om, d=digits: _highprec_eps(ex, om, d, self.stream)))
         return out
+
+    def _uniform_quote(self, cal: Calibration | None, lo: float, hi: float, n: int) -> _Quote:
+        from ..core.uniform import FORM_RANGE
+        if lo < FORM_RANGE[0] or hi > FORM_RANGE[1]:
+            return _Quote("closed-form", math.inf, 0.0,
+                          reason=f"Omega outside [{FORM_RANGE[0]:g}, {FORM_RANGE[1]:g}] (where its bound was measured)")
+        if cal is None:
+            return _Quote("closed-form", math.nan, COST["uniform"] * n,
+                          reason="needs the calibration bundle (not built yet)", needs_cal=True)
+        u = cal.uniform
+        return _Quote("closed-form", u.bound_eps, COST["uniform"] * n, "uniform form", run=u.eps,
+                      coefficients={**u.coefficients(), "bound_one_minus_eps": u.bound_one_minus_eps})
 
     def _cal_quote(self, cal: Calibration, name: str, omega, lo10, hi10, n) -> _Quote:
         ex = self.ex
@@ -354,9 +390,12 @@ class Ladder:
         return _Quote(name, b, cost * n, "c0-c2" if name != "pade-mp2011" else "", reason=reason, run=run)
 
     # -- the choice
-    def evaluate(self, omega, *, tol: float = 1e-9, method: str | None = None, build: bool | None = None) -> EpsResult:
+    def evaluate(self, omega, *, tol: float | None = DEFAULT_TOL, method: str | None = None, build: bool | None = None) -> EpsResult:
         om = _omega_array(omega)
-        tol = _check_tol(tol)
+        # A forced method without a tolerance answers with its own bound (tol only sets the
+        # integrators' settings then); otherwise the default tolerance applies.
+        checked = tol is not None or method is None
+        tol = _check_tol(DEFAULT_TOL if tol is None else tol)
         if build is not None and not isinstance(build, bool):   # build="no" is truthy: it would build
             raise ParameterError("build", build, "must be True, False or None")
         if method is not None and method not in self.rung_names:
@@ -372,7 +411,7 @@ class Ladder:
             q = next(q for q in quotes if q.name == method)
             if q.run is None:
                 raise ParameterError("method", method, f"not available here: {q.reason or 'needs the calibration'}")
-            if not q.bound <= tol:
+            if checked and not q.bound <= tol:
                 raise ParameterError("tol", tol, f"method {method} has bound {q.bound:.3g} over these Omegas")
             chosen = q
         else:
@@ -391,7 +430,7 @@ class Ladder:
         table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(chosen.bound), om, self.ex.alpha,
-                         self.ex.gamma, tol, chosen.setting, table)
+                         self.ex.gamma, tol if checked else None, chosen.setting, table, chosen.coefficients)
 
     def _building_pays(self, quotes, tol: float, n: int) -> bool:
         """Build the calibration when nothing else meets tol, or when it is cheaper overall."""
@@ -445,7 +484,7 @@ def _ladder(ex: Exponents, relations) -> Ladder:
     return _LADDERS[key]
 
 
-def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 1e-9,
+def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | None = DEFAULT_TOL,
             method: str | None = None, build: bool | None = None,
             relations: tuple[Relation, ...] = (FITTED_C,)) -> EpsResult:
     """Coefficient of restitution to a relative tolerance ``tol``, by the cheapest adequate method.
@@ -454,7 +493,8 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 
     material constants ``D1``, ``D2`` (Omega = D1 g^((alpha-1-2gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1))).
     Returns an :class:`EpsResult`: ``.eps`` (numpy array shaped like the input), ``.method``,
     ``.error_bound`` (relative, over all inputs), ``.candidates`` (the chooser's table).
-    ``method`` forces a rung (it must still meet ``tol``); ``build`` = False never builds the
+    ``method`` forces a rung (it must still meet ``tol``, unless ``tol`` is None: then it answers
+    with whatever bound it has); ``build`` = False never builds the
     calibration bundle, True always does, None (default) builds it when that pays.
     ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's).
     Raises ParameterError for bad input and for a tolerance no rung meets.
