@@ -107,3 +107,10 @@ def test_cli_refuses_closed_form_for_alpha_below_gamma(capsys):
     assert main(["eps", "--alpha", "1", "--gamma", "3/2", "--omega", "0.3", "--method", "closed-form"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "alpha < gamma" in err[0]
+
+
+def test_printed_digits_reproduce_the_form(form):
+    """Twelve significant digits of every number (what the manuscript prints) keep eps within 1e-9."""
+    om = np.geomspace(*FORM_RANGE, 400)
+    assert np.max(np.abs(form.rounded(12).eps(om) / form.eps(om) - 1)) < 1e-9
+    assert np.max(np.abs(form.rounded(3).eps(om) / form.eps(om) - 1)) > 1e-6   # the check can fail

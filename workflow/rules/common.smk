@@ -224,6 +224,9 @@ def variant_outputs(name):
         f"results/{name}/validation/validation.json",
         f"results/{name}/values/values.tex",
         f"results/{name}/values/values.json",
+        f"results/{name}/closed_form/form.json",
+        f"results/{name}/closed_form/errors.csv",
+        f"results/{name}/closed_form/eps_g.csv",
     ]
     out += [f"results/{name}/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
     if name == MAIN:  # the tolerance study is printed for the main variant only
@@ -247,6 +250,7 @@ def all_outputs_but_pdf():
             "results/paper/validation.tex", "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
     out += STABILITY_OUTPUTS
     out += ["results/paper/bench_table.tex", "results/paper/bench_pareto.pdf", "results/paper/bench_pareto.png"]
+    out += ["results/paper/closed_form.tex"] + [f"results/paper/closed_form_{f}.{ext}" for f in ("eps", "error") for ext in ("pdf", "png")]
     return out
 
 
@@ -256,6 +260,9 @@ STABILITY_OUTPUTS = []
 # The manuscript's inputs besides paper/*.
 MANUSCRIPT_INPUTS = [
     "results/paper/inputs.tex",
+    "results/paper/closed_form.tex",
+    "results/paper/closed_form_eps.pdf",
+    "results/paper/closed_form_error.pdf",
     "results/paper/provenance.tex",
     "results/paper/bench_table.tex",
     "results/paper/bench_pareto.pdf",

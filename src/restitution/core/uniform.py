@@ -154,6 +154,14 @@ class UniformForm:
                 f"eps=1/(1+({s.b!r}*pow(1+x,{1 - s.A!r})/x+({s.c_log!r}*log(1+1/x){s.c3:+.17g})/((1+x)*(1+x)))/{s.k!r}"
                 f"+pow(1+u,{self.m0})*pow(1-u,{self.m1})*({poly}));")
 
+    def rounded(self, digits: int) -> "UniformForm":
+        """The form with every number as printed to ``digits`` significant digits (what a reader types)."""
+        r = lambda v: float(f"{v:.{digits - 1}e}")  # noqa: E731
+        s = self.skel
+        return UniformForm(self.alpha, self.gamma, Skeleton(r(s.A), r(s.k), r(s.b), r(s.c_log), r(s.c3)),
+                           r(self.sigma), self.m0, self.m1, tuple(r(a) for a in self.coef),
+                           self.bound_eps, self.bound_one_minus_eps, self.measured)
+
     def as_dict(self) -> dict:
         return {"version": UNIFORM_VERSION, "alpha": str(self.alpha), "gamma": str(self.gamma),
                 **self.coefficients(), "bound_eps": self.bound_eps,

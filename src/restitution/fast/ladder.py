@@ -69,6 +69,7 @@ from ..core.connection import eps_from_connection
 from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
                           _viscous_eval, build_calibration, pade_mp2011)
 from .master import MASTER_VERSION, MasterCurve, MasterSettings, integrator_bound, reference_eps, stiff_omega_min
+from .slow_rungs import HIGHPREC_COST, _dashpot_eps, _highprec_cost, _highprec_eps, _scipy_eps
 
 __all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE"]
 
@@ -76,7 +77,7 @@ __all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_PO
 SAFETY = 3.0
 #: Rough seconds per point (measured by benchmarks/speed_accuracy.py on one core).
 COST = {"relation": 2e-8, "pade": 2e-8, "viscous": 2e-8, "elastic": 3e-8, "closed-equal": 5e-7, "uniform": 1e-7,
-        "closed-dashpot": 5e-6, "master": 4e-8, "integrator": 6e-5, "reference": 1e-2, "highprec": 0.4}
+        "closed-dashpot": 5e-6, "master": 4e-8, "integrator": 6e-5, "reference": 1e-2, "highprec": HIGHPREC_COST}
 #: Rough seconds to build a calibration bundle that is not cached.
 BUILD_COST = {"alpha>gamma": 15.0, "alpha<=gamma": 30.0}
 
@@ -437,40 +438,6 @@ class Ladder:
         plain = [q.cost for q in quotes if not q.needs_cal and q.run is not None and q.bound <= tol]
         setup = BUILD_COST["alpha>gamma" if self.ex.alpha > self.ex.gamma else "alpha<=gamma"]
         return not plain or setup + COST["master"] * n < min(plain)
-
-
-def _dashpot_eps(om: np.ndarray) -> np.ndarray:
-    from ..core.dashpot import dashpot_collision
-    return np.array([dashpot_collision(float(w)).eps for w in np.ravel(om)])
-
-
-def _scipy_eps(ex: Exponents, om: np.ndarray, rtol: float) -> np.ndarray:
-    from ..core.collision import collide
-    return np.array([collide(ex, None, float(w), rtol=rtol).eps for w in np.ravel(om)])
-
-
-def _highprec_cost(omega: np.ndarray, digits: int) -> float:
-    """Seconds for the mpmath reference: below Omega = 1 it carries log10(1/Omega) more digits
-    (core.highprec), and its time grows like the 2.5th power of the digits (measured, alpha = 3/2,
-    gamma = 1/2, 16 digits: 0.15 s at Omega = 1, 0.75 s at 1e-12, 6 s at 1e-60, 190 s at 1e-300)."""
-    extra = np.maximum(0.0, np.ceil(-np.log10(np.asarray(omega, float))))
-    return float(np.sum(COST["highprec"] * ((digits + extra) / digits) ** 2.5))
-
-
-def _highprec_eps(ex: Exponents, om: np.ndarray, digits: int, stream=None) -> np.ndarray:
-    from ..core.highprec import reference_collision
-    seconds = _highprec_cost(om, digits)
-    if seconds > 10.0:   # a long wait says so at its start
-        print(f"restitution: the mpmath reference on {np.size(om)} point(s) takes about {seconds:.0f} s",
-              file=sys.stderr if stream is None else stream, flush=True)
-    out = []
-    for w in np.ravel(om):
-        r = reference_collision(ex, None, float(w), digits=digits)
-        if not r.error_estimate <= 10.0 ** (1 - digits):
-            raise ArithmeticError(f"mpmath reference did not converge at Omega = {w} "
-                                  f"(estimate {float(r.error_estimate):.3g})")
-        out.append(float(r.eps))
-    return np.array(out)
 
 
 # --------------------------------------------------------------------------------- the public call

@@ -1,0 +1,45 @@
+# The coefficient of restitution in closed form (restitution.core.uniform): per variant the fitted
+# uniform form with its measured bound, and the manuscript section that shows it.
+
+
+rule uniform_form:
+    """The uniform form of one variant (alpha > gamma), its errors over Omega and eps(g) from it."""
+    input:
+        curve=rules.eps_compare.output.curves,
+        src=lib("core.uniform", "fast.uniform_build"),
+        code=code("uniform_form.py"),
+    output:
+        json="results/{variant}/closed_form/form.json",
+        errors="results/{variant}/closed_form/errors.csv",
+        curve="results/{variant}/closed_form/eps_g.csv",
+    params:
+        exponents=exponents,
+    log:
+        "logs/{variant}/uniform_form.log",
+    script:
+        script_file("uniform_form.py")
+
+
+rule closed_form_section:
+    """The manuscript's closed-form section: limits, the form, its numbers and two figures."""
+    input:
+        forms=expand("results/{variant}/closed_form/form.json", variant=list(VARIANTS)),
+        errors=expand("results/{variant}/closed_form/errors.csv", variant=list(VARIANTS)),
+        curve=f"results/{MAIN}/closed_form/eps_g.csv",
+        src=lib("core.asymptotics"),
+        code=code("closed_form_section.py") + ["workflow/scripts/common/latex.py"],
+    output:
+        tex="results/paper/closed_form.tex",
+        eps_pdf="results/paper/closed_form_eps.pdf",
+        eps_png="results/paper/closed_form_eps.png",
+        err_pdf="results/paper/closed_form_error.pdf",
+        err_png="results/paper/closed_form_error.png",
+    params:
+        main=MAIN,
+        variants=list(VARIANTS),
+        exponents={name: {"alpha": str(v["alpha"]), "gamma": str(v["gamma"])} for name, v in VARIANTS.items()},
+        materials={name: {"D1": float(v["D1"]), "D2": float(v["D2"])} for name, v in VARIANTS.items()},
+    log:
+        "logs/closed_form_section.log",
+    script:
+        script_file("closed_form_section.py")

@@ -1,0 +1,208 @@
+# %% [markdown]
+# # The coefficient of restitution in closed form: the manuscript's section
+#
+# Reads the uniform forms of every variant (uniform_form.py) and writes the section text with the
+# limits of the main variant (restitution.core.asymptotics), the form's numbers and bounds of every
+# variant, and two figures: eps(g) of the main variant from the closed form over the reference and
+# the paper's printed relation, and the form's relative error in eps and 1 - eps for every variant.
+
+# %%
+from fractions import Fraction
+
+import numpy as np
+import pandas as pd
+from common.latex import esc, frac_tex, sci
+from common.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
+
+from restitution.core import asymptotics as asy
+
+start(snakemake)
+plt = setup_matplotlib()
+p = snakemake.params
+forms = {name: read_json(path) for name, path in zip(p.variants, snakemake.input.forms)}
+errors = {name: pd.read_csv(path) for name, path in zip(p.variants, snakemake.input.errors)}
+main = forms[p.main]
+ex = p.exponents[p.main]
+V = asy.viscous_limit(ex["alpha"], ex["gamma"])
+E = asy.elastic_limit(ex["alpha"], ex["gamma"])
+
+# %% figure: eps(g) of the main variant
+curve = pd.read_csv(snakemake.input.curve)
+fig, ax = plt.subplots(figsize=(5.6, 4.2))
+ax.loglog(curve["g"], curve["eps_reference"], color="black", lw=2.8, label="reference integration")
+ax.loglog(curve["g"], curve["eps_closed_form"], color="tab:orange", ls="--", lw=1.8, marker="o", ms=4,
+          mfc="none", markevery=4, label="closed form (this work)")
+if "eps_printed" in curve and curve["eps_printed"].notna().any():
+    ax.loglog(curve["g"], curve["eps_printed"], color="tab:red", ls=":", lw=2.0, label="paper's printed relation")
+ax.set_xlabel(r"impact speed $g$")
+ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
+ax.legend(frameon=False, title=rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$")
+fig.tight_layout()
+save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png)
+
+# %% figure: relative error of the form, every variant
+fig, axes = plt.subplots(1, 2, figsize=(7.2, 3.6), sharey=True)
+colors = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:cyan"]
+styles = ["-", "--", "-.", ":"]
+for i, name in enumerate(n for n in p.variants if forms[n]["available"]):
+    e = errors[name]
+    kw = dict(color=colors[i % len(colors)], ls=styles[i % len(styles)], lw=1.5,
+              label=rf"{esc(name)} ($\alpha = {p.exponents[name]['alpha']}$, $\gamma = {p.exponents[name]['gamma']}$)")
+    axes[0].loglog(e["omega"], np.maximum(e["err_eps"], 1e-17), **kw)
+    el = e["omega"] >= 1
+    axes[1].loglog(e["omega"][el], np.maximum(e["err_one_minus_eps"][el], 1e-17), **kw)
+    for ax, key in ((axes[0], "bound_eps"), (axes[1], "bound_one_minus_eps")):
+        ax.axhline(forms[name][key], color=kw["color"], lw=0.8, ls=(0, (1, 2)))
+axes[0].set_ylabel("relative error of the closed form")
+axes[0].set_title(r"in $\varepsilon$", fontsize=9)
+axes[1].set_title(r"in $1-\varepsilon$ ($\Omega \geq 1$)", fontsize=9)
+for ax in axes:
+    ax.set_xlabel(r"$\Omega$")
+    ax.set_ylim(1e-12, 1e-2)
+fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False, fontsize=8)
+fig.tight_layout(rect=(0, 0.16, 1, 1))
+save_figure(fig, snakemake.output.err_pdf, snakemake.output.err_png)
+
+# %% the laws in physical units: Omega = D1 D2^(-(alpha+1)/(gamma+1)) g^w, w = (alpha-1-2gamma)/(gamma+1)
+def frac(s):
+    return frac_tex(Fraction(s))
+
+
+HERTZ = (Fraction(3, 2), Fraction(1, 2))   # Hertz elasticity with Kuwabara-Kono damping (the model's definition)
+
+
+def elastic_power(a, g):
+    """Exponent of g in 1 - eps ~ C1 Omega^(-A) when Omega = const g^w."""
+    return -(a - 1 - 2 * g) / (g + 1) * (g + 1) / (a + 1)
+
+
+a_, g_ = Fraction(ex["alpha"]), Fraction(ex["gamma"])
+w = (a_ - 1 - 2 * g_) / (g_ + 1)
+A_ = (g_ + 1) / (a_ + 1)
+mat = p.materials[p.main]
+scale = mat["D1"] * mat["D2"] ** (-float(a_ + 1) / float(g_ + 1))   # Omega = scale g^w
+if w == 0:
+    units = (r"Here $\alpha - 1 - 2\gamma = 0$: $\Omega$, and with it $\varepsilon$, does not depend on the "
+             r"impact speed.")
+else:
+    slow, fast = ("elastic", "viscous") if w < 0 else ("viscous", "elastic")
+    units = (rf"In physical units $\Omega = D_1 D_2^{{-(\alpha+1)/(\gamma+1)}} g^{{w}}$ with $w = {frac(w)}$, so for "
+             rf"the main variant ($D_1 = {sci(mat['D1'], 4)}$, $D_2 = {sci(mat['D2'], 4)}$) slow impacts are {slow} and "
+             rf"fast ones {fast}: in the elastic limit $1 - \varepsilon \approx {sci(E.C1 * scale ** (-float(A_)), 5)}\,"
+             rf"g^{{{frac(-w * A_)}}}$, in the viscous limit $\varepsilon \approx {sci(V.k * scale, 5)}\,g^{{{frac(w)}}}$. "
+             rf"The same rule for Hertz contact with Kuwabara--Kono damping ($\alpha = {frac(HERTZ[0])}$, "
+             rf"$\gamma = {frac(HERTZ[1])}$) gives the $1 - \varepsilon \propto g^{{{frac(elastic_power(*HERTZ))}}}$ of "
+             rf"Brilliantov et al.; for this variant the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
+             rf"fast impacts give $\varepsilon \propto g^{{{frac(w)}}}$, a regime that law, an expansion about "
+             rf"elastic impacts, does not describe.")
+
+
+rows = []
+for name in p.variants:
+    f = forms[name]
+    ab = rf"{frac(p.exponents[name]['alpha'])} & {frac(p.exponents[name]['gamma'])}"
+    if f["available"]:
+        rows.append(rf"{esc(name)} & {ab} & {sci(f['b'], 12)} & {sci(f['c3'], 12)} & {sci(f['sigma'], 4)} & "
+                    rf"{f['m0']} & {f['m1']} & {sci(f['bound_eps'], 2)}, {sci(f['bound_one_minus_eps'], 2)} \\")
+    else:
+        rows.append(rf"{esc(name)} & {ab} & \multicolumn{{6}}{{l}}{{none: {esc(f['reason'])}}} \\")
+coef_names = [n for n in p.variants if forms[n]["available"]]
+coef_rows = [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) for n in coef_names]) + r" \\"
+             for j in range(len(main["a"]) if main["available"] else 0)]
+
+text = rf"""
+\section{{The coefficient of restitution in closed form}}
+\label{{sec:closed-form}}
+
+The paper set out to give $\varepsilon$ analytically in the viscous-dominant regime. Its relation
+does not hold (Sec.~\ref{{sec:ledger}}), but the two limits can be derived exactly, and one
+formula joins them. All of it is computed by \texttt{{restitution.core.asymptotics}} and
+\texttt{{restitution.core.uniform}}; the numbers below are for the main variant
+($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).
+
+\paragraph{{Viscous limit ($\Omega \to 0$, $\alpha > \gamma$).}}
+With $n = \gamma + 1$, $X = n^{{1/n}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/n$ and $\psi$ the digamma function,
+\begin{{equation*}}
+\varepsilon = k\,\Omega\left[1 - \Omega\left(c_{{\log}} \ln\frac{{1}}{{\Omega}} + c_{{0}}\right)\right] + O(\Omega^3 \ln^2 \Omega),
+\qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{0}} = r\,(kL - K_0 - k),
+\end{{equation*}}
+where $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/n) - \psi(1/n)]/n$ and
+$L = \ln(\lambda B/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln B = \ln X - \gamma_E - \psi(1/n) - \ln n$,
+so every constant is in closed form. Here $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
+$c_{{0}} = {sci(V.c_const, 10)}$, and contact lasts $\tau_c = (2\ln(1/\Omega) + L)/\lambda$ with
+$L = {sci(V.L, 10)}$, $\lambda = {sci(V.lam, 10)}$. The constant $c_0$ agrees with one extracted from the
+integrator alone to $10^{{-8}}$ (\texttt{{tests/test\_asymptotics.py}}).
+
+\paragraph{{Elastic limit ($\Omega \to \infty$).}}
+With $A = (\gamma+1)/(\alpha+1)$ and $\delta = \Omega^{{-A}}$,
+$1 - \varepsilon = C_1 \delta - C_2 \delta^2 - E\,\delta^{{1 + (\gamma+1)/(\alpha-\gamma)}} + O(\delta^3)$ with
+$C_1 = ((\alpha+1)/2)^{{A-1}} B(A, 3/2)$, $C_2 = A C_1^2$, $E = (\alpha-\gamma)/((\gamma+1)(\alpha+1))$ (the end of
+contact at zero force); here $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$, $E = {sci(E.E, 6)}$, and contact lasts
+$\tau_c = T_0\,\Omega^{{-1/(\alpha+1)}}$ with $T_0 = {sci(E.T0, 10)}$.
+
+{units}
+
+\paragraph{{One formula for every $\Omega$.}}
+With $x = b\,\Omega$, $u = \tanh(\tfrac{{\sigma}}{{2}} \ln x)$ and $\eta = 1/\varepsilon$,
+\begin{{equation}}
+\eta - 1 = \frac{{1}}{{k}}\left[\frac{{b\,(1+x)^{{1-A}}}}{{x}} + \frac{{c_{{\log}} \ln(1 + 1/x) + c_3}}{{(1+x)^2}}\right]
+ + (1+u)^{{m_0}} (1-u)^{{m_1}} \sum_{{j=0}}^{{11}} a_j u^j ,
+\label{{eq:uniform}}
+\end{{equation}}
+with $b = (k C_1)^{{1/(1-A)}}$ and $c_3 = c_0 + c_{{\log}} \ln b - (1-A)\,b - k$. The bracket alone has the
+exact leading and first-order behaviour at both ends; the sum vanishes like $\Omega^{{\sigma m_0}}$ and
+$\Omega^{{-\sigma m_1}}$ ($\sigma m_1 \geq 3A/2$), so it cannot spoil either. Its twelve coefficients are fitted to
+the compiled integrator on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
+the shape $(\sigma, m_0, m_1)$ is chosen by the error on the points in between, and the bound stated is twice the
+largest relative error on those points and on thirty-two further points drawn at random in
+$[10^{{-8}}, 10^{{8}}]$, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference
+(Table~\ref{{tab:uniform}}; Fig.~\ref{{fig:uniform-error}}). A variant with $\alpha \leq \gamma$ has no such form:
+for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
+is not known. Figure~\ref{{fig:uniform-eps}} shows $\varepsilon(g)$ of the main variant from the formula, from the
+reference, and from the paper's relation. The numbers of Table~\ref{{tab:uniform}}, typed as printed, change
+$\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
+The library prints the formula as one line of C with every number
+written out (\texttt{{restitution eps --method closed-form --json}}).
+
+\begin{{table}}[htbp]
+\centering\small
+\caption{{The uniform form (\ref{{eq:uniform}}) of each variant: its constants, shape and the relative error
+bounds in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$ (over $\Omega \geq 1$),
+measured on points not used in the fit. Generated by \texttt{{closed\_form\_section.py}}.}}
+\label{{tab:uniform}}
+\begin{{tabular}}{{lllllllll}}
+\toprule
+variant & $\alpha$ & $\gamma$ & $b$ & $c_3$ & $\sigma$ & $m_0$ & $m_1$ & bound $\varepsilon$, $1-\varepsilon$ \\
+\midrule
+{chr(10).join(rows)}
+\bottomrule
+\end{{tabular}}
+
+\vspace{{1ex}}
+\begin{{tabular}}{{l{'r' * len(coef_names)}}}
+\toprule
+ & {' & '.join(esc(n) for n in coef_names)} \\
+\midrule
+{chr(10).join(coef_rows)}
+\bottomrule
+\end{{tabular}}
+\end{{table}}
+
+\begin{{figure}}[htbp]
+\centering
+\includegraphics[width=0.7\linewidth]{{results/paper/closed_form_eps.pdf}}
+\caption{{$\varepsilon(g)$ of the main variant: the reference integration, the closed form (\ref{{eq:uniform}}) and
+the relation with the paper's printed $c_0$--$c_2$. Made by \texttt{{closed\_form\_section.py}}.}}
+\label{{fig:uniform-eps}}
+\end{{figure}}
+
+\begin{{figure}}[htbp]
+\centering
+\includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
+\caption{{Relative error of the closed form (\ref{{eq:uniform}}) against the compiled integrator, in $\varepsilon$
+(left) and in $1 - \varepsilon$ (right), for every variant that has one; dotted lines: the stated bounds. Made by
+\texttt{{closed\_form\_section.py}}.}}
+\label{{fig:uniform-error}}
+\end{{figure}}
+"""
+write_text(snakemake.output.tex, text)
