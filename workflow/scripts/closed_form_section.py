@@ -92,7 +92,7 @@ else:
              rf"g^{{{frac(-w * A_)}}}$, in the viscous limit $\varepsilon \approx {sci(V.k * scale, 5)}\,g^{{{frac(w)}}}$. "
              rf"The same rule for Hertz contact with Kuwabara--Kono damping ($\alpha = {frac(HERTZ[0])}$, "
              rf"$\gamma = {frac(HERTZ[1])}$) gives the $1 - \varepsilon \propto g^{{{frac(elastic_power(*HERTZ))}}}$ of "
-             rf"Brilliantov et al.; for this variant the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
+             rf"Brilliantov et al.~\cite{{brilliantov1996}}; for this variant the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
              rf"fast impacts give $\varepsilon \propto g^{{{frac(w)}}}$, a regime that law, an expansion about "
              rf"elastic impacts, does not describe.")
 
@@ -107,8 +107,10 @@ for name in p.variants:
     else:
         rows.append(rf"{esc(name)} & {ab} & \multicolumn{{6}}{{l}}{{none: {esc(f['reason'])}}} \\")
 coef_names = [n for n in p.variants if forms[n]["available"]]
-coef_rows = [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) for n in coef_names]) + r" \\"
-             for j in range(len(main["a"]) if main["available"] else 0)]
+coef_rows = [" & ".join([label] + [sci(forms[n][key], 12) for n in coef_names]) + r" \\"
+             for label, key in (("$k$", "k"), (r"$c_{\log}$", "c_log"), ("$A$", "A"))]
+coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) for n in coef_names]) + r" \\"
+              for j in range(len(main["a"]) if main["available"] else 0)]
 
 text = rf"""
 \section{{The coefficient of restitution in closed form}}
