@@ -134,6 +134,13 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
     row("master", f"{m.coef.shape[0]}x{m.coef.shape[1] - 1} Chebyshev", fast_cost, approx=m.eps(omegas),
         note=f"build {build_s:.1f} s once; claimed bound {m.bound(omegas):.2g}")
 
+    # -- the uniform closed form (restitution.core.uniform), alpha > gamma
+    if cal.uniform is not None:
+        u = cal.uniform
+        u.eps(big[:10])
+        row("closed-form", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: u.eps(big), n_fast, 5),
+            approx=u.eps(omegas), note=f"stated bound {u.bound_eps:.2g} (eps), {u.bound_one_minus_eps:.2g} (1 - eps)")
+
     # -- expansions on their domains
     V, E = viscous_limit(ex, None), elastic_limit(ex, None)
     sv = omegas <= 1e-3
@@ -238,7 +245,7 @@ def pareto(rows: list[dict], path_pdf: Path, path_png: Path) -> None:
 
     plt.rcParams.update({"svg.hashsalt": "restitution", "font.size": 8})
     fig, axes = plt.subplots(1, len(EXPONENTS), figsize=(7.0, 3.4), sharey=True)
-    markers = {"master": "*", "integrator": "o", "solve_ivp plain": "s", "collide (scipy)": "D",
+    markers = {"closed-form": "h", "master": "*", "integrator": "o", "solve_ivp plain": "s", "collide (scipy)": "D",
                "highprec": "P", "viscous": "<", "elastic": ">", "pade-mp2011": "X", "paper-c": "v",
                "fitted-c": "^", "perturbation-N1": "1", "perturbation-N2": "2", "perturbation-N3": "3",
                "perturbation-N4": "4"}
