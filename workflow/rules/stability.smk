@@ -93,3 +93,23 @@ rule fig_stability:
         "logs/stability/fig_stability.log",
     script:
         script_file("fig_stability.py")
+
+
+STABILITY_OUTPUTS.extend(["results/stability/uniform_forms.csv", "results/stability/uniform_forms.tex"])
+MANUSCRIPT_INPUTS.append("results/stability/uniform_forms.tex")
+
+
+rule uniform_atlas:
+    """The uniform closed form (restitution.core.uniform) built for every exponent pair of the atlas."""
+    input:
+        src=lib("fast.uniform_build"),
+        code=code("uniform_atlas.py") + ["workflow/scripts/common/latex.py"],
+    output:
+        csv="results/stability/uniform_forms.csv",
+        tex="results/stability/uniform_forms.tex",
+    params:
+        pairs=[list(p) for p in _AtlasSpec.from_config(_atlas_settings(config)).pairs],
+    log:
+        "logs/stability/uniform_atlas.log",
+    script:
+        script_file("uniform_atlas.py")

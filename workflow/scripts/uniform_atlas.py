@@ -1,0 +1,54 @@
+# %% [markdown]
+# # The uniform closed form for every exponent pair of the stability atlas
+#
+# For alpha > gamma the library fits the form and measures its bound on points it did not use
+# (restitution.fast.uniform_build); alpha = gamma has an exact closed form and alpha < gamma none.
+# One row per pair, as CSV and as the appendix's LaTeX table.
+
+# %%
+from fractions import Fraction
+
+import pandas as pd
+from common.latex import frac_tex, sci
+from common.pipeline import start, write_csv, write_text
+
+from restitution.core.errors import ParameterError
+from restitution.core.uniform import skeleton
+from restitution.fast.uniform_build import build_uniform
+
+start(snakemake)
+
+# %%
+rows = []
+for alpha, gamma in snakemake.params.pairs:
+    row = {"alpha": alpha, "gamma": gamma}
+    try:
+        skeleton(alpha, gamma)
+    except ParameterError as why:
+        row["form"] = "exact" if Fraction(alpha) == Fraction(gamma) else "none"
+        row["reason"] = why.allowed
+    else:
+        print(f"alpha={alpha}, gamma={gamma}", flush=True)
+        f = build_uniform(alpha, gamma)
+        m = f.measured
+        row.update(form="uniform", sigma=f.sigma, m0=f.m0, m1=f.m1, bound_eps=f.bound_eps,
+                   bound_one_minus_eps=f.bound_one_minus_eps, test_eps=m["test_eps"],
+                   test_one_minus_eps=m["test_one_minus_eps"], selection_eps=m["selection_eps"])
+    rows.append(row)
+table = pd.DataFrame(rows)
+write_csv(snakemake.output.csv, table)
+
+# %%
+lines = [r"\begin{tabular}{llllll}", r"\toprule",
+         r"$\alpha$ & $\gamma$ & $(\sigma, m_0, m_1)$ & bound $\varepsilon$ & bound $1-\varepsilon$ & largest test error \\",
+         r"\midrule"]
+for r in rows:
+    ab = f"{frac_tex(Fraction(r['alpha']))} & {frac_tex(Fraction(r['gamma']))}"
+    if r["form"] == "uniform":
+        lines.append(rf"{ab} & ({sci(r['sigma'], 3)}, {r['m0']}, {r['m1']}) & {sci(r['bound_eps'], 2)} & "
+                     rf"{sci(r['bound_one_minus_eps'], 2)} & {sci(max(r['test_eps'], r['test_one_minus_eps']), 2)} \\")
+    else:
+        what = "exact closed form" if r["form"] == "exact" else "no uniform form (first viscous correction unknown)"
+        lines.append(rf"{ab} & \multicolumn{{4}}{{l}}{{{what}}} \\")
+lines += [r"\bottomrule", r"\end{tabular}"]
+write_text(snakemake.output.tex, "\n".join(lines) + "\n")
