@@ -114,3 +114,15 @@ def test_printed_digits_reproduce_the_form(form):
     om = np.geomspace(*FORM_RANGE, 400)
     assert np.max(np.abs(form.rounded(12).eps(om) / form.eps(om) - 1)) < 1e-9
     assert np.max(np.abs(form.rounded(3).eps(om) / form.eps(om) - 1)) > 1e-6   # the check can fail
+
+
+def test_compiled_evaluation_equals_the_formula(form):
+    """The ladder's compiled loop (fast.uniform_eval) gives the numpy formula's eps to rounding,
+    and stays finite and in (0, 1] far outside the fitted range."""
+    from restitution.fast.uniform_eval import uniform_eps
+
+    om = np.geomspace(*FORM_RANGE, 2001)
+    assert np.max(np.abs(uniform_eps(form, om) / form.eps(om) - 1)) < 1e-13
+    wide = np.geomspace(1e-300, 1e300, 301)
+    e = uniform_eps(form, wide)
+    assert np.all(np.isfinite(e) & (e > 0) & (e <= 1))

@@ -163,7 +163,8 @@ for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \g
 is not known. Figure~\ref{{fig:uniform-eps}} shows $\varepsilon(g)$ of the main variant from the formula, from the
 reference, and from the paper's relation. The numbers of Table~\ref{{tab:uniform}}, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
-The library prints the formula as one line of C with every number
+Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's bounds for every exponent pair of the
+stability atlas. The library prints the formula as one line of C with every number
 written out (\texttt{{restitution eps --method closed-form --json}}).
 
 \begin{{table}}[htbp]

@@ -69,6 +69,7 @@ from ..core.connection import eps_from_connection
 from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
                           _viscous_eval, build_calibration, pade_mp2011)
 from .master import MASTER_VERSION, MasterCurve, MasterSettings, integrator_bound, reference_eps, stiff_omega_min
+from .uniform_eval import uniform_eps
 from .slow_rungs import HIGHPREC_COST, _dashpot_eps, _highprec_cost, _highprec_eps, _scipy_eps
 
 __all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE"]
@@ -345,7 +346,8 @@ class Ladder:
             return _Quote("closed-form", math.nan, COST["uniform"] * n,
                           reason="needs the calibration bundle (not built yet)", needs_cal=True)
         u = cal.uniform
-        return _Quote("closed-form", u.bound_eps, COST["uniform"] * n, "uniform form", run=u.eps,
+        return _Quote("closed-form", u.bound_eps, COST["uniform"] * n, "uniform form",
+                      run=lambda om: uniform_eps(u, om),
                       coefficients={**u.coefficients(), "bound_one_minus_eps": u.bound_one_minus_eps})
 
     def _cal_quote(self, cal: Calibration, name: str, omega, lo10, hi10, n) -> _Quote:
