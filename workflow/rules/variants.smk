@@ -32,6 +32,7 @@ rule variant_section:
     input:
         values="results/{variant}/values/values.json",
         validation=rules.validation.output.json,
+        form="results/{variant}/closed_form/form.json",
         code=code("variant_section.py") + ["workflow/scripts/common/latex.py"],
     output:
         "results/{variant}/section.tex",
