@@ -321,6 +321,9 @@ def _panel(c, omega=0.47):
     (lambda c: _panel(c).__setitem__(0, _panel(c)[0] + 0.01), True),
     (lambda c: [row.__setitem__(0, row[0] + 0.01) for row in c["master"]["coef"]], True),
     (lambda c: _panel(c, 3.0).__setitem__(1, float("nan")), False),
+    # the closed form kept in the same bundle: a shifted coefficient, or a bound it does not meet
+    (lambda c: c["uniform"]["a"].__setitem__(0, c["uniform"]["a"][0] + 0.01), True),
+    (lambda c: c["uniform"].__setitem__("bound_eps", 1e-12), True),
 ])
 def test_a_tampered_calibration_is_never_used(tmp_path, change, reseal):
     """Valid JSON with a shifted coefficient (sealed again or not) or a NaN: not used with its tight
