@@ -110,12 +110,13 @@ slurm-tools: $(STAMP)
 
 # The pipeline through the cluster profile on a one-node SLURM cluster of this machine, started
 # and stopped around the run (as root; what tests/test_slurm.py checks). TARGET=... (default: the
-# outputs); the local cluster has no accounting database, so the plugin asks squeue.
+# outputs); the local cluster has no accounting database, so the plugin asks squeue, and its jobs
+# take seconds, so it asks from the start (the plugin's default first wait is 40 s).
 TARGET ?= outputs
 slurm: $(STAMP) slurm-tools
 	@workflow/tools/slurm-local start >/dev/null
 	@$(GUARDED) $(BIN)/snakemake --profile workflow/profiles/slurm --slurm-status-command squeue \
-	  $(TARGET) $(QUIET); rc=$$?; workflow/tools/slurm-local stop; exit $$rc
+	  --slurm-init-seconds-before-status-checks 2 $(TARGET) $(QUIET); rc=$$?; workflow/tools/slurm-local stop; exit $$rc
 
 # Everything except the PDF (no TeX needed).
 outputs: $(STAMP)
