@@ -19,9 +19,10 @@ $(STAMP): pyproject.toml constraints.txt
 
 venv: $(STAMP)
 
-# The whole suite, pipeline builds included; installs TeX first like `make paper` (the tests that
-# need a PDF are skipped, with the reason in the summary, where TeX cannot be installed).
-test: $(STAMP) tex
+# The whole suite, pipeline builds included; installs TeX first like `make paper`, and as root
+# Chromium (the report opened in a browser) and SLURM with its Snakemake plugin (the cluster
+# profile run for real). Tests whose tools are missing are skipped, with the reason in the summary.
+test: $(STAMP) tex browser slurm-tools
 	$(BIN)/python -m pytest -q -rs -n 2
 
 # The library and the CLI only, no pipeline build and no long sweeps (under a minute).
@@ -49,7 +50,7 @@ PDF          := results/paper/restitution.pdf
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk poppler-utils
 HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/null 2>&1
 
-.PHONY: paper tex outputs verify arxiv report diff check expected reproducible bench notebooks
+.PHONY: paper tex browser slurm-tools slurm outputs verify arxiv report diff check expected reproducible bench notebooks
 
 # Everything, PDF included; a second run does nothing. Without TeX (and no root to install it),
 # everything except the PDF, and a message saying how to get it.
@@ -76,6 +77,46 @@ tex:
 	    echo "pdflatex not found and not root: the PDF will be skipped."; \
 	  fi; \
 	fi
+
+# Installs Debian packages as root when a command is missing: $(call apt,COMMAND,PACKAGES,WHAT),
+# log in build/WHAT-install.log; says what to install otherwise.
+define apt
+	@if ! command -v $(1) >/dev/null 2>&1; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
+	    echo "Installing $(3) (Debian packages: $(2); log in build/$(3)-install.log) ..."; \
+	    mkdir -p build; \
+	    { DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(2) || \
+	      { DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
+	        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(2); }; \
+	    } > build/$(3)-install.log 2>&1 || echo "$(3) could not be installed (see build/$(3)-install.log)."; \
+	  else \
+	    echo "$(1) not found and not root: tests that need it are skipped (as root: apt-get install $(2))."; \
+	  fi; \
+	fi
+endef
+
+# Headless Chromium, with which a test opens results/report.html and looks at its figures.
+browser:
+	$(call apt,chromium,chromium,chromium)
+
+# A one-node SLURM cluster's daemons (workflow/tools/slurm-local) and, as root, Snakemake's SLURM
+# executor plugin at the version constraints.txt pins: a test runs the cluster profile for real.
+slurm-tools: $(STAMP)
+	$(call apt,slurmctld,munge slurmctld slurmd slurm-client,slurm)
+	@if [ "$$(id -u)" = 0 ] && ! $(BIN)/python -c "import snakemake_executor_plugin_slurm" 2>/dev/null; then \
+	  $(BIN)/python -m pip install --quiet -c constraints.txt snakemake-executor-plugin-slurm \
+	    || echo "snakemake-executor-plugin-slurm could not be installed: the SLURM test will be skipped."; \
+	fi
+
+# The pipeline through the cluster profile on a one-node SLURM cluster of this machine, started
+# and stopped around the run (as root; what tests/test_slurm.py checks). TARGET=... (default: the
+# outputs); the local cluster has no accounting database, so the plugin asks squeue, and its jobs
+# take seconds, so it asks from the start (the plugin's default first wait is 40 s).
+TARGET ?= outputs
+slurm: $(STAMP) slurm-tools
+	@workflow/tools/slurm-local start >/dev/null
+	@$(GUARDED) $(BIN)/snakemake --profile workflow/profiles/slurm --slurm-status-command squeue \
+	  --slurm-init-seconds-before-status-checks 2 $(TARGET) $(QUIET); rc=$$?; workflow/tools/slurm-local stop; exit $$rc
 
 # Everything except the PDF (no TeX needed).
 outputs: $(STAMP)

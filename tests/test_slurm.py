@@ -1,0 +1,128 @@
+"""The cluster profile for real: one extra variant's study through `--profile workflow/profiles/slurm`
+on a one-node SLURM cluster of this machine (workflow/tools/slurm-local), against a local build of
+the same target, byte for byte.
+
+Needs root (the cluster's daemons) and Debian's SLURM packages, which `make test` installs as root
+with snakemake-executor-plugin-slurm; skipped with the reason elsewhere. About 4 minutes: the
+plugin polls squeue every 2 s + 10 s more per poll that finds nothing finished, and every job starts
+its own Snakemake.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from pipeline_tree import BIN, ENV, ROOT, digests, fresh_tree  # noqa: E402
+from test_variants import FLAT_CONFIG  # noqa: E402
+
+SLURM_LOCAL = ROOT / "workflow/tools/slurm-local"
+TARGET = "results/flat/study.txt"
+#: The local cluster has no accounting database (slurmdbd), so the plugin asks squeue, not sacct.
+CLUSTER_ARGS = ["--slurm-status-command", "squeue", "--slurm-init-seconds-before-status-checks", "2",
+                "--slurm-keep-successful-logs"]
+
+pytestmark = [pytest.mark.slurm, pytest.mark.slow]
+
+
+def why_not() -> str | None:
+    if os.geteuid() != 0:
+        return "needs root to start a SLURM cluster on this machine (CI runs make test as root)"
+    missing = [c for c in ("munged", "slurmctld", "slurmd", "sbatch") if not shutil.which(c)]
+    if missing:
+        return f"needs {', '.join(missing)}: as root, apt-get install munge slurmctld slurmd slurm-client"
+    return None
+
+
+def plugin_or_skip() -> None:
+    """snakemake-executor-plugin-slurm in the environment (make test installs it; a test run alone
+    installs the version constraints.txt pins)."""
+    probe = [str(BIN / "python"), "-c", "import snakemake_executor_plugin_slurm"]
+    if subprocess.run(probe, capture_output=True).returncode == 0:
+        return
+    pip = subprocess.run([str(BIN / "python"), "-m", "pip", "install", "--quiet", "-c", str(ROOT / "constraints.txt"),
+                          "snakemake-executor-plugin-slurm"], capture_output=True, text=True)
+    if pip.returncode != 0:
+        pytest.skip(f"snakemake-executor-plugin-slurm could not be installed: {pip.stderr.strip()[-300:]}")
+
+
+def snakemake(tree: Path, *args: str, env: dict | None = None) -> subprocess.Popen:
+    return subprocess.Popen([str(BIN / "snakemake"), *args, TARGET, "--config", FLAT_CONFIG], cwd=tree,
+                            env={**ENV, **(env or {})}, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+
+
+def finished(proc: subprocess.Popen, timeout: float = 900) -> str:
+    out, _ = proc.communicate(timeout=timeout)
+    assert proc.returncode == 0, out[-4000:]
+    return out
+
+
+def slurm_jobs_by_rule(tree: Path) -> dict[str, int]:
+    """The plugin's per-job logs, .snakemake/slurm_logs/rule_<rule>/<wildcards>/<SLURM job id>.log."""
+    return {log.relative_to(tree / ".snakemake/slurm_logs").parts[0].removeprefix("rule_"): int(log.stem)
+            for log in (tree / ".snakemake/slurm_logs").rglob("*.log")}
+
+
+def completed_jobs(jobcomp: Path) -> dict[int, dict[str, str]]:
+    """SLURM's job completion log: one line of key=value per finished job."""
+    jobs = {}
+    for line in jobcomp.read_text().splitlines():
+        fields = dict(re.findall(r"(\w+)=(\S*)", line))
+        jobs[int(fields["JobId"])] = fields
+    return jobs
+
+
+@pytest.mark.skipif(why_not() is not None, reason=why_not() or "")
+def test_one_variant_study_through_the_slurm_profile_matches_a_local_build(fresh, tmp_path):
+    plugin_or_skip()
+    local = snakemake(fresh_tree(tmp_path / "local"), "--cores", "1")   # meanwhile, beside the cluster's jobs
+    # munged runs as its own user and must reach its socket: a world-traversable directory
+    cluster = Path(tempfile.mkdtemp(prefix="slurm-local-"))
+    cluster.chmod(0o755)
+    env = {"SLURM_LOCAL_DIR": str(cluster)}
+    try:
+        start = subprocess.run([str(SLURM_LOCAL), "start"], env={**ENV, **env}, capture_output=True, text=True)
+        assert start.returncode == 0, start.stderr
+        env.update([start.stdout.strip().split("=", 1)])                 # SLURM_CONF
+        t0 = time.perf_counter()
+        out = finished(snakemake(fresh, "--profile", "workflow/profiles/slurm", *CLUSTER_ARGS, env=env))
+        elapsed = time.perf_counter() - t0
+        pids = [int((cluster / p).read_text()) for p in ("slurmctld.pid", "slurmd.pid", "munge/munged.pid")]
+    finally:
+        stop = subprocess.run([str(SLURM_LOCAL), "stop"], env={**ENV, **env}, capture_output=True, text=True)
+    assert stop.returncode == 0, stop.stderr
+    try:
+        # every job of the study except the local rule `study` went through sbatch and completed
+        by_rule = slurm_jobs_by_rule(fresh)
+        planned = set(re.findall(r"^rule (\w+):", out, re.M))
+        assert set(by_rule) == planned - {"study"} and len(by_rule) >= 14, (by_rule, planned)
+        jobs = completed_jobs(cluster / "jobcomp.log")
+        run_id = re.search(r"SLURM run ID: (\S+)", out).group(1)
+        for rule, job_id in by_rule.items():
+            assert jobs[job_id]["JobState"] == "COMPLETED" and jobs[job_id]["Name"] == run_id, (rule, jobs[job_id])
+        submitted = set(map(int, re.findall(r"_slurm_rpc_submit_batch_job: JobId=(\d+)",
+                                            (cluster / "slurmctld.log").read_text())))
+        assert set(by_rule.values()) <= submitted
+        # the per-rule resources of the profile reached sbatch (connection_readings: 30 min, 2000 MB)
+        readings = jobs[by_rule["connection_readings"]]
+        assert readings["TimeLimit"] == "30" and "mem=2000M" in readings["Tres"], readings
+        # stop leaves nothing running
+        assert not [pid for pid in pids if Path(f"/proc/{pid}").exists()]
+        assert not Path("/etc/slurm/slurm.conf").exists() or str(cluster) not in \
+            Path("/etc/slurm/slurm.conf").read_text()
+    finally:
+        shutil.rmtree(cluster, ignore_errors=True)
+    finished(local)
+    cluster_outputs, local_outputs = digests(fresh), digests(tmp_path / "local")
+    assert len(cluster_outputs) >= 30 and cluster_outputs == local_outputs
+    print(f"SLURM run of {TARGET}: {elapsed:.0f} s, {len(by_rule)} SLURM jobs")
