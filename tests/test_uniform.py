@@ -13,10 +13,10 @@ from restitution.cli import main
 from restitution.core import asymptotics as asy
 from restitution.core.collision import collide
 from restitution.core.errors import ParameterError
-from restitution.core.uniform import DEGREE, FORM_RANGE, UniformForm, skeleton
+from restitution.core.uniform import DEGREE, FORM_RANGE, MAX_DEGREE, UniformForm, skeleton
 from restitution.fast.uniform_build import build_uniform
 
-PAIRS = [("3/2", "1"), ("3/2", "1/2"), ("1", "0"), ("2", "1/2")]
+PAIRS = [("3/2", "1"), ("3/2", "1/2"), ("1", "0"), ("2", "1/2"), ("5/2", "0")]
 
 
 @pytest.fixture(scope="module", params=PAIRS, ids=lambda p: f"a{p[0]}-g{p[1]}")
@@ -57,10 +57,10 @@ def test_stated_bound_holds_on_fresh_points(form):
 
 
 def test_targets_for_the_paper_and_hertz_exponents(form):
-    """At most 12 fitted numbers; for (3/2, 1) and (3/2, 1/2) the bound is at most 1e-4 in eps and
-    1e-3 in 1 - eps (issue 13's target), for the others at most 1e-3."""
-    assert len(form.coef) == DEGREE + 1 <= 12
+    """For (3/2, 1) and (3/2, 1/2): 12 fitted numbers and a bound of at most 1e-4 in eps and 1e-3 in
+    1 - eps (issue 13's target); for the others (more numbers only where 12 do not reach it) at most 1e-3."""
     paper_like = (str(form.alpha), str(form.gamma)) in {("3/2", "1"), ("3/2", "1/2")}
+    assert len(form.coef) == DEGREE + 1 == 12 if paper_like else len(form.coef) <= MAX_DEGREE + 1
     assert form.bound_eps <= (1e-4 if paper_like else 1e-3)
     assert form.bound_one_minus_eps <= 1e-3
 

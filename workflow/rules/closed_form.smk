@@ -26,7 +26,7 @@ rule closed_form_section:
         forms=expand("results/{variant}/closed_form/form.json", variant=list(VARIANTS)),
         errors=expand("results/{variant}/closed_form/errors.csv", variant=list(VARIANTS)),
         curve=f"results/{MAIN}/closed_form/eps_g.csv",
-        src=lib("core.asymptotics"),
+        src=lib("core.asymptotics", "core.uniform"),
         code=code("closed_form_section.py") + ["workflow/scripts/common/latex.py"],
     output:
         tex="results/paper/closed_form.tex",

@@ -15,6 +15,7 @@ from common.latex import esc, frac_tex, sci
 from common.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
 
 from restitution.core import asymptotics as asy
+from restitution.core.uniform import DEGREE_STEP, SELECTION_TARGET
 
 start(snakemake)
 plt = setup_matplotlib()
@@ -109,8 +110,10 @@ for name in p.variants:
 coef_names = [n for n in p.variants if forms[n]["available"]]
 coef_rows = [" & ".join([label] + [sci(forms[n][key], 12) for n in coef_names]) + r" \\"
              for label, key in (("$k$", "k"), (r"$c_{\log}$", "c_log"), ("$A$", "A"))]
-coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) for n in coef_names]) + r" \\"
-              for j in range(len(main["a"]) if main["available"] else 0)]
+n_rows = max((len(forms[n]["a"]) for n in coef_names), default=0)
+coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) if j < len(forms[n]["a"]) else ""
+                                             for n in coef_names]) + r" \\"
+              for j in range(n_rows)]
 
 text = rf"""
 \section{{The coefficient of restitution in closed form}}
@@ -148,12 +151,13 @@ $\tau_c = T_0\,\Omega^{{-1/(\alpha+1)}}$ with $T_0 = {sci(E.T0, 10)}$.
 With $x = b\,\Omega$, $u = \tanh(\tfrac{{\sigma}}{{2}} \ln x)$ and $\eta = 1/\varepsilon$,
 \begin{{equation}}
 \eta - 1 = \frac{{1}}{{k}}\left[\frac{{b\,(1+x)^{{1-A}}}}{{x}} + \frac{{c_{{\log}} \ln(1 + 1/x) + c_3}}{{(1+x)^2}}\right]
- + (1+u)^{{m_0}} (1-u)^{{m_1}} \sum_{{j=0}}^{{11}} a_j u^j ,
+ + (1+u)^{{m_0}} (1-u)^{{m_1}} \sum_{{j=0}}^{{n}} a_j u^j ,
 \label{{eq:uniform}}
 \end{{equation}}
 with $b = (k C_1)^{{1/(1-A)}}$ and $c_3 = c_0 + c_{{\log}} \ln b - (1-A)\,b - k$. The bracket alone has the
 exact leading and first-order behaviour at both ends; the sum vanishes like $\Omega^{{\sigma m_0}}$ and
-$\Omega^{{-\sigma m_1}}$ ($\sigma m_1 \geq 3A/2$), so it cannot spoil either. Its twelve coefficients are fitted to
+$\Omega^{{-\sigma m_1}}$ ($\sigma m_1 \geq 3A/2$), so it cannot spoil either. Its {len(main['a'])} coefficients ($n = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
+where the error on the choice points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
 the compiled integrator on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
 the shape $(\sigma, m_0, m_1)$ is chosen by the error on the points in between, and the bound stated is twice the
 largest relative error on those points and on thirty-two further points drawn at random in

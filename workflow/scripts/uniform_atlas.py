@@ -31,7 +31,7 @@ for alpha, gamma in snakemake.params.pairs:
         print(f"alpha={alpha}, gamma={gamma}", flush=True)
         f = build_uniform(alpha, gamma)
         m = f.measured
-        row.update(form="uniform", sigma=f.sigma, m0=f.m0, m1=f.m1, bound_eps=f.bound_eps,
+        row.update(form="uniform", n_coef=len(f.coef), sigma=f.sigma, m0=f.m0, m1=f.m1, bound_eps=f.bound_eps,
                    bound_one_minus_eps=f.bound_one_minus_eps, test_eps=m["test_eps"],
                    test_one_minus_eps=m["test_one_minus_eps"], selection_eps=m["selection_eps"])
     rows.append(row)
@@ -39,16 +39,16 @@ table = pd.DataFrame(rows)
 write_csv(snakemake.output.csv, table)
 
 # %%
-lines = [r"\begin{tabular}{llllll}", r"\toprule",
-         r"$\alpha$ & $\gamma$ & $(\sigma, m_0, m_1)$ & bound $\varepsilon$ & bound $1-\varepsilon$ & largest test error \\",
+lines = [r"\begin{tabular}{lllllll}", r"\toprule",
+         r"$\alpha$ & $\gamma$ & $(\sigma, m_0, m_1)$ & $n + 1$ & bound $\varepsilon$ & bound $1-\varepsilon$ & largest test error \\",
          r"\midrule"]
 for r in rows:
     ab = f"{frac_tex(Fraction(r['alpha']))} & {frac_tex(Fraction(r['gamma']))}"
     if r["form"] == "uniform":
-        lines.append(rf"{ab} & ({sci(r['sigma'], 3)}, {r['m0']}, {r['m1']}) & {sci(r['bound_eps'], 2)} & "
+        lines.append(rf"{ab} & ({sci(r['sigma'], 3)}, {r['m0']}, {r['m1']}) & {r['n_coef']} & {sci(r['bound_eps'], 2)} & "
                      rf"{sci(r['bound_one_minus_eps'], 2)} & {sci(max(r['test_eps'], r['test_one_minus_eps']), 2)} \\")
     else:
         what = "exact closed form" if r["form"] == "exact" else "no uniform form (first viscous correction unknown)"
-        lines.append(rf"{ab} & \multicolumn{{4}}{{l}}{{{what}}} \\")
+        lines.append(rf"{ab} & \multicolumn{{5}}{{l}}{{{what}}} \\")
 lines += [r"\bottomrule", r"\end{tabular}"]
 write_text(snakemake.output.tex, "\n".join(lines) + "\n")

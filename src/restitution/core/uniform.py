@@ -3,7 +3,7 @@
 With eta = 1/eps, x = b Omega and u = tanh((sigma/2) ln x) = (x^sigma - 1)/(x^sigma + 1):
 
     eta - 1 = [ b (1 + x)^(1-A) / x  +  (c_log ln(1 + 1/x) + c3) / (1 + x)^2 ] / k
-              + (1 + u)^m0 (1 - u)^m1 (a_0 + a_1 u + ... + a_n u^n),
+              + (1 + u)^m0 (1 - u)^m1 (a_0 + a_1 u + ... + a_n u^n),   n = 11 (more for small A),
     eps = 1 / eta,   1 - eps = (eta - 1) / eta.
 
 The first line (the skeleton) has no free number. Its constants come from the limits of
@@ -43,8 +43,14 @@ __all__ = ["UniformForm", "Skeleton", "skeleton", "fit_uniform", "SHAPES", "DEGR
 
 #: Bumped whenever the form or its fit changes (cached forms of an older kind are rebuilt).
 UNIFORM_VERSION = 1
-#: Polynomial degree of the fitted term: DEGREE + 1 fitted coefficients.
+#: Polynomial degree of the fitted term: DEGREE + 1 fitted coefficients, raised in steps of
+#: DEGREE_STEP (up to MAX_DEGREE) only while the error on the choice points stays above
+#: SELECTION_TARGET; which is the case only for small A (e.g. gamma = 0, alpha >= 2), where the
+#: crossover between the limits spans more decades of Omega.
 DEGREE = 11
+DEGREE_STEP = 4
+MAX_DEGREE = 23
+SELECTION_TARGET = 4e-4
 #: Omega range over which a form is fitted and its bound measured.
 FORM_RANGE = (1e-8, 1e8)
 #: Candidate sigma values (A itself is added per pair) and powers m0, m1.
@@ -218,14 +224,17 @@ def fit_uniform(alpha, gamma, omega, eps, one_minus_eps, train, select) -> Unifo
     target = ome / eps                          # eta - 1, relative accuracy kept near eps = 1
     resid = (target - sk.eta_minus_one(om)) / target
     best = None
-    for sigma, m0, m1 in SHAPES(sk.A):
-        M = _basis(sk, sigma, m0, m1, om) / target[:, None]
-        c = cheb.cheb2poly(_lawson(M[train], resid[train]))
-        form = UniformForm(ex.alpha, ex.gamma, sk, float(sigma), m0, m1, tuple(float(x) for x in c))
-        with np.errstate(all="ignore"):
-            err = max(rel_errors(form, om[select], eps[select], ome[select]))
-        if math.isfinite(err) and (best is None or err < best[0]):
-            best = (err, form)
+    for degree in range(DEGREE, MAX_DEGREE + 1, DEGREE_STEP):
+        for sigma, m0, m1 in SHAPES(sk.A):
+            M = _basis(sk, sigma, m0, m1, om, degree) / target[:, None]
+            c = cheb.cheb2poly(_lawson(M[train], resid[train]))
+            form = UniformForm(ex.alpha, ex.gamma, sk, float(sigma), m0, m1, tuple(float(x) for x in c))
+            with np.errstate(all="ignore"):
+                err = max(rel_errors(form, om[select], eps[select], ome[select]))
+            if math.isfinite(err) and (best is None or err < best[0]):
+                best = (err, form)
+        if best is not None and best[0] <= SELECTION_TARGET:
+            break
     if best is None:
         raise ArithmeticError(f"no uniform form could be fitted for alpha={ex.alpha}, gamma={ex.gamma}")
     return best[1]
