@@ -31,9 +31,11 @@ rule closed_form_section:
     output:
         tex="results/paper/closed_form.tex",
         eps_pdf="results/paper/closed_form_eps.pdf",
-        eps_png="results/paper/closed_form_eps.png",
+        eps_png=report("results/paper/closed_form_eps.png", caption="../report/closed_form_eps.rst",
+                       category="Figures", subcategory="closed form"),
         err_pdf="results/paper/closed_form_error.pdf",
-        err_png="results/paper/closed_form_error.png",
+        err_png=report("results/paper/closed_form_error.png", caption="../report/closed_form_error.rst",
+                       category="Figures", subcategory="closed form"),
     params:
         main=MAIN,
         variants=list(VARIANTS),
