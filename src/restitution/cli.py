@@ -38,6 +38,12 @@ def _positive_int(text: str) -> int:
     return value
 
 
+def add_end(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--end", default="force",
+                   help="end-of-contact rule: force (contact ends where the total force vanishes; LAMMPS "
+                        "limit_damping, default) or overlap (when the overlap returns to 0; LAMMPS' default)")
+
+
 def _add_exponents(p: argparse.ArgumentParser) -> None:
     p.add_argument("--alpha", required=True, help="elastic exponent, a rational > 0 such as 3/2")
     p.add_argument("--gamma", required=True, help="dissipative exponent, a rational >= 0 such as 1")
@@ -66,6 +72,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="reference (scipy, default), fast (compiled), highprec (mpmath) or closed-form "
                         "(alpha = 1, gamma = 0)")
     c.add_argument("--digits", type=int, default=30, help="digits of --method highprec (default 30)")
+    add_end(c)
     c.add_argument("--json", action="store_true", help="machine-readable output")
 
     add_eps_subcommand(sub)
@@ -88,6 +95,7 @@ def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
                    help="force one rung of the ladder (it must still meet --tol), e.g. master, integrator")
     p.add_argument("--no-build", action="store_true",
                    help="never build the master curve; use only methods that need nothing cached")
+    add_end(p)
     p.add_argument("--json", action="store_true", help="machine-readable output")
     return p
 
@@ -102,7 +110,7 @@ def run_eps(args, out) -> None:
         missing = next(n for n, v in zip(("--D1", "--D2", "--g"), physical) if v is None)
         raise ParameterError(missing.lstrip("-"), None, "give --omega, or all of --D1 --D2 --g")
     kwargs = dict(alpha=args.alpha, gamma=args.gamma, tol=args.tol, method=args.method,
-                  build=False if args.no_build else None)
+                  build=False if args.no_build else None, end=args.end)
     if args.omega is not None:
         res = epsilon(omega=args.omega, **kwargs)
     else:
@@ -169,7 +177,7 @@ def _run_collide(args, out) -> None:
     omega = _omega_from_args(args)
     from .api import collide
     result = collide(args.alpha, args.gamma, omega, method=args.method, rtol=args.rtol,
-                     digits=args.digits).as_dict()
+                     digits=args.digits, end=args.end).as_dict()
     _report_approximation(args)
     if args.json:
         _write_json(result, out)

@@ -61,6 +61,7 @@ from ..core import asymptotics as asy
 from . import cache as _cache
 from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
+from ..core.results import end_rule
 from ..core.exponents import Exponents, as_exponents
 from ..core.connection import eps_from_connection
 from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
@@ -354,15 +355,21 @@ class Ladder:
         return _Quote(name, b, cost * n, "c0-c2" if name != "pade-mp2011" else "", reason=reason, run=run)
 
     # -- the choice
-    def evaluate(self, omega, *, tol: float = 1e-9, method: str | None = None, build: bool | None = None) -> EpsResult:
+    def evaluate(self, omega, *, tol: float = 1e-9, method: str | None = None, build: bool | None = None,
+                 end: str = "force") -> EpsResult:
         om = _omega_array(omega)
         tol = _check_tol(tol)
         if build is not None and not isinstance(build, bool):   # build="no" is truthy: it would build
             raise ParameterError("build", build, "must be True, False or None")
+        if end_rule(end) == "overlap" and self.ex.q_alpha > self.ex.q_gamma:
+            from .overlap import overlap_quotes   # the rungs that know the overlap rule (its docstring)
+            build = False
+            quotes = overlap_quotes(self.ex, om.ravel(), tol)
         if method is not None and method not in self.rung_names:
             raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
         flat = om.ravel()
-        quotes = self.quotes(flat, tol)
+        if end == "force" or self.ex.q_alpha <= self.ex.q_gamma:
+            quotes = self.quotes(flat, tol)
         if build is not False and self.cached_calibration() is None:
             need = method is not None and any(q.name == method and q.needs_cal for q in quotes)
             if build or need or self._building_pays(quotes, tol, flat.size):
@@ -447,7 +454,7 @@ def _ladder(ex: Exponents, relations) -> Ladder:
 
 def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 1e-9,
             method: str | None = None, build: bool | None = None,
-            relations: tuple[Relation, ...] = (FITTED_C,)) -> EpsResult:
+            relations: tuple[Relation, ...] = (FITTED_C,), end: str = "force") -> EpsResult:
     """Coefficient of restitution to a relative tolerance ``tol``, by the cheapest adequate method.
 
     Give either ``omega`` (scaled parameter, scalar or array) or the impact speeds ``g`` with the
@@ -456,7 +463,8 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 
     ``.error_bound`` (relative, over all inputs), ``.candidates`` (the chooser's table).
     ``method`` forces a rung (it must still meet ``tol``); ``build`` = False never builds the
     calibration bundle, True always does, None (default) builds it when that pays.
-    ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's).
+    ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's). ``end``: the
+    end-of-contact rule; "overlap" is served only by the rungs of :mod:`restitution.fast.overlap`.
     Raises ParameterError for bad input and for a tolerance no rung meets.
     """
     ex = as_exponents(alpha, gamma)
@@ -473,4 +481,4 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float = 
         with np.errstate(over="ignore", under="ignore"):
             om = np.asarray(Material(ex, None, D1, D2).omega(gs), dtype=float).reshape(gs.shape)
         om = _omega_array(om, "omega")  # Omega itself may over/underflow for extreme inputs
-    return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build)
+    return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build, end=end)
