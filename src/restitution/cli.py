@@ -1,4 +1,4 @@
-"""Command line: `restitution series`, `restitution collide`, `restitution eps`.
+"""Command line: `restitution series`, `restitution collide`, `restitution eps`, `restitution calibrate`.
 
 User mistakes end in one line on stderr and exit status 2, never a traceback.
 """
@@ -76,7 +76,29 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--json", action="store_true", help="machine-readable output")
 
     add_eps_subcommand(sub)
+
+    k = sub.add_parser("calibrate", help="the damping D2 that gives a target eps at an impact speed",
+                       description="D2 of delta'' + D1 delta^alpha + D2 delta^gamma delta' = 0 with eps(g) = "
+                                   "--eps; several --g/--eps pairs: least squares, residual reported.")
+    _add_exponents(k)
+    k.add_argument("--D1", type=number_argument, required=True, help="elastic constant D1 > 0")
+    k.add_argument("--eps", type=number_argument, nargs="+", required=True, metavar="E", help="target eps in (0, 1)")
+    k.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s) > 0")
+    add_end(k)
+    k.add_argument("--json", action="store_true", help="machine-readable output")
     return parser
+
+
+def _run_calibrate(args, out) -> None:
+    from .dem.calibrate import calibrate
+    one = len(args.eps) == 1 and len(args.g) == 1
+    res = calibrate(args.alpha, args.gamma, D1=args.D1, eps=args.eps[0] if one else args.eps,
+                    g=args.g[0] if one else args.g, end=args.end).as_dict()
+    if args.json:
+        _write_json(res, out)
+        return
+    for key, value in res.items():
+        out.write(f"{key:>8}  {value:.12g}\n" if isinstance(value, float) else f"{key:>8}  {value}\n")
 
 
 def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
@@ -225,7 +247,8 @@ def main(argv=None, out=None) -> int:
     try:
         _refuse_repeated_options(argv)
         args = build_parser().parse_args(_attach_negative_values(argv))
-        {"series": _run_series, "collide": _run_collide, "eps": run_eps}[args.command](args, out)
+        {"series": _run_series, "collide": _run_collide, "eps": run_eps,
+         "calibrate": _run_calibrate}[args.command](args, out)
     except _UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_USAGE
