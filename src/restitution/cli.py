@@ -86,7 +86,56 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s) > 0")
     add_end(k)
     k.add_argument("--json", action="store_true", help="machine-readable output")
+
+    add_lammps_subcommand(sub)
     return parser
+
+
+def add_lammps_subcommand(subparsers) -> None:
+    m = subparsers.add_parser(
+        "lammps", help="LAMMPS pair_style granular settings <-> eps for two spheres",
+        description="With --eta-n0: the eps(v) these settings give at each --g (audit). With --eps: the "
+                    "damping that gives it at --g, as a pair_coeff line (design). SI or any consistent units.")
+    m.add_argument("--normal", required=True, help="hooke, hertz or hertz/material")
+    m.add_argument("--k-n", type=number_argument, help="stiffness of hooke / hertz")
+    m.add_argument("--E", type=number_argument, help="Young's modulus of hertz/material")
+    m.add_argument("--nu", type=number_argument, help="Poisson ratio of hertz/material")
+    m.add_argument("--damping", required=True, help="velocity, mass_velocity, viscoelastic or tsuji")
+    m.add_argument("--limit-damping", action="store_true", help="LAMMPS' limit_damping keyword (force end rule)")
+    m.add_argument("--radius", type=number_argument, nargs="+", required=True, metavar="R",
+                   help="radius of both spheres, or of each (two values)")
+    m.add_argument("--density", type=number_argument, nargs="+", required=True, metavar="RHO",
+                   help="density of both spheres, or of each (two values)")
+    m.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s)")
+    m.add_argument("--eta-n0", type=number_argument, help="LAMMPS' damping coefficient (tsuji: its e)")
+    m.add_argument("--eps", type=number_argument, help="target eps at the (single) --g")
+    m.add_argument("--json", action="store_true", help="machine-readable output")
+
+
+def _run_lammps(args, out) -> None:
+    from .dem.codes import Pair
+    from .dem.settings import lammps_audit, lammps_design
+    if (args.eta_n0 is None) == (args.eps is None):
+        raise ParameterError("eps", args.eps, "give exactly one of --eta-n0 (audit) and --eps (design)")
+    radii, dens = (args.radius * 2)[:2], (args.density * 2)[:2]
+    pair = Pair.spheres(radii[0], radii[1], dens[0], dens[1])
+    stiff = {"normal": args.normal, "k_n": args.k_n, "E": args.E, "nu": args.nu, "damping": args.damping,
+             "limit_damping": args.limit_damping}
+    if args.eps is not None:
+        if len(args.g) != 1:
+            raise ParameterError("g", args.g, "give one impact speed with --eps")
+        res = lammps_design(pair, eps=args.eps, g=args.g[0], **stiff)
+    else:
+        res = lammps_audit(pair, args.g, eta_n0=args.eta_n0, **stiff)
+    if args.json:
+        _write_json(res, out)
+        return
+    out.write(res.pop("pair_coeff") + "\n")
+    rows = res.pop("rows", None)
+    for key, value in res.items():
+        out.write(f"# {key} = {value:.12g}\n" if isinstance(value, float) else f"# {key} = {value}\n")
+    for row in rows or ():
+        out.write(f"g {row['g']:<12.6g} eps {row['eps']:.12g}  t_c {row['contact_time']:.6g}\n")
 
 
 def _run_calibrate(args, out) -> None:
@@ -248,7 +297,7 @@ def main(argv=None, out=None) -> int:
         _refuse_repeated_options(argv)
         args = build_parser().parse_args(_attach_negative_values(argv))
         {"series": _run_series, "collide": _run_collide, "eps": run_eps,
-         "calibrate": _run_calibrate}[args.command](args, out)
+         "calibrate": _run_calibrate, "lammps": _run_lammps}[args.command](args, out)
     except _UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_USAGE
