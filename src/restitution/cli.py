@@ -96,19 +96,19 @@ def add_lammps_subcommand(subparsers) -> None:
         "lammps", help="LAMMPS pair_style granular settings <-> eps for two spheres",
         description="With --eta-n0: the eps(v) these settings give at each --g (audit). With --eps: the "
                     "damping that gives it at --g, as a pair_coeff line (design). SI or any consistent units.")
-    m.add_argument("--normal", required=True, help="hooke, hertz or hertz/material")
-    m.add_argument("--k-n", type=number_argument, help="stiffness of hooke / hertz")
-    m.add_argument("--E", type=number_argument, help="Young's modulus of hertz/material")
-    m.add_argument("--nu", type=number_argument, help="Poisson ratio of hertz/material")
-    m.add_argument("--damping", required=True, help="velocity, mass_velocity, viscoelastic or tsuji")
+    for flag, what in (("--normal", "hooke, hertz or hertz/material"),
+                       ("--damping", "velocity, mass_velocity, viscoelastic or tsuji")):
+        m.add_argument(flag, required=True, help=what)
+    for flag, what in (("--k-n", "stiffness of hooke / hertz"), ("--E", "Young's modulus of hertz/material"),
+                       ("--nu", "Poisson ratio of hertz/material"), ("--eta-n0", "LAMMPS' damping coefficient "
+                       "(tsuji: its e)"), ("--eps", "target eps at the (single) --g")):
+        m.add_argument(flag, type=number_argument, help=what)
     m.add_argument("--limit-damping", action="store_true", help="LAMMPS' limit_damping keyword (force end rule)")
     m.add_argument("--radius", type=number_argument, nargs="+", required=True, metavar="R",
                    help="radius of both spheres, or of each (two values)")
     m.add_argument("--density", type=number_argument, nargs="+", required=True, metavar="RHO",
                    help="density of both spheres, or of each (two values)")
     m.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s)")
-    m.add_argument("--eta-n0", type=number_argument, help="LAMMPS' damping coefficient (tsuji: its e)")
-    m.add_argument("--eps", type=number_argument, help="target eps at the (single) --g")
     m.add_argument("--json", action="store_true", help="machine-readable output")
 
 
