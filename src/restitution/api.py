@@ -94,10 +94,10 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
     if end == "overlap" and ex.q_alpha > ex.q_gamma:
         raise ParameterError("end", end, "the compiled integrator (method fast) stops at zero force; "
                              "use method reference or highprec for the overlap rule")
-    return _fast_collision(ex, omega, rtol)
+    return _fast_collision(ex, omega, rtol, end)
 
 
-def _fast_collision(ex, omega, rtol) -> Collision:
+def _fast_collision(ex, omega, rtol, end: str = "force") -> Collision:
     from .fast.integrator import COLUMNS, END_FORCE, END_SEPARATION, collide_fast
     from .core.model import at_most_one
     from .fast.master import stiff_omega_min
@@ -111,4 +111,5 @@ def _fast_collision(ex, omega, rtol) -> Collision:
     if int(row["end"]) not in ends:
         raise ArithmeticError(f"the compiled integrator failed at Omega = {omega:g}")
     return Collision(ex.alpha, ex.gamma, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
-                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol)
+                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol,
+                     rule=end)
