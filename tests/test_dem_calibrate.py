@@ -28,7 +28,7 @@ def test_calibration_round_trips(alpha, gamma, end):
         assert cal.contact.end == end
 
 
-def test_overlap_needs_more_damping_headroom_than_force():
+def test_the_overlap_rule_needs_less_damping_for_the_same_eps():
     """The attractive phase dissipates too, so the overlap rule reaches the same eps with less D2."""
     f = calibrate("3/2", "1/2", D1=1e5, eps=0.5, g=1.0, end="force")
     o = calibrate("3/2", "1/2", D1=1e5, eps=0.5, g=1.0, end="overlap")

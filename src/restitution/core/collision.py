@@ -18,6 +18,11 @@ smooth at u = 0 but singular where v = 0. So a collision is integrated in up to 
 3. ``release``   in tau until the force vanishes or x falls below SWITCH_FRACTION * x_b,
 4. ``land``      in u down to u = 0 (separation) unless the force vanishes first.
 
+That is the "force" end rule. Under the "overlap" rule (``end="overlap"``: contact lasts until x is
+back to 0, the force turning attractive on the way, as in DEM codes without a force limit) the zero
+of the force is no event: legs 3 and 4 run on to u = 0, and a return that creeps to x = x' = 0
+without ever separating is reported as StickError.
+
 In the forward legs 3 and 4 the force f = Omega x^(alpha-gamma) + v is carried as a state of its
 own. When Omega is small, v creeps along -Omega x^(alpha-gamma) and f is a tiny difference of two
 nearly equal numbers: computing it by subtraction would make tau_c (and, for alpha <= gamma, the

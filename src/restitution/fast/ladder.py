@@ -40,6 +40,9 @@ Bounds:
   2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
 * closed-form: 2e-14 (validated against mpmath).
 
+End rule: every rung above computes the "force" rule; an ``end="overlap"`` request goes to the rungs
+of :mod:`restitution.fast.overlap` instead (for alpha <= gamma the rules coincide and all serve).
+
 Choice: among rungs whose domain holds every input and whose bound over the inputs is <= tol, the
 least expected time (setup + n x cost). The calibration bundle is built (seconds, cached on disk) only
 when that is cheaper than the best rung that does not need it, or when nothing else meets tol.
