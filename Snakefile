@@ -26,6 +26,7 @@ include: "workflow/rules/variants.smk"   # validation, cross-variant figure, gen
 include: "workflow/rules/closed_form.smk" # eps in closed form: the uniform form of every variant
 include: "workflow/rules/values.smk"     # every number the manuscript prints, as LaTeX macros
 include: "workflow/rules/stability.smk"  # appendix: the stability atlas at the extremes (issue 6)
+include: "workflow/rules/dem.smk"        # using the results in a DEM code: LAMMPS runs, calibration
 include: "workflow/rules/bench.smk"      # speed against accuracy, from the recorded make bench table
 include: "workflow/rules/manuscript.smk" # the reproduction article, built with latexmk
 

@@ -13,7 +13,7 @@ from .core import collision as _collision
 from .core.collision import collide_many, inverse_collide
 from .core.errors import ParameterError, number_in
 from .core.exponents import as_exponents
-from .core.results import Collision
+from .core.results import Collision, end_rule
 from .fast import ladder as _ladder
 from .fast.calibration import FITTED_C
 from .fast.ladder import EpsResult
@@ -35,11 +35,16 @@ class Ladder(_ladder.Ladder):
 
 
 def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | None = 1e-9,
-            method: str | None = None, build: bool | None = None) -> EpsResult:
+            method: str | None = None, build: bool | None = None, end: str = "force") -> EpsResult:
     """Coefficient of restitution to a relative tolerance ``tol`` by the cheapest adequate rung of
-    the full ladder (see :func:`restitution.fast.ladder.epsilon` for the arguments and result)."""
+    the full ladder (see :func:`restitution.fast.ladder.epsilon` for the arguments and result).
+
+    ``end="overlap"`` (contact lasts until the overlap returns to 0, as in LAMMPS without
+    limit_damping) is served only by the rungs that integrate or solve that rule: the linear
+    dashpot's closed form, the reference and the mpmath integrators (:mod:`restitution.fast.overlap`);
+    for alpha <= gamma both rules give the same eps and every rung serves."""
     return _ladder.epsilon(alpha=alpha, gamma=gamma, omega=omega, g=g, D1=D1, D2=D2, tol=tol,
-                           method=method, build=build, relations=RELATIONS)
+                           method=method, build=build, relations=RELATIONS, end=end)
 
 
 #: The integrators ``collide`` can run.
@@ -47,7 +52,7 @@ METHODS = ("reference", "fast", "highprec", "closed-form")
 
 
 def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-12, t_eval=None,
-            digits: int = 30) -> Collision:
+            digits: int = 30, end: str = "force") -> Collision:
     """One forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to the end of
     contact; every method returns a :class:`~restitution.core.results.Collision`.
 
@@ -63,29 +68,36 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
     * ``"highprec"``: mpmath Taylor series at ``digits`` digits (:mod:`restitution.core.highprec`),
       rounded to doubles; ``rtol`` of the result is 10^(1 - digits).
     * ``"closed-form"``: exact, for the linear spring-dashpot alpha = 1, gamma = 0 only.
+
+    ``end``: the end-of-contact rule, "force" (default) or "overlap" (see
+    :data:`restitution.core.results.END_RULES`); every method but "fast" serves both.
     """
     if method not in METHODS:
         raise ParameterError("method", method, f"must be one of {', '.join(METHODS)}")
     if t_eval is not None and method != "reference":
         raise ParameterError("t_eval", "...", 'trajectories come from method "reference" only')
     ex = as_exponents(alpha, gamma)
+    end = end_rule(end)
     if method == "reference":
-        return _collision.collide(ex, None, omega, rtol=rtol, t_eval=t_eval)
+        return _collision.collide(ex, None, omega, rtol=rtol, t_eval=t_eval, end=end)
     if method == "closed-form":
         if (ex.alpha, ex.gamma) != (1, 0):
             raise ParameterError("method", method, "the closed form is for alpha = 1, gamma = 0 only")
         from .core.dashpot import dashpot_collision
-        return dashpot_collision(omega)
+        return dashpot_collision(omega, end=end)
     if method == "highprec":
         from .core.highprec import reference_collision
-        r = reference_collision(ex, None, omega, digits=digits)
+        r = reference_collision(ex, None, omega, digits=digits, end=end)
         return Collision(ex.alpha, ex.gamma, float(r.omega), "forward", float(r.eps), float(r.tau_b),
                          float(r.x_b), float(r.tau_c), float(r.x_c), r.end, 10.0 ** (1 - r.digits),
-                         one_minus_eps=float(1 - r.eps))
-    return _fast_collision(ex, omega, rtol)
+                         one_minus_eps=float(1 - r.eps), rule=end)
+    if end == "overlap" and ex.q_alpha > ex.q_gamma:
+        raise ParameterError("end", end, "the compiled integrator (method fast) stops at zero force; "
+                             "use method reference or highprec for the overlap rule")
+    return _fast_collision(ex, omega, rtol, end)
 
 
-def _fast_collision(ex, omega, rtol) -> Collision:
+def _fast_collision(ex, omega, rtol, end: str = "force") -> Collision:
     from .fast.integrator import COLUMNS, END_FORCE, END_SEPARATION, collide_fast
     from .core.model import at_most_one
     from .fast.master import stiff_omega_min
@@ -99,4 +111,5 @@ def _fast_collision(ex, omega, rtol) -> Collision:
     if int(row["end"]) not in ends:
         raise ArithmeticError(f"the compiled integrator failed at Omega = {omega:g}")
     return Collision(ex.alpha, ex.gamma, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
-                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol)
+                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol,
+                     rule=end)

@@ -1,4 +1,4 @@
-"""Command line: `restitution series`, `restitution collide`, `restitution eps`.
+"""Command line: `restitution series`, `restitution collide`, `restitution eps`, `restitution calibrate`.
 
 User mistakes end in one line on stderr and exit status 2, never a traceback.
 """
@@ -38,6 +38,12 @@ def _positive_int(text: str) -> int:
     return value
 
 
+def add_end(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--end", default="force",
+                   help="end-of-contact rule: force (contact ends where the total force vanishes; LAMMPS "
+                        "limit_damping, default) or overlap (when the overlap returns to 0; LAMMPS' default)")
+
+
 def _add_exponents(p: argparse.ArgumentParser) -> None:
     p.add_argument("--alpha", required=True, help="elastic exponent, a rational > 0 such as 3/2")
     p.add_argument("--gamma", required=True, help="dissipative exponent, a rational >= 0 such as 1")
@@ -66,10 +72,82 @@ def build_parser() -> argparse.ArgumentParser:
                    help="reference (scipy, default), fast (compiled), highprec (mpmath) or closed-form "
                         "(alpha = 1, gamma = 0)")
     c.add_argument("--digits", type=int, default=30, help="digits of --method highprec (default 30)")
+    add_end(c)
     c.add_argument("--json", action="store_true", help="machine-readable output")
 
     add_eps_subcommand(sub)
+
+    k = sub.add_parser("calibrate", help="the damping D2 that gives a target eps at an impact speed",
+                       description="D2 of delta'' + D1 delta^alpha + D2 delta^gamma delta' = 0 with eps(g) = "
+                                   "--eps; several --g/--eps pairs: least squares, residual reported.")
+    _add_exponents(k)
+    k.add_argument("--D1", type=number_argument, required=True, help="elastic constant D1 > 0")
+    k.add_argument("--eps", type=number_argument, nargs="+", required=True, metavar="E", help="target eps in (0, 1)")
+    k.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s) > 0")
+    add_end(k)
+    k.add_argument("--json", action="store_true", help="machine-readable output")
+
+    add_lammps_subcommand(sub)
     return parser
+
+
+def add_lammps_subcommand(subparsers) -> None:
+    m = subparsers.add_parser(
+        "lammps", help="LAMMPS pair_style granular settings <-> eps for two spheres",
+        description="With --eta-n0: the eps(v) these settings give at each --g (audit). With --eps: the "
+                    "damping that gives it at --g, as a pair_coeff line (design). SI or any consistent units.")
+    for flag, what in (("--normal", "hooke, hertz or hertz/material"),
+                       ("--damping", "velocity, mass_velocity, viscoelastic or tsuji")):
+        m.add_argument(flag, required=True, help=what)
+    for flag, what in (("--k-n", "stiffness of hooke / hertz"), ("--E", "Young's modulus of hertz/material"),
+                       ("--nu", "Poisson ratio of hertz/material"), ("--eta-n0", "LAMMPS' damping coefficient "
+                       "(tsuji: its e)"), ("--eps", "target eps at the (single) --g")):
+        m.add_argument(flag, type=number_argument, help=what)
+    m.add_argument("--limit-damping", action="store_true", help="LAMMPS' limit_damping keyword (force end rule)")
+    m.add_argument("--radius", type=number_argument, nargs="+", required=True, metavar="R",
+                   help="radius of both spheres, or of each (two values)")
+    m.add_argument("--density", type=number_argument, nargs="+", required=True, metavar="RHO",
+                   help="density of both spheres, or of each (two values)")
+    m.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s)")
+    m.add_argument("--json", action="store_true", help="machine-readable output")
+
+
+def _run_lammps(args, out) -> None:
+    from .dem.codes import Pair
+    from .dem.settings import lammps_audit, lammps_design
+    if (args.eta_n0 is None) == (args.eps is None):
+        raise ParameterError("eps", args.eps, "give exactly one of --eta-n0 (audit) and --eps (design)")
+    radii, dens = (args.radius * 2)[:2], (args.density * 2)[:2]
+    pair = Pair.spheres(radii[0], radii[1], dens[0], dens[1])
+    stiff = {"normal": args.normal, "k_n": args.k_n, "E": args.E, "nu": args.nu, "damping": args.damping,
+             "limit_damping": args.limit_damping}
+    if args.eps is not None:
+        if len(args.g) != 1:
+            raise ParameterError("g", args.g, "give one impact speed with --eps")
+        res = lammps_design(pair, eps=args.eps, g=args.g[0], **stiff)
+    else:
+        res = lammps_audit(pair, args.g, eta_n0=args.eta_n0, **stiff)
+    if args.json:
+        _write_json(res, out)
+        return
+    out.write(res.pop("pair_coeff") + "\n")
+    rows = res.pop("rows", None)
+    for key, value in res.items():
+        out.write(f"# {key} = {value:.12g}\n" if isinstance(value, float) else f"# {key} = {value}\n")
+    for row in rows or ():
+        out.write(f"g {row['g']:<12.6g} eps {row['eps']:.12g}  t_c {row['contact_time']:.6g}\n")
+
+
+def _run_calibrate(args, out) -> None:
+    from .dem.calibrate import calibrate
+    one = len(args.eps) == 1 and len(args.g) == 1
+    res = calibrate(args.alpha, args.gamma, D1=args.D1, eps=args.eps[0] if one else args.eps,
+                    g=args.g[0] if one else args.g, end=args.end).as_dict()
+    if args.json:
+        _write_json(res, out)
+        return
+    for key, value in res.items():
+        out.write(f"{key:>8}  {value:.12g}\n" if isinstance(value, float) else f"{key:>8}  {value}\n")
 
 
 def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
@@ -89,6 +167,7 @@ def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
                    help="force one rung of the ladder (it must meet --tol if given), e.g. closed-form, master, integrator")
     p.add_argument("--no-build", action="store_true",
                    help="never build the master curve; use only methods that need nothing cached")
+    add_end(p)
     p.add_argument("--json", action="store_true", help="machine-readable output")
     return p
 
@@ -104,7 +183,7 @@ def run_eps(args, out) -> None:
         raise ParameterError(missing.lstrip("-"), None, "give --omega, or all of --D1 --D2 --g")
     tol = 1e-9 if args.tol is None and args.method is None else args.tol
     kwargs = dict(alpha=args.alpha, gamma=args.gamma, tol=tol, method=args.method,
-                  build=False if args.no_build else None)
+                  build=False if args.no_build else None, end=args.end)
     if args.omega is not None:
         res = epsilon(omega=args.omega, **kwargs)
     else:
@@ -172,7 +251,7 @@ def _run_collide(args, out) -> None:
     omega = _omega_from_args(args)
     from .api import collide
     result = collide(args.alpha, args.gamma, omega, method=args.method, rtol=args.rtol,
-                     digits=args.digits).as_dict()
+                     digits=args.digits, end=args.end).as_dict()
     _report_approximation(args)
     if args.json:
         _write_json(result, out)
@@ -220,7 +299,8 @@ def main(argv=None, out=None) -> int:
     try:
         _refuse_repeated_options(argv)
         args = build_parser().parse_args(_attach_negative_values(argv))
-        {"series": _run_series, "collide": _run_collide, "eps": run_eps}[args.command](args, out)
+        {"series": _run_series, "collide": _run_collide, "eps": run_eps,
+         "calibrate": _run_calibrate, "lammps": _run_lammps}[args.command](args, out)
     except _UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_USAGE

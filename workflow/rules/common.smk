@@ -248,7 +248,7 @@ def all_outputs_but_pdf():
     out += [f"results/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
     out += ["results/paper/inputs.tex", "results/paper/provenance.tex", "results/paper/variants.tex", "results/paper/variants_values.tex",
             "results/paper/validation.tex", "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
-    out += STABILITY_OUTPUTS
+    out += STABILITY_OUTPUTS + DEM_OUTPUTS
     out += ["results/paper/bench_table.tex", "results/paper/bench_pareto.pdf", "results/paper/bench_pareto.png"]
     out += ["results/paper/closed_form.tex"] + [f"results/paper/closed_form_{f}.{ext}" for f in ("eps", "error") for ext in ("pdf", "png")]
     return out
@@ -256,6 +256,8 @@ def all_outputs_but_pdf():
 
 # Written by workflow/rules/stability.smk (issue 6) when it is included; empty otherwise.
 STABILITY_OUTPUTS = []
+# Written by workflow/rules/dem.smk (issue 14) when it is included; empty otherwise.
+DEM_OUTPUTS = []
 
 # The manuscript's inputs besides paper/*.
 MANUSCRIPT_INPUTS = [

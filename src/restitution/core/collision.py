@@ -18,6 +18,11 @@ smooth at u = 0 but singular where v = 0. So a collision is integrated in up to 
 3. ``release``   in tau until the force vanishes or x falls below SWITCH_FRACTION * x_b,
 4. ``land``      in u down to u = 0 (separation) unless the force vanishes first.
 
+That is the "force" end rule. Under the "overlap" rule (``end="overlap"``: contact lasts until x is
+back to 0, the force turning attractive on the way, as in DEM codes without a force limit) the zero
+of the force is no event: legs 3 and 4 run on to u = 0, and a return that creeps to x = x' = 0
+without ever separating is reported as StickError.
+
 In the forward legs 3 and 4 the force f = Omega x^(alpha-gamma) + v is carried as a state of its
 own. When Omega is small, v creeps along -Omega x^(alpha-gamma) and f is a tiny difference of two
 nearly equal numbers: computing it by subtraction would make tau_c (and, for alpha <= gamma, the
@@ -29,7 +34,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Callable, Sequence
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -39,7 +43,8 @@ from .exponents import as_exponents
 from .energy import NEAR_ELASTIC, dissipated, one_minus_eps
 from .law import _ForceForm, _Law
 from .model import at_most_one
-from .results import Collision, InverseCollision, Trajectory
+from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
+from .sampling import _Piece, _sample
 
 #: Accepted range of the relative tolerance.
 RTOL_MIN, RTOL_MAX = 1e-14, 1e-3
@@ -66,22 +71,15 @@ class RunawayError(ParameterError):
     """The inverse collision never turns around: x~ grows without bound for these parameters."""
 
 
+class StickError(ParameterError):
+    """Under the overlap rule the bodies never separate: x and x' creep to 0 together (eps = 0)."""
+
+
 class IntegrationError(RuntimeError):
     """solve_ivp failed or a leg did not end the way the physics says it must (a bug, not bad input)."""
 
 
 # ----------------------------------------------------------------------------------- legs
-@dataclass(frozen=True)
-class _Piece:
-    """One leg's dense output, for sampling the trajectory. In u legs the state is (v, tau, ...)."""
-
-    in_u: bool
-    sol: Callable
-    lo: float   # independent-variable range, sorted
-    hi: float
-    p: int
-
-
 @dataclass(frozen=True)
 class _State:
     tau: float
@@ -211,8 +209,11 @@ def _time_guard(law: _Law, x: float) -> float:
     return 1e6 * (1.0 + x / max(law.velocity_scale(x), 1e-300))
 
 
-def _release_forward(law: _Law, top: _State, rtol: float, pieces: list, stiff: bool):
-    """Leg 3, forward: (x, v, f) in tau until f = 0 (force end) or x < SWITCH_FRACTION x_b."""
+def _release_forward(law: _Law, top: _State, rtol: float, pieces: list, stiff: bool, overlap: bool):
+    """Leg 3, forward: (x, v, f) in tau until f = 0 (force end) or x < SWITCH_FRACTION x_b.
+
+    Under the overlap rule f = 0 is not an end: f turns negative (the contact pulls) and the leg
+    runs on to x_switch."""
     form = _ForceForm(law)
     x_switch = SWITCH_FRACTION * top.x
     f0 = law.omega * top.x ** (law.alpha - law.gamma) + top.v
@@ -220,7 +221,7 @@ def _release_forward(law: _Law, top: _State, rtol: float, pieces: list, stiff: b
     atol = ATOL_MARGIN * rtol * np.array([top.x, vs, _force_scale(law, top.x)])
     low = _event(lambda t, y: y[0] - x_switch, direction=-1)
     events = [low]
-    if law.qa > law.qg:
+    if law.qa > law.qg and not overlap:
         # Only then can f reach 0: at f = 0, f' = Omega (alpha-gamma) x^(alpha-gamma-1) v has the
         # sign of (alpha - gamma) (v < 0). For alpha <= gamma f stays positive but may decay far
         # below atol, where an event on it would fire on noise.
@@ -256,18 +257,26 @@ def _force_scale(law: _Law, x_b: float) -> float:
     return vs * min(1.0, vs / x_b ** (law.gamma + 1.0))
 
 
-def _land_forward(law: _Law, start: _State, x_b: float, rtol: float, pieces: list, stiff: bool):
-    """Leg 4, forward: (v, tau, g) in u from x_switch down to u = 0 unless the force vanishes."""
+def _land_forward(law: _Law, start: _State, x_b: float, rtol: float, pieces: list, stiff: bool,
+                  overlap: bool):
+    """Leg 4, forward: (v, tau, g) in u from x_switch down to u = 0 unless the force vanishes
+    (under the overlap rule, down to u = 0 regardless)."""
     form = _ForceForm(law)
     u0 = start.x ** (1.0 / law.p)
     g0 = form.g_from_f(u0, start.f)
     g_scale = _force_scale(law, x_b) * u0 ** form.m
     atol = ATOL_MARGIN * rtol * np.array([abs(start.v), start.tau, g_scale])
-    events = [_event(form.du_force, direction=0)] if law.qa > law.qg else []
+    events = [_event(form.du_force, direction=0)] if law.qa > law.qg and not overlap else []
+    if overlap:
+        # A return that slows to STICK_SPEED is creeping towards x = x' = 0 (see _check_separates):
+        # stop there instead of following tau to infinity.
+        events.append(_event(lambda u, y: y[0] + STICK_SPEED, direction=1))
     sol = _integrate(form.du_rhs, (u0, 0.0), [start.v, start.tau, g0], rtol=rtol, atol=atol,
                      events=events, jac=form.du_jac, stiff=stiff, in_u=True)
     u, (v, tau, _) = sol.t[-1], sol.y[:, -1]
     pieces.append(_Piece(True, sol.sol, u, u0, law.p))
+    if overlap and _fired(sol, 0):
+        _stuck(law)
     if events and _fired(sol, 0):
         return "force", _State(tau, u ** law.p, v)
     return "separation", _State(tau, 0.0, v)
@@ -296,69 +305,16 @@ def _land_inverse(law: _Law, start: _State, rtol: float, pieces: list) -> _State
     return _State(tau, 0.0, v)
 
 
-def _is_stiff(law: _Law, x: float) -> bool:
+def _is_stiff(law: _Law, x: float, overlap: bool = False) -> bool:
     """A creeping return from x (alpha <= gamma) lasts ~ x / v_scale while f relaxes at rate x^gamma.
 
     (In u the same ratio appears as the integral of |d(dv/du)/dv|.) When alpha > gamma the force
-    vanishes a few relaxation times after tau_b instead, and nothing is stiff.
+    vanishes a few relaxation times after tau_b instead, and nothing is stiff, unless the overlap
+    rule carries the return on past that point: then it creeps as well.
     """
-    if law.qa > law.qg:
+    if law.qa > law.qg and not overlap:
         return False
     return x ** (law.gamma + 1.0) / law.velocity_scale(x) > STIFFNESS_LIMIT
-
-
-# ----------------------------------------------------------------------------------- sampling
-def _sample(pieces: Sequence[_Piece], t_eval: np.ndarray, tau_end: float) -> Trajectory:
-    t_eval = t_eval[t_eval <= tau_end]
-    x = np.full(t_eval.shape, np.nan)
-    v = np.full(t_eval.shape, np.nan)
-    for piece in pieces:
-        if piece.in_u:
-            t_lo, t_hi = sorted(piece.sol(np.array([piece.lo, piece.hi]))[1])
-        else:
-            t_lo, t_hi = piece.lo, piece.hi
-        mask = (t_eval >= t_lo) & (t_eval <= t_hi) & np.isnan(x)
-        if not mask.any():
-            continue
-        if piece.in_u:
-            u = _invert_tau(piece, t_eval[mask])
-            x[mask] = u ** piece.p
-            v[mask] = piece.sol(u)[0]
-        else:
-            y = piece.sol(t_eval[mask])
-            x[mask], v[mask] = y[0], y[1]
-    return Trajectory(_frozen(t_eval), _frozen(x), _frozen(v))
-
-
-_EPS = float(np.finfo(float).eps)
-_BISECTION_STEPS = 120
-
-
-def _invert_tau(piece: _Piece, tau: np.ndarray) -> np.ndarray:
-    """u with tau(u) = tau on a u leg, by vectorised bisection (tau is monotone in u there)."""
-    lo = np.full(tau.shape, piece.lo)
-    hi = np.full(tau.shape, piece.hi)
-    rising = piece.sol(np.array([piece.hi]))[1, 0] >= piece.sol(np.array([piece.lo]))[1, 0]
-    for _ in range(_BISECTION_STEPS):
-        if np.all(hi - lo <= 4.0 * _EPS * hi):
-            break
-        mid = 0.5 * (lo + hi)
-        below = piece.sol(mid)[1] < tau
-        go_up = below if rising else ~below
-        lo = np.where(go_up, mid, lo)
-        hi = np.where(go_up, hi, mid)
-    closer_lo = np.abs(piece.sol(lo)[1] - tau) <= np.abs(piece.sol(hi)[1] - tau)
-    u = np.where(closer_lo, lo, hi)
-    # Exact at the leg's u = 0 end, where tau(u) ~ u^p is too flat for bisection to reach 0.
-    tau_at_lo = piece.sol(np.array([piece.lo]))[1, 0]
-    at_lo = tau <= tau_at_lo if rising else tau >= tau_at_lo
-    return np.where(at_lo, piece.lo, u)
-
-
-def _frozen(a: np.ndarray) -> np.ndarray:
-    a = np.asarray(a, float)
-    a.setflags(write=False)
-    return a
 
 
 # ----------------------------------------------------------------------------------- validation
@@ -407,26 +363,41 @@ def _check_omega(field: str, omega) -> float:
     return value
 
 
-def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None) -> Collision:
+def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str = "force") -> Collision:
     """Forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to end of contact.
 
     ``alpha``, ``gamma``: anything Exponents.parse accepts (or an Exponents as ``alpha`` with
     ``gamma=None``). ``omega``: in OMEGA_RANGE. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below
-    2.2e-14). ``t_eval``: tau samples for ``trajectory``.
+    2.2e-14). ``t_eval``: tau samples for ``trajectory``. ``end``: the end-of-contact rule
+    (results.END_RULES), same accuracy for both, except that under "overlap" an eps below 1e-3 is
+    the end of a large change of x' and is accurate to (10 rtol + 1e-13) 1e-3 absolute (tau_c to
+    about rtol / eps relative). Under
+    "overlap" the bodies may never separate (StickError, see _check_separates).
     """
     ex = as_exponents(alpha, gamma)
     omega = _check_omega("omega", omega)
     rtol = _check_rtol(rtol)
     t_eval = _check_t_eval(t_eval)
+    rule = end_rule(end)
+    overlap = rule == "overlap"
     law = _Law.of(ex, omega, +1)
+    if overlap:
+        _check_separates(law)
 
     pieces: list[_Piece] = []
     risen = _rise(law, 0.0, min(1.0, law.elastic_scale()), rtol, pieces)
     top = _compress(law, risen, rtol, pieces)
-    end, last = _release_forward(law, top, rtol, pieces, _is_stiff(law, top.x))
-    if end == "switch":
-        end, last = _land_forward(law, last, top.x, rtol, pieces, _is_stiff(law, last.x))
+    try:
+        end, last = _release_forward(law, top, rtol, pieces, _is_stiff(law, top.x, overlap), overlap)
+        if end == "switch":
+            end, last = _land_forward(law, last, top.x, rtol, pieces, _is_stiff(law, last.x, overlap), overlap)
+    except IntegrationError:
+        if overlap:
+            _stuck(law)
+        raise
     eps = -last.v
+    if overlap and not eps > STICK_SPEED:
+        _stuck(law)
     if end == "force":
         # At the event Omega x_c^(alpha-gamma) = eps exactly; this stays accurate when x_c is
         # far below what the located event time resolves (huge Omega).
@@ -442,7 +413,30 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None) -> Collisi
         eps = 1.0 - loss
     trajectory = _sample(pieces, t_eval, last.tau) if t_eval is not None else None
     return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
-                     float(last.tau), float(x_c), end, rtol, trajectory, loss)
+                     float(last.tau), float(x_c), end, rtol, trajectory, loss, rule)
+
+
+#: Under the overlap rule a return slower than this at x = 0 is a creep that never ends (see
+#: _check_separates): the u legs cannot follow x' -> 0 and x -> 0 together to the end.
+STICK_SPEED = 1e-12
+
+
+def _check_separates(law: _Law) -> None:
+    """Refuse the overlap rule where the bodies provably never separate.
+
+    For alpha = 2 gamma + 1 the equation is invariant under x -> l x, tau -> l^(-gamma) tau, and
+    w = x'/x^(gamma+1) obeys an autonomous equation whose fixed points solve
+    (gamma+1) w^2 + w + Omega = 0. When they are real (Omega <= 1/(4 (gamma+1))) the return is
+    trapped by the upper one: x and x' go to 0 together, never reaching x = 0 (the overdamped
+    linear dashpot, and LAMMPS' tsuji damping for e below about 0.1).
+    """
+    if law.qa == 2 * law.qg + law.p and law.omega <= 1.0 / (4.0 * (law.gamma + 1.0)):
+        _stuck(law)
+
+
+def _stuck(law: _Law):
+    raise StickError("omega", law.omega, "under the overlap rule contact never ends here: the attractive "
+                     "phase stops the return and the bodies stay together (eps = 0); use end=force")
 
 
 def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,

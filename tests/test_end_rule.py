@@ -1,0 +1,146 @@
+"""The two end-of-contact rules: "force" (contact ends where the total force vanishes) and
+"overlap" (contact ends when x returns to 0, the force turning attractive on the way)."""
+
+import io
+import json
+import math
+
+import pytest
+from scipy.integrate import solve_ivp
+
+import restitution
+from restitution.api import collide
+from restitution.cli import main
+from restitution.core.collision import StickError
+from restitution.core.dashpot import dashpot_collision
+from restitution.core.errors import ParameterError
+from restitution.core.highprec import reference_collision
+
+RTOL = 1e-12
+BOUND = 10 * RTOL + 1e-13        # the reference integrator's stated accuracy, for both rules
+
+
+@pytest.mark.parametrize("omega", [0.3, 0.5, 1.0, 10.0, 1e3, 1e6])
+def test_overlap_rule_matches_the_dashpots_half_period(omega):
+    exact = dashpot_collision(omega, end="overlap")
+    w = math.sqrt(omega - 0.25)
+    assert exact.tau_c == pytest.approx(math.pi / w, rel=1e-15)
+    got = collide(1, 0, omega, end="overlap", rtol=RTOL)
+    assert got.end == "separation" and got.rule == "overlap" and got.x_c == 0.0
+    for field in ("tau_b", "x_b", "tau_c", "one_minus_eps"):
+        assert math.isclose(getattr(got, field), getattr(exact, field), rel_tol=BOUND), field
+    # a tiny eps is the end of a large change of x': accurate relative to EPS_FLOOR (collision.py)
+    assert abs(got.eps - exact.eps) <= BOUND * max(exact.eps, 1e-3)
+
+
+@pytest.mark.parametrize("omega", [0.3, 1.0, 1e3])
+def test_force_rule_still_matches_the_dashpots_closed_form(omega):
+    got = collide(1, 0, omega, rtol=RTOL)
+    assert got == collide(1, 0, omega, rtol=RTOL, end="force")
+    exact = dashpot_collision(omega)
+    assert got.end == exact.end == "force" and got.rule == "force"
+    assert math.isclose(got.eps, exact.eps, rel_tol=BOUND)
+
+
+@pytest.mark.parametrize("alpha, gamma, omega", [
+    ("3/2", "1", 0.5), ("3/2", "1", 1e-3), ("3/2", "1/2", 1.0), ("3/2", "1/4", 1.0), ("3/2", "0", 1.0),
+    ("2", "1/2", 0.3), ("3/2", "1/2", 200.0)])
+def test_overlap_rule_matches_mpmath(alpha, gamma, omega):
+    truth = reference_collision(alpha, gamma, omega, digits=20, end="overlap")
+    assert truth.end == "separation" and truth.error_estimate < 1e-18
+    got = collide(alpha, gamma, omega, rtol=RTOL, end="overlap")
+    for field in ("eps", "tau_b", "x_b", "tau_c"):
+        assert math.isclose(getattr(got, field), float(getattr(truth, field)), rel_tol=BOUND), field
+    # the attractive phase costs energy: eps is lower than the force rule's
+    assert got.eps < collide(alpha, gamma, omega, rtol=RTOL).eps
+
+
+def _plain_ivp_overlap(alpha, gamma, omega):
+    """An independent integration in (x, v) against tau, a different variable and solver, at the
+    tightest tolerance: x^a of a negative trial x is clipped, the end is the event x = 0."""
+    def rhs(t, y):
+        x = max(y[0], 0.0)
+        return [y[1], -omega * x ** alpha - x ** gamma * y[1]]
+
+    def back(t, y):
+        return y[0] if t > 1e-3 else 1.0
+    back.terminal, back.direction = True, -1
+    sol = solve_ivp(rhs, (0, 1e4), [0.0, 1.0], method="DOP853", rtol=2.3e-14, atol=1e-16, events=back)
+    return -sol.y_events[0][0][1], sol.t_events[0][0]
+
+
+@pytest.mark.parametrize("alpha, gamma, omega", [(1.5, 1.0, 0.5), (2.0, 1.0, 2.0), (1.5, 0.5, 1.0)])
+def test_overlap_rule_matches_a_plain_integration_in_tau(alpha, gamma, omega):
+    eps, tau_c = _plain_ivp_overlap(alpha, gamma, omega)
+    got = collide(alpha, gamma, omega, end="overlap")
+    assert math.isclose(got.eps, eps, rel_tol=1e-9) and math.isclose(got.tau_c, tau_c, rel_tol=1e-9)
+
+
+@pytest.mark.parametrize("alpha, gamma, omega", [("1", "3/2", 0.3), ("1", "1", 2.0), ("1/2", "1", 1.0)])
+def test_both_rules_agree_where_the_force_cannot_vanish(alpha, gamma, omega):
+    force = collide(alpha, gamma, omega)
+    overlap = collide(alpha, gamma, omega, end="overlap")
+    assert force.end == overlap.end == "separation" and force.eps == overlap.eps
+
+
+def test_overlap_loss_is_the_dissipated_energy():
+    got = collide("3/2", "1/2", 1e4, end="overlap")
+    assert got.one_minus_eps == pytest.approx(1.0 - got.eps, rel=1e-9)
+
+
+@pytest.mark.parametrize("alpha, gamma, omega", [("1", "0", 0.25), ("1", "0", 0.01), ("3/2", "1/4", 0.2),
+                                                 ("3", "1", 0.125)])
+def test_overdamped_self_similar_returns_stick(alpha, gamma, omega):
+    """alpha = 2 gamma + 1 and Omega <= 1/(4 (gamma+1)): the bodies never separate."""
+    with pytest.raises(StickError, match="never ends"):
+        collide(alpha, gamma, omega, end="overlap")
+    assert collide(alpha, gamma, omega).eps > 0     # the force rule still ends
+
+
+def test_just_above_the_stick_threshold_the_bodies_separate():
+    got = collide("3/2", "1/4", 0.21, end="overlap")
+    truth = reference_collision("3/2", "1/4", 0.21, digits=20, end="overlap")
+    assert 0 < got.eps < 1e-3 and abs(got.eps - float(truth.eps)) <= BOUND * 1e-3
+
+
+def test_dashpot_closed_form_refuses_a_stuck_overlap():
+    with pytest.raises(ParameterError, match="omega"):
+        dashpot_collision(0.2, end="overlap")
+
+
+def test_epsilon_overlap_uses_only_rungs_that_know_the_rule():
+    res = restitution.epsilon(alpha="3/2", gamma=1, omega=[0.5, 2.0], end="overlap")
+    assert res.method in ("closed-form", "reference", "highprec")
+    for w, e in zip([0.5, 2.0], res.eps):
+        assert math.isclose(e, collide("3/2", 1, w, end="overlap").eps, rel_tol=1e-9)
+    served = {c["method"] for c in res.candidates if c["available"]}
+    assert served <= {"closed-form", "reference", "highprec"}
+    with pytest.raises(ParameterError, match="method"):
+        restitution.epsilon(alpha="3/2", gamma=1, omega=0.5, end="overlap", method="master")
+    dash = restitution.epsilon(alpha=1, gamma=0, omega=0.5, end="overlap")
+    assert dash.method == "closed-form" and dash.eps == pytest.approx(dashpot_collision(0.5, "overlap").eps)
+
+
+def test_fast_method_refuses_the_overlap_rule():
+    with pytest.raises(ParameterError, match="end"):
+        collide("3/2", 1, 0.5, method="fast", end="overlap")
+
+
+def test_bad_end_is_one_line_exit_2(capsys):
+    assert main(["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--end", "both"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "end" in err and "force, overlap" in err
+    assert main(["eps", "--alpha", "1", "--gamma", "0", "--omega", "0.2", "--end", "overlap"]) == 2
+
+
+def test_cli_end_overlap():
+    out = io.StringIO()
+    assert main(["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--end", "overlap",
+                 "--json"], out=out) == 0
+    data = json.loads(out.getvalue())
+    assert data["rule"] == "overlap" and data["end"] == "separation"
+    assert data["eps"] == collide("3/2", 1, 0.5, end="overlap").eps
+    out = io.StringIO()
+    assert main(["eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--end", "overlap", "--json"],
+                out=out) == 0
+    assert json.loads(out.getvalue())["eps"][0] == pytest.approx(data["eps"], rel=1e-9)

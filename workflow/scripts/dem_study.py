@@ -1,0 +1,114 @@
+# %% [markdown]
+# # Using the results in a DEM code
+#
+# Two like spheres collide head-on in LAMMPS (`pair_style granular`, `hertz/material` with
+# `damping viscoelastic`: the Kuwabara-Kono law, alpha = 3/2, gamma = 1/2). The damping is the
+# library's calibration for `design_eps` at `design_speed` under LAMMPS' default end of contact;
+# the same `pair_coeff` is then run with and without `limit_damping` at every speed, each at three
+# time steps extrapolated to dt = 0, over the library's eps(v) for both end rules. Then the main
+# variant's D2 is calibrated to target eps values at a few speeds, for both rules. This script
+# only calls the library (restitution.dem) and writes what it returns.
+
+# %%
+import numpy as np
+import pandas as pd
+from common.latex import fixed, sci
+from common.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
+
+from restitution.dem.calibrate import calibrate
+from restitution.dem.codes import Pair, lammps_contact, lammps_pair_coeff
+from restitution.dem.contact import Contact
+from restitution.dem.lammps import lammps_eps_extrapolated
+from restitution.dem.settings import lammps_design
+
+start(snakemake)
+P = snakemake.params.dem
+M = snakemake.params.material
+out = dict(zip(("runs", "curves", "cal", "cal_tex", "values", "pdf", "png"), snakemake.output))
+RULES = (("force", True), ("overlap", False))      # end rule, LAMMPS' limit_damping
+
+# %% LAMMPS against the library
+pair = Pair.spheres(P["radius"], P["radius"], P["density"])
+material = {"normal": "hertz/material", "E": P["youngs_modulus"], "nu": P["poisson"], "damping": "viscoelastic"}
+design = lammps_design(pair, eps=P["design_eps"], g=P["design_speed"], limit_damping=False, **material)
+rows, contacts = [], {}
+for rule, limit in RULES:
+    setting = {**material, "eta_n0": design["eta_n0"], "limit_damping": limit}
+    contact = contacts[rule] = lammps_contact(pair, **setting)
+    line = lammps_pair_coeff(**setting)
+    for g in P["speeds"]:
+        t_c = contact.contact_time(g)
+        eps0, *runs = lammps_eps_extrapolated(pair, line, g, t_c, P["lammps_steps"])
+        exact = contact.eps(g)
+        rows.append({"rule": rule, "g": g, "eps_library": exact, "eps_lammps": eps0,
+                     "eps_lammps_coarsest": runs[0], "relative_deviation": eps0 / exact - 1.0, "t_c": t_c})
+runs = pd.DataFrame(rows)
+write_csv(out["runs"], runs)
+
+speeds = np.logspace(np.log10(min(P["speeds"])), np.log10(max(P["speeds"])), P["curve_points"])
+curves = pd.DataFrame({"g": speeds, **{f"eps_{rule}": [contacts[rule].eps(g) for g in speeds] for rule, _ in RULES}})
+write_csv(out["curves"], curves)
+
+# %% the main variant's damping for target eps
+cal_rows = []
+for target in P["calibration_eps"]:
+    for g in P["calibration_speeds"]:
+        for rule, _ in RULES:
+            cal = calibrate(M["alpha"], M["gamma"], D1=M["D1"], eps=target, g=g, end=rule)
+            cal_rows.append({"target": target, "g": g, "rule": rule, "D2": cal.D2, "eps": cal.eps[0]})
+cal_table = pd.DataFrame(cal_rows)
+write_csv(out["cal"], cal_table)
+own = {(rule, g): Contact(M["alpha"], M["gamma"], M["D1"], M["D2"], rule).eps(g)
+       for rule, _ in RULES for g in P["calibration_speeds"]}
+
+lines = []
+for target in P["calibration_eps"]:
+    cells = [fixed(target, 2)]
+    for g in P["calibration_speeds"]:
+        d = cal_table[(cal_table["target"] == target) & (cal_table["g"] == g)].set_index("rule")["D2"]
+        cells += [sci(d["force"], 4), sci(d["overlap"], 4)]
+    lines.append(" & ".join(cells) + r" \\")
+cells = [r"\multicolumn{1}{l}{$\varepsilon$ at $D_2 = " + sci(M["D2"], 3) + "$}"]
+for g in P["calibration_speeds"]:
+    cells += [fixed(own[("force", g)], 4), fixed(own[("overlap", g)], 4)]
+lines.append(r"\midrule" + "\n" + " & ".join(cells) + r" \\")
+n = len(P["calibration_speeds"])
+header = [r"\begin{tabular}{l" + "rr" * n + "}", r"\toprule",
+          " & " + " & ".join(rf"\multicolumn{{2}}{{c}}{{$g = {sci(g, 2)}$}}" for g in P["calibration_speeds"]) + r" \\",
+          r"target $\varepsilon$ & " + " & ".join(["force & overlap"] * n) + r" \\", r"\midrule"]
+write_text(out["cal_tex"], "\n".join(header + lines + [r"\bottomrule", r"\end{tabular}"]))
+
+# %% the section's numbers
+dev = runs.groupby("rule")["relative_deviation"].apply(lambda s: float(np.max(np.abs(s))))
+lam = runs.pivot(index="g", columns="rule", values="eps_lammps")
+gap = float(np.max(1.0 - lam["overlap"] / lam["force"]))
+macros = {
+    "DemRadius": sci(P["radius"], 2), "DemDensity": sci(P["density"], 4), "DemYoung": sci(P["youngs_modulus"], 2),
+    "DemPoisson": fixed(P["poisson"], 2), "DemDesignEps": fixed(P["design_eps"], 2),
+    "DemDesignSpeed": sci(P["design_speed"], 2), "DemEtaNZero": sci(design["eta_n0"], 4),
+    "DemSpeedMin": sci(min(P["speeds"]), 2), "DemSpeedMax": sci(max(P["speeds"]), 2),
+    "DemSpeedCount": str(len(P["speeds"])), "DemSteps": str(P["lammps_steps"]),
+    "DemDevForce": sci(dev["force"], 2), "DemDevOverlap": sci(dev["overlap"], 2),
+    "DemRuleGap": sci(100 * gap, 2), "DemMaterial": M["name"],
+    "DemCalSpeeds": ", ".join(sci(g, 2) for g in P["calibration_speeds"]),
+}
+write_text(out["values"], "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))
+
+# %% figure
+plt = setup_matplotlib()
+fig, (top, bottom) = plt.subplots(2, 1, figsize=(5.6, 5.4), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+style = {"force": ("C0", "-", "o", "limit_damping (force rule)"), "overlap": ("C3", "--", "s", "default (overlap rule)")}
+for rule, _ in RULES:
+    colour, ls, marker, label = style[rule]
+    top.plot(curves["g"], curves[f"eps_{rule}"], ls, color=colour, lw=1.4, label=f"library, {rule} rule")
+    d = runs[runs["rule"] == rule]
+    top.plot(d["g"], d["eps_lammps"], marker, color=colour, mfc="none", ms=7, label=f"LAMMPS, {label}")
+    bottom.plot(d["g"], np.abs(d["relative_deviation"]), marker + ls, color=colour, mfc="none", ms=6, lw=1.0)
+top.set_xscale("log")
+top.set_ylabel(r"restitution coefficient $\varepsilon$")
+top.legend(loc="lower left")
+bottom.set_yscale("log")
+bottom.set_xlabel(r"impact speed $g$ (m/s)")
+bottom.set_ylabel("|LAMMPS / library - 1|")
+fig.tight_layout()
+save_figure(fig, out["pdf"], out["png"])
