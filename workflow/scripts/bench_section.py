@@ -38,11 +38,15 @@ write_text(snakemake.output.table, "\n".join(lines))
 
 # %%
 fig, ax = plt.subplots()
-for method, group in rows.groupby("method", sort=True):
+# More methods than a colour cycle has colours: each gets its own colour and marker as well.
+colors = plt.get_cmap("tab20").colors
+markers = "os^DvP*X<>hp"
+for i, (method, group) in enumerate(rows.groupby("method", sort=True)):
     finite = group[group["max_rel_err"].apply(math.isfinite)]
     if finite.empty:
         continue
-    ax.plot(finite["cost_per_eval_s"], finite["max_rel_err"], marker="o", linestyle="-", label=method)
+    ax.plot(finite["cost_per_eval_s"], finite["max_rel_err"], marker=markers[i % len(markers)],
+            color=colors[(2 * i) % 20 + (i // 10) % 2], linestyle="-", label=method)
 ax.set_xscale("log")
 ax.set_yscale("log")
 ax.set_xlabel("cost per evaluation (s, one core, recorded)")
