@@ -51,11 +51,15 @@ class Calibrated:
                                                                       if k not in ("D2", "end")}}
 
 
-def _eps_at(ex, end: str, log_omega: float, rtol: float) -> float:
+def _eps_or_zero(alpha, gamma, end: str, omega: float, rtol: float) -> float:
     try:
-        return collide(ex, None, 10.0 ** log_omega, rtol=rtol, end=end).eps
+        return collide(alpha, gamma, omega, rtol=rtol, end=end).eps
     except StickError:
         return 0.0   # the bodies never separate: the limit of eps from above
+
+
+def _eps_at(ex, end: str, log_omega: float, rtol: float) -> float:
+    return _eps_or_zero(ex, None, end, 10.0 ** log_omega, rtol)
 
 
 def _omega_for(ex, end: str, target: float, rtol: float) -> float:
@@ -124,7 +128,4 @@ def calibrate(alpha, gamma, *, D1, eps, g, end: str = "force", rtol: float = 1e-
 
 
 def _safe_eps(contact: Contact, g: float, rtol: float) -> float:
-    try:
-        return contact.eps(g, rtol)
-    except StickError:
-        return 0.0
+    return _eps_or_zero(contact.alpha, contact.gamma, contact.end, contact.omega(g), rtol)

@@ -406,14 +406,14 @@ class Ladder:
         tol = _check_tol(DEFAULT_TOL if tol is None else tol)
         if build is not None and not isinstance(build, bool):   # build="no" is truthy: it would build
             raise ParameterError("build", build, "must be True, False or None")
-        if end_rule(end) == "overlap" and self.ex.q_alpha > self.ex.q_gamma:
-            from .overlap import overlap_quotes   # the rungs that know the overlap rule (its docstring)
-            build = False
-            quotes = overlap_quotes(self.ex, om.ravel(), tol)
         if method is not None and method not in self.rung_names:
             raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
         flat = om.ravel()
-        if end == "force" or self.ex.q_alpha <= self.ex.q_gamma:
+        if end_rule(end) == "overlap" and self.ex.alpha > self.ex.gamma:
+            # only the rungs that know the overlap rule (its docstring); none of them is built
+            from .overlap import overlap_quotes
+            quotes, build = overlap_quotes(self.ex, flat, tol), False
+        else:
             quotes = self.quotes(flat, tol)
         if build is not False and self.cached_calibration() is None:
             need = method is not None and any(q.name == method and q.needs_cal for q in quotes)
