@@ -70,9 +70,3 @@ def test_the_check_sees_a_wrong_import(tmp_path):
     bad.write_text("from .errors import ParameterError\n\n\ndef f():\n    from ..audit import claims\n"
                    "    from restitution.fast import ladder\n")
     assert _imported_layers(bad, tmp_path) == {"core", "audit", "fast"}
-
-
-def test_module_sizes():
-    """Small modules: none over 500 lines."""
-    big = {str(p.relative_to(PKG)): n for p in MODULES if (n := len(p.read_text().splitlines())) > 500}
-    assert not big, big

@@ -20,8 +20,10 @@ smooth at u = 0 but singular where v = 0. So a collision is integrated in up to 
 
 That is the "force" end rule. Under the "overlap" rule (``end="overlap"``: contact lasts until x is
 back to 0, the force turning attractive on the way, as in DEM codes without a force limit) the zero
-of the force is no event: legs 3 and 4 run on to u = 0, and a return that creeps to x = x' = 0
-without ever separating is reported as StickError.
+of the force is no event: legs 3 and 4 run on to u = 0. Once the force pulls, leg 4 carries the force
+alone and takes x' from it (_land_pulling), so that an eps many decades below the creep speed keeps
+its relative accuracy. A return proved to creep to x = x' = 0 without ever separating (_Trap,
+_check_separates) is reported as StickError; nothing else is.
 
 In the forward legs 3 and 4 the force f = Omega x^(alpha-gamma) + v is carried as a state of its
 own. When Omega is small, v creeps along -Omega x^(alpha-gamma) and f is a tiny difference of two
@@ -41,7 +43,7 @@ from scipy.integrate import solve_ivp
 from .errors import ParameterError, number_in, require_positive_finite
 from .exponents import as_exponents
 from .energy import NEAR_ELASTIC, dissipated, one_minus_eps
-from .law import _ForceForm, _Law
+from .law import _ForceForm, _Law, _PullForm
 from .model import at_most_one
 from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
 from .sampling import _Piece, _sample
@@ -73,6 +75,10 @@ class RunawayError(ParameterError):
 
 class StickError(ParameterError):
     """Under the overlap rule the bodies never separate: x and x' creep to 0 together (eps = 0)."""
+
+
+class UnresolvedError(ParameterError):
+    """eps exists but lies below what the method resolves for these parameters."""
 
 
 class IntegrationError(RuntimeError):
@@ -260,26 +266,102 @@ def _force_scale(law: _Law, x_b: float) -> float:
 def _land_forward(law: _Law, start: _State, x_b: float, rtol: float, pieces: list, stiff: bool,
                   overlap: bool):
     """Leg 4, forward: (v, tau, g) in u from x_switch down to u = 0 unless the force vanishes
-    (under the overlap rule, down to u = 0 regardless)."""
+    (under the overlap rule, down to u = 0 regardless; once the force pulls, see _land_pulling)."""
+    if overlap and start.f < 0.0:
+        return _land_pulling(law, start, rtol, pieces, stiff)
     form = _ForceForm(law)
     u0 = start.x ** (1.0 / law.p)
     g0 = form.g_from_f(u0, start.f)
     g_scale = _force_scale(law, x_b) * u0 ** form.m
     atol = ATOL_MARGIN * rtol * np.array([abs(start.v), start.tau, g_scale])
     events = [_event(form.du_force, direction=0)] if law.qa > law.qg and not overlap else []
-    if overlap:
-        # A return that slows to STICK_SPEED is creeping towards x = x' = 0 (see _check_separates):
-        # stop there instead of following tau to infinity.
-        events.append(_event(lambda u, y: y[0] + STICK_SPEED, direction=1))
     sol = _integrate(form.du_rhs, (u0, 0.0), [start.v, start.tau, g0], rtol=rtol, atol=atol,
                      events=events, jac=form.du_jac, stiff=stiff, in_u=True)
     u, (v, tau, _) = sol.t[-1], sol.y[:, -1]
     pieces.append(_Piece(True, sol.sol, u, u0, law.p))
-    if overlap and _fired(sol, 0):
-        _stuck(law)
     if events and _fired(sol, 0):
         return "force", _State(tau, u ** law.p, v)
     return "separation", _State(tau, 0.0, v)
+
+
+def _land_pulling(law: _Law, start: _State, rtol: float, pieces: list, stiff: bool):
+    """Leg 4 under the overlap rule with the force already pulling: (g, tau) in u down to u = 0.
+
+    Here eps may be a factor Omega^2 below the creep speed it starts from (eps = C Omega^3 for
+    alpha = 3/2, gamma = 1/2), so g is held to a purely relative tolerance and x' is computed from
+    it without cancellation (_PullForm). A return caught by the trap of _Trap provably sticks.
+    """
+    form = _PullForm(law)
+    u0 = start.x ** (1.0 / law.p)
+    trap = _Trap(law)
+    if trap.holds(u0, [start.f]) >= 0.0:
+        _stuck(law, trap.why(start.x))
+    events = [_event(trap.holds, direction=1)] if trap.possible else []
+    # The leg's own time, from 0 and held to a relative tolerance: a tau_b + (a creep of ~1/Omega)
+    # in the state, or a loose absolute tolerance on it, lets Radau take steps over which its
+    # Newton iteration fails at small Omega. (TINY itself would overflow its first-step estimate.)
+    atol = np.array([TINY, TIME_MARGIN * rtol * start.x / abs(start.v)])
+    sol = _integrate(form.du_rhs, (u0, 0.0), [start.f, 0.0], rtol=rtol, atol=atol, events=events,
+                     jac=form.du_jac, stiff=stiff, in_u=True)
+    u, (g, tau) = sol.t[-1], sol.y[:, -1] + [0.0, start.tau]
+    if events and _fired(sol, 0):
+        _stuck(law, trap.why(u ** law.p))
+    v = form.speed(u, g)
+    if not (u == 0.0 and g < 0.0 and math.isfinite(tau)):
+        raise UnresolvedError("omega", law.omega, f"under the overlap rule eps is below what the reference "
+                              f"integrator resolves here (x' = {v:.3g} at x = {u ** law.p:.3g}); "
+                              "try method highprec")
+    pieces.append(_Piece(True, _SpeedView(sol.sol, form, start.tau), u, u0, law.p))
+    return "separation", _State(tau, 0.0, v)
+
+
+#: An absolute tolerance that leaves the relative one in charge.
+TINY = 1e-300
+#: The pulling leg's time: absolute tolerance TIME_MARGIN rtol (x / |x'| at its start).
+TIME_MARGIN = 1e-6
+
+
+class _SpeedView:
+    """A (g, tau) leg's dense output seen as (v, tau), the state the other u legs have."""
+
+    def __init__(self, sol, form: _PullForm, tau0: float):
+        self.sol, self.form, self.tau0, self.ts = sol, form, tau0, sol.ts
+
+    def __call__(self, u):
+        g, tau = self.sol(u)
+        return np.array([self.form.speed(np.asarray(u, float), g), tau + self.tau0])
+
+
+class _Trap:
+    """Where a pulling return provably sticks (x and x' go to 0 together, contact never ends).
+
+    With s = -x' > 0 and d = alpha - gamma, along a return ds/dx = x^gamma - Omega x^alpha / s. On the
+    curve s = 2 Omega x^d that slope is x^gamma / 2, at least the curve's own 2 Omega d x^(d-1)
+    wherever x^(2 gamma + 1 - alpha) >= 4 Omega d. So once s <= 2 Omega x^d at such an x, s stays
+    below the curve all the way down, and x' ~ x^d with d >= 1 never brings x to 0. Only
+    alpha >= 2 gamma + 1 has such x (for alpha = 2 gamma + 1 exactly when Omega <= 1/(4 (gamma+1)),
+    the case _check_separates refuses at once); for alpha < 2 gamma + 1 the return always separates.
+    """
+
+    def __init__(self, law: _Law):
+        self.law = law
+        self.excess = law.qa - 2 * law.qg - law.p       # p (alpha - 2 gamma - 1)
+        self.d = law.alpha - law.gamma
+        self.possible = self.excess > 0
+
+    def holds(self, u, y) -> float:
+        """>= 0 exactly inside the trap (g = f = Omega x^d + x', so s <= 2 Omega x^d is g >= -Omega x^d)."""
+        if not self.possible:
+            return -1.0
+        L = self.law
+        below = y[0] + L.omega * u ** L.k
+        if u <= 0.0:
+            return below
+        return min(below, u ** (-self.excess) - 4.0 * L.omega * self.d)
+
+    def why(self, x: float) -> str:
+        return (f"at x = {x:.3g} the return is slower than 2 Omega x^(alpha-gamma), from where it "
+                "creeps to 0 without ever separating")
 
 
 def _release_inverse(law: _Law, top: _State, rtol: float, pieces: list) -> _State:
@@ -369,10 +451,9 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
     ``alpha``, ``gamma``: anything Exponents.parse accepts (or an Exponents as ``alpha`` with
     ``gamma=None``). ``omega``: in OMEGA_RANGE. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below
     2.2e-14). ``t_eval``: tau samples for ``trajectory``. ``end``: the end-of-contact rule
-    (results.END_RULES), same accuracy for both, except that under "overlap" an eps below 1e-3 is
-    the end of a large change of x' and is accurate to (10 rtol + 1e-13) 1e-3 absolute (tau_c to
-    about rtol / eps relative). Under
-    "overlap" the bodies may never separate (StickError, see _check_separates).
+    (results.END_RULES), the same relative accuracy for both, however small eps (checked against
+    mpmath down to eps = 5e-36). Under "overlap" the bodies may provably never separate
+    (StickError, see _Trap and _check_separates).
     """
     ex = as_exponents(alpha, gamma)
     omega = _check_omega("omega", omega)
@@ -387,17 +468,10 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
     pieces: list[_Piece] = []
     risen = _rise(law, 0.0, min(1.0, law.elastic_scale()), rtol, pieces)
     top = _compress(law, risen, rtol, pieces)
-    try:
-        end, last = _release_forward(law, top, rtol, pieces, _is_stiff(law, top.x, overlap), overlap)
-        if end == "switch":
-            end, last = _land_forward(law, last, top.x, rtol, pieces, _is_stiff(law, last.x, overlap), overlap)
-    except IntegrationError:
-        if overlap:
-            _stuck(law)
-        raise
+    end, last = _release_forward(law, top, rtol, pieces, _is_stiff(law, top.x, overlap), overlap)
+    if end == "switch":
+        end, last = _land_forward(law, last, top.x, rtol, pieces, _is_stiff(law, last.x, overlap), overlap)
     eps = -last.v
-    if overlap and not eps > STICK_SPEED:
-        _stuck(law)
     if end == "force":
         # At the event Omega x_c^(alpha-gamma) = eps exactly; this stays accurate when x_c is
         # far below what the located event time resolves (huge Omega).
@@ -416,11 +490,6 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
                      float(last.tau), float(x_c), end, rtol, trajectory, loss, rule)
 
 
-#: Under the overlap rule a return slower than this at x = 0 is a creep that never ends (see
-#: _check_separates): the u legs cannot follow x' -> 0 and x -> 0 together to the end.
-STICK_SPEED = 1e-12
-
-
 def _check_separates(law: _Law) -> None:
     """Refuse the overlap rule where the bodies provably never separate.
 
@@ -428,15 +497,16 @@ def _check_separates(law: _Law) -> None:
     w = x'/x^(gamma+1) obeys an autonomous equation whose fixed points solve
     (gamma+1) w^2 + w + Omega = 0. When they are real (Omega <= 1/(4 (gamma+1))) the return is
     trapped by the upper one: x and x' go to 0 together, never reaching x = 0 (the overdamped
-    linear dashpot, and LAMMPS' tsuji damping for e below about 0.1).
+    linear dashpot, and LAMMPS' tsuji damping for e below about 0.1). Elsewhere sticking is only
+    ever claimed on proof, by _Trap during the return.
     """
     if law.qa == 2 * law.qg + law.p and law.omega <= 1.0 / (4.0 * (law.gamma + 1.0)):
-        _stuck(law)
+        _stuck(law, f"Omega <= 1/(4 (gamma+1)) = {1.0 / (4.0 * (law.gamma + 1.0)):.6g} for alpha = 2 gamma + 1")
 
 
-def _stuck(law: _Law):
+def _stuck(law: _Law, why: str):
     raise StickError("omega", law.omega, "under the overlap rule contact never ends here: the attractive "
-                     "phase stops the return and the bodies stay together (eps = 0); use end=force")
+                     f"phase stops the return and the bodies stay together (eps = 0; {why}); use end=force")
 
 
 def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,

@@ -152,3 +152,34 @@ class _ForceForm:
 
     def g_from_f(self, u: float, f: float) -> float:
         return f * u ** self.m
+
+
+@dataclass(frozen=True)
+class _PullForm:
+    """Forward creeping return under the overlap rule, once the force pulls (f < 0, alpha > gamma).
+
+    In u the state is (g, tau) with g = f and x' = v = g - Omega u^k: a sum of two negative terms,
+    exact to rounding however small it gets. Carrying v beside f (as _ForceForm does) makes the
+    system redundant: rounding in v at the creep speed Omega x^(alpha-gamma) is never corrected by
+    f's relaxation, and stays as an absolute error in an eps that may be a factor Omega^2 smaller.
+    """
+
+    law: _Law
+
+    def speed(self, u, g):
+        return g - self.law.omega * u ** self.law.k
+
+    def du_rhs(self, u, y):
+        g = y[0]
+        L = self.law
+        w = L.p * u ** (L.p - 1)
+        v = self.speed(u, g)
+        return np.array([-w * u ** L.qg * g / v + L.k * L.omega * u ** (L.k - 1), w / v])
+
+    def du_jac(self, u, y):
+        g = y[0]
+        L = self.law
+        w = L.p * u ** (L.p - 1)
+        v = self.speed(u, g)
+        return np.array([[w * u ** L.qg * L.omega * u ** L.k / v ** 2, 0.0], [-w / v ** 2, 0.0]])
+
