@@ -57,6 +57,7 @@ def test_the_designed_values_reach_their_target_in_yade(kind):
     target = 0.55
     if kind == "viscel-tc":
         design = yade_design(PAIR, eps=target, law=kind, tc=1e-4)
+        assert design["tc"] == 1e-4           # the contact time asked for is kept; en does the work
         contact, setting = yade_viscel_contact(PAIR, tc=design["tc"], en=design["en"]), \
             viscel_material(PAIR, tc=design["tc"], en=design["en"])
     elif kind == "viscel-kn":

@@ -76,7 +76,8 @@ def yade_design(pair: Pair, *, eps: float, law: str, tc: float | None = None, kn
     "viscel-kn" (cn for the given kn) or "mindlin" (betan, and the en Thornton's fit turns into it)."""
     if law == "viscel-tc":
         base = yade_viscel_contact(pair, tc=tc, en=0.5)
-        setting = yade_viscel_setting(pair, _calibrated(base, eps, g), given="tc")
+        # eps depends on en alone here (Omega = (pi^2 + ln^2 en) / (4 ln^2 en)): keep the tc asked for
+        setting = {"tc": tc, "en": yade_viscel_setting(pair, _calibrated(base, eps, g), given="tc")["en"]}
         contact = yade_viscel_contact(pair, **setting)
     elif law == "viscel-kn":
         base = yade_viscel_contact(pair, kn=kn, cn=1.0)
