@@ -174,9 +174,11 @@ def _e_star(E: float, nu: float) -> float:
     return E / (2.0 * (1.0 - nu ** 2))
 
 
-def _liggghts_d1(pair: Pair, model: str, E: float, nu: float, characteristic_velocity) -> float:
+def _liggghts_d1(pair: Pair, model: str, E: float, nu: float, characteristic_velocity, E2=None, nu2=None) -> float:
     model = one_of("model", model, LIGGGHTS_MODELS)
     e_star = _e_star(E, nu)
+    if E2 is not None or nu2 is not None:    # unlike materials: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
+        e_star = 1.0 / (1.0 / (2.0 * e_star) + 1.0 / (2.0 * _e_star(E2, nu2)))
     if model == "hertz":
         return 4.0 / 3.0 * e_star * math.sqrt(pair.R) / pair.m
     v = require_positive_finite("characteristic_velocity", characteristic_velocity)
@@ -185,9 +187,11 @@ def _liggghts_d1(pair: Pair, model: str, E: float, nu: float, characteristic_vel
 
 
 def liggghts_contact(pair: Pair, *, E: float, nu: float, e: float, limit_force: bool = False, model: str = "hertz",
-                     characteristic_velocity: float | None = None) -> Contact:
-    """LIGGGHTS ``model hertz`` or ``model hooke`` with coefficientRestitution e (like particles)."""
-    D1 = _liggghts_d1(pair, model, E, nu, characteristic_velocity)
+                     characteristic_velocity: float | None = None, E2: float | None = None,
+                     nu2: float | None = None) -> Contact:
+    """LIGGGHTS ``model hertz`` or ``model hooke`` with coefficientRestitution e (E2, nu2: the
+    second particle's material where it differs)."""
+    D1 = _liggghts_d1(pair, model, E, nu, characteristic_velocity, E2, nu2)
     end = "force" if limit_force else "overlap"
     if model == "hertz":
         return Contact("3/2", "1/4", D1, math.sqrt(5.0) * _beta(e) * math.sqrt(D1), end)
