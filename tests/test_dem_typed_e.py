@@ -60,3 +60,22 @@ def test_the_lammps_rows_are_what_lammps_does(limit):
     contact = lammps_contact(pair, **setting)
     eps0 = lammps_eps_extrapolated(pair, lammps_pair_coeff(**setting), 0.1, contact.contact_time(0.1))[0]
     assert abs(eps0 / expected - 1) <= 1e-6, (eps0, expected)
+
+
+def test_the_readme_dem_examples_print_what_the_library_gives():
+    from restitution.dem.codes import Pair, yade_viscel_contact
+    from restitution.dem.settings import liggghts_design, yade_design
+    text = README.read_text()
+    pair = Pair.spheres(1e-3, 1e-3, 2500.0)
+    shown = {
+        "0.4996": liggghts_design(pair, eps=0.55, model="hertz", E=5e7, nu=0.3, limit_force=True)["e"],
+        "0.5503, not 0.5": yade_viscel_contact(pair, tc=1e-4, en=0.5).eps(1.0),
+        '"en": 0.4363': yade_design(pair, eps=0.5, law="viscel-tc", tc=1e-4)["en"],
+        '"cn": 0.2337': yade_design(pair, eps=0.5, law="viscel-kn", kn=2e4)["cn"],
+        '"betan": 0.2330': yade_design(pair, eps=0.5, law="mindlin", E=5e7, nu=0.3)["betan"],
+        '"en": 0.49999': yade_design(pair, eps=0.5, law="mindlin", E=5e7, nu=0.3)["en"],
+    }
+    for snippet, value in shown.items():
+        assert snippet in text, snippet
+        printed = re.search(r"[0-9]\.[0-9]+", snippet).group(0)
+        assert abs(value - float(printed)) <= 0.5 * 10.0 ** -(len(printed) - 2), (snippet, value)
