@@ -153,6 +153,8 @@ def test_a_lammps_deck_missing_a_pair_then_complete(tmp_path):
     (LAMMPS_DECK.replace("damping tsuji", "damping coeff_restitution"), "coeff_restitution"),
     (LAMMPS_DECK.replace("pair_style granular", "pair_style gran/hooke 2e4 NULL 50 NULL 0.5 1"), "gran/hooke"),
     ("atom_style sphere\n", "pair_style"),
+    # a value the audit needs from a variable it cannot evaluate is named, not guessed
+    ("variable E equal v_f*2\n" + LAMMPS_DECK.replace("5e7", "${E}"), "unevaluated-variable-E"),
 ])
 def test_what_the_reader_refuses_in_one_line(tmp_path, text, word):
     deck = tmp_path / "in.bad"
