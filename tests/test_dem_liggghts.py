@@ -11,7 +11,7 @@ for a target eps must reach the target in LIGGGHTS to 1e-5 (design).
 import pytest
 
 from restitution.dem.codes import Pair, liggghts_contact
-from restitution.dem.liggghts import available, liggghts_eps_extrapolated, liggghts_pair_style
+from restitution.dem.liggghts import available, liggghts_eps_extrapolated, liggghts_pair_style, liggghts_states
 from restitution.dem.settings import TYPED_E_CODES, liggghts_design
 
 pytestmark = [pytest.mark.dem, pytest.mark.slow,
@@ -58,3 +58,26 @@ def test_the_designed_restitution_reaches_its_target_in_liggghts(model, limit):
     runs = _engine(contact, model, design["e"], limit)
     for g in SPEEDS:
         assert abs(runs[g][0] - target) <= 1e-5, (g, design, runs[g])
+
+
+def test_two_materials_combine_as_documented():
+    """Unlike Young's moduli and Poisson ratios (two atom types): 1/E* = sum (1 - nu_i^2)/E_i."""
+    kw = {"E": 5e7, "nu": 0.3, "E2": 2e8, "nu2": 0.2, "e": 0.5, "limit_force": True}
+    contact = liggghts_contact(PAIR, model="hertz", **kw)
+    one_material = liggghts_contact(PAIR, model="hertz", E=5e7, nu=0.3, e=0.5, limit_force=True)
+    assert contact.D1 > 1.5 * one_material.D1
+    runs = liggghts_eps_extrapolated(PAIR, liggghts_pair_style(model="hertz", **kw), SPEEDS,
+                                     {g: contact.contact_time(g) for g in SPEEDS}, contact.gamma, steps=4000)
+    for g in SPEEDS:
+        assert abs(runs[g][0] / contact.eps(g) - 1) <= 1e-6, (g, contact.eps(g), runs[g])
+    # eps depends on e alone here, so it cannot tell E* apart: the maximum overlap can
+    g = 0.1
+    col = contact.collision(g)
+    t_b = col.tau_b * float(contact.material.time_scale(g))
+    delta_b = col.x_b * float(contact.material.length_scale(g))
+    lines = liggghts_pair_style(model="hertz", **kw)
+    rel, gap = liggghts_states(PAIR, [(lines, g, t_b / 8000, t_b)])[0]
+    assert abs((PAIR.R1 + PAIR.R2 - gap) / delta_b - 1) <= 1e-4, (gap, delta_b)   # measured 1.6e-5; one material: 20 % off
+    assert abs(rel) <= 1e-3 * g                                                    # at rest there, as computed
+    one_b = one_material.collision(g).x_b * float(one_material.material.length_scale(g))
+    assert abs(one_b / delta_b - 1) > 0.1

@@ -18,7 +18,7 @@ from pathlib import Path
 from .codes import Pair
 from .extrapolate import richardson
 
-__all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "liggghts_eps_extrapolated"]
+__all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "liggghts_states", "liggghts_eps_extrapolated"]
 
 _MARK = "RESTITUTION-RESULT"
 
@@ -28,13 +28,18 @@ def available() -> bool:
 
 
 def liggghts_pair_style(*, model: str, E: float, nu: float, e: float, limit_force: bool,
-                        characteristic_velocity: float | None = None) -> str:
-    """The material and pair_style lines of a one-type LIGGGHTS deck for that contact model,
-    frictionless and with no tangential model (head-on contacts need none)."""
-    lines = [f"fix m1 all property/global youngsModulus peratomtype {E!r}",
-             f"fix m2 all property/global poissonsRatio peratomtype {nu!r}",
-             f"fix m3 all property/global coefficientRestitution peratomtypepair 1 {e!r}",
-             "fix m4 all property/global coefficientFriction peratomtypepair 1 0.0"]
+                        characteristic_velocity: float | None = None, E2: float | None = None,
+                        nu2: float | None = None) -> str:
+    """The box, material and pair_style lines of a LIGGGHTS deck for that contact model (one atom
+    type, or two when the second sphere has its own E2, nu2; e for every pair), frictionless and
+    with no tangential model (head-on contacts need none)."""
+    two = E2 is not None
+    n = 2 if two else 1
+    lines = [f"create_box {n} box",
+             f"fix m1 all property/global youngsModulus peratomtype {E!r}" + (f" {E2!r}" if two else ""),
+             f"fix m2 all property/global poissonsRatio peratomtype {nu!r}" + (f" {nu2!r}" if two else ""),
+             f"fix m3 all property/global coefficientRestitution peratomtypepair {n} " + " ".join([repr(e)] * n * n),
+             f"fix m4 all property/global coefficientFriction peratomtypepair {n} " + " ".join(["0.0"] * n * n)]
     if model == "hooke":
         lines.append(f"fix m5 all property/global characteristicVelocity scalar {characteristic_velocity!r}")
     lines.append(f"pair_style gran model {model} tangential no_history limitForce {'on' if limit_force else 'off'}")
@@ -48,6 +53,7 @@ def _run_block(pair: Pair, contact_lines: str, g: float, dt: float, steps: int, 
     rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
     v1 = g * pair.m2 / (pair.m1 + pair.m2)     # centre-of-mass frame
     v2 = -g * pair.m1 / (pair.m1 + pair.m2)
+    second = 2 if contact_lines.startswith("create_box 2") else 1   # the second sphere's atom type
     # touching at zero overlap: no partial first step biases the result
     return f"""
 atom_style granular
@@ -57,13 +63,12 @@ newton off
 communicate single vel yes
 units si
 region box block {-box!r} {box!r} {-box!r} {box!r} {-box!r} {box!r} units box
-create_box 1 box
+{contact_lines}
 neighbor {0.5 * gap!r} bin
 neigh_modify delay 0
-{contact_lines}
 timestep {dt!r}
 create_atoms 1 single {-pair.R1!r} 0 0 units box
-create_atoms 1 single {pair.R2!r} 0 0 units box
+create_atoms {second} single {pair.R2!r} 0 0 units box
 set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
 set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
 set atom 1 vx {v1!r}
@@ -80,6 +85,17 @@ clear
 
 def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
     """eps of each case (contact_lines, g, dt, t_run) in one LIGGGHTS process."""
+    eps = []
+    for (_, g, _, _), (rel, gap) in zip(cases, liggghts_states(pair, cases, timeout)):
+        if gap <= pair.R1 + pair.R2:
+            raise ArithmeticError("the spheres had not separated at the end of the LIGGGHTS run")
+        eps.append(-rel / g)   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
+    return eps
+
+
+def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
+    """(relative velocity v1 - v2, centre distance) at the end of each case (contact_lines, g, dt,
+    t_run), in one LIGGGHTS process."""
     blocks = [_run_block(pair, lines, g, dt, int(math.ceil(t_run / dt)), i)
               for i, (lines, g, dt, t_run) in enumerate(cases)]
     with tempfile.TemporaryDirectory() as tmp:
@@ -94,13 +110,7 @@ def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[f
             found[int(tag)] = (float(rel), float(gap))
     if proc.returncode != 0 or len(found) != len(cases):
         raise RuntimeError(f"liggghts failed (status {proc.returncode}): {(proc.stdout + proc.stderr).strip()[-2000:]}")
-    eps = []
-    for i, (_, g, _, _) in enumerate(cases):
-        rel, gap = found[i]
-        if gap <= pair.R1 + pair.R2:
-            raise ArithmeticError("the spheres had not separated at the end of the LIGGGHTS run")
-        eps.append(-rel / g)   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
-    return eps
+    return [found[i] for i in range(len(cases))]
 
 
 def liggghts_eps_extrapolated(pair: Pair, contact_lines: str, speeds, t_c: dict, gamma, steps: int = 2000) -> dict:
