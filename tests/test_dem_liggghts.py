@@ -81,3 +81,18 @@ def test_two_materials_combine_as_documented():
     assert abs(rel) <= 1e-3 * g                                                    # at rest there, as computed
     one_b = one_material.collision(g).x_b * float(one_material.material.length_scale(g))
     assert abs(one_b / delta_b - 1) > 0.1
+
+
+@pytest.mark.parametrize("model", MODELS, ids=lambda m: m["model"])
+def test_the_stiffness_is_liggghts(model):
+    """eps does not see D1 (it depends on e alone): the overlap at maximum compression does, and
+    with it hertz's E* and R and hooke's characteristic-velocity formula."""
+    contact = liggghts_contact(PAIR, e=0.5, limit_force=False, **MATERIAL, **model)
+    g = 0.1
+    col = contact.collision(g)
+    t_b = col.tau_b * float(contact.material.time_scale(g))
+    delta_b = col.x_b * float(contact.material.length_scale(g))
+    lines = liggghts_pair_style(e=0.5, limit_force=False, **MATERIAL, **model)
+    rel, gap = liggghts_states(PAIR, [(lines, g, t_b / 8000, t_b)])[0]
+    assert abs((PAIR.R1 + PAIR.R2 - gap) / delta_b - 1) <= 1e-4, (gap, delta_b)
+    assert abs(rel) <= 1e-3 * g

@@ -12,7 +12,7 @@ import pytest
 
 from restitution.dem.codes import Pair, yade_mindlin_contact, yade_viscel_contact
 from restitution.dem.settings import TYPED_E_CODES, yade_design
-from restitution.dem.yade import available, mindlin_material, viscel_material, yade_eps_extrapolated
+from restitution.dem.yade import available, mindlin_material, viscel_material, yade_eps_extrapolated, yade_states
 
 pytestmark = [pytest.mark.dem, pytest.mark.slow,
               pytest.mark.skipif(not available(), reason="Yade not installed: as root, apt-get install yade "
@@ -75,3 +75,18 @@ def test_the_designed_values_reach_their_target_in_yade(kind):
     runs = _engine(contact, setting)
     for g in SPEEDS:
         assert abs(runs[g][0] - target) <= 1e-5, (g, design, runs[g])
+
+
+@pytest.mark.parametrize("kind", ["viscel-tc", "viscel-kn", "mindlin"])
+def test_the_stiffness_is_yades(kind):
+    """eps does not see D1 where it depends on the typed e alone (tc and en; Hertz-Mindlin's E*, R
+    and m): the overlap at maximum compression does. Yade's, read at the library's time of maximum
+    compression, must be the library's there (and the spheres at rest relative to each other)."""
+    contact, setting, _ = _forward(kind)
+    g = 0.1
+    col = contact.collision(g)
+    t_b = col.tau_b * float(contact.material.time_scale(g))
+    delta_b = col.x_b * float(contact.material.length_scale(g))
+    rel, gap = yade_states(PAIR, [(*setting, g, t_b / 8000, t_b)])[0]
+    assert abs((PAIR.R1 + PAIR.R2 - gap) / delta_b - 1) <= 1e-4, (gap, delta_b)
+    assert abs(rel) <= 1e-3 * g

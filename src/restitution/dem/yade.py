@@ -22,7 +22,7 @@ from pathlib import Path
 from .codes import Pair
 from .extrapolate import richardson
 
-__all__ = ["available", "yade_eps_runs", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
+__all__ = ["available", "yade_eps_runs", "yade_states", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
 
 _MARK = "RESTITUTION-RESULT "
 
@@ -51,8 +51,7 @@ for material, ip2, law, g, dt, steps in CASES:
     O.dt = dt
     O.run(steps, True)
     gap = O.bodies[1].state.pos[0] - O.bodies[0].state.pos[0]
-    out.append({{"rel": O.bodies[0].state.vel[0] - O.bodies[1].state.vel[0], "gap": gap,
-                "touching": R1 + R2}})
+    out.append({{"rel": O.bodies[0].state.vel[0] - O.bodies[1].state.vel[0], "gap": gap}})
 print({mark!r} + json.dumps(out))
 """
 
@@ -80,6 +79,17 @@ def mindlin_material(pair: Pair, *, E: float, nu: float, en=None, betan=None) ->
 
 def yade_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
     """eps of each case (material, ip2, law, g, dt, t_run) in one Yade process."""
+    eps = []
+    for case, (rel, gap) in zip(cases, yade_states(pair, cases, timeout)):
+        if gap <= pair.R1 + pair.R2:
+            raise ArithmeticError("the spheres had not separated at the end of the Yade run")
+        eps.append(-rel / case[3])   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
+    return eps
+
+
+def yade_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
+    """(relative velocity v1 - v2, centre distance) at the end of each case (material, ip2, law,
+    g, dt, t_run), in one Yade process."""
     rows = [(mat, ip2, law, float(g), float(dt), int(math.ceil(t_run / dt))) for mat, ip2, law, g, dt, t_run in cases]
     script = _SCRIPT.format(radii_masses=repr((pair.R1, pair.R2, pair.m1, pair.m2)), cases=repr(rows), mark=_MARK)
     with tempfile.TemporaryDirectory() as tmp:
@@ -90,13 +100,7 @@ def yade_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float
     lines = [ln for ln in proc.stdout.splitlines() if ln.startswith(_MARK)]
     if proc.returncode != 0 or not lines:
         raise RuntimeError(f"yade failed (status {proc.returncode}): {proc.stderr.strip()[-2000:]}")
-    out = json.loads(lines[-1][len(_MARK):])
-    eps = []
-    for (_, _, _, g, _, _), res in zip(rows, out):
-        if res["gap"] <= res["touching"]:
-            raise ArithmeticError("the spheres had not separated at the end of the Yade run")
-        eps.append(-float(res["rel"]) / g)   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
-    return eps
+    return [(float(res["rel"]), float(res["gap"])) for res in json.loads(lines[-1][len(_MARK):])]
 
 
 def yade_eps_extrapolated(pair: Pair, setting: tuple, speeds, t_c: dict, gamma, steps: int = 2000) -> dict:
