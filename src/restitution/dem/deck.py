@@ -35,14 +35,16 @@ class DeckError(ParameterError):
         self.args = (f"{where}{shown}: {why}",)
 
 
-#: Commands with no bearing on a head-on two-sphere contact (first word, or "fix STYLE").
+#: Commands with no bearing on a head-on two-sphere contact (first word, or "fix STYLE"). Not here,
+#: so named when met: mass (per-type masses), jump/next (loops may rerun with other values).
 _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "communicate", "comm_modify",
-               "processors", "region", "lattice", "change_box", "neighbor", "neigh_modify", "timestep",
-               "thermo", "thermo_style", "thermo_modify", "dump", "dump_modify", "undump", "run", "unfix",
-               "compute", "uncompute", "group", "velocity", "delete_atoms", "write_restart", "restart", "log", "print", "echo", "label", "jump", "next", "shell", "clear", "mass",
-               "create_atoms", "displace_atoms", "write_data", "write_dump", "reset_timestep", "run_style",
-               "min_style", "minimize", "balance", "partition", "suffix", "package", "kspace_style",
-               "special_bonds", "hard_particles", "soft_particles", "modify_timing"}
+               "processors", "region", "lattice", "change_box", "neighbor", "neigh_modify", "timestep", "thermo",
+               "thermo_style", "thermo_modify", "dump", "dump_modify", "undump", "run", "unfix", "compute",
+               "uncompute", "group", "velocity", "delete_atoms", "write_restart", "restart", "log", "print",
+               "echo", "label", "shell", "clear", "create_atoms", "displace_atoms",
+               "write_data", "write_dump", "reset_timestep", "run_style", "min_style", "minimize", "balance",
+               "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
+               "soft_particles", "modify_timing"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "wall/gran", "wall/gran/region", "balance", "insert/pack",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "viscous", "enforce2d", "move", "mesh/surface", "mesh/surface/stress", "freeze", "setforce",
@@ -62,6 +64,7 @@ class Deck:
     density: dict = field(default_factory=dict)   # type -> density
     coeffs: dict = field(default_factory=dict)    # (i, j), i <= j -> (line number, tokens) [LAMMPS]
     props: dict = field(default_factory=dict)     # LIGGGHTS property/global name -> (line no, values)
+    prop_fix: dict = field(default_factory=dict)  # LIGGGHTS property/global name -> "fix ID group"
     model: str = ""                               # LIGGGHTS normal model
     limit_force: bool = False
     style_line: tuple = ()                        # (line number, text) of pair_style
@@ -243,6 +246,7 @@ def _fix(deck, words, where, line, n):
     style = words[3]
     if style == "property/global" and len(words) >= 6:
         deck.props[words[4]] = (n, words[5:])
+        deck.prop_fix[words[4]] = f"fix {words[1]} {words[2]}"     # the exact line keeps the deck's fix ID
     elif style == "particletemplate/sphere":
         tokens, t = words[5:], None
         for k, tok in enumerate(tokens):
@@ -373,8 +377,8 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     if e_new is not None:
         new = list(matrix)
         new[(i - 1) * m + (j - 1)] = new[(j - 1) * m + (i - 1)] = e_new
-        exact = (f"fix m3 all property/global coefficientRestitution peratomtypepair {m} "
-                 + " ".join(f"{x:.10g}" for x in new))
+        head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution peratomtypepair {m}"
+        exact = head + " " + " ".join(f"{x:.10g}" for x in new)
     return {"types": [i, j], "model": f"LIGGGHTS {deck.model}, limitForce {'on' if deck.limit_force else 'off'}",
             "typed_e": e, "end": contact.end, "contact": contact, "exact_line": exact, "line": n}
 
