@@ -11,6 +11,7 @@
 
 from __future__ import annotations
 
+from ..core.errors import one_of
 from .calibrate import calibrate
 from .codes import (Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e,
                     thornton_betan, tsuji_a, yade_mindlin_contact, yade_mindlin_en, yade_viscel_contact,
@@ -74,6 +75,7 @@ def yade_design(pair: Pair, *, eps: float, law: str, tc: float | None = None, kn
                 E: float | None = None, nu: float | None = None, g: float = 1.0) -> dict:
     """Yade values that give ``eps`` under its clamp: law "viscel-tc" (en for the given tc),
     "viscel-kn" (cn for the given kn) or "mindlin" (betan, and the en Thornton's fit turns into it)."""
+    law = one_of("law", law, ("viscel-tc", "viscel-kn", "mindlin"))
     if law == "viscel-tc":
         base = yade_viscel_contact(pair, tc=tc, en=0.5)
         # eps depends on en alone here (Omega = (pi^2 + ln^2 en) / (4 ln^2 en)): keep the tc asked for
