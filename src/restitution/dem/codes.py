@@ -51,7 +51,7 @@ material; Yade's laws never let the normal force turn attractive, so the end rul
   F = k_no delta^(3/2) + 2 beta_n sqrt(m (3/2) k_no sqrt(delta)) delta', k_no = (4/3) E* sqrt(R):
   alpha = 3/2, gamma = 1/4, D1 = k_no/m, D2 = 2 beta_n sqrt(3 D1 / 2). Given en, Yade takes beta_n
   from the fit (B6)-(B7) of Thornton, Cummins and Cleary (Powder Technol. 233, 2013, Table 2), made
-  for the force rule: eps is en to about 1e-3 (:func:`thornton_betan`).
+  for the force rule: eps is en within 3e-4 for en <= 0.9, but 0.9789 for en = 0.99 (:func:`thornton_betan`).
 """
 
 from __future__ import annotations
