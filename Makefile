@@ -20,9 +20,9 @@ $(STAMP): pyproject.toml constraints.txt
 venv: $(STAMP)
 
 # The whole suite, pipeline builds included; installs TeX first like `make paper`, and as root
-# Chromium (the report opened in a browser) and SLURM with its Snakemake plugin (the cluster
-# profile run for real). Tests whose tools are missing are skipped, with the reason in the summary.
-test: $(STAMP) tex browser slurm-tools
+# Chromium (the report opened in a browser), SLURM with its Snakemake plugin (the cluster
+# profile run for real) and the Yade and LIGGGHTS DEM engines. Tests whose tools are missing are skipped, with the reason in the summary.
+test: $(STAMP) tex browser slurm-tools dem-engines
 	$(BIN)/python -m pytest -q -rs -n 2
 
 # The library and the CLI only, no pipeline build and no long sweeps (under a minute).
@@ -50,7 +50,7 @@ PDF          := results/paper/restitution.pdf
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk poppler-utils
 HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/null 2>&1
 
-.PHONY: paper tex browser slurm-tools slurm outputs verify arxiv report diff check expected reproducible bench notebooks
+.PHONY: paper tex browser slurm-tools dem-engines slurm outputs verify arxiv report diff check expected reproducible bench notebooks
 
 # Everything, PDF included; a second run does nothing. Without TeX (and no root to install it),
 # everything except the PDF, and a message saying how to get it.
@@ -98,6 +98,12 @@ endef
 # Headless Chromium, with which a test opens results/report.html and looks at its figures.
 browser:
 	$(call apt,chromium,chromium,chromium)
+
+# The Yade and LIGGGHTS engines, which tests/test_dem_yade.py and test_dem_liggghts.py run head-on,
+# with LIGGGHTS' and LAMMPS' shipped example decks, which tests/test_dem_deck.py reads.
+dem-engines:
+	$(call apt,yade,yade,yade)
+	$(call apt,liggghts,liggghts liggghts-doc lammps-examples,liggghts)
 
 # A one-node SLURM cluster's daemons (workflow/tools/slurm-local) and, as root, Snakemake's SLURM
 # executor plugin at the version constraints.txt pins: a test runs the cluster profile for real.

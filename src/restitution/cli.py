@@ -88,7 +88,61 @@ def build_parser() -> argparse.ArgumentParser:
     k.add_argument("--json", action="store_true", help="machine-readable output")
 
     add_lammps_subcommand(sub)
+    add_deck_subcommand(sub)
     return parser
+
+
+def add_deck_subcommand(subparsers) -> None:
+    d = subparsers.add_parser(
+        "deck", help="the eps a LAMMPS or LIGGGHTS input deck really gives, for every type pair",
+        description="Reads pair_style granular (LAMMPS) or pair_style gran model hertz|hooke (LIGGGHTS) decks. "
+                    "One --g: five speeds over two decades around it; several: those speeds.")
+    d.add_argument("file", help="the input script")
+    d.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s)")
+    d.add_argument("--radius", nargs="+", default=[], metavar="T=R", help="radius of atom type T")
+    d.add_argument("--density", nargs="+", default=[], metavar="T=RHO", help="density of atom type T")
+    d.add_argument("--json", action="store_true", help="machine-readable output")
+
+
+def _per_type(name: str, items) -> dict:
+    out = {}
+    for item in items:
+        t, _, value = item.partition("=")
+        if not t.isdigit() or int(t) < 1:
+            raise ParameterError(name, item, "give TYPE=VALUE with an atom type >= 1, e.g. 1=0.001")
+        out[int(t)] = number_argument(value)
+        if not math.isfinite(out[int(t)]) or out[int(t)] <= 0:
+            raise ParameterError(name, item, "the value must be a finite number > 0")
+    return out
+
+
+def _run_deck(args, out) -> None:
+    from .dem.deck import audit_deck
+    try:
+        with open(args.file, encoding="utf-8", errors="replace") as fh:
+            text = fh.read()
+    except OSError as exc:
+        raise ParameterError("file", args.file, f"cannot be read ({exc.strerror})") from None
+    for g in args.g:
+        if not math.isfinite(g) or g <= 0:
+            raise ParameterError("g", g, "must be a finite number > 0")
+    speeds = [args.g[0] * 10.0 ** k for k in (-1, -0.5, 0, 0.5, 1)] if len(args.g) == 1 else list(args.g)
+    res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density))
+    for row in res["unknown_lines"]:     # never guessed: each named, one per line
+        print(f"restitution deck: line {row['line']} not understood: {row['text']}", file=sys.stderr)
+    if args.json:
+        _write_json(res, out)
+        return
+    if res["ignored"]:
+        out.write(f"# {res['code']} deck; no part in a head-on contact: {', '.join(res['ignored'])}\n")
+    for p in res["pairs"]:
+        typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
+        out.write(f"types {p['types'][0]} {p['types'][1]}: {p['model']} ({typed}), end rule {p['end']}\n")
+        for g, e, stick in zip(p["speeds"], p["eps"], p["sticks"]):
+            out.write(f"  g {g:<12.6g} " + ("sticks: the attractive phase keeps the spheres together (eps 0)\n"
+                                            if stick else f"eps {e:.10f}\n"))
+        if p["exact_line"]:
+            out.write(f"  for eps = e exactly: {p['exact_line']}\n")
 
 
 def add_lammps_subcommand(subparsers) -> None:
@@ -300,7 +354,7 @@ def main(argv=None, out=None) -> int:
         _refuse_repeated_options(argv)
         args = build_parser().parse_args(_attach_negative_values(argv))
         {"series": _run_series, "collide": _run_collide, "eps": run_eps,
-         "calibrate": _run_calibrate, "lammps": _run_lammps}[args.command](args, out)
+         "calibrate": _run_calibrate, "lammps": _run_lammps, "deck": _run_deck}[args.command](args, out)
     except _UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_USAGE

@@ -30,22 +30,44 @@ MercuryDPM's Hertzian viscoelastic species set from an elastic modulus and a res
 coefficient uses the same Tsuji-type law; its LinearViscoelastic species set from a collision
 time t_c and restitution e (setCollisionTimeAndRestitutionCoefficient with the effective mass)
 gives k = m (pi^2 + ln^2 e) / t_c^2, eta = -2 m ln e / t_c: alpha = 1, gamma = 0, D1 = k/m,
-D2 = eta/m. Both codes let the normal force turn attractive: "overlap". These two codes were not
-run here; their rows follow their documentation.
+D2 = eta/m. Both codes let the normal force turn attractive: "overlap". MercuryDPM was not run
+here; its rows follow its documentation.
+
+LIGGGHTS ``model hooke`` (3.8, checked against the engine in tests/test_dem_liggghts.py): k_n =
+(16/15) sqrt(R) E* (15 m V^2 / (16 sqrt(R) E*))^(1/5) with V the ``characteristicVelocity``, gamma_n
+= 2 beta sqrt(m k_n): alpha = 1, gamma = 0, D1 = k_n/m, D2 = 2 beta sqrt(D1). With ``limitForce
+off`` eps is e exactly at every speed; with ``on`` it is higher (the force rule on a linear dashpot).
+
+Yade (2023.02a, checked against the engine in tests/test_dem_yade.py), both particles of one
+material; Yade's laws never let the normal force turn attractive, so the end rule is "force":
+
+* ``ViscElMat(tc, en)``: k_n = m (pi^2 + ln^2 en) / tc^2, c_n = -2 m ln en / tc with the pair's
+  effective mass: alpha = 1, gamma = 0, D1 = (pi^2 + ln^2 en)/tc^2, D2 = -2 ln en / tc. These are
+  the overlap rule's formulas: under Yade's clamp eps is above en (0.5503 for en = 0.5).
+* ``ViscElMat(kn, cn)``: the values are per particle and Yade joins the two materials in series,
+  k_n = kn1 kn2/(kn1 + kn2): for one material D1 = kn/(2m), D2 = cn/(2m) (the documentation
+  calls kn "normal elastic stiffness" and does not say it is halved).
+* Hertz-Mindlin (``FrictMat`` with ``Ip2_FrictMat_FrictMat_MindlinPhys(en=...)`` or ``betan``):
+  F = k_no delta^(3/2) + 2 beta_n sqrt(m (3/2) k_no sqrt(delta)) delta', k_no = (4/3) E* sqrt(R):
+  alpha = 3/2, gamma = 1/4, D1 = k_no/m, D2 = 2 beta_n sqrt(3 D1 / 2). Given en, Yade takes beta_n
+  from the fit (B6)-(B7) of Thornton, Cummins and Cleary (Powder Technol. 233, 2013, Table 2), made
+  for the force rule: eps is en within 3e-4 for en <= 0.9, but 0.9789 for en = 0.99 (:func:`thornton_betan`).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from fractions import Fraction
 
 from scipy.optimize import brentq
 
 from ..core.errors import ParameterError, one_of, require_positive_finite
 from .contact import Contact
 
-__all__ = ["Pair", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "mercury_linear_contact",
-           "NORMAL_MODELS", "DAMPING_MODELS"]
+__all__ = ["Pair", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
+           "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
+           "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "LIGGGHTS_MODELS"]
 
 NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
 DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji")
@@ -142,10 +164,105 @@ def lammps_pair_coeff(*, normal: str, damping: str, eta_n0: float, limit_damping
     return line + (" limit_damping" if limit_damping else "")
 
 
-def liggghts_contact(pair: Pair, *, E: float, nu: float, e: float, limit_force: bool = False) -> Contact:
-    """LIGGGHTS ``model hertz`` with coefficientRestitution e (like particles)."""
-    _, D1 = _d1(pair, "hertz/material", None, E, nu)
-    return Contact("3/2", "1/4", D1, math.sqrt(5.0) * _beta(e) * math.sqrt(D1), "force" if limit_force else "overlap")
+LIGGGHTS_MODELS = ("hertz", "hooke")
+
+
+def _e_star(E: float, nu: float) -> float:
+    E = require_positive_finite("E", E)
+    if nu is None or not -1.0 < nu < 0.5:
+        raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5)")
+    return E / (2.0 * (1.0 - nu ** 2))
+
+
+def _liggghts_d1(pair: Pair, model: str, E: float, nu: float, characteristic_velocity, E2=None, nu2=None) -> float:
+    model = one_of("model", model, LIGGGHTS_MODELS)
+    e_star = _e_star(E, nu)
+    if E2 is not None or nu2 is not None:    # unlike materials: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
+        e_star = 1.0 / (1.0 / (2.0 * e_star) + 1.0 / (2.0 * _e_star(E2, nu2)))
+    if model == "hertz":
+        return 4.0 / 3.0 * e_star * math.sqrt(pair.R) / pair.m
+    v = require_positive_finite("characteristic_velocity", characteristic_velocity)
+    sr = math.sqrt(pair.R)
+    return 16.0 / 15.0 * sr * e_star * (15.0 * pair.m * v ** 2 / (16.0 * sr * e_star)) ** 0.2 / pair.m
+
+
+def liggghts_contact(pair: Pair, *, E: float, nu: float, e: float, limit_force: bool = False, model: str = "hertz",
+                     characteristic_velocity: float | None = None, E2: float | None = None,
+                     nu2: float | None = None) -> Contact:
+    """LIGGGHTS ``model hertz`` or ``model hooke`` with coefficientRestitution e (E2, nu2: the
+    second particle's material where it differs)."""
+    D1 = _liggghts_d1(pair, model, E, nu, characteristic_velocity, E2, nu2)
+    end = "force" if limit_force else "overlap"
+    if model == "hertz":
+        return Contact("3/2", "1/4", D1, math.sqrt(5.0) * _beta(e) * math.sqrt(D1), end)
+    return Contact("1", "0", D1, 2.0 * _beta(e) * math.sqrt(D1), end)
+
+
+def liggghts_e(contact: Contact) -> float:
+    """The coefficientRestitution that gives this contact's D2 (the inverse of liggghts_contact's
+    damping: D2 / sqrt(D1) = sqrt(5) beta for hertz, 2 beta for hooke)."""
+    factor = math.sqrt(5.0) if contact.alpha == Fraction(3, 2) else 2.0
+    return _e_from_beta(contact.D2 / math.sqrt(contact.D1) / factor)
+
+
+def yade_viscel_contact(pair: Pair, *, tc: float | None = None, en: float | None = None, kn: float | None = None,
+                        cn: float | None = None) -> Contact:
+    """Yade ``ViscElMat`` given (tc, en) or (kn, cn), both particles of that material."""
+    if tc is not None or en is not None:
+        if kn is not None or cn is not None:
+            raise ParameterError("kn", kn, "give either (tc, en) or (kn, cn), as Yade requires")
+        tc = require_positive_finite("tc", tc)
+        ln_e = math.log(_unit("en", en))
+        return Contact("1", "0", (math.pi ** 2 + ln_e ** 2) / tc ** 2, -2.0 * ln_e / tc, "force")
+    kn, cn = require_positive_finite("kn", kn), require_positive_finite("cn", cn)
+    return Contact("1", "0", kn / (2.0 * pair.m), cn / (2.0 * pair.m), "force")   # two materials in series
+
+
+def yade_viscel_setting(pair: Pair, contact: Contact, *, given: str) -> dict:
+    """The ViscElMat values that give ``contact`` (alpha = 1, gamma = 0): {"tc", "en"} when
+    ``given`` = "tc" (contact time and en both follow from D1, D2), {"kn", "cn"} for "kn"."""
+    given = one_of("given", given, ("tc", "kn"))
+    if given == "kn":
+        return {"kn": 2.0 * pair.m * contact.D1, "cn": 2.0 * pair.m * contact.D2}
+    # D2 = -2 ln en / tc and D1 = (pi^2 + ln^2 en)/tc^2: zeta = D2 / (2 sqrt D1) = -ln en / sqrt(pi^2 + ln^2)
+    zeta = contact.D2 / (2.0 * math.sqrt(contact.D1))
+    if not 0.0 < zeta < 1.0:
+        raise ParameterError("D2", contact.D2, "needs D2 < 2 sqrt(D1): ViscElMat's (tc, en) form is underdamped")
+    ln_e = -math.pi * zeta / math.sqrt(1.0 - zeta ** 2)
+    return {"tc": -2.0 * ln_e / contact.D2, "en": math.exp(ln_e)}
+
+
+#: Thornton, Cummins and Cleary (2013), Table 2: the coefficients h_1..h_10 of the polynomial in
+#: (B7), with which Yade turns en into the Hertz-Mindlin damping ratio beta_n (B6).
+THORNTON_H = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711, -7206.864, 11494.29, -11342.18, 6276.757,
+              -1489.915)
+
+
+def thornton_betan(en: float) -> float:
+    """beta_n = sqrt(1 / (1 - (1 + en)^2 exp(a(en))) - 1), a(en) = sum h_k en^k (their (B6)-(B7))."""
+    en = _unit("en", en)
+    a = sum(h * en ** (k + 1) for k, h in enumerate(THORNTON_H))
+    return math.sqrt(1.0 / (1.0 - (1.0 + en) ** 2 * math.exp(a)) - 1.0)
+
+
+def yade_mindlin_contact(pair: Pair, *, E: float, nu: float, en: float | None = None,
+                         betan: float | None = None) -> Contact:
+    """Yade Hertz-Mindlin (Law2_ScGeom_MindlinPhys_Mindlin) with en (through Thornton's fit) or betan."""
+    if (en is None) == (betan is None):
+        raise ParameterError("en", en, "give exactly one of en and betan, as Yade requires")
+    beta = thornton_betan(en) if en is not None else require_positive_finite("betan", betan)
+    D1 = 4.0 / 3.0 * _e_star(E, nu) * math.sqrt(pair.R) / pair.m
+    return Contact("3/2", "1/4", D1, 2.0 * beta * math.sqrt(1.5 * D1), "force")
+
+
+def yade_mindlin_en(contact: Contact) -> dict:
+    """{"betan", "en"} that give this Hertz-Mindlin contact's D2; en is None where Thornton's fit
+    cannot give that betan (the fit is monotonic in en on (0, 1), so one en at most)."""
+    beta = contact.D2 / (2.0 * math.sqrt(1.5 * contact.D1))
+    lo, hi = 1e-6, 1.0 - 1e-12
+    f = lambda e: thornton_betan(e) - beta   # noqa: E731
+    en = brentq(f, lo, hi, xtol=1e-15, rtol=1e-15) if f(lo) * f(hi) < 0 else None
+    return {"betan": beta, "en": en}
 
 
 def mercury_linear_contact(pair: Pair, *, t_c: float, e: float) -> Contact:
@@ -159,6 +276,12 @@ def _unit(name: str, e: float) -> float:
     if not 0.0 < e < 1.0:
         raise ParameterError(name, e, "must be a restitution coefficient in (0, 1)")
     return float(e)
+
+
+def _e_from_beta(beta: float) -> float:
+    if not 0.0 < beta < 1.0:
+        raise ParameterError("D2", beta, "needs beta = -ln e / sqrt(ln^2 e + pi^2) in (0, 1)")
+    return math.exp(-math.pi * beta / math.sqrt(1.0 - beta ** 2))
 
 
 def _beta(e: float) -> float:

@@ -1,18 +1,25 @@
-"""Both directions between a LAMMPS setting and eps, for a modeller:
+"""Both directions between a DEM code's setting and eps, for a modeller:
 
 * audit: "these pair_coeff settings give this eps(v)" (:func:`lammps_audit`), including how far the
   e typed into LAMMPS' tsuji damping is from the eps it produces (:func:`tsuji_audit`);
 * design: "these settings reach eps at v" (:func:`lammps_design`): the calibrated damping written
-  as a ready ``pair_coeff`` line.
+  as a ready ``pair_coeff`` line; :func:`liggghts_design` and :func:`yade_design` the same for the
+  coefficientRestitution of LIGGGHTS and the ViscElMat / Hertz-Mindlin values of Yade;
+* the typed e against the eps it really gives, for every code whose damping is set from an e
+  (:func:`typed_e_table`).
 """
 
 from __future__ import annotations
 
+from ..core.errors import one_of
 from .calibrate import calibrate
-from .codes import Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, tsuji_a
+from .codes import (Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e,
+                    thornton_betan, tsuji_a, yade_mindlin_contact, yade_mindlin_en, yade_viscel_contact,
+                    yade_viscel_setting)
 from .contact import Contact
 
-__all__ = ["lammps_audit", "lammps_design", "tsuji_audit"]
+__all__ = ["lammps_audit", "lammps_design", "tsuji_audit", "liggghts_design", "yade_design", "typed_e_table",
+           "TYPED_E_CODES"]
 
 
 def lammps_audit(pair: Pair, speeds, **setting) -> dict:
@@ -47,3 +54,65 @@ def tsuji_audit(es, exponents=("3/2", "1/4")) -> list[dict]:
         got = {end: Contact(alpha, gamma, 1.0, a, end).eps(1.0) for end in ("force", "overlap")}
         rows.append({"e": float(e), "A": a, "eps_limit_damping": got["force"], "eps_default": got["overlap"]})
     return rows
+
+
+def _calibrated(base: Contact, eps: float, g: float) -> Contact:
+    return calibrate(base.alpha, base.gamma, D1=base.D1, eps=eps, g=g, end=base.end).contact
+
+
+def liggghts_design(pair: Pair, *, eps: float, model: str, E: float, nu: float, limit_force: bool,
+                    characteristic_velocity: float | None = None, g: float = 1.0) -> dict:
+    """The coefficientRestitution that makes LIGGGHTS give ``eps`` (at every speed: both models'
+    damping makes eps speed-independent, g only names where it is computed)."""
+    stiffness = {"model": model, "E": E, "nu": nu, "characteristic_velocity": characteristic_velocity}
+    base = liggghts_contact(pair, e=0.5, limit_force=limit_force, **stiffness)
+    contact = _calibrated(base, eps, g)
+    e = liggghts_e(contact)
+    return {"e": e, "eps": contact.eps(g), **contact.as_dict(), "contact_time": contact.contact_time(g)}
+
+
+def yade_design(pair: Pair, *, eps: float, law: str, tc: float | None = None, kn: float | None = None,
+                E: float | None = None, nu: float | None = None, g: float = 1.0) -> dict:
+    """Yade values that give ``eps`` under its clamp: law "viscel-tc" (en for the given tc),
+    "viscel-kn" (cn for the given kn) or "mindlin" (betan, and the en Thornton's fit turns into it)."""
+    law = one_of("law", law, ("viscel-tc", "viscel-kn", "mindlin"))
+    if law == "viscel-tc":
+        base = yade_viscel_contact(pair, tc=tc, en=0.5)
+        # eps depends on en alone here (Omega = (pi^2 + ln^2 en) / (4 ln^2 en)): keep the tc asked for
+        setting = {"tc": tc, "en": yade_viscel_setting(pair, _calibrated(base, eps, g), given="tc")["en"]}
+        contact = yade_viscel_contact(pair, **setting)
+    elif law == "viscel-kn":
+        base = yade_viscel_contact(pair, kn=kn, cn=1.0)
+        setting = yade_viscel_setting(pair, _calibrated(base, eps, g), given="kn")
+        contact = yade_viscel_contact(pair, **setting)
+    else:
+        base = yade_mindlin_contact(pair, E=E, nu=nu, betan=0.5)
+        setting = yade_mindlin_en(_calibrated(base, eps, g))
+        contact = yade_mindlin_contact(pair, E=E, nu=nu, betan=setting["betan"])
+    return {**setting, "eps": contact.eps(g), **contact.as_dict()}
+
+
+#: The codes whose damping is set from a typed restitution coefficient e, with their end rule;
+#: each gives eps as a function of e alone (D2 / sqrt(D1) depends on e only and Omega = D1 / D2^2
+#: for these exponents), whatever the particles and the speed.
+TYPED_E_CODES = {
+    "LAMMPS hertz + damping tsuji, limit_damping": lambda e: Contact("3/2", "1/4", 1.0, tsuji_a(e), "force"),
+    "LAMMPS hertz + damping tsuji (default)": lambda e: Contact("3/2", "1/4", 1.0, tsuji_a(e), "overlap"),
+    "LIGGGHTS hertz, limitForce off (default)": lambda e: liggghts_contact(_UNIT_PAIR, E=1.0, nu=0.0, e=e),
+    "LIGGGHTS hertz, limitForce on": lambda e: liggghts_contact(_UNIT_PAIR, E=1.0, nu=0.0, e=e, limit_force=True),
+    "LIGGGHTS hooke, limitForce off (default)":
+        lambda e: liggghts_contact(_UNIT_PAIR, E=1.0, nu=0.0, e=e, model="hooke", characteristic_velocity=1.0),
+    "LIGGGHTS hooke, limitForce on":
+        lambda e: liggghts_contact(_UNIT_PAIR, E=1.0, nu=0.0, e=e, model="hooke", characteristic_velocity=1.0,
+                                   limit_force=True),
+    "Yade ViscElMat (tc, en)": lambda e: yade_viscel_contact(_UNIT_PAIR, tc=1.0, en=e),
+    "Yade Hertz-Mindlin en": lambda e: Contact("3/2", "1/4", 1.0, 2.0 * thornton_betan(e) * 1.5 ** 0.5, "force"),
+}
+_UNIT_PAIR = Pair(1.0, 1.0, 1.0, 1.0)
+
+
+def typed_e_table(es, codes=None) -> list[dict]:
+    """For each typed e, the eps each code really gives (relative accuracy 1e-10: the library's
+    reference integration at rtol 1e-12)."""
+    codes = list(TYPED_E_CODES) if codes is None else codes
+    return [{"e": float(e), **{c: TYPED_E_CODES[c](float(e)).eps(1.0) for c in codes}} for e in es]

@@ -1,0 +1,122 @@
+"""Two spheres colliding head-on in the real LIGGGHTS engine (Debian package ``liggghts``).
+
+One input file holds every requested collision, separated by LIGGGHTS' ``clear`` (the engine takes
+about a second to start); each run prints its final velocities on a marked line, read back here.
+LIGGGHTS integrates like LAMMPS (fix nve/sphere: velocity Verlet, the force from the half-step
+velocity), so eps is first order in dt: :func:`liggghts_eps_extrapolated` runs three steps and
+removes the two leading orders (restitution.dem.extrapolate).
+"""
+
+from __future__ import annotations
+
+import math
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+from .codes import Pair
+from .extrapolate import richardson
+
+__all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "liggghts_states", "liggghts_eps_extrapolated"]
+
+_MARK = "RESTITUTION-RESULT"
+
+
+def available() -> bool:
+    return shutil.which("liggghts") is not None
+
+
+def liggghts_pair_style(*, model: str, E: float, nu: float, e: float, limit_force: bool,
+                        characteristic_velocity: float | None = None, E2: float | None = None,
+                        nu2: float | None = None) -> str:
+    """The box, material and pair_style lines of a LIGGGHTS deck for that contact model (one atom
+    type, or two when the second sphere has its own E2, nu2; e for every pair), frictionless and
+    with no tangential model (head-on contacts need none)."""
+    two = E2 is not None
+    n = 2 if two else 1
+    lines = [f"create_box {n} box",
+             f"fix m1 all property/global youngsModulus peratomtype {E!r}" + (f" {E2!r}" if two else ""),
+             f"fix m2 all property/global poissonsRatio peratomtype {nu!r}" + (f" {nu2!r}" if two else ""),
+             f"fix m3 all property/global coefficientRestitution peratomtypepair {n} " + " ".join([repr(e)] * n * n),
+             f"fix m4 all property/global coefficientFriction peratomtypepair {n} " + " ".join(["0.0"] * n * n)]
+    if model == "hooke":
+        lines.append(f"fix m5 all property/global characteristicVelocity scalar {characteristic_velocity!r}")
+    lines.append(f"pair_style gran model {model} tangential no_history limitForce {'on' if limit_force else 'off'}")
+    lines.append("pair_coeff * *")
+    return "\n".join(lines)
+
+
+def _run_block(pair: Pair, contact_lines: str, g: float, dt: float, steps: int, tag: int) -> str:
+    gap = pair.R1 + pair.R2
+    box = 4.0 * gap
+    rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
+    v1 = g * pair.m2 / (pair.m1 + pair.m2)     # centre-of-mass frame
+    v2 = -g * pair.m1 / (pair.m1 + pair.m2)
+    second = 2 if contact_lines.startswith("create_box 2") else 1   # the second sphere's atom type
+    # touching at zero overlap: no partial first step biases the result
+    return f"""
+atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region box block {-box!r} {box!r} {-box!r} {box!r} {-box!r} {box!r} units box
+{contact_lines}
+neighbor {0.5 * gap!r} bin
+neigh_modify delay 0
+timestep {dt!r}
+create_atoms 1 single {-pair.R1!r} 0 0 units box
+create_atoms {second} single {pair.R2!r} 0 0 units box
+set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
+set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
+set atom 1 vx {v1!r}
+set atom 2 vx {v2!r}
+fix integr all nve/sphere
+variable rel equal vx[1]-vx[2]
+variable gap equal x[2]-x[1]
+thermo {steps}
+run {steps}
+print "{_MARK} {tag} ${{rel}} ${{gap}}"
+clear
+"""
+
+
+def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
+    """eps of each case (contact_lines, g, dt, t_run) in one LIGGGHTS process."""
+    eps = []
+    for (_, g, _, _), (rel, gap) in zip(cases, liggghts_states(pair, cases, timeout)):
+        if gap <= pair.R1 + pair.R2:
+            raise ArithmeticError("the spheres had not separated at the end of the LIGGGHTS run")
+        eps.append(-rel / g)   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
+    return eps
+
+
+def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
+    """(relative velocity v1 - v2, centre distance) at the end of each case (contact_lines, g, dt,
+    t_run), in one LIGGGHTS process."""
+    blocks = [_run_block(pair, lines, g, dt, int(math.ceil(t_run / dt)), i)
+              for i, (lines, g, dt, t_run) in enumerate(cases)]
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "in.collide"
+        path.write_text("".join(blocks))
+        proc = subprocess.run(["liggghts", "-in", str(path), "-echo", "none", "-log", "none"], cwd=tmp,
+                              capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+    found = {}
+    for ln in proc.stdout.splitlines():
+        if ln.startswith(_MARK):
+            _, tag, rel, gap = ln.split()
+            found[int(tag)] = (float(rel), float(gap))
+    if proc.returncode != 0 or len(found) != len(cases):
+        raise RuntimeError(f"liggghts failed (status {proc.returncode}): {(proc.stdout + proc.stderr).strip()[-2000:]}")
+    return [found[i] for i in range(len(cases))]
+
+
+def liggghts_eps_extrapolated(pair: Pair, contact_lines: str, speeds, t_c: dict, gamma, steps: int = 2000) -> dict:
+    """{g: (eps extrapolated to dt = 0, eps at t_c/steps, /2, /4)} for one setting at each speed,
+    all in one LIGGGHTS process; t_c maps each speed to its contact time, gamma is the damping
+    exponent (the extrapolation's orders, see restitution.dem.extrapolate)."""
+    cases = [(contact_lines, g, t_c[g] / steps / k, 1.5 * t_c[g]) for g in speeds for k in (1, 2, 4)]
+    eps = liggghts_eps_runs(pair, cases)
+    return {g: (richardson(*eps[3 * i: 3 * i + 3], gamma), *eps[3 * i: 3 * i + 3]) for i, g in enumerate(speeds)}

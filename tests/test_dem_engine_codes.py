@@ -1,0 +1,54 @@
+"""The LIGGGHTS and Yade rows of restitution.dem.codes without the engines: round trips, the
+numbers Yade itself reported, and one-line refusals."""
+
+import math
+
+import pytest
+
+from restitution.core.errors import ParameterError
+from restitution.dem.codes import (Pair, liggghts_contact, liggghts_e, thornton_betan, yade_mindlin_contact,
+                                   yade_mindlin_en, yade_viscel_contact, yade_viscel_setting)
+from restitution.dem.settings import yade_design
+
+PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
+
+
+def test_thornton_fit_is_what_yade_computes():
+    """MindlinPhys.betan that Yade 2023.02a set for en = 0.5 (read from the engine's interaction)."""
+    assert thornton_betan(0.5) == pytest.approx(0.2330248576834424, rel=1e-14)
+    es = [0.05 * k for k in range(1, 20)]
+    assert all(thornton_betan(a) > thornton_betan(b) for a, b in zip(es, es[1:]))   # one en per betan
+
+
+@pytest.mark.parametrize("model", [{"model": "hertz"}, {"model": "hooke", "characteristic_velocity": 2.0}])
+@pytest.mark.parametrize("e", [0.05, 0.5, 0.97])
+def test_liggghts_e_inverts_the_damping(model, e):
+    contact = liggghts_contact(PAIR, E=5e7, nu=0.3, e=e, **model)
+    assert liggghts_e(contact) == pytest.approx(e, rel=1e-12)
+
+
+def test_yade_settings_invert_the_contacts():
+    c = yade_viscel_contact(PAIR, tc=2e-4, en=0.3)
+    assert yade_viscel_setting(PAIR, c, given="tc") == pytest.approx({"tc": 2e-4, "en": 0.3}, rel=1e-12)
+    c = yade_viscel_contact(PAIR, kn=3e4, cn=0.4)
+    assert yade_viscel_setting(PAIR, c, given="kn") == pytest.approx({"kn": 3e4, "cn": 0.4}, rel=1e-12)
+    assert c.D1 == pytest.approx(3e4 / (2 * PAIR.m))          # per particle, in series
+    c = yade_mindlin_contact(PAIR, E=5e7, nu=0.3, en=0.42)
+    assert yade_mindlin_en(c)["en"] == pytest.approx(0.42, rel=1e-10)
+    assert c.D2 / math.sqrt(c.D1) == pytest.approx(2 * thornton_betan(0.42) * math.sqrt(1.5))
+
+
+@pytest.mark.parametrize("call, field", [
+    (lambda: yade_viscel_contact(PAIR, tc=1e-4, en=0.5, kn=1e4), "kn"),
+    (lambda: yade_viscel_contact(PAIR, tc=1e-4, en=1.0), "en"),
+    (lambda: yade_mindlin_contact(PAIR, E=5e7, nu=0.3, en=0.5, betan=0.2), "en"),
+    (lambda: yade_mindlin_contact(PAIR, E=5e7, nu=0.7, en=0.5), "nu"),
+    (lambda: liggghts_contact(PAIR, E=5e7, nu=0.3, e=0.5, model="hooke"), "characteristic_velocity"),
+    (lambda: liggghts_contact(PAIR, E=5e7, nu=0.3, e=0.5, model="hysteresis"), "model"),
+    (lambda: yade_design(PAIR, eps=0.5, law="hertz"), "law"),
+    (lambda: yade_design(PAIR, eps=1.2, law="viscel-kn", kn=1e4), "eps"),
+])
+def test_one_line_refusals(call, field):
+    with pytest.raises(ParameterError) as info:
+        call()
+    assert info.value.field == field and "\n" not in str(info.value)

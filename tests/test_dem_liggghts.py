@@ -1,0 +1,98 @@
+"""The real LIGGGHTS engine (Debian package ``liggghts``; `make test` installs it as root) against
+the library and restitution.dem.codes.
+
+Two spheres (unlike radii and densities, so the effective mass and radius matter) collide head-on
+under ``model hertz`` and ``model hooke`` with coefficientRestitution, ``limitForce off`` and
+``on``, at three speeds over two decades; LIGGGHTS' eps, extrapolated to dt = 0 from three time
+steps, must agree with the library's to 1e-6 (forward), and the library's coefficientRestitution
+for a target eps must reach the target in LIGGGHTS to 1e-5 (design).
+"""
+
+import pytest
+
+from restitution.dem.codes import Pair, liggghts_contact
+from restitution.dem.liggghts import available, liggghts_eps_extrapolated, liggghts_pair_style, liggghts_states
+from restitution.dem.settings import TYPED_E_CODES, liggghts_design
+
+pytestmark = [pytest.mark.dem, pytest.mark.slow,
+              pytest.mark.skipif(not available(), reason="LIGGGHTS not installed: as root, apt-get install "
+                                                         "liggghts (make test does it)")]
+
+PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
+SPEEDS = (0.01, 0.1, 1.0)
+MATERIAL = {"E": 5e7, "nu": 0.3}
+#: hooke's stiffness depends on the characteristic velocity the deck declares, not on the impact speed
+MODELS = [{"model": "hertz"}, {"model": "hooke", "characteristic_velocity": 0.5}]
+
+
+def _engine(contact, model: dict, e: float, limit: bool) -> dict:
+    lines = liggghts_pair_style(e=e, limit_force=limit, **MATERIAL, **model)
+    return liggghts_eps_extrapolated(PAIR, lines, SPEEDS, {g: contact.contact_time(g) for g in SPEEDS},
+                                     contact.gamma, steps=4000)
+
+
+@pytest.mark.parametrize("limit", [False, True], ids=["limitForce_off", "limitForce_on"])
+@pytest.mark.parametrize("model", MODELS, ids=lambda m: m["model"])
+def test_liggghts_agrees_with_the_library(model, limit):
+    """Forward: typed e = 0.5; the engine's eps is the library's (and the typed-e table's row)."""
+    contact = liggghts_contact(PAIR, e=0.5, limit_force=limit, **MATERIAL, **model)
+    row = f"LIGGGHTS {model['model']}, limitForce {'on' if limit else 'off (default)'}"
+    assert contact.eps(1.0) == pytest.approx(TYPED_E_CODES[row](0.5).eps(1.0), rel=1e-10)
+    runs = _engine(contact, model, 0.5, limit)
+    for g in SPEEDS:
+        exact = contact.eps(g)
+        assert abs(runs[g][0] / exact - 1) <= 1e-6, (g, exact, runs[g])
+    if not limit:
+        assert abs(runs[SPEEDS[0]][0] - 0.5) <= 1e-6     # the default gives the e typed, exactly
+    else:
+        assert runs[SPEEDS[0]][0] > 0.55                 # limitForce on: the force rule's higher eps
+
+
+@pytest.mark.parametrize("limit", [False, True], ids=["limitForce_off", "limitForce_on"])
+@pytest.mark.parametrize("model", MODELS, ids=lambda m: m["model"])
+def test_the_designed_restitution_reaches_its_target_in_liggghts(model, limit):
+    target = 0.55
+    design = liggghts_design(PAIR, eps=target, limit_force=limit, **MATERIAL, **model)
+    assert (design["e"] == pytest.approx(target, abs=1e-9)) == (not limit)   # limitForce on needs another e
+    contact = liggghts_contact(PAIR, e=design["e"], limit_force=limit, **MATERIAL, **model)
+    runs = _engine(contact, model, design["e"], limit)
+    for g in SPEEDS:
+        assert abs(runs[g][0] - target) <= 1e-5, (g, design, runs[g])
+
+
+def test_two_materials_combine_as_documented():
+    """Unlike Young's moduli and Poisson ratios (two atom types): 1/E* = sum (1 - nu_i^2)/E_i."""
+    kw = {"E": 5e7, "nu": 0.3, "E2": 2e8, "nu2": 0.2, "e": 0.5, "limit_force": True}
+    contact = liggghts_contact(PAIR, model="hertz", **kw)
+    one_material = liggghts_contact(PAIR, model="hertz", E=5e7, nu=0.3, e=0.5, limit_force=True)
+    assert contact.D1 > 1.5 * one_material.D1
+    runs = liggghts_eps_extrapolated(PAIR, liggghts_pair_style(model="hertz", **kw), SPEEDS,
+                                     {g: contact.contact_time(g) for g in SPEEDS}, contact.gamma, steps=4000)
+    for g in SPEEDS:
+        assert abs(runs[g][0] / contact.eps(g) - 1) <= 1e-6, (g, contact.eps(g), runs[g])
+    # eps depends on e alone here, so it cannot tell E* apart: the maximum overlap can
+    g = 0.1
+    col = contact.collision(g)
+    t_b = col.tau_b * float(contact.material.time_scale(g))
+    delta_b = col.x_b * float(contact.material.length_scale(g))
+    lines = liggghts_pair_style(model="hertz", **kw)
+    rel, gap = liggghts_states(PAIR, [(lines, g, t_b / 8000, t_b)])[0]
+    assert abs((PAIR.R1 + PAIR.R2 - gap) / delta_b - 1) <= 1e-4, (gap, delta_b)   # measured 1.6e-5; one material: 20 % off
+    assert abs(rel) <= 1e-3 * g                                                    # at rest there, as computed
+    one_b = one_material.collision(g).x_b * float(one_material.material.length_scale(g))
+    assert abs(one_b / delta_b - 1) > 0.1
+
+
+@pytest.mark.parametrize("model", MODELS, ids=lambda m: m["model"])
+def test_the_stiffness_is_liggghts(model):
+    """eps does not see D1 (it depends on e alone): the overlap at maximum compression does, and
+    with it hertz's E* and R and hooke's characteristic-velocity formula."""
+    contact = liggghts_contact(PAIR, e=0.5, limit_force=False, **MATERIAL, **model)
+    g = 0.1
+    col = contact.collision(g)
+    t_b = col.tau_b * float(contact.material.time_scale(g))
+    delta_b = col.x_b * float(contact.material.length_scale(g))
+    lines = liggghts_pair_style(e=0.5, limit_force=False, **MATERIAL, **model)
+    rel, gap = liggghts_states(PAIR, [(lines, g, t_b / 8000, t_b)])[0]
+    assert abs((PAIR.R1 + PAIR.R2 - gap) / delta_b - 1) <= 1e-4, (gap, delta_b)
+    assert abs(rel) <= 1e-3 * g
