@@ -200,3 +200,11 @@ def test_above_alpha_2gamma_plus_1_sticking_is_proved(alpha, gamma, omega):
     with pytest.raises(StickError, match="slower than 2 Omega"):
         collide(alpha, gamma, omega, end="overlap")
     assert collide(alpha, gamma, 10.0, end="overlap").eps > 0
+
+
+@pytest.mark.parametrize("rtol", [1e-9, 1e-12])
+def test_equal_exponents_never_take_the_pulling_leg(rtol):
+    """alpha = gamma: f = Omega + x' only decays towards 0, so the overlap rule is the force rule; a
+    rounding-negative f once sent this case down the pulling leg, which failed at Omega = 0.01."""
+    for omega in (1e-3, 0.01, 0.1):
+        assert collide("1", "1", omega, rtol=rtol, end="overlap").eps == collide("1", "1", omega, rtol=rtol).eps

@@ -267,7 +267,8 @@ def _land_forward(law: _Law, start: _State, x_b: float, rtol: float, pieces: lis
                   overlap: bool):
     """Leg 4, forward: (v, tau, g) in u from x_switch down to u = 0 unless the force vanishes
     (under the overlap rule, down to u = 0 regardless; once the force pulls, see _land_pulling)."""
-    if overlap and start.f < 0.0:
+    if overlap and law.qa > law.qg and start.f < 0.0:
+        # (for alpha <= gamma the force never pulls; a negative f there is rounding of a vanishing one)
         return _land_pulling(law, start, rtol, pieces, stiff)
     form = _ForceForm(law)
     u0 = start.x ** (1.0 / law.p)
