@@ -144,8 +144,9 @@ def _c_rows(values) -> list[dict]:
     if f4.get("paper_relation_omega_tilde_max_rel_error_in_fit_range") is not None:
         notes.append("with the printed c's, Omega~ misses the exact Omega~ = Omega eps^((alpha-1-2gamma)/(gamma+1)) "
                      f"by up to {f4['paper_relation_omega_tilde_max_rel_error_in_fit_range']:.3g} (relative) and "
-                     f"eps(g) misses the collision's by up to {_fmt(f4.get('max_abs_error_paper_in_fit_range'))} "
-                     f"(the fitted c's: {_fmt(f4.get('max_abs_error_fit_in_fit_range'))}) over the fit range")
+                     f"eps(g) misses the collision's by up to {_fmt(f4.get('max_abs_error_paper_in_fit_range'))} in absolute "
+                     f"terms (the fitted c's: {_fmt(f4.get('max_abs_error_fit_in_fit_range'))}, also absolute) over the "
+                     "fit range")
     if values.get("omega_tilde_small_omega_exponent") is not None:
         notes.append(f"as Omega -> 0 the exact Omega~ ~ Omega^{values['omega_tilde_small_omega_exponent']:.3f}, "
                      "so no power series in Omega about Omega = 0 exists")
