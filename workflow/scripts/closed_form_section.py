@@ -218,8 +218,8 @@ largest relative error on those points and on thirty-two further points drawn at
 $[10^{{-8}}, 10^{{8}}]$, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference
 (Table~\ref{{tab:uniform}}; Fig.~\ref{{fig:uniform-error}}). A variant with $\alpha \leq \gamma$ has no such form:
 for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
-is not known. Figure~\ref{{fig:uniform-eps}} shows $\varepsilon(g)$ of the main variant from the formula, from the
-reference, and from the paper's relation. The numbers of Table~\ref{{tab:uniform}}, typed as printed, change
+is not known. Figure~\ref{{fig:uniform-eps}} shows the relative error in $\varepsilon(g)$ of the main variant from
+the formula, from the two leading-order laws and from the paper's relation, over the speeds of Fig.~\ref{{fig:eps}}. The numbers of Table~\ref{{tab:uniform}}, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
 Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's bounds for every exponent pair of the
 stability atlas. The library prints the formula as one line of C with every number
@@ -251,7 +251,7 @@ variant & $\alpha$ & $\gamma$ & $b$ & $c_3$ & $\sigma$ & $m_0$ & $m_1$ & bound $
 
 \begin{{figure}}[htbp]
 \centering
-\includegraphics[width=0.7\linewidth]{{results/paper/closed_form_eps.pdf}}
+\includegraphics[width=0.85\linewidth]{{results/paper/closed_form_eps.pdf}}
 \caption{{Relative error in $\varepsilon(g)$ of the main variant (the speeds of Fig.~\ref{{fig:eps}}) against the
 reference integration: the closed form (\ref{{eq:uniform}}), the two leading-order laws in physical units, and the
 relation with the paper's printed $c_0$--$c_2$ (gaps: no real $\varepsilon$). Made by \texttt{{closed\_form\_section.py}}.}}
