@@ -9,6 +9,7 @@
 
 # %%
 from fractions import Fraction
+from functools import lru_cache
 
 import numpy as np
 import pandas as pd
@@ -25,7 +26,9 @@ out = snakemake.output
 RTOL = 1e-12
 
 
+@lru_cache(maxsize=None)
 def eps(a, g, om, rule):
+    """One reference collision (each is needed by several of the numbers below)."""
     return collide(a, g, om, end=rule, rtol=RTOL).eps
 
 
