@@ -503,3 +503,24 @@ def test_changing_d1_changes_omega_in_the_manuscript(built, tmp_path):
     marked = (tree / "build/diff/diff.tex").read_text()
     assert re.search(r"\\DIFdel\{[^}]*" + re.escape(get(old)), marked), "old Omega not marked as deleted"
     assert re.search(r"\\DIFadd\{[^}]*" + re.escape(get(new)), marked), "new Omega not marked as added"
+
+
+def test_the_overlap_limit_numbers_come_from_the_library(built):
+    """Issue 24: every number the manuscript prints about the overlap rule's viscous law is written by
+    rule overlap_limit from restitution.core.overlap_limit, and the law held against the integrators."""
+    from fractions import Fraction
+
+    from restitution.core.overlap_limit import overlap_limit
+
+    import pandas as pd
+
+    table = pd.read_csv(built / "results/dem/overlap_limit.csv", dtype={"alpha": str, "gamma": str, "k": str})
+    assert len(table) >= 3
+    for _, r in table.iterrows():
+        L = overlap_limit(r["alpha"], r["gamma"])
+        assert r["C"] == pytest.approx(L.C, rel=1e-14) and Fraction(r["k"]) == L.k_exact
+        assert r["max_dev_small"] < 1e-9 and abs(r["dev_highprec"]) < 1e-9
+    values = (built / "results/dem/overlap_values.tex").read_text()
+    used = set(re.findall(r"\\(Overlap[A-Za-z]+)", (built / "paper/sections/dem.tex").read_text()
+                          + (built / "paper/restitution.tex").read_text()))
+    assert used and all(rf"\newcommand{{\{name}}}" in values for name in used)

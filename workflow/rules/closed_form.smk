@@ -26,10 +26,11 @@ rule closed_form_section:
         forms=expand("results/{variant}/closed_form/form.json", variant=list(VARIANTS)),
         errors=expand("results/{variant}/closed_form/errors.csv", variant=list(VARIANTS)),
         curve=f"results/{MAIN}/closed_form/eps_g.csv",
-        src=lib("core.asymptotics", "core.uniform"),
+        src=lib("core.asymptotics", "core.uniform", "core.collision"),
         code=code("closed_form_section.py") + ["workflow/scripts/common/latex.py"],
     output:
         tex="results/paper/closed_form.tex",
+        values="results/paper/closed_form_values.tex",
         eps_pdf="results/paper/closed_form_eps.pdf",
         eps_png=report("results/paper/closed_form_eps.png", caption="../report/closed_form_eps.rst",
                        category="Figures", subcategory="closed form"),

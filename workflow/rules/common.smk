@@ -250,7 +250,7 @@ def all_outputs_but_pdf():
             "results/paper/validation.tex", "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
     out += STABILITY_OUTPUTS + DEM_OUTPUTS
     out += ["results/paper/bench_table.tex", "results/paper/bench_pareto.pdf", "results/paper/bench_pareto.png"]
-    out += ["results/paper/closed_form.tex"] + [f"results/paper/closed_form_{f}.{ext}" for f in ("eps", "error") for ext in ("pdf", "png")]
+    out += ["results/paper/closed_form.tex", "results/paper/closed_form_values.tex"] + [f"results/paper/closed_form_{f}.{ext}" for f in ("eps", "error") for ext in ("pdf", "png")]
     return out
 
 
@@ -263,6 +263,7 @@ DEM_OUTPUTS = []
 MANUSCRIPT_INPUTS = [
     "results/paper/inputs.tex",
     "results/paper/closed_form.tex",
+    "results/paper/closed_form_values.tex",
     "results/paper/closed_form_eps.pdf",
     "results/paper/closed_form_error.pdf",
     "results/paper/provenance.tex",

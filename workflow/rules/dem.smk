@@ -29,9 +29,67 @@ rule dem_study:
     output:
         DEM_FILES,
     params:
-        dem=config["dem"],
+        # the overlap_* settings belong to rule overlap_limit: a change there must not rerun LAMMPS
+        dem={k: v for k, v in config["dem"].items() if not k.startswith("overlap_")},
         material={k: VARIANTS[MAIN][k] for k in ("name", "alpha", "gamma", "D1", "D2")},
     log:
         "logs/dem_study.log",
     script:
         script_file("dem_study.py")
+
+
+# The overlap rule's viscous limit (issue 24): eps ~ C Omega^k for gamma <= alpha < 2 gamma + 1, the law
+# against both integrators for the variants' exponents and a few more, and the section's numbers.
+OVERLAP_FILES = [
+    "results/dem/overlap_limit.csv",
+    "results/dem/overlap_curves.csv",
+    "results/dem/overlap_table.tex",
+    "results/dem/overlap_values.tex",
+    "results/dem/overlap_limit.pdf",
+    "results/dem/overlap_limit.png",
+]
+DEM_OUTPUTS.extend(OVERLAP_FILES)
+MANUSCRIPT_INPUTS.extend(["results/dem/overlap_values.tex", "results/dem/overlap_table.tex",
+                          "results/dem/overlap_limit.pdf"])
+
+
+def _overlap_pairs():
+    """(alpha, gamma, label) of every variant where the law exists ("main" for the main one), then the
+    configured check pairs."""
+    pairs = []
+    for name, v in VARIANTS.items():
+        a, g = Fraction(str(v["alpha"])), Fraction(str(v["gamma"]))
+        if g <= a < 2 * g + 1:
+            pairs.append((str(a), str(g), "main" if name == MAIN else name))
+    pairs += [(str(Fraction(a)), str(Fraction(g)), "check") for a, g in config["dem"]["overlap_check_pairs"]]
+    return pairs
+
+
+rule overlap_limit:
+    """eps ~ C Omega^k under the overlap rule: the law, its checks against the reference and mpmath
+    integrators, its table, figure and the numbers the manuscript prints."""
+    input:
+        src=lib("core.overlap_limit", "core.collision", "core.highprec"),
+        code=code("overlap_limit.py") + ["workflow/scripts/common/latex.py"],
+    output:
+        csv=OVERLAP_FILES[0],
+        curves=OVERLAP_FILES[1],
+        table=OVERLAP_FILES[2],
+        values=OVERLAP_FILES[3],
+        pdf=OVERLAP_FILES[4],
+        png=OVERLAP_FILES[5],
+    params:
+        pairs=_overlap_pairs(),
+        check_omegas=config["dem"]["overlap_check_omegas"],
+        moderate_omegas=[0.3, 0.1, 0.05],
+        highprec_omega=1.0e-2,
+        highprec_digits=20,
+        curve_omega=[1.0e-4, 10.0],
+        curve_points=21,
+        decay_inverse_omegas=list(range(1, 32, 2)),
+        material={"D1": float(VARIANTS[MAIN]["D1"]), "D2": float(VARIANTS[MAIN]["D2"]),
+                  "g_max": float(VARIANTS[MAIN]["g_range"]["max"])},
+    log:
+        "logs/overlap_limit.log",
+    script:
+        script_file("overlap_limit.py")

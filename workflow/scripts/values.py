@@ -126,6 +126,9 @@ for d, terms, printed_n, agree, differ in (
     V.add(printed_n, a["printed_within_max_power"], kind="exact")
     V.add(agree, a["agree"], kind="exact")
     V.add(differ, len(a["differ"]), kind="exact")
+V.add("SeriesAgreeAll", sum(agreement[d]["agree"] for d in ("forward", "inverse")), kind="exact",
+      note="printed coefficients, forward and inverse, equal to ours")
+V.add("SeriesPrintedAll", sum(agreement[d]["printed_within_max_power"] for d in ("forward", "inverse")), kind="exact")
 
 # %% Impact-speed range of figure 4
 V.add("GMin", float(curve["g"].min()), tex=f"{curve['g'].min():g}", kind="config")
@@ -261,9 +264,7 @@ if p.claims:
     row("RowOmegaScaling", "VerdictOmegaScaling", "omega-scaling")
     row("RowEpsScaling", "VerdictEpsScaling", "eps-scaling")
     row("RowShape", "VerdictShape", "fig4-shape")
-    series_rows = ledger[ledger["id"].str.startswith("series")]["row"]
-    V.add("RowSeriesFirst", int(series_rows.min()), kind="exact", note="ledger rows of the printed series")
-    V.add("RowSeriesLast", int(series_rows.max()), kind="exact")
+    row("RowSeries", "VerdictSeries", "series")
     V.add("ReadingsReproduced", sum(cl.reproduces_printed_c(r["c"]) for r in cv["readings"]), kind="exact",
           note="readings whose c0-c2 equal the printed ones within the ledger's tolerance")
 
@@ -329,7 +330,9 @@ if p.claims:
     V.add("OmegaTildeSmallExponent", cv["omega_tilde_small_omega_exponent"], sig=3,
           note="local slope of the exact Omega~ at Omega = 1e-4")
     es = cv["eps_scaling"]
-    V.add("LossExponentSmallG", es["loss_g_exponent_small_g"], sig=3, note="1 - eps ~ g^this as g -> 0")
+    V.add("LossExponentSmallG", es["loss_g_exponent_small_g"], sig=3, note="1 - eps ~ g^this as g -> 0 (measured)")
+    V.add("LossExponentExact", (2 * ex.gamma + 1 - ex.alpha) / (ex.alpha + 1), kind="exact",
+          note="1 - eps ~ delta ~ g^this as g -> 0: (2 gamma + 1 - alpha)/(alpha + 1)")
     V.add("LossExponentAtGMin", es["loss_g_exponent_at_g_min"], sig=3)
     V.add("EpsExponentLargeG", es["eps_g_exponent_large_g"], sig=3, note="eps ~ g^this as g -> infinity")
     validity = cv.get("paper_relation_validity") or {}

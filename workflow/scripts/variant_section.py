@@ -114,7 +114,7 @@ if raw["FitApplies"]:
             r"impact speeds of its figure 4 (``no $\varepsilon$'': speeds where $\tilde\Omega \le 0$).}",
             rf"  \label{{tab:eps-errors-{v}}}", r"\end{table}", ""]
 else:
-    out.append(rf"There is no least-squares connection: {math_text(raw['FitReason'])}.")
+    out.append(rf"There is no least-squares connection ({math_text(raw['FitReason'])}).")
 if "RetraceMaxDev" in T:
     out.append(rf"The inverse collision integrated from the forward end state at $g = {T['GFig']}$ retraces "
                rf"the forward trajectory to ${T['RetraceMaxDev']}$ (relative to $x_b$).")

@@ -39,6 +39,9 @@ TRACKING_TOLERANCE = 0.25
 RADIUS_TOLERANCE = 1e-3
 #: A closed form "solves" an equation when its residual is below this (finite differences).
 RESIDUAL_TOLERANCE = 1e-6
+#: "For tau > 2 the first order is better" is judged on the whole range only when the samples where a
+#: comparison is possible (some truncation within the threshold) are at least this share of it.
+COVERAGE = 0.5
 #: An exponent is "1/4" when the measured local slope is within this of 1/4.
 EXPONENT_TOLERANCE = 0.02
 
@@ -62,22 +65,25 @@ def _fmt(x, digits=4) -> str:
 
 
 def _series_rows(values) -> list[dict]:
-    rows = []
+    """One row for the printed series: the forward and inverse tables are one statement (Eqs. (xs),
+    (xsb) print the x_n and x~_n of one expansion), counted coefficient by coefficient."""
     series = values.get("series")
     if series is None:
         return [_row("series", "printed series coefficients x_0..x_4 (forward and inverse)", "Sec. III-IV, Eqs. (xs), (xsb)",
                      "printed for alpha = 3/2, gamma = 1", "not applicable", "exact", AMBIGUOUS,
                      f"this material has alpha = {values.get('alpha')}, gamma = {values.get('gamma')}")]
-    for s in series:
-        where = "Sec. III, Eq. (xs)" if s["direction"] == "forward" else "Sec. IV, Eq. (xsb)"
-        tilde = "" if s["direction"] == "forward" else "~"
-        verdict = REPRODUCED if s["n_match"] == s["n_terms"] else NOT_REPRODUCED
-        note = "" if not s["mismatches"] else "; ".join(
-            f"tau^{p}: printed {c}, exact {o}" for p, c, o in s["mismatches"])
-        rows.append(_row(f"series-{s['direction']}-{s['n']}", f"{s['direction']} series x{tilde}_{s['n']}: every printed coefficient", where,
-                         f"{s['n_terms']} terms", f"{s['n_match']} of {s['n_terms']} equal", "exact rational",
-                         verdict, note))
-    return rows
+    total = sum(s["n_terms"] for s in series)
+    match = sum(s["n_match"] for s in series)
+    per = {d: (sum(s["n_match"] for s in series if s["direction"] == d),
+               sum(s["n_terms"] for s in series if s["direction"] == d)) for d in ("forward", "inverse")}
+    orders = sorted({s["n"] for s in series})
+    mism = [f"{s['direction']} x_{s['n']}, tau^{p}: printed {c}, exact {o}"
+            for s in series for p, c, o in s["mismatches"]]
+    return [_row("series", f"forward and inverse series x_{orders[0]}..x_{orders[-1]}, x~_{orders[0]}..x~_{orders[-1]}: "
+                           "every printed coefficient", "Sec. III-IV, Eqs. (xs), (xsb)",
+                 f"{total} coefficients", f"{match} of {total} equal (forward {per['forward'][0]} of "
+                 f"{per['forward'][1]}, inverse {per['inverse'][0]} of {per['inverse'][1]})", "exact rational",
+                 REPRODUCED if match == total else NOT_REPRODUCED, "; ".join(mism))]
 
 
 def _delta_rows(values) -> list[dict]:
@@ -87,17 +93,15 @@ def _delta_rows(values) -> list[dict]:
         return [_row("delta", "lowest-order Delta, Delta~", "Sec. V, Eq. (deltas)", "1 + 2 x1'(tau_0) Omega; "
                      "-1 - (2/3) x~1'(tau~_0) Omega~", "undefined", "symbolic identity", NOT_REPRODUCED,
                      values.get("delta_error", ""))]
-    out = []
-    names = (("Delta = tau_b - tau_0 to lowest order", "1 + 2 x1'(tau_0) Omega"),
-             ("Delta~ = tau~_b - tau~_0 to lowest order", "-1 - (2/3) x~1'(tau~_0) Omega~"))
-    for i, (claim, paper) in enumerate(names):
-        out.append(_row(("delta", "delta-tilde")[i], claim, "Sec. V, Eq. (deltas)", paper,
-                        values["delta_derived"][i].replace("a_11", "x1'(tau_0)").replace("b_11", "x~1'(tau~_0)"),
-                        "symbolic identity", REPRODUCED if values["delta_equal"][i] else NOT_REPRODUCED,
-                        ("re-derived from x'(tau_0 + Delta) = 0" if i == 0 else
-                         "re-derived from x~'(tau~_0 + Delta~) = 0")
-                        + " to first order in the shift and Omega, damped-only derivatives from the first integral"))
-    return out
+    equal = values["delta_equal"]
+    derived = [d.replace("a_11", "x1'(tau_0)").replace("b_11", "x~1'(tau~_0)") for d in values["delta_derived"]]
+    return [_row("delta", "Delta = tau_b - tau_0 and Delta~ = tau~_b - tau~_0 to lowest order", "Sec. V, Eq. (deltas)",
+                 "1 + 2 x1'(tau_0) Omega; -1 - (2/3) x~1'(tau~_0) Omega~", "; ".join(derived), "symbolic identity",
+                 REPRODUCED if all(equal) else NOT_REPRODUCED,
+                 "re-derived from x'(tau_0 + Delta) = 0 and x~'(tau~_0 + Delta~) = 0 to first order in the shift "
+                 "and Omega, damped-only derivatives from the first integral"
+                 + ("" if all(equal) else "; differs: " + ", ".join(("Delta", "Delta~")[i]
+                                                                    for i, e in enumerate(equal) if not e)))]
 
 
 def reproduces_printed_c(c) -> bool:
@@ -140,8 +144,9 @@ def _c_rows(values) -> list[dict]:
     if f4.get("paper_relation_omega_tilde_max_rel_error_in_fit_range") is not None:
         notes.append("with the printed c's, Omega~ misses the exact Omega~ = Omega eps^((alpha-1-2gamma)/(gamma+1)) "
                      f"by up to {f4['paper_relation_omega_tilde_max_rel_error_in_fit_range']:.3g} (relative) and "
-                     f"eps(g) misses the collision's by up to {_fmt(f4.get('max_abs_error_paper_in_fit_range'))} "
-                     f"(the fitted c's: {_fmt(f4.get('max_abs_error_fit_in_fit_range'))}) over the fit range")
+                     f"eps(g) misses the collision's by up to {_fmt(f4.get('max_abs_error_paper_in_fit_range'))} in absolute "
+                     f"terms (the fitted c's: {_fmt(f4.get('max_abs_error_fit_in_fit_range'))}, also absolute) over the "
+                     "fit range")
     if values.get("omega_tilde_small_omega_exponent") is not None:
         notes.append(f"as Omega -> 0 the exact Omega~ ~ Omega^{values['omega_tilde_small_omega_exponent']:.3f}, "
                      "so no power series in Omega about Omega = 0 exists")
@@ -189,8 +194,14 @@ def _tracking_rows(values) -> list[dict]:
         shown = {k: v for k, v in best.items() if v is not None}
         verdict = (_combine(REPRODUCED if v > 0.5 else NOT_REPRODUCED for v in shown.values()) if shown
                    else AMBIGUOUS)
-        ours = (f"better on {100 * best[mid]:.0f}% of {n_cmp[mid]} comparable samples" if best.get(mid) is not None
-                else "no comparable sample")
+        total = tr.get("samples_after_2") or 0
+        if verdict == REPRODUCED and not all(n_cmp[k] >= COVERAGE * total for k in shown):
+            # better where a comparison is possible, but that is a small part of tau > 2: the claim
+            # is about the whole range, where every truncation is off by order one
+            verdict = AMBIGUOUS
+        ours = (f"better on {100 * best[mid]:.0f}% of {n_cmp[mid]} comparable samples "
+                f"({100 * n_cmp[mid] / max(tr.get('samples_after_2') or 1, 1):.0f}% of those with tau > 2)"
+                if best.get(mid) is not None else "no comparable sample")
         rows.append(_row("first-order", claim, "Sec. III, Fig. 1 text", "better", ours, "more than half", verdict,
                          "|x0 + Omega x1 - reference| against the smallest error of orders 2-4, on the samples with "
                          "tau > 2 where some truncation is within the threshold x x_b (elsewhere every truncation is "
@@ -225,23 +236,38 @@ def _scaling_rows(values) -> list[dict]:
                          "exponent (alpha-1-2gamma)/(gamma+1) of the scaling"))
     es = values.get("eps_scaling")
     if es:
-        quarter = float(Fraction(printed.EPS_G_EXPONENT))
-        leading = es["loss_g_exponent_small_g"]
-        trivially = es["paper_relation_powers_of_g_quarter"]
-        if abs(leading - quarter) <= EXPONENT_TOLERANCE:
-            verdict = REPRODUCED
+        quarter = Fraction(printed.EPS_G_EXPONENT)
+        exact = _exact_g_exponents(values)
+        measured = es["loss_g_exponent_small_g"]
+        if exact is not None:
+            small, large = exact
+            verdict = REPRODUCED if small == quarter else NOT_REPRODUCED
+            ours = f"1 - eps ~ g^({small}) as g -> 0; eps ~ g^({large}) as g -> infinity (exact)"
         else:
-            verdict = AMBIGUOUS if trivially else NOT_REPRODUCED
+            verdict = REPRODUCED if abs(measured - float(quarter)) <= EXPONENT_TOLERANCE else (
+                AMBIGUOUS if es["paper_relation_powers_of_g_quarter"] else NOT_REPRODUCED)
+            ours = f"1 - eps ~ g^{measured:.3f} as g -> 0; eps ~ g^{es['eps_g_exponent_large_g']:.3f} as g -> infinity"
         rows.append(_row("eps-scaling", "eps has terms in g^(1/4) (compared with Brilliantov's g^(1/5))", "Sec. VI",
-                         f"g^({printed.EPS_G_EXPONENT})",
-                         f"1 - eps ~ g^{leading:.3f} as g -> 0; eps ~ g^{es['eps_g_exponent_large_g']:.3f} "
-                         f"as g -> infinity", f"exponent +-{EXPONENT_TOLERANCE}", verdict,
-                         "with Omega ~ g^(-3/4), any function of Omega is a function of g^(1/4), so the "
-                         "statement holds trivially for the paper's relation; the law comparable to "
-                         "Brilliantov's 1 - eps ~ g^(1/5) is the small-g one, whose exponent is measured "
-                         f"here (local slope at Omega = 1e3..2e3; {es['loss_g_exponent_at_g_min']:.3f} at the "
-                         "smallest g of figure 4)"))
+                         f"g^({printed.EPS_G_EXPONENT})", ours, "exact exponent", verdict,
+                         "Brilliantov's 1 - eps ~ g^(1/5) is the leading small-g (elastic) law; its counterpart here "
+                         "is 1 - eps ~ delta = Omega^(-(gamma+1)/(alpha+1)) with Omega ~ g^((alpha-1-2gamma)/(gamma+1)), "
+                         "derived with its constant in the closed-form section; the viscous law eps ~ k Omega has "
+                         "g^((alpha-1-2gamma)/(gamma+1)). That any function of Omega is one of g^(1/4) is true but "
+                         f"says nothing. Measured local slopes: {measured:.3f} (Omega = 1e3..2e3), "
+                         f"{es['eps_g_exponent_large_g']:.3f} (large g)"))
     return rows
+
+
+def _exact_g_exponents(values):
+    """(small-g exponent of 1 - eps, large-g exponent of eps) from alpha, gamma: (2gamma+1-alpha)/(alpha+1)
+    and (alpha-1-2gamma)/(gamma+1) (the elastic and viscous limits); None where undefined."""
+    try:
+        a, g = Fraction(str(values["alpha"])), Fraction(str(values["gamma"]))
+    except (KeyError, ValueError, ZeroDivisionError):
+        return None
+    if not a > g:
+        return None
+    return (2 * g + 1 - a) / (a + 1), (a - 1 - 2 * g) / (g + 1)
 
 
 def _fig4_rows(values) -> list[dict]:

@@ -1,0 +1,138 @@
+# %% [markdown]
+# # The overlap rule's viscous limit: fast impacts rebound at a material speed
+#
+# For every exponent pair with gamma <= alpha < 2 gamma + 1 (the variants' and a few checks'), the
+# library's law eps ~ C Omega^k (restitution.core.overlap_limit) is set against the reference
+# integrator and the independent mpmath integrator under the overlap rule, next to the force rule;
+# the script writes the numbers the manuscript prints, a table and a figure. It only calls the
+# library and writes what it returns.
+
+# %%
+from fractions import Fraction
+from functools import lru_cache
+
+import numpy as np
+import pandas as pd
+from common.latex import esc, frac_tex, sci
+from common.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
+
+from restitution.core.collision import collide
+from restitution.core.highprec import reference_collision
+from restitution.core.overlap_limit import overlap_limit
+
+start(snakemake)
+P = snakemake.params
+out = snakemake.output
+RTOL = 1e-12
+
+
+@lru_cache(maxsize=None)
+def eps(a, g, om, rule):
+    """One reference collision (each is needed by several of the numbers below)."""
+    return collide(a, g, om, end=rule, rtol=RTOL).eps
+
+
+pairs = []
+for a, g, label in P.pairs:
+    if (a, g) not in [(q[0], q[1]) for q in pairs]:
+        pairs.append((a, g, label))
+
+# %% the law against both integrators
+rows, curves = [], []
+for a, g, label in pairs:
+    L = overlap_limit(a, g)
+    law = lambda om: L.C * om ** L.k  # noqa: E731
+    small = {om: eps(a, g, om, "overlap") / law(om) - 1.0 for om in P.check_omegas}
+    hp_om = P.highprec_omega
+    hp = float(reference_collision(a, g, hp_om, digits=P.highprec_digits, end="overlap").eps) / law(hp_om) - 1.0
+    o1, o2 = min(P.check_omegas), max(P.check_omegas)
+    slope = np.log(eps(a, g, o2, "overlap") / eps(a, g, o1, "overlap")) / np.log(o2 / o1)
+    moderate = {om: eps(a, g, om, "overlap") / law(om) - 1.0 for om in P.moderate_omegas}
+    ratio = {om: eps(a, g, om, "overlap") / eps(a, g, om, "force") for om in P.moderate_omegas}
+    rows.append({"alpha": a, "gamma": g, "label": label, "k": str(L.k_exact), "C": L.C, "C_error": L.C_error,
+                 "slope": slope, "max_dev_small": max(abs(v) for v in small.values()), "dev_highprec": hp,
+                 **{f"dev_{om:g}": v for om, v in moderate.items()},
+                 **{f"ratio_{om:g}": v for om, v in ratio.items()}, "force_k": L.force_k, "decay": L.decay})
+    for om in np.logspace(np.log10(P.curve_omega[0]), np.log10(P.curve_omega[1]), P.curve_points):
+        eo, ef = eps(a, g, om, "overlap"), eps(a, g, om, "force")
+        curves.append({"alpha": a, "gamma": g, "omega": om, "eps_overlap": eo, "eps_force": ef,
+                       "law_overlap": law(om), "law_force": L.force_k * om})
+table = pd.DataFrame(rows)
+curve = pd.DataFrame(curves)
+write_csv(out.csv, table)
+write_csv(out.curves, curve)
+
+# %% table
+frac = lambda s: frac_tex(Fraction(s))  # noqa: E731
+mods = list(P.moderate_omegas)
+lines = [r"\begin{tabular}{" + "l" * (6 + len(mods)) + "}", r"\toprule",
+         r"$\alpha$ & $\gamma$ & $k$ & $C$ & slope & dev., $\Omega \le " + sci(max(P.check_omegas), 1) + "$ & "
+         + " & ".join(rf"dev., $\Omega = {sci(om, 2)}$" for om in mods) + r" \\", r"\midrule"]
+for r in rows:
+    lines.append(" & ".join([frac(r["alpha"]), frac(r["gamma"]), frac(r["k"]), sci(r["C"], 11), sci(r["slope"], 10),
+                             sci(max(r["max_dev_small"], abs(r["dev_highprec"])), 1)]
+                            + [sci(r[f"dev_{om:g}"], 2) for om in mods]) + r" \\")
+lines += [r"\bottomrule", r"\end{tabular}"]
+write_text(out.table, "\n".join(lines))
+
+# %% the numbers the manuscript prints
+main = next(r for r in rows if r["label"] == "main")
+hertz = next(r for r in rows if (r["alpha"], r["gamma"]) == ("3/2", "1/2"))
+Lm = overlap_limit(main["alpha"], main["gamma"])
+p1, p2 = Lm.speed_exponents
+mat = P.material
+speed = float(Lm.rebound_speed(mat["D1"], mat["D2"]))
+a_, g_ = Fraction(main["alpha"]), Fraction(main["gamma"])
+w = float((a_ - 1 - 2 * g_) / (g_ + 1))
+scale = mat["D1"] * mat["D2"] ** (-float(a_ + 1) / float(g_ + 1))      # Omega = scale g^w
+om_max = scale * mat["g_max"] ** w                                      # smallest Omega of figure 4
+gmax_ratio = eps(main["alpha"], main["gamma"], om_max, "force") / eps(main["alpha"], main["gamma"], om_max, "overlap")
+TENTH = sorted(mods)[len(mods) // 2]           # the middle of the moderate Omegas
+dev_tenth = max(abs(r[f"dev_{TENTH:g}"]) for r in rows)
+macros = {
+    "OverlapPairs": str(len(rows)),
+    "OverlapPairList": ", ".join(rf"$({frac(r['alpha'])}, {frac(r['gamma'])})$" for r in rows),
+    "OverlapCheckMin": sci(min(P.check_omegas), 1), "OverlapCheckMax": sci(max(P.check_omegas), 1),
+    "OverlapMaxDevSmall": sci(max(r["max_dev_small"] for r in rows), 2),
+    "OverlapHighprecOmega": sci(P.highprec_omega, 1), "OverlapHighprecDigits": str(P.highprec_digits),
+    "OverlapMaxDevHighprec": sci(max(abs(r["dev_highprec"]) for r in rows), 2),
+    "OverlapMaxCError": sci(max(r["C_error"] for r in rows), 2),
+    "OverlapMaxSlopeDev": sci(max(abs(r["slope"] - float(Fraction(r["k"]))) for r in rows), 2),
+    "OverlapDevTenth": sci(dev_tenth, 2), "OverlapTenthOmega": sci(TENTH, 2), "OverlapDevModerateMax": sci(max(abs(r[f"dev_{max(mods):g}"]) for r in rows), 2),
+    "OverlapModerateMax": sci(max(mods), 2),
+    "OverlapMainK": frac(main["k"]), "OverlapMainC": sci(main["C"], 10),
+    "OverlapMainCErr": sci(main["C_error"], 1), "OverlapMainForceK": sci(main["force_k"], 10),
+    "OverlapMainDecay": sci(main["decay"], 4),
+    "OverlapMainRatioExp": frac(str(Fraction(main["k"]) - 1)),
+    "OverlapHertzK": frac(hertz["k"]), "OverlapHertzC": sci(hertz["C"], 10),
+    "OverlapSpeedPOne": frac(str(p1)), "OverlapSpeedPTwo": frac(str(p2)),
+    "OverlapMainSpeed": sci(speed, 4), "OverlapMainGMax": sci(mat["g_max"], 2),
+    "OverlapMainOmegaAtGMax": sci(om_max, 3), "OverlapMainRuleRatioAtGMax": sci(gmax_ratio, 3),
+    "OverlapMainSpeedAtGMax": sci(eps(main["alpha"], main["gamma"], om_max, "overlap") * mat["g_max"], 4),
+    "OverlapMainRatioAtTenth": sci(main[f"ratio_{TENTH:g}"], 3),
+}
+write_text(out.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))
+
+# %% figure: the two rules over Omega, and how fast the law is approached
+plt = setup_matplotlib()
+fig, (left, right) = plt.subplots(1, 2, figsize=(7.2, 3.5))
+colours = ["C0", "C1", "C2", "C3", "C4", "C5", "C6"]
+for i, r in enumerate(rows):
+    c = curve[(curve["alpha"] == r["alpha"]) & (curve["gamma"] == r["gamma"])]
+    lab = rf"$\alpha = {r['alpha']}$, $\gamma = {r['gamma']}$"
+    left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], color=colours[i % 7], lw=1.6, label=lab)
+    left.loglog(c["omega"], c["law_overlap"] / c["law_force"], color=colours[i % 7], lw=0.9, ls="--")
+    inv = np.asarray(P.decay_inverse_omegas, dtype=float)
+    d = np.array([abs(eps(r["alpha"], r["gamma"], 1.0 / x, "overlap") / (r["C"] * x ** -float(Fraction(r["k"]))) - 1.0)
+                  for x in inv])
+    keep = d > 1e-13          # below that the integrator's own error shows
+    right.semilogy(inv[keep], d[keep], "o-", color=colours[i % 7], ms=3.5, lw=1.0, label=lab)
+left.set_ylim(top=3.0)
+left.set_xlabel(r"$\Omega$")
+left.set_ylabel(r"$\varepsilon_{\mathrm{overlap}} / \varepsilon_{\mathrm{force}}$")
+left.set_title("solid: integrator; dashed: leading laws", fontsize=8)
+right.set_xlabel(r"$1/\Omega$")
+right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C\,\Omega^k) - 1|$")
+right.legend(fontsize=8, frameon=False)
+fig.tight_layout()
+save_figure(fig, out.pdf, out.png)
