@@ -194,7 +194,7 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
 
     # -- the public call end to end: 1e6 impact speeds at tol = 1e-6, master cached
     lad = Ladder(ex, None, cache_dir=str(out / "cache" / "ladder"), stream=open(os.devnull, "w"))
-    lad._cal = cal  # the calibration just built (what a cached one would load)
+    lad.built["calibration"] = cal  # the calibration just built (what a cached one would load)
     g_speeds = np.geomspace(1e-3, 10, 1_000_000)
     from restitution.core.model import Material
     mat = Material(ex, None, 0.000296, 0.0109)

@@ -36,23 +36,13 @@ from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
 from .integrator import END_FAILED, collide_fast
 from .panels import chebyshev_panels_eval
+from .rung import INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR, integrator_bound
 
 __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps",
            "INTEGRATOR_BOUND_FACTOR", "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "stiff_omega_min"]
 
 #: Bumped whenever the construction changes, so cached curves of an older kind are rebuilt.
 MASTER_VERSION = 1
-
-#: Validated accuracy of the compiled integrator: |error| <= FACTOR * rtol + FLOOR (relative).
-#: Measured against the mpmath reference in tests/test_epsilon.py and the benchmark (observed:
-#: <= 1.6 rtol for rtol >= 1e-12 and <= 6e-15 at rtol = 1e-14 over Omega 1e-8..1e12).
-INTEGRATOR_BOUND_FACTOR = 10.0
-INTEGRATOR_BOUND_FLOOR = 5e-14
-
-
-def integrator_bound(rtol: float) -> float:
-    return INTEGRATOR_BOUND_FACTOR * rtol + INTEGRATOR_BOUND_FLOOR
-
 
 def stiff_omega_min(alpha, gamma) -> float:
     """Smallest Omega the explicit compiled integrator is used for.
@@ -254,6 +244,12 @@ class MasterCurve:
         out = chebyshev_panels_eval(om, self.s0, self.width, self.coef, self._kernel_viscous(),
                                     self._kernel_elastic())
         return out.reshape(om.shape)
+
+    def viscous_eps(self, omega) -> np.ndarray:
+        """The viscous expansion alone (the ladder's viscous rung)."""
+        if self.viscous.kind == "closed":
+            return np.asarray(omega, dtype=float).copy()  # eps = Omega, exponentially small error
+        return self.viscous.eps(omega, 1)
 
     def bound_at(self, omega) -> np.ndarray:
         """Pointwise error bound (relative)."""
