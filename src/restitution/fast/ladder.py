@@ -24,7 +24,8 @@ closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma;
                                                                     [1e-8, 1e8]
 master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
 integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-12, 1e14]         2e-5 to
-                        from tol                                    (alpha<=gamma: >= 1e-5)        7e-5 s
+                        from tol; both end rules                    (alpha<=gamma, overlap rule:   7e-5 s
+                                                                    >= 1e-5)
 reference               core.collision.collide (scipy)              all                            ~1e-2 s
 highprec                core.highprec (mpmath Taylor)               all (alpha<=gamma: >= 1e-3)    0.15 s and
                                                                                                    more at small
@@ -44,7 +45,7 @@ Bounds:
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
 End rule: each rung declares the rules it serves where they differ (alpha > gamma): closed-form
-(the dashpot only), reference and highprec serve both; the others the "force" rule (for
+(the dashpot only), integrator, reference and highprec serve both; the others the "force" rule (for
 alpha <= gamma the rules coincide and all serve).
 
 Each rung is an object of :mod:`restitution.fast.rungs` (interface: :mod:`restitution.fast.rung`);

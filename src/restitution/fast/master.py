@@ -34,7 +34,7 @@ from numpy.polynomial import chebyshev as cheb
 from ..core import asymptotics as asy
 from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
-from .integrator import END_FAILED, collide_fast
+from .integrator import END_FAILED, END_STUCK, collide_fast
 from .panels import chebyshev_panels_eval
 from .rung import INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR, integrator_bound
 
@@ -44,15 +44,17 @@ __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "r
 #: Bumped whenever the construction changes, so cached curves of an older kind are rebuilt.
 MASTER_VERSION = 1
 
-def stiff_omega_min(alpha, gamma) -> float:
+def stiff_omega_min(alpha, gamma, end: str = "force") -> float:
     """Smallest Omega the explicit compiled integrator is used for.
 
     For alpha > gamma contact ends a few relaxation times after maximum compression and nothing is
     stiff (1e-12 is just the tested range). For alpha <= gamma the return creeps for a time ~ 1/Omega
     while the fast relaxation stays O(1): the step count grows like 1/Omega (~1.6e5 steps at 1e-6).
+    Under the overlap rule the return creeps for every pair (about 0.4/Omega steps for alpha = 3/2,
+    gamma = 1/2: 14 ms at 1e-5, 0.2 s at 1e-6).
     """
     ex = as_exponents(alpha, gamma)
-    return 1e-12 if ex.alpha > ex.gamma else 1e-5
+    return 1e-12 if ex.alpha > ex.gamma and end == "force" else 1e-5
 
 
 @dataclass(frozen=True)
@@ -84,13 +86,21 @@ class MasterSettings:
 
 
 # ------------------------------------------------------------------------------ reference values
-def reference_eps(alpha, gamma, omegas, rtol: float = 1e-14) -> np.ndarray:
-    """eps from the exact closed form (alpha = gamma) or the compiled integrator (otherwise)."""
+def reference_eps(alpha, gamma, omegas, rtol: float = 1e-14, end: str = "force") -> np.ndarray:
+    """eps from the exact closed form (alpha = gamma) or the compiled integrator (otherwise), for
+    the end rule ``end``; under "overlap" a proved sticking raises core.collision.StickError."""
     ex = as_exponents(alpha, gamma)
     om = np.asarray(omegas, dtype=float)
     if ex.alpha == ex.gamma:
         return asy.equal_exponents_eps(om)
-    res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, rtol)
+    overlap = end == "overlap" and ex.alpha > ex.gamma
+    res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, rtol, overlap)
+    if np.any(res[:, 5] == END_STUCK):
+        from ..core.collision import StickError
+        w = float(om.ravel()[res[:, 5] == END_STUCK][0])
+        raise StickError("omega", w, "under the overlap rule contact never ends here: the attractive phase "
+                         "stops the return and the bodies stay together (eps = 0, proved as in "
+                         "core.collision); use end=force")
     if np.any(res[:, 5] == END_FAILED):
         bad = om[res[:, 5] == END_FAILED]
         raise ArithmeticError(f"compiled integrator failed at Omega = {bad[:3]} (alpha={ex.alpha}, "

@@ -11,6 +11,7 @@ from .calibrated import ElasticRung, MasterRung, PadeRung, RelationRung, Viscous
 from .closed_form import ClosedForm
 from .highprec import Highprec
 from .integrator import Integrator
+from .overlap_integrator import OverlapIntegrator
 from .reference import Reference
 
 __all__ = ["RUNGS", "ladder_rungs", "rung_names"]
@@ -23,6 +24,7 @@ RUNGS: tuple[Rung, ...] = (
     ClosedForm(),
     MasterRung(),
     Integrator(),
+    OverlapIntegrator(),
     Reference(),
     Highprec(),
 )
