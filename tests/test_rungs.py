@@ -36,4 +36,4 @@ def test_a_rung_added_to_the_registry_is_quoted_and_chosen(tmp_path):
 def test_a_rung_that_does_not_serve_the_rule_is_listed_with_the_reason(tmp_path):
     lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
     q = {c["method"]: c for c in lad.evaluate([0.3], tol=1e-6, end="overlap", build=False).candidates}
-    assert not q["master"]["available"] and "force rule only" in q["master"]["reason"]
+    assert not q["fitted-c"]["available"] and "force rule only" in q["fitted-c"]["reason"]

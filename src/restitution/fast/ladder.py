@@ -23,6 +23,9 @@ closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma;
                  (cal)  otherwise the uniform form (core.uniform)   alpha>gamma, Omega in          ~1e-7 s
                                                                     [1e-8, 1e8]
 master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
+                 (ovl)  overlap rule: its own curve, Chebyshev      Omega in [1e-4, 1e8], above    ~4e-8 s
+                        only (fast.overlap_master), built alone     a sticking boundary
+                        in 1-2 s
 integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-12, 1e14]         2e-5 to
                         from tol; both end rules                    (alpha<=gamma, overlap rule:   7e-5 s
                                                                     >= 1e-5)
@@ -45,7 +48,8 @@ Bounds:
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
 End rule: each rung declares the rules it serves where they differ (alpha > gamma): closed-form
-(the dashpot only), integrator, reference and highprec serve both; the others the "force" rule (for
+(the dashpot only), master, integrator, reference and highprec serve both (each with a rung of
+its own per rule where needed); the others the "force" rule (for
 alpha <= gamma the rules coincide and all serve).
 
 Each rung is an object of :mod:`restitution.fast.rungs` (interface: :mod:`restitution.fast.rung`);
@@ -78,12 +82,16 @@ from .master import MASTER_VERSION, MasterCurve, MasterSettings, reference_eps
 from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request, integrator_bound
 from .rungs import ladder_rungs, rung_names
 from .rungs.calibrated import CALIBRATION, SAFETY
+from .rungs.overlap_master import OVERLAP_CURVE
+from .overlap_master import OVERLAP_CURVE_VERSION, OverlapCurve, build_overlap_curve
 
 __all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "BUILD_COST",
            "DEFAULT_TOL", "TOL_FLOOR"]
 
 #: Rough seconds to build a calibration bundle that is not cached.
 BUILD_COST = {"alpha>gamma": 15.0, "alpha<=gamma": 30.0}
+#: Rough seconds to build the overlap rule's master curve (1-2 s measured on the 2-core machine).
+OVERLAP_CURVE_COST = 3.0
 
 
 # ------------------------------------------------------------------------------------------ result
@@ -231,14 +239,48 @@ class Ladder:
     def master(self) -> MasterCurve:
         return self.calibration().master
 
+    # -- the overlap rule's master curve (its own cache file: built on its own, in seconds)
+    @property
+    def overlap_key(self) -> str:
+        return f"overlap-curve-a{self.ex.alpha}-g{self.ex.gamma}-v{OVERLAP_CURVE_VERSION}"
+
+    def _overlap_valid(self, d: dict) -> bool:
+        try:
+            c = OverlapCurve.from_dict(d)
+        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
+            return False
+        return (c.alpha, c.gamma) == (self.ex.alpha, self.ex.gamma) and c.spot_checks_pass()
+
+    def cached_overlap_curve(self) -> OverlapCurve | None:
+        if OVERLAP_CURVE not in self.built:
+            path = _cache.cache_path(self.overlap_key, self._directory())
+            d = _cache.load_json(path, self._stream)
+            if d is not None and self._overlap_valid(d):
+                self.built[OVERLAP_CURVE] = OverlapCurve.from_dict(d)
+            elif d is not None:
+                print(f"restitution: the cached overlap curve {path} does not pass its checks against the "
+                      "integrator; it is not used", file=self._stream, flush=True)
+        return self.built.get(OVERLAP_CURVE)
+
+    def overlap_curve(self) -> OverlapCurve:
+        if self.cached_overlap_curve() is None:
+            d = _cache.get_or_build(
+                self.overlap_key, lambda: build_overlap_curve(self.ex, None).as_dict(), valid=self._overlap_valid,
+                what=f"the overlap rule's master curve for alpha={self.ex.alpha}, gamma={self.ex.gamma}",
+                directory=self._directory(), stream=self._stream)
+            self.built[OVERLAP_CURVE] = OverlapCurve.from_dict(d)
+        return self.built[OVERLAP_CURVE]
+
     # -- builds, by the name a rung's ``needs`` gives
     def _cached(self, name: str):
-        return {CALIBRATION: self.cached_calibration}[name]()
+        return {CALIBRATION: self.cached_calibration, OVERLAP_CURVE: self.cached_overlap_curve}[name]()
 
     def _build(self, name: str):
-        return {CALIBRATION: self.calibration}[name]()
+        return {CALIBRATION: self.calibration, OVERLAP_CURVE: self.overlap_curve}[name]()
 
     def _build_cost(self, name: str) -> float:
+        if name == OVERLAP_CURVE:
+            return OVERLAP_CURVE_COST
         return BUILD_COST["alpha>gamma" if self.ex.alpha > self.ex.gamma else "alpha<=gamma"]
 
     # -- quotes

@@ -12,6 +12,7 @@ from .closed_form import ClosedForm
 from .highprec import Highprec
 from .integrator import Integrator
 from .overlap_integrator import OverlapIntegrator
+from .overlap_master import OverlapMaster
 from .reference import Reference
 
 __all__ = ["RUNGS", "ladder_rungs", "rung_names"]
@@ -23,6 +24,7 @@ RUNGS: tuple[Rung, ...] = (
     ElasticRung(),
     ClosedForm(),
     MasterRung(),
+    OverlapMaster(),
     Integrator(),
     OverlapIntegrator(),
     Reference(),
