@@ -40,9 +40,10 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
     the full ladder (see :func:`restitution.fast.ladder.epsilon` for the arguments and result).
 
     ``end="overlap"`` (contact lasts until the overlap returns to 0, as in LAMMPS without
-    limit_damping) is served only by the rungs that integrate or solve that rule: the linear
-    dashpot's closed form, the reference and the mpmath integrators (``Rung.ends``, :mod:`restitution.fast.rung`);
-    for alpha <= gamma both rules give the same eps and every rung serves."""
+    limit_damping) is served only by the rungs that declare that rule (``Rung.ends``,
+    :mod:`restitution.fast.rung`): the compiled integrator, that rule's own master curve, the linear
+    dashpot's closed form, the reference and the mpmath integrators; for alpha <= gamma both rules
+    give the same eps and every rung serves."""
     return _ladder.epsilon(alpha=alpha, gamma=gamma, omega=omega, g=g, D1=D1, D2=D2, tol=tol,
                            method=method, build=build, relations=RELATIONS, end=end)
 

@@ -1,7 +1,8 @@
 """The method ladder for eps(Omega) and ``epsilon()``, which picks the cheapest rung that meets a tolerance.
 
 Rungs (cheapest first; bounds are relative errors in eps, measured against the references on points
-not used to build the rung; "cal" = needs the calibration bundle, built once per exponents and cached):
+not used to build the rung; "cal" = needs the calibration bundle, built once per exponents and cached;
+"ovl" = needs the overlap rule's own curve, built alone in seconds and cached):
 
 ======================  =========================================  ============================  ========
 rung                    what                                       domain                        cost/pt
