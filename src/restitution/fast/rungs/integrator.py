@@ -6,10 +6,14 @@ from __future__ import annotations
 from ..master import reference_eps, stiff_omega_min
 from ..rung import Rung, integrator_bound, integrator_rtol
 
-__all__ = ["Integrator"]
+__all__ = ["Integrator", "OMEGA_MAX", "printed"]
 
-#: Largest Omega the compiled integrator is validated at.
+#: Largest Omega the compiled integrator is validated at (as messages print it: 1e14, not 1e+14).
 OMEGA_MAX = 1e14
+
+
+def printed(x: float) -> str:
+    return f"{x:g}".replace("e+", "e")
 
 
 class Integrator(Rung):
@@ -18,7 +22,7 @@ class Integrator(Rung):
     def outside(self, req):
         wmin = stiff_omega_min(req.ex, None)
         if req.lo < wmin or req.hi > OMEGA_MAX:
-            return f"Omega outside [{wmin:g}, {OMEGA_MAX:g}] (explicit method; stiff below)"
+            return f"Omega outside [{wmin:g}, {printed(OMEGA_MAX)}] (explicit method; stiff below)"
         return None
 
     def price(self, req):

@@ -10,7 +10,7 @@ from __future__ import annotations
 from ..integrator import OVERLAP_RTOL_MAX
 from ..master import reference_eps, stiff_omega_min
 from ..rung import Rung, integrator_bound, integrator_rtol
-from .integrator import OMEGA_MAX
+from .integrator import OMEGA_MAX, printed
 
 __all__ = ["OverlapIntegrator"]
 
@@ -25,7 +25,7 @@ class OverlapIntegrator(Rung):
     def outside(self, req):
         wmin = stiff_omega_min(req.ex, None, "overlap")
         if req.lo < wmin or req.hi > OMEGA_MAX:
-            return f"Omega outside [{wmin:g}, {OMEGA_MAX:g}] (explicit method; the creeping return is stiff below)"
+            return f"Omega outside [{wmin:g}, {printed(OMEGA_MAX)}] (explicit method; the creeping return is stiff below)"
         return None
 
     def price(self, req):
