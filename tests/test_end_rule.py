@@ -109,20 +109,24 @@ def test_dashpot_closed_form_refuses_a_stuck_overlap():
 
 def test_epsilon_overlap_uses_only_rungs_that_know_the_rule():
     res = restitution.epsilon(alpha="3/2", gamma=1, omega=[0.5, 2.0], end="overlap")
-    assert res.method in ("closed-form", "reference", "highprec")
+    assert res.method in ("closed-form", "master", "integrator", "reference", "highprec")
     for w, e in zip([0.5, 2.0], res.eps):
         assert math.isclose(e, collide("3/2", 1, w, end="overlap").eps, rel_tol=1e-9)
     served = {c["method"] for c in res.candidates if c["available"]}
-    assert served <= {"closed-form", "reference", "highprec"}
-    with pytest.raises(ParameterError, match="method"):
-        restitution.epsilon(alpha="3/2", gamma=1, omega=0.5, end="overlap", method="master")
+    assert served <= {"closed-form", "master", "integrator", "reference", "highprec"}
+    with pytest.raises(ParameterError, match="method"):   # the force rule's expansion
+        restitution.epsilon(alpha="3/2", gamma=1, omega=0.5, end="overlap", method="elastic")
     dash = restitution.epsilon(alpha=1, gamma=0, omega=0.5, end="overlap")
     assert dash.method == "closed-form" and dash.eps == pytest.approx(dashpot_collision(0.5, "overlap").eps)
 
 
-def test_fast_method_refuses_the_overlap_rule():
-    with pytest.raises(ParameterError, match="end"):
-        collide("3/2", 1, 0.5, method="fast", end="overlap")
+def test_fast_method_serves_the_overlap_rule():
+    """It used to refuse it (it stopped at zero force); now it ends at x = 0 (issue 23)."""
+    fast = collide("3/2", 1, 0.5, method="fast", end="overlap")
+    assert fast.rule == "overlap" and fast.end == "separation"
+    assert math.isclose(fast.eps, collide("3/2", 1, 0.5, end="overlap").eps, rel_tol=1e-9)
+    with pytest.raises(ParameterError, match="contact never ends"):
+        collide("5/2", "1/2", 0.1, method="fast", end="overlap")
 
 
 def test_bad_end_is_one_line_exit_2(capsys):

@@ -70,3 +70,79 @@ def test_the_check_sees_a_wrong_import(tmp_path):
     bad.write_text("from .errors import ParameterError\n\n\ndef f():\n    from ..audit import claims\n"
                    "    from restitution.fast import ladder\n")
     assert _imported_layers(bad, tmp_path) == {"core", "audit", "fast"}
+
+
+# ------------------------------------------------------------------ rungs: no cycle, no private names
+def _module_name(path: Path, root: Path = PKG) -> str:
+    parts = list(path.relative_to(root).with_suffix("").parts)
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def _imports(path: Path, root: Path = PKG):
+    """(imported module, names) for every package import in ``path`` (lazy ones included)."""
+    here = _module_name(path, root).split(".")
+    package = here if path.name == "__init__.py" else here[:-1]
+    for node in ast.walk(ast.parse(path.read_text(), filename=str(path))):
+        if isinstance(node, ast.ImportFrom) and node.level:
+            base = package[:len(package) - (node.level - 1)] + [p for p in (node.module or "").split(".") if p]
+            yield ".".join(base), [a.name for a in node.names]
+
+
+def _private_imports(root: Path = PKG, under: str = "fast") -> list[str]:
+    found = []
+    for path in sorted((root / under).rglob("*.py")):
+        for module, names in _imports(path, root):
+            modules = {_module_name(p, root) for p in root.rglob("*.py")}
+            private = [n for n in names if n.startswith("_") and f"{module}.{n}" not in modules]
+            if private:
+                found.append(f"{path.relative_to(root)} imports {private} from {module}")
+    return found
+
+
+def _cycles(root: Path = PKG, under: str = "fast") -> list[tuple[str, str]]:
+    modules = {_module_name(p, root): p for p in (root / under).rglob("*.py")}
+    graph = {m: set() for m in modules}
+    for m, path in modules.items():
+        for target, names in _imports(path, root):
+            for t in [target, *(f"{target}.{n}" for n in names)]:
+                if t in modules and t != m and not m.startswith(t + "."):
+                    graph[m].add(t)
+    pairs = []
+    for a in graph:   # a pair that reaches each other through the graph
+        seen, todo = set(), list(graph[a])
+        while todo:
+            b = todo.pop()
+            if b not in seen:
+                seen.add(b)
+                todo += graph[b]
+        pairs += [(a, b) for b in seen if b != a and a in _reach(graph, b)]
+    return pairs
+
+
+def _reach(graph, start):
+    seen, todo = set(), list(graph[start])
+    while todo:
+        b = todo.pop()
+        if b not in seen:
+            seen.add(b)
+            todo += graph[b]
+    return seen
+
+
+def test_fast_imports_no_private_name_of_another_module():
+    assert _private_imports() == []
+
+
+def test_fast_has_no_import_cycle():
+    """fast.ladder and fast.overlap used to import each other (COST, TOL_FLOOR, _Quote, rung_names)."""
+    assert _cycles() == []
+
+
+def test_the_rung_checks_see_a_cycle_and_a_private_import(tmp_path):
+    fast = tmp_path / "fast"
+    fast.mkdir()
+    (fast / "__init__.py").write_text("")
+    (fast / "a.py").write_text("from .b import _Quote\n")
+    (fast / "b.py").write_text("def f():\n    from .a import g\n")
+    assert _private_imports(tmp_path) == ["fast/a.py imports ['_Quote'] from fast.b"]
+    assert sorted(_cycles(tmp_path)) == [("fast.a", "fast.b"), ("fast.b", "fast.a")]

@@ -40,9 +40,10 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
     the full ladder (see :func:`restitution.fast.ladder.epsilon` for the arguments and result).
 
     ``end="overlap"`` (contact lasts until the overlap returns to 0, as in LAMMPS without
-    limit_damping) is served only by the rungs that integrate or solve that rule: the linear
-    dashpot's closed form, the reference and the mpmath integrators (:mod:`restitution.fast.overlap`);
-    for alpha <= gamma both rules give the same eps and every rung serves."""
+    limit_damping) is served only by the rungs that declare that rule (``Rung.ends``,
+    :mod:`restitution.fast.rung`): the compiled integrator, that rule's own master curve, the linear
+    dashpot's closed form, the reference and the mpmath integrators; for alpha <= gamma both rules
+    give the same eps and every rung serves."""
     return _ladder.epsilon(alpha=alpha, gamma=gamma, omega=omega, g=g, D1=D1, D2=D2, tol=tol,
                            method=method, build=build, relations=RELATIONS, end=end)
 
@@ -63,14 +64,14 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
       trajectory; relative accuracy 10 rtol + 1e-13, for ``one_minus_eps`` too (from the dissipated
       energy).
     * ``"fast"``: the compiled integrator (:mod:`restitution.fast.integrator`), tens of
-      microseconds; Omega in [1e-12, 1e14] (alpha <= gamma: from 1e-5, where the return is not stiff);
-      no ``one_minus_eps``.
+      microseconds; Omega in [1e-12, 1e14] (alpha <= gamma, and the overlap rule: from 1e-5, where
+      the return is not stiff); no ``one_minus_eps``.
     * ``"highprec"``: mpmath Taylor series at ``digits`` digits (:mod:`restitution.core.highprec`),
       rounded to doubles; ``rtol`` of the result is 10^(1 - digits).
     * ``"closed-form"``: exact, for the linear spring-dashpot alpha = 1, gamma = 0 only.
 
     ``end``: the end-of-contact rule, "force" (default) or "overlap" (see
-    :data:`restitution.core.results.END_RULES`); every method but "fast" serves both.
+    :data:`restitution.core.results.END_RULES`); every method serves both.
     """
     if method not in METHODS:
         raise ParameterError("method", method, f"must be one of {', '.join(METHODS)}")
@@ -91,22 +92,24 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
         return Collision(ex.alpha, ex.gamma, float(r.omega), "forward", float(r.eps), float(r.tau_b),
                          float(r.x_b), float(r.tau_c), float(r.x_c), r.end, 10.0 ** (1 - r.digits),
                          one_minus_eps=float(1 - r.eps), rule=end)
-    if end == "overlap" and ex.q_alpha > ex.q_gamma:
-        raise ParameterError("end", end, "the compiled integrator (method fast) stops at zero force; "
-                             "use method reference or highprec for the overlap rule")
     return _fast_collision(ex, omega, rtol, end)
 
 
 def _fast_collision(ex, omega, rtol, end: str = "force") -> Collision:
-    from .fast.integrator import COLUMNS, END_FORCE, END_SEPARATION, collide_fast
+    from .fast.integrator import COLUMNS, END_FORCE, END_SEPARATION, END_STUCK, collide_fast
     from .core.model import at_most_one
     from .fast.master import stiff_omega_min
 
-    lo = stiff_omega_min(ex, None)
+    lo = stiff_omega_min(ex, None, end)
     omega = number_in("omega", omega, lo, 1e14, why="the compiled integrator's range (method reference "
                       "or epsilon() cover the rest)")
     rtol = number_in("rtol", rtol, _collision.RTOL_MIN, 1e-6)
-    row = dict(zip(COLUMNS, collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol)[0]))
+    overlap = end == "overlap" and ex.alpha > ex.gamma
+    row = dict(zip(COLUMNS, collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, overlap)[0]))
+    if int(row["end"]) == END_STUCK:
+        raise _collision.StickError("omega", omega, "under the overlap rule contact never ends here: the "
+                                    "attractive phase stops the return and the bodies stay together "
+                                    "(eps = 0); use end=force")
     ends = {END_FORCE: "force", END_SEPARATION: "separation"}
     if int(row["end"]) not in ends:
         raise ArithmeticError(f"the compiled integrator failed at Omega = {omega:g}")

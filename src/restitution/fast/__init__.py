@@ -1,6 +1,7 @@
 """Fast evaluation of eps(Omega) to a stated accuracy; builds on :mod:`restitution.core` only.
 
-kernel and integrator (compiled DOP853), master (Chebyshev master curve with the expansions),
-calibration (the cached bundle of rung errors), ladder (the cheapest rung that meets a
+integrator (compiled DOP853), master (Chebyshev master curve with the expansions), calibration (the
+cached bundle of rung errors), rung (what a rung is, and the tolerance formulas), rungs (the
+registry: one module per kind of rung), ladder (the chooser: the cheapest quote that meets a
 tolerance), cache (sealed files on disk).
 """

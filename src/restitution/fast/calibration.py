@@ -136,14 +136,8 @@ def build_calibration(alpha, gamma, settings: MasterSettings | None = None, prog
         profiles["pade-mp2011"] = _rel_err(pade_mp2011(grid), ref)
     else:
         missing["pade-mp2011"] = "the Pade form is for alpha = 3/2, gamma = 1/2 only"
-    profiles["viscous"] = _rel_err(_viscous_eval(master, grid), ref)
+    profiles["viscous"] = _rel_err(master.viscous_eps(grid), ref)
     profiles["elastic"] = _rel_err(master.elastic.eps(grid, 2), ref)
     uniform = build_uniform(ex, None, say) if ex.alpha > ex.gamma else None
     return Calibration(master, profiles, rel, missing, uniform)
 
-
-def _viscous_eval(master: MasterCurve, om: np.ndarray) -> np.ndarray:
-    V = master.viscous
-    if V.kind == "closed":
-        return np.asarray(om, dtype=float).copy()  # eps = Omega, exponentially small error
-    return V.eps(om, 1)

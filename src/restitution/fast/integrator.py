@@ -17,6 +17,18 @@ small Omega, f is a tiny difference of nearly equal numbers and must not be form
 3. release   in tau from (x_b, 0, Omega x_b^(alpha-gamma)) until f = 0 (force end) or x < x_b / 4;
 4. land      in u down to u = 0 (separation) unless g = 0 (force end) first.
 
+Under the overlap rule (``overlap=True``: contact lasts until x = 0, the force pulling on the way)
+f = 0 is no end. Once the force pulls (from x_b / 4, or from the located zero of g in leg 4) the
+return may creep, and eps may lie a factor Omega^2 below the creep speed (alpha = 3/2, gamma = 1/2:
+eps = C Omega^3), so the last leg is that of core.collision._land_pulling:
+
+5. pull      in u down to u = 0, state (g, tau) with g = f and x' = g - Omega u^k (two negative
+             terms: no cancellation), g under a purely relative tolerance.
+
+Sticking is reported (END_STUCK) only where it is proved, as in core.collision: alpha = 2 gamma + 1
+with Omega <= 1/(4 (gamma + 1)) at once, and for alpha > 2 gamma + 1 once the return is in the trap
+x' >= -2 Omega x^(alpha-gamma) where x^(2 gamma + 1 - alpha) >= 4 Omega (alpha - gamma).
+
 g = Omega u^a + u^m v with a = max(k, 0), m = max(-k, 0), k = q_alpha - q_gamma: g = f when
 alpha >= gamma and u^m f otherwise, so that g is bounded at u = 0 and has the sign of f. Events
 (v = 0, f = 0, g = 0) are located by re-stepping from the start of the crossing step with a step
@@ -32,8 +44,8 @@ from scipy.integrate._ivp import dop853_coefficients as _dop
 
 from .jit import HAVE_NUMBA, njit
 
-__all__ = ["HAVE_NUMBA", "collide_fast", "law_parameters",
-           "END_FORCE", "END_SEPARATION", "END_FAILED"]
+__all__ = ["HAVE_NUMBA", "collide_fast", "law_parameters", "OVERLAP_RTOL_MAX",
+           "END_FORCE", "END_SEPARATION", "END_FAILED", "END_STUCK"]
 
 # ---------------------------------------------------------------------------- DOP853 tableau
 _NS = _dop.N_STAGES  # 12
@@ -61,6 +73,16 @@ MAX_STEPS = 2_000_000
 END_FORCE = 0
 END_SEPARATION = 1
 END_FAILED = 2
+#: Overlap rule only: proved never to separate (x and x' creep to 0 together).
+END_STUCK = 3
+#: Loosest rtol the overlap rule is run at: above about 3e-8 the carried force at x_b / 4 is too
+#: coarse for an eps a factor Omega^2 below the creep speed (alpha = 3/2, gamma = 1/2 near
+#: Omega = 1e-3: 40-80 rtol at rtol 3e-8 to 1e-7, against at most 2.7 rtol at 1e-8 and below).
+OVERLAP_RTOL_MAX = 1e-9
+#: An absolute tolerance that leaves the relative one in charge (the pulling leg's g).
+TINY = 1e-300
+#: The pulling leg's time (from 0 at its start): absolute tolerance TIME_MARGIN rtol x / |x'|.
+TIME_MARGIN = 1e-6
 
 # parameter vector layout
 _P_OMEGA, _P_P, _P_QA, _P_QG, _P_ALPHA, _P_GAMMA, _P_A, _P_M, _P_N = range(9)
@@ -90,8 +112,19 @@ def _ipow(u, n):
 
 @njit(cache=True)
 def _rhs(mode, t, y, out, P):
-    """mode 0: independent u, state (v, tau, g). mode 1: independent tau, state (x, v, f)."""
+    """mode 0: independent u, state (v, tau, g). mode 1: independent tau, state (x, v, f).
+    mode 2: independent u, state (g, tau, 0) with x' = g - Omega u^k (the pulling return, k > 0)."""
     om = P[_P_OMEGA]
+    if mode == 2:
+        u = t
+        g = y[0]
+        k = P[_P_QA] - P[_P_QG]
+        w = P[_P_P] * _ipow(u, P[_P_P] - 1.0)
+        v = g - om * _ipow(u, k)
+        out[0] = -w * _ipow(u, P[_P_QG]) * g / v + k * om * _ipow(u, k - 1.0)
+        out[1] = w / v
+        out[2] = 0.0
+        return
     if mode == 0:
         u = t
         v = y[0]
@@ -254,7 +287,12 @@ def _leg(mode, t0, y0, t_end, h_init, rtol, atol, P, kind, event_comp, stop_comp
     kind 1 (tau legs): stop at the zero of y[event_comp] (located); also, if stop_comp >= 0, after
         the first accepted step with y[stop_comp] < stop_value.
     kind 2 (land): integrate to t_end (u = 0) unless y[event_comp] vanishes first (located).
-    event_comp < 0: no event. status: 0 reached t_end / stop, 1 event, 2 failure.
+    kind 4 (release under the overlap rule): as kind 1, but steps that would take y[stop_comp] below
+        stop_value / 2 are rejected: with no force event to stop it, one long step would otherwise
+        carry x to near 0, where the tau form is singular (x^(alpha-gamma-1)).
+    kind 3 (pull, mode 2): integrate to t_end (u = 0); x' stays negative; status 3 as soon as an
+        accepted step ends in the trap of _trapped.
+    event_comp < 0: no event. status: 0 reached t_end / stop, 1 event, 2 failure, 3 stuck.
     """
     A = _A
     B = _B
@@ -300,6 +338,12 @@ def _leg(mode, t0, y0, t_end, h_init, rtol, atol, P, kind, event_comp, stop_comp
         if ok and kind == 2 and ynew[0] * y[0] <= 0.0:
             ok = False  # v changed sign in u: cannot happen in the physics, step too long
             err = 2.0 ** 8
+        if ok and kind == 4 and not ynew[stop_comp] >= 0.5 * stop_value:
+            ok = False
+            err = 2.0 ** 8
+        if ok and kind == 3 and not ynew[0] < P[_P_OMEGA] * _ipow(t + hs, P[_P_QA] - P[_P_QG]):
+            ok = False  # x' = g - Omega u^k changed sign: cannot happen in the physics, step too long
+            err = 2.0 ** 8
         if not ok:
             if err != err:
                 fac = 0.25
@@ -325,8 +369,12 @@ def _leg(mode, t0, y0, t_end, h_init, rtol, atol, P, kind, event_comp, stop_comp
             f[i] = fnew[i]
         if kind == 0 and y[0] <= stop_value:
             break
-        if kind == 1 and stop_comp >= 0 and y[stop_comp] < stop_value:
+        if (kind == 1 or kind == 4) and stop_comp >= 0 and y[stop_comp] < stop_value:
             break
+        if kind == 3 and _trapped(t, y[0], P) >= 0.0:
+            for i in range(3):
+                out_y[i] = y[i]
+            return t, 3, steps
         if last:
             break
         if err == 0.0:
@@ -342,9 +390,57 @@ def _leg(mode, t0, y0, t_end, h_init, rtol, atol, P, kind, event_comp, stop_comp
     return t, 0, steps
 
 
+@njit(cache=True)
+def _trapped(u, g, P):
+    """>= 0 exactly where a pulling return provably sticks (core.collision._Trap): s = -x' <=
+    2 Omega x^d (g >= -Omega u^k) at an x with x^(2 gamma + 1 - alpha) >= 4 Omega d. Only
+    alpha > 2 gamma + 1 has such points."""
+    excess = P[_P_QA] - 2.0 * P[_P_QG] - P[_P_P]
+    if excess <= 0.0:
+        return -1.0
+    om = P[_P_OMEGA]
+    below = g + om * _ipow(u, P[_P_QA] - P[_P_QG])
+    if u <= 0.0:
+        return below
+    return min(below, 1.0 / _ipow(u, excess) - 4.0 * om * (P[_P_ALPHA] - P[_P_GAMMA]))
+
+
+@njit(cache=True)
+def _pull(P, u0, g0, tau0, rtol, out, steps_total):
+    """Leg 5: the pulling return from u0 (g0 = f, about 0 or below) down to u = 0; fills out like _collide_one."""
+    om = P[_P_OMEGA]
+    k = P[_P_QA] - P[_P_QG]
+    out[6] = steps_total
+    if _trapped(u0, g0, P) >= 0.0:
+        out[5] = END_STUCK
+        return
+    y = np.empty(3)
+    yo = np.empty(3)
+    atol = np.empty(3)
+    y[0] = g0
+    y[1] = 0.0
+    y[2] = 0.0
+    v0 = g0 - om * _ipow(u0, k)
+    atol[0] = TINY
+    atol[1] = TIME_MARGIN * rtol * _ipow(u0, P[_P_P]) / abs(v0)
+    atol[2] = 1.0
+    ue, st, n = _leg(2, u0, y, 0.0, 1e-3 * u0, rtol, atol, P, 3, -1, -1, 0.0, yo,
+                     MAX_STEPS - steps_total)
+    out[6] = steps_total + n
+    if st == 3:
+        out[5] = END_STUCK
+        return
+    if st != 0 or not yo[0] < 0.0:   # at u = 0, x' = g
+        return
+    out[0] = -yo[0]
+    out[3] = tau0 + yo[1]
+    out[4] = 0.0
+    out[5] = END_SEPARATION
+
+
 # ---------------------------------------------------------------------------- one collision
 @njit(cache=True)
-def _collide_one(P, rtol, out):
+def _collide_one(P, rtol, out, overlap):
     """out = (eps, tau_b, x_b, tau_c, x_c, end, steps)."""
     om = P[_P_OMEGA]
     p = P[_P_P]
@@ -360,6 +456,12 @@ def _collide_one(P, rtol, out):
     atol = np.empty(3)
     y = np.empty(3)
     yo = np.empty(3)
+    # the overlap rule's self-similar case alpha = 2 gamma + 1 sticks below 1/(4 (gamma+1)) (proved
+    # in core.collision._check_separates)
+    if overlap and P[_P_QA] == 2.0 * P[_P_QG] + p and om <= 1.0 / (4.0 * (gamma + 1.0)):
+        out[5] = END_STUCK
+        out[6] = 0
+        return
 
     # ---- leg 1: rise in u
     x_el = ((alpha + 1.0) / (2.0 * om)) ** (1.0 / (alpha + 1.0))
@@ -422,12 +524,12 @@ def _collide_one(P, rtol, out):
     atol[0] = ATOL_MARGIN * rtol * xb
     atol[1] = ATOL_MARGIN * rtol * vs
     atol[2] = ATOL_MARGIN * rtol * max(min(fb, fqs), 1e-300)
-    ev = 2 if k > 0 else -1
+    ev = 2 if k > 0 and not overlap else -1
     # first step from rest: the time for x to change by rtol x_b under the force
     xg = xb ** gamma
     h0 = min(1.0 / max(xg, 1e-300), math.sqrt(xb / max(om * xb ** alpha, 1e-300))) * 1e-3
     t_guard = tb + 1e7 * (1.0 + xb / max(vs, 1e-300))
-    tc, st, n = _leg(1, tb, y, t_guard, h0, rtol, atol, P, 1, ev, 0, SWITCH_FRACTION * xb, yo,
+    tc, st, n = _leg(1, tb, y, t_guard, h0, rtol, atol, P, 4 if overlap else 1, ev, 0, SWITCH_FRACTION * xb, yo,
                      MAX_STEPS - steps_total)
     steps_total += n
     if st == 2:
@@ -448,6 +550,9 @@ def _collide_one(P, rtol, out):
     v3 = yo[1]
     f3 = yo[2]
     u3 = x3 ** (1.0 / p)
+    if overlap and k > 0 and f3 < 0.0:
+        _pull(P, u3, f3, tc, rtol, out, steps_total)
+        return
     y[0] = v3
     y[1] = tc
     y[2] = f3 * _ipow(u3, m) if m > 0 else f3
@@ -461,6 +566,12 @@ def _collide_one(P, rtol, out):
     out[6] = steps_total
     if st == 2:
         return
+    if overlap and st == 1:
+        # The force vanished on the way down: from here it pulls. The carried g is accurate only
+        # relative to its size at x_b / 4 (its zero is where the true force is still 3e-9 of eps at
+        # Omega = 1e5), v relative to itself: restart g from v (it may start just above 0).
+        _pull(P, ue, om * _ipow(ue, k) + yo[0], yo[1], rtol, out, steps_total)
+        return
     out[0] = -yo[0]
     out[3] = yo[1]
     if st == 1:
@@ -472,11 +583,11 @@ def _collide_one(P, rtol, out):
 
 
 @njit(cache=True)
-def _collide_many(P, omegas, rtol, res):
+def _collide_many(P, omegas, rtol, res, overlap):
     out = np.empty(7)
     for i in range(omegas.size):
         P[_P_OMEGA] = omegas[i]
-        _collide_one(P, rtol, out)
+        _collide_one(P, rtol, out, overlap)
         for j in range(7):
             res[i, j] = out[j]
 
@@ -485,14 +596,17 @@ def _collide_many(P, omegas, rtol, res):
 COLUMNS = ("eps", "tau_b", "x_b", "tau_c", "x_c", "end", "steps")
 
 
-def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12) -> np.ndarray:
+def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12, overlap: bool = False) -> np.ndarray:
     """Integrate one collision per Omega; returns an (n, 7) array with columns ``COLUMNS``.
 
-    Exponents as integers: alpha = qa/p, gamma = qg/p. ``end`` is END_FORCE, END_SEPARATION or
+    Exponents as integers: alpha = qa/p, gamma = qg/p. ``overlap``: the overlap end rule instead of
+    the force rule (run at rtol at most OVERLAP_RTOL_MAX). ``end`` is END_FORCE, END_SEPARATION, END_STUCK (overlap rule, proved) or
     END_FAILED (then the other columns are NaN where undetermined). No input validation: the
     callers (ladder, master) validate.
     """
     om = np.ascontiguousarray(np.atleast_1d(np.asarray(omegas, dtype=np.float64)))
     res = np.empty((om.size, 7))
-    _collide_many(law_parameters(int(p), int(qa), int(qg), 0.0), om, float(rtol), res)
+    if overlap:
+        rtol = min(rtol, OVERLAP_RTOL_MAX)
+    _collide_many(law_parameters(int(p), int(qa), int(qg), 0.0), om, float(rtol), res, bool(overlap))
     return res

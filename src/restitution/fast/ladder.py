@@ -1,7 +1,8 @@
 """The method ladder for eps(Omega) and ``epsilon()``, which picks the cheapest rung that meets a tolerance.
 
 Rungs (cheapest first; bounds are relative errors in eps, measured against the references on points
-not used to build the rung; "cal" = needs the calibration bundle, built once per exponents and cached):
+not used to build the rung; "cal" = needs the calibration bundle, built once per exponents and cached;
+"ovl" = needs the overlap rule's own curve, built alone in seconds and cached):
 
 ======================  =========================================  ============================  ========
 rung                    what                                       domain                        cost/pt
@@ -23,8 +24,12 @@ closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma;
                  (cal)  otherwise the uniform form (core.uniform)   alpha>gamma, Omega in          ~1e-7 s
                                                                     [1e-8, 1e8]
 master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
+                 (ovl)  overlap rule: its own curve, Chebyshev      Omega in [1e-4, 1e8], above    ~4e-8 s
+                        only (fast.overlap_master), built alone     a sticking boundary
+                        in 1-2 s
 integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-12, 1e14]         2e-5 to
-                        from tol                                    (alpha<=gamma: >= 1e-5)        7e-5 s
+                        from tol; both end rules                    (alpha<=gamma, overlap rule:   7e-5 s
+                                                                    >= 1e-5)
 reference               core.collision.collide (scipy)              all                            ~1e-2 s
 highprec                core.highprec (mpmath Taylor)               all (alpha<=gamma: >= 1e-3)    0.15 s and
                                                                                                    more at small
@@ -43,8 +48,13 @@ Bounds:
 * closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
-End rule: every rung above computes the "force" rule; an ``end="overlap"`` request goes to the rungs
-of :mod:`restitution.fast.overlap` instead (for alpha <= gamma the rules coincide and all serve).
+End rule: each rung declares the rules it serves where they differ (alpha > gamma): closed-form
+(the dashpot only), master, integrator, reference and highprec serve both (each with a rung of
+its own per rule where needed); the others the "force" rule (for
+alpha <= gamma the rules coincide and all serve).
+
+Each rung is an object of :mod:`restitution.fast.rungs` (interface: :mod:`restitution.fast.rung`);
+this module only compares their quotes and loads or builds what they read.
 
 Choice: among rungs whose domain holds every input and whose bound over the inputs is <= tol, the
 least expected time (setup + n x cost). The calibration bundle is built (seconds, cached on disk) only
@@ -59,32 +69,30 @@ import math
 import sys
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Callable
 
 import numpy as np
 
-from ..core import asymptotics as asy
 from . import cache as _cache
 from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
 from ..core.results import end_rule
 from ..core.exponents import Exponents, as_exponents
-from ..core.connection import eps_from_connection
 from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
-                          _viscous_eval, build_calibration, pade_mp2011)
-from .master import MASTER_VERSION, MasterCurve, MasterSettings, integrator_bound, reference_eps, stiff_omega_min
-from .uniform_eval import uniform_eps
-from .slow_rungs import HIGHPREC_COST, _dashpot_eps, _highprec_cost, _highprec_eps, _scipy_eps
+                          build_calibration)
+from .master import MASTER_VERSION, MasterCurve, MasterSettings, reference_eps
+from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request, integrator_bound
+from .rungs import ladder_rungs, rung_names
+from .rungs.calibrated import CALIBRATION, SAFETY
+from .rungs.overlap_master import OVERLAP_CURVE
+from .overlap_master import OVERLAP_CURVE_VERSION, OverlapCurve, build_overlap_curve
 
-__all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE"]
+__all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "BUILD_COST",
+           "DEFAULT_TOL", "TOL_FLOOR"]
 
-#: Profile bounds are SAFETY times the largest measured error at the bracketing grid points.
-SAFETY = 3.0
-#: Rough seconds per point (measured by benchmarks/speed_accuracy.py on one core).
-COST = {"relation": 2e-8, "pade": 2e-8, "viscous": 2e-8, "elastic": 3e-8, "closed-equal": 5e-7, "uniform": 1e-7,
-        "closed-dashpot": 5e-6, "master": 4e-8, "integrator": 6e-5, "reference": 1e-2, "highprec": HIGHPREC_COST}
 #: Rough seconds to build a calibration bundle that is not cached.
 BUILD_COST = {"alpha>gamma": 15.0, "alpha<=gamma": 30.0}
+#: Rough seconds to build the overlap rule's master curve (1-2 s measured on the 2-core machine).
+OVERLAP_CURVE_COST = 3.0
 
 
 # ------------------------------------------------------------------------------------------ result
@@ -132,38 +140,9 @@ def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
     return arr
 
 
-#: Tolerance when none is given (and no method is forced).
-DEFAULT_TOL = 1e-9
-#: No method returns a double closer than this to the true eps (rounding of the result itself).
-TOL_FLOOR = 2.3e-16
-
-
 def _check_tol(tol) -> float:
     # Refuse an unreachable tolerance at once, before any master curve is built for nothing.
     return number_in("tol", tol, TOL_FLOOR, 1.0, hi_open=True, why="no method returns a double closer than that")
-
-
-# ------------------------------------------------------------------------------------------ rungs
-@dataclass
-class _Quote:
-    name: str
-    bound: float
-    cost: float
-    setting: str = ""
-    reason: str = ""
-    needs_cal: bool = False
-    run: Callable | None = None
-    coefficients: dict | None = None
-
-
-def _calibrated_names(relations) -> list[str]:
-    return [*(r.name for r in relations), "pade-mp2011", "viscous", "elastic", "master"]
-
-
-def rung_names(relations=(FITTED_C,)) -> tuple[str, ...]:
-    """The ladder's rungs, cheapest kinds first, for these relation rungs."""
-    *cal, master = _calibrated_names(relations)
-    return (*cal, "closed-form", master, "integrator", "reference", "highprec")
 
 
 #: Where in each Chebyshev panel a loaded master curve is checked against the integrator (a
@@ -191,12 +170,6 @@ def _uniform_checks_pass(ex: Exponents, u) -> bool:
     return bool(np.all(np.abs(u.eps(om) / ref - 1) <= u.bound_eps))
 
 
-def _viscous_domain(ex: Exponents, omega_max: float) -> str | None:
-    """Why the viscous expansion does not serve up to ``omega_max`` (None if it does)."""
-    limit = 1e-3 if ex.alpha > ex.gamma else 1e-2   # the "force" kind of asy.viscous_limit
-    return f"Omega > {limit:g}" if omega_max > limit else None
-
-
 class Ladder:
     """The ladder for one pair of exponents (and one calibration setting / cache directory)."""
 
@@ -204,11 +177,21 @@ class Ladder:
                  stream=None, relations: tuple[Relation, ...] = (FITTED_C,)):
         self.ex = as_exponents(alpha, gamma)
         self.relations = tuple(relations)
+        self.rungs = ladder_rungs(self.relations)
         self.rung_names = rung_names(self.relations)
         self.settings = settings or MasterSettings()
         self.cache_dir = cache_dir
         self.stream = stream
-        self._cal: Calibration | None = None
+        #: What is built and loaded, by build name (what the rungs' ``needs`` name).
+        self.built: dict = {}
+
+    @property
+    def _stream(self):
+        return sys.stderr if self.stream is None else self.stream
+
+    def _directory(self):
+        from pathlib import Path
+        return Path(self.cache_dir) if self.cache_dir else None
 
     # -- calibration bundle
     @property
@@ -229,22 +212,19 @@ class Ladder:
                 and _uniform_checks_pass(self.ex, cal.uniform))
 
     def cached_calibration(self) -> Calibration | None:
-        if self._cal is None:
-            from pathlib import Path
-            stream = sys.stderr if self.stream is None else self.stream
-            path = _cache.cache_path(self.cache_key, Path(self.cache_dir) if self.cache_dir else None)
-            d = _cache.load_json(path, stream)
+        if CALIBRATION not in self.built:
+            path = _cache.cache_path(self.cache_key, self._directory())
+            d = _cache.load_json(path, self._stream)
             if d is not None and self._valid(d):
-                self._cal = Calibration.from_dict(d)
+                self.built[CALIBRATION] = Calibration.from_dict(d)
             elif d is not None:
                 print(f"restitution: the cached master curve {path} does not pass its checks against the "
-                      "integrator; it is not used", file=stream, flush=True)
-        return self._cal
+                      "integrator; it is not used", file=self._stream, flush=True)
+        return self.built.get(CALIBRATION)
 
     def calibration(self) -> Calibration:
         if self.cached_calibration() is None:
-            from pathlib import Path
-            stream = sys.stderr if self.stream is None else self.stream
+            stream = self._stream
 
             def progress(msg):
                 print(f"restitution:   {msg}", file=stream, flush=True)
@@ -252,149 +232,69 @@ class Ladder:
             d = _cache.get_or_build(
                 self.cache_key, lambda: build_calibration(self.ex, None, self.settings, progress, self.relations).as_dict(),
                 valid=self._valid, what=f"the master curve for alpha={self.ex.alpha}, gamma={self.ex.gamma}",
-                directory=Path(self.cache_dir) if self.cache_dir else None, stream=stream)
-            self._cal = Calibration.from_dict(d)
-        return self._cal
+                directory=self._directory(), stream=stream)
+            self.built[CALIBRATION] = Calibration.from_dict(d)
+        return self.built[CALIBRATION]
 
     @property
     def master(self) -> MasterCurve:
         return self.calibration().master
 
+    # -- the overlap rule's master curve (its own cache file: built on its own, in seconds)
+    @property
+    def overlap_key(self) -> str:
+        return f"overlap-curve-a{self.ex.alpha}-g{self.ex.gamma}-v{OVERLAP_CURVE_VERSION}"
+
+    def _overlap_valid(self, d: dict) -> bool:
+        try:
+            c = OverlapCurve.from_dict(d)
+        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
+            return False
+        return (c.alpha, c.gamma) == (self.ex.alpha, self.ex.gamma) and c.spot_checks_pass()
+
+    def cached_overlap_curve(self) -> OverlapCurve | None:
+        if OVERLAP_CURVE not in self.built:
+            path = _cache.cache_path(self.overlap_key, self._directory())
+            d = _cache.load_json(path, self._stream)
+            if d is not None and self._overlap_valid(d):
+                self.built[OVERLAP_CURVE] = OverlapCurve.from_dict(d)
+            elif d is not None:
+                print(f"restitution: the cached overlap curve {path} does not pass its checks against the "
+                      "integrator; it is not used", file=self._stream, flush=True)
+        return self.built.get(OVERLAP_CURVE)
+
+    def overlap_curve(self) -> OverlapCurve:
+        if self.cached_overlap_curve() is None:
+            d = _cache.get_or_build(
+                self.overlap_key, lambda: build_overlap_curve(self.ex, None).as_dict(), valid=self._overlap_valid,
+                what=f"the overlap rule's master curve for alpha={self.ex.alpha}, gamma={self.ex.gamma}",
+                directory=self._directory(), stream=self._stream)
+            self.built[OVERLAP_CURVE] = OverlapCurve.from_dict(d)
+        return self.built[OVERLAP_CURVE]
+
+    # -- builds, by the name a rung's ``needs`` gives
+    def _cached(self, name: str):
+        return {CALIBRATION: self.cached_calibration, OVERLAP_CURVE: self.cached_overlap_curve}[name]()
+
+    def _build(self, name: str):
+        return {CALIBRATION: self.calibration, OVERLAP_CURVE: self.overlap_curve}[name]()
+
+    def _build_cost(self, name: str) -> float:
+        if name == OVERLAP_CURVE:
+            return OVERLAP_CURVE_COST
+        return BUILD_COST["alpha>gamma" if self.ex.alpha > self.ex.gamma else "alpha<=gamma"]
+
     # -- quotes
-    def _profile_bound(self, cal: Calibration, name: str, lo10: float, hi10: float) -> float:
-        g = cal.master.grid_log10_omega
-        e = cal.profiles[name]
-        if lo10 < g[0] - 1e-9 or hi10 > g[-1] + 1e-9:
-            return math.inf
-        i0 = max(0, int(np.searchsorted(g, lo10, side="right")) - 1)
-        i1 = min(g.size - 1, int(np.searchsorted(g, hi10, side="left")))
-        worst = float(np.max(e[i0:i1 + 1]))
-        return SAFETY * worst + integrator_bound(cal.master.settings.rtol)
-
-    def quotes(self, omega: np.ndarray, tol: float) -> list[_Quote]:
+    def quotes(self, omega: np.ndarray, tol: float, end: str = "force") -> list[Quote]:
         """Every rung with its bound over ``omega``, cost and a runner (None when not applicable)."""
-        ex = self.ex
-        n = omega.size
-        lo, hi = float(omega.min()), float(omega.max())
-        lo10, hi10 = math.log10(lo), math.log10(hi)
-        cal = self.cached_calibration()
-        out: list[_Quote] = []
-        big = ex.alpha > ex.gamma
+        req = Request(self.ex, np.asarray(omega, float).ravel(), tol, end, self._loaded(end), self.stream)
+        return [r.quote(req) for r in self.rungs]
 
-        # calibrated rungs
-        cal_names = _calibrated_names(self.relations)
-        if cal is None:
-            for name in cal_names:
-                cost = COST["master"] if name == "master" else COST["relation"]
-                # a rung's domain does not depend on the cache: say it first, so the answer is the
-                # same on a fresh machine and on one that built the bundle
-                outside = _viscous_domain(ex, hi) if name == "viscous" else None
-                out.append(_Quote(name, math.inf, 0.0, reason=outside) if outside else
-                           _Quote(name, math.nan, cost * n, reason="needs the calibration bundle (not built yet)",
-                                  needs_cal=True))
-        else:
-            for name in cal_names:
-                out.append(self._cal_quote(cal, name, omega, lo10, hi10, n))
-
-        # closed forms
-        if ex.alpha == ex.gamma:
-            out.append(_Quote("closed-form", 2e-14, COST["closed-equal"] * n, "alpha = gamma",
-                              run=lambda om: asy.equal_exponents_eps(om),
-                              coefficients={"exact": "alpha = gamma (restitution.core.asymptotics.equal_exponents_eps)"}))
-        elif ex.alpha == 1 and ex.gamma == 0:
-            out.append(_Quote("closed-form", 2e-14, COST["closed-dashpot"] * n, "spring-dashpot",
-                              run=_dashpot_eps, coefficients={"exact": "linear spring-dashpot (restitution.core.dashpot)"}))
-        elif not big:
-            out.append(_Quote("closed-form", math.inf, 0.0, reason="alpha < gamma: the viscous limit's first "
-                              "correction, which the uniform form needs, is not known in closed form"))
-        else:
-            out.append(self._uniform_quote(cal, lo, hi, n))
-
-        # compiled integrator
-        wmin = stiff_omega_min(ex, None)
-        if lo < wmin or hi > 1e14:
-            out.append(_Quote("integrator", math.inf, math.inf,
-                              reason=f"Omega outside [{wmin:g}, 1e14] (explicit method; stiff below)"))
-        else:
-            rtol = min(1e-6, max(1e-14, (tol - integrator_bound(0.0)) / (2 * 10.0)))
-            cost = COST["integrator"] * n * (1.0 if big else (1.0 + 1e-3 / lo))
-            out.append(_Quote("integrator", integrator_bound(rtol), cost, f"rtol={rtol:.3g}",
-                              run=lambda om, r=rtol: reference_eps(ex, None, om, r)))
-
-        # scipy reference, only where its accuracy was verified (collision.OMEGA_RANGE)
-        from ..core.collision import OMEGA_RANGE
-
-        rtol_s = min(1e-6, max(1e-14, (tol - 1e-13) / 20.0))
-        if lo < OMEGA_RANGE[0] or hi > OMEGA_RANGE[1]:
-            out.append(_Quote("reference", math.inf, math.inf,
-                              reason=f"Omega outside [{OMEGA_RANGE[0]:g}, {OMEGA_RANGE[1]:g}] (its verified range)"))
-        else:
-            out.append(_Quote("reference", 10.0 * rtol_s + 1e-13, COST["reference"] * n, f"rtol={rtol_s:.3g}",
-                              run=lambda om, r=rtol_s: _scipy_eps(ex, om, r)))
-
-        # mpmath reference
-        if not big and lo < 1e-3:
-            out.append(_Quote("highprec", math.inf, math.inf, reason="Omega < 1e-3 with alpha <= gamma (creeping)"))
-        else:
-            digits = int(min(60, max(15, math.ceil(-math.log10(tol)) + 3)))
-            out.append(_Quote("highprec", max(10.0 ** (1 - digits), TOL_FLOOR), _highprec_cost(omega, digits),
-                              f"digits={digits}", run=lambda om, d=digits: _highprec_eps(ex, om, d, self.stream)))
-        return out
-
-    def _uniform_quote(self, cal: Calibration | None, lo: float, hi: float, n: int) -> _Quote:
-        from ..core.uniform import FORM_RANGE
-        if lo < FORM_RANGE[0] or hi > FORM_RANGE[1]:
-            return _Quote("closed-form", math.inf, 0.0,
-                          reason=f"Omega outside [{FORM_RANGE[0]:g}, {FORM_RANGE[1]:g}] (where its bound was measured)")
-        if cal is None:
-            return _Quote("closed-form", math.nan, COST["uniform"] * n,
-                          reason="needs the calibration bundle (not built yet)", needs_cal=True)
-        u = cal.uniform
-        return _Quote("closed-form", u.bound_eps, COST["uniform"] * n, "uniform form",
-                      run=lambda om: uniform_eps(u, om),
-                      coefficients={**u.coefficients(), "bound_one_minus_eps": u.bound_one_minus_eps})
-
-    def _cal_quote(self, cal: Calibration, name: str, omega, lo10, hi10, n) -> _Quote:
-        ex = self.ex
-        m = cal.master
-        if name == "master":
-            return _Quote(name, m.bound(omega), COST["master"] * n, f"{m.coef.shape[0]} panels",
-                          run=lambda om: m.eps(om))
-        if name in cal.unavailable:
-            return _Quote(name, math.inf, 0.0, reason=cal.unavailable[name])
-        if name in ("viscous", "elastic"):
-            if name == "viscous":
-                outside = _viscous_domain(ex, 10 ** hi10)
-                if outside:
-                    return _Quote(name, math.inf, 0.0, reason=outside)
-                model = m.viscous_bound
-                run = lambda om: _viscous_eval(m, om)  # noqa: E731
-            else:
-                if 10 ** lo10 < 1e2:
-                    return _Quote(name, math.inf, 0.0, reason="Omega < 100")
-                model = m.elastic_bound
-                run = lambda om: m.elastic.eps(om, 2)  # noqa: E731
-            g = m.grid_log10_omega
-            b = 0.0
-            if hi10 >= g[0] and lo10 <= g[-1]:
-                b = self._profile_bound(cal, name, max(lo10, g[0]), min(hi10, g[-1]))
-            ends = np.array([10 ** lo10, 10 ** hi10])
-            outside = ends[(np.log10(ends) < g[0]) | (np.log10(ends) > g[-1])]
-            if outside.size:
-                b = max(b, float(np.max(SAFETY * model(outside))))
-            return _Quote(name, b, COST[name] * n, "expansion", run=run)
-        if name not in cal.profiles:
-            return _Quote(name, math.inf, 0.0, reason="not calibrated")
-        b = self._profile_bound(cal, name, lo10, hi10)
-        if name == "pade-mp2011":
-            run = pade_mp2011
-            cost = COST["pade"]
-        else:
-            c = cal.relations[name]["c"]
-            run = lambda om, c=c: eps_from_connection(ex, None, om, c)  # noqa: E731
-            cost = COST["relation"]
-        reason = "" if math.isfinite(b) else "no finite measured error over these Omegas (outside the grid or the relation breaks down)"
-        return _Quote(name, b, cost * n, "c0-c2" if name != "pade-mp2011" else "", reason=reason, run=run)
+    def _loaded(self, end: str) -> dict:
+        probe = Request(self.ex, np.ones(1), 1.0, end)
+        for name in {r.needs(probe) for r in self.rungs if r.serves(probe)} - {None}:
+            self._cached(name)
+        return dict(self.built)
 
     # -- the choice
     def evaluate(self, omega, *, tol: float | None = DEFAULT_TOL, method: str | None = None,
@@ -408,22 +308,24 @@ class Ladder:
             raise ParameterError("build", build, "must be True, False or None")
         if method is not None and method not in self.rung_names:
             raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
+        end = end_rule(end)
         flat = om.ravel()
-        if end_rule(end) == "overlap" and self.ex.alpha > self.ex.gamma:
-            # only the rungs that know the overlap rule (its docstring); none of them is built
-            from .overlap import overlap_quotes
-            quotes, build = overlap_quotes(self.ex, flat, tol), False
-        else:
-            quotes = self.quotes(flat, tol)
-        if build is not False and self.cached_calibration() is None:
-            need = method is not None and any(q.name == method and q.needs_cal for q in quotes)
-            if build or need or self._building_pays(quotes, tol, flat.size):
-                self.calibration()
-                quotes = self.quotes(flat, tol)
+        quotes = self.quotes(flat, tol, end)
+        if build is not False:
+            wanted = {q.needs_build for q in quotes if q.needs_build}
+            if method is not None:
+                wanted &= {q.needs_build for q in quotes if q.name == method}
+            if not build:
+                wanted &= self._building_pays(quotes, tol, flat.size) if method is None else wanted
+            if wanted:
+                for name in sorted(wanted):
+                    self._build(name)
+                quotes = self.quotes(flat, tol, end)
         if method is not None:
-            q = next(q for q in quotes if q.name == method)
+            mine = [q for q in quotes if q.name == method]
+            q = next((q for q in mine if q.run is not None), mine[0])
             if q.run is None:
-                raise ParameterError("method", method, f"not available here: {q.reason or 'needs the calibration'}")
+                raise ParameterError("method", method, f"not available here: {q.reason or 'needs a build'}")
             if checked and not q.bound <= tol:
                 raise ParameterError("tol", tol, f"method {method} has bound {q.bound:.3g} over these Omegas")
             chosen = q
@@ -445,11 +347,16 @@ class Ladder:
         return EpsResult(eps.reshape(om.shape), chosen.name, float(chosen.bound), om, self.ex.alpha,
                          self.ex.gamma, tol if checked else None, chosen.setting, table, chosen.coefficients)
 
-    def _building_pays(self, quotes, tol: float, n: int) -> bool:
-        """Build the calibration when nothing else meets tol, or when it is cheaper overall."""
-        plain = [q.cost for q in quotes if not q.needs_cal and q.run is not None and q.bound <= tol]
-        setup = BUILD_COST["alpha>gamma" if self.ex.alpha > self.ex.gamma else "alpha<=gamma"]
-        return not plain or setup + COST["master"] * n < min(plain)
+    def _building_pays(self, quotes, tol: float, n: int) -> set[str]:
+        """The builds worth making: all the quoted ones when nothing else meets tol; otherwise those
+        whose cost plus their cheapest rung's undercuts the best rung that needs no build."""
+        plain = [q.cost for q in quotes if q.run is not None and q.bound <= tol]
+        pending = {q.needs_build for q in quotes if q.needs_build}
+        if not plain:
+            return pending
+        best = min(plain)
+        return {b for b in pending
+                if self._build_cost(b) + min(q.cost for q in quotes if q.needs_build == b) < best}
 
 
 # --------------------------------------------------------------------------------- the public call
@@ -476,7 +383,7 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
     with whatever bound it has); ``build`` = False never builds the
     calibration bundle, True always does, None (default) builds it when that pays.
     ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's). ``end``: the
-    end-of-contact rule; "overlap" is served only by the rungs of :mod:`restitution.fast.overlap`.
+    end-of-contact rule; "overlap" is served only by the rungs that declare it (``Rung.ends``).
     Raises ParameterError for bad input and for a tolerance no rung meets.
     """
     ex = as_exponents(alpha, gamma)

@@ -34,8 +34,9 @@ from numpy.polynomial import chebyshev as cheb
 from ..core import asymptotics as asy
 from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
-from .integrator import END_FAILED, collide_fast
+from .integrator import END_FAILED, END_STUCK, collide_fast
 from .panels import chebyshev_panels_eval
+from .rung import INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR, integrator_bound
 
 __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps",
            "INTEGRATOR_BOUND_FACTOR", "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "stiff_omega_min"]
@@ -43,26 +44,17 @@ __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "r
 #: Bumped whenever the construction changes, so cached curves of an older kind are rebuilt.
 MASTER_VERSION = 1
 
-#: Validated accuracy of the compiled integrator: |error| <= FACTOR * rtol + FLOOR (relative).
-#: Measured against the mpmath reference in tests/test_epsilon.py and the benchmark (observed:
-#: <= 1.6 rtol for rtol >= 1e-12 and <= 6e-15 at rtol = 1e-14 over Omega 1e-8..1e12).
-INTEGRATOR_BOUND_FACTOR = 10.0
-INTEGRATOR_BOUND_FLOOR = 5e-14
-
-
-def integrator_bound(rtol: float) -> float:
-    return INTEGRATOR_BOUND_FACTOR * rtol + INTEGRATOR_BOUND_FLOOR
-
-
-def stiff_omega_min(alpha, gamma) -> float:
+def stiff_omega_min(alpha, gamma, end: str = "force") -> float:
     """Smallest Omega the explicit compiled integrator is used for.
 
     For alpha > gamma contact ends a few relaxation times after maximum compression and nothing is
     stiff (1e-12 is just the tested range). For alpha <= gamma the return creeps for a time ~ 1/Omega
     while the fast relaxation stays O(1): the step count grows like 1/Omega (~1.6e5 steps at 1e-6).
+    Under the overlap rule the return creeps for every pair (about 0.4/Omega steps for alpha = 3/2,
+    gamma = 1/2: 14 ms at 1e-5, 0.2 s at 1e-6).
     """
     ex = as_exponents(alpha, gamma)
-    return 1e-12 if ex.alpha > ex.gamma else 1e-5
+    return 1e-12 if ex.alpha > ex.gamma and end == "force" else 1e-5
 
 
 @dataclass(frozen=True)
@@ -94,13 +86,21 @@ class MasterSettings:
 
 
 # ------------------------------------------------------------------------------ reference values
-def reference_eps(alpha, gamma, omegas, rtol: float = 1e-14) -> np.ndarray:
-    """eps from the exact closed form (alpha = gamma) or the compiled integrator (otherwise)."""
+def reference_eps(alpha, gamma, omegas, rtol: float = 1e-14, end: str = "force") -> np.ndarray:
+    """eps from the exact closed form (alpha = gamma) or the compiled integrator (otherwise), for
+    the end rule ``end``; under "overlap" a proved sticking raises core.collision.StickError."""
     ex = as_exponents(alpha, gamma)
     om = np.asarray(omegas, dtype=float)
     if ex.alpha == ex.gamma:
         return asy.equal_exponents_eps(om)
-    res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, rtol)
+    overlap = end == "overlap" and ex.alpha > ex.gamma
+    res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, rtol, overlap)
+    if np.any(res[:, 5] == END_STUCK):
+        from ..core.collision import StickError
+        w = float(om.ravel()[res[:, 5] == END_STUCK][0])
+        raise StickError("omega", w, "under the overlap rule contact never ends here: the attractive phase "
+                         "stops the return and the bodies stay together (eps = 0, proved as in "
+                         "core.collision); use end=force")
     if np.any(res[:, 5] == END_FAILED):
         bad = om[res[:, 5] == END_FAILED]
         raise ArithmeticError(f"compiled integrator failed at Omega = {bad[:3]} (alpha={ex.alpha}, "
@@ -254,6 +254,12 @@ class MasterCurve:
         out = chebyshev_panels_eval(om, self.s0, self.width, self.coef, self._kernel_viscous(),
                                     self._kernel_elastic())
         return out.reshape(om.shape)
+
+    def viscous_eps(self, omega) -> np.ndarray:
+        """The viscous expansion alone (the ladder's viscous rung)."""
+        if self.viscous.kind == "closed":
+            return np.asarray(omega, dtype=float).copy()  # eps = Omega, exponentially small error
+        return self.viscous.eps(omega, 1)
 
     def bound_at(self, omega) -> np.ndarray:
         """Pointwise error bound (relative)."""

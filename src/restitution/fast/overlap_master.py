@@ -1,0 +1,153 @@
+"""The master curve of the overlap end rule (alpha > gamma, where it differs from the force rule):
+Chebyshev panels of ln eps in s = ln Omega over [OMEGA_LO, OMEGA_HI], from the compiled integrator
+under that rule, built in about a second and evaluated by the force rule's compiled loop
+(:func:`restitution.fast.panels.chebyshev_panels_eval`).
+
+No expansion is joined at the ends (the overlap rule's viscous limit is another law than the
+force rule's, and its end-of-contact term in the elastic limit is not derived here): outside its
+range the curve does not answer, and the integrator or the references do.
+
+Where the bodies can stick (alpha >= 2 gamma + 1) the build first finds the sticking boundary
+(bisection on the integrator's proof of sticking, stored with the curve) and starts the curve at
+STICK_MARGIN times it, where ln eps is smooth again.
+
+Bound: twice the largest error at random points of every panel (not nodes) against the integrator
+at rtol NODE_RTOL, plus that integrator's own bound.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from fractions import Fraction
+
+import numpy as np
+from numpy.polynomial import chebyshev as cheb
+
+from ..core.collision import StickError
+from ..core.exponents import as_exponents
+from .master import reference_eps
+from .panels import chebyshev_panels_eval
+from .rung import integrator_bound
+
+__all__ = ["OverlapCurve", "build_overlap_curve", "sticking_boundary", "OVERLAP_CURVE_VERSION",
+           "OMEGA_LO", "OMEGA_HI"]
+
+OVERLAP_CURVE_VERSION = 2
+#: The curve's widest range (below 1e-4 the creeping return makes each node cost milliseconds).
+OMEGA_LO, OMEGA_HI = 1e-4, 1e8
+#: Degree 10 on panels of 0.25 in ln Omega: 3e-12 for 3/2, 1/2 (0.5 left 3.6e-10 near Omega = 0.17),
+#: and the force rule's cost per evaluation (degree 14 on 0.5 reached the bound too, 25 % slower).
+DEGREE, WIDTH, NODE_RTOL, HELDOUT_PER_PANEL = 10, 0.25, 1e-13, 3
+#: Where in each panel a loaded curve is checked against the integrator (not a node).
+SPOT_CHECK_AT = 0.37
+#: The curve starts this far above a sticking boundary (eps -> 0 there: ln eps is not smooth).
+STICK_MARGIN = 4.0
+SEED = 20261125
+
+
+def _sticks(ex, w: float) -> bool:
+    try:
+        reference_eps(ex, None, [w], 1e-10, "overlap")
+    except StickError:
+        return True
+    return False
+
+
+def sticking_boundary(alpha, gamma, lo: float = OMEGA_LO, hi: float = OMEGA_HI) -> float:
+    """The Omega below which the bodies stick under the overlap rule, to 1e-6 relative, searched in
+    [lo, hi]: 0 where they never stick (alpha < 2 gamma + 1), ``lo`` when they separate at lo
+    already (the boundary, if any, lies below). Sticking is the integrator's proof (END_STUCK)."""
+    ex = as_exponents(alpha, gamma)
+    if ex.alpha < 2 * ex.gamma + 1:
+        return 0.0
+    if ex.alpha == 2 * ex.gamma + 1:
+        return float(1 / (4 * (ex.gamma + 1)))   # proved in core.collision._check_separates
+    if not _sticks(ex, lo):
+        return lo
+    if _sticks(ex, hi):
+        raise ArithmeticError(f"alpha={ex.alpha}, gamma={ex.gamma} stick up to Omega = {hi:g}")
+    a, b = math.log(lo), math.log(hi)   # sticks at a, separates at b
+    while b - a > 1e-6:
+        m = 0.5 * (a + b)
+        a, b = (m, b) if _sticks(ex, math.exp(m)) else (a, m)
+    return math.exp(b)
+
+
+@dataclass
+class OverlapCurve:
+    alpha: Fraction
+    gamma: Fraction
+    s0: float
+    width: float
+    coef: np.ndarray
+    bound_inside: float
+    stick_below: float = 0.0
+    checks: dict = field(default_factory=dict)
+
+    @property
+    def omega_lo(self) -> float:
+        return math.exp(self.s0)
+
+    @property
+    def omega_hi(self) -> float:
+        return math.exp(self.s0 + self.coef.shape[0] * self.width)
+
+    def covers(self, lo: float, hi: float) -> bool:
+        return self.omega_lo <= lo and hi <= self.omega_hi
+
+    def eps(self, omega) -> np.ndarray:
+        """eps at Omega inside [omega_lo, omega_hi] (the caller checks)."""
+        om = np.asarray(omega, dtype=float)
+        none = np.zeros(5)   # no expansion beyond the ends
+        return chebyshev_panels_eval(om, self.s0, self.width, self.coef, none, none).reshape(om.shape)
+
+    def spot_checks_pass(self) -> bool:
+        """Every panel agrees with a fresh integration at one point to its bound (plus the
+        integrator's): the cache's digest catches a damaged file, this a wrong curve."""
+        # the build never states less than twice the nodes' own accuracy: a smaller bound was edited
+        if not (np.all(np.isfinite(self.coef)) and 2.0 * integrator_bound(NODE_RTOL) <= self.bound_inside < 1e-6):
+            return False
+        om = np.exp(self.s0 + (np.arange(self.coef.shape[0]) + SPOT_CHECK_AT) * self.width)
+        ref = reference_eps(self.alpha, self.gamma, om, NODE_RTOL, "overlap")
+        return bool(np.all(np.abs(self.eps(om) / ref - 1) <= 10.0 * (self.bound_inside + integrator_bound(NODE_RTOL))))
+
+    def as_dict(self) -> dict:
+        return {"version": OVERLAP_CURVE_VERSION, "alpha": str(self.alpha), "gamma": str(self.gamma),
+                "s0": self.s0, "width": self.width, "coef": self.coef.tolist(), "bound_inside": self.bound_inside,
+                "stick_below": self.stick_below, "checks": self.checks}
+
+    @classmethod
+    def from_dict(cls, d: dict) -> "OverlapCurve":
+        if d.get("version") != OVERLAP_CURVE_VERSION:
+            raise ValueError(f"overlap curve version {d.get('version')} != {OVERLAP_CURVE_VERSION}")
+        ex = as_exponents(d["alpha"], d["gamma"])
+        return cls(ex.alpha, ex.gamma, float(d["s0"]), float(d["width"]), np.asarray(d["coef"], dtype=float),
+                   float(d["bound_inside"]), float(d["stick_below"]), d.get("checks", {}))
+
+
+def build_overlap_curve(alpha, gamma, progress=None) -> OverlapCurve:
+    """Fit and measure the curve (see the module docstring); about a second for the paper's pair."""
+    ex = as_exponents(alpha, gamma)
+    if not ex.alpha > ex.gamma:
+        raise ValueError("for alpha <= gamma the overlap rule is the force rule: use the force rule's master curve")
+    say = progress or (lambda m: None)
+    stick = sticking_boundary(ex, None)
+    lo = OMEGA_LO if stick <= OMEGA_LO else STICK_MARGIN * stick
+    s0, s1 = math.log(lo), math.log(OMEGA_HI)
+    npan = int(math.ceil((s1 - s0) / WIDTH - 1e-9))
+    k = np.arange(DEGREE + 1)
+    x = np.cos(np.pi * (k + 0.5) / (DEGREE + 1))
+    nodes = s0 + (np.arange(npan)[:, None] + (x[None, :] + 1.0) / 2.0) * WIDTH
+    say(f"overlap rule: {npan} panels x {DEGREE + 1} nodes on Omega in [{lo:.3g}, {math.exp(s0 + npan * WIDTH):.3g}]")
+    vals = np.log(reference_eps(ex, None, np.exp(nodes.ravel()), NODE_RTOL, "overlap")).reshape(npan, DEGREE + 1)
+    coef = np.array([cheb.chebfit(x, v, DEGREE) for v in vals])
+    curve = OverlapCurve(ex.alpha, ex.gamma, s0, WIDTH, coef, math.nan, stick)
+    rng = np.random.default_rng(SEED)
+    held = np.exp(s0 + (np.arange(npan)[:, None] + rng.uniform(0, 1, (npan, HELDOUT_PER_PANEL))) * WIDTH).ravel()
+    ref = reference_eps(ex, None, held, NODE_RTOL, "overlap")
+    fit_err = float(np.max(np.abs(curve.eps(held) / ref - 1.0)))
+    curve.bound_inside = float(max(2.0 * (fit_err + integrator_bound(NODE_RTOL)), 2e-14))
+    curve.checks = {"fit_err_heldout": fit_err, "n_heldout": int(held.size), "n_nodes": int(nodes.size),
+                    "node_rtol": NODE_RTOL}
+    return curve

@@ -1,0 +1,165 @@
+"""What a rung of the method ladder is, and the tolerance formulas every rung shares.
+
+A rung (:class:`Rung`) is one way to compute eps(Omega). It declares, for a :class:`Request`
+(exponents, Omegas, tolerance, end rule, what is built):
+
+* ``ends``: the end-of-contact rules it serves where they differ (alpha > gamma; where
+  alpha <= gamma the force never pulls, both rules give the same collision and every rung serves);
+* ``outside(req)``: why the Omegas are outside its domain (None when inside);
+* ``needs(req)``: the build it reads (a key of the ladder's builds, e.g. "calibration"), or None;
+* ``cost`` (seconds per point) and ``price(req)`` (expected seconds for the request);
+* ``bound(req, built)``: its relative error bound over the request and the setting that meets it;
+* ``evaluate(req, built, setting, omega)``: eps.
+
+``quote(req)`` turns these into a :class:`Quote`, the one thing the chooser
+(:mod:`restitution.fast.ladder`) compares, as scipy's ``solve_ivp`` compares nothing but picks an
+``OdeSolver`` from ``METHODS``. The registry is :mod:`restitution.fast.rungs`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+import numpy as np
+
+from ..core.exponents import Exponents
+
+__all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
+           "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "integrator_rtol", "reference_rtol", "reference_bound",
+           "highprec_digits", "highprec_bound"]
+
+#: Tolerance when none is given (and no method is forced).
+DEFAULT_TOL = 1e-9
+#: No method returns a double closer than this to the true eps (rounding of the result itself).
+TOL_FLOOR = 2.3e-16
+
+#: Validated accuracy of the compiled integrator: |error| <= FACTOR * rtol + FLOOR (relative).
+#: Measured against the mpmath reference in tests/test_epsilon.py and the benchmark (observed:
+#: <= 1.6 rtol for rtol >= 1e-12 and <= 6e-15 at rtol = 1e-14 over Omega 1e-8..1e12).
+INTEGRATOR_BOUND_FACTOR = 10.0
+INTEGRATOR_BOUND_FLOOR = 5e-14
+
+
+def integrator_bound(rtol: float) -> float:
+    """Relative bound of the compiled integrator (either rule) at ``rtol``."""
+    return INTEGRATOR_BOUND_FACTOR * rtol + INTEGRATOR_BOUND_FLOOR
+
+
+def integrator_rtol(tol: float) -> float:
+    """The compiled integrator's rtol for a tolerance: half of tol is left as a margin."""
+    return min(1e-6, max(1e-14, (tol - integrator_bound(0.0)) / (2 * INTEGRATOR_BOUND_FACTOR)))
+
+
+#: The scipy reference's validated accuracy (core.collision.collide): 10 rtol + 1e-13.
+REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR = 10.0, 1e-13
+
+
+def reference_bound(rtol: float) -> float:
+    return REFERENCE_BOUND_FACTOR * rtol + REFERENCE_BOUND_FLOOR
+
+
+def reference_rtol(tol: float) -> float:
+    return min(1e-6, max(1e-14, (tol - REFERENCE_BOUND_FLOOR) / (2 * REFERENCE_BOUND_FACTOR)))
+
+
+def highprec_digits(tol: float) -> int:
+    """Digits of the mpmath reference for a tolerance (three to spare, 15 to 60)."""
+    return int(min(60, max(15, math.ceil(-math.log10(tol)) + 3)))
+
+
+def highprec_bound(digits: int) -> float:
+    """10^(1 - digits), at least the rounding of the result to a double."""
+    return max(10.0 ** (1 - digits), TOL_FLOOR)
+
+
+@dataclass
+class Quote:
+    """One rung's offer for one request: its bound over the Omegas, expected seconds, and a runner
+    (None when it cannot serve; then ``reason`` says why)."""
+
+    name: str
+    bound: float
+    cost: float
+    setting: str = ""
+    reason: str = ""
+    needs_build: str | None = None   # the build it waits for (not built yet)
+    run: Callable | None = None
+    coefficients: dict | None = None
+
+
+@dataclass(frozen=True)
+class Request:
+    """What is asked (exponents, flat Omegas, tolerance, end rule) and what is built."""
+
+    ex: Exponents
+    omega: np.ndarray
+    tol: float
+    end: str = "force"
+    builds: Mapping[str, Any] = field(default_factory=dict)
+    stream: Any = None
+
+    @property
+    def lo(self) -> float:
+        return float(np.min(self.omega))
+
+    @property
+    def hi(self) -> float:
+        return float(np.max(self.omega))
+
+    @property
+    def n(self) -> int:
+        return int(self.omega.size)
+
+    @property
+    def rules_differ(self) -> bool:
+        """The force can vanish during contact (alpha > gamma): the two end rules differ."""
+        return self.ex.alpha > self.ex.gamma
+
+
+class Rung:
+    """Base of every rung (see the module docstring); subclasses set ``name``, ``cost`` and override
+    what differs from the defaults (force rule only, whole Omega range, no build)."""
+
+    name: str = ""
+    ends: tuple[str, ...] = ("force",)
+    cost: float = 0.0
+
+    def serves(self, req: Request) -> bool:
+        return req.end in self.ends or not req.rules_differ
+
+    def outside(self, req: Request) -> str | None:
+        return None
+
+    def needs(self, req: Request) -> str | None:
+        return None
+
+    def price(self, req: Request) -> float:
+        return self.cost * req.n
+
+    def bound(self, req: Request, built) -> tuple[float, str]:
+        raise NotImplementedError
+
+    def evaluate(self, req: Request, built, setting: str, omega: np.ndarray) -> np.ndarray:
+        raise NotImplementedError
+
+    def coefficients(self, req: Request, built) -> dict | None:
+        return None
+
+    def quote(self, req: Request) -> Quote:
+        if not self.serves(req):
+            return Quote(self.name, math.inf, math.inf, reason=f"serves the {' and '.join(self.ends)} rule only")
+        why = self.outside(req)
+        if why:
+            return Quote(self.name, math.inf, math.inf, reason=why)
+        need = self.needs(req)
+        if need is not None and need not in req.builds:
+            return Quote(self.name, math.nan, self.price(req), reason=f"needs the {need} (not built yet)",
+                         needs_build=need)
+        built = req.builds.get(need) if need is not None else None
+        b, setting = self.bound(req, built)
+        reason = "" if math.isfinite(b) else "no finite measured error over these Omegas"
+        return Quote(self.name, b, self.price(req), setting, reason,
+                     run=lambda om: self.evaluate(req, built, setting, om),
+                     coefficients=self.coefficients(req, built))

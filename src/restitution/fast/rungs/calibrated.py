@@ -1,0 +1,126 @@
+"""The rungs read from the calibration bundle (:mod:`restitution.fast.calibration`): the relation
+rungs, Mueller & Poeschel's Pade form, the two expansions and the master curve. Each one's bound
+is SAFETY times its largest measured error at the grid points bracketing the request (the
+expansions beyond the grid: their fitted remainder models; the master curve: its own bound)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...core.connection import eps_from_connection
+from ..calibration import Calibration, Relation, pade_mp2011
+from ..rung import Request, Rung, integrator_bound
+
+__all__ = ["SAFETY", "RelationRung", "PadeRung", "ViscousRung", "ElasticRung", "MasterRung", "CALIBRATION"]
+
+#: Profile bounds are SAFETY times the largest measured error at the bracketing grid points.
+SAFETY = 3.0
+#: The build these rungs read.
+CALIBRATION = "calibration"
+
+
+def profile_bound(cal: Calibration, name: str, lo10: float, hi10: float) -> float:
+    g = cal.master.grid_log10_omega
+    e = cal.profiles[name]
+    if lo10 < g[0] - 1e-9 or hi10 > g[-1] + 1e-9:
+        return math.inf
+    i0 = max(0, int(np.searchsorted(g, lo10, side="right")) - 1)
+    i1 = min(g.size - 1, int(np.searchsorted(g, hi10, side="left")))
+    return SAFETY * float(np.max(e[i0:i1 + 1])) + integrator_bound(cal.master.settings.rtol)
+
+
+class _Calibrated(Rung):
+    cost = 2e-8
+
+    def needs(self, req: Request) -> str | None:
+        return CALIBRATION
+
+    def bound(self, req: Request, cal: Calibration) -> tuple[float, str]:
+        if self.name in cal.unavailable:
+            return math.inf, cal.unavailable[self.name]
+        if self.name not in cal.profiles:
+            return math.inf, "not calibrated"
+        b = profile_bound(cal, self.name, math.log10(req.lo), math.log10(req.hi))
+        return b, self.setting
+
+
+class RelationRung(_Calibrated):
+    """Omega~ = c0 + c1 Omega + c2 Omega^2 with the c's of one :class:`Relation`."""
+
+    setting = "c0-c2"
+
+    def __init__(self, relation: Relation):
+        self.name = relation.name
+
+    def evaluate(self, req, cal, setting, omega):
+        return eps_from_connection(req.ex, None, omega, cal.relations[self.name]["c"])
+
+
+class PadeRung(_Calibrated):
+    name, setting = "pade-mp2011", ""
+
+    def evaluate(self, req, cal, setting, omega):
+        return pade_mp2011(omega)
+
+
+class _Expansion(_Calibrated):
+    setting = "expansion"
+
+    def model(self, cal: Calibration):
+        raise NotImplementedError
+
+    def bound(self, req, cal):
+        if self.name in cal.unavailable:
+            return math.inf, cal.unavailable[self.name]
+        g = cal.master.grid_log10_omega
+        lo10, hi10 = math.log10(req.lo), math.log10(req.hi)
+        b = 0.0
+        if hi10 >= g[0] and lo10 <= g[-1]:
+            b = profile_bound(cal, self.name, max(lo10, g[0]), min(hi10, g[-1]))
+        ends = np.array([req.lo, req.hi])
+        beyond = ends[(np.log10(ends) < g[0]) | (np.log10(ends) > g[-1])]
+        if beyond.size:
+            b = max(b, float(np.max(SAFETY * self.model(cal)(beyond))))
+        return b, self.setting
+
+
+class ViscousRung(_Expansion):
+    name, cost = "viscous", 2e-8
+
+    def outside(self, req):
+        limit = 1e-3 if req.ex.alpha > req.ex.gamma else 1e-2   # the "force" kind of asy.viscous_limit
+        return f"Omega > {limit:g}" if req.hi > limit else None
+
+    def model(self, cal):
+        return cal.master.viscous_bound
+
+    def evaluate(self, req, cal, setting, omega):
+        return cal.master.viscous_eps(omega)
+
+
+class ElasticRung(_Expansion):
+    name, cost = "elastic", 3e-8
+
+    def outside(self, req):
+        return "Omega < 100" if req.lo < 1e2 else None
+
+    def model(self, cal):
+        return cal.master.elastic_bound
+
+    def evaluate(self, req, cal, setting, omega):
+        return cal.master.elastic.eps(omega, 2)
+
+
+class MasterRung(_Calibrated):
+    """The Chebyshev master curve with the expansions beyond its joins (:mod:`restitution.fast.master`)."""
+
+    name, cost = "master", 4e-8
+
+    def bound(self, req, cal):
+        m = cal.master
+        return m.bound(req.omega), f"{m.coef.shape[0]} panels"
+
+    def evaluate(self, req, cal, setting, omega):
+        return cal.master.eps(omega)

@@ -1,0 +1,88 @@
+"""The closed-form rung: exact where the problem is solvable (alpha = gamma; the linear
+spring-dashpot, both end rules), otherwise the uniform form of :mod:`restitution.core.uniform`
+from the calibration bundle (alpha > gamma, force rule, Omega in FORM_RANGE, its stated bound)."""
+
+from __future__ import annotations
+
+
+import numpy as np
+
+from ...core import asymptotics as asy
+from ...core.uniform import FORM_RANGE
+from ..uniform_eval import uniform_eps
+from .calibrated import CALIBRATION
+from ..rung import Request, Rung
+
+__all__ = ["ClosedForm", "EXACT_BOUND"]
+
+#: Bound of the exact forms (validated against mpmath).
+EXACT_BOUND = 2e-14
+#: Seconds per point: alpha = gamma, the dashpot (a few special functions in Python), the uniform form.
+COSTS = {"equal": 5e-7, "dashpot": 5e-6, "uniform": 1e-7}
+
+
+def _kind(req: Request) -> str:
+    ex = req.ex
+    if ex.alpha == ex.gamma:
+        return "equal"
+    if (ex.alpha, ex.gamma) == (1, 0):
+        return "dashpot"
+    return "uniform" if ex.alpha > ex.gamma else "none"
+
+
+def dashpot_eps(omega: np.ndarray, end: str = "force") -> np.ndarray:
+    from ...core.dashpot import dashpot_collision
+    return np.array([dashpot_collision(float(w), end=end).eps for w in np.ravel(omega)])
+
+
+class ClosedForm(Rung):
+    name = "closed-form"
+    ends = ("force", "overlap")
+
+    def serves(self, req):
+        # the uniform form is the force rule's; the dashpot's half period serves both
+        return req.end == "force" or not req.rules_differ or _kind(req) == "dashpot"
+
+    def outside(self, req):
+        kind = _kind(req)
+        if kind == "none":
+            return ("alpha < gamma: the viscous limit's first correction, which the uniform form needs, "
+                    "is not known in closed form")
+        if kind == "dashpot" and req.end == "overlap" and req.lo <= 0.25:
+            return "Omega <= 1/4: the overdamped dashpot sticks under the overlap rule"
+        if kind == "uniform" and (req.lo < FORM_RANGE[0] or req.hi > FORM_RANGE[1]):
+            return f"Omega outside [{FORM_RANGE[0]:g}, {FORM_RANGE[1]:g}] (where its bound was measured)"
+        return None
+
+    def needs(self, req):
+        return CALIBRATION if _kind(req) == "uniform" else None
+
+    def price(self, req):
+        return COSTS[_kind(req)] * req.n
+
+    def bound(self, req, cal):
+        kind = _kind(req)
+        if kind == "equal":
+            return EXACT_BOUND, "alpha = gamma"
+        if kind == "dashpot":
+            return EXACT_BOUND, "spring-dashpot" + (", overlap" if req.end == "overlap" else "")
+        return cal.uniform.bound_eps, "uniform form"
+
+    def coefficients(self, req, cal):
+        kind = _kind(req)
+        if kind == "equal":
+            return {"exact": "alpha = gamma (restitution.core.asymptotics.equal_exponents_eps)"}
+        if kind == "dashpot":
+            return {"exact": "linear spring-dashpot (restitution.core.dashpot)"}
+        u = cal.uniform
+        return {**u.coefficients(), "bound_one_minus_eps": u.bound_one_minus_eps}
+
+    def evaluate(self, req, cal, setting, omega):
+        kind = _kind(req)
+        if kind == "equal":
+            return asy.equal_exponents_eps(omega)
+        if kind == "dashpot":
+            return dashpot_eps(omega, req.end)
+        return uniform_eps(cal.uniform, omega)
+
+

@@ -1,0 +1,63 @@
+"""The mpmath reference (:mod:`restitution.core.highprec`) as a rung, both end rules: bound
+10^(1 - digits), priced by its digits (it carries log10(1/Omega) more below Omega = 1)."""
+
+from __future__ import annotations
+
+import sys
+
+import numpy as np
+
+from ..rung import Rung, highprec_bound, highprec_digits
+
+__all__ = ["Highprec", "HIGHPREC_COST", "highprec_cost"]
+
+#: Seconds per point at 16 digits and Omega >= 1.
+HIGHPREC_COST = 0.4
+
+
+def highprec_cost(omega: np.ndarray, digits: int) -> float:
+    """Seconds for the mpmath reference: below Omega = 1 it carries log10(1/Omega) more digits
+    (core.highprec), and its time grows like the 2.5th power of the digits (measured, alpha = 3/2,
+    gamma = 1/2, 16 digits: 0.15 s at Omega = 1, 0.75 s at 1e-12, 6 s at 1e-60, 190 s at 1e-300)."""
+    extra = np.maximum(0.0, np.ceil(-np.log10(np.asarray(omega, float))))
+    return float(np.sum(HIGHPREC_COST * ((digits + extra) / digits) ** 2.5))
+
+
+class Highprec(Rung):
+    name, cost = "highprec", HIGHPREC_COST
+    ends = ("force", "overlap")
+
+    def outside(self, req):
+        if not req.rules_differ and req.lo < 1e-3:
+            return "Omega < 1e-3 with alpha <= gamma (creeping)"
+        return None
+
+    def price(self, req):
+        return highprec_cost(req.omega, highprec_digits(req.tol))
+
+    def bound(self, req, built):
+        d = highprec_digits(req.tol)
+        return highprec_bound(d), f"digits={d}" + (", overlap" if req.end == "overlap" else "")
+
+    def evaluate(self, req, built, setting, omega):
+        from ...core.collision import OMEGA_RANGE, collide
+        from ...core.highprec import reference_collision
+        digits = highprec_digits(req.tol)
+        seconds = highprec_cost(omega, digits)
+        if seconds > 10.0:   # a long wait says so at its start
+            print(f"restitution: the mpmath reference on {np.size(omega)} point(s) takes about {seconds:.0f} s",
+                  file=sys.stderr if req.stream is None else req.stream, flush=True)
+        pulls = req.end == "overlap" and req.rules_differ
+        out = []
+        for w in np.ravel(omega):
+            w = float(w)
+            if pulls and OMEGA_RANGE[0] <= w <= OMEGA_RANGE[1]:
+                # mpmath has no proof of sticking and would follow a trapped creep for its whole
+                # step budget: the reference integrator's cheap run raises StickError first.
+                collide(req.ex, None, w, rtol=1e-8, end="overlap")
+            r = reference_collision(req.ex, None, w, digits=digits, end=req.end)
+            if not r.error_estimate <= 10.0 ** (1 - digits):
+                raise ArithmeticError(f"mpmath reference did not converge at Omega = {w} "
+                                      f"(estimate {float(r.error_estimate):.3g})")
+            out.append(float(r.eps))
+        return np.array(out)

@@ -1,0 +1,37 @@
+"""The compiled integrator as a rung (:mod:`restitution.fast.integrator`), force rule: rtol from
+the tolerance, bound integrator_bound(rtol) (validated against the mpmath reference)."""
+
+from __future__ import annotations
+
+from ..master import reference_eps, stiff_omega_min
+from ..rung import Rung, integrator_bound, integrator_rtol
+
+__all__ = ["Integrator", "OMEGA_MAX", "printed"]
+
+#: Largest Omega the compiled integrator is validated at (as messages print it: 1e14, not 1e+14).
+OMEGA_MAX = 1e14
+
+
+def printed(x: float) -> str:
+    return f"{x:g}".replace("e+", "e")
+
+
+class Integrator(Rung):
+    name, cost = "integrator", 6e-5
+
+    def outside(self, req):
+        wmin = stiff_omega_min(req.ex, None)
+        if req.lo < wmin or req.hi > OMEGA_MAX:
+            return f"Omega outside [{wmin:g}, {printed(OMEGA_MAX)}] (explicit method; stiff below)"
+        return None
+
+    def price(self, req):
+        # alpha <= gamma: the creeping return takes ~1/Omega steps
+        return self.cost * req.n * (1.0 if req.rules_differ else 1.0 + 1e-3 / req.lo)
+
+    def bound(self, req, built):
+        rtol = integrator_rtol(req.tol)
+        return integrator_bound(rtol), f"rtol={rtol:.3g}"
+
+    def evaluate(self, req, built, setting, omega):
+        return reference_eps(req.ex, None, omega, integrator_rtol(req.tol))

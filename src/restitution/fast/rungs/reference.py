@@ -1,0 +1,30 @@
+"""The scipy reference (:func:`restitution.core.collision.collide`) as a rung, both end rules, only
+where its accuracy was verified (collision.OMEGA_RANGE): bound 10 rtol + 1e-13."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..rung import Rung, reference_bound, reference_rtol
+
+__all__ = ["Reference"]
+
+
+class Reference(Rung):
+    name, cost = "reference", 1e-2
+    ends = ("force", "overlap")
+
+    def outside(self, req):
+        from ...core.collision import OMEGA_RANGE
+        if req.lo < OMEGA_RANGE[0] or req.hi > OMEGA_RANGE[1]:
+            return f"Omega outside [{OMEGA_RANGE[0]:g}, {OMEGA_RANGE[1]:g}] (its verified range)"
+        return None
+
+    def bound(self, req, built):
+        rtol = reference_rtol(req.tol)
+        return reference_bound(rtol), f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
+
+    def evaluate(self, req, built, setting, omega):
+        from ...core.collision import collide
+        rtol = reference_rtol(req.tol)
+        return np.array([collide(req.ex, None, float(w), rtol=rtol, end=req.end).eps for w in np.ravel(omega)])

@@ -1,0 +1,116 @@
+"""The compiled integrator under the overlap rule (issue 23, item 1): its stated bound
+(_bound(rtol), the force rule's) against the mpmath reference at fresh log-random points,
+against the dashpot's exact half period, against the exact eps = C Omega^3 law where eps is tiny,
+and sticking reported exactly where the reference integrator proves it."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import restitution
+from restitution.core.collision import StickError, collide
+from restitution.core.dashpot import dashpot_collision
+from restitution.core.errors import ParameterError
+from restitution.core.exponents import as_exponents
+from restitution.core.highprec import reference_collision
+from restitution.fast.integrator import END_SEPARATION, END_STUCK, OVERLAP_RTOL_MAX, collide_fast
+from restitution.fast.master import reference_eps
+from restitution.fast.rung import integrator_bound
+
+#: Fresh points on every run (the seed is in the failure message, to replay one).
+SEED = int(np.random.SeedSequence().entropy % 2**32)
+RNG = np.random.default_rng(SEED)
+
+
+def _fresh(lo, hi, n):
+    return np.exp(RNG.uniform(math.log(lo), math.log(hi), n))
+
+
+def _bound(rtol):
+    """What the overlap rule states at rtol (it runs at OVERLAP_RTOL_MAX at most)."""
+    return integrator_bound(min(rtol, OVERLAP_RTOL_MAX))
+
+
+def _fast(alpha, gamma, omega, rtol):
+    ex = as_exponents(alpha, gamma)
+    return collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.atleast_1d(omega), rtol, True)
+
+
+# (p >= 3 pairs such as 2, 3/4 are left out: there the force rule's compiled integrator itself
+# misses its bound at large Omega, 1.2e-10 at rtol 1e-12 and Omega = 6e5; see the report)
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "1"), ("3/2", "1/2"), ("5/2", "1"), ("1", "1/2")])
+def test_bound_holds_against_mpmath_at_fresh_points(alpha, gamma):
+    for w in _fresh(1e-3, 1e6, 3):
+        truth = float(reference_collision(alpha, gamma, float(w), digits=20, end="overlap").eps)
+        for rtol in (1e-6, 1e-9, 1e-12):
+            got = _fast(alpha, gamma, w, rtol)[0]
+            assert got[5] == END_SEPARATION
+            err = abs(got[0] / truth - 1)
+            assert err <= _bound(rtol), f"seed {SEED}: Omega={w:.6g} rtol={rtol:g} err {err:.3g}"
+
+
+def test_dashpot_matches_its_exact_half_period_and_sticks_below_a_quarter():
+    for w in _fresh(0.2501, 1e8, 12):
+        exact = dashpot_collision(float(w), end="overlap").eps
+        for rtol in (1e-6, 1e-12):
+            got = _fast(1, 0, w, rtol)[0][0]
+            assert abs(got / exact - 1) <= _bound(rtol), f"seed {SEED}: Omega={w:.6g}"
+    for w in _fresh(1e-5, 0.25, 6):
+        assert _fast(1, 0, w, 1e-9)[0][5] == END_STUCK
+
+
+def _overlap_constant():
+    # alpha = 3/2, gamma = 1/2: eps = C Omega^3 exactly once the creep has forgotten the impact
+    return float(reference_collision("3/2", "1/2", 1e-2, digits=25, end="overlap").eps) / 1e-6
+
+
+@pytest.mark.parametrize("rtol", [1e-6, 1e-9, 1e-12])
+def test_a_tiny_eps_keeps_its_relative_bound(rtol):
+    """eps down to 5e-18 (Omega = 1e-6, a factor Omega^2 below the creep speed): relative, not absolute."""
+    C = _overlap_constant()
+    for w in (*_fresh(1e-5, 1e-3, 3), 1e-6):
+        got = _fast("3/2", "1/2", w, rtol)[0][0]
+        assert abs(got / (C * w ** 3) - 1) <= _bound(rtol), f"seed {SEED}: Omega={w:.6g}"
+
+
+@pytest.mark.parametrize("alpha, gamma, omega", [("5/2", "1/2", 0.1), ("3", "1/2", 1e-3), ("3", "1/4", 1.0),
+                                                 ("3/2", "1/4", 0.2), ("1", "0", 0.25)])
+def test_sticks_where_the_reference_proves_it_and_not_just_above(alpha, gamma, omega):
+    with pytest.raises(StickError):
+        collide(alpha, gamma, omega, end="overlap")
+    assert _fast(alpha, gamma, omega, 1e-9)[0][5] == END_STUCK
+    with pytest.raises(StickError):
+        reference_eps(alpha, gamma, [omega], 1e-9, "overlap")
+    above = 10.0 if omega < 1 else 10 * omega
+    row = _fast(alpha, gamma, above, 1e-12)[0]
+    assert row[5] == END_SEPARATION
+    assert math.isclose(row[0], collide(alpha, gamma, above, end="overlap", rtol=1e-13).eps,
+                        rel_tol=integrator_bound(1e-12) + 1e-12)
+
+
+def test_force_rule_numbers_are_unchanged_by_the_overlap_code():
+    """The force rule runs the same kernel: it must give, to the bit, what it gave before the overlap
+    legs were added (values recorded from that kernel, alpha = 3/2, gamma = 1, rtol = 1e-10; the
+    pipeline's force-rule outputs rest on them)."""
+    om = [1e-12, 1e-2, 10.0, 1e8, 1e14]
+    before = ["0x1.4ebb674cfcd92p-40", "0x1.7b108d57a60ecp-7", "0x1.c1ff493d3801cp-1", "0x1.fffff4b3e0486p-1",
+              "0x1.000000000444ap+0"]
+    got = collide_fast(2, 3, 2, om, 1e-10)[:, 0]
+    assert [float(x).hex() for x in got] == before
+
+
+def test_epsilon_overlap_is_answered_by_the_integrator_within_tol():
+    om = np.logspace(-3, 3, 200)
+    r = restitution.epsilon(alpha="3/2", gamma=1, omega=om, tol=1e-9, end="overlap", build=False)
+    assert r.method == "integrator" and r.error_bound <= 1e-9
+    for i in (0, 77, 199):
+        ref = collide("3/2", 1, float(om[i]), rtol=1e-13, end="overlap").eps
+        assert abs(r.eps[i] / ref - 1) <= 1e-9 + 2e-12
+
+
+def test_epsilon_overlap_in_the_sticking_region_is_one_line():
+    with pytest.raises(ParameterError, match="contact never ends"):
+        restitution.epsilon(alpha="5/2", gamma="1/2", omega=[0.1], end="overlap", build=False)

@@ -1,0 +1,39 @@
+"""The rung interface: a rung is one object in the registry, and the chooser only compares quotes."""
+
+from __future__ import annotations
+
+import io
+
+import numpy as np
+
+from restitution.fast.ladder import Ladder
+from restitution.fast.rung import Rung
+
+
+class Toy(Rung):
+    """eps = 1 for every Omega, claimed exact: cheaper than anything (a wrong rung, on purpose)."""
+
+    name, cost = "toy", 1e-12
+    ends = ("force", "overlap")
+
+    def bound(self, req, built):
+        return 0.0, "toy"
+
+    def evaluate(self, req, built, setting, omega):
+        return np.ones(np.shape(omega))
+
+
+def test_a_rung_added_to_the_registry_is_quoted_and_chosen(tmp_path):
+    lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
+    assert lad.evaluate([0.3], tol=1e-9, build=False).method == "integrator"
+    lad.rungs = (*lad.rungs, Toy())          # what one registry line does
+    lad.rung_names = (*lad.rung_names, "toy")
+    r = lad.evaluate([0.3, 3.0], tol=1e-9, build=False)
+    assert r.method == "toy" and np.all(r.eps == 1.0)
+    assert lad.evaluate([0.3], tol=1e-9, end="overlap", build=False).method == "toy"
+
+
+def test_a_rung_that_does_not_serve_the_rule_is_listed_with_the_reason(tmp_path):
+    lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
+    q = {c["method"]: c for c in lad.evaluate([0.3], tol=1e-6, end="overlap", build=False).candidates}
+    assert not q["fitted-c"]["available"] and "force rule only" in q["fitted-c"]["reason"]
