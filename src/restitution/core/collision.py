@@ -38,7 +38,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from .errors import ParameterError, number_in, require_positive_finite
 from .exponents import as_exponents
@@ -104,6 +103,9 @@ def _event(fun, *, terminal: bool = True, direction: float = 0.0):
 
 
 def _integrate(fun, span, y0, *, rtol, atol, events=(), jac=None, stiff=False, in_u=False):
+    # imported here: scipy.integrate costs more than a command-line call that never integrates with it
+    from scipy.integrate import solve_ivp
+
     kwargs = {"method": "Radau", "jac": jac} if stiff else {"method": "DOP853"}
     if in_u:
         # Near u = 0 the right-hand side is flat (a factor u^(p-1)), so the first steps grow
