@@ -38,11 +38,11 @@ localrules: all, outputs, study, main_figure, manuscript_inputs, provenance, var
 rule all:
     default_target: True
     input:
-        all_outputs_but_pdf(),
-        PAPER_PDF,
-        PAPER_BBL,
+        # every rule's outputs (workflow/rules/common.smk), asked when the DAG is built: after
+        # every include, whatever their order
+        lambda wildcards: final_outputs(tex=True),
 
 
 rule outputs:
     input:
-        all_outputs_but_pdf(),
+        lambda wildcards: final_outputs(),
