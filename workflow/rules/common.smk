@@ -12,9 +12,7 @@ from fractions import Fraction
 from pathlib import Path
 
 
-ROOT = Path(workflow.basedir)
-# This tree's package and workflow helpers come first, whatever is installed.
-sys.path[:0] = [str(ROOT / "src"), str(ROOT / "workflow" / "scripts")]
+ROOT = Path(workflow.basedir)   # this tree's src/ and workflow/scripts are on the path (Snakefile)
 
 from common.provenance import build_commit, versions
 from _config import ConfigError, check_config  # workflow/scripts/_config.py
