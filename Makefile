@@ -39,7 +39,7 @@ SNAKEMAKE    := $(BIN)/snakemake --cores $(CORES) --rerun-incomplete
 # first; LOCK_WAIT=S gives up after S seconds, LOCK_WAIT=0 at once), locks left by a killed run
 # are cleared, and half-done jobs are redone.
 LOCK_WAIT    ?=
-GUARDED      := PYTHONPATH=workflow/scripts $(BIN)/python workflow/tools/guard.py $(if $(LOCK_WAIT),--wait $(LOCK_WAIT)) --
+GUARDED      := $(BIN)/python workflow/tools/guard.py $(if $(LOCK_WAIT),--wait $(LOCK_WAIT)) --
 # Progress and finished jobs, without the per-job detail (targets go before this: --quiet
 # takes a list).
 QUIET        := --quiet host rules
@@ -63,41 +63,32 @@ paper: $(STAMP) tex
 	  echo "To get $(PDF): as root, apt-get install $(TEX_PACKAGES); then run make paper again."; \
 	fi
 
-# TeX Live from the distribution's packages, only when it is missing and we may install it.
-tex:
-	@if ! { $(HAVE_TEX); }; then \
-	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
-	    echo "Installing TeX Live (Debian packages: $(TEX_PACKAGES); about 1-2 min, log in build/tex-install.log) ..."; \
-	    mkdir -p build; \
-	    { DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
-	      DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(TEX_PACKAGES); \
-	    } > build/tex-install.log 2>&1 \
-	      || echo "TeX Live could not be installed (see build/tex-install.log); the PDF will be skipped."; \
-	  else \
-	    echo "pdflatex not found and not root: the PDF will be skipped."; \
-	  fi; \
-	fi
-
-# Installs Debian packages as root when a command is missing: $(call apt,COMMAND,PACKAGES,WHAT),
-# log in build/WHAT-install.log; says what to install otherwise.
+# Debian packages installed as root when a check fails, in one place:
+# $(call apt,CHECK,PACKAGES,WHAT,OTHERWISE): runs the shell test CHECK; if it fails and we are root
+# with apt-get, installs PACKAGES (log in build/WHAT-install.log; `apt-get update` first only if the
+# install fails on a stale list); otherwise says what to install and OTHERWISE.
 define apt
-	@if ! command -v $(1) >/dev/null 2>&1; then \
+	@if ! { $(1); } >/dev/null 2>&1; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
 	    echo "Installing $(3) (Debian packages: $(2); log in build/$(3)-install.log) ..."; \
 	    mkdir -p build; \
 	    { DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(2) || \
 	      { DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
 	        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(2); }; \
-	    } > build/$(3)-install.log 2>&1 || echo "$(3) could not be installed (see build/$(3)-install.log)."; \
+	    } > build/$(3)-install.log 2>&1 || echo "$(3) could not be installed (see build/$(3)-install.log): $(4)."; \
 	  else \
-	    echo "$(1) not found and not root: tests that need it are skipped (as root: apt-get install $(2))."; \
+	    echo "$(3) not found and not root: $(4) (as root: apt-get install $(2))."; \
 	  fi; \
 	fi
 endef
 
+# TeX Live from the distribution's packages, only when it is missing and we may install it.
+tex:
+	$(call apt,$(HAVE_TEX),$(TEX_PACKAGES),tex,the PDF will be skipped)
+
 # Headless Chromium, with which a test opens results/report.html and looks at its figures.
 browser:
-	$(call apt,chromium,chromium,chromium)
+	$(call apt,command -v chromium,chromium,chromium,tests that need it are skipped)
 
 # The Yade and LIGGGHTS engines, which tests/test_dem_yade.py and test_dem_liggghts.py run head-on,
 # with LIGGGHTS' and LAMMPS' shipped example decks, which tests/test_dem_deck.py reads.
@@ -108,7 +99,7 @@ dem-engines:
 # A one-node SLURM cluster's daemons (workflow/tools/slurm-local) and, as root, Snakemake's SLURM
 # executor plugin at the version constraints.txt pins: a test runs the cluster profile for real.
 slurm-tools: $(STAMP)
-	$(call apt,slurmctld,munge slurmctld slurmd slurm-client,slurm)
+	$(call apt,command -v slurmctld,munge slurmctld slurmd slurm-client,slurm,tests that need it are skipped)
 	@if [ "$$(id -u)" = 0 ] && ! $(BIN)/python -c "import snakemake_executor_plugin_slurm" 2>/dev/null; then \
 	  $(BIN)/python -m pip install --quiet -c constraints.txt snakemake-executor-plugin-slurm \
 	    || echo "snakemake-executor-plugin-slurm could not be installed: the SLURM test will be skipped."; \
@@ -145,13 +136,8 @@ report: $(STAMP)
 # included; the manuscript at BASE is built in build/diff/<commit>/ (kept for the next diff).
 diff: $(STAMP) tex
 	@test -n "$(BASE)" || { echo "make diff needs BASE=<git revision>, e.g. make diff BASE=HEAD~1" >&2; exit 2; }
-	@command -v latexdiff >/dev/null 2>&1 || { \
-	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then \
-	    echo "Installing latexdiff (Debian package) ..."; \
-	    mkdir -p build; DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends latexdiff > build/latexdiff-install.log 2>&1 \
-	      || { DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
-	           DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends latexdiff; } >> build/latexdiff-install.log 2>&1; \
-	  else echo "make diff needs latexdiff: as root, apt-get install latexdiff" >&2; exit 2; fi; }
+	$(call apt,command -v latexdiff,latexdiff,latexdiff,make diff needs it)
+	@command -v latexdiff >/dev/null 2>&1 || exit 2
 	$(MAKE) --no-print-directory paper
 	$(BIN)/python workflow/tools/build_diff.py "$(BASE)"
 

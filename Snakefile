@@ -7,9 +7,15 @@
 #
 # Per-variant outputs live under results/<variant>/; see config.yaml for the variants.
 
+# The one place where the import path is set: the Snakefile and its rule files import this tree's
+# package (src/, ahead of whatever is installed: `make check` builds a copy of the tree) and the
+# workflow's helpers (workflow/scripts: `common`, `_config`), as Snakemake's `script:` gives each
+# script its own directory. Tools in workflow/tools find `common` through the symlink beside them,
+# notebooks through the one `make notebooks` puts beside them.
+sys.path[:0] = [str(Path(workflow.basedir) / "src"), str(Path(workflow.basedir) / "workflow" / "scripts")]
+
 # A YAML syntax error in config.yaml: one line with its line number, before Snakemake's
 # `configfile:` would report it in two lines without one (workflow/scripts/_config.py).
-sys.path.insert(0, str(Path(workflow.basedir) / "workflow" / "scripts"))
 from _config import precheck_file  # noqa: E402
 
 precheck_file("config.yaml")  # the path `configfile:` reads (relative to the working directory)
@@ -38,11 +44,11 @@ localrules: all, outputs, study, main_figure, manuscript_inputs, provenance, var
 rule all:
     default_target: True
     input:
-        all_outputs_but_pdf(),
-        PAPER_PDF,
-        PAPER_BBL,
+        # every rule's outputs (workflow/rules/common.smk), asked when the DAG is built: after
+        # every include, whatever their order
+        lambda wildcards: final_outputs(tex=True),
 
 
 rule outputs:
     input:
-        all_outputs_but_pdf(),
+        lambda wildcards: final_outputs(),

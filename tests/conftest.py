@@ -18,8 +18,16 @@ from pathlib import Path
 
 import pytest
 
-SESSION_DIR = Path(tempfile.mkdtemp(prefix="restitution-tests-"))
-atexit.register(shutil.rmtree, SESSION_DIR, ignore_errors=True)
+# One directory for the whole run: pytest-xdist's workers inherit the controller's environment, so
+# they share it (and the master curves and calibrations one of them built: the cache's files are
+# sealed and written atomically) instead of each building the same ones in a directory of its own.
+# The process that made it removes it.
+if os.environ.get("RESTITUTION_TEST_SESSION"):
+    SESSION_DIR = Path(os.environ["RESTITUTION_TEST_SESSION"])
+else:
+    SESSION_DIR = Path(tempfile.mkdtemp(prefix="restitution-tests-"))
+    os.environ["RESTITUTION_TEST_SESSION"] = str(SESSION_DIR)
+    atexit.register(shutil.rmtree, SESSION_DIR, ignore_errors=True)
 
 _HOME = SESSION_DIR / "home"
 _STATE = {

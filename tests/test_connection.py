@@ -11,7 +11,7 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 from restitution.core import connection
-from restitution.audit import matching, readings
+from restitution.audit import matching, readings, reference_points
 from restitution.core import damped
 from restitution.core.collision import collide
 from restitution.core.errors import ParameterError
@@ -22,7 +22,7 @@ SQRT2 = math.sqrt(2)
 
 # ------------------------------------------------------------------------------ reference points
 def test_reference_times_are_where_the_damped_closed_forms_reach_one():
-    tau0, tau0t = readings.reference_times("3/2", 1)
+    tau0, tau0t = reference_points.reference_times("3/2", 1)
     t0, t0t = float(tau0.evalf(20)), float(tau0t.evalf(20))
     assert damped.forward(t0)[0] == pytest.approx(1.0, abs=1e-14)
     assert damped.inverse(t0t)[0] == pytest.approx(1.0, abs=1e-14)
@@ -34,7 +34,7 @@ def test_reference_times_are_where_the_damped_closed_forms_reach_one():
 @pytest.mark.parametrize("gamma", ["1/2", "2"])
 def test_reference_times_for_other_gamma_match_an_integration(gamma):
     g = float(sp.Rational(gamma))
-    tau0, tau0t = (float(t.evalf(15)) for t in readings.reference_times("3/2", gamma))
+    tau0, tau0t = (float(t.evalf(15)) for t in reference_points.reference_times("3/2", gamma))
     for sign, expected in ((+1, tau0), (-1, tau0t)):
         hit = lambda t, y: y[0] - 1.0  # noqa: E731
         hit.terminal = True
@@ -45,13 +45,13 @@ def test_reference_times_for_other_gamma_match_an_integration(gamma):
 
 def test_gamma_zero_is_refused_with_a_reason():
     with pytest.raises(ParameterError, match="never|does not exist"):
-        readings.reference_times("3/2", 0)
+        reference_points.reference_times("3/2", 0)
     with pytest.raises(ParameterError):
         matching.paper_procedure("3/2", 0)
 
 
 def test_x_tilde_c_reference_time_is_where_the_inverse_closed_form_reaches_one():
-    _, tau0t = readings.reference_times("3/2", 1, x_tilde_c=0.5)
+    _, tau0t = reference_points.reference_times("3/2", 1, x_tilde_c=0.5)
     assert damped.inverse(float(tau0t.evalf(20)), 0.5)[0] == pytest.approx(1.0, abs=1e-13)
 
 
@@ -65,15 +65,15 @@ def test_derived_lowest_order_deltas_equal_the_printed_ones():
 
 def test_a_wrong_printed_formula_would_be_caught():
     delta, _ = matching.lowest_order_deltas("3/2", 1)
-    assert sp.expand(delta - (1 + 3 * readings.a_sym(1, 1) * readings.W)) != 0
+    assert sp.expand(delta - (1 + 3 * reference_points.a_sym(1, 1) * reference_points.W)) != 0
 
 
 def test_lowest_order_delta_for_other_gamma():
     # x0' = gamma/(gamma+1), x0'' = -gamma/(gamma+1) at x0 = 1: Delta = 1 + ((gamma+1)/gamma) x1' Omega
     delta, delta_t = matching.lowest_order_deltas("3/2", "1/2")
-    assert sp.expand(delta - (1 + 3 * readings.a_sym(1, 1) * readings.W)) == 0
+    assert sp.expand(delta - (1 + 3 * reference_points.a_sym(1, 1) * reference_points.W)) == 0
     # inverse: x~0' = x~0'' = (gamma+2)/(gamma+1) at x~0 = 1
-    assert sp.expand(delta_t - (-1 - sp.Rational(3, 5) * readings.b_sym(1, 1) * readings.WT)) == 0
+    assert sp.expand(delta_t - (-1 - sp.Rational(3, 5) * reference_points.b_sym(1, 1) * reference_points.WT)) == 0
 
 
 # -------------------------------------------------------------------------------- the procedure
@@ -137,29 +137,29 @@ def test_coefficients_agree_with_finite_differences_of_an_independent_root_finde
 
 
 def test_converged_values_match_the_closed_form_of_x0():
-    vals = readings.reference_derivatives("3/2", 1, readings.Reading(truncation="converged", omega_orders=1))
+    vals = reference_points.reference_derivatives("3/2", 1, readings.Reading(truncation="converged", omega_orders=1))
     # the converged reading takes x0 from the first integral: 1, 1/2, -1/2, 1/4 at tau_0
-    assert [float(vals.a[readings.a_sym(0, j)]) for j in range(4)] == [1.0, 0.5, -0.5, 0.25]
+    assert [float(vals.a[reference_points.a_sym(0, j)]) for j in range(4)] == [1.0, 0.5, -0.5, 0.25]
     # and x1 there is the long series: compare with a numerical derivative of the ODE solution
     omega, t0 = 1e-5, SQRT2 * math.atanh(1 / SQRT2)
     sol = solve_ivp(lambda t, y: [y[1], -omega * max(y[0], 0) ** 1.5 - y[0] * y[1]], (0, t0), [0, 1],
                     rtol=1e-13, atol=1e-15, method="DOP853")
     x1_numeric = (sol.y[0, -1] - 1.0) / omega
-    assert x1_numeric == pytest.approx(float(vals.a[readings.a_sym(1, 0)]), rel=1e-3)
+    assert x1_numeric == pytest.approx(float(vals.a[reference_points.a_sym(1, 0)]), rel=1e-3)
     assert vals.truncation_change < 1e-10
 
 
 def test_taylor_series_from_x_tilde_c_solves_the_inverse_equation():
     r = readings.Reading(truncation="converged", omega_orders=2, x_tilde_c=0.5)
-    vals = readings.reference_derivatives("3/2", 1, r)
-    _, tau0t = readings.reference_times("3/2", 1, 0.5)
+    vals = reference_points.reference_derivatives("3/2", 1, r)
+    _, tau0t = reference_points.reference_times("3/2", 1, 0.5)
     t = float(tau0t.evalf(20))
     wt = 1e-2
     sol = solve_ivp(lambda s, y: [y[1], -wt * y[0] ** 1.5 + y[0] * y[1]], (0, t), [0.5, 1.0],
                     rtol=1e-13, atol=1e-15, method="DOP853")
-    series = sum(wt ** n * float(vals.b[readings.b_sym(n, 0)]) for n in range(3))
+    series = sum(wt ** n * float(vals.b[reference_points.b_sym(n, 0)]) for n in range(3))
     assert series == pytest.approx(sol.y[0, -1], abs=5 * wt ** 3)
-    assert float(vals.b[readings.b_sym(0, 0)]) == pytest.approx(1.0, abs=1e-12)
+    assert float(vals.b[reference_points.b_sym(0, 0)]) == pytest.approx(1.0, abs=1e-12)
 
 
 @pytest.mark.parametrize("bad", [dict(truncation="full"), dict(omega_orders=0), dict(match_order=3),

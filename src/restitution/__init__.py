@@ -1,6 +1,6 @@
 """Coefficient of restitution for viscoelastic collisions: a rebuild and audit of S. Kim's paper.
 
-The contact law x'' + Omega x^gamma x' + x^alpha = 0 (scaled), in three layers; imports point down
+The contact law x'' + Omega x^gamma x' + x^alpha = 0 (scaled), in four layers; imports point down
 only (checked by tests/test_layers.py):
 
 ====================  ===================================================================
@@ -11,6 +11,8 @@ only (checked by tests/test_layers.py):
                       curve, the calibrated method ladder, the sealed disk cache (uses core)
 ``restitution.audit`` the paper: its printed numbers, its matching procedure for c0-c2 as
                       its text can be read, the claims ledger, the stability atlas (uses core)
+``restitution.dem``   DEM codes' contact options <-> the model, calibration of the damping,
+                      contact time and time step, the real LAMMPS engine (uses core)
 ``api``, ``cli``      on top: ``epsilon`` with every rung (the paper's c's included) and the
                       ``restitution`` command
 ====================  ===================================================================

@@ -1,4 +1,4 @@
-"""The public calls, on top of the three layers: ``epsilon`` with every rung of the ladder (the fast
+"""The public calls, on top of the four layers: ``epsilon`` with every rung of the ladder (the fast
 layer's, and the paper's relations from the audit layer), and ``collide``: one collision by any of
 the integrators, as one result type.
 

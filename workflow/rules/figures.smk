@@ -78,6 +78,9 @@ rule printed_relation:
         script_file("printed_relation.py")
 
 
+BUILT_FOR["printed_relation"] = is_paper_case   # the printed c's exist for the paper's exponents only
+
+
 rule fig4_eps:
     """eps(g): reference integration and every available Omega~(Omega) relation (eps_compare)."""
     input:

@@ -3,9 +3,8 @@
 # reference and the closed forms (restitution.audit.stability). Split into `shards` parallel jobs of
 # equal estimated cost; the merged table does not depend on the number of shards.
 #
-# Needs from the including Snakefile: common.smk (lib, code, script_file, STABILITY_OUTPUTS,
-# MANUSCRIPT_INPUTS); include this file before manuscript.smk so the appendix's inputs reach the
-# manuscript rule. Settings: config["stability"] (all optional; the schema lists them).
+# Needs from the including Snakefile: common.smk (lib, code, script_file, WILDCARD_VALUES,
+# MANUSCRIPT_INPUTS). Settings: config["stability"] (all optional; the schema lists them).
 
 from restitution.audit.stability import AtlasSpec as _AtlasSpec
 from _config import atlas_settings as _atlas_settings
@@ -16,16 +15,8 @@ STABILITY_SHARDS = config["stability"]["shards"]
 # Modules the atlas imports (collision, highprec, asymptotics, dashpot through stability).
 STABILITY_SRC = lib("audit.stability")
 
-STABILITY_OUTPUTS.extend([
-    "results/stability/atlas.csv",
-    "results/stability/summary.csv",
-    "results/stability/limits.csv",
-    "results/stability/violations.csv",
-    "results/stability/summary.tex",
-    "results/stability/values.tex",
-    "results/stability/atlas.pdf",
-    "results/stability/atlas.png",
-] + [f"results/stability/shards/{i}-of-{STABILITY_SHARDS}.csv" for i in range(STABILITY_SHARDS)])
+# the shards a build makes (their outputs join `all` like every rule's)
+WILDCARD_VALUES.update(shard=lambda: range(STABILITY_SHARDS), shards=lambda: [STABILITY_SHARDS])
 MANUSCRIPT_INPUTS.extend([
     "paper/sections/stability.tex",
     "results/stability/values.tex",
@@ -95,7 +86,6 @@ rule fig_stability:
         script_file("fig_stability.py")
 
 
-STABILITY_OUTPUTS.extend(["results/stability/uniform_forms.csv", "results/stability/uniform_forms.tex"])
 MANUSCRIPT_INPUTS.append("results/stability/uniform_forms.tex")
 
 

@@ -42,6 +42,9 @@ rule variant_section:
         script_file("variant_section.py")
 
 
+BUILT_FOR["variant_section"] = lambda name: name != MAIN   # the main variant is the article itself
+
+
 rule study:
     """results/<variant>/study.txt: the list of everything the variant's study produced."""
     input:

@@ -202,89 +202,111 @@ def _fill_defaults(node, schema, root):
 
 
 def check_config(config: dict, schema_path: str) -> dict:
-    """Validate ``config`` in place (defaults filled in); raise ConfigError with one line."""
+    """Validate ``config`` in place (defaults filled in); raise ConfigError with one line.
+
+    The schema is checked by Snakemake's own validate(); its error is rewritten as one line naming
+    the field. Then what a schema cannot say: NaN and infinities (they pass every bound), and the
+    rules between fields (beyond_schema)."""
+    from snakemake.exceptions import WorkflowError
+    from snakemake.utils import validate
+
     with open(schema_path) as fh:
         schema = yaml.safe_load(fh)
     _fill_defaults(config, schema, schema)
-    validator = jsonschema.Draft202012Validator(schema)
-    errors = list(validator.iter_errors(config))
-    if errors:
-        error = jsonschema.exceptions.best_match(errors)
+    try:
+        validate(config, schema_path, set_default=False)   # defaults: _fill_defaults (oneOf branches too)
+    except WorkflowError as err:
+        # validate() raises while handling jsonschema's error: that error is the exception's context
+        if not isinstance(err.__context__, jsonschema.ValidationError):
+            raise
+        error = jsonschema.exceptions.best_match([err.__context__])   # into oneOf's branches
         field = _field(config, error.absolute_path)
         value = error.instance if error.validator not in ("required", "additionalProperties") else "{...}"
         if error.validator == "additionalProperties":
             extra = sorted(set(error.instance) - set(error.schema.get("properties", {})))
             field = f"{field}.{extra[0]}" if field != "config" else extra[0]
             value = error.instance[extra[0]]
-        raise ConfigError(f"{field} = {_show(value)}: {_allowed(error)}")
+        raise ConfigError(f"{field} = {_show(value)}: {_allowed(error)}") from None
 
-    # NaN and infinities pass every bound of the schema: refused here, naming the field.
     found = _non_finite(config, schema, schema)
     if found:
         path, value, allowed = found
         raise ConfigError(f"{_field(config, path)} = {value!r}: {allowed}")
+    beyond_schema(config)
+    return config
+
+
+def beyond_schema(config: dict) -> None:
+    """The rules between fields that the schema cannot express, with the library's own checks (so the
+    messages match the CLI's). Imports only light modules: no sympy, no scipy."""
+    from restitution.audit.readings import reading_labels
+    from restitution.audit.stability import AtlasSpec
+    from restitution.core.errors import ParameterError
+    from restitution.core.exponents import Exponents
+    from restitution.core.series import MAX_INDEX
 
     every = config["variants"] + config["extra_variants"]
     names = [v["name"] for v in every]
     dupes = sorted({n for n in names if names.count(n) > 1})
     if dupes:
-        raise ConfigError(f"variants[].name = {dupes[0]!r}: must be unique "
-                          "(over variants and extra_variants)")
+        raise ConfigError(f"variants[].name = {dupes[0]!r}: must be unique (over variants and extra_variants)")
     if config["main_variant"] not in names:
-        raise ConfigError(f"main_variant = {config['main_variant']!r}: "
-                          f"must be one of {', '.join(names)}")
-    if not config["compare"]["omega_min"] < config["compare"]["omega_max"]:
-        raise ConfigError(f"compare.omega_max = {config['compare']['omega_max']!r}: "
-                          f"must be > compare.omega_min = {config['compare']['omega_min']!r}")
-
-    # Physics-level checks through the library, so the messages match the CLI's.
-    from restitution.core.errors import ParameterError
-    from restitution.core.exponents import Exponents
-
-    labels = reading_labels()
-    max_power = config["series"]["max_power"]
+        raise ConfigError(f"main_variant = {config['main_variant']!r}: must be one of {', '.join(names)}")
+    main = next(v for v in every if v["name"] == config["main_variant"])
+    if _paper_exponents_differ(main):
+        raise ConfigError(f"main_variant = {config['main_variant']!r}: must have the paper's exponents alpha = 3/2, "
+                          "gamma = 1 (the manuscript audits the paper's claims); study other materials as further "
+                          "variants")
+    _ordered("compare.omega_max", config["compare"]["omega_max"], "compare.omega_min", config["compare"]["omega_min"])
     try:
-        max_power = Fraction(str(max_power))
+        max_power = Fraction(str(config["series"]["max_power"]))
         if max_power < 1:
             raise ValueError
     except (ValueError, ZeroDivisionError):
         raise ConfigError(f"series.max_power = {config['series']['max_power']!r}: "
                           "must be a rational number >= 1") from None
+    labels = reading_labels()
     for v in every:
-        where = "variants" if v in config["variants"] else "extra_variants"
+        where = f"{'variants' if v in config['variants'] else 'extra_variants'}[{v['name']}]"
         try:
             ex = Exponents.parse(v["alpha"], v["gamma"])
         except ParameterError as err:
-            raise ConfigError(f"{where}[{v['name']}].{err}") from None
-        # the series engine's limit (restitution.core.series: 400 powers of tau^(1/p)); checked here so
-        # that a value it cannot serve stops the run before any job, not inside every series job
-        if max_power * ex.p > SERIES_MAX_INDEX:
-            raise ConfigError(f"series.max_power = {max_power}: must be at most {Fraction(SERIES_MAX_INDEX, ex.p)} "
+            raise ConfigError(f"{where}.{err}") from None
+        # the series engine's limit, checked here so that a value it cannot serve stops the run
+        # before any job, not inside every series job
+        if max_power * ex.p > MAX_INDEX:
+            raise ConfigError(f"series.max_power = {max_power}: must be at most {Fraction(MAX_INDEX, ex.p)} "
                               f"for variant {v['name']} (exponent denominator p = {ex.p})")
-        g = v["g_range"]
-        if not g["min"] < g["max"]:
-            raise ConfigError(f"{where}[{v['name']}].g_range.max = {g['max']!r}: "
-                              f"must be > g_range.min = {g['min']!r}")
-        fit = v["fit_g_range"]
-        if fit is not None and not (fit["min"] < fit["max"]):
-            raise ConfigError(f"{where}[{v['name']}].fit_g_range.max = {fit['max']!r}: "
-                              f"must be > fit_g_range.min = {fit['min']!r}")
-        _check_omega_served(f"{where}[{v['name']}]", v, ex)
-        if v["readings"] != "all":
-            for label in v["readings"]:
-                if label not in labels:
-                    raise ConfigError(f"{where}[{v['name']}].readings = {label!r}: must be one of "
-                                      f"{', '.join(labels)} (or the word all)")
+        _ordered(f"{where}.g_range.max", v["g_range"]["max"], "g_range.min", v["g_range"]["min"])
+        if v["fit_g_range"] is not None:
+            _ordered(f"{where}.fit_g_range.max", v["fit_g_range"]["max"], "fit_g_range.min", v["fit_g_range"]["min"])
+        _check_omega_served(where, v, ex)
+        for label in [] if v["readings"] == "all" else v["readings"]:
+            if label not in labels:
+                raise ConfigError(f"{where}.readings = {label!r}: must be one of {', '.join(labels)} (or the word all)")
     if config["connection"]["figure_reading"] not in labels:
         raise ConfigError(f"connection.figure_reading = {config['connection']['figure_reading']!r}: "
                           f"must be one of {', '.join(labels)}")
-    # the atlas's rules between fields, by the library's own check (its messages match the API's)
-    from restitution.audit.stability import AtlasSpec
     try:
         AtlasSpec.from_config(atlas_settings(config))
     except ParameterError as err:
         raise ConfigError(f"stability.{err}") from None
-    return config
+
+
+def _paper_exponents_differ(variant: dict) -> bool:
+    from restitution.core.errors import ParameterError
+    from restitution.core.exponents import Exponents
+
+    try:
+        ex = Exponents.parse(variant["alpha"], variant["gamma"])
+    except ParameterError:
+        return False   # reported with the variant's field below
+    return (ex.alpha, ex.gamma) != (Fraction(3, 2), Fraction(1))
+
+
+def _ordered(high_field: str, high, low_label: str, low) -> None:
+    if not low < high:
+        raise ConfigError(f"{high_field} = {high!r}: must be > {low_label} = {low!r}")
 
 
 def atlas_settings(config: dict) -> dict:
@@ -313,24 +335,6 @@ def _check_omega_served(where: str, v: dict, ex) -> None:
         if not lo <= omega <= hi:
             raise ConfigError(f"{where}.{field} = {g!r}: gives Omega = {omega:.3g} with D1 = {v['D1']!r}, "
                               f"D2 = {v['D2']!r}; the reference integrator serves Omega in [{lo:g}, {hi:g}]")
-
-
-#: Highest index k of tau^(k/p) the series engine computes (restitution.core.series).
-SERIES_MAX_INDEX = 400
-
-#: Suffix of the reading whose inverse series start at x~_c (its label carries the number).
-XC_SUFFIX = "-xc"
-
-
-def reading_labels() -> list[str]:
-    """Labels a variant may list under `readings` (restitution.audit.readings.all_readings)."""
-    from restitution.audit.readings import all_readings
-
-    out = [r.label for r in all_readings(None)]
-    with_xc = [r for r in all_readings(0.5) if r.x_tilde_c]
-    out += [r.label.split(XC_SUFFIX)[0] + XC_SUFFIX for r in with_xc]
-    return out
-
 
 
 #: Far above any real configuration, far below what takes a parser long (an alias bomb expands

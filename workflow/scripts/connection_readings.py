@@ -14,11 +14,11 @@
 import math
 
 import pandas as pd
-from _config import XC_SUFFIX
 from common.latex import esc, fixed
 from common.pipeline import read_json, start, write_csv, write_json, write_text
 
 from restitution.audit import matching, readings
+from restitution.audit.readings import XC_SUFFIX
 
 start(snakemake)
 

@@ -11,6 +11,7 @@ the scripts themselves stay plain (imports first, no notebook-only code).
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -21,12 +22,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SCRIPTS = ROOT / "workflow" / "scripts"
 
 REPLAY = '''# Opened as a notebook: replay the pipeline's last run of this rule (run `make paper` first).
-import pathlib
-import sys
-
-here = next(p for p in (pathlib.Path.cwd(), *pathlib.Path.cwd().parents) if (p / "Snakefile").exists())
-sys.path.insert(0, str(here / "workflow" / "scripts"))
-from common.pipeline import replay
+from common.pipeline import replay   # the `common` beside this notebook: the workflow's helpers
 
 snakemake = replay({rule!r})'''
 
@@ -47,6 +43,11 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     scripts = args.scripts or sorted(p for p in SCRIPTS.glob("*.py"))
     args.out.mkdir(parents=True, exist_ok=True)
+    # the helpers the replay cell imports, beside the notebooks (a notebook's directory is on its
+    # import path), relative so that a copy of the tree keeps its own
+    link = args.out / "common"
+    if not link.is_symlink():
+        link.symlink_to(Path(os.path.relpath(SCRIPTS / "common", args.out.resolve())), target_is_directory=True)
     ext = ".ipynb" if args.to == "ipynb" else ".py"
     for script in scripts:
         jupytext.write(notebook(script), args.out / (script.stem + ext), fmt=args.to)

@@ -87,7 +87,6 @@ def copy_tree(dest: Path) -> Path:
 
 def build_commit() -> str:
     """What this checkout's manuscript names as its commit, for a copy that has no .git."""
-    sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
     from common.provenance import build_commit as commit_of
 
     return commit_of(ROOT)
@@ -338,7 +337,6 @@ def working_tree_is_current() -> str | None:
                          cwd=ROOT, env={**os.environ, **ENV}, capture_output=True, text=True)
     if dry.returncode != 0 or "Nothing to be done" not in dry.stdout + dry.stderr:
         return "not up to date with its sources"
-    sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
     from common.atomic import verify_written
 
     if verify_written(ROOT) != ([], []):

@@ -235,7 +235,8 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
     from ..core.collision import collide
     from ..core.model import Material
     from . import matching
-    from . import readings as rd
+    from . import reference_points as rd
+    from .readings import Reading
 
     st = {**DEFAULT_SETTINGS, **(settings or {})}
     mat = Material(material_params["alpha"], material_params["gamma"], material_params["D1"],
@@ -271,7 +272,7 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
         values["delta_equal"] = [bool((delta - p_delta).expand() == 0),
                                  bool((delta_t - p_delta_t).expand() == 0)]
         # tau_b from the lowest-order Delta with converged x1'(tau_0)
-        vals = rd.reference_derivatives(ex, None, rd.Reading(truncation="converged"))
+        vals = rd.reference_derivatives(ex, None, Reading(truncation="converged"))
         a11 = float(vals.a[rd.a_sym(1, 1)])
         values["tau_b_lowest_order"] = values["tau0"] + float(delta.subs({rd.W: omega_fig, rd.a_sym(1, 1): a11}))
         values["tau_b_lowest_order_at_zero"] = values["tau0"] + float(delta.subs(rd.W, 0))

@@ -1,7 +1,7 @@
-"""The paper's matching procedure, part 2: the equations for c0-c2 and their solution.
+"""The paper's matching procedure: the equations for c0-c2 and their solution.
 
 With Delta = tau_b - tau_0 and Delta~ = tau~_b - tau~_0 (reference points from
-:mod:`restitution.audit.readings`) the three conditions are
+:mod:`restitution.audit.reference_points`) the three conditions are
 
     x'(tau_0 + Delta) = 0,   x~'(tau~_0 + Delta~) = 0,   x(tau_0 + Delta) = s x~(tau~_0 + Delta~),
 
@@ -23,11 +23,15 @@ import sympy as sp
 
 from ..core.errors import ParameterError
 from ..core.exponents import Exponents, as_exponents
-from .readings import (C0_SEARCH_MAX, DT, D, Reading, U, W, WT, _check_gamma_forward, _damped_derivatives,
-                       a_sym, b_sym, reference_derivatives)
+from .readings import Reading
+from .reference_points import (DT, D, U, W, WT, a_sym, b_sym, check_gamma_forward, damped_derivatives,
+                               reference_derivatives)
 
 __all__ = ["ConnectionCoefficients", "lowest_order_deltas", "printed_deltas", "symbolic_system",
            "paper_procedure", "reading_row"]
+
+#: c0 is searched in (0, C0_SEARCH_MAX]; every real root found there is reported.
+C0_SEARCH_MAX = 200.0
 
 
 # ------------------------------------------------------------------------------------ the equations
@@ -38,9 +42,9 @@ def lowest_order_deltas(alpha, gamma) -> tuple[sp.Expr, sp.Expr]:
     integral. Returned in terms of the symbols a_11 = x1'(tau_0) and b_11 = x~1'(tau~_0).
     """
     ex = as_exponents(alpha, gamma)
-    _check_gamma_forward(ex)
-    f = _damped_derivatives(ex.gamma, +1, 0, 2)
-    i = _damped_derivatives(ex.gamma, -1, 0, 2)
+    check_gamma_forward(ex)
+    f = damped_derivatives(ex.gamma, +1, 0, 2)
+    i = damped_derivatives(ex.gamma, -1, 0, 2)
     delta = sp.solve(sp.Eq(f[1] + f[2] * D + W * a_sym(1, 1), 0), D)[0]
     delta_t = sp.solve(sp.Eq(i[1] + i[2] * DT + WT * b_sym(1, 1), 0), DT)[0]
     return sp.expand(delta), sp.expand(delta_t)
@@ -70,7 +74,7 @@ def symbolic_system(alpha, gamma, reading: Reading):
     (Delta, Delta~, u) with Omega~ = u Omega in the rescaled reading.
     """
     ex = as_exponents(alpha, gamma)
-    _check_gamma_forward(ex)
+    check_gamma_forward(ex)
     N, K = reading.omega_orders, reading.match_order
     wf = _weight(reading)
     if reading.delta == "printed":

@@ -278,7 +278,8 @@ def _values(hit) -> dict:
     return {q: float(getattr(hit, q)) for q in QUANTITIES}
 
 
-def _rel(a: float, b: float) -> float:
+def rel_error(a: float, b: float) -> float:
+    """|a - b| / |b| (|a| where b = 0): the atlas' measure of every deviation."""
     if b == 0.0:
         return abs(a)
     return abs(a - b) / abs(b)
@@ -286,7 +287,7 @@ def _rel(a: float, b: float) -> float:
 
 def _worst(got: dict, truth: dict, with_xc: bool) -> tuple[float, str]:
     names = [q for q in QUANTITIES if with_xc or q != "x_c"]
-    errs = {q: _rel(got[q], truth[q]) for q in names}
+    errs = {q: rel_error(got[q], truth[q]) for q in names}
     if not all(math.isfinite(v) for v in errs.values()):
         return math.inf, next(q for q, v in errs.items() if not math.isfinite(v))
     q = max(errs, key=errs.get)
@@ -358,7 +359,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
                 rec["tight_ref"] = _worst(tight, truth, both_force)[0]
     exact = _exact(ex.alpha, ex.gamma, point.omega)
     if exact is not None:
-        errs = {q: _rel(got[q], v) for q, v in exact.items() if q != "x_c" or with_xc}
+        errs = {q: rel_error(got[q], v) for q, v in exact.items() if q != "x_c" or with_xc}
         q = max(errs, key=errs.get)
         rec["err_exact"], rec["worst_exact"] = errs[q], q
     return rec

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Iterable
 
-from .stability import QUANTITIES, _rel
+from .stability import QUANTITIES, rel_error
 
 __all__ = ["Violation", "check_invariants", "summarize", "limit_agreement"]
 
@@ -179,12 +179,12 @@ def limit_agreement(records: Iterable[dict]) -> list[dict]:
         out.append({
             "alpha": a, "gamma": g, "viscous_kind": vl.kind,
             "omega_lo": w_lo, "eps_lo": float(lo["eps"]), "eps_viscous": eps_v,
-            "dev_eps_viscous": _rel(float(lo["eps"]), eps_v),
+            "dev_eps_viscous": rel_error(float(lo["eps"]), eps_v),
             "tau_c_lo": float(lo["tau_c"]), "tau_c_viscous": tc_v,
-            "dev_tau_c_viscous": _rel(float(lo["tau_c"]), tc_v) if math.isfinite(tc_v) else math.nan,
+            "dev_tau_c_viscous": rel_error(float(lo["tau_c"]), tc_v) if math.isfinite(tc_v) else math.nan,
             "omega_hi": w_hi, "one_minus_eps_hi": 1.0 - float(hi["eps"]), "one_minus_eps_elastic": one_minus_el,
-            "dev_one_minus_eps_elastic": _rel(1.0 - float(hi["eps"]), one_minus_el),
+            "dev_one_minus_eps_elastic": rel_error(1.0 - float(hi["eps"]), one_minus_el),
             "tau_c_hi": float(hi["tau_c"]), "tau_c_elastic": tc_e,
-            "dev_tau_c_elastic": _rel(float(hi["tau_c"]), tc_e),
+            "dev_tau_c_elastic": rel_error(float(hi["tau_c"]), tc_e),
         })
     return out

@@ -100,7 +100,6 @@ from fractions import Fraction
 from functools import lru_cache
 
 import numpy as np
-from scipy import integrate, special
 
 from .errors import ParameterError
 from .exponents import as_exponents
@@ -110,6 +109,9 @@ __all__ = ["ViscousLimit", "ElasticLimit", "viscous_limit", "elastic_limit", "eq
 
 
 def _beta(a: float, b: float) -> float:
+    # scipy is imported where used: it costs more than a command-line call (restitution eps) itself
+    from scipy import special
+
     return math.exp(special.betaln(a, b))
 
 
@@ -117,8 +119,14 @@ def _beta(a: float, b: float) -> float:
 RAMIREZ_C1 = math.gamma(0.6) * math.sqrt(math.pi) / (2 ** 0.2 * 5 ** 0.4 * math.gamma(2.1))
 #: (3/5) C1^2, Schwager & Poeschel 2008.
 RAMIREZ_C2 = 0.6 * RAMIREZ_C1 ** 2
-#: Elastic contact time constant for alpha = 3/2: tau_c ~ T0 Omega^(-2/5).
-HERTZ_CONTACT_TIME = (1.25 ** 0.4) * 0.8 * _beta(0.4, 0.5)
+
+
+def __getattr__(name):
+    # HERTZ_CONTACT_TIME, the elastic contact time constant for alpha = 3/2 (tau_c ~ T0 Omega^(-2/5)),
+    # is computed on first use: its Beta function needs scipy, which an import should not pay for.
+    if name == "HERTZ_CONTACT_TIME":
+        return (1.25 ** 0.4) * 0.8 * _beta(0.4, 0.5)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 # ------------------------------------------------------------------------------------- viscous
@@ -167,7 +175,7 @@ class ViscousLimit:
         return (2.0 * np.log(1.0 / om) + self.L) / self.lam
 
     def kernel_params(self) -> np.ndarray:
-        """(kind, k, c_log, c_const, power) as read by fast._viscous_eval ("closed" has no kernel form)."""
+        """(kind, k, c_log, c_const, power) as read by fast.panels._viscous_eval ("closed" has no kernel form)."""
         return np.array([0.0 if self.kind == "force" else 1.0, self.k, self.c_log, self.c_const,
                          self.power])
 
@@ -193,6 +201,8 @@ def _damped_constants(alpha: Fraction, gamma: Fraction) -> tuple[float, float, f
     a = float(alpha)
     X = n ** (1.0 / n)
     lam = X ** float(gamma)
+    from scipy import special
+
     B = X * math.exp(-np.euler_gamma - special.digamma(1.0 / n) - math.log(n))
     K0 = X ** (a + 1.0) * (special.digamma((a + 1.0) / n) - special.digamma(1.0 / n)) / n
     return X, lam, float(B), float(K0)
@@ -220,6 +230,8 @@ def inner_constant(alpha, gamma, *, y_start: float | None = None) -> float:
         return [[y ** a / w[0] ** 2]]
 
     w0 = -Y ** (a - g) * (1.0 + (a - g) * Y ** e)
+    from scipy import integrate
+
     sol = integrate.solve_ivp(rhs, (Y, 0.0), [w0], method="Radau", jac=jac, rtol=1e-12,
                               atol=1e-14)
     if sol.status != 0:

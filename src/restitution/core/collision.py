@@ -38,15 +38,14 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from .errors import ParameterError, number_in, require_positive_finite
 from .exponents import as_exponents
 from .energy import NEAR_ELASTIC, dissipated, one_minus_eps
-from .law import _ForceForm, _Law, _PullForm
+from .law import ForceForm, Law, PullForm
 from .model import at_most_one
 from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
-from .sampling import _Piece, _sample
+from .sampling import Piece, sample
 
 #: Accepted range of the relative tolerance.
 RTOL_MIN, RTOL_MAX = 1e-14, 1e-3
@@ -104,6 +103,9 @@ def _event(fun, *, terminal: bool = True, direction: float = 0.0):
 
 
 def _integrate(fun, span, y0, *, rtol, atol, events=(), jac=None, stiff=False, in_u=False):
+    # imported here: scipy.integrate costs more than a command-line call that never integrates with it
+    from scipy.integrate import solve_ivp
+
     kwargs = {"method": "Radau", "jac": jac} if stiff else {"method": "DOP853"}
     if in_u:
         # Near u = 0 the right-hand side is flat (a factor u^(p-1)), so the first steps grow
@@ -122,7 +124,7 @@ def _fired(sol, i: int) -> bool:
     return sol.status == 1 and sol.t_events[i].size > 0
 
 
-def _rise(law: _Law, x_start: float, x_stop: float, rtol: float, pieces: list) -> _State:
+def _rise(law: Law, x_start: float, x_stop: float, rtol: float, pieces: list) -> _State:
     """Leg 1: leave x = x_start in u until v has fallen to V_HANDOFF or x reaches x_stop."""
     u0, u1 = x_start ** (1.0 / law.p), x_stop ** (1.0 / law.p)
     if u1 <= u0:
@@ -131,11 +133,11 @@ def _rise(law: _Law, x_start: float, x_stop: float, rtol: float, pieces: list) -
     sol = _integrate(law.du_rhs, (u0, u1), [1.0, 0.0], rtol=rtol,
                      atol=ATOL_MARGIN * rtol * np.array([1.0, x_stop]), events=[handoff], in_u=True)
     u, (v, tau) = sol.t[-1], sol.y[:, -1]
-    pieces.append(_Piece(True, sol.sol, u0, u, law.p))
+    pieces.append(Piece(True, sol.sol, u0, u, law.p))
     return _State(tau, u ** law.p, v)
 
 
-def _compress(law: _Law, start: _State, rtol: float, pieces: list) -> _State:
+def _compress(law: Law, start: _State, rtol: float, pieces: list) -> _State:
     """Leg 2: in tau up to maximum compression, v = 0.
 
     Forward, v' < -Omega x^alpha < 0 while v > 0, so the turn must come. Inverse, the damping pumps
@@ -155,7 +157,7 @@ def _compress(law: _Law, start: _State, rtol: float, pieces: list) -> _State:
         runaway.fail(sol.y[0, -1], proved=_fired(sol, 1))
     if not _fired(sol, 0):
         raise IntegrationError("maximum compression not reached within the time guard")
-    pieces.append(_Piece(False, sol.sol, start.tau, sol.t[-1], law.p))
+    pieces.append(Piece(False, sol.sol, start.tau, sol.t[-1], law.p))
     return _State(sol.t[-1], sol.y[0, -1], sol.y[1, -1])
 
 
@@ -172,7 +174,7 @@ class _Runaway:
     case), so a bound far beyond every natural scale stops the run as well.
     """
 
-    def __init__(self, law: _Law, x_start: float):
+    def __init__(self, law: Law, x_start: float):
         self.law = law
         self.d = law.alpha - law.gamma
         self.excess = 2.0 * law.gamma + 1.0 - law.alpha
@@ -210,17 +212,17 @@ class _Runaway:
                            f"the inverse collision does not turn around: {why}")
 
 
-def _time_guard(law: _Law, x: float) -> float:
+def _time_guard(law: Law, x: float) -> float:
     """A bound on any leg's duration that no legitimate run comes near (it only stops bugs)."""
     return 1e6 * (1.0 + x / max(law.velocity_scale(x), 1e-300))
 
 
-def _release_forward(law: _Law, top: _State, rtol: float, pieces: list, stiff: bool, overlap: bool):
+def _release_forward(law: Law, top: _State, rtol: float, pieces: list, stiff: bool, overlap: bool):
     """Leg 3, forward: (x, v, f) in tau until f = 0 (force end) or x < SWITCH_FRACTION x_b.
 
     Under the overlap rule f = 0 is not an end: f turns negative (the contact pulls) and the leg
     runs on to x_switch."""
-    form = _ForceForm(law)
+    form = ForceForm(law)
     x_switch = SWITCH_FRACTION * top.x
     f0 = law.omega * top.x ** (law.alpha - law.gamma) + top.v
     vs = law.velocity_scale(top.x)
@@ -239,12 +241,12 @@ def _release_forward(law: _Law, top: _State, rtol: float, pieces: list, stiff: b
         # DOP853 is cheap there; hand over to Radau once that transient has decayed below atol.
         t_relax = tau + (math.log(1.0 / rtol) + math.log1p(1.0 / law.omega) + 5.0) / top.x ** law.gamma
         sol = _integrate(form.dtau_rhs, (tau, t_relax), y, rtol=rtol, atol=atol, events=events)
-        pieces.append(_Piece(False, sol.sol, tau, sol.t[-1], law.p))
+        pieces.append(Piece(False, sol.sol, tau, sol.t[-1], law.p))
         tau, y = sol.t[-1], sol.y[:, -1]
     if not stiff or sol.status == 0:
         sol = _integrate(form.dtau_rhs, (tau, t_guard), y, rtol=rtol, atol=atol, events=events,
                          jac=form.dtau_jac, stiff=stiff)
-        pieces.append(_Piece(False, sol.sol, tau, sol.t[-1], law.p))
+        pieces.append(Piece(False, sol.sol, tau, sol.t[-1], law.p))
     x, v, f = sol.y[:, -1]
     state = _State(sol.t[-1], x, v, f)
     if len(events) > 1 and _fired(sol, 1):
@@ -254,7 +256,7 @@ def _release_forward(law: _Law, top: _State, rtol: float, pieces: list, stiff: b
     raise IntegrationError("release ended neither at zero force nor near x = 0 within the time guard")
 
 
-def _force_scale(law: _Law, x_b: float) -> float:
+def _force_scale(law: Law, x_b: float) -> float:
     """Size of f where it matters. For small Omega, f sinks from Omega x_b^(alpha-gamma) to the level
     Omega (alpha-gamma) x^(alpha-gamma-1) v / x^gamma ~ v_scale^2 / x_b^(gamma+1) set by its drift
     term, where it crosses zero (alpha > gamma) or settles (alpha < gamma); errors below that level
@@ -263,14 +265,14 @@ def _force_scale(law: _Law, x_b: float) -> float:
     return vs * min(1.0, vs / x_b ** (law.gamma + 1.0))
 
 
-def _land_forward(law: _Law, start: _State, x_b: float, rtol: float, pieces: list, stiff: bool,
+def _land_forward(law: Law, start: _State, x_b: float, rtol: float, pieces: list, stiff: bool,
                   overlap: bool):
     """Leg 4, forward: (v, tau, g) in u from x_switch down to u = 0 unless the force vanishes
     (under the overlap rule, down to u = 0 regardless; once the force pulls, see _land_pulling)."""
     if overlap and law.qa > law.qg and start.f < 0.0:
         # (for alpha <= gamma the force never pulls; a negative f there is rounding of a vanishing one)
         return _land_pulling(law, start, rtol, pieces, stiff)
-    form = _ForceForm(law)
+    form = ForceForm(law)
     u0 = start.x ** (1.0 / law.p)
     g0 = form.g_from_f(u0, start.f)
     g_scale = _force_scale(law, x_b) * u0 ** form.m
@@ -279,20 +281,20 @@ def _land_forward(law: _Law, start: _State, x_b: float, rtol: float, pieces: lis
     sol = _integrate(form.du_rhs, (u0, 0.0), [start.v, start.tau, g0], rtol=rtol, atol=atol,
                      events=events, jac=form.du_jac, stiff=stiff, in_u=True)
     u, (v, tau, _) = sol.t[-1], sol.y[:, -1]
-    pieces.append(_Piece(True, sol.sol, u, u0, law.p))
+    pieces.append(Piece(True, sol.sol, u, u0, law.p))
     if events and _fired(sol, 0):
         return "force", _State(tau, u ** law.p, v)
     return "separation", _State(tau, 0.0, v)
 
 
-def _land_pulling(law: _Law, start: _State, rtol: float, pieces: list, stiff: bool):
+def _land_pulling(law: Law, start: _State, rtol: float, pieces: list, stiff: bool):
     """Leg 4 under the overlap rule with the force already pulling: (g, tau) in u down to u = 0.
 
     Here eps may be a factor Omega^2 below the creep speed it starts from (eps = C Omega^3 for
     alpha = 3/2, gamma = 1/2), so g is held to a purely relative tolerance and x' is computed from
-    it without cancellation (_PullForm). A return caught by the trap of _Trap provably sticks.
+    it without cancellation (PullForm). A return caught by the trap of _Trap provably sticks.
     """
-    form = _PullForm(law)
+    form = PullForm(law)
     u0 = start.x ** (1.0 / law.p)
     trap = _Trap(law)
     if trap.holds(u0, [start.f]) >= 0.0:
@@ -312,7 +314,7 @@ def _land_pulling(law: _Law, start: _State, rtol: float, pieces: list, stiff: bo
         raise UnresolvedError("omega", law.omega, f"under the overlap rule eps is below what the reference "
                               f"integrator resolves here (x' = {v:.3g} at x = {u ** law.p:.3g}); "
                               "try method highprec")
-    pieces.append(_Piece(True, _SpeedView(sol.sol, form, start.tau), u, u0, law.p))
+    pieces.append(Piece(True, _SpeedView(sol.sol, form, start.tau), u, u0, law.p))
     return "separation", _State(tau, 0.0, v)
 
 
@@ -325,7 +327,7 @@ TIME_MARGIN = 1e-6
 class _SpeedView:
     """A (g, tau) leg's dense output seen as (v, tau), the state the other u legs have."""
 
-    def __init__(self, sol, form: _PullForm, tau0: float):
+    def __init__(self, sol, form: PullForm, tau0: float):
         self.sol, self.form, self.tau0, self.ts = sol, form, tau0, sol.ts
 
     def __call__(self, u):
@@ -344,7 +346,7 @@ class _Trap:
     the case _check_separates refuses at once); for alpha < 2 gamma + 1 the return always separates.
     """
 
-    def __init__(self, law: _Law):
+    def __init__(self, law: Law):
         self.law = law
         self.excess = law.qa - 2 * law.qg - law.p       # p (alpha - 2 gamma - 1)
         self.d = law.alpha - law.gamma
@@ -365,7 +367,7 @@ class _Trap:
                 "creeps to 0 without ever separating")
 
 
-def _release_inverse(law: _Law, top: _State, rtol: float, pieces: list) -> _State:
+def _release_inverse(law: Law, top: _State, rtol: float, pieces: list) -> _State:
     """Leg 3, inverse: (x, v) in tau until x < SWITCH_FRACTION x_b (v < 0 and falling throughout)."""
     x_switch = SWITCH_FRACTION * top.x
     low = _event(lambda t, y: y[0] - x_switch, direction=-1)
@@ -374,21 +376,21 @@ def _release_inverse(law: _Law, top: _State, rtol: float, pieces: list) -> _Stat
                      rtol=rtol, atol=atol, events=[low])
     if not _fired(sol, 0):
         raise IntegrationError("inverse release did not come back near x~ = 0 within the time guard")
-    pieces.append(_Piece(False, sol.sol, top.tau, sol.t[-1], law.p))
+    pieces.append(Piece(False, sol.sol, top.tau, sol.t[-1], law.p))
     return _State(sol.t[-1], sol.y[0, -1], sol.y[1, -1])
 
 
-def _land_inverse(law: _Law, start: _State, rtol: float, pieces: list) -> _State:
+def _land_inverse(law: Law, start: _State, rtol: float, pieces: list) -> _State:
     """Leg 4, inverse: (v, tau) in u down to u = 0; both force terms push the same way, no event."""
     u0 = start.x ** (1.0 / law.p)
     atol = ATOL_MARGIN * rtol * np.array([abs(start.v), start.tau])
     sol = _integrate(law.du_rhs, (u0, 0.0), [start.v, start.tau], rtol=rtol, atol=atol, in_u=True)
     v, tau = sol.y[:, -1]
-    pieces.append(_Piece(True, sol.sol, 0.0, u0, law.p))
+    pieces.append(Piece(True, sol.sol, 0.0, u0, law.p))
     return _State(tau, 0.0, v)
 
 
-def _is_stiff(law: _Law, x: float, overlap: bool = False) -> bool:
+def _is_stiff(law: Law, x: float, overlap: bool = False) -> bool:
     """A creeping return from x (alpha <= gamma) lasts ~ x / v_scale while f relaxes at rate x^gamma.
 
     (In u the same ratio appears as the integral of |d(dv/du)/dv|.) When alpha > gamma the force
@@ -462,11 +464,11 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
     t_eval = _check_t_eval(t_eval)
     rule = end_rule(end)
     overlap = rule == "overlap"
-    law = _Law.of(ex, omega, +1)
+    law = Law.of(ex, omega, +1)
     if overlap:
         _check_separates(law)
 
-    pieces: list[_Piece] = []
+    pieces: list[Piece] = []
     risen = _rise(law, 0.0, min(1.0, law.elastic_scale()), rtol, pieces)
     top = _compress(law, risen, rtol, pieces)
     end, last = _release_forward(law, top, rtol, pieces, _is_stiff(law, top.x, overlap), overlap)
@@ -486,12 +488,12 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
         # eps from 1 - eps: -x'(tau_c) carries an absolute error ~ rtol that would swamp so small
         # a loss (and could even exceed 1); the loss itself is accurate to about rtol relative
         eps = 1.0 - loss
-    trajectory = _sample(pieces, t_eval, last.tau) if t_eval is not None else None
+    trajectory = sample(pieces, t_eval, last.tau) if t_eval is not None else None
     return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
                      float(last.tau), float(x_c), end, rtol, trajectory, loss, rule)
 
 
-def _check_separates(law: _Law) -> None:
+def _check_separates(law: Law) -> None:
     """Refuse the overlap rule where the bodies provably never separate.
 
     For alpha = 2 gamma + 1 the equation is invariant under x -> l x, tau -> l^(-gamma) tau, and
@@ -505,7 +507,7 @@ def _check_separates(law: _Law) -> None:
         _stuck(law, f"Omega <= 1/(4 (gamma+1)) = {1.0 / (4.0 * (law.gamma + 1.0)):.6g} for alpha = 2 gamma + 1")
 
 
-def _stuck(law: _Law, why: str):
+def _stuck(law: Law, why: str):
     raise StickError("omega", law.omega, "under the overlap rule contact never ends here: the attractive "
                      f"phase stops the return and the bodies stay together (eps = 0; {why}); use end=force")
 
@@ -524,14 +526,14 @@ def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: fl
     x_start = _check_x_start(x_start)
     rtol = _check_rtol(rtol)
     t_eval = _check_t_eval(t_eval)
-    law = _Law.of(ex, omega, -1)
+    law = Law.of(ex, omega, -1)
 
-    pieces: list[_Piece] = []
+    pieces: list[Piece] = []
     risen = _rise(law, x_start, min(1.0, law.elastic_scale()), rtol, pieces)
     top = _compress(law, risen, rtol, pieces)
     low = _release_inverse(law, top, rtol, pieces)
     last = _land_inverse(law, low, rtol, pieces)
-    trajectory = _sample(pieces, t_eval, last.tau) if t_eval is not None else None
+    trajectory = sample(pieces, t_eval, last.tau) if t_eval is not None else None
     return InverseCollision(ex.alpha, ex.gamma, omega, x_start, float(top.tau), float(top.x),
                             float(last.tau), float(last.v), rtol, trajectory)
 

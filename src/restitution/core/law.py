@@ -20,7 +20,7 @@ def _overshoot_is_nan():
 
 
 @dataclass(frozen=True)
-class _Law:
+class Law:
     """The scaled equation with integer exponents of u = x^(1/p); sign = +1 forward, -1 inverse."""
 
     omega: float
@@ -30,7 +30,7 @@ class _Law:
     sign: int
 
     @classmethod
-    def of(cls, ex: Exponents, omega: float, sign: int) -> "_Law":
+    def of(cls, ex: Exponents, omega: float, sign: int) -> "Law":
         return cls(omega, ex.p, ex.q_alpha, ex.q_gamma, sign)
 
     @property
@@ -73,7 +73,7 @@ class _Law:
 
 
 @dataclass(frozen=True)
-class _ForceForm:
+class ForceForm:
     """Forward release with the force carried as a state (see the module docstring).
 
     In tau the state is (x, v, f), f = Omega x^(alpha-gamma) + v, and v' = -x^gamma f.
@@ -82,7 +82,7 @@ class _ForceForm:
     sign of f. Then Omega u^q_alpha + u^q_gamma v = u^n g with n = min(q_alpha, q_gamma).
     """
 
-    law: _Law
+    law: Law
 
     @property
     def a(self) -> int:
@@ -155,16 +155,16 @@ class _ForceForm:
 
 
 @dataclass(frozen=True)
-class _PullForm:
+class PullForm:
     """Forward creeping return under the overlap rule, once the force pulls (f < 0, alpha > gamma).
 
     In u the state is (g, tau) with g = f and x' = v = g - Omega u^k: a sum of two negative terms,
-    exact to rounding however small it gets. Carrying v beside f (as _ForceForm does) makes the
+    exact to rounding however small it gets. Carrying v beside f (as ForceForm does) makes the
     system redundant: rounding in v at the creep speed Omega x^(alpha-gamma) is never corrected by
     f's relaxation, and stays as an absolute error in an eps that may be a factor Omega^2 smaller.
     """
 
-    law: _Law
+    law: Law
 
     def speed(self, u, g):
         return g - self.law.omega * u ** self.law.k

@@ -15,7 +15,7 @@ from .results import Trajectory
 
 
 @dataclass(frozen=True)
-class _Piece:
+class Piece:
     """One leg's dense output, for sampling the trajectory. In u legs the state is (v, tau, ...)."""
 
     in_u: bool
@@ -26,7 +26,7 @@ class _Piece:
 
 
 
-def _sample(pieces: Sequence[_Piece], t_eval: np.ndarray, tau_end: float) -> Trajectory:
+def sample(pieces: Sequence[Piece], t_eval: np.ndarray, tau_end: float) -> Trajectory:
     t_eval = t_eval[t_eval <= tau_end]
     x = np.full(t_eval.shape, np.nan)
     v = np.full(t_eval.shape, np.nan)
@@ -52,7 +52,7 @@ _EPS = float(np.finfo(float).eps)
 _BISECTION_STEPS = 120
 
 
-def _invert_tau(piece: _Piece, tau: np.ndarray) -> np.ndarray:
+def _invert_tau(piece: Piece, tau: np.ndarray) -> np.ndarray:
     """u with tau(u) = tau on a u leg, by vectorised bisection (tau is monotone in u there)."""
     lo = np.full(tau.shape, piece.lo)
     hi = np.full(tau.shape, piece.hi)

@@ -30,6 +30,8 @@ from .errors import ParameterError, integer_in
 from .exponents import Exponents, as_exponents
 
 DIRECTIONS = {"forward": 1, "inverse": -1}
+#: Highest index k of tau^(k/p) the engine computes (the time grows as its square).
+MAX_INDEX = 400
 
 # Truncated polynomials in Omega: tuples of Fractions, index = power of Omega.
 _Poly = list
@@ -237,7 +239,7 @@ def perturbation_series(alpha, gamma, omega_order: int = 4, max_power=11,
     integer_in("omega_order", omega_order, 0, 64)
     max_power = _as_power("max_power", max_power)
     max_index = math.floor(max_power * ex.p)
-    if max_index > 400:
-        raise ParameterError("max_power", max_power, f"must be at most {Fraction(400, ex.p)} for p = {ex.p}")
+    if max_index > MAX_INDEX:
+        raise ParameterError("max_power", max_power, f"must be at most {Fraction(MAX_INDEX, ex.p)} for p = {ex.p}")
     coeffs = _coefficients(ex.alpha, ex.gamma, DIRECTIONS[direction], int(omega_order), max_index)
     return PerturbationSeries(ex, direction, int(omega_order), max_power, coeffs)

