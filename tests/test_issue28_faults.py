@@ -231,3 +231,86 @@ def test_a_name_beside_a_reserved_one_is_accepted():
     config = yaml.safe_load((ROOT / "config.yaml").read_text())
     config["extra_variants"] = [{**config["variants"][0], "name": "papers"}]
     check_config(config, str(ROOT / "workflow" / "schemas" / "config.schema.yaml"))
+
+
+# --------------------------------------------------- class 9: two cold builders of one cache entry
+BUILDER = textwrap.dedent("""
+    import json, os, sys, time
+    from pathlib import Path
+    from restitution.fast.cache import get_or_build
+
+    log = Path(sys.argv[1])
+
+    def build():
+        with open(log, "a") as fh:
+            fh.write(f"{os.getpid()}\\n")
+        time.sleep(float(sys.argv[2]))
+        return {"value": 42, "by": os.getpid()}
+
+    print(json.dumps(get_or_build("entry", build, what="the test entry")))
+""")
+
+
+@pytest.mark.parametrize("build_seconds", [3.0, 1.5])
+def test_two_cold_builders_build_once_and_the_second_waits_with_one_note(tmp_path, build_seconds):
+    script = tmp_path / "builder.py"
+    script.write_text(BUILDER)
+    env = {**os.environ, "RESTITUTION_CACHE": str(tmp_path / "cache")}
+    log = tmp_path / "builds.log"
+    cmd = [sys.executable, str(script), str(log), str(build_seconds)]
+    first = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    import time
+    deadline = time.time() + 120
+    while not log.exists() and time.time() < deadline:   # the first one is building
+        time.sleep(0.05)
+    second = subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=300)
+    out1, err1 = first.communicate(timeout=300)
+    assert first.returncode == 0 and second.returncode == 0, err1 + second.stderr
+    assert len(log.read_text().split()) == 1, "both processes built the entry"
+    assert out1 == second.stdout
+    waits = [line for line in second.stderr.splitlines() if "waiting" in line]
+    assert len(waits) == 1 and "the test entry" in waits[0], second.stderr
+    assert "restitution: building" not in second.stderr
+
+
+# ---------------------------------------------------- class 10: a damaged entry, reported once
+def _ladder_with_entry(tmp_path):
+    import io
+
+    from test_epsilon import SMALL
+    from restitution.fast.ladder import Ladder
+    lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=io.StringIO())
+    lad.calibration()
+    (path,) = tmp_path.glob("*.json")
+    return path
+
+
+@pytest.mark.parametrize("damage", ["truncate", "reseal-a-wrong-coefficient"])
+def test_a_damaged_cache_entry_is_reported_once_and_not_again(tmp_path, damage):
+    import io
+    import json
+
+    from test_epsilon import SMALL, _tamper, _panel
+    from restitution.fast.ladder import Ladder
+
+    path = _ladder_with_entry(tmp_path)
+    if damage == "truncate":
+        path.write_bytes(path.read_bytes()[:100])
+    else:
+        _tamper(path, lambda c: _panel(c).__setitem__(0, _panel(c)[0] + 0.01), True)
+    notes = []
+    for _ in range(3):   # three calls, as a user's loop would make; none of them needs to build
+        stream = io.StringIO()
+        lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=stream)
+        r = lad.evaluate([0.3, 3.0], tol=1e-6, build=False)
+        assert r.method != "master"
+        notes.append(stream.getvalue())
+    assert notes[0].count(str(path)) == 1 and "removed" in notes[0], notes[0]
+    assert notes[1] == notes[2] == "", notes
+    assert not path.exists()
+    # a request that needs the entry rebuilds it, and it is used from then on
+    stream = io.StringIO()
+    lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=stream)
+    lad.evaluate([0.3, 3.0], tol=1e-9, method="master")
+    assert path.exists() and "building" in stream.getvalue()
+    json.loads(path.read_text())

@@ -233,12 +233,12 @@ class Ladder:
             from pathlib import Path
             stream = sys.stderr if self.stream is None else self.stream
             path = _cache.cache_path(self.cache_key, Path(self.cache_dir) if self.cache_dir else None)
-            d = _cache.load_json(path, stream)
-            if d is not None and self._valid(d):
+            # a bad entry is removed with one note: read, refused and reported on every call
+            # otherwise, and never replaced when the request is served without building
+            d = _cache.load_or_discard(path, stream, self._valid,
+                                       "does not pass its checks against the integrator")
+            if d is not None:
                 self._cal = Calibration.from_dict(d)
-            elif d is not None:
-                print(f"restitution: the cached master curve {path} does not pass its checks against the "
-                      "integrator; it is not used", file=stream, flush=True)
         return self._cal
 
     def calibration(self) -> Calibration:
