@@ -39,7 +39,8 @@ SNAKEMAKE    := $(BIN)/snakemake --cores $(CORES) --rerun-incomplete
 # first; LOCK_WAIT=S gives up after S seconds, LOCK_WAIT=0 at once), locks left by a killed run
 # are cleared, and half-done jobs are redone.
 LOCK_WAIT    ?=
-GUARDED      := $(BIN)/python workflow/tools/guard.py $(if $(LOCK_WAIT),--wait $(LOCK_WAIT)) --
+# --watch $$PPID: make's pid (the recipe shell's parent); a SIGTERM to make alone stops the build too.
+GUARDED      := $(BIN)/python workflow/tools/guard.py $(if $(LOCK_WAIT),--wait $(LOCK_WAIT)) --watch $$PPID --
 # Progress and finished jobs, without the per-job detail (targets go before this: --quiet
 # takes a list).
 QUIET        := --quiet host rules

@@ -67,11 +67,12 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--D1", type=number_argument, help="elastic constant D1 > 0 (with --D2 and --g)")
     c.add_argument("--D2", type=number_argument, help="dissipative constant D2 > 0")
     c.add_argument("--g", type=number_argument, help="impact speed g > 0")
-    c.add_argument("--rtol", type=number_argument, default=1e-12, help="relative tolerance (default 1e-12)")
+    c.add_argument("--rtol", type=number_argument, default=None,
+                   help="relative tolerance of methods reference and fast (default 1e-12)")
     c.add_argument("--method", default="reference",
                    help="reference (scipy, default), fast (compiled), highprec (mpmath) or closed-form "
                         "(alpha = 1, gamma = 0)")
-    c.add_argument("--digits", type=int, default=30, help="digits of --method highprec (default 30)")
+    c.add_argument("--digits", type=int, default=None, help="digits of --method highprec (default 30)")
     add_end(c)
     c.add_argument("--json", action="store_true", help="machine-readable output")
 
@@ -171,6 +172,17 @@ def _run_lammps(args, out) -> None:
     from .dem.settings import lammps_audit, lammps_design
     if (args.eta_n0 is None) == (args.eps is None):
         raise ParameterError("eps", args.eps, "give exactly one of --eta-n0 (audit) and --eps (design)")
+    for flag, values in (("--radius", args.radius), ("--density", args.density)):
+        if len(values) > 2:
+            raise _UsageError(f"restitution lammps: {flag} takes one value (both spheres) or two (one each), "
+                              f"got {len(values)}")
+    # the stiffness options the chosen normal model does not read would be dropped without a word
+    reads = {"hooke": ("k_n",), "hertz": ("k_n",), "hertz/material": ("E", "nu")}.get(args.normal, ())
+    for name in ("k_n", "E", "nu"):
+        if getattr(args, name) is not None and args.normal in {"hooke", "hertz", "hertz/material"} and name not in reads:
+            flag = "--" + name.replace("_", "-")
+            raise _UsageError(f"restitution lammps: {flag} is not read by --normal {args.normal} (it reads "
+                              + " and ".join("--" + r.replace("_", "-") for r in reads) + ")")
     radii, dens = (args.radius * 2)[:2], (args.density * 2)[:2]
     pair = Pair.spheres(radii[0], radii[1], dens[0], dens[1])
     stiff = {"normal": args.normal, "k_n": args.k_n, "E": args.E, "nu": args.nu, "damping": args.damping,
@@ -197,6 +209,7 @@ def _run_calibrate(args, out) -> None:
     one = len(args.eps) == 1 and len(args.g) == 1
     res = calibrate(args.alpha, args.gamma, D1=args.D1, eps=args.eps[0] if one else args.eps,
                     g=args.g[0] if one else args.g, end=args.end).as_dict()
+    _report_approximation(args)
     if args.json:
         _write_json(res, out)
         return
@@ -242,6 +255,7 @@ def run_eps(args, out) -> None:
         res = epsilon(omega=args.omega, **kwargs)
     else:
         res = epsilon(g=args.g, D1=args.D1, D2=args.D2, **kwargs)
+    _report_approximation(args)
     eps = [float(e) for e in res.eps.ravel()]
     if args.json:
         extra = {} if res.coefficients is None else {"coefficients": res.coefficients}
@@ -302,10 +316,18 @@ def _run_series(args, out) -> None:
 
 
 def _run_collide(args, out) -> None:
+    # an option the chosen method does not read would be dropped without a word
+    if args.digits is not None and args.method != "highprec":
+        raise _UsageError(f"restitution collide: --digits is read by --method highprec only (method here: "
+                          f"{args.method}); drop it or add --method highprec")
+    if args.rtol is not None and args.method in ("highprec", "closed-form"):
+        raise _UsageError(f"restitution collide: --rtol is read by --method reference and fast only; "
+                          f"{args.method} sets its own accuracy" + (" (use --digits)" if args.method == "highprec" else ""))
     omega = _omega_from_args(args)
     from .api import collide
-    result = collide(args.alpha, args.gamma, omega, method=args.method, rtol=args.rtol,
-                     digits=args.digits, end=args.end).as_dict()
+    result = collide(args.alpha, args.gamma, omega, method=args.method,
+                     rtol=1e-12 if args.rtol is None else args.rtol,
+                     digits=30 if args.digits is None else args.digits, end=args.end).as_dict()
     _report_approximation(args)
     if args.json:
         _write_json(result, out)
@@ -361,6 +383,11 @@ def main(argv=None, out=None) -> int:
     except ParameterError as exc:
         print(f"restitution: {exc}", file=sys.stderr)
         return EXIT_USAGE
+    except BrokenPipeError:
+        # the reader (`| head`) has what it wanted; Python would print a traceback at exit
+        import os
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
     return 0
 
 

@@ -1,6 +1,12 @@
 """`guard.py [--wait S] -- snakemake ...`: one run at a time (preflight.acquire's flock, inherited
 by Snakemake so it lives exactly as long as the build), preflight checks and tidy-up before it,
-a clear message after. Exit: the command's, 1 (preflight), 75 (lock not had in time), 128+N (signal N).
+a clear message after. Exit: the command's, 2 (preflight refusal: a tree it cannot write to, as
+for every refusal of bad input in this project), 75 (lock not had in time), 128+N (signal N).
+
+``--watch PID`` (make's pid, which the Makefile passes): make killed by SIGTERM dies at once and
+leaves its recipe's processes running; the guard notices the next half second and stops the build
+as if it had received the SIGTERM itself. Ctrl-C reaches make, the shell and the guard together
+(one process group); the guard passes it to Snakemake, which runs in a session of its own.
 """
 
 from __future__ import annotations
@@ -19,7 +25,22 @@ from preflight import acquire, compact_written, diagnose, preflight, say, tidy, 
 GRACE = float(os.environ.get("PIPELINE_STOP_GRACE", "20"))  # seconds from a signal to SIGKILL
 
 
-def run(cmd: list[str], tree: Path, lock_fd: int) -> int:
+EXIT_REFUSED = 2
+
+
+def _alive(pid: int | None) -> bool:
+    if pid is None:
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def run(cmd: list[str], tree: Path, lock_fd: int, watch: int | None = None) -> int:
     child = subprocess.Popen(cmd, cwd=tree, start_new_session=True, pass_fds=(lock_fd,))
     received = []
 
@@ -36,6 +57,9 @@ def run(cmd: list[str], tree: Path, lock_fd: int) -> int:
     while rc is None:  # Snakemake can deadlock in its own signal handler: wait for it, not forever
         with contextlib.suppress(subprocess.TimeoutExpired):
             rc = child.wait(timeout=0.5)
+        if rc is None and not received and not _alive(watch):
+            say("make was stopped; stopping the build")
+            forward(signal.SIGTERM, None)
         if rc is None and received and time.monotonic() - received[-1][1] > GRACE:
             say(f"snakemake did not stop within {GRACE:g} s of the signal; killing it")
             os.killpg(child.pid, signal.SIGKILL)
@@ -57,15 +81,17 @@ def run(cmd: list[str], tree: Path, lock_fd: int) -> int:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--wait", type=float, default=None, help="seconds to wait for another run here")
+    parser.add_argument("--watch", type=int, default=None,
+                        help="pid of the make that started us: its death stops the build like a SIGTERM")
     parser.add_argument("command", nargs=argparse.REMAINDER, help="-- then the snakemake command")
     args = parser.parse_args(argv)
     cmd, tree = args.command[1:] if args.command[:1] == ["--"] else args.command, Path.cwd()
     problems = [say(p) or p for p in preflight(tree)]
     lock = None if problems else acquire(tree, args.wait)
     if lock is None:
-        return 1 if problems else 75
+        return EXIT_REFUSED if problems else 75
     tidy(tree, cmd[0])
-    started, rc = time.time(), run(cmd, tree, lock)
+    started, rc = time.time(), run(cmd, tree, lock, args.watch)
     for line in diagnose(tree, started) if 0 < rc < 128 else []:
         say(line)
     if rc == 0:

@@ -84,3 +84,36 @@ def one_of(field: str, value, choices) -> str:
     if not isinstance(value, str) or value not in choices:
         raise ParameterError(field, value, f"must be one of {', '.join(choices)}")
     return value
+
+
+#: The positive doubles a derived quantity may take: normal numbers (a subnormal has lost digits).
+DOUBLE_MIN, DOUBLE_MAX = 2.2250738585072014e-308, 1.7976931348623157e308
+
+
+class DerivedRangeError(ParameterError):
+    """A quantity computed from the user's inputs (a mass, D2, a stiffness, a time step) leaves the
+    range of doubles. The message names the inputs as typed, not the derived value, which the user
+    never gave."""
+
+    def __init__(self, quantity: str, inputs: dict, log10_value: float | None = None,
+                 lo: float = DOUBLE_MIN, hi: float = DOUBLE_MAX):
+        given = ", ".join(f"{k} = {v:g}" if isinstance(v, float) else f"{k} = {v}" for k, v in inputs.items())
+        size = "" if log10_value is None or not math.isfinite(log10_value) else f" of about 1e{log10_value:+.0f}"
+        where = "double precision " if (lo, hi) == (DOUBLE_MIN, DOUBLE_MAX) else ""
+        allowed = (f"these give {quantity}{size}, outside {where}[{lo:.3g}, {hi:.3g}]; "
+                   "choose values that keep it inside")
+        self.field, self.value, self.allowed = next(iter(inputs), quantity), given, allowed
+        ValueError.__init__(self, f"{given}: {allowed}")
+
+
+def derived_in_range(quantity: str, value, inputs: dict, log10_value: float | None = None) -> float:
+    """``value`` as a float if it is a normal positive double, else DerivedRangeError naming ``inputs``."""
+    try:
+        x = float(value)
+    except (OverflowError, TypeError, ValueError):
+        raise DerivedRangeError(quantity, inputs, log10_value) from None
+    if not (math.isfinite(x) and DOUBLE_MIN <= x <= DOUBLE_MAX):
+        if log10_value is None and math.isfinite(x) and x > 0:
+            log10_value = math.log10(x)
+        raise DerivedRangeError(quantity, inputs, log10_value)
+    return x

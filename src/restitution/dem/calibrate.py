@@ -17,7 +17,7 @@ import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
 from ..core.collision import OMEGA_RANGE, StickError, collide
-from ..core.errors import ParameterError, real_array, require_positive_finite
+from ..core.errors import DerivedRangeError, ParameterError, derived_in_range, real_array, require_positive_finite
 from ..core.exponents import as_exponents
 from .contact import Contact
 
@@ -84,11 +84,15 @@ def _omega_for(ex, end: str, target: float, rtol: float) -> float:
                           rtol=4 * np.finfo(float).eps)
 
 
-def _d2_for(ex, D1: float, g: float, omega: float) -> float:
-    """Omega = D1 g^((alpha-1-2gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1)), solved for D2 in logs."""
+def _d2_for(ex, D1: float, g: float, omega: float, target: float) -> float:
+    """Omega = D1 g^((alpha-1-2gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1)), solved for D2 in logs.
+    A D2 beyond doubles is the inputs' doing: the message names them, not D2."""
     a, c = ex.alpha, ex.gamma
     log_d2 = (math.log(D1) + float((a - 1 - 2 * c) / (c + 1)) * math.log(g) - math.log(omega)) * float((c + 1) / (a + 1))
-    return math.exp(log_d2)
+    inputs = {"D1": D1, "g": g, "eps": target}
+    if not math.log(1e-300) <= log_d2 <= math.log(1e300):   # Material refuses D2 outside [1e-300, 1e300]
+        raise DerivedRangeError("the damping D2", inputs, log_d2 / math.log(10), 1e-300, 1e300)
+    return derived_in_range("D2", math.exp(log_d2), inputs, log_d2 / math.log(10))
 
 
 def calibrate(alpha, gamma, *, D1, eps, g, end: str = "force", rtol: float = 1e-12) -> Calibrated:
@@ -111,7 +115,7 @@ def calibrate(alpha, gamma, *, D1, eps, g, end: str = "force", rtol: float = 1e-
             raise ParameterError("eps", float(t), "must be in (0, 1): eps = 1 needs zero damping (D2 = 0), "
                                                   "eps = 0 infinite damping")
     end = Contact(ex.alpha, ex.gamma, D1, 1.0, end).end
-    d2s = [_d2_for(ex, D1, float(v), _omega_for(ex, end, float(t), rtol)) for v, t in zip(gs, targets)]
+    d2s = [_d2_for(ex, D1, float(v), _omega_for(ex, end, float(t), rtol), float(t)) for v, t in zip(gs, targets)]
     if len(d2s) == 1:
         best = d2s[0]
     else:

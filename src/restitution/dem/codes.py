@@ -57,12 +57,12 @@ material; Yade's laws never let the normal force turn attractive, so the end rul
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from fractions import Fraction
 
 from scipy.optimize import brentq
 
-from ..core.errors import ParameterError, one_of, require_positive_finite
+from ..core.errors import ParameterError, derived_in_range, one_of, require_positive_finite
 from .contact import Contact
 
 __all__ = ["Pair", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
@@ -83,6 +83,8 @@ class Pair:
     R2: float
     m1: float
     m2: float
+    #: the densities when built by :meth:`spheres`: named in messages instead of masses nobody typed
+    densities: tuple | None = field(default=None, compare=False, repr=False)
 
     def __post_init__(self):
         for name in ("R1", "R2", "m1", "m2"):
@@ -91,16 +93,42 @@ class Pair:
     @classmethod
     def spheres(cls, R1: float, R2: float, density1: float, density2: float | None = None) -> "Pair":
         d2 = density1 if density2 is None else density2
-        vol = lambda r: 4.0 / 3.0 * math.pi * r ** 3   # noqa: E731
-        return cls(R1, R2, density1 * vol(R1), d2 * vol(R2))
+        for name, v in (("R1", R1), ("R2", R2), ("density1", density1), ("density2", d2)):
+            require_positive_finite(name, v)
+        vol = lambda r: 4.0 / 3.0 * math.pi * _pow(r, 3)   # noqa: E731
+        # the masses are ours, not the user's: out of range, the message names radius and density
+        m1, m2 = density1 * vol(R1), d2 * vol(R2)
+        m1 = derived_in_range("the mass m1", m1, {"radius R1": R1, "density1": density1})
+        m2 = derived_in_range("the mass m2", m2, {"radius R2": R2, "density2": d2})
+        pair = cls(R1, R2, m1, m2, (density1, d2))
+        derived_in_range("the effective mass", pair.m, {"radii": (R1, R2), "densities": (density1, d2)})
+        derived_in_range("the effective radius", pair.R, {"radii": (R1, R2)})
+        return pair
 
     @property
     def m(self) -> float:
-        return self.m1 * self.m2 / (self.m1 + self.m2)
+        return _harmonic(self.m1, self.m2)
 
     @property
     def R(self) -> float:
-        return self.R1 * self.R2 / (self.R1 + self.R2)
+        return _harmonic(self.R1, self.R2)
+
+
+def _harmonic(a: float, b: float) -> float:
+    """a b / (a + b); where the product leaves doubles (tiny or huge particles), a / (1 + a / b),
+    which stays in range whenever the result does (the usual form kept for unchanged digits)."""
+    prod = a * b
+    if 2.2250738585072014e-308 <= prod < math.inf:
+        return prod / (a + b)
+    return a / (1.0 + a / b)
+
+
+def _pow(a: float, b: float) -> float:
+    """a ** b without OverflowError: inf instead (then named by derived_in_range)."""
+    try:
+        return a ** b
+    except OverflowError:
+        return math.inf
 
 
 def tsuji_a(e: float) -> float:
@@ -122,9 +150,18 @@ def _d1(pair: Pair, normal: str, k_n: float | None, E: float | None, nu: float |
         if nu is None or not -1.0 < nu < 0.5:
             raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5)")
         e_star = E / (2.0 * (1.0 - nu ** 2))
-        return "3/2", 4.0 / 3.0 * e_star * math.sqrt(pair.R) / pair.m
+        d1 = 4.0 / 3.0 * e_star * math.sqrt(pair.R) / pair.m
+        return "3/2", derived_in_range("the stiffness D1", d1, {"E": E, **_pair_inputs(pair)})
     k_n = require_positive_finite("k_n", k_n)
-    return ("1", k_n / pair.m) if normal == "hooke" else ("3/2", k_n * math.sqrt(pair.R) / pair.m)
+    d1 = k_n / pair.m if normal == "hooke" else k_n * math.sqrt(pair.R) / pair.m
+    return "1" if normal == "hooke" else "3/2", derived_in_range("the stiffness D1", d1, {"k_n": k_n, **_pair_inputs(pair)})
+
+
+def _pair_inputs(pair: Pair) -> dict:
+    """The pair as the user gave it, for messages (radii; masses stand for radius and density)."""
+    if pair.densities is not None:
+        return {"radii": (pair.R1, pair.R2), "densities": pair.densities}
+    return {"radii": (pair.R1, pair.R2), "masses": (pair.m1, pair.m2)}
 
 
 def _damping_exponent(alpha: str, damping: str) -> str:
@@ -144,6 +181,7 @@ def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limi
     else:
         eta = require_positive_finite("eta_n0", eta_n0)
         D2 = {"velocity": eta / pair.m, "mass_velocity": eta, "viscoelastic": eta * math.sqrt(pair.R)}[damping]
+        D2 = derived_in_range("the damping D2", D2, {"eta_n0": eta, **_pair_inputs(pair)})
     return Contact(alpha, _damping_exponent(alpha, damping), D1, D2, "force" if limit_damping else "overlap")
 
 
@@ -152,8 +190,9 @@ def lammps_eta_n0(pair: Pair, damping: str, contact: Contact) -> float:
     damping = one_of("damping", damping, DAMPING_MODELS)
     if damping == "tsuji":
         return _e_from_tsuji_a(contact.D2 / math.sqrt(contact.D1))
-    return {"velocity": contact.D2 * pair.m, "mass_velocity": contact.D2,
-            "viscoelastic": contact.D2 / math.sqrt(pair.R)}[damping]
+    eta = {"velocity": contact.D2 * pair.m, "mass_velocity": contact.D2,
+           "viscoelastic": contact.D2 / math.sqrt(pair.R)}[damping]
+    return derived_in_range("LAMMPS' eta_n0", eta, {"D2": contact.D2, **_pair_inputs(pair)})
 
 
 def lammps_pair_coeff(*, normal: str, damping: str, eta_n0: float, limit_damping: bool,

@@ -8,6 +8,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from fractions import Fraction
 
+import numpy as np
+
 from ..core.collision import collide
 from ..core.exponents import as_exponents
 from ..core.model import Material
@@ -52,7 +54,11 @@ class Contact:
 
     def contact_time(self, g: float, rtol: float = 1e-12) -> float:
         """t_c in the units of D1, D2, g: the scaled tau_c times the time scale B(g)."""
-        return self.collision(g, rtol).tau_c * float(self.material.time_scale(g))
+        from ..core.errors import derived_in_range
+        inputs = {"D1": self.D1, "D2": self.D2, "g": float(g)}
+        with np.errstate(all="ignore"):
+            t_c = self.collision(g, rtol).tau_c * float(self.material.time_scale(g))
+        return derived_in_range("the contact time", t_c, inputs)
 
     def as_dict(self) -> dict:
         return {"alpha": str(self.alpha), "gamma": str(self.gamma), "D1": self.D1, "D2": self.D2,

@@ -76,5 +76,8 @@ def recommended_dt(contact: Contact, g: float, tol: float = 1e-3) -> TimeStep:
     # studied (it overestimates where the error falls faster than 1/N, as for tsuji damping)
     coefficient = max(n * abs(err) for n, err in errors)
     n_needed = max(10.0, coefficient / tol)
-    return TimeStep(t_c / n_needed, t_c, n_needed, coefficient, tol, tuple(errors))
+    from ..core.errors import derived_in_range
+    dt = derived_in_range("the time step", t_c / n_needed, {"D1": contact.D1, "D2": contact.D2, "g": float(g),
+                                                             "tol": tol})
+    return TimeStep(dt, t_c, n_needed, coefficient, tol, tuple(errors))
 

@@ -12,15 +12,18 @@ printed on stderr.
 from __future__ import annotations
 
 import hashlib
+import io
 import json
 import os
 import sys
 import tempfile
 import time
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Callable
 
-__all__ = ["cache_dir", "cache_path", "load_json", "save_json_atomic", "get_or_build"]
+__all__ = ["cache_dir", "cache_path", "load_json", "load_or_discard", "discard_damaged", "entry_lock",
+           "save_json_atomic", "get_or_build"]
 
 ENV_VAR = "RESTITUTION_CACHE"
 
@@ -93,25 +96,90 @@ def save_json_atomic(path: Path, data: dict) -> None:
         raise
 
 
+def discard_damaged(path: Path, stream=None, why: str = "is damaged or was changed after it was written") -> None:
+    """Remove a cache file that cannot be used, with one note: it would otherwise be read, refused
+    and reported on every later call, and never replaced by a request that does not build."""
+    stream = sys.stderr if stream is None else stream
+    try:
+        os.unlink(path)
+        fate = "removed; it is rebuilt when a request needs it"
+    except FileNotFoundError:
+        return
+    except OSError as exc:
+        fate = f"not used (could not remove it: {exc.strerror})"
+    print(f"restitution: the cache file {path} {why}: {fate}", file=stream, flush=True)
+
+
+def load_or_discard(path: Path, stream=None, valid: Callable[[dict], bool] = lambda d: True,
+                    why_invalid: str = "does not pass its checks") -> dict | None:
+    """The stored dict if it is sealed and ``valid``; a file that is not is removed with one note
+    (:func:`discard_damaged`), so the next call finds nothing and says nothing."""
+    quiet = io.StringIO()
+    data = load_json(path, quiet)
+    if data is None:
+        if quiet.getvalue():
+            discard_damaged(path, stream)
+        return None
+    if not valid(data):
+        discard_damaged(path, stream, why_invalid)
+        return None
+    return data
+
+
+@contextmanager
+def entry_lock(path: Path, label: str, stream):
+    """One builder per cache entry across processes: the lock file beside the entry is held while
+    building; a second caller says once that it waits, then reads what the first one wrote. Where
+    no lock file can be made (a read-only cache), each caller builds for itself, as before."""
+    try:
+        from filelock import FileLock, Timeout
+    except ImportError:  # pragma: no cover - filelock is a dependency; without it: no lock
+        yield
+        return
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        lock = FileLock(str(path) + ".lock")
+        try:
+            lock.acquire(timeout=0)
+        except Timeout:
+            print(f"restitution: another process is building {label} ({path}); waiting for it",
+                  file=stream, flush=True)
+            lock.acquire()
+    except OSError:
+        yield
+        return
+    try:
+        yield
+    finally:
+        lock.release()
+
+
 def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict], bool] = lambda d: True,
                  what: str = "", directory: Path | None = None, stream=None) -> dict:
     """The cached dict for ``key`` if present and ``valid``; otherwise ``build()`` it and store it.
 
-    Progress ("building ..." / "done") goes to ``stream`` (default stderr).
+    Progress ("building ..." / "done") goes to ``stream`` (default stderr). Concurrent callers of
+    the same key build it once (:func:`entry_lock`); a damaged or invalid entry is removed with one
+    note and rebuilt.
     """
     stream = sys.stderr if stream is None else stream
     path = cache_path(key, directory)
-    data = load_json(path, stream)
-    if data is not None and valid(data):
-        return data
     label = what or key
-    print(f"restitution: building {label} (cached in {path}) ...", file=stream, flush=True)
-    t0 = time.perf_counter()
-    data = build()
-    try:
-        save_json_atomic(path, data)
-    except OSError as exc:
-        print(f"restitution: note: could not write the cache ({exc}); using the result without "
-              "caching it", file=stream, flush=True)
-    print(f"restitution: built {label} in {time.perf_counter() - t0:.1f} s", file=stream, flush=True)
+    data = load_or_discard(path, stream, valid)
+    if data is not None:
+        return data
+    with entry_lock(path, label, stream):
+        # the first builder may have finished while we waited for the lock
+        data = load_or_discard(path, stream, valid)
+        if data is not None:
+            return data
+        print(f"restitution: building {label} (cached in {path}) ...", file=stream, flush=True)
+        t0 = time.perf_counter()
+        data = build()
+        try:
+            save_json_atomic(path, data)
+        except OSError as exc:
+            print(f"restitution: note: could not write the cache ({exc}); using the result without "
+                  "caching it", file=stream, flush=True)
+        print(f"restitution: built {label} in {time.perf_counter() - t0:.1f} s", file=stream, flush=True)
     return data

@@ -214,12 +214,12 @@ class Ladder:
     def cached_calibration(self) -> Calibration | None:
         if CALIBRATION not in self.built:
             path = _cache.cache_path(self.cache_key, self._directory())
-            d = _cache.load_json(path, self._stream)
-            if d is not None and self._valid(d):
+            # a bad entry is removed with one note: read, refused and reported on every call
+            # otherwise, and never replaced when the request is served without building
+            d = _cache.load_or_discard(path, self._stream, self._valid,
+                                       "does not pass its checks against the integrator")
+            if d is not None:
                 self.built[CALIBRATION] = Calibration.from_dict(d)
-            elif d is not None:
-                print(f"restitution: the cached master curve {path} does not pass its checks against the "
-                      "integrator; it is not used", file=self._stream, flush=True)
         return self.built.get(CALIBRATION)
 
     def calibration(self) -> Calibration:
@@ -255,12 +255,10 @@ class Ladder:
     def cached_overlap_curve(self) -> OverlapCurve | None:
         if OVERLAP_CURVE not in self.built:
             path = _cache.cache_path(self.overlap_key, self._directory())
-            d = _cache.load_json(path, self._stream)
-            if d is not None and self._overlap_valid(d):
+            d = _cache.load_or_discard(path, self._stream, self._overlap_valid,
+                                       "does not pass its checks against the integrator")
+            if d is not None:
                 self.built[OVERLAP_CURVE] = OverlapCurve.from_dict(d)
-            elif d is not None:
-                print(f"restitution: the cached overlap curve {path} does not pass its checks against the "
-                      "integrator; it is not used", file=self._stream, flush=True)
         return self.built.get(OVERLAP_CURVE)
 
     def overlap_curve(self) -> OverlapCurve:

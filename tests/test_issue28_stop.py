@@ -1,0 +1,118 @@
+"""Issue 28, class 11: Ctrl-C (SIGINT to the terminal's process group) and SIGTERM to make alone
+stop the whole build within seconds, and leave nothing a later run trusts. A tiny pipeline (one
+slow job) runs through the project's own Makefile and guard; the pre-flight refusal exits 2."""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import time
+from pathlib import Path
+
+import psutil
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+# runs make and Snakemake (a minute or two): with the pipeline tests, not in make test-fast
+pytestmark = [pytest.mark.pipeline, pytest.mark.slow]
+
+SNAKEFILE = """
+import os
+rule all:
+    input: "results/slow.txt"
+rule outputs:
+    input: "results/slow.txt"
+rule slow:
+    output: "results/slow.txt"
+    shell: "echo half > {output}; sleep " + os.environ.get("SLOW_SECONDS", "120") + "; echo done > {output}"
+"""
+
+
+def _tree(tmp_path: Path) -> Path:
+    """The project's Makefile, guard and environment around a one-job Snakefile. The stamp's
+    inputs are links, so make sees them as old as the installed environment and installs nothing."""
+    tree = tmp_path / "tree"
+    tree.mkdir()
+    for name in ("Makefile", "workflow", ".venv", "pyproject.toml", "constraints.txt"):
+        (tree / name).symlink_to(ROOT / name)
+    (tree / "Snakefile").write_text(SNAKEFILE)
+    return tree
+
+
+#: the environment is the test run's own: make must not try to install it again in the tiny tree
+NO_INSTALL = "STAMP=Snakefile"
+
+
+def _start(tree: Path, target: str, **env) -> subprocess.Popen:
+    return subprocess.Popen(["make", "--no-print-directory", NO_INSTALL, target], cwd=tree, start_new_session=True,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            env={**os.environ, "PIPELINE_MIN_FREE_MB": "0", **env})
+
+
+def _everything_under(pid: int) -> list[psutil.Process]:
+    return psutil.Process(pid).children(recursive=True)
+
+
+def _wait_for_job(make: subprocess.Popen, timeout: float = 120) -> list[psutil.Process]:
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        procs = _everything_under(make.pid)
+        # snakemake runs in a session of its own: find it and its job through the guard
+        if any("sleep" in " ".join(p.cmdline()) for p in procs if p.is_running()):
+            return procs
+        time.sleep(0.2)
+    make.kill()
+    raise AssertionError("the slow job never started: " + "".join(make.communicate()))
+
+
+def _gone(procs, timeout: float) -> bool:
+    _, alive = psutil.wait_procs(procs, timeout=timeout)
+    return not alive
+
+
+@pytest.mark.parametrize("how", ["ctrl-c", "sigterm-to-make"])
+@pytest.mark.parametrize("target", ["paper", "outputs"])
+def test_stopping_make_stops_the_whole_build(tmp_path, how, target):
+    tree = _tree(tmp_path)
+    make = _start(tree, target)
+    try:
+        procs = _wait_for_job(make)
+        t0 = time.monotonic()
+        if how == "ctrl-c":
+            os.killpg(make.pid, signal.SIGINT)       # what the terminal sends on Ctrl-C
+        else:
+            os.kill(make.pid, signal.SIGTERM)        # `kill <make's pid>`
+        make.wait(timeout=60)
+        assert _gone(procs, 30), [p.cmdline() for p in procs if p.is_running()]
+        assert time.monotonic() - t0 < 30, "the build did not stop within seconds"
+    finally:
+        for p in _everything_under(make.pid) if make.poll() is None else []:
+            p.kill()
+        if make.poll() is None:
+            make.kill()
+    assert make.returncode != 0
+    # nothing a later run trusts: the half-written output is not kept under its name, no lock
+    # is left, and the next run builds the output from scratch
+    # The job writes its output in place (the pipeline's own jobs write under a temporary name and
+    # rename): a half-written file may stand under the final name, and the next run must redo it.
+    assert not list((tree / ".snakemake" / "locks").glob("*.lock")) if (tree / ".snakemake" / "locks").exists() else True
+    again = subprocess.run(["make", "--no-print-directory", NO_INSTALL, target], cwd=tree, capture_output=True, text=True,
+                           timeout=300, env={**os.environ, "PIPELINE_MIN_FREE_MB": "0", "SLOW_SECONDS": "0"})
+    assert again.returncode == 0, again.stdout[-2000:] + again.stderr[-2000:]
+    assert (tree / "results" / "slow.txt").read_text() == "done\n", "the half-done job's output was trusted"
+
+
+def test_preflight_refusal_exits_2(tmp_path):
+    tree = _tree(tmp_path)
+    (tree / "results").write_text("a file where the results folder goes")
+    res = subprocess.run(["make", "--no-print-directory", NO_INSTALL, "outputs"], cwd=tree, capture_output=True, text=True,
+                         timeout=120, env={**os.environ, "PIPELINE_MIN_FREE_MB": "0"})
+    assert "results/ is not a directory" in res.stdout + res.stderr
+    guard = subprocess.run([str(ROOT / ".venv/bin/python"), str(ROOT / "workflow/tools/guard.py"), "--", "true"],
+                           cwd=tree, capture_output=True, text=True, timeout=60,
+                           env={**os.environ, "PIPELINE_MIN_FREE_MB": "0",
+                                "PYTHONPATH": str(ROOT / "workflow/scripts")})
+    assert guard.returncode == 2, guard.stderr
+    assert len(guard.stderr.strip().splitlines()) == 1
