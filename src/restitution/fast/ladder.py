@@ -421,7 +421,10 @@ class Ladder:
                 self.calibration()
                 quotes = self.quotes(flat, tol)
         if method is not None:
-            q = next(q for q in quotes if q.name == method)
+            q = next((q for q in quotes if q.name == method), None)
+            if q is None:   # a rung that is not quoted for this end rule at all (the relation rungs)
+                raise ParameterError("method", method, f"does not serve end = {end}; the rungs that do: "
+                                     + ", ".join(q.name for q in quotes if q.run is not None))
             if q.run is None:
                 raise ParameterError("method", method, f"not available here: {q.reason or 'needs the calibration'}")
             if checked and not q.bound <= tol:
