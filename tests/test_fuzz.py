@@ -17,6 +17,7 @@ def bounded(n):
 KNOWN_9_2 = {"alpha": "9/2", "gamma": "1/2", "end": "overlap", "omega": 1.0, "tol": 1e-12, "rtol": 1e-6}
 
 
+@pytest.mark.slow
 @pytest.mark.xfail(strict=True, reason="collide(end='overlap') error floor ~8e-13 above its quote 5.5e-13 "
                                        "(alpha 9/2, gamma 1/2, Omega 1, tol 1e-12); reported in issue 28")
 def test_known_overlap_reference_floor_found_by_the_fuzz():
@@ -28,6 +29,7 @@ def _failures(records):
     return [r for r in records if r["status"] == "FAIL"]
 
 
+@pytest.mark.slow   # 6 cases took 370 s here, over issue 28's 60 s: the cheap domain must shrink first
 @bounded(6)
 @given(F.number_cases(cheap=True))
 # found by the fuzz: a forced relation rung under the overlap rule was a StopIteration traceback
