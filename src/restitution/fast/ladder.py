@@ -321,6 +321,9 @@ class Ladder:
                 quotes = self.quotes(flat, tol, end)
         if method is not None:
             mine = [q for q in quotes if q.name == method]
+            if not mine:   # a rung that is not quoted for this end rule at all
+                raise ParameterError("method", method, f"does not serve end = {end}; the rungs that do: "
+                                     + ", ".join(q.name for q in quotes if q.run is not None))
             q = next((q for q in mine if q.run is not None), mine[0])
             if q.run is None:
                 raise ParameterError("method", method, f"not available here: {q.reason or 'needs a build'}")

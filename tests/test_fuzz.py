@@ -1,0 +1,67 @@
+"""Issue 28's property-based tests, the bounded deterministic profile of ``make test`` (the long
+one is ``make fuzz``; strategies and checks in tests/fuzzing.py). Derandomized: the same cases on
+every run. Regression cases found by the fuzz are pinned below with @example."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import HealthCheck, example, given, settings
+
+import fuzzing as F
+
+def bounded(n):
+    return settings(max_examples=n, derandomize=True, deadline=None, database=None,
+                    suppress_health_check=list(HealthCheck))
+
+
+KNOWN_9_2 = {"alpha": "9/2", "gamma": "1/2", "end": "overlap", "omega": 1.0, "tol": 1e-12, "rtol": 1e-6}
+
+
+@pytest.mark.slow
+@pytest.mark.xfail(strict=True, reason="collide(end='overlap') error floor ~8e-13 above its quote 5.5e-13 "
+                                       "(alpha 9/2, gamma 1/2, Omega 1, tol 1e-12); reported in issue 28")
+def test_known_overlap_reference_floor_found_by_the_fuzz():
+    bad = [r for r in F.check_number_case(KNOWN_9_2) if r["status"] in ("FAIL", "known")]
+    assert not bad, bad[0]["detail"]
+
+
+def _failures(records):
+    return [r for r in records if r["status"] == "FAIL"]
+
+
+@pytest.mark.slow   # 6 cases took 370 s here, over issue 28's 60 s: the cheap domain must shrink first
+@bounded(6)
+@given(F.number_cases(cheap=True))
+# found by the fuzz: a forced relation rung under the overlap rule was a StopIteration traceback
+@example({"alpha": "8", "gamma": "0", "end": "overlap", "omega": 1.25e10, "tol": 3.16e-14, "rtol": 1e-10})
+def test_every_answer_within_its_stated_bound_of_the_mpmath_reference(case):
+    bad = _failures(F.check_number_case(case))
+    assert not bad, bad[0]["detail"]
+
+
+@bounded(250)
+@given(F.argv_cases())
+@example((["lammps", "--normal", "hooke", "--k-n", "1e5", "--damping", "velocity", "--eta-n0", "1",
+           "--radius", "1e-3", "1e-3", "1e-3", "--density", "2500", "--g", "1"], True))
+@example((["calibrate", "--alpha", "3/2", "--gamma", "1", "--D1", "1e300", "--eps", "0.6", "--g", "1e-300"], False))
+def test_random_command_lines_never_traceback_and_never_answer_a_refused_value(case):
+    argv, must_refuse = case
+    rec = F.check_argv_case(argv, must_refuse)
+    assert rec["status"] != "FAIL", (argv, rec["detail"])
+
+
+@bounded(40)
+@given(F.config_cases())
+def test_random_config_mutations_are_refused_in_one_line_or_accepted(case):
+    config, must_refuse = case
+    rec = F.check_config_case(config, must_refuse)
+    assert rec["status"] != "FAIL", rec["detail"]
+
+
+@pytest.mark.parametrize("argv", [
+    ["eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0.3", "--end", "overlap", "--method", "paper-c"],
+    ["eps", "--alpha", "3/2", "--gamma", "1/2", "--omega", "0.3", "--end", "overlap", "--method", "fitted-c"],
+])
+def test_a_relation_rung_forced_under_the_overlap_rule_is_refused_in_one_line(argv):
+    rec = F.check_argv_case(argv, True)
+    assert rec["status"] == "refused", rec["detail"]
