@@ -99,8 +99,8 @@ browser:
 # The Yade and LIGGGHTS engines, which tests/test_dem_yade.py and test_dem_liggghts.py run head-on,
 # with LIGGGHTS' and LAMMPS' shipped example decks, which tests/test_dem_deck.py reads.
 dem-engines:
-	$(call apt,yade,yade,yade)
-	$(call apt,liggghts,liggghts liggghts-doc lammps-examples,liggghts)
+	$(call apt,command -v yade,yade,Yade,the Yade engine checks are skipped)
+	$(call apt,command -v liggghts,liggghts liggghts-doc lammps-examples,LIGGGHTS,the LIGGGHTS engine and deck checks are skipped)
 
 # A one-node SLURM cluster's daemons (workflow/tools/slurm-local) and, as root, Snakemake's SLURM
 # executor plugin at the version constraints.txt pins: a test runs the cluster profile for real.
