@@ -55,12 +55,20 @@ def _everything_under(pid: int) -> list[psutil.Process]:
     return psutil.Process(pid).children(recursive=True)
 
 
+def _cmdline(p: psutil.Process) -> str:
+    """A process that ends (or is a zombie) between the listing and the question has no command line."""
+    try:
+        return " ".join(p.cmdline())
+    except psutil.Error:
+        return ""
+
+
 def _wait_for_job(make: subprocess.Popen, timeout: float = 120) -> list[psutil.Process]:
     deadline = time.monotonic() + timeout
     while time.monotonic() < deadline:
         procs = _everything_under(make.pid)
         # snakemake runs in a session of its own: find it and its job through the guard
-        if any("sleep" in " ".join(p.cmdline()) for p in procs if p.is_running()):
+        if any("sleep" in _cmdline(p) for p in procs):
             return procs
         time.sleep(0.2)
     make.kill()

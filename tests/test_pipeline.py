@@ -308,7 +308,7 @@ def test_the_claims_ledger_lists_every_claim_with_a_computed_value(built):
     assert ledger["row"].tolist() == list(range(1, len(ledger) + 1))
     assert set(ledger["verdict"]) <= set(cl.VERDICTS)
     claims = ledger["claim"].tolist()
-    for needle in ("forward series x_0", "inverse series x~_4", "D* =", "Omega at g", "tau_b at g",
+    for needle in ("forward and inverse series x_0..x_4, x~_0..x~_4", "D* =", "Omega at g", "tau_b at g",
                    "higher-order forward series", "higher-order inverse series", "c0, c1, c2 of the connection",
                    "Omega proportional", "eps has terms", "shape of figure 4"):
         assert any(needle in c for c in claims), needle

@@ -217,7 +217,7 @@ def _outputs_of(rule, variant=None):
                 continue
             path = pattern.apply_wildcards(wildcards)
             if pattern.match(path):   # the rule's wildcard constraints
-                out.append(path)
+                out.append(str(path))   # a plain path: the report() flag stays with the producing rule
     return out
 
 
