@@ -211,16 +211,19 @@ class Ladder:
                 and bool(np.all(np.isfinite(m.coef))) and _spot_checks_pass(self.ex, m)
                 and _uniform_checks_pass(self.ex, cal.uniform))
 
-    def cached_calibration(self) -> Calibration | None:
-        if CALIBRATION not in self.built:
-            path = _cache.cache_path(self.cache_key, self._directory())
-            # a bad entry is removed with one note: read, refused and reported on every call
-            # otherwise, and never replaced when the request is served without building
-            d = _cache.load_or_discard(path, self._stream, self._valid,
-                                       "does not pass its checks against the integrator")
+    def _load(self, name: str, key: str, valid, from_dict):
+        """The build ``name`` from its cache entry, once per ladder (None if absent). A bad entry is
+        removed with one note: otherwise it would be read, refused and reported on every call, and
+        never replaced when a request is served without building."""
+        if name not in self.built:
+            path = _cache.cache_path(key, self._directory())
+            d = _cache.load_or_discard(path, self._stream, valid, "does not pass its checks against the integrator")
             if d is not None:
-                self.built[CALIBRATION] = Calibration.from_dict(d)
-        return self.built.get(CALIBRATION)
+                self.built[name] = from_dict(d)
+        return self.built.get(name)
+
+    def cached_calibration(self) -> Calibration | None:
+        return self._load(CALIBRATION, self.cache_key, self._valid, Calibration.from_dict)
 
     def calibration(self) -> Calibration:
         if self.cached_calibration() is None:
@@ -253,13 +256,7 @@ class Ladder:
         return (c.alpha, c.gamma) == (self.ex.alpha, self.ex.gamma) and c.spot_checks_pass()
 
     def cached_overlap_curve(self) -> OverlapCurve | None:
-        if OVERLAP_CURVE not in self.built:
-            path = _cache.cache_path(self.overlap_key, self._directory())
-            d = _cache.load_or_discard(path, self._stream, self._overlap_valid,
-                                       "does not pass its checks against the integrator")
-            if d is not None:
-                self.built[OVERLAP_CURVE] = OverlapCurve.from_dict(d)
-        return self.built.get(OVERLAP_CURVE)
+        return self._load(OVERLAP_CURVE, self.overlap_key, self._overlap_valid, OverlapCurve.from_dict)
 
     def overlap_curve(self) -> OverlapCurve:
         if self.cached_overlap_curve() is None:
