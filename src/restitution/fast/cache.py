@@ -26,6 +26,8 @@ __all__ = ["cache_dir", "cache_path", "load_json", "load_or_discard", "discard_d
            "save_json_atomic", "get_or_build"]
 
 ENV_VAR = "RESTITUTION_CACHE"
+#: A build that takes (or is expected to take) longer than this says so on stderr.
+ANNOUNCE_SECONDS = 1.0
 
 
 def cache_dir() -> Path:
@@ -155,10 +157,13 @@ def entry_lock(path: Path, label: str, stream):
 
 
 def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict], bool] = lambda d: True,
-                 what: str = "", directory: Path | None = None, stream=None) -> dict:
+                 what: str = "", directory: Path | None = None, stream=None, announce: bool = True,
+                 estimate: float | None = None) -> dict:
     """The cached dict for ``key`` if present and ``valid``; otherwise ``build()`` it and store it.
 
-    Progress ("building ..." / "done") goes to ``stream`` (default stderr). Concurrent callers of
+    Progress ("building ..." / "built in") goes to ``stream`` (default stderr); with ``announce``
+    False only "built in", and only if it took longer than ANNOUNCE_SECONDS; ``estimate``: the
+    expected seconds, said when it starts. Concurrent callers of
     the same key build it once (:func:`entry_lock`); a damaged or invalid entry is removed with one
     note and rebuilt.
     """
@@ -173,7 +178,9 @@ def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict],
         data = load_or_discard(path, stream, valid)
         if data is not None:
             return data
-        print(f"restitution: building {label} (cached in {path}) ...", file=stream, flush=True)
+        if announce:
+            about = "" if estimate is None else f"about {estimate:.0f} s, "
+            print(f"restitution: building {label} ({about}cached in {path}) ...", file=stream, flush=True)
         t0 = time.perf_counter()
         data = build()
         try:
@@ -181,5 +188,7 @@ def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict],
         except OSError as exc:
             print(f"restitution: note: could not write the cache ({exc}); using the result without "
                   "caching it", file=stream, flush=True)
-        print(f"restitution: built {label} in {time.perf_counter() - t0:.1f} s", file=stream, flush=True)
+        seconds = time.perf_counter() - t0
+        if announce or seconds > ANNOUNCE_SECONDS:
+            print(f"restitution: built {label} in {seconds:.1f} s", file=stream, flush=True)
     return data

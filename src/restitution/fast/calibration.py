@@ -1,5 +1,15 @@
-"""The calibration bundle of the method ladder: the master curve and the measured errors of the
-cheap rungs on its grid, built once per pair of exponents and cached (:mod:`restitution.fast.cache`).
+"""What the method ladder builds for one pair of exponents, each piece on its own (issue 23: an
+eps request builds only what it reads), cached and checked on load by :mod:`restitution.fast.ladder`:
+
+* the master curve (``MASTER``, a tenth of a second to a few seconds) and, from its calibration
+  grid, the measured errors of the rungs that need nothing else (the expansions, the Pade form):
+  a :class:`Calibration`;
+* one build per relation rung (``relation_build(name)``): its c0-c2 (the paper's perturbation
+  route takes seconds an order); their errors are measured on the master curve's grid when loaded,
+  so a stored c0-c2 is always quoted with the error it really has;
+* the uniform closed form (``UNIFORM``, :mod:`restitution.fast.uniform_build`);
+* the master curve's check against the mpmath reference (``MPMATH``,
+  :func:`restitution.fast.master.mpmath_check`), which can only widen the curve's bound.
 
 Relation rungs evaluate eps = (Omega~/Omega)^((gamma+1)/(alpha-1-2gamma)) with
 Omega~ = c0 + c1 Omega + c2 Omega^2; each is a :class:`Relation`: a name and where its c0-c2 come
@@ -22,10 +32,18 @@ from .master import MasterCurve, MasterSettings, build_master, reference_eps
 from .uniform_build import build_uniform
 
 __all__ = ["Calibration", "Relation", "RelationUnavailable", "FITTED_C", "build_calibration", "pade_mp2011",
-           "MUELLER_POESCHEL_PADE", "CALIBRATION_VERSION"]
+           "MUELLER_POESCHEL_PADE", "CALIBRATION_VERSION", "MASTER", "UNIFORM", "MPMATH", "relation_build",
+           "relation_dict", "measure_master", "measure_relation", "merged"]
 
-#: Version of the calibration bundle (master curve + profiles); bump to invalidate caches.
-CALIBRATION_VERSION = 3
+#: Version of the stored relation builds and mpmath checks; bump to invalidate caches.
+CALIBRATION_VERSION = 4
+#: Build names (what a rung's ``needs`` gives).
+MASTER, UNIFORM, MPMATH = "master curve", "uniform form", "mpmath check"
+
+
+def relation_build(name: str) -> str:
+    """The build name of the relation rung ``name``."""
+    return f"{name} relation"
 #: Omega range of the c0-c2 fit (the claims ledger fits the paper's material over g in [0.01, 1],
 #: i.e. Omega in [0.098, 3.1]).
 FIT_OMEGA = (0.1, 3.0, 41)
@@ -61,6 +79,9 @@ class Relation:
 
     name: str
     coefficients: Callable
+    #: Seconds to derive its c0-c2 on the 2-core machine (what the chooser prices it at before it
+    #: has built one itself).
+    build_seconds: float = 0.05
 
 
 def _fitted_c(ex: Exponents, progress) -> tuple:
@@ -77,26 +98,24 @@ def _fitted_c(ex: Exponents, progress) -> tuple:
 FITTED_C = Relation("fitted-c", _fitted_c)
 
 
-def _relations_for(ex: Exponents, relations, progress) -> tuple[dict, dict]:
-    """c0-c2 of each relation rung, or why it has none."""
-    rel, missing = {}, {}
+def relation_dict(ex: Exponents, relation: Relation, progress=None) -> dict:
+    """The stored form of one relation rung: its c0-c2 and their source, or why it has none."""
+    say = progress or (lambda m: None)
+    d = {"version": CALIBRATION_VERSION, "alpha": str(ex.alpha), "gamma": str(ex.gamma), "name": relation.name}
     if ex.omega_exponent == 0:
-        reason = "alpha - 1 - 2 gamma = 0: Omega~ = Omega whatever eps is, the relation is empty"
-        return rel, {r.name: reason for r in relations}
-    for r in relations:
-        try:
-            c, source = r.coefficients(ex, progress)
-        except RelationUnavailable as exc:
-            missing[r.name] = str(exc)
-            continue
-        rel[r.name] = {"c": [float(x) for x in c], "source": source}
-    return rel, missing
+        return {**d, "unavailable": "alpha - 1 - 2 gamma = 0: Omega~ = Omega whatever eps is, the relation is empty"}
+    try:
+        c, source = relation.coefficients(ex, say)
+    except RelationUnavailable as exc:
+        return {**d, "unavailable": str(exc)}
+    return {**d, "c": [float(x) for x in c], "source": source}
 
 
 # ------------------------------------------------------------------------------------- calibration
 @dataclass
 class Calibration:
-    """Master curve + measured error profiles of the approximate rungs on the calibration grid."""
+    """A master curve with the measured errors (``profiles``, on ``master.grid_log10_omega``) of the
+    rungs it measures, the relations' c0-c2 among them, and (when merged) the uniform form."""
 
     master: MasterCurve
     profiles: dict            # rung -> np.ndarray of relative errors on master.grid_log10_omega
@@ -104,40 +123,53 @@ class Calibration:
     unavailable: dict         # rung -> reason
     uniform: UniformForm | None = None   # the uniform closed form (alpha > gamma)
 
-    def as_dict(self) -> dict:
-        return {"version": CALIBRATION_VERSION, "master": self.master.as_dict(),
-                "profiles": {k: [None if not np.isfinite(x) else float(x) for x in v]
-                             for k, v in self.profiles.items()},
-                "relations": self.relations, "unavailable": self.unavailable,
-                "uniform": None if self.uniform is None else self.uniform.as_dict()}
 
-    @classmethod
-    def from_dict(cls, d: dict) -> "Calibration":
-        if d.get("version") != CALIBRATION_VERSION:
-            raise ValueError("calibration version mismatch")
-        prof = {k: np.array([np.inf if x is None else x for x in v], dtype=float)
-                for k, v in d["profiles"].items()}
-        uni = d.get("uniform")
-        return cls(MasterCurve.from_dict(d["master"]), prof, d["relations"], d["unavailable"],
-                   None if uni is None else UniformForm.from_dict(uni))
-
-
-def build_calibration(alpha, gamma, settings: MasterSettings | None = None, progress=None,
-                      relations=(FITTED_C,)) -> Calibration:
-    """The master curve, and each cheap rung's relative error on its grid (``relations``: the relation rungs)."""
-    ex = as_exponents(alpha, gamma)
-    say = progress or (lambda m: None)
-    master = build_master(ex, None, settings, progress=say)
+def measure_master(master: MasterCurve) -> Calibration:
+    """The expansions' and the Pade form's errors on the curve's grid (milliseconds)."""
+    ex = as_exponents(master.alpha, master.gamma)
     grid = 10.0 ** master.grid_log10_omega
     ref = master.grid_eps
-    rel, missing = _relations_for(ex, relations, say)
-    profiles = {name: _rel_err(eps_from_connection(ex, None, grid, r["c"]), ref) for name, r in rel.items()}
+    profiles, missing = {}, {}
     if ex.alpha == Fraction(3, 2) and ex.gamma == Fraction(1, 2):
         profiles["pade-mp2011"] = _rel_err(pade_mp2011(grid), ref)
     else:
         missing["pade-mp2011"] = "the Pade form is for alpha = 3/2, gamma = 1/2 only"
     profiles["viscous"] = _rel_err(master.viscous_eps(grid), ref)
     profiles["elastic"] = _rel_err(master.elastic.eps(grid, 2), ref)
-    uniform = build_uniform(ex, None, say) if ex.alpha > ex.gamma else None
-    return Calibration(master, profiles, rel, missing, uniform)
+    return Calibration(master, profiles, {}, missing)
 
+
+def measure_relation(master: MasterCurve, d: dict) -> Calibration:
+    """One stored relation with its error on the curve's grid, computed from the c0-c2 it holds."""
+    name = d["name"]
+    if "c" not in d:
+        return Calibration(master, {}, {}, {name: d["unavailable"]})
+    c = [float(x) for x in d["c"]]
+    if len(c) != 3:
+        raise ValueError("a relation has three coefficients")
+    ex = as_exponents(master.alpha, master.gamma)
+    err = _rel_err(eps_from_connection(ex, None, 10.0 ** master.grid_log10_omega, c), master.grid_eps)
+    return Calibration(master, {name: err}, {name: {"c": c, "source": d["source"]}}, {})
+
+
+def merged(parts) -> Calibration:
+    """One Calibration from the pieces built for one curve (what :meth:`Ladder.calibration` returns)."""
+    parts = [p for p in parts if isinstance(p, Calibration)]
+    out = Calibration(parts[0].master, {}, {}, {})
+    for p in parts:
+        out.profiles.update(p.profiles)
+        out.relations.update(p.relations)
+        out.unavailable.update(p.unavailable)
+    return out
+
+
+def build_calibration(alpha, gamma, settings: MasterSettings | None = None, progress=None,
+                      relations=(FITTED_C,)) -> Calibration:
+    """Everything at once, without a cache (the benchmark times it): the master curve with its
+    mpmath check (``settings.n_highprec`` points), each relation rung and the uniform form."""
+    ex = as_exponents(alpha, gamma)
+    say = progress or (lambda m: None)
+    master = build_master(ex, None, settings, progress=say)
+    cal = merged([measure_master(master), *(measure_relation(master, relation_dict(ex, r, say)) for r in relations)])
+    cal.uniform = build_uniform(ex, None, say) if ex.alpha > ex.gamma else None
+    return cal

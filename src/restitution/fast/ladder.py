@@ -1,8 +1,10 @@
 """The method ladder for eps(Omega) and ``epsilon()``, which picks the cheapest rung that meets a tolerance.
 
 Rungs (cheapest first; bounds are relative errors in eps, measured against the references on points
-not used to build the rung; "cal" = needs the calibration bundle, built once per exponents and cached;
-"ovl" = needs the overlap rule's own curve, built alone in seconds and cached):
+not used to build the rung; "cal" = reads a build of :mod:`restitution.fast.calibration`: the master
+curve (0.1 s for alpha > gamma, 5 s for alpha < gamma), a relation's own c0-c2 (the perturbation
+route: seconds an order) or the uniform form (under a second); "ovl" = reads the overlap rule's own
+curve (under a second). Each is built on its own when a request pays for it, and cached):
 
 ======================  =========================================  ============================  ========
 rung                    what                                       domain                        cost/pt
@@ -57,8 +59,13 @@ Each rung is an object of :mod:`restitution.fast.rungs` (interface: :mod:`restit
 this module only compares their quotes and loads or builds what they read.
 
 Choice: among rungs whose domain holds every input and whose bound over the inputs is <= tol, the
-least expected time (setup + n x cost). The calibration bundle is built (seconds, cached on disk) only
-when that is cheaper than the best rung that does not need it, or when nothing else meets tol.
+least expected time (setup + n x cost). A build is made (cached on disk) only when its price
+(BUILD_SECONDS, or what the last one of its kind took) plus its rung's cost undercuts the best rung
+that needs no build, or when nothing else meets tol; builds are made cheapest first, quoting again
+after each (the master curve may serve the request, and the perturbation route is then not built).
+One expected to take more than a second is named on stderr with its price. The master curve's
+check against mpmath (seconds) is built for the pipeline and the benchmark (``calibration()``), and
+can only widen the curve's bound.
 A tolerance no rung meets raises ParameterError naming the best bound available.
 """
 
@@ -67,8 +74,10 @@ from __future__ import annotations
 import hashlib
 import math
 import sys
-from dataclasses import dataclass
+import time
+from dataclasses import dataclass, replace
 from fractions import Fraction
+from typing import Callable
 
 import numpy as np
 
@@ -77,22 +86,31 @@ from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
 from ..core.results import end_rule
 from ..core.exponents import Exponents, as_exponents
-from .calibration import (CALIBRATION_VERSION, FITTED_C, MUELLER_POESCHEL_PADE, Calibration, Relation,
-                          build_calibration)
-from .master import MASTER_VERSION, MasterCurve, MasterSettings, reference_eps
+from ..core.uniform import UNIFORM_VERSION, UniformForm
+from .calibration import (CALIBRATION_VERSION, FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFORM, Calibration,
+                          Relation, measure_master, measure_relation, merged, relation_build, relation_dict)
+from .master import (MASTER_VERSION, MasterCurve, MasterSettings, build_master, mpmath_check, reference_eps,
+                     widen_by_check)
 from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request, integrator_bound
 from .rungs import ladder_rungs, rung_names
-from .rungs.calibrated import CALIBRATION, SAFETY
+from .rungs.calibrated import SAFETY
 from .rungs.overlap_master import OVERLAP_CURVE
 from .overlap_master import OVERLAP_CURVE_VERSION, OverlapCurve, build_overlap_curve
+from .uniform_build import build_uniform
 
-__all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "BUILD_COST",
-           "DEFAULT_TOL", "TOL_FLOOR"]
+__all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "BUILD_SECONDS",
+           "MEASURED_SECONDS", "DEFAULT_TOL", "TOL_FLOOR"]
 
-#: Rough seconds to build a calibration bundle that is not cached.
-BUILD_COST = {"alpha>gamma": 15.0, "alpha<=gamma": 30.0}
-#: Rough seconds to build the overlap rule's master curve (1-2 s measured on the 2-core machine).
-OVERLAP_CURVE_COST = 3.0
+#: Seconds each build took on the 2-core machine when idle (about twice that when busy), by kind
+#: ("alpha>gamma" or "alpha<=gamma"): what the chooser prices a build at until it has timed one of
+#: that kind itself (MEASURED_SECONDS). Master curve: 0.1 s (3/2, 1 and 3/2, 1/2), 4.6-4.9 s for
+#: alpha < gamma (the creeping return below Omega = 1e-3), 0.01 s for alpha = gamma (exact);
+#: overlap curve 0.6-0.7 s; uniform form 0.6-0.7 s; mpmath check (12 points) 2.8 s. The relation
+#: rungs carry their own (Relation.build_seconds).
+BUILD_SECONDS = {MASTER: {"alpha>gamma": 0.2, "alpha<=gamma": 5.0}, OVERLAP_CURVE: {"alpha>gamma": 0.7},
+                 UNIFORM: {"alpha>gamma": 0.7}, MPMATH: {"alpha>gamma": 3.0, "alpha<=gamma": 3.0}}
+#: What builds took in this process, by (build, kind, settings): the latest one prices the next.
+MEASURED_SECONDS: dict = {}
 
 
 # ------------------------------------------------------------------------------------------ result
@@ -127,6 +145,10 @@ class EpsResult:
 
 
 # ------------------------------------------------------------------------------------------ helpers
+def _safe_name(name: str) -> str:
+    return "".join(c if c.isalnum() or c == "-" else "_" for c in name)
+
+
 def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
     lo, hi = OMEGA_REPRESENTABLE
     allowed = f"must be numbers in [{lo:g}, {hi:g}] (at least one)"
@@ -159,15 +181,30 @@ def _spot_checks_pass(ex: Exponents, m: MasterCurve) -> bool:
     return bool(np.all(err <= 10.0 * (m.bound_at(om) + integrator_bound(1e-13))))
 
 
-def _uniform_checks_pass(ex: Exponents, u) -> bool:
-    """The stored uniform form is there exactly when it should be and meets its bound at a few points."""
-    if u is None:
-        return not ex.alpha > ex.gamma
+def _uniform_checks_pass(ex: Exponents, u: UniformForm) -> bool:
+    """The stored uniform form is for these exponents and meets its bound at a few points."""
     if (u.alpha, u.gamma) != (ex.alpha, ex.gamma) or not 0 < u.bound_eps < 1:
         return False
     om = np.geomspace(1e-7, 1e7, 8) * 1.37
     ref = reference_eps(ex, None, om, 1e-13)
     return bool(np.all(np.abs(u.eps(om) / ref - 1) <= u.bound_eps))
+
+
+def _digest(text: str) -> str:
+    return hashlib.sha256(text.encode()).hexdigest()[:12]
+
+
+@dataclass(frozen=True)
+class _Build:
+    """One cached build: its cache key, how to make its dict, check it and turn it into what rungs
+    read, the builds it reads, and the words that name it on stderr."""
+
+    key: str
+    make: Callable[[], dict]
+    valid: Callable[[dict], bool]
+    load: Callable[[dict], object]
+    what: str
+    after: tuple = ()
 
 
 class Ladder:
@@ -184,6 +221,7 @@ class Ladder:
         self.stream = stream
         #: What is built and loaded, by build name (what the rungs' ``needs`` name).
         self.built: dict = {}
+        self._announce = False
 
     @property
     def _stream(self):
@@ -193,60 +231,53 @@ class Ladder:
         from pathlib import Path
         return Path(self.cache_dir) if self.cache_dir else None
 
-    # -- calibration bundle
     @property
-    def cache_key(self) -> str:
-        # the relation rungs are part of the bundle: a ladder with other ones builds its own
-        key = self.settings.key() + "|" + ",".join(r.name for r in self.relations)
-        return (f"calibration-a{self.ex.alpha}-g{self.ex.gamma}-v{CALIBRATION_VERSION}.{MASTER_VERSION}"
-                f"-{hashlib.sha256(key.encode()).hexdigest()[:12]}")
+    def _kind(self) -> str:
+        return "alpha>gamma" if self.ex.alpha > self.ex.gamma else "alpha<=gamma"
 
-    def _valid(self, d: dict) -> bool:
+    @property
+    def master_settings(self) -> MasterSettings:
+        """The curve's settings: its mpmath check is a build of its own (MPMATH)."""
+        return replace(self.settings, n_highprec=0)
+
+    # -- the builds, by the name a rung's ``needs`` gives
+    def _spec(self, name: str) -> _Build:
+        ex, pair = self.ex, f"a{self.ex.alpha}-g{self.ex.gamma}"
+        for_pair = f"alpha={ex.alpha}, gamma={ex.gamma}"
+        if name == MASTER:
+            ms = self.master_settings
+            return _Build(f"master-{pair}-v{MASTER_VERSION}-{_digest(ms.key())}",
+                          lambda: build_master(ex, None, ms, progress=self._progress).as_dict(), self._master_valid,
+                          lambda d: measure_master(MasterCurve.from_dict(d)), f"the master curve for {for_pair}")
+        if name == OVERLAP_CURVE:
+            return _Build(f"overlap-curve-{pair}-v{OVERLAP_CURVE_VERSION}",
+                          lambda: build_overlap_curve(ex, None, self._progress).as_dict(), self._overlap_valid,
+                          OverlapCurve.from_dict, f"the overlap rule's master curve for {for_pair}")
+        if name == UNIFORM:
+            return _Build(f"uniform-{pair}-v{UNIFORM_VERSION}", lambda: build_uniform(ex, None, self._progress).as_dict(),
+                          self._uniform_valid, UniformForm.from_dict, f"the uniform closed form for {for_pair}")
+        if name == MPMATH:
+            s = self.settings
+            return _Build(f"mpmath-check-{pair}-v{CALIBRATION_VERSION}.{MASTER_VERSION}-{_digest(s.key())}",
+                          lambda: mpmath_check(self.master, s.n_highprec, s.highprec_digits, s.seed, self._progress),
+                          self._mpmath_valid, self._apply_check,
+                          f"the master curve's check against mpmath for {for_pair}", (MASTER,))
+        rel = next(r for r in self.relations if relation_build(r.name) == name)
+        return _Build(f"relation-{_safe_name(rel.name)}-{pair}-v{CALIBRATION_VERSION}",
+                      lambda: relation_dict(ex, rel, self._progress), lambda d: self._relation_valid(d, rel.name),
+                      lambda d: measure_relation(self.master, d), f"the {rel.name} relation for {for_pair}", (MASTER,))
+
+    def _progress(self, msg: str) -> None:
+        if self._announce:
+            print(f"restitution:   {msg}", file=self._stream, flush=True)
+
+    def _master_valid(self, d: dict) -> bool:
         try:
-            cal = Calibration.from_dict(d)
+            m = MasterCurve.from_dict(d)
         except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
             return False
-        m = cal.master
-        return (m.alpha == self.ex.alpha and m.gamma == self.ex.gamma and m.settings == self.settings
-                and bool(np.all(np.isfinite(m.coef))) and _spot_checks_pass(self.ex, m)
-                and _uniform_checks_pass(self.ex, cal.uniform))
-
-    def _load(self, name: str, key: str, valid, from_dict):
-        """The build ``name`` from its cache entry, once per ladder (None if absent). A bad entry is
-        removed with one note: otherwise it would be read, refused and reported on every call, and
-        never replaced when a request is served without building."""
-        if name not in self.built:
-            path = _cache.cache_path(key, self._directory())
-            d = _cache.load_or_discard(path, self._stream, valid, "does not pass its checks against the integrator")
-            if d is not None:
-                self.built[name] = from_dict(d)
-        return self.built.get(name)
-
-    def cached_calibration(self) -> Calibration | None:
-        return self._load(CALIBRATION, self.cache_key, self._valid, Calibration.from_dict)
-
-    def calibration(self) -> Calibration:
-        if self.cached_calibration() is None:
-            stream = self._stream
-
-            def progress(msg):
-                print(f"restitution:   {msg}", file=stream, flush=True)
-
-            d = _cache.get_or_build(
-                self.cache_key, lambda: build_calibration(self.ex, None, self.settings, progress, self.relations).as_dict(),
-                valid=self._valid, what=f"the master curve for alpha={self.ex.alpha}, gamma={self.ex.gamma}",
-                directory=self._directory(), stream=stream)
-            self.built[CALIBRATION] = Calibration.from_dict(d)
-        return self.built[CALIBRATION]
-
-    @property
-    def master(self) -> MasterCurve:
-        return self.calibration().master
-
-    # -- the overlap rule's master curve (its own cache file: built on its own, in seconds)
-    @property
-    def overlap_key(self) -> str:
-        return f"overlap-curve-a{self.ex.alpha}-g{self.ex.gamma}-v{OVERLAP_CURVE_VERSION}"
+        return (m.alpha == self.ex.alpha and m.gamma == self.ex.gamma and m.settings == self.master_settings
+                and bool(np.all(np.isfinite(m.coef))) and _spot_checks_pass(self.ex, m))
 
     def _overlap_valid(self, d: dict) -> bool:
         try:
@@ -255,29 +286,128 @@ class Ladder:
             return False
         return (c.alpha, c.gamma) == (self.ex.alpha, self.ex.gamma) and c.spot_checks_pass()
 
-    def cached_overlap_curve(self) -> OverlapCurve | None:
-        return self._load(OVERLAP_CURVE, self.overlap_key, self._overlap_valid, OverlapCurve.from_dict)
+    def _uniform_valid(self, d: dict) -> bool:
+        try:
+            return _uniform_checks_pass(self.ex, UniformForm.from_dict(d))
+        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
+            return False
 
-    def overlap_curve(self) -> OverlapCurve:
-        if self.cached_overlap_curve() is None:
-            d = _cache.get_or_build(
-                self.overlap_key, lambda: build_overlap_curve(self.ex, None).as_dict(), valid=self._overlap_valid,
-                what=f"the overlap rule's master curve for alpha={self.ex.alpha}, gamma={self.ex.gamma}",
-                directory=self._directory(), stream=self._stream)
-            self.built[OVERLAP_CURVE] = OverlapCurve.from_dict(d)
-        return self.built[OVERLAP_CURVE]
+    def _relation_valid(self, d: dict, name: str) -> bool:
+        # its error is measured from the c0-c2 it holds when loaded: an edited c is quoted as it is
+        try:
+            same = ((d["version"], d["name"], d["alpha"], d["gamma"])
+                    == (CALIBRATION_VERSION, name, str(self.ex.alpha), str(self.ex.gamma)))
+            return same and (isinstance(d.get("unavailable"), str) if "c" not in d
+                             else len(d["c"]) == 3 and all(math.isfinite(float(x)) for x in d["c"]))
+        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
+            return False
 
-    # -- builds, by the name a rung's ``needs`` gives
+    def _mpmath_valid(self, d: dict) -> bool:
+        """Its mpmath values agree with the integrator where they were taken: an edited value must
+        not widen the curve's bound for nothing, nor hide a wrong curve."""
+        try:
+            pts, hp = np.asarray(d["omega"], float), np.asarray(d["eps"], float)
+            if (d["alpha"], d["gamma"]) != (str(self.ex.alpha), str(self.ex.gamma)) or pts.shape != hp.shape:
+                return False
+            ref = reference_eps(self.ex, None, pts, 1e-13)
+        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
+            return False
+        return bool(np.all(np.abs(hp / ref - 1) <= 10.0 * integrator_bound(1e-13)))
+
+    def _apply_check(self, d: dict) -> dict:
+        widen_by_check(self.master, d)
+        return d
+
     def _cached(self, name: str):
-        return {CALIBRATION: self.cached_calibration, OVERLAP_CURVE: self.cached_overlap_curve}[name]()
+        """The build ``name`` from its cache entry, once per ladder (None if absent, or if a build it
+        reads is absent). A bad entry is removed with one note: otherwise it would be read, refused
+        and reported on every call, and never replaced when a request is served without building."""
+        if name not in self.built:
+            spec = self._spec(name)
+            if any(self._cached(a) is None for a in spec.after):
+                return None
+            path = _cache.cache_path(spec.key, self._directory())
+            d = _cache.load_or_discard(path, self._stream, spec.valid, "does not pass its checks against the integrator")
+            if d is not None:
+                self.built[name] = spec.load(d)
+        return self.built.get(name)
 
     def _build(self, name: str):
-        return {CALIBRATION: self.calibration, OVERLAP_CURVE: self.overlap_curve}[name]()
+        """The build ``name``, made (with what it reads) and cached if it is not; announced on stderr
+        when it is expected to take more than a second."""
+        if self._cached(name) is None:
+            spec = self._spec(name)
+            for a in spec.after:
+                self._build(a)
+            seconds = self._own_cost(name)
+            timing = {}
+
+            def make():
+                t0 = time.perf_counter()
+                out = spec.make()
+                timing["s"] = time.perf_counter() - t0
+                return out
+
+            self._announce = seconds > _cache.ANNOUNCE_SECONDS
+            try:
+                d = _cache.get_or_build(spec.key, make, valid=spec.valid, directory=self._directory(),
+                                        what=spec.what, stream=self._stream, announce=self._announce,
+                                        estimate=seconds)
+            finally:
+                self._announce = False
+            if "s" in timing:
+                MEASURED_SECONDS[self._measured_key(name)] = timing["s"]
+            self.built[name] = spec.load(d)
+        return self.built[name]
+
+    def _measured_key(self, name: str) -> tuple:
+        return name, self._kind, self.settings.key()
+
+    def _own_cost(self, name: str) -> float:
+        if self._measured_key(name) in MEASURED_SECONDS:
+            return MEASURED_SECONDS[self._measured_key(name)]
+        rel = next((r for r in self.relations if relation_build(r.name) == name), None)
+        if rel is not None:
+            return rel.build_seconds
+        return BUILD_SECONDS[name].get(self._kind, math.inf)
 
     def _build_cost(self, name: str) -> float:
-        if name == OVERLAP_CURVE:
-            return OVERLAP_CURVE_COST
-        return BUILD_COST["alpha>gamma" if self.ex.alpha > self.ex.gamma else "alpha<=gamma"]
+        """Expected seconds to have ``name``: its own and those of the unbuilt builds it reads."""
+        if name in self.built:
+            return 0.0
+        return self._own_cost(name) + sum(self._build_cost(a) for a in self._spec(name).after)
+
+    # -- the pieces by name (tests, the benchmark, the pipeline)
+    def cached_calibration(self) -> Calibration | None:
+        """The master curve with the rungs it measures, if cached."""
+        return self._cached(MASTER)
+
+    @property
+    def master(self) -> MasterCurve:
+        return self._build(MASTER).master
+
+    def overlap_curve(self) -> OverlapCurve:
+        return self._build(OVERLAP_CURVE)
+
+    def cached_overlap_curve(self) -> OverlapCurve | None:
+        return self._cached(OVERLAP_CURVE)
+
+    @property
+    def overlap_key(self) -> str:
+        return self._spec(OVERLAP_CURVE).key
+
+    def uniform(self) -> UniformForm | None:
+        return self._build(UNIFORM) if self.ex.alpha > self.ex.gamma else None
+
+    def calibration(self) -> Calibration:
+        """Everything: the master curve checked against mpmath, every relation rung and the uniform
+        form (what the pipeline and the benchmark want; an eps request builds only what it reads)."""
+        parts = [self._build(MASTER), *(self._build(relation_build(r.name)) for r in self.relations)]
+        if self.settings.n_highprec > 0:
+            self._build(MPMATH)
+        cal = merged(parts)
+        cal.uniform = self.uniform()
+        return cal
 
     # -- quotes
     def quotes(self, omega: np.ndarray, tol: float, end: str = "force") -> list[Quote]:
@@ -307,15 +437,7 @@ class Ladder:
         flat = om.ravel()
         quotes = self.quotes(flat, tol, end)
         if build is not False:
-            wanted = {q.needs_build for q in quotes if q.needs_build}
-            if method is not None:
-                wanted &= {q.needs_build for q in quotes if q.name == method}
-            if not build:
-                wanted &= self._building_pays(quotes, tol, flat.size) if method is None else wanted
-            if wanted:
-                for name in sorted(wanted):
-                    self._build(name)
-                quotes = self.quotes(flat, tol, end)
+            quotes = self._make_builds(quotes, flat, tol, end, method, build)
         if method is not None:
             mine = [q for q in quotes if q.name == method]
             if not mine:   # a rung that is not quoted for this end rule at all
@@ -344,6 +466,22 @@ class Ladder:
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(chosen.bound), om, self.ex.alpha,
                          self.ex.gamma, tol if checked else None, chosen.setting, table, chosen.coefficients)
+
+    def _make_builds(self, quotes, flat, tol: float, end: str, method, build) -> list[Quote]:
+        """Make the builds the request wants, cheapest first, quoting again after each: the first
+        one built may serve the request already, so the next ones no longer pay."""
+        tried: set = set()
+        while True:
+            pending = {q.needs_build for q in quotes if q.needs_build and (method is None or q.name == method)}
+            if method is None and not build:
+                pending = self._building_pays(quotes, tol, flat.size)
+            pending -= tried
+            if not pending:
+                return quotes
+            name = min(pending, key=lambda b: (self._build_cost(b), b))
+            tried.add(name)
+            self._build(name)
+            quotes = self.quotes(flat, tol, end)
 
     def _building_pays(self, quotes, tol: float, n: int) -> set[str]:
         """The builds worth making: all the quoted ones when nothing else meets tol; otherwise those
@@ -378,8 +516,8 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
     Returns an :class:`EpsResult`: ``.eps`` (numpy array shaped like the input), ``.method``,
     ``.error_bound`` (relative, over all inputs), ``.candidates`` (the chooser's table).
     ``method`` forces a rung (it must still meet ``tol``, unless ``tol`` is None: then it answers
-    with whatever bound it has); ``build`` = False never builds the
-    calibration bundle, True always does, None (default) builds it when that pays.
+    with whatever bound it has); ``build`` = False never builds
+    anything, True builds everything the quoted rungs read, None (default) what pays.
     ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's). ``end``: the
     end-of-contact rule; "overlap" is served only by the rungs that declare it (``Rung.ends``).
     Raises ParameterError for bad input and for a tolerance no rung meets.

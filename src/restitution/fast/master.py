@@ -38,11 +38,12 @@ from .integrator import END_FAILED, END_STUCK, collide_fast
 from .panels import chebyshev_panels_eval
 from .rung import INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR, integrator_bound
 
-__all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps",
+__all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps", "mpmath_check",
+           "widen_by_check",
            "INTEGRATOR_BOUND_FACTOR", "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "stiff_omega_min"]
 
 #: Bumped whenever the construction changes, so cached curves of an older kind are rebuilt.
-MASTER_VERSION = 1
+MASTER_VERSION = 2
 
 def stiff_omega_min(alpha, gamma, end: str = "force") -> float:
     """Smallest Omega the explicit compiled integrator is used for.
@@ -384,34 +385,51 @@ def build_master(alpha, gamma, settings: MasterSettings | None = None, *, progre
     grid_err_outside = float(np.max(np.abs(curve.eps(grid[out]) / ref[out] - 1.0)
                                     / (curve.bound_at(grid[out]) + noise))) if np.any(out) else 0.0
 
-    # ---- held-out errors against the mpmath reference
-    hp = {"n": 0, "max_rel_err_master": 0.0, "max_rel_err_integrator": 0.0}
-    if s.n_highprec > 0:
-        from ..core.highprec import reference_collision
-
-        lo_hp, hi_hp = math.log(max(grid[0], curve.omega_lo / 100)), math.log(min(grid[-1], curve.omega_hi * 100))
-        pts = np.exp(rng.uniform(lo_hp, hi_hp, s.n_highprec))
-        if ex.alpha <= ex.gamma:
-            pts = np.maximum(pts, 1e-3)  # the mpmath reference is explicit too: keep it cheap
-        say(f"checking against the mpmath reference at {pts.size} points")
-        hp_eps = np.array([float(reference_collision(ex, None, float(w), digits=s.highprec_digits).eps)
-                           for w in pts])
-        m_err = np.abs(curve.eps(pts) / hp_eps - 1.0) / curve.bound_at(pts)  # in units of the local bound
-        i_err = np.abs(reference_eps(ex, None, pts, s.rtol) / hp_eps - 1.0)
-        in_rng = (pts >= curve.omega_lo) & (pts <= curve.omega_hi)
-        hp = {"n": int(pts.size), "omega": pts.tolist(), "eps": hp_eps.tolist(),
-              "max_rel_err_master": float(np.max(np.abs(curve.eps(pts) / hp_eps - 1.0)[in_rng])) if np.any(in_rng) else 0.0,
-              "max_rel_err_integrator": float(np.max(i_err)),
-              "max_err_over_bound_outside": float(np.max(m_err[~in_rng])) if np.any(~in_rng) else 0.0}
-    integ = max(hp["max_rel_err_integrator"], integrator_bound(s.rtol)) if ex.alpha != ex.gamma else 2e-15
-    bound_inside = 2.0 * max(fit_err + integ, hp["max_rel_err_master"])
-    curve.bound_inside = float(max(bound_inside, 2e-14))
+    integ = integrator_bound(s.rtol) if ex.alpha != ex.gamma else 2e-15
+    curve.bound_inside = float(max(2.0 * (fit_err + integ), 2e-14))
     curve.checks = {
         "fit_err_heldout": fit_err,
         "n_heldout": int(held.size + inside.sum()),
         "grid_err_outside_over_bound": grid_err_outside,
-        "highprec": hp,
         "n_nodes": int(npan * (n + 1)),
         "join_tol": s.join_tol,
     }
+    if s.n_highprec > 0:
+        widen_by_check(curve, mpmath_check(curve, s.n_highprec, s.highprec_digits, s.seed, say))
     return curve
+
+
+def mpmath_check(curve: MasterCurve, n: int, digits: int, seed: int, progress=None) -> dict:
+    """The mpmath reference at ``n`` log-random points (not nodes) from a hundredth of the curve's
+    lower join to a hundred times its upper one: seconds, so built apart from the curve (the
+    ladder's "mpmath check") and applied by :func:`widen_by_check`."""
+    from ..core.highprec import reference_collision
+    ex = as_exponents(curve.alpha, curve.gamma)
+    g = 10.0 ** curve.grid_log10_omega
+    rng = np.random.default_rng([seed, 1])
+    lo, hi = math.log(max(g[0], curve.omega_lo / 100)), math.log(min(g[-1], curve.omega_hi * 100))
+    pts = np.exp(rng.uniform(lo, hi, n))
+    if ex.alpha <= ex.gamma:
+        pts = np.maximum(pts, 1e-3)  # the mpmath reference is explicit too: keep it cheap
+    (progress or (lambda m: None))(f"checking against the mpmath reference at {pts.size} points")
+    hp = [float(reference_collision(ex, None, float(w), digits=digits).eps) for w in pts]
+    return {"alpha": str(ex.alpha), "gamma": str(ex.gamma), "digits": digits, "omega": pts.tolist(), "eps": hp}
+
+
+def widen_by_check(curve: MasterCurve, check: dict) -> None:
+    """Apply an mpmath check to its curve. It can only widen the bound inside the joins: to twice
+    the curve's error found there, or twice (held-out fit error + the integrator's error found), if
+    either is larger; the errors beyond the joins are recorded in units of the local bound."""
+    ex = as_exponents(curve.alpha, curve.gamma)
+    pts, hp = np.asarray(check["omega"], float), np.asarray(check["eps"], float)
+    err = np.abs(curve.eps(pts) / hp - 1.0)
+    inside = (pts >= curve.omega_lo) & (pts <= curve.omega_hi)
+    worst = float(np.max(err[inside])) if np.any(inside) else 0.0
+    i_err = float(np.max(np.abs(reference_eps(ex, None, pts, curve.settings.rtol) / hp - 1.0)))
+    if ex.alpha != ex.gamma:
+        curve.bound_inside = max(curve.bound_inside, 2.0 * (curve.checks.get("fit_err_heldout", 0.0) + i_err))
+    curve.bound_inside = float(max(curve.bound_inside, 2.0 * worst))
+    curve.checks["highprec"] = {
+        "n": int(pts.size), "omega": pts.tolist(), "eps": hp.tolist(), "max_rel_err_master": worst,
+        "max_rel_err_integrator": i_err,
+        "max_err_over_bound_outside": float(np.max(err[~inside] / curve.bound_at(pts[~inside]))) if np.any(~inside) else 0.0}

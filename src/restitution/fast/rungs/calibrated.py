@@ -1,5 +1,6 @@
-"""The rungs read from the calibration bundle (:mod:`restitution.fast.calibration`): the relation
-rungs, Mueller & Poeschel's Pade form, the two expansions and the master curve. Each one's bound
+"""The rungs read from the master curve's build (:mod:`restitution.fast.calibration`): Mueller &
+Poeschel's Pade form, the two expansions and the curve itself; and the relation rungs, each from
+its own build, measured on the curve's grid. Each one's bound
 is SAFETY times its largest measured error at the grid points bracketing the request (the
 expansions beyond the grid: their fitted remainder models; the master curve: its own bound)."""
 
@@ -10,15 +11,13 @@ import math
 import numpy as np
 
 from ...core.connection import eps_from_connection
-from ..calibration import Calibration, Relation, pade_mp2011
+from ..calibration import MASTER, Calibration, Relation, pade_mp2011, relation_build
 from ..rung import Request, Rung, integrator_bound
 
-__all__ = ["SAFETY", "RelationRung", "PadeRung", "ViscousRung", "ElasticRung", "MasterRung", "CALIBRATION"]
+__all__ = ["SAFETY", "RelationRung", "PadeRung", "ViscousRung", "ElasticRung", "MasterRung"]
 
 #: Profile bounds are SAFETY times the largest measured error at the bracketing grid points.
 SAFETY = 3.0
-#: The build these rungs read.
-CALIBRATION = "calibration"
 
 
 def profile_bound(cal: Calibration, name: str, lo10: float, hi10: float) -> float:
@@ -35,7 +34,7 @@ class _Calibrated(Rung):
     cost = 2e-8
 
     def needs(self, req: Request) -> str | None:
-        return CALIBRATION
+        return MASTER
 
     def bound(self, req: Request, cal: Calibration) -> tuple[float, str]:
         if self.name in cal.unavailable:
@@ -53,6 +52,9 @@ class RelationRung(_Calibrated):
 
     def __init__(self, relation: Relation):
         self.name = relation.name
+
+    def needs(self, req):
+        return relation_build(self.name)
 
     def evaluate(self, req, cal, setting, omega):
         return eps_from_connection(req.ex, None, omega, cal.relations[self.name]["c"])

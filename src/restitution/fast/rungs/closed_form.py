@@ -1,6 +1,6 @@
 """The closed-form rung: exact where the problem is solvable (alpha = gamma; the linear
 spring-dashpot, both end rules), otherwise the uniform form of :mod:`restitution.core.uniform`
-from the calibration bundle (alpha > gamma, force rule, Omega in FORM_RANGE, its stated bound)."""
+built on its own (alpha > gamma, force rule, Omega in FORM_RANGE, its stated bound)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,7 @@ import numpy as np
 from ...core import asymptotics as asy
 from ...core.uniform import FORM_RANGE
 from ..uniform_eval import uniform_eps
-from .calibrated import CALIBRATION
+from ..calibration import UNIFORM
 from ..rung import Request, Rung
 
 __all__ = ["ClosedForm", "EXACT_BOUND"]
@@ -55,34 +55,33 @@ class ClosedForm(Rung):
         return None
 
     def needs(self, req):
-        return CALIBRATION if _kind(req) == "uniform" else None
+        return UNIFORM if _kind(req) == "uniform" else None
 
     def price(self, req):
         return COSTS[_kind(req)] * req.n
 
-    def bound(self, req, cal):
+    def bound(self, req, form):
         kind = _kind(req)
         if kind == "equal":
             return EXACT_BOUND, "alpha = gamma"
         if kind == "dashpot":
             return EXACT_BOUND, "spring-dashpot" + (", overlap" if req.end == "overlap" else "")
-        return cal.uniform.bound_eps, "uniform form"
+        return form.bound_eps, "uniform form"
 
-    def coefficients(self, req, cal):
+    def coefficients(self, req, form):
         kind = _kind(req)
         if kind == "equal":
             return {"exact": "alpha = gamma (restitution.core.asymptotics.equal_exponents_eps)"}
         if kind == "dashpot":
             return {"exact": "linear spring-dashpot (restitution.core.dashpot)"}
-        u = cal.uniform
-        return {**u.coefficients(), "bound_one_minus_eps": u.bound_one_minus_eps}
+        return {**form.coefficients(), "bound_one_minus_eps": form.bound_one_minus_eps}
 
-    def evaluate(self, req, cal, setting, omega):
+    def evaluate(self, req, form, setting, omega):
         kind = _kind(req)
         if kind == "equal":
             return asy.equal_exponents_eps(omega)
         if kind == "dashpot":
             return dashpot_eps(omega, req.end)
-        return uniform_eps(cal.uniform, omega)
+        return uniform_eps(form, omega)
 
 
