@@ -17,11 +17,10 @@ def bounded(n):
 KNOWN_9_2 = {"alpha": "9/2", "gamma": "1/2", "end": "overlap", "omega": 1.0, "tol": 1e-12, "rtol": 1e-6}
 
 
-@pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="collide(end='overlap') error floor ~8e-13 above its quote 5.5e-13 "
-                                       "(alpha 9/2, gamma 1/2, Omega 1, tol 1e-12); reported in issue 28")
-def test_known_overlap_reference_floor_found_by_the_fuzz():
-    bad = [r for r in F.check_number_case(KNOWN_9_2) if r["status"] in ("FAIL", "known")]
+def test_near_a_sticking_boundary_every_answer_keeps_its_widened_bound():
+    # found by the fuzz: 1.4 % above the sticking boundary (Omega_stick = 0.98605) eps = 2.1e-3 is a
+    # small remainder of O(1) speeds, and every double-precision rung was 2-20 times over its bound
+    bad = _failures(F.check_number_case(KNOWN_9_2))
     assert not bad, bad[0]["detail"]
 
 
@@ -29,11 +28,12 @@ def _failures(records):
     return [r for r in records if r["status"] == "FAIL"]
 
 
-@pytest.mark.slow   # 6 cases took 370 s here, over issue 28's 60 s: the cheap domain must shrink first
-@bounded(6)
+@bounded(24)
 @given(F.number_cases(cheap=True))
 # found by the fuzz: a forced relation rung under the overlap rule was a StopIteration traceback
 @example({"alpha": "8", "gamma": "0", "end": "overlap", "omega": 1.25e10, "tol": 3.16e-14, "rtol": 1e-10})
+# found by the fuzz: 1 - eps = 3.9e-16 judged against a 20-digit reference, which has 4 digits of it
+@example({"alpha": "1", "gamma": "2", "end": "force", "omega": 1e10, "tol": 1e-3, "rtol": 1e-11})
 def test_every_answer_within_its_stated_bound_of_the_mpmath_reference(case):
     bad = _failures(F.check_number_case(case))
     assert not bad, bad[0]["detail"]

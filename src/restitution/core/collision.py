@@ -44,6 +44,7 @@ from .exponents import as_exponents
 from .energy import NEAR_ELASTIC, dissipated, one_minus_eps
 from .law import ForceForm, Law, PullForm
 from .model import at_most_one
+from .conditioning import ACCURACY_FACTOR, ACCURACY_FLOOR, conditioning
 from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
 from .sampling import Piece, sample
 
@@ -304,8 +305,15 @@ def _land_pulling(law: Law, start: _State, rtol: float, pieces: list, stiff: boo
     # in the state, or a loose absolute tolerance on it, lets Radau take steps over which its
     # Newton iteration fails at small Omega. (TINY itself would overflow its first-step estimate.)
     atol = np.array([TINY, TIME_MARGIN * rtol * start.x / abs(start.v)])
-    sol = _integrate(form.du_rhs, (u0, 0.0), [start.f, 0.0], rtol=rtol, atol=atol, events=events,
-                     jac=form.du_jac, stiff=stiff, in_u=True)
+    try:
+        sol = _integrate(form.du_rhs, (u0, 0.0), [start.f, 0.0], rtol=rtol, atol=atol, events=events,
+                         jac=form.du_jac, stiff=stiff, in_u=True)
+    except IntegrationError:
+        # Right at a sticking boundary the return stalls short of x = 0 before the trap can prove
+        # it stays: whether the bodies separate is not decided in double precision there.
+        raise UnresolvedError("omega", law.omega, "under the overlap rule the return stalls at the edge of "
+                              f"sticking (x = {start.x:.3g}): eps = 0 or below what a double-precision "
+                              "integration resolves; move Omega away from the sticking boundary") from None
     u, (g, tau) = sol.t[-1], sol.y[:, -1] + [0.0, start.tau]
     if events and _fired(sol, 0):
         _stuck(law, trap.why(u ** law.p))
@@ -489,8 +497,9 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
         # a loss (and could even exceed 1); the loss itself is accurate to about rtol relative
         eps = 1.0 - loss
     trajectory = sample(pieces, t_eval, last.tau) if t_eval is not None else None
+    bound = (ACCURACY_FACTOR * max(rtol, SOLVER_RTOL_FLOOR) + ACCURACY_FLOOR) * float(conditioning(ex, None, rule, eps))
     return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
-                     float(last.tau), float(x_c), end, rtol, trajectory, loss, rule)
+                     float(last.tau), float(x_c), end, rtol, trajectory, loss, rule, bound)
 
 
 def _check_separates(law: Law) -> None:

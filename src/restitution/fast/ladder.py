@@ -448,7 +448,7 @@ class Ladder:
                 raise ParameterError("method", method, f"not available here: {q.reason or 'needs a build'}")
             if checked and not q.bound <= tol:
                 raise ParameterError("tol", tol, f"method {method} has bound {q.bound:.3g} over these Omegas")
-            chosen = q
+            order = [q]
         else:
             ok = [q for q in quotes if q.run is not None and q.bound <= tol]
             if not ok:
@@ -457,14 +457,11 @@ class Ladder:
                 hint = (f"the smallest bound over these Omegas is {best.bound:.3g} ({best.name})" if best
                         else "no method covers these Omegas")
                 raise ParameterError("tol", tol, f"no method reaches it: {hint}")
-            chosen = min(ok, key=lambda q: (q.cost, q.bound))
-        eps = np.asarray(chosen.run(flat), dtype=float)
-        if not np.all(np.isfinite(eps)):
-            raise ArithmeticError(f"method {chosen.name} returned non-finite eps")
-        eps = at_most_one(eps)
+            order = sorted(ok, key=lambda q: (q.cost, q.bound))
+        chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, end)
         table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
-        return EpsResult(eps.reshape(om.shape), chosen.name, float(chosen.bound), om, self.ex.alpha,
+        return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.ex.alpha,
                          self.ex.gamma, tol if checked else None, chosen.setting, table, chosen.coefficients)
 
     def _make_builds(self, quotes, flat, tol: float, end: str, method, build) -> list[Quote]:
@@ -482,6 +479,42 @@ class Ladder:
             tried.add(name)
             self._build(name)
             quotes = self.quotes(flat, tol, end)
+
+    def _first_within(self, order, flat: np.ndarray, tol: float, end: str):
+        """The first quote, cheapest first, whose bound still holds once widened by its answer
+        (a double-precision integration near the overlap rule's sticking boundary loses relative
+        accuracy as eps falls: core.conditioning), run once more at a tolerance tightened by that
+        factor where it falls short; then (quote, eps, widened bound)."""
+        widened, failed = [], []
+        for q in order:
+            for attempt in range(2):
+                try:
+                    eps = np.asarray(q.run(flat), dtype=float)
+                except ArithmeticError as exc:
+                    # a compiled integrator that gives up (at the edge of sticking): the next rung
+                    # answers, or refuses in one line
+                    failed.append(f"{q.name}: {exc}")
+                    break
+                if not np.all(np.isfinite(eps)):
+                    raise ArithmeticError(f"method {q.name} returned non-finite eps")
+                eps = at_most_one(eps)
+                factor = q.widen(eps) if q.widen is not None else 1.0
+                bound = q.bound * factor
+                if bound <= tol:
+                    return q, eps, bound
+                widened.append((q, eps, bound))
+                tighter = [t for t in self.quotes(flat, max(TOL_FLOOR, min(tol, q.bound) / (2.0 * factor)), end)
+                           if t.name == q.name and t.run is not None and t.bound < q.bound]
+                if attempt or not tighter:
+                    break
+                q = tighter[0]
+        if not widened:
+            raise ParameterError("omega", float(flat[0]) if flat.size == 1 else "these Omegas",
+                                 "no method that reaches tol could integrate here (" + "; ".join(failed) + ")")
+        q, eps, bound = min(widened, key=lambda w: w[2])
+        raise ParameterError("tol", tol, f"eps = {float(np.min(eps)):.3g} lies near the sticking boundary of the "
+                             f"overlap rule, where the integrators' relative error grows like 1/eps: the "
+                             f"smallest bound reached here is {bound:.3g} ({q.name}); ask for a larger tol")
 
     def _building_pays(self, quotes, tol: float, n: int) -> set[str]:
         """The builds worth making: all the quoted ones when nothing else meets tol; otherwise those

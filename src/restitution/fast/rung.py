@@ -9,7 +9,10 @@ A rung (:class:`Rung`) is one way to compute eps(Omega). It declares, for a :cla
 * ``needs(req)``: the build it reads (a key of the ladder's builds, e.g. "calibration"), or None;
 * ``cost`` (seconds per point) and ``price(req)`` (expected seconds for the request);
 * ``bound(req, built)``: its relative error bound over the request and the setting that meets it;
-* ``evaluate(req, built, setting, omega)``: eps.
+* ``evaluate(req, built, setting, omega)``: eps;
+* ``conditioned``: True for the double-precision integrations, whose bound grows near the overlap
+  rule's sticking boundary (core.collision.conditioning): the quote's ``widen`` gives the factor
+  from the answer, and the chooser checks the widened bound after the evaluation.
 
 ``quote(req)`` turns these into a :class:`Quote`, the one thing the chooser
 (:mod:`restitution.fast.ladder`) compares, as scipy's ``solve_ivp`` compares nothing but picks an
@@ -24,6 +27,7 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
+from ..core.conditioning import ACCURACY_FACTOR, ACCURACY_FLOOR, conditioning
 from ..core.exponents import Exponents
 
 __all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
@@ -53,7 +57,7 @@ def integrator_rtol(tol: float) -> float:
 
 
 #: The scipy reference's validated accuracy (core.collision.collide): 10 rtol + 1e-13.
-REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR = 10.0, 1e-13
+REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR = ACCURACY_FACTOR, ACCURACY_FLOOR
 
 
 def reference_bound(rtol: float) -> float:
@@ -87,6 +91,7 @@ class Quote:
     needs_build: str | None = None   # the build it waits for (not built yet)
     run: Callable | None = None
     coefficients: dict | None = None
+    widen: Callable | None = None   # eps -> factor on ``bound`` (None: the bound holds as quoted)
 
 
 @dataclass(frozen=True)
@@ -125,6 +130,7 @@ class Rung:
     name: str = ""
     ends: tuple[str, ...] = ("force",)
     cost: float = 0.0
+    conditioned: bool = False
 
     def serves(self, req: Request) -> bool:
         return req.end in self.ends or not req.rules_differ
@@ -160,6 +166,9 @@ class Rung:
         built = req.builds.get(need) if need is not None else None
         b, setting = self.bound(req, built)
         reason = "" if math.isfinite(b) else "no finite measured error over these Omegas"
+        widen = None
+        if self.conditioned:
+            widen = lambda eps: float(np.max(conditioning(req.ex, None, req.end, eps)))  # noqa: E731
         return Quote(self.name, b, self.price(req), setting, reason,
                      run=lambda om: self.evaluate(req, built, setting, om),
-                     coefficients=self.coefficients(req, built))
+                     coefficients=self.coefficients(req, built), widen=widen)

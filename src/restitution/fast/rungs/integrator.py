@@ -18,6 +18,7 @@ def printed(x: float) -> str:
 
 class Integrator(Rung):
     name, cost = "integrator", 6e-5
+    conditioned = True
 
     def outside(self, req):
         wmin = stiff_omega_min(req.ex, None)

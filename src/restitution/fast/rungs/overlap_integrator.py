@@ -17,6 +17,7 @@ __all__ = ["OverlapIntegrator"]
 
 class OverlapIntegrator(Rung):
     name, cost = "integrator", 6e-5
+    conditioned = True
     ends = ("overlap",)
 
     def serves(self, req):

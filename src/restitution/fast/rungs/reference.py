@@ -12,6 +12,7 @@ __all__ = ["Reference"]
 
 class Reference(Rung):
     name, cost = "reference", 1e-2
+    conditioned = True
     ends = ("force", "overlap")
 
     def outside(self, req):
