@@ -446,3 +446,32 @@ def test_the_mpmath_cost_grows_at_tiny_omega_so_the_chooser_builds_instead(empty
     assert lad._building_pays(quotes, 1e-9, 1)
     at_one = next(q for q in lad.quotes(np.array([1.0]), 1e-9) if q.name == "highprec")
     assert at_one.cost < 1.0
+
+
+# ------------------------------------------------------------------------------- alpha < gamma
+@pytest.mark.slow   # the curve, scipy at Omega down to 1e-11 and mpmath: about 40 s a pair
+@pytest.mark.parametrize("alpha, gamma", [("1/2", "1"), ("1", "3/2")])
+def test_alpha_below_gamma_has_a_fast_rung_whose_bound_holds_on_held_out_points(alpha, gamma, tmp_path):
+    """Issue 23, item 3: for alpha < gamma (no closed form: the viscous limit's first correction is
+    not known) the master curve is the fast rung, with the inner expansion eps = K Omega^power below
+    its grid. Its stated bound holds at fresh log-random points: against the mpmath reference from
+    Omega = 1e-3 (below that the explicit mpmath run creeps for minutes) and against the scipy
+    reference (validated against mpmath, bound 10 rtol + 1e-13) down to 1e-11."""
+    from restitution.core.collision import collide
+    from restitution.fast.rung import reference_bound
+
+    lad = Ladder(alpha, gamma, cache_dir=str(tmp_path), stream=io.StringIO())
+    rng = np.random.default_rng([HELD_OUT_SEED_INNER, *map(ord, alpha + gamma)])
+    small = np.exp(rng.uniform(math.log(1e-11), math.log(1e-5), 2))
+    large = np.exp(rng.uniform(math.log(1e-3), math.log(1e6), 2))
+    om = np.concatenate([small, large])
+    r = lad.evaluate(om, tol=1e-9, build=True)
+    assert r.method == "master" and r.error_bound <= 1e-11
+    m = lad.master
+    ref_small = np.array([collide(alpha, gamma, float(w), rtol=1e-13).eps for w in small])
+    assert np.all(np.abs(r.eps[:2] / ref_small - 1) <= m.bound_at(small) + reference_bound(1e-13))
+    ref_large = np.array([hp(alpha, gamma, w) for w in large])
+    assert np.all(np.abs(r.eps[2:] / ref_large - 1) <= m.bound_at(large))
+
+
+HELD_OUT_SEED_INNER = 20261125

@@ -16,10 +16,10 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq, minimize_scalar
 
-from ..core.collision import OMEGA_RANGE, StickError, collide
+from ..core.collision import OMEGA_RANGE, StickError
 from ..core.errors import DerivedRangeError, ParameterError, derived_in_range, real_array, require_positive_finite
 from ..core.exponents import as_exponents
-from .contact import Contact
+from .contact import Contact, contact_eps
 
 __all__ = ["calibrate", "Calibrated"]
 
@@ -53,7 +53,7 @@ class Calibrated:
 
 def _eps_or_zero(alpha, gamma, end: str, omega: float, rtol: float) -> float:
     try:
-        return collide(alpha, gamma, omega, rtol=rtol, end=end).eps
+        return contact_eps(alpha, gamma, end, omega, rtol)
     except StickError:
         return 0.0   # the bodies never separate: the limit of eps from above
 
