@@ -96,8 +96,8 @@ tex:
 browser:
 	$(call apt,command -v chromium,chromium,chromium,tests that need it are skipped)
 
-# The Yade and LIGGGHTS engines, which tests/test_dem_yade.py and test_dem_liggghts.py run head-on,
-# with LIGGGHTS' and LAMMPS' shipped example decks, which tests/test_dem_deck.py reads.
+# The Yade and LIGGGHTS engines, which tests/library/test_dem_yade.py and test_dem_liggghts.py run head-on,
+# with LIGGGHTS' and LAMMPS' shipped example decks, which tests/library/test_dem_deck.py reads.
 dem-engines:
 	$(call apt,command -v yade,yade,Yade,the Yade engine checks are skipped)
 	$(call apt,command -v liggghts,liggghts liggghts-doc lammps-examples,LIGGGHTS,the LIGGGHTS engine and deck checks are skipped)
@@ -112,7 +112,7 @@ slurm-tools: $(STAMP)
 	fi
 
 # The pipeline through the cluster profile on a one-node SLURM cluster of this machine, started
-# and stopped around the run (as root; what tests/test_slurm.py checks). TARGET=... (default: the
+# and stopped around the run (as root; what tests/pipeline/test_slurm.py checks). TARGET=... (default: the
 # outputs); the local cluster has no accounting database, so the plugin asks squeue, and its jobs
 # take seconds, so it asks from the start (the plugin's default first wait is 40 s).
 TARGET ?= outputs

@@ -13,7 +13,7 @@ Two kinds of case:
   repeats, missing values) and random mutations of config.yaml. Never a traceback; a value that is
   out of range by construction is never answered with exit status 0; a refusal is one line.
 
-``tests/test_fuzz.py`` runs a small derandomized profile in ``make test``; ``make fuzz`` runs
+``tests/library/test_fuzz.py`` runs a small derandomized profile in ``make test``; ``make fuzz`` runs
 ``python tests/fuzzing.py``: the long profile in parallel over the cores, a table of cases,
 failures and the worst error/bound ratio per rung and rule written to results/fuzz/.
 """

@@ -9,7 +9,7 @@ import pytest
 
 from restitution.dem.settings import TYPED_E_CODES, typed_e_table
 
-README = Path(__file__).resolve().parents[1] / "README.md"
+README = Path(__file__).resolve().parents[2] / "README.md"
 
 
 def _readme_table():

@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-PKG = Path(__file__).resolve().parents[1] / "src" / "restitution"
+PKG = Path(__file__).resolve().parents[2] / "src" / "restitution"
 
 #: What each layer may import from the package (itself included).
 ALLOWED = {
