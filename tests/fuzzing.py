@@ -266,7 +266,7 @@ def value_tokens(draw, kind):
         return ([draw(st.sampled_from(["0", "1", "1.5", "-0.5", "nan"]))], True) if bad else \
             ([draw(st.sampled_from(["0.3", "0.6", "0.9"]))], False)
     if kind == "nu":
-        return ([draw(st.sampled_from(["0.5", "-1", "2", "nan"]))], True) if bad else ([draw(st.sampled_from(["0.3", "0.2"]))], False)
+        return ([draw(st.sampled_from(["0.6", "-1", "2", "nan"]))], True) if bad else ([draw(st.sampled_from(["0.3", "0.2"]))], False)
     # num / nums
     n = draw(st.integers(1, 3)) if kind == "nums" else 1
     if bad:

@@ -524,3 +524,28 @@ def test_the_overlap_limit_numbers_come_from_the_library(built):
     used = set(re.findall(r"\\(Overlap[A-Za-z]+)", (built / "paper/sections/dem.tex").read_text()
                           + (built / "paper/restitution.tex").read_text()))
     assert used and all(rf"\newcommand{{\{name}}}" in values for name in used)
+
+
+def test_the_typed_e_table_is_the_librarys_with_its_engine(built):
+    """Issue 25: the manuscript's table of the typed e against the eps it gives is the library's
+    (typed_e_table), each row naming the engine whose test runs it, and every TypedE macro the
+    section uses is written by rule typed_e."""
+    import pandas as pd
+
+    from restitution.dem.settings import TYPED_E_CODES, TYPED_E_ENGINES, typed_e_table
+
+    table = pd.read_csv(built / "results/dem/typed_e.csv")
+    assert list(table["code"]) == list(TYPED_E_CODES)
+    columns = [c for c in table.columns if c.startswith("eps_at_e_")]
+    es = [float(c[len("eps_at_e_"):]) for c in columns]
+    assert len(es) >= 5
+    computed = typed_e_table(es)
+    for _, r in table.iterrows():
+        assert r["engine"] == TYPED_E_ENGINES[r["code"]]
+        for col, lib_row in zip(columns, computed):
+            assert r[col] == pytest.approx(lib_row[r["code"]], rel=1e-12), (r["code"], col)
+    tex = (built / "results/dem/typed_e.tex").read_text()
+    assert all(f"& {r[columns[0]]:.4f} &" in tex and TYPED_E_ENGINES[r["code"]] in tex for _, r in table.iterrows())
+    values = (built / "results/dem/typed_e_values.tex").read_text()
+    used = set(re.findall(r"\\(TypedE[A-Za-z]+)", (built / "paper/sections/dem.tex").read_text()))
+    assert used and all(rf"\newcommand{{\{name}}}" in values for name in used)

@@ -147,8 +147,9 @@ def _d1(pair: Pair, normal: str, k_n: float | None, E: float | None, nu: float |
     normal = one_of("normal", normal, NORMAL_MODELS)
     if normal == "hertz/material":
         E = require_positive_finite("E", E)
-        if nu is None or not -1.0 < nu < 0.5:
-            raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5)")
+        if nu is None or not -1.0 < nu <= 0.5:
+            # 0.5, an incompressible solid (rubber, hydrogels), is one of LIGGGHTS' own tutorials
+            raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5]")
         e_star = E / (2.0 * (1.0 - nu ** 2))
         d1 = 4.0 / 3.0 * e_star * math.sqrt(pair.R) / pair.m
         return "3/2", derived_in_range("the stiffness D1", d1, {"E": E, **_pair_inputs(pair)})
@@ -208,8 +209,8 @@ LIGGGHTS_MODELS = ("hertz", "hooke")
 
 def _e_star(E: float, nu: float) -> float:
     E = require_positive_finite("E", E)
-    if nu is None or not -1.0 < nu < 0.5:
-        raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5)")
+    if nu is None or not -1.0 < nu <= 0.5:
+        raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5]")
     return E / (2.0 * (1.0 - nu ** 2))
 
 
