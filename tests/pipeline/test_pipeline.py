@@ -142,24 +142,22 @@ def test_changing_d1_reruns_what_depends_on_omega_only(built, tmp_path):
         assert untouched not in jobs
 
 
-def test_a_change_in_the_integrator_reruns_reference_rules_not_series(built, tmp_path):
+@pytest.mark.parametrize("module, reruns, untouched", [
+    # a change in the integrator reruns the reference rules, not the series
+    ("core/collision.py", {"reference_trajectories", "reference_eps_curve", "reference_accuracy", "validation"},
+     ("series", "series_table", "fig3_phase", "printed_relation")),
+    # a change in the series module reruns no integration
+    ("core/series.py", {"series", "fig1_forward", "fig2_inverse", "connection_readings", "values"},
+     ("reference_trajectories", "reference_eps_curve", "reference_accuracy", "fig3_phase")),
+])
+def test_a_change_in_a_module_reruns_only_the_rules_that_import_it(module, reruns, untouched, built, tmp_path):
     tree = copy_built(built, tmp_path / "t")
-    src = tree / "src/restitution/core/collision.py"
+    src = tree / "src/restitution" / module
     src.write_text(src.read_text() + "\n# a change\n")
     jobs = planned(tree, ALL)
-    assert {"reference_trajectories", "reference_eps_curve", "reference_accuracy", "validation"} <= set(jobs)
-    for untouched in ("series", "series_table", "fig3_phase", "printed_relation"):
-        assert untouched not in jobs
-
-
-def test_a_change_in_the_series_module_does_not_rerun_integrations(built, tmp_path):
-    tree = copy_built(built, tmp_path / "t")
-    src = tree / "src/restitution/core/series.py"
-    src.write_text(src.read_text() + "\n# a change\n")
-    jobs = planned(tree, ALL)
-    assert {"series", "fig1_forward", "fig2_inverse", "connection_readings", "values"} <= set(jobs)
-    for untouched in ("reference_trajectories", "reference_eps_curve", "reference_accuracy", "fig3_phase"):
-        assert untouched not in jobs
+    assert reruns <= set(jobs)
+    for rule in untouched:
+        assert rule not in jobs
 
 
 # ------------------------------------------------------------------------------ outputs
