@@ -81,7 +81,9 @@ define apt
 	    { DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(2) || \
 	      { DEBIAN_FRONTEND=noninteractive apt-get update -qq && \
 	        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $(2); }; \
-	    } > build/$(3)-install.log 2>&1 || echo "$(3) could not be installed (see build/$(3)-install.log): $(4)."; \
+	    } > build/$(3)-install.log 2>&1 && \
+	    { { $(1); } >/dev/null 2>&1 || echo "$(3): installed, but '$(1)' still fails (files excluded by dpkg's path-exclude?): $(4)."; } || \
+	    echo "$(3) could not be installed (see build/$(3)-install.log): $(4)."; \
 	  else \
 	    echo "$(3) not found and not root: $(4) (as root: apt-get install $(2))."; \
 	  fi; \
@@ -96,11 +98,17 @@ tex:
 browser:
 	$(call apt,command -v chromium,chromium,chromium,tests that need it are skipped)
 
-# The Yade and LIGGGHTS engines, which tests/test_dem_yade.py and test_dem_liggghts.py run head-on,
-# with LIGGGHTS' and LAMMPS' shipped example decks, which tests/test_dem_deck.py reads.
+# The Yade and LIGGGHTS engines, which tests/library/test_dem_yade.py, test_dem_liggghts.py and
+# test_dem_typed_e.py run head-on, and LIGGGHTS' and LAMMPS' shipped example decks, which
+# tests/library/test_dem_deck.py reads (a separate check: the engine can be there without its examples).
+# YADE=... LIGGGHTS=... name other commands (a missing one shows what a machine without them gets).
+YADE          ?= yade
+LIGGGHTS      ?= liggghts
+DEM_EXAMPLES  := test -d /usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public && test -d /usr/share/lammps/examples/granular
 dem-engines:
-	$(call apt,command -v yade,yade,Yade,the Yade engine checks are skipped)
-	$(call apt,command -v liggghts,liggghts liggghts-doc lammps-examples,LIGGGHTS,the LIGGGHTS engine and deck checks are skipped)
+	$(call apt,command -v $(YADE),yade,Yade,the Yade engine checks are skipped)
+	$(call apt,command -v $(LIGGGHTS),liggghts,LIGGGHTS,the LIGGGHTS engine checks are skipped)
+	$(call apt,$(DEM_EXAMPLES),liggghts-doc lammps-examples,engine-examples,the deck checks on the engines' shipped examples are skipped)
 
 # A one-node SLURM cluster's daemons (workflow/tools/slurm-local) and, as root, Snakemake's SLURM
 # executor plugin at the version constraints.txt pins: a test runs the cluster profile for real.
@@ -112,7 +120,7 @@ slurm-tools: $(STAMP)
 	fi
 
 # The pipeline through the cluster profile on a one-node SLURM cluster of this machine, started
-# and stopped around the run (as root; what tests/test_slurm.py checks). TARGET=... (default: the
+# and stopped around the run (as root; what tests/pipeline/test_slurm.py checks). TARGET=... (default: the
 # outputs); the local cluster has no accounting database, so the plugin asks squeue, and its jobs
 # take seconds, so it asks from the start (the plugin's default first wait is 40 s).
 TARGET ?= outputs

@@ -5,6 +5,10 @@ caches, matplotlib's cache) is pointed into one temporary directory made for thi
 removed at its end. Subprocesses (the CLI, make, Snakemake) inherit the same
 environment, so they are hermetic too. A test that needs a calibration bundle or a built
 pipeline builds it here, once per session (see `pipeline_tree.built_tree`).
+
+The tests of the library (physics, evaluation, DEM use, CLI) are in tests/library/, those that
+build or dry-run the pipeline, or read its outputs, in tests/pipeline/; the modules both share
+(pipeline_tree, cli_run, fuzzing) and this one conftest sit here, in tests/.
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """Coefficient of restitution for viscoelastic collisions: a rebuild and audit of S. Kim's paper.
 
 The contact law x'' + Omega x^gamma x' + x^alpha = 0 (scaled), in four layers; imports point down
-only (checked by tests/test_layers.py):
+only (checked by tests/library/test_layers.py):
 
 ====================  ===================================================================
 ``restitution.core``  the physics: exponents, materials and Omega, the exact perturbation

@@ -8,6 +8,7 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import re
 import sys
 
@@ -128,9 +129,16 @@ def _run_deck(args, out) -> None:
         if not math.isfinite(g) or g <= 0:
             raise ParameterError("g", g, "must be a finite number > 0")
     speeds = [args.g[0] * 10.0 ** k for k in (-1, -0.5, 0, 0.5, 1)] if len(args.g) == 1 else list(args.g)
-    res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density))
+    base = os.path.dirname(os.path.abspath(args.file))
+
+    def read_file(name: str) -> str:
+        # LAMMPS opens these relative to where it runs: the deck's directory, as it is normally started
+        with open(os.path.join(base, name), encoding="utf-8", errors="replace") as fh:
+            return fh.read()
+    res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file)
     for row in res["unknown_lines"]:     # never guessed: each named, one per line
-        print(f"restitution deck: line {row['line']} not understood: {row['text']}", file=sys.stderr)
+        where = f"{row['file']} line {row['line']}" if row["file"] else f"line {row['line']}"
+        print(f"restitution deck: {where} {row['why']}: {row['text']}", file=sys.stderr)
     if args.json:
         _write_json(res, out)
         return

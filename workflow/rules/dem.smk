@@ -37,6 +37,30 @@ rule dem_study:
         script_file("dem_study.py")
 
 
+# The e a user types into each code against the eps the code really gives (issue 25): the library's
+# table (restitution.dem.settings.typed_e_table), each row with the engine that confirms it.
+TYPED_E_FILES = ["results/dem/typed_e.csv", "results/dem/typed_e.tex", "results/dem/typed_e_values.tex"]
+MANUSCRIPT_INPUTS.extend(["results/dem/typed_e.tex", "results/dem/typed_e_values.tex"])
+
+
+rule typed_e:
+    """The typed-e table: the library's eps for each code and typed e, and each row's engine, the e
+    values at which the engine tests run it and the agreement they demand."""
+    input:
+        src=lib("dem.settings"),
+        code=code("typed_e.py") + ["workflow/scripts/common/latex.py"],
+    output:
+        csv=TYPED_E_FILES[0],
+        table=TYPED_E_FILES[1],
+        values=TYPED_E_FILES[2],
+    params:
+        es=[0.1, 0.3, 0.5, 0.7, 0.9, 0.99],
+    log:
+        "logs/typed_e.log",
+    script:
+        script_file("typed_e.py")
+
+
 # The overlap rule's viscous limit (issue 24): eps ~ C Omega^k for gamma <= alpha < 2 gamma + 1, the law
 # against both integrators for the variants' exponents and a few more, and the section's numbers.
 OVERLAP_FILES = [

@@ -89,7 +89,7 @@ with no extra factor. The end term adds (4/15) Omega^(-3/2).
 Contact time: tau_c = Omega^(-1/(alpha+1)) [T0 + O(delta)], T0 = ((alpha+1)/2)^(1/(alpha+1)) (2/(alpha+1))
 B(1/(alpha+1), 1/2); T0 = 3.2180655... for alpha = 3/2.
 
-Every constant is checked against the integrators in tests/test_asymptotics.py.
+Every constant is checked against the integrators in tests/library/test_asymptotics.py.
 """
 
 from __future__ import annotations
@@ -195,7 +195,7 @@ def _damped_constants(alpha: Fraction, gamma: Fraction) -> tuple[float, float, f
         ln B = ln X + int_0^1 [n/(1 - s^n) - 1/(1 - s)] ds = ln X - gamma_E - psi(1/n) - ln n,
         K0   = X^(alpha+1) int_0^1 (1 - s^alpha)/(1 - s^n) ds = X^(alpha+1) [psi((alpha+1)/n) - psi(1/n)] / n.
 
-    (tests/test_asymptotics.py checks both against the quadratures to 1e-13.)
+    (tests/library/test_asymptotics.py checks both against the quadratures to 1e-13.)
     """
     n = float(gamma) + 1.0
     a = float(alpha)

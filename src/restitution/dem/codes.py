@@ -4,7 +4,7 @@ Head-on, the overlap delta of two spheres obeys m delta'' + F_el + eta delta' = 
 mass m = m1 m2 / (m1 + m2) and radius R = R1 R2 / (R1 + R2); dividing by m gives the model.
 
 LAMMPS ``pair_style granular`` (normal model, damping model, ``limit_damping``), as the engine
-applies them (checked against LAMMPS itself in tests/test_dem_lammps.py):
+applies them (checked against LAMMPS itself in tests/library/test_dem_lammps.py):
 
 ==================  =====  ==============================  =====  ===================================
 option              alpha  D1                              gamma  D2
@@ -33,12 +33,12 @@ gives k = m (pi^2 + ln^2 e) / t_c^2, eta = -2 m ln e / t_c: alpha = 1, gamma = 0
 D2 = eta/m. Both codes let the normal force turn attractive: "overlap". MercuryDPM was not run
 here; its rows follow its documentation.
 
-LIGGGHTS ``model hooke`` (3.8, checked against the engine in tests/test_dem_liggghts.py): k_n =
+LIGGGHTS ``model hooke`` (3.8, checked against the engine in tests/library/test_dem_liggghts.py): k_n =
 (16/15) sqrt(R) E* (15 m V^2 / (16 sqrt(R) E*))^(1/5) with V the ``characteristicVelocity``, gamma_n
 = 2 beta sqrt(m k_n): alpha = 1, gamma = 0, D1 = k_n/m, D2 = 2 beta sqrt(D1). With ``limitForce
 off`` eps is e exactly at every speed; with ``on`` it is higher (the force rule on a linear dashpot).
 
-Yade (2023.02a, checked against the engine in tests/test_dem_yade.py), both particles of one
+Yade (2023.02a, checked against the engine in tests/library/test_dem_yade.py), both particles of one
 material; Yade's laws never let the normal force turn attractive, so the end rule is "force":
 
 * ``ViscElMat(tc, en)``: k_n = m (pi^2 + ln^2 en) / tc^2, c_n = -2 m ln en / tc with the pair's
@@ -147,8 +147,9 @@ def _d1(pair: Pair, normal: str, k_n: float | None, E: float | None, nu: float |
     normal = one_of("normal", normal, NORMAL_MODELS)
     if normal == "hertz/material":
         E = require_positive_finite("E", E)
-        if nu is None or not -1.0 < nu < 0.5:
-            raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5)")
+        if nu is None or not -1.0 < nu <= 0.5:
+            # 0.5, an incompressible solid (rubber, hydrogels), is one of LIGGGHTS' own tutorials
+            raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5]")
         e_star = E / (2.0 * (1.0 - nu ** 2))
         d1 = 4.0 / 3.0 * e_star * math.sqrt(pair.R) / pair.m
         return "3/2", derived_in_range("the stiffness D1", d1, {"E": E, **_pair_inputs(pair)})
@@ -208,8 +209,8 @@ LIGGGHTS_MODELS = ("hertz", "hooke")
 
 def _e_star(E: float, nu: float) -> float:
     E = require_positive_finite("E", E)
-    if nu is None or not -1.0 < nu < 0.5:
-        raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5)")
+    if nu is None or not -1.0 < nu <= 0.5:
+        raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5]")
     return E / (2.0 * (1.0 - nu ** 2))
 
 

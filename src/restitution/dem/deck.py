@@ -10,6 +10,15 @@ than those two), a type without radius or density, or a type pair without coeffi
 with one line (DeckError, exit status 2 in the CLI).
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
+
+Files the deck names (``include``, ``read_data``) are read through a ``read_file`` callable (the CLI
+resolves their names against the deck's directory, where LAMMPS is normally started); a data file's
+Atoms section gives a type its radius and density where every atom of that type has the same. A
+type pair no ``pair_coeff`` covers is mixed as LAMMPS mixes it (pair_style granular: the same
+models for both types, geometric means, Young's moduli combined as 1/E* = sum (1 - nu^2)/E,
+limit_damping if either type has it). Variables: index, loop, string, world/universe (their first
+value) and equal-style or ``$(...)`` arithmetic of numbers, PI, v_ references and a few functions;
+any other form is named on its line, and a number needed from it ends the audit in one line.
 """
 
 from __future__ import annotations
@@ -54,6 +63,13 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "wall/gran", "wall/gran/reg
 _LAMMPS_TANGENTIAL = {"linear_nohistory": 2, "linear_history": 3, "mindlin": 3, "mindlin_rescale": 3,
                       "mindlin/force": 3, "mindlin_rescale/force": 3}
 _LAMMPS_NORMAL_ARGS = {"hooke": 2, "hertz": 2, "hertz/material": 3}
+#: Data-file sections with no bearing on a head-on contact
+_DATA_IRRELEVANT = {"Velocities", "Bonds", "Angles", "Dihedrals", "Impropers", "Bond Coeffs", "Angle Coeffs",
+                    "Dihedral Coeffs", "Improper Coeffs"}
+#: Atom styles whose data-file Atoms lines are: atom-ID atom-type diameter density x y z [image flags]
+_SPHERE_STYLES = ("sphere", "granular")
+#: include files nested deeper than this are a loop
+_MAX_INCLUDE_DEPTH = 16
 
 
 @dataclass
@@ -67,22 +83,51 @@ class Deck:
     prop_fix: dict = field(default_factory=dict)  # LIGGGHTS property/global name -> "fix ID group"
     model: str = ""                               # LIGGGHTS normal model
     limit_force: bool = False
-    style_line: tuple = ()                        # (line number, text) of pair_style
-    unknown: list = field(default_factory=list)   # (line number, text) not understood
+    style_line: tuple = ()                        # ((file, line number), text) of pair_style
+    unknown: list = field(default_factory=list)   # (file or None, line number, text, why) not understood
     ignored: list = field(default_factory=list)   # what the audit passed over on purpose
+    atom_style: str = ""
+    missing: dict = field(default_factory=dict)   # type -> why a data file gives it no single radius/density
 
 
-_EXPR = re.compile(r"^[0-9eE.+\-*/^() \t]*$")
+_ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
+#: LAMMPS' math functions the reader evaluates (log is base 10 there, ln natural)
+_FUNCTIONS = {"sqrt": math.sqrt, "exp": math.exp, "ln": math.log, "log": math.log10, "abs": abs, "sin": math.sin,
+              "cos": math.cos, "tan": math.tan, "floor": math.floor, "ceil": math.ceil}
+_NAME = re.compile(r"[A-Za-z_]\w*")
 
 
-def _evaluate(expr: str):
-    """An equal-style variable's value when it is plain arithmetic of numbers and PI, else None."""
-    text = expr.replace("PI", repr(math.pi))
-    if not _EXPR.match(text) or re.search(r"[eE][^0-9+\-]", text):
+def _evaluate(expr: str, variables: dict | None = None):
+    """An equal-style expression's value when it is arithmetic of numbers, PI, v_name references to
+    variables with a numeric value and _FUNCTIONS; else None (never a guess)."""
+    variables = variables or {}
+    expr = expr.strip().strip("\"'")
+
+    def name(m):
+        word = m.group(0)
+        if word == "PI":
+            return repr(math.pi)
+        if word in _FUNCTIONS:
+            return word
+        if word.startswith("v_"):
+            try:
+                return repr(float(variables.get(word[2:])))
+            except (TypeError, ValueError):
+                return "@"             # unknown or not a number: fails the check below
+        if re.fullmatch(r"[eE]\d*", word):
+            return word                # the exponent of a number such as 1e7 (checked by eval)
+        return "@"
+    text = _NAME.sub(name, expr)
+    bare = _NAME.sub("", text.replace(repr(math.pi), "0"))
+    if "@" in text or not _ARITHMETIC.match(bare):
+        return None
+    # LAMMPS binds unary minus tighter than ^ (-2^2 = 4), Python the other way: not guessed
+    if "^" in text and re.search(r"(^|[(*/^+\-,])\s*-", text):
         return None
     try:
-        return float(eval(text.replace("^", "**"), {"__builtins__": {}}, {}))   # noqa: S307 - checked above
-    except (SyntaxError, ZeroDivisionError, TypeError, OverflowError):
+        value = eval(text.replace("^", "**"), {"__builtins__": {}}, dict(_FUNCTIONS))   # noqa: S307 - checked above
+        return float(value)
+    except (SyntaxError, ZeroDivisionError, TypeError, OverflowError, ValueError, NameError):
         return None
 
 
@@ -122,53 +167,66 @@ def _number(token: str, where: str, text: str) -> float:
     try:
         return float(token)
     except ValueError:
+        m = re.search(r"<unevaluated-variable-(\w+)>", token)
+        if m:
+            raise DeckError(where, text, f"needs variable {m.group(1)}, whose value the reader does not evaluate "
+                                         "(a style or an expression it does not evaluate, or never defined)") from None
+        if "<unevaluated-expression>" in token:
+            raise DeckError(where, text, "needs a $(...) expression the reader does not evaluate") from None
         raise DeckError(where, text, f"{token!r} is not a number the reader can evaluate") from None
 
 
-def read_deck(text: str, radius: dict | None = None, density: dict | None = None) -> Deck:
-    """Parse a deck; ``radius``/``density`` ({type: value}) override or complete what it states."""
-    deck, variables = Deck(), {}
-    for n, line in _logical_lines(text):
-        where = f"line {n}"
+def _where(loc) -> str:
+    source, n = loc
+    return f"line {n}" if source is None else f"{source} line {n}"
 
-        def subst(m):
-            name = m.group(1) or m.group(2)
-            if variables.get(name) is None:
-                # left visible: an irrelevant command may use it; a value the audit needs fails in _number
-                return f"<unevaluated-variable-{name}>"
-            value = variables[name]
-            return repr(value) if isinstance(value, float) else str(value)
-        line = re.sub(r"\$\{(\w+)\}|\$(\w)", subst, line)
-        words = line.split()
-        cmd = words[0]
-        if cmd == "variable" and len(words) >= 4:
-            style = words[2]
-            if style == "equal":
-                variables[words[1]] = _evaluate(" ".join(words[3:]).strip("\"'"))
-            elif style == "index" and words[1] in variables:
-                pass          # LAMMPS keeps the first definition of an index variable
-            elif style in ("index", "string", "world", "universe", "uloop", "loop"):
-                variables[words[1]] = words[3].strip("\"'")
-            else:
-                variables[words[1]] = None
-            continue
-        if cmd == "create_box":
-            deck.ntypes = int(_number(words[1], where, line))
-        elif cmd in ("read_data", "read_restart", "include"):
-            raise DeckError(where, line, f"{cmd}: the types, sizes or coefficients come from another file, which "
-                                         "the reader does not follow")
-        elif cmd == "pair_style":
-            _pair_style(deck, words, where, line, n)
-        elif cmd == "pair_coeff":
-            _pair_coeff(deck, words, where, line, n)
-        elif cmd == "set" and len(words) >= 3:
-            _set(deck, words, where, line, n)
-        elif cmd == "fix" and len(words) >= 4:
-            _fix(deck, words, where, line, n)
-        elif cmd in _IRRELEVANT:
-            continue
-        else:
-            deck.unknown.append((n, line))
+
+_REFERENCE = re.compile(r"\$\{(\w+)\}|\$\(((?:[^()]|\([^()]*\))*)\)|\$(\w)")
+
+
+def _substitute(line: str, variables: dict) -> str:
+    """LAMMPS' substitution of $x, ${name} and the immediate $(expression) in one line."""
+    def subst(m):
+        if m.group(2) is not None:
+            value = _evaluate(m.group(2).split(":")[0], variables)    # $(expr:format): the value
+            return "<unevaluated-expression>" if value is None else repr(value)
+        name = m.group(1) or m.group(3)
+        if variables.get(name) is None:
+            # left visible: an irrelevant command may use it; a value the audit needs fails in _number
+            return f"<unevaluated-variable-{name}>"
+        value = variables[name]
+        return repr(value) if isinstance(value, float) else str(value)
+    return _REFERENCE.sub(subst, line)
+
+
+def _variable(deck: Deck, variables: dict, words: list, loc, line: str) -> None:
+    """The value a variable has where the deck uses it first, or None, naming its line."""
+    name, style = words[1], words[2] if len(words) > 2 else ""
+    args = [w.strip("\"'") for w in words[3:]]
+    if style == "delete":
+        variables.pop(name, None)
+        return
+    if style in ("index", "loop", "world", "universe", "uloop") and name in variables:
+        return            # LAMMPS ignores a second definition of these (the command line's -var wins)
+    value = None
+    if style in ("index", "string", "world", "universe") and args:
+        value = args[0]
+    elif style in ("loop", "uloop") and args:
+        # loop N [pad]: 1 first; loop N1 N2 [pad]: N1
+        value = args[0] if len(args) >= 2 and args[1] != "pad" else "1"
+    elif style == "equal" and args:
+        value = _evaluate(" ".join(args), variables)
+    variables[name] = value
+    if value is None:
+        deck.unknown.append((*loc, line, "variable not evaluated"))
+
+
+def read_deck(text: str, radius: dict | None = None, density: dict | None = None, read_file=None) -> Deck:
+    """Parse a deck; ``radius``/``density`` ({type: value}) override or complete what it states;
+    ``read_file(name)`` returns the text of a file the deck names (include, read_data), or raises
+    OSError (None: such a deck is refused)."""
+    deck, variables = Deck(), {}
+    _read(deck, variables, text, None, read_file, 0)
     for t, r in (radius or {}).items():
         deck.radius[int(t)] = r
     for t, d in (density or {}).items():
@@ -179,9 +237,123 @@ def read_deck(text: str, radius: dict | None = None, density: dict | None = None
     return deck
 
 
-def _pair_style(deck, words, where, line, n):
+def _fetch(read_file, name: str, where: str, line: str) -> str:
+    if read_file is None:
+        raise DeckError(where, line, "the deck names another file, and it was given as text: give it as a file")
+    try:
+        return read_file(name)
+    except OSError as exc:
+        raise DeckError(where, line, f"{name} cannot be read ({exc.strerror or exc})") from None
+
+
+def _read(deck: Deck, variables: dict, text: str, source, read_file, depth: int) -> None:
+    for n, line in _logical_lines(text):
+        loc = (source, n)
+        where = _where(loc)
+        line = _substitute(line, variables)
+        words = line.split()
+        cmd = words[0]
+        if cmd == "variable" and len(words) >= 3:
+            _variable(deck, variables, words, loc, line)
+        elif cmd == "create_box":
+            deck.ntypes = int(_number(words[1], where, line))
+        elif cmd == "include" and len(words) == 2:
+            if depth >= _MAX_INCLUDE_DEPTH:
+                raise DeckError(where, line, f"includes nested deeper than {_MAX_INCLUDE_DEPTH}: a loop")
+            _read(deck, variables, _fetch(read_file, words[1], where, line), words[1], read_file, depth + 1)
+        elif cmd == "read_data" and len(words) >= 2:
+            _read_data(deck, words, where, line, read_file)
+        elif cmd == "read_restart":
+            raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
+                                         "file, which the reader does not read")
+        elif cmd == "atom_style" and len(words) >= 2:
+            deck.atom_style = " ".join(words[1:])
+        elif cmd == "pair_style":
+            _pair_style(deck, words, where, line, loc)
+        elif cmd == "pair_coeff":
+            _pair_coeff(deck, words, where, line, loc)
+        elif cmd == "set" and len(words) >= 3:
+            _set(deck, words, where, line, loc)
+        elif cmd == "fix" and len(words) >= 4:
+            _fix(deck, words, where, line, loc)
+        elif cmd in _IRRELEVANT:
+            continue
+        else:
+            deck.unknown.append((*loc, line, "not understood"))
+
+
+def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> None:
+    """read_data FILE [nocoeff] [group ID]: the number of types, each type's radius and density
+    where all its atoms share them, and a data file's Pair Coeffs / PairIJ Coeffs."""
+    name, opts, coeffs = words[1], words[2:], True
+    k = 0
+    while k < len(opts):
+        if opts[k] == "nocoeff":
+            coeffs, k = False, k + 1
+        elif opts[k] == "group" and k + 1 < len(opts):
+            k += 2
+        else:
+            raise DeckError(where, line, f"read_data option {opts[k]} is not mapped (it may add, shift or offset "
+                                         "types)")
+    text = _fetch(read_file, name, where, line)
+    section, hint, per_type = None, "", {}
+    for n, raw in enumerate(text.splitlines(), 1):
+        if n == 1:
+            continue                                   # the title line
+        body, _, comment = raw.partition("#")
+        body = body.strip()
+        if not body:
+            continue
+        here = f"{name} line {n}"
+        if section is None and (m := re.fullmatch(r"(\d+)\s+atom\s+types", body)):
+            deck.ntypes = int(m.group(1))
+            continue
+        if body[0].isalpha():                          # a section's name; data lines start with a number
+            section, hint = body, comment.strip()
+            if section in ("Pair Coeffs", "PairIJ Coeffs") and coeffs and deck.code != "LAMMPS":
+                raise DeckError(here, body, "a data file's pair coefficients before pair_style granular")
+            if section not in {"Atoms", "Pair Coeffs", "PairIJ Coeffs"} | _DATA_IRRELEVANT:
+                deck.unknown.append((name, n, raw.strip(), "data-file section not read"))
+            continue
+        if section is None:
+            continue                                   # header: atoms, box bounds, other counts
+        cols = body.split()
+        if section == "Atoms":
+            style = hint or deck.atom_style
+            if style not in _SPHERE_STYLES:
+                raise DeckError(here, f"Atoms # {style}", "the reader reads the Atoms section of atom_style "
+                                                          "sphere or granular (id type diameter density x y z)")
+            if len(cols) < 7:
+                raise DeckError(here, body, "an Atoms line of atom_style sphere has at least 7 columns")
+            t = int(_number(cols[1], here, body))
+            d, rho = _number(cols[2], here, body), _number(cols[3], here, body)
+            if d <= 0:
+                raise DeckError(here, body, "diameter 0 makes a point particle, which has no contact radius")
+            per_type.setdefault(t, (set(), set()))
+            per_type[t][0].add(d)
+            per_type[t][1].add(rho)
+        elif section in ("Pair Coeffs", "PairIJ Coeffs") and coeffs:
+            i, j = (cols[0], cols[0]) if section == "Pair Coeffs" else (cols[0], cols[1])
+            rest = cols[1:] if section == "Pair Coeffs" else cols[2:]
+            _pair_coeff(deck, ["pair_coeff", i, j, *rest], here, body, (name, n))
+    for t in range(1, deck.ntypes + 1):
+        if t not in per_type:
+            deck.missing[t] = f"{name} has no atom of type {t}"
+            continue
+        diameters, densities = per_type[t]
+        if len(diameters) == 1:
+            deck.radius[t] = 0.5 * diameters.pop()
+        else:
+            deck.missing[t] = f"{name} gives type {t} diameters from {min(diameters):g} to {max(diameters):g}"
+        if len(densities) == 1:
+            deck.density[t] = densities.pop()
+        else:
+            deck.missing[t] = f"{name} gives type {t} densities from {min(densities):g} to {max(densities):g}"
+
+
+def _pair_style(deck, words, where, line, loc):
     style = words[1]
-    deck.style_line = (n, line)
+    deck.style_line = (loc, line)
     if style == "granular":
         deck.code = "LAMMPS"
         return
@@ -210,23 +382,23 @@ def _pair_style(deck, words, where, line, n):
         raise DeckError(where, line, "pair_style gran without model hertz|hooke")
 
 
-def _pair_coeff(deck, words, where, line, n):
+def _pair_coeff(deck, words, where, line, loc):
     if deck.code == "LIGGGHTS":
         return                       # `pair_coeff * *`: the coefficients come from property/global
     if deck.code != "LAMMPS":
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     for i in _types(words[1], deck.ntypes, where, line):
         for j in _types(words[2], deck.ntypes, where, line):
-            deck.coeffs[(min(i, j), max(i, j))] = (n, words)
+            deck.coeffs[(min(i, j), max(i, j))] = (loc, words)
 
 
-def _set(deck, words, where, line, n):
+def _set(deck, words, where, line, loc):
     if words[1] == "type":
         types = list(_types(words[2], deck.ntypes, where, line))
     elif words[1] == "group" and words[2] == "all":
         types = list(range(1, deck.ntypes + 1))
     else:
-        deck.unknown.append((n, line))
+        deck.unknown.append((*loc, line, "not understood"))
         return
     rest = words[3:]
     for k in range(0, len(rest) - 1, 2):
@@ -238,14 +410,14 @@ def _set(deck, words, where, line, n):
                 deck.density[t] = _number(rest[k + 1], where, line)
         else:
             # mass, density/disc, velocities, ...: how they combine with a diameter is not guessed
-            deck.unknown.append((n, line))
+            deck.unknown.append((*loc, line, "not understood"))
             return
 
 
-def _fix(deck, words, where, line, n):
+def _fix(deck, words, where, line, loc):
     style = words[3]
     if style == "property/global" and len(words) >= 6:
-        deck.props[words[4]] = (n, words[5:])
+        deck.props[words[4]] = (loc, words[5:])
         deck.prop_fix[words[4]] = f"fix {words[1]} {words[2]}"     # the exact line keeps the deck's fix ID
     elif style == "particletemplate/sphere":
         tokens, t = words[5:], None
@@ -270,59 +442,125 @@ def _fix(deck, words, where, line, n):
     elif style in _IRRELEVANT_FIXES:
         return
     else:
-        deck.unknown.append((n, line))
+        deck.unknown.append((*loc, line, "not understood"))
 
 
 def _pair(deck: Deck, i: int, j: int) -> Pair:
     for t in (i, j):
+        why = f" ({deck.missing[t]})" if t in deck.missing else ""
         if t not in deck.radius:
-            raise DeckError("radius", f"type {t}", "the deck gives no single radius for this type: give "
+            raise DeckError("radius", f"type {t}", f"the deck gives no single radius for this type{why}: give "
                                                    f"--radius {t}=R")
         if t not in deck.density:
-            raise DeckError("density", f"type {t}", "the deck gives no single density for this type: give "
+            raise DeckError("density", f"type {t}", f"the deck gives no single density for this type{why}: give "
                                                     f"--density {t}=RHO")
     return Pair.spheres(deck.radius[i], deck.radius[j], deck.density[i], deck.density[j])
 
 
-def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
-    if (i, j) not in deck.coeffs:
-        raise DeckError("pair_coeff", f"types {i} {j}", "no pair_coeff line covers this type pair (LAMMPS "
-                                                         "would mix it; the reader does not)")
-    n, words = deck.coeffs[(i, j)]
-    where, text = f"line {n}", " ".join(words)
-    normal = words[3]
+@dataclass
+class _Coeff:
+    """One pair_coeff line, as far as a head-on contact is concerned."""
+    normal: str
+    args: list          # the normal model's numbers: k, damp (hooke, hertz); E, damp, nu (hertz/material)
+    damping: str
+    limit: bool
+    others: list        # the tokens after the normal model's numbers (tangential, rolling, ...)
+    models: tuple       # the sub-model names, which LAMMPS requires equal before it mixes two types
+
+
+def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
+    normal = words[3] if len(words) > 3 else None
     if normal not in _LAMMPS_NORMAL_ARGS:
         raise DeckError(where, text, f"normal model {normal} is not mapped (hooke, hertz, hertz/material are)")
-    args = [_number(a, where, text) for a in words[4:4 + _LAMMPS_NORMAL_ARGS[normal]]]
-    damping, limit, k = "viscoelastic", False, 4 + _LAMMPS_NORMAL_ARGS[normal]
+    nargs = _LAMMPS_NORMAL_ARGS[normal]
+    args = [_number(a, where, text) for a in words[4:4 + nargs]]
+    damping, limit, k = "viscoelastic", False, 4 + nargs
+    models = {"tangential": None, "rolling": None, "twisting": None}
     while k < len(words):
         key = words[k]
+        nxt = words[k + 1] if k + 1 < len(words) else None
         if key == "damping":
-            damping = words[k + 1]
+            damping = nxt
             k += 2
         elif key == "limit_damping":
             limit = True
             k += 1
-        elif key == "tangential" and words[k + 1] in _LAMMPS_TANGENTIAL:
-            deck.ignored.append(f"tangential {words[k + 1]}")
-            k += 2 + _LAMMPS_TANGENTIAL[words[k + 1]]
-        elif key == "rolling" and words[k + 1] == "sds":
+        elif key == "tangential" and nxt in _LAMMPS_TANGENTIAL:
+            deck.ignored.append(f"tangential {nxt}")
+            models["tangential"] = nxt
+            k += 2 + _LAMMPS_TANGENTIAL[nxt]
+        elif key == "rolling" and nxt == "sds":
             deck.ignored.append("rolling sds")
+            models["rolling"] = nxt
             k += 5
-        elif key == "twisting" and words[k + 1] in ("marshall", "sds"):
-            deck.ignored.append(f"twisting {words[k + 1]}")
-            k += 2 if words[k + 1] == "marshall" else 5
+        elif key == "twisting" and nxt in ("marshall", "sds"):
+            deck.ignored.append(f"twisting {nxt}")
+            models["twisting"] = nxt
+            k += 2 if nxt == "marshall" else 5
         else:
             raise DeckError(where, text, f"keyword {key} is not mapped")
     if damping not in ("velocity", "mass_velocity", "viscoelastic", "tsuji"):
         raise DeckError(where, text, f"damping {damping} is not mapped")
-    stiffness = ({"E": args[0], "nu": args[2]} if normal == "hertz/material" else {"k_n": args[0]})
+    return _Coeff(normal, args, damping, limit, words[4 + nargs:], (normal, damping, *models.values()))
+
+
+def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
+    """LAMMPS' mixing of two types' coefficients (pair_style granular, init_one): geometric means,
+    for hertz/material the effective modulus 1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j, used as
+    k = (4/3) E* (so as hertz with that k), and limit_damping if either has it. Returns the mixed
+    coefficients and the stiffness keywords of codes.lammps_contact."""
+    def geom(x, y):
+        return math.sqrt(x * y)
+    if a.normal == "hertz/material":
+        (E1, d1, nu1), (E2, d2, nu2) = a.args, b.args
+        e_star = 1.0 / ((1.0 - nu1 ** 2) / E1 + (1.0 - nu2 ** 2) / E2)
+        nu = geom(nu1, nu2)
+        # the E that an explicit hertz/material line with the mixed nu needs for the same E*
+        args = [2.0 * (1.0 - nu ** 2) * e_star, geom(d1, d2), nu]
+        stiffness = {"normal": "hertz", "k_n": 4.0 / 3.0 * e_star}
+    else:
+        args = [geom(x, y) for x, y in zip(a.args, b.args)]
+        stiffness = {"normal": a.normal, "k_n": args[0]}
+    others = []
+    for x, y in zip(a.others, b.others):
+        try:
+            others.append(x if x == y else f"{geom(float(x), float(y)):.10g}")
+        except ValueError:
+            others = None       # a NULL against a number: no single line to write
+            break
+    mixed = _Coeff(a.normal, args, a.damping, a.limit or b.limit, others, a.models)
+    return mixed, stiffness
+
+
+def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
+    if (i, j) in deck.coeffs:
+        loc, words = deck.coeffs[(i, j)]
+        where, text = _where(loc), " ".join(words)
+        c = _coeff(deck, words, where, text)
+        stiffness = ({"normal": c.normal, "E": c.args[0], "nu": c.args[2]} if c.normal == "hertz/material"
+                     else {"normal": c.normal, "k_n": c.args[0]})
+        mixed_from = None
+    else:
+        if (i, i) not in deck.coeffs or (j, j) not in deck.coeffs:
+            raise DeckError("pair_coeff", f"types {i} {j}", "no pair_coeff line covers this type pair, nor both "
+                                                             f"{i} {i} and {j} {j}, from which LAMMPS would mix it")
+        (loc, wi), (loc_j, wj) = deck.coeffs[(i, i)], deck.coeffs[(j, j)]
+        ci = _coeff(deck, wi, _where(loc), " ".join(wi))
+        cj = _coeff(deck, wj, _where(loc_j), " ".join(wj))
+        if ci.models != cj.models:
+            raise DeckError("pair_coeff", f"types {i} {j}", f"types {i} and {j} use different models "
+                                                             f"({' '.join(filter(None, ci.models))} against "
+                                                             f"{' '.join(filter(None, cj.models))}): LAMMPS "
+                                                             "cannot mix them and stops; give pair_coeff "
+                                                             f"{i} {j}")
+        c, stiffness = _mixed(ci, cj)
+        mixed_from = f"mixed from {_where(loc)} and {_where(loc_j)}"
     pair = _pair(deck, i, j)
-    setting = {"normal": normal, "damping": damping, "eta_n0": args[1], "limit_damping": limit, **stiffness}
+    setting = {**stiffness, "damping": c.damping, "eta_n0": c.args[1], "limit_damping": c.limit}
     contact = lammps_contact(pair, **setting)
-    typed = args[1] if damping == "tsuji" else None
+    typed = c.args[1] if c.damping == "tsuji" else None
     exact = None
-    if typed is not None:
+    if typed is not None and c.others is not None:
         try:
             cal = calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=typed, g=speeds[len(speeds) // 2],
                             end=contact.end)
@@ -330,10 +568,14 @@ def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
         except ParameterError:
             e_new = None     # no tsuji e gives that eps under this end rule: no exact line
         if e_new is not None:
-            # the pair's own line (a wildcard line names every pair it covers), with tsuji's e replaced
-            exact = " ".join(["pair_coeff", str(i), str(j)] + words[3:5] + [f"{e_new:.10g}"] + words[6:])
-    return {"types": [i, j], "model": f"LAMMPS {normal}, damping {damping}", "typed_e": typed,
-            "end": contact.end, "contact": contact, "exact_line": exact, "line": n}
+            # the pair's own line (a wildcard or mixed pair gets one naming it), tsuji's e replaced
+            numbers = [f"{x:.10g}" for x in c.args]
+            numbers[1] = f"{e_new:.10g}"
+            limit = ["limit_damping"] if c.limit and "limit_damping" not in c.others else []
+            exact = " ".join(["pair_coeff", str(i), str(j), c.normal, *numbers, *c.others, *limit])
+    model = f"LAMMPS {c.normal}, damping {c.damping}" + (f" ({mixed_from})" if mixed_from else "")
+    return {"types": [i, j], "model": model, "typed_e": typed, "end": contact.end, "contact": contact,
+            "exact_line": exact, "line": loc[1], "file": loc[0]}
 
 
 def _prop(deck: Deck, name: str, required: bool = True):
@@ -345,25 +587,30 @@ def _prop(deck: Deck, name: str, required: bool = True):
 
 
 def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
+    # LIGGGHTS itself stops unless each list has exactly one value per type (per type pair, symmetric)
     def per_type(name):
-        n, vals = _prop(deck, name)
-        if vals[0] != "peratomtype" or len(vals) < 1 + deck.ntypes:
-            raise DeckError(f"line {n}", " ".join(vals), f"{name} needs peratomtype and one value per type")
-        return [_number(v, f"line {n}", name) for v in vals[1:1 + deck.ntypes]]
+        loc, vals = _prop(deck, name)
+        if vals[0] != "peratomtype" or len(vals) != 1 + deck.ntypes:
+            raise DeckError(_where(loc), " ".join(vals), f"{name} needs peratomtype and one value for each of the "
+                                                          f"{deck.ntypes} types")
+        return [_number(v, _where(loc), name) for v in vals[1:]]
 
     E, nu = per_type("youngsModulus"), per_type("poissonsRatio")
-    n, vals = _prop(deck, "coefficientRestitution")
-    if vals[0] != "peratomtypepair" or len(vals) < 2 + int(vals[1]) ** 2:
-        raise DeckError(f"line {n}", " ".join(vals), "coefficientRestitution needs peratomtypepair N and N*N values")
-    m = int(vals[1])
-    matrix = [_number(v, f"line {n}", "coefficientRestitution") for v in vals[2:2 + m * m]]
-    if max(i, j) > m:
-        raise DeckError(f"line {n}", " ".join(vals), f"no coefficientRestitution for types {i} {j}")
+    loc, vals = _prop(deck, "coefficientRestitution")
+    where = _where(loc)
+    m = deck.ntypes
+    if vals[0] != "peratomtypepair" or len(vals) < 2 or vals[1] != str(m) or len(vals) != 2 + m * m:
+        raise DeckError(where, " ".join(vals), f"coefficientRestitution needs peratomtypepair {m} and {m}x{m} "
+                                               "values, one per type pair")
+    matrix = [_number(v, where, "coefficientRestitution") for v in vals[2:]]
+    if any(matrix[(a - 1) * m + b - 1] != matrix[(b - 1) * m + a - 1] for a in range(1, m + 1)
+           for b in range(a + 1, m + 1)):
+        raise DeckError(where, " ".join(vals), "the coefficientRestitution matrix is not symmetric")
     e = matrix[(i - 1) * m + (j - 1)]
     extra = {}
     if deck.model == "hooke":
-        nv, v = _prop(deck, "characteristicVelocity")
-        extra["characteristic_velocity"] = _number(v[-1], f"line {nv}", "characteristicVelocity")
+        lv, v = _prop(deck, "characteristicVelocity")
+        extra["characteristic_velocity"] = _number(v[-1], _where(lv), "characteristicVelocity")
     pair = _pair(deck, i, j)
     kw = {"model": deck.model, "limit_force": deck.limit_force, **extra}
     contact = liggghts_contact(pair, E=E[i - 1], nu=nu[i - 1], E2=E[j - 1], nu2=nu[j - 1], e=e, **kw)
@@ -380,7 +627,8 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
         head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution peratomtypepair {m}"
         exact = head + " " + " ".join(f"{x:.10g}" for x in new)
     return {"types": [i, j], "model": f"LIGGGHTS {deck.model}, limitForce {'on' if deck.limit_force else 'off'}",
-            "typed_e": e, "end": contact.end, "contact": contact, "exact_line": exact, "line": n}
+            "typed_e": e, "end": contact.end, "contact": contact, "exact_line": exact, "line": loc[1],
+            "file": loc[0]}
 
 
 def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
@@ -391,16 +639,17 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
         return 0.0, True
 
 
-def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None) -> dict:
+def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None) -> dict:
     """{"code", "pairs": [...], "unknown_lines": [...], "ignored": [...]}: for every type pair the eps
     the deck really gives at ``speeds`` (relative accuracy 1e-10), beside the e typed (or None)
-    and the line that would give that e exactly."""
+    and the line that would give that e exactly; read_file as in read_deck."""
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
-    deck = read_deck(text, radius, density)
+    deck = read_deck(text, radius, density, read_file)
     if deck.ntypes <= 0:
-        raise DeckError("create_box", None, "the deck has no create_box: the number of types is unknown")
+        raise DeckError("create_box", None, "the deck has no create_box or read_data: the number of types is "
+                                            "unknown")
     pairs = []
     for i in range(1, deck.ntypes + 1):
         for j in range(i, deck.ntypes + 1):
@@ -410,5 +659,6 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps],
                        **{k: v for k, v in contact.as_dict().items() if k != "end"})
             pairs.append(row)
-    return {"code": deck.code, "pairs": pairs, "unknown_lines": [{"line": n, "text": t} for n, t in deck.unknown],
+    return {"code": deck.code, "pairs": pairs, "unknown_lines": [{"file": f, "line": n, "text": t, "why": why}
+                                                        for f, n, t, why in deck.unknown],
             "ignored": sorted(set(deck.ignored))}

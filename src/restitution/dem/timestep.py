@@ -2,7 +2,7 @@
 
 DEM codes (LAMMPS' fix nve/sphere, LIGGGHTS, MercuryDPM) advance contacts with velocity Verlet, the
 damping force evaluated with the half-step velocity. That makes eps first order in dt (measured
-below, and against LAMMPS in tests/test_dem_lammps.py): eps(dt) = eps + C dt / t_c + O(dt^2). The
+below, and against LAMMPS in tests/library/test_dem_lammps.py): eps(dt) = eps + C dt / t_c + O(dt^2). The
 study runs the same scheme on the contact at a few steps per contact, fits C, and recommends
 dt = t_c / N with N = C / tol (at least 10): the step that keeps eps within a relative ``tol``.
 """

@@ -40,7 +40,7 @@ DEFAULT_TOL = 1e-9
 TOL_FLOOR = 2.3e-16
 
 #: Validated accuracy of the compiled integrator: |error| <= FACTOR * rtol + FLOOR (relative).
-#: Measured against the mpmath reference in tests/test_epsilon.py and the benchmark (observed:
+#: Measured against the mpmath reference in tests/library/test_epsilon.py and the benchmark (observed:
 #: <= 1.6 rtol for rtol >= 1e-12 and <= 6e-15 at rtol = 1e-14 over Omega 1e-8..1e12).
 INTEGRATOR_BOUND_FACTOR = 10.0
 INTEGRATOR_BOUND_FLOOR = 5e-14

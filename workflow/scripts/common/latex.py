@@ -56,6 +56,9 @@ def esc(text: str) -> str:
 
 _GREEK = {"Omega": r"\Omega", "tau": r"\tau", "Delta": r"\Delta", "eps": r"\varepsilon",
           "alpha": r"\alpha", "gamma": r"\gamma", "delta": r"\delta", "pi": r"\pi", "xi": r"\xi"}
+#: Tokens that stand for one sign, as the named group that matched them.
+_SIGNS = {"pm": r"\pm", "arrow": r"\to", "le": r"\le", "ge": r"\ge", "lt": "<", "gt": ">", "bar": "|",
+          "approx": r"\approx", "sim": r"\sim"}
 _SUB = r"(?:_(?:[0-9]+|[A-Za-z]+)|[0-9](?![0-9.]))"
 _TOKEN = re.compile(
     r"(?P<graphics>\\includegraphics)"
@@ -141,26 +144,8 @@ def math_text(text: str) -> str:
             out.append(_math(f"^{{{_inner(arg)}}}"))
         elif m.group("times"):
             out.append(r"\,")
-        elif m.group("pm"):
-            out.append(_math(r"\pm"))
-        elif m.group("arrow"):
-            out.append(_math(r"\to"))
-        elif m.group("le"):
-            out.append(_math(r"\le"))
-        elif m.group("ge"):
-            out.append(_math(r"\ge"))
-        elif m.group("minus") or m.group("bminus"):
-            out.append(_math("-"))
-        elif m.group("lt"):
-            out.append(_math("<"))
-        elif m.group("gt"):
-            out.append(_math(">"))
-        elif m.group("bar"):
-            out.append(_math("|"))
-        elif m.group("approx"):
-            out.append(_math(r"\approx"))
-        elif m.group("sim"):
-            out.append(_math(r"\sim"))
+        elif m.lastgroup in _SIGNS or m.group("minus") or m.group("bminus"):
+            out.append(_math(_SIGNS.get(m.lastgroup, "-")))
         else:  # pragma: no cover
             raise AssertionError(k)
     out.append(esc(text[pos:]))

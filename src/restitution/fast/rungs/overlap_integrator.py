@@ -1,7 +1,7 @@
 """The compiled integrator under the overlap rule (``collide_fast(..., overlap=True)``), where it
 differs from the force rule (alpha > gamma), at rtol at most OVERLAP_RTOL_MAX: the same bound as
 the force rule's integrator,
-validated against the mpmath reference down to eps of 1e-36 (tests/test_overlap_fast.py). Below
+validated against the mpmath reference down to eps of 1e-36 (tests/library/test_overlap_fast.py). Below
 Omega = 1e-5 the creeping return makes the explicit method slow (~0.4/Omega steps): the scipy
 reference (Radau there) takes over. A proved sticking raises StickError, as the reference does."""
 

@@ -12,12 +12,12 @@ from pathlib import Path
 
 import pytest
 
-from test_bad_input import run_cli
+from cli_run import run_cli
 
 from restitution.core.errors import ParameterError
 from restitution.dem.codes import Pair
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def refused(argv, *names):

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-PKG = Path(__file__).resolve().parents[1] / "src" / "restitution"
+PKG = Path(__file__).resolve().parents[2] / "src" / "restitution"
 MODULES = sorted(PKG.rglob("*.py"))
 
 

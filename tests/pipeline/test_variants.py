@@ -15,7 +15,6 @@ from pathlib import Path
 import pytest
 import yaml
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from pipeline_tree import ALL, copy_built  # noqa: E402
 from test_pipeline import (assert_one_config_error, PER_VARIANT, ROOT, VARIANT_NAMES, planned, read_csv,  # noqa: E402

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "workflow" / "tools"))
 
 import rebuild  # noqa: E402  (workflow/tools/rebuild.py)
@@ -142,24 +142,22 @@ def test_changing_d1_reruns_what_depends_on_omega_only(built, tmp_path):
         assert untouched not in jobs
 
 
-def test_a_change_in_the_integrator_reruns_reference_rules_not_series(built, tmp_path):
+@pytest.mark.parametrize("module, reruns, untouched", [
+    # a change in the integrator reruns the reference rules, not the series
+    ("core/collision.py", {"reference_trajectories", "reference_eps_curve", "reference_accuracy", "validation"},
+     ("series", "series_table", "fig3_phase", "printed_relation")),
+    # a change in the series module reruns no integration
+    ("core/series.py", {"series", "fig1_forward", "fig2_inverse", "connection_readings", "values"},
+     ("reference_trajectories", "reference_eps_curve", "reference_accuracy", "fig3_phase")),
+])
+def test_a_change_in_a_module_reruns_only_the_rules_that_import_it(module, reruns, untouched, built, tmp_path):
     tree = copy_built(built, tmp_path / "t")
-    src = tree / "src/restitution/core/collision.py"
+    src = tree / "src/restitution" / module
     src.write_text(src.read_text() + "\n# a change\n")
     jobs = planned(tree, ALL)
-    assert {"reference_trajectories", "reference_eps_curve", "reference_accuracy", "validation"} <= set(jobs)
-    for untouched in ("series", "series_table", "fig3_phase", "printed_relation"):
-        assert untouched not in jobs
-
-
-def test_a_change_in_the_series_module_does_not_rerun_integrations(built, tmp_path):
-    tree = copy_built(built, tmp_path / "t")
-    src = tree / "src/restitution/core/series.py"
-    src.write_text(src.read_text() + "\n# a change\n")
-    jobs = planned(tree, ALL)
-    assert {"series", "fig1_forward", "fig2_inverse", "connection_readings", "values"} <= set(jobs)
-    for untouched in ("reference_trajectories", "reference_eps_curve", "reference_accuracy", "fig3_phase"):
-        assert untouched not in jobs
+    assert reruns <= set(jobs)
+    for rule in untouched:
+        assert rule not in jobs
 
 
 # ------------------------------------------------------------------------------ outputs
@@ -523,4 +521,29 @@ def test_the_overlap_limit_numbers_come_from_the_library(built):
     values = (built / "results/dem/overlap_values.tex").read_text()
     used = set(re.findall(r"\\(Overlap[A-Za-z]+)", (built / "paper/sections/dem.tex").read_text()
                           + (built / "paper/restitution.tex").read_text()))
+    assert used and all(rf"\newcommand{{\{name}}}" in values for name in used)
+
+
+def test_the_typed_e_table_is_the_librarys_with_its_engine(built):
+    """Issue 25: the manuscript's table of the typed e against the eps it gives is the library's
+    (typed_e_table), each row naming the engine whose test runs it, and every TypedE macro the
+    section uses is written by rule typed_e."""
+    import pandas as pd
+
+    from restitution.dem.settings import TYPED_E_CODES, TYPED_E_ENGINES, typed_e_table
+
+    table = pd.read_csv(built / "results/dem/typed_e.csv")
+    assert list(table["code"]) == list(TYPED_E_CODES)
+    columns = [c for c in table.columns if c.startswith("eps_at_e_")]
+    es = [float(c[len("eps_at_e_"):]) for c in columns]
+    assert len(es) >= 5
+    computed = typed_e_table(es)
+    for _, r in table.iterrows():
+        assert r["engine"] == TYPED_E_ENGINES[r["code"]]
+        for col, lib_row in zip(columns, computed):
+            assert r[col] == pytest.approx(lib_row[r["code"]], rel=1e-12), (r["code"], col)
+    tex = (built / "results/dem/typed_e.tex").read_text()
+    assert all(f"& {r[columns[0]]:.4f} &" in tex and TYPED_E_ENGINES[r["code"]] in tex for _, r in table.iterrows())
+    values = (built / "results/dem/typed_e_values.tex").read_text()
+    used = set(re.findall(r"\\(TypedE[A-Za-z]+)", (built / "paper/sections/dem.tex").read_text()))
     assert used and all(rf"\newcommand{{\{name}}}" in values for name in used)

@@ -13,7 +13,7 @@ from pathlib import Path
 import psutil
 import pytest
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 
 # runs make and Snakemake (a minute or two): with the pipeline tests, not in make test-fast
 pytestmark = [pytest.mark.pipeline, pytest.mark.slow]

@@ -21,7 +21,6 @@ from pathlib import Path
 
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from pipeline_tree import BIN, ENV, ROOT, digests, fresh_tree  # noqa: E402
 from test_variants import FLAT_CONFIG  # noqa: E402

@@ -21,7 +21,6 @@ from pathlib import Path
 
 import pytest
 
-sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from pipeline_tree import ALL, ROOT, copy_built  # noqa: E402
 from test_pipeline import VARIANT_NAMES, snakemake  # noqa: E402
@@ -37,7 +36,7 @@ pytestmark = [pytest.mark.browser,
                                  "(apt-get install chromium)")]
 
 DRIVER = """<script>
-// appended by tests/test_report_browser.py
+// appended by tests/pipeline/test_report_browser.py
 (function () {
   const wanted = %s, out = {};
   const pre = document.createElement("pre");

@@ -55,7 +55,7 @@ def test_pair_coeff_line():
 
 def test_tsuji_e_is_not_the_eps_lammps_produces():
     rows = {r["e"]: r for r in tsuji_audit([0.5, 0.8])}
-    # the values LAMMPS itself gives with limit_damping (tests/test_dem_lammps.py checks the engine)
+    # the values LAMMPS itself gives with limit_damping (tests/library/test_dem_lammps.py checks the engine)
     assert rows[0.8]["eps_limit_damping"] == pytest.approx(0.858, abs=1e-3)
     assert rows[0.5]["eps_limit_damping"] == pytest.approx(0.646, abs=1e-3)
     for r in rows.values():

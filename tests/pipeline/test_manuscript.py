@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-PAPER = Path(__file__).resolve().parents[1] / "paper"
+PAPER = Path(__file__).resolve().parents[2] / "paper"
 SOURCES = sorted(PAPER.rglob("*.tex"))
 
 #: Numbers that are names or quotations, not results: each with why.

