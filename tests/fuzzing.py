@@ -196,11 +196,12 @@ def check_number_case(case) -> list[dict]:
     c = attempt("collide", lambda: api.collide(case["alpha"], case["gamma"], case["omega"], rtol=case["rtol"],
                                                end=rule))
     if c is not None:
-        # the accuracy collide states (10 rtol + 1e-13, widened near a sticking boundary); 1 - eps
-        # is never near 0 there, so the plain bound holds for it
+        # the accuracies collide states (10 rtol + 1e-13, widened near a sticking boundary for eps,
+        # by eps / (1 - eps) for a large 1 - eps taken by subtraction)
         plain = 10 * max(case["rtol"], 2.2e-14) + 1e-13
         b = c.error_bound if getattr(c, "error_bound", None) is not None else plain
-        records.append(judge("collide", c.eps, b, getattr(c, "one_minus_eps", None), plain))
+        b1 = c.one_minus_eps_bound if getattr(c, "one_minus_eps_bound", None) is not None else plain
+        records.append(judge("collide", c.eps, b, getattr(c, "one_minus_eps", None), b1))
     return records
 
 

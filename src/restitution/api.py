@@ -62,7 +62,8 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
     * ``"reference"`` (default): scipy's DOP853/Radau in smooth variables
       (:func:`restitution.core.collision.collide`), Omega in [1e-12, 1e10], ``t_eval`` samples the
       trajectory; relative accuracy 10 rtol + 1e-13, for ``one_minus_eps`` too (from the dissipated
-      energy).
+      energy; by subtraction where it is 1/4 or more), as ``error_bound`` and ``one_minus_eps_bound``
+      state them (the first widened near the overlap rule's sticking boundary).
     * ``"fast"``: the compiled integrator (:mod:`restitution.fast.integrator`), tens of
       microseconds; Omega in [1e-12, 1e14] (alpha <= gamma, and the overlap rule: from 1e-5, where
       the return is not stiff); no ``one_minus_eps``.

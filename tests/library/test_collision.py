@@ -201,7 +201,8 @@ def test_as_dict_is_json_ready():
     data = json.loads(json.dumps(hit.as_dict()))
     assert data == {"alpha": "3/2", "gamma": "1", "omega": 0.5, "eps": hit.eps, "tau_b": hit.tau_b,
                     "x_b": hit.x_b, "tau_c": hit.tau_c, "x_c": hit.x_c, "end": "force",
-                    "one_minus_eps": hit.one_minus_eps, "error_bound": 10 * 1e-12 + 1e-13}
+                    "one_minus_eps": hit.one_minus_eps, "error_bound": 10 * 1e-12 + 1e-13,
+                    "one_minus_eps_bound": 10 * 1e-12 + 1e-13}
     assert hit.direction == "forward" and hit.rtol == 1e-12 and hit.trajectory is None
     assert isinstance(hit.alpha, Fraction) and hit.alpha == Fraction(3, 2)
     json.dumps(inverse_collide("3/2", 1, 6.0).as_dict())

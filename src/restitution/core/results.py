@@ -46,8 +46,8 @@ class Collision:
     end-of-contact rule asked for (END_RULES): under "overlap" ``end`` is always "separation". ``rtol`` is the
     tolerance the integration ran at (0.0 for a closed form). ``one_minus_eps`` is 1 - eps to
     relative accuracy (from the dissipated energy, not by subtraction), None where the method does
-    not provide it. ``error_bound`` is the stated relative accuracy of eps (None where the method
-    states none).
+    not provide it. ``error_bound`` and ``one_minus_eps_bound`` are the stated relative accuracies
+    of eps and 1 - eps (None where the method states none).
     """
 
     alpha: Fraction
@@ -65,6 +65,7 @@ class Collision:
     one_minus_eps: float | None = None
     rule: str = "force"
     error_bound: float | None = None
+    one_minus_eps_bound: float | None = None
 
     def as_dict(self) -> dict:
         out = {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.end}
@@ -74,6 +75,8 @@ class Collision:
             out["one_minus_eps"] = float(self.one_minus_eps)
         if self.error_bound is not None:
             out["error_bound"] = float(self.error_bound)
+        if self.one_minus_eps_bound is not None:
+            out["one_minus_eps_bound"] = float(self.one_minus_eps_bound)
         return out
 
 
