@@ -125,3 +125,15 @@ def test_bad_input_gives_one_line_and_exit_2(args):
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and "Traceback" not in proc.stderr
     assert lines[0].startswith("restitution")
+
+
+def test_one_point_eps_leaves_scipy_integrate_unimported():
+    # scipy.integrate's import is most of a one-point call's time; the compiled integrator reads
+    # only its DOP853 tableau, so the default request must not pay for the rest
+    code = ("import sys\nfrom restitution.cli import main\n"
+            "assert main(['eps', '--alpha', '3/2', '--gamma', '1', '--omega', '0.1', '--no-build']) == 0\n"
+            "print(sorted(m for m in sys.modules if m.startswith('scipy.integrate')))")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert "method integrator" in proc.stdout
+    assert proc.stdout.strip().splitlines()[-1] == "[]"
