@@ -52,6 +52,29 @@ def session_dir() -> Path:
     return SESSION_DIR
 
 
+@pytest.fixture(scope="session")
+def shared_builds() -> Path:
+    """A cache directory shared by every test and worker of the session, for builds that many tests
+    read but none changes (the small calibration bundles): built once, by whichever worker asks
+    first, while the others wait on the entry's lock. A test that damages an entry works on a copy
+    (:func:`copy_entry`)."""
+    path = SESSION_DIR / "shared-builds"
+    path.mkdir(exist_ok=True)
+    return path
+
+
+def copy_entry(ladder, directory: Path) -> Path:
+    """The ladder's calibration bundle, built in its own (shared) cache if need be, copied into
+    ``directory``: the file a fresh build there would write, at the cost of a file copy."""
+    from restitution.fast.cache import cache_path
+
+    ladder.calibration()
+    source = cache_path(ladder.cache_key, Path(ladder.cache_dir))
+    target = directory / source.name
+    shutil.copyfile(source, target)
+    return target
+
+
 @pytest.fixture
 def empty_cache(tmp_path, monkeypatch) -> Path:
     """A cache directory of this test's own, empty at the start."""

@@ -274,26 +274,27 @@ def test_two_cold_builders_build_once_and_the_second_waits_with_one_note(tmp_pat
 
 
 # ---------------------------------------------------- class 10: a damaged entry, reported once
-def _ladder_with_entry(tmp_path):
+def _ladder_with_entry(tmp_path, shared_builds):
     import io
 
+    from conftest import copy_entry
     from test_epsilon import SMALL
     from restitution.fast.ladder import Ladder
-    lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=io.StringIO())
-    lad.calibration()
-    (path,) = tmp_path.glob("*.json")
+    path = copy_entry(Ladder("3/2", "1", settings=SMALL, cache_dir=str(shared_builds), stream=io.StringIO()),
+                      tmp_path)
+    assert [p.name for p in tmp_path.glob("*.json")] == [path.name]
     return path
 
 
 @pytest.mark.parametrize("damage", ["truncate", "reseal-a-wrong-coefficient"])
-def test_a_damaged_cache_entry_is_reported_once_and_not_again(tmp_path, damage):
+def test_a_damaged_cache_entry_is_reported_once_and_not_again(tmp_path, shared_builds, damage):
     import io
     import json
 
     from test_epsilon import SMALL, _tamper, _panel
     from restitution.fast.ladder import Ladder
 
-    path = _ladder_with_entry(tmp_path)
+    path = _ladder_with_entry(tmp_path, shared_builds)
     if damage == "truncate":
         path.write_bytes(path.read_bytes()[:100])
     else:
