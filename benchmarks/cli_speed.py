@@ -7,6 +7,7 @@ an idle machine. Rows (median over --runs, after one warm-up run that fills the 
 cache; CPU = user + sys of the child, from the operating system's accounting):
 
 * the call itself, with a fresh master-curve cache (the ladder answers with the compiled integrator);
+* a call that a closed form answers (alpha = gamma): no kernel runs, so numba is never imported;
 * python starting and importing numpy: what any call costs;
 * python importing numba and calling one cached one-line kernel: what any compiled answer costs
   before our own code runs, the floor of the integrator's answer.
@@ -64,6 +65,8 @@ def main(argv=None) -> int:
         cases = [
             ("restitution eps --alpha 3/2 --gamma 1 --omega 0.1",
              [str(BIN / "restitution"), "eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0.1"]),
+            ("restitution eps --alpha 1 --gamma 1 --omega 0.1",   # a closed form: no kernel, no numba
+             [str(BIN / "restitution"), "eps", "--alpha", "1", "--gamma", "1", "--omega", "0.1"]),
             ("python -c 'import numpy'", [sys.executable, "-c", "import numpy"]),
             ("python: import numba, call one cached kernel",
              [sys.executable, "-c", f"import sys; sys.path.insert(0, {tmp!r}); import kernel; kernel.twice(1.0)"]),
