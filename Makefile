@@ -173,12 +173,14 @@ reproducible: $(STAMP)
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) twice
 
 # Measurements, written under results/bench/: series derivation time, the speed/accuracy table of
-# every eps method against the high-precision reference (speed_accuracy.csv, pareto.pdf/png), and
-# the wall time of one cold pipeline run (environment and TeX already installed).
+# every eps method against the high-precision reference (speed_accuracy.csv, pareto.pdf/png), one
+# `restitution eps` call beside its floors (cli_speed.csv), and the wall time of one cold pipeline
+# run (environment and TeX already installed).
 bench: $(STAMP)
 	@mkdir -p results/bench
 	$(BIN)/python benchmarks/series_speed.py | tee results/bench/series_speed.txt
 	$(BIN)/python benchmarks/speed_accuracy.py --out results/bench
+	$(BIN)/python benchmarks/cli_speed.py --out results/bench
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) bench
 
 # The workflow scripts as Jupyter notebooks (notebooks/, not tracked), each with a first cell that

@@ -125,3 +125,19 @@ def test_bad_input_gives_one_line_and_exit_2(args):
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and "Traceback" not in proc.stderr
     assert lines[0].startswith("restitution")
+
+
+@pytest.mark.parametrize("argv, method, unused", [
+    # scipy.integrate's import was most of a one-point call; the compiled integrator reads only its tableau
+    (["--alpha", "3/2", "--gamma", "1", "--omega", "0.1", "--no-build"], "integrator", "scipy.integrate"),
+    # numba's import and start cost most of a second; a request no compiled kernel serves skips them
+    (["--alpha", "1", "--gamma", "1", "--omega", "0.1", "3"], "closed-form", "numba"),
+])
+def test_a_one_off_eps_call_imports_only_what_its_answer_needs(argv, method, unused):
+    code = ("import sys\nfrom restitution.cli import main\n"
+            f"assert main(['eps', *{argv!r}]) == 0\n"
+            f"print(sorted(m for m in sys.modules if m == {unused!r} or m.startswith({unused!r} + '.')))")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert f"method {method}" in proc.stdout
+    assert proc.stdout.strip().splitlines()[-1] == "[]"

@@ -37,10 +37,11 @@ size from the Illinois variant of regula falsi, so an event is as accurate as a 
 
 from __future__ import annotations
 
+import importlib.util
 import math
+from pathlib import Path
 
 import numpy as np
-from scipy.integrate._ivp import dop853_coefficients as _dop
 
 from .jit import HAVE_NUMBA, njit
 
@@ -48,6 +49,22 @@ __all__ = ["HAVE_NUMBA", "collide_fast", "law_parameters", "OVERLAP_RTOL_MAX",
            "END_FORCE", "END_SEPARATION", "END_FAILED", "END_STUCK"]
 
 # ---------------------------------------------------------------------------- DOP853 tableau
+def _scipy_dop853():
+    """scipy's DOP853 coefficients module, executed from its own file: importing it by name imports
+    the whole of scipy.integrate first (about 0.3 s, most of a one-point ``restitution eps`` call)
+    for a few hundred numbers that need only numpy."""
+    spec = importlib.util.find_spec("scipy")   # locates the package without importing it
+    path = Path(spec.origin).parent / "integrate" / "_ivp" / "dop853_coefficients.py"
+    if not path.is_file():   # another scipy layout: the ordinary import
+        from scipy.integrate._ivp import dop853_coefficients
+        return dop853_coefficients
+    own = importlib.util.spec_from_file_location("restitution_scipy_dop853_coefficients", path)
+    module = importlib.util.module_from_spec(own)
+    own.loader.exec_module(module)
+    return module
+
+
+_dop = _scipy_dop853()
 _NS = _dop.N_STAGES  # 12
 _A = np.ascontiguousarray(_dop.A[:_NS, :_NS], dtype=np.float64)
 _B = np.ascontiguousarray(_dop.B, dtype=np.float64)

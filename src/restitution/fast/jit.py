@@ -1,4 +1,5 @@
-"""numba's ``njit`` when numba is installed, else a no-op decorator: the compiled kernels
+"""numba's ``njit`` when numba is installed (numba imported and the kernel made on its first call),
+else a no-op decorator: the compiled kernels
 (:mod:`restitution.fast.integrator`, :mod:`restitution.fast.panels`) are also valid plain Python,
 only much slower. ``HAVE_NUMBA`` says which.
 
@@ -12,35 +13,73 @@ such a file count as absent: the kernel is recompiled (one note on stderr per pr
 damaged file is removed where that is allowed, so the next process finds a good one.
 """
 
+import importlib.util
 import sys
 
-try:  # numba is an optional accelerator: everything below is also valid plain Python.
-    from numba import njit as _numba_njit
+# numba is an optional accelerator: everything below is also valid plain Python. Whether it is there
+# is asked without importing it: its import and start cost most of a second, which a request that
+# runs no kernel (a closed form, the series) should not pay.
+HAVE_NUMBA = importlib.util.find_spec("numba") is not None
 
-    HAVE_NUMBA = True
 
+def _compile(func, args, kwargs):
+    """numba's njit of ``func``; where no cache directory can be written (a read-only package and
+    no writable user cache), numba refuses ``cache=True``: compile without caching."""
+    from numba import njit as numba_njit
+
+    _survive_damaged_cache()
+    if args and callable(args[0]):
+        return numba_njit(func)
+    try:
+        return numba_njit(*args, **kwargs)(func)
+    except RuntimeError as exc:
+        if not kwargs.get("cache") or "cannot cache" not in str(exc):
+            raise
+        if not _NOTED:
+            print("restitution: note: no writable place for compiled kernels (read-only package "
+                  "and no writable NUMBA_CACHE_DIR or user cache); compiling them in memory for this "
+                  "process", file=sys.stderr, flush=True)
+            _NOTED.add("<no locator>")
+        return numba_njit(*args, **dict(kwargs, cache=False))(func)
+
+
+class _Kernel:
+    """A kernel whose numba dispatcher is made on its first call (or first attribute read). Then
+    every kernel of the same module is made too and put in the module's namespace in place of its
+    stand-in: compiled code reads the kernels it calls from there, and numba types only its own
+    dispatchers."""
+
+    def __init__(self, func, args, kwargs):
+        self.py_func, self._args, self._kwargs = func, args, kwargs
+        self._dispatcher = None
+        self.__name__, self.__qualname__, self.__doc__ = func.__name__, func.__qualname__, func.__doc__
+        self.__module__ = func.__module__
+
+    def _real(self):
+        if self._dispatcher is None:
+            space = self.py_func.__globals__
+            for name, obj in list(space.items()):
+                if isinstance(obj, _Kernel) and obj.py_func.__globals__ is space and obj._dispatcher is None:
+                    obj._dispatcher = _compile(obj.py_func, obj._args, obj._kwargs)
+                    space[name] = obj._dispatcher
+            if self._dispatcher is None:   # not bound to a module-level name
+                self._dispatcher = _compile(self.py_func, self._args, self._kwargs)
+        return self._dispatcher
+
+    def __call__(self, *args):
+        return self._real()(*args)
+
+    def __getattr__(self, name):
+        return getattr(self._real(), name)
+
+
+if HAVE_NUMBA:
     def njit(*args, **kwargs):
-        """numba's njit; where no cache directory can be written (a read-only package and no
-        writable user cache), numba refuses ``cache=True`` at import: compile without caching."""
+        """numba's njit, made when the kernel is first used (see :class:`_Kernel`)."""
         if args and callable(args[0]) and len(args) == 1 and not kwargs:
-            return _numba_njit(args[0])
-
-        def decorate(func):
-            try:
-                return _numba_njit(*args, **kwargs)(func)
-            except RuntimeError as exc:
-                if not kwargs.get("cache") or "cannot cache" not in str(exc):
-                    raise
-                if not _NOTED:
-                    print("restitution: note: no writable place for compiled kernels (read-only package "
-                          "and no writable NUMBA_CACHE_DIR or user cache); compiling them in memory for this "
-                          "process", file=sys.stderr, flush=True)
-                    _NOTED.add("<no locator>")
-                return _numba_njit(*args, **dict(kwargs, cache=False))(func)
-        return decorate
-except ImportError:  # pragma: no cover - exercised only without numba
-    HAVE_NUMBA = False
-
+            return _Kernel(args[0], args, {})
+        return lambda func: _Kernel(func, args, kwargs)
+else:  # pragma: no cover - exercised only without numba
     def njit(*args, **kwargs):
         if args and callable(args[0]):
             return args[0]
@@ -95,8 +134,5 @@ def _survive_damaged_cache() -> None:
     IndexDataCacheFile._load_data = _load_data
     IndexDataCacheFile._restitution_guarded = True
 
-
-if HAVE_NUMBA:
-    _survive_damaged_cache()
 
 __all__ = ["HAVE_NUMBA", "njit"]
