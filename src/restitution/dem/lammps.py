@@ -37,11 +37,14 @@ def available() -> bool:
     return True
 
 
-def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float) -> float:
+def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, types: tuple = (1, 1),
+               ntypes: int = 1) -> float:
     """eps = -(relative speed after) / g for one head-on collision at approach speed g.
 
     The spheres start touching (zero overlap) so that no partial first step biases the result;
     ``t_run`` must exceed the contact time (the run stops as soon as they have separated).
+    ``pair_coeff`` may be a whole scene's lines for ``ntypes`` atom types, the two spheres of
+    atom types ``types``.
     """
     lammps = _load()
     lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
@@ -60,9 +63,9 @@ atom_modify map array
 boundary f f f
 comm_modify vel yes
 region box block {-box} {box} {-box} {box} {-box} {box} units box
-create_box 1 box
-create_atoms 1 single {x1!r} 0 0 units box
-create_atoms 1 single {x2!r} 0 0 units box
+create_box {ntypes} box
+create_atoms {types[0]} single {x1!r} 0 0 units box
+create_atoms {types[1]} single {x2!r} 0 0 units box
 set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
 set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
 velocity all set 0 0 0 units box
