@@ -14,7 +14,7 @@ import pytest
 import yaml
 
 from restitution.cli import main
-from restitution.dem.codes import Pair, lammps_contact
+from restitution.dem.codes import Pair, lammps_contact, liggghts_contact
 from restitution.dem.contact import Contact
 from restitution.dem.model_ladder import fit_rung, lammps_rungs
 from restitution.dem.scene import answer_scene
@@ -187,3 +187,61 @@ def test_json_has_the_fields_the_issue_lists(tmp_path):
     assert len(pc) == 21 and pc[0].startswith("pair_coeff 1 1 hertz/material")
     assert sorted(p.name for p in (tmp_path / "o").iterdir()) == ["input.lammps", "scene.json", "table.txt"]
     assert json.loads((tmp_path / "o" / "scene.json").read_text())["input_lines"] == res["input_lines"]
+
+
+def test_a_contact_no_rung_meets_gets_no_line_and_exit_status_1(tmp_path):
+    """damping fixed to tsuji (constant e) against a table that falls by 0.2: no model within 0.01,
+    said in the table and the JSON, no input line for it, exit status 1."""
+    d = _small()
+    d["options"]["damping"] = "tsuji"
+    d["targets"][1]["table"] = [[0.1, 0.95], [5.0, 0.75]]
+    path = tmp_path / "steep.yaml"
+    path.write_text(yaml.safe_dump(d))
+    status, text = _run(["scene", str(path), "--json"])
+    res = json.loads(text)
+    unmet = [c for c in res["contacts"] if c["chosen"] is None]
+    assert status == 1 and not res["met"] and unmet
+    assert all(set(c["materials"]) == {"glass", "steel"} and c["input_lines"] == [] for c in unmet)
+    assert all(r["max_deviation"] > 0.01 and not r["accepted"] for c in unmet for r in c["rungs"])
+    assert not any(ln.startswith("pair_coeff 1 3 ") for ln in res["input_lines"])
+    status, table = _run(["scene", str(path)])
+    assert status == 1 and "none meets the tolerance" in table
+
+
+def _liggghts_scene(limit_force: bool) -> dict:
+    return {"name": "lig", "code": "liggghts", "tolerance": 0.01, "speeds": [0.1, 2.0], "check_points": 100,
+            "options": {"model": "hertz", "limitForce": limit_force},
+            "materials": {"glass": {"E": 6.3e10, "nu": 0.22, "density": 2500},
+                          "steel": {"E": 2.0e11, "nu": 0.29, "density": 7800}},
+            "species": [{"name": "g", "material": "glass", "radius": [1e-3, 2e-3]},
+                        {"name": "s", "material": "steel", "radius": 1.5e-3}],
+            "walls": ["steel"],
+            "targets": [{"pair": ["glass", "glass"], "e": 0.9}, {"pair": ["glass", "steel"], "e": 0.85},
+                        {"pair": ["steel", "steel"], "e": 0.8}]}
+
+
+@pytest.mark.parametrize("limit_force", [False, True], ids=["limitForce off", "limitForce on"])
+def test_liggghts_scene_matrices_and_the_typed_e(limit_force):
+    """LIGGGHTS hertz: one constant-e rung; walls get atom types after the particles'. With
+    limitForce off the engine gives eps = the typed e exactly (measured in LIGGGHTS,
+    tests/test_dem_liggghts.py), so the calibrated e must be the target; with it on, the e is below
+    the target and the reference integrator of the setting gives the target back."""
+    res = answer_scene(scene_from_dict(_liggghts_scene(limit_force)))
+    assert res["met"] and len(res["contacts"]) == 6 + 3
+    walls = [c for c in res["contacts"] if c["b"].startswith("wall:")]
+    assert [c["types"] for c in walls] == [[1, 4], [2, 4], [3, 4]]
+    target = {frozenset(("glass",)): 0.9, frozenset(("glass", "steel")): 0.85, frozenset(("steel",)): 0.8}
+    types = {t["number"]: t for t in res["types"]}
+    for c in res["contacts"]:
+        e, want = c["setting"]["e"], target[frozenset(c["materials"])]
+        assert (abs(e - want) <= 1e-9) if not limit_force else (e < want - 1e-3)
+        if c["b"].startswith("wall:"):
+            continue
+        a, b = types[c["types"][0]], types[c["types"][1]]
+        contact = liggghts_contact(Pair.spheres(a["radius"], b["radius"], a["density"], b["density"]),
+                                   **c["setting"])
+        assert abs(contact.eps(1.0) - want) <= 1e-9
+    m3 = next(ln for ln in res["input_lines"] if "coefficientRestitution" in ln and ln.startswith("fix")).split()
+    n = int(m3[6])
+    matrix = np.array(m3[7:], float).reshape(n, n)
+    assert n == 4 and np.array_equal(matrix, matrix.T) and matrix[0, 2] == res["contacts"][2]["setting"]["e"]

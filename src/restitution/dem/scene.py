@@ -7,7 +7,9 @@ lines for the whole scene.
 The fit is shared by every contact with one material pair (it is a fit of log C, see
 model_ladder); each contact then gets its own damping from its effective mass and radius, and the
 eps listed for it is evaluated again from the setting as printed in its input line (the round
-trip, reported as ``round_trip``). LAMMPS only for now (``pair_style granular``).
+trip, reported as ``round_trip``). LAMMPS ``pair_style granular`` (pair_coeff per type pair, fix
+wall/gran per type and wall) and LIGGGHTS ``model hertz`` (fix property/global per atom type, walls
+with atom types of their own, coefficientRestitution per type pair).
 """
 
 from __future__ import annotations
@@ -20,9 +22,9 @@ import numpy as np
 from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
 from ..fast.integrator import COLUMNS, collide_fast
-from .codes import Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff
+from .codes import Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e
 from .contact import Contact
-from .model_ladder import EVAL_TOL, Fit, fit_rung, lammps_rungs, scaled_eps
+from .model_ladder import EVAL_TOL, Fit, fit_rung, lammps_rungs, liggghts_rungs, scaled_eps
 from .scene_file import AtomType, Scene
 from .timestep import recommended_dt
 
@@ -84,21 +86,53 @@ def _stiffness(scene: Scene, m1: str, m2: str) -> dict:
     return {"normal": normal, "E": 2.0 * (1.0 - nu ** 2) * e_star, "nu": nu}
 
 
+def _d2(base: Contact, fit: Fit) -> Contact:
+    """The contact with the damping D2 that puts Omega(v) on the fitted C v^k."""
+    p = float((fit.rung.alpha + 1) / (fit.rung.gamma + 1))
+    return Contact(base.alpha, base.gamma, base.D1, math.exp((math.log(base.D1) - fit.log_c) / p), base.end)
+
+
+def _liggghts_materials(scene: Scene, c: _Contact) -> dict:
+    m1, m2 = c.materials
+    p, q = scene.materials[m1], scene.materials[m2]
+    same = m1 == m2
+    return {"E": float(p["E"]), "nu": float(p["nu"]), "E2": None if same else float(q["E"]),
+            "nu2": None if same else float(q["nu"])}
+
+
 def _setting(scene: Scene, c: _Contact, fit: Fit) -> dict:
     """The rung's setting for this contact: D2 from the fitted C, as the code's eta_n0 (or tsuji's
-    e) rounded as the input line prints it."""
+    e; LIGGGHTS: coefficientRestitution) rounded as the input line prints it."""
     rung = fit.rung
+    if scene.code == "liggghts":
+        mats = _liggghts_materials(scene, c)
+        limit = scene.options["limitForce"]
+        base = liggghts_contact(c.pair, e=0.5, limit_force=limit, model=rung.normal, **mats)
+        return {"model": rung.normal, **mats, "e": float(f"{liggghts_e(_d2(base, fit)):.12g}"), "limit_force": limit}
     stiff = _stiffness(scene, *c.materials)
     base = lammps_contact(c.pair, damping=rung.damping, eta_n0=0.5 if rung.damping == "tsuji" else 1.0,
                           limit_damping=scene.options["limit_damping"], **stiff)
-    p = float((rung.alpha + 1) / (rung.gamma + 1))
-    d2 = math.exp((math.log(base.D1) - fit.log_c) / p)
-    eta = lammps_eta_n0(c.pair, rung.damping, Contact(base.alpha, base.gamma, base.D1, d2, base.end))
+    eta = lammps_eta_n0(c.pair, rung.damping, _d2(base, fit))
     return {**stiff, "damping": rung.damping, "eta_n0": float(f"{eta:.12g}"),
             "limit_damping": scene.options["limit_damping"]}
 
 
-def _lines(c: _Contact, setting: dict) -> list[str]:
+def _code_contact(scene: Scene, c: _Contact, setting: dict) -> Contact:
+    """The model the code builds from the setting as printed: the round trip's other end."""
+    if scene.code == "liggghts":
+        return liggghts_contact(c.pair, **setting)
+    return lammps_contact(c.pair, **setting)
+
+
+def _wall_types(scene: Scene) -> dict:
+    """LIGGGHTS gives a wall a material through an atom type of its own: numbered after the particles'."""
+    return {w: len(scene.types) + 1 + k for k, w in enumerate(scene.walls)}
+
+
+def _lines(scene: Scene, c: _Contact, setting: dict) -> list[str]:
+    if scene.code == "liggghts":
+        j = c.b.number if c.b is not None else _wall_types(scene)[c.wall]
+        return [f"coefficientRestitution {c.a.number} {j} {setting['e']:.12g}"]
     line = lammps_pair_coeff(**setting)
     if c.b is not None:
         return [line.replace("pair_coeff * *", f"pair_coeff {c.a.number} {c.b.number}", 1)]
@@ -106,6 +140,36 @@ def _lines(c: _Contact, setting: dict) -> list[str]:
     tag = f"{c.wall}_{c.a.number}"
     return [f"group type{c.a.number} type {c.a.number}",
             f"fix wall_{tag} type{c.a.number} wall/gran granular {model} zplane 0.0 NULL"]
+
+
+def _liggghts_lines(scene: Scene, rows: list) -> list[str]:
+    """fix property/global lines for every atom type (walls' after the particles'), the
+    coefficientRestitution matrix from the contacts (entries between two walls never act: 0.5)."""
+    walls = _wall_types(scene)
+    mats = [t.material for t in scene.types] + list(walls)
+    n = len(mats)
+    e = [[0.5] * n for _ in range(n)]
+    for row in rows:
+        if row["chosen"] is None:
+            continue
+        i, j = row["types"]
+        e[i - 1][j - 1] = e[j - 1][i - 1] = row["setting"]["e"]
+    answered = {(min(r["types"]), max(r["types"])) for r in rows if r["chosen"] is not None}
+    left = [f"{i}-{j}" for i in range(1, n + 1) for j in range(i, n + 1) if (i, j) not in answered]
+    prop = lambda key: " ".join(f"{float(scene.materials[m][key]):.12g}" for m in mats)   # noqa: E731
+    note = [f"# coefficientRestitution left at 0.5 (walls only, or no model within the tolerance): {', '.join(left)}"]
+    # LIGGGHTS refuses youngsModulus > 1e9 in SI units unless told (found running these lines)
+    hard = ["hard_particles yes"] if max(float(scene.materials[m]["E"]) for m in mats) > 1e9 else []
+    return (note if left else []) + hard + [f"fix m1 all property/global youngsModulus peratomtype {prop('E')}",
+            f"fix m2 all property/global poissonsRatio peratomtype {prop('nu')}",
+            f"fix m3 all property/global coefficientRestitution peratomtypepair {n} "
+            + " ".join(f"{x:.12g}" for r in e for x in r),
+            "# the tangential model reads a friction matrix: zero here (the scene is about head-on contacts); "
+            "set your own",
+            f"fix m4 all property/global coefficientFriction peratomtypepair {n} " + " ".join(["0"] * n * n),
+            f"pair_style gran model {scene.options['model']} tangential no_history limitForce "
+            + ("on" if scene.options["limitForce"] else "off"),
+            "pair_coeff * *"]
 
 
 def _climb(scene: Scene, rungs, end: str, target, grid, probe: _Contact, build) -> tuple[list[Fit], Fit | None]:
@@ -142,10 +206,12 @@ def _time_step(scene: Scene, fit: Fit, end: str, speeds, eps, tau_c) -> list:
 
 def answer_scene(scene: Scene) -> dict:
     """The scene's answer as a JSON-ready dict (see the README's "Scenes")."""
-    if scene.code != "lammps":
-        raise ParameterError("code", scene.code, "restitution scene writes LAMMPS input only for now: use lammps")
-    end = "force" if scene.options["limit_damping"] else "overlap"
-    rungs = lammps_rungs(scene.options["normal"], scene.options["damping"])
+    if scene.code == "liggghts":
+        end = "force" if scene.options["limitForce"] else "overlap"
+        rungs = liggghts_rungs(scene.options["model"])
+    else:
+        end = "force" if scene.options["limit_damping"] else "overlap"
+        rungs = lammps_rungs(scene.options["normal"], scene.options["damping"])
     grid, speeds = scene.check_grid(), scene.report_grid()
     contacts = _contacts(scene)
     by_materials: dict = {}
@@ -167,19 +233,21 @@ def answer_scene(scene: Scene) -> dict:
                           steps=_time_step(scene, chosen, end, speeds, eps_fit, tau_c))
         answers[key] = shared
     # the round trip: eps of every contact from its setting as printed, one evaluation per rung
+    walls = _wall_types(scene) if scene.code == "liggghts" else {}
     out = []
     pending: dict = {}
     for c in contacts:
         a = answers[frozenset(c.materials)]
         row = {"a": c.a.name, "b": c.b.name if c.b is not None else f"wall:{c.wall}",
-               "types": [c.a.number, c.b.number if c.b is not None else "wall"], "materials": list(c.materials),
+               "types": [c.a.number, c.b.number if c.b is not None else walls.get(c.wall, "wall")],
+               "materials": list(c.materials),
                "effective_mass": c.pair.m, "effective_radius": c.pair.R,
                "rungs": a["rungs"], "chosen": None, "input_lines": [], "end": end}
         fit = a["chosen"]
         if fit is not None:
             setting = _setting(scene, c, fit)
-            contact = lammps_contact(c.pair, **setting)
-            row.update(chosen=fit.rung.name, setting=setting, input_lines=_lines(c, setting),
+            contact = _code_contact(scene, c, setting)
+            row.update(chosen=fit.rung.name, setting=setting, input_lines=_lines(scene, c, setting),
                        max_deviation=fit.max_deviation, at_speed=fit.at_speed, alpha=str(contact.alpha),
                        gamma=str(contact.gamma), D1=contact.D1, D2=contact.D2, speeds=[float(v) for v in speeds])
             scale = contact.material.time_scale(speeds)
@@ -203,9 +271,12 @@ def answer_scene(scene: Scene) -> dict:
                "rungs": [{"name": f.rung.name, "accepted": f.accepted,
                           "eps": [float(e) for e in f.eps[::step]]} for f in a["fits"] if f.eps]}
               for a in answers.values()]
-    lines = ["pair_style granular"] + [ln for row in out if row["b"] is not None and not row["b"].startswith("wall:")
-                                       for ln in row["input_lines"]]
-    lines += [ln for row in out if row["b"].startswith("wall:") for ln in row["input_lines"]]
+    if scene.code == "liggghts":
+        lines = _liggghts_lines(scene, out)
+    else:
+        lines = ["pair_style granular"] + [ln for row in out if not row["b"].startswith("wall:")
+                                           for ln in row["input_lines"]]
+        lines += [ln for row in out if row["b"].startswith("wall:") for ln in row["input_lines"]]
     return {"scene": scene.name, "code": scene.code, "options": scene.options, "tolerance": scene.tolerance,
             "speeds": list(scene.speeds), "check_points": scene.check_points,
             "check": f"every rung's |eps - target| at {scene.check_points} log-spaced speeds over the range, "
