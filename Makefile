@@ -56,7 +56,7 @@ PDF          := results/paper/restitution.pdf
 TEX_PACKAGES := texlive-latex-base texlive-latex-recommended texlive-fonts-recommended latexmk poppler-utils
 HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/null 2>&1
 
-.PHONY: paper tex browser slurm-tools dem-engines slurm outputs verify arxiv report diff check expected reproducible bench notebooks
+.PHONY: paper tex browser slurm-tools dem-engines slurm outputs verify arxiv report diff check expected reproducible bench notebooks scene
 
 # Everything, PDF included; a second run does nothing. Without TeX (and no root to install it),
 # everything except the PDF, and a message saying how to get it.
@@ -172,16 +172,24 @@ expected: paper
 reproducible: $(STAMP)
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) twice
 
-# Measurements, written under results/bench/: series derivation time, the speed/accuracy table of
-# every eps method against the high-precision reference (speed_accuracy.csv, pareto.pdf/png), one
-# `restitution eps` call beside its floors (cli_speed.csv), and the wall time of one cold pipeline
-# run (environment and TeX already installed).
+# Measurements, written under results/bench/: series derivation time, a 5,050-pair scene's answer
+# time (scene_speed.txt), the speed/accuracy table of every eps method against the high-precision
+# reference (speed_accuracy.csv, pareto.pdf/png), one `restitution eps` call beside its floors
+# (cli_speed.csv), and the wall time of one cold pipeline run (environment and TeX already installed).
 bench: $(STAMP)
 	@mkdir -p results/bench
 	$(BIN)/python benchmarks/series_speed.py | tee results/bench/series_speed.txt
+	$(BIN)/python benchmarks/scene_speed.py | tee results/bench/scene_speed.txt
 	$(BIN)/python benchmarks/speed_accuracy.py --out results/bench
 	$(BIN)/python benchmarks/cli_speed.py --out results/bench
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) bench
+
+# A DEM scene (README "Scenes"): the cheapest contact model per contact, its input lines and a
+# report with plots under results/scenes/<name>/ (the name is the scene file's `name`).
+scene: $(STAMP)
+	@test -n "$(SCENE)" || { echo "make scene needs SCENE=<scene file>, e.g. make scene SCENE=scenes/small.yaml" >&2; exit 2; }
+	$(GUARDED) $(SNAKEMAKE) scene --config scene=$(SCENE) $(QUIET)
+	@echo "report: results/scenes/$$($(BIN)/python -c 'import sys; from restitution.dem.scene_file import read_scene; print(read_scene(sys.argv[1]).name)' $(SCENE))/report.html"
 
 # The workflow scripts as Jupyter notebooks (notebooks/, not tracked), each with a first cell that
 # replays the pipeline's last run of its rule, so run `make paper` first.

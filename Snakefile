@@ -34,11 +34,12 @@ include: "workflow/rules/values.smk"     # every number the manuscript prints, a
 include: "workflow/rules/stability.smk"  # appendix: the stability atlas at the extremes (issue 6)
 include: "workflow/rules/dem.smk"        # using the results in a DEM code: LAMMPS runs, calibration
 include: "workflow/rules/bench.smk"      # speed against accuracy, from the recorded make bench table
+include: "workflow/rules/scene.smk"      # DEM scenes on request: make scene SCENE=scenes/x.yaml
 include: "workflow/rules/manuscript.smk" # the reproduction article, built with latexmk
 
 
 # Bookkeeping that a cluster executor runs on the submitting host, not as a queued job.
-localrules: all, outputs, study, main_figure, manuscript_inputs, provenance, variants_tex, arxiv
+localrules: all, outputs, study, main_figure, manuscript_inputs, provenance, variants_tex, arxiv, scene
 
 
 rule all:

@@ -1,4 +1,4 @@
-"""Command line: `restitution series`, `restitution collide`, `restitution eps`, `restitution calibrate`.
+"""Command line: `restitution series`, `collide`, `eps`, `calibrate`, `lammps`, `deck` and `scene`.
 
 User mistakes end in one line on stderr and exit status 2, never a traceback.
 """
@@ -91,7 +91,61 @@ def build_parser() -> argparse.ArgumentParser:
 
     add_lammps_subcommand(sub)
     add_deck_subcommand(sub)
+    add_scene_subcommand(sub)
     return parser
+
+
+def add_scene_subcommand(subparsers) -> None:
+    s = subparsers.add_parser(
+        "scene", help="the cheapest contact model per contact of a DEM scene, and its input lines",
+        description="Reads a scene file (YAML: materials, species, walls, code options, speeds, targets, "
+                    "tolerance; see the README's Scenes) and answers for every contact. Exit status 1 when "
+                    "some contact has no model within the tolerance.")
+    s.add_argument("file", help="the scene file")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
+    s.add_argument("--out", metavar="DIR", help="also write DIR/scene.json, DIR/input.lammps and DIR/table.txt")
+
+
+def scene_table(res: dict) -> str:
+    """The text answer of `restitution scene`: one block per contact, then the input lines."""
+    o = res["options"]
+    head = [f"scene {res['scene']}: {res['code']} (" + ", ".join(f"{k} {str(v).lower() if isinstance(v, bool) else v}" for k, v in o.items()) + f"), "
+            f"tolerance {res['tolerance']:g} on eps, speeds {res['speeds'][0]:g} to {res['speeds'][1]:g}",
+            f"# checked: {res['check']}",
+            f"{'contact':<24} {'types':<9} {'chosen':<22} {'max dev':>9} {'at v':>9} {'eps at lo .. hi':>17} "
+            f"{'dt (s)':>10}"]
+    rows = []
+    for c in res["contacts"]:
+        name = f"{c['a']}-{c['b']}"
+        types = " ".join(map(str, c["types"]))
+        if c["chosen"] is None:
+            rows.append(f"{name:<24} {types:<9} {'none meets the tolerance':<22}")
+        else:
+            rows.append(f"{name:<24} {types:<9} {c['chosen']:<22} {c['max_deviation']:9.2g} {c['at_speed']:9.3g} "
+                        f"{c['eps'][0]:7.4f} .. {c['eps'][-1]:6.4f} {c['dt']:10.3g}")
+        tried = "; ".join(f"{r['name']} {r['max_deviation']:.3g}" + (f" at {r['at_speed']:.3g}" if r["at_speed"] else "")
+                          + (" accepted" if r["accepted"] else " rejected") + (f" ({r['reason']})" if r.get("reason") else "")
+                          for r in c["rungs"])
+        rows.append(f"  tried: {tried}")
+    return "\n".join(head + rows + ["", "# input lines"] + res["input_lines"]) + "\n"
+
+
+def _run_scene(args, out) -> int:
+    from pathlib import Path
+
+    from .dem.scene import answer_scene
+    from .dem.scene_file import read_scene
+    res = answer_scene(read_scene(args.file))
+    text = json.dumps(res, separators=(", ", ": ")) + "\n"
+    table = scene_table(res)
+    if args.out:   # everything computed first: a refused scene writes nothing
+        d = Path(args.out)
+        d.mkdir(parents=True, exist_ok=True)
+        (d / "scene.json").write_text(text)
+        (d / "input.lammps").write_text("\n".join(res["input_lines"]) + "\n")
+        (d / "table.txt").write_text(table)
+    out.write(text if args.json else table)
+    return 0 if res["met"] else 1
 
 
 def add_deck_subcommand(subparsers) -> None:
@@ -383,8 +437,8 @@ def main(argv=None, out=None) -> int:
     try:
         _refuse_repeated_options(argv)
         args = build_parser().parse_args(_attach_negative_values(argv))
-        {"series": _run_series, "collide": _run_collide, "eps": run_eps,
-         "calibrate": _run_calibrate, "lammps": _run_lammps, "deck": _run_deck}[args.command](args, out)
+        status = {"series": _run_series, "collide": _run_collide, "eps": run_eps, "calibrate": _run_calibrate,
+                  "lammps": _run_lammps, "deck": _run_deck, "scene": _run_scene}[args.command](args, out)
     except _UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_USAGE
@@ -396,7 +450,7 @@ def main(argv=None, out=None) -> int:
         import os
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
-    return 0
+    return status or 0
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -203,7 +203,7 @@ def test_the_mixed_pair_is_what_lammps_does(tmp_path, damping):
                              eta_n0=1.0, limit_damping=True)
     t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
     lines = "\n".join(ln for ln in text.splitlines() if ln.startswith("pair_coeff"))
-    eps0 = lammps_eps_extrapolated(pair, lines, g, t_c, steps=8000, types=2)[0]
+    eps0 = lammps_eps_extrapolated(pair, lines, g, t_c, steps=8000, types=(1, 2), ntypes=2)[0]
     assert contact.D1 == pytest.approx(p["D1"], rel=1e-12)
     print(f"{damping}: mixed pair, LAMMPS against the reader {abs(eps0 / p['eps'][0] - 1):.1e} (eps {eps0:.6f})")
     assert abs(eps0 / p["eps"][0] - 1) <= 1e-6, (eps0, p["eps"][0])

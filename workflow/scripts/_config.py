@@ -9,67 +9,17 @@ from __future__ import annotations
 
 import copy
 import math
-import re
 from fractions import Fraction
 
 import jsonschema
 import yaml
 
-
-#: Longest variant name (the schema's maxLength: results/<name>/... must stay a valid path).
-MAX_NAME = 64
+# one-line messages from jsonschema's errors: shared with the scene files of restitution.dem.scene_file
+from restitution.core.schema_lines import MAX_NAME, allowed as _allowed, field as _field, show as _show  # noqa: F401
 
 
 class ConfigError(ValueError):
     """A configuration value outside what the workflow accepts (message is one line)."""
-
-
-def _field(config: dict, path) -> str:
-    """variants[0].D1 -> variants[kim].D1 when the variant has a name."""
-    out = ""
-    node = config
-    for part in path:
-        if isinstance(part, int):
-            name = node[part].get("name") if isinstance(node, list) and isinstance(node[part], dict) else None
-            # only a valid name labels the field: a long one would swamp the line, a newline break it
-            valid = isinstance(name, str) and len(name) <= MAX_NAME and re.fullmatch(r"[A-Za-z][A-Za-z0-9_-]*", name)
-            out += f"[{name}]" if valid else f"[{part}]"
-        else:
-            out += f".{part}" if out else str(part)
-        try:
-            node = node[part]
-        except (KeyError, IndexError, TypeError):
-            node = None
-    return out or "config"
-
-
-def _allowed(error: jsonschema.ValidationError) -> str:
-    v, s = error.validator, error.validator_value
-    description = error.schema.get("description") if isinstance(error.schema, dict) else None
-    text = {
-        "minimum": lambda: f"must be >= {s}",
-        "maximum": lambda: f"must be <= {s}",
-        "exclusiveMinimum": lambda: f"must be > {s}",
-        "exclusiveMaximum": lambda: f"must be < {s}",
-        "minItems": lambda: f"needs at least {s} entries",
-        "maxItems": lambda: f"allows at most {s} entries",
-        "enum": lambda: "must be one of " + ", ".join(map(str, s)),
-        "type": lambda: f"must be of type {s if isinstance(s, str) else ' or '.join(s)}",
-        "pattern": lambda: f"must match {s}",
-        "maxLength": lambda: f"must be at most {s} characters long",
-        "minLength": lambda: f"must be at least {s} characters long",
-    }.get(v, lambda: None)()
-    if v == "required":
-        missing = [k for k in s if k not in error.instance]
-        return f"missing required field(s) {', '.join(missing)}"
-    if v == "additionalProperties":
-        allowed = ", ".join(sorted(error.schema.get("properties", {})))
-        return f"unknown field(s); allowed: {allowed}"
-    if v == "oneOf" and description:
-        return f"must be {description}"
-    if text is None:
-        text = error.message
-    return f"{text} ({description})" if description and v != "type" else text
 
 
 def _resolve(schema, root):
@@ -88,14 +38,6 @@ def _as_number(value, kind: str = "number"):
         except ValueError:
             return value
     return value
-
-
-def _show(value) -> str:
-    """repr of a value for the one-line message, shortened when it is very long."""
-    text = repr(value)
-    if len(text) > 80:
-        text = f"{text[:60]}... ({len(value) if isinstance(value, str) else len(text)} characters)"
-    return text
 
 
 def _number_branch(schema, root):

@@ -37,13 +37,14 @@ def available() -> bool:
     return True
 
 
-def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, types: int = 1) -> float:
+def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, types: tuple = (1, 1),
+               ntypes: int = 1) -> float:
     """eps = -(relative speed after) / g for one head-on collision at approach speed g.
 
     The spheres start touching (zero overlap) so that no partial first step biases the result;
-    ``t_run`` must exceed the contact time (the run stops as soon as they have separated). With
-    ``types`` = 2 the second sphere is of type 2 (``pair_coeff`` may then hold several lines, and
-    leave the pair 1 2 to LAMMPS' mixing).
+    ``t_run`` must exceed the contact time (the run stops as soon as they have separated).
+    ``pair_coeff`` may be a whole scene's lines for ``ntypes`` atom types, the two spheres of
+    atom types ``types`` (a pair without its own line is left to LAMMPS' mixing).
     """
     lammps = _load()
     lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
@@ -62,9 +63,9 @@ atom_modify map array
 boundary f f f
 comm_modify vel yes
 region box block {-box} {box} {-box} {box} {-box} {box} units box
-create_box {types} box
-create_atoms 1 single {x1!r} 0 0 units box
-create_atoms {types} single {x2!r} 0 0 units box
+create_box {ntypes} box
+create_atoms {types[0]} single {x1!r} 0 0 units box
+create_atoms {types[1]} single {x2!r} 0 0 units box
 set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
 set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
 velocity all set 0 0 0 units box
@@ -89,7 +90,7 @@ timestep {dt!r}
 
 
 def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, steps: int = 4000,
-                            types: int = 1) -> tuple:
+                            types: tuple = (1, 1), ntypes: int = 1) -> tuple:
     """(eps extrapolated to dt = 0, the runs' eps at t_c/steps, /2 steps, /4 steps).
 
     eps(dt) = eps0 + a dt + b dt^2 (first order from the half-step damping, and a second-order
@@ -97,6 +98,6 @@ def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, s
     two Richardson levels remove both. Overlap-rule tsuji contacts also carry a fractional-order
     term (the delta^(1/4) damping where the contact ends at delta = 0): 4000 steps keep it below 1e-6."""
     dt = t_c / steps
-    e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types) for k in (1, 2, 4))
+    e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types, ntypes) for k in (1, 2, 4))
     r1, r2 = 2.0 * e2 - e1, 2.0 * e4 - e2
     return (4.0 * r2 - r1) / 3.0, e1, e2, e4

@@ -47,13 +47,15 @@ def liggghts_pair_style(*, model: str, E: float, nu: float, e: float, limit_forc
     return "\n".join(lines)
 
 
-def _run_block(pair: Pair, contact_lines: str, g: float, dt: float, steps: int, tag: int) -> str:
+def _run_block(pair: Pair, contact_lines: str, g: float, dt: float, steps: int, tag: int,
+               types: tuple | None = None) -> str:
     gap = pair.R1 + pair.R2
     box = 4.0 * gap
     rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
     v1 = g * pair.m2 / (pair.m1 + pair.m2)     # centre-of-mass frame
     v2 = -g * pair.m1 / (pair.m1 + pair.m2)
     second = 2 if contact_lines.startswith("create_box 2") else 1   # the second sphere's atom type
+    first, second = types if types is not None else (1, second)
     # touching at zero overlap: no partial first step biases the result
     return f"""
 atom_style granular
@@ -67,7 +69,7 @@ region box block {-box!r} {box!r} {-box!r} {box!r} {-box!r} {box!r} units box
 neighbor {0.5 * gap!r} bin
 neigh_modify delay 0
 timestep {dt!r}
-create_atoms 1 single {-pair.R1!r} 0 0 units box
+create_atoms {first} single {-pair.R1!r} 0 0 units box
 create_atoms {second} single {pair.R2!r} 0 0 units box
 set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
 set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
@@ -84,9 +86,9 @@ clear
 
 
 def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
-    """eps of each case (contact_lines, g, dt, t_run) in one LIGGGHTS process."""
+    """eps of each case (contact_lines, g, dt, t_run[, types]) in one LIGGGHTS process."""
     eps = []
-    for (_, g, _, _), (rel, gap) in zip(cases, liggghts_states(pair, cases, timeout)):
+    for (_, g, *_), (rel, gap) in zip(cases, liggghts_states(pair, cases, timeout)):
         if gap <= pair.R1 + pair.R2:
             raise ArithmeticError("the spheres had not separated at the end of the LIGGGHTS run")
         eps.append(-rel / g)   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
@@ -95,9 +97,10 @@ def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[f
 
 def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
     """(relative velocity v1 - v2, centre distance) at the end of each case (contact_lines, g, dt,
-    t_run), in one LIGGGHTS process."""
-    blocks = [_run_block(pair, lines, g, dt, int(math.ceil(t_run / dt)), i)
-              for i, (lines, g, dt, t_run) in enumerate(cases)]
+    t_run[, types]), in one LIGGGHTS process; ``types``: the two spheres' atom types when
+    contact_lines (starting with create_box N) define more than two."""
+    blocks = [_run_block(pair, case[0], case[1], case[2], int(math.ceil(case[3] / case[2])), i, *case[4:])
+              for i, case in enumerate(cases)]
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "in.collide"
         path.write_text("".join(blocks))

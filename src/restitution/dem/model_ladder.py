@@ -1,0 +1,226 @@
+"""The ladder of contact models a scene climbs for each contact: cheapest first, each calibrated to
+the target over the scene's speed range and accepted when its eps(v) stays within the tolerance.
+
+Every rung is a damping law of the code (its conventions in :mod:`restitution.dem.codes`) with the
+scene's normal model. Its eps depends on one scaled parameter, Omega(v) = C v^k with
+k = (alpha-1-2gamma)/(gamma+1) and C = D1 D2^(-(alpha+1)/(gamma+1)); so a fit is a search over
+the one number log C, the same for every pair of particles with one target (the radii and masses
+only turn C into each pair's damping afterwards). k = 0 is a constant-e law: eps is the same at
+every speed.
+
+A fit is least squares in eps (over the target's measured points, or over FIT_POINTS speeds of the
+range for a constant target; a constant-e law's least squares is eps = the mean target, solved as a
+root), and
+the check is the largest |eps - target| over the scene's check grid plus the evaluation's own
+error bound (restitution.fast.ladder.epsilon at relative EVAL_TOL).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+from fractions import Fraction
+
+import numpy as np
+
+from ..core.collision import StickError
+from ..core.errors import ParameterError
+from ..fast.ladder import epsilon
+
+__all__ = ["ModelRung", "Fit", "lammps_rungs", "liggghts_rungs", "fit_rung", "scaled_eps", "EVAL_TOL"]
+
+#: Relative tolerance of every eps the scene states (far below any scene tolerance, and what the
+#: 1e-9 round trip of a calibration needs).
+EVAL_TOL = 1e-10
+#: log Omega is searched in [1e-4, 1e8]: eps there spans what a scene asks for (eps(1e8) > 0.99
+#: for every law here), and the master curves of both end rules and the compiled integrator meet
+#: EVAL_TOL all over it (beyond, the ladder may have to fall back on mpmath: minutes).
+LOG_OMEGA_RANGE = (math.log(1.01e-4), math.log(0.99e8))   # inside, not on, the curves' ends
+
+
+@dataclass(frozen=True)
+class ModelRung:
+    """One rung: the code's normal model and damping option, with the model's exponents."""
+
+    name: str
+    normal: str
+    damping: str
+    alpha: Fraction
+    gamma: Fraction
+
+    @cached_property
+    def k(self) -> Fraction:
+        return (self.alpha - 1 - 2 * self.gamma) / (self.gamma + 1)
+
+    @cached_property
+    def constant_e(self) -> bool:
+        return self.k == 0
+
+
+def lammps_rungs(normal: str, damping: str) -> list[ModelRung]:
+    """The rungs for LAMMPS pair_style granular with this normal model; ``damping`` = "choose" for
+    all, cheapest first, else that one. A linear spring (hooke) gives a constant eps with every
+    damping (gamma = 0, alpha = 1): one rung, the classical linear spring-dashpot. With a Hertz
+    normal model: tsuji (gamma = (alpha-1)/2, constant e), then viscoelastic (gamma = 1/2,
+    Kuwabara-Kono) and velocity (gamma = 0), both speed-dependent; mass_velocity has velocity's
+    exponents and reaches the same eps(v) for each pair, so "choose" does not try it again."""
+    h = Fraction(3, 2)
+    if normal == "hooke":
+        every = [ModelRung("linear spring-dashpot", "hooke", "velocity", Fraction(1), Fraction(0))]
+        fixed = {d: ModelRung(f"hooke + {d}", "hooke", d, Fraction(1), Fraction(0))
+                 for d in ("tsuji", "viscoelastic", "velocity", "mass_velocity")}
+        fixed["viscoelastic"] = ModelRung("hooke + viscoelastic", "hooke", "viscoelastic", Fraction(1), Fraction(1, 2))
+    else:
+        every = [ModelRung("hertz + tsuji", normal, "tsuji", h, Fraction(1, 4)),
+                 ModelRung("hertz + viscoelastic", normal, "viscoelastic", h, Fraction(1, 2)),
+                 ModelRung("hertz + velocity", normal, "velocity", h, Fraction(0))]
+        fixed = {r.damping: r for r in every}
+        fixed["mass_velocity"] = ModelRung("hertz + mass_velocity", normal, "mass_velocity", h, Fraction(0))
+    return every if damping == "choose" else [fixed[damping]]
+
+
+def liggghts_rungs(model: str) -> list[ModelRung]:
+    """LIGGGHTS 3.8 model hertz sets its damping from a coefficientRestitution: one constant-e rung."""
+    return [ModelRung("hertz (coefficientRestitution)", model, "coefficientRestitution", Fraction(3, 2),
+                      Fraction(1, 4))]
+
+
+def scaled_eps(rung: ModelRung, end: str, omega, build: bool | None = None) -> tuple[np.ndarray, float]:
+    """eps at each Omega (0 where the overlap rule's attraction keeps the bodies together) and the
+    relative error bound of the evaluation. ``build``: as epsilon's (True for a caller that will
+    ask for many more points than this call holds, so that the master curves are built once)."""
+    om = np.asarray(omega, float)
+    try:
+        r = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=om, tol=EVAL_TOL, end=end, build=build)
+        return np.asarray(r.eps, float), float(r.error_bound)
+    except StickError:
+        pass
+    # the bodies stick below some Omega (the attraction wins where damping is strong): find where
+    # by bisection over the sorted Omegas, one point a call, then evaluate the rest at once
+    flat = om.ravel()
+    order = np.argsort(flat)
+    lo, hi = 0, flat.size
+    while lo < hi:
+        mid = (lo + hi) // 2
+        try:
+            epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=[flat[order[mid]]], tol=EVAL_TOL, end=end, build=build)
+            hi = mid
+        except StickError:
+            lo = mid + 1
+    out, bound = np.zeros(flat.size), 0.0
+    if lo < flat.size:
+        try:
+            r = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=flat[order[lo:]], tol=EVAL_TOL, end=end,
+                        build=build)
+        except StickError:   # not one boundary after all: point by point
+            for i in order[lo:]:
+                try:
+                    one = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=[flat[i]], tol=EVAL_TOL, end=end,
+                                  build=build)
+                except StickError:
+                    continue
+                out[i], bound = float(one.eps[0]), max(bound, float(one.error_bound))
+            return out.reshape(om.shape), bound
+        out[order[lo:]], bound = np.asarray(r.eps, float), float(r.error_bound)
+    return out.reshape(om.shape), bound
+
+
+@dataclass(frozen=True)
+class Fit:
+    """A rung fitted to a target over the scene's speeds: log C, eps on the check grid, the worst
+    deviation (absolute, evaluation bound included) and where, and whether it meets the tolerance.
+    ``reason`` says why a rung could not be fitted at all (then log_c is None)."""
+
+    rung: ModelRung
+    log_c: float | None
+    max_deviation: float
+    at_speed: float | None
+    accepted: bool
+    error_bound: float = math.inf
+    grid: tuple = ()
+    eps: tuple = ()
+    reason: str = ""
+
+    def omega(self, speeds) -> np.ndarray:
+        return np.exp(self.log_c) * np.asarray(speeds, float) ** float(self.rung.k)
+
+    def as_dict(self) -> dict:
+        return {"name": self.rung.name, "damping": self.rung.damping, "alpha": str(self.rung.alpha),
+                "gamma": str(self.rung.gamma), "constant_e": self.rung.constant_e,
+                "max_deviation": self.max_deviation, "at_speed": self.at_speed, "accepted": self.accepted,
+                **({"reason": self.reason} if self.reason else {})}
+
+
+#: Points per round of the vectorised searches below: one evaluation of many Omegas costs about
+#: what one of a single Omega does (the ladder's overhead), so each round narrows by this factor.
+SEARCH_POINTS = 64
+SEARCH_ROUNDS = 12
+
+
+def _root(rung: ModelRung, end: str, target: float, build: bool | None) -> float:
+    """log Omega with eps(Omega) = target over LOG_OMEGA_RANGE (eps grows with Omega), by rounds
+    of SEARCH_POINTS evaluations that each keep the cell where eps crosses the target. Omega >= 1
+    first: below it the overlap rule comes near sticking, where only the integrator serves and
+    slowly, and few scenes ask for such eps."""
+    lo, hi = LOG_OMEGA_RANGE
+    for a, b in ((0.0, hi), (lo, 0.0)):
+        s = np.linspace(a, b, SEARCH_POINTS + 1)
+        e = scaled_eps(rung, end, np.exp(s), build)[0] - target
+        if e[0] < 0.0 <= e[-1]:
+            break
+    else:
+        raise ParameterError("e", target, f"{rung.name} cannot reach it (its eps over Omega in [1e-4, 1e8] "
+                                          f"is {e[0] + target:.6g} to {e[-1] + target:.6g})")
+    for _ in range(SEARCH_ROUNDS):
+        i = int(np.argmax(e >= 0.0))
+        a, b = s[i - 1], s[i]
+        if b - a <= 1e-13 * max(1.0, abs(a)):
+            break
+        s = np.linspace(a, b, SEARCH_POINTS + 1)
+        e = scaled_eps(rung, end, np.exp(s), build)[0] - target
+    i = int(np.argmax(e >= 0.0))
+    a, b, ea, eb = s[i - 1], s[i], e[i - 1], e[i]
+    return float(a + (b - a) * (-ea / (eb - ea))) if eb > ea else float(a)
+
+
+def _least_squares(rung: ModelRung, end: str, fv, fe, s0: float, width: float, build) -> float:
+    """log C minimising sum (eps(C v^k) - e)^2, by rounds of SEARCH_POINTS trial values around the
+    best so far (all points of a round in one evaluation)."""
+    k = float(rung.k)
+    logs = k * np.log(fv)
+    a = max(s0 - width, LOG_OMEGA_RANGE[0] - float(np.min(logs)))   # every trial Omega in the range
+    b = min(s0 + width, LOG_OMEGA_RANGE[1] - float(np.max(logs)))
+    best = s0
+    for _ in range(SEARCH_ROUNDS):
+        s = np.linspace(a, b, SEARCH_POINTS + 1)
+        om = np.exp(s)[:, None] * (fv ** k)[None, :]
+        e = scaled_eps(rung, end, om.ravel(), build)[0].reshape(om.shape)
+        j = int(np.argmin(np.sum((e - fe[None, :]) ** 2, axis=1)))
+        best, h = s[j], s[1] - s[0]
+        a, b = best - h, best + h
+        if h <= 1e-11 * max(1.0, abs(best)):
+            break
+    return float(best)
+
+
+def fit_rung(rung: ModelRung, end: str, target, grid, tolerance: float, build: bool | None = None) -> Fit:
+    """Calibrate ``rung`` to ``target`` (a scene_file.Target) and check it on ``grid`` (speeds);
+    ``build`` as :func:`scaled_eps`'s."""
+    fv, fe = target.fit_points(grid)
+    k = float(rung.k)
+    try:
+        # the constant-e law's least squares, and the speed-dependent laws' starting point
+        v_mid = math.exp(float(np.mean(np.log(fv))))
+        s0 = _root(rung, end, float(np.mean(fe)), build) - k * math.log(v_mid)
+    except ParameterError as err:
+        return Fit(rung, None, math.inf, None, False, reason=err.allowed)
+    if k != 0.0:
+        width = abs(k) * math.log(grid[-1] / grid[0]) + math.log(10.0)
+        s0 = _least_squares(rung, end, np.asarray(fv, float), np.asarray(fe, float), s0, width, build)
+    eps, bound = scaled_eps(rung, end, np.exp(s0) * np.asarray(grid) ** k, build)
+    dev = np.abs(eps - target.at(grid))
+    i = int(np.argmax(dev))
+    worst = float(dev[i] + bound * np.max(eps))
+    return Fit(rung, float(s0), worst, float(grid[i]), worst <= tolerance, float(bound * np.max(eps)),
+               tuple(float(v) for v in grid), tuple(float(e) for e in eps))

@@ -1,0 +1,247 @@
+"""Scenes (issue 26): the scene file's one-line refusals, the ladder of contact models, the round
+trip of every calibrated setting, and the time step, each checked by a second method (the
+reference integrator, the velocity-Verlet scheme LAMMPS runs)."""
+
+from __future__ import annotations
+
+import io
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+import yaml
+
+from restitution.cli import main
+from restitution.dem.codes import Pair, lammps_contact, liggghts_contact
+from restitution.dem.contact import Contact
+from restitution.dem.model_ladder import fit_rung, lammps_rungs
+from restitution.dem.scene import answer_scene
+from restitution.dem.scene_file import scene_from_dict
+from restitution.dem.timestep import verlet_eps
+
+ROOT = Path(__file__).resolve().parents[2]
+SMALL = ROOT / "scenes" / "small.yaml"
+
+
+def _small() -> dict:
+    return yaml.safe_load(SMALL.read_text().replace("e10", "e+10").replace("e11", "e+11").replace("e7", "e+7"))
+
+
+def _run(argv):
+    out = io.StringIO()
+    return main(argv, out=out), out.getvalue()
+
+
+# ------------------------------------------------------------------------ refusals: one line, exit 2
+def _set(path, value):
+    def change(d):
+        node = d
+        for key in path[:-1]:
+            node = node[key]
+        node[path[-1]] = value
+    return change
+
+
+REFUSALS = [
+    ("negative radius", _set(["species", 0, "radius"], -1e-3), "species[g].radius"),
+    ("Poisson ratio 0.5", _set(["materials", "glass", "nu"], 0.5), "materials.glass.nu"),
+    ("speed range reversed", _set(["speeds"], [5.0, 0.05]), "speeds"),
+    ("e = 1", _set(["targets", 0, "e"], 1.0), "targets[0].e"),
+    ("e = 0", _set(["targets", 0, "e"], 0.0), "targets[0].e"),
+    ("e above 1 in a table", _set(["targets", 1, "table"], [[0.1, 0.9], [1.0, 1.2]]), "targets[1].table[1][1]"),
+    ("an unknown code option", _set(["options", "limitForce"], True), "options.limitForce"),
+    ("a made-up option", _set(["options", "stiff"], 1), "options.stiff"),
+    ("an unknown normal model", _set(["options", "normal"], "jkr"), "options.normal"),
+    ("a tolerance no method guarantees", _set(["tolerance"], 1e-12), "tolerance"),
+    ("a table with one point", _set(["targets", 1, "table"], [[1.0, 0.9]]), "targets[1].table"),
+    ("a missing target", lambda d: d["targets"].pop(0), "targets"),
+    ("an unknown material", _set(["species", 0, "material"], "gold"), "species[g].material"),
+]
+
+
+@pytest.mark.parametrize("label, change, field", REFUSALS, ids=[r[0] for r in REFUSALS])
+def test_a_bad_scene_is_one_line_naming_the_field_exit_2_nothing_written(tmp_path, capsys, label, change, field):
+    d = _small()
+    change(d)
+    path = tmp_path / "bad.yaml"
+    path.write_text(yaml.safe_dump(d))
+    out_dir = tmp_path / "out"
+    status, printed = _run(["scene", str(path), "--out", str(out_dir)])
+    err = capsys.readouterr().err
+    assert status == 2 and printed == "" and not out_dir.exists(), (label, err)
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    assert err.startswith(f"restitution: {field} = "), err
+
+
+def test_numbers_in_yaml_1_2_form_are_numbers():
+    # the example files write 6.3e10 (text to YAML 1.1) and the schema would refuse it as a string
+    from restitution.dem.scene_file import read_scene
+    scene = read_scene(SMALL)
+    assert scene.materials["glass"]["E"] == 6.3e10 and scene.types[0].radius == 1e-3
+
+
+def test_types_are_numbered_in_file_order_one_per_radius():
+    scene = scene_from_dict(_small())
+    assert [(t.number, t.name, t.radius) for t in scene.types[:3]] == [(1, "g#1", 1e-3), (2, "g#2", 2e-3),
+                                                                      (3, "s#1", 1e-3)]
+
+
+# ------------------------------------------------------------------------------- the model ladder
+PAIR = Pair.spheres(1e-3, 1e-3, 2500.0)
+
+
+def _viscoelastic_table(lo, hi):
+    """'Measured' eps of a Kuwabara-Kono material (LAMMPS hertz/material + damping viscoelastic),
+    by the reference integrator: eps falls by about 0.1 from 0.01 to 10 m/s."""
+    c = lammps_contact(PAIR, normal="hertz/material", E=5e7, nu=0.3, damping="viscoelastic", eta_n0=3e7,
+                       limit_damping=True)
+    speeds = np.geomspace(lo, hi, 5)
+    return c, [[float(v), c.eps(float(v))] for v in speeds]
+
+
+def _scene(lo, hi, tolerance=0.01):
+    _, table = _viscoelastic_table(lo, hi)
+    return scene_from_dict({
+        "name": "kk", "code": "lammps", "tolerance": tolerance, "speeds": [lo, hi], "check_points": 200,
+        "options": {"normal": "hertz/material", "damping": "choose", "limit_damping": True},
+        "materials": {"m": {"E": 5e7, "nu": 0.3, "density": 2500.0}},
+        "species": [{"name": "p", "material": "m", "radius": 1e-3}],
+        "targets": [{"pair": ["m", "m"], "table": table}]})
+
+
+def test_the_cheapest_rung_is_rejected_over_a_wide_range():
+    scene = _scene(0.01, 10.0)
+    c = answer_scene(scene)["contacts"][0]
+    tsuji, kk = c["rungs"][0], c["rungs"][1]
+    assert tsuji["name"] == "hertz + tsuji" and not tsuji["accepted"] and tsuji["max_deviation"] > 0.03
+    assert kk["accepted"] and c["chosen"] == "hertz + viscoelastic"
+    # the material is Kuwabara-Kono: least squares on its table gives back its own eps at the
+    # measured points (between them, the table's interpolation in log speed differs by ~1e-3)
+    target = scene.target("m", "m")
+    kk_fit = fit_rung(lammps_rungs("hertz/material", "choose")[1], "force", target, scene.check_grid(), 0.01)
+    speeds, measured = (np.array(col) for col in zip(*target.table))
+    got = [Contact("3/2", "1/2", math.exp(kk_fit.log_c), 1.0, "force").eps(float(v))   # Omega = C v^k
+           for v in speeds]
+    assert np.max(np.abs(np.array(got) - measured)) < 1e-7
+    # the rejection, by a second method: tsuji's constant eps at the worst speed, by the reference
+    # integrator, against the target there
+    fit = fit_rung(lammps_rungs("hertz/material", "choose")[0], "force", target, scene.check_grid(), 0.01)
+    ref = Contact("3/2", "1/4", 1.0, math.exp(-fit.log_c / 2), "force").eps(1.0)
+    assert abs(abs(ref - target.at([tsuji["at_speed"]])[0]) - tsuji["max_deviation"]) < 1e-9
+
+
+def test_the_cheapest_rung_is_accepted_over_a_narrow_range():
+    c = answer_scene(_scene(0.8, 1.2))["contacts"][0]
+    assert [r["name"] for r in c["rungs"]] == ["hertz + tsuji"] and c["chosen"] == "hertz + tsuji"
+    assert 0.0 < c["max_deviation"] <= 0.01
+
+
+@pytest.fixture(scope="module")
+def small():
+    from restitution.dem.scene_file import read_scene
+    return answer_scene(read_scene(SMALL))
+
+
+def test_every_calibrated_contact_reaches_its_target_round_trip(small):
+    """From the setting as the input line prints it: eps of the library's own evaluation within
+    1e-9 of the fit; for constant targets, the reference integrator's eps within 1e-9 of e."""
+    types = {t["number"]: t for t in small["types"]}
+    targets = {frozenset(t["pair"]): t for t in small["targets"]}
+    for c in small["contacts"]:
+        assert c["round_trip"] <= 1e-9, c["a"]
+        t = targets[frozenset(c["materials"])]
+        if "e" in t and c["chosen"] == "hertz + tsuji":
+            a = types[c["types"][0]]
+            if c["types"][1] == "wall":
+                continue
+            b = types[c["types"][1]]
+            pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
+            contact = lammps_contact(pair, **c["setting"])
+            assert abs(contact.eps(c["speeds"][0]) - t["e"]) <= 1e-9
+
+
+def test_the_time_step_keeps_the_dem_schemes_error_within_the_tolerance(small):
+    """Velocity Verlet (LAMMPS' scheme, restitution.dem.timestep) at the scene's dt, at each
+    listed speed of a few contacts: eps within the tolerance of the exact eps."""
+    types = {t["number"]: t for t in small["types"]}
+    for c in small["contacts"][:6]:
+        a, b = types[c["types"][0]], types[c["types"][1]]
+        contact = lammps_contact(Pair.spheres(a["radius"], b["radius"], a["density"], b["density"]), **c["setting"])
+        for g, e in zip(c["speeds"], c["eps"]):
+            assert abs(verlet_eps(contact, g, c["dt"]) - e) <= small["tolerance"], (c["a"], c["b"], g)
+
+
+def test_json_has_the_fields_the_issue_lists(tmp_path):
+    status, text = _run(["scene", str(SMALL), "--json", "--out", str(tmp_path / "o")])
+    assert status == 0
+    res = json.loads(text)
+    assert len(res["contacts"]) == 21 + 6
+    for c in res["contacts"]:
+        for key in ("a", "b", "rungs", "chosen", "input_lines", "types", "speeds", "eps", "error_bound",
+                    "contact_time", "dt"):
+            assert key in c, key
+        assert all({"name", "max_deviation", "accepted"} <= set(r) for r in c["rungs"])
+    pc = [ln for ln in res["input_lines"] if ln.startswith("pair_coeff")]
+    assert len(pc) == 21 and pc[0].startswith("pair_coeff 1 1 hertz/material")
+    assert sorted(p.name for p in (tmp_path / "o").iterdir()) == ["input.lammps", "scene.json", "table.txt"]
+    assert json.loads((tmp_path / "o" / "scene.json").read_text())["input_lines"] == res["input_lines"]
+
+
+def test_a_contact_no_rung_meets_gets_no_line_and_exit_status_1(tmp_path):
+    """damping fixed to tsuji (constant e) against a table that falls by 0.2: no model within 0.01,
+    said in the table and the JSON, no input line for it, exit status 1."""
+    d = _small()
+    d["options"]["damping"] = "tsuji"
+    d["targets"][1]["table"] = [[0.1, 0.95], [5.0, 0.75]]
+    path = tmp_path / "steep.yaml"
+    path.write_text(yaml.safe_dump(d))
+    status, text = _run(["scene", str(path), "--json"])
+    res = json.loads(text)
+    unmet = [c for c in res["contacts"] if c["chosen"] is None]
+    assert status == 1 and not res["met"] and unmet
+    assert all(set(c["materials"]) == {"glass", "steel"} and c["input_lines"] == [] for c in unmet)
+    assert all(r["max_deviation"] > 0.01 and not r["accepted"] for c in unmet for r in c["rungs"])
+    assert not any(ln.startswith("pair_coeff 1 3 ") for ln in res["input_lines"])
+    status, table = _run(["scene", str(path)])
+    assert status == 1 and "none meets the tolerance" in table
+
+
+def _liggghts_scene(limit_force: bool) -> dict:
+    return {"name": "lig", "code": "liggghts", "tolerance": 0.01, "speeds": [0.1, 2.0], "check_points": 100,
+            "options": {"model": "hertz", "limitForce": limit_force},
+            "materials": {"glass": {"E": 6.3e10, "nu": 0.22, "density": 2500},
+                          "steel": {"E": 2.0e11, "nu": 0.29, "density": 7800}},
+            "species": [{"name": "g", "material": "glass", "radius": [1e-3, 2e-3]},
+                        {"name": "s", "material": "steel", "radius": 1.5e-3}],
+            "walls": ["steel"],
+            "targets": [{"pair": ["glass", "glass"], "e": 0.9}, {"pair": ["glass", "steel"], "e": 0.85},
+                        {"pair": ["steel", "steel"], "e": 0.8}]}
+
+
+@pytest.mark.parametrize("limit_force", [False, True], ids=["limitForce off", "limitForce on"])
+def test_liggghts_scene_matrices_and_the_typed_e(limit_force):
+    """LIGGGHTS hertz: one constant-e rung; walls get atom types after the particles'. With
+    limitForce off the engine gives eps = the typed e exactly (measured in LIGGGHTS,
+    tests/library/test_dem_liggghts.py), so the calibrated e must be the target; with it on, the e is below
+    the target and the reference integrator of the setting gives the target back."""
+    res = answer_scene(scene_from_dict(_liggghts_scene(limit_force)))
+    assert res["met"] and len(res["contacts"]) == 6 + 3
+    walls = [c for c in res["contacts"] if c["b"].startswith("wall:")]
+    assert [c["types"] for c in walls] == [[1, 4], [2, 4], [3, 4]]
+    target = {frozenset(("glass",)): 0.9, frozenset(("glass", "steel")): 0.85, frozenset(("steel",)): 0.8}
+    types = {t["number"]: t for t in res["types"]}
+    for c in res["contacts"]:
+        e, want = c["setting"]["e"], target[frozenset(c["materials"])]
+        assert (abs(e - want) <= 1e-9) if not limit_force else (e < want - 1e-3)
+        if c["b"].startswith("wall:"):
+            continue
+        a, b = types[c["types"][0]], types[c["types"][1]]
+        contact = liggghts_contact(Pair.spheres(a["radius"], b["radius"], a["density"], b["density"]),
+                                   **c["setting"])
+        assert abs(contact.eps(1.0) - want) <= 1e-9
+    m3 = next(ln for ln in res["input_lines"] if "coefficientRestitution" in ln and ln.startswith("fix")).split()
+    n = int(m3[6])
+    matrix = np.array(m3[7:], float).reshape(n, n)
+    assert n == 4 and np.array_equal(matrix, matrix.T) and matrix[0, 2] == res["contacts"][2]["setting"]["e"]

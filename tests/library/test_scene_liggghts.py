@@ -1,0 +1,43 @@
+"""A LIGGGHTS scene's generated lines in the real engine (Debian package liggghts): the
+fix property/global matrices of every atom type, two spheres colliding head-on, at the scene's time
+step within its tolerance of the predicted eps, and extrapolated to dt = 0 within 1e-6.
+
+Only contacts with atom type 1: LIGGGHTS refuses a system whose atom types in use do not start at 1
+("Atom types must start from 1 for granular simulations"), and each run holds just the two spheres.
+"""
+
+import pytest
+
+from restitution.dem.codes import Pair
+from restitution.dem.extrapolate import richardson
+from restitution.dem.liggghts import available, liggghts_eps_runs
+from restitution.dem.scene import answer_scene
+from restitution.dem.scene_file import scene_from_dict
+
+from test_scene import _liggghts_scene
+
+pytestmark = [pytest.mark.dem, pytest.mark.slow,
+              pytest.mark.skipif(not available(), reason="LIGGGHTS not installed (Debian package liggghts)")]
+
+
+@pytest.mark.parametrize("limit_force", [False, True], ids=["limitForce off", "limitForce on"])
+def test_liggghts_gives_the_predicted_eps(limit_force):
+    res = answer_scene(scene_from_dict(_liggghts_scene(limit_force)))
+    n = len(res["types"]) + len({c["types"][1] for c in res["contacts"] if c["b"].startswith("wall:")})
+    lines = "\n".join([f"create_box {n} box"] + [ln for ln in res["input_lines"] if not ln.startswith("#")])
+    types = {t["number"]: t for t in res["types"]}
+    checked = 0
+    for c in res["contacts"]:
+        if c["b"].startswith("wall:") or c["types"][0] != 1:
+            continue
+        a, b = types[c["types"][0]], types[c["types"][1]]
+        pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
+        for i in (0, len(c["speeds"]) - 1):
+            g, t_c, predicted = c["speeds"][i], c["contact_time"][i], c["eps"][i]
+            at = tuple(c["types"])
+            eps = liggghts_eps_runs(pair, [(lines, g, c["dt"], 1.5 * t_c, at)]
+                                    + [(lines, g, t_c / 1000 / m, 1.5 * t_c, at) for m in (1, 2, 4)])
+            assert abs(eps[0] - predicted) <= res["tolerance"], (c["a"], c["b"], g, eps[0], predicted)
+            assert abs(richardson(*eps[1:], c["gamma"]) / predicted - 1) <= 1e-6, (c["a"], c["b"], g)
+            checked += 1
+    assert checked == 6
