@@ -379,6 +379,7 @@ def config_cases(draw):
     base = yaml.safe_load((ROOT / "config.yaml").read_text())
     config = copy.deepcopy(base)
     must_refuse = False
+    bad = {}   # path -> is the value now there surely refused (a later mutation may replace or delete it)
     for _ in range(draw(st.integers(1, 3))):
         leaves = [p for p, v in _paths(config) if not isinstance(v, (dict, list))]
         if not leaves:
@@ -390,9 +391,10 @@ def config_cases(draw):
         kind = draw(st.sampled_from(["bad", "delete", "unknown", "reserved", "same"]))
         if kind == "bad":
             parent[path[-1]] = draw(st.sampled_from(BAD_VALUES))
-            must_refuse |= _surely_bad(path, parent[path[-1]])
+            bad[path] = _surely_bad(path, parent[path[-1]])
         elif kind == "delete" and isinstance(parent, dict):
             del parent[path[-1]]
+            bad.pop(path, None)
         elif kind == "unknown" and isinstance(parent, dict):
             parent["surely_not_a_field"] = 1
             must_refuse = True
@@ -400,7 +402,7 @@ def config_cases(draw):
             config["variants"][0]["name"] = draw(st.sampled_from(["paper", "figures", "bench", "dem",
                                                                   "stability", "fuzz"]))
             must_refuse = True
-    return config, must_refuse
+    return config, must_refuse or any(bad.values())
 
 
 def _surely_bad(path, value) -> bool:

@@ -246,3 +246,17 @@ def test_at_the_edge_of_sticking_a_stalled_return_is_refused_in_one_line(capsys)
         assert main([cmd, "--alpha", "5", "--gamma", "1/3", "--omega", "2.41545761", "--end", "overlap"]) == 2
         err = capsys.readouterr().err.strip()
         assert "\n" not in err and "edge of sticking" in err
+
+
+@pytest.mark.parametrize("omega", [1e8, 1e10])
+def test_near_the_elastic_limit_the_overlap_rule_keeps_its_widened_bound(omega, tmp_path, monkeypatch):
+    """Found by make fuzz: for alpha = 8, gamma = 1 both double-precision integrators were up to 3.3
+    (collide) and 7.7 (compiled) times over their plain bound at Omega >= 1e8."""
+    monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
+    truth = float(reference_collision("8", "1", omega, digits=24, end="overlap").eps)
+    for rtol in (1e-10, 1e-12, 1e-14):
+        got = collide("8", "1", omega, rtol=rtol, end="overlap")
+        assert math.isclose(got.eps, truth, rel_tol=got.error_bound), rtol
+    for tol in (1e-9, 1e-12):
+        res = restitution.epsilon(alpha="8", gamma="1", omega=[omega], tol=tol, end="overlap", build=False)
+        assert res.error_bound <= tol and math.isclose(res.eps[0], truth, rel_tol=res.error_bound), tol

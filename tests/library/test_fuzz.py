@@ -65,3 +65,19 @@ def test_random_config_mutations_are_refused_in_one_line_or_accepted(case):
 def test_a_relation_rung_forced_under_the_overlap_rule_is_refused_in_one_line(argv):
     rec = F.check_argv_case(argv, True)
     assert rec["status"] == "refused", rec["detail"]
+
+
+@pytest.mark.parametrize("where, value", [(("variants", 2, "D1"), 10 ** 400), (("variants", 1, "D1"), -(10 ** 400)),
+                                          (("compare", "omega_max"), 10 ** 309)])
+def test_an_integer_beyond_double_range_in_the_config_is_refused_in_one_line(where, value):
+    """Found by make fuzz: YAML reads 1000...0 exactly, as an int; it passed every bound and overflowed
+    (OverflowError traceback) where it was used."""
+    import yaml
+
+    config = yaml.safe_load((F.ROOT / "config.yaml").read_text())
+    node = config
+    for key in where[:-1]:
+        node = node[key]
+    node[where[-1]] = value
+    rec = F.check_config_case(config, True)
+    assert rec["status"] == "refused", rec["detail"]

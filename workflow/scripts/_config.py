@@ -72,6 +72,8 @@ def _finite_range(schema) -> str:
     return f"{text} ({description})" if description else text
 
 
+_DOUBLE_MAX = 1.7976931348623157e308
+
 #: $defs whose values a later, more specific check reads (exponents: restitution.core.exponents,
 #: whose message gives the allowed rationals); the walk below leaves them to it.
 _CHECKED_ELSEWHERE = ("#/$defs/exponent",)
@@ -89,8 +91,11 @@ def _non_finite(node, schema, root, path=()):
     resolved = _resolve(schema, root) if schema is not None else None
     if resolved is not None and resolved.get("type") == "object" and "properties" not in resolved:
         return None
-    if isinstance(node, float) and not math.isfinite(node):
-        return path, node, _finite_range(_number_branch(schema, root) if schema is not None else None)
+    # an integer beyond double range (YAML reads 1000...0 exactly) overflows where it is used
+    beyond = isinstance(node, int) and not isinstance(node, bool) and abs(node) > _DOUBLE_MAX
+    if beyond or (isinstance(node, float) and not math.isfinite(node)):
+        shown = f"{'-' if node < 0 else ''}{str(abs(node))[0]}e{len(str(abs(node))) - 1}" if beyond else node
+        return path, shown, _finite_range(_number_branch(schema, root) if schema is not None else None)
     if isinstance(node, dict):
         obj = _object_branch(resolved, root) if resolved is not None else None
         props = obj.get("properties", {}) if obj is not None else {}

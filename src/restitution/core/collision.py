@@ -505,7 +505,7 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
         eps = 1.0 - loss
     trajectory = sample(pieces, t_eval, last.tau) if t_eval is not None else None
     plain = ACCURACY_FACTOR * max(rtol, SOLVER_RTOL_FLOOR) + ACCURACY_FLOOR
-    bound = plain * float(conditioning(ex, None, rule, eps))
+    bound = plain * float(conditioning(ex, None, rule, eps, omega))
     loss_bound = max(plain, bound * eps / loss) if 1.0 - eps >= BY_SUBTRACTION else plain
     return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
                      float(last.tau), float(x_c), end, rtol, trajectory, loss, rule, bound, loss_bound)

@@ -8,7 +8,8 @@ import numpy as np
 from .exponents import as_exponents
 from .results import end_rule
 
-__all__ = ["ACCURACY_FACTOR", "ACCURACY_FLOOR", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "conditioning"]
+__all__ = ["ACCURACY_FACTOR", "ACCURACY_FLOOR", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "ELASTIC_START",
+           "conditioning"]
 
 #: collide's stated accuracy, relative, in eps and in 1 - eps: ACCURACY_FACTOR * rtol + ACCURACY_FLOOR,
 #: times conditioning(...) under the overlap rule near a sticking boundary.
@@ -26,18 +27,28 @@ STICK_CONDITION = 0.06
 #: grows with the logarithm instead: measured <= 64 at ln(1/eps) = 58, 9 at 31, 2.4 at 18 for
 #: (1, 0) and (2, 1/2); (ln(1/eps) / SELF_SIMILAR_CONDITION)^3 covers it by 2.4 or more.
 SELF_SIMILAR_CONDITION = 10.0
+#: Under the overlap rule near the elastic limit (alpha > gamma, large Omega) both double-precision
+#: integrators lose relative accuracy with Omega for large alpha: measured against mpmath, error /
+#: (10 rtol + floor) up to 2.0 at Omega = 1e8, 3.3 at 1e10 (collide, alpha = 8, gamma = 1), 7.7 at
+#: 1.9e10 and 7.5 at 1e12 (the compiled integrator), 0.46 at 1e6; (5, 0), (6, 1/2), (3, 1/3) and
+#: (3/2, 1/2) stay lower. (Omega / ELASTIC_START)^(1/3) covers every one by 2.3 or more.
+ELASTIC_START = 1e6
 #: Below this eps counts as this (the factor stays finite for an eps that underflowed).
 TINY = 1e-300
 
 
-def conditioning(alpha, gamma, end: str, eps) -> np.ndarray:
-    """The factor by which a double-precision integration's relative error in eps grows near the
-    overlap rule's sticking boundary (1 elsewhere): see STICK_CONDITION. It depends on the answer,
-    so a bound stated with it is checked after the evaluation (fast.ladder does, and so collide)."""
+def conditioning(alpha, gamma, end: str, eps, omega) -> np.ndarray:
+    """The factor by which a double-precision integration's relative error in eps grows under the
+    overlap rule near a sticking boundary (STICK_CONDITION) and near the elastic limit
+    (ELASTIC_START); 1 elsewhere. It depends on the answer, so a bound stated with it is known
+    after the evaluation (fast.ladder checks it then; collide states it)."""
     ex = as_exponents(alpha, gamma)
     e = np.maximum(np.asarray(eps, dtype=float), TINY)
-    if end_rule(end) != "overlap" or ex.alpha < 2 * ex.gamma + 1:
+    if end_rule(end) != "overlap" or ex.alpha <= ex.gamma:
         return np.ones_like(e)
+    elastic = np.maximum(1.0, np.asarray(omega, dtype=float) / ELASTIC_START) ** (1.0 / 3.0)
+    if ex.alpha < 2 * ex.gamma + 1:
+        return elastic * np.ones_like(e)
     if ex.alpha > 2 * ex.gamma + 1:
-        return np.maximum(1.0, STICK_CONDITION / e)
-    return np.maximum(1.0, (np.log(1.0 / e) / SELF_SIMILAR_CONDITION) ** 3)
+        return elastic * np.maximum(1.0, STICK_CONDITION / e)
+    return elastic * np.maximum(1.0, (np.log(1.0 / e) / SELF_SIMILAR_CONDITION) ** 3)

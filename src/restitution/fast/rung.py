@@ -168,7 +168,7 @@ class Rung:
         reason = "" if math.isfinite(b) else "no finite measured error over these Omegas"
         widen = None
         if self.conditioned:
-            widen = lambda eps: float(np.max(conditioning(req.ex, None, req.end, eps)))  # noqa: E731
+            widen = lambda eps: float(np.max(conditioning(req.ex, None, req.end, eps, req.omega)))  # noqa: E731
         return Quote(self.name, b, self.price(req), setting, reason,
                      run=lambda om: self.evaluate(req, built, setting, om),
                      coefficients=self.coefficients(req, built), widen=widen)
