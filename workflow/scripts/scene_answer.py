@@ -14,7 +14,11 @@ from restitution.dem.scene import answer_scene
 from restitution.dem.scene_file import read_scene
 
 start(snakemake)
+
+# %% the answer: every contact of the scene, its cheapest model within the tolerance
 res = answer_scene(read_scene(snakemake.input.scene))
+
+# %% the files
 write_text(snakemake.output.json, json.dumps(res, separators=(", ", ": ")) + "\n")
 write_text(snakemake.output.lines, "\n".join(res["input_lines"]) + "\n")
 write_text(snakemake.output.table, scene_table(res))
