@@ -446,6 +446,8 @@ class Ladder:
             q = next((q for q in mine if q.run is not None), mine[0])
             if q.run is None:
                 raise ParameterError("method", method, f"not available here: {q.reason or 'needs a build'}")
+            if not math.isfinite(q.bound):   # an answer without a bound is no answer (even with no tol)
+                raise ParameterError("method", method, f"states no bound over these Omegas: {q.setting or q.reason}")
             if checked and not q.bound <= tol:
                 raise ParameterError("tol", tol, f"method {method} has bound {q.bound:.3g} over these Omegas")
             order = [q]
