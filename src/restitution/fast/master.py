@@ -35,7 +35,7 @@ from ..core import asymptotics as asy
 from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
 from .integrator import END_FAILED, END_STUCK, collide_fast
-from .panels import chebyshev_panels_eval
+from .panels import PanelRange, chebyshev_panels_eval
 from .rung import INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR, integrator_bound
 
 __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps", "mpmath_check",
@@ -211,7 +211,7 @@ def _fit_elastic_bound(E: asy.ElasticLimit, om: np.ndarray, ref: np.ndarray) -> 
 
 # ------------------------------------------------------------------------------ the curve
 @dataclass
-class MasterCurve:
+class MasterCurve(PanelRange):
     """Chebyshev panels of ln eps on [exp(s0), exp(s0 + npan width)], expansions beyond."""
 
     alpha: Fraction
@@ -228,15 +228,6 @@ class MasterCurve:
     checks: dict = field(default_factory=dict)
     grid_log10_omega: np.ndarray = field(default_factory=lambda: np.empty(0))
     grid_eps: np.ndarray = field(default_factory=lambda: np.empty(0))
-
-    # -- range
-    @property
-    def omega_lo(self) -> float:
-        return math.exp(self.s0)
-
-    @property
-    def omega_hi(self) -> float:
-        return math.exp(self.s0 + self.coef.shape[0] * self.width)
 
     def _kernel_viscous(self) -> np.ndarray:
         if self.viscous.kind == "closed":

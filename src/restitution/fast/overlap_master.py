@@ -27,7 +27,7 @@ from numpy.polynomial import chebyshev as cheb
 from ..core.collision import StickError
 from ..core.exponents import as_exponents
 from .master import reference_eps
-from .panels import chebyshev_panels_eval
+from .panels import PanelRange, chebyshev_panels_eval
 from .rung import integrator_bound
 
 __all__ = ["OverlapCurve", "build_overlap_curve", "sticking_boundary", "OVERLAP_CURVE_VERSION",
@@ -75,7 +75,7 @@ def sticking_boundary(alpha, gamma, lo: float = OMEGA_LO, hi: float = OMEGA_HI) 
 
 
 @dataclass
-class OverlapCurve:
+class OverlapCurve(PanelRange):
     alpha: Fraction
     gamma: Fraction
     s0: float
@@ -85,13 +85,6 @@ class OverlapCurve:
     stick_below: float = 0.0
     checks: dict = field(default_factory=dict)
 
-    @property
-    def omega_lo(self) -> float:
-        return math.exp(self.s0)
-
-    @property
-    def omega_hi(self) -> float:
-        return math.exp(self.s0 + self.coef.shape[0] * self.width)
 
     def covers(self, lo: float, hi: float) -> bool:
         return self.omega_lo <= lo and hi <= self.omega_hi

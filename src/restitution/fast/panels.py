@@ -12,7 +12,7 @@ import numpy as np
 
 from .jit import njit
 
-__all__ = ["chebyshev_panels_eval"]
+__all__ = ["PanelRange", "chebyshev_panels_eval"]
 
 
 @njit(cache=True)
@@ -79,3 +79,16 @@ def chebyshev_panels_eval(omegas, s0: float, width: float, coef: np.ndarray, vis
                  np.ascontiguousarray(viscous, dtype=np.float64),
                  np.ascontiguousarray(elastic, dtype=np.float64), out)
     return out
+
+
+class PanelRange:
+    """The Omega range of panels of width ``width`` in s = ln Omega from ``s0``, one per row of
+    ``coef`` (both master curves, force and overlap rule, are laid out so)."""
+
+    @property
+    def omega_lo(self) -> float:
+        return math.exp(self.s0)
+
+    @property
+    def omega_hi(self) -> float:
+        return math.exp(self.s0 + self.coef.shape[0] * self.width)
