@@ -65,7 +65,8 @@ def test_a_large_request_builds_the_curve_alone(tmp_path):
     assert r.method == "master"
     entries = [p.name for p in tmp_path.iterdir() if p.suffix != ".lock"]   # the per-entry build locks stay
     assert entries == [cache_path(lad.overlap_key, tmp_path).name]   # not the force bundle
-    assert "overlap rule's master curve" in err.getvalue()
+    # (whether the build is named on stderr depends on its measured time, over a second or not:
+    # the announcement has its own test with a priced build)
 
 
 @pytest.mark.parametrize("change", [
