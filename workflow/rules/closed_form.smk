@@ -3,7 +3,8 @@
 
 
 rule uniform_form:
-    """The uniform form of one variant (alpha > gamma), its errors over Omega and eps(g) from it."""
+    """The uniform forms of one variant (both end rules, where they exist), their errors over Omega and
+    eps(g) from the force rule's."""
     input:
         curve=rules.eps_compare.output.curves,
         src=lib("core.uniform", "fast.uniform_build"),
@@ -11,6 +12,8 @@ rule uniform_form:
     output:
         json="results/{variant}/closed_form/form.json",
         errors="results/{variant}/closed_form/errors.csv",
+        overlap_json="results/{variant}/closed_form/form_overlap.json",
+        overlap_errors="results/{variant}/closed_form/errors_overlap.csv",
         curve="results/{variant}/closed_form/eps_g.csv",
     params:
         exponents=exponents,
@@ -25,6 +28,8 @@ rule closed_form_section:
     input:
         forms=expand("results/{variant}/closed_form/form.json", variant=list(VARIANTS)),
         errors=expand("results/{variant}/closed_form/errors.csv", variant=list(VARIANTS)),
+        overlap_forms=expand("results/{variant}/closed_form/form_overlap.json", variant=list(VARIANTS)),
+        overlap_errors=expand("results/{variant}/closed_form/errors_overlap.csv", variant=list(VARIANTS)),
         curve=f"results/{MAIN}/closed_form/eps_g.csv",
         src=lib("core.asymptotics", "core.uniform", "core.collision"),
         code=code("closed_form_section.py") + ["workflow/scripts/common/latex.py"],

@@ -3,6 +3,7 @@
 #
 # For alpha > gamma the library fits the form and measures its bound on points it did not use
 # (restitution.fast.uniform_build); alpha = gamma has an exact closed form and alpha < gamma none.
+# Where gamma < alpha < 2 gamma + 1 the overlap end rule has its own form, built the same way.
 # One row per pair, as CSV and as the appendix's LaTeX table.
 
 # %%
@@ -34,21 +35,32 @@ for alpha, gamma in snakemake.params.pairs:
         row.update(form="uniform", n_coef=len(f.coef), sigma=f.sigma, m0=f.m0, m1=f.m1, bound_eps=f.bound_eps,
                    bound_one_minus_eps=f.bound_one_minus_eps, test_eps=m["test_eps"],
                    test_one_minus_eps=m["test_one_minus_eps"], selection_eps=m["selection_eps"])
+        try:
+            skeleton(alpha, gamma, "overlap")
+        except ParameterError:
+            row["overlap_form"] = "none (the bodies can stick)"
+        else:
+            o = build_uniform(alpha, gamma, end="overlap")
+            row.update(overlap_form="uniform", overlap_n_coef=len(o.coef), overlap_bound_eps=o.bound_eps,
+                       overlap_bound_one_minus_eps=o.bound_one_minus_eps)
     rows.append(row)
 table = pd.DataFrame(rows)
 write_csv(snakemake.output.csv, table)
 
 # %%
-lines = [r"\begin{tabular}{lllllll}", r"\toprule",
-         r"$\alpha$ & $\gamma$ & $(\sigma, m_0, m_1)$ & $n + 1$ & bound $\varepsilon$ & bound $1-\varepsilon$ & largest test error \\",
+lines = [r"\begin{tabular}{llllllll}", r"\toprule",
+         r"$\alpha$ & $\gamma$ & $(\sigma, m_0, m_1)$ & $n + 1$ & bound $\varepsilon$ & bound $1-\varepsilon$ & largest test error "
+         r"& overlap rule: $n + 1$, bounds \\",
          r"\midrule"]
 for r in rows:
     ab = f"{frac_tex(Fraction(r['alpha']))} & {frac_tex(Fraction(r['gamma']))}"
     if r["form"] == "uniform":
         lines.append(rf"{ab} & ({sci(r['sigma'], 3)}, {r['m0']}, {r['m1']}) & {r['n_coef']} & {sci(r['bound_eps'], 2)} & "
-                     rf"{sci(r['bound_one_minus_eps'], 2)} & {sci(max(r['test_eps'], r['test_one_minus_eps']), 2)} \\")
+                     rf"{sci(r['bound_one_minus_eps'], 2)} & {sci(max(r['test_eps'], r['test_one_minus_eps']), 2)} & "
+                     + (rf"{r['overlap_n_coef']}: {sci(r['overlap_bound_eps'], 2)}, {sci(r['overlap_bound_one_minus_eps'], 2)} \\"
+                        if r["overlap_form"] == "uniform" else r"sticks \\"))
     else:
         what = "exact closed form" if r["form"] == "exact" else "no uniform form (first viscous correction unknown)"
-        lines.append(rf"{ab} & \multicolumn{{5}}{{l}}{{{what}}} \\")
+        lines.append(rf"{ab} & \multicolumn{{6}}{{l}}{{{what}}} \\")
 lines += [r"\bottomrule", r"\end{tabular}"]
 write_text(snakemake.output.tex, "\n".join(lines) + "\n")

@@ -45,7 +45,6 @@ from fractions import Fraction
 from functools import lru_cache
 
 import numpy as np
-from scipy import integrate
 
 from .errors import ParameterError
 from .exponents import as_exponents
@@ -60,6 +59,9 @@ def _start(m: float, d: float, shift: float) -> float:
 
 
 def _integrate(a: float, g: float, rtol: float, shift: float) -> float:
+    # imported here: core.uniform reads this module, and a one-point eps call must not pay for scipy.integrate
+    from scipy import integrate
+
     d = a - g
     m = 2.0 * g + 1.0 - a
     s0 = _start(m, d, shift)

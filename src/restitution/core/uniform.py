@@ -1,4 +1,5 @@
-"""eps(Omega) in one closed form, exact to leading and first order in both limits (alpha > gamma).
+"""eps(Omega) in one closed form, exact to leading and first order in both limits (alpha > gamma),
+and one for the overlap end rule (gamma < alpha < 2 gamma + 1), exact to leading order in both.
 
 With eta = 1/eps, x = b Omega and u = tanh((sigma/2) ln x) = (x^sigma - 1)/(x^sigma + 1):
 
@@ -23,12 +24,27 @@ relative error of eta - 1, which bounds the relative error of eps and at most tw
 1 - eps. The shape (sigma, m0, m1) is chosen from a fixed small set by the error on points not
 used in the fit; the bound is stated from points used neither in the fit nor in that choice
 (:func:`restitution.fast.uniform_build.build_uniform`).
+
+Under the overlap rule (contact ends at x = 0, :mod:`restitution.core.overlap_limit`) fast impacts
+obey eps = C Omega^kv (kv = (gamma+1)/(2 gamma+1-alpha)) up to a correction ~ exp(-c/Omega), below
+1e-12 for Omega < 0.03 on the pairs measured, and the elastic limit 1 - eps ~ C1 Omega^(-A) is the
+force rule's. Hence another form (eta spans 40 decades, the correction is relative in both limits,
+and 1/eps = Omega^(-kv)/C has no "1 +" at small Omega):
+
+    eta = x^P/(1 + x^P) + K x^(-kv) (1 + x^P)^((kv - A)/P) exp[e^(-r/x) (1 - u)^m1 (a_0 T_0(u) + ... + a_n T_n(u))],
+
+P = OVERLAP_P, b = (C C1)^(1/(kv - A)) and K = b^kv / C fixed by the two limits (kv > A exactly when
+alpha > gamma), so that eps -> C Omega^kv (1 + O(Omega^(P+kv))) and 1 - eps -> C1 Omega^(-A); the
+envelope e^(-r/x) vanishes like the true correction, and eps > 0 for any coefficients. The shape is
+(sigma, r, m1). Its degree reaches 31, where the powers of u would need coefficients of 1e11
+(12 printed digits then change eps by 1e-4): it is stored in Chebyshev polynomials T_j(u) =
+cos(j arccos u). Where alpha >= 2 gamma + 1 the bodies can stick at small Omega and there is no such form.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import astuple, dataclass, field, fields, replace
 from fractions import Fraction
 
 import numpy as np
@@ -37,9 +53,13 @@ from numpy.polynomial import chebyshev as cheb
 from . import asymptotics as asy
 from .errors import ParameterError
 from .exponents import as_exponents
+from .overlap_limit import overlap_limit
 
-__all__ = ["UniformForm", "Skeleton", "skeleton", "fit_uniform", "SHAPES", "DEGREE", "FORM_RANGE",
-           "UNIFORM_VERSION"]
+__all__ = ["UniformForm", "Skeleton", "OverlapSkeleton", "skeleton", "fit_uniform", "SHAPES", "DEGREE",
+           "FORM_RANGE", "UNIFORM_VERSION", "END_RULES"]
+
+#: The end rules a form is made for (core.collision's ``end``).
+END_RULES = ("force", "overlap")
 
 #: Bumped whenever the form or its fit changes (cached forms of an older kind are rebuilt).
 UNIFORM_VERSION = 1
@@ -59,14 +79,26 @@ POWERS_M0 = (1, 2, 3, 4)
 POWERS_M1 = (1, 2, 3)
 #: The fitted term must fall at least like Omega^(-MARGIN A) on the elastic side.
 MARGIN = 1.5
+#: The overlap form: its power P, the envelope's rates r (times the creep law's decay rate in x,
+#: core.overlap_limit), its powers m1, and its degrees (more than the force form's: the onset
+#: exp(-c/Omega) is steep: bound 2.4e-5 at degree 31 for (3/2, 1/2), 6.5e-5 at 39 for (5/2, 1)), and
+#: a ridge on the coefficients: without it the envelope's dead zone at small x lets them grow to
+#: 1e8 (12 printed digits then moved eps by 2e-5); with it they stay below 1 and move it by 1e-12.
+OVERLAP_P = 4
+OVERLAP_RATES = (0.125, 0.25, 0.5)
+OVERLAP_M1 = (1, 2)
+OVERLAP_MAX_DEGREE = 39
+OVERLAP_SELECTION_TARGET = 3e-5
+OVERLAP_RIDGE = 1e-4
 #: Lawson iterations (weights of the least-squares fit made minimax).
 LAWSON_STEPS = 60
 
 
-def SHAPES(A: float) -> list[tuple[float, int, int]]:
-    """(sigma, m0, m1) candidates for this A: every combination with sigma m1 >= MARGIN A."""
+def SHAPES(A: float, margin: float = MARGIN) -> list[tuple[float, int, int]]:
+    """(sigma, m0, m1) candidates for this A: every combination with sigma m1 >= margin A (the
+    overlap form's fitted term is a relative correction already: margin 0)."""
     sig = sorted(set(SIGMAS) | {A})
-    return [(s, m0, m1) for s in sig for m0 in POWERS_M0 for m1 in POWERS_M1 if s * m1 >= MARGIN * A - 1e-12]
+    return [(s, m0, m1) for s in sig for m0 in POWERS_M0 for m1 in POWERS_M1 if s * m1 >= margin * A - 1e-12]
 
 
 @dataclass(frozen=True)
@@ -86,32 +118,69 @@ class Skeleton:
                     + (self.c_log * np.log1p(1.0 / x) + self.c3) / (1.0 + x) ** 2) / self.k
 
 
-def skeleton(alpha, gamma) -> Skeleton:
+@dataclass(frozen=True)
+class OverlapSkeleton:
+    """The overlap rule's fit-free parts, x = b Omega: w = x^P/(1 + x^P) and the factor
+    S = K x^(-kv) (1 + x^P)^((kv - A)/P) of the exponential; eta = w + S exp(fitted)."""
+
+    A: float
+    kv: float
+    b: float
+    K: float
+    decay: float   # the creep law's rate c (relative correction ~ exp(-c/Omega)), in x = b Omega
+
+    def parts(self, omega) -> tuple[np.ndarray, np.ndarray]:
+        x = self.b * np.asarray(omega, dtype=float)
+        with np.errstate(over="ignore", divide="ignore"):
+            lp = np.log1p(x ** OVERLAP_P)
+            w = np.exp(OVERLAP_P * np.log(x) - lp)
+            return w, np.exp(math.log(self.K) - self.kv * np.log(x) + (self.kv - self.A) / OVERLAP_P * lp)
+
+
+def _no_form(ex, why: str) -> ParameterError:
+    return ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}", why)
+
+
+def skeleton(alpha, gamma, end: str = "force") -> Skeleton | OverlapSkeleton:
+    """The fit-free part of the form for ``end``; ParameterError (saying why) where there is no form."""
     ex = as_exponents(alpha, gamma)
     if not ex.alpha > ex.gamma:
         why = ("alpha = gamma has an exact closed form (restitution.core.asymptotics.equal_exponents_eps)"
                if ex.alpha == ex.gamma else
                "for alpha < gamma the viscous limit's first correction is not known in closed form")
-        raise ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}", f"the uniform form needs alpha > gamma: {why}")
-    v = asy.viscous_limit(ex.alpha, ex.gamma)
+        raise _no_form(ex, f"the uniform form needs alpha > gamma: {why}")
     e = asy.elastic_limit(ex.alpha, ex.gamma)
-    A, k = e.A, v.k
+    A = e.A
+    if end == "overlap":
+        if not ex.alpha < 2 * ex.gamma + 1:
+            raise _no_form(ex, "the overlap rule's uniform form needs alpha < 2 gamma + 1 (otherwise the bodies "
+                               "stick at small Omega)")
+        lim = overlap_limit(ex.alpha, ex.gamma)
+        lnb = (math.log(lim.C) + math.log(e.C1)) / (lim.k - A)
+        b = math.exp(lnb)
+        return OverlapSkeleton(A, lim.k, b, math.exp(lim.k * lnb - math.log(lim.C)), lim.decay * b)
+    v = asy.viscous_limit(ex.alpha, ex.gamma)
+    k = v.k
     b = (k * e.C1) ** (1.0 / (1.0 - A))
     c3 = v.c_const + v.c_log * math.log(b) - (1.0 - A) * b - k
     return Skeleton(A, k, b, v.c_log, c3)
 
 
-def _u(sk: Skeleton, sigma: float, omega) -> np.ndarray:
+def _u(sk, sigma: float, omega) -> np.ndarray:
     return np.tanh(0.5 * sigma * np.log(sk.b * np.asarray(omega, dtype=float)))
 
 
-def _envelope(u: np.ndarray, m0: int, m1: int) -> np.ndarray:
-    return (1.0 + u) ** m0 * (1.0 - u) ** m1
+def _envelope(sk, u: np.ndarray, m0: int, m1: int, rate: float, omega) -> np.ndarray:
+    env = (1.0 + u) ** m0 * (1.0 - u) ** m1
+    if rate:
+        with np.errstate(divide="ignore"):
+            env = env * np.exp(-rate / (sk.b * np.asarray(omega, dtype=float)))
+    return env
 
 
-def _basis(sk: Skeleton, sigma: float, m0: int, m1: int, omega, degree: int = DEGREE) -> np.ndarray:
+def _basis(sk, sigma: float, m0: int, m1: int, rate: float, omega, degree: int = DEGREE) -> np.ndarray:
     u = _u(sk, sigma, omega)
-    return _envelope(u, m0, m1)[:, None] * cheb.chebvander(u, degree)
+    return _envelope(sk, u, m0, m1, rate, omega)[:, None] * cheb.chebvander(u, degree)
 
 
 @dataclass(frozen=True)
@@ -120,7 +189,7 @@ class UniformForm:
 
     alpha: Fraction
     gamma: Fraction
-    skel: Skeleton
+    skel: Skeleton | OverlapSkeleton
     sigma: float
     m0: int
     m1: int
@@ -128,45 +197,70 @@ class UniformForm:
     bound_eps: float = math.nan            # over FORM_RANGE
     bound_one_minus_eps: float = math.nan  # over [1, FORM_RANGE[1]]
     measured: dict = field(default_factory=dict)
+    end: str = "force"
+    rate: float = 0.0   # the overlap form's envelope e^(-rate/x) (0: none)
 
-    def eta_minus_one(self, omega) -> np.ndarray:
-        om = np.asarray(omega, dtype=float)
+    def _fitted(self, om: np.ndarray) -> np.ndarray:
         u = _u(self.skel, self.sigma, om)
+        if self.end == "overlap":
+            return _envelope(self.skel, u, self.m0, self.m1, self.rate, om) * cheb.chebval(u, self.coef)
         poly = np.zeros_like(u)
         for a in reversed(self.coef):
             poly = poly * u + a
-        return self.skel.eta_minus_one(om) + _envelope(u, self.m0, self.m1) * poly
+        return _envelope(self.skel, u, self.m0, self.m1, self.rate, om) * poly
+
+    def _eta_parts(self, omega) -> tuple[np.ndarray, np.ndarray]:
+        """eta as 1 + h (force) or w + S e^F (overlap): (the first term, the rest)."""
+        om = np.asarray(omega, dtype=float)
+        if self.end == "overlap":
+            w, S = self.skel.parts(om)
+            with np.errstate(over="ignore"):
+                return w, S * np.exp(self._fitted(om))
+        return np.ones_like(om), self.skel.eta_minus_one(om) + self._fitted(om)
+
+    def eta_minus_one(self, omega) -> np.ndarray:
+        first, rest = self._eta_parts(omega)
+        return rest - (1.0 - first)
 
     def eps(self, omega) -> np.ndarray:
-        return 1.0 / (1.0 + self.eta_minus_one(omega))
+        first, rest = self._eta_parts(omega)
+        return 1.0 / (first + rest)
 
     def one_minus_eps(self, omega) -> np.ndarray:
-        h = self.eta_minus_one(omega)
-        return h / (1.0 + h)
+        first, rest = self._eta_parts(omega)
+        return (rest - (1.0 - first)) / (first + rest)
 
     def coefficients(self) -> dict:
         """Every number of the form, by name (what a user types into their own code)."""
         s = self.skel
-        return {"k": s.k, "A": s.A, "b": s.b, "c_log": s.c_log, "c3": s.c3, "sigma": self.sigma,
-                "m0": self.m0, "m1": self.m1, "a": list(self.coef)}
+        if self.end == "overlap":
+            return {"end": "overlap", "kv": s.kv, "A": s.A, "b": s.b, "K": s.K, "decay": s.decay, "P": OVERLAP_P,
+                    "sigma": self.sigma, "r": self.rate, "m1": self.m1, "a": list(self.coef)}
+        return {"k": s.k, "A": s.A, "b": s.b, "c_log": s.c_log, "c3": s.c3, "sigma": self.sigma, "m0": self.m0,
+                "m1": self.m1, "a": list(self.coef)}
 
     def formula(self) -> str:
         """The form as one line of C/Python (W = Omega), with every constant written out."""
         s = self.skel
+        head = f"x={s.b!r}*W; u=tanh({0.5 * self.sigma!r}*log(x)); "
+        if self.end == "overlap":
+            P = OVERLAP_P
+            series = "+".join(f"{a!r}*cos({j}*t)" for j, a in enumerate(self.coef)).replace("+-", "-")
+            return head + (f"t=acos(u); eps=1/(pow(x,{P})/(1+pow(x,{P}))+{s.K!r}*pow(x,{-s.kv!r})"
+                           f"*pow(1+pow(x,{P}),{(s.kv - s.A) / P!r})*exp(exp({-self.rate!r}/x)*pow(1-u,{self.m1})*({series})));")
         poly = ""
         for a in reversed(self.coef):
             poly = f"({poly})*u{a:+.17g}" if poly else f"{a:.17g}"
-        return (f"x={s.b!r}*W; u=tanh({0.5 * self.sigma!r}*log(x)); "
-                f"eps=1/(1+({s.b!r}*pow(1+x,{1 - s.A!r})/x+({s.c_log!r}*log(1+1/x){s.c3:+.17g})/((1+x)*(1+x)))/{s.k!r}"
-                f"+pow(1+u,{self.m0})*pow(1-u,{self.m1})*({poly}));")
+        fitted = f"pow(1+u,{self.m0})*pow(1-u,{self.m1})*({poly})"
+        return head + (f"eps=1/(1+({s.b!r}*pow(1+x,{1 - s.A!r})/x+({s.c_log!r}*log(1+1/x){s.c3:+.17g})/((1+x)*(1+x)))/{s.k!r}"
+                       f"+{fitted});")
 
     def rounded(self, digits: int) -> "UniformForm":
         """The form with every number as printed to ``digits`` significant digits (what a reader types)."""
         r = lambda v: float(f"{v:.{digits - 1}e}")  # noqa: E731
         s = self.skel
-        return UniformForm(self.alpha, self.gamma, Skeleton(r(s.A), r(s.k), r(s.b), r(s.c_log), r(s.c3)),
-                           r(self.sigma), self.m0, self.m1, tuple(r(a) for a in self.coef),
-                           self.bound_eps, self.bound_one_minus_eps, self.measured)
+        return replace(self, skel=type(s)(*(r(v) for v in astuple(s))), sigma=r(self.sigma), rate=r(self.rate),
+                       coef=tuple(r(a) for a in self.coef))
 
     def as_dict(self) -> dict:
         return {"version": UNIFORM_VERSION, "alpha": str(self.alpha), "gamma": str(self.gamma),
@@ -179,22 +273,32 @@ class UniformForm:
         if d.get("version") != UNIFORM_VERSION:
             raise ValueError("uniform form version mismatch")
         ex = as_exponents(d["alpha"], d["gamma"])
-        sk = skeleton(ex.alpha, ex.gamma)
-        stored = Skeleton(float(d["A"]), float(d["k"]), float(d["b"]), float(d["c_log"]), float(d["c3"]))
+        end = d.get("end", "force")
+        sk = skeleton(ex.alpha, ex.gamma, end)
+        stored = type(sk)(*(float(d[f.name]) for f in fields(sk)))
         if stored != sk:   # the skeleton is derived, never read: a stored one must agree with it
             raise ValueError("stored skeleton constants differ from the derived ones")
-        return cls(ex.alpha, ex.gamma, sk, float(d["sigma"]), int(d["m0"]), int(d["m1"]),
+        if end == "overlap" and int(d["P"]) != OVERLAP_P:
+            raise ValueError("overlap form with another power P")
+        return cls(ex.alpha, ex.gamma, sk, float(d["sigma"]), int(d.get("m0", 0)), int(d["m1"]),
                    tuple(float(a) for a in d["a"]), float(d["bound_eps"]), float(d["bound_one_minus_eps"]),
-                   dict(d.get("measured", {})))
+                   dict(d.get("measured", {})), end, float(d.get("r", 0.0)))
 
 
-def _lawson(M: np.ndarray, y: np.ndarray, steps: int = LAWSON_STEPS) -> np.ndarray:
-    """Least squares of M c ~ y, reweighted towards the minimax solution (Lawson's algorithm)."""
+def _lawson(M: np.ndarray, y: np.ndarray, steps: int = LAWSON_STEPS, ridge: float = 0.0) -> np.ndarray:
+    """Least squares of M c ~ y, reweighted towards the minimax solution (Lawson's algorithm); with
+    ``ridge`` > 0 the coefficients' norm is penalised (ridge^2 |c|^2 against the mean squared error)."""
     w = np.full(y.size, 1.0 / y.size)
-    c = np.linalg.lstsq(M, y, rcond=None)[0]
-    for _ in range(steps):
+    damp = ridge * math.sqrt(1.0 / y.size) * np.eye(M.shape[1]) if ridge else np.empty((0, M.shape[1]))
+
+    def solve(w):
         sw = np.sqrt(w)
-        c = np.linalg.lstsq(M * sw[:, None], y * sw, rcond=None)[0]
+        return np.linalg.lstsq(np.vstack([M * sw[:, None], damp]), np.concatenate([y * sw, np.zeros(len(damp))]),
+                               rcond=None)[0]
+
+    c = solve(w)
+    for _ in range(steps):
+        c = solve(w)
         e = np.abs(M @ c - y)
         if not np.all(np.isfinite(e)) or e.sum() == 0:
             break
@@ -212,28 +316,45 @@ def rel_errors(form: UniformForm, omega, eps, one_minus_eps) -> tuple[float, flo
     return float(np.max(e_eps)), float(np.max(e_ome)) if e_ome.size else 0.0
 
 
-def fit_uniform(alpha, gamma, omega, eps, one_minus_eps, train, select) -> UniformForm:
-    """Fit the form to reference values: coefficients on ``train`` (a boolean mask), the shape
-    chosen by the largest relative error (eps, and 1 - eps for Omega >= 1) on ``select``. The
+def _shapes(sk, end: str) -> list[tuple[float, int, int, float]]:
+    """(sigma, m0, m1, rate) candidates."""
+    if end == "overlap":
+        sig = sorted(set(SIGMAS) | {sk.A})
+        return [(s, 0, m1, r * sk.decay) for s in sig for m1 in OVERLAP_M1 for r in OVERLAP_RATES]
+    return [(s, m0, m1, 0.0) for s, m0, m1 in SHAPES(sk.A)]
+
+
+def fit_uniform(alpha, gamma, omega, eps, one_minus_eps, train, select, end: str = "force") -> UniformForm:
+    """Fit the form for ``end`` to reference values: coefficients on ``train`` (a boolean mask), the
+    shape chosen by the largest relative error (eps, and 1 - eps for Omega >= 1) on ``select``. The
     returned form's bounds are still unset (they come from a third set of points)."""
     ex = as_exponents(alpha, gamma)
-    sk = skeleton(ex.alpha, ex.gamma)
+    sk = skeleton(ex.alpha, ex.gamma, end)
     om = np.asarray(omega, dtype=float)
     eps = np.asarray(eps, dtype=float)
     ome = np.asarray(one_minus_eps, dtype=float)
-    target = ome / eps                          # eta - 1, relative accuracy kept near eps = 1
-    resid = (target - sk.eta_minus_one(om)) / target
+    if end == "overlap":
+        # the log of what the exponential must be: linear in the coefficients, relative in eta
+        w, S = sk.parts(om)
+        resid, weight = np.log((1.0 / eps - w) / S), np.ones_like(om)
+        top, target_err, ridge = OVERLAP_MAX_DEGREE, OVERLAP_SELECTION_TARGET, OVERLAP_RIDGE
+    else:
+        weight = ome / eps                      # eta - 1, relative accuracy kept near eps = 1
+        resid = (weight - sk.eta_minus_one(om)) / weight
+        top, target_err, ridge = MAX_DEGREE, SELECTION_TARGET, 0.0
     best = None
-    for degree in range(DEGREE, MAX_DEGREE + 1, DEGREE_STEP):
-        for sigma, m0, m1 in SHAPES(sk.A):
-            M = _basis(sk, sigma, m0, m1, om, degree) / target[:, None]
-            c = cheb.cheb2poly(_lawson(M[train], resid[train]))
-            form = UniformForm(ex.alpha, ex.gamma, sk, float(sigma), m0, m1, tuple(float(x) for x in c))
+    for degree in range(DEGREE, top + 1, DEGREE_STEP):
+        for sigma, m0, m1, rate in _shapes(sk, end):
+            M = _basis(sk, sigma, m0, m1, rate, om, degree) / weight[:, None]
+            c = _lawson(M[train], resid[train], ridge=ridge)
+            c = c if end == "overlap" else cheb.cheb2poly(c)
+            form = UniformForm(ex.alpha, ex.gamma, sk, float(sigma), m0, m1, tuple(float(x) for x in c),
+                               end=end, rate=float(rate))
             with np.errstate(all="ignore"):
                 err = max(rel_errors(form, om[select], eps[select], ome[select]))
             if math.isfinite(err) and (best is None or err < best[0]):
                 best = (err, form)
-        if best is not None and best[0] <= SELECTION_TARGET:
+        if best is not None and best[0] <= target_err:
             break
     if best is None:
         raise ArithmeticError(f"no uniform form could be fitted for alpha={ex.alpha}, gamma={ex.gamma}")

@@ -7,7 +7,8 @@ eps request builds only what it reads), cached and checked on load by :mod:`rest
 * one build per relation rung (``relation_build(name)``): its c0-c2 (the paper's perturbation
   route takes seconds an order); their errors are measured on the master curve's grid when loaded,
   so a stored c0-c2 is always quoted with the error it really has;
-* the uniform closed form (``UNIFORM``, :mod:`restitution.fast.uniform_build`);
+* the uniform closed form (``UNIFORM``, :mod:`restitution.fast.uniform_build`) and its overlap-rule
+  twin (``UNIFORM_OVERLAP``, gamma < alpha < 2 gamma + 1);
 * the master curve's check against the mpmath reference (``MPMATH``,
   :func:`restitution.fast.master.mpmath_check`), which can only widen the curve's bound.
 
@@ -32,13 +33,14 @@ from .master import MasterCurve, MasterSettings, build_master, reference_eps
 from .uniform_build import build_uniform
 
 __all__ = ["Calibration", "Relation", "RelationUnavailable", "FITTED_C", "build_calibration", "pade_mp2011",
-           "MUELLER_POESCHEL_PADE", "CALIBRATION_VERSION", "MASTER", "UNIFORM", "MPMATH", "relation_build",
+           "MUELLER_POESCHEL_PADE", "CALIBRATION_VERSION", "MASTER", "UNIFORM", "UNIFORM_OVERLAP", "MPMATH", "relation_build",
            "relation_dict", "measure_master", "measure_relation", "merged"]
 
 #: Version of the stored relation builds and mpmath checks; bump to invalidate caches.
 CALIBRATION_VERSION = 4
 #: Build names (what a rung's ``needs`` gives).
 MASTER, UNIFORM, MPMATH = "master curve", "uniform form", "mpmath check"
+UNIFORM_OVERLAP = "overlap rule's uniform form"
 
 
 def relation_build(name: str) -> str:

@@ -87,7 +87,7 @@ from ..core.model import OMEGA_REPRESENTABLE, at_most_one
 from ..core.results import end_rule
 from ..core.exponents import Exponents, as_exponents
 from ..core.uniform import UNIFORM_VERSION, UniformForm
-from .calibration import (CALIBRATION_VERSION, FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFORM, Calibration,
+from .calibration import (CALIBRATION_VERSION, FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFORM, UNIFORM_OVERLAP, Calibration,
                           Relation, measure_master, measure_relation, merged, relation_build, relation_dict)
 from .master import (MASTER_VERSION, MasterCurve, MasterSettings, build_master, mpmath_check, reference_eps,
                      widen_by_check)
@@ -105,10 +105,10 @@ __all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_PO
 #: ("alpha>gamma" or "alpha<=gamma"): what the chooser prices a build at until it has timed one of
 #: that kind itself (MEASURED_SECONDS). Master curve: 0.1 s (3/2, 1 and 3/2, 1/2), 4.6-4.9 s for
 #: alpha < gamma (the creeping return below Omega = 1e-3), 0.01 s for alpha = gamma (exact);
-#: overlap curve 0.6-0.7 s; uniform form 0.6-0.7 s; mpmath check (12 points) 2.8 s. The relation
+#: overlap curve 0.6-0.7 s; uniform form 0.6-0.7 s (overlap rule's 2-3.5 s); mpmath check (12 points) 2.8 s. The relation
 #: rungs carry their own (Relation.build_seconds).
 BUILD_SECONDS = {MASTER: {"alpha>gamma": 0.2, "alpha<=gamma": 5.0}, OVERLAP_CURVE: {"alpha>gamma": 0.7},
-                 UNIFORM: {"alpha>gamma": 0.7}, MPMATH: {"alpha>gamma": 3.0, "alpha<=gamma": 3.0}}
+                 UNIFORM: {"alpha>gamma": 0.7}, UNIFORM_OVERLAP: {"alpha>gamma": 3.0}, MPMATH: {"alpha>gamma": 3.0, "alpha<=gamma": 3.0}}
 #: What builds took in this process, by (build, kind, settings): the latest one prices the next.
 MEASURED_SECONDS: dict = {}
 
@@ -181,12 +181,13 @@ def _spot_checks_pass(ex: Exponents, m: MasterCurve) -> bool:
     return bool(np.all(err <= 10.0 * (m.bound_at(om) + integrator_bound(1e-13))))
 
 
-def _uniform_checks_pass(ex: Exponents, u: UniformForm) -> bool:
-    """The stored uniform form is for these exponents and meets its bound at a few points."""
-    if (u.alpha, u.gamma) != (ex.alpha, ex.gamma) or not 0 < u.bound_eps < 1:
+def _uniform_checks_pass(ex: Exponents, u: UniformForm, end: str) -> bool:
+    """The stored uniform form is for these exponents and rule and meets its bound at a few points
+    (the overlap rule's from 1e-3 up: below, each integration of the creeping return is slow)."""
+    if (u.alpha, u.gamma, u.end) != (ex.alpha, ex.gamma, end) or not 0 < u.bound_eps < 1:
         return False
-    om = np.geomspace(1e-7, 1e7, 8) * 1.37
-    ref = reference_eps(ex, None, om, 1e-13)
+    om = np.geomspace(1e-3 if end == "overlap" else 1e-7, 1e7, 8) * 1.37
+    ref = reference_eps(ex, None, om, 1e-13, end)
     return bool(np.all(np.abs(u.eps(om) / ref - 1) <= u.bound_eps))
 
 
@@ -253,9 +254,12 @@ class Ladder:
             return _Build(f"overlap-curve-{pair}-v{OVERLAP_CURVE_VERSION}",
                           lambda: build_overlap_curve(ex, None, self._progress).as_dict(), self._overlap_valid,
                           OverlapCurve.from_dict, f"the overlap rule's master curve for {for_pair}")
-        if name == UNIFORM:
-            return _Build(f"uniform-{pair}-v{UNIFORM_VERSION}", lambda: build_uniform(ex, None, self._progress).as_dict(),
-                          self._uniform_valid, UniformForm.from_dict, f"the uniform closed form for {for_pair}")
+        if name in (UNIFORM, UNIFORM_OVERLAP):
+            end = "overlap" if name == UNIFORM_OVERLAP else "force"
+            return _Build(f"uniform-{'overlap-' if end == 'overlap' else ''}{pair}-v{UNIFORM_VERSION}",
+                          lambda: build_uniform(ex, None, self._progress, end).as_dict(),
+                          lambda d: self._uniform_valid(d, end), UniformForm.from_dict,
+                          f"the {end} rule's uniform closed form for {for_pair}")
         if name == MPMATH:
             s = self.settings
             return _Build(f"mpmath-check-{pair}-v{CALIBRATION_VERSION}.{MASTER_VERSION}-{_digest(s.key())}",
@@ -286,9 +290,9 @@ class Ladder:
             return False
         return (c.alpha, c.gamma) == (self.ex.alpha, self.ex.gamma) and c.spot_checks_pass()
 
-    def _uniform_valid(self, d: dict) -> bool:
+    def _uniform_valid(self, d: dict, end: str) -> bool:
         try:
-            return _uniform_checks_pass(self.ex, UniformForm.from_dict(d))
+            return _uniform_checks_pass(self.ex, UniformForm.from_dict(d), end)
         except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
             return False
 
@@ -396,8 +400,14 @@ class Ladder:
     def overlap_key(self) -> str:
         return self._spec(OVERLAP_CURVE).key
 
-    def uniform(self) -> UniformForm | None:
-        return self._build(UNIFORM) if self.ex.alpha > self.ex.gamma else None
+    def uniform(self, end: str = "force") -> UniformForm | None:
+        """The uniform form for ``end`` (None where there is none: alpha <= gamma, or alpha >= 2 gamma + 1
+        under the overlap rule)."""
+        if not self.ex.alpha > self.ex.gamma:
+            return None
+        if end == "overlap":
+            return self._build(UNIFORM_OVERLAP) if self.ex.alpha < 2 * self.ex.gamma + 1 else None
+        return self._build(UNIFORM)
 
     def calibration(self) -> Calibration:
         """Everything: the master curve checked against mpmath, every relation rung and the uniform

@@ -10,14 +10,24 @@ Three disjoint sets of points, so that the stated bound is a measurement, not a 
 
 The stated bounds are BOUND_FACTOR times the largest relative error over sets 2 and 3 inside the
 form's range (for 1 - eps: the points with Omega >= 1), plus the references' own accuracy.
+
+Under the overlap rule the creeping return makes an integration below Omega ~ 1e-3 cost
+milliseconds to seconds, and there eps is the limit law C Omega^kv
+(:mod:`restitution.core.overlap_limit`) to the accuracy of C: below LAW_BELOW the references are
+that law, and the build measures the law against the integrator on LAW_CHECK points above it
+(refusing the build if they differ by more than LAW_AGREEMENT); that difference and C's own error
+are added to the references' accuracy.
 """
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 import numpy as np
 
 from ..core.collision import collide
 from ..core.exponents import as_exponents
+from ..core.overlap_limit import overlap_limit
 from ..core.uniform import FORM_RANGE, UniformForm, fit_uniform, rel_errors
 from .master import reference_eps
 
@@ -30,6 +40,11 @@ BOUND_FACTOR = 2.0
 REFERENCE_ACCURACY = 1e-11
 #: eps of the form must lie in (0, 1) on this many points across its range.
 SANITY_POINTS = 4001
+#: Overlap rule: the limit law is the reference below LAW_BELOW, checked against the integrator at
+#: LAW_CHECK (measured: within 2e-12 on (3/2, 1/2), (3/2, 1), (2, 1), (5/2, 1) up to Omega = 0.03).
+LAW_BELOW = 1e-3
+LAW_CHECK = (1e-3, 2e-3, 4e-3)
+LAW_AGREEMENT = 1e-10
 
 
 def _grid() -> np.ndarray:
@@ -45,23 +60,63 @@ def bound_points(alpha, gamma) -> np.ndarray:
     return np.sort(10.0 ** np.random.default_rng(seed).uniform(lo, hi, N_TEST))
 
 
-def build_uniform(alpha, gamma, progress=None) -> UniformForm:
-    """Fit, choose and measure the uniform form (a few seconds)."""
+class _References:
+    """eps and 1 - eps at given Omegas for one pair and rule, as accurate as ``accuracy``."""
+
+    def __init__(self, ex, end: str):
+        self.ex, self.end, self.accuracy, self.law_checked = ex, end, REFERENCE_ACCURACY, None
+        if end == "overlap":
+            lim = overlap_limit(ex.alpha, ex.gamma)
+            self.law = lim.eps
+            at = np.array(LAW_CHECK)
+            diff = float(np.max(np.abs(reference_eps(ex, None, at, 1e-14, end) / lim.eps(at) - 1.0)))
+            if not diff <= LAW_AGREEMENT:
+                raise ArithmeticError(f"alpha={ex.alpha}, gamma={ex.gamma}: the overlap rule's limit law differs "
+                                      f"from the integrator by {diff:.2g} at Omega >= {LAW_BELOW:g}")
+            self.law_checked = diff
+            self.accuracy += diff + lim.C_error / lim.C
+
+    def _split(self, om):
+        return om < LAW_BELOW if self.end == "overlap" else np.zeros(om.shape, bool)
+
+    def grid(self, om) -> np.ndarray:
+        """eps from the compiled integrator at rtol 1e-14 (or the law)."""
+        law = self._split(om)
+        eps = np.empty(om.size)
+        eps[~law] = reference_eps(self.ex, None, om[~law], 1e-14, self.end)
+        if law.any():
+            eps[law] = self.law(om[law])
+        return eps
+
+    def test(self, om) -> tuple[np.ndarray, np.ndarray]:
+        """eps and 1 - eps from the scipy reference (1 - eps from the dissipated energy) or the law."""
+        law = self._split(om)
+        eps, ome = np.empty(om.size), np.empty(om.size)
+        runs = [collide(self.ex, None, float(w), rtol=1e-12, end=self.end) for w in om[~law]]
+        eps[~law] = [r.eps for r in runs]
+        ome[~law] = [r.one_minus_eps for r in runs]
+        if law.any():
+            eps[law] = self.law(om[law])
+            ome[law] = 1.0 - eps[law]
+        return eps, ome
+
+
+def build_uniform(alpha, gamma, progress=None, end: str = "force") -> UniformForm:
+    """Fit, choose and measure the uniform form for the end rule ``end`` (a few seconds)."""
     ex = as_exponents(alpha, gamma)
     say = progress or (lambda m: None)
+    refs = _References(ex, end)
     om = _grid()
-    say(f"uniform form: {om.size} integrations for the fit")
-    eps = reference_eps(ex, None, om, 1e-14)
+    say(f"uniform form ({end} rule): {om.size} reference values for the fit")
+    eps = refs.grid(om)
     ome = 1.0 - eps
     idx = np.arange(om.size)
     train, select = idx % 2 == 0, idx % 2 == 1
-    form = fit_uniform(ex, None, om, eps, ome, train, select)
+    form = fit_uniform(ex, None, om, eps, ome, train, select, end)
 
-    say(f"uniform form: {N_TEST} reference collisions for its bound")
+    say(f"uniform form ({end} rule): {N_TEST} reference collisions for its bound")
     tp = bound_points(ex, None)
-    runs = [collide(ex, None, float(w), rtol=1e-12) for w in tp]
-    t_eps = np.array([r.eps for r in runs])
-    t_ome = np.array([r.one_minus_eps for r in runs])
+    t_eps, t_ome = refs.test(tp)
     inside = select & (om >= FORM_RANGE[0]) & (om <= FORM_RANGE[1])
     sel_eps, sel_ome = rel_errors(form, om[inside], eps[inside], ome[inside])
     test_eps, test_ome = rel_errors(form, tp, t_eps, t_ome)
@@ -73,7 +128,8 @@ def build_uniform(alpha, gamma, progress=None) -> UniformForm:
     measured = {"selection_eps": sel_eps, "selection_one_minus_eps": sel_ome, "test_eps": test_eps,
                 "test_one_minus_eps": test_ome, "n_fit": int(train.sum()), "n_selection": int(inside.sum()),
                 "n_test": N_TEST}
-    bound_eps = BOUND_FACTOR * max(sel_eps, test_eps) + REFERENCE_ACCURACY
-    bound_ome = BOUND_FACTOR * max(sel_ome, test_ome) + REFERENCE_ACCURACY
-    return UniformForm(form.alpha, form.gamma, form.skel, form.sigma, form.m0, form.m1, form.coef,
-                       float(bound_eps), float(bound_ome), measured)
+    if refs.law_checked is not None:
+        measured.update(law_below=LAW_BELOW, law_vs_integrator=refs.law_checked)
+    bound_eps = BOUND_FACTOR * max(sel_eps, test_eps) + refs.accuracy
+    bound_ome = BOUND_FACTOR * max(sel_ome, test_ome) + refs.accuracy
+    return replace(form, bound_eps=float(bound_eps), bound_one_minus_eps=float(bound_ome), measured=measured)

@@ -1,6 +1,7 @@
 """The closed-form rung: exact where the problem is solvable (alpha = gamma; the linear
 spring-dashpot, both end rules), otherwise the uniform form of :mod:`restitution.core.uniform`
-built on its own (alpha > gamma, force rule, Omega in FORM_RANGE, its stated bound)."""
+built on its own (alpha > gamma under the force rule, gamma < alpha < 2 gamma + 1 under the overlap
+rule; Omega in FORM_RANGE, its stated bound)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import numpy as np
 from ...core import asymptotics as asy
 from ...core.uniform import FORM_RANGE
 from ..uniform_eval import uniform_eps
-from ..calibration import UNIFORM
+from ..calibration import UNIFORM, UNIFORM_OVERLAP
 from ..rung import Request, Rung
 
 __all__ = ["ClosedForm", "EXACT_BOUND"]
@@ -18,7 +19,7 @@ __all__ = ["ClosedForm", "EXACT_BOUND"]
 #: Bound of the exact forms (validated against mpmath).
 EXACT_BOUND = 2e-14
 #: Seconds per point: alpha = gamma, the dashpot (a few special functions in Python), the uniform form.
-COSTS = {"equal": 5e-7, "dashpot": 5e-6, "uniform": 1e-7}
+COSTS = {"equal": 5e-7, "dashpot": 5e-6, "uniform": 1e-7, "none": 0.0, "sticks": 0.0}
 
 
 def _kind(req: Request) -> str:
@@ -27,7 +28,11 @@ def _kind(req: Request) -> str:
         return "equal"
     if (ex.alpha, ex.gamma) == (1, 0):
         return "dashpot"
-    return "uniform" if ex.alpha > ex.gamma else "none"
+    if not ex.alpha > ex.gamma:
+        return "none"
+    if req.end == "overlap" and not ex.alpha < 2 * ex.gamma + 1:
+        return "sticks"
+    return "uniform"
 
 
 def dashpot_eps(omega: np.ndarray, end: str = "force") -> np.ndarray:
@@ -39,15 +44,13 @@ class ClosedForm(Rung):
     name = "closed-form"
     ends = ("force", "overlap")
 
-    def serves(self, req):
-        # the uniform form is the force rule's; the dashpot's half period serves both
-        return req.end == "force" or not req.rules_differ or _kind(req) == "dashpot"
-
     def outside(self, req):
         kind = _kind(req)
         if kind == "none":
             return ("alpha < gamma: the viscous limit's first correction, which the uniform form needs, "
                     "is not known in closed form")
+        if kind == "sticks":
+            return "alpha >= 2 gamma + 1: the bodies can stick under the overlap rule, no uniform form"
         if kind == "dashpot" and req.end == "overlap" and req.lo <= 0.25:
             return "Omega <= 1/4: the overdamped dashpot sticks under the overlap rule"
         if kind == "uniform" and (req.lo < FORM_RANGE[0] or req.hi > FORM_RANGE[1]):
@@ -55,7 +58,9 @@ class ClosedForm(Rung):
         return None
 
     def needs(self, req):
-        return UNIFORM if _kind(req) == "uniform" else None
+        if _kind(req) != "uniform":
+            return None
+        return UNIFORM_OVERLAP if req.end == "overlap" else UNIFORM
 
     def price(self, req):
         return COSTS[_kind(req)] * req.n
@@ -66,7 +71,7 @@ class ClosedForm(Rung):
             return EXACT_BOUND, "alpha = gamma"
         if kind == "dashpot":
             return EXACT_BOUND, "spring-dashpot" + (", overlap" if req.end == "overlap" else "")
-        return form.bound_eps, "uniform form"
+        return form.bound_eps, "uniform form" + (", overlap" if req.end == "overlap" else "")
 
     def coefficients(self, req, form):
         kind = _kind(req)
