@@ -46,6 +46,7 @@ from restitution.core.connection import eps_from_connection  # noqa: E402
 from restitution.fast import ladder as ladder_module  # noqa: E402
 from restitution.fast.calibration import Calibration, pade_mp2011  # noqa: E402
 from restitution.fast.master import MasterSettings  # noqa: E402
+from restitution.fast.uniform_build import build_uniform  # noqa: E402
 from restitution.fast.uniform_eval import uniform_eps  # noqa: E402
 
 SEED = 12345
@@ -259,6 +260,15 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
     row("master (overlap)", f"{curve.coef.shape[0]}x{curve.coef.shape[1] - 1} Chebyshev",
         _time_per_point(lambda: curve.eps(big), n_fast, 5), curve.eps(omegas),
         note=f"build {build_s:.1f} s on its own; stated bound {curve.bound_inside:.2g}")
+    # the overlap rule's uniform closed form, where it exists (gamma < alpha < 2 gamma + 1)
+    if ex.gamma < ex.alpha < 2 * ex.gamma + 1:
+        t0 = time.perf_counter()
+        u = build_uniform(ex, None, end="overlap")
+        u_build = time.perf_counter() - t0
+        uniform_eps(u, big[:10])
+        row("closed-form (overlap)", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: uniform_eps(u, big), n_fast, 5),
+            uniform_eps(u, omegas), note=f"build {u_build:.1f} s; stated bound {u.bound_eps:.2g} (eps), "
+                                         f"{u.bound_one_minus_eps:.2g} (1 - eps) over Omega in [1e-8, 1e8]")
     collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas[:2], 1e-9, True)
     for rtol in (1e-9, 1e-12):
         res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, rtol, True)

@@ -7,6 +7,12 @@ the same key). Each file carries the sha256 of its content: a file that cannot b
 match its digest (changed after it was written) or does not validate is not used, but rebuilt.
 A cache directory that cannot be written is not an error: the object is built, used and a note is
 printed on stderr.
+
+An entry that passed its checks on load (spot checks against the integrator, which would start
+numba: most of a second) is, where the caller says its checks depend on nothing but the entry's
+name, content and the library (``remember``), marked so (``<entry>.checked``: a digest of its name, its content and
+the library's source) and not checked again by later processes; an entry changed since, even sealed
+again, or a library changed since, has another digest and is checked again.
 """
 
 from __future__ import annotations
@@ -112,9 +118,32 @@ def discard_damaged(path: Path, stream=None, why: str = "is damaged or was chang
     print(f"restitution: the cache file {path} {why}: {fate}", file=stream, flush=True)
 
 
+_SOURCE_DIGEST: list = []
+
+
+def _source_digest() -> str:
+    """sha256 of the library's own source (what the checks run), once per process (a few ms)."""
+    if not _SOURCE_DIGEST:
+        h = hashlib.sha256()
+        root = Path(__file__).resolve().parents[1]
+        for f in sorted(root.rglob("*.py")):
+            h.update(f.relative_to(root).as_posix().encode() + b"\0" + f.read_bytes())
+        _SOURCE_DIGEST.append(h.hexdigest())
+    return _SOURCE_DIGEST[0]
+
+
+def _checked_mark(path: Path, data: dict) -> str:
+    return hashlib.sha256(f"{path.name}\n{_source_digest()}\n{_digest(data)}".encode()).hexdigest()
+
+
+def _mark_path(path: Path) -> Path:
+    return path.with_name(path.name + ".checked")
+
+
 def load_or_discard(path: Path, stream=None, valid: Callable[[dict], bool] = lambda d: True,
-                    why_invalid: str = "does not pass its checks") -> dict | None:
-    """The stored dict if it is sealed and ``valid``; a file that is not is removed with one note
+                    why_invalid: str = "does not pass its checks", remember: bool = False) -> dict | None:
+    """The stored dict if it is sealed and ``valid`` (or marked as having passed ``valid`` in this
+    very form, see the module docstring); a file that is not is removed with one note
     (:func:`discard_damaged`), so the next call finds nothing and says nothing."""
     quiet = io.StringIO()
     data = load_json(path, quiet)
@@ -122,9 +151,20 @@ def load_or_discard(path: Path, stream=None, valid: Callable[[dict], bool] = lam
         if quiet.getvalue():
             discard_damaged(path, stream)
         return None
+    mark = _checked_mark(path, data) if remember else None
+    try:
+        if mark is not None and _mark_path(path).read_text(encoding="ascii") == mark:
+            return data
+    except (OSError, ValueError):
+        pass
     if not valid(data):
         discard_damaged(path, stream, why_invalid)
         return None
+    if mark is not None:
+        try:   # best effort: without the mark the next process only checks again
+            _mark_path(path).write_text(mark, encoding="ascii")
+        except OSError:
+            pass
     return data
 
 
@@ -158,7 +198,7 @@ def entry_lock(path: Path, label: str, stream):
 
 def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict], bool] = lambda d: True,
                  what: str = "", directory: Path | None = None, stream=None, announce: bool = True,
-                 estimate: float | None = None) -> dict:
+                 estimate: float | None = None, remember: bool = False) -> dict:
     """The cached dict for ``key`` if present and ``valid``; otherwise ``build()`` it and store it.
 
     Progress ("building ..." / "built in") goes to ``stream`` (default stderr); with ``announce``
@@ -170,12 +210,12 @@ def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict],
     stream = sys.stderr if stream is None else stream
     path = cache_path(key, directory)
     label = what or key
-    data = load_or_discard(path, stream, valid)
+    data = load_or_discard(path, stream, valid, remember=remember)
     if data is not None:
         return data
     with entry_lock(path, label, stream):
         # the first builder may have finished while we waited for the lock
-        data = load_or_discard(path, stream, valid)
+        data = load_or_discard(path, stream, valid, remember=remember)
         if data is not None:
             return data
         if announce:

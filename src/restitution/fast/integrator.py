@@ -39,11 +39,12 @@ from __future__ import annotations
 
 import importlib.util
 import math
+import os
 from pathlib import Path
 
 import numpy as np
 
-from .jit import HAVE_NUMBA, njit
+from .jit import HAVE_NUMBA, interpreted_if_cold, njit
 
 __all__ = ["HAVE_NUMBA", "collide_fast", "law_parameters", "OVERLAP_RTOL_MAX",
            "END_FORCE", "END_SEPARATION", "END_FAILED", "END_STUCK"]
@@ -606,7 +607,7 @@ def _collide_one(P, rtol, out, overlap):
         out[5] = END_SEPARATION
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _collide_many(P, omegas, rtol, res, overlap):
     out = np.empty(7)
     for i in range(omegas.size):
@@ -632,5 +633,36 @@ def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12, overlap:
     res = np.empty((om.size, 7))
     if overlap:
         rtol = min(rtol, OVERLAP_RTOL_MAX)
-    _collide_many(law_parameters(int(p), int(qa), int(qg), 0.0), om, float(rtol), res, bool(overlap))
+    threads = _threads(om.size)
+    if threads == 1:
+        with interpreted_if_cold(om.size, INTERPRETED_MAX_POINTS):
+            _collide_many(law_parameters(int(p), int(qa), int(qg), 0.0), om, float(rtol), res, bool(overlap))
+        return res
+    # every thread its own parameter array (the kernel writes Omega into it) and every threads-th
+    # point, so that the slow small Omegas of a sorted grid are shared out evenly
+    from concurrent.futures import ThreadPoolExecutor
+
+    def part(k):
+        sub = np.ascontiguousarray(om[k::threads])
+        out = np.empty((sub.size, 7))
+        _collide_many(law_parameters(int(p), int(qa), int(qg), 0.0), sub, float(rtol), out, bool(overlap))
+        res[k::threads] = out
+
+    with ThreadPoolExecutor(threads) as pool:
+        list(pool.map(part, range(threads)))
     return res
+
+
+#: Up to this many points a process that has not started numba integrates in plain Python (about
+#: 10 ms a point against most of a second for numba's start).
+INTERPRETED_MAX_POINTS = 8
+#: Points from which collide_fast shares the work between threads (the kernel releases the GIL);
+#: below, starting threads costs more than it saves.
+THREAD_MIN_POINTS = 64
+
+
+def _threads(n: int) -> int:
+    if not HAVE_NUMBA or n < THREAD_MIN_POINTS:
+        return 1
+    return max(1, min(len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1,
+                      n // (THREAD_MIN_POINTS // 2), 8))

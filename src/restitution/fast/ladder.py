@@ -331,7 +331,9 @@ class Ladder:
             if any(self._cached(a) is None for a in spec.after):
                 return None
             path = _cache.cache_path(spec.key, self._directory())
-            d = _cache.load_or_discard(path, self._stream, spec.valid, "does not pass its checks against the integrator")
+            # every check of a build depends on its key, content and the library only: remembered
+            d = _cache.load_or_discard(path, self._stream, spec.valid, "does not pass its checks against the integrator",
+                                       remember=True)
             if d is not None:
                 self.built[name] = spec.load(d)
         return self.built.get(name)
@@ -356,7 +358,7 @@ class Ladder:
             try:
                 d = _cache.get_or_build(spec.key, make, valid=spec.valid, directory=self._directory(),
                                         what=spec.what, stream=self._stream, announce=self._announce,
-                                        estimate=seconds)
+                                        estimate=seconds, remember=True)
             finally:
                 self._announce = False
             if "s" in timing:

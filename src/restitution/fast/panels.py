@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from .jit import njit
+from .jit import interpreted_if_cold, njit
 
 __all__ = ["PanelRange", "chebyshev_panels_eval"]
 
@@ -75,10 +75,16 @@ def chebyshev_panels_eval(omegas, s0: float, width: float, coef: np.ndarray, vis
     """eps at each Omega from panel Chebyshev coefficients of ln eps (see master.MasterCurve)."""
     om = np.ascontiguousarray(np.asarray(omegas, dtype=np.float64).ravel())
     out = np.empty(om.size)
-    _panels_eval(om, float(s0), 1.0 / float(width), np.ascontiguousarray(coef, dtype=np.float64),
-                 np.ascontiguousarray(viscous, dtype=np.float64),
-                 np.ascontiguousarray(elastic, dtype=np.float64), out)
+    with interpreted_if_cold(om.size, INTERPRETED_MAX_POINTS):
+        _panels_eval(om, float(s0), 1.0 / float(width), np.ascontiguousarray(coef, dtype=np.float64),
+                     np.ascontiguousarray(viscous, dtype=np.float64),
+                     np.ascontiguousarray(elastic, dtype=np.float64), out)
     return out
+
+
+#: Up to this many Omegas a process that has not started numba evaluates in plain Python (tens
+#: of microseconds each, against most of a second for numba's start).
+INTERPRETED_MAX_POINTS = 2000
 
 
 class PanelRange:

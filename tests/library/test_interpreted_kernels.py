@@ -1,0 +1,100 @@
+"""Small requests in a process that has not started numba run the kernels as plain Python
+(restitution.fast.jit.interpreted_if_cold): the same numbers, bit for bit, as the compiled kernels,
+and a warm-cache one-point call that never imports numba."""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import json
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+from restitution.core.errors import ParameterError
+from restitution.fast.ladder import Ladder
+
+# Run in a fresh interpreter: this test process has numba started by other tests.
+SAME_BITS = textwrap.dedent("""
+    import sys
+    import numpy as np
+    from restitution.fast.integrator import INTERPRETED_MAX_POINTS, collide_fast
+    from restitution.fast.panels import chebyshev_panels_eval
+    from restitution.core.exponents import as_exponents
+
+    om = np.geomspace(1e-4, 1e6, INTERPRETED_MAX_POINTS)
+    pairs = [("3/2", "1"), ("3/2", "1/2"), ("5/2", "1"), ("1", "3/2"), ("2", "3/4")]
+    plain = {}
+    for a, g in pairs:
+        ex = as_exponents(a, g)
+        for overlap in (False, True):
+            plain[a, g, overlap] = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, 1e-12, overlap)
+    rng = np.random.default_rng(1)
+    coef, visc, elas = rng.normal(size=(7, 11)) * 0.1, np.array([0.2, 1.0, 0.1, 0.0, 0.0]), np.array([0.6, 1.2, 0.3, 0.0, 0.0])
+    wide = np.geomspace(1e-9, 1e9, 1500)
+    plain_panels = chebyshev_panels_eval(wide, -2.0, 0.5, coef, visc, elas)
+    assert "numba" not in sys.modules, "a small request started numba"
+
+    for (a, g, overlap), got in plain.items():   # now compiled: enough points to pass the limit
+        ex = as_exponents(a, g)
+        many = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.tile(om, 20), 1e-12, overlap)[: om.size]
+        assert "numba" in sys.modules
+        assert np.array_equal(got, many, equal_nan=True), (a, g, overlap, got[:, 0], many[:, 0])
+    compiled_panels = chebyshev_panels_eval(np.tile(wide, 2), -2.0, 0.5, coef, visc, elas)[: wide.size]
+    assert np.array_equal(plain_panels, compiled_panels)
+    print("same bits")
+""")
+
+
+def test_plain_python_kernels_give_the_compiled_numbers_bit_for_bit():
+    pytest.importorskip("numba")
+    proc = subprocess.run([sys.executable, "-c", SAME_BITS], capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert proc.stdout.strip() == "same bits"
+
+
+def test_a_warm_one_point_call_starts_no_compiler(tmp_path):
+    """After a request that builds the master curve, a one-point call loads it (its checks passed
+    once and are marked) and answers from it without importing numba."""
+    pytest.importorskip("numba")
+    env = {"RESTITUTION_CACHE": str(tmp_path)}
+    code = ("import numpy as np\nfrom restitution import epsilon\n"
+            "print(epsilon(alpha='3/2', gamma='1', omega=np.geomspace(1e-3, 1e3, 100000)).method)")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600,
+                          env={**__import__("os").environ, **env})
+    assert proc.stdout.strip() == "master", proc.stderr
+    probe = ("import sys\nfrom restitution.cli import main\n"
+             "assert main(['eps', '--alpha', '3/2', '--gamma', '1', '--omega', '0.1']) == 0\n"
+             "print('numba' in sys.modules)")
+    for _ in range(2):   # the first load checks and marks, the second trusts the mark
+        proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, timeout=600,
+                              env={**__import__("os").environ, **env})
+        assert proc.returncode == 0, proc.stderr
+        assert "method master" in proc.stdout
+    assert proc.stdout.strip().splitlines()[-1] == "False"
+    assert list(tmp_path.glob("master-*.json.checked"))
+
+
+def test_an_entry_changed_after_its_checks_were_marked_is_checked_again(tmp_path):
+    """The mark covers the content it was made for: a coefficient shifted and sealed again after
+    the mark was written is checked, refused without building and rebuilt with it."""
+    omega = np.geomspace(0.05, 20.0, 7)
+    Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO()).evaluate(omega, tol=None, method="master")
+    Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO()).evaluate(omega, tol=None, method="master",
+                                                                               build=False)
+    (path,) = tmp_path.glob("master-*.json")
+    assert path.with_name(path.name + ".checked").exists()
+    stored = json.loads(path.read_text())
+    m = stored["content"].get("master", stored["content"])
+    m["coef"][10][0] += 0.01
+    text = json.dumps(stored["content"], sort_keys=True, separators=(",", ":"))
+    stored["sha256"] = hashlib.sha256(text.encode()).hexdigest()
+    path.write_text(json.dumps(stored))
+    err = io.StringIO()
+    with pytest.raises(ParameterError, match="method"):
+        Ladder("3/2", "1", cache_dir=str(tmp_path), stream=err).evaluate(omega, tol=None, method="master",
+                                                                         build=False)
+    assert "does not pass its checks" in err.getvalue()
