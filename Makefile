@@ -25,7 +25,8 @@ venv: $(STAMP)
 test: $(STAMP) tex browser slurm-tools dem-engines
 	$(BIN)/python -m pytest -q -rs -n 2
 
-# The library and the CLI only, no pipeline build and no long sweeps (under a minute).
+# The library and the CLI only, tests under a second each (about 45 s): no pipeline build, no long
+# sweeps, no fuzz profile; `make test` runs those too (marked slow).
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -q -rs -n 2 -m "not pipeline and not slow"
 

@@ -215,6 +215,7 @@ def test_omega_maps_onto_the_published_expansion_variable():
     assert np.allclose(mat.omega(g) ** (-0.6), 1.5 * A * rho ** 0.4 * g ** 0.2, rtol=1e-13)
 
 
+@pytest.mark.slow
 def test_published_constants_reproduced_from_data():
     """C1, C2 (and the end term and T0) extracted from mpmath data alone, without the formulas.
 

@@ -31,6 +31,7 @@ def _find(rows, text):
     return hits[0]
 
 
+@pytest.mark.slow
 def test_every_row_has_every_column_and_a_valid_verdict(rows):
     assert len(rows) > 10
     for r in rows:
@@ -156,6 +157,7 @@ def test_other_exponents_make_every_verdict_ambiguous(values):
     assert {r["verdict"] for r in claims.build_claims(changed)} == {claims.AMBIGUOUS}
 
 
+@pytest.mark.slow
 def test_the_ledger_consumes_what_other_stages_computed(monkeypatch):
     """One source per number: given the pipeline's outputs, the ledger never runs the fit, the exact
     connection or the paper's procedure itself (those belong to connection_fit, reference_eps_curve

@@ -48,6 +48,7 @@ def test_float_exponent_note_goes_to_stderr_and_json_stays_clean():
     assert "taken as 17/12" in proc.stderr
 
 
+@pytest.mark.slow
 def test_collide_json_fields():
     proc = run("collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--json")
     assert proc.returncode == 0, proc.stderr

@@ -41,6 +41,7 @@ def tight():
 
 # ------------------------------------------------------------------ accuracy
 @pytest.mark.parametrize("alpha,gamma", PAIRS)
+@pytest.mark.slow
 def test_default_rtol_agrees_with_tightest(alpha, gamma, tight):
     for omega in OMEGAS:
         errors = _relative_errors(collide(alpha, gamma, omega), tight(alpha, gamma, omega))
@@ -50,6 +51,7 @@ def test_default_rtol_agrees_with_tightest(alpha, gamma, tight):
 @pytest.mark.parametrize("alpha,gamma,omega", [("3/2", "1", 1e-8), ("3/2", "1", 1e8), ("1", "0", 1e8),
                                                ("5/2", "0", 1e-8), ("3", "3/2", 1e8), ("5/4", "3/2", 1e-6),
                                                ("1", "1", 1e8)])
+@pytest.mark.slow
 def test_extremes_stay_accurate(alpha, gamma, omega, tight):
     """Huge Omega: x_c ~ (eps/Omega)^(1/(alpha-gamma)) is tiny, resolved in u. Tiny Omega: v creeps
     at O(Omega) and the force is carried as a state, so tau_c keeps its relative accuracy."""

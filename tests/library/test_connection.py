@@ -81,6 +81,7 @@ READINGS = readings.all_readings(x_tilde_c=0.5)
 
 
 @pytest.mark.parametrize("reading", READINGS, ids=[r.label for r in READINGS])
+@pytest.mark.slow
 def test_every_reading_gives_finite_coefficients_or_says_why_not(reading):
     cc = matching.paper_procedure("3/2", 1, reading)
     if cc.defined:

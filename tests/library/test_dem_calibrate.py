@@ -35,6 +35,7 @@ def test_the_overlap_rule_needs_less_damping_for_the_same_eps():
     assert o.D2 < f.D2
 
 
+@pytest.mark.slow
 def test_least_squares_over_several_speeds_reports_its_residual():
     truth = Contact("3/2", "1", 1e5, 9000.0)
     gs = [0.03, 0.3, 3.0]

@@ -97,6 +97,7 @@ fix mystery all frobnicate 3
 """
 
 
+@pytest.mark.slow
 def test_a_liggghts_deck_with_two_materials_and_its_exact_lines(tmp_path):
     deck = tmp_path / "in.two"
     deck.write_text(LIGGGHTS_DECK)
@@ -129,6 +130,7 @@ pair_coeff 2 2 hertz/material 5e7 ${e} 0.3 damping tsuji tangential linear_nohis
 """
 
 
+@pytest.mark.slow
 def test_a_lammps_deck_with_its_explicit_pair_and_exact_line(tmp_path):
     deck = tmp_path / "in.lmp"
     deck.write_text(LAMMPS_DECK + "pair_coeff 1 2 hertz/material 5e7 0.5 0.3 damping tsuji tangential "
@@ -160,6 +162,7 @@ MIXED = {"viscoelastic": (3e6, 1.2e7), "tsuji": (0.5, 0.8)}
 
 
 @pytest.mark.parametrize("damping", sorted(MIXED))
+@pytest.mark.slow
 def test_a_missing_pair_is_mixed_as_lammps_mixes_it(tmp_path, damping):
     """No pair_coeff 1 2: LAMMPS mixes 1 1 and 2 2 (1/E* = sum (1 - nu^2)/E, geometric means,
     limit_damping from either); the pair's exact line states the mixture and gives e exactly."""
@@ -186,6 +189,7 @@ def test_a_missing_pair_is_mixed_as_lammps_mixes_it(tmp_path, damping):
 
 @pytest.mark.dem
 @pytest.mark.parametrize("damping", sorted(MIXED))
+@pytest.mark.slow
 def test_the_mixed_pair_is_what_lammps_does(tmp_path, damping):
     """The same deck's pair 1 2 in LAMMPS itself (two types, no pair_coeff 1 2), extrapolated to
     dt = 0: the reader's eps to 1e-6."""
@@ -262,6 +266,7 @@ def test_lammps_read_data_example():
 
 
 @needs_liggghts_examples
+@pytest.mark.slow
 def test_liggghts_read_data_example():
     """hydrogel_multicontact/in.hydrogel_default: read_data data/input.data (every atom of type 1, of
     varied diameters; none of type 2), E per type, nu = 0.5 (an incompressible gel)."""
@@ -279,6 +284,7 @@ def test_liggghts_read_data_example():
 
 
 @needs_liggghts_examples
+@pytest.mark.slow
 def test_liggghts_include_example():
     """ParScale's in.liggghts_init takes its materials and sizes from variables in the file it
     includes (in.DEM); in.liggghts_run then reads a binary restart, which is refused in one line."""
@@ -317,6 +323,7 @@ Velocities
 """
 
 
+@pytest.mark.slow
 def test_include_and_read_data_written_decks(tmp_path):
     (tmp_path / "sub").mkdir()
     (tmp_path / "sub" / "materials.in").write_text("variable E equal 5*10^7\nvariable e index 0.5 0.6\n")

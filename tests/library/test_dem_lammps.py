@@ -42,6 +42,7 @@ def _setting(normal: dict, damping: str, limit: bool) -> dict:
 
 @pytest.mark.parametrize("limit", [True, False], ids=["limit_damping", "default"])
 @pytest.mark.parametrize("normal, damping", OPTIONS, ids=lambda o: o if isinstance(o, str) else o["normal"])
+@pytest.mark.slow
 def test_lammps_agrees_with_the_library(normal, damping, limit):
     setting = _setting(normal, damping, limit)
     contact = lammps_contact(PAIR, **setting)

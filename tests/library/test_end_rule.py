@@ -44,6 +44,7 @@ def test_force_rule_still_matches_the_dashpots_closed_form(omega):
 @pytest.mark.parametrize("alpha, gamma, omega", [
     ("3/2", "1", 0.5), ("3/2", "1", 1e-3), ("3/2", "1/2", 1.0), ("3/2", "1/4", 1.0), ("3/2", "0", 1.0),
     ("2", "1/2", 0.3), ("3/2", "1/2", 200.0)])
+@pytest.mark.slow
 def test_overlap_rule_matches_mpmath(alpha, gamma, omega):
     truth = reference_collision(alpha, gamma, omega, digits=20, end="overlap")
     assert truth.end == "separation" and truth.error_estimate < 1e-18
@@ -160,6 +161,7 @@ def _overlap_constant():
 
 @pytest.mark.parametrize("omega", [1e-4, 1e-5, 1e-8, 1e-12])
 @pytest.mark.parametrize("rtol", [1e-6, 1e-9, 1e-12])
+@pytest.mark.slow
 def test_creeping_return_keeps_its_relative_bound(omega, rtol):
     """Class 1: eps = 5.2e-12 at Omega = 1e-4 was off by 3.5e-8 relative whatever the tolerance (x'
     carried beside the force kept an absolute rounding error of the creep speed)."""
@@ -169,6 +171,7 @@ def test_creeping_return_keeps_its_relative_bound(omega, rtol):
 
 
 @pytest.mark.parametrize("alpha, gamma, omega", [("1", "1/2", 1e-3), ("5/2", "1", 1e-3)])
+@pytest.mark.slow
 def test_creeping_return_matches_mpmath_for_other_pairs(alpha, gamma, omega):
     truth = float(reference_collision(alpha, gamma, omega, digits=20, end="overlap").eps)
     assert truth < 1e-4
@@ -179,6 +182,7 @@ def test_creeping_return_matches_mpmath_for_other_pairs(alpha, gamma, omega):
 
 @pytest.mark.parametrize("argv", [["--omega", "1e-4"], ["--omega", "1e-4", "--tol", "1e-12"],
                                   ["--omega", "1e-5"], ["--omega", "1e-9", "--tol", "1e-6"]])
+@pytest.mark.slow
 def test_cli_answers_a_tiny_overlap_eps_within_its_bound(argv, tmp_path, monkeypatch):
     """The issue's examples through the CLI: within the stated bound, and no false "they stick"."""
     monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
@@ -224,6 +228,7 @@ NEAR_STICKING = [("9/2", "1/2", 1.0),                 # the fuzz's case: 1.4 % a
 
 
 @pytest.mark.parametrize("alpha, gamma, omega", NEAR_STICKING)
+@pytest.mark.slow
 def test_near_sticking_every_stated_bound_holds(alpha, gamma, omega, tmp_path, monkeypatch):
     monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
     truth = float(reference_collision(alpha, gamma, omega, digits=24, end="overlap").eps)

@@ -90,6 +90,7 @@ def test_every_rung_meets_its_bound_on_held_out_points(which, tol, request):
 @pytest.mark.parametrize("tol", [0.5, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10, 1e-12, 1e-13])
 @pytest.mark.parametrize("omegas", [[0.5521], [1e-6, 3e-5], [2e2, 7e6], list(np.geomspace(1e-6, 1e6, 9)),
                                     list(np.geomspace(0.02, 20, 2000))])
+@pytest.mark.slow
 def test_chooser_never_exceeds_tol(kim, tol, omegas):
     om = np.asarray(omegas)
     if tol < 1e-12 and om.size > 10:
@@ -181,6 +182,7 @@ def test_large_requests_build_only_the_master_curve_and_cache_it(tmp_path, monke
     assert lad2.cached_calibration() is not None
 
 
+@pytest.mark.slow
 def test_a_build_over_a_second_is_announced_with_its_price(tmp_path, monkeypatch):
     """The chooser prices each build by its measured cost and names on stderr those expected to
     take more than a second (here the mpmath check of the curve, about 3 s), not the others."""
@@ -199,6 +201,7 @@ def test_a_build_over_a_second_is_announced_with_its_price(tmp_path, monkeypatch
 
 
 @pytest.mark.parametrize("alpha,gamma", [("3/2", "1"), ("3/2", "1/2"), ("1", "0"), ("5/2", "1/2"), ("2", "1")])
+@pytest.mark.slow
 def test_integrator_bound_against_mpmath(alpha, gamma):
     ex = as_exponents(alpha, gamma)
     rng = np.random.default_rng(hash((alpha, gamma)) % 2**32)
@@ -210,6 +213,7 @@ def test_integrator_bound_against_mpmath(alpha, gamma):
 
 
 @pytest.mark.parametrize("alpha,gamma", [("1", "1"), ("3/2", "3/2"), ("1", "0")])
+@pytest.mark.slow
 def test_closed_form_rungs_against_mpmath(alpha, gamma, tmp_path):
     lad = Ladder(alpha, gamma, cache_dir=str(tmp_path), stream=io.StringIO())
     om = np.array([0.07, 1.3, 450.0])
@@ -351,6 +355,7 @@ def _panel(c, omega=0.47):
     ("uniform", lambda c: c["a"].__setitem__(0, c["a"][0] + 0.01), True),
     ("uniform", lambda c: c.__setitem__("bound_eps", 1e-12), True),
 ])
+@pytest.mark.slow
 def test_a_tampered_calibration_is_never_used(tmp_path, entry, change, reseal):
     """Valid JSON with a shifted coefficient (sealed again or not) or a NaN: not used with its tight
     bound. Without building it is refused; with building it is rebuilt and eps is right again."""
@@ -372,6 +377,7 @@ def test_a_tampered_calibration_is_never_used(tmp_path, entry, change, reseal):
     assert np.max(np.abs(r.eps - ref) / ref) <= r.error_bound
 
 
+@pytest.mark.slow
 def test_a_tampered_relation_is_quoted_with_the_error_it_has(tmp_path):
     """A relation's c0-c2 edited and sealed again: its bound is measured from the c's it holds when
     loaded, so it is never quoted with the error of the original c's."""
@@ -386,6 +392,7 @@ def test_a_tampered_relation_is_quoted_with_the_error_it_has(tmp_path):
     assert np.max(np.abs(r.eps - ref) / ref) <= r.error_bound
 
 
+@pytest.mark.slow
 def test_a_tampered_mpmath_check_is_rebuilt(tmp_path):
     """An edited mpmath value (sealed again) disagrees with the integrator where it was taken: the
     check is discarded and made again, and the curve's bound is as before."""

@@ -36,6 +36,7 @@ def _failures(records):
 @example({"alpha": "1", "gamma": "0", "end": "overlap", "omega": 7.85e-4, "tol": 3.2e-5, "rtol": 6.3e-9})
 # found by the fuzz: 1 - eps = 3.9e-16 judged against a 20-digit reference, which has 4 digits of it
 @example({"alpha": "1", "gamma": "2", "end": "force", "omega": 1e10, "tol": 1e-3, "rtol": 1e-11})
+@pytest.mark.slow
 def test_every_answer_within_its_stated_bound_of_the_mpmath_reference(case):
     bad = _failures(F.check_number_case(case))
     assert not bad, bad[0]["detail"]
@@ -46,6 +47,7 @@ def test_every_answer_within_its_stated_bound_of_the_mpmath_reference(case):
 @example((["lammps", "--normal", "hooke", "--k-n", "1e5", "--damping", "velocity", "--eta-n0", "1",
            "--radius", "1e-3", "1e-3", "1e-3", "--density", "2500", "--g", "1"], True))
 @example((["calibrate", "--alpha", "3/2", "--gamma", "1", "--D1", "1e300", "--eps", "0.6", "--g", "1e-300"], False))
+@pytest.mark.slow
 def test_random_command_lines_never_traceback_and_never_answer_a_refused_value(case):
     argv, must_refuse = case
     rec = F.check_argv_case(argv, must_refuse)
@@ -54,6 +56,7 @@ def test_random_command_lines_never_traceback_and_never_answer_a_refused_value(c
 
 @bounded(40)
 @given(F.config_cases())
+@pytest.mark.slow
 def test_random_config_mutations_are_refused_in_one_line_or_accepted(case):
     config, must_refuse = case
     rec = F.check_config_case(config, must_refuse)

@@ -92,6 +92,7 @@ def test_linear_spring_dashpot(omega):
 
 
 @pytest.mark.parametrize("alpha", ["3/2", "2"])
+@pytest.mark.slow
 def test_gamma_one_small_omega_bound_tends_to_sqrt2(alpha):
     a = mp.mpf(Fraction(alpha).numerator) / Fraction(alpha).denominator
     with mp.workdps(30):
@@ -156,6 +157,7 @@ def test_alpha_equals_gamma_exact_separation(gamma, omega):
 
 @pytest.mark.parametrize("alpha,gamma", [("3/2", "1"), ("3/2", "1/2"), ("2", "1")])
 @pytest.mark.parametrize("omega", ["1e-3", "1", "1e3"])
+@pytest.mark.slow
 def test_digits_30_against_40(alpha, gamma, omega):
     r30 = reference_collision(alpha, gamma, omega, digits=30)
     r40 = reference_collision(alpha, gamma, omega, digits=40)
@@ -171,6 +173,7 @@ def test_digits_30_against_40(alpha, gamma, omega):
 
 
 @pytest.mark.parametrize("omega", ["1e-3", "0.1", "1", "1e3"])
+@pytest.mark.slow
 def test_alpha_below_gamma_separates(omega):
     r = reference_collision(1, "3/2", omega, digits=30)
     assert r.end == "separation"
@@ -214,6 +217,7 @@ def test_bad_parameters(kwargs):
 
 
 @pytest.mark.parametrize("alpha, gamma, omega", [("1/11", "1/12", 1.0), ("5/12", "7/11", 3.0), ("11/12", "1/11", 0.5)])
+@pytest.mark.slow
 def test_denominators_eleven_and_twelve_agree_with_the_scipy_reference(alpha, gamma, omega):
     """p = 132: the Taylor order must reach past the gap of the sparse series at u = 0 (it used to
     fail with an IndexError, and a too-short series would have looked converged)."""

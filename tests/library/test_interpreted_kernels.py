@@ -1,5 +1,5 @@
 """Small requests in a process that has not started numba run the kernels as plain Python
-(restitution.fast.jit.interpreted_if_cold): the same numbers, bit for bit, as the compiled kernels,
+(restitution.fast.jit.call_kernel): the same numbers, bit for bit, as the compiled kernels,
 and a warm-cache one-point call that never imports numba."""
 
 from __future__ import annotations
@@ -49,6 +49,7 @@ SAME_BITS = textwrap.dedent("""
 """)
 
 
+@pytest.mark.slow
 def test_plain_python_kernels_give_the_compiled_numbers_bit_for_bit():
     pytest.importorskip("numba")
     proc = subprocess.run([sys.executable, "-c", SAME_BITS], capture_output=True, text=True, timeout=600)
@@ -56,6 +57,7 @@ def test_plain_python_kernels_give_the_compiled_numbers_bit_for_bit():
     assert proc.stdout.strip() == "same bits"
 
 
+@pytest.mark.slow
 def test_a_warm_one_point_call_starts_no_compiler(tmp_path):
     """After a request that builds the master curve, a one-point call loads it (its checks passed
     once and are marked) and answers from it without importing numba."""
@@ -98,3 +100,25 @@ def test_an_entry_changed_after_its_checks_were_marked_is_checked_again(tmp_path
         Ladder("3/2", "1", cache_dir=str(tmp_path), stream=err).evaluate(omega, tol=None, method="master",
                                                                          build=False)
     assert "does not pass its checks" in err.getvalue()
+
+
+def test_where_plain_python_raises_the_compiled_kernel_answers(monkeypatch):
+    """Plain Python raises OverflowError where compiled code carries on with inf: the compiled
+    kernel runs instead, and no numpy warning reaches the user."""
+    from restitution.fast import jit
+
+    monkeypatch.setattr(jit, "HAVE_NUMBA", True)
+    monkeypatch.delitem(sys.modules, "numba", raising=False)
+    ran = []
+
+    def kernel(x):
+        plain = getattr(jit._MODE, "plain", False)
+        ran.append(plain)
+        if plain:
+            np.float64(1e300) ** 2      # would warn outside errstate
+            raise OverflowError("math range error")
+        return 2 * x
+
+    assert jit.call_kernel(1, 8, kernel, 21) == 42 and ran == [True, False]
+    ran.clear()
+    assert jit.call_kernel(9, 8, kernel, 21) == 42 and ran == [False]   # over the limit: compiled at once

@@ -50,6 +50,7 @@ def _run_kernel(module_dir: Path, env: dict) -> subprocess.CompletedProcess:
 
 
 @pytest.mark.parametrize("damage", ["truncate-index", "truncate-data", "garbage-data"])
+@pytest.mark.slow
 def test_a_damaged_kernel_cache_is_recompiled_with_one_note(tmp_path, damage):
     mod = tmp_path / "mod"
     mod.mkdir()
@@ -75,6 +76,7 @@ def test_a_damaged_kernel_cache_is_recompiled_with_one_note(tmp_path, damage):
     assert third.returncode == 0 and third.stderr.strip() == "", third.stderr
 
 
+@pytest.mark.slow
 def test_no_writable_kernel_cache_anywhere_still_runs(tmp_path):
     """A read-only package (here: __pycache__ cannot be made, as it would be for root too) and no
     writable NUMBA_CACHE_DIR: numba refuses cache=True at import; the kernels compile in memory."""
@@ -252,6 +254,7 @@ BUILDER = textwrap.dedent("""
 
 
 @pytest.mark.parametrize("build_seconds", [3.0, 1.5])
+@pytest.mark.slow
 def test_two_cold_builders_build_once_and_the_second_waits_with_one_note(tmp_path, build_seconds):
     script = tmp_path / "builder.py"
     script.write_text(BUILDER)
@@ -286,6 +289,7 @@ def _ladder_with_entry(tmp_path):
 
 
 @pytest.mark.parametrize("damage", ["truncate", "reseal-a-wrong-coefficient"])
+@pytest.mark.slow
 def test_a_damaged_cache_entry_is_reported_once_and_not_again(tmp_path, damage):
     import io
     import json

@@ -95,6 +95,7 @@ def _strict_json_roundtrip(m, pts):
     assert np.array_equal(MasterCurve.from_dict(json.loads(text)).eps(pts), m.eps(pts))
 
 
+@pytest.mark.slow
 def test_alpha_below_gamma_master():
     """Separation-ended contacts, stiff creeping return: the grid stops at 1e-5, the inner law beyond."""
     s = MasterSettings(**{**SMALL.as_dict(), "log10_omega_min": -6.0, "log10_omega_max": 3.0, "n_highprec": 0})
@@ -109,6 +110,7 @@ def test_alpha_below_gamma_master():
     _strict_json_roundtrip(m, pts)
 
 
+@pytest.mark.slow
 def test_default_master_meets_the_fast_target():
     """The one moderate check: the default curve for the paper's exponents, 1e-9 over 1e-6..1e6."""
     m = build_master("3/2", "1", MasterSettings(n_highprec=3))

@@ -68,6 +68,7 @@ def _overlap_constant():
 
 
 @pytest.mark.parametrize("rtol", [1e-6, 1e-9, 1e-12])
+@pytest.mark.slow
 def test_a_tiny_eps_keeps_its_relative_bound(rtol):
     """eps down to 5e-18 (Omega = 1e-6, a factor Omega^2 below the creep speed): relative, not absolute."""
     C = _overlap_constant()

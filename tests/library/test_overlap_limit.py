@@ -15,6 +15,7 @@ PAIRS = [("3/2", "1/2"), ("3/2", "1"), ("1", "1/2"), ("2", "1"), ("3", "3/2")]
 
 
 @pytest.mark.parametrize("alpha,gamma", PAIRS)
+@pytest.mark.slow
 def test_law_matches_reference_integrator_at_small_omega(alpha, gamma):
     L = overlap_limit(alpha, gamma)
     assert L.k_exact == (Fraction(gamma) + 1) / (2 * Fraction(gamma) + 1 - Fraction(alpha))
@@ -25,6 +26,7 @@ def test_law_matches_reference_integrator_at_small_omega(alpha, gamma):
 
 
 @pytest.mark.parametrize("alpha,gamma", PAIRS[:3])
+@pytest.mark.slow
 def test_exponent_measured_by_the_integrator(alpha, gamma):
     L = overlap_limit(alpha, gamma)
     e1, e2 = (collide(alpha, gamma, om, end="overlap").eps for om in (1e-5, 1e-3))
@@ -46,6 +48,7 @@ def test_correction_is_negative_and_dies_out_faster_than_a_power():
     assert abs(devs[1]) < 1e-2 * abs(devs[0]) and abs(devs[2]) < 1e-3 * abs(devs[1])
 
 
+@pytest.mark.slow
 def test_same_inner_problem_as_the_force_rule_below_alpha_equal_gamma():
     # for alpha < gamma both rules coincide and asymptotics.inner_constant integrates the same problem
     for alpha, gamma in (("1/2", "1"), ("1", "2")):

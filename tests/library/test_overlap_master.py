@@ -35,6 +35,7 @@ def curves(tmp_path_factory):
 
 
 @pytest.mark.parametrize("pair", [("3/2", "1"), ("3/2", "1/2")])
+@pytest.mark.slow
 def test_bound_holds_against_mpmath_at_fresh_points(curves, pair):
     curve, seconds, _ = curves[pair]
     assert curve.bound_inside <= 1e-9
@@ -73,6 +74,7 @@ def test_a_large_request_builds_the_curve_alone(tmp_path):
     lambda c: c["coef"][7].__setitem__(0, c["coef"][7][0] + 1e-6),
     lambda c: c.__setitem__("bound_inside", 1e-20),
 ])
+@pytest.mark.slow
 def test_a_tampered_curve_is_detected_and_rebuilt(tmp_path, change):
     import hashlib
 

@@ -51,6 +51,7 @@ def relative_errors(alpha, gamma, omega):
 
 @pytest.mark.parametrize("alpha,gamma", PAIRS)
 @pytest.mark.parametrize("omega", OMEGAS)
+@pytest.mark.slow
 def test_collide_matches_reference(alpha, gamma, omega):
     ref, got, errors = relative_errors(alpha, gamma, omega)
     assert ref.error_estimate < TOLERANCE * REFERENCE_MARGIN

@@ -21,6 +21,10 @@ from restitution.fast.uniform_build import build_uniform
 PAIRS = [("3/2", "1"), ("3/2", "1/2"), ("1", "0"), ("2", "1/2"), ("5/2", "0")]
 
 
+# the whole module is in `make test` only: each form takes about a second to build
+pytestmark = pytest.mark.slow
+
+
 @pytest.fixture(scope="module", params=PAIRS, ids=lambda p: f"a{p[0]}-g{p[1]}")
 def form(request):
     return build_uniform(*request.param)
@@ -137,7 +141,6 @@ ATLAS_PAIRS = [(a, g) for a in DEFAULT_ALPHAS for g in DEFAULT_GAMMAS
                if Fraction(a) > Fraction(g) and (a, g) not in PAIRS]
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize("alpha,gamma", ATLAS_PAIRS)
 def test_every_atlas_pair_keeps_its_bound_on_fresh_points(alpha, gamma):
     """Every pair of the stability atlas with alpha > gamma: the form is built, its bound is at most

@@ -30,6 +30,10 @@ PAIRS = [("3/2", "1/2"), ("3/2", "1"), ("5/2", "1")]
 SEED = int(np.random.SeedSequence().entropy % 2**32)
 
 
+# the whole module is in `make test` only: each form takes 2-5 s to build
+pytestmark = pytest.mark.slow
+
+
 @pytest.fixture(scope="module", params=PAIRS, ids=lambda p: f"a{p[0]}-g{p[1]}")
 def form(request):
     return build_uniform(*request.param, end="overlap")
@@ -76,7 +80,6 @@ def test_bound_holds_against_mpmath(form):
         assert abs(float(form.eps(w)) / truth - 1) <= form.bound_eps, f"seed {SEED}: Omega={w:.6g}"
 
 
-@pytest.mark.slow
 def test_law_is_the_reference_below_law_below():
     """What the build takes as the reference below LAW_BELOW: the scipy reference itself at
     Omega = 1e-4 and 1e-6 (a second each) agrees with C Omega^kv to 1e-11 (measured 6.5e-13)."""
@@ -163,7 +166,6 @@ ATLAS_PAIRS = [(a, g) for a in DEFAULT_ALPHAS for g in DEFAULT_GAMMAS
                if Fraction(g) < Fraction(a) < 2 * Fraction(g) + 1 and (a, g) not in PAIRS]
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize("alpha,gamma", ATLAS_PAIRS)
 def test_every_atlas_pair_keeps_its_bound_on_fresh_points(alpha, gamma):
     """Every atlas pair with an overlap form: bound at most 1e-4, held at fresh points."""

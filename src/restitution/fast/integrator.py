@@ -44,7 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .jit import HAVE_NUMBA, interpreted_if_cold, njit
+from .jit import HAVE_NUMBA, call_kernel, njit
 
 __all__ = ["HAVE_NUMBA", "collide_fast", "law_parameters", "OVERLAP_RTOL_MAX",
            "END_FORCE", "END_SEPARATION", "END_FAILED", "END_STUCK"]
@@ -635,8 +635,8 @@ def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12, overlap:
         rtol = min(rtol, OVERLAP_RTOL_MAX)
     threads = _threads(om.size)
     if threads == 1:
-        with interpreted_if_cold(om.size, INTERPRETED_MAX_POINTS):
-            _collide_many(law_parameters(int(p), int(qa), int(qg), 0.0), om, float(rtol), res, bool(overlap))
+        call_kernel(om.size, INTERPRETED_MAX_POINTS, _collide_many, law_parameters(int(p), int(qa), int(qg), 0.0),
+                    om, float(rtol), res, bool(overlap))
         return res
     # every thread its own parameter array (the kernel writes Omega into it) and every threads-th
     # point, so that the slow small Omegas of a sorted grid are shared out evenly

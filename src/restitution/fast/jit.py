@@ -12,7 +12,7 @@ an unpickling error on a truncated or otherwise damaged file. :func:`_survive_da
 such a file count as absent: the kernel is recompiled (one note on stderr per process) and the
 damaged file is removed where that is allowed, so the next process finds a good one.
 
-:func:`interpreted_if_cold` runs kernels as the plain Python they are while numba is not imported
+:func:`call_kernel` runs kernels as the plain Python they are while numba is not imported
 yet and the work is small: importing and starting numba costs most of a second, a one-point eps
 call's integration about 10 ms in plain Python (same floating-point operations, same results: 40
 points of both end rules compared bit for bit in the tests).
@@ -21,7 +21,6 @@ points of both end rules compared bit for bit in the tests).
 import importlib.util
 import sys
 import threading
-from contextlib import contextmanager
 
 # numba is an optional accelerator: everything below is also valid plain Python. Whether it is there
 # is asked without importing it: its import and start cost most of a second, which a request that
@@ -98,20 +97,23 @@ _NOTED: set = set()
 _MODE = threading.local()
 
 
-@contextmanager
-def interpreted_if_cold(n: int, limit: int):
-    """Kernels called inside run as plain Python when numba is not imported yet and ``n`` (the
-    caller's measure of work, e.g. points) is at most ``limit``; otherwise compiled as always."""
-    plain = HAVE_NUMBA and n <= limit and "numba" not in sys.modules and not getattr(_MODE, "plain", False)
-    if not plain:
-        yield
-        return
-    _MODE.plain = True
-    try:
-        yield
-    finally:
-        _MODE.plain = False
+def call_kernel(n: int, limit: int, kernel, *args):
+    """``kernel(*args)``, as plain Python when numba is not imported yet and ``n`` (the caller's
+    measure of work, e.g. points) is at most ``limit``; otherwise compiled as always. Where plain
+    Python raises on what compiled code carries on with (an overflow to inf, a division by zero
+    that numba also raises on, any ArithmeticError), the compiled kernel runs instead."""
+    if HAVE_NUMBA and n <= limit and "numba" not in sys.modules and not getattr(_MODE, "plain", False):
+        import numpy as np
 
+        _MODE.plain = True
+        try:
+            with np.errstate(all="ignore"):   # compiled code warns about nothing
+                return kernel(*args)
+        except ArithmeticError:
+            pass
+        finally:
+            _MODE.plain = False
+    return kernel(*args)
 
 
 def _note_damaged(path: str, exc: BaseException) -> None:
@@ -161,4 +163,4 @@ def _survive_damaged_cache() -> None:
     IndexDataCacheFile._restitution_guarded = True
 
 
-__all__ = ["HAVE_NUMBA", "njit", "interpreted_if_cold"]
+__all__ = ["HAVE_NUMBA", "njit", "call_kernel"]

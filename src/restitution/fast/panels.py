@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from .jit import interpreted_if_cold, njit
+from .jit import call_kernel, njit
 
 __all__ = ["PanelRange", "chebyshev_panels_eval"]
 
@@ -75,10 +75,9 @@ def chebyshev_panels_eval(omegas, s0: float, width: float, coef: np.ndarray, vis
     """eps at each Omega from panel Chebyshev coefficients of ln eps (see master.MasterCurve)."""
     om = np.ascontiguousarray(np.asarray(omegas, dtype=np.float64).ravel())
     out = np.empty(om.size)
-    with interpreted_if_cold(om.size, INTERPRETED_MAX_POINTS):
-        _panels_eval(om, float(s0), 1.0 / float(width), np.ascontiguousarray(coef, dtype=np.float64),
-                     np.ascontiguousarray(viscous, dtype=np.float64),
-                     np.ascontiguousarray(elastic, dtype=np.float64), out)
+    call_kernel(om.size, INTERPRETED_MAX_POINTS, _panels_eval, om, float(s0), 1.0 / float(width),
+                np.ascontiguousarray(coef, dtype=np.float64), np.ascontiguousarray(viscous, dtype=np.float64),
+                np.ascontiguousarray(elastic, dtype=np.float64), out)
     return out
 
 
