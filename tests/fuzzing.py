@@ -193,8 +193,11 @@ def check_number_case(case) -> list[dict]:
         if method == "highprec":   # the reference itself at other digits: its cost, not a check
             continue
         # the master curves (force rule, overlap rule) are built for the common pairs, in seconds,
-        # so that their rungs are checked too; the relations' builds take minutes and stay unbuilt
-        build = method == "master" and (case["alpha"], case["gamma"]) in COMMON_PAIRS
+        # so that their rungs are checked too, and the uniform forms (both rules, 1-5 s each) for the
+        # paper's and Hertz exponents; the relations' builds take minutes and stay unbuilt
+        pair = (case["alpha"], case["gamma"])
+        build = ((method == "master" and pair in COMMON_PAIRS)
+                 or (method == "closed-form" and pair in COMMON_PAIRS[:2]))
         r = attempt(method, lambda m=method: api.epsilon(tol=None, method=m, build=build, **common))
         if r is not None:
             records.append(judge(method, float(r.eps[0]), float(r.error_bound)))
