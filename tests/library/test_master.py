@@ -10,7 +10,6 @@ import copy
 import io
 import json
 import math
-import time
 
 import numpy as np
 import pytest
@@ -124,17 +123,7 @@ def test_default_master_meets_the_fast_target():
     assert np.all(err <= m.bound_at(pts) + 2e-13)
     assert m.bound(pts) <= 1e-9
     assert m.checks["highprec"]["max_rel_err_master"] <= m.bound_inside
-    # speed: loose (shared CI machines); the benchmark measures the real figure (>= 1e7/s)
-    many = np.exp(rng.uniform(math.log(1e-6), math.log(1e6), 1_000_000))
-    m.eps(many[:10])
-    t = min(_timed(lambda: m.eps(many)) for _ in range(3))
-    assert many.size / t > 2e6
-
-
-def _timed(f):
-    t0 = time.perf_counter()
-    f()
-    return time.perf_counter() - t0
+    # its speed (>= 1e7 evaluations per second) is a benchmark row (make bench), not a test
 
 
 # ----------------------------------------------------------------------------- the cache module

@@ -20,6 +20,7 @@ from restitution.dem.model_ladder import fit_rung, lammps_rungs
 from restitution.dem.scene import answer_scene
 from restitution.dem.scene_file import scene_from_dict
 from restitution.dem.timestep import verlet_eps
+from mutation import set_at  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 SMALL = ROOT / "scenes" / "small.yaml"
@@ -35,29 +36,20 @@ def _run(argv):
 
 
 # ------------------------------------------------------------------------ refusals: one line, exit 2
-def _set(path, value):
-    def change(d):
-        node = d
-        for key in path[:-1]:
-            node = node[key]
-        node[path[-1]] = value
-    return change
-
-
 REFUSALS = [
-    ("negative radius", _set(["species", 0, "radius"], -1e-3), "species[g].radius"),
-    ("Poisson ratio 0.5", _set(["materials", "glass", "nu"], 0.5), "materials.glass.nu"),
-    ("speed range reversed", _set(["speeds"], [5.0, 0.05]), "speeds"),
-    ("e = 1", _set(["targets", 0, "e"], 1.0), "targets[0].e"),
-    ("e = 0", _set(["targets", 0, "e"], 0.0), "targets[0].e"),
-    ("e above 1 in a table", _set(["targets", 1, "table"], [[0.1, 0.9], [1.0, 1.2]]), "targets[1].table[1][1]"),
-    ("an unknown code option", _set(["options", "limitForce"], True), "options.limitForce"),
-    ("a made-up option", _set(["options", "stiff"], 1), "options.stiff"),
-    ("an unknown normal model", _set(["options", "normal"], "jkr"), "options.normal"),
-    ("a tolerance no method guarantees", _set(["tolerance"], 1e-12), "tolerance"),
-    ("a table with one point", _set(["targets", 1, "table"], [[1.0, 0.9]]), "targets[1].table"),
+    ("negative radius", set_at(["species", 0, "radius"], -1e-3), "species[g].radius"),
+    ("Poisson ratio 0.5", set_at(["materials", "glass", "nu"], 0.5), "materials.glass.nu"),
+    ("speed range reversed", set_at(["speeds"], [5.0, 0.05]), "speeds"),
+    ("e = 1", set_at(["targets", 0, "e"], 1.0), "targets[0].e"),
+    ("e = 0", set_at(["targets", 0, "e"], 0.0), "targets[0].e"),
+    ("e above 1 in a table", set_at(["targets", 1, "table"], [[0.1, 0.9], [1.0, 1.2]]), "targets[1].table[1][1]"),
+    ("an unknown code option", set_at(["options", "limitForce"], True), "options.limitForce"),
+    ("a made-up option", set_at(["options", "stiff"], 1), "options.stiff"),
+    ("an unknown normal model", set_at(["options", "normal"], "jkr"), "options.normal"),
+    ("a tolerance no method guarantees", set_at(["tolerance"], 1e-12), "tolerance"),
+    ("a table with one point", set_at(["targets", 1, "table"], [[1.0, 0.9]]), "targets[1].table"),
     ("a missing target", lambda d: d["targets"].pop(0), "targets"),
-    ("an unknown material", _set(["species", 0, "material"], "gold"), "species[g].material"),
+    ("an unknown material", set_at(["species", 0, "material"], "gold"), "species[g].material"),
 ]
 
 

@@ -26,6 +26,7 @@ from pipeline_tree import BIN, ENV, ROOT, copy_built, digests, fresh_tree, make,
 
 sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
 from _config import ConfigError, check_config  # noqa: E402  (workflow/scripts/_config.py)
+from mutation import set_at  # noqa: E402
 
 
 def known_bug(reason):
@@ -239,15 +240,6 @@ def _variant(cfg):
     return cfg["variants"][0]
 
 
-def _set(path, value):
-    def mutate(cfg):
-        node = cfg
-        for key in path[:-1]:
-            node = node[key]
-        node[path[-1]] = value
-    return mutate
-
-
 def _rename(name):
     def mutate(cfg):
         old = _variant(cfg)["name"]
@@ -268,15 +260,15 @@ def _drop(path):
 
 V = ("variants", 0)
 CONFIG_CASES = [
-    ("zero D1", _set(V + ("D1",), 0), "D1 = 0"),
-    ("negative D2", _set(V + ("D2",), -1.0), "D2 = -1.0"),
-    ("negative g_figure", _set(V + ("g_figure",), -0.1), "g_figure = -0.1"),
-    ("zero g_range.min", _set(V + ("g_range", "min"), 0), "g_range.min = 0"),
-    ("alpha zero", _set(V + ("alpha",), "0"), "alpha = '0'"),
-    ("alpha negative", _set(V + ("alpha",), "-3/2"), "alpha = '-3/2'"),
-    ("alpha not a short rational", _set(V + ("alpha",), "7/19"), "alpha = '7/19'"),
-    ("alpha NaN", _set(V + ("alpha",), math.nan), "alpha = nan"),
-    ("gamma infinite", _set(V + ("gamma",), math.inf), "gamma = inf"),
+    ("zero D1", set_at(V + ("D1",), 0), "D1 = 0"),
+    ("negative D2", set_at(V + ("D2",), -1.0), "D2 = -1.0"),
+    ("negative g_figure", set_at(V + ("g_figure",), -0.1), "g_figure = -0.1"),
+    ("zero g_range.min", set_at(V + ("g_range", "min"), 0), "g_range.min = 0"),
+    ("alpha zero", set_at(V + ("alpha",), "0"), "alpha = '0'"),
+    ("alpha negative", set_at(V + ("alpha",), "-3/2"), "alpha = '-3/2'"),
+    ("alpha not a short rational", set_at(V + ("alpha",), "7/19"), "alpha = '7/19'"),
+    ("alpha NaN", set_at(V + ("alpha",), math.nan), "alpha = nan"),
+    ("gamma infinite", set_at(V + ("gamma",), math.inf), "gamma = inf"),
     ("name with a space", _rename("my variant"), "name = 'my variant'"),
     ("name with a slash", _rename("a/b"), "name = 'a/b'"),
     ("name going up", _rename("../up"), "name = '../up'"),
@@ -286,13 +278,13 @@ CONFIG_CASES = [
     ("empty name", _rename(""), "name = ''"),
     ("missing D1", _drop(V + ("D1",)), "missing required field(s) D1"),
     ("missing variants", _drop(("variants",)), "missing required field(s) variants"),
-    ("mistyped numerics key", _set(("numerics", "rtoll"), 1e-10), "numerics.rtoll"),
-    ("mistyped top-level key", _set(("numerix",), {}), "numerix"),
-    ("mistyped variant key", _set(V + ("D3",), 1.0), "D3"),
-    ("rtol as text", _set(("numerics", "rtol"), "tight"), "numerics.rtol = 'tight'"),
-    ("rtol too small", _set(("numerics", "rtol"), 1e-20), "numerics.rtol = 1e-20"),
-    ("variants not a list", _set(("variants",), "kim"), "variants = 'kim'"),
-    ("main_variant unknown", _set(("main_variant",), "nope"), "main_variant = 'nope'"),
+    ("mistyped numerics key", set_at(("numerics", "rtoll"), 1e-10), "numerics.rtoll"),
+    ("mistyped top-level key", set_at(("numerix",), {}), "numerix"),
+    ("mistyped variant key", set_at(V + ("D3",), 1.0), "D3"),
+    ("rtol as text", set_at(("numerics", "rtol"), "tight"), "numerics.rtol = 'tight'"),
+    ("rtol too small", set_at(("numerics", "rtol"), 1e-20), "numerics.rtol = 1e-20"),
+    ("variants not a list", set_at(("variants",), "kim"), "variants = 'kim'"),
+    ("main_variant unknown", set_at(("main_variant",), "nope"), "main_variant = 'nope'"),
 ]
 
 
@@ -309,18 +301,18 @@ def test_config_error_is_one_line_naming_the_field(schema_path, label, mutate, f
 # Once mishandled (NaN and infinities passed the schema's bounds, a NaN g_range.min was reported
 # against g_range.max, names had no length limit), now one line naming the field.
 CONFIG_CASES_ONCE_MISHANDLED = [
-    ("NaN D1", _set(V + ("D1",), math.nan), "D1 = nan: must be a finite number > 0"),
-    ("infinite D2", _set(V + ("D2",), math.inf), "D2 = inf: must be a finite number > 0"),
-    ("NaN rtol", _set(("numerics", "rtol"), math.nan), "rtol = nan: must be a finite number in [1e-14, 0.001]"),
-    ("infinite g_range.max", _set(V + ("g_range", "max"), math.inf), "g_range.max = inf"),
-    ("NaN g_range.min", _set(V + ("g_range", "min"), math.nan), "g_range.min = nan:"),
-    ("NaN g_range.min as text", _set(V + ("g_range", "min"), "nan"), "g_range.min = nan:"),
-    ("NaN fit_g_range.max", _set(V + ("fit_g_range",), {"min": 0.01, "max": math.nan}), "fit_g_range.max = nan:"),
-    ("infinite compare.omega_max", _set(("compare", "omega_max"), math.inf), "compare.omega_max = inf:"),
-    ("NaN validation tolerance", _set(("validation", "pade_tolerance"), math.nan), "pade_tolerance = nan:"),
-    ("infinite tau_max_forward", _set(V + ("plot", "tau_max_forward"), math.inf), "tau_max_forward = inf:"),
-    ("alpha 3.14159", _set(V + ("alpha",), 3.14159), "alpha = 3.14159"),
-    ("alpha 1e300", _set(V + ("alpha",), 1e300), "alpha = 1e+300"),
+    ("NaN D1", set_at(V + ("D1",), math.nan), "D1 = nan: must be a finite number > 0"),
+    ("infinite D2", set_at(V + ("D2",), math.inf), "D2 = inf: must be a finite number > 0"),
+    ("NaN rtol", set_at(("numerics", "rtol"), math.nan), "rtol = nan: must be a finite number in [1e-14, 0.001]"),
+    ("infinite g_range.max", set_at(V + ("g_range", "max"), math.inf), "g_range.max = inf"),
+    ("NaN g_range.min", set_at(V + ("g_range", "min"), math.nan), "g_range.min = nan:"),
+    ("NaN g_range.min as text", set_at(V + ("g_range", "min"), "nan"), "g_range.min = nan:"),
+    ("NaN fit_g_range.max", set_at(V + ("fit_g_range",), {"min": 0.01, "max": math.nan}), "fit_g_range.max = nan:"),
+    ("infinite compare.omega_max", set_at(("compare", "omega_max"), math.inf), "compare.omega_max = inf:"),
+    ("NaN validation tolerance", set_at(("validation", "pade_tolerance"), math.nan), "pade_tolerance = nan:"),
+    ("infinite tau_max_forward", set_at(V + ("plot", "tau_max_forward"), math.inf), "tau_max_forward = inf:"),
+    ("alpha 3.14159", set_at(V + ("alpha",), 3.14159), "alpha = 3.14159"),
+    ("alpha 1e300", set_at(V + ("alpha",), 1e300), "alpha = 1e+300"),
     ("300-character name", _rename("k" * 300), "name = 'kkk"),
 ]
 

@@ -15,17 +15,22 @@ __all__ = ["uniform_eps"]
 
 
 @njit(cache=True)
+def _one_plus_minus_u(lx, half_sigma):  # pragma: no cover - compiled
+    """1 + u and 1 - u for u = tanh(sigma/2 ln x) = (x^sigma - 1)/(x^sigma + 1), each without cancellation."""
+    xs = math.exp(2.0 * half_sigma * lx)
+    if xs > 1e300:
+        return 2.0, 0.0
+    return 2.0 * xs / (xs + 1.0), 2.0 / (xs + 1.0)
+
+
+@njit(cache=True)
 def _kernel(om, A, k, b, c_log, c3, half_sigma, m0, m1, coef, out):  # pragma: no cover - compiled
     n = coef.size
     for i in range(om.size):
         x = b * om[i]
         lx = math.log(x)
         l1 = math.log1p(x)                      # and log1p(1/x) = l1 - lx
-        xs = math.exp(2.0 * half_sigma * lx)    # x^sigma; u = (xs - 1)/(xs + 1) = tanh(sigma/2 ln x)
-        if xs > 1e300:
-            up, um = 2.0, 0.0
-        else:
-            up, um = 2.0 * xs / (xs + 1.0), 2.0 / (xs + 1.0)   # 1 + u and 1 - u, each without cancellation
+        up, um = _one_plus_minus_u(lx, half_sigma)
         u = up - 1.0
         skel = (b * math.exp((1.0 - A) * l1) / x + (c_log * (l1 - lx) + c3) / ((1.0 + x) * (1.0 + x))) / k
         env = 1.0
@@ -47,8 +52,7 @@ def _kernel_overlap(om, A, kv, b, lnK, decay_rate, half_sigma, m1, P, coef, out)
         lx = math.log(x)
         lp = math.log1p(math.exp(P * lx))       # ln(1 + x^P)
         w = math.exp(P * lx - lp)
-        xs = math.exp(2.0 * half_sigma * lx)
-        um = 0.0 if xs > 1e300 else 2.0 / (xs + 1.0)   # 1 - u without cancellation
+        um = _one_plus_minus_u(lx, half_sigma)[1]
         u = 1.0 - um
         env = math.exp(-decay_rate / x)
         for _ in range(m1):
@@ -71,6 +75,5 @@ def uniform_eps(form: UniformForm, omegas) -> np.ndarray:
         _kernel_overlap(flat, s.A, s.kv, s.b, math.log(s.K), form.rate, 0.5 * form.sigma, form.m1, float(OVERLAP_P),
                         coef, out)
         return out.reshape(om.shape)
-    _kernel(flat, s.A, s.k, s.b, s.c_log, s.c3, 0.5 * form.sigma, form.m0, form.m1,
-            coef, out)
+    _kernel(flat, s.A, s.k, s.b, s.c_log, s.c3, 0.5 * form.sigma, form.m0, form.m1, coef, out)
     return out.reshape(om.shape)
