@@ -10,6 +10,7 @@ import sys
 import textwrap
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from cli_run import run_cli
@@ -100,10 +101,13 @@ def test_no_writable_kernel_cache_anywhere_still_runs(tmp_path):
 
 @pytest.mark.slow
 def test_the_real_fast_path_survives_a_truncated_kernel_cache(tmp_path):
-    """The issue's example: every *.nbc/*.nbi truncated, then the CLI's fast method and the API."""
+    """The issue's example: every *.nbc/*.nbi truncated, then the CLI's compiled integrator and the
+    API. Twelve points: up to eight, a process that has not started numba integrates in plain Python
+    and compiles nothing (fast.jit.call_kernel)."""
     env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path / "numba")}
-    cmd = [str(Path(sys.executable).parent / "restitution"), "collide", "--alpha", "3/2", "--gamma", "1",
-           "--omega", "0.47", "--method", "fast", "--json"]
+    omegas = ["0.47", *(f"{w:.6g}" for w in np.geomspace(0.1, 10.0, 11))]
+    cmd = [str(Path(sys.executable).parent / "restitution"), "eps", "--alpha", "3/2", "--gamma", "1",
+           "--omega", *omegas, "--method", "integrator", "--json"]
     good = subprocess.run(cmd, capture_output=True, text=True, env=env, timeout=600)
     assert good.returncode == 0, good.stderr
     files = [p for p in (tmp_path / "numba").rglob("*") if p.suffix in (".nbc", ".nbi")]
@@ -116,7 +120,7 @@ def test_the_real_fast_path_survives_a_truncated_kernel_cache(tmp_path):
     for p in [p for p in (tmp_path / "numba").rglob("*") if p.suffix == ".nbc"]:
         p.write_bytes(p.read_bytes()[:10])
     api = subprocess.run([sys.executable, "-c", "import restitution as r; print(r.epsilon(alpha='3/2', "
-                          "gamma=1, omega=[0.47], tol=1e-8, build=False).eps[0])"],
+                          f"gamma=1, omega={[float(w) for w in omegas]}, tol=1e-8, build=False).eps[0])"],
                          capture_output=True, text=True, env=env, timeout=600)
     assert api.returncode == 0 and abs(float(api.stdout) - 0.33067437134437433) < 1e-7, api.stderr
 

@@ -36,9 +36,10 @@ and 1/eps = Omega^(-kv)/C has no "1 +" at small Omega):
 P = OVERLAP_P, b = (C C1)^(1/(kv - A)) and K = b^kv / C fixed by the two limits (kv > A exactly when
 alpha > gamma), so that eps -> C Omega^kv (1 + O(Omega^(P+kv))) and 1 - eps -> C1 Omega^(-A); the
 envelope e^(-r/x) vanishes like the true correction, and eps > 0 for any coefficients. The shape is
-(sigma, r, m1). Its degree reaches 31, where the powers of u would need coefficients of 1e11
-(12 printed digits then change eps by 1e-4): it is stored in Chebyshev polynomials T_j(u) =
-cos(j arccos u). Where alpha >= 2 gamma + 1 the bodies can stick at small Omega and there is no such form.
+(sigma, r, m1). Its degree reaches 39: in powers of u, or fitted without a penalty on their size,
+the coefficients reached 1e8 to 1e11 and 12 printed digits moved eps by up to 1e-4, so it is stored
+in Chebyshev polynomials T_j(u) = cos(j arccos u) and fitted with a small ridge (OVERLAP_RIDGE).
+Where alpha >= 2 gamma + 1 the bodies can stick at small Omega and there is no such form.
 """
 
 from __future__ import annotations
@@ -56,10 +57,7 @@ from .exponents import as_exponents
 from .overlap_limit import overlap_limit
 
 __all__ = ["UniformForm", "Skeleton", "OverlapSkeleton", "skeleton", "fit_uniform", "SHAPES", "DEGREE",
-           "FORM_RANGE", "UNIFORM_VERSION", "END_RULES"]
-
-#: The end rules a form is made for (core.collision's ``end``).
-END_RULES = ("force", "overlap")
+           "FORM_RANGE", "UNIFORM_VERSION"]
 
 #: Bumped whenever the form or its fit changes (cached forms of an older kind are rebuilt).
 UNIFORM_VERSION = 1

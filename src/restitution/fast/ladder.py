@@ -3,8 +3,8 @@
 Rungs (cheapest first; bounds are relative errors in eps, measured against the references on points
 not used to build the rung; "cal" = reads a build of :mod:`restitution.fast.calibration`: the master
 curve (0.1 s for alpha > gamma, 5 s for alpha < gamma), a relation's own c0-c2 (the perturbation
-route: seconds an order) or the uniform form (under a second); "ovl" = reads the overlap rule's own
-curve (under a second). Each is built on its own when a request pays for it, and cached):
+route: seconds an order) or the uniform form (under a second; the overlap rule's 2-5 s); "ovl" =
+reads the overlap rule's own curve (under a second). Each is built on its own when a request pays for it, and cached):
 
 ======================  =========================================  ============================  ========
 rung                    what                                       domain                        cost/pt
@@ -24,7 +24,8 @@ elastic          (cal)  large-Omega expansion (asymptotics)         Omega >= 1e2
 closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma; alpha=1,gamma=0   5e-7 s
                         linear spring-dashpot (core.dashpot);                                      5e-6 s
                  (cal)  otherwise the uniform form (core.uniform)   alpha>gamma, Omega in          ~1e-7 s
-                                                                    [1e-8, 1e8]
+                        (overlap rule: its own form, built alone    [1e-8, 1e8] (overlap rule:
+                        in 2-5 s)                                   gamma<alpha<2gamma+1)
 master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
                  (ovl)  overlap rule: its own curve, Chebyshev      Omega in [1e-4, 1e8], above    ~4e-8 s
                         only (fast.overlap_master), built alone     a sticking boundary
@@ -51,7 +52,8 @@ Bounds:
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
 End rule: each rung declares the rules it serves where they differ (alpha > gamma): closed-form
-(the dashpot only), master, integrator, reference and highprec serve both (each with a rung of
+(the dashpot, and the overlap rule's own uniform form where gamma < alpha < 2 gamma + 1), master,
+integrator, reference and highprec serve both (each with a rung of
 its own per rule where needed); the others the "force" rule (for
 alpha <= gamma the rules coincide and all serve).
 
