@@ -27,9 +27,11 @@ from test_variants import FLAT_CONFIG  # noqa: E402
 
 SLURM_LOCAL = ROOT / "workflow/tools/slurm-local"
 TARGET = "results/flat/study.txt"
-#: The local cluster has no accounting database (slurmdbd), so the plugin asks squeue, not sacct.
+#: The local cluster has no accounting database (slurmdbd), so the plugin asks squeue, not sacct; and
+#: it is this machine's own, so it may be asked every 2 s (Snakemake's default, 10 s, is for a shared
+#: queue: here it left the finished job waiting up to 10 s more).
 CLUSTER_ARGS = ["--slurm-status-command", "squeue", "--slurm-init-seconds-before-status-checks", "2",
-                "--slurm-keep-successful-logs"]
+                "--seconds-between-status-checks", "2", "--slurm-keep-successful-logs"]
 
 pytestmark = [pytest.mark.slurm, pytest.mark.slow]
 
