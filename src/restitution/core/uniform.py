@@ -92,11 +92,10 @@ OVERLAP_RIDGE = 1e-4
 LAWSON_STEPS = 60
 
 
-def SHAPES(A: float, margin: float = MARGIN) -> list[tuple[float, int, int]]:
-    """(sigma, m0, m1) candidates for this A: every combination with sigma m1 >= margin A (the
-    overlap form's fitted term is a relative correction already: margin 0)."""
+def SHAPES(A: float) -> list[tuple[float, int, int]]:
+    """(sigma, m0, m1) candidates for this A: every combination with sigma m1 >= MARGIN A."""
     sig = sorted(set(SIGMAS) | {A})
-    return [(s, m0, m1) for s in sig for m0 in POWERS_M0 for m1 in POWERS_M1 if s * m1 >= margin * A - 1e-12]
+    return [(s, m0, m1) for s in sig for m0 in POWERS_M0 for m1 in POWERS_M1 if s * m1 >= MARGIN * A - 1e-12]
 
 
 @dataclass(frozen=True)
@@ -294,8 +293,7 @@ def _lawson(M: np.ndarray, y: np.ndarray, steps: int = LAWSON_STEPS, ridge: floa
         return np.linalg.lstsq(np.vstack([M * sw[:, None], damp]), np.concatenate([y * sw, np.zeros(len(damp))]),
                                rcond=None)[0]
 
-    c = solve(w)
-    for _ in range(steps):
+    for _ in range(max(steps, 1)):   # the first pass, with equal weights, is plain least squares
         c = solve(w)
         e = np.abs(M @ c - y)
         if not np.all(np.isfinite(e)) or e.sum() == 0:

@@ -64,6 +64,12 @@ def load_json(path: Path, stream=None) -> dict | None:
     content must match the sha256 sealed with it, so an edited value (even valid JSON) is refused
     and rebuilt instead of being used with the bound of the original. A damaged file is named on
     ``stream`` (default stderr); a missing one is not."""
+    sealed = _load_sealed(path, stream)
+    return None if sealed is None else sealed[0]
+
+
+def _load_sealed(path: Path, stream=None) -> tuple[dict, str] | None:
+    """:func:`load_json`'s dict with the sha256 it was verified against."""
     try:
         with open(path, encoding="utf-8") as fh:
             stored = json.load(fh)
@@ -74,7 +80,7 @@ def load_json(path: Path, stream=None) -> dict | None:
     try:
         if isinstance(stored, dict) and isinstance(stored.get("content"), dict) \
                 and stored.get("sha256") == _digest(stored["content"]):
-            return stored["content"]
+            return stored["content"], stored["sha256"]
     except ValueError:   # NaN or infinity in the content: never written by us
         pass
     print(f"restitution: the cache file {path} is damaged or was changed after it was written; "
@@ -132,8 +138,8 @@ def _source_digest() -> str:
     return _SOURCE_DIGEST[0]
 
 
-def _checked_mark(path: Path, data: dict) -> str:
-    return hashlib.sha256(f"{path.name}\n{_source_digest()}\n{_digest(data)}".encode()).hexdigest()
+def _checked_mark(path: Path, sha256: str) -> str:
+    return hashlib.sha256(f"{path.name}\n{_source_digest()}\n{sha256}".encode()).hexdigest()
 
 
 def _mark_path(path: Path) -> Path:
@@ -146,12 +152,13 @@ def load_or_discard(path: Path, stream=None, valid: Callable[[dict], bool] = lam
     very form, see the module docstring); a file that is not is removed with one note
     (:func:`discard_damaged`), so the next call finds nothing and says nothing."""
     quiet = io.StringIO()
-    data = load_json(path, quiet)
-    if data is None:
+    sealed = _load_sealed(path, quiet)
+    if sealed is None:
         if quiet.getvalue():
             discard_damaged(path, stream)
         return None
-    mark = _checked_mark(path, data) if remember else None
+    data, sha256 = sealed
+    mark = _checked_mark(path, sha256) if remember else None
     try:
         if mark is not None and _mark_path(path).read_text(encoding="ascii") == mark:
             return data

@@ -404,14 +404,8 @@ class Ladder:
     def overlap_key(self) -> str:
         return self._spec(OVERLAP_CURVE).key
 
-    def uniform(self, end: str = "force") -> UniformForm | None:
-        """The uniform form for ``end`` (None where there is none: alpha <= gamma, or alpha >= 2 gamma + 1
-        under the overlap rule)."""
-        if not self.ex.alpha > self.ex.gamma:
-            return None
-        if end == "overlap":
-            return self._build(UNIFORM_OVERLAP) if self.ex.alpha < 2 * self.ex.gamma + 1 else None
-        return self._build(UNIFORM)
+    def uniform(self) -> UniformForm | None:
+        return self._build(UNIFORM) if self.ex.alpha > self.ex.gamma else None
 
     def calibration(self) -> Calibration:
         """Everything: the master curve checked against mpmath, every relation rung and the uniform

@@ -19,7 +19,7 @@ __all__ = ["ClosedForm", "EXACT_BOUND"]
 #: Bound of the exact forms (validated against mpmath).
 EXACT_BOUND = 2e-14
 #: Seconds per point: alpha = gamma, the dashpot (a few special functions in Python), the uniform form.
-COSTS = {"equal": 5e-7, "dashpot": 5e-6, "uniform": 1e-7, "none": 0.0, "sticks": 0.0}
+COSTS = {"equal": 5e-7, "dashpot": 5e-6, "uniform": 1e-7}
 
 
 def _kind(req: Request) -> str:
