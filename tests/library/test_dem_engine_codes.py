@@ -6,11 +6,10 @@ import math
 import pytest
 
 from restitution.core.errors import ParameterError
-from restitution.dem.codes import (Pair, liggghts_contact, liggghts_e, thornton_betan, yade_mindlin_contact,
+from restitution.dem.codes import (liggghts_contact, liggghts_e, thornton_betan, yade_mindlin_contact,
                                    yade_mindlin_en, yade_viscel_contact, yade_viscel_setting)
 from restitution.dem.settings import yade_design
-
-PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
+from engine_case import PAIR  # noqa: E402
 
 
 def test_thornton_fit_is_what_yade_computes():

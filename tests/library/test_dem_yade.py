@@ -10,17 +10,14 @@ values for a target eps must reach it in Yade to 1e-5 (design).
 
 import pytest
 
-from restitution.dem.codes import Pair, yade_mindlin_contact, yade_viscel_contact
+from restitution.dem.codes import yade_mindlin_contact, yade_viscel_contact
 from restitution.dem.settings import TYPED_E_CODES, yade_design
 from restitution.dem.yade import available, mindlin_material, viscel_material, yade_eps_extrapolated, yade_states
+from engine_case import MATERIAL, PAIR, SPEEDS  # noqa: E402
 
 pytestmark = [pytest.mark.dem, pytest.mark.slow,
               pytest.mark.skipif(not available(), reason="Yade not installed: as root, apt-get install yade "
                                                          "(make test does it)")]
-
-PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
-SPEEDS = (0.01, 0.1, 1.0)
-MATERIAL = {"E": 5e7, "nu": 0.3}
 
 
 def _engine(contact, setting):
