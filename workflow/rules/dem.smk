@@ -91,7 +91,7 @@ rule overlap_limit:
     """eps ~ C Omega^k under the overlap rule: the law, its checks against the reference and mpmath
     integrators, its table, figure and the numbers the manuscript prints."""
     input:
-        src=lib("core.overlap_limit", "core.collision", "core.highprec"),
+        src=lib("core.overlap_limit", "core.collision", "core.highprec", "fast.master", "fast.rung"),
         code=code("overlap_limit.py") + ["workflow/scripts/common/latex.py"],
     output:
         csv=OVERLAP_FILES[0],

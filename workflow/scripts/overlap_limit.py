@@ -19,11 +19,14 @@ from common.pipeline import save_figure, setup_matplotlib, start, write_csv, wri
 from restitution.core.collision import collide
 from restitution.core.highprec import reference_collision
 from restitution.core.overlap_limit import overlap_limit
+from restitution.fast.master import reference_eps
+from restitution.fast.rung import integrator_bound
 
 start(snakemake)
 P = snakemake.params
 out = snakemake.output
 RTOL = 1e-12
+CURVE_RTOL = 1e-14
 
 
 @lru_cache(maxsize=None)
@@ -53,10 +56,10 @@ for a, g, label in pairs:
                  "slope": slope, "max_dev_small": max(abs(v) for v in small.values()), "dev_highprec": hp,
                  **{f"dev_{om:g}": v for om, v in moderate.items()},
                  **{f"ratio_{om:g}": v for om, v in ratio.items()}, "force_k": L.force_k, "decay": L.decay})
-    for om in np.logspace(np.log10(P.curve_omega[0]), np.log10(P.curve_omega[1]), P.curve_points):
-        eo, ef = eps(a, g, om, "overlap"), eps(a, g, om, "force")
-        curves.append({"alpha": a, "gamma": g, "omega": om, "eps_overlap": eo, "eps_force": ef,
-                       "law_overlap": law(om), "law_force": L.force_k * om})
+    om = np.logspace(np.log10(P.curve_omega[0]), np.log10(P.curve_omega[1]), P.curve_points)
+    eo, ef = reference_eps(a, g, om, CURVE_RTOL, "overlap"), reference_eps(a, g, om, CURVE_RTOL, "force")
+    curves += [{"alpha": a, "gamma": g, "omega": w, "eps_overlap": o, "eps_force": f, "law_overlap": law(w),
+                "law_force": L.force_k * w} for w, o, f in zip(om, eo, ef)]
 table = pd.DataFrame(rows)
 curve = pd.DataFrame(curves)
 write_csv(out.csv, table)
@@ -123,9 +126,9 @@ for i, r in enumerate(rows):
     left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], color=colours[i % 7], lw=1.6, label=lab)
     left.loglog(c["omega"], c["law_overlap"] / c["law_force"], color=colours[i % 7], lw=0.9, ls="--")
     inv = np.asarray(P.decay_inverse_omegas, dtype=float)
-    d = np.array([abs(eps(r["alpha"], r["gamma"], 1.0 / x, "overlap") / (r["C"] * x ** -float(Fraction(r["k"]))) - 1.0)
-                  for x in inv])
-    keep = d > 1e-13          # below that the integrator's own error shows
+    d = np.abs(reference_eps(r["alpha"], r["gamma"], 1.0 / inv, CURVE_RTOL, "overlap")
+               / (r["C"] * inv ** -float(Fraction(r["k"]))) - 1.0)
+    keep = d > integrator_bound(CURVE_RTOL)          # below that the integrator's own error shows
     right.semilogy(inv[keep], d[keep], "o-", color=colours[i % 7], ms=3.5, lw=1.0, label=lab)
 left.set_ylim(top=3.0)
 left.set_xlabel(r"$\Omega$")
