@@ -6,7 +6,8 @@ for every refusal of bad input in this project), 75 (lock not had in time), 128+
 ``--watch PID`` (make's pid, which the Makefile passes): make killed by SIGTERM dies at once and
 leaves its recipe's processes running; the guard notices the next half second and stops the build
 as if it had received the SIGTERM itself. Ctrl-C reaches make, the shell and the guard together
-(one process group); the guard passes it to Snakemake, which runs in a session of its own.
+(one process group); the guard passes it to Snakemake, which runs in a session of its own, and
+stops Snakemake's running jobs, so that the build ends within seconds.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import sys
 import time
 from pathlib import Path
 
+import psutil   # a dependency of Snakemake's
 from preflight import acquire, compact_written, diagnose, preflight, say, tidy, unlock
 
 GRACE = float(os.environ.get("PIPELINE_STOP_GRACE", "20"))  # seconds from a signal to SIGKILL
@@ -45,11 +47,18 @@ def run(cmd: list[str], tree: Path, lock_fd: int, watch: int | None = None) -> i
     received = []
 
     def forward(signum, _frame):
-        # to Snakemake alone: it stops its own jobs and keeps what they finished (a signal to the
-        # whole group would hit a job between writing its output and Snakemake recording it)
+        # To Snakemake, which keeps what its jobs finished, and then to its running jobs: on a signal
+        # Snakemake waits for them to finish (minutes for a long one, until GRACE ran out), as a
+        # terminal's Ctrl-C would not let it. A stopped job counts as failed: Snakemake removes its
+        # outputs and exits within a second; one stopped between writing and being recorded is
+        # marked incomplete and redone by the next run.
         received.append((signum, time.monotonic()))
         with contextlib.suppress(ProcessLookupError):
             os.kill(child.pid, signum)
+        with contextlib.suppress(psutil.Error):
+            for job in psutil.Process(child.pid).children(recursive=True):
+                with contextlib.suppress(psutil.Error):
+                    job.terminate()
 
     for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
         signal.signal(s, forward)
