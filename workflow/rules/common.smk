@@ -96,13 +96,25 @@ def _module_file(dotted):
     return None
 
 
+def _statements(body):
+    """Every statement of a module, nested ones (in functions, classes, if/try/with) included: an
+    import is a statement, so expressions need not be walked (ast.walk over every node took most
+    of the Snakefile's load time, which every run, dry run and cluster job step pays)."""
+    for node in body:
+        yield node
+        for field in ("body", "orelse", "finalbody", "handlers"):
+            yield from _statements(getattr(node, field, ()))
+        for case in getattr(node, "cases", ()):
+            yield from _statements(case.body)
+
+
 @functools.cache   # every rule asks again; parsing each module once keeps a no-op run fast
 def _imports_of(dotted):
     """Dotted names (below restitution) of the package modules that module `dotted` imports."""
     f = _module_file(dotted)
     here = [p for p in dotted.split(".") if p] + (["__init__"] if f.name == "__init__.py" else [])
     found = set()
-    for node in ast.walk(ast.parse(f.read_text(), filename=str(f))):
+    for node in _statements(ast.parse(f.read_text(), filename=str(f)).body):
         if isinstance(node, ast.ImportFrom):
             if node.level:
                 base = here[:len(here) - node.level]
