@@ -51,14 +51,18 @@ def run(cmd: list[str], tree: Path, lock_fd: int, watch: int | None = None) -> i
         # Snakemake waits for them to finish (minutes for a long one, until GRACE ran out), as a
         # terminal's Ctrl-C would not let it. A stopped job counts as failed: Snakemake removes its
         # outputs and exits within a second; one stopped between writing and being recorded is
-        # marked incomplete and redone by the next run.
+        # marked incomplete and redone by the next run. The jobs are those running before the
+        # signal: what Snakemake starts on it (a cluster executor's scancel) is left alone.
         received.append((signum, time.monotonic()))
+        try:
+            jobs = psutil.Process(child.pid).children(recursive=True)
+        except psutil.Error:
+            jobs = []
         with contextlib.suppress(ProcessLookupError):
             os.kill(child.pid, signum)
-        with contextlib.suppress(psutil.Error):
-            for job in psutil.Process(child.pid).children(recursive=True):
-                with contextlib.suppress(psutil.Error):
-                    job.terminate()
+        for job in jobs:
+            with contextlib.suppress(psutil.Error):
+                job.terminate()
 
     for s in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
         signal.signal(s, forward)
