@@ -134,7 +134,9 @@ def test_bad_input_gives_one_line_and_exit_2(args):
     # numba's import and start cost most of a second; a request no compiled kernel serves skips them
     (["--alpha", "1", "--gamma", "1", "--omega", "0.1", "3"], "closed-form", "numba"),
 ])
-def test_a_one_off_eps_call_imports_only_what_its_answer_needs(argv, method, unused):
+def test_a_one_off_eps_call_imports_only_what_its_answer_needs(argv, method, unused, empty_cache):
+    # an empty cache of its own: with a master curve that an earlier test built in the session's
+    # cache, the curve answers instead of the integrator (the suite run slow tests first failed so)
     code = ("import sys\nfrom restitution.cli import main\n"
             f"assert main(['eps', *{argv!r}]) == 0\n"
             f"print(sorted(m for m in sys.modules if m == {unused!r} or m.startswith({unused!r} + '.')))")
