@@ -93,6 +93,10 @@ def test_stopping_make_stops_the_whole_build(tmp_path, how, target):
         else:
             os.kill(make.pid, signal.SIGTERM)        # `kill <make's pid>`
         make.wait(timeout=60)
+        # the guard stopped the running job itself; Snakemake alone waits for it until the guard's
+        # grace runs out and it is killed (which the timing below would still let pass)
+        err = make.stderr.read()
+        assert "did not stop within" not in err, err[-2000:]
         assert _gone(procs, 30), [p.cmdline() for p in procs if p.is_running()]
         assert time.monotonic() - t0 < 30, "the build did not stop within seconds"
     finally:

@@ -48,8 +48,8 @@ def run(cmd: list[str], tree: Path, lock_fd: int, watch: int | None = None) -> i
 
     def forward(signum, _frame):
         # To Snakemake, which keeps what its jobs finished, and then to its running jobs: on a signal
-        # Snakemake waits for them to finish (minutes for a long one, until GRACE ran out), as a
-        # terminal's Ctrl-C would not let it. A stopped job counts as failed: Snakemake removes its
+        # Snakemake alone waits for them to finish (minutes for a long one, until GRACE runs out),
+        # which a terminal's Ctrl-C, reaching the jobs too, would not let it do. A stopped job counts as failed: Snakemake removes its
         # outputs and exits within a second; one stopped between writing and being recorded is
         # marked incomplete and redone by the next run. The jobs are those running before the
         # signal: what Snakemake starts on it (a cluster executor's scancel) is left alone.
