@@ -24,7 +24,9 @@ SAME_BITS = textwrap.dedent("""
     from restitution.fast.integrator import INTERPRETED_MAX_POINTS, collide_fast
     from restitution.fast.panels import chebyshev_panels_eval
     from restitution.core.exponents import as_exponents
+    from restitution.fast import jit
 
+    jit.PLAIN_BUDGET = float("inf")   # every small request below in plain Python, however long
     om = np.geomspace(1e-4, 1e6, INTERPRETED_MAX_POINTS)
     pairs = [("3/2", "1"), ("3/2", "1/2"), ("5/2", "1"), ("1", "3/2"), ("2", "3/4")]
     plain = {}
@@ -109,6 +111,7 @@ def test_where_plain_python_raises_the_compiled_kernel_answers(monkeypatch):
 
     monkeypatch.setattr(jit, "HAVE_NUMBA", True)
     monkeypatch.delitem(sys.modules, "numba", raising=False)
+    monkeypatch.setattr(jit, "_SPENT", {"plain": 0.0})   # what earlier tests in this process spent
     ran = []
 
     def kernel(x):
@@ -122,3 +125,34 @@ def test_where_plain_python_raises_the_compiled_kernel_answers(monkeypatch):
     assert jit.call_kernel(1, 8, kernel, 21) == 42 and ran == [True, False]
     ran.clear()
     assert jit.call_kernel(9, 8, kernel, 21) == 42 and ran == [False]   # over the limit: compiled at once
+
+
+MANY_SMALL = textwrap.dedent("""
+    import sys
+    import numpy as np
+    from restitution.fast import jit
+    from restitution.fast.integrator import collide_fast
+
+    jit.PLAIN_BUDGET = 0.2
+    om = np.array([0.3])
+    first = collide_fast(3, 2, 2, om, 1e-12, False)
+    assert "numba" not in sys.modules, "one small request started numba"
+    calls = 1
+    while "numba" not in sys.modules and calls < 1000:
+        collide_fast(3, 2, 2, om, 1e-12, False)
+        calls += 1
+    assert "numba" in sys.modules, "a thousand small requests never started numba"
+    assert jit._SPENT["plain"] >= jit.PLAIN_BUDGET
+    assert np.array_equal(first, collide_fast(3, 2, 2, om, 1e-12, False))
+    print(calls)
+""")
+
+
+@pytest.mark.slow
+def test_many_small_requests_start_numba_once_plain_python_took_its_start():
+    """A loop of one-point requests runs plain Python only until that has cost about numba's start
+    (jit.PLAIN_BUDGET), then compiled, with the same numbers."""
+    pytest.importorskip("numba")
+    proc = subprocess.run([sys.executable, "-c", MANY_SMALL], capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert 2 <= int(proc.stdout.strip()) < 1000

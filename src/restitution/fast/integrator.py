@@ -666,7 +666,7 @@ def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12, overlap:
 
 
 #: Up to this many points a process that has not started numba integrates in plain Python (about
-#: 10 ms a point against most of a second for numba's start).
+#: 10 ms a point against most of a second for numba's start; for a while: jit.PLAIN_BUDGET).
 INTERPRETED_MAX_POINTS = 8
 #: Points from which collide_fast shares the work between threads (the kernel releases the GIL);
 #: below, starting threads costs more than it saves.

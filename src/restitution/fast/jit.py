@@ -13,14 +13,18 @@ such a file count as absent: the kernel is recompiled (one note on stderr per pr
 damaged file is removed where that is allowed, so the next process finds a good one.
 
 :func:`call_kernel` runs kernels as the plain Python they are while numba is not imported
-yet and the work is small: importing and starting numba costs most of a second, a one-point eps
-call's integration about 10 ms in plain Python (same floating-point operations, same results: 40
-points of both end rules compared bit for bit in the tests).
+yet and the work is small: importing and starting numba costs about 0.4 s with its compiled kernels
+on disk, a one-point eps call's integration 10-50 ms in plain Python (same floating-point
+operations, same results: 40 points of both end rules compared bit for bit in the tests). A process
+that asks many small requests (a loop over speeds, a calibration's root search) stops doing so once
+its plain-Python kernels have taken PLAIN_BUDGET seconds, numba's start with a warm cache: past
+that, compiling would have been cheaper (432 one-point calls of a DEM study took 5.5 s plain).
 """
 
 import importlib.util
 import sys
 import threading
+import time
 
 # numba is an optional accelerator: everything below is also valid plain Python. Whether it is there
 # is asked without importing it: its import and start cost most of a second, which a request that
@@ -95,17 +99,24 @@ else:  # pragma: no cover - exercised only without numba
 
 _NOTED: set = set()
 _MODE = threading.local()
+#: Seconds of plain-Python kernel time after which a process starts numba (its start with a warm
+#: on-disk cache, measured 0.42 s): at most twice the cost of either choice made in hindsight.
+PLAIN_BUDGET = 0.4
+_SPENT = {"plain": 0.0}
 
 
 def call_kernel(n: int, limit: int, kernel, *args):
-    """``kernel(*args)``, as plain Python when numba is not imported yet and ``n`` (the caller's
-    measure of work, e.g. points) is at most ``limit``; otherwise compiled as always. Where plain
+    """``kernel(*args)``, as plain Python when numba is not imported yet, ``n`` (the caller's
+    measure of work, e.g. points) is at most ``limit`` and the process's plain-Python kernels have
+    not yet taken PLAIN_BUDGET seconds; otherwise compiled as always. Where plain
     Python raises on what compiled code carries on with (an overflow to inf, a division by zero
     that numba also raises on, any ArithmeticError), the compiled kernel runs instead."""
-    if HAVE_NUMBA and n <= limit and "numba" not in sys.modules and not getattr(_MODE, "plain", False):
+    if (HAVE_NUMBA and n <= limit and "numba" not in sys.modules and not getattr(_MODE, "plain", False)
+            and _SPENT["plain"] < PLAIN_BUDGET):
         import numpy as np
 
         _MODE.plain = True
+        start = time.perf_counter()
         try:
             with np.errstate(all="ignore"):   # compiled code warns about nothing
                 return kernel(*args)
@@ -113,6 +124,7 @@ def call_kernel(n: int, limit: int, kernel, *args):
             pass
         finally:
             _MODE.plain = False
+            _SPENT["plain"] += time.perf_counter() - start
     return kernel(*args)
 
 
