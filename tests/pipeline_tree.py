@@ -64,8 +64,8 @@ def kernel_cache(tree: Path) -> None:
     """numba's compiled kernels of this checkout (src/**/__pycache__/*.nbi, *.nbc) copied into
     ``tree``: a kernel cache is found beside its source, so every copied tree compiled them again
     (6 s a process; two or three jobs of a cold build at once). numba uses an index only if it was
-    made from a source of the same time stamp and size (the snapshot keeps both), else it compiles:
-    a kernel edited since the snapshot is never taken from here."""
+    made from a source with the same content (numba 0.68 keys it by a hash of the file), else it
+    compiles: a kernel edited since the snapshot is never taken from here."""
     for f in (ROOT / "src").rglob("__pycache__/*.nb[ic]"):
         dest = tree / f.relative_to(ROOT)
         dest.parent.mkdir(exist_ok=True)

@@ -127,13 +127,15 @@ def test_where_plain_python_raises_the_compiled_kernel_answers(monkeypatch):
     assert jit.call_kernel(9, 8, kernel, 21) == 42 and ran == [False]   # over the limit: compiled at once
 
 
+
 MANY_SMALL = textwrap.dedent("""
     import sys
     import numpy as np
     from restitution.fast import jit
-    from restitution.fast.integrator import collide_fast
+    from restitution.fast.integrator import _collide_many, collide_fast
 
-    jit.PLAIN_BUDGET = 0.2
+    jit.PLAIN_BUDGET, jit.COMPILE_BUDGET = 0.1, 0.3
+    assert not jit._compiled_on_disk(_collide_many), "an empty NUMBA_CACHE_DIR holds a kernel"
     om = np.array([0.3])
     first = collide_fast(3, 2, 2, om, 1e-12, False)
     assert "numba" not in sys.modules, "one small request started numba"
@@ -142,17 +144,20 @@ MANY_SMALL = textwrap.dedent("""
         collide_fast(3, 2, 2, om, 1e-12, False)
         calls += 1
     assert "numba" in sys.modules, "a thousand small requests never started numba"
-    assert jit._SPENT["plain"] >= jit.PLAIN_BUDGET
+    assert jit._SPENT["plain"] >= jit.COMPILE_BUDGET, "nothing compiled on disk: compiling's budget applies"
     assert np.array_equal(first, collide_fast(3, 2, 2, om, 1e-12, False))
+    assert jit._compiled_on_disk(_collide_many)
     print(calls)
 """)
 
 
 @pytest.mark.slow
-def test_many_small_requests_start_numba_once_plain_python_took_its_start():
+def test_many_small_requests_start_numba_once_plain_python_took_its_start(tmp_path):
     """A loop of one-point requests runs plain Python only until that has cost about numba's start
-    (jit.PLAIN_BUDGET), then compiled, with the same numbers."""
+    (jit.PLAIN_BUDGET, or COMPILE_BUDGET with no kernel compiled on disk, as here), then compiled,
+    with the same numbers."""
     pytest.importorskip("numba")
-    proc = subprocess.run([sys.executable, "-c", MANY_SMALL], capture_output=True, text=True, timeout=600)
+    env = {**__import__("os").environ, "NUMBA_CACHE_DIR": str(tmp_path)}
+    proc = subprocess.run([sys.executable, "-c", MANY_SMALL], capture_output=True, text=True, timeout=600, env=env)
     assert proc.returncode == 0, proc.stderr[-3000:]
     assert 2 <= int(proc.stdout.strip()) < 1000

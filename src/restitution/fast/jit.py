@@ -17,8 +17,9 @@ yet and the work is small: importing and starting numba costs about 0.4 s with i
 on disk, a one-point eps call's integration 10-50 ms in plain Python (same floating-point
 operations, same results: 40 points of both end rules compared bit for bit in the tests). A process
 that asks many small requests (a loop over speeds, a calibration's root search) stops doing so once
-its plain-Python kernels have taken PLAIN_BUDGET seconds, numba's start with a warm cache: past
-that, compiling would have been cheaper (432 one-point calls of a DEM study took 5.5 s plain).
+its plain-Python kernels have taken about what numba's start costs (0.4 s with the kernels
+compiled on disk, 6-8 s to compile them): past that, starting it would have been cheaper (432
+one-point calls of a DEM study took 5.5 s plain).
 """
 
 import importlib.util
@@ -99,20 +100,49 @@ else:  # pragma: no cover - exercised only without numba
 
 _NOTED: set = set()
 _MODE = threading.local()
-#: Seconds of plain-Python kernel time after which a process starts numba (its start with a warm
-#: on-disk cache, measured 0.42 s): at most twice the cost of either choice made in hindsight.
+#: Seconds of plain-Python kernel time after which a process starts numba: its start with the
+#: kernel's compiled code on disk (measured 0.42 s), or compiling it (6-8 s) where there is none.
+#: Either way at most twice the cost of the choice made in hindsight.
 PLAIN_BUDGET = 0.4
+COMPILE_BUDGET = 6.0
 _SPENT = {"plain": 0.0}
+
+
+def _compiled_on_disk(kernel) -> bool:
+    """Whether numba's cache seems to hold ``kernel``: an index file by its name in the package's
+    __pycache__ or under NUMBA_CACHE_DIR. A guess that only sets a budget (numba keys the index by
+    the source's content, which an edited kernel no longer matches)."""
+    import os
+    from pathlib import Path
+
+    func = getattr(kernel, "py_func", kernel)
+    source = Path(func.__code__.co_filename)
+    pattern = f"{source.stem}.{func.__qualname__}-*.nbi"
+    where = os.environ.get("NUMBA_CACHE_DIR")
+    try:
+        return any(Path(where).rglob(pattern) if where else (source.parent / "__pycache__").glob(pattern))
+    except OSError:
+        return False
+
+
+def _within_budget(kernel) -> bool:
+    spent = _SPENT["plain"]
+    if spent < PLAIN_BUDGET:
+        return True
+    if "warm" not in _SPENT:
+        _SPENT["warm"] = _compiled_on_disk(kernel)
+    return not _SPENT["warm"] and spent < COMPILE_BUDGET
 
 
 def call_kernel(n: int, limit: int, kernel, *args):
     """``kernel(*args)``, as plain Python when numba is not imported yet, ``n`` (the caller's
     measure of work, e.g. points) is at most ``limit`` and the process's plain-Python kernels have
-    not yet taken PLAIN_BUDGET seconds; otherwise compiled as always. Where plain
+    not yet taken what starting numba would (PLAIN_BUDGET, or COMPILE_BUDGET where nothing is
+    compiled on disk); otherwise compiled as always. Where plain
     Python raises on what compiled code carries on with (an overflow to inf, a division by zero
     that numba also raises on, any ArithmeticError), the compiled kernel runs instead."""
     if (HAVE_NUMBA and n <= limit and "numba" not in sys.modules and not getattr(_MODE, "plain", False)
-            and _SPENT["plain"] < PLAIN_BUDGET):
+            and _within_budget(kernel)):
         import numpy as np
 
         _MODE.plain = True
