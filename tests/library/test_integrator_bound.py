@@ -27,3 +27,33 @@ def test_tableau_is_scipys_own():
     for ours, theirs in ((integrator._A, dop.A[:n, :n]), (integrator._B, dop.B), (integrator._C, dop.C[:n]),
                          (integrator._E3, dop.E3), (integrator._E5, dop.E5)):
         assert ours.shape == theirs.shape and ours.tobytes() == np.ascontiguousarray(theirs, float).tobytes()
+
+
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "1"), ("1", "0"), ("2", "1/2"), ("5/2", "3/2")])
+@pytest.mark.parametrize("omega", [1e-9, 1e-12])
+def test_contact_times_within_the_bound_at_small_omega(alpha, gamma, omega):
+    """tau_b and tau_c keep the bound where the turn comes slowly (v' ~ Omega x^alpha there): with v'
+    taken from the carried force, v kept the errors it made while of order 1 and the turn moved by
+    error / slope: tau_b off by 2.6e-9 at Omega = 1e-9 and 6e-6 at 1e-12 (3/2, 1; rtol 1e-12), the
+    scipy reference right to 4e-14 against mpmath."""
+    truth = reference(alpha, gamma, omega, rtol=1e-13)    # stated accuracy 1.1e-12
+    got = collide(alpha, gamma, omega, method="fast", rtol=1e-12)
+    for name in ("eps", "tau_b", "x_b", "tau_c"):
+        assert abs(getattr(got, name) / getattr(truth, name) - 1) <= integrator_bound(1e-12) + 1.1e-12, name
+
+
+@pytest.mark.parametrize("alpha, gamma", [("1", "0"), ("2", "1/2"), ("8", "0")])
+def test_the_turn_is_found_where_its_speed_is_one_rounding_of_the_start(alpha, gamma):
+    """Near Omega = 1e-16 the speed at the turn, Omega x^(alpha-gamma), is one rounding of the speed
+    it started from: with v' from the carried force v stopped just above 0 and the kernel ran into
+    its step limit. Beyond the integrator's promised range (1e-12), so checked on the kernel: eps
+    is the viscous limit (gamma + 1)^((alpha - gamma)/(gamma + 1)) Omega to double precision there."""
+    from fractions import Fraction
+
+    from restitution.core.exponents import as_exponents
+    from restitution.fast.integrator import END_FORCE, collide_fast
+
+    ex = as_exponents(alpha, gamma)
+    row = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [1e-16], 1e-12)[0]
+    k = float(ex.gamma + 1) ** float(Fraction(ex.alpha - ex.gamma) / (ex.gamma + 1))
+    assert row[5] == END_FORCE and abs(row[0] / (k * 1e-16) - 1) <= 1e-13

@@ -95,17 +95,21 @@ def test_sticks_where_the_reference_proves_it_and_not_just_above(alpha, gamma, o
 def test_force_rule_numbers_are_unchanged_by_the_overlap_code():
     """The force rule runs the same kernel: it must give, to the bit, what it gave when recorded
     (alpha = 3/2, gamma = 1, rtol = 1e-10; the pipeline's force-rule outputs rest on them). Recorded
-    after the u legs' step cap (integrator.U_STEPS_MIN); the values before it, from the kernel before
-    the overlap legs were added, differ by less than the bound."""
+    after the compressing leg's v' was formed from v (integrator._rhs); the values before that, after
+    the u legs' step cap (integrator.U_STEPS_MIN), and before it, from the kernel before the overlap
+    legs were added, differ by less than the bound."""
     om = [1e-12, 1e-2, 10.0, 1e8, 1e14]
-    now = ["0x1.4ebb674cfccb8p-40", "0x1.7b108d57a5f50p-7", "0x1.c1ff493d32c2ap-1", "0x1.fffff4b3b69f6p-1",
-           "0x1.ffffffffdcfbdp-1"]
+    now = ["0x1.4ebb674cfccb2p-40", "0x1.7b108d57a5f6cp-7", "0x1.c1ff493d326f1p-1", "0x1.fffff4b3b884ep-1",
+           "0x1.ffffffffdda0ap-1"]
+    carried_f = ["0x1.4ebb674cfccb8p-40", "0x1.7b108d57a5f50p-7", "0x1.c1ff493d32c2ap-1", "0x1.fffff4b3b69f6p-1",
+                 "0x1.ffffffffdcfbdp-1"]
     before_cap = ["0x1.4ebb674cfcd92p-40", "0x1.7b108d57a60ecp-7", "0x1.c1ff493d3801cp-1", "0x1.fffff4b3e0486p-1",
                   "0x1.000000000444ap+0"]
     got = collide_fast(2, 3, 2, om, 1e-10)[:, 0]
     assert [float(x).hex() for x in got] == now
-    for a, b in zip(now, before_cap):
+    for a, b, c in zip(now, carried_f, before_cap):
         assert abs(float.fromhex(a) / float.fromhex(b) - 1) <= integrator_bound(1e-10)
+        assert abs(float.fromhex(a) / float.fromhex(c) - 1) <= integrator_bound(1e-10)
 
 
 def test_epsilon_overlap_is_answered_by_the_integrator_within_tol(empty_cache):

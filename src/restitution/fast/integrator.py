@@ -13,7 +13,9 @@ the middle in tau with the force f = Omega x^(alpha-gamma) + x' carried as a sta
 small Omega, f is a tiny difference of nearly equal numbers and must not be formed by subtraction):
 
 1. rise      in u from u = 0, state (v, tau, g), until v has fallen to 1/2;
-2. compress  in tau, state (x, v, f), until v = 0 (maximum compression, located exactly);
+2. compress  in tau, state (x, v, f), until v = 0 (maximum compression, located exactly), with
+             v' = -x^gamma (Omega x^(alpha-gamma) + v) formed from v (no cancellation while v > 0),
+             so that an error of v decays instead of moving the turn;
 3. release   in tau from (x_b, 0, Omega x_b^(alpha-gamma)) until f = 0 (force end) or x < x_b / 4;
 4. land      in u down to u = 0 (separation) unless g = 0 (force end) first.
 
@@ -114,14 +116,14 @@ TIME_MARGIN = 1e-6
 # same speed, bit-identical results.
 _I = np.int64
 
-# parameter vector layout
-_P_OMEGA, _P_P, _P_QA, _P_QG, _P_ALPHA, _P_GAMMA, _P_A, _P_M, _P_N = range(9)
+# parameter vector layout; _P_COMPRESS is 1 while leg 2 runs (see _rhs)
+_P_OMEGA, _P_P, _P_QA, _P_QG, _P_ALPHA, _P_GAMMA, _P_A, _P_M, _P_N, _P_COMPRESS = range(10)
 
 
 def law_parameters(p: int, qa: int, qg: int, omega: float) -> np.ndarray:
     """The float parameter vector the kernels read (exponents as integers of u = x^(1/p))."""
     k = qa - qg
-    return np.array([omega, p, qa, qg, qa / p, qg / p, max(k, 0), max(-k, 0), min(qa, qg)],
+    return np.array([omega, p, qa, qg, qa / p, qg / p, max(k, 0), max(-k, 0), min(qa, qg), 0.0],
                     dtype=np.float64)
 
 
@@ -185,7 +187,16 @@ def _rhs(mode, t, y, out, P):
         lx = math.log(x)
         xg = math.exp(gam * lx) if gam != 0.0 else 1.0
         out[0] = v
-        out[1] = -xg * f
+        if P[_P_COMPRESS] != 0.0:
+            # Compressing, v > 0: f = Omega x^d + v is a sum of positive terms, formed without
+            # loss, and v' = -x^gamma (Omega x^d + v) pulls an error of v back, as the scipy
+            # reference's (x, v) form does. With the carried f, v' ignored v, so v kept every error
+            # it picked up while of order 1; at small Omega, where v ends near 0 at a slope of
+            # Omega x^alpha, that moved the turn by error/slope (tau_b off by 2.6e-9 at Omega = 1e-9,
+            # 6e-6 at 1e-12, at rtol 1e-12) and near Omega = 1e-16 v never reached 0 at all.
+            out[1] = -xg * (v + (om * math.exp(d * lx) if d != 0.0 else om))
+        else:
+            out[1] = -xg * f
         drift = 0.0
         if d != 0.0:
             drift = om * d * math.exp((d - 1.0) * lx) * v
@@ -540,8 +551,10 @@ def _collide_one(P, rtol, out, overlap):
     atol[1] = ATOL_MARGIN * rtol * vs
     atol[2] = ATOL_MARGIN * rtol * min(abs(f1), vs)
     t_guard = tau1 + 1e7 * (1.0 + x1)
+    P[_P_COMPRESS] = 1.0
     tb, st, n = _leg(_I(1), tau1, y, t_guard, 0.0, rtol, atol, P, _I(1), _I(1), _I(-1), 0.0, yo,
                      MAX_STEPS - steps_total, np.inf)
+    P[_P_COMPRESS] = 0.0
     steps_total += n
     if st != 1:
         out[6] = steps_total
