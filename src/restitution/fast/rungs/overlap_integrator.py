@@ -1,7 +1,7 @@
 """The compiled integrator under the overlap rule (``collide_fast(..., overlap=True)``), where it
-differs from the force rule (alpha > gamma), at rtol at most OVERLAP_RTOL_MAX: the same bound as
-the force rule's integrator,
-validated against the mpmath reference down to eps of 1e-36 (tests/library/test_overlap_fast.py). Below
+differs from the force rule (alpha > gamma), at rtol at most OVERLAP_RTOL_MAX: the force rule's
+bound with a factor and floor of its own (rung.OVERLAP_BOUND_FACTOR, _FLOOR), validated against the mpmath
+reference down to eps of 1e-36 (tests/library/test_overlap_fast.py). Below
 Omega = 1e-5 the creeping return makes the explicit method slow (~0.4/Omega steps): the scipy
 reference (Radau there) takes over. A proved sticking raises StickError, as the reference does."""
 
@@ -33,8 +33,9 @@ class OverlapIntegrator(Rung):
         return self.cost * req.n * (1.0 + 3e-3 / req.lo)   # ~0.4/Omega steps of the creeping return
 
     def bound(self, req, built):
-        rtol = min(integrator_rtol(req.tol), OVERLAP_RTOL_MAX)
-        return integrator_bound(rtol), f"rtol={rtol:.3g}, overlap"
+        rtol = min(integrator_rtol(req.tol, "overlap"), OVERLAP_RTOL_MAX)
+        return integrator_bound(rtol, "overlap"), f"rtol={rtol:.3g}, overlap"
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.ex, None, omega, min(integrator_rtol(req.tol), OVERLAP_RTOL_MAX), "overlap")
+        return reference_eps(req.ex, None, omega, min(integrator_rtol(req.tol, "overlap"), OVERLAP_RTOL_MAX),
+                             "overlap")
