@@ -13,7 +13,9 @@ cache; CPU = user + sys of the child, from the operating system's accounting):
 * a call that a closed form answers (alpha = gamma): no kernel runs, so numba is never imported;
 * python starting and importing numpy: what any call costs;
 * python importing numba and calling one cached one-line kernel: what any compiled answer costs
-  before our own code runs, the floor of the integrator's answer.
+  before our own code runs, the floor of the integrator's answer;
+* python calling ``epsilon`` once per speed for 200 speeds (nothing built): a loop of small requests,
+  which runs as plain Python only until that has cost numba's start (``fast.jit.PLAIN_BUDGET``).
 
 Writes ``<out>/cli_speed.csv``. Timings vary from run to run and with the machine's load: compare
 rows of one run, not runs of different days.
@@ -73,6 +75,9 @@ def main(argv=None) -> int:
             ("python -c 'import numpy'", [sys.executable, "-c", "import numpy"]),
             ("python: import numba, call one cached kernel",
              [sys.executable, "-c", f"import sys; sys.path.insert(0, {tmp!r}); import kernel; kernel.twice(1.0)"]),
+            ("python: epsilon() once per speed, 200 speeds",
+             [sys.executable, "-c", "import numpy as np; from restitution import epsilon\n"
+              "for w in np.geomspace(1e-3, 1e3, 200): epsilon(alpha='3/2', gamma=1, omega=[w], build=False)"]),
         ]
         warm = {**env, "RESTITUTION_CACHE": str(Path(tmp) / "warm-cache")}
         subprocess.run([sys.executable, "-c", "import numpy as np; from restitution import epsilon; "
