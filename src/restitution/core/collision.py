@@ -44,7 +44,7 @@ from .exponents import as_exponents
 from .energy import NEAR_ELASTIC, dissipated, one_minus_eps
 from .law import ForceForm, Law, PullForm
 from .model import at_most_one
-from .conditioning import ACCURACY_FACTOR, ACCURACY_FLOOR, conditioning
+from .conditioning import conditioning, plain_accuracy
 from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
 from .sampling import Piece, sample
 
@@ -504,7 +504,7 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
         # a loss (and could even exceed 1); the loss itself is accurate to about rtol relative
         eps = 1.0 - loss
     trajectory = sample(pieces, t_eval, last.tau) if t_eval is not None else None
-    plain = ACCURACY_FACTOR * max(rtol, SOLVER_RTOL_FLOOR) + ACCURACY_FLOOR
+    plain = plain_accuracy(max(rtol, SOLVER_RTOL_FLOOR), ex, None, rule)
     bound = plain * float(conditioning(ex, None, rule, eps, omega))
     loss_bound = max(plain, bound * eps / loss) if 1.0 - eps >= BY_SUBTRACTION else plain
     return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),

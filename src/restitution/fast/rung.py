@@ -27,12 +27,13 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
-from ..core.conditioning import ACCURACY_FACTOR, ACCURACY_FLOOR, conditioning
+from ..core.conditioning import (ACCURACY_FACTOR, ACCURACY_FLOOR, OVERLAP_ACCURACY_FACTOR, OVERLAP_ACCURACY_FLOOR,
+                                 conditioning)
 from ..core.exponents import Exponents
 
 __all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
-           "INTEGRATOR_BOUND_FLOOR", "OVERLAP_BOUND_FACTOR", "OVERLAP_BOUND_FLOOR", "integrator_bound", "integrator_rtol", "reference_rtol", "reference_bound",
-           "highprec_digits", "highprec_bound"]
+           "INTEGRATOR_BOUND_FLOOR", "OVERLAP_BOUND_FACTOR", "OVERLAP_BOUND_FLOOR", "integrator_bound",
+           "integrator_rtol", "reference_rtol", "reference_bound", "highprec_digits", "highprec_bound"]
 
 #: Tolerance when none is given (and no method is forced).
 DEFAULT_TOL = 1e-9
@@ -46,13 +47,9 @@ INTEGRATOR_BOUND_FACTOR = 10.0
 INTEGRATOR_BOUND_FLOOR = 5e-14
 
 
-#: Under the overlap rule both double-precision methods need more: for large alpha in the elastic
-#: regime their error against the mpmath reference (24 digits, stable to 40) is 10-15 rtol down to
-#: rtol 1e-13 and about 1e-12 below, whatever rtol ((17/3, 4/3) at Omega = 1.9e6: 12.7 rtol at
-#: 1e-12, 15 rtol at 1e-13, 2.7e-13 at 1e-14 for the integrator, 12.6 rtol at 1e-13 and 3.4e-13 at
-#: 1e-14 for the scipy reference; 3,700 random cases, alpha up to 6, Omega 1e-3..1e8: up to 1.4e-12
-#: at rtol 1e-13). (factor, floor) of the relative bound, twice what was seen.
-OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR = 20.0, 3e-12
+#: Under the overlap rule (alpha > gamma, where the rules differ) both double-precision methods
+#: state more before conditioning (core.conditioning.OVERLAP_ACCURACY_FACTOR, _FLOOR: measured there).
+OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR = OVERLAP_ACCURACY_FACTOR, OVERLAP_ACCURACY_FLOOR
 
 
 def _factor_floor(end: str, factor: float, floor: float) -> tuple[float, float]:
