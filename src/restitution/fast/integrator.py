@@ -292,7 +292,10 @@ def _locate(mode, t0, y0, f0, h_lo, h_hi, e_lo, e_hi, comp, P, K, ynew, fnew, A,
     side = 0
     s = h_hi
     for _ in range(200):
-        s = (h_lo * e_hi - h_hi * e_lo) / (e_hi - e_lo)
+        # e_hi = e_lo once Illinois' halving has taken a tiny e (Omega ~ 1e-200) to zero: bisect, as
+        # plain Python does with the NaN it gets (compiled code raises ZeroDivisionError instead)
+        den = e_hi - e_lo
+        s = (h_lo * e_hi - h_hi * e_lo) / den if den != 0.0 else math.nan
         if not (min(h_lo, h_hi) < s < max(h_lo, h_hi)):
             s = 0.5 * (h_lo + h_hi)
         _rk_step(mode, t0, y0, f0, s, P, K, ynew, fnew, A, B, C, tmp)
