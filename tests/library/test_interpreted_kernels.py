@@ -127,7 +127,6 @@ def test_where_plain_python_raises_the_compiled_kernel_answers(monkeypatch):
     assert jit.call_kernel(9, 8, kernel, 21) == 42 and ran == [False]   # over the limit: compiled at once
 
 
-
 MANY_SMALL = textwrap.dedent("""
     import sys
     import numpy as np

@@ -144,7 +144,7 @@ def test_the_overlap_integrators_floor_covers_large_alpha_in_the_elastic_regime(
 def test_both_double_methods_keep_the_overlap_bound_at_large_alpha(rtol):
     """The same point at fixed rtol: the compiled integrator within the rung's bound, collide within
     the rung's and its own stated error_bound (which stated 2.5e-13 at rtol 1e-14, off by 3.4e-13)."""
-    from restitution.fast.rung import integrator_bound, reference_bound
+    from restitution.fast.rung import reference_bound
 
     ex = as_exponents("17/3", "4/3")
     truth = float(reference_collision(ex, None, 1.895e6, digits=24, end="overlap").eps)

@@ -37,3 +37,19 @@ def test_a_rung_that_does_not_serve_the_rule_is_listed_with_the_reason(tmp_path)
     lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
     q = {c["method"]: c for c in lad.evaluate([0.3], tol=1e-6, end="overlap", build=False).candidates}
     assert not q["fitted-c"]["available"] and "force rule only" in q["fitted-c"]["reason"]
+
+
+def test_the_reference_rung_quotes_what_collide_states_under_either_rule():
+    """Under "overlap" where the rules coincide (alpha <= gamma) the force rule's numbers apply: the
+    reference rung quotes collide's own stated bound, not the overlap rule's wider one."""
+    from restitution.core.collision import collide
+    from restitution.core.exponents import as_exponents
+    from restitution.fast.rung import Request, reference_rtol
+    from restitution.fast.rungs.reference import Reference
+
+    for alpha, gamma, rule in (("1", "3/2", "force"), ("3/2", "1", "overlap")):
+        req = Request(as_exponents(alpha, gamma), np.array([1.0]), 1e-9, "overlap")
+        assert req.rule == rule
+        quoted = Reference().bound(req, {})[0]
+        stated = collide(alpha, gamma, 1.0, rtol=reference_rtol(1e-9, rule), end="overlap").error_bound
+        assert quoted == stated

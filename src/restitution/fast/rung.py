@@ -53,6 +53,7 @@ OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR = OVERLAP_ACCURACY_FACTOR, OVERLAP_ACC
 
 
 def _factor_floor(end: str, factor: float, floor: float) -> tuple[float, float]:
+    """(factor, floor) of a bound under ``end``: the rule whose numbers apply (Request.rule)."""
     return (OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR) if end == "overlap" else (factor, floor)
 
 
@@ -136,6 +137,11 @@ class Request:
     def rules_differ(self) -> bool:
         """The force can vanish during contact (alpha > gamma): the two end rules differ."""
         return self.ex.alpha > self.ex.gamma
+
+    @property
+    def rule(self) -> str:
+        """The end rule whose numbers apply: "overlap" only where it differs from the force rule."""
+        return "overlap" if self.end == "overlap" and self.rules_differ else "force"
 
 
 class Rung:

@@ -47,7 +47,7 @@ class Highprec(Rung):
         if seconds > 10.0:   # a long wait says so at its start
             print(f"restitution: the mpmath reference on {np.size(omega)} point(s) takes about {seconds:.0f} s",
                   file=sys.stderr if req.stream is None else req.stream, flush=True)
-        pulls = req.end == "overlap" and req.rules_differ
+        pulls = req.rule == "overlap"
         out = []
         for w in np.ravel(omega):
             w = float(w)

@@ -21,7 +21,7 @@ class OverlapIntegrator(Rung):
     ends = ("overlap",)
 
     def serves(self, req):
-        return req.end == "overlap" and req.rules_differ
+        return req.rule == "overlap"
 
     def outside(self, req):
         wmin = stiff_omega_min(req.ex, None, "overlap")

@@ -20,7 +20,7 @@ class OverlapMaster(Rung):
     ends = ("overlap",)
 
     def serves(self, req):
-        return req.end == "overlap" and req.rules_differ
+        return req.rule == "overlap"
 
     def outside(self, req):
         if req.lo < OMEGA_LO or req.hi > OMEGA_HI:

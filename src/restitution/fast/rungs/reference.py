@@ -23,10 +23,10 @@ class Reference(Rung):
         return None
 
     def bound(self, req, built):
-        rtol = reference_rtol(req.tol, req.end)
-        return reference_bound(rtol, req.end), f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
+        rtol = reference_rtol(req.tol, req.rule)
+        return reference_bound(rtol, req.rule), f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
 
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import collide
-        rtol = reference_rtol(req.tol, req.end)
+        rtol = reference_rtol(req.tol, req.rule)
         return np.array([collide(req.ex, None, float(w), rtol=rtol, end=req.end).eps for w in np.ravel(omega)])
