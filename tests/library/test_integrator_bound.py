@@ -6,6 +6,7 @@ import pytest
 
 from restitution.api import collide
 from restitution.core.collision import collide as reference
+from restitution.core.exponents import as_exponents
 from restitution.fast.rung import integrator_bound
 
 
@@ -15,7 +16,7 @@ from restitution.fast.rung import integrator_bound
 def test_compiled_integrator_within_its_bound_for_p_at_least_3(alpha, gamma, omega, rtol):
     truth = reference(alpha, gamma, omega, rtol=1e-14).eps       # stated accuracy 2.4e-13
     got = collide(alpha, gamma, omega, method="fast", rtol=rtol).eps
-    assert abs(got / truth - 1) <= integrator_bound(rtol) - 2.4e-13
+    assert abs(got / truth - 1) <= integrator_bound(rtol, as_exponents(alpha, gamma)) - 2.4e-13
 
 
 def test_tableau_is_scipys_own():
@@ -39,7 +40,7 @@ def test_contact_times_within_the_bound_at_small_omega(alpha, gamma, omega):
     truth = reference(alpha, gamma, omega, rtol=1e-13)    # stated accuracy 1.1e-12
     got = collide(alpha, gamma, omega, method="fast", rtol=1e-12)
     for name in ("eps", "tau_b", "x_b", "tau_c"):
-        assert abs(getattr(got, name) / getattr(truth, name) - 1) <= integrator_bound(1e-12) + 1.1e-12, name
+        assert abs(getattr(got, name) / getattr(truth, name) - 1) <= integrator_bound(1e-12, as_exponents(alpha, gamma)) + 1.1e-12, name
 
 
 @pytest.mark.parametrize("alpha, gamma", [("1", "0"), ("2", "1/2"), ("8", "0")])
@@ -77,4 +78,41 @@ def test_locating_an_event_of_tiny_size_bisects_instead_of_dividing_by_zero(alph
     # more points than a process without numba runs as plain Python: the compiled kernel, which raised
     row = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega] * (INTERPRETED_MAX_POINTS + 1), rtol)[0]
     k = float(ex.gamma + 1) ** float(Fraction(ex.alpha - ex.gamma) / (ex.gamma + 1))
-    assert row[5] == END_FORCE and abs(row[0] / (k * omega) - 1) <= integrator_bound(rtol)
+    assert row[5] == END_FORCE and abs(row[0] / (k * omega) - 1) <= integrator_bound(rtol, ex)
+
+
+#: The worst cases of 500 random pairs against mpmath (force rule): (alpha, gamma, Omega, rtol, which).
+LARGE_EXPONENT_CASES = [("38/5", "7", 2055.329307323975, 1e-14, "fast"),      # 1.1e-12: 7.3 times 10 rtol + 5e-14
+                        ("32/5", "27/5", 1017343.8827904565, 1e-13, "fast"),  # 2.8e-12: 2.6 times
+                        ("41/6", "13/2", 257206439.23306733, 1e-12, "fast"),  # 1.4e-11: 1.4 times
+                        ("32/5", "5", 5.288759030071241, 1e-14, "reference")]  # 3.6e-13: 1.8 times 10 rtol + 1e-13
+
+
+@pytest.mark.parametrize("alpha, gamma, omega, rtol, method", LARGE_EXPONENT_CASES)
+def test_both_double_methods_keep_their_bound_for_large_exponents(alpha, gamma, omega, rtol, method):
+    """For alpha + gamma well above 4 both double-precision integrators missed the bounds they stated
+    (core.conditioning.EXPONENT_SCALE: the error grows about as (alpha + gamma)^3); the bounds now
+    carry that factor, and collide states it."""
+    from restitution.core.highprec import reference_collision
+    from restitution.fast.rung import reference_bound
+
+    ex = as_exponents(alpha, gamma)
+    truth = float(reference_collision(ex, None, omega, digits=22).eps)
+    got = collide(alpha, gamma, omega, method=method, rtol=rtol)
+    stated = integrator_bound(rtol, ex) if method == "fast" else reference_bound(rtol, ex)
+    assert abs(got.eps / truth - 1) <= stated
+    if method == "reference":
+        assert abs(got.eps / truth - 1) <= got.error_bound
+
+
+def test_epsilon_states_what_holds_for_large_exponents():
+    """Through the API: eps for (38/5, 7) at Omega = 2055 and tol 2e-13 came from the compiled
+    integrator at rtol 1e-14, stated 1.5e-13 and was off by 1.1e-12."""
+    from restitution.core.highprec import reference_collision
+    from restitution.fast.ladder import epsilon
+
+    omega = 2055.329307323975
+    truth = float(reference_collision("38/5", "7", omega, digits=22).eps)
+    for tol in (2e-13, 1e-11, 1e-9):
+        r = epsilon(alpha="38/5", gamma="7", omega=[omega], tol=tol, build=False)
+        assert r.error_bound <= tol and abs(r.eps[0] / truth - 1) <= r.error_bound, (tol, r.method)

@@ -29,9 +29,9 @@ def _fresh(lo, hi, n):
     return np.exp(RNG.uniform(math.log(lo), math.log(hi), n))
 
 
-def _bound(rtol):
+def _bound(rtol, alpha, gamma):
     """What the overlap rule states at rtol (it runs at OVERLAP_RTOL_MAX at most)."""
-    return integrator_bound(min(rtol, OVERLAP_RTOL_MAX), "overlap")
+    return integrator_bound(min(rtol, OVERLAP_RTOL_MAX), as_exponents(alpha, gamma), "overlap")
 
 
 def _fast(alpha, gamma, omega, rtol):
@@ -49,7 +49,7 @@ def test_bound_holds_against_mpmath_at_fresh_points(alpha, gamma):
             got = _fast(alpha, gamma, w, rtol)[0]
             assert got[5] == END_SEPARATION
             err = abs(got[0] / truth - 1)
-            assert err <= _bound(rtol), f"seed {SEED}: Omega={w:.6g} rtol={rtol:g} err {err:.3g}"
+            assert err <= _bound(rtol, alpha, gamma), f"seed {SEED}: Omega={w:.6g} rtol={rtol:g} err {err:.3g}"
 
 
 def test_dashpot_matches_its_exact_half_period_and_sticks_below_a_quarter():
@@ -57,7 +57,7 @@ def test_dashpot_matches_its_exact_half_period_and_sticks_below_a_quarter():
         exact = dashpot_collision(float(w), end="overlap").eps
         for rtol in (1e-6, 1e-12):
             got = _fast(1, 0, w, rtol)[0][0]
-            assert abs(got / exact - 1) <= _bound(rtol), f"seed {SEED}: Omega={w:.6g}"
+            assert abs(got / exact - 1) <= _bound(rtol, 1, 0), f"seed {SEED}: Omega={w:.6g}"
     for w in _fresh(1e-5, 0.25, 6):
         assert _fast(1, 0, w, 1e-9)[0][5] == END_STUCK
 
@@ -74,7 +74,7 @@ def test_a_tiny_eps_keeps_its_relative_bound(rtol):
     C = _overlap_constant()
     for w in (*_fresh(1e-5, 1e-3, 3), 1e-6):
         got = _fast("3/2", "1/2", w, rtol)[0][0]
-        assert abs(got / (C * w ** 3) - 1) <= _bound(rtol), f"seed {SEED}: Omega={w:.6g}"
+        assert abs(got / (C * w ** 3) - 1) <= _bound(rtol, "3/2", "1/2"), f"seed {SEED}: Omega={w:.6g}"
 
 
 @pytest.mark.parametrize("alpha, gamma, omega", [("5/2", "1/2", 0.1), ("3", "1/2", 1e-3), ("3", "1/4", 1.0),
@@ -89,7 +89,7 @@ def test_sticks_where_the_reference_proves_it_and_not_just_above(alpha, gamma, o
     row = _fast(alpha, gamma, above, 1e-12)[0]
     assert row[5] == END_SEPARATION
     assert math.isclose(row[0], collide(alpha, gamma, above, end="overlap", rtol=1e-13).eps,
-                        rel_tol=integrator_bound(1e-12) + 1e-12)
+                        rel_tol=integrator_bound(1e-12, as_exponents(alpha, gamma)) + 1e-12)
 
 
 def test_force_rule_numbers_are_unchanged_by_the_overlap_code():
@@ -108,8 +108,8 @@ def test_force_rule_numbers_are_unchanged_by_the_overlap_code():
     got = collide_fast(2, 3, 2, om, 1e-10)[:, 0]
     assert [float(x).hex() for x in got] == now
     for a, b, c in zip(now, carried_f, before_cap):
-        assert abs(float.fromhex(a) / float.fromhex(b) - 1) <= integrator_bound(1e-10)
-        assert abs(float.fromhex(a) / float.fromhex(c) - 1) <= integrator_bound(1e-10)
+        assert abs(float.fromhex(a) / float.fromhex(b) - 1) <= integrator_bound(1e-10, as_exponents("3/2", "1"))
+        assert abs(float.fromhex(a) / float.fromhex(c) - 1) <= integrator_bound(1e-10, as_exponents("3/2", "1"))
 
 
 def test_epsilon_overlap_is_answered_by_the_integrator_within_tol(empty_cache):
@@ -150,5 +150,5 @@ def test_both_double_methods_keep_the_overlap_bound_at_large_alpha(rtol):
     truth = float(reference_collision(ex, None, 1.895e6, digits=24, end="overlap").eps)
     fast = _fast("17/3", "4/3", 1.895e6, rtol)[0, 0]
     scipy = collide("17/3", "4/3", 1.895e6, rtol=rtol, end="overlap")
-    assert abs(fast / truth - 1) <= integrator_bound(rtol, "overlap")
-    assert abs(scipy.eps / truth - 1) <= min(reference_bound(rtol, "overlap"), scipy.error_bound)
+    assert abs(fast / truth - 1) <= integrator_bound(rtol, ex, "overlap")
+    assert abs(scipy.eps / truth - 1) <= min(reference_bound(rtol, ex, "overlap"), scipy.error_bound)

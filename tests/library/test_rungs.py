@@ -51,5 +51,5 @@ def test_the_reference_rung_quotes_what_collide_states_under_either_rule():
         req = Request(as_exponents(alpha, gamma), np.array([1.0]), 1e-9, "overlap")
         assert req.rule == rule
         quoted = Reference().bound(req, {})[0]
-        stated = collide(alpha, gamma, 1.0, rtol=reference_rtol(1e-9, rule), end="overlap").error_bound
+        stated = collide(alpha, gamma, 1.0, rtol=reference_rtol(1e-9, req.ex, rule), end="overlap").error_bound
         assert quoted == stated

@@ -17,6 +17,7 @@ from common.latex import esc, frac_tex, sci
 from common.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
 
 from restitution.core.collision import collide
+from restitution.core.exponents import as_exponents
 from restitution.core.highprec import reference_collision
 from restitution.core.overlap_limit import overlap_limit
 from restitution.fast.master import reference_eps
@@ -128,7 +129,7 @@ for i, r in enumerate(rows):
     inv = np.asarray(P.decay_inverse_omegas, dtype=float)
     d = np.abs(reference_eps(r["alpha"], r["gamma"], 1.0 / inv, CURVE_RTOL, "overlap")
                / (r["C"] * inv ** -float(Fraction(r["k"]))) - 1.0)
-    keep = d > integrator_bound(CURVE_RTOL)          # below that the integrator's own error shows
+    keep = d > integrator_bound(CURVE_RTOL, as_exponents(r["alpha"], r["gamma"]))   # below that the integrator's own error shows
     right.semilogy(inv[keep], d[keep], "o-", color=colours[i % 7], ms=3.5, lw=1.0, label=lab)
 left.set_ylim(top=3.0)
 left.set_xlabel(r"$\Omega$")

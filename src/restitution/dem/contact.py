@@ -19,8 +19,8 @@ __all__ = ["Contact", "contact_eps"]
 
 
 def contact_eps(alpha, gamma, end: str, omega: float, rtol: float = 1e-12) -> float:
-    """eps at one Omega to the scipy reference's bound at ``rtol`` (10 rtol + 1e-13), from the
-    cheapest rung of the ladder that meets it: under the overlap rule the compiled integrator
+    """eps at one Omega to the scipy reference's bound at ``rtol`` (10 rtol + 1e-13, more for large
+    exponents), from the cheapest rung of the ladder that meets it: under the overlap rule the compiled integrator
     (tens of microseconds) instead of the reference (20-200 ms), which calibrations call dozens of
     times. Near the overlap rule's sticking boundary, where no fast rung meets that bound, the
     reference answers as before. Raises StickError where the bodies stick under the overlap rule."""
@@ -28,8 +28,8 @@ def contact_eps(alpha, gamma, end: str, omega: float, rtol: float = 1e-12) -> fl
     from ..fast.ladder import epsilon
     from ..fast.rung import reference_bound
     try:
-        return float(epsilon(alpha=alpha, gamma=gamma, omega=[omega], tol=reference_bound(rtol), end=end,
-                             build=False).eps[0])
+        tol = reference_bound(rtol, as_exponents(alpha, gamma))
+        return float(epsilon(alpha=alpha, gamma=gamma, omega=[omega], tol=tol, end=end, build=False).eps[0])
     except ParameterError:
         return collide(alpha, gamma, omega, rtol=rtol, end=end).eps
 

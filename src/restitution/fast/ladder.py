@@ -45,8 +45,9 @@ Bounds:
   0.1 decade): SAFETY x the largest error at the grid points bracketing the inputs + the grid's own
   accuracy; expansions beyond the grid: the fitted remainder model of :mod:`restitution.fast.master`;
 * master: measured held-out error inside its range (x2), expansion bounds outside;
-* integrator: INTEGRATOR_BOUND_FACTOR rtol + INTEGRATOR_BOUND_FLOOR (validated against mpmath);
-* reference: 10 rtol + 1e-13 (validated against mpmath); highprec: 10^(1 - digits), at least the
+* integrator: INTEGRATOR_BOUND_FACTOR rtol + INTEGRATOR_BOUND_FLOOR, times ((alpha + gamma) / 4)^3
+  where alpha + gamma > 4 (validated against mpmath; core.conditioning.exponent_factor);
+* reference: 10 rtol + 1e-13, the same factor for large exponents (validated against mpmath); highprec: 10^(1 - digits), at least the
   2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
 * closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
@@ -180,7 +181,7 @@ def _spot_checks_pass(ex: Exponents, m: MasterCurve) -> bool:
     om = np.exp(m.s0 + (np.arange(m.coef.shape[0]) + SPOT_CHECK_AT) * m.width)
     ref = reference_eps(ex, None, om, 1e-13)
     err = np.abs(m.eps(om) - ref) / ref
-    return bool(np.all(err <= 10.0 * (m.bound_at(om) + integrator_bound(1e-13))))
+    return bool(np.all(err <= 10.0 * (m.bound_at(om) + integrator_bound(1e-13, ex))))
 
 
 def _uniform_checks_pass(ex: Exponents, u: UniformForm, end: str) -> bool:
@@ -318,7 +319,7 @@ class Ladder:
             ref = reference_eps(self.ex, None, pts, 1e-13)
         except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
             return False
-        return bool(np.all(np.abs(hp / ref - 1) <= 10.0 * integrator_bound(1e-13)))
+        return bool(np.all(np.abs(hp / ref - 1) <= 10.0 * integrator_bound(1e-13, self.ex)))
 
     def _apply_check(self, d: dict) -> dict:
         widen_by_check(self.master, d)

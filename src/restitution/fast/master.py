@@ -372,11 +372,11 @@ def build_master(alpha, gamma, settings: MasterSettings | None = None, *, progre
     fit_err = max(fit_err, grid_err_inside)
     out = ~inside
     # beyond the joins: error against the grid, in units of (expansion bound + integrator noise)
-    noise = integrator_bound(s.rtol) if ex.alpha != ex.gamma else 2e-15
+    noise = integrator_bound(s.rtol, ex) if ex.alpha != ex.gamma else 2e-15
     grid_err_outside = float(np.max(np.abs(curve.eps(grid[out]) / ref[out] - 1.0)
                                     / (curve.bound_at(grid[out]) + noise))) if np.any(out) else 0.0
 
-    integ = integrator_bound(s.rtol) if ex.alpha != ex.gamma else 2e-15
+    integ = integrator_bound(s.rtol, ex) if ex.alpha != ex.gamma else 2e-15
     curve.bound_inside = float(max(2.0 * (fit_err + integ), 2e-14))
     curve.checks = {
         "fit_err_heldout": fit_err,

@@ -99,11 +99,11 @@ class OverlapCurve(PanelRange):
         """Every panel agrees with a fresh integration at one point to its bound (plus the
         integrator's): the cache's digest catches a damaged file, this a wrong curve."""
         # the build never states less than twice the nodes' own accuracy: a smaller bound was edited
-        if not (np.all(np.isfinite(self.coef)) and 2.0 * integrator_bound(NODE_RTOL) <= self.bound_inside < 1e-6):
+        if not (np.all(np.isfinite(self.coef)) and 2.0 * integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma)) <= self.bound_inside < 1e-6):
             return False
         om = np.exp(self.s0 + (np.arange(self.coef.shape[0]) + SPOT_CHECK_AT) * self.width)
         ref = reference_eps(self.alpha, self.gamma, om, NODE_RTOL, "overlap")
-        return bool(np.all(np.abs(self.eps(om) / ref - 1) <= 10.0 * (self.bound_inside + integrator_bound(NODE_RTOL))))
+        return bool(np.all(np.abs(self.eps(om) / ref - 1) <= 10.0 * (self.bound_inside + integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma)))))
 
     def as_dict(self) -> dict:
         return {"version": OVERLAP_CURVE_VERSION, "alpha": str(self.alpha), "gamma": str(self.gamma),
@@ -140,7 +140,7 @@ def build_overlap_curve(alpha, gamma, progress=None) -> OverlapCurve:
     held = np.exp(s0 + (np.arange(npan)[:, None] + rng.uniform(0, 1, (npan, HELDOUT_PER_PANEL))) * WIDTH).ravel()
     ref = reference_eps(ex, None, held, NODE_RTOL, "overlap")
     fit_err = float(np.max(np.abs(curve.eps(held) / ref - 1.0)))
-    curve.bound_inside = float(max(2.0 * (fit_err + integrator_bound(NODE_RTOL)), 2e-14))
+    curve.bound_inside = float(max(2.0 * (fit_err + integrator_bound(NODE_RTOL, ex)), 2e-14))
     curve.checks = {"fit_err_heldout": fit_err, "n_heldout": int(held.size), "n_nodes": int(nodes.size),
                     "node_rtol": NODE_RTOL}
     return curve

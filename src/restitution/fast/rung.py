@@ -28,7 +28,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from ..core.conditioning import (ACCURACY_FACTOR, ACCURACY_FLOOR, OVERLAP_ACCURACY_FACTOR, OVERLAP_ACCURACY_FLOOR,
-                                 conditioning)
+                                 conditioning, exponent_factor)
 from ..core.exponents import Exponents
 
 __all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
@@ -40,9 +40,10 @@ DEFAULT_TOL = 1e-9
 #: No method returns a double closer than this to the true eps (rounding of the result itself).
 TOL_FLOOR = 2.3e-16
 
-#: Validated accuracy of the compiled integrator: |error| <= FACTOR * rtol + FLOOR (relative).
-#: Measured against the mpmath reference in tests/library/test_epsilon.py and the benchmark (observed:
-#: <= 1.6 rtol for rtol >= 1e-12 and <= 6e-15 at rtol = 1e-14 over Omega 1e-8..1e12).
+#: Validated accuracy of the compiled integrator: |error| <= FACTOR * rtol + FLOOR (relative), times
+#: core.conditioning.exponent_factor (alpha + gamma > 4, measured there). Measured against the mpmath
+#: reference in tests/library/test_epsilon.py and the benchmark (observed: <= 1.6 rtol for rtol >=
+#: 1e-12 and <= 6e-15 at rtol = 1e-14 over Omega 1e-8..1e12 for the common pairs).
 INTEGRATOR_BOUND_FACTOR = 10.0
 INTEGRATOR_BOUND_FLOOR = 5e-14
 
@@ -52,21 +53,25 @@ INTEGRATOR_BOUND_FLOOR = 5e-14
 OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR = OVERLAP_ACCURACY_FACTOR, OVERLAP_ACCURACY_FLOOR
 
 
-def _factor_floor(end: str, factor: float, floor: float) -> tuple[float, float]:
-    """(factor, floor) of a bound under ``end``: the rule whose numbers apply (Request.rule)."""
-    return (OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR) if end == "overlap" else (factor, floor)
+def _factor_floor(ex, end: str, factor: float, floor: float) -> tuple[float, float]:
+    """(factor, floor) of a bound for the exponents ``ex`` under ``end``: the rule whose numbers apply
+    (Request.rule), scaled for large exponents."""
+    if end == "overlap":
+        return OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR
+    scale = exponent_factor(ex, None, end)
+    return factor * scale, floor * scale
 
 
-def integrator_bound(rtol: float, end: str = "force") -> float:
-    """Relative bound of the compiled integrator at ``rtol`` under the end rule ``end``."""
-    factor, floor = _factor_floor(end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
+def integrator_bound(rtol: float, ex, end: str = "force") -> float:
+    """Relative bound of the compiled integrator at ``rtol`` for the exponents ``ex`` under ``end``."""
+    factor, floor = _factor_floor(ex, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
     return factor * rtol + floor
 
 
-def integrator_rtol(tol: float, end: str = "force") -> float:
+def integrator_rtol(tol: float, ex, end: str = "force") -> float:
     """The compiled integrator's rtol for a tolerance: half of what tol leaves above the floor is
     left as a margin."""
-    factor, floor = _factor_floor(end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
+    factor, floor = _factor_floor(ex, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
     return min(1e-6, max(1e-14, (tol - floor) / (2 * factor)))
 
 
@@ -74,13 +79,13 @@ def integrator_rtol(tol: float, end: str = "force") -> float:
 REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR = ACCURACY_FACTOR, ACCURACY_FLOOR
 
 
-def reference_bound(rtol: float, end: str = "force") -> float:
-    factor, floor = _factor_floor(end, REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR)
+def reference_bound(rtol: float, ex, end: str = "force") -> float:
+    factor, floor = _factor_floor(ex, end, REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR)
     return factor * rtol + floor
 
 
-def reference_rtol(tol: float, end: str = "force") -> float:
-    factor, floor = _factor_floor(end, REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR)
+def reference_rtol(tol: float, ex, end: str = "force") -> float:
+    factor, floor = _factor_floor(ex, end, REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR)
     return min(1e-6, max(1e-14, (tol - floor) / (2 * factor)))
 
 

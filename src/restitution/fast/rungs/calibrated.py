@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 from ...core.connection import eps_from_connection
+from ...core.exponents import as_exponents
 from ..calibration import MASTER, Calibration, Relation, pade_mp2011, relation_build
 from ..rung import Request, Rung, integrator_bound
 
@@ -27,7 +28,7 @@ def profile_bound(cal: Calibration, name: str, lo10: float, hi10: float) -> floa
         return math.inf
     i0 = max(0, int(np.searchsorted(g, lo10, side="right")) - 1)
     i1 = min(g.size - 1, int(np.searchsorted(g, hi10, side="left")))
-    return SAFETY * float(np.max(e[i0:i1 + 1])) + integrator_bound(cal.master.settings.rtol)
+    return SAFETY * float(np.max(e[i0:i1 + 1])) + integrator_bound(cal.master.settings.rtol, as_exponents(cal.master.alpha, cal.master.gamma))
 
 
 class _Calibrated(Rung):

@@ -31,8 +31,8 @@ class Integrator(Rung):
         return self.cost * req.n * (1.0 if req.rules_differ else 1.0 + 1e-3 / req.lo)
 
     def bound(self, req, built):
-        rtol = integrator_rtol(req.tol)
-        return integrator_bound(rtol), f"rtol={rtol:.3g}"
+        rtol = integrator_rtol(req.tol, req.ex)
+        return integrator_bound(rtol, req.ex), f"rtol={rtol:.3g}"
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.ex, None, omega, integrator_rtol(req.tol))
+        return reference_eps(req.ex, None, omega, integrator_rtol(req.tol, req.ex))

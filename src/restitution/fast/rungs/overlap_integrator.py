@@ -33,9 +33,9 @@ class OverlapIntegrator(Rung):
         return self.cost * req.n * (1.0 + 3e-3 / req.lo)   # ~0.4/Omega steps of the creeping return
 
     def bound(self, req, built):
-        rtol = min(integrator_rtol(req.tol, "overlap"), OVERLAP_RTOL_MAX)
-        return integrator_bound(rtol, "overlap"), f"rtol={rtol:.3g}, overlap"
+        rtol = min(integrator_rtol(req.tol, req.ex, "overlap"), OVERLAP_RTOL_MAX)
+        return integrator_bound(rtol, req.ex, "overlap"), f"rtol={rtol:.3g}, overlap"
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.ex, None, omega, min(integrator_rtol(req.tol, "overlap"), OVERLAP_RTOL_MAX),
+        return reference_eps(req.ex, None, omega, min(integrator_rtol(req.tol, req.ex, "overlap"), OVERLAP_RTOL_MAX),
                              "overlap")

@@ -1,5 +1,5 @@
 """The scipy reference (:func:`restitution.core.collision.collide`) as a rung, both end rules, only
-where its accuracy was verified (collision.OMEGA_RANGE): bound 10 rtol + 1e-13 (under the overlap
+where its accuracy was verified (collision.OMEGA_RANGE): bound 10 rtol + 1e-13, more for large exponents (under the overlap
 rule, rung.OVERLAP_BOUND_FACTOR and _FLOOR)."""
 
 from __future__ import annotations
@@ -23,10 +23,10 @@ class Reference(Rung):
         return None
 
     def bound(self, req, built):
-        rtol = reference_rtol(req.tol, req.rule)
-        return reference_bound(rtol, req.rule), f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
+        rtol = reference_rtol(req.tol, req.ex, req.rule)
+        return reference_bound(rtol, req.ex, req.rule), f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
 
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import collide
-        rtol = reference_rtol(req.tol, req.rule)
+        rtol = reference_rtol(req.tol, req.ex, req.rule)
         return np.array([collide(req.ex, None, float(w), rtol=rtol, end=req.end).eps for w in np.ravel(omega)])
