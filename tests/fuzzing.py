@@ -44,8 +44,9 @@ DENOMINATORS = (1, 2, 3, 4, 6, 12, 5, 7, 8, 9, 10, 11)
 #: two-run error estimate is added to the allowance).
 REF_DIGITS = 20
 #: Below these Omega the mpmath reference takes minutes (it steps through the slow creeping
-#: return); the rungs' own domains go further, the differential check stops here.
-OMEGA_FLOOR = {"alpha<=gamma": 1e-3, "overlap": 1e-4, "force": 1e-12}
+#: return; under the force rule for alpha > gamma it carries log10(1/Omega) more digits: 2 s at
+#: 1e-40, 35 s at 1e-190); the rungs' own domains go further, the differential check stops here.
+OMEGA_FLOOR = {"alpha<=gamma": 1e-3, "overlap": 1e-4, "force": 1e-40}
 OMEGA_CEIL = 1e14
 
 

@@ -65,7 +65,7 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
       energy; by subtraction where it is 1/4 or more), as ``error_bound`` and ``one_minus_eps_bound``
       state them (the first widened near the overlap rule's sticking boundary).
     * ``"fast"``: the compiled integrator (:mod:`restitution.fast.integrator`), tens of
-      microseconds; Omega in [1e-12, 1e14] (alpha <= gamma, and the overlap rule: from 1e-5, where
+      microseconds; Omega in [1e-100, 1e14] (alpha <= gamma, and the overlap rule: from 1e-5, where
       the return is not stiff); no ``one_minus_eps``.
     * ``"highprec"``: mpmath Taylor series at ``digits`` digits (:mod:`restitution.core.highprec`),
       rounded to doubles; ``rtol`` of the result is 10^(1 - digits).
@@ -99,9 +99,9 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
 def _fast_collision(ex, omega, rtol, end: str = "force") -> Collision:
     from .fast.integrator import COLUMNS, END_FORCE, END_SEPARATION, END_STUCK, collide_fast
     from .core.model import at_most_one
-    from .fast.master import stiff_omega_min
+    from .fast.master import TIMES_OMEGA_MIN, stiff_omega_min
 
-    lo = stiff_omega_min(ex, None, end)
+    lo = max(stiff_omega_min(ex, None, end), TIMES_OMEGA_MIN)
     omega = number_in("omega", omega, lo, 1e14, why="the compiled integrator's range (method reference "
                       "or epsilon() cover the rest)")
     rtol = number_in("rtol", rtol, _collision.RTOL_MIN, 1e-6)

@@ -47,8 +47,7 @@ def test_contact_times_within_the_bound_at_small_omega(alpha, gamma, omega):
 def test_the_turn_is_found_where_its_speed_is_one_rounding_of_the_start(alpha, gamma):
     """Near Omega = 1e-16 the speed at the turn, Omega x^(alpha-gamma), is one rounding of the speed
     it started from: with v' from the carried force v stopped just above 0 and the kernel ran into
-    its step limit. Beyond the integrator's promised range (1e-12), so checked on the kernel: eps
-    is the viscous limit (gamma + 1)^((alpha - gamma)/(gamma + 1)) Omega to double precision there."""
+    its step limit. Checked on the kernel: eps is the viscous limit (gamma + 1)^((alpha - gamma)/(gamma + 1)) Omega to double precision there."""
     from fractions import Fraction
 
     from restitution.core.exponents import as_exponents
@@ -65,8 +64,8 @@ def test_the_turn_is_found_where_its_speed_is_one_rounding_of_the_start(alpha, g
 def test_locating_an_event_of_tiny_size_bisects_instead_of_dividing_by_zero(alpha, gamma, omega, rtol):
     """At Omega ~ 1e-200 the located force is so small that the Illinois halving takes it to zero and
     the secant's denominator vanished: compiled code raised ZeroDivisionError (12 of 2,720 runs of 34
-    pairs, Omega 1e-13..1e-300, rtol 1e-6..1e-14), where plain Python bisected on the NaN. Beyond
-    the promised range (1e-12), so checked on the kernel, against the viscous limit k Omega."""
+    pairs, Omega 1e-13..1e-300, rtol 1e-6..1e-14), where plain Python bisected on the NaN. Checked
+    on the kernel, against the viscous limit k Omega."""
     from fractions import Fraction
 
     from restitution.core.exponents import as_exponents
@@ -116,3 +115,31 @@ def test_epsilon_states_what_holds_for_large_exponents():
     for tol in (2e-13, 1e-11, 1e-9):
         r = epsilon(alpha="38/5", gamma="7", omega=[omega], tol=tol, build=False)
         assert r.error_bound <= tol and abs(r.eps[0] / truth - 1) <= r.error_bound, (tol, r.method)
+
+
+@pytest.mark.slow   # mpmath at 1e-40: about 2 s a pair
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "1"), ("1", "0"), ("5/2", "1/2"), ("7", "17/5")])
+@pytest.mark.parametrize("omega", [3e-15, 1e-40])
+def test_below_1e_12_every_quantity_keeps_the_bound(alpha, gamma, omega):
+    """The compiled integrator's range now reaches 1e-300 for eps (the viscous limit, to double
+    precision from about 1e-18 on) and 1e-100 for the contact times (master.TIMES_OMEGA_MIN);
+    checked against mpmath where eps is not yet k Omega to the last digit and further down."""
+    from restitution.core.highprec import reference_collision
+
+    ex = as_exponents(alpha, gamma)
+    truth = reference_collision(ex, None, omega, digits=20)
+    for rtol in (1e-8, 1e-12):
+        got = collide(alpha, gamma, omega, method="fast", rtol=rtol)
+        for name in ("eps", "tau_b", "x_b", "tau_c"):
+            assert abs(getattr(got, name) / float(getattr(truth, name)) - 1) <= integrator_bound(rtol, ex), name
+
+
+def test_eps_answers_down_to_1e_300_but_contact_times_stop_at_1e_100():
+    from restitution.core.errors import ParameterError
+    from restitution.fast.ladder import epsilon
+
+    r = epsilon(alpha="3/2", gamma="1", omega=[1e-300, 1e-200], tol=1e-9, method="integrator", build=False)
+    np.testing.assert_allclose(r.eps, 2 ** 0.25 * np.array([1e-300, 1e-200]), rtol=1e-9)
+    assert collide("3/2", "1", 1e-100, method="fast").end == "force"
+    with pytest.raises(ParameterError, match=r"\[1e-100, 1e\+14\]"):
+        collide("3/2", "1", 1e-120, method="fast")

@@ -30,7 +30,7 @@ master           (cal)  Chebyshev master curve + expansions         all Omega > 
                  (ovl)  overlap rule: its own curve, Chebyshev      Omega in [1e-4, 1e8], above    ~4e-8 s
                         only (fast.overlap_master), built alone     a sticking boundary
                         in 1-2 s
-integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-12, 1e14]         2e-5 to
+integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-300, 1e14]        2e-5 to
                         from tol; both end rules                    (alpha<=gamma, overlap rule:   7e-5 s
                                                                     >= 1e-5)
 reference               core.collision.collide (scipy)              all                            ~1e-2 s

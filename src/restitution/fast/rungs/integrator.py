@@ -3,6 +3,8 @@ the tolerance, bound integrator_bound(rtol) (validated against the mpmath refere
 
 from __future__ import annotations
 
+import math
+
 from ..master import reference_eps, stiff_omega_min
 from ..rung import Rung, integrator_bound, integrator_rtol
 
@@ -23,12 +25,15 @@ class Integrator(Rung):
     def outside(self, req):
         wmin = stiff_omega_min(req.ex, None)
         if req.lo < wmin or req.hi > OMEGA_MAX:
-            return f"Omega outside [{wmin:g}, {printed(OMEGA_MAX)}] (explicit method; stiff below)"
+            return f"Omega outside [{printed(wmin)}, {printed(OMEGA_MAX)}] (explicit method; stiff below)"
         return None
 
     def price(self, req):
-        # alpha <= gamma: the creeping return takes ~1/Omega steps
-        return self.cost * req.n * (1.0 if req.rules_differ else 1.0 + 1e-3 / req.lo)
+        # alpha <= gamma: the creeping return takes ~1/Omega steps; alpha > gamma: the force's zero
+        # comes ~ln(1/Omega) relaxation times after the turn (25 times the cost at 1e-300)
+        if req.rules_differ:
+            return self.cost * req.n * (1.0 + max(0.0, -math.log(req.lo)) / 28.0)
+        return self.cost * req.n * (1.0 + 1e-3 / req.lo)
 
     def bound(self, req, built):
         rtol = integrator_rtol(req.tol, req.ex)
