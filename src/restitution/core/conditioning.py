@@ -9,7 +9,7 @@ from .exponents import as_exponents
 from .results import end_rule
 
 __all__ = ["ACCURACY_FACTOR", "ACCURACY_FLOOR", "OVERLAP_ACCURACY_FACTOR", "OVERLAP_ACCURACY_FLOOR",
-           "EXPONENT_SCALE", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "ELASTIC_START", "exponent_factor",
+           "EXPONENT_SCALE", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "SELF_SIMILAR_POWER", "ELASTIC_START", "exponent_factor",
            "plain_accuracy", "conditioning"]
 
 #: collide's stated accuracy, relative, in eps and in 1 - eps: ACCURACY_FACTOR * rtol + ACCURACY_FLOOR,
@@ -45,8 +45,13 @@ EXPONENT_SCALE = 4.0
 STICK_CONDITION = 0.06
 #: At alpha = 2 gamma + 1 eps falls faster than any power towards 1/(4 (gamma+1)) and the error
 #: grows with the logarithm instead: measured <= 64 at ln(1/eps) = 58, 9 at 31, 2.4 at 18 for
-#: (1, 0) and (2, 1/2); (ln(1/eps) / SELF_SIMILAR_CONDITION)^3 covers it by 2.4 or more.
-SELF_SIMILAR_CONDITION = 10.0
+#: (1, 0) and (2, 1/2). Larger denominators grow faster (the fuzz found (12/5, 7/10) off by 2.5
+#: times (ln(1/eps) / 10)^3): against mpmath, seven pairs ((1, 0), (2, 1/2), (5/2, 3/4), (11/5, 3/5),
+#: (12/5, 7/10), (8/3, 5/6), (17/5, 6/5)) at Omega = (1 + d) / (4 (gamma + 1)), d = 0.003..0.3, rtol
+#: 1e-6..1e-12, both double-precision integrators: error / plain bound <= 4,448 at ln(1/eps) = 57,
+#: 742 at 39, 121 at 27, 14 at 18, 0.5 at 12 ((11/5, 3/5) and (8/3, 5/6) the largest).
+#: (ln(1/eps) / SELF_SIMILAR_CONDITION)^SELF_SIMILAR_POWER covers every one by 3.9 or more.
+SELF_SIMILAR_CONDITION, SELF_SIMILAR_POWER = 5.0, 4
 #: Under the overlap rule near the elastic limit (alpha > gamma, large Omega) both double-precision
 #: integrators lose relative accuracy with Omega for large alpha: measured against mpmath, error /
 #: (10 rtol + floor) up to 2.0 at Omega = 1e8, 3.3 at 1e10 (collide, alpha = 8, gamma = 1), 7.7 at
@@ -87,4 +92,4 @@ def conditioning(alpha, gamma, end: str, eps, omega) -> np.ndarray:
         return elastic * np.ones_like(e)
     if ex.alpha > 2 * ex.gamma + 1:
         return elastic * np.maximum(1.0, STICK_CONDITION / e)
-    return elastic * np.maximum(1.0, (np.log(1.0 / e) / SELF_SIMILAR_CONDITION) ** 3)
+    return elastic * np.maximum(1.0, (np.log(1.0 / e) / SELF_SIMILAR_CONDITION) ** SELF_SIMILAR_POWER)
