@@ -50,7 +50,8 @@ STICK_CONDITION = 0.06
 #: (12/5, 7/10), (8/3, 5/6), (17/5, 6/5)) at Omega = (1 + d) / (4 (gamma + 1)), d = 0.003..0.3, rtol
 #: 1e-6..1e-12, both double-precision integrators: error / plain bound <= 4,448 at ln(1/eps) = 57,
 #: 742 at 39, 121 at 27, 14 at 18, 0.5 at 12 ((11/5, 3/5) and (8/3, 5/6) the largest).
-#: (ln(1/eps) / SELF_SIMILAR_CONDITION)^SELF_SIMILAR_POWER covers every one by 3.9 or more.
+#: (ln(1/eps) / SELF_SIMILAR_CONDITION)^SELF_SIMILAR_POWER covers every one by 3.9 or more, and
+#: (11/5, 3/5) and (8/3, 5/6) further in by 3.7 or more (d = 1e-3, 3e-4, 1e-4: ln(1/eps) = 99, 181, 314).
 SELF_SIMILAR_CONDITION, SELF_SIMILAR_POWER = 5.0, 4
 #: Under the overlap rule near the elastic limit (alpha > gamma, large Omega) both double-precision
 #: integrators lose relative accuracy with Omega for large alpha: measured against mpmath, error /
