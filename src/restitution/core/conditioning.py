@@ -9,8 +9,8 @@ from .exponents import as_exponents
 from .results import end_rule
 
 __all__ = ["ACCURACY_FACTOR", "ACCURACY_FLOOR", "OVERLAP_ACCURACY_FACTOR", "OVERLAP_ACCURACY_FLOOR",
-           "EXPONENT_SCALE", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "SELF_SIMILAR_POWER", "ELASTIC_START", "exponent_factor",
-           "plain_accuracy", "conditioning"]
+           "EXPONENT_SCALE", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "SELF_SIMILAR_POWER", "ELASTIC_START",
+           "exponent_factor", "plain_accuracy", "conditioning"]
 
 #: collide's stated accuracy, relative, in eps and in 1 - eps: ACCURACY_FACTOR * rtol + ACCURACY_FLOOR,
 #: times conditioning(...) under the overlap rule near a sticking boundary.

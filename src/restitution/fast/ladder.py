@@ -47,8 +47,8 @@ Bounds:
 * master: measured held-out error inside its range (x2), expansion bounds outside;
 * integrator: INTEGRATOR_BOUND_FACTOR rtol + INTEGRATOR_BOUND_FLOOR, times ((alpha + gamma) / 4)^3
   where alpha + gamma > 4 (validated against mpmath; core.conditioning.exponent_factor);
-* reference: 10 rtol + 1e-13, the same factor for large exponents (validated against mpmath); highprec: 10^(1 - digits), at least the
-  2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
+* reference: 10 rtol + 1e-13, the same factor for large exponents (validated against mpmath);
+  highprec: 10^(1 - digits), at least the 2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
 * closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 

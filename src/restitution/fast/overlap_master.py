@@ -98,12 +98,13 @@ class OverlapCurve(PanelRange):
     def spot_checks_pass(self) -> bool:
         """Every panel agrees with a fresh integration at one point to its bound (plus the
         integrator's): the cache's digest catches a damaged file, this a wrong curve."""
+        nodes = integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma))
         # the build never states less than twice the nodes' own accuracy: a smaller bound was edited
-        if not (np.all(np.isfinite(self.coef)) and 2.0 * integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma)) <= self.bound_inside < 1e-6):
+        if not (np.all(np.isfinite(self.coef)) and 2.0 * nodes <= self.bound_inside < 1e-6):
             return False
         om = np.exp(self.s0 + (np.arange(self.coef.shape[0]) + SPOT_CHECK_AT) * self.width)
         ref = reference_eps(self.alpha, self.gamma, om, NODE_RTOL, "overlap")
-        return bool(np.all(np.abs(self.eps(om) / ref - 1) <= 10.0 * (self.bound_inside + integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma)))))
+        return bool(np.all(np.abs(self.eps(om) / ref - 1) <= 10.0 * (self.bound_inside + nodes)))
 
     def as_dict(self) -> dict:
         return {"version": OVERLAP_CURVE_VERSION, "alpha": str(self.alpha), "gamma": str(self.gamma),

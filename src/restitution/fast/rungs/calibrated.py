@@ -28,7 +28,8 @@ def profile_bound(cal: Calibration, name: str, lo10: float, hi10: float) -> floa
         return math.inf
     i0 = max(0, int(np.searchsorted(g, lo10, side="right")) - 1)
     i1 = min(g.size - 1, int(np.searchsorted(g, hi10, side="left")))
-    return SAFETY * float(np.max(e[i0:i1 + 1])) + integrator_bound(cal.master.settings.rtol, as_exponents(cal.master.alpha, cal.master.gamma))
+    grid = integrator_bound(cal.master.settings.rtol, as_exponents(cal.master.alpha, cal.master.gamma))
+    return SAFETY * float(np.max(e[i0:i1 + 1])) + grid
 
 
 class _Calibrated(Rung):
