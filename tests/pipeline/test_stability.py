@@ -159,6 +159,26 @@ def test_monotonicity_allows_only_unresolvable_steps():
     assert [v.check for v in bad] == ["monotone"]
 
 
+def test_a_pair_with_large_exponents_is_held_to_the_accuracy_collide_states_for_it():
+    """collide states more for alpha + gamma > 4 (core.conditioning.exponent_factor); the atlas holds
+    each pair to what collide states for it, not to the common pairs' accuracy."""
+    from restitution.core.collision import collide
+
+    spec = st.AtlasSpec.from_config({"alphas": ["8", "3/2"], "gammas": ["7", "1"]})
+    common = spec.stated_accuracy
+    assert spec.accuracy_for("3/2", "1") == common
+    assert spec.accuracy_for("8", "7") == pytest.approx(common * (15 / 4) ** 3)
+    assert collide("8", "7", 1.0, rtol=spec.rtol).error_bound == pytest.approx(spec.accuracy_for("8", "7"))
+    err = 10 * common   # within the large pair's statement, not the common one's
+    records = [_record(2.0, 0.4, alpha="8", gamma="7", err_tight=err), _record(2.0, 0.4, err_tight=err)]
+    violations, _ = sc.check_invariants(records, spec.accuracy_for)
+    assert [(v.alpha, v.check) for v in violations] == [("3/2", "tight")]
+    summary = {r["alpha"]: r["accuracy"] for r in sc.summarize(records, spec.accuracy_for)}
+    assert summary == {"8": spec.accuracy_for("8", "7"), "3/2": common}
+    fixed = st.AtlasSpec.from_config({"alphas": ["8"], "gammas": ["7"], "accuracy": 1e-9})
+    assert fixed.accuracy_for("8", "7") == 1e-9
+
+
 def test_records_from_a_csv_are_checked_the_same(tmp_path):
     records = [_record(1.0, 0.3), _record(2.0, 1.5)]
     path = tmp_path / "a.csv"

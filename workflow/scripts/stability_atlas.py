@@ -71,8 +71,8 @@ if snakemake.rule == "stability_atlas":
     records = atlas.to_dict("records")
 
     accuracy = spec.stated_accuracy
-    violations, unresolved = sc.check_invariants(records, accuracy)
-    summary = sc.summarize(records, accuracy)
+    violations, unresolved = sc.check_invariants(records, spec.accuracy_for)
+    summary = sc.summarize(records, spec.accuracy_for)
     limits = sc.limit_agreement(records)
 
     write_csv(snakemake.output.atlas, records, RECORD_COLUMNS)
@@ -137,7 +137,9 @@ if snakemake.rule == "stability_atlas":
         "StabAccuracy": sci(accuracy, 3),
         "StabAccuracyWhy": (r"set in \texttt{config.yaml}" if spec.accuracy is not None else
                             f"{st.ACCURACY_FACTOR:g} times the tolerance plus {sci(st.ACCURACY_FLOOR, 1)}, the bound "
-                            "the method ladder quotes for this integrator"),
+                            "the method ladder quotes for this integrator"
+                            + ("" if all(spec.accuracy_for(a, g) == accuracy for a, g in spec.pairs) else
+                               r" (times $((\alpha + \gamma)/4)^3$ for the pairs with $\alpha + \gamma > 4$)")),
         "StabTightRtol": sci(spec.tight_rtol, 2),
         "StabTightDecades": str(spec.tight_decades),
         "StabTightPoints": str(sum(r["n_tight"] for r in summary)),

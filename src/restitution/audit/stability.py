@@ -43,6 +43,7 @@ from typing import Iterable, Sequence
 
 import numpy as np
 
+from ..core import conditioning
 from ..core.errors import ParameterError, integer_in, number_in, require_positive_finite
 from ..core.exponents import Exponents, as_exponents
 
@@ -60,8 +61,9 @@ CHECKS = ("finite", "eps_range", "order", "x_c", "end", "monotone", "tight", "re
 #: accuracy of eps from Omega ~ 3e10 on and eps comes out > 1 (e.g. 1 + 5.9e-11 for alpha = gamma = 1
 #: at 1e11); alpha = 5/2, gamma = 1/2 misses tau_c by 1.8e-9 at 1e12. The atlas reports both.
 OMEGA_LIMITS = (1e-12, 1e12)
-#: Default stated accuracy: ACCURACY_FACTOR rtol + ACCURACY_FLOOR (the ladder's bound for collide).
-ACCURACY_FACTOR, ACCURACY_FLOOR = 10.0, 1e-13
+#: Default stated accuracy: ACCURACY_FACTOR rtol + ACCURACY_FLOOR (collide's, and the ladder's, bound),
+#: times core.conditioning.exponent_factor for a pair with alpha + gamma > 4.
+ACCURACY_FACTOR, ACCURACY_FLOOR = conditioning.ACCURACY_FACTOR, conditioning.ACCURACY_FLOOR
 
 
 # ------------------------------------------------------------------------------------------ spec
@@ -168,8 +170,14 @@ class AtlasSpec:
 
     @property
     def stated_accuracy(self) -> float:
-        """Relative error claimed for every quantity of every atlas point."""
+        """Relative error claimed for every quantity of every atlas point whose alpha + gamma <= 4."""
         return ACCURACY_FACTOR * self.rtol + ACCURACY_FLOOR if self.accuracy is None else self.accuracy
+
+    def accuracy_for(self, alpha, gamma) -> float:
+        """Relative error claimed for the pair's points: the one set in the config, or collide's."""
+        if self.accuracy is not None:
+            return self.accuracy
+        return conditioning.plain_accuracy(self.rtol, alpha, gamma, "force")
 
     @property
     def pairs(self) -> list[tuple[str, str]]:

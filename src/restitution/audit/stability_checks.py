@@ -51,16 +51,23 @@ def _nan(x) -> bool:
         return True
 
 
-def check_invariants(records: Iterable[dict], accuracy: float) -> tuple[list[Violation], dict]:
+def _accuracy(accuracy, a: str, g: str) -> float:
+    return float(accuracy(a, g)) if callable(accuracy) else float(accuracy)
+
+
+def check_invariants(records: Iterable[dict], accuracy) -> tuple[list[Violation], dict]:
     """All violations of the invariants, and per-pair counts of unresolved monotonicity steps.
 
     ``records`` may come from run_atlas or from the atlas CSV (values as read by pandas or csv:
-    numbers may be strings). Returns (violations, {(alpha, gamma): unresolved steps}).
+    numbers may be strings); ``accuracy`` is the stated relative accuracy, or a function of the
+    pair (alpha, gamma) giving it (AtlasSpec.accuracy_for). Returns (violations, {(alpha, gamma):
+    unresolved steps}).
     """
     out: list[Violation] = []
     unresolved: dict[tuple[str, str], int] = {}
     for (a, g), rows in _by_pair(records).items():
         fa, fg = Fraction(a), Fraction(g)
+        pair_accuracy = _accuracy(accuracy, a, g)
         expected_end = "force" if fa > fg else "separation"
         prev = None
         unresolved[(a, g)] = 0
@@ -93,7 +100,7 @@ def check_invariants(records: Iterable[dict], accuracy: float) -> tuple[list[Vio
                 bad("end", math.nan, math.nan, f"ended by {r['end']}, expected {expected_end}")
             if prev is not None:
                 step = eps - prev
-                allowance = 2.0 * accuracy * max(eps, prev)
+                allowance = 2.0 * pair_accuracy * max(eps, prev)
                 if step <= 0.0:
                     if step < -allowance:
                         bad("monotone", step, -allowance,
@@ -103,9 +110,9 @@ def check_invariants(records: Iterable[dict], accuracy: float) -> tuple[list[Vio
             prev, prev_w = eps, w
             for check, col, worst in (("tight", "err_tight", "worst_tight"), ("reference", "err_ref", "worst_ref"),
                                       ("exact", "err_exact", "worst_exact")):
-                if not _nan(r.get(col)) and not float(r[col]) <= accuracy:
-                    bad(check, float(r[col]), accuracy,
-                        f"{r.get(worst) or 'a quantity'} off by {float(r[col]):.3g} (stated accuracy {accuracy:.3g})")
+                if not _nan(r.get(col)) and not float(r[col]) <= pair_accuracy:
+                    bad(check, float(r[col]), pair_accuracy,
+                        f"{r.get(worst) or 'a quantity'} off by {float(r[col]):.3g} (stated accuracy {pair_accuracy:.3g})")
     return out, unresolved
 
 
@@ -118,7 +125,7 @@ def _max_at(rows: list[dict], col: str) -> tuple[float, float]:
     return max(vals, key=lambda t: t[0])
 
 
-def summarize(records: Iterable[dict], accuracy: float) -> list[dict]:
+def summarize(records: Iterable[dict], accuracy) -> list[dict]:
     """One row per exponent pair: extent of the quantities, worst errors and invariant counts."""
     records = list(records)
     violations, unresolved = check_invariants(records, accuracy)
@@ -129,7 +136,7 @@ def summarize(records: Iterable[dict], accuracy: float) -> list[dict]:
         eps = [float(r["eps"]) for r in ok]
         xc = [float(r["x_c"]) for r in ok if r["end"] == "force"]
         row = {
-            "alpha": a, "gamma": g, "accuracy": accuracy, "points": len(rs), "failed": len(rs) - len(ok),
+            "alpha": a, "gamma": g, "accuracy": _accuracy(accuracy, a, g), "points": len(rs), "failed": len(rs) - len(ok),
             "end": "/".join(ends),
             "eps_min": min(eps) if eps else math.nan, "eps_max": max(eps) if eps else math.nan,
             "one_minus_eps_min": 1.0 - max(eps) if eps else math.nan,
