@@ -10,7 +10,7 @@ from .results import end_rule
 
 __all__ = ["ACCURACY_FACTOR", "ACCURACY_FLOOR", "OVERLAP_ACCURACY_FACTOR", "OVERLAP_ACCURACY_FLOOR",
            "EXPONENT_SCALE", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "SELF_SIMILAR_POWER", "ELASTIC_START",
-           "exponent_factor", "plain_accuracy", "conditioning"]
+           "exponent_factor", "plain_factor_floor", "plain_accuracy", "conditioning"]
 
 #: collide's stated accuracy, relative, in eps and in 1 - eps: ACCURACY_FACTOR * rtol + ACCURACY_FLOOR,
 #: times conditioning(...) under the overlap rule near a sticking boundary.
@@ -63,20 +63,28 @@ ELASTIC_START = 1e6
 TINY = 1e-300
 
 
-def exponent_factor(alpha, gamma, end: str) -> float:
-    """The factor on a double-precision integration's plain bound for large exponents (EXPONENT_SCALE)."""
+def exponent_factor(alpha, gamma) -> float:
+    """The factor on the force rule's plain bounds for large exponents (EXPONENT_SCALE)."""
     ex = as_exponents(alpha, gamma)
-    if end_rule(end) == "overlap" and ex.alpha > ex.gamma:
-        return 1.0
     return max(1.0, float(ex.alpha + ex.gamma) / EXPONENT_SCALE) ** 3
 
 
-def plain_accuracy(rtol: float, alpha, gamma, end: str) -> float:
-    """A double-precision integration's stated relative accuracy at ``rtol`` before conditioning."""
+def plain_factor_floor(alpha, gamma, end: str, factor: float = ACCURACY_FACTOR,
+                       floor: float = ACCURACY_FLOOR) -> tuple[float, float]:
+    """(factor, floor) of a double-precision integration's plain bound factor rtol + floor: the
+    overlap rule's own where the rules differ (alpha > gamma), else the given force-rule ones
+    (collide's by default) times exponent_factor."""
     ex = as_exponents(alpha, gamma)
     if end_rule(end) == "overlap" and ex.alpha > ex.gamma:
-        return OVERLAP_ACCURACY_FACTOR * rtol + OVERLAP_ACCURACY_FLOOR
-    return (ACCURACY_FACTOR * rtol + ACCURACY_FLOOR) * exponent_factor(ex, None, end)
+        return OVERLAP_ACCURACY_FACTOR, OVERLAP_ACCURACY_FLOOR
+    scale = exponent_factor(ex, None)
+    return factor * scale, floor * scale
+
+
+def plain_accuracy(rtol: float, alpha, gamma, end: str) -> float:
+    """collide's stated relative accuracy at ``rtol`` before conditioning."""
+    factor, floor = plain_factor_floor(alpha, gamma, end)
+    return factor * rtol + floor
 
 
 def conditioning(alpha, gamma, end: str, eps, omega) -> np.ndarray:

@@ -53,10 +53,11 @@ def stiff_omega_min(alpha, gamma, end: str = "force") -> float:
     stiff: the run takes about ln(1/Omega) relaxation times (3 ms at 1e-300, 0.1 ms at 1e-3), and
     eps was checked against the mpmath reference below 1e-12 (at 3e-15 and 1e-40 in tests/library/
     test_integrator_bound.py, down to 1e-292 in a sweep of random pairs; beyond about 1e-18 eps is
-    the viscous limit k Omega to double precision). Its contact times hold to TIMES_OMEGA_MIN only. For alpha <= gamma the return
-    creeps for a time ~ 1/Omega while the fast relaxation stays O(1): the step count grows like
-    1/Omega (~1.6e5 steps at 1e-6). Under the overlap rule the return creeps for every pair (about
-    0.4/Omega steps for alpha = 3/2, gamma = 1/2: 14 ms at 1e-5, 0.2 s at 1e-6).
+    the viscous limit k Omega to double precision). Its contact times hold to TIMES_OMEGA_MIN only.
+    For alpha <= gamma the return creeps for a time ~ 1/Omega while the fast relaxation stays O(1):
+    the step count grows like 1/Omega (~1.6e5 steps at 1e-6). Under the overlap rule the return
+    creeps for every pair (about 0.4/Omega steps for alpha = 3/2, gamma = 1/2: 14 ms at 1e-5, 0.2 s
+    at 1e-6).
     """
     ex = as_exponents(alpha, gamma)
     return 1e-300 if ex.alpha > ex.gamma and end == "force" else 1e-5

@@ -27,66 +27,55 @@ from typing import Any, Callable, Mapping
 
 import numpy as np
 
-from ..core.conditioning import (ACCURACY_FACTOR, ACCURACY_FLOOR, OVERLAP_ACCURACY_FACTOR, OVERLAP_ACCURACY_FLOOR,
-                                 conditioning, exponent_factor)
+from ..core.conditioning import conditioning, plain_accuracy, plain_factor_floor
 from ..core.exponents import Exponents
 
 __all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
-           "INTEGRATOR_BOUND_FLOOR", "OVERLAP_BOUND_FACTOR", "OVERLAP_BOUND_FLOOR", "integrator_bound",
-           "integrator_rtol", "reference_rtol", "reference_bound", "highprec_digits", "highprec_bound"]
+           "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "integrator_rtol", "reference_rtol", "reference_bound",
+           "highprec_digits", "highprec_bound"]
 
 #: Tolerance when none is given (and no method is forced).
 DEFAULT_TOL = 1e-9
 #: No method returns a double closer than this to the true eps (rounding of the result itself).
 TOL_FLOOR = 2.3e-16
 
-#: Validated accuracy of the compiled integrator: |error| <= FACTOR * rtol + FLOOR (relative), times
-#: core.conditioning.exponent_factor (alpha + gamma > 4, measured there). Measured against the mpmath
+#: Validated accuracy of the compiled integrator under the force rule: |error| <= FACTOR * rtol + FLOOR
+#: (relative), times core.conditioning.exponent_factor (alpha + gamma > 4, measured there); under the
+#: overlap rule collide's (core.conditioning.plain_factor_floor). Measured against the mpmath
 #: reference in tests/library/test_epsilon.py and the benchmark (observed: <= 1.6 rtol for rtol >=
 #: 1e-12 and <= 6e-15 at rtol = 1e-14 over Omega 1e-8..1e12 for the common pairs).
 INTEGRATOR_BOUND_FACTOR = 10.0
 INTEGRATOR_BOUND_FLOOR = 5e-14
 
 
-#: Under the overlap rule (alpha > gamma, where the rules differ) both double-precision methods
-#: state more before conditioning (core.conditioning.OVERLAP_ACCURACY_FACTOR, _FLOOR: measured there).
-OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR = OVERLAP_ACCURACY_FACTOR, OVERLAP_ACCURACY_FLOOR
+
+def _integrator_factor_floor(ex, end: str) -> tuple[float, float]:
+    return plain_factor_floor(ex, None, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
 
 
-def _factor_floor(ex, end: str, factor: float, floor: float) -> tuple[float, float]:
-    """(factor, floor) of a bound for the exponents ``ex`` under ``end``: the rule whose numbers apply
-    (Request.rule), scaled for large exponents."""
-    if end == "overlap":
-        return OVERLAP_BOUND_FACTOR, OVERLAP_BOUND_FLOOR
-    scale = exponent_factor(ex, None, end)
-    return factor * scale, floor * scale
+def _rtol_for(tol: float, factor: float, floor: float) -> float:
+    """The rtol whose bound factor rtol + floor is half of what tol leaves above the floor (the
+    other half is the margin)."""
+    return min(1e-6, max(1e-14, (tol - floor) / (2 * factor)))
 
 
 def integrator_bound(rtol: float, ex, end: str = "force") -> float:
     """Relative bound of the compiled integrator at ``rtol`` for the exponents ``ex`` under ``end``."""
-    factor, floor = _factor_floor(ex, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
+    factor, floor = _integrator_factor_floor(ex, end)
     return factor * rtol + floor
 
 
 def integrator_rtol(tol: float, ex, end: str = "force") -> float:
-    """The compiled integrator's rtol for a tolerance: half of what tol leaves above the floor is
-    left as a margin."""
-    factor, floor = _factor_floor(ex, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
-    return min(1e-6, max(1e-14, (tol - floor) / (2 * factor)))
-
-
-#: The scipy reference's validated accuracy (core.collision.collide): 10 rtol + 1e-13 (the force rule).
-REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR = ACCURACY_FACTOR, ACCURACY_FLOOR
+    return _rtol_for(tol, *_integrator_factor_floor(ex, end))
 
 
 def reference_bound(rtol: float, ex, end: str = "force") -> float:
-    factor, floor = _factor_floor(ex, end, REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR)
-    return factor * rtol + floor
+    """The scipy reference's (core.collision.collide) bound: what collide states before conditioning."""
+    return plain_accuracy(rtol, ex, None, end)
 
 
 def reference_rtol(tol: float, ex, end: str = "force") -> float:
-    factor, floor = _factor_floor(ex, end, REFERENCE_BOUND_FACTOR, REFERENCE_BOUND_FLOOR)
-    return min(1e-6, max(1e-14, (tol - floor) / (2 * factor)))
+    return _rtol_for(tol, *plain_factor_floor(ex, None, end))
 
 
 def highprec_digits(tol: float) -> int:

@@ -1,6 +1,6 @@
 """The compiled integrator under the overlap rule (``collide_fast(..., overlap=True)``), where it
 differs from the force rule (alpha > gamma), at rtol at most OVERLAP_RTOL_MAX: the force rule's
-bound with a factor and floor of its own (rung.OVERLAP_BOUND_FACTOR, _FLOOR), validated against the mpmath
+bound with a factor and floor of its own (core.conditioning.plain_factor_floor), validated against the mpmath
 reference down to eps of 1e-36 (tests/library/test_overlap_fast.py). Below
 Omega = 1e-5 the creeping return makes the explicit method slow (~0.4/Omega steps): the scipy
 reference (Radau there) takes over. A proved sticking raises StickError, as the reference does."""

@@ -1,6 +1,6 @@
 """The scipy reference (:func:`restitution.core.collision.collide`) as a rung, both end rules, only
-where its accuracy was verified (collision.OMEGA_RANGE): bound 10 rtol + 1e-13, more for large exponents (under the overlap
-rule, rung.OVERLAP_BOUND_FACTOR and _FLOOR)."""
+where its accuracy was verified (collision.OMEGA_RANGE): bound 10 rtol + 1e-13, more for large
+exponents (under the overlap rule, its own: core.conditioning.plain_factor_floor)."""
 
 from __future__ import annotations
 
@@ -24,7 +24,8 @@ class Reference(Rung):
 
     def bound(self, req, built):
         rtol = reference_rtol(req.tol, req.ex, req.rule)
-        return reference_bound(rtol, req.ex, req.rule), f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
+        setting = f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
+        return reference_bound(rtol, req.ex, req.rule), setting
 
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import collide
