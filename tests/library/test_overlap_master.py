@@ -13,10 +13,12 @@ import pytest
 
 from restitution.core.collision import StickError, collide
 from restitution.core.errors import ParameterError
+from restitution.core.exponents import as_exponents
 from restitution.core.highprec import reference_collision
 from restitution.fast.cache import cache_path
 from restitution.fast.ladder import Ladder
-from restitution.fast.overlap_master import build_overlap_curve, sticking_boundary
+from restitution.fast.overlap_master import NODE_RTOL, build_overlap_curve, sticking_boundary
+from restitution.fast.rung import integrator_bound
 
 SEED = int(np.random.SeedSequence().entropy % 2**32)
 RNG = np.random.default_rng(SEED)
@@ -41,6 +43,15 @@ def test_bound_holds_against_mpmath_at_fresh_points(curves, pair):
         truth = float(reference_collision(*pair, float(w), digits=20, end="overlap").eps)
         err = abs(float(curve.eps(np.array([w]))[0]) / truth - 1)
         assert err <= curve.bound_inside, f"seed {SEED}: Omega={w:.6g} err {err:.3g} > {curve.bound_inside:.3g}"
+
+
+@pytest.mark.parametrize("pair", [("3/2", "1"), ("3/2", "1/2")])
+def test_bound_carries_the_overlap_rules_node_accuracy(curves, pair):
+    # the nodes come from the compiled integrator under the overlap rule: its bound, not the force rule's
+    curve, _ = curves[pair]
+    nodes = integrator_bound(NODE_RTOL, as_exponents(*pair), "overlap")
+    assert nodes > integrator_bound(NODE_RTOL, as_exponents(*pair))
+    assert curve.bound_inside >= 2.0 * nodes
 
 
 def test_epsilon_uses_the_curve_once_it_is_there(curves):

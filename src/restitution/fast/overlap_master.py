@@ -12,7 +12,7 @@ Where the bodies can stick (alpha >= 2 gamma + 1) the build first finds the stic
 STICK_MARGIN times it, where ln eps is smooth again.
 
 Bound: twice the largest error at random points of every panel (not nodes) against the integrator
-at rtol NODE_RTOL, plus that integrator's own bound.
+at rtol NODE_RTOL, plus that integrator's own bound under the overlap rule.
 """
 
 from __future__ import annotations
@@ -31,9 +31,9 @@ from .panels import PanelRange, chebyshev_panels_eval
 from .rung import integrator_bound
 
 __all__ = ["OverlapCurve", "build_overlap_curve", "sticking_boundary", "OVERLAP_CURVE_VERSION",
-           "OMEGA_LO", "OMEGA_HI"]
+           "OMEGA_LO", "OMEGA_HI", "NODE_RTOL"]
 
-OVERLAP_CURVE_VERSION = 2
+OVERLAP_CURVE_VERSION = 3
 #: The curve's widest range (below 1e-4 the creeping return makes each node cost milliseconds).
 OMEGA_LO, OMEGA_HI = 1e-4, 1e8
 #: Degree 10 on panels of 0.25 in ln Omega: 3e-12 for 3/2, 1/2 (0.5 left 3.6e-10 near Omega = 0.17),
@@ -98,7 +98,7 @@ class OverlapCurve(PanelRange):
     def spot_checks_pass(self) -> bool:
         """Every panel agrees with a fresh integration at one point to its bound (plus the
         integrator's): the cache's digest catches a damaged file, this a wrong curve."""
-        nodes = integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma))
+        nodes = integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma), "overlap")
         # the build never states less than twice the nodes' own accuracy: a smaller bound was edited
         if not (np.all(np.isfinite(self.coef)) and 2.0 * nodes <= self.bound_inside < 1e-6):
             return False
@@ -141,7 +141,7 @@ def build_overlap_curve(alpha, gamma, progress=None) -> OverlapCurve:
     held = np.exp(s0 + (np.arange(npan)[:, None] + rng.uniform(0, 1, (npan, HELDOUT_PER_PANEL))) * WIDTH).ravel()
     ref = reference_eps(ex, None, held, NODE_RTOL, "overlap")
     fit_err = float(np.max(np.abs(curve.eps(held) / ref - 1.0)))
-    curve.bound_inside = float(max(2.0 * (fit_err + integrator_bound(NODE_RTOL, ex)), 2e-14))
+    curve.bound_inside = float(max(2.0 * (fit_err + integrator_bound(NODE_RTOL, ex, "overlap")), 2e-14))
     curve.checks = {"fit_err_heldout": fit_err, "n_heldout": int(held.size), "n_nodes": int(nodes.size),
                     "node_rtol": NODE_RTOL}
     return curve
