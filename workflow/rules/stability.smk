@@ -92,6 +92,10 @@ MANUSCRIPT_INPUTS.append("results/stability/uniform_forms.tex")
 rule uniform_atlas:
     """The uniform closed form (restitution.core.uniform) built for every exponent pair of the atlas."""
     input:
+        # the variants' forms, built by rule uniform_form with the same library call: their pairs
+        # are read, not fitted a second time
+        forms=expand("results/{variant}/closed_form/form.json", variant=list(VARIANTS)),
+        overlap_forms=expand("results/{variant}/closed_form/form_overlap.json", variant=list(VARIANTS)),
         src=lib("fast.uniform_build"),
         code=code("uniform_atlas.py") + ["workflow/scripts/common/latex.py"],
     output:
