@@ -38,10 +38,10 @@ include: "workflow/rules/scene.smk"      # DEM scenes on request: make scene SCE
 include: "workflow/rules/manuscript.smk" # the reproduction article, built with latexmk
 
 
-# Bookkeeping, and the plots (a second of matplotlib each, read from results), that a cluster
-# executor runs on the submitting host, not as a queued job.
+# Bookkeeping, tables and the plots (a second each, read from results) that a cluster executor
+# runs on the submitting host, not as a queued job.
 localrules: all, outputs, study, main_figure, manuscript_inputs, provenance, variants_tex, variant_section,
-    arxiv, scene, fig1_forward, fig2_inverse, fig3_phase, fig4_eps
+    arxiv, scene, fig1_forward, fig2_inverse, fig3_phase, fig4_eps, uniform_atlas
 
 
 rule all:

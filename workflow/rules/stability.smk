@@ -88,21 +88,47 @@ rule fig_stability:
 
 MANUSCRIPT_INPUTS.append("results/stability/uniform_forms.tex")
 
+# The atlas's pairs whose uniform forms no variant has (rule uniform_form builds the variants' with
+# the same library call), dealt round-robin to the shards.
+_VARIANT_PAIRS = {(Fraction(str(v["alpha"])), Fraction(str(v["gamma"]))) for v in VARIANTS.values()}
+_ATLAS_PAIRS = [list(p) for p in _AtlasSpec.from_config(_atlas_settings(config)).pairs]
+_UNIFORM_PAIRS = [p for p in _ATLAS_PAIRS if (Fraction(p[0]), Fraction(p[1])) not in _VARIANT_PAIRS]
+
+
+rule uniform_shard:
+    """The uniform forms (both end rules, where they exist) of one share of those pairs."""
+    input:
+        src=lib("fast.uniform_build"),
+        code=code("uniform_atlas.py"),
+    output:
+        "results/stability/uniform/{shard}-of-{shards}.json",
+    # long and needed only by the appendix's table, like the atlas's shards: start them first
+    priority: 50
+    wildcard_constraints:
+        shard=r"\d+",
+        shards=r"\d+",
+    params:
+        pairs=lambda wildcards: _UNIFORM_PAIRS[int(wildcards.shard)::int(wildcards.shards)],
+    log:
+        "logs/stability/uniform-{shard}-of-{shards}.log",
+    script:
+        script_file("uniform_atlas.py")
+
 
 rule uniform_atlas:
-    """The uniform closed form (restitution.core.uniform) built for every exponent pair of the atlas."""
+    """The uniform closed form of every exponent pair of the atlas: its row in the appendix's table."""
     input:
-        # the variants' forms, built by rule uniform_form with the same library call: their pairs
-        # are read, not fitted a second time
+        shards=expand("results/stability/uniform/{shard}-of-{shards}.json",
+                      shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
         forms=expand("results/{variant}/closed_form/form.json", variant=list(VARIANTS)),
         overlap_forms=expand("results/{variant}/closed_form/form_overlap.json", variant=list(VARIANTS)),
-        src=lib("fast.uniform_build"),
+        src=lib("core.uniform"),
         code=code("uniform_atlas.py") + ["workflow/scripts/common/latex.py"],
     output:
         csv="results/stability/uniform_forms.csv",
         tex="results/stability/uniform_forms.tex",
     params:
-        pairs=[list(p) for p in _AtlasSpec.from_config(_atlas_settings(config)).pairs],
+        pairs=_ATLAS_PAIRS,
     log:
         "logs/stability/uniform_atlas.log",
     script:
