@@ -17,8 +17,7 @@ from common.latex import frac_tex, sci
 from common.pipeline import read_json, start, write_csv, write_json, write_text
 
 from restitution.core.errors import ParameterError
-from restitution.core.exponents import as_exponents
-from restitution.core.uniform import UniformForm, skeleton
+from restitution.core.uniform import skeleton
 
 start(snakemake)
 
@@ -33,50 +32,53 @@ def no_form(alpha, gamma, end="force") -> str | None:
 
 
 def build_shard():
-    """One shard: the forms of its pairs, as the library stores them."""
+    """One shard: for each of its pairs and both end rules, the form as the library stores it
+    (with available: true) or why there is none (available: false), as rule uniform_form writes a
+    variant's."""
     from restitution.fast.uniform_build import build_uniform
 
-    forms = []
+    records = []
     for alpha, gamma in snakemake.params.pairs:
         for end in ("force", "overlap"):
-            if no_form(alpha, gamma, end) is None:
+            reason = no_form(alpha, gamma, end)
+            if reason is None:
                 print(f"alpha={alpha}, gamma={gamma}, {end} rule", flush=True)
-                forms.append(build_uniform(alpha, gamma, end=end).as_dict())
-    write_json(snakemake.output[0], forms)
+                records.append({"available": True, "end": end, **build_uniform(alpha, gamma, end=end).as_dict()})
+            else:
+                records.append({"available": False, "reason": reason, "alpha": alpha, "gamma": gamma, "end": end})
+    write_json(snakemake.output[0], records)
 
 
 def write_table():
-    """Every pair's row, its form from the shards or the variants' forms."""
-    built = {}
-    shards = [d for path in snakemake.input.shards for d in read_json(path)]
-    variants = [read_json(path) for path in [*snakemake.input.forms, *snakemake.input.overlap_forms]]
-    for d in shards + [d for d in variants if d["available"]]:
-        f = UniformForm.from_dict(d)
-        built[(f.alpha, f.gamma, f.end)] = f
-    rows = [row(alpha, gamma, built) for alpha, gamma in snakemake.params.pairs]
+    """Every pair's row, from its records in the shards or the variants' forms (read as written: the
+    overlap rule's skeleton costs a limit-law integration per pair to derive again)."""
+    ends = ["force"] * len(snakemake.input.forms) + ["overlap"] * len(snakemake.input.overlap_forms)
+    variants = [{"end": end, **read_json(p)}
+                for end, p in zip(ends, [*snakemake.input.forms, *snakemake.input.overlap_forms])]
+    records = {(Fraction(d["alpha"]), Fraction(d["gamma"]), d["end"]): d
+               for d in variants + [d for path in snakemake.input.shards for d in read_json(path)]}
+    rows = [row(alpha, gamma, records) for alpha, gamma in snakemake.params.pairs]
     write_csv(snakemake.output.csv, pd.DataFrame(rows))
     write_text(snakemake.output.tex, latex(rows))
 
 
-def row(alpha, gamma, built) -> dict:
-    ex = as_exponents(alpha, gamma)
+def row(alpha, gamma, records) -> dict:
+    a, g = Fraction(alpha), Fraction(gamma)
+    f, o = records[(a, g, "force")], records[(a, g, "overlap")]
     out = {"alpha": alpha, "gamma": gamma}
-    reason = no_form(alpha, gamma)
-    if reason is not None:
-        out["form"] = "exact" if Fraction(alpha) == Fraction(gamma) else "none"
-        out["reason"] = reason
+    if not f["available"]:
+        out["form"] = "exact" if a == g else "none"
+        out["reason"] = f["reason"]
+        return out
+    m = f["measured"]
+    out.update(form="uniform", n_coef=len(f["a"]), sigma=f["sigma"], m0=f["m0"], m1=f["m1"], bound_eps=f["bound_eps"],
+               bound_one_minus_eps=f["bound_one_minus_eps"], test_eps=m["test_eps"],
+               test_one_minus_eps=m["test_one_minus_eps"], selection_eps=m["selection_eps"])
+    if o["available"]:
+        out.update(overlap_form="uniform", overlap_n_coef=len(o["a"]), overlap_bound_eps=o["bound_eps"],
+                   overlap_bound_one_minus_eps=o["bound_one_minus_eps"])
     else:
-        f = built[(ex.alpha, ex.gamma, "force")]
-        m = f.measured
-        out.update(form="uniform", n_coef=len(f.coef), sigma=f.sigma, m0=f.m0, m1=f.m1, bound_eps=f.bound_eps,
-                   bound_one_minus_eps=f.bound_one_minus_eps, test_eps=m["test_eps"],
-                   test_one_minus_eps=m["test_one_minus_eps"], selection_eps=m["selection_eps"])
-        if no_form(alpha, gamma, "overlap") is not None:
-            out["overlap_form"] = "none (the bodies can stick)"
-        else:
-            o = built[(ex.alpha, ex.gamma, "overlap")]
-            out.update(overlap_form="uniform", overlap_n_coef=len(o.coef), overlap_bound_eps=o.bound_eps,
-                       overlap_bound_one_minus_eps=o.bound_one_minus_eps)
+        out["overlap_form"] = "none (the bodies can stick)"
     return out
 
 
