@@ -100,7 +100,8 @@ def add_scene_subcommand(subparsers) -> None:
         "scene", help="the cheapest contact model per contact of a DEM scene, and its input lines",
         description="Reads a scene file (YAML: materials, species, walls, code options, speeds, targets, "
                     "tolerance; see the README's Scenes) and answers for every contact. Exit status 1 when "
-                    "some contact has no model within the tolerance.")
+                    "some contact has no model within the tolerance, or an overlap at which the code's "
+                    "geometry breaks.")
     s.add_argument("file", help="the scene file")
     s.add_argument("--json", action="store_true", help="machine-readable output")
     s.add_argument("--out", metavar="DIR", help="also write DIR/scene.json, DIR/input.lammps and DIR/table.txt")
@@ -127,6 +128,12 @@ def scene_table(res: dict) -> str:
                           + (" accepted" if r["accepted"] else " rejected") + (f" ({r['reason']})" if r.get("reason") else "")
                           for r in c["rungs"])
         rows.append(f"  tried: {tried}")
+        if c["chosen"] is not None:
+            ratio = max(c["max_overlap"]) / c["overlap_limit"]
+            rows.append(f"  largest overlap {max(c['max_overlap']):.3g} m: {ratio:.2g} of "
+                        + ("the radius" if c["b"].startswith("wall:") else "the sum of the radii"))
+        if c.get("problem"):
+            rows.append(f"  NOT MET: {c['problem']}")
     return "\n".join(head + rows + ["", "# input lines"] + res["input_lines"]) + "\n"
 
 

@@ -237,3 +237,35 @@ def test_liggghts_scene_matrices_and_the_typed_e(limit_force):
     n = int(m3[6])
     matrix = np.array(m3[7:], float).reshape(n, n)
     assert n == 4 and np.array_equal(matrix, matrix.T) and matrix[0, 2] == res["contacts"][2]["setting"]["e"]
+
+
+def _soft_hooke_scene(top_speed: float) -> dict:
+    """One soft hooke material with a linear dashpot (mass_velocity) and a wall of it: the largest
+    overlap of a linear damped oscillator is known in closed form."""
+    return {"name": "soft", "code": "lammps", "tolerance": 0.01, "speeds": [0.5, top_speed], "check_points": 100,
+            "options": {"normal": "hooke", "damping": "mass_velocity", "limit_damping": False},
+            "materials": {"foam": {"k_n": 5.0e4, "density": 1500}},
+            "species": [{"name": "f", "material": "foam", "radius": 2.5e-3}],
+            "walls": ["foam"], "targets": [{"pair": ["foam", "foam"], "e": 0.7}]}
+
+
+@pytest.mark.parametrize("top_speed", [5.0, 80.0])
+def test_largest_overlap_is_the_damped_oscillators_and_breaking_the_geometry_is_not_met(tmp_path, top_speed):
+    # m x'' + c x' + k x = 0, x'(0) = v: x_max = (v / w0) exp(-z / sqrt(1 - z^2) atan(sqrt(1 - z^2) / z)),
+    # and e = exp(-pi z / sqrt(1 - z^2)) gives z. At 80 m/s the sphere would sink 1.2 radii into the wall
+    # (the centre through it: LAMMPS pushes it on through), two spheres 0.43 of the sum of the radii.
+    path = tmp_path / "soft.yaml"
+    path.write_text(yaml.safe_dump(_soft_hooke_scene(top_speed)))
+    status, text = _run(["scene", str(path), "--json"])
+    res = json.loads(text)
+    z = -math.log(0.7) / math.hypot(math.pi, math.log(0.7))
+    shrink = math.exp(-z / math.sqrt(1 - z * z) * math.atan(math.sqrt(1 - z * z) / z))
+    for c in res["contacts"]:
+        x_max = top_speed * math.sqrt(c["effective_mass"] / 5.0e4) * shrink
+        assert c["max_overlap"][-1] == pytest.approx(x_max, rel=1e-8)
+    pair, wall = res["contacts"]
+    assert pair["overlap_ok"] and pair["overlap_limit"] == 5e-3
+    assert wall["overlap_limit"] == 2.5e-3 and wall["overlap_ok"] == (top_speed == 5.0)
+    assert (status, res["met"]) == ((0, True) if top_speed == 5.0 else (1, False))
+    status, table = _run(["scene", str(path)])
+    assert ("NOT MET: at 80 m/s the largest overlap" in table) == (top_speed == 80.0)

@@ -87,7 +87,8 @@ figures = "".join(f'<h2>{html.escape(title)}</h2>\n<img src="{Path(png).name}" a
                                      ("Deviation from the target against the tolerance band", out.dev_png),
                                      ("Contact time and time step against speed", out.dt_png)))
 verdict = ("every contact has a model within the tolerance" if res["met"]
-           else "some contacts have no model within the tolerance: see the table")
+           else "some contacts are not met (no model within the tolerance, or an overlap that breaks the "
+                "code's geometry): see the table")
 page = f"""<!DOCTYPE html>
 <html lang="en"><head><meta charset="utf-8"><title>Scene {html.escape(res['scene'])}</title></head>
 <body style="font-family: sans-serif; max-width: 70em; margin: auto">
