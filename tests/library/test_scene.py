@@ -269,3 +269,25 @@ def test_largest_overlap_is_the_damped_oscillators_and_breaking_the_geometry_is_
     assert (status, res["met"]) == ((0, True) if top_speed == 5.0 else (1, False))
     status, table = _run(["scene", str(path)])
     assert ("NOT MET: at 80 m/s the largest overlap" in table) == (top_speed == 80.0)
+
+
+def test_near_sticking_small_eps_are_asked_to_an_absolute_accuracy_without_mpmath(monkeypatch):
+    # hertz + velocity damping under the overlap rule (alpha = 3/2 > 2 gamma + 1 = 1) sticks below
+    # Omega ~ 0.74; just above, eps falls to 1e-6 and no double-precision rung reaches a relative
+    # 1e-10: a random scene's fit sent ~3,000 such points to mpmath (20 minutes). Now they are asked
+    # to an absolute EVAL_TOL SMALL_EPS, which the compiled integrator meets.
+    from restitution.core import highprec
+    from restitution.dem.model_ladder import EVAL_TOL, SMALL_EPS, lammps_rungs, scaled_eps
+    rung = next(r for r in lammps_rungs("hertz", "velocity"))
+    om = 0.7400121553440137 * (1.0 + np.array([1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0, 10.0]))
+    truth = [float(highprec.reference_collision(rung.alpha, rung.gamma, float(w), digits=20, end="overlap").eps)
+             for w in om[[0, 2, 5]]]
+
+    def no_mpmath(*args, **kwargs):
+        raise AssertionError("the mpmath reference was asked")
+
+    monkeypatch.setattr(highprec, "reference_collision", no_mpmath)
+    eps, bound = scaled_eps(rung, "overlap", om)
+    assert 5e-7 < eps[0] < 2e-6 and eps[-1] > 0.1
+    assert bound * np.max(eps) <= EVAL_TOL      # absolute: at most EVAL_TOL SMALL_EPS per decade
+    assert np.all(np.abs(eps[[0, 2, 5]] - truth) <= EVAL_TOL * SMALL_EPS)

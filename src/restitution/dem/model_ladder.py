@@ -12,7 +12,8 @@ A fit is least squares in eps (over the target's measured points, or over FIT_PO
 range for a constant target; a constant-e law's least squares is eps = the mean target, solved as a
 root), and
 the check is the largest |eps - target| over the scene's check grid plus the evaluation's own
-error bound (restitution.fast.ladder.epsilon at relative EVAL_TOL).
+error bound (restitution.fast.ladder.epsilon at relative EVAL_TOL; see scaled_eps for eps below
+SMALL_EPS where the bodies can stick).
 """
 
 from __future__ import annotations
@@ -28,11 +29,17 @@ from ..core.collision import StickError
 from ..core.errors import ParameterError
 from ..fast.ladder import epsilon
 
-__all__ = ["ModelRung", "Fit", "lammps_rungs", "liggghts_rungs", "fit_rung", "scaled_eps", "EVAL_TOL"]
+__all__ = ["ModelRung", "Fit", "lammps_rungs", "liggghts_rungs", "fit_rung", "scaled_eps", "EVAL_TOL", "SMALL_EPS"]
 
 #: Relative tolerance of every eps the scene states (far below any scene tolerance, and what the
 #: 1e-9 round trip of a calibration needs).
 EVAL_TOL = 1e-10
+#: Where the bodies can stick, eps below SMALL_EPS is asked to the absolute EVAL_TOL * SMALL_EPS
+#: (see scaled_eps), at most SMALL_EPS_DECADES decades looser than EVAL_TOL; ESTIMATE_TOL is the
+#: relative accuracy of the estimate that sorts the points into decades.
+SMALL_EPS = 0.1
+SMALL_EPS_DECADES = 6
+ESTIMATE_TOL = 1e-3
 #: log Omega is searched in [1e-4, 1e8]: eps there spans what a scene asks for (eps(1e8) > 0.99
 #: for every law here), and the master curves of both end rules and the compiled integrator meet
 #: EVAL_TOL all over it (beyond, the ladder may have to fall back on mpmath: minutes).
@@ -87,12 +94,37 @@ def liggghts_rungs(model: str) -> list[ModelRung]:
 
 
 def scaled_eps(rung: ModelRung, end: str, omega, build: bool | None = None) -> tuple[np.ndarray, float]:
-    """eps at each Omega (0 where the overlap rule's attraction keeps the bodies together) and the
-    relative error bound of the evaluation. ``build``: as epsilon's (True for a caller that will
-    ask for many more points than this call holds, so that the master curves are built once)."""
+    """eps at each Omega (0 where the overlap rule's attraction keeps the bodies together) and a
+    relative error bound r such that r max(eps) bounds every point's absolute error. ``build``: as
+    epsilon's (True for a caller that will ask for many more points than this call holds, so that
+    the master curves are built once).
+
+    Relative EVAL_TOL, except below SMALL_EPS where the bodies can stick (overlap rule, alpha >=
+    2 gamma + 1): there the absolute error EVAL_TOL SMALL_EPS is asked, decade by decade of an
+    estimate. Near the sticking boundary eps falls towards 0 and the double-precision integrators
+    lose relative accuracy (core.conditioning), so a relative 1e-10 sent the ladder to mpmath: a
+    random scene's fit (hertz, velocity damping, e = 0.091) took over 20 minutes for eps that a
+    scene only needs to an absolute 1e-8 or worse."""
     om = np.asarray(omega, float)
+    if not (end == "overlap" and Fraction(rung.alpha) >= 2 * Fraction(rung.gamma) + 1):
+        return _eps_at(rung, end, om, EVAL_TOL, build)
+    est, _ = _eps_at(rung, end, om, ESTIMATE_TOL, build)
+    with np.errstate(divide="ignore"):
+        decade = np.clip(np.floor(np.log10(SMALL_EPS / est)), 0, SMALL_EPS_DECADES).astype(int)
+    eps, worst = np.zeros(om.shape), 0.0
+    for j in np.unique(decade[est > 0]):
+        where = (decade == j) & (est > 0)
+        e, r = _eps_at(rung, end, om[where], EVAL_TOL * 10.0 ** j, build)
+        eps[where] = e
+        worst = max(worst, r * float(np.max(e, initial=0.0)))
+    top = float(np.max(eps, initial=0.0))
+    return eps, (worst / top if top > 0 else 0.0)
+
+
+def _eps_at(rung: ModelRung, end: str, om: np.ndarray, tol: float, build: bool | None) -> tuple[np.ndarray, float]:
+    """eps at each Omega to relative ``tol`` (0 where the bodies stick) and the relative bound."""
     try:
-        r = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=om, tol=EVAL_TOL, end=end, build=build)
+        r = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=om, tol=tol, end=end, build=build)
         return np.asarray(r.eps, float), float(r.error_bound)
     except StickError:
         pass
@@ -104,19 +136,19 @@ def scaled_eps(rung: ModelRung, end: str, omega, build: bool | None = None) -> t
     while lo < hi:
         mid = (lo + hi) // 2
         try:
-            epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=[flat[order[mid]]], tol=EVAL_TOL, end=end, build=build)
+            epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=[flat[order[mid]]], tol=tol, end=end, build=build)
             hi = mid
         except StickError:
             lo = mid + 1
     out, bound = np.zeros(flat.size), 0.0
     if lo < flat.size:
         try:
-            r = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=flat[order[lo:]], tol=EVAL_TOL, end=end,
+            r = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=flat[order[lo:]], tol=tol, end=end,
                         build=build)
         except StickError:   # not one boundary after all: point by point
             for i in order[lo:]:
                 try:
-                    one = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=[flat[i]], tol=EVAL_TOL, end=end,
+                    one = epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=[flat[i]], tol=tol, end=end,
                                   build=build)
                 except StickError:
                     continue

@@ -24,7 +24,7 @@ from ..core.exponents import as_exponents
 from ..fast.integrator import COLUMNS, collide_fast
 from .codes import Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e
 from .contact import Contact
-from .model_ladder import EVAL_TOL, Fit, fit_rung, lammps_rungs, liggghts_rungs, scaled_eps
+from .model_ladder import EVAL_TOL, SMALL_EPS, Fit, fit_rung, lammps_rungs, liggghts_rungs, scaled_eps
 from .scene_file import AtomType, Scene
 from .timestep import recommended_dt
 
@@ -299,7 +299,8 @@ def answer_scene(scene: Scene) -> dict:
     return {"scene": scene.name, "code": scene.code, "options": scene.options, "tolerance": scene.tolerance,
             "speeds": list(scene.speeds), "check_points": scene.check_points,
             "check": f"every rung's |eps - target| at {scene.check_points} log-spaced speeds over the range, "
-                     f"plus the evaluation's bound (relative {EVAL_TOL:g})",
+                     f"plus the evaluation's bound (relative {EVAL_TOL:g}; where the bodies can stick, absolute "
+                     f"{EVAL_TOL * SMALL_EPS:g} for eps below {SMALL_EPS:g})",
             "types": [{"number": t.number, "name": t.name, "species": t.species, "material": t.material,
                        "radius": t.radius, "density": float(scene.materials[t.material]["density"])}
                       for t in scene.types],
