@@ -156,9 +156,11 @@ def test_every_calibrated_contact_reaches_its_target_round_trip(small):
 
 def test_the_time_step_keeps_the_dem_schemes_error_within_the_tolerance(small):
     """Velocity Verlet (LAMMPS' scheme, restitution.dem.timestep) at the scene's dt, at each
-    listed speed of a few contacts: eps within the tolerance of the exact eps."""
+    listed speed of every pair contact: eps within the tolerance of the exact eps (the study runs
+    three speeds; at few steps per contact the error is far from first order, so a speed between
+    them can be worse: 0.0123 at 2.8 m/s for glass-rubber before every listed speed was run)."""
     types = {t["number"]: t for t in small["types"]}
-    for c in small["contacts"][:6]:
+    for c in [c for c in small["contacts"] if c["types"][1] != "wall"]:
         a, b = types[c["types"][0]], types[c["types"][1]]
         contact = lammps_contact(Pair.spheres(a["radius"], b["radius"], a["density"], b["density"]), **c["setting"])
         for g, e in zip(c["speeds"], c["eps"]):
