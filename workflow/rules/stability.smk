@@ -88,15 +88,14 @@ rule fig_stability:
 
 MANUSCRIPT_INPUTS.append("results/stability/uniform_forms.tex")
 
-# The atlas's pairs whose uniform forms no variant has (rule uniform_form builds the variants' with
-# the same library call), dealt round-robin to the shards.
-_VARIANT_PAIRS = {(Fraction(str(v["alpha"])), Fraction(str(v["gamma"]))) for v in VARIANTS.values()}
+# The atlas's pairs, dealt round-robin to the shards. The variants' pairs among them are built again
+# by rule uniform_form (the same library call): taking them from there would make the shards
+# depend on the variants, and adding a variant would rerun the atlas.
 _ATLAS_PAIRS = [list(p) for p in _AtlasSpec.from_config(_atlas_settings(config)).pairs]
-_UNIFORM_PAIRS = [p for p in _ATLAS_PAIRS if (Fraction(p[0]), Fraction(p[1])) not in _VARIANT_PAIRS]
 
 
 rule uniform_shard:
-    """The uniform forms (both end rules, where they exist) of one share of those pairs."""
+    """The uniform forms (both end rules, where they exist) of one share of the atlas's pairs."""
     input:
         src=lib("fast.uniform_build"),
         code=code("uniform_atlas.py"),
@@ -108,7 +107,7 @@ rule uniform_shard:
         shard=r"\d+",
         shards=r"\d+",
     params:
-        pairs=lambda wildcards: _UNIFORM_PAIRS[int(wildcards.shard)::int(wildcards.shards)],
+        pairs=lambda wildcards: _ATLAS_PAIRS[int(wildcards.shard)::int(wildcards.shards)],
     log:
         "logs/stability/uniform-{shard}-of-{shards}.log",
     script:
@@ -120,8 +119,6 @@ rule uniform_atlas:
     input:
         shards=expand("results/stability/uniform/{shard}-of-{shards}.json",
                       shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
-        forms=expand("results/{variant}/closed_form/form.json", variant=list(VARIANTS)),
-        overlap_forms=expand("results/{variant}/closed_form/form_overlap.json", variant=list(VARIANTS)),
         src=lib("core.uniform"),
         code=code("uniform_atlas.py") + ["workflow/scripts/common/latex.py"],
     output:

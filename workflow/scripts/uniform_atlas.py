@@ -5,9 +5,9 @@
 # (restitution.fast.uniform_build); alpha = gamma has an exact closed form and alpha < gamma none.
 # Where gamma < alpha < 2 gamma + 1 the overlap end rule has its own form, built the same way.
 #
-# Two rules run this script. `uniform_shard` builds the forms of its share of the pairs no variant
-# has and writes them as JSON; `uniform_atlas` reads those and the variants' forms (rule
-# uniform_form) and writes one row per pair, as CSV and as the appendix's LaTeX table.
+# Two rules run this script. `uniform_shard` builds the forms of its share of the pairs and writes
+# them as JSON; `uniform_atlas` reads the shards and writes one row per pair, as CSV and as the
+# appendix's LaTeX table.
 
 # %%
 from fractions import Fraction
@@ -33,8 +33,7 @@ def no_form(alpha, gamma, end="force") -> str | None:
 
 def build_shard():
     """One shard: for each of its pairs and both end rules, the form as the library stores it
-    (with available: true) or why there is none (available: false), as rule uniform_form writes a
-    variant's."""
+    (with available: true) or why there is none (available: false)."""
     from restitution.fast.uniform_build import build_uniform
 
     records = []
@@ -50,13 +49,10 @@ def build_shard():
 
 
 def write_table():
-    """Every pair's row, from its records in the shards or the variants' forms (read as written: the
-    overlap rule's skeleton costs a limit-law integration per pair to derive again)."""
-    ends = ["force"] * len(snakemake.input.forms) + ["overlap"] * len(snakemake.input.overlap_forms)
-    variants = [{"end": end, **read_json(p)}
-                for end, p in zip(ends, [*snakemake.input.forms, *snakemake.input.overlap_forms])]
+    """Every pair's row, from its records in the shards (read as written: the overlap rule's
+    skeleton costs a limit-law integration per pair to derive again)."""
     records = {(Fraction(d["alpha"]), Fraction(d["gamma"]), d["end"]): d
-               for d in variants + [d for path in snakemake.input.shards for d in read_json(path)]}
+               for path in snakemake.input.shards for d in read_json(path)}
     rows = [row(alpha, gamma, records) for alpha, gamma in snakemake.params.pairs]
     write_csv(snakemake.output.csv, pd.DataFrame(rows))
     write_text(snakemake.output.tex, latex(rows))
