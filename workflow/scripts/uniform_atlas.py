@@ -98,4 +98,7 @@ def latex(rows) -> str:
 
 
 # %%
-build_shard() if snakemake.rule == "uniform_shard" else write_table()
+if snakemake.rule == "uniform_shard":
+    build_shard()
+else:
+    write_table()

@@ -81,20 +81,23 @@ def recommended_dt(contact: Contact, g: float, tol: float = 1e-3, *, eps: float 
     tol = number_in("tol", tol, 1e-8, 0.5)
     t_c = contact.contact_time(g) if contact_time is None else contact_time
     exact = contact.eps(g) if eps is None else eps
-    errors = [(n, verlet_eps(contact, g, t_c / n) / exact - 1.0) for n in STUDY_STEPS]
+
+    def error(n: float) -> float:
+        return verlet_eps(contact, g, t_c / n) / exact - 1.0
+
+    errors = [(n, error(n)) for n in STUDY_STEPS]
     # first order: |err| <= C / N; the largest N |err| of the study is a C that holds at every N
     # studied (it overestimates where the error falls faster than 1/N, as for tsuji damping). Under
     # the force rule N |err| also wobbles with where the last step falls (hooke with velocity
     # damping: 0.142 at 100 steps, 0.147 at 122.45, 0.141 at 130), so PHASE_STEPS sample that too.
-    phases = [n * abs(verlet_eps(contact, g, t_c / n) / exact - 1.0) for n in PHASE_STEPS]
-    coefficient = max([n * abs(err) for n, err in errors] + phases)
+    coefficient = max([n * abs(err) for n, err in errors] + [n * abs(error(n)) for n in PHASE_STEPS])
     n_needed = max(10.0, coefficient / tol)
     # The step is run, and refined until its own error is within tol, wherever that costs little:
     # below the study's steps the first-order model is an extrapolation (at 10 steps per contact a
     # Hertz-tsuji contact's error in LAMMPS was 0.0106 where 0.01 was asked), and above them the
     # wobble may still peak between the samples (found in LAMMPS on a random scene: 1.2e-3 at the
     # step recommended for 1.16e-3).
-    while n_needed <= VERIFY_STEPS and abs(verlet_eps(contact, g, t_c / n_needed) / exact - 1.0) > tol:
+    while n_needed <= VERIFY_STEPS and abs(error(n_needed)) > tol:
         n_needed *= REFINE
     from ..core.errors import derived_in_range
     dt = derived_in_range("the time step", t_c / n_needed, {"D1": contact.D1, "D2": contact.D2, "g": float(g),

@@ -48,7 +48,6 @@ INTEGRATOR_BOUND_FACTOR = 10.0
 INTEGRATOR_BOUND_FLOOR = 5e-14
 
 
-
 def _integrator_factor_floor(ex, end: str) -> tuple[float, float]:
     return plain_factor_floor(ex, None, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
 
