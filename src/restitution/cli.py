@@ -200,6 +200,11 @@ def _run_deck(args, out) -> None:
     for row in res["unknown_lines"]:     # never guessed: each named, one per line
         where = f"{row['file']} line {row['line']}" if row["file"] else f"line {row['line']}"
         print(f"restitution deck: {where} {row['why']}: {row['text']}", file=sys.stderr)
+    for p in res["pairs"]:               # no eps there: said on stderr too, where a --json reader looks
+        through = [g for g, t in zip(p["speeds"], p["passes_through"]) if t]
+        if through:
+            print(f"restitution deck: types {p['types'][0]} {p['types'][1]} pass through each other from "
+                  f"g = {min(through):.4g} on (the largest overlap reaches R1 + R2): no eps there", file=sys.stderr)
     if args.json:
         _write_json(res, out)
         return
@@ -208,9 +213,11 @@ def _run_deck(args, out) -> None:
     for p in res["pairs"]:
         typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
         out.write(f"types {p['types'][0]} {p['types'][1]}: {p['model']} ({typed}), end rule {p['end']}\n")
-        for g, e, stick in zip(p["speeds"], p["eps"], p["sticks"]):
-            out.write(f"  g {g:<12.6g} " + ("sticks: the attractive phase keeps the spheres together (eps 0)\n"
-                                            if stick else f"eps {e:.10f}\n"))
+        for g, e, stick, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
+            out.write(f"  g {g:<12.6g} " + (
+                f"passes through: the largest overlap reaches R1 + R2 = {p['overlap_limit']:.4g}, the engine "
+                "pushes the spheres through each other (no eps)\n" if through else
+                "sticks: the attractive phase keeps the spheres together (eps 0)\n" if stick else f"eps {e:.10f}\n"))
         if p["exact_line"]:
             out.write(f"  for eps = e exactly: {p['exact_line']}\n")
 
@@ -270,7 +277,9 @@ def _run_lammps(args, out) -> None:
     for key, value in res.items():
         out.write(f"# {key} = {value:.12g}\n" if isinstance(value, float) else f"# {key} = {value}\n")
     for row in rows or ():
-        out.write(f"g {row['g']:<12.6g} eps {row['eps']:.12g}  t_c {row['contact_time']:.6g}\n")
+        out.write(f"g {row['g']:<12.6g} " + ("passes through: the largest overlap reaches R1 + R2 (no eps)\n"
+                                             if row["passes_through"] else
+                                             f"eps {row['eps']:.12g}  t_c {row['contact_time']:.6g}\n"))
 
 
 def _run_calibrate(args, out) -> None:

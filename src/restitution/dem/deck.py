@@ -642,7 +642,9 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
 def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None) -> dict:
     """{"code", "pairs": [...], "unknown_lines": [...], "ignored": [...]}: for every type pair the eps
     the deck really gives at ``speeds`` (relative accuracy 1e-10), beside the e typed (or None)
-    and the line that would give that e exactly; read_file as in read_deck."""
+    and the line that would give that e exactly; read_file as in read_deck. Where the spheres'
+    centres would meet (``passes_through``: the largest overlap reaches ``overlap_limit`` = R1 + R2)
+    eps is None: the engine pushes them through each other."""
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
@@ -655,9 +657,12 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         for j in range(i, deck.ntypes + 1):
             row = (_lammps_pair if deck.code == "LAMMPS" else _liggghts_pair)(deck, i, j, speeds)
             contact = row.pop("contact")
-            eps = [_eps_or_stick(contact, g) for g in speeds]
-            row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps],
-                       **{k: v for k, v in contact.as_dict().items() if k != "end"})
+            pair = _pair(deck, i, j)
+            limit = pair.R1 + pair.R2
+            through = [contact.reaches(g, limit) for g in speeds]
+            eps = [(None, False) if t else _eps_or_stick(contact, g) for g, t in zip(speeds, through)]
+            row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
+                       overlap_limit=limit, **{k: v for k, v in contact.as_dict().items() if k != "end"})
             pairs.append(row)
     return {"code": deck.code, "pairs": pairs, "unknown_lines": [{"file": f, "line": n, "text": t, "why": why}
                                                         for f, n, t, why in deck.unknown],

@@ -11,7 +11,7 @@
 
 from __future__ import annotations
 
-from ..core.errors import one_of
+from ..core.errors import ParameterError, one_of
 from .calibrate import calibrate
 from .codes import (Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e,
                     thornton_betan, tsuji_a, yade_mindlin_contact, yade_mindlin_en, yade_viscel_contact,
@@ -23,11 +23,17 @@ __all__ = ["lammps_audit", "lammps_design", "tsuji_audit", "liggghts_design", "y
 
 
 def lammps_audit(pair: Pair, speeds, **setting) -> dict:
-    """eps(v) of a LAMMPS setting (keywords of codes.lammps_contact) at the given impact speeds."""
+    """eps(v) of a LAMMPS setting (keywords of codes.lammps_contact) at the given impact speeds; at a
+    speed where the spheres' centres would meet (Contact.reaches R1 + R2) no eps and no t_c:
+    ``passes_through`` instead."""
     contact = lammps_contact(pair, **setting)
-    return {"pair_coeff": lammps_pair_coeff(**setting), **contact.as_dict(),
-            "rows": [{"g": float(g), "eps": contact.eps(g), "contact_time": contact.contact_time(g)}
-                     for g in speeds]}
+    rows = []
+    for g in speeds:
+        through = contact.reaches(g, pair.R1 + pair.R2)
+        rows.append({"g": float(g), "eps": None if through else contact.eps(g),
+                     "contact_time": None if through else contact.contact_time(g), "passes_through": through})
+    return {"pair_coeff": lammps_pair_coeff(**setting), **contact.as_dict(), "overlap_limit": pair.R1 + pair.R2,
+            "rows": rows}
 
 
 def lammps_design(pair: Pair, *, eps: float, g: float, normal: str, damping: str, limit_damping: bool,
@@ -37,6 +43,10 @@ def lammps_design(pair: Pair, *, eps: float, g: float, normal: str, damping: str
     base = lammps_contact(pair, damping=damping, eta_n0=0.5 if damping == "tsuji" else 1.0,
                           limit_damping=limit_damping, **stiffness)
     cal = calibrate(base.alpha, base.gamma, D1=base.D1, eps=eps, g=g, end=base.end)
+    if cal.contact.reaches(g, pair.R1 + pair.R2):
+        raise ParameterError("g", g, f"at this speed the contact that gives eps = {eps:g} overlaps past R1 + R2 = "
+                                     f"{pair.R1 + pair.R2:.4g}: LAMMPS pushes the spheres through each other; a "
+                                     "stiffer contact or a lower speed")
     eta = lammps_eta_n0(pair, damping, cal.contact)
     setting = {**stiffness, "damping": damping, "eta_n0": eta, "limit_damping": limit_damping}
     return {"pair_coeff": lammps_pair_coeff(**setting), "eta_n0": eta, "eps": cal.eps[0], "g": g,
