@@ -15,6 +15,9 @@ $(STAMP): pyproject.toml constraints.txt
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[test]'
+	@# the integrator's kernels compiled once into numba's cache beside their source (src/), as an
+	@# installed environment has them: else the first pipeline job or test pays 6-8 s for it
+	$(BIN)/python -c "import numpy; from restitution.fast.integrator import collide_fast; collide_fast(2, 3, 2, numpy.geomspace(0.1, 10.0, 16))"
 	@touch $@
 
 venv: $(STAMP)

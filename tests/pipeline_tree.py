@@ -13,7 +13,6 @@ the first use (`source_snapshot`).
 from __future__ import annotations
 
 import atexit
-import contextlib
 import fcntl
 import hashlib
 import os
@@ -53,24 +52,12 @@ def source_snapshot() -> Path:
 
 def fresh_tree(dest: Path) -> Path:
     """A clean copy of the project (from the session's snapshot), with the shared .venv linked in,
-    and the compiled kernels this checkout has so far (see kernel_cache)."""
+    and the compiled kernels this checkout has so far (rebuild.kernel_cache: a test's compile
+    since the snapshot included)."""
     tree = Path(shutil.copytree(source_snapshot(), dest, symlinks=True))
     (tree / ".venv").symlink_to(ROOT / ".venv", target_is_directory=True)
-    kernel_cache(tree)
+    rebuild.kernel_cache(tree)
     return tree
-
-
-def kernel_cache(tree: Path) -> None:
-    """numba's compiled kernels of this checkout (src/**/__pycache__/*.nbi, *.nbc) copied into
-    ``tree``: a kernel cache is found beside its source, so every copied tree compiled them again
-    (6 s a process; two or three jobs of a cold build at once). numba uses an index only if it was
-    made from a source with the same content (numba 0.68 keys it by a hash of the file), else it
-    compiles: a kernel edited since the snapshot is never taken from here."""
-    for f in (ROOT / "src").rglob("__pycache__/*.nb[ic]"):
-        dest = tree / f.relative_to(ROOT)
-        dest.parent.mkdir(exist_ok=True)
-        with contextlib.suppress(OSError):   # a file being written by a test's compile: skip it
-            shutil.copy2(f, dest)
 
 
 def copy_built(src: Path, dest: Path) -> Path:

@@ -20,6 +20,7 @@ pinned in the manifest).
 from __future__ import annotations
 
 import argparse
+import contextlib
 import hashlib
 import json
 import math
@@ -80,9 +81,24 @@ def sha256(path: Path) -> str:
 
 # ------------------------------------------------------------------------------------------ builds
 def copy_tree(dest: Path) -> Path:
-    """A copy of the project without outputs or caches, as a fresh clone would have it."""
+    """A copy of the project without outputs or caches, as a fresh clone would have it once its
+    environment is made (`make` compiles the integrator's kernels then: kernel_cache)."""
     shutil.copytree(ROOT, dest, ignore=IGNORE, symlinks=True)
+    kernel_cache(dest)
     return dest
+
+
+def kernel_cache(tree: Path) -> None:
+    """numba's compiled kernels of this checkout (src/**/__pycache__/*.nbi, *.nbc) copied into
+    ``tree``: a kernel cache is found beside its source, so every copied tree compiled them again
+    (6 s a process; two or three jobs of a cold build at once). numba uses an index only if it was
+    made from a source with the same content (numba 0.68 keys it by a hash of the file), else it
+    compiles: a kernel edited since is never taken from here."""
+    for f in (ROOT / "src").rglob("__pycache__/*.nb[ic]"):
+        dest = tree / f.relative_to(ROOT)
+        dest.parent.mkdir(exist_ok=True)
+        with contextlib.suppress(OSError):   # a file being written by a compile elsewhere: skip it
+            shutil.copy2(f, dest)
 
 
 def build_commit() -> str:
