@@ -637,68 +637,181 @@ def deck_cases(draw):
     return body + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()} for t, m in types.items()}
 
 
-def check_deck_case(text: str, speeds: list, types: dict) -> list[dict]:
-    """Every type pair of the deck in the real LAMMPS engine, head-on at both speeds, with the deck's
-    own variable and pair_coeff lines: where the audit gives eps, LAMMPS extrapolated to dt = 0 must
-    agree to DECK_EXTRAPOLATED; where it says the spheres stick, LAMMPS must keep them together (or
-    let them go with eps below DECK_STICK_EPS)."""
+@st.composite
+def liggghts_deck_cases(draw):
+    """A random LIGGGHTS deck: 1-3 atom types (radius 0.05-50 mm, density 500-20,000, E 1e5-1e11,
+    nu 0-0.55), a symmetric coefficientRestitution matrix (0.02-0.97), hertz or hooke (with a
+    characteristicVelocity), limitForce on or off, maybe soft_particles / hard_particles yes, maybe
+    E through a variable; two speeds a decade apart (some draws break LIGGGHTS' own limits on E, nu
+    and e: the audit must refuse exactly those). Returns (deck text, speeds, types)."""
+    log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
+    n = draw(st.integers(1, 3))
+    model = draw(st.sampled_from(["hertz", "hooke"]))
+    g = log(-2.0, 0.5)
+    types = {t: {"radius": log(-4.3, -1.3), "density": log(2.7, 4.3)} for t in range(1, n + 1)}
+    E = [f"{log(5.0, 11.0) if draw(st.integers(0, 7)) == 0 else log(6.8, 9.0):.6g}" for _ in types]
+    nu = [f"{draw(st.floats(0.0, 0.55) if draw(st.integers(0, 9)) == 0 else st.floats(0.0, 0.45)):.4g}"
+          for _ in types]
+    e = {(i, j): f"{draw(st.floats(0.02, 0.97) if draw(st.integers(0, 9)) == 0 else st.floats(0.06, 0.97)):.4g}"
+         for i in types for j in types if i <= j}
+    matrix = " ".join(e[min(i, j), max(i, j)] for i in types for j in types)
+    lines = ["atom_style granular", "units si", "region box block -1 1 -1 1 -1 1 units box", f"create_box {n} box"]
+    lines += [f"{what}_particles yes" for what in ("soft", "hard") if draw(st.booleans())]
+    if draw(st.booleans()):
+        lines.append(f"variable E1 equal {E[0]}")
+        E[0] = "${E1}"
+    lines += [f"fix m1 all property/global youngsModulus peratomtype {' '.join(E)}",
+              f"fix m2 all property/global poissonsRatio peratomtype {' '.join(nu)}",
+              f"fix m3 all property/global coefficientRestitution peratomtypepair {n} {matrix}",
+              f"fix m4 all property/global coefficientFriction peratomtypepair {n} " + " ".join(["0.5"] * n * n)]
+    if model == "hooke":
+        lines.append(f"fix m5 all property/global characteristicVelocity scalar {log(-1.0, 1.0):.4g}")
+    limit = draw(st.sampled_from(["on", "off"]))
+    lines += [f"pair_style gran model {model} tangential {draw(st.sampled_from(['history', 'no_history']))} "
+              f"limitForce {limit}", "pair_coeff * *"]
+    lines += [f"fix pts{t} all particletemplate/sphere {15485863 + t} atom_type {t} density constant "
+              f"{m['density']:.8g} radius constant {m['radius']:.8g}" for t, m in types.items()]
+    return "\n".join(lines) + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()}
+                                                       for t, m in types.items()}
+
+
+def _lammps_runner(engine_lines: str, ntypes: int):
+    """runs -> (relative velocity after / -g, or the exception) for runs (pair, types, g, dt, t_run),
+    each in its own LAMMPS instance with the deck's own variable and pair_coeff lines."""
+    from restitution.dem.lammps import lammps_eps
+
+    def run(runs):
+        out = []
+        for pair, types, g, dt, t_run in runs:
+            try:
+                out.append(lammps_eps(pair, engine_lines, g, dt, t_run, types, ntypes))
+            except Exception as exc:  # noqa: BLE001
+                out.append(exc)
+        return out
+    return run
+
+
+def _liggghts_runner(engine_lines: str):
+    """As _lammps_runner, all runs of one pair in one LIGGGHTS process (its start costs a second)."""
+    from restitution.dem.liggghts import liggghts_states
+
+    def run(runs):
+        if not runs:
+            return []
+        pair = runs[0][0]
+        try:
+            states = liggghts_states(pair, [(engine_lines, g, dt, t_run, types) for _, types, g, dt, t_run in runs])
+        except Exception as exc:  # noqa: BLE001
+            return [exc] * len(runs)
+        return [-rel / g if gap > pair.R1 + pair.R2 else ArithmeticError("the spheres had not separated")
+                for (_, _, g, _, _), (rel, gap) in zip(runs, states)]
+    return run
+
+
+def _check_liggghts_deck(text, speeds, types):
+    return check_deck_case(text, speeds, types, "liggghts")
+
+
+def _engine_error(exc) -> str:
+    """The engine's ERROR line of a failed run, else the exception's first line."""
+    lines = str(exc).splitlines()
+    return next((ln.strip() for ln in lines if "ERROR" in ln), lines[0] if lines else repr(exc))
+
+
+def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps") -> list[dict]:
+    """Every type pair of the deck in the real engine (LAMMPS or LIGGGHTS), head-on at both speeds,
+    with the deck's own contact lines: where the audit gives eps, the engine extrapolated to dt = 0
+    must agree to DECK_EXTRAPOLATED; where it says the spheres stick, the engine must keep them
+    together (or let them go with eps below DECK_STICK_EPS)."""
     from restitution.core.errors import ParameterError
     from restitution.dem.codes import Pair
     from restitution.dem.contact import Contact
     from restitution.dem.deck import audit_deck
     from restitution.dem.extrapolate import richardson
-    from restitution.dem.lammps import lammps_eps
 
     case = {"deck": text, "speeds": speeds}
+    if code == "lammps":
+        engine = _lammps_runner("\n".join(ln for ln in text.splitlines()
+                                          if ln.startswith(("variable", "pair_coeff"))), len(types))
+    else:   # the box, the materials and the pair style; the particle templates only gave radii
+        body = text.splitlines()
+        start = next(k for k, ln in enumerate(body) if ln.startswith("create_box"))
+        engine = _liggghts_runner("\n".join([body[start]] + [ln for ln in body[start + 1:]
+                                                             if not ln.startswith("fix pts")]
+                                            + [ln for ln in body[:start] if ln.startswith("variable")]))
     try:
         res = audit_deck(text, speeds)
     except Exception as exc:  # noqa: BLE001
         ok = isinstance(exc, ParameterError) and _one_line(exc)
-        return [{"method": "deck", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0, "case": case,
-                 "detail": "" if ok else "".join(traceback.format_exception_only(exc)).strip()}]
-    engine = "\n".join(ln for ln in text.splitlines() if ln.startswith(("variable", "pair_coeff")))
+        detail = "" if ok else "".join(traceback.format_exception_only(exc)).strip()
+        if ok and "stops" in str(exc):
+            # the engine's own limits: it must refuse the deck too, with a sphere of each type present
+            # (LIGGGHTS checks a type's material only when it has atoms)
+            ran = engine([(Pair.spheres(types[1]["radius"], types[t]["radius"], types[1]["density"],
+                                        types[t]["density"]), (1, t), 1.0, 1e-9, 1e-8) for t in types])
+            if not any(isinstance(r, RuntimeError) for r in ran):
+                ok, detail = False, f"the audit says {exc}, but {code} runs the deck"
+        return [{"method": f"deck ({code})", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0,
+                 "case": case, "detail": detail}]
     records = []
     for p in res["pairs"]:
         i, j = p["types"]
-        rec = {"method": "deck", "rule": p["end"], "case": case, "pair": f"{i}-{j}", "ratio": 0.0}
+        rec = {"method": f"deck ({code})", "rule": p["end"], "case": case, "pair": f"{i}-{j}", "ratio": 0.0}
         pair = Pair.spheres(types[i]["radius"], types[j]["radius"], types[i]["density"], types[j]["density"])
-        worst, detail = 0.0, ""
+        a, c = float(Fraction(p["alpha"])), float(Fraction(p["gamma"]))
+        runs, checks = [], []
         for g, listed, sticks, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
             # not run: no eps listed (the centres would meet), or the spheres would take too many
             # steps to part (the force rule leaves them overlapping, moving apart at eps g)
             if through or (not sticks and listed < DECK_MIN_EPS[p["end"]]):
                 continue
-            a, c = float(Fraction(p["alpha"])), float(Fraction(p["gamma"]))
             # the undamped contact: its largest overlap bounds the damped one's, and its duration;
             # the step also resolves the damping's own time 1 / (D2 delta^gamma) (overdamped contacts)
             reach = (g * g * (a + 1.0) / (2.0 * p["D1"])) ** (1.0 / (a + 1.0))
             t_el = 2.0 * reach / g * math.sqrt(math.pi) * math.gamma(1.0 + 1.0 / (a + 1.0)) / \
                 math.gamma(0.5 + 1.0 / (a + 1.0))
             fastest = min(t_el, 1.0 / (p["D2"] * reach ** c))
+            if sticks:
+                checks.append((g, listed, True, len(runs)))
+                runs.append((pair, (i, j), g, fastest / DECK_STEPS, DECK_STICK_TIMES * t_el))
+                continue
             try:
-                if sticks:
-                    try:
-                        eps = lammps_eps(pair, engine, g, fastest / DECK_STEPS, DECK_STICK_TIMES * t_el, (i, j),
-                                         len(types))
-                    except ArithmeticError:   # still together: what the audit said
-                        continue
-                    ratio = eps / DECK_STICK_EPS
-                    what = f"the audit says the spheres stick, LAMMPS lets them go with eps {eps:.4g}"
-                else:
-                    t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
-                    t_run = 1.2 * t_c + (2.0 * reach / (listed * g) if p["end"] == "force" else 0.0)
-                    # a whole number of steps per contact: where the damping force does not vanish at
-                    # zero overlap (gamma = 0) the last step's share of it, O(dt) and set by where the
-                    # contact's end falls in that step, would otherwise make eps(dt) jagged
-                    dt = t_c / (DECK_STEPS * math.ceil(t_c / fastest))
-                    eps = richardson(*(lammps_eps(pair, engine, g, dt / m, t_run, (i, j), len(types))
-                                       for m in (1, 2, 4)), c)
-                    ratio = abs(eps - listed) / (DECK_EXTRAPOLATED * listed)
-                    what = f"the audit says eps {listed:.8g}, LAMMPS {eps:.8g} at dt = 0"
+                t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
             except Exception as exc:  # noqa: BLE001
-                ratio, what = math.inf, f"LAMMPS: {str(exc).splitlines()[0]}"
+                checks.append((g, listed, False, exc))
+                continue
+            t_run = 1.2 * t_c + (2.0 * reach / (listed * g) if p["end"] == "force" else 0.0)
+            # a whole number of steps per contact: where the damping force does not vanish at zero
+            # overlap (gamma = 0) the last step's share of it, O(dt) and set by where the contact's
+            # end falls in that step, would otherwise make eps(dt) jagged
+            dt = t_c / (DECK_STEPS * math.ceil(t_c / fastest))
+            checks.append((g, listed, False, len(runs)))
+            runs += [(pair, (i, j), g, dt / m, t_run) for m in (1, 2, 4)]
+        got = engine(runs)
+        worst, detail = 0.0, ""
+        for g, listed, sticks, at in checks:
+            if isinstance(at, Exception):
+                ratio, what = math.inf, f"t_c: {at}"
+            elif sticks:
+                eps = got[at]
+                if isinstance(eps, ArithmeticError):     # still together: what the audit said
+                    continue
+                if isinstance(eps, Exception):
+                    ratio, what = math.inf, f"{code}: {_engine_error(eps)}"
+                else:
+                    ratio = eps / DECK_STICK_EPS
+                    what = f"the audit says the spheres stick, {code} lets them go with eps {eps:.4g}"
+            else:
+                three = got[at: at + 3]
+                bad = next((e for e in three if isinstance(e, Exception)), None)
+                if bad is not None:
+                    ratio, what = math.inf, f"{code}: {_engine_error(bad)}"
+                else:
+                    eps = richardson(*three, c)
+                    ratio = abs(eps - listed) / (DECK_EXTRAPOLATED * listed)
+                    what = f"the audit says eps {listed:.8g}, {code} {eps:.8g} at dt = 0"
             if ratio > worst:
-                worst, detail = ratio, f"pair {i}-{j} ({p['model']}, {p['end']} rule) at {g:.4g} m/s: {what}"
+                worst, detail = ratio, f"pair {i}-{j} ({p['model']}, {p['end']} rule) at {g:.4g}: {what}"
         status = "FAIL" if worst > 1.0 else "refused" if all(p["passes_through"]) else "answered"
         records.append({**rec, "status": status, "ratio": worst, "detail": detail if worst > 1.0 else ""})
     return records
@@ -738,6 +851,8 @@ def _worker(job):
         return kind, _collect(scene_cases(), check_scene_case, n, seed, False)
     if kind == "decks":
         return kind, _collect(deck_cases(), check_deck_case, n, seed, True)
+    if kind == "liggghts decks":
+        return kind, _collect(liggghts_deck_cases(), _check_liggghts_deck, n, seed, True)
     return kind, _collect(config_cases(), check_config_case, n, seed, True)
 
 
@@ -768,7 +883,8 @@ def main(argv=None) -> int:
     p.add_argument("--numbers", type=int, default=1100, help="drawn; a few coincide (1,100 gave over 1,000 distinct)")
     p.add_argument("--inputs", type=int, default=20000, help="argument vectors and config mutations together")
     p.add_argument("--scenes", type=int, default=40, help="random LAMMPS scenes (skipped without LAMMPS)")
-    p.add_argument("--decks", type=int, default=40, help="random LAMMPS decks (skipped without LAMMPS)")
+    p.add_argument("--decks", type=int, default=40, help="random LAMMPS decks, and as many LIGGGHTS decks "
+                                                         "(each skipped without its engine)")
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     p.add_argument("--seed", type=int, default=28)
     p.add_argument("--out", default="results/fuzz")
@@ -788,14 +904,19 @@ def main(argv=None) -> int:
         jobs += [("decks", -(-args.decks // chunks), args.seed + 400 + i) for i in range(chunks)]
     else:
         print("fuzz: LAMMPS not installed (pip install -e '.[dem]'): no scenes, no decks", file=sys.stderr)
+    from restitution.dem import liggghts
+    if liggghts.available():
+        jobs += [("liggghts decks", -(-args.decks // chunks), args.seed + 500 + i) for i in range(chunks)]
+    else:
+        print("fuzz: LIGGGHTS not installed (as root: apt-get install liggghts): no LIGGGHTS decks", file=sys.stderr)
     t0 = time.time()
     records: list[dict] = []
-    counts = {"numbers": 0, "argv": 0, "config": 0, "scenes": 0, "decks": 0}
+    counts = {"numbers": 0, "argv": 0, "config": 0, "scenes": 0, "decks": 0, "liggghts decks": 0}
     with get_context("spawn").Pool(args.jobs, maxtasksperchild=1) as pool:
         for kind, recs in pool.imap_unordered(_worker, jobs):
             records += recs
             counts[kind] += len({json.dumps(r.get("case", r.get("argv", r.get("config"))), sort_keys=True, default=str)
-                                 for r in recs}) if kind in ("numbers", "scenes", "decks") else len(recs)
+                                 for r in recs}) if kind in ("numbers", "scenes", "decks", "liggghts decks") else len(recs)
             print(f"fuzz: {kind} chunk done ({len(recs)} records, {time.time() - t0:.0f} s)", file=sys.stderr,
                   flush=True)
     seconds = time.time() - t0
@@ -808,7 +929,7 @@ def main(argv=None) -> int:
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
     summary = (f"number cases {counts['numbers']}, argument vectors {counts['argv']}, config mutations "
-               f"{counts['config']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, failures {len(failures)}, wall time "
+               f"{counts['config']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LIGGGHTS decks {counts['liggghts decks']}, failures {len(failures)}, wall time "
                f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")
     print("\n".join(lines))

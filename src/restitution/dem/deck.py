@@ -88,6 +88,9 @@ class Deck:
     ignored: list = field(default_factory=list)   # what the audit passed over on purpose
     atom_style: str = ""
     missing: dict = field(default_factory=dict)   # type -> why a data file gives it no single radius/density
+    units: str = "lj"                             # the engines' default unit style
+    soft: bool = False                            # LIGGGHTS soft_particles yes / hard_particles yes:
+    hard: bool = False                            # its limits on Young's modulus lifted
 
 
 _ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
@@ -276,6 +279,10 @@ def _read(deck: Deck, variables: dict, text: str, source, read_file, depth: int)
             _set(deck, words, where, line, loc)
         elif cmd == "fix" and len(words) >= 4:
             _fix(deck, words, where, line, loc)
+        elif cmd == "units" and len(words) >= 2:
+            deck.units = words[1]
+        elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
+            setattr(deck, cmd.split("_")[0], words[1] == "yes")
         elif cmd in _IRRELEVANT:
             continue
         else:
@@ -606,6 +613,7 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     if any(matrix[(a - 1) * m + b - 1] != matrix[(b - 1) * m + a - 1] for a in range(1, m + 1)
            for b in range(a + 1, m + 1)):
         raise DeckError(where, " ".join(vals), "the coefficientRestitution matrix is not symmetric")
+    _liggghts_limits(deck, E, nu, matrix, where)
     e = matrix[(i - 1) * m + (j - 1)]
     extra = {}
     if deck.model == "hooke":
@@ -629,6 +637,28 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     return {"types": [i, j], "model": f"LIGGGHTS {deck.model}, limitForce {'on' if deck.limit_force else 'off'}",
             "typed_e": e, "end": contact.end, "contact": contact, "exact_line": exact, "line": loc[1],
             "file": loc[0]}
+
+
+def _liggghts_limits(deck: Deck, E: list, nu: list, e: list, where_e: str) -> None:
+    """LIGGGHTS' own checks on the materials, which stop its run before the first step (3.8.0,
+    global_properties.cpp; each confirmed with the engine): 5e6 <= E <= 1e9 in SI units, 5e7 <= E <=
+    1e10 in CGS (soft_particles yes lifts the lower limit, hard_particles yes the upper); 0 <= nu
+    <= 0.5 and 0.05 < coefficientRestitution <= 1 always. A deck LIGGGHTS refuses gives no eps."""
+    where_E = _where(deck.props["youngsModulus"][0])
+    low = {"si": 5e6, "cgs": 5e7}.get(deck.units)
+    if low is not None and not deck.soft and min(E) < low:
+        raise DeckError(where_E, f"youngsModulus {min(E):g}", f"LIGGGHTS stops: it requires youngsModulus >= {low:g} "
+                                                                f"in {deck.units} units unless soft_particles yes")
+    high = {"si": 1e9, "cgs": 1e10}.get(deck.units)
+    if high is not None and not deck.hard and max(E) > high:
+        raise DeckError(where_E, f"youngsModulus {max(E):g}", f"LIGGGHTS stops: it requires youngsModulus <= {high:g} "
+                                                                f"in {deck.units} units unless hard_particles yes")
+    if not all(0.0 <= v <= 0.5 for v in nu):
+        raise DeckError(_where(deck.props["poissonsRatio"][0]), "poissonsRatio",
+                        "LIGGGHTS stops: it requires 0 <= poissonsRatio <= 0.5")
+    if not all(0.05 < v <= 1.0 for v in e):
+        raise DeckError(where_e, "coefficientRestitution", "LIGGGHTS stops: it requires 0.05 < coefficientRestitution "
+                                                           "<= 1")
 
 
 def _eps_or_stick(contact, g: float) -> tuple[float, bool]:

@@ -56,6 +56,11 @@ def _run_block(pair: Pair, contact_lines: str, g: float, dt: float, steps: int, 
     v2 = -g * pair.m1 / (pair.m1 + pair.m2)
     second = 2 if contact_lines.startswith("create_box 2") else 1   # the second sphere's atom type
     first, second = types if types is not None else (1, second)
+    # LIGGGHTS stops unless the atom types start from 1: a pair of other types gets a resting
+    # sphere of type 1 off the collision's axis, out of reach of both (3 gap away, radius R1 / 2)
+    bystander = "" if 1 in (first, second) else f"""
+create_atoms 1 single 0 {3 * gap!r} 0 units box
+set atom 3 diameter {pair.R1!r} density {rho[0]!r}"""
     # touching at zero overlap: no partial first step biases the result
     return f"""
 atom_style granular
@@ -72,7 +77,7 @@ timestep {dt!r}
 create_atoms {first} single {-pair.R1!r} 0 0 units box
 create_atoms {second} single {pair.R2!r} 0 0 units box
 set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
-set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
+set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}{bystander}
 set atom 1 vx {v1!r}
 set atom 2 vx {v2!r}
 fix integr all nve/sphere
@@ -101,11 +106,13 @@ def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tup
     contact_lines (starting with create_box N) define more than two."""
     blocks = [_run_block(pair, case[0], case[1], case[2], int(math.ceil(case[3] / case[2])), i, *case[4:])
               for i, case in enumerate(cases)]
+    # errors="replace": a failing LIGGGHTS can print stray bytes; its message must still reach the user
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "in.collide"
         path.write_text("".join(blocks))
         proc = subprocess.run(["liggghts", "-in", str(path), "-echo", "none", "-log", "none"], cwd=tmp,
-                              capture_output=True, text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+                              capture_output=True, text=True, errors="replace", timeout=timeout,
+                              stdin=subprocess.DEVNULL)
     found = {}
     for ln in proc.stdout.splitlines():
         if ln.startswith(_MARK):
