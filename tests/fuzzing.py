@@ -571,6 +571,9 @@ DECK_STICK_EPS = 1e-3
 #: Smallest eps run in LAMMPS, per end rule: below it the spheres take too many steps to part (under the
 #: overlap rule a creeping return; under the force rule they leave overlapping, at eps g).
 DECK_MIN_EPS = {"overlap": 1e-3, "force": 0.02}
+#: Nor a run of more steps than this (a strongly overdamped pair: the step follows the damping's
+#: fast time, the creep its slow one; or a force-rule pair leaving slowly while still overlapping).
+DECK_MAX_STEPS = 400_000
 
 
 def _damping_for(normal: str, damping: str, radius: float, density: float, k: float, nu: float, omega: float,
@@ -718,11 +721,22 @@ def _engine_error(exc) -> str:
     return next((ln.strip() for ln in lines if "ERROR" in ln), lines[0] if lines else repr(exc))
 
 
-def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps") -> list[dict]:
+def _with_exact_line(text: str, line: str, code: str) -> str:
+    """The deck with a pair's exact line in force: a later pair_coeff (LAMMPS), or the
+    coefficientRestitution fix replaced (LIGGGHTS)."""
+    if code == "lammps":
+        return text + line + "\n"
+    return "\n".join(line if "coefficientRestitution" in ln else ln for ln in text.splitlines()) + "\n"
+
+
+def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", exact: tuple | None = None) -> list[dict]:
     """Every type pair of the deck in the real engine (LAMMPS or LIGGGHTS), head-on at both speeds,
     with the deck's own contact lines: where the audit gives eps, the engine extrapolated to dt = 0
     must agree to DECK_EXTRAPOLATED; where it says the spheres stick, the engine must keep them
-    together (or let them go with eps below DECK_STICK_EPS)."""
+    together (or let them go with eps below DECK_STICK_EPS). Where the audit writes a pair's exact
+    line (the e that gives eps = the e typed, at the middle speed), the deck with that line is
+    checked the same way for that pair alone (``exact``: the pair and the eps it must give): the
+    audit must now say eps = e, and the engine agree."""
     from restitution.core.errors import ParameterError
     from restitution.dem.codes import Pair
     from restitution.dem.contact import Contact
@@ -756,7 +770,10 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps") 
     records = []
     for p in res["pairs"]:
         i, j = p["types"]
-        rec = {"method": f"deck ({code})", "rule": p["end"], "case": case, "pair": f"{i}-{j}", "ratio": 0.0}
+        if exact is not None and (i, j) != exact[:2]:
+            continue
+        rec = {"method": f"deck ({code})" + (": exact line" if exact else ""), "rule": p["end"], "case": case,
+               "pair": f"{i}-{j}", "ratio": 0.0}
         pair = Pair.spheres(types[i]["radius"], types[j]["radius"], types[i]["density"], types[j]["density"])
         a, c = float(Fraction(p["alpha"])), float(Fraction(p["gamma"]))
         runs, checks = [], []
@@ -772,6 +789,8 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps") 
                 math.gamma(0.5 + 1.0 / (a + 1.0))
             fastest = min(t_el, 1.0 / (p["D2"] * reach ** c))
             if sticks:
+                if DECK_STICK_TIMES * t_el / (fastest / DECK_STEPS) > DECK_MAX_STEPS:
+                    continue
                 checks.append((g, listed, True, len(runs)))
                 runs.append((pair, (i, j), g, fastest / DECK_STEPS, DECK_STICK_TIMES * t_el))
                 continue
@@ -785,6 +804,8 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps") 
             # overlap (gamma = 0) the last step's share of it, O(dt) and set by where the contact's
             # end falls in that step, would otherwise make eps(dt) jagged
             dt = t_c / (DECK_STEPS * math.ceil(t_c / fastest))
+            if 4.0 * t_run / dt > DECK_MAX_STEPS:
+                continue
             checks.append((g, listed, False, len(runs)))
             runs += [(pair, (i, j), g, dt / m, t_run) for m in (1, 2, 4)]
         got = engine(runs)
@@ -812,8 +833,16 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps") 
                     what = f"the audit says eps {listed:.8g}, {code} {eps:.8g} at dt = 0"
             if ratio > worst:
                 worst, detail = ratio, f"pair {i}-{j} ({p['model']}, {p['end']} rule) at {g:.4g}: {what}"
-        status = "FAIL" if worst > 1.0 else "refused" if all(p["passes_through"]) else "answered"
+        if exact is not None and p["eps"][0] is not None and abs(p["eps"][0] - exact[2]) > 1e-8:
+            worst, detail = math.inf, (f"pair {i}-{j}: with its exact line the audit says eps {p['eps'][0]:.10g}, "
+                                       f"not the e typed {exact[2]:.10g}")
+        # "refused": nothing of this pair could be run (no eps, or too many steps)
+        status = "FAIL" if worst > 1.0 else "answered" if checks or exact is not None else "refused"
         records.append({**rec, "status": status, "ratio": worst, "detail": detail if worst > 1.0 else ""})
+        if exact is None and p["exact_line"]:
+            middle = p["speeds"][len(p["speeds"]) // 2]
+            records += check_deck_case(_with_exact_line(text, p["exact_line"], code), [middle], types, code,
+                                       (i, j, p["typed_e"]))
     return records
 
 
