@@ -2,8 +2,9 @@
 fix property/global matrices of every atom type, two spheres colliding head-on, at the scene's time
 step within its tolerance of the predicted eps, and extrapolated to dt = 0 within 1e-6.
 
-Only contacts with atom type 1: LIGGGHTS refuses a system whose atom types in use do not start at 1
-("Atom types must start from 1 for granular simulations"), and each run holds just the two spheres.
+Every pair contact: LIGGGHTS refuses a system whose atom types in use do not start at 1 ("Atom types
+must start from 1 for granular simulations"), so a run of two later types holds a resting type-1
+sphere out of reach (restitution.dem.liggghts); before it, only the contacts of type 1 were run.
 """
 
 import pytest
@@ -28,7 +29,7 @@ def test_liggghts_gives_the_predicted_eps(limit_force):
     types = {t["number"]: t for t in res["types"]}
     checked = 0
     for c in res["contacts"]:
-        if c["b"].startswith("wall:") or c["types"][0] != 1:
+        if c["b"].startswith("wall:"):
             continue
         a, b = types[c["types"][0]], types[c["types"][1]]
         pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
@@ -40,4 +41,4 @@ def test_liggghts_gives_the_predicted_eps(limit_force):
             assert abs(eps[0] - predicted) <= res["tolerance"], (c["a"], c["b"], g, eps[0], predicted)
             assert abs(richardson(*eps[1:], c["gamma"]) / predicted - 1) <= 1e-6, (c["a"], c["b"], g)
             checked += 1
-    assert checked == 6
+    assert checked == 2 * sum(not c["b"].startswith("wall:") for c in res["contacts"]) > 6
