@@ -12,10 +12,10 @@ Kinds of case:
 * **inputs**: random argument vectors for every subcommand (numbers of every class, strings,
   repeats, missing values) and random mutations of config.yaml. Never a traceback; a value that is
   out of range by construction is never answered with exit status 0; a refusal is one line.
-* **scenes** and **decks** (with LAMMPS installed): a random scene's chosen contacts, and every type
-  pair of a random LAMMPS input deck as `restitution deck` reads it, run head-on in the real engine
-  with the scene's lines or the deck's own; extrapolated to dt = 0 the engine must give the eps
-  listed, and keep together the spheres said to stick.
+* **scenes** and **decks** (with LAMMPS, LIGGGHTS installed): a random scene's chosen contacts, and
+  every type pair of a random input deck as `restitution deck` reads it, run head-on in the real
+  engine with the scene's lines or the deck's own; extrapolated to dt = 0 the engine must give the
+  eps listed, and keep together the spheres said to stick.
 
 ``tests/library/test_fuzz.py`` runs a small derandomized profile in ``make test``; ``make fuzz`` runs
 ``python tests/fuzzing.py``: the long profile in parallel over the cores, a table of cases,
@@ -559,6 +559,75 @@ def check_scene_case(scene) -> list[dict]:
     return records
 
 
+@st.composite
+def liggghts_scene_cases(draw):
+    """A random LIGGGHTS scene: hertz, limitForce on or off, two materials (E 1e6-1e11, nu 0-0.45,
+    density), two species (0.1 to 100 mm), maybe a wall, a speed range inside 1e-3..1e3 m/s,
+    constant or tabulated targets, a tolerance."""
+    log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
+    scene = draw(scene_cases())
+    scene.update(code="liggghts", options={"model": "hertz", "limitForce": draw(st.booleans())})
+    scene["materials"] = {name: {"density": m["density"], "E": log(6.0, 11.0), "nu": draw(st.floats(0.0, 0.45))}
+                          for name, m in scene["materials"].items()}
+    return scene
+
+
+def check_liggghts_scene_case(scene) -> list[dict]:
+    """Every met pair contact of a LIGGGHTS scene in the real engine (walls are not run: the runner
+    holds two spheres), head-on at the lowest and highest listed speed with the scene's own lines:
+    extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, at the listed dt within the
+    scene's tolerance."""
+    from restitution.core.errors import ParameterError
+    from restitution.dem.codes import Pair
+    from restitution.dem.extrapolate import richardson
+    from restitution.dem.liggghts import liggghts_eps_runs
+    from restitution.dem.scene import answer_scene
+    from restitution.dem.scene_file import scene_from_dict
+
+    try:
+        res = answer_scene(scene_from_dict(copy.deepcopy(scene)))
+    except Exception as exc:  # noqa: BLE001
+        ok = isinstance(exc, ParameterError) and _one_line(exc)
+        return [{"method": "liggghts scene", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0,
+                 "case": scene, "detail": "" if ok else "".join(traceback.format_exception_only(exc)).strip()}]
+    types = {t["number"]: t for t in res["types"]}
+    n = len(types) + len({c["types"][1] for c in res["contacts"] if c["b"].startswith("wall:")})
+    lines = "\n".join([f"create_box {n} box"] + [ln for ln in res["input_lines"] if not ln.startswith("#")])
+    records = []
+    for c in res["contacts"]:
+        rec = {"method": f"liggghts scene: {c['chosen'] or 'none'}", "rule": c["end"], "ratio": 0.0, "case": scene,
+               "contact": f"{c['a']}-{c['b']}"}
+        if c["chosen"] is None or not c["overlap_ok"] or c["b"].startswith("wall:"):
+            records.append({**rec, "status": "refused"})
+            continue
+        a, b = types[c["types"][0]], types[c["types"][1]]
+        pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
+        ends = (0, len(c["speeds"]) - 1)
+        runs = []
+        for i in ends:
+            g, t_c = c["speeds"][i], c["contact_time"][i]
+            t_run = 3.0 * t_c + 2.0 * c["max_overlap"][i] / (c["eps"][i] * g)
+            runs += [(lines, g, c["dt"], t_run, tuple(c["types"]))]
+            runs += [(lines, g, t_c / SCENE_STEPS / m, t_run, tuple(c["types"])) for m in (1, 2, 4)]
+        worst, detail = 0.0, ""
+        try:
+            eps = liggghts_eps_runs(pair, runs)
+        except Exception as exc:  # noqa: BLE001
+            worst, detail = math.inf, f"LIGGGHTS: {_engine_error(exc)}"
+            eps = []
+        for k, i in enumerate(ends if eps else ()):
+            g, listed = c["speeds"][i], c["eps"][i]
+            at_dt, eps0 = eps[4 * k], richardson(*eps[4 * k + 1: 4 * k + 4], c["gamma"])
+            ratio = max(abs(eps0 / listed - 1.0) / SCENE_EXTRAPOLATED, abs(at_dt - listed) / res["tolerance"])
+            if ratio > worst:
+                worst = ratio
+                detail = (f"{c['a']}-{c['b']} at {g:.4g} m/s: listed {listed:.8g}, LIGGGHTS {eps0:.8g} at dt = 0, "
+                          f"{at_dt:.8g} at the listed dt (tolerance {res['tolerance']:g})")
+        records.append({**rec, "status": "FAIL" if worst > 1.0 else "answered", "ratio": worst,
+                        "detail": detail if worst > 1.0 else ""})
+    return records
+
+
 # ------------------------------------------------------------------------------------ decks
 #: What `restitution deck` says a LAMMPS deck gives, against the deck's own pair_coeff lines run in
 #: LAMMPS: extrapolated to dt = 0 from t_c/2000, /4000, /8000, to this (relative; absolute below it).
@@ -880,6 +949,8 @@ def _worker(job):
         return kind, _collect(scene_cases(), check_scene_case, n, seed, False)
     if kind == "decks":
         return kind, _collect(deck_cases(), check_deck_case, n, seed, True)
+    if kind == "liggghts scenes":
+        return kind, _collect(liggghts_scene_cases(), check_liggghts_scene_case, n, seed, False)
     if kind == "liggghts decks":
         return kind, _collect(liggghts_deck_cases(), _check_liggghts_deck, n, seed, True)
     return kind, _collect(config_cases(), check_config_case, n, seed, True)
@@ -911,7 +982,8 @@ def main(argv=None) -> int:
     p = argparse.ArgumentParser(description="the long fuzz profile of issue 28")
     p.add_argument("--numbers", type=int, default=1100, help="drawn; a few coincide (1,100 gave over 1,000 distinct)")
     p.add_argument("--inputs", type=int, default=20000, help="argument vectors and config mutations together")
-    p.add_argument("--scenes", type=int, default=40, help="random LAMMPS scenes (skipped without LAMMPS)")
+    p.add_argument("--scenes", type=int, default=40, help="random LAMMPS scenes, and as many LIGGGHTS scenes "
+                                                          "(each skipped without its engine)")
     p.add_argument("--decks", type=int, default=40, help="random LAMMPS decks, and as many LIGGGHTS decks "
                                                          "(each skipped without its engine)")
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
@@ -936,16 +1008,18 @@ def main(argv=None) -> int:
     from restitution.dem import liggghts
     if liggghts.available():
         jobs += [("liggghts decks", -(-args.decks // chunks), args.seed + 500 + i) for i in range(chunks)]
+        jobs += [("liggghts scenes", -(-args.scenes // chunks), args.seed + 600 + i) for i in range(chunks)]
     else:
-        print("fuzz: LIGGGHTS not installed (as root: apt-get install liggghts): no LIGGGHTS decks", file=sys.stderr)
+        print("fuzz: LIGGGHTS not installed (as root: apt-get install liggghts): no LIGGGHTS decks or scenes",
+              file=sys.stderr)
     t0 = time.time()
     records: list[dict] = []
-    counts = {"numbers": 0, "argv": 0, "config": 0, "scenes": 0, "decks": 0, "liggghts decks": 0}
+    counts = {"numbers": 0, "argv": 0, "config": 0, "scenes": 0, "decks": 0, "liggghts decks": 0, "liggghts scenes": 0}
     with get_context("spawn").Pool(args.jobs, maxtasksperchild=1) as pool:
         for kind, recs in pool.imap_unordered(_worker, jobs):
             records += recs
             counts[kind] += len({json.dumps(r.get("case", r.get("argv", r.get("config"))), sort_keys=True, default=str)
-                                 for r in recs}) if kind in ("numbers", "scenes", "decks", "liggghts decks") else len(recs)
+                                 for r in recs}) if kind != "argv" and kind != "config" else len(recs)
             print(f"fuzz: {kind} chunk done ({len(recs)} records, {time.time() - t0:.0f} s)", file=sys.stderr,
                   flush=True)
     seconds = time.time() - t0
@@ -958,7 +1032,7 @@ def main(argv=None) -> int:
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
     summary = (f"number cases {counts['numbers']}, argument vectors {counts['argv']}, config mutations "
-               f"{counts['config']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LIGGGHTS decks {counts['liggghts decks']}, failures {len(failures)}, wall time "
+               f"{counts['config']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
                f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")
     print("\n".join(lines))

@@ -306,3 +306,21 @@ def test_a_small_scenes_lines_do_not_depend_on_what_the_cache_holds(tmp_path, mo
     Ladder("3/2", "1/2", stream=io.StringIO()).overlap_curve()     # viscoelastic's, under the overlap rule
     assert list((tmp_path / "cache").iterdir())
     assert answer_scene(scene)["input_lines"] == before
+
+
+def test_a_liggghts_scene_writes_only_what_liggghts_runs():
+    """Found running random LIGGGHTS scenes: LIGGGHTS stops before the first step on a
+    coefficientRestitution of 0.05 or less and on youngsModulus below 5e6 in SI units unless told
+    soft_particles yes. A target of 0.2 with limitForce on needs e = 0.034: not met, and said why;
+    a soft glass gets the line that lets LIGGGHTS take it."""
+    sc = _liggghts_scene(True)
+    sc["targets"][0]["e"] = 0.2
+    res = answer_scene(scene_from_dict(sc))
+    gg = res["contacts"][0]
+    assert (gg["a"], gg["b"], gg["chosen"]) == ("g#1", "g#1", None) and not res["met"]
+    assert "LIGGGHTS cannot express it" in gg["rungs"][0]["reason"] and "0.05 < e" in gg["rungs"][0]["reason"]
+    sc = _liggghts_scene(False)
+    sc["materials"]["glass"]["E"] = 3e6
+    lines = answer_scene(scene_from_dict(sc))["input_lines"]
+    assert "soft_particles yes" in lines and "hard_particles yes" in lines
+    assert "soft_particles yes" not in answer_scene(scene_from_dict(_liggghts_scene(False)))["input_lines"]

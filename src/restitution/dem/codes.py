@@ -67,7 +67,8 @@ from .contact import Contact
 
 __all__ = ["Pair", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
            "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
-           "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "LIGGGHTS_MODELS"]
+           "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "LIGGGHTS_MODELS", "LIGGGHTS_E",
+           "LIGGGHTS_NU", "LIGGGHTS_MODULUS"]
 
 NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
 DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji")
@@ -205,6 +206,13 @@ def lammps_pair_coeff(*, normal: str, damping: str, eta_n0: float, limit_damping
 
 
 LIGGGHTS_MODELS = ("hertz", "hooke")
+#: LIGGGHTS' own checks on the materials, which stop its run before the first step (3.8.0,
+#: global_properties.cpp; each confirmed with the engine): 0.05 < coefficientRestitution <= 1,
+#: 0 <= poissonsRatio <= 0.5, and Young's modulus within these bounds per unit style
+#: (soft_particles yes lifts the lower one, hard_particles yes the upper).
+LIGGGHTS_E = (0.05, 1.0)
+LIGGGHTS_NU = (0.0, 0.5)
+LIGGGHTS_MODULUS = {"si": (5e6, 1e9), "cgs": (5e7, 1e10)}
 
 
 def _e_star(E: float, nu: float) -> float:

@@ -30,7 +30,8 @@ from dataclasses import dataclass, field
 from ..core.collision import StickError
 from ..core.errors import ParameterError
 from .calibrate import calibrate
-from .codes import Pair, lammps_contact, lammps_eta_n0, liggghts_contact, liggghts_e
+from .codes import (LIGGGHTS_E, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact, lammps_eta_n0,
+                    liggghts_contact, liggghts_e)
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
 
@@ -629,7 +630,7 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     except ParameterError:
         e_new = None         # no coefficientRestitution gives that eps under this end rule
     exact = None
-    if e_new is not None:
+    if e_new is not None and LIGGGHTS_E[0] < e_new <= LIGGGHTS_E[1]:   # else LIGGGHTS would stop on it
         new = list(matrix)
         new[(i - 1) * m + (j - 1)] = new[(j - 1) * m + (i - 1)] = e_new
         head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution peratomtypepair {m}"
@@ -640,25 +641,22 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
 
 
 def _liggghts_limits(deck: Deck, E: list, nu: list, e: list, where_e: str) -> None:
-    """LIGGGHTS' own checks on the materials, which stop its run before the first step (3.8.0,
-    global_properties.cpp; each confirmed with the engine): 5e6 <= E <= 1e9 in SI units, 5e7 <= E <=
-    1e10 in CGS (soft_particles yes lifts the lower limit, hard_particles yes the upper); 0 <= nu
-    <= 0.5 and 0.05 < coefficientRestitution <= 1 always. A deck LIGGGHTS refuses gives no eps."""
+    """LIGGGHTS' own checks on the materials (codes.LIGGGHTS_E, LIGGGHTS_NU, LIGGGHTS_MODULUS),
+    which stop its run before the first step: a deck LIGGGHTS refuses gives no eps."""
     where_E = _where(deck.props["youngsModulus"][0])
-    low = {"si": 5e6, "cgs": 5e7}.get(deck.units)
+    low, high = LIGGGHTS_MODULUS.get(deck.units, (None, None))
     if low is not None and not deck.soft and min(E) < low:
         raise DeckError(where_E, f"youngsModulus {min(E):g}", f"LIGGGHTS stops: it requires youngsModulus >= {low:g} "
                                                                 f"in {deck.units} units unless soft_particles yes")
-    high = {"si": 1e9, "cgs": 1e10}.get(deck.units)
     if high is not None and not deck.hard and max(E) > high:
         raise DeckError(where_E, f"youngsModulus {max(E):g}", f"LIGGGHTS stops: it requires youngsModulus <= {high:g} "
                                                                 f"in {deck.units} units unless hard_particles yes")
-    if not all(0.0 <= v <= 0.5 for v in nu):
+    if not all(LIGGGHTS_NU[0] <= v <= LIGGGHTS_NU[1] for v in nu):
         raise DeckError(_where(deck.props["poissonsRatio"][0]), "poissonsRatio",
-                        "LIGGGHTS stops: it requires 0 <= poissonsRatio <= 0.5")
-    if not all(0.05 < v <= 1.0 for v in e):
-        raise DeckError(where_e, "coefficientRestitution", "LIGGGHTS stops: it requires 0.05 < coefficientRestitution "
-                                                           "<= 1")
+                        f"LIGGGHTS stops: it requires {LIGGGHTS_NU[0]:g} <= poissonsRatio <= {LIGGGHTS_NU[1]:g}")
+    if not all(LIGGGHTS_E[0] < v <= LIGGGHTS_E[1] for v in e):
+        raise DeckError(where_e, "coefficientRestitution", f"LIGGGHTS stops: it requires {LIGGGHTS_E[0]:g} < "
+                                                           f"coefficientRestitution <= {LIGGGHTS_E[1]:g}")
 
 
 def _eps_or_stick(contact, g: float) -> tuple[float, bool]:

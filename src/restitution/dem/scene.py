@@ -22,7 +22,8 @@ import numpy as np
 from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
 from ..fast.integrator import COLUMNS, collide_fast
-from .codes import Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e
+from .codes import (LIGGGHTS_E, LIGGGHTS_MODULUS, Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff,
+                    liggghts_contact, liggghts_e)
 from .contact import Contact
 from .model_ladder import EVAL_TOL, SMALL_EPS, Fit, fit_rung, lammps_rungs, liggghts_rungs, scaled_eps
 from .scene_file import AtomType, Scene
@@ -108,7 +109,12 @@ def _setting(scene: Scene, c: _Contact, fit: Fit) -> dict:
         mats = _liggghts_materials(scene, c)
         limit = scene.options["limitForce"]
         base = liggghts_contact(c.pair, e=0.5, limit_force=limit, model=rung.normal, **mats)
-        return {"model": rung.normal, **mats, "e": float(f"{liggghts_e(_d2(base, fit)):.12g}"), "limit_force": limit}
+        e = float(f"{liggghts_e(_d2(base, fit)):.12g}")
+        if not LIGGGHTS_E[0] < e <= LIGGGHTS_E[1]:
+            # LIGGGHTS stops on such a matrix before the first step (found running these lines)
+            raise ParameterError("coefficientRestitution", e, f"LIGGGHTS requires {LIGGGHTS_E[0]} < e <= "
+                                                              f"{LIGGGHTS_E[1]}")
+        return {"model": rung.normal, **mats, "e": e, "limit_force": limit}
     stiff = _stiffness(scene, *c.materials)
     base = lammps_contact(c.pair, damping=rung.damping, eta_n0=0.5 if rung.damping == "tsuji" else 1.0,
                           limit_damping=scene.options["limit_damping"], **stiff)
@@ -158,9 +164,11 @@ def _liggghts_lines(scene: Scene, rows: list) -> list[str]:
     left = [f"{i}-{j}" for i in range(1, n + 1) for j in range(i, n + 1) if (i, j) not in answered]
     prop = lambda key: " ".join(f"{float(scene.materials[m][key]):.12g}" for m in mats)   # noqa: E731
     note = [f"# coefficientRestitution left at 0.5 (walls only, or no model within the tolerance): {', '.join(left)}"]
-    # LIGGGHTS refuses youngsModulus > 1e9 in SI units unless told (found running these lines)
-    hard = ["hard_particles yes"] if max(float(scene.materials[m]["E"]) for m in mats) > 1e9 else []
-    return (note if left else []) + hard + [f"fix m1 all property/global youngsModulus peratomtype {prop('E')}",
+    # LIGGGHTS refuses youngsModulus outside [5e6, 1e9] in SI units unless told (found running these lines)
+    moduli = [float(scene.materials[m]["E"]) for m in mats]
+    told = (["soft_particles yes"] if min(moduli) < LIGGGHTS_MODULUS["si"][0] else []) + \
+        (["hard_particles yes"] if max(moduli) > LIGGGHTS_MODULUS["si"][1] else [])
+    return (note if left else []) + told + [f"fix m1 all property/global youngsModulus peratomtype {prop('E')}",
             f"fix m2 all property/global poissonsRatio peratomtype {prop('nu')}",
             f"fix m3 all property/global coefficientRestitution peratomtypepair {n} "
             + " ".join(f"{x:.12g}" for r in e for x in r),
@@ -183,7 +191,8 @@ def _climb(scene: Scene, rungs, end: str, target, grid, probe: _Contact, build) 
                 _setting(scene, probe, fit)
             except ParameterError as err:
                 fit = Fit(rung, fit.log_c, fit.max_deviation, fit.at_speed, False, fit.error_bound, fit.grid,
-                          fit.eps, reason=f"LAMMPS cannot express it: {err}")
+                          fit.eps, reason=f"{'LIGGGHTS' if scene.code == 'liggghts' else 'LAMMPS'} cannot express "
+                                          f"it: {err}")
         fits.append(fit)
         if fit.accepted:
             return fits, fit
