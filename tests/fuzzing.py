@@ -497,25 +497,42 @@ def scene_cases(draw):
             "walls": ["m2"] if draw(st.booleans()) else [], "targets": targets}
 
 
+def _answer(scene, method: str):
+    """(the scene's answer, None), or (None, [its record]) where the library refuses it: in one line
+    (refused) or otherwise (a failure)."""
+    from restitution.core.errors import ParameterError
+    from restitution.dem.scene import answer_scene
+    from restitution.dem.scene_file import scene_from_dict
+
+    try:
+        return answer_scene(scene_from_dict(copy.deepcopy(scene))), None
+    except Exception as exc:  # noqa: BLE001
+        ok = isinstance(exc, ParameterError) and _one_line(exc)
+        return None, [{"method": method, "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0,
+                       "case": scene, "detail": "" if ok else "".join(traceback.format_exception_only(exc)).strip()}]
+
+
+def _against(c, g, listed, eps0, at_dt, tolerance, engine) -> tuple[float, str]:
+    """A scene contact's listed eps against the engine's: (the larger share of its allowance used,
+    extrapolated or at the listed dt; what was compared)."""
+    ratio = max(abs(eps0 / listed - 1.0) / SCENE_EXTRAPOLATED, abs(at_dt - listed) / tolerance)
+    return ratio, (f"{c['a']}-{c['b']} at {g:.4g} m/s: listed {listed:.8g}, {engine} {eps0:.8g} at dt = 0, "
+                   f"{at_dt:.8g} at the listed dt (tolerance {tolerance:g})")
+
+
 def check_scene_case(scene) -> list[dict]:
     """Every met contact of the scene in the real LAMMPS engine, head-on at its lowest and highest
     listed speed (a pair of spheres, or a sphere onto the wall), the scene's whole deck loaded:
     extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, and at the listed dt within
     the scene's tolerance. A contact whose overlap breaks the geometry is reported not met and is
     not run; a pair without a model gets a placeholder line so that LAMMPS takes the deck."""
-    from restitution.core.errors import ParameterError
     from restitution.dem.codes import Pair
     from restitution.dem.extrapolate import richardson
     from restitution.dem.lammps import lammps_eps, lammps_wall_eps
-    from restitution.dem.scene import answer_scene
-    from restitution.dem.scene_file import scene_from_dict
 
-    try:
-        res = answer_scene(scene_from_dict(copy.deepcopy(scene)))
-    except Exception as exc:  # noqa: BLE001
-        ok = isinstance(exc, ParameterError) and _one_line(exc)
-        return [{"method": "scene", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0,
-                 "case": scene, "detail": "" if ok else "".join(traceback.format_exception_only(exc)).strip()}]
+    res, refusal = _answer(scene, "scene")
+    if refusal:
+        return refusal
     types = {t["number"]: t for t in res["types"]}
     have = {tuple(int(x) for x in ln.split()[1:3]) for ln in res["input_lines"] if ln.startswith("pair_coeff")}
     fill = [f"pair_coeff {i} {j} hooke 1 0 tangential linear_nohistory 0 0"
@@ -549,11 +566,9 @@ def check_scene_case(scene) -> list[dict]:
             except Exception as exc:  # noqa: BLE001
                 worst, detail = math.inf, f"LAMMPS at {g:.4g} m/s: {str(exc).splitlines()[0]}"
                 break
-            ratio = max(abs(eps0 / listed - 1.0) / SCENE_EXTRAPOLATED, abs(at_dt - listed) / res["tolerance"])
+            ratio, text = _against(c, g, listed, eps0, at_dt, res["tolerance"], "LAMMPS")
             if ratio > worst:
-                worst = ratio
-                detail = (f"{c['a']}-{c['b']} at {g:.4g} m/s: listed {listed:.8g}, LAMMPS {eps0:.8g} at dt = 0, "
-                          f"{at_dt:.8g} at the listed dt (tolerance {res['tolerance']:g})")
+                worst, detail = ratio, text
         records.append({**rec, "status": "FAIL" if worst > 1.0 else "answered", "ratio": worst,
                         "detail": detail if worst > 1.0 else ""})
     return records
@@ -577,19 +592,13 @@ def check_liggghts_scene_case(scene) -> list[dict]:
     holds two spheres), head-on at the lowest and highest listed speed with the scene's own lines:
     extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, at the listed dt within the
     scene's tolerance."""
-    from restitution.core.errors import ParameterError
     from restitution.dem.codes import Pair
     from restitution.dem.extrapolate import richardson
     from restitution.dem.liggghts import liggghts_eps_runs
-    from restitution.dem.scene import answer_scene
-    from restitution.dem.scene_file import scene_from_dict
 
-    try:
-        res = answer_scene(scene_from_dict(copy.deepcopy(scene)))
-    except Exception as exc:  # noqa: BLE001
-        ok = isinstance(exc, ParameterError) and _one_line(exc)
-        return [{"method": "liggghts scene", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0,
-                 "case": scene, "detail": "" if ok else "".join(traceback.format_exception_only(exc)).strip()}]
+    res, refusal = _answer(scene, "liggghts scene")
+    if refusal:
+        return refusal
     types = {t["number"]: t for t in res["types"]}
     n = len(types) + len({c["types"][1] for c in res["contacts"] if c["b"].startswith("wall:")})
     lines = "\n".join([f"create_box {n} box"] + [ln for ln in res["input_lines"] if not ln.startswith("#")])
@@ -618,11 +627,9 @@ def check_liggghts_scene_case(scene) -> list[dict]:
         for k, i in enumerate(ends if eps else ()):
             g, listed = c["speeds"][i], c["eps"][i]
             at_dt, eps0 = eps[4 * k], richardson(*eps[4 * k + 1: 4 * k + 4], c["gamma"])
-            ratio = max(abs(eps0 / listed - 1.0) / SCENE_EXTRAPOLATED, abs(at_dt - listed) / res["tolerance"])
+            ratio, text = _against(c, g, listed, eps0, at_dt, res["tolerance"], "LIGGGHTS")
             if ratio > worst:
-                worst = ratio
-                detail = (f"{c['a']}-{c['b']} at {g:.4g} m/s: listed {listed:.8g}, LIGGGHTS {eps0:.8g} at dt = 0, "
-                          f"{at_dt:.8g} at the listed dt (tolerance {res['tolerance']:g})")
+                worst, detail = ratio, text
         records.append({**rec, "status": "FAIL" if worst > 1.0 else "answered", "ratio": worst,
                         "detail": detail if worst > 1.0 else ""})
     return records

@@ -18,6 +18,7 @@ from restitution.dem.codes import Pair, lammps_contact, liggghts_contact
 from restitution.dem.contact import Contact
 from restitution.dem.model_ladder import fit_rung, lammps_rungs
 from restitution.dem.scene import answer_scene
+from restitution.core.errors import ParameterError
 from restitution.dem.scene_file import scene_from_dict
 from restitution.dem.timestep import verlet_eps
 from mutation import set_at  # noqa: E402
@@ -324,3 +325,6 @@ def test_a_liggghts_scene_writes_only_what_liggghts_runs():
     lines = answer_scene(scene_from_dict(sc))["input_lines"]
     assert "soft_particles yes" in lines and "hard_particles yes" in lines
     assert "soft_particles yes" not in answer_scene(scene_from_dict(_liggghts_scene(False)))["input_lines"]
+    sc["materials"]["glass"]["nu"] = -0.1        # physical, but LIGGGHTS stops below 0
+    with pytest.raises(ParameterError, match=r"materials.glass.nu.*LIGGGHTS requires 0 <= nu"):
+        scene_from_dict(sc)

@@ -17,6 +17,7 @@ import numpy as np
 
 from ..core.errors import ParameterError, number_in
 from ..core.schema_lines import allowed, field, show
+from .codes import LIGGGHTS_NU
 
 __all__ = ["Scene", "AtomType", "Target", "read_scene", "scene_from_dict", "SCHEMA_PATH", "TOL_RANGE", "CODE_OPTIONS"]
 
@@ -204,6 +205,9 @@ def _beyond_schema(d: dict) -> Scene:
                 _fail(f"materials.{name}.{key}", None, f"{reader} reads {' and '.join(needs)}: give it")
         for key in set(mat) - set(needs) - {"density"}:
             _fail(f"materials.{name}.{key}", mat[key], f"is not read by {reader} (it reads {' and '.join(needs)})")
+        if code == "liggghts" and mat["nu"] < LIGGGHTS_NU[0]:
+            # the schema's range is the physical one; LIGGGHTS stops below its own (checked with it)
+            _fail(f"materials.{name}.nu", mat["nu"], f"LIGGGHTS requires {LIGGGHTS_NU[0]:g} <= nu <= {LIGGGHTS_NU[1]:g}")
     types, seen = [], set()
     for i, sp in enumerate(d["species"]):
         where = f"species[{sp['name']}]"
