@@ -512,6 +512,12 @@ def _answer(scene, method: str):
                        "case": scene, "detail": "" if ok else "".join(traceback.format_exception_only(exc)).strip()}]
 
 
+def _verdict(rec: dict, worst: float, detail: str) -> dict:
+    """A run contact's record: failed where it used more than its allowance."""
+    return {**rec, "status": "FAIL" if worst > 1.0 else "answered", "ratio": worst,
+            "detail": detail if worst > 1.0 else ""}
+
+
 def _against(c, g, listed, eps0, at_dt, tolerance, engine) -> tuple[float, str]:
     """A scene contact's listed eps against the engine's: (the larger share of its allowance used,
     extrapolated or at the listed dt; what was compared)."""
@@ -569,8 +575,7 @@ def check_scene_case(scene) -> list[dict]:
             ratio, text = _against(c, g, listed, eps0, at_dt, res["tolerance"], "LAMMPS")
             if ratio > worst:
                 worst, detail = ratio, text
-        records.append({**rec, "status": "FAIL" if worst > 1.0 else "answered", "ratio": worst,
-                        "detail": detail if worst > 1.0 else ""})
+        records.append(_verdict(rec, worst, detail))
     return records
 
 
@@ -630,8 +635,7 @@ def check_liggghts_scene_case(scene) -> list[dict]:
             ratio, text = _against(c, g, listed, eps0, at_dt, res["tolerance"], "LIGGGHTS")
             if ratio > worst:
                 worst, detail = ratio, text
-        records.append({**rec, "status": "FAIL" if worst > 1.0 else "answered", "ratio": worst,
-                        "detail": detail if worst > 1.0 else ""})
+        records.append(_verdict(rec, worst, detail))
     return records
 
 
@@ -945,22 +949,19 @@ def _collect(strategy, check, n: int, seed: int, unpack: bool) -> list[dict]:
     return records
 
 
+#: kind of case -> (its strategy, its check, whether a case is the check's argument tuple)
+KINDS = {"numbers": (number_cases, check_number_case, False), "argv": (argv_cases, check_argv_case, True),
+         "config": (config_cases, check_config_case, True), "scenes": (scene_cases, check_scene_case, False),
+         "decks": (deck_cases, check_deck_case, True),
+         "liggghts scenes": (liggghts_scene_cases, check_liggghts_scene_case, False),
+         "liggghts decks": (liggghts_deck_cases, _check_liggghts_deck, True)}
+
+
 def _worker(job):
     kind, n, seed = job
     os.environ.setdefault("PYTHONHASHSEED", "0")
-    if kind == "numbers":
-        return kind, _collect(number_cases(), check_number_case, n, seed, False)
-    if kind == "argv":
-        return kind, _collect(argv_cases(), check_argv_case, n, seed, True)
-    if kind == "scenes":
-        return kind, _collect(scene_cases(), check_scene_case, n, seed, False)
-    if kind == "decks":
-        return kind, _collect(deck_cases(), check_deck_case, n, seed, True)
-    if kind == "liggghts scenes":
-        return kind, _collect(liggghts_scene_cases(), check_liggghts_scene_case, n, seed, False)
-    if kind == "liggghts decks":
-        return kind, _collect(liggghts_deck_cases(), _check_liggghts_deck, n, seed, True)
-    return kind, _collect(config_cases(), check_config_case, n, seed, True)
+    strategy, check, unpack = KINDS[kind]
+    return kind, _collect(strategy(), check, n, seed, unpack)
 
 
 def table(records: list[dict], seconds: float) -> list[dict]:
@@ -1021,7 +1022,7 @@ def main(argv=None) -> int:
               file=sys.stderr)
     t0 = time.time()
     records: list[dict] = []
-    counts = {"numbers": 0, "argv": 0, "config": 0, "scenes": 0, "decks": 0, "liggghts decks": 0, "liggghts scenes": 0}
+    counts = dict.fromkeys(KINDS, 0)
     with get_context("spawn").Pool(args.jobs, maxtasksperchild=1) as pool:
         for kind, recs in pool.imap_unordered(_worker, jobs):
             records += recs
