@@ -68,7 +68,7 @@ from .contact import Contact
 __all__ = ["Pair", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
            "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
            "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "LIGGGHTS_MODELS", "LIGGGHTS_E",
-           "LIGGGHTS_NU", "LIGGGHTS_MODULUS"]
+           "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "liggghts_accepts_e"]
 
 NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
 DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji")
@@ -213,6 +213,11 @@ LIGGGHTS_MODELS = ("hertz", "hooke")
 LIGGGHTS_E = (0.05, 1.0)
 LIGGGHTS_NU = (0.0, 0.5)
 LIGGGHTS_MODULUS = {"si": (5e6, 1e9), "cgs": (5e7, 1e10)}
+
+
+def liggghts_accepts_e(e: float) -> bool:
+    """Whether LIGGGHTS runs a coefficientRestitution of ``e`` (LIGGGHTS_E: above 0.05, at most 1)."""
+    return LIGGGHTS_E[0] < e <= LIGGGHTS_E[1]
 
 
 def _e_star(E: float, nu: float) -> float:

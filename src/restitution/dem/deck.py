@@ -31,7 +31,7 @@ from ..core.collision import StickError
 from ..core.errors import ParameterError
 from .calibrate import calibrate
 from .codes import (LIGGGHTS_E, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact, lammps_eta_n0,
-                    liggghts_contact, liggghts_e)
+                    liggghts_accepts_e, liggghts_contact, liggghts_e)
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
 
@@ -582,7 +582,7 @@ def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
             limit = ["limit_damping"] if c.limit and "limit_damping" not in c.others else []
             exact = " ".join(["pair_coeff", str(i), str(j), c.normal, *numbers, *c.others, *limit])
     model = f"LAMMPS {c.normal}, damping {c.damping}" + (f" ({mixed_from})" if mixed_from else "")
-    return {"types": [i, j], "model": model, "typed_e": typed, "end": contact.end, "contact": contact,
+    return {"types": [i, j], "model": model, "typed_e": typed, "end": contact.end, "contact": contact, "pair": pair,
             "exact_line": exact, "line": loc[1], "file": loc[0]}
 
 
@@ -630,13 +630,13 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     except ParameterError:
         e_new = None         # no coefficientRestitution gives that eps under this end rule
     exact = None
-    if e_new is not None and LIGGGHTS_E[0] < e_new <= LIGGGHTS_E[1]:   # else LIGGGHTS would stop on it
+    if e_new is not None and liggghts_accepts_e(e_new):   # else LIGGGHTS would stop on it
         new = list(matrix)
         new[(i - 1) * m + (j - 1)] = new[(j - 1) * m + (i - 1)] = e_new
         head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution peratomtypepair {m}"
         exact = head + " " + " ".join(f"{x:.10g}" for x in new)
     return {"types": [i, j], "model": f"LIGGGHTS {deck.model}, limitForce {'on' if deck.limit_force else 'off'}",
-            "typed_e": e, "end": contact.end, "contact": contact, "exact_line": exact, "line": loc[1],
+            "typed_e": e, "end": contact.end, "contact": contact, "pair": pair, "exact_line": exact, "line": loc[1],
             "file": loc[0]}
 
 
@@ -654,7 +654,7 @@ def _liggghts_limits(deck: Deck, E: list, nu: list, e: list, where_e: str) -> No
     if not all(LIGGGHTS_NU[0] <= v <= LIGGGHTS_NU[1] for v in nu):
         raise DeckError(_where(deck.props["poissonsRatio"][0]), "poissonsRatio",
                         f"LIGGGHTS stops: it requires {LIGGGHTS_NU[0]:g} <= poissonsRatio <= {LIGGGHTS_NU[1]:g}")
-    if not all(LIGGGHTS_E[0] < v <= LIGGGHTS_E[1] for v in e):
+    if not all(liggghts_accepts_e(v) for v in e):
         raise DeckError(where_e, "coefficientRestitution", f"LIGGGHTS stops: it requires {LIGGGHTS_E[0]:g} < "
                                                            f"coefficientRestitution <= {LIGGGHTS_E[1]:g}")
 
@@ -684,8 +684,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     for i in range(1, deck.ntypes + 1):
         for j in range(i, deck.ntypes + 1):
             row = (_lammps_pair if deck.code == "LAMMPS" else _liggghts_pair)(deck, i, j, speeds)
-            contact = row.pop("contact")
-            pair = _pair(deck, i, j)
+            contact, pair = row.pop("contact"), row.pop("pair")
             limit = pair.R1 + pair.R2
             through = [contact.reaches(g, limit) for g in speeds]
             eps = [(None, False) if t else _eps_or_stick(contact, g) for g, t in zip(speeds, through)]

@@ -23,7 +23,7 @@ from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
 from ..fast.integrator import COLUMNS, collide_fast
 from .codes import (LIGGGHTS_E, LIGGGHTS_MODULUS, Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff,
-                    liggghts_contact, liggghts_e)
+                    liggghts_accepts_e, liggghts_contact, liggghts_e)
 from .contact import Contact
 from .model_ladder import EVAL_TOL, SMALL_EPS, Fit, fit_rung, lammps_rungs, liggghts_rungs, scaled_eps
 from .scene_file import AtomType, Scene
@@ -110,7 +110,7 @@ def _setting(scene: Scene, c: _Contact, fit: Fit) -> dict:
         limit = scene.options["limitForce"]
         base = liggghts_contact(c.pair, e=0.5, limit_force=limit, model=rung.normal, **mats)
         e = float(f"{liggghts_e(_d2(base, fit)):.12g}")
-        if not LIGGGHTS_E[0] < e <= LIGGGHTS_E[1]:
+        if not liggghts_accepts_e(e):
             # LIGGGHTS stops on such a matrix before the first step (found running these lines)
             raise ParameterError("coefficientRestitution", e, f"LIGGGHTS requires {LIGGGHTS_E[0]} < e <= "
                                                               f"{LIGGGHTS_E[1]}")
