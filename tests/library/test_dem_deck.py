@@ -485,6 +485,10 @@ def test_where_the_centres_would_meet_no_eps_is_listed(tmp_path):
     assert err.count("\n") == 1 and "types 1 1 pass through each other" in err
     status, out, _ = run(deck, "--g", *speeds)
     assert status == 0 and out.count("passes through") == 1 and out.count("eps 0.") == 2
+    # an exact line is calibrated at the middle speed: none where the spheres pass through there
+    deck.write_text(LIGGGHTS_DECK)
+    assert all(p["exact_line"] for p in audit(deck, "--g", 1.0)[0]["pairs"])
+    assert not any(p["exact_line"] for p in audit(deck, "--g", 1e6)[0]["pairs"])
 
 
 @pytest.mark.dem

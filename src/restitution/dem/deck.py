@@ -687,6 +687,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             contact, pair = row.pop("contact"), row.pop("pair")
             limit = pair.R1 + pair.R2
             through = [contact.reaches(g, limit) for g in speeds]
+            if through[len(speeds) // 2]:   # the exact line is calibrated at the middle speed: none there
+                row["exact_line"] = None
             eps = [(None, False) if t else _eps_or_stick(contact, g) for g, t in zip(speeds, through)]
             row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
                        overlap_limit=limit, **{k: v for k, v in contact.as_dict().items() if k != "end"})
