@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import argparse
 import copy
+import dataclasses
 import functools
 import io
 import json
@@ -669,7 +670,7 @@ def _damping_for(normal: str, damping: str, radius: float, density: float, k: fl
                           eta_n0=0.5 if damping == "tsuji" else 1.0, **stiff)
     a, c = float(unit.alpha), float(unit.gamma)
     d2 = (omega / (unit.D1 * g ** ((a - 1 - 2 * c) / (c + 1)))) ** (-(c + 1) / (a + 1))
-    return lammps_eta_n0(pair, damping, type(unit)(unit.alpha, unit.gamma, unit.D1, d2, unit.end))
+    return lammps_eta_n0(pair, damping, dataclasses.replace(unit, D2=d2))
 
 
 @st.composite
@@ -713,7 +714,7 @@ def deck_cases(draw):
     if n > 1 and draw(st.booleans()):
         i, j = sorted(draw(st.sampled_from([(a, b) for a in types for b in types if a < b])))
         lines.append(coeff_line(i, j, i))
-    body = "\n".join(["units si", "atom_style sphere", "boundary f f f", f"region box block -1 1 -1 1 -1 1",
+    body = "\n".join(["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1",
                       f"create_box {n} box"]
                      + [f"set type {t} diameter {2 * m['radius']:.8g} density {m['density']:.8g}" for t, m in types.items()]
                      + variables + ["pair_style granular"] + lines)
