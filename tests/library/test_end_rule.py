@@ -204,8 +204,8 @@ def test_below_alpha_2gamma_plus_1_the_bodies_always_separate(alpha, gamma):
 @pytest.mark.parametrize("alpha, gamma, omega", [("5/2", "1/2", 0.1), ("3", "1/2", 1e-3), ("3", "1/4", 1.0)])
 def test_above_alpha_2gamma_plus_1_sticking_is_proved(alpha, gamma, omega):
     """alpha > 2 gamma + 1: sticking is claimed only where the return enters the trap of
-    collision._Trap, and says where."""
-    with pytest.raises(StickError, match="slower than 2 Omega"):
+    collision._Trap (at maximum compression already below collision.stick_bound), and says where."""
+    with pytest.raises(StickError, match="slower than 2 Omega|trapped from maximum compression"):
         collide(alpha, gamma, omega, end="overlap")
     assert collide(alpha, gamma, 10.0, end="overlap").eps > 0
 
@@ -267,3 +267,83 @@ def test_near_the_elastic_limit_the_overlap_rule_keeps_its_widened_bound(omega, 
     for tol in (1e-9, 1e-12):
         res = restitution.epsilon(alpha="8", gamma="1", omega=[omega], tol=tol, end="overlap", build=False)
         assert res.error_bound <= tol and math.isclose(res.eps[0], truth, rel_tol=res.error_bound), tol
+
+
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "0"), ("2", "1/4"), ("3", "1/2"), ("5/2", "1/2"), ("4", "0"),
+                                          ("7/2", "1/4")])
+def test_sticking_proved_without_integrating_lies_below_the_integrators_boundary(alpha, gamma):
+    """stick_bound is sufficient, not the boundary: the compiled integrator's own trap agrees just
+    below it, and the boundary it finds by bisection lies above."""
+    from restitution.core.collision import stick_bound
+    from restitution.core.exponents import as_exponents
+    from restitution.fast.master import reference_eps
+    from restitution.fast.overlap_master import sticking_boundary
+    ex = as_exponents(alpha, gamma)
+    bound = stick_bound(ex, None)
+    assert 0 < bound < sticking_boundary(ex, None)
+    with pytest.raises(StickError):
+        reference_eps(ex, None, [0.999 * bound], 1e-10, "overlap")
+
+
+@pytest.mark.parametrize("alpha, gamma", [("1", "0"), ("3/2", "1/4"), ("3", "1")])
+def test_stick_bound_is_the_self_similar_threshold(alpha, gamma):
+    from restitution.core.collision import stick_bound
+    assert stick_bound(alpha, gamma) == 1.0 / (4.0 * (float(restitution.core.exponents.as_exponents(
+        alpha, gamma).gamma) + 1.0))
+    assert stick_bound("3/2", "1/2") == 0.0
+
+
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "0"), ("1", "0"), ("3", "1/2")])
+def test_sticking_below_the_references_range_is_refused_at_once(alpha, gamma):
+    """Below Omega = 1e-12 only the mpmath rung was left, which cannot prove sticking: a deck audit
+    (hertz/material with velocity damping, Omega 5e-14) followed its creep for over ten minutes."""
+    for omega in (1e-13, 1e-200):
+        with pytest.raises(StickError, match="never ends"):
+            restitution.epsilon(alpha=alpha, gamma=gamma, omega=omega, end="overlap")
+    assert float(restitution.epsilon(alpha=alpha, gamma=gamma, omega=1e-13).eps) > 0   # the force rule ends
+
+
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "1/2"), ("3/2", "1"), ("1", "1/2"), ("2", "1"), ("3", "3/2"),
+                                          ("5/2", "1")])
+def test_overlap_law_rung_agrees_with_the_reference(alpha, gamma):
+    """eps = C Omega^k answers at Omega <= 1e-8 within its bound, checked against the scipy
+    reference down to its range's end; below it, where nothing else answers, it answers too."""
+    omegas = [1e-12, 1e-10, 1e-8]
+    got = restitution.epsilon(alpha=alpha, gamma=gamma, omega=omegas, end="overlap", method="overlap-law")
+    assert got.method == "overlap-law" and got.error_bound < 1e-9
+    for w, e in zip(omegas, got.eps):
+        # rtol 1e-11: at 1e-12 Radau fails in the creep of (1, 1/2) at Omega = 1e-11 and 1e-10 (refused)
+        ref = collide(alpha, gamma, w, end="overlap", rtol=1e-11)
+        assert abs(e / ref.eps - 1) <= got.error_bound + ref.error_bound
+    deep = restitution.epsilon(alpha=alpha, gamma=gamma, omega=1e-13, end="overlap")
+    assert deep.method == "overlap-law" and 0 < float(deep.eps) < got.eps[0]
+
+
+def test_no_mpmath_creep_under_the_overlap_rule():
+    """The mpmath rung takes ~0.2/Omega steps on a creeping return: below 1e-5 it refuses, in one line."""
+    with pytest.raises(ParameterError, match="creeps"):
+        restitution.epsilon(alpha="3/2", gamma="1/2", omega=1e-6, end="overlap", method="highprec")
+    with pytest.raises(ParameterError, match="below the smallest normal double"):
+        restitution.epsilon(alpha="1", gamma="1/2", omega=1e-300, end="overlap")
+
+
+def test_a_creep_that_defeats_the_reference_is_not_called_sticking():
+    with pytest.raises(ParameterError, match="creeping return defeated the integrator"):
+        collide("1", "1/2", 1e-10, end="overlap", rtol=1e-12)
+
+
+def test_reference_refuses_an_eps_whose_return_overflows():
+    """alpha = 23/12, gamma = 1/2 at Omega = 1e-10 (eps = 6e-170): the return's Jacobian 1/v^2
+    overflows and scipy stopped with a ValueError traceback; now one line, and the law answers."""
+    with pytest.raises(ParameterError, match="below what a double-precision integration resolves"):
+        collide("23/12", "1/2", 1e-10, end="overlap")
+    assert restitution.epsilon(alpha="23/12", gamma="1/2", omega=1e-10, end="overlap").method == "overlap-law"
+
+
+def test_a_contact_far_below_the_references_range_sticks_at_once():
+    """The deck audit's case: Hertz with velocity damping (alpha = 3/2, gamma = 0) at Omega = 1e-13."""
+    from restitution.dem.contact import Contact
+    contact = Contact(alpha="3/2", gamma=0, D1=1.0, D2=10 ** 5.2, end="overlap")
+    assert contact.omega(1.0) == pytest.approx(1e-13, rel=1e-9)
+    with pytest.raises(StickError):
+        contact.eps(1.0)

@@ -78,6 +78,12 @@ class RunawayError(ParameterError):
 class StickError(ParameterError):
     """Under the overlap rule the bodies never separate: x and x' creep to 0 together (eps = 0)."""
 
+    @classmethod
+    def at(cls, omega: float, why: str) -> "StickError":
+        """The one error every method raises for a proved sticking at ``omega`` (``why``: the proof)."""
+        return cls("omega", omega, "under the overlap rule contact never ends here: the attractive phase stops "
+                                   f"the return and the bodies stay together (eps = 0; {why}); use end=force")
+
 
 class UnresolvedError(ParameterError):
     """eps exists but lies below what the method resolves for these parameters."""
@@ -308,14 +314,25 @@ def _land_pulling(law: Law, start: _State, rtol: float, pieces: list, stiff: boo
     # Newton iteration fails at small Omega. (TINY itself would overflow its first-step estimate.)
     atol = np.array([TINY, TIME_MARGIN * rtol * start.x / abs(start.v)])
     try:
-        sol = _integrate(form.du_rhs, (u0, 0.0), [start.f, 0.0], rtol=rtol, atol=atol, events=events,
-                         jac=form.du_jac, stiff=stiff, in_u=True)
+        with np.errstate(divide="ignore", over="ignore", invalid="ignore"):   # an overflow is refused below
+            sol = _integrate(form.du_rhs, (u0, 0.0), [start.f, 0.0], rtol=rtol, atol=atol, events=events,
+                             jac=form.du_jac, stiff=stiff, in_u=True)
     except IntegrationError:
+        if not trap.possible:   # no sticking to blame (alpha < 2 gamma + 1): Radau lost its way in the creep
+            raise UnresolvedError("rtol", rtol, "under the overlap rule the creeping return defeated the integrator "
+                                  f"at Omega = {law.omega:g} (measured: alpha = 1, gamma = 1/2 at 1e-11 and 1e-10 "
+                                  "with rtol 1e-12); a looser rtol answers, or restitution.epsilon") from None
         # Right at a sticking boundary the return stalls short of x = 0 before the trap can prove
         # it stays: whether the bodies separate is not decided in double precision there.
         raise UnresolvedError("omega", law.omega, "under the overlap rule the return stalls at the edge of "
                               f"sticking (x = {start.x:.3g}): eps = 0 or below what a double-precision "
                               "integration resolves; move Omega away from the sticking boundary") from None
+    except ValueError:
+        # scipy's check of the Jacobian: 1/v^2 overflows once the rebound speed v falls below ~1e-154
+        # (alpha = 23/12, gamma = 1/2 at Omega = 1e-10: eps = 6e-170)
+        raise UnresolvedError("omega", law.omega, "under the overlap rule eps lies below what a double-precision "
+                              "integration resolves here (the return's Jacobian overflows); restitution.epsilon "
+                              "answers from the limit law eps = C Omega^k at Omega <= 1e-8") from None
     u, (g, tau) = sol.t[-1], sol.y[:, -1] + [0.0, start.tau]
     if events and _fired(sol, 0):
         _stuck(law, trap.why(u ** law.p))
@@ -476,7 +493,7 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
     overlap = rule == "overlap"
     law = Law.of(ex, omega, +1)
     if overlap:
-        _check_separates(law)
+        _check_separates(ex, law)
 
     pieces: list[Piece] = []
     risen = _rise(law, 0.0, min(1.0, law.elastic_scale()), rtol, pieces)
@@ -511,23 +528,46 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
                      float(last.tau), float(x_c), end, rtol, trajectory, loss, rule, bound, loss_bound)
 
 
-def _check_separates(law: Law) -> None:
-    """Refuse the overlap rule where the bodies provably never separate.
+def stick_bound(alpha, gamma) -> float:
+    """The Omega at or below which the bodies provably never separate under the overlap rule,
+    without integrating: 0 where they always separate (alpha < 2 gamma + 1).
 
-    For alpha = 2 gamma + 1 the equation is invariant under x -> l x, tau -> l^(-gamma) tau, and
-    w = x'/x^(gamma+1) obeys an autonomous equation whose fixed points solve
-    (gamma+1) w^2 + w + Omega = 0. When they are real (Omega <= 1/(4 (gamma+1))) the return is
-    trapped by the upper one: x and x' go to 0 together, never reaching x = 0 (the overdamped
-    linear dashpot, and LAMMPS' tsuji damping for e below about 0.1). Elsewhere sticking is only
-    ever claimed on proof, by _Trap during the return.
+    With e = alpha - 2 gamma - 1 >= 0 and d = alpha - gamma, the trap of _Trap closes over every
+    x <= x_b once x_b^e <= 1/(4 Omega d), and at maximum compression s = 0 lies inside it. The
+    spring only shortens the damped-only compression, x' <= 1 - x^(gamma+1)/(gamma+1), so x_b <= X =
+    (gamma+1)^(1/(gamma+1)), and Omega <= 1/(4 d X^e) suffices: the trap holds from x_b on, and the
+    return creeps to x = 0 without reaching it. For e = 0 this is 1/(4 (gamma+1)), the self-similar
+    case's real fixed points (w = x'/x^(gamma+1) obeys an autonomous equation there whose fixed points
+    solve (gamma+1) w^2 + w + Omega = 0: the overdamped linear dashpot, and LAMMPS' tsuji damping for
+    e below about 0.1). Above this bound sticking is still claimed where _Trap catches it during the
+    return, and only there.
     """
-    if law.qa == 2 * law.qg + law.p and law.omega <= 1.0 / (4.0 * (law.gamma + 1.0)):
-        _stuck(law, f"Omega <= 1/(4 (gamma+1)) = {1.0 / (4.0 * (law.gamma + 1.0)):.6g} for alpha = 2 gamma + 1")
+    ex = as_exponents(alpha, gamma)
+    e = ex.alpha - 2 * ex.gamma - 1
+    if e < 0:
+        return 0.0
+    g = float(ex.gamma)
+    return 1.0 / (4.0 * float(ex.alpha - ex.gamma) * (g + 1.0) ** (float(e) / (g + 1.0)))
+
+
+def stick_reason(alpha, gamma) -> str:
+    """stick_bound's proof in one line, for StickError (collide and the method ladder)."""
+    ex = as_exponents(alpha, gamma)
+    bound = stick_bound(ex, None)
+    if ex.alpha == 2 * ex.gamma + 1:
+        return f"Omega <= 1/(4 (gamma+1)) = {bound:.6g} for alpha = 2 gamma + 1"
+    return (f"Omega <= {bound:.6g} = 1/(4 (alpha-gamma) X^(alpha-2gamma-1)), X = (gamma+1)^(1/(gamma+1)): "
+            "the return is trapped from maximum compression on")
+
+
+def _check_separates(ex, law: Law) -> None:
+    """Refuse the overlap rule where the bodies provably never separate (stick_bound)."""
+    if law.omega <= stick_bound(ex, None):
+        _stuck(law, stick_reason(ex, None))
 
 
 def _stuck(law: Law, why: str):
-    raise StickError("omega", law.omega, "under the overlap rule contact never ends here: the attractive "
-                     f"phase stops the return and the bodies stay together (eps = 0; {why}); use end=force")
+    raise StickError.at(law.omega, why)
 
 
 def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,

@@ -24,12 +24,15 @@ def contact_eps(alpha, gamma, end: str, omega: float, rtol: float = 1e-12) -> fl
     (tens of microseconds) instead of the reference (20-200 ms), which calibrations call dozens of
     times. Near the overlap rule's sticking boundary, where no fast rung meets that bound, the
     reference answers as before. Raises StickError where the bodies stick under the overlap rule."""
+    from ..core.collision import StickError
     from ..core.errors import ParameterError
     from ..fast.ladder import epsilon
     from ..fast.rung import reference_bound
     try:
         tol = reference_bound(rtol, as_exponents(alpha, gamma))
         return float(epsilon(alpha=alpha, gamma=gamma, omega=[omega], tol=tol, end=end, build=False).eps[0])
+    except StickError:
+        raise
     except ParameterError:
         return collide(alpha, gamma, omega, rtol=rtol, end=end).eps
 

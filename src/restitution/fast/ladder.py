@@ -30,12 +30,15 @@ master           (cal)  Chebyshev master curve + expansions         all Omega > 
                  (ovl)  overlap rule: its own curve, Chebyshev      Omega in [1e-4, 1e8], above    ~4e-8 s
                         only (fast.overlap_master), built alone     a sticking boundary
                         in 1-2 s
+overlap-law             overlap rule: eps = C Omega^k, the viscous  gamma<alpha<2gamma+1, Omega    ~1e-7 s
+                        limit law (core.overlap_limit; C            <= 1e-8                        (C: 0.3-0.9 s
+                        integrated once)                                                           once)
 integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-300, 1e14]        2e-5 to
                         from tol; both end rules                    (alpha<=gamma, overlap rule:   7e-5 s
                                                                     >= 1e-5)
-reference               core.collision.collide (scipy)              all                            ~1e-2 s
-highprec                core.highprec (mpmath Taylor)               all (alpha<=gamma: >= 1e-3)    0.15 s and
-                                                                                                   more at small
+reference               core.collision.collide (scipy)              Omega in [1e-12, 1e10]         ~1e-2 s
+highprec                core.highprec (mpmath Taylor)               all (alpha<=gamma: >= 1e-3;    0.15 s and
+                                                                    overlap rule: >= 1e-5)         more at small
                                                                                                    Omega
 ======================  =========================================  ============================  ========
 
@@ -49,6 +52,7 @@ Bounds:
   where alpha + gamma > 4 (validated against mpmath; core.conditioning.exponent_factor);
 * reference: 10 rtol + 1e-13, the same factor for large exponents (validated against mpmath);
   highprec: 10^(1 - digits), at least the 2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
+* overlap-law: twice C's own error + rounding (its exponential correction is below exp(-5e6) there);
 * closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
@@ -69,7 +73,8 @@ after each (the master curve may serve the request, and the perturbation route i
 One expected to take more than a second is named on stderr with its price. The master curve's
 check against mpmath (seconds) is built for the pipeline and the benchmark (``calibration()``), and
 can only widen the curve's bound.
-A tolerance no rung meets raises ParameterError naming the best bound available.
+A tolerance no rung meets raises ParameterError naming the best bound available. Under the overlap
+rule an Omega at or below core.collision.stick_bound is refused before any rung runs (StickError).
 """
 
 from __future__ import annotations
@@ -85,6 +90,7 @@ from typing import Callable
 import numpy as np
 
 from . import cache as _cache
+from ..core.collision import StickError, stick_bound, stick_reason
 from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
 from ..core.results import end_rule
@@ -444,6 +450,8 @@ class Ladder:
             raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
         end = end_rule(end)
         flat = om.ravel()
+        if end == "overlap":
+            self._refuse_sticking(flat)
         quotes = self.quotes(flat, tol, end)
         if build is not False:
             quotes = self._make_builds(quotes, flat, tol, end, method, build)
@@ -474,6 +482,14 @@ class Ladder:
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.ex.alpha,
                          self.ex.gamma, tol if checked else None, chosen.setting, table, chosen.coefficients)
+
+    def _refuse_sticking(self, flat: np.ndarray) -> None:
+        """Where sticking is proved without integrating (core.collision.stick_bound) no method runs:
+        the integrators would refuse as well, but below the reference's range only the mpmath rung is
+        left, which cannot prove sticking and would follow the creep for hours."""
+        stuck = flat[flat <= stick_bound(self.ex, None)]
+        if stuck.size:
+            raise StickError.at(float(stuck[0]), stick_reason(self.ex, None))
 
     def _make_builds(self, quotes, flat, tol: float, end: str, method, build) -> list[Quote]:
         """Make the builds the request wants, cheapest first, quoting again after each: the first

@@ -111,9 +111,7 @@ def reference_eps(alpha, gamma, omegas, rtol: float = 1e-14, end: str = "force")
     if np.any(res[:, 5] == END_STUCK):
         from ..core.collision import StickError
         w = float(om.ravel()[res[:, 5] == END_STUCK][0])
-        raise StickError("omega", w, "under the overlap rule contact never ends here: the attractive phase "
-                         "stops the return and the bodies stay together (eps = 0, proved as in "
-                         "core.collision); use end=force")
+        raise StickError.at(w, "proved as in core.collision")
     if np.any(res[:, 5] == END_FAILED):
         bad = om[res[:, 5] == END_FAILED]
         raise ArithmeticError(f"compiled integrator failed at Omega = {bad[:3]} (alpha={ex.alpha}, "

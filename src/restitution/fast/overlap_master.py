@@ -24,7 +24,7 @@ from fractions import Fraction
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
 
-from ..core.collision import StickError
+from ..core.collision import StickError, stick_bound
 from ..core.exponents import as_exponents
 from .master import reference_eps
 from .panels import PanelRange, chebyshev_panels_eval
@@ -62,7 +62,7 @@ def sticking_boundary(alpha, gamma, lo: float = OMEGA_LO, hi: float = OMEGA_HI) 
     if ex.alpha < 2 * ex.gamma + 1:
         return 0.0
     if ex.alpha == 2 * ex.gamma + 1:
-        return float(1 / (4 * (ex.gamma + 1)))   # proved in core.collision._check_separates
+        return stick_bound(ex, None)   # the whole boundary there, proved in core.collision
     if not _sticks(ex, lo):
         return lo
     if _sticks(ex, hi):

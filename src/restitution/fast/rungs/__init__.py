@@ -12,6 +12,7 @@ from .closed_form import ClosedForm
 from .highprec import Highprec
 from .integrator import Integrator
 from .overlap_integrator import OverlapIntegrator
+from .overlap_law import OverlapLaw
 from .overlap_master import OverlapMaster
 from .reference import Reference
 
@@ -25,6 +26,7 @@ RUNGS: tuple[Rung, ...] = (
     ClosedForm(),
     MasterRung(),
     OverlapMaster(),
+    OverlapLaw(),
     Integrator(),
     OverlapIntegrator(),
     Reference(),

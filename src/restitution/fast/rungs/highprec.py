@@ -9,18 +9,28 @@ import numpy as np
 
 from ..rung import Rung, highprec_bound, highprec_digits
 
-__all__ = ["Highprec", "HIGHPREC_COST", "highprec_cost"]
+__all__ = ["Highprec", "HIGHPREC_COST", "CREEP_MIN", "highprec_cost"]
 
 #: Seconds per point at 16 digits and Omega >= 1.
 HIGHPREC_COST = 0.4
 
 
-def highprec_cost(omega: np.ndarray, digits: int) -> float:
+#: Under the overlap rule (alpha > gamma) the return creeps past the force's zero for ~0.2/Omega
+#: Taylor steps (measured, 3/2 and 1/2 at 15 digits: 0.8 s at Omega = 1e-3, 7 s at 1e-4, 68 s at
+#: 1e-5); below CREEP_MIN it would run for many minutes and hit its step limit, without proving
+#: the sticking it may be heading for.
+CREEP_MIN = 1e-5
+
+
+def highprec_cost(omega: np.ndarray, digits: int, creeps: bool = False) -> float:
     """Seconds for the mpmath reference: below Omega = 1 it carries log10(1/Omega) more digits
     (core.highprec), and its time grows like the 2.5th power of the digits (measured, alpha = 3/2,
-    gamma = 1/2, 16 digits: 0.15 s at Omega = 1, 0.75 s at 1e-12, 6 s at 1e-60, 190 s at 1e-300)."""
-    extra = np.maximum(0.0, np.ceil(-np.log10(np.asarray(omega, float))))
-    return float(np.sum(HIGHPREC_COST * ((digits + extra) / digits) ** 2.5))
+    gamma = 1/2, 16 digits: 0.15 s at Omega = 1, 0.75 s at 1e-12, 6 s at 1e-60, 190 s at 1e-300);
+    a creeping return (``creeps``) multiplies it by 1e-3/Omega below 1e-3."""
+    om = np.asarray(omega, float)
+    extra = np.maximum(0.0, np.ceil(-np.log10(om)))
+    creep = np.maximum(1.0, 1e-3 / om) if creeps else 1.0
+    return float(np.sum(HIGHPREC_COST * ((digits + extra) / digits) ** 2.5 * creep))
 
 
 class Highprec(Rung):
@@ -30,10 +40,12 @@ class Highprec(Rung):
     def outside(self, req):
         if not req.rules_differ and req.lo < 1e-3:
             return "Omega < 1e-3 with alpha <= gamma (creeping)"
+        if req.rule == "overlap" and req.lo < CREEP_MIN:
+            return f"Omega < {CREEP_MIN:g} under the overlap rule (the return creeps for ~0.2/Omega steps)"
         return None
 
     def price(self, req):
-        return highprec_cost(req.omega, highprec_digits(req.tol))
+        return highprec_cost(req.omega, highprec_digits(req.tol), req.rule == "overlap")
 
     def bound(self, req, built):
         d = highprec_digits(req.tol)
@@ -43,7 +55,7 @@ class Highprec(Rung):
         from ...core.collision import OMEGA_RANGE, collide
         from ...core.highprec import reference_collision
         digits = highprec_digits(req.tol)
-        seconds = highprec_cost(omega, digits)
+        seconds = highprec_cost(omega, digits, req.rule == "overlap")
         if seconds > 10.0:   # a long wait says so at its start
             print(f"restitution: the mpmath reference on {np.size(omega)} point(s) takes about {seconds:.0f} s",
                   file=sys.stderr if req.stream is None else req.stream, flush=True)
