@@ -230,6 +230,62 @@ def check_number_case(case) -> list[dict]:
     return records
 
 
+# ------------------------------------------------------------------------------------ deep overlap
+#: Below OMEGA_FLOOR["overlap"] the mpmath reference is out of reach; there the overlap rule is
+#: checked against what holds without it: a pair that can stick (alpha >= 2 gamma + 1) must be
+#: refused as sticking (core.collision.stick_bound lies far above 1e-8 for every accepted pair), and
+#: otherwise eps = C Omega^k exactly scales the scipy reference's eps at DEEP_ANCHOR (rtol 1e-11).
+DEEP_ANCHOR = 1e-12
+#: A request that takes longer than this is a creep no rung should follow.
+DEEP_SECONDS = 30.0
+
+
+@st.composite
+def deep_overlap_cases(draw):
+    law = draw(st.booleans())   # half the cases where the law holds, half where the bodies can stick
+    alpha, gamma = draw(st.one_of(st.sampled_from(COMMON_PAIRS), exponents()).filter(
+        lambda p: Fraction(p[1]) < Fraction(p[0]) and (Fraction(p[0]) < 2 * Fraction(p[1]) + 1) == law))
+    omega = 10.0 ** draw(st.floats(-300.0, -8.0))
+    return {"alpha": alpha, "gamma": gamma, "end": "overlap", "omega": omega, "tol": 10.0 ** draw(st.floats(-10.0, -3.0))}
+
+
+def check_deep_overlap_case(case) -> list[dict]:
+    from restitution import api
+    from restitution.core.collision import StickError, collide
+    from restitution.core.errors import ParameterError
+    from restitution.core.overlap_limit import overlap_limit
+
+    a, g = Fraction(case["alpha"]), Fraction(case["gamma"])
+    rec = {"method": "ladder", "rule": "overlap (deep)", "case": case, "ratio": 0.0}
+    t0 = time.perf_counter()
+    try:
+        got = api.epsilon(alpha=case["alpha"], gamma=case["gamma"], omega=[case["omega"]], tol=case["tol"],
+                          end="overlap", build=False)
+    except StickError as exc:
+        ok = a >= 2 * g + 1 and _one_line(exc)
+        return [{**rec, "status": "answered" if ok else "FAIL", "detail": f"sticks: {exc}"}]
+    except ParameterError as exc:
+        return [{**rec, "status": "refused" if _one_line(exc) and a < 2 * g + 1 else "FAIL", "detail": str(exc)}]
+    except Exception as exc:  # noqa: BLE001 - a traceback is a failure
+        return [{**rec, "status": "FAIL", "detail": "".join(traceback.format_exception_only(exc)).strip()}]
+    seconds = time.perf_counter() - t0
+    rec["method"] = "ladder:" + got.method
+    eps, bound = float(got.eps[0]), float(got.error_bound)
+    if a >= 2 * g + 1:
+        return [{**rec, "status": "FAIL", "ratio": math.inf, "detail": f"eps = {eps!r} where the bodies provably stick"}]
+    try:
+        anchor = collide(case["alpha"], case["gamma"], DEEP_ANCHOR, end="overlap", rtol=1e-11)
+    except ParameterError as exc:   # the anchor is out of the reference's reach: nothing to compare
+        return [{**rec, "status": "answered", "detail": f"eps = {eps!r}; no anchor ({exc})"}]
+    truth = anchor.eps * (case["omega"] / DEEP_ANCHOR) ** overlap_limit(a, g).k
+    err = abs(eps / truth - 1.0)
+    allowed = bound + anchor.error_bound + 1e-13 * abs(math.log(case["omega"] / DEEP_ANCHOR))
+    ok = err <= allowed and seconds <= DEEP_SECONDS
+    return [{**rec, "status": "answered" if ok else "FAIL", "ratio": err / allowed, "error": err,
+             "detail": f"eps = {eps!r}, anchor-scaled {truth!r}, relative error {err:.3g}, allowed {allowed:.3g}, "
+                       f"{seconds:.1f} s"}]
+
+
 # ------------------------------------------------------------------------------------ inputs
 NUMBER_TOKENS = {
     # token -> is it acceptable as a positive finite number?
@@ -955,7 +1011,8 @@ KINDS = {"numbers": (number_cases, check_number_case, False), "argv": (argv_case
          "config": (config_cases, check_config_case, True), "scenes": (scene_cases, check_scene_case, False),
          "decks": (deck_cases, check_deck_case, True),
          "liggghts scenes": (liggghts_scene_cases, check_liggghts_scene_case, False),
-         "liggghts decks": (liggghts_deck_cases, _check_liggghts_deck, True)}
+         "liggghts decks": (liggghts_deck_cases, _check_liggghts_deck, True),
+         "deep overlap": (deep_overlap_cases, check_deep_overlap_case, False)}
 
 
 def _worker(job):
@@ -1007,7 +1064,8 @@ def main(argv=None) -> int:
     n_cfg = args.inputs // 10   # config checks cost ten times an argument vector
     jobs = ([("numbers", -(-args.numbers // chunks), args.seed + i) for i in range(chunks)]
             + [("argv", -(-(args.inputs - n_cfg) // chunks), args.seed + 100 + i) for i in range(chunks)]
-            + [("config", -(-n_cfg // chunks), args.seed + 200 + i) for i in range(chunks)])
+            + [("config", -(-n_cfg // chunks), args.seed + 200 + i) for i in range(chunks)]
+            + [("deep overlap", -(-args.numbers // 10 // chunks), args.seed + 700 + i) for i in range(chunks)])
     from restitution.dem.lammps import available
     if available():
         jobs += [("scenes", -(-args.scenes // chunks), args.seed + 300 + i) for i in range(chunks)]
@@ -1040,7 +1098,7 @@ def main(argv=None) -> int:
                                   for r in rows]
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
-    summary = (f"number cases {counts['numbers']}, argument vectors {counts['argv']}, config mutations "
+    summary = (f"number cases {counts['numbers']}, deep overlap cases {counts['deep overlap']}, argument vectors {counts['argv']}, config mutations "
                f"{counts['config']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
                f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")

@@ -86,3 +86,15 @@ def test_an_integer_beyond_double_range_in_the_config_is_refused_in_one_line(whe
     node[where[-1]] = value
     rec = F.check_config_case(config, True)
     assert rec["status"] == "refused", rec["detail"]
+
+
+@bounded(12)
+@given(F.deep_overlap_cases())
+# found by make fuzz: a LAMMPS deck's pair at Omega = 5e-14 (alpha = 3/2, gamma = 0) left only the
+# mpmath rung, which followed the creep for over ten minutes instead of proving the sticking
+@example({"alpha": "3/2", "gamma": "0", "end": "overlap", "omega": 4.61e-14, "tol": 1e-11})
+@example({"alpha": "3/2", "gamma": "1/2", "end": "overlap", "omega": 1e-13, "tol": 1e-9})
+@pytest.mark.slow
+def test_the_overlap_rule_far_below_the_mpmath_references_reach(case):
+    bad = _failures(F.check_deep_overlap_case(case))
+    assert not bad, bad[0]["detail"]
