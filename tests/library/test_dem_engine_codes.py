@@ -8,7 +8,7 @@ import pytest
 from restitution.core.errors import ParameterError
 from restitution.dem.codes import (liggghts_contact, liggghts_e, thornton_betan, yade_mindlin_contact,
                                    yade_mindlin_en, yade_viscel_contact, yade_viscel_setting)
-from restitution.dem.settings import yade_design
+from restitution.dem.settings import liggghts_design, yade_design
 from engine_case import PAIR  # noqa: E402
 
 
@@ -51,3 +51,17 @@ def test_one_line_refusals(call, field):
     with pytest.raises(ParameterError) as info:
         call()
     assert info.value.field == field and "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize("design", [
+    lambda g: liggghts_design(PAIR, eps=0.5, model="hertz", E=1e5, nu=0.3, limit_force=True, g=g),
+    lambda g: yade_design(PAIR, eps=0.5, law="viscel-kn", kn=10.0, g=g),
+    lambda g: yade_design(PAIR, eps=0.5, law="mindlin", E=1e5, nu=0.3, g=g),
+])
+def test_a_design_whose_spheres_pass_through_each_other_is_refused(design):
+    """As lammps_design already did: a soft contact at a high speed overlaps past R1 + R2, where the
+    engine gives another eps than the one the design states."""
+    assert design(1e-3)["eps"] == pytest.approx(0.5, rel=1e-9)
+    with pytest.raises(ParameterError) as info:
+        design(1e3)
+    assert info.value.field == "g" and "through each other" in str(info.value)
