@@ -108,3 +108,17 @@ def test_a_pair_of_a_later_atom_type_runs_beside_a_resting_sphere_of_type_1():
                                                        (one, 1.0, t_c / 2000, 1.5 * t_c)])
     assert gap1 > PAIR.R1 + PAIR.R2 and gap2 == pytest.approx(gap1, rel=1e-12)
     assert rel2 == pytest.approx(rel1, rel=1e-12) and rel1 < 0          # rebound: v1 - v2 < 0
+
+
+def test_a_deep_contact_run_long_keeps_both_spheres_in_the_box():
+    """Found by make fuzz (a random LIGGGHTS scene): a soft pair (E 1.6e6 Pa against 9.5e9) overlapping
+    9.4 mm at 25 m/s, run for 6 contact times, carried the lighter sphere out of a box of 4 (R1 + R2):
+    LIGGGHTS dropped it silently, its velocity read 0, and eps = 0.239 = e m2 / (m1 + m2) was reported
+    for a contact of eps = e = 0.871. The box now holds the whole run."""
+    from restitution.dem.codes import Pair
+    pair = Pair.spheres(6.585e-3, 5.556e-3, 5612.0, 3537.0)
+    lines = liggghts_pair_style(model="hertz", e=0.871, limit_force=False, E=9.47e9, nu=0.12, E2=1.6e6, nu2=0.45)
+    lines = lines.replace("\n", "\nsoft_particles yes\nhard_particles yes\n", 1)
+    t_c = 1.19e-3
+    (rel, gap), = liggghts_states(pair, [(lines, 25.0, t_c / 4000, 6 * t_c, (1, 2))])
+    assert gap > 0.1 and -rel / 25.0 == pytest.approx(0.871, rel=1e-3)
