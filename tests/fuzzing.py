@@ -471,8 +471,12 @@ def config_cases(draw):
             parent = parent[k]
         kind = draw(st.sampled_from(["bad", "delete", "unknown", "reserved", "same"]))
         if kind == "bad":
+            old = parent[path[-1]]
             parent[path[-1]] = draw(st.sampled_from(BAD_VALUES))
-            bad[path] = _surely_bad(path, parent[path[-1]]) or path[-1] == "surely_not_a_field"
+            # None where the config itself has null (plot.tau_max_forward, fit_g_range) is no mutation:
+            # make fuzz counted such configs, equal to config.yaml, as wrongly accepted
+            bad[path] = ((_surely_bad(path, parent[path[-1]]) and parent[path[-1]] != old)
+                         or path[-1] == "surely_not_a_field")
         elif kind == "delete" and isinstance(parent, dict):
             del parent[path[-1]]
             bad.pop(path, None)

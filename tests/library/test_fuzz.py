@@ -102,3 +102,16 @@ def test_an_integer_beyond_double_range_in_the_config_is_refused_in_one_line(whe
 def test_the_overlap_rule_far_below_the_mpmath_references_reach(case):
     bad = _failures(F.check_deep_overlap_case(case))
     assert not bad, bad[0]["detail"]
+
+
+def test_a_refusal_quoting_a_folded_description_is_one_line():
+    """Found by make fuzz: fit_g_range = {} was refused with the schema's folded description, whose
+    final newline made the message two lines."""
+    import copy
+
+    import yaml
+    config = yaml.safe_load((F.ROOT / "config.yaml").read_text())
+    config = copy.deepcopy(config)
+    config["variants"][0]["fit_g_range"] = {}
+    rec = F.check_config_case(config, True)
+    assert rec["status"] == "refused", rec["detail"]

@@ -68,7 +68,7 @@ def _finite_range(schema) -> str:
         text = f"must be a finite number {'<' if hi[0] == ')' else '<='} {hi[1]}"
     else:
         text = "must be a finite number"
-    description = schema.get("description")
+    description = " ".join(schema.get("description", "").split())   # folded YAML: one line
     return f"{text} ({description})" if description else text
 
 

@@ -39,6 +39,8 @@ def allowed(error) -> str:
     """What the failing keyword of a jsonschema ValidationError allows, in words."""
     v, s = error.validator, error.validator_value
     description = error.schema.get("description") if isinstance(error.schema, dict) else None
+    # a folded YAML description ends in a newline: the message must stay one line
+    description = " ".join(description.split()) if description else None
     text = {
         "minimum": lambda: f"must be >= {s}",
         "maximum": lambda: f"must be <= {s}",
