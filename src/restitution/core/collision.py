@@ -296,6 +296,10 @@ def _land_forward(law: Law, start: _State, x_b: float, rtol: float, pieces: list
     return "separation", _State(tau, 0.0, v)
 
 
+#: Evaluations after which the pulling leg's Radau counts as stalled (about 7 s).
+PULL_MAX_CALLS = 500_000
+
+
 def _land_pulling(law: Law, start: _State, rtol: float, pieces: list, stiff: bool):
     """Leg 4 under the overlap rule with the force already pulling: (g, tau) in u down to u = 0.
 
@@ -313,15 +317,26 @@ def _land_pulling(law: Law, start: _State, rtol: float, pieces: list, stiff: boo
     # in the state, or a loose absolute tolerance on it, lets Radau take steps over which its
     # Newton iteration fails at small Omega. (TINY itself would overflow its first-step estimate.)
     atol = np.array([TINY, TIME_MARGIN * rtol * start.x / abs(start.v)])
+    calls = 0
+
+    def rhs(u, y):
+        # Radau can stall with its step collapsed, short of u = 0 (make fuzz: 25/4, 9/2 at Omega =
+        # 1e-12, rtol 1e-11, u stuck at 9.13e-7 for 3 million calls); successful legs take < 6e4
+        nonlocal calls
+        calls += 1
+        if calls > PULL_MAX_CALLS:
+            raise IntegrationError(f"Radau stalled at u = {u:.3g} after {PULL_MAX_CALLS} evaluations")
+        return form.du_rhs(u, y)
+
     try:
         with np.errstate(divide="ignore", over="ignore", invalid="ignore"):   # an overflow is refused below
-            sol = _integrate(form.du_rhs, (u0, 0.0), [start.f, 0.0], rtol=rtol, atol=atol, events=events,
+            sol = _integrate(rhs, (u0, 0.0), [start.f, 0.0], rtol=rtol, atol=atol, events=events,
                              jac=form.du_jac, stiff=stiff, in_u=True)
     except IntegrationError:
         if not trap.possible:   # no sticking to blame (alpha < 2 gamma + 1): Radau lost its way in the creep
             raise UnresolvedError("rtol", rtol, "under the overlap rule the creeping return defeated the integrator "
                                   f"at Omega = {law.omega:g} (measured: alpha = 1, gamma = 1/2 at 1e-11 and 1e-10 "
-                                  "with rtol 1e-12); a looser rtol answers, or restitution.epsilon") from None
+                                  "with rtol 1e-12); another rtol answers, or restitution.epsilon") from None
         # Right at a sticking boundary the return stalls short of x = 0 before the trap can prove
         # it stays: whether the bodies separate is not decided in double precision there.
         raise UnresolvedError("omega", law.omega, "under the overlap rule the return stalls at the edge of "
