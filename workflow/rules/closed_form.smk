@@ -7,8 +7,6 @@ rule uniform_form:
     eps(g) from the force rule's."""
     input:
         curve=rules.eps_compare.output.curves,
-        # looked up when the job is made: stability.smk (included after this file) defines it
-        atlas=lambda wildcards: atlas_forms(wildcards),
         src=lib("core.uniform", "fast.uniform_build"),
         code=code("uniform_form.py"),
     output:

@@ -88,21 +88,10 @@ rule fig_stability:
 
 MANUSCRIPT_INPUTS.append("results/stability/uniform_forms.tex")
 
-# The atlas's pairs, dealt round-robin to the shards (pair i to shard i mod shards).
+# The atlas's pairs, dealt round-robin to the shards. The variants' pairs among them are built again
+# by rule uniform_form (the same library call): taking them from there would make the shards
+# depend on the variants, and adding a variant would rerun the atlas.
 _ATLAS_PAIRS = [list(p) for p in _AtlasSpec.from_config(_atlas_settings(config)).pairs]
-
-
-def atlas_forms(wildcards):
-    """The uniform shard that builds a variant's exponent pair, where the atlas has it: rule
-    uniform_form reads the forms from there (the same library call, the same bits) instead of
-    fitting them again; a variant outside the atlas builds its own. The shards never depend on the
-    variants, so adding one does not rerun the atlas."""
-    ex = exponents(wildcards)
-    want = (Fraction(ex["alpha"]), Fraction(ex["gamma"]))
-    for i, (a, g) in enumerate(_ATLAS_PAIRS):
-        if (Fraction(a), Fraction(g)) == want:
-            return [f"results/stability/uniform/{i % STABILITY_SHARDS}-of-{STABILITY_SHARDS}.json"]
-    return []
 
 
 rule uniform_shard:

@@ -2,21 +2,18 @@
 # # The uniform closed form of one variant
 #
 # Fits eps(Omega) in the forms of `restitution.core.uniform`, one per end rule (the library chooses
-# the shape and measures the bound on points it was not fitted on; where the stability atlas has
-# the variant's exponents its shard has built them already and they are read), then evaluates them where the
+# the shape and measures the bound on points it was not fitted on), then evaluates them where the
 # manuscript needs it: relative errors in eps and 1 - eps over Omega in [1e-8, 1e8] (against the
 # compiled integrator at rtol 1e-14; under the overlap rule from 1e-3 up), and eps(g) of the force
 # rule's form on the variant's figure-4 speeds.
 
 # %%
-from fractions import Fraction
-
 import numpy as np
 import pandas as pd
-from common.pipeline import read_json, start, write_csv, write_json
+from common.pipeline import start, write_csv, write_json
 
 from restitution.core.errors import ParameterError
-from restitution.core.uniform import FORM_RANGE, UniformForm, skeleton
+from restitution.core.uniform import FORM_RANGE, skeleton
 from restitution.fast.master import reference_eps
 from restitution.fast.uniform_build import LAW_BELOW, build_uniform
 
@@ -25,36 +22,16 @@ ex = snakemake.params.exponents
 PRINTED_DIGITS = 12
 
 # %%
-def why_none(end: str) -> str | None:
-    try:
-        skeleton(ex["alpha"], ex["gamma"], end)
-    except ParameterError as why:
-        return why.allowed
-    return None
-
-
-def from_atlas(end: str) -> dict | None:
-    """The record the atlas's shard wrote for this pair and rule (rule uniform_shard), if it has the pair."""
-    want = (Fraction(ex["alpha"]), Fraction(ex["gamma"]), end)
-    for path in snakemake.input.atlas:
-        for d in read_json(path):
-            if (Fraction(d["alpha"]), Fraction(d["gamma"]), d["end"]) == want:
-                print(f"{end} rule: the form built by the atlas ({path})")
-                return d
-    return None
-
-
 def form_and_errors(end: str, json_path: str, errors_path: str, lowest: float):
     """Build the form for ``end``, write it with its printed-digit check, and its errors against the
     compiled integrator on Omega in [lowest, FORM_RANGE[1]]; None (and the reason) where there is none."""
-    built = from_atlas(end)
-    reason = built.get("reason") if built is not None else why_none(end)
-    if reason is not None:   # no uniform form for this rule: the section says why
-        write_json(json_path, {"available": False, "reason": reason, **ex})
+    try:
+        skeleton(ex["alpha"], ex["gamma"], end)
+    except ParameterError as why:   # no uniform form for this rule: the section says why
+        write_json(json_path, {"available": False, "reason": why.allowed, **ex})
         write_csv(errors_path, pd.DataFrame(columns=["omega", "eps", "err_eps", "err_one_minus_eps"]))
         return None
-    form = (UniformForm.from_dict(built) if built is not None
-            else build_uniform(ex["alpha"], ex["gamma"], progress=print, end=end))
+    form = build_uniform(ex["alpha"], ex["gamma"], progress=print, end=end)
     om = np.geomspace(lowest, FORM_RANGE[1], 801)
     # what the manuscript prints (12 significant digits) must give the same eps to far below the bound
     printed = float(np.max(np.abs(form.rounded(PRINTED_DIGITS).eps(om) / form.eps(om) - 1)))
