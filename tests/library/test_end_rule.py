@@ -305,6 +305,7 @@ def test_sticking_below_the_references_range_is_refused_at_once(alpha, gamma):
 
 @pytest.mark.parametrize("alpha, gamma", [("3/2", "1/2"), ("3/2", "1"), ("1", "1/2"), ("2", "1"), ("3", "3/2"),
                                           ("5/2", "1")])
+@pytest.mark.slow   # the scipy reference's creep at 1e-12: 1-4 s a pair
 def test_overlap_law_rung_agrees_with_the_reference(alpha, gamma):
     """eps = C Omega^k answers at Omega <= 1e-8 within its bound, checked against the scipy
     reference down to its range's end; below it, where nothing else answers, it answers too."""
@@ -332,6 +333,7 @@ def test_a_creep_that_defeats_the_reference_is_not_called_sticking():
         collide("1", "1/2", 1e-10, end="overlap", rtol=1e-12)
 
 
+@pytest.mark.slow   # 5 s: the reference gets far into the creep before its Jacobian overflows
 def test_reference_refuses_an_eps_whose_return_overflows():
     """alpha = 23/12, gamma = 1/2 at Omega = 1e-10 (eps = 6e-170): the return's Jacobian 1/v^2
     overflows and scipy stopped with a ValueError traceback; now one line, and the law answers."""

@@ -80,8 +80,7 @@ def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, t
     v2 = -g * pair.m1 / (pair.m1 + pair.m2)
     x1 = -pair.R1 * 1.0
     x2 = x1 + gap
-    # a box the run cannot leave (neither sphere moves faster than g), as in the LIGGGHTS runner
-    x, v = _run(4.0 * gap + g * t_run, ntypes, f"""
+    x, v = _run(4.0 * gap, ntypes, f"""
 create_atoms {types[0]} single {x1!r} 0 0 units box
 create_atoms {types[1]} single {x2!r} 0 0 units box
 set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
@@ -100,7 +99,7 @@ def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: flo
     z = 0 head-on at speed g, starting at zero overlap. ``lines``: the pair style and coefficients
     and the wall's lines (a ``fix wall/gran`` at zplane 0.0 on a group holding the type), as a
     scene writes them."""
-    x, v = _run(8.0 * radius + g * t_run, ntypes, f"""
+    x, v = _run(8.0 * radius, ntypes, f"""
 create_atoms {atom_type} single 0 0 {radius!r} units box
 set atom 1 diameter {2 * radius!r} density {density!r}
 velocity all set 0 0 {-g!r} units box""", lines, 0.5 * radius, dt, t_run)
