@@ -4,7 +4,8 @@ A rung (:class:`Rung`) is one way to compute eps(Omega). It declares, for a :cla
 (exponents, Omegas, tolerance, end rule, what is built):
 
 * ``ends``: the end-of-contact rules it serves where they differ (alpha > gamma; where
-  alpha <= gamma the force never pulls, both rules give the same collision and every rung serves);
+  alpha <= gamma the force never pulls, both rules give the same collision and every rung serves,
+  except one of ``ends = ("overlap",)``: the overlap rule's own numbers exist only where they differ);
 * ``outside(req)``: why the Omegas are outside its domain (None when inside);
 * ``needs(req)``: the build it reads (a key of the ladder's builds, e.g. "calibration"), or None;
 * ``cost`` (seconds per point) and ``price(req)`` (expected seconds for the request);
@@ -147,6 +148,8 @@ class Rung:
     conditioned: bool = False
 
     def serves(self, req: Request) -> bool:
+        if "force" not in self.ends:   # the overlap rule's own numbers, which exist only where the rules differ
+            return req.rule == "overlap"
         return req.end in self.ends or not req.rules_differ
 
     def outside(self, req: Request) -> str | None:

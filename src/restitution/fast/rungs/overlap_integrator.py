@@ -20,9 +20,6 @@ class OverlapIntegrator(Rung):
     conditioned = True
     ends = ("overlap",)
 
-    def serves(self, req):
-        return req.rule == "overlap"
-
     def outside(self, req):
         wmin = stiff_omega_min(req.ex, None, "overlap")
         if req.lo < wmin or req.hi > OMEGA_MAX:

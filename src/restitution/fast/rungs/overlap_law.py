@@ -27,9 +27,6 @@ class OverlapLaw(Rung):
     name, cost = "overlap-law", 1e-7
     ends = ("overlap",)
 
-    def serves(self, req):
-        return req.rule == "overlap"
-
     def outside(self, req):
         if not req.ex.alpha < 2 * req.ex.gamma + 1:
             return "alpha >= 2 gamma + 1: the bodies can stick, no law"

@@ -19,9 +19,6 @@ class OverlapMaster(Rung):
     name, cost = "master", 4e-8
     ends = ("overlap",)
 
-    def serves(self, req):
-        return req.rule == "overlap"
-
     def outside(self, req):
         if req.lo < OMEGA_LO or req.hi > OMEGA_HI:
             return f"Omega outside [{OMEGA_LO:g}, {OMEGA_HI:g}] (the overlap curve's range)"
