@@ -232,7 +232,9 @@ def inner_constant(alpha, gamma, *, y_start: float | None = None) -> float:
     w0 = -Y ** (a - g) * (1.0 + (a - g) * Y ** e)
     from scipy import integrate
 
-    sol = integrate.solve_ivp(rhs, (Y, 0.0), [w0], method="Radau", jac=jac, rtol=1e-12,
+    from .radau import Radau
+
+    sol = integrate.solve_ivp(rhs, (Y, 0.0), [w0], method=Radau, jac=jac, rtol=1e-12,
                               atol=1e-14)
     if sol.status != 0:
         raise ArithmeticError(f"inner problem failed: {sol.message}")

@@ -115,7 +115,9 @@ def _integrate(fun, span, y0, *, rtol, atol, events=(), jac=None, stiff=False, i
     # imported here: scipy.integrate costs more than a command-line call that never integrates with it
     from scipy.integrate import solve_ivp
 
-    kwargs = {"method": "Radau", "jac": jac} if stiff else {"method": "DOP853"}
+    from .radau import Radau
+
+    kwargs = {"method": Radau, "jac": jac} if stiff else {"method": "DOP853"}
     if in_u:
         # Near u = 0 the right-hand side is flat (a factor u^(p-1)), so the first steps grow
         # large before the error estimate sees the curvature further out; capping them keeps the

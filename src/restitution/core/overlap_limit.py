@@ -62,6 +62,8 @@ def _integrate(a: float, g: float, rtol: float, shift: float) -> float:
     # imported here: core.uniform reads this module, and a one-point eps call must not pay for scipy.integrate
     from scipy import integrate
 
+    from .radau import Radau
+
     d = a - g
     m = 2.0 * g + 1.0 - a
     s0 = _start(m, d, shift)
@@ -73,7 +75,7 @@ def _integrate(a: float, g: float, rtol: float, shift: float) -> float:
         return [[math.exp(m * s) / W[0] ** 2 - d]]
 
     W0 = -1.0 - d * math.exp(-m * s0)
-    sol = integrate.solve_ivp(rhs_s, (s0, 0.0), [W0], method="Radau", jac=jac_s, rtol=rtol, atol=1e-15)
+    sol = integrate.solve_ivp(rhs_s, (s0, 0.0), [W0], method=Radau, jac=jac_s, rtol=rtol, atol=1e-15)
     if sol.status != 0 or not sol.y[0, -1] < 0.0:
         raise ArithmeticError(f"overlap inner problem (outer leg) failed: {sol.message}")
     w1 = float(sol.y[0, -1])  # y = 1: w = W
@@ -88,7 +90,7 @@ def _integrate(a: float, g: float, rtol: float, shift: float) -> float:
         return w[0]
     stalls.terminal = True
 
-    sol = integrate.solve_ivp(rhs_y, (1.0, 0.0), [w1], method="Radau", jac=jac_y, rtol=rtol, atol=1e-15,
+    sol = integrate.solve_ivp(rhs_y, (1.0, 0.0), [w1], method=Radau, jac=jac_y, rtol=rtol, atol=1e-15,
                               events=[stalls])
     if sol.status != 0:
         raise ArithmeticError(f"overlap inner problem stalls before y = 0 ({sol.message}): the bodies stick")
