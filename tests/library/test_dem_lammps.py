@@ -97,3 +97,19 @@ def test_the_time_step_study_runs_lammps_own_scheme(limit):
         t_c = contact.contact_time(1.0)
         got = lammps_eps(PAIR, lammps_pair_coeff(**setting), 1.0, t_c / 100, 1.5 * t_c)
         assert math.isclose(got, verlet_eps(contact, 1.0, t_c / 100), rel_tol=1e-11)
+
+
+def test_a_run_long_past_the_contact_ends_when_the_bodies_part():
+    """Runs end at separation: after it no force changes a velocity, and running on carried a fast
+    sphere out of the fixed box, where LAMMPS stops on a lost atom (make fuzz: spheres of 0.08 and
+    0.1 m radius meeting at 115 m/s). Failed before: 'Lost atoms: original 2 current 1'."""
+    from restitution.dem.lammps import lammps_wall_eps
+    setting = _setting({"normal": "hertz/material", "E": 5e7, "nu": 0.3}, "viscoelastic", False)
+    contact, line = lammps_contact(PAIR, **setting), lammps_pair_coeff(**setting)
+    t_c = contact.contact_time(10.0)
+    short, long = (lammps_eps(PAIR, line, 10.0, t_c / 200, k * t_c) for k in (1.5, 400.0))
+    assert short == long and 0.0 < short < 1.0
+    wall = (f"pair_style granular\n{line}\ngroup all_ type 1\n"
+            f"fix floor all_ wall/gran granular {line.split(maxsplit=3)[3]} zplane 0.0 NULL")
+    short, long = (lammps_wall_eps(PAIR.R1, 2500.0, wall, 10.0, t_c / 200, k * t_c) for k in (1.5, 400.0))
+    assert short == long and 0.0 < short < 1.0
