@@ -24,9 +24,10 @@ SAME_BITS = textwrap.dedent("""
     from restitution.fast.integrator import INTERPRETED_MAX_POINTS, collide_fast
     from restitution.fast.panels import chebyshev_panels_eval
     from restitution.core.exponents import as_exponents
-    from restitution.fast import jit
+    from restitution.fast import integrator, jit
 
     jit.PLAIN_BUDGET = float("inf")   # every small request below in plain Python, however long
+    integrator.INTERPRETED_MAX_POINTS = float("inf")   # the creeping returns too
     om = np.geomspace(1e-4, 1e6, INTERPRETED_MAX_POINTS)
     pairs = [("3/2", "1"), ("3/2", "1/2"), ("5/2", "1"), ("1", "3/2"), ("2", "3/4")]
     plain = {}
@@ -40,6 +41,7 @@ SAME_BITS = textwrap.dedent("""
     plain_panels = chebyshev_panels_eval(wide, -2.0, 0.5, coef, visc, elas)
     assert "numba" not in sys.modules, "a small request started numba"
 
+    integrator.INTERPRETED_MAX_POINTS = INTERPRETED_MAX_POINTS
     for (a, g, overlap), got in plain.items():   # now compiled: enough points to pass the limit
         ex = as_exponents(a, g)
         many = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.tile(om, 20), 1e-12, overlap)[: om.size]
@@ -160,3 +162,16 @@ def test_many_small_requests_start_numba_once_plain_python_took_its_start(tmp_pa
     proc = subprocess.run([sys.executable, "-c", MANY_SMALL], capture_output=True, text=True, timeout=600, env=env)
     assert proc.returncode == 0, proc.stderr[-3000:]
     assert 2 <= int(proc.stdout.strip()) < 1000
+
+
+def test_a_creeping_return_counts_as_many_points():
+    """The overlap rule's creeping return at small Omega takes seconds in plain Python (the uniform
+    build's three law checks at 1e-3..4e-3 took 1.6 s for alpha = 5/2, gamma = 1, against 0.5 s for
+    numba's start): it counts by its estimated cost, so such requests are compiled at once."""
+    from restitution.fast.integrator import INTERPRETED_MAX_POINTS, _plain_work
+    law_check = np.array([1e-3, 2e-3, 4e-3])
+    assert _plain_work(law_check, 1e-14, True, 5, 2) > INTERPRETED_MAX_POINTS
+    assert _plain_work(np.array([1e-3]), 1e-10, True, 5, 2) <= INTERPRETED_MAX_POINTS   # 0.1-0.2 s plain
+    assert _plain_work(np.array([1e-4]), 1e-10, True, 3, 2) > INTERPRETED_MAX_POINTS
+    assert _plain_work(np.array([1e-4]), 1e-10, False, 2, 3) > INTERPRETED_MAX_POINTS   # alpha < gamma creeps too
+    assert _plain_work(law_check, 1e-14, False, 3, 2) == 3                             # the force rule: points

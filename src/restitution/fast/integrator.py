@@ -663,7 +663,7 @@ def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12, overlap:
         rtol = min(rtol, OVERLAP_RTOL_MAX)
     threads = _threads(om.size)
     if threads == 1:
-        call_kernel(om.size, INTERPRETED_MAX_POINTS, _collide_many, law_parameters(int(p), int(qa), int(qg), 0.0),
+        call_kernel(_plain_work(om, rtol, overlap, qa, qg), INTERPRETED_MAX_POINTS, _collide_many, law_parameters(int(p), int(qa), int(qg), 0.0),
                     om, float(rtol), res, bool(overlap))
         return res
     # every thread its own parameter array (the kernel writes Omega into it) and every threads-th
@@ -684,6 +684,25 @@ def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12, overlap:
 #: Up to this many points a process that has not started numba integrates in plain Python (about
 #: 10 ms a point against most of a second for numba's start; for a while: jit.PLAIN_BUDGET).
 INTERPRETED_MAX_POINTS = 8
+#: A creeping return's estimated plain-Python seconds per unit of that limit: 8 units, 0.32 s, stay
+#: below numba's start with its compiled run.
+PLAIN_POINT_SECONDS = 0.04
+
+
+def _plain_work(om: np.ndarray, rtol: float, overlap: bool, qa: int, qg: int) -> float:
+    """The points' plain-Python cost, counted against INTERPRETED_MAX_POINTS. A creeping
+    return (the overlap rule, and the force rule where alpha <= gamma) costs more the smaller Omega
+    and rtol; in plain Python, for (5/2, 1), (3/2, 1) and (3/2, 1/2) under the overlap rule, one point
+    took 24-39 ms at Omega = 1e-2, 0.10-0.20 s at 1e-3 and 0.39-0.75 s at 1e-4 with rtol 1e-10, and
+    80-120 ms, 0.35-0.88 s and 1.6-4.3 s with rtol 1e-14, against 0.5 s for numba's start and the
+    compiled run. The estimate below lies above each of those; such a point counts as one per
+    PLAIN_POINT_SECONDS of it, an ordinary point (about 10 ms) as one."""
+    if not (overlap or qa <= qg):
+        return om.size
+    seconds = 0.008 * np.maximum(1.0, 0.1 / om) ** 0.75 * max(1.0, 1e-10 / rtol) ** 0.15
+    return float(np.sum(np.maximum(1.0, seconds / PLAIN_POINT_SECONDS)))
+
+
 #: Points from which collide_fast shares the work between threads (the kernel releases the GIL);
 #: below, starting threads costs more than it saves.
 THREAD_MIN_POINTS = 64
