@@ -656,13 +656,13 @@ def liggghts_scene_cases(draw):
 
 
 def check_liggghts_scene_case(scene) -> list[dict]:
-    """Every met pair contact of a LIGGGHTS scene in the real engine (walls are not run: the runner
-    holds two spheres), head-on at the lowest and highest listed speed with the scene's own lines:
-    extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, at the listed dt within the
-    scene's tolerance."""
+    """Every met contact of a LIGGGHTS scene in the real engine (two spheres, or a sphere onto a
+    primitive wall of the wall's atom type), head-on at the lowest and highest listed speed with the
+    scene's own lines: extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, at the
+    listed dt within the scene's tolerance."""
     from restitution.dem.codes import Pair
     from restitution.dem.extrapolate import richardson
-    from restitution.dem.liggghts import liggghts_eps_runs
+    from restitution.dem.liggghts import liggghts_eps_runs, liggghts_wall_eps_runs
 
     res, refusal = _answer(scene, "liggghts scene")
     if refusal:
@@ -674,21 +674,24 @@ def check_liggghts_scene_case(scene) -> list[dict]:
     for c in res["contacts"]:
         rec = {"method": f"liggghts scene: {c['chosen'] or 'none'}", "rule": c["end"], "ratio": 0.0, "case": scene,
                "contact": f"{c['a']}-{c['b']}"}
-        if c["chosen"] is None or not c["overlap_ok"] or c["b"].startswith("wall:"):
+        if c["chosen"] is None or not c["overlap_ok"]:
             records.append({**rec, "status": "refused"})
             continue
-        a, b = types[c["types"][0]], types[c["types"][1]]
-        pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
+        a, b = types[c["types"][0]], types.get(c["types"][1])   # b: None for a wall (its own atom type)
         ends = (0, len(c["speeds"]) - 1)
         runs = []
         for i in ends:
             g, t_c = c["speeds"][i], c["contact_time"][i]
             t_run = 3.0 * t_c + 2.0 * c["max_overlap"][i] / (c["eps"][i] * g)
-            runs += [(lines, g, c["dt"], t_run, tuple(c["types"]))]
-            runs += [(lines, g, t_c / SCENE_STEPS / m, t_run, tuple(c["types"])) for m in (1, 2, 4)]
+            runs += [(lines, g, c["dt"], t_run, *c["types"])]
+            runs += [(lines, g, t_c / SCENE_STEPS / m, t_run, *c["types"]) for m in (1, 2, 4)]
         worst, detail = 0.0, ""
         try:
-            eps = liggghts_eps_runs(pair, runs)
+            if b is None:
+                eps = liggghts_wall_eps_runs(a["radius"], a["density"], runs)
+            else:
+                pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
+                eps = liggghts_eps_runs(pair, [(*r[:4], tuple(r[4:])) for r in runs])
         except Exception as exc:  # noqa: BLE001
             worst, detail = math.inf, f"LIGGGHTS: {_engine_error(exc)}"
             eps = []

@@ -1,6 +1,7 @@
 """A LIGGGHTS scene's generated lines in the real engine (Debian package liggghts): the
-fix property/global matrices of every atom type, two spheres colliding head-on, at the scene's time
-step within its tolerance of the predicted eps, and extrapolated to dt = 0 within 1e-6.
+fix property/global matrices of every atom type, two spheres colliding head-on, or one sphere
+falling onto a flat wall of the wall's atom type, at the scene's time step within its tolerance of
+the predicted eps, and extrapolated to dt = 0 within 1e-6.
 
 Every pair contact: LIGGGHTS refuses a system whose atom types in use do not start at 1 ("Atom types
 must start from 1 for granular simulations"), so a run of two later types holds a resting type-1
@@ -11,7 +12,7 @@ import pytest
 
 from restitution.dem.codes import Pair
 from restitution.dem.extrapolate import richardson
-from restitution.dem.liggghts import available, liggghts_eps_runs
+from restitution.dem.liggghts import available, liggghts_eps_runs, liggghts_wall_eps_runs
 from restitution.dem.scene import answer_scene
 from restitution.dem.scene_file import scene_from_dict
 
@@ -42,3 +43,24 @@ def test_liggghts_gives_the_predicted_eps(limit_force):
             assert abs(richardson(*eps[1:], c["gamma"]) / predicted - 1) <= 1e-6, (c["a"], c["b"], g)
             checked += 1
     assert checked == 2 * sum(not c["b"].startswith("wall:") for c in res["contacts"]) > 6
+
+
+@pytest.mark.parametrize("limit_force", [False, True], ids=["limitForce off", "limitForce on"])
+def test_liggghts_gives_the_predicted_eps_at_the_wall(limit_force):
+    """The wall contacts: a primitive wall (fix wall/gran ... primitive type W zplane 0.0) with the
+    scene's model, W the wall's atom type in the scene's lines; before, only LAMMPS ran them."""
+    res = answer_scene(scene_from_dict(_liggghts_scene(limit_force)))
+    walls = [c for c in res["contacts"] if c["b"].startswith("wall:")]
+    n = len(res["types"]) + len({c["types"][1] for c in walls})
+    lines = "\n".join([f"create_box {n} box"] + [ln for ln in res["input_lines"] if not ln.startswith("#")])
+    types = {t["number"]: t for t in res["types"]}
+    for c in walls:
+        t = types[c["types"][0]]
+        for i in (0, len(c["speeds"]) - 1):
+            g, t_c, predicted = c["speeds"][i], c["contact_time"][i], c["eps"][i]
+            at = (lines, g, c["dt"], 1.5 * t_c, *c["types"])
+            eps = liggghts_wall_eps_runs(t["radius"], t["density"], [at] + [
+                (lines, g, t_c / 1000 / m, 1.5 * t_c, *c["types"]) for m in (1, 2, 4)])
+            assert abs(eps[0] - predicted) <= res["tolerance"], (c["a"], c["b"], g, eps[0], predicted)
+            assert abs(richardson(*eps[1:], c["gamma"]) / predicted - 1) <= 1e-6, (c["a"], c["b"], g, eps, predicted)
+    assert len(walls) == 3

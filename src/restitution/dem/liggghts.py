@@ -1,4 +1,5 @@
-"""Two spheres colliding head-on in the real LIGGGHTS engine (Debian package ``liggghts``).
+"""Two spheres colliding head-on, or a sphere and a flat wall, in the real LIGGGHTS engine (Debian
+package ``liggghts``).
 
 One input file holds every requested collision, separated by LIGGGHTS' ``clear`` (the engine takes
 about a second to start); each run prints its final velocities on a marked line, read back here.
@@ -18,7 +19,8 @@ from pathlib import Path
 from .codes import Pair
 from .extrapolate import richardson
 
-__all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "liggghts_states", "liggghts_eps_extrapolated"]
+__all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "liggghts_states", "liggghts_eps_extrapolated",
+           "liggghts_wall_eps_runs"]
 
 _MARK = "RESTITUTION-RESULT"
 
@@ -61,23 +63,8 @@ def _run_block(pair: Pair, contact_lines: str, g: float, dt: float, steps: int, 
     bystander = "" if 1 in (first, second) else f"""
 create_atoms 1 single 0 {3 * gap!r} 0 units box
 set atom 3 diameter {pair.R1!r} density {rho[0]!r}"""
-    # touching at zero overlap: no partial first step biases the result. The box shrink-wraps
-    # (boundary m, at least the box given): a fixed one lets a sphere leave it, and LIGGGHTS drops
-    # such an atom without a word, its velocity then reading 0 (make fuzz found eps = 0.239 reported
-    # for a contact of eps 0.871, the lighter sphere gone after a deep overlap); one as large as the
-    # whole run's travel would make neighbour bins without end on long runs
-    return f"""
-atom_style granular
-atom_modify map array
-boundary m m m
-newton off
-communicate single vel yes
-units si
-region box block {-box!r} {box!r} {-box!r} {box!r} {-box!r} {box!r} units box
-{contact_lines}
-neighbor {0.5 * gap!r} bin
-neigh_modify delay 0
-timestep {dt!r}
+    # touching at zero overlap: no partial first step biases the result
+    return _prologue(box, contact_lines, 0.5 * gap, dt) + f"""
 create_atoms {first} single {-pair.R1!r} 0 0 units box
 create_atoms {second} single {pair.R2!r} 0 0 units box
 set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
@@ -87,7 +74,31 @@ set atom 2 vx {v2!r}
 fix integr all nve/sphere
 variable rel equal vx[1]-vx[2]
 variable gap equal x[2]-x[1]
-variable n equal atoms
+""" + _epilogue(steps, tag)
+
+
+def _prologue(box: float, contact_lines: str, neighbor: float, dt: float) -> str:
+    # The box shrink-wraps (boundary m, at least the box given): a fixed one lets a sphere leave it,
+    # and LIGGGHTS drops such an atom without a word, its velocity then reading 0 (make fuzz found
+    # eps = 0.239 reported for a contact of eps 0.871, the lighter sphere gone after a deep overlap);
+    # one as large as the whole run's travel would make neighbour bins without end on long runs
+    return f"""
+atom_style granular
+atom_modify map array
+boundary m m m
+newton off
+communicate single vel yes
+units si
+region box block {-box!r} {box!r} {-box!r} {box!r} {-box!r} {box!r} units box
+{contact_lines}
+neighbor {neighbor!r} bin
+neigh_modify delay 0
+timestep {dt!r}"""
+
+
+def _epilogue(steps: int, tag: int) -> str:
+    """Run, then print the variables rel and gap and the atom count before and after."""
+    return f"""variable n equal atoms
 variable n0 equal ${{n}}
 thermo {steps}
 run {steps}
@@ -110,8 +121,54 @@ def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tup
     """(relative velocity v1 - v2, centre distance) at the end of each case (contact_lines, g, dt,
     t_run[, types]), in one LIGGGHTS process; ``types``: the two spheres' atom types when
     contact_lines (starting with create_box N) define more than two."""
-    blocks = [_run_block(pair, case[0], case[1], case[2], int(math.ceil(case[3] / case[2])), i, *case[4:])
-              for i, case in enumerate(cases)]
+    return _run([_run_block(pair, case[0], case[1], case[2], int(math.ceil(case[3] / case[2])), i, *case[4:])
+                 for i, case in enumerate(cases)], timeout)
+
+
+def _wall_line(contact_lines: str, wall_type: int) -> str:
+    """A flat wall at z = 0 of atom type ``wall_type`` with the contact model of the deck's
+    ``pair_style gran`` line: its model_type/name pairs first, the plane, then the model keywords
+    (limitForce, ...), the order fix wall/gran demands."""
+    words = next(ln.split()[2:] for ln in contact_lines.splitlines() if ln.startswith("pair_style gran"))
+    k = 0
+    while k + 1 < len(words) and words[k] in ("model", "tangential", "cohesion", "rolling_friction", "surface"):
+        k += 2
+    return (f"fix wall all wall/gran {' '.join(words[:k])} primitive type {wall_type} zplane 0.0 "
+            + " ".join(words[k:])).rstrip()
+
+
+def _wall_block(radius: float, density: float, contact_lines: str, g: float, dt: float, steps: int, tag: int,
+                atom_type: int, wall_type: int) -> str:
+    # a resting type-1 sphere out of reach where the falling one has another type (types must start
+    # from 1, see _run_block); the falling one starts touching the plane
+    bystander = "" if atom_type == 1 else f"""
+create_atoms 1 single {4 * radius!r} {4 * radius!r} {4 * radius!r} units box
+set atom 2 diameter {radius!r} density {density!r}"""
+    return _prologue(8.0 * radius, contact_lines, 0.5 * radius, dt) + f"""
+{_wall_line(contact_lines, wall_type)}
+create_atoms {atom_type} single 0 0 {radius!r} units box
+set atom 1 diameter {2 * radius!r} density {density!r}{bystander}
+set atom 1 vz {-g!r}
+fix integr all nve/sphere
+variable rel equal vz[1]
+variable gap equal z[1]
+""" + _epilogue(steps, tag)
+
+
+def liggghts_wall_eps_runs(radius: float, density: float, cases: list, timeout: float = 600.0) -> list[float]:
+    """eps = (speed after) / g of a sphere falling head-on at speed g onto a flat wall, for each case
+    (contact_lines, g, dt, t_run, atom_type, wall_type) in one LIGGGHTS process: contact_lines are a
+    scene's (create_box N and its fix property/global and pair_style lines), the wall has atom type
+    wall_type and the deck's contact model."""
+    states = _run([_wall_block(radius, density, case[0], case[1], case[2], int(math.ceil(case[3] / case[2])), i,
+                               case[4], case[5]) for i, case in enumerate(cases)], timeout)
+    if any(z <= radius for _, z in states):
+        raise ArithmeticError("the sphere had not left the wall at the end of the LIGGGHTS run")
+    return [v / case[1] for case, (v, _) in zip(cases, states)]
+
+
+def _run(blocks: list[str], timeout: float) -> list[tuple]:
+    """Run the blocks in one LIGGGHTS process; each block's printed (rel, gap)."""
     # errors="replace": a failing LIGGGHTS can print stray bytes; its message must still reach the user
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "in.collide"
@@ -128,9 +185,9 @@ def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tup
                 lost.append(int(tag))
     if lost:
         raise RuntimeError(f"liggghts lost atoms from the box in run(s) {lost}: no eps from them")
-    if proc.returncode != 0 or len(found) != len(cases):
+    if proc.returncode != 0 or len(found) != len(blocks):
         raise RuntimeError(f"liggghts failed (status {proc.returncode}): {(proc.stdout + proc.stderr).strip()[-2000:]}")
-    return [found[i] for i in range(len(cases))]
+    return [found[i] for i in range(len(blocks))]
 
 
 def liggghts_eps_extrapolated(pair: Pair, contact_lines: str, speeds, t_c: dict, gamma, steps: int = 2000) -> dict:
