@@ -589,6 +589,18 @@ def _against(c, g, listed, eps0, at_dt, tolerance, engine) -> tuple[float, str]:
                    f"{at_dt:.8g} at the listed dt (tolerance {tolerance:g})")
 
 
+def _met_contacts(res, scene, label: str, records: list):
+    """(contact, its record) for each contact of a scene's answer that is met and run in the engine;
+    the others go to ``records`` as refused (no model, or an overlap that breaks the geometry)."""
+    for c in res["contacts"]:
+        rec = {"method": f"{label}: {c['chosen'] or 'none'}", "rule": c["end"], "ratio": 0.0, "case": scene,
+               "contact": f"{c['a']}-{c['b']}"}
+        if c["chosen"] is None or not c["overlap_ok"]:
+            records.append({**rec, "status": "refused"})
+        else:
+            yield c, rec
+
+
 def check_scene_case(scene) -> list[dict]:
     """Every met contact of the scene in the real LAMMPS engine, head-on at its lowest and highest
     listed speed (a pair of spheres, or a sphere onto the wall), the scene's whole deck loaded:
@@ -609,12 +621,7 @@ def check_scene_case(scene) -> list[dict]:
     deck = "\n".join(res["input_lines"] + fill)
     pairs = "\n".join([ln for ln in res["input_lines"] if ln.startswith("pair_coeff")] + fill)
     records = []
-    for c in res["contacts"]:
-        rec = {"method": f"scene: {c['chosen'] or 'none'}", "rule": c["end"], "ratio": 0.0, "case": scene,
-               "contact": f"{c['a']}-{c['b']}"}
-        if c["chosen"] is None or not c["overlap_ok"]:
-            records.append({**rec, "status": "refused"})
-            continue
+    for c, rec in _met_contacts(res, scene, "scene", records):
         a = types[c["types"][0]]
         worst, detail = 0.0, ""
         for i in (0, len(c["speeds"]) - 1):
@@ -671,12 +678,7 @@ def check_liggghts_scene_case(scene) -> list[dict]:
     n = len(types) + len({c["types"][1] for c in res["contacts"] if c["b"].startswith("wall:")})
     lines = "\n".join([f"create_box {n} box"] + [ln for ln in res["input_lines"] if not ln.startswith("#")])
     records = []
-    for c in res["contacts"]:
-        rec = {"method": f"liggghts scene: {c['chosen'] or 'none'}", "rule": c["end"], "ratio": 0.0, "case": scene,
-               "contact": f"{c['a']}-{c['b']}"}
-        if c["chosen"] is None or not c["overlap_ok"]:
-            records.append({**rec, "status": "refused"})
-            continue
+    for c, rec in _met_contacts(res, scene, "liggghts scene", records):
         a, b = types[c["types"][0]], types.get(c["types"][1])   # b: None for a wall (its own atom type)
         ends = (0, len(c["speeds"]) - 1)
         runs = []
