@@ -526,6 +526,20 @@ SCENE_EXTRAPOLATED = 1e-5
 SCENE_STEPS = 2000
 
 
+def _extrapolated(three, gamma, listed: float) -> float:
+    """eps extrapolated to dt = 0 from ``three(steps)``, the runs at t_c/steps, /2, /4; once more from
+    four times the steps where the first misses the listed eps by over SCENE_EXTRAPOLATED. A heavily
+    damped contact leaves more than that at 2000 steps (make fuzz, seed 7373: a LIGGGHTS pair listed
+    at eps = 0.07 extrapolated to 0.0700008 from 2000 steps, 0.07000003 from 8000, 0.070000002 from
+    32000): the engine's eps converges to the listed one, the first extrapolation had not."""
+    from restitution.dem.extrapolate import richardson
+
+    eps0 = richardson(*three(SCENE_STEPS), gamma)
+    if abs(eps0 / listed - 1.0) > SCENE_EXTRAPOLATED:
+        eps0 = richardson(*three(4 * SCENE_STEPS), gamma)
+    return eps0
+
+
 @st.composite
 def scene_cases(draw):
     """A random LAMMPS scene: two materials (one radius each, 0.1 to 100 mm) and maybe a wall of
@@ -608,7 +622,6 @@ def check_scene_case(scene) -> list[dict]:
     the scene's tolerance. A contact whose overlap breaks the geometry is reported not met and is
     not run; a pair without a model gets a placeholder line so that LAMMPS takes the deck."""
     from restitution.dem.codes import Pair
-    from restitution.dem.extrapolate import richardson
     from restitution.dem.lammps import lammps_eps, lammps_wall_eps
 
     res, refusal = _answer(scene, "scene")
@@ -637,7 +650,8 @@ def check_scene_case(scene) -> list[dict]:
                 run = lambda dt: lammps_eps(pair, pairs, g, dt, t_run, types=tuple(c["types"]),  # noqa: E731
                                             ntypes=len(types))
             try:
-                eps0 = richardson(*(run(t_c / SCENE_STEPS / m) for m in (1, 2, 4)), c["gamma"])
+                eps0 = _extrapolated(lambda steps: [run(t_c / steps / m) for m in (1, 2, 4)],  # noqa: B023
+                                     c["gamma"], listed)
                 at_dt = run(c["dt"])
             except Exception as exc:  # noqa: BLE001
                 worst, detail = math.inf, f"LAMMPS at {g:.4g} m/s: {str(exc).splitlines()[0]}"
@@ -668,7 +682,6 @@ def check_liggghts_scene_case(scene) -> list[dict]:
     scene's own lines: extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, at the
     listed dt within the scene's tolerance."""
     from restitution.dem.codes import Pair
-    from restitution.dem.extrapolate import richardson
     from restitution.dem.liggghts import liggghts_eps_runs, liggghts_wall_eps_runs
 
     res, refusal = _answer(scene, "liggghts scene")
@@ -687,22 +700,25 @@ def check_liggghts_scene_case(scene) -> list[dict]:
             t_run = 3.0 * t_c + 2.0 * c["max_overlap"][i] / (c["eps"][i] * g)
             runs += [(lines, g, c["dt"], t_run, *c["types"])]
             runs += [(lines, g, t_c / SCENE_STEPS / m, t_run, *c["types"]) for m in (1, 2, 4)]
+        pair = None if b is None else Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
+
+        def engine(runs):
+            if pair is None:
+                return liggghts_wall_eps_runs(a["radius"], a["density"], runs)  # noqa: B023
+            return liggghts_eps_runs(pair, [(*r[:4], tuple(r[4:])) for r in runs])  # noqa: B023
         worst, detail = 0.0, ""
         try:
-            if b is None:
-                eps = liggghts_wall_eps_runs(a["radius"], a["density"], runs)
-            else:
-                pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
-                eps = liggghts_eps_runs(pair, [(*r[:4], tuple(r[4:])) for r in runs])
+            eps = engine(runs)
+            for k, i in enumerate(ends):
+                g, listed, t_c, t_run = c["speeds"][i], c["eps"][i], c["contact_time"][i], runs[4 * k][3]
+                first = eps[4 * k + 1: 4 * k + 4]
+                eps0 = _extrapolated(lambda steps: first if steps == SCENE_STEPS else engine(  # noqa: B023
+                    [(lines, g, t_c / steps / m, t_run, *c["types"]) for m in (1, 2, 4)]), c["gamma"], listed)
+                ratio, text = _against(c, g, listed, eps0, eps[4 * k], res["tolerance"], "LIGGGHTS")
+                if ratio > worst:
+                    worst, detail = ratio, text
         except Exception as exc:  # noqa: BLE001
             worst, detail = math.inf, f"LIGGGHTS: {_engine_error(exc)}"
-            eps = []
-        for k, i in enumerate(ends if eps else ()):
-            g, listed = c["speeds"][i], c["eps"][i]
-            at_dt, eps0 = eps[4 * k], richardson(*eps[4 * k + 1: 4 * k + 4], c["gamma"])
-            ratio, text = _against(c, g, listed, eps0, at_dt, res["tolerance"], "LIGGGHTS")
-            if ratio > worst:
-                worst, detail = ratio, text
         records.append(_verdict(rec, worst, detail))
     return records
 
