@@ -129,7 +129,9 @@ def _wall_line(contact_lines: str, wall_type: int) -> str:
     """A flat wall at z = 0 of atom type ``wall_type`` with the contact model of the deck's
     ``pair_style gran`` line: its model_type/name pairs first, the plane, then the model keywords
     (limitForce, ...), the order fix wall/gran demands."""
-    words = next(ln.split()[2:] for ln in contact_lines.splitlines() if ln.startswith("pair_style gran"))
+    words = next((ln.split()[2:] for ln in contact_lines.splitlines() if ln.startswith("pair_style gran")), None)
+    if words is None:
+        raise ValueError("the contact lines have no pair_style gran line: the wall's model is unknown")
     k = 0
     while k + 1 < len(words) and words[k] in ("model", "tangential", "cohesion", "rolling_friction", "surface"):
         k += 2
