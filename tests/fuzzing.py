@@ -526,17 +526,18 @@ SCENE_EXTRAPOLATED = 1e-5
 SCENE_STEPS = 2000
 
 
-def _extrapolated(three, gamma, listed: float) -> float:
-    """eps extrapolated to dt = 0 from ``three(steps)``, the runs at t_c/steps, /2, /4; once more from
-    four times the steps where the first misses the listed eps by over SCENE_EXTRAPOLATED. A heavily
-    damped contact leaves more than that at 2000 steps (make fuzz, seed 7373: a LIGGGHTS pair listed
-    at eps = 0.07 extrapolated to 0.0700008 from 2000 steps, 0.07000003 from 8000, 0.070000002 from
-    32000): the engine's eps converges to the listed one, the first extrapolation had not."""
+def _extrapolated(first, finer, gamma, listed: float) -> float:
+    """eps extrapolated to dt = 0 from ``first``, the runs at t_c/SCENE_STEPS, /2, /4; where that
+    misses the listed eps by over SCENE_EXTRAPOLATED, from ``finer()``, the same at four times the
+    steps. A heavily damped contact leaves more than that at 2000 steps (make fuzz, seed 7373: a
+    LIGGGHTS pair listed at eps = 0.07 extrapolated to 0.0700008 from 2000 steps, 0.07000003 from
+    8000, 0.070000002 from 32000): the engine's eps converges to the listed one, the first
+    extrapolation had not."""
     from restitution.dem.extrapolate import richardson
 
-    eps0 = richardson(*three(SCENE_STEPS), gamma)
+    eps0 = richardson(*first, gamma)
     if abs(eps0 / listed - 1.0) > SCENE_EXTRAPOLATED:
-        eps0 = richardson(*three(4 * SCENE_STEPS), gamma)
+        eps0 = richardson(*finer(), gamma)
     return eps0
 
 
@@ -650,8 +651,8 @@ def check_scene_case(scene) -> list[dict]:
                 run = lambda dt: lammps_eps(pair, pairs, g, dt, t_run, types=tuple(c["types"]),  # noqa: E731
                                             ntypes=len(types))
             try:
-                eps0 = _extrapolated(lambda steps: [run(t_c / steps / m) for m in (1, 2, 4)],  # noqa: B023
-                                     c["gamma"], listed)
+                three = lambda steps: [run(t_c / steps / m) for m in (1, 2, 4)]  # noqa: E731, B023
+                eps0 = _extrapolated(three(SCENE_STEPS), lambda: three(4 * SCENE_STEPS), c["gamma"], listed)
                 at_dt = run(c["dt"])
             except Exception as exc:  # noqa: BLE001
                 worst, detail = math.inf, f"LAMMPS at {g:.4g} m/s: {str(exc).splitlines()[0]}"
@@ -711,9 +712,9 @@ def check_liggghts_scene_case(scene) -> list[dict]:
             eps = engine(runs)
             for k, i in enumerate(ends):
                 g, listed, t_c, t_run = c["speeds"][i], c["eps"][i], c["contact_time"][i], runs[4 * k][3]
-                first = eps[4 * k + 1: 4 * k + 4]
-                eps0 = _extrapolated(lambda steps: first if steps == SCENE_STEPS else engine(  # noqa: B023
-                    [(lines, g, t_c / steps / m, t_run, *c["types"]) for m in (1, 2, 4)]), c["gamma"], listed)
+                finer = lambda: engine([(lines, g, t_c / (4 * SCENE_STEPS) / m, t_run, *c["types"])  # noqa: E731, B023
+                                        for m in (1, 2, 4)])
+                eps0 = _extrapolated(eps[4 * k + 1: 4 * k + 4], finer, c["gamma"], listed)
                 ratio, text = _against(c, g, listed, eps0, eps[4 * k], res["tolerance"], "LIGGGHTS")
                 if ratio > worst:
                     worst, detail = ratio, text

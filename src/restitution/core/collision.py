@@ -504,10 +504,10 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
 
     ``alpha``, ``gamma``: anything Exponents.parse accepts (or an Exponents as ``alpha`` with
     ``gamma=None``). ``omega``: in OMEGA_RANGE. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below
-    2.2e-14; the overlap rule runs at OVERLAP_RTOL_MAX at most). ``t_eval``: tau samples for ``trajectory``. ``end``: the end-of-contact rule
-    (results.END_RULES), the same relative accuracy for both, however small eps (checked against
-    mpmath down to eps = 5e-36). Under "overlap" the bodies may provably never separate
-    (StickError, see _Trap and _check_separates).
+    2.2e-14; the overlap rule runs at OVERLAP_RTOL_MAX at most). ``t_eval``: tau samples for
+    ``trajectory``. ``end``: the end-of-contact rule (results.END_RULES), the same relative accuracy
+    for both, however small eps (checked against mpmath down to eps = 5e-36). Under "overlap" the
+    bodies may provably never separate (StickError, see _Trap and _check_separates).
     """
     ex = as_exponents(alpha, gamma)
     omega = _check_omega("omega", omega)
@@ -515,10 +515,9 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
     t_eval = _check_t_eval(t_eval)
     rule = end_rule(end)
     overlap = rule == "overlap"
-    if overlap:
-        rtol = min(rtol, OVERLAP_RTOL_MAX)
     law = Law.of(ex, omega, +1)
     if overlap:
+        rtol = min(rtol, OVERLAP_RTOL_MAX)
         _check_separates(ex, law)
 
     pieces: list[Piece] = []
