@@ -32,7 +32,10 @@ def dissipated(pieces, law) -> float:
     so the integrand is p u^(q_gamma + p - 1) |v|."""
     total = 0.0
     for piece in pieces:
-        ts = np.unique(np.clip(np.asarray(piece.sol.ts, dtype=float), piece.lo, piece.hi))
+        ts = np.clip(np.asarray(piece.sol.ts, dtype=float), piece.lo, piece.hi)
+        # a leg may end a hair beyond its last step (collision._to_force_end): its dense output
+        # polynomial reaches there
+        ts = np.unique(np.concatenate([ts, [piece.lo, piece.hi]]))
         if ts.size < 2:
             continue
         mid, half = 0.5 * (ts[1:] + ts[:-1]), 0.5 * (ts[1:] - ts[:-1])
