@@ -157,7 +157,7 @@ def _run_scene(args, out) -> int:
 
 def add_deck_subcommand(subparsers) -> None:
     d = subparsers.add_parser(
-        "deck", help="the eps a LAMMPS or LIGGGHTS input deck really gives, for every type pair",
+        "deck", help="the eps a LAMMPS or LIGGGHTS input deck really gives, for every type pair and flat wall",
         description="Reads pair_style granular (LAMMPS) or pair_style gran model hertz|hooke (LIGGGHTS) decks. "
                     "One --g: five speeds over two decades around it; several: those speeds.")
     d.add_argument("file", help="the input script")
@@ -200,24 +200,28 @@ def _run_deck(args, out) -> None:
     for row in res["unknown_lines"]:     # never guessed: each named, one per line
         where = f"{row['file']} line {row['line']}" if row["file"] else f"line {row['line']}"
         print(f"restitution deck: {where} {row['why']}: {row['text']}", file=sys.stderr)
-    for p in res["pairs"]:               # no eps there: said on stderr too, where a --json reader looks
+    rows = [(p, f"types {p['types'][0]} {p['types'][1]}", "R1 + R2", "the spheres through each other",
+             "the spheres together") for p in res["pairs"]]
+    rows += [(w, f"type {w['types'][0]} on wall {w['wall']}", "the radius", "the sphere through the wall",
+              "the sphere on the wall") for w in res["walls"]]
+    for p, name, reach, pushed, _ in rows:   # no eps there: said on stderr too, where a --json reader looks
         through = [g for g, t in zip(p["speeds"], p["passes_through"]) if t]
         if through:
-            print(f"restitution deck: types {p['types'][0]} {p['types'][1]} pass through each other from "
-                  f"g = {min(through):.4g} on (the largest overlap reaches R1 + R2): no eps there", file=sys.stderr)
+            print(f"restitution deck: {name}: the engine pushes {pushed} from g = {min(through):.4g} on (the "
+                  f"largest overlap reaches {reach}): no eps there", file=sys.stderr)
     if args.json:
         _write_json(res, out)
         return
     if res["ignored"]:
         out.write(f"# {res['code']} deck; no part in a head-on contact: {', '.join(res['ignored'])}\n")
-    for p in res["pairs"]:
+    for p, name, reach, pushed, kept in rows:
         typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
-        out.write(f"types {p['types'][0]} {p['types'][1]}: {p['model']} ({typed}), end rule {p['end']}\n")
+        out.write(f"{name}: {p['model']} ({typed}), end rule {p['end']}\n")
         for g, e, stick, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
             out.write(f"  g {g:<12.6g} " + (
-                f"passes through: the largest overlap reaches R1 + R2 = {p['overlap_limit']:.4g}, the engine "
-                "pushes the spheres through each other (no eps)\n" if through else
-                "sticks: the attractive phase keeps the spheres together (eps 0)\n" if stick else f"eps {e:.10f}\n"))
+                f"passes through: the largest overlap reaches {reach} = {p['overlap_limit']:.4g}, the engine "
+                f"pushes {pushed} (no eps)\n" if through else
+                f"sticks: the attractive phase keeps {kept} (eps 0)\n" if stick else f"eps {e:.10f}\n"))
         if p["exact_line"]:
             out.write(f"  for eps = e exactly: {p['exact_line']}\n")
 

@@ -44,6 +44,11 @@ def test_liggghts_contact_model_tutorial():
     assert len(pair["speeds"]) == 5 and max(pair["speeds"]) / min(pair["speeds"]) == pytest.approx(100)
     assert all(abs(e - 0.95) < 1e-9 for e in pair["eps"])
     assert pair["exact_line"].endswith("coefficientRestitution peratomtypepair 1 0.95")
+    # its two plane walls (of type 1, hertz) give e as well; the cylinder is named, not audited
+    assert [(w["wall"], w["types"], w["wall_type"]) for w in res["walls"]] == [("zwalls1", [1], 1),
+                                                                                ("zwalls2", [1], 1)]
+    assert all(abs(e - 0.95) < 1e-9 for w in res["walls"] for e in w["eps"])
+    assert [row["text"].split()[1] for row in res["unknown_lines"] if "wall" in row["why"]] == ["cylwalls"]
     # the same numbers from the dictionary, with the template's radius and density
     contact = liggghts_contact(Pair.spheres(0.0025, 0.0025, 2500.0), E=5e6, nu=0.45, e=0.95)
     assert pair["D1"] == pytest.approx(contact.D1, rel=1e-12) and pair["D2"] == pytest.approx(contact.D2, rel=1e-12)
@@ -482,7 +487,7 @@ def test_where_the_centres_would_meet_no_eps_is_listed(tmp_path):
     exact = math.exp(-math.pi * zeta / math.sqrt(1.0 - zeta ** 2))
     assert p["eps"][:2] == pytest.approx([exact, exact], rel=1e-10) and p["eps"][2] is None
     assert p["sticks"] == [False, False, False]
-    assert err.count("\n") == 1 and "types 1 1 pass through each other" in err
+    assert err.count("\n") == 1 and "types 1 1: the engine pushes the spheres through each other" in err
     status, out, _ = run(deck, "--g", *speeds)
     assert status == 0 and out.count("passes through") == 1 and out.count("eps 0.") == 2
     # an exact line is calibrated at the middle speed: none where the spheres pass through there

@@ -65,7 +65,7 @@ from scipy.optimize import brentq
 from ..core.errors import ParameterError, derived_in_range, one_of, require_positive_finite
 from .contact import Contact
 
-__all__ = ["Pair", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
+__all__ = ["Pair", "WALL_SIZE", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
            "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
            "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "LIGGGHTS_MODELS", "LIGGGHTS_E",
            "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "liggghts_accepts_e"]
@@ -74,6 +74,10 @@ NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
 DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji")
 #: LAMMPS' documented fit for tsuji damping: eta_n = A(e) sqrt(m k), A a polynomial in e.
 TSUJI_POLY = (1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218)
+
+
+#: A flat wall's radius and mass in a Pair (see Pair.wall).
+WALL_SIZE = 1e300
 
 
 @dataclass(frozen=True)
@@ -105,6 +109,16 @@ class Pair:
         derived_in_range("the effective mass", pair.m, {"radii": (R1, R2), "densities": (density1, d2)})
         derived_in_range("the effective radius", pair.R, {"radii": (R1, R2)})
         return pair
+
+    @classmethod
+    def wall(cls, R: float, density: float) -> "Pair":
+        """A sphere of radius R and density ``density`` against a flat wall: the wall's radius and
+        mass are WALL_SIZE, so large that the effective ones are the sphere's to rounding
+        (R R_w / (R + R_w) = R (1 + R / R_w)^-1)."""
+        for name, v in (("R", R), ("density", density)):
+            require_positive_finite(name, v)
+        m = derived_in_range("the mass", density * 4.0 / 3.0 * math.pi * _pow(R, 3), {"radius": R, "density": density})
+        return cls(R, WALL_SIZE, m, WALL_SIZE, (density, None))
 
     @property
     def m(self) -> float:

@@ -3,8 +3,11 @@ LIGGGHTS (``pair_style gran model hertz|hooke``) input scripts, for every type p
 
 The reader takes only what decides a head-on two-sphere contact: the contact model and its
 coefficients per type pair, the end-of-contact keyword, and each type's radius and density.
-Commands that cannot change that contact (output, regions, gravity, walls, integrators, ...) are
-passed over; any other line is reported as not understood, one per line, and never guessed. An
+Commands that cannot change that contact (output, regions, gravity, integrators, ...) are passed
+over; any other line is reported as not understood, one per line, and never guessed. Flat walls
+(``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes) are audited as a
+sphere of each type they act on (``group ID type ...`` or all) hitting them head-on; other walls
+(meshes, cylinders, regions, older models) are named as not audited. An
 option that does change the contact but is not mapped (a cohesion model, JKR, a pair style other
 than those two), a type without radius or density, or a type pair without coefficients is refused
 with one line (DeckError, exit status 2 in the CLI).
@@ -50,12 +53,12 @@ class DeckError(ParameterError):
 _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "communicate", "comm_modify",
                "processors", "region", "lattice", "change_box", "neighbor", "neigh_modify", "timestep", "thermo",
                "thermo_style", "thermo_modify", "dump", "dump_modify", "undump", "run", "unfix", "compute",
-               "uncompute", "group", "velocity", "delete_atoms", "write_restart", "restart", "log", "print",
+               "uncompute", "velocity", "delete_atoms", "write_restart", "restart", "log", "print",
                "echo", "label", "shell", "clear", "create_atoms", "displace_atoms",
                "write_data", "write_dump", "reset_timestep", "run_style", "min_style", "minimize", "balance",
                "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
                "soft_particles", "modify_timing"}
-_IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "wall/gran", "wall/gran/region", "balance", "insert/pack",
+_IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "viscous", "enforce2d", "move", "mesh/surface", "mesh/surface/stress", "freeze", "setforce",
                      "ave/time", "ave/atom", "print", "nve/limit", "move/mesh",
@@ -92,6 +95,8 @@ class Deck:
     units: str = "lj"                             # the engines' default unit style
     soft: bool = False                            # LIGGGHTS soft_particles yes / hard_particles yes:
     hard: bool = False                            # its limits on Young's modulus lifted
+    groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
+    walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
 
 
 _ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
@@ -280,6 +285,8 @@ def _read(deck: Deck, variables: dict, text: str, source, read_file, depth: int)
             _set(deck, words, where, line, loc)
         elif cmd == "fix" and len(words) >= 4:
             _fix(deck, words, where, line, loc)
+        elif cmd == "group" and len(words) >= 3:
+            _group(deck, words)
         elif cmd == "units" and len(words) >= 2:
             deck.units = words[1]
         elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
@@ -447,10 +454,35 @@ def _fix(deck, words, where, line, loc):
                     deck.radius[t] = 0.5 * _number(tokens[k + 1], where, line)   # older "diam lo hi"
             elif tok == "dens" and tokens[k + 1] == tokens[k + 2]:
                 deck.density[t] = _number(tokens[k + 1], where, line)
+    elif style == "wall/gran":
+        group = words[2]
+        deck.walls.append((loc, words, "all" if group == "all" else deck.groups.get(group, "undefined")))
+    elif style == "wall/gran/region":
+        deck.unknown.append((*loc, line, "a region wall (any shape): its contacts are not audited"))
     elif style in _IRRELEVANT_FIXES:
         return
     else:
         deck.unknown.append((*loc, line, "not understood"))
+
+
+def _group(deck: Deck, words: list) -> None:
+    """group ID type T ... (T, A:B or <> A B): the types a wall acts on. Groups of other styles
+    (region, id, molecule, ...) have no types the reader can know: None. A second type line adds."""
+    name, style, args = words[1], words[2], words[3:]
+    if style in ("delete", "clear"):
+        deck.groups.pop(name, None)
+        return
+    types = None
+    if style == "type" and args:
+        if args[0] == "<>" and len(args) == 3 and all(a.isdigit() for a in args[1:]):
+            types = set(range(int(args[1]), int(args[2]) + 1))
+        elif all(re.fullmatch(r"\d+(:\d+)?", a) for a in args):
+            types = set()
+            for a in args:
+                lo, _, hi = a.partition(":")
+                types |= set(range(int(lo), int(hi or lo) + 1))
+    old = deck.groups.get(name, set())
+    deck.groups[name] = None if types is None or old is None else old | types
 
 
 def _pair(deck: Deck, i: int, j: int) -> Pair:
@@ -594,7 +626,8 @@ def _prop(deck: Deck, name: str, required: bool = True):
     return deck.props[name]
 
 
-def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
+def _liggghts_materials(deck: Deck) -> tuple:
+    """(E, nu, the coefficientRestitution matrix flattened, its location) from fix property/global."""
     # LIGGGHTS itself stops unless each list has exactly one value per type (per type pair, symmetric)
     def per_type(name):
         loc, vals = _prop(deck, name)
@@ -615,13 +648,24 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
            for b in range(a + 1, m + 1)):
         raise DeckError(where, " ".join(vals), "the coefficientRestitution matrix is not symmetric")
     _liggghts_limits(deck, E, nu, matrix, where)
-    e = matrix[(i - 1) * m + (j - 1)]
-    extra = {}
-    if deck.model == "hooke":
+    return E, nu, matrix, loc
+
+
+def _liggghts_model(deck: Deck, model: str, limit_force: bool) -> dict:
+    """liggghts_contact's keywords for a normal model (hooke needs characteristicVelocity)."""
+    kw = {"model": model, "limit_force": limit_force}
+    if model == "hooke":
         lv, v = _prop(deck, "characteristicVelocity")
-        extra["characteristic_velocity"] = _number(v[-1], _where(lv), "characteristicVelocity")
+        kw["characteristic_velocity"] = _number(v[-1], _where(lv), "characteristicVelocity")
+    return kw
+
+
+def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
+    E, nu, matrix, loc = _liggghts_materials(deck)
+    m = deck.ntypes
+    e = matrix[(i - 1) * m + (j - 1)]
     pair = _pair(deck, i, j)
-    kw = {"model": deck.model, "limit_force": deck.limit_force, **extra}
+    kw = _liggghts_model(deck, deck.model, deck.limit_force)
     contact = liggghts_contact(pair, E=E[i - 1], nu=nu[i - 1], E2=E[j - 1], nu2=nu[j - 1], e=e, **kw)
     try:
         cal = calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=e, g=speeds[len(speeds) // 2],
@@ -659,6 +703,129 @@ def _liggghts_limits(deck: Deck, E: list, nu: list, e: list, where_e: str) -> No
                                                            f"coefficientRestitution <= {LIGGGHTS_E[1]:g}")
 
 
+#: Walls the audit takes: planes (a sphere against a flat wall). Curved ones are named, not audited.
+_FLAT_WALLS = ("xplane", "yplane", "zplane")
+_WALL_STYLES = _FLAT_WALLS + ("zcylinder", "region")
+
+
+def _wall_types(deck: Deck, types, loc, words, unknown: list):
+    """The atom types a wall acts on, or None (said in ``unknown``) where the group has none known."""
+    if types == "all":
+        return list(range(1, deck.ntypes + 1))
+    if types is None or types == "undefined":
+        why = "not defined before it" if types == "undefined" else "not defined by type"
+        unknown.append((*loc, " ".join(words), f"group {words[2]} is {why}: the wall's contacts are not audited"))
+        return None
+    return sorted(t for t in types if 1 <= t <= deck.ntypes)
+
+
+def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
+    """fix ID group wall/gran granular MODEL... xplane|yplane|zplane ...: (a function of the wall
+    Pair and the sphere's type giving (contact, typed e, model), None), or None with the reason in
+    ``unknown``. The wall's model is that of a pair_coeff line with the wall as the second body."""
+    text = " ".join(words)
+    style = words[4] if len(words) > 4 else None
+    if style != "granular":
+        unknown.append((*loc, text, f"wall model {style} is not mapped (granular is): the wall's contacts are not "
+                                    "audited"))
+        return None
+    k = next((n for n, w in enumerate(words) if n > 4 and w in _WALL_STYLES), None)
+    if k is None or words[k] not in _FLAT_WALLS:
+        shape = "no wall style" if k is None else f"a {words[k]} wall"
+        unknown.append((*loc, text, f"{shape}: only planes are audited"))
+        return None
+    try:
+        c = _coeff(deck, ["pair_coeff", "*", "*", *words[5:k]], _where(loc), text)
+    except DeckError as why:
+        unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
+        return None
+    stiffness = ({"normal": c.normal, "E": c.args[0], "nu": c.args[2]} if c.normal == "hertz/material"
+                 else {"normal": c.normal, "k_n": c.args[0]})
+    setting = {**stiffness, "damping": c.damping, "eta_n0": c.args[1], "limit_damping": c.limit}
+    model = f"LAMMPS {c.normal}, damping {c.damping}, {words[k]} wall"
+    typed = c.args[1] if c.damping == "tsuji" else None
+    return (lambda pair, t: (lammps_contact(pair, **setting), typed, model)), None
+
+
+#: fix wall/gran keywords before `primitive` (LIGGGHTS) that take no part in a head-on contact
+_LIGGGHTS_WALL_IGNORED = ("tangential", "rolling_friction", "tangential_damping", "cohesion_off")
+
+
+def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
+    """fix ID group wall/gran model M ... primitive type W xplane|yplane|zplane V: as _lammps_wall,
+    with W: the contact of a type with an atom of the wall's type W under the wall's own model
+    keywords, the wall as the second body; or None with the reason in ``unknown`` (mesh walls,
+    curved primitives, models not mapped)."""
+    text = " ".join(words)
+    model, limit, k = None, False, 3
+    while k + 1 < len(words) and words[k + 1] not in ("primitive", "mesh"):
+        key, val = words[k + 1], words[k + 2] if k + 2 < len(words) else None
+        if key == "model" and val in ("hertz", "hooke"):
+            model = val
+        elif key == "limitForce":
+            limit = val == "on"
+        elif key == "surface" and val == "default" or key in _LIGGGHTS_WALL_IGNORED:
+            pass
+        else:
+            unknown.append((*loc, text, f"{key} {val} is not mapped: the wall's contacts are not audited"))
+            return None
+        k += 2
+    rest = words[k + 1:]
+    if not rest or rest[0] != "primitive":
+        unknown.append((*loc, text, "a mesh wall: its contacts are not audited (planes are)"))
+        return None
+    if model is None:
+        unknown.append((*loc, text, "no model hertz|hooke: the wall's contacts are not audited"))
+        return None
+    if len(rest) < 4 or rest[1] != "type" or rest[3] not in _FLAT_WALLS:
+        shape = f"a {rest[3]} wall" if len(rest) >= 4 and rest[1] == "type" else "a primitive wall not read"
+        unknown.append((*loc, text, f"{shape}: only planes (primitive type W xplane|yplane|zplane) are audited"))
+        return None
+    w = int(_number(rest[2], _where(loc), text))
+    if not 1 <= w <= deck.ntypes:
+        raise DeckError(_where(loc), text, f"the wall's type must be in 1..{deck.ntypes}")
+    E, nu, matrix, _ = _liggghts_materials(deck)
+    kw = _liggghts_model(deck, model, limit)
+
+    def contact(pair, t):
+        e = matrix[(t - 1) * deck.ntypes + (w - 1)]
+        c = liggghts_contact(pair, E=E[t - 1], nu=nu[t - 1], E2=E[w - 1], nu2=nu[w - 1], e=e, **kw)
+        return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {rest[3]} wall of type {w}"
+    return contact, w
+
+
+def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
+    """For every flat fix wall/gran and every type it acts on, the eps of that type's sphere
+    hitting it head-on; and the walls not audited, each with its reason."""
+    rows, unknown = [], []
+    parse = _lammps_wall if deck.code == "LAMMPS" else _liggghts_wall
+    for loc, words, types in deck.walls:
+        known = parse(deck, loc, words, unknown)
+        if known is None or (types := _wall_types(deck, types, loc, words, unknown)) is None:
+            continue
+        contact_of, wall_type = known
+        for t in types:
+            sphere = _pair(deck, t, t)
+            pair = Pair.wall(sphere.R1, sphere.densities[0])
+            contact, typed, model = contact_of(pair, t)
+            rows.append(_with_eps({"wall": words[1], "types": [t], "wall_type": wall_type, "model": model,
+                                   "typed_e": typed, "end": contact.end, "exact_line": None, "line": loc[1],
+                                   "file": loc[0]}, contact, speeds, pair.R1))
+    return rows, unknown
+
+
+def _with_eps(row: dict, contact, speeds, limit: float) -> dict:
+    """The row with eps at every speed, where the engine would push the bodies through each other
+    (the largest overlap reaching ``limit``) none, and the contact's parameters."""
+    through = [contact.reaches(g, limit) for g in speeds]
+    if through[len(speeds) // 2]:   # the exact line is calibrated at the middle speed: none there
+        row["exact_line"] = None
+    eps = [(None, False) if t else _eps_or_stick(contact, g) for g, t in zip(speeds, through)]
+    row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
+               overlap_limit=limit, **{k: v for k, v in contact.as_dict().items() if k != "end"})
+    return row
+
+
 def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
     """(eps, False), or (0, True) where the overlap rule's attraction keeps the bodies together."""
     try:
@@ -668,11 +835,14 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
 
 
 def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None) -> dict:
-    """{"code", "pairs": [...], "unknown_lines": [...], "ignored": [...]}: for every type pair the eps
-    the deck really gives at ``speeds`` (relative accuracy 1e-10), beside the e typed (or None)
-    and the line that would give that e exactly; read_file as in read_deck. Where the spheres'
-    centres would meet (``passes_through``: the largest overlap reaches ``overlap_limit`` = R1 + R2)
-    eps is None: the engine pushes them through each other."""
+    """{"code", "pairs": [...], "walls": [...], "unknown_lines": [...], "ignored": [...]}: for every
+    type pair the eps the deck really gives at ``speeds`` (relative accuracy 1e-10), beside the e
+    typed (or None) and the line that would give that e exactly; read_file as in read_deck. Where
+    the spheres' centres would meet (``passes_through``: the largest overlap reaches
+    ``overlap_limit`` = R1 + R2) eps is None: the engine pushes them through each other. ``walls``:
+    the same for every type a flat fix wall/gran acts on, the sphere hitting the wall head-on
+    (``overlap_limit`` = R: the centre reaching the wall; ``wall`` the fix ID, ``wall_type`` the
+    LIGGGHTS wall's atom type, no exact line); walls not audited are among ``unknown_lines``."""
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
@@ -685,14 +855,9 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         for j in range(i, deck.ntypes + 1):
             row = (_lammps_pair if deck.code == "LAMMPS" else _liggghts_pair)(deck, i, j, speeds)
             contact, pair = row.pop("contact"), row.pop("pair")
-            limit = pair.R1 + pair.R2
-            through = [contact.reaches(g, limit) for g in speeds]
-            if through[len(speeds) // 2]:   # the exact line is calibrated at the middle speed: none there
-                row["exact_line"] = None
-            eps = [(None, False) if t else _eps_or_stick(contact, g) for g, t in zip(speeds, through)]
-            row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
-                       overlap_limit=limit, **{k: v for k, v in contact.as_dict().items() if k != "end"})
-            pairs.append(row)
-    return {"code": deck.code, "pairs": pairs, "unknown_lines": [{"file": f, "line": n, "text": t, "why": why}
-                                                        for f, n, t, why in deck.unknown],
+            pairs.append(_with_eps(row, contact, speeds, pair.R1 + pair.R2))
+    walls, not_audited = _wall_rows(deck, speeds)
+    return {"code": deck.code, "pairs": pairs, "walls": walls,
+            "unknown_lines": [{"file": f, "line": n, "text": t, "why": why}
+                              for f, n, t, why in deck.unknown + not_audited],
             "ignored": sorted(set(deck.ignored))}

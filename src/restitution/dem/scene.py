@@ -29,11 +29,8 @@ from .model_ladder import EVAL_TOL, SMALL_EPS, Fit, fit_rung, lammps_rungs, ligg
 from .scene_file import AtomType, Scene
 from .timestep import REFINE, VERIFY_STEPS, recommended_dt, verlet_eps
 
-__all__ = ["answer_scene", "wall_pair", "WALL_SIZE"]
+__all__ = ["answer_scene", "wall_pair"]
 
-#: A flat wall as the second body: radius and mass so large that the effective radius and mass are
-#: the particle's own to rounding (R R_w / (R + R_w) = R (1 + R / R_w)^-1).
-WALL_SIZE = 1e300
 #: A scene that checks more points than this (material pairs x check speeds) has the evaluator's
 #: master curves built for the exponents it uses (1-2 s under the overlap rule, 15-30 s under the
 #: force rule, then cached on disk); below it, the compiled integrator answers (~5e-5 s a point).
@@ -43,8 +40,7 @@ PLOT_POINTS = 200
 
 
 def wall_pair(t: AtomType, density: float) -> Pair:
-    m = density * 4.0 / 3.0 * math.pi * t.radius ** 3
-    return Pair(t.radius, WALL_SIZE, m, WALL_SIZE)
+    return Pair.wall(t.radius, density)
 
 
 @dataclass

