@@ -13,9 +13,9 @@ Kinds of case:
   repeats, missing values) and random mutations of config.yaml. Never a traceback; a value that is
   out of range by construction is never answered with exit status 0; a refusal is one line.
 * **scenes** and **decks** (with LAMMPS, LIGGGHTS installed): a random scene's chosen contacts, and
-  every type pair of a random input deck as `restitution deck` reads it, run head-on in the real
-  engine with the scene's lines or the deck's own; extrapolated to dt = 0 the engine must give the
-  eps listed, and keep together the spheres said to stick.
+  every type pair and flat wall of a random input deck as `restitution deck` reads it, run head-on
+  in the real engine with the scene's lines or the deck's own; extrapolated to dt = 0 the engine
+  must give the eps listed, and keep together the bodies said to stick.
 
 ``tests/library/test_fuzz.py`` runs a small derandomized profile in ``make test``; ``make fuzz`` runs
 ``python tests/fuzzing.py``: the long profile in parallel over the cores, a table of cases,
@@ -763,7 +763,8 @@ def deck_cases(draw):
     model (stiffness per type), one damping model with each type's coefficient set for a like-pair
     Omega in 1e-3..30 (tsuji: e in 0.05..0.97), limit_damping on some lines, maybe an explicit line
     for a cross pair, maybe a `pair_coeff * *` written first and overridden, maybe numbers through
-    variables; and two impact speeds a decade apart. Returns (deck text, speeds, types)."""
+    variables, maybe a flat wall at z = 0 (on all types or a group); and two impact speeds a decade
+    apart. Returns (deck text, speeds, types)."""
     log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
     n = draw(st.integers(1, 3))
     normal = draw(st.sampled_from(["hooke", "hertz", "hertz/material"]))
@@ -798,6 +799,10 @@ def deck_cases(draw):
     if n > 1 and draw(st.booleans()):
         i, j = sorted(draw(st.sampled_from([(a, b) for a in types for b in types if a < b])))
         lines.append(coeff_line(i, j, i))
+    if draw(st.booleans()):   # a flat wall, its model drawn like a type's own line
+        lines += _wall_lines(draw, types, "fix floor GROUP wall/gran granular "
+                             + coeff_line("*", "*", draw(st.sampled_from(list(types)))).split(" ", 3)[3]
+                             + " zplane 0.0 NULL")
     body = "\n".join(["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1",
                       f"create_box {n} box"]
                      + [f"set type {t} diameter {2 * m['radius']:.8g} density {m['density']:.8g}" for t, m in types.items()]
@@ -805,12 +810,21 @@ def deck_cases(draw):
     return body + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()} for t, m in types.items()}
 
 
+def _wall_lines(draw, types: dict, wall: str) -> list[str]:
+    """The ``wall`` line on all types, or (with several) on a group of some of them (its GROUP)."""
+    if len(types) > 1 and draw(st.booleans()):
+        members = sorted(draw(st.sets(st.sampled_from(list(types)), min_size=1)))
+        return [f"group walled type {' '.join(map(str, members))}", wall.replace("GROUP", "walled")]
+    return [wall.replace("GROUP", "all")]
+
+
 @st.composite
 def liggghts_deck_cases(draw):
     """A random LIGGGHTS deck: 1-3 atom types (radius 0.05-50 mm, density 500-20,000, E 1e5-1e11,
     nu 0-0.55), a symmetric coefficientRestitution matrix (0.02-0.97), hertz or hooke (with a
     characteristicVelocity), limitForce on or off, maybe soft_particles / hard_particles yes, maybe
-    E through a variable; two speeds a decade apart (some draws break LIGGGHTS' own limits on E, nu
+    E through a variable, maybe a primitive wall of one of the types at z = 0; two speeds a decade
+    apart (some draws break LIGGGHTS' own limits on E, nu
     and e: the audit must refuse exactly those). Returns (deck text, speeds, types)."""
     log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
     n = draw(st.integers(1, 3))
@@ -835,8 +849,11 @@ def liggghts_deck_cases(draw):
     if model == "hooke":
         lines.append(f"fix m5 all property/global characteristicVelocity scalar {log(-1.0, 1.0):.4g}")
     limit = draw(st.sampled_from(["on", "off"]))
-    lines += [f"pair_style gran model {model} tangential {draw(st.sampled_from(['history', 'no_history']))} "
-              f"limitForce {limit}", "pair_coeff * *"]
+    keywords = f"model {model} tangential {draw(st.sampled_from(['history', 'no_history']))} limitForce {limit}"
+    lines += [f"pair_style gran {keywords}", "pair_coeff * *"]
+    if draw(st.booleans()):   # a flat wall of one of the types, the pair style's model
+        lines += _wall_lines(draw, types, f"fix floor GROUP wall/gran {keywords} primitive type "
+                                          f"{draw(st.sampled_from(list(types)))} zplane 0.0")
     lines += [f"fix pts{t} all particletemplate/sphere {15485863 + t} atom_type {t} density constant "
               f"{m['density']:.8g} radius constant {m['radius']:.8g}" for t, m in types.items()]
     return "\n".join(lines) + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()}
@@ -876,6 +893,118 @@ def _liggghts_runner(engine_lines: str):
     return run
 
 
+def _check_deck_row(p: dict, pair, key: tuple, engine, code: str, name: str) -> tuple:
+    """One audited contact (a type pair, or a type on a wall) in the engine at each listed speed:
+    (the worst error over DECK_EXTRAPOLATED, what it was, whether anything ran). ``engine`` runs
+    (pair, key, g, dt, t_run) tuples as _lammps_runner's function does."""
+    from restitution.dem.contact import Contact
+    from restitution.dem.extrapolate import richardson
+
+    a, c = float(Fraction(p["alpha"])), float(Fraction(p["gamma"]))
+    runs, checks = [], []
+    for g, listed, sticks, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
+        # not run: no eps listed (the centres would meet), or the bodies would take too many
+        # steps to part (the force rule leaves them overlapping, moving apart at eps g)
+        if through or (not sticks and listed < DECK_MIN_EPS[p["end"]]):
+            continue
+        # the undamped contact: its largest overlap bounds the damped one's, and its duration;
+        # the step also resolves the damping's own time 1 / (D2 delta^gamma) (overdamped contacts)
+        reach = (g * g * (a + 1.0) / (2.0 * p["D1"])) ** (1.0 / (a + 1.0))
+        t_el = 2.0 * reach / g * math.sqrt(math.pi) * math.gamma(1.0 + 1.0 / (a + 1.0)) / \
+            math.gamma(0.5 + 1.0 / (a + 1.0))
+        fastest = min(t_el, 1.0 / (p["D2"] * reach ** c))
+        if sticks:
+            if DECK_STICK_TIMES * t_el / (fastest / DECK_STEPS) > DECK_MAX_STEPS:
+                continue
+            checks.append((g, listed, True, len(runs)))
+            runs.append((pair, key, g, fastest / DECK_STEPS, DECK_STICK_TIMES * t_el))
+            continue
+        try:
+            t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
+        except Exception as exc:  # noqa: BLE001
+            checks.append((g, listed, False, exc))
+            continue
+        t_run = 1.2 * t_c + (2.0 * reach / (listed * g) if p["end"] == "force" else 0.0)
+        # a whole number of steps per contact: where the damping force does not vanish at zero
+        # overlap (gamma = 0) the last step's share of it, O(dt) and set by where the contact's
+        # end falls in that step, would otherwise make eps(dt) jagged
+        dt = t_c / (DECK_STEPS * math.ceil(t_c / fastest))
+        if 4.0 * t_run / dt > DECK_MAX_STEPS:
+            continue
+        checks.append((g, listed, False, len(runs)))
+        runs += [(pair, key, g, dt / m, t_run) for m in (1, 2, 4)]
+    got = engine(runs)
+    worst, detail = 0.0, ""
+    for g, listed, sticks, at in checks:
+        if isinstance(at, Exception):
+            ratio, what = math.inf, f"t_c: {at}"
+        elif sticks:
+            eps = got[at]
+            if isinstance(eps, ArithmeticError):     # still together: what the audit said
+                continue
+            if isinstance(eps, Exception):
+                ratio, what = math.inf, f"{code}: {_engine_error(eps)}"
+            else:
+                ratio = eps / DECK_STICK_EPS
+                what = f"the audit says they stick, {code} lets them go with eps {eps:.4g}"
+        else:
+            three = got[at: at + 3]
+            bad = next((e for e in three if isinstance(e, Exception)), None)
+            if bad is not None:
+                ratio, what = math.inf, f"{code}: {_engine_error(bad)}"
+            else:
+                eps = richardson(*three, c)
+                ratio = abs(eps - listed) / (DECK_EXTRAPOLATED * listed)
+                what = f"the audit says eps {listed:.8g}, {code} {eps:.8g} at dt = 0"
+        if ratio > worst:
+            worst, detail = ratio, f"{name} ({p['model']}, {p['end']} rule) at {g:.4g}: {what}"
+    return worst, detail, bool(checks)
+
+
+def _engine_lines(text: str, code: str, wall: bool = False) -> str:
+    """The deck's lines an engine run takes. LAMMPS: its variables and pair_coeff lines (the runner
+    writes the pair style), for a wall also the pair style, the groups and the wall's line.
+    LIGGGHTS: the box, the materials and the pair style, never the wall (its runner writes it from
+    the pair style); the particle templates only gave radii."""
+    body = text.splitlines()
+    if code == "lammps":
+        return "\n".join(ln for ln in body if ln.startswith(("variable", "pair_", "group", "fix floor") if wall
+                                                         else ("variable", "pair_coeff")))
+    start = next(k for k, ln in enumerate(body) if ln.startswith("create_box"))
+    return "\n".join([body[start]] + [ln for ln in body[start + 1:] if not ln.startswith(("fix pts", "fix floor", "group"))]
+                     + [ln for ln in body[:start] if ln.startswith("variable")])
+
+
+def _wall_runner(text: str, code: str, ntypes: int, types: dict, wall: dict):
+    """As _lammps_runner for a sphere of the key's type falling onto the deck's wall (placed at z = 0
+    as the deck writes it; _engine_lines): LIGGGHTS with the wall's type (the wall's keywords are
+    the pair style's), all runs in one process unless one stays on the wall (then one each)."""
+    from restitution.dem.lammps import lammps_wall_eps
+    from restitution.dem.liggghts import liggghts_wall_eps_runs
+
+    lines = _engine_lines(text, code, wall=True)
+
+    def batch(runs):
+        (t,) = runs[0][1]
+        r, rho = types[t]["radius"], types[t]["density"]
+        try:
+            if code == "lammps":
+                return [lammps_wall_eps(r, rho, lines, g, dt, t_run, atom_type=t, ntypes=ntypes)
+                        for _, _, g, dt, t_run in runs]
+            return liggghts_wall_eps_runs(r, rho, [(lines, g, dt, t_run, t, wall["wall_type"])
+                                                   for _, _, g, dt, t_run in runs])
+        except Exception as exc:  # noqa: BLE001
+            return [exc]
+
+    def run(runs):
+        if code == "liggghts":       # one process for all, unless one of them stays on the wall
+            got = batch(runs) if runs else []
+            if len(got) == len(runs):
+                return got
+        return [batch([one])[0] for one in runs]
+    return run
+
+
 def _check_liggghts_deck(text, speeds, types):
     return check_deck_case(text, speeds, types, "liggghts")
 
@@ -901,23 +1030,15 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", 
     together (or let them go with eps below DECK_STICK_EPS). Where the audit writes a pair's exact
     line (the e that gives eps = the e typed, at the middle speed), the deck with that line is
     checked the same way for that pair alone (``exact``: the pair and the eps it must give): the
-    audit must now say eps = e, and the engine agree."""
+    audit must now say eps = e, and the engine agree. Every type on the deck's wall likewise, a
+    sphere of that type falling onto the deck's own wall line."""
     from restitution.core.errors import ParameterError
     from restitution.dem.codes import Pair
-    from restitution.dem.contact import Contact
     from restitution.dem.deck import audit_deck
-    from restitution.dem.extrapolate import richardson
 
     case = {"deck": text, "speeds": speeds}
-    if code == "lammps":
-        engine = _lammps_runner("\n".join(ln for ln in text.splitlines()
-                                          if ln.startswith(("variable", "pair_coeff"))), len(types))
-    else:   # the box, the materials and the pair style; the particle templates only gave radii
-        body = text.splitlines()
-        start = next(k for k, ln in enumerate(body) if ln.startswith("create_box"))
-        engine = _liggghts_runner("\n".join([body[start]] + [ln for ln in body[start + 1:]
-                                                             if not ln.startswith("fix pts")]
-                                            + [ln for ln in body[:start] if ln.startswith("variable")]))
+    lines = _engine_lines(text, code)
+    engine = _lammps_runner(lines, len(types)) if code == "lammps" else _liggghts_runner(lines)
     try:
         res = audit_deck(text, speeds)
     except Exception as exc:  # noqa: BLE001
@@ -940,74 +1061,25 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", 
         rec = {"method": f"deck ({code})" + (": exact line" if exact else ""), "rule": p["end"], "case": case,
                "pair": f"{i}-{j}", "ratio": 0.0}
         pair = Pair.spheres(types[i]["radius"], types[j]["radius"], types[i]["density"], types[j]["density"])
-        a, c = float(Fraction(p["alpha"])), float(Fraction(p["gamma"]))
-        runs, checks = [], []
-        for g, listed, sticks, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
-            # not run: no eps listed (the centres would meet), or the spheres would take too many
-            # steps to part (the force rule leaves them overlapping, moving apart at eps g)
-            if through or (not sticks and listed < DECK_MIN_EPS[p["end"]]):
-                continue
-            # the undamped contact: its largest overlap bounds the damped one's, and its duration;
-            # the step also resolves the damping's own time 1 / (D2 delta^gamma) (overdamped contacts)
-            reach = (g * g * (a + 1.0) / (2.0 * p["D1"])) ** (1.0 / (a + 1.0))
-            t_el = 2.0 * reach / g * math.sqrt(math.pi) * math.gamma(1.0 + 1.0 / (a + 1.0)) / \
-                math.gamma(0.5 + 1.0 / (a + 1.0))
-            fastest = min(t_el, 1.0 / (p["D2"] * reach ** c))
-            if sticks:
-                if DECK_STICK_TIMES * t_el / (fastest / DECK_STEPS) > DECK_MAX_STEPS:
-                    continue
-                checks.append((g, listed, True, len(runs)))
-                runs.append((pair, (i, j), g, fastest / DECK_STEPS, DECK_STICK_TIMES * t_el))
-                continue
-            try:
-                t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
-            except Exception as exc:  # noqa: BLE001
-                checks.append((g, listed, False, exc))
-                continue
-            t_run = 1.2 * t_c + (2.0 * reach / (listed * g) if p["end"] == "force" else 0.0)
-            # a whole number of steps per contact: where the damping force does not vanish at zero
-            # overlap (gamma = 0) the last step's share of it, O(dt) and set by where the contact's
-            # end falls in that step, would otherwise make eps(dt) jagged
-            dt = t_c / (DECK_STEPS * math.ceil(t_c / fastest))
-            if 4.0 * t_run / dt > DECK_MAX_STEPS:
-                continue
-            checks.append((g, listed, False, len(runs)))
-            runs += [(pair, (i, j), g, dt / m, t_run) for m in (1, 2, 4)]
-        got = engine(runs)
-        worst, detail = 0.0, ""
-        for g, listed, sticks, at in checks:
-            if isinstance(at, Exception):
-                ratio, what = math.inf, f"t_c: {at}"
-            elif sticks:
-                eps = got[at]
-                if isinstance(eps, ArithmeticError):     # still together: what the audit said
-                    continue
-                if isinstance(eps, Exception):
-                    ratio, what = math.inf, f"{code}: {_engine_error(eps)}"
-                else:
-                    ratio = eps / DECK_STICK_EPS
-                    what = f"the audit says the spheres stick, {code} lets them go with eps {eps:.4g}"
-            else:
-                three = got[at: at + 3]
-                bad = next((e for e in three if isinstance(e, Exception)), None)
-                if bad is not None:
-                    ratio, what = math.inf, f"{code}: {_engine_error(bad)}"
-                else:
-                    eps = richardson(*three, c)
-                    ratio = abs(eps - listed) / (DECK_EXTRAPOLATED * listed)
-                    what = f"the audit says eps {listed:.8g}, {code} {eps:.8g} at dt = 0"
-            if ratio > worst:
-                worst, detail = ratio, f"pair {i}-{j} ({p['model']}, {p['end']} rule) at {g:.4g}: {what}"
+        worst, detail, checked = _check_deck_row(p, pair, (i, j), engine, code, f"pair {i}-{j}")
         if exact is not None and p["eps"][0] is not None and abs(p["eps"][0] - exact[2]) > 1e-8:
             worst, detail = math.inf, (f"pair {i}-{j}: with its exact line the audit says eps {p['eps'][0]:.10g}, "
                                        f"not the e typed {exact[2]:.10g}")
         # "refused": nothing of this pair could be run (no eps, or too many steps)
-        status = "FAIL" if worst > 1.0 else "answered" if checks or exact is not None else "refused"
+        status = "FAIL" if worst > 1.0 else "answered" if checked or exact is not None else "refused"
         records.append({**rec, "status": status, "ratio": worst, "detail": detail if worst > 1.0 else ""})
         if exact is None and p["exact_line"]:
             middle = p["speeds"][len(p["speeds"]) // 2]
             records += check_deck_case(_with_exact_line(text, p["exact_line"], code), [middle], types, code,
                                        (i, j, p["typed_e"]))
+    for w in res["walls"] if exact is None else []:
+        (t,) = w["types"]
+        worst, detail, checked = _check_deck_row(w, Pair.wall(types[t]["radius"], types[t]["density"]), (t,),
+                                                 _wall_runner(text, code, len(types), types, w), code,
+                                                 f"type {t} on wall {w['wall']}")
+        records.append({"method": f"deck ({code}): wall", "rule": w["end"], "case": case, "pair": f"{t}-wall",
+                        "status": "FAIL" if worst > 1.0 else "answered" if checked else "refused", "ratio": worst,
+                        "detail": detail if worst > 1.0 else ""})
     return records
 
 
@@ -1107,6 +1179,7 @@ def main(argv=None) -> int:
     else:
         print("fuzz: LIGGGHTS not installed (as root: apt-get install liggghts): no LIGGGHTS decks or scenes",
               file=sys.stderr)
+    jobs = [job for job in jobs if job[1] > 0]     # e.g. --numbers 0, or too few for every chunk
     t0 = time.time()
     records: list[dict] = []
     counts = dict.fromkeys(KINDS, 0)
