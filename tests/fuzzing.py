@@ -32,6 +32,7 @@ import io
 import json
 import math
 import os
+import re
 import sys
 import time
 import traceback
@@ -823,7 +824,8 @@ def liggghts_deck_cases(draw):
     """A random LIGGGHTS deck: 1-3 atom types (radius 0.05-50 mm, density 500-20,000, E 1e5-1e11,
     nu 0-0.55), a symmetric coefficientRestitution matrix (0.02-0.97), hertz or hooke (with a
     characteristicVelocity), limitForce on or off, maybe soft_particles / hard_particles yes, maybe
-    E through a variable, maybe a primitive wall of one of the types at z = 0; two speeds a decade
+    E through a variable, maybe a wall of one of the types at z = 0 (a plane or a mesh face, its own
+    limitForce or none); two speeds a decade
     apart (some draws break LIGGGHTS' own limits on E, nu
     and e: the audit must refuse exactly those). Returns (deck text, speeds, types)."""
     log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
@@ -849,11 +851,17 @@ def liggghts_deck_cases(draw):
     if model == "hooke":
         lines.append(f"fix m5 all property/global characteristicVelocity scalar {log(-1.0, 1.0):.4g}")
     limit = draw(st.sampled_from(["on", "off"]))
-    keywords = f"model {model} tangential {draw(st.sampled_from(['history', 'no_history']))} limitForce {limit}"
-    lines += [f"pair_style gran {keywords}", "pair_coeff * *"]
-    if draw(st.booleans()):   # a flat wall of one of the types, the pair style's model
-        lines += _wall_lines(draw, types, f"fix floor GROUP wall/gran {keywords} primitive type "
-                                          f"{draw(st.sampled_from(list(types)))} zplane 0.0")
+    models = f"model {model} tangential {draw(st.sampled_from(['history', 'no_history']))}"
+    lines += [f"pair_style gran {models} limitForce {limit}", "pair_coeff * *"]
+    if draw(st.booleans()):
+        # a flat wall of one of the types: a plane or a mesh face (plate.stl, written by the check),
+        # the pair style's models (LIGGGHTS demands them) and a limitForce of its own, or none
+        w, own = draw(st.sampled_from(list(types))), draw(st.sampled_from(["", " limitForce on", " limitForce off"]))
+        if draw(st.booleans()):
+            lines += _wall_lines(draw, types, f"fix floor GROUP wall/gran {models} primitive type {w} zplane 0.0{own}")
+        else:
+            lines += [f"fix mesh1 all mesh/surface file plate.stl type {w}"]
+            lines += _wall_lines(draw, types, f"fix floor GROUP wall/gran {models} mesh n_meshes 1 meshes mesh1{own}")
     lines += [f"fix pts{t} all particletemplate/sphere {15485863 + t} atom_type {t} density constant "
               f"{m['density']:.8g} radius constant {m['radius']:.8g}" for t, m in types.items()]
     return "\n".join(lines) + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()}
@@ -971,28 +979,36 @@ def _engine_lines(text: str, code: str, wall: bool = False) -> str:
         return "\n".join(ln for ln in body if ln.startswith(("variable", "pair_", "group", "fix floor") if wall
                                                          else ("variable", "pair_coeff")))
     start = next(k for k, ln in enumerate(body) if ln.startswith("create_box"))
-    return "\n".join([body[start]] + [ln for ln in body[start + 1:] if not ln.startswith(("fix pts", "fix floor", "group"))]
+    return "\n".join([body[start]] + [ln for ln in body[start + 1:]
+                                      if not ln.startswith(("fix pts", "fix floor", "fix mesh1", "group"))]
                      + [ln for ln in body[:start] if ln.startswith("variable")])
 
 
 def _wall_runner(text: str, code: str, ntypes: int, types: dict, wall: dict):
-    """As _lammps_runner for a sphere of the key's type falling onto the deck's wall (placed at z = 0
-    as the deck writes it; _engine_lines): LIGGGHTS with the wall's type (the wall's keywords are
-    the pair style's), all runs in one process unless one stays on the wall (then one each)."""
+    """As _lammps_runner for a sphere of the key's type falling onto the deck's own wall (placed at
+    z = 0 as the deck writes it; _engine_lines); for LIGGGHTS on all atoms, its mesh a triangle
+    scaled to the sphere (centre 2.1 radii from its nearest edge). All runs in one process unless
+    one stays on the wall (then one each)."""
     from restitution.dem.lammps import lammps_wall_eps
     from restitution.dem.liggghts import liggghts_wall_eps_runs
 
     lines = _engine_lines(text, code, wall=True)
+    own = [re.sub(r"^fix floor \S+", "fix floor all", ln) for ln in text.splitlines()
+           if ln.startswith(("fix mesh1", "fix floor"))]
 
     def batch(runs):
         (t,) = runs[0][1]
         r, rho = types[t]["radius"], types[t]["density"]
+        plate = "".join(["solid plate\nfacet normal 0 0 1\n outer loop\n",
+                         *(f"  vertex {x * r!r} {y * r!r} 0\n" for x, y in ((-3, -3), (6, -3), (-3, 6))),
+                         " endloop\nendfacet\nendsolid plate\n"])
         try:
             if code == "lammps":
                 return [lammps_wall_eps(r, rho, lines, g, dt, t_run, atom_type=t, ntypes=ntypes)
                         for _, _, g, dt, t_run in runs]
             return liggghts_wall_eps_runs(r, rho, [(lines, g, dt, t_run, t, wall["wall_type"])
-                                                   for _, _, g, dt, t_run in runs])
+                                                   for _, _, g, dt, t_run in runs],
+                                          wall="\n".join(own), files={"plate.stl": plate})
         except Exception as exc:  # noqa: BLE001
             return [exc]
 

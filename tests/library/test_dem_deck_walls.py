@@ -101,21 +101,56 @@ pair_style gran model hertz tangential history{limit}
 pair_coeff * *
 fix pts1 all particletemplate/sphere 1 atom_type 1 density constant 2500 radius constant 0.001
 fix pts2 all particletemplate/sphere 2 atom_type 2 density constant 7800 radius constant 0.0015
-fix floor all wall/gran model hertz tangential history{limit} primitive type 2 zplane 0.0
+{floor}
 fix drum all wall/gran model hertz tangential history primitive type 2 zcylinder 0.05 0. 0.
 fix cad all wall/gran model hertz tangential history mesh n_meshes 1 meshes hopper
+{plate}
+"""
+#: the walls in fix wall/gran's documented order: model pairs, the wall, then model keywords
+FLOOR = "fix floor all wall/gran model hertz tangential history primitive type 2 zplane 0.0{limit}"
+PLATE = ("fix mesh1 all mesh/surface file plate.stl type 1\n"
+         "fix plate all wall/gran model hertz tangential history mesh n_meshes 1 meshes mesh1{limit}")
+#: one triangle at z = 0, the falling sphere's centre (0, 0) 2.1 mm from its nearest edge
+PLATE_STL = """solid plate
+facet normal 0 0 1
+ outer loop
+  vertex -0.003 -0.003 0
+  vertex 0.006 -0.003 0
+  vertex -0.003 0.006 0
+ endloop
+endfacet
+endsolid plate
 """
 
 
+def liggghts_deck(limit: str) -> str:
+    return LIGGGHTS_DECK.format(limit=limit, floor=FLOOR.format(limit=limit), plate=PLATE.format(limit=limit))
+
+
 def test_liggghts_walls_take_the_wall_types_materials(tmp_path):
-    res, err = audit(tmp_path, LIGGGHTS_DECK.format(limit=""), 1.0)
-    assert [(w["wall"], w["types"], w["wall_type"]) for w in res["walls"]] == [("floor", [1], 2), ("floor", [2], 2)]
+    res, err = audit(tmp_path, liggghts_deck(""), 1.0)
+    assert [(w["wall"], w["mesh"], w["types"], w["wall_type"]) for w in res["walls"]] == [
+        ("floor", None, [1], 2), ("floor", None, [2], 2), ("plate", "mesh1", [1], 1), ("plate", "mesh1", [2], 1)]
     # hertz, limitForce off: LIGGGHTS' damping gives eps = e of the type pair at every speed
-    assert [w["typed_e"] for w in res["walls"]] == [0.5, 0.4]
+    assert [w["typed_e"] for w in res["walls"]] == [0.5, 0.4, 0.6, 0.5]
     for w in res["walls"]:
         assert all(abs(e - w["typed_e"]) < 1e-9 for e in w["eps"])
-    assert {row["text"].split()[1] for row in res["unknown_lines"]} == {"drum", "cad"}
-    assert "mesh" in err and "zcylinder" in err
+    assert {row["text"].split()[1]: row["why"] for row in res["unknown_lines"]} == {
+        "drum": "a zcylinder wall (only planes are audited): the wall's contacts are not audited",
+        "cad": "mesh hopper has no fix mesh/surface before it: the wall's contacts are not audited"}
+    assert "mesh hopper" in err and "zcylinder" in err
+
+
+def test_a_liggghts_walls_own_limit_force_is_read_after_the_wall(tmp_path):
+    """limitForce is a model keyword of the wall's own (after the wall style), not the pair style's:
+    on only there, the wall's eps changes and the pairs' do not."""
+    res, _ = audit(tmp_path, liggghts_deck(" limitForce on").replace("history limitForce on\npair_coeff",
+                                                                      "history\npair_coeff"), 1.0)
+    off, _ = audit(tmp_path, liggghts_deck(""), 1.0)
+    assert [p["eps"] for p in res["pairs"]] == [p["eps"] for p in off["pairs"]]
+    assert all("limitForce on" in w["model"] and "limitForce off" in v["model"]
+               for w, v in zip(res["walls"], off["walls"]))
+    assert all(w["end"] == "force" and v["end"] == "overlap" for w, v in zip(res["walls"], off["walls"]))
 
 
 # ------------------------------------------------------------------------------------ engines
@@ -144,22 +179,28 @@ def test_lammps_gives_the_audited_wall_eps(tmp_path, wall, k):
                                                      "(make test does it)")
 @pytest.mark.parametrize("limit", ["", " limitForce on"], ids=["limitForce off", "limitForce on"])
 def test_liggghts_gives_the_audited_wall_eps(tmp_path, limit):
+    """Each wall's own lines (the plane, and the mesh with its fix mesh/surface) run in LIGGGHTS, a
+    sphere of each type falling onto it: extrapolated to dt = 0, within 1e-6 of the audit."""
     speeds = (0.1, 10.0)
-    text = LIGGGHTS_DECK.format(limit=limit)
+    text = liggghts_deck(limit)
     res, _ = audit(tmp_path, text, *speeds)
     lines = "\n".join(["create_box 2 box"] + [ln for ln in text.splitlines()
                                               if "property/global" in ln or ln.startswith("pair_")])
+    walls = {"floor": FLOOR.format(limit=limit), "plate": PLATE.format(limit=limit)}
     from restitution.dem.contact import Contact
-    for row, (R, rho) in zip(res["walls"], [(0.001, 2500.0), (0.0015, 7800.0)]):
+    assert len(res["walls"]) == 4
+    for row in res["walls"]:
+        R, rho = [(0.001, 2500.0), (0.0015, 7800.0)][row["types"][0] - 1]
         contact = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")})
         cases = []
         for g in speeds:
             t_c = contact.contact_time(g)
             cases += [(lines, g, t_c / 1000 / m, 1.5 * t_c, row["types"][0], row["wall_type"]) for m in (1, 2, 4)]
-        eps = liggghts.liggghts_wall_eps_runs(R, rho, cases)
+        eps = liggghts.liggghts_wall_eps_runs(R, rho, cases, wall=walls[row["wall"]].replace(
+            f"fix {row['wall']} all", "fix wall all"), files={"plate.stl": PLATE_STL})
         for n, audited in enumerate(row["eps"]):
             got = richardson(*eps[3 * n:3 * n + 3], row["gamma"])
-            assert abs(got / audited - 1) <= 1e-6, (row["types"], speeds[n], eps, audited)
+            assert abs(got / audited - 1) <= 1e-6, (row["wall"], row["types"], speeds[n], eps, audited)
 
 
 def test_where_the_centre_would_reach_the_wall_no_eps_is_listed(tmp_path):

@@ -5,9 +5,11 @@ The reader takes only what decides a head-on two-sphere contact: the contact mod
 coefficients per type pair, the end-of-contact keyword, and each type's radius and density.
 Commands that cannot change that contact (output, regions, gravity, integrators, ...) are passed
 over; any other line is reported as not understood, one per line, and never guessed. Flat walls
-(``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes) are audited as a
-sphere of each type they act on (``group ID type ...`` or all) hitting them head-on; other walls
-(meshes, cylinders, regions, older models) are named as not audited. An
+(``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes and the faces of
+meshes, of the type their ``fix mesh/surface`` gives) are audited as a sphere of each type they act
+on (``group ID type ...`` or all) hitting them head-on; other walls (cylinders, regions, a mesh's
+edges and corners, older models) are named as not audited. A group by type holds the atoms present
+when it is defined; the audit takes the types it names. An
 option that does change the contact but is not mapped (a cohesion model, JKR, a pair style other
 than those two), a type without radius or density, or a type pair without coefficients is refused
 with one line (DeckError, exit status 2 in the CLI).
@@ -60,7 +62,7 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "soft_particles", "modify_timing"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
-                     "viscous", "enforce2d", "move", "mesh/surface", "mesh/surface/stress", "freeze", "setforce",
+                     "viscous", "enforce2d", "move", "freeze", "setforce",
                      "ave/time", "ave/atom", "print", "nve/limit", "move/mesh",
                      "wall/region", "heat/gran", "heat/gran/conduction", "multisphere", "property/atom"}
 #: LAMMPS pair_coeff keywords after the normal model: name -> number of arguments
@@ -97,6 +99,7 @@ class Deck:
     hard: bool = False                            # its limits on Young's modulus lifted
     groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
     walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
+    meshes: dict = field(default_factory=dict)    # LIGGGHTS fix mesh/surface ID -> its atom type, or None
 
 
 _ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
@@ -457,6 +460,10 @@ def _fix(deck, words, where, line, loc):
     elif style == "wall/gran":
         group = words[2]
         deck.walls.append((loc, words, "all" if group == "all" else deck.groups.get(group, "undefined")))
+    elif style in ("mesh/surface", "mesh/surface/stress"):
+        # LIGGGHTS: a mesh's atom type (its material), for the walls made of it; None if not given
+        typed = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "type"]
+        deck.meshes[words[1]] = int(_number(typed[0], where, line)) if typed else None
     elif style == "wall/gran/region":
         deck.unknown.append((*loc, line, "a region wall (any shape): its contacts are not audited"))
     elif style in _IRRELEVANT_FIXES:
@@ -703,6 +710,9 @@ def _liggghts_limits(deck: Deck, E: list, nu: list, e: list, where_e: str) -> No
                                                            f"coefficientRestitution <= {LIGGGHTS_E[1]:g}")
 
 
+#: LAMMPS fix wall/gran keywords after the wall style, with their number of values: they move or
+#: heat the wall or write output, none changes a head-on contact's eps at a given impact speed
+_LAMMPS_WALL_KEYWORDS = {"wiggle": 3, "shear": 2, "contacts": 0, "temperature": 1}
 #: Walls the audit takes: planes (a sphere against a flat wall). Curved ones are named, not audited.
 _FLAT_WALLS = ("xplane", "yplane", "zplane")
 _WALL_STYLES = _FLAT_WALLS + ("zcylinder", "region")
@@ -720,9 +730,11 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
 
 
 def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
-    """fix ID group wall/gran granular MODEL... xplane|yplane|zplane ...: (a function of the wall
-    Pair and the sphere's type giving (contact, typed e, model), None), or None with the reason in
-    ``unknown``. The wall's model is that of a pair_coeff line with the wall as the second body."""
+    """fix ID group wall/gran granular MODEL... xplane|yplane|zplane ...: [(None, a function of the
+    wall Pair and the sphere's type giving (contact, typed e, model), None)], or None with the
+    reason in ``unknown``. The wall's model is that of a pair_coeff line with the wall as the second
+    body, and LAMMPS' keywords after the wall style (wiggle, shear, contacts, temperature) move it,
+    heat it or write output: none changes the contact."""
     text = " ".join(words)
     style = words[4] if len(words) > 4 else None
     if style != "granular":
@@ -734,6 +746,12 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
         shape = "no wall style" if k is None else f"a {words[k]} wall"
         unknown.append((*loc, text, f"{shape}: only planes are audited"))
         return None
+    n = k + 3                                      # xplane|yplane|zplane lo hi
+    while n < len(words) and words[n] in _LAMMPS_WALL_KEYWORDS:
+        n += 1 + _LAMMPS_WALL_KEYWORDS[words[n]]
+    if n < len(words):
+        unknown.append((*loc, text, f"keyword {words[n]} is not mapped: the wall's contacts are not audited"))
+        return None
     try:
         c = _coeff(deck, ["pair_coeff", "*", "*", *words[5:k]], _where(loc), text)
     except DeckError as why:
@@ -744,54 +762,89 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
     setting = {**stiffness, "damping": c.damping, "eta_n0": c.args[1], "limit_damping": c.limit}
     model = f"LAMMPS {c.normal}, damping {c.damping}, {words[k]} wall"
     typed = c.args[1] if c.damping == "tsuji" else None
-    return (lambda pair, t: (lammps_contact(pair, **setting), typed, model)), None
+    return [(None, lambda pair, t: (lammps_contact(pair, **setting), typed, model), None)]
 
 
-#: fix wall/gran keywords before `primitive` (LIGGGHTS) that take no part in a head-on contact
-_LIGGGHTS_WALL_IGNORED = ("tangential", "rolling_friction", "tangential_damping", "cohesion_off")
+#: LIGGGHTS fix wall/gran: the model_type/model_name pairs that come before the wall style, and
+#: the general keywords after it with their number of values (none changes a head-on contact)
+_LIGGGHTS_MODEL_TYPES = ("model", "tangential", "cohesion", "rolling_friction", "surface")
+_LIGGGHTS_WALL_GENERAL = {"shear": 2, "temperature": 1, "store_force": 1, "store_force_contact": 1,
+                          "store_force_contact_stress": 1}
+#: primitive wall styles and their number of arguments
+_LIGGGHTS_PRIMITIVES = {"xplane": 1, "yplane": 1, "zplane": 1, "xcylinder": 3, "ycylinder": 3, "zcylinder": 3}
 
 
 def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
-    """fix ID group wall/gran model M ... primitive type W xplane|yplane|zplane V: as _lammps_wall,
-    with W: the contact of a type with an atom of the wall's type W under the wall's own model
-    keywords, the wall as the second body; or None with the reason in ``unknown`` (mesh walls,
-    curved primitives, models not mapped)."""
-    text = " ".join(words)
-    model, limit, k = None, False, 3
-    while k + 1 < len(words) and words[k + 1] not in ("primitive", "mesh"):
-        key, val = words[k + 1], words[k + 2] if k + 2 < len(words) else None
+    """fix ID group wall/gran [model_type model_name]... (primitive type W STYLE ARGS | mesh
+    n_meshes N meshes ID...) [general keywords] [model keywords], the order LIGGGHTS documents:
+    for each flat surface (a primitive plane, or each mesh, whose type is its fix mesh/surface's) a
+    triple (mesh ID or None, a function as in _lammps_wall, W): the contact of a type with an atom
+    of type W under the wall's own model (its model keywords, limitForce among them, are its own,
+    not the pair style's), the wall as the second body. None, with the reason in ``unknown``,
+    where a part is not mapped (a cylinder, a cohesion model, an unknown keyword, ...)."""
+    text, where = " ".join(words), _where(loc)
+
+    def skip(why):
+        unknown.append((*loc, text, f"{why}: the wall's contacts are not audited"))
+        return None
+
+    model, limit, k = None, False, 4
+    while k + 1 < len(words) and words[k] in _LIGGGHTS_MODEL_TYPES:
+        key, val = words[k], words[k + 1]
         if key == "model" and val in ("hertz", "hooke"):
             model = val
-        elif key == "limitForce":
-            limit = val == "on"
-        elif key == "surface" and val == "default" or key in _LIGGGHTS_WALL_IGNORED:
-            pass
+        elif key in ("tangential", "rolling_friction") or key == "surface" and val == "default":
+            pass                  # no part in a head-on contact (as for the pair style)
         else:
-            unknown.append((*loc, text, f"{key} {val} is not mapped: the wall's contacts are not audited"))
-            return None
+            return skip(f"{key} {val} is not mapped")
         k += 2
-    rest = words[k + 1:]
-    if not rest or rest[0] != "primitive":
-        unknown.append((*loc, text, "a mesh wall: its contacts are not audited (planes are)"))
-        return None
     if model is None:
-        unknown.append((*loc, text, "no model hertz|hooke: the wall's contacts are not audited"))
-        return None
-    if len(rest) < 4 or rest[1] != "type" or rest[3] not in _FLAT_WALLS:
-        shape = f"a {rest[3]} wall" if len(rest) >= 4 and rest[1] == "type" else "a primitive wall not read"
-        unknown.append((*loc, text, f"{shape}: only planes (primitive type W xplane|yplane|zplane) are audited"))
-        return None
-    w = int(_number(rest[2], _where(loc), text))
-    if not 1 <= w <= deck.ntypes:
-        raise DeckError(_where(loc), text, f"the wall's type must be in 1..{deck.ntypes}")
+        return skip("no model hertz|hooke")
+    surfaces = []                 # (mesh ID or None, wall type, what it is)
+    if k < len(words) and words[k] == "primitive":
+        if k + 3 >= len(words) or words[k + 1] != "type" or words[k + 3] not in _LIGGGHTS_PRIMITIVES:
+            return skip("a primitive wall not read (primitive type W STYLE ARGS)")
+        style = words[k + 3]
+        if style not in _FLAT_WALLS:
+            return skip(f"a {style} wall (only planes are audited)")
+        surfaces.append((None, int(_number(words[k + 2], where, text)), f"{style} wall"))
+        k += 4 + _LIGGGHTS_PRIMITIVES[style]
+    elif k + 3 < len(words) and words[k:k + 4:2] == ["mesh", "meshes"] or words[k:k + 2] == ["mesh", "n_meshes"]:
+        n = int(_number(words[k + 2], where, text)) if words[k + 1] == "n_meshes" else 0
+        if k + 4 + n > len(words) or words[k + 3] != "meshes":
+            return skip("a mesh wall not read (mesh n_meshes N meshes ID...)")
+        for mesh in words[k + 4:k + 4 + n]:
+            if mesh not in deck.meshes:
+                return skip(f"mesh {mesh} has no fix mesh/surface before it")
+            if deck.meshes[mesh] is None:
+                return skip(f"mesh {mesh}'s fix mesh/surface gives no type")
+            surfaces.append((mesh, deck.meshes[mesh], f"a face of mesh {mesh}"))
+        k += 4 + n
+    else:
+        return skip("no wall style read (primitive or mesh)")
+    while k < len(words):
+        key = words[k]
+        if key in _LIGGGHTS_WALL_GENERAL:
+            k += 1 + _LIGGGHTS_WALL_GENERAL[key]
+        elif key == "limitForce" and k + 1 < len(words):
+            limit, k = words[k + 1] == "on", k + 2
+        elif key == "tangential_damping" and k + 1 < len(words):
+            k += 2
+        else:
+            return skip(f"keyword {key} is not mapped")
+    for _, w, _ in surfaces:
+        if not 1 <= w <= deck.ntypes:
+            raise DeckError(where, text, f"the wall's type must be in 1..{deck.ntypes}")
     E, nu, matrix, _ = _liggghts_materials(deck)
     kw = _liggghts_model(deck, model, limit)
 
-    def contact(pair, t):
-        e = matrix[(t - 1) * deck.ntypes + (w - 1)]
-        c = liggghts_contact(pair, E=E[t - 1], nu=nu[t - 1], E2=E[w - 1], nu2=nu[w - 1], e=e, **kw)
-        return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {rest[3]} wall of type {w}"
-    return contact, w
+    def contact_with(w: int, surface: str):
+        def contact(pair, t):
+            e = matrix[(t - 1) * deck.ntypes + (w - 1)]
+            c = liggghts_contact(pair, E=E[t - 1], nu=nu[t - 1], E2=E[w - 1], nu2=nu[w - 1], e=e, **kw)
+            return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {surface} of type {w}"
+        return contact
+    return [(mesh, contact_with(w, label), w) for mesh, w, label in surfaces]
 
 
 def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
@@ -800,17 +853,17 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
     rows, unknown = [], []
     parse = _lammps_wall if deck.code == "LAMMPS" else _liggghts_wall
     for loc, words, types in deck.walls:
-        known = parse(deck, loc, words, unknown)
-        if known is None or (types := _wall_types(deck, types, loc, words, unknown)) is None:
+        surfaces = parse(deck, loc, words, unknown)
+        if surfaces is None or (types := _wall_types(deck, types, loc, words, unknown)) is None:
             continue
-        contact_of, wall_type = known
-        for t in types:
-            sphere = _pair(deck, t, t)
-            pair = Pair.wall(sphere.R1, sphere.densities[0])
-            contact, typed, model = contact_of(pair, t)
-            rows.append(_with_eps({"wall": words[1], "types": [t], "wall_type": wall_type, "model": model,
-                                   "typed_e": typed, "end": contact.end, "exact_line": None, "line": loc[1],
-                                   "file": loc[0]}, contact, speeds, pair.R1))
+        for mesh, contact_of, wall_type in surfaces:
+            for t in types:
+                sphere = _pair(deck, t, t)
+                pair = Pair.wall(sphere.R1, sphere.densities[0])
+                contact, typed, model = contact_of(pair, t)
+                rows.append(_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
+                                       "model": model, "typed_e": typed, "end": contact.end, "exact_line": None,
+                                       "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1))
     return rows, unknown
 
 

@@ -140,14 +140,14 @@ def _wall_line(contact_lines: str, wall_type: int) -> str:
 
 
 def _wall_block(radius: float, density: float, contact_lines: str, g: float, dt: float, steps: int, tag: int,
-                atom_type: int, wall_type: int) -> str:
+                atom_type: int, wall_type: int, wall: str | None = None) -> str:
     # a resting type-1 sphere out of reach where the falling one has another type (types must start
     # from 1, see _run_block); the falling one starts touching the plane
     bystander = "" if atom_type == 1 else f"""
 create_atoms 1 single {4 * radius!r} {4 * radius!r} {4 * radius!r} units box
 set atom 2 diameter {radius!r} density {density!r}"""
     return _prologue(8.0 * radius, contact_lines, 0.5 * radius, dt) + f"""
-{_wall_line(contact_lines, wall_type)}
+{_wall_line(contact_lines, wall_type) if wall is None else wall}
 create_atoms {atom_type} single 0 0 {radius!r} units box
 set atom 1 diameter {2 * radius!r} density {density!r}{bystander}
 set atom 1 vz {-g!r}
@@ -157,22 +157,27 @@ variable gap equal z[1]
 """ + _epilogue(steps, tag)
 
 
-def liggghts_wall_eps_runs(radius: float, density: float, cases: list, timeout: float = 600.0) -> list[float]:
+def liggghts_wall_eps_runs(radius: float, density: float, cases: list, timeout: float = 600.0,
+                           wall: str | None = None, files: dict | None = None) -> list[float]:
     """eps = (speed after) / g of a sphere falling head-on at speed g onto a flat wall, for each case
     (contact_lines, g, dt, t_run, atom_type, wall_type) in one LIGGGHTS process: contact_lines are a
     scene's (create_box N and its fix property/global and pair_style lines), the wall has atom type
-    wall_type and the deck's contact model."""
+    wall_type and the deck's contact model. ``wall``: the wall's lines instead (a deck's own, a
+    flat surface at z = 0 with the fix ID wall), ``files``: {name: text} they read (a mesh)."""
     states = _run([_wall_block(radius, density, case[0], case[1], case[2], int(math.ceil(case[3] / case[2])), i,
-                               case[4], case[5]) for i, case in enumerate(cases)], timeout)
+                               case[4], case[5], wall) for i, case in enumerate(cases)], timeout, files)
     if any(z <= radius for _, z in states):
         raise ArithmeticError("the sphere had not left the wall at the end of the LIGGGHTS run")
     return [v / case[1] for case, (v, _) in zip(cases, states)]
 
 
-def _run(blocks: list[str], timeout: float) -> list[tuple]:
-    """Run the blocks in one LIGGGHTS process; each block's printed (rel, gap)."""
+def _run(blocks: list[str], timeout: float, files: dict | None = None) -> list[tuple]:
+    """Run the blocks in one LIGGGHTS process, ``files`` ({name: text}) beside the input; each
+    block's printed (rel, gap)."""
     # errors="replace": a failing LIGGGHTS can print stray bytes; its message must still reach the user
     with tempfile.TemporaryDirectory() as tmp:
+        for name, text in (files or {}).items():
+            (Path(tmp) / name).write_text(text)
         path = Path(tmp) / "in.collide"
         path.write_text("".join(blocks))
         proc = subprocess.run(["liggghts", "-in", str(path), "-echo", "none", "-log", "none"], cwd=tmp,
