@@ -122,3 +122,11 @@ def test_a_deep_contact_run_long_keeps_both_spheres_in_the_box():
     t_c = 1.19e-3
     (rel, gap), = liggghts_states(pair, [(lines, 25.0, t_c / 4000, 6 * t_c, (1, 2))])
     assert gap > 0.1 and -rel / 25.0 == pytest.approx(0.871, rel=1e-3)
+
+
+def test_a_failing_run_says_liggghts_own_error():
+    """LIGGGHTS stops with MPI_Abort, which dropped its buffered ERROR line: the message said only
+    that MPI aborted. Run line-buffered, the cause is in it."""
+    with pytest.raises(RuntimeError, match=r"ERROR.*Substitution for illegal variable"):
+        liggghts_states(PAIR, [("create_box 1 box\nfix m1 all property/global youngsModulus peratomtype ${E1}",
+                                1.0, 1e-7, 1e-6)])

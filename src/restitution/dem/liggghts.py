@@ -180,7 +180,10 @@ def _run(blocks: list[str], timeout: float, files: dict | None = None) -> list[t
             (Path(tmp) / name).write_text(text)
         path = Path(tmp) / "in.collide"
         path.write_text("".join(blocks))
-        proc = subprocess.run(["liggghts", "-in", str(path), "-echo", "none", "-log", "none"], cwd=tmp,
+        # line-buffered: LIGGGHTS ends an error with MPI_Abort, which drops what a pipe still
+        # buffers, its ERROR line among it (coreutils' stdbuf; without it the message is the abort's)
+        line = ["stdbuf", "-oL"] if shutil.which("stdbuf") else []
+        proc = subprocess.run([*line, "liggghts", "-in", str(path), "-echo", "none", "-log", "none"], cwd=tmp,
                               capture_output=True, text=True, errors="replace", timeout=timeout,
                               stdin=subprocess.DEVNULL)
     found, lost = {}, []
