@@ -130,3 +130,22 @@ def test_a_failing_run_says_liggghts_own_error():
     with pytest.raises(RuntimeError, match=r"ERROR.*Substitution for illegal variable"):
         liggghts_states(PAIR, [("create_box 1 box\nfix m1 all property/global youngsModulus peratomtype ${E1}",
                                 1.0, 1e-7, 1e-6)])
+
+
+def test_a_run_open_mpi_could_not_start_is_started_again(monkeypatch):
+    """make fuzz: one LIGGGHTS run in some 500 failed with Open MPI's 'Unable to start a daemon on
+    the local node' before reading its input; started again it ran."""
+    import subprocess
+
+    from restitution.dem import liggghts
+
+    real, calls = subprocess.run, []
+
+    def flaky(cmd, **kw):
+        calls.append(cmd)
+        if len(calls) == 1:
+            return subprocess.CompletedProcess(cmd, 1, "", "ORTE_ERROR_LOG: Unable to start a daemon on the local node")
+        return real(cmd, **kw)
+    monkeypatch.setattr(liggghts.subprocess, "run", flaky)
+    lines = liggghts_pair_style(e=0.5, limit_force=False, model="hertz", **MATERIAL)
+    assert len(liggghts_states(PAIR, [(lines, 1.0, 1e-7, 1e-6)])) == 1 and len(calls) == 2
