@@ -118,7 +118,7 @@ class Pair:
         for name, v in (("R", R), ("density", density)):
             require_positive_finite(name, v)
         m = derived_in_range("the mass", density * 4.0 / 3.0 * math.pi * _pow(R, 3), {"radius": R, "density": density})
-        return cls(R, WALL_SIZE, m, WALL_SIZE, (density, None))
+        return cls(R, WALL_SIZE, m, WALL_SIZE)
 
     @property
     def m(self) -> float:
