@@ -211,3 +211,16 @@ def test_where_the_centre_would_reach_the_wall_no_eps_is_listed(tmp_path):
     assert [w["passes_through"] for w in rows] == [[False, True], [False, True]]
     assert all(w["eps"][1] is None and w["eps"][0] > 0.99 for w in rows)
     assert "type 1 on wall w2: the engine pushes the sphere through the wall from g = 100" in err
+
+
+@pytest.mark.parametrize("group_lines, types", [
+    (["group g type 2"], [2]),
+    (["group g type 1:2"], [1, 2]),
+    (["group g type <> 1 2"], [1, 2]),
+    (["group g type 1", "group g type 2"], [1, 2]),            # a second type line adds to the group
+    (["group g type 1", "group g delete", "group g type 2"], [2]),
+])
+def test_the_walls_group_gives_its_types(tmp_path, group_lines, types):
+    text = LAMMPS_DECK.split("group small")[0] + "\n".join(group_lines) + f"\n{DASHPOT_WALL.replace(' all ', ' g ')}\n"
+    res, err = audit(tmp_path, text, 1.0)
+    assert [w["types"] for w in res["walls"]] == [[t] for t in types] and err == ""
