@@ -1047,7 +1047,8 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", 
     line (the e that gives eps = the e typed, at the middle speed), the deck with that line is
     checked the same way for that pair alone (``exact``: the pair and the eps it must give): the
     audit must now say eps = e, and the engine agree. Every type on the deck's wall likewise, a
-    sphere of that type falling onto the deck's own wall line."""
+    sphere of that type falling onto the deck's own wall line, and its exact line (``exact`` =
+    ("wall", type, e)) the same way."""
     from restitution.core.errors import ParameterError
     from restitution.dem.codes import Pair
     from restitution.dem.deck import audit_deck
@@ -1088,14 +1089,24 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", 
             middle = p["speeds"][len(p["speeds"]) // 2]
             records += check_deck_case(_with_exact_line(text, p["exact_line"], code), [middle], types, code,
                                        (i, j, p["typed_e"]))
-    for w in res["walls"] if exact is None else []:
+    for w in res["walls"]:
         (t,) = w["types"]
+        if exact is not None and exact[:2] != ("wall", t):
+            continue
         worst, detail, checked = _check_deck_row(w, Pair.wall(types[t]["radius"], types[t]["density"]), (t,),
                                                  _wall_runner(text, code, len(types), types, w), code,
                                                  f"type {t} on wall {w['wall']}")
-        records.append({"method": f"deck ({code}): wall", "rule": w["end"], "case": case, "pair": f"{t}-wall",
-                        "status": "FAIL" if worst > 1.0 else "answered" if checked else "refused", "ratio": worst,
-                        "detail": detail if worst > 1.0 else ""})
+        if exact is not None and w["eps"][0] is not None and abs(w["eps"][0] - exact[2]) > 1e-8:
+            worst, detail = math.inf, (f"type {t} on wall {w['wall']}: with its exact line the audit says eps "
+                                       f"{w['eps'][0]:.10g}, not the e typed {exact[2]:.10g}")
+        records.append({"method": f"deck ({code}): wall" + (": exact line" if exact else ""), "rule": w["end"],
+                        "case": case, "pair": f"{t}-wall", "ratio": worst, "detail": detail if worst > 1.0 else "",
+                        "status": "FAIL" if worst > 1.0 else "answered" if checked or exact else "refused"})
+        if exact is None and w["exact_line"]:
+            # the wall's own line replaced (the deck's wall is the line starting "fix floor")
+            fixed = "\n".join(w["exact_line"] if ln.startswith("fix floor") else ln for ln in text.splitlines())
+            records += check_deck_case(fixed + "\n", [w["speeds"][len(w["speeds"]) // 2]], types, code,
+                                       ("wall", t, w["typed_e"]))
     return records
 
 

@@ -62,7 +62,31 @@ def test_flat_walls_are_audited_for_their_groups_types_the_others_named(tmp_path
     assert err.count("\n") == 5 and all(f"fix w{k}" in err for k in range(3, 8))
     w1 = res["walls"][0]
     assert w1["typed_e"] == 0.4 and w1["end"] == "overlap" and w1["overlap_limit"] == R1
-    assert w1["exact_line"] is None and w1["line"] == 11
+    assert w1["line"] == 11 and w1["exact_line"].startswith("fix w1 small wall/gran granular hertz/material 1e7 ")
+    assert [w["exact_line"] for w in res["walls"][1:]] == [None, None]       # no e typed (mass_velocity)
+
+
+@pytest.mark.parametrize("limit", ["", " limit_damping"], ids=["overlap rule", "force rule"])
+def test_a_tsuji_walls_exact_line_gives_the_typed_e(tmp_path, limit):
+    """The wall's own line with tsuji's e replaced: the audit of the deck with it says eps = e for
+    every type (tsuji's eps depends on e alone), and LAMMPS agrees to 1e-6 extrapolated."""
+    wall = TSUJI_WALL.replace(" small ", " all ").replace(" tsuji ", f" tsuji{limit} ")
+    deck = LAMMPS_DECK.replace(TSUJI_WALL, wall)
+    res, _ = audit(tmp_path, deck, 0.1, 1.0, 10.0)
+    rows = [w for w in res["walls"] if w["wall"] == "w1"]
+    exact = {w["exact_line"] for w in rows}
+    assert len(rows) == 2 and len(exact) == 1 and all(abs(e / 0.4 - 1) > 0.01 for w in rows for e in w["eps"])
+    (line,) = exact
+    fixed, _ = audit(tmp_path, deck.replace(wall, line), 0.1, 1.0, 10.0)
+    assert all(abs(e - 0.4) < 1e-8 for w in fixed["walls"] if w["wall"] == "w1" for e in w["eps"])
+    if lammps.available():
+        from restitution.dem.contact import Contact
+        row = [w for w in fixed["walls"] if w["wall"] == "w1"][1]
+        contact = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")})
+        t_c = contact.contact_time(1.0)
+        runs = [lammps.lammps_wall_eps(R2, RHO2, "\n".join([PAIR, line]), 1.0, t_c / 1000 / m, 1.5 * t_c,
+                                       atom_type=2, ntypes=2) for m in (1, 2, 4)]
+        assert abs(richardson(*runs, row["gamma"]) / 0.4 - 1) <= 1e-6, runs
 
 
 @pytest.mark.parametrize("k, R, rho", [(1, R1, RHO1), (2, R2, RHO2)])

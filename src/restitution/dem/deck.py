@@ -731,8 +731,8 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
 
 def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
     """fix ID group wall/gran granular MODEL... xplane|yplane|zplane ...: [(None, a function of the
-    wall Pair and the sphere's type giving (contact, typed e, model), None)], or None with the
-    reason in ``unknown``. The wall's model is that of a pair_coeff line with the wall as the second
+    wall Pair, the sphere's type and the speed an exact line is calibrated at giving (contact,
+    typed e, model, exact line or None), None)], or None with the reason in ``unknown``. The wall's model is that of a pair_coeff line with the wall as the second
     body, and LAMMPS' keywords after the wall style (wiggle, shear, contacts, temperature) move it,
     heat it or write output: none changes the contact."""
     text = " ".join(words)
@@ -762,7 +762,22 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
     setting = {**stiffness, "damping": c.damping, "eta_n0": c.args[1], "limit_damping": c.limit}
     model = f"LAMMPS {c.normal}, damping {c.damping}, {words[k]} wall"
     typed = c.args[1] if c.damping == "tsuji" else None
-    return [(None, lambda pair, t: (lammps_contact(pair, **setting), typed, model), None)]
+
+    def contact_of(pair, t, g):
+        contact = lammps_contact(pair, **setting)
+        exact = None
+        if typed is not None:
+            # tsuji's eps depends on e alone (Omega = 1 / A(e)^2 for hooke and hertz), so one e
+            # serves every type the wall acts on: the wall's own line with it
+            try:
+                cal = calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=typed, g=g, end=contact.end)
+                e_new = lammps_eta_n0(pair, "tsuji", cal.contact)
+            except ParameterError:
+                e_new = None     # no tsuji e gives that eps under this end rule
+            if e_new is not None:
+                exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
+        return contact, typed, model, exact
+    return [(None, contact_of, None)]
 
 
 #: LIGGGHTS fix wall/gran: the model_type/model_name pairs that come before the wall style, and
@@ -839,10 +854,11 @@ def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
     kw = _liggghts_model(deck, model, limit)
 
     def contact_with(w: int, surface: str):
-        def contact(pair, t):
+        def contact(pair, t, g):
+            # no exact line: the entry (t, W) of the matrix also sets the sphere pair (t, W)
             e = matrix[(t - 1) * deck.ntypes + (w - 1)]
             c = liggghts_contact(pair, E=E[t - 1], nu=nu[t - 1], E2=E[w - 1], nu2=nu[w - 1], e=e, **kw)
-            return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {surface} of type {w}"
+            return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {surface} of type {w}", None
         return contact
     return [(mesh, contact_with(w, label), w) for mesh, w, label in surfaces]
 
@@ -860,9 +876,9 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             for t in types:
                 sphere = _pair(deck, t, t)
                 pair = Pair.wall(sphere.R1, sphere.densities[0])
-                contact, typed, model = contact_of(pair, t)
+                contact, typed, model, exact = contact_of(pair, t, speeds[len(speeds) // 2])
                 rows.append(_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
-                                       "model": model, "typed_e": typed, "end": contact.end, "exact_line": None,
+                                       "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
                                        "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1))
     return rows, unknown
 
@@ -895,7 +911,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     ``overlap_limit`` = R1 + R2) eps is None: the engine pushes them through each other. ``walls``:
     the same for every type a flat fix wall/gran acts on, the sphere hitting the wall head-on
     (``overlap_limit`` = R: the centre reaching the wall; ``wall`` the fix ID, ``wall_type`` the
-    LIGGGHTS wall's atom type, no exact line); walls not audited are among ``unknown_lines``."""
+    LIGGGHTS wall's atom type; an exact line, the wall's own, for LAMMPS tsuji walls only); walls
+    not audited are among ``unknown_lines``."""
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
