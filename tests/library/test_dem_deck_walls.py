@@ -248,3 +248,15 @@ def test_the_walls_group_gives_its_types(tmp_path, group_lines, types):
     text = LAMMPS_DECK.split("group small")[0] + "\n".join(group_lines) + f"\n{DASHPOT_WALL.replace(' all ', ' g ')}\n"
     res, err = audit(tmp_path, text, 1.0)
     assert [w["types"] for w in res["walls"]] == [[t] for t in types] and err == ""
+
+
+def test_a_wall_type_the_reader_cannot_read_names_the_wall_and_refuses_nothing(tmp_path):
+    """Walls were passed over before; one whose type is an unevaluated variable (or a mesh's) is
+    named as not audited, and the pairs and the other walls are still answered."""
+    text = liggghts_deck("").replace("primitive type 2", "primitive type ${wt}").replace(
+        "plate.stl type 1", "plate.stl type ${wt}")
+    res, err = audit(tmp_path, text, 1.0)
+    assert len(res["pairs"]) == 3 and res["walls"] == []
+    named = {row["text"].split()[1]: row["why"] for row in res["unknown_lines"]}
+    assert "is not a type the reader can read" in named["floor"]
+    assert "gives no type the reader can read" in named["plate"]

@@ -463,7 +463,7 @@ def _fix(deck, words, where, line, loc):
     elif style in ("mesh/surface", "mesh/surface/stress"):
         # LIGGGHTS: a mesh's atom type (its material), for the walls made of it; None if not given
         typed = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "type"]
-        deck.meshes[words[1]] = int(_number(typed[0], where, line)) if typed else None
+        deck.meshes[words[1]] = int(typed[0]) if typed and typed[0].isdigit() else None
     elif style == "wall/gran/region":
         deck.unknown.append((*loc, line, "a region wall (any shape): its contacts are not audited"))
     elif style in _IRRELEVANT_FIXES:
@@ -822,17 +822,19 @@ def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
         style = words[k + 3]
         if style not in _FLAT_WALLS:
             return skip(f"a {style} wall (only planes are audited)")
-        surfaces.append((None, int(_number(words[k + 2], where, text)), f"{style} wall"))
+        if not words[k + 2].isdigit():
+            return skip(f"wall type {words[k + 2]} is not a type the reader can read")
+        surfaces.append((None, int(words[k + 2]), f"{style} wall"))
         k += 4 + _LIGGGHTS_PRIMITIVES[style]
     elif k + 3 < len(words) and words[k:k + 4:2] == ["mesh", "meshes"] or words[k:k + 2] == ["mesh", "n_meshes"]:
-        n = int(_number(words[k + 2], where, text)) if words[k + 1] == "n_meshes" else 0
-        if k + 4 + n > len(words) or words[k + 3] != "meshes":
+        n = int(words[k + 2]) if words[k + 1] == "n_meshes" and words[k + 2].isdigit() else 0
+        if n == 0 or k + 4 + n > len(words) or words[k + 3] != "meshes":
             return skip("a mesh wall not read (mesh n_meshes N meshes ID...)")
         for mesh in words[k + 4:k + 4 + n]:
             if mesh not in deck.meshes:
                 return skip(f"mesh {mesh} has no fix mesh/surface before it")
             if deck.meshes[mesh] is None:
-                return skip(f"mesh {mesh}'s fix mesh/surface gives no type")
+                return skip(f"mesh {mesh}'s fix mesh/surface gives no type the reader can read")
             surfaces.append((mesh, deck.meshes[mesh], f"a face of mesh {mesh}"))
         k += 4 + n
     else:
