@@ -848,14 +848,17 @@ def liggghts_deck_cases(draw):
               f"fix m2 all property/global poissonsRatio peratomtype {' '.join(nu)}",
               f"fix m3 all property/global coefficientRestitution peratomtypepair {n} {matrix}",
               f"fix m4 all property/global coefficientFriction peratomtypepair {n} " + " ".join(["0.5"] * n * n)]
-    if model == "hooke":
+    wall = draw(st.sampled_from([None, "hertz", "hooke"]))
+    if "hooke" in (model, wall):
         lines.append(f"fix m5 all property/global characteristicVelocity scalar {log(-1.0, 1.0):.4g}")
     limit = draw(st.sampled_from(["on", "off"]))
-    models = f"model {model} tangential {draw(st.sampled_from(['history', 'no_history']))}"
-    lines += [f"pair_style gran {models} limitForce {limit}", "pair_coeff * *"]
-    if draw(st.booleans()):
+    tangential = f"tangential {draw(st.sampled_from(['history', 'no_history']))}"
+    lines += [f"pair_style gran model {model} {tangential} limitForce {limit}", "pair_coeff * *"]
+    if wall is not None:
         # a flat wall of one of the types: a plane or a mesh face (plate.stl, written by the check),
-        # the pair style's models (LIGGGHTS demands them) and a limitForce of its own, or none
+        # a model of its own (LIGGGHTS 3.8.0 runs a hooke wall beside hertz pairs, though its manual
+        # says it must match) and a limitForce of its own, or none
+        models = f"model {wall} {tangential}"
         w, own = draw(st.sampled_from(list(types))), draw(st.sampled_from(["", " limitForce on", " limitForce off"]))
         if draw(st.booleans()):
             lines += _wall_lines(draw, types, f"fix floor GROUP wall/gran {models} primitive type {w} zplane 0.0{own}")

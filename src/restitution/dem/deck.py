@@ -826,8 +826,8 @@ def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
             return skip(f"wall type {words[k + 2]} is not a type the reader can read")
         surfaces.append((None, int(words[k + 2]), f"{style} wall"))
         k += 4 + _LIGGGHTS_PRIMITIVES[style]
-    elif k + 3 < len(words) and words[k:k + 4:2] == ["mesh", "meshes"] or words[k:k + 2] == ["mesh", "n_meshes"]:
-        n = int(words[k + 2]) if words[k + 1] == "n_meshes" and words[k + 2].isdigit() else 0
+    elif k < len(words) and words[k] == "mesh":
+        n = int(words[k + 2]) if k + 2 < len(words) and words[k + 1] == "n_meshes" and words[k + 2].isdigit() else 0
         if n == 0 or k + 4 + n > len(words) or words[k + 3] != "meshes":
             return skip("a mesh wall not read (mesh n_meshes N meshes ID...)")
         for mesh in words[k + 4:k + 4 + n]:
