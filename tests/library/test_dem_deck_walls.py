@@ -260,3 +260,52 @@ def test_a_wall_type_the_reader_cannot_read_names_the_wall_and_refuses_nothing(t
     named = {row["text"].split()[1]: row["why"] for row in res["unknown_lines"]}
     assert "is not a type the reader can read" in named["floor"]
     assert "gives no type the reader can read" in named["plate"]
+
+
+@pytest.mark.parametrize("wall", [
+    "fix w all wall/gran model hertz tangential history mesh",
+    "fix w all wall/gran model hertz tangential history mesh n_meshes",
+    "fix w all wall/gran model hertz tangential history mesh n_meshes 2 meshes mesh1",
+    "fix w all wall/gran model hertz tangential history primitive type",
+    "fix w all wall/gran model hertz tangential history primitive type 1 zplane 0.0 limitForce",
+    "fix w all wall/gran model hertz tangential history",
+    "fix w all wall/gran",
+])
+def test_a_truncated_liggghts_wall_line_is_named_never_a_traceback(tmp_path, wall):
+    res, err = audit(tmp_path, liggghts_deck("") + wall + "\n", 1.0)
+    assert len(res["walls"]) == 4 and "fix w all" in err and err.count("fix w all") == 1
+
+
+@pytest.mark.parametrize("wall", [
+    "fix w all wall/gran granular",
+    "fix w all wall/gran granular hooke zplane 0.0 NULL",
+    "fix w all wall/gran granular hooke 1e4 zplane 0.0 NULL",
+    "fix w all wall/gran granular hooke 1e4 5.0 zplane",
+    "fix w all wall/gran granular hooke 1e4 5.0 damping zplane 0.0 NULL",
+    "fix w all wall/gran",
+])
+def test_a_truncated_lammps_wall_line_is_named_never_a_traceback(tmp_path, wall):
+    res, err = audit(tmp_path, LAMMPS_DECK + wall + "\n", 1.0)
+    assert len(res["walls"]) == 3 and err.count("fix w all") == 1
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("code", ["lammps", "liggghts"])
+def test_every_truncated_or_damaged_line_is_answered_or_refused_in_one_line(code):
+    """Each line of a deck cut after each of its words, and each word replaced by a non-number,
+    an unset variable, an overflowing or a negative number: the audit answers or refuses with a
+    ParameterError (one line in the CLI), never another exception. Before, a short create_box,
+    pair_style, pair_coeff or atom_type, or create_box 1e999, was a traceback."""
+    from restitution.core.errors import ParameterError
+    from restitution.dem.deck import audit_deck
+
+    lines = (LAMMPS_DECK if code == "lammps" else liggghts_deck(" limitForce on")).splitlines()
+    for i, line in enumerate(lines):
+        words = line.split()
+        damaged = [words[:cut] for cut in range(1, len(words))] + [
+            words[:j] + [sub] + words[j + 1:] for j in range(1, len(words)) for sub in ("x", "${nope}", "1e999", "-1")]
+        for new in damaged:
+            try:
+                audit_deck("\n".join(lines[:i] + [" ".join(new)] + lines[i + 1:]) + "\n", [1.0])
+            except ParameterError:
+                pass

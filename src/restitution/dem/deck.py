@@ -74,6 +74,9 @@ _DATA_IRRELEVANT = {"Velocities", "Bonds", "Angles", "Dihedrals", "Impropers", "
                     "Dihedral Coeffs", "Improper Coeffs"}
 #: Atom styles whose data-file Atoms lines are: atom-ID atom-type diameter density x y z [image flags]
 _SPHERE_STYLES = ("sphere", "granular")
+#: Commands the reader needs and their least number of words (the command included): shorter,
+#: LAMMPS stops on them too
+_NEEDS_WORDS = {"create_box": 2, "pair_style": 2, "pair_coeff": 3}
 #: include files nested deeper than this are a loop
 _MAX_INCLUDE_DEPTH = 16
 
@@ -188,6 +191,19 @@ def _number(token: str, where: str, text: str) -> float:
         raise DeckError(where, text, f"{token!r} is not a number the reader can evaluate") from None
 
 
+#: The audit lists every type pair, N (N + 1) / 2 of them: a deck with more types is refused.
+MAX_TYPES = 100
+
+
+def _type(token: str, where: str, text: str, what: str = "an atom type") -> int:
+    """A type, or the number of types: an integer in 1..MAX_TYPES, else one line."""
+    x = _number(token, where, text)
+    if not (math.isfinite(x) and x == int(x) and 1 <= x <= MAX_TYPES):
+        raise DeckError(where, text, f"{what} must be an integer in 1..{MAX_TYPES} (the audit lists every type "
+                                     "pair)")
+    return int(x)
+
+
 def _where(loc) -> str:
     source, n = loc
     return f"line {n}" if source is None else f"{source} line {n}"
@@ -267,8 +283,10 @@ def _read(deck: Deck, variables: dict, text: str, source, read_file, depth: int)
         cmd = words[0]
         if cmd == "variable" and len(words) >= 3:
             _variable(deck, variables, words, loc, line)
+        elif cmd in _NEEDS_WORDS and len(words) < _NEEDS_WORDS[cmd]:
+            raise DeckError(where, line, f"{cmd} needs at least {_NEEDS_WORDS[cmd] - 1} argument(s)")
         elif cmd == "create_box":
-            deck.ntypes = int(_number(words[1], where, line))
+            deck.ntypes = _type(words[1], where, line, "the number of types")
         elif cmd == "include" and len(words) == 2:
             if depth >= _MAX_INCLUDE_DEPTH:
                 raise DeckError(where, line, f"includes nested deeper than {_MAX_INCLUDE_DEPTH}: a loop")
@@ -324,7 +342,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             continue
         here = f"{name} line {n}"
         if section is None and (m := re.fullmatch(r"(\d+)\s+atom\s+types", body)):
-            deck.ntypes = int(m.group(1))
+            deck.ntypes = _type(m.group(1), here, body, "the number of types")
             continue
         if body[0].isalpha():                          # a section's name; data lines start with a number
             section, hint = body, comment.strip()
@@ -343,7 +361,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
                                                           "sphere or granular (id type diameter density x y z)")
             if len(cols) < 7:
                 raise DeckError(here, body, "an Atoms line of atom_style sphere has at least 7 columns")
-            t = int(_number(cols[1], here, body))
+            t = _type(cols[1], here, body)
             d, rho = _number(cols[2], here, body), _number(cols[3], here, body)
             if d <= 0:
                 raise DeckError(here, body, "diameter 0 makes a point particle, which has no contact radius")
@@ -441,13 +459,15 @@ def _fix(deck, words, where, line, loc):
         tokens, t = words[5:], None
         for k, tok in enumerate(tokens):
             if tok == "atom_type":
-                t = int(_number(tokens[k + 1], where, line))
+                if k + 1 == len(tokens):
+                    raise DeckError(where, line, "atom_type needs a type")
+                t = _type(tokens[k + 1], where, line)
             elif tok in ("density", "radius") and k + 2 < len(tokens) and tokens[k + 1] == "constant" \
                     and t is not None:
                 # other distributions (gaussian, ...) give no single value: the type stays unset
                 (deck.density if tok == "density" else deck.radius)[t] = _number(tokens[k + 2], where, line)
     elif style == "pour" and len(words) >= 7:
-        t = int(_number(words[5], where, line))
+        t = _type(words[5], where, line)
         tokens = words[7:]
         for k, tok in enumerate(tokens):
             if tok == "diam":
@@ -520,6 +540,9 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
     if normal not in _LAMMPS_NORMAL_ARGS:
         raise DeckError(where, text, f"normal model {normal} is not mapped (hooke, hertz, hertz/material are)")
     nargs = _LAMMPS_NORMAL_ARGS[normal]
+    if len(words) < 4 + nargs:
+        what = "E, damping, nu" if normal == "hertz/material" else "k, damping"
+        raise DeckError(where, text, f"normal model {normal} needs {nargs} numbers ({what})")
     args = [_number(a, where, text) for a in words[4:4 + nargs]]
     damping, limit, k = "viscoelastic", False, 4 + nargs
     models = {"tangential": None, "rolling": None, "twisting": None}
@@ -747,6 +770,9 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
         unknown.append((*loc, text, f"{shape}: only planes are audited"))
         return None
     n = k + 3                                      # xplane|yplane|zplane lo hi
+    if n > len(words):
+        unknown.append((*loc, text, f"{words[k]} needs lo and hi: the wall's contacts are not audited"))
+        return None
     while n < len(words) and words[n] in _LAMMPS_WALL_KEYWORDS:
         n += 1 + _LAMMPS_WALL_KEYWORDS[words[n]]
     if n < len(words):
