@@ -10,7 +10,8 @@ Kinds of case:
   ParameterError. Under the overlap rule the reference cannot prove sticking: ``collide`` is asked
   first, and where it proves sticking every answer must be a refusal.
 * **inputs**: random argument vectors for every subcommand (numbers of every class, strings,
-  repeats, missing values) and random mutations of config.yaml. Never a traceback; a value that is
+  repeats, missing values), random mutations of config.yaml, and random decks with one line cut,
+  damaged, repeated or dropped. Never a traceback; a value that is
   out of range by construction is never answered with exit status 0; a refusal is one line.
 * **scenes** and **decks** (with LAMMPS, LIGGGHTS installed): a random scene's chosen contacts, and
   every type pair and flat wall of a random input deck as `restitution deck` reads it, run head-on
@@ -871,6 +872,49 @@ def liggghts_deck_cases(draw):
                                                        for t, m in types.items()}
 
 
+#: What a damaged deck word becomes: numbers of every class, unset variables, expressions, ranges
+_DECK_DAMAGE = ("x", "", "-1", "0", "1e999", "nan", "inf", "1e-320", "2.5", "${nope}", "$(1/0)", "v_nope", "*", "1*",
+                "*0", "NULL", "hertz", "tsuji", "zplane", "primitive", "mesh", "type", "all")
+
+
+@st.composite
+def deck_mutation_cases(draw):
+    """A random LAMMPS or LIGGGHTS deck (walls included) with one line cut short, one word replaced,
+    or a line repeated or dropped. Returns the deck text."""
+    text = draw(deck_cases() if draw(st.booleans()) else liggghts_deck_cases())[0]
+    lines = text.splitlines()
+    i = draw(st.integers(0, len(lines) - 1))
+    words = lines[i].split()
+    how = draw(st.sampled_from(["cut", "word", "repeat", "drop"]))
+    if how == "cut":
+        lines[i] = " ".join(words[:draw(st.integers(1, len(words)))])
+    elif how == "word":
+        j = draw(st.integers(0, len(words) - 1))
+        lines[i] = " ".join(words[:j] + [draw(st.sampled_from(_DECK_DAMAGE))] + words[j + 1:])
+    elif how == "repeat":
+        lines.insert(i, lines[i])
+    else:
+        del lines[i]
+    return "\n".join(lines) + "\n"
+
+
+def check_deck_mutation(text: str) -> dict:
+    """A damaged deck is answered or refused in one line (ParameterError), never another exception."""
+    from restitution.core.errors import ParameterError
+    from restitution.dem.deck import audit_deck
+
+    rec = {"method": "deck mutation", "rule": "-", "ratio": 0.0, "case": {"deck": text}}
+    try:
+        audit_deck(text, [0.5, 5.0])
+        rec.update(status="answered", detail="")
+    except ParameterError as exc:
+        one = _one_line(exc)
+        rec.update(status="refused" if one else "FAIL", detail="" if one else f"refusal of several lines: {exc}")
+    except Exception as exc:  # noqa: BLE001
+        rec.update(status="FAIL", detail="".join(traceback.format_exception_only(exc)).strip())
+    return rec
+
+
 def _lammps_runner(engine_lines: str, ntypes: int):
     """runs -> (relative velocity after / -g, or the exception) for runs (pair, types, g, dt, t_run),
     each in its own LAMMPS instance with the deck's own variable and pair_coeff lines."""
@@ -1142,7 +1186,8 @@ KINDS = {"numbers": (number_cases, check_number_case, False), "argv": (argv_case
          "decks": (deck_cases, check_deck_case, True),
          "liggghts scenes": (liggghts_scene_cases, check_liggghts_scene_case, False),
          "liggghts decks": (liggghts_deck_cases, _check_liggghts_deck, True),
-         "deep overlap": (deep_overlap_cases, check_deep_overlap_case, False)}
+         "deep overlap": (deep_overlap_cases, check_deep_overlap_case, False),
+         "deck mutations": (deck_mutation_cases, check_deck_mutation, False)}
 
 
 def _worker(job):
@@ -1195,7 +1240,8 @@ def main(argv=None) -> int:
     jobs = ([("numbers", -(-args.numbers // chunks), args.seed + i) for i in range(chunks)]
             + [("argv", -(-(args.inputs - n_cfg) // chunks), args.seed + 100 + i) for i in range(chunks)]
             + [("config", -(-n_cfg // chunks), args.seed + 200 + i) for i in range(chunks)]
-            + [("deep overlap", -(-args.numbers // 10 // chunks), args.seed + 700 + i) for i in range(chunks)])
+            + [("deep overlap", -(-args.numbers // 10 // chunks), args.seed + 700 + i) for i in range(chunks)]
+            + [("deck mutations", -(-args.inputs // 20 // chunks), args.seed + 800 + i) for i in range(chunks)])
     from restitution.dem.lammps import available
     if available():
         jobs += [("scenes", -(-args.scenes // chunks), args.seed + 300 + i) for i in range(chunks)]
@@ -1230,7 +1276,7 @@ def main(argv=None) -> int:
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
     summary = (f"number cases {counts['numbers']}, deep overlap cases {counts['deep overlap']}, argument vectors {counts['argv']}, config mutations "
-               f"{counts['config']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
+               f"{counts['config']}, deck mutations {counts['deck mutations']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
                f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")
     print("\n".join(lines))
