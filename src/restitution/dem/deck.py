@@ -4,15 +4,17 @@ LIGGGHTS (``pair_style gran model hertz|hooke``) input scripts, for every type p
 The reader takes only what decides a head-on two-sphere contact: the contact model and its
 coefficients per type pair, the end-of-contact keyword, and each type's radius and density.
 Commands that cannot change that contact (output, regions, gravity, integrators, ...) are passed
-over; any other line is reported as not understood, one per line, and never guessed. Flat walls
-(``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes and the faces of
-meshes, of the type their ``fix mesh/surface`` gives) are audited as a sphere of each type they act
-on (``group ID type ...`` or all) hitting them head-on; other walls (cylinders, regions, a mesh's
-edges and corners, older models) are named as not audited. A group by type holds the atoms present
-when it is defined; the audit takes the types it names. An
-option that does change the contact but is not mapped (a cohesion model, JKR, a pair style other
-than those two), a type without radius or density, or a type pair without coefficients is refused
-with one line (DeckError, exit status 2 in the CLI).
+over; any other line is reported as not understood, one per line, and never guessed. An option
+that does change the contact but is not mapped (a cohesion model, JKR, a pair style other than
+those two), a type without radius or density, or a type pair without coefficients is refused with
+one line (DeckError, exit status 2 in the CLI).
+
+Flat walls (``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes and
+the faces of meshes, of the type their ``fix mesh/surface`` gives) are audited as a sphere of each
+type they act on (``group ID type ...`` or all) hitting them head-on; other walls (cylinders,
+regions, a mesh's edges and corners, older models) are named as not audited. A group by type holds
+the atoms present when it is defined, the audit takes the types it names; a wall removed later
+(``unfix``) is still listed: it acts until then.
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
