@@ -1019,8 +1019,8 @@ def _check_deck_row(p: dict, pair, key: tuple, engine, code: str, name: str) -> 
 def _engine_lines(text: str, code: str, wall: bool = False) -> str:
     """The deck's lines an engine run takes. LAMMPS: its variables and pair_coeff lines (the runner
     writes the pair style), for a wall also the pair style, the groups and the wall's line.
-    LIGGGHTS: the box, the materials and the pair style, never the wall (its runner writes it from
-    the pair style); the particle templates only gave radii."""
+    LIGGGHTS: the box, the materials and the pair style, never the wall or its mesh (_wall_runner
+    passes the deck's own wall lines apart); the particle templates only gave radii."""
     body = text.splitlines()
     if code == "lammps":
         return "\n".join(ln for ln in body if ln.startswith(("variable", "pair_", "group", "fix floor") if wall
@@ -1046,13 +1046,13 @@ def _wall_runner(text: str, code: str, ntypes: int, types: dict, wall: dict):
     def batch(runs):
         (t,) = runs[0][1]
         r, rho = types[t]["radius"], types[t]["density"]
-        plate = "".join(["solid plate\nfacet normal 0 0 1\n outer loop\n",
-                         *(f"  vertex {x * r!r} {y * r!r} 0\n" for x, y in ((-3, -3), (6, -3), (-3, 6))),
-                         " endloop\nendfacet\nendsolid plate\n"])
         try:
             if code == "lammps":
                 return [lammps_wall_eps(r, rho, lines, g, dt, t_run, atom_type=t, ntypes=ntypes)
                         for _, _, g, dt, t_run in runs]
+            plate = "".join(["solid plate\nfacet normal 0 0 1\n outer loop\n",
+                             *(f"  vertex {x * r!r} {y * r!r} 0\n" for x, y in ((-3, -3), (6, -3), (-3, 6))),
+                             " endloop\nendfacet\nendsolid plate\n"])
             return liggghts_wall_eps_runs(r, rho, [(lines, g, dt, t_run, t, wall["wall_type"])
                                                    for _, _, g, dt, t_run in runs],
                                           wall="\n".join(own), files={"plate.stl": plate})

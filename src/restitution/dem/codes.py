@@ -68,7 +68,7 @@ from .contact import Contact
 __all__ = ["Pair", "WALL_SIZE", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
            "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
            "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "LIGGGHTS_MODELS", "LIGGGHTS_E",
-           "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "liggghts_accepts_e"]
+           "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "LIGGGHTS_MODEL_TYPES", "liggghts_accepts_e"]
 
 NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
 DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji")
@@ -76,6 +76,9 @@ DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji")
 TSUJI_POLY = (1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218)
 
 
+#: LIGGGHTS' model_type/model_name pairs, in the order pair_style gran and fix wall/gran take them
+#: (fix wall/gran puts the wall style after them, then the model keywords such as limitForce).
+LIGGGHTS_MODEL_TYPES = ("model", "tangential", "cohesion", "rolling_friction", "surface")
 #: A flat wall's radius and mass in a Pair (see Pair.wall).
 WALL_SIZE = 1e300
 

@@ -37,8 +37,8 @@ from dataclasses import dataclass, field
 from ..core.collision import StickError
 from ..core.errors import ParameterError
 from .calibrate import calibrate
-from .codes import (LIGGGHTS_E, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact, lammps_eta_n0,
-                    liggghts_accepts_e, liggghts_contact, liggghts_e)
+from .codes import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact,
+                    lammps_eta_n0, liggghts_accepts_e, liggghts_contact, liggghts_e)
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
 
@@ -536,6 +536,14 @@ class _Coeff:
     others: list        # the tokens after the normal model's numbers (tangential, rolling, ...)
     models: tuple       # the sub-model names, which LAMMPS requires equal before it mixes two types
 
+    def setting(self, stiffness: dict | None = None) -> dict:
+        """codes.lammps_contact's keywords; ``stiffness`` those of a mixed pair (see _mixed), else
+        this line's own."""
+        if stiffness is None:
+            stiffness = ({"normal": self.normal, "E": self.args[0], "nu": self.args[2]}
+                         if self.normal == "hertz/material" else {"normal": self.normal, "k_n": self.args[0]})
+        return {**stiffness, "damping": self.damping, "eta_n0": self.args[1], "limit_damping": self.limit}
+
 
 def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
     normal = words[3] if len(words) > 3 else None
@@ -609,8 +617,7 @@ def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
         loc, words = deck.coeffs[(i, j)]
         where, text = _where(loc), " ".join(words)
         c = _coeff(deck, words, where, text)
-        stiffness = ({"normal": c.normal, "E": c.args[0], "nu": c.args[2]} if c.normal == "hertz/material"
-                     else {"normal": c.normal, "k_n": c.args[0]})
+        stiffness = None
         mixed_from = None
     else:
         if (i, i) not in deck.coeffs or (j, j) not in deck.coeffs:
@@ -628,17 +635,11 @@ def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
         c, stiffness = _mixed(ci, cj)
         mixed_from = f"mixed from {_where(loc)} and {_where(loc_j)}"
     pair = _pair(deck, i, j)
-    setting = {**stiffness, "damping": c.damping, "eta_n0": c.args[1], "limit_damping": c.limit}
-    contact = lammps_contact(pair, **setting)
+    contact = lammps_contact(pair, **c.setting(stiffness))
     typed = c.args[1] if c.damping == "tsuji" else None
     exact = None
     if typed is not None and c.others is not None:
-        try:
-            cal = calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=typed, g=speeds[len(speeds) // 2],
-                            end=contact.end)
-            e_new = lammps_eta_n0(pair, "tsuji", cal.contact)
-        except ParameterError:
-            e_new = None     # no tsuji e gives that eps under this end rule: no exact line
+        e_new = _exact(contact, typed, speeds[len(speeds) // 2], lambda cal: lammps_eta_n0(pair, "tsuji", cal))
         if e_new is not None:
             # the pair's own line (a wildcard or mixed pair gets one naming it), tsuji's e replaced
             numbers = [f"{x:.10g}" for x in c.args]
@@ -656,6 +657,15 @@ def _prop(deck: Deck, name: str, required: bool = True):
             raise DeckError("fix property/global", name, "the deck does not define it (LIGGGHTS needs it)")
         return None, None
     return deck.props[name]
+
+
+def _exact(contact, eps: float, g: float, to_code):
+    """The code's setting (``to_code`` of the calibrated Contact) that gives ``contact``'s exponents
+    and stiffness eps at speed g under its end rule; None where no damping does."""
+    try:
+        return to_code(calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=eps, g=g, end=contact.end).contact)
+    except ParameterError:
+        return None
 
 
 def _liggghts_materials(deck: Deck) -> tuple:
@@ -699,12 +709,7 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     pair = _pair(deck, i, j)
     kw = _liggghts_model(deck, deck.model, deck.limit_force)
     contact = liggghts_contact(pair, E=E[i - 1], nu=nu[i - 1], E2=E[j - 1], nu2=nu[j - 1], e=e, **kw)
-    try:
-        cal = calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=e, g=speeds[len(speeds) // 2],
-                        end=contact.end)
-        e_new = liggghts_e(cal.contact)
-    except ParameterError:
-        e_new = None         # no coefficientRestitution gives that eps under this end rule
+    e_new = _exact(contact, e, speeds[len(speeds) // 2], liggghts_e)
     exact = None
     if e_new is not None and liggghts_accepts_e(e_new):   # else LIGGGHTS would stop on it
         new = list(matrix)
@@ -785,32 +790,25 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
     except DeckError as why:
         unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
         return None
-    stiffness = ({"normal": c.normal, "E": c.args[0], "nu": c.args[2]} if c.normal == "hertz/material"
-                 else {"normal": c.normal, "k_n": c.args[0]})
-    setting = {**stiffness, "damping": c.damping, "eta_n0": c.args[1], "limit_damping": c.limit}
     model = f"LAMMPS {c.normal}, damping {c.damping}, {words[k]} wall"
     typed = c.args[1] if c.damping == "tsuji" else None
 
     def contact_of(pair, t, g):
-        contact = lammps_contact(pair, **setting)
+        contact = lammps_contact(pair, **c.setting())
         exact = None
         if typed is not None:
             # tsuji's eps depends on e alone (Omega = 1 / A(e)^2 for hooke and hertz), so one e
             # serves every type the wall acts on: the wall's own line with it
-            try:
-                cal = calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=typed, g=g, end=contact.end)
-                e_new = lammps_eta_n0(pair, "tsuji", cal.contact)
-            except ParameterError:
-                e_new = None     # no tsuji e gives that eps under this end rule
+            e_new = _exact(contact, typed, g, lambda cal: lammps_eta_n0(pair, "tsuji", cal))
             if e_new is not None:
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact
     return [(None, contact_of, None)]
 
 
-#: LIGGGHTS fix wall/gran: the model_type/model_name pairs that come before the wall style, and
-#: the general keywords after it with their number of values (none changes a head-on contact)
-_LIGGGHTS_MODEL_TYPES = ("model", "tangential", "cohesion", "rolling_friction", "surface")
+#: LIGGGHTS fix wall/gran: the general keywords after the wall style with their number of values
+#: (none changes a head-on contact); the model_type/model_name pairs before it are
+#: codes.LIGGGHTS_MODEL_TYPES
 _LIGGGHTS_WALL_GENERAL = {"shear": 2, "temperature": 1, "store_force": 1, "store_force_contact": 1,
                           "store_force_contact_stress": 1}
 #: primitive wall styles and their number of arguments
@@ -832,7 +830,7 @@ def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
         return None
 
     model, limit, k = None, False, 4
-    while k + 1 < len(words) and words[k] in _LIGGGHTS_MODEL_TYPES:
+    while k + 1 < len(words) and words[k] in LIGGGHTS_MODEL_TYPES:
         key, val = words[k], words[k + 1]
         if key == "model" and val in ("hertz", "hooke"):
             model = val
@@ -904,8 +902,8 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             continue
         for mesh, contact_of, wall_type in surfaces:
             for t in types:
-                sphere = _pair(deck, t, t)
-                pair = Pair.wall(sphere.R1, sphere.densities[0])
+                _pair(deck, t, t)            # one line where the type lacks a radius or a density
+                pair = Pair.wall(deck.radius[t], deck.density[t])
                 contact, typed, model, exact = contact_of(pair, t, speeds[len(speeds) // 2])
                 rows.append(_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                        "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,

@@ -16,7 +16,7 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from .codes import Pair
+from .codes import LIGGGHTS_MODEL_TYPES, Pair
 from .extrapolate import richardson
 
 __all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "liggghts_states", "liggghts_eps_extrapolated",
@@ -133,7 +133,7 @@ def _wall_line(contact_lines: str, wall_type: int) -> str:
     if words is None:
         raise ValueError("the contact lines have no pair_style gran line: the wall's model is unknown")
     k = 0
-    while k + 1 < len(words) and words[k] in ("model", "tangential", "cohesion", "rolling_friction", "surface"):
+    while k + 1 < len(words) and words[k] in LIGGGHTS_MODEL_TYPES:
         k += 2
     return (f"fix wall all wall/gran {' '.join(words[:k])} primitive type {wall_type} zplane 0.0 "
             + " ".join(words[k:])).rstrip()

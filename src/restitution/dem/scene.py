@@ -29,7 +29,7 @@ from .model_ladder import EVAL_TOL, SMALL_EPS, Fit, fit_rung, lammps_rungs, ligg
 from .scene_file import AtomType, Scene
 from .timestep import REFINE, VERIFY_STEPS, recommended_dt, verlet_eps
 
-__all__ = ["answer_scene", "wall_pair"]
+__all__ = ["answer_scene"]
 
 #: A scene that checks more points than this (material pairs x check speeds) has the evaluator's
 #: master curves built for the exponents it uses (1-2 s under the overlap rule, 15-30 s under the
@@ -37,10 +37,6 @@ __all__ = ["answer_scene", "wall_pair"]
 BUILD_POINTS = 50_000
 #: Speeds per material pair at which the rungs' eps(v) are listed for plots.
 PLOT_POINTS = 200
-
-
-def wall_pair(t: AtomType, density: float) -> Pair:
-    return Pair.wall(t.radius, density)
 
 
 @dataclass
@@ -63,7 +59,7 @@ def _contacts(scene: Scene) -> list[_Contact]:
             out.append(_Contact(a, b, None, Pair.spheres(a.radius, b.radius, dens[a.material], dens[b.material])))
     for a in scene.types:
         for w in scene.walls:
-            out.append(_Contact(a, None, w, wall_pair(a, dens[a.material])))
+            out.append(_Contact(a, None, w, Pair.wall(a.radius, dens[a.material])))
     return out
 
 
