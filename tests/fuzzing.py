@@ -1150,9 +1150,11 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", 
                         "case": case, "pair": f"{t}-wall", "ratio": worst, "detail": detail if worst > 1.0 else "",
                         "status": "FAIL" if worst > 1.0 else "answered" if checked or exact else "refused"})
         if exact is None and w["exact_line"]:
-            # the wall's own line replaced (the deck's wall is the line starting "fix floor")
-            fixed = "\n".join(w["exact_line"] if ln.startswith("fix floor") else ln for ln in text.splitlines())
-            records += check_deck_case(fixed + "\n", [w["speeds"][len(w["speeds"]) // 2]], types, code,
+            # LAMMPS: the wall's own line replaced (the deck's wall is the line starting "fix floor");
+            # LIGGGHTS: the coefficientRestitution line, as for a pair
+            fixed = ("\n".join(w["exact_line"] if ln.startswith("fix floor") else ln for ln in text.splitlines())
+                     + "\n" if code == "lammps" else _with_exact_line(text, w["exact_line"], code))
+            records += check_deck_case(fixed, [w["speeds"][len(w["speeds"]) // 2]], types, code,
                                        ("wall", t, w["typed_e"]))
     return records
 

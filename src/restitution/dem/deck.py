@@ -709,16 +709,22 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     pair = _pair(deck, i, j)
     kw = _liggghts_model(deck, deck.model, deck.limit_force)
     contact = liggghts_contact(pair, E=E[i - 1], nu=nu[i - 1], E2=E[j - 1], nu2=nu[j - 1], e=e, **kw)
-    e_new = _exact(contact, e, speeds[len(speeds) // 2], liggghts_e)
-    exact = None
-    if e_new is not None and liggghts_accepts_e(e_new):   # else LIGGGHTS would stop on it
-        new = list(matrix)
-        new[(i - 1) * m + (j - 1)] = new[(j - 1) * m + (i - 1)] = e_new
-        head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution peratomtypepair {m}"
-        exact = head + " " + " ".join(f"{x:.10g}" for x in new)
     return {"types": [i, j], "model": f"LIGGGHTS {deck.model}, limitForce {'on' if deck.limit_force else 'off'}",
-            "typed_e": e, "end": contact.end, "contact": contact, "pair": pair, "exact_line": exact, "line": loc[1],
-            "file": loc[0]}
+            "typed_e": e, "end": contact.end, "contact": contact, "pair": pair, "line": loc[1], "file": loc[0],
+            "exact_line": _liggghts_exact_line(deck, matrix, i, j, contact, speeds[len(speeds) // 2])}
+
+
+def _liggghts_exact_line(deck: Deck, matrix: list, i: int, j: int, contact, g: float) -> str | None:
+    """The coefficientRestitution line with the entry (i, j) replaced by the e that gives
+    ``contact`` eps = the e typed there at speed g; None where no e does or LIGGGHTS would refuse it."""
+    m = deck.ntypes
+    e_new = _exact(contact, matrix[(i - 1) * m + (j - 1)], g, liggghts_e)
+    if e_new is None or not liggghts_accepts_e(e_new):   # LIGGGHTS would stop on it
+        return None
+    new = list(matrix)
+    new[(i - 1) * m + (j - 1)] = new[(j - 1) * m + (i - 1)] = e_new
+    head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution peratomtypepair {m}"
+    return head + " " + " ".join(f"{x:.10g}" for x in new)
 
 
 def _liggghts_limits(deck: Deck, E: list, nu: list, e: list, where_e: str) -> None:
@@ -883,10 +889,16 @@ def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
 
     def contact_with(w: int, surface: str):
         def contact(pair, t, g):
-            # no exact line: the entry (t, W) of the matrix also sets the sphere pair (t, W)
             e = matrix[(t - 1) * deck.ntypes + (w - 1)]
             c = liggghts_contact(pair, E=E[t - 1], nu=nu[t - 1], E2=E[w - 1], nu2=nu[w - 1], e=e, **kw)
-            return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {surface} of type {w}", None
+            # The entry (t, W) of the matrix also sets the sphere pair (t, W). Under either model
+            # LIGGGHTS' damping makes eps a function of e and limitForce alone (hertz: Tsuji's
+            # scaling; hooke: a damping ratio of e alone), so where the wall's model and limitForce
+            # are the pair style's, one e gives both contacts eps = e typed: the pair's exact line.
+            # Elsewhere the two want different e's and no line serves both.
+            same = (model, limit) == (deck.model, deck.limit_force)
+            exact = _liggghts_exact_line(deck, matrix, t, w, c, g) if same else None
+            return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {surface} of type {w}", exact
         return contact
     return [(mesh, contact_with(w, label), w) for mesh, w, label in surfaces]
 
@@ -939,8 +951,10 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     ``overlap_limit`` = R1 + R2) eps is None: the engine pushes them through each other. ``walls``:
     the same for every type a flat fix wall/gran acts on, the sphere hitting the wall head-on
     (``overlap_limit`` = R: the centre reaching the wall; ``wall`` the fix ID, ``wall_type`` the
-    LIGGGHTS wall's atom type; an exact line, the wall's own, for LAMMPS tsuji walls only); walls
-    not audited are among ``unknown_lines``."""
+    LIGGGHTS wall's atom type; an exact line for a LAMMPS tsuji wall, the wall's own, and for a
+    LIGGGHTS wall whose model and limitForce are the pair style's, the coefficientRestitution line
+    with the entry (type, W) replaced, which is then also the sphere pair (type, W)'s exact line);
+    walls not audited are among ``unknown_lines``."""
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
