@@ -813,10 +813,12 @@ def deck_cases(draw):
 
 
 def _wall_lines(draw, types: dict, wall: str) -> list[str]:
-    """The ``wall`` line on all types, or (with several) on a group of some of them (its GROUP)."""
+    """The ``wall`` line on all types, or (with several) on a group of some of them (its GROUP),
+    defined after atoms exist (a group holds the atoms present when it is defined)."""
     if len(types) > 1 and draw(st.booleans()):
         members = sorted(draw(st.sets(st.sampled_from(list(types)), min_size=1)))
-        return [f"group walled type {' '.join(map(str, members))}", wall.replace("GROUP", "walled")]
+        return [f"create_atoms {t} random 1 {4242 + t} NULL" for t in types] + [
+            f"group walled type {' '.join(map(str, members))}", wall.replace("GROUP", "walled")]
     return [wall.replace("GROUP", "all")]
 
 
@@ -1027,7 +1029,8 @@ def _engine_lines(text: str, code: str, wall: bool = False) -> str:
                                                          else ("variable", "pair_coeff")))
     start = next(k for k, ln in enumerate(body) if ln.startswith("create_box"))
     return "\n".join([body[start]] + [ln for ln in body[start + 1:]
-                                      if not ln.startswith(("fix pts", "fix floor", "fix mesh1", "group"))]
+                                      if not ln.startswith(("fix pts", "fix floor", "fix mesh1", "group",
+                                                            "create_atoms"))]
                      + [ln for ln in body[:start] if ln.startswith("variable")])
 
 

@@ -27,6 +27,8 @@ set type 1 diameter {2 * R1}
 set type 1 density {RHO1}
 set type 2 diameter {2 * R2}
 set type 2 density {RHO2}
+create_atoms 1 random 20 4242 NULL
+create_atoms 2 random 20 4243 NULL
 group small type 1
 {TSUJI_WALL}
 {DASHPOT_WALL}
@@ -62,7 +64,7 @@ def test_flat_walls_are_audited_for_their_groups_types_the_others_named(tmp_path
     assert err.count("\n") == 5 and all(f"fix w{k}" in err for k in range(3, 8))
     w1 = res["walls"][0]
     assert w1["typed_e"] == 0.4 and w1["end"] == "overlap" and w1["overlap_limit"] == R1
-    assert w1["line"] == 11 and w1["exact_line"].startswith("fix w1 small wall/gran granular hertz/material 1e7 ")
+    assert w1["line"] == 13 and w1["exact_line"].startswith("fix w1 small wall/gran granular hertz/material 1e7 ")
     assert [w["exact_line"] for w in res["walls"][1:]] == [None, None]       # no e typed (mass_velocity)
 
 
@@ -301,6 +303,27 @@ def test_the_walls_group_gives_its_types(tmp_path, group_lines, types):
     text = LAMMPS_DECK.split("group small")[0] + "\n".join(group_lines) + f"\n{DASHPOT_WALL.replace(' all ', ' g ')}\n"
     res, err = audit(tmp_path, text, 1.0)
     assert [w["types"] for w in res["walls"]] == [[t] for t in types] and err == ""
+
+
+@pytest.mark.parametrize("before, after, why", [
+    ("", "", "is defined by type before any atom exists"),          # no atom at all in the deck
+    ("", "create_atoms 1 random 20 4242 NULL", "is defined by type before any atom exists"),
+    ("", "fix feed all pour 100 1 4242 region feeder\nrun 1000", "is defined by type before any atom exists"),
+    ("create_atoms 1 random 20 4242 NULL", "fix feed g pour 100 1 4242 region feeder",
+     "also holds the atoms fix feed (pour) inserts"),
+])
+def test_a_group_that_holds_no_atom_or_unknown_ones_names_its_wall(tmp_path, before, after, why):
+    """Groups are static: a group by type defined before any atom exists holds none (LAMMPS lets a
+    sphere of that type through the wall: measured), and atoms a fix inserts into a group may be of
+    any type. Either way the wall is named, not audited; the group defined after atoms exist is."""
+    head = LAMMPS_DECK.split("create_atoms")[0]
+    text = head + "\n".join([before, "group g type 1", after, DASHPOT_WALL.replace(" all ", " g ")]) + "\n"
+    res, err = audit(tmp_path, text, 1.0)
+    assert res["walls"] == [] and [why in row["why"] for row in res["unknown_lines"]] == [True], res["unknown_lines"]
+    assert err.count("\n") == 1 and "fix w2 g wall/gran" in err
+    later = head + "\n".join(["group g type 1", "create_atoms 1 random 20 4242 NULL", "group g type 1",
+                                DASHPOT_WALL.replace(" all ", " g ")]) + "\n"
+    assert [w["types"] for w in audit(tmp_path, later, 1.0)[0]["walls"]] == [[1]]
 
 
 def test_a_wall_type_the_reader_cannot_read_names_the_wall_and_refuses_nothing(tmp_path):

@@ -12,9 +12,11 @@ one line (DeckError, exit status 2 in the CLI).
 Flat walls (``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes and
 the faces of meshes, of the type their ``fix mesh/surface`` gives) are audited as a sphere of each
 type they act on (``group ID type ...`` or all) hitting them head-on; other walls (cylinders,
-regions, a mesh's edges and corners, older models) are named as not audited. A group by type holds
-the atoms present when it is defined, the audit takes the types it names; a wall removed later
-(``unfix``) is still listed: it acts until then.
+regions, a mesh's edges and corners, older models) are named as not audited. A group holds the
+atoms present when it is defined (and those a later command inserts into it): a group by type
+defined before any atom exists holds none, and its wall, acting on no atom, is named as not
+audited (a group that inserted atoms join has types the reader cannot know, likewise); else the
+audit takes the types it names. A wall removed later (``unfix``) is still listed: it acts until then.
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
@@ -105,6 +107,13 @@ class Deck:
     groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
     walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
     meshes: dict = field(default_factory=dict)    # LIGGGHTS fix mesh/surface ID -> its atom type, or None
+    # Groups are static: a group holds the atoms present when it is defined, and those a later
+    # command inserts into it by name (LAMMPS and LIGGGHTS alike; measured in LAMMPS: a wall on a
+    # group by type defined before create_atoms lets the sphere through)
+    atoms: bool = False                           # some atom exists at this line
+    inserting: bool = False                       # an inserting fix (pour, insert/...) is defined
+    empty_groups: set = field(default_factory=set)   # groups by type defined before any atom existed
+    filled_groups: dict = field(default_factory=dict)  # group ID -> the command that inserts atoms into it
 
 
 _ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
@@ -295,6 +304,9 @@ def _read(deck: Deck, variables: dict, text: str, source, read_file, depth: int)
             _read(deck, variables, _fetch(read_file, words[1], where, line), words[1], read_file, depth + 1)
         elif cmd == "read_data" and len(words) >= 2:
             _read_data(deck, words, where, line, read_file)
+            deck.atoms = True
+        elif cmd == "create_atoms" or cmd == "run" and deck.inserting:
+            deck.atoms = True
         elif cmd == "read_restart":
             raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
                                          "file, which the reader does not read")
@@ -329,6 +341,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
         if opts[k] == "nocoeff":
             coeffs, k = False, k + 1
         elif opts[k] == "group" and k + 1 < len(opts):
+            deck.filled_groups[opts[k + 1]] = f"read_data {name} adds"
             k += 2
         else:
             raise DeckError(where, line, f"read_data option {opts[k]} is not mapped (it may add, shift or offset "
@@ -452,8 +465,16 @@ def _set(deck, words, where, line, loc):
             return
 
 
+#: Fixes that insert atoms as the run goes, into their own group (and all)
+_INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/rate/region"}
+
+
 def _fix(deck, words, where, line, loc):
     style = words[3]
+    if style in _INSERTING_FIXES:
+        deck.inserting = True
+        if words[2] != "all":
+            deck.filled_groups[words[2]] = f"fix {words[1]} ({style}) inserts"
     if style == "property/global" and len(words) >= 6:
         deck.props[words[4]] = (loc, words[5:])
         deck.prop_fix[words[4]] = f"fix {words[1]} {words[2]}"     # the exact line keeps the deck's fix ID
@@ -500,6 +521,7 @@ def _group(deck: Deck, words: list) -> None:
     name, style, args = words[1], words[2], words[3:]
     if style in ("delete", "clear"):
         deck.groups.pop(name, None)
+        deck.empty_groups.discard(name)
         return
     types = None
     if style == "type" and args:
@@ -510,6 +532,10 @@ def _group(deck: Deck, words: list) -> None:
             for a in args:
                 lo, _, hi = a.partition(":")
                 types |= set(range(int(lo), int(hi or lo) + 1))
+    if types is not None and deck.atoms:
+        deck.empty_groups.discard(name)
+    elif types is not None and name not in deck.groups:
+        deck.empty_groups.add(name)
     old = deck.groups.get(name, set())
     deck.groups[name] = None if types is None or old is None else old | types
 
@@ -761,6 +787,16 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
     if types is None or types == "undefined":
         why = "not defined before it" if types == "undefined" else "not defined by type"
         unknown.append((*loc, " ".join(words), f"group {words[2]} is {why}: the wall's contacts are not audited"))
+        return None
+    if words[2] in deck.filled_groups:
+        unknown.append((*loc, " ".join(words), f"group {words[2]} also holds the atoms {deck.filled_groups[words[2]]}"
+                                               ", whose types the reader does not know: the wall's contacts are not "
+                                               "audited"))
+        return None
+    if words[2] in deck.empty_groups:
+        unknown.append((*loc, " ".join(words), f"group {words[2]} is defined by type before any atom exists (a "
+                                               "group holds the atoms present when it is defined): it holds none, "
+                                               "and the wall acts on no atom"))
         return None
     return sorted(t for t in types if 1 <= t <= deck.ntypes)
 
