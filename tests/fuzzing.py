@@ -315,7 +315,7 @@ CHOICES = {
     "eps-method": (["integrator", "closed-form", "viscous", "elastic", "reference"], ["bogus", "master2"]),
     "end": (["force", "overlap"], ["both", "", "Force"]),
     "normal": (["hooke", "hertz", "hertz/material"], ["dmt", ""]),
-    "damping": (["velocity", "mass_velocity", "viscoelastic", "tsuji"], ["coeff_restitution", ""]),
+    "damping": (["velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution"], ["mdr", ""]),
 }
 
 
@@ -745,7 +745,7 @@ DECK_MAX_STEPS = 400_000
 
 def _damping_for(normal: str, damping: str, radius: float, density: float, k: float, nu: float, omega: float,
                  g: float) -> float:
-    """The damping coefficient of a one-type line (eta_n0, or tsuji's e) that puts its like pair at
+    """The damping coefficient of a one-type line (eta_n0) that puts its like pair at
     about ``omega`` at speed g: Omega = D1 g^((alpha-1-2 gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1)),
     solved for D2 and mapped back through the LAMMPS dictionary."""
     from restitution.dem.codes import Pair, lammps_contact, lammps_eta_n0
@@ -753,7 +753,7 @@ def _damping_for(normal: str, damping: str, radius: float, density: float, k: fl
     pair = Pair.spheres(radius, radius, density, density)
     stiff = {"E": k, "nu": nu} if normal == "hertz/material" else {"k_n": k}
     unit = lammps_contact(pair, normal=normal, damping=damping, limit_damping=False,
-                          eta_n0=0.5 if damping == "tsuji" else 1.0, **stiff)
+                          eta_n0=1.0, **stiff)
     a, c = float(unit.alpha), float(unit.gamma)
     d2 = (omega / (unit.D1 * g ** ((a - 1 - 2 * c) / (c + 1)))) ** (-(c + 1) / (a + 1))
     return lammps_eta_n0(pair, damping, dataclasses.replace(unit, D2=d2))
@@ -763,14 +763,14 @@ def _damping_for(normal: str, damping: str, radius: float, density: float, k: fl
 def deck_cases(draw):
     """A random LAMMPS deck: 1-3 atom types (radius 0.05-50 mm, density 500-20,000), one normal
     model (stiffness per type), one damping model with each type's coefficient set for a like-pair
-    Omega in 1e-3..30 (tsuji: e in 0.05..0.97), limit_damping on some lines, maybe an explicit line
+    Omega in 1e-3..30 (tsuji, coeff_restitution: e in 0.05..0.97), limit_damping on some lines, maybe an explicit line
     for a cross pair, maybe a `pair_coeff * *` written first and overridden, maybe numbers through
     variables, maybe a flat wall at z = 0 (on all types or a group); and two impact speeds a decade
     apart. Returns (deck text, speeds, types)."""
     log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
     n = draw(st.integers(1, 3))
     normal = draw(st.sampled_from(["hooke", "hertz", "hertz/material"]))
-    damping = draw(st.sampled_from(["velocity", "mass_velocity", "viscoelastic", "tsuji"]))
+    damping = draw(st.sampled_from(["velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution"]))
     g = log(-2.0, 0.5)
     types = {t: {"radius": log(-4.3, -1.3), "density": log(2.7, 4.3)} for t in range(1, n + 1)}
     lines, variables = [], []
@@ -781,7 +781,7 @@ def deck_cases(draw):
             k, nu = log(6.0, 11.0), draw(st.floats(0.0, 0.45))
         else:
             k, nu = (log(4.0, 10.0) if normal == "hertz" else log(0.0, 5.0)), 0.0
-        if damping == "tsuji":
+        if damping in ("tsuji", "coeff_restitution"):
             d = draw(st.floats(0.05, 0.97))
         else:
             d = _damping_for(normal, damping, m["radius"], m["density"], k, nu, log(-3.0, 1.5), g)

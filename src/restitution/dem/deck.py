@@ -39,8 +39,8 @@ from dataclasses import dataclass, field
 from ..core.collision import StickError
 from ..core.errors import ParameterError
 from .calibrate import calibrate
-from .codes import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact,
-                    lammps_eta_n0, liggghts_accepts_e, liggghts_contact, liggghts_e)
+from .codes import (DAMPING_MODELS, E_DAMPINGS, LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair,
+                    lammps_contact, lammps_eta_n0, liggghts_accepts_e, liggghts_contact, liggghts_e)
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
 
@@ -605,7 +605,7 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
             k += 2 if nxt == "marshall" else 5
         else:
             raise DeckError(where, text, f"keyword {key} is not mapped")
-    if damping not in ("velocity", "mass_velocity", "viscoelastic", "tsuji"):
+    if damping not in DAMPING_MODELS:
         raise DeckError(where, text, f"damping {damping} is not mapped")
     return _Coeff(normal, args, damping, limit, words[4 + nargs:], (normal, damping, *models.values()))
 
@@ -662,12 +662,12 @@ def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
         mixed_from = f"mixed from {_where(loc)} and {_where(loc_j)}"
     pair = _pair(deck, i, j)
     contact = lammps_contact(pair, **c.setting(stiffness))
-    typed = c.args[1] if c.damping == "tsuji" else None
+    typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
     if typed is not None and c.others is not None:
-        e_new = _exact(contact, typed, speeds[len(speeds) // 2], lambda cal: lammps_eta_n0(pair, "tsuji", cal))
+        e_new = _exact(contact, typed, speeds[len(speeds) // 2], lambda cal: lammps_eta_n0(pair, c.damping, cal))
         if e_new is not None:
-            # the pair's own line (a wildcard or mixed pair gets one naming it), tsuji's e replaced
+            # the pair's own line (a wildcard or mixed pair gets one naming it), its e replaced
             numbers = [f"{x:.10g}" for x in c.args]
             numbers[1] = f"{e_new:.10g}"
             limit = ["limit_damping"] if c.limit and "limit_damping" not in c.others else []
@@ -833,15 +833,15 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
         unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
         return None
     model = f"LAMMPS {c.normal}, damping {c.damping}, {words[k]} wall"
-    typed = c.args[1] if c.damping == "tsuji" else None
+    typed = c.args[1] if c.damping in E_DAMPINGS else None
 
     def contact_of(pair, t, g):
         contact = lammps_contact(pair, **c.setting())
         exact = None
         if typed is not None:
-            # tsuji's eps depends on e alone (Omega = 1 / A(e)^2 for hooke and hertz), so one e
-            # serves every type the wall acts on: the wall's own line with it
-            e_new = _exact(contact, typed, g, lambda cal: lammps_eta_n0(pair, "tsuji", cal))
+            # tsuji's and coeff_restitution's eps depend on e alone (Omega = 1 / A(e)^2 for hooke
+            # and hertz), so one e serves every type the wall acts on: the wall's own line with it
+            e_new = _exact(contact, typed, g, lambda cal: lammps_eta_n0(pair, c.damping, cal))
             if e_new is not None:
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact
@@ -987,9 +987,10 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     ``overlap_limit`` = R1 + R2) eps is None: the engine pushes them through each other. ``walls``:
     the same for every type a flat fix wall/gran acts on, the sphere hitting the wall head-on
     (``overlap_limit`` = R: the centre reaching the wall; ``wall`` the fix ID, ``wall_type`` the
-    LIGGGHTS wall's atom type; an exact line for a LAMMPS tsuji wall, the wall's own, and for a
-    LIGGGHTS wall whose model and limitForce are the pair style's, the coefficientRestitution line
-    with the entry (type, W) replaced, which is then also the sphere pair (type, W)'s exact line);
+    LIGGGHTS wall's atom type; an exact line for a LAMMPS tsuji or coeff_restitution wall, the
+    wall's own, and for a LIGGGHTS wall whose model and limitForce are the pair style's, the
+    coefficientRestitution line with the entry (type, W) replaced, which is then also the sphere
+    pair (type, W)'s exact line);
     walls not audited are among ``unknown_lines``."""
     speeds = [float(g) for g in speeds]
     if not speeds:
