@@ -45,11 +45,16 @@ def test_every_number_of_the_readme_table_is_the_librarys():
 
 
 def test_the_forms_that_coincide_do_so():
-    """hertz and hooke under limitForce on, and Yade's clamped ViscElMat, give one eps for one e."""
+    """hertz and hooke under limitForce on, Yade's clamped ViscElMat and LAMMPS' coeff_restitution
+    with limit_damping give one eps for one e."""
     for row in typed_e_table([0.2, 0.6, 0.95]):
         assert row["LIGGGHTS hertz, limitForce on"] == pytest.approx(row["Yade ViscElMat (tc, en)"], rel=1e-9)
         assert row["LIGGGHTS hooke, limitForce on"] == pytest.approx(row["Yade ViscElMat (tc, en)"], rel=1e-9)
         assert row["LIGGGHTS hertz, limitForce off (default)"] == pytest.approx(row["e"], rel=1e-9)
+        # LAMMPS' coeff_restitution is LIGGGHTS' Hertz damping: the same eps under either rule
+        assert row["LAMMPS hertz + damping coeff_restitution (default)"] == pytest.approx(row["e"], rel=1e-9)
+        assert row["LAMMPS hertz + damping coeff_restitution, limit_damping"] == pytest.approx(
+            row["LIGGGHTS hertz, limitForce on"], rel=1e-9)
 
 
 @pytest.mark.dem
@@ -94,8 +99,8 @@ G = 0.1
 
 def _lammps_case(row, e):
     from restitution.dem.codes import lammps_contact, lammps_pair_coeff
-    setting = {"normal": "hertz", "k_n": 3e8, "damping": "tsuji", "eta_n0": e,
-               "limit_damping": row.endswith("limit_damping")}
+    setting = {"normal": "hertz", "k_n": 3e8, "damping": row.split("damping ")[1].split()[0].rstrip(","),
+               "eta_n0": e, "limit_damping": row.endswith("limit_damping")}
     return lammps_contact(PAIR, **setting), lammps_pair_coeff(**setting)
 
 

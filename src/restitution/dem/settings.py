@@ -14,7 +14,7 @@ from __future__ import annotations
 from ..core.errors import ParameterError, one_of
 from .calibrate import calibrate
 from .codes import (Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e,
-                    thornton_betan, tsuji_a, yade_mindlin_contact, yade_mindlin_en, yade_viscel_contact,
+                    restitution_b, thornton_betan, tsuji_a, yade_mindlin_contact, yade_mindlin_en, yade_viscel_contact,
                     yade_viscel_setting)
 from .contact import Contact
 
@@ -117,6 +117,10 @@ def yade_design(pair: Pair, *, eps: float, law: str, tc: float | None = None, kn
 TYPED_E_CODES = {
     "LAMMPS hertz + damping tsuji, limit_damping": lambda e: Contact("3/2", "1/4", 1.0, tsuji_a(e), "force"),
     "LAMMPS hertz + damping tsuji (default)": lambda e: Contact("3/2", "1/4", 1.0, tsuji_a(e), "overlap"),
+    "LAMMPS hertz + damping coeff_restitution, limit_damping":
+        lambda e: Contact("3/2", "1/4", 1.0, restitution_b(e, "3/2"), "force"),
+    "LAMMPS hertz + damping coeff_restitution (default)":
+        lambda e: Contact("3/2", "1/4", 1.0, restitution_b(e, "3/2"), "overlap"),
     "LIGGGHTS hertz, limitForce off (default)": lambda e: liggghts_contact(_UNIT_PAIR, E=1.0, nu=0.0, e=e),
     "LIGGGHTS hertz, limitForce on": lambda e: liggghts_contact(_UNIT_PAIR, E=1.0, nu=0.0, e=e, limit_force=True),
     "LIGGGHTS hooke, limitForce off (default)":
@@ -136,6 +140,8 @@ _UNIT_PAIR = Pair(1.0, 1.0, 1.0, 1.0)
 TYPED_E_ENGINES = {
     "LAMMPS hertz + damping tsuji, limit_damping": "LAMMPS 2025.7.22",
     "LAMMPS hertz + damping tsuji (default)": "LAMMPS 2025.7.22",
+    "LAMMPS hertz + damping coeff_restitution, limit_damping": "LAMMPS 2025.7.22",
+    "LAMMPS hertz + damping coeff_restitution (default)": "LAMMPS 2025.7.22",
     "LIGGGHTS hertz, limitForce off (default)": "LIGGGHTS 3.8.0",
     "LIGGGHTS hertz, limitForce on": "LIGGGHTS 3.8.0",
     "LIGGGHTS hooke, limitForce off (default)": "LIGGGHTS 3.8.0",
