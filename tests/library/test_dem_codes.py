@@ -96,8 +96,10 @@ def test_mercury_linear_species_gives_its_e_and_collision_time():
     assert c.eps(3.0) == pytest.approx(0.7, rel=1e-10) and c.contact_time(3.0) == pytest.approx(2e-4, rel=1e-10)
 
 
-def test_design_then_audit_round_trip():
-    kw = {"normal": "hertz/material", "E": 5e7, "nu": 0.3, "damping": "viscoelastic", "limit_damping": False}
+@pytest.mark.parametrize("damping", ["velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution"])
+@pytest.mark.parametrize("limit", [False, True])
+def test_design_then_audit_round_trip(damping, limit):
+    kw = {"normal": "hertz/material", "E": 5e7, "nu": 0.3, "damping": damping, "limit_damping": limit}
     d = lammps_design(PAIR, eps=0.6, g=1.0, **kw)
     a = lammps_audit(PAIR, [1.0], eta_n0=d["eta_n0"], **kw)
     assert a["rows"][0]["eps"] == pytest.approx(0.6, rel=1e-9) and a["pair_coeff"] == d["pair_coeff"]
