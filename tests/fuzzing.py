@@ -568,8 +568,9 @@ def scene_cases(draw):
         else:
             targets.append({"pair": pair, "table": [[lo, e0], [hi, round(max(0.05, e0 - draw(st.floats(0.0, 0.2))), 3)]]})
     return {"name": "fuzz", "code": "lammps", "tolerance": draw(st.sampled_from([1e-3, 1e-2, 5e-2])),
-            "options": {"normal": normal, "damping": draw(st.sampled_from(["choose", "tsuji", "viscoelastic",
-                                                                            "velocity", "mass_velocity"])),
+            "options": {"normal": normal, "damping": draw(st.sampled_from(["choose", "coeff_restitution", "tsuji",
+                                                                            "viscoelastic", "velocity",
+                                                                            "mass_velocity"])),
                         "limit_damping": draw(st.booleans())},
             "speeds": [lo, hi], "check_points": 200, "materials": materials,
             "species": [{"name": "a", "material": "m1", "radius": log(-4.0, -1.0)},

@@ -110,19 +110,20 @@ def add_scene_subcommand(subparsers) -> None:
 def scene_table(res: dict) -> str:
     """The text answer of `restitution scene`: one block per contact, then the input lines."""
     o = res["options"]
+    w = max([22] + [len(c["chosen"] or "none meets the tolerance") for c in res["contacts"]])   # "chosen" column
     head = [f"scene {res['scene']}: {res['code']} (" + ", ".join(f"{k} {str(v).lower() if isinstance(v, bool) else v}" for k, v in o.items()) + f"), "
             f"tolerance {res['tolerance']:g} on eps, speeds {res['speeds'][0]:g} to {res['speeds'][1]:g}",
             f"# checked: {res['check']}",
-            f"{'contact':<24} {'types':<9} {'chosen':<22} {'max dev':>9} {'at v':>9} {'eps at lo .. hi':>17} "
+            f"{'contact':<24} {'types':<9} {'chosen':<{w}} {'max dev':>9} {'at v':>9} {'eps at lo .. hi':>17} "
             f"{'dt (s)':>10}"]
     rows = []
     for c in res["contacts"]:
         name = f"{c['a']}-{c['b']}"
         types = " ".join(map(str, c["types"]))
         if c["chosen"] is None:
-            rows.append(f"{name:<24} {types:<9} {'none meets the tolerance':<22}")
+            rows.append(f"{name:<24} {types:<9} {'none meets the tolerance':<{w}}")
         else:
-            rows.append(f"{name:<24} {types:<9} {c['chosen']:<22} {c['max_deviation']:9.2g} {c['at_speed']:9.3g} "
+            rows.append(f"{name:<24} {types:<9} {c['chosen']:<{w}} {c['max_deviation']:9.2g} {c['at_speed']:9.3g} "
                         f"{c['eps'][0]:7.4f} .. {c['eps'][-1]:6.4f} {c['dt']:10.3g}")
         tried = "; ".join(f"{r['name']} {r['max_deviation']:.3g}" + (f" at {r['at_speed']:.3g}" if r["at_speed"] else "")
                           + (" accepted" if r["accepted"] else " rejected") + (f" ({r['reason']})" if r.get("reason") else "")
@@ -143,6 +144,9 @@ def _run_scene(args, out) -> int:
     from .dem.scene import answer_scene
     from .dem.scene_file import read_scene
     res = answer_scene(read_scene(args.file))
+    if any((c.get("setting") or {}).get("damping") == "tsuji" for c in res["contacts"]):
+        from .dem.codes import TSUJI_VERSION_NOTE
+        print(f"restitution scene: note: {TSUJI_VERSION_NOTE}", file=sys.stderr)
     text = json.dumps(res, separators=(", ", ": ")) + "\n"
     table = scene_table(res)
     if args.out:   # everything computed first: a refused scene writes nothing

@@ -108,7 +108,7 @@ def test_the_cheapest_rung_is_rejected_over_a_wide_range():
     scene = _scene(0.01, 10.0)
     c = answer_scene(scene)["contacts"][0]
     tsuji, kk = c["rungs"][0], c["rungs"][1]
-    assert tsuji["name"] == "hertz + tsuji" and not tsuji["accepted"] and tsuji["max_deviation"] > 0.03
+    assert tsuji["name"] == "hertz + coeff_restitution" and not tsuji["accepted"] and tsuji["max_deviation"] > 0.03
     assert kk["accepted"] and c["chosen"] == "hertz + viscoelastic"
     # the material is Kuwabara-Kono: least squares on its table gives back its own eps at the
     # measured points (between them, the table's interpolation in log speed differs by ~1e-3)
@@ -127,7 +127,7 @@ def test_the_cheapest_rung_is_rejected_over_a_wide_range():
 
 def test_the_cheapest_rung_is_accepted_over_a_narrow_range():
     c = answer_scene(_scene(0.8, 1.2))["contacts"][0]
-    assert [r["name"] for r in c["rungs"]] == ["hertz + tsuji"] and c["chosen"] == "hertz + tsuji"
+    assert [r["name"] for r in c["rungs"]] == ["hertz + coeff_restitution"] and c["chosen"] == "hertz + coeff_restitution"
     assert 0.0 < c["max_deviation"] <= 0.01
 
 
@@ -145,7 +145,9 @@ def test_every_calibrated_contact_reaches_its_target_round_trip(small):
     for c in small["contacts"]:
         assert c["round_trip"] <= 1e-9, c["a"]
         t = targets[frozenset(c["materials"])]
-        if "e" in t and c["chosen"] == "hertz + tsuji":
+        if "e" in t and c["chosen"] == "hertz + coeff_restitution":
+            # the overlap rule (no limit_damping): coeff_restitution's e is the eps it gives
+            assert not small["options"]["limit_damping"] and abs(c["setting"]["eta_n0"] - t["e"]) <= 1e-9
             a = types[c["types"][0]]
             if c["types"][1] == "wall":
                 continue
@@ -153,6 +155,32 @@ def test_every_calibrated_contact_reaches_its_target_round_trip(small):
             pair = Pair.spheres(a["radius"], b["radius"], a["density"], b["density"])
             contact = lammps_contact(pair, **c["setting"])
             assert abs(contact.eps(c["speeds"][0]) - t["e"]) <= 1e-9
+
+
+@pytest.mark.parametrize("atoms_first", [True, False], ids=["atoms first", "groups first"])
+def test_the_scenes_lines_audited_as_a_deck_give_the_scenes_eps(small, atoms_first):
+    """A second reader of the scene's own lines: a deck with the types' sizes, atoms created and the
+    input lines pasted after them (as their comment says), audited by restitution deck, gives every
+    pair and wall contact the scene's eps (1e-9). Pasted before the atoms exist, the walls' groups
+    hold none: the audit names every wall and lists no wall eps."""
+    from restitution.dem.deck import audit_deck
+    types = small["types"]
+    head = ["units si", "atom_style sphere", f"create_box {len(types)} box"]
+    head += [f"set type {t['number']} diameter {2 * t['radius']!r} density {t['density']!r}" for t in types]
+    atoms = [f"create_atoms {t['number']} random 10 {4242 + t['number']} NULL" for t in types]
+    lines = head + (atoms + small["input_lines"] if atoms_first else small["input_lines"] + atoms)
+    speeds = small["contacts"][0]["speeds"]
+    res = audit_deck("\n".join(lines) + "\n", speeds)
+    pairs = {tuple(p["types"]): p for p in res["pairs"]}
+    walls = {w["types"][0]: w for w in res["walls"]}
+    for c in small["contacts"]:
+        got = walls.get(c["types"][0]) if c["types"][1] == "wall" else pairs[tuple(c["types"])]
+        if c["types"][1] == "wall" and not atoms_first:
+            assert got is None
+            continue
+        assert c["speeds"] == speeds and max(abs(a - b) for a, b in zip(got["eps"], c["eps"])) <= 1e-9, c["a"]
+    named = [u for u in res["unknown_lines"] if "acts on no atom" in u["why"]]
+    assert len(named) == (0 if atoms_first else sum(c["types"][1] == "wall" for c in small["contacts"]))
 
 
 def test_the_time_step_keeps_the_dem_schemes_error_within_the_tolerance(small):

@@ -69,21 +69,26 @@ def lammps_rungs(normal: str, damping: str) -> list[ModelRung]:
     """The rungs for LAMMPS pair_style granular with this normal model; ``damping`` = "choose" for
     all, cheapest first, else that one. A linear spring (hooke) gives a constant eps with every
     damping (gamma = 0, alpha = 1): one rung, the classical linear spring-dashpot. With a Hertz
-    normal model: tsuji (gamma = (alpha-1)/2, constant e), then viscoelastic (gamma = 1/2,
-    Kuwabara-Kono) and velocity (gamma = 0), both speed-dependent; mass_velocity has velocity's
-    exponents and reaches the same eps(v) for each pair, so "choose" does not try it again."""
+    normal model: coeff_restitution (gamma = (alpha-1)/2, constant e), then viscoelastic (gamma =
+    1/2, Kuwabara-Kono) and velocity (gamma = 0), both speed-dependent; mass_velocity has velocity's
+    exponents and reaches the same eps(v) for each pair, so "choose" does not try it again.
+    tsuji is the same law as coeff_restitution with another e; "choose" writes coeff_restitution,
+    whose e is the eps of the overlap rule, whose range of damping is wider (B(e) up to sqrt(5)
+    against tsuji's A(0) = 1.27), and which LAMMPS' development source applies as 22 Jul 2025
+    does, where tsuji's damping changed by sqrt(2) (codes.TSUJI_VERSION_NOTE)."""
     h = Fraction(3, 2)
     if normal == "hooke":
         every = [ModelRung("linear spring-dashpot", "hooke", "velocity", Fraction(1), Fraction(0))]
         fixed = {d: ModelRung(f"hooke + {d}", "hooke", d, Fraction(1), Fraction(0))
-                 for d in ("tsuji", "viscoelastic", "velocity", "mass_velocity")}
+                 for d in ("tsuji", "coeff_restitution", "viscoelastic", "velocity", "mass_velocity")}
         fixed["viscoelastic"] = ModelRung("hooke + viscoelastic", "hooke", "viscoelastic", Fraction(1), Fraction(1, 2))
     else:
-        every = [ModelRung("hertz + tsuji", normal, "tsuji", h, Fraction(1, 4)),
+        every = [ModelRung("hertz + coeff_restitution", normal, "coeff_restitution", h, Fraction(1, 4)),
                  ModelRung("hertz + viscoelastic", normal, "viscoelastic", h, Fraction(1, 2)),
                  ModelRung("hertz + velocity", normal, "velocity", h, Fraction(0))]
         fixed = {r.damping: r for r in every}
         fixed["mass_velocity"] = ModelRung("hertz + mass_velocity", normal, "mass_velocity", h, Fraction(0))
+        fixed["tsuji"] = ModelRung("hertz + tsuji", normal, "tsuji", h, Fraction(1, 4))
     return every if damping == "choose" else [fixed[damping]]
 
 

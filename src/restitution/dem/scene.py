@@ -94,8 +94,8 @@ def _liggghts_materials(scene: Scene, c: _Contact) -> dict:
 
 
 def _setting(scene: Scene, c: _Contact, fit: Fit) -> dict:
-    """The rung's setting for this contact: D2 from the fitted C, as the code's eta_n0 (or tsuji's
-    e; LIGGGHTS: coefficientRestitution) rounded as the input line prints it."""
+    """The rung's setting for this contact: D2 from the fitted C, as the code's eta_n0 (or the e
+    of tsuji or coeff_restitution; LIGGGHTS: coefficientRestitution) rounded as the input line prints it."""
     rung = fit.rung
     if scene.code == "liggghts":
         mats = _liggghts_materials(scene, c)
@@ -174,7 +174,7 @@ def _liggghts_lines(scene: Scene, rows: list) -> list[str]:
 
 def _climb(scene: Scene, rungs, end: str, target, grid, probe: _Contact, build) -> tuple[list[Fit], Fit | None]:
     """Fit each rung in turn; stop at the first that meets the tolerance and that the code can
-    express (tsuji's e, for one, reaches only part of the range)."""
+    express (tsuji's e, for one, reaches only part of the range of damping)."""
     fits = []
     for rung in rungs:
         fit = fit_rung(rung, end, target, grid, scene.tolerance, build)
@@ -313,7 +313,13 @@ def answer_scene(scene: Scene) -> dict:
     else:
         lines = ["pair_style granular"] + [ln for row in out if not row["b"].startswith("wall:")
                                            for ln in row["input_lines"]]
-        lines += [ln for row in out if row["b"].startswith("wall:") for ln in row["input_lines"]]
+        walls = [ln for row in out if row["b"].startswith("wall:") for ln in row["input_lines"]]
+        if walls:
+            # LAMMPS groups are static and fix wall/gran refuses dynamic ones: a group defined
+            # before the atoms exist holds none, and its wall lets them through (measured)
+            lines += ["# the groups hold the atoms present when they are defined: put these lines after "
+                      "create_atoms/read_data,", "# or give a fix pour of type N the group typeN"]
+        lines += walls
     return {"scene": scene.name, "code": scene.code, "options": scene.options, "tolerance": scene.tolerance,
             "speeds": list(scene.speeds), "check_points": scene.check_points,
             "check": f"every rung's |eps - target| at {scene.check_points} log-spaced speeds over the range, "
