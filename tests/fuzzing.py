@@ -955,8 +955,7 @@ def _check_deck_row(p: dict, pair, key: tuple, engine, code: str, name: str) -> 
     """One audited contact (a type pair, or a type on a wall) in the engine at each listed speed:
     (the worst error over DECK_EXTRAPOLATED, what it was, whether anything ran). ``engine`` runs
     (pair, key, g, dt, t_run) tuples as _lammps_runner's function does."""
-    from restitution.core.collision import OMEGA_RANGE
-    from restitution.dem.contact import Contact
+    from restitution.dem.contact import TIMES_OMEGA_MAX, Contact
     from restitution.dem.extrapolate import richardson
 
     a, c = float(Fraction(p["alpha"])), float(Fraction(p["gamma"]))
@@ -982,11 +981,11 @@ def _check_deck_row(p: dict, pair, key: tuple, engine, code: str, name: str) -> 
         try:
             t_c = contact.contact_time(g)
         except Exception as exc:  # noqa: BLE001
-            if not contact.omega(g) > OMEGA_RANGE[1]:
+            if not contact.omega(g) > TIMES_OMEGA_MAX:
                 checks.append((g, listed, False, exc))
                 continue
-            # beyond the reference integrator's Omega the contact is all but undamped: its
-            # duration is the elastic one to O(Omega^-1/2), enough to choose the steps
+            # beyond the contact times' Omega the contact is all but undamped: its duration is
+            # the elastic one to O(Omega^-1/2), enough to choose the steps
             t_c = t_el
         t_run = 1.2 * t_c + (2.0 * reach / (listed * g) if p["end"] == "force" else 0.0)
         # a whole number of steps per contact: where the damping force does not vanish at zero

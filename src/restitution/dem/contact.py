@@ -15,7 +15,14 @@ from ..core.exponents import as_exponents
 from ..core.model import Material
 from ..core.results import end_rule
 
-__all__ = ["Contact", "contact_eps"]
+__all__ = ["Contact", "contact_eps", "TIMES_OMEGA_MAX"]
+
+#: Above the scipy reference's range (core.collision.OMEGA_RANGE: a contact all but undamped, whose
+#: 1 - eps that integration no longer resolves) contact times come from the compiled integrator, up
+#: to here: against mpmath (20 digits) its tau_c at rtol 1e-12 held to 1.7e-12 (relative) at Omega =
+#: 1e11..1e15 for (3/2, 1/4), (1, 0), (3/2, 1/2), (3/2, 1), (1, 1), (1, 3/2), (2, 1), (5/2, 0)
+#: under both end rules (tests/library/test_contact_time.py checks four of them).
+TIMES_OMEGA_MAX = 1e15
 
 
 def contact_eps(alpha, gamma, end: str, omega: float, rtol: float = 1e-12) -> float:
@@ -35,6 +42,16 @@ def contact_eps(alpha, gamma, end: str, omega: float, rtol: float = 1e-12) -> fl
         raise
     except ParameterError:
         return collide(alpha, gamma, omega, rtol=rtol, end=end).eps
+
+
+def _fast_tau_c(alpha, gamma, end: str, omega: float, rtol: float) -> float:
+    """tau_c of the compiled integrator (all but undamped contacts: no sticking, no creep)."""
+    from ..fast.integrator import END_FAILED, collide_fast
+    ex = as_exponents(alpha, gamma)
+    row = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, end == "overlap" and ex.alpha > ex.gamma)[0]
+    if row[5] == END_FAILED:
+        raise ArithmeticError(f"compiled integrator failed at Omega = {omega:g} (alpha={ex.alpha}, gamma={ex.gamma})")
+    return float(row[3])
 
 
 @dataclass(frozen=True)
@@ -73,11 +90,16 @@ class Contact:
         return contact_eps(self.alpha, self.gamma, self.end, self.omega(g), rtol)
 
     def contact_time(self, g: float, rtol: float = 1e-12) -> float:
-        """t_c in the units of D1, D2, g: the scaled tau_c times the time scale B(g)."""
+        """t_c in the units of D1, D2, g: the scaled tau_c times the time scale B(g) (the scipy
+        reference's tau_c; above its Omega range, up to TIMES_OMEGA_MAX, the compiled integrator's)."""
+        from ..core.collision import OMEGA_RANGE
         from ..core.errors import derived_in_range
         inputs = {"D1": self.D1, "D2": self.D2, "g": float(g)}
+        om = self.omega(g)
         with np.errstate(all="ignore"):
-            t_c = self.collision(g, rtol).tau_c * float(self.material.time_scale(g))
+            tau_c = (_fast_tau_c(self.alpha, self.gamma, self.end, om, rtol)
+                     if OMEGA_RANGE[1] < om <= TIMES_OMEGA_MAX else self.collision(g, rtol).tau_c)
+            t_c = tau_c * float(self.material.time_scale(g))
         return derived_in_range("the contact time", t_c, inputs)
 
     def reaches(self, g: float, limit: float) -> bool:
