@@ -35,6 +35,8 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from fractions import Fraction
+from functools import lru_cache
 
 from ..core.collision import StickError
 from ..core.errors import ParameterError
@@ -638,7 +640,7 @@ def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
     return mixed, stiffness
 
 
-def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
+def _lammps_pair(deck: Deck, i: int, j: int) -> dict:
     if (i, j) in deck.coeffs:
         loc, words = deck.coeffs[(i, j)]
         where, text = _where(loc), " ".join(words)
@@ -665,7 +667,7 @@ def _lammps_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
     if typed is not None and c.others is not None:
-        e_new = _exact(contact, typed, speeds[len(speeds) // 2], lambda cal: lammps_eta_n0(pair, c.damping, cal))
+        e_new = _exact(contact, typed, c.damping)
         if e_new is not None:
             # the pair's own line (a wildcard or mixed pair gets one naming it), its e replaced
             numbers = [f"{x:.10g}" for x in c.args]
@@ -685,11 +687,22 @@ def _prop(deck: Deck, name: str, required: bool = True):
     return deck.props[name]
 
 
-def _exact(contact, eps: float, g: float, to_code):
-    """The code's setting (``to_code`` of the calibrated Contact) that gives ``contact``'s exponents
-    and stiffness eps at speed g under its end rule; None where no damping does."""
-    try:
-        return to_code(calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=eps, g=g, end=contact.end).contact)
+def _exact(contact, eps: float, code: str) -> float | None:
+    """The e to type into ``code`` (a LAMMPS damping taking an e, or "liggghts" for
+    coefficientRestitution) that gives ``contact``'s law eps = ``eps`` under its end rule; None where
+    no e does. Those dampings set D2 = f(e) sqrt(D1) with gamma = (alpha - 1)/2, so Omega = D1 / D2^2
+    at every speed and eps depends on e alone: one calibration per law and e (the unit contact,
+    D1 = 1 at g = 1) serves every pair and wall of a deck."""
+    if contact.gamma != (contact.alpha - 1) / 2:
+        raise ValueError(f"an exact e needs gamma = (alpha - 1)/2, not {contact.gamma} for alpha = {contact.alpha}")
+    return _unit_exact(contact.alpha, contact.end, float(eps), code)
+
+
+@lru_cache(maxsize=1024)
+def _unit_exact(alpha: Fraction, end: str, eps: float, code: str) -> float | None:
+    try:     # no damping gives eps, or the code's e cannot express the one that does
+        unit = calibrate(alpha, (alpha - 1) / 2, D1=1.0, eps=eps, g=1.0, end=end).contact
+        return liggghts_e(unit) if code == "liggghts" else lammps_eta_n0(None, code, unit)
     except ParameterError:
         return None
 
@@ -728,7 +741,7 @@ def _liggghts_model(deck: Deck, model: str, limit_force: bool) -> dict:
     return kw
 
 
-def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
+def _liggghts_pair(deck: Deck, i: int, j: int) -> dict:
     E, nu, matrix, loc = _liggghts_materials(deck)
     m = deck.ntypes
     e = matrix[(i - 1) * m + (j - 1)]
@@ -737,14 +750,14 @@ def _liggghts_pair(deck: Deck, i: int, j: int, speeds) -> dict:
     contact = liggghts_contact(pair, E=E[i - 1], nu=nu[i - 1], E2=E[j - 1], nu2=nu[j - 1], e=e, **kw)
     return {"types": [i, j], "model": f"LIGGGHTS {deck.model}, limitForce {'on' if deck.limit_force else 'off'}",
             "typed_e": e, "end": contact.end, "contact": contact, "pair": pair, "line": loc[1], "file": loc[0],
-            "exact_line": _liggghts_exact_line(deck, matrix, i, j, contact, speeds[len(speeds) // 2])}
+            "exact_line": _liggghts_exact_line(deck, matrix, i, j, contact)}
 
 
-def _liggghts_exact_line(deck: Deck, matrix: list, i: int, j: int, contact, g: float) -> str | None:
+def _liggghts_exact_line(deck: Deck, matrix: list, i: int, j: int, contact) -> str | None:
     """The coefficientRestitution line with the entry (i, j) replaced by the e that gives
-    ``contact`` eps = the e typed there at speed g; None where no e does or LIGGGHTS would refuse it."""
+    ``contact`` eps = the e typed there; None where no e does or LIGGGHTS would refuse it."""
     m = deck.ntypes
-    e_new = _exact(contact, matrix[(i - 1) * m + (j - 1)], g, liggghts_e)
+    e_new = _exact(contact, matrix[(i - 1) * m + (j - 1)], "liggghts")
     if e_new is None or not liggghts_accepts_e(e_new):   # LIGGGHTS would stop on it
         return None
     new = list(matrix)
@@ -803,9 +816,9 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
 
 def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
     """fix ID group wall/gran granular MODEL... xplane|yplane|zplane ...: [(None, a function of the
-    wall Pair, the sphere's type and the speed an exact line is calibrated at giving (contact,
-    typed e, model, exact line or None), None)], or None with the reason in ``unknown``. The wall's model is that of a pair_coeff line with the wall as the second
-    body, and LAMMPS' keywords after the wall style (wiggle, shear, contacts, temperature) move it,
+    wall Pair and the sphere's type giving (contact, typed e, model, exact line or None), None)], or
+    None with the reason in ``unknown``. The wall's model is that of a pair_coeff line with the wall
+    as the second body, and LAMMPS' keywords after the wall style (wiggle, shear, contacts, temperature) move it,
     heat it or write output: none changes the contact."""
     text = " ".join(words)
     style = words[4] if len(words) > 4 else None
@@ -835,13 +848,13 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
     model = f"LAMMPS {c.normal}, damping {c.damping}, {words[k]} wall"
     typed = c.args[1] if c.damping in E_DAMPINGS else None
 
-    def contact_of(pair, t, g):
+    def contact_of(pair, t):
         contact = lammps_contact(pair, **c.setting())
         exact = None
         if typed is not None:
             # tsuji's and coeff_restitution's eps depend on e alone (Omega = 1 / A(e)^2 for hooke
             # and hertz), so one e serves every type the wall acts on: the wall's own line with it
-            e_new = _exact(contact, typed, g, lambda cal: lammps_eta_n0(pair, c.damping, cal))
+            e_new = _exact(contact, typed, c.damping)
             if e_new is not None:
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact
@@ -924,7 +937,7 @@ def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
     kw = _liggghts_model(deck, model, limit)
 
     def contact_with(w: int, surface: str):
-        def contact(pair, t, g):
+        def contact(pair, t):
             e = matrix[(t - 1) * deck.ntypes + (w - 1)]
             c = liggghts_contact(pair, E=E[t - 1], nu=nu[t - 1], E2=E[w - 1], nu2=nu[w - 1], e=e, **kw)
             # The entry (t, W) of the matrix also sets the sphere pair (t, W). Under either model
@@ -933,7 +946,7 @@ def _liggghts_wall(deck: Deck, loc, words: list, unknown: list):
             # are the pair style's, one e gives both contacts eps = e typed: the pair's exact line.
             # Elsewhere the two want different e's and no line serves both.
             same = (model, limit) == (deck.model, deck.limit_force)
-            exact = _liggghts_exact_line(deck, matrix, t, w, c, g) if same else None
+            exact = _liggghts_exact_line(deck, matrix, t, w, c) if same else None
             return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {surface} of type {w}", exact
         return contact
     return [(mesh, contact_with(w, label), w) for mesh, w, label in surfaces]
@@ -952,7 +965,7 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             for t in types:
                 _pair(deck, t, t)            # one line where the type lacks a radius or a density
                 pair = Pair.wall(deck.radius[t], deck.density[t])
-                contact, typed, model, exact = contact_of(pair, t, speeds[len(speeds) // 2])
+                contact, typed, model, exact = contact_of(pair, t)
                 rows.append(_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                        "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
                                        "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1))
@@ -963,7 +976,7 @@ def _with_eps(row: dict, contact, speeds, limit: float) -> dict:
     """The row with eps at every speed, where the engine would push the bodies through each other
     (the largest overlap reaching ``limit``) none, and the contact's parameters."""
     through = [contact.reaches(g, limit) for g in speeds]
-    if through[len(speeds) // 2]:   # the exact line is calibrated at the middle speed: none there
+    if through[len(speeds) // 2]:   # no eps at the middle speed: no line promising one
         row["exact_line"] = None
     eps = [(None, False) if t else _eps_or_stick(contact, g) for g, t in zip(speeds, through)]
     row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
@@ -1002,7 +1015,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     pairs = []
     for i in range(1, deck.ntypes + 1):
         for j in range(i, deck.ntypes + 1):
-            row = (_lammps_pair if deck.code == "LAMMPS" else _liggghts_pair)(deck, i, j, speeds)
+            row = (_lammps_pair if deck.code == "LAMMPS" else _liggghts_pair)(deck, i, j)
             contact, pair = row.pop("contact"), row.pop("pair")
             pairs.append(_with_eps(row, contact, speeds, pair.R1 + pair.R2))
     walls, not_audited = _wall_rows(deck, speeds)
