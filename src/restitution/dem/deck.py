@@ -15,8 +15,9 @@ type they act on (``group ID type ...`` or all) hitting them head-on; other wall
 regions, a mesh's edges and corners, older models) are named as not audited. A group holds the
 atoms present when it is defined (and those a later command inserts into it): a group by type
 defined before any atom exists holds none, and its wall, acting on no atom, is named as not
-audited (a group that inserted atoms join has types the reader cannot know, likewise); else the
-audit takes the types it names. A wall removed later (``unfix``) is still listed: it acts until then.
+audited; a LAMMPS pour or deposit into the group adds the type it pours, a LIGGGHTS insert fix
+or read_data into it atoms of types the reader cannot know (named likewise); else the audit
+takes the types it names. A wall removed later (``unfix``) is still listed: it acts until then.
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
@@ -115,7 +116,8 @@ class Deck:
     atoms: bool = False                           # some atom exists at this line
     inserting: bool = False                       # an inserting fix (pour, insert/...) is defined
     empty_groups: set = field(default_factory=set)   # groups by type defined before any atom existed
-    filled_groups: dict = field(default_factory=dict)  # group ID -> the command that inserts atoms into it
+    # group ID -> [(the command that inserts atoms into it, their types or None where not known)]
+    filled_groups: dict = field(default_factory=dict)
 
 
 _ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
@@ -343,7 +345,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
         if opts[k] == "nocoeff":
             coeffs, k = False, k + 1
         elif opts[k] == "group" and k + 1 < len(opts):
-            deck.filled_groups[opts[k + 1]] = f"read_data {name} adds"
+            deck.filled_groups.setdefault(opts[k + 1], []).append((f"read_data {name} adds", None))
             k += 2
         else:
             raise DeckError(where, line, f"read_data option {opts[k]} is not mapped (it may add, shift or offset "
@@ -467,7 +469,9 @@ def _set(deck, words, where, line, loc):
             return
 
 
-#: Fixes that insert atoms as the run goes, into their own group (and all)
+#: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
+#: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
+#: particle templates
 _INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/rate/region"}
 
 
@@ -476,7 +480,9 @@ def _fix(deck, words, where, line, loc):
     if style in _INSERTING_FIXES:
         deck.inserting = True
         if words[2] != "all":
-            deck.filled_groups[words[2]] = f"fix {words[1]} ({style}) inserts"
+            typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()
+            deck.filled_groups.setdefault(words[2], []).append(
+                (f"fix {words[1]} ({style}) inserts", {int(words[5])} if typed else None))
     if style == "property/global" and len(words) >= 6:
         deck.props[words[4]] = (loc, words[5:])
         deck.prop_fix[words[4]] = f"fix {words[1]} {words[2]}"     # the exact line keeps the deck's fix ID
@@ -801,17 +807,20 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
         why = "not defined before it" if types == "undefined" else "not defined by type"
         unknown.append((*loc, " ".join(words), f"group {words[2]} is {why}: the wall's contacts are not audited"))
         return None
-    if words[2] in deck.filled_groups:
-        unknown.append((*loc, " ".join(words), f"group {words[2]} also holds the atoms {deck.filled_groups[words[2]]}"
-                                               ", whose types the reader does not know: the wall's contacts are not "
-                                               "audited"))
+    fillers = deck.filled_groups.get(words[2], [])
+    unknown_fill = [what for what, filled in fillers if filled is None]
+    if unknown_fill:
+        unknown.append((*loc, " ".join(words), f"group {words[2]} also holds the atoms {unknown_fill[0]}, whose "
+                                               "types the reader does not know: the wall's contacts are not audited"))
         return None
-    if words[2] in deck.empty_groups:
+    # its static members, and the atoms a pour or deposit of a named type inserts into it
+    held = (set() if words[2] in deck.empty_groups else set(types)).union(*(filled for _, filled in fillers))
+    if not held:
         unknown.append((*loc, " ".join(words), f"group {words[2]} is defined by type before any atom exists (a "
                                                "group holds the atoms present when it is defined): it holds none, "
                                                "and the wall acts on no atom"))
         return None
-    return sorted(t for t in types if 1 <= t <= deck.ntypes)
+    return sorted(t for t in held if 1 <= t <= deck.ntypes)
 
 
 def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
