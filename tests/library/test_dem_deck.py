@@ -269,7 +269,7 @@ def test_a_pair_lammps_cannot_mix_is_refused_in_one_line(tmp_path):
 @pytest.mark.parametrize("text, word", [
     (LAMMPS_DECK.replace("set type 2 diameter 0.003 density 7800", "set type 2 diameter 0.003"), "density"),
     (LAMMPS_DECK.replace("damping tsuji", "damping none"), "damping none is not mapped"),
-    (LAMMPS_DECK.replace("pair_style granular", "pair_style gran/hooke 2e4 NULL 50 NULL 0.5 1"), "gran/hooke"),
+    (LAMMPS_DECK.replace("pair_style granular", "pair_style lj/cut 2.5"), "lj/cut"),
     ("atom_style sphere\n", "pair_style"),
     # a value the audit needs from a variable it cannot evaluate is named, not guessed
     ("variable E equal v_f*2\n" + LAMMPS_DECK.replace("5e7", "${E}"), "unevaluated-variable-E"),
@@ -585,3 +585,52 @@ def test_a_liggghts_deck_liggghts_itself_stops_is_refused_in_one_line(tmp_path, 
     if "particles" in word:
         deck.write_text(text.replace("units si\n", f"units si\n{word}\n"))
         assert audit(deck, "--g", 1.0)[0]["code"] == "LIGGGHTS"
+
+
+#: LAMMPS' older granular pair styles (its examples/pour uses gran/hooke/history): one law for all pairs
+GRAN_DECK = """\
+units si
+atom_style sphere
+create_box 2 box
+pair_style {style} {kn} NULL {gn} NULL 0.5 0{limit}
+pair_coeff * *
+set type 1 diameter 0.002 density 2500
+set type 2 diameter 0.003 density 7800
+"""
+GRAN = [("gran/hooke/history", 2000.0, 5000.0), ("gran/hooke", 2000.0, 5000.0), ("gran/hertz/history", 2e8, 2e4)]
+
+
+@pytest.mark.parametrize("limit", ["", " limit_damping"], ids=["overlap rule", "force rule"])
+@pytest.mark.parametrize("style, kn, gn", GRAN, ids=[g[0] for g in GRAN])
+def test_lammps_older_gran_styles_are_audited_and_lammps_agrees(tmp_path, style, kn, gn, limit):
+    """Normal force kn delta + m gamma_n delta' (hooke), times sqrt(R delta) (hertz): the hooke
+    pairs against the linear dashpot's closed form (overlap rule, 1e-9), every pair in LAMMPS
+    (extrapolated to dt = 0, 1e-6) at 0.1 and 3 m/s."""
+    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    deck = tmp_path / "in.gran"
+    deck.write_text(GRAN_DECK.format(style=style, kn=kn, gn=gn, limit=limit))
+    res, err = audit(deck, "--g", 0.1, 3.0)
+    assert err == "" and len(res["pairs"]) == 3
+    radii, dens = {1: 0.001, 2: 0.0015}, {1: 2500.0, 2: 7800.0}
+    for p in res["pairs"]:
+        i, j = p["types"]
+        assert p["model"] == f"LAMMPS {style}" and p["end"] == ("force" if limit else "overlap")
+        assert p["typed_e"] is None and p["exact_line"] is None
+        pair = Pair.spheres(radii[i], radii[j], dens[i], dens[j])
+        if style != "gran/hertz/history" and not limit:
+            assert all(abs(e / _dashpot_eps(p) - 1) < 1e-9 for e in p["eps"])
+        if not available():
+            continue
+        contact = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"])
+        for g, listed in zip(p["speeds"], p["eps"]):
+            got = lammps_eps_extrapolated(pair, "pair_coeff * *", g, contact.contact_time(g), types=(i, j), ntypes=2,
+                                          style=f"{style} {kn} NULL {gn} NULL 0.5 0{limit}")[0]
+            assert abs(got / listed - 1) <= 1e-6, (p["types"], g, got, listed)
+
+
+def test_an_older_gran_style_cut_short_is_refused_in_one_line(tmp_path):
+    deck = tmp_path / "in.gran"
+    deck.write_text(GRAN_DECK.format(style="gran/hooke/history", kn=2000.0, gn="", limit="").replace(
+        "NULL  NULL 0.5 0", "NULL"))
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and "needs Kn Kt gamma_n" in err

@@ -75,7 +75,7 @@ from .contact import Contact
 __all__ = ["Pair", "WALL_SIZE", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
            "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
            "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "E_DAMPINGS", "restitution_b",
-           "TSUJI_VERSION_NOTE", "LAMMPS_CHECKED", "TSUJI_SQRT2_SINCE",
+           "TSUJI_VERSION_NOTE", "LAMMPS_CHECKED", "TSUJI_SQRT2_SINCE", "LAMMPS_GRAN_STYLES", "lammps_gran_contact",
            "LIGGGHTS_MODELS", "LIGGGHTS_E", "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "LIGGGHTS_MODEL_TYPES", "liggghts_accepts_e"]
 
 NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
@@ -239,6 +239,24 @@ def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limi
         D2 = {"velocity": eta / pair.m, "mass_velocity": eta, "viscoelastic": eta * math.sqrt(pair.R)}[damping]
         D2 = derived_in_range("the damping D2", D2, {"eta_n0": eta, **_pair_inputs(pair)})
     return Contact(alpha, _damping_exponent(alpha, damping), D1, D2, "force" if limit_damping else "overlap")
+
+
+#: LAMMPS' older granular pair styles: pair_style STYLE Kn Kt gamma_n gamma_t xmu dampflag
+#: [limit_damping], one setting for every type pair. Normal force (pair_gran_*_history.cpp):
+#: kn delta + m gamma_n delta' for hooke, times sqrt(R delta) for hertz (Kn then in pressure units,
+#: divided by the unit style's nktv2p, 1 in si, cgs, lj, micro and nano).
+LAMMPS_GRAN_STYLES = ("gran/hooke", "gran/hooke/history", "gran/hertz/history")
+
+
+def lammps_gran_contact(pair: Pair, *, style: str, k_n: float, gamma_n: float, limit_damping: bool) -> Contact:
+    """The model an older LAMMPS granular pair style gives for this pair: hooke alpha = 1, gamma = 0,
+    D1 = Kn / m, D2 = gamma_n; hertz alpha = 3/2, gamma = 1/2, D1 = Kn sqrt(R) / m, D2 = gamma_n sqrt(R)."""
+    style = one_of("pair_style", style, LAMMPS_GRAN_STYLES)
+    k_n, gamma_n = require_positive_finite("Kn", k_n), require_positive_finite("gamma_n", gamma_n)
+    end = "force" if limit_damping else "overlap"
+    if style == "gran/hertz/history":
+        return Contact("3/2", "1/2", k_n * math.sqrt(pair.R) / pair.m, gamma_n * math.sqrt(pair.R), end)
+    return Contact("1", "0", k_n / pair.m, gamma_n, end)
 
 
 def lammps_eta_n0(pair: Pair, damping: str, contact: Contact) -> float:

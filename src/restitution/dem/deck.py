@@ -42,8 +42,9 @@ from functools import lru_cache
 from ..core.collision import StickError
 from ..core.errors import ParameterError
 from .calibrate import calibrate
-from .codes import (DAMPING_MODELS, E_DAMPINGS, LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair,
-                    lammps_contact, lammps_eta_n0, liggghts_accepts_e, liggghts_contact, liggghts_e)
+from .codes import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair,
+                    lammps_contact, lammps_eta_n0, lammps_gran_contact, liggghts_accepts_e, liggghts_contact,
+                    liggghts_e)
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
 
@@ -110,6 +111,7 @@ class Deck:
     groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
     walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
     meshes: dict = field(default_factory=dict)    # LIGGGHTS fix mesh/surface ID -> its atom type, or None
+    gran: dict = field(default_factory=dict)      # LAMMPS' older gran/* pair style: style, k_n, gamma_n, limit
     # Groups are static: a group holds the atoms present when it is defined, and those a later
     # command inserts into it by name (LAMMPS and LIGGGHTS alike; measured in LAMMPS: a wall on a
     # group by type defined before create_atoms lets the sphere through)
@@ -412,9 +414,13 @@ def _pair_style(deck, words, where, line, loc):
     if style == "granular":
         deck.code = "LAMMPS"
         return
+    if style in LAMMPS_GRAN_STYLES:
+        _gran_style(deck, words, where, line)
+        return
     if style != "gran":
         raise DeckError(where, line, f"pair_style {style} is not mapped (the reader maps LAMMPS pair_style "
-                                     "granular and LIGGGHTS pair_style gran model hertz|hooke)")
+                                     "granular, gran/hooke, gran/hooke/history and gran/hertz/history, and "
+                                     "LIGGGHTS pair_style gran model hertz|hooke)")
     deck.code = "LIGGGHTS"
     i = 2
     while i < len(words):
@@ -437,9 +443,28 @@ def _pair_style(deck, words, where, line, loc):
         raise DeckError(where, line, "pair_style gran without model hertz|hooke")
 
 
+#: Unit styles whose pressure-to-force conversion (LAMMPS' nktv2p) is 1: gran/hertz/history's Kn as typed
+_NKTV2P_ONE = ("si", "cgs", "lj", "micro", "nano")
+
+
+def _gran_style(deck, words, where, line):
+    """pair_style gran/hooke|gran/hooke/history|gran/hertz/history Kn Kt gamma_n gamma_t xmu
+    dampflag [limit_damping]: one normal law for every type pair (Kt, gamma_t, xmu and dampflag act
+    tangentially only)."""
+    if len(words) not in (8, 9) or len(words) == 9 and words[8] != "limit_damping":
+        raise DeckError(where, line, f"pair_style {words[1]} needs Kn Kt gamma_n gamma_t xmu dampflag "
+                                     "[limit_damping], as LAMMPS does")
+    if words[1] == "gran/hertz/history" and deck.units not in _NKTV2P_ONE:
+        raise DeckError(where, line, f"units {deck.units}: gran/hertz/history's Kn is converted from pressure "
+                                     f"units there, which the reader does not map ({', '.join(_NKTV2P_ONE)} are)")
+    deck.code = "LAMMPS"
+    deck.gran = {"style": words[1], "k_n": _number(words[2], where, line),
+                 "gamma_n": _number(words[4], where, line), "limit_damping": len(words) == 9}
+
+
 def _pair_coeff(deck, words, where, line, loc):
-    if deck.code == "LIGGGHTS":
-        return                       # `pair_coeff * *`: the coefficients come from property/global
+    if deck.code == "LIGGGHTS" or deck.gran:
+        return                       # `pair_coeff * *`: the coefficients come from property/global or the style
     if deck.code != "LAMMPS":
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     for i in _types(words[1], deck.ntypes, where, line):
@@ -647,6 +672,12 @@ def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
 
 
 def _lammps_pair(deck: Deck, i: int, j: int) -> dict:
+    if deck.gran:
+        pair = _pair(deck, i, j)
+        loc = deck.style_line[0]
+        contact = lammps_gran_contact(pair, **deck.gran)
+        return {"types": [i, j], "model": f"LAMMPS {deck.gran['style']}", "typed_e": None, "end": contact.end,
+                "contact": contact, "pair": pair, "exact_line": None, "line": loc[1], "file": loc[0]}
     if (i, j) in deck.coeffs:
         loc, words = deck.coeffs[(i, j)]
         where, text = _where(loc), " ".join(words)

@@ -75,13 +75,14 @@ timestep {dt!r}
 
 
 def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, types: tuple = (1, 1),
-               ntypes: int = 1) -> float:
+               ntypes: int = 1, style: str = "granular") -> float:
     """eps = -(relative speed after) / g for one head-on collision at approach speed g.
 
     The spheres start touching (zero overlap) so that no partial first step biases the result;
     ``t_run`` must exceed the contact time (the run stops as soon as they have separated).
     ``pair_coeff`` may be a whole scene's lines for ``ntypes`` atom types, the two spheres of
-    atom types ``types`` (a pair without its own line is left to LAMMPS' mixing).
+    atom types ``types`` (a pair without its own line is left to LAMMPS' mixing). ``style``: the
+    pair_style line's arguments (an older style such as gran/hooke/history with its coefficients).
     """
     gap = pair.R1 + pair.R2
     rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
@@ -96,7 +97,7 @@ set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
 set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
 velocity all set 0 0 0 units box
 set atom 1 vx {v1!r}
-set atom 2 vx {v2!r}""", f"pair_style granular\n{pair_coeff}", 0.5 * gap, dt, t_run, f"x[2] - x[1] - {gap!r}")
+set atom 2 vx {v2!r}""", f"pair_style {style}\n{pair_coeff}", 0.5 * gap, dt, t_run, f"x[2] - x[1] - {gap!r}")
     if x[1, 0] - x[0, 0] <= gap:
         raise ArithmeticError("the spheres had not separated at the end of the run")
     return float(-(v[0, 0] - v[1, 0]) / g)
@@ -118,7 +119,7 @@ velocity all set 0 0 {-g!r} units box""", lines, 0.5 * radius, dt, t_run, f"z[1]
 
 
 def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, steps: int = 4000,
-                            types: tuple = (1, 1), ntypes: int = 1) -> tuple:
+                            types: tuple = (1, 1), ntypes: int = 1, style: str = "granular") -> tuple:
     """(eps extrapolated to dt = 0, the runs' eps at t_c/steps, /2 steps, /4 steps).
 
     eps(dt) = eps0 + a dt + b dt^2 (first order from the half-step damping, and a second-order
@@ -126,6 +127,6 @@ def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, s
     two Richardson levels remove both. Overlap-rule tsuji contacts also carry a fractional-order
     term (the delta^(1/4) damping where the contact ends at delta = 0): 4000 steps keep it below 1e-6."""
     dt = t_c / steps
-    e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types, ntypes) for k in (1, 2, 4))
+    e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types, ntypes, style) for k in (1, 2, 4))
     r1, r2 = 2.0 * e2 - e1, 2.0 * e4 - e2
     return (4.0 * r2 - r1) / 3.0, e1, e2, e4
