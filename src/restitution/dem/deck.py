@@ -858,13 +858,14 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
     """fix ID group wall/gran granular MODEL... xplane|yplane|zplane ...: [(None, a function of the
     wall Pair and the sphere's type giving (contact, typed e, model, exact line or None), None)], or
     None with the reason in ``unknown``. The wall's model is that of a pair_coeff line with the wall
-    as the second body, and LAMMPS' keywords after the wall style (wiggle, shear, contacts, temperature) move it,
-    heat it or write output: none changes the contact."""
+    as the second body (the older hooke, hooke/history and hertz/history: their pair style's law, Kn
+    Kt gamma_n gamma_t xmu dampflag [limit_damping]), and LAMMPS' keywords after the wall style
+    (wiggle, shear, contacts, temperature) move it, heat it or write output: none changes the contact."""
     text = " ".join(words)
     style = words[4] if len(words) > 4 else None
-    if style != "granular":
-        unknown.append((*loc, text, f"wall model {style} is not mapped (granular is): the wall's contacts are not "
-                                    "audited"))
+    if style not in ("granular", *_OLDER_WALLS):
+        unknown.append((*loc, text, f"wall model {style} is not mapped (granular, {', '.join(_OLDER_WALLS)} are): "
+                                    "the wall's contacts are not audited"))
         return None
     k = next((n for n, w in enumerate(words) if n > 4 and w in _WALL_STYLES), None)
     if k is None or words[k] not in _FLAT_WALLS:
@@ -880,6 +881,8 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
     if n < len(words):
         unknown.append((*loc, text, f"keyword {words[n]} is not mapped: the wall's contacts are not audited"))
         return None
+    if style in _OLDER_WALLS:
+        return _older_wall(deck, loc, words, k, unknown)
     try:
         c = _coeff(deck, ["pair_coeff", "*", "*", *words[5:k]], _where(loc), text)
     except DeckError as why:
@@ -898,6 +901,30 @@ def _lammps_wall(deck: Deck, loc, words: list, unknown: list):
             if e_new is not None:
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact
+    return [(None, contact_of, None)]
+
+
+#: fix wall/gran's older models, each the law of the pair style gran/<model>
+_OLDER_WALLS = ("hooke", "hooke/history", "hertz/history")
+
+
+def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list):
+    """A wall of an older model (words[4]) with its Kn Kt gamma_n gamma_t xmu dampflag
+    [limit_damping] before the wall style at words[k]: as _lammps_wall's result, no e typed."""
+    text, params = " ".join(words), words[5:k]
+    gran = ["pair_style", f"gran/{words[4]}", *params]
+    try:
+        if len(params) not in (6, 7):
+            raise DeckError(_where(loc), text, "needs Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]")
+        probe = Deck(units=deck.units)
+        _gran_style(probe, gran, _where(loc), text)
+    except DeckError as why:
+        unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
+        return None
+    model = f"LAMMPS {words[4]} (older wall model), {words[k]} wall"
+
+    def contact_of(pair, t):
+        return lammps_gran_contact(pair, **probe.gran), None, model, None
     return [(None, contact_of, None)]
 
 
