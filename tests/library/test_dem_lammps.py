@@ -10,7 +10,7 @@ import math
 import pytest
 
 from restitution.dem import calibrate
-from restitution.dem.codes import E_DAMPINGS, lammps_contact, lammps_eta_n0, lammps_pair_coeff
+from restitution.dem.codes import base_eta_n0, lammps_contact, lammps_eta_n0, lammps_pair_coeff
 from restitution.dem.lammps import available, lammps_eps, lammps_eps_extrapolated
 from engine_case import PAIR  # noqa: E402
 
@@ -35,7 +35,7 @@ OPTIONS = [
 def _setting(normal: dict, damping: str, limit: bool) -> dict:
     """A damping that gives eps = 0.7 at 0.1 m/s (calibrated by the library), so every option is
     tested where damping matters."""
-    base = lammps_contact(PAIR, damping=damping, eta_n0=0.5 if damping in E_DAMPINGS else 1.0,
+    base = lammps_contact(PAIR, damping=damping, eta_n0=base_eta_n0(damping),
                           limit_damping=limit, **normal)
     cal = calibrate(base.alpha, base.gamma, D1=base.D1, eps=0.7, g=0.1, end=base.end)
     return {**normal, "damping": damping, "limit_damping": limit,

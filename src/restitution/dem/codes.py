@@ -75,7 +75,7 @@ from .contact import Contact
 __all__ = ["Pair", "WALL_SIZE", "tsuji_a", "lammps_contact", "lammps_pair_coeff", "liggghts_contact", "liggghts_e",
            "mercury_linear_contact", "yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
            "yade_mindlin_en", "thornton_betan", "NORMAL_MODELS", "DAMPING_MODELS", "E_DAMPINGS", "restitution_b",
-           "TSUJI_VERSION_NOTE", "LAMMPS_CHECKED", "TSUJI_SQRT2_SINCE", "LAMMPS_GRAN_STYLES", "lammps_gran_contact",
+           "base_eta_n0", "TSUJI_VERSION_NOTE", "LAMMPS_CHECKED", "TSUJI_SQRT2_SINCE", "LAMMPS_GRAN_STYLES", "lammps_gran_contact",
            "LIGGGHTS_MODELS", "LIGGGHTS_E", "LIGGGHTS_NU", "LIGGGHTS_MODULUS", "LIGGGHTS_MODEL_TYPES", "liggghts_accepts_e"]
 
 NORMAL_MODELS = ("hooke", "hertz", "hertz/material")
@@ -220,8 +220,15 @@ def _pair_inputs(pair: Pair) -> dict:
 
 
 def _damping_exponent(alpha: str, damping: str) -> str:
-    return {"velocity": "0", "mass_velocity": "0", "viscoelastic": "1/2",
-            "tsuji": "0" if alpha == "1" else "1/4", "coeff_restitution": "0" if alpha == "1" else "1/4"}[damping]
+    if damping in E_DAMPINGS:          # damping ~ sqrt(m F / delta): gamma = (alpha - 1)/2
+        return "0" if alpha == "1" else "1/4"
+    return {"velocity": "0", "mass_velocity": "0", "viscoelastic": "1/2"}[damping]
+
+
+def base_eta_n0(damping: str) -> float:
+    """An eta_n0 that ``damping`` accepts (an e in (0, 1) where it takes one), for a contact whose
+    D2 a calibration then replaces."""
+    return 0.5 if damping in E_DAMPINGS else 1.0
 
 
 def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limit_damping: bool,

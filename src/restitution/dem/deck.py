@@ -4,15 +4,17 @@ LIGGGHTS (``pair_style gran model hertz|hooke``) input scripts, for every type p
 The reader takes only what decides a head-on two-sphere contact: the contact model and its
 coefficients per type pair, the end-of-contact keyword, and each type's radius and density.
 Commands that cannot change that contact (output, regions, gravity, integrators, ...) are passed
-over; any other line is reported as not understood, one per line, and never guessed. An option
-that does change the contact but is not mapped (a cohesion model, JKR, a pair style other than
-those two), a type without radius or density, or a type pair without coefficients is refused with
+over; any other line is reported as not understood, one per line, and never guessed. LAMMPS'
+older gran/hooke, gran/hooke/history and gran/hertz/history styles give every type pair one law.
+An option that does change the contact but is not mapped (a cohesion model, JKR, another pair
+style), a type without radius or density, or a type pair without coefficients is refused with
 one line (DeckError, exit status 2 in the CLI).
 
 Flat walls (``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes and
 the faces of meshes, of the type their ``fix mesh/surface`` gives) are audited as a sphere of each
-type they act on (``group ID type ...`` or all) hitting them head-on; other walls (cylinders,
-regions, a mesh's edges and corners, older models) are named as not audited. A group holds the
+type they act on (``group ID type ...`` or all) hitting them head-on, LAMMPS' older wall models
+(hooke, hooke/history, hertz/history) with their pair style's law; other walls (cylinders,
+regions, a mesh's edges and corners) are named as not audited. A group holds the
 atoms present when it is defined (and those a later command inserts into it): a group by type
 defined before any atom exists holds none, and its wall, acting on no atom, is named as not
 audited; a LAMMPS pour or deposit into the group adds the type it pours, a LIGGGHTS insert fix
@@ -42,9 +44,9 @@ from functools import lru_cache
 from ..core.collision import StickError
 from ..core.errors import ParameterError
 from .calibrate import calibrate
-from .codes import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair,
-                    lammps_contact, lammps_eta_n0, lammps_gran_contact, liggghts_accepts_e, liggghts_contact,
-                    liggghts_e)
+from .codes import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, LIGGGHTS_E, LIGGGHTS_MODEL_TYPES,
+                    LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact, lammps_eta_n0, lammps_gran_contact,
+                    liggghts_accepts_e, liggghts_contact, liggghts_e)
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
 
@@ -448,18 +450,22 @@ _NKTV2P_ONE = ("si", "cgs", "lj", "micro", "nano")
 
 
 def _gran_style(deck, words, where, line):
-    """pair_style gran/hooke|gran/hooke/history|gran/hertz/history Kn Kt gamma_n gamma_t xmu
-    dampflag [limit_damping]: one normal law for every type pair (Kt, gamma_t, xmu and dampflag act
-    tangentially only)."""
-    if len(words) not in (8, 9) or len(words) == 9 and words[8] != "limit_damping":
-        raise DeckError(where, line, f"pair_style {words[1]} needs Kn Kt gamma_n gamma_t xmu dampflag "
-                                     "[limit_damping], as LAMMPS does")
-    if words[1] == "gran/hertz/history" and deck.units not in _NKTV2P_ONE:
-        raise DeckError(where, line, f"units {deck.units}: gran/hertz/history's Kn is converted from pressure "
-                                     f"units there, which the reader does not map ({', '.join(_NKTV2P_ONE)} are)")
+    """pair_style gran/hooke|gran/hooke/history|gran/hertz/history ...: one law for every type pair."""
     deck.code = "LAMMPS"
-    deck.gran = {"style": words[1], "k_n": _number(words[2], where, line),
-                 "gamma_n": _number(words[4], where, line), "limit_damping": len(words) == 9}
+    deck.gran = _gran_law(words[1], words[2:], deck.units, where, line)
+
+
+def _gran_law(style: str, params: list, units: str, where: str, line: str) -> dict:
+    """codes.lammps_gran_contact's keywords from an older style's Kn Kt gamma_n gamma_t xmu dampflag
+    [limit_damping] (Kt, gamma_t, xmu and dampflag act tangentially only)."""
+    if len(params) not in (6, 7) or len(params) == 7 and params[6] != "limit_damping":
+        raise DeckError(where, line, f"{style} needs Kn Kt gamma_n gamma_t xmu dampflag [limit_damping], as "
+                                     "LAMMPS does")
+    if style == "gran/hertz/history" and units not in _NKTV2P_ONE:
+        raise DeckError(where, line, f"units {units}: gran/hertz/history's Kn is converted from pressure "
+                                     f"units there, which the reader does not map ({', '.join(_NKTV2P_ONE)} are)")
+    return {"style": style, "k_n": _number(params[0], where, line), "gamma_n": _number(params[2], where, line),
+            "limit_damping": len(params) == 7}
 
 
 def _pair_coeff(deck, words, where, line, loc):
@@ -911,20 +917,16 @@ _OLDER_WALLS = ("hooke", "hooke/history", "hertz/history")
 def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list):
     """A wall of an older model (words[4]) with its Kn Kt gamma_n gamma_t xmu dampflag
     [limit_damping] before the wall style at words[k]: as _lammps_wall's result, no e typed."""
-    text, params = " ".join(words), words[5:k]
-    gran = ["pair_style", f"gran/{words[4]}", *params]
+    text = " ".join(words)
     try:
-        if len(params) not in (6, 7):
-            raise DeckError(_where(loc), text, "needs Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]")
-        probe = Deck(units=deck.units)
-        _gran_style(probe, gran, _where(loc), text)
+        law = _gran_law(f"gran/{words[4]}", words[5:k], deck.units, _where(loc), text)
     except DeckError as why:
         unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
         return None
     model = f"LAMMPS {words[4]} (older wall model), {words[k]} wall"
 
     def contact_of(pair, t):
-        return lammps_gran_contact(pair, **probe.gran), None, model, None
+        return lammps_gran_contact(pair, **law), None, model, None
     return [(None, contact_of, None)]
 
 

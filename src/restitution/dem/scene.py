@@ -22,8 +22,8 @@ import numpy as np
 from ..core.errors import ParameterError
 from ..core.exponents import as_exponents
 from ..fast.integrator import COLUMNS, collide_fast
-from .codes import (E_DAMPINGS, LIGGGHTS_E, LIGGGHTS_MODULUS, Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff,
-                    liggghts_accepts_e, liggghts_contact, liggghts_e)
+from .codes import (LIGGGHTS_E, LIGGGHTS_MODULUS, Pair, base_eta_n0, lammps_contact, lammps_eta_n0,
+                    lammps_pair_coeff, liggghts_accepts_e, liggghts_contact, liggghts_e)
 from .contact import Contact
 from .model_ladder import EVAL_TOL, SMALL_EPS, Fit, fit_rung, lammps_rungs, liggghts_rungs, scaled_eps
 from .scene_file import AtomType, Scene
@@ -108,7 +108,7 @@ def _setting(scene: Scene, c: _Contact, fit: Fit) -> dict:
                                                               f"{LIGGGHTS_E[1]}")
         return {"model": rung.normal, **mats, "e": e, "limit_force": limit}
     stiff = _stiffness(scene, *c.materials)
-    base = lammps_contact(c.pair, damping=rung.damping, eta_n0=0.5 if rung.damping in E_DAMPINGS else 1.0,
+    base = lammps_contact(c.pair, damping=rung.damping, eta_n0=base_eta_n0(rung.damping),
                           limit_damping=scene.options["limit_damping"], **stiff)
     eta = lammps_eta_n0(c.pair, rung.damping, _d2(base, fit))
     return {**stiff, "damping": rung.damping, "eta_n0": float(f"{eta:.12g}"),

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from ..core.errors import ParameterError, one_of
 from .calibrate import calibrate
-from .codes import (E_DAMPINGS, Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e,
+from .codes import (Pair, base_eta_n0, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact, liggghts_e,
                     restitution_b, thornton_betan, tsuji_a, yade_mindlin_contact, yade_mindlin_en, yade_viscel_contact,
                     yade_viscel_setting)
 from .contact import Contact
@@ -40,7 +40,7 @@ def lammps_design(pair: Pair, *, eps: float, g: float, normal: str, damping: str
                   k_n=None, E=None, nu=None) -> dict:
     """The damping of ``damping`` that gives ``eps`` at impact speed ``g``, as a pair_coeff line."""
     stiffness = {"normal": normal, "k_n": k_n, "E": E, "nu": nu}
-    base = lammps_contact(pair, damping=damping, eta_n0=0.5 if damping in E_DAMPINGS else 1.0,
+    base = lammps_contact(pair, damping=damping, eta_n0=base_eta_n0(damping),
                           limit_damping=limit_damping, **stiffness)
     cal = calibrate(base.alpha, base.gamma, D1=base.D1, eps=eps, g=g, end=base.end)
     _refuse_passing_through(cal.contact, pair, eps, g, "LAMMPS")
