@@ -329,8 +329,17 @@ def test_no_mpmath_creep_under_the_overlap_rule():
 
 
 def test_a_creep_that_defeats_the_reference_is_not_called_sticking():
-    with pytest.raises(ParameterError, match="creeping return defeated the integrator"):
-        collide("1", "1/2", 1e-10, end="overlap", rtol=1e-12)
+    """Whether Radau gets through this creep at rtol 1e-12 differs between machines (it stalls on
+    some, finishes on others): either way it must not call the contact sticking, and an answer must
+    be the limit law's to their bounds."""
+    try:
+        got = collide("1", "1/2", 1e-10, end="overlap", rtol=1e-12)
+    except ParameterError as err:
+        assert "creeping return defeated the integrator" in str(err)
+        return
+    law = restitution.epsilon(alpha="1", gamma="1/2", omega=1e-10, end="overlap", method="overlap-law")
+    assert got.end == "separation" and got.eps > 0
+    assert abs(got.eps / float(law.eps) - 1) <= got.error_bound + law.error_bound
 
 
 @pytest.mark.slow   # 5 s: the reference gets far into the creep before its Jacobian overflows
