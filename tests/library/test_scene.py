@@ -75,6 +75,24 @@ def test_numbers_in_yaml_1_2_form_are_numbers():
     assert scene.materials["glass"]["E"] == 6.3e10 and scene.types[0].radius == 1e-3
 
 
+@pytest.mark.parametrize("old, new, key", [
+    ("tolerance: 0.01", "tolerance: 0.01\ntolerance: 0.4", "tolerance"),
+    ("glass: {E: 6.3e10, nu: 0.22, density: 2500}", "glass: {E: 6.3e10, nu: 0.22, density: 2500, E: 1.0e7}", "E"),
+])
+def test_a_key_given_twice_is_refused_in_one_line_exit_2_nothing_written(tmp_path, capsys, old, new, key):
+    """PyYAML keeps the last of two equal keys: the scene ran with tolerance 0.4 where 0.01 came first."""
+    text = SMALL.read_text()
+    assert old in text
+    path = tmp_path / "twice.yaml"
+    path.write_text(text.replace(old, new, 1))
+    out_dir = tmp_path / "out"
+    status, printed = _run(["scene", str(path), "--out", str(out_dir)])
+    err = capsys.readouterr().err
+    assert status == 2 and printed == "" and not out_dir.exists(), err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    assert f"{key} = given twice" in err and "line" in err, err
+
+
 def test_types_are_numbered_in_file_order_one_per_radius():
     scene = scene_from_dict(_small())
     assert [(t.number, t.name, t.radius) for t in scene.types[:3]] == [(1, "g#1", 1e-3), (2, "g#2", 2e-3),

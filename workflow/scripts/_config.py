@@ -15,6 +15,7 @@ import jsonschema
 import yaml
 
 # one-line messages from jsonschema's errors: shared with the scene files of restitution.dem.scene_file
+from restitution.core.strict_yaml import UniqueKeyLoader
 from restitution.core.schema_lines import MAX_NAME, allowed as _allowed, field as _field, show as _show  # noqa: F401
 
 
@@ -300,20 +301,6 @@ def _expanded_nodes(node, sizes: dict) -> int:
     return sizes[id(node)]
 
 
-class _StrictLoader(yaml.SafeLoader):
-    """PyYAML's safe loader, refusing a key given twice in one mapping (it would keep the last)."""
-
-    def construct_mapping(self, node, deep=False):
-        seen = {}
-        for key_node, _ in node.value:
-            key = self.construct_object(key_node, deep=True)
-            if key in seen:
-                raise ConfigError(f"line {key_node.start_mark.line + 1}: {key} = given twice in one mapping "
-                                  f"(also on line {seen[key] + 1}): each key at most once")
-            seen[key] = key_node.start_mark.line
-        return super().construct_mapping(node, deep)
-
-
 def read_config_file(path) -> dict:
     """config.yaml as a mapping, or ConfigError with one line: a YAML syntax error with its line
     (Snakemake's own message is two lines and names none), a missing, empty, non-UTF-8 or oversized
@@ -339,7 +326,7 @@ def read_config_file(path) -> dict:
         if root is not None and _expanded_nodes(root, {}) > MAX_NODES:
             raise ConfigError(f"{path}: its YAML aliases (*name) expand to more than {MAX_NODES} values: "
                               "not a configuration")
-        data = yaml.load(text, Loader=_StrictLoader)  # noqa: S506 - a SafeLoader subclass
+        data = yaml.load(text, Loader=UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
     except ConfigError as err:
         raise ConfigError(f"{path}, {err}" if str(err).startswith("line ") else str(err)) from None
     except yaml.YAMLError as err:

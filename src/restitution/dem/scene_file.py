@@ -104,9 +104,12 @@ class Scene:
 def _loader():
     import yaml
 
-    class Loader(yaml.SafeLoader):
-        """YAML 1.2 numbers: PyYAML (YAML 1.1) reads 6.3e10 or 1e-3 as text, which the schema would
-        refuse as 'not a number' though every modeller means a number."""
+    from ..core.strict_yaml import UniqueKeyLoader
+
+    class Loader(UniqueKeyLoader):
+        """A key given twice is refused (PyYAML would keep the last: a tolerance or a material's E
+        replaced without a word). YAML 1.2 numbers: PyYAML (YAML 1.1) reads 6.3e10 or 1e-3 as
+        text, which the schema would refuse as 'not a number' though every modeller means one."""
 
     Loader.add_implicit_resolver(
         "tag:yaml.org,2002:float",
