@@ -138,12 +138,36 @@ def scene_table(res: dict) -> str:
     return "\n".join(head + rows + ["", "# input lines"] + res["input_lines"]) + "\n"
 
 
+def _check_writable_dir(name: str, path: str) -> None:
+    """Refuse before a long computation, not after it, a directory that cannot be written.
+
+    A probe file is made in ``path`` or in its nearest existing ancestor (and removed at once):
+    permission bits alone do not tell, e.g. for root or on a read-only file system.
+    """
+    import tempfile
+    from pathlib import Path
+
+    here = Path(path).absolute()
+    while not here.exists() and here != here.parent:
+        here = here.parent
+    if not here.is_dir():
+        raise ParameterError(name, path, f"cannot be a directory: {here} is a file")
+    try:
+        with tempfile.TemporaryFile(dir=here):
+            pass
+    except OSError as exc:
+        raise ParameterError(name, path, f"cannot be written ({exc.strerror})") from None
+
+
 def _run_scene(args, out) -> int:
     from pathlib import Path
 
     from .dem.scene import answer_scene
     from .dem.scene_file import read_scene
-    res = answer_scene(read_scene(args.file))
+    scene = read_scene(args.file)
+    if args.out:
+        _check_writable_dir("out", args.out)
+    res = answer_scene(scene)
     if any((c.get("setting") or {}).get("damping") == "tsuji" for c in res["contacts"]):
         from .dem.codes import TSUJI_VERSION_NOTE
         print(f"restitution scene: note: {TSUJI_VERSION_NOTE}", file=sys.stderr)
@@ -151,10 +175,13 @@ def _run_scene(args, out) -> int:
     table = scene_table(res)
     if args.out:   # everything computed first: a refused scene writes nothing
         d = Path(args.out)
-        d.mkdir(parents=True, exist_ok=True)
-        (d / "scene.json").write_text(text)
-        (d / "input.lammps").write_text("\n".join(res["input_lines"]) + "\n")
-        (d / "table.txt").write_text(table)
+        try:
+            d.mkdir(parents=True, exist_ok=True)
+            (d / "scene.json").write_text(text)
+            (d / "input.lammps").write_text("\n".join(res["input_lines"]) + "\n")
+            (d / "table.txt").write_text(table)
+        except OSError as exc:
+            raise ParameterError("out", args.out, f"cannot be written ({exc.strerror})") from None
     out.write(text if args.json else table)
     return 0 if res["met"] else 1
 
@@ -177,7 +204,10 @@ def _per_type(name: str, items) -> dict:
         t, _, value = item.partition("=")
         if not t.isdigit() or int(t) < 1:
             raise ParameterError(name, item, "give TYPE=VALUE with an atom type >= 1, e.g. 1=0.001")
-        out[int(t)] = number_argument(value)
+        try:
+            out[int(t)] = number_argument(value)
+        except argparse.ArgumentTypeError:
+            raise ParameterError(name, item, "the value must be a finite number > 0, e.g. 1=0.001") from None
         if not math.isfinite(out[int(t)]) or out[int(t)] <= 0:
             raise ParameterError(name, item, "the value must be a finite number > 0")
     return out

@@ -93,6 +93,21 @@ def test_a_key_given_twice_is_refused_in_one_line_exit_2_nothing_written(tmp_pat
     assert f"{key} = given twice" in err and "line" in err, err
 
 
+@pytest.mark.parametrize("where", ["a-file/out", "a-file"])
+def test_an_out_directory_that_cannot_be_written_is_refused_before_any_work(tmp_path, capsys, monkeypatch, where):
+    """--out under a file ended in a traceback after the whole computation; now one line, first."""
+    (tmp_path / "a-file").write_text("")
+    import restitution.dem.scene as scene_module
+
+    def no_work(scene):
+        raise AssertionError("the scene was computed before --out was checked")
+    monkeypatch.setattr(scene_module, "answer_scene", no_work)
+    status, printed = _run(["scene", str(SMALL), "--out", str(tmp_path / where)])
+    err = capsys.readouterr().err
+    assert status == 2 and printed == "" and len(err.strip().splitlines()) == 1, err
+    assert err.startswith("restitution: out = ") and "Traceback" not in err, err
+
+
 def test_types_are_numbered_in_file_order_one_per_radius():
     scene = scene_from_dict(_small())
     assert [(t.number, t.name, t.radius) for t in scene.types[:3]] == [(1, "g#1", 1e-3), (2, "g#2", 2e-3),

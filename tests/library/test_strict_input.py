@@ -34,6 +34,18 @@ def test_the_cli_takes_only_what_the_readme_documents(argv, field, capsys):
     assert len(err) == 1 and field in err[0], err
 
 
+@pytest.mark.parametrize("flag, item", [
+    ("--radius", "1=abc"), ("--density", "1="), ("--radius", "1=0.001=2"), ("--density", "2=nan"),
+])
+def test_a_deck_type_value_that_is_no_number_is_one_line_exit_2(tmp_path, capsys, flag, item):
+    """These ended in an argparse.ArgumentTypeError traceback, exit status 1."""
+    deck = tmp_path / "in.deck"
+    deck.write_text("units si\n")
+    assert main(["deck", str(deck), "--g", "1", flag, item], io.StringIO()) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and f"{flag.lstrip('-')} = '{item}'" in err[0] and "Traceback" not in err[0], err
+
+
 def test_documented_forms_still_work(capsys):
     out = io.StringIO()
     assert main(["eps", "--alpha", "1.5", "--gamma", "1", "--omega", "5e-1", "2.5E+0", "--no-build"], out) == 0
