@@ -322,3 +322,20 @@ def test_a_damaged_cache_entry_is_reported_once_and_not_again(tmp_path, damage):
     lad.evaluate([0.3, 3.0], tol=1e-9, method="master")
     assert path.exists() and "removed" not in stream.getvalue()
     json.loads(path.read_text())
+
+
+def test_a_cache_location_that_is_a_file_is_one_note_not_one_per_entry(tmp_path):
+    """RESTITUTION_CACHE set to a file printed eight "damaged ... could not remove it" lines for one
+    eps call; now one note naming the file, and the answer."""
+    import subprocess
+    import sys
+
+    not_a_dir = tmp_path / "cache-file"
+    not_a_dir.write_text("")
+    env = {**os.environ, "RESTITUTION_CACHE": str(not_a_dir / "sub")}
+    run = subprocess.run([sys.executable, "-m", "restitution.cli", "eps", "--alpha", "3/2", "--gamma", "1",
+                          "--omega", "0.1", "1", "10"], capture_output=True, text=True, env=env, timeout=120)
+    assert run.returncode == 0 and "eps" in run.stdout, run.stderr
+    notes = run.stderr.strip().splitlines()
+    assert len(notes) == 1 and f"{not_a_dir} is a file, not a directory" in notes[0], notes
+    assert not_a_dir.read_text() == ""

@@ -183,7 +183,17 @@ def test_unwritable_cache_is_not_fatal(tmp_path):
     blocker.write_text("not a directory")
     err = io.StringIO()
     assert cache.get_or_build("x", lambda: {"ok": True}, directory=blocker / "sub", stream=err) == {"ok": True}
-    assert "could not write the cache" in err.getvalue()
+    assert "is a file, not a directory: nothing is read from or written to the cache" in err.getvalue()
+
+
+def test_a_cache_write_that_fails_is_not_fatal(tmp_path, monkeypatch):
+    """A full or read-only disk: build, use, say so on stderr."""
+    def full(path, data):
+        raise OSError(28, "No space left on device")
+    monkeypatch.setattr(cache, "save_json_atomic", full)
+    err = io.StringIO()
+    assert cache.get_or_build("x", lambda: {"ok": True}, directory=tmp_path / "c", stream=err) == {"ok": True}
+    assert "could not write the cache" in err.getvalue() and "No space left" in err.getvalue()
 
 
 def test_cache_dir_from_environment(monkeypatch, tmp_path):

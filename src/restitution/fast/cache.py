@@ -75,6 +75,8 @@ def _load_sealed(path: Path, stream=None) -> tuple[dict, str] | None:
             stored = json.load(fh)
     except FileNotFoundError:
         return None
+    except NotADirectoryError:   # the cache's place is a file (load_or_discard says so once)
+        return None
     except (OSError, ValueError):
         stored = None
     try:
@@ -117,11 +119,33 @@ def discard_damaged(path: Path, stream=None, why: str = "is damaged or was chang
     try:
         os.unlink(path)
         fate = "removed; it is rebuilt when a request needs it"
-    except FileNotFoundError:
+    except (FileNotFoundError, NotADirectoryError):
         return
     except OSError as exc:
         fate = f"not used (could not remove it: {exc.strerror})"
     print(f"restitution: the cache file {path} {why}: {fate}", file=stream, flush=True)
+
+
+_NOTED_NOT_A_DIRECTORY: set = set()
+
+
+def _not_a_directory(directory: Path, stream=None) -> bool:
+    """True where the cache's place, or a folder above it, is a file (RESTITUTION_CACHE set to a
+    file, say): then nothing can be cached there, and one note per process says so, instead of
+    a "damaged" note for every entry asked for."""
+    here = Path(directory)
+    if here.is_dir():
+        return False
+    while not here.exists() and here != here.parent:
+        here = here.parent
+    if here.is_dir():
+        return False                    # not made yet: the first build makes it
+    if here not in _NOTED_NOT_A_DIRECTORY:
+        _NOTED_NOT_A_DIRECTORY.add(here)
+        print(f"restitution: note: the cache location {here} is a file, not a directory: nothing is read "
+              f"from or written to the cache (set {ENV_VAR} to a directory)",
+              file=sys.stderr if stream is None else stream, flush=True)
+    return True
 
 
 _SOURCE_DIGEST: list = []
@@ -151,6 +175,8 @@ def load_or_discard(path: Path, stream=None, valid: Callable[[dict], bool] = lam
     """The stored dict if it is sealed and ``valid`` (or marked as having passed ``valid`` in this
     very form, see the module docstring); a file that is not is removed with one note
     (:func:`discard_damaged`), so the next call finds nothing and says nothing."""
+    if _not_a_directory(Path(path).parent, stream):
+        return None
     quiet = io.StringIO()
     sealed = _load_sealed(path, quiet)
     if sealed is None:
@@ -225,13 +251,16 @@ def get_or_build(key: str, build: Callable[[], dict], *, valid: Callable[[dict],
         data = load_or_discard(path, stream, valid, remember=remember)
         if data is not None:
             return data
+        cacheable = not _not_a_directory(path.parent, stream)
         if announce:
             about = "" if estimate is None else f"about {estimate:.0f} s, "
-            print(f"restitution: building {label} ({about}cached in {path}) ...", file=stream, flush=True)
+            where = f"cached in {path}" if cacheable else "not cached"
+            print(f"restitution: building {label} ({about}{where}) ...", file=stream, flush=True)
         t0 = time.perf_counter()
         data = build()
         try:
-            save_json_atomic(path, data)
+            if cacheable:
+                save_json_atomic(path, data)
         except OSError as exc:
             print(f"restitution: note: could not write the cache ({exc}); using the result without "
                   "caching it", file=stream, flush=True)
