@@ -179,20 +179,22 @@ def _guarded(tree: Path, *cmd: str) -> subprocess.Popen:
                             env={**ENV, "PIPELINE_MIN_FREE_MB": "0", "PYTHONPATH": str(ROOT / "workflow/scripts")})
 
 
-def test_the_lock_lives_as_long_as_the_build_even_when_the_wrapper_is_killed(tmp_path):
-    """kill -9 of the wrapper: the build it started still holds the lock, so a second run waits."""
-    build = _guarded(tmp_path, "sleep", "60")
+def test_the_lock_lives_as_long_as_the_build_and_a_killed_wrapper_stops_the_build(tmp_path):
+    """kill -9 of the wrapper (as of make's whole process group: the build runs in a session of its
+    own, which that kill does not reach) used to leave the build running, writing results/ for a
+    user who had killed it. Now the build stops within seconds, and only then is the lock free."""
+    build = _guarded(tmp_path, "sh", "-c", "sleep 60; echo finished > after-the-kill")
     try:
         assert wait_for(lambda: any("sleep 60" in cmdline(p) for p in descendants(build.pid)), 20)
         sleeper = next(p for p in descendants(build.pid) if "sleep 60" in cmdline(p))
+        assert preflight.acquire(tmp_path, 0) is None, "the build does not hold the lock"
         build.kill()
         build.wait()
-        assert preflight.acquire(tmp_path, 0) is None, "the lock died with the wrapper"
-        os.kill(sleeper, signal.SIGKILL)
-        assert wait_for(lambda: _no_process_left([sleeper]), 10)
+        assert wait_for(lambda: _no_process_left([sleeper]), 10), "the build outlived its killed wrapper"
         fd = preflight.acquire(tmp_path, 5)
         assert fd is not None, "the lock outlived the build"
         os.close(fd)
+        assert not (tmp_path / "after-the-kill").exists()
     finally:
         stop_all(build)
 
@@ -437,7 +439,10 @@ def test_a_damaged_or_deleted_output_is_rebuilt_never_used(built, tmp_path):
     assert "Nothing to be done" not in snakemake_dry_run(tree)
 
     check = make(tree, "verify")
-    assert check.returncode != 0
+    assert check.returncode == 2     # make's status for a failed recipe, as the README says
+    script = subprocess.run([str(ROOT / ".venv/bin/python"), str(ROOT / "workflow/scripts/common/atomic.py"),
+                             "verify", str(tree)], capture_output=True, text=True)
+    assert script.returncode == 1    # the script's own, as the README says
     for rel, what in (("results/kim/reference/eps_curve.csv", "changed"), ("results/kim/connection/fit.json", "changed"),
                       ("results/kim/series/forward.json", "missing"), ("results/kim/claims.csv", "missing")):
         assert f"verify: {rel}: {what}" in check.stdout, check.stdout

@@ -80,7 +80,7 @@ def _gone(procs, timeout: float) -> bool:
     return not alive
 
 
-@pytest.mark.parametrize("how", ["ctrl-c", "sigterm-to-make"])
+@pytest.mark.parametrize("how", ["ctrl-c", "sigterm-to-make", "sigkill-to-make's-group"])
 @pytest.mark.parametrize("target", ["paper", "outputs"])
 def test_stopping_make_stops_the_whole_build(tmp_path, how, target):
     tree = _tree(tmp_path)
@@ -90,8 +90,10 @@ def test_stopping_make_stops_the_whole_build(tmp_path, how, target):
         t0 = time.monotonic()
         if how == "ctrl-c":
             os.killpg(make.pid, signal.SIGINT)       # what the terminal sends on Ctrl-C
-        else:
+        elif how == "sigterm-to-make":
             os.kill(make.pid, signal.SIGTERM)        # `kill <make's pid>`
+        else:   # `kill -9 -<pgid>`: make, its shell and the guard die at once; the build must follow
+            os.killpg(make.pid, signal.SIGKILL)
         make.wait(timeout=60)
         # the guard stopped the running job itself; Snakemake alone waits for it until the guard's
         # grace runs out and it is killed (which the timing below would still let pass)

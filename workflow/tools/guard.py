@@ -5,9 +5,12 @@ for every refusal of bad input in this project), 75 (lock not had in time), 128+
 
 ``--watch PID`` (make's pid, which the Makefile passes): make killed by SIGTERM dies at once and
 leaves its recipe's processes running; the guard notices the next half second and stops the build
-as if it had received the SIGTERM itself. Ctrl-C reaches make, the shell and the guard together
-(one process group); the guard passes it to Snakemake, which runs in a session of its own, and
-stops Snakemake's running jobs, so that the build ends within seconds.
+as if it had received the SIGTERM itself. The guard itself killed (kill -9 of make's process
+group, which does not reach Snakemake's own session) stops the build too, through a watcher
+process beside it: a build the user killed must not go on writing results/. Ctrl-C reaches make,
+the shell and the guard together (one process group); the guard passes it to Snakemake, which
+runs in a session of its own, and stops Snakemake's running jobs, so that the build ends within
+seconds.
 """
 
 from __future__ import annotations
@@ -42,8 +45,40 @@ def _alive(pid: int | None) -> bool:
     return True
 
 
+#: Beside the build, in a session of its own so that a SIGKILL to make's process group does not
+#: reach it: once the guard is gone (killed: it cannot forward anything then), it stops the build,
+#: which runs in its own session and would otherwise go on writing results/ for the user who
+#: killed it. SIGTERM to the build's whole process group (Snakemake and its jobs), SIGKILL after
+#: GRACE seconds. The guard ends it when the build ends as usual.
+_ORPHAN_WATCH = """
+import os, signal, sys, time
+build, guard, grace = int(sys.argv[1]), int(sys.argv[2]), float(sys.argv[3])
+while os.getppid() == guard:
+    time.sleep(0.2)
+try:
+    os.killpg(build, signal.SIGTERM)
+    end = time.monotonic() + grace
+    while time.monotonic() < end:
+        time.sleep(0.2)
+        os.killpg(build, 0)
+    os.killpg(build, signal.SIGKILL)
+except ProcessLookupError:
+    pass
+"""
+
+
 def run(cmd: list[str], tree: Path, lock_fd: int, watch: int | None = None) -> int:
     child = subprocess.Popen(cmd, cwd=tree, start_new_session=True, pass_fds=(lock_fd,))
+    watcher = subprocess.Popen([sys.executable, "-c", _ORPHAN_WATCH, str(child.pid), str(os.getpid()), str(GRACE)],
+                               start_new_session=True, stdin=subprocess.DEVNULL)
+    try:
+        return _wait(child, watch)
+    finally:
+        watcher.kill()
+        watcher.wait()
+
+
+def _wait(child: subprocess.Popen, watch: int | None) -> int:
     received = []
 
     def forward(signum, _frame):
