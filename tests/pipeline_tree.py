@@ -92,6 +92,10 @@ def digests(tree: Path) -> dict[str, str]:
     return out
 
 
+#: Seconds the shared clean build may take before every test that needs it fails with that reason.
+BUILD_TIMEOUT = float(os.environ.get("PIPELINE_BUILD_TIMEOUT", "900"))
+
+
 def shared_dir(base: Path) -> Path:
     """A directory every pytest-xdist worker of this test run shares (this session's own without xdist)."""
     run = os.environ.get("PYTEST_XDIST_TESTRUNUID")
@@ -112,7 +116,18 @@ def built_tree(base: Path) -> Path:
             if failed.exists():
                 raise AssertionError(failed.read_text())
             if not ok.exists():
-                proc = make(fresh_tree(tree), "paper")
+                # Whatever stops this build is written down for every later test and worker: a
+                # timeout left the tree behind, and each of them failed on it with FileExistsError
+                # instead of reading why (48 errors on a loaded machine).
+                try:
+                    proc = make(fresh_tree(tree), "paper", timeout=BUILD_TIMEOUT)
+                except subprocess.TimeoutExpired:
+                    failed.write_text(f"the shared clean build (make paper) did not finish within {BUILD_TIMEOUT:g} s "
+                                      "(a loaded machine? PIPELINE_BUILD_TIMEOUT=S gives it longer)")
+                    raise AssertionError(failed.read_text()) from None
+                except Exception as err:
+                    failed.write_text(f"the shared clean build could not start: {type(err).__name__}: {err}")
+                    raise AssertionError(failed.read_text()) from None
                 if proc.returncode != 0:
                     failed.write_text(f"clean build failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
                     raise AssertionError(failed.read_text())

@@ -459,3 +459,20 @@ def snakemake_dry_run(tree: Path) -> str:
     proc = subprocess.run([str(ROOT / ".venv/bin/snakemake"), "outputs", "--dry-run", "--cores", "1"], cwd=tree,
                           env=ENV, capture_output=True, text=True)
     return proc.stdout + proc.stderr
+
+
+# ------------------------------------------------------------------------------------ the test harness
+def test_a_shared_build_that_times_out_is_one_clear_error_for_every_test(tmp_path, monkeypatch):
+    """A shared build past its timeout left its tree behind; every later test then failed with
+    FileExistsError on session-build (48 errors on a loaded machine) instead of saying why."""
+    import pipeline_tree
+
+    def slow_make(tree, target="outputs", *extra, env=None, timeout=900):
+        raise subprocess.TimeoutExpired(["make", target], timeout)
+    monkeypatch.delenv("PYTEST_XDIST_TESTRUNUID", raising=False)   # this test's own shared dir
+    monkeypatch.setattr(pipeline_tree, "_BUILT", {})
+    monkeypatch.setattr(pipeline_tree, "fresh_tree", lambda tree: tree.mkdir() or tree)
+    monkeypatch.setattr(pipeline_tree, "make", slow_make)
+    for _ in range(2):   # the build's test, then any later one
+        with pytest.raises(AssertionError, match="did not finish within"):
+            pipeline_tree.built_tree(tmp_path)
