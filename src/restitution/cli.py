@@ -138,6 +138,11 @@ def scene_table(res: dict) -> str:
     return "\n".join(head + rows + ["", "# input lines"] + res["input_lines"]) + "\n"
 
 
+#: A scene with more contacts than this says its size before it starts (a 200-type scene has
+#: 20,100 type pairs and writes tens of MB).
+LARGE_SCENE = 1000
+
+
 def _check_writable_dir(name: str, path: str) -> None:
     """Refuse before a long computation, not after it, a directory that cannot be written.
 
@@ -162,12 +167,18 @@ def _check_writable_dir(name: str, path: str) -> None:
 def _run_scene(args, out) -> int:
     from pathlib import Path
 
-    from .dem.scene import answer_scene
+    from .dem.scene import answer_scene, contact_count
     from .dem.scene_file import read_scene
     scene = read_scene(args.file)
     if args.out:
         _check_writable_dir("out", args.out)
-    res = answer_scene(scene)
+    n = contact_count(scene)
+    if n > LARGE_SCENE:
+        # measured: about 2.2 kB of JSON per contact, and the answer is held in memory until written
+        print(f"restitution scene: {n} contacts ({len(scene.types)} atom types, {len(scene.walls)} wall"
+              f"{'' if len(scene.walls) == 1 else 's'}), each "
+              f"answered and listed: about {n * 2.2e-3:.0f} MB of JSON; progress follows", file=sys.stderr, flush=True)
+    res = answer_scene(scene, progress=_Progress("scene", "contacts", 1.0))
     if any((c.get("setting") or {}).get("damping") == "tsuji" for c in res["contacts"]):
         from .dem.codes import TSUJI_VERSION_NOTE
         print(f"restitution scene: note: {TSUJI_VERSION_NOTE}", file=sys.stderr)
@@ -421,10 +432,46 @@ def _write_json(data, out) -> None:
     out.write("\n")
 
 
+class _Progress:
+    """A long computation's price on stderr while it runs: past a few seconds it says how far it is
+    and about how long it takes in all, then again every half minute. ``power``: how the cost of the
+    first k of n steps grows (k^power), so the estimate is elapsed * (n/k)^power."""
+
+    FIRST, EVERY = 3.0, 30.0
+
+    def __init__(self, label: str, steps: str, power: float = 1.0, note: str = "", stream=None):
+        import time
+        self.clock = time.monotonic
+        self.start = self.clock()
+        self.next = self.start + self.FIRST
+        self.label, self.steps, self.power, self.note, self.stream = label, steps, power, note, stream
+
+    def __call__(self, done: int, total: int) -> None:
+        now = self.clock()
+        if now < self.next or done >= total:
+            return
+        self.next = now + self.EVERY
+        elapsed = now - self.start
+        whole = elapsed * (total / done) ** self.power
+        print(f"restitution {self.label}: {done} of {total} {self.steps} after {elapsed:.0f} s; about "
+              f"{_duration(whole)} in all{self.note}", file=self.stream or sys.stderr, flush=True)
+
+
+def _duration(seconds: float) -> str:
+    if seconds < 90:
+        return f"{seconds:.0f} s"
+    if seconds < 5400:
+        return f"{seconds / 60:.0f} min"
+    return f"{seconds / 3600:.1f} h"
+
+
 def _run_series(args, out) -> None:
     from .core.series import perturbation_series
     ps = perturbation_series(args.alpha, args.gamma, args.omega_order, args.max_power,
-                             "inverse" if args.inverse else "forward")
+                             "inverse" if args.inverse else "forward",
+                             # the first k powers cost about k^3.5 (k^2.7 to k^4.2 measured between pairs)
+                             progress=_Progress("series", "powers of tau", 3.5,
+                                                " (an estimate, good to a factor of about two)"))
     _report_approximation(args)
     data = ps.as_dict()
     if args.json:

@@ -108,6 +108,19 @@ def test_an_out_directory_that_cannot_be_written_is_refused_before_any_work(tmp_
     assert err.startswith("restitution: out = ") and "Traceback" not in err, err
 
 
+def test_a_large_scene_says_its_size_before_it_starts_and_its_progress(capsys, monkeypatch):
+    """A 200-type scene ran for minutes and wrote 43 MB without a word; its size is now said first
+    (here the threshold is lowered to the small scene's 27 contacts), then how far it is."""
+    from restitution import cli
+    monkeypatch.setattr(cli, "LARGE_SCENE", 20)
+    monkeypatch.setattr(cli._Progress, "FIRST", 0.0)
+    status, printed = _run(["scene", str(SMALL)])
+    err = capsys.readouterr().err.splitlines()
+    assert status in (0, 1) and printed, err
+    assert err[0].startswith("restitution scene: 27 contacts (6 atom types, 1 wall)") and "MB of JSON" in err[0], err
+    assert any(line.startswith("restitution scene: 1 of 27 contacts after") for line in err[1:]), err
+
+
 def test_types_are_numbered_in_file_order_one_per_radius():
     scene = scene_from_dict(_small())
     assert [(t.number, t.name, t.radius) for t in scene.types[:3]] == [(1, "g#1", 1e-3), (2, "g#2", 2e-3),

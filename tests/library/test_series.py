@@ -138,3 +138,24 @@ def test_bad_arguments_name_the_field(kwargs, field):
     with pytest.raises(ParameterError) as info:
         perturbation_series(**kwargs)
     assert info.value.field == field
+
+
+def test_a_long_derivation_says_its_price_on_stderr(capsys, monkeypatch):
+    """series --omega-order 50 --max-power 200 ran for minutes without a word; now the CLI says how
+    far it is and about how long it takes (here forced from the first power on)."""
+    import io
+
+    from restitution import cli
+    monkeypatch.setattr(cli._Progress, "FIRST", 0.0)
+    assert cli.main(["series", "--alpha", "3/2", "--gamma", "1", "--omega-order", "2", "--max-power", "8"],
+                    io.StringIO()) == 0
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "powers of tau after" in err[0] and "in all" in err[0], err
+
+
+def test_the_progress_hook_sees_every_power_and_changes_nothing():
+    seen = []
+    got = perturbation_series("3/2", "1/4", 3, 6, progress=lambda done, total: seen.append((done, total)))
+    total = seen[0][1]
+    assert [d for d, _ in seen] == list(range(1, total + 1)) and all(t == total for _, t in seen)
+    assert got.as_dict() == perturbation_series("3/2", "1/4", 3, 6).as_dict()

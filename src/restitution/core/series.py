@@ -66,7 +66,13 @@ def _power_series_power(y: list[_Poly], exponent: Fraction, k: int, w: list[_Pol
 @lru_cache(maxsize=64)
 def _coefficients(alpha: Fraction, gamma: Fraction, sign: int, omega_order: int,
                   max_index: int) -> tuple[tuple[Fraction, ...], ...]:
-    """C[n][k] for n <= omega_order and k <= max_index (powers tau^(k/p))."""
+    """C[n][k] for n <= omega_order and k <= max_index (powers tau^(k/p)), kept for reuse."""
+    return _derive(alpha, gamma, sign, omega_order, max_index)
+
+
+def _derive(alpha: Fraction, gamma: Fraction, sign: int, omega_order: int, max_index: int,
+            progress=None) -> tuple[tuple[Fraction, ...], ...]:
+    """C[n][k] for n <= omega_order and k <= max_index; ``progress(k, total)`` after each power."""
     p = math.lcm(alpha.denominator, gamma.denominator)
     qa, qg = int(alpha * p), int(gamma * p)
     N = omega_order
@@ -119,6 +125,8 @@ def _coefficients(alpha: Fraction, gamma: Fraction, sign: int, omega_order: int,
         # y and the power series only ever read C below index k + 2p, so the
         # views taken so far stay valid when C[target] is filled in.
         C[target] = [r * factor for r in rhs]
+        if progress is not None:
+            progress(k + 1, max_index - 2 * p + 1)
 
     return tuple(tuple(C[k][n] for k in range(max_index + 1)) for n in range(N + 1))
 
@@ -231,8 +239,13 @@ class PerturbationSeries:
 
 
 def perturbation_series(alpha, gamma, omega_order: int = 4, max_power=11,
-                        direction: str = "forward") -> PerturbationSeries:
-    """Exact series of the forward or inverse collision up to Omega^omega_order and tau^max_power."""
+                        direction: str = "forward", progress=None) -> PerturbationSeries:
+    """Exact series of the forward or inverse collision up to Omega^omega_order and tau^max_power.
+
+    The cost grows about as the third to fourth power of ``max_power`` (the rationals grow too) and
+    linearly in ``omega_order``: the largest accepted sizes take minutes. ``progress(done, total)``,
+    if given, is called after each power of tau is derived (then the result is not kept for reuse).
+    """
     ex = as_exponents(alpha, gamma)
     if direction not in DIRECTIONS:
         raise ParameterError("direction", direction, "must be 'forward' or 'inverse'")
@@ -241,5 +254,6 @@ def perturbation_series(alpha, gamma, omega_order: int = 4, max_power=11,
     max_index = math.floor(max_power * ex.p)
     if max_index > MAX_INDEX:
         raise ParameterError("max_power", max_power, f"must be at most {Fraction(MAX_INDEX, ex.p)} for p = {ex.p}")
-    coeffs = _coefficients(ex.alpha, ex.gamma, DIRECTIONS[direction], int(omega_order), max_index)
+    args = (ex.alpha, ex.gamma, DIRECTIONS[direction], int(omega_order), max_index)
+    coeffs = _coefficients(*args) if progress is None else _derive(*args, progress=progress)
     return PerturbationSeries(ex, direction, int(omega_order), max_power, coeffs)

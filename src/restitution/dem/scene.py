@@ -240,8 +240,16 @@ def _time_step(scene: Scene, fit: Fit, end: str, speeds, eps, tau_c) -> list:
     return [(i, float(T[i] / dt)) for i, _ in study]
 
 
-def answer_scene(scene: Scene) -> dict:
-    """The scene's answer as a JSON-ready dict (see the README's "Scenes")."""
+def contact_count(scene: Scene) -> int:
+    """How many contacts :func:`answer_scene` answers: every pair of atom types, and every type on
+    every wall (what a scene's price grows with: its time and the size of its answer)."""
+    n = len(scene.types)
+    return n * (n + 1) // 2 + n * len(scene.walls)
+
+
+def answer_scene(scene: Scene, progress=None) -> dict:
+    """The scene's answer as a JSON-ready dict (see the README's "Scenes"); ``progress(done, total)``,
+    if given, is called after each contact."""
     if scene.code == "liggghts":
         end = "force" if scene.options["limitForce"] else "overlap"
         rungs = liggghts_rungs(scene.options["model"])
@@ -272,7 +280,9 @@ def answer_scene(scene: Scene) -> dict:
     walls = _wall_types(scene) if scene.code == "liggghts" else {}
     out = []
     pending: dict = {}
-    for c in contacts:
+    for done, c in enumerate(contacts, 1):
+        if progress is not None:
+            progress(done, len(contacts))
         a = answers[frozenset(c.materials)]
         row = {"a": c.a.name, "b": c.b.name if c.b is not None else f"wall:{c.wall}",
                "types": [c.a.number, c.b.number if c.b is not None else walls.get(c.wall, "wall")],
