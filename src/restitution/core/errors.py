@@ -37,7 +37,7 @@ def real_array(field: str, value, allowed: str):
         raw = np.asarray(value)
         if raw.dtype.kind not in "iuf":
             raise TypeError
-        return raw.astype(float)
+        return raw.astype(float, copy=False)   # a float array is used as it is: no copy per call
     except (TypeError, ValueError):
         raise ParameterError(field, value, allowed) from None
 

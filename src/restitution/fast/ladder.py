@@ -165,8 +165,10 @@ def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
     if arr.size == 0:
         raise ParameterError(field_name, omega, allowed)
     # Subnormal or near-overflow Omega leaves no headroom for the expansions' powers of Omega.
-    bad = ~(np.isfinite(arr) & (arr >= lo) & (arr <= hi))
-    if np.any(bad):
+    # Two reductions decide it for the whole array (a NaN makes both comparisons fail); the
+    # elementwise search for the first bad value runs only when there is one.
+    if not (np.min(arr) >= lo and np.max(arr) <= hi):
+        bad = ~(np.isfinite(arr) & (arr >= lo) & (arr <= hi))
         raise ParameterError(field_name, float(arr[bad].flat[0]), allowed)
     return arr
 

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Any, Callable, Mapping
 
 import numpy as np
@@ -115,11 +116,12 @@ class Request:
     builds: Mapping[str, Any] = field(default_factory=dict)
     stream: Any = None
 
-    @property
+    # Every rung's quote asks for the range: one pass over the Omegas per request, not per rung.
+    @cached_property
     def lo(self) -> float:
         return float(np.min(self.omega))
 
-    @property
+    @cached_property
     def hi(self) -> float:
         return float(np.max(self.omega))
 

@@ -45,7 +45,12 @@ class Highprec(Rung):
         return None
 
     def price(self, req):
-        return highprec_cost(req.omega, highprec_digits(req.tol), req.rule == "overlap")
+        # From the range's ends, not every point: a quote must not cost a pass over a million
+        # Omegas for a rung that is almost never chosen (it was a fifth of an epsilon call). The
+        # per-point cost is monotone in Omega, so the mean of its two ends times n lies between
+        # the cheapest and the dearest point's.
+        ends = highprec_cost(np.array([req.lo, req.hi]), highprec_digits(req.tol), req.rule == "overlap")
+        return ends / 2.0 * req.n
 
     def bound(self, req, built):
         d = highprec_digits(req.tol)
