@@ -81,21 +81,25 @@ def contact_times(omega: float) -> tuple[float, float]:
     return tau_b, tau_c
 
 
-def dashpot_collision(omega, end: str = "force") -> Collision:
+def dashpot_collision(omega, end: str = "force", *, excess: float | None = None) -> Collision:
     """The forward collision of the linear dashpot, exact; same fields as collision.collide().
 
     ``rtol`` is 0.0: nothing is integrated. ``end``: the end-of-contact rule (results.END_RULES);
     "overlap" needs Omega > 1/4 (otherwise the bodies never separate: ParameterError).
+    ``excess``: Omega - 1/4 where the caller knows it better than ``omega - 0.25`` of the rounded
+    ``omega`` (core.exact_family's (gamma+1) Omega - 1/4, formed exactly): the overlap rule's half
+    period pi / sqrt(Omega - 1/4) amplifies an error in it without bound near Omega = 1/4.
     """
     omega = require_positive_finite("omega", omega)
     rule = end_rule(end)
     tau_b, tau_c = contact_times(omega)
     x_b = math.exp(-0.5 * tau_b) / math.sqrt(omega)
     if rule == "overlap":
-        if omega <= 0.25:
+        z = omega - 0.25 if excess is None else float(excess)
+        if not z > 0:
             raise ParameterError("omega", omega, "must be > 1/4 under the overlap rule: an overdamped "
                                  "dashpot never returns to x = 0 (the bodies stick)")
-        tau_c = math.pi / math.sqrt(omega - 0.25)
+        tau_c = math.pi / math.sqrt(z)
         x_c, how = 0.0, "separation"
     eps = math.exp(-0.5 * tau_c)
     if rule == "force":
