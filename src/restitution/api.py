@@ -41,9 +41,10 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
 
     ``end="overlap"`` (contact lasts until the overlap returns to 0, as in LAMMPS without
     limit_damping) is served only by the rungs that declare that rule (``Rung.ends``,
-    :mod:`restitution.fast.rung`): the compiled integrator, that rule's own master curve, the linear
-    dashpot's closed form, the reference and the mpmath integrators; for alpha <= gamma both rules
-    give the same eps and every rung serves."""
+    :mod:`restitution.fast.rung`): the compiled integrator, that rule's own master curve, the exact
+    family alpha = 2 gamma + 1 (the linear dashpot at (gamma+1) Omega, taken first for those pairs),
+    the reference and the mpmath integrators; for alpha <= gamma both rules give the same eps and
+    every rung serves."""
     return _ladder.epsilon(alpha=alpha, gamma=gamma, omega=omega, g=g, D1=D1, D2=D2, tol=tol,
                            method=method, build=build, relations=RELATIONS, end=end)
 
@@ -69,7 +70,10 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
       the return is not stiff); no ``one_minus_eps``.
     * ``"highprec"``: mpmath Taylor series at ``digits`` digits (:mod:`restitution.core.highprec`),
       rounded to doubles; ``rtol`` of the result is 10^(1 - digits).
-    * ``"closed-form"``: exact, for the linear spring-dashpot alpha = 1, gamma = 0 only.
+    * ``"closed-form"``: exact, for alpha = 2 gamma + 1 only: the linear spring-dashpot (alpha = 1,
+      gamma = 0) and the family that maps onto it at (gamma+1) Omega
+      (:func:`restitution.core.exact_family.exact_collision`; tau_b, tau_c by quadrature to about
+      1e-14), every Omega > 0; eps within 8 u (1 + ln(1/eps)) as ``error_bound`` states.
 
     ``end``: the end-of-contact rule, "force" (default) or "overlap" (see
     :data:`restitution.core.results.END_RULES`); every method serves both.
@@ -83,10 +87,11 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
     if method == "reference":
         return _collision.collide(ex, None, omega, rtol=rtol, t_eval=t_eval, end=end)
     if method == "closed-form":
-        if (ex.alpha, ex.gamma) != (1, 0):
-            raise ParameterError("method", method, "the closed form is for alpha = 1, gamma = 0 only")
-        from .core.dashpot import dashpot_collision
-        return dashpot_collision(omega, end=end)
+        from .core.exact_family import exact_collision, in_family
+        if not in_family(ex, None):
+            raise ParameterError("method", method, "the closed form is for alpha = 2 gamma + 1 only (alpha = 1, "
+                                                   "gamma = 0, the linear dashpot, and the family that maps onto it)")
+        return exact_collision(ex, None, omega, end=end)
     if method == "highprec":
         from .core.highprec import reference_collision
         r = reference_collision(ex, None, omega, digits=digits, end=end)

@@ -72,7 +72,7 @@ def build_parser() -> argparse.ArgumentParser:
                    help="relative tolerance of methods reference and fast (default 1e-12)")
     c.add_argument("--method", default="reference",
                    help="reference (scipy, default), fast (compiled), highprec (mpmath) or closed-form "
-                        "(alpha = 1, gamma = 0)")
+                        "(alpha = 2 gamma + 1: the linear dashpot at (gamma+1) Omega, exact)")
     c.add_argument("--digits", type=int, default=None, help="digits of --method highprec (default 30)")
     add_end(c)
     c.add_argument("--json", action="store_true", help="machine-readable output")

@@ -9,6 +9,9 @@ reads the overlap rule's own curve (under a second). Each is built on its own wh
 ======================  =========================================  ============================  ========
 rung                    what                                       domain                        cost/pt
 ======================  =========================================  ============================  ========
+exact-family            exact: alpha = 2 gamma + 1 maps onto the       alpha = 2 gamma + 1, every     ~3e-6 s
+                        linear dashpot at (gamma+1) Omega            Omega; both end rules (overlap:
+                        (core.exact_family); taken first             above 1/(4 (gamma+1)))
 paper-c          (cal)  Omega~ = c0 + c1 Omega + c2 Omega^2 with    alpha=3/2, gamma=1 where the   ~2e-8 s
                         the paper's printed c0-c2, eps =            measured error is finite
                         (Omega~/Omega)^((gamma+1)/(alpha-1-2gamma))
@@ -53,6 +56,8 @@ Bounds:
 * reference: 10 rtol + 1e-13, the same factor for large exponents (validated against mpmath);
   highprec: 10^(1 - digits), at least the 2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
 * overlap-law: twice C's own error + rounding (its exponential correction is below exp(-5e6) there);
+* exact-family: 8 u (1 + ln(1/eps)) at the request's smallest eps, u = 2^-53 (measured against
+  mpmath: a quarter of that at most);
 * closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
@@ -65,8 +70,9 @@ alpha <= gamma the rules coincide and all serve).
 Each rung is an object of :mod:`restitution.fast.rungs` (interface: :mod:`restitution.fast.rung`);
 this module only compares their quotes and loads or builds what they read.
 
-Choice: among rungs whose domain holds every input and whose bound over the inputs is <= tol, the
-least expected time (setup + n x cost). A build is made (cached on disk) only when its price
+Choice: an exact rung (``Rung.exact``: the exact family alpha = 2 gamma + 1) wherever it serves
+and meets tol, with no build made; otherwise, among rungs whose domain holds every input and whose
+bound over the inputs is <= tol, the least expected time (setup + n x cost). A build is made (cached on disk) only when its price
 (BUILD_SECONDS, or what the last one of its kind took) plus its rung's cost undercuts the best rung
 that needs no build, or when nothing else meets tol; builds are made cheapest first, quoting again
 after each (the master curve may serve the request, and the perturbation route is then not built).
@@ -414,7 +420,11 @@ class Ladder:
         return self._spec(OVERLAP_CURVE).key
 
     def uniform(self) -> UniformForm | None:
-        return self._build(UNIFORM) if self.ex.alpha > self.ex.gamma else None
+        """The force rule's uniform form (None where alpha <= gamma, and for alpha = 2 gamma + 1,
+        whose exact-family rung makes a fitted form unnecessary)."""
+        if not self.ex.alpha > self.ex.gamma or self.ex.alpha == 2 * self.ex.gamma + 1:
+            return None
+        return self._build(UNIFORM)
 
     def calibration(self) -> Calibration:
         """Everything: the master curve checked against mpmath, every relation rung and the uniform
@@ -478,7 +488,8 @@ class Ladder:
                 hint = (f"the smallest bound over these Omegas is {best.bound:.3g} ({best.name})" if best
                         else "no method covers these Omegas")
                 raise ParameterError("tol", tol, f"no method reaches it: {hint}")
-            order = sorted(ok, key=lambda q: (q.cost, q.bound))
+            # an exact rung first (Rung.exact): none is more accurate, and it reads no cache
+            order = sorted(ok, key=lambda q: (not q.exact, q.cost, q.bound))
         chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, end)
         table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
@@ -550,6 +561,8 @@ class Ladder:
         whose cost plus their cheapest rung's undercuts the best rung that needs no build."""
         plain = [q.cost for q in quotes if q.run is not None and q.bound <= tol]
         pending = {q.needs_build for q in quotes if q.needs_build}
+        if any(q.exact and q.run is not None and q.bound <= tol for q in quotes):
+            return set()   # the exact rung answers whatever is built (Ladder.evaluate's order)
         if not plain:
             return pending
         best = min(plain)

@@ -11,6 +11,10 @@ A rung (:class:`Rung`) is one way to compute eps(Omega). It declares, for a :cla
 * ``cost`` (seconds per point) and ``price(req)`` (expected seconds for the request);
 * ``bound(req, built)``: its relative error bound over the request and the setting that meets it;
 * ``evaluate(req, built, setting, omega)``: eps;
+* ``exact``: True for a closed form whose bound is at rounding level over its whole domain (the
+  exact family alpha = 2 gamma + 1): the chooser takes it first wherever it serves and meets the
+  tolerance, whatever the other rungs cost, and makes no build for such a request (no rung can
+  be more accurate, and a cached curve would make the answer depend on the cache's state);
 * ``conditioned``: True for the double-precision integrations, whose bound grows near the overlap
   rule's sticking boundary (core.collision.conditioning): the quote's ``widen`` gives the factor
   from the answer, and the chooser checks the widened bound after the evaluation.
@@ -103,6 +107,7 @@ class Quote:
     run: Callable | None = None
     coefficients: dict | None = None
     widen: Callable | None = None   # eps -> factor on ``bound`` (None: the bound holds as quoted)
+    exact: bool = False             # taken first where it meets tol (Rung.exact)
 
 
 @dataclass(frozen=True)
@@ -148,6 +153,7 @@ class Rung:
     ends: tuple[str, ...] = ("force",)
     cost: float = 0.0
     conditioned: bool = False
+    exact: bool = False
 
     def serves(self, req: Request) -> bool:
         if "force" not in self.ends:   # the overlap rule's own numbers, which exist only where the rules differ
@@ -190,4 +196,4 @@ class Rung:
             widen = lambda eps: float(np.max(conditioning(req.ex, None, req.end, eps, req.omega)))  # noqa: E731
         return Quote(self.name, b, self.price(req), setting, reason,
                      run=lambda om: self.evaluate(req, built, setting, om),
-                     coefficients=self.coefficients(req, built), widen=widen)
+                     coefficients=self.coefficients(req, built), widen=widen, exact=self.exact)

@@ -1,7 +1,8 @@
 """The registry of the method ladder's rungs (each a :class:`restitution.fast.rung.Rung`).
 
 Adding a rung is one module in this package and one line in RUNGS. The chooser
-(:mod:`restitution.fast.ladder`) lists them in this order, the relation rungs first.
+(:mod:`restitution.fast.ladder`) lists them in this order, the relation rungs first, and takes an
+exact rung (``Rung.exact``) first wherever it serves.
 """
 
 from __future__ import annotations
@@ -9,6 +10,7 @@ from __future__ import annotations
 from ..rung import Rung
 from .calibrated import ElasticRung, MasterRung, PadeRung, RelationRung, ViscousRung
 from .closed_form import ClosedForm
+from .exact_family import ExactFamily
 from .highprec import Highprec
 from .integrator import Integrator
 from .overlap_integrator import OverlapIntegrator
@@ -20,6 +22,7 @@ __all__ = ["RUNGS", "ladder_rungs", "rung_names"]
 
 #: Every rung but the relation rungs (which come from the Relations a ladder is given), cheapest kinds first.
 RUNGS: tuple[Rung, ...] = (
+    ExactFamily(),
     PadeRung(),
     ViscousRung(),
     ElasticRung(),

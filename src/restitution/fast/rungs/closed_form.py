@@ -1,7 +1,8 @@
 """The closed-form rung: exact where the problem is solvable (alpha = gamma; the linear
 spring-dashpot, both end rules), otherwise the uniform form of :mod:`restitution.core.uniform`
 built on its own (alpha > gamma under the force rule, gamma < alpha < 2 gamma + 1 under the overlap
-rule; Omega in FORM_RANGE, its stated bound)."""
+rule; Omega in FORM_RANGE, its stated bound). Not for alpha = 2 gamma + 1 other than the dashpot:
+the exact-family rung (:mod:`restitution.fast.rungs.exact_family`) answers those exactly."""
 
 from __future__ import annotations
 
@@ -30,6 +31,8 @@ def _kind(req: Request) -> str:
         return "dashpot"
     if not ex.alpha > ex.gamma:
         return "none"
+    if ex.alpha == 2 * ex.gamma + 1:
+        return "family"
     if req.end == "overlap" and not ex.alpha < 2 * ex.gamma + 1:
         return "sticks"
     return "uniform"
@@ -49,6 +52,8 @@ class ClosedForm(Rung):
         if kind == "none":
             return ("alpha < gamma: the viscous limit's first correction, which the uniform form needs, "
                     "is not known in closed form")
+        if kind == "family":
+            return "alpha = 2 gamma + 1: the exact-family rung answers exactly, no uniform form is fitted"
         if kind == "sticks":
             return "alpha >= 2 gamma + 1: the bodies can stick under the overlap rule, no uniform form"
         if kind == "dashpot" and req.end == "overlap" and req.lo <= 0.25:

@@ -1,0 +1,44 @@
+"""The exact family alpha = 2 gamma + 1 as a rung (:mod:`restitution.core.exact_family`): eps is the
+linear dashpot's at (gamma+1) Omega in closed form, both end rules, every Omega, no build.
+
+Its bound is at rounding level, EPS_ULPS u (1 + ln(1/eps)) at the smallest eps of the request
+(eps rises with Omega under both rules, so that is eps at the smallest Omega); measured against
+mpmath a quarter of that or less. It is exact (``Rung.exact``): the chooser takes it first
+wherever it serves, before any curve or fit, and builds nothing for these pairs.
+"""
+
+from __future__ import annotations
+
+from ..rung import Rung
+
+__all__ = ["ExactFamily", "EXACT_FAMILY_COST"]
+
+#: Seconds per point (the dashpot's contact time in Python; measured 1-3 microseconds).
+EXACT_FAMILY_COST = 3e-6
+
+
+class ExactFamily(Rung):
+    name, cost = "exact-family", EXACT_FAMILY_COST
+    ends = ("force", "overlap")
+    exact = True
+
+    def outside(self, req):
+        from ...core.exact_family import in_family
+        if not in_family(req.ex, None):
+            return "alpha != 2 gamma + 1 (the family that maps exactly onto the linear dashpot)"
+        return None
+
+    def bound(self, req, built):
+        # an eps below the smallest normal double (the overlap rule just above its threshold)
+        # raises UnresolvedError here: every other rung would follow a creep there for minutes
+        from ...core.exact_family import eps_bound, exact_eps
+        lowest = exact_eps(req.ex, None, req.lo, req.end)
+        return float(eps_bound(lowest)), "dashpot at (gamma+1) Omega" + (", overlap" if req.end == "overlap" else "")
+
+    def coefficients(self, req, built):
+        return {"exact": "alpha = 2 gamma + 1: the linear dashpot at Omega' = (gamma+1) Omega "
+                         "(restitution.core.exact_family)"}
+
+    def evaluate(self, req, built, setting, omega):
+        from ...core.exact_family import exact_eps
+        return exact_eps(req.ex, None, omega, req.end)
