@@ -184,3 +184,45 @@ def test_extreme_omegas_against_the_reference_and_the_fast_integrator(alpha, gam
     fast = collide(alpha, gamma, 1e14, method="fast", rtol=1e-13)
     got = exact_collision(alpha, gamma, 1e14)
     assert math.isclose(got.eps, fast.eps, rel_tol=1e-11) and math.isclose(got.tau_c, fast.tau_c, rel_tol=1e-9)
+
+
+@pytest.mark.slow   # 2 s: builds one master curve
+def test_cached_false_answers_as_with_an_empty_cache(tmp_path):
+    """What the DEM layer asks for a scene: no build read or made; the exact rung where it serves,
+    the compiled integrator elsewhere, even with a master curve cached."""
+    lad = Ladder("3/2", "1/2", cache_dir=str(tmp_path), stream=io.StringIO())
+    om = np.geomspace(0.01, 100.0, 5)
+    lad.master                                                            # the curve, built and cached
+    assert lad.evaluate(om, build=False).method != "integrator"           # and used
+    assert lad.evaluate(om, build=False, cached=False).method == "integrator"
+    with pytest.raises(ParameterError, match="build"):
+        lad.evaluate(om, build=True, cached=False)
+    fam = Ladder("3/2", "1/4", cache_dir=str(tmp_path), stream=io.StringIO())
+    assert fam.evaluate(om[om > 0.2], build=False, cached=False, end="overlap").method == "exact-family"
+
+
+def test_dem_contact_times_and_reach_come_from_the_closed_form():
+    """Hertz with tsuji damping is (3/2, 1/4): its contact time agrees with the reference integrator's
+    (which knows nothing of the mapping) and costs no integration."""
+    from restitution.dem.contact import Contact, scaled_collision
+    for end in RULES:
+        c = Contact("3/2", "1/4", 1e5, 80.0, end)
+        ref = reference_collide("3/2", "1/4", c.omega(1.0), rtol=RTOL, end=end)
+        assert c.collision(1.0).rtol == 0.0
+        assert math.isclose(c.contact_time(1.0), ref.tau_c * float(c.material.time_scale(1.0)), rel_tol=1e-10)
+    # beyond the reference's Omega range the closed form still answers (no flag for lack of a method)
+    assert scaled_collision("3/2", "1/4", "force", 1e13).tau_c > 0
+
+
+def test_typed_e_table_hertz_and_hooke_rows_agree_exactly():
+    """LIGGGHTS' hertz law is (3/2, 1/4), its hooke law (1, 0): both are the dashpot at the same
+    Omega', so their typed-e rows are equal to rounding; and they match the reference integrator."""
+    from restitution.dem.settings import TYPED_E_CODES, typed_e_table
+    rows = typed_e_table([0.1, 0.5, 0.9])
+    for r in rows:
+        for rule in ("limitForce off (default)", "limitForce on"):
+            hertz, hooke = r[f"LIGGGHTS hertz, {rule}"], r[f"LIGGGHTS hooke, {rule}"]
+            assert abs(hertz / hooke - 1) <= 1e-14
+        c = TYPED_E_CODES["LAMMPS hertz + damping tsuji (default)"](r["e"])
+        ref = reference_collide(c.alpha, c.gamma, c.omega(1.0), rtol=RTOL, end=c.end)
+        assert abs(r["LAMMPS hertz + damping tsuji (default)"] / ref.eps - 1) <= ref.error_bound + 1e-14

@@ -15,7 +15,7 @@ from ..core.exponents import as_exponents
 from ..core.model import Material
 from ..core.results import end_rule
 
-__all__ = ["Contact", "contact_eps", "TIMES_OMEGA_MAX"]
+__all__ = ["Contact", "contact_eps", "scaled_collision", "TIMES_OMEGA_MAX"]
 
 #: Above the scipy reference's range (core.collision.OMEGA_RANGE: a contact all but undamped, whose
 #: 1 - eps that integration no longer resolves) contact times come from the compiled integrator, up
@@ -42,6 +42,51 @@ def contact_eps(alpha, gamma, end: str, omega: float, rtol: float = 1e-12) -> fl
         raise
     except ParameterError:
         return collide(alpha, gamma, omega, rtol=rtol, end=end).eps
+
+
+def scaled_collision(alpha, gamma, end: str, omega: float, rtol: float = 1e-12):
+    """The scaled collision at one Omega, by the most accurate means that exists for the law.
+
+    In closed form for alpha = 2 gamma + 1 (:func:`restitution.core.exact_family.exact_collision`:
+    eps to rounding, tau_b and tau_c to about 1e-14, any Omega, under a millisecond): Hertz with
+    delta^(1/4) damping (LAMMPS tsuji and coeff_restitution, LIGGGHTS hertz) and hooke with linear
+    damping are in it. Otherwise the scipy reference at ``rtol``
+    (:func:`restitution.core.collision.collide`: its Omega range, 20-200 ms).
+
+    Parameters
+    ----------
+    alpha, gamma
+        The exponents (rationals as strings, Fractions or numbers).
+    end : {"force", "overlap"}
+        The end-of-contact rule.
+    omega : float
+        The scaled parameter Omega > 0.
+    rtol : float
+        The reference integrator's tolerance (not read by the closed form).
+
+    Returns
+    -------
+    Collision
+        eps, tau_b, x_b, tau_c, x_c and their stated bounds.
+
+    Raises
+    ------
+    ParameterError
+        For bad input or an Omega outside the reference's range; StickError (a ParameterError)
+        where the bodies stick under the overlap rule.
+
+    Examples
+    --------
+    >>> c = scaled_collision("3/2", "1/4", "overlap", 0.7)
+    >>> c.rtol, round(c.eps, 10), c.end
+    (0.0, 0.1371174182, 'separation')
+    >>> scaled_collision("3/2", "1/2", "force", 0.7).rtol
+    1e-12
+    """
+    from ..core.exact_family import exact_collision, in_family
+    if in_family(alpha, gamma):
+        return exact_collision(alpha, gamma, omega, end)
+    return collide(alpha, gamma, omega, rtol=rtol, end=end)
 
 
 def _fast_tau_c(alpha, gamma, end: str, omega: float, rtol: float) -> float:
@@ -82,8 +127,8 @@ class Contact:
         return float(self.material.omega(g))
 
     def collision(self, g: float, rtol: float = 1e-12):
-        """The scaled collision at impact speed g (core.collision.collide with this end rule)."""
-        return collide(self.alpha, self.gamma, self.omega(g), rtol=rtol, end=self.end)
+        """The scaled collision at impact speed g with this end rule (:func:`scaled_collision`)."""
+        return scaled_collision(self.alpha, self.gamma, self.end, self.omega(g), rtol)
 
     def eps(self, g: float, rtol: float = 1e-12) -> float:
         """eps at impact speed g, to the reference's bound at rtol (:func:`contact_eps`)."""
@@ -91,14 +136,17 @@ class Contact:
 
     def contact_time(self, g: float, rtol: float = 1e-12) -> float:
         """t_c in the units of D1, D2, g: the scaled tau_c times the time scale B(g) (the scipy
-        reference's tau_c; above its Omega range, up to TIMES_OMEGA_MAX, the compiled integrator's)."""
+        reference's tau_c; above its Omega range, up to TIMES_OMEGA_MAX, the compiled integrator's;
+        for alpha = 2 gamma + 1 the closed form's at every Omega, :func:`scaled_collision`)."""
         from ..core.collision import OMEGA_RANGE
         from ..core.errors import derived_in_range
+        from ..core.exact_family import in_family
         inputs = {"D1": self.D1, "D2": self.D2, "g": float(g)}
         om = self.omega(g)
+        numeric = not in_family(self.alpha, self.gamma)
         with np.errstate(all="ignore"):
             tau_c = (_fast_tau_c(self.alpha, self.gamma, self.end, om, rtol)
-                     if OMEGA_RANGE[1] < om <= TIMES_OMEGA_MAX else self.collision(g, rtol).tau_c)
+                     if numeric and OMEGA_RANGE[1] < om <= TIMES_OMEGA_MAX else self.collision(g, rtol).tau_c)
             t_c = tau_c * float(self.material.time_scale(g))
         return derived_in_range("the contact time", t_c, inputs)
 
@@ -109,14 +157,15 @@ class Contact:
         then atoms lost from the box). The undamped contact's largest overlap,
         (g^2 (alpha + 1) / (2 D1))^(1/(alpha + 1)), bounds the damped one's; only where it reaches
         the limit is the compression integrated (the same under both end rules, so the force
-        rule's, which never sticks). Outside the reference's range of Omega the bound is kept: a
-        flag where the bodies may still part, never an eps where they do not."""
+        rule's, which never sticks). Outside the reference's range of Omega (alpha = 2 gamma + 1 has
+        none: its closed form) the bound is kept: a flag where the bodies may still part, never an
+        eps where they do not."""
         from ..core.errors import ParameterError
         a = float(self.alpha)
         if (g * g * (a + 1.0) / (2.0 * self.D1)) ** (1.0 / (a + 1.0)) < limit:
             return False
         try:
-            reach = collide(self.alpha, self.gamma, self.omega(g), end="force").x_b
+            reach = scaled_collision(self.alpha, self.gamma, "force", self.omega(g)).x_b
         except ParameterError:
             return True
         return reach * float(self.material.length_scale(g)) >= limit

@@ -127,15 +127,16 @@ def scaled_eps(rung: ModelRung, end: str, omega, build: bool | None = None) -> t
 
 
 def _epsilon(rung: ModelRung, end: str, om, tol: float, build: bool | None):
-    """epsilon() for a scene. With build None (a scene too small to build curves for) by the compiled
-    integrator wherever it meets ``tol``, as with an empty cache: a master curve cached by some
-    earlier run agrees with it within the bound but not bit for bit, and a least-squares fit's
-    damping moved in its 8th digit with the cache's state (the small scene's glass-steel line:
-    1212924442.54 with an empty cache, 1212924487.03 with curves cached)."""
+    """epsilon() for a scene. With build None (a scene too small to build curves for) by the cheapest
+    rung that reads no build wherever one meets ``tol`` (``cached=False``, as with an empty cache:
+    the exact family's closed form for alpha = 2 gamma + 1, such as Hertz with tsuji damping,
+    otherwise the compiled integrator): a master curve cached by some earlier run agrees with it
+    within the bound but not bit for bit, and a least-squares fit's damping moved in its 8th digit
+    with the cache's state (the small scene's glass-steel line: 1212924442.54 with an empty cache,
+    1212924487.03 with curves cached)."""
     if build is None:
         try:
-            return epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=om, tol=tol, end=end, method="integrator",
-                           build=False)
+            return epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=om, tol=tol, end=end, build=False, cached=False)
         except StickError:
             raise
         except ParameterError:

@@ -437,9 +437,11 @@ class Ladder:
         return cal
 
     # -- quotes
-    def quotes(self, omega: np.ndarray, tol: float, end: str = "force") -> list[Quote]:
-        """Every rung with its bound over ``omega``, cost and a runner (None when not applicable)."""
-        req = Request(self.ex, np.asarray(omega, float).ravel(), tol, end, self._loaded(end), self.stream)
+    def quotes(self, omega: np.ndarray, tol: float, end: str = "force", cached: bool = True) -> list[Quote]:
+        """Every rung with its bound over ``omega``, cost and a runner (None when not applicable);
+        ``cached`` False: as with an empty cache (no rung that reads a build can run)."""
+        builds = self._loaded(end) if cached else {}
+        req = Request(self.ex, np.asarray(omega, float).ravel(), tol, end, builds, self.stream)
         return [r.quote(req) for r in self.rungs]
 
     def _loaded(self, end: str) -> dict:
@@ -450,8 +452,10 @@ class Ladder:
 
     # -- the choice
     def evaluate(self, omega, *, tol: float | None = DEFAULT_TOL, method: str | None = None,
-                 build: bool | None = None, end: str = "force") -> EpsResult:
+                 build: bool | None = None, end: str = "force", cached: bool = True) -> EpsResult:
         om = _omega_array(omega)
+        if not cached and build:
+            raise ParameterError("build", build, "must be False or None with cached=False (nothing is read or built)")
         # A forced method without a tolerance answers with its own bound (tol only sets the
         # integrators' settings then); otherwise the default tolerance applies.
         checked = tol is not None or method is None
@@ -464,8 +468,8 @@ class Ladder:
         flat = om.ravel()
         if end == "overlap":
             self._refuse_sticking(flat)
-        quotes = self.quotes(flat, tol, end)
-        if build is not False:
+        quotes = self.quotes(flat, tol, end, cached)
+        if build is not False and cached:
             quotes = self._make_builds(quotes, flat, tol, end, method, build)
         if method is not None:
             mine = [q for q in quotes if q.name == method]
@@ -490,7 +494,7 @@ class Ladder:
                 raise ParameterError("tol", tol, f"no method reaches it: {hint}")
             # an exact rung first (Rung.exact): none is more accurate, and it reads no cache
             order = sorted(ok, key=lambda q: (not q.exact, q.cost, q.bound))
-        chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, end)
+        chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, end, cached)
         table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.ex.alpha,
@@ -520,7 +524,7 @@ class Ladder:
             self._build(name)
             quotes = self.quotes(flat, tol, end)
 
-    def _first_within(self, order, flat: np.ndarray, tol: float, end: str):
+    def _first_within(self, order, flat: np.ndarray, tol: float, end: str, cached: bool = True):
         """The first quote, cheapest first, whose bound still holds once widened by its answer
         (a double-precision integration near the overlap rule's sticking boundary loses relative
         accuracy as eps falls: core.conditioning), run once more at a tolerance tightened by that
@@ -543,7 +547,7 @@ class Ladder:
                 if bound <= tol:
                     return q, eps, bound
                 widened.append((q, eps, bound))
-                tighter = [t for t in self.quotes(flat, max(TOL_FLOOR, min(tol, q.bound) / (2.0 * factor)), end)
+                tighter = [t for t in self.quotes(flat, max(TOL_FLOOR, min(tol, q.bound) / (2.0 * factor)), end, cached)
                            if t.name == q.name and t.run is not None and t.bound < q.bound]
                 if attempt or not tighter:
                     break
@@ -583,7 +587,7 @@ def _ladder(ex: Exponents, relations) -> Ladder:
 
 def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | None = DEFAULT_TOL,
             method: str | None = None, build: bool | None = None,
-            relations: tuple[Relation, ...] = (FITTED_C,), end: str = "force") -> EpsResult:
+            relations: tuple[Relation, ...] = (FITTED_C,), end: str = "force", cached: bool = True) -> EpsResult:
     """Coefficient of restitution to a relative tolerance ``tol``, by the cheapest adequate method.
 
     Give either ``omega`` (scaled parameter, scalar or array) or the impact speeds ``g`` with the
@@ -595,6 +599,8 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
     anything, True builds everything the quoted rungs read, None (default) what pays.
     ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's). ``end``: the
     end-of-contact rule; "overlap" is served only by the rungs that declare it (``Rung.ends``).
+    ``cached`` = False answers as with an empty cache: no build is read or made, so the answer does
+    not depend on what earlier runs cached (a DEM scene's fit must not; build must not be True).
     Raises ParameterError for bad input and for a tolerance no rung meets.
     """
     ex = as_exponents(alpha, gamma)
@@ -611,4 +617,4 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
         with np.errstate(over="ignore", under="ignore"):
             om = np.asarray(Material(ex, None, D1, D2).omega(gs), dtype=float).reshape(gs.shape)
         om = _omega_array(om, "omega")  # Omega itself may over/underflow for extreme inputs
-    return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build, end=end)
+    return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build, end=end, cached=cached)
