@@ -168,10 +168,13 @@ def merged(parts) -> Calibration:
 def build_calibration(alpha, gamma, settings: MasterSettings | None = None, progress=None,
                       relations=(FITTED_C,)) -> Calibration:
     """Everything at once, without a cache (the benchmark times it): the master curve with its
-    mpmath check (``settings.n_highprec`` points), each relation rung and the uniform form."""
+    mpmath check (``settings.n_highprec`` points), each relation rung and the uniform form (none for
+    alpha = 2 gamma + 1, whose exact-family rung answers exactly)."""
     ex = as_exponents(alpha, gamma)
     say = progress or (lambda m: None)
     master = build_master(ex, None, settings, progress=say)
     cal = merged([measure_master(master), *(measure_relation(master, relation_dict(ex, r, say)) for r in relations)])
-    cal.uniform = build_uniform(ex, None, say) if ex.alpha > ex.gamma else None
+    # alpha = 2 gamma + 1 needs no fitted form: the exact-family rung answers to rounding
+    fitted = ex.alpha > ex.gamma and ex.alpha != 2 * ex.gamma + 1
+    cal.uniform = build_uniform(ex, None, say) if fitted else None
     return cal

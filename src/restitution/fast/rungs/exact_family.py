@@ -23,9 +23,13 @@ class ExactFamily(Rung):
     exact = True
 
     def outside(self, req):
+        from ...core.collision import stick_bound
         from ...core.exact_family import in_family
         if not in_family(req.ex, None):
             return "alpha != 2 gamma + 1 (the family that maps exactly onto the linear dashpot)"
+        if req.end == "overlap" and req.lo <= stick_bound(req.ex, None):
+            # the chooser refuses this as StickError before quoting; a quote alone says why
+            return "Omega <= 1/(4 (gamma+1)): the bodies stick under the overlap rule"
         return None
 
     def bound(self, req, built):
