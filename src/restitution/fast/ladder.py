@@ -9,9 +9,9 @@ reads the overlap rule's own curve (under a second). Each is built on its own wh
 ======================  =========================================  ============================  ========
 rung                    what                                       domain                        cost/pt
 ======================  =========================================  ============================  ========
-exact-family            exact: alpha = 2 gamma + 1 maps onto the       alpha = 2 gamma + 1, every     ~3e-6 s
-                        linear dashpot at (gamma+1) Omega            Omega; both end rules (overlap:
-                        (core.exact_family); taken first             above 1/(4 (gamma+1)))
+exact-family            exact: alpha = 2 gamma + 1 is the linear   alpha = 2 gamma + 1, all      ~3e-6 s
+                        dashpot at (gamma+1) Omega                 Omega (overlap rule: above
+                        (core.exact_family); taken first           1/(4 (gamma+1)))
 paper-c          (cal)  Omega~ = c0 + c1 Omega + c2 Omega^2 with    alpha=3/2, gamma=1 where the   ~2e-8 s
                         the paper's printed c0-c2, eps =            measured error is finite
                         (Omega~/Omega)^((gamma+1)/(alpha-1-2gamma))
@@ -61,24 +61,23 @@ Bounds:
 * closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
   (twice the largest error on points used neither in its fit nor in the choice of its shape).
 
-End rule: each rung declares the rules it serves where they differ (alpha > gamma): closed-form
-(the dashpot, and the overlap rule's own uniform form where gamma < alpha < 2 gamma + 1), master,
-integrator, reference and highprec serve both (each with a rung of
-its own per rule where needed); the others the "force" rule (for
-alpha <= gamma the rules coincide and all serve).
+End rule: each rung declares the rules it serves where they differ (alpha > gamma): exact-family,
+closed-form (the dashpot, and the overlap rule's own uniform form where gamma < alpha < 2 gamma + 1),
+master, integrator, reference and highprec serve both (each with a rung of its own per rule where
+needed); the others the "force" rule (for alpha <= gamma the rules coincide and all serve).
 
 Each rung is an object of :mod:`restitution.fast.rungs` (interface: :mod:`restitution.fast.rung`);
 this module only compares their quotes and loads or builds what they read.
 
 Choice: an exact rung (``Rung.exact``: the exact family alpha = 2 gamma + 1) wherever it serves
 and meets tol, with no build made; otherwise, among rungs whose domain holds every input and whose
-bound over the inputs is <= tol, the least expected time (setup + n x cost). A build is made (cached on disk) only when its price
-(BUILD_SECONDS, or what the last one of its kind took) plus its rung's cost undercuts the best rung
-that needs no build, or when nothing else meets tol; builds are made cheapest first, quoting again
-after each (the master curve may serve the request, and the perturbation route is then not built).
-One expected to take more than a second is named on stderr with its price. The master curve's
-check against mpmath (seconds) is built for the pipeline and the benchmark (``calibration()``), and
-can only widen the curve's bound.
+bound over the inputs is <= tol, the least expected time (setup + n x cost). A build is made
+(cached on disk) only when its price (BUILD_SECONDS, or what the last one of its kind took) plus
+its rung's cost undercuts the best rung that needs no build, or when nothing else meets tol; builds
+are made cheapest first, quoting again after each (the master curve may serve the request, and
+the perturbation route is then not built). One expected to take more than a second is named on
+stderr with its price. The master curve's check against mpmath (seconds) is built for the pipeline
+and the benchmark (``calibration()``), and can only widen the curve's bound.
 A tolerance no rung meets raises ParameterError naming the best bound available. Under the overlap
 rule an Omega at or below core.collision.stick_bound is refused before any rung runs (StickError).
 """

@@ -18,6 +18,9 @@ EXACT_FAMILY_COST = 3e-6
 
 
 class ExactFamily(Rung):
+    """eps = exp(-T_c/2) of the dashpot at (gamma+1) Omega (:func:`restitution.core.exact_family.exact_eps`)
+    for alpha = 2 gamma + 1, both end rules, every Omega the ladder accepts."""
+
     name, cost = "exact-family", EXACT_FAMILY_COST
     ends = ("force", "overlap")
     exact = True
