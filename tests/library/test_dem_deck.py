@@ -419,7 +419,7 @@ VARIABLE_DECK = """\
 variable r loop 3
 variable d equal 2*v_r*1e-3
 variable E string 5e7
-variable nu equal "$(0.1 + 0.2)"
+variable nu equal $(0.1 + 0.2)
 variable t equal step*dt
 variable f atom mass
 variable k equal -2^2
@@ -434,7 +434,8 @@ pair_coeff 1 1 hertz/material ${E} 0.5 ${nu} damping tsuji tangential linear_noh
 def test_variables_evaluated_and_the_forms_not_evaluated_named(tmp_path):
     """loop (its first value, 1), equal-style arithmetic with v_ references and $(...), string;
     styles and expressions the reader does not evaluate are named (-2^2: LAMMPS and Python
-    disagree on it), and a number needed from one ends the audit in one line."""
+    disagree on it), and a number needed from one ends the audit in one line. ($(...) inside quotes
+    is not substituted: LAMMPS stops on ``variable nu equal "$(0.1 + 0.2)"``, checked in LAMMPS.)"""
     deck = tmp_path / "in.vars"
     deck.write_text(VARIABLE_DECK)
     res, err = audit(deck, "--g", 1.0)

@@ -23,14 +23,20 @@ takes the types it names. A wall removed later (``unfix``) is still listed: it a
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
-Files the deck names (``include``, ``read_data``) are read through a ``read_file`` callable (the CLI
-resolves their names against the deck's directory, where LAMMPS is normally started); a data file's
-Atoms section gives a type its radius and density where every atom of that type has the same. A
-type pair no ``pair_coeff`` covers is mixed as LAMMPS mixes it (pair_style granular: the same
-models for both types, geometric means, Young's moduli combined as 1/E* = sum (1 - nu^2)/E,
-limit_damping if either type has it). Variables: index, loop, string, world/universe (their first
-value) and equal-style or ``$(...)`` arithmetic of numbers, PI, v_ references and a few functions;
-any other form is named on its line, and a number needed from it ends the audit in one line.
+The deck runs as LAMMPS runs it (:mod:`restitution.dem.deck_script`): ``if`` with a condition the
+reader can evaluate, ``jump``/``label``, ``next`` loops and ``quit`` decide which lines run; quoted
+text is not a command; where which contact lines run depends on what the reader cannot decide,
+the deck is refused naming the line.
+
+Files the deck names (``include``, ``jump``, ``read_data``) are read through a ``read_file``
+callable (the CLI resolves their names against the deck's directory, where LAMMPS is normally
+started); a data file's Atoms section gives a type its radius and density where every atom of that
+type has the same. A type pair no ``pair_coeff`` covers is mixed as LAMMPS mixes it (pair_style
+granular: the same models for both types, geometric means, Young's moduli combined as 1/E* = sum
+(1 - nu^2)/E, limit_damping if either type has it). Variables: index and loop (their values in turn, with
+``next``), string, world/universe (their first value) and equal-style (evaluated again after each
+``next``) or ``$(...)`` arithmetic of numbers, PI, v_ references and a few functions; any other form
+is named on its line, and a number needed from it ends the audit in one line.
 """
 
 from __future__ import annotations
@@ -47,6 +53,7 @@ from .calibrate import calibrate
 from .codes import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, LIGGGHTS_E, LIGGGHTS_MODEL_TYPES,
                     LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact, lammps_eta_n0, lammps_gran_contact,
                     liggghts_accepts_e, liggghts_contact, liggghts_e)
+from .deck_script import LocatedError, Script
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
 
@@ -61,7 +68,8 @@ class DeckError(ParameterError):
 
 
 #: Commands with no bearing on a head-on two-sphere contact (first word, or "fix STYLE"). Not here,
-#: so named when met: mass (per-type masses), jump/next (loops may rerun with other values).
+#: so named when met: mass (per-type masses). The script's control flow (if, jump, label, next,
+#: quit, include, variable) is deck_script's.
 _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "communicate", "comm_modify",
                "processors", "region", "lattice", "change_box", "neighbor", "neigh_modify", "timestep", "thermo",
                "thermo_style", "thermo_modify", "dump", "dump_modify", "undump", "run", "unfix", "compute",
@@ -87,8 +95,9 @@ _SPHERE_STYLES = ("sphere", "granular")
 #: Commands the reader needs and their least number of words (the command included): shorter,
 #: LAMMPS stops on them too
 _NEEDS_WORDS = {"create_box": 2, "pair_style": 2, "pair_coeff": 3}
-#: include files nested deeper than this are a loop
-_MAX_INCLUDE_DEPTH = 16
+#: Commands that may sit in a branch of an if whose condition the reader cannot evaluate: they
+#: neither make atoms, nor run, nor change the contact
+_INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms"})
 
 
 @dataclass
@@ -165,22 +174,6 @@ def _evaluate(expr: str, variables: dict | None = None):
         return None
 
 
-def _logical_lines(text: str):
-    """(line number, text) with comments removed and '&' continuations joined."""
-    pending, start = "", 0
-    for n, raw in enumerate(text.splitlines(), 1):
-        line = re.sub(r"#.*", "", raw).rstrip()    # LAMMPS: '#' starts a comment outside quotes
-        if not pending:
-            start = n
-        if line.endswith("&"):
-            pending += line[:-1] + " "
-            continue
-        line = " ".join((pending + line).split())
-        pending = ""
-        if line:
-            yield start, line
-
-
 def _types(spec: str, ntypes: int, where: str, text: str) -> range:
     """A LAMMPS type range: 2, *, 1*, *3, 2*4."""
     if ntypes <= 0:
@@ -228,52 +221,26 @@ def _where(loc) -> str:
     return f"line {n}" if source is None else f"{source} line {n}"
 
 
-_REFERENCE = re.compile(r"\$\{(\w+)\}|\$\(((?:[^()]|\([^()]*\))*)\)|\$(\w)")
-
-
-def _substitute(line: str, variables: dict) -> str:
-    """LAMMPS' substitution of $x, ${name} and the immediate $(expression) in one line."""
-    def subst(m):
-        if m.group(2) is not None:
-            value = _evaluate(m.group(2).split(":")[0], variables)    # $(expr:format): the value
-            return "<unevaluated-expression>" if value is None else repr(value)
-        name = m.group(1) or m.group(3)
-        if variables.get(name) is None:
-            # left visible: an irrelevant command may use it; a value the audit needs fails in _number
-            return f"<unevaluated-variable-{name}>"
-        value = variables[name]
-        return repr(value) if isinstance(value, float) else str(value)
-    return _REFERENCE.sub(subst, line)
-
-
-def _variable(deck: Deck, variables: dict, words: list, loc, line: str) -> None:
-    """The value a variable has where the deck uses it first, or None, naming its line."""
-    name, style = words[1], words[2] if len(words) > 2 else ""
-    args = [w.strip("\"'") for w in words[3:]]
-    if style == "delete":
-        variables.pop(name, None)
-        return
-    if style in ("index", "loop", "world", "universe", "uloop") and name in variables:
-        return            # LAMMPS ignores a second definition of these (the command line's -var wins)
-    value = None
-    if style in ("index", "string", "world", "universe") and args:
-        value = args[0]
-    elif style in ("loop", "uloop") and args:
-        # loop N [pad]: 1 first; loop N1 N2 [pad]: N1
-        value = args[0] if len(args) >= 2 and args[1] != "pad" else "1"
-    elif style == "equal" and args:
-        value = _evaluate(" ".join(args), variables)
-    variables[name] = value
-    if value is None:
-        deck.unknown.append((*loc, line, "variable not evaluated"))
-
-
 def read_deck(text: str, radius: dict | None = None, density: dict | None = None, read_file=None) -> Deck:
-    """Parse a deck; ``radius``/``density`` ({type: value}) override or complete what it states;
-    ``read_file(name)`` returns the text of a file the deck names (include, read_data), or raises
-    OSError (None: such a deck is refused)."""
-    deck, variables = Deck(), {}
-    _read(deck, variables, text, None, read_file, 0)
+    """Parse a deck.
+
+    Parameters
+    ----------
+    text : str
+        The input script.
+    radius, density : dict, optional
+        {type: value}, overriding or completing what the deck states.
+    read_file : callable, optional
+        ``read_file(name)``: the text of a file the deck names (include, jump, read_data), or
+        raises OSError (None: such a deck is refused).
+
+    Returns
+    -------
+    Deck
+        The settings after the deck's last line.
+    """
+    deck = Deck()
+    _read(deck, text, read_file)
     for t, r in (radius or {}).items():
         deck.radius[int(t)] = r
     for t, d in (density or {}).items():
@@ -293,51 +260,56 @@ def _fetch(read_file, name: str, where: str, line: str) -> str:
         raise DeckError(where, line, f"{name} cannot be read ({exc.strerror or exc})") from None
 
 
-def _read(deck: Deck, variables: dict, text: str, source, read_file, depth: int) -> None:
-    for n, line in _logical_lines(text):
-        loc = (source, n)
-        where = _where(loc)
-        line = _substitute(line, variables)
-        words = line.split()
-        cmd = words[0]
-        if cmd == "variable" and len(words) >= 3:
-            _variable(deck, variables, words, loc, line)
-        elif cmd in _NEEDS_WORDS and len(words) < _NEEDS_WORDS[cmd]:
-            raise DeckError(where, line, f"{cmd} needs at least {_NEEDS_WORDS[cmd] - 1} argument(s)")
-        elif cmd == "create_box":
-            deck.ntypes = _type(words[1], where, line, "the number of types")
-        elif cmd == "include" and len(words) == 2:
-            if depth >= _MAX_INCLUDE_DEPTH:
-                raise DeckError(where, line, f"includes nested deeper than {_MAX_INCLUDE_DEPTH}: a loop")
-            _read(deck, variables, _fetch(read_file, words[1], where, line), words[1], read_file, depth + 1)
-        elif cmd == "read_data" and len(words) >= 2:
-            _read_data(deck, words, where, line, read_file)
-            deck.atoms = True
-        elif cmd == "create_atoms" or cmd == "run" and deck.inserting:
-            deck.atoms = True
-        elif cmd == "read_restart":
-            raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
-                                         "file, which the reader does not read")
-        elif cmd == "atom_style" and len(words) >= 2:
-            deck.atom_style = " ".join(words[1:])
-        elif cmd == "pair_style":
-            _pair_style(deck, words, where, line, loc)
-        elif cmd == "pair_coeff":
-            _pair_coeff(deck, words, where, line, loc)
-        elif cmd == "set" and len(words) >= 3:
-            _set(deck, words, where, line, loc)
-        elif cmd == "fix" and len(words) >= 4:
-            _fix(deck, words, where, line, loc)
-        elif cmd == "group" and len(words) >= 3:
-            _group(deck, words)
-        elif cmd == "units" and len(words) >= 2:
-            deck.units = words[1]
-        elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
-            setattr(deck, cmd.split("_")[0], words[1] == "yes")
-        elif cmd in _IRRELEVANT:
-            continue
-        else:
-            deck.unknown.append((*loc, line, "not understood"))
+def _read(deck: Deck, text: str, read_file) -> None:
+    def execute(words, line, loc):
+        _execute(deck, words, line, loc, read_file)
+
+    def note(loc, line, why):
+        deck.unknown.append((*loc, line, why))
+
+    def fetch(name, loc, line):
+        return _fetch(read_file, name, _where(loc), line)
+    try:
+        Script(execute, _evaluate, note, fetch, _INERT).run(text)
+    except LocatedError as why:
+        raise DeckError(_where(why.loc), why.text, str(why)) from None
+
+
+def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
+    """One command that runs (the script's control flow is deck_script's), as far as a head-on
+    contact is concerned."""
+    where = _where(loc)
+    cmd = words[0]
+    if cmd in _NEEDS_WORDS and len(words) < _NEEDS_WORDS[cmd]:
+        raise DeckError(where, line, f"{cmd} needs at least {_NEEDS_WORDS[cmd] - 1} argument(s)")
+    elif cmd == "create_box":
+        deck.ntypes = _type(words[1], where, line, "the number of types")
+    elif cmd == "read_data" and len(words) >= 2:
+        _read_data(deck, words, where, line, read_file)
+        deck.atoms = True
+    elif cmd == "create_atoms" or cmd == "run" and deck.inserting:
+        deck.atoms = True
+    elif cmd == "read_restart":
+        raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
+                                     "file, which the reader does not read")
+    elif cmd == "atom_style" and len(words) >= 2:
+        deck.atom_style = " ".join(words[1:])
+    elif cmd == "pair_style":
+        _pair_style(deck, words, where, line, loc)
+    elif cmd == "pair_coeff":
+        _pair_coeff(deck, words, where, line, loc)
+    elif cmd == "set" and len(words) >= 3:
+        _set(deck, words, where, line, loc)
+    elif cmd == "fix" and len(words) >= 4:
+        _fix(deck, words, where, line, loc)
+    elif cmd == "group" and len(words) >= 3:
+        _group(deck, words)
+    elif cmd == "units" and len(words) >= 2:
+        deck.units = words[1]
+    elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
+        setattr(deck, cmd.split("_")[0], words[1] == "yes")
+    elif cmd not in _IRRELEVANT:
+        deck.unknown.append((*loc, line, "not understood"))
 
 
 def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> None:

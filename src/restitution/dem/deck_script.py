@@ -1,0 +1,498 @@
+"""LAMMPS' input-script language below the commands: how a file becomes commands, and how an
+``if`` decides. The deck reader (:mod:`restitution.dem.deck`) runs the commands; this module knows
+only the text.
+
+LAMMPS (22 Jul 2025, and LIGGGHTS, which shares its parser) reads a script as follows, and so
+does :func:`logical_lines` with :func:`words`:
+
+1. A line whose last printable character is ``&`` continues on the next, the ``&`` removed (even
+   in a comment); a line with an odd number of triple quotes ``\"\"\"`` continues with its newline
+   kept, so a triple-quoted text may span lines.
+2. ``#`` starts a comment, except inside single, double or triple quotes.
+3. ``$x``, ``${name}`` and ``$(expression)`` are replaced outside quotes (:func:`unquoted` applies
+   a substitution there only); a command such as ``if`` or ``print`` may substitute its own
+   quoted arguments later, when it runs.
+4. The line is split into words at whitespace; a word in quotes is one word, quotes removed.
+
+:func:`evaluate_boolean` is the ``if`` command's condition (not an equal-style expression: numbers
+and strings, compared and combined, without arithmetic); :func:`if_branches` splits an ``if``
+command into its conditions and commands.
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["ScriptError", "LocatedError", "Script", "MAX_JUMPS", "MAX_DEPTH", "logical_lines", "strip_comment",
+           "unquoted", "words", "evaluate_boolean", "if_branches"]
+
+_TRIPLE = '"""'
+
+
+class ScriptError(ValueError):
+    """Why a line is not a command LAMMPS would run (the caller names the line)."""
+
+
+def _segments(line: str):
+    """(text, quote) pieces of ``line``: quote is "" outside quotes, else the quote that opened the
+    piece (the quotes themselves belong to the quoted piece). LAMMPS' own scan: a quote anywhere,
+    even inside a word, opens or closes."""
+    out, start, quote, k = [], 0, "", 0
+    while k < len(line):
+        if not quote:
+            opening = _TRIPLE if line.startswith(_TRIPLE, k) else line[k] if line[k] in "\"'" else ""
+            if opening:
+                if k > start:
+                    out.append((line[start:k], ""))
+                start, quote = k, opening
+                k += len(opening)
+                continue
+        elif line.startswith(quote, k):
+            k += len(quote)
+            out.append((line[start:k], quote))
+            start, quote = k, ""
+            continue
+        k += 1
+    if start < len(line):
+        out.append((line[start:], quote))
+    return out
+
+
+def strip_comment(line: str) -> str:
+    """``line`` up to its first ``#`` outside quotes."""
+    kept = []
+    for text, quote in _segments(line):
+        if not quote and "#" in text:
+            kept.append(text.split("#", 1)[0])
+            break
+        kept.append(text)
+    return "".join(kept)
+
+
+def logical_lines(text: str) -> list[tuple[int, str]]:
+    """(number of the first physical line, command text) of every non-blank command in ``text``:
+    continuations joined, comments removed, quotes kept."""
+    out, pending, start = [], "", 0
+    for n, raw in enumerate(text.splitlines(), 1):
+        if not pending:
+            start = n
+        pending += raw
+        if pending.count(_TRIPLE) % 2:
+            pending += "\n"          # an open triple quote: the text goes on, newline and all
+            continue
+        body = pending.rstrip()
+        if body.endswith("&"):
+            pending = body[:-1]
+            continue
+        line = strip_comment(pending).strip()
+        pending = ""
+        if line:
+            out.append((start, line))
+    if pending.strip() and strip_comment(pending).strip():
+        out.append((start, strip_comment(pending).strip()))   # LAMMPS runs an unfinished last line too
+    return out
+
+
+def unquoted(line: str, substitute) -> str:
+    """``line`` with ``substitute(text)`` applied to each piece outside quotes."""
+    return "".join(text if quote else substitute(text) for text, quote in _segments(line))
+
+
+def words(line: str) -> list[str]:
+    """The words of a command: split at whitespace, a quoted text one word without its quotes.
+    ScriptError where a quote is not closed, or a closing quote runs into more text (LAMMPS stops
+    on both)."""
+    out, k, n = [], 0, len(line)
+    while k < n:
+        if line[k].isspace():
+            k += 1
+            continue
+        quote = _TRIPLE if line.startswith(_TRIPLE, k) else line[k] if line[k] in "\"'" else ""
+        if quote:
+            end = line.find(quote, k + len(quote))
+            if end < 0:
+                raise ScriptError(f"a {quote} quote is not closed (LAMMPS stops: unbalanced quotes)")
+            after = end + len(quote)
+            if after < n and not line[after].isspace():
+                raise ScriptError(f"text runs on after a closing {quote} quote (LAMMPS stops: unbalanced quotes)")
+            out.append(line[k + len(quote):end])
+            k = after
+        else:
+            end = k
+            while end < n and not line[end].isspace():
+                end += 1
+            out.append(line[k:end])
+            k = end
+    return out
+
+
+# ---------------------------------------------------------------------------- if conditions
+#: LAMMPS' precedence of the Boolean operators (Variable's constructor): higher binds tighter
+_BINARY = {"||": 1, "|^": 1, "&&": 2, "==": 3, "!=": 3, "<": 4, "<=": 4, ">": 4, ">=": 4}
+_TOKEN = re.compile(r"\s*(?:(?P<num>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?![\w.])"
+                    r"|(?P<str>[A-Za-z_]\w*)|(?P<op>\|\||\|\^|&&|==|!=|<=|>=|<|>|!|\(|\)))")
+
+
+class _Undecided(Exception):
+    """The condition holds something this reader does not evaluate, or LAMMPS would stop on it."""
+
+
+def evaluate_boolean(text: str) -> bool | None:
+    """The truth of an ``if`` condition, its variables already substituted, as LAMMPS decides it:
+    numbers, and strings (a letter, then letters, digits and _) compared with == and !=; numbers
+    compared with < <= > >= and combined with && || |^ (exclusive or) and !; parentheses. Any
+    other text (arithmetic, a variable left unsubstituted, a string compared with a number, a
+    lone string: LAMMPS stops on the last two) gives None: never a guess."""
+    tokens, k = [], 0
+    text = text.strip()
+    while k < len(text):
+        m = _TOKEN.match(text, k)
+        if not m or m.end() == k:
+            return None
+        kind = m.lastgroup
+        tokens.append((kind, float(m.group(kind)) if kind == "num" else m.group(kind)))
+        k = m.end()
+        while k < len(text) and text[k].isspace():
+            k += 1
+    try:
+        value, rest = _expression(tokens, 0, 0)
+        if rest != len(tokens) or isinstance(value, str):
+            return None
+    except (_Undecided, RecursionError):     # parentheses nested past Python's stack: not decided
+        return None
+    return value != 0.0
+
+
+def _expression(tokens: list, k: int, floor: int):
+    """Precedence climbing from tokens[k]: (value, next index); binary operators bind left to right."""
+    left, k = _operand(tokens, k)
+    while k < len(tokens) and tokens[k][0] == "op" and _BINARY.get(tokens[k][1], 0) > floor:
+        op = tokens[k][1]
+        right, k = _expression(tokens, k + 1, _BINARY[op])
+        left = _apply(op, left, right)
+    return left, k
+
+
+def _operand(tokens: list, k: int):
+    if k >= len(tokens):
+        raise _Undecided
+    kind, value = tokens[k]
+    if kind == "op" and value == "!":
+        inner, k = _operand(tokens, k + 1)
+        if isinstance(inner, str):
+            raise _Undecided
+        return float(inner == 0.0), k
+    if kind == "op" and value == "(":
+        inner, k = _expression(tokens, k + 1, 0)
+        if k >= len(tokens) or tokens[k] != ("op", ")") or isinstance(inner, str):
+            raise _Undecided            # LAMMPS: a parenthesised lone string stops it too
+        return inner, k + 1
+    if kind == "op":
+        raise _Undecided
+    return value, k + 1
+
+
+def _apply(op: str, a, b) -> float:
+    if op in ("==", "!="):
+        if isinstance(a, str) != isinstance(b, str):
+            raise _Undecided            # LAMMPS stops: a string compared with a number
+        return float((a == b) == (op == "=="))
+    if isinstance(a, str) or isinstance(b, str):
+        raise _Undecided                # LAMMPS stops: only == and != take strings
+    return float({"<": a < b, "<=": a <= b, ">": a > b, ">=": a >= b, "&&": a != 0.0 and b != 0.0,
+                  "||": a != 0.0 or b != 0.0, "|^": (a != 0.0) != (b != 0.0)}[op])
+
+
+def if_branches(args: list[str]) -> list[tuple[str | None, list[str]]]:
+    """``if`` command's words after ``if`` (boolean then t1 t2 ... elif boolean f1 ... else e1 ...)
+    as [(condition, commands)], the else branch with condition None; ScriptError where LAMMPS
+    stops on its form (no then, a branch without commands)."""
+    if len(args) < 3 or args[1] != "then":
+        raise ScriptError("if needs: if boolean then command ... (LAMMPS stops: illegal if command)")
+    branches, condition, k = [], args[0], 2
+    while True:
+        end = k
+        while end < len(args) and args[end] not in ("elif", "else"):
+            end += 1
+        if end == k:
+            raise ScriptError("a branch of if without a command (LAMMPS stops: illegal if command)")
+        branches.append((condition, args[k:end]))
+        if end == len(args):
+            return branches
+        if args[end] == "elif":
+            if end + 1 >= len(args):
+                raise ScriptError("elif without a condition (LAMMPS stops: illegal if command)")
+            condition, k = args[end + 1], end + 2
+        else:
+            if branches[-1][0] is None:
+                raise ScriptError("a second else (LAMMPS stops: illegal if command)")
+            condition, k = None, end + 1
+
+
+# ---------------------------------------------------------------------------- control flow
+#: Jumps followed before a deck counts as a loop the reader does not finish
+MAX_JUMPS = 10_000
+#: include files (and jumps to other files) nested deeper than this are a loop
+MAX_DEPTH = 16
+_REFERENCE = re.compile(r"\$\{(\w+)\}|\$\(((?:[^()]|\([^()]*\))*)\)|\$(\w)")
+
+
+class LocatedError(ScriptError):
+    """A ScriptError with the line it belongs to: ``loc`` (file or None, line number), ``text``."""
+
+    def __init__(self, why: str, loc, text: str):
+        super().__init__(why)
+        self.loc, self.text = loc, text
+
+
+class _Quit(Exception):
+    """LAMMPS' quit: nothing after it runs."""
+
+
+class Script:
+    """One pass through a deck as LAMMPS runs it: its variables (index, loop, string, world,
+    universe, equal), ``include``, ``if``/``elif``/``else``, ``jump``/``label`` (a jump to another
+    file leaves the current one, as LAMMPS replaces its input file), ``next`` (index and loop
+    variables; an exhausted one skips the next jump) and ``quit``; every other command goes to
+    ``execute``.
+
+    Parameters
+    ----------
+    execute : callable
+        ``execute(words, line, loc)`` for every other command that runs: its words (quotes
+        removed), its substituted text and ``loc`` = (file name or None, line number).
+    evaluate : callable
+        ``evaluate(expression, variables)``: an equal-style expression's value, or None.
+    note : callable
+        ``note(loc, line, why)``: a line whose effect the reader does not know, never guessed.
+    fetch : callable
+        ``fetch(name, loc, line)``: the text of a file the deck names.
+    inert : set
+        Commands that cannot change what the caller reads: a branch of an ``if`` whose condition
+        the reader cannot evaluate may hold only these (and variables, then unknown).
+    """
+
+    def __init__(self, execute, evaluate, note, fetch, inert=frozenset()):
+        self.execute, self.evaluate, self.note, self.fetch, self.inert = execute, evaluate, note, fetch, inert
+        self.variables: dict = {}       # name -> value (str or float), None where not evaluated
+        self._sequence: dict = {}       # index and loop variables: name -> [values, position]
+        self._equal: dict = {}          # equal-style name -> expression, evaluated again after next
+        self._skip_jump = False
+        self.jumps = 0
+
+    def run(self, text: str) -> None:
+        """Run the deck ``text`` (the file LAMMPS is started with) to its end or its quit."""
+        try:
+            self._file(text, None, 0, None)
+        except _Quit:
+            pass
+
+    def substitute(self, text: str) -> str:
+        """LAMMPS' substitution of $x, ${name} and the immediate $(expression): a variable without
+        a known value is left as <unevaluated-variable-NAME> (a command that needs it then says so)."""
+        def subst(m):
+            if m.group(2) is not None:
+                value = self.evaluate(m.group(2).split(":")[0], self.variables)    # $(expr:format)
+                return "<unevaluated-expression>" if value is None else repr(value)
+            name = m.group(1) or m.group(3)
+            if self.variables.get(name) is None:
+                return f"<unevaluated-variable-{name}>"
+            value = self.variables[name]
+            return repr(value) if isinstance(value, float) else str(value)
+        return _REFERENCE.sub(subst, text)
+
+    def _file(self, text: str, source, depth: int, label, loc=None, line: str = "") -> None:
+        """Run a file from its top, or from ``label`` (the jump at ``loc``, ``line`` named where absent)."""
+        lines = logical_lines(text)
+        k = 0 if label is None else self._label(lines, label, loc, line)
+        while k < len(lines):
+            n, raw = lines[k]
+            k += 1
+            jump = self._command(raw, (source, n), depth)
+            if jump is None:
+                continue
+            name, target, loc, line = jump
+            self.jumps += 1
+            if self.jumps > MAX_JUMPS:
+                raise LocatedError(f"more than {MAX_JUMPS} jumps: a loop the reader does not finish", loc, line)
+            if name != "SELF":
+                self._enter(name, loc, line, depth, target)
+                return                   # LAMMPS reads the other file in place of this one
+            k = 0 if target is None else self._label(lines, target, loc, line)
+
+    @staticmethod
+    def _label(lines: list, label: str, loc, line: str) -> int:
+        """Index after the first ``label LABEL`` of the file: LAMMPS searches from its top."""
+        for k, (_, raw) in enumerate(lines):
+            try:
+                w = words(raw)
+            except ScriptError:
+                continue
+            if len(w) >= 2 and w[0] == "label" and w[1] == label:
+                return k + 1
+        raise LocatedError(f"label {label} is not in the file (LAMMPS stops: label wasn't found)", loc, line)
+
+    def _enter(self, name: str, loc, line: str, depth: int, label) -> None:
+        if depth >= MAX_DEPTH:
+            raise LocatedError(f"includes or jumps to other files nested deeper than {MAX_DEPTH}: a loop", loc, line)
+        self._file(self.fetch(name, loc, line), name, depth + 1, label, loc, line)
+
+    def _command(self, raw: str, loc, depth: int):
+        """Run one command; a jump to follow as (file, label or None, loc, line), else None."""
+        # runs of blanks outside quotes are one (the line as shown), as LAMMPS splits its words
+        line = unquoted(strip_comment(raw), lambda text: re.sub(r"\s+", " ", self.substitute(text))).strip()
+        if not line:
+            return None
+        try:
+            w = words(line)
+        except ScriptError as why:
+            raise LocatedError(str(why), loc, line) from None
+        cmd = w[0]
+        if cmd == "if":
+            return self._if(w, line, loc, depth)
+        if cmd == "jump":
+            return self._jump(w, line, loc)
+        if cmd == "next":
+            self._next(w, line, loc)
+        elif cmd == "quit":
+            raise _Quit
+        elif cmd == "include" and len(w) == 2:
+            self._enter(w[1], loc, line, depth, None)
+        elif cmd == "variable" and len(w) >= 3:
+            self._variable(w, line, loc)
+        elif cmd != "label":
+            self.execute(w, line, loc)
+        return None
+
+    def _jump(self, w: list, line: str, loc):
+        if len(w) not in (2, 3):
+            raise LocatedError("jump needs a file (or SELF) and at most a label", loc, line)
+        if self._skip_jump:              # the jump after an exhausted next: the loop ends
+            self._skip_jump = False
+            return None
+        if any("<unevaluated" in x for x in w[1:]):
+            raise LocatedError("where this jump goes depends on a variable the reader does not evaluate", loc, line)
+        return w[1], (w[2] if len(w) == 3 else None), loc, line
+
+    def _if(self, w: list, line: str, loc, depth: int):
+        try:
+            branches = if_branches(w[1:])
+        except ScriptError as why:
+            raise LocatedError(str(why), loc, line) from None
+        for k, (condition, commands) in enumerate(branches):
+            if condition is not None:
+                truth = evaluate_boolean(self.substitute(condition))
+                if truth is None:
+                    self._undecided(branches[k:], condition, line, loc)
+                    return None
+                if not truth:
+                    continue
+            jump = None
+            for command in commands:     # LAMMPS runs them all; a jump takes effect after
+                jump = self._command(command, loc, depth) or jump
+            return jump
+        return None
+
+    def _undecided(self, branches: list, condition: str, line: str, loc) -> None:
+        """An if whose condition the reader cannot evaluate: harmless where every command it might
+        run is inert (variables it sets become unknown), else the deck is refused."""
+        assigned = []
+        for _, commands in branches:
+            for command in commands:
+                try:
+                    w = words(strip_comment(command))
+                except ScriptError:
+                    w = [command]
+                if w and w[0] == "variable" and len(w) >= 2:
+                    assigned.append(w[1])
+                elif w and w[0] not in self.inert:
+                    shown = " ".join(condition.split())
+                    raise LocatedError(f"which commands run depends on the condition \"{shown}\", which the reader "
+                                       f"cannot evaluate, and a branch runs {w[0]}: not guessed", loc, line)
+        for name in assigned:
+            self.variables[name] = None
+            self._sequence.pop(name, None)
+            self._equal.pop(name, None)
+        self.note(loc, line, "condition not evaluated; its branches change no contact"
+                  + (f" (variables {', '.join(assigned)} unknown after it)" if assigned else ""))
+
+    def _variable(self, w: list, line: str, loc) -> None:
+        name, style, args = w[1], w[2], w[3:]
+        if style == "delete":
+            for table in (self.variables, self._sequence, self._equal):
+                table.pop(name, None)
+            return
+        if style in ("index", "loop", "world", "universe", "uloop") and name in self.variables:
+            return            # LAMMPS ignores a second definition of these (the command line's -var wins)
+        self._sequence.pop(name, None)
+        self._equal.pop(name, None)
+        value = None
+        if style == "index" and args:
+            self._sequence[name] = [args, 0]
+        elif style == "loop" and args:
+            values = _loop_values(args)
+            if values is not None:
+                self._sequence[name] = [values, 0]
+        elif style in ("string", "world", "universe") and args:
+            value = args[0]
+        elif style == "uloop" and args:
+            value = "1"
+        elif style == "equal" and args:
+            self._equal[name] = " ".join(args)
+            value = self.evaluate(self._equal[name], self.variables)
+        if name in self._sequence:
+            value = self._sequence[name][0][0]
+        self.variables[name] = value
+        if value is None:
+            self.note(loc, line, "variable not evaluated")
+        self._refresh()
+
+    def _next(self, w: list, line: str, loc) -> None:
+        if len(w) < 2:
+            raise LocatedError("next needs a variable (LAMMPS stops: illegal next command)", loc, line)
+        for name in w[1:]:
+            if name not in self._sequence:
+                raise LocatedError(f"next {name}: the reader follows next on index and loop variables only (a loop "
+                                   "may run again with values it does not know)", loc, line)
+        for name in w[1:]:
+            entry = self._sequence[name]
+            entry[1] += 1
+            if entry[1] < len(entry[0]):
+                self.variables[name] = entry[0][entry[1]]
+            else:                        # exhausted: LAMMPS deletes it and skips the next jump
+                del self._sequence[name]
+                self.variables.pop(name, None)
+                self._skip_jump = True
+        self._refresh()
+
+    def _refresh(self) -> None:
+        """Equal-style variables are evaluated where used: after next, with the new values."""
+        for name, expr in self._equal.items():
+            self.variables[name] = self.evaluate(expr, self.variables)
+
+
+def _loop_values(args: list):
+    """loop N [pad] (1..N) or loop N1 N2 [pad] (N1..N2), pad giving each the width of the last;
+    None where the bounds are not integers."""
+    pad = args[-1] == "pad"
+    bounds = args[:-1] if pad else args
+    if not 1 <= len(bounds) <= 2 or not all(re.fullmatch(r"\d+", b) for b in bounds):
+        return None
+    lo, hi = (1, int(bounds[0])) if len(bounds) == 1 else (int(bounds[0]), int(bounds[1]))
+    if hi < lo:
+        return None                      # LAMMPS stops on it
+    width = len(str(hi)) if pad else 0
+    return _Loop(lo, hi, width)
+
+
+class _Loop:
+    """A loop variable's values as strings, without listing them (a loop may count to 10^9)."""
+
+    def __init__(self, lo: int, hi: int, width: int):
+        self.lo, self.hi, self.width = lo, hi, width
+
+    def __len__(self) -> int:
+        return max(0, self.hi - self.lo + 1)
+
+    def __getitem__(self, k: int) -> str:
+        return str(self.lo + k).zfill(self.width)
