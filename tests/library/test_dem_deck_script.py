@@ -1,7 +1,7 @@
 """`restitution deck` runs a deck as LAMMPS does: ``if``/``elif``/``else``, ``jump``/``label``,
-``next`` loops and ``quit``; quoted text is not a command. Issue 42's "silently wrong, exit 0" items
-1 and 2, each deck as a user would write it. Where LAMMPS decides the truth, the engine check below
-runs the deck's own lines in it."""
+``next`` loops and ``quit``; quoted text is not a command; a later pair_style of another style
+discards the coefficients. Issue 42's "silently wrong, exit 0" items 1-3, each deck as a user would
+write it. Where LAMMPS decides the truth, the engine check below runs the deck's own lines in it."""
 
 import io
 import json
@@ -156,12 +156,33 @@ def test_the_script_is_split_as_lammps_splits_it():
         "if", "${a} == 1", "then", "pair_coeff 1 1", "else", 'print "x"']
 
 
+# ------------------------------------------------------------------------- item 3: pair_style again
+def test_another_pair_style_discards_the_coefficients(tmp_path):
+    """LAMMPS keeps pair coefficients only for the same style: after another one it stops at the
+    run, "All pair coeffs are not set" (checked in LAMMPS). Before: eps 0.5 for every pair."""
+    text = HEAD + coeff(0.5) + "\npair_style gran/hooke 2000 NULL 50 NULL 0.5 0\npair_coeff * *\n" \
+        "pair_style granular\nrun 10\n"
+    err = refused(tmp_path, text)
+    assert "types 1 1" in err and "line 10, another style, discarded" in err and "all pair coeffs are not set" in err
+    same = HEAD + coeff(0.5) + "\npair_style granular\nrun 10\n"
+    assert eps_of(tmp_path, same)[0] == 0.5
+    again = text.replace("run 10", coeff(0.7) + "\nrun 10")
+    assert eps_of(tmp_path, again)[0] == 0.7
+
+
+def test_an_older_style_needs_its_pair_coeff_line(tmp_path):
+    text = HEAD.replace("pair_style granular", "pair_style gran/hooke 2000 NULL 50 NULL 0.5 0")
+    assert "types 1 1" in refused(tmp_path, text)
+
+
 # ------------------------------------------------------------------------ LAMMPS decides the truth
 HEAD1 = HEAD.replace("create_box 2", "create_box 1").replace("set type 2 diameter 0.002 density 2500\n", "")
 ENGINE_CASES = {
     "jump": (IF_JUMP.format(flag=0, soft=coeff(0.6, "1 1"), hard=coeff(0.9, "1 1")), 0.6),
     "if": (coeff(0.5, "1 1") + f'\nvariable m string glass\nif "${{m}} == glass" then "{coeff(0.9, "1 1")}"\n', 0.9),
     "quotes": (coeff(0.5, "1 1") + '\nprint """\n' + coeff(0.9, "1 1") + '\n"""\n', 0.5),
+    "restyle": (coeff(0.5, "1 1") + "\npair_style gran/hooke 2000 NULL 50 NULL 0.5 0\npair_coeff * *\n"
+                "pair_style granular\n", None),
 }
 
 
@@ -171,7 +192,8 @@ ENGINE_CASES = {
 def test_lammps_runs_the_lines_the_reader_reads(tmp_path, case):
     """The deck's contact lines included into a head-on run in LAMMPS (so its own jump, if and
     quotes decide), extrapolated to dt = 0 from 16000 steps (coeff_restitution ending on the overlap
-    carries a fractional-order term): the audit's eps to 1e-6."""
+    carries a fractional-order term): the audit's eps to 1e-6; where the reader refuses
+    (another pair style, no new coefficients) LAMMPS stops."""
     from restitution.dem.codes import Pair
     from restitution.dem.contact import Contact
     from restitution.dem.lammps import available, lammps_eps_extrapolated
@@ -181,6 +203,11 @@ def test_lammps_runs_the_lines_the_reader_reads(tmp_path, case):
     (tmp_path / "contact.in").write_text(lines)
     pair, g = Pair.spheres(0.001, 0.001, 2500.0), 0.5
     include = f"include {tmp_path / 'contact.in'}"
+    if e is None:
+        refused(tmp_path, HEAD1 + lines + "run 10\n")
+        with pytest.raises(Exception, match="All pair coeffs are not set"):
+            lammps_eps_extrapolated(pair, include, g, 1e-4)
+        return
     status, out, err = run(tmp_path, HEAD1 + lines, "--json")
     p = json.loads(out)["pairs"][0]
     assert status == 0 and p["eps"][0] == pytest.approx(e, abs=1e-9), err

@@ -26,7 +26,8 @@ Tangential, rolling and twisting models take no part in a head-on collision and 
 The deck runs as LAMMPS runs it (:mod:`restitution.dem.deck_script`): ``if`` with a condition the
 reader can evaluate, ``jump``/``label``, ``next`` loops and ``quit`` decide which lines run; quoted
 text is not a command; where which contact lines run depends on what the reader cannot decide,
-the deck is refused naming the line.
+the deck is refused naming the line. A ``pair_style`` of another style discards the coefficients,
+as in LAMMPS.
 
 Files the deck names (``include``, ``jump``, ``read_data``) are read through a ``read_file``
 callable (the CLI resolves their names against the deck's directory, where LAMMPS is normally
@@ -131,6 +132,8 @@ class Deck:
     empty_groups: set = field(default_factory=set)   # groups by type defined before any atom existed
     # group ID -> [(the command that inserts atoms into it, their types or None where not known)]
     filled_groups: dict = field(default_factory=dict)
+    style: str = ""                               # the pair style (LAMMPS keeps coefficients for the same)
+    reset: tuple = ()                             # (loc, text) of a pair_style of another that discarded them
 
 
 _ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
@@ -385,6 +388,13 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
 def _pair_style(deck, words, where, line, loc):
     style = words[1]
     deck.style_line = (loc, line)
+    if deck.style and style != deck.style:
+        # LAMMPS keeps the coefficients for the same style (its settings change); another style
+        # starts without any, and LAMMPS stops at the next run unless new pair_coeff lines follow
+        if deck.coeffs or deck.gran:
+            deck.reset = (loc, line)
+        deck.coeffs, deck.gran = {}, {}
+    deck.style = style
     if style == "granular":
         deck.code = "LAMMPS"
         return
@@ -441,8 +451,8 @@ def _gran_law(style: str, params: list, units: str, where: str, line: str) -> di
 
 
 def _pair_coeff(deck, words, where, line, loc):
-    if deck.code == "LIGGGHTS" or deck.gran:
-        return                       # `pair_coeff * *`: the coefficients come from property/global or the style
+    if deck.code == "LIGGGHTS":
+        return                       # `pair_coeff * *`: the coefficients come from property/global
     if deck.code != "LAMMPS":
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     for i in _types(words[1], deck.ntypes, where, line):
@@ -650,6 +660,12 @@ def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
 
 
 def _lammps_pair(deck: Deck, i: int, j: int) -> dict:
+    if (i, j) not in deck.coeffs and ((i, i) not in deck.coeffs or (j, j) not in deck.coeffs):
+        why = (f" (pair_style at {_where(deck.reset[0])}, another style, discarded the earlier ones)"
+               if deck.reset else "")
+        raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair, nor both {i} {i} "
+                                                         f"and {j} {j}, from which LAMMPS would mix it{why}: LAMMPS "
+                                                         "stops (all pair coeffs are not set)")
     if deck.gran:
         pair = _pair(deck, i, j)
         loc = deck.style_line[0]
@@ -663,9 +679,6 @@ def _lammps_pair(deck: Deck, i: int, j: int) -> dict:
         stiffness = None
         mixed_from = None
     else:
-        if (i, i) not in deck.coeffs or (j, j) not in deck.coeffs:
-            raise DeckError("pair_coeff", f"types {i} {j}", "no pair_coeff line covers this type pair, nor both "
-                                                             f"{i} {i} and {j} {j}, from which LAMMPS would mix it")
         (loc, wi), (loc_j, wj) = deck.coeffs[(i, i)], deck.coeffs[(j, j)]
         ci = _coeff(deck, wi, _where(loc), " ".join(wi))
         cj = _coeff(deck, wj, _where(loc_j), " ".join(wj))
