@@ -248,21 +248,33 @@ def _run_deck(args, out) -> None:
     for row in res["unknown_lines"]:     # never guessed: each named, one per line
         where = f"{row['file']} line {row['line']}" if row["file"] else f"line {row['line']}"
         print(f"restitution deck: {where} {row['why']}: {row['text']}", file=sys.stderr)
-    rows = [(p, f"types {p['types'][0]} {p['types'][1]}", "R1 + R2", "the spheres through each other",
-             "the spheres together") for p in res["pairs"]]
-    rows += [(w, f"type {w['types'][0]} on wall {w['wall']}", "the radius", "the sphere through the wall",
-              "the sphere on the wall") for w in res["walls"]]
-    for p, name, reach, pushed, _ in rows:   # no eps there: said on stderr too, where a --json reader looks
+    stages = res["stages"]
+    if len(stages) > 1:                # a --json reader that takes "pairs" alone learns it here
+        print(f"restitution deck: the contact settings change between runs: {len(stages)} stages, each reported "
+              "(\"stages\" in --json; \"pairs\" and \"walls\" are the last one's)", file=sys.stderr)
+    rows = []
+    for k, stage in enumerate(stages, 1):
+        head = _stage_head(stage, k, len(stages))
+        rows += [(p, f"types {p['types'][0]} {p['types'][1]}", "R1 + R2", "the spheres through each other",
+                  "the spheres together", head) for p in stage["pairs"]]
+        rows += [(w, f"type {w['types'][0]} on wall {w['wall']}", "the radius", "the sphere through the wall",
+                  "the sphere on the wall", head) for w in stage["walls"]]
+    for p, name, reach, pushed, _, head in rows:   # no eps there: said on stderr too, where a --json reader looks
         through = [g for g, t in zip(p["speeds"], p["passes_through"]) if t]
         if through:
-            print(f"restitution deck: {name}: the engine pushes {pushed} from g = {min(through):.4g} on (the "
+            where = f" ({head.removeprefix('# ')})" if head else ""
+            print(f"restitution deck: {name}{where}: the engine pushes {pushed} from g = {min(through):.4g} on (the "
                   f"largest overlap reaches {reach}): no eps there", file=sys.stderr)
     if args.json:
         _write_json(res, out)
         return
     if res["ignored"]:
         out.write(f"# {res['code']} deck; no part in a head-on contact: {', '.join(res['ignored'])}\n")
-    for p, name, reach, pushed, kept in rows:
+    shown = None
+    for p, name, reach, pushed, kept, head in rows:
+        if head and head != shown:
+            out.write(head + "\n")
+            shown = head
         typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
         out.write(f"{name}: {p['model']} ({typed}), end rule {p['end']}\n")
         for g, e, stick, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
@@ -274,6 +286,16 @@ def _run_deck(args, out) -> None:
             t, w = p["types"][0], p.get("wall_type")
             shared = f" (entry {t} {w}: types {min(t, w)} {max(t, w)} get eps = e from it too)" if w else ""
             out.write(f"  for eps = e exactly{shared}: {p['exact_line']}\n")
+
+
+def _stage_head(stage: dict, k: int, n: int) -> str:
+    """The text output's heading of stage k of n (none where the deck has one stage)."""
+    if n == 1:
+        return ""
+    runs = stage["runs"]
+    where = ", ".join(f"{r['file']} line {r['line']}" if r["file"] else f"line {r['line']}" for r in runs[:5])
+    more = f" and {len(runs) - 5} more" if len(runs) > 5 else ""
+    return f"# stage {k} of {n}: the contact settings of the run{'s' if len(runs) > 1 else ''} at {where}{more}"
 
 
 def add_lammps_subcommand(subparsers) -> None:

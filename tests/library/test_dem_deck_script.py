@@ -1,7 +1,8 @@
 """`restitution deck` runs a deck as LAMMPS does: ``if``/``elif``/``else``, ``jump``/``label``,
 ``next`` loops and ``quit``; quoted text is not a command; a later pair_style of another style
-discards the coefficients. Issue 42's "silently wrong, exit 0" items 1-3, each deck as a user would
-write it. Where LAMMPS decides the truth, the engine check below runs the deck's own lines in it."""
+discards the coefficients; every run whose contact settings differ is reported. Issue 42's "silently
+wrong, exit 0" items 1-4, each deck as a user would write it. Where LAMMPS decides the truth, the
+engine check below runs the deck's own lines in it."""
 
 import io
 import json
@@ -50,6 +51,11 @@ def eps_of(tmp_path, text, files=None):
     """The eps of pair 1 1 (of the last run with other contact settings), and stderr."""
     res, err = audit(tmp_path, text, files)
     return round(res["pairs"][0]["eps"][0], 9), err
+
+
+def stage_eps(tmp_path, text):
+    """The eps of pair 1 1 at each stage."""
+    return [round(st["pairs"][0]["eps"][0], 9) for st in audit(tmp_path, text)[0]["stages"]]
 
 
 def refused(tmp_path, text, files=None):
@@ -104,6 +110,14 @@ def test_a_jump_to_another_file_leaves_this_one(tmp_path):
     text = HEAD + "jump in.soft start\n" + coeff(0.9) + "\n"
     files = {"in.soft": "print skipped\nlabel start\n" + coeff(0.6) + "\n"}
     assert eps_of(tmp_path, text, files)[0] == 0.6
+
+
+def test_a_next_loop_runs_each_value_and_each_run_is_a_stage(tmp_path):
+    text = HEAD + "variable e index 0.5 0.7\nlabel loop\n" + coeff("${e}") + "\nrun 10\nnext e\njump SELF loop\n"
+    assert stage_eps(tmp_path, text) == [0.5, 0.7]
+    looped = HEAD + "variable k loop 3\nvariable e equal 0.1+0.2*v_k\nlabel again\n" + coeff("${e}") + \
+        "\nrun 10\nnext k\njump SELF again\n"
+    assert stage_eps(tmp_path, looped) == [0.3, 0.5, 0.7]
 
 
 @pytest.mark.parametrize("lines, word", [
@@ -173,6 +187,29 @@ def test_another_pair_style_discards_the_coefficients(tmp_path):
 def test_an_older_style_needs_its_pair_coeff_line(tmp_path):
     text = HEAD.replace("pair_style granular", "pair_style gran/hooke 2000 NULL 50 NULL 0.5 0")
     assert "types 1 1" in refused(tmp_path, text)
+
+
+# ---------------------------------------------------------------------------------- item 4: stages
+STAGED = HEAD + coeff(0.3) + "\nrun 1000\nrun 1000\n" + coeff(0.8) + "\nrun 5000\n"
+
+
+def test_every_run_whose_contact_settings_differ_is_reported(tmp_path):
+    """A fill stage (e 0.3), then production (e 0.8). Before: only 0.8, nothing said."""
+    assert stage_eps(tmp_path, STAGED) == [0.3, 0.8]
+    assert "2 stages, each reported" in audit(tmp_path, STAGED)[1]
+    status, out, _ = run(tmp_path, STAGED)
+    assert status == 0
+    assert "# stage 1 of 2: the contact settings of the runs at line 8, line 9" in out
+    assert "# stage 2 of 2: the contact settings of the run at line 11" in out
+    assert out.index("eps 0.3000000000") < out.index("# stage 2") < out.index("eps 0.8000000000")
+    status, out, _ = run(tmp_path, STAGED, "--json")
+    res = json.loads(out)
+    assert [r["line"] for r in res["stages"][0]["runs"]] == [8, 9] and res["pairs"] == res["stages"][1]["pairs"]
+
+
+def test_settings_after_the_last_run_are_named_not_audited(tmp_path):
+    e, err = eps_of(tmp_path, HEAD + coeff(0.3) + "\nrun 1000\n" + coeff(0.8) + "\n")
+    assert e == 0.3 and "line 8 the contact settings change after this, the deck's last run" in err
 
 
 # ------------------------------------------------------------------------ LAMMPS decides the truth

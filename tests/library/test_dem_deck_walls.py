@@ -318,16 +318,17 @@ def test_the_walls_group_gives_its_types(tmp_path, group_lines, types):
 @pytest.mark.parametrize("before, after, why", [
     ("", "", "is defined by type before any atom exists"),          # no atom at all in the deck
     ("", "create_atoms 1 random 20 4242 NULL", "is defined by type before any atom exists"),
-    ("", "fix feed all pour 100 1 4242 region feeder\nrun 1000", "is defined by type before any atom exists"),
+    ("", "fix feed all pour 100 1 4242 region feeder", "is defined by type before any atom exists"),
     ("create_atoms 1 random 20 4242 NULL", "fix feed g insert/pack seed 10007 distributiontemplate pdd",
      "also holds the atoms fix feed (insert/pack) inserts"),
 ])
 def test_a_group_that_holds_no_atom_or_unknown_ones_names_its_wall(tmp_path, before, after, why):
     """Groups are static: a group by type defined before any atom exists holds none (LAMMPS lets a
     sphere of that type through the wall: measured), and atoms a fix inserts into a group may be of
-    any type. Either way the wall is named, not audited; the group defined after atoms exist is."""
+    any type. Either way the wall is named, not audited; the group defined after atoms exist is.
+    (The run comes after the wall: a wall defined after the deck's last run acts in no run.)"""
     head = LAMMPS_DECK.split("create_atoms")[0]
-    text = head + "\n".join([before, "group g type 1", after, DASHPOT_WALL.replace(" all ", " g ")]) + "\n"
+    text = head + "\n".join([before, "group g type 1", after, DASHPOT_WALL.replace(" all ", " g "), "run 1000"]) + "\n"
     res, err = audit(tmp_path, text, 1.0)
     assert res["walls"] == [] and [why in row["why"] for row in res["unknown_lines"]] == [True], res["unknown_lines"]
     assert err.count("\n") == 1 and "fix w2 g wall/gran" in err

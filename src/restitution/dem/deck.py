@@ -27,7 +27,8 @@ The deck runs as LAMMPS runs it (:mod:`restitution.dem.deck_script`): ``if`` wit
 reader can evaluate, ``jump``/``label``, ``next`` loops and ``quit`` decide which lines run; quoted
 text is not a command; where which contact lines run depends on what the reader cannot decide,
 the deck is refused naming the line. A ``pair_style`` of another style discards the coefficients,
-as in LAMMPS.
+as in LAMMPS. Each ``run`` sees the settings of its moment: every change between runs is a stage
+of its own, audited.
 
 Files the deck names (``include``, ``jump``, ``read_data``) are read through a ``read_file``
 callable (the CLI resolves their names against the deck's directory, where LAMMPS is normally
@@ -42,6 +43,7 @@ is named on its line, and a number needed from it ends the audit in one line.
 
 from __future__ import annotations
 
+import copy
 import math
 import re
 from dataclasses import dataclass, field
@@ -96,6 +98,8 @@ _SPHERE_STYLES = ("sphere", "granular")
 #: Commands the reader needs and their least number of words (the command included): shorter,
 #: LAMMPS stops on them too
 _NEEDS_WORDS = {"create_box": 2, "pair_style": 2, "pair_coeff": 3}
+#: Runs with different contact settings the audit reports before it refuses the deck
+MAX_STAGES = 100
 #: Commands that may sit in a branch of an if whose condition the reader cannot evaluate: they
 #: neither make atoms, nor run, nor change the contact
 _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms"})
@@ -134,6 +138,8 @@ class Deck:
     filled_groups: dict = field(default_factory=dict)
     style: str = ""                               # the pair style (LAMMPS keeps coefficients for the same)
     reset: tuple = ()                             # (loc, text) of a pair_style of another that discarded them
+    # (run locations, the deck as that run sees it, its contact key), one per change of contact settings
+    stages: list = field(default_factory=list)
 
 
 _ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
@@ -240,14 +246,16 @@ def read_deck(text: str, radius: dict | None = None, density: dict | None = None
     Returns
     -------
     Deck
-        The settings after the deck's last line.
+        The settings after the deck's last line; ``stages`` holds the settings each ``run`` saw,
+        one entry per change.
     """
     deck = Deck()
     _read(deck, text, read_file)
-    for t, r in (radius or {}).items():
-        deck.radius[int(t)] = r
-    for t, d in (density or {}).items():
-        deck.density[int(t)] = d
+    for d in [deck] + [snap for _, snap, _ in deck.stages]:
+        for t, r in (radius or {}).items():
+            d.radius[int(t)] = r
+        for t, rho in (density or {}).items():
+            d.density[int(t)] = rho
     if not deck.code:
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
@@ -290,8 +298,12 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     elif cmd == "read_data" and len(words) >= 2:
         _read_data(deck, words, where, line, read_file)
         deck.atoms = True
-    elif cmd == "create_atoms" or cmd == "run" and deck.inserting:
+    elif cmd == "create_atoms":
         deck.atoms = True
+    elif cmd == "run":
+        _stage(deck, loc, line)
+        if deck.inserting:
+            deck.atoms = True
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
                                      "file, which the reader does not read")
@@ -313,6 +325,41 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         setattr(deck, cmd.split("_")[0], words[1] == "yes")
     elif cmd not in _IRRELEVANT:
         deck.unknown.append((*loc, line, "not understood"))
+
+
+def _contact_key(deck: Deck) -> str:
+    """What decides the deck's contacts, without the lines it came from: two runs with the same key
+    see the same contacts."""
+    def plain(x):
+        if isinstance(x, (set, frozenset)):
+            return tuple(sorted(x))
+        if isinstance(x, dict):
+            return tuple(sorted((k, plain(v)) for k, v in x.items()))
+        if isinstance(x, (list, tuple)):
+            return tuple(plain(v) for v in x)
+        return x
+    return repr(plain((deck.code, deck.style, deck.ntypes, deck.radius, deck.density, deck.units, deck.soft,
+                       deck.hard, deck.model, deck.limit_force, deck.gran, deck.atom_style, deck.missing,
+                       {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
+                       [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups)))
+
+
+def _stage(deck: Deck, loc, line: str) -> None:
+    """A run: the contact settings it sees, kept where they differ from the previous run's."""
+    key = _contact_key(deck)
+    if deck.stages and deck.stages[-1][2] == key:
+        deck.stages[-1][0].append((loc, line))
+        return
+    if not deck.code:
+        return                           # no pair style yet: no contact to audit in this run
+    if len(deck.stages) >= MAX_STAGES:
+        raise DeckError(_where(loc), line, f"more than {MAX_STAGES} runs with different contact settings: the "
+                                           "audit reports each, and stops here")
+    stages, deck.stages = deck.stages, []
+    # the lists of lines not understood are the whole deck's, shared by every stage
+    snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored})
+    deck.stages = stages
+    stages.append(([(loc, line)], snap, key))
 
 
 def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> None:
@@ -1047,22 +1094,63 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
 
 
 def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None) -> dict:
-    """{"code", "pairs": [...], "walls": [...], "unknown_lines": [...], "ignored": [...]}: for every
-    type pair the eps the deck really gives at ``speeds`` (relative accuracy 1e-10), beside the e
-    typed (or None) and the line that would give that e exactly; read_file as in read_deck. Where
-    the spheres' centres would meet (``passes_through``: the largest overlap reaches
-    ``overlap_limit`` = R1 + R2) eps is None: the engine pushes them through each other. ``walls``:
-    the same for every type a flat fix wall/gran acts on, the sphere hitting the wall head-on
-    (``overlap_limit`` = R: the centre reaching the wall; ``wall`` the fix ID, ``wall_type`` the
-    LIGGGHTS wall's atom type; an exact line for a LAMMPS tsuji or coeff_restitution wall, the
-    wall's own, and for a LIGGGHTS wall whose model and limitForce are the pair style's, the
-    coefficientRestitution line with the entry (type, W) replaced, which is then also the sphere
-    pair (type, W)'s exact line);
-    walls not audited are among ``unknown_lines``."""
+    """The eps an input deck really gives, for every type pair and flat wall, at every run.
+
+    Parameters
+    ----------
+    text : str
+        The input script.
+    speeds : sequence of float
+        Impact speeds.
+    radius, density, read_file
+        As in :func:`read_deck`.
+
+    Returns
+    -------
+    dict
+        {"code", "stages", "pairs", "walls", "unknown_lines", "ignored"}. ``stages``: one entry
+        for each change of the contact settings between runs ({"runs": [{"file", "line", "text"}],
+        "pairs", "walls"}; a deck without a run has one stage, its settings at its end); ``pairs``
+        and ``walls`` are the last stage's. A pair row holds, for a type pair, the eps the deck
+        really gives at ``speeds`` (relative accuracy 1e-10), beside the e typed (or None) and the
+        line that would give that e exactly. Where the spheres' centres would meet
+        (``passes_through``: the largest overlap reaches ``overlap_limit`` = R1 + R2) eps is None:
+        the engine pushes them through each other. A wall row: the same for every type a flat fix
+        wall/gran acts on, the sphere hitting the wall head-on (``overlap_limit`` = R: the centre
+        reaching the wall; ``wall`` the fix ID, ``wall_type`` the LIGGGHTS wall's atom type; an
+        exact line for a LAMMPS tsuji or coeff_restitution wall, the wall's own, and for a LIGGGHTS
+        wall whose model and limitForce are the pair style's, the coefficientRestitution line with
+        the entry (type, W) replaced, which is then also the sphere pair (type, W)'s exact line).
+        Walls not audited are among ``unknown_lines``.
+    """
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
     deck = read_deck(text, radius, density, read_file)
+    stages = [(runs, snap) for runs, snap, _ in deck.stages] or [([], deck)]
+    unknown = list(deck.unknown)
+    if deck.stages and _contact_key(deck) != deck.stages[-1][2]:
+        (source, n), line = deck.stages[-1][0][-1]
+        unknown.append((source, n, line, "the contact settings change after this, the deck's last run: no run uses "
+                                         "the later ones, not audited"))
+    audited = []
+    for runs, snap in stages:
+        try:
+            pairs, walls, not_audited = _audit_stage(snap, speeds)
+        except DeckError as why:
+            if len(stages) > 1:          # say which run LAMMPS would stop at
+                why.args = (f"{why.args[0]} (the run at {_where(runs[0][0])})",)
+            raise
+        unknown += [row for row in not_audited if row not in unknown]
+        audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
+                        "walls": walls})
+    return {"code": deck.code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
+            "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
+            "ignored": sorted(set(deck.ignored))}
+
+
+def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
+    """(pair rows, wall rows, walls not audited) of the deck's settings at one stage."""
     if deck.ntypes <= 0:
         raise DeckError("create_box", None, "the deck has no create_box or read_data: the number of types is "
                                             "unknown")
@@ -1073,7 +1161,4 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             contact, pair = row.pop("contact"), row.pop("pair")
             pairs.append(_with_eps(row, contact, speeds, pair.R1 + pair.R2))
     walls, not_audited = _wall_rows(deck, speeds)
-    return {"code": deck.code, "pairs": pairs, "walls": walls,
-            "unknown_lines": [{"file": f, "line": n, "text": t, "why": why}
-                              for f, n, t, why in deck.unknown + not_audited],
-            "ignored": sorted(set(deck.ignored))}
+    return pairs, walls, not_audited
