@@ -1,8 +1,9 @@
 """`restitution deck` runs a deck as LAMMPS does: ``if``/``elif``/``else``, ``jump``/``label``,
 ``next`` loops and ``quit``; quoted text is not a command; a later pair_style of another style
-discards the coefficients; every run whose contact settings differ is reported. Issue 42's "silently
-wrong, exit 0" items 1-4, each deck as a user would write it. Where LAMMPS decides the truth, the
-engine check below runs the deck's own lines in it."""
+discards the coefficients; every run whose contact settings differ is reported; particles that
+are not spheres, types without atoms and decks LAMMPS stops on are refused in one line. Issue 42's
+"silently wrong, exit 0" items 1-4 and 6, each deck as a user would write it. Where LAMMPS decides
+the truth, the engine check below runs the deck's own lines in it."""
 
 import io
 import json
@@ -210,6 +211,43 @@ def test_every_run_whose_contact_settings_differ_is_reported(tmp_path):
 def test_settings_after_the_last_run_are_named_not_audited(tmp_path):
     e, err = eps_of(tmp_path, HEAD + coeff(0.3) + "\nrun 1000\n" + coeff(0.8) + "\n")
     assert e == 0.3 and "line 8 the contact settings change after this, the deck's last run" in err
+
+
+# --------------------------------------------------------------------- item 6: not spheres, no atoms
+LIGGGHTS_HEAD = """\
+atom_style granular
+units si
+create_box 1 reg
+fix m1 all property/global youngsModulus peratomtype 5e7
+fix m2 all property/global poissonsRatio peratomtype 0.3
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.6
+pair_style gran model hertz tangential history
+pair_coeff * *
+"""
+
+
+@pytest.mark.parametrize("text, word", [
+    # LIGGGHTS' multisphere tutorial's template: clumps, not spheres (before: eps = e per sphere)
+    (LIGGGHTS_HEAD + "fix pts1 all particletemplate/multisphere 15485863 atom_type 1 density constant 2500 "
+     "nspheres 2 ntry 1000 spheres 0 0 0 0.001 0.001 0 0 0.001 type 1\n",
+     "line 9 (fix pts1 all particletemplate/multisphere"),
+    (LIGGGHTS_HEAD.replace("atom_style granular", "atom_style superquadric"), "line 1 (atom_style superquadric)"),
+    # LAMMPS has no atom_style granular (it stops: checked); before, the deck was audited
+    (HEAD.replace("atom_style sphere", "atom_style granular") + coeff(0.5) + "\n", "LAMMPS has no atom_style granular"),
+    # type 2 has no atom when group all is sized: it gets no size from it (before: type 1's)
+    (HEAD.split("set type")[0] + "create_atoms 1 single 0 0 0\nset group all diameter 0.002 density 2500\n"
+     "pair_style granular\n" + coeff(0.5) + "\n", "no atom of type 2 exists when line 5 sets group all"),
+])
+def test_what_is_not_two_spheres_is_refused_in_one_line(tmp_path, text, word):
+    if "particletemplate" in text:
+        text += "fix pts2 all particletemplate/sphere 1 atom_type 1 density constant 2500 radius constant 0.001\n"
+    assert word in refused(tmp_path, text)
+
+
+def test_set_group_all_sizes_the_types_that_have_atoms(tmp_path):
+    text = (HEAD.split("set type")[0] + "create_atoms 1 single 0 0 0\ncreate_atoms 2 single 0.005 0 0\n"
+            "set group all diameter 0.002 density 2500\npair_style granular\n" + coeff(0.5) + "\n")
+    assert eps_of(tmp_path, text)[0] == 0.5
 
 
 # ------------------------------------------------------------------------ LAMMPS decides the truth

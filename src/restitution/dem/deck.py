@@ -28,7 +28,9 @@ reader can evaluate, ``jump``/``label``, ``next`` loops and ``quit`` decide whic
 text is not a command; where which contact lines run depends on what the reader cannot decide,
 the deck is refused naming the line. A ``pair_style`` of another style discards the coefficients,
 as in LAMMPS. Each ``run`` sees the settings of its moment: every change between runs is a stage
-of its own, audited.
+of its own, audited. Particles that are not single spheres (LIGGGHTS multisphere clumps,
+superquadrics) and ``atom_style granular`` in a LAMMPS deck are refused; ``set group all`` sizes
+only the types known to have atoms then.
 
 Files the deck names (``include``, ``jump``, ``read_data``) are read through a ``read_file``
 callable (the CLI resolves their names against the deck's directory, where LAMMPS is normally
@@ -98,6 +100,11 @@ _SPHERE_STYLES = ("sphere", "granular")
 #: Commands the reader needs and their least number of words (the command included): shorter,
 #: LAMMPS stops on them too
 _NEEDS_WORDS = {"create_box": 2, "pair_style": 2, "pair_coeff": 3}
+#: Atom styles whose particles are not spheres (LIGGGHTS' superquadric, LAMMPS' ellipsoid, ...)
+_SHAPED_STYLES = ("superquadric", "ellipsoid", "line", "tri", "body")
+#: LIGGGHTS particle templates whose particles are not single spheres
+_SHAPED_TEMPLATES = {"particletemplate/multisphere": "clumps of spheres (multisphere)",
+                     "particletemplate/superquadric": "superquadrics"}
 #: Runs with different contact settings the audit reports before it refuses the deck
 MAX_STAGES = 100
 #: Commands that may sit in a branch of an if whose condition the reader cannot evaluate: they
@@ -138,8 +145,15 @@ class Deck:
     filled_groups: dict = field(default_factory=dict)
     style: str = ""                               # the pair style (LAMMPS keeps coefficients for the same)
     reset: tuple = ()                             # (loc, text) of a pair_style of another that discarded them
+    atom_style_loc: tuple = ()                    # (file, line number) of atom_style
+    # types known to hold atoms (create_atoms, read_data, a pour or deposit that has run), and
+    # whether atoms of types the reader does not know exist: ``set group all`` sizes those only
+    present: set = field(default_factory=set)
+    present_unknown: bool = False
+    shapes: dict = field(default_factory=dict)    # type -> (loc, text, what) where its particles are not spheres
     # (run locations, the deck as that run sees it, its contact key), one per change of contact settings
     stages: list = field(default_factory=list)
+    inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
 
 
 _ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
@@ -259,6 +273,9 @@ def read_deck(text: str, radius: dict | None = None, density: dict | None = None
     if not deck.code:
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
+    if deck.code == "LAMMPS" and deck.atom_style.split()[:1] == ["granular"]:
+        raise DeckError(_where(deck.atom_style_loc), f"atom_style {deck.atom_style}", "LAMMPS has no atom_style "
+                        "granular (LIGGGHTS' name; LAMMPS' is sphere): LAMMPS stops on it")
     return deck
 
 
@@ -300,15 +317,23 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.atoms = True
     elif cmd == "create_atoms":
         deck.atoms = True
+        if len(words) > 1 and words[1].isdigit():
+            deck.present.add(int(words[1]))
+        else:
+            deck.present_unknown = True
     elif cmd == "run":
         _stage(deck, loc, line)
         if deck.inserting:
             deck.atoms = True
+            _inserted(deck)
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
                                      "file, which the reader does not read")
     elif cmd == "atom_style" and len(words) >= 2:
-        deck.atom_style = " ".join(words[1:])
+        deck.atom_style, deck.atom_style_loc = " ".join(words[1:]), loc
+        if words[1] in _SHAPED_STYLES:
+            raise DeckError(where, line, f"atom_style {words[1]}: its particles are not spheres, and the reader "
+                                         "audits the head-on contact of spheres only")
     elif cmd == "pair_style":
         _pair_style(deck, words, where, line, loc)
     elif cmd == "pair_coeff":
@@ -327,6 +352,15 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.unknown.append((*loc, line, "not understood"))
 
 
+def _inserted(deck: Deck) -> None:
+    """After a run, the atoms the deck's inserting fixes have made: their types where named."""
+    for types in deck.inserts:
+        if types is None:
+            deck.present_unknown = True
+        else:
+            deck.present |= types
+
+
 def _contact_key(deck: Deck) -> str:
     """What decides the deck's contacts, without the lines it came from: two runs with the same key
     see the same contacts."""
@@ -341,7 +375,8 @@ def _contact_key(deck: Deck) -> str:
     return repr(plain((deck.code, deck.style, deck.ntypes, deck.radius, deck.density, deck.units, deck.soft,
                        deck.hard, deck.model, deck.limit_force, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
-                       [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups)))
+                       [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
+                       set(deck.shapes))))
 
 
 def _stage(deck: Deck, loc, line: str) -> None:
@@ -417,6 +452,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             i, j = (cols[0], cols[0]) if section == "Pair Coeffs" else (cols[0], cols[1])
             rest = cols[1:] if section == "Pair Coeffs" else cols[2:]
             _pair_coeff(deck, ["pair_coeff", i, j, *rest], here, body, (name, n))
+    deck.present |= set(per_type)
     for t in range(1, deck.ntypes + 1):
         if t not in per_type:
             deck.missing[t] = f"{name} has no atom of type {t}"
@@ -511,7 +547,12 @@ def _set(deck, words, where, line, loc):
     if words[1] == "type":
         types = list(_types(words[2], deck.ntypes, where, line))
     elif words[1] == "group" and words[2] == "all":
-        types = list(range(1, deck.ntypes + 1))
+        # it sets the atoms there now: a type without any keeps no size from it
+        types = sorted(t for t in deck.present if 1 <= t <= deck.ntypes)
+        for t in range(1, deck.ntypes + 1):
+            if t not in deck.present:
+                deck.missing.setdefault(t, f"{'the reader does not know whether an' if deck.present_unknown else 'no'} "
+                                           f"atom of type {t} exists when {where} sets group all")
     else:
         deck.unknown.append((*loc, line, "not understood"))
         return
@@ -539,10 +580,17 @@ def _fix(deck, words, where, line, loc):
     style = words[3]
     if style in _INSERTING_FIXES:
         deck.inserting = True
+        typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()
+        deck.inserts.append({int(words[5])} if typed else None)
         if words[2] != "all":
-            typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()
             deck.filled_groups.setdefault(words[2], []).append(
                 (f"fix {words[1]} ({style}) inserts", {int(words[5])} if typed else None))
+    if style in _SHAPED_TEMPLATES:
+        typed = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "atom_type"]
+        types = [_type(typed[0], where, line)] if typed else range(1, deck.ntypes + 1)
+        for t in types:
+            deck.shapes[t] = (loc, line, _SHAPED_TEMPLATES[style])
+        return
     if style == "property/global" and len(words) >= 6:
         deck.props[words[4]] = (loc, words[5:])
         deck.prop_fix[words[4]] = f"fix {words[1]} {words[2]}"     # the exact line keeps the deck's fix ID
@@ -610,6 +658,10 @@ def _group(deck: Deck, words: list) -> None:
 
 def _pair(deck: Deck, i: int, j: int) -> Pair:
     for t in (i, j):
+        if t in deck.shapes:
+            loc, text, what = deck.shapes[t]
+            raise DeckError(_where(loc), text, f"type {t}'s particles are {what}, not single spheres: the reader "
+                                               "audits the head-on contact of two spheres only")
         why = f" ({deck.missing[t]})" if t in deck.missing else ""
         if t not in deck.radius:
             raise DeckError("radius", f"type {t}", f"the deck gives no single radius for this type{why}: give "
