@@ -127,6 +127,8 @@ def test_a_next_loop_runs_each_value_and_each_run_is_a_stage(tmp_path):
     ('variable s equal step\njump SELF ${s}\n', "depends on a variable"),
     ("variable w world a\nlabel top\nnext w\njump SELF top\n", "next w"),
     ('if "1 == 1" then\n', "illegal if"),
+    # the unit style decides what some coefficients mean: not inert where the condition is unknown
+    ('variable s equal step\nif "${s} > 1" then "units cgs"\n', "a branch runs units"),
 ])
 def test_loops_and_jumps_the_reader_does_not_follow_are_refused_in_one_line(tmp_path, lines, word):
     err = refused(tmp_path, HEAD + coeff(0.5) + "\n" + lines)
@@ -211,6 +213,9 @@ def test_every_run_whose_contact_settings_differ_is_reported(tmp_path):
 def test_settings_after_the_last_run_are_named_not_audited(tmp_path):
     e, err = eps_of(tmp_path, HEAD + coeff(0.3) + "\nrun 1000\n" + coeff(0.8) + "\n")
     assert e == 0.3 and "line 8 the contact settings change after this, the deck's last run" in err
+    # a size given on the command line holds in every stage: no change after the last run
+    status, _, err = run(tmp_path, STAGED, "--radius", "2=0.003")
+    assert status == 0 and "after this" not in err
 
 
 # --------------------------------------------------------------------- item 6: not spheres, no atoms

@@ -108,8 +108,10 @@ _SHAPED_TEMPLATES = {"particletemplate/multisphere": "clumps of spheres (multisp
 #: Runs with different contact settings the audit reports before it refuses the deck
 MAX_STAGES = 100
 #: Commands that may sit in a branch of an if whose condition the reader cannot evaluate: they
-#: neither make atoms, nor run, nor change the contact
-_INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms"})
+#: neither make atoms, nor run, nor change what the reader reads (units, atom_style and
+#: soft_/hard_particles, though in _IRRELEVANT, are read)
+_INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms", "units",
+                                  "atom_style", "soft_particles", "hard_particles"})
 
 
 @dataclass
@@ -549,15 +551,15 @@ def _set(deck, words, where, line, loc):
     elif words[1] == "group" and words[2] == "all":
         # it sets the atoms there now: a type without any keeps no size from it
         types = sorted(t for t in deck.present if 1 <= t <= deck.ntypes)
-        for t in range(1, deck.ntypes + 1):
-            if t not in deck.present:
-                deck.missing.setdefault(t, f"{'the reader does not know whether an' if deck.present_unknown else 'no'} "
-                                           f"atom of type {t} exists when {where} sets group all")
     else:
         deck.unknown.append((*loc, line, "not understood"))
         return
     rest = words[3:]
     for k in range(0, len(rest) - 1, 2):
+        if rest[k] in ("diameter", "density"):
+            for t in set(range(1, deck.ntypes + 1)) - set(types):
+                unknown = "the reader does not know whether an" if deck.present_unknown else "no"
+                deck.missing.setdefault(t, f"{unknown} atom of type {t} exists when {where} sets group all")
         if rest[k] == "diameter":
             for t in types:
                 deck.radius[t] = 0.5 * _number(rest[k + 1], where, line)
@@ -1180,8 +1182,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         raise ParameterError("g", speeds, "give at least one impact speed")
     deck = read_deck(text, radius, density, read_file)
     stages = [(runs, snap) for runs, snap, _ in deck.stages] or [([], deck)]
-    unknown = list(deck.unknown)
-    if deck.stages and _contact_key(deck) != deck.stages[-1][2]:
+    unknown = list(dict.fromkeys(deck.unknown))      # a loop runs its lines again: each named once
+    if deck.stages and _contact_key(deck) != _contact_key(deck.stages[-1][1]):    # --radius, --density in both
         (source, n), line = deck.stages[-1][0][-1]
         unknown.append((source, n, line, "the contact settings change after this, the deck's last run: no run uses "
                                          "the later ones, not audited"))

@@ -1,6 +1,7 @@
-"""LAMMPS' input-script language below the commands: how a file becomes commands, and how an
-``if`` decides. The deck reader (:mod:`restitution.dem.deck`) runs the commands; this module knows
-only the text.
+"""LAMMPS' input-script language, apart from what its commands mean: how a file becomes commands,
+how an ``if`` decides, and which commands run (:class:`Script`: variables, ``include``, ``if``,
+``jump``/``label``, ``next``, ``quit``). The deck reader (:mod:`restitution.dem.deck`) gives every
+other command its meaning for a contact.
 
 LAMMPS (22 Jul 2025, and LIGGGHTS, which shares its parser) reads a script as follows, and so
 does :func:`logical_lines` with :func:`words`:
@@ -304,7 +305,8 @@ class Script:
     def _file(self, text: str, source, depth: int, label, loc=None, line: str = "") -> None:
         """Run a file from its top, or from ``label`` (the jump at ``loc``, ``line`` named where absent)."""
         lines = logical_lines(text)
-        k = 0 if label is None else self._label(lines, label, loc, line)
+        labels = _labels(lines)
+        k = 0 if label is None else _after_label(labels, label, loc, line)
         while k < len(lines):
             n, raw = lines[k]
             k += 1
@@ -318,19 +320,7 @@ class Script:
             if name != "SELF":
                 self._enter(name, loc, line, depth, target)
                 return                   # LAMMPS reads the other file in place of this one
-            k = 0 if target is None else self._label(lines, target, loc, line)
-
-    @staticmethod
-    def _label(lines: list, label: str, loc, line: str) -> int:
-        """Index after the first ``label LABEL`` of the file: LAMMPS searches from its top."""
-        for k, (_, raw) in enumerate(lines):
-            try:
-                w = words(raw)
-            except ScriptError:
-                continue
-            if len(w) >= 2 and w[0] == "label" and w[1] == label:
-                return k + 1
-        raise LocatedError(f"label {label} is not in the file (LAMMPS stops: label wasn't found)", loc, line)
+            k = 0 if target is None else _after_label(labels, target, loc, line)
 
     def _enter(self, name: str, loc, line: str, depth: int, label) -> None:
         if depth >= MAX_DEPTH:
@@ -469,6 +459,27 @@ class Script:
         """Equal-style variables are evaluated where used: after next, with the new values."""
         for name, expr in self._equal.items():
             self.variables[name] = self.evaluate(expr, self.variables)
+
+
+def _labels(lines: list) -> dict:
+    """label -> index of the line after its first ``label`` command: LAMMPS searches from the top."""
+    out = {}
+    for k, (_, raw) in enumerate(lines):
+        if not raw.startswith("label"):
+            continue
+        try:
+            w = words(raw)
+        except ScriptError:
+            continue
+        if len(w) >= 2 and w[0] == "label":
+            out.setdefault(w[1], k + 1)
+    return out
+
+
+def _after_label(labels: dict, label: str, loc, line: str) -> int:
+    if label not in labels:
+        raise LocatedError(f"label {label} is not in the file (LAMMPS stops: label wasn't found)", loc, line)
+    return labels[label]
 
 
 def _loop_values(args: list):
