@@ -210,6 +210,18 @@ def test_every_run_whose_contact_settings_differ_is_reported(tmp_path):
     assert [r["line"] for r in res["stages"][0]["runs"]] == [8, 9] and res["pairs"] == res["stages"][1]["pairs"]
 
 
+def test_run_every_and_clear_are_what_lammps_does(tmp_path):
+    """run N every M "cmd": LAMMPS runs cmd between the parts of the run (a pair_coeff there changes
+    the contact mid-run: refused); clear starts afresh, the coefficients gone (LAMMPS then stops,
+    "All pair coeffs are not set"; both checked in LAMMPS). Before: read as if neither were there."""
+    every = HEAD + coeff(0.5) + f'\nrun 10 every 5 "print hello" "{coeff(0.9)}"\n'
+    assert "line 8" in refused(tmp_path, every) and "runs pair_coeff during the run" in refused(tmp_path, every)
+    assert eps_of(tmp_path, HEAD + coeff(0.5) + '\nrun 10 every 5 "print hello"\n')[0] == 0.5
+    cleared = HEAD + coeff(0.5) + "\nrun 10\nclear\n" + HEAD + "run 10\n"
+    assert "no pair_coeff line covers" in refused(tmp_path, cleared)
+    assert stage_eps(tmp_path, cleared.replace("clear\n" + HEAD, "clear\n" + HEAD + coeff(0.7) + "\n")) == [0.5, 0.7]
+
+
 def test_settings_after_the_last_run_are_named_not_audited(tmp_path):
     e, err = eps_of(tmp_path, HEAD + coeff(0.3) + "\nrun 1000\n" + coeff(0.8) + "\n")
     assert e == 0.3 and "line 8 the contact settings change after this, the deck's last run" in err

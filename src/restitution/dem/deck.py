@@ -27,8 +27,9 @@ The deck runs as LAMMPS runs it (:mod:`restitution.dem.deck_script`): ``if`` wit
 reader can evaluate, ``jump``/``label``, ``next`` loops and ``quit`` decide which lines run; quoted
 text is not a command; where which contact lines run depends on what the reader cannot decide,
 the deck is refused naming the line. A ``pair_style`` of another style discards the coefficients,
-as in LAMMPS. Each ``run`` sees the settings of its moment: every change between runs is a stage
-of its own, audited. Particles that are not single spheres (LIGGGHTS multisphere clumps,
+as in LAMMPS; ``clear`` discards every setting. Each ``run`` sees the settings of its moment: every
+change between runs is a stage of its own, audited (``run ... every`` with a command that changes the
+contact mid-run is refused). Particles that are not single spheres (LIGGGHTS multisphere clumps,
 superquadrics) and ``atom_style granular`` in a LAMMPS deck are refused; ``set group all`` sizes
 only the types known to have atoms then.
 
@@ -324,10 +325,15 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         else:
             deck.present_unknown = True
     elif cmd == "run":
+        _run_every(words, where, line)
         _stage(deck, loc, line)
         if deck.inserting:
             deck.atoms = True
             _inserted(deck)
+    elif cmd == "clear":
+        # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
+        deck.__dict__.update(fresh.__dict__)
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
                                      "file, which the reader does not read")
@@ -352,6 +358,18 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         setattr(deck, cmd.split("_")[0], words[1] == "yes")
     elif cmd not in _IRRELEVANT:
         deck.unknown.append((*loc, line, "not understood"))
+
+
+def _run_every(words: list, where: str, line: str) -> None:
+    """run N every M c1 c2 ...: LAMMPS runs the commands between the parts of the run; only inert
+    ones (output, say) leave the contact as the reader reads it."""
+    if "every" not in words:
+        return
+    for command in words[words.index("every") + 2:]:
+        first = command.split()[0] if command.split() else ""
+        if first not in _INERT and first != "NULL":
+            raise DeckError(where, line, f"run ... every runs {first} during the run, between its parts: the reader "
+                                         "does not follow it")
 
 
 def _inserted(deck: Deck) -> None:
