@@ -782,8 +782,8 @@ def _lammps_pair(deck: Deck, i: int, j: int) -> dict:
     if (i, j) not in deck.coeffs and ((i, i) not in deck.coeffs or (j, j) not in deck.coeffs):
         why = (f" (pair_style at {_where(deck.reset[0])}, another style, discarded the earlier ones)"
                if deck.reset else "")
-        raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair, nor both {i} {i} "
-                                                         f"and {j} {j}, from which LAMMPS would mix it{why}: LAMMPS "
+        mix = f", nor both {i} {i} and {j} {j}, from which LAMMPS would mix it" if i != j else ""
+        raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair{mix}{why}: LAMMPS "
                                                          "stops (all pair coeffs are not set)")
     if deck.gran:
         pair = _pair(deck, i, j)
