@@ -265,6 +265,10 @@ def test_set_group_all_sizes_the_types_that_have_atoms(tmp_path):
     text = (HEAD.split("set type")[0] + "create_atoms 1 single 0 0 0\ncreate_atoms 2 single 0.005 0 0\n"
             "set group all diameter 0.002 density 2500\npair_style granular\n" + coeff(0.5) + "\n")
     assert eps_of(tmp_path, text)[0] == 0.5
+    # set type and set group all with other keywords name no type as absent (LAMMPS' multi/in.granular)
+    other = text.replace("diameter 0.002 density 2500", "property/atom heat 1") + "set type 2 diameter 0.002\n"
+    err = refused(tmp_path, other)
+    assert "type 1" in err and "group all" not in err
 
 
 # ------------------------------------------------------------------------ LAMMPS decides the truth

@@ -564,18 +564,20 @@ def _pair_coeff(deck, words, where, line, loc):
 
 
 def _set(deck, words, where, line, loc):
+    absent = []
     if words[1] == "type":
         types = list(_types(words[2], deck.ntypes, where, line))
     elif words[1] == "group" and words[2] == "all":
         # it sets the atoms there now: a type without any keeps no size from it
         types = sorted(t for t in deck.present if 1 <= t <= deck.ntypes)
+        absent = [t for t in range(1, deck.ntypes + 1) if t not in types]
     else:
         deck.unknown.append((*loc, line, "not understood"))
         return
     rest = words[3:]
     for k in range(0, len(rest) - 1, 2):
         if rest[k] in ("diameter", "density"):
-            for t in set(range(1, deck.ntypes + 1)) - set(types):
+            for t in absent:
                 unknown = "the reader does not know whether an" if deck.present_unknown else "no"
                 deck.missing.setdefault(t, f"{unknown} atom of type {t} exists when {where} sets group all")
         if rest[k] == "diameter":
