@@ -7,6 +7,7 @@ the truth, the engine check below runs the deck's own lines in it."""
 
 import io
 import json
+import subprocess
 
 import pytest
 
@@ -23,6 +24,21 @@ set type 1 diameter 0.002 density 2500
 set type 2 diameter 0.002 density 2500
 pair_style granular
 """
+
+
+#: A LIGGGHTS deck of one type, e = 0.6; with its particles' size and density, LIGGGHTS_HEAD_1
+LIGGGHTS_HEAD = """\
+atom_style granular
+units si
+create_box 1 reg
+fix m1 all property/global youngsModulus peratomtype 5e7
+fix m2 all property/global poissonsRatio peratomtype 0.3
+fix m3 all property/global coefficientRestitution peratomtypepair 1 0.6
+pair_style gran model hertz tangential history
+pair_coeff * *
+"""
+LIGGGHTS_SPHERES = "fix pts all particletemplate/sphere 1 atom_type 1 density constant 2500 radius constant 0.001\n"
+LIGGGHTS_HEAD_1 = LIGGGHTS_HEAD + LIGGGHTS_SPHERES
 
 
 def coeff(e: float, types: str = "* *") -> str:
@@ -155,6 +171,29 @@ def test_conditions_are_decided_as_lammps_decides_them(condition, truth):
     assert evaluate_boolean(condition) is truth
 
 
+#: Syntax LAMMPS 2025 runs and LIGGGHTS 3.8.0 stops on (its older if and quotes)
+NEWER = {"string": '\nvariable m string glass\nif "${m} == glass" then "print x"\n',
+         "xor": '\nif "1 |^ 0" then "print x"\n', "triple": '\nprint """\nx\n"""\n'}
+
+
+@pytest.mark.parametrize("case", sorted(NEWER))
+def test_lammps_syntax_liggghts_stops_on_is_refused_in_a_liggghts_deck(tmp_path, case):
+    assert "LIGGGHTS 3.8.0 stops on it" in refused(tmp_path, LIGGGHTS_HEAD_1 + NEWER[case])
+    assert eps_of(tmp_path, HEAD + coeff(0.5) + NEWER[case])[0] == 0.5
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("case", sorted(NEWER))
+def test_liggghts_itself_stops_on_that_syntax(tmp_path, case):
+    from restitution.dem.liggghts import available
+    if not available():
+        pytest.skip("LIGGGHTS not installed: as root, apt-get install liggghts (make test does it)")
+    (tmp_path / "in.newer").write_text(NEWER[case])
+    done = subprocess.run(["liggghts", "-in", "in.newer", "-log", "none"], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=60)
+    assert "ERROR" in done.stdout + done.stderr and "x\n" not in done.stdout
+
+
 # --------------------------------------------------------------------------------- item 2: quotes
 def test_text_inside_quotes_is_not_a_command(tmp_path):
     """Before: the triple-quoted lines were read as commands (eps 0.9 where LAMMPS keeps 0.5)."""
@@ -231,18 +270,6 @@ def test_settings_after_the_last_run_are_named_not_audited(tmp_path):
 
 
 # --------------------------------------------------------------------- item 6: not spheres, no atoms
-LIGGGHTS_HEAD = """\
-atom_style granular
-units si
-create_box 1 reg
-fix m1 all property/global youngsModulus peratomtype 5e7
-fix m2 all property/global poissonsRatio peratomtype 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 1 0.6
-pair_style gran model hertz tangential history
-pair_coeff * *
-"""
-
-
 @pytest.mark.parametrize("text, word", [
     # LIGGGHTS' multisphere tutorial's template: clumps, not spheres (before: eps = e per sphere)
     (LIGGGHTS_HEAD + "fix pts1 all particletemplate/multisphere 15485863 atom_type 1 density constant 2500 "
@@ -257,7 +284,7 @@ pair_coeff * *
 ])
 def test_what_is_not_two_spheres_is_refused_in_one_line(tmp_path, text, word):
     if "particletemplate" in text:
-        text += "fix pts2 all particletemplate/sphere 1 atom_type 1 density constant 2500 radius constant 0.001\n"
+        text += LIGGGHTS_SPHERES            # a radius for the type: before, audited as spheres
     assert word in refused(tmp_path, text)
 
 

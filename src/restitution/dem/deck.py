@@ -300,10 +300,15 @@ def _read(deck: Deck, text: str, read_file) -> None:
 
     def fetch(name, loc, line):
         return _fetch(read_file, name, _where(loc), line)
+    script = Script(execute, _evaluate, note, fetch, _INERT)
     try:
-        Script(execute, _evaluate, note, fetch, _INERT).run(text)
+        script.run(text)
     except LocatedError as why:
         raise DeckError(_where(why.loc), why.text, str(why)) from None
+    if deck.code == "LIGGGHTS" and script.newer:
+        loc, line, what = script.newer
+        raise DeckError(_where(loc), line, f"{what}: LIGGGHTS 3.8.0 stops on it (its if compares numbers only, "
+                                           "without |^, and it has no triple quotes)")
 
 
 def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:

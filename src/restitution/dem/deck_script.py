@@ -25,7 +25,7 @@ from __future__ import annotations
 import re
 
 __all__ = ["ScriptError", "LocatedError", "Script", "MAX_JUMPS", "MAX_DEPTH", "logical_lines", "strip_comment",
-           "unquoted", "words", "evaluate_boolean", "if_branches"]
+           "unquoted", "words", "evaluate_boolean", "newer_syntax", "if_branches"]
 
 _TRIPLE = '"""'
 
@@ -164,6 +164,17 @@ def evaluate_boolean(text: str) -> bool | None:
     return value != 0.0
 
 
+def newer_syntax(condition: str) -> str | None:
+    """What in an ``if`` condition LIGGGHTS 3.8.0 (an older LAMMPS) stops on, "Invalid Boolean
+    syntax" (checked in LIGGGHTS): a string operand, or |^; None where it has neither."""
+    for m in _TOKEN.finditer(condition):
+        if m.lastgroup == "str":
+            return f"the string {m.group('str')} in an if condition"
+        if m.group("op") == "|^":
+            return "|^ in an if condition"
+    return None
+
+
 def _expression(tokens: list, k: int, floor: int):
     """Precedence climbing from tokens[k]: (value, next index); binary operators bind left to right."""
     left, k = _operand(tokens, k)
@@ -280,6 +291,9 @@ class Script:
         self._equal: dict = {}          # equal-style name -> expression, evaluated again after next
         self._skip_jump = False
         self.jumps = 0
+        # (loc, line, what) of the first syntax LIGGGHTS 3.8.0 stops on (triple quotes, string
+        # or |^ conditions): the caller knows only at the end which engine the deck is for
+        self.newer = None
 
     def run(self, text: str) -> None:
         """Run the deck ``text`` (the file LAMMPS is started with) to its end or its quit."""
@@ -333,6 +347,8 @@ class Script:
         line = unquoted(strip_comment(raw), lambda text: re.sub(r"\s+", " ", self.substitute(text))).strip()
         if not line:
             return None
+        if _TRIPLE in line and self.newer is None:
+            self.newer = (loc, line, "a triple-quoted text")
         try:
             w = words(line)
         except ScriptError as why:
@@ -371,6 +387,9 @@ class Script:
             raise LocatedError(str(why), loc, line) from None
         for k, (condition, commands) in enumerate(branches):
             if condition is not None:
+                newer = newer_syntax(self.substitute(condition))
+                if newer and self.newer is None:
+                    self.newer = (loc, line, newer)
                 truth = evaluate_boolean(self.substitute(condition))
                 if truth is None:
                     self._undecided(branches[k:], condition, line, loc)
