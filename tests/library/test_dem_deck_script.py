@@ -259,6 +259,7 @@ def test_run_every_and_clear_are_what_lammps_does(tmp_path):
     cleared = HEAD + coeff(0.5) + "\nrun 10\nclear\n" + HEAD + "run 10\n"
     assert "no pair_coeff line covers" in refused(tmp_path, cleared)
     assert stage_eps(tmp_path, cleared.replace("clear\n" + HEAD, "clear\n" + HEAD + coeff(0.7) + "\n")) == [0.5, 0.7]
+    assert stage_eps(tmp_path, HEAD + coeff(0.5) + "\nrun 10\nclear\n") == [0.5]      # a deck that ends clean
 
 
 def test_settings_after_the_last_run_are_named_not_audited(tmp_path):

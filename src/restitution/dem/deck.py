@@ -268,17 +268,19 @@ def read_deck(text: str, radius: dict | None = None, density: dict | None = None
     """
     deck = Deck()
     _read(deck, text, read_file)
-    for d in [deck] + [snap for _, snap, _ in deck.stages]:
+    every = [deck] + [snap for _, snap, _ in deck.stages]       # (a clear may have emptied the deck)
+    for d in every:
         for t, r in (radius or {}).items():
             d.radius[int(t)] = r
         for t, rho in (density or {}).items():
             d.density[int(t)] = rho
-    if not deck.code:
+    if not any(d.code for d in every):
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
-    if deck.code == "LAMMPS" and deck.atom_style.split()[:1] == ["granular"]:
-        raise DeckError(_where(deck.atom_style_loc), f"atom_style {deck.atom_style}", "LAMMPS has no atom_style "
-                        "granular (LIGGGHTS' name; LAMMPS' is sphere): LAMMPS stops on it")
+    for d in every:
+        if d.code == "LAMMPS" and d.atom_style.split()[:1] == ["granular"]:
+            raise DeckError(_where(d.atom_style_loc), f"atom_style {d.atom_style}", "LAMMPS has no atom_style "
+                            "granular (LIGGGHTS' name; LAMMPS' is sphere): LAMMPS stops on it")
     return deck
 
 
@@ -305,7 +307,7 @@ def _read(deck: Deck, text: str, read_file) -> None:
         script.run(text)
     except LocatedError as why:
         raise DeckError(_where(why.loc), why.text, str(why)) from None
-    if deck.code == "LIGGGHTS" and script.newer:
+    if "LIGGGHTS" in {deck.code, *(snap.code for _, snap, _ in deck.stages)} and script.newer:
         loc, line, what = script.newer
         raise DeckError(_where(loc), line, f"{what}: LIGGGHTS 3.8.0 stops on it (its if compares numbers only, "
                                            "without |^, and it has no triple quotes)")
@@ -1223,7 +1225,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         unknown += [row for row in not_audited if row not in unknown]
         audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
                         "walls": walls})
-    return {"code": deck.code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
+    return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
             "ignored": sorted(set(deck.ignored))}
 
