@@ -59,3 +59,79 @@ def test_generated_text_writes_numbers_and_minus_signs_as_mathematics():
     assert math_text("1.6e-08 in the forward one") == r"\(1.6\times 10^{-8}\) in the forward one"
     assert r"\(-\)" in math_text("tau_b - tau_0") and r"\(-\)" in math_text("-1 - (2/3)")
     assert math_text("P-N2-K2-Dprinted") == "P-N2-K2-Dprinted"
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Issue 43: the article is a physics paper (at most 16 pages, a Conclusions section) whose main text names
+# no part of the pipeline; the pipeline is named only in the "Data and code availability" paragraph. The
+# source is checked always; the built PDF (results/paper/restitution.pdf) when it is there, or the one
+# RESTITUTION_ARTICLE_PDF names (to see the tests fail on an older build).
+import os  # noqa: E402
+import shutil  # noqa: E402
+import subprocess  # noqa: E402
+
+ROOT = PAPER.parent
+ARTICLE = PAPER / "restitution.tex"
+ARTICLE_PDF = Path(os.environ.get("RESTITUTION_ARTICLE_PDF", ROOT / "results" / "paper" / "restitution.pdf"))
+MAX_PAGES = 16
+AVAILABILITY = "Data and code availability"
+#: What a reader of a physics paper should not meet in its main text: the workflow's own vocabulary.
+PIPELINE_WORDS = [r"ledger", r"\(tolerance", r"config", r"\.py\b", r"\.smk\b", r"workflow", r"snakemake",
+                  r"\bmake\s+(paper|check|test|expected|arxiv|bench|venv|outputs|report|diff|scene|verify|notebooks)\b", r"restitution\.(core|audit|fast|dem|cli)", r"pipeline", r"\bscript",
+                  r"results/", r"\bcommit\b", r"\bmacro", r"\brow\s+\d", r"\bmodule\b"]
+RULE_NAMES = sorted({m for smk in (ROOT / "workflow" / "rules").glob("*.smk")
+                     for m in re.findall(r"^rule (\w+):", smk.read_text(), re.M) if "_" in m})
+
+
+def pipeline_vocabulary(text: str) -> list[str]:
+    """The pipeline words (and rule names with an underscore) found in `text`."""
+    found = [w for w in PIPELINE_WORDS if re.search(w, text, re.I)]
+    found += [name for name in RULE_NAMES if re.search(rf"\b{re.escape(name)}\b", text.replace(r"\_", "_"))]
+    return found
+
+
+def main_text(text: str) -> str:
+    """The text before the availability paragraph, and after it only the references (not checked)."""
+    return text.split(AVAILABILITY, 1)[0]
+
+
+def test_the_vocabulary_check_finds_a_pipeline_sentence():
+    old = "The printed c's are not reproduced (ledger row 12; see workflow/scripts/claims.py; make check)."
+    assert {"ledger", "workflow", r"\.py\b", r"\bscript"} <= set(pipeline_vocabulary(old))
+    assert len(pipeline_vocabulary(old)) == 6
+    assert pipeline_vocabulary("Contact ends under the overlap rule; LAMMPS' limit_damping keyword.") == []
+
+
+def test_the_article_source_has_conclusions_and_no_pipeline_vocabulary_in_its_main_text():
+    text = ARTICLE.read_text()
+    body = text.split(r"\begin{document}", 1)[1]
+    body = "\n".join(re.sub(r"(?<!\\)%.*", "", line) for line in body.splitlines())   # comments are not text
+    body = re.sub(r"\\(label|ref|eqref|cite|input|includegraphics|bibliography|bibliographystyle|Supp\w*)"
+                  r"(\[[^\]]*\])?\{[^}]*\}", " ", body)
+    assert re.search(r"\\section\{Conclusions\}", body)
+    assert AVAILABILITY in body and body.index(r"\section{Conclusions}") < body.index(AVAILABILITY)
+    assert pipeline_vocabulary(main_text(body)) == []
+
+
+def _pdf_text(pdf: Path) -> tuple[int, str]:
+    info = subprocess.run(["pdfinfo", str(pdf)], capture_output=True, text=True, check=True).stdout
+    text = subprocess.run(["pdftotext", "-layout", str(pdf), "-"], capture_output=True, text=True, check=True).stdout
+    return int(re.search(r"Pages:\s+(\d+)", info).group(1)), text
+
+
+needs_pdf = pytest.mark.skipif(not (ARTICLE_PDF.exists() and shutil.which("pdfinfo") and shutil.which("pdftotext")),
+                               reason="needs the built article (make paper) and poppler-utils")
+
+
+@needs_pdf
+def test_the_article_is_at_most_sixteen_pages_with_a_conclusions_section():
+    pages, text = _pdf_text(ARTICLE_PDF)
+    assert pages <= MAX_PAGES, f"{pages} pages"
+    assert re.search(r"^\s*\d+\s+Conclusions\s*$", text, re.M), "no numbered Conclusions section"
+
+
+@needs_pdf
+def test_the_articles_main_text_names_no_part_of_the_pipeline():
+    _, text = _pdf_text(ARTICLE_PDF)
+    assert AVAILABILITY in text
+    assert pipeline_vocabulary(main_text(text)) == []

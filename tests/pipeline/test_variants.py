@@ -28,7 +28,7 @@ FLAT = {"name": "flat", "alpha": "2", "gamma": "1/2", "D1": 0.01, "D2": 0.1,
 FLAT_CONFIG = ('extra_variants=[{name: flat, alpha: "2", gamma: "1/2", D1: 0.01, D2: 0.1, '
                'g_range: {min: 0.01, max: 10, points: 5}, readings: [P-N2-K2-Dprinted]}]')
 #: Manuscript-level jobs: they gather every variant, so a new variant reruns them.
-GATHERING = {"compare_variants", "variants_tex", "closed_form_section", "manuscript", ALL}
+GATHERING = {"compare_variants", "variants_tex", "closed_form_section", "manuscript", "supplement", ALL}
 
 
 def jobs_by_variant(tree: Path, *args: str) -> dict[str, set]:

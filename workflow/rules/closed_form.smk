@@ -31,11 +31,13 @@ rule closed_form_section:
         overlap_forms=expand("results/{variant}/closed_form/form_overlap.json", variant=list(VARIANTS)),
         overlap_errors=expand("results/{variant}/closed_form/errors_overlap.csv", variant=list(VARIANTS)),
         curve=f"results/{MAIN}/closed_form/eps_g.csv",
-        src=lib("core.asymptotics", "core.uniform", "core.collision"),
+        src=lib("core.asymptotics", "core.uniform", "core.collision", "core.energy"),
         code=code("closed_form_section.py") + ["workflow/scripts/common/latex.py"],
     output:
         tex="results/paper/closed_form.tex",
         values="results/paper/closed_form_values.tex",
+        table="results/paper/uniform_table.tex",            # the forms' tables alone, for the article
+        overlap_table="results/paper/uniform_overlap_table.tex",
         eps_pdf="results/paper/closed_form_eps.pdf",
         eps_png=report("results/paper/closed_form_eps.png", caption="../report/closed_form_eps.rst",
                        category="Figures", subcategory="closed form"),

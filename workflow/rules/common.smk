@@ -200,6 +200,9 @@ def relation_files(wildcards):
 FIGURES = ["fig1", "fig2", "fig3", "fig4"]
 PAPER_PDF = "results/paper/restitution.pdf"
 PAPER_BBL = "results/paper/restitution.bbl"
+SUPPLEMENT_PDF = "results/paper/supplement.pdf"
+SUPPLEMENT_BBL = "results/paper/supplement.bbl"
+SUPPLEMENT_AUX = "results/paper/supplement.aux"   # the article's cross-references to the supplement (xr)
 EXTRA = [name for name in VARIANTS if name != MAIN]   # variants with a generated section
 
 #: Rules built for only some variants (rule name -> predicate on the variant's name), each set
@@ -208,7 +211,7 @@ BUILT_FOR = {}
 #: Rules built only when their output is asked for (not part of `all`/`outputs`), and the rules
 #: that make the PDF (`all` adds them; `outputs` is everything that needs no TeX).
 ON_REQUEST = {"arxiv"}
-NEEDS_TEX = {"manuscript"}
+NEEDS_TEX = {"manuscript", "supplement"}
 #: The values each wildcard of a final output takes; a stage with wildcards of its own adds them.
 WILDCARD_VALUES = {"variant": lambda: list(VARIANTS), "fig": lambda: FIGURES, "ext": lambda: ["pdf", "png"]}
 
@@ -253,6 +256,9 @@ MANUSCRIPT_INPUTS = [
     "results/paper/inputs.tex",
     "results/paper/closed_form.tex",
     "results/paper/closed_form_values.tex",
+    "results/paper/uniform_table.tex",
+    "results/paper/uniform_overlap_table.tex",
+    "results/paper/exact_family_values.tex",
     "results/paper/closed_form_eps.pdf",
     "results/paper/closed_form_error.pdf",
     "results/paper/provenance.tex",

@@ -1,4 +1,4 @@
-# Stage 5: the reproduction article. paper/restitution.tex \input's generated files only
+# Stage 5: the article and its supplement. paper/restitution.tex \input's generated files only
 # (values, tables) and includes the main variant's figures; latexmk runs in build/paper/
 # (scratch, not reproducible byte for byte) and only the PDF is copied to results/paper/.
 
@@ -32,10 +32,39 @@ rule provenance:
         script_file("provenance.py")
 
 
+rule supplement:
+    """The supplement (paper/supplement.tex): the audit, the other force laws, the cost study, the DEM
+    details and the stability atlas. Its .aux is an output too: the article reads its labels (xr)."""
+    input:
+        tex="paper/supplement.tex",
+        bib="paper/restitution.bib",
+        generated=lambda wildcards: MANUSCRIPT_INPUTS,   # complete once every stage is included
+    output:
+        pdf=SUPPLEMENT_PDF,
+        bbl=SUPPLEMENT_BBL,
+        aux=SUPPLEMENT_AUX,
+    log:
+        "logs/supplement.log",
+    params:
+        build="build/supplement",
+    shell:
+        "rm -rf {params.build:q} && mkdir -p {params.build:q} && "
+        "FORCE_SOURCE_DATE=1 SOURCE_DATE_EPOCH=${{SOURCE_DATE_EPOCH:-1700000000}} "
+        "latexmk -pdf -interaction=nonstopmode -halt-on-error -file-line-error "
+        "-outdir={params.build:q} {input.tex:q} > {log:q} 2>&1 "
+        "|| (tail -n 40 {log:q} >&2; exit 1); "
+        "{ATOMIC} install {params.build:q}/supplement.bbl {output.bbl:q} && "
+        "{ATOMIC} install {params.build:q}/supplement.aux {output.aux:q} && "
+        "{ATOMIC} install {params.build:q}/supplement.pdf {output.pdf:q}"
+
+
 rule manuscript:
+    """The article (paper/restitution.tex), which cites the supplement's sections, tables and figures by
+    their numbers, read from the supplement's .aux."""
     input:
         tex="paper/restitution.tex",
         bib="paper/restitution.bib",
+        supplement=SUPPLEMENT_AUX,
         generated=lambda wildcards: MANUSCRIPT_INPUTS,   # complete once every stage is included
     output:
         pdf=PAPER_PDF,
@@ -63,6 +92,10 @@ rule arxiv:
         tex="paper/restitution.tex",
         bbl=PAPER_BBL,
         pdf=PAPER_PDF,
+        supplement_tex="paper/supplement.tex",
+        supplement_bbl=SUPPLEMENT_BBL,
+        supplement_aux=SUPPLEMENT_AUX,
+        supplement_pdf=SUPPLEMENT_PDF,
         generated=lambda wildcards: MANUSCRIPT_INPUTS,   # complete once every stage is included
         code=code("arxiv_bundle.py"),
     output:
@@ -71,3 +104,25 @@ rule arxiv:
         "logs/arxiv.log",
     script:
         script_file("arxiv_bundle.py")
+
+
+rule exact_family:
+    """The exact family alpha = 2 gamma + 1: the reference integrator against the linear dashpot at
+    (gamma + 1) Omega under both end rules, and the overlap rule's sticking threshold (the article's
+    section on it prints the measured agreement)."""
+    input:
+        src=lib("core.collision", "core.dashpot"),
+        code=code("exact_family.py") + ["workflow/scripts/common/latex.py"],
+    output:
+        values="results/paper/exact_family_values.tex",
+        table="results/paper/exact_family.csv",
+    params:
+        pairs=[[str(a), str(g)] for a, g in config["exact_family"]["pairs"]],
+        omegas=[float(w) for w in config["exact_family"]["omegas"]],
+        rtol=float(config["exact_family"]["rtol"]),
+        below=float(config["exact_family"]["below"]),
+        above=float(config["exact_family"]["above"]),
+    log:
+        "logs/exact_family.log",
+    script:
+        script_file("exact_family.py")

@@ -21,7 +21,10 @@ start(snakemake)
 EPOCH = int(os.environ.get("SOURCE_DATE_EPOCH", "1700000000"))
 
 # %% Members: name in the bundle -> file in the project
-members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path(snakemake.input.bbl)}
+members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path(snakemake.input.bbl),
+           # the supplement beside the article, and its .aux where the article's xr reads it
+           "supplement.tex": Path(snakemake.input.supplement_tex), "supplement.bbl": Path(snakemake.input.supplement_bbl),
+           Path(snakemake.input.supplement_aux).as_posix(): Path(snakemake.input.supplement_aux)}
 for path in snakemake.input.generated:
     members[Path(path).as_posix()] = Path(path)
 for name in members:

@@ -70,7 +70,7 @@ write_csv(out.curves, curve)
 frac = lambda s: frac_tex(Fraction(s))  # noqa: E731
 mods = list(P.moderate_omegas)
 lines = [r"\begin{tabular}{" + "l" * (6 + len(mods)) + "}", r"\toprule",
-         r"$\alpha$ & $\gamma$ & $k$ & $C$ & slope & dev., $\Omega \le " + sci(max(P.check_omegas), 1) + "$ & "
+         r"$\alpha$ & $\gamma$ & $\kappa$ & $C$ & slope & dev., $\Omega \le " + sci(max(P.check_omegas), 1) + "$ & "
          + " & ".join(rf"dev., $\Omega = {sci(om, 2)}$" for om in mods) + r" \\", r"\midrule"]
 for r in rows:
     lines.append(" & ".join([frac(r["alpha"]), frac(r["gamma"]), frac(r["k"]), sci(r["C"], 11), sci(r["slope"], 10),

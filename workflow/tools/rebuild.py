@@ -63,7 +63,8 @@ VALIDATION_ATOL = 1e-9
 #: Made on request only (make arxiv, make diff, make report), never by a build: not compared.
 ON_REQUEST = ["results/paper/arxiv.tar.gz", "results/paper/diff.pdf", "results/report.html"]
 #: Built only when TeX is available.
-REQUIRES_TEX = ["results/paper/restitution.pdf", "results/paper/restitution.bbl"]
+REQUIRES_TEX = ["results/paper/restitution.pdf", "results/paper/restitution.bbl", "results/paper/supplement.pdf",
+                "results/paper/supplement.bbl", "results/paper/supplement.aux"]
 
 
 def _outputs(tree: Path) -> list[Path]:

@@ -325,12 +325,14 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
     eps_of = lambda w: collide(ex, None, w, rtol=rtol).eps  # noqa: E731
     # small Omega = large g (damping dominates), large Omega = small g (nearly elastic)
     slope_eps_small_omega = _local_slope(eps_of, 1e-4, 2e-4)
-    slope_loss_large_omega = _local_slope(lambda w: 1.0 - eps_of(w), 1e3, 2e3)
+    loss_window = (1e3, 2e3)   # beyond figure 4's grid: the elastic limit proper
+    slope_loss_large_omega = _local_slope(lambda w: 1.0 - eps_of(w), *loss_window)
     slope_loss_range = _local_slope(lambda w: 1.0 - eps_of(w), float(np.max(omegas)) / 2, float(np.max(omegas)))
     values["omega_tilde_small_omega_exponent"] = 1.0 + float(k) * slope_eps_small_omega
     values["eps_scaling"] = {
         "eps_g_exponent_large_g": slope_eps_small_omega * float(k),
         "loss_g_exponent_small_g": slope_loss_large_omega * float(k),
+        "loss_slope_omegas": list(loss_window),
         "loss_g_exponent_at_g_min": slope_loss_range * float(k),
         # the paper's eps is a function of Omega ~ g^k alone, hence of g^(1/4) iff 4k is an integer
         "paper_relation_powers_of_g_quarter": bool((4 * k).denominator == 1),
