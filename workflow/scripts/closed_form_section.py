@@ -99,7 +99,7 @@ for ax in axes[1]:
 handles = {}
 for ax in axes[:, 0]:
     handles.update(zip(*reversed(ax.get_legend_handles_labels())))
-fig.legend(list(handles.values()), list(handles), loc="lower center", ncol=2, frameon=False, fontsize=8)
+fig.legend(list(handles.values()), list(handles), loc="lower center", ncol=2, frameon=False, fontsize=8.5)
 fig.tight_layout(rect=(0, 0.1, 1, 1))
 save_figure(fig, snakemake.output.err_pdf, snakemake.output.err_png)
 

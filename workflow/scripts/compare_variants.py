@@ -23,12 +23,17 @@ KNOWN = {"eps_dashpot": ("linear dashpot, closed form", dict(ls="none", marker="
 p = snakemake.params
 fig, ax = plt.subplots(figsize=(5.6, 5.8))
 colors = plt.cm.tab10(np.arange(len(p.variants)) % 10)
+LINESTYLES = ["-", "--", "-.", (0, (5, 1.5, 1, 1.5, 1, 1.5))]
+MARKERS = ["o", "s", "^", "v", "D"]
 for i, (name, known_file, curve_file) in enumerate(zip(p.variants, snakemake.input.known, snakemake.input.curves)):
     known = pd.read_csv(known_file)
     curve = pd.read_csv(curve_file)
     alpha, gamma = p.exponents[name]
-    ax.plot(known["omega"], known["eps_reference"], color=colors[i], lw=1.4,
-            label=rf"{name} ($\alpha = {alpha}$, $\gamma = {gamma}$)")
+    # a line style and hollow markers of its own (offset per variant): at small Omega the variants' curves
+    # run close together (eps ~ k Omega with similar k), and colour alone would not tell them apart
+    ax.plot(known["omega"], known["eps_reference"], color=colors[i], lw=1.4, ls=LINESTYLES[i % len(LINESTYLES)],
+            marker=MARKERS[i % len(MARKERS)], markersize=4.5, markerfacecolor="none",
+            markevery=(i % 3, 3), label=rf"{name} ($\alpha = {alpha}$, $\gamma = {gamma}$)")
     lo, hi = curve["omega"].min(), curve["omega"].max()
     if hi > lo * (1 + 1e-9):
         ax.plot(curve["omega"], curve["eps"], color=colors[i], lw=3.5, alpha=0.6, solid_capstyle="butt")
