@@ -58,7 +58,7 @@ else:
                else "no solution for this variant")
 derived = {"kind": "derived", "source": "restitution.audit.matching.paper_procedure"}
 if chosen is not None:
-    derived.update(label=rf"paper's procedure, reading {chosen['reading']}", c=chosen["c"],
+    derived.update(label="paper's procedure, as we read it", c=chosen["c"],
                    reading=chosen["reading"], description=chosen["description"], choice=why,
                    configured=p.figure_reading)
 else:
