@@ -77,7 +77,8 @@ MAX_PAGES = 16
 AVAILABILITY = "Data and code availability"
 #: What a reader of a physics paper should not meet in its main text: the workflow's own vocabulary.
 PIPELINE_WORDS = [r"ledger", r"\(tolerance", r"config", r"\.py\b", r"\.smk\b", r"workflow", r"snakemake",
-                  r"\bmake\s+(paper|check|test|expected|arxiv|bench|venv|outputs|report|diff|scene|verify|notebooks)\b", r"restitution\.(core|audit|fast|dem|cli)", r"pipeline", r"\bscript",
+                  r"\bmake\s+(paper|check|test|expected|arxiv|bench|venv|outputs|report|diff|scene|verify|notebooks)\b",
+                  r"restitution\.(core|audit|fast|dem|cli)", r"pipeline", r"\bscript",
                   r"results/", r"\bcommit\b", r"\bmacro", r"\brow\s+\d", r"\bmodule\b"]
 RULE_NAMES = sorted({m for smk in (ROOT / "workflow" / "rules").glob("*.smk")
                      for m in re.findall(r"^rule (\w+):", smk.read_text(), re.M) if "_" in m})

@@ -67,7 +67,8 @@ g_el = float(curve["g"].iloc[ok_el.max()]) if ok_el.size and ok_el.min() == 0 el
 g_vi = float(curve["g"].iloc[ok_vi.min()]) if ok_vi.size and ok_vi.max() == len(ref) - 1 else None
 _tol = sci(100 * LAW_TOL, 1)
 LAW_RANGE = {   # (elastic law within LAW_TOL somewhere, viscous law within LAW_TOL somewhere) -> one sentence
-    (True, True): rf"Within {_tol}\,\% they hold only for $g \le {sci(g_el, 2)}$ (elastic) and $g \ge {sci(g_vi, 2)}$ (viscous).",
+    (True, True): rf"Within {_tol}\,\% they hold only for $g \le {sci(g_el, 2)}$ (elastic) and "
+                  rf"$g \ge {sci(g_vi, 2)}$ (viscous).",
     (True, False): rf"Only the elastic law comes within {_tol}\,\%, for $g \le {sci(g_el, 2)}$.",
     (False, True): rf"Only the viscous law comes within {_tol}\,\%, for $g \ge {sci(g_vi, 2)}$.",
     (False, False): rf"Neither comes within {_tol}\,\% anywhere over these speeds.",
