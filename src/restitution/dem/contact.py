@@ -30,14 +30,18 @@ def contact_eps(alpha, gamma, end: str, omega: float, rtol: float = 1e-12) -> fl
     exponents), from the cheapest rung of the ladder that meets it: under the overlap rule the compiled integrator
     (tens of microseconds) instead of the reference (20-200 ms), which calibrations call dozens of
     times. Near the overlap rule's sticking boundary, where no fast rung meets that bound, the
-    reference answers as before. Raises StickError where the bodies stick under the overlap rule."""
+    reference answers as before. Raises StickError where the bodies stick under the overlap rule.
+    Nothing cached is read (``cached=False``): a master curve some earlier run left in the cache
+    answers within the same bound but not to the same bits, and a calibration (the pipeline's
+    calibration table, a DEM designer's D2) must not depend on what the user's cache holds."""
     from ..core.collision import StickError
     from ..core.errors import ParameterError
     from ..fast.ladder import epsilon
     from ..fast.rung import reference_bound
     try:
         tol = reference_bound(rtol, as_exponents(alpha, gamma))
-        return float(epsilon(alpha=alpha, gamma=gamma, omega=[omega], tol=tol, end=end, build=False).eps[0])
+        return float(epsilon(alpha=alpha, gamma=gamma, omega=[omega], tol=tol, end=end, build=False,
+                             cached=False).eps[0])
     except StickError:
         raise
     except ParameterError:
