@@ -162,7 +162,7 @@ diff: $(STAMP) tex
 # Outputs whose bytes are no longer what the pipeline wrote (make paper moves them aside and
 # rebuilds them by itself; this only reports).
 verify: $(STAMP)
-	@$(BIN)/python workflow/scripts/common/atomic.py verify .
+	@$(BIN)/python src/restitution_workflow/atomic.py verify .
 
 # Rebuild from clean in a temporary directory and compare with tests/expected/manifest.json.
 check: $(STAMP)

@@ -7,16 +7,13 @@
 #
 # Per-variant outputs live under results/<variant>/; see config.yaml for the variants.
 
-# The one place where the import path is set: the Snakefile and its rule files import this tree's
-# package (src/, ahead of whatever is installed: `make check` builds a copy of the tree) and the
-# workflow's helpers (workflow/scripts: `common`, `_config`), as Snakemake's `script:` gives each
-# script its own directory. Tools in workflow/tools find `common` through the symlink beside them,
-# notebooks through the one `make notebooks` puts beside them.
-sys.path[:0] = [str(Path(workflow.basedir) / "src"), str(Path(workflow.basedir) / "workflow" / "scripts")]
+# No import path is set here: the package (src/restitution) and the workflow's helpers
+# (src/restitution_workflow) are installed into the environment (make venv: an editable install
+# of this tree), so the Snakefile, its rule files and every `script:` import them by name.
 
 # A YAML syntax error in config.yaml: one line with its line number, before Snakemake's
-# `configfile:` would report it in two lines without one (workflow/scripts/_config.py).
-from _config import precheck_file  # noqa: E402
+# `configfile:` would report it in two lines without one (src/restitution_workflow/config.py).
+from restitution_workflow.config import precheck_file
 
 precheck_file("config.yaml")  # the path `configfile:` reads (relative to the working directory)
 

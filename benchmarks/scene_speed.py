@@ -20,10 +20,9 @@ from pathlib import Path
 
 import numpy as np
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "src"))
 
-from restitution.dem.scene import answer_scene  # noqa: E402
-from restitution.dem.scene_file import scene_from_dict  # noqa: E402
+from restitution.dem.scene import answer_scene
+from restitution.dem.scene_file import scene_from_dict
 
 TARGET_SECONDS = 10.0
 

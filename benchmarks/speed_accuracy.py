@@ -35,19 +35,18 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "src"))
 
-from restitution.core.asymptotics import elastic_limit, viscous_limit  # noqa: E402
-from restitution.core.exponents import as_exponents  # noqa: E402
-from restitution.fast.integrator import collide_fast  # noqa: E402
-from restitution.core.highprec import reference_collision  # noqa: E402
-from restitution.api import RELATIONS, Ladder  # noqa: E402
-from restitution.core.connection import eps_from_connection  # noqa: E402
-from restitution.fast import ladder as ladder_module  # noqa: E402
-from restitution.fast.calibration import Calibration, pade_mp2011  # noqa: E402
-from restitution.fast.master import MasterSettings  # noqa: E402
-from restitution.fast.uniform_build import build_uniform  # noqa: E402
-from restitution.fast.uniform_eval import uniform_eps  # noqa: E402
+from restitution.core.asymptotics import elastic_limit, viscous_limit
+from restitution.core.exponents import as_exponents
+from restitution.fast.integrator import collide_fast
+from restitution.core.highprec import reference_collision
+from restitution.api import RELATIONS, Ladder
+from restitution.core.connection import eps_from_connection
+from restitution.fast import ladder as ladder_module
+from restitution.fast.calibration import Calibration, pade_mp2011
+from restitution.fast.master import MasterSettings
+from restitution.fast.uniform_build import build_uniform
+from restitution.fast.uniform_eval import uniform_eps
 
 SEED = 12345
 OMEGA_RANGE = (1e-6, 1e6)

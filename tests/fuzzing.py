@@ -434,9 +434,8 @@ def check_argv_case(argv, must_refuse) -> dict:
 
 # ----------------------------------------------------------------------------- config mutations
 def _config_tools():
-    sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
     import yaml
-    from _config import ConfigError, check_config
+    from restitution_workflow.config import ConfigError, check_config
     return yaml, ConfigError, check_config
 
 

@@ -19,7 +19,6 @@ import os
 import shutil
 import signal
 import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path
@@ -27,7 +26,6 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 BIN = ROOT / ".venv" / "bin"
-sys.path.insert(0, str(ROOT / "workflow" / "tools"))
 
 import rebuild  # noqa: E402  (workflow/tools/rebuild.py)
 

@@ -97,7 +97,7 @@ def clean(obj):
 
 
 # Every writer below writes to a hidden temporary name in the output's directory and renames it
-# into place (common.atomic.atomic_path), so a killed job never leaves a truncated output behind.
+# into place (restitution_workflow.atomic.atomic_path), so a killed job never leaves a truncated output behind.
 
 def write_json(path, obj) -> None:
     text = json.dumps(clean(obj), indent=2, allow_nan=False)

@@ -214,8 +214,7 @@ def test_output_folder_names_are_reserved(where, name):
     import copy
 
     import yaml
-    sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
-    from _config import ConfigError, check_config
+    from restitution_workflow.config import ConfigError, check_config
 
     config = yaml.safe_load((ROOT / "config.yaml").read_text())
     config = copy.deepcopy(config)
@@ -231,8 +230,7 @@ def test_output_folder_names_are_reserved(where, name):
 
 def test_a_name_beside_a_reserved_one_is_accepted():
     import yaml
-    sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
-    from _config import check_config
+    from restitution_workflow.config import check_config
 
     config = yaml.safe_load((ROOT / "config.yaml").read_text())
     config["extra_variants"] = [{**config["variants"][0], "name": "papers"}]

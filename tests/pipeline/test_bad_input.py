@@ -11,7 +11,6 @@ from __future__ import annotations
 import copy
 import math
 import subprocess
-import sys
 import warnings
 from fractions import Fraction
 
@@ -24,8 +23,7 @@ from restitution.core.errors import ParameterError
 from cli_run import run_cli
 from pipeline_tree import BIN, ENV, ROOT, copy_built, digests, fresh_tree, make, snakemake
 
-sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
-from _config import ConfigError, check_config  # noqa: E402  (workflow/scripts/_config.py)
+from restitution_workflow.config import ConfigError, check_config
 from mutation import set_at  # noqa: E402
 
 

@@ -5,7 +5,6 @@ naming the field (or the line of the file), before anything runs."""
 from __future__ import annotations
 
 import copy
-import sys
 import time
 from pathlib import Path
 
@@ -13,9 +12,8 @@ import pytest
 import yaml
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
 
-import _config  # noqa: E402
+from restitution_workflow import config as _config
 
 from pipeline_tree import snakemake  # noqa: E402
 

@@ -1,6 +1,6 @@
 """Faults: killed runs, two runs at once, read-only or full results/, half-written files.
 
-Unit tests cover the pieces (workflow/scripts/common/atomic.py, workflow/tools/guard.py and preflight.py); the slow
+Unit tests cover the pieces (src/restitution_workflow/atomic.py, workflow/tools/guard.py and preflight.py); the slow
 tests run the real pipeline (`make outputs`, no TeX) in temporary copies of the project and
 compare what they end with against one clean build, byte for byte.
 """
@@ -24,11 +24,9 @@ import pytest
 from pipeline_tree import (ENV, ROOT, cmdline, copy_built, descendants, digests, fresh_tree, make, make_cmd,
                            running_jobs, snakemake_pid, stop_all, wait_for)
 
-sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
-sys.path.insert(0, str(ROOT / "workflow" / "tools"))
 import guard  # noqa: E402
 import preflight  # noqa: E402
-from common import atomic as _atomic  # noqa: E402
+from restitution_workflow import atomic as _atomic  # noqa: E402
 
 
 def can_mount() -> bool:
@@ -89,23 +87,24 @@ def test_pipeline_scripts_of_this_stage_write_atomically():
         assert ".to_csv(snakemake" not in text and ".savefig(snakemake" not in text, name
 
 
-# A file-writing call whose target is not a temporary path from common.atomic.atomic_path.
+# A file-writing call whose target is not a temporary path from restitution_workflow.atomic.atomic_path.
 _DIRECT_WRITE = re.compile(r"""\.to_csv\(|\.savefig\(|\.write_text\(|\.write_bytes\(|\bopen\([^)]*["'][wax]b?["']""")
 
 
 def test_every_workflow_script_writes_outputs_through_the_atomic_helpers():
     """Every output is written under a temporary name and renamed: scripts call _pipeline's writers
-    (write_json, write_text, write_csv, save_figure) or common.atomic directly; a direct write may only
+    (write_json, write_text, write_csv, save_figure) or restitution_workflow.atomic directly; a direct write may only
     target the temporary path (or the job's log, which Snakemake does not treat as an output)."""
     offenders = []
     scripts = ROOT / "workflow" / "scripts"
-    for path in sorted([*scripts.glob("*.py"), scripts / "common" / "pipeline.py", scripts / "common" / "latex.py"]):
+    helpers = ROOT / "src" / "restitution_workflow"
+    for path in sorted([*scripts.glob("*.py"), helpers / "pipeline.py", helpers / "latex.py"]):
         for number, line in enumerate(path.read_text().splitlines(), 1):
             code = line.split("#", 1)[0]
             if _DIRECT_WRITE.search(code) and "tmp" not in code and "open(log" not in code:
                 offenders.append(f"{path.name}:{number}: {line.strip()}")
     assert not offenders, "\n".join(offenders)
-    pipeline = (ROOT / "workflow" / "scripts" / "common" / "pipeline.py").read_text()
+    pipeline = (helpers / "pipeline.py").read_text()
     assert "from .atomic import atomic_path" in pipeline
 
 
@@ -127,10 +126,10 @@ def test_the_atomic_writer_records_what_it_wrote_and_installs_for_shell_rules(tm
     src.parent.mkdir()
     src.write_bytes(b"%PDF finished")
     dest = tmp_path / "results" / "paper" / "x.pdf"
-    proc = subprocess.run([sys.executable, str(ROOT / "workflow/scripts/common/atomic.py"), "install", str(src), str(dest)],
+    proc = subprocess.run([sys.executable, str(ROOT / "src/restitution_workflow/atomic.py"), "install", str(src), str(dest)],
                           capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
-    proc = subprocess.run([sys.executable, str(ROOT / "workflow/scripts/common/atomic.py"), "write",
+    proc = subprocess.run([sys.executable, str(ROOT / "src/restitution_workflow/atomic.py"), "write",
                            str(tmp_path / "results" / "list.txt")], input="a\nb\n", capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     assert dest.read_bytes() == b"%PDF finished"
@@ -177,7 +176,7 @@ def test_second_run_waits_or_stops(tmp_path, capsys):
 def _guarded(tree: Path, *cmd: str) -> subprocess.Popen:
     return subprocess.Popen([sys.executable, str(ROOT / "workflow/tools/guard.py"), "--", *cmd], cwd=tree,
                             stderr=subprocess.PIPE, text=True,
-                            env={**ENV, "PIPELINE_MIN_FREE_MB": "0", "PYTHONPATH": str(ROOT / "workflow/scripts")})
+                            env={**ENV, "PIPELINE_MIN_FREE_MB": "0"})
 
 
 def test_the_lock_lives_as_long_as_the_build_and_a_killed_wrapper_stops_the_build(tmp_path):
@@ -441,7 +440,7 @@ def test_a_damaged_or_deleted_output_is_rebuilt_never_used(built, tmp_path):
 
     check = make(tree, "verify")
     assert check.returncode == 2     # make's status for a failed recipe, as the README says
-    script = subprocess.run([str(ROOT / ".venv/bin/python"), str(ROOT / "workflow/scripts/common/atomic.py"),
+    script = subprocess.run([str(ROOT / ".venv/bin/python"), str(ROOT / "src/restitution_workflow/atomic.py"),
                              "verify", str(tree)], capture_output=True, text=True)
     assert script.returncode == 1    # the script's own, as the README says
     for rel, what in (("results/kim/reference/eps_curve.csv", "changed"), ("results/kim/connection/fit.json", "changed"),

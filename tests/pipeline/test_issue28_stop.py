@@ -126,7 +126,6 @@ def test_preflight_refusal_exits_2(tmp_path):
     assert "results/ is not a directory" in res.stdout + res.stderr
     guard = subprocess.run([str(ROOT / ".venv/bin/python"), str(ROOT / "workflow/tools/guard.py"), "--", "true"],
                            cwd=tree, capture_output=True, text=True, timeout=60,
-                           env={**os.environ, "PIPELINE_MIN_FREE_MB": "0",
-                                "PYTHONPATH": str(ROOT / "workflow/scripts")})
+                           env={**os.environ, "PIPELINE_MIN_FREE_MB": "0"})
     assert guard.returncode == 2, guard.stderr
     assert len(guard.stderr.strip().splitlines()) == 1

@@ -52,9 +52,7 @@ def test_the_scan_finds_a_typed_result():
 def test_generated_text_writes_numbers_and_minus_signs_as_mathematics():
     """The ledger's plain-text values become LaTeX: 1.6e-08 a power of ten, a spaced or leading '-'
     a minus sign (a bare '-' in text is a hyphen), hyphenated labels untouched."""
-    import sys
-    sys.path.insert(0, str(PAPER.parent / "workflow" / "scripts"))
-    from common.latex import math_text
+    from restitution_workflow.latex import math_text
 
     assert math_text("1.6e-08 in the forward one") == r"\(1.6\times 10^{-8}\) in the forward one"
     assert r"\(-\)" in math_text("tau_b - tau_0") and r"\(-\)" in math_text("-1 - (2/3)")

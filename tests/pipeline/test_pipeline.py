@@ -20,7 +20,6 @@ from pathlib import Path
 import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
-sys.path.insert(0, str(ROOT / "workflow" / "tools"))
 
 import rebuild  # noqa: E402  (workflow/tools/rebuild.py)
 from pipeline_tree import ALL, copy_built, make  # noqa: E402
@@ -433,7 +432,6 @@ def test_a_figure_script_runs_as_a_notebook(built, tmp_path):
 
 
 def test_jupytext_renders_the_scripts_as_notebooks(tmp_path):
-    sys.path.insert(0, str(ROOT / "workflow" / "tools"))
     import notebooks
 
     for script in sorted((ROOT / "workflow/scripts").glob("[!_]*.py")):  # every script a rule runs

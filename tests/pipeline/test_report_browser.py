@@ -16,7 +16,6 @@ import json
 import re
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -131,8 +130,7 @@ def test_the_manuscript_names_its_commit_and_software(built):
     """Parameters of the provenance rule: two builds of one commit in one environment give the same
     bytes (make check, make reproducible), another commit or package version rebuilds the PDF. The
     test's build is a copy without .git; a checkout names its HEAD."""
-    sys.path.insert(0, str(ROOT / "workflow/scripts"))
-    from common.provenance import build_commit, versions
+    from restitution_workflow.provenance import build_commit, versions
 
     head = subprocess.run(["git", "-C", str(ROOT), "rev-parse", "HEAD"], capture_output=True, text=True)
     if head.returncode == 0:

@@ -32,7 +32,7 @@ rule closed_form_section:
         overlap_errors=expand("results/{variant}/closed_form/errors_overlap.csv", variant=list(VARIANTS)),
         curve=f"results/{MAIN}/closed_form/eps_g.csv",
         src=lib("core.asymptotics", "core.uniform", "core.collision", "core.energy"),
-        code=code("closed_form_section.py") + ["workflow/scripts/common/latex.py"],
+        code=code("closed_form_section.py") + ["src/restitution_workflow/latex.py"],
     output:
         tex="results/paper/closed_form.tex",
         values="results/paper/closed_form_values.tex",

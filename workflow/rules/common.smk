@@ -12,18 +12,14 @@ from fractions import Fraction
 from pathlib import Path
 
 
-ROOT = Path(workflow.basedir)   # this tree's src/ and workflow/scripts are on the path (Snakefile)
+ROOT = Path(workflow.basedir)
 
-from common.provenance import build_commit, versions
-from _config import ConfigError, check_config  # workflow/scripts/_config.py
+from restitution_workflow.provenance import build_commit, versions
+from restitution_workflow.config import ConfigError, check_config  # src/restitution_workflow/config.py
 
-# Every generated file carries this date instead of "now" (the Makefile exports the same value),
-# and the scripts import the package from this tree's src/, whatever is installed.
+# Every generated file carries this date instead of "now" (the Makefile exports the same value).
 os.environ.setdefault("SOURCE_DATE_EPOCH", "1700000000")
 os.environ.setdefault("PYTHONHASHSEED", "0")
-os.environ["PYTHONPATH"] = os.pathsep.join(
-    [str(ROOT / "src")] + [p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p]
-)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -155,7 +151,7 @@ BUILD_COMMIT, BUILD_VERSIONS = build_commit(ROOT), versions()
 
 
 # The one atomic writer, for shell rules: `{ATOMIC} install SRC DEST`, `... | {ATOMIC} write DEST`.
-ATOMIC = f"{shlex.quote(sys.executable)} {shlex.quote(str(ROOT / 'workflow' / 'scripts' / 'common' / 'atomic.py'))}"
+ATOMIC = f"{shlex.quote(sys.executable)} {shlex.quote(str(ROOT / 'src' / 'restitution_workflow' / 'atomic.py'))}"
 
 
 def script_file(name):
@@ -165,8 +161,8 @@ def script_file(name):
 
 def code(name):
     """... and the same file as an input, so touching it reruns the rule (and its dependants),
-    with the helpers every script writes through (common/pipeline.py imports common/atomic.py)."""
-    return [f"workflow/scripts/{name}", "workflow/scripts/common/pipeline.py", "workflow/scripts/common/atomic.py"]
+    with the helpers every script writes through (restitution_workflow/pipeline.py imports its atomic.py)."""
+    return [f"workflow/scripts/{name}", "src/restitution_workflow/pipeline.py", "src/restitution_workflow/atomic.py"]
 
 
 # ---------------------------------------------------------------------------------------------

@@ -9,7 +9,7 @@ rule connection_readings:
     input:
         summary=rules.reference_trajectories.output.summary,
         src=lib("audit.matching"),
-        code=code("connection_readings.py") + ["workflow/scripts/_config.py", "workflow/scripts/common/latex.py"],
+        code=code("connection_readings.py") + ["src/restitution_workflow/config.py", "src/restitution_workflow/latex.py"],
     output:
         json="results/{variant}/connection/readings.json",
         csv="results/{variant}/connection/readings.csv",
@@ -54,7 +54,7 @@ rule eps_compare:
         curve=rules.reference_eps_curve.output[0],
         relations=relation_files,
         src=lib("core.connection"),
-        code=code("eps_compare.py") + ["workflow/scripts/common/latex.py"],
+        code=code("eps_compare.py") + ["src/restitution_workflow/latex.py"],
     output:
         curves="results/{variant}/connection/eps_compare.csv",
         errors=report("results/{variant}/connection/eps_errors.csv", caption="../report/eps_errors.rst",
@@ -78,7 +78,7 @@ rule claims:
         curve=rules.reference_eps_curve.output[0],
         summary=rules.reference_trajectories.output.summary,
         src=lib("audit.claims", "audit.claim_values"),
-        code=code("claims.py") + ["workflow/scripts/common/latex.py"],
+        code=code("claims.py") + ["src/restitution_workflow/latex.py"],
     output:
         csv=report("results/{variant}/claims.csv", caption="../report/claims.rst", category="Tables",
                    subcategory="{variant}"),

@@ -48,7 +48,7 @@ rule typed_e:
     values at which the engine tests run it and the agreement they demand."""
     input:
         src=lib("dem.settings"),
-        code=code("typed_e.py") + ["workflow/scripts/common/latex.py"],
+        code=code("typed_e.py") + ["src/restitution_workflow/latex.py"],
     output:
         csv=TYPED_E_FILES[0],
         table=TYPED_E_FILES[1],
@@ -92,7 +92,7 @@ rule overlap_limit:
     integrators, its table, figure and the numbers the manuscript prints."""
     input:
         src=lib("core.overlap_limit", "core.collision", "core.highprec", "fast.master", "fast.rung"),
-        code=code("overlap_limit.py") + ["workflow/scripts/common/latex.py"],
+        code=code("overlap_limit.py") + ["src/restitution_workflow/latex.py"],
     output:
         csv=OVERLAP_FILES[0],
         curves=OVERLAP_FILES[1],

@@ -112,7 +112,7 @@ rule exact_family:
     section on it prints the measured agreement)."""
     input:
         src=lib("core.collision", "core.dashpot"),
-        code=code("exact_family.py") + ["workflow/scripts/common/latex.py"],
+        code=code("exact_family.py") + ["src/restitution_workflow/latex.py"],
     output:
         values="results/paper/exact_family_values.tex",
         table="results/paper/exact_family.csv",

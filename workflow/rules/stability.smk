@@ -7,7 +7,7 @@
 # MANUSCRIPT_INPUTS). Settings: config["stability"] (all optional; the schema lists them).
 
 from restitution.audit.stability import AtlasSpec as _AtlasSpec
-from _config import atlas_settings as _atlas_settings
+from restitution_workflow.config import atlas_settings as _atlas_settings
 
 # config["stability"] was checked with the rest of the config (common.smk): schema and AtlasSpec.
 STABILITY_SPEC = _AtlasSpec.from_config(_atlas_settings(config)).as_dict()
@@ -52,7 +52,7 @@ rule stability_atlas:
         shards=expand("results/stability/shards/{shard}-of-{shards}.csv",
                       shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
         src=lib("audit.stability", "audit.stability_checks"),
-        code=code("stability_atlas.py") + ["workflow/scripts/common/latex.py"],
+        code=code("stability_atlas.py") + ["src/restitution_workflow/latex.py"],
     output:
         atlas="results/stability/atlas.csv",
         summary="results/stability/summary.csv",
@@ -120,7 +120,7 @@ rule uniform_atlas:
         shards=expand("results/stability/uniform/{shard}-of-{shards}.json",
                       shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
         src=lib("core.uniform"),
-        code=code("uniform_atlas.py") + ["workflow/scripts/common/latex.py"],
+        code=code("uniform_atlas.py") + ["src/restitution_workflow/latex.py"],
     output:
         csv="results/stability/uniform_forms.csv",
         tex="results/stability/uniform_forms.tex",

@@ -33,7 +33,7 @@ rule variant_section:
         values="results/{variant}/values/values.json",
         validation=rules.validation.output.json,
         form="results/{variant}/closed_form/form.json",
-        code=code("variant_section.py") + ["workflow/scripts/common/latex.py"],
+        code=code("variant_section.py") + ["src/restitution_workflow/latex.py"],
     output:
         "results/{variant}/section.tex",
     log:
@@ -87,7 +87,7 @@ rule variants_tex:
     input:
         sections=expand("results/{variant}/section.tex", variant=EXTRA),
         validation=expand("results/{variant}/validation/validation.json", variant=list(VARIANTS)),
-        code=code("variants_tex.py") + ["workflow/scripts/common/latex.py"],
+        code=code("variants_tex.py") + ["src/restitution_workflow/latex.py"],
     output:
         sections="results/paper/variants.tex",
         validation="results/paper/validation.tex",

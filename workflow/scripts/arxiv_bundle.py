@@ -14,8 +14,8 @@ import os
 import tarfile
 from pathlib import Path
 
-from common.atomic import atomic_path
-from common.pipeline import start
+from restitution_workflow.atomic import atomic_path
+from restitution_workflow.pipeline import start
 
 start(snakemake)
 EPOCH = int(os.environ.get("SOURCE_DATE_EPOCH", "1700000000"))

@@ -9,8 +9,8 @@
 import math
 
 import pandas as pd
-from common.latex import esc, sci
-from common.pipeline import save_figure, setup_matplotlib, start, write_text
+from restitution_workflow.latex import esc, sci
+from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_text
 
 start(snakemake)
 plt = setup_matplotlib()

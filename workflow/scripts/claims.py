@@ -15,8 +15,8 @@
 
 import numpy as np
 import pandas as pd
-from common.latex import esc, math_text, sentence
-from common.pipeline import read_json, start, write_csv, write_json, write_text
+from restitution_workflow.latex import esc, math_text, sentence
+from restitution_workflow.pipeline import read_json, start, write_csv, write_json, write_text
 
 from restitution.audit import claim_values
 from restitution.audit import claims as cl

@@ -11,8 +11,8 @@ from fractions import Fraction
 
 import numpy as np
 import pandas as pd
-from common.latex import esc, frac_tex, sci
-from common.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
+from restitution_workflow.latex import esc, frac_tex, sci
+from restitution_workflow.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
 
 from restitution.core import asymptotics as asy
 from restitution.core.collision import collide

@@ -9,7 +9,7 @@
 # %%
 import numpy as np
 import pandas as pd
-from common.pipeline import save_figure, setup_matplotlib, start
+from restitution_workflow.pipeline import save_figure, setup_matplotlib, start
 
 start(snakemake)
 plt = setup_matplotlib()

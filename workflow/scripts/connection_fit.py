@@ -14,7 +14,7 @@
 
 # %%
 import pandas as pd
-from common.pipeline import read_json, start, write_csv, write_json
+from restitution_workflow.pipeline import read_json, start, write_csv, write_json
 
 from restitution.core import connection
 from restitution.core.errors import ParameterError

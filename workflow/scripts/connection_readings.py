@@ -14,8 +14,8 @@
 import math
 
 import pandas as pd
-from common.latex import esc, fixed
-from common.pipeline import read_json, start, write_csv, write_json, write_text
+from restitution_workflow.latex import esc, fixed
+from restitution_workflow.pipeline import read_json, start, write_csv, write_json, write_text
 
 from restitution.audit import matching, readings
 from restitution.audit.readings import XC_SUFFIX

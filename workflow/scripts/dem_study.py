@@ -12,8 +12,8 @@
 # %%
 import numpy as np
 import pandas as pd
-from common.latex import fixed, sci
-from common.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
+from restitution_workflow.latex import fixed, sci
+from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
 
 from restitution.dem.calibrate import calibrate
 from restitution.dem.codes import Pair, lammps_contact, lammps_pair_coeff

@@ -12,8 +12,8 @@
 # %%
 import numpy as np
 import pandas as pd
-from common.latex import esc, sci
-from common.pipeline import read_json, start, write_csv, write_text
+from restitution_workflow.latex import esc, sci
+from restitution_workflow.pipeline import read_json, start, write_csv, write_text
 
 from restitution.core.connection import eps_from_connection
 from restitution.core.exponents import Exponents

@@ -13,8 +13,8 @@
 from fractions import Fraction
 
 import pandas as pd
-from common.latex import frac_tex, sci
-from common.pipeline import start, write_csv, write_text
+from restitution_workflow.latex import frac_tex, sci
+from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.core.collision import collide
 from restitution.core.dashpot import dashpot_collision

@@ -9,7 +9,7 @@
 # %%
 import numpy as np
 import pandas as pd
-from common.pipeline import order_style, read_json, save_figure, setup_matplotlib, start
+from restitution_workflow.pipeline import order_style, read_json, save_figure, setup_matplotlib, start
 
 from restitution.core.series import perturbation_series
 

@@ -12,7 +12,7 @@
 from fractions import Fraction
 
 import numpy as np
-from common.pipeline import save_figure, setup_matplotlib, start
+from restitution_workflow.pipeline import save_figure, setup_matplotlib, start
 
 from restitution.core import damped
 

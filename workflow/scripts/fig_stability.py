@@ -12,8 +12,8 @@ from fractions import Fraction
 
 import numpy as np
 import pandas as pd
-from common.atomic import atomic_path
-from common.pipeline import PDF_METADATA, PNG_METADATA, setup_matplotlib, start
+from restitution_workflow.atomic import atomic_path
+from restitution_workflow.pipeline import PDF_METADATA, PNG_METADATA, setup_matplotlib, start
 
 from restitution.audit import stability as st
 

@@ -5,7 +5,7 @@
 # main variant in config.yaml needs no edit of the article.
 
 # %%
-from common.pipeline import start, write_text
+from restitution_workflow.pipeline import start, write_text
 
 start(snakemake)
 

@@ -13,8 +13,8 @@ from functools import lru_cache
 
 import numpy as np
 import pandas as pd
-from common.latex import esc, frac_tex, sci
-from common.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
+from restitution_workflow.latex import esc, frac_tex, sci
+from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
 
 from restitution.core.collision import collide
 from restitution.core.exponents import as_exponents

@@ -5,7 +5,7 @@
 # files of the same shape ({"label", "source", "c"}).
 
 # %%
-from common.pipeline import start, write_json
+from restitution_workflow.pipeline import start, write_json
 
 from restitution.audit.printed import PRINTED_C
 

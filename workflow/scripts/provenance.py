@@ -7,8 +7,8 @@
 # environment stay byte-identical (no build time, no host name).
 
 # %%
-from common.latex import esc
-from common.pipeline import start, write_text
+from restitution_workflow.latex import esc
+from restitution_workflow.pipeline import start, write_text
 
 start(snakemake)
 

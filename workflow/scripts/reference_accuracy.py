@@ -9,7 +9,7 @@
 import time
 
 import pandas as pd
-from common.pipeline import start, write_csv
+from restitution_workflow.pipeline import start, write_csv
 
 from restitution.core.collision import collide
 from restitution.core.model import Material

@@ -8,7 +8,7 @@
 # %%
 import numpy as np
 import pandas as pd
-from common.pipeline import start, write_csv
+from restitution_workflow.pipeline import start, write_csv
 
 from restitution.core.collision import collide_many
 from restitution.core.model import Material

@@ -13,7 +13,7 @@
 # %%
 import numpy as np
 import pandas as pd
-from common.pipeline import start, write_csv, write_json
+from restitution_workflow.pipeline import start, write_csv, write_json
 
 from restitution.core.collision import collide, inverse_collide
 from restitution.core.connection import rebound_omega

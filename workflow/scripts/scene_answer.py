@@ -7,7 +7,7 @@
 # %%
 import json
 
-from common.pipeline import start, write_text
+from restitution_workflow.pipeline import start, write_text
 
 from restitution.cli import scene_table
 from restitution.dem.scene import answer_scene

@@ -12,7 +12,7 @@ import math
 from pathlib import Path
 
 import numpy as np
-from common.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
+from restitution_workflow.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
 
 start(snakemake)
 plt = setup_matplotlib()

@@ -6,7 +6,7 @@
 # rationals as strings ("-4/35"), so nothing is rounded.
 
 # %%
-from common.pipeline import start, write_json
+from restitution_workflow.pipeline import start, write_json
 
 from restitution.core.series import perturbation_series
 

@@ -9,7 +9,7 @@
 # %%
 from fractions import Fraction
 
-from common.pipeline import read_json, start, write_json, write_text
+from restitution_workflow.pipeline import read_json, start, write_json, write_text
 
 from restitution.audit.printed import PRINTED_SERIES
 

@@ -6,15 +6,15 @@
 # checks the invariants over the whole grid, and writes the atlas, the per-pair summary, the
 # agreement with the limits, the list of violations and the appendix's numbers (LaTeX macros).
 # All physics lives in `restitution.audit.stability`; every file is written under a temporary name
-# and renamed (`common/atomic.py`).
+# and renamed (`restitution_workflow/atomic.py`).
 
 # %%
 import math
 import time
 
 import pandas as pd
-from common.atomic import atomic_path, write_text_atomic
-from common.pipeline import start
+from restitution_workflow.atomic import atomic_path, write_text_atomic
+from restitution_workflow.pipeline import start
 
 from restitution.audit import stability as st
 from restitution.audit import stability_checks as sc
@@ -90,7 +90,7 @@ if snakemake.rule == "stability_atlas":
 
 # %%
 if snakemake.rule == "stability_atlas":
-    from common.latex import frac_tex, sci
+    from restitution_workflow.latex import frac_tex, sci
     from fractions import Fraction
 
     def ex(text):

@@ -10,8 +10,8 @@
 
 # %%
 import pandas as pd
-from common.latex import esc, fixed, sci
-from common.pipeline import start, write_csv, write_text
+from restitution_workflow.latex import esc, fixed, sci
+from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.dem.codes import LAMMPS_CHECKED, TSUJI_SQRT2_SINCE
 from restitution.dem.settings import TYPED_E_CODES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL, TYPED_E_ENGINES, typed_e_table

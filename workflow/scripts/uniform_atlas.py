@@ -13,8 +13,8 @@
 from fractions import Fraction
 
 import pandas as pd
-from common.latex import frac_tex, sci
-from common.pipeline import read_json, start, write_csv, write_json, write_text
+from restitution_workflow.latex import frac_tex, sci
+from restitution_workflow.pipeline import read_json, start, write_csv, write_json, write_text
 
 from restitution.core.errors import ParameterError
 from restitution.core.uniform import skeleton

@@ -10,7 +10,7 @@
 # %%
 import numpy as np
 import pandas as pd
-from common.pipeline import start, write_csv, write_json
+from restitution_workflow.pipeline import start, write_csv, write_json
 
 from restitution.core.errors import ParameterError
 from restitution.core.uniform import FORM_RANGE, skeleton

@@ -24,7 +24,7 @@ from fractions import Fraction
 
 import numpy as np
 import pandas as pd
-from common.pipeline import start, write_csv, write_json
+from restitution_workflow.pipeline import start, write_csv, write_json
 
 from restitution.core import asymptotics
 from restitution.core.collision import collide_many

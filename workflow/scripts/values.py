@@ -15,8 +15,8 @@ from fractions import Fraction
 
 import numpy as np
 import pandas as pd
-from common.latex import esc, frac_tex, math_text, sci
-from common.pipeline import read_json, start, write_json, write_text
+from restitution_workflow.latex import esc, frac_tex, math_text, sci
+from restitution_workflow.pipeline import read_json, start, write_json, write_text
 
 from restitution.audit import claims as cl
 from restitution.audit import printed

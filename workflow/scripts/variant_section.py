@@ -8,8 +8,8 @@
 # fit and no eps from a relation), the section says so instead of showing it.
 
 # %%
-from common.latex import esc, math_text, sci
-from common.pipeline import read_json, start, write_text
+from restitution_workflow.latex import esc, math_text, sci
+from restitution_workflow.pipeline import read_json, start, write_text
 
 start(snakemake)
 

@@ -6,8 +6,8 @@
 # variants_values.tex the counts the text prints.
 
 # %%
-from common.latex import esc, math_text, sci
-from common.pipeline import read_json, start, write_text
+from restitution_workflow.latex import esc, math_text, sci
+from restitution_workflow.pipeline import read_json, start, write_text
 
 start(snakemake)
 

@@ -1,7 +1,7 @@
 """The workflow scripts as notebooks: `make notebooks` writes notebooks/<script>.ipynb.
 
 A script run by Snakemake gets its `snakemake` object from Snakemake; opened as a notebook it
-replays the pipeline's last run of its rule instead (common.pipeline.replay, from the job that
+replays the pipeline's last run of its rule instead (restitution_workflow.pipeline.replay, from the job that
 `start(snakemake)` recorded under build/jobs/). That replay cell is added here, at conversion, so
 the scripts themselves stay plain (imports first, no notebook-only code).
 
@@ -11,7 +11,6 @@ the scripts themselves stay plain (imports first, no notebook-only code).
 from __future__ import annotations
 
 import argparse
-import os
 import sys
 from pathlib import Path
 
@@ -22,7 +21,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SCRIPTS = ROOT / "workflow" / "scripts"
 
 REPLAY = '''# Opened as a notebook: replay the pipeline's last run of this rule (run `make paper` first).
-from common.pipeline import replay   # the `common` beside this notebook: the workflow's helpers
+from restitution_workflow.pipeline import replay   # the workflow's helpers, installed with the package
 
 snakemake = replay({rule!r})'''
 
@@ -43,11 +42,6 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     scripts = args.scripts or sorted(p for p in SCRIPTS.glob("*.py"))
     args.out.mkdir(parents=True, exist_ok=True)
-    # the helpers the replay cell imports, beside the notebooks (a notebook's directory is on its
-    # import path), relative so that a copy of the tree keeps its own
-    link = args.out / "common"
-    if not link.is_symlink():
-        link.symlink_to(Path(os.path.relpath(SCRIPTS / "common", args.out.resolve())), target_is_directory=True)
     ext = ".ipynb" if args.to == "ipynb" else ".py"
     for script in scripts:
         jupytext.write(notebook(script), args.out / (script.stem + ext), fmt=args.to)

@@ -2,7 +2,7 @@
 changed since the pipeline wrote them, and whether a failed run died of the disk.
 
 Each problem is one line saying which directory, why (read-only, permission, full, a file in the
-way) and what to do. The errno advice is the atomic writer's (workflow/scripts/common/atomic.py,
+way) and what to do. The errno advice is the atomic writer's (src/restitution_workflow/atomic.py,
 found through the symlink workflow/tools/common), so a job that cannot write
 and a run that cannot start say the same thing.
 """
@@ -19,7 +19,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from common.atomic import advice, compact_written, verify_written  # workflow/tools/common -> workflow/scripts/common
+from restitution_workflow.atomic import advice, compact_written, verify_written
 
 #: One run at a time in a tree: whoever holds an flock on this file (guard.py passes it to Snakemake).
 LOCK = Path("build") / ".pipeline.lock"

@@ -104,7 +104,7 @@ def kernel_cache(tree: Path) -> None:
 
 def build_commit() -> str:
     """What this checkout's manuscript names as its commit, for a copy that has no .git."""
-    from common.provenance import build_commit as commit_of
+    from restitution_workflow.provenance import build_commit as commit_of
 
     return commit_of(ROOT)
 
@@ -354,7 +354,7 @@ def working_tree_is_current() -> str | None:
                          cwd=ROOT, env={**os.environ, **ENV}, capture_output=True, text=True)
     if dry.returncode != 0 or "Nothing to be done" not in dry.stdout + dry.stderr:
         return "not up to date with its sources"
-    from common.atomic import verify_written
+    from restitution_workflow.atomic import verify_written
 
     if verify_written(ROOT) != ([], []):
         return "changed since it was written (make verify)"
