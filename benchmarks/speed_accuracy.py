@@ -110,7 +110,7 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
     omegas = np.sort(np.concatenate([OMEGA_RANGE, inner]))  # both ends of the range, and random points
     log(f"[{alpha}, {gamma}] mpmath reference at {n_points} Omegas ({REF_DIGITS} digits)")
     t0 = time.perf_counter()
-    ref = np.array([float(reference_collision(ex, None, float(w), digits=REF_DIGITS).eps) for w in omegas])
+    ref = np.array([float(reference_collision(ex, float(w), digits=REF_DIGITS).eps) for w in omegas])
     hp_cost = (time.perf_counter() - t0) / n_points
     rows = []
 
@@ -124,16 +124,16 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
         log(f"  {method:18s} {setting:14s} {cost:9.3g} s/eval  max err {mx:9.3g}  median {md:9.3g}")
 
     row("highprec", f"digits={REF_DIGITS}", hp_cost, approx=ref, note="the reference itself (error 0 by definition)")
-    d16 = [float(reference_collision(ex, None, float(w), digits=16).eps) for w in omegas[:: max(1, n_points // 8)]]
+    d16 = [float(reference_collision(ex, float(w), digits=16).eps) for w in omegas[:: max(1, n_points // 8)]]
     sel16 = np.zeros(omegas.size, bool)
     sel16[:: max(1, n_points // 8)] = True
-    t16 = _time_per_point(lambda: [reference_collision(ex, None, float(w), digits=16) for w in omegas[sel16][:3]], 3, 1)
+    t16 = _time_per_point(lambda: [reference_collision(ex, float(w), digits=16) for w in omegas[sel16][:3]], 3, 1)
     row("highprec", "digits=16", t16, sel16, d16)
 
     # -- the public call as a user meets it (the master curve built on its own), then everything else
     rows += public_calls(ex, "force", out, log)
     log(f"[{alpha}, {gamma}] building the relation rungs, the uniform form and the mpmath check")
-    lad = Ladder(ex, None, cache_dir=str(out / "cache" / "force"), stream=open(os.devnull, "w"))
+    lad = Ladder(ex, cache_dir=str(out / "cache" / "force"), stream=open(os.devnull, "w"))
     t0 = time.perf_counter()
     cal: Calibration = lad.calibration()
     build_s = time.perf_counter() - t0 + _built_in("master curve")
@@ -156,7 +156,7 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
             approx=uniform_eps(u, omegas), note=f"stated bound {u.bound_eps:.2g} (eps), {u.bound_one_minus_eps:.2g} (1 - eps)")
 
     # -- expansions on their domains
-    V, E = viscous_limit(ex, None), elastic_limit(ex, None)
+    V, E = viscous_limit(ex), elastic_limit(ex)
     sv = omegas <= 1e-3
     if sv.any():
         ev = lambda: V.eps(big, 1)  # noqa: E731
@@ -174,8 +174,8 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
     # -- relations
     for name, r in cal.relations.items():
         c = r["c"]
-        row(name, "c0-c2", _time_per_point(lambda: eps_from_connection(ex, None, big, c), n_fast, 3),
-            approx=eps_from_connection(ex, None, omegas, c), note=r["source"])
+        row(name, "c0-c2", _time_per_point(lambda: eps_from_connection(ex, big, c), n_fast, 3),
+            approx=eps_from_connection(ex, omegas, c), note=r["source"])
     for name, why in cal.unavailable.items():
         log(f"  {name:18s} unavailable: {why}")
     if ex.alpha == as_exponents("3/2", "1/2").alpha and ex.gamma == as_exponents("3/2", "1/2").gamma:
@@ -201,14 +201,14 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
     from restitution.core.collision import collide
     for rtol in ((1e-8, 1e-12) if not quick else (1e-12,)):
         t0 = time.perf_counter()
-        vals = [collide(ex, None, float(w), rtol=rtol).eps for w in sub]
+        vals = [collide(ex, float(w), rtol=rtol).eps for w in sub]
         cost = (time.perf_counter() - t0) / sub.size
         row("collide (scipy)", f"rtol={rtol:g}", cost, ssel, vals, note="restitution.core.collision.collide")
 
     # -- the public call end to end: 1e6 impact speeds at tol = 1e-6, master cached
     g_speeds = np.geomspace(1e-3, 10, 1_000_000)
     from restitution.core.model import Material
-    mat = Material(ex, None, 0.000296, 0.0109)
+    mat = Material.of(ex, 0.000296, 0.0109)
     om_g = mat.omega(g_speeds)
     t_call = _time_per_point(lambda: lad.evaluate(mat.omega(g_speeds), tol=1e-6), 1, 3)
     chosen = lad.evaluate(om_g, tol=1e-6)
@@ -238,7 +238,7 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
     inner = np.exp(rng.uniform(math.log(OVERLAP_RANGE[0]), math.log(OVERLAP_RANGE[1]), n_points - 2))
     omegas = np.sort(np.concatenate([OVERLAP_RANGE, inner]))
     log(f"[{alpha}, {gamma}] overlap rule: mpmath reference at {omegas.size} Omegas ({REF_DIGITS} digits)")
-    ref = np.array([float(reference_collision(ex, None, float(w), digits=REF_DIGITS, end="overlap").eps)
+    ref = np.array([float(reference_collision(ex, float(w), digits=REF_DIGITS, end="overlap").eps)
                     for w in omegas])
     rows = []
 
@@ -251,7 +251,7 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
         log(f"  {method:22s} {setting:16s} {cost:9.3g} s/eval  max err {mx:9.3g}  median {md:9.3g}")
 
     t0 = time.perf_counter()
-    curve = build_overlap_curve(ex, None)
+    curve = build_overlap_curve(ex)
     build_s = time.perf_counter() - t0
     n_fast = 10_000_000 if not quick else 1_000_000
     big = np.exp(np.random.default_rng(SEED + 3).uniform(*np.log(OVERLAP_RANGE), n_fast))
@@ -262,7 +262,7 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
     # the overlap rule's uniform closed form, where it exists (gamma < alpha < 2 gamma + 1)
     if ex.gamma < ex.alpha < 2 * ex.gamma + 1:
         t0 = time.perf_counter()
-        u = build_uniform(ex, None, end="overlap")
+        u = build_uniform(ex, end="overlap")
         u_build = time.perf_counter() - t0
         uniform_eps(u, big[:10])
         row("closed-form (overlap)", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: uniform_eps(u, big), n_fast, 5),
@@ -276,7 +276,7 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
         row("integrator (overlap)", f"rtol={rtol:g}", cost, res[:, 0], note="compiled, end at x = 0")
     sub = omegas[:: 4 if quick else 1]
     t0 = time.perf_counter()
-    vals = [collide(ex, None, float(w), rtol=1e-12, end="overlap").eps for w in sub]
+    vals = [collide(ex, float(w), rtol=1e-12, end="overlap").eps for w in sub]
     cost = (time.perf_counter() - t0) / sub.size
     sel = np.isin(omegas, sub)
     mx, md = _errors(vals, ref[sel])
@@ -296,14 +296,14 @@ def public_calls(ex, end: str, out: Path, log) -> list[dict]:
     warm cache (the curve loaded and checked from disk, then in memory); the build itself."""
     cache = out / "cache" / end
     shutil.rmtree(cache, ignore_errors=True)
-    lad = Ladder(ex, None, cache_dir=str(cache), stream=open(os.devnull, "w"))
+    lad = Ladder(ex, cache_dir=str(cache), stream=open(os.devnull, "w"))
     big = np.logspace(-3, 3, 100_000)
     t0 = time.perf_counter()
     first = lad.evaluate(big, tol=1e-9, end=end)
     cold = time.perf_counter() - t0
     second = _time_per_point(lambda: lad.evaluate(big, tol=1e-9, end=end), 1, 3)
     om200 = np.logspace(-3, 3, 200)
-    warm_lad = Ladder(ex, None, cache_dir=str(cache), stream=open(os.devnull, "w"))
+    warm_lad = Ladder(ex, cache_dir=str(cache), stream=open(os.devnull, "w"))
     t0 = time.perf_counter()
     warm_lad.evaluate(om200, tol=1e-9, end=end)
     loading = time.perf_counter() - t0

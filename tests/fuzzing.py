@@ -116,7 +116,7 @@ def _sticking_boundary(alpha: str, gamma: str) -> float | None:
     """The overlap rule's sticking boundary in [1e-3, 1e3], None where there is none there."""
     from restitution.fast.overlap_master import sticking_boundary
     try:
-        w = sticking_boundary(alpha, gamma, lo=1e-3, hi=1e3)
+        w = sticking_boundary((alpha, gamma), lo=1e-3, hi=1e3)
     except ArithmeticError:   # sticks over the whole range
         return None
     return w if 1e-3 < w < 1e3 else None
@@ -130,16 +130,16 @@ def _reference(case):
     a, g = Fraction(case["alpha"]), Fraction(case["gamma"])
     if case["end"] == "overlap" and a > g:
         try:
-            collide(case["alpha"], case["gamma"], case["omega"], end="overlap", rtol=1e-8)
+            collide((case["alpha"], case["gamma"]), case["omega"], end="overlap", rtol=1e-8)
         except StickError:
             return "stick", None, 0.0, 0.0
         except Exception:  # noqa: BLE001 - judged below, by the reference
             pass
-    r = reference_collision(case["alpha"], case["gamma"], case["omega"], digits=REF_DIGITS, end=case["end"])
+    r = reference_collision((case["alpha"], case["gamma"]), case["omega"], digits=REF_DIGITS, end=case["end"])
     if 0 < 1 - r.eps < 1e-3:
         # 1 - eps has only REF_DIGITS + log10(1 - eps) correct digits: carry that many more
         extra = int(-math.log10(float(1 - r.eps))) + 1
-        r = reference_collision(case["alpha"], case["gamma"], case["omega"], digits=REF_DIGITS + extra,
+        r = reference_collision((case["alpha"], case["gamma"]), case["omega"], digits=REF_DIGITS + extra,
                                 end=case["end"])
     one_minus = 1 - r.eps
     err = float(r.error_estimate)
@@ -276,10 +276,10 @@ def check_deep_overlap_case(case) -> list[dict]:
     if a >= 2 * g + 1:
         return [{**rec, "status": "FAIL", "ratio": math.inf, "detail": f"eps = {eps!r} where the bodies provably stick"}]
     try:
-        anchor = collide(case["alpha"], case["gamma"], DEEP_ANCHOR, end="overlap", rtol=1e-11)
+        anchor = collide((case["alpha"], case["gamma"]), DEEP_ANCHOR, end="overlap", rtol=1e-11)
     except ParameterError as exc:   # the anchor is out of the reference's reach: nothing to compare
         return [{**rec, "status": "answered", "detail": f"eps = {eps!r}; no anchor ({exc})"}]
-    truth = anchor.eps * (case["omega"] / DEEP_ANCHOR) ** overlap_limit(a, g).k
+    truth = anchor.eps * (case["omega"] / DEEP_ANCHOR) ** overlap_limit((a, g)).k
     err = abs(eps / truth - 1.0)
     allowed = bound + anchor.error_bound + 1e-13 * abs(math.log(case["omega"] / DEEP_ANCHOR))
     ok = err <= allowed and seconds <= DEEP_SECONDS

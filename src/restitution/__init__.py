@@ -25,9 +25,10 @@ the series.
 from .core.errors import ParameterError
 from .core.exponents import Exponents
 from .core.model import Material
+from .core.problem import Problem
 from .core.series import perturbation_series
 
-__all__ = ["ParameterError", "Exponents", "Material", "perturbation_series", "collide", "inverse_collide",
+__all__ = ["ParameterError", "Exponents", "Problem", "Material", "perturbation_series", "collide", "inverse_collide",
            "epsilon", "EpsResult"]
 __version__ = "0.1.0"
 

@@ -10,7 +10,6 @@ from __future__ import annotations
 
 from .audit.relations import PAPER_C, PERTURBATION
 from .core import collision as _collision
-from .core.collision import collide_many, inverse_collide
 from .core.errors import ParameterError, number_in
 from .core.exponents import as_exponents
 from .core.results import Collision, end_rule
@@ -29,9 +28,9 @@ RUNG_NAMES = _ladder.rung_names(RELATIONS)
 class Ladder(_ladder.Ladder):
     """:class:`restitution.fast.ladder.Ladder` with the paper's relation rungs."""
 
-    def __init__(self, alpha, gamma, **kwargs):
+    def __init__(self, problem, **kwargs):
         kwargs.setdefault("relations", RELATIONS)
-        super().__init__(alpha, gamma, **kwargs)
+        super().__init__(problem, **kwargs)
 
 
 def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | None = 1e-9,
@@ -85,16 +84,16 @@ def collide(alpha, gamma, omega, *, method: str = "reference", rtol: float = 1e-
     ex = as_exponents(alpha, gamma)
     end = end_rule(end)
     if method == "reference":
-        return _collision.collide(ex, None, omega, rtol=rtol, t_eval=t_eval, end=end)
+        return _collision.collide(ex, omega, rtol=rtol, t_eval=t_eval, end=end)
     if method == "closed-form":
         from .core.exact_family import exact_collision, in_family
-        if not in_family(ex, None):
+        if not in_family(ex):
             raise ParameterError("method", method, "the closed form is for alpha = 2 gamma + 1 only (alpha = 1, "
                                                    "gamma = 0, the linear dashpot, and the family that maps onto it)")
-        return exact_collision(ex, None, omega, end=end)
+        return exact_collision(ex, omega, end=end)
     if method == "highprec":
         from .core.highprec import reference_collision
-        r = reference_collision(ex, None, omega, digits=digits, end=end)
+        r = reference_collision(ex, omega, digits=digits, end=end)
         return Collision(ex.alpha, ex.gamma, float(r.omega), "forward", float(r.eps), float(r.tau_b),
                          float(r.x_b), float(r.tau_c), float(r.x_c), r.end, 10.0 ** (1 - r.digits),
                          one_minus_eps=float(1 - r.eps), rule=end)
@@ -106,7 +105,7 @@ def _fast_collision(ex, omega, rtol, end: str = "force") -> Collision:
     from .core.model import at_most_one
     from .fast.master import TIMES_OMEGA_MIN, stiff_omega_min
 
-    lo = max(stiff_omega_min(ex, None, end), TIMES_OMEGA_MIN)
+    lo = max(stiff_omega_min(ex, end), TIMES_OMEGA_MIN)
     omega = number_in("omega", omega, lo, 1e14, why="the compiled integrator's range (method reference "
                       "or epsilon() cover the rest)")
     rtol = number_in("rtol", rtol, _collision.RTOL_MIN, 1e-6)
@@ -122,3 +121,15 @@ def _fast_collision(ex, omega, rtol, end: str = "force") -> Collision:
     return Collision(ex.alpha, ex.gamma, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
                      float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol,
                      rule=end)
+
+
+# The public spellings keep the exponents as two numbers; the core takes one problem value.
+def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12, t_eval=None):
+    """The paper's inverse collision (:func:`restitution.core.collision.inverse_collide`) for the
+    exponents ``alpha``, ``gamma``."""
+    return _collision.inverse_collide((alpha, gamma), omega_tilde, x_start, rtol=rtol, t_eval=t_eval)
+
+
+def collide_many(alpha, gamma, omegas, *, rtol: float = 1e-12) -> dict:
+    """:func:`restitution.core.collision.collide_many` for the exponents ``alpha``, ``gamma``."""
+    return _collision.collide_many((alpha, gamma), omegas, rtol=rtol)

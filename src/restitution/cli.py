@@ -488,8 +488,8 @@ def _duration(seconds: float) -> str:
 
 
 def _run_series(args, out) -> None:
-    from .core.series import perturbation_series
-    ps = perturbation_series(args.alpha, args.gamma, args.omega_order, args.max_power,
+    from .core.series import series_for
+    ps = series_for((args.alpha, args.gamma), args.omega_order, args.max_power,
                              "inverse" if args.inverse else "forward",
                              # the first k powers cost about k^3.5 (k^2.7 to k^4.2 measured between pairs)
                              progress=_Progress("series", "powers of tau", 3.5,

@@ -270,7 +270,7 @@ def _check_omega_served(where: str, v: dict, ex) -> None:
     from restitution.core.errors import ParameterError
     from restitution.core.model import Material
 
-    material = Material(ex, None, v["D1"], v["D2"])
+    material = Material.of(ex, v["D1"], v["D2"])
     speeds = [("g_figure", v["g_figure"]), ("g_range.min", v["g_range"]["min"]), ("g_range.max", v["g_range"]["max"])]
     if v["fit_g_range"] is not None:
         speeds += [("fit_g_range.min", v["fit_g_range"]["min"]), ("fit_g_range.max", v["fit_g_range"]["max"])]

@@ -36,7 +36,7 @@ FORCE_CASES = [("3/2", "1"), ("3/2", "1/2"), ("1", "0"), ("2", "0"), ("5/2", "1/
 @pytest.mark.parametrize("alpha", ["1", "3/2", "2", "5/2"])
 def test_gamma_zero_constants_are_elementary(alpha):
     """gamma = 0: x0 = 1 - exp(-tau), so X = B = 1 and K0 = H_alpha exactly."""
-    V = asy.viscous_limit(alpha, "0")
+    V = asy.viscous_limit((alpha, "0"))
     a = float(as_exponents(alpha, "0").alpha)
     assert V.X == 1.0 and V.lam == 1.0
     assert V.B == pytest.approx(1.0, rel=1e-12)
@@ -46,7 +46,7 @@ def test_gamma_zero_constants_are_elementary(alpha):
 
 def test_gamma_one_constants_match_tanh_solution():
     """gamma = 1: x0 = sqrt2 tanh(tau/sqrt2), so X = lambda = sqrt2, B = 2 sqrt2, k = 2^((alpha-1)/2)."""
-    V = asy.viscous_limit("3/2", "1")
+    V = asy.viscous_limit(("3/2", "1"))
     assert V.X == pytest.approx(math.sqrt(2), rel=1e-15)
     assert V.lam == pytest.approx(math.sqrt(2), rel=1e-15)
     assert V.B == pytest.approx(2 * math.sqrt(2), rel=1e-12)
@@ -78,7 +78,7 @@ def test_damped_constants_closed_forms_equal_their_quadratures(alpha, gamma):
 
 def test_paper_exponents_viscous_constants_are_elementary():
     """alpha = 3/2, gamma = 1: c_log = 2^(1/4)/2, c_const = (2^(1/4)/4)((9/2) ln 2 + pi/2 - 5)."""
-    V = asy.viscous_limit("3/2", "1")
+    V = asy.viscous_limit(("3/2", "1"))
     q = 2 ** 0.25
     assert V.c_log == pytest.approx(q / 2, rel=1e-15)
     assert V.L == pytest.approx(3.5 * math.log(2), rel=1e-14)
@@ -91,7 +91,7 @@ def test_viscous_correction_constant_extracted_from_the_integrator(alpha, gamma)
     """c_const from data alone: c(Omega) = (1 - eps/(k Omega))/Omega - c_log ln(1/Omega) fitted by
     c_const + Omega (a L^2 + b L + c) + Omega^2 (d L^4 + e L^3 + f L^2) on Omega in [1e-6, 1e-3]
     (eps to ~1e-14, so c(Omega) to ~1e-8 at the smallest Omega); the derived constant within 1e-8."""
-    V = asy.viscous_limit(alpha, gamma)
+    V = asy.viscous_limit((alpha, gamma))
     om = np.geomspace(1e-6, 1e-3, 25)
     L = np.log(1 / om)
     c = (1 - ref(alpha, gamma, om)[:, 0] / (V.k * om)) / om - V.c_log * L
@@ -105,7 +105,7 @@ def test_viscous_correction_constant_extracted_from_the_integrator(alpha, gamma)
 @pytest.mark.parametrize("alpha,gamma", FORCE_CASES)
 def test_viscous_leading_constant(alpha, gamma):
     """eps/Omega -> k = (gamma+1)^((alpha-gamma)/(gamma+1)), at the rate Omega ln(1/Omega)."""
-    V = asy.viscous_limit(alpha, gamma)
+    V = asy.viscous_limit((alpha, gamma))
     g = float(as_exponents(alpha, gamma).gamma)
     a = float(as_exponents(alpha, gamma).alpha)
     assert V.k == pytest.approx((g + 1) ** ((a - g) / (g + 1)), rel=1e-15)
@@ -123,7 +123,7 @@ def test_viscous_first_correction(alpha, gamma):
     Without the correction the remainder would be ~ c_log Omega ln(1/Omega) ~ 1e-5 at 1e-6,
     three orders above what is asserted.
     """
-    V = asy.viscous_limit(alpha, gamma)
+    V = asy.viscous_limit((alpha, gamma))
     om = np.array([1e-5, 1e-6, 1e-7])
     eps = ref(alpha, gamma, om)[:, 0]
     r = np.abs(V.eps(om, 1) / eps - 1)
@@ -131,8 +131,8 @@ def test_viscous_first_correction(alpha, gamma):
 
 
 def test_viscous_first_correction_against_mpmath():
-    V = asy.viscous_limit("3/2", "1")
-    hp = float(reference_collision("3/2", "1", 1e-6, digits=20).eps)
+    V = asy.viscous_limit(("3/2", "1"))
+    hp = float(reference_collision(("3/2", "1"), 1e-6, digits=20).eps)
     assert abs(V.eps(1e-6, 1) / hp - 1) < 2e-10
     assert abs(V.eps(1e-6, 0) / hp - 1) > 1e-6  # the correction matters
 
@@ -140,7 +140,7 @@ def test_viscous_first_correction_against_mpmath():
 @pytest.mark.parametrize("alpha,gamma", [("3/2", "1"), ("1", "0")])
 def test_viscous_contact_time(alpha, gamma):
     """tau_c = (2 ln(1/Omega) + L)/lambda + O(Omega ln Omega)."""
-    V = asy.viscous_limit(alpha, gamma)
+    V = asy.viscous_limit((alpha, gamma))
     om = np.array([1e-6, 1e-8])
     tc = ref(alpha, gamma, om)[:, 3]
     assert np.all(np.abs(V.tau_c(om) - tc) <= 1e3 * om)
@@ -166,7 +166,7 @@ def test_equal_exponents_closed_form(gamma):
 
 def test_equal_exponents_against_mpmath():
     for w in (0.05, 1.0, 1e4):
-        hp = float(reference_collision("1", "1", w, digits=20).eps)
+        hp = float(reference_collision(("1", "1"), w, digits=20).eps)
         assert abs(asy.equal_exponents_eps(w) / hp - 1) < 2e-15
 
 
@@ -177,11 +177,11 @@ def test_inner_law_alpha_below_gamma(alpha, gamma):
     The inner rescaling is exact with initial speed Omega^(-b); memory of it dies out on the
     attracting slow manifold, so the law holds to the accuracy of K already at Omega ~ 1e-2.
     """
-    V = asy.viscous_limit(alpha, gamma)
+    V = asy.viscous_limit((alpha, gamma))
     ex = as_exponents(alpha, gamma)
     assert V.kind == "inner"
     assert V.power == pytest.approx(float((ex.gamma + 1) / (2 * ex.gamma + 1 - ex.alpha)))
-    ks = [asy.inner_constant(alpha, gamma, y_start=y) for y in (30.0, 300.0)]
+    ks = [asy.inner_constant((alpha, gamma), y_start=y) for y in (30.0, 300.0)]
     assert abs(ks[0] / ks[1] - 1) < 1e-10
     om = np.array([1e-2, 1e-4])
     eps = ref(alpha, gamma, om, 1e-13)[:, 0]
@@ -195,13 +195,13 @@ def test_published_constants_from_formulas():
     assert asy.RAMIREZ_C1 == pytest.approx(1.1534489, abs=5e-8)
     assert asy.RAMIREZ_C2 == pytest.approx(0.7982666, abs=5e-8)
     assert asy.HERTZ_CONTACT_TIME == pytest.approx(3.2180655, abs=5e-8)
-    E = asy.elastic_limit("3/2", "1/2")
+    E = asy.elastic_limit(("3/2", "1/2"))
     # the general-exponent formulas reduce to the published closed forms
     assert E.C1 == pytest.approx(asy.RAMIREZ_C1, rel=1e-14)
     assert E.C2 == pytest.approx(asy.RAMIREZ_C2, rel=1e-14)
     assert E.A == 0.6 and E.E == pytest.approx(4 / 15) and E.end_power == 2.5
     assert E.T0 == pytest.approx(asy.HERTZ_CONTACT_TIME, rel=1e-14)
-    assert asy.elastic_limit("3/2", "1").T0 == pytest.approx(asy.HERTZ_CONTACT_TIME, rel=1e-14)
+    assert asy.elastic_limit(("3/2", "1")).T0 == pytest.approx(asy.HERTZ_CONTACT_TIME, rel=1e-14)
 
 
 def test_omega_maps_onto_the_published_expansion_variable():
@@ -227,7 +227,7 @@ def test_published_constants_reproduced_from_data():
         rows = []
         for d in ds:
             w = mpmath.mpf(d) ** (-mpmath.mpf(5) / 3)
-            r = reference_collision("3/2", "1/2", w, digits=28)
+            r = reference_collision(("3/2", "1/2"), w, digits=28)
             dd = w ** (-mpmath.mpf(3) / 5)
             rows.append((dd, (1 - r.eps) / dd, r.tau_c * w ** (mpmath.mpf(2) / 5)))
         M = mpmath.matrix([[d ** p for p in (0, 1, 1.5, 2, 2.5, 3)] for d, _, _ in rows])
@@ -247,7 +247,7 @@ def test_published_constants_reproduced_from_data():
                                          ("1", "1"), ("1", "3/2")])
 def test_elastic_expansion_general_exponents(alpha, gamma):
     """Remainder after C1, C2 = A C1^2 and the end term is O(delta^q), q = min(3, end_power + 1)."""
-    E = asy.elastic_limit(alpha, gamma)
+    E = asy.elastic_limit((alpha, gamma))
     q = min(3.0, E.end_power + 1)
     om = np.array([1e4, 1e6])
     om = om[E.delta(om) > 1e-5]  # keep the remainder above the integrator's noise
@@ -261,7 +261,7 @@ def test_elastic_expansion_general_exponents(alpha, gamma):
 
 @pytest.mark.parametrize("alpha,gamma", [("3/2", "1/2"), ("3/2", "1"), ("2", "1")])
 def test_elastic_contact_time(alpha, gamma):
-    E = asy.elastic_limit(alpha, gamma)
+    E = asy.elastic_limit((alpha, gamma))
     om = np.array([1e8, 1e10])
     tc = ref(alpha, gamma, om)[:, 3]
     dev = np.abs(tc / E.tau_c(om) - 1)

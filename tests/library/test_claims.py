@@ -215,7 +215,7 @@ def test_tracking_times_are_located_not_read_off_the_grid(values):
     ps = perturbation_series("3/2", 1, 4, 11, "forward")
     for order in ("2", "4"):
         t = tr["forward"][key][order]
-        x_ref = collide("3/2", 1, tr["omega"], rtol=1e-10, t_eval=[t]).trajectory.x[0]
+        x_ref = collide(("3/2", 1), tr["omega"], rtol=1e-10, t_eval=[t]).trajectory.x[0]
         err = abs(ps.evaluate([t], tr["omega"], order=int(order))[0] - x_ref)
         assert err == pytest.approx(float(key) * tr["x_b"], rel=1e-6)
         grid_step = tr["tau_c"] / (values["settings"]["tracking_samples"] - 1)

@@ -76,7 +76,7 @@ def test_eps_json_contract():
     assert len(data["eps"]) == 2 and data["error_bound"] <= 1e-8
     from restitution.core.collision import collide
     for om, e in zip((0.5, 2.0), data["eps"]):
-        assert e == pytest.approx(collide("3/2", 1, om).eps, rel=2e-8)
+        assert e == pytest.approx(collide(("3/2", 1), om).eps, rel=2e-8)
 
 
 BAD = [

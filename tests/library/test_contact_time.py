@@ -25,7 +25,7 @@ def _contact_at(alpha, gamma, end, omega) -> Contact:
 def test_beyond_the_reference_range_the_contact_time_is_mpmaths(alpha, gamma, omega, end):
     c = _contact_at(alpha, gamma, end, omega)
     assert c.omega(1.0) == pytest.approx(omega, rel=1e-12) and OMEGA_RANGE[1] < omega <= TIMES_OMEGA_MAX
-    tau = float(reference_collision(alpha, gamma, c.omega(1.0), digits=20, end=end).tau_c)
+    tau = float(reference_collision((alpha, gamma), c.omega(1.0), digits=20, end=end).tau_c)
     t_c = c.contact_time(1.0)
     assert abs(t_c / (tau * float(c.material.time_scale(1.0))) - 1) <= 1e-11
 

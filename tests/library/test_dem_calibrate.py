@@ -23,7 +23,7 @@ def test_calibration_round_trips(alpha, gamma, end):
         cal = calibrate(alpha, gamma, D1=2e4, eps=target, g=g, end=end)
         # forward again, independently of calibrate's own recomputation
         omega = Material(alpha, gamma, 2e4, cal.D2).omega(g)
-        forward = collide(alpha, gamma, omega, end=end).eps
+        forward = collide((alpha, gamma), omega, end=end).eps
         assert abs(forward / target - 1) <= 1e-9 and abs(cal.eps[0] / target - 1) <= 1e-9
         assert cal.contact.end == end
 

@@ -37,7 +37,7 @@ def _omegas(alpha, gamma, end):
     """OMEGAS, under the overlap rule only those above the threshold, plus 1.01 times it."""
     if end == "force":
         return OMEGAS
-    th = float(sticking_threshold(alpha, gamma))
+    th = float(sticking_threshold((alpha, gamma)))
     return [w for w in OMEGAS if w > th] + [th * 1.01]
 
 
@@ -51,8 +51,8 @@ def test_doctests_run():
 def test_against_the_reference_integrator(alpha, gamma, end):
     """eps, 1 - eps, tau_b, x_b, tau_c, x_c of the closed form within the reference's stated bound."""
     for w in _omegas(alpha, gamma, end):
-        got = exact_collision(alpha, gamma, w, end)
-        ref = reference_collide(alpha, gamma, w, rtol=RTOL, end=end)
+        got = exact_collision((alpha, gamma), w, end)
+        ref = reference_collide((alpha, gamma), w, rtol=RTOL, end=end)
         assert got.end == ref.end, w
         assert abs(got.eps / ref.eps - 1) <= ref.error_bound + got.error_bound, (w, got.eps, ref.eps)
         assert abs(got.one_minus_eps / ref.one_minus_eps - 1) <= ref.one_minus_eps_bound + got.one_minus_eps_bound, w
@@ -70,9 +70,9 @@ def test_against_mpmath_at_rounding_level(alpha, gamma, end):
     """eps within its stated bound (rounding level) of mpmath's Taylor integrator at 22 digits, 1 - eps
     within LOSS_ULPS u, tau_c and tau_b within 3e-14 (quad)."""
     worst = 0.0
-    for w in [1e-6, 0.3, 7.0, 1e6] if end == "force" else [float(sticking_threshold(alpha, gamma)) * 1.01, 0.3, 7.0, 1e6]:
-        got = exact_collision(alpha, gamma, w, end)
-        hp = reference_collision(alpha, gamma, w, digits=22, end=end)
+    for w in [1e-6, 0.3, 7.0, 1e6] if end == "force" else [float(sticking_threshold((alpha, gamma))) * 1.01, 0.3, 7.0, 1e6]:
+        got = exact_collision((alpha, gamma), w, end)
+        hp = reference_collision((alpha, gamma), w, digits=22, end=end)
         err = abs(got.eps / float(hp.eps) - 1)
         worst = max(worst, err / got.error_bound)
         assert err <= got.error_bound, (w, err, got.error_bound)
@@ -86,11 +86,11 @@ def test_against_mpmath_at_rounding_level(alpha, gamma, end):
 def test_sticking_threshold_exactly_under_the_overlap_rule(alpha, gamma):
     """Just below 1/(4 (gamma+1)) every door refuses with StickError; just above, the closed form
     answers and the reference integrator agrees (it knows nothing of the threshold's formula)."""
-    th = sticking_threshold(alpha, gamma)
+    th = sticking_threshold((alpha, gamma))
     assert th == Fraction(1, 4) / (Fraction(gamma) + 1)
     below = math.nextafter(float(th), 0.0)
-    for call in (lambda w: exact_collision(alpha, gamma, w, "overlap"),
-                 lambda w: exact_eps(alpha, gamma, w, "overlap"),
+    for call in (lambda w: exact_collision((alpha, gamma), w, "overlap"),
+                 lambda w: exact_eps((alpha, gamma), w, "overlap"),
                  lambda w: collide(alpha, gamma, w, method="closed-form", end="overlap"),
                  lambda w: restitution.epsilon(alpha=alpha, gamma=gamma, omega=w, end="overlap")):
         with pytest.raises(StickError, match="contact never ends here"):
@@ -98,15 +98,15 @@ def test_sticking_threshold_exactly_under_the_overlap_rule(alpha, gamma):
     above = float(th) * (1 + 1e-3)
     got = restitution.epsilon(alpha=alpha, gamma=gamma, omega=above, end="overlap")
     assert got.method == "exact-family" and 0 < float(got.eps) < 1e-30
-    ref = reference_collide(alpha, gamma, above, rtol=RTOL, end="overlap")
+    ref = reference_collide((alpha, gamma), above, rtol=RTOL, end="overlap")
     assert abs(float(got.eps) / ref.eps - 1) <= ref.error_bound + got.error_bound
     # the force rule is smooth across the threshold (no sticking there)
-    f = exact_collision(alpha, gamma, below, "force")
-    assert abs(f.eps / reference_collide(alpha, gamma, below, rtol=RTOL).eps - 1) <= 1e-10
+    f = exact_collision((alpha, gamma), below, "force")
+    assert abs(f.eps / reference_collide((alpha, gamma), below, rtol=RTOL).eps - 1) <= 1e-10
 
 
 def test_eps_below_doubles_just_above_the_threshold_is_refused_in_one_line():
-    w = float(sticking_threshold("3/2", "1/4")) * (1 + 1e-7)
+    w = float(sticking_threshold(("3/2", "1/4"))) * (1 + 1e-7)
     with pytest.raises(UnresolvedError, match="below the smallest normal double"):
         restitution.epsilon(alpha="3/2", gamma="1/4", omega=w, end="overlap")
 
@@ -114,7 +114,7 @@ def test_eps_below_doubles_just_above_the_threshold_is_refused_in_one_line():
 def test_stuck_and_unresolved_are_parameter_errors():
     assert issubclass(StickError, ParameterError) and issubclass(UnresolvedError, ParameterError)
     with pytest.raises(ParameterError, match="2 gamma \\+ 1"):
-        exact_collision("3/2", "1/2", 1.0)
+        exact_collision(("3/2", "1/2"), 1.0)
 
 
 @pytest.mark.parametrize("end", RULES)
@@ -122,8 +122,8 @@ def test_stuck_and_unresolved_are_parameter_errors():
 def test_the_chooser_takes_the_exact_rung_first_and_builds_nothing(alpha, gamma, end, tmp_path):
     om = np.geomspace(1e-6, 1e6, 25)
     if end == "overlap":
-        om = om[om > float(sticking_threshold(alpha, gamma))]
-    lad = Ladder(alpha, gamma, cache_dir=str(tmp_path), stream=io.StringIO())
+        om = om[om > float(sticking_threshold((alpha, gamma)))]
+    lad = Ladder((alpha, gamma), cache_dir=str(tmp_path), stream=io.StringIO())
     r = lad.evaluate(om, end=end)
     assert r.method == "exact-family" and r.error_bound < 1e-13
     assert not list(tmp_path.iterdir())   # no curve and no uniform fit built for these pairs
@@ -168,21 +168,21 @@ def test_bounds_are_stated_and_monotone():
     """eps rises with Omega under both rules (the rung's bound is taken at the smallest Omega)."""
     om = np.geomspace(0.21, 1e8, 400)
     for end in RULES:
-        e = exact_eps("3/2", "1/4", om, end)
+        e = exact_eps(("3/2", "1/4"), om, end)
         assert np.all(np.diff(e) > 0)
     assert float(eps_bound(1.0)) < 1e-15 and float(eps_bound(1e-300)) < 1e-12 and eps_bound(0.0) == np.inf
-    assert in_family("5/3", "1/3") and not in_family("3/2", "1")
+    assert in_family(("5/3", "1/3")) and not in_family(("3/2", "1"))
 
 
 @pytest.mark.parametrize("alpha,gamma", [("3/2", "1/4"), ("3", "1")])
 def test_extreme_omegas_against_the_reference_and_the_fast_integrator(alpha, gamma):
     """Beyond 1e-6..1e6: the reference's ends (1e-12, 1e10), and the compiled integrator at 1e14."""
     for w in (1e-12, 1e10):
-        got, ref = exact_collision(alpha, gamma, w), reference_collide(alpha, gamma, w, rtol=RTOL)
+        got, ref = exact_collision((alpha, gamma), w), reference_collide((alpha, gamma), w, rtol=RTOL)
         assert abs(got.eps / ref.eps - 1) <= ref.error_bound + got.error_bound, w
         assert math.isclose(got.tau_c, ref.tau_c, rel_tol=1e-9), w
     fast = collide(alpha, gamma, 1e14, method="fast", rtol=1e-13)
-    got = exact_collision(alpha, gamma, 1e14)
+    got = exact_collision((alpha, gamma), 1e14)
     assert math.isclose(got.eps, fast.eps, rel_tol=1e-11) and math.isclose(got.tau_c, fast.tau_c, rel_tol=1e-9)
 
 
@@ -190,14 +190,14 @@ def test_extreme_omegas_against_the_reference_and_the_fast_integrator(alpha, gam
 def test_cached_false_answers_as_with_an_empty_cache(tmp_path):
     """What the DEM layer asks for a scene: no build read or made; the exact rung where it serves,
     the compiled integrator elsewhere, even with a master curve cached."""
-    lad = Ladder("3/2", "1/2", cache_dir=str(tmp_path), stream=io.StringIO())
+    lad = Ladder(("3/2", "1/2"), cache_dir=str(tmp_path), stream=io.StringIO())
     om = np.geomspace(0.01, 100.0, 5)
     lad.master                                                            # the curve, built and cached
     assert lad.evaluate(om, build=False).method != "integrator"           # and used
     assert lad.evaluate(om, build=False, cached=False).method == "integrator"
     with pytest.raises(ParameterError, match="build"):
         lad.evaluate(om, build=True, cached=False)
-    fam = Ladder("3/2", "1/4", cache_dir=str(tmp_path), stream=io.StringIO())
+    fam = Ladder(("3/2", "1/4"), cache_dir=str(tmp_path), stream=io.StringIO())
     assert fam.evaluate(om[om > 0.2], build=False, cached=False, end="overlap").method == "exact-family"
 
 
@@ -207,11 +207,11 @@ def test_dem_contact_times_and_reach_come_from_the_closed_form():
     from restitution.dem.contact import Contact, scaled_collision
     for end in RULES:
         c = Contact("3/2", "1/4", 1e5, 80.0, end)
-        ref = reference_collide("3/2", "1/4", c.omega(1.0), rtol=RTOL, end=end)
+        ref = reference_collide(("3/2", "1/4"), c.omega(1.0), rtol=RTOL, end=end)
         assert c.collision(1.0).rtol == 0.0
         assert math.isclose(c.contact_time(1.0), ref.tau_c * float(c.material.time_scale(1.0)), rel_tol=1e-10)
     # beyond the reference's Omega range the closed form still answers (no flag for lack of a method)
-    assert scaled_collision("3/2", "1/4", "force", 1e13).tau_c > 0
+    assert scaled_collision(("3/2", "1/4"), "force", 1e13).tau_c > 0
 
 
 def test_typed_e_table_hertz_and_hooke_rows_agree_exactly():
@@ -224,5 +224,5 @@ def test_typed_e_table_hertz_and_hooke_rows_agree_exactly():
             hertz, hooke = r[f"LIGGGHTS hertz, {rule}"], r[f"LIGGGHTS hooke, {rule}"]
             assert abs(hertz / hooke - 1) <= 1e-14
         c = TYPED_E_CODES["LAMMPS hertz + damping tsuji (default)"](r["e"])
-        ref = reference_collide(c.alpha, c.gamma, c.omega(1.0), rtol=RTOL, end=c.end)
+        ref = reference_collide((c.alpha, c.gamma), c.omega(1.0), rtol=RTOL, end=c.end)
         assert abs(r["LAMMPS hertz + damping tsuji (default)"] / ref.eps - 1) <= ref.error_bound + 1e-14

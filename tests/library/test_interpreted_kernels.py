@@ -88,8 +88,8 @@ def test_an_entry_changed_after_its_checks_were_marked_is_checked_again(tmp_path
     """The mark covers the content it was made for: a coefficient shifted and sealed again after
     the mark was written is checked, refused without building and rebuilt with it."""
     omega = np.geomspace(0.05, 20.0, 7)
-    Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO()).evaluate(omega, tol=None, method="master")
-    Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO()).evaluate(omega, tol=None, method="master",
+    Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO()).evaluate(omega, tol=None, method="master")
+    Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO()).evaluate(omega, tol=None, method="master",
                                                                                build=False)
     (path,) = tmp_path.glob("master-*.json")
     assert path.with_name(path.name + ".checked").exists()
@@ -101,7 +101,7 @@ def test_an_entry_changed_after_its_checks_were_marked_is_checked_again(tmp_path
     path.write_text(json.dumps(stored))
     err = io.StringIO()
     with pytest.raises(ParameterError, match="method"):
-        Ladder("3/2", "1", cache_dir=str(tmp_path), stream=err).evaluate(omega, tol=None, method="master",
+        Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=err).evaluate(omega, tol=None, method="master",
                                                                          build=False)
     assert "does not pass its checks" in err.getvalue()
 

@@ -284,7 +284,7 @@ def _ladder_with_entry(tmp_path):
 
     from test_epsilon import SMALL
     from restitution.fast.ladder import Ladder
-    lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=io.StringIO())
+    lad = Ladder(("3/2", "1"), settings=SMALL, cache_dir=str(tmp_path), stream=io.StringIO())
     lad.calibration()
     (path,) = tmp_path.glob("master-*.json")
     return path
@@ -307,7 +307,7 @@ def test_a_damaged_cache_entry_is_reported_once_and_not_again(tmp_path, damage):
     notes = []
     for _ in range(3):   # three calls, as a user's loop would make; none of them needs to build
         stream = io.StringIO()
-        lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=stream)
+        lad = Ladder(("3/2", "1"), settings=SMALL, cache_dir=str(tmp_path), stream=stream)
         r = lad.evaluate([0.3, 3.0], tol=1e-6, build=False)
         assert r.method != "master"
         notes.append(stream.getvalue())
@@ -316,7 +316,7 @@ def test_a_damaged_cache_entry_is_reported_once_and_not_again(tmp_path, damage):
     assert not path.exists()
     # a request that needs the entry rebuilds it, and it is used from then on
     stream = io.StringIO()
-    lad = Ladder("3/2", "1", settings=SMALL, cache_dir=str(tmp_path), stream=stream)
+    lad = Ladder(("3/2", "1"), settings=SMALL, cache_dir=str(tmp_path), stream=stream)
     lad.evaluate([0.3, 3.0], tol=1e-9, method="master")
     assert path.exists() and "removed" not in stream.getvalue()
     json.loads(path.read_text())

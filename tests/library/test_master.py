@@ -27,11 +27,11 @@ HELD_OUT_SEED = 987654  # not the build seed
 
 @pytest.fixture(scope="module")
 def small_kim():
-    return build_master("3/2", "1", SMALL)
+    return build_master(("3/2", "1"), SMALL)
 
 
 def _hp(alpha, gamma, w, digits=20):
-    return float(reference_collision(alpha, gamma, float(w), digits=digits).eps)
+    return float(reference_collision((alpha, gamma), float(w), digits=digits).eps)
 
 
 def test_small_master_heldout_against_mpmath(small_kim):
@@ -51,7 +51,7 @@ def test_small_master_beyond_the_joins(small_kim):
     """Outside [Omega_lo, Omega_hi] the expansions take over; their fitted bounds must hold far beyond."""
     m = small_kim
     pts = np.array([1e-9, 1e-7, 1e-5, 5e-5, 3e4, 1e6, 1e9, 1e12])
-    ref = reference_eps("3/2", "1", pts, 1e-14)
+    ref = reference_eps(("3/2", "1"), pts, 1e-14)
     err = np.abs(m.eps(pts) / ref - 1)
     assert np.all(err <= m.bound_at(pts) + 2e-13)
     # the bounds are informative (fall off away from the joins) and the expansions are really used
@@ -80,7 +80,7 @@ def test_json_roundtrip(small_kim):
 
 
 def test_equal_exponents_master_uses_the_closed_form():
-    m = build_master("1", "1", MasterSettings(**{**SMALL.as_dict(), "n_highprec": 1}))
+    m = build_master(("1", "1"), MasterSettings(**{**SMALL.as_dict(), "n_highprec": 1}))
     pts = np.geomspace(1e-7, 1e9, 61)
     from restitution.core.asymptotics import equal_exponents_eps
     err = np.abs(m.eps(pts) / equal_exponents_eps(pts) - 1)
@@ -98,12 +98,12 @@ def _strict_json_roundtrip(m, pts):
 def test_alpha_below_gamma_master():
     """Separation-ended contacts, stiff creeping return: the grid stops at 1e-5, the inner law beyond."""
     s = MasterSettings(**{**SMALL.as_dict(), "log10_omega_min": -6.0, "log10_omega_max": 3.0, "n_highprec": 0})
-    m = build_master("1", "3/2", s)
+    m = build_master(("1", "3/2"), s)
     assert m.omega_lo >= 1e-5 * 0.99
     pts = np.array([3e-5, 2e-3, 0.4, 30.0, 1e5])
     ref = np.array([_hp("1", "3/2", w, 16) if w >= 1e-3 else np.nan for w in pts])
     small = pts < 1e-3
-    ref[small] = reference_eps("1", "3/2", pts[small], 1e-13)  # mpmath is too slow in the creep
+    ref[small] = reference_eps(("1", "3/2"), pts[small], 1e-13)  # mpmath is too slow in the creep
     err = np.abs(m.eps(pts) / ref - 1)
     assert np.all(err <= m.bound_at(pts) + 1e-12)
     _strict_json_roundtrip(m, pts)
@@ -112,7 +112,7 @@ def test_alpha_below_gamma_master():
 @pytest.mark.slow
 def test_default_master_meets_the_fast_target():
     """The one moderate check: the default curve for the paper's exponents, 1e-9 over 1e-6..1e6."""
-    m = build_master("3/2", "1", MasterSettings(n_highprec=3))
+    m = build_master(("3/2", "1"), MasterSettings(n_highprec=3))
     assert m.omega_lo <= 1e-6 and m.omega_hi >= 1e5
     rng = np.random.default_rng(HELD_OUT_SEED + 1)
     pts = np.exp(rng.uniform(math.log(1e-6), math.log(1e6), 3000))

@@ -29,7 +29,7 @@ def curves(tmp_path_factory):
     root = tmp_path_factory.mktemp("ovl")
     out = {}
     for pair in (("3/2", "1"), ("3/2", "1/2")):
-        lad = Ladder(*pair, cache_dir=str(root), stream=io.StringIO())
+        lad = Ladder(pair, cache_dir=str(root), stream=io.StringIO())
         out[pair] = (lad.overlap_curve(), lad)
     return out
 
@@ -40,7 +40,7 @@ def test_bound_holds_against_mpmath_at_fresh_points(curves, pair):
     curve, _ = curves[pair]
     assert curve.bound_inside <= 1e-9
     for w in np.exp(RNG.uniform(math.log(curve.omega_lo), math.log(curve.omega_hi), 4)):
-        truth = float(reference_collision(*pair, float(w), digits=20, end="overlap").eps)
+        truth = float(reference_collision(pair, float(w), digits=20, end="overlap").eps)
         err = abs(float(curve.eps(np.array([w]))[0]) / truth - 1)
         assert err <= curve.bound_inside, f"seed {SEED}: Omega={w:.6g} err {err:.3g} > {curve.bound_inside:.3g}"
 
@@ -59,13 +59,13 @@ def test_epsilon_uses_the_curve_once_it_is_there(curves):
     om = np.logspace(-3, 3, 200)
     r = lad.evaluate(om, tol=1e-9, end="overlap")
     assert r.method == "master" and r.error_bound <= 1e-9
-    ref = np.array([collide("3/2", 1, float(w), rtol=1e-13, end="overlap").eps for w in om[::40]])
+    ref = np.array([collide(("3/2", 1), float(w), rtol=1e-13, end="overlap").eps for w in om[::40]])
     assert np.max(np.abs(r.eps[::40] / ref - 1)) <= 1e-9 + 2e-12
 
 
 def test_a_large_request_builds_the_curve_alone(tmp_path):
     err = io.StringIO()
-    lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=err)
+    lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=err)
     r = lad.evaluate(np.geomspace(1e-3, 1e3, 100_000), tol=1e-9, end="overlap")
     assert r.method == "master"
     entries = [p.name for p in tmp_path.iterdir() if p.suffix != ".lock"]   # the per-entry build locks stay
@@ -82,7 +82,7 @@ def test_a_large_request_builds_the_curve_alone(tmp_path):
 def test_a_tampered_curve_is_detected_and_rebuilt(tmp_path, change):
     import hashlib
 
-    lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
+    lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
     good = lad.overlap_curve().eps(np.array([0.47, 30.0]))
     (path,) = tmp_path.glob("*.json")
     stored = json.loads(path.read_text())
@@ -90,27 +90,27 @@ def test_a_tampered_curve_is_detected_and_rebuilt(tmp_path, change):
     text = json.dumps(stored["content"], sort_keys=True, separators=(",", ":"))
     stored["sha256"] = hashlib.sha256(text.encode()).hexdigest()   # resealed: only the checks can tell
     path.write_text(json.dumps(stored))
-    fresh = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
+    fresh = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
     assert fresh.cached_overlap_curve() is None
     np.testing.assert_allclose(fresh.overlap_curve().eps(np.array([0.47, 30.0])), good, rtol=1e-13)
 
 
 @pytest.mark.parametrize("alpha, gamma", [("5/2", "1/2"), ("3", "1/4"), ("3", "1/2")])
 def test_sticking_boundary_is_right_on_both_sides(alpha, gamma):
-    b = sticking_boundary(alpha, gamma)
+    b = sticking_boundary((alpha, gamma))
     assert 1e-4 < b < 1e8
     with pytest.raises(StickError):
-        collide(alpha, gamma, b * (1 - 1e-4), end="overlap")
-    assert collide(alpha, gamma, b * (1 + 1e-4), end="overlap").eps > 0
+        collide((alpha, gamma), b * (1 - 1e-4), end="overlap")
+    assert collide((alpha, gamma), b * (1 + 1e-4), end="overlap").eps > 0
 
 
 def test_self_similar_boundary_is_the_proved_one():
-    assert sticking_boundary("1", "0") == 0.25 and sticking_boundary("3/2", "1/4") == 0.2
-    assert sticking_boundary("3/2", "1") == 0.0   # alpha < 2 gamma + 1: never sticks
+    assert sticking_boundary(("1", "0")) == 0.25 and sticking_boundary(("3/2", "1/4")) == 0.2
+    assert sticking_boundary(("3/2", "1")) == 0.0   # alpha < 2 gamma + 1: never sticks
 
 
 def test_the_curve_of_a_sticking_pair_starts_above_its_stored_boundary(tmp_path):
-    lad = Ladder("5/2", "1/2", cache_dir=str(tmp_path), stream=io.StringIO())
+    lad = Ladder(("5/2", "1/2"), cache_dir=str(tmp_path), stream=io.StringIO())
     c = lad.overlap_curve()
     assert c.omega_lo > c.stick_below > 0.3
     assert lad.evaluate([2.0, 50.0], tol=1e-9, end="overlap", method="master").error_bound <= 1e-9

@@ -36,7 +36,7 @@ COMPARED = ("eps", "tau_b", "x_b", "tau_c")
 
 @lru_cache(maxsize=None)
 def reference(alpha, gamma, omega):
-    return reference_collision(alpha, gamma, omega, digits=REFERENCE_DIGITS)
+    return reference_collision((alpha, gamma), omega, digits=REFERENCE_DIGITS)
 
 
 def relative_errors(alpha, gamma, omega):

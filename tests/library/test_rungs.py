@@ -24,7 +24,7 @@ class Toy(Rung):
 
 
 def test_a_rung_added_to_the_registry_is_quoted_and_chosen(tmp_path):
-    lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
+    lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
     assert lad.evaluate([0.3], tol=1e-9, build=False).method == "integrator"
     lad.rungs = (*lad.rungs, Toy())          # what one registry line does
     lad.rung_names = (*lad.rung_names, "toy")
@@ -34,7 +34,7 @@ def test_a_rung_added_to_the_registry_is_quoted_and_chosen(tmp_path):
 
 
 def test_a_rung_that_does_not_serve_the_rule_is_listed_with_the_reason(tmp_path):
-    lad = Ladder("3/2", "1", cache_dir=str(tmp_path), stream=io.StringIO())
+    lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
     q = {c["method"]: c for c in lad.evaluate([0.3], tol=1e-6, end="overlap", build=False).candidates}
     assert not q["fitted-c"]["available"] and "force rule only" in q["fitted-c"]["reason"]
 
@@ -51,5 +51,5 @@ def test_the_reference_rung_quotes_what_collide_states_under_either_rule():
         req = Request(as_exponents(alpha, gamma), np.array([1.0]), 1e-9, "overlap")
         assert req.rule == rule
         quoted = Reference().bound(req, {})[0]
-        stated = collide(alpha, gamma, 1.0, rtol=reference_rtol(1e-9, req.ex, rule), end="overlap").error_bound
+        stated = collide((alpha, gamma), 1.0, rtol=reference_rtol(1e-9, req.ex, rule), end="overlap").error_bound
         assert quoted == stated

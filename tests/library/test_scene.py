@@ -357,7 +357,7 @@ def test_near_sticking_small_eps_are_asked_to_an_absolute_accuracy_without_mpmat
     from restitution.dem.model_ladder import EVAL_TOL, SMALL_EPS, lammps_rungs, scaled_eps
     rung = next(r for r in lammps_rungs("hertz", "velocity"))
     om = 0.7400121553440137 * (1.0 + np.array([1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0, 10.0]))
-    truth = [float(highprec.reference_collision(rung.alpha, rung.gamma, float(w), digits=20, end="overlap").eps)
+    truth = [float(highprec.reference_collision((rung.alpha, rung.gamma), float(w), digits=20, end="overlap").eps)
              for w in om[[0, 2, 5]]]
 
     def no_mpmath(*args, **kwargs):
@@ -378,7 +378,7 @@ def test_a_small_scenes_lines_do_not_depend_on_what_the_cache_holds(tmp_path, mo
     monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path / "cache"))
     scene = scene_from_dict(_small())
     before = answer_scene(scene)["input_lines"]
-    Ladder("3/2", "1/2", stream=io.StringIO()).overlap_curve()     # viscoelastic's, under the overlap rule
+    Ladder(("3/2", "1/2"), stream=io.StringIO()).overlap_curve()     # viscoelastic's, under the overlap rule
     assert list((tmp_path / "cache").iterdir())
     assert answer_scene(scene)["input_lines"] == before
 

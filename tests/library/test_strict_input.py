@@ -61,9 +61,9 @@ def test_documented_forms_still_work(capsys):
     (lambda: epsilon(alpha="3/2", gamma=1, omega="0.5"), "omega"),
     (lambda: epsilon(alpha="3/2", gamma=1, omega=0.5, build="no"), "build"),
     (lambda: epsilon(alpha="3/2", gamma=1, omega=0.5, build=1), "build"),
-    (lambda: collide("3/2", 1, 0.5 + 1j), "omega"),
-    (lambda: collide("3/2", 1, True), "omega"),
-    (lambda: collide("3/2", 1, "0.5"), "omega"),
+    (lambda: collide(("3/2", 1), 0.5 + 1j), "omega"),
+    (lambda: collide(("3/2", 1), True), "omega"),
+    (lambda: collide(("3/2", 1), "0.5"), "omega"),
     (lambda: Material(alpha="3/2", gamma=1, D1=0.000296, D2=0.0109).omega(np.array([True])), "g"),
 ])
 def test_the_api_takes_the_same_rules(call, field):
@@ -74,5 +74,5 @@ def test_the_api_takes_the_same_rules(call, field):
 
 def test_numpy_numbers_are_numbers():
     assert epsilon(alpha="3/2", gamma=1, omega=np.float32(0.5), build=False).eps.shape == ()
-    assert collide("3/2", 1, np.float64(0.5)).eps == pytest.approx(0.3437503260, rel=1e-9)
+    assert collide(("3/2", 1), np.float64(0.5)).eps == pytest.approx(0.3437503260, rel=1e-9)
     assert Material(alpha="3/2", gamma=1, D1=0.000296, D2=0.0109).omega(np.array([0.1, 1])).shape == (2,)

@@ -27,14 +27,14 @@ pytestmark = pytest.mark.slow
 
 @pytest.fixture(scope="module", params=PAIRS, ids=lambda p: f"a{p[0]}-g{p[1]}")
 def form(request):
-    return build_uniform(*request.param)
+    return build_uniform(request.param)
 
 
 def test_viscous_limit_is_exact_to_first_order(form):
     """eps_form / (k Omega [1 - Omega (c_log ln(1/Omega) + c_const)]) - 1, measured against the size of
     the first-order term itself, goes to zero: below 5 % of it at Omega = 1e-10, and falling by at least
     ten from 1e-8 to 1e-10 (the fitted term is O(Omega^(1 + sigma m0)); or it is at the rounding of a double)."""
-    V = asy.viscous_limit(form.alpha, form.gamma)
+    V = asy.viscous_limit((form.alpha, form.gamma))
     om = np.array([1e-8, 1e-10])
     first = om * (V.c_log * np.log(1 / om) + abs(V.c_const))
     ratio = np.abs(form.eps(om) / V.eps(om, 1) - 1) / first
@@ -44,7 +44,7 @@ def test_viscous_limit_is_exact_to_first_order(form):
 
 def test_elastic_limit_is_exact_to_first_order(form):
     """(1 - eps_form) / (C1 Omega^-A) -> 1, its deviation falling at least like Omega^(-A/2)."""
-    E = asy.elastic_limit(form.alpha, form.gamma)
+    E = asy.elastic_limit((form.alpha, form.gamma))
     om = np.array([1e10, 1e14, 1e18])
     dev = np.abs(form.one_minus_eps(om) / (E.C1 * om ** -E.A) - 1)
     assert dev[1] < dev[0] * 1e4 ** (-E.A / 2) and dev[2] < dev[1] * 1e4 ** (-E.A / 2)
@@ -55,7 +55,7 @@ def test_stated_bound_holds_on_fresh_points(form):
     """Points from another seed than the build's, eps and 1 - eps from the scipy reference (1 - eps
     from the dissipated energy, relative accuracy ~1e-12)."""
     om = np.sort(10 ** np.random.default_rng(2026).uniform(-8, 8, 24))
-    runs = [collide(form.alpha, form.gamma, float(w), rtol=1e-12) for w in om]
+    runs = [collide((form.alpha, form.gamma), float(w), rtol=1e-12) for w in om]
     err = np.abs(form.eps(om) / np.array([r.eps for r in runs]) - 1)
     assert err.max() <= form.bound_eps
     el = om >= 1
@@ -94,7 +94,7 @@ def test_serialised_form_round_trips_and_rejects_a_changed_constant(form):
 @pytest.mark.parametrize("alpha,gamma,why", [("1", "3/2", "alpha < gamma"), ("3/2", "3/2", "exact closed form")])
 def test_pairs_without_a_uniform_form_are_refused_with_the_reason(alpha, gamma, why):
     with pytest.raises(ParameterError, match=why):
-        skeleton(alpha, gamma)
+        skeleton((alpha, gamma))
 
 
 def test_cli_closed_form_json_contract(tmp_path, capsys):
@@ -106,7 +106,7 @@ def test_cli_closed_form_json_contract(tmp_path, capsys):
     assert 0 < out["error_bound"] <= 1e-4
     c = out["coefficients"]
     assert {"k", "A", "b", "c_log", "c3", "sigma", "m0", "m1", "a"} <= set(c) and len(c["a"]) == 12
-    ref = collide("3/2", "1", 0.3, rtol=1e-12).eps
+    ref = collide(("3/2", "1"), 0.3, rtol=1e-12).eps
     assert abs(out["eps"][1] / ref - 1) <= out["error_bound"]
 
 
@@ -148,10 +148,10 @@ ATLAS_PAIRS = [(a, g) for a in DEFAULT_ALPHAS for g in DEFAULT_GAMMAS
 def test_every_atlas_pair_keeps_its_bound_on_fresh_points(alpha, gamma):
     """Every pair of the stability atlas with alpha > gamma: the form is built, its bound is at most
     1e-3 and holds on points from another seed (eps and 1 - eps from the scipy reference)."""
-    form = build_uniform(alpha, gamma)
+    form = build_uniform((alpha, gamma))
     assert form.bound_eps <= 1e-3 and form.bound_one_minus_eps <= 1e-3
     om = np.sort(10 ** np.random.default_rng(7).uniform(-8, 8, 12))
-    runs = [collide(alpha, gamma, float(w), rtol=1e-12) for w in om]
+    runs = [collide((alpha, gamma), float(w), rtol=1e-12) for w in om]
     assert np.max(np.abs(form.eps(om) / np.array([r.eps for r in runs]) - 1)) <= form.bound_eps
     el = om >= 1
     ome = np.array([r.one_minus_eps for r in runs])[el]

@@ -158,11 +158,11 @@ def _api_cases():
         ("rtol", lambda: collide("3/2", 1, 1.0, rtol=0)),
         ("rtol", lambda: collide("3/2", 1, 1.0, rtol=math.nan)),
         ("t_eval", lambda: collide("3/2", 1, 1.0, t_eval=[0.0, math.nan])),
-        ("omegas", lambda: collide_many("3/2", 1, [[1.0]])),
-        ("omega", lambda: collide_many("3/2", 1, [1.0, -1.0])),
-        ("omega_tilde", lambda: inverse_collide("3/2", 1, 0)),
-        ("x_start", lambda: inverse_collide("3/2", 1, 1.0, x_start=-1)),
-        ("omega_tilde", lambda: inverse_collide(1, 0, 0.1)),   # runs away: a ParameterError too
+        ("omegas", lambda: collide_many(("3/2", 1), [[1.0]])),
+        ("omega", lambda: collide_many(("3/2", 1), [1.0, -1.0])),
+        ("omega_tilde", lambda: inverse_collide(("3/2", 1), 0)),
+        ("x_start", lambda: inverse_collide(("3/2", 1), 1.0, x_start=-1)),
+        ("omega_tilde", lambda: inverse_collide((1, 0), 0.1)),   # runs away: a ParameterError too
         ("D1", lambda: Material("3/2", 1, math.nan, 1)),
         ("D2", lambda: Material("3/2", 1, 1, math.inf)),
         ("D1", lambda: Material("3/2", 1, 0, 1)),
@@ -173,8 +173,8 @@ def _api_cases():
         ("max_power", lambda: perturbation_series("3/2", 1, 2, 0)),
         ("max_power", lambda: perturbation_series("3/2", 1, 2, "nan")),
         ("direction", lambda: perturbation_series("3/2", 1, 2, 11, "sideways")),
-        ("digits", lambda: reference_collision("3/2", 1, 1.0, digits=5)),
-        ("omega", lambda: reference_collision("3/2", 1, -1)),
+        ("digits", lambda: reference_collision(("3/2", 1), 1.0, digits=5)),
+        ("omega", lambda: reference_collision(("3/2", 1), -1)),
     ]
 
 

@@ -524,7 +524,7 @@ def test_the_overlap_limit_numbers_come_from_the_library(built):
     table = pd.read_csv(built / "results/dem/overlap_limit.csv", dtype={"alpha": str, "gamma": str, "k": str})
     assert len(table) >= 3
     for _, r in table.iterrows():
-        L = overlap_limit(r["alpha"], r["gamma"])
+        L = overlap_limit((r["alpha"], r["gamma"]))
         assert r["C"] == pytest.approx(L.C, rel=1e-14) and Fraction(r["k"]) == L.k_exact
         assert r["max_dev_small"] < 1e-9 and abs(r["dev_highprec"]) < 1e-9
     values = (built / "results/dem/overlap_values.tex").read_text()

@@ -168,7 +168,7 @@ def test_a_pair_with_large_exponents_is_held_to_the_accuracy_collide_states_for_
     common = spec.stated_accuracy
     assert spec.accuracy_for("3/2", "1") == common
     assert spec.accuracy_for("8", "7") == pytest.approx(common * (15 / 4) ** 3)
-    assert collide("8", "7", 1.0, rtol=spec.rtol).error_bound == pytest.approx(spec.accuracy_for("8", "7"))
+    assert collide(("8", "7"), 1.0, rtol=spec.rtol).error_bound == pytest.approx(spec.accuracy_for("8", "7"))
     err = 10 * common   # within the large pair's statement, not the common one's
     records = [_record(2.0, 0.4, alpha="8", gamma="7", err_tight=err), _record(2.0, 0.4, err_tight=err)]
     violations, _ = sc.check_invariants(records, spec.accuracy_for)
@@ -265,7 +265,7 @@ def test_the_limits_meet_the_ends_of_the_atlas(coarse):
     # Hertz with Kuwabara-Kono damping: 1 - eps at Omega = 1e8 against Ramirez et al.'s C1, C2
     from restitution.core.asymptotics import elastic_limit
 
-    hertz = elastic_limit("3/2", "1/2")
+    hertz = elastic_limit(("3/2", "1/2"))
     assert hertz.C1 == pytest.approx(1.1534489, abs=1e-6) and hertz.C2 == pytest.approx(0.7982666, abs=1e-6)
     assert limits[("3/2", "1/2")]["dev_one_minus_eps_elastic"] < 1e-4
 

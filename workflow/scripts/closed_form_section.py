@@ -28,8 +28,8 @@ overlap_errors = {name: pd.read_csv(path) for name, path in zip(p.variants, snak
 main = forms[p.main]
 main_overlap = overlap_forms[p.main]
 ex = p.exponents[p.main]
-V = asy.viscous_limit(ex["alpha"], ex["gamma"])
-E = asy.elastic_limit(ex["alpha"], ex["gamma"])
+V = asy.viscous_limit((ex["alpha"], ex["gamma"]))
+E = asy.elastic_limit((ex["alpha"], ex["gamma"]))
 
 # %% figure: errors over g of the main variant (figure 4 shows eps itself)
 curve = pd.read_csv(snakemake.input.curve)
@@ -141,7 +141,7 @@ else:
 
 # the viscous expansion against the reference integrator (printed beside it)
 CHECK_OMEGA = 1e-4
-ref_check = collide(ex["alpha"], ex["gamma"], CHECK_OMEGA, rtol=1e-12).eps
+ref_check = collide((ex["alpha"], ex["gamma"]), CHECK_OMEGA, rtol=1e-12).eps
 check_lead = abs(float(V.eps(CHECK_OMEGA, order=0)) / ref_check - 1.0)
 check_first = abs(float(V.eps(CHECK_OMEGA, order=1)) / ref_check - 1.0)
 end_power = 1 + (g_ + 1) / (a_ - g_) if a_ > g_ else None

@@ -41,7 +41,7 @@ elif pts["omega"].nunique() < 4:
 else:
     res = connection.fit_quadratic(pts["omega"].to_numpy(), pts["omega_tilde"].to_numpy())
     fit.update(res.as_dict(), applies=True, g_min=rng["min"], g_max=rng["max"])
-    validity = connection.connection_validity(ex, None, res.c)
+    validity = connection.connection_validity(ex, res.c)
     fit["validity"] = {k: [list(iv) for iv in v] for k, v in validity.items()}
     residuals = pd.DataFrame({"g": pts["g"], "omega": pts["omega"], "omega_tilde": pts["omega_tilde"],
                               "omega_tilde_fit": pts["omega_tilde"] - res.residuals,
@@ -51,7 +51,7 @@ else:
 # %% The retrace check at g_figure
 summary = read_json(snakemake.input.summary)
 try:
-    rt = connection.retrace(ex, None, summary["omega"], rtol=p.rtol)
+    rt = connection.retrace(ex, summary["omega"], rtol=p.rtol)
     fit["retrace"] = {"omega": rt.omega, "omega_tilde": rt.omega_tilde, "eps": rt.eps,
                       "x_tilde_start": rt.x_tilde_start, "samples": int(rt.tau.size),
                       "max_deviation": rt.max_deviation, "v_end_error": rt.v_end_error,

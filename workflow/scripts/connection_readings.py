@@ -43,7 +43,7 @@ if p.readings != "all":
 # %% The procedure, reading by reading
 rows = []
 for r in readings:
-    rows.append(matching.reading_row(alpha, gamma, r))
+    rows.append(matching.reading_row((alpha, gamma), r))
     print(f"{r.label}: {rows[-1]['c']} {rows[-1].get('reason', '')}")
 
 # %% The reading for figure 4

@@ -50,7 +50,7 @@ for rel in relations:
                          "Omega~(Omega) carries no information on eps")
         rows.append(row)
         continue
-    eps = np.asarray(eps_from_connection(ex, None, omega, rel["c"]), float)
+    eps = np.asarray(eps_from_connection(ex, omega, rel["c"]), float)
     every[f"eps_{rel['kind']}"] = eps
     ok = np.isfinite(eps)
     err = np.abs(eps - ref)

@@ -68,7 +68,7 @@ for j, g in enumerate(gammas):
                                facecolors="none" if marker != "x" else c, edgecolors=c if marker != "x" else None,
                                color=c if marker == "x" else None, lw=0.8)
         if asy is not None:
-            vl, el = asy.viscous_limit(a, g), asy.elastic_limit(a, g)
+            vl, el = asy.viscous_limit((a, g)), asy.elastic_limit((a, g))
             axes[0, j].plot(viscous_w, vl.eps(viscous_w, order=1), "-", color="black", lw=0.6, alpha=0.6)
             axes[1, j].plot(elastic_w, 1.0 - el.eps(elastic_w, order=2), "-", color="black", lw=0.6, alpha=0.6)
             axes[2, j].plot(elastic_w, el.tau_c(elastic_w), "-", color="black", lw=0.6, alpha=0.6)

@@ -33,7 +33,7 @@ CURVE_RTOL = 1e-14
 @lru_cache(maxsize=None)
 def eps(a, g, om, rule):
     """One reference collision (each is needed by several of the numbers below)."""
-    return collide(a, g, om, end=rule, rtol=RTOL).eps
+    return collide((a, g), om, end=rule, rtol=RTOL).eps
 
 
 pairs = []
@@ -44,11 +44,11 @@ for a, g, label in P.pairs:
 # %% the law against both integrators
 rows, curves = [], []
 for a, g, label in pairs:
-    L = overlap_limit(a, g)
+    L = overlap_limit((a, g))
     law = lambda om: L.C * om ** L.k  # noqa: E731
     small = {om: eps(a, g, om, "overlap") / law(om) - 1.0 for om in P.check_omegas}
     hp_om = P.highprec_omega
-    hp = float(reference_collision(a, g, hp_om, digits=P.highprec_digits, end="overlap").eps) / law(hp_om) - 1.0
+    hp = float(reference_collision((a, g), hp_om, digits=P.highprec_digits, end="overlap").eps) / law(hp_om) - 1.0
     o1, o2 = min(P.check_omegas), max(P.check_omegas)
     slope = np.log(eps(a, g, o2, "overlap") / eps(a, g, o1, "overlap")) / np.log(o2 / o1)
     moderate = {om: eps(a, g, om, "overlap") / law(om) - 1.0 for om in P.moderate_omegas}
@@ -58,7 +58,7 @@ for a, g, label in pairs:
                  **{f"dev_{om:g}": v for om, v in moderate.items()},
                  **{f"ratio_{om:g}": v for om, v in ratio.items()}, "force_k": L.force_k, "decay": L.decay})
     om = np.logspace(np.log10(P.curve_omega[0]), np.log10(P.curve_omega[1]), P.curve_points)
-    eo, ef = reference_eps(a, g, om, CURVE_RTOL, "overlap"), reference_eps(a, g, om, CURVE_RTOL, "force")
+    eo, ef = reference_eps((a, g), om, CURVE_RTOL, "overlap"), reference_eps((a, g), om, CURVE_RTOL, "force")
     curves += [{"alpha": a, "gamma": g, "omega": w, "eps_overlap": o, "eps_force": f, "law_overlap": law(w),
                 "law_force": L.force_k * w} for w, o, f in zip(om, eo, ef)]
 table = pd.DataFrame(rows)
@@ -82,7 +82,7 @@ write_text(out.table, "\n".join(lines))
 # %% the numbers the manuscript prints
 main = next(r for r in rows if r["label"] == "main")
 hertz = next(r for r in rows if (r["alpha"], r["gamma"]) == ("3/2", "1/2"))
-Lm = overlap_limit(main["alpha"], main["gamma"])
+Lm = overlap_limit((main["alpha"], main["gamma"]))
 p1, p2 = Lm.speed_exponents
 mat = P.material
 speed = float(Lm.rebound_speed(mat["D1"], mat["D2"]))
@@ -127,7 +127,7 @@ for i, r in enumerate(rows):
     left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], color=colours[i % 7], lw=1.6, label=lab)
     left.loglog(c["omega"], c["law_overlap"] / c["law_force"], color=colours[i % 7], lw=0.9, ls="--")
     inv = np.asarray(P.decay_inverse_omegas, dtype=float)
-    d = np.abs(reference_eps(r["alpha"], r["gamma"], 1.0 / inv, CURVE_RTOL, "overlap")
+    d = np.abs(reference_eps((r["alpha"], r["gamma"]), 1.0 / inv, CURVE_RTOL, "overlap")
                / (r["C"] * inv ** -float(Fraction(r["k"]))) - 1.0)
     # below its bound under this rule the integrator's own error shows (the plateau near 5e-13)
     keep = d > integrator_bound(CURVE_RTOL, as_exponents(r["alpha"], r["gamma"]), "overlap")

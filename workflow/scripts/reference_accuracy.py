@@ -26,7 +26,7 @@ omega = mat.omega(p.g)
 rows = []
 for rtol in sorted(p.rtols, reverse=True):
     t0 = time.perf_counter()
-    hit = collide(ex.alpha, ex.gamma, omega, rtol=rtol)
+    hit = collide(ex, omega, rtol=rtol)
     elapsed = time.perf_counter() - t0
     rows.append({"rtol": rtol, **{q: float(getattr(hit, q)) for q in QUANTITIES}})
     print(f"rtol = {rtol:.0e}: eps = {hit.eps:.15g} ({elapsed * 1e3:.1f} ms)")

@@ -28,7 +28,7 @@ mat = Material(p.exponents["alpha"], p.exponents["gamma"], p.D1, p.D2)
 ex = mat.exponents
 g = speeds(p.g_range)
 omega = np.asarray(mat.omega(g), dtype=float)
-res = collide_many(ex.alpha, ex.gamma, omega, rtol=p.rtol)
+res = collide_many(ex, omega, rtol=p.rtol)
 table = pd.DataFrame({"g": g, "omega": omega})
 for key, values in res.items():
     if key not in table:

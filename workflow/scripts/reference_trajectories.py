@@ -28,9 +28,9 @@ mat = Material(p.exponents["alpha"], p.exponents["gamma"], p.D1, p.D2)
 ex = mat.exponents
 omega = mat.omega(p.g)
 # First pass finds the contact time, the second samples [0, tau_c] uniformly.
-first = collide(ex.alpha, ex.gamma, omega, rtol=p.rtol)
+first = collide(ex, omega, rtol=p.rtol)
 grid = np.linspace(0.0, first.tau_c, p.points)
-hit = collide(ex.alpha, ex.gamma, omega, rtol=p.rtol, t_eval=grid)
+hit = collide(ex, omega, rtol=p.rtol, t_eval=grid)
 traj = hit.trajectory
 fwd = pd.DataFrame({"tau": np.asarray(traj.tau, float), "x": np.asarray(traj.x, float),
                     "v": np.asarray(traj.v, float)})
@@ -54,7 +54,7 @@ inv = pd.DataFrame({
 # What the printed inverse series approximate: the inverse equation integrated from x~(0) = 0
 # (not x~_c) at the same Omega~, sampled at the same tau~.
 try:
-    from_zero = inverse_collide(ex.alpha, ex.gamma, omega_tilde, x_start=0.0, rtol=p.rtol,
+    from_zero = inverse_collide(ex, omega_tilde, x_start=0.0, rtol=p.rtol,
                                 t_eval=inv["tau_tilde"].to_numpy())
     zero_x = np.full(len(inv), np.nan)
     zero_x[:len(from_zero.trajectory.x)] = from_zero.trajectory.x

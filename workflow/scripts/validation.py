@@ -42,7 +42,7 @@ tol = p.tolerances
 ex = Exponents.parse(p.exponents["alpha"], p.exponents["gamma"])
 curve = pd.read_csv(snakemake.input.curve)
 omega = np.geomspace(p.grid["omega_min"], p.grid["omega_max"], p.grid["points"])
-res = collide_many(ex, None, omega, rtol=p.rtol)
+res = collide_many(ex, omega, rtol=p.rtol)
 ref = res["eps"]
 known = pd.DataFrame({"omega": omega, "eps_reference": ref, "tau_c": res["tau_c"], "end": res["end"]})
 checks = []
@@ -82,7 +82,7 @@ if ex.alpha == ex.gamma:
 # %% Viscoelastic spheres: elastic-limit series and the Pade form
 if (ex.alpha, ex.gamma) == HERTZ:
     A = float((ex.gamma + 1) / (ex.alpha + 1))
-    series = asymptotics.elastic_limit(ex.alpha, ex.gamma)
+    series = asymptotics.elastic_limit(ex)
     top = omega >= omega.max() / 10.0
 
     def error_slope(eps):

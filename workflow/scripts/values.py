@@ -270,7 +270,7 @@ if p.claims:
 
     # The paper's printed numbers (restitution.audit.printed) and ours next to them.
     # the sharpest consequence of the printed c's: eps at the paper's own impact speed
-    V.add("PrintedEpsAtG", eps_from_connection(ex, None, omega, printed.PRINTED_C), kind="formula",
+    V.add("PrintedEpsAtG", eps_from_connection(ex, omega, printed.PRINTED_C), kind="formula",
           note="eps from the printed c0-c2 at g_figure (the reference gives EpsAtG)")
     V.add("PaperAlpha", Fraction(printed.ALPHA), kind="paper")
     V.add("PaperGamma", Fraction(printed.GAMMA), kind="paper")

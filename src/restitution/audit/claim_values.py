@@ -31,17 +31,17 @@ DEFAULT_SETTINGS = {
 
 
 # ===================================================================================== computing
-def _series_values(alpha, gamma) -> list[dict] | None:
+def _series_values(problem) -> list[dict] | None:
     """Each printed x_n (forward, inverse) against the exact engine; None for other exponents."""
     from ..core.exponents import as_exponents
-    from ..core.series import perturbation_series
+    from ..core.series import series_for
 
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     if ex != as_exponents(printed.ALPHA, printed.GAMMA):
         return None
     out = []
     for direction, orders in printed.PRINTED_SERIES.items():
-        ours = perturbation_series(ex, None, max(orders), printed_max_power(orders), direction)
+        ours = series_for(ex, max(orders), printed_max_power(orders), direction)
         for n, terms in orders.items():
             mine = dict(ours.terms(n))
             bad = [[p, c, str(mine.get(Fraction(p), 0))] for p, c in terms
@@ -73,7 +73,7 @@ def _first_exceedance(tau, err, limit, err_at=None):
     return float(brentq(lambda t: err_at(t) - limit, float(tau[i - 1]), float(tau[i]), xtol=TRACKING_XTOL))
 
 
-def tracking_values(alpha, gamma, omega, omega_tilde, *, thresholds=(0.01, 0.05, 0.1), samples=1201,
+def tracking_values(problem, omega, omega_tilde, *, thresholds=(0.01, 0.05, 0.1), samples=1201,
                     max_power=11, rtol=1e-10, orders=(1, 2, 3, 4)) -> dict:
     """Where the perturbation series stop tracking the reference solution.
 
@@ -88,12 +88,12 @@ def tracking_values(alpha, gamma, omega, omega_tilde, *, thresholds=(0.01, 0.05,
     """
     from ..core.collision import collide, inverse_collide
     from ..core.exponents import as_exponents
-    from ..core.series import perturbation_series
+    from ..core.series import series_for
 
-    fwd = collide(alpha, gamma, omega, rtol=rtol)
+    fwd = collide(problem, omega, rtol=rtol)
     tau = np.linspace(0.0, fwd.tau_c, samples)
-    ref = collide(alpha, gamma, omega, rtol=rtol, t_eval=tau).trajectory
-    ps = perturbation_series(alpha, gamma, max(orders), max_power, "forward")
+    ref = collide(problem, omega, rtol=rtol, t_eval=tau).trajectory
+    ps = series_for(problem, max(orders), max_power, "forward")
     err_f = {n: np.abs(ps.evaluate(ref.tau, omega, order=n) - ref.x) for n in orders}
     # "for tau > 2 the first order is better": compared only where some truncation still follows
     # the solution (within a tracking threshold x x_b); where all are off by order one, "better"
@@ -107,13 +107,13 @@ def tracking_values(alpha, gamma, omega, omega_tilde, *, thresholds=(0.01, 0.05,
             comparable[str(float(thr))] = int(late.sum())
             first_best_late[str(float(thr))] = float(np.mean(err_f[1][late] <= higher[late])) if late.any() else None
 
-    inv0 = inverse_collide(alpha, gamma, omega_tilde, 0.0, rtol=rtol)
+    inv0 = inverse_collide(problem, omega_tilde, 0.0, rtol=rtol)
     tau_t = np.linspace(0.0, inv0.tau_end, samples)
-    iref = inverse_collide(alpha, gamma, omega_tilde, 0.0, rtol=rtol, t_eval=tau_t).trajectory
-    pi = perturbation_series(alpha, gamma, max(orders), max_power, "inverse")
+    iref = inverse_collide(problem, omega_tilde, 0.0, rtol=rtol, t_eval=tau_t).trajectory
+    pi = series_for(problem, max(orders), max_power, "inverse")
     err_i = {n: np.abs(pi.evaluate(iref.tau, omega_tilde, order=n) - iref.x) for n in orders}
 
-    g = float(as_exponents(alpha, gamma).gamma)
+    g = float(as_exponents(problem).gamma)
     time_scale = fwd.eps ** (-g / (g + 1.0))
     out = {"omega": float(omega), "omega_tilde": float(omega_tilde), "thresholds": [float(t) for t in thresholds],
            "tau_c": fwd.tau_c, "tau_b": fwd.tau_b, "x_b": fwd.x_b, "x_b_inverse": inv0.x_b, "eps": fwd.eps,
@@ -122,11 +122,11 @@ def tracking_values(alpha, gamma, omega, omega_tilde, *, thresholds=(0.01, 0.05,
            "forward": {}, "inverse_tau_tilde": {}, "inverse_tau_paper": {}, "inverse_tau_scaled": {}}
     def fwd_err(n):
         return lambda t: abs(float(ps.evaluate(np.array([t]), omega, order=n)[0])
-                             - float(collide(alpha, gamma, omega, rtol=rtol, t_eval=[t]).trajectory.x[0]))
+                             - float(collide(problem, omega, rtol=rtol, t_eval=[t]).trajectory.x[0]))
 
     def inv_err(n):
         return lambda t: abs(float(pi.evaluate(np.array([t]), omega_tilde, order=n)[0])
-                             - float(inverse_collide(alpha, gamma, omega_tilde, 0.0, rtol=rtol, t_eval=[t]).trajectory.x[0]))
+                             - float(inverse_collide(problem, omega_tilde, 0.0, rtol=rtol, t_eval=[t]).trajectory.x[0]))
 
     # the same criterion both ways: the first time, in the run's own direction, at which the series
     # is off by more than the threshold times that run's maximum compression
@@ -147,9 +147,9 @@ def radius_estimate(gamma, direction: str, max_power=201) -> float:
 
     R = |c_k / c_k'|^(1/(k' - k)) (ratio test); for tanh / tan the corrections fall like 3^-k.
     """
-    from ..core.series import perturbation_series
+    from ..core.series import series_for
 
-    ps = perturbation_series(2, gamma, 0, max_power, direction)  # x0 does not depend on alpha
+    ps = series_for((2, gamma), 0, max_power, direction)  # x0 does not depend on alpha
     terms = ps.terms(0)
     (p1, c1), (p2, c2) = terms[-2], terms[-1]
     return float(abs(Fraction(c1) / Fraction(c2)) ** (1.0 / float(p2 - p1)))
@@ -203,16 +203,16 @@ def reference_inputs(material_params: dict, settings: dict | None = None) -> dic
                    material_params["D2"])
     ex, rtol = mat.exponents, float(st["rtol"])
     omega_fig = mat.omega(float(st["g_figure"]))
-    fig = collide(ex, None, omega_fig, rtol=rtol)
+    fig = collide(ex, omega_fig, rtol=rtol)
     g = np.geomspace(float(st["g_wide"][0]), float(st["g_wide"][1]), int(st["points"]))
-    exact = connection.exact_omega_tilde(ex, None, mat.omega(g), rtol=rtol)
+    exact = connection.exact_omega_tilde(ex, mat.omega(g), rtol=rtol)
     curve = {"g": g, "omega": exact["omega"], "eps": exact["eps"], "omega_tilde": exact["omega_tilde"]}
     lo, hi = st["g_fit"]
-    fit = connection.fit_connection(ex, None, np.sort(mat.omega(np.geomspace(lo, hi, int(st["points"])))), rtol=rtol)
+    fit = connection.fit_connection(ex, np.sort(mat.omega(np.geomspace(lo, hi, int(st["points"])))), rtol=rtol)
     x_tilde_c = connection.rebound_start(ex, fig.x_c, fig.eps)
     chosen = st["readings"] if st["readings"] is not None else readings.all_readings(
         x_tilde_c if 0 < x_tilde_c < 1 else None)
-    rows = [matching.reading_row(ex, None, r) for r in chosen]
+    rows = [matching.reading_row(ex, r) for r in chosen]
     return {"at_figure": {"omega": omega_fig, "eps": fig.eps, "tau_b": fig.tau_b, "x_c": fig.x_c},
             "curve": curve, "fit": {**fit.as_dict(), "g_min": float(lo), "g_max": float(hi)},
             "readings": rows}
@@ -253,7 +253,7 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
         "alpha": str(ex.alpha), "gamma": str(ex.gamma), "D1": mat.D1, "D2": mat.D2,
         "g_figure": g_fig, "settings": {k_: v for k_, v in st.items() if k_ != "readings"},
     }
-    values["series"] = _series_values(ex.alpha, ex.gamma)
+    values["series"] = _series_values(ex)
     values["d_star"] = mat.d_star
     values["omega_at_g"] = omega_fig
     values["tau_b_at_g"] = float(at_figure["tau_b"])
@@ -263,8 +263,8 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
 
     # Delta formulas and the reference points
     try:
-        delta, delta_t = matching.lowest_order_deltas(ex, None)
-        tau0, tau0t = rd.reference_times(ex, None)
+        delta, delta_t = matching.lowest_order_deltas(ex)
+        tau0, tau0t = rd.reference_times(ex)
         values["tau0"], values["tau0_tilde"] = float(tau0.evalf(20)), float(tau0t.evalf(20))
         values["delta_derived"] = [str(delta), str(delta_t)]
         p_delta, p_delta_t = matching.printed_deltas()
@@ -272,7 +272,7 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
         values["delta_equal"] = [bool((delta - p_delta).expand() == 0),
                                  bool((delta_t - p_delta_t).expand() == 0)]
         # tau_b from the lowest-order Delta with converged x1'(tau_0)
-        vals = rd.reference_derivatives(ex, None, Reading(truncation="converged"))
+        vals = rd.reference_derivatives(ex, Reading(truncation="converged"))
         a11 = float(vals.a[rd.a_sym(1, 1)])
         values["tau_b_lowest_order"] = values["tau0"] + float(delta.subs({rd.W: omega_fig, rd.a_sym(1, 1): a11}))
         values["tau_b_lowest_order_at_zero"] = values["tau0"] + float(delta.subs(rd.W, 0))
@@ -294,9 +294,9 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
     # figure 4: eps(g) from the paper's relation and from the reference
     eps_ref = np.asarray(curve["eps"], float)
     if k != 0:
-        eps_paper = np.asarray(connection.eps_from_connection(ex, None, omegas, printed.PRINTED_C), float)
+        eps_paper = np.asarray(connection.eps_from_connection(ex, omegas, printed.PRINTED_C), float)
         fit_c = values["fit"].get("c")
-        eps_fit = (np.asarray(connection.eps_from_connection(ex, None, omegas, fit_c), float) if fit_c is not None
+        eps_fit = (np.asarray(connection.eps_from_connection(ex, omegas, fit_c), float) if fit_c is not None
                    else np.full(g.shape, np.nan))
     else:
         eps_paper = eps_fit = np.full(g.shape, np.nan)
@@ -312,7 +312,7 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
     }
 
     if k != 0:
-        val = connection.connection_validity(ex, None, printed.PRINTED_C)
+        val = connection.connection_validity(ex, printed.PRINTED_C)
         to_g = lambda w: (w / mat.omega(1.0)) ** (1.0 / float(k)) if math.isfinite(w) and w > 0 else (  # noqa: E731
             math.inf if float(k) < 0 else 0.0)
         values["paper_relation_validity"] = {
@@ -322,7 +322,7 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
     # g-scalings
     values["omega_g_exponent"] = str(k)
     values["omega_g_slope"] = _local_slope(mat.omega, 0.01, 1.0)
-    eps_of = lambda w: collide(ex, None, w, rtol=rtol).eps  # noqa: E731
+    eps_of = lambda w: collide(ex, w, rtol=rtol).eps  # noqa: E731
     # small Omega = large g (damping dominates), large Omega = small g (nearly elastic)
     slope_eps_small_omega = _local_slope(eps_of, 1e-4, 2e-4)
     loss_window = (1e3, 2e3)   # beyond figure 4's grid: the elastic limit proper
@@ -339,7 +339,7 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
     }
 
     # where the series stop tracking (figures 1-2)
-    values["tracking"] = tracking_values(ex, None, omega_fig, omega_t_fig,
+    values["tracking"] = tracking_values(ex, omega_fig, omega_t_fig,
                                          thresholds=tuple(st["tracking_thresholds"]),
                                          samples=int(st["tracking_samples"]),
                                          max_power=st["series_max_power"], rtol=rtol)

@@ -35,13 +35,13 @@ C0_SEARCH_MAX = 200.0
 
 
 # ------------------------------------------------------------------------------------ the equations
-def lowest_order_deltas(alpha, gamma) -> tuple[sp.Expr, sp.Expr]:
+def lowest_order_deltas(problem) -> tuple[sp.Expr, sp.Expr]:
     """Delta(Omega), Delta~(Omega~) re-derived: x'(tau_0 + Delta) = 0 to first order in Delta and Omega.
 
     x0'(tau_0) + x0''(tau_0) Delta + Omega x1'(tau_0) = 0 with x0', x0'' at x0 = 1 from the first
     integral. Returned in terms of the symbols a_11 = x1'(tau_0) and b_11 = x~1'(tau~_0).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     check_gamma_forward(ex)
     f = damped_derivatives(ex.gamma, +1, 0, 2)
     i = damped_derivatives(ex.gamma, -1, 0, 2)
@@ -67,18 +67,18 @@ def _weight(reading: Reading):
     return lambda n: 1 / sp.factorial(n)
 
 
-def symbolic_system(alpha, gamma, reading: Reading):
+def symbolic_system(problem, reading: Reading):
     """The three conditions of the reading as sympy expressions (each = 0), in a_nj, b_nj symbols.
 
     Returns (E_forward, E_inverse, E_match, unknowns). Unknowns are (Delta, Delta~, Omega~), or
     (Delta, Delta~, u) with Omega~ = u Omega in the rescaled reading.
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     check_gamma_forward(ex)
     N, K = reading.omega_orders, reading.match_order
     wf = _weight(reading)
     if reading.delta == "printed":
-        delta, delta_t = lowest_order_deltas(ex, None)
+        delta, delta_t = lowest_order_deltas(ex)
         e_f, e_i = D - delta, DT - delta_t
     else:
         jd = 1 if reading.delta == "linear" else 2
@@ -192,20 +192,20 @@ def _solve_delta(expr, var, guess):
     return sp.Float(min(roots, key=lambda r: abs(r - guess)), 30)
 
 
-def reading_row(alpha, gamma, reading: Reading) -> dict:
+def reading_row(problem, reading: Reading) -> dict:
     """The procedure under one reading as a JSON-ready row with ``c``; where the procedure itself
     does not exist for these exponents (ParameterError), a row that says why."""
     try:
-        cc = paper_procedure(alpha, gamma, reading)
+        cc = paper_procedure(problem, reading)
     except ParameterError as err:
         return {"reading": reading.label, "description": reading.describe(), "defined": False,
                 "reason": str(err), "c": [math.nan] * 3}
     return {**cc.as_dict(), "c": [cc.c0, cc.c1, cc.c2]}
 
 
-def paper_procedure(alpha, gamma, reading: Reading | None = None, *, digits: int = 30) -> ConnectionCoefficients:
+def paper_procedure(problem, reading: Reading | None = None, *, digits: int = 30) -> ConnectionCoefficients:
     """c0, c1, c2 from the paper's connection procedure under ``reading`` (cached; see _paper_procedure)."""
-    return _paper_procedure(as_exponents(alpha, gamma), reading or Reading(), int(digits))
+    return _paper_procedure(as_exponents(problem), reading or Reading(), int(digits))
 
 
 @lru_cache(maxsize=256)
@@ -219,9 +219,9 @@ def _paper_procedure(ex: Exponents, reading: Reading, digits: int) -> Connection
     Orders Omega^1, Omega^2: the Omega-derivatives of the three conditions at Omega = 0 are linear in
     the next coefficients (the Jacobian of the system), which gives c1, c2 and the Delta's.
     """
-    vals = reference_derivatives(ex, None, reading, digits=digits)
+    vals = reference_derivatives(ex, reading, digits=digits)
     subs = {**vals.a, **vals.b}
-    e_f, e_i, e_m, (y1, y2, y3) = symbolic_system(ex, None, reading)
+    e_f, e_i, e_m, (y1, y2, y3) = symbolic_system(ex, reading)
     e_f, e_i, e_m = (sp.expand(e.subs(subs)) for e in (e_f, e_i, e_m))
     common = dict(tau0=float(sp.N(vals.tau0, 20)), tau0_tilde=float(sp.N(vals.tau0_tilde, 20)),
                   truncation_change=vals.truncation_change,

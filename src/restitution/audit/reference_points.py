@@ -23,7 +23,7 @@ import sympy as sp
 
 from ..core.errors import ParameterError
 from ..core.exponents import Exponents, as_exponents
-from ..core.series import falling_factorial, perturbation_series
+from ..core.series import falling_factorial, series_for
 from .readings import CONVERGED_MAX_POWER, PRINTED_MAX_POWER, Reading
 
 __all__ = ["W", "WT", "D", "DT", "U", "a_sym", "b_sym", "check_gamma_forward", "damped_derivatives",
@@ -65,14 +65,14 @@ def _first_integral_velocity(gamma: sp.Rational, sign: int, x_start=sp.Integer(0
     return x, 1 - sign * (x ** k - x_start ** k) / k
 
 
-def reference_times(alpha, gamma, x_tilde_c=0) -> tuple[sp.Expr, sp.Expr]:
+def reference_times(problem, x_tilde_c=0) -> tuple[sp.Expr, sp.Expr]:
     """Exact tau_0, tau~_0: where the damped-only forward / inverse solutions reach x = 1.
 
     gamma = 1, x~_c = 0: tau_0 = sqrt2 atanh(1/sqrt2), tau~_0 = sqrt2 atan(1/sqrt2). Otherwise the
     quadrature of the first integral, tau = int dx / v(x), returned as an unevaluated sympy Integral.
     gamma = 0 raises ParameterError (the forward solution never reaches 1).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     check_gamma_forward(ex)
     g = sp.Rational(ex.gamma.numerator, ex.gamma.denominator)
     xc = _exact(x_tilde_c)
@@ -195,10 +195,10 @@ def _series_value(terms, t: mpmath.mpf, j: int) -> mpmath.mpf:
 def _series_upto(alpha: Fraction, gamma: Fraction, orders: int, max_power: Fraction, direction: str):
     """Shared by every reading of one run: x_n does not depend on how many orders are computed, so
     the readings with 1, 2 and 4 orders use one derivation (at tau^120 it takes seconds)."""
-    return perturbation_series(alpha, gamma, orders, max_power, direction)
+    return series_for((alpha, gamma), orders, max_power, direction)
 
 
-def reference_derivatives(alpha, gamma, reading: Reading, *, jmax: int = 3, digits: int = 30,
+def reference_derivatives(problem, reading: Reading, *, jmax: int = 3, digits: int = 30,
                           exact: bool = False) -> _Values:
     """Values of a_{n,j} = x_n^(j)(tau_0), b_{n,j} = x~_n^(j)(tau~_0) for n <= omega_orders, j <= jmax.
 
@@ -208,10 +208,10 @@ def reference_derivatives(alpha, gamma, reading: Reading, *, jmax: int = 3, digi
     recurrence). ``truncation_change`` is the largest change of any value when the converged series
     is cut at 3/4 of its length (a convergence indicator; 0 for the printed truncation).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     check_gamma_forward(ex)
     N = reading.omega_orders
-    tau0, tau0t = reference_times(ex, None, reading.x_tilde_c)
+    tau0, tau0t = reference_times(ex, reading.x_tilde_c)
     change = 0.0
 
     def forward_inverse(max_power):

@@ -34,7 +34,7 @@ def _perturbation_c(order: int):
         from .readings import Reading
         try:
             progress(f"perturbation route, order {order}")
-            cc = paper_procedure(ex, None, Reading(omega_orders=order, **PERTURBATION_READING))
+            cc = paper_procedure(ex, Reading(omega_orders=order, **PERTURBATION_READING))
         except Exception as exc:  # noqa: BLE001 - a rung that cannot be built is reported, not fatal
             raise RelationUnavailable(f"paper's procedure failed: {type(exc).__name__}: {exc}") from exc
         if not (cc.defined and all(math.isfinite(x) for x in cc.c)):

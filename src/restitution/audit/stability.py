@@ -177,7 +177,7 @@ class AtlasSpec:
         """Relative error claimed for the pair's points: the one set in the config, or collide's."""
         if self.accuracy is not None:
             return self.accuracy
-        return conditioning.plain_accuracy(self.rtol, alpha, gamma, "force")
+        return conditioning.plain_accuracy((alpha, gamma), self.rtol, "force")
 
     @property
     def pairs(self) -> list[tuple[str, str]]:
@@ -333,7 +333,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
     clock = _Clock(timings)
     try:
         with clock("atlas"):
-            hit = collide(ex, None, point.omega, rtol=spec.rtol)
+            hit = collide(ex, point.omega, rtol=spec.rtol)
     except Exception as err:  # noqa: BLE001 - the atlas records what broke and carries on
         rec["status"] = f"{type(err).__name__}: {err}".replace("\n", " ")
         return rec
@@ -345,7 +345,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
     if point.tight:
         try:
             with clock("tight"):
-                tight = _values(collide(ex, None, point.omega, rtol=spec.tight_rtol))
+                tight = _values(collide(ex, point.omega, rtol=spec.tight_rtol))
             rec["err_tight"], rec["worst_tight"] = _worst(got, tight, with_xc)
         except Exception as err:  # noqa: BLE001
             rec["status"] = f"tight run failed: {type(err).__name__}: {err}".replace("\n", " ")
@@ -353,7 +353,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
         from ..core.highprec import reference_collision
         try:
             with clock("reference"):
-                ref = reference_collision(ex, None, point.omega, digits=spec.reference_digits)
+                ref = reference_collision(ex, point.omega, digits=spec.reference_digits)
         except Exception as err:  # noqa: BLE001
             rec["status"] = f"reference failed: {type(err).__name__}: {err}".replace("\n", " ")
         else:

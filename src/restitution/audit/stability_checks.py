@@ -177,7 +177,7 @@ def limit_agreement(records: Iterable[dict]) -> list[dict]:
         if not ok:
             continue
         lo, hi = ok[0], ok[-1]
-        vl, el = asy.viscous_limit(a, g), asy.elastic_limit(a, g)
+        vl, el = asy.viscous_limit((a, g)), asy.elastic_limit((a, g))
         w_lo, w_hi = float(lo["omega"]), float(hi["omega"])
         eps_v = float(vl.eps(w_lo, order=1))
         tc_v = float(vl.tau_c(w_lo)) if vl.kind == "force" else math.nan

@@ -209,14 +209,14 @@ def _damped_constants(alpha: Fraction, gamma: Fraction) -> tuple[float, float, f
 
 
 @lru_cache(maxsize=64)
-def inner_constant(alpha, gamma, *, y_start: float | None = None) -> float:
+def inner_constant(problem, *, y_start: float | None = None) -> float:
     """K = -w(0) of the inner problem w dw/dy = -y^alpha - y^gamma w (alpha < gamma), w ~ -y^(alpha-gamma).
 
     Integrated (Radau, rtol 1e-12) from y_start, where w starts on the slow manifold to first order,
     w = -y^(alpha-gamma) (1 + (alpha-gamma) y^(alpha-2gamma-1)); deviations from the manifold die out
     on the way in, and the result is independent of y_start to the integration accuracy (tested).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     a, g = float(ex.alpha), float(ex.gamma)
     if not a < g:
         raise ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}", "the inner problem needs alpha < gamma")
@@ -241,14 +241,14 @@ def inner_constant(alpha, gamma, *, y_start: float | None = None) -> float:
     return float(-sol.y[0, -1])
 
 
-def viscous_limit(alpha, gamma) -> ViscousLimit:
+def viscous_limit(problem) -> ViscousLimit:
     """The small-Omega expansion for these exponents (see the module docstring)."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     a, g = ex.alpha, ex.gamma
     if a == g:
         return ViscousLimit(a, g, "closed", 1.0, 1.0, X=float(g + 1) ** (1.0 / float(g + 1)))
     if a < g:
-        K = inner_constant(a, g)
+        K = inner_constant((a, g))
         return ViscousLimit(a, g, "inner", K, float((g + 1) / (2 * g + 1 - a)),
                             X=float(g + 1) ** (1.0 / float(g + 1)))
     X, lam, B, K0 = _damped_constants(a, g)
@@ -369,8 +369,8 @@ class ElasticLimit:
                 "C2": self.C2, "E": self.E, "end_power": self.end_power, "T0": self.T0}
 
 
-def elastic_limit(alpha, gamma) -> ElasticLimit:
-    ex = as_exponents(alpha, gamma)
+def elastic_limit(problem) -> ElasticLimit:
+    ex = as_exponents(problem)
     a, g = float(ex.alpha), float(ex.gamma)
     A = (g + 1.0) / (a + 1.0)
     C1 = ((a + 1.0) / 2.0) ** (A - 1.0) * _beta(A, 1.5)

@@ -499,7 +499,7 @@ def _check_omega(field: str, omega) -> float:
     return value
 
 
-def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str = "force") -> Collision:
+def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str = "force") -> Collision:
     """Forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to end of contact.
 
     ``alpha``, ``gamma``: anything Exponents.parse accepts (or an Exponents as ``alpha`` with
@@ -509,7 +509,7 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
     for both, however small eps (checked against mpmath down to eps = 5e-36). Under "overlap" the
     bodies may provably never separate (StickError, see _Trap and _check_separates).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     omega = _check_omega("omega", omega)
     rtol = _check_rtol(rtol)
     t_eval = _check_t_eval(t_eval)
@@ -547,8 +547,8 @@ def collide(alpha, gamma, omega, *, rtol: float = 1e-12, t_eval=None, end: str =
         # a loss (and could even exceed 1); the loss itself is accurate to about rtol relative
         eps = 1.0 - loss
     trajectory = sample(pieces, t_eval, last.tau) if t_eval is not None else None
-    plain = plain_accuracy(max(rtol, SOLVER_RTOL_FLOOR), ex, None, rule)
-    bound = plain * float(conditioning(ex, None, rule, eps, omega))
+    plain = plain_accuracy(ex, max(rtol, SOLVER_RTOL_FLOOR), rule)
+    bound = plain * float(conditioning(ex, rule, eps, omega))
     loss_bound = max(plain, bound * eps / loss) if 1.0 - eps >= BY_SUBTRACTION else plain
     return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
                      float(last.tau), float(x_c), end, rtol, trajectory, loss, rule, bound, loss_bound)
@@ -568,7 +568,7 @@ def _to_force_end(piece: Piece, law: Law, x_c: float, last: _State) -> Piece:
     return replace(piece, hi=last.tau + (x_c - last.x) / last.v)
 
 
-def stick_bound(alpha, gamma) -> float:
+def stick_bound(problem) -> float:
     """The Omega at or below which the bodies provably never separate under the overlap rule,
     without integrating: 0 where they always separate (alpha < 2 gamma + 1).
 
@@ -582,7 +582,7 @@ def stick_bound(alpha, gamma) -> float:
     e below about 0.1). Above this bound sticking is still claimed where _Trap catches it during the
     return, and only there.
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     e = ex.alpha - 2 * ex.gamma - 1
     if e < 0:
         return 0.0
@@ -590,10 +590,10 @@ def stick_bound(alpha, gamma) -> float:
     return 1.0 / (4.0 * float(ex.alpha - ex.gamma) * (g + 1.0) ** (float(e) / (g + 1.0)))
 
 
-def stick_reason(alpha, gamma) -> str:
+def stick_reason(problem) -> str:
     """stick_bound's proof in one line, for StickError (collide and the method ladder)."""
-    ex = as_exponents(alpha, gamma)
-    bound = stick_bound(ex, None)
+    ex = as_exponents(problem)
+    bound = stick_bound(ex)
     if ex.alpha == 2 * ex.gamma + 1:
         return f"Omega <= 1/(4 (gamma+1)) = {bound:.6g} for alpha = 2 gamma + 1"
     return (f"Omega <= {bound:.6g} = 1/(4 (alpha-gamma) X^(alpha-2gamma-1)), X = (gamma+1)^(1/(gamma+1)): "
@@ -602,15 +602,15 @@ def stick_reason(alpha, gamma) -> str:
 
 def _check_separates(ex, law: Law) -> None:
     """Refuse the overlap rule where the bodies provably never separate (stick_bound)."""
-    if law.omega <= stick_bound(ex, None):
-        _stuck(law, stick_reason(ex, None))
+    if law.omega <= stick_bound(ex):
+        _stuck(law, stick_reason(ex))
 
 
 def _stuck(law: Law, why: str):
     raise StickError.at(law.omega, why)
 
 
-def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,
+def inverse_collide(problem, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,
                     t_eval=None) -> InverseCollision:
     """Inverse collision x~'' + Omega~ x~^alpha - x~^gamma x~' = 0, x~(0) = x_start, x~'(0) = 1.
 
@@ -619,7 +619,7 @@ def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: fl
     force before the turn (e.g. alpha = 1, gamma = 0, Omega~ < 1/4 from x_start = 0), and then
     RunawayError (a ParameterError) is raised.
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     omega = _check_omega("omega_tilde", omega_tilde)
     x_start = _check_x_start(x_start)
     rtol = _check_rtol(rtol)
@@ -636,13 +636,13 @@ def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: fl
                             float(last.tau), float(last.v), rtol, trajectory)
 
 
-def collide_many(alpha, gamma, omegas, *, rtol: float = 1e-12) -> dict[str, np.ndarray]:
+def collide_many(problem, omegas, *, rtol: float = 1e-12) -> dict[str, np.ndarray]:
     """collide() over an array of Omega; returns arrays keyed eps, tau_b, x_b, tau_c, x_c, end."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     omegas = np.asarray(omegas, dtype=float)
     if omegas.ndim != 1:
         raise ParameterError("omegas", omegas, "must be a 1-D array of finite numbers > 0")
-    hits = [collide(ex, None, w, rtol=rtol) for w in omegas]
+    hits = [collide(ex, w, rtol=rtol) for w in omegas]
     out = {name: np.array([getattr(h, name) for h in hits], dtype=float)
            for name in ("eps", "tau_b", "x_b", "tau_c", "x_c")}
     out["end"] = np.array([h.end for h in hits], dtype=str)

@@ -63,13 +63,13 @@ ELASTIC_START = 1e6
 TINY = 1e-300
 
 
-def exponent_factor(alpha, gamma) -> float:
+def exponent_factor(problem) -> float:
     """The factor on the force rule's plain bounds for large exponents (EXPONENT_SCALE)."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     return max(1.0, float(ex.alpha + ex.gamma) / EXPONENT_SCALE) ** 3
 
 
-def plain_factor_floor(alpha, gamma, end: str, factor: float = ACCURACY_FACTOR,
+def plain_factor_floor(problem, end: str, factor: float = ACCURACY_FACTOR,
                        floor: float = ACCURACY_FLOOR) -> tuple[float, float]:
     """(factor, floor) of a double-precision integration's plain bound factor rtol + floor: the
     given force-rule ones (collide's by default) times exponent_factor; where the rules differ
@@ -77,25 +77,25 @@ def plain_factor_floor(alpha, gamma, end: str, factor: float = ACCURACY_FACTOR,
     force rule's legs up to the force's zero, and with them their growth with the exponents: make
     fuzz found 1 - eps of (15/2, 29/6) at Omega = 7.6e4 1.12 times over the overlap rule's own
     bound (an error equal to the force rule's, which states 11 times more)."""
-    ex = as_exponents(alpha, gamma)
-    scale = exponent_factor(ex, None)
+    ex = as_exponents(problem)
+    scale = exponent_factor(ex)
     if end_rule(end) == "overlap" and ex.alpha > ex.gamma:
         return max(OVERLAP_ACCURACY_FACTOR, factor * scale), max(OVERLAP_ACCURACY_FLOOR, floor * scale)
     return factor * scale, floor * scale
 
 
-def plain_accuracy(rtol: float, alpha, gamma, end: str) -> float:
+def plain_accuracy(problem, rtol: float, end: str) -> float:
     """collide's stated relative accuracy at ``rtol`` before conditioning."""
-    factor, floor = plain_factor_floor(alpha, gamma, end)
+    factor, floor = plain_factor_floor(problem, end)
     return factor * rtol + floor
 
 
-def conditioning(alpha, gamma, end: str, eps, omega) -> np.ndarray:
+def conditioning(problem, end: str, eps, omega) -> np.ndarray:
     """The factor by which a double-precision integration's relative error in eps grows under the
     overlap rule near a sticking boundary (STICK_CONDITION) and near the elastic limit
     (ELASTIC_START); 1 elsewhere. It depends on the answer, so a bound stated with it is known
     after the evaluation (fast.ladder checks it then; collide states it)."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     e = np.maximum(np.asarray(eps, dtype=float), TINY)
     if end_rule(end) != "overlap" or ex.alpha <= ex.gamma:
         return np.ones_like(e)

@@ -35,7 +35,7 @@ def rebound_start(ex, x_c, eps):
     return x_c * eps ** (-1.0 / float(ex.gamma + 1))
 
 
-def exact_omega_tilde(alpha, gamma, omegas, *, rtol: float = 1e-12) -> dict:
+def exact_omega_tilde(problem, omegas, *, rtol: float = 1e-12) -> dict:
     """The true connection from the reference integrator.
 
     Omega~ = Omega eps^((alpha-1-2gamma)/(gamma+1)) (the rebound speed g~ = eps g put into the
@@ -44,9 +44,9 @@ def exact_omega_tilde(alpha, gamma, omegas, *, rtol: float = 1e-12) -> dict:
     """
     from .collision import collide_many
 
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     omegas = np.asarray(omegas, dtype=float)
-    res = collide_many(ex, None, omegas, rtol=rtol)
+    res = collide_many(ex, omegas, rtol=rtol)
     eps = res["eps"]
     return {"omega": omegas, "omega_tilde": rebound_omega(ex, omegas, eps), "eps": eps, "x_c": res["x_c"],
             "x_tilde_c": rebound_start(ex, res["x_c"], eps), "tau_b": res["tau_b"],
@@ -96,9 +96,9 @@ def fit_quadratic(omegas, omega_tilde) -> FitResult:
                      float(np.max(np.abs(resid / y))))
 
 
-def fit_connection(alpha, gamma, omegas, *, rtol: float = 1e-12) -> FitResult:
+def fit_connection(problem, omegas, *, rtol: float = 1e-12) -> FitResult:
     """Fit c0-c2 to the exact Omega~(Omega) at the given Omegas (>= 4 of them)."""
-    exact = exact_omega_tilde(alpha, gamma, omegas, rtol=rtol)
+    exact = exact_omega_tilde(problem, omegas, rtol=rtol)
     return fit_quadratic(exact["omega"], exact["omega_tilde"])
 
 
@@ -108,7 +108,7 @@ def omega_tilde_from_c(omega, c) -> np.ndarray:
     return sum(float(ci) * omega ** i for i, ci in enumerate(c))
 
 
-def eps_from_connection(alpha, gamma, omega, c):
+def eps_from_connection(problem, omega, c):
     """eps = (Omega~/Omega)^((gamma+1)/(alpha-1-2gamma)) with Omega~ = c0 + c1 Omega + c2 Omega^2.
 
     Undefined (ParameterError) when alpha - 1 - 2 gamma = 0: then Omega~ = Omega whatever eps is.
@@ -118,7 +118,7 @@ def eps_from_connection(alpha, gamma, omega, c):
     Omega~ < Omega for k < 0 (the paper's case, k = -1/2) and where Omega~ > Omega for k > 0;
     :func:`connection_validity` gives those Omega intervals for a set of c's.
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     k = ex.omega_exponent
     if k == 0:
         raise ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}",
@@ -131,13 +131,13 @@ def eps_from_connection(alpha, gamma, omega, c):
     return float(out) if out.ndim == 0 else out
 
 
-def connection_validity(alpha, gamma, c) -> dict:
+def connection_validity(problem, c) -> dict:
     """Omega > 0 intervals where Omega~ = sum c_i Omega^i gives no eps (Omega~ <= 0) or eps > 1.
 
     Returns {"omega_tilde_nonpositive": [(lo, hi), ...], "eps_above_one": [(lo, hi), ...]}, from the
     real positive roots of the polynomials (hi = inf for an unbounded interval).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     k = ex.omega_exponent
     if k == 0:
         raise ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}",
@@ -197,7 +197,7 @@ class RetraceResult:
     tau_error: float
 
 
-def retrace(alpha, gamma, omega, *, rtol: float = 1e-12, samples: int = 201) -> RetraceResult:
+def retrace(problem, omega, *, rtol: float = 1e-12, samples: int = 201) -> RetraceResult:
     """Integrate the inverse collision from the forward end state and compare trajectories.
 
     Change of variables (derived from the physical scaling xi = A x, t = B tau with
@@ -212,9 +212,9 @@ def retrace(alpha, gamma, omega, *, rtol: float = 1e-12, samples: int = 201) -> 
     """
     from .collision import collide, inverse_collide
 
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     omega = require_positive_finite("omega", omega)
-    fwd = collide(ex, None, omega, rtol=rtol)
+    fwd = collide(ex, omega, rtol=rtol)
     gp1 = float(ex.gamma + 1)
     s = fwd.eps ** (1.0 / gp1)
     omega_t = rebound_omega(ex, omega, fwd.eps)
@@ -223,8 +223,8 @@ def retrace(alpha, gamma, omega, *, rtol: float = 1e-12, samples: int = 201) -> 
     tau = np.linspace(0.0, fwd.tau_c, samples)
     tau_t = (fwd.tau_c - tau) * s ** float(ex.gamma)  # decreasing in tau
     order = np.argsort(tau_t)
-    inv = inverse_collide(ex, None, omega_t, x_start, rtol=rtol, t_eval=tau_t[order])
-    fwd_traj = collide(ex, None, omega, rtol=rtol, t_eval=tau).trajectory
+    inv = inverse_collide(ex, omega_t, x_start, rtol=rtol, t_eval=tau_t[order])
+    fwd_traj = collide(ex, omega, rtol=rtol, t_eval=tau).trajectory
     x_fwd = np.full(tau.shape, np.nan)
     x_fwd[: fwd_traj.x.size] = fwd_traj.x
     x_ret = np.full(tau.shape, np.nan)

@@ -71,7 +71,7 @@ TIME_RTOL = 1.2e-14
 _LOG_TINY = -math.log(sys.float_info.min)
 
 
-def in_family(alpha, gamma=None) -> bool:
+def in_family(problem) -> bool:
     """Whether alpha = 2 gamma + 1, the family whose collisions are the linear dashpot's.
 
     Parameters
@@ -87,22 +87,22 @@ def in_family(alpha, gamma=None) -> bool:
 
     Examples
     --------
-    >>> in_family("3/2", "1/4"), in_family(1, 0), in_family("3/2", "1/2")
+    >>> in_family(("3/2", "1/4")), in_family((1, 0)), in_family(("3/2", "1/2"))
     (True, True, False)
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     return ex.alpha == 2 * ex.gamma + 1
 
 
-def _family(alpha, gamma) -> Exponents:
-    ex = as_exponents(alpha, gamma)
+def _family(problem) -> Exponents:
+    ex = as_exponents(problem)
     if ex.alpha != 2 * ex.gamma + 1:
         raise ParameterError("alpha", str(ex.alpha), f"must be 2 gamma + 1 = {2 * ex.gamma + 1} for the exact "
                                                      "family (restitution.core.exact_family)")
     return ex
 
 
-def sticking_threshold(alpha, gamma=None) -> Fraction:
+def sticking_threshold(problem) -> Fraction:
     """The Omega at or below which the bodies never separate under the overlap rule: 1/(4 (gamma+1)).
 
     There the equivalent dashpot, at (gamma+1) Omega <= 1/4, is overdamped or critical and never
@@ -125,12 +125,12 @@ def sticking_threshold(alpha, gamma=None) -> Fraction:
 
     Examples
     --------
-    >>> sticking_threshold("3/2", "1/4")
+    >>> sticking_threshold(("3/2", "1/4"))
     Fraction(1, 5)
-    >>> sticking_threshold(1, 0)
+    >>> sticking_threshold((1, 0))
     Fraction(1, 4)
     """
-    ex = _family(alpha, gamma)
+    ex = _family(problem)
     return Fraction(1, 4) / (ex.gamma + 1)
 
 
@@ -181,7 +181,7 @@ def eps_bound(eps) -> np.ndarray:
     return np.array([_eps_bound(float(x)) for x in e.ravel()]).reshape(e.shape)
 
 
-def exact_eps(alpha, gamma, omega, end: str = "force") -> np.ndarray:
+def exact_eps(problem, omega, end: str = "force") -> np.ndarray:
     """eps of the family alpha = 2 gamma + 1 at each Omega, from the dashpot at (gamma+1) Omega.
 
     Parameters
@@ -210,13 +210,13 @@ def exact_eps(alpha, gamma, omega, end: str = "force") -> np.ndarray:
     Examples
     --------
     >>> from restitution.core.dashpot import dashpot_collision
-    >>> e = exact_eps("2", "1/2", [0.3, 2.0])
+    >>> e = exact_eps(("2", "1/2"), [0.3, 2.0])
     >>> bool(e[1] == dashpot_collision(3.0).eps)
     True
-    >>> float(exact_eps("3/2", "1/4", 0.3, end="overlap")) < float(exact_eps("3/2", "1/4", 0.3))
+    >>> float(exact_eps(("3/2", "1/4"), 0.3, end="overlap")) < float(exact_eps(("3/2", "1/4"), 0.3))
     True
     """
-    ex = _family(alpha, gamma)
+    ex = _family(problem)
     rule = end_rule(end)
     om = np.asarray(omega, dtype=float)
     # the dashpot's contact time directly (exact_collision's eps bit for bit, without its dataclass)
@@ -230,19 +230,19 @@ def _dashpot_tau_c(ex: Exponents, omega: float, rule: str) -> float:
     if rule == "overlap":
         # at or below the threshold, or at the double nearest it (so "0.2" for 1/5 refuses, as the
         # ladder's core.collision.stick_bound does, though that double lies 1e-17 above 1/5)
-        if not z > 0 or omega <= stick_bound(ex, None):
-            raise StickError.at(omega, stick_reason(ex, None))
+        if not z > 0 or omega <= stick_bound(ex):
+            raise StickError.at(omega, stick_reason(ex))
         t_c = math.pi / math.sqrt(z)
     else:
         t_c = contact_times(wp)[1]
     if 0.5 * t_c > _LOG_TINY:
         raise UnresolvedError("omega", omega, f"eps = exp(-{0.5 * t_c:.6g}) lies below the smallest normal double: "
                                               "Omega is this close above the overlap rule's sticking threshold "
-                                              f"{float(sticking_threshold(ex, None)):.6g}")
+                                              f"{float(sticking_threshold(ex)):.6g}")
     return t_c
 
 
-def exact_collision(alpha, gamma, omega, end: str = "force", *, times: bool = True) -> Collision:
+def exact_collision(problem, omega, end: str = "force", *, times: bool = True) -> Collision:
     """The forward collision of the family alpha = 2 gamma + 1 in closed form (tau by quadrature).
 
     eps and 1 - eps (no cancellation) are the dashpot's at (gamma+1) Omega; x_b and x_c its S_b and
@@ -279,17 +279,17 @@ def exact_collision(alpha, gamma, omega, end: str = "force", *, times: bool = Tr
 
     Examples
     --------
-    >>> c = exact_collision("3/2", "1/4", 0.7)
+    >>> c = exact_collision(("3/2", "1/4"), 0.7)
     >>> round(c.eps, 12), round(c.tau_c, 10), c.end
     (0.279827939466, 2.972394226, 'force')
-    >>> exact_collision("3/2", "1/4", 0.7, end="overlap").end
+    >>> exact_collision(("3/2", "1/4"), 0.7, end="overlap").end
     'separation'
-    >>> exact_collision("3/2", "1/4", 0.2, end="overlap")  # doctest: +ELLIPSIS
+    >>> exact_collision(("3/2", "1/4"), 0.2, end="overlap")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
     restitution.core.collision.StickError: omega = 0.2: under the overlap rule contact never ends here: ...
     """
-    ex = _family(alpha, gamma)
+    ex = _family(problem)
     omega = require_positive_finite("omega", omega)
     rule = end_rule(end)
     _dashpot_tau_c(ex, omega, rule)     # refuses a sticking or an eps below doubles first

@@ -152,7 +152,14 @@ class Exponents:
 
 
 def as_exponents(alpha, gamma=None) -> Exponents:
-    """Accept an Exponents object, or anything parse() takes."""
-    if isinstance(alpha, Exponents) and gamma is None:
-        return alpha
+    """The exponents of a problem: an Exponents, a Problem (its ``ex``; read by attribute, as this
+    module sits below core.problem), an ``(alpha, gamma)`` pair, or alpha and gamma as parse()
+    takes them."""
+    if gamma is None:
+        if isinstance(alpha, Exponents):
+            return alpha
+        if isinstance(getattr(alpha, "ex", None), Exponents):
+            return alpha.ex
+        if isinstance(alpha, tuple) and len(alpha) == 2:
+            return Exponents.parse(*alpha)
     return Exponents.parse(alpha, gamma)

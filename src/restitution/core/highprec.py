@@ -461,7 +461,7 @@ def _check_omega(omega):
 _COMPARED = ("eps", "tau_b", "x_b", "tau_c")
 
 
-def reference_collision(alpha, gamma, omega, *, digits: int = 30, end: str = "force") -> HighPrecisionCollision:
+def reference_collision(problem, omega, *, digits: int = 30, end: str = "force") -> HighPrecisionCollision:
     """Collision quantities to about ``digits`` significant digits.
 
     ``alpha`` and ``gamma`` are anything :class:`~restitution.core.exponents.Exponents`
@@ -473,7 +473,7 @@ def reference_collision(alpha, gamma, omega, *, digits: int = 30, end: str = "fo
     Runs the integration twice (see module docstring), so it costs about three times
     one run. Raises ParameterError for bad inputs.
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     _check_omega(omega)
     integer_in("digits", digits, _MIN_DIGITS, _MAX_DIGITS)
     overlap = end_rule(end) == "overlap"

@@ -51,6 +51,16 @@ class Material:
         object.__setattr__(self, "D1", require_positive_finite("D1", D1))
         object.__setattr__(self, "D2", require_positive_finite("D2", D2))
 
+    @classmethod
+    def of(cls, problem, D1, D2) -> "Material":
+        """The material for a problem's exponents (a Problem, an Exponents or an (alpha, gamma) pair)."""
+        ex = as_exponents(problem)
+        out = cls.__new__(cls)
+        object.__setattr__(out, "exponents", ex)
+        object.__setattr__(out, "D1", require_positive_finite("D1", D1))
+        object.__setattr__(out, "D2", require_positive_finite("D2", D2))
+        return out
+
     @property
     def alpha(self):
         return self.exponents.alpha

@@ -98,13 +98,13 @@ def _integrate(a: float, g: float, rtol: float, shift: float) -> float:
 
 
 @lru_cache(maxsize=64)
-def inner_rebound_speed(alpha, gamma) -> tuple[float, float]:
+def inner_rebound_speed(problem) -> tuple[float, float]:
     """(C, C_error): the speed at y = 0 of the creeping solution of y'' + y^alpha + y^gamma y' = 0.
 
     C_error is the largest change of C under a hundredfold looser tolerance or a start moved out by
     a factor 10 in e^(m s0) (both far larger perturbations than the integration's own error).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     a, g = float(ex.alpha), float(ex.gamma)
     if not a < 2.0 * g + 1.0:
         raise ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}",
@@ -163,17 +163,17 @@ class OverlapLimit:
                 "speed_D1_power": str(p1), "speed_D2_power": str(p2)}
 
 
-def overlap_limit(alpha, gamma) -> OverlapLimit:
+def overlap_limit(problem) -> OverlapLimit:
     """The overlap rule's small-Omega law for gamma <= alpha < 2 gamma + 1 (alpha < gamma: the rules coincide,
     use asymptotics.viscous_limit)."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     a, g = ex.alpha, ex.gamma
     if not g <= a < 2 * g + 1:
         raise ParameterError("alpha, gamma", f"{a}, {g}",
                              "the overlap-rule creep law is for gamma <= alpha < 2 gamma + 1 (alpha < gamma: "
                              "both end rules coincide, see viscous_limit; alpha >= 2 gamma + 1: the bodies "
                              "can stick)")
-    C, err = inner_rebound_speed(a, g)
+    C, err = inner_rebound_speed((a, g))
     af, gf = float(a), float(g)
     X = (gf + 1.0) ** (1.0 / (gf + 1.0))
     m = 2.0 * gf + 1.0 - af

@@ -240,13 +240,19 @@ class PerturbationSeries:
 
 def perturbation_series(alpha, gamma, omega_order: int = 4, max_power=11,
                         direction: str = "forward", progress=None) -> PerturbationSeries:
+    """The public spelling of :func:`series_for`: the exponents as two numbers (``restitution.perturbation_series``)."""
+    return series_for((alpha, gamma), omega_order, max_power, direction, progress)
+
+
+def series_for(problem, omega_order: int = 4, max_power=11,
+               direction: str = "forward", progress=None) -> PerturbationSeries:
     """Exact series of the forward or inverse collision up to Omega^omega_order and tau^max_power.
 
     The cost grows about as the third to fourth power of ``max_power`` (the rationals grow too) and
     linearly in ``omega_order``: the largest accepted sizes take minutes. ``progress(done, total)``,
     if given, is called after each power of tau is derived (then the result is not kept for reuse).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     if direction not in DIRECTIONS:
         raise ParameterError("direction", direction, "must be 'forward' or 'inverse'")
     integer_in("omega_order", omega_order, 0, 64)

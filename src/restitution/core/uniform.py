@@ -138,25 +138,25 @@ def _no_form(ex, why: str) -> ParameterError:
     return ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}", why)
 
 
-def skeleton(alpha, gamma, end: str = "force") -> Skeleton | OverlapSkeleton:
+def skeleton(problem, end: str = "force") -> Skeleton | OverlapSkeleton:
     """The fit-free part of the form for ``end``; ParameterError (saying why) where there is no form."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     if not ex.alpha > ex.gamma:
         why = ("alpha = gamma has an exact closed form (restitution.core.asymptotics.equal_exponents_eps)"
                if ex.alpha == ex.gamma else
                "for alpha < gamma the viscous limit's first correction is not known in closed form")
         raise _no_form(ex, f"the uniform form needs alpha > gamma: {why}")
-    e = asy.elastic_limit(ex.alpha, ex.gamma)
+    e = asy.elastic_limit(ex)
     A = e.A
     if end == "overlap":
         if not ex.alpha < 2 * ex.gamma + 1:
             raise _no_form(ex, "the overlap rule's uniform form needs alpha < 2 gamma + 1 (otherwise the bodies "
                                "stick at small Omega)")
-        lim = overlap_limit(ex.alpha, ex.gamma)
+        lim = overlap_limit(ex)
         lnb = (math.log(lim.C) + math.log(e.C1)) / (lim.k - A)
         b = math.exp(lnb)
         return OverlapSkeleton(A, lim.k, b, math.exp(lim.k * lnb - math.log(lim.C)), lim.decay * b)
-    v = asy.viscous_limit(ex.alpha, ex.gamma)
+    v = asy.viscous_limit(ex)
     k = v.k
     b = (k * e.C1) ** (1.0 / (1.0 - A))
     c3 = v.c_const + v.c_log * math.log(b) - (1.0 - A) * b - k
@@ -271,7 +271,7 @@ class UniformForm:
             raise ValueError("uniform form version mismatch")
         ex = as_exponents(d["alpha"], d["gamma"])
         end = d.get("end", "force")
-        sk = skeleton(ex.alpha, ex.gamma, end)
+        sk = skeleton(ex, end)
         stored = type(sk)(*(float(d[f.name]) for f in fields(sk)))
         if stored != sk:   # the skeleton is derived, never read: a stored one must agree with it
             raise ValueError("stored skeleton constants differ from the derived ones")
@@ -320,12 +320,12 @@ def _shapes(sk, end: str) -> list[tuple[float, int, int, float]]:
     return [(s, m0, m1, 0.0) for s, m0, m1 in SHAPES(sk.A)]
 
 
-def fit_uniform(alpha, gamma, omega, eps, one_minus_eps, train, select, end: str = "force") -> UniformForm:
+def fit_uniform(problem, omega, eps, one_minus_eps, train, select, end: str = "force") -> UniformForm:
     """Fit the form for ``end`` to reference values: coefficients on ``train`` (a boolean mask), the
     shape chosen by the largest relative error (eps, and 1 - eps for Omega >= 1) on ``select``. The
     returned form's bounds are still unset (they come from a third set of points)."""
-    ex = as_exponents(alpha, gamma)
-    sk = skeleton(ex.alpha, ex.gamma, end)
+    ex = as_exponents(problem)
+    sk = skeleton(ex, end)
     om = np.asarray(omega, dtype=float)
     eps = np.asarray(eps, dtype=float)
     ome = np.asarray(one_minus_eps, dtype=float)

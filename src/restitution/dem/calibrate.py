@@ -51,15 +51,15 @@ class Calibrated:
                                                                       if k not in ("D2", "end")}}
 
 
-def _eps_or_zero(alpha, gamma, end: str, omega: float, rtol: float) -> float:
+def _eps_or_zero(problem, end: str, omega: float, rtol: float) -> float:
     try:
-        return contact_eps(alpha, gamma, end, omega, rtol)
+        return contact_eps(problem, end, omega, rtol)
     except StickError:
         return 0.0   # the bodies never separate: the limit of eps from above
 
 
 def _eps_at(ex, end: str, log_omega: float, rtol: float) -> float:
-    return _eps_or_zero(ex, None, end, 10.0 ** log_omega, rtol)
+    return _eps_or_zero(ex, end, 10.0 ** log_omega, rtol)
 
 
 def _omega_for(ex, end: str, target: float, rtol: float) -> float:
@@ -132,4 +132,4 @@ def calibrate(alpha, gamma, *, D1, eps, g, end: str = "force", rtol: float = 1e-
 
 
 def _safe_eps(contact: Contact, g: float, rtol: float) -> float:
-    return _eps_or_zero(contact.alpha, contact.gamma, contact.end, contact.omega(g), rtol)
+    return _eps_or_zero((contact.alpha, contact.gamma), contact.end, contact.omega(g), rtol)

@@ -90,7 +90,7 @@ def _fitted_c(ex: Exponents, progress) -> tuple:
     lo, hi, n = FIT_OMEGA
     om = np.geomspace(lo, hi, n)
     try:
-        eps = reference_eps(ex, None, om, 1e-13)
+        eps = reference_eps(ex, om, 1e-13)
         fit = fit_quadratic(om, rebound_omega(ex, om, eps))
     except Exception as exc:  # noqa: BLE001 - a rung that cannot be built is reported, not fatal
         raise RelationUnavailable(f"fit failed: {exc}") from exc
@@ -150,7 +150,7 @@ def measure_relation(master: MasterCurve, d: dict) -> Calibration:
     if len(c) != 3:
         raise ValueError("a relation has three coefficients")
     ex = as_exponents(master.alpha, master.gamma)
-    err = _rel_err(eps_from_connection(ex, None, 10.0 ** master.grid_log10_omega, c), master.grid_eps)
+    err = _rel_err(eps_from_connection(ex, 10.0 ** master.grid_log10_omega, c), master.grid_eps)
     return Calibration(master, {name: err}, {name: {"c": c, "source": d["source"]}}, {})
 
 
@@ -165,16 +165,16 @@ def merged(parts) -> Calibration:
     return out
 
 
-def build_calibration(alpha, gamma, settings: MasterSettings | None = None, progress=None,
+def build_calibration(problem, settings: MasterSettings | None = None, progress=None,
                       relations=(FITTED_C,)) -> Calibration:
     """Everything at once, without a cache (the benchmark times it): the master curve with its
     mpmath check (``settings.n_highprec`` points), each relation rung and the uniform form (none for
     alpha = 2 gamma + 1, whose exact-family rung answers exactly)."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     say = progress or (lambda m: None)
-    master = build_master(ex, None, settings, progress=say)
+    master = build_master(ex, settings, progress=say)
     cal = merged([measure_master(master), *(measure_relation(master, relation_dict(ex, r, say)) for r in relations)])
     # alpha = 2 gamma + 1 needs no fitted form: the exact-family rung answers to rounding
     fitted = ex.alpha > ex.gamma and ex.alpha != 2 * ex.gamma + 1
-    cal.uniform = build_uniform(ex, None, say) if fitted else None
+    cal.uniform = build_uniform(ex, say) if fitted else None
     return cal

@@ -192,7 +192,7 @@ def _spot_checks_pass(ex: Exponents, m: MasterCurve) -> bool:
     """Every panel of the curve agrees with a fresh integration at one point, to its own bound (plus
     the integrator's): the sealed digest catches a damaged file, this a wrong curve (a few ms)."""
     om = np.exp(m.s0 + (np.arange(m.coef.shape[0]) + SPOT_CHECK_AT) * m.width)
-    ref = reference_eps(ex, None, om, 1e-13)
+    ref = reference_eps(ex, om, 1e-13)
     err = np.abs(m.eps(om) - ref) / ref
     return bool(np.all(err <= 10.0 * (m.bound_at(om) + integrator_bound(1e-13, ex))))
 
@@ -203,7 +203,7 @@ def _uniform_checks_pass(ex: Exponents, u: UniformForm, end: str) -> bool:
     if (u.alpha, u.gamma, u.end) != (ex.alpha, ex.gamma, end) or not 0 < u.bound_eps < 1:
         return False
     om = np.geomspace(1e-3 if end == "overlap" else 1e-7, 1e7, 8) * 1.37
-    ref = reference_eps(ex, None, om, 1e-13, end)
+    ref = reference_eps(ex, om, 1e-13, end)
     return bool(np.all(np.abs(u.eps(om) / ref - 1) <= u.bound_eps))
 
 
@@ -227,9 +227,9 @@ class _Build:
 class Ladder:
     """The ladder for one pair of exponents (and one calibration setting / cache directory)."""
 
-    def __init__(self, alpha, gamma, *, settings: MasterSettings | None = None, cache_dir=None,
+    def __init__(self, problem, *, settings: MasterSettings | None = None, cache_dir=None,
                  stream=None, relations: tuple[Relation, ...] = (FITTED_C,)):
-        self.ex = as_exponents(alpha, gamma)
+        self.ex = as_exponents(problem)
         self.relations = tuple(relations)
         self.rungs = ladder_rungs(self.relations)
         self.rung_names = rung_names(self.relations)
@@ -264,16 +264,16 @@ class Ladder:
         if name == MASTER:
             ms = self.master_settings
             return _Build(f"master-{pair}-v{MASTER_VERSION}-{_digest(ms.key())}",
-                          lambda: build_master(ex, None, ms, progress=self._progress).as_dict(), self._master_valid,
+                          lambda: build_master(ex, ms, progress=self._progress).as_dict(), self._master_valid,
                           lambda d: measure_master(MasterCurve.from_dict(d)), f"the master curve for {for_pair}")
         if name == OVERLAP_CURVE:
             return _Build(f"overlap-curve-{pair}-v{OVERLAP_CURVE_VERSION}",
-                          lambda: build_overlap_curve(ex, None, self._progress).as_dict(), self._overlap_valid,
+                          lambda: build_overlap_curve(ex, self._progress).as_dict(), self._overlap_valid,
                           OverlapCurve.from_dict, f"the overlap rule's master curve for {for_pair}")
         if name in (UNIFORM, UNIFORM_OVERLAP):
             end = "overlap" if name == UNIFORM_OVERLAP else "force"
             return _Build(f"uniform-{'overlap-' if end == 'overlap' else ''}{pair}-v{UNIFORM_VERSION}",
-                          lambda: build_uniform(ex, None, self._progress, end).as_dict(),
+                          lambda: build_uniform(ex, self._progress, end).as_dict(),
                           lambda d: self._uniform_valid(d, end), UniformForm.from_dict,
                           f"the {end} rule's uniform closed form for {for_pair}")
         if name == MPMATH:
@@ -329,7 +329,7 @@ class Ladder:
             pts, hp = np.asarray(d["omega"], float), np.asarray(d["eps"], float)
             if (d["alpha"], d["gamma"]) != (str(self.ex.alpha), str(self.ex.gamma)) or pts.shape != hp.shape:
                 return False
-            ref = reference_eps(self.ex, None, pts, 1e-13)
+            ref = reference_eps(self.ex, pts, 1e-13)
         except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
             return False
         return bool(np.all(np.abs(hp / ref - 1) <= 10.0 * integrator_bound(1e-13, self.ex)))
@@ -503,9 +503,9 @@ class Ladder:
         """Where sticking is proved without integrating (core.collision.stick_bound) no method runs:
         the integrators would refuse as well, but below the reference's range only the mpmath rung is
         left, which cannot prove sticking and would follow the creep for hours."""
-        stuck = flat[flat <= stick_bound(self.ex, None)]
+        stuck = flat[flat <= stick_bound(self.ex)]
         if stuck.size:
-            raise StickError.at(float(stuck[0]), stick_reason(self.ex, None))
+            raise StickError.at(float(stuck[0]), stick_reason(self.ex))
 
     def _make_builds(self, quotes, flat, tol: float, end: str, method, build) -> list[Quote]:
         """Make the builds the request wants, cheapest first, quoting again after each: the first
@@ -580,7 +580,7 @@ _LADDERS: dict = {}
 def _ladder(ex: Exponents, relations) -> Ladder:
     key = (ex.alpha, ex.gamma, _cache.cache_dir(), tuple(relations))
     if key not in _LADDERS:
-        _LADDERS[key] = Ladder(ex, None, relations=relations)
+        _LADDERS[key] = Ladder(ex, relations=relations)
     return _LADDERS[key]
 
 
@@ -614,6 +614,6 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
         from ..core.model import Material
         gs = _omega_array(g, "g")
         with np.errstate(over="ignore", under="ignore"):
-            om = np.asarray(Material(ex, None, D1, D2).omega(gs), dtype=float).reshape(gs.shape)
+            om = np.asarray(Material.of(ex, D1, D2).omega(gs), dtype=float).reshape(gs.shape)
         om = _omega_array(om, "omega")  # Omega itself may over/underflow for extreme inputs
     return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build, end=end, cached=cached)

@@ -46,7 +46,7 @@ __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "r
 #: Bumped whenever the construction changes, so cached curves of an older kind are rebuilt.
 MASTER_VERSION = 2
 
-def stiff_omega_min(alpha, gamma, end: str = "force") -> float:
+def stiff_omega_min(problem, end: str = "force") -> float:
     """Smallest Omega the explicit compiled integrator's eps is used for.
 
     For alpha > gamma contact ends a few relaxation times after maximum compression and nothing is
@@ -59,7 +59,7 @@ def stiff_omega_min(alpha, gamma, end: str = "force") -> float:
     creeps for every pair (about 0.4/Omega steps for alpha = 3/2, gamma = 1/2: 14 ms at 1e-5, 0.2 s
     at 1e-6).
     """
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     return 1e-300 if ex.alpha > ex.gamma and end == "force" else 1e-5
 
 
@@ -99,10 +99,10 @@ class MasterSettings:
 
 
 # ------------------------------------------------------------------------------ reference values
-def reference_eps(alpha, gamma, omegas, rtol: float = 1e-14, end: str = "force") -> np.ndarray:
+def reference_eps(problem, omegas, rtol: float = 1e-14, end: str = "force") -> np.ndarray:
     """eps from the exact closed form (alpha = gamma) or the compiled integrator (otherwise), for
     the end rule ``end``; under "overlap" a proved sticking raises core.collision.StickError."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     om = np.asarray(omegas, dtype=float)
     if ex.alpha == ex.gamma:
         return asy.equal_exponents_eps(om)
@@ -329,24 +329,24 @@ def _nan_to_none(x):
     return None if (isinstance(x, float) and not math.isfinite(x)) else x
 
 
-def build_master(alpha, gamma, settings: MasterSettings | None = None, *, progress=None) -> MasterCurve:
+def build_master(problem, settings: MasterSettings | None = None, *, progress=None) -> MasterCurve:
     """Build the master curve (see the module docstring). ``progress``: callable(str) or None."""
     s = settings or MasterSettings()
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     say = progress or (lambda msg: None)
     rng = np.random.default_rng(s.seed)
 
-    lo10 = max(s.log10_omega_min, math.log10(stiff_omega_min(ex, None)))
+    lo10 = max(s.log10_omega_min, math.log10(stiff_omega_min(ex)))
     hi10 = s.log10_omega_max
     if not lo10 < hi10 - 1:
         raise ParameterError("log10_omega_min", s.log10_omega_min, "must be below log10_omega_max - 1")
     grid10 = np.round(np.arange(lo10, hi10 + 1e-9, s.grid_step), 10)
     grid = 10.0 ** grid10
     say(f"reference values on {grid.size} grid points")
-    ref = reference_eps(ex, None, grid, s.rtol)
+    ref = reference_eps(ex, grid, s.rtol)
 
-    V = asy.viscous_limit(ex, None)
-    E = asy.elastic_limit(ex, None)
+    V = asy.viscous_limit(ex)
+    E = asy.elastic_limit(ex)
     vb = _fit_viscous_bound(V, grid, ref)
     eb = _fit_elastic_bound(E, grid, ref)
 
@@ -367,7 +367,7 @@ def build_master(alpha, gamma, settings: MasterSettings | None = None, *, progre
     x = np.cos(np.pi * (k + 0.5) / (n + 1))  # Chebyshev points of the first kind
     nodes = s0 + (np.arange(npan)[:, None] + (x[None, :] + 1.0) / 2.0) * s.width
     say(f"{npan} panels x {n + 1} nodes on Omega in [{omega_lo:.3g}, {math.exp(s0 + npan * s.width):.3g}]")
-    vals = np.log(reference_eps(ex, None, np.exp(nodes.ravel()), s.rtol)).reshape(npan, n + 1)
+    vals = np.log(reference_eps(ex, np.exp(nodes.ravel()), s.rtol)).reshape(npan, n + 1)
     coef = np.array([cheb.chebfit(x, v, n) for v in vals])
 
     curve = MasterCurve(ex.alpha, ex.gamma, s0, s.width, coef, V, E, vb, eb, math.nan, s, {},
@@ -375,7 +375,7 @@ def build_master(alpha, gamma, settings: MasterSettings | None = None, *, progre
 
     # ---- held-out errors against the integrator
     held = np.exp(s0 + (np.arange(npan)[:, None] + rng.uniform(0, 1, (npan, s.heldout_per_panel))) * s.width).ravel()
-    held_ref = reference_eps(ex, None, held, s.rtol)
+    held_ref = reference_eps(ex, held, s.rtol)
     fit_err = float(np.max(np.abs(curve.eps(held) / held_ref - 1.0)))
     inside = (grid >= curve.omega_lo) & (grid <= curve.omega_hi)
     grid_err_inside = float(np.max(np.abs(curve.eps(grid[inside]) / ref[inside] - 1.0)))
@@ -413,7 +413,7 @@ def mpmath_check(curve: MasterCurve, n: int, digits: int, seed: int, progress=No
     if ex.alpha <= ex.gamma:
         pts = np.maximum(pts, 1e-3)  # the mpmath reference is explicit too: keep it cheap
     (progress or (lambda m: None))(f"checking against the mpmath reference at {pts.size} points")
-    hp = [float(reference_collision(ex, None, float(w), digits=digits).eps) for w in pts]
+    hp = [float(reference_collision(ex, float(w), digits=digits).eps) for w in pts]
     return {"alpha": str(ex.alpha), "gamma": str(ex.gamma), "digits": digits, "omega": pts.tolist(), "eps": hp}
 
 
@@ -426,7 +426,7 @@ def widen_by_check(curve: MasterCurve, check: dict) -> None:
     err = np.abs(curve.eps(pts) / hp - 1.0)
     inside = (pts >= curve.omega_lo) & (pts <= curve.omega_hi)
     worst = float(np.max(err[inside])) if np.any(inside) else 0.0
-    i_err = float(np.max(np.abs(reference_eps(ex, None, pts, curve.settings.rtol) / hp - 1.0)))
+    i_err = float(np.max(np.abs(reference_eps(ex, pts, curve.settings.rtol) / hp - 1.0)))
     if ex.alpha != ex.gamma:
         curve.bound_inside = max(curve.bound_inside, 2.0 * (curve.checks.get("fit_err_heldout", 0.0) + i_err))
     curve.bound_inside = float(max(curve.bound_inside, 2.0 * worst))

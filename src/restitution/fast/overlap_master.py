@@ -48,21 +48,21 @@ SEED = 20261125
 
 def _sticks(ex, w: float) -> bool:
     try:
-        reference_eps(ex, None, [w], 1e-10, "overlap")
+        reference_eps(ex, [w], 1e-10, "overlap")
     except (StickError, ArithmeticError):   # the integrator gives up within ~1e-8 of the boundary
         return True
     return False
 
 
-def sticking_boundary(alpha, gamma, lo: float = OMEGA_LO, hi: float = OMEGA_HI) -> float:
+def sticking_boundary(problem, lo: float = OMEGA_LO, hi: float = OMEGA_HI) -> float:
     """The Omega below which the bodies stick under the overlap rule, to 1e-6 relative, searched in
     [lo, hi]: 0 where they never stick (alpha < 2 gamma + 1), ``lo`` when they separate at lo
     already (the boundary, if any, lies below). Sticking is the integrator's proof (END_STUCK)."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     if ex.alpha < 2 * ex.gamma + 1:
         return 0.0
     if ex.alpha == 2 * ex.gamma + 1:
-        return stick_bound(ex, None)   # the whole boundary there, proved in core.collision
+        return stick_bound(ex)   # the whole boundary there, proved in core.collision
     if not _sticks(ex, lo):
         return lo
     if _sticks(ex, hi):
@@ -103,7 +103,7 @@ class OverlapCurve(PanelRange):
         if not (np.all(np.isfinite(self.coef)) and 2.0 * nodes <= self.bound_inside < 1e-6):
             return False
         om = np.exp(self.s0 + (np.arange(self.coef.shape[0]) + SPOT_CHECK_AT) * self.width)
-        ref = reference_eps(self.alpha, self.gamma, om, NODE_RTOL, "overlap")
+        ref = reference_eps((self.alpha, self.gamma), om, NODE_RTOL, "overlap")
         return bool(np.all(np.abs(self.eps(om) / ref - 1) <= 10.0 * (self.bound_inside + nodes)))
 
     def as_dict(self) -> dict:
@@ -120,13 +120,13 @@ class OverlapCurve(PanelRange):
                    float(d["bound_inside"]), float(d["stick_below"]), d.get("checks", {}))
 
 
-def build_overlap_curve(alpha, gamma, progress=None) -> OverlapCurve:
+def build_overlap_curve(problem, progress=None) -> OverlapCurve:
     """Fit and measure the curve (see the module docstring); about a second for the paper's pair."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     if not ex.alpha > ex.gamma:
         raise ValueError("for alpha <= gamma the overlap rule is the force rule: use the force rule's master curve")
     say = progress or (lambda m: None)
-    stick = sticking_boundary(ex, None)
+    stick = sticking_boundary(ex)
     lo = OMEGA_LO if stick <= OMEGA_LO else STICK_MARGIN * stick
     s0, s1 = math.log(lo), math.log(OMEGA_HI)
     npan = int(math.ceil((s1 - s0) / WIDTH - 1e-9))
@@ -134,12 +134,12 @@ def build_overlap_curve(alpha, gamma, progress=None) -> OverlapCurve:
     x = np.cos(np.pi * (k + 0.5) / (DEGREE + 1))
     nodes = s0 + (np.arange(npan)[:, None] + (x[None, :] + 1.0) / 2.0) * WIDTH
     say(f"overlap rule: {npan} panels x {DEGREE + 1} nodes on Omega in [{lo:.3g}, {math.exp(s0 + npan * WIDTH):.3g}]")
-    vals = np.log(reference_eps(ex, None, np.exp(nodes.ravel()), NODE_RTOL, "overlap")).reshape(npan, DEGREE + 1)
+    vals = np.log(reference_eps(ex, np.exp(nodes.ravel()), NODE_RTOL, "overlap")).reshape(npan, DEGREE + 1)
     coef = np.array([cheb.chebfit(x, v, DEGREE) for v in vals])
     curve = OverlapCurve(ex.alpha, ex.gamma, s0, WIDTH, coef, math.nan, stick)
     rng = np.random.default_rng(SEED)
     held = np.exp(s0 + (np.arange(npan)[:, None] + rng.uniform(0, 1, (npan, HELDOUT_PER_PANEL))) * WIDTH).ravel()
-    ref = reference_eps(ex, None, held, NODE_RTOL, "overlap")
+    ref = reference_eps(ex, held, NODE_RTOL, "overlap")
     fit_err = float(np.max(np.abs(curve.eps(held) / ref - 1.0)))
     curve.bound_inside = float(max(2.0 * (fit_err + integrator_bound(NODE_RTOL, ex, "overlap")), 2e-14))
     curve.checks = {"fit_err_heldout": fit_err, "n_heldout": int(held.size), "n_nodes": int(nodes.size),

@@ -55,7 +55,7 @@ INTEGRATOR_BOUND_FLOOR = 5e-14
 
 
 def _integrator_factor_floor(ex, end: str) -> tuple[float, float]:
-    return plain_factor_floor(ex, None, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
+    return plain_factor_floor(ex, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
 
 
 def _rtol_for(tol: float, factor: float, floor: float) -> float:
@@ -76,11 +76,11 @@ def integrator_rtol(tol: float, ex, end: str = "force") -> float:
 
 def reference_bound(rtol: float, ex, end: str = "force") -> float:
     """The scipy reference's (core.collision.collide) bound: what collide states before conditioning."""
-    return plain_accuracy(rtol, ex, None, end)
+    return plain_accuracy(ex, rtol, end)
 
 
 def reference_rtol(tol: float, ex, end: str = "force") -> float:
-    return _rtol_for(tol, *plain_factor_floor(ex, None, end))
+    return _rtol_for(tol, *plain_factor_floor(ex, end))
 
 
 def highprec_digits(tol: float) -> int:
@@ -193,7 +193,7 @@ class Rung:
         reason = "" if math.isfinite(b) else "no finite measured error over these Omegas"
         widen = None
         if self.conditioned:
-            widen = lambda eps: float(np.max(conditioning(req.ex, None, req.end, eps, req.omega)))  # noqa: E731
+            widen = lambda eps: float(np.max(conditioning(req.ex, req.end, eps, req.omega)))  # noqa: E731
         return Quote(self.name, b, self.price(req), setting, reason,
                      run=lambda om: self.evaluate(req, built, setting, om),
                      coefficients=self.coefficients(req, built), widen=widen, exact=self.exact)

@@ -52,9 +52,9 @@ def _grid() -> np.ndarray:
     return 10.0 ** np.linspace(-9.0, 9.0, n + 1)
 
 
-def bound_points(alpha, gamma) -> np.ndarray:
+def bound_points(problem) -> np.ndarray:
     """The bound's points: log-uniform in FORM_RANGE, seeded by the exponents (same on every machine)."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     seed = [ex.alpha.numerator, ex.alpha.denominator, ex.gamma.numerator, ex.gamma.denominator]
     lo, hi = np.log10(FORM_RANGE)
     return np.sort(10.0 ** np.random.default_rng(seed).uniform(lo, hi, N_TEST))
@@ -66,10 +66,10 @@ class _References:
     def __init__(self, ex, end: str):
         self.ex, self.end, self.accuracy, self.law_checked = ex, end, REFERENCE_ACCURACY, None
         if end == "overlap":
-            lim = overlap_limit(ex.alpha, ex.gamma)
+            lim = overlap_limit(ex)
             self.law = lim.eps
             at = np.array(LAW_CHECK)
-            diff = float(np.max(np.abs(reference_eps(ex, None, at, 1e-14, end) / lim.eps(at) - 1.0)))
+            diff = float(np.max(np.abs(reference_eps(ex, at, 1e-14, end) / lim.eps(at) - 1.0)))
             if not diff <= LAW_AGREEMENT:
                 raise ArithmeticError(f"alpha={ex.alpha}, gamma={ex.gamma}: the overlap rule's limit law differs "
                                       f"from the integrator by {diff:.2g} at Omega >= {LAW_BELOW:g}")
@@ -83,7 +83,7 @@ class _References:
         """eps from the compiled integrator at rtol 1e-14 (or the law)."""
         law = self._split(om)
         eps = np.empty(om.size)
-        eps[~law] = reference_eps(self.ex, None, om[~law], 1e-14, self.end)
+        eps[~law] = reference_eps(self.ex, om[~law], 1e-14, self.end)
         if law.any():
             eps[law] = self.law(om[law])
         return eps
@@ -92,7 +92,7 @@ class _References:
         """eps and 1 - eps from the scipy reference (1 - eps from the dissipated energy) or the law."""
         law = self._split(om)
         eps, ome = np.empty(om.size), np.empty(om.size)
-        runs = [collide(self.ex, None, float(w), rtol=1e-12, end=self.end) for w in om[~law]]
+        runs = [collide(self.ex, float(w), rtol=1e-12, end=self.end) for w in om[~law]]
         eps[~law] = [r.eps for r in runs]
         ome[~law] = [r.one_minus_eps for r in runs]
         if law.any():
@@ -101,9 +101,9 @@ class _References:
         return eps, ome
 
 
-def build_uniform(alpha, gamma, progress=None, end: str = "force") -> UniformForm:
+def build_uniform(problem, progress=None, end: str = "force") -> UniformForm:
     """Fit, choose and measure the uniform form for the end rule ``end`` (a few seconds)."""
-    ex = as_exponents(alpha, gamma)
+    ex = as_exponents(problem)
     say = progress or (lambda m: None)
     refs = _References(ex, end)
     om = _grid()
@@ -112,10 +112,10 @@ def build_uniform(alpha, gamma, progress=None, end: str = "force") -> UniformFor
     ome = 1.0 - eps
     idx = np.arange(om.size)
     train, select = idx % 2 == 0, idx % 2 == 1
-    form = fit_uniform(ex, None, om, eps, ome, train, select, end)
+    form = fit_uniform(ex, om, eps, ome, train, select, end)
 
     say(f"uniform form ({end} rule): {N_TEST} reference collisions for its bound")
-    tp = bound_points(ex, None)
+    tp = bound_points(ex)
     t_eps, t_ome = refs.test(tp)
     inside = select & (om >= FORM_RANGE[0]) & (om <= FORM_RANGE[1])
     sel_eps, sel_ome = rel_errors(form, om[inside], eps[inside], ome[inside])

@@ -59,7 +59,7 @@ class RelationRung(_Calibrated):
         return relation_build(self.name)
 
     def evaluate(self, req, cal, setting, omega):
-        return eps_from_connection(req.ex, None, omega, cal.relations[self.name]["c"])
+        return eps_from_connection(req.ex, omega, cal.relations[self.name]["c"])
 
 
 class PadeRung(_Calibrated):

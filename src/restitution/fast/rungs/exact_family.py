@@ -28,9 +28,9 @@ class ExactFamily(Rung):
     def outside(self, req):
         from ...core.collision import stick_bound
         from ...core.exact_family import in_family
-        if not in_family(req.ex, None):
+        if not in_family(req.ex):
             return "alpha != 2 gamma + 1 (the family that maps exactly onto the linear dashpot)"
-        if req.end == "overlap" and req.lo <= stick_bound(req.ex, None):
+        if req.end == "overlap" and req.lo <= stick_bound(req.ex):
             # the chooser refuses this as StickError before quoting; a quote alone says why
             return "Omega <= 1/(4 (gamma+1)): the bodies stick under the overlap rule"
         return None
@@ -39,7 +39,7 @@ class ExactFamily(Rung):
         # an eps below the smallest normal double (the overlap rule just above its threshold)
         # raises UnresolvedError here: every other rung would follow a creep there for minutes
         from ...core.exact_family import eps_bound, exact_eps
-        lowest = exact_eps(req.ex, None, req.lo, req.end)
+        lowest = exact_eps(req.ex, req.lo, req.end)
         return float(eps_bound(lowest)), "dashpot at (gamma+1) Omega" + (", overlap" if req.end == "overlap" else "")
 
     def coefficients(self, req, built):
@@ -48,4 +48,4 @@ class ExactFamily(Rung):
 
     def evaluate(self, req, built, setting, omega):
         from ...core.exact_family import exact_eps
-        return exact_eps(req.ex, None, omega, req.end)
+        return exact_eps(req.ex, omega, req.end)

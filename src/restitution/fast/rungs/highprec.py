@@ -71,8 +71,8 @@ class Highprec(Rung):
             if pulls and OMEGA_RANGE[0] <= w <= OMEGA_RANGE[1]:
                 # mpmath has no proof of sticking and would follow a trapped creep for its whole
                 # step budget: the reference integrator's cheap run raises StickError first.
-                collide(req.ex, None, w, rtol=1e-8, end="overlap")
-            r = reference_collision(req.ex, None, w, digits=digits, end=req.end)
+                collide(req.ex, w, rtol=1e-8, end="overlap")
+            r = reference_collision(req.ex, w, digits=digits, end=req.end)
             if not r.error_estimate <= 10.0 ** (1 - digits):
                 raise ArithmeticError(f"mpmath reference did not converge at Omega = {w} "
                                       f"(estimate {float(r.error_estimate):.3g})")

@@ -23,7 +23,7 @@ class Integrator(Rung):
     conditioned = True
 
     def outside(self, req):
-        wmin = stiff_omega_min(req.ex, None)
+        wmin = stiff_omega_min(req.ex)
         if req.lo < wmin or req.hi > OMEGA_MAX:
             return f"Omega outside [{printed(wmin)}, {printed(OMEGA_MAX)}] (explicit method; stiff below)"
         return None
@@ -40,4 +40,4 @@ class Integrator(Rung):
         return integrator_bound(rtol, req.ex), f"rtol={rtol:.3g}"
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.ex, None, omega, integrator_rtol(req.tol, req.ex))
+        return reference_eps(req.ex, omega, integrator_rtol(req.tol, req.ex))

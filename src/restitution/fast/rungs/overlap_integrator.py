@@ -21,7 +21,7 @@ class OverlapIntegrator(Rung):
     ends = ("overlap",)
 
     def outside(self, req):
-        wmin = stiff_omega_min(req.ex, None, "overlap")
+        wmin = stiff_omega_min(req.ex, "overlap")
         if req.lo < wmin or req.hi > OMEGA_MAX:
             return f"Omega outside [{wmin:g}, {printed(OMEGA_MAX)}] (explicit method; the creeping return is stiff below)"
         return None
@@ -34,5 +34,5 @@ class OverlapIntegrator(Rung):
         return integrator_bound(rtol, req.ex, "overlap"), f"rtol={rtol:.3g}, overlap"
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.ex, None, omega, min(integrator_rtol(req.tol, req.ex, "overlap"), OVERLAP_RTOL_MAX),
+        return reference_eps(req.ex, omega, min(integrator_rtol(req.tol, req.ex, "overlap"), OVERLAP_RTOL_MAX),
                              "overlap")

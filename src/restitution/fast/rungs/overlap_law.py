@@ -36,12 +36,12 @@ class OverlapLaw(Rung):
 
     def bound(self, req, built):
         from ...core.overlap_limit import overlap_limit
-        lim = overlap_limit(req.ex.alpha, req.ex.gamma)
+        lim = overlap_limit(req.ex)
         return 2.0 * lim.C_error / lim.C + 4.0 * TOL_FLOOR, f"C = {lim.C:.12g}, k = {lim.k_exact}"
 
     def evaluate(self, req, built, setting, omega):
         from ...core.overlap_limit import overlap_limit
-        lim = overlap_limit(req.ex.alpha, req.ex.gamma)
+        lim = overlap_limit(req.ex)
         om = np.asarray(omega, dtype=float)
         log10_eps = np.log10(lim.C) + lim.k * np.log10(om)
         if np.any(log10_eps < np.log10(np.finfo(float).tiny)):

@@ -30,4 +30,4 @@ class Reference(Rung):
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import collide
         rtol = reference_rtol(req.tol, req.ex, req.rule)
-        return np.array([collide(req.ex, None, float(w), rtol=rtol, end=req.end).eps for w in np.ravel(omega)])
+        return np.array([collide(req.ex, float(w), rtol=rtol, end=req.end).eps for w in np.ravel(omega)])

@@ -1,0 +1,134 @@
+"""The physics problem as one value: the exponents of the contact law and the end-of-contact rule.
+
+Every function that needs the pair (alpha, gamma) takes the problem as its first argument: a
+:class:`Problem`, an :class:`~restitution.core.exponents.Exponents` (the force rule), or an
+``(alpha, gamma)`` pair as :meth:`Exponents.parse` reads it. One value travels instead of two
+numbers and a rule beside them, so no caller passes ``(ex, None, ...)`` to say "the pair is in
+the first argument". (``Law`` in :mod:`restitution.core.law` is something else: the force law at
+one Omega, with its numbers, in one direction.)
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from fractions import Fraction
+
+from .errors import ParameterError
+from .exponents import Exponents, as_exponents
+from .results import end_rule
+
+__all__ = ["Problem", "as_problem", "problem_end"]
+
+
+@dataclass(frozen=True)
+class Problem:
+    """The scaled collision x'' + Omega x^alpha + x^gamma x' = 0 up to Omega: exponents and end rule.
+
+    Parameters
+    ----------
+    ex : Exponents
+        alpha (elastic) and gamma (dissipative) as exact rationals.
+    end : {"force", "overlap"}, optional
+        The end-of-contact rule asked for (:data:`restitution.core.results.END_RULES`): "force"
+        (default) ends contact where the total force vanishes, "overlap" where x returns to 0.
+
+    Returns
+    -------
+    Problem
+        A frozen, hashable value (usable as a cache key).
+
+    Raises
+    ------
+    ParameterError
+        If ``ex`` is not an :class:`Exponents` or ``end`` is not one of END_RULES.
+
+    See Also
+    --------
+    Problem.of : the same from anything :meth:`Exponents.parse` reads.
+    as_problem : a Problem from a Problem, an Exponents or an (alpha, gamma) pair.
+
+    Examples
+    --------
+    >>> from restitution import Problem
+    >>> p = Problem.of("3/2", 1, end="overlap")
+    >>> p
+    Problem(alpha=3/2, gamma=1, end='overlap')
+    >>> p.alpha, p.p, p.rules_differ, p.effective_end
+    (Fraction(3, 2), 2, True, 'overlap')
+    >>> Problem.of(1, 2, end="overlap").effective_end   # alpha <= gamma: the force never pulls
+    'force'
+    >>> p.with_end("force") == Problem.of(1.5, "1")
+    True
+    >>> Problem.of("3/2", 1, end="later")
+    Traceback (most recent call last):
+    ...
+    restitution.core.errors.ParameterError: end = 'later': must be one of force, overlap
+    """
+
+    ex: Exponents
+    end: str = "force"
+
+    def __post_init__(self):
+        if not isinstance(self.ex, Exponents):
+            raise ParameterError("ex", self.ex, "must be an Exponents (Problem.of reads numbers and text)")
+        object.__setattr__(self, "end", end_rule(self.end))
+
+    @classmethod
+    def of(cls, alpha, gamma, end: str = "force") -> "Problem":
+        """The problem for exponents as :meth:`Exponents.parse` reads them, under ``end``."""
+        return cls(Exponents.parse(alpha, gamma), end)
+
+    @property
+    def alpha(self) -> Fraction:
+        return self.ex.alpha
+
+    @property
+    def gamma(self) -> Fraction:
+        return self.ex.gamma
+
+    @property
+    def p(self) -> int:
+        """Least common denominator of alpha and gamma."""
+        return self.ex.p
+
+    @property
+    def rules_differ(self) -> bool:
+        """The force can vanish during contact (alpha > gamma): the two end rules differ."""
+        return self.ex.alpha > self.ex.gamma
+
+    @property
+    def effective_end(self) -> str:
+        """The rule whose numbers apply: "overlap" only where it differs from the force rule."""
+        return "overlap" if self.end == "overlap" and self.rules_differ else "force"
+
+    def with_end(self, end: str) -> "Problem":
+        """The same exponents under another end rule."""
+        return replace(self, end=end)
+
+    def __repr__(self) -> str:
+        return f"Problem(alpha={self.ex.alpha}, gamma={self.ex.gamma}, end={self.end!r})"
+
+    def __str__(self) -> str:
+        return f"{self.ex}, end={self.end}"
+
+
+def as_problem(problem, end: str | None = None) -> Problem:
+    """A :class:`Problem` from a Problem, an Exponents or an ``(alpha, gamma)`` pair.
+
+    ``end``, when given, is the rule for an Exponents or a pair (default "force"); given with a
+    Problem it must agree with the problem's own rule, so that a rule never travels two ways at
+    once and silently disagrees.
+    """
+    if isinstance(problem, Problem):
+        if end is not None and end_rule(end) != problem.end:
+            raise ParameterError("end", end, f"disagrees with the problem's own rule, {problem.end!r}")
+        return problem
+    return Problem(as_exponents(problem), "force" if end is None else end)
+
+
+def problem_end(problem, end: str | None) -> str:
+    """The end rule of a call that takes a problem first and, for plain exponents, ``end=``:
+    the problem's own rule when it is a Problem (``end`` must then agree or be None), else ``end``
+    (default "force")."""
+    return as_problem(problem, end).end
+
