@@ -69,10 +69,11 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--D2", type=number_argument, help="dissipative constant D2 > 0")
     c.add_argument("--g", type=number_argument, help="impact speed g > 0")
     c.add_argument("--rtol", type=number_argument, default=None,
-                   help="relative tolerance of methods reference and fast (default 1e-12)")
+                   help="relative tolerance of methods reference and integrator (default 1e-12)")
     c.add_argument("--method", default="reference",
-                   help="reference (scipy, default), fast (compiled), highprec (mpmath) or closed-form "
-                        "(alpha = 2 gamma + 1: the linear dashpot at (gamma+1) Omega, exact)")
+                   help="reference (scipy, default), integrator (compiled; formerly fast), highprec (mpmath) "
+                        "or exact-family, alias closed-form (alpha = 2 gamma + 1: the linear dashpot at "
+                        "(gamma+1) Omega, exact)")
     c.add_argument("--digits", type=int, default=None, help="digits of --method highprec (default 30)")
     add_end(c)
     c.add_argument("--json", action="store_true", help="machine-readable output")
@@ -512,8 +513,8 @@ def _run_collide(args, out) -> None:
     if args.digits is not None and args.method != "highprec":
         raise _UsageError(f"restitution collide: --digits is read by --method highprec only (method here: "
                           f"{args.method}); drop it or add --method highprec")
-    if args.rtol is not None and args.method in ("highprec", "closed-form"):
-        raise _UsageError(f"restitution collide: --rtol is read by --method reference and fast only; "
+    if args.rtol is not None and args.method in ("highprec", "closed-form", "exact-family"):
+        raise _UsageError(f"restitution collide: --rtol is read by --method reference and integrator only; "
                           f"{args.method} sets its own accuracy" + (" (use --digits)" if args.method == "highprec" else ""))
     omega = _omega_from_args(args)
     from .api import collide

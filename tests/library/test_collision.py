@@ -68,7 +68,7 @@ def test_linear_dashpot_matches_closed_form(omega):
     hit, exact = collide((1, 0), omega), dashpot_collision(omega)
     errors = _relative_errors(hit, exact)
     assert max(errors.values()) < 1e-9, errors
-    assert hit.end == exact.end == "force"
+    assert hit.ended_by == exact.ended_by == "force"
 
 
 def test_trajectory_matches_closed_form_dashpot():
@@ -121,7 +121,7 @@ def test_end_type_follows_sign_of_alpha_minus_gamma(alpha, gamma, end, omega):
     """At f = 0 (v < 0), f' = Omega (alpha-gamma) x^(alpha-gamma-1) v: f can only cross zero when
     alpha > gamma; otherwise x reaches 0 first."""
     hit = collide((alpha, gamma), omega)
-    assert hit.end == end
+    assert hit.ended_by == end
     assert 0.0 < hit.eps < 1.0
     assert 0.0 < hit.tau_b < hit.tau_c and 0.0 < hit.x_b
     assert all(math.isfinite(getattr(hit, q)) for q in QUANTITIES)
@@ -224,7 +224,7 @@ def test_collide_many_matches_single_calls():
     for i, w in enumerate(omegas):
         one = collide(("5/4", "3/2"), w, rtol=1e-10)
         assert [many[q][i] for q in QUANTITIES] == [getattr(one, q) for q in QUANTITIES]
-        assert many["end"][i] == one.end
+        assert many["end"][i] == one.ended_by
     assert many["end"].dtype.kind == "U"
 
 

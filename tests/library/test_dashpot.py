@@ -40,7 +40,7 @@ def test_closed_form_matches_independent_high_precision_roots(omega):
     ref = _independent(omega)
     for q in QUANTITIES:
         assert float(abs(getattr(exact, q) / ref[q] - 1)) < 5e-15, q
-    assert exact.end == "force" and exact.direction == "forward"
+    assert exact.ended_by == "force" and exact.direction == "forward"
     assert exact.rtol == 0.0 and exact.trajectory is None
 
 

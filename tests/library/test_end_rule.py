@@ -26,7 +26,7 @@ def test_overlap_rule_matches_the_dashpots_half_period(omega):
     w = math.sqrt(omega - 0.25)
     assert exact.tau_c == pytest.approx(math.pi / w, rel=1e-15)
     got = collide(1, 0, omega, end="overlap", rtol=RTOL)
-    assert got.end == "separation" and got.rule == "overlap" and got.x_c == 0.0
+    assert got.ended_by == "separation" and got.rule == "overlap" and got.x_c == 0.0
     for field in ("tau_b", "x_b", "tau_c", "one_minus_eps"):
         assert math.isclose(getattr(got, field), getattr(exact, field), rel_tol=BOUND), field
     assert math.isclose(got.eps, exact.eps, rel_tol=BOUND)
@@ -37,7 +37,7 @@ def test_force_rule_still_matches_the_dashpots_closed_form(omega):
     got = collide(1, 0, omega, rtol=RTOL)
     assert got == collide(1, 0, omega, rtol=RTOL, end="force")
     exact = dashpot_collision(omega)
-    assert got.end == exact.end == "force" and got.rule == "force"
+    assert got.ended_by == exact.ended_by == "force" and got.rule == "force"
     assert math.isclose(got.eps, exact.eps, rel_tol=BOUND)
 
 
@@ -47,7 +47,7 @@ def test_force_rule_still_matches_the_dashpots_closed_form(omega):
 @pytest.mark.slow
 def test_overlap_rule_matches_mpmath(alpha, gamma, omega):
     truth = reference_collision((alpha, gamma), omega, digits=20, end="overlap")
-    assert truth.end == "separation" and truth.error_estimate < 1e-18
+    assert truth.ended_by == "separation" and truth.error_estimate < 1e-18
     got = collide(alpha, gamma, omega, rtol=RTOL, end="overlap")
     for field in ("eps", "tau_b", "x_b", "tau_c"):
         assert math.isclose(getattr(got, field), float(getattr(truth, field)), rel_tol=BOUND), field
@@ -80,7 +80,7 @@ def test_overlap_rule_matches_a_plain_integration_in_tau(alpha, gamma, omega):
 def test_both_rules_agree_where_the_force_cannot_vanish(alpha, gamma, omega):
     force = collide(alpha, gamma, omega)
     overlap = collide(alpha, gamma, omega, end="overlap")
-    assert force.end == overlap.end == "separation" and force.eps == overlap.eps
+    assert force.ended_by == overlap.ended_by == "separation" and force.eps == overlap.eps
 
 
 def test_overlap_loss_is_the_dissipated_energy():
@@ -124,11 +124,11 @@ def test_epsilon_overlap_uses_only_rungs_that_know_the_rule():
 
 def test_fast_method_serves_the_overlap_rule():
     """It used to refuse it (it stopped at zero force); now it ends at x = 0 (issue 23)."""
-    fast = collide("3/2", 1, 0.5, method="fast", end="overlap")
-    assert fast.rule == "overlap" and fast.end == "separation"
+    fast = collide("3/2", 1, 0.5, method="integrator", end="overlap")
+    assert fast.rule == "overlap" and fast.ended_by == "separation"
     assert math.isclose(fast.eps, collide("3/2", 1, 0.5, end="overlap").eps, rel_tol=1e-9)
     with pytest.raises(ParameterError, match="contact never ends"):
-        collide("5/2", "1/2", 0.1, method="fast", end="overlap")
+        collide("5/2", "1/2", 0.1, method="integrator", end="overlap")
 
 
 def test_bad_end_is_one_line_exit_2(capsys):
@@ -339,7 +339,7 @@ def test_a_creep_that_defeats_the_reference_is_not_called_sticking():
         assert "creeping return defeated the integrator" in str(err)
         return
     law = restitution.epsilon(alpha="1", gamma="1/2", omega=1e-10, end="overlap", method="overlap-law")
-    assert got.end == "separation" and got.eps > 0
+    assert got.ended_by == "separation" and got.eps > 0
     assert abs(got.eps / float(law.eps) - 1) <= got.error_bound + law.error_bound
 
 

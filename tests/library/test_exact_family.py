@@ -53,7 +53,7 @@ def test_against_the_reference_integrator(alpha, gamma, end):
     for w in _omegas(alpha, gamma, end):
         got = exact_collision((alpha, gamma), w, end)
         ref = reference_collide((alpha, gamma), w, rtol=RTOL, end=end)
-        assert got.end == ref.end, w
+        assert got.ended_by == ref.ended_by, w
         assert abs(got.eps / ref.eps - 1) <= ref.error_bound + got.error_bound, (w, got.eps, ref.eps)
         assert abs(got.one_minus_eps / ref.one_minus_eps - 1) <= ref.one_minus_eps_bound + got.one_minus_eps_bound, w
         for f in ("tau_b", "x_b", "tau_c") + (("x_c",) if end == "force" else ()):
@@ -181,7 +181,7 @@ def test_extreme_omegas_against_the_reference_and_the_fast_integrator(alpha, gam
         got, ref = exact_collision((alpha, gamma), w), reference_collide((alpha, gamma), w, rtol=RTOL)
         assert abs(got.eps / ref.eps - 1) <= ref.error_bound + got.error_bound, w
         assert math.isclose(got.tau_c, ref.tau_c, rel_tol=1e-9), w
-    fast = collide(alpha, gamma, 1e14, method="fast", rtol=1e-13)
+    fast = collide(alpha, gamma, 1e14, method="integrator", rtol=1e-13)
     got = exact_collision((alpha, gamma), 1e14)
     assert math.isclose(got.eps, fast.eps, rel_tol=1e-11) and math.isclose(got.tau_c, fast.tau_c, rel_tol=1e-9)
 

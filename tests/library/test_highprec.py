@@ -76,7 +76,7 @@ def test_linear_spring_dashpot(omega):
         assert abs(exact["v_b"]) < mp.mpf(10) ** -50
         assert abs(exact["acc_c"]) < mp.mpf(10) ** -50
     r = reference_collision((1, 0), omega, digits=30)
-    assert r.end == "force"
+    assert r.ended_by == "force"
     with mp.workdps(60):
         for name in QUANTITIES + ("x_c",):
             assert rel(getattr(r, name), exact[name]) < 1e-20, name
@@ -126,7 +126,7 @@ def test_gamma_one_small_omega_bound_tends_to_sqrt2(alpha):
 @pytest.mark.parametrize("omega", ["0.01", "0.5", "20"])
 def test_alpha_equals_gamma_exact_separation(gamma, omega):
     r = reference_collision((gamma, gamma), omega, digits=30)
-    assert r.end == "separation"
+    assert r.ended_by == "separation"
     assert r.x_c == 0
     with mp.workdps(50):
         om = mp.mpf(omega)
@@ -161,7 +161,7 @@ def test_alpha_equals_gamma_exact_separation(gamma, omega):
 def test_digits_30_against_40(alpha, gamma, omega):
     r30 = reference_collision((alpha, gamma), omega, digits=30)
     r40 = reference_collision((alpha, gamma), omega, digits=40)
-    assert r30.end == r40.end == "force"
+    assert r30.ended_by == r40.ended_by == "force"
     with mp.workdps(60):
         for name in QUANTITIES:
             assert rel(getattr(r30, name), getattr(r40, name)) < 1e-28, name
@@ -176,7 +176,7 @@ def test_digits_30_against_40(alpha, gamma, omega):
 @pytest.mark.slow
 def test_alpha_below_gamma_separates(omega):
     r = reference_collision((1, "3/2"), omega, digits=30)
-    assert r.end == "separation"
+    assert r.ended_by == "separation"
     assert r.x_c == 0
     assert 0 < r.eps < 1
     assert 0 < r.tau_b < r.tau_c

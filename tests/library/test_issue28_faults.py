@@ -179,7 +179,7 @@ BASE_LAMMPS = ["lammps", "--damping", "velocity", "--eta-n0", "1", "--g", "1"]
     (BASE_LAMMPS + ["--normal", "hertz/material", "--E", "1e7", "--nu", "0.3", "--k-n", "5", "--radius",
                     "1e-3", "--density", "2500"], ["--k-n", "hertz/material"]),
     (["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--digits", "40"], ["--digits", "highprec"]),
-    (["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--digits", "40", "--method", "fast"],
+    (["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--digits", "40", "--method", "integrator"],
      ["--digits"]),
     (["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--rtol", "1e-9", "--method",
       "highprec"], ["--rtol"]),

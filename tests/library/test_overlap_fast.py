@@ -168,7 +168,7 @@ def test_the_self_similar_case_keeps_its_bound_for_larger_denominators(alpha, ga
     omega = float(1 / (4 * (ex.gamma + 1))) * (1 + d)
     truth = float(reference_collision(ex, omega, digits=24, end="overlap").eps)
     cond = float(conditioning(ex, "overlap", [truth], [omega])[0])
-    fast = api_collide(alpha, gamma, omega, method="fast", rtol=rtol, end="overlap").eps
+    fast = api_collide(alpha, gamma, omega, method="integrator", rtol=rtol, end="overlap").eps
     assert abs(fast / truth - 1) <= _bound(rtol, alpha, gamma) * cond
     scipy = collide((alpha, gamma), omega, rtol=rtol, end="overlap")
     assert abs(scipy.eps / truth - 1) <= scipy.error_bound

@@ -44,7 +44,7 @@ def relative_errors(alpha, gamma, omega):
     got = collision.collide(alpha, gamma, omega, rtol=1e-12)
     truth = ref.as_floats()
     errors = {name: abs(getattr(got, name) - truth[name]) / abs(truth[name]) for name in COMPARED}
-    if ref.end == "force":
+    if ref.ended_by == "force":
         errors["x_c"] = abs(got.x_c - truth["x_c"]) / truth["x_c"]
     return ref, got, errors
 
@@ -55,6 +55,6 @@ def relative_errors(alpha, gamma, omega):
 def test_collide_matches_reference(alpha, gamma, omega):
     ref, got, errors = relative_errors(alpha, gamma, omega)
     assert ref.error_estimate < TOLERANCE * REFERENCE_MARGIN
-    assert got.end == ref.end
+    assert got.ended_by == ref.ended_by
     report = ", ".join(f"{k} {v:.2e}" for k, v in errors.items())
     assert max(errors.values()) < TOLERANCE, f"alpha={alpha} gamma={gamma} Omega={omega}: {report}"

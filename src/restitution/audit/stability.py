@@ -338,8 +338,8 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
         rec["status"] = f"{type(err).__name__}: {err}".replace("\n", " ")
         return rec
     got = _values(hit)
-    rec.update(got, end=hit.end)
-    with_xc = hit.end == "force"
+    rec.update(got, end=hit.ended_by)
+    with_xc = hit.ended_by == "force"
 
     tight = None
     if point.tight:
@@ -358,9 +358,9 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
             rec["status"] = f"reference failed: {type(err).__name__}: {err}".replace("\n", " ")
         else:
             truth = {q: float(getattr(ref, q)) for q in QUANTITIES}
-            both_force = with_xc and ref.end == "force"
+            both_force = with_xc and ref.ended_by == "force"
             rec["err_ref"], rec["worst_ref"] = _worst(got, truth, both_force)
-            if ref.end != hit.end:
+            if ref.ended_by != hit.ended_by:
                 rec["err_ref"], rec["worst_ref"] = math.inf, "end"
             rec["ref_estimate"] = float(ref.error_estimate)
             if tight is not None:

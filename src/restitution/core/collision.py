@@ -47,6 +47,7 @@ from .model import at_most_one
 from .conditioning import conditioning, plain_accuracy
 from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
 from .sampling import Piece, sample
+from .problem import problem_end
 
 #: Accepted range of the relative tolerance.
 RTOL_MIN, RTOL_MAX = 1e-14, 1e-3
@@ -499,7 +500,7 @@ def _check_omega(field: str, omega) -> float:
     return value
 
 
-def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str = "force") -> Collision:
+def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str | None = None) -> Collision:
     """Forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to end of contact.
 
     ``alpha``, ``gamma``: anything Exponents.parse accepts (or an Exponents as ``alpha`` with
@@ -509,6 +510,7 @@ def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str = "for
     for both, however small eps (checked against mpmath down to eps = 5e-36). Under "overlap" the
     bodies may provably never separate (StickError, see _Trap and _check_separates).
     """
+    end = problem_end(problem, end)   # a Problem brings its own rule
     ex = as_exponents(problem)
     omega = _check_omega("omega", omega)
     rtol = _check_rtol(rtol)
@@ -645,5 +647,5 @@ def collide_many(problem, omegas, *, rtol: float = 1e-12) -> dict[str, np.ndarra
     hits = [collide(ex, w, rtol=rtol) for w in omegas]
     out = {name: np.array([getattr(h, name) for h in hits], dtype=float)
            for name in ("eps", "tau_b", "x_b", "tau_c", "x_c")}
-    out["end"] = np.array([h.end for h in hits], dtype=str)
+    out["end"] = np.array([h.ended_by for h in hits], dtype=str)
     return out

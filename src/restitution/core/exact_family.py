@@ -54,6 +54,7 @@ from .dashpot import contact_times, dashpot_collision
 from .errors import ParameterError, require_positive_finite
 from .exponents import Exponents, as_exponents
 from .results import Collision, end_rule
+from .problem import problem_end
 
 __all__ = ["in_family", "sticking_threshold", "exact_collision", "exact_eps", "eps_bound", "EPS_ULPS",
            "LOSS_ULPS", "TIME_RTOL"]
@@ -181,7 +182,7 @@ def eps_bound(eps) -> np.ndarray:
     return np.array([_eps_bound(float(x)) for x in e.ravel()]).reshape(e.shape)
 
 
-def exact_eps(problem, omega, end: str = "force") -> np.ndarray:
+def exact_eps(problem, omega, end: str | None = None) -> np.ndarray:
     """eps of the family alpha = 2 gamma + 1 at each Omega, from the dashpot at (gamma+1) Omega.
 
     Parameters
@@ -216,6 +217,7 @@ def exact_eps(problem, omega, end: str = "force") -> np.ndarray:
     >>> float(exact_eps(("3/2", "1/4"), 0.3, end="overlap")) < float(exact_eps(("3/2", "1/4"), 0.3))
     True
     """
+    end = problem_end(problem, end)   # a Problem brings its own rule
     ex = _family(problem)
     rule = end_rule(end)
     om = np.asarray(omega, dtype=float)
@@ -242,7 +244,7 @@ def _dashpot_tau_c(ex: Exponents, omega: float, rule: str) -> float:
     return t_c
 
 
-def exact_collision(problem, omega, end: str = "force", *, times: bool = True) -> Collision:
+def exact_collision(problem, omega, end: str | None = None, *, times: bool = True) -> Collision:
     """The forward collision of the family alpha = 2 gamma + 1 in closed form (tau by quadrature).
 
     eps and 1 - eps (no cancellation) are the dashpot's at (gamma+1) Omega; x_b and x_c its S_b and
@@ -280,15 +282,16 @@ def exact_collision(problem, omega, end: str = "force", *, times: bool = True) -
     Examples
     --------
     >>> c = exact_collision(("3/2", "1/4"), 0.7)
-    >>> round(c.eps, 12), round(c.tau_c, 10), c.end
+    >>> round(c.eps, 12), round(c.tau_c, 10), c.ended_by
     (0.279827939466, 2.972394226, 'force')
-    >>> exact_collision(("3/2", "1/4"), 0.7, end="overlap").end
+    >>> exact_collision(("3/2", "1/4"), 0.7, end="overlap").ended_by
     'separation'
     >>> exact_collision(("3/2", "1/4"), 0.2, end="overlap")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
     restitution.core.collision.StickError: omega = 0.2: under the overlap rule contact never ends here: ...
     """
+    end = problem_end(problem, end)   # a Problem brings its own rule
     ex = _family(problem)
     omega = require_positive_finite("omega", omega)
     rule = end_rule(end)

@@ -60,6 +60,7 @@ from mpmath import mp
 from .errors import ParameterError, integer_in
 from .exponents import as_exponents
 from .results import end_rule
+from .problem import problem_end
 
 __all__ = ["HighPrecisionCollision", "reference_collision"]
 
@@ -98,7 +99,7 @@ class HighPrecisionCollision:
     x_b: mpmath.mpf
     tau_c: mpmath.mpf
     x_c: mpmath.mpf
-    end: str
+    ended_by: str          # how contact ended: "force" or "separation" (the rule asked is the caller's)
     digits: int
     error_estimate: mpmath.mpf
     steps: int = 0
@@ -113,7 +114,7 @@ class HighPrecisionCollision:
             "x_b": float(self.x_b),
             "tau_c": float(self.tau_c),
             "x_c": float(self.x_c),
-            "end": self.end,
+            "end": self.ended_by,
             "digits": self.digits,
             "error_estimate": float(self.error_estimate),
         }
@@ -461,7 +462,7 @@ def _check_omega(omega):
 _COMPARED = ("eps", "tau_b", "x_b", "tau_c")
 
 
-def reference_collision(problem, omega, *, digits: int = 30, end: str = "force") -> HighPrecisionCollision:
+def reference_collision(problem, omega, *, digits: int = 30, end: str | None = None) -> HighPrecisionCollision:
     """Collision quantities to about ``digits`` significant digits.
 
     ``alpha`` and ``gamma`` are anything :class:`~restitution.core.exponents.Exponents`
@@ -473,6 +474,7 @@ def reference_collision(problem, omega, *, digits: int = 30, end: str = "force")
     Runs the integration twice (see module docstring), so it costs about three times
     one run. Raises ParameterError for bad inputs.
     """
+    end = problem_end(problem, end)   # a Problem brings its own rule
     ex = as_exponents(problem)
     _check_omega(omega)
     integer_in("digits", digits, _MIN_DIGITS, _MAX_DIGITS)
@@ -489,4 +491,4 @@ def reference_collision(problem, omega, *, digits: int = 30, end: str = "force")
     return HighPrecisionCollision(
         alpha=ex.alpha, gamma=ex.gamma, omega=main["omega"], eps=main["eps"],
         tau_b=main["tau_b"], x_b=main["x_b"], tau_c=main["tau_c"], x_c=main["x_c"],
-        end=main["end"], digits=digits, error_estimate=err, steps=main["steps"])
+        ended_by=main["end"], digits=digits, error_estimate=err, steps=main["steps"])

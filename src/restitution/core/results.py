@@ -41,9 +41,10 @@ class Trajectory:
 class Collision:
     """End-of-contact quantities of one forward collision in scaled variables.
 
-    ``end`` is how contact ended: "force" where the total force vanished
+    ``ended_by`` is how contact ended: "force" where the total force vanished
     (Omega x^(alpha-gamma) + x' = 0), "separation" where x returned to 0. ``rule`` is the
-    end-of-contact rule asked for (END_RULES): under "overlap" ``end`` is always "separation". ``rtol`` is the
+    end-of-contact rule asked for (END_RULES): under "overlap" ``ended_by`` is always "separation".
+    (``as_dict`` writes ``ended_by`` under the key "end", as every output written before did.) ``rtol`` is the
     tolerance the integration ran at (0.0 for a closed form). ``one_minus_eps`` is 1 - eps to
     relative accuracy (from the dissipated energy, not by subtraction), None where the method does
     not provide it. ``error_bound`` and ``one_minus_eps_bound`` are the stated relative accuracies
@@ -59,7 +60,7 @@ class Collision:
     x_b: float
     tau_c: float
     x_c: float
-    end: str
+    ended_by: str
     rtol: float
     trajectory: Trajectory | None = None
     one_minus_eps: float | None = None
@@ -68,7 +69,7 @@ class Collision:
     one_minus_eps_bound: float | None = None
 
     def as_dict(self) -> dict:
-        out = {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.end}
+        out = {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.ended_by}
         if self.rule != "force":   # the default rule adds nothing, so earlier outputs keep their bytes
             out["rule"] = self.rule
         if self.one_minus_eps is not None:

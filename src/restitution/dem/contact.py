@@ -83,7 +83,7 @@ def scaled_collision(problem, end: str, omega: float, rtol: float = 1e-12):
     Examples
     --------
     >>> c = scaled_collision(("3/2", "1/4"), "overlap", 0.7)
-    >>> c.rtol, round(c.eps, 10), c.end
+    >>> c.rtol, round(c.eps, 10), c.ended_by
     (0.0, 0.1371174182, 'separation')
     >>> scaled_collision(("3/2", "1/2"), "force", 0.7).rtol
     1e-12

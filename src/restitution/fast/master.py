@@ -37,6 +37,7 @@ from ..core.exponents import as_exponents
 from .integrator import END_FAILED, END_STUCK, collide_fast
 from .panels import PanelRange, chebyshev_panels_eval
 from .rung import INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR, integrator_bound
+from ..core.problem import problem_end
 
 __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps", "mpmath_check",
            "widen_by_check",
@@ -46,7 +47,7 @@ __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "r
 #: Bumped whenever the construction changes, so cached curves of an older kind are rebuilt.
 MASTER_VERSION = 2
 
-def stiff_omega_min(problem, end: str = "force") -> float:
+def stiff_omega_min(problem, end: str | None = None) -> float:
     """Smallest Omega the explicit compiled integrator's eps is used for.
 
     For alpha > gamma contact ends a few relaxation times after maximum compression and nothing is
@@ -59,6 +60,7 @@ def stiff_omega_min(problem, end: str = "force") -> float:
     creeps for every pair (about 0.4/Omega steps for alpha = 3/2, gamma = 1/2: 14 ms at 1e-5, 0.2 s
     at 1e-6).
     """
+    end = problem_end(problem, end)   # a Problem brings its own rule
     ex = as_exponents(problem)
     return 1e-300 if ex.alpha > ex.gamma and end == "force" else 1e-5
 
@@ -99,9 +101,10 @@ class MasterSettings:
 
 
 # ------------------------------------------------------------------------------ reference values
-def reference_eps(problem, omegas, rtol: float = 1e-14, end: str = "force") -> np.ndarray:
+def reference_eps(problem, omegas, rtol: float = 1e-14, end: str | None = None) -> np.ndarray:
     """eps from the exact closed form (alpha = gamma) or the compiled integrator (otherwise), for
     the end rule ``end``; under "overlap" a proved sticking raises core.collision.StickError."""
+    end = problem_end(problem, end)   # a Problem brings its own rule
     ex = as_exponents(problem)
     om = np.asarray(omegas, dtype=float)
     if ex.alpha == ex.gamma:

@@ -17,7 +17,11 @@ A rung (:class:`Rung`) is one way to compute eps(Omega). It declares, for a :cla
   be more accurate, and a cached curve would make the answer depend on the cache's state);
 * ``conditioned``: True for the double-precision integrations, whose bound grows near the overlap
   rule's sticking boundary (core.collision.conditioning): the quote's ``widen`` gives the factor
-  from the answer, and the chooser checks the widened bound after the evaluation.
+  from the answer, and the chooser checks the widened bound after the evaluation;
+* ``collision(problem, omega, rtol=, digits=, t_eval=)``: one whole collision (a
+  :class:`~restitution.core.results.Collision`), for the rungs that integrate or solve one
+  (``collides``; ``trajectories`` where it samples ``t_eval``): ``restitution.collide`` runs these
+  by the same names as ``epsilon`` (:mod:`restitution.fast.collide`).
 
 ``quote(req)`` turns these into a :class:`Quote`, the one thing the chooser
 (:mod:`restitution.fast.ladder`) compares, as scipy's ``solve_ivp`` compares nothing but picks an
@@ -154,11 +158,21 @@ class Rung:
     cost: float = 0.0
     conditioned: bool = False
     exact: bool = False
+    collides: bool = False
+    trajectories: bool = False
 
     def serves(self, req: Request) -> bool:
+        return self.serves_rule(req.end, req.rules_differ)
+
+    def serves_rule(self, end: str, rules_differ: bool) -> bool:
+        """Whether it serves the end rule ``end`` for exponents where the rules differ or not."""
         if "force" not in self.ends:   # the overlap rule's own numbers, which exist only where the rules differ
-            return req.rule == "overlap"
-        return req.end in self.ends or not req.rules_differ
+            return end == "overlap" and rules_differ
+        return end in self.ends or not rules_differ
+
+    def collision(self, problem, omega: float, *, rtol: float, digits: int, t_eval=None):
+        """One collision for the Problem ``problem`` at ``omega`` (rungs with ``collides``)."""
+        raise NotImplementedError
 
     def outside(self, req: Request) -> str | None:
         return None

@@ -11,10 +11,22 @@ from __future__ import annotations
 
 from ..rung import Rung
 
-__all__ = ["ExactFamily", "EXACT_FAMILY_COST"]
+__all__ = ["ExactFamily", "EXACT_FAMILY_COST", "family_collision"]
 
 #: Seconds per point (the dashpot's contact time in Python; measured 1-3 microseconds).
 EXACT_FAMILY_COST = 3e-6
+
+
+def family_collision(problem, omega, method: str):
+    """The exact collision of alpha = 2 gamma + 1 (core.exact_family.exact_collision: eps within
+    8 u (1 + ln(1/eps)), tau_b and tau_c by quadrature to about 1e-14), every Omega > 0; ``method``
+    is the name it was asked by, for the message where the pair is outside the family."""
+    from ...core.errors import ParameterError
+    from ...core.exact_family import exact_collision, in_family
+    if not in_family(problem):
+        raise ParameterError("method", method, "the closed form is for alpha = 2 gamma + 1 only (alpha = 1, "
+                                               "gamma = 0, the linear dashpot, and the family that maps onto it)")
+    return exact_collision(problem, omega)
 
 
 class ExactFamily(Rung):
@@ -24,6 +36,10 @@ class ExactFamily(Rung):
     name, cost = "exact-family", EXACT_FAMILY_COST
     ends = ("force", "overlap")
     exact = True
+    collides = True
+
+    def collision(self, problem, omega, *, rtol, digits, t_eval=None):
+        return family_collision(problem, omega, self.name)
 
     def outside(self, req):
         from ...core.collision import stick_bound

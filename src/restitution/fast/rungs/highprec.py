@@ -36,6 +36,7 @@ def highprec_cost(omega: np.ndarray, digits: int, creeps: bool = False) -> float
 class Highprec(Rung):
     name, cost = "highprec", HIGHPREC_COST
     ends = ("force", "overlap")
+    collides = True
 
     def outside(self, req):
         if not req.rules_differ and req.lo < 1e-3:
@@ -78,3 +79,12 @@ class Highprec(Rung):
                                       f"(estimate {float(r.error_estimate):.3g})")
             out.append(float(r.eps))
         return np.array(out)
+
+    def collision(self, problem, omega, *, rtol, digits, t_eval=None):
+        """The mpmath Taylor series at ``digits`` digits, rounded to doubles; its rtol is 10^(1 - digits)."""
+        from ...core.highprec import reference_collision
+        from ...core.results import Collision
+        r = reference_collision(problem, omega, digits=digits)
+        return Collision(r.alpha, r.gamma, float(r.omega), "forward", float(r.eps), float(r.tau_b), float(r.x_b),
+                         float(r.tau_c), float(r.x_c), r.ended_by, 10.0 ** (1 - r.digits),
+                         one_minus_eps=float(1 - r.eps), rule=problem.end)

@@ -8,7 +8,7 @@ import math
 from ..master import reference_eps, stiff_omega_min
 from ..rung import Rung, integrator_bound, integrator_rtol
 
-__all__ = ["Integrator", "OMEGA_MAX", "printed"]
+__all__ = ["Integrator", "OMEGA_MAX", "printed", "integrator_collision"]
 
 #: Largest Omega the compiled integrator is validated at (as messages print it: 1e14, not 1e+14).
 OMEGA_MAX = 1e14
@@ -18,9 +18,42 @@ def printed(x: float) -> str:
     return f"{x:g}".replace("e+", "e")
 
 
+def integrator_collision(problem, omega, rtol):
+    """One collision by the compiled integrator under the problem's end rule (both rungs named
+    "integrator" run it): eps, tau_b, x_b, tau_c, x_c, no ``one_minus_eps``; Omega from the stiff
+    limit (the overlap rule: 1e-5) to OMEGA_MAX."""
+    from ...core.collision import RTOL_MIN, StickError
+    from ...core.errors import number_in
+    from ...core.model import at_most_one
+    from ...core.results import Collision
+    from ..integrator import COLUMNS, END_FORCE, END_SEPARATION, END_STUCK, collide_fast
+    from ..master import TIMES_OMEGA_MIN
+
+    ex, end = problem.ex, problem.end
+    lo = max(stiff_omega_min(ex, end), TIMES_OMEGA_MIN)
+    omega = number_in("omega", omega, lo, OMEGA_MAX, why="the compiled integrator's range (method reference "
+                      "or epsilon() cover the rest)")
+    rtol = number_in("rtol", rtol, RTOL_MIN, 1e-6)
+    row = dict(zip(COLUMNS, collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, problem.effective_end == "overlap")[0]))
+    if int(row["end"]) == END_STUCK:
+        raise StickError("omega", omega, "under the overlap rule contact never ends here: the "
+                                         "attractive phase stops the return and the bodies stay together "
+                                         "(eps = 0); use end=force")
+    ends = {END_FORCE: "force", END_SEPARATION: "separation"}
+    if int(row["end"]) not in ends:
+        raise ArithmeticError(f"the compiled integrator failed at Omega = {omega:g}")
+    return Collision(ex.alpha, ex.gamma, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
+                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol,
+                     rule=end)
+
+
 class Integrator(Rung):
     name, cost = "integrator", 6e-5
     conditioned = True
+    collides = True
+
+    def collision(self, problem, omega, *, rtol, digits, t_eval=None):
+        return integrator_collision(problem, omega, rtol)
 
     def outside(self, req):
         wmin = stiff_omega_min(req.ex)

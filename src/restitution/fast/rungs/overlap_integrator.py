@@ -10,7 +10,7 @@ from __future__ import annotations
 from ..integrator import OVERLAP_RTOL_MAX
 from ..master import reference_eps, stiff_omega_min
 from ..rung import Rung, integrator_bound, integrator_rtol
-from .integrator import OMEGA_MAX, printed
+from .integrator import OMEGA_MAX, integrator_collision, printed
 
 __all__ = ["OverlapIntegrator"]
 
@@ -19,6 +19,10 @@ class OverlapIntegrator(Rung):
     name, cost = "integrator", 6e-5
     conditioned = True
     ends = ("overlap",)
+    collides = True
+
+    def collision(self, problem, omega, *, rtol, digits, t_eval=None):
+        return integrator_collision(problem, omega, rtol)
 
     def outside(self, req):
         wmin = stiff_omega_min(req.ex, "overlap")

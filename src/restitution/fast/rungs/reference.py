@@ -15,6 +15,7 @@ class Reference(Rung):
     name, cost = "reference", 1e-2
     conditioned = True
     ends = ("force", "overlap")
+    collides = trajectories = True
 
     def outside(self, req):
         from ...core.collision import OMEGA_RANGE
@@ -31,3 +32,8 @@ class Reference(Rung):
         from ...core.collision import collide
         rtol = reference_rtol(req.tol, req.ex, req.rule)
         return np.array([collide(req.ex, float(w), rtol=rtol, end=req.end).eps for w in np.ravel(omega)])
+
+    def collision(self, problem, omega, *, rtol, digits, t_eval=None):
+        """scipy's DOP853/Radau in smooth variables (core.collision.collide), ``t_eval`` sampled."""
+        from ...core.collision import collide
+        return collide(problem, omega, rtol=rtol, t_eval=t_eval)
