@@ -14,6 +14,7 @@ import restitution
 from restitution.core.collision import StickError, collide
 from restitution.core.dashpot import dashpot_collision
 from restitution.core.errors import ParameterError
+from restitution.core.problem import Problem
 from restitution.core.exponents import as_exponents
 from restitution.core.highprec import reference_collision
 from restitution.fast.integrator import END_SEPARATION, END_STUCK, OVERLAP_RTOL_MAX, collide_fast
@@ -167,7 +168,7 @@ def test_the_self_similar_case_keeps_its_bound_for_larger_denominators(alpha, ga
     ex = as_exponents(alpha, gamma)
     omega = float(1 / (4 * (ex.gamma + 1))) * (1 + d)
     truth = float(reference_collision(ex, omega, digits=24, end="overlap").eps)
-    cond = float(conditioning(ex, "overlap", [truth], [omega])[0])
+    cond = float(conditioning(Problem(ex, "overlap"), [truth], [omega])[0])
     fast = api_collide(alpha, gamma, omega, method="integrator", rtol=rtol, end="overlap").eps
     assert abs(fast / truth - 1) <= _bound(rtol, alpha, gamma) * cond
     scipy = collide((alpha, gamma), omega, rtol=rtol, end="overlap")

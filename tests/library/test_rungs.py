@@ -44,11 +44,12 @@ def test_the_reference_rung_quotes_what_collide_states_under_either_rule():
     reference rung quotes collide's own stated bound, not the overlap rule's wider one."""
     from restitution.core.collision import collide
     from restitution.core.exponents import as_exponents
+    from restitution.core.problem import Problem
     from restitution.fast.rung import Request, reference_rtol
     from restitution.fast.rungs.reference import Reference
 
     for alpha, gamma, rule in (("1", "3/2", "force"), ("3/2", "1", "overlap")):
-        req = Request(as_exponents(alpha, gamma), np.array([1.0]), 1e-9, "overlap")
+        req = Request(Problem(as_exponents(alpha, gamma), "overlap"), np.array([1.0]), 1e-9)
         assert req.rule == rule
         quoted = Reference().bound(req, {})[0]
         stated = collide((alpha, gamma), 1.0, rtol=reference_rtol(1e-9, req.ex, rule), end="overlap").error_bound

@@ -177,7 +177,7 @@ class AtlasSpec:
         """Relative error claimed for the pair's points: the one set in the config, or collide's."""
         if self.accuracy is not None:
             return self.accuracy
-        return conditioning.plain_accuracy((alpha, gamma), self.rtol, "force")
+        return conditioning.plain_accuracy((alpha, gamma), self.rtol)
 
     @property
     def pairs(self) -> list[tuple[str, str]]:

@@ -47,7 +47,7 @@ from .model import at_most_one
 from .conditioning import conditioning, plain_accuracy
 from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
 from .sampling import Piece, sample
-from .problem import problem_end
+from .problem import as_problem
 
 #: Accepted range of the relative tolerance.
 RTOL_MIN, RTOL_MAX = 1e-14, 1e-3
@@ -510,12 +510,12 @@ def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str | None
     for both, however small eps (checked against mpmath down to eps = 5e-36). Under "overlap" the
     bodies may provably never separate (StickError, see _Trap and _check_separates).
     """
-    end = problem_end(problem, end)   # a Problem brings its own rule
-    ex = as_exponents(problem)
+    problem = as_problem(problem, end)   # a Problem brings its own rule
+    ex = problem.ex
     omega = _check_omega("omega", omega)
     rtol = _check_rtol(rtol)
     t_eval = _check_t_eval(t_eval)
-    rule = end_rule(end)
+    rule = problem.end
     overlap = rule == "overlap"
     law = Law.of(ex, omega, +1)
     if overlap:
@@ -549,8 +549,8 @@ def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str | None
         # a loss (and could even exceed 1); the loss itself is accurate to about rtol relative
         eps = 1.0 - loss
     trajectory = sample(pieces, t_eval, last.tau) if t_eval is not None else None
-    plain = plain_accuracy(ex, max(rtol, SOLVER_RTOL_FLOOR), rule)
-    bound = plain * float(conditioning(ex, rule, eps, omega))
+    plain = plain_accuracy(problem, max(rtol, SOLVER_RTOL_FLOOR))
+    bound = plain * float(conditioning(problem, eps, omega))
     loss_bound = max(plain, bound * eps / loss) if 1.0 - eps >= BY_SUBTRACTION else plain
     return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
                      float(last.tau), float(x_c), end, rtol, trajectory, loss, rule, bound, loss_bound)

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numpy as np
 
 from .exponents import as_exponents
-from .results import end_rule
+from .problem import as_problem
 
 __all__ = ["ACCURACY_FACTOR", "ACCURACY_FLOOR", "OVERLAP_ACCURACY_FACTOR", "OVERLAP_ACCURACY_FLOOR",
            "EXPONENT_SCALE", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "SELF_SIMILAR_POWER", "ELASTIC_START",
@@ -69,35 +69,38 @@ def exponent_factor(problem) -> float:
     return max(1.0, float(ex.alpha + ex.gamma) / EXPONENT_SCALE) ** 3
 
 
-def plain_factor_floor(problem, end: str, factor: float = ACCURACY_FACTOR,
+def plain_factor_floor(problem, factor: float = ACCURACY_FACTOR,
                        floor: float = ACCURACY_FLOOR) -> tuple[float, float]:
     """(factor, floor) of a double-precision integration's plain bound factor rtol + floor: the
     given force-rule ones (collide's by default) times exponent_factor; where the rules differ
     (alpha > gamma) under the overlap rule at least its own as well. The overlap rule shares the
     force rule's legs up to the force's zero, and with them their growth with the exponents: make
     fuzz found 1 - eps of (15/2, 29/6) at Omega = 7.6e4 1.12 times over the overlap rule's own
-    bound (an error equal to the force rule's, which states 11 times more)."""
-    ex = as_exponents(problem)
+    bound (an error equal to the force rule's, which states 11 times more). ``problem``: a Problem
+    (an Exponents or a pair: the force rule)."""
+    problem = as_problem(problem)
+    ex = problem.ex
     scale = exponent_factor(ex)
-    if end_rule(end) == "overlap" and ex.alpha > ex.gamma:
+    if problem.effective_end == "overlap":
         return max(OVERLAP_ACCURACY_FACTOR, factor * scale), max(OVERLAP_ACCURACY_FLOOR, floor * scale)
     return factor * scale, floor * scale
 
 
-def plain_accuracy(problem, rtol: float, end: str) -> float:
+def plain_accuracy(problem, rtol: float) -> float:
     """collide's stated relative accuracy at ``rtol`` before conditioning."""
-    factor, floor = plain_factor_floor(problem, end)
+    factor, floor = plain_factor_floor(problem)
     return factor * rtol + floor
 
 
-def conditioning(problem, end: str, eps, omega) -> np.ndarray:
+def conditioning(problem, eps, omega) -> np.ndarray:
     """The factor by which a double-precision integration's relative error in eps grows under the
     overlap rule near a sticking boundary (STICK_CONDITION) and near the elastic limit
     (ELASTIC_START); 1 elsewhere. It depends on the answer, so a bound stated with it is known
     after the evaluation (fast.ladder checks it then; collide states it)."""
-    ex = as_exponents(problem)
+    problem = as_problem(problem)
+    ex = problem.ex
     e = np.maximum(np.asarray(eps, dtype=float), TINY)
-    if end_rule(end) != "overlap" or ex.alpha <= ex.gamma:
+    if problem.effective_end != "overlap":
         return np.ones_like(e)
     elastic = np.maximum(1.0, np.asarray(omega, dtype=float) / ELASTIC_START) ** (1.0 / 3.0)
     if ex.alpha < 2 * ex.gamma + 1:

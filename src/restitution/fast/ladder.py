@@ -98,7 +98,7 @@ from . import cache as _cache
 from ..core.collision import StickError, stick_bound, stick_reason
 from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
-from ..core.results import end_rule
+from ..core.problem import Problem
 from ..core.exponents import Exponents, as_exponents
 from ..core.uniform import UNIFORM_VERSION, UniformForm
 from .calibration import (CALIBRATION_VERSION, FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFORM, UNIFORM_OVERLAP, Calibration,
@@ -440,11 +440,11 @@ class Ladder:
         """Every rung with its bound over ``omega``, cost and a runner (None when not applicable);
         ``cached`` False: as with an empty cache (no rung that reads a build can run)."""
         builds = self._loaded(end) if cached else {}
-        req = Request(self.ex, np.asarray(omega, float).ravel(), tol, end, builds, self.stream)
+        req = Request(Problem(self.ex, end), np.asarray(omega, float).ravel(), tol, builds, self.stream)
         return [r.quote(req) for r in self.rungs]
 
     def _loaded(self, end: str) -> dict:
-        probe = Request(self.ex, np.ones(1), 1.0, end)
+        probe = Request(Problem(self.ex, end), np.ones(1), 1.0)
         for name in {r.needs(probe) for r in self.rungs if r.serves(probe)} - {None}:
             self._cached(name)
         return dict(self.built)
@@ -463,7 +463,7 @@ class Ladder:
             raise ParameterError("build", build, "must be True, False or None")
         if method is not None and method not in self.rung_names:
             raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
-        end = end_rule(end)
+        end = Problem(self.ex, end).end
         flat = om.ravel()
         if end == "overlap":
             self._refuse_sticking(flat)

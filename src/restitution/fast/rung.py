@@ -39,6 +39,7 @@ import numpy as np
 
 from ..core.conditioning import conditioning, plain_accuracy, plain_factor_floor
 from ..core.exponents import Exponents
+from ..core.problem import Problem, as_problem
 
 __all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
            "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "integrator_rtol", "reference_rtol", "reference_bound",
@@ -58,8 +59,8 @@ INTEGRATOR_BOUND_FACTOR = 10.0
 INTEGRATOR_BOUND_FLOOR = 5e-14
 
 
-def _integrator_factor_floor(ex, end: str) -> tuple[float, float]:
-    return plain_factor_floor(ex, end, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
+def _integrator_factor_floor(problem) -> tuple[float, float]:
+    return plain_factor_floor(problem, INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR)
 
 
 def _rtol_for(tol: float, factor: float, floor: float) -> float:
@@ -68,23 +69,24 @@ def _rtol_for(tol: float, factor: float, floor: float) -> float:
     return min(1e-6, max(1e-14, (tol - floor) / (2 * factor)))
 
 
-def integrator_bound(rtol: float, ex, end: str = "force") -> float:
-    """Relative bound of the compiled integrator at ``rtol`` for the exponents ``ex`` under ``end``."""
-    factor, floor = _integrator_factor_floor(ex, end)
+# ``problem`` below: a Problem, whose rule applies, or an Exponents (or a pair) with ``end``.
+def integrator_bound(rtol: float, problem, end: str | None = None) -> float:
+    """Relative bound of the compiled integrator at ``rtol`` for ``problem`` (under ``end``)."""
+    factor, floor = _integrator_factor_floor(as_problem(problem, end))
     return factor * rtol + floor
 
 
-def integrator_rtol(tol: float, ex, end: str = "force") -> float:
-    return _rtol_for(tol, *_integrator_factor_floor(ex, end))
+def integrator_rtol(tol: float, problem, end: str | None = None) -> float:
+    return _rtol_for(tol, *_integrator_factor_floor(as_problem(problem, end)))
 
 
-def reference_bound(rtol: float, ex, end: str = "force") -> float:
+def reference_bound(rtol: float, problem, end: str | None = None) -> float:
     """The scipy reference's (core.collision.collide) bound: what collide states before conditioning."""
-    return plain_accuracy(ex, rtol, end)
+    return plain_accuracy(as_problem(problem, end), rtol)
 
 
-def reference_rtol(tol: float, ex, end: str = "force") -> float:
-    return _rtol_for(tol, *plain_factor_floor(ex, end))
+def reference_rtol(tol: float, problem, end: str | None = None) -> float:
+    return _rtol_for(tol, *plain_factor_floor(as_problem(problem, end)))
 
 
 def highprec_digits(tol: float) -> int:
@@ -116,12 +118,11 @@ class Quote:
 
 @dataclass(frozen=True)
 class Request:
-    """What is asked (exponents, flat Omegas, tolerance, end rule) and what is built."""
+    """What is asked (the problem: exponents and end rule; flat Omegas, tolerance) and what is built."""
 
-    ex: Exponents
+    problem: Problem
     omega: np.ndarray
     tol: float
-    end: str = "force"
     builds: Mapping[str, Any] = field(default_factory=dict)
     stream: Any = None
 
@@ -138,15 +139,27 @@ class Request:
     def n(self) -> int:
         return int(self.omega.size)
 
+    def __post_init__(self):
+        object.__setattr__(self, "problem", as_problem(self.problem))   # an Exponents: the force rule
+
+    @property
+    def ex(self) -> Exponents:
+        return self.problem.ex
+
+    @property
+    def end(self) -> str:
+        """The end rule asked for."""
+        return self.problem.end
+
     @property
     def rules_differ(self) -> bool:
         """The force can vanish during contact (alpha > gamma): the two end rules differ."""
-        return self.ex.alpha > self.ex.gamma
+        return self.problem.rules_differ
 
     @property
     def rule(self) -> str:
         """The end rule whose numbers apply: "overlap" only where it differs from the force rule."""
-        return "overlap" if self.end == "overlap" and self.rules_differ else "force"
+        return self.problem.effective_end
 
 
 class Rung:
@@ -207,7 +220,7 @@ class Rung:
         reason = "" if math.isfinite(b) else "no finite measured error over these Omegas"
         widen = None
         if self.conditioned:
-            widen = lambda eps: float(np.max(conditioning(req.ex, req.end, eps, req.omega)))  # noqa: E731
+            widen = lambda eps: float(np.max(conditioning(req.problem, eps, req.omega)))  # noqa: E731
         return Quote(self.name, b, self.price(req), setting, reason,
                      run=lambda om: self.evaluate(req, built, setting, om),
                      coefficients=self.coefficients(req, built), widen=widen, exact=self.exact)

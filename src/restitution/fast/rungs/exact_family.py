@@ -55,7 +55,7 @@ class ExactFamily(Rung):
         # an eps below the smallest normal double (the overlap rule just above its threshold)
         # raises UnresolvedError here: every other rung would follow a creep there for minutes
         from ...core.exact_family import eps_bound, exact_eps
-        lowest = exact_eps(req.ex, req.lo, req.end)
+        lowest = exact_eps(req.problem, req.lo)
         return float(eps_bound(lowest)), "dashpot at (gamma+1) Omega" + (", overlap" if req.end == "overlap" else "")
 
     def coefficients(self, req, built):
@@ -64,4 +64,4 @@ class ExactFamily(Rung):
 
     def evaluate(self, req, built, setting, omega):
         from ...core.exact_family import exact_eps
-        return exact_eps(req.ex, omega, req.end)
+        return exact_eps(req.problem, omega)

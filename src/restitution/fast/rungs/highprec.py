@@ -73,7 +73,7 @@ class Highprec(Rung):
                 # mpmath has no proof of sticking and would follow a trapped creep for its whole
                 # step budget: the reference integrator's cheap run raises StickError first.
                 collide(req.ex, w, rtol=1e-8, end="overlap")
-            r = reference_collision(req.ex, w, digits=digits, end=req.end)
+            r = reference_collision(req.problem, w, digits=digits)
             if not r.error_estimate <= 10.0 ** (1 - digits):
                 raise ArithmeticError(f"mpmath reference did not converge at Omega = {w} "
                                       f"(estimate {float(r.error_estimate):.3g})")

@@ -56,7 +56,7 @@ class Integrator(Rung):
         return integrator_collision(problem, omega, rtol)
 
     def outside(self, req):
-        wmin = stiff_omega_min(req.ex)
+        wmin = stiff_omega_min(req.problem)
         if req.lo < wmin or req.hi > OMEGA_MAX:
             return f"Omega outside [{printed(wmin)}, {printed(OMEGA_MAX)}] (explicit method; stiff below)"
         return None
@@ -69,8 +69,8 @@ class Integrator(Rung):
         return self.cost * req.n * (1.0 + 1e-3 / req.lo)
 
     def bound(self, req, built):
-        rtol = integrator_rtol(req.tol, req.ex)
-        return integrator_bound(rtol, req.ex), f"rtol={rtol:.3g}"
+        rtol = integrator_rtol(req.tol, req.problem)
+        return integrator_bound(rtol, req.problem), f"rtol={rtol:.3g}"
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.ex, omega, integrator_rtol(req.tol, req.ex))
+        return reference_eps(req.problem, omega, integrator_rtol(req.tol, req.problem))

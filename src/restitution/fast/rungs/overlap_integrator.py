@@ -25,7 +25,7 @@ class OverlapIntegrator(Rung):
         return integrator_collision(problem, omega, rtol)
 
     def outside(self, req):
-        wmin = stiff_omega_min(req.ex, "overlap")
+        wmin = stiff_omega_min(req.problem)
         if req.lo < wmin or req.hi > OMEGA_MAX:
             return f"Omega outside [{wmin:g}, {printed(OMEGA_MAX)}] (explicit method; the creeping return is stiff below)"
         return None
@@ -34,9 +34,8 @@ class OverlapIntegrator(Rung):
         return self.cost * req.n * (1.0 + 3e-3 / req.lo)   # ~0.4/Omega steps of the creeping return
 
     def bound(self, req, built):
-        rtol = min(integrator_rtol(req.tol, req.ex, "overlap"), OVERLAP_RTOL_MAX)
-        return integrator_bound(rtol, req.ex, "overlap"), f"rtol={rtol:.3g}, overlap"
+        rtol = min(integrator_rtol(req.tol, req.problem), OVERLAP_RTOL_MAX)
+        return integrator_bound(rtol, req.problem), f"rtol={rtol:.3g}, overlap"
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.ex, omega, min(integrator_rtol(req.tol, req.ex, "overlap"), OVERLAP_RTOL_MAX),
-                             "overlap")
+        return reference_eps(req.problem, omega, min(integrator_rtol(req.tol, req.problem), OVERLAP_RTOL_MAX))

@@ -24,14 +24,14 @@ class Reference(Rung):
         return None
 
     def bound(self, req, built):
-        rtol = reference_rtol(req.tol, req.ex, req.rule)
+        rtol = reference_rtol(req.tol, req.problem)
         setting = f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
-        return reference_bound(rtol, req.ex, req.rule), setting
+        return reference_bound(rtol, req.problem), setting
 
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import collide
-        rtol = reference_rtol(req.tol, req.ex, req.rule)
-        return np.array([collide(req.ex, float(w), rtol=rtol, end=req.end).eps for w in np.ravel(omega)])
+        rtol = reference_rtol(req.tol, req.problem)
+        return np.array([collide(req.problem, float(w), rtol=rtol).eps for w in np.ravel(omega)])
 
     def collision(self, problem, omega, *, rtol, digits, t_eval=None):
         """scipy's DOP853/Radau in smooth variables (core.collision.collide), ``t_eval`` sampled."""
