@@ -211,7 +211,7 @@ def test_dem_contact_times_and_reach_come_from_the_closed_form():
         assert c.collision(1.0).rtol == 0.0
         assert math.isclose(c.contact_time(1.0), ref.tau_c * float(c.material.time_scale(1.0)), rel_tol=1e-10)
     # beyond the reference's Omega range the closed form still answers (no flag for lack of a method)
-    assert scaled_collision(("3/2", "1/4"), "force", 1e13).tau_c > 0
+    assert scaled_collision(("3/2", "1/4"), 1e13).tau_c > 0
 
 
 def test_typed_e_table_hertz_and_hooke_rows_agree_exactly():

@@ -54,6 +54,7 @@ from numpy.polynomial import chebyshev as cheb
 from . import asymptotics as asy
 from .errors import ParameterError
 from .exponents import as_exponents
+from .problem import problem_end
 from .overlap_limit import overlap_limit
 
 __all__ = ["UniformForm", "Skeleton", "OverlapSkeleton", "skeleton", "fit_uniform", "SHAPES", "DEGREE",
@@ -138,8 +139,10 @@ def _no_form(ex, why: str) -> ParameterError:
     return ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}", why)
 
 
-def skeleton(problem, end: str = "force") -> Skeleton | OverlapSkeleton:
-    """The fit-free part of the form for ``end``; ParameterError (saying why) where there is no form."""
+def skeleton(problem, end: str | None = None) -> Skeleton | OverlapSkeleton:
+    """The fit-free part of the form for the problem's end rule (``end`` with plain exponents);
+    ParameterError (saying why) where there is no form."""
+    end = problem_end(problem, end)
     ex = as_exponents(problem)
     if not ex.alpha > ex.gamma:
         why = ("alpha = gamma has an exact closed form (restitution.core.asymptotics.equal_exponents_eps)"
@@ -320,10 +323,11 @@ def _shapes(sk, end: str) -> list[tuple[float, int, int, float]]:
     return [(s, m0, m1, 0.0) for s, m0, m1 in SHAPES(sk.A)]
 
 
-def fit_uniform(problem, omega, eps, one_minus_eps, train, select, end: str = "force") -> UniformForm:
+def fit_uniform(problem, omega, eps, one_minus_eps, train, select, end: str | None = None) -> UniformForm:
     """Fit the form for ``end`` to reference values: coefficients on ``train`` (a boolean mask), the
     shape chosen by the largest relative error (eps, and 1 - eps for Omega >= 1) on ``select``. The
     returned form's bounds are still unset (they come from a third set of points)."""
+    end = problem_end(problem, end)   # a Problem brings its own rule
     ex = as_exponents(problem)
     sk = skeleton(ex, end)
     om = np.asarray(omega, dtype=float)

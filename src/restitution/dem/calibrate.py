@@ -19,6 +19,7 @@ from scipy.optimize import brentq, minimize_scalar
 from ..core.collision import OMEGA_RANGE, StickError
 from ..core.errors import DerivedRangeError, ParameterError, derived_in_range, real_array, require_positive_finite
 from ..core.exponents import as_exponents
+from ..core.problem import Problem
 from .contact import Contact, contact_eps
 
 __all__ = ["calibrate", "Calibrated"]
@@ -51,36 +52,36 @@ class Calibrated:
                                                                       if k not in ("D2", "end")}}
 
 
-def _eps_or_zero(problem, end: str, omega: float, rtol: float) -> float:
+def _eps_or_zero(problem, omega: float, rtol: float) -> float:
     try:
-        return contact_eps(problem, end, omega, rtol)
+        return contact_eps(problem, omega, rtol)
     except StickError:
         return 0.0   # the bodies never separate: the limit of eps from above
 
 
-def _eps_at(ex, end: str, log_omega: float, rtol: float) -> float:
-    return _eps_or_zero(ex, end, 10.0 ** log_omega, rtol)
+def _eps_at(problem, log_omega: float, rtol: float) -> float:
+    return _eps_or_zero(problem, 10.0 ** log_omega, rtol)
 
 
-def _omega_for(ex, end: str, target: float, rtol: float) -> float:
+def _omega_for(problem, target: float, rtol: float) -> float:
     """Omega with eps(Omega) = target: bracketed decade by decade from Omega = 1 (the ends of the
     range are slow to integrate and rarely needed), then Brent's method on log10 Omega."""
     lo, hi = math.log10(OMEGA_RANGE[0]), math.log10(OMEGA_RANGE[1])
-    s, e = 0.0, _eps_at(ex, end, 0.0, rtol)
+    s, e = 0.0, _eps_at(problem, 0.0, rtol)
     step = 1.0 if e < target else -1.0
     while True:
         s_next = min(max(s + step, lo), hi)
-        e_next = _eps_at(ex, end, s_next, rtol)
+        e_next = _eps_at(problem, s_next, rtol)
         if (e_next - target) * (e - target) <= 0.0:
             break
         if s_next in (lo, hi):
             reach = (e_next, 1.0) if step < 0 else (0.0, e_next)
             raise ParameterError("eps", target, f"must be in ({reach[0]:.6g}, {reach[1]:.12g}) for alpha = "
-                                                f"{ex.alpha}, gamma = {ex.gamma}, end = {end}: the eps of "
+                                                f"{problem.alpha}, gamma = {problem.gamma}, end = {problem.end}: the eps of "
                                                 f"Omega in [{OMEGA_RANGE[0]:g}, {OMEGA_RANGE[1]:g}]")
         s, e = s_next, e_next
     a, b = sorted((s, s_next))
-    return 10.0 ** brentq(lambda t: _eps_at(ex, end, t, rtol) - target, a, b, xtol=_LOG_OMEGA_XTOL,
+    return 10.0 ** brentq(lambda t: _eps_at(problem, t, rtol) - target, a, b, xtol=_LOG_OMEGA_XTOL,
                           rtol=4 * np.finfo(float).eps)
 
 
@@ -115,7 +116,7 @@ def calibrate(alpha, gamma, *, D1, eps, g, end: str = "force", rtol: float = 1e-
             raise ParameterError("eps", float(t), "must be in (0, 1): eps = 1 needs zero damping (D2 = 0), "
                                                   "eps = 0 infinite damping")
     end = Contact(ex.alpha, ex.gamma, D1, 1.0, end).end
-    d2s = [_d2_for(ex, D1, float(v), _omega_for(ex, end, float(t), rtol), float(t)) for v, t in zip(gs, targets)]
+    d2s = [_d2_for(ex, D1, float(v), _omega_for(Problem(ex, end), float(t), rtol), float(t)) for v, t in zip(gs, targets)]
     if len(d2s) == 1:
         best = d2s[0]
     else:
@@ -132,4 +133,4 @@ def calibrate(alpha, gamma, *, D1, eps, g, end: str = "force", rtol: float = 1e-
 
 
 def _safe_eps(contact: Contact, g: float, rtol: float) -> float:
-    return _eps_or_zero((contact.alpha, contact.gamma), contact.end, contact.omega(g), rtol)
+    return _eps_or_zero(contact.problem, contact.omega(g), rtol)

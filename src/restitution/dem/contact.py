@@ -13,6 +13,7 @@ import numpy as np
 from ..core.collision import collide
 from ..core.exponents import as_exponents
 from ..core.model import Material
+from ..core.problem import Problem, as_problem
 from ..core.results import end_rule
 
 __all__ = ["Contact", "contact_eps", "scaled_collision", "TIMES_OMEGA_MAX"]
@@ -25,7 +26,7 @@ __all__ = ["Contact", "contact_eps", "scaled_collision", "TIMES_OMEGA_MAX"]
 TIMES_OMEGA_MAX = 1e15
 
 
-def contact_eps(problem, end: str, omega: float, rtol: float = 1e-12) -> float:
+def contact_eps(problem, omega: float, rtol: float = 1e-12) -> float:
     """eps at one Omega to the scipy reference's bound at ``rtol`` (10 rtol + 1e-13, more for large
     exponents), from the cheapest rung of the ladder that meets it: under the overlap rule the compiled integrator
     (tens of microseconds) instead of the reference (20-200 ms), which calibrations call dozens of
@@ -38,18 +39,18 @@ def contact_eps(problem, end: str, omega: float, rtol: float = 1e-12) -> float:
     from ..core.errors import ParameterError
     from ..fast.ladder import epsilon
     from ..fast.rung import reference_bound
+    problem = as_problem(problem)
     try:
-        ex = as_exponents(problem)
-        tol = reference_bound(rtol, ex)
-        return float(epsilon(alpha=ex.alpha, gamma=ex.gamma, omega=[omega], tol=tol, end=end, build=False,
-                             cached=False).eps[0])
+        tol = reference_bound(rtol, problem.ex)   # the force rule's, as the reference states it
+        return float(epsilon(alpha=problem.alpha, gamma=problem.gamma, omega=[omega], tol=tol, end=problem.end,
+                             build=False, cached=False).eps[0])
     except StickError:
         raise
     except ParameterError:
-        return collide(problem, omega, rtol=rtol, end=end).eps
+        return collide(problem, omega, rtol=rtol).eps
 
 
-def scaled_collision(problem, end: str, omega: float, rtol: float = 1e-12):
+def scaled_collision(problem, omega: float, rtol: float = 1e-12):
     """The scaled collision at one Omega, by the most accurate means that exists for the law.
 
     In closed form for alpha = 2 gamma + 1 (:func:`restitution.core.exact_family.exact_collision`:
@@ -60,10 +61,9 @@ def scaled_collision(problem, end: str, omega: float, rtol: float = 1e-12):
 
     Parameters
     ----------
-    alpha, gamma
-        The exponents (rationals as strings, Fractions or numbers).
-    end : {"force", "overlap"}
-        The end-of-contact rule.
+    problem : Problem
+        The exponents and the end-of-contact rule (an Exponents or an (alpha, gamma) pair: the
+        force rule).
     omega : float
         The scaled parameter Omega > 0.
     rtol : float
@@ -82,23 +82,24 @@ def scaled_collision(problem, end: str, omega: float, rtol: float = 1e-12):
 
     Examples
     --------
-    >>> c = scaled_collision(("3/2", "1/4"), "overlap", 0.7)
+    >>> c = scaled_collision(Problem.of("3/2", "1/4", end="overlap"), 0.7)
     >>> c.rtol, round(c.eps, 10), c.ended_by
     (0.0, 0.1371174182, 'separation')
-    >>> scaled_collision(("3/2", "1/2"), "force", 0.7).rtol
+    >>> scaled_collision(("3/2", "1/2"), 0.7).rtol
     1e-12
     """
     from ..core.exact_family import exact_collision, in_family
     if in_family(problem):
-        return exact_collision(problem, omega, end)
-    return collide(problem, omega, rtol=rtol, end=end)
+        return exact_collision(problem, omega)
+    return collide(problem, omega, rtol=rtol)
 
 
-def _fast_tau_c(problem, end: str, omega: float, rtol: float) -> float:
+def _fast_tau_c(problem, omega: float, rtol: float) -> float:
     """tau_c of the compiled integrator (all but undamped contacts: no sticking, no creep)."""
     from ..fast.integrator import END_FAILED, collide_fast
-    ex = as_exponents(problem)
-    row = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, end == "overlap" and ex.alpha > ex.gamma)[0]
+    problem = as_problem(problem)
+    ex = problem.ex
+    row = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, problem.effective_end == "overlap")[0]
     if row[5] == END_FAILED:
         raise ArithmeticError(f"compiled integrator failed at Omega = {omega:g} (alpha={ex.alpha}, gamma={ex.gamma})")
     return float(row[3])
@@ -125,6 +126,11 @@ class Contact:
         object.__setattr__(self, "end", end_rule(self.end))
 
     @property
+    def problem(self) -> Problem:
+        """The exponents and this contact's end rule."""
+        return Problem.of(self.alpha, self.gamma, self.end)
+
+    @property
     def material(self) -> Material:
         return Material(self.alpha, self.gamma, self.D1, self.D2)
 
@@ -133,11 +139,11 @@ class Contact:
 
     def collision(self, g: float, rtol: float = 1e-12):
         """The scaled collision at impact speed g with this end rule (:func:`scaled_collision`)."""
-        return scaled_collision((self.alpha, self.gamma), self.end, self.omega(g), rtol)
+        return scaled_collision(self.problem, self.omega(g), rtol)
 
     def eps(self, g: float, rtol: float = 1e-12) -> float:
         """eps at impact speed g, to the reference's bound at rtol (:func:`contact_eps`)."""
-        return contact_eps((self.alpha, self.gamma), self.end, self.omega(g), rtol)
+        return contact_eps(self.problem, self.omega(g), rtol)
 
     def contact_time(self, g: float, rtol: float = 1e-12) -> float:
         """t_c in the units of D1, D2, g: the scaled tau_c times the time scale B(g) (the scipy
@@ -150,7 +156,7 @@ class Contact:
         om = self.omega(g)
         numeric = not in_family((self.alpha, self.gamma))
         with np.errstate(all="ignore"):
-            tau_c = (_fast_tau_c((self.alpha, self.gamma), self.end, om, rtol)
+            tau_c = (_fast_tau_c(self.problem, om, rtol)
                      if numeric and OMEGA_RANGE[1] < om <= TIMES_OMEGA_MAX else self.collision(g, rtol).tau_c)
             t_c = tau_c * float(self.material.time_scale(g))
         return derived_in_range("the contact time", t_c, inputs)
@@ -170,7 +176,7 @@ class Contact:
         if (g * g * (a + 1.0) / (2.0 * self.D1)) ** (1.0 / (a + 1.0)) < limit:
             return False
         try:
-            reach = scaled_collision((self.alpha, self.gamma), "force", self.omega(g)).x_b
+            reach = scaled_collision(self.problem.with_end("force"), self.omega(g)).x_b
         except ParameterError:
             return True
         return reach * float(self.material.length_scale(g)) >= limit

@@ -273,7 +273,7 @@ class Ladder:
         if name in (UNIFORM, UNIFORM_OVERLAP):
             end = "overlap" if name == UNIFORM_OVERLAP else "force"
             return _Build(f"uniform-{'overlap-' if end == 'overlap' else ''}{pair}-v{UNIFORM_VERSION}",
-                          lambda: build_uniform(ex, self._progress, end).as_dict(),
+                          lambda: build_uniform(Problem(ex, end), self._progress).as_dict(),
                           lambda d: self._uniform_valid(d, end), UniformForm.from_dict,
                           f"the {end} rule's uniform closed form for {for_pair}")
         if name == MPMATH:

@@ -27,6 +27,7 @@ import numpy as np
 
 from ..core.collision import collide
 from ..core.exponents import as_exponents
+from ..core.problem import Problem, as_problem
 from ..core.overlap_limit import overlap_limit
 from ..core.uniform import FORM_RANGE, UniformForm, fit_uniform, rel_errors
 from .master import reference_eps
@@ -63,13 +64,14 @@ def bound_points(problem) -> np.ndarray:
 class _References:
     """eps and 1 - eps at given Omegas for one pair and rule, as accurate as ``accuracy``."""
 
-    def __init__(self, ex, end: str):
-        self.ex, self.end, self.accuracy, self.law_checked = ex, end, REFERENCE_ACCURACY, None
+    def __init__(self, problem: Problem):
+        ex, end = problem.ex, problem.end
+        self.problem, self.end, self.accuracy, self.law_checked = problem, end, REFERENCE_ACCURACY, None
         if end == "overlap":
             lim = overlap_limit(ex)
             self.law = lim.eps
             at = np.array(LAW_CHECK)
-            diff = float(np.max(np.abs(reference_eps(ex, at, 1e-14, end) / lim.eps(at) - 1.0)))
+            diff = float(np.max(np.abs(reference_eps(problem, at, 1e-14) / lim.eps(at) - 1.0)))
             if not diff <= LAW_AGREEMENT:
                 raise ArithmeticError(f"alpha={ex.alpha}, gamma={ex.gamma}: the overlap rule's limit law differs "
                                       f"from the integrator by {diff:.2g} at Omega >= {LAW_BELOW:g}")
@@ -83,7 +85,7 @@ class _References:
         """eps from the compiled integrator at rtol 1e-14 (or the law)."""
         law = self._split(om)
         eps = np.empty(om.size)
-        eps[~law] = reference_eps(self.ex, om[~law], 1e-14, self.end)
+        eps[~law] = reference_eps(self.problem, om[~law], 1e-14)
         if law.any():
             eps[law] = self.law(om[law])
         return eps
@@ -92,7 +94,7 @@ class _References:
         """eps and 1 - eps from the scipy reference (1 - eps from the dissipated energy) or the law."""
         law = self._split(om)
         eps, ome = np.empty(om.size), np.empty(om.size)
-        runs = [collide(self.ex, float(w), rtol=1e-12, end=self.end) for w in om[~law]]
+        runs = [collide(self.problem, float(w), rtol=1e-12) for w in om[~law]]
         eps[~law] = [r.eps for r in runs]
         ome[~law] = [r.one_minus_eps for r in runs]
         if law.any():
@@ -101,18 +103,20 @@ class _References:
         return eps, ome
 
 
-def build_uniform(problem, progress=None, end: str = "force") -> UniformForm:
-    """Fit, choose and measure the uniform form for the end rule ``end`` (a few seconds)."""
-    ex = as_exponents(problem)
+def build_uniform(problem, progress=None, end: str | None = None) -> UniformForm:
+    """Fit, choose and measure the uniform form for the problem's end rule (or ``end`` with plain
+    exponents; a few seconds)."""
+    problem = as_problem(problem, end)
+    ex, end = problem.ex, problem.end
     say = progress or (lambda m: None)
-    refs = _References(ex, end)
+    refs = _References(problem)
     om = _grid()
     say(f"uniform form ({end} rule): {om.size} reference values for the fit")
     eps = refs.grid(om)
     ome = 1.0 - eps
     idx = np.arange(om.size)
     train, select = idx % 2 == 0, idx % 2 == 1
-    form = fit_uniform(ex, om, eps, ome, train, select, end)
+    form = fit_uniform(problem, om, eps, ome, train, select)
 
     say(f"uniform form ({end} rule): {N_TEST} reference collisions for its bound")
     tp = bound_points(ex)
