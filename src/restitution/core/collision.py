@@ -503,20 +503,18 @@ def _check_omega(field: str, omega) -> float:
 def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str | None = None) -> Collision:
     """Forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to end of contact.
 
-    ``alpha``, ``gamma``: anything Exponents.parse accepts (or an Exponents as ``alpha`` with
-    ``gamma=None``). ``omega``: in OMEGA_RANGE. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below
-    2.2e-14; the overlap rule runs at OVERLAP_RTOL_MAX at most). ``t_eval``: tau samples for
-    ``trajectory``. ``end``: the end-of-contact rule (results.END_RULES), the same relative accuracy
-    for both, however small eps (checked against mpmath down to eps = 5e-36). Under "overlap" the
-    bodies may provably never separate (StickError, see _Trap and _check_separates).
-    """
+    ``problem``: a Problem (its end rule applies), an Exponents or an (alpha, gamma) pair.
+    ``omega``: in OMEGA_RANGE. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below 2.2e-14; the overlap
+    rule runs at OVERLAP_RTOL_MAX at most). ``t_eval``: tau samples for ``trajectory``. ``end``: the
+    end-of-contact rule (results.END_RULES) for plain exponents, the same relative accuracy for both,
+    however small eps (checked against mpmath down to eps = 5e-36). Under "overlap" the bodies may
+    provably never separate (StickError, see _Trap and _check_separates)."""
     problem = as_problem(problem, end)   # a Problem brings its own rule
     ex = problem.ex
     omega = _check_omega("omega", omega)
     rtol = _check_rtol(rtol)
     t_eval = _check_t_eval(t_eval)
-    rule = problem.end
-    overlap = rule == "overlap"
+    rule, overlap = problem.end, problem.end == "overlap"
     law = Law.of(ex, omega, +1)
     if overlap:
         rtol = min(rtol, OVERLAP_RTOL_MAX)

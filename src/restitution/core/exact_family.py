@@ -77,9 +77,9 @@ def in_family(problem) -> bool:
 
     Parameters
     ----------
-    alpha, gamma
-        The exponents, anything :func:`restitution.core.exponents.as_exponents` accepts (or an
-        Exponents as ``alpha`` with ``gamma`` None).
+    problem
+        A Problem, an Exponents or an (alpha, gamma) pair (anything
+        :func:`restitution.core.exponents.as_exponents` accepts).
 
     Returns
     -------
@@ -111,8 +111,9 @@ def sticking_threshold(problem) -> Fraction:
 
     Parameters
     ----------
-    alpha, gamma
-        Exponents with alpha = 2 gamma + 1.
+    problem
+        A Problem (its end rule applies), an Exponents or an (alpha, gamma) pair, with
+        alpha = 2 gamma + 1.
 
     Returns
     -------
@@ -187,8 +188,9 @@ def exact_eps(problem, omega, end: str | None = None) -> np.ndarray:
 
     Parameters
     ----------
-    alpha, gamma
-        Exponents with alpha = 2 gamma + 1.
+    problem
+        A Problem (its end rule applies), an Exponents or an (alpha, gamma) pair, with
+        alpha = 2 gamma + 1.
     omega : float or array_like
         Omega > 0, finite.
     end : {"force", "overlap"}
@@ -253,8 +255,9 @@ def exact_collision(problem, omega, end: str | None = None, *, times: bool = Tru
 
     Parameters
     ----------
-    alpha, gamma
-        Exponents with alpha = 2 gamma + 1 (any rational gamma >= 0 the library accepts).
+    problem
+        A Problem (its end rule applies), an Exponents or an (alpha, gamma) pair, with
+        alpha = 2 gamma + 1 (any rational gamma >= 0 the library accepts).
     omega : float
         Omega > 0, finite (no range limit: nothing is integrated in time).
     end : {"force", "overlap"}
