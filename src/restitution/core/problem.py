@@ -3,8 +3,8 @@
 Every function that needs the pair (alpha, gamma) takes the problem as its first argument: a
 :class:`Problem`, an :class:`~restitution.core.exponents.Exponents` (the force rule), or an
 ``(alpha, gamma)`` pair as :meth:`Exponents.parse` reads it. One value travels instead of two
-numbers and a rule beside them, so no caller passes ``(ex, None, ...)`` to say "the pair is in
-the first argument". (``Law`` in :mod:`restitution.core.law` is something else: the force law at
+numbers and a rule beside them, and no caller passes None for gamma to say "the pair is in the
+first argument". (``Law`` in :mod:`restitution.core.law` is something else: the force law at
 one Omega, with its numbers, in one direction.)
 """
 
