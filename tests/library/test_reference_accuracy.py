@@ -41,7 +41,7 @@ def reference(alpha, gamma, omega):
 
 def relative_errors(alpha, gamma, omega):
     ref = reference(alpha, gamma, omega)
-    got = collision.collide(alpha, gamma, omega, rtol=1e-12)
+    got = collision.collide((alpha, gamma), omega, rtol=1e-12)
     truth = ref.as_floats()
     errors = {name: abs(getattr(got, name) - truth[name]) / abs(truth[name]) for name in COMPARED}
     if ref.ended_by == "force":
