@@ -47,7 +47,52 @@ def epsilon(*, alpha=None, gamma=None, omega=None, g=None, D1=None, D2=None, tol
     family alpha = 2 gamma + 1 (the linear dashpot at (gamma+1) Omega, taken first for those pairs),
     the reference and the mpmath integrators; for alpha <= gamma both rules give the same eps and
     every rung serves. ``problem=`` (a :class:`~restitution.core.problem.Problem`) gives the
-    exponents and the rule in one value instead of ``alpha``, ``gamma`` and ``end``."""
+    exponents and the rule in one value instead of ``alpha``, ``gamma`` and ``end``.
+
+    Parameters
+    ----------
+    alpha, gamma : str, int, Fraction or float
+        The exponents (:meth:`restitution.Exponents.parse`).
+    omega : float or array_like, optional
+        Omega, one or many (> 0). Give either ``omega`` or all of ``g``, ``D1`` and ``D2``.
+    g, D1, D2 : float or array_like, optional
+        Impact speed(s) and the material constants, from which Omega is computed
+        (:meth:`restitution.Material.omega`).
+    tol : float or None, optional
+        Relative tolerance on eps, at least 2.3e-16 (rounding of a double). ``None`` with a forced
+        ``method`` takes that method's bound as it comes.
+    method : str, optional
+        Force one rung by name (see the table of rungs); by default the cheapest that meets ``tol``.
+    build : bool, optional
+        ``False``: use only what needs no build (no master curve or fit is made or read from a
+        build this call would start).
+    end : {"force", "overlap"}, optional
+        The end-of-contact rule (default "force").
+    problem : Problem, optional
+        The exponents and the end rule in one value (then ``alpha``, ``gamma`` and ``end`` are
+        not needed; an ``end`` given too must agree).
+
+    Returns
+    -------
+    EpsResult
+        ``eps`` (an array shaped as the input), ``method``, ``error_bound`` (relative, over all
+        inputs), ``setting`` and ``candidates`` (the chooser's table).
+
+    Raises
+    ------
+    ParameterError
+        For an argument out of range, a tolerance no rung meets (naming the best bound available),
+        or, under the overlap rule, an Omega at which the bodies stick (StickError).
+
+    Examples
+    --------
+    >>> from restitution import epsilon
+    >>> r = epsilon(alpha=1, gamma=0, omega=[0.5, 2.0], tol=1e-12)   # the linear dashpot: exact
+    >>> r.method, r.error_bound < 1e-12
+    ('exact-family', True)
+    >>> r.eps.round(8)
+    array([0.20787958, 0.40082012])
+    """
     if problem is not None:
         problem = _problem(alpha, gamma, end, problem)
         alpha, gamma, end = problem.alpha, problem.gamma, problem.end
@@ -83,6 +128,49 @@ def collide(alpha=None, gamma=None, omega=None, *, method: str = "reference", rt
     ``end``: the end-of-contact rule, "force" (default) or "overlap" (see
     :data:`restitution.core.results.END_RULES`); every method serves both. With ``problem=`` the
     problem's own rule applies (an ``end`` given too must agree).
+
+    Parameters
+    ----------
+    alpha, gamma : str, int, Fraction or float
+        The exponents (:meth:`restitution.Exponents.parse`).
+    omega : float
+        Omega > 0 (its range depends on ``method``, above).
+    method : {"reference", "integrator", "highprec", "exact-family", "closed-form"}, optional
+        The method, by the names :func:`epsilon` gives its rungs ("fast", the compiled
+        integrator's former name, still runs, with a note on stderr).
+    rtol : float, optional
+        Relative tolerance of the integration (``reference``, ``integrator``).
+    t_eval : array_like, optional
+        Times at which to sample the trajectory (``reference`` only).
+    digits : int, optional
+        Working digits of ``highprec``.
+    end : {"force", "overlap"}, optional
+        The end-of-contact rule (default "force").
+    problem : Problem, optional
+        The exponents and the end rule in one value, instead of ``alpha``, ``gamma`` and ``end``.
+
+    Returns
+    -------
+    Collision
+        ``eps``, ``tau_b``, ``x_b`` (maximum compression), ``tau_c``, ``x_c`` (end of contact),
+        ``ended_by`` ("force" or "separation": how contact ended), ``rule`` (the rule asked),
+        ``error_bound``, ``one_minus_eps``.
+
+    Raises
+    ------
+    ParameterError
+        For an unknown method, an argument out of the method's range, or a closed form asked
+        outside alpha = 2 gamma + 1; StickError (a ParameterError) when under the overlap rule the
+        bodies never separate.
+
+    Examples
+    --------
+    >>> from restitution import collide
+    >>> c = collide("3/2", 1, 0.47)
+    >>> round(c.eps, 8), round(c.tau_b, 6), c.ended_by
+    (0.33067437, 1.784529, 'force')
+    >>> round(collide("3/2", 1, 0.47, method="integrator").eps, 8)
+    0.33067437
     """
     problem = _problem(alpha, gamma, end, problem)
     return _fast_collide(problem, omega, method=method, rtol=rtol, t_eval=t_eval, digits=digits)

@@ -51,6 +51,21 @@ def _add_exponents(p: argparse.ArgumentParser) -> None:
 
 
 def build_parser() -> argparse.ArgumentParser:
+    """The ``restitution`` command's parser, every subcommand included (the CLI reference page is
+    generated from it).
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        A parser whose errors are one line (exit status 2).
+
+    Examples
+    --------
+    >>> from restitution.cli import build_parser
+    >>> args = build_parser().parse_args(["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.47"])
+    >>> args.command, args.omega
+    ('collide', 0.47)
+    """
     parser = _OneLineParser(prog="restitution",
                             description="Coefficient of restitution of viscoelastic collisions.")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=_OneLineParser)
@@ -563,6 +578,39 @@ def _refuse_repeated_options(argv) -> None:
 
 
 def main(argv=None, out=None) -> int:
+    """Run the ``restitution`` command.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default: ``sys.argv[1:]``).
+    out : file-like, optional
+        Where the answer is written (default: standard output); notes go to standard error.
+
+    Returns
+    -------
+    int
+        The exit status: 0 on success, 1 where a subcommand reports a failed check (``scene``),
+        2 for a mistake in the arguments (one line on standard error, no traceback).
+
+    Raises
+    ------
+    SystemExit
+        Only from ``--help``, as argparse does.
+
+    Examples
+    --------
+    >>> from restitution.cli import main
+    >>> main(["collide", "--alpha", "1", "--gamma", "0", "--omega", "1"])   # doctest: +ELLIPSIS
+     alpha  1
+     gamma  0
+     omega  1
+       eps  0.298436059...
+    ...
+    0
+    >>> main(["collide", "--alpha", "1", "--gamma", "0", "--omega", "-1"])   # the message goes to stderr
+    2
+    """
     out = sys.stdout if out is None else out
     argv = sys.argv[1:] if argv is None else list(argv)
     try:

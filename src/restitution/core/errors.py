@@ -9,7 +9,32 @@ class ParameterError(ValueError):
     """A user-supplied value is outside what the model or a method supports.
 
     The message always names the field and the allowed range, so the CLI and the
-    workflow can show it as a single line without a traceback.
+    workflow can show it as a single line without a traceback. A subclass of ValueError.
+
+    Parameters
+    ----------
+    field : str
+        The argument or configuration field at fault (e.g. ``"D1"``).
+    value : object
+        The value given.
+    allowed : str
+        What would have been accepted, in words.
+
+    Attributes
+    ----------
+    field, value, allowed
+        The three parameters, kept for callers that report them their own way.
+
+    Examples
+    --------
+    >>> from restitution import Material, ParameterError
+    >>> try:
+    ...     Material("3/2", 1, D1=-1.0, D2=0.01)
+    ... except ParameterError as err:
+    ...     print(err)
+    ...     print(err.field)
+    D1 = -1.0: must be a finite number > 0
+    D1
     """
 
     def __init__(self, field: str, value: object, allowed: str):

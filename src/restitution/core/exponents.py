@@ -116,7 +116,42 @@ def np_bool_types() -> tuple:
 
 @dataclass(frozen=True)
 class Exponents:
-    """alpha (elastic) and gamma (dissipative) as rationals q_alpha/p and q_gamma/p."""
+    """alpha (elastic) and gamma (dissipative) as rationals q_alpha/p and q_gamma/p.
+
+    Build one with :meth:`Exponents.parse`, which accepts what the rest of the package accepts:
+    exact strings (``"3/2"``), integers, Fractions, or floats within 1e-6 of a rational with
+    denominator at most 12 (the difference is kept in ``alpha_error``, ``gamma_error``).
+
+    Parameters
+    ----------
+    alpha : Fraction
+        Elastic exponent, in (0, 8].
+    gamma : Fraction
+        Dissipative exponent, in [0, 8].
+    alpha_error, gamma_error : float, optional
+        How far a float given was from the rational taken (0 for exact input).
+
+    Attributes
+    ----------
+    p : int
+        Least common denominator of alpha and gamma: the series are in powers of tau^(1/p).
+    q_alpha, q_gamma : int
+        The numerators over ``p``.
+
+    Raises
+    ------
+    ParameterError
+        From :meth:`parse`, for an exponent outside its range or a float near no such rational.
+
+    Examples
+    --------
+    >>> from restitution import Exponents
+    >>> ex = Exponents.parse("3/2", 1)
+    >>> ex.alpha, ex.gamma, ex.p, ex.q_alpha, ex.q_gamma
+    (Fraction(3, 2), Fraction(1, 1), 2, 3, 2)
+    >>> Exponents.parse(1.5, "1/2").gamma
+    Fraction(1, 2)
+    """
 
     alpha: Fraction
     gamma: Fraction

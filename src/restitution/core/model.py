@@ -40,7 +40,34 @@ def positive_speeds(g, field: str = "g") -> np.ndarray:
 
 @dataclass(frozen=True)
 class Material:
-    """A viscoelastic pair: force-law exponents and the constants D1 (elastic), D2 (dissipative)."""
+    """A viscoelastic pair: force-law exponents and the constants D1 (elastic), D2 (dissipative).
+
+    The contact law is xi'' + D1 xi^alpha + D2 xi^gamma xi' = 0 with xi'(0) = g; :meth:`omega` gives
+    the one parameter of the scaled problem, Omega = D1 g^((alpha-1-2 gamma)/(gamma+1))
+    D2^(-(alpha+1)/(gamma+1)), on which eps depends.
+
+    Parameters
+    ----------
+    alpha, gamma : str, int, Fraction or float
+        The exponents, as :meth:`Exponents.parse` takes them (``"3/2"``, ``1``).
+    D1, D2 : float
+        Elastic and dissipative constants, finite and > 0, in any consistent units.
+
+    Raises
+    ------
+    ParameterError
+        For an exponent outside its range or a D1, D2 that is not a finite number > 0; and from
+        :meth:`omega`, for speeds that are not > 0 or an Omega outside double precision.
+
+    Examples
+    --------
+    >>> from restitution import Material
+    >>> m = Material(alpha="3/2", gamma=1, D1=0.000296, D2=0.0109)    # the paper's material
+    >>> round(m.omega(0.1), 6)
+    0.472616
+    >>> m.omega([0.01, 0.1]).round(4)                                 # vectorised over g
+    array([2.6577, 0.4726])
+    """
 
     exponents: Exponents
     D1: float

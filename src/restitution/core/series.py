@@ -248,9 +248,45 @@ def series_for(problem, omega_order: int = 4, max_power=11,
                direction: str = "forward", progress=None) -> PerturbationSeries:
     """Exact series of the forward or inverse collision up to Omega^omega_order and tau^max_power.
 
-    The cost grows about as the third to fourth power of ``max_power`` (the rationals grow too) and
-    linearly in ``omega_order``: the largest accepted sizes take minutes. ``progress(done, total)``,
-    if given, is called after each power of tau is derived (then the result is not kept for reuse).
+    x(tau; Omega) = sum_n Omega^n x_n(tau), each x_n a finite sum of rational coefficients times
+    powers tau^(k/p) (p the exponents' common denominator), derived in exact arithmetic.
+
+    Parameters
+    ----------
+    alpha, gamma : str, int, Fraction or float
+        The exponents (:meth:`Exponents.parse`).
+    omega_order : int, optional
+        Highest power of Omega kept (0-64).
+    max_power : int, str or Fraction, optional
+        Highest power of tau kept in each x_n (a rational such as ``"11"`` or ``"21/2"``).
+    direction : {"forward", "inverse"}, optional
+        The collision from first contact, or the inverse one (time run backwards from the end of
+        contact, x~'' + Omega~ x~^alpha - x~^gamma x~' = 0).
+    progress : callable, optional
+        ``progress(done, total)``, called after each power of tau is derived (then the result is
+        not kept for reuse). The cost grows about as the third to fourth power of ``max_power``
+        and linearly in ``omega_order``.
+
+    Returns
+    -------
+    PerturbationSeries
+        ``.terms(n)``: the (power of tau, coefficient) pairs of x_n, both Fractions;
+        ``.evaluate(tau, omega, order=...)``: the partial sum in floating point.
+
+    Raises
+    ------
+    ParameterError
+        For an unknown direction, an order outside 0-64 or a ``max_power`` beyond the engine's
+        limit for these exponents.
+
+    Examples
+    --------
+    >>> from restitution import perturbation_series
+    >>> ps = perturbation_series("3/2", 1, omega_order=2, max_power=5)
+    >>> ps.terms(0)[:2]                                  # x0 = tau - tau^3/6 + ...
+    [(Fraction(1, 1), Fraction(1, 1)), (Fraction(3, 1), Fraction(-1, 6))]
+    >>> ps.terms(1)
+    [(Fraction(7, 2), Fraction(-4, 35))]
     """
     ex = as_exponents(problem)
     if direction not in DIRECTIONS:

@@ -32,7 +32,24 @@ _LOG_OMEGA_XTOL = 1e-13
 @dataclass(frozen=True)
 class Calibrated:
     """A calibration: the D2 found, the eps recomputed forward at it for every g, and the rms
-    residual of eps against the targets (0 up to rounding for one pair)."""
+    residual of eps against the targets (0 up to rounding for one pair).
+
+    Parameters
+    ----------
+    contact : Contact
+        The calibrated contact (its ``D2`` is the answer).
+    g, target, eps : tuple of float
+        The speeds, the eps asked and the eps the contact gives there.
+    residual : float
+        Root-mean-square of eps - target.
+
+    Examples
+    --------
+    >>> from restitution.dem import calibrate
+    >>> cal = calibrate("3/2", 1, D1=1e5, eps=0.6, g=0.3)
+    >>> round(cal.D2, 3), cal.residual < 1e-12
+    (14369.225, True)
+    """
 
     contact: Contact
     g: tuple
@@ -102,6 +119,40 @@ def calibrate(alpha, gamma, *, D1, eps, g, end: str = "force", rtol: float = 1e-
     ``eps`` and ``g``: one target at one speed, or equal-length sequences (least squares in eps over
     log D2, the rms residual reported). ``end``: "force" or "overlap". Raises ParameterError (one
     line) for targets outside (0, 1) or beyond the reachable range.
+
+    Parameters
+    ----------
+    alpha, gamma : str, int, Fraction or float
+        The exponents (:meth:`restitution.Exponents.parse`).
+    D1 : float
+        The elastic constant per unit effective mass (> 0).
+    eps : float or sequence of float
+        Target coefficient(s) of restitution, in (0, 1).
+    g : float or sequence of float
+        The impact speed of each target (> 0).
+    end : {"force", "overlap"}, optional
+        The end-of-contact rule.
+    rtol : float, optional
+        Tolerance of the integrations behind each eps.
+
+    Returns
+    -------
+    Calibrated
+        ``.D2``, ``.contact``, the eps it gives at each ``g`` and the residual.
+
+    Raises
+    ------
+    ParameterError
+        For targets outside (0, 1), targets no damping reaches, or mismatched ``eps`` and ``g``.
+
+    Examples
+    --------
+    >>> from restitution.dem import calibrate
+    >>> cal = calibrate("3/2", "1/2", D1=1.5e8, eps=0.6, g=1.0, end="overlap")
+    >>> round(cal.eps[0], 12)
+    0.6
+    >>> cal.contact.end
+    'overlap'
     """
     ex = as_exponents(alpha, gamma)
     D1 = require_positive_finite("D1", D1)

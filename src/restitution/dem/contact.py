@@ -108,7 +108,34 @@ def _fast_tau_c(problem, omega: float, rtol: float) -> float:
 @dataclass(frozen=True)
 class Contact:
     """delta'' + D1 delta^alpha + D2 delta^gamma delta' = 0 (per unit effective mass) ended by ``end``
-    ("force": contact ends where the normal force vanishes, "overlap": where delta returns to 0)."""
+    ("force": contact ends where the normal force vanishes, "overlap": where delta returns to 0).
+
+    One contact of a DEM simulation in physical units; the functions of
+    :mod:`restitution.dem.codes` build one from a code's options.
+
+    Parameters
+    ----------
+    alpha, gamma : str, int, Fraction or float
+        The exponents (:meth:`restitution.Exponents.parse`).
+    D1, D2 : float
+        Elastic and dissipative constants per unit effective mass (> 0).
+    end : {"force", "overlap"}, optional
+        The end-of-contact rule.
+
+    Raises
+    ------
+    ParameterError
+        For an exponent, constant or end rule out of range.
+
+    Examples
+    --------
+    >>> from restitution.dem import Contact
+    >>> c = Contact("3/2", "1/2", D1=1.5e8, D2=2.0e4, end="overlap")
+    >>> round(c.eps(1.0), 5)                       # eps at an impact speed of 1 (m/s)
+    0.75576
+    >>> round(c.contact_time(1.0) * 1e3, 4)        # contact time (ms)
+    1.783
+    """
 
     alpha: Fraction
     gamma: Fraction

@@ -77,7 +77,43 @@ def recommended_dt(contact: Contact, g: float, tol: float = 1e-3, *, eps: float 
                    contact_time: float | None = None) -> TimeStep:
     """dt = t_c / N that keeps the velocity-Verlet eps within relative ``tol`` of the exact eps.
     ``eps`` and ``contact_time``, when the caller has them already (from a faster rung than the
-    reference integrator this would run), are taken as the exact values."""
+    reference integrator this would run), are taken as the exact values.
+
+    Velocity Verlet with the damping on the half-step velocity is the scheme DEM codes use
+    (LAMMPS' among them); its eps converges at first order in dt. The study runs it at 100, 200
+    and 400 steps per contact, takes the largest N times the error as the first-order coefficient, and
+    checks the step it recommends.
+
+    Parameters
+    ----------
+    contact : Contact
+        The contact.
+    g : float
+        Impact speed.
+    tol : float, optional
+        Relative error allowed in eps, in [1e-8, 0.5].
+    eps, contact_time : float, optional
+        The exact eps and contact time, if already known.
+
+    Returns
+    -------
+    TimeStep
+        ``dt``, ``contact_time``, ``steps_per_contact``, ``first_order_coefficient``, ``tol`` and
+        the ``study`` (steps per contact, relative error).
+
+    Raises
+    ------
+    ParameterError
+        For a ``tol`` out of range.
+
+    Examples
+    --------
+    >>> from restitution.dem import Contact, recommended_dt
+    >>> c = Contact("3/2", "1/2", D1=1.5e8, D2=2.0e4, end="overlap")
+    >>> step = recommended_dt(c, 1.0, tol=1e-3)
+    >>> step.steps_per_contact > 10, step.dt < step.contact_time
+    (True, True)
+    """
     tol = number_in("tol", tol, 1e-8, 0.5)
     t_c = contact.contact_time(g) if contact_time is None else contact_time
     exact = contact.eps(g) if eps is None else eps

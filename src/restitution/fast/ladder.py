@@ -135,6 +135,37 @@ class EpsResult:
     ``setting`` describes the rung's parameter (e.g. "rtol=1e-10"); ``candidates`` is the chooser's
     table: one dict per rung with its bound over these inputs (inf when outside its domain), the
     expected cost and why it was or was not eligible.
+
+    Parameters
+    ----------
+    eps : numpy.ndarray
+        The coefficients of restitution, shaped as the Omega given.
+    method : str
+        The rung that answered.
+    error_bound : float
+        Its relative error bound over all the inputs.
+    omega : numpy.ndarray
+        The Omegas.
+    alpha, gamma : Fraction
+        The exponents.
+    tol : float or None
+        The tolerance asked.
+    setting : str, optional
+        The rung's parameter.
+    candidates : tuple of dict, optional
+        The chooser's table (``method``, ``bound``, ``cost``, ``available``, ``reason``).
+    coefficients : dict, optional
+        The closed form's numbers, when that rung answered.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from restitution import epsilon
+    >>> r = epsilon(alpha=1, gamma=0, omega=0.5)
+    >>> r.method, float(np.asarray(r).round(6))          # an EpsResult is array-like
+    ('exact-family', 0.20788)
+    >>> r.as_dict()["method"], r.as_dict()["eps"] == r.eps.ravel().tolist()   # what --json prints
+    ('exact-family', True)
     """
 
     eps: np.ndarray

@@ -1,0 +1,75 @@
+"""Every public entry point has a numpydoc docstring, and every Examples section in the package runs
+(issue 45): the API reference is generated from these docstrings, so an example that no longer runs
+would be a wrong page. Doctests run here, under tests/conftest.py's hermetic HOME and caches, rather
+than through pytest's --doctest-modules, which would collect src/ outside that conftest."""
+
+from __future__ import annotations
+
+import doctest
+import importlib
+import inspect
+import pkgutil
+
+import pytest
+
+import restitution
+import restitution.cli
+import restitution.dem
+
+#: The public entry points: the package's and the DEM layer's __all__, and the CLI's.
+PUBLIC = ([getattr(restitution, n) for n in restitution.__all__]
+          + [getattr(restitution.dem, n) for n in restitution.dem.__all__]
+          + [restitution.cli.main, restitution.cli.build_parser])
+#: Sections each must have; Returns only for functions, Raises where an error can reach the caller
+#: (a class documents its constructor's parameters).
+SECTIONS = ("Parameters", "Examples")
+
+
+def _name(obj) -> str:
+    return f"{obj.__module__}.{obj.__qualname__}"
+
+
+@pytest.mark.parametrize("obj", PUBLIC, ids=_name)
+def test_every_public_entry_point_has_a_numpydoc_docstring(obj):
+    from numpydoc.docscrape import ClassDoc, FunctionDoc
+    pytest.importorskip("numpydoc", reason="the docs group: make docs or make test installs it")
+    doc = ClassDoc(obj) if inspect.isclass(obj) else FunctionDoc(obj)
+    for section in SECTIONS:
+        if section == "Parameters" and obj is restitution.cli.build_parser:
+            continue        # takes none
+        assert doc[section], f"{_name(obj)} has no {section} section"
+    if not inspect.isclass(obj):
+        assert doc["Returns"], f"{_name(obj)} has no Returns section"
+
+
+def _modules():
+    yield restitution
+    for info in pkgutil.walk_packages(restitution.__path__, "restitution."):
+        yield importlib.import_module(info.name)
+
+
+MODULES = sorted({m.__name__ for m in _modules()})
+
+
+def _doctests(module_name: str):
+    module = importlib.import_module(module_name)
+    finder = doctest.DocTestFinder(exclude_empty=True)
+    # only the tests defined in this module (a name it imports has its examples run where defined)
+    return [t for t in finder.find(module, module_name) if t.examples
+            and (t.filename or "").endswith(module.__file__.rsplit("/", 1)[-1])]
+
+
+WITH_EXAMPLES = [m for m in MODULES if _doctests(m)]
+
+
+def test_the_public_entry_points_have_examples_to_run():
+    assert {"restitution.api", "restitution.cli", "restitution.dem.calibrate"} <= set(WITH_EXAMPLES)
+
+
+@pytest.mark.parametrize("module_name", WITH_EXAMPLES)
+def test_docstring_examples_run(module_name):
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    for test in _doctests(module_name):
+        runner.run(test)
+    result = runner.summarize(verbose=False)
+    assert result.failed == 0, f"{result.failed} of {result.attempted} examples failed in {module_name}"
