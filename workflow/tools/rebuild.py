@@ -36,7 +36,8 @@ ROOT = Path(__file__).resolve().parents[2]
 MANIFEST = ROOT / "tests" / "expected" / "manifest.json"
 #: Not copied into a clean build: environments, outputs, caches.
 IGNORE = shutil.ignore_patterns(".venv", ".git", "results", ".snakemake", "build", "logs", "notebooks",
-                                "__pycache__", ".pytest_cache", "*.egg-info", ".ipynb_checkpoints")
+                                "__pycache__", ".pytest_cache", "*.egg-info", ".ipynb_checkpoints",
+                                "_build")   # docs/_build: the built site and its notebook cache
 ENV = {"SOURCE_DATE_EPOCH": "1700000000", "PYTHONHASHSEED": "0"}
 
 #: Tolerances for the reference tables (relative, plus an absolute floor for values near 0).
