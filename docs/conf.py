@@ -46,6 +46,8 @@ nb_execution_cache_path = os.environ.get("RESTITUTION_DOCS_CACHE", str(HERE / "_
 nb_execution_raise_on_error = True
 nb_execution_timeout = 600
 nb_execution_show_tb = True
+# the library's notes on stderr (builds it makes, their cache paths) are the machine's, not the lesson's
+nb_output_stderr = "remove"
 # the tutorials run in docs/tutorials/, where the small decks and configs they write stay out of the tree
 nb_execution_in_temp = True
 myst_enable_extensions = ["colon_fence", "dollarmath"]

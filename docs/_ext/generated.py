@@ -87,31 +87,38 @@ def schema_page(title: str, source: Path, intro: str) -> str:
     schema = yaml.safe_load(source.read_text())
     rows: list = []
     _rows(schema, schema, "", set(schema.get("required", ())), rows)
-    lines = [f"# {title}", "", intro, "", _cell(schema.get("description", "")), "",
-             "| field | required | value | default | what |", "| --- | --- | --- | --- | --- |"]
-    lines += ["| " + " | ".join([f"`{p}`", r, _cell(t), _cell(d), _cell(w)]) + " |" for p, r, t, d, w in rows]
+    # one entry per field rather than a table: the descriptions are sentences, too wide for columns
+    lines = [f"# {title}", "", intro, "", _cell(schema.get("description", "")), ""]
+    for path, required, value, default, what in rows:
+        facts = "; ".join(filter(None, ["required" if required else "", _cell(value),
+                                        f"default {_cell(default)}" if default else ""]))
+        lines.append(f"- **`{path}`** ({facts}){': ' + _cell(what) if what else ''}")
     return "\n".join(lines) + "\n"
 
 
 def rungs_page() -> str:
-    """The method ladder's rungs in the order the chooser lists them, from the registry itself."""
-    from restitution.fast.rungs import RUNGS
+    """The method ladder's rungs in the order the chooser lists them, from the registry itself: the
+    relation rungs of the full ladder (restitution.api.RELATIONS), then restitution.fast.rungs.RUNGS."""
+    from restitution.api import RELATIONS
+    from restitution.fast.rungs import ladder_rungs
+    rungs = ladder_rungs(RELATIONS)
     lines = ["# The rungs of the method ladder", "",
-             "Generated from the registry `restitution.fast.rungs.RUNGS` when the documentation is built, in",
-             "the order the chooser (`restitution.fast.ladder`) lists them. The relation rungs (`paper-c`,",
-             "`fitted-c`, `perturbation-N<n>`) come first, made from the relations a ladder is given.",
-             "A name may be served by two rungs, one per end rule. `cost` is the rung's declared price per",
-             "point, which the chooser compares; `exact` rungs are taken first wherever they serve.", "",
-             "| name | class | end rules | exact | cost per point (declared) | what it computes |",
-             "| --- | --- | --- | --- | --- | --- |"]
-    for rung in RUNGS:
+             "Generated from the registry (`restitution.fast.rungs.ladder_rungs` with the full ladder's",
+             "relations, `restitution.api.RELATIONS`) when the documentation is built, in the order the",
+             "chooser (`restitution.fast.ladder`) lists them. A name may be served by two rungs, one per end",
+             "rule. The cost is the rung's declared price per point, which the chooser compares (\"per",
+             "request\": priced from the request); exact rungs are taken first wherever they serve.",
+             "How the chooser uses them: {doc}`../../explanation/ladder`.", "",
+             "| rung | end rules | exact | declared cost per point |", "| --- | --- | --- | --- |"]
+    for i, rung in enumerate(rungs):
+        lines.append(f"| [`{rung.name}`](#rung-{i}) | {', '.join(rung.ends)} | {'yes' if rung.exact else ''} | "
+                     + (f"{rung.cost:.1e} s" if rung.cost else "per request") + " |")
+    for i, rung in enumerate(rungs):
         cls = type(rung)
         # the class's own docstring, else its module's: a subclass without one would show the base's
         doc = inspect.cleandoc(cls.__dict__.get("__doc__") or sys.modules[cls.__module__].__doc__ or "")
-        first = _plain(doc.split("\n\n")[0])
-        lines.append("| " + " | ".join([f"`{rung.name}`", f"`{cls.__module__}.{cls.__name__}`",
-                                          ", ".join(rung.ends), "yes" if rung.exact else "",
-                                          f"{rung.cost:.1e}" if rung.cost else "per request", _cell(first)]) + " |")
+        lines += ["", f"(rung-{i})=", f"## `{rung.name}` ({', '.join(rung.ends)})", "",
+                  f"`{cls.__module__}.{cls.__name__}`", "", _plain(doc.split("\n\n")[0])]
     return "\n".join(lines) + "\n"
 
 
@@ -119,10 +126,12 @@ def speed_page() -> str:
     """The recorded speed/accuracy snapshot as a table (benchmarks/recorded/speed_accuracy.csv)."""
     with open(ROOT / "benchmarks" / "recorded" / "speed_accuracy.csv", newline="") as f:
         rows = list(csv.DictReader(f))
-    cols = ["alpha", "gamma", "method", "setting", "evals_per_s", "max_rel_err", "median_rel_err",
-            "omega_min", "omega_max", "note"]
-    lines = ["| " + " | ".join(c.replace("_", " ") for c in cols) + " |", "|" + " --- |" * len(cols)]
-    lines += ["| " + " | ".join(_cell(r.get(c, "")) for c in cols) + " |" for r in rows]
+    # the columns a reader compares; the CSV has the rest (median error, the Omega range of each row)
+    head = ["alpha, gamma", "method", "setting", "evaluations per second", "max relative error", "note"]
+    lines = ["| " + " | ".join(head) + " |", "|" + " --- |" * len(head)]
+    lines += ["| " + " | ".join(_cell(c) for c in (f"{r['alpha']}, {r['gamma']}", r["method"], r["setting"],
+                                                 r["evals_per_s"], r["max_rel_err"], r.get("note", ""))) + " |"
+              for r in rows]
     return "\n".join(lines) + "\n"
 
 

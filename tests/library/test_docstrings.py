@@ -31,8 +31,8 @@ def _name(obj) -> str:
 
 @pytest.mark.parametrize("obj", PUBLIC, ids=_name)
 def test_every_public_entry_point_has_a_numpydoc_docstring(obj):
-    from numpydoc.docscrape import ClassDoc, FunctionDoc
     pytest.importorskip("numpydoc", reason="the docs group: make docs or make test installs it")
+    from numpydoc.docscrape import ClassDoc, FunctionDoc
     doc = ClassDoc(obj) if inspect.isclass(obj) else FunctionDoc(obj)
     for section in SECTIONS:
         if section == "Parameters" and obj is restitution.cli.build_parser:
