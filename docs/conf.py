@@ -67,4 +67,5 @@ html_theme_options = {
     "secondary_sidebar_items": ["page-toc"],
 }
 html_static_path = ["_static"]
+html_css_files = ["custom.css"]
 html_last_updated_fmt = None
