@@ -99,7 +99,34 @@ for line in dict.fromkeys(item["exact_line"] for item in audit["pairs"] + audit[
     print(line)
 
 # %% [markdown]
-# Paste those lines over the deck's own (or use `damping coeff_restitution`, whose e is the eps under
-# LAMMPS' default end rule). The [LAMMPS page](../howto/lammps.md#what-does-my-deck-really-give) lists
-# what the reader understands (variables, `include`, `read_data`, walls, LIGGGHTS' `fix
-# property/global`) and what it refuses.
+# ## A LIGGGHTS deck
+#
+# The same command reads LIGGGHTS input: its materials come from `fix property/global`, and with
+# `limitForce on` contact ends where the force vanishes, so the typed coefficientRestitution is
+# not the eps either (LIGGGHTS' default, `limitForce off`, gives the typed e exactly).
+
+# %%
+Path("in.liggghts").write_text("""\
+atom_style      granular
+units           si
+region          box block 0 0.1 0 0.1 0 0.1
+create_box      1 box
+create_atoms    1 single 0.05 0.05 0.05
+set             type 1 diameter 0.002
+set             type 1 density 2500
+fix             m1 all property/global youngsModulus peratomtype 5.e7
+fix             m2 all property/global poissonsRatio peratomtype 0.3
+fix             m3 all property/global coefficientRestitution peratomtypepair 1 0.5
+fix             m4 all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style      gran model hertz tangential history limitForce on
+pair_coeff      * *
+run             1
+""")
+print(subprocess.run([exe, "deck", "in.liggghts", "--g", "1"], capture_output=True, text=True).stdout)
+
+# %% [markdown]
+# Paste the printed lines over the deck's own: the LAMMPS `pair_coeff` and `fix wall/gran` lines
+# above (or use `damping coeff_restitution`, whose e is the eps under LAMMPS' default end rule), the
+# LIGGGHTS `coefficientRestitution` line here. The
+# [LAMMPS page](../howto/lammps.md#what-does-my-deck-really-give) lists what the reader understands
+# (variables, `include`, `read_data`, walls, LIGGGHTS' `fix property/global`) and what it refuses.

@@ -114,10 +114,10 @@ def collide(alpha=None, gamma=None, omega=None, *, method: str = "reference", rt
       trajectory; relative accuracy 10 rtol + 1e-13, for ``one_minus_eps`` too (from the dissipated
       energy; by subtraction where it is 1/4 or more), as ``error_bound`` and ``one_minus_eps_bound``
       state them (the first widened near the overlap rule's sticking boundary).
-    * ``"integrator"``: the compiled integrator (:mod:`restitution.fast.integrator`), tens of
-      microseconds; Omega in [1e-100, 1e14] (alpha <= gamma, and the overlap rule: from 1e-5, where
-      the return is not stiff); no ``one_minus_eps``. Its old name here, ``"fast"``, still works
-      and says so on stderr.
+    * ``"integrator"``: the compiled integrator (:mod:`restitution.fast.integrator`), far cheaper
+      than the reference; Omega in [1e-100, 1e14] (alpha <= gamma, and the overlap rule: from 1e-5,
+      where the return is not stiff); no ``one_minus_eps``. Its old name here, ``"fast"``, still
+      works and says so on stderr.
     * ``"highprec"``: mpmath Taylor series at ``digits`` digits (:mod:`restitution.core.highprec`),
       rounded to doubles; ``rtol`` of the result is 10^(1 - digits).
     * ``"exact-family"`` and ``"closed-form"``: exact, for alpha = 2 gamma + 1 only: the linear

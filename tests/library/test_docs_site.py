@@ -194,3 +194,14 @@ def test_no_timing_is_typed_in_prose():
         for m in TIMING.finditer(_prose(path)):
             found.append(f"{path.relative_to(ROOT)}: {m.group(0)!r}")
     assert not found, "\n".join(found)
+
+
+@pytest.mark.slow
+def test_no_timing_is_typed_in_the_api_pages(site):
+    """The API pages are the public docstrings: the same rule holds for them."""
+    import html
+    found = []
+    for page in sorted((site / "reference" / "_autosummary").glob("*.html")):
+        text = html.unescape(re.sub(r"<[^>]+>", " ", page.read_text()))
+        found += [f"{page.name}: {m.group(0)!r}" for m in TIMING.finditer(text)]
+    assert not found, "\n".join(found)
