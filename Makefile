@@ -204,7 +204,7 @@ bench: $(STAMP)
 	$(BIN)/python benchmarks/cli_speed.py --out results/bench
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) bench
 
-# A DEM scene (README "Scenes"): the cheapest contact model per contact, its input lines and a
+# A DEM scene (docs/howto/scenes.md): the cheapest contact model per contact, its input lines and a
 # report with plots under results/scenes/<name>/ (the name is the scene file's `name`).
 scene: $(STAMP)
 	@test -n "$(SCENE)" || { echo "make scene needs SCENE=<scene file>, e.g. make scene SCENE=scenes/small.yaml" >&2; exit 2; }

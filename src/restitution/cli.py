@@ -115,7 +115,7 @@ def add_scene_subcommand(subparsers) -> None:
     s = subparsers.add_parser(
         "scene", help="the cheapest contact model per contact of a DEM scene, and its input lines",
         description="Reads a scene file (YAML: materials, species, walls, code options, speeds, targets, "
-                    "tolerance; see the README's Scenes) and answers for every contact. Exit status 1 when "
+                    "tolerance; see docs/howto/scenes.md) and answers for every contact. Exit status 1 when "
                     "some contact has no model within the tolerance, or an overlap at which the code's "
                     "geometry breaks.")
     s.add_argument("file", help="the scene file")

@@ -158,7 +158,7 @@ def test_a_lammps_deck_with_its_explicit_pair_and_exact_line(tmp_path):
                              damping="tsuji", eta_n0=0.5, limit_damping=True)
     assert p["typed_e"] == 0.5 and p["end"] == "force" and "mixed" not in p["model"]
     assert p["eps"] == pytest.approx([contact.eps(g) for g in (0.1, 1.0, 10.0)], rel=1e-12)
-    assert abs(p["eps"][0] - 0.6458) < 1e-4          # the README table's LAMMPS tsuji row
+    assert abs(p["eps"][0] - 0.6458) < 1e-4          # the typed-e table's LAMMPS tsuji row (docs/howto/dem.md)
     assert p["exact_line"].startswith("pair_coeff 1 2 hertz/material 50000000 ") and p["exact_line"].endswith("limit_damping")
     deck.write_text(LAMMPS_DECK + p["exact_line"] + "\n")
     again = audit(deck, "--g", 0.1, 1.0, 10.0)[0]["pairs"][1]

@@ -186,7 +186,7 @@ def _prose(path: Path) -> str:
 
 
 def test_no_timing_is_typed_in_prose():
-    files = [*DOCS.rglob("*.md"), *(DOCS / "tutorials").glob("*.py")]
+    files = [ROOT / "README.md", *DOCS.rglob("*.md"), *(DOCS / "tutorials").glob("*.py")]
     found = []
     for path in files:
         if "_build" in path.parts or "_generated" in path.parts:

@@ -439,10 +439,10 @@ def test_a_damaged_or_deleted_output_is_rebuilt_never_used(built, tmp_path):
     assert "Nothing to be done" not in snakemake_dry_run(tree)
 
     check = make(tree, "verify")
-    assert check.returncode == 2     # make's status for a failed recipe, as the README says
+    assert check.returncode == 2     # make's status for a failed recipe, as docs/howto/pipeline.md says
     script = subprocess.run([str(ROOT / ".venv/bin/python"), str(ROOT / "src/restitution_workflow/atomic.py"),
                              "verify", str(tree)], capture_output=True, text=True)
-    assert script.returncode == 1    # the script's own, as the README says
+    assert script.returncode == 1    # the script's own, as docs/howto/pipeline.md says
     for rel, what in (("results/kim/reference/eps_curve.csv", "changed"), ("results/kim/connection/fit.json", "changed"),
                       ("results/kim/series/forward.json", "missing"), ("results/kim/claims.csv", "missing")):
         assert f"verify: {rel}: {what}" in check.stdout, check.stdout

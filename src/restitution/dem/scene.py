@@ -248,7 +248,7 @@ def contact_count(scene: Scene) -> int:
 
 
 def answer_scene(scene: Scene, progress=None) -> dict:
-    """The scene's answer as a JSON-ready dict (see the README's "Scenes"); ``progress(done, total)``,
+    """The scene's answer as a JSON-ready dict (see docs/howto/scenes.md); ``progress(done, total)``,
     if given, is called after each contact."""
     if scene.code == "liggghts":
         end = "force" if scene.options["limitForce"] else "overlap"
