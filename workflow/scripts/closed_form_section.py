@@ -157,7 +157,7 @@ from restitution.core.uniform import UniformForm  # noqa: E402
 ELASTIC_CHECK = OMEGA_RANGE[1]
 _u = UniformForm.from_dict({k: v for k, v in main.items() if k not in ("available", "formula")
                             and not k.startswith("printed")})
-_loss_ref = collide(ex["alpha"], ex["gamma"], ELASTIC_CHECK, rtol=1e-12).one_minus_eps
+_loss_ref = collide((ex["alpha"], ex["gamma"]), ELASTIC_CHECK, rtol=1e-12).one_minus_eps
 form_loss_err = abs(float(_u.one_minus_eps(ELASTIC_CHECK)) / _loss_ref - 1.0)
 c2_rel = float(E.C2 * E.delta(ELASTIC_CHECK) ** 2) / _loss_ref
 sigma_m1 = main["sigma"] * main["m1"]
