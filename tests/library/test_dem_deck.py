@@ -433,15 +433,16 @@ pair_coeff 1 1 hertz/material ${E} 0.5 ${nu} damping tsuji tangential linear_noh
 
 def test_variables_evaluated_and_the_forms_not_evaluated_named(tmp_path):
     """loop (its first value, 1), equal-style arithmetic with v_ references and $(...), string;
-    styles and expressions the reader does not evaluate are named (-2^2: LAMMPS and Python
-    disagree on it), and a number needed from one ends the audit in one line. ($(...) inside quotes
-    is not substituted: LAMMPS stops on ``variable nu equal "$(0.1 + 0.2)"``, checked in LAMMPS.)"""
+    styles and expressions the reader does not evaluate are named with the sub-expression that
+    stops it (-2^2 is evaluated, as LAMMPS does: 4), and a number needed from one ends the audit in
+    one line, naming it. ($(...) inside quotes is not substituted: LAMMPS stops on ``variable nu
+    equal "$(0.1 + 0.2)"``, checked in LAMMPS.)"""
     deck = tmp_path / "in.vars"
     deck.write_text(VARIABLE_DECK)
     res, err = audit(deck, "--g", 1.0)
     named = [ln for ln in err.splitlines() if "variable not evaluated" in ln]
-    assert [ln.split("evaluated: ", 1)[1] for ln in named] == ["variable t equal step*dt", "variable f atom mass",
-                                                      "variable k equal -2^2"]
+    assert [ln.split("): ", 1)[1] for ln in named] == ["variable t equal step*dt", "variable f atom mass"]
+    assert "(step: a thermo keyword" in named[0] and "(variable style atom is not evaluated)" in named[1]
     (p,) = res["pairs"]
     contact = lammps_contact(Pair.spheres(1e-3, 1e-3, 2500.0), normal="hertz/material", E=5e7, nu=0.3,
                              damping="tsuji", eta_n0=0.5, limit_damping=False)
@@ -449,6 +450,8 @@ def test_variables_evaluated_and_the_forms_not_evaluated_named(tmp_path):
     deck.write_text(VARIABLE_DECK.replace("0.5 ${nu}", "0.5 ${t}"))
     status, out, err = run(deck, "--g", 1.0)
     assert status == 2 and out == "" and err.count("\n") == 1 and "needs variable t" in err
+    assert err.rstrip().endswith("step: a thermo keyword, compute, fix or vector reference the reader does not "
+                                 "evaluate")
 
 
 @pytest.mark.parametrize("matrix, word", [

