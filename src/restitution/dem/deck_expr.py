@@ -43,7 +43,7 @@ _CONSTANTS = {"PI": math.pi, "on": 1.0, "off": 0.0, "true": 1.0, "false": 0.0, "
 
 
 def _checked(name: str, domain, f):
-    """f, where LAMMPS stops outside ``domain`` (its own message, lower-cased, as the reason)."""
+    """f, refused (as LAMMPS stops on it) for an argument outside ``domain``."""
     def g(x):
         if not domain(x):
             raise Unevaluated(f"{name}({x:g}): LAMMPS stops (invalid argument)")
