@@ -120,6 +120,18 @@ def test_a_refusal_names_the_sub_expression(tmp_path):
     assert "needs variable gamma_n" in err and "step: a thermo keyword" in err
 
 
+def test_an_immediate_formula_nests_parentheses_to_any_depth(tmp_path):
+    """Found by make fuzz (the decks written with formulas): $(exp(ln(0.5))) was left unsubstituted
+    (parentheses two deep) and the deck refused; LAMMPS evaluates it. (A ${name} inside $(...) is
+    not substituted first: LAMMPS stops on it, "Invalid syntax in variable formula", and so does
+    the reader; v_name is the way.)"""
+    res, _ = audited(tmp_path, GRANREGION.replace("${gamma_n} NULL", "$(sqrt(exp(ln(v_gamma_n))^2)) NULL"))
+    plain, _ = audited(tmp_path, GRANREGION)
+    assert res["pairs"][0]["D2"] == pytest.approx(plain["pairs"][0]["D2"], rel=1e-14)
+    err = refusal(tmp_path, GRANREGION.replace("${gamma_n} NULL", "$(sqrt(2) NULL"))
+    assert "is not a number the reader can evaluate" in err
+
+
 # ------------------------------------------------------------ item 8: heat does not touch the force
 HEAT = f"""\
 units lj

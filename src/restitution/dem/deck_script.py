@@ -160,7 +160,18 @@ def if_branches(args: list[str]) -> list[tuple[str | None, list[str]]]:
 MAX_JUMPS = 10_000
 #: include files (and jumps to other files) nested deeper than this are a loop
 MAX_DEPTH = 16
-_REFERENCE = re.compile(r"\$\{(\w+)\}|\$\(((?:[^()]|\([^()]*\))*)\)|\$(\w)")
+#: ${name}, the start of $(expression) (its end is the balancing parenthesis: any depth), $x
+_REFERENCE = re.compile(r"\$\{(\w+)\}|\$(\()|\$(\w)")
+
+
+def _closing(text: str, k: int) -> int | None:
+    """The index of the parenthesis that closes the one at text[k], or None."""
+    depth = 0
+    for j in range(k, len(text)):
+        depth += {"(": 1, ")": -1}.get(text[j], 0)
+        if depth == 0:
+            return j
+    return None
 
 
 class LocatedError(ScriptError):
@@ -224,14 +235,15 @@ class Script:
         """LAMMPS' substitution of $x, ${name} and the immediate $(expression): a variable without
         a known value is left as <unevaluated-variable-NAME> or <unevaluated-expression-K>, its reason
         in ``reasons`` (a command that needs it then says so)."""
+        def immediate(expr):
+            value, why = self._value(expr.split(":")[0])    # $(expr:format)
+            if why is None:
+                return repr(value)
+            mark = f"<unevaluated-expression-{len(self.reasons)}>"
+            self.reasons[mark] = f"$({expr}): {why}"
+            return mark
+
         def subst(m):
-            if m.group(2) is not None:
-                value, why = self._value(m.group(2).split(":")[0])    # $(expr:format)
-                if why is None:
-                    return repr(value)
-                mark = f"<unevaluated-expression-{len(self.reasons)}>"
-                self.reasons[mark] = f"$({m.group(2)}): {why}"
-                return mark
             name = m.group(1) or m.group(3)
             if self.variables.get(name) is None:
                 self.reasons.setdefault(_mark(name), "never defined" if name not in self.variables else
@@ -239,7 +251,21 @@ class Script:
                 return _mark(name)
             value = self.variables[name]
             return repr(value) if isinstance(value, float) else str(value)
-        return _REFERENCE.sub(subst, text)
+        out, k = [], 0
+        while (m := _REFERENCE.search(text, k)) is not None:
+            out.append(text[k:m.start()])
+            if m.group(2) is None:
+                out.append(subst(m))
+                k = m.end()
+                continue
+            end = _closing(text, m.start(2))
+            if end is None:               # unbalanced: left as it is (a number needed from it says so)
+                out.append(text[m.start():])
+                k = len(text)
+                break
+            out.append(immediate(text[m.end():end]))
+            k = end + 1
+        return "".join(out) + text[k:]
 
     def _file(self, text: str, source, depth: int, label, loc=None, line: str = "") -> None:
         """Run a file from its top, or from ``label`` (the jump at ``loc``, ``line`` named where absent)."""
