@@ -235,6 +235,16 @@ def beyond_schema(config: dict) -> None:
     if config["connection"]["figure_reading"] not in labels:
         raise ConfigError(f"connection.figure_reading = {config['connection']['figure_reading']!r}: "
                           f"must be one of {', '.join(labels)}")
+    for i, pair in enumerate(config["exact_family"]["pairs"]):
+        # the schema leaves exponents to Exponents.parse (NaN and infinity included): without this
+        # check a pair ["3/2", .nan] was accepted and stopped the exact-family job with a traceback
+        try:
+            ex = Exponents.parse(*pair)
+        except ParameterError as err:
+            raise ConfigError(f"exact_family.pairs[{i}].{err}") from None
+        if ex.alpha != 2 * ex.gamma + 1:
+            raise ConfigError(f"exact_family.pairs[{i}] = [{ex.alpha}, {ex.gamma}]: must satisfy alpha = 2 gamma + 1 "
+                              "(the exact family that maps onto the linear dashpot)")
     try:
         AtlasSpec.from_config(atlas_settings(config))
     except ParameterError as err:
