@@ -3,15 +3,13 @@
 Tutorials are jupytext percent-format scripts (docs/tutorials/*.py) that myst-nb executes at build
 time; their outputs are cached (docs/_build/.jupyter_cache), so an unchanged tutorial is not run
 again. The reference pages come from the code: autosummary + numpydoc for the API, sphinx-argparse
-for the CLI, and docs/_ext/generated.py for the schemas and the rung registry.
+for the CLI, and restitution_workflow.docs_pages for the schemas and the rung registry.
 """
 
 import os
-import sys
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
-sys.path.insert(0, str(HERE / "_ext"))
 # The tutorials run in a temporary directory (nb_execution_in_temp) and find the repository's
 # files (scenes/, config.yaml, the Snakefile) through this; the kernels inherit the environment.
 os.environ["RESTITUTION_DOCS_ROOT"] = str(HERE.parent)
@@ -31,7 +29,7 @@ extensions = [
     "myst_nb",
     "sphinxarg.ext",
     "sphinx_copybutton",
-    "generated",
+    "restitution_workflow.docs_pages",   # the schema pages and the rung table, from the code
 ]
 
 exclude_patterns = ["_build", "_ext", "conf.py", "reference/_generated/speed_accuracy.md", "**.ipynb_checkpoints"]

@@ -28,6 +28,7 @@
 # `results/<name>/`.
 
 # %%
+import importlib.util
 import os
 import shutil
 import subprocess
@@ -63,8 +64,7 @@ flat = {"name": "flat", "alpha": "2", "gamma": "1/2", "D1": 0.01, "D2": 0.1,
 # `config.yaml` with the new variant added for one run (`extra_variants`), then on a mistake:
 
 # %%
-sys.path.insert(0, str(ROOT / "workflow" / "scripts"))
-from _config import ConfigError, check_config  # noqa: E402  (the pipeline's own check)
+from restitution_workflow.config import ConfigError, check_config   # the pipeline's own check
 
 schema = str(ROOT / "workflow" / "schemas" / "config.schema.yaml")
 checked = check_config({**config, "extra_variants": [dict(flat)]}, schema)
@@ -91,8 +91,10 @@ except ConfigError as err:
 # touched): the jobs it would run, by rule.
 
 # %%
-sys.path.insert(0, str(ROOT / "workflow" / "tools"))
-import rebuild  # noqa: E402  (copies the project as a fresh clone has it)
+# the pipeline's tool that copies the project as a fresh clone has it (a script, not a package)
+spec = importlib.util.spec_from_file_location("rebuild", ROOT / "workflow" / "tools" / "rebuild.py")
+rebuild = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(rebuild)
 
 work = Path(tempfile.mkdtemp(prefix="restitution-variant-"))
 tree = rebuild.copy_tree(work / "tree")

@@ -29,6 +29,7 @@
 # ## Is there a cluster here?
 
 # %%
+import importlib.util
 import os
 import shutil
 import subprocess
@@ -79,8 +80,10 @@ fig.tight_layout()
 # resources stay), in a clean copy of the project, for the one-off variant `flat`:
 
 # %%
-sys.path.insert(0, str(ROOT / "workflow" / "tools"))
-import rebuild  # noqa: E402
+# the pipeline's tool that copies the project as a fresh clone has it (a script, not a package)
+spec = importlib.util.spec_from_file_location("rebuild", ROOT / "workflow" / "tools" / "rebuild.py")
+rebuild = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(rebuild)
 
 work = Path(tempfile.mkdtemp(prefix="restitution-slurm-"))
 tree = rebuild.copy_tree(work / "tree")

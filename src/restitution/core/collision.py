@@ -612,44 +612,9 @@ def _stuck(law: Law, why: str):
 
 def inverse_collide(problem, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,
                     t_eval=None) -> InverseCollision:
-    """Inverse collision x~'' + Omega~ x~^alpha - x~^gamma x~' = 0, x~(0) = x_start, x~'(0) = 1.
-
-    Integrated until x~ returns to 0. Once x~' < 0 both force terms accelerate the return, so it
-    always comes back after turning around; but the negative damping can outgrow the elastic
-    force before the turn (e.g. alpha = 1, gamma = 0, Omega~ < 1/4 from x_start = 0), and then
-    RunawayError (a ParameterError) is raised.
-
-    Parameters
-    ----------
-    alpha, gamma : str, int, Fraction or float
-        The exponents (:meth:`Exponents.parse`).
-    omega_tilde : float
-        The inverse collision's parameter Omega~ > 0.
-    x_start : float, optional
-        The starting deformation x~(0) >= 0.
-    rtol : float, optional
-        Relative tolerance of the scipy integration.
-    t_eval : array_like, optional
-        Times at which to sample the trajectory (``.trajectory``).
-
-    Returns
-    -------
-    InverseCollision
-        ``tau_b``, ``x_b`` (the turning point), ``tau_end`` and ``v_end`` (time and speed when x~
-        is back to 0), with the inputs.
-
-    Raises
-    ------
-    ParameterError
-        For an argument out of range; RunawayError (a ParameterError) when the motion never turns.
-
-    Examples
-    --------
-    >>> from restitution import inverse_collide
-    >>> r = inverse_collide("3/2", 1, 3.0)
-    >>> round(r.tau_b, 6), round(r.v_end, 6)
-    (1.128686, -1.491971)
-    """
+    """Inverse collision x~'' + Omega~ x~^alpha - x~^gamma x~' = 0, x~(0) = x_start, x~'(0) = 1, for
+    ``problem`` (a Problem, an Exponents or an (alpha, gamma) pair); the public spelling with the
+    exponents apart, and its documentation: :func:`restitution.inverse_collide`."""
     ex = as_exponents(problem)
     omega = _check_omega("omega_tilde", omega_tilde)
     x_start = _check_x_start(x_start)

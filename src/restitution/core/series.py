@@ -240,12 +240,6 @@ class PerturbationSeries:
 
 def perturbation_series(alpha, gamma, omega_order: int = 4, max_power=11,
                         direction: str = "forward", progress=None) -> PerturbationSeries:
-    """The public spelling of :func:`series_for`: the exponents as two numbers (``restitution.perturbation_series``)."""
-    return series_for((alpha, gamma), omega_order, max_power, direction, progress)
-
-
-def series_for(problem, omega_order: int = 4, max_power=11,
-               direction: str = "forward", progress=None) -> PerturbationSeries:
     """Exact series of the forward or inverse collision up to Omega^omega_order and tau^max_power.
 
     x(tau; Omega) = sum_n Omega^n x_n(tau), each x_n a finite sum of rational coefficients times
@@ -288,6 +282,13 @@ def series_for(problem, omega_order: int = 4, max_power=11,
     >>> ps.terms(1)
     [(Fraction(7, 2), Fraction(-4, 35))]
     """
+    return series_for((alpha, gamma), omega_order, max_power, direction, progress)
+
+
+def series_for(problem, omega_order: int = 4, max_power=11,
+               direction: str = "forward", progress=None) -> PerturbationSeries:
+    """:func:`perturbation_series` with the exponents as one value: a
+    :class:`~restitution.core.problem.Problem`, an Exponents or an (alpha, gamma) pair."""
     ex = as_exponents(problem)
     if direction not in DIRECTIONS:
         raise ParameterError("direction", direction, "must be 'forward' or 'inverse'")

@@ -215,7 +215,7 @@ def figure(path: Path) -> None:
 
 
 if __name__ == "__main__":
-    # `python docs/_ext/generated.py figure` refreshes docs/_static/eps.png (committed: the README
+    # `python -m restitution_workflow.docs_pages figure` refreshes docs/_static/eps.png (committed: the README
     # shows it on the forge, where nothing is built).
     if sys.argv[1:] == ["figure"]:
         figure(ROOT / "docs" / "_static" / "eps.png")
