@@ -19,7 +19,16 @@ from pathlib import Path
 
 from .atomic import atomic_path  # a temporary name, then rename
 
-ROOT = Path(__file__).resolve().parents[3]
+#: The checkout this package is installed from (src/restitution_workflow/ -> the project's root).
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _project_root() -> Path:
+    """The project a notebook is opened in: the nearest folder at or above the working directory
+    that holds a Snakefile (a copy of the tree replays its own runs, though the package it imports
+    is installed from another checkout), else the checkout this package comes from."""
+    here = Path.cwd().resolve()
+    return next((d for d in (here, *here.parents) if (d / "Snakefile").is_file()), ROOT)
 JOBS = Path("build") / "jobs"
 _REPLAYED = False
 
@@ -57,7 +66,7 @@ def replay(rule: str, variant: str | None = None):
     """
     global _REPLAYED
     _REPLAYED = True
-    os.chdir(ROOT)
+    os.chdir(_project_root())
     if variant is None:
         import yaml
 

@@ -15,8 +15,8 @@ from restitution_workflow.latex import esc, frac_tex, sci
 from restitution_workflow.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
 
 from restitution.core import asymptotics as asy
-from restitution.core.collision import collide
-from restitution.core.uniform import DEGREE_STEP, SELECTION_TARGET
+from restitution.core.collision import OMEGA_RANGE, collide
+from restitution.core.uniform import DEGREE_STEP, SELECTION_TARGET, UniformForm
 
 start(snakemake)
 plt = setup_matplotlib()
@@ -151,8 +151,6 @@ end_clause = (r"so for these exponents the term is smaller than the omitted $O(\
 
 # the elastic end of the form (the bracket has no delta^2 term; the fitted sum must supply it): measured at the
 # largest Omega the reference integrator accepts, against the size of the C2 term there
-from restitution.core.collision import OMEGA_RANGE  # noqa: E402
-from restitution.core.uniform import UniformForm  # noqa: E402
 
 ELASTIC_CHECK = OMEGA_RANGE[1]
 _u = UniformForm.from_dict({k: v for k, v in main.items() if k not in ("available", "formula")
