@@ -180,7 +180,10 @@ def generate(app=None) -> None:
 
 
 def setup(app):
-    app.connect("builder-inited", generate)
+    # at config-inited, before Sphinx lists the source files: written any later, api.rst is not
+    # among them on a fresh clone's first build, autosummary writes no stub pages for it and the
+    # build fails on its warnings (later builds passed, the previous build's api.rst being there)
+    app.connect("config-inited", lambda app, config: generate(app))
     return {"parallel_read_safe": True, "parallel_write_safe": True}
 
 
