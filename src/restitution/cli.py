@@ -168,9 +168,8 @@ def _check_writable_dir(name: str, path: str) -> None:
     import tempfile
     from pathlib import Path
 
-    here = Path(path).absolute()
-    while not here.exists() and here != here.parent:
-        here = here.parent
+    from .fast.cache import nearest_existing
+    here = nearest_existing(Path(path).absolute())
     if not here.is_dir():
         raise ParameterError(name, path, f"cannot be a directory: {here} is a file")
     try:

@@ -28,7 +28,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Callable
 
-__all__ = ["cache_dir", "cache_path", "load_json", "load_or_discard", "discard_damaged", "entry_lock",
+__all__ = ["cache_dir", "cache_path", "nearest_existing", "load_json", "load_or_discard", "discard_damaged", "entry_lock",
            "save_json_atomic", "get_or_build"]
 
 ENV_VAR = "RESTITUTION_CACHE"
@@ -129,15 +129,40 @@ def discard_damaged(path: Path, stream=None, why: str = "is damaged or was chang
 _NOTED_NOT_A_DIRECTORY: set = set()
 
 
+def nearest_existing(path) -> Path:
+    """``path`` itself if it exists, else its nearest existing ancestor: what decides whether a
+    folder that is not made yet can be made there (a file in the way cannot be a folder).
+
+    Parameters
+    ----------
+    path : str or Path
+        A path that may not exist yet.
+
+    Returns
+    -------
+    Path
+        The first of ``path`` and its parents that exists (the root at the latest).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> base = Path(tempfile.mkdtemp())
+    >>> nearest_existing(base / "a" / "b") == base
+    True
+    """
+    here = Path(path)
+    while not here.exists() and here != here.parent:
+        here = here.parent
+    return here
+
+
 def _not_a_directory(directory: Path, stream=None) -> bool:
     """True where the cache's place, or a folder above it, is a file (RESTITUTION_CACHE set to a
     file, say): then nothing can be cached there, and one note per process says so, instead of
     a "damaged" note for every entry asked for."""
-    here = Path(directory)
-    if here.is_dir():
+    if Path(directory).is_dir():
         return False
-    while not here.exists() and here != here.parent:
-        here = here.parent
+    here = nearest_existing(directory)
     if here.is_dir():
         return False                    # not made yet: the first build makes it
     if here not in _NOTED_NOT_A_DIRECTORY:
