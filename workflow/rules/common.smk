@@ -247,31 +247,10 @@ def variant_outputs(name):
     return sorted({f for rule in _promised(NEEDS_TEX | {"study"}) for f in _outputs_of(rule, name)})
 
 
-# The manuscript's inputs besides paper/*.
-MANUSCRIPT_INPUTS = [
-    "results/paper/inputs.tex",
-    "results/paper/closed_form.tex",
-    "results/paper/closed_form_values.tex",
-    "results/paper/uniform_table.tex",
-    "results/paper/uniform_overlap_table.tex",
-    "results/paper/exact_family_values.tex",
-    "results/paper/closed_form_eps.pdf",
-    "results/paper/closed_form_error.pdf",
-    "results/paper/provenance.tex",
-    "results/paper/bench_table.tex",
-    "results/paper/bench_pareto.pdf",
-    "results/paper/variants.tex",
-    "results/paper/validation.tex",
-    "results/paper/variants_values.tex",
-    "results/paper/eps_omega.pdf",
-    f"results/{MAIN}/values/values.tex",
-    f"results/{MAIN}/series/table.tex",
-    f"results/{MAIN}/connection/readings.tex",
-    f"results/{MAIN}/connection/eps_errors.tex",
-    f"results/{MAIN}/claims/table.tex",
-    f"results/{MAIN}/claims/discussion.tex",
-] + [f"results/{MAIN}/figures/{f}.pdf" for f in FIGURES] + [
-    f for name in EXTRA for f in
-    [f"results/{name}/section.tex", f"results/{name}/series/table.tex", f"results/{name}/connection/readings.tex",
-     f"results/{name}/connection/eps_errors.tex"] + [f"results/{name}/figures/{f}.pdf" for f in FIGURES]
-]
+def manuscript_inputs(wildcards=None):
+    """What the article and the supplement read besides their own .tex and .bib: the sections under
+    paper/sections/, and every promised .tex and .pdf (LaTeX reads nothing else, and the manuscript
+    reads no file that is not generated). Derived from the rules' outputs when the DAG is built, so
+    a stage's table or figure joins the manuscript's inputs without its path being typed again."""
+    sections = sorted(str(p.relative_to(ROOT)) for p in (ROOT / "paper" / "sections").glob("*.tex"))
+    return sections + [f for f in final_outputs() if f.endswith((".tex", ".pdf"))]

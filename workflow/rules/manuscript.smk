@@ -38,7 +38,7 @@ rule supplement:
     input:
         tex="paper/supplement.tex",
         bib="paper/restitution.bib",
-        generated=lambda wildcards: MANUSCRIPT_INPUTS,   # complete once every stage is included
+        generated=manuscript_inputs,   # asked when the DAG is built: every stage is included by then
     output:
         pdf=SUPPLEMENT_PDF,
         bbl=SUPPLEMENT_BBL,
@@ -65,7 +65,7 @@ rule manuscript:
         tex="paper/restitution.tex",
         bib="paper/restitution.bib",
         supplement=SUPPLEMENT_AUX,
-        generated=lambda wildcards: MANUSCRIPT_INPUTS,   # complete once every stage is included
+        generated=manuscript_inputs,   # asked when the DAG is built: every stage is included by then
     output:
         pdf=PAPER_PDF,
         bbl=PAPER_BBL,   # the bibliography as typeset: what an arXiv bundle carries instead of the .bib
@@ -96,7 +96,7 @@ rule arxiv:
         supplement_bbl=SUPPLEMENT_BBL,
         supplement_aux=SUPPLEMENT_AUX,
         supplement_pdf=SUPPLEMENT_PDF,
-        generated=lambda wildcards: MANUSCRIPT_INPUTS,   # complete once every stage is included
+        generated=manuscript_inputs,   # asked when the DAG is built: every stage is included by then
         code=code("arxiv_bundle.py"),
     output:
         "results/paper/arxiv.tar.gz",

@@ -3,8 +3,8 @@
 # reference and the closed forms (restitution.audit.stability). Split into `shards` parallel jobs of
 # equal estimated cost; the merged table does not depend on the number of shards.
 #
-# Needs from the including Snakefile: common.smk (lib, code, script_file, WILDCARD_VALUES,
-# MANUSCRIPT_INPUTS). Settings: config["stability"] (all optional; the schema lists them).
+# Needs from the including Snakefile: common.smk (lib, code, script_file, WILDCARD_VALUES).
+# Settings: config["stability"] (all optional; the schema lists them).
 
 from restitution.audit.stability import AtlasSpec as _AtlasSpec
 from restitution_workflow.config import atlas_settings as _atlas_settings
@@ -17,12 +17,6 @@ STABILITY_SRC = lib("audit.stability")
 
 # the shards a build makes (their outputs join `all` like every rule's)
 WILDCARD_VALUES.update(shard=lambda: range(STABILITY_SHARDS), shards=lambda: [STABILITY_SHARDS])
-MANUSCRIPT_INPUTS.extend([
-    "paper/sections/stability.tex",
-    "results/stability/values.tex",
-    "results/stability/summary.tex",
-    "results/stability/atlas.pdf",
-])
 
 
 rule stability_shard:
@@ -85,8 +79,6 @@ rule fig_stability:
     script:
         script_file("fig_stability.py")
 
-
-MANUSCRIPT_INPUTS.append("results/stability/uniform_forms.tex")
 
 # The atlas's pairs, dealt round-robin to the shards. The variants' pairs among them are built again
 # by rule uniform_form (the same library call): taking them from there would make the shards
