@@ -22,8 +22,8 @@ That is the "force" end rule. Under the "overlap" rule (``end="overlap"``: conta
 back to 0, the force turning attractive on the way, as in DEM codes without a force limit) the zero
 of the force is no event: legs 3 and 4 run on to u = 0. Once the force pulls, leg 4 carries the force
 alone and takes x' from it (_land_pulling), so that an eps many decades below the creep speed keeps
-its relative accuracy. A return proved to creep to x = x' = 0 without ever separating (_Trap,
-_check_separates) is reported as StickError; nothing else is.
+its relative accuracy. A return proved to creep to x = x' = 0 without ever separating (core.sticking)
+is reported as StickError; nothing else is.
 
 In the forward legs 3 and 4 the force f = Omega x^(alpha-gamma) + v is carried as a state of its
 own. When Omega is small, v creeps along -Omega x^(alpha-gamma) and f is a tiny difference of two
@@ -48,6 +48,8 @@ from .conditioning import conditioning, plain_accuracy
 from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
 from .sampling import Piece, sample
 from .problem import as_problem
+# StickError, stick_bound and stick_reason are part of this module's interface (every method refuses sticking alike)
+from .sticking import StickError, Trap, check_separates, stick_bound, stick_reason  # noqa: F401
 
 #: Accepted range of the relative tolerance.
 RTOL_MIN, RTOL_MAX = 1e-14, 1e-3
@@ -81,16 +83,6 @@ RUNAWAY_FACTOR = 1.0e12
 
 class RunawayError(ParameterError):
     """The inverse collision never turns around: x~ grows without bound for these parameters."""
-
-
-class StickError(ParameterError):
-    """Under the overlap rule the bodies never separate: x and x' creep to 0 together (eps = 0)."""
-
-    @classmethod
-    def at(cls, omega: float, why: str) -> "StickError":
-        """The one error every method raises for a proved sticking at ``omega`` (``why``: the proof)."""
-        return cls("omega", omega, "under the overlap rule contact never ends here: the attractive phase stops "
-                                   f"the return and the bodies stay together (eps = 0; {why}); use end=force")
 
 
 class UnresolvedError(ParameterError):
@@ -315,13 +307,13 @@ def _land_pulling(law: Law, start: _State, rtol: float, pieces: list, stiff: boo
 
     Here eps may be a factor Omega^2 below the creep speed it starts from (eps = C Omega^3 for
     alpha = 3/2, gamma = 1/2), so g is held to a purely relative tolerance and x' is computed from
-    it without cancellation (PullForm). A return caught by the trap of _Trap provably sticks.
+    it without cancellation (PullForm). A return caught by the trap of core.sticking.Trap provably sticks.
     """
     form = PullForm(law)
     u0 = start.x ** (1.0 / law.p)
-    trap = _Trap(law)
+    trap = Trap(law)
     if trap.holds(u0, [start.f]) >= 0.0:
-        _stuck(law, trap.why(start.x))
+        raise StickError.at(law.omega, trap.why(start.x))
     events = [_event(trap.holds, direction=1)] if trap.possible else []
     # The leg's own time, from 0 and held to a relative tolerance: a tau_b + (a creep of ~1/Omega)
     # in the state, or a loose absolute tolerance on it, lets Radau take steps over which its
@@ -360,7 +352,7 @@ def _land_pulling(law: Law, start: _State, rtol: float, pieces: list, stiff: boo
                               "answers from the limit law eps = C Omega^k at Omega <= 1e-8") from None
     u, (g, tau) = sol.t[-1], sol.y[:, -1] + [0.0, start.tau]
     if events and _fired(sol, 0):
-        _stuck(law, trap.why(u ** law.p))
+        raise StickError.at(law.omega, trap.why(u ** law.p))
     v = form.speed(u, g)
     if not (u == 0.0 and g < 0.0 and math.isfinite(tau)):
         raise UnresolvedError("omega", law.omega, f"under the overlap rule eps is below what the reference "
@@ -385,38 +377,6 @@ class _SpeedView:
     def __call__(self, u):
         g, tau = self.sol(u)
         return np.array([self.form.speed(np.asarray(u, float), g), tau + self.tau0])
-
-
-class _Trap:
-    """Where a pulling return provably sticks (x and x' go to 0 together, contact never ends).
-
-    With s = -x' > 0 and d = alpha - gamma, along a return ds/dx = x^gamma - Omega x^alpha / s. On the
-    curve s = 2 Omega x^d that slope is x^gamma / 2, at least the curve's own 2 Omega d x^(d-1)
-    wherever x^(2 gamma + 1 - alpha) >= 4 Omega d. So once s <= 2 Omega x^d at such an x, s stays
-    below the curve all the way down, and x' ~ x^d with d >= 1 never brings x to 0. Only
-    alpha >= 2 gamma + 1 has such x (for alpha = 2 gamma + 1 exactly when Omega <= 1/(4 (gamma+1)),
-    the case _check_separates refuses at once); for alpha < 2 gamma + 1 the return always separates.
-    """
-
-    def __init__(self, law: Law):
-        self.law = law
-        self.excess = law.qa - 2 * law.qg - law.p       # p (alpha - 2 gamma - 1)
-        self.d = law.alpha - law.gamma
-        self.possible = self.excess > 0
-
-    def holds(self, u, y) -> float:
-        """>= 0 exactly inside the trap (g = f = Omega x^d + x', so s <= 2 Omega x^d is g >= -Omega x^d)."""
-        if not self.possible:
-            return -1.0
-        L = self.law
-        below = y[0] + L.omega * u ** L.k
-        if u <= 0.0:
-            return below
-        return min(below, u ** (-self.excess) - 4.0 * L.omega * self.d)
-
-    def why(self, x: float) -> str:
-        return (f"at x = {x:.3g} the return is slower than 2 Omega x^(alpha-gamma), from where it "
-                "creeps to 0 without ever separating")
 
 
 def _release_inverse(law: Law, top: _State, rtol: float, pieces: list) -> _State:
@@ -508,7 +468,7 @@ def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str | None
     rule runs at OVERLAP_RTOL_MAX at most). ``t_eval``: tau samples for ``trajectory``. ``end``: the
     end-of-contact rule (results.END_RULES) for plain exponents, the same relative accuracy for both,
     however small eps (checked against mpmath down to eps = 5e-36). Under "overlap" the bodies may
-    provably never separate (StickError, see _Trap and _check_separates)."""
+    provably never separate (StickError, see core.sticking)."""
     problem = as_problem(problem, end)   # a Problem brings its own rule
     ex = problem.ex
     omega = _check_omega("omega", omega)
@@ -518,7 +478,7 @@ def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str | None
     law = Law.of(ex, omega, +1)
     if overlap:
         rtol = min(rtol, OVERLAP_RTOL_MAX)
-        _check_separates(ex, law)
+        check_separates(ex, law)
 
     pieces: list[Piece] = []
     risen = _rise(law, 0.0, min(1.0, law.elastic_scale()), rtol, pieces)
@@ -566,48 +526,6 @@ def _to_force_end(piece: Piece, law: Law, x_c: float, last: _State) -> Piece:
     if piece.in_u:
         return replace(piece, lo=x_c ** (1.0 / law.p))
     return replace(piece, hi=last.tau + (x_c - last.x) / last.v)
-
-
-def stick_bound(problem) -> float:
-    """The Omega at or below which the bodies provably never separate under the overlap rule,
-    without integrating: 0 where they always separate (alpha < 2 gamma + 1).
-
-    With e = alpha - 2 gamma - 1 >= 0 and d = alpha - gamma, the trap of _Trap closes over every
-    x <= x_b once x_b^e <= 1/(4 Omega d), and at maximum compression s = 0 lies inside it. The
-    spring only shortens the damped-only compression, x' <= 1 - x^(gamma+1)/(gamma+1), so x_b <= X =
-    (gamma+1)^(1/(gamma+1)), and Omega <= 1/(4 d X^e) suffices: the trap holds from x_b on, and the
-    return creeps to x = 0 without reaching it. For e = 0 this is 1/(4 (gamma+1)), the self-similar
-    case's real fixed points (w = x'/x^(gamma+1) obeys an autonomous equation there whose fixed points
-    solve (gamma+1) w^2 + w + Omega = 0: the overdamped linear dashpot, and LAMMPS' tsuji damping for
-    e below about 0.1). Above this bound sticking is still claimed where _Trap catches it during the
-    return, and only there.
-    """
-    ex = as_exponents(problem)
-    e = ex.alpha - 2 * ex.gamma - 1
-    if e < 0:
-        return 0.0
-    g = float(ex.gamma)
-    return 1.0 / (4.0 * float(ex.alpha - ex.gamma) * (g + 1.0) ** (float(e) / (g + 1.0)))
-
-
-def stick_reason(problem) -> str:
-    """stick_bound's proof in one line, for StickError (collide and the method ladder)."""
-    ex = as_exponents(problem)
-    bound = stick_bound(ex)
-    if ex.alpha == 2 * ex.gamma + 1:
-        return f"Omega <= 1/(4 (gamma+1)) = {bound:.6g} for alpha = 2 gamma + 1"
-    return (f"Omega <= {bound:.6g} = 1/(4 (alpha-gamma) X^(alpha-2gamma-1)), X = (gamma+1)^(1/(gamma+1)): "
-            "the return is trapped from maximum compression on")
-
-
-def _check_separates(ex, law: Law) -> None:
-    """Refuse the overlap rule where the bodies provably never separate (stick_bound)."""
-    if law.omega <= stick_bound(ex):
-        _stuck(law, stick_reason(ex))
-
-
-def _stuck(law: Law, why: str):
-    raise StickError.at(law.omega, why)
 
 
 def inverse_collide(problem, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,

@@ -49,7 +49,8 @@ from fractions import Fraction
 
 import numpy as np
 
-from .collision import StickError, UnresolvedError, stick_bound, stick_reason
+from .collision import UnresolvedError
+from .sticking import StickError, stick_bound, stick_reason
 from .dashpot import contact_times, dashpot_collision
 from .errors import ParameterError, require_positive_finite
 from .exponents import Exponents, as_exponents
@@ -292,7 +293,7 @@ def exact_collision(problem, omega, end: str | None = None, *, times: bool = Tru
     >>> exact_collision(("3/2", "1/4"), 0.2, end="overlap")  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    restitution.core.collision.StickError: omega = 0.2: under the overlap rule contact never ends here: ...
+    restitution.core.sticking.StickError: omega = 0.2: under the overlap rule contact never ends here: ...
     """
     end = problem_end(problem, end)   # a Problem brings its own rule
     ex = _family(problem)
