@@ -104,12 +104,12 @@ def stick_reason(problem) -> str:
     Parameters
     ----------
     problem : Problem, Exponents or (alpha, gamma)
-        The exponents.
+        As for :func:`stick_bound`.
 
     Returns
     -------
     str
-        The bound and why it holds.
+        The bound with the argument that proves it, in words.
 
     Examples
     --------
