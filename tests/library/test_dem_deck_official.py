@@ -11,7 +11,7 @@ import pytest
 
 from restitution.dem.codes import Pair
 from restitution.dem.contact import Contact
-from restitution.dem.deck_expr import Unevaluated, evaluate
+from restitution.dem.deck_text import Unevaluated, evaluate
 from restitution.dem.extrapolate import richardson
 
 from cli_run import run_cli  # noqa: E402
@@ -375,7 +375,7 @@ def _contact_lines(code: str, text: str, ntypes: int) -> str:
     """The deck's own lines that set its contacts, verbatim (its variables evaluated by the engine):
     LAMMPS, its variables, pair style and coefficients; LIGGGHTS, a box of its types, its materials
     (fix property/global) and pair style."""
-    from restitution.dem.deck_script import logical_lines
+    from restitution.dem.deck_text import logical_lines
     lines = [ln for _, ln in logical_lines(text)]
     if code == "lammps":
         return "\n".join(ln for ln in lines if ln.split()[0] in ("variable", "pair_style", "pair_coeff"))

@@ -40,7 +40,7 @@ type has the same. A type pair no ``pair_coeff`` covers is mixed as LAMMPS mixes
 granular: the same models for both types, geometric means, Young's moduli combined as 1/E* = sum
 (1 - nu^2)/E, limit_damping if either type has it). Variables: index and loop (their values in turn, with
 ``next``), string, world/universe (their first value) and equal-style (evaluated again after each
-``next``) or ``$(...)`` formulas in LAMMPS' own grammar (:mod:`restitution.dem.deck_expr`); any other
+``next``) or ``$(...)`` formulas in LAMMPS' own grammar (:mod:`restitution.dem.deck_text`); any other
 form is named on its line, and a number needed from it ends the audit in one line naming the
 sub-expression that has no value.
 
@@ -66,8 +66,8 @@ from .calibrate import calibrate
 from .codes import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, LIGGGHTS_E, LIGGGHTS_MODEL_TYPES,
                     LIGGGHTS_MODULUS, LIGGGHTS_NU, Pair, lammps_contact, lammps_eta_n0, lammps_gran_contact,
                     liggghts_accepts_e, liggghts_contact, liggghts_e)
-from .deck_expr import evaluate
 from .deck_script import LocatedError, Script
+from .deck_text import PLACEHOLDER, evaluate
 
 __all__ = ["DeckError", "read_deck", "audit_deck"]
 
@@ -209,7 +209,7 @@ def _number(token: str, where: str, text: str) -> float:
     try:
         return float(token)
     except ValueError:
-        m = re.search(r"<unevaluated-(variable|expression)-(\w+)>", token)
+        m = PLACEHOLDER.search(token)
         if m and m.group(1) == "variable":
             raise _Unevaluated(where, text, f"needs variable {m.group(2)}, which has no value the reader can "
                                             "evaluate", m.group(0)) from None

@@ -1,132 +1,24 @@
-"""LAMMPS' input-script language, apart from what its commands mean: how a file becomes commands,
-how an ``if`` decides, and which commands run (:class:`Script`: variables, ``include``, ``if``,
-``jump``/``label``, ``next``, ``quit``). The deck reader (:mod:`restitution.dem.deck`) gives every
-other command its meaning for a contact.
+"""LAMMPS' input-script language, apart from what its commands mean: how an ``if`` decides, and
+which commands run (:class:`Script`: variables, ``include``, ``if``, ``jump``/``label``, ``next``,
+``quit``). The deck reader (:mod:`restitution.dem.deck`) gives every other command its meaning for a
+contact.
 
-LAMMPS (22 Jul 2025, and LIGGGHTS, which shares its parser) reads a script as follows, and so
-does :func:`logical_lines` with :func:`words`:
-
-1. A line whose last printable character is ``&`` continues on the next, the ``&`` removed (even
-   in a comment); a line with an odd number of triple quotes ``\"\"\"`` continues with its newline
-   kept, so a triple-quoted text may span lines.
-2. ``#`` starts a comment, except inside single, double or triple quotes.
-3. ``$x``, ``${name}`` and ``$(expression)`` are replaced outside quotes (:func:`unquoted` applies
-   a substitution there only); a command such as ``if`` or ``print`` may substitute its own
-   quoted arguments later, when it runs.
-4. The line is split into words at whitespace; a word in quotes is one word, quotes removed.
-
-:func:`if_branches` splits an ``if`` command into its conditions and commands; the conditions
-themselves, and equal-style expressions, are :mod:`restitution.dem.deck_expr`'s (re-exported here:
-``evaluate_boolean``, ``newer_syntax``).
+How a file becomes commands and words, the substitution of ``$x``, ``${name}`` and ``$(...)``, and
+the formula languages of conditions and equal-style expressions are
+:mod:`restitution.dem.deck_text`'s (its tokenizer's names re-exported here: ``logical_lines``,
+``strip_comment``, ``unquoted``, ``words``, ``ScriptError``, ``evaluate_boolean``, ``newer_syntax``).
+:func:`if_branches` splits an ``if`` command into its conditions and commands.
 """
 
 from __future__ import annotations
 
 import re
 
-from .deck_expr import Unevaluated, evaluate_boolean, newer_syntax
+from .deck_text import (PLACEHOLDER, TRIPLE, ScriptError, Unevaluated, evaluate_boolean, logical_lines,
+                        newer_syntax, placeholder, strip_comment, substituted, unquoted, words)
 
 __all__ = ["ScriptError", "LocatedError", "Script", "MAX_JUMPS", "MAX_DEPTH", "logical_lines", "strip_comment",
            "unquoted", "words", "evaluate_boolean", "newer_syntax", "if_branches"]
-
-_TRIPLE = '"""'
-
-
-class ScriptError(ValueError):
-    """Why a line is not a command LAMMPS would run (the caller names the line)."""
-
-
-def _segments(line: str):
-    """(text, quote) pieces of ``line``: quote is "" outside quotes, else the quote that opened the
-    piece (the quotes themselves belong to the quoted piece). LAMMPS' own scan: a quote anywhere,
-    even inside a word, opens or closes."""
-    out, start, quote, k = [], 0, "", 0
-    while k < len(line):
-        if not quote:
-            opening = _TRIPLE if line.startswith(_TRIPLE, k) else line[k] if line[k] in "\"'" else ""
-            if opening:
-                if k > start:
-                    out.append((line[start:k], ""))
-                start, quote = k, opening
-                k += len(opening)
-                continue
-        elif line.startswith(quote, k):
-            k += len(quote)
-            out.append((line[start:k], quote))
-            start, quote = k, ""
-            continue
-        k += 1
-    if start < len(line):
-        out.append((line[start:], quote))
-    return out
-
-
-def strip_comment(line: str) -> str:
-    """``line`` up to its first ``#`` outside quotes."""
-    kept = []
-    for text, quote in _segments(line):
-        if not quote and "#" in text:
-            kept.append(text.split("#", 1)[0])
-            break
-        kept.append(text)
-    return "".join(kept)
-
-
-def logical_lines(text: str) -> list[tuple[int, str]]:
-    """(number of the first physical line, command text) of every non-blank command in ``text``:
-    continuations joined, comments removed, quotes kept."""
-    out, pending, start = [], "", 0
-    for n, raw in enumerate(text.splitlines(), 1):
-        if not pending:
-            start = n
-        pending += raw
-        if pending.count(_TRIPLE) % 2:
-            pending += "\n"          # an open triple quote: the text goes on, newline and all
-            continue
-        body = pending.rstrip()
-        if body.endswith("&"):
-            pending = body[:-1]
-            continue
-        line = strip_comment(pending).strip()
-        pending = ""
-        if line:
-            out.append((start, line))
-    if pending.strip() and strip_comment(pending).strip():
-        out.append((start, strip_comment(pending).strip()))   # LAMMPS runs an unfinished last line too
-    return out
-
-
-def unquoted(line: str, substitute) -> str:
-    """``line`` with ``substitute(text)`` applied to each piece outside quotes."""
-    return "".join(text if quote else substitute(text) for text, quote in _segments(line))
-
-
-def words(line: str) -> list[str]:
-    """The words of a command: split at whitespace, a quoted text one word without its quotes.
-    ScriptError where a quote is not closed, or a closing quote runs into more text (LAMMPS stops
-    on both)."""
-    out, k, n = [], 0, len(line)
-    while k < n:
-        if line[k].isspace():
-            k += 1
-            continue
-        quote = _TRIPLE if line.startswith(_TRIPLE, k) else line[k] if line[k] in "\"'" else ""
-        if quote:
-            end = line.find(quote, k + len(quote))
-            if end < 0:
-                raise ScriptError(f"a {quote} quote is not closed (LAMMPS stops: unbalanced quotes)")
-            after = end + len(quote)
-            if after < n and not line[after].isspace():
-                raise ScriptError(f"text runs on after a closing {quote} quote (LAMMPS stops: unbalanced quotes)")
-            out.append(line[k + len(quote):end])
-            k = after
-        else:
-            end = k
-            while end < n and not line[end].isspace():
-                end += 1
-            out.append(line[k:end])
-            k = end
-    return out
 
 
 def if_branches(args: list[str]) -> list[tuple[str | None, list[str]]]:
@@ -160,18 +52,6 @@ def if_branches(args: list[str]) -> list[tuple[str | None, list[str]]]:
 MAX_JUMPS = 10_000
 #: include files (and jumps to other files) nested deeper than this are a loop
 MAX_DEPTH = 16
-#: ${name}, the start of $(expression) (its end is the balancing parenthesis: any depth), $x
-_REFERENCE = re.compile(r"\$\{(\w+)\}|\$(\()|\$(\w)")
-
-
-def _closing(text: str, k: int) -> int | None:
-    """The index of the parenthesis that closes the one at text[k], or None."""
-    depth = 0
-    for j in range(k, len(text)):
-        depth += {"(": 1, ")": -1}.get(text[j], 0)
-        if depth == 0:
-            return j
-    return None
 
 
 class LocatedError(ScriptError):
@@ -239,33 +119,18 @@ class Script:
             value, why = self._value(expr.split(":")[0])    # $(expr:format)
             if why is None:
                 return repr(value)
-            mark = f"<unevaluated-expression-{len(self.reasons)}>"
+            mark = placeholder("expression", len(self.reasons))
             self.reasons[mark] = f"$({expr}): {why}"
             return mark
 
-        def subst(m):
-            name = m.group(1) or m.group(3)
+        def variable(name):
             if self.variables.get(name) is None:
                 self.reasons.setdefault(_mark(name), "never defined" if name not in self.variables else
                                         "it has no value here")
                 return _mark(name)
             value = self.variables[name]
             return repr(value) if isinstance(value, float) else str(value)
-        out, k = [], 0
-        while (m := _REFERENCE.search(text, k)) is not None:
-            out.append(text[k:m.start()])
-            if m.group(2) is None:
-                out.append(subst(m))
-                k = m.end()
-                continue
-            end = _closing(text, m.start(2))
-            if end is None:               # unbalanced: left as it is (a number needed from it says so)
-                out.append(text[m.start():])
-                k = len(text)
-                break
-            out.append(immediate(text[m.end():end]))
-            k = end + 1
-        return "".join(out) + text[k:]
+        return substituted(text, variable, immediate)
 
     def _file(self, text: str, source, depth: int, label, loc=None, line: str = "") -> None:
         """Run a file from its top, or from ``label`` (the jump at ``loc``, ``line`` named where absent)."""
@@ -298,7 +163,7 @@ class Script:
         line = unquoted(strip_comment(raw), lambda text: re.sub(r"\s+", " ", self.substitute(text))).strip()
         if not line:
             return None
-        if _TRIPLE in line and self.newer is None:
+        if TRIPLE in line and self.newer is None:
             self.newer = (loc, line, "a triple-quoted text")
         try:
             w = words(line)
@@ -412,7 +277,7 @@ class Script:
 
     def _value(self, expr: str):
         """(an equal-style expression's value, None), or (None, why it has none)."""
-        m = _PLACEHOLDER.search(expr)
+        m = PLACEHOLDER.search(expr)
         if m:                            # it substituted a variable without a value: that one's reason
             shown = f"${{{m.group(2)}}}" if m.group(1) == "variable" else "$(...)"
             return None, f"it uses {shown}, which has none: {self.reasons.get(m.group(0), 'no value here')}"
@@ -447,12 +312,9 @@ class Script:
                 self.reasons[_mark(name)] = why
 
 
-_PLACEHOLDER = re.compile(r"<unevaluated-(variable|expression)-(\w+)>")
-
-
 def _mark(name: str) -> str:
     """The placeholder a variable without a value leaves where it is substituted."""
-    return f"<unevaluated-variable-{name}>"
+    return placeholder("variable", name)
 
 
 def _labels(lines: list) -> dict:
