@@ -1,0 +1,507 @@
+"""The generic reader of LAMMPS-family decks: what each command that runs does to the settings of a
+head-on two-sphere contact (:class:`~restitution.dem.deck_state.Deck`), for every engine alike
+(box, atoms, sizes, groups, fixes that pour or insert, data files, labels, runs and their stages).
+What a pair style, its coefficients and its walls mean is an engine's: :data:`DIALECTS` gives the
+dialect of each engine (:mod:`restitution.dem.engines.lammps_deck`,
+:mod:`restitution.dem.engines.liggghts_deck`), and :data:`PAIR_STYLES` the dialect of each pair
+style. Which commands run (if, jump, label, next, quit, include, variable) is
+:mod:`restitution.dem.deck_script`'s.
+"""
+
+from __future__ import annotations
+
+import copy
+import re
+
+from .deck_script import LocatedError, Script
+from .deck_state import (Deck, DeckError, atom_type, explained, fetch, labelmap, number, place, types,
+                         unlabeled)
+from .deck_text import evaluate
+from .engines import lammps_deck, liggghts_deck
+
+__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_deck", "contact_key"]
+
+#: Engine (a Deck's ``code``) -> its deck dialect: the module that reads its pair style, its
+#: coefficients and its walls
+DIALECTS = {dialect.ENGINE: dialect for dialect in (lammps_deck, liggghts_deck)}
+#: Pair style -> the dialect that reads it
+PAIR_STYLES = {style: dialect for dialect in DIALECTS.values() for style in dialect.PAIR_STYLES}
+
+#: Commands with no bearing on a head-on two-sphere contact (first word, or "fix STYLE"). Not here,
+#: so named when met: mass (per-type masses). The script's control flow (if, jump, label, next,
+#: quit, include, variable) is deck_script's.
+_IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "communicate", "comm_modify",
+               "processors", "region", "lattice", "change_box", "neighbor", "neigh_modify", "timestep", "thermo",
+               "thermo_style", "thermo_modify", "dump", "dump_modify", "undump", "run", "unfix", "compute",
+               "uncompute", "velocity", "delete_atoms", "write_restart", "restart", "log", "print",
+               "echo", "label", "shell", "clear", "create_atoms", "displace_atoms",
+               "write_data", "write_dump", "reset_timestep", "run_style", "min_style", "minimize", "balance",
+               "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
+               "soft_particles", "modify_timing", "compute_modify", "comm_style"}
+_IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack",
+                     "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
+                     "viscous", "enforce2d", "move", "freeze", "setforce",
+                     "ave/time", "ave/atom", "print", "nve/limit", "move/mesh",
+                     "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom"}
+#: Data-file sections with no bearing on a head-on contact
+_DATA_IRRELEVANT = {"Velocities", "Bonds", "Angles", "Dihedrals", "Impropers", "Bond Coeffs", "Angle Coeffs",
+                    "Dihedral Coeffs", "Improper Coeffs"}
+#: Atom styles whose data-file Atoms lines are: atom-ID atom-type diameter density x y z [image flags]
+_SPHERE_STYLES = ("sphere", "granular")
+#: Commands the reader needs and their least number of words (the command included): shorter,
+#: LAMMPS stops on them too
+_NEEDS_WORDS = {"create_box": 2, "pair_style": 2, "pair_coeff": 3}
+#: Atom styles whose particles are not spheres (LIGGGHTS' superquadric, LAMMPS' ellipsoid, ...)
+_SHAPED_STYLES = ("superquadric", "ellipsoid", "line", "tri", "body")
+#: LIGGGHTS particle templates whose particles are not single spheres
+_SHAPED_TEMPLATES = {"particletemplate/multisphere": "clumps of spheres (multisphere)",
+                     "particletemplate/superquadric": "superquadrics"}
+#: Runs with different contact settings the audit reports before it refuses the deck
+MAX_STAGES = 100
+#: Commands that may sit in a branch of an if whose condition the reader cannot evaluate: they
+#: neither make atoms, nor run, nor change what the reader reads (units, atom_style and
+#: soft_/hard_particles, though in _IRRELEVANT, are read)
+_INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms", "units",
+                                  "atom_style", "soft_particles", "hard_particles"})
+#: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
+#: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
+#: particle templates
+_INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/rate/region"}
+
+
+def read_deck(text: str, radius: dict | None = None, density: dict | None = None, read_file=None) -> Deck:
+    """Parse a deck.
+
+    Parameters
+    ----------
+    text : str
+        The input script.
+    radius, density : dict, optional
+        {type: value}, overriding or completing what the deck states.
+    read_file : callable, optional
+        ``read_file(name)``: the text of a file the deck names (include, jump, read_data), or
+        raises OSError (None: such a deck is refused).
+
+    Returns
+    -------
+    Deck
+        The settings after the deck's last line; ``stages`` holds the settings each ``run`` saw,
+        one entry per change.
+
+    Raises
+    ------
+    DeckError
+        One line naming what cannot be mapped or is missing.
+
+    Examples
+    --------
+    >>> deck = read_deck("create_box 2 box\\npair_style granular\\npair_coeff * * hertz 1e5 0.5\\nrun 100\\n")
+    >>> deck.code, deck.ntypes, len(deck.stages)
+    ('LAMMPS', 2, 1)
+    """
+    deck = Deck()
+    _read(deck, text, read_file)
+    every = [deck] + [snap for _, snap, _ in deck.stages]       # (a clear may have emptied the deck)
+    for d in every:
+        for t, r in (radius or {}).items():
+            d.radius[int(t)] = r
+        for t, rho in (density or {}).items():
+            d.density[int(t)] = rho
+    if not any(d.code for d in every):
+        raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
+                                            "(LIGGGHTS) line")
+    for d in every:
+        if d.code == "LAMMPS" and d.liggghts_mark:
+            # a LIGGGHTS tutorial in LAMMPS' older syntax: LIGGGHTS stops on the pair style (checked in
+            # LIGGGHTS 3.8.0: gran/hooke, gran/hooke/history, gran/hertz/history and granular are
+            # "Invalid pair style"), LAMMPS on the LIGGGHTS commands; neither runs it
+            (loc, line), (sloc, sline) = d.liggghts_mark, d.style_line
+            raise DeckError(place(sloc), sline, f"pair_style {d.style} is LAMMPS', in a LIGGGHTS deck ({place(loc)}: "
+                            f"{' '.join(line.split()[:4])}): LIGGGHTS 3.8.0 stops on it (invalid pair style), and "
+                            "LAMMPS on LIGGGHTS' commands")
+        if d.code == "LAMMPS" and d.atom_style.split()[:1] == ["granular"]:
+            raise DeckError(place(d.atom_style_loc), f"atom_style {d.atom_style}", "LAMMPS has no atom_style "
+                            "granular (LIGGGHTS' name; LAMMPS' is sphere): LAMMPS stops on it")
+    return deck
+
+
+def _read(deck: Deck, text: str, read_file) -> None:
+    def execute(words, line, loc):
+        _execute(deck, words, line, loc, read_file)
+
+    def note(loc, line, why):
+        deck.unknown.append((*loc, line, why))
+
+    def fetch_named(name, loc, line):
+        return fetch(read_file, name, place(loc), line)
+    script = Script(execute, evaluate, note, fetch_named, _INERT)
+    deck.reasons = script.reasons           # shared: a later stage's refusal names its reason too
+    try:
+        script.run(text)
+    except LocatedError as why:
+        raise DeckError(place(why.loc), why.text, str(why)) from None
+    except DeckError as why:
+        raise explained(why, script.reasons) from None
+    if "LIGGGHTS" in {deck.code, *(snap.code for _, snap, _ in deck.stages)} and script.newer:
+        loc, line, what = script.newer
+        raise DeckError(place(loc), line, f"{what}: LIGGGHTS 3.8.0 stops on it (its if compares numbers only, "
+                                          "without |^, and it has no triple quotes)")
+
+
+def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
+    """One command that runs (the script's control flow is deck_script's), as far as a head-on
+    contact is concerned."""
+    where = place(loc)
+    cmd = words[0]
+    words = unlabeled(deck, words, where, line)
+    if not deck.liggghts_mark and liggghts_deck.liggghts_only(words):
+        deck.liggghts_mark = (loc, line)
+    if cmd in _NEEDS_WORDS and len(words) < _NEEDS_WORDS[cmd]:
+        raise DeckError(where, line, f"{cmd} needs at least {_NEEDS_WORDS[cmd] - 1} argument(s)")
+    elif cmd == "labelmap" and len(words) >= 2:
+        labelmap(deck, words, where, line)
+    elif cmd == "create_box":
+        deck.ntypes = atom_type(words[1], where, line, "the number of types")
+    elif cmd == "read_data" and len(words) >= 2:
+        _read_data(deck, words, where, line, read_file)
+        deck.atoms = True
+    elif cmd == "create_atoms":
+        deck.atoms = True
+        if len(words) > 1 and words[1].isdigit():
+            deck.present.add(int(words[1]))
+        else:
+            deck.present_unknown = True
+    elif cmd == "run":
+        _run_every(words, where, line)
+        _stage(deck, loc, line)
+        if deck.inserting:
+            deck.atoms = True
+            _inserted(deck)
+    elif cmd == "clear":
+        # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages, reasons=deck.reasons)
+        deck.__dict__.update(fresh.__dict__)
+    elif cmd == "read_restart":
+        raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
+                                     "file, which the reader does not read")
+    elif cmd == "atom_style" and len(words) >= 2:
+        deck.atom_style, deck.atom_style_loc = " ".join(words[1:]), loc
+        if words[1] in _SHAPED_STYLES:
+            raise DeckError(where, line, f"atom_style {words[1]}: its particles are not spheres, and the reader "
+                                         "audits the head-on contact of spheres only")
+    elif cmd == "pair_style":
+        _pair_style(deck, words, where, line, loc)
+    elif cmd == "pair_coeff":
+        _pair_coeff(deck, words, where, line, loc)
+    elif cmd == "set" and len(words) >= 3:
+        _set(deck, words, where, line, loc)
+    elif cmd == "fix" and len(words) >= 4:
+        _fix(deck, words, where, line, loc)
+    elif cmd == "group" and len(words) >= 3:
+        _group(deck, words)
+    elif cmd == "units" and len(words) >= 2:
+        deck.units = words[1]
+    elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
+        setattr(deck, cmd.split("_")[0], words[1] == "yes")
+    elif cmd not in _IRRELEVANT:
+        deck.unknown.append((*loc, line, "not understood"))
+
+
+def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    style = words[1]
+    deck.style_line = (loc, line)
+    if deck.style and style != deck.style:
+        # LAMMPS keeps the coefficients for the same style (its settings change); another style
+        # starts without any, and LAMMPS stops at the next run unless new pair_coeff lines follow
+        if deck.coeffs or deck.gran:
+            deck.reset = (loc, line)
+        deck.coeffs, deck.gran = {}, {}
+    deck.style = style
+    if style not in PAIR_STYLES:
+        raise DeckError(where, line, f"pair_style {style} is not mapped (the reader maps "
+                                     f"{', and '.join(d.MAPPED for d in DIALECTS.values())})")
+    deck.code = PAIR_STYLES[style].ENGINE
+    PAIR_STYLES[style].pair_style(deck, words, where, line)
+
+
+def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    if deck.code not in DIALECTS:
+        raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
+    DIALECTS[deck.code].pair_coeff(deck, words, where, line, loc)
+
+
+def _run_every(words: list, where: str, line: str) -> None:
+    """run N every M c1 c2 ...: LAMMPS runs the commands between the parts of the run; only inert
+    ones (output, say) leave the contact as the reader reads it."""
+    if "every" not in words:
+        return
+    for command in words[words.index("every") + 2:]:
+        first = command.split()[0] if command.split() else ""
+        if first not in _INERT and first != "NULL":
+            raise DeckError(where, line, f"run ... every runs {first} during the run, between its parts: the reader "
+                                         "does not follow it")
+
+
+def _inserted(deck: Deck) -> None:
+    """After a run, the atoms the deck's inserting fixes have made: their types where named."""
+    for inserted in deck.inserts:
+        if inserted is None:
+            deck.present_unknown = True
+        else:
+            deck.present |= inserted
+
+
+def contact_key(deck: Deck) -> str:
+    """What decides the deck's contacts, without the lines it came from: two runs with the same key
+    see the same contacts.
+
+    Parameters
+    ----------
+    deck : Deck
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> contact_key(Deck(radius={1: 0.5})) == contact_key(Deck(radius={1: 0.5}, unknown=[(None, 1, "x", "y")]))
+    True
+    """
+    def plain(x):
+        if isinstance(x, (set, frozenset)):
+            return tuple(sorted(x))
+        if isinstance(x, dict):
+            return tuple(sorted((k, plain(v)) for k, v in x.items()))
+        if isinstance(x, (list, tuple)):
+            return tuple(plain(v) for v in x)
+        return x
+    return repr(plain((deck.code, deck.style, deck.ntypes, deck.radius, deck.density, deck.units, deck.soft,
+                       deck.hard, deck.model, deck.limit_force, deck.gran, deck.atom_style, deck.missing,
+                       {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
+                       [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
+                       set(deck.shapes))))
+
+
+def _stage(deck: Deck, loc, line: str) -> None:
+    """A run: the contact settings it sees, kept where they differ from the previous run's."""
+    key = contact_key(deck)
+    if deck.stages and deck.stages[-1][2] == key:
+        deck.stages[-1][0].append((loc, line))
+        return
+    if not deck.code:
+        return                           # no pair style yet: no contact to audit in this run
+    if len(deck.stages) >= MAX_STAGES:
+        raise DeckError(place(loc), line, f"more than {MAX_STAGES} runs with different contact settings: the "
+                                          "audit reports each, and stops here")
+    stages, deck.stages = deck.stages, []
+    # the lists of lines not understood are the whole deck's, shared by every stage
+    snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored,
+                                id(deck.reasons): deck.reasons})
+    deck.stages = stages
+    stages.append(([(loc, line)], snap, key))
+
+
+def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> None:
+    """read_data FILE [nocoeff] [group ID]: the number of types, each type's radius and density
+    where all its atoms share them, and a data file's Pair Coeffs / PairIJ Coeffs."""
+    name, opts, coeffs = words[1], words[2:], True
+    k = 0
+    while k < len(opts):
+        if opts[k] == "nocoeff":
+            coeffs, k = False, k + 1
+        elif opts[k] == "group" and k + 1 < len(opts):
+            deck.filled_groups.setdefault(opts[k + 1], []).append((f"read_data {name} adds", None))
+            k += 2
+        else:
+            raise DeckError(where, line, f"read_data option {opts[k]} is not mapped (it may add, shift or offset "
+                                         "types)")
+    text = fetch(read_file, name, where, line)
+    section, hint, per_type = None, "", {}
+    for n, raw in enumerate(text.splitlines(), 1):
+        if n == 1:
+            continue                                   # the title line
+        body, _, comment = raw.partition("#")
+        body = body.strip()
+        if not body:
+            continue
+        here = f"{name} line {n}"
+        if section is None and (m := re.fullmatch(r"(\d+)\s+atom\s+types", body)):
+            deck.ntypes = atom_type(m.group(1), here, body, "the number of types")
+            continue
+        if body[0].isalpha():                          # a section's name; data lines start with a number
+            section, hint = body, comment.strip()
+            if section in ("Pair Coeffs", "PairIJ Coeffs") and coeffs and deck.code != "LAMMPS":
+                raise DeckError(here, body, "a data file's pair coefficients before pair_style granular")
+            if section not in {"Atoms", "Pair Coeffs", "PairIJ Coeffs", "Atom Type Labels"} | _DATA_IRRELEVANT:
+                deck.unknown.append((name, n, raw.strip(), "data-file section not read"))
+            continue
+        if section is None:
+            continue                                   # header: atoms, box bounds, other counts
+        cols = body.split()
+        if section == "Atom Type Labels":             # type label, as labelmap atom gives them
+            labelmap(deck, ["labelmap", "atom", *cols[:2]], here, body)
+        elif section == "Atoms":
+            style = hint or deck.atom_style
+            if style not in _SPHERE_STYLES:
+                raise DeckError(here, f"Atoms # {style}", "the reader reads the Atoms section of atom_style "
+                                                          "sphere or granular (id type diameter density x y z)")
+            if len(cols) < 7:
+                raise DeckError(here, body, "an Atoms line of atom_style sphere has at least 7 columns")
+            t = atom_type(unlabeled(deck, ["create_atoms", cols[1]], here, body)[1], here, body)
+            d, rho = number(cols[2], here, body), number(cols[3], here, body)
+            if d <= 0:
+                raise DeckError(here, body, "diameter 0 makes a point particle, which has no contact radius")
+            per_type.setdefault(t, (set(), set()))
+            per_type[t][0].add(d)
+            per_type[t][1].add(rho)
+        elif section in ("Pair Coeffs", "PairIJ Coeffs") and coeffs:
+            i, j = (cols[0], cols[0]) if section == "Pair Coeffs" else (cols[0], cols[1])
+            rest = cols[1:] if section == "Pair Coeffs" else cols[2:]
+            _pair_coeff(deck, unlabeled(deck, ["pair_coeff", i, j, *rest], here, body), here, body, (name, n))
+    deck.present |= set(per_type)
+    for t in range(1, deck.ntypes + 1):
+        if t not in per_type:
+            deck.missing[t] = f"{name} has no atom of type {t}"
+            continue
+        diameters, densities = per_type[t]
+        if len(diameters) == 1:
+            deck.radius[t] = 0.5 * diameters.pop()
+        else:
+            deck.missing[t] = f"{name} gives type {t} diameters from {min(diameters):g} to {max(diameters):g}"
+        if len(densities) == 1:
+            deck.density[t] = densities.pop()
+        else:
+            deck.missing[t] = f"{name} gives type {t} densities from {min(densities):g} to {max(densities):g}"
+
+
+def _set(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    absent = []
+    if words[1] == "type":
+        typed = list(types(words[2], deck.ntypes, where, line))
+    elif words[1] == "group" and words[2] == "all":
+        # it sets the atoms there now: a type without any keeps no size from it
+        typed = sorted(t for t in deck.present if 1 <= t <= deck.ntypes)
+        absent = [t for t in range(1, deck.ntypes + 1) if t not in typed]
+    else:
+        deck.unknown.append((*loc, line, "not understood"))
+        return
+    rest = words[3:]
+    for k in range(0, len(rest) - 1, 2):
+        if rest[k] in ("diameter", "density"):
+            for t in absent:
+                unknown = "the reader does not know whether an" if deck.present_unknown else "no"
+                deck.missing.setdefault(t, f"{unknown} atom of type {t} exists when {where} sets group all")
+        if rest[k] == "diameter":
+            for t in typed:
+                deck.radius[t] = 0.5 * number(rest[k + 1], where, line)
+        elif rest[k] == "density":
+            for t in typed:
+                deck.density[t] = number(rest[k + 1], where, line)
+        else:
+            # mass, density/disc, velocities, ...: how they combine with a diameter is not guessed
+            deck.unknown.append((*loc, line, "not understood"))
+            return
+
+
+def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    style = words[3]
+    if style in _INSERTING_FIXES:
+        deck.inserting = True
+        typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()
+        deck.inserts.append({int(words[5])} if typed else None)
+        if words[2] != "all":
+            deck.filled_groups.setdefault(words[2], []).append(
+                (f"fix {words[1]} ({style}) inserts", {int(words[5])} if typed else None))
+    if style in _SHAPED_TEMPLATES:
+        typed = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "atom_type"]
+        shaped = [atom_type(typed[0], where, line)] if typed else range(1, deck.ntypes + 1)
+        for t in shaped:
+            deck.shapes[t] = (loc, line, _SHAPED_TEMPLATES[style])
+        return
+    least, handler = _FIXES.get(style, (0, None))
+    if handler is not None and len(words) >= least:
+        handler(deck, words, where, line, loc)
+    elif style not in _IRRELEVANT_FIXES:
+        deck.unknown.append((*loc, line, "not understood"))
+
+
+def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """fix ID group pour N type seed [keywords]: the diameter and density it gives type t, LAMMPS'
+    defaults where the line has no diam or dens (diameter 1, density 1: its documentation, and a
+    poured atom in LAMMPS 22 Jul 2025 has radius 0.5 and mass pi/6). A range or poly of several
+    diameters (densities) gives no single one: the type's entry in ``missing`` says so."""
+    if "mol" in words[7:]:
+        raise DeckError(where, line, "fix pour ... mol pours molecules (rigid clumps of spheres), not single "
+                                     "spheres: the reader audits the head-on contact of two spheres only")
+    t = atom_type(words[5], where, line)
+    tokens = words[7:]
+
+    def value(k):
+        if k >= len(tokens):
+            raise DeckError(where, line, "fix pour's diam or dens keyword is cut short (LAMMPS stops)")
+        return number(tokens[k], where, line)
+    diameters, densities = {1.0}, {1.0}
+    for k, tok in enumerate(tokens):
+        if tok == "diam" and k + 1 < len(tokens) and tokens[k + 1] == "one":
+            diameters = {value(k + 2)}
+        elif tok == "diam" and k + 1 < len(tokens) and tokens[k + 1] == "range":
+            diameters = {value(k + 2), value(k + 3)}
+        elif tok == "diam" and k + 1 < len(tokens) and tokens[k + 1] == "poly":
+            n = int(value(k + 2))
+            diameters = {value(k + 3 + 2 * m) for m in range(n)}
+        elif tok == "diam":
+            diameters = {value(k + 1), value(k + 2)}          # older LAMMPS: diam lo hi
+        elif tok == "dens":
+            densities = {value(k + 1), value(k + 2)}
+    if len(diameters) == 1:
+        deck.radius[t] = 0.5 * diameters.pop()
+    else:
+        deck.radius.pop(t, None)
+        deck.missing[t] = f"fix {words[1]} pours diameters from {min(diameters):g} to {max(diameters):g}"
+    if len(densities) == 1:
+        deck.density[t] = densities.pop()
+    else:
+        deck.density.pop(t, None)
+        deck.missing[t] = f"fix {words[1]} pours densities from {min(densities):g} to {max(densities):g}"
+
+
+def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """fix wall/gran: kept with the types its group holds now; its dialect reads it when audited."""
+    group = words[2]
+    deck.walls.append((loc, words, "all" if group == "all" else deck.groups.get(group, "undefined")))
+
+
+def _region_wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    deck.unknown.append((*loc, line, "a region wall (any shape): its contacts are not audited"))
+
+
+#: fix style -> (its least number of words, what it does to the deck): the engines' alike, then each
+#: dialect's own; shorter, not understood
+_FIXES = {"pour": (7, _pour), "wall/gran": (4, _wall), "wall/gran/region": (4, _region_wall),
+          **{style: fix for dialect in DIALECTS.values() for style, fix in dialect.FIXES.items()}}
+
+
+def _group(deck: Deck, words: list) -> None:
+    """group ID type T ... (T, A:B or <> A B): the types a wall acts on. Groups of other styles
+    (region, id, molecule, ...) have no types the reader can know: None. A second type line adds."""
+    name, style, args = words[1], words[2], words[3:]
+    if style in ("delete", "clear"):
+        deck.groups.pop(name, None)
+        deck.empty_groups.discard(name)
+        return
+    held = None
+    if style == "type" and args:
+        if args[0] == "<>" and len(args) == 3 and all(a.isdigit() for a in args[1:]):
+            held = set(range(int(args[1]), int(args[2]) + 1))
+        elif all(re.fullmatch(r"\d+(:\d+)?", a) for a in args):
+            held = set()
+            for a in args:
+                lo, _, hi = a.partition(":")
+                held |= set(range(int(lo), int(hi or lo) + 1))
+    if held is not None and deck.atoms:
+        deck.empty_groups.discard(name)
+    elif held is not None and name not in deck.groups:
+        deck.empty_groups.add(name)
+    old = deck.groups.get(name, set())
+    deck.groups[name] = None if held is None or old is None else old | held

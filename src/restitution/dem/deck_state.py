@@ -1,0 +1,552 @@
+"""What the deck reader (:mod:`restitution.dem.deck_reader`) and the engines' deck dialects
+(:mod:`restitution.dem.engines.lammps_deck`, :mod:`restitution.dem.engines.liggghts_deck`) share:
+the settings a deck's commands build (:class:`Deck`), the one-line refusal (:class:`DeckError`),
+the readings of words every command makes the same way (numbers, atom types and ranges, type
+labels, where a line is), the two spheres of a type pair, the e to type for an eps, and what a
+dialect provides (:class:`DeckDialect`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from fractions import Fraction
+from functools import lru_cache
+from typing import Protocol
+
+from ..core.errors import ParameterError
+from .calibrate import calibrate
+from .codes import Pair, lammps_eta_n0, liggghts_e
+from .deck_text import PLACEHOLDER
+
+__all__ = ["DeckError", "Deck", "DeckDialect", "UnevaluatedNumber", "explained", "MAX_TYPES", "FLAT_WALLS", "types", "number",
+           "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e"]
+
+
+class DeckError(ParameterError):
+    """One line naming what in the deck cannot be mapped or is missing.
+
+    Parameters
+    ----------
+    where : str
+        The line ("line 12", "data.file line 3") or the setting ("radius", "pair_coeff").
+    text
+        What stands there (a line, a type pair), or None.
+    why : str
+        What the reader cannot map, or what is missing.
+
+    Examples
+    --------
+    >>> str(DeckError("line 3", "pair_style   lj/cut 2.5", "pair_style lj/cut is not mapped"))
+    'line 3 (pair_style lj/cut 2.5): pair_style lj/cut is not mapped'
+    """
+
+    def __init__(self, where: str, text, why: str):
+        super().__init__(where, text, why)
+        shown = "" if text is None else f" ({' '.join(str(text).split())})"
+        self.args = (f"{where}{shown}: {why}",)
+
+
+@dataclass
+class Deck:
+    """The settings of a deck at one line, as far as a head-on two-sphere contact is concerned.
+
+    Parameters
+    ----------
+    code : str
+        "LAMMPS" or "LIGGGHTS" (the engine of the pair style), "" before any.
+    **fields
+        The other fields, each commented where declared; all start empty.
+
+    Examples
+    --------
+    >>> Deck().units, Deck().ntypes
+    ('lj', 0)
+    """
+    code: str = ""                                # "LAMMPS" or "LIGGGHTS"
+    ntypes: int = 0
+    radius: dict = field(default_factory=dict)    # type -> radius
+    density: dict = field(default_factory=dict)   # type -> density
+    coeffs: dict = field(default_factory=dict)    # (i, j), i <= j -> (line number, tokens) [LAMMPS]
+    props: dict = field(default_factory=dict)     # LIGGGHTS property/global name -> (line no, values)
+    prop_fix: dict = field(default_factory=dict)  # LIGGGHTS property/global name -> "fix ID group"
+    model: str = ""                               # LIGGGHTS normal model
+    limit_force: bool = False
+    style_line: tuple = ()                        # ((file, line number), text) of pair_style
+    unknown: list = field(default_factory=list)   # (file or None, line number, text, why) not understood
+    ignored: list = field(default_factory=list)   # what the audit passed over on purpose
+    atom_style: str = ""
+    missing: dict = field(default_factory=dict)   # type -> why a data file gives it no single radius/density
+    units: str = "lj"                             # the engines' default unit style
+    soft: bool = False                            # LIGGGHTS soft_particles yes / hard_particles yes:
+    hard: bool = False                            # its limits on Young's modulus lifted
+    groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
+    walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
+    meshes: dict = field(default_factory=dict)    # LIGGGHTS fix mesh/surface ID -> its atom type, or None
+    gran: dict = field(default_factory=dict)      # LAMMPS' older gran/* pair style: style, k_n, gamma_n, limit
+    # Groups are static: a group holds the atoms present when it is defined, and those a later
+    # command inserts into it by name (LAMMPS and LIGGGHTS alike; measured in LAMMPS: a wall on a
+    # group by type defined before create_atoms lets the sphere through)
+    atoms: bool = False                           # some atom exists at this line
+    inserting: bool = False                       # an inserting fix (pour, insert/...) is defined
+    empty_groups: set = field(default_factory=set)   # groups by type defined before any atom existed
+    # group ID -> [(the command that inserts atoms into it, their types or None where not known)]
+    filled_groups: dict = field(default_factory=dict)
+    style: str = ""                               # the pair style (LAMMPS keeps coefficients for the same)
+    reset: tuple = ()                             # (loc, text) of a pair_style of another that discarded them
+    atom_style_loc: tuple = ()                    # (file, line number) of atom_style
+    # types known to hold atoms (create_atoms, read_data, a pour or deposit that has run), and
+    # whether atoms of types the reader does not know exist: ``set group all`` sizes those only
+    present: set = field(default_factory=set)
+    present_unknown: bool = False
+    shapes: dict = field(default_factory=dict)    # type -> (loc, text, what) where its particles are not spheres
+    # (run locations, the deck as that run sees it, its contact key), one per change of contact settings
+    stages: list = field(default_factory=list)
+    inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
+    reasons: dict = field(default_factory=dict)   # the script's: an unevaluated placeholder -> why
+    labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
+    liggghts_mark: tuple = ()                     # (loc, text) of the first command only LIGGGHTS has
+
+
+class DeckDialect(Protocol):
+    """What an engine's deck dialect module provides, as the reader's table of dialects uses it.
+
+    Parameters
+    ----------
+    ENGINE : str
+        The engine, a Deck's ``code`` once its pair style is read.
+    PAIR_STYLES : tuple of str
+        The pair styles it reads.
+    MAPPED : str
+        What it maps, as a refusal of another pair style lists it.
+    FIXES : dict
+        Fix style -> (its least number of words, ``f(deck, words, where, line, loc)``): fixes of its own.
+
+    Examples
+    --------
+    >>> from restitution.dem.engines import lammps_deck
+    >>> lammps_deck.ENGINE, "granular" in lammps_deck.PAIR_STYLES
+    ('LAMMPS', True)
+    """
+    ENGINE: str
+    PAIR_STYLES: tuple
+    MAPPED: str
+    FIXES: dict
+
+    def pair_style(self, deck: Deck, words: list, where: str, line: str) -> None:
+        """Read ``pair_style`` ``words`` (words[1] one of PAIR_STYLES) into ``deck``; DeckError where
+        it is not mapped, ``where`` and ``line`` naming the line."""
+
+    def pair_coeff(self, deck: Deck, words: list, where: str, line: str, loc) -> None:
+        """Read ``pair_coeff`` ``words`` (type labels replaced) into ``deck``; ``loc`` = (file or None,
+        line number)."""
+
+    def pair_row(self, deck: Deck, i: int, j: int) -> dict:
+        """The audit's row for types i <= j of the settings a run sees, before its eps: {"types",
+        "model", "typed_e", "end", "contact", "pair", "exact_line", "line", "file"}; DeckError where
+        the deck gives the pair no contact."""
+
+    def wall(self, deck: Deck, loc, words: list, unknown: list):
+        """A fix wall/gran's flat surfaces (its words, at ``loc``) as [(mesh ID or None, a function of
+        the wall Pair and the sphere's type giving (contact, typed e, model, exact line or None), the
+        wall's type or None)], or None with (file, line, text, why) appended to ``unknown``."""
+
+
+#: The audit lists every type pair, N (N + 1) / 2 of them: a deck with more types is refused.
+MAX_TYPES = 100
+#: Walls the audit takes: planes (a sphere against a flat wall). Curved ones are named, not audited.
+FLAT_WALLS = ("xplane", "yplane", "zplane")
+
+
+def types(spec: str, ntypes: int, where: str, text: str) -> range:
+    """A LAMMPS type range: 2, *, 1*, *3, 2*4.
+
+    Parameters
+    ----------
+    spec : str
+        The range as written.
+    ntypes : int
+        The deck's number of types (0 before create_box).
+    where, text : str
+        The line, for the refusal.
+
+    Returns
+    -------
+    range
+
+    Raises
+    ------
+    DeckError
+        Before create_box, or where the range is not one or leaves 1..ntypes.
+
+    Examples
+    --------
+    >>> list(types("2*", 4, "line 1", "pair_coeff 2* * hooke 1 0"))
+    [2, 3, 4]
+    """
+    if ntypes <= 0:
+        raise DeckError(where, text, "a type range before create_box: the number of types is unknown")
+    m = re.fullmatch(r"(\d*)\*(\d*)|(\d+)", spec)
+    if not m:
+        raise DeckError(where, text, f"type {spec!r} is not a type or a range such as 1*2")
+    if m.group(3):
+        lo = hi = int(m.group(3))
+    else:
+        lo, hi = int(m.group(1) or 1), int(m.group(2) or ntypes)
+    if not 1 <= lo <= hi <= ntypes:
+        raise DeckError(where, text, f"types must be in 1..{ntypes}")
+    return range(lo, hi + 1)
+
+
+class UnevaluatedNumber(DeckError):
+    """A number the deck gives through a variable or $(...) without a value here: ``mark`` is the
+    placeholder, whose reason the script kept (see :func:`explained`).
+
+    Parameters
+    ----------
+    where, text, why
+        As :class:`DeckError`'s.
+    mark : str
+        The placeholder the substitution left (:data:`restitution.dem.deck_text.PLACEHOLDER`).
+
+    Examples
+    --------
+    >>> UnevaluatedNumber("line 2", "x", "needs variable k", "<unevaluated-variable-k>").mark
+    '<unevaluated-variable-k>'
+    """
+
+    def __init__(self, where: str, text, why: str, mark: str):
+        super().__init__(where, text, why)
+        self.mark = mark
+
+
+def explained(exc: DeckError, reasons: dict) -> DeckError:
+    """The refusal with the reason its variable or expression has no value (the sub-expression).
+
+    Parameters
+    ----------
+    exc : DeckError
+        The refusal, its message completed in place where it is an :class:`UnevaluatedNumber`.
+    reasons : dict
+        The script's placeholder -> why it has no value.
+
+    Returns
+    -------
+    DeckError
+        ``exc``.
+
+    Examples
+    --------
+    >>> exc = UnevaluatedNumber("line 2", None, "needs variable k", "<unevaluated-variable-k>")
+    >>> str(explained(exc, {"<unevaluated-variable-k>": "never defined"}))
+    'line 2: needs variable k: never defined'
+    """
+    if isinstance(exc, UnevaluatedNumber) and exc.mark in reasons:
+        exc.args = (f"{exc.args[0]}: {reasons[exc.mark]}",)
+    return exc
+
+
+def number(token: str, where: str, text: str) -> float:
+    """A word as a number, or the refusal naming why it is none (a variable or $(...) without a value).
+
+    Parameters
+    ----------
+    token : str
+        The word, substituted.
+    where, text : str
+        The line, for the refusal.
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    DeckError
+        :class:`UnevaluatedNumber` for a placeholder, else DeckError.
+
+    Examples
+    --------
+    >>> number("1e5", "line 1", "")
+    100000.0
+    """
+    try:
+        return float(token)
+    except ValueError:
+        m = PLACEHOLDER.search(token)
+        if m and m.group(1) == "variable":
+            raise UnevaluatedNumber(where, text, f"needs variable {m.group(2)}, which has no value the reader can "
+                                                 "evaluate", m.group(0)) from None
+        if m:
+            raise UnevaluatedNumber(where, text, "needs a $(...) expression the reader does not evaluate",
+                                    m.group(0)) from None
+        raise DeckError(where, text, f"{token!r} is not a number the reader can evaluate") from None
+
+
+def atom_type(token: str, where: str, text: str, what: str = "an atom type") -> int:
+    """A type, or the number of types: an integer in 1..MAX_TYPES, else one line.
+
+    Parameters
+    ----------
+    token : str
+        The word.
+    where, text : str
+        The line, for the refusal.
+    what : str
+        What the number is, for the refusal.
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    DeckError
+        Where it is not an integer in 1..MAX_TYPES.
+
+    Examples
+    --------
+    >>> atom_type("2", "line 1", "create_atoms 2 single 0 0 0")
+    2
+    """
+    x = number(token, where, text)
+    if not (math.isfinite(x) and x == int(x) and 1 <= x <= MAX_TYPES):
+        raise DeckError(where, text, f"{what} must be an integer in 1..{MAX_TYPES} (the audit lists every type "
+                                     "pair)")
+    return int(x)
+
+
+def place(loc) -> str:
+    """Where a line is, as the refusals say it.
+
+    Parameters
+    ----------
+    loc : tuple
+        (file name, or None for the deck itself; line number).
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> place((None, 3)), place(("data.pour", 12))
+    ('line 3', 'data.pour line 12')
+    """
+    source, n = loc
+    return f"line {n}" if source is None else f"{source} line {n}"
+
+
+def fetch(read_file, name: str, where: str, line: str) -> str:
+    """The text of a file the deck names (include, jump, read_data).
+
+    Parameters
+    ----------
+    read_file : callable or None
+        ``read_file(name)``, raising OSError; None where the deck was given as text.
+    name : str
+        The file's name as the deck writes it.
+    where, line : str
+        The line naming it, for the refusal.
+
+    Returns
+    -------
+    str
+
+    Raises
+    ------
+    DeckError
+        Without ``read_file``, or where the file cannot be read.
+
+    Examples
+    --------
+    >>> fetch({"data.x": "title"}.__getitem__, "data.x", "line 4", "read_data data.x")
+    'title'
+    """
+    if read_file is None:
+        raise DeckError(where, line, "the deck names another file, and it was given as text: give it as a file")
+    try:
+        return read_file(name)
+    except OSError as exc:
+        raise DeckError(where, line, f"{name} cannot be read ({exc.strerror or exc})") from None
+
+
+# ---------------------------------------------------------------------------- type labels
+#: Where LAMMPS commands take an atom type, which may be a type label: command (or "fix STYLE") ->
+#: the word positions
+_TYPE_WORDS = {"pair_coeff": (1, 2), "create_atoms": (1,), "mass": (1,), "fix pour": (5,), "fix deposit": (5,)}
+_LABEL = re.compile(r"[A-Za-z_][^\s*#]*")
+
+
+def unlabeled(deck: Deck, words: list, where: str, line: str) -> list:
+    """The command with each type label where a type goes replaced by its type (LAMMPS' type
+    labels: pair_coeff glass steel ..., create_atoms glass ..., set type glass ..., group g type
+    glass ...); a label never defined is refused, as LAMMPS stops on it.
+
+    Parameters
+    ----------
+    deck : Deck
+        Its ``labels``.
+    words : list of str
+        The command's words.
+    where, line : str
+        The line, for the refusal.
+
+    Returns
+    -------
+    list of str
+
+    Raises
+    ------
+    DeckError
+        Where a label is not defined.
+
+    Examples
+    --------
+    >>> unlabeled(Deck(labels={"glass": 2}), ["create_atoms", "glass", "single", "0", "0", "0"], "line 1", "")
+    ['create_atoms', '2', 'single', '0', '0', '0']
+    """
+    key = f"fix {words[3]}" if words[0] == "fix" and len(words) > 3 else words[0]
+    at = list(_TYPE_WORDS.get(key, ()))
+    if words[0] == "set" and len(words) > 2 and words[1] == "type":
+        at = [2]
+    elif words[0] == "group" and len(words) > 3 and words[2] == "type":
+        at = list(range(3, len(words)))
+    out = list(words)
+    for k in at:
+        if k >= len(out) or not _LABEL.fullmatch(out[k]) or out[k] == "<>":
+            continue
+        if out[k] not in deck.labels:
+            raise DeckError(where, line, f"type label {out[k]} is not defined (labelmap atom, or a data file's Atom "
+                                         "Type Labels, before it): LAMMPS stops")
+        out[k] = str(deck.labels[out[k]])
+    return out
+
+
+def labelmap(deck: Deck, words: list, where: str, line: str) -> None:
+    """labelmap atom N label ... (the types' labels), labelmap clear; other kinds (bond, ...) and
+    labelmap write have no bearing on a contact.
+
+    Parameters
+    ----------
+    deck : Deck
+        Its ``labels``, changed in place.
+    words : list of str
+        The command's words (at least two).
+    where, line : str
+        The line, for the refusal.
+
+    Raises
+    ------
+    DeckError
+        Where LAMMPS stops on the command.
+
+    Examples
+    --------
+    >>> deck = Deck()
+    >>> labelmap(deck, ["labelmap", "atom", "1", "glass"], "line 1", "")
+    >>> deck.labels
+    {'glass': 1}
+    """
+    if words[1] == "clear":
+        deck.labels.clear()
+        return
+    if words[1] != "atom":
+        return
+    args = words[2:]
+    if len(args) % 2:
+        raise DeckError(where, line, "labelmap atom needs pairs of a type and its label (LAMMPS stops)")
+    for k in range(0, len(args), 2):
+        t = atom_type(args[k], where, line)
+        if not _LABEL.fullmatch(args[k + 1]):
+            raise DeckError(where, line, f"{args[k + 1]!r} is not a type label (it must not start with a digit): "
+                                         "LAMMPS stops")
+        deck.labels[args[k + 1]] = t
+
+
+# ---------------------------------------------------------------------------- what the audit needs
+def spheres(deck: Deck, i: int, j: int) -> Pair:
+    """The two spheres of types i and j, or the refusal naming what the deck lacks for them.
+
+    Parameters
+    ----------
+    deck : Deck
+        Its radii, densities and particle shapes.
+    i, j : int
+        The types.
+
+    Returns
+    -------
+    Pair
+
+    Raises
+    ------
+    DeckError
+        Where a type is not spheres, or has no single radius or density.
+
+    Examples
+    --------
+    >>> spheres(Deck(radius={1: 0.5}, density={1: 2.0}), 1, 1).R1
+    0.5
+    """
+    for t in (i, j):
+        if t in deck.shapes:
+            loc, text, what = deck.shapes[t]
+            raise DeckError(place(loc), text, f"type {t}'s particles are {what}, not single spheres: the reader "
+                                              "audits the head-on contact of two spheres only")
+        why = f" ({deck.missing[t]})" if t in deck.missing else (
+            " (no set, particle template, pour or data file gives it one: a type without particles?)")
+        if t not in deck.radius:
+            raise DeckError("radius", f"type {t}", f"the deck gives no single radius for this type{why}: give "
+                                                   f"--radius {t}=R")
+        if t not in deck.density:
+            raise DeckError("density", f"type {t}", f"the deck gives no single density for this type{why}: give "
+                                                    f"--density {t}=RHO")
+    return Pair.spheres(deck.radius[i], deck.radius[j], deck.density[i], deck.density[j])
+
+
+def exact_e(contact, eps: float, code: str) -> float | None:
+    """The e to type into ``code`` (a LAMMPS damping taking an e, or "liggghts" for
+    coefficientRestitution) that gives ``contact``'s law eps = ``eps`` under its end rule; None where
+    no e does. Those dampings set D2 = f(e) sqrt(D1) with gamma = (alpha - 1)/2, so Omega = D1 / D2^2
+    at every speed and eps depends on e alone: one calibration per law and e (the unit contact,
+    D1 = 1 at g = 1) serves every pair and wall of a deck.
+
+    Parameters
+    ----------
+    contact : Contact
+        The law, with gamma = (alpha - 1)/2.
+    eps : float
+        The eps wanted.
+    code : str
+        A LAMMPS damping ("tsuji", "coeff_restitution") or "liggghts".
+
+    Returns
+    -------
+    float or None
+
+    Raises
+    ------
+    ValueError
+        Where the law's gamma is not (alpha - 1)/2.
+
+    Examples
+    --------
+    >>> from restitution.dem.codes import liggghts_contact
+    >>> c = liggghts_contact(Pair.spheres(0.01, 0.01, 2500, 2500), E=5e6, nu=0.3, e=0.8, limit_force=True)
+    >>> round(c.eps(1.0), 4), round(exact_e(c, 0.8, "liggghts"), 4)   # limitForce on: e 0.8 gives more
+    (0.8081, 0.7912)
+    """
+    if contact.gamma != (contact.alpha - 1) / 2:
+        raise ValueError(f"an exact e needs gamma = (alpha - 1)/2, not {contact.gamma} for alpha = {contact.alpha}")
+    return _unit_exact(contact.alpha, contact.end, float(eps), code)
+
+
+@lru_cache(maxsize=1024)
+def _unit_exact(alpha: Fraction, end: str, eps: float, code: str) -> float | None:
+    try:     # no damping gives eps, or the code's e cannot express the one that does
+        unit = calibrate(alpha, (alpha - 1) / 2, D1=1.0, eps=eps, g=1.0, end=end).contact
+        return liggghts_e(unit) if code == "liggghts" else lammps_eta_n0(None, code, unit)
+    except ParameterError:
+        return None

@@ -1,0 +1,1 @@
+"""The DEM engines, one module (or more) each."""

@@ -1,0 +1,358 @@
+"""LAMMPS' deck dialect: what ``pair_style granular`` (and the older gran/hooke, gran/hooke/history,
+gran/hertz/history), its ``pair_coeff`` lines and its ``fix wall/gran`` walls mean for a head-on
+contact. The generic reader (:mod:`restitution.dem.deck_reader`) reaches it through its table of
+dialects, by pair style and by engine; this module has the same names as every dialect:
+``ENGINE``, ``PAIR_STYLES``, ``MAPPED``, ``FIXES``, :func:`pair_style`, :func:`pair_coeff`,
+:func:`pair_row` and :func:`wall`.
+
+A type pair no ``pair_coeff`` covers is mixed as LAMMPS mixes it (pair_style granular: the same
+models for both types, geometric means, Young's moduli combined as 1/E* = sum (1 - nu^2)/E,
+limit_damping if either type has it). Tangential, rolling, twisting and heat models take no part
+in a head-on collision: named and passed over.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from ..codes import DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_gran_contact
+from ..deck_state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types
+
+__all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall"]
+
+ENGINE = "LAMMPS"
+#: The pair styles this dialect reads
+PAIR_STYLES = ("granular", *LAMMPS_GRAN_STYLES)
+#: What it maps, as a refusal of another pair style lists it
+MAPPED = "LAMMPS pair_style granular, gran/hooke, gran/hooke/history and gran/hertz/history"
+#: Fix styles of its own (fix pour and fix wall/gran are the generic reader's)
+FIXES: dict = {}
+
+#: LAMMPS pair_coeff keywords after the normal model: name -> number of arguments
+_LAMMPS_TANGENTIAL = {"linear_nohistory": 2, "linear_history": 3, "mindlin": 3, "mindlin_rescale": 3,
+                      "mindlin/force": 3, "mindlin_rescale/force": 3}
+_LAMMPS_NORMAL_ARGS = {"hooke": 2, "hertz": 2, "hertz/material": 3}
+#: LAMMPS pair_coeff heat models (pair_style granular's heat keyword) and their number of arguments:
+#: conduction between touching spheres, which changes temperatures, not forces
+_LAMMPS_HEAT = {"none": 0, "area": 1, "radius": 1}
+#: Unit styles whose pressure-to-force conversion (LAMMPS' nktv2p) is 1: gran/hertz/history's Kn as typed
+_NKTV2P_ONE = ("si", "cgs", "lj", "micro", "nano")
+
+
+def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
+    """pair_style granular (its models come per pair_coeff line), or an older gran/* style with one
+    law for every type pair.
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place (``gran``).
+    words : list of str
+        The command's words, words[1] one of PAIR_STYLES.
+    where, line : str
+        The line, for the refusal.
+
+    Raises
+    ------
+    DeckError
+        Where an older style's arguments are not LAMMPS'.
+
+    Examples
+    --------
+    >>> deck = Deck()
+    >>> pair_style(deck, "pair_style gran/hooke 2000 0 50 0 0.5 0".split(), "line 1", "")
+    >>> deck.gran["k_n"], deck.gran["limit_damping"]
+    (2000.0, False)
+    """
+    if words[1] != "granular":
+        deck.gran = _gran_law(words[1], words[2:], deck.units, where, line)
+
+
+def _gran_law(style: str, params: list, units: str, where: str, line: str) -> dict:
+    """codes.lammps_gran_contact's keywords from an older style's Kn Kt gamma_n gamma_t xmu dampflag
+    [limit_damping] (Kt, gamma_t, xmu and dampflag act tangentially only)."""
+    if len(params) not in (6, 7) or len(params) == 7 and params[6] != "limit_damping":
+        raise DeckError(where, line, f"{style} needs Kn Kt gamma_n gamma_t xmu dampflag [limit_damping], as "
+                                     "LAMMPS does")
+    if style == "gran/hertz/history" and units not in _NKTV2P_ONE:
+        raise DeckError(where, line, f"units {units}: gran/hertz/history's Kn is converted from pressure "
+                                     f"units there, which the reader does not map ({', '.join(_NKTV2P_ONE)} are)")
+    return {"style": style, "k_n": number(params[0], where, line), "gamma_n": number(params[2], where, line),
+            "limit_damping": len(params) == 7}
+
+
+def pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """pair_coeff I J ...: the line kept for every type pair it covers (read when audited); a heat
+    model on it is named.
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place (``coeffs``, ``unknown``).
+    words : list of str
+        The command's words, type labels replaced.
+    where, line : str
+        The line, for the refusal.
+    loc : tuple
+        (file or None, line number).
+
+    Raises
+    ------
+    DeckError
+        Where a type range is not one.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=2)
+    >>> pair_coeff(deck, "pair_coeff * 2 hooke 1000 50".split(), "line 5", "", (None, 5))
+    >>> sorted(deck.coeffs)
+    [(1, 2), (2, 2)]
+    """
+    if "heat" in words[4:]:
+        k = words.index("heat", 4)
+        model = words[k + 1:k + 2 + _LAMMPS_HEAT.get(words[k + 1] if k + 1 < len(words) else "", 0)]
+        deck.unknown.append((*loc, line, f"heat {' '.join(model)}: heat conduction, which does not touch the normal "
+                                         "force: accepted"))
+    for i in types(words[1], deck.ntypes, where, line):
+        for j in types(words[2], deck.ntypes, where, line):
+            deck.coeffs[(min(i, j), max(i, j))] = (loc, words)
+
+
+@dataclass
+class _Coeff:
+    """One pair_coeff line, as far as a head-on contact is concerned."""
+    normal: str
+    args: list          # the normal model's numbers: k, damp (hooke, hertz); E, damp, nu (hertz/material)
+    damping: str
+    limit: bool
+    others: list        # the tokens after the normal model's numbers (tangential, rolling, ...)
+    models: tuple       # the sub-model names, which LAMMPS requires equal before it mixes two types
+
+    def setting(self, stiffness: dict | None = None) -> dict:
+        """codes.lammps_contact's keywords; ``stiffness`` those of a mixed pair (see _mixed), else
+        this line's own."""
+        if stiffness is None:
+            stiffness = ({"normal": self.normal, "E": self.args[0], "nu": self.args[2]}
+                         if self.normal == "hertz/material" else {"normal": self.normal, "k_n": self.args[0]})
+        return {**stiffness, "damping": self.damping, "eta_n0": self.args[1], "limit_damping": self.limit}
+
+
+def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
+    normal = words[3] if len(words) > 3 else None
+    if normal not in _LAMMPS_NORMAL_ARGS:
+        raise DeckError(where, text, f"normal model {normal} is not mapped (hooke, hertz, hertz/material are)")
+    nargs = _LAMMPS_NORMAL_ARGS[normal]
+    if len(words) < 4 + nargs:
+        what = "E, damping, nu" if normal == "hertz/material" else "k, damping"
+        raise DeckError(where, text, f"normal model {normal} needs {nargs} numbers ({what})")
+    args = [number(a, where, text) for a in words[4:4 + nargs]]
+    damping, limit, k = "viscoelastic", False, 4 + nargs
+    models = {"tangential": None, "rolling": None, "twisting": None, "heat": None}
+    while k < len(words):
+        key = words[k]
+        nxt = words[k + 1] if k + 1 < len(words) else None
+        if key == "damping":
+            damping = nxt
+            k += 2
+        elif key == "limit_damping":
+            limit = True
+            k += 1
+        elif key == "tangential" and nxt in _LAMMPS_TANGENTIAL:
+            deck.ignored.append(f"tangential {nxt}")
+            models["tangential"] = nxt
+            k += 2 + _LAMMPS_TANGENTIAL[nxt]
+        elif key == "rolling" and nxt == "sds":
+            deck.ignored.append("rolling sds")
+            models["rolling"] = nxt
+            k += 5
+        elif key == "heat" and nxt in _LAMMPS_HEAT:
+            # heat conduction between the spheres: their temperatures, never the normal force
+            deck.ignored.append(f"heat {nxt}")
+            models["heat"] = nxt
+            k += 2 + _LAMMPS_HEAT[nxt]
+        elif key == "twisting" and nxt in ("marshall", "sds"):
+            deck.ignored.append(f"twisting {nxt}")
+            models["twisting"] = nxt
+            k += 2 if nxt == "marshall" else 5
+        else:
+            raise DeckError(where, text, f"keyword {key} is not mapped")
+    if damping not in DAMPING_MODELS:
+        raise DeckError(where, text, f"damping {damping} is not mapped")
+    return _Coeff(normal, args, damping, limit, words[4 + nargs:], (normal, damping, *models.values()))
+
+
+def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
+    """LAMMPS' mixing of two types' coefficients (pair_style granular, init_one): geometric means,
+    for hertz/material the effective modulus 1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j, used as
+    k = (4/3) E* (so as hertz with that k), and limit_damping if either has it. Returns the mixed
+    coefficients and the stiffness keywords of codes.lammps_contact."""
+    def geom(x, y):
+        return math.sqrt(x * y)
+    if a.normal == "hertz/material":
+        (E1, d1, nu1), (E2, d2, nu2) = a.args, b.args
+        e_star = 1.0 / ((1.0 - nu1 ** 2) / E1 + (1.0 - nu2 ** 2) / E2)
+        nu = geom(nu1, nu2)
+        # the E that an explicit hertz/material line with the mixed nu needs for the same E*
+        args = [2.0 * (1.0 - nu ** 2) * e_star, geom(d1, d2), nu]
+        stiffness = {"normal": "hertz", "k_n": 4.0 / 3.0 * e_star}
+    else:
+        args = [geom(x, y) for x, y in zip(a.args, b.args)]
+        stiffness = {"normal": a.normal, "k_n": args[0]}
+    others = []
+    for x, y in zip(a.others, b.others):
+        try:
+            others.append(x if x == y else f"{geom(float(x), float(y)):.10g}")
+        except ValueError:
+            others = None       # a NULL against a number: no single line to write
+            break
+    mixed = _Coeff(a.normal, args, a.damping, a.limit or b.limit, others, a.models)
+    return mixed, stiffness
+
+
+def pair_row(deck: Deck, i: int, j: int) -> dict:
+    """The audit's row for type pair (i, j), before its eps: the contact LAMMPS gives it, the e typed
+    (tsuji, coeff_restitution) and the pair_coeff line that gives that e exactly. Its arguments and
+    its row are :meth:`~restitution.dem.deck_state.DeckDialect.pair_row`'s.
+
+    Raises
+    ------
+    DeckError
+        Where no line covers the pair, LAMMPS cannot mix it, or a line is not mapped.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, radius={1: 0.5}, density={1: 1.0})
+    >>> pair_coeff(deck, "pair_coeff * * hooke 1000 50".split(), "line 5", "", (None, 5))
+    >>> row = pair_row(deck, 1, 1)
+    >>> row["model"], row["line"]
+    ('LAMMPS hooke, damping viscoelastic', 5)
+    """
+    if (i, j) not in deck.coeffs and ((i, i) not in deck.coeffs or (j, j) not in deck.coeffs):
+        why = (f" (pair_style at {place(deck.reset[0])}, another style, discarded the earlier ones)"
+               if deck.reset else "")
+        mix = f", nor both {i} {i} and {j} {j}, from which LAMMPS would mix it" if i != j else ""
+        raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair{mix}{why}: LAMMPS "
+                                                         "stops (all pair coeffs are not set)")
+    if deck.gran:
+        pair = spheres(deck, i, j)
+        loc = deck.style_line[0]
+        contact = lammps_gran_contact(pair, **deck.gran)
+        return {"types": [i, j], "model": f"LAMMPS {deck.gran['style']}", "typed_e": None, "end": contact.end,
+                "contact": contact, "pair": pair, "exact_line": None, "line": loc[1], "file": loc[0]}
+    if (i, j) in deck.coeffs:
+        loc, words = deck.coeffs[(i, j)]
+        where, text = place(loc), " ".join(words)
+        c = _coeff(deck, words, where, text)
+        stiffness = None
+        mixed_from = None
+    else:
+        (loc, wi), (loc_j, wj) = deck.coeffs[(i, i)], deck.coeffs[(j, j)]
+        ci = _coeff(deck, wi, place(loc), " ".join(wi))
+        cj = _coeff(deck, wj, place(loc_j), " ".join(wj))
+        if ci.models != cj.models:
+            raise DeckError("pair_coeff", f"types {i} {j}", f"types {i} and {j} use different models "
+                                                             f"({' '.join(filter(None, ci.models))} against "
+                                                             f"{' '.join(filter(None, cj.models))}): LAMMPS "
+                                                             "cannot mix them and stops; give pair_coeff "
+                                                             f"{i} {j}")
+        c, stiffness = _mixed(ci, cj)
+        mixed_from = f"mixed from {place(loc)} and {place(loc_j)}"
+    pair = spheres(deck, i, j)
+    contact = lammps_contact(pair, **c.setting(stiffness))
+    typed = c.args[1] if c.damping in E_DAMPINGS else None
+    exact = None
+    if typed is not None and c.others is not None:
+        e_new = exact_e(contact, typed, c.damping)
+        if e_new is not None:
+            # the pair's own line (a wildcard or mixed pair gets one naming it), its e replaced
+            numbers = [f"{x:.10g}" for x in c.args]
+            numbers[1] = f"{e_new:.10g}"
+            limit = ["limit_damping"] if c.limit and "limit_damping" not in c.others else []
+            exact = " ".join(["pair_coeff", str(i), str(j), c.normal, *numbers, *c.others, *limit])
+    model = f"LAMMPS {c.normal}, damping {c.damping}" + (f" ({mixed_from})" if mixed_from else "")
+    return {"types": [i, j], "model": model, "typed_e": typed, "end": contact.end, "contact": contact, "pair": pair,
+            "exact_line": exact, "line": loc[1], "file": loc[0]}
+
+
+# ---------------------------------------------------------------------------- walls
+#: LAMMPS fix wall/gran keywords after the wall style, with their number of values: they move or
+#: heat the wall or write output, none changes a head-on contact's eps at a given impact speed
+_LAMMPS_WALL_KEYWORDS = {"wiggle": 3, "shear": 2, "contacts": 0, "temperature": 1}
+_WALL_STYLES = FLAT_WALLS + ("zcylinder", "region")
+#: fix wall/gran's older models, each the law of the pair style gran/<model>
+_OLDER_WALLS = ("hooke", "hooke/history", "hertz/history")
+
+
+def wall(deck: Deck, loc, words: list, unknown: list):
+    """fix ID group wall/gran granular MODEL... xplane|yplane|zplane ...: [(None, a function of the
+    wall Pair and the sphere's type giving (contact, typed e, model, exact line or None), None)], or
+    None with the reason in ``unknown``. The wall's model is that of a pair_coeff line with the wall
+    as the second body (the older hooke, hooke/history and hertz/history: their pair style's law, Kn
+    Kt gamma_n gamma_t xmu dampflag [limit_damping]), and LAMMPS' keywords after the wall style
+    (wiggle, shear, contacts, temperature) move it, heat it or write output: none changes the contact.
+    Its arguments are :meth:`~restitution.dem.deck_state.DeckDialect.wall`'s.
+
+    Examples
+    --------
+    >>> [(mesh, wall_type) for mesh, _, wall_type in
+    ...  wall(Deck(), (None, 9), "fix w all wall/gran granular hooke 1000 50 zplane 0 NULL".split(), [])]
+    [(None, None)]
+    """
+    text = " ".join(words)
+    style = words[4] if len(words) > 4 else None
+    if style not in ("granular", *_OLDER_WALLS):
+        unknown.append((*loc, text, f"wall model {style} is not mapped (granular, {', '.join(_OLDER_WALLS)} are): "
+                                    "the wall's contacts are not audited"))
+        return None
+    k = next((n for n, w in enumerate(words) if n > 4 and w in _WALL_STYLES), None)
+    if k is None or words[k] not in FLAT_WALLS:
+        shape = "no wall style" if k is None else f"a {words[k]} wall"
+        unknown.append((*loc, text, f"{shape}: only planes are audited"))
+        return None
+    n = k + 3                                      # xplane|yplane|zplane lo hi
+    if n > len(words):
+        unknown.append((*loc, text, f"{words[k]} needs lo and hi: the wall's contacts are not audited"))
+        return None
+    while n < len(words) and words[n] in _LAMMPS_WALL_KEYWORDS:
+        n += 1 + _LAMMPS_WALL_KEYWORDS[words[n]]
+    if n < len(words):
+        unknown.append((*loc, text, f"keyword {words[n]} is not mapped: the wall's contacts are not audited"))
+        return None
+    if style in _OLDER_WALLS:
+        return _older_wall(deck, loc, words, k, unknown)
+    try:
+        c = _coeff(deck, ["pair_coeff", "*", "*", *words[5:k]], place(loc), text)
+    except DeckError as why:
+        unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
+        return None
+    model = f"LAMMPS {c.normal}, damping {c.damping}, {words[k]} wall"
+    typed = c.args[1] if c.damping in E_DAMPINGS else None
+
+    def contact_of(pair, t):
+        contact = lammps_contact(pair, **c.setting())
+        exact = None
+        if typed is not None:
+            # tsuji's and coeff_restitution's eps depend on e alone (Omega = 1 / A(e)^2 for hooke
+            # and hertz), so one e serves every type the wall acts on: the wall's own line with it
+            e_new = exact_e(contact, typed, c.damping)
+            if e_new is not None:
+                exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
+        return contact, typed, model, exact
+    return [(None, contact_of, None)]
+
+
+def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list):
+    """A wall of an older model (words[4]) with its Kn Kt gamma_n gamma_t xmu dampflag
+    [limit_damping] before the wall style at words[k]: as wall's result, no e typed."""
+    text = " ".join(words)
+    try:
+        law = _gran_law(f"gran/{words[4]}", words[5:k], deck.units, place(loc), text)
+    except DeckError as why:
+        unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
+        return None
+    model = f"LAMMPS {words[4]} (older wall model), {words[k]} wall"
+
+    def contact_of(pair, t):
+        return lammps_gran_contact(pair, **law), None, model, None
+    return [(None, contact_of, None)]

@@ -1,0 +1,376 @@
+"""LIGGGHTS' deck dialect: what ``pair_style gran model hertz|hooke``, its materials (``fix
+property/global``: youngsModulus, poissonsRatio, coefficientRestitution, characteristicVelocity),
+its particle templates and its ``fix wall/gran`` walls (primitive planes, the faces of meshes of the
+type their ``fix mesh/surface`` gives) mean for a head-on contact. The generic reader
+(:mod:`restitution.dem.deck_reader`) reaches it through its table of dialects, by pair style and by
+engine; this module has the same names as every dialect: ``ENGINE``, ``PAIR_STYLES``, ``MAPPED``,
+``FIXES``, :func:`pair_style`, :func:`pair_coeff`, :func:`pair_row` and :func:`wall`; and
+:func:`liggghts_only`, the commands LAMMPS does not have.
+
+LIGGGHTS' own checks on the materials (its limits on Young's modulus, Poisson's ratio and e) stop
+its run before the first step: a deck LIGGGHTS refuses gives no eps. Its aliases of the
+property/global styles (atomtype, vector; atomtypepair, matrix) are read.
+"""
+
+from __future__ import annotations
+
+from ..codes import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, liggghts_accepts_e,
+                     liggghts_contact)
+from ..deck_state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
+
+__all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall",
+           "liggghts_only"]
+
+ENGINE = "LIGGGHTS"
+#: The pair styles this dialect reads
+PAIR_STYLES = ("gran",)
+#: What it maps, as a refusal of another pair style lists it
+MAPPED = "LIGGGHTS pair_style gran model hertz|hooke"
+
+#: Commands that LIGGGHTS has and LAMMPS (22 Jul 2025) has not: first word, or "fix STYLE" prefixes
+_LIGGGHTS_COMMANDS = ("communicate", "soft_particles", "hard_particles")
+_LIGGGHTS_FIXES = ("property/global", "particletemplate/", "particledistribution/", "mesh/surface")
+
+
+def liggghts_only(words: list) -> bool:
+    """Whether the command exists in LIGGGHTS only (atom_style granular has its own refusal).
+
+    Parameters
+    ----------
+    words : list of str
+        The command's words.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> liggghts_only(["soft_particles", "yes"]), liggghts_only(["fix", "g", "all", "gravity"])
+    (True, False)
+    """
+    if words[0] in _LIGGGHTS_COMMANDS:
+        return True
+    return words[0] == "fix" and len(words) > 3 and words[3].startswith(_LIGGGHTS_FIXES)
+
+
+def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
+    """pair_style gran model hertz|hooke [limitForce on|off] [tangential, rolling_friction,
+    tangential_damping ...] [surface default]: the normal model and limitForce.
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place (``model``, ``limit_force``, ``ignored``).
+    words : list of str
+        The command's words.
+    where, line : str
+        The line, for the refusal.
+
+    Raises
+    ------
+    DeckError
+        Where a keyword may change the normal force, or no model is given.
+
+    Examples
+    --------
+    >>> deck = Deck()
+    >>> pair_style(deck, "pair_style gran model hertz tangential history".split(), "line 1", "")
+    >>> deck.model, deck.ignored
+    ('hertz', ['tangential history'])
+    """
+    i = 2
+    while i < len(words):
+        key = words[i]
+        val = words[i + 1] if i + 1 < len(words) else None
+        if key == "model":
+            if val not in ("hertz", "hooke"):
+                raise DeckError(where, line, f"model {val} is not mapped (hertz and hooke are)")
+            deck.model = val
+        elif key == "limitForce":
+            deck.limit_force = val == "on"
+        elif key in ("tangential", "rolling_friction", "tangential_damping"):
+            deck.ignored.append(f"{key} {val}")
+        elif key == "surface" and val == "default":
+            pass
+        else:
+            raise DeckError(where, line, f"{key} {val} is not mapped (it may change the normal force)")
+        i += 2
+    if not deck.model:
+        raise DeckError(where, line, "pair_style gran without model hertz|hooke")
+
+
+def pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """``pair_coeff * *``: LIGGGHTS' coefficients come from fix property/global, not from it.
+
+    Parameters
+    ----------
+    deck, words, where, line, loc
+        As every dialect's pair_coeff takes them; none is read.
+
+    Examples
+    --------
+    >>> pair_coeff(Deck(), ["pair_coeff", "*", "*"], "line 7", "pair_coeff * *", (None, 7))
+    """
+
+
+# ---------------------------------------------------------------------------- fixes of its own
+def _property_global(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    deck.props[words[4]] = (loc, words[5:])
+    deck.prop_fix[words[4]] = f"fix {words[1]} {words[2]}"     # the exact line keeps the deck's fix ID
+
+
+def _sphere_template(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """fix ID group particletemplate/sphere seed atom_type T density constant RHO radius constant R."""
+    tokens, t = words[5:], None
+    for k, tok in enumerate(tokens):
+        if tok == "atom_type":
+            if k + 1 == len(tokens):
+                raise DeckError(where, line, "atom_type needs a type")
+            t = atom_type(tokens[k + 1], where, line)
+        elif tok in ("density", "radius") and k + 2 < len(tokens) and tokens[k + 1] == "constant" \
+                and t is not None:
+            (deck.density if tok == "density" else deck.radius)[t] = number(tokens[k + 2], where, line)
+        elif tok in ("density", "radius") and k + 1 < len(tokens) and t is not None:
+            # other distributions (gaussian, ...) give no single value: the type is unset, and says why
+            (deck.density if tok == "density" else deck.radius).pop(t, None)
+            deck.missing[t] = f"fix {words[1]} gives type {t} a {tok} from a {tokens[k + 1]} distribution"
+
+
+def _mesh(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    # a mesh's atom type (its material), for the walls made of it; None if not given
+    typed = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "type"]
+    deck.meshes[words[1]] = int(typed[0]) if typed and typed[0].isdigit() else None
+
+
+#: fix style -> (its least number of words, what it does to the deck); shorter, not understood
+FIXES = {"property/global": (6, _property_global), "particletemplate/sphere": (4, _sphere_template),
+         "mesh/surface": (4, _mesh), "mesh/surface/stress": (4, _mesh)}
+
+
+# ---------------------------------------------------------------------------- materials and pairs
+#: fix property/global's styles LIGGGHTS 3.8.0 takes for a per-type list and a per-type-pair
+#: matrix (its aliases, checked: a deck with each runs)
+_PER_TYPE = ("peratomtype", "atomtype", "vector")
+_PER_PAIR = ("peratomtypepair", "atomtypepair", "matrix")
+
+
+def _prop(deck: Deck, name: str):
+    if name not in deck.props:
+        raise DeckError("fix property/global", name, "the deck does not define it (LIGGGHTS needs it)")
+    return deck.props[name]
+
+
+def _materials(deck: Deck) -> tuple:
+    """(E, nu, the coefficientRestitution matrix flattened, its location) from fix property/global."""
+    # LIGGGHTS itself stops unless each list has exactly one value per type (per type pair, symmetric)
+    def per_type(name):
+        loc, vals = _prop(deck, name)
+        if vals[0] not in _PER_TYPE:
+            raise DeckError(place(loc), " ".join(vals), f"{name} {vals[0]}: LIGGGHTS takes it as one of "
+                                                         f"{', '.join(_PER_TYPE)}, one value per type")
+        if len(vals) != 1 + deck.ntypes:
+            raise DeckError(place(loc), " ".join(vals), f"{name} gives {len(vals) - 1} value(s) for the "
+                                                         f"{deck.ntypes} types: LIGGGHTS needs one each")
+        return [number(v, place(loc), name) for v in vals[1:]]
+
+    E, nu = per_type("youngsModulus"), per_type("poissonsRatio")
+    loc, vals = _prop(deck, "coefficientRestitution")
+    where = place(loc)
+    m = deck.ntypes
+    if vals[0] not in _PER_PAIR:
+        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]}: LIGGGHTS takes it as one of "
+                                               f"{', '.join(_PER_PAIR)} N, then N x N values")
+    if len(vals) < 2 or vals[1] != str(m):
+        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]} gives N = "
+                                               f"{vals[1] if len(vals) > 1 else 'nothing'} where the deck has {m} "
+                                               f"types: LIGGGHTS needs {vals[0]} {m}")
+    if len(vals) != 2 + m * m:
+        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]} {m} gives {len(vals) - 2} "
+                                               f"value(s): LIGGGHTS needs {m}x{m} values, one per type pair")
+    matrix = [number(v, where, "coefficientRestitution") for v in vals[2:]]
+    if any(matrix[(a - 1) * m + b - 1] != matrix[(b - 1) * m + a - 1] for a in range(1, m + 1)
+           for b in range(a + 1, m + 1)):
+        raise DeckError(where, " ".join(vals), "the coefficientRestitution matrix is not symmetric")
+    _limits(deck, E, nu, matrix, where)
+    return E, nu, matrix, loc
+
+
+def _model(deck: Deck, model: str, limit_force: bool) -> dict:
+    """liggghts_contact's keywords for a normal model (hooke needs characteristicVelocity)."""
+    kw = {"model": model, "limit_force": limit_force}
+    if model == "hooke":
+        lv, v = _prop(deck, "characteristicVelocity")
+        kw["characteristic_velocity"] = number(v[-1], place(lv), "characteristicVelocity")
+    return kw
+
+
+def pair_row(deck: Deck, i: int, j: int) -> dict:
+    """The audit's row for type pair (i, j), before its eps: the contact LIGGGHTS gives it, the e
+    typed in coefficientRestitution and the line that gives that e exactly. Its arguments and its
+    row are :meth:`~restitution.dem.deck_state.DeckDialect.pair_row`'s.
+
+    Raises
+    ------
+    DeckError
+        Where a material is missing, not LIGGGHTS' form, or outside LIGGGHTS' limits.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, radius={1: 0.005}, density={1: 2500.0}, model="hertz", units="si")
+    >>> for name, vals in [("youngsModulus", "peratomtype 5e6"), ("poissonsRatio", "peratomtype 0.45"),
+    ...                    ("coefficientRestitution", "peratomtypepair 1 0.9")]:
+    ...     deck.props[name], deck.prop_fix[name] = ((None, 3), vals.split()), "fix m all"
+    >>> row = pair_row(deck, 1, 1)
+    >>> row["model"], row["typed_e"], row["exact_line"]
+    ('LIGGGHTS hertz, limitForce off', 0.9, 'fix m all property/global coefficientRestitution peratomtypepair 1 0.9')
+    """
+    E, nu, matrix, loc = _materials(deck)
+    m = deck.ntypes
+    e = matrix[(i - 1) * m + (j - 1)]
+    pair = spheres(deck, i, j)
+    kw = _model(deck, deck.model, deck.limit_force)
+    contact = liggghts_contact(pair, E=E[i - 1], nu=nu[i - 1], E2=E[j - 1], nu2=nu[j - 1], e=e, **kw)
+    return {"types": [i, j], "model": f"LIGGGHTS {deck.model}, limitForce {'on' if deck.limit_force else 'off'}",
+            "typed_e": e, "end": contact.end, "contact": contact, "pair": pair, "line": loc[1], "file": loc[0],
+            "exact_line": _exact_line(deck, matrix, i, j, contact)}
+
+
+def _exact_line(deck: Deck, matrix: list, i: int, j: int, contact) -> str | None:
+    """The coefficientRestitution line with the entry (i, j) replaced by the e that gives
+    ``contact`` eps = the e typed there; None where no e does or LIGGGHTS would refuse it."""
+    m = deck.ntypes
+    e_new = exact_e(contact, matrix[(i - 1) * m + (j - 1)], "liggghts")
+    if e_new is None or not liggghts_accepts_e(e_new):   # LIGGGHTS would stop on it
+        return None
+    new = list(matrix)
+    new[(i - 1) * m + (j - 1)] = new[(j - 1) * m + (i - 1)] = e_new
+    style = deck.props["coefficientRestitution"][1][0]      # the deck's own word: peratomtypepair or an alias
+    head = f"{deck.prop_fix['coefficientRestitution']} property/global coefficientRestitution {style} {m}"
+    return head + " " + " ".join(f"{x:.10g}" for x in new)
+
+
+def _limits(deck: Deck, E: list, nu: list, e: list, where_e: str) -> None:
+    """LIGGGHTS' own checks on the materials (codes.LIGGGHTS_E, LIGGGHTS_NU, LIGGGHTS_MODULUS),
+    which stop its run before the first step: a deck LIGGGHTS refuses gives no eps."""
+    where_E = place(deck.props["youngsModulus"][0])
+    low, high = LIGGGHTS_MODULUS.get(deck.units, (None, None))
+    if low is not None and not deck.soft and min(E) < low:
+        raise DeckError(where_E, f"youngsModulus {min(E):g}", f"LIGGGHTS stops: it requires youngsModulus >= {low:g} "
+                                                                f"in {deck.units} units unless soft_particles yes")
+    if high is not None and not deck.hard and max(E) > high:
+        raise DeckError(where_E, f"youngsModulus {max(E):g}", f"LIGGGHTS stops: it requires youngsModulus <= {high:g} "
+                                                                f"in {deck.units} units unless hard_particles yes")
+    if not all(LIGGGHTS_NU[0] <= v <= LIGGGHTS_NU[1] for v in nu):
+        raise DeckError(place(deck.props["poissonsRatio"][0]), "poissonsRatio",
+                        f"LIGGGHTS stops: it requires {LIGGGHTS_NU[0]:g} <= poissonsRatio <= {LIGGGHTS_NU[1]:g}")
+    if not all(liggghts_accepts_e(v) for v in e):
+        raise DeckError(where_e, "coefficientRestitution", f"LIGGGHTS stops: it requires {LIGGGHTS_E[0]:g} < "
+                                                           f"coefficientRestitution <= {LIGGGHTS_E[1]:g}")
+
+
+# ---------------------------------------------------------------------------- walls
+#: LIGGGHTS fix wall/gran: the general keywords after the wall style with their number of values
+#: (none changes a head-on contact); the model_type/model_name pairs before it are
+#: codes.LIGGGHTS_MODEL_TYPES
+_LIGGGHTS_WALL_GENERAL = {"shear": 2, "temperature": 1, "store_force": 1, "store_force_contact": 1,
+                          "store_force_contact_stress": 1}
+#: primitive wall styles and their number of arguments
+_LIGGGHTS_PRIMITIVES = {"xplane": 1, "yplane": 1, "zplane": 1, "xcylinder": 3, "ycylinder": 3, "zcylinder": 3}
+
+
+def wall(deck: Deck, loc, words: list, unknown: list):
+    """fix ID group wall/gran [model_type model_name]... (primitive type W STYLE ARGS | mesh
+    n_meshes N meshes ID...) [general keywords] [model keywords], the order LIGGGHTS documents:
+    for each flat surface (a primitive plane, or each mesh, whose type is its fix mesh/surface's) a
+    triple (mesh ID or None, a function of the wall Pair and the sphere's type giving (contact,
+    typed e, model, exact line or None), W): the contact of a type with an atom of type W under the
+    wall's own model (its model keywords, limitForce among them, are its own, not the pair
+    style's), the wall as the second body. None, with the reason in ``unknown``, where a part is
+    not mapped (a cylinder, a cohesion model, an unknown keyword, ...). Its arguments are
+    :meth:`~restitution.dem.deck_state.DeckDialect.wall`'s.
+
+    Raises
+    ------
+    DeckError
+        Where the wall's type is outside the deck's, or its materials are not LIGGGHTS'.
+
+    Examples
+    --------
+    >>> unknown = []
+    >>> wall(Deck(), (None, 9), "fix w all wall/gran model hertz primitive type 1 zcylinder 1 0 0".split(), unknown)
+    >>> unknown[0][3]
+    "a zcylinder wall (only planes are audited): the wall's contacts are not audited"
+    """
+    text, where = " ".join(words), place(loc)
+
+    def skip(why):
+        unknown.append((*loc, text, f"{why}: the wall's contacts are not audited"))
+        return None
+
+    model, limit, k = None, False, 4
+    while k + 1 < len(words) and words[k] in LIGGGHTS_MODEL_TYPES:
+        key, val = words[k], words[k + 1]
+        if key == "model" and val in ("hertz", "hooke"):
+            model = val
+        elif key in ("tangential", "rolling_friction") or key == "surface" and val == "default":
+            pass                  # no part in a head-on contact (as for the pair style)
+        else:
+            return skip(f"{key} {val} is not mapped")
+        k += 2
+    if model is None:
+        return skip("no model hertz|hooke")
+    surfaces = []                 # (mesh ID or None, wall type, what it is)
+    if k < len(words) and words[k] == "primitive":
+        if k + 3 >= len(words) or words[k + 1] != "type" or words[k + 3] not in _LIGGGHTS_PRIMITIVES:
+            return skip("a primitive wall not read (primitive type W STYLE ARGS)")
+        style = words[k + 3]
+        if style not in FLAT_WALLS:
+            return skip(f"a {style} wall (only planes are audited)")
+        if not words[k + 2].isdigit():
+            return skip(f"wall type {words[k + 2]} is not a type the reader can read")
+        surfaces.append((None, int(words[k + 2]), f"{style} wall"))
+        k += 4 + _LIGGGHTS_PRIMITIVES[style]
+    elif k < len(words) and words[k] == "mesh":
+        n = int(words[k + 2]) if k + 2 < len(words) and words[k + 1] == "n_meshes" and words[k + 2].isdigit() else 0
+        if n == 0 or k + 4 + n > len(words) or words[k + 3] != "meshes":
+            return skip("a mesh wall not read (mesh n_meshes N meshes ID...)")
+        for mesh in words[k + 4:k + 4 + n]:
+            if mesh not in deck.meshes:
+                return skip(f"mesh {mesh} has no fix mesh/surface before it")
+            if deck.meshes[mesh] is None:
+                return skip(f"mesh {mesh}'s fix mesh/surface gives no type the reader can read")
+            surfaces.append((mesh, deck.meshes[mesh], f"a face of mesh {mesh}"))
+        k += 4 + n
+    else:
+        return skip("no wall style read (primitive or mesh)")
+    while k < len(words):
+        key = words[k]
+        if key in _LIGGGHTS_WALL_GENERAL:
+            k += 1 + _LIGGGHTS_WALL_GENERAL[key]
+        elif key == "limitForce" and k + 1 < len(words):
+            limit, k = words[k + 1] == "on", k + 2
+        elif key == "tangential_damping" and k + 1 < len(words):
+            k += 2
+        else:
+            return skip(f"keyword {key} is not mapped")
+    for _, w, _ in surfaces:
+        if not 1 <= w <= deck.ntypes:
+            raise DeckError(where, text, f"the wall's type must be in 1..{deck.ntypes}")
+    E, nu, matrix, _ = _materials(deck)
+    kw = _model(deck, model, limit)
+
+    def contact_with(w: int, surface: str):
+        def contact(pair, t):
+            e = matrix[(t - 1) * deck.ntypes + (w - 1)]
+            c = liggghts_contact(pair, E=E[t - 1], nu=nu[t - 1], E2=E[w - 1], nu2=nu[w - 1], e=e, **kw)
+            # The entry (t, W) of the matrix also sets the sphere pair (t, W). Under either model
+            # LIGGGHTS' damping makes eps a function of e and limitForce alone (hertz: Tsuji's
+            # scaling; hooke: a damping ratio of e alone), so where the wall's model and limitForce
+            # are the pair style's, one e gives both contacts eps = e typed: the pair's exact line.
+            # Elsewhere the two want different e's and no line serves both.
+            same = (model, limit) == (deck.model, deck.limit_force)
+            exact = _exact_line(deck, matrix, t, w, c) if same else None
+            return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {surface} of type {w}", exact
+        return contact
+    return [(mesh, contact_with(w, label), w) for mesh, w, label in surfaces]
