@@ -340,13 +340,3 @@ def test_lammps_runs_the_lines_the_reader_reads(tmp_path, case):
     eps0 = lammps_eps_extrapolated(pair, include, g, t_c, steps=16000)[0]
     print(f"{case}: LAMMPS {eps0:.8f}, the reader {p['eps'][0]:.8f}")
     assert abs(eps0 / p["eps"][0] - 1) <= 1e-6, (eps0, p["eps"][0])
-
-
-def test_the_tokenizer_and_evaluator_keep_their_former_homes():
-    """deck_text holds them; deck_script and deck_expr, where they lived, still give the same objects."""
-    from restitution.dem import deck_expr, deck_script, deck_text
-    for name in ("logical_lines", "strip_comment", "unquoted", "words", "ScriptError", "evaluate_boolean",
-                 "newer_syntax"):
-        assert getattr(deck_script, name) is getattr(deck_text, name), name
-    for name in deck_expr.__all__:
-        assert getattr(deck_expr, name) is getattr(deck_text, name), name

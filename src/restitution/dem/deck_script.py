@@ -5,8 +5,7 @@ contact.
 
 How a file becomes commands and words, the substitution of ``$x``, ``${name}`` and ``$(...)``, and
 the formula languages of conditions and equal-style expressions are
-:mod:`restitution.dem.deck_text`'s (its tokenizer's names re-exported here: ``logical_lines``,
-``strip_comment``, ``unquoted``, ``words``, ``ScriptError``, ``evaluate_boolean``, ``newer_syntax``).
+:mod:`restitution.dem.deck_text`'s.
 :func:`if_branches` splits an ``if`` command into its conditions and commands.
 """
 
@@ -17,8 +16,7 @@ import re
 from .deck_text import (PLACEHOLDER, TRIPLE, ScriptError, Unevaluated, evaluate_boolean, logical_lines,
                         newer_syntax, placeholder, strip_comment, substituted, unquoted, words)
 
-__all__ = ["ScriptError", "LocatedError", "Script", "MAX_JUMPS", "MAX_DEPTH", "logical_lines", "strip_comment",
-           "unquoted", "words", "evaluate_boolean", "newer_syntax", "if_branches"]
+__all__ = ["LocatedError", "Script", "MAX_JUMPS", "MAX_DEPTH", "if_branches"]
 
 
 def if_branches(args: list[str]) -> list[tuple[str | None, list[str]]]:
@@ -80,7 +78,7 @@ class Script:
         removed), its substituted text and ``loc`` = (file name or None, line number).
     evaluate : callable
         ``evaluate(expression, variables)``: an equal-style expression's value; raises
-        :class:`~restitution.dem.deck_expr.Unevaluated` naming why it has none.
+        :class:`~restitution.dem.deck_text.Unevaluated` naming why it has none.
     note : callable
         ``note(loc, line, why)``: a line whose effect the reader does not know, never guessed.
     fetch : callable
