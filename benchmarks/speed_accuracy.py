@@ -42,7 +42,7 @@ from restitution.fast.integrator import collide_fast
 from restitution.core.highprec import reference_collision
 from restitution.api import RELATIONS, Ladder
 from restitution.core.connection import eps_from_connection
-from restitution.fast import ladder as ladder_module
+from restitution.fast import build as build_module
 from restitution.fast.calibration import Calibration, pade_mp2011
 from restitution.fast.master import MasterSettings
 from restitution.fast.uniform_build import build_uniform
@@ -92,7 +92,7 @@ def _time_per_point(fun, n: int, repeats: int = 3) -> float:
 
 def _built_in(name: str) -> float:
     """Seconds the ladder's last build of ``name`` took (default settings, alpha > gamma)."""
-    return ladder_module.MEASURED_SECONDS.get((name, "alpha>gamma", MasterSettings().key()), math.nan)
+    return build_module.MEASURED_SECONDS.get((name, "alpha>gamma", MasterSettings().key()), math.nan)
 
 
 def _errors(approx, ref):

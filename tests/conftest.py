@@ -53,11 +53,11 @@ for _name, _path in _STATE.items():
 @pytest.fixture(autouse=True)
 def _build_prices_of_a_new_process(monkeypatch):
     """The chooser prices a build by what the last one of its kind took in this process
-    (fast.ladder.MEASURED_SECONDS): builds timed by earlier tests on a loaded machine changed which
+    (fast.build.MEASURED_SECONDS): builds timed by earlier tests on a loaded machine changed which
     build a later test's request made first (test_overlap_master's large request built the
     overlap rule's uniform form too). Every test starts with the prices a new process has."""
-    from restitution.fast import ladder
-    monkeypatch.setattr(ladder, "MEASURED_SECONDS", {})
+    from restitution.fast import build
+    monkeypatch.setattr(build, "MEASURED_SECONDS", {})
 
 
 @pytest.fixture(scope="session")

@@ -149,9 +149,10 @@ def test_small_requests_do_not_build(tmp_path, monkeypatch):
     r = lad.evaluate(np.array([0.2, 2.0, 20.0]), tol=1e-9)
     assert r.method == "integrator" and r.error_bound <= 1e-9
     assert not list(tmp_path.iterdir())
-    import restitution.fast.ladder as ladder
-    monkeypatch.setattr(ladder, "BUILD_SECONDS", {k: {"alpha>gamma": 0.0} for k in ladder.BUILD_SECONDS})
-    monkeypatch.setattr(ladder, "MEASURED_SECONDS", {})
+    import restitution.fast.build as build
+    for b in lad.builds.values():   # every build free: each one pays
+        monkeypatch.setattr(b, "seconds", {"alpha>gamma": 0.0})
+    monkeypatch.setattr(build, "MEASURED_SECONDS", {})
     assert lad._building_pays(lad.quotes(np.array([0.2, 2.0]), 1e-9), 1e-9, 2)  # would build now ...
     r = lad.evaluate(np.array([0.2, 2.0]), tol=1e-9, build=False)
     assert r.method == "integrator"  # ... but was asked not to
@@ -161,9 +162,9 @@ def test_small_requests_do_not_build(tmp_path, monkeypatch):
 def test_large_requests_build_only_the_master_curve_and_cache_it(tmp_path, monkeypatch):
     """An eps request builds what it reads (issue 23): the master curve, in well under a second and
     so without a word on stderr; not the relation rungs, the uniform form or the mpmath check."""
-    import restitution.fast.ladder as ladder
+    import restitution.fast.build as build
 
-    monkeypatch.setattr(ladder, "MEASURED_SECONDS", {})   # priced as measured on the 2-core machine
+    monkeypatch.setattr(build, "MEASURED_SECONDS", {})   # priced as measured on the 2-core machine
     err = io.StringIO()
     lad = Ladder(("3/2", "1"), settings=SMALL, cache_dir=str(tmp_path), stream=err)
     r = lad.evaluate(np.geomspace(0.1, 10, 300_000), tol=1e-9)
@@ -182,9 +183,9 @@ def test_large_requests_build_only_the_master_curve_and_cache_it(tmp_path, monke
 def test_a_build_over_a_second_is_announced_with_its_price(tmp_path, monkeypatch):
     """The chooser prices each build by its measured cost and names on stderr those expected to
     take more than a second (here the mpmath check of the curve, about 3 s), not the others."""
-    import restitution.fast.ladder as ladder
+    import restitution.fast.build as build
 
-    monkeypatch.setattr(ladder, "MEASURED_SECONDS", {})
+    monkeypatch.setattr(build, "MEASURED_SECONDS", {})
     err = io.StringIO()
     lad = Ladder(("3/2", "1"), settings=SMALL, cache_dir=str(tmp_path), stream=err)
     assert lad._build_cost("mpmath check") > 1.0 > lad._build_cost("master curve")
@@ -192,7 +193,7 @@ def test_a_build_over_a_second_is_announced_with_its_price(tmp_path, monkeypatch
     said = err.getvalue()
     assert "building the master curve's check against mpmath" in said and "about" in said
     assert "building the master curve for" not in said and "building the uniform" not in said
-    assert ("master curve", "alpha>gamma", SMALL.key()) in ladder.MEASURED_SECONDS
+    assert ("master curve", "alpha>gamma", SMALL.key()) in build.MEASURED_SECONDS
     assert lad._build_cost("master curve") == 0.0   # built: nothing to pay
 
 
@@ -318,10 +319,14 @@ def test_cli_bad_input(argv, field, monkeypatch, tmp_path):
 
 
 def test_rung_names_are_documented():
-    import restitution.fast.ladder as ladder
-    for name in RUNG_NAMES:
-        stem = name.split("-N")[0]
-        assert stem in ladder.__doc__
+    """The documentation's table of rungs is generated from the registry, with the paragraph each
+    rung states about itself: every name the ladder offers is there, each with its bound."""
+    from restitution_workflow.docs_pages import rungs_page
+    sections = rungs_page().split("\n## `")[1:]
+    assert {s.split("`")[0] for s in sections} == set(RUNG_NAMES)
+    for section in sections:
+        paragraph = section.split("\n\n")[2]   # heading, the class's dotted name, its own words
+        assert "bound" in paragraph.lower(), section
 
 
 # ------------------------------------------------------------------------------ a tampered cache

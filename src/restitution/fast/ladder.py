@@ -1,96 +1,39 @@
 """The method ladder for eps(Omega) and ``epsilon()``, which picks the cheapest rung that meets a tolerance.
 
-Rungs (cheapest first; bounds are relative errors in eps, measured against the references on points
-not used to build the rung; "cal" = reads a build of :mod:`restitution.fast.calibration`: the master
-curve (0.1 s for alpha > gamma, 5 s for alpha < gamma), a relation's own c0-c2 (the perturbation
-route: seconds an order) or the uniform form (under a second; the overlap rule's 2-5 s); "ovl" =
-reads the overlap rule's own curve (under a second). Each is built on its own when a request pays for it, and cached):
-
-======================  =========================================  ============================  ========
-rung                    what                                       domain                        cost/pt
-======================  =========================================  ============================  ========
-exact-family            exact: alpha = 2 gamma + 1 is the linear   alpha = 2 gamma + 1, all      ~3e-6 s
-                        dashpot at (gamma+1) Omega                 Omega (overlap rule: above
-                        (core.exact_family); taken first           1/(4 (gamma+1)))
-paper-c          (cal)  Omega~ = c0 + c1 Omega + c2 Omega^2 with    alpha=3/2, gamma=1 where the   ~2e-8 s
-                        the paper's printed c0-c2, eps =            measured error is finite
-                        (Omega~/Omega)^((gamma+1)/(alpha-1-2gamma))
-fitted-c         (cal)  the same with c0-c2 fitted (least squares)  alpha-1-2gamma != 0            ~2e-8 s
-                        to the exact connection, Omega in [0.1, 3]
-perturbation-N<n>(cal)  the same with c0-c2 from the paper's        where the reading is defined   ~2e-8 s
-                        procedure on the exact series to Omega^n
-                        (n = 1..4, reading "converged, linear Delta")
-pade-mp2011      (cal)  Mueller & Poeschel's Pade form in           alpha=3/2, gamma=1/2           ~2e-8 s
-                        v = Omega^(-3/10)
-viscous          (cal)  small-Omega expansion (asymptotics)         Omega <= 1e-3                  ~2e-8 s
-elastic          (cal)  large-Omega expansion (asymptotics)         Omega >= 1e2                   ~3e-8 s
-closed-form             exact: alpha = gamma (asymptotics) or the   alpha=gamma; alpha=1,gamma=0   5e-7 s
-                        linear spring-dashpot (core.dashpot);                                      5e-6 s
-                 (cal)  otherwise the uniform form (core.uniform)   alpha>gamma, Omega in          ~1e-7 s
-                        (overlap rule: its own form, built alone    [1e-8, 1e8] (overlap rule:
-                        in 2-5 s)                                   gamma<alpha<2gamma+1)
-master           (cal)  Chebyshev master curve + expansions         all Omega > 0                  ~4e-8 s
-                 (ovl)  overlap rule: its own curve, Chebyshev      Omega in [1e-4, 1e8], above    ~4e-8 s
-                        only (fast.overlap_master), built alone     a sticking boundary
-                        in 1-2 s
-overlap-law             overlap rule: eps = C Omega^k, the viscous  gamma<alpha<2gamma+1, Omega    ~1e-7 s
-                        limit law (core.overlap_limit; C            <= 1e-8                        (C: 0.3-0.9 s
-                        integrated once)                                                           once)
-integrator              compiled DOP853 (fast.integrator), rtol     Omega in [1e-300, 1e14]        2e-5 to
-                        from tol; both end rules                    (alpha<=gamma, overlap rule:   7e-5 s
-                                                                    >= 1e-5)
-reference               core.collision.collide (scipy)              Omega in [1e-12, 1e10]         ~1e-2 s
-highprec                core.highprec (mpmath Taylor)               all (alpha<=gamma: >= 1e-3;    0.15 s and
-                                                                    overlap rule: >= 1e-5)         more at small
-                                                                                                   Omega
-======================  =========================================  ============================  ========
-
-Bounds:
-
-* relation rungs, Pade, expansions inside the calibration grid (Omega 1e-12..1e14 in steps of
-  0.1 decade): SAFETY x the largest error at the grid points bracketing the inputs + the grid's own
-  accuracy; expansions beyond the grid: the fitted remainder model of :mod:`restitution.fast.master`;
-* master: measured held-out error inside its range (x2), expansion bounds outside;
-* integrator: INTEGRATOR_BOUND_FACTOR rtol + INTEGRATOR_BOUND_FLOOR, times ((alpha + gamma) / 4)^3
-  where alpha + gamma > 4 (validated against mpmath; core.conditioning.exponent_factor);
-* reference: 10 rtol + 1e-13, the same factor for large exponents (validated against mpmath);
-  highprec: 10^(1 - digits), at least the 2.3e-16 of rounding to a double (and its own two-run error estimate must agree, else it raises);
-* overlap-law: twice C's own error + rounding (its exponential correction is below exp(-5e6) there);
-* exact-family: 8 u (1 + ln(1/eps)) at the request's smallest eps, u = 2^-53 (measured against
-  mpmath: a quarter of that at most);
-* closed-form: 2e-14 (validated against mpmath) where exact; the uniform form: its stated bound
-  (twice the largest error on points used neither in its fit nor in the choice of its shape).
-
-End rule: each rung declares the rules it serves where they differ (alpha > gamma): exact-family,
-closed-form (the dashpot, and the overlap rule's own uniform form where gamma < alpha < 2 gamma + 1),
-master, integrator, reference and highprec serve both (each with a rung of its own per rule where
-needed); the others the "force" rule (for alpha <= gamma the rules coincide and all serve).
-
-Each rung is an object of :mod:`restitution.fast.rungs` (interface: :mod:`restitution.fast.rung`);
-this module only compares their quotes and loads or builds what they read.
+The rungs are the objects of the registry :data:`restitution.fast.rungs.RUNGS` (the contract:
+:mod:`restitution.fast.rung`; each states its domain, cost and bound in its own docstring), listed
+with their end rules and costs on the documentation's generated page "The rungs of the method
+ladder" (``reference/_generated/rungs``, made from the registry by
+``restitution_workflow.docs_pages.rungs_page``). What they read that is made once (a master curve,
+a uniform form, a relation's c0-c2, a check against mpmath) are the builds of the registry
+:data:`restitution.fast.builds.BUILDS` (the contract: :mod:`restitution.fast.build`). This module
+only compares the rungs' quotes and loads or makes the builds they name; it knows neither kind by
+name.
 
 Choice: an exact rung (``Rung.exact``: the exact family alpha = 2 gamma + 1) wherever it serves
 and meets tol, with no build made; otherwise, among rungs whose domain holds every input and whose
 bound over the inputs is <= tol, the least expected time (setup + n x cost). A build is made
-(cached on disk) only when its price (BUILD_SECONDS, or what the last one of its kind took) plus
-its rung's cost undercuts the best rung that needs no build, or when nothing else meets tol; builds
-are made cheapest first, quoting again after each (the master curve may serve the request, and
-the perturbation route is then not built). One expected to take more than a second is named on
-stderr with its price. The master curve's check against mpmath (seconds) is built for the pipeline
-and the benchmark (``calibration()``), and can only widen the curve's bound.
-A tolerance no rung meets raises ParameterError naming the best bound available. Under the overlap
-rule an Omega at or below core.collision.stick_bound is refused before any rung runs (StickError).
+(cached on disk) only when its price (``Build.price``: what the last one of its kind took in this
+process, else its declared ``Build.seconds``) plus its rung's cost undercuts the best rung that
+needs no build, or when nothing else meets tol; builds are made cheapest first, quoting again after
+each (the master curve may serve the request, and the perturbation route is then not built). One
+expected to take more than a second is named on stderr with its price. The master curve's check
+against mpmath (seconds) is built for the pipeline and the benchmark (``calibration()``), and can
+only widen the curve's bound. A tolerance no rung meets raises ParameterError naming the best bound
+available. Under the overlap rule an Omega at or below core.collision.stick_bound is refused before
+any rung runs (StickError).
+
+End rule: each rung declares the rules it serves where they differ (alpha > gamma, ``Rung.ends``);
+for alpha <= gamma the rules coincide and all serve.
 """
 
 from __future__ import annotations
 
-import hashlib
 import math
 import sys
 import time
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from fractions import Fraction
-from typing import Callable
 
 import numpy as np
 
@@ -100,32 +43,18 @@ from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
 from ..core.problem import Problem
 from ..core.exponents import Exponents, as_exponents
-from ..core.uniform import UNIFORM_VERSION, UniformForm
-from .calibration import (CALIBRATION_VERSION, FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFORM, UNIFORM_OVERLAP, Calibration,
-                          Relation, measure_master, measure_relation, merged, relation_build, relation_dict)
-from .master import (MASTER_VERSION, MasterCurve, MasterSettings, build_master, mpmath_check, reference_eps,
-                     widen_by_check)
-from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request, integrator_bound
+from ..core.uniform import UniformForm
+from .build import Site
+from .builds import ladder_builds
+from .builds.overlap_curve import OVERLAP_CURVE
+from .calibration import FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFORM, Calibration, Relation, merged, relation_build
+from .master import MasterCurve, MasterSettings
+from .overlap_master import OverlapCurve
+from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request
 from .rungs import ladder_rungs, rung_names
 from .rungs.calibrated import SAFETY
-from .rungs.overlap_master import OVERLAP_CURVE
-from .overlap_master import OVERLAP_CURVE_VERSION, OverlapCurve, build_overlap_curve
-from .uniform_build import build_uniform
 
-__all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "BUILD_SECONDS",
-           "MEASURED_SECONDS", "DEFAULT_TOL", "TOL_FLOOR"]
-
-#: Seconds each build took on the 2-core machine when idle (about twice that when busy), by kind
-#: ("alpha>gamma" or "alpha<=gamma"): what the chooser prices a build at until it has timed one of
-#: that kind itself (MEASURED_SECONDS). Master curve: 0.1 s (3/2, 1 and 3/2, 1/2), 4.6-4.9 s for
-#: alpha < gamma (the creeping return below Omega = 1e-3), 0.01 s for alpha = gamma (exact);
-#: overlap curve 0.6-0.7 s; uniform form 0.6-0.7 s (overlap rule's 2-3.5 s); mpmath check (12 points) 2.8 s. The relation
-#: rungs carry their own (Relation.build_seconds).
-BUILD_SECONDS = {MASTER: {"alpha>gamma": 0.2, "alpha<=gamma": 5.0}, OVERLAP_CURVE: {"alpha>gamma": 0.7},
-                 UNIFORM: {"alpha>gamma": 0.7}, UNIFORM_OVERLAP: {"alpha>gamma": 3.0}, MPMATH: {"alpha>gamma": 3.0, "alpha<=gamma": 3.0}}
-#: What builds took in this process, by (build, kind, settings): the latest one prices the next.
-MEASURED_SECONDS: dict = {}
-
+__all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "DEFAULT_TOL", "TOL_FLOOR"]
 
 # ------------------------------------------------------------------------------------------ result
 @dataclass(frozen=True)
@@ -190,10 +119,6 @@ class EpsResult:
 
 
 # ------------------------------------------------------------------------------------------ helpers
-def _safe_name(name: str) -> str:
-    return "".join(c if c.isalnum() or c == "-" else "_" for c in name)
-
-
 def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
     lo, hi = OMEGA_REPRESENTABLE
     allowed = f"must be numbers in [{lo:g}, {hi:g}] (at least one)"
@@ -214,47 +139,6 @@ def _check_tol(tol) -> float:
     return number_in("tol", tol, TOL_FLOOR, 1.0, hi_open=True, why="no method returns a double closer than that")
 
 
-#: Where in each Chebyshev panel a loaded master curve is checked against the integrator (a
-#: fraction of the panel's width, away from the nodes the curve was fitted on).
-SPOT_CHECK_AT = 0.37
-
-
-def _spot_checks_pass(ex: Exponents, m: MasterCurve) -> bool:
-    """Every panel of the curve agrees with a fresh integration at one point, to its own bound (plus
-    the integrator's): the sealed digest catches a damaged file, this a wrong curve (a few ms)."""
-    om = np.exp(m.s0 + (np.arange(m.coef.shape[0]) + SPOT_CHECK_AT) * m.width)
-    ref = reference_eps(ex, om, 1e-13)
-    err = np.abs(m.eps(om) - ref) / ref
-    return bool(np.all(err <= 10.0 * (m.bound_at(om) + integrator_bound(1e-13, ex))))
-
-
-def _uniform_checks_pass(ex: Exponents, u: UniformForm, end: str) -> bool:
-    """The stored uniform form is for these exponents and rule and meets its bound at a few points
-    (the overlap rule's from 1e-3 up: below, each integration of the creeping return is slow)."""
-    if (u.alpha, u.gamma, u.end) != (ex.alpha, ex.gamma, end) or not 0 < u.bound_eps < 1:
-        return False
-    om = np.geomspace(1e-3 if end == "overlap" else 1e-7, 1e7, 8) * 1.37
-    ref = reference_eps(ex, om, 1e-13, end)
-    return bool(np.all(np.abs(u.eps(om) / ref - 1) <= u.bound_eps))
-
-
-def _digest(text: str) -> str:
-    return hashlib.sha256(text.encode()).hexdigest()[:12]
-
-
-@dataclass(frozen=True)
-class _Build:
-    """One cached build: its cache key, how to make its dict, check it and turn it into what rungs
-    read, the builds it reads, and the words that name it on stderr."""
-
-    key: str
-    make: Callable[[], dict]
-    valid: Callable[[dict], bool]
-    load: Callable[[dict], object]
-    what: str
-    after: tuple = ()
-
-
 class Ladder:
     """The ladder for one pair of exponents (and one calibration setting / cache directory)."""
 
@@ -267,8 +151,11 @@ class Ladder:
         self.settings = settings or MasterSettings()
         self.cache_dir = cache_dir
         self.stream = stream
+        #: The builds it may make, by name (restitution.fast.builds).
+        self.builds = ladder_builds(self.relations)
         #: What is built and loaded, by build name (what the rungs' ``needs`` name).
         self.built: dict = {}
+        self.site = Site(self.ex, self.settings, self._progress, self.built)
         self._announce = False
 
     @property
@@ -280,155 +167,66 @@ class Ladder:
         return Path(self.cache_dir) if self.cache_dir else None
 
     @property
-    def _kind(self) -> str:
-        return "alpha>gamma" if self.ex.alpha > self.ex.gamma else "alpha<=gamma"
-
-    @property
     def master_settings(self) -> MasterSettings:
         """The curve's settings: its mpmath check is a build of its own (MPMATH)."""
-        return replace(self.settings, n_highprec=0)
+        return self.site.master_settings
 
-    # -- the builds, by the name a rung's ``needs`` gives
-    def _spec(self, name: str) -> _Build:
-        ex, pair = self.ex, f"a{self.ex.alpha}-g{self.ex.gamma}"
-        for_pair = f"alpha={ex.alpha}, gamma={ex.gamma}"
-        if name == MASTER:
-            ms = self.master_settings
-            return _Build(f"master-{pair}-v{MASTER_VERSION}-{_digest(ms.key())}",
-                          lambda: build_master(ex, ms, progress=self._progress).as_dict(), self._master_valid,
-                          lambda d: measure_master(MasterCurve.from_dict(d)), f"the master curve for {for_pair}")
-        if name == OVERLAP_CURVE:
-            return _Build(f"overlap-curve-{pair}-v{OVERLAP_CURVE_VERSION}",
-                          lambda: build_overlap_curve(ex, self._progress).as_dict(), self._overlap_valid,
-                          OverlapCurve.from_dict, f"the overlap rule's master curve for {for_pair}")
-        if name in (UNIFORM, UNIFORM_OVERLAP):
-            end = "overlap" if name == UNIFORM_OVERLAP else "force"
-            return _Build(f"uniform-{'overlap-' if end == 'overlap' else ''}{pair}-v{UNIFORM_VERSION}",
-                          lambda: build_uniform(Problem(ex, end), self._progress).as_dict(),
-                          lambda d: self._uniform_valid(d, end), UniformForm.from_dict,
-                          f"the {end} rule's uniform closed form for {for_pair}")
-        if name == MPMATH:
-            s = self.settings
-            return _Build(f"mpmath-check-{pair}-v{CALIBRATION_VERSION}.{MASTER_VERSION}-{_digest(s.key())}",
-                          lambda: mpmath_check(self.master, s.n_highprec, s.highprec_digits, s.seed, self._progress),
-                          self._mpmath_valid, self._apply_check,
-                          f"the master curve's check against mpmath for {for_pair}", (MASTER,))
-        rel = next(r for r in self.relations if relation_build(r.name) == name)
-        return _Build(f"relation-{_safe_name(rel.name)}-{pair}-v{CALIBRATION_VERSION}",
-                      lambda: relation_dict(ex, rel, self._progress), lambda d: self._relation_valid(d, rel.name),
-                      lambda d: measure_relation(self.master, d), f"the {rel.name} relation for {for_pair}", (MASTER,))
-
+    # -- the builds, by the name a rung's ``needs`` gives (the registry: restitution.fast.builds)
     def _progress(self, msg: str) -> None:
         if self._announce:
             print(f"restitution:   {msg}", file=self._stream, flush=True)
-
-    def _master_valid(self, d: dict) -> bool:
-        try:
-            m = MasterCurve.from_dict(d)
-        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
-            return False
-        return (m.alpha == self.ex.alpha and m.gamma == self.ex.gamma and m.settings == self.master_settings
-                and bool(np.all(np.isfinite(m.coef))) and _spot_checks_pass(self.ex, m))
-
-    def _overlap_valid(self, d: dict) -> bool:
-        try:
-            c = OverlapCurve.from_dict(d)
-        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
-            return False
-        return (c.alpha, c.gamma) == (self.ex.alpha, self.ex.gamma) and c.spot_checks_pass()
-
-    def _uniform_valid(self, d: dict, end: str) -> bool:
-        try:
-            return _uniform_checks_pass(self.ex, UniformForm.from_dict(d), end)
-        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
-            return False
-
-    def _relation_valid(self, d: dict, name: str) -> bool:
-        # its error is measured from the c0-c2 it holds when loaded: an edited c is quoted as it is
-        try:
-            same = ((d["version"], d["name"], d["alpha"], d["gamma"])
-                    == (CALIBRATION_VERSION, name, str(self.ex.alpha), str(self.ex.gamma)))
-            return same and (isinstance(d.get("unavailable"), str) if "c" not in d
-                             else len(d["c"]) == 3 and all(math.isfinite(float(x)) for x in d["c"]))
-        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
-            return False
-
-    def _mpmath_valid(self, d: dict) -> bool:
-        """Its mpmath values agree with the integrator where they were taken: an edited value must
-        not widen the curve's bound for nothing, nor hide a wrong curve."""
-        try:
-            pts, hp = np.asarray(d["omega"], float), np.asarray(d["eps"], float)
-            if (d["alpha"], d["gamma"]) != (str(self.ex.alpha), str(self.ex.gamma)) or pts.shape != hp.shape:
-                return False
-            ref = reference_eps(self.ex, pts, 1e-13)
-        except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
-            return False
-        return bool(np.all(np.abs(hp / ref - 1) <= 10.0 * integrator_bound(1e-13, self.ex)))
-
-    def _apply_check(self, d: dict) -> dict:
-        widen_by_check(self.master, d)
-        return d
 
     def _cached(self, name: str):
         """The build ``name`` from its cache entry, once per ladder (None if absent, or if a build it
         reads is absent). A bad entry is removed with one note: otherwise it would be read, refused
         and reported on every call, and never replaced when a request is served without building."""
         if name not in self.built:
-            spec = self._spec(name)
-            if any(self._cached(a) is None for a in spec.after):
+            build = self.builds[name]
+            if any(self._cached(a) is None for a in build.after):
                 return None
-            path = _cache.cache_path(spec.key, self._directory())
+            path = _cache.cache_path(build.key(self.site), self._directory())
             # every check of a build depends on its key, content and the library only: remembered
-            d = _cache.load_or_discard(path, self._stream, spec.valid, "does not pass its checks against the integrator",
-                                       remember=True)
+            d = _cache.load_or_discard(path, self._stream, lambda d: build.valid(self.site, d),
+                                       "does not pass its checks against the integrator", remember=True)
             if d is not None:
-                self.built[name] = spec.load(d)
+                self.built[name] = build.load(self.site, d)
         return self.built.get(name)
 
     def _build(self, name: str):
         """The build ``name``, made (with what it reads) and cached if it is not; announced on stderr
         when it is expected to take more than a second."""
         if self._cached(name) is None:
-            spec = self._spec(name)
-            for a in spec.after:
+            build = self.builds[name]
+            for a in build.after:
                 self._build(a)
-            seconds = self._own_cost(name)
+            seconds = build.price(self.site)
             timing = {}
 
             def make():
                 t0 = time.perf_counter()
-                out = spec.make()
+                out = build.make(self.site)
                 timing["s"] = time.perf_counter() - t0
                 return out
 
             self._announce = seconds > _cache.ANNOUNCE_SECONDS
             try:
-                d = _cache.get_or_build(spec.key, make, valid=spec.valid, directory=self._directory(),
-                                        what=spec.what, stream=self._stream, announce=self._announce,
-                                        estimate=seconds, remember=True)
+                d = _cache.get_or_build(build.key(self.site), make, valid=lambda d: build.valid(self.site, d),
+                                        directory=self._directory(), what=build.what(self.site),
+                                        stream=self._stream, announce=self._announce, estimate=seconds,
+                                        remember=True)
             finally:
                 self._announce = False
             if "s" in timing:
-                MEASURED_SECONDS[self._measured_key(name)] = timing["s"]
-            self.built[name] = spec.load(d)
+                build.timed(self.site, timing["s"])
+            self.built[name] = build.load(self.site, d)
         return self.built[name]
-
-    def _measured_key(self, name: str) -> tuple:
-        return name, self._kind, self.settings.key()
-
-    def _own_cost(self, name: str) -> float:
-        if self._measured_key(name) in MEASURED_SECONDS:
-            return MEASURED_SECONDS[self._measured_key(name)]
-        rel = next((r for r in self.relations if relation_build(r.name) == name), None)
-        if rel is not None:
-            return rel.build_seconds
-        return BUILD_SECONDS[name].get(self._kind, math.inf)
 
     def _build_cost(self, name: str) -> float:
         """Expected seconds to have ``name``: its own and those of the unbuilt builds it reads."""
         if name in self.built:
             return 0.0
-        return self._own_cost(name) + sum(self._build_cost(a) for a in self._spec(name).after)
+        build = self.builds[name]
+        return build.price(self.site) + sum(self._build_cost(a) for a in build.after)
 
     # -- the pieces by name (tests, the benchmark, the pipeline)
     def cached_calibration(self) -> Calibration | None:
@@ -447,7 +245,7 @@ class Ladder:
 
     @property
     def overlap_key(self) -> str:
-        return self._spec(OVERLAP_CURVE).key
+        return self.builds[OVERLAP_CURVE].key(self.site)
 
     def uniform(self) -> UniformForm | None:
         """The force rule's uniform form (None where alpha <= gamma, and for alpha = 2 gamma + 1,

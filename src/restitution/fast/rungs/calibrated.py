@@ -48,7 +48,9 @@ class _Calibrated(Rung):
 
 
 class RelationRung(_Calibrated):
-    """Omega~ = c0 + c1 Omega + c2 Omega^2 with the c's of one :class:`Relation`."""
+    """Omega~ = c0 + c1 Omega + c2 Omega^2 with the c's of one :class:`Relation` (a build of its own),
+    eps = (Omega~/Omega)^((gamma+1)/(alpha-1-2gamma)); bound: SAFETY x its largest error measured on the master curve's calibration grid (Omega 1e-12..1e14
+    in steps of 0.1 decade) at the grid points bracketing the request, plus the grid's own accuracy."""
 
     setting = "c0-c2"
 
@@ -63,6 +65,10 @@ class RelationRung(_Calibrated):
 
 
 class PadeRung(_Calibrated):
+    """Mueller & Poeschel's Pade form in v = Omega^(-3/10), alpha = 3/2, gamma = 1/2 only; bound:
+    SAFETY x its largest error measured on the master curve's calibration grid (Omega 1e-12..1e14
+    in steps of 0.1 decade) at the grid points bracketing the request, plus the grid's own accuracy."""
+
     name, setting = "pade-mp2011", ""
 
     def evaluate(self, req, cal, setting, omega):
@@ -91,6 +97,10 @@ class _Expansion(_Calibrated):
 
 
 class ViscousRung(_Expansion):
+    """The small-Omega expansion (:mod:`restitution.core.asymptotics`), Omega <= 1e-3 (1e-2 where
+    alpha <= gamma); bound: inside the calibration grid as the Pade rung's, beyond it SAFETY x the
+    fitted remainder model of :mod:`restitution.fast.master`."""
+
     name, cost = "viscous", 2e-8
 
     def outside(self, req):
@@ -105,6 +115,10 @@ class ViscousRung(_Expansion):
 
 
 class ElasticRung(_Expansion):
+    """The large-Omega expansion (:mod:`restitution.core.asymptotics`), Omega >= 1e2; bound: inside
+    the calibration grid as the Pade rung's, beyond it SAFETY x the fitted remainder model of
+    :mod:`restitution.fast.master`."""
+
     name, cost = "elastic", 3e-8
 
     def outside(self, req):
@@ -118,7 +132,9 @@ class ElasticRung(_Expansion):
 
 
 class MasterRung(_Calibrated):
-    """The Chebyshev master curve with the expansions beyond its joins (:mod:`restitution.fast.master`)."""
+    """The Chebyshev master curve with the expansions beyond its joins (:mod:`restitution.fast.master`),
+    every Omega > 0; bound: its measured held-out error inside its range (x2), the expansions'
+    bounds outside."""
 
     name, cost = "master", 4e-8
 

@@ -45,6 +45,12 @@ def dashpot_eps(omega: np.ndarray, end: str = "force") -> np.ndarray:
 
 
 class ClosedForm(Rung):
+    """Exact where the problem is solvable (alpha = gamma by :mod:`restitution.core.asymptotics`;
+    the linear spring-dashpot by :mod:`restitution.core.dashpot`), bound EXACT_BOUND (validated
+    against mpmath); otherwise the uniform form (:mod:`restitution.core.uniform`, a build of its own
+    per end rule), Omega in FORM_RANGE, bound the form's stated one: twice its largest error on
+    points used neither in its fit nor in the choice of its shape."""
+
     name = "closed-form"
     ends = ("force", "overlap")
     # one collision in closed form, trajectory quantities included, exists for the linear dashpot

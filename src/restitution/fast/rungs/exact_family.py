@@ -31,7 +31,8 @@ def family_collision(problem, omega, method: str):
 
 class ExactFamily(Rung):
     """eps = exp(-T_c/2) of the dashpot at (gamma+1) Omega (:func:`restitution.core.exact_family.exact_eps`)
-    for alpha = 2 gamma + 1, both end rules, every Omega the ladder accepts."""
+    for alpha = 2 gamma + 1, both end rules, every Omega the ladder accepts (overlap rule: above
+1/(4 (gamma+1))); bound EPS_ULPS u (1 + ln(1/eps)) at the request's smallest eps, u = 2^-53."""
 
     name, cost = "exact-family", EXACT_FAMILY_COST
     ends = ("force", "overlap")

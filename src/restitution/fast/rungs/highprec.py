@@ -34,6 +34,11 @@ def highprec_cost(omega: np.ndarray, digits: int, creeps: bool = False) -> float
 
 
 class Highprec(Rung):
+    """The mpmath Taylor reference (:mod:`restitution.core.highprec`): every Omega (alpha <= gamma:
+    from 1e-3; the overlap rule: from CREEP_MIN), 0.15 s a point and more at small Omega; bound
+    10^(1 - digits), at least the 2.3e-16 of rounding to a double, and its own two-run error
+    estimate must agree, else it raises."""
+
     name, cost = "highprec", HIGHPREC_COST
     ends = ("force", "overlap")
     collides = True

@@ -48,6 +48,12 @@ def integrator_collision(problem, omega, rtol):
 
 
 class Integrator(Rung):
+    """The compiled DOP853 integrator (:mod:`restitution.fast.integrator`) at an rtol from the
+    tolerance, Omega in [1e-300, OMEGA_MAX] (alpha <= gamma: from the stiff limit); bound
+    INTEGRATOR_BOUND_FACTOR rtol + INTEGRATOR_BOUND_FLOOR, times ((alpha + gamma) / 4)^3 where
+    alpha + gamma > 4 (:func:`restitution.core.conditioning.exponent_factor`), validated against
+    mpmath."""
+
     name, cost = "integrator", 6e-5
     conditioned = True
     collides = True

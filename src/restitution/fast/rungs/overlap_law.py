@@ -23,6 +23,10 @@ LAW_MAX = 1e-8
 
 
 class OverlapLaw(Rung):
+    """eps = C Omega^k, the overlap rule's viscous limit law, gamma < alpha < 2 gamma + 1 and
+    Omega <= LAW_MAX (C integrated once, 0.3-0.9 s); bound: twice C's own error plus rounding (its
+    exponential correction is below exp(-5e6) there)."""
+
     # per point; the first request of a pair integrates C once (0.3-0.9 s, cached per process)
     name, cost = "overlap-law", 1e-7
     ends = ("overlap",)

@@ -6,13 +6,11 @@ from __future__ import annotations
 
 import math
 
+from ..builds.overlap_curve import OVERLAP_CURVE
 from ..overlap_master import OMEGA_HI, OMEGA_LO
 from ..rung import Rung
 
 __all__ = ["OverlapMaster", "OVERLAP_CURVE"]
-
-#: The build it reads.
-OVERLAP_CURVE = "overlap-rule master curve"
 
 
 class OverlapMaster(Rung):
