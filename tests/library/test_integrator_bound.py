@@ -29,10 +29,11 @@ def test_tableau_is_scipys_own():
     # read from scipy's file without importing scipy.integrate: the same numbers as the import gives
     from scipy.integrate._ivp import dop853_coefficients as dop
 
-    from restitution.fast import integrator
+    from restitution.fast import dop853
     n = dop.N_STAGES
-    for ours, theirs in ((integrator._A, dop.A[:n, :n]), (integrator._B, dop.B), (integrator._C, dop.C[:n]),
-                         (integrator._E3, dop.E3), (integrator._E5, dop.E5)):
+    assert dop853.N_STAGES == n
+    for ours, theirs in ((dop853.A, dop.A[:n, :n]), (dop853.B, dop.B), (dop853.C, dop.C[:n]),
+                         (dop853.E3, dop.E3), (dop853.E5, dop.E5)):
         assert ours.shape == theirs.shape and ours.tobytes() == np.ascontiguousarray(theirs, float).tobytes()
 
 

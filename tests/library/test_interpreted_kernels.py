@@ -133,10 +133,11 @@ MANY_SMALL = textwrap.dedent("""
     import sys
     import numpy as np
     from restitution.fast import jit
-    from restitution.fast.integrator import _collide_many, collide_fast
+    from restitution.fast.collision_kernels import collide_many
+    from restitution.fast.integrator import collide_fast
 
     jit.PLAIN_BUDGET, jit.COMPILE_BUDGET = 0.1, 0.3
-    assert not jit._compiled_on_disk(_collide_many), "an empty NUMBA_CACHE_DIR holds a kernel"
+    assert not jit._compiled_on_disk(collide_many), "an empty NUMBA_CACHE_DIR holds a kernel"
     om = np.array([0.3])
     first = collide_fast(3, 2, 2, om, 1e-12, False)
     assert "numba" not in sys.modules, "one small request started numba"
@@ -147,7 +148,7 @@ MANY_SMALL = textwrap.dedent("""
     assert "numba" in sys.modules, "a thousand small requests never started numba"
     assert jit._SPENT["plain"] >= jit.COMPILE_BUDGET, "nothing compiled on disk: compiling's budget applies"
     assert np.array_equal(first, collide_fast(3, 2, 2, om, 1e-12, False))
-    assert jit._compiled_on_disk(_collide_many)
+    assert jit._compiled_on_disk(collide_many)
     print(calls)
 """)
 

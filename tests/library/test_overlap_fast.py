@@ -96,8 +96,8 @@ def test_sticks_where_the_reference_proves_it_and_not_just_above(alpha, gamma, o
 def test_force_rule_numbers_are_unchanged_by_the_overlap_code():
     """The force rule runs the same kernel: it must give, to the bit, what it gave when recorded
     (alpha = 3/2, gamma = 1, rtol = 1e-10; the pipeline's force-rule outputs rest on them). Recorded
-    after the compressing leg's v' was formed from v (integrator._rhs); the values before that, after
-    the u legs' step cap (integrator.U_STEPS_MIN), and before it, from the kernel before the overlap
+    after the compressing leg's v' was formed from v (collision_kernels._rhs); the values before that, after
+    the u legs' step cap (collision_kernels.U_STEPS_MIN), and before it, from the kernel before the overlap
     legs were added, differ by less than the bound."""
     om = [1e-12, 1e-2, 10.0, 1e8, 1e14]
     now = ["0x1.4ebb674cfccb2p-40", "0x1.7b108d57a5f6cp-7", "0x1.c1ff493d326f1p-1", "0x1.fffff4b3b884ep-1",

@@ -1,6 +1,6 @@
 """numba's ``njit`` when numba is installed (numba imported and the kernel made on its first call),
 else a no-op decorator: the compiled kernels
-(:mod:`restitution.fast.integrator`, :mod:`restitution.fast.panels`) are also valid plain Python,
+(:mod:`restitution.fast.collision_kernels`, :mod:`restitution.fast.panels`) are also valid plain Python,
 only much slower. ``HAVE_NUMBA`` says which.
 
 A kernel compiled with ``cache=True`` is re-compiled when its own file changes, not when a file it
