@@ -198,3 +198,33 @@ def as_exponents(alpha, gamma=None) -> Exponents:
         if isinstance(alpha, tuple) and len(alpha) == 2:
             return Exponents.parse(*alpha)
     return Exponents.parse(alpha, gamma)
+
+
+def read_through(holder: str, name: str, doc: str | None = None) -> property:
+    """A read-only property that reads ``name`` from the attribute ``holder``: the one spelling of
+    alpha, gamma and p for a value that holds its exponents (a Problem, a Series, a Material)
+    rather than a copy of them.
+
+    Parameters
+    ----------
+    holder : str
+        The attribute that holds the exponents (or the problem), e.g. ``"ex"``.
+    name : str
+        What to read from it.
+    doc : str, optional
+        The property's docstring.
+
+    Returns
+    -------
+    property
+
+    Examples
+    --------
+    >>> class Pair:
+    ...     def __init__(self, ex):
+    ...         self.ex = ex
+    ...     alpha = read_through("ex", "alpha")
+    >>> Pair(Exponents.parse("3/2", 1)).alpha
+    Fraction(3, 2)
+    """
+    return property(lambda self: getattr(getattr(self, holder), name), doc=doc or f"``{holder}.{name}``")

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .errors import ParameterError, real_array, require_positive_finite
-from .exponents import Exponents, as_exponents
+from .exponents import Exponents, as_exponents, read_through
 
 #: Omega outside this range is refused here: no method in the package works with it in doubles.
 OMEGA_REPRESENTABLE = (1e-300, 1e300)
@@ -88,13 +88,8 @@ class Material:
         object.__setattr__(out, "D2", require_positive_finite("D2", D2))
         return out
 
-    @property
-    def alpha(self):
-        return self.exponents.alpha
-
-    @property
-    def gamma(self):
-        return self.exponents.gamma
+    alpha = read_through("exponents", "alpha")
+    gamma = read_through("exponents", "gamma")
 
     def omega(self, g):
         """Omega at impact speed(s) g; same shape as g (a float for a scalar)."""

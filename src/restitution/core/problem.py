@@ -11,10 +11,9 @@ one Omega, with its numbers, in one direction.)
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from fractions import Fraction
 
 from .errors import ParameterError
-from .exponents import Exponents, as_exponents
+from .exponents import Exponents, as_exponents, read_through
 from .results import end_rule
 
 __all__ = ["Problem", "as_problem", "problem_end"]
@@ -78,18 +77,9 @@ class Problem:
         """The problem for exponents as :meth:`Exponents.parse` reads them, under ``end``."""
         return cls(Exponents.parse(alpha, gamma), end)
 
-    @property
-    def alpha(self) -> Fraction:
-        return self.ex.alpha
-
-    @property
-    def gamma(self) -> Fraction:
-        return self.ex.gamma
-
-    @property
-    def p(self) -> int:
-        """Least common denominator of alpha and gamma."""
-        return self.ex.p
+    alpha = read_through("ex", "alpha")
+    gamma = read_through("ex", "gamma")
+    p = read_through("ex", "p", "Least common denominator of alpha and gamma.")
 
     @property
     def rules_differ(self) -> bool:

@@ -27,7 +27,7 @@ import numpy as np
 from .damped import forward as damped_only_forward  # noqa: F401 - closed forms live beside the series
 from .damped import inverse as damped_only_inverse  # noqa: F401
 from .errors import ParameterError, integer_in
-from .exponents import Exponents, as_exponents
+from .exponents import Exponents, as_exponents, read_through
 
 DIRECTIONS = {"forward": 1, "inverse": -1}
 #: Highest index k of tau^(k/p) the engine computes (the time grows as its square).
@@ -159,17 +159,9 @@ class PerturbationSeries:
     max_power: Fraction
     _coeffs: tuple[tuple[Fraction, ...], ...]
 
-    @property
-    def alpha(self) -> Fraction:
-        return self.exponents.alpha
-
-    @property
-    def gamma(self) -> Fraction:
-        return self.exponents.gamma
-
-    @property
-    def p(self) -> int:
-        return self.exponents.p
+    alpha = read_through("exponents", "alpha")
+    gamma = read_through("exponents", "gamma")
+    p = read_through("exponents", "p")
 
     def terms(self, n: int) -> list[tuple[Fraction, Fraction]]:
         """Nonzero (power of tau, coefficient) of x_n, ascending power."""

@@ -38,7 +38,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from ..core.conditioning import conditioning, plain_accuracy, plain_factor_floor
-from ..core.exponents import Exponents
+from ..core.exponents import read_through
 from ..core.problem import Problem, as_problem
 
 __all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
@@ -142,24 +142,12 @@ class Request:
     def __post_init__(self):
         object.__setattr__(self, "problem", as_problem(self.problem))   # an Exponents: the force rule
 
-    @property
-    def ex(self) -> Exponents:
-        return self.problem.ex
-
-    @property
-    def end(self) -> str:
-        """The end rule asked for."""
-        return self.problem.end
-
-    @property
-    def rules_differ(self) -> bool:
-        """The force can vanish during contact (alpha > gamma): the two end rules differ."""
-        return self.problem.rules_differ
-
-    @property
-    def rule(self) -> str:
-        """The end rule whose numbers apply: "overlap" only where it differs from the force rule."""
-        return self.problem.effective_end
+    ex = read_through("problem", "ex")
+    end = read_through("problem", "end", "The end rule asked for.")
+    rules_differ = read_through("problem", "rules_differ",
+                                "The force can vanish during contact (alpha > gamma): the two end rules differ.")
+    rule = read_through("problem", "effective_end",
+                        'The end rule whose numbers apply: "overlap" only where it differs from the force rule.')
 
 
 class Rung:

@@ -57,6 +57,8 @@ class Integrator(Rung):
     name, cost = "integrator", 6e-5
     conditioned = True
     collides = True
+    #: What makes the explicit method slow below its range, for the refusal.
+    stiff_below = "stiff below"
 
     def collision(self, problem, omega, *, rtol, digits, t_eval=None):
         return integrator_collision(problem, omega, rtol)
@@ -64,7 +66,7 @@ class Integrator(Rung):
     def outside(self, req):
         wmin = stiff_omega_min(req.problem)
         if req.lo < wmin or req.hi > OMEGA_MAX:
-            return f"Omega outside [{printed(wmin)}, {printed(OMEGA_MAX)}] (explicit method; stiff below)"
+            return f"Omega outside [{printed(wmin)}, {printed(OMEGA_MAX)}] (explicit method; {self.stiff_below})"
         return None
 
     def price(self, req):

@@ -8,27 +8,20 @@ reference (Radau there) takes over. A proved sticking raises StickError, as the 
 from __future__ import annotations
 
 from ..integrator import OVERLAP_RTOL_MAX
-from ..master import reference_eps, stiff_omega_min
-from ..rung import Rung, integrator_bound, integrator_rtol
-from .integrator import OMEGA_MAX, integrator_collision, printed
+from ..master import reference_eps
+from ..rung import integrator_bound, integrator_rtol
+from .integrator import Integrator
 
 __all__ = ["OverlapIntegrator"]
 
 
-class OverlapIntegrator(Rung):
-    name, cost = "integrator", 6e-5
-    conditioned = True
+class OverlapIntegrator(Integrator):
+    """The compiled integrator under the overlap rule, where it differs from the force rule (alpha >
+    gamma): rtol at most OVERLAP_RTOL_MAX, bound integrator_bound(rtol) with the overlap rule's own
+    factor and floor, from Omega = 1e-5 (the scipy reference takes the creeping return below)."""
+
     ends = ("overlap",)
-    collides = True
-
-    def collision(self, problem, omega, *, rtol, digits, t_eval=None):
-        return integrator_collision(problem, omega, rtol)
-
-    def outside(self, req):
-        wmin = stiff_omega_min(req.problem)
-        if req.lo < wmin or req.hi > OMEGA_MAX:
-            return f"Omega outside [{wmin:g}, {printed(OMEGA_MAX)}] (explicit method; the creeping return is stiff below)"
-        return None
+    stiff_below = "the creeping return is stiff below"
 
     def price(self, req):
         return self.cost * req.n * (1.0 + 3e-3 / req.lo)   # ~0.4/Omega steps of the creeping return
