@@ -16,7 +16,8 @@ import yaml
 from restitution.cli import main
 from restitution.dem.codes import Pair, lammps_contact, liggghts_contact
 from restitution.dem.contact import Contact
-from restitution.dem.model_ladder import fit_rung, lammps_rungs
+from restitution.dem.engines.lammps.scene import lammps_models
+from restitution.dem.model_choice import fit_model
 from restitution.dem.scene import answer_scene
 from restitution.core.errors import ParameterError
 from restitution.dem.scene_file import scene_from_dict
@@ -150,7 +151,7 @@ def _scene(lo, hi, tolerance=0.01):
         "targets": [{"pair": ["m", "m"], "table": table}]})
 
 
-def test_the_cheapest_rung_is_rejected_over_a_wide_range():
+def test_the_cheapest_model_is_rejected_over_a_wide_range():
     scene = _scene(0.01, 10.0)
     c = answer_scene(scene)["contacts"][0]
     tsuji, kk = c["rungs"][0], c["rungs"][1]
@@ -159,19 +160,19 @@ def test_the_cheapest_rung_is_rejected_over_a_wide_range():
     # the material is Kuwabara-Kono: least squares on its table gives back its own eps at the
     # measured points (between them, the table's interpolation in log speed differs by ~1e-3)
     target = scene.target("m", "m")
-    kk_fit = fit_rung(lammps_rungs("hertz/material", "choose")[1], "force", target, scene.check_grid(), 0.01)
+    kk_fit = fit_model(lammps_models("hertz/material", "choose")[1], "force", target, scene.check_grid(), 0.01)
     speeds, measured = (np.array(col) for col in zip(*target.table))
     got = [Contact("3/2", "1/2", math.exp(kk_fit.log_c), 1.0, "force").eps(float(v))   # Omega = C v^k
            for v in speeds]
     assert np.max(np.abs(np.array(got) - measured)) < 1e-7
     # the rejection, by a second method: tsuji's constant eps at the worst speed, by the reference
     # integrator, against the target there
-    fit = fit_rung(lammps_rungs("hertz/material", "choose")[0], "force", target, scene.check_grid(), 0.01)
+    fit = fit_model(lammps_models("hertz/material", "choose")[0], "force", target, scene.check_grid(), 0.01)
     ref = Contact("3/2", "1/4", 1.0, math.exp(-fit.log_c / 2), "force").eps(1.0)
     assert abs(abs(ref - target.at([tsuji["at_speed"]])[0]) - tsuji["max_deviation"]) < 1e-9
 
 
-def test_the_cheapest_rung_is_accepted_over_a_narrow_range():
+def test_the_cheapest_model_is_accepted_over_a_narrow_range():
     c = answer_scene(_scene(0.8, 1.2))["contacts"][0]
     assert [r["name"] for r in c["rungs"]] == ["hertz + coeff_restitution"] and c["chosen"] == "hertz + coeff_restitution"
     assert 0.0 < c["max_deviation"] <= 0.01
@@ -258,7 +259,7 @@ def test_json_has_the_fields_the_issue_lists(tmp_path):
     assert json.loads((tmp_path / "o" / "scene.json").read_text())["input_lines"] == res["input_lines"]
 
 
-def test_a_contact_no_rung_meets_gets_no_line_and_exit_status_1(tmp_path):
+def test_a_contact_no_model_meets_gets_no_line_and_exit_status_1(tmp_path):
     """damping fixed to tsuji (constant e) against a table that falls by 0.2: no model within 0.01,
     said in the table and the JSON, no input line for it, exit status 1."""
     d = _small()
@@ -291,7 +292,7 @@ def _liggghts_scene(limit_force: bool) -> dict:
 
 @pytest.mark.parametrize("limit_force", [False, True], ids=["limitForce off", "limitForce on"])
 def test_liggghts_scene_matrices_and_the_typed_e(limit_force):
-    """LIGGGHTS hertz: one constant-e rung; walls get atom types after the particles'. With
+    """LIGGGHTS hertz: one constant-e model; walls get atom types after the particles'. With
     limitForce off the engine gives eps = the typed e exactly (measured in LIGGGHTS,
     tests/library/test_dem_liggghts.py), so the calibrated e must be the target; with it on, the e is below
     the target and the reference integrator of the setting gives the target back."""
@@ -354,17 +355,18 @@ def test_near_sticking_small_eps_are_asked_to_an_absolute_accuracy_without_mpmat
     # 1e-10: a random scene's fit sent ~3,000 such points to mpmath (20 minutes). Now they are asked
     # to an absolute EVAL_TOL SMALL_EPS, which the compiled integrator meets.
     from restitution.core import highprec
-    from restitution.dem.model_ladder import EVAL_TOL, SMALL_EPS, lammps_rungs, scaled_eps
-    rung = next(r for r in lammps_rungs("hertz", "velocity"))
+    from restitution.dem.engines.lammps.scene import lammps_models
+    from restitution.dem.model_choice import EVAL_TOL, SMALL_EPS, scaled_eps
+    model = next(r for r in lammps_models("hertz", "velocity"))
     om = 0.7400121553440137 * (1.0 + np.array([1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0, 10.0]))
-    truth = [float(highprec.reference_collision((rung.alpha, rung.gamma), float(w), digits=20, end="overlap").eps)
+    truth = [float(highprec.reference_collision((model.alpha, model.gamma), float(w), digits=20, end="overlap").eps)
              for w in om[[0, 2, 5]]]
 
     def no_mpmath(*args, **kwargs):
         raise AssertionError("the mpmath reference was asked")
 
     monkeypatch.setattr(highprec, "reference_collision", no_mpmath)
-    eps, bound = scaled_eps(rung, "overlap", om)
+    eps, bound = scaled_eps(model, "overlap", om)
     assert 5e-7 < eps[0] < 2e-6 and eps[-1] > 0.1
     assert bound * np.max(eps) <= EVAL_TOL      # absolute: at most EVAL_TOL SMALL_EPS per decade
     assert np.all(np.abs(eps[[0, 2, 5]] - truth) <= EVAL_TOL * SMALL_EPS)

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..core.errors import ParameterError, number_in
 from ..core.schema_lines import allowed, field, show
-from .codes import LIGGGHTS_NU
+from .engines import ENGINES, scene_engines
 
 __all__ = ["Scene", "AtomType", "Target", "read_scene", "scene_from_dict", "SCHEMA_PATH", "TOL_RANGE", "CODE_OPTIONS"]
 
@@ -25,13 +25,9 @@ SCHEMA_PATH = Path(__file__).with_name("scene.schema.yaml")
 #: The scene tolerance (absolute, on eps): below 1e-8 the time-step study cannot promise a step
 #: (restitution.dem.timestep refuses it); above 0.5 any eps in (0, 1) would do.
 TOL_RANGE = (1e-8, 0.5)
-#: Each code's options and their defaults (None: required).
-CODE_OPTIONS = {
-    "lammps": {"normal": None, "damping": "choose", "limit_damping": False},
-    "liggghts": {"model": "hertz", "limitForce": False},
-}
-#: What each material must give, by the normal model that reads it.
-_STIFFNESS = {"hertz/material": ("E", "nu"), "hertz": ("k_n",), "hooke": ("k_n",)}
+#: Each code's options and their defaults (None: required), as the shipped engines give them (the
+#: registry, restitution.dem.engines.ENGINES, is what a scene is checked against)
+CODE_OPTIONS = {name: dict(ENGINES[name].scene_options) for name in scene_engines()}
 MAX_FILE_BYTES = 1_000_000
 #: Speeds over the range at which a constant target is fitted (the check is on the scene's grid).
 FIT_POINTS = 64
@@ -144,7 +140,10 @@ def _schema() -> dict:
     import yaml
 
     with open(SCHEMA_PATH, encoding="utf-8") as fh:
-        return yaml.safe_load(fh)
+        schema = yaml.safe_load(fh)
+    # the engines a scene may name are the registry's: the file's list documents the shipped ones
+    schema["properties"]["code"]["enum"] = scene_engines()
+    return schema
 
 
 def _fail(field_name: str, value, what: str):
@@ -192,25 +191,23 @@ def _beyond_schema(d: dict) -> Scene:
     if not lo < hi:
         _fail("speeds", d["speeds"], "must be [lowest, highest] with lowest < highest")
     code = d["code"]
-    options = dict(CODE_OPTIONS[code])
+    engine = ENGINES[code]
+    options = dict(engine.scene_options)
     for key, value in d["options"].items():
         if key not in options:
             _fail(f"options.{key}", value, f"is not an option of code {code}; its options: {', '.join(options)}")
         options[key] = value
     missing = [k for k, v in options.items() if v is None]
     if missing:
-        _fail(f"options.{missing[0]}", None, f"code {code} needs it: one of {', '.join(_STIFFNESS)}")
-    needs = _STIFFNESS[options["normal"]] if code == "lammps" else ("E", "nu")
-    reader = f"normal {options['normal']}" if code == "lammps" else f"LIGGGHTS model {options['model']}"
+        _fail(f"options.{missing[0]}", None, f"code {code} needs it: one of {', '.join(engine.scene_option_choices[missing[0]])}")
+    needs, reader = engine.material_keys(options)
     for name, mat in d["materials"].items():
         for key in needs:
             if key not in mat:
                 _fail(f"materials.{name}.{key}", None, f"{reader} reads {' and '.join(needs)}: give it")
         for key in set(mat) - set(needs) - {"density"}:
             _fail(f"materials.{name}.{key}", mat[key], f"is not read by {reader} (it reads {' and '.join(needs)})")
-        if code == "liggghts" and mat["nu"] < LIGGGHTS_NU[0]:
-            # the schema's range is the physical one; LIGGGHTS stops below its own (checked with it)
-            _fail(f"materials.{name}.nu", mat["nu"], f"LIGGGHTS requires {LIGGGHTS_NU[0]:g} <= nu <= {LIGGGHTS_NU[1]:g}")
+        engine.check_material(name, mat)
     types, seen = [], set()
     for i, sp in enumerate(d["species"]):
         where = f"species[{sp['name']}]"

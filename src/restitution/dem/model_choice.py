@@ -1,9 +1,10 @@
-"""The ladder of contact models a scene climbs for each contact: cheapest first, each calibrated to
-the target over the scene's speed range and accepted when its eps(v) stays within the tolerance.
+"""The choice of contact model a scene makes for each contact: the engine's candidate models,
+cheapest first, each calibrated to the target over the scene's speed range and accepted when its
+eps(v) stays within the tolerance.
 
-Every rung is a damping law of the code (its conventions in :mod:`restitution.dem.codes`) with the
-scene's normal model. Its eps depends on one scaled parameter, Omega(v) = C v^k with
-k = (alpha-1-2gamma)/(gamma+1) and C = D1 D2^(-(alpha+1)/(gamma+1)); so a fit is a search over
+Every candidate is a damping law of the engine (its conventions in the engine's contact module,
+restitution.dem.engines) with the scene's normal model. Its eps depends on one scaled parameter,
+Omega(v) = C v^k with k = (alpha-1-2gamma)/(gamma+1) and C = D1 D2^(-(alpha+1)/(gamma+1)); so a fit is a search over
 the one number log C, the same for every pair of particles with one target (the radii and masses
 only turn C into each pair's damping afterwards). k = 0 is a constant-e law: eps is the same at
 every speed.
@@ -28,8 +29,9 @@ import numpy as np
 from ..core.collision import StickError
 from ..core.errors import ParameterError
 from ..fast.ladder import epsilon
+from .contact import Contact
 
-__all__ = ["ModelRung", "Fit", "lammps_rungs", "liggghts_rungs", "fit_rung", "scaled_eps", "EVAL_TOL", "SMALL_EPS"]
+__all__ = ["ContactModel", "Fit", "fit_model", "scaled_eps", "EVAL_TOL", "SMALL_EPS"]
 
 #: Relative tolerance of every eps the scene states (far below any scene tolerance, and what the
 #: 1e-9 round trip of a calibration needs).
@@ -47,8 +49,8 @@ LOG_OMEGA_RANGE = (math.log(1.01e-4), math.log(0.99e8))   # inside, not on, the 
 
 
 @dataclass(frozen=True)
-class ModelRung:
-    """One rung: the code's normal model and damping option, with the model's exponents."""
+class ContactModel:
+    """One candidate: the engine's normal model and damping option, with the model's exponents."""
 
     name: str
     normal: str
@@ -65,40 +67,7 @@ class ModelRung:
         return self.k == 0
 
 
-def lammps_rungs(normal: str, damping: str) -> list[ModelRung]:
-    """The rungs for LAMMPS pair_style granular with this normal model; ``damping`` = "choose" for
-    all, cheapest first, else that one. A linear spring (hooke) gives a constant eps with every
-    damping (gamma = 0, alpha = 1): one rung, the classical linear spring-dashpot. With a Hertz
-    normal model: coeff_restitution (gamma = (alpha-1)/2, constant e), then viscoelastic (gamma =
-    1/2, Kuwabara-Kono) and velocity (gamma = 0), both speed-dependent; mass_velocity has velocity's
-    exponents and reaches the same eps(v) for each pair, so "choose" does not try it again.
-    tsuji is the same law as coeff_restitution with another e; "choose" writes coeff_restitution,
-    whose e is the eps of the overlap rule, whose range of damping is wider (B(e) up to sqrt(5)
-    against tsuji's A(0) = 1.27), and which LAMMPS' development source applies as 22 Jul 2025
-    does, where tsuji's damping changed by sqrt(2) (codes.TSUJI_VERSION_NOTE)."""
-    h = Fraction(3, 2)
-    if normal == "hooke":
-        every = [ModelRung("linear spring-dashpot", "hooke", "velocity", Fraction(1), Fraction(0))]
-        fixed = {d: ModelRung(f"hooke + {d}", "hooke", d, Fraction(1), Fraction(0))
-                 for d in ("tsuji", "coeff_restitution", "viscoelastic", "velocity", "mass_velocity")}
-        fixed["viscoelastic"] = ModelRung("hooke + viscoelastic", "hooke", "viscoelastic", Fraction(1), Fraction(1, 2))
-    else:
-        every = [ModelRung("hertz + coeff_restitution", normal, "coeff_restitution", h, Fraction(1, 4)),
-                 ModelRung("hertz + viscoelastic", normal, "viscoelastic", h, Fraction(1, 2)),
-                 ModelRung("hertz + velocity", normal, "velocity", h, Fraction(0))]
-        fixed = {r.damping: r for r in every}
-        fixed["mass_velocity"] = ModelRung("hertz + mass_velocity", normal, "mass_velocity", h, Fraction(0))
-        fixed["tsuji"] = ModelRung("hertz + tsuji", normal, "tsuji", h, Fraction(1, 4))
-    return every if damping == "choose" else [fixed[damping]]
-
-
-def liggghts_rungs(model: str) -> list[ModelRung]:
-    """LIGGGHTS 3.8 model hertz sets its damping from a coefficientRestitution: one constant-e rung."""
-    return [ModelRung("hertz (coefficientRestitution)", model, "coefficientRestitution", Fraction(3, 2),
-                      Fraction(1, 4))]
-
-
-def scaled_eps(rung: ModelRung, end: str, omega, build: bool | None = None) -> tuple[np.ndarray, float]:
+def scaled_eps(model: ContactModel, end: str, omega, build: bool | None = None) -> tuple[np.ndarray, float]:
     """eps at each Omega (0 where the overlap rule's attraction keeps the bodies together) and a
     relative error bound r such that r max(eps) bounds every point's absolute error. ``build``: as
     epsilon's (True for a caller that will ask for many more points than this call holds, so that
@@ -111,24 +80,24 @@ def scaled_eps(rung: ModelRung, end: str, omega, build: bool | None = None) -> t
     random scene's fit (hertz, velocity damping, e = 0.091) took over 20 minutes for eps that a
     scene only needs to an absolute 1e-8 or worse."""
     om = np.asarray(omega, float)
-    if not (end == "overlap" and Fraction(rung.alpha) >= 2 * Fraction(rung.gamma) + 1):
-        return _eps_at(rung, end, om, EVAL_TOL, build)
-    est, _ = _eps_at(rung, end, om, ESTIMATE_TOL, build)
+    if not (end == "overlap" and Fraction(model.alpha) >= 2 * Fraction(model.gamma) + 1):
+        return _eps_at(model, end, om, EVAL_TOL, build)
+    est, _ = _eps_at(model, end, om, ESTIMATE_TOL, build)
     with np.errstate(divide="ignore"):
         decade = np.clip(np.floor(np.log10(SMALL_EPS / est)), 0, SMALL_EPS_DECADES).astype(int)
     eps, worst = np.zeros(om.shape), 0.0
     for j in np.unique(decade[est > 0]):
         where = (decade == j) & (est > 0)
-        e, r = _eps_at(rung, end, om[where], EVAL_TOL * 10.0 ** j, build)
+        e, r = _eps_at(model, end, om[where], EVAL_TOL * 10.0 ** j, build)
         eps[where] = e
         worst = max(worst, r * float(np.max(e, initial=0.0)))
     top = float(np.max(eps, initial=0.0))
     return eps, (worst / top if top > 0 else 0.0)
 
 
-def _epsilon(rung: ModelRung, end: str, om, tol: float, build: bool | None):
+def _epsilon(model: ContactModel, end: str, om, tol: float, build: bool | None):
     """epsilon() for a scene. With build None (a scene too small to build curves for) by the cheapest
-    rung that reads no build wherever one meets ``tol`` (``cached=False``, as with an empty cache:
+    method that reads no build wherever one meets ``tol`` (``cached=False``, as with an empty cache:
     the exact family's closed form for alpha = 2 gamma + 1, such as Hertz with tsuji damping,
     otherwise the compiled integrator): a master curve cached by some earlier run agrees with it
     within the bound but not bit for bit, and a least-squares fit's damping moved in its 8th digit
@@ -136,18 +105,18 @@ def _epsilon(rung: ModelRung, end: str, om, tol: float, build: bool | None):
     1212924487.03 with curves cached)."""
     if build is None:
         try:
-            return epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=om, tol=tol, end=end, build=False, cached=False)
+            return epsilon(alpha=model.alpha, gamma=model.gamma, omega=om, tol=tol, end=end, build=False, cached=False)
         except StickError:
             raise
         except ParameterError:
-            pass    # the integrator does not reach tol here: the cheapest rung that does
-    return epsilon(alpha=rung.alpha, gamma=rung.gamma, omega=om, tol=tol, end=end, build=build)
+            pass    # the integrator does not reach tol here: the cheapest method that does
+    return epsilon(alpha=model.alpha, gamma=model.gamma, omega=om, tol=tol, end=end, build=build)
 
 
-def _eps_at(rung: ModelRung, end: str, om: np.ndarray, tol: float, build: bool | None) -> tuple[np.ndarray, float]:
+def _eps_at(model: ContactModel, end: str, om: np.ndarray, tol: float, build: bool | None) -> tuple[np.ndarray, float]:
     """eps at each Omega to relative ``tol`` (0 where the bodies stick) and the relative bound."""
     try:
-        r = _epsilon(rung, end, om, tol, build)
+        r = _epsilon(model, end, om, tol, build)
         return np.asarray(r.eps, float), float(r.error_bound)
     except StickError:
         pass
@@ -159,18 +128,18 @@ def _eps_at(rung: ModelRung, end: str, om: np.ndarray, tol: float, build: bool |
     while lo < hi:
         mid = (lo + hi) // 2
         try:
-            _epsilon(rung, end, [flat[order[mid]]], tol, build)
+            _epsilon(model, end, [flat[order[mid]]], tol, build)
             hi = mid
         except StickError:
             lo = mid + 1
     out, bound = np.zeros(flat.size), 0.0
     if lo < flat.size:
         try:
-            r = _epsilon(rung, end, flat[order[lo:]], tol, build)
+            r = _epsilon(model, end, flat[order[lo:]], tol, build)
         except StickError:   # not one boundary after all: point by point
             for i in order[lo:]:
                 try:
-                    one = _epsilon(rung, end, [flat[i]], tol, build)
+                    one = _epsilon(model, end, [flat[i]], tol, build)
                 except StickError:
                     continue
                 out[i], bound = float(one.eps[0]), max(bound, float(one.error_bound))
@@ -181,11 +150,11 @@ def _eps_at(rung: ModelRung, end: str, om: np.ndarray, tol: float, build: bool |
 
 @dataclass(frozen=True)
 class Fit:
-    """A rung fitted to a target over the scene's speeds: log C, eps on the check grid, the worst
+    """A model fitted to a target over the scene's speeds: log C, eps on the check grid, the worst
     deviation (absolute, evaluation bound included) and where, and whether it meets the tolerance.
-    ``reason`` says why a rung could not be fitted at all (then log_c is None)."""
+    ``reason`` says why a model could not be fitted at all (then log_c is None)."""
 
-    rung: ModelRung
+    model: ContactModel
     log_c: float | None
     max_deviation: float
     at_speed: float | None
@@ -196,11 +165,16 @@ class Fit:
     reason: str = ""
 
     def omega(self, speeds) -> np.ndarray:
-        return np.exp(self.log_c) * np.asarray(speeds, float) ** float(self.rung.k)
+        return np.exp(self.log_c) * np.asarray(speeds, float) ** float(self.model.k)
+
+    def damped(self, base: Contact) -> Contact:
+        """``base`` with the damping D2 that puts its Omega(v) on the fitted C v^k."""
+        p = float((self.model.alpha + 1) / (self.model.gamma + 1))
+        return Contact(base.alpha, base.gamma, base.D1, math.exp((math.log(base.D1) - self.log_c) / p), base.end)
 
     def as_dict(self) -> dict:
-        return {"name": self.rung.name, "damping": self.rung.damping, "alpha": str(self.rung.alpha),
-                "gamma": str(self.rung.gamma), "constant_e": self.rung.constant_e,
+        return {"name": self.model.name, "damping": self.model.damping, "alpha": str(self.model.alpha),
+                "gamma": str(self.model.gamma), "constant_e": self.model.constant_e,
                 "max_deviation": self.max_deviation, "at_speed": self.at_speed, "accepted": self.accepted,
                 **({"reason": self.reason} if self.reason else {})}
 
@@ -211,7 +185,7 @@ SEARCH_POINTS = 64
 SEARCH_ROUNDS = 12
 
 
-def _root(rung: ModelRung, end: str, target: float, build: bool | None) -> float:
+def _root(model: ContactModel, end: str, target: float, build: bool | None) -> float:
     """log Omega with eps(Omega) = target over LOG_OMEGA_RANGE (eps grows with Omega), by rounds
     of SEARCH_POINTS evaluations that each keep the cell where eps crosses the target. Omega >= 1
     first: below it the overlap rule comes near sticking, where only the integrator serves and
@@ -219,11 +193,11 @@ def _root(rung: ModelRung, end: str, target: float, build: bool | None) -> float
     lo, hi = LOG_OMEGA_RANGE
     for a, b in ((0.0, hi), (lo, 0.0)):
         s = np.linspace(a, b, SEARCH_POINTS + 1)
-        e = scaled_eps(rung, end, np.exp(s), build)[0] - target
+        e = scaled_eps(model, end, np.exp(s), build)[0] - target
         if e[0] < 0.0 <= e[-1]:
             break
     else:
-        raise ParameterError("e", target, f"{rung.name} cannot reach it (its eps over Omega in [1e-4, 1e8] "
+        raise ParameterError("e", target, f"{model.name} cannot reach it (its eps over Omega in [1e-4, 1e8] "
                                           f"is {e[0] + target:.6g} to {e[-1] + target:.6g})")
     for _ in range(SEARCH_ROUNDS):
         i = int(np.argmax(e >= 0.0))
@@ -231,16 +205,16 @@ def _root(rung: ModelRung, end: str, target: float, build: bool | None) -> float
         if b - a <= 1e-13 * max(1.0, abs(a)):
             break
         s = np.linspace(a, b, SEARCH_POINTS + 1)
-        e = scaled_eps(rung, end, np.exp(s), build)[0] - target
+        e = scaled_eps(model, end, np.exp(s), build)[0] - target
     i = int(np.argmax(e >= 0.0))
     a, b, ea, eb = s[i - 1], s[i], e[i - 1], e[i]
     return float(a + (b - a) * (-ea / (eb - ea))) if eb > ea else float(a)
 
 
-def _least_squares(rung: ModelRung, end: str, fv, fe, s0: float, width: float, build) -> float:
+def _least_squares(model: ContactModel, end: str, fv, fe, s0: float, width: float, build) -> float:
     """log C minimising sum (eps(C v^k) - e)^2, by rounds of SEARCH_POINTS trial values around the
     best so far (all points of a round in one evaluation)."""
-    k = float(rung.k)
+    k = float(model.k)
     logs = k * np.log(fv)
     a = max(s0 - width, LOG_OMEGA_RANGE[0] - float(np.min(logs)))   # every trial Omega in the range
     b = min(s0 + width, LOG_OMEGA_RANGE[1] - float(np.max(logs)))
@@ -248,7 +222,7 @@ def _least_squares(rung: ModelRung, end: str, fv, fe, s0: float, width: float, b
     for _ in range(SEARCH_ROUNDS):
         s = np.linspace(a, b, SEARCH_POINTS + 1)
         om = np.exp(s)[:, None] * (fv ** k)[None, :]
-        e = scaled_eps(rung, end, om.ravel(), build)[0].reshape(om.shape)
+        e = scaled_eps(model, end, om.ravel(), build)[0].reshape(om.shape)
         j = int(np.argmin(np.sum((e - fe[None, :]) ** 2, axis=1)))
         best, h = s[j], s[1] - s[0]
         a, b = best - h, best + h
@@ -257,23 +231,23 @@ def _least_squares(rung: ModelRung, end: str, fv, fe, s0: float, width: float, b
     return float(best)
 
 
-def fit_rung(rung: ModelRung, end: str, target, grid, tolerance: float, build: bool | None = None) -> Fit:
-    """Calibrate ``rung`` to ``target`` (a scene_file.Target) and check it on ``grid`` (speeds);
+def fit_model(model: ContactModel, end: str, target, grid, tolerance: float, build: bool | None = None) -> Fit:
+    """Calibrate ``model`` to ``target`` (a scene_file.Target) and check it on ``grid`` (speeds);
     ``build`` as :func:`scaled_eps`'s."""
     fv, fe = target.fit_points(grid)
-    k = float(rung.k)
+    k = float(model.k)
     try:
         # the constant-e law's least squares, and the speed-dependent laws' starting point
         v_mid = math.exp(float(np.mean(np.log(fv))))
-        s0 = _root(rung, end, float(np.mean(fe)), build) - k * math.log(v_mid)
+        s0 = _root(model, end, float(np.mean(fe)), build) - k * math.log(v_mid)
     except ParameterError as err:
-        return Fit(rung, None, math.inf, None, False, reason=err.allowed)
+        return Fit(model, None, math.inf, None, False, reason=err.allowed)
     if k != 0.0:
         width = abs(k) * math.log(grid[-1] / grid[0]) + math.log(10.0)
-        s0 = _least_squares(rung, end, np.asarray(fv, float), np.asarray(fe, float), s0, width, build)
-    eps, bound = scaled_eps(rung, end, np.exp(s0) * np.asarray(grid) ** k, build)
+        s0 = _least_squares(model, end, np.asarray(fv, float), np.asarray(fe, float), s0, width, build)
+    eps, bound = scaled_eps(model, end, np.exp(s0) * np.asarray(grid) ** k, build)
     dev = np.abs(eps - target.at(grid))
     i = int(np.argmax(dev))
     worst = float(dev[i] + bound * np.max(eps))
-    return Fit(rung, float(s0), worst, float(grid[i]), worst <= tolerance, float(bound * np.max(eps)),
+    return Fit(model, float(s0), worst, float(grid[i]), worst <= tolerance, float(bound * np.max(eps)),
                tuple(float(v) for v in grid), tuple(float(e) for e in eps))

@@ -1,0 +1,120 @@
+"""The contract every DEM engine meets, so that scenes, the typed-e table, designers and the command
+line look an engine up (restitution.dem.engines.ENGINES) instead of naming it.
+
+An engine is one object: its contact law and its parameters both ways (:meth:`Engine.contact`,
+:meth:`Engine.setting`), its designer (:meth:`Engine.design`), its runner (the module that runs
+the real engine, or None where it is not installed), the settings whose damping is a typed e
+(``typed_e``), the hook of its deck dialect (``deck``), and, for an engine a scene file may name
+(``scene_options`` not None), the scene's hooks: end rule, candidate models, each contact's setting
+and input lines.
+"""
+
+from __future__ import annotations
+
+import importlib
+
+from ..core.errors import ParameterError
+
+__all__ = ["Engine"]
+
+
+class Engine:
+    """One DEM engine, as the rest of the DEM layer sees it.
+
+    A subclass sets the attributes and overrides the methods its engine supports; a method it
+    leaves raises ParameterError naming the engine.
+
+    Attributes
+    ----------
+    name : str
+        The registry key, and the ``code`` a scene file names.
+    label : str
+        The engine as messages name it (``"LAMMPS"``).
+    typed_e : dict
+        {row label: (function of a typed e -> Contact, the engine version that confirms it)} for
+        each setting whose damping is set from a restitution coefficient e.
+    deck : module or None
+        The engine's deck dialect (restitution.dem.engines.<name>), where it has one.
+    runner_module : str or None
+        The dotted name of the module that runs the real engine (its ``available()`` says whether
+        the engine is installed).
+    scene_options : dict or None
+        The scene options and their defaults (None: required); None where scenes cannot name it.
+    scene_option_choices : dict
+        {option: its values} for each required scene option, named when it is missing.
+
+    Examples
+    --------
+    >>> from restitution.dem.engines import ENGINES
+    >>> ENGINES["lammps"].label, ENGINES["lammps"].end_rule({"limit_damping": True})
+    ('LAMMPS', 'force')
+    """
+
+    name: str = ""
+    label: str = ""
+    typed_e: dict = {}
+    deck = None
+    runner_module: str | None = None
+    scene_options: dict | None = None
+    scene_option_choices: dict = {}
+
+    def _missing(self, what: str):
+        raise ParameterError("code", self.name, f"{self.label} has no {what} in this library")
+
+    # the contact law, both ways
+    def contact(self, pair, **setting):
+        """The model (a Contact) this setting of the engine gives for ``pair``."""
+        self._missing("contact law")
+
+    def setting(self, pair, contact, **given) -> dict:
+        """The setting, with ``given`` fixed, that gives ``contact`` for ``pair``."""
+        self._missing("inverse of its contact law")
+
+    def design(self, pair, **target) -> dict:
+        """The setting that reaches an eps (``target``: eps, g and the fixed keywords)."""
+        self._missing("designer")
+
+    @property
+    def runner(self):
+        """The module that runs the real engine, or None where it is not installed."""
+        if self.runner_module is None:
+            return None
+        module = importlib.import_module(self.runner_module)
+        return module if module.available() else None
+
+    # scenes
+    def end_rule(self, options: dict) -> str:
+        """The end-of-contact rule the scene options give ("force" or "overlap")."""
+        self._missing("scenes")
+
+    def material_keys(self, options: dict) -> tuple:
+        """(the keys each material must give, the name of what reads them in messages)."""
+        self._missing("scenes")
+
+    def check_material(self, name: str, material: dict) -> None:
+        """Refuse (ParameterError) a material the engine stops on though the schema allows it."""
+
+    def models(self, options: dict) -> list:
+        """The candidate contact models (model_choice.ContactModel), cheapest first."""
+        self._missing("scenes")
+
+    def scene_setting(self, scene, contact, fit) -> dict:
+        """The setting of one scene contact (scene_contacts.SceneContact) for a fitted model, as
+        its input line prints it; ParameterError where the engine cannot express it."""
+        self._missing("scenes")
+
+    def wall_types(self, scene) -> dict:
+        """{wall: atom type} where the engine gives walls atom types of their own, else {}."""
+        return {}
+
+    def contact_lines(self, scene, contact, setting: dict) -> list:
+        """The input lines of one scene contact."""
+        self._missing("scenes")
+
+    def input_lines(self, scene, rows: list) -> list:
+        """The whole scene's input lines from its answered contacts (rows)."""
+        self._missing("scenes")
+
+    def notes(self, settings) -> list:
+        """What to say beside an answer made of these settings (one line each, for stderr)."""
+        return []

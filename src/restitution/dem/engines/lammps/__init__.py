@@ -1,0 +1,1 @@
+"""LAMMPS: its contact law, designer, scene writer and engine object."""

@@ -1,0 +1,1 @@
+"""LIGGGHTS: its contact law, designer, scene writer and engine object."""

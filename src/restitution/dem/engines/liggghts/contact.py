@@ -1,0 +1,73 @@
+"""LIGGGHTS 3.8 ``pair_style gran`` <-> the model (alpha, gamma, D1, D2, end rule), for two particles.
+
+``model hertz`` (Hertz with coefficientRestitution e, youngsModulus, poissonsRatio; its documented
+damping gamma_n = 2 sqrt(5/6) beta sqrt(S_n m), S_n = 2 E* sqrt(R delta), beta = -ln e /
+sqrt(ln^2 e + pi^2)): alpha = 3/2, D1 = (4/3) E* sqrt(R)/m, gamma = 1/4, D2 = sqrt(5) beta
+sqrt(D1); ``limitForce off`` (default) = "overlap", ``on`` = "force".
+
+``model hooke`` (checked against the engine in tests/library/test_dem_liggghts.py): k_n = (16/15)
+sqrt(R) E* (15 m V^2 / (16 sqrt(R) E*))^(1/5) with V the ``characteristicVelocity``, gamma_n = 2
+beta sqrt(m k_n): alpha = 1, gamma = 0, D1 = k_n/m, D2 = 2 beta sqrt(D1). With ``limitForce off``
+eps is e exactly at every speed; with ``on`` it is higher (the force rule on a linear dashpot).
+"""
+
+from __future__ import annotations
+
+import math
+from fractions import Fraction
+
+from ....core.errors import one_of, require_positive_finite
+from ...contact import Contact
+from ...pair import Pair
+from ...typed_e import beta_of_e, e_of_beta, effective_modulus
+
+__all__ = ["liggghts_contact", "liggghts_e", "liggghts_accepts_e", "LIGGGHTS_MODELS", "LIGGGHTS_E", "LIGGGHTS_NU",
+           "LIGGGHTS_MODULUS", "LIGGGHTS_MODEL_TYPES"]
+
+LIGGGHTS_MODELS = ("hertz", "hooke")
+#: LIGGGHTS' own checks on the materials, which stop its run before the first step (3.8.0,
+#: global_properties.cpp; each confirmed with the engine): 0.05 < coefficientRestitution <= 1,
+#: 0 <= poissonsRatio <= 0.5, and Young's modulus within these bounds per unit style
+#: (soft_particles yes lifts the lower one, hard_particles yes the upper).
+LIGGGHTS_E = (0.05, 1.0)
+LIGGGHTS_NU = (0.0, 0.5)
+LIGGGHTS_MODULUS = {"si": (5e6, 1e9), "cgs": (5e7, 1e10)}
+#: LIGGGHTS' model_type/model_name pairs, in the order pair_style gran and fix wall/gran take them
+#: (fix wall/gran puts the wall style after them, then the model keywords such as limitForce).
+LIGGGHTS_MODEL_TYPES = ("model", "tangential", "cohesion", "rolling_friction", "surface")
+
+
+def liggghts_accepts_e(e: float) -> bool:
+    """Whether LIGGGHTS runs a coefficientRestitution of ``e`` (LIGGGHTS_E: above 0.05, at most 1)."""
+    return LIGGGHTS_E[0] < e <= LIGGGHTS_E[1]
+
+
+def _liggghts_d1(pair: Pair, model: str, E: float, nu: float, characteristic_velocity, E2=None, nu2=None) -> float:
+    model = one_of("model", model, LIGGGHTS_MODELS)
+    e_star = effective_modulus(E, nu)
+    if E2 is not None or nu2 is not None:    # unlike materials: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
+        e_star = 1.0 / (1.0 / (2.0 * e_star) + 1.0 / (2.0 * effective_modulus(E2, nu2)))
+    if model == "hertz":
+        return 4.0 / 3.0 * e_star * math.sqrt(pair.R) / pair.m
+    v = require_positive_finite("characteristic_velocity", characteristic_velocity)
+    sr = math.sqrt(pair.R)
+    return 16.0 / 15.0 * sr * e_star * (15.0 * pair.m * v ** 2 / (16.0 * sr * e_star)) ** 0.2 / pair.m
+
+
+def liggghts_contact(pair: Pair, *, E: float, nu: float, e: float, limit_force: bool = False, model: str = "hertz",
+                     characteristic_velocity: float | None = None, E2: float | None = None,
+                     nu2: float | None = None) -> Contact:
+    """LIGGGHTS ``model hertz`` or ``model hooke`` with coefficientRestitution e (E2, nu2: the
+    second particle's material where it differs)."""
+    D1 = _liggghts_d1(pair, model, E, nu, characteristic_velocity, E2, nu2)
+    end = "force" if limit_force else "overlap"
+    if model == "hertz":
+        return Contact("3/2", "1/4", D1, math.sqrt(5.0) * beta_of_e(e) * math.sqrt(D1), end)
+    return Contact("1", "0", D1, 2.0 * beta_of_e(e) * math.sqrt(D1), end)
+
+
+def liggghts_e(contact: Contact) -> float:
+    """The coefficientRestitution that gives this contact's D2 (the inverse of liggghts_contact's
+    damping: D2 / sqrt(D1) = sqrt(5) beta for hertz, 2 beta for hooke)."""
+    factor = math.sqrt(5.0) if contact.alpha == Fraction(3, 2) else 2.0
+    return e_of_beta(contact.D2 / math.sqrt(contact.D1) / factor)

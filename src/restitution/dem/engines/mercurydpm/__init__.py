@@ -1,0 +1,1 @@
+"""MercuryDPM: its contact law (from its documentation) and engine object."""

@@ -1,0 +1,1 @@
+"""Yade: its contact laws, designer and engine object."""

@@ -1,0 +1,59 @@
+"""What engines do with a typed restitution coefficient e and a pair of elastic moduli, shared by
+several of them: the check that e is one, the linear dashpot's damping ratio beta(e) and its
+inverse, the effective modulus E* of two materials, and the linear spring-dashpot set from a
+contact time and e."""
+
+from __future__ import annotations
+
+import math
+
+from ..core.errors import ParameterError, require_positive_finite
+from .contact import Contact
+
+__all__ = ["unit_e", "beta_of_e", "e_of_beta", "effective_modulus", "linear_from_time_and_e", "time_and_e_of_linear"]
+
+
+def unit_e(name: str, e: float) -> float:
+    """``e`` as a float, refused (ParameterError naming ``name``) outside (0, 1)."""
+    if not 0.0 < e < 1.0:
+        raise ParameterError(name, e, "must be a restitution coefficient in (0, 1)")
+    return float(e)
+
+
+def beta_of_e(e: float) -> float:
+    """beta = -ln e / sqrt(ln^2 e + pi^2): the damping ratio whose linear dashpot gives eps = e."""
+    ln_e = math.log(unit_e("e", e))
+    return -ln_e / math.sqrt(ln_e ** 2 + math.pi ** 2)
+
+
+def e_of_beta(beta: float) -> float:
+    """The inverse of :func:`beta_of_e` (ParameterError for a beta no e in (0, 1) gives)."""
+    if not 0.0 < beta < 1.0:
+        raise ParameterError("D2", beta, "needs beta = -ln e / sqrt(ln^2 e + pi^2) in (0, 1)")
+    return math.exp(-math.pi * beta / math.sqrt(1.0 - beta ** 2))
+
+
+def effective_modulus(E: float, nu: float) -> float:
+    """E* = E / (2 (1 - nu^2)) of two like particles of Young's modulus E and Poisson ratio nu."""
+    E = require_positive_finite("E", E)
+    if nu is None or not -1.0 < nu <= 0.5:
+        raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5]")
+    return E / (2.0 * (1.0 - nu ** 2))
+
+
+def linear_from_time_and_e(name_t: str, t_c: float, name_e: str, e: float, end: str) -> Contact:
+    """The linear spring-dashpot of contact time t_c and restitution e under the overlap rule:
+    k = m (pi^2 + ln^2 e) / t_c^2, eta = -2 m ln e / t_c, so D1 = k / m, D2 = eta / m."""
+    t_c = require_positive_finite(name_t, t_c)
+    ln_e = math.log(unit_e(name_e, e))
+    return Contact("1", "0", (math.pi ** 2 + ln_e ** 2) / t_c ** 2, -2.0 * ln_e / t_c, end)
+
+
+def time_and_e_of_linear(contact: Contact, form: str = "the (t_c, e) form") -> tuple[float, float]:
+    """(t_c, e) of :func:`linear_from_time_and_e` that give ``contact`` (alpha = 1, gamma = 0): D2 =
+    -2 ln e / t_c and D1 = (pi^2 + ln^2 e)/t_c^2, so zeta = D2 / (2 sqrt D1) = -ln e / sqrt(pi^2 + ln^2 e)."""
+    zeta = contact.D2 / (2.0 * math.sqrt(contact.D1))
+    if not 0.0 < zeta < 1.0:
+        raise ParameterError("D2", contact.D2, f"needs D2 < 2 sqrt(D1): {form} is underdamped")
+    ln_e = -math.pi * zeta / math.sqrt(1.0 - zeta ** 2)
+    return -2.0 * ln_e / contact.D2, math.exp(ln_e)
