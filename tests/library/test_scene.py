@@ -112,9 +112,9 @@ def test_an_out_directory_that_cannot_be_written_is_refused_before_any_work(tmp_
 def test_a_large_scene_says_its_size_before_it_starts_and_its_progress(capsys, monkeypatch):
     """A 200-type scene ran for minutes and wrote 43 MB without a word; its size is now said first
     (here the threshold is lowered to the small scene's 27 contacts), then how far it is."""
-    from restitution import cli
-    monkeypatch.setattr(cli, "LARGE_SCENE", 20)
-    monkeypatch.setattr(cli._Progress, "FIRST", 0.0)
+    from restitution.cli import common, dem
+    monkeypatch.setattr(dem, "LARGE_SCENE", 20)
+    monkeypatch.setattr(common.Progress, "FIRST", 0.0)
     status, printed = _run(["scene", str(SMALL)])
     err = capsys.readouterr().err.splitlines()
     assert status in (0, 1) and printed, err

@@ -146,7 +146,7 @@ def test_a_long_derivation_says_its_price_on_stderr(capsys, monkeypatch):
     import io
 
     from restitution import cli
-    monkeypatch.setattr(cli._Progress, "FIRST", 0.0)
+    monkeypatch.setattr(cli.common.Progress, "FIRST", 0.0)
     assert cli.main(["series", "--alpha", "3/2", "--gamma", "1", "--omega-order", "2", "--max-power", "8"],
                     io.StringIO()) == 0
     err = capsys.readouterr().err.strip().splitlines()

@@ -13,7 +13,6 @@ gives the candidate models, each contact's setting and the input lines.
 
 from __future__ import annotations
 
-import math
 
 import numpy as np
 

@@ -1,0 +1,106 @@
+"""Command line: `restitution series`, `collide`, `eps`, `calibrate`, `lammps`, `deck` and `scene`.
+
+User mistakes end in one line on stderr and exit status 2, never a traceback. The subcommands of
+the model live in :mod:`restitution.cli.physics`, those for DEM modellers in
+:mod:`restitution.cli.dem`, what they share in :mod:`restitution.cli.common`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from ..core.errors import ParameterError
+from .common import EXIT_USAGE, OneLineParser, Progress, UsageError, attach_negative_values, refuse_repeated_options
+from .dem import LARGE_SCENE, add_dem_subcommands, run_deck, run_lammps, run_scene, scene_table
+from .physics import add_eps_subcommand, add_physics_subcommands, run_calibrate, run_collide, run_eps, run_series
+
+__all__ = ["main", "build_parser", "COMMANDS", "EXIT_USAGE", "LARGE_SCENE", "Progress", "add_eps_subcommand",
+           "run_eps", "scene_table"]
+
+#: Each subcommand's runner (args, out) -> exit status or None
+COMMANDS = {"series": run_series, "collide": run_collide, "eps": run_eps, "calibrate": run_calibrate,
+            "lammps": run_lammps, "deck": run_deck, "scene": run_scene}
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The ``restitution`` command's parser, every subcommand included (the CLI reference page is
+    generated from it).
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        A parser whose errors are one line (exit status 2).
+
+    Examples
+    --------
+    >>> from restitution.cli import build_parser
+    >>> args = build_parser().parse_args(["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.47"])
+    >>> args.command, args.omega
+    ('collide', 0.47)
+    """
+    parser = OneLineParser(prog="restitution",
+                            description="Coefficient of restitution of viscoelastic collisions.")
+    sub = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
+
+    add_physics_subcommands(sub)
+    add_dem_subcommands(sub)
+    return parser
+
+
+def main(argv=None, out=None) -> int:
+    """Run the ``restitution`` command.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default: ``sys.argv[1:]``).
+    out : file-like, optional
+        Where the answer is written (default: standard output); notes go to standard error.
+
+    Returns
+    -------
+    int
+        The exit status: 0 on success, 1 where a subcommand reports a failed check (``scene``),
+        2 for a mistake in the arguments (one line on standard error, no traceback).
+
+    Raises
+    ------
+    SystemExit
+        Only from ``--help``, as argparse does.
+
+    Examples
+    --------
+    >>> from restitution.cli import main
+    >>> main(["collide", "--alpha", "1", "--gamma", "0", "--omega", "1"])   # doctest: +ELLIPSIS
+     alpha  1
+     gamma  0
+     omega  1
+       eps  0.298436059...
+    ...
+    0
+    >>> main(["collide", "--alpha", "1", "--gamma", "0", "--omega", "-1"])   # the message goes to stderr
+    2
+    """
+    out = sys.stdout if out is None else out
+    argv = sys.argv[1:] if argv is None else list(argv)
+    try:
+        refuse_repeated_options(argv)
+        args = build_parser().parse_args(attach_negative_values(argv))
+        status = COMMANDS[args.command](args, out)
+    except UsageError as exc:
+        print(str(exc), file=sys.stderr)
+        return EXIT_USAGE
+    except ParameterError as exc:
+        print(f"restitution: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except BrokenPipeError:
+        # the reader (`| head`) has what it wanted; Python would print a traceback at exit
+        import os
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
+    return status or 0
+
+
+
+

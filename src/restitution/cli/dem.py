@@ -1,0 +1,291 @@
+"""The ``restitution`` subcommands for DEM modellers: ``lammps`` (a LAMMPS setting <-> eps),
+``deck`` (what an input deck really gives) and ``scene`` (the cheapest model per contact of a scene,
+and its input lines); what each engine asks to be said beside an answer comes from its entry in
+restitution.dem.engines.ENGINES."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+
+from ..core.errors import ParameterError
+from ..core.exponents import number_argument
+from .common import Progress, UsageError, write_json
+
+__all__ = ["add_dem_subcommands", "add_scene_subcommand", "add_deck_subcommand", "add_lammps_subcommand",
+           "scene_table", "run_scene", "run_deck", "run_lammps", "LARGE_SCENE"]
+
+
+def add_scene_subcommand(subparsers) -> None:
+    s = subparsers.add_parser(
+        "scene", help="the cheapest contact model per contact of a DEM scene, and its input lines",
+        description="Reads a scene file (YAML: materials, species, walls, code options, speeds, targets, "
+                    "tolerance; see docs/howto/scenes.md) and answers for every contact. Exit status 1 when "
+                    "some contact has no model within the tolerance, or an overlap at which the code's "
+                    "geometry breaks.")
+    s.add_argument("file", help="the scene file")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
+    s.add_argument("--out", metavar="DIR", help="also write DIR/scene.json, DIR/input.lammps and DIR/table.txt")
+
+
+def scene_table(res: dict) -> str:
+    """The text answer of `restitution scene`: one block per contact, then the input lines."""
+    o = res["options"]
+    w = max([22] + [len(c["chosen"] or "none meets the tolerance") for c in res["contacts"]])   # "chosen" column
+    head = [f"scene {res['scene']}: {res['code']} (" + ", ".join(f"{k} {str(v).lower() if isinstance(v, bool) else v}" for k, v in o.items()) + f"), "
+            f"tolerance {res['tolerance']:g} on eps, speeds {res['speeds'][0]:g} to {res['speeds'][1]:g}",
+            f"# checked: {res['check']}",
+            f"{'contact':<24} {'types':<9} {'chosen':<{w}} {'max dev':>9} {'at v':>9} {'eps at lo .. hi':>17} "
+            f"{'dt (s)':>10}"]
+    rows = []
+    for c in res["contacts"]:
+        name = f"{c['a']}-{c['b']}"
+        types = " ".join(map(str, c["types"]))
+        if c["chosen"] is None:
+            rows.append(f"{name:<24} {types:<9} {'none meets the tolerance':<{w}}")
+        else:
+            rows.append(f"{name:<24} {types:<9} {c['chosen']:<{w}} {c['max_deviation']:9.2g} {c['at_speed']:9.3g} "
+                        f"{c['eps'][0]:7.4f} .. {c['eps'][-1]:6.4f} {c['dt']:10.3g}")
+        tried = "; ".join(f"{r['name']} {r['max_deviation']:.3g}" + (f" at {r['at_speed']:.3g}" if r["at_speed"] else "")
+                          + (" accepted" if r["accepted"] else " rejected") + (f" ({r['reason']})" if r.get("reason") else "")
+                          for r in c["rungs"])
+        rows.append(f"  tried: {tried}")
+        if c["chosen"] is not None:
+            ratio = max(c["max_overlap"]) / c["overlap_limit"]
+            rows.append(f"  largest overlap {max(c['max_overlap']):.3g} m: {ratio:.2g} of "
+                        + ("the radius" if c["b"].startswith("wall:") else "the sum of the radii"))
+        if c.get("problem"):
+            rows.append(f"  NOT MET: {c['problem']}")
+    return "\n".join(head + rows + ["", "# input lines"] + res["input_lines"]) + "\n"
+
+
+#: A scene with more contacts than this says its size before it starts (a 200-type scene has
+#: 20,100 type pairs and writes tens of MB).
+LARGE_SCENE = 1000
+
+
+def _check_writable_dir(name: str, path: str) -> None:
+    """Refuse before a long computation, not after it, a directory that cannot be written.
+
+    A probe file is made in ``path`` or in its nearest existing ancestor (and removed at once):
+    permission bits alone do not tell, e.g. for root or on a read-only file system.
+    """
+    import tempfile
+    from pathlib import Path
+
+    from ..fast.cache import nearest_existing
+    here = nearest_existing(Path(path).absolute())
+    if not here.is_dir():
+        raise ParameterError(name, path, f"cannot be a directory: {here} is a file")
+    try:
+        with tempfile.TemporaryFile(dir=here):
+            pass
+    except OSError as exc:
+        raise ParameterError(name, path, f"cannot be written ({exc.strerror})") from None
+
+
+def run_scene(args, out) -> int:
+    from pathlib import Path
+
+    from ..dem.scene import answer_scene, contact_count
+    from ..dem.scene_file import read_scene
+    scene = read_scene(args.file)
+    if args.out:
+        _check_writable_dir("out", args.out)
+    n = contact_count(scene)
+    if n > LARGE_SCENE:
+        # measured: about 2.2 kB of JSON per contact, and the answer is held in memory until written
+        print(f"restitution scene: {n} contacts ({len(scene.types)} atom types, {len(scene.walls)} wall"
+              f"{'' if len(scene.walls) == 1 else 's'}), each "
+              f"answered and listed: about {n * 2.2e-3:.0f} MB of JSON; progress follows", file=sys.stderr, flush=True)
+    res = answer_scene(scene, progress=Progress("scene", "contacts", 1.0))
+    from ..dem.engines import ENGINES
+    for note in ENGINES[res["code"]].notes([c.get("setting") or {} for c in res["contacts"]]):
+        print(f"restitution scene: note: {note}", file=sys.stderr)
+    text = json.dumps(res, separators=(", ", ": ")) + "\n"
+    table = scene_table(res)
+    if args.out:   # everything computed first: a refused scene writes nothing
+        d = Path(args.out)
+        try:
+            d.mkdir(parents=True, exist_ok=True)
+            (d / "scene.json").write_text(text)
+            (d / "input.lammps").write_text("\n".join(res["input_lines"]) + "\n")
+            (d / "table.txt").write_text(table)
+        except OSError as exc:
+            raise ParameterError("out", args.out, f"cannot be written ({exc.strerror})") from None
+    out.write(text if args.json else table)
+    return 0 if res["met"] else 1
+
+
+def add_deck_subcommand(subparsers) -> None:
+    d = subparsers.add_parser(
+        "deck", help="the eps a LAMMPS or LIGGGHTS input deck really gives, for every type pair and flat wall",
+        description="Reads pair_style granular (LAMMPS) or pair_style gran model hertz|hooke (LIGGGHTS) decks. "
+                    "One --g: five speeds over two decades around it; several: those speeds.")
+    d.add_argument("file", help="the input script")
+    d.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s)")
+    d.add_argument("--radius", nargs="+", default=[], metavar="T=R", help="radius of atom type T")
+    d.add_argument("--density", nargs="+", default=[], metavar="T=RHO", help="density of atom type T")
+    d.add_argument("--json", action="store_true", help="machine-readable output")
+
+
+def _per_type(name: str, items) -> dict:
+    out = {}
+    for item in items:
+        t, _, value = item.partition("=")
+        if not t.isdigit() or int(t) < 1:
+            raise ParameterError(name, item, "give TYPE=VALUE with an atom type >= 1, e.g. 1=0.001")
+        try:
+            out[int(t)] = number_argument(value)
+        except argparse.ArgumentTypeError:
+            raise ParameterError(name, item, "the value must be a finite number > 0, e.g. 1=0.001") from None
+        if not math.isfinite(out[int(t)]) or out[int(t)] <= 0:
+            raise ParameterError(name, item, "the value must be a finite number > 0")
+    return out
+
+
+def run_deck(args, out) -> None:
+    from ..dem.codes import TSUJI_VERSION_NOTE
+    from ..dem.deck import audit_deck
+    try:
+        with open(args.file, encoding="utf-8", errors="replace") as fh:
+            text = fh.read()
+    except OSError as exc:
+        raise ParameterError("file", args.file, f"cannot be read ({exc.strerror})") from None
+    for g in args.g:
+        if not math.isfinite(g) or g <= 0:
+            raise ParameterError("g", g, "must be a finite number > 0")
+    speeds = [args.g[0] * 10.0 ** k for k in (-1, -0.5, 0, 0.5, 1)] if len(args.g) == 1 else list(args.g)
+    base = os.path.dirname(os.path.abspath(args.file))
+
+    def read_file(name: str) -> str:
+        # LAMMPS opens these relative to where it runs: the deck's directory, as it is normally started
+        with open(os.path.join(base, name), encoding="utf-8", errors="replace") as fh:
+            return fh.read()
+    res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file)
+    if any("damping tsuji" in row["model"] for row in res["pairs"] + res["walls"]):
+        print(f"restitution deck: note: {TSUJI_VERSION_NOTE}", file=sys.stderr)
+    for row in res["unknown_lines"]:     # never guessed: each named, one per line
+        where = f"{row['file']} line {row['line']}" if row["file"] else f"line {row['line']}"
+        print(f"restitution deck: {where} {row['why']}: {row['text']}", file=sys.stderr)
+    stages = res["stages"]
+    if len(stages) > 1:                # a --json reader that takes "pairs" alone learns it here
+        print(f"restitution deck: the contact settings change between runs: {len(stages)} stages, each reported "
+              "(\"stages\" in --json; \"pairs\" and \"walls\" are the last one's)", file=sys.stderr)
+    rows = []
+    for k, stage in enumerate(stages, 1):
+        head = _stage_head(stage, k, len(stages))
+        rows += [(p, f"types {p['types'][0]} {p['types'][1]}", "R1 + R2", "the spheres through each other",
+                  "the spheres together", head) for p in stage["pairs"]]
+        rows += [(w, f"type {w['types'][0]} on wall {w['wall']}", "the radius", "the sphere through the wall",
+                  "the sphere on the wall", head) for w in stage["walls"]]
+    for p, name, reach, pushed, _, head in rows:   # no eps there: said on stderr too, where a --json reader looks
+        through = [g for g, t in zip(p["speeds"], p["passes_through"]) if t]
+        if through:
+            where = f" ({head.removeprefix('# ')})" if head else ""
+            print(f"restitution deck: {name}{where}: the engine pushes {pushed} from g = {min(through):.4g} on (the "
+                  f"largest overlap reaches {reach}): no eps there", file=sys.stderr)
+    if args.json:
+        write_json(res, out)
+        return
+    if res["ignored"]:
+        out.write(f"# {res['code']} deck; no part in a head-on contact: {', '.join(res['ignored'])}\n")
+    shown = None
+    for p, name, reach, pushed, kept, head in rows:
+        if head and head != shown:
+            out.write(head + "\n")
+            shown = head
+        typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
+        out.write(f"{name}: {p['model']} ({typed}), end rule {p['end']}\n")
+        for g, e, stick, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
+            out.write(f"  g {g:<12.6g} " + (
+                f"passes through: the largest overlap reaches {reach} = {p['overlap_limit']:.4g}, the engine "
+                f"pushes {pushed} (no eps)\n" if through else
+                f"sticks: the attractive phase keeps {kept} (eps 0)\n" if stick else f"eps {e:.10f}\n"))
+        if p["exact_line"]:
+            t, w = p["types"][0], p.get("wall_type")
+            shared = f" (entry {t} {w}: types {min(t, w)} {max(t, w)} get eps = e from it too)" if w else ""
+            out.write(f"  for eps = e exactly{shared}: {p['exact_line']}\n")
+
+
+def _stage_head(stage: dict, k: int, n: int) -> str:
+    """The text output's heading of stage k of n (none where the deck has one stage)."""
+    if n == 1:
+        return ""
+    runs = stage["runs"]
+    where = ", ".join(f"{r['file']} line {r['line']}" if r["file"] else f"line {r['line']}" for r in runs[:5])
+    more = f" and {len(runs) - 5} more" if len(runs) > 5 else ""
+    return f"# stage {k} of {n}: the contact settings of the run{'s' if len(runs) > 1 else ''} at {where}{more}"
+
+
+def add_lammps_subcommand(subparsers) -> None:
+    m = subparsers.add_parser(
+        "lammps", help="LAMMPS pair_style granular settings <-> eps for two spheres",
+        description="With --eta-n0: the eps(v) these settings give at each --g (audit). With --eps: the "
+                    "damping that gives it at --g, as a pair_coeff line (design). SI or any consistent units.")
+    for flag, what in (("--normal", "hooke, hertz or hertz/material"),
+                       ("--damping", "velocity, mass_velocity, viscoelastic, tsuji or coeff_restitution")):
+        m.add_argument(flag, required=True, help=what)
+    for flag, what in (("--k-n", "stiffness of hooke / hertz"), ("--E", "Young's modulus of hertz/material"),
+                       ("--nu", "Poisson ratio of hertz/material"), ("--eta-n0", "LAMMPS' damping coefficient "
+                       "(tsuji, coeff_restitution: its e)"), ("--eps", "target eps at the (single) --g")):
+        m.add_argument(flag, type=number_argument, help=what)
+    m.add_argument("--limit-damping", action="store_true", help="LAMMPS' limit_damping keyword (force end rule)")
+    m.add_argument("--radius", type=number_argument, nargs="+", required=True, metavar="R",
+                   help="radius of both spheres, or of each (two values)")
+    m.add_argument("--density", type=number_argument, nargs="+", required=True, metavar="RHO",
+                   help="density of both spheres, or of each (two values)")
+    m.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s)")
+    m.add_argument("--json", action="store_true", help="machine-readable output")
+
+
+def run_lammps(args, out) -> None:
+    from ..dem.engines import ENGINES
+    from ..dem.pair import Pair
+    from ..dem.settings import lammps_audit, lammps_design
+    if (args.eta_n0 is None) == (args.eps is None):
+        raise ParameterError("eps", args.eps, "give exactly one of --eta-n0 (audit) and --eps (design)")
+    for flag, values in (("--radius", args.radius), ("--density", args.density)):
+        if len(values) > 2:
+            raise UsageError(f"restitution lammps: {flag} takes one value (both spheres) or two (one each), "
+                              f"got {len(values)}")
+    # the stiffness options the chosen normal model does not read would be dropped without a word
+    reads = {"hooke": ("k_n",), "hertz": ("k_n",), "hertz/material": ("E", "nu")}.get(args.normal, ())
+    for name in ("k_n", "E", "nu"):
+        if getattr(args, name) is not None and args.normal in {"hooke", "hertz", "hertz/material"} and name not in reads:
+            flag = "--" + name.replace("_", "-")
+            raise UsageError(f"restitution lammps: {flag} is not read by --normal {args.normal} (it reads "
+                              + " and ".join("--" + r.replace("_", "-") for r in reads) + ")")
+    radii, dens = (args.radius * 2)[:2], (args.density * 2)[:2]
+    pair = Pair.spheres(radii[0], radii[1], dens[0], dens[1])
+    stiff = {"normal": args.normal, "k_n": args.k_n, "E": args.E, "nu": args.nu, "damping": args.damping,
+             "limit_damping": args.limit_damping}
+    if args.eps is not None:
+        if len(args.g) != 1:
+            raise ParameterError("g", args.g, "give one impact speed with --eps")
+        res = lammps_design(pair, eps=args.eps, g=args.g[0], **stiff)
+    else:
+        res = lammps_audit(pair, args.g, eta_n0=args.eta_n0, **stiff)
+    for note in ENGINES["lammps"].notes([stiff]):     # after the answer: a refusal stays one line
+        print(f"restitution lammps: note: {note}", file=sys.stderr)
+    if args.json:
+        write_json(res, out)
+        return
+    out.write(res.pop("pair_coeff") + "\n")
+    rows = res.pop("rows", None)
+    for key, value in res.items():
+        out.write(f"# {key} = {value:.12g}\n" if isinstance(value, float) else f"# {key} = {value}\n")
+    for row in rows or ():
+        out.write(f"g {row['g']:<12.6g} " + ("passes through: the largest overlap reaches R1 + R2 (no eps)\n"
+                                             if row["passes_through"] else
+                                             f"eps {row['eps']:.12g}  t_c {row['contact_time']:.6g}\n"))
+
+
+def add_dem_subcommands(sub) -> None:
+    """Add ``lammps``, ``deck`` and ``scene`` to the subparsers ``sub``, in that order."""
+    add_lammps_subcommand(sub)
+    add_deck_subcommand(sub)
+    add_scene_subcommand(sub)
