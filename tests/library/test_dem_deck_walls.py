@@ -355,7 +355,7 @@ def test_lammps_walls_act_on_their_groups_members_only(poured_into, through):
     """What the audit reads: a group by type defined before any atom holds none, and a wall on it
     lets a sphere poured into all through (LAMMPS loses it below the box); poured into that group,
     the sphere bounces."""
-    from restitution.dem.lammps import _load
+    from restitution.dem.engines.lammps.run import _load
     lmp = _load().lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
     try:
         for c in ["units si", "atom_style sphere", "boundary f f f", "atom_modify sort 0 0",

@@ -137,7 +137,7 @@ def test_a_run_open_mpi_could_not_start_is_started_again(monkeypatch):
     the local node' before reading its input; started again it ran."""
     import subprocess
 
-    from restitution.dem import liggghts
+    from restitution.dem.engines.liggghts import run as liggghts
 
     real, calls = subprocess.run, []
 

@@ -131,3 +131,18 @@ def test_the_scene_schema_lists_the_shipped_scene_engines():
     """The file documents what the registry decides: they must not drift apart."""
     schema = yaml.safe_load(Path(SCHEMA_PATH).read_text())
     assert schema["properties"]["code"]["enum"] == scene_engines()
+
+
+def test_an_engine_without_a_runner_says_so_and_one_with_a_runner_gives_its_module():
+    assert ENGINES["mercurydpm"].runner is None       # not run here: no runner at all
+    lammps = ENGINES["lammps"]
+    from restitution.dem.engines.lammps import run
+    assert lammps.runner in (None, run) and (lammps.runner is run) == run.available()
+
+
+def test_the_deck_hook_imports_the_dialect_named_and_none_where_none_is():
+    assert ENGINES["mercurydpm"].deck is None
+    hooked = _stub_module().ENGINE
+    hooked.deck_module = "restitution.dem.deck"
+    import restitution.dem.deck
+    assert hooked.deck is restitution.dem.deck

@@ -4,9 +4,9 @@ line look an engine up (restitution.dem.engines.ENGINES) instead of naming it.
 An engine is one object: its contact law and its parameters both ways (:meth:`Engine.contact`,
 :meth:`Engine.setting`), its designer (:meth:`Engine.design`), its runner (the module that runs
 the real engine, or None where it is not installed), the settings whose damping is a typed e
-(``typed_e``), the hook of its deck dialect (``deck``), and, for an engine a scene file may name
-(``scene_options`` not None), the scene's hooks: end rule, candidate models, each contact's setting
-and input lines.
+(``typed_e``), the hook of its deck dialect (``deck``, from ``deck_module``), and, for an engine a
+scene file may name (``scene_options`` not None), the scene's hooks: end rule, candidate models,
+each contact's setting and input lines.
 """
 
 from __future__ import annotations
@@ -33,8 +33,9 @@ class Engine:
     typed_e : dict
         {row label: (function of a typed e -> Contact, the engine version that confirms it)} for
         each setting whose damping is set from a restitution coefficient e.
-    deck : module or None
-        The engine's deck dialect (restitution.dem.engines.<name>), where it has one.
+    deck_module : str or None
+        The dotted name of the engine's deck dialect module, where it has one (:attr:`deck`
+        imports it when first asked, so that the registry never imports the deck reader).
     runner_module : str or None
         The dotted name of the module that runs the real engine (its ``available()`` says whether
         the engine is installed).
@@ -53,7 +54,7 @@ class Engine:
     name: str = ""
     label: str = ""
     typed_e: dict = {}
-    deck = None
+    deck_module: str | None = None
     runner_module: str | None = None
     scene_options: dict | None = None
     scene_option_choices: dict = {}
@@ -73,6 +74,11 @@ class Engine:
     def design(self, pair, **target) -> dict:
         """The setting that reaches an eps (``target``: eps, g and the fixed keywords)."""
         self._missing("designer")
+
+    @property
+    def deck(self):
+        """The engine's deck dialect module, or None where the library reads no deck of it."""
+        return None if self.deck_module is None else importlib.import_module(self.deck_module)
 
     @property
     def runner(self):

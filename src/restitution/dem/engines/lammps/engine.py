@@ -21,7 +21,7 @@ class LammpsEngine(Engine):
     name = "lammps"
     label = "LAMMPS"
     typed_e = {row: (law, LAMMPS_VERSION) for row, law in TYPED_E.items()}
-    runner_module = "restitution.dem.lammps"
+    runner_module = "restitution.dem.engines.lammps.run"
     scene_options = {"normal": None, "damping": "choose", "limit_damping": False}
     scene_option_choices = {"normal": tuple(_STIFFNESS)}
 

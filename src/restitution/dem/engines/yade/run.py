@@ -1,0 +1,117 @@
+"""Two spheres colliding head-on in the real Yade engine (Debian package ``yade``, run headless).
+
+Yade is driven through its own interpreter (``yade -n -x script.py``): this module writes a script
+that runs every requested collision in one process (Yade takes about 2 s to start) and prints the
+results as one JSON line, which is read back here. Nothing of Yade is imported into this process.
+
+Yade's NewtonIntegrator is a leapfrog whose contact laws see the half-step velocity, so its eps is
+first order in dt, like LAMMPS': :func:`yade_eps_extrapolated` runs three steps and removes the
+two leading orders (restitution.dem.extrapolate). NewtonIntegrator's numerical ("local") damping, 0.2 by default,
+would add dissipation the contact law does not have: the runs set it to 0.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import shutil
+import subprocess
+import tempfile
+from pathlib import Path
+
+from ...extrapolate import richardson
+from ...pair import Pair
+
+__all__ = ["available", "yade_eps_runs", "yade_states", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
+
+_MARK = "RESTITUTION-RESULT "
+
+#: The script Yade runs: CASES is a list of (material, ip2, law, g, dt, steps) with the
+#: material and functors as Yade constructor expressions; it answers with the rebound speeds.
+_SCRIPT = """
+import json
+R1, R2, M1, M2 = {radii_masses}
+CASES = {cases}
+out = []
+for material, ip2, law, g, dt, steps in CASES:
+    O.reset()
+    mat = eval(material)
+    O.materials.append(mat)
+    # centre-of-mass frame, touching at zero overlap: no partial first step biases the result
+    b1 = sphere((-R1, 0, 0), R1, material=mat)
+    b2 = sphere((R2, 0, 0), R2, material=mat)
+    O.bodies.append([b1, b2])
+    for b, m in ((b1, M1), (b2, M2)):
+        b.state.mass = m    # the pair's masses exactly, whatever the density rounding
+    b1.state.vel = Vector3(g * M2 / (M1 + M2), 0, 0)
+    b2.state.vel = Vector3(-g * M1 / (M1 + M2), 0, 0)
+    O.engines = [ForceResetter(), InsertionSortCollider([Bo1_Sphere_Aabb()]),
+                 InteractionLoop([Ig2_Sphere_Sphere_ScGeom()], [eval(ip2)], [eval(law)]),
+                 NewtonIntegrator(damping=0.0, gravity=(0, 0, 0))]
+    O.dt = dt
+    O.run(steps, True)
+    gap = O.bodies[1].state.pos[0] - O.bodies[0].state.pos[0]
+    out.append({{"rel": O.bodies[0].state.vel[0] - O.bodies[1].state.vel[0], "gap": gap}})
+print({mark!r} + json.dumps(out))
+"""
+
+
+def available() -> bool:
+    return shutil.which("yade") is not None
+
+
+def viscel_material(pair: Pair, *, tc=None, en=None, kn=None, cn=None) -> tuple[str, str, str]:
+    """Yade's ViscElMat given (tc, en) or (kn, cn), both particles of that material, with its
+    Ip2 and Law2 functors (tangential stiffness and damping zero: head-on runs need none)."""
+    rho = pair.m1 / (4.0 / 3.0 * math.pi * pair.R1 ** 3)
+    args = f"tc={tc!r}, en={en!r}, et=1.0" if tc is not None else f"kn={kn!r}, cn={cn!r}, ks=0.0, cs=0.0"
+    return (f"ViscElMat({args}, density={rho!r}, frictionAngle=0.0)", "Ip2_ViscElMat_ViscElMat_ViscElPhys()",
+            "Law2_ScGeom_ViscElPhys_Basic()")
+
+
+def mindlin_material(pair: Pair, *, E: float, nu: float, en=None, betan=None) -> tuple[str, str, str]:
+    """Yade's Hertz-Mindlin (FrictMat, frictionless) with the damping given by en or betan."""
+    rho = pair.m1 / (4.0 / 3.0 * math.pi * pair.R1 ** 3)
+    damping = f"en={en!r}" if en is not None else f"betan={betan!r}"
+    return (f"FrictMat(young={E!r}, poisson={nu!r}, density={rho!r}, frictionAngle=0.0)",
+            f"Ip2_FrictMat_FrictMat_MindlinPhys({damping})", "Law2_ScGeom_MindlinPhys_Mindlin()")
+
+
+def yade_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
+    """eps of each case (material, ip2, law, g, dt, t_run) in one Yade process."""
+    eps = []
+    for case, (rel, gap) in zip(cases, yade_states(pair, cases, timeout)):
+        if gap <= pair.R1 + pair.R2:
+            raise ArithmeticError("the spheres had not separated at the end of the Yade run")
+        eps.append(-rel / case[3])   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
+    return eps
+
+
+def yade_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
+    """(relative velocity v1 - v2, centre distance) at the end of each case (material, ip2, law,
+    g, dt, t_run), in one Yade process."""
+    rows = [(mat, ip2, law, float(g), float(dt), int(math.ceil(t_run / dt))) for mat, ip2, law, g, dt, t_run in cases]
+    script = _SCRIPT.format(radii_masses=repr((pair.R1, pair.R2, pair.m1, pair.m2)), cases=repr(rows), mark=_MARK)
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "collide.py"
+        path.write_text(script)
+        proc = subprocess.run(["yade", "-n", "-x", "-j", "1", str(path)], cwd=tmp, capture_output=True, text=True,
+                              timeout=timeout, stdin=subprocess.DEVNULL)
+    lines = [ln for ln in proc.stdout.splitlines() if ln.startswith(_MARK)]
+    if proc.returncode != 0 or not lines:
+        raise RuntimeError(f"yade failed (status {proc.returncode}): {proc.stderr.strip()[-2000:]}")
+    return [(float(res["rel"]), float(res["gap"])) for res in json.loads(lines[-1][len(_MARK):])]
+
+
+def yade_eps_extrapolated(pair: Pair, setting: tuple, speeds, t_c: dict, gamma, steps: int = 2000) -> dict:
+    """{g: (eps extrapolated to dt = 0, eps at t_c/steps, /2, /4)} for one Yade setting
+    (material, ip2, law) at each speed, all in one Yade process; t_c maps each speed to its
+    contact time, gamma is the damping exponent (which sets the extrapolation's orders, see
+    restitution.dem.extrapolate)."""
+    cases = [(*setting, g, t_c[g] / steps / k, 1.5 * t_c[g]) for g in speeds for k in (1, 2, 4)]
+    eps = yade_eps_runs(pair, cases)
+    result = {}
+    for i, g in enumerate(speeds):
+        e1, e2, e4 = eps[3 * i: 3 * i + 3]
+        result[g] = (richardson(e1, e2, e4, gamma), e1, e2, e4)
+    return result
