@@ -140,9 +140,9 @@ def test_an_engine_without_a_runner_says_so_and_one_with_a_runner_gives_its_modu
     assert lammps.runner in (None, run) and (lammps.runner is run) == run.available()
 
 
-def test_the_deck_hook_imports_the_dialect_named_and_none_where_none_is():
+def test_the_deck_reader_takes_its_dialects_from_the_engines_deck_hooks():
+    from restitution.dem.deck_reader import DIALECTS
+    from restitution.dem.engines import lammps_deck, liggghts_deck
+    assert ENGINES["lammps"].deck is lammps_deck and ENGINES["liggghts"].deck is liggghts_deck
+    assert DIALECTS == {"LAMMPS": lammps_deck, "LIGGGHTS": liggghts_deck}
     assert ENGINES["mercurydpm"].deck is None
-    hooked = _stub_module().ENGINE
-    hooked.deck_module = "restitution.dem.deck"
-    import restitution.dem.deck
-    assert hooked.deck is restitution.dem.deck

@@ -2,7 +2,7 @@
 head-on two-sphere contact (:class:`~restitution.dem.deck_state.Deck`), for every engine alike
 (box, atoms, sizes, groups, fixes that pour or insert, data files, labels, runs and their stages).
 What a pair style, its coefficients and its walls mean is an engine's: :data:`DIALECTS` gives the
-dialect of each engine (:mod:`restitution.dem.engines.lammps_deck`,
+dialect of each engine of the registry that has one (:mod:`restitution.dem.engines.lammps_deck`,
 :mod:`restitution.dem.engines.liggghts_deck`), and :data:`PAIR_STYLES` the dialect of each pair
 style. Which commands run (if, jump, label, next, quit, include, variable) is
 :mod:`restitution.dem.deck_script`'s.
@@ -17,13 +17,13 @@ from .deck_script import LocatedError, Script
 from .deck_state import (Deck, DeckError, atom_type, explained, fetch, labelmap, number, place, types,
                          unlabeled)
 from .deck_text import evaluate
-from .engines import lammps_deck, liggghts_deck
+from .engines import ENGINES
 
 __all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_deck", "contact_key"]
 
 #: Engine (a Deck's ``code``) -> its deck dialect: the module that reads its pair style, its
-#: coefficients and its walls
-DIALECTS = {dialect.ENGINE: dialect for dialect in (lammps_deck, liggghts_deck)}
+#: coefficients and its walls, as each registered engine's deck hook names it
+DIALECTS = {engine.deck.ENGINE: engine.deck for engine in ENGINES.values() if engine.deck_module is not None}
 #: Pair style -> the dialect that reads it
 PAIR_STYLES = {style: dialect for dialect in DIALECTS.values() for style in dialect.PAIR_STYLES}
 
@@ -154,7 +154,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     where = place(loc)
     cmd = words[0]
     words = unlabeled(deck, words, where, line)
-    if not deck.liggghts_mark and liggghts_deck.liggghts_only(words):
+    if not deck.liggghts_mark and DIALECTS["LIGGGHTS"].liggghts_only(words):
         deck.liggghts_mark = (loc, line)
     if cmd in _NEEDS_WORDS and len(words) < _NEEDS_WORDS[cmd]:
         raise DeckError(where, line, f"{cmd} needs at least {_NEEDS_WORDS[cmd] - 1} argument(s)")
