@@ -6,14 +6,13 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
-from typing import TYPE_CHECKING
 
 from ...model_choice import ContactModel, Fit
 from .contact import base_eta_n0, lammps_contact, lammps_eta_n0, lammps_pair_coeff
 
-if TYPE_CHECKING:   # only annotations: scene_file looks engines up in the registry
-    from ...scene_contacts import SceneContact
-    from ...scene_file import Scene
+# Scene (restitution.dem.scene_file) and SceneContact (restitution.dem.scene_contacts) appear in
+# annotations only, unimported: scene_file checks a scene against this registry, so importing them
+# here would tie the two into a loop.
 
 __all__ = ["lammps_models", "scene_setting", "contact_lines", "input_lines"]
 

@@ -5,15 +5,14 @@ types of their own), and the scene's input lines."""
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import TYPE_CHECKING
 
 from ....core.errors import ParameterError
 from ...model_choice import ContactModel, Fit
 from .contact import LIGGGHTS_E, LIGGGHTS_MODULUS, liggghts_accepts_e, liggghts_contact, liggghts_e
 
-if TYPE_CHECKING:   # only annotations: scene_file looks engines up in the registry
-    from ...scene_contacts import SceneContact
-    from ...scene_file import Scene
+# Scene (restitution.dem.scene_file) and SceneContact (restitution.dem.scene_contacts) appear in
+# annotations only, unimported: scene_file checks a scene against this registry, so importing them
+# here would tie the two into a loop.
 
 __all__ = ["liggghts_models", "wall_types", "scene_setting", "contact_lines", "input_lines"]
 
