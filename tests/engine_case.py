@@ -4,7 +4,7 @@ and material that the LIGGGHTS and Yade runs use."""
 
 from __future__ import annotations
 
-from restitution.dem.codes import Pair
+from restitution.dem.pair import Pair
 
 PAIR = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
 SPEEDS = (0.01, 0.1, 1.0)

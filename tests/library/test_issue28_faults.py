@@ -16,7 +16,7 @@ import pytest
 from cli_run import run_cli
 
 from restitution.core.errors import ParameterError
-from restitution.dem.codes import Pair
+from restitution.dem.pair import Pair
 
 ROOT = Path(__file__).resolve().parents[2]
 

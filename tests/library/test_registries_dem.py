@@ -26,7 +26,7 @@ from restitution.dem.model_choice import ContactModel
 from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
 from restitution.dem.scene_file import SCHEMA_PATH, scene_from_dict
-from restitution.dem.settings import typed_e_table
+from restitution.dem.typed_e_table import typed_e_table
 
 STUB_NOTE = "the stub engine's note"
 

@@ -14,12 +14,14 @@ import pytest
 import yaml
 
 from restitution.cli import main
-from restitution.dem.codes import Pair, lammps_contact, liggghts_contact
-from restitution.dem.contact import Contact
-from restitution.dem.engines.lammps.scene import lammps_models
-from restitution.dem.model_choice import fit_model
-from restitution.dem.scene import answer_scene
 from restitution.core.errors import ParameterError
+from restitution.dem.contact import Contact
+from restitution.dem.engines.lammps.contact import lammps_contact
+from restitution.dem.engines.lammps.scene import lammps_models
+from restitution.dem.engines.liggghts.contact import liggghts_contact
+from restitution.dem.model_choice import fit_model
+from restitution.dem.pair import Pair
+from restitution.dem.scene import answer_scene
 from restitution.dem.scene_file import scene_from_dict
 from restitution.dem.timestep import verlet_eps
 from mutation import set_at  # noqa: E402

@@ -12,9 +12,9 @@ from pathlib import Path
 
 import pytest
 
-from restitution.dem.codes import Pair
+from restitution.dem.engines.lammps.run import available, lammps_eps, lammps_wall_eps
 from restitution.dem.extrapolate import richardson
-from restitution.dem.lammps import available, lammps_eps, lammps_wall_eps
+from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
 from restitution.dem.scene_file import read_scene
 

@@ -5,14 +5,14 @@ the predicted eps, and extrapolated to dt = 0 within 1e-6.
 
 Every pair contact: LIGGGHTS refuses a system whose atom types in use do not start at 1 ("Atom types
 must start from 1 for granular simulations"), so a run of two later types holds a resting type-1
-sphere out of reach (restitution.dem.liggghts); before it, only the contacts of type 1 were run.
+sphere out of reach (restitution.dem.engines.liggghts.run); before it, only the contacts of type 1 were run.
 """
 
 import pytest
 
-from restitution.dem.codes import Pair
+from restitution.dem.engines.liggghts.run import available, liggghts_eps_runs, liggghts_wall_eps_runs
 from restitution.dem.extrapolate import richardson
-from restitution.dem.liggghts import available, liggghts_eps_runs, liggghts_wall_eps_runs
+from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
 from restitution.dem.scene_file import scene_from_dict
 

@@ -16,10 +16,11 @@ from restitution_workflow.latex import fixed, sci
 from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
 
 from restitution.dem.calibrate import calibrate
-from restitution.dem.codes import Pair, lammps_contact, lammps_pair_coeff
 from restitution.dem.contact import Contact
-from restitution.dem.lammps import lammps_eps_extrapolated
-from restitution.dem.settings import lammps_design
+from restitution.dem.engines.lammps.contact import lammps_contact, lammps_pair_coeff
+from restitution.dem.engines.lammps.design import lammps_design
+from restitution.dem.engines.lammps.run import lammps_eps_extrapolated
+from restitution.dem.pair import Pair
 
 start(snakemake)
 P = snakemake.params.dem

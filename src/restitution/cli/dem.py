@@ -148,8 +148,8 @@ def _per_type(name: str, items) -> dict:
 
 
 def run_deck(args, out) -> None:
-    from ..dem.codes import TSUJI_VERSION_NOTE
     from ..dem.deck import audit_deck
+    from ..dem.engines.lammps.contact import TSUJI_VERSION_NOTE
     try:
         with open(args.file, encoding="utf-8", errors="replace") as fh:
             text = fh.read()
@@ -244,8 +244,8 @@ def add_lammps_subcommand(subparsers) -> None:
 
 def run_lammps(args, out) -> None:
     from ..dem.engines import ENGINES
+    from ..dem.engines.lammps.design import lammps_audit, lammps_design
     from ..dem.pair import Pair
-    from ..dem.settings import lammps_audit, lammps_design
     if (args.eta_n0 is None) == (args.eps is None):
         raise ParameterError("eps", args.eps, "give exactly one of --eta-n0 (audit) and --eps (design)")
     for flag, values in (("--radius", args.radius), ("--density", args.density)):

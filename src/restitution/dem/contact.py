@@ -111,7 +111,7 @@ class Contact:
     ("force": contact ends where the normal force vanishes, "overlap": where delta returns to 0).
 
     One contact of a DEM simulation in physical units; the functions of
-    :mod:`restitution.dem.codes` build one from a code's options.
+    each engine's contact module (:mod:`restitution.dem.engines`) builds one from a code's options.
 
     Parameters
     ----------

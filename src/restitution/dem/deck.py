@@ -61,9 +61,9 @@ from __future__ import annotations
 
 from ..core.collision import StickError
 from ..core.errors import ParameterError
-from .codes import Pair
 from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_deck
 from .deck_state import MAX_TYPES, Deck, DeckError, explained, place, spheres
+from .pair import Pair
 
 __all__ = ["DeckError", "Deck", "read_deck", "audit_deck", "MAX_STAGES", "MAX_TYPES"]
 

@@ -17,8 +17,10 @@ from typing import Protocol
 
 from ..core.errors import ParameterError
 from .calibrate import calibrate
-from .codes import Pair, lammps_eta_n0, liggghts_e
 from .deck_text import PLACEHOLDER
+from .engines.lammps.contact import lammps_eta_n0
+from .engines.liggghts.contact import liggghts_e
+from .pair import Pair
 
 __all__ = ["DeckError", "Deck", "DeckDialect", "UnevaluatedNumber", "explained", "MAX_TYPES", "FLAT_WALLS", "types", "number",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e"]
@@ -533,7 +535,7 @@ def exact_e(contact, eps: float, code: str) -> float | None:
 
     Examples
     --------
-    >>> from restitution.dem.codes import liggghts_contact
+    >>> from restitution.dem.engines.liggghts.contact import liggghts_contact
     >>> c = liggghts_contact(Pair.spheres(0.01, 0.01, 2500, 2500), E=5e6, nu=0.3, e=0.8, limit_force=True)
     >>> round(c.eps(1.0), 4), round(exact_e(c, 0.8, "liggghts"), 4)   # limitForce on: e 0.8 gives more
     (0.8081, 0.7912)
