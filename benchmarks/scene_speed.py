@@ -6,7 +6,7 @@ at 5,050 pairs).
     .venv/bin/python benchmarks/scene_speed.py        (part of make bench; prints one table)
 
 Targets: a third of the material pairs a measured table that falls with speed (a speed-dependent
-rung is needed), the others a constant e. The first answer of each size builds or loads what the
+model is needed), the others a constant e. The first answer of each size builds or loads what the
 evaluator needs (master curves, cached on disk); the time reported is the best of the next runs,
 wall clock on one core.
 """

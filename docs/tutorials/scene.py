@@ -46,7 +46,7 @@ answer = json.loads(subprocess.run([exe, "scene", str(scene_file), "--json"], ca
                                    check=True).stdout)
 
 # %% [markdown]
-# Every rung tried per material pair, against the target and the tolerance band. A constant target
+# Every model tried per material pair, against the target and the tolerance band. A constant target
 # is met by `coeff_restitution` damping, whose eps does not depend on speed; the glass-steel table,
 # which falls with speed, needs a damping whose eps does (`viscoelastic`).
 
@@ -57,9 +57,9 @@ tol = answer["tolerance"]
 for ax, curve in zip(axes.flat, curves):
     v, target = np.array(curve["speeds"]), np.array(curve["target"])
     ax.fill_between(v, target - tol, target + tol, color="0.85", label="target +- tolerance")
-    for rung in curve["rungs"]:
-        ax.semilogx(v, rung["eps"], "-" if rung["accepted"] else ":",
-                    label=rung["name"] + ("" if rung["accepted"] else " (rejected)"))
+    for model in curve["models"]:
+        ax.semilogx(v, model["eps"], "-" if model["accepted"] else ":",
+                    label=model["name"] + ("" if model["accepted"] else " (rejected)"))
     ax.set_title(" - ".join(curve["pair"]), fontsize=9)
     ax.legend(fontsize=6)
 for ax in axes[-1]:

@@ -1,8 +1,8 @@
 # %% [markdown]
 # # A scene's report
 #
-# From the answer of `restitution scene` (scene.json): per material pair, eps(v) of every rung of
-# the ladder tried against the target and its deviation against the tolerance band; per contact,
+# From the answer of `restitution scene` (scene.json): per material pair, eps(v) of every candidate
+# model tried against the target and its deviation against the tolerance band; per contact,
 # the contact time and the time step against speed; the table and the input lines. One HTML page
 # beside its figures. Reads the answer only, computes nothing.
 
@@ -23,7 +23,7 @@ curves = res["curves"]
 cols = min(3, len(curves))
 rows = math.ceil(len(curves) / cols)
 
-# %% eps(v) of every rung against the target, and its deviation against the tolerance band
+# %% eps(v) of every model against the target, and its deviation against the tolerance band
 def per_pair(draw, ylabel, pdf, png):
     """One panel per material pair, ``draw(ax, speeds, curve)`` filling each."""
     fig, axes = plt.subplots(rows, cols, figsize=(4.2 * cols, 3.0 * rows), squeeze=False, sharex=True)
@@ -46,14 +46,14 @@ def eps_panel(ax, v, c):
     target = np.array(c["target"])
     ax.fill_between(v, target - tol, target + tol, color="0.88", label="target ± tolerance")
     ax.plot(v, target, color="k", lw=1.2, label="target")
-    for r in c["rungs"]:
+    for r in c["models"]:
         ax.plot(v, r["eps"], lw=1.4, ls="-" if r["accepted"] else "--",
                 label=f"{r['name']} ({'accepted' if r['accepted'] else 'rejected'})")
 
 
 def deviation_panel(ax, v, c):
     ax.axhspan(-tol, tol, color="0.88", label="tolerance")
-    for r in c["rungs"]:
+    for r in c["models"]:
         ax.plot(v, np.array(r["eps"]) - np.array(c["target"]), lw=1.4, ls="-" if r["accepted"] else "--",
                 label=r["name"])
     ax.axhline(0.0, color="k", lw=0.6)
@@ -83,7 +83,7 @@ plt.close(fig)
 # %% the page
 table = Path(snakemake.input.table).read_text()
 figures = "".join(f'<h2>{html.escape(title)}</h2>\n<img src="{Path(png).name}" alt="{html.escape(title)}" style="max-width:100%">\n'
-                  for title, png in (("eps(v) of every rung tried against the target", out.eps_png),
+                  for title, png in (("eps(v) of every model tried against the target", out.eps_png),
                                      ("Deviation from the target against the tolerance band", out.dev_png),
                                      ("Contact time and time step against speed", out.dt_png)))
 verdict = ("every contact has a model within the tolerance" if res["met"]
@@ -96,7 +96,7 @@ page = f"""<!DOCTYPE html>
 <p>{html.escape(res['code'])}, tolerance {tol:g} on eps (absolute) over speeds {res['speeds'][0]:g} to
 {res['speeds'][1]:g}: {verdict}. Checked: {html.escape(res['check'])}. The small example scene's settings
 are run in LAMMPS by the project's tests (tests/library/test_scene_lammps.py).</p>
-{figures}<h2>Contacts, rungs tried and input lines</h2>
+{figures}<h2>Contacts, models tried and input lines</h2>
 <pre>{html.escape(table)}</pre>
 </body></html>
 """

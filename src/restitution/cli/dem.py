@@ -51,7 +51,7 @@ def scene_table(res: dict) -> str:
                         f"{c['eps'][0]:7.4f} .. {c['eps'][-1]:6.4f} {c['dt']:10.3g}")
         tried = "; ".join(f"{r['name']} {r['max_deviation']:.3g}" + (f" at {r['at_speed']:.3g}" if r["at_speed"] else "")
                           + (" accepted" if r["accepted"] else " rejected") + (f" ({r['reason']})" if r.get("reason") else "")
-                          for r in c["rungs"])
+                          for r in c["models"])
         rows.append(f"  tried: {tried}")
         if c["chosen"] is not None:
             ratio = max(c["max_overlap"]) / c["overlap_limit"]

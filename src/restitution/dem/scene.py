@@ -37,7 +37,7 @@ BUILD_POINTS = 50_000
 PLOT_POINTS = 200
 
 
-def _climb(scene: Scene, engine: Engine, models, end: str, target, grid, probe: SceneContact,
+def _choose_model(scene: Scene, engine: Engine, models, end: str, target, grid, probe: SceneContact,
            build) -> tuple[list[Fit], Fit | None]:
     """Fit each model in turn; stop at the first that meets the tolerance and that the engine can
     express (tsuji's e, for one, reaches only part of the range of damping)."""
@@ -126,9 +126,9 @@ def answer_scene(scene: Scene, progress=None) -> dict:
     build = True if len(by_materials) * len(grid) > BUILD_POINTS else None
     answers = {}
     for key, group in by_materials.items():
-        fits, chosen = _climb(scene, engine, models, end, scene.target(*group[0].materials), grid, group[0], build)
+        fits, chosen = _choose_model(scene, engine, models, end, scene.target(*group[0].materials), grid, group[0], build)
         shared = {"fits": fits, "chosen": chosen, "materials": group[0].materials,
-                  "rungs": [f.as_dict() for f in fits]}
+                  "models": [f.as_dict() for f in fits]}
         if chosen is not None:
             ex = as_exponents(chosen.model.alpha, chosen.model.gamma)
             eps_fit, bound = scaled_eps(chosen.model, end, chosen.omega(speeds), build)
@@ -150,7 +150,7 @@ def answer_scene(scene: Scene, progress=None) -> dict:
                "types": [c.a.number, c.b.number if c.b is not None else walls.get(c.wall, "wall")],
                "materials": list(c.materials),
                "effective_mass": c.pair.m, "effective_radius": c.pair.R,
-               "rungs": a["rungs"], "chosen": None, "input_lines": [], "end": end}
+               "models": a["models"], "chosen": None, "input_lines": [], "end": end}
         fit = a["chosen"]
         if fit is not None:
             setting = engine.scene_setting(scene, c, fit)
@@ -177,13 +177,13 @@ def answer_scene(scene: Scene, progress=None) -> dict:
     step = max(1, len(grid) // PLOT_POINTS)
     curves = [{"pair": list(a["materials"]), "speeds": [float(v) for v in grid[::step]],
                "target": [float(e) for e in scene.target(*a["materials"]).at(grid[::step])],
-               "rungs": [{"name": f.model.name, "accepted": f.accepted,
+               "models": [{"name": f.model.name, "accepted": f.accepted,
                           "eps": [float(e) for e in f.eps[::step]]} for f in a["fits"] if f.eps]}
               for a in answers.values()]
     lines = engine.input_lines(scene, out)
     return {"scene": scene.name, "code": scene.code, "options": scene.options, "tolerance": scene.tolerance,
             "speeds": list(scene.speeds), "check_points": scene.check_points,
-            "check": f"every rung's |eps - target| at {scene.check_points} log-spaced speeds over the range, "
+            "check": f"every model's |eps - target| at {scene.check_points} log-spaced speeds over the range, "
                      f"plus the evaluation's bound (relative {EVAL_TOL:g}; where the bodies can stick, absolute "
                      f"{EVAL_TOL * SMALL_EPS:g} for eps below {SMALL_EPS:g})",
             "types": [{"number": t.number, "name": t.name, "species": t.species, "material": t.material,
