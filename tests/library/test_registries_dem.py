@@ -142,7 +142,8 @@ def test_an_engine_without_a_runner_says_so_and_one_with_a_runner_gives_its_modu
 
 def test_the_deck_reader_takes_its_dialects_from_the_engines_deck_hooks():
     from restitution.dem.deck_reader import DIALECTS
-    from restitution.dem.engines import lammps_deck, liggghts_deck
+    from restitution.dem.engines.lammps import deck as lammps_deck
+    from restitution.dem.engines.liggghts import deck as liggghts_deck
     assert ENGINES["lammps"].deck is lammps_deck and ENGINES["liggghts"].deck is liggghts_deck
     assert DIALECTS == {"LAMMPS": lammps_deck, "LIGGGHTS": liggghts_deck}
     assert ENGINES["mercurydpm"].deck is None

@@ -52,7 +52,7 @@ LIGGGHTS tutorial in LAMMPS' older syntax) runs in neither engine: refused.
 
 This module audits; reading is :mod:`restitution.dem.deck_reader`'s (the commands every engine
 shares), each engine's pair style, coefficients and walls its dialect's
-(:mod:`restitution.dem.engines.lammps_deck`, :mod:`restitution.dem.engines.liggghts_deck`), and
+(:mod:`restitution.dem.engines.lammps.deck`, :mod:`restitution.dem.engines.liggghts.deck`), and
 the words and formulas :mod:`restitution.dem.deck_text`'s. ``read_deck``, ``Deck``, ``DeckError``,
 ``MAX_STAGES`` and ``MAX_TYPES`` are importable from here too.
 """

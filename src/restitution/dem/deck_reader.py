@@ -2,8 +2,8 @@
 head-on two-sphere contact (:class:`~restitution.dem.deck_state.Deck`), for every engine alike
 (box, atoms, sizes, groups, fixes that pour or insert, data files, labels, runs and their stages).
 What a pair style, its coefficients and its walls mean is an engine's: :data:`DIALECTS` gives the
-dialect of each engine of the registry that has one (:mod:`restitution.dem.engines.lammps_deck`,
-:mod:`restitution.dem.engines.liggghts_deck`), and :data:`PAIR_STYLES` the dialect of each pair
+dialect of each engine of the registry that has one (:mod:`restitution.dem.engines.lammps.deck`,
+:mod:`restitution.dem.engines.liggghts.deck`), and :data:`PAIR_STYLES` the dialect of each pair
 style. Which commands run (if, jump, label, next, quit, include, variable) is
 :mod:`restitution.dem.deck_script`'s.
 """

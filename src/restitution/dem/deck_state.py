@@ -1,5 +1,5 @@
 """What the deck reader (:mod:`restitution.dem.deck_reader`) and the engines' deck dialects
-(:mod:`restitution.dem.engines.lammps_deck`, :mod:`restitution.dem.engines.liggghts_deck`) share:
+(:mod:`restitution.dem.engines.lammps.deck`, :mod:`restitution.dem.engines.liggghts.deck`) share:
 the settings a deck's commands build (:class:`Deck`), the one-line refusal (:class:`DeckError`),
 the readings of words every command makes the same way (numbers, atom types and ranges, type
 labels, where a line is), the two spheres of a type pair, the e to type for an eps, and what a
@@ -127,7 +127,7 @@ class DeckDialect(Protocol):
 
     Examples
     --------
-    >>> from restitution.dem.engines import lammps_deck
+    >>> from restitution.dem.engines.lammps import deck as lammps_deck
     >>> lammps_deck.ENGINE, "granular" in lammps_deck.PAIR_STYLES
     ('LAMMPS', True)
     """

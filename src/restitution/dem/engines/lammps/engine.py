@@ -22,7 +22,7 @@ class LammpsEngine(Engine):
     label = "LAMMPS"
     typed_e = {row: (law, LAMMPS_VERSION) for row, law in TYPED_E.items()}
     runner_module = "restitution.dem.engines.lammps.run"
-    deck_module = "restitution.dem.engines.lammps_deck"
+    deck_module = "restitution.dem.engines.lammps.deck"
     scene_options = {"normal": None, "damping": "choose", "limit_damping": False}
     scene_option_choices = {"normal": tuple(_STIFFNESS)}
 

@@ -21,7 +21,7 @@ class LiggghtsEngine(Engine):
     label = "LIGGGHTS"
     typed_e = {row: (law, LIGGGHTS_VERSION) for row, law in TYPED_E.items()}
     runner_module = "restitution.dem.engines.liggghts.run"
-    deck_module = "restitution.dem.engines.liggghts_deck"
+    deck_module = "restitution.dem.engines.liggghts.deck"
     scene_options = {"model": "hertz", "limitForce": False}
 
     def contact(self, pair, **setting):

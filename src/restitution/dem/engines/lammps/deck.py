@@ -16,8 +16,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..deck_state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types
-from .lammps.contact import DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_gran_contact
+from ...deck_state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types
+from .contact import DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_gran_contact
 
 __all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall"]
 

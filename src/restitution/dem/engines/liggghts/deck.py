@@ -14,8 +14,8 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 
 from __future__ import annotations
 
-from ..deck_state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
-from .liggghts.contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, liggghts_accepts_e,
+from ...deck_state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
+from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, liggghts_accepts_e,
                                liggghts_contact)
 
 __all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall",
