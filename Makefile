@@ -58,7 +58,9 @@ fuzz: $(STAMP)
 # The paper pipeline (Snakefile, config.yaml, workflow/). Outputs under results/, the PDF at
 # results/paper/restitution.pdf. CORES=all uses every core.
 CORES        ?= 2
-SNAKEMAKE    := $(BIN)/snakemake --cores $(CORES) --rerun-incomplete
+# --scheduler greedy: Snakemake's default (ilp) solves an integer program at every scheduling step;
+# greedy runs the same jobs (priorities kept); a cold build measured 0.91x and 0.96x the CPU with it.
+SNAKEMAKE    := $(BIN)/snakemake --cores $(CORES) --rerun-incomplete --scheduler greedy
 # Runs in this tree go through workflow/tools/guard.py: results/ (and logs/, build/, .snakemake/)
 # must be writable with room to spare, one run at a time (a second `make paper` waits for the
 # first; LOCK_WAIT=S gives up after S seconds, LOCK_WAIT=0 at once), locks left by a killed run
