@@ -85,6 +85,15 @@ def built(tmp_path_factory) -> Path:
     return built_tree(tmp_path_factory.getbasetemp())
 
 
+@pytest.fixture(scope="session")
+def flat_study(built, tmp_path_factory) -> Path:
+    """The clean build with the one-off study of `pipeline_tree.FLAT` run into it, once per test run
+    (the study's own tests and the cluster test's local build of the same target). Read it only."""
+    from pipeline_tree import flat_study_tree
+
+    return flat_study_tree(tmp_path_factory.getbasetemp())
+
+
 @pytest.fixture
 def fresh(tmp_path) -> Path:
     """A clean copy of the project, nothing built (the shared .venv linked in)."""
@@ -95,7 +104,9 @@ def fresh(tmp_path) -> Path:
 
 #: Test modules that run the pipeline (builds or dry runs); `make test-fast` leaves them out.
 PIPELINE_MODULES = {"test_pipeline.py", "test_variants.py", "test_faults.py", "test_config_hardening.py"}
-PIPELINE_FIXTURES = {"built", "fresh"}
+PIPELINE_FIXTURES = {"built", "fresh", "flat_study"}
+#: Fixtures that wait for the shared build.
+SHARED_BUILDS = {"built", "flat_study"}
 
 
 def pytest_collection_modifyitems(config, items):
@@ -103,14 +114,14 @@ def pytest_collection_modifyitems(config, items):
         if item.path.name in PIPELINE_MODULES or PIPELINE_FIXTURES & set(getattr(item, "fixturenames", ())):
             item.add_marker(pytest.mark.pipeline)
     # Tests of the shared build last: the library tests run while it is being built.
-    items.sort(key=lambda item: "built" in getattr(item, "fixturenames", ()))
+    items.sort(key=lambda item: bool(SHARED_BUILDS & set(getattr(item, "fixturenames", ()))))
 
 
 def pytest_collection_finish(session):
     """Start the shared build at once, in the background of one worker, if any selected test needs it."""
     if os.environ.get("PYTEST_XDIST_WORKER", "gw0") != "gw0" or session.config.option.collectonly:
         return
-    if not any("built" in getattr(item, "fixturenames", ()) for item in session.items):
+    if not any(SHARED_BUILDS & set(getattr(item, "fixturenames", ())) for item in session.items):
         return
     from pipeline_tree import built_tree
 

@@ -102,14 +102,14 @@ def shared_dir(base: Path) -> Path:
     return path
 
 
-def built_tree(base: Path) -> Path:
-    """One clean build per test run, through `make paper` as a user runs it (the PDF too when TeX
-    is there), shared by every module and every worker: the first to ask builds it (conftest.py
-    starts that early), the others wait on the lock. Tests only read it, or work on copies."""
-    if "tree" not in _BUILT:
+def _shared(base: Path, name: str, what: str, build) -> Path:
+    """``build(tree)`` once per test run in shared/<name>, for every module and every worker: the first
+    to ask builds, the others wait on the lock. ``build`` returns an error message or None; ``what``
+    names the build in the messages."""
+    if name not in _BUILT:
         shared = shared_dir(base)
-        tree, ok, failed = shared / "session-build", shared / "session-build.ok", shared / "session-build.failed"
-        with open(shared / "build.lock", "w") as lock:
+        tree, ok, failed = shared / name, shared / f"{name}.ok", shared / f"{name}.failed"
+        with open(shared / f"{name}.lock", "w") as lock:
             fcntl.flock(lock, fcntl.LOCK_EX)
             if failed.exists():
                 raise AssertionError(failed.read_text())
@@ -118,20 +118,51 @@ def built_tree(base: Path) -> Path:
                 # timeout left the tree behind, and each of them failed on it with FileExistsError
                 # instead of reading why (48 errors on a loaded machine).
                 try:
-                    proc = make(fresh_tree(tree), "paper", timeout=BUILD_TIMEOUT)
+                    error = build(tree)
                 except subprocess.TimeoutExpired:
-                    failed.write_text(f"the shared clean build (make paper) did not finish within {BUILD_TIMEOUT:g} s "
-                                      "(a loaded machine? PIPELINE_BUILD_TIMEOUT=S gives it longer)")
-                    raise AssertionError(failed.read_text()) from None
+                    error = (f"{what} did not finish within {BUILD_TIMEOUT:g} s "
+                             "(a loaded machine? PIPELINE_BUILD_TIMEOUT=S gives it longer)")
                 except Exception as err:
-                    failed.write_text(f"the shared clean build could not start: {type(err).__name__}: {err}")
-                    raise AssertionError(failed.read_text()) from None
-                if proc.returncode != 0:
-                    failed.write_text(f"clean build failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}")
-                    raise AssertionError(failed.read_text())
+                    error = f"{what} could not start: {type(err).__name__}: {err}"
+                if error:
+                    failed.write_text(error)
+                    raise AssertionError(error)
                 ok.touch()
-        _BUILT["tree"] = tree
-    return _BUILT["tree"]
+        _BUILT[name] = tree
+    return _BUILT[name]
+
+
+def built_tree(base: Path) -> Path:
+    """One clean build per test run, through `make paper` as a user runs it (the PDF too when TeX
+    is there), shared by every module and every worker (conftest.py starts it early). Tests only
+    read it, or work on copies."""
+    def build(tree):
+        proc = make(fresh_tree(tree), "paper", timeout=BUILD_TIMEOUT)
+        return f"clean build failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}" if proc.returncode else None
+
+    return _shared(base, "session-build", "the shared clean build (make paper)", build)
+
+
+#: A fourth material with gamma = (alpha - 1)/2 > 0: Omega, and so eps, must not depend on g.
+FLAT = {"name": "flat", "alpha": "2", "gamma": "1/2", "D1": 0.01, "D2": 0.1,
+        "g_range": {"min": 0.01, "max": 10.0, "points": 5, "spacing": "log"},
+        "readings": ["P-N2-K2-Dprinted"]}
+#: The same as a `snakemake --config` value (YAML flow style).
+FLAT_CONFIG = ('extra_variants=[{name: flat, alpha: "2", gamma: "1/2", D1: 0.01, D2: 0.1, '
+               'g_range: {min: 0.01, max: 10, points: 5}, readings: [P-N2-K2-Dprinted]}]')
+FLAT_STUDY = "results/flat/study.txt"
+
+
+def flat_study_tree(base: Path) -> Path:
+    """A copy of the clean build with the one-off study of FLAT run into it (`snakemake
+    results/flat/study.txt --config extra_variants=...`), once per test run: the study's tests and
+    the cluster test, which compares its own run with a local one, read the same local build."""
+    def build(tree):
+        copy_built(built_tree(base), tree)
+        proc = snakemake(tree, "--cores", "2", FLAT_STUDY, "--config", FLAT_CONFIG, timeout=BUILD_TIMEOUT)
+        return f"the one-off study failed:\n{proc.stdout[-3000:]}\n{proc.stderr[-3000:]}" if proc.returncode else None
+
+    return _shared(base, "flat-study", "the shared one-off study", build)
 
 
 # ------------------------------------------------------------------------------------ processes

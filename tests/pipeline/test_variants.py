@@ -16,17 +16,10 @@ import pytest
 import yaml
 
 
-from pipeline_tree import ALL, copy_built  # noqa: E402
+from pipeline_tree import ALL, FLAT, FLAT_CONFIG, copy_built  # noqa: E402
 from test_pipeline import (assert_one_config_error, PER_VARIANT, ROOT, VARIANT_NAMES, planned, read_csv,  # noqa: E402
                            rebuild, snakemake)
 
-#: A fourth material with gamma = (alpha - 1)/2 > 0: Omega, and so eps, must not depend on g.
-FLAT = {"name": "flat", "alpha": "2", "gamma": "1/2", "D1": 0.01, "D2": 0.1,
-        "g_range": {"min": 0.01, "max": 10.0, "points": 5, "spacing": "log"},
-        "readings": ["P-N2-K2-Dprinted"]}
-#: The same as a `snakemake --config` value (YAML flow style).
-FLAT_CONFIG = ('extra_variants=[{name: flat, alpha: "2", gamma: "1/2", D1: 0.01, D2: 0.1, '
-               'g_range: {min: 0.01, max: 10, points: 5}, readings: [P-N2-K2-Dprinted]}]')
 #: Manuscript-level jobs: they gather every variant, so a new variant reruns them.
 GATHERING = {"compare_variants", "variants_tex", "closed_form_section", "manuscript", "supplement", ALL}
 
@@ -155,11 +148,11 @@ def test_a_one_off_study_through_config_plans_only_its_own_jobs(built):
 
 
 @pytest.mark.slow
-def test_a_one_off_study_runs_into_its_own_folder(built, tmp_path):
-    """Gamma = (alpha - 1)/2 with gamma > 0: eps independent of g, validated; nothing else is touched."""
-    tree = copy_built(built, tmp_path / "t")
-    before = rebuild.digest_results(tree)
-    snakemake(tree, "--cores", "2", "results/flat/study.txt", "--config", FLAT_CONFIG)
+def test_a_one_off_study_runs_into_its_own_folder(built, flat_study):
+    """Gamma = (alpha - 1)/2 with gamma > 0: eps independent of g, validated; nothing else is touched.
+    The study ran into a copy of the clean build (conftest.py's `flat_study`, shared with the cluster test)."""
+    tree = flat_study
+    before = rebuild.digest_results(built)
     after = rebuild.digest_results(tree)
     changed = {f for f in set(before) | set(after) if before.get(f) != after.get(f)}
     assert changed and all(f.startswith("results/flat/") for f in changed)
