@@ -18,8 +18,6 @@ from typing import Protocol
 from ..core.errors import ParameterError
 from .calibrate import calibrate
 from .deck_text import PLACEHOLDER
-from .engines.lammps.contact import lammps_eta_n0
-from .engines.liggghts.contact import liggghts_e
 from .pair import Pair
 
 __all__ = ["DeckError", "Deck", "DeckDialect", "UnevaluatedNumber", "explained", "MAX_TYPES", "FLAT_WALLS", "types", "number",
@@ -508,9 +506,9 @@ def spheres(deck: Deck, i: int, j: int) -> Pair:
     return Pair.spheres(deck.radius[i], deck.radius[j], deck.density[i], deck.density[j])
 
 
-def exact_e(contact, eps: float, code: str) -> float | None:
-    """The e to type into ``code`` (a LAMMPS damping taking an e, or "liggghts" for
-    coefficientRestitution) that gives ``contact``'s law eps = ``eps`` under its end rule; None where
+def exact_e(contact, eps: float, typed_e_of) -> float | None:
+    """The e to type into an engine's damping that takes an e (read from a contact by
+    ``typed_e_of``) so that ``contact``'s law gives eps = ``eps`` under its end rule; None where
     no e does. Those dampings set D2 = f(e) sqrt(D1) with gamma = (alpha - 1)/2, so Omega = D1 / D2^2
     at every speed and eps depends on e alone: one calibration per law and e (the unit contact,
     D1 = 1 at g = 1) serves every pair and wall of a deck.
@@ -521,8 +519,10 @@ def exact_e(contact, eps: float, code: str) -> float | None:
         The law, with gamma = (alpha - 1)/2.
     eps : float
         The eps wanted.
-    code : str
-        A LAMMPS damping ("tsuji", "coeff_restitution") or "liggghts".
+    typed_e_of : callable
+        Contact -> the e the engine's damping needs for it (the engine's own inverse, e.g.
+        :func:`restitution.dem.engines.liggghts.contact.liggghts_e`); ParameterError where no e
+        expresses it.
 
     Returns
     -------
@@ -537,18 +537,24 @@ def exact_e(contact, eps: float, code: str) -> float | None:
     --------
     >>> from restitution.dem.engines.liggghts.contact import liggghts_contact
     >>> c = liggghts_contact(Pair.spheres(0.01, 0.01, 2500, 2500), E=5e6, nu=0.3, e=0.8, limit_force=True)
-    >>> round(c.eps(1.0), 4), round(exact_e(c, 0.8, "liggghts"), 4)   # limitForce on: e 0.8 gives more
+    >>> from restitution.dem.engines.liggghts.contact import liggghts_e
+    >>> round(c.eps(1.0), 4), round(exact_e(c, 0.8, liggghts_e), 4)   # limitForce on: e 0.8 gives more
     (0.8081, 0.7912)
     """
     if contact.gamma != (contact.alpha - 1) / 2:
         raise ValueError(f"an exact e needs gamma = (alpha - 1)/2, not {contact.gamma} for alpha = {contact.alpha}")
-    return _unit_exact(contact.alpha, contact.end, float(eps), code)
+    unit = _unit_contact(contact.alpha, contact.end, float(eps))
+    try:     # the engine's e cannot express the damping that gives eps
+        return None if unit is None else typed_e_of(unit)
+    except ParameterError:
+        return None
 
 
 @lru_cache(maxsize=1024)
-def _unit_exact(alpha: Fraction, end: str, eps: float, code: str) -> float | None:
-    try:     # no damping gives eps, or the code's e cannot express the one that does
-        unit = calibrate(alpha, (alpha - 1) / 2, D1=1.0, eps=eps, g=1.0, end=end).contact
-        return liggghts_e(unit) if code == "liggghts" else lammps_eta_n0(None, code, unit)
+def _unit_contact(alpha: Fraction, end: str, eps: float):
+    """The unit contact (D1 = 1, gamma = (alpha - 1)/2) damped to eps at g = 1; None where no damping
+    gives eps. Omega does not depend on g or D1 here, so it serves every pair, wall and engine."""
+    try:
+        return calibrate(alpha, (alpha - 1) / 2, D1=1.0, eps=eps, g=1.0, end=end).contact
     except ParameterError:
         return None

@@ -15,9 +15,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import partial
 
 from ...deck_state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types
-from .contact import DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_gran_contact
+from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
+                      lammps_gran_contact)
 
 __all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall"]
 
@@ -263,7 +265,7 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
     if typed is not None and c.others is not None:
-        e_new = exact_e(contact, typed, c.damping)
+        e_new = exact_e(contact, typed, partial(lammps_eta_n0, None, c.damping))
         if e_new is not None:
             # the pair's own line (a wildcard or mixed pair gets one naming it), its e replaced
             numbers = [f"{x:.10g}" for x in c.args]
@@ -335,7 +337,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         if typed is not None:
             # tsuji's and coeff_restitution's eps depend on e alone (Omega = 1 / A(e)^2 for hooke
             # and hertz), so one e serves every type the wall acts on: the wall's own line with it
-            e_new = exact_e(contact, typed, c.damping)
+            e_new = exact_e(contact, typed, partial(lammps_eta_n0, None, c.damping))
             if e_new is not None:
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from ...deck_state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
 from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, liggghts_accepts_e,
-                               liggghts_contact)
+                      liggghts_contact, liggghts_e)
 
 __all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall",
            "liggghts_only"]
@@ -240,7 +240,7 @@ def _exact_line(deck: Deck, matrix: list, i: int, j: int, contact) -> str | None
     """The coefficientRestitution line with the entry (i, j) replaced by the e that gives
     ``contact`` eps = the e typed there; None where no e does or LIGGGHTS would refuse it."""
     m = deck.ntypes
-    e_new = exact_e(contact, matrix[(i - 1) * m + (j - 1)], "liggghts")
+    e_new = exact_e(contact, matrix[(i - 1) * m + (j - 1)], liggghts_e)
     if e_new is None or not liggghts_accepts_e(e_new):   # LIGGGHTS would stop on it
         return None
     new = list(matrix)
