@@ -1,6 +1,6 @@
 """Issue 28's property-based tests, the bounded deterministic profile of ``make test`` (the long
-one is ``make fuzz``; strategies and checks in tests/fuzzing.py). Derandomized: the same cases on
-every run. Regression cases found by the fuzz are pinned below with @example."""
+one is ``make fuzz``; strategies and checks in tests/fuzz_*.py, reached through tests/fuzzing.py).
+Derandomized: the same cases on every run. Regression cases found by the fuzz are pinned below with @example."""
 
 from __future__ import annotations
 
