@@ -1,0 +1,38 @@
+"""`restitution deck` run in process, and where the engines' shipped example decks are (Debian
+packages liggghts-doc and lammps-examples): shared by the deck tests of tests/library."""
+
+from __future__ import annotations
+
+import io
+import json
+from pathlib import Path
+
+import pytest
+
+from restitution.cli import main
+
+LIGGGHTS_EXAMPLES = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
+LAMMPS_EXAMPLES = Path("/usr/share/lammps/examples")
+needs_liggghts_examples = pytest.mark.skipif(not LIGGGHTS_EXAMPLES.is_dir(), reason="LIGGGHTS examples not "
+                                             "installed: as root, apt-get install liggghts-doc (make test does it)")
+needs_lammps_examples = pytest.mark.skipif(not (LAMMPS_EXAMPLES / "granular").is_dir(), reason="LAMMPS examples "
+                                           "not installed: as root, apt-get install lammps-examples (make test does it)")
+
+
+def run(*argv):
+    out, err = io.StringIO(), io.StringIO()
+    import contextlib
+    with contextlib.redirect_stderr(err):
+        status = main(["deck", *map(str, argv)], out=out)
+    return status, out.getvalue(), err.getvalue()
+
+
+#: The version note restitution deck writes for tsuji decks (its own test in test_dem_deck.py); the other
+#: tests read stderr without it
+NOTE = "restitution deck: note: tsuji damping as LAMMPS 22 Jul 2025"
+
+
+def audit(*argv):
+    status, out, err = run(*argv, "--json")
+    assert status == 0, err
+    return json.loads(out), "".join(ln for ln in err.splitlines(True) if not ln.startswith(NOTE))
