@@ -38,7 +38,8 @@ def _stub_module() -> types.ModuleType:
     class StubEngine(Engine):
         name = "stub"
         label = "Stub"
-        typed_e = {"Stub linear, typed e as D2": (lambda e: Contact("1", "0", 1.0, 1.0 - e, "force"), "Stub 1.0")}
+        typed_e = {"Stub linear, typed e as D2": lambda e: Contact("1", "0", 1.0, 1.0 - e, "force")}
+        version = "Stub 1.0"
         scene_options = {"limit_damping": True}
 
         def contact(self, pair, *, k, c, limit):

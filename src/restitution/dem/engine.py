@@ -31,8 +31,10 @@ class Engine:
     label : str
         The engine as messages name it (``"LAMMPS"``).
     typed_e : dict
-        {row label: (function of a typed e -> Contact, the engine version that confirms it)} for
-        each setting whose damping is set from a restitution coefficient e.
+        {row label: function of a typed e -> Contact} for each setting whose damping is set from a
+        restitution coefficient e.
+    version : str
+        The engine release the ``typed_e`` rows are confirmed in (by running them in it).
     deck_module : str or None
         The dotted name of the engine's deck dialect module, where it has one (:attr:`deck`
         imports it when first asked, so that the registry never imports the deck reader).
@@ -54,6 +56,7 @@ class Engine:
     name: str = ""
     label: str = ""
     typed_e: dict = {}
+    version: str = ""
     deck_module: str | None = None
     runner_module: str | None = None
     scene_options: dict | None = None

@@ -30,7 +30,7 @@ def typed_e_codes() -> dict:
     >>> "Yade ViscElMat (tc, en)" in rows, rows["Yade ViscElMat (tc, en)"][1]
     (True, 'Yade 2023.02a')
     """
-    return {row: entry for engine in ENGINES.values() for row, entry in engine.typed_e.items()}
+    return {row: (law, engine.version) for engine in ENGINES.values() for row, law in engine.typed_e.items()}
 
 
 #: The codes whose damping is set from a typed restitution coefficient e (the shipped engines'

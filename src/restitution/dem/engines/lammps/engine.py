@@ -20,7 +20,7 @@ class LammpsEngine(Engine):
 
     name = "lammps"
     label = "LAMMPS"
-    typed_e = {row: (law, LAMMPS_VERSION) for row, law in TYPED_E.items()}
+    typed_e, version = TYPED_E, LAMMPS_VERSION
     runner_module = "restitution.dem.engines.lammps.run"
     deck_module = "restitution.dem.engines.lammps.deck"
     scene_options = {"normal": None, "damping": "choose", "limit_damping": False}

@@ -19,7 +19,7 @@ class LiggghtsEngine(Engine):
 
     name = "liggghts"
     label = "LIGGGHTS"
-    typed_e = {row: (law, LIGGGHTS_VERSION) for row, law in TYPED_E.items()}
+    typed_e, version = TYPED_E, LIGGGHTS_VERSION
     runner_module = "restitution.dem.engines.liggghts.run"
     deck_module = "restitution.dem.engines.liggghts.deck"
     scene_options = {"model": "hertz", "limitForce": False}

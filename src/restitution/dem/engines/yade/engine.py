@@ -19,7 +19,7 @@ class YadeEngine(Engine):
 
     name = "yade"
     label = "Yade"
-    typed_e = {row: (law, YADE_VERSION) for row, law in TYPED_E.items()}
+    typed_e, version = TYPED_E, YADE_VERSION
     runner_module = "restitution.dem.engines.yade.run"
 
     def contact(self, pair, *, law: str, **setting):
