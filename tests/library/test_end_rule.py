@@ -376,3 +376,13 @@ def test_a_stalled_pulling_leg_is_refused_not_followed():
             assert rtol == 1e-11 and "creeping return defeated the integrator" in str(err)
             continue
         assert abs(ref.eps / float(law.eps) - 1) <= ref.error_bound + law.error_bound
+
+
+def test_a_forced_method_is_refused_with_the_reason_of_the_rule_asked():
+    """Of the two "integrator" rungs (one per end rule), the refusal under the overlap rule is its own
+    range, not the force rule's rung saying it serves the force rule only; a method no rung of
+    this rule serves is named as such."""
+    with pytest.raises(ParameterError, match=r"Omega outside \[1e-05, 1e14\]"):
+        restitution.epsilon(alpha="3/2", gamma="1/2", omega=[1e-7], method="integrator", end="overlap", tol=None)
+    with pytest.raises(ParameterError, match="does not serve end = overlap"):
+        restitution.epsilon(alpha="3/2", gamma="1", omega=[1.0], method="fitted-c", end="overlap")

@@ -300,8 +300,10 @@ class Ladder:
         if build is not False and cached:
             quotes = self._make_builds(quotes, flat, tol, end, method, build)
         if method is not None:
-            mine = [q for q in quotes if q.name == method]
-            if not mine:   # a rung that is not quoted for this end rule at all
+            # the rungs of that name that serve this end rule: of two (one per rule) the refusal is
+            # the one whose rule was asked, not the other's "serves the force rule only"
+            mine = [q for q in quotes if q.name == method and q.serves]
+            if not mine:
                 raise ParameterError("method", method, f"does not serve end = {end}; the rungs that do: "
                                      + ", ".join(q.name for q in quotes if q.run is not None))
             q = next((q for q in mine if q.run is not None), mine[0])

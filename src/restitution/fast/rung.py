@@ -114,6 +114,7 @@ class Quote:
     coefficients: dict | None = None
     widen: Callable | None = None   # eps -> factor on ``bound`` (None: the bound holds as quoted)
     exact: bool = False             # taken first where it meets tol (Rung.exact)
+    serves: bool = True             # False: the rung does not serve this end rule at all
 
 
 @dataclass(frozen=True)
@@ -195,7 +196,8 @@ class Rung:
 
     def quote(self, req: Request) -> Quote:
         if not self.serves(req):
-            return Quote(self.name, math.inf, math.inf, reason=f"serves the {' and '.join(self.ends)} rule only")
+            return Quote(self.name, math.inf, math.inf, reason=f"serves the {' and '.join(self.ends)} rule only",
+                         serves=False)
         why = self.outside(req)
         if why:
             return Quote(self.name, math.inf, math.inf, reason=why)
