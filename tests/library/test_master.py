@@ -85,6 +85,12 @@ def test_equal_exponents_master_uses_the_closed_form():
     from restitution.core.asymptotics import equal_exponents_eps
     err = np.abs(m.eps(pts) / equal_exponents_eps(pts) - 1)
     assert np.all(err <= m.bound_at(pts))
+    # down to the domain's edge, where eps = Omega must not lose |ln Omega| ulps on the way
+    edge = np.geomspace(1e-300, 1e-8, 30)
+    assert np.all(np.abs(m.eps(edge) / equal_exponents_eps(edge) - 1) <= m.bound_at(edge))
+    # at the join, whichever side the evaluator takes, the bound stated there holds
+    join = m.omega_lo * (1.0 + np.arange(-8, 9) * 2.0 ** -52)
+    assert np.all(np.abs(m.eps(join) / equal_exponents_eps(join) - 1) <= m.bound_at(join))
     assert m.bound_inside < 1e-9  # wide test panels; exp(-1/Omega) makes the curve steep near 0.05
     _strict_json_roundtrip(m, pts)
 

@@ -223,6 +223,12 @@ def _fit_elastic_bound(E: asy.ElasticLimit, om: np.ndarray, ref: np.ndarray) -> 
 
 
 # ------------------------------------------------------------------------------ the curve
+#: Relative distance from a join within which the evaluator's side (decided in ln Omega, whose
+#: rounding grows with |ln Omega|) may differ from a comparison of Omega with exp(s0): both bounds
+#: hold there.
+JOIN_SLACK = 1e-11
+
+
 @dataclass
 class MasterCurve(PanelRange):
     """Chebyshev panels of ln eps on [exp(s0), exp(s0 + npan width)], expansions beyond."""
@@ -244,7 +250,10 @@ class MasterCurve(PanelRange):
 
     def _kernel_viscous(self) -> np.ndarray:
         if self.viscous.kind == "closed":
-            return np.array([1.0, 1.0, 0.0, 0.0, 1.0])  # eps = Omega (exponentially small error)
+            # eps = Omega (exponentially small error), as the force form with no correction term:
+            # k Omega (1 - 0) is Omega to the last bit, where the power form's exp(ln Omega) lost
+            # |ln Omega| ulps (2e-14 at Omega = 1e-300 against the 2e-15 bound)
+            return np.array([0.0, 1.0, 0.0, 0.0, 1.0])
         return self.viscous.kernel_params()
 
     def _kernel_elastic(self) -> np.ndarray:
@@ -267,15 +276,18 @@ class MasterCurve(PanelRange):
         return self.viscous.eps(omega, 1)
 
     def bound_at(self, omega) -> np.ndarray:
-        """Pointwise error bound (relative)."""
+        """Pointwise error bound (relative). Within JOIN_SLACK of a join either side may answer
+        (the evaluator decides in ln Omega), so there both sides' bounds hold."""
         om = np.asarray(omega, dtype=float)
-        out = np.full(om.shape, self.bound_inside)
-        lo = om < self.omega_lo
-        hi = om > self.omega_hi
+        lo_join, hi_join = self.omega_lo, self.omega_hi
+        inside = (om >= lo_join * (1.0 - JOIN_SLACK)) & (om <= hi_join * (1.0 + JOIN_SLACK))
+        out = np.where(inside, self.bound_inside, 0.0)
+        lo = om < lo_join * (1.0 + JOIN_SLACK)
+        hi = om > hi_join * (1.0 - JOIN_SLACK)
         if np.any(lo):
-            out[lo] = self.viscous_bound(om[lo])
+            out[lo] = np.maximum(out[lo], self.viscous_bound(om[lo]))
         if np.any(hi):
-            out[hi] = self.elastic_bound(om[hi])
+            out[hi] = np.maximum(out[hi], self.elastic_bound(om[hi]))
         return out
 
     def bound(self, omega) -> float:
@@ -283,12 +295,13 @@ class MasterCurve(PanelRange):
         extreme Omegas on each side are evaluated)."""
         om = np.asarray(omega, dtype=float).ravel()
         lo, hi = float(om.min()), float(om.max())
-        b = self.bound_inside if (hi >= self.omega_lo and lo <= self.omega_hi) else 0.0
-        if lo < self.omega_lo:
-            below = om[om < self.omega_lo]
+        lo_join, hi_join = self.omega_lo, self.omega_hi
+        b = self.bound_inside if (hi >= lo_join * (1.0 - JOIN_SLACK) and lo <= hi_join * (1.0 + JOIN_SLACK)) else 0.0
+        if lo < lo_join * (1.0 + JOIN_SLACK):
+            below = om[om < lo_join * (1.0 + JOIN_SLACK)]
             b = max(b, float(np.max(self.viscous_bound(np.array([below.min(), below.max()])))))
-        if hi > self.omega_hi:
-            above = om[om > self.omega_hi]
+        if hi > hi_join * (1.0 - JOIN_SLACK):
+            above = om[om > hi_join * (1.0 - JOIN_SLACK)]
             b = max(b, float(np.max(self.elastic_bound(np.array([above.min(), above.max()])))))
         return b
 
@@ -384,13 +397,13 @@ def build_master(problem, settings: MasterSettings | None = None, *, progress=No
     grid_err_inside = float(np.max(np.abs(curve.eps(grid[inside]) / ref[inside] - 1.0)))
     fit_err = max(fit_err, grid_err_inside)
     out = ~inside
-    # beyond the joins: error against the grid, in units of (expansion bound + integrator noise)
     noise = integrator_bound(s.rtol, ex) if ex.alpha != ex.gamma else 2e-15
+    # set before the bounds beyond the joins are read: a grid point at a join takes both sides' bounds
+    curve.bound_inside = float(max(2.0 * (fit_err + noise), 2e-14))
+    # beyond the joins: error against the grid, in units of (expansion bound + integrator noise)
     grid_err_outside = float(np.max(np.abs(curve.eps(grid[out]) / ref[out] - 1.0)
                                     / (curve.bound_at(grid[out]) + noise))) if np.any(out) else 0.0
 
-    integ = integrator_bound(s.rtol, ex) if ex.alpha != ex.gamma else 2e-15
-    curve.bound_inside = float(max(2.0 * (fit_err + integ), 2e-14))
     curve.checks = {
         "fit_err_heldout": fit_err,
         "n_heldout": int(held.size + inside.sum()),
