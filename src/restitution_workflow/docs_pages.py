@@ -81,10 +81,11 @@ def _rows(schema: dict, node: dict, prefix: str, required: set, out: list) -> No
                 _rows(schema, items, path + "[].", set(items.get("required", ())), out)
 
 
-def schema_page(title: str, source: Path, intro: str) -> str:
-    """A page for one JSON schema in YAML: its description, then every field (nested ones as a.b,
-    list items as a[].b) with whether it is required, what it may be, its default and description."""
-    schema = yaml.safe_load(source.read_text())
+def schema_page(title: str, source: Path | dict, intro: str) -> str:
+    """A page for one JSON schema (a YAML file, or the schema itself): its description, then every
+    field (nested ones as a.b, list items as a[].b) with whether it is required, what it may be, its
+    default and description."""
+    schema = source if isinstance(source, dict) else yaml.safe_load(source.read_text())
     rows: list = []
     _rows(schema, schema, "", set(schema.get("required", ())), rows)
     # one entry per field rather than a table: the descriptions are sentences, too wide for columns
@@ -165,14 +166,17 @@ def _write(name: str, text: str) -> None:
 
 
 def generate(app=None) -> None:
+    from restitution.dem.scene_file import scene_schema
+
     _write("config.md", schema_page(
         "config.yaml", ROOT / "workflow" / "schemas" / "config.schema.yaml",
         "The pipeline's configuration, generated from `workflow/schemas/config.schema.yaml`, against which "
         "the pipeline validates `config.yaml` (and any `--configfile`) before it runs anything."))
     _write("scene.md", schema_page(
-        "The scene file", ROOT / "src" / "restitution" / "dem" / "scene.schema.yaml",
+        "The scene file", scene_schema(),
         "A scene for `restitution scene FILE` and `make scene SCENE=FILE`, generated from "
-        "`src/restitution/dem/scene.schema.yaml`, against which every scene file is checked. "
+        "`src/restitution/dem/scene.schema.yaml` and each engine's options (`scene_option_schema` "
+        "in `restitution.dem.engines`), against which every scene file is checked. "
         "See {doc}`../../howto/scenes` for how the answer is found."))
     _write("rungs.md", rungs_page())
     _write("api.rst", api_page())

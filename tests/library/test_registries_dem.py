@@ -25,7 +25,7 @@ from restitution.dem.engines import ENGINES, scene_engines
 from restitution.dem.model_choice import ContactModel
 from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
-from restitution.dem.scene_file import SCHEMA_PATH, scene_from_dict
+from restitution.dem.scene_file import SCHEMA_PATH, scene_from_dict, scene_schema
 from restitution.dem.typed_e_table import typed_e_table
 
 STUB_NOTE = "the stub engine's note"
@@ -40,7 +40,10 @@ def _stub_module() -> types.ModuleType:
         label = "Stub"
         typed_e = {"Stub linear, typed e as D2": lambda e: Contact("1", "0", 1.0, 1.0 - e, "force")}
         version = "Stub 1.0"
-        scene_options = {"limit_damping": True}
+        # an option no shipped engine has: the scene schema takes it from here
+        scene_options = {"stub_limit": True}
+        scene_option_schema = {"stub_limit": {"description": "the stub's contact ends where its force vanishes",
+                                              "type": "boolean"}}
 
         def contact(self, pair, *, k, c, limit):
             return Contact("1", "0", k / pair.m, c / pair.m, "force" if limit else "overlap")
@@ -49,7 +52,7 @@ def _stub_module() -> types.ModuleType:
             return {**given, "c": contact.D2 * pair.m}
 
         def end_rule(self, options):
-            return "force" if options["limit_damping"] else "overlap"
+            return "force" if options["stub_limit"] else "overlap"
 
         def material_keys(self, options):
             return ("k_n",), "the stub engine"
@@ -59,7 +62,7 @@ def _stub_module() -> types.ModuleType:
 
         def scene_setting(self, scene, contact, fit):
             k = float(scene.materials[contact.materials[0]]["k_n"])
-            limit = scene.options["limit_damping"]
+            limit = scene.options["stub_limit"]
             base = self.contact(contact.pair, k=k, c=1.0, limit=limit)
             return self.setting(contact.pair, fit.damped(base), k=k, limit=limit)
 
@@ -79,7 +82,7 @@ def _stub_module() -> types.ModuleType:
 
 
 def _scene() -> dict:
-    return {"name": "stub-scene", "code": "stub", "options": {"limit_damping": False}, "tolerance": 0.01,
+    return {"name": "stub-scene", "code": "stub", "options": {"stub_limit": False}, "tolerance": 0.01,
             "speeds": [0.1, 1.0], "check_points": 20, "report_points": 3,
             "materials": {"steel": {"k_n": 1.0e5, "density": 7800.0}},
             "species": [{"name": "s", "material": "steel", "radius": 1.0e-3}],
@@ -128,10 +131,27 @@ def test_the_typed_e_table_lists_the_registered_engines_rows(stub):
     assert list(row)[-1] == "Stub linear, typed e as D2"      # after the shipped engines' rows
 
 
-def test_the_scene_schema_lists_the_shipped_scene_engines():
-    """The file documents what the registry decides: they must not drift apart."""
-    schema = yaml.safe_load(Path(SCHEMA_PATH).read_text())
-    assert schema["properties"]["code"]["enum"] == scene_engines()
+def test_the_scene_schema_takes_the_engines_and_their_options_from_the_registry(stub):
+    """No engine or option is listed by hand in scene.schema.yaml: the stub's own option is checked
+    by the schema like a shipped one's, and refused in one line naming it."""
+    schema = scene_schema()
+    assert schema["properties"]["code"]["enum"] == scene_engines() == ["lammps", "liggghts", "stub"]
+    options = schema["properties"]["options"]["properties"]
+    assert options["stub_limit"]["type"] == "boolean" and options["limitForce"]["type"] == "boolean"
+    assert "stub - stub_limit" in schema["properties"]["options"]["description"]
+    raw = yaml.safe_load(Path(SCHEMA_PATH).read_text())
+    assert "enum" not in raw["properties"]["code"] and "properties" not in raw["properties"]["options"]
+    with pytest.raises(ParameterError, match=r"options\.stub_limit"):
+        scene_from_dict({**_scene(), "options": {"stub_limit": "yes"}})
+    with pytest.raises(ParameterError, match=r"options\.limitForce.*not an option of code stub"):
+        scene_from_dict({**_scene(), "options": {"limitForce": True}})
+
+
+def test_two_engines_may_not_give_one_option_two_schemas(stub, monkeypatch):
+    monkeypatch.setattr(stub, "scene_option_schema", {"stub_limit": {"type": "boolean"},
+                                                      "limitForce": {"type": "integer"}}, raising=False)
+    with pytest.raises(ValueError, match="limitForce"):
+        scene_schema()
 
 
 def test_an_engine_without_a_runner_says_so_and_one_with_a_runner_gives_its_module():

@@ -43,8 +43,10 @@ class Engine:
         the engine is installed).
     scene_options : dict or None
         The scene options and their defaults (None: required); None where scenes cannot name it.
-    scene_option_choices : dict
-        {option: its values} for each required scene option, named when it is missing.
+    scene_option_schema : dict
+        {option: its JSON schema} (a description, and an ``enum`` or a ``type``): the scene file's
+        schema takes each scene engine's options from here, and a missing required option is
+        answered with its ``enum``.
 
     Examples
     --------
@@ -60,7 +62,7 @@ class Engine:
     deck_module: str | None = None
     runner_module: str | None = None
     scene_options: dict | None = None
-    scene_option_choices: dict = {}
+    scene_option_schema: dict = {}
 
     def _missing(self, what: str):
         raise ParameterError("code", self.name, f"{self.label} has no {what} in this library")

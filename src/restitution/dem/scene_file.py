@@ -1,4 +1,5 @@
-"""A scene file (YAML): checked against ``scene.schema.yaml`` beside this module and the rules between
+"""A scene file (YAML): checked against ``scene.schema.yaml`` beside this module (with the engines'
+options from the registry: :func:`scene_schema`) and the rules between
 fields a schema cannot state, every mistake one line naming the field (ParameterError).
 
 What it gives back is a :class:`Scene`: the code and its options with defaults filled in, one atom
@@ -19,7 +20,7 @@ from ..core.errors import ParameterError, number_in
 from ..core.schema_lines import allowed, field, show
 from .engines import ENGINES, scene_engines
 
-__all__ = ["Scene", "AtomType", "Target", "read_scene", "scene_from_dict", "SCHEMA_PATH", "TOL_RANGE", "CODE_OPTIONS"]
+__all__ = ["Scene", "AtomType", "Target", "read_scene", "scene_from_dict", "scene_schema", "SCHEMA_PATH", "TOL_RANGE", "CODE_OPTIONS"]
 
 SCHEMA_PATH = Path(__file__).with_name("scene.schema.yaml")
 #: The scene tolerance (absolute, on eps): below 1e-8 the time-step study cannot promise a step
@@ -136,13 +137,41 @@ def read_scene(path) -> Scene:
     return scene_from_dict(data)
 
 
-def _schema() -> dict:
+def scene_schema() -> dict:
+    """The JSON schema a scene file is checked against: ``scene.schema.yaml`` with the engines a
+    scene may name and their options taken from the registry (restitution.dem.engines), so that an
+    engine brings its scene options in its own module.
+
+    Returns
+    -------
+    dict
+        The schema, ``code`` and ``options`` filled in.
+
+    Raises
+    ------
+    ValueError
+        Where two engines give one option name different schemas (one field cannot say both).
+
+    Examples
+    --------
+    >>> s = scene_schema()
+    >>> s["properties"]["code"]["enum"], s["properties"]["options"]["properties"]["limitForce"]["type"]
+    (['lammps', 'liggghts'], 'boolean')
+    """
     import yaml
 
     with open(SCHEMA_PATH, encoding="utf-8") as fh:
         schema = yaml.safe_load(fh)
-    # the engines a scene may name are the registry's: the file's list documents the shipped ones
-    schema["properties"]["code"]["enum"] = scene_engines()
+    codes = scene_engines()
+    options: dict = {}
+    for code in codes:
+        for name, rule in ENGINES[code].scene_option_schema.items():
+            if options.setdefault(name, rule) != rule:
+                raise ValueError(f"scene option {name}: engine {code} gives it another schema than an earlier engine")
+    schema["properties"]["code"]["enum"] = codes
+    node = schema["properties"]["options"]
+    node["properties"] = options
+    node["description"] += " (" + "; ".join(f"{code} - {', '.join(ENGINES[code].scene_options)}" for code in codes) + ")"
     return schema
 
 
@@ -170,8 +199,11 @@ def scene_from_dict(data) -> Scene:
     found = _non_finite(data)
     if found:
         _fail(field(data, found[0], "scene"), found[1], "must be a finite number")
-    schema = _schema()
-    error = jsonschema.exceptions.best_match(jsonschema.Draft202012Validator(schema).iter_errors(data))
+    schema = scene_schema()
+    errors = list(jsonschema.Draft202012Validator(schema).iter_errors(data))
+    # the code decides which options exist: a code outside the registry is the mistake to name
+    on_code = [e for e in errors if list(e.absolute_path) == ["code"]]
+    error = jsonschema.exceptions.best_match(on_code or errors)
     if error is not None:
         where = field(data, error.absolute_path, "scene")
         value = error.instance
@@ -199,7 +231,8 @@ def _beyond_schema(d: dict) -> Scene:
         options[key] = value
     missing = [k for k, v in options.items() if v is None]
     if missing:
-        _fail(f"options.{missing[0]}", None, f"code {code} needs it: one of {', '.join(engine.scene_option_choices[missing[0]])}")
+        _fail(f"options.{missing[0]}", None,
+              f"code {code} needs it: one of {', '.join(engine.scene_option_schema[missing[0]]['enum'])}")
     needs, reader = engine.material_keys(options)
     for name, mat in d["materials"].items():
         for key in needs:

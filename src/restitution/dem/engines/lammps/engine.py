@@ -24,7 +24,13 @@ class LammpsEngine(Engine):
     runner_module = "restitution.dem.engines.lammps.run"
     deck_module = "restitution.dem.engines.lammps.deck"
     scene_options = {"normal": None, "damping": "choose", "limit_damping": False}
-    scene_option_choices = {"normal": tuple(_STIFFNESS)}
+    scene_option_schema = {
+        "normal": {"description": "LAMMPS pair_style granular normal model", "enum": list(_STIFFNESS)},
+        "damping": {"description": "LAMMPS damping model, or choose (the cheapest that meets the tolerance)",
+                    "enum": ["choose", "coeff_restitution", "tsuji", "viscoelastic", "velocity", "mass_velocity"]},
+        "limit_damping": {"description": "LAMMPS limit_damping keyword (contact ends where the normal force "
+                                         "vanishes)", "type": "boolean"},
+    }
 
     def contact(self, pair, **setting):
         return lammps_contact(pair, **setting)

@@ -23,6 +23,11 @@ class LiggghtsEngine(Engine):
     runner_module = "restitution.dem.engines.liggghts.run"
     deck_module = "restitution.dem.engines.liggghts.deck"
     scene_options = {"model": "hertz", "limitForce": False}
+    scene_option_schema = {
+        "model": {"description": "LIGGGHTS pair_style gran model", "enum": ["hertz"]},
+        "limitForce": {"description": "LIGGGHTS limitForce (on - contact ends where the normal force vanishes)",
+                       "type": "boolean"},
+    }
 
     def contact(self, pair, **setting):
         return liggghts_contact(pair, **setting)
