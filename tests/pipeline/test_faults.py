@@ -287,6 +287,8 @@ def test_killed_runs_restart_to_the_clean_build(built, tmp_path):
     tree = copy_built(built, tmp_path / "t")
     _change(tree / "src" / "restitution" / "audit" / "stability.py")
     shards = tree / "results" / "stability" / "shards"
+    # by name: pathlib's glob("*.csv") also matches a shard's temporary file (.0-of-2.csv.<random>.tmp.csv)
+    names = ("0-of-2.csv", "1-of-2.csv")
 
     # 1. SIGKILL in the middle of the shard jobs
     proc = _start(tree)
@@ -305,7 +307,7 @@ def test_killed_runs_restart_to_the_clean_build(built, tmp_path):
     # a SIGKILLed snakemake leaves its locks; the guard, still holding the pipeline's lock, clears them
     assert "removed 2 stale Snakemake lock(s)" in err, err[-2000:]
     assert not list((tree / ".snakemake" / "locks").glob("*.lock"))
-    assert not list(shards.glob("*.csv")), "half-done shards must not exist under their final names"
+    assert not any((shards / n).exists() for n in names), "half-done shards must not exist under their final names"
     assert not list((tree / "results").rglob(".*.tmp*"))
 
     # 2. restart; SIGTERM (as `kill` or a closed terminal sends it to the run) once the shards are
@@ -314,7 +316,7 @@ def test_killed_runs_restart_to_the_clean_build(built, tmp_path):
     proc = _start(tree, env={"PIPELINE_STOP_GRACE": "10"})
     try:
         # both shards written and recorded as finished by Snakemake (no incomplete marker left)
-        assert wait_for(lambda: len(list(shards.glob("*.csv"))) == 2 and
+        assert wait_for(lambda: all((shards / n).exists() for n in names) and
                         not [n for n in _half_written(tree) if "shards" in n], 300)
         guard_pid = next(p for p in descendants(proc.pid)
                          if "guard.py" in cmdline(p) and cmdline(p).split()[0].endswith("python"))
@@ -324,7 +326,7 @@ def test_killed_runs_restart_to_the_clean_build(built, tmp_path):
         stop_all(proc)
     assert "stopped by signal 15" in err, err[-2000:]
     assert not list((tree / ".snakemake" / "locks").glob("*.lock")), "SIGTERM: no Snakemake lock is left"
-    for name in ("0-of-2.csv", "1-of-2.csv"):
+    for name in names:
         assert (shards / name).read_bytes() == (built / "results" / "stability" / "shards" / name).read_bytes()
     assert not list((tree / "results").rglob(".*.tmp*"))
 
