@@ -10,7 +10,7 @@ from .problem import as_problem
 
 __all__ = ["ACCURACY_FACTOR", "ACCURACY_FLOOR", "OVERLAP_ACCURACY_FACTOR", "OVERLAP_ACCURACY_FLOOR",
            "EXPONENT_SCALE", "STICK_CONDITION", "SELF_SIMILAR_CONDITION", "SELF_SIMILAR_POWER", "ELASTIC_START",
-           "exponent_factor", "plain_factor_floor", "plain_accuracy", "conditioning"]
+           "exponent_factor", "plain_factor_floor", "plain_accuracy", "conditioning", "conditioning_cause"]
 
 #: collide's stated accuracy, relative, in eps and in 1 - eps: ACCURACY_FACTOR * rtol + ACCURACY_FLOOR,
 #: times conditioning(...) under the overlap rule near a sticking boundary.
@@ -108,3 +108,45 @@ def conditioning(problem, eps, omega) -> np.ndarray:
     if ex.alpha > 2 * ex.gamma + 1:
         return elastic * np.maximum(1.0, STICK_CONDITION / e)
     return elastic * np.maximum(1.0, (np.log(1.0 / e) / SELF_SIMILAR_CONDITION) ** SELF_SIMILAR_POWER)
+
+
+def conditioning_cause(problem, eps, omega) -> str:
+    """Where :func:`conditioning` widens a bound, why, in words a refusal can give: the sticking
+    boundary (with how the error grows in this class of exponents) or the elastic limit, whichever
+    contributes more.
+
+    Parameters
+    ----------
+    problem : Problem or (alpha, gamma)
+        The exponents and end rule.
+    eps, omega : array_like
+        The answers and their Omegas.
+
+    Returns
+    -------
+    str
+        A clause such as ``"eps = 2.1e-13 lies near the sticking boundary of the overlap rule, where
+        the integrators' relative error grows like ln(1/eps)^4"``.
+
+    Examples
+    --------
+    >>> from restitution.core.problem import Problem
+    >>> conditioning_cause(Problem.of(1, 0, "overlap"), [1e-20], [0.2512]).split(", where ")[1]
+    "the integrators' relative error grows like ln(1/eps)^4"
+    >>> conditioning_cause(Problem.of(3, 0, "overlap"), [1e-6], [2.0]).split(", where ")[1]
+    "the integrators' relative error grows like 1/eps"
+    >>> conditioning_cause(Problem.of("3/2", "1/2", "overlap"), [0.99], [1e9]).split(", where ")[0]
+    "Omega = 1e+09 lies far into the overlap rule's elastic limit"
+    """
+    problem = as_problem(problem)
+    ex = problem.ex
+    e = np.maximum(np.asarray(eps, dtype=float), TINY)
+    om = np.asarray(omega, dtype=float)
+    elastic = float(np.max(np.maximum(1.0, om / ELASTIC_START) ** (1.0 / 3.0)))
+    near_stick = float(np.max(conditioning(problem, e, om))) / elastic
+    if ex.alpha < 2 * ex.gamma + 1 or near_stick < elastic:   # below 2 gamma + 1 the bodies never stick
+        return (f"Omega = {float(np.max(om)):.3g} lies far into the overlap rule's elastic limit, where the "
+                f"integrators' relative error grows like Omega^(1/3)")
+    growth = "1/eps" if ex.alpha > 2 * ex.gamma + 1 else f"ln(1/eps)^{SELF_SIMILAR_POWER}"
+    return (f"eps = {float(np.min(e)):.3g} lies near the sticking boundary of the overlap rule, where the "
+            f"integrators' relative error grows like {growth}")

@@ -39,6 +39,7 @@ import numpy as np
 
 from . import cache as _cache
 from ..core.collision import StickError, stick_bound, stick_reason
+from ..core.conditioning import conditioning_cause
 from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
 from ..core.problem import Problem
@@ -386,8 +387,7 @@ class Ladder:
             raise ParameterError("omega", float(flat[0]) if flat.size == 1 else "these Omegas",
                                  "no method that reaches tol could integrate here (" + "; ".join(failed) + ")")
         q, eps, bound = min(widened, key=lambda w: w[2])
-        raise ParameterError("tol", tol, f"eps = {float(np.min(eps)):.3g} lies near the sticking boundary of the "
-                             f"overlap rule, where the integrators' relative error grows like 1/eps: the "
+        raise ParameterError("tol", tol, f"{conditioning_cause(Problem(self.ex, end), eps, flat)}: the "
                              f"smallest bound reached here is {bound:.3g} ({q.name}); ask for a larger tol")
 
     def _building_pays(self, quotes, tol: float, n: int) -> set[str]:
