@@ -98,16 +98,22 @@ def conditioning(problem, eps, omega) -> np.ndarray:
     (ELASTIC_START); 1 elsewhere. It depends on the answer, so a bound stated with it is known
     after the evaluation (fast.ladder checks it then; collide states it)."""
     problem = as_problem(problem)
-    ex = problem.ex
     e = np.maximum(np.asarray(eps, dtype=float), TINY)
     if problem.effective_end != "overlap":
         return np.ones_like(e)
-    elastic = np.maximum(1.0, np.asarray(omega, dtype=float) / ELASTIC_START) ** (1.0 / 3.0)
-    if ex.alpha < 2 * ex.gamma + 1:
-        return elastic * np.ones_like(e)
+    return _elastic_factor(omega) * _stick_factor(problem.ex, e)
+
+
+def _elastic_factor(omega) -> np.ndarray:
+    return np.maximum(1.0, np.asarray(omega, dtype=float) / ELASTIC_START) ** (1.0 / 3.0)
+
+
+def _stick_factor(ex, e: np.ndarray) -> np.ndarray:
+    if ex.alpha < 2 * ex.gamma + 1:   # the bodies never stick
+        return np.ones_like(e)
     if ex.alpha > 2 * ex.gamma + 1:
-        return elastic * np.maximum(1.0, STICK_CONDITION / e)
-    return elastic * np.maximum(1.0, (np.log(1.0 / e) / SELF_SIMILAR_CONDITION) ** SELF_SIMILAR_POWER)
+        return np.maximum(1.0, STICK_CONDITION / e)
+    return np.maximum(1.0, (np.log(1.0 / e) / SELF_SIMILAR_CONDITION) ** SELF_SIMILAR_POWER)
 
 
 def conditioning_cause(problem, eps, omega) -> str:
@@ -138,13 +144,10 @@ def conditioning_cause(problem, eps, omega) -> str:
     >>> conditioning_cause(Problem.of("3/2", "1/2", "overlap"), [0.99], [1e9]).split(", where ")[0]
     "Omega = 1e+09 lies far into the overlap rule's elastic limit"
     """
-    problem = as_problem(problem)
-    ex = problem.ex
+    ex = as_problem(problem).ex
     e = np.maximum(np.asarray(eps, dtype=float), TINY)
     om = np.asarray(omega, dtype=float)
-    elastic = float(np.max(np.maximum(1.0, om / ELASTIC_START) ** (1.0 / 3.0)))
-    near_stick = float(np.max(conditioning(problem, e, om))) / elastic
-    if ex.alpha < 2 * ex.gamma + 1 or near_stick < elastic:   # below 2 gamma + 1 the bodies never stick
+    if ex.alpha < 2 * ex.gamma + 1 or np.max(_stick_factor(ex, e)) < np.max(_elastic_factor(om)):
         return (f"Omega = {float(np.max(om)):.3g} lies far into the overlap rule's elastic limit, where the "
                 f"integrators' relative error grows like Omega^(1/3)")
     growth = "1/eps" if ex.alpha > 2 * ex.gamma + 1 else f"ln(1/eps)^{SELF_SIMILAR_POWER}"
