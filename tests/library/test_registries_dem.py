@@ -41,9 +41,8 @@ def _stub_module() -> types.ModuleType:
         typed_e = {"Stub linear, typed e as D2": lambda e: Contact("1", "0", 1.0, 1.0 - e, "force")}
         version = "Stub 1.0"
         # an option no shipped engine has: the scene schema takes it from here
-        scene_options = {"stub_limit": True}
         scene_option_schema = {"stub_limit": {"description": "the stub's contact ends where its force vanishes",
-                                              "type": "boolean"}}
+                                              "type": "boolean", "default": True}}
 
         def contact(self, pair, *, k, c, limit):
             return Contact("1", "0", k / pair.m, c / pair.m, "force" if limit else "overlap")

@@ -41,12 +41,11 @@ class Engine:
     runner_module : str or None
         The dotted name of the module that runs the real engine (its ``available()`` says whether
         the engine is installed).
-    scene_options : dict or None
-        The scene options and their defaults (None: required); None where scenes cannot name it.
     scene_option_schema : dict
-        {option: its JSON schema} (a description, and an ``enum`` or a ``type``): the scene file's
-        schema takes each scene engine's options from here, and a missing required option is
-        answered with its ``enum``.
+        {option: its JSON schema} (a description, an ``enum`` or a ``type``, and a ``default`` unless
+        the option is required); empty where scenes cannot name the engine. The scene file's schema
+        takes each scene engine's options from here, and a missing required option is answered
+        with its ``enum``.
 
     Examples
     --------
@@ -61,8 +60,15 @@ class Engine:
     version: str = ""
     deck_module: str | None = None
     runner_module: str | None = None
-    scene_options: dict | None = None
     scene_option_schema: dict = {}
+
+    @property
+    def scene_options(self) -> dict | None:
+        """The scene options and their defaults (None: required), read from ``scene_option_schema``;
+        None where scenes cannot name the engine."""
+        if not self.scene_option_schema:
+            return None
+        return {name: rule.get("default") for name, rule in self.scene_option_schema.items()}
 
     def _missing(self, what: str):
         raise ParameterError("code", self.name, f"{self.label} has no {what} in this library")

@@ -23,13 +23,13 @@ class LammpsEngine(Engine):
     typed_e, version = TYPED_E, LAMMPS_VERSION
     runner_module = "restitution.dem.engines.lammps.run"
     deck_module = "restitution.dem.engines.lammps.deck"
-    scene_options = {"normal": None, "damping": "choose", "limit_damping": False}
     scene_option_schema = {
         "normal": {"description": "LAMMPS pair_style granular normal model", "enum": list(_STIFFNESS)},
         "damping": {"description": "LAMMPS damping model, or choose (the cheapest that meets the tolerance)",
-                    "enum": ["choose", "coeff_restitution", "tsuji", "viscoelastic", "velocity", "mass_velocity"]},
+                    "enum": ["choose", "coeff_restitution", "tsuji", "viscoelastic", "velocity", "mass_velocity"],
+                    "default": "choose"},
         "limit_damping": {"description": "LAMMPS limit_damping keyword (contact ends where the normal force "
-                                         "vanishes)", "type": "boolean"},
+                                         "vanishes)", "type": "boolean", "default": False},
     }
 
     def contact(self, pair, **setting):

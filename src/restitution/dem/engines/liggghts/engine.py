@@ -22,11 +22,10 @@ class LiggghtsEngine(Engine):
     typed_e, version = TYPED_E, LIGGGHTS_VERSION
     runner_module = "restitution.dem.engines.liggghts.run"
     deck_module = "restitution.dem.engines.liggghts.deck"
-    scene_options = {"model": "hertz", "limitForce": False}
     scene_option_schema = {
-        "model": {"description": "LIGGGHTS pair_style gran model", "enum": ["hertz"]},
+        "model": {"description": "LIGGGHTS pair_style gran model", "enum": ["hertz"], "default": "hertz"},
         "limitForce": {"description": "LIGGGHTS limitForce (on - contact ends where the normal force vanishes)",
-                       "type": "boolean"},
+                       "type": "boolean", "default": False},
     }
 
     def contact(self, pair, **setting):
