@@ -149,6 +149,12 @@ def test_changing_d1_reruns_what_depends_on_omega_only(built, tmp_path):
     # a change in the series module reruns no integration
     ("core/series.py", {"series", "fig1_forward", "fig2_inverse", "connection_readings", "values"},
      ("reference_trajectories", "reference_eps_curve", "reference_accuracy", "fig3_phase")),
+    # a registered rung: every rule whose script asks the ladder, which reads the rung registry
+    ("fast/rungs/integrator.py", {"typed_e", "dem_study"}, ("series", "reference_eps_curve", "values")),
+    # a registered engine: the typed-e table reads the engine registry; the LAMMPS study does not
+    ("dem/engines/yade/contact.py", {"typed_e"}, ("dem_study", "series")),
+    # the number formatting: every rule that prints numbers through it, the study's too
+    ("../restitution_workflow/latex.py", {"dem_study", "provenance", "values"}, ("series", "reference_eps_curve")),
 ])
 def test_a_change_in_a_module_reruns_only_the_rules_that_import_it(module, reruns, untouched, built, tmp_path):
     tree = copy_built(built, tmp_path / "t")

@@ -10,7 +10,7 @@ rule bench_section:
     """Table and Pareto plot (max relative error against cost) of the main variant's methods."""
     input:
         table="benchmarks/recorded/speed_accuracy.csv",
-        code=code("bench_section.py") + ["src/restitution_workflow/latex.py"],
+        code=code("bench_section.py"),
     output:
         table=BENCH_OUTPUTS[0],
         pdf=BENCH_OUTPUTS[1],

@@ -7,7 +7,6 @@ rule uniform_form:
     eps(g) from the force rule's."""
     input:
         curve=rules.eps_compare.output.curves,
-        src=lib("core.uniform", "fast.uniform_build"),
         code=code("uniform_form.py"),
     output:
         json="results/{variant}/closed_form/form.json",
@@ -31,8 +30,7 @@ rule closed_form_section:
         overlap_forms=expand("results/{variant}/closed_form/form_overlap.json", variant=list(VARIANTS)),
         overlap_errors=expand("results/{variant}/closed_form/errors_overlap.csv", variant=list(VARIANTS)),
         curve=f"results/{MAIN}/closed_form/eps_g.csv",
-        src=lib("core.asymptotics", "core.uniform", "core.collision", "core.energy"),
-        code=code("closed_form_section.py") + ["src/restitution_workflow/latex.py"],
+        code=code("closed_form_section.py"),
     output:
         tex="results/paper/closed_form.tex",
         values="results/paper/closed_form_values.tex",

@@ -1,7 +1,6 @@
 # Helpers shared by every stage: configuration (validated, one-line errors), variants,
 # the package sources each rule imports, and the final outputs (derived from the rules).
 
-import ast
 import functools
 import itertools
 import os
@@ -16,6 +15,7 @@ ROOT = Path(workflow.basedir)
 
 from restitution_workflow.provenance import build_commit, versions
 from restitution_workflow.config import ConfigError, check_config  # src/restitution_workflow/config.py
+from restitution_workflow.sources import script_sources
 
 # Every generated file carries this date instead of "now" (the Makefile exports the same value).
 os.environ.setdefault("SOURCE_DATE_EPOCH", "1700000000")
@@ -75,78 +75,6 @@ def is_paper_case(name):
     return _exponents_of(name) == PAPER_EXPONENTS
 
 
-# ---------------------------------------------------------------------------------------------
-# Package sources a script imports: declared as inputs so a physics change reruns exactly the
-# rules that use it (Snakemake does not follow a script's imports by itself).
-# ---------------------------------------------------------------------------------------------
-
-PKG = ROOT / "src" / "restitution"
-
-
-def _module_file(dotted):
-    """src/restitution file of `core.collision` (a module) or `core` (a package), or None."""
-    base = PKG.joinpath(*dotted.split(".")) if dotted else PKG
-    for f in (base.with_suffix(".py"), base / "__init__.py"):
-        if f.exists():
-            return f
-    return None
-
-
-def _statements(body):
-    """Every statement of a module, nested ones (in functions, classes, if/try/with) included: an
-    import is a statement, so expressions need not be walked (ast.walk over every node took most
-    of the Snakefile's load time, which every run, dry run and cluster job step pays)."""
-    for node in body:
-        yield node
-        for field in ("body", "orelse", "finalbody", "handlers"):
-            yield from _statements(getattr(node, field, ()))
-        for case in getattr(node, "cases", ()):
-            yield from _statements(case.body)
-
-
-@functools.cache   # every rule asks again; parsing each module once keeps a no-op run fast
-def _imports_of(dotted):
-    """Dotted names (below restitution) of the package modules that module `dotted` imports."""
-    f = _module_file(dotted)
-    here = [p for p in dotted.split(".") if p] + (["__init__"] if f.name == "__init__.py" else [])
-    found = set()
-    for node in _statements(ast.parse(f.read_text(), filename=str(f)).body):
-        if isinstance(node, ast.ImportFrom):
-            if node.level:
-                base = here[:len(here) - node.level]
-            elif node.module and (node.module + ".").startswith("restitution."):
-                base = []
-            else:
-                continue
-            mod = [part for part in (node.module or "").split(".") if part]
-            if not node.level:
-                mod = mod[1:]   # drop "restitution"
-            found.add(".".join(base + mod))
-            found.update(".".join(base + mod + [a.name]) for a in node.names)
-        elif isinstance(node, ast.Import):
-            found.update(a.name.split(".", 1)[1] for a in node.names if a.name.startswith("restitution."))
-    return {m for m in found if m and _module_file(m)}
-
-
-def lib(*modules):
-    """src/restitution files the given modules ("core.collision", ...) need: their import closure,
-    and the __init__.py of each package on the way. Those run on import, but only to import
-    names: their own imports are not followed, so a change to the series does not rerun the
-    integrations because restitution/__init__.py imports both."""
-    seen, todo = set(), list(modules)
-    while todo:
-        m = todo.pop()
-        if m in seen:
-            continue
-        seen.add(m)
-        f = _module_file(m)
-        if f is not None and f.name != "__init__.py":
-            todo.extend(_imports_of(m) - seen)
-    packages = {".".join(m.split(".")[:i]) for m in seen for i in range(len(m.split(".")))}
-    files = {_module_file(m) or PKG.joinpath(*m.split(".")).with_suffix(".py") for m in seen | packages}
-    return sorted(str(f.relative_to(ROOT)) for f in files)
-
-
 BUILD_COMMIT, BUILD_VERSIONS = build_commit(ROOT), versions()
 
 
@@ -160,9 +88,11 @@ def script_file(name):
 
 
 def code(name):
-    """... and the same file as an input, so touching it reruns the rule (and its dependants),
-    with the helpers every script writes through (restitution_workflow/pipeline.py imports its atomic.py)."""
-    return [f"workflow/scripts/{name}", "src/restitution_workflow/pipeline.py", "src/restitution_workflow/atomic.py"]
+    """... and the same file as an input, with every project module it runs (the closure of its
+    imports, restitution_workflow.sources; Snakemake does not follow a script's imports): a change
+    to any of them reruns the rule and its dependants, a change to any other module does not."""
+    script = ROOT / "workflow" / "scripts" / name
+    return [f"workflow/scripts/{name}"] + [str(f.relative_to(ROOT)) for f in script_sources(ROOT / "src", script)]
 
 
 # ---------------------------------------------------------------------------------------------

@@ -8,8 +8,7 @@ rule connection_readings:
     """c0-c2 from the paper's procedure, one row per reading (symbolic; the slow step)."""
     input:
         summary=rules.reference_trajectories.output.summary,
-        src=lib("audit.matching"),
-        code=code("connection_readings.py") + ["src/restitution_workflow/config.py", "src/restitution_workflow/latex.py"],
+        code=code("connection_readings.py"),
     output:
         json="results/{variant}/connection/readings.json",
         csv="results/{variant}/connection/readings.csv",
@@ -32,7 +31,6 @@ rule connection_fit:
     input:
         curve=rules.reference_eps_curve.output[0],
         summary=rules.reference_trajectories.output.summary,
-        src=lib("core.connection"),
         code=code("connection_fit.py"),
     output:
         json="results/{variant}/connection/fit.json",
@@ -53,8 +51,7 @@ rule eps_compare:
     input:
         curve=rules.reference_eps_curve.output[0],
         relations=relation_files,
-        src=lib("core.connection"),
-        code=code("eps_compare.py") + ["src/restitution_workflow/latex.py"],
+        code=code("eps_compare.py"),
     output:
         curves="results/{variant}/connection/eps_compare.csv",
         errors=report("results/{variant}/connection/eps_errors.csv", caption="../report/eps_errors.rst",
@@ -77,8 +74,7 @@ rule claims:
         fit=rules.connection_fit.output.json,
         curve=rules.reference_eps_curve.output[0],
         summary=rules.reference_trajectories.output.summary,
-        src=lib("audit.claims", "audit.claim_values"),
-        code=code("claims.py") + ["src/restitution_workflow/latex.py"],
+        code=code("claims.py"),
     output:
         csv=report("results/{variant}/claims.csv", caption="../report/claims.rst", category="Tables",
                    subcategory="{variant}"),

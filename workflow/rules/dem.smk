@@ -20,8 +20,6 @@ rule dem_study:
     """LAMMPS runs (three time steps each, extrapolated), the library's eps(v) for both rules, the
     calibration table, the section's numbers and its figure."""
     input:
-        src=lib("dem.calibrate", "dem.contact", "dem.engines.lammps.contact", "dem.engines.lammps.design",
-                "dem.engines.lammps.run", "dem.pair"),
         code=code("dem_study.py"),
     output:
         DEM_FILES,
@@ -36,8 +34,8 @@ rule dem_study:
 
 
 # The e a user types into each code against the eps the code really gives (issue 25): the library's
-# table (restitution.dem.typed_e_table), each row with the engine that confirms it; lib() does not
-# follow the registry's __init__, so the typed_e rule names every engine module the table reads.
+# table (restitution.dem.typed_e_table), each row with the engine that confirms it. The table reads the
+# engine registry, so every registered engine's modules are inputs (code() follows the registry).
 TYPED_E_FILES = ["results/dem/typed_e.csv", "results/dem/typed_e.tex", "results/dem/typed_e_values.tex"]
 
 
@@ -45,9 +43,7 @@ rule typed_e:
     """The typed-e table: the library's eps for each code and typed e, and each row's engine, the e
     values at which the engine tests run it and the agreement they demand."""
     input:
-        src=lib("dem.typed_e_table", "dem.engines.lammps.contact", "dem.engines.lammps.engine",
-                "dem.engines.liggghts.engine", "dem.engines.yade.engine", "dem.engines.mercurydpm.engine"),
-        code=code("typed_e.py") + ["src/restitution_workflow/latex.py"],
+        code=code("typed_e.py"),
     output:
         csv=TYPED_E_FILES[0],
         table=TYPED_E_FILES[1],
@@ -88,8 +84,7 @@ rule overlap_limit:
     """eps ~ C Omega^k under the overlap rule: the law, its checks against the reference and mpmath
     integrators, its table, figure and the numbers the manuscript prints."""
     input:
-        src=lib("core.overlap_limit", "core.collision", "core.highprec", "fast.master", "fast.rung"),
-        code=code("overlap_limit.py") + ["src/restitution_workflow/latex.py"],
+        code=code("overlap_limit.py"),
     output:
         csv=OVERLAP_FILES[0],
         curves=OVERLAP_FILES[1],

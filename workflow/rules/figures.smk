@@ -8,7 +8,6 @@ rule fig1_forward:
     input:
         trajectory=rules.reference_trajectories.output.forward,
         summary=rules.reference_trajectories.output.summary,
-        src=lib("core.series"),
         code=code("fig1_forward.py"),
     output:
         pdf="results/{variant}/figures/fig1.pdf",
@@ -30,7 +29,6 @@ rule fig2_inverse:
     input:
         trajectory=rules.reference_trajectories.output.inverse,
         summary=rules.reference_trajectories.output.summary,
-        src=lib("core.series"),
         code=code("fig2_inverse.py"),
     output:
         pdf="results/{variant}/figures/fig2.pdf",
@@ -50,7 +48,6 @@ rule fig2_inverse:
 rule fig3_phase:
     """Phase diagram (x, x') of the damped-only forward and inverse motions (Omega = 0)."""
     input:
-        src=lib("core.damped"),
         code=code("fig3_phase.py"),
     output:
         pdf="results/{variant}/figures/fig3.pdf",
@@ -68,7 +65,6 @@ rule fig3_phase:
 rule printed_relation:
     """The paper's Omega~ = c0 + c1 Omega + c2 Omega^2 with its printed c's, for figure 4."""
     input:
-        src=lib("audit.printed"),
         code=code("printed_relation.py"),
     output:
         "results/{variant}/relations/printed.json",

@@ -111,8 +111,7 @@ rule exact_family:
     (gamma + 1) Omega under both end rules, and the overlap rule's sticking threshold (the article's
     section on it prints the measured agreement)."""
     input:
-        src=lib("core.collision", "core.dashpot"),
-        code=code("exact_family.py") + ["src/restitution_workflow/latex.py"],
+        code=code("exact_family.py"),
     output:
         values="results/paper/exact_family_values.tex",
         table="results/paper/exact_family.csv",

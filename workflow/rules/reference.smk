@@ -6,7 +6,6 @@
 rule reference_trajectories:
     """Forward collision at g_figure, and its time-reversed, rescaled image (the inverse collision)."""
     input:
-        src=lib("core.collision", "core.model", "core.connection"),
         code=code("reference_trajectories.py"),
     output:
         forward="results/{variant}/reference/forward.csv",
@@ -29,7 +28,6 @@ rule reference_trajectories:
 rule reference_eps_curve:
     """eps, tau_b, tau_c, ... over the impact speeds of figure 4."""
     input:
-        src=lib("core.collision", "core.model"),
         code=code("reference_eps_curve.py"),
     output:
         "results/{variant}/reference/eps_curve.csv",
@@ -48,7 +46,6 @@ rule reference_eps_curve:
 rule reference_accuracy:
     """How eps, tau_b, tau_c at g_figure move with the solver tolerance (the speed/accuracy trade)."""
     input:
-        src=lib("core.collision", "core.model"),
         code=code("reference_accuracy.py"),
     output:
         "results/{variant}/reference/accuracy.csv",

@@ -40,7 +40,6 @@ rule scene_answer:
     """`restitution scene`'s answer: the JSON, the input lines and the text table."""
     input:
         scene=scene_source,
-        src=lib("dem.scene", "cli"),
         code=code("scene_answer.py"),
     output:
         json=SCENE_OUT + "scene.json",

@@ -5,7 +5,6 @@
 
 rule series:
     input:
-        src=lib("core.series"),
         code=code("series.py"),
     output:
         forward="results/{variant}/series/forward.json",
@@ -24,7 +23,6 @@ rule series_table:
     input:
         forward=rules.series.output.forward,
         inverse=rules.series.output.inverse,
-        src=lib("audit.printed"),
         code=code("series_table.py"),
     output:
         table="results/{variant}/series/table.tex",

@@ -12,8 +12,6 @@ from restitution_workflow.config import atlas_settings as _atlas_settings
 # config["stability"] was checked with the rest of the config (common.smk): schema and AtlasSpec.
 STABILITY_SPEC = _AtlasSpec.from_config(_atlas_settings(config)).as_dict()
 STABILITY_SHARDS = config["stability"]["shards"]
-# Modules the atlas imports (collision, highprec, asymptotics, dashpot through stability).
-STABILITY_SRC = lib("audit.stability")
 
 # the shards a build makes (their outputs join `all` like every rule's)
 WILDCARD_VALUES.update(shard=lambda: range(STABILITY_SHARDS), shards=lambda: [STABILITY_SHARDS])
@@ -22,7 +20,6 @@ WILDCARD_VALUES.update(shard=lambda: range(STABILITY_SHARDS), shards=lambda: [ST
 rule stability_shard:
     """One shard of the atlas: collide (and the comparisons) at its share of the points."""
     input:
-        src=STABILITY_SRC,
         code=code("stability_atlas.py"),
     output:
         "results/stability/shards/{shard}-of-{shards}.csv",
@@ -45,8 +42,7 @@ rule stability_atlas:
     input:
         shards=expand("results/stability/shards/{shard}-of-{shards}.csv",
                       shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
-        src=lib("audit.stability", "audit.stability_checks"),
-        code=code("stability_atlas.py") + ["src/restitution_workflow/latex.py"],
+        code=code("stability_atlas.py"),
     output:
         atlas="results/stability/atlas.csv",
         summary="results/stability/summary.csv",
@@ -66,7 +62,6 @@ rule fig_stability:
     """The atlas figure: eps, 1 - eps, tau_c against Omega with the limits, and the measured errors."""
     input:
         atlas=rules.stability_atlas.output.atlas,
-        src=lib("core.asymptotics"),
         code=code("fig_stability.py"),
     output:
         pdf="results/stability/atlas.pdf",
@@ -89,7 +84,6 @@ _ATLAS_PAIRS = [list(p) for p in _AtlasSpec.from_config(_atlas_settings(config))
 rule uniform_shard:
     """The uniform forms (both end rules, where they exist) of one share of the atlas's pairs."""
     input:
-        src=lib("fast.uniform_build"),
         code=code("uniform_atlas.py"),
     output:
         "results/stability/uniform/{shard}-of-{shards}.json",
@@ -111,8 +105,7 @@ rule uniform_atlas:
     input:
         shards=expand("results/stability/uniform/{shard}-of-{shards}.json",
                       shard=range(STABILITY_SHARDS), shards=STABILITY_SHARDS),
-        src=lib("core.uniform"),
-        code=code("uniform_atlas.py") + ["src/restitution_workflow/latex.py"],
+        code=code("uniform_atlas.py"),
     output:
         csv="results/stability/uniform_forms.csv",
         tex="results/stability/uniform_forms.tex",

@@ -23,8 +23,7 @@ rule values:
         readings=rules.connection_readings.output.json,
         fit=rules.connection_fit.output.json,
         errors=rules.eps_compare.output.errors,
-        src=lib("core.model", "audit.printed", "audit.claims", "audit.readings"),
-        code=code("values.py") + ["src/restitution_workflow/latex.py"],
+        code=code("values.py"),
     output:
         tex="results/{variant}/values/values.tex",
         json="results/{variant}/values/values.json",

@@ -10,7 +10,6 @@ rule validation:
     g-independence where it must hold."""
     input:
         curve=rules.reference_eps_curve.output[0],
-        src=lib("core.collision", "core.dashpot", "core.exponents") + lib("core.asymptotics", "fast.calibration"),
         code=code("validation.py"),
     output:
         json="results/{variant}/validation/validation.json",
@@ -33,7 +32,7 @@ rule variant_section:
         values="results/{variant}/values/values.json",
         validation=rules.validation.output.json,
         form="results/{variant}/closed_form/form.json",
-        code=code("variant_section.py") + ["src/restitution_workflow/latex.py"],
+        code=code("variant_section.py"),
     output:
         "results/{variant}/section.tex",
     log:
@@ -87,7 +86,7 @@ rule variants_tex:
     input:
         sections=expand("results/{variant}/section.tex", variant=EXTRA),
         validation=expand("results/{variant}/validation/validation.json", variant=list(VARIANTS)),
-        code=code("variants_tex.py") + ["src/restitution_workflow/latex.py"],
+        code=code("variants_tex.py"),
     output:
         sections="results/paper/variants.tex",
         validation="results/paper/validation.tex",

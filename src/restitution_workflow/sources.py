@@ -1,0 +1,194 @@
+"""The source files a workflow script runs: the closure of its imports within the project's two
+packages, declared as the rule's inputs, so that a change to any module a script runs reruns the
+rule, and a change to any other module does not. Snakemake does not follow a script's imports.
+
+The walk reads the files (``ast``), it imports nothing, and it errs on the side of rerunning: an
+import inside a function counts. Two rules keep it complete and still narrow:
+
+- A package's ``__init__`` is followed where a name is imported *from* it (``from .rungs import
+  ladder_rungs``, ``from .engines import ENGINES``). The entries of a registry are then inputs of
+  every rule that reads the registry; listing them by hand went stale when an entry was added.
+- The packages on the way to a module (``restitution`` and ``restitution.core`` for
+  ``restitution.core.series``) are listed, because they run on import, but their own imports are
+  not followed. ``restitution/__init__.py`` imports the series and the integrators for the public
+  API, and a change to the series must not rerun the integrations.
+"""
+
+from __future__ import annotations
+
+import ast
+import functools
+from pathlib import Path
+
+__all__ = ["PACKAGES", "module_file", "imports_of", "closure", "script_sources"]
+
+#: The top-level packages under ``src/`` whose modules count as sources.
+PACKAGES = ("restitution", "restitution_workflow")
+
+
+def module_file(src: Path, dotted: str) -> Path | None:
+    """The file of a module or package of the project, or None.
+
+    Parameters
+    ----------
+    src : Path
+        The directory holding the packages (the repository's ``src``).
+    dotted : str
+        A dotted name, such as ``"restitution.core.series"`` or ``"restitution.core"``.
+
+    Returns
+    -------
+    Path or None
+        ``.../core/series.py``, or a package's ``__init__.py``; None where neither exists.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> src = Path(__file__).resolve().parents[1]
+    >>> module_file(src, "restitution.core").name, module_file(src, "restitution.core.nothing")
+    ('__init__.py', None)
+    """
+    base = src.joinpath(*dotted.split("."))
+    for f in (base.with_suffix(".py"), base / "__init__.py"):
+        if f.is_file():
+            return f
+    return None
+
+
+def _statements(body):
+    """Every statement, nested ones (in functions, classes, if/try/with/match) included. Imports are
+    statements, so expressions need not be walked: ast.walk over every node took most of the
+    Snakefile's load time, which every run, dry run and cluster job step pays."""
+    for node in body:
+        yield node
+        for field in ("body", "orelse", "finalbody", "handlers"):
+            yield from _statements(getattr(node, field, ()))
+        for case in getattr(node, "cases", ()):
+            yield from _statements(case.body)
+
+
+def _imports_in(src: Path, path: Path, dotted: str | None) -> frozenset[str]:
+    """Project modules and packages the file imports; ``dotted`` is its own name (None for a
+    script, which belongs to no package and so has no relative imports)."""
+    here = dotted.split(".") + (["__init__"] if path.name == "__init__.py" else []) if dotted else []
+    found = set()
+    for node in _statements(ast.parse(path.read_text(), filename=str(path)).body):
+        if isinstance(node, ast.ImportFrom):
+            base = here[:len(here) - node.level] if node.level else []
+            target = base + [p for p in (node.module or "").split(".") if p]
+            if not target or target[0] not in PACKAGES:
+                continue
+            found.add(".".join(target))
+            found.update(".".join(target + [a.name]) for a in node.names)
+        elif isinstance(node, ast.Import):
+            found.update(a.name for a in node.names if a.name.split(".")[0] in PACKAGES)
+    return frozenset(m for m in found if module_file(src, m) is not None)
+
+
+@functools.cache
+def imports_of(src: Path, dotted: str) -> frozenset[str]:
+    """The project's modules and packages that module ``dotted`` imports, anywhere in its file.
+
+    Parameters
+    ----------
+    src : Path
+        The directory holding the packages.
+    dotted : str
+        The importing module.
+
+    Returns
+    -------
+    frozenset of str
+        Dotted names. ``from .engines import ENGINES`` gives the package ``...engines``;
+        ``from .core import conditioning`` gives both ``...core`` and ``...core.conditioning``.
+
+    Raises
+    ------
+    FileNotFoundError
+        If ``dotted`` is not a module of the project.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> src = Path(__file__).resolve().parents[1]
+    >>> "restitution.dem.engines" in imports_of(src, "restitution.dem.typed_e_table")
+    True
+    """
+    f = module_file(src, dotted)
+    if f is None:
+        raise FileNotFoundError(f"{dotted}: no such module under {src}")
+    return _imports_in(src, f, dotted)
+
+
+def closure(src: Path, modules) -> list[Path]:
+    """The files the given modules run: their imports' closure, and each package on the way.
+
+    Parameters
+    ----------
+    src : Path
+        The directory holding the packages.
+    modules : iterable of str
+        Dotted names of modules or packages.
+
+    Returns
+    -------
+    list of Path
+        Sorted. A package's ``__init__.py`` is followed only where it is imported from (see the
+        module docstring).
+
+    Raises
+    ------
+    FileNotFoundError
+        If a name is not a module of the project.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> src = Path(__file__).resolve().parents[1]
+    >>> files = {str(f.relative_to(src)) for f in closure(src, ["restitution.dem.typed_e_table"])}
+    >>> "restitution/dem/engines/yade/engine.py" in files     # a registry's entry
+    True
+    >>> "restitution/core/series.py" in {str(f.relative_to(src)) for f in
+    ...                                  closure(src, ["restitution.core.collision"])}
+    False
+    """
+    seen, todo = set(), list(modules)
+    while todo:
+        m = todo.pop()
+        if m not in seen:
+            seen.add(m)
+            todo.extend(imports_of(src, m) - seen)
+    parts = [m.split(".") for m in seen]
+    on_the_way = {".".join(p[:i]) for p in parts for i in range(1, len(p))}
+    return sorted({module_file(src, m) for m in seen | on_the_way})
+
+
+def script_sources(src: Path, script: Path) -> list[Path]:
+    """The project files a workflow script runs (the closure of its own imports).
+
+    Parameters
+    ----------
+    src : Path
+        The directory holding the packages.
+    script : Path
+        A script outside the packages (``workflow/scripts/*.py``).
+
+    Returns
+    -------
+    list of Path
+        Sorted; the script itself is not among them.
+
+    Raises
+    ------
+    FileNotFoundError
+        If the script does not exist.
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> root = Path(__file__).resolve().parents[2]
+    >>> files = script_sources(root / "src", root / "workflow" / "scripts" / "typed_e.py")
+    >>> sorted(f.name for f in files if f.parent.name == "restitution_workflow")
+    ['__init__.py', 'atomic.py', 'latex.py', 'pipeline.py']
+    """
+    return closure(src, _imports_in(src, script, None))
