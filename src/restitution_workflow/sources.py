@@ -3,7 +3,9 @@ packages, declared as the rule's inputs, so that a change to any module a script
 rule, and a change to any other module does not. Snakemake does not follow a script's imports.
 
 The walk reads the files (``ast``), it imports nothing, and it errs on the side of rerunning: an
-import inside a function counts. Two rules keep it complete and still narrow:
+import inside a function counts, and so does a module named in a string assigned to a name (an
+engine's ``deck_module = "restitution.dem.engines.lammps.deck"``, imported by name on first use).
+Two rules keep it complete and still narrow:
 
 - A package's ``__init__`` is followed where a name is imported *from* it (``from .rungs import
   ladder_rungs``, ``from .engines import ENGINES``). The entries of a registry are then inputs of
@@ -82,6 +84,10 @@ def _imports_in(src: Path, path: Path, dotted: str | None) -> frozenset[str]:
             found.update(".".join(target + [a.name]) for a in node.names)
         elif isinstance(node, ast.Import):
             found.update(a.name for a in node.names if a.name.split(".")[0] in PACKAGES)
+        elif isinstance(node, (ast.Assign, ast.AnnAssign)) and isinstance(node.value, ast.Constant) \
+                and isinstance(node.value.value, str) and node.value.value.split(".")[0] in PACKAGES:
+            # a module named to be imported on first use (an engine's deck_module = "restitution....")
+            found.add(node.value.value)
     return frozenset(m for m in found if module_file(src, m) is not None)
 
 

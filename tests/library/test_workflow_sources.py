@@ -70,6 +70,12 @@ def test_an_import_inside_a_function_counts(toy):
     assert "restitution/core/a.py" in _names(toy, closure(toy, ["restitution.core.c"]))
 
 
+def test_a_module_named_for_a_later_import_counts(toy):
+    (toy / "restitution/late.py").write_text('class E:\n    runner_module = "restitution.core.b"\n'
+                                             'NOT_A_MODULE = "restitution.core.nothing"\n')
+    assert imports_of(toy, "restitution.late") == {"restitution.core.b"}
+
+
 def test_a_script_brings_its_helpers_and_their_imports(toy, tmp_path):
     script = tmp_path / "script.py"
     script.write_text("import numpy\nfrom restitution_workflow.helpers import x\n"
