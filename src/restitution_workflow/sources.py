@@ -85,8 +85,10 @@ def _imports_in(src: Path, path: Path, dotted: str | None) -> frozenset[str]:
         elif isinstance(node, ast.Import):
             found.update(a.name for a in node.names if a.name.split(".")[0] in PACKAGES)
         elif isinstance(node, (ast.Assign, ast.AnnAssign)) and isinstance(node.value, ast.Constant) \
-                and isinstance(node.value.value, str) and node.value.value.split(".")[0] in PACKAGES:
-            # a module named to be imported on first use (an engine's deck_module = "restitution....")
+                and isinstance(node.value.value, str) and "." in node.value.value \
+                and node.value.value.split(".")[0] in PACKAGES:
+            # a module named to be imported on first use (an engine's deck_module = "restitution....");
+            # a bare package name ("restitution", as a distribution's name) is no such module
             found.add(node.value.value)
     return frozenset(m for m in found if module_file(src, m) is not None)
 

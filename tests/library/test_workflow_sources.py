@@ -72,7 +72,8 @@ def test_an_import_inside_a_function_counts(toy):
 
 def test_a_module_named_for_a_later_import_counts(toy):
     (toy / "restitution/late.py").write_text('class E:\n    runner_module = "restitution.core.b"\n'
-                                             'NOT_A_MODULE = "restitution.core.nothing"\n')
+                                             'NOT_A_MODULE = "restitution.core.nothing"\n'
+                                             'DISTRIBUTION = "restitution"\n')
     assert imports_of(toy, "restitution.late") == {"restitution.core.b"}
 
 
