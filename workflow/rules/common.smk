@@ -3,6 +3,7 @@
 
 import functools
 import itertools
+import json
 import os
 import re
 import shlex
@@ -87,12 +88,19 @@ def script_file(name):
     return f"../scripts/{name}"
 
 
+#: The Python and package versions that compute the numbers (rule software), read by every script's
+#: rule through code(): an upgrade reruns every job, so no output computed with the old versions is
+#: kept beside a provenance section that names the new ones.
+SOFTWARE = "results/paper/software.json"
+
+
 def code(name):
     """... and the same file as an input, with every project module it runs (the closure of its
     imports, restitution_workflow.sources; Snakemake does not follow a script's imports): a change
-    to any of them reruns the rule and its dependants, a change to any other module does not."""
+    to any of them reruns the rule and its dependants, a change to any other module does not.
+    And the software versions (SOFTWARE)."""
     script = ROOT / "workflow" / "scripts" / name
-    return [f"workflow/scripts/{name}"] + [str(f.relative_to(ROOT)) for f in script_sources(ROOT / "src", script)]
+    return [f"workflow/scripts/{name}", SOFTWARE] + [str(f.relative_to(ROOT)) for f in script_sources(ROOT / "src", script)]
 
 
 # ---------------------------------------------------------------------------------------------

@@ -17,15 +17,29 @@ rule manuscript_inputs:
         script_file("manuscript_inputs.py")
 
 
+rule software:
+    """The versions of Python and of the packages that compute and typeset (a parameter: an upgrade
+    rewrites the file, and every script's rule reads it)."""
+    output:
+        SOFTWARE,
+    params:
+        versions=json.dumps(BUILD_VERSIONS, indent=2),
+    log:
+        "logs/software.log",
+    shell:
+        "printf '%s\\n' {params.versions:q} | {ATOMIC} write {output:q} 2> {log:q}"
+
+
 rule provenance:
-    """The commit and software versions the manuscript names (parameters: a change reruns it)."""
+    """The commit (a parameter: a new one reruns this rule alone) and the software versions the
+    manuscript names."""
     input:
         code=code("provenance.py"),
+        software=SOFTWARE,
     output:
         "results/paper/provenance.tex",
     params:
         commit=BUILD_COMMIT,
-        versions=BUILD_VERSIONS,
     log:
         "logs/provenance.log",
     script:
