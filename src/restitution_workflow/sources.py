@@ -72,7 +72,11 @@ def _statements(body):
 def _imports_in(src: Path, path: Path, dotted: str | None) -> frozenset[str]:
     """Project modules and packages the file imports; ``dotted`` is its own name (None for a
     script, which belongs to no package and so has no relative imports)."""
-    here = dotted.split(".") + (["__init__"] if path.name == "__init__.py" else []) if dotted else []
+    # the module's own name, with a package's __init__ one level down, so that "from . import x"
+    # (level 1) drops exactly the last part
+    here = []
+    if dotted:
+        here = dotted.split(".") + (["__init__"] if path.name == "__init__.py" else [])
     found = set()
     for node in _statements(ast.parse(path.read_text(), filename=str(path)).body):
         if isinstance(node, ast.ImportFrom):
