@@ -123,9 +123,14 @@ def _integrate(fun, span, y0, *, rtol, atol, events=(), jac=None, stiff=False, i
         # large before the error estimate sees the curvature further out; capping them keeps the
         # global error near rtol for p >= 3 at no extra cost.
         kwargs["max_step"] = abs(span[1] - span[0]) / U_STEPS_MIN
-    sol = solve_ivp(fun, span, np.asarray(y0, float), rtol=max(rtol, SOLVER_RTOL_FLOOR),
-                    atol=np.asarray(atol, float), events=list(events) or None, dense_output=True,
-                    **kwargs)
+    # A trial stage of a long step may land at x < 0 (only ever past the x_switch event). Its
+    # fractional powers are then NaN, which makes solve_ivp reject and shrink the step: what we
+    # want, so the warning is noise. Set once here, not in each call of the right-hand side, where
+    # entering the context cost a third of the function's time.
+    with np.errstate(invalid="ignore"):
+        sol = solve_ivp(fun, span, np.asarray(y0, float), rtol=max(rtol, SOLVER_RTOL_FLOOR),
+                        atol=np.asarray(atol, float), events=list(events) or None, dense_output=True,
+                        **kwargs)
     if sol.status < 0:
         raise IntegrationError(f"solve_ivp failed on {span}: {sol.message}")
     return sol

@@ -6,17 +6,11 @@ x = 0), and in the force form f = Omega x^(alpha-gamma) + v that keeps a tiny fo
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
 from .exponents import Exponents
-
-
-def _overshoot_is_nan():
-    """A trial stage of a long step may land at x < 0 (only ever past the x_switch event). Its
-    fractional powers are then NaN, which makes solve_ivp reject and shrink the step: exactly what
-    we want, so the warning is noise."""
-    return np.errstate(invalid="ignore")
 
 
 @dataclass(frozen=True)
@@ -33,15 +27,16 @@ class Law:
     def of(cls, ex: Exponents, omega: float, sign: int) -> "Law":
         return cls(omega, ex.p, ex.q_alpha, ex.q_gamma, sign)
 
-    @property
+    # Cached: the right-hand sides below read them on every call, millions of times per build.
+    @cached_property
     def alpha(self) -> float:
         return self.qa / self.p
 
-    @property
+    @cached_property
     def gamma(self) -> float:
         return self.qg / self.p
 
-    @property
+    @cached_property
     def k(self) -> int:
         """p (alpha - gamma): the power of u in Omega u^k + v, the force up to a positive factor."""
         return self.qa - self.qg
@@ -68,8 +63,7 @@ class Law:
     # -- right-hand side in tau, state (x, v)
     def dtau_rhs(self, tau, y):
         x, v = y
-        with _overshoot_is_nan():
-            return np.array([v, -self.omega * x ** self.alpha - self.sign * x ** self.gamma * v])
+        return np.array([v, -self.omega * x ** self.alpha - self.sign * x ** self.gamma * v])
 
 
 @dataclass(frozen=True)
@@ -84,15 +78,15 @@ class ForceForm:
 
     law: Law
 
-    @property
+    @cached_property
     def a(self) -> int:
         return max(self.law.k, 0)
 
-    @property
+    @cached_property
     def m(self) -> int:
         return max(-self.law.k, 0)
 
-    @property
+    @cached_property
     def n(self) -> int:
         return min(self.law.qa, self.law.qg)
 
@@ -100,20 +94,18 @@ class ForceForm:
     def dtau_rhs(self, tau, y):
         x, v, f = y
         L = self.law
-        with _overshoot_is_nan():
-            xg = x ** L.gamma
-            drift = L.omega * (L.alpha - L.gamma) * x ** (L.alpha - L.gamma - 1.0) * v
+        xg = x ** L.gamma
+        drift = L.omega * (L.alpha - L.gamma) * x ** (L.alpha - L.gamma - 1.0) * v
         return np.array([v, -xg * f, -xg * f + drift])
 
     def dtau_jac(self, tau, y):
         x, v, f = y
         L = self.law
         d = L.alpha - L.gamma
-        with _overshoot_is_nan():
-            xg = x ** L.gamma
-            dxg = L.gamma * x ** (L.gamma - 1.0) if L.gamma else 0.0
-            ddrift_dx = L.omega * d * (d - 1.0) * x ** (d - 2.0) * v
-            ddrift_dv = L.omega * d * x ** (d - 1.0)
+        xg = x ** L.gamma
+        dxg = L.gamma * x ** (L.gamma - 1.0) if L.gamma else 0.0
+        ddrift_dx = L.omega * d * (d - 1.0) * x ** (d - 2.0) * v
+        ddrift_dv = L.omega * d * x ** (d - 1.0)
         return np.array([
             [0.0, 1.0, 0.0],
             [-dxg * f, 0.0, -xg],
