@@ -460,6 +460,22 @@ def test_the_mpmath_cost_grows_at_tiny_omega_so_the_chooser_builds_instead(empty
     assert at_one.cost < 1.0
 
 
+def test_no_build_is_made_for_a_tolerance_below_what_it_can_state(empty_cache):
+    """A uniform form's stated bound adds its references' accuracy (1e-11) to what it measured. Asked
+    for one eps at tol 1e-12 under the overlap rule, the chooser built the form (about 3 s) and then
+    answered with mpmath. The rung now quotes that floor, and the chooser builds only for a tolerance
+    the form could meet."""
+    from restitution.fast.calibration import UNIFORM_OVERLAP
+
+    lad = Ladder(("3/2", "1/2"))
+    for tol, pays in ((1e-12, False), (1e-9, True)):
+        quotes = lad.quotes(np.array([1e-4]), tol, end="overlap")
+        form = next(q for q in quotes if q.name == "closed-form")
+        assert form.needs_build == UNIFORM_OVERLAP and 0 < form.floor
+        # without the rungs that answer at once, as if nothing else met tol
+        assert (UNIFORM_OVERLAP in lad._building_pays([q for q in quotes if q.run is None], tol, 1)) == pays
+
+
 # ------------------------------------------------------------------------------- alpha < gamma
 @pytest.mark.slow   # the curve, scipy at Omega down to 1e-11 and mpmath: about 40 s a pair
 @pytest.mark.parametrize("alpha, gamma", [("1/2", "1"), ("1", "3/2")])

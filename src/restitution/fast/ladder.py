@@ -391,17 +391,18 @@ class Ladder:
                              f"smallest bound reached here is {bound:.3g} ({q.name}); ask for a larger tol")
 
     def _building_pays(self, quotes, tol: float, n: int) -> set[str]:
-        """The builds worth making: all the quoted ones when nothing else meets tol; otherwise those
-        whose cost plus their cheapest rung's undercuts the best rung that needs no build."""
+        """The builds worth making, among those a rung that can meet tol reads (Rung.floor): all of
+        them when nothing else meets tol; otherwise those whose cost plus their cheapest rung's
+        undercuts the best rung that needs no build."""
         plain = [q.cost for q in quotes if q.run is not None and q.bound <= tol]
-        pending = {q.needs_build for q in quotes if q.needs_build}
+        pending = {q.needs_build for q in quotes if q.needs_build and q.floor <= tol}
         if any(q.exact and q.run is not None and q.bound <= tol for q in quotes):
             return set()   # the exact rung answers whatever is built (Ladder.evaluate's order)
         if not plain:
             return pending
         best = min(plain)
         return {b for b in pending
-                if self._build_cost(b) + min(q.cost for q in quotes if q.needs_build == b) < best}
+                if self._build_cost(b) + min(q.cost for q in quotes if q.needs_build == b and q.floor <= tol) < best}
 
 
 # --------------------------------------------------------------------------------- the public call

@@ -8,6 +8,8 @@ A rung (:class:`Rung`) is one way to compute eps(Omega). It declares, for a :cla
   except one of ``ends = ("overlap",)``: the overlap rule's own numbers exist only where they differ);
 * ``outside(req)``: why the Omegas are outside its domain (None when inside);
 * ``needs(req)``: the build it reads (a key of the ladder's builds, e.g. "calibration"), or None;
+* ``floor(req)``: the smallest bound it can state once that build is made (0 when not known): the
+  chooser makes no build for a request whose tolerance is below the floor of every rung reading it;
 * ``cost`` (seconds per point) and ``price(req)`` (expected seconds for the request);
 * ``bound(req, built)``: its relative error bound over the request and the setting that meets it;
 * ``evaluate(req, built, setting, omega)``: eps;
@@ -110,6 +112,7 @@ class Quote:
     setting: str = ""
     reason: str = ""
     needs_build: str | None = None   # the build it waits for (not built yet)
+    floor: float = 0.0               # with needs_build: the smallest bound it can state once built
     run: Callable | None = None
     coefficients: dict | None = None
     widen: Callable | None = None   # eps -> factor on ``bound`` (None: the bound holds as quoted)
@@ -182,6 +185,9 @@ class Rung:
     def needs(self, req: Request) -> str | None:
         return None
 
+    def floor(self, req: Request) -> float:
+        return 0.0
+
     def price(self, req: Request) -> float:
         return self.cost * req.n
 
@@ -204,7 +210,7 @@ class Rung:
         need = self.needs(req)
         if need is not None and need not in req.builds:
             return Quote(self.name, math.nan, self.price(req), reason=f"needs the {need} (not built yet)",
-                         needs_build=need)
+                         needs_build=need, floor=self.floor(req))
         built = req.builds.get(need) if need is not None else None
         b, setting = self.bound(req, built)
         reason = "" if math.isfinite(b) else "no finite measured error over these Omegas"

@@ -32,7 +32,7 @@ from ..core.overlap_limit import overlap_limit
 from ..core.uniform import FORM_RANGE, UniformForm, fit_uniform, rel_errors
 from .master import reference_eps
 
-__all__ = ["build_uniform", "GRID_STEP", "N_TEST", "BOUND_FACTOR"]
+__all__ = ["build_uniform", "GRID_STEP", "N_TEST", "BOUND_FACTOR", "REFERENCE_ACCURACY"]
 
 GRID_STEP = 0.05
 N_TEST = 32

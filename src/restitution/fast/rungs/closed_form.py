@@ -11,6 +11,7 @@ import numpy as np
 
 from ...core import asymptotics as asy
 from ...core.uniform import FORM_RANGE
+from ..uniform_build import REFERENCE_ACCURACY
 from ..uniform_eval import uniform_eps
 from ..calibration import UNIFORM, UNIFORM_OVERLAP
 from ..rung import Request, Rung
@@ -79,6 +80,10 @@ class ClosedForm(Rung):
         if _kind(req) != "uniform":
             return None
         return UNIFORM_OVERLAP if req.end == "overlap" else UNIFORM
+
+    def floor(self, req):
+        # a form's stated bound adds its references' accuracy to what it measured (uniform_build)
+        return REFERENCE_ACCURACY
 
     def price(self, req):
         return COSTS[_kind(req)] * req.n
