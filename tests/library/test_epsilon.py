@@ -461,19 +461,21 @@ def test_the_mpmath_cost_grows_at_tiny_omega_so_the_chooser_builds_instead(empty
 
 
 def test_no_build_is_made_for_a_tolerance_below_what_it_can_state(empty_cache):
-    """A uniform form's stated bound adds its references' accuracy (1e-11) to what it measured. Asked
-    for one eps at tol 1e-12 under the overlap rule, the chooser built the form (about 3 s) and then
-    answered with mpmath. The rung now quotes that floor, and the chooser builds only for a tolerance
-    the form could meet."""
+    """A uniform form's stated bound adds its references' accuracy (1e-11) to what it measured, and
+    the overlap rule's master curve states at least twice its nodes' accuracy (1e-11 too). Asked for
+    one eps at tol 1e-12 under the overlap rule, the chooser built the form (about 3 s), or, once it
+    skipped that, the curve, and then answered with mpmath. The rungs now quote these floors, and the
+    chooser builds only for a tolerance the build's rung could meet."""
     from restitution.fast.calibration import UNIFORM_OVERLAP
+    from restitution.fast.rungs.overlap_master import OVERLAP_CURVE
 
     lad = Ladder(("3/2", "1/2"))
-    for tol, pays in ((1e-12, False), (1e-9, True)):
+    for tol, pays in ((1e-12, set()), (1e-9, {UNIFORM_OVERLAP, OVERLAP_CURVE})):
         quotes = lad.quotes(np.array([1e-4]), tol, end="overlap")
-        form = next(q for q in quotes if q.name == "closed-form")
-        assert form.needs_build == UNIFORM_OVERLAP and 0 < form.floor
+        needs = {q.needs_build: q.floor for q in quotes if q.needs_build}
+        assert set(needs) == {UNIFORM_OVERLAP, OVERLAP_CURVE} and min(needs.values()) > 0
         # without the rungs that answer at once, as if nothing else met tol
-        assert (UNIFORM_OVERLAP in lad._building_pays([q for q in quotes if q.run is None], tol, 1)) == pays
+        assert lad._building_pays([q for q in quotes if q.run is None], tol, 1) == pays
 
 
 # ------------------------------------------------------------------------------- alpha < gamma
