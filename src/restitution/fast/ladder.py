@@ -395,14 +395,15 @@ class Ladder:
         them when nothing else meets tol; otherwise those whose cost plus their cheapest rung's
         undercuts the best rung that needs no build."""
         plain = [q.cost for q in quotes if q.run is not None and q.bound <= tol]
-        pending = {q.needs_build for q in quotes if q.needs_build and q.floor <= tol}
+        waiting = [q for q in quotes if q.needs_build and q.floor <= tol]
+        pending = {q.needs_build for q in waiting}
         if any(q.exact and q.run is not None and q.bound <= tol for q in quotes):
             return set()   # the exact rung answers whatever is built (Ladder.evaluate's order)
         if not plain:
             return pending
         best = min(plain)
         return {b for b in pending
-                if self._build_cost(b) + min(q.cost for q in quotes if q.needs_build == b and q.floor <= tol) < best}
+                if self._build_cost(b) + min(q.cost for q in waiting if q.needs_build == b) < best}
 
 
 # --------------------------------------------------------------------------------- the public call

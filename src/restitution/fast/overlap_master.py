@@ -30,7 +30,7 @@ from .master import reference_eps
 from .panels import PanelRange, chebyshev_panels_eval
 from .rung import integrator_bound
 
-__all__ = ["OverlapCurve", "build_overlap_curve", "sticking_boundary", "OVERLAP_CURVE_VERSION",
+__all__ = ["OverlapCurve", "build_overlap_curve", "sticking_boundary", "least_bound", "OVERLAP_CURVE_VERSION",
            "OMEGA_LO", "OMEGA_HI", "NODE_RTOL"]
 
 OVERLAP_CURVE_VERSION = 3
@@ -99,8 +99,7 @@ class OverlapCurve(PanelRange):
         """Every panel agrees with a fresh integration at one point to its bound (plus the
         integrator's): the cache's digest catches a damaged file, this a wrong curve."""
         nodes = integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma), "overlap")
-        # the build never states less than twice the nodes' own accuracy: a smaller bound was edited
-        if not (np.all(np.isfinite(self.coef)) and 2.0 * nodes <= self.bound_inside < 1e-6):
+        if not (np.all(np.isfinite(self.coef)) and least_bound((self.alpha, self.gamma)) <= self.bound_inside < 1e-6):
             return False
         om = np.exp(self.s0 + (np.arange(self.coef.shape[0]) + SPOT_CHECK_AT) * self.width)
         ref = reference_eps((self.alpha, self.gamma), om, NODE_RTOL, "overlap")
@@ -118,6 +117,28 @@ class OverlapCurve(PanelRange):
         ex = as_exponents(d["alpha"], d["gamma"])
         return cls(ex.alpha, ex.gamma, float(d["s0"]), float(d["width"]), np.asarray(d["coef"], dtype=float),
                    float(d["bound_inside"]), float(d["stick_below"]), d.get("checks", {}))
+
+
+def least_bound(problem) -> float:
+    """The smallest bound a curve for these exponents states: twice its nodes' own accuracy (the
+    build adds twice its measured fit error to it, and a loaded curve stating less was edited).
+
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The exponents.
+
+    Returns
+    -------
+    float
+        2 x the compiled integrator's bound under the overlap rule at NODE_RTOL.
+
+    Examples
+    --------
+    >>> least_bound(("3/2", "1/2"))
+    1.0000000000000001e-11
+    """
+    return 2.0 * integrator_bound(NODE_RTOL, as_exponents(problem), "overlap")
 
 
 def build_overlap_curve(problem, progress=None) -> OverlapCurve:
@@ -141,7 +162,7 @@ def build_overlap_curve(problem, progress=None) -> OverlapCurve:
     held = np.exp(s0 + (np.arange(npan)[:, None] + rng.uniform(0, 1, (npan, HELDOUT_PER_PANEL))) * WIDTH).ravel()
     ref = reference_eps(ex, held, NODE_RTOL, "overlap")
     fit_err = float(np.max(np.abs(curve.eps(held) / ref - 1.0)))
-    curve.bound_inside = float(max(2.0 * (fit_err + integrator_bound(NODE_RTOL, ex, "overlap")), 2e-14))
+    curve.bound_inside = float(max(2.0 * fit_err + least_bound(ex), 2e-14))
     curve.checks = {"fit_err_heldout": fit_err, "n_heldout": int(held.size), "n_nodes": int(nodes.size),
                     "node_rtol": NODE_RTOL}
     return curve

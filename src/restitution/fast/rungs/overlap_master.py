@@ -7,8 +7,8 @@ from __future__ import annotations
 import math
 
 from ..builds.overlap_curve import OVERLAP_CURVE
-from ..overlap_master import NODE_RTOL, OMEGA_HI, OMEGA_LO
-from ..rung import Rung, integrator_bound
+from ..overlap_master import OMEGA_HI, OMEGA_LO, least_bound
+from ..rung import Rung
 
 __all__ = ["OverlapMaster", "OVERLAP_CURVE"]
 
@@ -26,8 +26,7 @@ class OverlapMaster(Rung):
         return OVERLAP_CURVE
 
     def floor(self, req):
-        # the build states at least twice its nodes' accuracy (and a loaded curve is held to it)
-        return 2.0 * integrator_bound(NODE_RTOL, req.ex, "overlap")
+        return least_bound(req.ex)
 
     def bound(self, req, curve):
         if not curve.covers(req.lo, req.hi):
