@@ -11,11 +11,12 @@ import argparse
 import sys
 
 from ..core.errors import ParameterError
-from .common import EXIT_USAGE, OneLineParser, Progress, UsageError, attach_negative_values, refuse_repeated_options
+from .common import (EXIT_OUTPUT, EXIT_USAGE, GuardedOutput, OneLineParser, OutputLost, Progress, UsageError,
+                     attach_negative_values, refuse_repeated_options)
 from .dem import LARGE_SCENE, add_dem_subcommands, run_deck, run_lammps, run_scene, scene_table
 from .physics import add_eps_subcommand, add_physics_subcommands, run_calibrate, run_collide, run_eps, run_series
 
-__all__ = ["main", "build_parser", "COMMANDS", "EXIT_USAGE", "LARGE_SCENE", "Progress", "add_eps_subcommand",
+__all__ = ["main", "build_parser", "COMMANDS", "EXIT_USAGE", "EXIT_OUTPUT", "LARGE_SCENE", "Progress", "add_eps_subcommand",
            "run_eps", "scene_table"]
 
 #: Each subcommand's runner (args, out) -> exit status or None
@@ -61,8 +62,10 @@ def main(argv=None, out=None) -> int:
     Returns
     -------
     int
-        The exit status: 0 on success, 1 where a subcommand reports a failed check (``scene``),
-        2 for a mistake in the arguments (one line on standard error, no traceback).
+        The exit status: 0 on success, 1 where a subcommand reports a failed check (``scene``) or
+        where the answer cannot be written (standard output closed, full, or a pipe its reader
+        closed), 2 for a mistake in the arguments; each failure is one line on standard error,
+        no traceback.
 
     Raises
     ------
@@ -83,24 +86,39 @@ def main(argv=None, out=None) -> int:
     2
     """
     out = sys.stdout if out is None else out
+    if out is None:   # `>&-`: Python has no sys.stdout at all; say so before any work
+        print("restitution: standard output is closed: there is nowhere to write the answer", file=sys.stderr)
+        return EXIT_OUTPUT
+    guarded = GuardedOutput(out)
     argv = sys.argv[1:] if argv is None else list(argv)
     try:
         refuse_repeated_options(argv)
         args = build_parser().parse_args(attach_negative_values(argv))
-        status = COMMANDS[args.command](args, out)
+        status = COMMANDS[args.command](args, guarded)
+        guarded.flush()   # here, not at exit, where a full disk would pass unseen or as a traceback
     except UsageError as exc:
         print(str(exc), file=sys.stderr)
         return EXIT_USAGE
     except ParameterError as exc:
         print(f"restitution: {exc}", file=sys.stderr)
         return EXIT_USAGE
-    except BrokenPipeError:
-        # the reader (`| head`) has what it wanted; Python would print a traceback at exit
-        import os
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 0
+    except OutputLost as exc:
+        print(str(exc), file=sys.stderr)
+        _silence_exit_flush(out)
+        return EXIT_OUTPUT
     return status or 0
 
 
+def _silence_exit_flush(out) -> None:
+    """What is left in sys.stdout's buffer would be flushed again at exit, failing again with a
+    message and status 120; pointing its descriptor at /dev/null is what Python's documentation
+    on SIGPIPE recommends."""
+    import os
 
-
+    if out is sys.stdout:
+        try:
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            os.dup2(devnull, out.fileno())
+            os.close(devnull)
+        except (OSError, ValueError, AttributeError):   # not a real file: nothing flushes at exit
+            pass

@@ -1,6 +1,7 @@
 """What every subcommand of the ``restitution`` command shares: a parser whose errors are one line,
 the usage error, the common options, JSON output, the note on approximated exponents, a progress
-report for long computations, and the argv fixes made before argparse reads it."""
+report for long computations, the argv fixes made before argparse reads it, and the guard that turns
+a lost standard output into one line."""
 
 from __future__ import annotations
 
@@ -9,11 +10,13 @@ import json
 import re
 import sys
 
-__all__ = ["EXIT_USAGE", "OneLineParser", "UsageError", "positive_int", "add_end", "add_exponents",
+__all__ = ["EXIT_USAGE", "EXIT_OUTPUT", "OutputLost", "GuardedOutput", "OneLineParser", "UsageError", "positive_int", "add_end", "add_exponents",
            "report_approximation", "write_json", "Progress", "duration", "attach_negative_values",
            "refuse_repeated_options"]
 
 EXIT_USAGE = 2
+#: The answer could not be written: standard output closed, full, or a pipe its reader closed
+EXIT_OUTPUT = 1
 
 
 class OneLineParser(argparse.ArgumentParser):
@@ -22,9 +25,45 @@ class OneLineParser(argparse.ArgumentParser):
     def error(self, message):  # noqa: D401 - argparse hook
         raise UsageError(f"{self.prog}: {message}")
 
+    def print_help(self, file=None):
+        # argparse ignores a failed write of the help: a lost standard output would pass unseen
+        stream = GuardedOutput(file or sys.stdout)
+        stream.write(self.format_help())
+        stream.flush()
+
 
 class UsageError(Exception):
     pass
+
+
+class OutputLost(Exception):
+    """Writing the answer failed; the message is the one line the user sees."""
+
+
+class GuardedOutput:
+    """The answer's stream, whose write errors become :class:`OutputLost`: only a failure of this
+    stream is reported as a lost output, never an OSError from elsewhere (a deck's engine, a file)."""
+
+    def __init__(self, stream):
+        self.stream = stream
+
+    def write(self, text):
+        return self._guard(self.stream.write, text)
+
+    def flush(self):
+        return self._guard(self.stream.flush)
+
+    @staticmethod
+    def _guard(call, *args):
+        try:
+            return call(*args)
+        except BrokenPipeError:
+            raise OutputLost("restitution: standard output closed by its reader (broken pipe): "
+                             "the answer is incomplete") from None
+        except (OSError, ValueError) as exc:   # ValueError: the stream was closed in this process
+            why = getattr(exc, "strerror", None) or str(exc)
+            raise OutputLost(f"restitution: standard output cannot be written ({why}): "
+                             "the answer is incomplete") from None
 
 
 def positive_int(text: str) -> int:
