@@ -15,7 +15,7 @@ import jsonschema
 import yaml
 
 # one-line messages from jsonschema's errors: shared with the scene files of restitution.dem.scene_file
-from restitution.core.strict_yaml import UniqueKeyLoader
+from restitution.core.strict_yaml import Refused, StrictLoader
 from restitution.core.schema_lines import MAX_NAME, allowed as _allowed, field as _field, show as _show  # noqa: F401
 
 
@@ -332,11 +332,11 @@ def read_config_file(path) -> dict:
     if not text.strip() or all(not l.strip() or l.lstrip().startswith("#") for l in text.splitlines()):
         raise ConfigError(f"{path}: empty: it must set main_variant and variants (see README.md)")
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        root = yaml.compose(text, Loader=StrictLoader)
         if root is not None and _expanded_nodes(root, {}) > MAX_NODES:
             raise ConfigError(f"{path}: its YAML aliases (*name) expand to more than {MAX_NODES} values: "
                               "not a configuration")
-        data = yaml.load(text, Loader=UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
+        data = yaml.load(text, Loader=StrictLoader)  # noqa: S506 - a SafeLoader subclass
     except ConfigError as err:
         raise ConfigError(f"{path}, {err}" if str(err).startswith("line ") else str(err)) from None
     except yaml.YAMLError as err:
@@ -346,7 +346,7 @@ def read_config_file(path) -> dict:
         context = getattr(err, "context", None)
         if context and getattr(err, "problem", None):
             what = f"{what} ({' '.join(str(context).split())})"
-        raise ConfigError(f"{where}: not valid YAML: {what}") from None
+        raise ConfigError(f"{where}: {what}" if isinstance(err, Refused) else f"{where}: not valid YAML: {what}") from None
     if data is None:
         data = {}
     if not isinstance(data, dict):

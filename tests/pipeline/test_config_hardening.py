@@ -147,3 +147,21 @@ def test_an_exact_family_pair_that_is_no_number_or_not_in_the_family_is_one_line
     with pytest.raises(_config.ConfigError) as err:
         _config.check_config(cfg, SCHEMA)
     assert words in str(err.value) and "\n" not in str(err.value)
+
+
+@pytest.mark.parametrize("old, new, words", [
+    ("trajectory_points: 401", "trajectory_points: 0401", "trajectory_points = 0401: YAML readers differ"),  # 1.1: 257
+    ("trajectory_points: 401", "trajectory_points: 6:41", "trajectory_points = 6:41: YAML readers differ"),  # 1.1: 401
+    ("trajectory_points: 401", "trajectory_points: 0x191", "trajectory_points = 0x191: YAML readers differ"),
+    ("trajectory_points: 401", "trajectory_points: 4_01", "trajectory_points = 4_01: YAML readers differ"),
+    ("main_variant: kim", "main_variant: no", "main_variant = no: YAML readers differ"),           # 1.1: False
+    ("D1: 0.000296", "D1: 1" + "0" * 399 + ".0", "D1 = 1"),
+    ("trajectory_points: 401", "trajectory_points: " + "[" * 5000 + "]" * 5000, "nested deeper than"),
+])
+def test_what_yaml_readers_take_differently_or_cannot_hold_is_one_line(tmp_path, old, new, words):
+    """Snakemake reads config.yaml as YAML 1.1 (0401 as 257, 6:41 as 401, no as False): the precheck
+    refuses such values so that what it checks is what Snakemake runs. On 85c8edf all passed, and the
+    deep one ended in a RecursionError."""
+    assert old in BASE
+    message = refused(tmp_path, BASE.replace(old, new, 1))
+    assert words in message and "line" in message and "\n" not in message, message

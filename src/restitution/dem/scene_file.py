@@ -10,7 +10,6 @@ the target of every material pair, as a function of speed.
 from __future__ import annotations
 
 import math
-import re
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -98,25 +97,11 @@ class Scene:
         return np.geomspace(*self.speeds, self.report_points)
 
 
-def _loader():
-    import yaml
-
-    from ..core.strict_yaml import UniqueKeyLoader
-
-    class Loader(UniqueKeyLoader):
-        """A key given twice is refused (PyYAML would keep the last: a tolerance or a material's E
-        replaced without a word). YAML 1.2 numbers: PyYAML (YAML 1.1) reads 6.3e10 or 1e-3 as
-        text, which the schema would refuse as 'not a number' though every modeller means one."""
-
-    Loader.add_implicit_resolver(
-        "tag:yaml.org,2002:float",
-        re.compile(r"^[-+]?(?:[0-9][0-9_]*(?:\.[0-9_]*)?|\.[0-9_]+)[eE][-+]?[0-9]+$"), list("-+0123456789."))
-    return Loader
-
-
 def read_scene(path) -> Scene:
     """The scene in the YAML file ``path``, checked; ParameterError (one line) for any mistake."""
     import yaml
+
+    from ..core.strict_yaml import Refused, StrictLoader
 
     try:
         with open(path, "rb") as fh:
@@ -126,14 +111,15 @@ def read_scene(path) -> Scene:
     if len(raw) > MAX_FILE_BYTES:
         raise ParameterError("file", str(path), f"larger than {MAX_FILE_BYTES} bytes: not a scene")
     try:
-        data = yaml.load(raw.decode("utf-8"), Loader=_loader())  # noqa: S506 - a SafeLoader subclass
+        data = yaml.load(raw.decode("utf-8"), Loader=StrictLoader)  # noqa: S506 - a SafeLoader subclass
     except UnicodeDecodeError:
         raise ParameterError("file", str(path), "is not UTF-8 text") from None
     except yaml.YAMLError as err:
         mark = getattr(err, "problem_mark", None)
         where = f", line {mark.line + 1}" if mark else ""
         what = " ".join(str(getattr(err, "problem", None) or err).split())
-        raise ParameterError("file", f"{path}{where}", f"not valid YAML: {what}") from None
+        raise ParameterError("file", f"{path}{where}",
+                             what if isinstance(err, Refused) else f"not valid YAML: {what}") from None
     return scene_from_dict(data)
 
 
