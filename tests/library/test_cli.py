@@ -40,12 +40,11 @@ def test_series_table_is_human_readable():
     assert "-1/6" in proc.stdout and "7/2" in proc.stdout and "-4/35" in proc.stdout
 
 
-def test_float_exponent_note_goes_to_stderr_and_json_stays_clean():
+def test_a_float_exponent_that_is_no_short_rational_is_one_line_and_json_stays_empty():
     proc = run("series", "--alpha", "1.4166667", "--gamma", "1", "--omega-order", "0", "--max-power", "3",
                "--json")
-    assert proc.returncode == 0
-    assert json.loads(proc.stdout)["alpha"] == "17/12"
-    assert "taken as 17/12" in proc.stderr
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert "'17/12'" in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
 
 
 @pytest.mark.slow

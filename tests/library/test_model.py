@@ -73,16 +73,15 @@ def test_omega_leaving_double_precision_is_refused(D1, D2, g):
 @pytest.mark.parametrize("text,expected", [("3/2", Fraction(3, 2)), ("1", Fraction(1)), (1.5, Fraction(3, 2)),
                                            ("0.5", Fraction(1, 2)), (2, Fraction(2)), (Fraction(5, 4), Fraction(5, 4))])
 def test_exponents_parse_exactly(text, expected):
-    ex = Exponents.parse(text, 1)
-    assert ex.alpha == expected and ex.alpha_error == 0.0
+    assert Exponents.parse(text, 1).alpha == expected
 
 
-def test_float_exponent_near_a_short_rational_is_approximated_and_the_error_reported():
-    ex = Exponents.parse(1.4166667, 1)  # 17/12 typed to 7 digits
-    assert ex.alpha == Fraction(17, 12)
-    assert ex.alpha_error == pytest.approx(abs(1.4166667 - 17 / 12))
-    assert 0 < ex.alpha_error < 1e-6
-    assert ex.p == 12 and ex.q_alpha == 17 and ex.q_gamma == 12
+def test_float_exponent_near_a_short_rational_is_refused_naming_it():
+    with pytest.raises(ParameterError) as info:
+        Exponents.parse(1.4166667, 1)  # 17/12 typed to 7 digits: eps would be that of another exponent
+    assert info.value.field == "alpha" and "'17/12'" in str(info.value)
+    ex = Exponents.parse(17 / 12, 1)
+    assert ex.alpha == Fraction(17, 12) and ex.p == 12 and ex.q_alpha == 17 and ex.q_gamma == 12
 
 
 def test_float_exponent_far_from_short_rationals_is_refused_naming_the_nearest():

@@ -1,5 +1,5 @@
 """What every subcommand of the ``restitution`` command shares: a parser whose errors are one line,
-the usage error, the common options, JSON output, the note on approximated exponents, a progress
+the usage error, the common options, JSON output, a progress
 report for long computations, the argv fixes made before argparse reads it, and the guard that turns
 a lost standard output into one line."""
 
@@ -10,9 +10,9 @@ import json
 import re
 import sys
 
-__all__ = ["EXIT_USAGE", "EXIT_OUTPUT", "OutputLost", "GuardedOutput", "OneLineParser", "UsageError", "positive_int", "add_end", "add_exponents",
-           "report_approximation", "write_json", "Progress", "duration", "attach_negative_values",
-           "refuse_repeated_options"]
+__all__ = ["EXIT_USAGE", "EXIT_OUTPUT", "OutputLost", "GuardedOutput", "OneLineParser", "UsageError",
+           "positive_int", "add_end", "add_exponents", "write_json", "Progress", "duration",
+           "attach_negative_values", "refuse_repeated_options"]
 
 EXIT_USAGE = 2
 #: The answer could not be written: standard output closed, full, or a pipe its reader closed
@@ -85,17 +85,6 @@ def add_end(p: argparse.ArgumentParser) -> None:
 def add_exponents(p: argparse.ArgumentParser) -> None:
     p.add_argument("--alpha", required=True, help="elastic exponent, a rational > 0 such as 3/2")
     p.add_argument("--gamma", required=True, help="dissipative exponent, a rational >= 0 such as 1")
-
-
-def report_approximation(args) -> None:
-    """Say on stderr when a float exponent was replaced by a nearby rational, and by how much."""
-    from ..core.exponents import Exponents
-    ex = Exponents.parse(args.alpha, args.gamma)
-    for name, given, exact, err in (("alpha", args.alpha, ex.alpha, ex.alpha_error),
-                                    ("gamma", args.gamma, ex.gamma, ex.gamma_error)):
-        if err:
-            print(f"restitution: note: {name} = {given} taken as {exact} (|difference| = {err:.3g})",
-                  file=sys.stderr)
 
 
 def write_json(data, out) -> None:

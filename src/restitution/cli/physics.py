@@ -9,7 +9,7 @@ import math
 
 from ..core.errors import ParameterError
 from ..core.exponents import number_argument
-from .common import Progress, UsageError, add_end, add_exponents, positive_int, report_approximation, write_json
+from .common import Progress, UsageError, add_end, add_exponents, positive_int, write_json
 
 __all__ = ["add_physics_subcommands", "add_eps_subcommand", "run_eps", "run_series", "run_collide", "run_calibrate"]
 
@@ -58,7 +58,6 @@ def run_calibrate(args, out) -> None:
     one = len(args.eps) == 1 and len(args.g) == 1
     res = calibrate(args.alpha, args.gamma, D1=args.D1, eps=args.eps[0] if one else args.eps,
                     g=args.g[0] if one else args.g, end=args.end).as_dict()
-    report_approximation(args)
     if args.json:
         write_json(res, out)
         return
@@ -104,7 +103,6 @@ def run_eps(args, out) -> None:
         res = epsilon(omega=args.omega, **kwargs)
     else:
         res = epsilon(g=args.g, D1=args.D1, D2=args.D2, **kwargs)
-    report_approximation(args)
     eps = [float(e) for e in res.eps.ravel()]
     if args.json:
         extra = {} if res.coefficients is None else {"coefficients": res.coefficients}
@@ -138,7 +136,6 @@ def run_series(args, out) -> None:
                              # the first k powers cost about k^3.5 (k^2.7 to k^4.2 measured between pairs)
                              progress=Progress("series", "powers of tau", 3.5,
                                                 " (an estimate, good to a factor of about two)"))
-    report_approximation(args)
     data = ps.as_dict()
     if args.json:
         write_json(data, out)
@@ -164,7 +161,6 @@ def run_collide(args, out) -> None:
     result = collide(args.alpha, args.gamma, omega, method=args.method,
                      rtol=1e-12 if args.rtol is None else args.rtol,
                      digits=30 if args.digits is None else args.digits, end=args.end).as_dict()
-    report_approximation(args)
     if args.json:
         write_json(result, out)
         return

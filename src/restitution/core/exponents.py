@@ -1,8 +1,12 @@
 """Force-law exponents as exact rationals.
 
 The series in tau^(1/p) only exists when alpha and gamma are rational; the paper
-approximates them by q_alpha/p and q_gamma/p with a common denominator p. We do the
-same, and say how far the rational is from a float the user gave.
+approximates them by q_alpha/p and q_gamma/p with a common denominator p. A float is read only
+where it is such a rational to within one unit in its last place (1.5, 0.25, 1/3 as Python
+computes it): every method answers at the rational, so a float farther from it (1.4999999) would be
+answered for another exponent than the one given, beyond the error bound stated (2.75e-8 in eps
+for alpha = 1.4999999, gamma = 1, Omega = 1, where the stated bound was 5e-13). It is refused, naming
+the rational to pass exactly.
 """
 
 from __future__ import annotations
@@ -17,11 +21,6 @@ from .errors import ParameterError
 
 #: Largest denominator accepted when a float must be turned into a rational.
 MAX_DENOMINATOR = 12
-#: A float is taken as the rational r when |float - r| is at most this (no note: just rounding).
-EXACT_FLOAT_TOLERANCE = 1e-12
-#: A float farther than this (relative) from every rational with denominator <= MAX_DENOMINATOR
-#: is refused: eps would change at that level, so silently rounding the exponent would hide it.
-APPROXIMATION_TOLERANCE = 1e-6
 #: Largest exponent accepted. The physics has no bound, but beyond this the force laws are so
 #: steep that the integrator's stated accuracy has not been verified.
 MAX_EXPONENT = Fraction(8)
@@ -45,12 +44,11 @@ def number_argument(text: str) -> float:
 
 
 def parse_exponent(field: str, value, *, minimum: Fraction, inclusive: bool,
-                   max_denominator: int = MAX_DENOMINATOR) -> tuple[Fraction, float]:
-    """Read an exponent given as "3/2", "1", 1.5, Fraction(3, 2) or a float.
+                   max_denominator: int = MAX_DENOMINATOR) -> Fraction:
+    """Read an exponent given as "3/2", "1", 1.5, Fraction(3, 2) or a float that is a rational
+    with denominator at most ``max_denominator`` to within one unit in its last place.
 
-    Returns ``(rational, approximation_error)``: the error is 0 when the input is
-    exactly that rational, otherwise ``|float(input) - rational|`` after bounding the
-    denominator by ``max_denominator``.
+    Returns the rational; ParameterError (naming the nearest rational) for anything else.
     """
     given = value  # errors quote what the user typed, not our conversion of it
     bound = f"in {'[' if inclusive else '('}{minimum}, {MAX_EXPONENT}]"
@@ -89,23 +87,20 @@ def parse_exponent(field: str, value, *, minimum: Fraction, inclusive: bool,
     if exact is None:
         if abs(value) > MAX_EXPONENT:
             raise ParameterError(field, given, allowed)
-        approx = Fraction(value).limit_denominator(max_denominator)
-        error = abs(float(approx) - value)
-        scale = max(1.0, abs(value))
-        if error > APPROXIMATION_TOLERANCE * scale:
-            raise ParameterError(field, given, f"{allowed}; the nearest such rational, {approx}, is "
-                                               f"{error:.2g} away (more than {APPROXIMATION_TOLERANCE:g})")
-        if error <= EXACT_FLOAT_TOLERANCE * scale:
-            error = 0.0
-        exact = approx
-    else:
-        error = 0.0
-        if exact.denominator > max_denominator:
-            raise ParameterError(field, given, allowed)
+        exact = Fraction(value).limit_denominator(max_denominator)
+        off = abs(Fraction(value) - exact)
+        if off > Fraction(math.ulp(value)):
+            raise ParameterError(field, given, (
+                f"{allowed}; a float is read only where it is such a rational to its last bit (1.5, "
+                f"0.25, 1/3 as Python computes it), and the nearest such rational, {exact}, is "
+                f"{float(off):.2g} away: eps would differ at about that level; pass it exactly, as "
+                f"'{exact}' or Fraction({exact.numerator}, {exact.denominator})"))
+    elif exact.denominator > max_denominator:
+        raise ParameterError(field, given, allowed)
 
     if exact < minimum or (exact == minimum and not inclusive) or exact > MAX_EXPONENT:
         raise ParameterError(field, given, allowed)
-    return exact, error
+    return exact
 
 
 def np_bool_types() -> tuple:
@@ -119,8 +114,8 @@ class Exponents:
     """alpha (elastic) and gamma (dissipative) as rationals q_alpha/p and q_gamma/p.
 
     Build one with :meth:`Exponents.parse`, which accepts what the rest of the package accepts:
-    exact strings (``"3/2"``), integers, Fractions, or floats within 1e-6 of a rational with
-    denominator at most 12 (the difference is kept in ``alpha_error``, ``gamma_error``).
+    exact strings (``"3/2"``), integers, Fractions, or floats that are a rational with denominator
+    at most 12 to their last bit (``1.5``, ``1/3``; ``1.4999999`` is refused).
 
     Parameters
     ----------
@@ -128,8 +123,6 @@ class Exponents:
         Elastic exponent, in (0, 8].
     gamma : Fraction
         Dissipative exponent, in [0, 8].
-    alpha_error, gamma_error : float, optional
-        How far a float given was from the rational taken (0 for exact input).
 
     Attributes
     ----------
@@ -141,7 +134,7 @@ class Exponents:
     Raises
     ------
     ParameterError
-        From :meth:`parse`, for an exponent outside its range or a float near no such rational.
+        From :meth:`parse`, for an exponent outside its range or a float that is no such rational.
 
     Examples
     --------
@@ -155,14 +148,11 @@ class Exponents:
 
     alpha: Fraction
     gamma: Fraction
-    alpha_error: float = 0.0
-    gamma_error: float = 0.0
 
     @classmethod
     def parse(cls, alpha, gamma) -> "Exponents":
-        a, ea = parse_exponent("alpha", alpha, minimum=Fraction(0), inclusive=False)
-        g, eg = parse_exponent("gamma", gamma, minimum=Fraction(0), inclusive=True)
-        return cls(a, g, ea, eg)
+        return cls(parse_exponent("alpha", alpha, minimum=Fraction(0), inclusive=False),
+                   parse_exponent("gamma", gamma, minimum=Fraction(0), inclusive=True))
 
     @property
     def p(self) -> int:

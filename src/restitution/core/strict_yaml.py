@@ -11,9 +11,9 @@ refusals:
   ``41:40`` is sexagesimal 2500 there and text in YAML 1.2, ``2_500`` is 2500 there and text in
   YAML 1.2, ``no``, ``yes``, ``on``, ``off`` are booleans there and text in YAML 1.2, a date is a
   date there and text in YAML 1.2, ``0o17`` is text there and 15 in YAML 1.2. ``0x9C4`` and
-  ``0b101`` are numbers to some readers and text to others (YAML 1.2's JSON schema). So a number is written in plain decimal (``2500``,
-  ``2.5e3``), a boolean as ``true`` or ``false``, and text that looks like either is quoted; then
-  every reader takes the same value. The one reading added is YAML 1.2's for ``6.3e10`` or
+  ``0b101`` are numbers to some readers and text to others (YAML 1.2's JSON schema). So a number
+  is written in plain decimal (``2500``, ``2.5e3``), a boolean as ``true`` or ``false``, and text
+  that looks like either is quoted; then every reader takes the same value. The one reading added is YAML 1.2's for ``6.3e10`` or
   ``1e-3`` (text to YAML 1.1), which every modeller means as a number;
 - a number beyond the range of a double (a 400-digit ``tolerance``: it would become inf, or an
   integer Python keeps but the physics cannot), or a nonzero one below it (it would become 0);
