@@ -368,7 +368,7 @@ def precheck_file(path) -> None:
         sys.exit(2)
 
 
-if __name__ == "__main__":  # python src/restitution_workflow/config.py config.yaml: the same check
+if __name__ == "__main__":  # python workflow/lib/restitution_workflow/config.py config.yaml: the same check
     import sys
 
     for arg in sys.argv[1:] or ["config.yaml"]:
