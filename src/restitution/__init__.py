@@ -1,6 +1,6 @@
 """Coefficient of restitution for viscoelastic collisions: a rebuild and audit of S. Kim's paper.
 
-The contact law x'' + Omega x^gamma x' + x^alpha = 0 (scaled), in four layers; imports point down
+The contact law x'' + Omega x^alpha + x^gamma x' = 0 (scaled), in four layers; imports point down
 only (checked by tests/library/test_layers.py):
 
 ====================  ===================================================================
