@@ -11,17 +11,18 @@ export PYTHONHASHSEED := 0
 
 .PHONY: venv test test-fast fuzz docs
 
-$(STAMP): pyproject.toml constraints.txt
+$(STAMP): pyproject.toml workflow/pyproject.toml constraints.txt
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[test]'
+	@# the library and, beside it, the pipeline's helpers (workflow/pyproject.toml: not in the wheel)
+	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[test]' -e ./workflow
 	@# the integrator's kernels compiled once into numba's cache beside their source (src/), as an
 	@# installed environment has them: else the first pipeline job or test pays 6-8 s for it
 	$(BIN)/python -c "import numpy; from restitution.fast.integrator import collide_fast; collide_fast(2, 3, 2, numpy.geomspace(0.1, 10.0, 16))"
 	@# and the package's bytecode, as pip writes it for an installed one: where PYTHONDONTWRITEBYTECODE
 	@# is set, an editable install would compile some 50 modules from source in every process (a
 	@# one-value `restitution eps` measured 2.24x `python -c "import numpy"` so, 1.85x with it)
-	$(BIN)/python -m compileall -q src >/dev/null
+	$(BIN)/python -m compileall -q src workflow/lib >/dev/null
 	@touch $@
 
 venv: $(STAMP)
@@ -184,7 +185,7 @@ diff: $(STAMP) tex
 # Outputs whose bytes are no longer what the pipeline wrote (make paper moves them aside and
 # rebuilds them by itself; this only reports).
 verify: $(STAMP)
-	@$(BIN)/python src/restitution_workflow/atomic.py verify .
+	@$(BIN)/python workflow/lib/restitution_workflow/atomic.py verify .
 
 # Rebuild from clean in a temporary directory and compare with tests/expected/manifest.json.
 check: $(STAMP)

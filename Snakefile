@@ -8,11 +8,12 @@
 # Per-variant outputs live under results/<variant>/; see config.yaml for the variants.
 
 # No import path is set here: the package (src/restitution) and the workflow's helpers
-# (src/restitution_workflow) are installed into the environment (make venv: an editable install
-# of this tree), so the Snakefile, its rule files and every `script:` import them by name.
+# (workflow/lib/restitution_workflow, a project of their own: workflow/pyproject.toml) are installed
+# into the environment (make venv: editable installs of this tree), so the Snakefile, its rule files
+# and every `script:` import them by name.
 
 # A YAML syntax error in config.yaml: one line with its line number, before Snakemake's
-# `configfile:` would report it in two lines without one (src/restitution_workflow/config.py).
+# `configfile:` would report it in two lines without one (workflow/lib/restitution_workflow/config.py).
 from restitution_workflow.config import precheck_file
 
 precheck_file("config.yaml")  # the path `configfile:` reads (relative to the working directory)

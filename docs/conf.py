@@ -25,6 +25,10 @@ extensions = [
     "sphinx.ext.autodoc",
     "sphinx.ext.autosummary",
     "sphinx.ext.mathjax",
+    # MathJax from the docs group's own package, copied into _static/: the equations render with no
+    # network (sphinx.ext.mathjax alone loads it from a CDN); tests/library/test_docs_site.py checks
+    # that no page loads a script from the web.
+    "sphinx-mathjax-offline",
     "numpydoc",
     "myst_nb",
     "sphinxarg.ext",
@@ -32,7 +36,9 @@ extensions = [
     "restitution_workflow.docs_pages",   # the schema pages and the rung table, from the code
 ]
 
-exclude_patterns = ["_build", "_ext", "conf.py", "reference/_generated/speed_accuracy.md", "**.ipynb_checkpoints"]
+# tutorials/_notebooks: the tutorials as .ipynb for download (docs_pages.notebooks), not pages
+exclude_patterns = ["_build", "_ext", "conf.py", "reference/_generated/speed_accuracy.md", "**.ipynb_checkpoints",
+                    "tutorials/_notebooks"]
 templates_path = ["_templates"]
 
 # Tutorials: percent-format scripts read through jupytext, executed once per change.

@@ -52,7 +52,8 @@ fix             floor all wall/gran granular hertz/material 2.0e11 0.8 0.29 damp
 timestep        1e-7
 run             1000
 """
-Path("in.small").write_text(deck)
+with open("in.small", "w") as f:      # a statement: the notebook shows no count of characters written
+    f.write(deck)
 
 # %% [markdown]
 # The audit, as a table (what a person reads) for four impact speeds:

@@ -1,6 +1,6 @@
 """Coefficient of restitution for viscoelastic collisions: a rebuild and audit of S. Kim's paper.
 
-The contact law x'' + Omega x^gamma x' + x^alpha = 0 (scaled), in four layers; imports point down
+The contact law x'' + Omega x^alpha + x^gamma x' = 0 (scaled), in four layers; imports point down
 only (checked by tests/library/test_layers.py):
 
 ====================  ===================================================================
@@ -30,11 +30,15 @@ from .core.series import perturbation_series
 
 __all__ = ["ParameterError", "Exponents", "Problem", "Material", "perturbation_series", "collide", "inverse_collide",
            "epsilon", "EpsResult"]
-__version__ = "0.1.0"
 
 
 def __getattr__(name):
     if name in ("collide", "inverse_collide", "collide_many", "epsilon", "EpsResult"):
         from . import api
         return getattr(api, name)
+    if name == "__version__":
+        # the installed distribution's, written once in pyproject.toml; read on first use, as
+        # importlib.metadata would add to every start-up of the command
+        from importlib.metadata import version
+        return version("restitution")
     raise AttributeError(f"module 'restitution' has no attribute {name!r}")

@@ -13,7 +13,7 @@ from .core import collision as _collision
 from .core.errors import ParameterError
 from .core.problem import Problem, as_problem
 from .core.exponents import as_exponents
-from .core.results import Collision, end_rule
+from .core.results import Collision, InverseCollision, end_rule
 from .fast import ladder as _ladder
 from .fast.collide import METHODS, collide as _fast_collide
 from .fast.calibration import FITTED_C
@@ -83,6 +83,12 @@ def epsilon(*, alpha=None, gamma=None, omega=None, g=None, D1=None, D2=None, tol
     ParameterError
         For an argument out of range, a tolerance no rung meets (naming the best bound available),
         or, under the overlap rule, an Omega at which the bodies stick (StickError).
+
+    See Also
+    --------
+    collide : One whole collision (times, deformations, how contact ended) by a named method.
+    Material.omega : Omega from the material constants and the impact speed.
+    restitution.dem.calibrate : The damping D2 that gives a target eps.
 
     Examples
     --------
@@ -163,6 +169,12 @@ def collide(alpha=None, gamma=None, omega=None, *, method: str = "reference", rt
         outside alpha = 2 gamma + 1; StickError (a ParameterError) when under the overlap rule the
         bodies never separate.
 
+    See Also
+    --------
+    epsilon : eps alone, for many Omega, by the cheapest method that meets a tolerance.
+    inverse_collide : The inverse collision, time run backwards from the end of contact.
+    restitution.core.results.Collision : What it returns.
+
     Examples
     --------
     >>> from restitution import collide
@@ -186,7 +198,8 @@ def _problem(alpha, gamma, end, problem) -> Problem:
 
 
 # The public spellings keep the exponents as two numbers; the core takes one problem value.
-def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12, t_eval=None):
+def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,
+                    t_eval=None) -> InverseCollision:
     """Inverse collision x~'' + Omega~ x~^alpha - x~^gamma x~' = 0, x~(0) = x_start, x~'(0) = 1.
 
     Integrated until x~ returns to 0. Once x~' < 0 both force terms accelerate the return, so it
@@ -217,6 +230,11 @@ def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: fl
     ------
     ParameterError
         For an argument out of range; RunawayError (a ParameterError) when the motion never turns.
+
+    See Also
+    --------
+    collide : The forward collision.
+    restitution.core.results.InverseCollision : What it returns.
 
     Examples
     --------

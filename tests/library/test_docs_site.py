@@ -205,3 +205,86 @@ def test_no_timing_is_typed_in_the_api_pages(site):
         text = html.unescape(re.sub(r"<[^>]+>", " ", page.read_text()))
         found += [f"{page.name}: {m.group(0)!r}" for m in TIMING.finditer(text)]
     assert not found, "\n".join(found)
+
+
+def _pages(site: Path):
+    return [p for p in site.rglob("*.html") if "_static" not in p.relative_to(site).parts]
+
+
+@pytest.mark.slow
+def test_no_page_loads_a_script_or_style_from_the_network(site):
+    """Issue 55: the equations showed as raw LaTeX offline (MathJax came from a CDN). MathJax is
+    now the docs group's copy in _static/mathjax, and every script and stylesheet is local."""
+    remote = re.compile(r"<(script|link)\b[^>]*\b(src|href)=\"((https?:)?//[^\"]+)\"")
+    found = [f"{p.relative_to(site)}: {m.group(3)}" for p in _pages(site)
+             for m in remote.finditer(p.read_text(errors="replace"))
+             if m.group(1) == "script" or "stylesheet" in m.group(0)]
+    assert not found, "\n".join(sorted(set(found))[:20])
+    physics = (site / "explanation" / "physics.html").read_text()
+    local = re.search(r"<script[^>]*src=\"([^\"]*mathjax/tex-chtml\.js)\"", physics)
+    assert local and (site / "explanation" / local.group(1)).resolve().is_file()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", TUTORIALS)
+def test_no_tutorial_cell_shows_a_stray_number(site, name):
+    """A cell ending in a call that returns a count (write_text's number of characters: the 893
+    of issue 55) shows that number alone as its output."""
+    text = (site / "tutorials" / f"{name}.html").read_text()
+    outputs = re.findall(r'<div class="cell_output[^"]*">(.*?)</div>\s*</div>\s*</div>', text, flags=re.S)
+    bare = [o for o in outputs if re.fullmatch(r"\s*\d+\s*", re.sub(r"<[^>]+>", "", o))]
+    assert not bare, bare[:3]
+
+
+@pytest.mark.slow
+def test_the_api_reference_holds_every_name_the_docs_use(site):
+    """Every public name, the objects they return, and every project name the tutorials and the
+    how-to pages import has its page; a class's page has its methods (Material.omega)."""
+    import restitution
+    import restitution.dem
+    from restitution_workflow.docs_pages import tutorial_imports
+    pages = site / "reference" / "_autosummary"
+    want = {f"restitution.{n}" for n in restitution.__all__} | {f"restitution.dem.{n}" for n in restitution.dem.__all__}
+    want |= {f"{m}.{n}" for m, ns in tutorial_imports().items() for n in ns
+             if f"{m}.{n}" not in {"restitution." + k for k in restitution.__all__}
+             and f"{m}.{n}" not in {"restitution.dem." + k for k in restitution.dem.__all__}}
+    want |= {"restitution.core.results.Collision", "restitution.core.series.PerturbationSeries"}
+    missing = sorted(n for n in want if not (pages / f"{n}.html").is_file())
+    assert not missing, missing
+    assert 'id="restitution.Material.omega"' in (pages / "restitution.Material.html").read_text()
+    # See Also entries are links, not plain text
+    assert 'href="restitution.collide.html#restitution.collide"' in (pages / "restitution.epsilon.html").read_text()
+
+
+def test_the_tutorials_page_offers_each_tutorial_as_a_notebook():
+    index = (DOCS / "tutorials" / "index.md").read_text()
+    missing = [t for t in TUTORIALS if f"<_notebooks/{t}.ipynb>" not in index]
+    assert not missing, missing
+
+
+def test_the_api_page_lists_what_the_docs_import_and_what_the_functions_return():
+    from restitution_workflow.docs_pages import api_page, tutorial_imports
+    text = api_page()
+    for module, names in tutorial_imports().items():
+        section = text.split(f".. currentmodule:: {module}\n", 1)
+        assert module in ("restitution", "restitution.dem") or len(section) == 2, module
+    for name in ("Collision", "InverseCollision", "PerturbationSeries", "lammps_design", "check_config"):
+        assert f"   {name}\n" in text, name
+
+
+def test_the_rung_table_says_what_a_user_chooses_by():
+    """Issue 55: the table had no column for reachable accuracy, Omega domain or cost."""
+    from restitution_workflow.docs_pages import rungs_page
+    rows = [ln for ln in rungs_page().splitlines() if ln.startswith("| [`")]
+    head = next(ln for ln in rungs_page().splitlines() if ln.startswith("| rung |"))
+    assert all(c in head for c in ("Omega domain", "smallest bound", "cost"))
+    cells = {r.split("`")[1] + "/" + r.split("|")[2].strip(): [c.strip() for c in r.split("|")[1:-1]] for r in rows}
+    assert cells["integrator/force"][4] == "1e-300 to 1e14" and float(cells["integrator/force"][5]) < 1e-12
+    assert cells["exact-family/force, overlap"][3] == "3/2, 1/4, force"
+    assert all(c[4] and c[5] for c in cells.values())
+
+
+def test_output_blocks_wrap():
+    css = (DOCS / "_static" / "custom.css").read_text()
+    rule = re.search(r"div\.cell_output pre,[^{]*\{([^}]*)\}", css)
+    assert rule and "pre-wrap" in rule.group(1)

@@ -73,3 +73,18 @@ def test_docstring_examples_run(module_name):
         runner.run(test)
     result = runner.summarize(verbose=False)
     assert result.failed == 0, f"{result.failed} of {result.attempted} examples failed in {module_name}"
+
+
+def test_the_pipeline_helpers_examples_run():
+    """restitution_workflow (workflow/lib) is not in the package, but its names are in the API
+    reference where the tutorials import them (check_config): its Examples run too."""
+    import restitution_workflow
+    runner = doctest.DocTestRunner(optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE)
+    finder = doctest.DocTestFinder(exclude_empty=True)
+    for info in pkgutil.iter_modules(restitution_workflow.__path__, "restitution_workflow."):
+        module = importlib.import_module(info.name)
+        for test in finder.find(module, info.name):
+            if (test.filename or "") == module.__file__:
+                runner.run(test)
+    result = runner.summarize(verbose=False)
+    assert result.attempted >= 8 and result.failed == 0, result

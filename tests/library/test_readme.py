@@ -1,17 +1,15 @@
 """The README (issue 45): a page, not a manual. At most 200 lines; the two set-up commands as they
-always were, with `make docs` below them; its command-line examples print what it shows; its Python
-example runs; every link into docs/ points at a file; no timing typed in prose (the docs' own check,
-tests/library/test_docs_site.py, covers the rest)."""
+always were, with `make docs` below them; the eps its Python example shows are the library's; every
+link into docs/ points at a file; no timing typed in prose (the docs' own check,
+tests/library/test_docs_site.py, covers the rest). That its blocks run as printed, command-line
+ones included, is tests/library/test_doc_blocks.py's check."""
 
 from __future__ import annotations
 
 import io
 import re
-import shlex
 from contextlib import redirect_stderr
 from pathlib import Path
-
-from restitution.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text()
@@ -29,23 +27,6 @@ def test_the_readme_fits_on_a_page():
 def test_the_two_commands_are_unchanged_and_make_docs_follows_them():
     assert TWO_COMMANDS in README
     assert README.index(TWO_COMMANDS) < README.index("make docs")
-
-
-def _console_examples():
-    for block in re.findall(r"```console\n(.*?)```", README, flags=re.S):
-        command, _, output = block.partition("\n")
-        assert command.startswith("$ restitution ")
-        yield shlex.split(command[len("$ restitution "):]), output
-
-
-def test_each_command_line_example_prints_what_the_readme_shows():
-    examples = list(_console_examples())
-    assert len(examples) >= 3
-    for argv, shown in examples:
-        out = io.StringIO()
-        with redirect_stderr(io.StringIO()):
-            assert main(argv, out=out) == 0, argv
-        assert out.getvalue() == shown, argv
 
 
 def test_the_python_example_runs_and_its_numbers_are_the_librarys():

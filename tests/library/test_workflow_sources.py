@@ -20,16 +20,19 @@ def test_doctests_run():
 
 
 def _tree(tmp_path: Path, files: dict[str, str]) -> Path:
-    src = tmp_path / "src"
+    """A project root holding each package's files in its folder (sources.PACKAGES)."""
+    root = tmp_path / "project"
     for rel, text in files.items():
-        path = src / rel
+        path = root / sources.PACKAGES[rel.split("/")[0]] / rel
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(text)
-    return src
+    return root
 
 
-def _names(src: Path, files) -> set[str]:
-    return {str(f.relative_to(src)) for f in files}
+def _names(root: Path, files) -> set[str]:
+    """Each file relative to its package's folder: restitution/core/a.py, restitution_workflow/x.py."""
+    return {str(f.relative_to(next(root / d for d in sources.PACKAGES.values() if f.is_relative_to(root / d))))
+            for f in files}
 
 
 @pytest.fixture
@@ -71,9 +74,9 @@ def test_an_import_inside_a_function_counts(toy):
 
 
 def test_a_module_named_for_a_later_import_counts(toy):
-    (toy / "restitution/late.py").write_text('class E:\n    runner_module = "restitution.core.b"\n'
-                                             'NOT_A_MODULE = "restitution.core.nothing"\n'
-                                             'DISTRIBUTION = "restitution"\n')
+    (toy / "src/restitution/late.py").write_text('class E:\n    runner_module = "restitution.core.b"\n'
+                                                 'NOT_A_MODULE = "restitution.core.nothing"\n'
+                                                 'DISTRIBUTION = "restitution"\n')
     assert imports_of(toy, "restitution.late") == {"restitution.core.b"}
 
 
@@ -95,7 +98,7 @@ def test_every_module_a_shipped_engine_or_rung_brings_is_an_input_of_the_typed_e
     """The typed-e table reads the engine registry, and each engine's design asks the ladder, which
     reads the rung and build registries: every entry of the three is an input of its rule."""
     src = ROOT / "src"
-    got = _names(src, script_sources(src, ROOT / "workflow" / "scripts" / "typed_e.py"))
+    got = _names(ROOT, script_sources(ROOT, ROOT / "workflow" / "scripts" / "typed_e.py"))
     entries = {f"restitution/{d}/{f.name}" for d in ("dem/engines", "fast/rungs", "fast/builds")
                for f in (src / "restitution" / d).iterdir() if f.suffix == ".py" and f.name != "__init__.py"}
     entries |= {f"restitution/dem/engines/{e.name}/engine.py" for e in (src / "restitution/dem/engines").iterdir()

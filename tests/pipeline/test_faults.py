@@ -1,6 +1,6 @@
 """Faults: killed runs, two runs at once, read-only or full results/, half-written files.
 
-Unit tests cover the pieces (src/restitution_workflow/atomic.py, workflow/tools/guard.py and preflight.py); the slow
+Unit tests cover the pieces (workflow/lib/restitution_workflow/atomic.py, workflow/tools/guard.py and preflight.py); the slow
 tests run the real pipeline (`make outputs`, no TeX) in temporary copies of the project and
 compare what they end with against one clean build, byte for byte.
 """
@@ -97,7 +97,7 @@ def test_every_workflow_script_writes_outputs_through_the_atomic_helpers():
     target the temporary path (or the job's log, which Snakemake does not treat as an output)."""
     offenders = []
     scripts = ROOT / "workflow" / "scripts"
-    helpers = ROOT / "src" / "restitution_workflow"
+    helpers = ROOT / "workflow" / "lib" / "restitution_workflow"
     for path in sorted([*scripts.glob("*.py"), helpers / "pipeline.py", helpers / "latex.py"]):
         for number, line in enumerate(path.read_text().splitlines(), 1):
             code = line.split("#", 1)[0]
@@ -126,10 +126,10 @@ def test_the_atomic_writer_records_what_it_wrote_and_installs_for_shell_rules(tm
     src.parent.mkdir()
     src.write_bytes(b"%PDF finished")
     dest = tmp_path / "results" / "paper" / "x.pdf"
-    proc = subprocess.run([sys.executable, str(ROOT / "src/restitution_workflow/atomic.py"), "install", str(src), str(dest)],
+    proc = subprocess.run([sys.executable, str(ROOT / "workflow/lib/restitution_workflow/atomic.py"), "install", str(src), str(dest)],
                           capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
-    proc = subprocess.run([sys.executable, str(ROOT / "src/restitution_workflow/atomic.py"), "write",
+    proc = subprocess.run([sys.executable, str(ROOT / "workflow/lib/restitution_workflow/atomic.py"), "write",
                            str(tmp_path / "results" / "list.txt")], input="a\nb\n", capture_output=True, text=True)
     assert proc.returncode == 0, proc.stderr
     assert dest.read_bytes() == b"%PDF finished"
@@ -442,7 +442,7 @@ def test_a_damaged_or_deleted_output_is_rebuilt_never_used(built, tmp_path):
 
     check = make(tree, "verify")
     assert check.returncode == 2     # make's status for a failed recipe, as docs/howto/pipeline.md says
-    script = subprocess.run([str(ROOT / ".venv/bin/python"), str(ROOT / "src/restitution_workflow/atomic.py"),
+    script = subprocess.run([str(ROOT / ".venv/bin/python"), str(ROOT / "workflow/lib/restitution_workflow/atomic.py"),
                              "verify", str(tree)], capture_output=True, text=True)
     assert script.returncode == 1    # the script's own, as docs/howto/pipeline.md says
     for rel, what in (("results/kim/reference/eps_curve.csv", "changed"), ("results/kim/connection/fit.json", "changed"),

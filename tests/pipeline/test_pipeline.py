@@ -155,7 +155,7 @@ def test_changing_d1_reruns_what_depends_on_omega_only(built, tmp_path):
     # a registered engine: the typed-e table reads the engine registry; the LAMMPS study does not
     ("dem/engines/yade/contact.py", {"typed_e"}, ("dem_study", "series")),
     # the number formatting: every rule that prints numbers through it, the study's too
-    ("../restitution_workflow/latex.py", {"dem_study", "provenance", "values"}, ("series", "reference_eps_curve")),
+    ("../../workflow/lib/restitution_workflow/latex.py", {"dem_study", "provenance", "values"}, ("series", "reference_eps_curve")),
 ])
 def test_a_change_in_a_module_reruns_only_the_rules_that_import_it(module, reruns, untouched, built, tmp_path):
     tree = copy_built(built, tmp_path / "t")

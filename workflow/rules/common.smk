@@ -15,7 +15,7 @@ from pathlib import Path
 ROOT = Path(workflow.basedir)
 
 from restitution_workflow.provenance import build_commit, versions
-from restitution_workflow.config import ConfigError, check_config  # src/restitution_workflow/config.py
+from restitution_workflow.config import ConfigError, check_config  # workflow/lib/restitution_workflow/config.py
 from restitution_workflow.sources import script_sources
 
 # Every generated file carries this date instead of "now" (the Makefile exports the same value).
@@ -80,7 +80,7 @@ BUILD_COMMIT, BUILD_VERSIONS = build_commit(ROOT), versions()
 
 
 # The one atomic writer, for shell rules: `{ATOMIC} install SRC DEST`, `... | {ATOMIC} write DEST`.
-ATOMIC = f"{shlex.quote(sys.executable)} {shlex.quote(str(ROOT / 'src' / 'restitution_workflow' / 'atomic.py'))}"
+ATOMIC = f"{shlex.quote(sys.executable)} {shlex.quote(str(ROOT / 'workflow' / 'lib' / 'restitution_workflow' / 'atomic.py'))}"
 
 
 def script_file(name):
@@ -100,7 +100,7 @@ def code(name):
     to any of them reruns the rule and its dependants, a change to any other module does not.
     And the software versions (SOFTWARE)."""
     script = ROOT / "workflow" / "scripts" / name
-    return [f"workflow/scripts/{name}", SOFTWARE] + [str(f.relative_to(ROOT)) for f in script_sources(ROOT / "src", script)]
+    return [f"workflow/scripts/{name}", SOFTWARE] + [str(f.relative_to(ROOT)) for f in script_sources(ROOT, script)]
 
 
 # ---------------------------------------------------------------------------------------------

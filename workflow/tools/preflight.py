@@ -2,8 +2,8 @@
 changed since the pipeline wrote them, and whether a failed run died of the disk.
 
 Each problem is one line saying which directory, why (read-only, permission, full, a file in the
-way) and what to do. The errno advice is the atomic writer's (src/restitution_workflow/atomic.py,
-found through the symlink workflow/tools/common), so a job that cannot write
+way) and what to do. The errno advice is the atomic writer's (workflow/lib/restitution_workflow/atomic.py,
+installed beside the package), so a job that cannot write
 and a run that cannot start say the same thing.
 """
 

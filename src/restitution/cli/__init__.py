@@ -24,6 +24,18 @@ COMMANDS = {"series": run_series, "collide": run_collide, "eps": run_eps, "calib
             "lammps": run_lammps, "deck": run_deck, "scene": run_scene}
 
 
+class _ShowVersion(argparse.Action):
+    """``--version``: prints the installed version and exits, reading it only when asked."""
+
+    def __init__(self, option_strings, dest, help=None):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, help=help)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        from importlib.metadata import version
+        print(f"{parser.prog} {version('restitution')}")
+        parser.exit()
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The ``restitution`` command's parser, every subcommand included (the CLI reference page is
     generated from it).
@@ -42,6 +54,7 @@ def build_parser() -> argparse.ArgumentParser:
     """
     parser = OneLineParser(prog="restitution",
                             description="Coefficient of restitution of viscoelastic collisions.")
+    parser.add_argument("--version", action=_ShowVersion, help="print the version and exit")
     sub = parser.add_subparsers(dest="command", required=True, parser_class=OneLineParser)
 
     add_physics_subcommands(sub)
@@ -70,7 +83,7 @@ def main(argv=None, out=None) -> int:
     Raises
     ------
     SystemExit
-        Only from ``--help``, as argparse does.
+        Only from ``--help`` and ``--version``, as argparse does.
 
     Examples
     --------

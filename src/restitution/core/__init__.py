@@ -1,4 +1,4 @@
-"""The physics: the contact law x'' + Omega x^gamma x' + x^alpha = 0 and its exact solutions.
+"""The physics: the contact law x'' + Omega x^alpha + x^gamma x' = 0 and its exact solutions.
 
 exponents (the rational pair alpha, gamma), model (materials, Omega, the inverse scaling), series
 (the perturbation series), damped (the damped-only closed forms), dashpot (alpha = 1, gamma = 0),

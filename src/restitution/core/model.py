@@ -92,7 +92,36 @@ class Material:
     gamma = read_through("exponents", "gamma")
 
     def omega(self, g):
-        """Omega at impact speed(s) g; same shape as g (a float for a scalar)."""
+        """Omega = D1 g^((alpha-1-2 gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1)) at impact speed(s) g.
+
+        Parameters
+        ----------
+        g : float or array_like
+            Impact speeds, > 0.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            Omega, the same shape as ``g`` (a float for a scalar).
+
+        Raises
+        ------
+        ParameterError
+            For a speed that is not positive and finite, or where D1, D2 and g together give an
+            Omega outside [1e-300, 1e300].
+
+        See Also
+        --------
+        restitution.epsilon : eps at these Omega (or give it ``g``, ``D1``, ``D2`` directly).
+        restitution.collide : One whole collision at one Omega.
+
+        Examples
+        --------
+        >>> from restitution import Material
+        >>> m = Material(alpha="3/2", gamma=1, D1=0.000296, D2=0.0109)
+        >>> round(m.omega(0.1), 6)
+        0.472616
+        """
         speeds = positive_speeds(g)
         a, c = self.alpha, self.gamma
         # Work in logs: D2^(-(alpha+1)/(gamma+1)) overflows for tiny D2 long before Omega does.

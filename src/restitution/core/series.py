@@ -265,6 +265,11 @@ def perturbation_series(alpha, gamma, omega_order: int = 4, max_power=11,
         For an unknown direction, an order outside 0-64 or a ``max_power`` beyond the engine's
         limit for these exponents.
 
+    See Also
+    --------
+    restitution.core.series.PerturbationSeries : What it returns, and its methods.
+    restitution.collide : The numerical collision the series approximates.
+
     Examples
     --------
     >>> from restitution import perturbation_series

@@ -1,6 +1,7 @@
 """The source files a workflow script runs: the closure of its imports within the project's two
-packages, declared as the rule's inputs, so that a change to any module a script runs reruns the
-rule, and a change to any other module does not. Snakemake does not follow a script's imports.
+packages (the library under ``src/``, these helpers under ``workflow/lib/``), declared as the
+rule's inputs, so that a change to any module a script runs reruns the rule, and a change to any
+other module does not. Snakemake does not follow a script's imports.
 
 The walk reads the files (``ast``), it imports nothing, and it errs on the side of rerunning: an
 import inside a function counts, and so does a module named in a string assigned to a name (an
@@ -24,17 +25,20 @@ from pathlib import Path
 
 __all__ = ["PACKAGES", "module_file", "imports_of", "closure", "script_sources"]
 
-#: The top-level packages under ``src/`` whose modules count as sources.
-PACKAGES = ("restitution", "restitution_workflow")
+#: The top-level packages whose modules count as sources, each with the folder (relative to the
+#: project's root) that holds it: the library ships alone in its wheel, the helpers stay with the
+#: workflow.
+PACKAGES = {"restitution": Path("src"), "restitution_workflow": Path("workflow/lib")}
 
 
-def module_file(src: Path, dotted: str) -> Path | None:
+def module_file(root: Path, dotted: str) -> Path | None:
     """The file of a module or package of the project, or None.
 
     Parameters
     ----------
-    src : Path
-        The directory holding the packages (the repository's ``src``).
+    root : Path
+        The project's root (the folder of the Snakefile); each package is in its folder of
+        `PACKAGES` below it.
     dotted : str
         A dotted name, such as ``"restitution.core.series"`` or ``"restitution.core"``.
 
@@ -46,11 +50,16 @@ def module_file(src: Path, dotted: str) -> Path | None:
     Examples
     --------
     >>> from pathlib import Path
-    >>> src = Path(__file__).resolve().parents[1]
-    >>> module_file(src, "restitution.core").name, module_file(src, "restitution.core.nothing")
+    >>> root = Path(__file__).resolve().parents[3]
+    >>> module_file(root, "restitution.core").name, module_file(root, "restitution.core.nothing")
     ('__init__.py', None)
+    >>> module_file(root, "restitution_workflow.sources").relative_to(root).as_posix()
+    'workflow/lib/restitution_workflow/sources.py'
     """
-    base = src.joinpath(*dotted.split("."))
+    parts = dotted.split(".")
+    if parts[0] not in PACKAGES:
+        return None
+    base = (root / PACKAGES[parts[0]]).joinpath(*parts)
     for f in (base.with_suffix(".py"), base / "__init__.py"):
         if f.is_file():
             return f
@@ -69,7 +78,7 @@ def _statements(body):
             yield from _statements(case.body)
 
 
-def _imports_in(src: Path, path: Path, dotted: str | None) -> frozenset[str]:
+def _imports_in(root: Path, path: Path, dotted: str | None) -> frozenset[str]:
     """Project modules and packages the file imports; ``dotted`` is its own name (None for a
     script, which belongs to no package and so has no relative imports)."""
     # the module's own name, with a package's __init__ one level down, so that "from . import x"
@@ -94,17 +103,17 @@ def _imports_in(src: Path, path: Path, dotted: str | None) -> frozenset[str]:
             # a module named to be imported on first use (an engine's deck_module = "restitution....");
             # a bare package name ("restitution", as a distribution's name) is no such module
             found.add(node.value.value)
-    return frozenset(m for m in found if module_file(src, m) is not None)
+    return frozenset(m for m in found if module_file(root, m) is not None)
 
 
 @functools.cache
-def imports_of(src: Path, dotted: str) -> frozenset[str]:
+def imports_of(root: Path, dotted: str) -> frozenset[str]:
     """The project's modules and packages that module ``dotted`` imports, anywhere in its file.
 
     Parameters
     ----------
-    src : Path
-        The directory holding the packages.
+    root : Path
+        The project's root.
     dotted : str
         The importing module.
 
@@ -122,23 +131,23 @@ def imports_of(src: Path, dotted: str) -> frozenset[str]:
     Examples
     --------
     >>> from pathlib import Path
-    >>> src = Path(__file__).resolve().parents[1]
-    >>> "restitution.dem.engines" in imports_of(src, "restitution.dem.typed_e_table")
+    >>> root = Path(__file__).resolve().parents[3]
+    >>> "restitution.dem.engines" in imports_of(root, "restitution.dem.typed_e_table")
     True
     """
-    f = module_file(src, dotted)
+    f = module_file(root, dotted)
     if f is None:
-        raise FileNotFoundError(f"{dotted}: no such module under {src}")
-    return _imports_in(src, f, dotted)
+        raise FileNotFoundError(f"{dotted}: no such module under {root}")
+    return _imports_in(root, f, dotted)
 
 
-def closure(src: Path, modules) -> list[Path]:
+def closure(root: Path, modules) -> list[Path]:
     """The files the given modules run: their imports' closure, and each package on the way.
 
     Parameters
     ----------
-    src : Path
-        The directory holding the packages.
+    root : Path
+        The project's root.
     modules : iterable of str
         Dotted names of modules or packages.
 
@@ -156,12 +165,12 @@ def closure(src: Path, modules) -> list[Path]:
     Examples
     --------
     >>> from pathlib import Path
-    >>> src = Path(__file__).resolve().parents[1]
-    >>> files = {str(f.relative_to(src)) for f in closure(src, ["restitution.dem.typed_e_table"])}
-    >>> "restitution/dem/engines/yade/engine.py" in files     # a registry's entry
+    >>> root = Path(__file__).resolve().parents[3]
+    >>> files = {f.relative_to(root).as_posix() for f in closure(root, ["restitution.dem.typed_e_table"])}
+    >>> "src/restitution/dem/engines/yade/engine.py" in files     # a registry's entry
     True
-    >>> "restitution/core/series.py" in {str(f.relative_to(src)) for f in
-    ...                                  closure(src, ["restitution.core.collision"])}
+    >>> "src/restitution/core/series.py" in {f.relative_to(root).as_posix() for f in
+    ...                                      closure(root, ["restitution.core.collision"])}
     False
     """
     seen, todo = set(), list(modules)
@@ -169,19 +178,19 @@ def closure(src: Path, modules) -> list[Path]:
         m = todo.pop()
         if m not in seen:
             seen.add(m)
-            todo.extend(imports_of(src, m) - seen)
+            todo.extend(imports_of(root, m) - seen)
     parts = [m.split(".") for m in seen]
     on_the_way = {".".join(p[:i]) for p in parts for i in range(1, len(p))}
-    return sorted({module_file(src, m) for m in seen | on_the_way})
+    return sorted({module_file(root, m) for m in seen | on_the_way})
 
 
-def script_sources(src: Path, script: Path) -> list[Path]:
+def script_sources(root: Path, script: Path) -> list[Path]:
     """The project files a workflow script runs (the closure of its own imports).
 
     Parameters
     ----------
-    src : Path
-        The directory holding the packages.
+    root : Path
+        The project's root.
     script : Path
         A script outside the packages (``workflow/scripts/*.py``).
 
@@ -198,9 +207,9 @@ def script_sources(src: Path, script: Path) -> list[Path]:
     Examples
     --------
     >>> from pathlib import Path
-    >>> root = Path(__file__).resolve().parents[2]
-    >>> files = script_sources(root / "src", root / "workflow" / "scripts" / "typed_e.py")
+    >>> root = Path(__file__).resolve().parents[3]
+    >>> files = script_sources(root, root / "workflow" / "scripts" / "typed_e.py")
     >>> sorted(f.name for f in files if f.parent.name == "restitution_workflow")
     ['__init__.py', 'atomic.py', 'latex.py', 'pipeline.py']
     """
-    return closure(src, _imports_in(src, script, None))
+    return closure(root, _imports_in(root, script, None))

@@ -20,7 +20,8 @@ from restitution.core.schema_lines import MAX_NAME, allowed as _allowed, field a
 
 
 class ConfigError(ValueError):
-    """A configuration value outside what the workflow accepts (message is one line)."""
+    """A configuration value outside what the workflow accepts; its message is one line naming the
+    field, the value and what is allowed (see :func:`check_config`)."""
 
 
 def _resolve(schema, root):
@@ -154,7 +155,40 @@ def check_config(config: dict, schema_path: str) -> dict:
 
     The schema is checked by Snakemake's own validate(); its error is rewritten as one line naming
     the field. Then what a schema cannot say: NaN and infinities (they pass every bound), and the
-    rules between fields (beyond_schema)."""
+    rules between fields (beyond_schema).
+
+    Parameters
+    ----------
+    config : dict
+        The configuration as read from YAML (``config.yaml`` and any ``--config``); changed in place.
+    schema_path : str
+        The JSON schema, ``workflow/schemas/config.schema.yaml``.
+
+    Returns
+    -------
+    dict
+        ``config`` itself, with the schema's defaults filled in.
+
+    Raises
+    ------
+    ConfigError
+        For the first value the workflow does not accept, in one line.
+
+    Examples
+    --------
+    >>> import yaml
+    >>> from pathlib import Path
+    >>> root = Path(__file__).resolve().parents[3]
+    >>> schema = str(root / "workflow" / "schemas" / "config.schema.yaml")
+    >>> config = yaml.safe_load((root / "config.yaml").read_text())
+    >>> check_config(config, schema)["variants"][0]["name"]      # the paper's material, first
+    'kim'
+    >>> config["variants"][0]["D1"] = -1
+    >>> check_config(config, schema)
+    Traceback (most recent call last):
+    ...
+    restitution_workflow.config.ConfigError: variants[kim].D1 = -1: must be > 0
+    """
     from snakemake.exceptions import WorkflowError
     from snakemake.utils import validate
 
@@ -368,7 +402,7 @@ def precheck_file(path) -> None:
         sys.exit(2)
 
 
-if __name__ == "__main__":  # python src/restitution_workflow/config.py config.yaml: the same check
+if __name__ == "__main__":  # python workflow/lib/restitution_workflow/config.py config.yaml: the same check
     import sys
 
     for arg in sys.argv[1:] or ["config.yaml"]:

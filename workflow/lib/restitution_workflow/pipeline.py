@@ -19,8 +19,8 @@ from pathlib import Path
 
 from .atomic import atomic_path  # a temporary name, then rename
 
-#: The checkout this package is installed from (src/restitution_workflow/ -> the project's root).
-ROOT = Path(__file__).resolve().parents[2]
+#: The checkout this package is installed from (workflow/lib/restitution_workflow/ -> the project's root).
+ROOT = Path(__file__).resolve().parents[3]
 
 
 def _project_root() -> Path:

@@ -9,6 +9,7 @@ does not rebuild pages whose source did not change.
 from __future__ import annotations
 
 import csv
+import importlib
 import inspect
 import json
 import re
@@ -17,8 +18,9 @@ from pathlib import Path
 
 import yaml
 
-ROOT = Path(__file__).resolve().parents[2]
-OUT = ROOT / "docs" / "reference" / "_generated"
+ROOT = Path(__file__).resolve().parents[3]
+DOCS = ROOT / "docs"
+OUT = DOCS / "reference" / "_generated"
 
 
 def _cell(text) -> str:
@@ -97,9 +99,55 @@ def schema_page(title: str, source: Path | dict, intro: str) -> str:
     return "\n".join(lines) + "\n"
 
 
+#: The problems each rung is probed on, first served first: the paper's exponents under either end
+#: rule, then Hertz with delta^(1/4) damping (the exact family, alpha = 2 gamma + 1).
+PROBES = (("3/2", "1", "force"), ("3/2", "1", "overlap"), ("3/2", "1/4", "force"))
+#: The Omegas probed for a rung's domain: every decade the library's numbers span.
+DECADES = range(-300, 301)
+
+
+def _probe(rung) -> tuple[str, str, str]:
+    """(problem probed, Omega domain, reachable bound) of one rung, asked through its own
+    interface (``outside``, ``quote``) without building anything."""
+    import math
+
+    import numpy as np
+
+    from restitution.core.exponents import Exponents
+    from restitution.core.problem import Problem
+    from restitution.fast.rung import TOL_FLOOR, Request
+
+    for alpha, gamma, end in PROBES:
+        problem = Problem(Exponents.parse(alpha, gamma), end)
+        if not rung.serves(Request(problem, np.array([1.0]), TOL_FLOOR)):
+            continue
+        inside = [k for k in DECADES if rung.outside(Request(problem, np.array([10.0 ** k]), TOL_FLOOR)) is None]
+        if not inside:
+            continue
+        lo, hi = inside[0], inside[-1]
+        middle = 10.0 ** inside[len(inside) // 2]
+        quote = rung.quote(Request(problem, np.array([middle]), TOL_FLOOR))
+        everywhere = (lo, hi) == (DECADES[0], DECADES[-1])
+        # a rung reading a build may learn its range from the build (a relation's grid): not known here
+        domain = (f"set by its {quote.needs_build}" if everywhere and quote.needs_build else
+                  "every Omega probed" if everywhere else f"1e{lo} to 1e{hi}") \
+            + (" (with gaps)" if len(inside) != hi - lo + 1 else "")
+        if math.isfinite(quote.bound):
+            reach = f"{quote.bound:.1e}"
+        elif quote.needs_build:
+            reach = f"at least {quote.floor:.0e} (its {quote.needs_build})" if quote.floor else \
+                f"stated by its {quote.needs_build}"
+        else:
+            reach = _cell(quote.reason)
+        return f"{alpha}, {gamma}, {end}", domain, reach
+    return "none probed", "", ""
+
+
 def rungs_page() -> str:
     """The method ladder's rungs in the order the chooser lists them, from the registry itself: the
-    relation rungs of the full ladder (restitution.api.RELATIONS), then restitution.fast.rungs.RUNGS."""
+    relation rungs of the full ladder (restitution.api.RELATIONS), then restitution.fast.rungs.RUNGS;
+    for each, what a user chooses by (the smallest bound it states, its Omega domain, its cost),
+    asked of the rung itself."""
     from restitution.api import RELATIONS
     from restitution.fast.rungs import ladder_rungs
     rungs = ladder_rungs(RELATIONS)
@@ -110,9 +158,18 @@ def rungs_page() -> str:
              "rule. The cost is the rung's declared price per point, which the chooser compares (\"per",
              "request\": priced from the request); exact rungs are taken first wherever they serve.",
              "How the chooser uses them: {doc}`../../explanation/ladder`.", "",
-             "| rung | end rules | exact | declared cost per point |", "| --- | --- | --- | --- |"]
+             "Each rung is asked, without building anything, on the first of these problems it serves:",
+             "the paper's exponents (alpha = 3/2, gamma = 1) under the force rule, then under the overlap",
+             "rule, then Hertz with delta^(1/4) damping (alpha = 3/2, gamma = 1/4). *Omega domain*: the",
+             f"decades 1e{DECADES[0]} to 1e{DECADES[-1]} it does not refuse (`outside`); *smallest bound*:",
+             "the relative error bound it quotes for the tightest tolerance, at a decade in the middle",
+             "of that domain (a rung that reads a build states its bound once the build is made).", "",
+             "| rung | end rules | exact | probed on | Omega domain | smallest bound | declared cost per point |",
+             "| --- | --- | --- | --- | --- | --- | --- |"]
     for i, rung in enumerate(rungs):
+        probed, domain, reach = _probe(rung)
         lines.append(f"| [`{rung.name}`](#rung-{i}) | {', '.join(rung.ends)} | {'yes' if rung.exact else ''} | "
+                     f"{probed} | {domain} | {reach} | "
                      + (f"{rung.cost:.1e} s" if rung.cost else "per request") + " |")
     for i, rung in enumerate(rungs):
         cls = type(rung)
@@ -136,22 +193,94 @@ def speed_page() -> str:
     return "\n".join(lines) + "\n"
 
 
+def _docs_code() -> list[str]:
+    """The Python the documentation runs or shows: each tutorial, and each Python block or code
+    cell of its Markdown pages (a cell's option lines left out)."""
+    code = [p.read_text() for p in sorted((DOCS / "tutorials").glob("*.py"))]
+    for page in sorted(DOCS.rglob("*.md")):
+        if "_build" in page.parts or "_generated" in page.parts:
+            continue
+        for m in re.finditer(r"^```(?:python|\{code-cell\}[^\n]*)\n(.*?)^```", page.read_text(), flags=re.S | re.M):
+            code.append("".join(ln for ln in m.group(1).splitlines(True) if not ln.startswith(":")))
+    return code
+
+
+def tutorial_imports() -> dict[str, list[str]]:
+    """The project's names the documentation's code imports (``from restitution... import name``:
+    the tutorials, and the code of the Markdown pages), by module: each gets an API entry, so a
+    reader can look up whatever a tutorial or a how-to uses."""
+    import ast
+
+    found: dict[str, list[str]] = {}
+    for code in _docs_code():
+        for node in ast.walk(ast.parse(code)):
+            if isinstance(node, ast.ImportFrom) and not node.level and node.module \
+                    and node.module.split(".")[0] in ("restitution", "restitution_workflow"):
+                names = found.setdefault(node.module, [])
+                names += [a.name for a in node.names if a.name not in names]
+    return found
+
+
+def returned_types(objects) -> dict[str, list[str]]:
+    """The classes the given functions return, by their home module, read from their return
+    annotations (other objects are passed over)."""
+    found: dict[str, list[str]] = {}
+    for obj in objects:
+        if not inspect.isfunction(obj):
+            continue
+        ann = inspect.signature(obj).return_annotation
+        cls = sys.modules[obj.__module__].__dict__.get(ann) if isinstance(ann, str) else ann
+        if inspect.isclass(cls):
+            names = found.setdefault(cls.__module__, [])
+            names += [cls.__name__] if cls.__name__ not in names else []
+    return found
+
+
 def api_page() -> str:
-    """The API page: an autosummary of ``restitution.__all__``, ``restitution.dem.__all__`` and the
-    CLI's entry points, so that a name added to ``__all__`` gets its page without editing this site."""
+    """The API page: autosummaries of ``restitution.__all__``, ``restitution.dem.__all__``, the
+    classes their functions return, the CLI's entry points and every project name a tutorial
+    imports, so that a name added to ``__all__`` (or to a tutorial) gets its page without editing
+    this site."""
     import restitution
     import restitution.dem
+
+    listed = {("restitution", n) for n in restitution.__all__} | {("restitution.dem", n) for n in restitution.dem.__all__}
 
     def block(module: str, names) -> list:
         return [f".. currentmodule:: {module}", "", ".. autosummary::", "   :toctree: ../_autosummary", "",
                 *(f"   {n}" for n in names), ""]
 
+    def blocks(by_module: dict) -> list:
+        out = []
+        for module, names in sorted(by_module.items()):
+            names = [n for n in names if (module, n) not in listed]
+            listed.update((module, n) for n in names)
+            out += block(module, names) if names else []
+        return out
+
+    imported = tutorial_imports()
+    public = [getattr(m, n) for m in (restitution, restitution.dem) for n in m.__all__]
+    # the public names' own classes are listed above under their public spelling
+    listed_objects = {id(o) for o in public}
+    returned = returned_types(public + [getattr(importlib.import_module(m), n) for m, ns in imported.items() for n in ns])
+    results = {m: [n for n in ns if id(getattr(importlib.import_module(m), n)) not in listed_objects]
+               for m, ns in returned.items()}
     lines = ["Python API", "==========", "",
-             "The package's public names (``restitution.__all__``), each from its numpydoc docstring.", "",
+             "The package's public names (``restitution.__all__``), each from its numpydoc docstring; a",
+             "class's page lists its methods and properties.", "",
              *block("restitution", restitution.__all__),
              "DEM layer", "---------", "",
              "``restitution.dem.__all__``; the codes' options are mapped in :doc:`../../howto/dem`.", "",
              *block("restitution.dem", restitution.dem.__all__),
+             "What they return", "----------------", "",
+             "The objects the functions of this page return (``collide`` a ``Collision``,",
+             "``perturbation_series`` a ``PerturbationSeries``, ...), at their home modules.", "",
+             *blocks(results),
+             "Names the documentation's code uses", "-----------------------------------", "",
+             "Every other name the documentation's code imports (the :doc:`../../tutorials/index`, the",
+             "how-to pages), at the module it imports it from: the engines' contact laws and designers,",
+             "the LAMMPS runner, the pipeline's config check.", "",
+             *blocks(imported),
              "Command line", "------------", "",
              "The entry point of the ``restitution`` command and its parser (:doc:`../cli`).", "",
              *block("restitution.cli", ["main", "build_parser"])]
@@ -163,6 +292,22 @@ def _write(name: str, text: str) -> None:
     path = OUT / name
     if not path.exists() or path.read_text() != text:
         path.write_text(text)
+
+
+def notebooks(out: Path = DOCS / "tutorials" / "_notebooks") -> list[Path]:
+    """Each tutorial as a Jupyter notebook (jupytext: percent format to .ipynb, outputs left to the
+    reader's kernel), for the tutorials page's download links; written only when changed."""
+    import jupytext
+
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for script in sorted((DOCS / "tutorials").glob("*.py")):
+        path = out / f"{script.stem}.ipynb"
+        text = jupytext.writes(jupytext.read(script, fmt="py:percent"), fmt="ipynb")
+        if not path.exists() or path.read_text() != text:
+            path.write_text(text)
+        written.append(path)
+    return written
 
 
 def generate(app=None) -> None:
@@ -181,6 +326,7 @@ def generate(app=None) -> None:
     _write("rungs.md", rungs_page())
     _write("api.rst", api_page())
     _write("speed_accuracy.md", speed_page())
+    notebooks()
 
 
 def setup(app):
