@@ -139,3 +139,23 @@ rule exact_family:
         "logs/exact_family.log",
     script:
         script_file("exact_family.py")
+
+
+rule feng_calibration:
+    """Feng's calibration formula for the family alpha = 2 gamma + 1 (arXiv:2603.27764) against the
+    library's exact family under both end rules, with the reference integrator as a second method (the
+    supplement's table)."""
+    input:
+        code=code("feng_calibration.py"),
+    output:
+        values="results/paper/feng_values.tex",
+        tex="results/paper/feng_table.tex",
+        table="results/paper/feng_calibration.csv",
+    params:
+        targets=[float(e) for e in config["exact_family"]["calibration_targets"]],
+        powers=[str(q) for q in config["exact_family"]["calibration_powers"]],
+        rtol=float(config["exact_family"]["rtol"]),
+    log:
+        "logs/feng_calibration.log",
+    script:
+        script_file("feng_calibration.py")
