@@ -45,7 +45,7 @@ law_elastic = 1.0 - E.C1 * om ** (-float(A_))
 rel = lambda x: np.abs(x / ref - 1.0)  # noqa: E731
 fig, ax = plt.subplots(figsize=(5.6, 3.9))
 ax.loglog(curve["g"], np.maximum(rel(curve["eps_closed_form"].to_numpy()), 1e-17), color="tab:orange", lw=2.0,
-          label="closed form (this work)")
+          label="uniform approximation")
 rel_loss = lambda x: np.abs((1.0 - x) / (1.0 - ref) - 1.0)  # noqa: E731  (the elastic law is one for 1 - eps)
 ax.loglog(curve["g"], rel_loss(law_elastic), color="tab:green", ls="--", lw=1.5,
           label=r"elastic law $1 - C_1\mu$ (error in $1 - \varepsilon$)")
@@ -122,7 +122,7 @@ if w == 0:
              r"impact speed.")
 else:
     slow, fast = ("elastic", "viscous") if w < 0 else ("viscous", "elastic")
-    units = (rf"In physical units $\Omega = D_1 D_2^{{-(\alpha+1)/(\gamma+1)}} g^{{w}}$ with $w = {frac(w)}$, so for "
+    units = (rf"In physical units $\Omega = D_1 D_2^{{-(\alpha+1)/(\gamma+1)}} g^{{\varpi}}$ with $\varpi = {frac(w)}$, so for "
              rf"the main variant ($D_1 = {sci(mat['D1'], 4)}$, $D_2 = {sci(mat['D2'], 4)}$) slow impacts are {slow} and "
              rf"fast ones {fast}: in the elastic limit $1 - \varepsilon \approx {sci(E.C1 * scale ** (-float(A_)), 5)}\,"
              rf"g^{{{frac(-w * A_)}}}$, in the viscous limit $\varepsilon \approx {sci(V.k * scale, 5)}\,g^{{{frac(w)}}}$. "
@@ -255,13 +255,13 @@ for the main variant
 ($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).
 
 \paragraph{{Viscous limit ($\Omega \to 0$, $\alpha > \gamma$).}}
-With $q = \gamma + 1$, $X = q^{{1/q}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/q$ and $\psi$ the digamma function,
+With $n = \gamma + 1$, $X = n^{{1/n}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/n$ and $\psi$ the digamma function,
 \begin{{equation*}}
 \varepsilon = k\,\Omega\left[1 - \Omega\left(c_{{\log}} \ln\frac{{1}}{{\Omega}} + c_{{\mathrm{{v}}}}\right)\right] + O(\Omega^3 \ln^2 \Omega),
-\qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{\mathrm{{v}}}} = r\,(kL - J - k),
+\qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k),
 \end{{equation*}}
-where $J = X^{{\alpha+1}}[\psi((\alpha+1)/q) - \psi(1/q)]/q$ and
-$L = \ln(\lambda Q/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln Q = \ln X - \gamma_E - \psi(1/q) - \ln q$,
+where $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/n) - \psi(1/n)]/n$ and
+$L = \ln(\lambda \mathcal{{B}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{B}} = \ln X - \gamma_E - \psi(1/n) - \ln n$,
 so every constant is in closed form. (The subscript of $c_{{\mathrm{{v}}}}$ keeps it apart from Kim's $c_0$ of
 Sec.~\ref{{sec:connection}}, an unrelated number.) Here $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
 $c_{{\mathrm{{v}}}} = {sci(V.c_const, 10)}$, and contact lasts $\tau_c = (2\ln(1/\Omega) + L)/\lambda$ with
@@ -304,7 +304,7 @@ $[10^{{-8}}, 10^{{8}}]$, where $\varepsilon$ and $1 - \varepsilon$ come from the
 (\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
 proven bound; we call it the bound for brevity below. A variant with $\alpha \leq \gamma$ has no such form:
 for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
-is not known. \FigUniformEps{} shows the relative error in $\varepsilon(g)$ of the main variant from
+is not known. The article's figure of the error of $\varepsilon(g)$ shows the relative error in $\varepsilon(g)$ of the main variant from
 the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
 Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's bounds for every exponent pair of the
