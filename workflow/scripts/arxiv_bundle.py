@@ -5,7 +5,7 @@
 # generated file it reads at the same relative path as in the project (so the source is not
 # edited), and the bibliography as typeset (`restitution.bbl`, which LaTeX reads for the job
 # `restitution`), not the `.bib`: arXiv runs pdflatex, not bibtex. Nothing outside the bundle is
-# referred to. The archive is byte-reproducible: sorted members, the fixed build date, no owners.
+# referred to. The data tables behind the engine and calibration numbers travel with it. The archive is byte-reproducible: sorted members, the fixed build date, no owners.
 
 # %%
 import gzip
@@ -26,6 +26,8 @@ members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path
            "supplement.tex": Path(snakemake.input.supplement_tex), "supplement.bbl": Path(snakemake.input.supplement_bbl),
            Path(snakemake.input.supplement_aux).as_posix(): Path(snakemake.input.supplement_aux)}
 for path in snakemake.input.generated:
+    members[Path(path).as_posix()] = Path(path)
+for path in snakemake.input.data:     # data tables at their project paths, read by no TeX run
     members[Path(path).as_posix()] = Path(path)
 for name in members:
     # relative, inside the bundle: no absolute path, no way out

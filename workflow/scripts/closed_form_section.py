@@ -45,10 +45,10 @@ law_elastic = 1.0 - E.C1 * om ** (-float(A_))
 rel = lambda x: np.abs(x / ref - 1.0)  # noqa: E731
 fig, ax = plt.subplots(figsize=(5.6, 3.9))
 ax.loglog(curve["g"], np.maximum(rel(curve["eps_closed_form"].to_numpy()), 1e-17), color="tab:orange", lw=2.0,
-          label="closed form (this work)")
+          label="uniform approximation")
 rel_loss = lambda x: np.abs((1.0 - x) / (1.0 - ref) - 1.0)  # noqa: E731  (the elastic law is one for 1 - eps)
 ax.loglog(curve["g"], rel_loss(law_elastic), color="tab:green", ls="--", lw=1.5,
-          label=r"elastic law $1 - C_1\delta$ (error in $1 - \varepsilon$)")
+          label=r"elastic law $1 - C_1\mu$ (error in $1 - \varepsilon$)")
 ax.loglog(curve["g"], rel(law_viscous), color="tab:blue", ls="-.", lw=1.5, label=r"viscous law $k\Omega$")
 if "eps_printed" in curve and curve["eps_printed"].notna().any():
     ax.loglog(curve["g"], rel(curve["eps_printed"].to_numpy()), color="tab:red", ls=":", lw=2.0,
@@ -122,7 +122,7 @@ if w == 0:
              r"impact speed.")
 else:
     slow, fast = ("elastic", "viscous") if w < 0 else ("viscous", "elastic")
-    units = (rf"In physical units $\Omega = D_1 D_2^{{-(\alpha+1)/(\gamma+1)}} g^{{w}}$ with $w = {frac(w)}$, so for "
+    units = (rf"In physical units $\Omega = D_1 D_2^{{-(\alpha+1)/(\gamma+1)}} g^{{\varpi}}$ with $\varpi = {frac(w)}$, so for "
              rf"the main variant ($D_1 = {sci(mat['D1'], 4)}$, $D_2 = {sci(mat['D2'], 4)}$) slow impacts are {slow} and "
              rf"fast ones {fast}: in the elastic limit $1 - \varepsilon \approx {sci(E.C1 * scale ** (-float(A_)), 5)}\,"
              rf"g^{{{frac(-w * A_)}}}$, in the viscous limit $\varepsilon \approx {sci(V.k * scale, 5)}\,g^{{{frac(w)}}}$. "
@@ -131,12 +131,12 @@ else:
              rf"Brilliantov et al.~\cite{{brilliantov1996}}; for this variant the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
              rf"fast impacts give $\varepsilon \propto g^{{{frac(w)}}}$, a regime that law, an expansion about "
              rf"elastic impacts, does not describe. Both laws are leading order only. At the slowest impact of "
-             rf"Fig.~\ref{{fig:eps}} ($g = {sci(float(curve['g'].iloc[0]), 2)}$) the elastic law is off by "
+             rf"\FigEps{{}} ($g = {sci(float(curve['g'].iloc[0]), 2)}$) the elastic law is off by "
              rf"{sci(100 * err_elastic_gmin, 2)}\,\% in $1 - \varepsilon$; at the fastest "
              rf"($g = {sci(float(curve['g'].iloc[-1]), 2)}$) the viscous law is off by {sci(100 * err_viscous_gmax, 2)}\,\% "
              rf"in $\varepsilon$. " + LAW_RANGE[(g_el is not None, g_vi is not None)]
-             + r" Everywhere in between, and for a result with a stated bound anywhere, use the closed "
-               r"form~(\ref{eq:uniform}) below (Fig.~\ref{fig:uniform-eps}).")
+             + r" Everywhere in between, and for a result with a measured error anywhere, use the uniform "
+               r"approximation~(\ref{eq:uniform}) below (\FigUniformEps).")
 
 
 # the viscous expansion against the reference integrator (printed beside it)
@@ -145,7 +145,7 @@ ref_check = collide((ex["alpha"], ex["gamma"]), CHECK_OMEGA, rtol=1e-12).eps
 check_lead = abs(float(V.eps(CHECK_OMEGA, order=0)) / ref_check - 1.0)
 check_first = abs(float(V.eps(CHECK_OMEGA, order=1)) / ref_check - 1.0)
 end_power = 1 + (g_ + 1) / (a_ - g_) if a_ > g_ else None
-end_clause = (r"so for these exponents the term is smaller than the omitted $O(\delta^3)$: it is the leading effect of "
+end_clause = (r"so for these exponents the term is smaller than the omitted $O(\mu^3)$: it is the leading effect of "
               r"ending at zero force, not the next term of the expansion" if end_power > 3 else
               r"so for these exponents it is the first correction after $C_2$")
 
@@ -209,7 +209,7 @@ for name in p.variants:
                             rf"{sci(f['bound_one_minus_eps'], 2)} \\")
     else:
         why = (r"none: $\alpha \geq 2\gamma + 1$, the bodies can stick" if "stick" in f["reason"]
-               else r"none: $\alpha \leq \gamma$ (see Table~\ref{tab:uniform})")
+               else r"none: $\alpha \leq \gamma$, as for the force rule")
         overlap_rows.append(rf"{esc(name)} & {ab} & \multicolumn{{4}}{{l}}{{{why}}} \\")
 overlap_names = [n for n in p.variants if overlap_forms[n]["available"]]
 n_overlap = max((len(overlap_forms[n]["a"]) for n in overlap_names), default=0)
@@ -240,28 +240,28 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
 
 
 force_tables = two_tables("lllllllll", r"variant & $\alpha$ & $\gamma$ & $b$ & $c_3$ & $\sigma$ & $m_0$ & $m_1$ & "
-                          r"bound $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
+                          r"$2\times$ max.\ error $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
 overlap_tables = two_tables("lllllll", r"variant & $\alpha$ & $\gamma$ & $\kappa$ & $n + 1$ & "
                             r"bound $\varepsilon$ & bound $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
-\section{{The coefficient of restitution in closed form}}
+\section{{Both limits and the uniform approximation}}
 \label{{sec:closed-form}}
 
 The paper set out to give $\varepsilon$ analytically in the viscous-dominant regime. Its relation
-does not hold (Sec.~\ref{{sec:ledger}}), but the two limits can be derived exactly, and one
-formula joins them. All of it is computed by \texttt{{restitution.core.asymptotics}} and
-\texttt{{restitution.core.uniform}}; the numbers below are for the main variant
+does not hold (Sec.~\ref{{sec:ledger}}), but the two limits can be derived exactly (the derivations are in the
+article's appendix), and a uniform approximation with fitted coefficients joins them. The numbers below are
+for the main variant
 ($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).
 
 \paragraph{{Viscous limit ($\Omega \to 0$, $\alpha > \gamma$).}}
-With $q = \gamma + 1$, $X = q^{{1/q}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/q$ and $\psi$ the digamma function,
+With $n = \gamma + 1$, $X = n^{{1/n}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/n$ and $\psi$ the digamma function,
 \begin{{equation*}}
 \varepsilon = k\,\Omega\left[1 - \Omega\left(c_{{\log}} \ln\frac{{1}}{{\Omega}} + c_{{\mathrm{{v}}}}\right)\right] + O(\Omega^3 \ln^2 \Omega),
-\qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{\mathrm{{v}}}} = r\,(kL - J - k),
+\qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k),
 \end{{equation*}}
-where $J = X^{{\alpha+1}}[\psi((\alpha+1)/q) - \psi(1/q)]/q$ and
-$L = \ln(\lambda Q/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln Q = \ln X - \gamma_E - \psi(1/q) - \ln q$,
+where $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/n) - \psi(1/n)]/n$ and
+$L = \ln(\lambda \mathcal{{B}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{B}} = \ln X - \gamma_E - \psi(1/n) - \ln n$,
 so every constant is in closed form. (The subscript of $c_{{\mathrm{{v}}}}$ keeps it apart from Kim's $c_0$ of
 Sec.~\ref{{sec:connection}}, an unrelated number.) Here $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
 $c_{{\mathrm{{v}}}} = {sci(V.c_const, 10)}$, and contact lasts $\tau_c = (2\ln(1/\Omega) + L)/\lambda$ with
@@ -271,29 +271,28 @@ first correction by {sci(check_first, 2)}, the size expected of the omitted term
 $\varepsilon$ is a relative $O(\Omega^2 \ln^2 \Omega)$.
 
 \paragraph{{Elastic limit ($\Omega \to \infty$).}}
-With $\nu = (\gamma+1)/(\alpha+1)$ and $\delta = \Omega^{{-\nu}}$,
-$1 - \varepsilon = C_1 \delta - C_2 \delta^2 + O(\delta^3)$ with
-$C_1 = ((\alpha+1)/2)^{{\nu-1}} \mathrm{{Beta}}(\nu, 3/2)$ and $C_2 = \nu C_1^2$ (for $\alpha = 3/2$, $\gamma = 1/2$
-these are the constants of Ram\'irez et al.~\cite{{ramirez1999}}; the derivation for any exponents is in
-\texttt{{restitution.core.asymptotics}}); here $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$. Contact ends where the
-force vanishes, before the deformation is back to zero, and that adds $-\beta\,\delta^{{1 + (\gamma+1)/(\alpha-\gamma)}}$,
+With $\nu = (\gamma+1)/(\alpha+1)$ and $\mu = \Omega^{{-\nu}}$,
+$1 - \varepsilon = C_1 \mu - C_2 \mu^2 + O(\mu^3)$ with
+$C_1 = ((\alpha+1)/2)^{{\nu-1}} \mathrm{{B}}(\nu, 3/2)$ and $C_2 = \nu C_1^2$ (for $\alpha = 3/2$, $\gamma = 1/2$
+these are the constants of Ram\'irez et al.~\cite{{ramirez1999}}); here $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$. Contact ends where the
+force vanishes, before the deformation is back to zero, and that adds $-\beta\,\mu^{{1 + (\gamma+1)/(\alpha-\gamma)}}$,
 $\beta = (\alpha-\gamma)/((\gamma+1)(\alpha+1))$; here the power is {frac(end_power)} and $\beta = {sci(E.E, 6)}$, {end_clause}.
 Contact lasts $\tau_c = T_0\,\Omega^{{-1/(\alpha+1)}}$ with $T_0 = {sci(E.T0, 10)}$.
 
 {units}
 
-\paragraph{{One formula for every $\Omega$.}}
-With $z = b\,\Omega$, $u = \tanh(\tfrac{{\sigma}}{{2}} \ln z)$ and $\eta = 1/\varepsilon$,
+\paragraph{{A uniform approximation for every $\Omega$.}}
+With $z = b\,\Omega$, $u = \tanh(\tfrac{{\sigma}}{{2}} \ln z)$ and $\zeta = 1/\varepsilon$,
 \begin{{equation}}
-\eta - 1 = \frac{{1}}{{k}}\left[\frac{{b\,(1+z)^{{1-\nu}}}}{{z}} + \frac{{c_{{\log}} \ln(1 + 1/z) + c_3}}{{(1+z)^2}}\right]
+\zeta - 1 = \frac{{1}}{{k}}\left[\frac{{b\,(1+z)^{{1-\nu}}}}{{z}} + \frac{{c_{{\log}} \ln(1 + 1/z) + c_3}}{{(1+z)^2}}\right]
  + (1+u)^{{m_0}} (1-u)^{{m_1}} \sum_{{j=0}}^{{n}} a_j u^j ,
 \label{{eq:uniform}}
 \end{{equation}}
 with $b = (k C_1)^{{1/(1-\nu)}}$ and $c_3 = c_{{\mathrm{{v}}}} + c_{{\log}} \ln b - (1-\nu)\,b - k$. The bracket alone has
 the exact leading and first-order terms at the viscous end, and the sum, vanishing like $\Omega^{{\sigma m_0}}$,
-cannot change them. At the elastic end the bracket has only the leading term $C_1\delta$: the $\delta^2$ term of
-$\eta - 1$, $(C_1^2 - C_2)\delta^2$, is left to the fitted sum, which vanishes like $\Omega^{{-\sigma m_1}}$ with
-$\sigma m_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\delta^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
+cannot change them. At the elastic end the bracket has only the leading term $C_1\mu$: the $\mu^2$ term of
+$\zeta - 1$, $(C_1^2 - C_2)\mu^2$, is left to the fitted sum, which vanishes like $\Omega^{{-\sigma m_1}}$ with
+$\sigma m_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
 leading order only at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
 {sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The bounds below, measured over
 $10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($n = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
@@ -302,37 +301,20 @@ the compiled integrator on every other point of a grid over $10^{{-9}} \leq \Ome
 the shape $(\sigma, m_0, m_1)$ is chosen by the error on the points in between, and the bound stated is twice the
 largest relative error on those points and on thirty-two further points drawn at random in
 $[10^{{-8}}, 10^{{8}}]$, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference
-(Table~\ref{{tab:uniform}}; Fig.~\ref{{fig:uniform-error}}). A variant with $\alpha \leq \gamma$ has no such form:
+(\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
+proven bound; we call it the bound for brevity below. A variant with $\alpha \leq \gamma$ has no such form:
 for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
-is not known. Figure~\ref{{fig:uniform-eps}} shows the relative error in $\varepsilon(g)$ of the main variant from
-the formula, from the two leading-order laws and from the paper's relation, over the speeds of Fig.~\ref{{fig:eps}}. The numbers of Table~\ref{{tab:uniform}}, typed as printed, change
+is not known. The article's figure of the error of $\varepsilon(g)$ shows the relative error in $\varepsilon(g)$ of the main variant from
+the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
 Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's bounds for every exponent pair of the
 stability atlas. The library prints the formula as one line of C with every number
 written out (\texttt{{restitution eps --method closed-form --json}}).
 
-\begin{{table}}[htbp]
-\centering\small
-\caption{{The uniform form (\ref{{eq:uniform}}) of each variant: its constants, shape and the relative error
-bounds in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$ (over $\Omega \geq 1$),
-measured on points not used in the fit. Generated by \texttt{{closed\_form\_section.py}}.}}
-\label{{tab:uniform}}
-{force_tables}
-\end{{table}}
-
-\begin{{figure}}[htbp]
-\centering
-\includegraphics[width=0.85\linewidth]{{results/paper/closed_form_eps.pdf}}
-\caption{{Relative error in $\varepsilon(g)$ of the main variant (the speeds of Fig.~\ref{{fig:eps}}) against the
-reference integration: the closed form (\ref{{eq:uniform}}), the two leading-order laws in physical units, and the
-relation with the paper's printed $c_0$--$c_2$ (gaps: no real $\varepsilon$). Made by \texttt{{closed\_form\_section.py}}.}}
-\label{{fig:uniform-eps}}
-\end{{figure}}
-
 \begin{{figure}}[htbp]
 \centering
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
-\caption{{Relative error of the closed forms against the compiled integrator, in $\varepsilon$ (left) and in
+\caption{{Relative error of the uniform approximations against the compiled integrator, in $\varepsilon$ (left) and in
 $1 - \varepsilon$ (right), for every variant that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
 Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the stated bounds. Made by
 \texttt{{closed\_form\_section.py}}.}}

@@ -90,7 +90,7 @@ if (ex.alpha, ex.gamma) == HERTZ:
         return float(np.polyfit(np.log(omega[top]), np.log(err[top]), 1)[0]), err
 
     # Ramirez et al.'s two terms as published: the first term they omit is the end-of-contact term
-    # E delta^end_power (this project's), so their error falls like that term, not like delta^3.
+    # beta mu^end_power (this project's, mu = Omega^-A), so their error falls like that term, not like delta^3.
     known["eps_ramirez"] = series.eps(omega, order=2, end_term=False)
     slope, err = error_slope(known["eps_ramirez"])
     expected = -A * min(3.0, series.end_power)
@@ -109,7 +109,8 @@ if (ex.alpha, ex.gamma) == HERTZ:
     check("the same with this work's end-of-contact term, error exponent", "", slope,
           tol["series_slope_tolerance"], abs(slope - expected) <= tol["series_slope_tolerance"],
           what=f"slope (expected {expected:g})",
-          note=f"E = {series.E:.7g}, delta^{series.end_power:g}; error {err[-1]:.2e} at the largest Omega",
+          note=f"end-of-contact coefficient {series.E:.7g}, times Omega^({-A * series.end_power:g}); error "
+               f"{err[-1]:.2e} at the largest Omega",
           omega_range=(omega[top].min(), omega[top].max()), n=int(top.sum()), digits=2)
     known["eps_pade"] = pade_mp2011(omega)
     delta = omega ** (-A)

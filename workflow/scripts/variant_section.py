@@ -138,7 +138,7 @@ else:
     out.append(r"Against known results (Table~\ref{tab:validation}): " + "; ".join(parts) + ".")
 form = read_json(snakemake.input.form)
 if form["available"]:
-    out.append(rf"Its closed form (\ref{{eq:uniform}}) has $b = {sci(form['b'], 12)}$, $c_3 = {sci(form['c3'], 12)}$, "
+    out.append(rf"Its uniform approximation (\ref{{eq:uniform}}) has $b = {sci(form['b'], 12)}$, $c_3 = {sci(form['c3'], 12)}$, "
                rf"$(\sigma, m_0, m_1) = ({sci(form['sigma'], 4)}, {form['m0']}, {form['m1']})$ and the coefficients "
                rf"$a_0, \dots, a_{{{len(form['a']) - 1}}}$ of Table~\ref{{tab:uniform}}; its relative error is at most "
                rf"{sci(form['bound_eps'], 2)} in $\varepsilon$ for $\Omega$ from {sci(form['omega_range'][0], 1)} to "
