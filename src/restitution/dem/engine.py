@@ -41,6 +41,10 @@ class Engine:
     runner_module : str or None
         The dotted name of the module that runs the real engine (its ``available()`` says whether
         the engine is installed).
+    sample_setting : tuple
+        (a setting of :meth:`Engine.contact`, the keywords :meth:`Engine.setting` is given to
+        find it again): the registry's tests invert every engine's law through it, so that a new
+        engine brings its own case instead of editing theirs.
     scene_option_schema : dict
         {option: its JSON schema} (a description, an ``enum`` or a ``type``, and a ``default`` unless
         the option is required); empty where scenes cannot name the engine. The scene file's schema
@@ -60,6 +64,7 @@ class Engine:
     version: str = ""
     deck_module: str | None = None
     runner_module: str | None = None
+    sample_setting: tuple = ()
     scene_option_schema: dict = {}
 
     @property

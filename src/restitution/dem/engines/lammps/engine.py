@@ -20,6 +20,8 @@ class LammpsEngine(Engine):
 
     name = "lammps"
     label = "LAMMPS"
+    sample_setting = ({"normal": "hertz", "k_n": 1e6, "damping": "viscoelastic", "eta_n0": 3.0, "limit_damping": False},
+                      {"normal": "hertz", "k_n": 1e6, "damping": "viscoelastic", "limit_damping": False})
     typed_e, version = TYPED_E, LAMMPS_VERSION
     runner_module = "restitution.dem.engines.lammps.run"
     deck_module = "restitution.dem.engines.lammps.deck"

@@ -19,6 +19,7 @@ class LiggghtsEngine(Engine):
 
     name = "liggghts"
     label = "LIGGGHTS"
+    sample_setting = ({"model": "hertz", "E": 1e7, "nu": 0.3, "e": 0.6}, {"model": "hertz", "E": 1e7, "nu": 0.3})
     typed_e, version = TYPED_E, LIGGGHTS_VERSION
     runner_module = "restitution.dem.engines.liggghts.run"
     deck_module = "restitution.dem.engines.liggghts.deck"

@@ -19,6 +19,7 @@ class YadeEngine(Engine):
 
     name = "yade"
     label = "Yade"
+    sample_setting = ({"law": "viscel", "tc": 1e-4, "en": 0.6}, {"law": "viscel"})
     typed_e, version = TYPED_E, YADE_VERSION
     runner_module = "restitution.dem.engines.yade.run"
 

@@ -1,0 +1,37 @@
+"""Kratos DEMApplication as one Engine (restitution.dem.engine)."""
+
+from __future__ import annotations
+
+from ...engine import Engine
+from .contact import kratos_contact, kratos_e
+from .design import TYPED_E, kratos_design
+
+__all__ = ["KRATOS", "KRATOS_VERSION"]
+
+#: The release the typed-e rows are confirmed in (tests/library/test_dem_typed_e.py)
+KRATOS_VERSION = "Kratos DEMApplication 10.4.4"
+
+
+class KratosEngine(Engine):
+    """Kratos' DEM_D_Hertz_viscous_Coulomb and DEM_D_Linear_viscous_Coulomb: a setting is
+    kratos_contact's keywords (law, e, E, nu, E2, nu2, wall)."""
+
+    name = "kratos"
+    label = "Kratos"
+    sample_setting = ({"law": "hertz", "e": 0.6, "E": 1e7, "nu": 0.3}, {"law": "hertz", "E": 1e7, "nu": 0.3})
+    typed_e, version = TYPED_E, KRATOS_VERSION
+    runner_module = "restitution.dem.engines.kratos.run"
+
+    def contact(self, pair, **setting):
+        return kratos_contact(pair, **setting)
+
+    def setting(self, pair, contact, **given) -> dict:
+        """The typed e (COEFFICIENT_OF_RESTITUTION) that gives ``contact``'s damping, with ``given``
+        (law and materials) for the rest."""
+        return {**given, "e": kratos_e(contact)["COEFFICIENT_OF_RESTITUTION"]}
+
+    def design(self, pair, **target) -> dict:
+        return kratos_design(pair, **target)
+
+
+KRATOS = KratosEngine()
