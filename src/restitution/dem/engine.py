@@ -41,10 +41,16 @@ class Engine:
     runner_module : str or None
         The dotted name of the module that runs the real engine (its ``available()`` says whether
         the engine is installed).
+    materials_module : str or None
+        The dotted name of the module that audits the engine's material file, where its contacts
+        are set in one (not a deck): its ``is_materials_file(text)`` claims a file ``restitution
+        deck`` is given, its ``audit_materials(text, speeds, radius, read_file)`` answers it.
     sample_setting : tuple
         (a setting of :meth:`Engine.contact`, the keywords :meth:`Engine.setting` is given to
         find it again): the registry's tests invert every engine's law through it, so that a new
         engine brings its own case instead of editing theirs.
+    scene_input_file : str
+        The file ``restitution scene --out`` writes the scene's input lines to.
     scene_option_schema : dict
         {option: its JSON schema} (a description, an ``enum`` or a ``type``, and a ``default`` unless
         the option is required); empty where scenes cannot name the engine. The scene file's schema
@@ -64,8 +70,10 @@ class Engine:
     version: str = ""
     deck_module: str | None = None
     runner_module: str | None = None
+    materials_module: str | None = None
     sample_setting: tuple = ()
     scene_option_schema: dict = {}
+    scene_input_file: str = "input.lammps"
 
     @property
     def scene_options(self) -> dict | None:
@@ -95,6 +103,11 @@ class Engine:
     def deck(self):
         """The engine's deck dialect module, or None where the library reads no deck of it."""
         return None if self.deck_module is None else importlib.import_module(self.deck_module)
+
+    @property
+    def materials(self):
+        """The engine's material-file module, or None where its contacts are not set in one."""
+        return None if self.materials_module is None else importlib.import_module(self.materials_module)
 
     @property
     def runner(self):

@@ -32,7 +32,7 @@ from ...pair import Pair
 from ...typed_e import thornton_betan
 
 __all__ = ["KRATOS_LAWS", "KRATOS_E_RANGE", "LINEAR_ZETA_STEP", "kratos_modulus", "linear_force_eps", "kratos_linear_zeta",
-           "kratos_damping_ratio", "kratos_contact", "kratos_e"]
+           "kratos_damping_ratio", "kratos_contact", "kratos_e", "kratos_typed_e"]
 
 #: The discontinuum laws mapped here: Kratos' name -> ours
 KRATOS_LAWS = {"DEM_D_Hertz_viscous_Coulomb": "hertz", "DEM_D_Linear_viscous_Coulomb": "linear"}
@@ -141,3 +141,19 @@ def kratos_e(contact: Contact) -> dict:
         return {"DAMPING_GAMMA": zeta, "COEFFICIENT_OF_RESTITUTION": e if KRATOS_E_RANGE[0] <= e <= KRATOS_E_RANGE[1]
                 else None}
     raise ParameterError("alpha", contact.alpha, "Kratos' viscous Coulomb laws are Hertz (3/2, 1/4) or linear (1, 0)")
+
+
+def kratos_typed_e(contact: Contact) -> float:
+    """The COEFFICIENT_OF_RESTITUTION to type for ``contact``'s damping: Hertz, Thornton's fit
+    inverted; linear, the e of the damping ratio nearest on Kratos' bisection grid (its answers are
+    the midpoints of cells LINEAR_ZETA_STEP wide), so that Kratos lands on that ratio exactly.
+    ParameterError where no e in Kratos' range gives it."""
+    if contact.alpha == 1:
+        zeta = contact.D2 / (2.0 * math.sqrt(contact.D1))
+        e = linear_force_eps((round(zeta / LINEAR_ZETA_STEP - 0.5) + 0.5) * LINEAR_ZETA_STEP)
+    else:
+        e = kratos_e(contact)["COEFFICIENT_OF_RESTITUTION"]
+    if e is None or not KRATOS_E_RANGE[0] <= e <= KRATOS_E_RANGE[1]:
+        raise ParameterError("COEFFICIENT_OF_RESTITUTION", e, "Kratos' law reaches this damping with no e in "
+                                                              f"[{KRATOS_E_RANGE[0]}, {KRATOS_E_RANGE[1]}]")
+    return e

@@ -3,12 +3,9 @@ each typed e really gives (TYPED_E)."""
 
 from __future__ import annotations
 
-import math
-
-from ....core.errors import ParameterError
 from ...design import calibrated, refuse_passing_through
 from ...pair import Pair
-from .contact import KRATOS_E_RANGE, LINEAR_ZETA_STEP, kratos_contact, kratos_e, linear_force_eps
+from .contact import kratos_contact, kratos_typed_e
 
 __all__ = ["kratos_design", "TYPED_E"]
 
@@ -26,15 +23,7 @@ def kratos_design(pair: Pair, *, eps: float, law: str, E: float, nu: float, E2: 
     stiffness = {"law": law, "E": E, "nu": nu, "E2": E2, "nu2": nu2, "wall": wall}
     contact = calibrated(kratos_contact(pair, e=0.5, **stiffness), eps, g)
     refuse_passing_through(contact, pair, eps, g, "Kratos")
-    if contact.alpha == 1:
-        # Kratos' bisection answers the midpoint of a cell of its grid: type the e of the nearest one
-        zeta = contact.D2 / (2.0 * math.sqrt(contact.D1))
-        e = linear_force_eps((round(zeta / LINEAR_ZETA_STEP - 0.5) + 0.5) * LINEAR_ZETA_STEP)
-    else:
-        e = kratos_e(contact)["COEFFICIENT_OF_RESTITUTION"]
-    if e is None or not KRATOS_E_RANGE[0] <= e <= KRATOS_E_RANGE[1]:
-        raise ParameterError("eps", eps, f"Kratos' {law} law reaches it with no COEFFICIENT_OF_RESTITUTION in "
-                                         f"[{KRATOS_E_RANGE[0]}, {KRATOS_E_RANGE[1]}]")
+    e = kratos_typed_e(contact)
     real = kratos_contact(pair, e=e, **stiffness)
     return {"COEFFICIENT_OF_RESTITUTION": e, "eps": real.eps(g), **real.as_dict(), "contact_time": real.contact_time(g)}
 

@@ -1,8 +1,10 @@
-"""Kratos DEMApplication as one Engine (restitution.dem.engine)."""
+"""Kratos DEMApplication as one Engine (restitution.dem.engine): contact laws, designer, runner,
+material-file audit and scenes (``code: kratos``)."""
 
 from __future__ import annotations
 
 from ...engine import Engine
+from . import scene
 from .contact import kratos_contact, kratos_e
 from .design import TYPED_E, kratos_design
 
@@ -21,6 +23,9 @@ class KratosEngine(Engine):
     sample_setting = ({"law": "hertz", "e": 0.6, "E": 1e7, "nu": 0.3}, {"law": "hertz", "E": 1e7, "nu": 0.3})
     typed_e, version = TYPED_E, KRATOS_VERSION
     runner_module = "restitution.dem.engines.kratos.run"
+    materials_module = "restitution.dem.engines.kratos.materials"
+    scene_option_schema = {"law": scene.LAW_OPTION}
+    scene_input_file = "MaterialsDEM.json"
 
     def contact(self, pair, **setting):
         return kratos_contact(pair, **setting)
@@ -32,6 +37,24 @@ class KratosEngine(Engine):
 
     def design(self, pair, **target) -> dict:
         return kratos_design(pair, **target)
+
+    def end_rule(self, options: dict) -> str:
+        return "force"           # both laws clip a negative total normal force
+
+    def material_keys(self, options: dict) -> tuple:
+        return ("E", "nu"), "Kratos' viscous Coulomb laws"
+
+    def models(self, options: dict) -> list:
+        return scene.kratos_models(options["law"])
+
+    def scene_setting(self, scene_, contact, fit) -> dict:
+        return scene.scene_setting(scene_, contact, fit)
+
+    def contact_lines(self, scene_, contact, setting: dict) -> list:
+        return scene.contact_lines(scene_, contact, setting)
+
+    def input_lines(self, scene_, rows: list) -> list:
+        return scene.input_lines(scene_, rows)
 
 
 KRATOS = KratosEngine()
