@@ -35,6 +35,11 @@ class Engine:
         restitution coefficient e.
     version : str
         The engine release the ``typed_e`` rows are confirmed in (by running them in it).
+    typed_e_steps : int
+        Steps per contact of the coarsest of the three runs (then twice and four times as many)
+        that confirm the ``typed_e`` rows in the engine (tests/library/test_dem_typed_e.py).
+    install_hint : str
+        What installs the real engine (the reason a test that needs it is skipped with).
     deck_module : str or None
         The dotted name of the engine's deck dialect module, where it has one (:attr:`deck`
         imports it when first asked, so that the registry never imports the deck reader).
@@ -68,6 +73,8 @@ class Engine:
     label: str = ""
     typed_e: dict = {}
     version: str = ""
+    typed_e_steps: int = 0
+    install_hint: str = ""
     deck_module: str | None = None
     runner_module: str | None = None
     materials_module: str | None = None
@@ -98,6 +105,12 @@ class Engine:
     def design(self, pair, **target) -> dict:
         """The setting that reaches an eps (``target``: eps, g and the fixed keywords)."""
         self._missing("designer")
+
+    def typed_e_case(self, row: str, e: float, pair, material: dict) -> tuple:
+        """(the contact the ``typed_e`` row ``row`` gives at a typed e for ``pair``, the engine's
+        setting as its runner's ``eps_runs(pair, [(setting, g, dt, t_run), ...])`` takes it);
+        ``material``: E and nu where the row's stiffness reads them."""
+        self._missing("typed-e runs")
 
     @property
     def deck(self):

@@ -22,6 +22,8 @@ class KratosEngine(Engine):
     label = "Kratos"
     sample_setting = ({"law": "hertz", "e": 0.6, "E": 1e7, "nu": 0.3}, {"law": "hertz", "E": 1e7, "nu": 0.3})
     typed_e, version = TYPED_E, KRATOS_VERSION
+    typed_e_steps = 500
+    install_hint = "pip install -e '.[kratos]' (make test does it)"
     runner_module = "restitution.dem.engines.kratos.run"
     materials_module = "restitution.dem.engines.kratos.materials"
     scene_option_schema = {"law": scene.LAW_OPTION}
@@ -37,6 +39,10 @@ class KratosEngine(Engine):
 
     def design(self, pair, **target) -> dict:
         return kratos_design(pair, **target)
+
+    def typed_e_case(self, row, e, pair, material) -> tuple:
+        law = row.split()[1]
+        return kratos_contact(pair, law=law, e=e, **material), {"law": law, "e": e, **material}
 
     def end_rule(self, options: dict) -> str:
         return "force"           # both laws clip a negative total normal force

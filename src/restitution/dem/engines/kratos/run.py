@@ -28,7 +28,7 @@ from ...extrapolate import richardson
 from ...pair import Pair
 from .contact import KRATOS_LAWS
 
-__all__ = ["available", "kratos_states", "kratos_eps_runs", "kratos_eps_extrapolated", "KRATOS_INSTALL"]
+__all__ = ["available", "kratos_states", "kratos_eps_runs", "eps_runs", "kratos_eps_extrapolated", "KRATOS_INSTALL"]
 
 #: What to type where Kratos is missing (skip reasons, messages)
 KRATOS_INSTALL = "pip install -e '.[kratos]' (KratosDEMApplication)"
@@ -214,6 +214,10 @@ def kratos_eps_runs(pair: Pair, cases: list, timeout: float = 900.0) -> list[flo
             raise ArithmeticError("the bodies had not separated at the end of the Kratos run")
         eps.append(-state["rel"] / g)   # approach: v1 - v2 = g > 0 (the sphere's -g on a wall)
     return eps
+
+
+#: The runner form every engine's has: eps of each case (setting, g, dt, t_run)
+eps_runs = kratos_eps_runs
 
 
 def kratos_eps_extrapolated(pair: Pair, setting: dict, speeds, t_run: dict, t_c: dict, gamma,
