@@ -17,7 +17,7 @@ from engine_case import MATERIAL, PAIR  # noqa: E402
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "howto"
 TABLE_PAGE = DOCS / "dem.md"
 #: The pages with the per-code examples (the README's DEM section until issue 45).
-EXAMPLE_PAGES = [DOCS / f"{code}.md" for code in ("lammps", "liggghts", "yade")]
+EXAMPLE_PAGES = [DOCS / f"{code}.md" for code in ("lammps", "liggghts", "yade", "kratos")]
 
 
 def _page_table():
@@ -79,6 +79,8 @@ def test_the_lammps_rows_are_what_lammps_does(limit):
 
 
 def test_the_dem_pages_examples_print_what_the_library_gives():
+    from restitution.dem.engines.kratos.contact import kratos_contact
+    from restitution.dem.engines.kratos.design import kratos_design
     from restitution.dem.engines.liggghts.design import liggghts_design
     from restitution.dem.engines.yade.contact import yade_viscel_contact
     from restitution.dem.engines.yade.design import yade_design
@@ -92,6 +94,10 @@ def test_the_dem_pages_examples_print_what_the_library_gives():
         '"cn": 0.2337': yade_design(pair, eps=0.5, law="viscel-kn", kn=2e4)["cn"],
         '"betan": 0.2330': yade_design(pair, eps=0.5, law="mindlin", E=5e7, nu=0.3)["betan"],
         '"en": 0.49999': yade_design(pair, eps=0.5, law="mindlin", E=5e7, nu=0.3)["en"],
+        '"COEFFICIENT_OF_RESTITUTION": 0.54993': kratos_design(pair, eps=0.55, law="hertz", E=5e7, nu=0.3)[
+            "COEFFICIENT_OF_RESTITUTION"],
+        "# eps 0.549994": kratos_design(pair, eps=0.55, law="linear", E=5e7, nu=0.3)["eps"],
+        "# 0.59997": kratos_contact(pair, law="linear", e=0.6, E=5e7, nu=0.3).eps(1.0),
     }
     for snippet, value in shown.items():
         assert snippet in text, snippet
