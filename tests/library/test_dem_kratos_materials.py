@@ -147,6 +147,7 @@ def test_what_is_refused_in_one_line(tmp_path, change, word):
     ({"ElementType": "SphericContPartDEMElement3D"}, "bonded"),
     ({"GlobalDamping": 0.1}, "GlobalDamping"),
     ({"VirtualMassCoefficient": 0.5}, "VirtualMassCoefficient"),
+    ({"Dimension": 2, "ElementType": "CylinderPartDEMElement2D"}, "2D"),
 ])
 def test_project_parameters_that_change_the_contact_are_refused(tmp_path, parameters, word):
     path = _write(tmp_path, _materials(), parameters)

@@ -13,8 +13,9 @@ integration scheme and the element type. Under both mapped laws eps depends on t
 the radius and the speed enter D1, D2, the contact time and whether the overlap reaches the
 centres, not eps.
 
-Refused in one line: a law not mapped (JKR, DMT, the stress-dependent and conical-damage laws, any
-other), bonded (continuum) particles, a relation naming a material not in the list, a sphere
+Refused in one line: a law not mapped (JKR, DMT, the stress-dependent and conical-damage laws, the
+2D variants, any other), bonded (continuum) particles, a 2D analysis, a GlobalDamping other than 0,
+a VirtualMassCoefficient other than 1, a relation naming a material not in the list, a sphere
 without density or radius, a JSON file that is not a MaterialsDEM.json (another engine's, or
 Kratos' ProjectParametersDEM.json).
 """
@@ -176,6 +177,9 @@ def _parameters(text: str | None) -> dict:
     if isinstance(element, str) and "Cont" in element:
         raise MaterialsError("ElementType", element, "bonded (continuum) particles: their contacts follow the "
                                                      "continuum law, not mapped")
+    if doc.get("Dimension", 3) != 3 or (isinstance(element, str) and "Cylinder" in element):
+        raise MaterialsError("Dimension", doc.get("Dimension"), "a 2D analysis (cylinders): its contacts are not "
+                                                                "the spheres' mapped here")
     if doc.get("GlobalDamping", 0.0) != 0.0:
         raise MaterialsError("GlobalDamping", doc["GlobalDamping"], "a damping force outside the contact law acts "
                              "on every particle: eps is not the contact's; audited with 0 only")
