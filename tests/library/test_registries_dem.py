@@ -134,7 +134,7 @@ def test_the_scene_schema_takes_the_engines_and_their_options_from_the_registry(
     """No engine or option is listed by hand in scene.schema.yaml: the stub's own option is checked
     by the schema like a shipped one's, and refused in one line naming it."""
     schema = scene_schema()
-    assert schema["properties"]["code"]["enum"] == scene_engines() == ["lammps", "liggghts", "stub"]
+    assert schema["properties"]["code"]["enum"] == scene_engines() == ["lammps", "liggghts", "kratos", "stub"]
     options = schema["properties"]["options"]["properties"]
     assert options["stub_limit"]["type"] == "boolean" and options["limitForce"]["type"] == "boolean"
     assert "stub - stub_limit" in schema["properties"]["options"]["description"]

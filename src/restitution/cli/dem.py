@@ -28,7 +28,8 @@ def add_scene_subcommand(subparsers) -> None:
                     "geometry breaks.")
     s.add_argument("file", help="the scene file")
     s.add_argument("--json", action="store_true", help="machine-readable output")
-    s.add_argument("--out", metavar="DIR", help="also write DIR/scene.json, DIR/input.lammps and DIR/table.txt")
+    s.add_argument("--out", metavar="DIR", help="also write DIR/scene.json, the input lines (DIR/input.lammps; "
+                                                "DIR/MaterialsDEM.json for Kratos) and DIR/table.txt")
 
 
 def scene_table(res: dict) -> str:
@@ -112,7 +113,7 @@ def run_scene(args, out) -> int:
         try:
             d.mkdir(parents=True, exist_ok=True)
             (d / "scene.json").write_text(text)
-            (d / "input.lammps").write_text("\n".join(res["input_lines"]) + "\n")
+            (d / ENGINES[res["code"]].scene_input_file).write_text("\n".join(res["input_lines"]) + "\n")
             (d / "table.txt").write_text(table)
         except OSError as exc:
             raise ParameterError("out", args.out, f"cannot be written ({exc.strerror})") from None
@@ -122,8 +123,10 @@ def run_scene(args, out) -> int:
 
 def add_deck_subcommand(subparsers) -> None:
     d = subparsers.add_parser(
-        "deck", help="the eps a LAMMPS or LIGGGHTS input deck really gives, for every type pair and flat wall",
-        description="Reads pair_style granular (LAMMPS) or pair_style gran model hertz|hooke (LIGGGHTS) decks. "
+        "deck", help="the eps a LAMMPS or LIGGGHTS input deck (or a Kratos MaterialsDEM.json) really gives, for "
+                     "every type pair and flat wall",
+        description="Reads pair_style granular (LAMMPS) or pair_style gran model hertz|hooke (LIGGGHTS) decks, and "
+                    "Kratos MaterialsDEM.json files (--radius per material id where the model part gives none). "
                     "One --g: five speeds over two decades around it; several: those speeds.")
     d.add_argument("file", help="the input script")
     d.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s)")
@@ -165,6 +168,10 @@ def run_deck(args, out) -> None:
         # LAMMPS opens these relative to where it runs: the deck's directory, as it is normally started
         with open(os.path.join(base, name), encoding="utf-8", errors="replace") as fh:
             return fh.read()
+    from ..dem.engines import ENGINES
+    for engine in ENGINES.values():      # an engine whose contacts a material file sets claims its file
+        if engine.materials is not None and engine.materials.is_materials_file(text):
+            return _run_materials(engine, args, text, speeds, read_file, out)
     res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file)
     if any("damping tsuji" in row["model"] for row in res["pairs"] + res["walls"]):
         print(f"restitution deck: note: {TSUJI_VERSION_NOTE}", file=sys.stderr)
@@ -209,6 +216,35 @@ def run_deck(args, out) -> None:
             t, w = p["types"][0], p.get("wall_type")
             shared = f" (entry {t} {w}: types {min(t, w)} {max(t, w)} get eps = e from it too)" if w else ""
             out.write(f"  for eps = e exactly{shared}: {p['exact_line']}\n")
+
+
+def _run_materials(engine, args, text: str, speeds: list, read_file, out) -> None:
+    """``restitution deck`` on an engine's material file (Kratos' MaterialsDEM.json)."""
+    if args.density:
+        raise ParameterError("density", args.density, f"{engine.label}'s material file gives the densities")
+    res = engine.materials.audit_materials(text, speeds, _per_type("radius", args.radius), read_file)
+    for row in res["not_audited"]:
+        print(f"restitution deck: relation {row['relation']} ({' - '.join(row['materials'])}) not audited: "
+              f"{row['why']}", file=sys.stderr)
+    if args.json:
+        write_json(res, out)
+        return
+    dt = res["time_step"]
+    step = "not given (no ProjectParametersDEM.json beside it)" if dt is None else f"{dt:g} ({res['scheme']})"
+    out.write(f"# {res['code']} materials file; time step {step}\n")
+    for row in res["relations"] + res["walls"]:
+        a, b = row["materials"]
+        name = f"relation {row['relation']} wall: {a} on a wall of {b}" if row in res["walls"] else \
+            f"relation {row['relation']}: {a} - {b}"
+        out.write(f"{name}: {row['model']} (typed e {row['typed_e']:.6g}), end rule {row['end']}; radius from "
+                  f"{', '.join(dict.fromkeys(row['radius_from']))}\n")
+        steps = row["steps_per_contact"] or [None] * len(row["speeds"])
+        for g, e, n in zip(row["speeds"], row["eps"], steps):
+            out.write(f"  g {g:<12.6g} " + (f"passes through: the largest overlap reaches {row['overlap_limit']:.4g} "
+                                            "(no eps)\n" if e is None else
+                                            f"eps {e:.10f}" + (f"  ({n:.0f} steps per contact)" if n else "") + "\n"))
+        if row["exact_line"]:
+            out.write(f"  for eps = e: {row['exact_line']}\n")
 
 
 def _stage_head(stage: dict, k: int, n: int) -> str:

@@ -35,12 +35,27 @@ class Engine:
         restitution coefficient e.
     version : str
         The engine release the ``typed_e`` rows are confirmed in (by running them in it).
+    typed_e_steps : int
+        Steps per contact of the coarsest of the three runs (then twice and four times as many)
+        that confirm the ``typed_e`` rows in the engine (tests/library/test_dem_typed_e.py).
+    install_hint : str
+        What installs the real engine (the reason a test that needs it is skipped with).
     deck_module : str or None
         The dotted name of the engine's deck dialect module, where it has one (:attr:`deck`
         imports it when first asked, so that the registry never imports the deck reader).
     runner_module : str or None
         The dotted name of the module that runs the real engine (its ``available()`` says whether
         the engine is installed).
+    materials_module : str or None
+        The dotted name of the module that audits the engine's material file, where its contacts
+        are set in one (not a deck): its ``is_materials_file(text)`` claims a file ``restitution
+        deck`` is given, its ``audit_materials(text, speeds, radius, read_file)`` answers it.
+    sample_setting : tuple
+        (a setting of :meth:`Engine.contact`, the keywords :meth:`Engine.setting` is given to
+        find it again): the registry's tests invert every engine's law through it, so that a new
+        engine brings its own case instead of editing theirs.
+    scene_input_file : str
+        The file ``restitution scene --out`` writes the scene's input lines to.
     scene_option_schema : dict
         {option: its JSON schema} (a description, an ``enum`` or a ``type``, and a ``default`` unless
         the option is required); empty where scenes cannot name the engine. The scene file's schema
@@ -58,9 +73,14 @@ class Engine:
     label: str = ""
     typed_e: dict = {}
     version: str = ""
+    typed_e_steps: int = 0
+    install_hint: str = ""
     deck_module: str | None = None
     runner_module: str | None = None
+    materials_module: str | None = None
+    sample_setting: tuple = ()
     scene_option_schema: dict = {}
+    scene_input_file: str = "input.lammps"
 
     @property
     def scene_options(self) -> dict | None:
@@ -86,10 +106,21 @@ class Engine:
         """The setting that reaches an eps (``target``: eps, g and the fixed keywords)."""
         self._missing("designer")
 
+    def typed_e_case(self, row: str, e: float, pair, material: dict) -> tuple:
+        """(the contact the ``typed_e`` row ``row`` gives at a typed e for ``pair``, the engine's
+        setting as its runner's ``eps_runs(pair, [(setting, g, dt, t_run), ...])`` takes it);
+        ``material``: E and nu where the row's stiffness reads them."""
+        self._missing("typed-e runs")
+
     @property
     def deck(self):
         """The engine's deck dialect module, or None where the library reads no deck of it."""
         return None if self.deck_module is None else importlib.import_module(self.deck_module)
+
+    @property
+    def materials(self):
+        """The engine's material-file module, or None where its contacts are not set in one."""
+        return None if self.materials_module is None else importlib.import_module(self.materials_module)
 
     @property
     def runner(self):

@@ -142,7 +142,7 @@ def scene_schema() -> dict:
     --------
     >>> s = scene_schema()
     >>> s["properties"]["code"]["enum"], s["properties"]["options"]["properties"]["limitForce"]["type"]
-    (['lammps', 'liggghts'], 'boolean')
+    (['lammps', 'liggghts', 'kratos'], 'boolean')
     """
     import yaml
 

@@ -1,7 +1,7 @@
 """What engines do with a typed restitution coefficient e and a pair of elastic moduli, shared by
 several of them: the check that e is one, the linear dashpot's damping ratio beta(e) and its
-inverse, the effective modulus E* of two materials, and the linear spring-dashpot set from a
-contact time and e."""
+inverse, the effective modulus E* of two materials, the linear spring-dashpot set from a
+contact time and e, and Thornton's fit of the Hertz damping ratio to e (Yade, Kratos)."""
 
 from __future__ import annotations
 
@@ -10,7 +10,8 @@ import math
 from ..core.errors import ParameterError, require_positive_finite
 from .contact import Contact
 
-__all__ = ["unit_e", "beta_of_e", "e_of_beta", "effective_modulus", "linear_from_time_and_e", "time_and_e_of_linear"]
+__all__ = ["unit_e", "beta_of_e", "e_of_beta", "effective_modulus", "linear_from_time_and_e", "time_and_e_of_linear",
+           "thornton_betan", "THORNTON_H"]
 
 
 def unit_e(name: str, e: float) -> float:
@@ -57,3 +58,16 @@ def time_and_e_of_linear(contact: Contact, form: str = "the (t_c, e) form") -> t
         raise ParameterError("D2", contact.D2, f"needs D2 < 2 sqrt(D1): {form} is underdamped")
     ln_e = -math.pi * zeta / math.sqrt(1.0 - zeta ** 2)
     return -2.0 * ln_e / contact.D2, math.exp(ln_e)
+
+
+#: Thornton, Cummins and Cleary (2013), Table 2: the coefficients h_1..h_10 of the polynomial in
+#: (B7), with which Yade and Kratos turn e into the Hertz-Mindlin damping ratio beta_n (B6).
+THORNTON_H = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711, -7206.864, 11494.29, -11342.18, 6276.757,
+              -1489.915)
+
+
+def thornton_betan(en: float) -> float:
+    """beta_n = sqrt(1 / (1 - (1 + en)^2 exp(a(en))) - 1), a(en) = sum h_k en^k (their (B6)-(B7))."""
+    en = unit_e("en", en)
+    a = sum(h * en ** (k + 1) for k, h in enumerate(THORNTON_H))
+    return math.sqrt(1.0 / (1.0 - (1.0 + en) ** 2 * math.exp(a)) - 1.0)

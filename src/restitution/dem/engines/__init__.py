@@ -3,6 +3,7 @@ name; scenes, the typed-e table, designers and the command line look engines up 
 
 from __future__ import annotations
 
+from .kratos.engine import KRATOS
 from .lammps.engine import LAMMPS
 from .liggghts.engine import LIGGGHTS
 from .mercurydpm.engine import MERCURYDPM
@@ -11,7 +12,7 @@ from .yade.engine import YADE
 __all__ = ["ENGINES", "scene_engines"]
 
 #: name -> Engine, in the order tables list them
-ENGINES = {e.name: e for e in (LAMMPS, LIGGGHTS, YADE, MERCURYDPM)}
+ENGINES = {e.name: e for e in (LAMMPS, LIGGGHTS, YADE, MERCURYDPM, KRATOS)}
 
 
 def scene_engines() -> list[str]:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from ...engine import Engine
 from . import scene
-from .contact import TSUJI_VERSION_NOTE, lammps_contact, lammps_eta_n0
+from .contact import TSUJI_VERSION_NOTE, lammps_contact, lammps_eta_n0, lammps_pair_coeff
 from .design import TYPED_E, lammps_design
 
 __all__ = ["LAMMPS", "LAMMPS_VERSION"]
@@ -20,7 +20,11 @@ class LammpsEngine(Engine):
 
     name = "lammps"
     label = "LAMMPS"
+    sample_setting = ({"normal": "hertz", "k_n": 1e6, "damping": "viscoelastic", "eta_n0": 3.0, "limit_damping": False},
+                      {"normal": "hertz", "k_n": 1e6, "damping": "viscoelastic", "limit_damping": False})
     typed_e, version = TYPED_E, LAMMPS_VERSION
+    typed_e_steps = 4000
+    install_hint = "pip install -e '.[dem]'"
     runner_module = "restitution.dem.engines.lammps.run"
     deck_module = "restitution.dem.engines.lammps.deck"
     scene_option_schema = {
@@ -40,6 +44,11 @@ class LammpsEngine(Engine):
 
     def design(self, pair, **target) -> dict:
         return lammps_design(pair, **target)
+
+    def typed_e_case(self, row, e, pair, material) -> tuple:
+        setting = {"normal": "hertz", "k_n": 3e8, "damping": row.split("damping ")[1].split()[0].rstrip(","),
+                   "eta_n0": e, "limit_damping": row.endswith("limit_damping")}
+        return lammps_contact(pair, **setting), lammps_pair_coeff(**setting)
 
     def end_rule(self, options: dict) -> str:
         return "force" if options["limit_damping"] else "overlap"

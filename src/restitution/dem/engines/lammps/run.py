@@ -16,7 +16,7 @@ import sys
 
 from ...pair import Pair
 
-__all__ = ["available", "lammps_eps", "lammps_eps_extrapolated", "lammps_wall_eps"]
+__all__ = ["available", "lammps_eps", "eps_runs", "lammps_eps_extrapolated", "lammps_wall_eps"]
 
 
 def _load():
@@ -101,6 +101,11 @@ set atom 2 vx {v2!r}""", f"pair_style {style}\n{pair_coeff}", 0.5 * gap, dt, t_r
     if x[1, 0] - x[0, 0] <= gap:
         raise ArithmeticError("the spheres had not separated at the end of the run")
     return float(-(v[0, 0] - v[1, 0]) / g)
+
+
+def eps_runs(pair: Pair, cases: list) -> list[float]:
+    """eps of each case (pair_coeff line, g, dt, t_run): the runner form every engine's has."""
+    return [lammps_eps(pair, pair_coeff, g, dt, t_run) for pair_coeff, g, dt, t_run in cases]
 
 
 def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: float, t_run: float,

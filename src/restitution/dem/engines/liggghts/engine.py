@@ -19,7 +19,10 @@ class LiggghtsEngine(Engine):
 
     name = "liggghts"
     label = "LIGGGHTS"
+    sample_setting = ({"model": "hertz", "E": 1e7, "nu": 0.3, "e": 0.6}, {"model": "hertz", "E": 1e7, "nu": 0.3})
     typed_e, version = TYPED_E, LIGGGHTS_VERSION
+    typed_e_steps = 8000
+    install_hint = "as root, apt-get install liggghts (make test does it)"
     runner_module = "restitution.dem.engines.liggghts.run"
     deck_module = "restitution.dem.engines.liggghts.deck"
     scene_option_schema = {
@@ -36,6 +39,12 @@ class LiggghtsEngine(Engine):
 
     def design(self, pair, **target) -> dict:
         return liggghts_design(pair, **target)
+
+    def typed_e_case(self, row, e, pair, material) -> tuple:
+        from .run import liggghts_pair_style
+        model = {"model": "hertz"} if "hertz" in row else {"model": "hooke", "characteristic_velocity": 0.5}
+        setting = {"e": e, "limit_force": row.endswith("limitForce on"), **material, **model}
+        return liggghts_contact(pair, **setting), liggghts_pair_style(**setting)
 
     def end_rule(self, options: dict) -> str:
         return "force" if options["limitForce"] else "overlap"

@@ -20,7 +20,7 @@ from ...extrapolate import richardson
 from ...pair import Pair
 from .contact import LIGGGHTS_MODEL_TYPES
 
-__all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "liggghts_states", "liggghts_eps_extrapolated",
+__all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "eps_runs", "liggghts_states", "liggghts_eps_extrapolated",
            "liggghts_wall_eps_runs"]
 
 _MARK = "RESTITUTION-RESULT"
@@ -116,6 +116,11 @@ def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[f
             raise ArithmeticError("the spheres had not separated at the end of the LIGGGHTS run")
         eps.append(-rel / g)   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
     return eps
+
+
+def eps_runs(pair: Pair, cases: list) -> list[float]:
+    """eps of each case (contact lines, g, dt, t_run): the runner form every engine's has."""
+    return liggghts_eps_runs(pair, cases)
 
 
 def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:

@@ -16,6 +16,7 @@ class MercuryEngine(Engine):
 
     name = "mercurydpm"
     label = "MercuryDPM"
+    sample_setting = ({"t_c": 1e-4, "e": 0.6}, {})
 
     def contact(self, pair, **setting):
         return mercury_linear_contact(pair, **setting)

@@ -24,7 +24,7 @@ from scipy.optimize import brentq
 from ....core.errors import ParameterError, one_of, require_positive_finite
 from ...contact import Contact
 from ...pair import Pair
-from ...typed_e import effective_modulus, linear_from_time_and_e, time_and_e_of_linear, unit_e
+from ...typed_e import THORNTON_H, effective_modulus, linear_from_time_and_e, thornton_betan, time_and_e_of_linear
 
 __all__ = ["yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact", "yade_mindlin_en", "thornton_betan",
            "THORNTON_H"]
@@ -49,19 +49,6 @@ def yade_viscel_setting(pair: Pair, contact: Contact, *, given: str) -> dict:
         return {"kn": 2.0 * pair.m * contact.D1, "cn": 2.0 * pair.m * contact.D2}
     tc, en = time_and_e_of_linear(contact, "ViscElMat's (tc, en) form")
     return {"tc": tc, "en": en}
-
-
-#: Thornton, Cummins and Cleary (2013), Table 2: the coefficients h_1..h_10 of the polynomial in
-#: (B7), with which Yade turns en into the Hertz-Mindlin damping ratio beta_n (B6).
-THORNTON_H = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711, -7206.864, 11494.29, -11342.18, 6276.757,
-              -1489.915)
-
-
-def thornton_betan(en: float) -> float:
-    """beta_n = sqrt(1 / (1 - (1 + en)^2 exp(a(en))) - 1), a(en) = sum h_k en^k (their (B6)-(B7))."""
-    en = unit_e("en", en)
-    a = sum(h * en ** (k + 1) for k, h in enumerate(THORNTON_H))
-    return math.sqrt(1.0 / (1.0 - (1.0 + en) ** 2 * math.exp(a)) - 1.0)
 
 
 def yade_mindlin_contact(pair: Pair, *, E: float, nu: float, en: float | None = None,

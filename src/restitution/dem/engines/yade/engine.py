@@ -19,7 +19,10 @@ class YadeEngine(Engine):
 
     name = "yade"
     label = "Yade"
+    sample_setting = ({"law": "viscel", "tc": 1e-4, "en": 0.6}, {"law": "viscel"})
     typed_e, version = TYPED_E, YADE_VERSION
+    typed_e_steps = 2000
+    install_hint = "as root, apt-get install yade (make test does it)"
     runner_module = "restitution.dem.engines.yade.run"
 
     def contact(self, pair, *, law: str, **setting):
@@ -33,6 +36,12 @@ class YadeEngine(Engine):
 
     def design(self, pair, **target) -> dict:
         return yade_design(pair, **target)
+
+    def typed_e_case(self, row, e, pair, material) -> tuple:
+        from .run import mindlin_material, viscel_material
+        if "ViscElMat" in row:
+            return yade_viscel_contact(pair, tc=1e-4, en=e), viscel_material(pair, tc=1e-4, en=e)
+        return yade_mindlin_contact(pair, en=e, **material), mindlin_material(pair, en=e, **material)
 
 
 YADE = YadeEngine()

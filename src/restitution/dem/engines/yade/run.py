@@ -22,7 +22,7 @@ from pathlib import Path
 from ...extrapolate import richardson
 from ...pair import Pair
 
-__all__ = ["available", "yade_eps_runs", "yade_states", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
+__all__ = ["available", "yade_eps_runs", "eps_runs", "yade_states", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
 
 _MARK = "RESTITUTION-RESULT "
 
@@ -85,6 +85,11 @@ def yade_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float
             raise ArithmeticError("the spheres had not separated at the end of the Yade run")
         eps.append(-rel / case[3])   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
     return eps
+
+
+def eps_runs(pair: Pair, cases: list) -> list[float]:
+    """eps of each case ((material, ip2, law), g, dt, t_run): the runner form every engine's has."""
+    return yade_eps_runs(pair, [(*setting, g, dt, t_run) for setting, g, dt, t_run in cases])
 
 
 def yade_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
