@@ -52,10 +52,17 @@ from .asymptotics import elastic_limit
 from .errors import ParameterError
 
 __all__ = ["SchwagerPoeschelSeries", "overlap_damping_coefficients", "schwager_poeschel_series",
-           "end_of_contact_eps", "S_POWER"]
+           "end_of_contact_eps", "S_POWER", "INTERPOLANTS", "END_COEFFICIENTS"]
 
 #: s = Omega^(-S_POWER): the expansion variable sqrt(delta), delta = Omega^(-(gamma+1)/(alpha+1)).
 S_POWER = Fraction(3, 10)
+
+#: eps_f = u + a u^(3/2) delta^(5/2) + b u^2 delta^5 + O(delta^(15/2)): (a, b), derived in the docstring.
+END_COEFFICIENTS = (Fraction(4, 15), Fraction(13, 150))
+
+#: (half_width, nodes) of the two Chebyshev interpolants of eps_o: the first gives the c_n, their
+#: difference the c_n's accuracy.
+INTERPOLANTS = ((0.2, 24), (0.3, 30))
 
 # The velocity on the way in and out is integrated in r = sqrt(y) for y below R_SWITCH**2, where
 # y^(1/2) is not smooth in time; in time elsewhere, where the turning point is.
@@ -170,7 +177,8 @@ def end_of_contact_eps(eps_overlap, delta):
     """
     u = np.asarray(eps_overlap, dtype=float)
     d = np.asarray(delta, dtype=float)
-    return u + (4.0 / 15.0) * u ** 1.5 * d ** 2.5 + (13.0 / 150.0) * u * u * d ** 5
+    a, b = (float(q) for q in END_COEFFICIENTS)
+    return u + a * u ** 1.5 * d ** 2.5 + b * u * u * d ** 5
 
 
 @dataclass(frozen=True)
@@ -217,11 +225,12 @@ def _assemble(c: np.ndarray, kmax: int) -> np.ndarray:
     h[0:kmax + 1:2] = c[:kmax // 2 + 1]
     u32 = _power_series(c, 1.5, n)
     u2 = _series_product(c, c, n)
+    a, b = (float(q) for q in END_COEFFICIENTS)
     for m in range(n + 1):
         if 5 + 2 * m <= kmax:
-            h[5 + 2 * m] += (4.0 / 15.0) * u32[m]
+            h[5 + 2 * m] += a * u32[m]
         if 10 + 2 * m <= kmax:
-            h[10 + 2 * m] += (13.0 / 150.0) * u2[m]
+            h[10 + 2 * m] += b * u2[m]
     return h
 
 
@@ -255,8 +264,7 @@ def schwager_poeschel_series(kmax: int = 10) -> SchwagerPoeschelSeries:
         raise ParameterError("kmax", kmax, "an integer in [5, 14]")
     n = kmax // 2
     order = max(n, 2)
-    first = overlap_damping_coefficients(order, half_width=0.2, nodes=24)
-    second = overlap_damping_coefficients(order, half_width=0.3, nodes=30)
+    first, second = (overlap_damping_coefficients(order, half_width=w, nodes=n) for w, n in INTERPOLANTS)
     limit = elastic_limit(("3/2", "1/2"))
     exact = np.array([1.0, -limit.C1, limit.C2])
     c = first.copy()
