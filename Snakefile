@@ -27,6 +27,7 @@ include: "workflow/rules/reference.smk"  # reference integrations (trajectories,
 include: "workflow/rules/connection.smk" # c0-c2 three ways, eps(g) every way, the claims ledger
 include: "workflow/rules/figures.smk"    # figures 1-4 (PDF + PNG)
 include: "workflow/rules/variants.smk"   # validation, cross-variant figure, generated sections
+include: "workflow/rules/prior_series.smk" # Schwager-Poeschel series, term by term
 include: "workflow/rules/closed_form.smk" # eps in closed form: the uniform form of every variant
 include: "workflow/rules/values.smk"     # every number the manuscript prints, as LaTeX macros
 include: "workflow/rules/stability.smk"  # appendix: the stability atlas at the extremes (issue 6)
