@@ -38,6 +38,9 @@ class OverlapLaw(Rung):
             return f"Omega above {LAW_MAX:g} (where the law's exponential correction may still show)"
         return None
 
+    def edges(self, req):
+        return (LAW_MAX,)
+
     def bound(self, req, built):
         from ...core.overlap_limit import overlap_limit
         lim = overlap_limit(req.ex)

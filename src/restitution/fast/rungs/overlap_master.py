@@ -22,6 +22,10 @@ class OverlapMaster(Rung):
             return f"Omega outside [{OMEGA_LO:g}, {OMEGA_HI:g}] (the overlap curve's range)"
         return None
 
+    def edges(self, req):
+        curve = req.builds.get(OVERLAP_CURVE)
+        return (OMEGA_LO if curve is None else curve.omega_lo, OMEGA_HI)
+
     def needs(self, req):
         return OVERLAP_CURVE
 
