@@ -2,17 +2,15 @@
 1e-7, answered in one call, against the two parts answered apart, both end rules, warm (every build
 made and every kernel compiled before the timing). Prints ratios only (target: at most 1.5).
 
-Each timing is the median of REPEATS runs, the three calls taking turns so that a drift of the
-machine's speed falls on all of them alike.
+Each timing is the median of REPEATS runs, the three calls taking turns (benchmarks/side_by_side.py).
 """
 
 from __future__ import annotations
 
-import statistics
 import sys
-import time
 
 import numpy as np
+from side_by_side import medians
 
 from restitution import epsilon
 
@@ -23,12 +21,6 @@ TOL = 1e-9
 REPEATS = 5
 
 
-def _seconds(call) -> float:
-    start = time.perf_counter()
-    call()
-    return time.perf_counter() - start
-
-
 def main() -> int:
     both = np.concatenate([NEAR, FAR])
     print(f"{'alpha':>6} {'gamma':>6} {'end':>8}  {'methods (one call)':<40} {'one call / apart':>16}")
@@ -36,13 +28,7 @@ def main() -> int:
         for end in ("force", "overlap"):
             calls = {name: (lambda om=om: epsilon(alpha=alpha, gamma=gamma, omega=om, tol=TOL, end=end))
                      for name, om in (("near", NEAR), ("far", FAR), ("both", both))}
-            for call in calls.values():
-                call()   # builds and compiles
-            times = {name: [] for name in calls}
-            for _ in range(REPEATS):
-                for name, call in calls.items():
-                    times[name].append(_seconds(call))
-            med = {name: statistics.median(t) for name, t in times.items()}
+            med = medians(calls, REPEATS)
             methods = ", ".join(f"{m} {n}" for m, n in calls["both"]().methods.items())
             print(f"{alpha:>6} {gamma:>6} {end:>8}  {methods:<40} {med['both'] / (med['near'] + med['far']):>16.2f}")
     return 0

@@ -5,19 +5,17 @@ at most 1, the force rule at most 0.6).
 
 The baseline is numpy's ``chebval`` of a 32-term series at ln Omega mapped onto [-1, 1], over the
 same array: what a plain numpy master curve with one panel would cost. Each figure is the median of
-REPEATS runs, the three calls taking turns so that a drift of the machine's speed falls on all
-three alike.
+REPEATS runs, the three calls taking turns (benchmarks/side_by_side.py).
 """
 
 from __future__ import annotations
 
 import math
-import statistics
 import sys
-import time
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
+from side_by_side import medians
 
 from restitution import epsilon
 
@@ -32,25 +30,13 @@ def chebyshev_pass(om: np.ndarray) -> np.ndarray:
     return cheb.chebval(np.log(om) / math.log(1e7), COEF)
 
 
-def _seconds(call) -> float:
-    start = time.perf_counter()
-    call()
-    return time.perf_counter() - start
-
-
 def main() -> int:
     print(f"{'alpha':>6} {'gamma':>6}  {'force / chebyshev':>18} {'overlap / chebyshev':>20}  methods (force; overlap)")
     for alpha, gamma in PAIRS:
         calls = {"chebyshev": lambda: chebyshev_pass(OMEGA)}
         for end in ("force", "overlap"):
             calls[end] = lambda end=end: epsilon(alpha=alpha, gamma=gamma, omega=OMEGA, tol=TOL, end=end)
-        for call in calls.values():
-            call()   # builds and compiles
-        times = {name: [] for name in calls}
-        for _ in range(REPEATS):
-            for name, call in calls.items():
-                times[name].append(_seconds(call))
-        med = {name: statistics.median(t) for name, t in times.items()}
+        med = medians(calls, REPEATS)
         methods = "; ".join(calls[end]().method for end in ("force", "overlap"))
         print(f"{alpha:>6} {gamma:>6}  {med['force'] / med['chebyshev']:>18.2f} "
               f"{med['overlap'] / med['chebyshev']:>20.2f}  {methods}")
