@@ -312,11 +312,13 @@ class Ladder:
 
     # -- quotes
     def quotes(self, omega: np.ndarray, tol: float, end: str = "force", cached: bool = True,
-               size: int | None = None) -> list[Quote]:
+               size: int | None = None, builds: dict | None = None) -> list[Quote]:
         """Every rung with its bound over ``omega``, cost and a runner (None when not applicable);
         ``cached`` False: as with an empty cache (no rung that reads a build can run); ``size``: the
-        number of points when ``omega`` is only their range's two ends."""
-        builds = self._loaded(end) if cached else {}
+        number of points when ``omega`` is only their range's two ends; ``builds``: what is loaded,
+        when the caller has just looked (the cache is not asked again)."""
+        if builds is None:
+            builds = self._loaded(end) if cached else {}
         req = Request(Problem(self.ex, end), np.asarray(omega, float).ravel(), tol, builds, self.stream, size)
         return [r.quote(req) for r in self.rungs]
 
@@ -412,7 +414,8 @@ class Ladder:
             if n == 0:
                 continue
             ends = np.array([p_lo, p_hi])
-            quotes = self.quotes(ends, tol, end, cached, size=int(n))
+            # what the probe loaded, and what an earlier part built since
+            quotes = self.quotes(ends, tol, end, cached, size=int(n), builds=dict(self.built) if cached else {})
             if build is not False and cached:
                 quotes = self._make_builds(quotes, ends, tol, end, None, build, size=int(n))
             ok = [q for q in quotes if q.run is not None and q.bound <= tol]
