@@ -15,8 +15,9 @@ The Omega set: 1e-6, 1e6 and ``--points`` - 2 log-uniform random Omegas between 
 nodes of any fit), per exponent pair; the reference is restitution.core.highprec at 25 digits. Rungs that only apply on
 part of the range (expansions) are scored on that part (columns omega_min, omega_max, n_points).
 Exponents: the paper's (alpha = 3/2, gamma = 1) and Hertz/Kuwabara-Kono (3/2, 1/2), where the
-Mueller & Poeschel Pade expression is a peer. Timings are wall-clock on one core (numba kernels are
-single-threaded; best of several repeats), so they vary from machine to machine and run to run.
+Mueller & Poeschel Pade expression is a peer. Timings are wall-clock on one core (the process keeps
+one processor, so the master curves' loop, which cuts a large array into one slice per processor,
+runs in one slice; best of several repeats), so they vary from machine to machine and run to run.
 """
 
 from __future__ import annotations
@@ -446,6 +447,8 @@ def main(argv=None) -> int:
     ap.add_argument("--points", type=int, default=64, help="Omegas in the fixed error set (default 64)")
     ap.add_argument("--quick", action="store_true", help="fewer points and settings (for CI)")
     args = ap.parse_args(argv)
+    if hasattr(os, "sched_setaffinity"):   # costs per evaluation on one core, as the table says
+        os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     n = args.points if not args.quick else min(args.points, 16)

@@ -11,6 +11,7 @@ import time
 import traceback
 from fractions import Fraction
 
+import numpy as np
 from hypothesis import strategies as st
 
 from fuzz_outcome import one_line
@@ -253,3 +254,58 @@ def check_deep_overlap_case(case) -> list[dict]:
     return [{**rec, "status": "answered" if ok else "FAIL", "ratio": err / allowed, "error": err,
              "detail": f"eps = {eps!r}, anchor-scaled {truth!r}, relative error {err:.3g}, allowed {allowed:.3g}, "
                        f"{seconds:.1f} s"}]
+
+
+# ------------------------------------------------------------------------------ straddling arrays
+#: Omega windows on both sides of the rungs' domain edges (the overlap law's 1e-8, the compiled
+#: integrator's and the mpmath rung's 1e-5 under the overlap rule, the expansions' 1e-3 and 1e2, the
+#: overlap curve's 1e-4 and 1e8, the uniform forms' 1e-8 and 1e8), each cheap for the rungs that
+#: serve it without a build (no creeping return below 1e-5 under the overlap rule except the law's).
+STRADDLE_WINDOWS = ((-12.0, -8.5), (-4.9, -3.5), (-3.5, -1.0), (-1.0, 2.0), (2.0, 7.0), (7.0, 12.0))
+#: Kim's pair, Hertz with viscoelastic damping, a pair that sticks under the overlap rule, one more.
+STRADDLE_PAIRS = (("3/2", "1"), ("3/2", "1/2"), ("5/2", "1/2"), ("5/2", "3/2"))
+
+
+@st.composite
+def straddling_cases(draw):
+    alpha, gamma = draw(st.sampled_from(STRADDLE_PAIRS))
+    end = draw(st.sampled_from(["force", "overlap"]))
+    windows = draw(st.lists(st.sampled_from(STRADDLE_WINDOWS), min_size=2, max_size=4, unique=True))
+    log_omegas = [draw(st.floats(*w)) for w in windows for _ in range(draw(st.integers(1, 4)))]
+    order = draw(st.permutations(range(len(log_omegas))))
+    return {"alpha": alpha, "gamma": gamma, "end": end, "omegas": [10.0 ** log_omegas[i] for i in order],
+            "tol": 10.0 ** draw(st.floats(-12.0, -4.0))}
+
+
+def check_straddling_case(case) -> list[dict]:
+    """An array across rung domains: each part answered as epsilon answers its points alone (bit for
+    bit, by the same rung), every point within tol, the counts adding up; or one one-line refusal.
+    The rule's master curve is built first (seconds, cached), so that its rung and the expansions
+    take parts too; a few points make no build pay, so nothing else is built."""
+    from restitution import api
+    from restitution.core.errors import ParameterError
+
+    rec = {"method": "ladder (array)", "rule": case["end"], "case": case, "ratio": 0.0}
+    common = dict(alpha=case["alpha"], gamma=case["gamma"], tol=case["tol"], end=case["end"])
+    om = np.array(case["omegas"])
+    try:
+        api.epsilon(alpha=case["alpha"], gamma=case["gamma"], omega=[1e6], end=case["end"], method="master",
+                    build=True, tol=None)
+        got = api.epsilon(omega=om, **common)
+    except ParameterError as exc:
+        return [{**rec, "status": "refused" if one_line(exc) else "FAIL", "detail": str(exc)}]
+    except Exception as exc:  # noqa: BLE001 - a traceback is a failure
+        return [{**rec, "status": "FAIL", "detail": "".join(traceback.format_exception_only(exc)).strip()}]
+    problems = []
+    if sum(got.methods.values()) != om.size:
+        problems.append(f"counts {got.methods} for {om.size} points")
+    if not (got.error_bound <= case["tol"] and np.all(got.bounds <= case["tol"])):
+        problems.append(f"bound {got.error_bound:.3g} above tol {case['tol']:.3g}")
+    for part in got.parts:
+        where = (om >= part.omega_min) & (om <= part.omega_max)
+        alone = api.epsilon(omega=om[where], **common)
+        if alone.method != part.method or not np.array_equal(alone.eps, got.eps[where]):
+            problems.append(f"{part.method} on {part.count} point(s) in {part.omega_min:.3g}..{part.omega_max:.3g}: "
+                            f"alone {alone.method}, eps equal: {np.array_equal(alone.eps, got.eps[where])}")
+    return [{**rec, "method": "ladder (array): " + got.method, "status": "FAIL" if problems else "answered",
+             "ratio": got.error_bound / case["tol"], "detail": "; ".join(problems) or f"{got.methods}"}]

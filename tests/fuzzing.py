@@ -38,11 +38,13 @@ from pathlib import Path
 from fuzz_deck_cases import deck_cases, deck_mutation_cases, liggghts_deck_cases, script_deck_cases
 from fuzz_deck_checks import check_deck_case, check_deck_mutation, check_liggghts_deck_case, check_script_deck_case
 from fuzz_inputs import ROOT, argv_cases, check_argv_case, check_config_case, config_cases
-from fuzz_numbers import check_deep_overlap_case, check_number_case, deep_overlap_cases, number_cases
+from fuzz_numbers import (check_deep_overlap_case, check_number_case, check_straddling_case, deep_overlap_cases,
+                          number_cases, straddling_cases)
 from fuzz_scenes import check_liggghts_scene_case, check_scene_case, liggghts_scene_cases, scene_cases
 
 __all__ = ["ROOT", "KINDS", "main", "table", "argv_cases", "check_argv_case", "check_config_case", "config_cases",
            "check_deep_overlap_case", "check_number_case", "deep_overlap_cases", "number_cases",
+           "check_straddling_case", "straddling_cases",
            "check_liggghts_scene_case", "check_scene_case", "liggghts_scene_cases", "scene_cases",
            "deck_cases", "deck_mutation_cases", "liggghts_deck_cases", "script_deck_cases", "check_deck_case",
            "check_deck_mutation", "check_liggghts_deck_case", "check_script_deck_case"]
@@ -78,6 +80,7 @@ KINDS = {"numbers": (number_cases, check_number_case, False), "argv": (argv_case
          "liggghts scenes": (liggghts_scene_cases, check_liggghts_scene_case, False),
          "liggghts decks": (liggghts_deck_cases, check_liggghts_deck_case, True),
          "deep overlap": (deep_overlap_cases, check_deep_overlap_case, False),
+         "straddling arrays": (straddling_cases, check_straddling_case, False),
          "deck mutations": (deck_mutation_cases, check_deck_mutation, False),
          "script decks": (script_deck_cases, check_script_deck_case, True)}
 
@@ -134,6 +137,7 @@ def main(argv=None) -> int:
             + [("argv", -(-(args.inputs - n_cfg) // chunks), args.seed + 100 + i) for i in range(chunks)]
             + [("config", -(-n_cfg // chunks), args.seed + 200 + i) for i in range(chunks)]
             + [("deep overlap", -(-args.numbers // 10 // chunks), args.seed + 700 + i) for i in range(chunks)]
+            + [("straddling arrays", -(-args.numbers // 10 // chunks), args.seed + 1000 + i) for i in range(chunks)]
             + [("deck mutations", -(-args.inputs // 20 // chunks), args.seed + 800 + i) for i in range(chunks)])
     from restitution.dem.engines.lammps.run import available
     if available():
@@ -169,7 +173,7 @@ def main(argv=None) -> int:
                                   for r in rows]
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
-    summary = (f"number cases {counts['numbers']}, deep overlap cases {counts['deep overlap']}, argument vectors {counts['argv']}, config mutations "
+    summary = (f"number cases {counts['numbers']}, deep overlap cases {counts['deep overlap']}, straddling arrays {counts['straddling arrays']}, argument vectors {counts['argv']}, config mutations "
                f"{counts['config']}, deck mutations {counts['deck mutations']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LAMMPS script decks {counts['script decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
                f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")

@@ -71,11 +71,24 @@ def test_eps_json_contract():
                "--json")
     assert proc.returncode == 0, proc.stderr
     data = json.loads(proc.stdout)
-    assert set(data) == {"eps", "method", "error_bound"}
+    assert set(data) == {"eps", "method", "error_bound", "methods", "parts"}
+    assert data["methods"] == {data["method"]: 2}
     assert len(data["eps"]) == 2 and data["error_bound"] <= 1e-8
     from restitution.core.collision import collide
     for om, e in zip((0.5, 2.0), data["eps"]):
         assert e == pytest.approx(collide(("3/2", 1), om).eps, rel=2e-8)
+
+
+def test_eps_json_counts_the_points_each_rung_answered():
+    # under the overlap rule the viscous law answers 1e-9 and the compiled integrator the rest
+    proc = run("eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "1e-9", "2", "--end", "overlap",
+               "--no-build", "--json")
+    assert proc.returncode == 0, proc.stderr
+    data = json.loads(proc.stdout)
+    assert data["methods"] == {"overlap-law": 1, "integrator": 2}
+    assert data["method"] == "overlap-law+integrator"
+    assert [(p["method"], p["count"]) for p in data["parts"]] == [("overlap-law", 1), ("integrator", 2)]
+    assert data["error_bound"] == max(p["error_bound"] for p in data["parts"]) <= 1e-9
 
 
 BAD = [

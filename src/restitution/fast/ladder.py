@@ -51,29 +51,50 @@ from .builds.overlap_curve import OVERLAP_CURVE
 from .calibration import FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFORM, Calibration, Relation, merged, relation_build
 from .master import MasterCurve, MasterSettings
 from .overlap_master import OverlapCurve
+from .parts import part_ranges
 from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request
 from .rungs import ladder_rungs, rung_names
 from .rungs.calibrated import SAFETY
 
-__all__ = ["EpsResult", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "DEFAULT_TOL", "TOL_FLOOR"]
+__all__ = ["EpsResult", "Part", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "DEFAULT_TOL", "TOL_FLOOR"]
 
 # ------------------------------------------------------------------------------------------ result
 @dataclass(frozen=True)
+class Part:
+    """The points of one request that one rung answered: its name, their Omega range and count,
+    its bound over them and its setting (an :class:`EpsResult` has one per rung it used)."""
+
+    method: str
+    omega_min: float
+    omega_max: float
+    count: int
+    bound: float
+    setting: str = ""
+
+    def as_dict(self) -> dict:
+        return {"method": self.method, "omega_min": self.omega_min, "omega_max": self.omega_max,
+                "count": self.count, "error_bound": self.bound, "setting": self.setting}
+
+
+@dataclass(frozen=True)
 class EpsResult:
-    """What ``epsilon`` returns: eps (numpy array, same shape as the input), the rung used and its bound.
+    """What ``epsilon`` returns: eps (numpy array, same shape as the input), the rungs used and their bounds.
 
     ``setting`` describes the rung's parameter (e.g. "rtol=1e-10"); ``candidates`` is the chooser's
     table: one dict per rung with its bound over these inputs (inf when outside its domain), the
-    expected cost and why it was or was not eligible.
+    expected cost and why it was or was not eligible. An array whose parts different rungs answer
+    (each point by the cheapest rung that meets tol over its part) has one :class:`Part` per rung
+    in ``parts``, ``methods`` counts the points each answered, ``bounds`` is the bound at each
+    point, and ``method`` names them all joined by "+" (the candidates then carry their part's index).
 
     Parameters
     ----------
     eps : numpy.ndarray
         The coefficients of restitution, shaped as the Omega given.
     method : str
-        The rung that answered.
+        The rung that answered (several: their names joined by "+", in increasing Omega).
     error_bound : float
-        Its relative error bound over all the inputs.
+        The relative error bound over all the inputs (the largest of the parts').
     omega : numpy.ndarray
         The Omegas.
     alpha, gamma : Fraction
@@ -86,6 +107,8 @@ class EpsResult:
         The chooser's table (``method``, ``bound``, ``cost``, ``available``, ``reason``).
     coefficients : dict, optional
         The closed form's numbers, when that rung answered.
+    parts : tuple of Part, optional
+        Which rung answered which points, with its bound over them.
 
     Examples
     --------
@@ -96,6 +119,8 @@ class EpsResult:
     ('exact-family', 0.20788)
     >>> r.as_dict()["method"], r.as_dict()["eps"] == r.eps.ravel().tolist()   # what --json prints
     ('exact-family', True)
+    >>> r.methods
+    {'exact-family': 1}
     """
 
     eps: np.ndarray
@@ -108,14 +133,34 @@ class EpsResult:
     setting: str = ""
     candidates: tuple = ()
     coefficients: dict | None = None   # the closed form's numbers, when that rung answered
+    parts: tuple = ()
 
     def __array__(self, dtype=None, copy=None):
         return np.asarray(self.eps, dtype=dtype)
 
+    @property
+    def methods(self) -> dict:
+        """How many points each rung answered, in increasing Omega."""
+        out: dict = {}
+        for p in self.parts:
+            out[p.method] = out.get(p.method, 0) + p.count
+        return out
+
+    @property
+    def bounds(self) -> np.ndarray:
+        """The relative error bound at each point (shaped as ``eps``): its part's."""
+        om = np.asarray(self.omega, dtype=float)
+        out = np.full(om.shape, float(self.error_bound))
+        if len(self.parts) > 1:
+            for p in self.parts:
+                out[(om >= p.omega_min) & (om <= p.omega_max)] = p.bound
+        return out
+
     def as_dict(self) -> dict:
         return {"eps": np.asarray(self.eps, float).ravel().tolist(), "method": self.method,
                 "error_bound": float(self.error_bound), "alpha": str(self.alpha), "gamma": str(self.gamma),
-                "tol": self.tol, "setting": self.setting,
+                "tol": self.tol, "setting": self.setting, "methods": self.methods,
+                "parts": [p.as_dict() for p in self.parts],
                 **({} if self.coefficients is None else {"coefficients": self.coefficients})}
 
 
@@ -266,11 +311,15 @@ class Ladder:
         return cal
 
     # -- quotes
-    def quotes(self, omega: np.ndarray, tol: float, end: str = "force", cached: bool = True) -> list[Quote]:
+    def quotes(self, omega: np.ndarray, tol: float, end: str = "force", cached: bool = True,
+               size: int | None = None, builds: dict | None = None) -> list[Quote]:
         """Every rung with its bound over ``omega``, cost and a runner (None when not applicable);
-        ``cached`` False: as with an empty cache (no rung that reads a build can run)."""
-        builds = self._loaded(end) if cached else {}
-        req = Request(Problem(self.ex, end), np.asarray(omega, float).ravel(), tol, builds, self.stream)
+        ``cached`` False: as with an empty cache (no rung that reads a build can run); ``size``: the
+        number of points when ``omega`` is only their range's two ends; ``builds``: what is loaded,
+        when the caller has just looked (the cache is not asked again)."""
+        if builds is None:
+            builds = self._loaded(end) if cached else {}
+        req = Request(Problem(self.ex, end), np.asarray(omega, float).ravel(), tol, builds, self.stream, size)
         return [r.quote(req) for r in self.rungs]
 
     def _loaded(self, end: str) -> dict:
@@ -297,6 +346,14 @@ class Ladder:
         flat = om.ravel()
         if end == "overlap":
             self._refuse_sticking(flat)
+        if method is None and flat.size > 1:
+            groups = self._groups(flat, tol, end, build, cached)
+            if len(groups) > 1:
+                return self._joined(om, flat, groups, tol, end, build, cached)
+        return self._answer(om, flat, tol, checked, method, build, end, cached)
+
+    def _answer(self, om, flat, tol: float, checked: bool, method, build, end: str, cached: bool) -> EpsResult:
+        """The whole of ``flat`` by one rung: the forced one, else the cheapest that meets tol."""
         quotes = self.quotes(flat, tol, end, cached)
         if build is not False and cached:
             quotes = self._make_builds(quotes, flat, tol, end, method, build)
@@ -328,8 +385,64 @@ class Ladder:
         chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, end, cached)
         table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
+        part = Part(chosen.name, float(np.min(flat)), float(np.max(flat)), int(flat.size), float(bound),
+                    chosen.setting)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.ex.alpha,
-                         self.ex.gamma, tol if checked else None, chosen.setting, table, chosen.coefficients)
+                         self.ex.gamma, tol if checked else None, chosen.setting, table, chosen.coefficients,
+                         (part,))
+
+    # -- each part of an array its own rung
+    def _groups(self, flat: np.ndarray, tol: float, end: str, build, cached: bool) -> list[tuple[float, float]]:
+        """The Omega intervals [lo, hi) (open ends: -inf, inf) that ``flat`` is answered by in turn.
+
+        The array is cut at every rung's domain edges (``Rung.edges``) inside its range; each part
+        that holds points is quoted over the range of its points with its count (what ``epsilon``
+        would quote for them alone) and makes the builds its quotes say pay for it; adjacent parts
+        whose cheapest adequate rung is the same form one interval. One interval: the whole array
+        is answered as one (no copy), as it was before arrays were cut."""
+        lo, hi = float(np.min(flat)), float(np.max(flat))
+        builds = self._loaded(end) if cached else {}
+        probe = Request(Problem(self.ex, end), np.array([lo, hi]), tol, builds, self.stream)
+        cuts = sorted({float(e) for r in self.rungs if r.serves(probe) for e in r.edges(probe) if lo < e <= hi})
+        if not cuts:
+            return [(-math.inf, math.inf)]
+        counts, lows, highs = part_ranges(flat, cuts)
+        starts, stops = [-math.inf, *cuts], [*cuts, math.inf]
+        groups: list[tuple[float, float]] = []
+        last = object()
+        for a, b, n, p_lo, p_hi in zip(starts, stops, counts, lows, highs):
+            if n == 0:
+                continue
+            ends = np.array([p_lo, p_hi])
+            # what the probe loaded, and what an earlier part built since
+            quotes = self.quotes(ends, tol, end, cached, size=int(n), builds=dict(self.built) if cached else {})
+            if build is not False and cached:
+                quotes = self._make_builds(quotes, ends, tol, end, None, build, size=int(n))
+            ok = [q for q in quotes if q.run is not None and q.bound <= tol]
+            key = min(ok, key=lambda q: (not q.exact, q.cost, q.bound)).name if ok else None
+            if groups and key == last:
+                groups[-1] = (groups[-1][0], b)
+            else:
+                groups.append((a, b))
+            last = key
+        return groups
+
+    def _joined(self, om, flat, groups, tol: float, end: str, build, cached: bool) -> EpsResult:
+        """Each interval's points answered as ``epsilon`` answers them alone, put back in place."""
+        eps = np.empty(flat.size)
+        results = []
+        for a, b in groups:
+            where = (flat >= a) & (flat < b)
+            sub = flat[where]
+            r = self._answer(sub, sub, tol, True, None, build, end, cached)
+            eps[where] = r.eps
+            results.append(r)
+        names = list(dict.fromkeys(r.method for r in results))
+        parts = tuple(p for r in results for p in r.parts)
+        table = tuple({**row, "part": i} for i, r in enumerate(results) for row in r.candidates)
+        return EpsResult(eps.reshape(om.shape), "+".join(names), max(p.bound for p in parts), om,
+                         self.ex.alpha, self.ex.gamma, tol, "; ".join(f"{p.method}: {p.setting}" for p in parts),
+                         table, None, parts)
 
     def _refuse_sticking(self, flat: np.ndarray) -> None:
         """Where sticking is proved without integrating (core.collision.stick_bound) no method runs:
@@ -339,21 +452,21 @@ class Ladder:
         if stuck.size:
             raise StickError.at(float(stuck[0]), stick_reason(self.ex))
 
-    def _make_builds(self, quotes, flat, tol: float, end: str, method, build) -> list[Quote]:
+    def _make_builds(self, quotes, flat, tol: float, end: str, method, build, size: int | None = None) -> list[Quote]:
         """Make the builds the request wants, cheapest first, quoting again after each: the first
         one built may serve the request already, so the next ones no longer pay."""
         tried: set = set()
         while True:
             pending = {q.needs_build for q in quotes if q.needs_build and (method is None or q.name == method)}
             if method is None and not build:
-                pending = self._building_pays(quotes, tol, flat.size)
+                pending = self._building_pays(quotes, tol, flat.size if size is None else size)
             pending -= tried
             if not pending:
                 return quotes
             name = min(pending, key=lambda b: (self._build_cost(b), b))
             tried.add(name)
             self._build(name)
-            quotes = self.quotes(flat, tol, end)
+            quotes = self.quotes(flat, tol, end, size=size)
 
     def _first_within(self, order, flat: np.ndarray, tol: float, end: str, cached: bool = True):
         """The first quote, cheapest first, whose bound still holds once widened by its answer
@@ -370,9 +483,12 @@ class Ladder:
                     # answers, or refuses in one line
                     failed.append(f"{q.name}: {exc}")
                     break
-                if not np.all(np.isfinite(eps)):
+                # two reductions and no temporary array: a NaN or inf makes its extreme non-finite
+                low, high = (float(np.min(eps)), float(np.max(eps))) if eps.size else (0.0, 0.0)
+                if not (math.isfinite(low) and math.isfinite(high)):
                     raise ArithmeticError(f"method {q.name} returned non-finite eps")
-                eps = at_most_one(eps)
+                if high > 1.0:
+                    eps = at_most_one(eps)
                 factor = q.widen(eps) if q.widen is not None else 1.0
                 bound = q.bound * factor
                 if bound <= tol:

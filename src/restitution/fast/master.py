@@ -297,12 +297,15 @@ class MasterCurve(PanelRange):
         lo, hi = float(om.min()), float(om.max())
         lo_join, hi_join = self.omega_lo, self.omega_hi
         b = self.bound_inside if (hi >= lo_join * (1.0 - JOIN_SLACK) and lo <= hi_join * (1.0 + JOIN_SLACK)) else 0.0
+        # the extremes of the Omegas beyond each join: one masked reduction each, no copy of them
         if lo < lo_join * (1.0 + JOIN_SLACK):
-            below = om[om < lo_join * (1.0 + JOIN_SLACK)]
-            b = max(b, float(np.max(self.viscous_bound(np.array([below.min(), below.max()])))))
+            top = hi if hi < lo_join * (1.0 + JOIN_SLACK) else float(
+                np.max(om, where=om < lo_join * (1.0 + JOIN_SLACK), initial=-np.inf))
+            b = max(b, float(np.max(self.viscous_bound(np.array([lo, top])))))
         if hi > hi_join * (1.0 - JOIN_SLACK):
-            above = om[om > hi_join * (1.0 - JOIN_SLACK)]
-            b = max(b, float(np.max(self.elastic_bound(np.array([above.min(), above.max()])))))
+            bottom = lo if lo > hi_join * (1.0 - JOIN_SLACK) else float(
+                np.min(om, where=om > hi_join * (1.0 - JOIN_SLACK), initial=np.inf))
+            b = max(b, float(np.max(self.elastic_bound(np.array([bottom, hi])))))
         return b
 
     # -- serialisation

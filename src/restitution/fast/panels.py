@@ -2,6 +2,10 @@
 ln eps in each, and the asymptotic expansions beyond both ends. One fused loop costs a few tens of
 nanoseconds per point; the same in numpy needs ~3 array passes per Chebyshev term, i.e. several
 times more memory traffic.
+
+Above THREAD_MIN_POINTS points the array is cut into one slice per processor, each evaluated by the
+same loop on a thread of its own (the loop releases the GIL): every point gets the same operations
+in the same order, so the same double, as in one pass.
 """
 
 from __future__ import annotations
@@ -10,7 +14,7 @@ import math
 
 import numpy as np
 
-from .jit import call_kernel, njit
+from .jit import call_kernel, compiled, njit, worker_threads
 
 __all__ = ["PanelRange", "chebyshev_panels_eval"]
 
@@ -40,7 +44,7 @@ def _elastic_eval(om, el):
     return r
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _panels_eval(omegas, s0, inv_w, coef, vis, el, out):
     npan = coef.shape[0]
     deg = coef.shape[1] - 1
@@ -75,10 +79,29 @@ def chebyshev_panels_eval(omegas, s0: float, width: float, coef: np.ndarray, vis
     """eps at each Omega from panel Chebyshev coefficients of ln eps (see master.MasterCurve)."""
     om = np.ascontiguousarray(np.asarray(omegas, dtype=np.float64).ravel())
     out = np.empty(om.size)
-    call_kernel(om.size, INTERPRETED_MAX_POINTS, _panels_eval, om, float(s0), 1.0 / float(width),
-                np.ascontiguousarray(coef, dtype=np.float64), np.ascontiguousarray(viscous, dtype=np.float64),
-                np.ascontiguousarray(elastic, dtype=np.float64), out)
+    args = (float(s0), 1.0 / float(width), np.ascontiguousarray(coef, dtype=np.float64),
+            np.ascontiguousarray(viscous, dtype=np.float64), np.ascontiguousarray(elastic, dtype=np.float64))
+    slices = min(worker_threads(), om.size // THREAD_MIN_POINTS)
+    if slices < 2:
+        call_kernel(om.size, INTERPRETED_MAX_POINTS, _panels_eval, om, *args, out)
+        return out
+    run = compiled(_panels_eval)
+    cuts = np.linspace(0, om.size, slices + 1).astype(int)
+    with _pool(slices) as pool:
+        done = [pool.submit(run, om[a:b], *args, out[a:b]) for a, b in zip(cuts[:-1], cuts[1:])]
+        for d in done:
+            d.result()
     return out
+
+
+#: Arrays of at least twice this many points are cut into slices on threads (a thread's start and
+#: join cost tens of microseconds: below this the loop alone is about as fast).
+THREAD_MIN_POINTS = 50_000
+
+
+def _pool(n: int):
+    from concurrent.futures import ThreadPoolExecutor
+    return ThreadPoolExecutor(max_workers=n)
 
 
 #: Up to this many Omegas a process that has not started numba evaluates in plain Python (tens

@@ -7,6 +7,8 @@ A rung (:class:`Rung`) is one way to compute eps(Omega). It declares, for a :cla
   alpha <= gamma the force never pulls, both rules give the same collision and every rung serves,
   except one of ``ends = ("overlap",)``: the overlap rule's own numbers exist only where they differ);
 * ``outside(req)``: why the Omegas are outside its domain (None when inside);
+* ``edges(req)``: the Omegas where its domain begins or ends (or its quote changes kind): the
+  chooser cuts an array there and gives each part its own rung (a point at an edge goes above it);
 * ``needs(req)``: the build it reads (a key of the ladder's builds, e.g. "calibration"), or None;
 * ``floor(req)``: the smallest bound it can state once that build is made (0 when not known): the
   chooser makes no build for a request whose tolerance is below the floor of every rung reading it;
@@ -129,6 +131,9 @@ class Request:
     tol: float
     builds: Mapping[str, Any] = field(default_factory=dict)
     stream: Any = None
+    #: How many points the request stands for, when ``omega`` is only its range's two ends (the
+    #: chooser quoting a part of an array: every bound depends on the range, every price on n).
+    size: int | None = None
 
     # Every rung's quote asks for the range: one pass over the Omegas per request, not per rung.
     @cached_property
@@ -141,7 +146,7 @@ class Request:
 
     @property
     def n(self) -> int:
-        return int(self.omega.size)
+        return int(self.omega.size if self.size is None else self.size)
 
     def __post_init__(self):
         object.__setattr__(self, "problem", as_problem(self.problem))   # an Exponents: the force rule
@@ -181,6 +186,9 @@ class Rung:
 
     def outside(self, req: Request) -> str | None:
         return None
+
+    def edges(self, req: Request) -> tuple[float, ...]:
+        return ()
 
     def needs(self, req: Request) -> str | None:
         return None

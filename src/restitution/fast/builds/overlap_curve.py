@@ -1,5 +1,5 @@
 """The overlap rule's own master curve as a build (:mod:`restitution.fast.overlap_master`,
-0.6-0.7 s): what the overlap rule's master rung reads. A stored curve is used only if it is for
+1-2 s: its panels' nodes and the viscous law's C): what the overlap rule's master rung reads. A stored curve is used only if it is for
 these exponents and passes its own spot checks against the integrator."""
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ class OverlapCurveBuild(Build):
     """Chebyshev panels of eps(Omega) under the overlap rule, above the sticking boundary."""
 
     name = OVERLAP_CURVE
-    seconds = {"alpha>gamma": 0.7}
+    seconds = {"alpha>gamma": 2.0}
 
     def key(self, site):
         return f"overlap-curve-{site.pair}-v{OVERLAP_CURVE_VERSION}"

@@ -47,6 +47,15 @@ class _Calibrated(Rung):
         return b, self.setting
 
 
+    def edges(self, req):
+        # the calibration grid's ends: a profile bound exists only inside it
+        cal = req.builds.get(MASTER)
+        if cal is None or cal.master.grid_log10_omega.size == 0:
+            return ()
+        g = cal.master.grid_log10_omega
+        return (10.0 ** float(g[0]), 10.0 ** float(g[-1]))
+
+
 class RelationRung(_Calibrated):
     """Omega~ = c0 + c1 Omega + c2 Omega^2 with the c's of one :class:`Relation` (a build of its own),
     eps = (Omega~/Omega)^((gamma+1)/(alpha-1-2gamma)); bound: SAFETY x its largest error measured on the master curve's calibration grid (Omega 1e-12..1e14
@@ -104,8 +113,15 @@ class ViscousRung(_Expansion):
     name, cost = "viscous", 2e-8
 
     def outside(self, req):
-        limit = 1e-3 if req.ex.alpha > req.ex.gamma else 1e-2   # the "force" kind of asy.viscous_limit
+        limit = self._limit(req)
         return f"Omega > {limit:g}" if req.hi > limit else None
+
+    @staticmethod
+    def _limit(req) -> float:
+        return 1e-3 if req.ex.alpha > req.ex.gamma else 1e-2   # the "force" kind of asy.viscous_limit
+
+    def edges(self, req):
+        return (self._limit(req),)
 
     def model(self, cal):
         return cal.master.viscous_bound
@@ -124,6 +140,9 @@ class ElasticRung(_Expansion):
     def outside(self, req):
         return "Omega < 100" if req.lo < 1e2 else None
 
+    def edges(self, req):
+        return (1e2,)
+
     def model(self, cal):
         return cal.master.elastic_bound
 
@@ -137,6 +156,9 @@ class MasterRung(_Calibrated):
     bounds outside."""
 
     name, cost = "master", 4e-8
+
+    def edges(self, req):
+        return ()   # every Omega
 
     def bound(self, req, cal):
         m = cal.master

@@ -76,6 +76,12 @@ class ClosedForm(Rung):
             return f"Omega outside [{FORM_RANGE[0]:g}, {FORM_RANGE[1]:g}] (where its bound was measured)"
         return None
 
+    def edges(self, req):
+        kind = _kind(req)
+        if kind == "dashpot" and req.end == "overlap":
+            return (0.25,)
+        return FORM_RANGE if kind == "uniform" else ()
+
     def needs(self, req):
         if _kind(req) != "uniform":
             return None

@@ -50,6 +50,11 @@ class Highprec(Rung):
             return f"Omega < {CREEP_MIN:g} under the overlap rule (the return creeps for ~0.2/Omega steps)"
         return None
 
+    def edges(self, req):
+        if not req.rules_differ:
+            return (1e-3,)
+        return (CREEP_MIN,) if req.rule == "overlap" else ()
+
     def price(self, req):
         # From the range's ends, not every point: a quote must not cost a pass over a million
         # Omegas for a rung that is almost never chosen (it was a fifth of an epsilon call). The

@@ -69,6 +69,9 @@ class Integrator(Rung):
             return f"Omega outside [{printed(wmin)}, {printed(OMEGA_MAX)}] (explicit method; {self.stiff_below})"
         return None
 
+    def edges(self, req):
+        return (stiff_omega_min(req.problem), OMEGA_MAX)
+
     def price(self, req):
         # alpha <= gamma: the creeping return takes ~1/Omega steps; alpha > gamma: the force's zero
         # comes ~ln(1/Omega) relaxation times after the turn (25 times the cost at 1e-300)

@@ -23,6 +23,10 @@ class Reference(Rung):
             return f"Omega outside [{OMEGA_RANGE[0]:g}, {OMEGA_RANGE[1]:g}] (its verified range)"
         return None
 
+    def edges(self, req):
+        from ...core.collision import OMEGA_RANGE
+        return OMEGA_RANGE
+
     def bound(self, req, built):
         rtol = reference_rtol(req.tol, req.problem)
         setting = f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
