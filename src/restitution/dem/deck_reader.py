@@ -16,10 +16,10 @@ import re
 from .deck_script import LocatedError, Script
 from .deck_state import (Deck, DeckError, atom_type, explained, fetch, labelmap, number, place, types,
                          unlabeled)
-from .deck_text import evaluate
+from .deck_text import ScriptError, evaluate, words
 from .engines import ENGINES
 
-__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_deck", "contact_key"]
+__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_deck", "read_executed", "contact_key"]
 
 #: Engine (a Deck's ``code``) -> its deck dialect: the module that reads its pair style, its
 #: coefficients and its walls, as each registered engine's deck hook names it
@@ -40,9 +40,10 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "soft_particles", "modify_timing", "compute_modify", "comm_style"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
-                     "viscous", "enforce2d", "move", "freeze", "setforce",
-                     "ave/time", "ave/atom", "print", "nve/limit", "move/mesh",
-                     "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom"}
+                     "enforce2d", "move",
+                     "ave/time", "ave/atom", "print", "move/mesh",
+                     "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
+                     "nve/noforce"}
 #: Data-file sections with no bearing on a head-on contact
 _DATA_IRRELEVANT = {"Velocities", "Bonds", "Angles", "Dihedrals", "Impropers", "Bond Coeffs", "Angle Coeffs",
                     "Dihedral Coeffs", "Improper Coeffs"}
@@ -125,6 +126,94 @@ def read_deck(text: str, radius: dict | None = None, density: dict | None = None
     return deck
 
 
+def read_executed(commands, atoms: list, radius: dict | None = None, density: dict | None = None,
+                  read_file=None) -> Deck:
+    """The settings of a deck from the commands its engine ran (:mod:`restitution.dem.deck_stream`):
+    no control flow here, the engine's own; the atoms each run saw as the engine held them.
+
+    Parameters
+    ----------
+    commands : list of Executed
+        In the order they ran; a run's marker gives its stage number.
+    atoms : list of dict
+        Each run's atoms, {type: {(radius, density)}}, indexed by stage order.
+    radius, density : dict, optional
+        {type: value}, overriding what the engine holds.
+    read_file : callable, optional
+        As in :func:`read_deck` (a data file's Pair Coeffs).
+
+    Returns
+    -------
+    Deck
+
+    Raises
+    ------
+    DeckError
+        One line naming what cannot be mapped.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck_stream import Executed
+    >>> cmds = [Executed((None, 1), "create_box 1 b"), Executed((None, 2), "pair_style granular"),
+    ...         Executed((None, 3), "pair_coeff * * hooke 10 1"), Executed((None, 4), "run 1", 0)]
+    >>> deck = read_executed(cmds, [{1: {(0.5, 2.0)}}])
+    >>> deck.stages[0][1].radius, deck.stages[0][1].density
+    ({1: 0.5}, {1: 2.0})
+    """
+    deck = Deck()
+    done = 0
+    for cmd in commands:
+        try:
+            split = words(cmd.text)
+        except ScriptError as why:
+            raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
+        if not split or split[0] in _ENGINE_ONLY:
+            continue
+        if cmd.stage is not None:
+            _held(deck, atoms[done] if done < len(atoms) else {}, radius or {}, density or {})
+            done += 1
+        _execute(deck, split, cmd.text, cmd.loc, read_file)
+    if not deck.stages:
+        _held(deck, atoms[-1] if atoms else {}, radius or {}, density or {})
+    for d in [deck] + [snap for _, snap, _ in deck.stages]:
+        for t, r in (radius or {}).items():
+            d.radius[int(t)] = r
+        for t, rho in (density or {}).items():
+            d.density[int(t)] = rho
+    if not any(d.code for d in [deck] + [snap for _, snap, _ in deck.stages]):
+        raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
+                                            "(LIGGGHTS) line")
+    return deck
+
+
+#: Commands whose effect on the atoms the engine reports itself (the sizes a run sees), and the
+#: control flow the engine ran: not read again
+_ENGINE_ONLY = {"set", "variable", "if", "jump", "label", "next", "include", "quit", "mass"}
+
+
+def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
+    """The atoms a run sees, as the engine held them: each type's radius and density where all its
+    atoms share one; several (a type of several sizes) named in ``missing``; a type without atoms
+    keeps what an inserting fix gives it (a pour) or none (walls only, or unused)."""
+    deck.held = {t: sorted(v) for t, v in atoms.items()}
+    deck.atoms = deck.atoms or bool(atoms)
+    deck.present |= set(atoms)
+    for t, sizes in atoms.items():
+        radii = {r for r, _ in sizes}
+        dens = {rho for _, rho in sizes}
+        deck.missing.pop(t, None)
+        if min(radii) <= 0:
+            deck.radius.pop(t, None)
+            deck.missing[t] = f"type {t} holds point particles (radius 0), which have no contact radius"
+        elif len(radii) == 1 and len(dens) == 1:
+            deck.radius[t], deck.density[t] = radii.pop(), dens.pop()
+        else:
+            deck.radius.pop(t, None)
+            deck.density.pop(t, None)
+            deck.missing[t] = (f"type {t} holds {len(sizes)} sizes at this run: radius {min(radii):g} to "
+                               f"{max(radii):g}, density {min(dens):g} to {max(dens):g}")
+
+
 def _read(deck: Deck, text: str, read_file) -> None:
     def execute(words, line, loc):
         _execute(deck, words, line, loc, read_file)
@@ -201,6 +290,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         _group(deck, words)
     elif cmd == "units" and len(words) >= 2:
         deck.units = words[1]
+    elif cmd == "timestep" and len(words) >= 2:
+        deck.dt = number(words[1], where, line)
     elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
         setattr(deck, cmd.split("_")[0], words[1] == "yes")
     elif cmd not in _IRRELEVANT:
@@ -404,8 +495,24 @@ def _set(deck: Deck, words: list, where: str, line: str, loc) -> None:
             return
 
 
+#: Fixes that act on the atoms beside the contact: the engine measures another eps than the
+#: contact's own where they act during a collision (LAMMPS measured: fix viscous 0.99592 where the
+#: contact gives 0.9999999995). Named, each with what it does.
+_BESIDE_CONTACT = {"viscous": "a drag force -gamma v on every atom of its group",
+                   "langevin": "a thermostat's drag and random force",
+                   "setforce": "forces set to given values", "freeze": "frozen atoms (no force moves them)",
+                   "nve/limit": "a cap on how far an atom moves per step",
+                   "adapt": "coefficients changed as the run goes",
+                   "damp/viscous": "a drag force", "viscous/sphere": "a drag torque"}
+
+
 def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     style = words[3]
+    if style in _BESIDE_CONTACT:
+        deck.unknown.append((*loc, line, f"fix {style}: {_BESIDE_CONTACT[style]}, which changes the eps the engine "
+                                         "measures where it acts during a collision; the audit gives the contact's "
+                                         "own eps"))
+        return
     if style in _INSERTING_FIXES:
         deck.inserting = True
         typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()

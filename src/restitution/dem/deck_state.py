@@ -107,6 +107,9 @@ class Deck:
     reasons: dict = field(default_factory=dict)   # the script's: an unevaluated placeholder -> why
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     liggghts_mark: tuple = ()                     # (loc, text) of the first command only LIGGGHTS has
+    dt: float | None = None                       # the timestep command's, None where the deck has none
+    held: dict | None = None                      # type -> [(radius, density)] the engine held at a run, or
+                                                  # None where the deck was read without its engine
 
 
 class DeckDialect(Protocol):

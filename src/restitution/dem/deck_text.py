@@ -42,7 +42,7 @@ from __future__ import annotations
 import math
 import re
 
-__all__ = ["ScriptError", "TRIPLE", "logical_lines", "strip_comment", "unquoted", "words", "PLACEHOLDER",
+__all__ = ["ScriptError", "TRIPLE", "segments", "logical_lines", "strip_comment", "unquoted", "words", "PLACEHOLDER",
            "placeholder", "substituted", "Unevaluated", "evaluate", "evaluate_boolean", "newer_syntax"]
 
 #: LAMMPS' triple quote, which may span lines
@@ -77,6 +77,26 @@ def _segments(line: str):
     if start < len(line):
         out.append((line[start:], quote))
     return out
+
+
+def segments(line: str) -> list[tuple[str, str]]:
+    """(text, quote) pieces of ``line`` as LAMMPS scans it: quote is "" outside quotes, else the
+    quote that opened the piece (the quotes belong to the piece).
+
+    Parameters
+    ----------
+    line : str
+
+    Returns
+    -------
+    list of (str, str)
+
+    Examples
+    --------
+    >>> segments('if "${a} > 1" then "run 1"')
+    [('if ', ''), ('"${a} > 1"', '"'), (' then ', ''), ('"run 1"', '"')]
+    """
+    return list(_segments(line))
 
 
 def strip_comment(line: str) -> str:

@@ -116,9 +116,15 @@ def pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
         model = words[k + 1:k + 2 + _LAMMPS_HEAT.get(words[k + 1] if k + 1 < len(words) else "", 0)]
         deck.unknown.append((*loc, line, f"heat {' '.join(model)}: heat conduction, which does not touch the normal "
                                          "force: accepted"))
+    # LAMMPS' own loop: i over the first range, j from max(jlo, i) over the second (pair_coeff * 2
+    # on three types sets (1, 2) and (2, 2), not (2, 3); 2*3 1*2 sets (2, 2) alone); two single
+    # types it puts in order first (3 2 sets (2, 3))
+    if words[1].isdigit() and words[2].isdigit() and int(words[1]) > int(words[2]):
+        words = [words[0], words[2], words[1], *words[3:]]      # LAMMPS swaps two single types
+    second = types(words[2], deck.ntypes, where, line)
     for i in types(words[1], deck.ntypes, where, line):
-        for j in types(words[2], deck.ntypes, where, line):
-            deck.coeffs[(min(i, j), max(i, j))] = (loc, words)
+        for j in range(max(second.start, i), second.stop):
+            deck.coeffs[(i, j)] = (loc, words)
 
 
 @dataclass

@@ -1,0 +1,276 @@
+"""The untrusted deck, made safe for its engine to run: a scratch copy of its folder in which every
+command that runs code, writes a file or reaches outside is turned into a no-op, and every run into
+a stage marker (an ``include`` of a small file that runs it and then writes the atoms' state).
+
+Line numbers are kept (a rewritten command stays on its first line, its continuation lines become
+blank), so ``jump``/``label`` and the refusals' line numbers are the deck's own. A command whose
+name comes from a variable cannot be checked before it runs: such a deck is refused.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .deck_state import DeckError
+from .deck_text import TRIPLE, segments as segments_of, strip_comment
+
+__all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised"]
+
+#: The no-op the k-th skipped command becomes (both engines have label; nothing jumps to it): its
+#: echo tells that the deck reached it
+NOOP = "label restitution_skipped_{}"
+#: The no-op the k-th command whose name comes from a variable becomes: a deck that reaches it is refused
+DYNAMIC = "label restitution_unchecked_{}"
+#: Commands never executed: they run code, write files, change what the engine echoes, or end the
+#: skip-run mode. None changes a contact.
+SKIPPED_COMMANDS = frozenset({
+    "shell", "python", "plugin", "write_data", "write_restart", "write_dump", "write_coeff", "dump",
+    "dump_modify", "undump", "restart", "log", "print", "info", "echo", "timer", "group2ndx", "ndx2group",
+    "balance", "rerun", "partition", "message", "server", "mdi", "kim", "net", "geturl", "fitpod"})
+#: Fix styles never executed (they write files or print): kept as a fix of the same ID that does
+#: nothing, so unfix and fix_modify still find it
+_SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
+                         "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
+                         "check/timestep/gran", "couple/", "ave/euler", "dump")
+#: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
+RUN_COMMANDS = ("run", "minimize")
+#: A deck's folder copied whole; a larger one is refused
+MAX_FOLDER_BYTES = 200 * 2 ** 20
+_MAX_TEXT_BYTES = 20 * 2 ** 20
+
+
+@dataclass
+class Scratch:
+    """The scratch copy of a deck: ``deck`` the copied input script; ``skipped`` the commands made
+    no-ops, [(command, (file, line))], the k-th echoed as ``NOOP.format(k)`` where reached;
+    ``dynamic`` the commands whose name comes from a variable, [((file, line), text)], made
+    ``DYNAMIC.format(k)``; ``stages`` the run markers' (file, line, text),
+    indexed by the number in their file name; ``lines`` the normalised text of every command
+    of the copied files (and of each command quoted in an ``if``) -> (file, line) of its first."""
+    root: Path
+    deck: Path
+    skipped: list = field(default_factory=list)
+    dynamic: list = field(default_factory=list)
+    stages: list = field(default_factory=list)
+    lines: dict = field(default_factory=dict)
+
+
+def normalised(text: str) -> str:
+    """A command as the audit compares it with an engine's echo: comment and continuation marks
+    removed, whitespace collapsed.
+
+    Parameters
+    ----------
+    text : str
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> normalised("pair_coeff  * * hooke 1 0   # soft")
+    'pair_coeff * * hooke 1 0'
+    """
+    return " ".join(strip_comment(text).split())
+
+
+def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, ending: str = "") -> Scratch:
+    """Copy the deck's folder into ``where``/deck and make the copy safe to run.
+
+    Parameters
+    ----------
+    deck : path
+        The input script.
+    where : path
+        An empty scratch directory.
+    marker : callable
+        ``marker(k, run_text) -> str``: the text of stage k's marker file (the run, then what
+        records the atoms); it is written to ``where``/stage_k.
+
+    Returns
+    -------
+    Scratch
+
+    Raises
+    ------
+    DeckError
+        Where the folder is too large to copy.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     p = pathlib.Path(d, "in.x"); _ = p.write_text("shell touch f\\nrun 10\\n")
+    ...     with tempfile.TemporaryDirectory() as w:
+    ...         s = scratch_copy(p, w, lambda k, run: run + "\\n")
+    ...         s.deck.read_text().splitlines()[0], s.skipped
+    ('label restitution_skipped_0', [('shell', (None, 1))])
+    """
+    src = Path(deck).resolve()
+    root = Path(where)
+    total = 0
+    for base, _, names in os.walk(src.parent):
+        for name in names:
+            p = Path(base, name)
+            if not p.is_symlink():
+                total += p.stat().st_size
+        if total > MAX_FOLDER_BYTES:
+            raise DeckError("deck", str(src.parent), f"its folder holds more than {MAX_FOLDER_BYTES >> 20} MB, copied "
+                                                     "whole to run the deck safely: put the deck and the files it "
+                                                     "reads in a folder of their own")
+    copy = root / "deck"
+    shutil.copytree(src.parent, copy, symlinks=True)
+    scratch = Scratch(root, copy / src.name)
+    # the deck first: a command written alike in several files is located in the deck
+    files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(copy) for name in sorted(names)
+                              if Path(base, name) != scratch.deck]
+    # the lines of a file the deck reads as commands are the engine's commands when echoed; the
+    # text of any other file (an old log, say) is not: only the deck and the files it names by
+    # include or jump (every file where such a name comes from a variable) are mapped
+    named = _named_files(scratch.deck)
+    for p in files:
+        if p.is_symlink() or p.stat().st_size > _MAX_TEXT_BYTES:
+            continue
+        mapped = named is None or p == scratch.deck or p.name in named
+        try:
+            text = p.read_text(encoding="utf-8")
+        except (UnicodeDecodeError, OSError):
+            continue
+        label = None if p == scratch.deck else str(p.relative_to(copy))
+        lines = dict(scratch.lines)
+        new = _rewritten(text, label, scratch, marker)
+        if not mapped:
+            scratch.lines = lines
+        if p == scratch.deck and ending:
+            (root / "ending").write_text(ending)
+            new = new.rstrip("&\n") + f"\ninclude {root / 'ending'}\n"
+        if new != text:
+            p.write_text(new, encoding="utf-8")
+    return scratch
+
+
+def _named_files(deck: Path) -> set | None:
+    """The names of the files the deck's include and jump lines name (None where one comes from a
+    variable); files named in those files too, by the same rule, are found as their names repeat."""
+    names: set = set()
+    todo = [deck]
+    while todo:
+        try:
+            text = todo.pop().read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        for line in text.splitlines():
+            words = normalised(line).split()
+            if len(words) >= 2 and words[0] in ("include", "jump") and words[1] != "SELF":
+                if "$" in words[1]:
+                    return None
+                name = Path(words[1]).name
+                if name not in names:
+                    names.add(name)
+                    todo.append(deck.parent / words[1])
+            elif "include" in words or "jump" in words:
+                for k, w in enumerate(words[:-1]):
+                    if w.strip("\"'") in ("include", "jump") and "$" in words[k + 1]:
+                        return None
+                    if w.strip("\"'") in ("include", "jump") and words[k + 1].strip("\"'") != "SELF":
+                        names.add(Path(words[k + 1].strip("\"'")).name)
+    return names
+
+
+def _rewritten(text: str, label, scratch: Scratch, marker) -> str:
+    """The text with each command made safe, line numbers kept."""
+    physical = text.split("\n")
+    out = list(physical)
+    pending, start = "", 0
+    for n, raw in enumerate(physical):
+        if not pending:
+            start = n
+        pending += raw
+        if pending.count(TRIPLE) % 2:
+            pending += "\n"
+            continue
+        body = pending.rstrip()
+        if body.endswith("&"):
+            pending = body[:-1]
+            continue
+        command, pending = pending, ""
+        loc = (label, start + 1)
+        new = _safe(command, loc, scratch, marker)
+        key = normalised(command)
+        if key:
+            scratch.lines.setdefault(key, loc)
+        if new is not None:
+            scratch.lines.setdefault(normalised(new), loc)
+            out[start] = new.replace("\n", " ")
+            for k in range(start + 1, n + 1):
+                out[k] = ""
+    return "\n".join(out)
+
+
+def _first_word(command: str) -> str:
+    words = normalised(command).split()
+    return words[0] if words else ""
+
+
+def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
+    """The command made safe (None where it is already)."""
+    key = normalised(command)
+    if not key:
+        return None
+    word = key.split()[0]
+    if "$" in word:
+        # what it would run cannot be checked first: never run; the deck is refused if it reaches it
+        scratch.dynamic.append((loc, key))
+        return DYNAMIC.format(len(scratch.dynamic) - 1)
+    if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
+        scratch.skipped.append((word, loc))
+        return NOOP.format(len(scratch.skipped) - 1)
+    if word == "fix":
+        words = key.split()
+        if len(words) > 3 and words[3].startswith(_SKIPPED_FIX_PREFIXES):
+            scratch.skipped.append((f"fix {words[3]}", loc))
+            # a fix of the same ID that never acts under skipped runs, for unfix and fix_modify
+            return f"fix {words[1]} all nve/noforce"
+        return None
+    if word in RUN_COMMANDS:
+        k = len(scratch.stages)
+        scratch.stages.append((loc[0], loc[1], key))
+        path = scratch.root / f"stage_{k}"
+        path.write_text(marker(k, key))
+        return f"include {path}"
+    if word == "if":
+        return _safe_if(command, loc, scratch, marker)
+    return None
+
+
+def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
+    """An ``if`` with each quoted command made safe, and each known as a command of its line."""
+    pieces = segments_of(" ".join(normalised(command).split(" ")))
+    changed, out = False, []
+    for piece, quote in pieces:
+        if quote and piece.endswith(quote) and len(piece) >= 2 * len(quote):
+            inner = piece[len(quote):-len(quote)]
+            first = _first_word(inner)
+            if first and first != _first_word(command) and not _condition_like(inner):
+                key = normalised(inner)
+                scratch.lines.setdefault(key, loc)
+                new = _safe(inner, loc, scratch, marker)
+                if new is not None:
+                    changed = True
+                    piece = f"{quote}{new}{quote}"
+        out.append(piece)
+    return "".join(out) if changed else None
+
+
+_COMMAND = re.compile(r"[a-z_][a-z0-9_/]*$")
+
+
+def _condition_like(text: str) -> bool:
+    """A quoted if condition, not a command: its first word is no command name."""
+    return not _COMMAND.match(_first_word(text))
+
