@@ -16,7 +16,8 @@ from restitution.cli import EXIT_OUTPUT, build_parser
 
 ROOT = Path(__file__).resolve().parents[2]
 
-DECK = ("atom_style sphere\ncreate_box 1 box\nset type 1 diameter 0.002 density 2500\npair_style granular\n"
+DECK = ("atom_style sphere\ncomm_modify vel yes\nregion box block -1 1 -1 1 -1 1\ncreate_box 1 box\n"
+        "create_atoms 1 single 0 0 0\nset type 1 diameter 0.002 density 2500\npair_style granular\n"
         "pair_coeff * * hertz/material 5e7 0.5 0.3 damping tsuji tangential linear_nohistory 0 0 limit_damping\n")
 
 #: A cheap run of each subcommand that writes an answer (a new subcommand needs one here: see below)

@@ -170,7 +170,8 @@ def test_the_project_parameters_file_itself_is_refused_naming_the_materials_file
 
 def test_a_deck_is_still_a_deck(tmp_path):
     deck = tmp_path / "in.deck"
-    deck.write_text("create_box 1 box\npair_style granular\npair_coeff * * hooke 1000 50\n"
+    deck.write_text("atom_style sphere\ncomm_modify vel yes\nregion box block -2 2 -2 2 -2 2\ncreate_box 1 box\n"
+                    "create_atoms 1 single 0 0 0\npair_style granular\npair_coeff * * hooke 1000 50 tangential linear_nohistory 0 0\n"
                     "set type 1 diameter 1 density 1\n")
     status, out, _ = run(deck, "--g", 1.0)
     assert status == 0 and "LAMMPS hooke" in out
