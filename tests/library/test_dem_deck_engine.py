@@ -237,6 +237,25 @@ if "${{ke}} > 1e-9" then "jump SELF l"
     assert res["pairs"][0]["eps"][0] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
 
 
+def test_a_deck_that_jumps_to_another_file_is_read_where_it_ends(tmp_path):
+    # the end's atoms were written by an include appended to the deck's own file, which a jump to
+    # another file never reaches: its particles were then reported as absent, exit status 0
+    rest = f"pair_coeff * * hooke 1000 1 {T}\n"
+    p = pairs(tmp_path, HEAD + "jump rest.in\n", files={"rest.in": rest})
+    assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
+
+
+@pytest.mark.parametrize("ending", ["quit\n", "label l\njump SELF l\n"])
+def test_particles_never_shown_by_the_engine_are_not_reported_absent(tmp_path, ending):
+    # no run and no end reached (a quit; a loop without a run, stopped by the budget): the atoms
+    # LAMMPS holds are unknown, and "type 1 has no particle" with no pair would be a guess
+    text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n" + ending
+    from restitution.dem.deck import audit_deck
+    from restitution.dem.deck_state import DeckError
+    with pytest.raises(DeckError, match="before any run or the deck's end"):
+        audit_deck(text, [1.0], path=_write(tmp_path, text), budget=5.0)
+
+
 def test_walls_only_types_are_not_asked_for_a_radius(tmp_path):
     text = f"""units si
 atom_style sphere

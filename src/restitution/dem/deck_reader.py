@@ -170,11 +170,19 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         if not split or split[0] in _ENGINE_ONLY:
             continue
         if cmd.stage is not None:
-            _held(deck, atoms[done] if done < len(atoms) else {}, radius or {}, density or {})
+            if done >= len(atoms):
+                # the engine was stopped before this run wrote its atoms (its budget ran out): what
+                # it held from here on is unknown, so the audit ends at the last run it saw
+                break
+            _held(deck, atoms[done], radius or {}, density or {})
             done += 1
         _execute(deck, split, cmd.text, cmd.loc, read_file)
     if not deck.stages:
-        _held(deck, atoms[-1] if atoms else {}, radius or {}, density or {})
+        if not atoms:
+            # no run and no end reached: "no particle" would be a guess, never a reading
+            raise DeckError("deck", None, "the engine stopped (a quit, or the audit's time budget) before any "
+                                          "run or the deck's end showed the particles it holds: not audited")
+        _held(deck, atoms[-1], radius or {}, density or {})
     for d in [deck] + [snap for _, snap, _ in deck.stages]:
         for t, r in (radius or {}).items():
             d.radius[int(t)] = r

