@@ -59,7 +59,7 @@ what = {"fig1": rf"forward collision at $g = {T['GFig']}$ against the series (co
         "fig3": r"damped-only phase portrait (compare Fig.~\ref{fig:phase})",
         "fig4": (r"$\varepsilon(\Om)$ from the reference and the closed form: $\varepsilon$ does not depend on $g$ "
                  r"here, so $\varepsilon(g)$ would be a flat line; the dot is this material" if k_zero else
-                 r"$\varepsilon(g)$ from the reference and the relations (compare Fig.~\ref{fig:eps})")}
+                 r"$\varepsilon(g)$ from the reference and the relations (compare \FigEps{})")}
 for f, text in what.items():
     out += [r"\begin{figure}[tbp]", r"  \centering",
             rf"  \includegraphics[width=0.75\textwidth]{{{d}/figures/{f}.pdf}}",
@@ -140,7 +140,7 @@ form = read_json(snakemake.input.form)
 if form["available"]:
     out.append(rf"Its uniform approximation (\ref{{eq:uniform}}) has $b = {sci(form['b'], 12)}$, $c_3 = {sci(form['c3'], 12)}$, "
                rf"$(\sigma, m_0, m_1) = ({sci(form['sigma'], 4)}, {form['m0']}, {form['m1']})$ and the coefficients "
-               rf"$a_0, \dots, a_{{{len(form['a']) - 1}}}$ of Table~\ref{{tab:uniform}}; its relative error is at most "
+               rf"$a_0, \dots, a_{{{len(form['a']) - 1}}}$ of \TabUniform{{}}; its relative error is at most "
                rf"{sci(form['bound_eps'], 2)} in $\varepsilon$ for $\Omega$ from {sci(form['omega_range'][0], 1)} to "
                rf"{sci(form['omega_range'][1], 1)} and {sci(form['bound_one_minus_eps'], 2)} in $1 - \varepsilon$ for "
                rf"$\Omega \geq 1$.")
