@@ -34,6 +34,7 @@ import numpy as np
 deck = """\
 units           si
 atom_style      sphere
+comm_modify     vel yes
 boundary        p p f
 region          box block 0 0.1 0 0.1 0 0.2
 create_box      2 box
