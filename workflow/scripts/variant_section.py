@@ -145,5 +145,5 @@ if form["available"]:
                rf"{sci(form['omega_range'][1], 1)} and {sci(form['bound_one_minus_eps'], 2)} in $1 - \varepsilon$ for "
                rf"$\Omega \geq 1$.")
 else:
-    out.append(rf"It has no uniform closed form: {esc(form['reason'])}.")
+    out.append(rf"It has no uniform approximation: {esc(form['reason'])}.")
 write_text(snakemake.output[0], "\n".join(out))
