@@ -93,7 +93,8 @@ def test_a_wheel_from_a_clean_clone_holds_the_library_alone_and_answers_elsewher
                elsewhere, env)
     assert "0.330499967576" in eps           # the README's example, answered by the exact family
     deck = elsewhere / "in.two"
-    deck.write_text("atom_style sphere\nunits si\ncreate_box 1 box\nset type 1 diameter 0.002 density 2500\n"
+    deck.write_text("atom_style sphere\nunits si\ncomm_modify vel yes\nregion box block -1 1 -1 1 -1 1\n"
+                    "create_box 1 box\ncreate_atoms 1 single 0 0 0\nset type 1 diameter 0.002 density 2500\n"
                     "pair_style granular\npair_coeff * * hertz/material 5e7 0.5 0.3 damping tsuji "
                     "tangential linear_nohistory 0 0\n")
     audit = _run([str(command), "deck", str(deck), "--g", "1"], elsewhere, env)
