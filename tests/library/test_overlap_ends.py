@@ -12,7 +12,7 @@ import math
 import numpy as np
 import pytest
 
-from restitution.core.collision import StickError, collide
+from restitution.core.collision import StickError, UnresolvedError, collide
 from restitution.core.highprec import reference_collision
 from restitution.core.overlap_limit import overlap_limit
 from restitution.fast.ladder import Ladder
@@ -34,8 +34,15 @@ def _truth(pair, w: float) -> tuple[float, float]:
     """eps and its accuracy: mpmath where it integrates, else the scipy reference."""
     if w >= 1e-5:
         return float(reference_collision(pair, w, digits=20, end="overlap").eps), 1e-18
-    ref = collide(pair, w, rtol=1e-11, end="overlap")
-    return ref.eps, ref.error_bound
+    # Radau can lose its way in the creeping return at one rtol and not at the next (seen: 3/2, 1 at
+    # Omega = 6.12e-11 refused at 1e-11, answered alike at 1e-12 and 1e-10); the refusal names that remedy
+    for rtol in (1e-11, 1e-12, 1e-10):
+        try:
+            ref = collide(pair, w, rtol=rtol, end="overlap")
+        except UnresolvedError:
+            continue
+        return ref.eps, ref.error_bound
+    raise AssertionError(f"seed {SEED}: the scipy reference refused {pair} at Omega = {w:.6g} for every rtol")
 
 
 def _spread(lo10: float, hi10: float, n: int) -> np.ndarray:
