@@ -188,10 +188,10 @@ def run_deck(args, out) -> None:
     rows = []
     for k, stage in enumerate(stages, 1):
         head = _stage_head(stage, k, len(stages))
-        rows += [(p, f"types {p['types'][0]} {p['types'][1]}", "R1 + R2", "the spheres through each other",
+        rows += [(p, f"types {p['types'][0]} {p['types'][1]}{_sized(p)}", "R1 + R2", "the spheres through each other",
                   "the spheres together", head) for p in stage["pairs"]]
-        rows += [(w, f"type {w['types'][0]} on wall {w['wall']}", "the radius", "the sphere through the wall",
-                  "the sphere on the wall", head) for w in stage["walls"]]
+        rows += [(w, f"type {w['types'][0]} on wall {w['wall']}{_sized(w)}", "the radius",
+                  "the sphere through the wall", "the sphere on the wall", head) for w in stage["walls"]]
     for p, name, reach, pushed, _, head in rows:   # no eps there: said on stderr too, where a --json reader looks
         through = [g for g, t in zip(p["speeds"], p["passes_through"]) if t]
         if through:
@@ -227,6 +227,16 @@ def run_deck(args, out) -> None:
             t, w = p["types"][0], p.get("wall_type")
             shared = f" (entry {t} {w}: types {min(t, w)} {max(t, w)} get eps = e from it too)" if w else ""
             out.write(f"  for eps = e exactly{shared}: {p['exact_line']}\n")
+
+
+def _sized(row: dict) -> str:
+    """Where a type has several sizes: which end of the pair's eps range the row is, at which spheres."""
+    if "sizes" not in row:
+        return ""
+    at = " and ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in row["at"])
+    if row["sizes"] == "any":
+        return f" (several sizes; eps does not depend on size: {at} gives the same)"
+    return f" ({row['sizes']} over the sizes present, at {at})"
 
 
 def _run_materials(engine, args, text: str, speeds: list, read_file, out) -> None:

@@ -23,6 +23,13 @@ takes the types it names. A wall removed later (``unfix``) is still listed: it a
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
+Where LAMMPS runs the deck, a type whose atoms have several sizes (or that a ``fix pour`` fills
+from a range of diameters, sampled at nine points with its ends) gives each of its pairs two rows,
+the smallest and the largest eps at the middle speed with the spheres they are at (``sizes``,
+``at``), or one row where the sizes' eps agree to 1e-9 (a law whose eps does not depend on size).
+Under ``pair_style hybrid`` or ``hybrid/overlay`` the one granular sub-style is read from the
+pair_coeff lines naming it; a pair another sub-style covers is named, not audited.
+
 The deck runs as LAMMPS runs it (:mod:`restitution.dem.deck_script`): ``if`` with a condition the
 reader can evaluate, ``jump``/``label``, ``next`` loops and ``quit`` decide which lines run; quoted
 text is not a command; where which contact lines run depends on what the reader cannot decide,
@@ -61,6 +68,7 @@ from __future__ import annotations
 
 import re
 import tempfile
+from dataclasses import replace
 from pathlib import Path
 
 from ..core.collision import StickError
@@ -108,12 +116,17 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             continue
         for mesh, contact_of, wall_type in surfaces:
             for t in types:
-                spheres(deck, t, t)          # one line where the type lacks a radius or a density
-                pair = Pair.wall(deck.radius[t], deck.density[t])
-                contact, typed, model, exact = contact_of(pair, t)
-                rows.append(_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
-                                       "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
-                                       "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1, _dt(deck)))
+                if t not in deck.sizes:
+                    spheres(deck, t, t)          # one line where the type lacks a radius or a density
+                sized = []
+                for r, rho in deck.sizes.get(t) or [(deck.radius[t], deck.density[t])]:
+                    pair = Pair.wall(r, rho)
+                    contact, typed, model, exact = contact_of(pair, t)
+                    sized.append((_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
+                                             "model": model, "typed_e": typed, "end": contact.end,
+                                             "exact_line": exact, "line": loc[1], "file": loc[0]}, contact, speeds,
+                                            pair.R1, _dt(deck)), ((r, rho),) if t in deck.sizes else ()))
+                rows += _ends(sized)
     return rows, unknown
 
 
@@ -183,7 +196,7 @@ def engine_of(text: str) -> str:
 def _engine_read(path: Path, radius, density, budget: float):
     """(Deck, notes) from LAMMPS' own pass through a scratch copy of the deck's folder."""
     from .deck_scratch import scratch_copy
-    from .deck_stream import engine_error, executed, skipped, snapshots
+    from .deck_stream import engine_error, executed, skipped, snapshots, unchecked
     from .engines.lammps import deck_run
     from .engines.lammps.run import available
     if not available():
@@ -191,14 +204,13 @@ def _engine_read(path: Path, radius, density, budget: float):
                                             "installed: pip install 'restitution[dem]'")
     with tempfile.TemporaryDirectory(prefix="restitution-deck-") as tmp:
         root = Path(tmp)
-        scratch = scratch_copy(path, root, deck_run.marker(root), deck_run.ending(root))
+        scratch = scratch_copy(path, root, deck_run.marker(root))
         if not any(key.split()[0] in ("pair_style", "if") for key in scratch.lines):
             raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                                 "(LIGGGHTS) line")
         done = deck_run.run_copy(scratch.deck, root, budget)
         commands = executed(done.echo, scratch)
-        for k in re.findall(r"^label restitution_unchecked_(\d+)\s*$", done.echo, re.M):
-            loc, text = scratch.dynamic[int(k)]
+        for loc, text in unchecked(commands, scratch):
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
         if done.error:
@@ -212,7 +224,7 @@ def _engine_read(path: Path, radius, density, budget: float):
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
         deck = read_executed(commands, atoms, radius, density, read_file)
     notes = [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
-             "part in a contact" for cmd, loc in skipped(done.echo, scratch).items()]
+             "part in a contact" for cmd, loc in skipped(commands, scratch).items()]
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
         notes.append(f"LAMMPS had not ended the deck after {budget:g} s (its runs are skipped, so a loop waiting "
@@ -311,16 +323,74 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
     if deck.ntypes <= 0:
         raise DeckError("create_box", None, "the deck has no create_box or read_data: the number of types is "
                                             "unknown")
-    pairs = []
+    pairs, not_audited = [], []
     for i in range(1, deck.ntypes + 1):
         for j in range(i, deck.ntypes + 1):
             if _empty(deck, i) or _empty(deck, j):
                 continue
-            row = DIALECTS[deck.code].pair_row(deck, i, j)
-            contact, pair = row.pop("contact"), row.pop("pair")
-            pairs.append(_with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck)))
-    walls, not_audited = _wall_rows(deck, speeds)
-    return pairs, walls, not_audited
+            if (i, j) in deck.others:
+                not_audited.append(_other_force(deck, i, j))
+                continue
+            rows = []
+            for at in _choices(deck, i, j):
+                row = DIALECTS[deck.code].pair_row(replace(deck, at=at) if at else deck, i, j)
+                contact, pair = row.pop("contact"), row.pop("pair")
+                rows.append((_with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck)), at))
+            pairs += _ends(rows)
+    walls, walls_not = _wall_rows(deck, speeds)
+    return pairs, walls, not_audited + walls_not
+
+
+def _other_force(deck: Deck, i: int, j: int) -> tuple:
+    """The line naming a pair of a hybrid pair style that another sub-style covers, not audited."""
+    (source, n), line = deck.style_line
+    names = ", ".join(sorted(deck.others[(i, j)]))
+    if deck.hybrid == "hybrid":
+        why = (f"types {i} {j}: pair_coeff gives them sub-style {names}, not {deck.substyle}: no granular contact "
+               "between them, not audited")
+    else:
+        why = (f"types {i} {j}: sub-style {names} adds its force to {deck.substyle}'s (hybrid/overlay), which the "
+               "audit does not map: not audited")
+    return (source, n, line, why)
+
+
+#: Two eps closer than this (relative) are one: a law whose eps does not depend on size
+_SAME_EPS = 1e-9
+
+
+def _choices(deck: Deck, i: int, j: int) -> list:
+    """The spheres a pair (i, j) is audited at: [()] where both types have one size, else every
+    choice of ((R_i, rho_i), (R_j, rho_j)) among their sizes (:attr:`Deck.sizes`)."""
+    if i not in deck.sizes and j not in deck.sizes:
+        return [()]
+    one = {t: deck.sizes.get(t) or [(deck.radius.get(t), deck.density.get(t))] for t in (i, j)}
+    for t, options in one.items():
+        if options[0][0] is None or options[0][1] is None:
+            spheres(deck, t, t)              # one line naming what the type lacks
+    return [(a, b) for a in one[i] for b in one[j]]
+
+
+def _ends(rows: list) -> list:
+    """The rows of one pair or wall over the sizes present: the one row where there is one size; else
+    the rows of the smallest and the largest eps at the middle speed, each with the sizes it is at
+    (``sizes``: "smallest eps" or "largest eps", ``at``: [[R, rho], [R, rho]]), or one row (``sizes``:
+    "any", the sizes' eps within 1e-9) where the law's eps does not depend on size. A speed where
+    some size passes through or sticks is taken as it comes in the row that has it."""
+    if len(rows) == 1 and not rows[0][1]:
+        return [rows[0][0]]
+    k = len(rows[0][0]["speeds"]) // 2
+
+    def middle(item):
+        e = item[0]["eps"][k]
+        return -1.0 if e is None else e
+    lo, hi = min(rows, key=middle), max(rows, key=middle)
+    same = all(all(a is not None and b is not None and abs(a - b) <= _SAME_EPS * max(abs(b), 1e-300)
+                   for a, b in zip(r["eps"], lo[0]["eps"])) for r, _ in rows)
+    out = []
+    for (row, at), end in ([(lo, "any")] if same else [(lo, "smallest eps"), (hi, "largest eps")]):
+        out.append({**row, "sizes": end, "at": [list(at[0]), list(at[1])] if len(at) == 2 else [list(at[0])],
+                    "exact_line": row["exact_line"] if same else None})
+    return out
 
 
 def _dt(deck: Deck) -> float | None:
@@ -331,7 +401,8 @@ def _dt(deck: Deck) -> float | None:
 def _empty(deck: Deck, t: int) -> bool:
     """Whether type t has no particle at this run, as the engine holds it, and none is poured into it:
     a type of walls only, or unused; no sphere of it meets another."""
-    return deck.held is not None and t not in deck.held and t not in deck.radius and t not in deck.missing
+    return (deck.held is not None and t not in deck.held and t not in deck.radius and t not in deck.missing
+            and t not in deck.sizes)
 
 
 def _empty_notes(deck: Deck) -> list:
