@@ -33,7 +33,8 @@ for path in [*snakemake.input.data, *snakemake.input.engine_runs]:   # at their 
     members[Path(path).as_posix()] = Path(path)
 runs_readme = Path(snakemake.input.engine_runs[-1]).as_posix()
 readme = f"""\
-restitution.tex and supplement.tex compile with pdflatex alone (twice; the bibliographies are the .bbl files).
+restitution.tex and supplement.tex compile with pdflatex alone, run until the log asks for no rerun
+(the bibliographies are the .bbl files; the article reads the supplement's labels from the .aux it carries).
 The tables behind the engine and calibration numbers are under results/dem/ and results/paper/ (CSV).
 Every LAMMPS run behind the article's LAMMPS figure is under {Path(runs_readme).parent.as_posix()}/: one deck (.in) and its
 screen output (.out) per run; {runs_readme} says how to rerun one and how each eps is read from it.
