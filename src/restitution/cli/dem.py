@@ -199,6 +199,17 @@ def run_deck(args, out) -> None:
             print(f"restitution deck: {name}{where}: the engine pushes {pushed} from g = {min(through):.4g} on (the "
                   f"largest overlap reaches {reach}): no eps there", file=sys.stderr)
     for p, name, _, _, _, head in rows:
+        where = f" ({head.removeprefix('# ')})" if head else ""
+        for fix in p.get("beside") or []:
+            line = f"{fix['file']} line {fix['line']}" if fix["file"] else f"line {fix['line']}"
+            sized = [(g, e, own) for g, e, own in zip(p["speeds"], fix["eps_engine"] or [], p["eps"])
+                     if e is not None and own is not None]
+            size = (": " + ", ".join(f"{e:.6g} at g = {g:.4g} (the contact's own {own:.6g})" for g, e, own in sized)
+                    if sized else "")
+            print(f"restitution deck: {name}{where}: {line} fix {fix['style']} ({fix['fix']}): {fix['what']}, which "
+                  f"changes the eps the engine measures{size}" + (f"; {fix['why']}" if fix["why"] else ""),
+                  file=sys.stderr)
+    for p, name, _, _, _, head in rows:
         few = [(g, n, e, d) for g, n, e, d in zip(p["speeds"], p.get("steps_per_contact") or [], p["eps"],
                                                    p.get("eps_at_dt") or []) if d is not None]
         if few:

@@ -59,12 +59,14 @@ the words and formulas :mod:`restitution.dem.deck_text`'s. ``read_deck``, ``Deck
 
 from __future__ import annotations
 
+import copy
 import re
 import tempfile
 from pathlib import Path
 
 from ..core.collision import StickError
 from ..core.errors import ParameterError
+from .deck_beside import effects
 from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_deck, read_executed
 from .deck_state import MAX_TYPES, Deck, DeckError, explained, place, spheres
 from .pair import Pair
@@ -111,9 +113,10 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
                 spheres(deck, t, t)          # one line where the type lacks a radius or a density
                 pair = Pair.wall(deck.radius[t], deck.density[t])
                 contact, typed, model, exact = contact_of(pair, t)
-                rows.append(_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
-                                       "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
-                                       "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1, _dt(deck)))
+                row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
+                                 "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
+                                 "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1, _dt(deck))
+                rows.append({**row, "beside": effects(deck, row, contact, pair, (t,))})
     return rows, unknown
 
 
@@ -318,9 +321,23 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
                 continue
             row = DIALECTS[deck.code].pair_row(deck, i, j)
             contact, pair = row.pop("contact"), row.pop("pair")
-            pairs.append(_with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck)))
+            row = _with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck))
+            pairs.append({**row, "beside": effects(deck, row, contact, pair, (i, j),
+                                                   lambda k, i=i, j=j: _frozen_contact(deck, i, j, k))})
     walls, not_audited = _wall_rows(deck, speeds)
     return pairs, walls, not_audited
+
+
+#: A frozen atom's mass, as a multiple of its own: the engine takes the other atom's mass for m_eff
+#: (to this ratio, 1e-12 relative)
+_FROZEN = 1e12
+
+
+def _frozen_contact(deck: Deck, i: int, j: int, k: int):
+    """The contact the engine gives type pair (i, j) where the body of type (i, j)[k] is frozen."""
+    held = copy.copy(deck)
+    held.density = {**deck.density, (i, j)[k]: deck.density[(i, j)[k]] * _FROZEN}
+    return DIALECTS[deck.code].pair_row(held, i, j)["contact"]
 
 
 def _dt(deck: Deck) -> float | None:
