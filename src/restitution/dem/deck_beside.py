@@ -19,6 +19,7 @@ from scipy.integrate import solve_ivp
 
 from ..core.collision import StickError
 from .contact import Contact
+from .engines.lammps.deck import DEFAULT_DT
 from .pair import WALL_SIZE, Pair
 
 __all__ = ["BESIDE", "drag_eps", "effects"]
@@ -34,9 +35,6 @@ BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
 #: The relative accuracy of drag_eps (its integration runs at a thousandth of it): without drag it
 #: met the library's eps to 4.5e-8 at worst over 6 exponent pairs, both end rules, 3 dampings, 3 speeds
 RTOL = 1e-7
-#: LAMMPS' default time step per unit style (its timestep page), where the deck sets none
-_DEFAULT_DT = {"lj": 0.005, "real": 1.0, "metal": 0.001, "si": 1e-8, "cgs": 1e-8, "electron": 0.001,
-               "micro": 2.0, "nano": 0.00045}
 
 
 def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0)) -> float | None:
@@ -223,7 +221,7 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
         entry["why"] = "a torque only: a head-on collision does not turn the bodies, its eps is the contact's"
         return
     elif style == "nve/limit" and len(words) > 4 and (xmax := _number(words[4])) is not None and xmax > 0:
-        dt = deck.dt if deck.dt is not None else _DEFAULT_DT.get(deck.units)
+        dt = deck.dt if deck.dt is not None else DEFAULT_DT.get(deck.units)
         if dt:
             cap = xmax / dt
             over = [g for g in row["speeds"] if g > cap]
