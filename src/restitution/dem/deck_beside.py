@@ -14,9 +14,6 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-from scipy.integrate import solve_ivp
-
 from ..core.collision import StickError
 from .contact import Contact
 from .engines.lammps.deck import DEFAULT_DT
@@ -70,6 +67,7 @@ def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0)) -
     >>> abs(drag_eps(c, 1.0, p, (5.0, 5.0)) - Contact(1, 0, 1e4, 15.0, "overlap").eps(1.0)) < 1e-7
     True
     """
+    from scipy.integrate import solve_ivp     # here: a deck without such a fix does not pay its import
     wall = pair.m2 >= WALL_SIZE
     # each body's share of the force per unit m_eff: m_eff / m_k (a wall's none)
     share = [pair.m / pair.m1, 0.0 if wall else pair.m / pair.m2]
