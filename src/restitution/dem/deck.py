@@ -111,6 +111,8 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             continue
         for mesh, contact_of, wall_type in surfaces:
             for t in types:
+                if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
+                    continue
                 spheres(deck, t, t)          # one line where the type lacks a radius or a density
                 pair = Pair.wall(deck.radius[t], deck.density[t])
                 contact, typed, model, exact = contact_of(pair, t)
