@@ -69,6 +69,7 @@ create_atoms 1 single 0 0 0
 create_atoms 2 single 0.5 0 0
 set type 1 diameter 0.002 density 2500
 set type 2 diameter 0.003 density 7800
+timestep 1e-7
 pair_style granular
 pair_coeff 1 1 hertz/material 5e7 ${e} 0.3 damping tsuji tangential linear_nohistory 0 0 limit_damping
 pair_coeff 2 2 hertz/material 5e7 ${e} 0.3 damping tsuji tangential linear_nohistory 0 0 limit_damping
@@ -227,6 +228,7 @@ region box block -1 1 -1 1 -1 1
 create_box 1 box
 create_atoms 1 single 0 0 0
 set type 1 diameter ${d} density $(2500.0*v_r)
+timestep 1e-8
 pair_style granular
 pair_coeff 1 1 hertz/material ${E} 0.5 ${nu} damping tsuji tangential linear_nohistory 0 0
 """
@@ -275,6 +277,7 @@ region box block -1 1 -1 1 -1 1
 create_box 1 box
 create_atoms 1 single 0 0 0
 set type 1 diameter 0.002 density 2500
+timestep 1e-5
 pair_style granular
 pair_coeff 1 1 hooke 10 {eta} damping velocity tangential linear_nohistory 0 0
 """

@@ -278,7 +278,7 @@ def test_a_drag_beside_the_contact_is_named(tmp_path):
     text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nfix drag all viscous 0.01\nrun 1\n"
     status, out, err = deck(tmp_path, text)
     assert status == 0, err
-    assert "fix viscous: a drag force" in err and "changes the eps the engine measures" in err
+    assert "fix viscous (drag): a drag force" in err and "changes the eps the engine measures: " in err
 
 
 def test_few_steps_per_contact_give_the_eps_of_the_deck_time_step(tmp_path):

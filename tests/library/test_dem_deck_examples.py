@@ -150,7 +150,7 @@ def test_include_and_read_data_written_decks(tmp_path):
     (tmp_path / "spheres.data").write_text(SPHERES_DATA)
     deck = tmp_path / "in.main"
     deck.write_text("atom_style sphere\ncomm_modify vel yes\ninclude sub/materials.in\nread_data spheres.data\n"
-                    "pair_style granular\n"
+                    "timestep 1e-7\npair_style granular\n"
                     "pair_coeff * * hertz/material ${E} ${e} 0.3 damping tsuji tangential linear_nohistory 0 0\n")
     res, err = audit(deck, "--g", 1.0)
     assert err == ""

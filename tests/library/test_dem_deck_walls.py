@@ -328,7 +328,7 @@ def test_the_walls_group_gives_its_types(tmp_path, group_lines, types):
 @pytest.mark.parametrize("before, after, why", [
     ("", "", "is defined by type before any atom exists"),          # no atom at all in the deck
     ("", "create_atoms 1 random 20 4242 NULL", "is defined by type before any atom exists"),
-    (FEEDER, f"{GRAVITY}\ntimestep 1e-4\nfix feed all pour 100 1 4242 region feeder diam one 0.002", "is defined by type before any atom exists"),
+    (FEEDER, f"{GRAVITY}\ntimestep 1e-8\nfix feed all pour 100 1 4242 region feeder diam one 0.002", "is defined by type before any atom exists"),
 ])
 def test_a_group_that_holds_no_atom_or_unknown_ones_names_its_wall(tmp_path, before, after, why):
     """Groups are static: a group by type defined before any atom exists holds none (LAMMPS lets a

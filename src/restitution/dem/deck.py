@@ -73,10 +73,12 @@ from pathlib import Path
 
 from ..core.collision import StickError
 from ..core.errors import ParameterError
+from .deck_beside import effects
 from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_deck, read_executed
 from .deck_state import MAX_TYPES, Deck, DeckError, explained, place, spheres
+from .engines.lammps.deck import DEFAULT_DT
 from .pair import Pair
-from .timestep import verlet_eps
+from .timestep import recommended_dt, verlet_eps
 
 __all__ = ["DeckError", "Deck", "read_deck", "audit_deck", "MAX_STAGES", "MAX_TYPES"]
 
@@ -116,30 +118,37 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             continue
         for mesh, contact_of, wall_type in surfaces:
             for t in types:
+                if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
+                    continue
                 if t not in deck.sizes:
                     spheres(deck, t, t)          # one line where the type lacks a radius or a density
                 sized = []
                 for r, rho in deck.sizes.get(t) or [(deck.radius[t], deck.density[t])]:
                     pair = Pair.wall(r, rho)
                     contact, typed, model, exact = contact_of(pair, t)
-                    sized.append((_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
-                                             "model": model, "typed_e": typed, "end": contact.end,
-                                             "exact_line": exact, "line": loc[1], "file": loc[0]}, contact, speeds,
-                                            pair.R1, _dt(deck)), ((r, rho),) if t in deck.sizes else ()))
+                    row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
+                                     "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
+                                     "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1, _dt(deck))
+                    sized.append(({**row, "beside": effects(deck, row, contact, pair, (t,))},
+                                  ((r, rho),) if t in deck.sizes else ()))
                 rows += _ends(sized)
     return rows, unknown
 
 
 #: Fewer steps per contact than this at the deck's time step: the eps of the engine's integrator
-#: there is given beside the dt -> 0 value
+#: there is given beside the dt -> 0 value, and a time step that keeps eps within DT_TOL
 FEW_STEPS = 50
+#: The relative error in eps that the time step stated below FEW_STEPS keeps
+DT_TOL = 1e-3
 
 
 def _with_eps(row: dict, contact, speeds, limit: float, dt: float | None = None) -> dict:
     """The row with eps at every speed, where the engine would push the bodies through each other
     (the largest overlap reaching ``limit``) none, and the contact's parameters; with the deck's
     time step ``dt``, the steps per contact at each speed and, below FEW_STEPS, the eps velocity
-    Verlet gives at that dt (the engines' integrator, :func:`restitution.dem.timestep.verlet_eps`)."""
+    Verlet gives at that dt (the engines' integrator, :func:`restitution.dem.timestep.verlet_eps`)
+    and the time step that keeps it within DT_TOL (:func:`restitution.dem.timestep.recommended_dt`:
+    the largest its first-order study allows, run and checked there)."""
     through = [contact.reaches(g, limit) for g in speeds]
     if through[len(speeds) // 2]:   # no eps at the middle speed: no line promising one
         row["exact_line"] = None
@@ -147,13 +156,16 @@ def _with_eps(row: dict, contact, speeds, limit: float, dt: float | None = None)
     row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
                overlap_limit=limit, **{k: v for k, v in contact.as_dict().items() if k != "end"})
     if dt is not None:
-        steps, at_dt = [], []
+        steps, at_dt, within = [], [], []
         for g, (e, stick), t in zip(speeds, eps, through):
-            n = None if t or stick else contact.contact_time(g) / dt
+            t_c = None if t or stick else contact.contact_time(g)
+            n = None if t_c is None else t_c / dt
             steps.append(n)
+            few = n is not None and n < FEW_STEPS
             # below 2 steps the integrator does not resolve the contact: no eps is stated for it
-            at_dt.append(verlet_eps(contact, g, dt) if n is not None and 2 <= n < FEW_STEPS else None)
-        row.update(dt=dt, steps_per_contact=steps, eps_at_dt=at_dt)
+            at_dt.append(verlet_eps(contact, g, dt) if few and n >= 2 else None)
+            within.append(recommended_dt(contact, g, DT_TOL, eps=e, contact_time=t_c).dt if few else None)
+        row.update(dt=dt, steps_per_contact=steps, eps_at_dt=at_dt, dt_within_tol=within, dt_tol=DT_TOL)
     return row
 
 
@@ -333,9 +345,13 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
                 continue
             rows = []
             for at in _choices(deck, i, j):
-                row = DIALECTS[deck.code].pair_row(replace(deck, at=at) if at else deck, i, j)
+                sized = replace(deck, at=at) if at else deck
+                row = DIALECTS[deck.code].pair_row(sized, i, j)
                 contact, pair = row.pop("contact"), row.pop("pair")
-                rows.append((_with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck)), at))
+                row = _with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck))
+                rows.append(({**row, "beside": effects(sized, row, contact, pair, (i, j),
+                                                       lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k))},
+                             at))
             pairs += _ends(rows)
     walls, walls_not = _wall_rows(deck, speeds)
     return pairs, walls, not_audited + walls_not
@@ -393,9 +409,30 @@ def _ends(rows: list) -> list:
     return out
 
 
+#: A frozen atom's mass, as a multiple of its own: the engine takes the other atom's mass for m_eff
+#: (to this ratio, 1e-12 relative)
+_FROZEN = 1e12
+
+
+def _frozen_contact(deck: Deck, i: int, j: int, k: int):
+    """The contact the engine gives type pair (i, j) where the body of type (i, j)[k] is frozen (at
+    the sizes the deck is audited at, :attr:`Deck.at`, where the type has several)."""
+    if deck.at:
+        at = list(deck.at)
+        at[k] = (at[k][0], at[k][1] * _FROZEN)
+        held = replace(deck, at=tuple(at))
+    else:
+        t = (i, j)[k]
+        held = replace(deck, density={**deck.density, t: deck.density[t] * _FROZEN})
+    return DIALECTS[deck.code].pair_row(held, i, j)["contact"]
+
+
 def _dt(deck: Deck) -> float | None:
-    """The time step the deck's runs use, where it sets one; None for a deck read without its engine."""
-    return deck.dt if deck.held is not None else None
+    """The time step the deck's runs use (LAMMPS' default for its units where it sets none); None for
+    a deck read without its engine."""
+    if deck.held is None:
+        return None
+    return deck.dt if deck.dt is not None else DEFAULT_DT.get(deck.units)
 
 
 def _empty(deck: Deck, t: int) -> bool:

@@ -13,6 +13,7 @@ from __future__ import annotations
 import copy
 import re
 
+from .deck_beside import BESIDE
 from .deck_script import LocatedError, Script
 from .deck_state import (Deck, DeckError, atom_type, explained, fetch, labelmap, number, place, types,
                          unlabeled)
@@ -305,6 +306,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         _group(deck, words)
     elif cmd == "units" and len(words) >= 2:
         deck.units = words[1]
+    elif cmd == "unfix" and len(words) >= 2:
+        deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
     elif cmd == "timestep" and len(words) >= 2:
         deck.dt = number(words[1], where, line)
     elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
@@ -428,7 +431,7 @@ def contact_key(deck: Deck) -> str:
                        deck.hard, deck.model, deck.limit_force, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
-                       set(deck.shapes), deck.sizes, deck.others)))
+                       set(deck.shapes), deck.sizes, deck.others, [w for _, w in deck.beside])))
 
 
 def _stage(deck: Deck, loc, line: str) -> None:
@@ -553,23 +556,12 @@ def _set(deck: Deck, words: list, where: str, line: str, loc) -> None:
             return
 
 
-#: Fixes that act on the atoms beside the contact: the engine measures another eps than the
-#: contact's own where they act during a collision (LAMMPS measured: fix viscous 0.99592 where the
-#: contact gives 0.9999999995). Named, each with what it does.
-_BESIDE_CONTACT = {"viscous": "a drag force -gamma v on every atom of its group",
-                   "langevin": "a thermostat's drag and random force",
-                   "setforce": "forces set to given values", "freeze": "frozen atoms (no force moves them)",
-                   "nve/limit": "a cap on how far an atom moves per step",
-                   "adapt": "coefficients changed as the run goes",
-                   "damp/viscous": "a drag force", "viscous/sphere": "a drag torque"}
-
-
 def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     style = words[3]
-    if style in _BESIDE_CONTACT:
-        deck.unknown.append((*loc, line, f"fix {style}: {_BESIDE_CONTACT[style]}, which changes the eps the engine "
-                                         "measures where it acts during a collision; the audit gives the contact's "
-                                         "own eps"))
+    # a fix of the same ID replaces the earlier one, as in the engines
+    deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
+    if style in BESIDE:
+        deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck_beside)
         return
     if style in _INSERTING_FIXES:
         deck.inserting = True

@@ -108,6 +108,8 @@ class Deck:
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     liggghts_mark: tuple = ()                     # (loc, text) of the first command only LIGGGHTS has
     dt: float | None = None                       # the timestep command's, None where the deck has none
+    beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
+                                                  # (restitution.dem.deck_beside), in force now
     held: dict | None = None                      # type -> [(radius, density)] the engine held at a run, or
                                                   # None where the deck was read without its engine
     # type -> the (radius, density) its spheres may have where it has several sizes (the engine's,
