@@ -30,12 +30,12 @@ def test_a_rung_added_to_the_registry_is_quoted_and_chosen(tmp_path):
     lad.rung_names = (*lad.rung_names, "toy")
     r = lad.evaluate([0.3, 3.0], tol=1e-9, build=False)
     assert r.method == "toy" and np.all(r.eps == 1.0)
-    assert lad.evaluate([0.3], tol=1e-9, end="overlap", build=False).method == "toy"
+    assert lad.with_end("overlap").evaluate([0.3], tol=1e-9, build=False).method == "toy"
 
 
 def test_a_rung_that_does_not_serve_the_rule_is_listed_with_the_reason(tmp_path):
     lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
-    q = {c["method"]: c for c in lad.evaluate([0.3], tol=1e-6, end="overlap", build=False).candidates}
+    q = {c["method"]: c for c in lad.with_end("overlap").evaluate([0.3], tol=1e-6, build=False).candidates}
     assert not q["fitted-c"]["available"] and "force rule only" in q["fitted-c"]["reason"]
 
 
@@ -52,5 +52,5 @@ def test_the_reference_rung_quotes_what_collide_states_under_either_rule():
         req = Request(Problem(as_exponents(alpha, gamma), "overlap"), np.array([1.0]), 1e-9)
         assert req.rule == rule
         quoted = Reference().bound(req, {})[0]
-        stated = collide((alpha, gamma), 1.0, rtol=reference_rtol(1e-9, req.ex, rule), end="overlap").error_bound
+        stated = collide(Problem.of(alpha, gamma, "overlap"), 1.0, rtol=reference_rtol(1e-9, Problem(req.ex, rule))).error_bound
         assert quoted == stated

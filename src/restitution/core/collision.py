@@ -40,14 +40,13 @@ from dataclasses import dataclass, replace
 import numpy as np
 
 from .errors import ParameterError, number_in, require_positive_finite
-from .exponents import as_exponents
 from .energy import NEAR_ELASTIC, dissipated, one_minus_eps
 from .law import ForceForm, Law, PullForm
 from .model import at_most_one
 from .conditioning import conditioning, plain_accuracy
 from .results import Collision, InverseCollision, Trajectory, end_rule  # noqa: F401  (part of this module's interface)
 from .sampling import Piece, sample
-from .problem import as_problem
+from .problem import Problem, as_problem
 # StickError, stick_bound and stick_reason are part of this module's interface (every method refuses sticking alike)
 from .sticking import StickError, Trap, check_separates, stick_bound, stick_reason  # noqa: F401
 
@@ -465,21 +464,21 @@ def _check_omega(field: str, omega) -> float:
     return value
 
 
-def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str | None = None) -> Collision:
+def collide(problem: Problem, omega, *, rtol: float = 1e-12, t_eval=None) -> Collision:
     """Forward collision x'' + Omega x^alpha + x^gamma x' = 0, x(0) = 0, x'(0) = 1, to end of contact.
 
-    ``problem``: a Problem (its end rule applies), an Exponents or an (alpha, gamma) pair.
+    ``problem``: the exponents and the end-of-contact rule (results.END_RULES), the same relative
+    accuracy for both however small eps (checked against mpmath down to eps = 5e-36); under
+    "overlap" the bodies may provably never separate (StickError, see core.sticking).
     ``omega``: in OMEGA_RANGE. ``rtol`` in [1e-14, 1e-3] (solve_ivp clips below 2.2e-14; the overlap
-    rule runs at OVERLAP_RTOL_MAX at most). ``t_eval``: tau samples for ``trajectory``. ``end``: the
-    end-of-contact rule (results.END_RULES) for plain exponents, the same relative accuracy for both,
-    however small eps (checked against mpmath down to eps = 5e-36). Under "overlap" the bodies may
-    provably never separate (StickError, see core.sticking)."""
-    problem = as_problem(problem, end)   # a Problem brings its own rule
+    rule runs at OVERLAP_RTOL_MAX at most). ``t_eval``: tau samples for ``trajectory``. (Plain
+    exponents, an Exponents or a pair, stand for their force rule.)"""
+    problem = as_problem(problem)
     ex = problem.ex
     omega = _check_omega("omega", omega)
     rtol = _check_rtol(rtol)
     t_eval = _check_t_eval(t_eval)
-    rule, overlap = problem.end, problem.end == "overlap"
+    overlap = problem.end == "overlap"
     law = Law.of(ex, omega, +1)
     if overlap:
         rtol = min(rtol, OVERLAP_RTOL_MAX)
@@ -515,8 +514,8 @@ def collide(problem, omega, *, rtol: float = 1e-12, t_eval=None, end: str | None
     plain = plain_accuracy(problem, max(rtol, SOLVER_RTOL_FLOOR))
     bound = plain * float(conditioning(problem, eps, omega))
     loss_bound = max(plain, bound * eps / loss) if 1.0 - eps >= BY_SUBTRACTION else plain
-    return Collision(ex.alpha, ex.gamma, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
-                     float(last.tau), float(x_c), end, rtol, trajectory, loss, rule, bound, loss_bound)
+    return Collision(problem, omega, "forward", at_most_one(eps), float(top.tau), float(top.x),
+                     float(last.tau), float(x_c), end, rtol, trajectory, loss, bound, loss_bound)
 
 
 def _to_force_end(piece: Piece, law: Law, x_c: float, last: _State) -> Piece:
@@ -533,12 +532,13 @@ def _to_force_end(piece: Piece, law: Law, x_c: float, last: _State) -> Piece:
     return replace(piece, hi=last.tau + (x_c - last.x) / last.v)
 
 
-def inverse_collide(problem, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,
+def inverse_collide(problem: Problem, omega_tilde, x_start: float = 0.0, *, rtol: float = 1e-12,
                     t_eval=None) -> InverseCollision:
     """Inverse collision x~'' + Omega~ x~^alpha - x~^gamma x~' = 0, x~(0) = x_start, x~'(0) = 1, for
-    ``problem`` (a Problem, an Exponents or an (alpha, gamma) pair); the public spelling with the
-    exponents apart, and its documentation: :func:`restitution.inverse_collide`."""
-    ex = as_exponents(problem)
+    the exponents of ``problem`` (x~ = 0 ends it: no end rule applies); the public spelling with
+    the exponents apart, and its documentation: :func:`restitution.inverse_collide`."""
+    problem = as_problem(problem)
+    ex = problem.ex
     omega = _check_omega("omega_tilde", omega_tilde)
     x_start = _check_x_start(x_start)
     rtol = _check_rtol(rtol)
@@ -551,17 +551,17 @@ def inverse_collide(problem, omega_tilde, x_start: float = 0.0, *, rtol: float =
     low = _release_inverse(law, top, rtol, pieces)
     last = _land_inverse(law, low, rtol, pieces)
     trajectory = sample(pieces, t_eval, last.tau) if t_eval is not None else None
-    return InverseCollision(ex.alpha, ex.gamma, omega, x_start, float(top.tau), float(top.x),
+    return InverseCollision(problem, omega, x_start, float(top.tau), float(top.x),
                             float(last.tau), float(last.v), rtol, trajectory)
 
 
-def collide_many(problem, omegas, *, rtol: float = 1e-12) -> dict[str, np.ndarray]:
+def collide_many(problem: Problem, omegas, *, rtol: float = 1e-12) -> dict[str, np.ndarray]:
     """collide() over an array of Omega; returns arrays keyed eps, tau_b, x_b, tau_c, x_c, end."""
-    ex = as_exponents(problem)
+    problem = as_problem(problem)
     omegas = np.asarray(omegas, dtype=float)
     if omegas.ndim != 1:
         raise ParameterError("omegas", omegas, "must be a 1-D array of finite numbers > 0")
-    hits = [collide(ex, w, rtol=rtol) for w in omegas]
+    hits = [collide(problem, w, rtol=rtol) for w in omegas]
     out = {name: np.array([getattr(h, name) for h in hits], dtype=float)
            for name in ("eps", "tau_b", "x_b", "tau_c", "x_c")}
     out["end"] = np.array([h.ended_by for h in hits], dtype=str)

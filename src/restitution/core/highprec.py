@@ -58,9 +58,8 @@ import mpmath
 from mpmath import mp
 
 from .errors import ParameterError, integer_in
-from .exponents import as_exponents
-from .results import end_rule
-from .problem import problem_end
+from .exponents import read_through
+from .problem import Problem, as_problem
 
 __all__ = ["HighPrecisionCollision", "reference_collision"]
 
@@ -84,25 +83,27 @@ _MAX_DIGITS = 300
 class HighPrecisionCollision:
     """Result of :func:`reference_collision` (all times and lengths in scaled units).
 
-    ``end`` is "force" when contact ends because the total force vanishes
-    (x'' = 0, tau > 0) and "separation" when x returns to 0 first (then x_c = 0).
-    ``error_estimate`` is the largest relative difference of eps, tau_b, x_b, tau_c
+    ``problem`` is what was solved (the exponents and the rule asked); ``ended_by`` is "force"
+    when contact ends because the total force vanishes (x'' = 0, tau > 0) and "separation" when
+    x returns to 0 first (then x_c = 0). ``error_estimate`` is the largest relative difference of eps, tau_b, x_b, tau_c
     between this run and one with ``_CHECK_EXTRA`` more digits (inf if the two runs
     disagree on ``end``). ``steps`` counts Taylor steps of the run at ``digits``.
     """
 
-    alpha: Fraction
-    gamma: Fraction
+    problem: Problem
     omega: mpmath.mpf
     eps: mpmath.mpf
     tau_b: mpmath.mpf
     x_b: mpmath.mpf
     tau_c: mpmath.mpf
     x_c: mpmath.mpf
-    ended_by: str          # how contact ended: "force" or "separation" (the rule asked is the caller's)
+    ended_by: str
     digits: int
     error_estimate: mpmath.mpf
     steps: int = 0
+
+    alpha = read_through("problem", "alpha")
+    gamma = read_through("problem", "gamma")
 
     def as_floats(self) -> dict:
         return {
@@ -462,23 +463,22 @@ def _check_omega(omega):
 _COMPARED = ("eps", "tau_b", "x_b", "tau_c")
 
 
-def reference_collision(problem, omega, *, digits: int = 30, end: str | None = None) -> HighPrecisionCollision:
+def reference_collision(problem: Problem, omega, *, digits: int = 30) -> HighPrecisionCollision:
     """Collision quantities to about ``digits`` significant digits.
 
-    ``alpha`` and ``gamma`` are anything :class:`~restitution.core.exponents.Exponents`
-    parses ("3/2", Fraction(3, 2), 1.5, ...); ``omega`` may be a float, int, Fraction,
+    ``problem``: the exponents and the end-of-contact rule ("force" or "overlap", where contact
+    lasts until x = 0). ``omega`` may be a float, int, Fraction,
     decimal string or mpf (strings and Fractions are read at full working precision;
     a float is taken as the exact binary number it is).
 
-    ``end`` is the end-of-contact rule ("force" or "overlap", where contact lasts until x = 0).
     Runs the integration twice (see module docstring), so it costs about three times
     one run. Raises ParameterError for bad inputs.
     """
-    end = problem_end(problem, end)   # a Problem brings its own rule
-    ex = as_exponents(problem)
+    problem = as_problem(problem)
+    ex = problem.ex
     _check_omega(omega)
     integer_in("digits", digits, _MIN_DIGITS, _MAX_DIGITS)
-    overlap = end_rule(end) == "overlap"
+    overlap = problem.end == "overlap"
     main = _integrate(ex.alpha, ex.gamma, omega, digits, overlap)
     check = _integrate(ex.alpha, ex.gamma, omega, digits + _CHECK_EXTRA, overlap)
     with mp.workdps(digits + _CHECK_EXTRA + _GUARD_DIGITS + _small_omega_digits(omega)):
@@ -489,6 +489,6 @@ def reference_collision(problem, omega, *, digits: int = 30, end: str | None = N
             err = max(abs(main[k] - check[k]) / abs(check[k]) for k in _COMPARED)
         err = +err
     return HighPrecisionCollision(
-        alpha=ex.alpha, gamma=ex.gamma, omega=main["omega"], eps=main["eps"],
+        problem=problem, omega=main["omega"], eps=main["eps"],
         tau_b=main["tau_b"], x_b=main["x_b"], tau_c=main["tau_c"], x_c=main["x_c"],
         ended_by=main["end"], digits=digits, error_estimate=err, steps=main["steps"])

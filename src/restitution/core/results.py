@@ -8,11 +8,15 @@ The scipy reference (:mod:`restitution.core.collision`), the mpmath one
 from __future__ import annotations
 
 from dataclasses import dataclass
-from fractions import Fraction
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from .errors import one_of
+from .exponents import read_through
+
+if TYPE_CHECKING:   # problem.py reads end_rule from here
+    from .problem import Problem
 
 __all__ = ["Trajectory", "Collision", "InverseCollision", "END_RULES", "end_rule"]
 
@@ -44,15 +48,15 @@ class Collision:
     ``ended_by`` is how contact ended: "force" where the total force vanished
     (Omega x^(alpha-gamma) + x' = 0), "separation" where x returned to 0. ``rule`` is the
     end-of-contact rule asked for (END_RULES): under "overlap" ``ended_by`` is always "separation".
-    (``as_dict`` writes ``ended_by`` under the key "end", as every output written before did.) ``rtol`` is the
+    (``as_dict`` writes ``ended_by`` under the key "end", as every output written before did.)
+    ``problem`` is what was solved (its exponents and the rule asked). ``rtol`` is the
     tolerance the integration ran at (0.0 for a closed form). ``one_minus_eps`` is 1 - eps to
     relative accuracy (from the dissipated energy, not by subtraction), None where the method does
     not provide it. ``error_bound`` and ``one_minus_eps_bound`` are the stated relative accuracies
     of eps and 1 - eps (None where the method states none).
     """
 
-    alpha: Fraction
-    gamma: Fraction
+    problem: Problem
     omega: float
     direction: str
     eps: float
@@ -64,9 +68,12 @@ class Collision:
     rtol: float
     trajectory: Trajectory | None = None
     one_minus_eps: float | None = None
-    rule: str = "force"
     error_bound: float | None = None
     one_minus_eps_bound: float | None = None
+
+    alpha = read_through("problem", "alpha")
+    gamma = read_through("problem", "gamma")
+    rule = read_through("problem", "end", "The end-of-contact rule asked for.")
 
     def as_dict(self) -> dict:
         out = {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.ended_by}
@@ -89,10 +96,10 @@ def _json_numbers(result, names) -> dict:
 
 @dataclass(frozen=True)
 class InverseCollision:
-    """x~'' + Omega~ x~^alpha - x~^gamma x~' = 0 from x~(0) = x_start, x~'(0) = 1 back to x~ = 0."""
+    """x~'' + Omega~ x~^alpha - x~^gamma x~' = 0 from x~(0) = x_start, x~'(0) = 1 back to x~ = 0
+    (``problem``: the exponents; no end rule applies)."""
 
-    alpha: Fraction
-    gamma: Fraction
+    problem: Problem
     omega: float
     x_start: float
     tau_b: float
@@ -101,6 +108,9 @@ class InverseCollision:
     v_end: float
     rtol: float
     trajectory: Trajectory | None = None
+
+    alpha = read_through("problem", "alpha")
+    gamma = read_through("problem", "gamma")
 
     def as_dict(self) -> dict:
         return _json_numbers(self, ("omega", "x_start", "tau_b", "x_b", "tau_end", "v_end"))

@@ -42,8 +42,7 @@ def contact_eps(problem, omega: float, rtol: float = 1e-12) -> float:
     problem = as_problem(problem)
     try:
         tol = reference_bound(rtol, problem.ex)   # the force rule's, as the reference states it
-        return float(epsilon(alpha=problem.alpha, gamma=problem.gamma, omega=[omega], tol=tol, end=problem.end,
-                             build=False, cached=False).eps[0])
+        return float(epsilon(problem, omega=[omega], tol=tol, build=False, cached=False).eps[0])
     except StickError:
         raise
     except ParameterError:

@@ -43,7 +43,7 @@ import numpy as np
 
 from ..core.conditioning import conditioning, plain_accuracy, plain_factor_floor
 from ..core.exponents import read_through
-from ..core.problem import Problem, as_problem
+from ..core.problem import Problem
 
 __all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
            "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "integrator_rtol", "reference_rtol", "reference_bound",
@@ -73,24 +73,24 @@ def _rtol_for(tol: float, factor: float, floor: float) -> float:
     return min(1e-6, max(1e-14, (tol - floor) / (2 * factor)))
 
 
-# ``problem`` below: a Problem, whose rule applies, or an Exponents (or a pair) with ``end``.
-def integrator_bound(rtol: float, problem, end: str | None = None) -> float:
-    """Relative bound of the compiled integrator at ``rtol`` for ``problem`` (under ``end``)."""
-    factor, floor = _integrator_factor_floor(as_problem(problem, end))
+# ``problem`` below: a Problem, whose rule applies (an Exponents or a pair: the force rule).
+def integrator_bound(rtol: float, problem) -> float:
+    """Relative bound of the compiled integrator at ``rtol`` for ``problem``."""
+    factor, floor = _integrator_factor_floor(problem)
     return factor * rtol + floor
 
 
-def integrator_rtol(tol: float, problem, end: str | None = None) -> float:
-    return _rtol_for(tol, *_integrator_factor_floor(as_problem(problem, end)))
+def integrator_rtol(tol: float, problem) -> float:
+    return _rtol_for(tol, *_integrator_factor_floor(problem))
 
 
-def reference_bound(rtol: float, problem, end: str | None = None) -> float:
+def reference_bound(rtol: float, problem) -> float:
     """The scipy reference's (core.collision.collide) bound: what collide states before conditioning."""
-    return plain_accuracy(as_problem(problem, end), rtol)
+    return plain_accuracy(problem, rtol)
 
 
-def reference_rtol(tol: float, problem, end: str | None = None) -> float:
-    return _rtol_for(tol, *plain_factor_floor(as_problem(problem, end)))
+def reference_rtol(tol: float, problem) -> float:
+    return _rtol_for(tol, *plain_factor_floor(problem))
 
 
 def highprec_digits(tol: float) -> int:
@@ -147,9 +147,6 @@ class Request:
     @property
     def n(self) -> int:
         return int(self.omega.size if self.size is None else self.size)
-
-    def __post_init__(self):
-        object.__setattr__(self, "problem", as_problem(self.problem))   # an Exponents: the force rule
 
     ex = read_through("problem", "ex")
     end = read_through("problem", "end", "The end rule asked for.")

@@ -82,7 +82,7 @@ class Highprec(Rung):
             if pulls and OMEGA_RANGE[0] <= w <= OMEGA_RANGE[1]:
                 # mpmath has no proof of sticking and would follow a trapped creep for its whole
                 # step budget: the reference integrator's cheap run raises StickError first.
-                collide(req.ex, w, rtol=1e-8, end="overlap")
+                collide(req.problem, w, rtol=1e-8)
             r = reference_collision(req.problem, w, digits=digits)
             if not r.error_estimate <= 10.0 ** (1 - digits):
                 raise ArithmeticError(f"mpmath reference did not converge at Omega = {w} "
@@ -95,6 +95,6 @@ class Highprec(Rung):
         from ...core.highprec import reference_collision
         from ...core.results import Collision
         r = reference_collision(problem, omega, digits=digits)
-        return Collision(r.alpha, r.gamma, float(r.omega), "forward", float(r.eps), float(r.tau_b), float(r.x_b),
+        return Collision(problem, float(r.omega), "forward", float(r.eps), float(r.tau_b), float(r.x_b),
                          float(r.tau_c), float(r.x_c), r.ended_by, 10.0 ** (1 - r.digits),
-                         one_minus_eps=float(1 - r.eps), rule=problem.end)
+                         one_minus_eps=float(1 - r.eps))

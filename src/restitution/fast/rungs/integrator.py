@@ -29,8 +29,8 @@ def integrator_collision(problem, omega, rtol):
     from ..integrator import COLUMNS, END_FORCE, END_SEPARATION, END_STUCK, collide_fast
     from ..master import TIMES_OMEGA_MIN
 
-    ex, end = problem.ex, problem.end
-    lo = max(stiff_omega_min(ex, end), TIMES_OMEGA_MIN)
+    ex = problem.ex
+    lo = max(stiff_omega_min(problem), TIMES_OMEGA_MIN)
     omega = number_in("omega", omega, lo, OMEGA_MAX, why="the compiled integrator's range (method reference "
                       "or epsilon() cover the rest)")
     rtol = number_in("rtol", rtol, RTOL_MIN, 1e-6)
@@ -42,9 +42,8 @@ def integrator_collision(problem, omega, rtol):
     ends = {END_FORCE: "force", END_SEPARATION: "separation"}
     if int(row["end"]) not in ends:
         raise ArithmeticError(f"the compiled integrator failed at Omega = {omega:g}")
-    return Collision(ex.alpha, ex.gamma, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
-                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol,
-                     rule=end)
+    return Collision(problem, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
+                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol)
 
 
 class Integrator(Rung):
