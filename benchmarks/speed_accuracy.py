@@ -270,10 +270,10 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
         row("closed-form (overlap)", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: uniform_eps(u, big), n_fast, 5),
             uniform_eps(u, omegas), note=f"build {u_build:.1f} s; stated bound {u.bound_eps:.2g} (eps), "
                                          f"{u.bound_one_minus_eps:.2g} (1 - eps) over Omega in [1e-8, 1e8]")
-    collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas[:2], 1e-9, True)
+    collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas[:2], 1e-9, "overlap")
     for rtol in (1e-9, 1e-12):
-        res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, rtol, True)
-        cost = _time_per_point(lambda r=rtol: collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, r, True),
+        res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, rtol, "overlap")
+        cost = _time_per_point(lambda r=rtol: collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, r, "overlap"),
                                omegas.size, 3)
         row("integrator (overlap)", f"rtol={rtol:g}", cost, res[:, 0], note="compiled, end at x = 0")
     sub = omegas[:: 4 if quick else 1]

@@ -156,7 +156,7 @@ def collide(alpha=None, gamma=None, omega=None, *, method: str = "reference", rt
     -------
     Collision
         ``eps``, ``tau_b``, ``x_b`` (maximum compression), ``tau_c``, ``x_c`` (end of contact),
-        ``ended_by`` ("force" or "separation": how contact ended), ``rule`` (the rule asked),
+        ``ended_by`` ("force" or "separation": how contact ended), ``end`` (the rule asked),
         ``error_bound``, ``one_minus_eps``.
 
     Raises

@@ -27,7 +27,7 @@ def test_overlap_rule_matches_the_dashpots_half_period(omega):
     w = math.sqrt(omega - 0.25)
     assert exact.tau_c == pytest.approx(math.pi / w, rel=1e-15)
     got = collide(1, 0, omega, end="overlap", rtol=RTOL)
-    assert got.ended_by == "separation" and got.rule == "overlap" and got.x_c == 0.0
+    assert got.ended_by == "separation" and got.end == "overlap" and got.x_c == 0.0
     for field in ("tau_b", "x_b", "tau_c", "one_minus_eps"):
         assert math.isclose(getattr(got, field), getattr(exact, field), rel_tol=BOUND), field
     assert math.isclose(got.eps, exact.eps, rel_tol=BOUND)
@@ -38,7 +38,7 @@ def test_force_rule_still_matches_the_dashpots_closed_form(omega):
     got = collide(1, 0, omega, rtol=RTOL)
     assert got == collide(1, 0, omega, rtol=RTOL, end="force")
     exact = dashpot_collision(omega)
-    assert got.ended_by == exact.ended_by == "force" and got.rule == "force"
+    assert got.ended_by == exact.ended_by == "force" and got.end == "force"
     assert math.isclose(got.eps, exact.eps, rel_tol=BOUND)
 
 
@@ -126,7 +126,7 @@ def test_epsilon_overlap_uses_only_rungs_that_know_the_rule():
 def test_fast_method_serves_the_overlap_rule():
     """It used to refuse it (it stopped at zero force); now it ends at x = 0 (issue 23)."""
     fast = collide("3/2", 1, 0.5, method="integrator", end="overlap")
-    assert fast.rule == "overlap" and fast.ended_by == "separation"
+    assert fast.end == "overlap" and fast.ended_by == "separation"
     assert math.isclose(fast.eps, collide("3/2", 1, 0.5, end="overlap").eps, rel_tol=1e-9)
     with pytest.raises(ParameterError, match="contact never ends"):
         collide("5/2", "1/2", 0.1, method="integrator", end="overlap")
@@ -144,7 +144,7 @@ def test_cli_end_overlap():
     assert main(["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--end", "overlap",
                  "--json"], out=out) == 0
     data = json.loads(out.getvalue())
-    assert data["rule"] == "overlap" and data["end"] == "separation"
+    assert data["end"] == "overlap" and data["ended_by"] == "separation"
     assert data["eps"] == collide("3/2", 1, 0.5, end="overlap").eps
     out = io.StringIO()
     assert main(["eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--end", "overlap", "--json"],

@@ -38,7 +38,7 @@ def _bound(rtol, alpha, gamma):
 
 def _fast(alpha, gamma, omega, rtol):
     ex = as_exponents(alpha, gamma)
-    return collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.atleast_1d(omega), rtol, True)
+    return collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.atleast_1d(omega), rtol, "overlap")
 
 
 # (p >= 3 pairs such as 2, 3/4 are left out: there the force rule's compiled integrator itself

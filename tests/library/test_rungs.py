@@ -50,7 +50,7 @@ def test_the_reference_rung_quotes_what_collide_states_under_either_rule():
 
     for alpha, gamma, rule in (("1", "3/2", "force"), ("3/2", "1", "overlap")):
         req = Request(Problem(as_exponents(alpha, gamma), "overlap"), np.array([1.0]), 1e-9)
-        assert req.rule == rule
+        assert req.effective_end == rule
         quoted = Reference().bound(req, {})[0]
         stated = collide(Problem.of(alpha, gamma, "overlap"), 1.0, rtol=reference_rtol(1e-9, Problem(req.ex, rule))).error_bound
         assert quoted == stated

@@ -87,7 +87,7 @@ class HighPrecisionCollision:
     when contact ends because the total force vanishes (x'' = 0, tau > 0) and "separation" when
     x returns to 0 first (then x_c = 0). ``error_estimate`` is the largest relative difference of eps, tau_b, x_b, tau_c
     between this run and one with ``_CHECK_EXTRA`` more digits (inf if the two runs
-    disagree on ``end``). ``steps`` counts Taylor steps of the run at ``digits``.
+    disagree on ``ended_by``). ``steps`` counts Taylor steps of the run at ``digits``.
     """
 
     problem: Problem
@@ -115,7 +115,8 @@ class HighPrecisionCollision:
             "x_b": float(self.x_b),
             "tau_c": float(self.tau_c),
             "x_c": float(self.x_c),
-            "end": self.ended_by,
+            "end": self.problem.end,
+            "ended_by": self.ended_by,
             "digits": self.digits,
             "error_estimate": float(self.error_estimate),
         }
@@ -340,7 +341,7 @@ def _small_omega_digits(omega_in) -> int:
     return max(0, int(mp.ceil(-lg)))
 
 
-def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap: bool) -> dict:
+def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, end: str) -> dict:
     eff = digits + _small_omega_digits(omega_in)
     dps = eff + _GUARD_DIGITS
     with mp.workdps(dps):
@@ -353,7 +354,7 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap:
         log2_tol = -(eff + _TOL_EXTRA) * math.log2(10)
         model = _Model(alpha, gamma, omega, order)
         # Under the overlap rule a vanishing force is no end: only x = 0 is.
-        seek_force = model.force_can_vanish and not overlap
+        seek_force = model.force_can_vanish and end == "force"
         p = model.p
         steps = 0
 
@@ -403,7 +404,7 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap:
                 if hit is not None:
                     s = _root(D, *hit)
                     result = dict(tau_c=t + s, x_c=_horner(X, s), eps=-_horner(V, s),
-                                  end="force")
+                                  ended_by="force")
                     break
             t, x, v = t + h, _horner(X, h), _horner(V, h)
             if tau_b is not None and v < 0 and x < x_b / 4:
@@ -428,11 +429,11 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap:
                     s = _root(E, *hit)
                     uc = u + s
                     result = dict(tau_c=_horner(T, s), x_c=uc**p, eps=-_horner(V, s),
-                                  end="force")
+                                  ended_by="force")
                     break
                 if last:
                     result = dict(tau_c=_horner(T, s_end), x_c=mp.zero,
-                                  eps=-_horner(V, s_end), end="separation")
+                                  eps=-_horner(V, s_end), ended_by="separation")
                     break
                 u, v, t = u + s_end, _horner(V, s_end), _horner(T, s_end)
 
@@ -478,11 +479,10 @@ def reference_collision(problem: Problem, omega, *, digits: int = 30) -> HighPre
     ex = problem.ex
     _check_omega(omega)
     integer_in("digits", digits, _MIN_DIGITS, _MAX_DIGITS)
-    overlap = problem.end == "overlap"
-    main = _integrate(ex.alpha, ex.gamma, omega, digits, overlap)
-    check = _integrate(ex.alpha, ex.gamma, omega, digits + _CHECK_EXTRA, overlap)
+    main = _integrate(ex.alpha, ex.gamma, omega, digits, problem.end)
+    check = _integrate(ex.alpha, ex.gamma, omega, digits + _CHECK_EXTRA, problem.end)
     with mp.workdps(digits + _CHECK_EXTRA + _GUARD_DIGITS + _small_omega_digits(omega)):
-        if main["end"] != check["end"]:
+        if main["ended_by"] != check["ended_by"]:
             # The end condition itself is not resolved (force root at x = 0, alpha = gamma).
             err = mp.inf
         else:
@@ -491,4 +491,4 @@ def reference_collision(problem: Problem, omega, *, digits: int = 30) -> HighPre
     return HighPrecisionCollision(
         problem=problem, omega=main["omega"], eps=main["eps"],
         tau_b=main["tau_b"], x_b=main["x_b"], tau_c=main["tau_c"], x_c=main["x_c"],
-        ended_by=main["end"], digits=digits, error_estimate=err, steps=main["steps"])
+        ended_by=main["ended_by"], digits=digits, error_estimate=err, steps=main["steps"])

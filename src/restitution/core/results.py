@@ -46,10 +46,9 @@ class Collision:
     """End-of-contact quantities of one forward collision in scaled variables.
 
     ``ended_by`` is how contact ended: "force" where the total force vanished
-    (Omega x^(alpha-gamma) + x' = 0), "separation" where x returned to 0. ``rule`` is the
+    (Omega x^(alpha-gamma) + x' = 0), "separation" where x returned to 0. ``end`` is the
     end-of-contact rule asked for (END_RULES): under "overlap" ``ended_by`` is always "separation".
-    (``as_dict`` writes ``ended_by`` under the key "end", as every output written before did.)
-    ``problem`` is what was solved (its exponents and the rule asked). ``rtol`` is the
+    ``problem`` is what was solved (its exponents and ``end``). ``rtol`` is the
     tolerance the integration ran at (0.0 for a closed form). ``one_minus_eps`` is 1 - eps to
     relative accuracy (from the dissipated energy, not by subtraction), None where the method does
     not provide it. ``error_bound`` and ``one_minus_eps_bound`` are the stated relative accuracies
@@ -73,12 +72,11 @@ class Collision:
 
     alpha = read_through("problem", "alpha")
     gamma = read_through("problem", "gamma")
-    rule = read_through("problem", "end", "The end-of-contact rule asked for.")
+    end = read_through("problem", "end", "The end-of-contact rule asked for.")
 
     def as_dict(self) -> dict:
-        out = {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.ended_by}
-        if self.rule != "force":   # the default rule adds nothing, so earlier outputs keep their bytes
-            out["rule"] = self.rule
+        out = {**_json_numbers(self, ("omega", "eps", "tau_b", "x_b", "tau_c", "x_c")), "end": self.end,
+               "ended_by": self.ended_by}
         if self.one_minus_eps is not None:
             out["one_minus_eps"] = float(self.one_minus_eps)
         if self.error_bound is not None:

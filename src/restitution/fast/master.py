@@ -108,7 +108,7 @@ def reference_eps(problem, omegas, rtol: float = 1e-14) -> np.ndarray:
     om = np.asarray(omegas, dtype=float)
     if ex.alpha == ex.gamma:
         return asy.equal_exponents_eps(om)
-    res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, rtol, problem.effective_end == "overlap")
+    res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, rtol, problem.effective_end)
     if np.any(res[:, 5] == END_STUCK):
         from ..core.collision import StickError
         w = float(om.ravel()[res[:, 5] == END_STUCK][0])

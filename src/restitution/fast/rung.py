@@ -152,7 +152,7 @@ class Request:
     end = read_through("problem", "end", "The end rule asked for.")
     rules_differ = read_through("problem", "rules_differ",
                                 "The force can vanish during contact (alpha > gamma): the two end rules differ.")
-    rule = read_through("problem", "effective_end",
+    effective_end = read_through("problem", "effective_end",
                         'The end rule whose numbers apply: "overlap" only where it differs from the force rule.')
 
 

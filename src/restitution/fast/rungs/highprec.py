@@ -46,21 +46,21 @@ class Highprec(Rung):
     def outside(self, req):
         if not req.rules_differ and req.lo < 1e-3:
             return "Omega < 1e-3 with alpha <= gamma (creeping)"
-        if req.rule == "overlap" and req.lo < CREEP_MIN:
+        if req.effective_end == "overlap" and req.lo < CREEP_MIN:
             return f"Omega < {CREEP_MIN:g} under the overlap rule (the return creeps for ~0.2/Omega steps)"
         return None
 
     def edges(self, req):
         if not req.rules_differ:
             return (1e-3,)
-        return (CREEP_MIN,) if req.rule == "overlap" else ()
+        return (CREEP_MIN,) if req.effective_end == "overlap" else ()
 
     def price(self, req):
         # From the range's ends, not every point: a quote must not cost a pass over a million
         # Omegas for a rung that is almost never chosen (it was a fifth of an epsilon call). The
         # per-point cost is monotone in Omega, so the mean of its two ends times n lies between
         # the cheapest and the dearest point's.
-        ends = highprec_cost(np.array([req.lo, req.hi]), highprec_digits(req.tol), req.rule == "overlap")
+        ends = highprec_cost(np.array([req.lo, req.hi]), highprec_digits(req.tol), req.effective_end == "overlap")
         return ends / 2.0 * req.n
 
     def bound(self, req, built):
@@ -71,11 +71,11 @@ class Highprec(Rung):
         from ...core.collision import OMEGA_RANGE, collide
         from ...core.highprec import reference_collision
         digits = highprec_digits(req.tol)
-        seconds = highprec_cost(omega, digits, req.rule == "overlap")
+        seconds = highprec_cost(omega, digits, req.effective_end == "overlap")
         if seconds > 10.0:   # a long wait says so at its start
             print(f"restitution: the mpmath reference on {np.size(omega)} point(s) takes about {seconds:.0f} s",
                   file=sys.stderr if req.stream is None else req.stream, flush=True)
-        pulls = req.rule == "overlap"
+        pulls = req.effective_end == "overlap"
         out = []
         for w in np.ravel(omega):
             w = float(w)

@@ -34,16 +34,16 @@ def integrator_collision(problem, omega, rtol):
     omega = number_in("omega", omega, lo, OMEGA_MAX, why="the compiled integrator's range (method reference "
                       "or epsilon() cover the rest)")
     rtol = number_in("rtol", rtol, RTOL_MIN, 1e-6)
-    row = dict(zip(COLUMNS, collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, problem.effective_end == "overlap")[0]))
-    if int(row["end"]) == END_STUCK:
+    row = dict(zip(COLUMNS, collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, problem.effective_end)[0]))
+    if int(row["ended_by"]) == END_STUCK:
         raise StickError("omega", omega, "under the overlap rule contact never ends here: the "
                                          "attractive phase stops the return and the bodies stay together "
                                          "(eps = 0); use end=force")
     ends = {END_FORCE: "force", END_SEPARATION: "separation"}
-    if int(row["end"]) not in ends:
+    if int(row["ended_by"]) not in ends:
         raise ArithmeticError(f"the compiled integrator failed at Omega = {omega:g}")
     return Collision(problem, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
-                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol)
+                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["ended_by"])], rtol)
 
 
 class Integrator(Rung):

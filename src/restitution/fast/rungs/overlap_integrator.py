@@ -1,4 +1,4 @@
-"""The compiled integrator under the overlap rule (``collide_fast(..., overlap=True)``), where it
+"""The compiled integrator under the overlap rule (``collide_fast(..., end="overlap")``), where it
 differs from the force rule (alpha > gamma), at rtol at most OVERLAP_RTOL_MAX: the force rule's
 bound with a factor and floor of its own (core.conditioning.plain_factor_floor), validated against the mpmath
 reference down to eps of 1e-36 (tests/library/test_overlap_fast.py). Below
