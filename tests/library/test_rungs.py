@@ -54,3 +54,34 @@ def test_the_reference_rung_quotes_what_collide_states_under_either_rule():
         quoted = Reference().bound(req, {})[0]
         stated = collide(Problem.of(alpha, gamma, "overlap"), 1.0, rtol=reference_rtol(1e-9, Problem(req.ex, rule))).error_bound
         assert quoted == stated
+
+
+def test_an_integrating_rung_runs_at_the_setting_it_quoted(monkeypatch):
+    """The quote's Setting carries the rtol (digits) as a number, and evaluate reads it back: the
+    tolerance formulas are asked once, in bound, never again when the quote runs."""
+    from restitution.core.problem import Problem
+    from restitution.fast import rung as rung_module
+    from restitution.fast.rung import Request, Setting
+    from restitution.fast.rungs import highprec, integrator, overlap_integrator, reference
+
+    om = np.array([0.5])
+    cases = [(integrator.Integrator(), Problem.of("3/2", "1")),
+             (overlap_integrator.OverlapIntegrator(), Problem.of("3/2", "1", "overlap")),
+             (reference.Reference(), Problem.of("3/2", "1")),
+             (highprec.Highprec(), Problem.of("3/2", "1"))]
+    quotes = []
+    for rung, problem in cases:
+        q = rung.quote(Request(problem, om, 1e-8))
+        assert isinstance(q.setting, Setting) and (q.setting.rtol or q.setting.digits), rung.name
+        quotes.append(q)
+
+    def derived_again(*args, **kwargs):
+        raise AssertionError("a tolerance formula was asked again when the quote ran")
+
+    for module in (rung_module, integrator, overlap_integrator, reference, highprec):
+        for name in ("integrator_rtol", "reference_rtol", "highprec_digits"):
+            if hasattr(module, name):
+                monkeypatch.setattr(module, name, derived_again)
+    for q in quotes:
+        eps = q.run(om)
+        assert 0.0 < float(eps[0]) < 1.0, q.name

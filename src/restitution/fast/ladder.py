@@ -32,7 +32,7 @@ from __future__ import annotations
 import math
 import sys
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -51,7 +51,7 @@ from .calibration import FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFOR
 from .master import MasterCurve, MasterSettings
 from .overlap_master import OverlapCurve
 from .parts import part_ranges
-from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request
+from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request, Setting
 from .rungs import ladder_rungs, rung_names
 from .rungs.calibrated import SAFETY
 
@@ -68,18 +68,19 @@ class Part:
     omega_max: float
     count: int
     bound: float
-    setting: str = ""
+    setting: Setting = field(default_factory=Setting)
 
     def as_dict(self) -> dict:
         return {"method": self.method, "omega_min": self.omega_min, "omega_max": self.omega_max,
-                "count": self.count, "error_bound": self.bound, "setting": self.setting}
+                "count": self.count, "error_bound": self.bound, "setting": str(self.setting)}
 
 
 @dataclass(frozen=True)
 class EpsResult:
     """What ``epsilon`` returns: eps (numpy array, same shape as the input), the rungs used and their bounds.
 
-    ``setting`` describes the rung's parameter (e.g. "rtol=1e-10"); ``candidates`` is the chooser's
+    ``setting`` shows the rung's :class:`~restitution.fast.rung.Setting` (e.g. "rtol=1e-10"; each
+    part's is in ``parts``); ``candidates`` is the chooser's
     table: one dict per rung with its bound over these inputs (inf when outside its domain), the
     expected cost and why it was or was not eligible. An array whose parts different rungs answer
     (each point by the cheapest rung that meets tol over its part) has one :class:`Part` per rung
@@ -396,12 +397,12 @@ class Ladder:
             # an exact rung first (Rung.exact): none is more accurate, and it reads no cache
             order = sorted(ok, key=lambda q: (not q.exact, q.cost, q.bound))
         chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, cached)
-        table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
+        table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": str(q.setting),
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
         part = Part(chosen.name, float(np.min(flat)), float(np.max(flat)), int(flat.size), float(bound),
                     chosen.setting)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.problem,
-                         tol if checked else None, chosen.setting, table, chosen.coefficients,
+                         tol if checked else None, str(chosen.setting), table, chosen.coefficients,
                          (part,))
 
     # -- each part of an array its own rung

@@ -7,7 +7,7 @@ import sys
 
 import numpy as np
 
-from ..rung import Rung, highprec_bound, highprec_digits
+from ..rung import Rung, Setting, highprec_bound, highprec_digits
 
 __all__ = ["Highprec", "HIGHPREC_COST", "CREEP_MIN", "highprec_cost"]
 
@@ -65,12 +65,12 @@ class Highprec(Rung):
 
     def bound(self, req, built):
         d = highprec_digits(req.tol)
-        return highprec_bound(d), f"digits={d}" + (", overlap" if req.end == "overlap" else "")
+        return highprec_bound(d), Setting(digits=d, end=req.end)
 
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import OMEGA_RANGE, collide
         from ...core.highprec import reference_collision
-        digits = highprec_digits(req.tol)
+        digits = setting.digits
         seconds = highprec_cost(omega, digits, req.effective_end == "overlap")
         if seconds > 10.0:   # a long wait says so at its start
             print(f"restitution: the mpmath reference on {np.size(omega)} point(s) takes about {seconds:.0f} s",

@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 from ..master import reference_eps, stiff_omega_min
-from ..rung import Rung, integrator_bound, integrator_rtol
+from ..rung import Rung, Setting, integrator_bound, integrator_rtol
 
 __all__ = ["Integrator", "OMEGA_MAX", "printed", "integrator_collision"]
 
@@ -80,7 +80,7 @@ class Integrator(Rung):
 
     def bound(self, req, built):
         rtol = integrator_rtol(req.tol, req.problem)
-        return integrator_bound(rtol, req.problem), f"rtol={rtol:.3g}"
+        return integrator_bound(rtol, req.problem), Setting(rtol=rtol)
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.problem, omega, integrator_rtol(req.tol, req.problem))
+        return reference_eps(req.problem, omega, setting.rtol)
