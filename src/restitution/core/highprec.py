@@ -88,6 +88,27 @@ class HighPrecisionCollision:
     x returns to 0 first (then x_c = 0). ``error_estimate`` is the largest relative difference of eps, tau_b, x_b, tau_c
     between this run and one with ``_CHECK_EXTRA`` more digits (inf if the two runs
     disagree on ``ended_by``). ``steps`` counts Taylor steps of the run at ``digits``.
+
+    Parameters
+    ----------
+    problem : Problem
+        What was solved (``alpha`` and ``gamma`` read through it).
+    omega, eps, tau_b, x_b, tau_c, x_c : mpmath.mpf
+        Omega and the collision's quantities at working precision.
+    ended_by : {"force", "separation"}
+        How contact ended.
+    digits : int
+        The working digits.
+    error_estimate : mpmath.mpf
+        Relative difference from a run at more digits.
+    steps : int
+        Taylor steps taken.
+
+    Examples
+    --------
+    >>> r = reference_collision(("3/2", 1), 0.5, digits=20)
+    >>> r.alpha, r.digits, sorted(r.as_floats())[:3]
+    (Fraction(3, 2), 20, ['alpha', 'digits', 'end'])
     """
 
     problem: Problem
@@ -467,13 +488,39 @@ _COMPARED = ("eps", "tau_b", "x_b", "tau_c")
 def reference_collision(problem: Problem, omega, *, digits: int = 30) -> HighPrecisionCollision:
     """Collision quantities to about ``digits`` significant digits.
 
-    ``problem``: the exponents and the end-of-contact rule ("force" or "overlap", where contact
-    lasts until x = 0). ``omega`` may be a float, int, Fraction,
-    decimal string or mpf (strings and Fractions are read at full working precision;
-    a float is taken as the exact binary number it is).
+    ``omega`` may be a float, int, Fraction, decimal string or mpf (strings and Fractions are read
+    at full working precision; a float is taken as the exact binary number it is). Runs the
+    integration twice (see module docstring), so it costs about three times one run.
 
-    Runs the integration twice (see module docstring), so it costs about three times
-    one run. Raises ParameterError for bad inputs.
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The exponents and the end-of-contact rule ("force" or "overlap", where contact lasts until
+        x = 0; plain exponents: the force rule).
+    omega : float, int, Fraction, str or mpf
+        Omega > 0.
+    digits : int, optional
+        Working significant digits.
+
+    Returns
+    -------
+    HighPrecisionCollision
+        eps, tau_b, x_b, tau_c, x_c as mpf, ``ended_by``, and ``error_estimate`` (the relative
+        difference from a run at more digits).
+
+    Raises
+    ------
+    ParameterError
+        For bad inputs.
+
+    Examples
+    --------
+    >>> from restitution.core.collision import collide
+    >>> r = reference_collision(("3/2", 1), 0.5, digits=20)
+    >>> r.ended_by, r.error_estimate < 1e-18
+    ('force', True)
+    >>> abs(float(r.eps) / collide(("3/2", 1), 0.5).eps - 1) < 1e-10     # scipy's reference
+    True
     """
     problem = as_problem(problem)
     ex = problem.ex

@@ -106,6 +106,27 @@ def as_problem(problem) -> Problem:
     """A :class:`Problem` from a Problem, an Exponents (the force rule) or an ``(alpha, gamma)`` pair.
 
     The public entry points call it once; below them every function takes the Problem itself.
+
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The problem, or exponents that stand for their force rule.
+
+    Returns
+    -------
+    Problem
+        ``problem`` itself when it is one.
+
+    Raises
+    ------
+    ParameterError
+        For exponents :meth:`Exponents.parse` refuses.
+
+    Examples
+    --------
+    >>> p = Problem.of("3/2", 1, end="overlap")
+    >>> as_problem(p) is p, as_problem(("3/2", 1))
+    (True, Problem(alpha=3/2, gamma=1, end='force'))
     """
     if isinstance(problem, Problem):
         return problem
