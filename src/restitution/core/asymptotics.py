@@ -426,7 +426,7 @@ def elastic_limit(problem) -> ElasticLimit:
     Parameters
     ----------
     problem : Problem, Exponents or (alpha, gamma)
-        The exponents.
+        The exponents (an end rule is not read: the end term E is the force rule's).
 
     Returns
     -------
@@ -440,11 +440,11 @@ def elastic_limit(problem) -> ElasticLimit:
 
     Examples
     --------
-    >>> from restitution.core.collision import collide
+    >>> import restitution
     >>> e = elastic_limit(("3/2", 1))
     >>> e.A
     0.8
-    >>> abs(float(e.eps(1e6)) / collide(("3/2", 1), 1e6).eps - 1) < 1e-9   # the reference integrator
+    >>> abs(float(e.eps(1e6)) / restitution.collide("3/2", 1, 1e6).eps - 1) < 1e-9   # the reference integrator
     True
     """
     ex = as_exponents(problem)

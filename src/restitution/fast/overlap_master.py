@@ -205,7 +205,7 @@ def least_bound(problem) -> float:
     Parameters
     ----------
     problem : Problem, Exponents or (alpha, gamma)
-        The exponents.
+        The exponents (the curve is the overlap rule's, whatever rule a Problem names).
 
     Returns
     -------
