@@ -58,9 +58,8 @@ import mpmath
 from mpmath import mp
 
 from .errors import ParameterError, integer_in
-from .exponents import as_exponents
-from .results import end_rule
-from .problem import problem_end
+from .exponents import read_through
+from .problem import Problem, as_problem
 
 __all__ = ["HighPrecisionCollision", "reference_collision"]
 
@@ -84,25 +83,48 @@ _MAX_DIGITS = 300
 class HighPrecisionCollision:
     """Result of :func:`reference_collision` (all times and lengths in scaled units).
 
-    ``end`` is "force" when contact ends because the total force vanishes
-    (x'' = 0, tau > 0) and "separation" when x returns to 0 first (then x_c = 0).
-    ``error_estimate`` is the largest relative difference of eps, tau_b, x_b, tau_c
+    ``problem`` is what was solved (the exponents and the rule asked); ``ended_by`` is "force"
+    when contact ends because the total force vanishes (x'' = 0, tau > 0) and "separation" when
+    x returns to 0 first (then x_c = 0). ``error_estimate`` is the largest relative difference of eps, tau_b, x_b, tau_c
     between this run and one with ``_CHECK_EXTRA`` more digits (inf if the two runs
-    disagree on ``end``). ``steps`` counts Taylor steps of the run at ``digits``.
+    disagree on ``ended_by``). ``steps`` counts Taylor steps of the run at ``digits``.
+
+    Parameters
+    ----------
+    problem : Problem
+        What was solved (``alpha`` and ``gamma`` read through it).
+    omega, eps, tau_b, x_b, tau_c, x_c : mpmath.mpf
+        Omega and the collision's quantities at working precision.
+    ended_by : {"force", "separation"}
+        How contact ended.
+    digits : int
+        The working digits.
+    error_estimate : mpmath.mpf
+        Relative difference from a run at more digits.
+    steps : int
+        Taylor steps taken.
+
+    Examples
+    --------
+    >>> r = reference_collision(("3/2", 1), 0.5, digits=20)
+    >>> r.alpha, r.digits, sorted(r.as_floats())[:3]
+    (Fraction(3, 2), 20, ['alpha', 'digits', 'end'])
     """
 
-    alpha: Fraction
-    gamma: Fraction
+    problem: Problem
     omega: mpmath.mpf
     eps: mpmath.mpf
     tau_b: mpmath.mpf
     x_b: mpmath.mpf
     tau_c: mpmath.mpf
     x_c: mpmath.mpf
-    ended_by: str          # how contact ended: "force" or "separation" (the rule asked is the caller's)
+    ended_by: str
     digits: int
     error_estimate: mpmath.mpf
     steps: int = 0
+
+    alpha = read_through("problem", "alpha")
+    gamma = read_through("problem", "gamma")
 
     def as_floats(self) -> dict:
         return {
@@ -114,7 +136,8 @@ class HighPrecisionCollision:
             "x_b": float(self.x_b),
             "tau_c": float(self.tau_c),
             "x_c": float(self.x_c),
-            "end": self.ended_by,
+            "end": self.problem.end,
+            "ended_by": self.ended_by,
             "digits": self.digits,
             "error_estimate": float(self.error_estimate),
         }
@@ -339,7 +362,7 @@ def _small_omega_digits(omega_in) -> int:
     return max(0, int(mp.ceil(-lg)))
 
 
-def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap: bool) -> dict:
+def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, end: str) -> dict:
     eff = digits + _small_omega_digits(omega_in)
     dps = eff + _GUARD_DIGITS
     with mp.workdps(dps):
@@ -352,7 +375,7 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap:
         log2_tol = -(eff + _TOL_EXTRA) * math.log2(10)
         model = _Model(alpha, gamma, omega, order)
         # Under the overlap rule a vanishing force is no end: only x = 0 is.
-        seek_force = model.force_can_vanish and not overlap
+        seek_force = model.force_can_vanish and end == "force"
         p = model.p
         steps = 0
 
@@ -402,7 +425,7 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap:
                 if hit is not None:
                     s = _root(D, *hit)
                     result = dict(tau_c=t + s, x_c=_horner(X, s), eps=-_horner(V, s),
-                                  end="force")
+                                  ended_by="force")
                     break
             t, x, v = t + h, _horner(X, h), _horner(V, h)
             if tau_b is not None and v < 0 and x < x_b / 4:
@@ -427,11 +450,11 @@ def _integrate(alpha: Fraction, gamma: Fraction, omega_in, digits: int, overlap:
                     s = _root(E, *hit)
                     uc = u + s
                     result = dict(tau_c=_horner(T, s), x_c=uc**p, eps=-_horner(V, s),
-                                  end="force")
+                                  ended_by="force")
                     break
                 if last:
                     result = dict(tau_c=_horner(T, s_end), x_c=mp.zero,
-                                  eps=-_horner(V, s_end), end="separation")
+                                  eps=-_horner(V, s_end), ended_by="separation")
                     break
                 u, v, t = u + s_end, _horner(V, s_end), _horner(T, s_end)
 
@@ -462,33 +485,57 @@ def _check_omega(omega):
 _COMPARED = ("eps", "tau_b", "x_b", "tau_c")
 
 
-def reference_collision(problem, omega, *, digits: int = 30, end: str | None = None) -> HighPrecisionCollision:
+def reference_collision(problem: Problem, omega, *, digits: int = 30) -> HighPrecisionCollision:
     """Collision quantities to about ``digits`` significant digits.
 
-    ``alpha`` and ``gamma`` are anything :class:`~restitution.core.exponents.Exponents`
-    parses ("3/2", Fraction(3, 2), 1.5, ...); ``omega`` may be a float, int, Fraction,
-    decimal string or mpf (strings and Fractions are read at full working precision;
-    a float is taken as the exact binary number it is).
+    ``omega`` may be a float, int, Fraction, decimal string or mpf (strings and Fractions are read
+    at full working precision; a float is taken as the exact binary number it is). Runs the
+    integration twice (see module docstring), so it costs about three times one run.
 
-    ``end`` is the end-of-contact rule ("force" or "overlap", where contact lasts until x = 0).
-    Runs the integration twice (see module docstring), so it costs about three times
-    one run. Raises ParameterError for bad inputs.
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The exponents and the end-of-contact rule ("force" or "overlap", where contact lasts until
+        x = 0; plain exponents: the force rule).
+    omega : float, int, Fraction, str or mpf
+        Omega > 0.
+    digits : int, optional
+        Working significant digits.
+
+    Returns
+    -------
+    HighPrecisionCollision
+        eps, tau_b, x_b, tau_c, x_c as mpf, ``ended_by``, and ``error_estimate`` (the relative
+        difference from a run at more digits).
+
+    Raises
+    ------
+    ParameterError
+        For bad inputs.
+
+    Examples
+    --------
+    >>> from restitution.core.collision import collide
+    >>> r = reference_collision(("3/2", 1), 0.5, digits=20)
+    >>> r.ended_by, r.error_estimate < 1e-18
+    ('force', True)
+    >>> abs(float(r.eps) / collide(("3/2", 1), 0.5).eps - 1) < 1e-10     # scipy's reference
+    True
     """
-    end = problem_end(problem, end)   # a Problem brings its own rule
-    ex = as_exponents(problem)
+    problem = as_problem(problem)
+    ex = problem.ex
     _check_omega(omega)
     integer_in("digits", digits, _MIN_DIGITS, _MAX_DIGITS)
-    overlap = end_rule(end) == "overlap"
-    main = _integrate(ex.alpha, ex.gamma, omega, digits, overlap)
-    check = _integrate(ex.alpha, ex.gamma, omega, digits + _CHECK_EXTRA, overlap)
+    main = _integrate(ex.alpha, ex.gamma, omega, digits, problem.end)
+    check = _integrate(ex.alpha, ex.gamma, omega, digits + _CHECK_EXTRA, problem.end)
     with mp.workdps(digits + _CHECK_EXTRA + _GUARD_DIGITS + _small_omega_digits(omega)):
-        if main["end"] != check["end"]:
+        if main["ended_by"] != check["ended_by"]:
             # The end condition itself is not resolved (force root at x = 0, alpha = gamma).
             err = mp.inf
         else:
             err = max(abs(main[k] - check[k]) / abs(check[k]) for k in _COMPARED)
         err = +err
     return HighPrecisionCollision(
-        alpha=ex.alpha, gamma=ex.gamma, omega=main["omega"], eps=main["eps"],
+        problem=problem, omega=main["omega"], eps=main["eps"],
         tau_b=main["tau_b"], x_b=main["x_b"], tau_c=main["tau_c"], x_c=main["x_c"],
-        ended_by=main["end"], digits=digits, error_estimate=err, steps=main["steps"])
+        ended_by=main["ended_by"], digits=digits, error_estimate=err, steps=main["steps"])
