@@ -120,3 +120,26 @@ def test_the_scipy_reference_answers_from_a_tighter_rtol_with_that_runs_bound():
     eps, err = highprec_eps(("1", "1/2"), 1e-11, digits=20, end="overlap")
     assert err < 1e-19
     assert abs(ref.eps / float(eps) - 1) <= ref.error_bound
+
+
+def test_a_refused_rtol_is_retried_tighter_never_looser(monkeypatch):
+    """The retry's order, on any machine: the integration at the asked rtol made to lose its way, the
+    answer comes from rtol / 10; when every run loses its way, the first refusal stands."""
+    from restitution.core import collision
+
+    real, asked = collision._collide, []
+
+    def lost_first(problem, omega, rtol, t_eval, *, every=False):
+        asked.append(rtol)
+        if every or len(asked) == 1:
+            raise UnresolvedError("rtol", rtol, "the creeping return defeated the integrator (made to)")
+        return real(problem, omega, rtol, t_eval)
+
+    monkeypatch.setattr(collision, "_collide", lost_first)
+    got = collide(("3/2", "1"), 0.01, rtol=1e-10, end="overlap")
+    assert asked == pytest.approx([1e-10, 1e-11]) and got.rtol == pytest.approx(1e-11)
+    asked.clear()
+    monkeypatch.setattr(collision, "_collide", lambda *a: lost_first(*a, every=True))
+    with pytest.raises(UnresolvedError, match="rtol = 1e-10"):
+        collide(("3/2", "1"), 0.01, rtol=1e-10, end="overlap")
+    assert asked == pytest.approx([1e-10, 1e-11, 1e-12])
