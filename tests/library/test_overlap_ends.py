@@ -1,8 +1,8 @@
 """The overlap rule's master curve at its two ends (issue 54, item 2): the viscous law C Omega^k
 below its panels where the bodies cannot stick, the elastic expansion above; each stated bound
-checked against the mpmath reference where it can integrate (Omega >= 1e-5: below, the creeping
-return takes it ~0.2/Omega steps) and against the scipy reference (Radau) below, down to its
-range's end (1e-12); a sticking pair keeps its refusal."""
+checked against the high-precision reference (core.highprec.highprec_eps: the Taylor integration,
+and below 1e-5 the creeping return through its inner problem) over 1e-12..1e20; a sticking pair
+keeps its refusal."""
 
 from __future__ import annotations
 
@@ -12,8 +12,8 @@ import math
 import numpy as np
 import pytest
 
-from restitution.core.collision import StickError, UnresolvedError, collide
-from restitution.core.highprec import reference_collision
+from restitution.core.collision import StickError
+from restitution.core.highprec import highprec_eps
 from restitution.core.overlap_limit import overlap_limit
 from restitution.core.exponents import as_exponents
 from restitution.core.problem import Problem
@@ -33,18 +33,9 @@ def curves(tmp_path_factory):
 
 
 def _truth(pair, w: float) -> tuple[float, float]:
-    """eps and its accuracy: mpmath where it integrates, else the scipy reference."""
-    if w >= 1e-5:
-        return float(reference_collision(Problem(as_exponents(pair), "overlap"), w, digits=20).eps), 1e-18
-    # Radau can lose its way in the creeping return at one rtol and not at the next (seen: 3/2, 1 at
-    # Omega = 6.12e-11 refused at 1e-11, answered alike at 1e-12 and 1e-10); the refusal names that remedy
-    for rtol in (1e-11, 1e-12, 1e-10):
-        try:
-            ref = collide(Problem(as_exponents(pair), "overlap"), w, rtol=rtol)
-        except UnresolvedError:
-            continue
-        return ref.eps, ref.error_bound
-    raise AssertionError(f"seed {SEED}: the scipy reference refused {pair} at Omega = {w:.6g} for every rtol")
+    """eps and its accuracy from the high-precision reference (below 1e-5 through the creep's inner problem)."""
+    eps, err = highprec_eps(Problem(as_exponents(pair), "overlap"), w, digits=20)
+    return float(eps), float(err) + 1.2e-16
 
 
 def _spread(lo10: float, hi10: float, n: int) -> np.ndarray:
@@ -64,7 +55,7 @@ def test_the_ends_hold_their_bound_at_a_few_points(curves, pair):
         assert r.error_bound <= 1e-9
 
 
-@pytest.mark.slow   # mpmath at 9 points and the scipy reference's creep at 4 (a few seconds each)
+@pytest.mark.slow   # mpmath at 9 points (a few seconds each; the creep's C once a pair)
 @pytest.mark.parametrize("pair", PAIRS)
 def test_every_stated_bound_holds_over_the_whole_domain(curves, pair):
     """12 points or more spread over 1e-12..1e20, each within the bound the chooser states for it
