@@ -42,7 +42,8 @@ docs: $(DOCS_STAMP)
 	  $(BIN)/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 	@echo "docs: $(CURDIR)/docs/_build/html/index.html"
 
-# Kratos' DEMApplication (the extra `kratos`, about 220 MB), added to .venv by `make test` only.
+# Kratos' DEMApplication (the extra `kratos`, about 220 MB), added to .venv by `make test` and by the
+# targets that build the paper (its typed-e table's Kratos rows are run in Kratos).
 KRATOS_STAMP := $(VENV)/.kratos-stamp
 $(KRATOS_STAMP): $(STAMP) pyproject.toml constraints.txt
 	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[kratos]'
@@ -93,8 +94,9 @@ HAVE_TEX      = command -v pdflatex >/dev/null 2>&1 && command -v latexmk >/dev/
 .PHONY: paper tex browser slurm-tools dem-engines slurm outputs verify arxiv report diff check expected reproducible bench notebooks scene
 
 # Everything, PDF included; a second run does nothing. Without TeX (and no root to install it),
-# everything except the PDF, and a message saying how to get it.
-paper: $(STAMP) tex
+# everything except the PDF, and a message saying how to get it. The DEM engines (LIGGGHTS and Yade
+# as root, Kratos in .venv) run the typed-e table's rows, whose decks and outputs the paper keeps.
+paper: $(STAMP) tex dem-engines $(KRATOS_STAMP)
 	@if $(HAVE_TEX); then \
 	  $(GUARDED) $(SNAKEMAKE) all $(QUIET) && echo "PDF: $(CURDIR)/$(PDF)"; \
 	else \
@@ -164,12 +166,12 @@ slurm: $(STAMP) slurm-tools
 	  --slurm-init-seconds-before-status-checks 2 $(TARGET) $(QUIET); rc=$$?; workflow/tools/slurm-local stop; exit $$rc
 
 # Everything except the PDF (no TeX needed).
-outputs: $(STAMP)
+outputs: $(STAMP) dem-engines $(KRATOS_STAMP)
 	$(GUARDED) $(SNAKEMAKE) outputs $(QUIET)
 
 # results/paper/arxiv.tar.gz: the manuscript source, its generated inputs, figures and .bbl, which
 # compile with plain pdflatex (what arXiv runs).
-arxiv: $(STAMP) tex
+arxiv: $(STAMP) tex dem-engines $(KRATOS_STAMP)
 	$(GUARDED) $(SNAKEMAKE) results/paper/arxiv.tar.gz $(QUIET)
 	@echo "arXiv bundle: $(CURDIR)/results/paper/arxiv.tar.gz"
 
@@ -195,7 +197,7 @@ verify: $(STAMP)
 	@$(BIN)/python workflow/lib/restitution_workflow/atomic.py verify .
 
 # Rebuild from clean in a temporary directory and compare with tests/expected/manifest.json.
-check: $(STAMP)
+check: $(STAMP) dem-engines $(KRATOS_STAMP)
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) check
 
 # Rewrite tests/expected/manifest.json from a clean rebuild (after an intended change).
@@ -203,7 +205,7 @@ expected: paper
 	$(BIN)/python workflow/tools/rebuild.py manifest
 
 # Two clean builds in temporary directories: every file under results/ must be byte-identical.
-reproducible: $(STAMP)
+reproducible: $(STAMP) dem-engines $(KRATOS_STAMP)
 	$(BIN)/python workflow/tools/rebuild.py --cores $(CORES) twice
 
 # Measurements, written under results/bench/: series derivation time, a 5,050-pair scene's answer

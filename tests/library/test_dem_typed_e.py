@@ -9,9 +9,8 @@ from pathlib import Path
 import pytest
 
 from restitution.dem.engines import ENGINES
-from restitution.dem.extrapolate import richardson
 from restitution.dem.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
-                                           typed_e_table)
+                                           typed_e_engine_cases, typed_e_engine_results, typed_e_table)
 from engine_case import MATERIAL, PAIR  # noqa: E402
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "howto"
@@ -135,26 +134,12 @@ def test_every_row_is_what_its_engine_gives(engine):
     runner = importlib.import_module(entry.runner_module)
     if not runner.available():
         pytest.skip(f"{entry.label} not installed: {entry.install_hint}")
-    steps = entry.typed_e_steps
-    rows = list(entry.typed_e)
-    todo, expected = [], []
-    for row in rows:
-        table = dict(zip(TYPED_E_ENGINE_ES, (r[row] for r in typed_e_table(TYPED_E_ENGINE_ES, [row]))))
-        for e in TYPED_E_ENGINE_ES:
-            contact, setting = entry.typed_e_case(row, e, PAIR, MATERIAL)
-            # the engine's setting is the row's: same eps in the library
-            assert contact.eps(G) == pytest.approx(table[e], rel=1e-9), (row, e)
-            t_c = contact.contact_time(G)
-            # under the force rule the spheres still overlap at t_c and coast apart at eps g (the clamped
-            # force is zero): strongly damped, that takes longer than the half contact time added
-            col = contact.collision(G)
-            coast = col.x_c * float(contact.material.length_scale(G)) / (col.eps * G)
-            todo += [(setting, t_c / steps / k, 1.5 * t_c + 2.0 * coast) for k in (1, 2, 4)]
-            expected.append((row, e, table[e], contact.gamma))
-    eps = runner.eps_runs(PAIR, [(setting, G, dt, t_run) for setting, dt, t_run in todo])
-    worst = 0.0
-    for i, (row, e, want, gamma) in enumerate(expected):
-        got = richardson(*eps[3 * i: 3 * i + 3], gamma)
-        worst = max(worst, abs(got / want - 1))
-        assert abs(got / want - 1) <= TYPED_E_ENGINE_RTOL, (row, e, want, got, eps[3 * i: 3 * i + 3])
-    print(f"{entry.label}: worst relative deviation {worst:.2e} over {len(expected)} row-e cases")
+    cases = typed_e_engine_cases(engine, PAIR, MATERIAL, G)
+    for c in cases:
+        # the engine's setting is the row's: same eps in the library
+        assert c["eps_setting"] == pytest.approx(c["eps"], rel=1e-9), (c["row"], c["e"])
+    results = typed_e_engine_results(cases, runner.eps_runs(PAIR, [run for c in cases for run in c["runs"]]))
+    worst = max(abs(r["relative_deviation"]) for r in results)
+    for r in results:
+        assert abs(r["relative_deviation"]) <= TYPED_E_ENGINE_RTOL, r
+    print(f"{entry.label}: worst relative deviation {worst:.2e} over {len(results)} row-e cases")

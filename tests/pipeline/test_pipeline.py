@@ -394,6 +394,15 @@ def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
     assert all(n[:-3] + ".out" in runs for n in decks) and "results/dem/lammps_runs/README.txt" in runs
     assert set(runs) <= set(names), sorted(set(runs) - set(names))
     assert "results/dem/lammps_runs/README.txt" in (tmp_path / "arxiv" / "README.txt").read_text()
+    # and every engine run behind the typed-e table: each engine's inputs and outputs, the eps of each
+    # run beside the table's (each row at each confirming e), with how to rerun them
+    typed = sorted(p.relative_to(tree).as_posix() for p in (tree / "results/dem/typed_e_runs").rglob("*") if p.is_file())
+    assert {n.split("/")[3] for n in typed if n.count("/") == 4} == {"lammps", "liggghts", "yade", "kratos"}
+    assert set(typed) <= set(names), sorted(set(typed) - set(names))
+    confirmed = read_csv(tree / "results/dem/typed_e_runs/typed_e_runs.csv")
+    assert len(confirmed) == 3 * (len((tree / "results/dem/typed_e.csv").read_text().splitlines()) - 1)
+    assert (confirmed["relative_deviation"].abs() <= 1e-6).all()
+    assert "results/dem/typed_e_runs/README.txt" in (tmp_path / "arxiv" / "README.txt").read_text()
     # what arXiv's processing does: pdflatex, no bibtex, nothing but the bundle, run again while the
     # log asks for it (a float moved by the resolved references can need a third pass; at most 5, as
     # latexmk); the PDF must then be ours, page for page

@@ -70,6 +70,62 @@ rule typed_e:
         script_file("typed_e.py")
 
 
+# The engine runs behind the typed-e table (issue 53): every row run in the engine named for it, as the
+# engine tests run it, with what each engine was given and printed kept for the arXiv bundle.
+TYPED_E_RUNS = "results/dem/typed_e_runs"
+#: The input file each engine run as a child process is given (its runner writes it; the script checks
+#: that the recorded files are these).
+TYPED_E_PROCESS_INPUTS = {"liggghts": ["in.collide"], "yade": ["collide.py"], "kratos": ["collide.py"]}
+
+
+def typed_e_run_engines():
+    """The registered engines with typed-e rows, in registry order."""
+    from restitution.dem.engines import ENGINES
+    return [name for name, engine in ENGINES.items() if engine.typed_e]
+
+
+def typed_e_run_files():
+    """Every engine's recorded runs: LAMMPS one deck and screen per run, named for the row's option,
+    e and steps per contact; the others their input, command and output of one process."""
+    import re
+    from restitution.dem.engines import ENGINES
+    from restitution.dem.typed_e_table import TYPED_E_ENGINE_ES, TYPED_E_ENGINE_REFINEMENTS
+    files = []
+    for name in typed_e_run_engines():
+        engine = ENGINES[name]
+        if name == "lammps":
+            files += [f"{TYPED_E_RUNS}/lammps/{re.sub(r'[^a-z0-9]+', '_', row.split(' ', 1)[1].lower()).strip('_')}"
+                      f"_e{e:g}_n{engine.typed_e_steps * k}.{ext}"
+                      for row in engine.typed_e for e in TYPED_E_ENGINE_ES for k in TYPED_E_ENGINE_REFINEMENTS
+                      for ext in ("in", "out")]
+        else:
+            files += [f"{TYPED_E_RUNS}/{name}/{f}" for f in [*TYPED_E_PROCESS_INPUTS[name], "command.txt", "output.txt"]]
+    return files
+
+
+rule typed_e_runs:
+    """Each typed-e row in its engine at the confirming e values (three time steps, extrapolated), its
+    eps beside the table's, and every run's deck and output (LAMMPS, LIGGGHTS, Yade, Kratos)."""
+    input:
+        code=code("typed_e_runs.py"),
+    output:
+        csv=f"{TYPED_E_RUNS}/typed_e_runs.csv",
+        runs=typed_e_run_files(),
+        readme=f"{TYPED_E_RUNS}/README.txt",
+    params:
+        engines=typed_e_run_engines(),
+        # the engine tests' collision (tests/engine_case.py): unlike spheres, glass on steel; one speed,
+        # each row's eps being a function of e alone
+        radii=[1e-3, 1.5e-3],
+        densities=[2500.0, 7800.0],
+        material={"E": 5e7, "nu": 0.3},
+        g=0.1,
+    log:
+        "logs/typed_e_runs.log",
+    script:
+        script_file("typed_e_runs.py")
+
+
 # The overlap rule's viscous limit (issue 24): eps ~ C Omega^k for gamma <= alpha < 2 gamma + 1, the law
 # against both integrators for the variants' exponents and a few more, and the section's numbers.
 OVERLAP_FILES = [

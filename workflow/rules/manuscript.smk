@@ -116,8 +116,10 @@ rule arxiv:
         # table, the calibrated dampings and Feng's formula against the exact family
         data=["results/dem/lammps_eps.csv", "results/dem/typed_e.csv", "results/dem/calibration.csv",
               "results/paper/feng_calibration.csv"],
-        # and every LAMMPS run behind lammps_eps.csv, its deck and its screen, with how to rerun them
+        # and every engine run behind an engine number: LAMMPS' behind lammps_eps.csv and each engine's
+        # behind the typed-e table, its deck and its output, with how to rerun them (the READMEs last)
         engine_runs=lammps_run_files() + [LAMMPS_RUNS_README],
+        typed_e_runs=typed_e_run_files() + [f"{TYPED_E_RUNS}/typed_e_runs.csv", f"{TYPED_E_RUNS}/README.txt"],
         code=code("arxiv_bundle.py"),
     output:
         "results/paper/arxiv.tar.gz",

@@ -6,8 +6,8 @@
 # edited), and the bibliography as typeset (`restitution.bbl`, which LaTeX reads for the job
 # `restitution`), not the `.bib`: arXiv runs pdflatex, not bibtex. Nothing outside the bundle is
 # referred to. The data tables behind the engine and calibration numbers travel with it, and every
-# LAMMPS run's deck and screen output, with a README.txt at the top saying where they are and how to
-# rerun them. The archive is byte-reproducible: sorted members, the fixed build date, no owners.
+# engine run's deck and output (LAMMPS' behind its figure, each engine's behind the typed-e table),
+# with a README.txt at the top saying where they are and how to rerun them. The archive is byte-reproducible: sorted members, the fixed build date, no owners.
 
 # %%
 import gzip
@@ -29,15 +29,19 @@ members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path
            Path(snakemake.input.supplement_aux).as_posix(): Path(snakemake.input.supplement_aux)}
 for path in snakemake.input.generated:
     members[Path(path).as_posix()] = Path(path)
-for path in [*snakemake.input.data, *snakemake.input.engine_runs]:   # at their project paths, read by no TeX run
-    members[Path(path).as_posix()] = Path(path)
+for path in [*snakemake.input.data, *snakemake.input.engine_runs, *snakemake.input.typed_e_runs]:
+    members[Path(path).as_posix()] = Path(path)   # at their project paths, read by no TeX run
 runs_readme = Path(snakemake.input.engine_runs[-1]).as_posix()
+typed_readme = Path(snakemake.input.typed_e_runs[-1]).as_posix()
 readme = f"""\
 restitution.tex and supplement.tex compile with pdflatex alone, run until the log asks for no rerun
 (the bibliographies are the .bbl files; the article reads the supplement's labels from the .aux it carries).
 The tables behind the engine and calibration numbers are under results/dem/ and results/paper/ (CSV).
 Every LAMMPS run behind the article's LAMMPS figure is under {Path(runs_readme).parent.as_posix()}/: one deck (.in) and its
 screen output (.out) per run; {runs_readme} says how to rerun one and how each eps is read from it.
+Every engine run behind the typed-e table (LAMMPS, LIGGGHTS, Yade, Kratos: each row in the engine named
+for it) is under {Path(typed_readme).parent.as_posix()}/, with the eps each run gave beside the table's;
+{typed_readme} says how to rerun them.
 """
 for name in members:
     # relative, inside the bundle: no absolute path, no way out
