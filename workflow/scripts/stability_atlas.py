@@ -136,8 +136,9 @@ if snakemake.rule == "stability_atlas":
         "StabRtol": sci(spec.rtol, 2),
         "StabAccuracy": sci(accuracy, 3),
         "StabAccuracyWhy": (r"set in \texttt{config.yaml}" if spec.accuracy is not None else
-                            f"{st.ACCURACY_FACTOR:g} times the tolerance plus {sci(st.ACCURACY_FLOOR, 1)}, the bound "
-                            "the method ladder quotes for this integrator"
+                            f"{st.ACCURACY_FACTOR:g} times the tolerance plus {sci(st.ACCURACY_FLOOR, 1)}, the accuracy "
+                            "the method ladder states for this integrator: set above the largest error "
+                            "measured against a high-precision reference, not a proved bound"
                             + ("" if all(spec.accuracy_for(a, g) == accuracy for a, g in spec.pairs) else
                                r" (times $((\alpha + \gamma)/4)^3$ for the pairs with $\alpha + \gamma > 4$)")),
         "StabTightRtol": sci(spec.tight_rtol, 2),
