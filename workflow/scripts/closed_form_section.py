@@ -52,7 +52,7 @@ ax.loglog(curve["g"], rel_loss(law_elastic), color="tab:green", ls="--", lw=1.5,
 ax.loglog(curve["g"], rel(law_viscous), color="tab:blue", ls="-.", lw=1.5, label=r"viscous law $k\Omega$")
 if "eps_printed" in curve and curve["eps_printed"].notna().any():
     ax.loglog(curve["g"], rel(curve["eps_printed"].to_numpy()), color="tab:red", ls=":", lw=2.0,
-              label="paper's printed relation")
+              label="Kim's printed relation")
 ax.set_xlabel(r"impact speed $g$")
 ax.set_ylabel(r"relative error in $\varepsilon$")
 ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$", fontsize=9)
@@ -309,7 +309,9 @@ the formula, from the two leading-order laws and from the paper's relation. The 
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
 Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error figures for every exponent pair of the
 stability atlas. The library prints the formula as one line of C with every number
-written out (\texttt{{restitution eps --method closed-form --json}}).
+written out (\texttt{{restitution eps --method closed-form --json}}; the method's name is older than this
+paper's wording: it is the fitted uniform approximation, not a closed form, and so is the row
+\texttt{{closed-form}} of Table~\ref{{tab:bench}}).
 
 \begin{{figure}}[htbp]
 \centering

@@ -137,7 +137,7 @@ fig, (top, bottom) = plt.subplots(2, 1, figsize=(5.6, 5.4), sharex=True, gridspe
 style = {"force": ("C0", "-", "o", "limit_damping (force rule)"), "overlap": ("C3", "--", "s", "default (overlap rule)")}
 for rule, _ in RULES:
     colour, ls, marker, label = style[rule]
-    top.plot(curves["g"], curves[f"eps_{rule}"], ls, color=colour, lw=1.4, label=f"library, {rule} rule")
+    top.plot(curves["g"], curves[f"eps_{rule}"], ls, color=colour, lw=1.4, label=f"ours, {rule} rule")
     d = runs[runs["rule"] == rule]
     top.plot(d["g"], d["eps_lammps"], marker, color=colour, mfc="none", ms=7, label=f"LAMMPS, {label}")
     bottom.plot(d["g"], np.abs(d["relative_deviation"]), marker + ls, color=colour, mfc="none", ms=6, lw=1.0)
@@ -146,6 +146,6 @@ top.set_ylabel(r"restitution coefficient $\varepsilon$")
 top.legend(loc="lower left")
 bottom.set_yscale("log")
 bottom.set_xlabel(r"impact speed $g$ (m/s)")
-bottom.set_ylabel("|LAMMPS / library - 1|")
+bottom.set_ylabel("|LAMMPS / ours - 1|")
 fig.tight_layout()
 save_figure(fig, out["pdf"], out["png"])

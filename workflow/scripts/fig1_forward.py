@@ -46,7 +46,7 @@ ax.set_ylim(-0.1 * x_max, p.plot["y_margin"] * x_max)
 ax.set_xlim(0.0, tau_end)
 ax.set_ylabel(r"scaled deformation $x = \xi / A$")
 ax.set_title(rf"forward collision, $g = {summary['g']:g}$, $\Omega = {omega:.4f}$; "
-             rf"each $x_n$ to $\tau^{{{p.max_power}}}$", fontsize=9)
+             rf"each $x_n$ to $\tau^{{{p.max_power}}}$", fontsize=11)   # its exponent >= 7 pt printed
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False)
 ax_err.set_ylim(1e-10, 10)
 ax_err.set_xlabel(r"scaled time $\tau = t / B$")

@@ -61,7 +61,8 @@ def draw_eps_of_g():
         if col not in curves:
             continue
         style = {"lw": 1.6, **STYLE[rel["kind"]]}
-        ax.plot(curves["g"], curves[col], label=rel["label"], **style)
+        # the relations name Kim's paper "the paper"; in a figure of this article that would be ours
+        ax.plot(curves["g"], curves[col], label=rel["label"].replace("paper's", "Kim's"), **style)
         drawn.append(curves[col].to_numpy())
     ax.axvline(p.g_figure, color="grey", ls=":", lw=1)
     ax.axhline(1.0, color="grey", ls="-", lw=0.8)
