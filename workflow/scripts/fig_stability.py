@@ -81,10 +81,10 @@ for ax in axes.flat:
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.grid(True, which="major", alpha=0.3)
-    ax.tick_params(labelsize=8.5)   # >= 7 pt printed at the text width (7.2 in -> 6.3 in)
+    ax.tick_params(labelsize=11.5)   # exponents (0.7 of it) >= 7 pt printed at the text width (7.2 in -> 6.3 in)
     ax.set_xticks([1e-6, 1e-3, 1, 1e3, 1e6][:: 1 if len(gammas) < 3 else 2])   # off the panel edges: labels do not collide
 for ax, label in zip(axes[:, 0], (r"$\varepsilon$", r"$1-\varepsilon$", r"$\tau_c$", "relative error")):
-    ax.set_ylabel(label, fontsize=10)
+    ax.set_ylabel(label, fontsize=12)
 axes[3, 0].set_ylim(1e-17, 1e-6)
 for ax in axes[-1]:
     ax.set_xlabel(r"$\Omega$")
