@@ -416,8 +416,9 @@ class Ladder:
 
     # -- each part of an array its own rung
     def _groups(self, flat: np.ndarray, lo: float, hi: float, tol: float, build,
-                cached: bool) -> list[tuple[float, float]]:
-        """The Omega intervals [lo, hi) (open ends: -inf, inf) that ``flat`` is answered by in turn.
+                cached: bool) -> list[tuple[float, float, float, float]]:
+        """The Omega intervals [a, b) (open ends: -inf, inf) that ``flat`` is answered by in turn,
+        each with the smallest and largest of its points.
 
         The array is cut at every rung's domain edges (``Rung.edges``) inside its range; each part
         that holds points is quoted over the range of its points with its count (what ``epsilon``
@@ -429,10 +430,10 @@ class Ladder:
         probe = Request(self.problem, np.array([lo, hi]), tol, builds, self.stream)
         cuts = sorted({float(e) for r in self.rungs if r.serves(probe) for e in r.edges(probe) if lo < e <= hi})
         if not cuts:
-            return [(-math.inf, math.inf)]
+            return [(-math.inf, math.inf, lo, hi)]
         counts, lows, highs = part_ranges(flat, cuts)
         starts, stops = [-math.inf, *cuts], [*cuts, math.inf]
-        groups: list[tuple[float, float]] = []
+        groups: list[tuple[float, float, float, float]] = []
         last = object()
         for a, b, n, p_lo, p_hi in zip(starts, stops, counts, lows, highs):
             if n == 0:
@@ -445,9 +446,9 @@ class Ladder:
             ok = [q for q in quotes if q.run is not None and q.bound <= tol]
             key = min(ok, key=lambda q: (not q.exact, q.cost, q.bound)).name if ok else None
             if groups and key == last:
-                groups[-1] = (groups[-1][0], b)
+                groups[-1] = (groups[-1][0], b, groups[-1][2], float(p_hi))
             else:
-                groups.append((a, b))
+                groups.append((a, b, float(p_lo), float(p_hi)))
             last = key
         return groups
 
@@ -455,10 +456,11 @@ class Ladder:
         """Each interval's points answered as ``epsilon`` answers them alone, put back in place."""
         eps = np.empty(flat.size)
         results = []
-        for a, b in groups:
-            where = (flat >= a) & (flat < b)
+        for a, b, lo, hi in groups:
+            # an open end needs no comparison (a pass over the array each)
+            where = flat < b if a == -math.inf else (flat >= a if b == math.inf else (flat >= a) & (flat < b))
             sub = flat[where]
-            r = self._answer(sub, sub, tol, True, None, build, cached)
+            r = self._answer(sub, sub, tol, True, None, build, cached, (lo, hi))
             eps[where] = r.eps
             results.append(r)
         names = list(dict.fromkeys(r.method for r in results))
