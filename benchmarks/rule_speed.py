@@ -1,6 +1,7 @@
 """Both end rules against a bare numpy Chebyshev pass, side by side in one run (issue 54): 10^6
 Omegas log-spaced over 1e-7..1e7 at tol 1e-9, warm (every build made and every kernel compiled
-before the timing), for Kim's pair and a second one. Prints ratios only (targets: the overlap rule
+before the timing), for Kim's pair and a second one (or the pairs given as arguments, e.g.
+``5/4,1/4``). Prints ratios only (targets: the overlap rule
 at most 1, the force rule at most 0.6).
 
 The baseline is numpy's ``chebval`` of a 32-term series at ln Omega mapped onto [-1, 1], over the
@@ -30,9 +31,10 @@ def chebyshev_pass(om: np.ndarray) -> np.ndarray:
     return cheb.chebval(np.log(om) / math.log(1e7), COEF)
 
 
-def main() -> int:
+def main(argv=None) -> int:
+    pairs = [tuple(a.split(",")) for a in (sys.argv[1:] if argv is None else argv)] or PAIRS
     print(f"{'alpha':>6} {'gamma':>6}  {'force / chebyshev':>18} {'overlap / chebyshev':>20}  methods (force; overlap)")
-    for alpha, gamma in PAIRS:
+    for alpha, gamma in pairs:
         calls = {"chebyshev": lambda: chebyshev_pass(OMEGA)}
         for end in ("force", "overlap"):
             calls[end] = lambda end=end: epsilon(alpha=alpha, gamma=gamma, omega=OMEGA, tol=TOL, end=end)

@@ -324,12 +324,34 @@ def test_overlap_law_rung_agrees_with_the_reference(alpha, gamma):
     assert deep.method == "overlap-law" and 0 < float(deep.eps) < got.eps[0]
 
 
-def test_no_mpmath_creep_under_the_overlap_rule():
-    """The mpmath rung takes ~0.2/Omega steps on a creeping return: below 1e-5 it refuses, in one line."""
-    with pytest.raises(ParameterError, match="creeps"):
-        restitution.epsilon(alpha="3/2", gamma="1/2", omega=1e-6, end="overlap", method="highprec")
+def test_mpmath_rung_takes_the_creeps_law_under_the_overlap_rule():
+    """Its Taylor integration would take ~0.2/Omega steps on a creeping return: below 1e-5 it
+    answers with the creep's law C Omega^k, C integrated in mpmath (core.highprec.highprec_eps),
+    within its bound of the double-precision law (core.overlap_limit: C integrated another way, in
+    scipy); it used to refuse there. Where the bodies stick the refusal is the exact one, and an eps
+    below the normal doubles is refused."""
+    omegas = [1e-9, 1e-12]
+    got = restitution.epsilon(alpha="3/2", gamma="1/2", omega=omegas, end="overlap", method="highprec")
+    law = restitution.epsilon(alpha="3/2", gamma="1/2", omega=omegas, end="overlap", method="overlap-law")
+    assert got.method == "highprec" and got.error_bound <= 1e-14
+    for e, ref in zip(got.eps, law.eps):
+        assert abs(e / ref - 1) <= got.error_bound + law.error_bound
+    with pytest.raises(StickError, match="never ends"):
+        restitution.epsilon(alpha="5/2", gamma="1/2", omega=1e-6, end="overlap", method="highprec")
     with pytest.raises(ParameterError, match="below the smallest normal double"):
         restitution.epsilon(alpha="1", gamma="1/2", omega=1e-300, end="overlap")
+
+
+@pytest.mark.slow   # mpmath's Taylor integration at Omega = 1e-2, 25 digits: seconds
+def test_mpmath_rung_below_its_taylor_range_meets_the_taylor_constant():
+    """Between 1e-5 and the double-precision law's range (1e-8) only the scipy reference served the
+    overlap rule; the mpmath rung's law there agrees with C read off its own Taylor integration at
+    Omega = 1e-2 (eps / Omega^3 is C to 16 digits from 1e-2 down) to its stated bound."""
+    omegas = [1e-6, 1e-7, 3e-9]
+    got = restitution.epsilon(alpha="3/2", gamma="1/2", omega=omegas, end="overlap", method="highprec", tol=1e-12)
+    assert got.error_bound <= 1e-14
+    for w, e in zip(omegas, got.eps):
+        assert math.isclose(e, _overlap_constant() * w ** 3, rel_tol=got.error_bound + 1e-15)
 
 
 def test_a_creep_that_defeats_the_reference_is_not_called_sticking():

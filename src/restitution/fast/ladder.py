@@ -170,6 +170,11 @@ class EpsResult:
 
 # ------------------------------------------------------------------------------------------ helpers
 def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
+    return _omega_checked(omega, field_name)[0]
+
+
+def _omega_checked(omega, field_name: str = "omega") -> tuple[np.ndarray, float, float]:
+    """The Omegas as an array, with their smallest and largest (which the chooser reuses)."""
     lo, hi = OMEGA_REPRESENTABLE
     allowed = f"must be numbers in [{lo:g}, {hi:g}] (at least one)"
     arr = real_array(field_name, omega, allowed)
@@ -178,10 +183,11 @@ def _omega_array(omega, field_name: str = "omega") -> np.ndarray:
     # Subnormal or near-overflow Omega leaves no headroom for the expansions' powers of Omega.
     # Two reductions decide it for the whole array (a NaN makes both comparisons fail); the
     # elementwise search for the first bad value runs only when there is one.
-    if not (np.min(arr) >= lo and np.max(arr) <= hi):
+    least, most = float(np.min(arr)), float(np.max(arr))
+    if not (least >= lo and most <= hi):
         bad = ~(np.isfinite(arr) & (arr >= lo) & (arr <= hi))
         raise ParameterError(field_name, float(arr[bad].flat[0]), allowed)
-    return arr
+    return arr, least, most
 
 
 def _check_tol(tol) -> float:
@@ -327,14 +333,15 @@ class Ladder:
 
     # -- quotes
     def quotes(self, omega: np.ndarray, tol: float, cached: bool = True,
-               size: int | None = None, builds: dict | None = None) -> list[Quote]:
+               size: int | None = None, builds: dict | None = None, extremes=None) -> list[Quote]:
         """Every rung with its bound over ``omega``, cost and a runner (None when not applicable);
         ``cached`` False: as with an empty cache (no rung that reads a build can run); ``size``: the
         number of points when ``omega`` is only their range's two ends; ``builds``: what is loaded,
-        when the caller has just looked (the cache is not asked again)."""
+        when the caller has just looked (the cache is not asked again); ``extremes``: the smallest
+        and largest of ``omega``, when the caller has them."""
         if builds is None:
             builds = self._loaded() if cached else {}
-        req = Request(self.problem, np.asarray(omega, float).ravel(), tol, builds, self.stream, size)
+        req = Request(self.problem, np.asarray(omega, float).ravel(), tol, builds, self.stream, size, extremes)
         return [r.quote(req) for r in self.rungs]
 
     def _loaded(self) -> dict:
@@ -346,7 +353,7 @@ class Ladder:
     # -- the choice
     def evaluate(self, omega, *, tol: float | None = DEFAULT_TOL, method: str | None = None,
                  build: bool | None = None, cached: bool = True) -> EpsResult:
-        om = _omega_array(omega)
+        om, lo, hi = _omega_checked(omega)
         if not cached and build:
             raise ParameterError("build", build, "must be False or None with cached=False (nothing is read or built)")
         # A forced method without a tolerance answers with its own bound (tol only sets the
@@ -361,14 +368,16 @@ class Ladder:
         if self.problem.end == "overlap":
             self._refuse_sticking(flat)
         if method is None and flat.size > 1:
-            groups = self._groups(flat, tol, build, cached)
+            groups = self._groups(flat, lo, hi, tol, build, cached)
             if len(groups) > 1:
                 return self._joined(om, flat, groups, tol, build, cached)
-        return self._answer(om, flat, tol, checked, method, build, cached)
+        return self._answer(om, flat, tol, checked, method, build, cached, (lo, hi))
 
-    def _answer(self, om, flat, tol: float, checked: bool, method, build, cached: bool) -> EpsResult:
-        """The whole of ``flat`` by one rung: the forced one, else the cheapest that meets tol."""
-        quotes = self.quotes(flat, tol, cached)
+    def _answer(self, om, flat, tol: float, checked: bool, method, build, cached: bool,
+                extremes=None) -> EpsResult:
+        """The whole of ``flat`` by one rung: the forced one, else the cheapest that meets tol
+        (``extremes``: the smallest and largest of ``flat``, when known)."""
+        quotes = self.quotes(flat, tol, cached, extremes=extremes)
         if build is not False and cached:
             quotes = self._make_builds(quotes, flat, tol, method, build)
         if method is not None:
@@ -399,30 +408,32 @@ class Ladder:
         chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, cached)
         table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": str(q.setting),
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
-        part = Part(chosen.name, float(np.min(flat)), float(np.max(flat)), int(flat.size), float(bound),
-                    chosen.setting)
+        lo, hi = extremes if extremes is not None else (float(np.min(flat)), float(np.max(flat)))
+        part = Part(chosen.name, lo, hi, int(flat.size), float(bound), chosen.setting)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.problem,
                          tol if checked else None, str(chosen.setting), table, chosen.coefficients,
                          (part,))
 
     # -- each part of an array its own rung
-    def _groups(self, flat: np.ndarray, tol: float, build, cached: bool) -> list[tuple[float, float]]:
-        """The Omega intervals [lo, hi) (open ends: -inf, inf) that ``flat`` is answered by in turn.
+    def _groups(self, flat: np.ndarray, lo: float, hi: float, tol: float, build,
+                cached: bool) -> list[tuple[float, float, float, float]]:
+        """The Omega intervals [a, b) (open ends: -inf, inf) that ``flat`` is answered by in turn,
+        each with the smallest and largest of its points.
 
         The array is cut at every rung's domain edges (``Rung.edges``) inside its range; each part
         that holds points is quoted over the range of its points with its count (what ``epsilon``
         would quote for them alone) and makes the builds its quotes say pay for it; adjacent parts
         whose cheapest adequate rung is the same form one interval. One interval: the whole array
-        is answered as one (no copy), as it was before arrays were cut."""
-        lo, hi = float(np.min(flat)), float(np.max(flat))
+        is answered as one (no copy), as it was before arrays were cut. ``lo``, ``hi``: the
+        smallest and largest of ``flat``."""
         builds = self._loaded() if cached else {}
         probe = Request(self.problem, np.array([lo, hi]), tol, builds, self.stream)
         cuts = sorted({float(e) for r in self.rungs if r.serves(probe) for e in r.edges(probe) if lo < e <= hi})
         if not cuts:
-            return [(-math.inf, math.inf)]
+            return [(-math.inf, math.inf, lo, hi)]
         counts, lows, highs = part_ranges(flat, cuts)
         starts, stops = [-math.inf, *cuts], [*cuts, math.inf]
-        groups: list[tuple[float, float]] = []
+        groups: list[tuple[float, float, float, float]] = []
         last = object()
         for a, b, n, p_lo, p_hi in zip(starts, stops, counts, lows, highs):
             if n == 0:
@@ -435,9 +446,9 @@ class Ladder:
             ok = [q for q in quotes if q.run is not None and q.bound <= tol]
             key = min(ok, key=lambda q: (not q.exact, q.cost, q.bound)).name if ok else None
             if groups and key == last:
-                groups[-1] = (groups[-1][0], b)
+                groups[-1] = (groups[-1][0], b, groups[-1][2], float(p_hi))
             else:
-                groups.append((a, b))
+                groups.append((a, b, float(p_lo), float(p_hi)))
             last = key
         return groups
 
@@ -445,10 +456,11 @@ class Ladder:
         """Each interval's points answered as ``epsilon`` answers them alone, put back in place."""
         eps = np.empty(flat.size)
         results = []
-        for a, b in groups:
-            where = (flat >= a) & (flat < b)
+        for a, b, lo, hi in groups:
+            # an open end needs no comparison (a pass over the array each)
+            where = flat < b if a == -math.inf else (flat >= a if b == math.inf else (flat >= a) & (flat < b))
             sub = flat[where]
-            r = self._answer(sub, sub, tol, True, None, build, cached)
+            r = self._answer(sub, sub, tol, True, None, build, cached, (lo, hi))
             eps[where] = r.eps
             results.append(r)
         names = list(dict.fromkeys(r.method for r in results))
@@ -572,7 +584,7 @@ def epsilon(problem: Problem, *, omega=None, g=None, D1=None, D2=None, tol: floa
     if omega is not None:
         if g is not None or D1 is not None or D2 is not None:
             raise ParameterError("omega", omega, "give either omega or all of g, D1, D2, not both")
-        om = _omega_array(omega, "omega")
+        om = omega   # Ladder.evaluate checks it (a second check would be two more passes over it)
     else:
         if g is None or D1 is None or D2 is None:
             missing = [n for n, v in (("g", g), ("D1", D1), ("D2", D2)) if v is None]

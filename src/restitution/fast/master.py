@@ -27,6 +27,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
+from functools import lru_cache
 
 import numpy as np
 from numpy.polynomial import chebyshev as cheb
@@ -95,8 +96,14 @@ class MasterSettings:
         return cls(**{k: d[k] for k in cls.__dataclass_fields__ if k in d})
 
     def key(self) -> str:
-        items = sorted(self.as_dict().items())
-        return "_".join(f"{v:g}" if isinstance(v, float) else str(v) for _, v in items)
+        return _settings_key(self)
+
+
+@lru_cache(maxsize=64)
+def _settings_key(settings: MasterSettings) -> str:
+    # asked for by every cache lookup of an epsilon call (tens of them): made once per settings
+    items = sorted(settings.as_dict().items())
+    return "_".join(f"{v:g}" if isinstance(v, float) else str(v) for _, v in items)
 
 
 # ------------------------------------------------------------------------------ reference values
@@ -288,11 +295,12 @@ class MasterCurve(PanelRange):
             out[hi] = np.maximum(out[hi], self.elastic_bound(om[hi]))
         return out
 
-    def bound(self, omega) -> float:
+    def bound(self, omega, extremes: tuple[float, float] | None = None) -> float:
         """Largest bound over the given Omegas (the expansion bounds are monotone, so only the
-        extreme Omegas on each side are evaluated)."""
+        extreme Omegas on each side are evaluated); ``extremes``: their smallest and largest, when
+        the caller has them."""
         om = np.asarray(omega, dtype=float).ravel()
-        lo, hi = float(om.min()), float(om.max())
+        lo, hi = (float(om.min()), float(om.max())) if extremes is None else extremes
         lo_join, hi_join = self.omega_lo, self.omega_hi
         b = self.bound_inside if (hi >= lo_join * (1.0 - JOIN_SLACK) and lo <= hi_join * (1.0 + JOIN_SLACK)) else 0.0
         # the extremes of the Omegas beyond each join: one masked reduction each, no copy of them

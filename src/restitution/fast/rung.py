@@ -170,15 +170,18 @@ class Request:
     #: How many points the request stands for, when ``omega`` is only its range's two ends (the
     #: chooser quoting a part of an array: every bound depends on the range, every price on n).
     size: int | None = None
+    #: The smallest and largest Omega, when the caller has them already (a pass over 10^6 Omegas
+    #: costs about a millisecond; an epsilon call quotes several times).
+    extremes: tuple[float, float] | None = None
 
     # Every rung's quote asks for the range: one pass over the Omegas per request, not per rung.
     @cached_property
     def lo(self) -> float:
-        return float(np.min(self.omega))
+        return float(np.min(self.omega)) if self.extremes is None else self.extremes[0]
 
     @cached_property
     def hi(self) -> float:
-        return float(np.max(self.omega))
+        return float(np.max(self.omega)) if self.extremes is None else self.extremes[1]
 
     @property
     def n(self) -> int:

@@ -162,7 +162,7 @@ class MasterRung(_Calibrated):
 
     def bound(self, req, cal):
         m = cal.master
-        return m.bound(req.omega), Setting(label=f"{m.coef.shape[0]} panels")
+        return m.bound(req.omega, (req.lo, req.hi)), Setting(label=f"{m.coef.shape[0]} panels")
 
     def evaluate(self, req, cal, setting, omega):
         return cal.master.eps(omega)

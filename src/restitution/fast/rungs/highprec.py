@@ -1,5 +1,7 @@
 """The mpmath reference (:mod:`restitution.core.highprec`) as a rung, both end rules: bound
-10^(1 - digits), priced by its digits (it carries log10(1/Omega) more below Omega = 1)."""
+10^(1 - digits), priced by its digits (it carries log10(1/Omega) more below Omega = 1). Under the
+overlap rule below CREEP_MIN, where the bodies cannot stick, it answers with the creep's law
+C Omega^k at that many digits (:func:`restitution.core.highprec.highprec_eps`)."""
 
 from __future__ import annotations
 
@@ -18,26 +20,43 @@ HIGHPREC_COST = 0.4
 #: Under the overlap rule (alpha > gamma) the return creeps past the force's zero for ~0.2/Omega
 #: Taylor steps (measured, 3/2 and 1/2 at 15 digits: 0.8 s at Omega = 1e-3, 7 s at 1e-4, 68 s at
 #: 1e-5); below CREEP_MIN it would run for many minutes and hit its step limit, without proving
-#: the sticking it may be heading for.
+#: the sticking it may be heading for. Where the bodies cannot stick (alpha < 2 gamma + 1) the
+#: return there is the creep's, and eps its law C Omega^k to within exp(-c/Omega)
+#: (core.highprec.highprec_eps, from the same Omega: core.highprec.CREEP_MAX).
 CREEP_MIN = 1e-5
+#: Seconds per point of the creep's law at the mpmath rung's digits (C is integrated once per pair
+#: and digits, 0.1-0.2 s, and kept for the process).
+LAW_COST = 1e-3
 
 
-def highprec_cost(omega: np.ndarray, digits: int, creeps: bool = False) -> float:
+def highprec_cost(omega: np.ndarray, digits: int, creeps: bool = False, law: bool = False) -> float:
     """Seconds for the mpmath reference: below Omega = 1 it carries log10(1/Omega) more digits
     (core.highprec), and its time grows like the 2.5th power of the digits (measured, alpha = 3/2,
     gamma = 1/2, 16 digits: 0.15 s at Omega = 1, 0.75 s at 1e-12, 6 s at 1e-60, 190 s at 1e-300);
-    a creeping return (``creeps``) multiplies it by 1e-3/Omega below 1e-3."""
+    a creeping return (``creeps``) multiplies it by 1e-3/Omega below 1e-3; where the creep's law
+    answers (``law``: below CREEP_MIN) a point costs LAW_COST."""
     om = np.asarray(omega, float)
     extra = np.maximum(0.0, np.ceil(-np.log10(om)))
     creep = np.maximum(1.0, 1e-3 / om) if creeps else 1.0
-    return float(np.sum(HIGHPREC_COST * ((digits + extra) / digits) ** 2.5 * creep))
+    each = HIGHPREC_COST * ((digits + extra) / digits) ** 2.5 * creep
+    if law:
+        each = np.where(om < CREEP_MIN, LAW_COST, each)
+    return float(np.sum(each))
+
+
+def _creep_law(req) -> bool:
+    """Whether the creep's law answers below CREEP_MIN: the overlap rule where it differs from the
+    force rule's and the bodies cannot stick (alpha < 2 gamma + 1)."""
+    return req.effective_end == "overlap" and req.ex.alpha < 2 * req.ex.gamma + 1
 
 
 class Highprec(Rung):
     """The mpmath Taylor reference (:mod:`restitution.core.highprec`): every Omega (alpha <= gamma:
-    from 1e-3; the overlap rule: from CREEP_MIN), 0.15 s a point and more at small Omega; bound
-    10^(1 - digits), at least the 2.3e-16 of rounding to a double, and its own two-run error
-    estimate must agree, else it raises."""
+    from 1e-3; the overlap rule: from CREEP_MIN, and below it where alpha < 2 gamma + 1 by the
+    creep's law C Omega^k, C integrated in mpmath), 0.15 s a point and more at small Omega; bound
+    10^(1 - digits), at least the 2.3e-16 of rounding to a double, and its own error estimate (two
+    runs; on the law, C's two runs plus the bound on the return's distance from the creep) must
+    agree, else it raises."""
 
     name, cost = "highprec", HIGHPREC_COST
     ends = ("force", "overlap")
@@ -46,8 +65,9 @@ class Highprec(Rung):
     def outside(self, req):
         if not req.rules_differ and req.lo < 1e-3:
             return "Omega < 1e-3 with alpha <= gamma (creeping)"
-        if req.effective_end == "overlap" and req.lo < CREEP_MIN:
-            return f"Omega < {CREEP_MIN:g} under the overlap rule (the return creeps for ~0.2/Omega steps)"
+        if req.effective_end == "overlap" and req.lo < CREEP_MIN and not _creep_law(req):
+            return (f"Omega < {CREEP_MIN:g} under the overlap rule with alpha >= 2 gamma + 1 (the return creeps "
+                    "for ~0.2/Omega steps, and the bodies may stick)")
         return None
 
     def edges(self, req):
@@ -60,7 +80,10 @@ class Highprec(Rung):
         # Omegas for a rung that is almost never chosen (it was a fifth of an epsilon call). The
         # per-point cost is monotone in Omega, so the mean of its two ends times n lies between
         # the cheapest and the dearest point's.
-        ends = highprec_cost(np.array([req.lo, req.hi]), highprec_digits(req.tol), req.effective_end == "overlap")
+        # Under the creep's law the dearest points lie just above CREEP_MIN: priced from there.
+        law = _creep_law(req)
+        lo = max(req.lo, CREEP_MIN) if law and req.hi >= CREEP_MIN else req.lo
+        ends = highprec_cost(np.array([lo, req.hi]), highprec_digits(req.tol), req.effective_end == "overlap", law)
         return ends / 2.0 * req.n
 
     def bound(self, req, built):
@@ -69,9 +92,10 @@ class Highprec(Rung):
 
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import OMEGA_RANGE, collide
-        from ...core.highprec import reference_collision
+        from ...core.highprec import highprec_eps, reference_collision
         digits = setting.digits
-        seconds = highprec_cost(omega, digits, req.effective_end == "overlap")
+        law = _creep_law(req)
+        seconds = highprec_cost(omega, digits, req.effective_end == "overlap", law)
         if seconds > 10.0:   # a long wait says so at its start
             print(f"restitution: the mpmath reference on {np.size(omega)} point(s) takes about {seconds:.0f} s",
                   file=sys.stderr if req.stream is None else req.stream, flush=True)
@@ -79,6 +103,9 @@ class Highprec(Rung):
         out = []
         for w in np.ravel(omega):
             w = float(w)
+            if law and w < CREEP_MIN:
+                out.append(self._law_eps(req, w, digits, highprec_eps))
+                continue
             if pulls and OMEGA_RANGE[0] <= w <= OMEGA_RANGE[1]:
                 # mpmath has no proof of sticking and would follow a trapped creep for its whole
                 # step budget: the reference integrator's cheap run raises StickError first.
@@ -89,6 +116,17 @@ class Highprec(Rung):
                                       f"(estimate {float(r.error_estimate):.3g})")
             out.append(float(r.eps))
         return np.array(out)
+
+    @staticmethod
+    def _law_eps(req, w: float, digits: int, highprec_eps) -> float:
+        eps, err = highprec_eps(req.problem, w, digits=digits)
+        if not err <= 10.0 ** (1 - digits):
+            raise ArithmeticError(f"the creep's law at Omega = {w} is not known to {digits} digits "
+                                  f"(estimate {float(err):.3g})")
+        if not float(eps) >= np.finfo(float).tiny:   # a subnormal or zero double has no relative bound
+            raise ArithmeticError(f"eps = C Omega^k = {float(eps):.3g} at Omega = {w} is below the smallest "
+                                  "normal double")
+        return float(eps)
 
     def collision(self, problem, omega, *, rtol, digits, t_eval=None):
         """The mpmath Taylor series at ``digits`` digits, rounded to doubles; its rtol is 10^(1 - digits)."""
