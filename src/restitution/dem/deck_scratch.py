@@ -35,7 +35,7 @@ SKIPPED_COMMANDS = frozenset({
 #: nothing, so unfix and fix_modify still find it
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
                          "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
-                         "check/timestep/gran", "couple/", "ave/euler", "dump")
+                         "couple/", "ave/euler", "dump")
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
 RUN_COMMANDS = ("run", "minimize")
 #: A deck's folder copied whole; a larger one is refused

@@ -79,6 +79,9 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     >>> deck.model, deck.ignored
     ('hertz', ['tangential history'])
     """
+    # every pair_style line sets the style afresh: LIGGGHTS' default for what it does not name
+    # (limitForce off; checked: on, then a line without it, gives eps = e)
+    deck.model, deck.limit_force = "", False
     i = 2
     while i < len(words):
         key = words[i]
@@ -240,7 +243,8 @@ def _exact_line(deck: Deck, matrix: list, i: int, j: int, contact) -> str | None
     """The coefficientRestitution line with the entry (i, j) replaced by the e that gives
     ``contact`` eps = the e typed there; None where no e does or LIGGGHTS would refuse it."""
     m = deck.ntypes
-    e_new = exact_e(contact, matrix[(i - 1) * m + (j - 1)], liggghts_e)
+    # an undamped contact (e = 1) gives eps = 1 = e under either end rule: the line as typed
+    e_new = 1.0 if contact.D2 == 0.0 else exact_e(contact, matrix[(i - 1) * m + (j - 1)], liggghts_e)
     if e_new is None or not liggghts_accepts_e(e_new):   # LIGGGHTS would stop on it
         return None
     new = list(matrix)
