@@ -223,7 +223,7 @@ def test_liggghts_aliases_are_read(tmp_path, alias):
 
 
 @pytest.mark.parametrize("change, word", [
-    ("atomtypepair 1 0.9", "LIGGGHTS stops here: Fix property/global (id m3): Unknown style. Valid styles are scalar, "
+    ("perpair 1 0.9", "LIGGGHTS stops here: Fix property/global (id m3): Unknown style. Valid styles are scalar, "
                            "vector, atomtype/peratomtype, matrix, or atomtypepair/peratomtypepair"),
     ("atomtypepair 2 0.9", "LIGGGHTS stops here: Fix property/global (id m3): the number of default values must be a "
                            "multiple of nCols"),
@@ -231,8 +231,7 @@ def test_liggghts_aliases_are_read(tmp_path, alias):
                                "symmetric, i.e. N atom types require you to define N columns and N rows")])
 def test_a_wrong_matrix_is_named_for_what_it_gives(tmp_path, change, word):
     """In LIGGGHTS' own words, the line named."""
-    text = LIGGGHTS.replace("atomtypepair 1 0.9", change.replace("atomtypepair 1 0.9", "perpair 1 0.9")
-                            if "perpair" in word else change)
+    text = LIGGGHTS.replace("atomtypepair 1 0.9", change)
     assert word in refusal(tmp_path, text)
 
 

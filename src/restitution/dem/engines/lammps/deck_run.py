@@ -126,6 +126,6 @@ def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
     env.update(HOME=str(root), OMP_NUM_THREADS="1")
     done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), ending(root).strip()],
                      deck.parent, env, root, budget)
-    if done.status and not done.error:
+    if done.status and not done.error and not done.timed_out:     # (the budget's kill is no error of LAMMPS')
         done.error = f"LAMMPS ended with status {done.status}"
     return done
