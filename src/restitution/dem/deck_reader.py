@@ -4,8 +4,8 @@ head-on two-sphere contact (:class:`~restitution.dem.deck_state.Deck`), for ever
 What a pair style, its coefficients and its walls mean is an engine's: :data:`DIALECTS` gives the
 dialect of each engine of the registry that has one (:mod:`restitution.dem.engines.lammps.deck`,
 :mod:`restitution.dem.engines.liggghts.deck`), and :data:`PAIR_STYLES` the dialect of each pair
-style. Which commands run (if, jump, label, next, quit, include, variable) is
-:mod:`restitution.dem.deck_script`'s.
+style. Which commands run (if, jump, label, next, quit, include, variable) is the engine's own:
+:func:`read_executed` reads the linear stream of commands it executed.
 """
 
 from __future__ import annotations
@@ -13,13 +13,11 @@ from __future__ import annotations
 import copy
 import re
 
-from .deck_script import LocatedError, Script
-from .deck_state import (Deck, DeckError, atom_type, explained, fetch, labelmap, number, place, types,
-                         unlabeled)
-from .deck_text import ScriptError, evaluate, words
+from .deck_state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
+from .deck_text import ScriptError, words
 from .engines import ENGINES
 
-__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_deck", "read_executed", "contact_key"]
+__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key"]
 
 #: Engine (a Deck's ``code``) -> its deck dialect: the module that reads its pair style, its
 #: coefficients and its walls, as each registered engine's deck hook names it
@@ -29,7 +27,7 @@ PAIR_STYLES = {style: dialect for dialect in DIALECTS.values() for style in dial
 
 #: Commands with no bearing on a head-on two-sphere contact (first word, or "fix STYLE"). Not here,
 #: so named when met: mass (per-type masses). The script's control flow (if, jump, label, next,
-#: quit, include, variable) is deck_script's.
+#: quit, include, variable) is the engine's.
 _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "communicate", "comm_modify",
                "processors", "region", "lattice", "change_box", "neighbor", "neigh_modify", "timestep", "thermo",
                "thermo_style", "thermo_modify", "dump", "dump_modify", "undump", "run", "unfix", "compute",
@@ -59,71 +57,14 @@ _SHAPED_TEMPLATES = {"particletemplate/multisphere": "clumps of spheres (multisp
                      "particletemplate/superquadric": "superquadrics"}
 #: Runs with different contact settings the audit reports before it refuses the deck
 MAX_STAGES = 100
-#: Commands that may sit in a branch of an if whose condition the reader cannot evaluate: they
-#: neither make atoms, nor run, nor change what the reader reads (units, atom_style and
-#: soft_/hard_particles, though in _IRRELEVANT, are read)
+#: Commands that neither make atoms, nor run, nor change what the reader reads (units, atom_style and
+#: soft_/hard_particles, though in _IRRELEVANT, are read): a run's ``every`` may run them
 _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms", "units",
                                   "atom_style", "soft_particles", "hard_particles"})
 #: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
 #: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
 #: particle templates
 _INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/rate/region"}
-
-
-def read_deck(text: str, radius: dict | None = None, density: dict | None = None, read_file=None) -> Deck:
-    """Parse a deck.
-
-    Parameters
-    ----------
-    text : str
-        The input script.
-    radius, density : dict, optional
-        {type: value}, overriding or completing what the deck states.
-    read_file : callable, optional
-        ``read_file(name)``: the text of a file the deck names (include, jump, read_data), or
-        raises OSError (None: such a deck is refused).
-
-    Returns
-    -------
-    Deck
-        The settings after the deck's last line; ``stages`` holds the settings each ``run`` saw,
-        one entry per change.
-
-    Raises
-    ------
-    DeckError
-        One line naming what cannot be mapped or is missing.
-
-    Examples
-    --------
-    >>> deck = read_deck("create_box 2 box\\npair_style granular\\npair_coeff * * hertz 1e5 0.5\\nrun 100\\n")
-    >>> deck.code, deck.ntypes, len(deck.stages)
-    ('LAMMPS', 2, 1)
-    """
-    deck = Deck()
-    _read(deck, text, read_file)
-    every = [deck] + [snap for _, snap, _ in deck.stages]       # (a clear may have emptied the deck)
-    for d in every:
-        for t, r in (radius or {}).items():
-            d.radius[int(t)] = r
-        for t, rho in (density or {}).items():
-            d.density[int(t)] = rho
-    if not any(d.code for d in every):
-        raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
-                                            "(LIGGGHTS) line")
-    for d in every:
-        if d.code == "LAMMPS" and d.liggghts_mark:
-            # a LIGGGHTS tutorial in LAMMPS' older syntax: LIGGGHTS stops on the pair style (checked in
-            # LIGGGHTS 3.8.0: gran/hooke, gran/hooke/history, gran/hertz/history and granular are
-            # "Invalid pair style"), LAMMPS on the LIGGGHTS commands; neither runs it
-            (loc, line), (sloc, sline) = d.liggghts_mark, d.style_line
-            raise DeckError(place(sloc), sline, f"pair_style {d.style} is LAMMPS', in a LIGGGHTS deck ({place(loc)}: "
-                            f"{' '.join(line.split()[:4])}): LIGGGHTS 3.8.0 stops on it (invalid pair style), and "
-                            "LAMMPS on LIGGGHTS' commands")
-        if d.code == "LAMMPS" and d.atom_style.split()[:1] == ["granular"]:
-            raise DeckError(place(d.atom_style_loc), f"atom_style {d.atom_style}", "LAMMPS has no atom_style "
-                            "granular (LIGGGHTS' name; LAMMPS' is sphere): LAMMPS stops on it")
-    return deck
 
 
 def read_executed(commands, atoms: list, radius: dict | None = None, density: dict | None = None,
@@ -140,7 +81,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     radius, density : dict, optional
         {type: value}, overriding what the engine holds.
     read_file : callable, optional
-        As in :func:`read_deck` (a data file's Pair Coeffs).
+        ``read_file(name)``: the text of a file the deck names (a data file's Pair Coeffs), or
+        raises OSError.
 
     Returns
     -------
@@ -225,31 +167,8 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
                                    f"{max(radii):g}, density {min(dens):g} to {max(dens):g}")
 
 
-def _read(deck: Deck, text: str, read_file) -> None:
-    def execute(words, line, loc):
-        _execute(deck, words, line, loc, read_file)
-
-    def note(loc, line, why):
-        deck.unknown.append((*loc, line, why))
-
-    def fetch_named(name, loc, line):
-        return fetch(read_file, name, place(loc), line)
-    script = Script(execute, evaluate, note, fetch_named, _INERT)
-    deck.reasons = script.reasons           # shared: a later stage's refusal names its reason too
-    try:
-        script.run(text)
-    except LocatedError as why:
-        raise DeckError(place(why.loc), why.text, str(why)) from None
-    except DeckError as why:
-        raise explained(why, script.reasons) from None
-    if "LIGGGHTS" in {deck.code, *(snap.code for _, snap, _ in deck.stages)} and script.newer:
-        loc, line, what = script.newer
-        raise DeckError(place(loc), line, f"{what}: LIGGGHTS 3.8.0 stops on it (its if compares numbers only, "
-                                          "without |^, and it has no triple quotes)")
-
-
 def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
-    """One command that runs (the script's control flow is deck_script's), as far as a head-on
+    """One command that ran (the script's control flow is the engine's), as far as a head-on
     contact is concerned."""
     where = place(loc)
     cmd = words[0]
@@ -279,7 +198,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             _inserted(deck)
     elif cmd == "clear":
         # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
-        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages, reasons=deck.reasons)
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
         deck.__dict__.update(fresh.__dict__)
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
@@ -398,8 +317,7 @@ def _stage(deck: Deck, loc, line: str) -> None:
                                           "audit reports each, and stops here")
     stages, deck.stages = deck.stages, []
     # the lists of lines not understood are the whole deck's, shared by every stage
-    snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored,
-                                id(deck.reasons): deck.reasons})
+    snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored})
     deck.stages = stages
     stages.append(([(loc, line)], snap, key))
 
