@@ -7,6 +7,7 @@ deck's contact lines at three time steps (t_c/2000 to t_c/8000), extrapolated to
 engine test below repeats it."""
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -132,3 +133,40 @@ def _write(tmp_path, text: str):
     path = tmp_path / "in.deck"
     path.write_text(text)
     return path
+
+
+# ---------------------------------------------------------------- LIGGGHTS' own tutorials
+LIGGGHTS_EXAMPLES = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
+#: the tutorials the audit answers (with --radius where a type holds two sizes), as
+#: test_dem_deck_official.py's table lists them
+TUTORIALS = [("cohesion/in.noCohesion", {}), ("contactModels/in.newModels", {}), ("heatTransfer_1/in.heatGran", {}),
+             ("heatTransfer_2/in.heatGran", {}), ("hysteresis/in.noHysteresis", {}), ("meshGran/in.meshGran", {}),
+             ("mesh_tet/in.mesh_tet", {}), ("movingMeshGran/in.movingMeshGran", {}),
+             ("chute_wear/in.chute_wear", {1: 0.0015}), ("conveyor/in.conveyor", {1: 0.015}),
+             ("insert_stream/in.insert_stream", {1: 0.015}), ("packing/in.packing", {1: 0.005})]
+
+
+@needs_liggghts
+@pytest.mark.skipif(not LIGGGHTS_EXAMPLES.is_dir(), reason="LIGGGHTS examples not installed: as root, apt-get "
+                    "install liggghts-doc (make test does it)")
+@pytest.mark.dem
+@pytest.mark.slow
+@pytest.mark.parametrize("name, radius", TUTORIALS, ids=[n for n, _ in TUTORIALS])
+def test_every_answered_tutorial_agrees_with_liggghts(name, radius):
+    """Types 1 1 of each tutorial at g = 1, head-on in LIGGGHTS with the materials and pair style
+    LIGGGHTS executed (its own substitution), three steps t_c/2000..t_c/8000 extrapolated: within
+    1e-6 of the audit (measured: 6.7e-8 at most, the e = 0.3 decks)."""
+    from restitution.dem.contact import Contact
+    from restitution.dem.deck import audit_deck, engine_read
+    path = LIGGGHTS_EXAMPLES / name
+    deck, _ = engine_read(path, radius)
+    res = audit_deck(path.read_text(), [1.0], radius, path=path)
+    d = deck.stages[-1][1] if deck.stages else deck
+    lines = [f"create_box {d.ntypes} box"] + ["soft_particles yes"] * d.soft + ["hard_particles yes"] * d.hard
+    lines += [f"{d.prop_fix[k]} property/global {k} {' '.join(v)}" for k, (_, v) in d.props.items()]
+    lines += [f"pair_style gran model {d.model} tangential history" + " limitForce on" * d.limit_force, "pair_coeff * *"]
+    p = next(p for p in res["pairs"] if p["types"] == [1, 1])
+    pair = Pair.spheres(d.radius[1], d.radius[1], d.density[1], d.density[1])
+    t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(1.0)
+    eps = liggghts_run.liggghts_eps_runs(pair, [("\n".join(lines), 1.0, t_c / 2000 / k, 1.5 * t_c) for k in (1, 2, 4)])
+    assert abs(richardson(*eps, p["gamma"]) - p["eps"][0]) <= 1e-6, eps

