@@ -10,6 +10,11 @@ import time
 
 def medians(calls: dict, repeats: int) -> dict:
     """{name: median seconds} of the callables in ``calls``, warm, taking turns."""
+    return {name: statistics.median(t) for name, t in timings(calls, repeats).items()}
+
+
+def timings(calls: dict, repeats: int) -> dict:
+    """{name: list of seconds} of the callables in ``calls``, warm, taking turns."""
     for call in calls.values():
         call()
     times: dict = {name: [] for name in calls}
@@ -18,4 +23,4 @@ def medians(calls: dict, repeats: int) -> dict:
             start = time.perf_counter()
             call()
             times[name].append(time.perf_counter() - start)
-    return {name: statistics.median(t) for name, t in times.items()}
+    return times

@@ -39,6 +39,7 @@ ROOT = Path(__file__).resolve().parents[1]
 
 from restitution.core.asymptotics import elastic_limit, viscous_limit
 from restitution.core.exponents import as_exponents
+from restitution.core.problem import Problem
 from restitution.fast.integrator import collide_fast
 from restitution.core.highprec import reference_collision
 from restitution.api import RELATIONS, Ladder
@@ -239,7 +240,7 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
     inner = np.exp(rng.uniform(math.log(OVERLAP_RANGE[0]), math.log(OVERLAP_RANGE[1]), n_points - 2))
     omegas = np.sort(np.concatenate([OVERLAP_RANGE, inner]))
     log(f"[{alpha}, {gamma}] overlap rule: mpmath reference at {omegas.size} Omegas ({REF_DIGITS} digits)")
-    ref = np.array([float(reference_collision(ex, float(w), digits=REF_DIGITS, end="overlap").eps)
+    ref = np.array([float(reference_collision(Problem(as_exponents(ex), "overlap"), float(w), digits=REF_DIGITS).eps)
                     for w in omegas])
     rows = []
 
@@ -263,21 +264,21 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
     # the overlap rule's uniform closed form, where it exists (gamma < alpha < 2 gamma + 1)
     if ex.gamma < ex.alpha < 2 * ex.gamma + 1:
         t0 = time.perf_counter()
-        u = build_uniform(ex, end="overlap")
+        u = build_uniform(Problem(as_exponents(ex), "overlap"))
         u_build = time.perf_counter() - t0
         uniform_eps(u, big[:10])
         row("closed-form (overlap)", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: uniform_eps(u, big), n_fast, 5),
             uniform_eps(u, omegas), note=f"build {u_build:.1f} s; stated bound {u.bound_eps:.2g} (eps), "
                                          f"{u.bound_one_minus_eps:.2g} (1 - eps) over Omega in [1e-8, 1e8]")
-    collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas[:2], 1e-9, True)
+    collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas[:2], 1e-9, "overlap")
     for rtol in (1e-9, 1e-12):
-        res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, rtol, True)
-        cost = _time_per_point(lambda r=rtol: collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, r, True),
+        res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, rtol, "overlap")
+        cost = _time_per_point(lambda r=rtol: collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas, r, "overlap"),
                                omegas.size, 3)
         row("integrator (overlap)", f"rtol={rtol:g}", cost, res[:, 0], note="compiled, end at x = 0")
     sub = omegas[:: 4 if quick else 1]
     t0 = time.perf_counter()
-    vals = [collide(ex, float(w), rtol=1e-12, end="overlap").eps for w in sub]
+    vals = [collide(Problem(as_exponents(ex), "overlap"), float(w), rtol=1e-12).eps for w in sub]
     cost = (time.perf_counter() - t0) / sub.size
     sel = np.isin(omegas, sub)
     mx, md = _errors(vals, ref[sel])
@@ -297,24 +298,24 @@ def public_calls(ex, end: str, out: Path, log) -> list[dict]:
     warm cache (the curve loaded and checked from disk, then in memory); the build itself."""
     cache = out / "cache" / end
     shutil.rmtree(cache, ignore_errors=True)
-    lad = Ladder(ex, cache_dir=str(cache), stream=open(os.devnull, "w"))
+    lad = Ladder(Problem(ex, end), cache_dir=str(cache), stream=open(os.devnull, "w"))
     big = np.logspace(-3, 3, 100_000)
     t0 = time.perf_counter()
-    first = lad.evaluate(big, tol=1e-9, end=end)
+    first = lad.evaluate(big, tol=1e-9)
     cold = time.perf_counter() - t0
-    second = _time_per_point(lambda: lad.evaluate(big, tol=1e-9, end=end), 1, 3)
+    second = _time_per_point(lambda: lad.evaluate(big, tol=1e-9), 1, 3)
     om200 = np.logspace(-3, 3, 200)
-    warm_lad = Ladder(ex, cache_dir=str(cache), stream=open(os.devnull, "w"))
+    warm_lad = Ladder(Problem(ex, end), cache_dir=str(cache), stream=open(os.devnull, "w"))
     t0 = time.perf_counter()
-    warm_lad.evaluate(om200, tol=1e-9, end=end)
+    warm_lad.evaluate(om200, tol=1e-9)
     loading = time.perf_counter() - t0
-    warm = _time_per_point(lambda: warm_lad.evaluate(om200, tol=1e-9, end=end), 1, 3)
-    chosen = warm_lad.evaluate(om200, tol=1e-9, end=end)
+    warm = _time_per_point(lambda: warm_lad.evaluate(om200, tol=1e-9), 1, 3)
+    chosen = warm_lad.evaluate(om200, tol=1e-9)
     # The chooser against the plainest work on the same array (issue 44: at most 0.6x): a million
     # points on the curve in memory beside one numpy degree-32 Chebyshev pass over them.
     million = np.logspace(-3, 3, 1_000_000)
-    lad.evaluate(million, tol=1e-9, end=end)
-    per_million = _time_per_point(lambda: lad.evaluate(million, tol=1e-9, end=end), 1, 5)
+    lad.evaluate(million, tol=1e-9)
+    per_million = _time_per_point(lambda: lad.evaluate(million, tol=1e-9), 1, 5)
     coef, x = np.linspace(1.0, 0.5, 33), np.linspace(-1.0, 1.0, million.size)
     cheb = _time_per_point(lambda: np.polynomial.chebyshev.chebval(x, coef), 1, 5)
     curve = "master curve" if end == "force" else "overlap-rule master curve"

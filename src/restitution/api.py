@@ -11,7 +11,7 @@ from __future__ import annotations
 from .audit.relations import PAPER_C, PERTURBATION
 from .core import collision as _collision
 from .core.errors import ParameterError
-from .core.problem import Problem, as_problem
+from .core.problem import Problem
 from .core.exponents import as_exponents
 from .core.results import Collision, InverseCollision, end_rule
 from .fast import ladder as _ladder
@@ -99,11 +99,8 @@ def epsilon(*, alpha=None, gamma=None, omega=None, g=None, D1=None, D2=None, tol
     >>> r.eps.round(8)
     array([0.20787958, 0.40082012])
     """
-    if problem is not None:
-        problem = _problem(alpha, gamma, end, problem)
-        alpha, gamma, end = problem.alpha, problem.gamma, problem.end
-    return _ladder.epsilon(alpha=alpha, gamma=gamma, omega=omega, g=g, D1=D1, D2=D2, tol=tol,
-                           method=method, build=build, relations=RELATIONS, end="force" if end is None else end)
+    return _ladder.epsilon(_problem(alpha, gamma, end, problem), omega=omega, g=g, D1=D1, D2=D2, tol=tol,
+                           method=method, build=build, relations=RELATIONS)
 
 
 def collide(alpha=None, gamma=None, omega=None, *, method: str = "reference", rtol: float = 1e-12, t_eval=None,
@@ -159,7 +156,7 @@ def collide(alpha=None, gamma=None, omega=None, *, method: str = "reference", rt
     -------
     Collision
         ``eps``, ``tau_b``, ``x_b`` (maximum compression), ``tau_c``, ``x_c`` (end of contact),
-        ``ended_by`` ("force" or "separation": how contact ended), ``rule`` (the rule asked),
+        ``ended_by`` ("force" or "separation": how contact ended), ``end`` (the rule asked),
         ``error_bound``, ``one_minus_eps``.
 
     Raises
@@ -189,12 +186,18 @@ def collide(alpha=None, gamma=None, omega=None, *, method: str = "reference", rt
 
 
 def _problem(alpha, gamma, end, problem) -> Problem:
-    """The problem of a public call: ``alpha`` and ``gamma`` with ``end``, or ``problem=``."""
+    """The problem of a public call, made once here: ``alpha`` and ``gamma`` with ``end``, or
+    ``problem=`` (a Problem, an Exponents or a pair; an ``end`` given too must agree with a
+    Problem's own rule, so that a rule never travels two ways at once and silently disagrees)."""
     if problem is None:
-        return Problem(as_exponents(alpha, gamma), end_rule("force" if end is None else end))
+        return Problem(as_exponents(alpha, gamma), "force" if end is None else end)
     if alpha is not None or gamma is not None:
         raise ParameterError("problem", problem, "give either alpha and gamma or problem, not both")
-    return as_problem(problem, end)
+    if isinstance(problem, Problem):
+        if end is not None and end_rule(end) != problem.end:
+            raise ParameterError("end", end, f"disagrees with the problem's own rule, {problem.end!r}")
+        return problem
+    return Problem(as_exponents(problem), "force" if end is None else end)
 
 
 # The public spellings keep the exponents as two numbers; the core takes one problem value.
@@ -243,9 +246,10 @@ def inverse_collide(alpha, gamma, omega_tilde, x_start: float = 0.0, *, rtol: fl
     >>> round(r.tau_b, 6), round(r.v_end, 6)
     (1.128686, -1.491971)
     """
-    return _collision.inverse_collide((alpha, gamma), omega_tilde, x_start, rtol=rtol, t_eval=t_eval)
+    return _collision.inverse_collide(_problem(alpha, gamma, None, None), omega_tilde, x_start, rtol=rtol,
+                                      t_eval=t_eval)
 
 
 def collide_many(alpha, gamma, omegas, *, rtol: float = 1e-12) -> dict:
     """:func:`restitution.core.collision.collide_many` for the exponents ``alpha``, ``gamma``."""
-    return _collision.collide_many((alpha, gamma), omegas, rtol=rtol)
+    return _collision.collide_many(_problem(alpha, gamma, None, None), omegas, rtol=rtol)

@@ -77,9 +77,9 @@ def test_a_problem_carries_its_rule():
     from restitution import Problem
     p = Problem.of("3/2", 1, end="overlap")
     by_problem = collide(problem=p, omega=0.5)
-    assert by_problem == collide("3/2", 1, 0.5, end="overlap") and by_problem.rule == "overlap"
+    assert by_problem == collide("3/2", 1, 0.5, end="overlap") and by_problem.end == "overlap"
     assert by_problem.ended_by == "separation"
-    assert collide(problem=p, omega=0.5, method="integrator").rule == "overlap"
+    assert collide(problem=p, omega=0.5, method="integrator").end == "overlap"
     eps = restitution.epsilon(problem=p, omega=[0.5], tol=1e-6)
     assert eps.eps[0] == pytest.approx(by_problem.eps, rel=1e-6)
     with pytest.raises(ParameterError) as err:

@@ -52,9 +52,9 @@ def test_collide_json_fields():
     proc = run("collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--json")
     assert proc.returncode == 0, proc.stderr
     data = json.loads(proc.stdout)
-    assert set(data) >= {"alpha", "gamma", "omega", "eps", "tau_b", "x_b", "tau_c", "x_c", "end"}
+    assert set(data) >= {"alpha", "gamma", "omega", "eps", "tau_b", "x_b", "tau_c", "x_c", "end", "ended_by"}
     assert (data["alpha"], data["gamma"], data["omega"]) == ("3/2", "1", 0.5)
-    assert 0 < data["eps"] < 1 and data["end"] in ("force", "separation")
+    assert 0 < data["eps"] < 1 and data["ended_by"] in ("force", "separation")
 
 
 def test_collide_from_material_constants_uses_the_scaled_omega():

@@ -203,7 +203,7 @@ def test_as_dict_is_json_ready():
     hit = collide(("3/2", 1), 0.5)
     data = json.loads(json.dumps(hit.as_dict()))
     assert data == {"alpha": "3/2", "gamma": "1", "omega": 0.5, "eps": hit.eps, "tau_b": hit.tau_b,
-                    "x_b": hit.x_b, "tau_c": hit.tau_c, "x_c": hit.x_c, "end": "force",
+                    "x_b": hit.x_b, "tau_c": hit.tau_c, "x_c": hit.x_c, "end": "force", "ended_by": "force",
                     "one_minus_eps": hit.one_minus_eps, "error_bound": 10 * 1e-12 + 1e-13,
                     "one_minus_eps_bound": 10 * 1e-12 + 1e-13}
     assert hit.direction == "forward" and hit.rtol == 1e-12 and hit.trajectory is None
@@ -220,12 +220,12 @@ def test_exponent_spellings_agree():
 def test_collide_many_matches_single_calls():
     omegas = [0.01, 1.0, 100.0]
     many = collide_many(("5/4", "3/2"), omegas, rtol=1e-10)
-    assert set(many) == {"eps", "tau_b", "x_b", "tau_c", "x_c", "end"}
+    assert set(many) == {"eps", "tau_b", "x_b", "tau_c", "x_c", "ended_by"}
     for i, w in enumerate(omegas):
         one = collide(("5/4", "3/2"), w, rtol=1e-10)
         assert [many[q][i] for q in QUANTITIES] == [getattr(one, q) for q in QUANTITIES]
-        assert many["end"][i] == one.ended_by
-    assert many["end"].dtype.kind == "U"
+        assert many["ended_by"][i] == one.ended_by
+    assert many["ended_by"].dtype.kind == "U"
 
 
 @pytest.mark.parametrize("kwargs", [

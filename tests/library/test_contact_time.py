@@ -11,6 +11,7 @@ from restitution.cli import main
 from restitution.core.collision import OMEGA_RANGE
 from restitution.core.highprec import reference_collision
 from restitution.dem.contact import TIMES_OMEGA_MAX, Contact
+from restitution.core.problem import Problem
 
 
 def _contact_at(alpha, gamma, end, omega) -> Contact:
@@ -25,7 +26,7 @@ def _contact_at(alpha, gamma, end, omega) -> Contact:
 def test_beyond_the_reference_range_the_contact_time_is_mpmaths(alpha, gamma, omega, end):
     c = _contact_at(alpha, gamma, end, omega)
     assert c.omega(1.0) == pytest.approx(omega, rel=1e-12) and OMEGA_RANGE[1] < omega <= TIMES_OMEGA_MAX
-    tau = float(reference_collision((alpha, gamma), c.omega(1.0), digits=20, end=end).tau_c)
+    tau = float(reference_collision(Problem.of(alpha, gamma, end), c.omega(1.0), digits=20).tau_c)
     t_c = c.contact_time(1.0)
     assert abs(t_c / (tau * float(c.material.time_scale(1.0))) - 1) <= 1e-11
 

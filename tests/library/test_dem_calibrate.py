@@ -10,6 +10,7 @@ from restitution.cli import main
 from restitution.core.collision import collide
 from restitution.core.errors import ParameterError
 from restitution.core.model import Material
+from restitution.core.problem import Problem
 from restitution.dem import Contact, calibrate, recommended_dt
 from restitution.dem.timestep import verlet_eps
 
@@ -23,7 +24,7 @@ def test_calibration_round_trips(alpha, gamma, end):
         cal = calibrate(alpha, gamma, D1=2e4, eps=target, g=g, end=end)
         # forward again, independently of calibrate's own recomputation
         omega = Material(alpha, gamma, 2e4, cal.D2).omega(g)
-        forward = collide((alpha, gamma), omega, end=end).eps
+        forward = collide(Problem.of(alpha, gamma, end), omega).eps
         assert abs(forward / target - 1) <= 1e-9 and abs(cal.eps[0] / target - 1) <= 1e-9
         assert cal.contact.end == end
 

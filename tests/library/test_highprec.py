@@ -188,10 +188,10 @@ def test_result_fields_and_floats():
     assert isinstance(r, HighPrecisionCollision)
     assert r.alpha == Fraction(3, 2) and r.gamma == Fraction(1)
     d = r.as_floats()
-    assert set(d) >= {"eps", "tau_b", "x_b", "tau_c", "x_c", "end", "error_estimate"}
+    assert set(d) >= {"eps", "tau_b", "x_b", "tau_c", "x_c", "end", "ended_by", "error_estimate"}
     assert all(isinstance(d[k], float) for k in ("eps", "tau_b", "x_b", "tau_c", "x_c"))
     assert 0 < d["eps"] < 1 and d["tau_b"] < d["tau_c"] and d["x_c"] < d["x_b"]
-    assert d["end"] == "force"
+    assert d["ended_by"] == "force"
 
 
 def test_caller_precision_untouched():

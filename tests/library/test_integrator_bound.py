@@ -101,12 +101,13 @@ def test_epsilon_states_what_holds_for_large_exponents():
     """Through the API: eps for (38/5, 7) at Omega = 2055 and tol 2e-13 came from the compiled
     integrator at rtol 1e-14, stated 1.5e-13 and was off by 1.1e-12."""
     from restitution.core.highprec import reference_collision
+    from restitution.core.problem import Problem
     from restitution.fast.ladder import epsilon
 
     omega = 2055.329307323975
     truth = float(reference_collision(("38/5", "7"), omega, digits=22).eps)
     for tol in (2e-13, 1e-11, 1e-9):
-        r = epsilon(alpha="38/5", gamma="7", omega=[omega], tol=tol, build=False)
+        r = epsilon(Problem.of("38/5", "7"), omega=[omega], tol=tol, build=False)
         assert r.error_bound <= tol and abs(r.eps[0] / truth - 1) <= r.error_bound, (tol, r.method)
 
 
@@ -129,9 +130,10 @@ def test_below_1e_12_every_quantity_keeps_the_bound(alpha, gamma, omega):
 
 def test_eps_answers_down_to_1e_300_but_contact_times_stop_at_1e_100():
     from restitution.core.errors import ParameterError
+    from restitution.core.problem import Problem
     from restitution.fast.ladder import epsilon
 
-    r = epsilon(alpha="3/2", gamma="1", omega=[1e-300, 1e-200], tol=1e-9, method="integrator", build=False)
+    r = epsilon(Problem.of("3/2", "1"), omega=[1e-300, 1e-200], tol=1e-9, method="integrator", build=False)
     np.testing.assert_allclose(r.eps, 2 ** 0.25 * np.array([1e-300, 1e-200]), rtol=1e-9)
     assert collide("3/2", "1", 1e-100, method="integrator").ended_by == "force"
     with pytest.raises(ParameterError, match=r"\[1e-100, 1e\+14\]"):

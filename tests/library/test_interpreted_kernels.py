@@ -33,8 +33,8 @@ SAME_BITS = textwrap.dedent("""
     plain = {}
     for a, g in pairs:
         ex = as_exponents(a, g)
-        for overlap in (False, True):
-            plain[a, g, overlap] = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, 1e-12, overlap)
+        for end in ("force", "overlap"):
+            plain[a, g, end] = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, 1e-12, end)
     rng = np.random.default_rng(1)
     coef, visc, elas = rng.normal(size=(7, 11)) * 0.1, np.array([0.2, 1.0, 0.1, 0.0, 0.0]), np.array([0.6, 1.2, 0.3, 0.0, 0.0])
     wide = np.geomspace(1e-9, 1e9, 1500)
@@ -42,11 +42,11 @@ SAME_BITS = textwrap.dedent("""
     assert "numba" not in sys.modules, "a small request started numba"
 
     integrator.INTERPRETED_MAX_POINTS = INTERPRETED_MAX_POINTS
-    for (a, g, overlap), got in plain.items():   # now compiled: enough points to pass the limit
+    for (a, g, end), got in plain.items():   # now compiled: enough points to pass the limit
         ex = as_exponents(a, g)
-        many = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.tile(om, 20), 1e-12, overlap)[: om.size]
+        many = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.tile(om, 20), 1e-12, end)[: om.size]
         assert "numba" in sys.modules
-        assert np.array_equal(got, many, equal_nan=True), (a, g, overlap, got[:, 0], many[:, 0])
+        assert np.array_equal(got, many, equal_nan=True), (a, g, end, got[:, 0], many[:, 0])
     compiled_panels = chebyshev_panels_eval(np.tile(wide, 2), -2.0, 0.5, coef, visc, elas)[: wide.size]
     assert np.array_equal(plain_panels, compiled_panels)
     print("same bits")
@@ -139,15 +139,15 @@ MANY_SMALL = textwrap.dedent("""
     jit.PLAIN_BUDGET, jit.COMPILE_BUDGET = 0.1, 0.3
     assert not jit._compiled_on_disk(collide_many), "an empty NUMBA_CACHE_DIR holds a kernel"
     om = np.array([0.3])
-    first = collide_fast(3, 2, 2, om, 1e-12, False)
+    first = collide_fast(3, 2, 2, om, 1e-12, "force")
     assert "numba" not in sys.modules, "one small request started numba"
     calls = 1
     while "numba" not in sys.modules and calls < 1000:
-        collide_fast(3, 2, 2, om, 1e-12, False)
+        collide_fast(3, 2, 2, om, 1e-12, "force")
         calls += 1
     assert "numba" in sys.modules, "a thousand small requests never started numba"
     assert jit._SPENT["plain"] >= jit.COMPILE_BUDGET, "nothing compiled on disk: compiling's budget applies"
-    assert np.array_equal(first, collide_fast(3, 2, 2, om, 1e-12, False))
+    assert np.array_equal(first, collide_fast(3, 2, 2, om, 1e-12, "force"))
     assert jit._compiled_on_disk(collide_many)
     print(calls)
 """)

@@ -1,8 +1,8 @@
 """The overlap rule's master curve at its two ends (issue 54, item 2): the viscous law C Omega^k
 below its panels where the bodies cannot stick, the elastic expansion above; each stated bound
-checked against the mpmath reference where it can integrate (Omega >= 1e-5: below, the creeping
-return takes it ~0.2/Omega steps) and against the scipy reference (Radau) below, down to its
-range's end (1e-12); a sticking pair keeps its refusal."""
+checked against the high-precision reference (core.highprec.highprec_eps: the Taylor integration,
+and below 1e-5 the creeping return through its inner problem) over 1e-12..1e20; a sticking pair
+keeps its refusal."""
 
 from __future__ import annotations
 
@@ -12,9 +12,11 @@ import math
 import numpy as np
 import pytest
 
-from restitution.core.collision import StickError, UnresolvedError, collide
-from restitution.core.highprec import reference_collision
+from restitution.core.collision import StickError
+from restitution.core.highprec import highprec_eps
 from restitution.core.overlap_limit import overlap_limit
+from restitution.core.exponents import as_exponents
+from restitution.core.problem import Problem
 from restitution.fast.ladder import Ladder
 from restitution.fast.overlap_master import OMEGA_HI, OMEGA_LO
 
@@ -31,18 +33,9 @@ def curves(tmp_path_factory):
 
 
 def _truth(pair, w: float) -> tuple[float, float]:
-    """eps and its accuracy: mpmath where it integrates, else the scipy reference."""
-    if w >= 1e-5:
-        return float(reference_collision(pair, w, digits=20, end="overlap").eps), 1e-18
-    # Radau can lose its way in the creeping return at one rtol and not at the next (seen: 3/2, 1 at
-    # Omega = 6.12e-11 refused at 1e-11, answered alike at 1e-12 and 1e-10); the refusal names that remedy
-    for rtol in (1e-11, 1e-12, 1e-10):
-        try:
-            ref = collide(pair, w, rtol=rtol, end="overlap")
-        except UnresolvedError:
-            continue
-        return ref.eps, ref.error_bound
-    raise AssertionError(f"seed {SEED}: the scipy reference refused {pair} at Omega = {w:.6g} for every rtol")
+    """eps and its accuracy from the high-precision reference (below 1e-5 through the creep's inner problem)."""
+    eps, err = highprec_eps(Problem(as_exponents(pair), "overlap"), w, digits=20)
+    return float(eps), float(err) + 1.2e-16
 
 
 def _spread(lo10: float, hi10: float, n: int) -> np.ndarray:
@@ -56,13 +49,13 @@ def _spread(lo10: float, hi10: float, n: int) -> np.ndarray:
 def test_the_ends_hold_their_bound_at_a_few_points(curves, pair):
     lad = curves[pair]
     for w in (3e-5, 1e12):
-        r = lad.evaluate([w], tol=1e-9, end="overlap", method="master", build=True)
+        r = lad.with_end("overlap").evaluate([w], tol=1e-9, method="master", build=True)
         truth, acc = _truth(pair, w)
         assert abs(float(r.eps[0]) / truth - 1) <= r.error_bound + acc, (pair, w)
         assert r.error_bound <= 1e-9
 
 
-@pytest.mark.slow   # mpmath at 9 points and the scipy reference's creep at 4 (a few seconds each)
+@pytest.mark.slow   # mpmath at 9 points (a few seconds each; the creep's C once a pair)
 @pytest.mark.parametrize("pair", PAIRS)
 def test_every_stated_bound_holds_over_the_whole_domain(curves, pair):
     """12 points or more spread over 1e-12..1e20, each within the bound the chooser states for it
@@ -70,7 +63,7 @@ def test_every_stated_bound_holds_over_the_whole_domain(curves, pair):
     lad = curves[pair]
     points = np.concatenate([_spread(-12, -5, 4), _spread(-5, 8, 5), _spread(8, 20, 4)])
     for w in points:
-        r = lad.evaluate([w], tol=1e-9, end="overlap", method="master", build=True)
+        r = lad.with_end("overlap").evaluate([w], tol=1e-9, method="master", build=True)
         truth, acc = _truth(pair, float(w))
         err = abs(float(r.eps[0]) / truth - 1)
         assert err <= r.error_bound + acc, f"seed {SEED}: {pair} Omega={w:.6g} err {err:.3g} > {r.error_bound:.3g}"
@@ -90,7 +83,7 @@ def test_far_below_every_reference_the_curve_is_the_law(curves, pair):
 def test_an_array_over_every_decade_is_one_call_of_the_curve(curves):
     lad = curves[("3/2", "1")]
     om = np.geomspace(1e-7, 1e7, 20_000)
-    r = lad.evaluate(om, tol=1e-9, end="overlap")
+    r = lad.with_end("overlap").evaluate(om, tol=1e-9)
     assert r.methods == {"master": om.size} and r.error_bound <= 1e-9
     assert lad.overlap_curve().omega_lo == pytest.approx(OMEGA_LO) and lad.overlap_curve().omega_hi >= OMEGA_HI
 
@@ -100,9 +93,9 @@ def test_where_the_bodies_can_stick_there_is_no_law_and_the_refusal_stays(curves
     curve = lad.overlap_curve()
     assert curve.law is None and curve.lowest == curve.omega_lo > curve.stick_below > 0
     with pytest.raises(StickError):
-        lad.evaluate([curve.stick_below * 0.5, 1.0], tol=1e-9, end="overlap")
+        lad.with_end("overlap").evaluate([curve.stick_below * 0.5, 1.0], tol=1e-9)
     # above the boundary but below the curve: another rung answers those points
     w = 0.5 * (curve.stick_below + curve.lowest)
-    r = lad.evaluate([w, 10.0], tol=1e-6, end="overlap")
+    r = lad.with_end("overlap").evaluate([w, 10.0], tol=1e-6)
     assert r.methods.get("master", 0) == 1 and sum(r.methods.values()) == 2
     assert math.isfinite(r.error_bound) and r.error_bound <= 1e-6

@@ -33,12 +33,12 @@ def _fresh(lo, hi, n):
 
 def _bound(rtol, alpha, gamma):
     """What the overlap rule states at rtol (it runs at OVERLAP_RTOL_MAX at most)."""
-    return integrator_bound(min(rtol, OVERLAP_RTOL_MAX), as_exponents(alpha, gamma), "overlap")
+    return integrator_bound(min(rtol, OVERLAP_RTOL_MAX), Problem.of(alpha, gamma, "overlap"))
 
 
 def _fast(alpha, gamma, omega, rtol):
     ex = as_exponents(alpha, gamma)
-    return collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.atleast_1d(omega), rtol, True)
+    return collide_fast(ex.p, ex.q_alpha, ex.q_gamma, np.atleast_1d(omega), rtol, "overlap")
 
 
 # (p >= 3 pairs such as 2, 3/4 are left out: there the force rule's compiled integrator itself
@@ -46,7 +46,7 @@ def _fast(alpha, gamma, omega, rtol):
 @pytest.mark.parametrize("alpha, gamma", [("3/2", "1"), ("3/2", "1/2"), ("5/2", "1"), ("1", "1/2")])
 def test_bound_holds_against_mpmath_at_fresh_points(alpha, gamma):
     for w in _fresh(1e-3, 1e6, 3):
-        truth = float(reference_collision((alpha, gamma), float(w), digits=20, end="overlap").eps)
+        truth = float(reference_collision(Problem.of(alpha, gamma, "overlap"), float(w), digits=20).eps)
         for rtol in (1e-6, 1e-9, 1e-12):
             got = _fast(alpha, gamma, w, rtol)[0]
             assert got[5] == END_SEPARATION
@@ -75,7 +75,7 @@ def test_dashpot_matches_its_exact_half_period_and_sticks_below_a_quarter():
 
 def _overlap_constant():
     # alpha = 3/2, gamma = 1/2: eps = C Omega^3 exactly once the creep has forgotten the impact
-    return float(reference_collision(("3/2", "1/2"), 1e-2, digits=25, end="overlap").eps) / 1e-6
+    return float(reference_collision(Problem.of("3/2", "1/2", "overlap"), 1e-2, digits=25).eps) / 1e-6
 
 
 @pytest.mark.parametrize("rtol", [1e-6, 1e-9, 1e-12])
@@ -92,14 +92,14 @@ def test_a_tiny_eps_keeps_its_relative_bound(rtol):
                                                  ("3/2", "1/4", 0.2), ("1", "0", 0.25)])
 def test_sticks_where_the_reference_proves_it_and_not_just_above(alpha, gamma, omega):
     with pytest.raises(StickError):
-        collide((alpha, gamma), omega, end="overlap")
+        collide(Problem.of(alpha, gamma, "overlap"), omega)
     assert _fast(alpha, gamma, omega, 1e-9)[0][5] == END_STUCK
     with pytest.raises(StickError):
-        reference_eps((alpha, gamma), [omega], 1e-9, "overlap")
+        reference_eps(Problem.of(alpha, gamma, "overlap"), [omega], 1e-9)
     above = 10.0 if omega < 1 else 10 * omega
     row = _fast(alpha, gamma, above, 1e-12)[0]
     assert row[5] == END_SEPARATION
-    assert math.isclose(row[0], collide((alpha, gamma), above, end="overlap", rtol=1e-13).eps,
+    assert math.isclose(row[0], collide(Problem.of(alpha, gamma, "overlap"), above, rtol=1e-13).eps,
                         rel_tol=integrator_bound(1e-12, as_exponents(alpha, gamma)) + 1e-12)
 
 
@@ -129,7 +129,7 @@ def test_epsilon_overlap_is_answered_by_the_integrator_within_tol(empty_cache):
     r = restitution.epsilon(alpha="3/2", gamma=1, omega=om, tol=1e-9, end="overlap", build=False)
     assert r.method == "integrator" and r.error_bound <= 1e-9
     for i in (0, 77, 199):
-        ref = collide(("3/2", 1), float(om[i]), rtol=1e-13, end="overlap").eps
+        ref = collide(Problem.of("3/2", 1, "overlap"), float(om[i]), rtol=1e-13).eps
         assert abs(r.eps[i] / ref - 1) <= 1e-9 + 2e-12
 
 
@@ -146,7 +146,7 @@ def test_the_overlap_integrators_floor_covers_large_alpha_in_the_elastic_regime(
     integrator where it stated 2.2e-13 for tol = 3e-13, then 3.4e-13 from the scipy reference where
     it stated 2.5e-13). Their bounds under this rule are wider now; whichever rung answers, its
     bound holds."""
-    truth = float(reference_collision(as_exponents(alpha, gamma), omega, digits=24, end="overlap").eps)
+    truth = float(reference_collision(Problem.of(alpha, gamma, "overlap"), omega, digits=24).eps)
     r = restitution.epsilon(alpha=alpha, gamma=gamma, omega=[omega], tol=tol, end="overlap", build=False)
     assert r.error_bound <= tol and abs(r.eps[0] / truth - 1) <= r.error_bound, r.method
 
@@ -158,11 +158,11 @@ def test_both_double_methods_keep_the_overlap_bound_at_large_alpha(rtol):
     from restitution.fast.rung import reference_bound
 
     ex = as_exponents("17/3", "4/3")
-    truth = float(reference_collision(ex, 1.895e6, digits=24, end="overlap").eps)
+    truth = float(reference_collision(Problem(as_exponents(ex), "overlap"), 1.895e6, digits=24).eps)
     fast = _fast("17/3", "4/3", 1.895e6, rtol)[0, 0]
-    scipy = collide(("17/3", "4/3"), 1.895e6, rtol=rtol, end="overlap")
-    assert abs(fast / truth - 1) <= integrator_bound(rtol, ex, "overlap")
-    assert abs(scipy.eps / truth - 1) <= min(reference_bound(rtol, ex, "overlap"), scipy.error_bound)
+    scipy = collide(Problem.of("17/3", "4/3", "overlap"), 1.895e6, rtol=rtol)
+    assert abs(fast / truth - 1) <= integrator_bound(rtol, Problem(as_exponents(ex), "overlap"))
+    assert abs(scipy.eps / truth - 1) <= min(reference_bound(rtol, Problem(as_exponents(ex), "overlap")), scipy.error_bound)
 
 
 @pytest.mark.parametrize("alpha, gamma, d, rtol", [("12/5", "7/10", 0.14865370763787225 * 6.8 - 1, 1.0381736152672802e-08),
@@ -177,9 +177,9 @@ def test_the_self_similar_case_keeps_its_bound_for_larger_denominators(alpha, ga
 
     ex = as_exponents(alpha, gamma)
     omega = float(1 / (4 * (ex.gamma + 1))) * (1 + d)
-    truth = float(reference_collision(ex, omega, digits=24, end="overlap").eps)
+    truth = float(reference_collision(Problem(as_exponents(ex), "overlap"), omega, digits=24).eps)
     cond = float(conditioning(Problem(ex, "overlap"), [truth], [omega])[0])
     fast = api_collide(alpha, gamma, omega, method="integrator", rtol=rtol, end="overlap").eps
     assert abs(fast / truth - 1) <= _bound(rtol, alpha, gamma) * cond
-    scipy = collide((alpha, gamma), omega, rtol=rtol, end="overlap")
+    scipy = collide(Problem.of(alpha, gamma, "overlap"), omega, rtol=rtol)
     assert abs(scipy.eps / truth - 1) <= scipy.error_bound

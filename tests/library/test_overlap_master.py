@@ -14,6 +14,7 @@ import pytest
 from restitution.core.collision import StickError, collide
 from restitution.core.errors import ParameterError
 from restitution.core.exponents import as_exponents
+from restitution.core.problem import Problem
 from restitution.core.highprec import reference_collision
 from restitution.fast.cache import cache_path
 from restitution.fast.ladder import Ladder
@@ -40,7 +41,7 @@ def test_bound_holds_against_mpmath_at_fresh_points(curves, pair):
     curve, _ = curves[pair]
     assert curve.bound_inside <= 1e-9
     for w in np.exp(RNG.uniform(math.log(curve.omega_lo), math.log(curve.omega_hi), 4)):
-        truth = float(reference_collision(pair, float(w), digits=20, end="overlap").eps)
+        truth = float(reference_collision(Problem(as_exponents(pair), "overlap"), float(w), digits=20).eps)
         err = abs(float(curve.eps(np.array([w]))[0]) / truth - 1)
         assert err <= curve.bound_inside, f"seed {SEED}: Omega={w:.6g} err {err:.3g} > {curve.bound_inside:.3g}"
 
@@ -49,7 +50,7 @@ def test_bound_holds_against_mpmath_at_fresh_points(curves, pair):
 def test_bound_carries_the_overlap_rules_node_accuracy(curves, pair):
     # the nodes come from the compiled integrator under the overlap rule: its bound, not the force rule's
     curve, _ = curves[pair]
-    nodes = integrator_bound(NODE_RTOL, as_exponents(*pair), "overlap")
+    nodes = integrator_bound(NODE_RTOL, Problem.of(*pair, "overlap"))
     assert nodes > integrator_bound(NODE_RTOL, as_exponents(*pair))
     assert curve.bound_inside >= 2.0 * nodes
 
@@ -57,16 +58,16 @@ def test_bound_carries_the_overlap_rules_node_accuracy(curves, pair):
 def test_epsilon_uses_the_curve_once_it_is_there(curves):
     _, lad = curves[("3/2", "1")]
     om = np.logspace(-3, 3, 200)
-    r = lad.evaluate(om, tol=1e-9, end="overlap")
+    r = lad.with_end("overlap").evaluate(om, tol=1e-9)
     assert r.method == "master" and r.error_bound <= 1e-9
-    ref = np.array([collide(("3/2", 1), float(w), rtol=1e-13, end="overlap").eps for w in om[::40]])
+    ref = np.array([collide(Problem.of("3/2", 1, "overlap"), float(w), rtol=1e-13).eps for w in om[::40]])
     assert np.max(np.abs(r.eps[::40] / ref - 1)) <= 1e-9 + 2e-12
 
 
 def test_a_large_request_builds_the_curve_alone(tmp_path):
     err = io.StringIO()
     lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=err)
-    r = lad.evaluate(np.geomspace(1e-3, 1e3, 100_000), tol=1e-9, end="overlap")
+    r = lad.with_end("overlap").evaluate(np.geomspace(1e-3, 1e3, 100_000), tol=1e-9)
     assert r.method == "master"
     entries = [p.name for p in tmp_path.iterdir() if p.suffix != ".lock"]   # the per-entry build locks stay
     assert entries == [cache_path(lad.overlap_key, tmp_path).name]   # not the force bundle
@@ -100,8 +101,8 @@ def test_sticking_boundary_is_right_on_both_sides(alpha, gamma):
     b = sticking_boundary((alpha, gamma))
     assert 1e-4 < b < 1e8
     with pytest.raises(StickError):
-        collide((alpha, gamma), b * (1 - 1e-4), end="overlap")
-    assert collide((alpha, gamma), b * (1 + 1e-4), end="overlap").eps > 0
+        collide(Problem.of(alpha, gamma, "overlap"), b * (1 - 1e-4))
+    assert collide(Problem.of(alpha, gamma, "overlap"), b * (1 + 1e-4)).eps > 0
 
 
 def test_self_similar_boundary_is_the_proved_one():
@@ -113,6 +114,6 @@ def test_the_curve_of_a_sticking_pair_starts_above_its_stored_boundary(tmp_path)
     lad = Ladder(("5/2", "1/2"), cache_dir=str(tmp_path), stream=io.StringIO())
     c = lad.overlap_curve()
     assert c.omega_lo > c.stick_below > 0.3
-    assert lad.evaluate([2.0, 50.0], tol=1e-9, end="overlap", method="master").error_bound <= 1e-9
+    assert lad.with_end("overlap").evaluate([2.0, 50.0], tol=1e-9, method="master").error_bound <= 1e-9
     with pytest.raises(ParameterError, match="contact never ends"):
-        lad.evaluate([0.9 * c.stick_below], tol=1e-9, end="overlap")
+        lad.with_end("overlap").evaluate([0.9 * c.stick_below], tol=1e-9)

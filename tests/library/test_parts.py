@@ -31,7 +31,7 @@ def _mixed():
 
 def test_far_points_do_not_send_the_array_to_another_rung(ladder):
     om, _ = _mixed()
-    r = ladder.evaluate(om, tol=1e-9, end="overlap", build=False)
+    r = ladder.with_end("overlap").evaluate(om, tol=1e-9, build=False)
     assert r.methods == {"overlap-law": FAR.size, "integrator": NEAR.size}
     assert r.method == "overlap-law+integrator"
     assert r.error_bound <= 1e-9 and np.all(r.bounds <= 1e-9)
@@ -40,10 +40,10 @@ def test_far_points_do_not_send_the_array_to_another_rung(ladder):
 
 def test_each_part_gets_what_it_gets_alone_bit_for_bit(ladder):
     om, order = _mixed()
-    r = ladder.evaluate(om.reshape(5, -1), tol=1e-9, end="overlap", build=False)
+    r = ladder.with_end("overlap").evaluate(om.reshape(5, -1), tol=1e-9, build=False)
     assert r.eps.shape == (5, om.size // 5)
-    near = ladder.evaluate(NEAR, tol=1e-9, end="overlap", build=False)
-    far = ladder.evaluate(FAR, tol=1e-9, end="overlap", build=False)
+    near = ladder.with_end("overlap").evaluate(NEAR, tol=1e-9, build=False)
+    far = ladder.with_end("overlap").evaluate(FAR, tol=1e-9, build=False)
     expect = np.concatenate([near.eps, far.eps])[order]
     assert np.array_equal(r.eps.ravel(), expect)
     bounds = np.concatenate([np.full(NEAR.size, near.error_bound), np.full(FAR.size, far.error_bound)])[order]
@@ -51,7 +51,7 @@ def test_each_part_gets_what_it_gets_alone_bit_for_bit(ladder):
 
 
 def test_one_rung_for_all_is_one_part(ladder):
-    r = ladder.evaluate(NEAR, tol=1e-9, end="overlap", build=False)
+    r = ladder.with_end("overlap").evaluate(NEAR, tol=1e-9, build=False)
     assert r.method == "integrator" and r.methods == {"integrator": NEAR.size} and len(r.parts) == 1
     assert np.array_equal(r.bounds, np.full(NEAR.shape, r.error_bound))
 
@@ -59,7 +59,7 @@ def test_one_rung_for_all_is_one_part(ladder):
 def test_a_forced_method_answers_the_whole_array_or_refuses(ladder):
     om, _ = _mixed()
     with pytest.raises(ParameterError, match="method"):   # the law does not cover NEAR: no split
-        ladder.evaluate(om, tol=1e-9, end="overlap", build=False, method="overlap-law")
+        ladder.with_end("overlap").evaluate(om, tol=1e-9, build=False, method="overlap-law")
     r = ladder.evaluate(om, tol=1e-9, build=False, method="integrator")
     assert r.methods == {"integrator": om.size} and len(r.parts) == 1
 

@@ -31,9 +31,9 @@ def test_every_spelling_is_the_same_problem():
 
 def test_the_rule_travels_one_way():
     p = Problem.of("3/2", 1, end="overlap")
-    assert as_problem(p, "overlap") is p
-    with pytest.raises(ParameterError) as info:
-        as_problem(p, "force")
+    assert restitution.epsilon(problem=p, end="overlap", omega=1.0).end == "overlap"
+    with pytest.raises(ParameterError) as info:   # the public call's end must agree with the problem's
+        restitution.epsilon(problem=p, end="force", omega=1.0)
     assert info.value.field == "end"
     with pytest.raises(ParameterError):
         Problem("3/2", "force")     # numbers go through Problem.of

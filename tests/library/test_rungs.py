@@ -30,12 +30,12 @@ def test_a_rung_added_to_the_registry_is_quoted_and_chosen(tmp_path):
     lad.rung_names = (*lad.rung_names, "toy")
     r = lad.evaluate([0.3, 3.0], tol=1e-9, build=False)
     assert r.method == "toy" and np.all(r.eps == 1.0)
-    assert lad.evaluate([0.3], tol=1e-9, end="overlap", build=False).method == "toy"
+    assert lad.with_end("overlap").evaluate([0.3], tol=1e-9, build=False).method == "toy"
 
 
 def test_a_rung_that_does_not_serve_the_rule_is_listed_with_the_reason(tmp_path):
     lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
-    q = {c["method"]: c for c in lad.evaluate([0.3], tol=1e-6, end="overlap", build=False).candidates}
+    q = {c["method"]: c for c in lad.with_end("overlap").evaluate([0.3], tol=1e-6, build=False).candidates}
     assert not q["fitted-c"]["available"] and "force rule only" in q["fitted-c"]["reason"]
 
 
@@ -50,7 +50,38 @@ def test_the_reference_rung_quotes_what_collide_states_under_either_rule():
 
     for alpha, gamma, rule in (("1", "3/2", "force"), ("3/2", "1", "overlap")):
         req = Request(Problem(as_exponents(alpha, gamma), "overlap"), np.array([1.0]), 1e-9)
-        assert req.rule == rule
+        assert req.effective_end == rule
         quoted = Reference().bound(req, {})[0]
-        stated = collide((alpha, gamma), 1.0, rtol=reference_rtol(1e-9, req.ex, rule), end="overlap").error_bound
+        stated = collide(Problem.of(alpha, gamma, "overlap"), 1.0, rtol=reference_rtol(1e-9, Problem(req.ex, rule))).error_bound
         assert quoted == stated
+
+
+def test_an_integrating_rung_runs_at_the_setting_it_quoted(monkeypatch):
+    """The quote's Setting carries the rtol (digits) as a number, and evaluate reads it back: the
+    tolerance formulas are asked once, in bound, never again when the quote runs."""
+    from restitution.core.problem import Problem
+    from restitution.fast import rung as rung_module
+    from restitution.fast.rung import Request, Setting
+    from restitution.fast.rungs import highprec, integrator, overlap_integrator, reference
+
+    om = np.array([0.5])
+    cases = [(integrator.Integrator(), Problem.of("3/2", "1")),
+             (overlap_integrator.OverlapIntegrator(), Problem.of("3/2", "1", "overlap")),
+             (reference.Reference(), Problem.of("3/2", "1")),
+             (highprec.Highprec(), Problem.of("3/2", "1"))]
+    quotes = []
+    for rung, problem in cases:
+        q = rung.quote(Request(problem, om, 1e-8))
+        assert isinstance(q.setting, Setting) and (q.setting.rtol or q.setting.digits), rung.name
+        quotes.append(q)
+
+    def derived_again(*args, **kwargs):
+        raise AssertionError("a tolerance formula was asked again when the quote ran")
+
+    for module in (rung_module, integrator, overlap_integrator, reference, highprec):
+        for name in ("integrator_rtol", "reference_rtol", "highprec_digits"):
+            if hasattr(module, name):
+                monkeypatch.setattr(module, name, derived_again)
+    for q in quotes:
+        eps = q.run(om)
+        assert 0.0 < float(eps[0]) < 1.0, q.name

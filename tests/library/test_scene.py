@@ -16,6 +16,7 @@ import yaml
 from restitution.cli import main
 from restitution.core.errors import ParameterError
 from restitution.dem.contact import Contact
+from restitution.core.problem import Problem
 from restitution.dem.engines.lammps.contact import lammps_contact
 from restitution.dem.engines.lammps.scene import lammps_models
 from restitution.dem.engines.liggghts.contact import liggghts_contact
@@ -366,7 +367,7 @@ def test_near_sticking_small_eps_are_asked_to_an_absolute_accuracy_without_mpmat
     from restitution.dem.model_choice import EVAL_TOL, SMALL_EPS, scaled_eps
     model = next(r for r in lammps_models("hertz", "velocity"))
     om = 0.7400121553440137 * (1.0 + np.array([1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0, 10.0]))
-    truth = [float(highprec.reference_collision((model.alpha, model.gamma), float(w), digits=20, end="overlap").eps)
+    truth = [float(highprec.reference_collision(Problem.of(model.alpha, model.gamma, "overlap"), float(w), digits=20).eps)
              for w in om[[0, 2, 5]]]
 
     def no_mpmath(*args, **kwargs):

@@ -14,6 +14,8 @@ import pytest
 
 from restitution.audit.stability import DEFAULT_ALPHAS, DEFAULT_GAMMAS
 from restitution.cli import main
+from restitution.core.exponents import as_exponents
+from restitution.core.problem import Problem
 from restitution.core.collision import collide
 from restitution.core.errors import ParameterError
 from restitution.core.highprec import reference_collision
@@ -38,7 +40,7 @@ pytestmark = pytest.mark.slow
 
 @pytest.fixture(scope="module", params=PAIRS, ids=lambda p: f"a{p[0]}-g{p[1]}")
 def form(request):
-    return build_uniform(request.param, end="overlap")
+    return build_uniform(Problem(as_exponents(request.param), "overlap"))
 
 
 def test_fast_impacts_follow_the_creep_law(form):
@@ -56,7 +58,7 @@ def test_bound_is_at_most_1e_4_and_holds_on_fresh_points(form):
     assert form.bound_eps <= 1e-4 and form.bound_one_minus_eps <= 1e-4
     rng = np.random.default_rng(SEED)
     om = np.sort(10 ** rng.uniform(math.log10(LAW_BELOW), 8, 12))
-    runs = [collide((form.alpha, form.gamma), float(w), rtol=1e-12, end="overlap") for w in om]
+    runs = [collide(Problem.of(form.alpha, form.gamma, "overlap"), float(w), rtol=1e-12) for w in om]
     err = np.abs(form.eps(om) / np.array([r.eps for r in runs]) - 1)
     assert err.max() <= form.bound_eps, f"seed {SEED}: Omega={om[err.argmax()]:.6g} err {err.max():.3g}"
     el = om >= 1
@@ -69,7 +71,7 @@ def test_bound_holds_against_mpmath(form):
     reference under the overlap rule, 20 digits."""
     rng = np.random.default_rng(SEED + 1)
     for w in 10 ** rng.uniform(-1.5, 1.5, 2):
-        truth = float(reference_collision((form.alpha, form.gamma), float(w), digits=20, end="overlap").eps)
+        truth = float(reference_collision(Problem.of(form.alpha, form.gamma, "overlap"), float(w), digits=20).eps)
         assert abs(float(form.eps(w)) / truth - 1) <= form.bound_eps, f"seed {SEED}: Omega={w:.6g}"
 
 
@@ -78,7 +80,7 @@ def test_law_is_the_reference_below_law_below():
     Omega = 1e-4 and 1e-6 (a second each) agrees with C Omega^kv to 1e-11 (measured 6.5e-13)."""
     law = overlap_limit(("3/2", "1/2"))
     for w in (1e-4, 1e-6):
-        r = collide(("3/2", "1/2"), w, rtol=1e-12, end="overlap")
+        r = collide(Problem.of("3/2", "1/2", "overlap"), w, rtol=1e-12)
         assert abs(r.eps / float(law.eps(w)) - 1) < 1e-11
 
 
@@ -113,7 +115,7 @@ def test_serialised_form_round_trips_and_rejects_a_changed_constant(form):
                                              ("1", "3/2", "alpha < gamma")])
 def test_pairs_without_an_overlap_form_are_refused_with_the_reason(alpha, gamma, why):
     with pytest.raises(ParameterError, match=why):
-        skeleton((alpha, gamma), "overlap")
+        skeleton(Problem.of(alpha, gamma, "overlap"))
 
 
 def test_cli_refuses_the_closed_form_where_the_bodies_can_stick(capsys):
@@ -142,16 +144,16 @@ def test_a_tampered_overlap_form_is_never_used(tmp_path, change):
     rebuilt with building, and eps right again."""
     omega = np.geomspace(0.05, 20.0, 7)
     first = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
-    good = first.evaluate(omega, tol=None, method="closed-form", end="overlap").eps
+    good = first.with_end("overlap").evaluate(omega, tol=None, method="closed-form").eps
     (path,) = tmp_path.glob("uniform-overlap-*.json")
     _tamper(path, change)
     fresh = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
     with pytest.raises(ParameterError, match="method"):
-        fresh.evaluate(omega, tol=None, method="closed-form", end="overlap", build=False)
+        fresh.with_end("overlap").evaluate(omega, tol=None, method="closed-form", build=False)
     again = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
-    r = again.evaluate(omega, tol=None, method="closed-form", end="overlap")
+    r = again.with_end("overlap").evaluate(omega, tol=None, method="closed-form")
     np.testing.assert_allclose(r.eps, good, rtol=1e-12)
-    ref = np.array([collide(("3/2", "1"), float(w), rtol=1e-12, end="overlap").eps for w in omega])
+    ref = np.array([collide(Problem.of("3/2", "1", "overlap"), float(w), rtol=1e-12).eps for w in omega])
     assert np.max(np.abs(r.eps / ref - 1)) <= r.error_bound
 
 
@@ -162,10 +164,10 @@ ATLAS_PAIRS = [(a, g) for a in DEFAULT_ALPHAS for g in DEFAULT_GAMMAS
 @pytest.mark.parametrize("alpha,gamma", ATLAS_PAIRS)
 def test_every_atlas_pair_keeps_its_bound_on_fresh_points(alpha, gamma):
     """Every atlas pair with an overlap form: bound at most 1e-4, held at fresh points."""
-    form = build_uniform((alpha, gamma), end="overlap")
+    form = build_uniform(Problem.of(alpha, gamma, "overlap"))
     assert form.bound_eps <= 1e-4 and form.bound_one_minus_eps <= 1e-4
     om = np.sort(10 ** np.random.default_rng(SEED).uniform(math.log10(LAW_BELOW), 8, 6))
-    runs = [collide((alpha, gamma), float(w), rtol=1e-12, end="overlap") for w in om]
+    runs = [collide(Problem.of(alpha, gamma, "overlap"), float(w), rtol=1e-12) for w in om]
     assert np.max(np.abs(form.eps(om) / np.array([r.eps for r in runs]) - 1)) <= form.bound_eps, f"seed {SEED}"
 
 

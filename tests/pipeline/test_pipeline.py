@@ -386,6 +386,14 @@ def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
         assert all(not n.startswith("/") and ".." not in Path(n).parts for n in names), names
         assert "restitution.bbl" in names and not any(n.endswith(".bib") for n in names)
         tar.extractall(tmp_path / "arxiv", filter="data")
+    # every LAMMPS run behind the article's engine figure: its deck and its screen, with how to rerun
+    runs = sorted(p.relative_to(tree).as_posix() for p in (tree / "results/dem/lammps_runs").iterdir())
+    decks = [n for n in runs if n.endswith(".in")]
+    assert {n.split("/")[-1].split("_")[0] for n in decks} == {"force", "overlap"}
+    assert len(decks) == 3 * (len((tree / "results/dem/lammps_eps.csv").read_text().splitlines()) - 1)   # header
+    assert all(n[:-3] + ".out" in runs for n in decks) and "results/dem/lammps_runs/README.txt" in runs
+    assert set(runs) <= set(names), sorted(set(runs) - set(names))
+    assert "results/dem/lammps_runs/README.txt" in (tmp_path / "arxiv" / "README.txt").read_text()
     # what arXiv's processing does: pdflatex, no bibtex, nothing but the bundle, run again while the
     # log asks for it (a float moved by the resolved references can need a third pass; at most 5, as
     # latexmk); the PDF must then be ours, page for page

@@ -124,7 +124,7 @@ def test_bad_shard_numbers():
 # ------------------------------------------------------------------------------------ the checks
 def _record(omega, eps, **kw):
     rec = {"alpha": "3/2", "gamma": "1", "omega": omega, "eps": eps, "tau_b": 1.0, "x_b": 1.0, "tau_c": 2.0,
-           "x_c": 0.5, "end": "force", "status": "ok", "err_tight": math.nan, "worst_tight": "",
+           "x_c": 0.5, "ended_by": "force", "status": "ok", "err_tight": math.nan, "worst_tight": "",
            "err_ref": math.nan, "worst_ref": "", "err_exact": math.nan, "worst_exact": ""}
     rec.update(kw)
     return rec
@@ -136,12 +136,12 @@ def _record(omega, eps, **kw):
     ({"tau_c": 0.5}, "order"),
     ({"x_c": 2.0}, "order"),
     ({"x_c": 0.0}, "x_c"),
-    ({"end": "separation", "x_c": 0.0}, "end"),
+    ({"ended_by": "separation", "x_c": 0.0}, "ended_by"),
     ({"tau_b": math.nan}, "finite"),
     ({"x_c": math.inf}, "finite"),
     ({"status": "IntegrationError: solve_ivp failed"}, "finite"),
     ({"err_tight": 1e-6, "worst_tight": "tau_c"}, "tight"),
-    ({"err_ref": math.inf, "worst_ref": "end"}, "reference"),
+    ({"err_ref": math.inf, "worst_ref": "ended_by"}, "reference"),
     ({"err_exact": 2e-9, "worst_exact": "eps"}, "exact"),
 ])
 def test_each_invariant_is_checked(bad, check):
@@ -223,7 +223,7 @@ def test_coarse_atlas_holds_every_invariant(coarse):
     assert len(records) == 20 * 17
     # what the integrator's authors found: alpha > gamma ends by the force, alpha <= gamma by separation
     for r in records:
-        assert r["end"] == ("force" if Fraction(r["alpha"]) > Fraction(r["gamma"]) else "separation")
+        assert r["ended_by"] == ("force" if Fraction(r["alpha"]) > Fraction(r["gamma"]) else "separation")
 
 
 @pytest.mark.slow

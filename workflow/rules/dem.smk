@@ -16,13 +16,27 @@ DEM_FILES = [
 ]
 
 
+def lammps_run_files():
+    """Each LAMMPS run's deck (.in) and screen (.out), named for its end rule, impact speed and the
+    steps per contact time (dt = t_c / n: three steps per speed, extrapolated to dt = 0)."""
+    steps = config["dem"]["lammps_steps"]
+    return [f"results/dem/lammps_runs/{rule}_g{g:g}_n{steps * k}.{ext}" for rule in ("force", "overlap")
+            for g in config["dem"]["speeds"] for k in (1, 2, 4) for ext in ("in", "out")]
+
+
+LAMMPS_RUNS_README = "results/dem/lammps_runs/README.txt"
+
+
 rule dem_study:
-    """LAMMPS runs (three time steps each, extrapolated), the library's eps(v) for both rules, the
-    calibration table, the section's numbers and its figure."""
+    """LAMMPS runs (three time steps each, extrapolated) with each run's deck and screen, the library's
+    eps(v) for both rules, the calibration table, the section's numbers and its figure."""
     input:
         code=code("dem_study.py"),
     output:
         DEM_FILES,
+        # what LAMMPS was given and printed in every run behind lammps_eps.csv (the arXiv bundle's)
+        runs=lammps_run_files(),
+        readme=LAMMPS_RUNS_README,
     params:
         # the overlap_* settings belong to rule overlap_limit: a change there must not rerun LAMMPS
         dem={k: v for k, v in config["dem"].items() if not k.startswith("overlap_")},

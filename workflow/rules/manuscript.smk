@@ -116,6 +116,8 @@ rule arxiv:
         # table, the calibrated dampings and Feng's formula against the exact family
         data=["results/dem/lammps_eps.csv", "results/dem/typed_e.csv", "results/dem/calibration.csv",
               "results/paper/feng_calibration.csv"],
+        # and every LAMMPS run behind lammps_eps.csv, its deck and its screen, with how to rerun them
+        engine_runs=lammps_run_files() + [LAMMPS_RUNS_README],
         code=code("arxiv_bundle.py"),
     output:
         "results/paper/arxiv.tar.gz",

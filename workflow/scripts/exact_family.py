@@ -18,6 +18,7 @@ from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.core.collision import collide
 from restitution.core.dashpot import dashpot_collision
+from restitution.core.problem import Problem
 from restitution.core.collision import StickError
 
 start(snakemake)
@@ -34,7 +35,7 @@ for a, g in pairs:
         # under the overlap rule: just above the sticking threshold, then the grid above that
         grid = p.omegas if end == "force" else [threshold * p.above] + [w for w in p.omegas if w > threshold * p.above]
         for om in grid:
-            ref = collide((a, g), om, rtol=p.rtol, end=end)
+            ref = collide(Problem.of(a, g, end), om, rtol=p.rtol)
             exact = dashpot_collision(float(g + 1) * om, end=end)
             rows.append({"alpha": str(a), "gamma": str(g), "end": end, "omega": om, "eps_reference": ref.eps,
                          "eps_dashpot": exact.eps, "rel_dev": abs(ref.eps / exact.eps - 1.0)})
@@ -46,12 +47,12 @@ for a, g in pairs:
     threshold = 1.0 / (4.0 * float(g + 1))
     below = threshold * (1.0 - p.below)
     try:
-        collide((a, g), below, rtol=p.rtol, end="overlap")
+        collide(Problem.of(a, g, "overlap"), below, rtol=p.rtol)
         refused = False
     except StickError:          # the bodies provably stay together
         refused = True
     above = threshold * p.above
-    answered = collide((a, g), above, rtol=p.rtol, end="overlap").eps > 0
+    answered = collide(Problem.of(a, g, "overlap"), above, rtol=p.rtol).eps > 0
     stick.append(refused and answered)
 write_csv(snakemake.output.table, table)
 

@@ -21,6 +21,8 @@ from restitution_workflow.latex import fixed, frac_tex, sci
 from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.core.collision import collide
+from restitution.core.exponents import as_exponents
+from restitution.core.problem import Problem
 from restitution.core.exact_family import eps_bound, exact_eps
 
 start(snakemake)
@@ -46,8 +48,8 @@ for power in powers:
         row = {"p": str(power), "e": e, "phi_feng": phi, "omega": omega,
                "omega_dashpot": float(pair[1] + 1) * omega}
         for end in ("overlap", "force"):
-            eps = float(exact_eps(pair, omega, end=end))
-            ref = collide(pair, omega, rtol=p.rtol, end=end).eps
+            eps = float(exact_eps(Problem(as_exponents(pair), end), omega))
+            ref = collide(Problem(as_exponents(pair), end), omega, rtol=p.rtol).eps
             row[f"eps_{end}"] = eps
             row[f"bound_{end}"] = float(eps_bound(eps))
             row[f"rel_{end}"] = eps / e - 1.0

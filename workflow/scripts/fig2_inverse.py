@@ -64,7 +64,7 @@ top = ax.secondary_xaxis("top", functions=(lambda s: summary["tau_c"] - s / t_sc
 top.set_xlabel(r"forward scaled time $\tau = \tau_c - \tilde\tau\,\varepsilon^{-\gamma/(\gamma+1)}$")
 ax.text(0.02, 0.97, rf"inverse collision, $g = {summary['g']:g}$, $\tilde\Omega = {omega_t:.4f}$;" "\n"
         rf"each $\tilde x_n$ to $\tilde\tau^{{{p.max_power}}}$", transform=ax.transAxes, ha="left",
-        va="top", fontsize=8)
+        va="top", fontsize=8.5)   # >= 7 pt printed at 0.75 of the text width
 ax_err.set_ylim(1e-10, 10)
 ax_err.set_xlabel(r"inverse scaled time $\tilde\tau$ (measured from the end of contact)")
 ax_err.set_ylabel(r"$|\tilde x_{\rm series} - \tilde x_{\rm ref}|$" + ("\n" + r"(ref. from $\tilde x = 0$)" if has_zero else ""))

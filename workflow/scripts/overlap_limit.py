@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 from restitution_workflow.latex import esc, frac_tex, sci
 from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
+from restitution.core.problem import Problem
 
 from restitution.core.collision import collide
 from restitution.core.exponents import as_exponents
@@ -33,7 +34,7 @@ CURVE_RTOL = 1e-14
 @lru_cache(maxsize=None)
 def eps(a, g, om, rule):
     """One reference collision (each is needed by several of the numbers below)."""
-    return collide((a, g), om, end=rule, rtol=RTOL).eps
+    return collide(Problem.of(a, g, rule), om, rtol=RTOL).eps
 
 
 pairs = []
@@ -48,7 +49,7 @@ for a, g, label in pairs:
     law = lambda om: L.C * om ** L.k  # noqa: E731
     small = {om: eps(a, g, om, "overlap") / law(om) - 1.0 for om in P.check_omegas}
     hp_om = P.highprec_omega
-    hp = float(reference_collision((a, g), hp_om, digits=P.highprec_digits, end="overlap").eps) / law(hp_om) - 1.0
+    hp = float(reference_collision(Problem.of(a, g, "overlap"), hp_om, digits=P.highprec_digits).eps) / law(hp_om) - 1.0
     o1, o2 = min(P.check_omegas), max(P.check_omegas)
     slope = np.log(eps(a, g, o2, "overlap") / eps(a, g, o1, "overlap")) / np.log(o2 / o1)
     moderate = {om: eps(a, g, om, "overlap") / law(om) - 1.0 for om in P.moderate_omegas}
@@ -58,7 +59,7 @@ for a, g, label in pairs:
                  **{f"dev_{om:g}": v for om, v in moderate.items()},
                  **{f"ratio_{om:g}": v for om, v in ratio.items()}, "force_k": L.force_k, "decay": L.decay})
     om = np.logspace(np.log10(P.curve_omega[0]), np.log10(P.curve_omega[1]), P.curve_points)
-    eo, ef = reference_eps((a, g), om, CURVE_RTOL, "overlap"), reference_eps((a, g), om, CURVE_RTOL, "force")
+    eo, ef = reference_eps(Problem.of(a, g, "overlap"), om, CURVE_RTOL), reference_eps(Problem.of(a, g, "force"), om, CURVE_RTOL)
     curves += [{"alpha": a, "gamma": g, "omega": w, "eps_overlap": o, "eps_force": f, "law_overlap": law(w),
                 "law_force": L.force_k * w} for w, o, f in zip(om, eo, ef)]
 table = pd.DataFrame(rows)
@@ -127,10 +128,10 @@ for i, r in enumerate(rows):
     left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], color=colours[i % 7], lw=1.6, label=lab)
     left.loglog(c["omega"], c["law_overlap"] / c["law_force"], color=colours[i % 7], lw=0.9, ls="--")
     inv = np.asarray(P.decay_inverse_omegas, dtype=float)
-    d = np.abs(reference_eps((r["alpha"], r["gamma"]), 1.0 / inv, CURVE_RTOL, "overlap")
+    d = np.abs(reference_eps(Problem.of(r["alpha"], r["gamma"], "overlap"), 1.0 / inv, CURVE_RTOL)
                / (r["C"] * inv ** -float(Fraction(r["k"]))) - 1.0)
     # below its bound under this rule the integrator's own error shows (the plateau near 5e-13)
-    keep = d > integrator_bound(CURVE_RTOL, as_exponents(r["alpha"], r["gamma"]), "overlap")
+    keep = d > integrator_bound(CURVE_RTOL, Problem.of(r["alpha"], r["gamma"], "overlap"))
     right.semilogy(inv[keep], d[keep], "o-", color=colours[i % 7], ms=3.5, lw=1.0, label=lab)
 left.set_ylim(top=3.0)
 left.set_xlabel(r"$\Omega$")

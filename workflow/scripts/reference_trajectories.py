@@ -80,7 +80,7 @@ summary = {
     "x_b": hit.x_b,
     "tau_c": hit.tau_c,
     "x_c": hit.x_c,
-    "end": hit.ended_by,
+    "ended_by": hit.ended_by,
     "inverse": {
         "omega_tilde": omega_tilde,
         "x_tilde_c": hit.x_c * x_scale,

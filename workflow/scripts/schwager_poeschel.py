@@ -17,6 +17,7 @@ from restitution_workflow.latex import fixed, frac_tex, sci
 from restitution_workflow.pipeline import start, write_text
 
 from restitution.core.asymptotics import elastic_limit
+from restitution.core.problem import Problem
 from restitution.core.collision import collide
 from restitution.core.delayed_recovery import (END_COEFFICIENTS, INTERPOLANTS, S_POWER, end_of_contact_eps,
                                                overlap_damping_coefficients, schwager_poeschel_series)
@@ -35,7 +36,7 @@ overlap_check = max(abs(numeric[1] + limit.C1), abs(numeric[2] - limit.C2))
 
 
 def eps_force(omega, end="force"):
-    return collide(("3/2", "1/2"), float(omega), rtol=p.rtol, end=end).eps
+    return collide(Problem.of("3/2", "1/2", end), float(omega), rtol=p.rtol).eps
 
 
 # the end-of-contact relation between the two rules: remainder / delta^(15/2) at a few Omega
@@ -45,8 +46,7 @@ end_scaled = [abs(eps_force(w) - float(end_of_contact_eps(eps_force(w, "overlap"
 
 # the integrator's accuracy, measured once against the mpmath reference
 check_omega = p.check_omega
-check_dev = abs(eps_force(check_omega) - float(reference_collision(("3/2", "1/2"), check_omega, digits=25,
-                                                                     end="force").eps))
+check_dev = abs(eps_force(check_omega) - float(reference_collision(Problem.of("3/2", "1/2", "force"), check_omega, digits=25).eps))
 
 # %% the Pade form's Taylor coefficients: (1 + a s) / D(s), D = 1 + a s + b2 s^2 + b3 s^3 + b4 s^4
 c = MUELLER_POESCHEL_PADE

@@ -21,7 +21,7 @@ from restitution.audit import stability_checks as sc
 
 start(snakemake)
 spec = st.AtlasSpec.from_config(snakemake.params.spec)
-RECORD_COLUMNS = ["alpha", "gamma", "omega", "index", *st.QUANTITIES, "end", "status", "err_tight",
+RECORD_COLUMNS = ["alpha", "gamma", "omega", "index", *st.QUANTITIES, "ended_by", "status", "err_tight",
                   "worst_tight", "err_ref", "worst_ref", "tight_ref", "ref_estimate", "err_exact",
                   "worst_exact"]
 
@@ -54,7 +54,7 @@ if snakemake.rule == "stability_shard":
 # %%
 if snakemake.rule == "stability_atlas":
     frames = [pd.read_csv(f, keep_default_na=False, na_values=["", "nan", "NaN"],
-                          dtype={"alpha": str, "gamma": str, "end": str, "status": str,
+                          dtype={"alpha": str, "gamma": str, "ended_by": str, "status": str,
                                  "worst_tight": str, "worst_ref": str, "worst_exact": str})
               for f in snakemake.input.shards]
     atlas = pd.concat(frames, ignore_index=True)
@@ -67,7 +67,7 @@ if snakemake.rule == "stability_atlas":
     order = {pair: i for i, pair in enumerate(spec.pairs)}
     atlas["_pair"] = [order[(a, g)] for a, g in zip(atlas["alpha"], atlas["gamma"])]
     atlas = atlas.sort_values(["_pair", "index"]).drop(columns="_pair").reset_index(drop=True)
-    atlas = atlas.fillna({c: "" for c in ("end", "status", "worst_tight", "worst_ref", "worst_exact")})
+    atlas = atlas.fillna({c: "" for c in ("ended_by", "status", "worst_tight", "worst_ref", "worst_exact")})
     records = atlas.to_dict("records")
 
     accuracy = spec.stated_accuracy
@@ -102,7 +102,7 @@ if snakemake.rule == "stability_atlas":
              r"$\min x_c$ & tight & reference & exact & violated \\", r"\midrule"]
     for r in summary:
         lines.append(" & ".join([
-            ex(r["alpha"]), ex(r["gamma"]), r["end"], sci(r["eps_min"], 2), sci(r["one_minus_eps_min"], 2),
+            ex(r["alpha"]), ex(r["gamma"]), r["ended_by"], sci(r["eps_min"], 2), sci(r["one_minus_eps_min"], 2),
             sci(r["tau_c_max"], 3), sci(r["x_c_min"], 2),
             sci(r["max_err_tight"], 2), sci(r["max_err_ref"], 2), sci(r["max_err_exact"], 2),
             r["violated"] or "none",

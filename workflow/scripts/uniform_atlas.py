@@ -17,6 +17,7 @@ from restitution_workflow.latex import frac_tex, sci
 from restitution_workflow.pipeline import read_json, start, write_csv, write_json, write_text
 
 from restitution.core.errors import ParameterError
+from restitution.core.problem import Problem
 from restitution.core.uniform import skeleton
 
 start(snakemake)
@@ -25,7 +26,7 @@ start(snakemake)
 def no_form(alpha, gamma, end="force") -> str | None:
     """Why the pair has no uniform form under ``end``; None when it has one."""
     try:
-        skeleton((alpha, gamma), end)
+        skeleton(Problem.of(alpha, gamma, end))
     except ParameterError as why:
         return why.allowed
     return None
@@ -42,7 +43,7 @@ def build_shard():
             reason = no_form(alpha, gamma, end)
             if reason is None:
                 print(f"alpha={alpha}, gamma={gamma}, {end} rule", flush=True)
-                records.append({"available": True, "end": end, **build_uniform((alpha, gamma), end=end).as_dict()})
+                records.append({"available": True, "end": end, **build_uniform(Problem.of(alpha, gamma, end)).as_dict()})
             else:
                 records.append({"available": False, "reason": reason, "alpha": alpha, "gamma": gamma, "end": end})
     write_json(snakemake.output[0], records)
@@ -80,8 +81,8 @@ def row(alpha, gamma, records) -> dict:
 
 def latex(rows) -> str:
     lines = [r"\begin{tabular}{llllllll}", r"\toprule",
-             r"$\alpha$ & $\gamma$ & $(\sigma, m_0, m_1)$ & $n + 1$ & bound $\varepsilon$ & bound $1-\varepsilon$ & largest test error "
-             r"& overlap rule: $n + 1$, bounds \\",
+             r"$\alpha$ & $\gamma$ & $(\sigma, m_0, m_1)$ & $n + 1$ & $2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$ "
+             r"& largest test error & overlap rule: $n + 1$, $2\times$ max.\ errors \\",
              r"\midrule"]
     for r in rows:
         ab = f"{frac_tex(Fraction(r['alpha']))} & {frac_tex(Fraction(r['gamma']))}"

@@ -14,6 +14,7 @@ from restitution_workflow.pipeline import start, write_csv, write_json
 
 from restitution.core.errors import ParameterError
 from restitution.core.uniform import FORM_RANGE, skeleton
+from restitution.core.problem import Problem
 from restitution.fast.master import reference_eps
 from restitution.fast.uniform_build import LAW_BELOW, build_uniform
 
@@ -26,18 +27,18 @@ def form_and_errors(end: str, json_path: str, errors_path: str, lowest: float):
     """Build the form for ``end``, write it with its printed-digit check, and its errors against the
     compiled integrator on Omega in [lowest, FORM_RANGE[1]]; None (and the reason) where there is none."""
     try:
-        skeleton((ex["alpha"], ex["gamma"]), end)
+        skeleton(Problem.of(ex["alpha"], ex["gamma"], end))
     except ParameterError as why:   # no uniform form for this rule: the section says why
         write_json(json_path, {"available": False, "reason": why.allowed, **ex})
         write_csv(errors_path, pd.DataFrame(columns=["omega", "eps", "err_eps", "err_one_minus_eps"]))
         return None
-    form = build_uniform((ex["alpha"], ex["gamma"]), progress=print, end=end)
+    form = build_uniform(Problem.of(ex["alpha"], ex["gamma"], end), progress=print)
     om = np.geomspace(lowest, FORM_RANGE[1], 801)
     # what the manuscript prints (12 significant digits) must give the same eps to far below the bound
     printed = float(np.max(np.abs(form.rounded(PRINTED_DIGITS).eps(om) / form.eps(om) - 1)))
     write_json(json_path, {"available": True, **form.as_dict(), "formula": form.formula(),
                            "printed_digits": PRINTED_DIGITS, "printed_max_change": printed})
-    eps = reference_eps((ex["alpha"], ex["gamma"]), om, 1e-14, end)
+    eps = reference_eps(Problem.of(ex["alpha"], ex["gamma"], end), om, 1e-14)
     write_csv(errors_path, pd.DataFrame({
         "omega": om, "eps": eps, "err_eps": np.abs(form.eps(om) / eps - 1),
         "err_one_minus_eps": np.abs(form.one_minus_eps(om) / (1 - eps) - 1)}))

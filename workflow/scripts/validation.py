@@ -44,7 +44,7 @@ curve = pd.read_csv(snakemake.input.curve)
 omega = np.geomspace(p.grid["omega_min"], p.grid["omega_max"], p.grid["points"])
 res = collide_many(ex, omega, rtol=p.rtol)
 ref = res["eps"]
-known = pd.DataFrame({"omega": omega, "eps_reference": ref, "tau_c": res["tau_c"], "end": res["end"]})
+known = pd.DataFrame({"omega": omega, "eps_reference": ref, "tau_c": res["tau_c"], "ended_by": res["ended_by"]})
 checks = []
 
 

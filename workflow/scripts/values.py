@@ -106,7 +106,7 @@ V.add("TauBAtG", summary["tau_b"])
 V.add("XBAtG", summary["x_b"])
 V.add("TauCAtG", summary["tau_c"])
 V.add("XCAtG", summary["x_c"])
-V.add("EndAtG", summary["end"], kind="exact", note="force: contact ends where the force vanishes")
+V.add("EndAtG", summary["ended_by"], kind="exact", note="force: contact ends where the force vanishes")
 V.add("TimeBAtG", summary["tau_b"] * summary["time_scale"], note="t_b = B tau_b (physical)")
 V.add("XiBAtG", summary["x_b"] * summary["length_scale"], note="xi_b = A x_b (physical)")
 V.add("OmegaTildeAtG", summary["inverse"]["omega_tilde"])
@@ -145,7 +145,7 @@ V.add("EpsMin", float(curve["eps"].min()))
 V.add("EpsMax", float(curve["eps"].max()))
 V.add("OmegaTildeMin", float(curve["omega_tilde"].min()))
 V.add("OmegaTildeMax", float(curve["omega_tilde"].max()))
-V.add("ForceEnds", int((curve["end"] == "force").sum()), kind="exact",
+V.add("ForceEnds", int((curve["ended_by"] == "force").sum()), kind="exact",
       note="impact speeds whose contact ends where the force vanishes")
 
 # %% Accuracy of the reference integration (tolerance study; main variant)

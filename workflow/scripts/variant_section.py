@@ -140,8 +140,8 @@ form = read_json(snakemake.input.form)
 if form["available"]:
     out.append(rf"Its uniform approximation (\ref{{eq:uniform}}) has $b = {sci(form['b'], 12)}$, $c_3 = {sci(form['c3'], 12)}$, "
                rf"$(\sigma, m_0, m_1) = ({sci(form['sigma'], 4)}, {form['m0']}, {form['m1']})$ and the coefficients "
-               rf"$a_0, \dots, a_{{{len(form['a']) - 1}}}$ of \TabUniform{{}}; its relative error is at most "
-               rf"{sci(form['bound_eps'], 2)} in $\varepsilon$ for $\Omega$ from {sci(form['omega_range'][0], 1)} to "
+               rf"$a_0, \dots, a_{{{len(form['a']) - 1}}}$ of \TabUniform{{}}; twice the largest relative error "
+               rf"measured on points not used in the fit is {sci(form['bound_eps'], 2)} in $\varepsilon$ for $\Omega$ from {sci(form['omega_range'][0], 1)} to "
                rf"{sci(form['omega_range'][1], 1)} and {sci(form['bound_one_minus_eps'], 2)} in $1 - \varepsilon$ for "
                rf"$\Omega \geq 1$.")
 else:

@@ -7,7 +7,7 @@ For every (alpha, gamma) of a grid and every Omega of a log-spaced grid (1e-8 to
 * ``eps_range``   0 < eps < 1;
 * ``order``       0 < tau_b < tau_c, 0 <= x_c < x_b;
 * ``x_c``         x_c > 0 where contact ends by the force;
-* ``end``         contact ends by the force when alpha > gamma and by separation when alpha <= gamma
+* ``ended_by``    contact ends by the force when alpha > gamma and by separation when alpha <= gamma
                   (for alpha = gamma the force Omega + x' never vanishes while x > 0; for alpha < gamma
                   it stays positive, see restitution.core.collision);
 * ``monotone``    eps increases with Omega: a step down by more than twice the stated accuracy is a
@@ -55,7 +55,7 @@ DEFAULT_GAMMAS = ("0", "1/2", "1", "3/2")
 #: Quantities compared between runs (x_c only where contact ends by the force: it is 0 otherwise).
 QUANTITIES = ("eps", "tau_b", "x_b", "tau_c", "x_c")
 #: The invariants, in the order they are reported.
-CHECKS = ("finite", "eps_range", "order", "x_c", "end", "monotone", "tight", "reference", "exact")
+CHECKS = ("finite", "eps_range", "order", "x_c", "ended_by", "monotone", "tight", "reference", "exact")
 #: Largest Omega range the atlas accepts (collide itself takes any finite Omega > 0). Measured at
 #: rtol 1e-10 beyond the default 1e-8..1e8: for alpha <= gamma, 1 - eps falls below the absolute
 #: accuracy of eps from Omega ~ 3e10 on and eps comes out > 1 (e.g. 1 + 5.9e-11 for alpha = gamma = 1
@@ -316,7 +316,7 @@ def _exact(alpha: Fraction, gamma: Fraction, omega: float) -> dict | None:
 def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -> dict:
     """Integrate one atlas point (and its comparisons); a failure of the integrator is recorded.
 
-    Returns a flat record: alpha, gamma, omega, the five quantities, end, status ("ok" or the
+    Returns a flat record: alpha, gamma, omega, the five quantities, ended_by, status ("ok" or the
     exception's one-line message), and the comparisons err_tight / worst_tight (atlas run against
     tight_rtol), err_ref / worst_ref (against the mpmath reference), tight_ref (tight run against the
     reference), ref_estimate (the reference's own error estimate), err_exact / worst_exact (against a
@@ -328,7 +328,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
     ex = as_exponents(point.alpha, point.gamma)
     rec = {"alpha": str(ex.alpha), "gamma": str(ex.gamma), "omega": point.omega, "index": point.index}
     rec.update({q: math.nan for q in QUANTITIES})
-    rec.update(end="", status="ok", err_tight=math.nan, worst_tight="", err_ref=math.nan, worst_ref="",
+    rec.update(ended_by="", status="ok", err_tight=math.nan, worst_tight="", err_ref=math.nan, worst_ref="",
                tight_ref=math.nan, ref_estimate=math.nan, err_exact=math.nan, worst_exact="")
     clock = _Clock(timings)
     try:
@@ -338,7 +338,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
         rec["status"] = f"{type(err).__name__}: {err}".replace("\n", " ")
         return rec
     got = _values(hit)
-    rec.update(got, end=hit.ended_by)
+    rec.update(got, ended_by=hit.ended_by)
     with_xc = hit.ended_by == "force"
 
     tight = None
@@ -361,7 +361,7 @@ def run_point(point: AtlasPoint, spec: AtlasSpec, timings: dict | None = None) -
             both_force = with_xc and ref.ended_by == "force"
             rec["err_ref"], rec["worst_ref"] = _worst(got, truth, both_force)
             if ref.ended_by != hit.ended_by:
-                rec["err_ref"], rec["worst_ref"] = math.inf, "end"
+                rec["err_ref"], rec["worst_ref"] = math.inf, "ended_by"
             rec["ref_estimate"] = float(ref.error_estimate)
             if tight is not None:
                 rec["tight_ref"] = _worst(tight, truth, both_force)[0]

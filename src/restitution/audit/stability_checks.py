@@ -94,10 +94,10 @@ def check_invariants(records: Iterable[dict], accuracy) -> tuple[list[Violation]
                 bad("order", vals["tau_b"], vals["tau_c"], f"tau_b = {vals['tau_b']!r}, tau_c = {vals['tau_c']!r}")
             if not 0.0 <= vals["x_c"] < vals["x_b"]:
                 bad("order", vals["x_c"], vals["x_b"], f"x_c = {vals['x_c']!r}, x_b = {vals['x_b']!r}")
-            if r["end"] == "force" and not vals["x_c"] > 0.0:
+            if r["ended_by"] == "force" and not vals["x_c"] > 0.0:
                 bad("x_c", vals["x_c"], 0.0, f"force end with x_c = {vals['x_c']!r}")
-            if r["end"] != expected_end:
-                bad("end", math.nan, math.nan, f"ended by {r['end']}, expected {expected_end}")
+            if r["ended_by"] != expected_end:
+                bad("ended_by", math.nan, math.nan, f"ended by {r['ended_by']}, expected {expected_end}")
             if prev is not None:
                 step = eps - prev
                 allowance = 2.0 * pair_accuracy * max(eps, prev)
@@ -132,12 +132,12 @@ def summarize(records: Iterable[dict], accuracy) -> list[dict]:
     rows = []
     for (a, g), rs in _by_pair(records).items():
         ok = [r for r in rs if str(r.get("status", "ok")) in ("ok", "", "nan")]
-        ends = sorted({r["end"] for r in ok})
+        ends = sorted({r["ended_by"] for r in ok})
         eps = [float(r["eps"]) for r in ok]
-        xc = [float(r["x_c"]) for r in ok if r["end"] == "force"]
+        xc = [float(r["x_c"]) for r in ok if r["ended_by"] == "force"]
         row = {
             "alpha": a, "gamma": g, "accuracy": _accuracy(accuracy, a, g), "points": len(rs), "failed": len(rs) - len(ok),
-            "end": "/".join(ends),
+            "ended_by": "/".join(ends),
             "eps_min": min(eps) if eps else math.nan, "eps_max": max(eps) if eps else math.nan,
             "one_minus_eps_min": 1.0 - max(eps) if eps else math.nan,
             "tau_c_max": max((float(r["tau_c"]) for r in ok), default=math.nan),

@@ -188,10 +188,10 @@ def run_deck(args, out) -> None:
     rows = []
     for k, stage in enumerate(stages, 1):
         head = _stage_head(stage, k, len(stages))
-        rows += [(p, f"types {p['types'][0]} {p['types'][1]}", "R1 + R2", "the spheres through each other",
+        rows += [(p, f"types {p['types'][0]} {p['types'][1]}{_sized(p)}", "R1 + R2", "the spheres through each other",
                   "the spheres together", head) for p in stage["pairs"]]
-        rows += [(w, f"type {w['types'][0]} on wall {w['wall']}", "the radius", "the sphere through the wall",
-                  "the sphere on the wall", head) for w in stage["walls"]]
+        rows += [(w, f"type {w['types'][0]} on wall {w['wall']}{_sized(w)}", "the radius",
+                  "the sphere through the wall", "the sphere on the wall", head) for w in stage["walls"]]
     for p, name, reach, pushed, _, head in rows:   # no eps there: said on stderr too, where a --json reader looks
         through = [g for g, t in zip(p["speeds"], p["passes_through"]) if t]
         if through:
@@ -199,13 +199,27 @@ def run_deck(args, out) -> None:
             print(f"restitution deck: {name}{where}: the engine pushes {pushed} from g = {min(through):.4g} on (the "
                   f"largest overlap reaches {reach}): no eps there", file=sys.stderr)
     for p, name, _, _, _, head in rows:
-        few = [(g, n, e, d) for g, n, e, d in zip(p["speeds"], p.get("steps_per_contact") or [], p["eps"],
-                                                   p.get("eps_at_dt") or []) if d is not None]
+        where = f" ({head.removeprefix('# ')})" if head else ""
+        for fix in p.get("beside") or []:
+            line = f"{fix['file']} line {fix['line']}" if fix["file"] else f"line {fix['line']}"
+            sized = [(g, e, own) for g, e, own in zip(p["speeds"], fix["eps_engine"] or [], p["eps"])
+                     if e is not None and own is not None]
+            size = (": " + ", ".join(f"{e:.6g} at g = {g:.4g} (the contact's own {own:.6g})" for g, e, own in sized)
+                    if sized else "")
+            print(f"restitution deck: {name}{where}: {line} fix {fix['style']} ({fix['fix']}): {fix['what']}, which "
+                  f"changes the eps the engine measures{size}" + (f"; {fix['why']}" if fix["why"] else ""),
+                  file=sys.stderr)
+    for p, name, _, _, _, head in rows:
+        few = [(g, n, e, d, w) for g, n, e, d, w in zip(p["speeds"], p.get("steps_per_contact") or [], p["eps"],
+                                                         p.get("eps_at_dt") or [], p.get("dt_within_tol") or [])
+               if w is not None]
         if few:
             where = f" ({head.removeprefix('# ')})" if head else ""
             print(f"restitution deck: {name}{where}: at the deck's time step {p['dt']:.4g} a contact lasts "
-                  + ", ".join(f"{n:.3g} steps at g = {g:.4g} (eps there {d:.6f}, dt -> 0: {e:.6f})"
-                              for g, n, e, d in few), file=sys.stderr)
+                  + ", ".join(f"{n:.3g} steps at g = {g:.4g} (" + (f"eps there {d:.6f}, " if d is not None else
+                                                                   "too few to resolve it, ")
+                              + f"dt -> 0: {e:.6f}; dt <= {w:.3g} keeps eps within {p['dt_tol']:g})"
+                              for g, n, e, d, w in few), file=sys.stderr)
     if args.json:
         write_json(res, out)
         return
@@ -218,15 +232,27 @@ def run_deck(args, out) -> None:
             shown = head
         typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
         out.write(f"{name}: {p['model']} ({typed}), end rule {p['end']}\n")
-        for g, e, stick, through in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"]):
+        steps = p.get("steps_per_contact") or [None] * len(p["speeds"])
+        for g, e, stick, through, n in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"], steps):
             out.write(f"  g {g:<12.6g} " + (
                 f"passes through: the largest overlap reaches {reach} = {p['overlap_limit']:.4g}, the engine "
                 f"pushes {pushed} (no eps)\n" if through else
-                f"sticks: the attractive phase keeps {kept} (eps 0)\n" if stick else f"eps {e:.10f}\n"))
+                f"sticks: the attractive phase keeps {kept} (eps 0)\n" if stick else f"eps {e:.10f}" + (
+                    f"  ({n:.3g} steps per contact at dt {p['dt']:.4g})" if n is not None else "") + "\n"))
         if p["exact_line"]:
             t, w = p["types"][0], p.get("wall_type")
             shared = f" (entry {t} {w}: types {min(t, w)} {max(t, w)} get eps = e from it too)" if w else ""
             out.write(f"  for eps = e exactly{shared}: {p['exact_line']}\n")
+
+
+def _sized(row: dict) -> str:
+    """Where a type has several sizes: which end of the pair's eps range the row is, at which spheres."""
+    if "sizes" not in row:
+        return ""
+    at = " and ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in row["at"])
+    if row["sizes"] == "any":
+        return f" (several sizes; eps does not depend on size: {at} gives the same)"
+    return f" ({row['sizes']} over the sizes present, at {at})"
 
 
 def _run_materials(engine, args, text: str, speeds: list, read_file, out) -> None:

@@ -242,7 +242,39 @@ def inner_constant(problem, *, y_start: float | None = None) -> float:
 
 
 def viscous_limit(problem) -> ViscousLimit:
-    """The small-Omega expansion for these exponents (see the module docstring)."""
+    """The small-Omega expansion for these exponents (see the module docstring).
+
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The exponents (the small-Omega behaviour does not depend on the end rule where the rules
+        coincide; the overlap rule's own law is :func:`restitution.core.overlap_limit.overlap_limit`).
+
+    Returns
+    -------
+    ViscousLimit
+        Its ``kind`` ("force", "closed" or "inner"), the leading constant ``k`` and power, the
+        first correction, and ``eps(omega, order)``.
+
+    Raises
+    ------
+    ParameterError
+        For exponents out of range.
+
+    See Also
+    --------
+    elastic_limit : The large-Omega expansion.
+
+    Examples
+    --------
+    >>> from restitution.core.collision import collide
+    >>> v = viscous_limit(("3/2", 1))
+    >>> v.kind, round(v.k, 6)                       # eps ~ 2^(1/4) Omega as Omega -> 0
+    ('force', 1.189207)
+    >>> ref = collide(("3/2", 1), 1e-6).eps          # the reference integrator, a second method
+    >>> abs(float(v.eps(1e-6)) / ref - 1) < 1e-9
+    True
+    """
     ex = as_exponents(problem)
     a, g = ex.alpha, ex.gamma
     if a == g:
@@ -308,6 +340,25 @@ def equal_exponents_eps(omega) -> np.ndarray:
 
     Newton in u from u = 2/Omega (elastic side) or 1/Omega (viscous side); converges to rounding
     in a few iterations (tested against the integrators).
+
+    Parameters
+    ----------
+    omega : float or array_like
+        Omega > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        eps, shaped as ``omega``, to rounding.
+
+    Examples
+    --------
+    >>> from restitution.core.collision import collide
+    >>> e = equal_exponents_eps([0.5, 2.0])
+    >>> e.round(8)
+    array([0.41071969, 0.74843493])
+    >>> abs(float(e[0]) / collide((1, 1), 0.5).eps - 1) < 1e-10     # the reference integrator
+    True
     """
     om = np.asarray(omega, dtype=float)
     flat = om.ravel()
@@ -370,6 +421,32 @@ class ElasticLimit:
 
 
 def elastic_limit(problem) -> ElasticLimit:
+    """The large-Omega expansion eps = 1 - C1 delta + C2 delta^2 + E delta^end_power, delta = Omega^-A.
+
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The exponents (an end rule is not read: the end term E is the force rule's).
+
+    Returns
+    -------
+    ElasticLimit
+        A = (gamma+1)/(alpha+1), the constants C1, C2, E and the power of the end term, and
+        ``eps(omega, order)``.
+
+    See Also
+    --------
+    viscous_limit : The small-Omega expansion.
+
+    Examples
+    --------
+    >>> import restitution
+    >>> e = elastic_limit(("3/2", 1))
+    >>> e.A
+    0.8
+    >>> abs(float(e.eps(1e6)) / restitution.collide("3/2", 1, 1e6).eps - 1) < 1e-9   # the reference integrator
+    True
+    """
     ex = as_exponents(problem)
     a, g = float(ex.alpha), float(ex.gamma)
     A = (g + 1.0) / (a + 1.0)

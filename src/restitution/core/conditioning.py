@@ -87,7 +87,28 @@ def plain_factor_floor(problem, factor: float = ACCURACY_FACTOR,
 
 
 def plain_accuracy(problem, rtol: float) -> float:
-    """collide's stated relative accuracy at ``rtol`` before conditioning."""
+    """collide's stated relative accuracy at ``rtol`` before conditioning.
+
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The exponents and end rule (plain exponents: the force rule).
+    rtol : float
+        The integration's relative tolerance.
+
+    Returns
+    -------
+    float
+        factor x rtol + floor (:func:`plain_factor_floor`).
+
+    Examples
+    --------
+    >>> from restitution.core.problem import Problem
+    >>> plain_accuracy(Problem.of("3/2", 1), 1e-12)     # 10 rtol + 1e-13
+    1.01e-11
+    >>> plain_accuracy(Problem.of("38/5", 7), 1e-12) > 1.01e-11     # large exponents state more
+    True
+    """
     factor, floor = plain_factor_floor(problem)
     return factor * rtol + floor
 
@@ -96,7 +117,28 @@ def conditioning(problem, eps, omega) -> np.ndarray:
     """The factor by which a double-precision integration's relative error in eps grows under the
     overlap rule near a sticking boundary (STICK_CONDITION) and near the elastic limit
     (ELASTIC_START); 1 elsewhere. It depends on the answer, so a bound stated with it is known
-    after the evaluation (fast.ladder checks it then; collide states it)."""
+    after the evaluation (fast.ladder checks it then; collide states it).
+
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The exponents and end rule (plain exponents: the force rule, where the factor is 1).
+    eps, omega : array_like
+        The answers and their Omegas.
+
+    Returns
+    -------
+    numpy.ndarray
+        The factor at each point, >= 1.
+
+    Examples
+    --------
+    >>> from restitution.core.problem import Problem
+    >>> conditioning(Problem.of(1, 0), [1e-20], [0.2512])
+    array([1.])
+    >>> float(conditioning(Problem.of(1, 0, "overlap"), [1e-20], [0.2512])[0]) > 1.0   # near sticking
+    True
+    """
     problem = as_problem(problem)
     e = np.maximum(np.asarray(eps, dtype=float), TINY)
     if problem.effective_end != "overlap":

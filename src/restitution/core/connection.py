@@ -50,7 +50,7 @@ def exact_omega_tilde(problem, omegas, *, rtol: float = 1e-12) -> dict:
     eps = res["eps"]
     return {"omega": omegas, "omega_tilde": rebound_omega(ex, omegas, eps), "eps": eps, "x_c": res["x_c"],
             "x_tilde_c": rebound_start(ex, res["x_c"], eps), "tau_b": res["tau_b"],
-            "x_b": res["x_b"], "tau_c": res["tau_c"], "end": res["end"]}
+            "x_b": res["x_b"], "tau_c": res["tau_c"], "ended_by": res["ended_by"]}
 
 
 @dataclass(frozen=True)

@@ -32,10 +32,11 @@ tau_b and tau_c without cancellation:
 from __future__ import annotations
 
 import math
-from fractions import Fraction
+from .exponents import Exponents
 
 import numpy as np
 
+from .problem import Problem
 from .results import Collision, end_rule
 from .errors import ParameterError, require_positive_finite
 
@@ -104,8 +105,8 @@ def dashpot_collision(omega, end: str = "force", *, excess: float | None = None)
     eps = math.exp(-0.5 * tau_c)
     if rule == "force":
         x_c, how = eps / omega, "force"
-    return Collision(Fraction(1), Fraction(0), omega, "forward", eps, tau_b, x_b, tau_c, x_c,
-                     how, 0.0, None, -math.expm1(-0.5 * tau_c), rule)
+    return Collision(Problem(Exponents.parse(1, 0), rule), omega, "forward", eps, tau_b, x_b, tau_c, x_c,
+                     how, 0.0, None, -math.expm1(-0.5 * tau_c))
 
 
 def dashpot_trajectory(tau, omega) -> tuple[np.ndarray, np.ndarray]:

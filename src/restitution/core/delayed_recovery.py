@@ -133,7 +133,7 @@ def overlap_damping_coefficients(order: int = 7, *, half_width: float = 0.2, nod
     Raises
     ------
     ParameterError
-        If an argument is out of range.
+        If ``order``, ``half_width`` or ``nodes`` is outside the ranges above.
 
     Examples
     --------

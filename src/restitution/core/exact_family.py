@@ -54,8 +54,8 @@ from .sticking import StickError, stick_bound, stick_reason
 from .dashpot import contact_times, dashpot_collision
 from .errors import ParameterError, require_positive_finite
 from .exponents import Exponents, as_exponents
-from .results import Collision, end_rule
-from .problem import problem_end
+from .results import Collision
+from .problem import Problem, as_problem
 
 __all__ = ["in_family", "sticking_threshold", "exact_collision", "exact_eps", "eps_bound", "EPS_ULPS",
            "LOSS_ULPS", "TIME_RTOL"]
@@ -96,8 +96,7 @@ def in_family(problem) -> bool:
     return ex.alpha == 2 * ex.gamma + 1
 
 
-def _family(problem) -> Exponents:
-    ex = as_exponents(problem)
+def _family(ex: Exponents) -> Exponents:
     if ex.alpha != 2 * ex.gamma + 1:
         raise ParameterError("alpha", str(ex.alpha), f"must be 2 gamma + 1 = {2 * ex.gamma + 1} for the exact "
                                                      "family (restitution.core.exact_family)")
@@ -133,7 +132,7 @@ def sticking_threshold(problem) -> Fraction:
     >>> sticking_threshold((1, 0))
     Fraction(1, 4)
     """
-    ex = _family(problem)
+    ex = _family(as_exponents(problem))
     return Fraction(1, 4) / (ex.gamma + 1)
 
 
@@ -184,18 +183,16 @@ def eps_bound(eps) -> np.ndarray:
     return np.array([_eps_bound(float(x)) for x in e.ravel()]).reshape(e.shape)
 
 
-def exact_eps(problem, omega, end: str | None = None) -> np.ndarray:
+def exact_eps(problem: Problem, omega) -> np.ndarray:
     """eps of the family alpha = 2 gamma + 1 at each Omega, from the dashpot at (gamma+1) Omega.
 
     Parameters
     ----------
-    problem
-        A Problem (its end rule applies), an Exponents or an (alpha, gamma) pair, with
-        alpha = 2 gamma + 1.
+    problem : Problem
+        The exponents, with alpha = 2 gamma + 1, and the end-of-contact rule
+        (restitution.core.results.END_RULES).
     omega : float or array_like
         Omega > 0, finite.
-    end : {"force", "overlap"}
-        The end-of-contact rule (restitution.core.results.END_RULES).
 
     Returns
     -------
@@ -214,15 +211,17 @@ def exact_eps(problem, omega, end: str | None = None) -> np.ndarray:
     Examples
     --------
     >>> from restitution.core.dashpot import dashpot_collision
-    >>> e = exact_eps(("2", "1/2"), [0.3, 2.0])
+    >>> from restitution.core.problem import Problem
+    >>> e = exact_eps(Problem.of("2", "1/2"), [0.3, 2.0])
     >>> bool(e[1] == dashpot_collision(3.0).eps)
     True
-    >>> float(exact_eps(("3/2", "1/4"), 0.3, end="overlap")) < float(exact_eps(("3/2", "1/4"), 0.3))
+    >>> family = Problem.of("3/2", "1/4")
+    >>> float(exact_eps(family.with_end("overlap"), 0.3)) < float(exact_eps(family, 0.3))
     True
     """
-    end = problem_end(problem, end)   # a Problem brings its own rule
-    ex = _family(problem)
-    rule = end_rule(end)
+    problem = as_problem(problem)
+    ex = _family(problem.ex)
+    rule = problem.end
     om = np.asarray(omega, dtype=float)
     # the dashpot's contact time directly (exact_collision's eps bit for bit, without its dataclass)
     out = [math.exp(-0.5 * _dashpot_tau_c(ex, require_positive_finite("omega", float(w)), rule)) for w in om.ravel()]
@@ -247,7 +246,7 @@ def _dashpot_tau_c(ex: Exponents, omega: float, rule: str) -> float:
     return t_c
 
 
-def exact_collision(problem, omega, end: str | None = None, *, times: bool = True) -> Collision:
+def exact_collision(problem: Problem, omega, *, times: bool = True) -> Collision:
     """The forward collision of the family alpha = 2 gamma + 1 in closed form (tau by quadrature).
 
     eps and 1 - eps (no cancellation) are the dashpot's at (gamma+1) Omega; x_b and x_c its S_b and
@@ -256,13 +255,11 @@ def exact_collision(problem, omega, end: str | None = None, *, times: bool = Tru
 
     Parameters
     ----------
-    problem
-        A Problem (its end rule applies), an Exponents or an (alpha, gamma) pair, with
-        alpha = 2 gamma + 1 (any rational gamma >= 0 the library accepts).
+    problem : Problem
+        The exponents, with alpha = 2 gamma + 1 (any rational gamma >= 0 the library accepts),
+        and the end-of-contact rule.
     omega : float
         Omega > 0, finite (no range limit: nothing is integrated in time).
-    end : {"force", "overlap"}
-        The end-of-contact rule.
     times : bool
         False skips the two quadratures (tau_b and tau_c are then NaN): eps alone costs microseconds.
 
@@ -285,25 +282,27 @@ def exact_collision(problem, omega, end: str | None = None, *, times: bool = Tru
 
     Examples
     --------
-    >>> c = exact_collision(("3/2", "1/4"), 0.7)
+    >>> from restitution.core.problem import Problem
+    >>> family = Problem.of("3/2", "1/4")
+    >>> c = exact_collision(family, 0.7)
     >>> round(c.eps, 12), round(c.tau_c, 10), c.ended_by
     (0.279827939466, 2.972394226, 'force')
-    >>> exact_collision(("3/2", "1/4"), 0.7, end="overlap").ended_by
+    >>> exact_collision(family.with_end("overlap"), 0.7).ended_by
     'separation'
-    >>> exact_collision(("3/2", "1/4"), 0.2, end="overlap")  # doctest: +ELLIPSIS
+    >>> exact_collision(family.with_end("overlap"), 0.2)  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
     restitution.core.sticking.StickError: omega = 0.2: under the overlap rule contact never ends here: ...
     """
-    end = problem_end(problem, end)   # a Problem brings its own rule
-    ex = _family(problem)
+    problem = as_problem(problem)
+    ex = _family(problem.ex)
     omega = require_positive_finite("omega", omega)
-    rule = end_rule(end)
+    rule = problem.end
     _dashpot_tau_c(ex, omega, rule)     # refuses a sticking or an eps below doubles first
     wp, z = _scaled(ex, omega, rule)
     d = dashpot_collision(wp, rule, excess=z)
     k = float(ex.gamma + 1)
-    fields = dict(alpha=ex.alpha, gamma=ex.gamma, omega=omega, error_bound=_eps_bound(d.eps),
+    fields = dict(problem=problem, omega=omega, error_bound=_eps_bound(d.eps),
                   one_minus_eps_bound=LOSS_ULPS * _U)
     if ex.gamma == 0:
         return replace(d, **fields)

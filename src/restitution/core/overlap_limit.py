@@ -165,7 +165,34 @@ class OverlapLimit:
 
 def overlap_limit(problem) -> OverlapLimit:
     """The overlap rule's small-Omega law for gamma <= alpha < 2 gamma + 1 (alpha < gamma: the rules coincide,
-    use asymptotics.viscous_limit)."""
+    use asymptotics.viscous_limit).
+
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The exponents, gamma <= alpha < 2 gamma + 1.
+
+    Returns
+    -------
+    OverlapLimit
+        eps ~ C Omega^k as Omega -> 0: ``C`` (with its error ``C_error``), ``k`` and ``eps(omega)``.
+
+    Raises
+    ------
+    ParameterError
+        Outside gamma <= alpha < 2 gamma + 1.
+
+    Examples
+    --------
+    >>> from restitution.core.collision import collide
+    >>> from restitution.core.problem import Problem
+    >>> lim = overlap_limit(("3/2", "1/2"))
+    >>> lim.k, round(lim.C, 6)                        # eps ~ C Omega^3
+    (3.0, 5.158382)
+    >>> ref = collide(Problem.of("3/2", "1/2", "overlap"), 1e-2).eps   # the reference integrator
+    >>> abs(float(lim.eps(1e-2)) / ref - 1) < 0.05    # the law's leading term, 1 % off at 1e-2
+    True
+    """
     ex = as_exponents(problem)
     a, g = ex.alpha, ex.gamma
     if not g <= a < 2 * g + 1:

@@ -16,7 +16,7 @@ from .errors import ParameterError
 from .exponents import Exponents, as_exponents, read_through
 from .results import end_rule
 
-__all__ = ["Problem", "as_problem", "problem_end"]
+__all__ = ["Problem", "as_problem"]
 
 
 @dataclass(frozen=True)
@@ -102,23 +102,32 @@ class Problem:
         return f"{self.ex}, end={self.end}"
 
 
-def as_problem(problem, end: str | None = None) -> Problem:
-    """A :class:`Problem` from a Problem, an Exponents or an ``(alpha, gamma)`` pair.
+def as_problem(problem) -> Problem:
+    """A :class:`Problem` from a Problem, an Exponents (the force rule) or an ``(alpha, gamma)`` pair.
 
-    ``end``, when given, is the rule for an Exponents or a pair (default "force"); given with a
-    Problem it must agree with the problem's own rule, so that a rule never travels two ways at
-    once and silently disagrees.
+    The public entry points call it once; below them every function takes the Problem itself.
+
+    Parameters
+    ----------
+    problem : Problem, Exponents or (alpha, gamma)
+        The problem, or exponents that stand for their force rule.
+
+    Returns
+    -------
+    Problem
+        ``problem`` itself when it is one.
+
+    Raises
+    ------
+    ParameterError
+        For exponents :meth:`Exponents.parse` refuses.
+
+    Examples
+    --------
+    >>> p = Problem.of("3/2", 1, end="overlap")
+    >>> as_problem(p) is p, as_problem(("3/2", 1))
+    (True, Problem(alpha=3/2, gamma=1, end='force'))
     """
     if isinstance(problem, Problem):
-        if end is not None and end_rule(end) != problem.end:
-            raise ParameterError("end", end, f"disagrees with the problem's own rule, {problem.end!r}")
         return problem
-    return Problem(as_exponents(problem), "force" if end is None else end)
-
-
-def problem_end(problem, end: str | None) -> str:
-    """The end rule of a call that takes a problem first and, for plain exponents, ``end=``:
-    the problem's own rule when it is a Problem (``end`` must then agree or be None), else ``end``
-    (default "force")."""
-    return as_problem(problem, end).end
-
+    return Problem(as_exponents(problem))

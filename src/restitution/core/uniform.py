@@ -54,7 +54,7 @@ from numpy.polynomial import chebyshev as cheb
 from . import asymptotics as asy
 from .errors import ParameterError
 from .exponents import as_exponents
-from .problem import problem_end
+from .problem import Problem, as_problem
 from .overlap_limit import overlap_limit
 
 __all__ = ["UniformForm", "Skeleton", "OverlapSkeleton", "skeleton", "fit_uniform", "SHAPES", "DEGREE",
@@ -139,11 +139,11 @@ def _no_form(ex, why: str) -> ParameterError:
     return ParameterError("alpha, gamma", f"{ex.alpha}, {ex.gamma}", why)
 
 
-def skeleton(problem, end: str | None = None) -> Skeleton | OverlapSkeleton:
-    """The fit-free part of the form for the problem's end rule (``end`` with plain exponents);
-    ParameterError (saying why) where there is no form."""
-    end = problem_end(problem, end)
-    ex = as_exponents(problem)
+def skeleton(problem: Problem) -> Skeleton | OverlapSkeleton:
+    """The fit-free part of the form for the problem's exponents and end rule; ParameterError
+    (saying why) where there is no form."""
+    problem = as_problem(problem)
+    ex, end = problem.ex, problem.end
     if not ex.alpha > ex.gamma:
         why = ("alpha = gamma has an exact closed form (restitution.core.asymptotics.equal_exponents_eps)"
                if ex.alpha == ex.gamma else
@@ -274,7 +274,7 @@ class UniformForm:
             raise ValueError("uniform form version mismatch")
         ex = as_exponents(d["alpha"], d["gamma"])
         end = d.get("end", "force")
-        sk = skeleton(ex, end)
+        sk = skeleton(Problem(ex, end))
         stored = type(sk)(*(float(d[f.name]) for f in fields(sk)))
         if stored != sk:   # the skeleton is derived, never read: a stored one must agree with it
             raise ValueError("stored skeleton constants differ from the derived ones")
@@ -323,13 +323,13 @@ def _shapes(sk, end: str) -> list[tuple[float, int, int, float]]:
     return [(s, m0, m1, 0.0) for s, m0, m1 in SHAPES(sk.A)]
 
 
-def fit_uniform(problem, omega, eps, one_minus_eps, train, select, end: str | None = None) -> UniformForm:
-    """Fit the form for ``end`` to reference values: coefficients on ``train`` (a boolean mask), the
+def fit_uniform(problem: Problem, omega, eps, one_minus_eps, train, select) -> UniformForm:
+    """Fit the form for the problem's end rule to reference values: coefficients on ``train`` (a boolean mask), the
     shape chosen by the largest relative error (eps, and 1 - eps for Omega >= 1) on ``select``. The
     returned form's bounds are still unset (they come from a third set of points)."""
-    end = problem_end(problem, end)   # a Problem brings its own rule
-    ex = as_exponents(problem)
-    sk = skeleton(ex, end)
+    problem = as_problem(problem)
+    ex, end = problem.ex, problem.end
+    sk = skeleton(problem)
     om = np.asarray(omega, dtype=float)
     eps = np.asarray(eps, dtype=float)
     ome = np.asarray(one_minus_eps, dtype=float)

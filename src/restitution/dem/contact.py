@@ -43,8 +43,7 @@ def contact_eps(problem, omega: float, rtol: float = 1e-12) -> float:
     problem = as_problem(problem)
     try:
         tol = reference_bound(rtol, problem.ex)   # the force rule's, as the reference states it
-        return float(epsilon(alpha=problem.alpha, gamma=problem.gamma, omega=[omega], tol=tol, end=problem.end,
-                             build=False, cached=False).eps[0])
+        return float(epsilon(problem, omega=[omega], tol=tol, build=False, cached=False).eps[0])
     except StickError:
         raise
     except ParameterError:
@@ -100,7 +99,7 @@ def _fast_tau_c(problem, omega: float, rtol: float) -> float:
     from ..fast.integrator import END_FAILED, collide_fast
     problem = as_problem(problem)
     ex = problem.ex
-    row = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, problem.effective_end == "overlap")[0]
+    row = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, problem.effective_end)[0]
     if row[5] == END_FAILED:
         raise ArithmeticError(f"compiled integrator failed at Omega = {omega:g} (alpha={ex.alpha}, gamma={ex.gamma})")
     return float(row[3])

@@ -35,6 +35,13 @@ of its own, audited (``run ... every`` with a command that changes the contact m
 refused). Particles that are not single spheres (LIGGGHTS multisphere clumps, superquadrics) are
 refused. A deck its engine stops on is refused with the engine's message and the line.
 
+A type whose atoms have several sizes (or that a ``fix pour`` fills
+from a range of diameters, sampled at nine points with its ends) gives each of its pairs two rows,
+the smallest and the largest eps at the middle speed with the spheres they are at (``sizes``,
+``at``), or one row where the sizes' eps agree to 1e-9 (a law whose eps does not depend on size).
+Under ``pair_style hybrid`` or ``hybrid/overlay`` the one granular sub-style is read from the
+pair_coeff lines naming it; a pair another sub-style covers is named, not audited.
+
 Files the deck names (``include``, ``jump``, ``read_data``) are read through a ``read_file``
 callable (the CLI resolves their names against the deck's directory, where LAMMPS is normally
 started); a data file's Atoms section gives a type its radius and density where every atom of that
@@ -58,14 +65,17 @@ from __future__ import annotations
 
 import re
 import tempfile
+from dataclasses import replace
 from pathlib import Path
 
 from ..core.collision import StickError
 from ..core.errors import ParameterError
+from .deck_beside import effects
 from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_executed
 from .deck_state import MAX_TYPES, Deck, DeckError, place, spheres
+from .engines.lammps.deck import DEFAULT_DT
 from .pair import Pair
-from .timestep import verlet_eps
+from .timestep import recommended_dt, verlet_eps
 
 __all__ = ["DeckError", "Deck", "audit_deck", "engine_of", "engine_read", "MAX_STAGES", "MAX_TYPES"]
 
@@ -105,25 +115,37 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             continue
         for mesh, contact_of, wall_type in surfaces:
             for t in types:
-                spheres(deck, t, t)          # one line where the type lacks a radius or a density
-                pair = Pair.wall(deck.radius[t], deck.density[t])
-                contact, typed, model, exact = contact_of(pair, t)
-                rows.append(_with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
-                                       "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
-                                       "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1, _dt(deck)))
+                if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
+                    continue
+                if t not in deck.sizes:
+                    spheres(deck, t, t)          # one line where the type lacks a radius or a density
+                sized = []
+                for r, rho in deck.sizes.get(t) or [(deck.radius[t], deck.density[t])]:
+                    pair = Pair.wall(r, rho)
+                    contact, typed, model, exact = contact_of(pair, t)
+                    row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
+                                     "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
+                                     "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1, _dt(deck))
+                    sized.append(({**row, "beside": effects(deck, row, contact, pair, (t,))},
+                                  ((r, rho),) if t in deck.sizes else ()))
+                rows += _ends(sized)
     return rows, unknown
 
 
 #: Fewer steps per contact than this at the deck's time step: the eps of the engine's integrator
-#: there is given beside the dt -> 0 value
+#: there is given beside the dt -> 0 value, and a time step that keeps eps within DT_TOL
 FEW_STEPS = 50
+#: The relative error in eps that the time step stated below FEW_STEPS keeps
+DT_TOL = 1e-3
 
 
 def _with_eps(row: dict, contact, speeds, limit: float, dt: float | None = None) -> dict:
     """The row with eps at every speed, where the engine would push the bodies through each other
     (the largest overlap reaching ``limit``) none, and the contact's parameters; with the deck's
     time step ``dt``, the steps per contact at each speed and, below FEW_STEPS, the eps velocity
-    Verlet gives at that dt (the engines' integrator, :func:`restitution.dem.timestep.verlet_eps`)."""
+    Verlet gives at that dt (the engines' integrator, :func:`restitution.dem.timestep.verlet_eps`)
+    and the time step that keeps it within DT_TOL (:func:`restitution.dem.timestep.recommended_dt`:
+    the largest its first-order study allows, run and checked there)."""
     through = [contact.reaches(g, limit) for g in speeds]
     if through[len(speeds) // 2]:   # no eps at the middle speed: no line promising one
         row["exact_line"] = None
@@ -131,13 +153,16 @@ def _with_eps(row: dict, contact, speeds, limit: float, dt: float | None = None)
     row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
                overlap_limit=limit, **{k: v for k, v in contact.as_dict().items() if k != "end"})
     if dt is not None:
-        steps, at_dt = [], []
+        steps, at_dt, within = [], [], []
         for g, (e, stick), t in zip(speeds, eps, through):
-            n = None if t or stick else contact.contact_time(g) / dt
+            t_c = None if t or stick else contact.contact_time(g)
+            n = None if t_c is None else t_c / dt
             steps.append(n)
+            few = n is not None and n < FEW_STEPS
             # below 2 steps the integrator does not resolve the contact: no eps is stated for it
-            at_dt.append(verlet_eps(contact, g, dt) if n is not None and 2 <= n < FEW_STEPS else None)
-        row.update(dt=dt, steps_per_contact=steps, eps_at_dt=at_dt)
+            at_dt.append(verlet_eps(contact, g, dt) if few and n >= 2 else None)
+            within.append(recommended_dt(contact, g, DT_TOL, eps=e, contact_time=t_c).dt if few else None)
+        row.update(dt=dt, steps_per_contact=steps, eps_at_dt=at_dt, dt_within_tol=within, dt_tol=DT_TOL)
     return row
 
 
@@ -220,7 +245,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .deck_scratch import scratch_copy
-    from .deck_stream import engine_error, executed, skipped, snapshots
+    from .deck_stream import engine_error, executed, skipped, snapshots, unchecked
     if engine == "LAMMPS":
         from .engines.lammps import deck_run
     else:
@@ -229,14 +254,13 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         raise DeckError("engine", engine, deck_run.INSTALL)
     with tempfile.TemporaryDirectory(prefix="restitution-deck-") as tmp:
         root = Path(tmp)
-        scratch = scratch_copy(path, root, deck_run.marker(root), deck_run.ending(root))
+        scratch = scratch_copy(path, root, deck_run.marker(root))
         if not any(key.split()[0] in ("pair_style", "if") for key in scratch.lines):
             raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                                 "(LIGGGHTS) line")
         done = deck_run.run_copy(scratch.deck, root, budget)
         commands = executed(done.echo, scratch)
-        for k in re.findall(r"^label restitution_unchecked_(\d+)\s*$", done.echo, re.M):
-            loc, text = scratch.dynamic[int(k)]
+        for loc, text in unchecked(commands, scratch):
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
         atoms = snapshots(done.atoms) + snapshots(done.at_end)
@@ -260,7 +284,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError(where, line or None, f"{engine} stops here: {message}")
         deck = read_executed(commands, atoms, radius, density, read_file)
     notes = [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
-             "part in a contact" for cmd, loc in skipped(done.echo, scratch).items()]
+             "part in a contact" for cmd, loc in skipped(commands, scratch).items()]
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
         runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
@@ -365,27 +389,111 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
     if deck.ntypes <= 0:
         raise DeckError("create_box", None, "the deck has no create_box or read_data: the number of types is "
                                             "unknown")
-    pairs = []
+    pairs, not_audited = [], []
     for i in range(1, deck.ntypes + 1):
         for j in range(i, deck.ntypes + 1):
             if _empty(deck, i) or _empty(deck, j):
                 continue
-            row = DIALECTS[deck.code].pair_row(deck, i, j)
-            contact, pair = row.pop("contact"), row.pop("pair")
-            pairs.append(_with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck)))
-    walls, not_audited = _wall_rows(deck, speeds)
-    return pairs, walls, not_audited
+            if (i, j) in deck.others:
+                not_audited.append(_other_force(deck, i, j))
+                continue
+            rows = []
+            for at in _choices(deck, i, j):
+                sized = replace(deck, at=at) if at else deck
+                row = DIALECTS[deck.code].pair_row(sized, i, j)
+                contact, pair = row.pop("contact"), row.pop("pair")
+                row = _with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck))
+                rows.append(({**row, "beside": effects(sized, row, contact, pair, (i, j),
+                                                       lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k))},
+                             at))
+            pairs += _ends(rows)
+    walls, walls_not = _wall_rows(deck, speeds)
+    return pairs, walls, not_audited + walls_not
+
+
+def _other_force(deck: Deck, i: int, j: int) -> tuple:
+    """The line naming a pair of a hybrid pair style that another sub-style covers, not audited."""
+    (source, n), line = deck.style_line
+    names = ", ".join(sorted(deck.others[(i, j)]))
+    if deck.hybrid == "hybrid":
+        why = (f"types {i} {j}: pair_coeff gives them sub-style {names}, not {deck.substyle}: no granular contact "
+               "between them, not audited")
+    else:
+        why = (f"types {i} {j}: sub-style {names} adds its force to {deck.substyle}'s (hybrid/overlay), which the "
+               "audit does not map: not audited")
+    return (source, n, line, why)
+
+
+#: Two eps closer than this (relative) are one: a law whose eps does not depend on size
+_SAME_EPS = 1e-9
+
+
+def _choices(deck: Deck, i: int, j: int) -> list:
+    """The spheres a pair (i, j) is audited at: [()] where both types have one size, else every
+    choice of ((R_i, rho_i), (R_j, rho_j)) among their sizes (:attr:`Deck.sizes`)."""
+    if i not in deck.sizes and j not in deck.sizes:
+        return [()]
+    one = {t: deck.sizes.get(t) or [(deck.radius.get(t), deck.density.get(t))] for t in (i, j)}
+    for t, options in one.items():
+        if options[0][0] is None or options[0][1] is None:
+            spheres(deck, t, t)              # one line naming what the type lacks
+    return [(a, b) for a in one[i] for b in one[j]]
+
+
+def _ends(rows: list) -> list:
+    """The rows of one pair or wall over the sizes present: the one row where there is one size; else
+    the rows of the smallest and the largest eps at the middle speed, each with the sizes it is at
+    (``sizes``: "smallest eps" or "largest eps", ``at``: [[R, rho], [R, rho]]), or one row (``sizes``:
+    "any", the sizes' eps within 1e-9) where the law's eps does not depend on size. A speed where
+    some size passes through or sticks is taken as it comes in the row that has it."""
+    if len(rows) == 1 and not rows[0][1]:
+        return [rows[0][0]]
+    k = len(rows[0][0]["speeds"]) // 2
+
+    def middle(item):
+        e = item[0]["eps"][k]
+        return -1.0 if e is None else e
+    lo, hi = min(rows, key=middle), max(rows, key=middle)
+    same = all(all(a is not None and b is not None and abs(a - b) <= _SAME_EPS * max(abs(b), 1e-300)
+                   for a, b in zip(r["eps"], lo[0]["eps"])) for r, _ in rows)
+    out = []
+    for (row, at), end in ([(lo, "any")] if same else [(lo, "smallest eps"), (hi, "largest eps")]):
+        out.append({**row, "sizes": end, "at": [list(at[0]), list(at[1])] if len(at) == 2 else [list(at[0])],
+                    "exact_line": row["exact_line"] if same else None})
+    return out
+
+
+#: A frozen atom's mass, as a multiple of its own: the engine takes the other atom's mass for m_eff
+#: (to this ratio, 1e-12 relative)
+_FROZEN = 1e12
+
+
+def _frozen_contact(deck: Deck, i: int, j: int, k: int):
+    """The contact the engine gives type pair (i, j) where the body of type (i, j)[k] is frozen (at
+    the sizes the deck is audited at, :attr:`Deck.at`, where the type has several)."""
+    if deck.at:
+        at = list(deck.at)
+        at[k] = (at[k][0], at[k][1] * _FROZEN)
+        held = replace(deck, at=tuple(at))
+    else:
+        t = (i, j)[k]
+        held = replace(deck, density={**deck.density, t: deck.density[t] * _FROZEN})
+    return DIALECTS[deck.code].pair_row(held, i, j)["contact"]
 
 
 def _dt(deck: Deck) -> float | None:
-    """The time step the deck's runs use, where it sets one; None for a deck read without its engine."""
-    return deck.dt if deck.held is not None else None
+    """The time step the deck's runs use (LAMMPS' default for its units where it sets none); None for
+    a deck read without its engine."""
+    if deck.held is None:
+        return None
+    return deck.dt if deck.dt is not None else DEFAULT_DT.get(deck.units)
 
 
 def _empty(deck: Deck, t: int) -> bool:
     """Whether type t has no particle at this run, as the engine holds it, and none is poured into it:
     a type of walls only, or unused; no sphere of it meets another."""
-    return deck.held is not None and t not in deck.held and t not in deck.radius and t not in deck.missing
+    return (deck.held is not None and t not in deck.held and t not in deck.radius and t not in deck.missing
+            and t not in deck.sizes)
 
 
 def _empty_notes(deck: Deck) -> list:

@@ -13,6 +13,7 @@ from __future__ import annotations
 import copy
 import re
 
+from .deck_beside import BESIDE
 from .deck_state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
 from .deck_text import ScriptError, words
 from .engines import ENGINES
@@ -102,7 +103,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     >>> deck.stages[0][1].radius, deck.stages[0][1].density
     ({1: 0.5}, {1: 2.0})
     """
-    deck = Deck()
+    deck = Deck(held={})       # the engine holds the atoms: their sizes are never read from the deck
     done = 0
     for cmd in commands:
         try:
@@ -130,6 +131,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             d.radius[int(t)] = r
         for t, rho in (density or {}).items():
             d.density[int(t)] = rho
+        for t in {int(t) for t in [*(radius or {}), *(density or {})]} & set(d.sizes):
+            # a size given for a type of several: what it does not give stays the type's own
+            sizes = {(d.radius.get(t, r), d.density.get(t, rho)) for r, rho in d.sizes.pop(t)}
+            if len(sizes) > 1:
+                d.sizes[t] = sorted(sizes)
+            else:
+                d.radius[t], d.density[t] = sizes.pop()
     if not any(d.code for d in [deck] + [snap for _, snap, _ in deck.stages]):
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
@@ -143,7 +151,7 @@ _ENGINE_ONLY = {"set", "variable", "if", "jump", "label", "next", "include", "qu
 
 def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     """The atoms a run sees, as the engine held them: each type's radius and density where all its
-    atoms share one; several (a type of several sizes) named in ``missing``; a type without atoms
+    atoms share one; several (a type of several sizes) in ``sizes``; a type without atoms
     keeps what an inserting fix gives it (a pour) or none (walls only, or unused)."""
     deck.held = {t: sorted(v) for t, v in atoms.items()}
     deck.atoms = deck.atoms or bool(atoms)
@@ -152,19 +160,16 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         radii = {r for r, _ in sizes}
         dens = {rho for _, rho in sizes}
         deck.missing.pop(t, None)
+        deck.sizes.pop(t, None)
         if min(radii) <= 0:
             deck.radius.pop(t, None)
             deck.missing[t] = f"type {t} holds point particles (radius 0), which have no contact radius"
+        elif len(radii) == 1 and len(dens) == 1:
+            deck.radius[t], deck.density[t] = radii.pop(), dens.pop()
         else:
-            # each of the two that is single is kept: --radius alone completes a type of one density
-            for given, values in ((deck.radius, radii), (deck.density, dens)):
-                if len(values) == 1:
-                    given[t] = next(iter(values))
-                else:
-                    given.pop(t, None)
-            if len(sizes) > 1:
-                deck.missing[t] = (f"type {t} holds {len(sizes)} sizes at this run: radius {min(radii):g} to "
-                                   f"{max(radii):g}, density {min(dens):g} to {max(dens):g}")
+            deck.radius.pop(t, None)
+            deck.density.pop(t, None)
+            deck.sizes[t] = sorted(sizes)
 
 
 def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
@@ -220,6 +225,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         _group(deck, words)
     elif cmd == "units" and len(words) >= 2:
         deck.units = words[1]
+    elif cmd == "unfix" and len(words) >= 2:
+        deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
     elif cmd == "timestep" and len(words) >= 2:
         deck.dt = number(words[1], where, line)
     elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
@@ -228,9 +235,34 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.unknown.append((*loc, line, "not understood"))
 
 
+#: LAMMPS' hybrid pair styles: each pair's force from the sub-style its pair_coeff names (hybrid),
+#: or the sum of all those naming it (hybrid/overlay)
+_HYBRID = ("hybrid", "hybrid/overlay")
+
+
+def _hybrid(deck: Deck, words: list, where: str, line: str) -> list:
+    """pair_style hybrid[/overlay] S1 args S2 args ...: the pair_style command of its one granular
+    sub-style (the reader maps no two), which pair_coeff lines naming it set. A sub-style's
+    arguments are numbers, NULL or limit_damping up to the next sub-style's name."""
+    grans = [k for k, w in enumerate(words) if k >= 2 and w in PAIR_STYLES]
+    if len(grans) != 1:
+        raise DeckError(where, line, f"pair_style {words[1]} with {'no' if not grans else len(grans)} granular "
+                                     "sub-styles: the reader maps one")
+    k = grans[0]
+    n = k + 1
+    while n < len(words) and (words[n] in ("NULL", "limit_damping") or re.fullmatch(r"[-+.\deE]+", words[n])):
+        n += 1
+    deck.hybrid, deck.substyle, deck.others = words[1], words[k], {}
+    return ["pair_style", *words[k:n]]
+
+
 def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
-    style = words[1]
     deck.style_line = (loc, line)
+    if len(words) > 2 and words[1] in _HYBRID:
+        words = _hybrid(deck, words, where, line)
+    else:
+        deck.hybrid, deck.substyle, deck.others = "", "", {}
+    style = words[1]
     if deck.style and style != deck.style:
         # LAMMPS keeps the coefficients for the same style (its settings change); another style
         # starts without any, and LAMMPS stops at the next run unless new pair_coeff lines follow
@@ -248,6 +280,23 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
 def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if deck.code not in DIALECTS:
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
+    if deck.hybrid and len(words) > 3:
+        sub = words[3]
+        if sub == deck.substyle:
+            words = [*words[:3], *words[4:]]
+        else:
+            # another sub-style (or none): under hybrid it replaces the granular one on these pairs,
+            # under hybrid/overlay it adds its force to it
+            covered = {(i, j) for i in types(words[1], deck.ntypes, where, line)
+                       for j in types(words[2], deck.ntypes, where, line)}
+            for i, j in covered:
+                key = (min(i, j), max(i, j))
+                if deck.hybrid == "hybrid":
+                    deck.coeffs.pop(key, None)
+                    deck.others[key] = {sub}
+                elif sub != "none":
+                    deck.others.setdefault(key, set()).add(sub)
+            return
     DIALECTS[deck.code].pair_coeff(deck, words, where, line, loc)
 
 
@@ -301,7 +350,7 @@ def contact_key(deck: Deck) -> str:
                        deck.hard, deck.model, deck.limit_force, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
-                       set(deck.shapes))))
+                       set(deck.shapes), deck.sizes, deck.others, [w for _, w in deck.beside])))
 
 
 def _stage(deck: Deck, loc, line: str) -> None:
@@ -324,7 +373,8 @@ def _stage(deck: Deck, loc, line: str) -> None:
 
 def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> None:
     """read_data FILE [nocoeff] [group ID]: the number of types, each type's radius and density
-    where all its atoms share them, and a data file's Pair Coeffs / PairIJ Coeffs."""
+    where all its atoms share them (where no engine holds them), and a data file's Pair Coeffs /
+    PairIJ Coeffs."""
     name, opts, coeffs = words[1], words[2:], True
     k = 0
     while k < len(opts):
@@ -361,7 +411,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
         cols = body.split()
         if section == "Atom Type Labels":             # type label, as labelmap atom gives them
             labelmap(deck, ["labelmap", "atom", *cols[:2]], here, body)
-        elif section == "Atoms":
+        elif section == "Atoms" and deck.held is None:
             style = hint or deck.atom_style
             if style not in _SPHERE_STYLES:
                 raise DeckError(here, f"Atoms # {style}", "the reader reads the Atoms section of atom_style "
@@ -380,7 +430,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             rest = cols[1:] if section == "Pair Coeffs" else cols[2:]
             _pair_coeff(deck, unlabeled(deck, ["pair_coeff", i, j, *rest], here, body), here, body, (name, n))
     deck.present |= set(per_type)
-    for t in range(1, deck.ntypes + 1):
+    for t in range(1, deck.ntypes + 1 if deck.held is None else 1):
         if t not in per_type:
             deck.missing[t] = f"{name} has no atom of type {t}"
             continue
@@ -424,23 +474,12 @@ def _set(deck: Deck, words: list, where: str, line: str, loc) -> None:
             return
 
 
-#: Fixes that act on the atoms beside the contact: the engine measures another eps than the
-#: contact's own where they act during a collision (LAMMPS measured: fix viscous 0.99592 where the
-#: contact gives 0.9999999995). Named, each with what it does.
-_BESIDE_CONTACT = {"viscous": "a drag force -gamma v on every atom of its group",
-                   "langevin": "a thermostat's drag and random force",
-                   "setforce": "forces set to given values", "freeze": "frozen atoms (no force moves them)",
-                   "nve/limit": "a cap on how far an atom moves per step",
-                   "adapt": "coefficients changed as the run goes",
-                   "damp/viscous": "a drag force", "viscous/sphere": "a drag torque"}
-
-
 def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     style = words[3]
-    if style in _BESIDE_CONTACT:
-        deck.unknown.append((*loc, line, f"fix {style}: {_BESIDE_CONTACT[style]}, which changes the eps the engine "
-                                         "measures where it acts during a collision; the audit gives the contact's "
-                                         "own eps"))
+    # a fix of the same ID replaces the earlier one, as in the engines
+    deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
+    if style in BESIDE:
+        deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck_beside)
         return
     if style in _INSERTING_FIXES:
         deck.inserting = True
@@ -466,7 +505,8 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
     """fix ID group pour N type seed [keywords]: the diameter and density it gives type t, LAMMPS'
     defaults where the line has no diam or dens (diameter 1, density 1: its documentation, and a
     poured atom in LAMMPS 22 Jul 2025 has radius 0.5 and mass pi/6). A range or poly of several
-    diameters (densities) gives no single one: the type's entry in ``missing`` says so."""
+    diameters (densities) gives the type several sizes (``sizes``: a range sampled with its ends);
+    read without the engine, it gives none (the type's entry in ``missing`` says so)."""
     if "mol" in words[7:]:
         raise DeckError(where, line, "fix pour ... mol pours molecules (rigid clumps of spheres), not single "
                                      "spheres: the reader audits the head-on contact of two spheres only")
@@ -490,16 +530,28 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
             diameters = {value(k + 1), value(k + 2)}          # older LAMMPS: diam lo hi
         elif tok == "dens":
             densities = {value(k + 1), value(k + 2)}
-    if len(diameters) == 1:
-        deck.radius[t] = 0.5 * diameters.pop()
-    else:
-        deck.radius.pop(t, None)
-        deck.missing[t] = f"fix {words[1]} pours diameters from {min(diameters):g} to {max(diameters):g}"
-    if len(densities) == 1:
-        deck.density[t] = densities.pop()
-    else:
-        deck.density.pop(t, None)
-        deck.missing[t] = f"fix {words[1]} pours densities from {min(densities):g} to {max(densities):g}"
+    deck.sizes.pop(t, None)
+    if len(diameters) == 1 and len(densities) == 1:
+        deck.radius[t], deck.density[t] = 0.5 * diameters.pop(), densities.pop()
+        return
+    deck.radius.pop(t, None)
+    deck.density.pop(t, None)
+    if deck.held is None:          # the hand reader's decks: no range audited
+        what = "diameters" if len(diameters) > 1 else "densities"
+        lo, hi = min(diameters if len(diameters) > 1 else densities), max(diameters if len(diameters) > 1
+                                                                            else densities)
+        deck.missing[t] = f"fix {words[1]} pours {what} from {lo:g} to {hi:g}"
+        return
+    # a range (uniform between its ends) sampled with its ends; poly's diameters themselves
+    if "poly" not in tokens and len(diameters) > 1:
+        lo, hi = min(diameters), max(diameters)
+        diameters = {lo + (hi - lo) * k / (_RANGE_SAMPLES - 1) for k in range(_RANGE_SAMPLES)}
+    deck.sizes[t] = sorted({(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))})
+
+
+#: Sizes sampled across a pour's range of diameters, its ends included: a law whose eps is not
+#: monotonic in size between them would still show its turn to within one sample step
+_RANGE_SAMPLES = 9
 
 
 def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:

@@ -79,7 +79,7 @@ def normalised(text: str) -> str:
     return " ".join(strip_comment(text).split())
 
 
-def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, ending: str = "") -> Scratch:
+def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker) -> Scratch:
     """Copy the deck's folder into ``where``/deck and make the copy safe to run.
 
     Parameters
@@ -90,7 +90,9 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, endi
         An empty scratch directory.
     marker : callable
         ``marker(k, run_text) -> str``: the text of stage k's marker file (the run, then what
-        records the atoms); it is written to ``where``/stage_k.
+        records the atoms); it is written to ``where``/stage_k. A ``quit`` gets one too,
+        ``marker(None, quit_text)``, written to ``where``/quit_n: the engine ends the process
+        there, so what it records where the deck ends comes before the quit.
 
     Returns
     -------
@@ -146,9 +148,6 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, endi
         new = _rewritten(text, label, scratch, marker)
         if not mapped:
             scratch.lines = lines
-        if p == scratch.deck and ending:
-            (root / "ending").write_text(ending)
-            new = new.rstrip("&\n") + f"\ninclude {root / 'ending'}\n"
         if new != text:
             p.write_text(new, encoding="utf-8")
     return scratch
@@ -226,10 +225,17 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
     if "$" in word:
         # what it would run cannot be checked first: never run; the deck is refused if it reaches it
         scratch.dynamic.append((loc, key))
+        scratch.lines.setdefault(DYNAMIC.format(len(scratch.dynamic) - 1), loc)
         return DYNAMIC.format(len(scratch.dynamic) - 1)
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
         scratch.skipped.append((word, loc))
+        # known as a command of its line, so its echo (also from inside an if) tells it was reached
+        scratch.lines.setdefault(NOOP.format(len(scratch.skipped) - 1), loc)
         return NOOP.format(len(scratch.skipped) - 1)
+    if word == "quit":
+        path = scratch.root / f"quit_{sum(1 for _ in scratch.root.glob('quit_*'))}"
+        path.write_text(marker(None, key))
+        return f"include {path}"
     if word == "fix":
         words = key.split()
         if len(words) > 3 and words[3].startswith(_SKIPPED_FIX_PREFIXES):
@@ -263,6 +269,11 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
                 if new is not None:
                     changed = True
                     piece = f"{quote}{new}{quote}"
+        elif not quote and out and re.search(r"(?<!\S)quit(?!\S)", piece):
+            # an unquoted word is a command of its own there (then quit): the only one-word
+            # command that needs making safe
+            changed = True
+            piece = re.sub(r"(?<!\S)quit(?!\S)", lambda _: f'"{_safe("quit", loc, scratch, marker)}"', piece)
         out.append(piece)
     return "".join(out) if changed else None
 

@@ -106,8 +106,20 @@ class Deck:
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     liggghts_mark: tuple = ()                     # (loc, text) of the first command only LIGGGHTS has
     dt: float | None = None                       # the timestep command's, None where the deck has none
+    beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
+                                                  # (restitution.dem.deck_beside), in force now
     held: dict | None = None                      # type -> [(radius, density)] the engine held at a run, or
                                                   # None where the deck was read without its engine
+    # type -> the (radius, density) its spheres may have where it has several sizes (the engine's,
+    # or a sample of a pour's ranges, their ends included); ``at`` the two spheres a pair row is
+    # audited at then, ((R1, rho1), (R2, rho2)), else ()
+    sizes: dict = field(default_factory=dict)
+    at: tuple = ()
+    # LAMMPS pair_style hybrid or hybrid/overlay ("" otherwise), its granular sub-style, and the
+    # pairs another sub-style covers, (i, j) -> {its names}
+    hybrid: str = ""
+    substyle: str = ""
+    others: dict = field(default_factory=dict)
 
 
 class DeckDialect(Protocol):
@@ -436,6 +448,9 @@ def spheres(deck: Deck, i: int, j: int) -> Pair:
     >>> spheres(Deck(radius={1: 0.5}, density={1: 2.0}), 1, 1).R1
     0.5
     """
+    if deck.at:           # one choice among a type's several sizes
+        (r1, rho1), (r2, rho2) = deck.at
+        return Pair.spheres(r1, r2, rho1, rho2)
     for t in (i, j):
         if t in deck.shapes:
             loc, text, what = deck.shapes[t]

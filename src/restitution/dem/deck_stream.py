@@ -13,10 +13,10 @@ import math
 import re
 from dataclasses import dataclass
 
-from .deck_scratch import Scratch, normalised
+from .deck_scratch import DYNAMIC, NOOP, Scratch, normalised
 from .deck_text import TRIPLE, segments
 
-__all__ = ["Executed", "executed", "skipped", "snapshots", "engine_error"]
+__all__ = ["Executed", "executed", "skipped", "unchecked", "snapshots", "engine_error"]
 
 
 @dataclass
@@ -72,7 +72,7 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     """
     marker = re.compile(rf"include {re.escape(str(scratch.root))}/stage_(\d+)")
     lines = _echo_lines(echo)
-    out, k = [], 0
+    out, k, opened = [], 0, False
     while k < len(lines):
         key = normalised(lines[k])
         k += 1
@@ -81,6 +81,7 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
             stage = int(m.group(1))
             f, n, run = scratch.stages[stage]
             out.append(Executed((f, n), run, stage))
+            opened = True        # the marker's first command, echoed next, is the run itself
             continue
         if key not in scratch.lines:
             continue
@@ -89,20 +90,23 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
         while _substituted(text) and k < len(lines) and normalised(lines[k]).split()[:1] == key.split()[:1]:
             text = normalised(lines[k])
             k += 1
-        if out and out[-1].stage is not None and out[-1].loc == loc and text.split()[:1] == out[-1].text.split()[:1]:
-            out[-1].text = text          # the run itself, echoed from its marker: substituted
+        if opened and text.split()[:1] == out[-1].text.split()[:1]:
+            # the run itself, echoed from its marker, substituted (its text may be that of an
+            # earlier line: the marker's line is its own)
+            out[-1].text, opened = text, False
             continue
+        opened = False
         out.append(Executed(loc, text))
     return out
 
 
-def skipped(echo: str, scratch: Scratch) -> dict:
+def skipped(commands: list, scratch: Scratch) -> dict:
     """The commands made no-ops that the engine reached: {command: (file, line) of the first}.
 
     Parameters
     ----------
-    echo : str
-        The engine's screen output with commands echoed.
+    commands : list of Executed
+        What :func:`executed` read from the engine's echo (a no-op's echo is one of them).
     scratch : Scratch
         The copy it ran.
 
@@ -114,14 +118,46 @@ def skipped(echo: str, scratch: Scratch) -> dict:
     --------
     >>> from pathlib import Path
     >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), skipped=[("shell", (None, 3)), ("dump", (None, 4))])
-    >>> skipped("label restitution_skipped_1\\n", s)
+    >>> skipped([Executed((None, 4), "label restitution_skipped_1")], s)
     {'dump': (None, 4)}
     """
     out = {}
-    for k in re.findall(r"^label restitution_skipped_(\d+)\s*$", echo, re.M):
-        command, loc = scratch.skipped[int(k)]
+    for k in _marks(commands, _SKIPPED):
+        command, loc = scratch.skipped[k]
         out.setdefault(command, loc)
     return out
+
+
+def unchecked(commands: list, scratch: Scratch) -> list:
+    """The commands whose name comes from a variable that the engine reached (never run):
+    [((file, line), text)].
+
+    Parameters
+    ----------
+    commands : list of Executed
+    scratch : Scratch
+
+    Returns
+    -------
+    list
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), dynamic=[((None, 2), "${c} 1")])
+    >>> unchecked([Executed((None, 2), "label restitution_unchecked_0")], s)
+    [((None, 2), '${c} 1')]
+    """
+    return [scratch.dynamic[k] for k in _marks(commands, _UNCHECKED)]
+
+
+_SKIPPED = re.compile(NOOP.format(r"(\d+)"))
+_UNCHECKED = re.compile(DYNAMIC.format(r"(\d+)"))
+
+
+def _marks(commands: list, pattern) -> list[int]:
+    """The numbers of the no-op markers of one kind among the commands run, in order."""
+    return [int(m.group(1)) for cmd in commands if (m := pattern.fullmatch(cmd.text))]
 
 
 def snapshots(atoms: str) -> list[dict]:

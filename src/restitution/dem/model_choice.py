@@ -28,6 +28,7 @@ import numpy as np
 
 from ..core.collision import StickError
 from ..core.errors import ParameterError
+from ..core.problem import Problem
 from ..fast.ladder import epsilon
 from .contact import Contact
 
@@ -103,14 +104,15 @@ def _epsilon(model: ContactModel, end: str, om, tol: float, build: bool | None):
     within the bound but not bit for bit, and a least-squares fit's damping moved in its 8th digit
     with the cache's state (the small scene's glass-steel line: 1212924442.54 with an empty cache,
     1212924487.03 with curves cached)."""
+    problem = Problem.of(model.alpha, model.gamma, end)
     if build is None:
         try:
-            return epsilon(alpha=model.alpha, gamma=model.gamma, omega=om, tol=tol, end=end, build=False, cached=False)
+            return epsilon(problem, omega=om, tol=tol, build=False, cached=False)
         except StickError:
             raise
         except ParameterError:
             pass    # the integrator does not reach tol here: the cheapest method that does
-    return epsilon(alpha=model.alpha, gamma=model.gamma, omega=om, tol=tol, end=end, build=build)
+    return epsilon(problem, omega=om, tol=tol, build=build)
 
 
 def _eps_at(model: ContactModel, end: str, om: np.ndarray, tol: float, build: bool | None) -> tuple[np.ndarray, float]:

@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..core.errors import ParameterError
-from ..core.exponents import as_exponents
+from ..core.problem import Problem
 from ..fast.integrator import COLUMNS, collide_fast
 from .contact import Contact
 from .engine import Engine
@@ -130,10 +130,11 @@ def answer_scene(scene: Scene, progress=None) -> dict:
         shared = {"fits": fits, "chosen": chosen, "materials": group[0].materials,
                   "models": [f.as_dict() for f in fits]}
         if chosen is not None:
-            ex = as_exponents(chosen.model.alpha, chosen.model.gamma)
+            problem = Problem.of(chosen.model.alpha, chosen.model.gamma, end)
+            ex = problem.ex
             eps_fit, bound = scaled_eps(chosen.model, end, chosen.omega(speeds), build)
             rows = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, chosen.omega(speeds), EVAL_TOL,
-                                end == "overlap" and ex.alpha > ex.gamma)
+                                problem.effective_end)
             tau_c = rows[:, COLUMNS.index("tau_c")]
             shared.update(eps_fit=eps_fit, bound=bound, tau_c=tau_c, x_b=rows[:, COLUMNS.index("x_b")],
                           steps=_time_step(scene, chosen, end, speeds, eps_fit, tau_c))

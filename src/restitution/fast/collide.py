@@ -10,7 +10,6 @@ from __future__ import annotations
 import sys
 
 from ..core.errors import ParameterError
-from ..core.problem import as_problem
 from ..core.results import Collision
 from .rungs import RUNGS
 
@@ -26,7 +25,7 @@ RENAMED = {"fast": "integrator"}
 
 def collide(problem, omega, *, method: str = "reference", rtol: float = 1e-12, t_eval=None,
             digits: int = 30, stream=None) -> Collision:
-    """One forward collision of ``problem`` (a Problem, an Exponents or an (alpha, gamma) pair) at
+    """One forward collision of the Problem ``problem`` at
     ``omega`` by the rung named ``method`` (METHODS); see :func:`restitution.api.collide`."""
     if method in RENAMED:
         print(f'restitution: collide method "{method}" is now called "{RENAMED[method]}", as in epsilon; '
@@ -37,7 +36,6 @@ def collide(problem, omega, *, method: str = "reference", rtol: float = 1e-12, t
     named = [r for r in RUNGS if r.name == method and r.collides]
     if t_eval is not None and not any(r.trajectories for r in named):
         raise ParameterError("t_eval", "...", 'trajectories come from method "reference" only')
-    problem = as_problem(problem)
     # one name may be served by a rung per end rule (the integrator's two): the one for this rule
     rung = next((r for r in named if r.serves_rule(problem.end, problem.rules_differ)), named[0])
     return rung.collision(problem, omega, rtol=rtol, digits=digits, t_eval=t_eval)

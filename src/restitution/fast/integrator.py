@@ -19,7 +19,7 @@ small Omega, f is a tiny difference of nearly equal numbers and must not be form
 3. release   in tau from (x_b, 0, Omega x_b^(alpha-gamma)) until f = 0 (force end) or x < x_b / 4;
 4. land      in u down to u = 0 (separation) unless g = 0 (force end) first.
 
-Under the overlap rule (``overlap=True``: contact lasts until x = 0, the force pulling on the way)
+Under the overlap rule (``end="overlap"``: contact lasts until x = 0, the force pulling on the way)
 f = 0 is no end. Once the force pulls (from x_b / 4, or from the located zero of g in leg 4) the
 return may creep, and eps may lie a factor Omega^2 below the creep speed (alpha = 3/2, gamma = 1/2:
 eps = C Omega^3), so the last leg is that of core.collision._land_pulling:
@@ -61,19 +61,21 @@ OVERLAP_RTOL_MAX = 1e-9
 
 
 #: Columns of the array ``collide_fast`` returns.
-COLUMNS = ("eps", "tau_b", "x_b", "tau_c", "x_c", "end", "steps")
+COLUMNS = ("eps", "tau_b", "x_b", "tau_c", "x_c", "ended_by", "steps")
 
 
-def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12, overlap: bool = False) -> np.ndarray:
+def collide_fast(p: int, qa: int, qg: int, omegas, rtol: float = 1e-12, end: str = "force") -> np.ndarray:
     """Integrate one collision per Omega; returns an (n, 7) array with columns ``COLUMNS``.
 
-    Exponents as integers: alpha = qa/p, gamma = qg/p. ``overlap``: the overlap end rule instead of
-    the force rule (run at rtol at most OVERLAP_RTOL_MAX). ``end`` is END_FORCE, END_SEPARATION, END_STUCK (overlap rule, proved) or
+    Exponents as integers: alpha = qa/p, gamma = qg/p. ``end``: the end rule, "force" or "overlap"
+    (the latter run at rtol at most OVERLAP_RTOL_MAX; pass a Problem's ``effective_end``).
+    ``ended_by`` is END_FORCE, END_SEPARATION, END_STUCK (overlap rule, proved) or
     END_FAILED (then the other columns are NaN where undetermined). No input validation: the
     callers (ladder, master) validate.
     """
     om = np.ascontiguousarray(np.atleast_1d(np.asarray(omegas, dtype=np.float64)))
     res = np.empty((om.size, 7))
+    overlap = end == "overlap"
     if overlap:
         rtol = min(rtol, OVERLAP_RTOL_MAX)
     threads = _threads(om.size)

@@ -32,8 +32,7 @@ from __future__ import annotations
 import math
 import sys
 import time
-from dataclasses import dataclass
-from fractions import Fraction
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -42,8 +41,8 @@ from ..core.collision import StickError, stick_bound, stick_reason
 from ..core.conditioning import conditioning_cause
 from ..core.errors import ParameterError, number_in, real_array
 from ..core.model import OMEGA_REPRESENTABLE, at_most_one
-from ..core.problem import Problem
-from ..core.exponents import Exponents, as_exponents
+from ..core.problem import Problem, as_problem
+from ..core.exponents import read_through
 from ..core.uniform import UniformForm
 from .build import Site
 from .builds import ladder_builds
@@ -52,7 +51,7 @@ from .calibration import FITTED_C, MASTER, MPMATH, MUELLER_POESCHEL_PADE, UNIFOR
 from .master import MasterCurve, MasterSettings
 from .overlap_master import OverlapCurve
 from .parts import part_ranges
-from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request
+from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request, Setting
 from .rungs import ladder_rungs, rung_names
 from .rungs.calibrated import SAFETY
 
@@ -69,18 +68,19 @@ class Part:
     omega_max: float
     count: int
     bound: float
-    setting: str = ""
+    setting: Setting = field(default_factory=Setting)
 
     def as_dict(self) -> dict:
         return {"method": self.method, "omega_min": self.omega_min, "omega_max": self.omega_max,
-                "count": self.count, "error_bound": self.bound, "setting": self.setting}
+                "count": self.count, "error_bound": self.bound, "setting": str(self.setting)}
 
 
 @dataclass(frozen=True)
 class EpsResult:
     """What ``epsilon`` returns: eps (numpy array, same shape as the input), the rungs used and their bounds.
 
-    ``setting`` describes the rung's parameter (e.g. "rtol=1e-10"); ``candidates`` is the chooser's
+    ``setting`` shows the rung's :class:`~restitution.fast.rung.Setting` (e.g. "rtol=1e-10"; each
+    part's is in ``parts``); ``candidates`` is the chooser's
     table: one dict per rung with its bound over these inputs (inf when outside its domain), the
     expected cost and why it was or was not eligible. An array whose parts different rungs answer
     (each point by the cheapest rung that meets tol over its part) has one :class:`Part` per rung
@@ -97,8 +97,9 @@ class EpsResult:
         The relative error bound over all the inputs (the largest of the parts').
     omega : numpy.ndarray
         The Omegas.
-    alpha, gamma : Fraction
-        The exponents.
+    problem : Problem
+        What was solved: the exponents and the end rule asked (``alpha``, ``gamma`` and ``end``
+        read through it).
     tol : float or None
         The tolerance asked.
     setting : str, optional
@@ -127,13 +128,16 @@ class EpsResult:
     method: str
     error_bound: float
     omega: np.ndarray
-    alpha: Fraction
-    gamma: Fraction
+    problem: Problem
     tol: float
     setting: str = ""
     candidates: tuple = ()
     coefficients: dict | None = None   # the closed form's numbers, when that rung answered
     parts: tuple = ()
+
+    alpha = read_through("problem", "alpha")
+    gamma = read_through("problem", "gamma")
+    end = read_through("problem", "end", "The end-of-contact rule asked for.")
 
     def __array__(self, dtype=None, copy=None):
         return np.asarray(self.eps, dtype=dtype)
@@ -186,11 +190,13 @@ def _check_tol(tol) -> float:
 
 
 class Ladder:
-    """The ladder for one pair of exponents (and one calibration setting / cache directory)."""
+    """The ladder for one problem, its exponents and end rule (and one calibration setting / cache
+    directory). ``problem``: a Problem (an Exponents or an (alpha, gamma) pair: the force rule)."""
 
     def __init__(self, problem, *, settings: MasterSettings | None = None, cache_dir=None,
                  stream=None, relations: tuple[Relation, ...] = (FITTED_C,)):
-        self.ex = as_exponents(problem)
+        self.problem = as_problem(problem)
+        self.ex = self.problem.ex
         self.relations = tuple(relations)
         self.rungs = ladder_rungs(self.relations)
         self.rung_names = rung_names(self.relations)
@@ -203,6 +209,15 @@ class Ladder:
         self.built: dict = {}
         self.site = Site(self.ex, self.settings, self._progress, self.built)
         self._announce = False
+
+    def with_end(self, end: str) -> "Ladder":
+        """The ladder for the same exponents under the end rule ``end``, sharing what this one has
+        built and loaded (a build belongs to the exponents; each rule's rungs name the ones they read)."""
+        other = type(self)(self.problem.with_end(end), settings=self.settings, cache_dir=self.cache_dir,
+                       stream=self.stream, relations=self.relations)
+        other.rungs, other.rung_names, other.builds, other.built = self.rungs, self.rung_names, self.builds, self.built
+        other.site = Site(self.ex, self.settings, other._progress, other.built)
+        return other
 
     @property
     def _stream(self):
@@ -311,26 +326,26 @@ class Ladder:
         return cal
 
     # -- quotes
-    def quotes(self, omega: np.ndarray, tol: float, end: str = "force", cached: bool = True,
+    def quotes(self, omega: np.ndarray, tol: float, cached: bool = True,
                size: int | None = None, builds: dict | None = None) -> list[Quote]:
         """Every rung with its bound over ``omega``, cost and a runner (None when not applicable);
         ``cached`` False: as with an empty cache (no rung that reads a build can run); ``size``: the
         number of points when ``omega`` is only their range's two ends; ``builds``: what is loaded,
         when the caller has just looked (the cache is not asked again)."""
         if builds is None:
-            builds = self._loaded(end) if cached else {}
-        req = Request(Problem(self.ex, end), np.asarray(omega, float).ravel(), tol, builds, self.stream, size)
+            builds = self._loaded() if cached else {}
+        req = Request(self.problem, np.asarray(omega, float).ravel(), tol, builds, self.stream, size)
         return [r.quote(req) for r in self.rungs]
 
-    def _loaded(self, end: str) -> dict:
-        probe = Request(Problem(self.ex, end), np.ones(1), 1.0)
+    def _loaded(self) -> dict:
+        probe = Request(self.problem, np.ones(1), 1.0)
         for name in {r.needs(probe) for r in self.rungs if r.serves(probe)} - {None}:
             self._cached(name)
         return dict(self.built)
 
     # -- the choice
     def evaluate(self, omega, *, tol: float | None = DEFAULT_TOL, method: str | None = None,
-                 build: bool | None = None, end: str = "force", cached: bool = True) -> EpsResult:
+                 build: bool | None = None, cached: bool = True) -> EpsResult:
         om = _omega_array(omega)
         if not cached and build:
             raise ParameterError("build", build, "must be False or None with cached=False (nothing is read or built)")
@@ -342,27 +357,26 @@ class Ladder:
             raise ParameterError("build", build, "must be True, False or None")
         if method is not None and method not in self.rung_names:
             raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
-        end = Problem(self.ex, end).end
         flat = om.ravel()
-        if end == "overlap":
+        if self.problem.end == "overlap":
             self._refuse_sticking(flat)
         if method is None and flat.size > 1:
-            groups = self._groups(flat, tol, end, build, cached)
+            groups = self._groups(flat, tol, build, cached)
             if len(groups) > 1:
-                return self._joined(om, flat, groups, tol, end, build, cached)
-        return self._answer(om, flat, tol, checked, method, build, end, cached)
+                return self._joined(om, flat, groups, tol, build, cached)
+        return self._answer(om, flat, tol, checked, method, build, cached)
 
-    def _answer(self, om, flat, tol: float, checked: bool, method, build, end: str, cached: bool) -> EpsResult:
+    def _answer(self, om, flat, tol: float, checked: bool, method, build, cached: bool) -> EpsResult:
         """The whole of ``flat`` by one rung: the forced one, else the cheapest that meets tol."""
-        quotes = self.quotes(flat, tol, end, cached)
+        quotes = self.quotes(flat, tol, cached)
         if build is not False and cached:
-            quotes = self._make_builds(quotes, flat, tol, end, method, build)
+            quotes = self._make_builds(quotes, flat, tol, method, build)
         if method is not None:
             # the rungs of that name that serve this end rule: of two (one per rule) the refusal is
             # the one whose rule was asked, not the other's "serves the force rule only"
             mine = [q for q in quotes if q.name == method and q.serves]
             if not mine:
-                raise ParameterError("method", method, f"does not serve end = {end}; the rungs that do: "
+                raise ParameterError("method", method, f"does not serve end = {self.problem.end}; the rungs that do: "
                                      + ", ".join(q.name for q in quotes if q.run is not None))
             q = next((q for q in mine if q.run is not None), mine[0])
             if q.run is None:
@@ -382,17 +396,17 @@ class Ladder:
                 raise ParameterError("tol", tol, f"no method reaches it: {hint}")
             # an exact rung first (Rung.exact): none is more accurate, and it reads no cache
             order = sorted(ok, key=lambda q: (not q.exact, q.cost, q.bound))
-        chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, end, cached)
-        table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
+        chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, cached)
+        table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": str(q.setting),
                        "available": q.run is not None, "reason": q.reason} for q in quotes)
         part = Part(chosen.name, float(np.min(flat)), float(np.max(flat)), int(flat.size), float(bound),
                     chosen.setting)
-        return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.ex.alpha,
-                         self.ex.gamma, tol if checked else None, chosen.setting, table, chosen.coefficients,
+        return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.problem,
+                         tol if checked else None, str(chosen.setting), table, chosen.coefficients,
                          (part,))
 
     # -- each part of an array its own rung
-    def _groups(self, flat: np.ndarray, tol: float, end: str, build, cached: bool) -> list[tuple[float, float]]:
+    def _groups(self, flat: np.ndarray, tol: float, build, cached: bool) -> list[tuple[float, float]]:
         """The Omega intervals [lo, hi) (open ends: -inf, inf) that ``flat`` is answered by in turn.
 
         The array is cut at every rung's domain edges (``Rung.edges``) inside its range; each part
@@ -401,8 +415,8 @@ class Ladder:
         whose cheapest adequate rung is the same form one interval. One interval: the whole array
         is answered as one (no copy), as it was before arrays were cut."""
         lo, hi = float(np.min(flat)), float(np.max(flat))
-        builds = self._loaded(end) if cached else {}
-        probe = Request(Problem(self.ex, end), np.array([lo, hi]), tol, builds, self.stream)
+        builds = self._loaded() if cached else {}
+        probe = Request(self.problem, np.array([lo, hi]), tol, builds, self.stream)
         cuts = sorted({float(e) for r in self.rungs if r.serves(probe) for e in r.edges(probe) if lo < e <= hi})
         if not cuts:
             return [(-math.inf, math.inf)]
@@ -415,9 +429,9 @@ class Ladder:
                 continue
             ends = np.array([p_lo, p_hi])
             # what the probe loaded, and what an earlier part built since
-            quotes = self.quotes(ends, tol, end, cached, size=int(n), builds=dict(self.built) if cached else {})
+            quotes = self.quotes(ends, tol, cached, size=int(n), builds=dict(self.built) if cached else {})
             if build is not False and cached:
-                quotes = self._make_builds(quotes, ends, tol, end, None, build, size=int(n))
+                quotes = self._make_builds(quotes, ends, tol, None, build, size=int(n))
             ok = [q for q in quotes if q.run is not None and q.bound <= tol]
             key = min(ok, key=lambda q: (not q.exact, q.cost, q.bound)).name if ok else None
             if groups and key == last:
@@ -427,21 +441,21 @@ class Ladder:
             last = key
         return groups
 
-    def _joined(self, om, flat, groups, tol: float, end: str, build, cached: bool) -> EpsResult:
+    def _joined(self, om, flat, groups, tol: float, build, cached: bool) -> EpsResult:
         """Each interval's points answered as ``epsilon`` answers them alone, put back in place."""
         eps = np.empty(flat.size)
         results = []
         for a, b in groups:
             where = (flat >= a) & (flat < b)
             sub = flat[where]
-            r = self._answer(sub, sub, tol, True, None, build, end, cached)
+            r = self._answer(sub, sub, tol, True, None, build, cached)
             eps[where] = r.eps
             results.append(r)
         names = list(dict.fromkeys(r.method for r in results))
         parts = tuple(p for r in results for p in r.parts)
         table = tuple({**row, "part": i} for i, r in enumerate(results) for row in r.candidates)
         return EpsResult(eps.reshape(om.shape), "+".join(names), max(p.bound for p in parts), om,
-                         self.ex.alpha, self.ex.gamma, tol, "; ".join(f"{p.method}: {p.setting}" for p in parts),
+                         self.problem, tol, "; ".join(f"{p.method}: {p.setting}" for p in parts),
                          table, None, parts)
 
     def _refuse_sticking(self, flat: np.ndarray) -> None:
@@ -452,7 +466,7 @@ class Ladder:
         if stuck.size:
             raise StickError.at(float(stuck[0]), stick_reason(self.ex))
 
-    def _make_builds(self, quotes, flat, tol: float, end: str, method, build, size: int | None = None) -> list[Quote]:
+    def _make_builds(self, quotes, flat, tol: float, method, build, size: int | None = None) -> list[Quote]:
         """Make the builds the request wants, cheapest first, quoting again after each: the first
         one built may serve the request already, so the next ones no longer pay."""
         tried: set = set()
@@ -466,9 +480,9 @@ class Ladder:
             name = min(pending, key=lambda b: (self._build_cost(b), b))
             tried.add(name)
             self._build(name)
-            quotes = self.quotes(flat, tol, end, size=size)
+            quotes = self.quotes(flat, tol, size=size)
 
-    def _first_within(self, order, flat: np.ndarray, tol: float, end: str, cached: bool = True):
+    def _first_within(self, order, flat: np.ndarray, tol: float, cached: bool = True):
         """The first quote, cheapest first, whose bound still holds once widened by its answer
         (a double-precision integration near the overlap rule's sticking boundary loses relative
         accuracy as eps falls: core.conditioning), run once more at a tolerance tightened by that
@@ -494,7 +508,7 @@ class Ladder:
                 if bound <= tol:
                     return q, eps, bound
                 widened.append((q, eps, bound))
-                tighter = [t for t in self.quotes(flat, max(TOL_FLOOR, min(tol, q.bound) / (2.0 * factor)), end, cached)
+                tighter = [t for t in self.quotes(flat, max(TOL_FLOOR, min(tol, q.bound) / (2.0 * factor)), cached)
                            if t.name == q.name and t.run is not None and t.bound < q.bound]
                 if attempt or not tighter:
                     break
@@ -503,7 +517,7 @@ class Ladder:
             raise ParameterError("omega", float(flat[0]) if flat.size == 1 else "these Omegas",
                                  "no method that reaches tol could integrate here (" + "; ".join(failed) + ")")
         q, eps, bound = min(widened, key=lambda w: w[2])
-        raise ParameterError("tol", tol, f"{conditioning_cause(Problem(self.ex, end), eps, flat)}: the "
+        raise ParameterError("tol", tol, f"{conditioning_cause(self.problem, eps, flat)}: the "
                              f"smallest bound reached here is {bound:.3g} ({q.name}); ask for a larger tol")
 
     def _building_pays(self, quotes, tol: float, n: int) -> set[str]:
@@ -526,32 +540,35 @@ class Ladder:
 _LADDERS: dict = {}
 
 
-def _ladder(ex: Exponents, relations) -> Ladder:
-    key = (ex.alpha, ex.gamma, _cache.cache_dir(), tuple(relations))
+def _ladder(problem: Problem, relations) -> Ladder:
+    key = (problem, _cache.cache_dir(), tuple(relations))
     if key not in _LADDERS:
-        _LADDERS[key] = Ladder(ex, relations=relations)
+        _LADDERS[key] = Ladder(problem, relations=relations)
     return _LADDERS[key]
 
 
-def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | None = DEFAULT_TOL,
+def epsilon(problem: Problem, *, omega=None, g=None, D1=None, D2=None, tol: float | None = DEFAULT_TOL,
             method: str | None = None, build: bool | None = None,
-            relations: tuple[Relation, ...] = (FITTED_C,), end: str = "force", cached: bool = True) -> EpsResult:
+            relations: tuple[Relation, ...] = (FITTED_C,), cached: bool = True) -> EpsResult:
     """Coefficient of restitution to a relative tolerance ``tol``, by the cheapest adequate method.
 
-    Give either ``omega`` (scaled parameter, scalar or array) or the impact speeds ``g`` with the
-    material constants ``D1``, ``D2`` (Omega = D1 g^((alpha-1-2gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1))).
+    ``problem``: the exponents and the end-of-contact rule (a :class:`~restitution.core.problem.Problem`;
+    "overlap" is served only by the rungs that declare it, ``Rung.ends``). Give either ``omega``
+    (scaled parameter, scalar or array) or the impact speeds ``g`` with the material constants
+    ``D1``, ``D2`` (Omega = D1 g^((alpha-1-2gamma)/(gamma+1)) D2^(-(alpha+1)/(gamma+1))).
     Returns an :class:`EpsResult`: ``.eps`` (numpy array shaped like the input), ``.method``,
     ``.error_bound`` (relative, over all inputs), ``.candidates`` (the chooser's table).
     ``method`` forces a rung (it must still meet ``tol``, unless ``tol`` is None: then it answers
     with whatever bound it has); ``build`` = False never builds
     anything, True builds everything the quoted rungs read, None (default) what pays.
-    ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's). ``end``: the
-    end-of-contact rule; "overlap" is served only by the rungs that declare it (``Rung.ends``).
+    ``relations`` are the relation rungs (:mod:`restitution.api` adds the paper's).
     ``cached`` = False answers as with an empty cache: no build is read or made, so the answer does
     not depend on what earlier runs cached (a DEM scene's fit must not; build must not be True).
     Raises ParameterError for bad input and for a tolerance no rung meets.
     """
-    ex = as_exponents(alpha, gamma)
+    if not isinstance(problem, Problem):
+        raise ParameterError("problem", problem, "must be a Problem (restitution.epsilon reads alpha, gamma, end)")
+    ex = problem.ex
     if omega is not None:
         if g is not None or D1 is not None or D2 is not None:
             raise ParameterError("omega", omega, "give either omega or all of g, D1, D2, not both")
@@ -565,4 +582,4 @@ def epsilon(*, alpha, gamma, omega=None, g=None, D1=None, D2=None, tol: float | 
         with np.errstate(over="ignore", under="ignore"):
             om = np.asarray(Material.of(ex, D1, D2).omega(gs), dtype=float).reshape(gs.shape)
         om = _omega_array(om, "omega")  # Omega itself may over/underflow for extreme inputs
-    return _ladder(ex, relations).evaluate(om, tol=tol, method=method, build=build, end=end, cached=cached)
+    return _ladder(problem, relations).evaluate(om, tol=tol, method=method, build=build, cached=cached)

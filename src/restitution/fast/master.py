@@ -37,7 +37,7 @@ from ..core.exponents import as_exponents
 from .integrator import END_FAILED, END_STUCK, collide_fast
 from .panels import PanelRange, chebyshev_panels_eval
 from .rung import INTEGRATOR_BOUND_FACTOR, INTEGRATOR_BOUND_FLOOR, integrator_bound
-from ..core.problem import problem_end
+from ..core.problem import as_problem
 
 __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "reference_eps", "mpmath_check",
            "widen_by_check",
@@ -47,7 +47,7 @@ __all__ = ["MASTER_VERSION", "MasterSettings", "MasterCurve", "build_master", "r
 #: Bumped whenever the construction changes, so cached curves of an older kind are rebuilt.
 MASTER_VERSION = 2
 
-def stiff_omega_min(problem, end: str | None = None) -> float:
+def stiff_omega_min(problem) -> float:
     """Smallest Omega the explicit compiled integrator's eps is used for.
 
     For alpha > gamma contact ends a few relaxation times after maximum compression and nothing is
@@ -60,9 +60,8 @@ def stiff_omega_min(problem, end: str | None = None) -> float:
     creeps for every pair (about 0.4/Omega steps for alpha = 3/2, gamma = 1/2: 14 ms at 1e-5, 0.2 s
     at 1e-6).
     """
-    end = problem_end(problem, end)   # a Problem brings its own rule
-    ex = as_exponents(problem)
-    return 1e-300 if ex.alpha > ex.gamma and end == "force" else 1e-5
+    problem = as_problem(problem)
+    return 1e-300 if problem.rules_differ and problem.end == "force" else 1e-5
 
 
 #: Below this the compiled integrator's contact times are not to be trusted though its eps is: after
@@ -101,16 +100,15 @@ class MasterSettings:
 
 
 # ------------------------------------------------------------------------------ reference values
-def reference_eps(problem, omegas, rtol: float = 1e-14, end: str | None = None) -> np.ndarray:
+def reference_eps(problem, omegas, rtol: float = 1e-14) -> np.ndarray:
     """eps from the exact closed form (alpha = gamma) or the compiled integrator (otherwise), for
-    the end rule ``end``; under "overlap" a proved sticking raises core.collision.StickError."""
-    end = problem_end(problem, end)   # a Problem brings its own rule
-    ex = as_exponents(problem)
+    the problem's end rule; under "overlap" a proved sticking raises core.collision.StickError."""
+    problem = as_problem(problem)
+    ex = problem.ex
     om = np.asarray(omegas, dtype=float)
     if ex.alpha == ex.gamma:
         return asy.equal_exponents_eps(om)
-    overlap = end == "overlap" and ex.alpha > ex.gamma
-    res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, rtol, overlap)
+    res = collide_fast(ex.p, ex.q_alpha, ex.q_gamma, om, rtol, problem.effective_end)
     if np.any(res[:, 5] == END_STUCK):
         from ..core.collision import StickError
         w = float(om.ravel()[res[:, 5] == END_STUCK][0])

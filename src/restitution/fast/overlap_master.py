@@ -37,6 +37,7 @@ from numpy.polynomial import chebyshev as cheb
 from ..core import asymptotics as asy
 from ..core.collision import StickError, stick_bound
 from ..core.exponents import as_exponents
+from ..core.problem import Problem
 from ..core.overlap_limit import overlap_limit
 from .master import reference_eps
 from .panels import PanelRange, chebyshev_panels_eval
@@ -66,31 +67,37 @@ STICK_MARGIN = 4.0
 SEED = 20261125
 
 
-def _sticks(ex, w: float) -> bool:
+def _sticks(over: Problem, w: float) -> bool:
     try:
-        reference_eps(ex, [w], 1e-10, "overlap")
+        reference_eps(over, [w], 1e-10)
     except (StickError, ArithmeticError):   # the integrator gives up within ~1e-8 of the boundary
         return True
     return False
+
+
+def _overlap(problem) -> Problem:
+    """The overlap rule's problem for these exponents (the only rule this curve is for)."""
+    return Problem(as_exponents(problem), "overlap")
 
 
 def sticking_boundary(problem, lo: float = OMEGA_LO, hi: float = OMEGA_HI) -> float:
     """The Omega below which the bodies stick under the overlap rule, to 1e-6 relative, searched in
     [lo, hi]: 0 where they never stick (alpha < 2 gamma + 1), ``lo`` when they separate at lo
     already (the boundary, if any, lies below). Sticking is the integrator's proof (END_STUCK)."""
-    ex = as_exponents(problem)
+    over = _overlap(problem)
+    ex = over.ex
     if ex.alpha < 2 * ex.gamma + 1:
         return 0.0
     if ex.alpha == 2 * ex.gamma + 1:
         return stick_bound(ex)   # the whole boundary there, proved in core.collision
-    if not _sticks(ex, lo):
+    if not _sticks(over, lo):
         return lo
-    if _sticks(ex, hi):
+    if _sticks(over, hi):
         raise ArithmeticError(f"alpha={ex.alpha}, gamma={ex.gamma} stick up to Omega = {hi:g}")
     a, b = math.log(lo), math.log(hi)   # sticks at a, separates at b
     while b - a > 1e-6:
         m = 0.5 * (a + b)
-        a, b = (m, b) if _sticks(ex, math.exp(m)) else (a, m)
+        a, b = (m, b) if _sticks(over, math.exp(m)) else (a, m)
     return math.exp(b)
 
 
@@ -158,8 +165,9 @@ class OverlapCurve(PanelRange):
     def spot_checks_pass(self) -> bool:
         """Every panel agrees with a fresh integration at one point to its bound (plus the
         integrator's): the cache's digest catches a damaged file, this a wrong curve."""
-        nodes = integrator_bound(NODE_RTOL, as_exponents(self.alpha, self.gamma), "overlap")
-        least = least_bound((self.alpha, self.gamma))
+        over = _overlap((self.alpha, self.gamma))
+        nodes = integrator_bound(NODE_RTOL, over)
+        least = least_bound(over)
         if not (np.all(np.isfinite(self.coef)) and least <= self.bound_inside < 1e-6):
             return False
         if self.law is not None and not least <= self.law_bound < 1e-6:
@@ -167,7 +175,7 @@ class OverlapCurve(PanelRange):
         if not (self.elastic_remainder >= 0.0 and np.all(np.isfinite(self.elastic))):
             return False
         om = np.exp(self.s0 + (np.arange(self.coef.shape[0]) + SPOT_CHECK_AT) * self.width)
-        ref = reference_eps((self.alpha, self.gamma), om, NODE_RTOL, "overlap")
+        ref = reference_eps(over, om, NODE_RTOL)
         return bool(np.all(np.abs(self.eps(om) / ref - 1) <= 10.0 * (self.bound_inside + nodes)))
 
     def as_dict(self) -> dict:
@@ -197,7 +205,7 @@ def least_bound(problem) -> float:
     Parameters
     ----------
     problem : Problem, Exponents or (alpha, gamma)
-        The exponents.
+        The exponents (the curve is the overlap rule's, whatever rule a Problem names).
 
     Returns
     -------
@@ -209,16 +217,17 @@ def least_bound(problem) -> float:
     >>> least_bound(("3/2", "1/2"))
     1.0000000000000001e-11
     """
-    return 2.0 * integrator_bound(NODE_RTOL, as_exponents(problem), "overlap")
+    return 2.0 * integrator_bound(NODE_RTOL, _overlap(problem))
 
 
 def build_overlap_curve(problem, progress=None) -> OverlapCurve:
     """Fit and measure the curve and its two ends (see the module docstring); 1-2 s for the paper's pair."""
-    ex = as_exponents(problem)
+    over = _overlap(problem)
+    ex = over.ex
     if not ex.alpha > ex.gamma:
         raise ValueError("for alpha <= gamma the overlap rule is the force rule: use the force rule's master curve")
     say = progress or (lambda m: None)
-    stick = sticking_boundary(ex)
+    stick = sticking_boundary(over)
     lo = OMEGA_LO if stick <= OMEGA_LO else STICK_MARGIN * stick
     s0, s1 = math.log(lo), math.log(OMEGA_HI)
     npan = int(math.ceil((s1 - s0) / WIDTH - 1e-9))
@@ -226,14 +235,14 @@ def build_overlap_curve(problem, progress=None) -> OverlapCurve:
     x = np.cos(np.pi * (k + 0.5) / (DEGREE + 1))
     nodes = s0 + (np.arange(npan)[:, None] + (x[None, :] + 1.0) / 2.0) * WIDTH
     say(f"overlap rule: {npan} panels x {DEGREE + 1} nodes on Omega in [{lo:.3g}, {math.exp(s0 + npan * WIDTH):.3g}]")
-    vals = np.log(reference_eps(ex, np.exp(nodes.ravel()), NODE_RTOL, "overlap")).reshape(npan, DEGREE + 1)
+    vals = np.log(reference_eps(over, np.exp(nodes.ravel()), NODE_RTOL)).reshape(npan, DEGREE + 1)
     coef = np.array([cheb.chebfit(x, v, DEGREE) for v in vals])
     curve = OverlapCurve(ex.alpha, ex.gamma, s0, WIDTH, coef, math.nan, stick)
     rng = np.random.default_rng(SEED)
     held = np.exp(s0 + (np.arange(npan)[:, None] + rng.uniform(0, 1, (npan, HELDOUT_PER_PANEL))) * WIDTH).ravel()
-    ref = reference_eps(ex, held, NODE_RTOL, "overlap")
+    ref = reference_eps(over, held, NODE_RTOL)
     fit_err = float(np.max(np.abs(curve.eps(held) / ref - 1.0)))
-    curve.bound_inside = float(max(2.0 * fit_err + least_bound(ex), 2e-14))
+    curve.bound_inside = float(max(2.0 * fit_err + least_bound(over), 2e-14))
     curve.checks = {"fit_err_heldout": fit_err, "n_heldout": int(held.size), "n_nodes": int(nodes.size),
                     "node_rtol": NODE_RTOL}
     if ex.alpha < 2 * ex.gamma + 1:
@@ -241,13 +250,13 @@ def build_overlap_curve(problem, progress=None) -> OverlapCurve:
         low = nodes.ravel() <= math.log(LAW_CHECK_MAX)
         dev = float(np.max(np.abs(lim.eps(np.exp(nodes.ravel()[low])) / np.exp(vals.ravel()[low]) - 1.0)))
         curve.law = (lim.C, lim.k)
-        curve.law_bound = float(max(2.0 * dev + least_bound(ex), 2.0 * lim.C_error / lim.C + 4.0 * TOL_FLOOR))
+        curve.law_bound = float(max(2.0 * dev + least_bound(over), 2.0 * lim.C_error / lim.C + 4.0 * TOL_FLOOR))
         curve.checks.update(law_deviation=dev, law_nodes=int(np.count_nonzero(low)))
     E = asy.elastic_limit(ex)
     curve.elastic = (E.A, E.C1, E.C2)
     top = np.array(ELASTIC_CHECKS)
-    dev = np.abs(E.eps(top, 2, end_term=False) / reference_eps(ex, top, NODE_RTOL, "overlap") - 1.0)
-    node = integrator_bound(NODE_RTOL, ex, "overlap")
+    dev = np.abs(E.eps(top, 2, end_term=False) / reference_eps(over, top, NODE_RTOL) - 1.0)
+    node = integrator_bound(NODE_RTOL, over)
     curve.elastic_remainder = float(np.max(np.maximum(dev - node, 0.0) / top ** (-3.0 * E.A)))
     curve.checks.update(elastic_deviation=[float(x) for x in dev])
     return curve

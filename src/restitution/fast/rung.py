@@ -13,7 +13,9 @@ A rung (:class:`Rung`) is one way to compute eps(Omega). It declares, for a :cla
 * ``floor(req)``: the smallest bound it can state once that build is made (0 when not known): the
   chooser makes no build for a request whose tolerance is below the floor of every rung reading it;
 * ``cost`` (seconds per point) and ``price(req)`` (expected seconds for the request);
-* ``bound(req, built)``: its relative error bound over the request and the setting that meets it;
+* ``bound(req, built)``: its relative error bound over the request and the :class:`Setting` that
+  meets it (the rtol or digits it runs at, as numbers: ``evaluate`` reads them back, never derives
+  them again);
 * ``evaluate(req, built, setting, omega)``: eps;
 * ``exact``: True for a closed form whose bound is at rounding level over its whole domain (the
   exact family alpha = 2 gamma + 1): the chooser takes it first wherever it serves and meets the
@@ -43,9 +45,9 @@ import numpy as np
 
 from ..core.conditioning import conditioning, plain_accuracy, plain_factor_floor
 from ..core.exponents import read_through
-from ..core.problem import Problem, as_problem
+from ..core.problem import Problem
 
-__all__ = ["Quote", "Request", "Rung", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
+__all__ = ["Quote", "Request", "Rung", "Setting", "TOL_FLOOR", "DEFAULT_TOL", "INTEGRATOR_BOUND_FACTOR",
            "INTEGRATOR_BOUND_FLOOR", "integrator_bound", "integrator_rtol", "reference_rtol", "reference_bound",
            "highprec_digits", "highprec_bound"]
 
@@ -73,24 +75,24 @@ def _rtol_for(tol: float, factor: float, floor: float) -> float:
     return min(1e-6, max(1e-14, (tol - floor) / (2 * factor)))
 
 
-# ``problem`` below: a Problem, whose rule applies, or an Exponents (or a pair) with ``end``.
-def integrator_bound(rtol: float, problem, end: str | None = None) -> float:
-    """Relative bound of the compiled integrator at ``rtol`` for ``problem`` (under ``end``)."""
-    factor, floor = _integrator_factor_floor(as_problem(problem, end))
+# ``problem`` below: a Problem, whose rule applies (an Exponents or a pair: the force rule).
+def integrator_bound(rtol: float, problem) -> float:
+    """Relative bound of the compiled integrator at ``rtol`` for ``problem``."""
+    factor, floor = _integrator_factor_floor(problem)
     return factor * rtol + floor
 
 
-def integrator_rtol(tol: float, problem, end: str | None = None) -> float:
-    return _rtol_for(tol, *_integrator_factor_floor(as_problem(problem, end)))
+def integrator_rtol(tol: float, problem) -> float:
+    return _rtol_for(tol, *_integrator_factor_floor(problem))
 
 
-def reference_bound(rtol: float, problem, end: str | None = None) -> float:
+def reference_bound(rtol: float, problem) -> float:
     """The scipy reference's (core.collision.collide) bound: what collide states before conditioning."""
-    return plain_accuracy(as_problem(problem, end), rtol)
+    return plain_accuracy(problem, rtol)
 
 
-def reference_rtol(tol: float, problem, end: str | None = None) -> float:
-    return _rtol_for(tol, *plain_factor_floor(as_problem(problem, end)))
+def reference_rtol(tol: float, problem) -> float:
+    return _rtol_for(tol, *plain_factor_floor(problem))
 
 
 def highprec_digits(tol: float) -> int:
@@ -103,6 +105,40 @@ def highprec_bound(digits: int) -> float:
     return max(10.0 ** (1 - digits), TOL_FLOOR)
 
 
+@dataclass(frozen=True)
+class Setting:
+    """What a rung runs at for one request, as a value: ``rtol`` (the integrators'), ``digits`` (the
+    mpmath reference's), ``label`` (whatever else names it: "c0-c2", "uniform form", why no bound
+    is stated) and ``end`` (the rule it runs under). ``str()`` is how tables and ``--json`` show it,
+    e.g. "rtol=1e-10, overlap"; an empty setting shows as "".
+
+    Examples
+    --------
+    >>> str(Setting(rtol=1.25e-10, end="overlap")), str(Setting(digits=20)), str(Setting(label="c0-c2"))
+    ('rtol=1.25e-10, overlap', 'digits=20', 'c0-c2')
+    >>> bool(Setting())
+    False
+    """
+
+    rtol: float | None = None
+    digits: int | None = None
+    label: str = ""
+    end: str = "force"
+
+    def __str__(self) -> str:
+        parts = [] if self.rtol is None else [f"rtol={self.rtol:.3g}"]
+        if self.digits is not None:
+            parts.append(f"digits={self.digits}")
+        if self.label:
+            parts.append(self.label)
+        if self.end == "overlap":
+            parts.append("overlap")
+        return ", ".join(parts)
+
+    def __bool__(self) -> bool:
+        return bool(str(self))
+
+
 @dataclass
 class Quote:
     """One rung's offer for one request: its bound over the Omegas, expected seconds, and a runner
@@ -111,7 +147,7 @@ class Quote:
     name: str
     bound: float
     cost: float
-    setting: str = ""
+    setting: Setting = field(default_factory=Setting)
     reason: str = ""
     needs_build: str | None = None   # the build it waits for (not built yet)
     floor: float = 0.0               # with needs_build: the smallest bound it can state once built
@@ -148,14 +184,11 @@ class Request:
     def n(self) -> int:
         return int(self.omega.size if self.size is None else self.size)
 
-    def __post_init__(self):
-        object.__setattr__(self, "problem", as_problem(self.problem))   # an Exponents: the force rule
-
     ex = read_through("problem", "ex")
     end = read_through("problem", "end", "The end rule asked for.")
     rules_differ = read_through("problem", "rules_differ",
                                 "The force can vanish during contact (alpha > gamma): the two end rules differ.")
-    rule = read_through("problem", "effective_end",
+    effective_end = read_through("problem", "effective_end",
                         'The end rule whose numbers apply: "overlap" only where it differs from the force rule.')
 
 
@@ -199,10 +232,10 @@ class Rung:
     def price(self, req: Request) -> float:
         return self.cost * req.n
 
-    def bound(self, req: Request, built) -> tuple[float, str]:
+    def bound(self, req: Request, built) -> tuple[float, Setting]:
         raise NotImplementedError
 
-    def evaluate(self, req: Request, built, setting: str, omega: np.ndarray) -> np.ndarray:
+    def evaluate(self, req: Request, built, setting: Setting, omega: np.ndarray) -> np.ndarray:
         raise NotImplementedError
 
     def coefficients(self, req: Request, built) -> dict | None:
@@ -221,6 +254,8 @@ class Rung:
                          needs_build=need, floor=self.floor(req))
         built = req.builds.get(need) if need is not None else None
         b, setting = self.bound(req, built)
+        if isinstance(setting, str):   # a rung with nothing to run at names itself in words
+            setting = Setting(label=setting)
         reason = "" if math.isfinite(b) else "no finite measured error over these Omegas"
         widen = None
         if self.conditioned:

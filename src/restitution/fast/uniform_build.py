@@ -103,10 +103,10 @@ class _References:
         return eps, ome
 
 
-def build_uniform(problem, progress=None, end: str | None = None) -> UniformForm:
-    """Fit, choose and measure the uniform form for the problem's end rule (or ``end`` with plain
-    exponents; a few seconds)."""
-    problem = as_problem(problem, end)
+def build_uniform(problem, progress=None) -> UniformForm:
+    """Fit, choose and measure the uniform form for the problem's end rule (plain exponents: the
+    force rule; a few seconds)."""
+    problem = as_problem(problem)
     ex, end = problem.ex, problem.end
     say = progress or (lambda m: None)
     refs = _References(problem)

@@ -113,7 +113,7 @@ def imports_of(root: Path, dotted: str) -> frozenset[str]:
     Parameters
     ----------
     root : Path
-        The project's root.
+        The project's root, where ``src/`` and ``workflow/lib/`` lie (the import roots searched).
     dotted : str
         The importing module.
 
@@ -161,6 +161,10 @@ def closure(root: Path, modules) -> list[Path]:
     ------
     FileNotFoundError
         If a name is not a module of the project.
+
+    See Also
+    --------
+    script_sources : The same closure for a workflow script, from the file itself.
 
     Examples
     --------

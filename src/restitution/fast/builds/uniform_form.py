@@ -38,7 +38,7 @@ class UniformFormBuild(Build):
             if (u.alpha, u.gamma, u.end) != (site.ex.alpha, site.ex.gamma, self.end) or not 0 < u.bound_eps < 1:
                 return False
             om = np.geomspace(1e-3 if self.end == "overlap" else 1e-7, 1e7, 8) * 1.37
-            ref = reference_eps(site.ex, om, 1e-13, self.end)
+            ref = reference_eps(Problem(site.ex, self.end), om, 1e-13)
             return bool(np.all(np.abs(u.eps(om) / ref - 1) <= u.bound_eps))
         except Exception:  # noqa: BLE001 - anything unreadable is rebuilt
             return False

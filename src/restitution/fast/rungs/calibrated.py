@@ -13,7 +13,7 @@ import numpy as np
 from ...core.connection import eps_from_connection
 from ...core.exponents import as_exponents
 from ..calibration import MASTER, Calibration, Relation, pade_mp2011, relation_build
-from ..rung import Request, Rung, integrator_bound
+from ..rung import Request, Rung, Setting, integrator_bound
 
 __all__ = ["SAFETY", "RelationRung", "PadeRung", "ViscousRung", "ElasticRung", "MasterRung"]
 
@@ -38,13 +38,13 @@ class _Calibrated(Rung):
     def needs(self, req: Request) -> str | None:
         return MASTER
 
-    def bound(self, req: Request, cal: Calibration) -> tuple[float, str]:
+    def bound(self, req: Request, cal: Calibration) -> tuple[float, Setting]:
         if self.name in cal.unavailable:
-            return math.inf, cal.unavailable[self.name]
+            return math.inf, Setting(label=cal.unavailable[self.name])
         if self.name not in cal.profiles:
-            return math.inf, "not calibrated"
+            return math.inf, Setting(label="not calibrated")
         b = profile_bound(cal, self.name, math.log10(req.lo), math.log10(req.hi))
-        return b, self.setting
+        return b, Setting(label=self.setting)
 
 
     def edges(self, req):
@@ -92,7 +92,7 @@ class _Expansion(_Calibrated):
 
     def bound(self, req, cal):
         if self.name in cal.unavailable:
-            return math.inf, cal.unavailable[self.name]
+            return math.inf, Setting(label=cal.unavailable[self.name])
         g = cal.master.grid_log10_omega
         lo10, hi10 = math.log10(req.lo), math.log10(req.hi)
         b = 0.0
@@ -102,7 +102,7 @@ class _Expansion(_Calibrated):
         beyond = ends[(np.log10(ends) < g[0]) | (np.log10(ends) > g[-1])]
         if beyond.size:
             b = max(b, float(np.max(SAFETY * self.model(cal)(beyond))))
-        return b, self.setting
+        return b, Setting(label=self.setting)
 
 
 class ViscousRung(_Expansion):
@@ -162,7 +162,7 @@ class MasterRung(_Calibrated):
 
     def bound(self, req, cal):
         m = cal.master
-        return m.bound(req.omega), f"{m.coef.shape[0]} panels"
+        return m.bound(req.omega), Setting(label=f"{m.coef.shape[0]} panels")
 
     def evaluate(self, req, cal, setting, omega):
         return cal.master.eps(omega)

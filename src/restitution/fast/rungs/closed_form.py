@@ -14,7 +14,7 @@ from ...core.uniform import FORM_RANGE
 from ..uniform_build import REFERENCE_ACCURACY
 from ..uniform_eval import uniform_eps
 from ..calibration import UNIFORM, UNIFORM_OVERLAP
-from ..rung import Request, Rung
+from ..rung import Request, Rung, Setting
 from .exact_family import family_collision
 
 __all__ = ["ClosedForm", "EXACT_BOUND"]
@@ -97,10 +97,10 @@ class ClosedForm(Rung):
     def bound(self, req, form):
         kind = _kind(req)
         if kind == "equal":
-            return EXACT_BOUND, "alpha = gamma"
+            return EXACT_BOUND, Setting(label="alpha = gamma")
         if kind == "dashpot":
-            return EXACT_BOUND, "spring-dashpot" + (", overlap" if req.end == "overlap" else "")
-        return form.bound_eps, "uniform form" + (", overlap" if req.end == "overlap" else "")
+            return EXACT_BOUND, Setting(label="spring-dashpot", end=req.end)
+        return form.bound_eps, Setting(label="uniform form", end=req.end)
 
     def coefficients(self, req, form):
         kind = _kind(req)

@@ -9,7 +9,7 @@ wherever it serves, before any curve or fit, and builds nothing for these pairs.
 
 from __future__ import annotations
 
-from ..rung import Rung
+from ..rung import Rung, Setting
 
 __all__ = ["ExactFamily", "EXACT_FAMILY_COST", "family_collision"]
 
@@ -57,7 +57,7 @@ class ExactFamily(Rung):
         # raises UnresolvedError here: every other rung would follow a creep there for minutes
         from ...core.exact_family import eps_bound, exact_eps
         lowest = exact_eps(req.problem, req.lo)
-        return float(eps_bound(lowest)), "dashpot at (gamma+1) Omega" + (", overlap" if req.end == "overlap" else "")
+        return float(eps_bound(lowest)), Setting(label="dashpot at (gamma+1) Omega", end=req.end)
 
     def coefficients(self, req, built):
         return {"exact": "alpha = 2 gamma + 1: the linear dashpot at Omega' = (gamma+1) Omega "

@@ -7,7 +7,7 @@ import sys
 
 import numpy as np
 
-from ..rung import Rung, highprec_bound, highprec_digits
+from ..rung import Rung, Setting, highprec_bound, highprec_digits
 
 __all__ = ["Highprec", "HIGHPREC_COST", "CREEP_MIN", "highprec_cost"]
 
@@ -46,43 +46,43 @@ class Highprec(Rung):
     def outside(self, req):
         if not req.rules_differ and req.lo < 1e-3:
             return "Omega < 1e-3 with alpha <= gamma (creeping)"
-        if req.rule == "overlap" and req.lo < CREEP_MIN:
+        if req.effective_end == "overlap" and req.lo < CREEP_MIN:
             return f"Omega < {CREEP_MIN:g} under the overlap rule (the return creeps for ~0.2/Omega steps)"
         return None
 
     def edges(self, req):
         if not req.rules_differ:
             return (1e-3,)
-        return (CREEP_MIN,) if req.rule == "overlap" else ()
+        return (CREEP_MIN,) if req.effective_end == "overlap" else ()
 
     def price(self, req):
         # From the range's ends, not every point: a quote must not cost a pass over a million
         # Omegas for a rung that is almost never chosen (it was a fifth of an epsilon call). The
         # per-point cost is monotone in Omega, so the mean of its two ends times n lies between
         # the cheapest and the dearest point's.
-        ends = highprec_cost(np.array([req.lo, req.hi]), highprec_digits(req.tol), req.rule == "overlap")
+        ends = highprec_cost(np.array([req.lo, req.hi]), highprec_digits(req.tol), req.effective_end == "overlap")
         return ends / 2.0 * req.n
 
     def bound(self, req, built):
         d = highprec_digits(req.tol)
-        return highprec_bound(d), f"digits={d}" + (", overlap" if req.end == "overlap" else "")
+        return highprec_bound(d), Setting(digits=d, end=req.end)
 
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import OMEGA_RANGE, collide
         from ...core.highprec import reference_collision
-        digits = highprec_digits(req.tol)
-        seconds = highprec_cost(omega, digits, req.rule == "overlap")
+        digits = setting.digits
+        seconds = highprec_cost(omega, digits, req.effective_end == "overlap")
         if seconds > 10.0:   # a long wait says so at its start
             print(f"restitution: the mpmath reference on {np.size(omega)} point(s) takes about {seconds:.0f} s",
                   file=sys.stderr if req.stream is None else req.stream, flush=True)
-        pulls = req.rule == "overlap"
+        pulls = req.effective_end == "overlap"
         out = []
         for w in np.ravel(omega):
             w = float(w)
             if pulls and OMEGA_RANGE[0] <= w <= OMEGA_RANGE[1]:
                 # mpmath has no proof of sticking and would follow a trapped creep for its whole
                 # step budget: the reference integrator's cheap run raises StickError first.
-                collide(req.ex, w, rtol=1e-8, end="overlap")
+                collide(req.problem, w, rtol=1e-8)
             r = reference_collision(req.problem, w, digits=digits)
             if not r.error_estimate <= 10.0 ** (1 - digits):
                 raise ArithmeticError(f"mpmath reference did not converge at Omega = {w} "
@@ -95,6 +95,6 @@ class Highprec(Rung):
         from ...core.highprec import reference_collision
         from ...core.results import Collision
         r = reference_collision(problem, omega, digits=digits)
-        return Collision(r.alpha, r.gamma, float(r.omega), "forward", float(r.eps), float(r.tau_b), float(r.x_b),
+        return Collision(problem, float(r.omega), "forward", float(r.eps), float(r.tau_b), float(r.x_b),
                          float(r.tau_c), float(r.x_c), r.ended_by, 10.0 ** (1 - r.digits),
-                         one_minus_eps=float(1 - r.eps), rule=problem.end)
+                         one_minus_eps=float(1 - r.eps))

@@ -6,7 +6,7 @@ from __future__ import annotations
 import math
 
 from ..master import reference_eps, stiff_omega_min
-from ..rung import Rung, integrator_bound, integrator_rtol
+from ..rung import Rung, Setting, integrator_bound, integrator_rtol
 
 __all__ = ["Integrator", "OMEGA_MAX", "printed", "integrator_collision"]
 
@@ -29,22 +29,21 @@ def integrator_collision(problem, omega, rtol):
     from ..integrator import COLUMNS, END_FORCE, END_SEPARATION, END_STUCK, collide_fast
     from ..master import TIMES_OMEGA_MIN
 
-    ex, end = problem.ex, problem.end
-    lo = max(stiff_omega_min(ex, end), TIMES_OMEGA_MIN)
+    ex = problem.ex
+    lo = max(stiff_omega_min(problem), TIMES_OMEGA_MIN)
     omega = number_in("omega", omega, lo, OMEGA_MAX, why="the compiled integrator's range (method reference "
                       "or epsilon() cover the rest)")
     rtol = number_in("rtol", rtol, RTOL_MIN, 1e-6)
-    row = dict(zip(COLUMNS, collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, problem.effective_end == "overlap")[0]))
-    if int(row["end"]) == END_STUCK:
+    row = dict(zip(COLUMNS, collide_fast(ex.p, ex.q_alpha, ex.q_gamma, [omega], rtol, problem.effective_end)[0]))
+    if int(row["ended_by"]) == END_STUCK:
         raise StickError("omega", omega, "under the overlap rule contact never ends here: the "
                                          "attractive phase stops the return and the bodies stay together "
                                          "(eps = 0); use end=force")
     ends = {END_FORCE: "force", END_SEPARATION: "separation"}
-    if int(row["end"]) not in ends:
+    if int(row["ended_by"]) not in ends:
         raise ArithmeticError(f"the compiled integrator failed at Omega = {omega:g}")
-    return Collision(ex.alpha, ex.gamma, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
-                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["end"])], rtol,
-                     rule=end)
+    return Collision(problem, omega, "forward", float(at_most_one(row["eps"])), float(row["tau_b"]),
+                     float(row["x_b"]), float(row["tau_c"]), float(row["x_c"]), ends[int(row["ended_by"])], rtol)
 
 
 class Integrator(Rung):
@@ -81,7 +80,7 @@ class Integrator(Rung):
 
     def bound(self, req, built):
         rtol = integrator_rtol(req.tol, req.problem)
-        return integrator_bound(rtol, req.problem), f"rtol={rtol:.3g}"
+        return integrator_bound(rtol, req.problem), Setting(rtol=rtol)
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.problem, omega, integrator_rtol(req.tol, req.problem))
+        return reference_eps(req.problem, omega, setting.rtol)

@@ -1,4 +1,4 @@
-"""The compiled integrator under the overlap rule (``collide_fast(..., overlap=True)``), where it
+"""The compiled integrator under the overlap rule (``collide_fast(..., end="overlap")``), where it
 differs from the force rule (alpha > gamma), at rtol at most OVERLAP_RTOL_MAX: the force rule's
 bound with a factor and floor of its own (core.conditioning.plain_factor_floor), validated against the mpmath
 reference down to eps of 1e-36 (tests/library/test_overlap_fast.py). Below
@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from ..integrator import OVERLAP_RTOL_MAX
 from ..master import reference_eps
-from ..rung import integrator_bound, integrator_rtol
+from ..rung import Setting, integrator_bound, integrator_rtol
 from .integrator import Integrator
 
 __all__ = ["OverlapIntegrator"]
@@ -28,7 +28,7 @@ class OverlapIntegrator(Integrator):
 
     def bound(self, req, built):
         rtol = min(integrator_rtol(req.tol, req.problem), OVERLAP_RTOL_MAX)
-        return integrator_bound(rtol, req.problem), f"rtol={rtol:.3g}, overlap"
+        return integrator_bound(rtol, req.problem), Setting(rtol=rtol, end="overlap")
 
     def evaluate(self, req, built, setting, omega):
-        return reference_eps(req.problem, omega, min(integrator_rtol(req.tol, req.problem), OVERLAP_RTOL_MAX))
+        return reference_eps(req.problem, omega, setting.rtol)

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..rung import TOL_FLOOR, Rung
+from ..rung import TOL_FLOOR, Rung, Setting
 
 __all__ = ["OverlapLaw", "LAW_MAX"]
 
@@ -46,7 +46,7 @@ class OverlapLaw(Rung):
     def bound(self, req, built):
         from ...core.overlap_limit import overlap_limit
         lim = overlap_limit(req.ex)
-        return 2.0 * lim.C_error / lim.C + 4.0 * TOL_FLOOR, f"C = {lim.C:.12g}, k = {lim.k_exact}"
+        return 2.0 * lim.C_error / lim.C + 4.0 * TOL_FLOOR, Setting(label=f"C = {lim.C:.12g}, k = {lim.k_exact}")
 
     def evaluate(self, req, built, setting, omega):
         from ...core.overlap_limit import overlap_limit

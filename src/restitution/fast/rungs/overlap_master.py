@@ -9,7 +9,7 @@ import math
 
 from ..builds.overlap_curve import OVERLAP_CURVE
 from ..overlap_master import OMEGA_HI, OMEGA_LO, least_bound
-from ..rung import Rung
+from ..rung import Rung, Setting
 
 __all__ = ["OverlapMaster", "OVERLAP_CURVE"]
 
@@ -45,9 +45,9 @@ class OverlapMaster(Rung):
 
     def bound(self, req, curve):
         if not curve.covers(req.lo, req.hi):
-            return math.inf, (f"Omega below {curve.lowest:.4g}, where the curve starts"
+            return math.inf, Setting(label=f"Omega below {curve.lowest:.4g}, where the curve starts"
                               + (f" above the sticking boundary {curve.stick_below:.6g}" if curve.law is None else ""))
-        return curve.bound(req.lo, req.hi), f"{curve.coef.shape[0]} panels, overlap"
+        return curve.bound(req.lo, req.hi), Setting(label=f"{curve.coef.shape[0]} panels", end="overlap")
 
     def evaluate(self, req, curve, setting, omega):
         return curve.eps(omega)

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..rung import Rung, reference_bound, reference_rtol
+from ..rung import Rung, Setting, reference_bound, reference_rtol
 
 __all__ = ["Reference"]
 
@@ -29,13 +29,11 @@ class Reference(Rung):
 
     def bound(self, req, built):
         rtol = reference_rtol(req.tol, req.problem)
-        setting = f"rtol={rtol:.3g}" + (", overlap" if req.end == "overlap" else "")
-        return reference_bound(rtol, req.problem), setting
+        return reference_bound(rtol, req.problem), Setting(rtol=rtol, end=req.end)
 
     def evaluate(self, req, built, setting, omega):
         from ...core.collision import collide
-        rtol = reference_rtol(req.tol, req.problem)
-        return np.array([collide(req.problem, float(w), rtol=rtol).eps for w in np.ravel(omega)])
+        return np.array([collide(req.problem, float(w), rtol=setting.rtol).eps for w in np.ravel(omega)])
 
     def collision(self, problem, omega, *, rtol, digits, t_eval=None):
         """scipy's DOP853/Radau in smooth variables (core.collision.collide), ``t_eval`` sampled."""

