@@ -45,8 +45,8 @@ TABLE_RTOL = 1e-6
 TABLE_ATOL = 1e-12
 #: Columns of the tables pinned in the manifest (per variant, where the file exists).
 TABLE_COLUMNS = {
-    "reference/eps_curve.csv": ["g", "omega", "eps", "tau_b", "x_b", "tau_c", "x_c", "end"],
-    "validation/known.csv": ["omega", "eps_reference", "tau_c", "end"],
+    "reference/eps_curve.csv": ["g", "omega", "eps", "tau_b", "x_b", "tau_c", "x_c", "ended_by"],
+    "validation/known.csv": ["omega", "eps_reference", "tau_c", "ended_by"],
     "reference/accuracy.csv": ["rtol", "eps", "tau_b", "tau_c"],
     "connection/readings.csv": ["reading", "defined", "c0", "c1", "c2", "figure"],
     "connection/fit_residuals.csv": ["g", "omega", "omega_tilde", "residual"],
