@@ -290,35 +290,34 @@ OFFICIAL = [
     ("lammps", "granregion/in.granregion.mixer", (), "audited"),
     ("lammps", "granregion/in.granregion.mixer", ("--radius", "1=0.3"), "audited"),
     ("liggghts", "ParScale/fluidizedBedTempParScale/in.DEM", (), "the deck has no pair_style"),
-    ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_init", (), "radius (type 2)"),
+    ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_init", (), "audited"),
     ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_run", (), "LIGGGHTS stops here: Cannot open restart file"),
     ("liggghts", "ParScale/fluidizedBedTempParScale/pascal/in.pascal", (), "the deck has no pair_style"),
     ("liggghts", "ParScale/heatTransferBed_paScal/in.liggghts", (), "LIGGGHTS stops here: Fix particletemplate/sphere "
      "(id pts1): invalid radius random style"),
     ("liggghts", "ParScale/heatTransferBed_paScal/pascal/in.pascal", (), "the deck has no pair_style"),
-    ("liggghts", "chute_wear/in.chute_wear", (), "type 1 holds 2 sizes at this run: radius 0.0015 to 0.0025"),
+    ("liggghts", "chute_wear/in.chute_wear", (), "audited"),
     ("liggghts", "chute_wear/in.chute_wear", ("--radius", "1=0.0015"), "audited"),
     ("liggghts", "cohesion/in.cohesion", (), "cohesion sjkr is not mapped"),
     ("liggghts", "cohesion/in.noCohesion", (), "audited"),
     ("liggghts", "contactModels/in.newModels", (), "audited"),
     ("liggghts", "contactModels/in.oldModels", (), "LIGGGHTS stops here: Invalid pair style"),
-    ("liggghts", "conveyor/in.conveyor", (), "type 1 holds 2 sizes at this run: radius 0.015 to 0.025"),
+    ("liggghts", "conveyor/in.conveyor", (), "audited"),
     ("liggghts", "conveyor/in.conveyor", ("--radius", "1=0.015"), "audited"),
     ("liggghts", "heatTransfer_1/in.heatGran", (), "audited"),
     ("liggghts", "heatTransfer_2/in.heatGran", (), "audited"),
-    ("liggghts", "hydrogel_multicontact/in.hydrogel_default", (), "type 1 holds 505 sizes at this run: radius 0.00908352 "
-     "to 0.0122803"),
+    ("liggghts", "hydrogel_multicontact/in.hydrogel_default", (), "audited"),
     ("liggghts", "hydrogel_multicontact/in.hydrogel_multicontact", (), "surface multicontact is not mapped"),
     ("liggghts", "hysteresis/in.hysteresis", (), "model hooke/hysteresis is not mapped"),
     ("liggghts", "hysteresis/in.noHysteresis", (), "audited"),
-    ("liggghts", "insert_stream/in.insert_stream", (), "type 1 holds 2 sizes at this run: radius 0.015 to 0.025"),
+    ("liggghts", "insert_stream/in.insert_stream", (), "audited"),
     ("liggghts", "insert_stream/in.insert_stream", ("--radius", "1=0.015"), "audited"),
     ("liggghts", "insert_stream/in.insert_stream_reset_timestep", (), "LIGGGHTS stops here: Cannot open restart file"),
     ("liggghts", "meshGran/in.meshGran", (), "audited"),
     ("liggghts", "mesh_tet/in.mesh_tet", (), "audited"),
     ("liggghts", "movingMeshGran/in.movingMeshGran", (), "audited"),
     ("liggghts", "multisphere_stone_restitution/in.multisphere", (), "clumps of spheres (multisphere)"),
-    ("liggghts", "packing/in.packing", (), "type 1 holds 2 sizes at this run: radius 0.005 to 0.008"),
+    ("liggghts", "packing/in.packing", (), "audited"),
     ("liggghts", "packing/in.packing", ("--radius", "1=0.005"), "audited"),
     ("liggghts", "sph_1/in.sph_1", (), "pair_style sph/artVisc/tensCorr is not mapped"),
     ("liggghts", "sph_2/in.sph_2", (), "pair_style sph/artVisc/tensCorr is not mapped"),
@@ -366,12 +365,15 @@ LAMMPS_SIZES = {("pour/in.pour", ()): (0.5, 1.0),
 LAMMPS_TYPES = {"granregion/in.granregion.box": 2}
 
 
-def _contact_lines(code: str, text: str, ntypes: int) -> str:
+def _contact_lines(code: str, text: str, ntypes: int, folder: Path) -> str:
     """The deck's own lines that set its contacts, verbatim (its variables evaluated by the engine):
     LAMMPS, its variables, pair style and coefficients; LIGGGHTS, a box of its types, its materials
     (fix property/global) and pair style."""
     from restitution.dem.deck_text import logical_lines
     lines = [ln for _, ln in logical_lines(text)]
+    # the files it includes, in their place (in.liggghts_init takes its variables from in.DEM)
+    lines = [inc for ln in lines for inc in ([ln] if ln.split()[0] != "include" else
+                                             [x for _, x in logical_lines((folder / ln.split()[1]).read_text())])]
     if code == "lammps":
         return "\n".join(ln for ln in lines if ln.split()[0] in ("variable", "pair_style", "pair_coeff"))
     keep = [ln for ln in lines if ln.split()[0] in ("variable", "pair_style", "pair_coeff", "soft_particles",
@@ -421,7 +423,7 @@ def test_one_pair_of_every_audited_official_deck_in_its_engine(code, name, args,
         pair = Pair.spheres(radius, radius2, density, density2)
         assert p["overlap_limit"] == pytest.approx(radius + radius2, rel=1e-12)
         t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
-        lines = _contact_lines(code, text, ntypes)
+        lines = _contact_lines(code, text, ntypes, path.parent)
         steps = [t_c / 2000 / m for m in (1, 2, 4)]
         if code == "lammps":
             # the deck's variable lines must come before its pair style: a placeholder style first

@@ -117,8 +117,8 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             for t in types:
                 if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
                     continue
-                if t not in deck.sizes:
-                    spheres(deck, t, t)          # one line where the type lacks a radius or a density
+                if t not in deck.sizes or t in deck.shapes:
+                    spheres(deck, t, t)          # one line where the type lacks a radius or a density, or is no sphere
                 sized = []
                 for r, rho in deck.sizes.get(t) or [(deck.radius[t], deck.density[t])]:
                     pair = Pair.wall(r, rho)
@@ -500,5 +500,8 @@ def _empty_notes(deck: Deck) -> list:
     """One note per type without particles in the deck's runs (its pairs not audited)."""
     stages = [snap for _, snap, _ in deck.stages] or [deck]
     empty = sorted({t for d in stages for t in range(1, d.ntypes + 1) if _empty(d, t)})
+    sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     return [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
-            "sphere pairs cannot happen there and are not audited" for t in empty]
+            "sphere pairs cannot happen there and are not audited" for t in empty] + \
+        [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the smallest and "
+         "largest radius and the lightest and densest among them" for t, (n, k) in sorted(sampled.items())]

@@ -138,6 +138,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                 d.sizes[t] = sorted(sizes)
             else:
                 d.radius[t], d.density[t] = sizes.pop()
+                d.sampled.pop(t, None)
     if not any(d.code for d in [deck] + [snap for _, snap, _ in deck.stages]):
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
@@ -161,6 +162,7 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         dens = {rho for _, rho in sizes}
         deck.missing.pop(t, None)
         deck.sizes.pop(t, None)
+        deck.sampled.pop(t, None)
         if min(radii) <= 0:
             deck.radius.pop(t, None)
             deck.missing[t] = f"type {t} holds point particles (radius 0), which have no contact radius"
@@ -169,7 +171,9 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         else:
             deck.radius.pop(t, None)
             deck.density.pop(t, None)
-            deck.sizes[t] = sorted(sizes)
+            deck.sizes[t] = _sampled(sorted(set(sizes)))
+            if len(deck.sizes[t]) < len(set(sizes)):
+                deck.sampled[t] = len(set(sizes))
 
 
 def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
@@ -178,8 +182,6 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     where = place(loc)
     cmd = words[0]
     words = unlabeled(deck, words, where, line)
-    if not deck.liggghts_mark and DIALECTS["LIGGGHTS"].liggghts_only(words):
-        deck.liggghts_mark = (loc, line)
     if cmd in _NEEDS_WORDS and len(words) < _NEEDS_WORDS[cmd]:
         raise DeckError(where, line, f"{cmd} needs at least {_NEEDS_WORDS[cmd] - 1} argument(s)")
     elif cmd == "labelmap" and len(words) >= 2:
@@ -552,6 +554,18 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
 #: Sizes sampled across a pour's range of diameters, its ends included: a law whose eps is not
 #: monotonic in size between them would still show its turn to within one sample step
 _RANGE_SAMPLES = 9
+
+
+def _sampled(sizes: list) -> list:
+    """At most about _RANGE_SAMPLES of a type's held sizes, sorted by radius: evenly spaced in that
+    order, the smallest and largest radius and the lightest and densest among them (pairing every
+    size of a type with hundreds of sizes with every other costs minutes where the eps of a few
+    spread over them tells the range)."""
+    if len(sizes) <= _RANGE_SAMPLES:
+        return sizes
+    picks = {sizes[round(k * (len(sizes) - 1) / (_RANGE_SAMPLES - 1))] for k in range(_RANGE_SAMPLES)}
+    picks |= {min(sizes, key=lambda s: s[1]), max(sizes, key=lambda s: s[1])}
+    return sorted(picks)
 
 
 def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:

@@ -104,7 +104,6 @@ class Deck:
     stages: list = field(default_factory=list)
     inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
-    liggghts_mark: tuple = ()                     # (loc, text) of the first command only LIGGGHTS has
     dt: float | None = None                       # the timestep command's, None where the deck has none
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
                                                   # (restitution.dem.deck_beside), in force now
@@ -115,6 +114,7 @@ class Deck:
     # audited at then, ((R1, rho1), (R2, rho2)), else ()
     sizes: dict = field(default_factory=dict)
     at: tuple = ()
+    sampled: dict = field(default_factory=dict)   # type -> how many sizes it held where ``sizes`` is a sample
     # LAMMPS pair_style hybrid or hybrid/overlay ("" otherwise), its granular sub-style, and the
     # pairs another sub-style covers, (i, j) -> {its names}
     hybrid: str = ""
@@ -448,14 +448,14 @@ def spheres(deck: Deck, i: int, j: int) -> Pair:
     >>> spheres(Deck(radius={1: 0.5}, density={1: 2.0}), 1, 1).R1
     0.5
     """
-    if deck.at:           # one choice among a type's several sizes
-        (r1, rho1), (r2, rho2) = deck.at
-        return Pair.spheres(r1, r2, rho1, rho2)
     for t in (i, j):
         if t in deck.shapes:
             loc, text, what = deck.shapes[t]
             raise DeckError(place(loc), text, f"type {t}'s particles are {what}, not single spheres: the reader "
                                               "audits the head-on contact of two spheres only")
+    if deck.at:           # one choice among a type's several sizes (a clump's spheres refused above)
+        (r1, rho1), (r2, rho2) = deck.at
+        return Pair.spheres(r1, r2, rho1, rho2)
         why = f" ({deck.missing[t]})" if t in deck.missing else (
             " (no set, particle template, pour or data file gives it one: a type without particles?)")
         if t not in deck.radius:
