@@ -23,8 +23,15 @@ LIGGGHTS_DECK = """\
 variable E1 equal 5e7
 variable rad equal 0.5*0.002
 atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
 units si
+region reg block -0.05 0.05 -0.05 0.05 0 0.1 units box
 create_box 2 reg
+neighbor 0.002 bin
+neigh_modify delay 0
 fix m1 all property/global youngsModulus peratomtype ${E1} 2e8
 fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
 fix m3 all property/global coefficientRestitution peratomtypepair 2 &
@@ -33,9 +40,9 @@ fix m3 all property/global coefficientRestitution peratomtypepair 2 &
 fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
 pair_style gran model hertz tangential history limitForce on
 pair_coeff * *
-fix pts1 all particletemplate/sphere 1 atom_type 1 density constant 2500 radius constant ${rad}
-fix pts2 all particletemplate/sphere 2 atom_type 2 density constant 7800 radius constant 0.0015
-fix mystery all frobnicate 3
+fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant ${rad}
+fix pts2 all particletemplate/sphere 32452843 atom_type 2 density constant 7800 radius constant 0.0015
+fix mystery all lineforce 1 0 0
 """
 
 
@@ -44,7 +51,7 @@ def test_a_liggghts_deck_with_two_materials_and_its_exact_lines(tmp_path):
     deck = tmp_path / "in.two"
     deck.write_text(LIGGGHTS_DECK)
     res, err = audit(deck, "--g", 1.0)
-    assert err.strip() == "restitution deck: line 17 not understood: fix mystery all frobnicate 3"
+    assert err.strip() == "restitution deck: line 24 not understood: fix mystery all lineforce 1 0 0"
     pairs = {tuple(p["types"]): p for p in res["pairs"]}
     assert set(pairs) == {(1, 1), (1, 2), (2, 2)}
     p12 = pairs[(1, 2)]
@@ -254,14 +261,16 @@ def test_variables_are_lammps_own(tmp_path):
 
 
 @pytest.mark.parametrize("matrix, word", [
-    ("peratomtypepair 2 0.6 0.5 0.4 0.4", "not symmetric"),
-    ("peratomtypepair 2 0.6 0.5 0.5", "2x2 values"),
-    ("peratomtypepair 2 0.6 0.5 0.5 0.4 0.9", "2x2 values"),
+    ("peratomtypepair 2 0.6 0.5 0.4 0.4", "LIGGGHTS stops here: Fix property/global (id m3): per-atomtype property "
+                                          "matrix must be symmetric"),
+    ("peratomtypepair 2 0.6 0.5 0.5", "LIGGGHTS stops here: Fix property/global (id m3): the number of default values "
+                                      "must be a multiple of nCols"),
+    ("peratomtypepair 2 0.6 0.5 0.5 0.4 0.9", "must be a multiple of nCols"),
     ("peratomtypepair 1 0.6", "peratomtypepair 2"),
 ])
 def test_liggghts_matrices_liggghts_would_refuse(tmp_path, matrix, word):
     """LIGGGHTS stops unless coefficientRestitution holds exactly one value per type pair and is
-    symmetric (checked in LIGGGHTS 3.8): the reader refuses the same decks in one line."""
+    symmetric: it says so in one line, read from the engine itself."""
     deck = tmp_path / "in.two"
     deck.write_text(LIGGGHTS_DECK.replace("peratomtypepair 2 &\n    0.6 0.5 &\n    0.5 0.4", matrix))
     status, out, err = run(deck, "--g", 1.0)

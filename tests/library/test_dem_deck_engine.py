@@ -217,6 +217,30 @@ run 1
         assert f"restitution deck: {word} (line" in err
 
 
+@pytest.mark.parametrize("lines", [
+    'variable c string shell\nif "1 > 0" then "${{c}} touch {target}"',
+    'variable c string shell\nif "1 > 0" then "print x" else "${{c}} touch {target}"',
+    'variable c string "shell touch {target}"\nif "1 > 0" then ${{c}}',
+    'if "1 > 0" then "if \'1 > 0\' then \'shell touch {target}\'"',
+], ids=["quoted", "else", "unquoted", "nested"])
+def test_a_command_an_if_runs_is_made_safe_whatever_its_text(tmp_path, lines):
+    """A branch's command whose name a variable gives was once taken for a condition and run:
+    the shell touched the file (found by trying it, not by a test)."""
+    target = tmp_path / "TOUCHED"
+    text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n" + lines.format(target=target) + "\nrun 1\n"
+    status, out, err = deck(tmp_path, text)
+    assert not target.exists()
+    assert "Traceback" not in err
+
+
+def test_a_pair_table_written_by_the_deck_is_not_written(tmp_path):
+    target = tmp_path / "table.out"
+    status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\n"
+                           f"pair_write 1 1 10 r 0.001 0.02 {target} K\nrun 1\n")
+    assert not target.exists()
+    assert "Traceback" not in err
+
+
 def test_a_settle_loop_on_a_runtime_value_ends_within_its_budget(tmp_path):
     text = HEAD + f"""pair_coeff * * hooke 1000 1 {T}
 velocity all set 1 0 0

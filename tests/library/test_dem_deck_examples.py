@@ -86,12 +86,18 @@ def test_lammps_read_data_example():
 @pytest.mark.slow
 def test_liggghts_read_data_example():
     """hydrogel_multicontact/in.hydrogel_default: read_data data/input.data (every atom of type 1, of
-    varied diameters; none of type 2), E per type, nu = 0.5 (an incompressible gel)."""
+    505 diameters; none of type 2, the walls' type), E per type, nu = 0.5 (an incompressible gel).
+    Its sizes are LIGGGHTS' own, sampled; its walls-only type is no refusal (it was both, before)."""
     deck = LIGGGHTS_EXAMPLES / "hydrogel_multicontact" / "in.hydrogel_default"
-    status, out, err = run(deck, "--g", 1.0)
-    assert status == 2 and out == "" and err.count("\n") == 1 and "data/input.data gives type 1 diameters" in err
-    status, out, err = run(deck, "--g", 1.0, "--radius", "1=0.01")
-    assert status == 2 and err.count("\n") == 1 and "data/input.data has no atom of type 2" in err
+    res, err = audit(deck, "--g", 1.0)
+    assert [p["types"] for p in res["pairs"]] == [[1, 1]] and res["pairs"][0]["sizes"] == "any"
+    assert all(abs(e - 0.95) < 1e-9 for p in res["pairs"] + res["walls"] for e in p["eps"])
+    notes = " ".join(res["notes"])
+    assert "type 1 holds 505 sizes: audited at 9 of them" in notes and "type 2 has no particle" in notes
+    # the smallest diameter in the data file, 0.01816704, is the smallest radius audited
+    assert min(r for p in res["pairs"] for r, _ in p["at"]) == pytest.approx(0.00908352, rel=1e-12)
+    res, err = audit(deck, "--g", 1.0, "--radius", "1=0.01")
+    assert [p["types"] for p in res["pairs"]] == [[1, 1]] and "sizes" not in res["pairs"][0]
     res, _ = audit(deck, "--g", 1.0, "--radius", "1=0.01", "2=0.01", "--density", "2=11.5")
     pairs = {tuple(p["types"]): p for p in res["pairs"]}
     assert set(pairs) == {(1, 1), (1, 2), (2, 2)}

@@ -8,6 +8,7 @@ import math
 
 import pytest
 
+from cli_run import run_cli
 from restitution.cli import main
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.engines.liggghts import run as liggghts_run
@@ -56,6 +57,7 @@ GRAVITY = "fix grav all gravity 9.81 vector 0 0 -1"
 def audit(tmp_path, text, *speeds):
     deck = tmp_path / "in.deck"
     deck.write_text(text)
+    (tmp_path / "plate.stl").write_text(PLATE_STL)      # the LIGGGHTS deck's mesh
     out, err = io.StringIO(), io.StringIO()
     import contextlib
     with contextlib.redirect_stderr(err):
@@ -137,19 +139,25 @@ def test_the_text_output_lists_the_walls(tmp_path):
 
 LIGGGHTS_DECK = """\
 atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
 units si
+region reg block -0.05 0.05 -0.05 0.05 0 0.1 units box
 create_box 2 reg
+neighbor 0.002 bin
+neigh_modify delay 0
 fix m1 all property/global youngsModulus peratomtype 5e7 2e8
 fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
 fix m3 all property/global coefficientRestitution peratomtypepair 2 0.6 0.5 0.5 0.4
 fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
 pair_style gran model hertz tangential history{limit}
 pair_coeff * *
-fix pts1 all particletemplate/sphere 1 atom_type 1 density constant 2500 radius constant 0.001
-fix pts2 all particletemplate/sphere 2 atom_type 2 density constant 7800 radius constant 0.0015
+fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.001
+fix pts2 all particletemplate/sphere 32452843 atom_type 2 density constant 7800 radius constant 0.0015
 {floor}
 fix drum all wall/gran model hertz tangential history primitive type 2 zcylinder 0.05 0. 0.
-fix cad all wall/gran model hertz tangential history mesh n_meshes 1 meshes hopper
 {plate}
 """
 #: the walls in fix wall/gran's documented order: model pairs, the wall, then model keywords
@@ -182,9 +190,8 @@ def test_liggghts_walls_take_the_wall_types_materials(tmp_path):
     for w in res["walls"]:
         assert all(abs(e - w["typed_e"]) < 1e-9 for e in w["eps"])
     assert {row["text"].split()[1]: row["why"] for row in res["unknown_lines"]} == {
-        "drum": "a zcylinder wall (only planes are audited): the wall's contacts are not audited",
-        "cad": "mesh hopper has no fix mesh/surface before it: the wall's contacts are not audited"}
-    assert "mesh hopper" in err and "zcylinder" in err
+        "drum": "a zcylinder wall (only planes are audited): the wall's contacts are not audited"}
+    assert "zcylinder" in err
 
 
 def test_a_liggghts_walls_own_limit_force_is_read_after_the_wall(tmp_path):
@@ -386,16 +393,15 @@ def test_lammps_walls_act_on_their_groups_members_only(poured_into, through):
         lmp.close()
 
 
-def test_a_wall_type_the_reader_cannot_read_names_the_wall_and_refuses_nothing(tmp_path):
-    """Walls were passed over before; one whose type is an unevaluated variable (or a mesh's) is
-    named as not audited, and the pairs and the other walls are still answered."""
+def test_a_wall_type_from_a_variable_is_liggghts_own_substitution(tmp_path):
+    """The wall's and the mesh's type from a variable: LIGGGHTS substitutes it, and the walls are
+    audited with the type it ran (the old reader named them as not audited)."""
     text = liggghts_deck("").replace("primitive type 2", "primitive type ${wt}").replace(
-        "plate.stl type 1", "plate.stl type ${wt}")
+        "plate.stl type 1", "plate.stl type $(v_wt - 1)").replace("units si\n", "units si\nvariable wt equal 2\n")
     res, err = audit(tmp_path, text, 1.0)
-    assert len(res["pairs"]) == 3 and res["walls"] == []
-    named = {row["text"].split()[1]: row["why"] for row in res["unknown_lines"]}
-    assert "is not a type the reader can read" in named["floor"]
-    assert "gives no type the reader can read" in named["plate"]
+    assert len(res["pairs"]) == 3
+    assert [(w["wall"], w["types"], w["wall_type"]) for w in res["walls"]] == [
+        ("floor", [1], 2), ("floor", [2], 2), ("plate", [1], 1), ("plate", [2], 1)]
 
 
 @pytest.mark.parametrize("wall", [
@@ -407,9 +413,13 @@ def test_a_wall_type_the_reader_cannot_read_names_the_wall_and_refuses_nothing(t
     "fix w all wall/gran model hertz tangential history",
     "fix w all wall/gran",
 ])
-def test_a_truncated_liggghts_wall_line_is_named_never_a_traceback(tmp_path, wall):
-    res, err = audit(tmp_path, liggghts_deck("") + wall + "\n", 1.0)
-    assert len(res["walls"]) == 4 and "fix w all" in err and err.count("fix w all") == 1
+def test_a_truncated_liggghts_wall_line_is_refused_in_one_line_never_a_traceback(tmp_path, wall):
+    """LIGGGHTS stops on each (its own message, the line named)."""
+    deck = tmp_path / "in.deck"
+    deck.write_text(liggghts_deck("") + wall + "\n")
+    (tmp_path / "plate.stl").write_text(PLATE_STL)
+    status, out, err = run_cli(["deck", str(deck), "--g", "1"])
+    assert status == 2 and out == "" and err.count("\n") == 1 and f"({wall}" in err and "LIGGGHTS stops here" in err, err
 
 
 @pytest.mark.parametrize("wall", [

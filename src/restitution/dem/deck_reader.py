@@ -4,8 +4,8 @@ head-on two-sphere contact (:class:`~restitution.dem.deck_state.Deck`), for ever
 What a pair style, its coefficients and its walls mean is an engine's: :data:`DIALECTS` gives the
 dialect of each engine of the registry that has one (:mod:`restitution.dem.engines.lammps.deck`,
 :mod:`restitution.dem.engines.liggghts.deck`), and :data:`PAIR_STYLES` the dialect of each pair
-style. Which commands run (if, jump, label, next, quit, include, variable) is
-:mod:`restitution.dem.deck_script`'s.
+style. Which commands run (if, jump, label, next, quit, include, variable) is the engine's own:
+:func:`read_executed` reads the linear stream of commands it executed.
 """
 
 from __future__ import annotations
@@ -14,13 +14,11 @@ import copy
 import re
 
 from .deck_beside import BESIDE
-from .deck_script import LocatedError, Script
-from .deck_state import (Deck, DeckError, atom_type, explained, fetch, labelmap, number, place, types,
-                         unlabeled)
-from .deck_text import ScriptError, evaluate, words
+from .deck_state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
+from .deck_text import ScriptError, words
 from .engines import ENGINES
 
-__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_deck", "read_executed", "contact_key"]
+__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key"]
 
 #: Engine (a Deck's ``code``) -> its deck dialect: the module that reads its pair style, its
 #: coefficients and its walls, as each registered engine's deck hook names it
@@ -30,7 +28,7 @@ PAIR_STYLES = {style: dialect for dialect in DIALECTS.values() for style in dial
 
 #: Commands with no bearing on a head-on two-sphere contact (first word, or "fix STYLE"). Not here,
 #: so named when met: mass (per-type masses). The script's control flow (if, jump, label, next,
-#: quit, include, variable) is deck_script's.
+#: quit, include, variable) is the engine's.
 _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "communicate", "comm_modify",
                "processors", "region", "lattice", "change_box", "neighbor", "neigh_modify", "timestep", "thermo",
                "thermo_style", "thermo_modify", "dump", "dump_modify", "undump", "run", "unfix", "compute",
@@ -60,71 +58,14 @@ _SHAPED_TEMPLATES = {"particletemplate/multisphere": "clumps of spheres (multisp
                      "particletemplate/superquadric": "superquadrics"}
 #: Runs with different contact settings the audit reports before it refuses the deck
 MAX_STAGES = 100
-#: Commands that may sit in a branch of an if whose condition the reader cannot evaluate: they
-#: neither make atoms, nor run, nor change what the reader reads (units, atom_style and
-#: soft_/hard_particles, though in _IRRELEVANT, are read)
+#: Commands that neither make atoms, nor run, nor change what the reader reads (units, atom_style and
+#: soft_/hard_particles, though in _IRRELEVANT, are read): a run's ``every`` may run them
 _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms", "units",
                                   "atom_style", "soft_particles", "hard_particles"})
 #: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
 #: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
 #: particle templates
 _INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/rate/region"}
-
-
-def read_deck(text: str, radius: dict | None = None, density: dict | None = None, read_file=None) -> Deck:
-    """Parse a deck.
-
-    Parameters
-    ----------
-    text : str
-        The input script.
-    radius, density : dict, optional
-        {type: value}, overriding or completing what the deck states.
-    read_file : callable, optional
-        ``read_file(name)``: the text of a file the deck names (include, jump, read_data), or
-        raises OSError (None: such a deck is refused).
-
-    Returns
-    -------
-    Deck
-        The settings after the deck's last line; ``stages`` holds the settings each ``run`` saw,
-        one entry per change.
-
-    Raises
-    ------
-    DeckError
-        One line naming what cannot be mapped or is missing.
-
-    Examples
-    --------
-    >>> deck = read_deck("create_box 2 box\\npair_style granular\\npair_coeff * * hertz 1e5 0.5\\nrun 100\\n")
-    >>> deck.code, deck.ntypes, len(deck.stages)
-    ('LAMMPS', 2, 1)
-    """
-    deck = Deck()
-    _read(deck, text, read_file)
-    every = [deck] + [snap for _, snap, _ in deck.stages]       # (a clear may have emptied the deck)
-    for d in every:
-        for t, r in (radius or {}).items():
-            d.radius[int(t)] = r
-        for t, rho in (density or {}).items():
-            d.density[int(t)] = rho
-    if not any(d.code for d in every):
-        raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
-                                            "(LIGGGHTS) line")
-    for d in every:
-        if d.code == "LAMMPS" and d.liggghts_mark:
-            # a LIGGGHTS tutorial in LAMMPS' older syntax: LIGGGHTS stops on the pair style (checked in
-            # LIGGGHTS 3.8.0: gran/hooke, gran/hooke/history, gran/hertz/history and granular are
-            # "Invalid pair style"), LAMMPS on the LIGGGHTS commands; neither runs it
-            (loc, line), (sloc, sline) = d.liggghts_mark, d.style_line
-            raise DeckError(place(sloc), sline, f"pair_style {d.style} is LAMMPS', in a LIGGGHTS deck ({place(loc)}: "
-                            f"{' '.join(line.split()[:4])}): LIGGGHTS 3.8.0 stops on it (invalid pair style), and "
-                            "LAMMPS on LIGGGHTS' commands")
-        if d.code == "LAMMPS" and d.atom_style.split()[:1] == ["granular"]:
-            raise DeckError(place(d.atom_style_loc), f"atom_style {d.atom_style}", "LAMMPS has no atom_style "
-                            "granular (LIGGGHTS' name; LAMMPS' is sphere): LAMMPS stops on it")
-    return deck
 
 
 def read_executed(commands, atoms: list, radius: dict | None = None, density: dict | None = None,
@@ -141,7 +82,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     radius, density : dict, optional
         {type: value}, overriding what the engine holds.
     read_file : callable, optional
-        As in :func:`read_deck` (a data file's Pair Coeffs).
+        ``read_file(name)``: the text of a file the deck names (a data file's Pair Coeffs), or
+        raises OSError.
 
     Returns
     -------
@@ -196,6 +138,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                 d.sizes[t] = sorted(sizes)
             else:
                 d.radius[t], d.density[t] = sizes.pop()
+                d.sampled.pop(t, None)
     if not any(d.code for d in [deck] + [snap for _, snap, _ in deck.stages]):
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
@@ -209,7 +152,7 @@ _ENGINE_ONLY = {"set", "variable", "if", "jump", "label", "next", "include", "qu
 
 def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     """The atoms a run sees, as the engine held them: each type's radius and density where all its
-    atoms share one; several (a type of several sizes) named in ``missing``; a type without atoms
+    atoms share one; several (a type of several sizes) in ``sizes``; a type without atoms
     keeps what an inserting fix gives it (a pour) or none (walls only, or unused)."""
     deck.held = {t: sorted(v) for t, v in atoms.items()}
     deck.atoms = deck.atoms or bool(atoms)
@@ -219,6 +162,7 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         dens = {rho for _, rho in sizes}
         deck.missing.pop(t, None)
         deck.sizes.pop(t, None)
+        deck.sampled.pop(t, None)
         if min(radii) <= 0:
             deck.radius.pop(t, None)
             deck.missing[t] = f"type {t} holds point particles (radius 0), which have no contact radius"
@@ -227,40 +171,17 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         else:
             deck.radius.pop(t, None)
             deck.density.pop(t, None)
-            deck.sizes[t] = sorted(sizes)
-
-
-def _read(deck: Deck, text: str, read_file) -> None:
-    def execute(words, line, loc):
-        _execute(deck, words, line, loc, read_file)
-
-    def note(loc, line, why):
-        deck.unknown.append((*loc, line, why))
-
-    def fetch_named(name, loc, line):
-        return fetch(read_file, name, place(loc), line)
-    script = Script(execute, evaluate, note, fetch_named, _INERT)
-    deck.reasons = script.reasons           # shared: a later stage's refusal names its reason too
-    try:
-        script.run(text)
-    except LocatedError as why:
-        raise DeckError(place(why.loc), why.text, str(why)) from None
-    except DeckError as why:
-        raise explained(why, script.reasons) from None
-    if "LIGGGHTS" in {deck.code, *(snap.code for _, snap, _ in deck.stages)} and script.newer:
-        loc, line, what = script.newer
-        raise DeckError(place(loc), line, f"{what}: LIGGGHTS 3.8.0 stops on it (its if compares numbers only, "
-                                          "without |^, and it has no triple quotes)")
+            deck.sizes[t] = _sampled(sorted(set(sizes)))
+            if len(deck.sizes[t]) < len(set(sizes)):
+                deck.sampled[t] = len(set(sizes))
 
 
 def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
-    """One command that runs (the script's control flow is deck_script's), as far as a head-on
+    """One command that ran (the script's control flow is the engine's), as far as a head-on
     contact is concerned."""
     where = place(loc)
     cmd = words[0]
     words = unlabeled(deck, words, where, line)
-    if not deck.liggghts_mark and DIALECTS["LIGGGHTS"].liggghts_only(words):
-        deck.liggghts_mark = (loc, line)
     if cmd in _NEEDS_WORDS and len(words) < _NEEDS_WORDS[cmd]:
         raise DeckError(where, line, f"{cmd} needs at least {_NEEDS_WORDS[cmd] - 1} argument(s)")
     elif cmd == "labelmap" and len(words) >= 2:
@@ -284,7 +205,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             _inserted(deck)
     elif cmd == "clear":
         # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
-        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages, reasons=deck.reasons)
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
         deck.__dict__.update(fresh.__dict__)
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
@@ -447,8 +368,7 @@ def _stage(deck: Deck, loc, line: str) -> None:
                                           "audit reports each, and stops here")
     stages, deck.stages = deck.stages, []
     # the lists of lines not understood are the whole deck's, shared by every stage
-    snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored,
-                                id(deck.reasons): deck.reasons})
+    snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored})
     deck.stages = stages
     stages.append(([(loc, line)], snap, key))
 
@@ -634,6 +554,18 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
 #: Sizes sampled across a pour's range of diameters, its ends included: a law whose eps is not
 #: monotonic in size between them would still show its turn to within one sample step
 _RANGE_SAMPLES = 9
+
+
+def _sampled(sizes: list) -> list:
+    """At most about _RANGE_SAMPLES of a type's held sizes, sorted by radius: evenly spaced in that
+    order, the smallest and largest radius and the lightest and densest among them (pairing every
+    size of a type with hundreds of sizes with every other costs minutes where the eps of a few
+    spread over them tells the range)."""
+    if len(sizes) <= _RANGE_SAMPLES:
+        return sizes
+    picks = {sizes[round(k * (len(sizes) - 1) / (_RANGE_SAMPLES - 1))] for k in range(_RANGE_SAMPLES)}
+    picks |= {min(sizes, key=lambda s: s[1]), max(sizes, key=lambda s: s[1])}
+    return sorted(picks)
 
 
 def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:

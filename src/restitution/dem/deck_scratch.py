@@ -28,14 +28,14 @@ DYNAMIC = "label restitution_unchecked_{}"
 #: Commands never executed: they run code, write files, change what the engine echoes, or end the
 #: skip-run mode. None changes a contact.
 SKIPPED_COMMANDS = frozenset({
-    "shell", "python", "plugin", "write_data", "write_restart", "write_dump", "write_coeff", "dump",
+    "shell", "python", "plugin", "pair_write", "bond_write", "angle_write", "dihedral_write", "write_data", "write_restart", "write_dump", "write_coeff", "dump",
     "dump_modify", "undump", "restart", "log", "print", "info", "echo", "timer", "group2ndx", "ndx2group",
     "balance", "rerun", "partition", "message", "server", "mdi", "kim", "net", "geturl", "fitpod"})
 #: Fix styles never executed (they write files or print): kept as a fix of the same ID that does
 #: nothing, so unfix and fix_modify still find it
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
                          "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
-                         "check/timestep/gran", "couple/", "ave/euler", "dump")
+                         "couple/", "ave/euler", "dump")
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
 RUN_COMMANDS = ("run", "minimize")
 #: A deck's folder copied whole; a larger one is refused
@@ -211,11 +211,6 @@ def _rewritten(text: str, label, scratch: Scratch, marker) -> str:
     return "\n".join(out)
 
 
-def _first_word(command: str) -> str:
-    words = normalised(command).split()
-    return words[0] if words else ""
-
-
 def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
     """The command made safe (None where it is already)."""
     key = normalised(command)
@@ -255,33 +250,33 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
 
 
 def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
-    """An ``if`` with each quoted command made safe, and each known as a command of its line."""
-    pieces = segments_of(" ".join(normalised(command).split(" ")))
-    changed, out = False, []
-    for piece, quote in pieces:
+    """An ``if`` with every command it may run made safe, and each known as a command of its line.
+
+    The conditions are the argument after ``if`` and after each ``elif``; every other argument but
+    the keywords is a command, quoted or not, and its name may come from a variable (LAMMPS
+    substitutes it when the branch runs): judged by its text, never by whether it looks like one."""
+    changed, out, previous = False, [], ""
+    for piece, quote in segments_of(normalised(command)):
         if quote and piece.endswith(quote) and len(piece) >= 2 * len(quote):
             inner = piece[len(quote):-len(quote)]
-            first = _first_word(inner)
-            if first and first != _first_word(command) and not _condition_like(inner):
-                key = normalised(inner)
-                scratch.lines.setdefault(key, loc)
+            if previous not in ("if", "elif") and normalised(inner):
+                scratch.lines.setdefault(normalised(inner), loc)
                 new = _safe(inner, loc, scratch, marker)
                 if new is not None:
                     changed = True
                     piece = f"{quote}{new}{quote}"
-        elif not quote and out and re.search(r"(?<!\S)quit(?!\S)", piece):
-            # an unquoted word is a command of its own there (then quit): the only one-word
-            # command that needs making safe
-            changed = True
-            piece = re.sub(r"(?<!\S)quit(?!\S)", lambda _: f'"{_safe("quit", loc, scratch, marker)}"', piece)
+            previous = piece
+        elif not quote:
+            words = re.split(r"(\s+)", piece)
+            for k, word in enumerate(words):
+                if not word or word.isspace():
+                    continue
+                if previous not in ("if", "elif") and word not in ("if", "then", "elif", "else"):
+                    new = _safe(word, loc, scratch, marker)
+                    if new is not None:
+                        changed = True
+                        words[k] = f'"{new}"'
+                previous = word
+            piece = "".join(words)
         out.append(piece)
     return "".join(out) if changed else None
-
-
-_COMMAND = re.compile(r"[a-z_][a-z0-9_/]*$")
-
-
-def _condition_like(text: str) -> bool:
-    """A quoted if condition, not a command: its first word is no command name."""
-    return not _COMMAND.match(_first_word(text))
-

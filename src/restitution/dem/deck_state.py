@@ -17,10 +17,9 @@ from typing import Protocol
 
 from ..core.errors import ParameterError
 from .calibrate import calibrate
-from .deck_text import PLACEHOLDER
 from .pair import Pair
 
-__all__ = ["DeckError", "Deck", "DeckDialect", "UnevaluatedNumber", "explained", "MAX_TYPES", "FLAT_WALLS", "types", "number",
+__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e"]
 
 
@@ -104,9 +103,7 @@ class Deck:
     # (run locations, the deck as that run sees it, its contact key), one per change of contact settings
     stages: list = field(default_factory=list)
     inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
-    reasons: dict = field(default_factory=dict)   # the script's: an unevaluated placeholder -> why
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
-    liggghts_mark: tuple = ()                     # (loc, text) of the first command only LIGGGHTS has
     dt: float | None = None                       # the timestep command's, None where the deck has none
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
                                                   # (restitution.dem.deck_beside), in force now
@@ -117,6 +114,7 @@ class Deck:
     # audited at then, ((R1, rho1), (R2, rho2)), else ()
     sizes: dict = field(default_factory=dict)
     at: tuple = ()
+    sampled: dict = field(default_factory=dict)   # type -> how many sizes it held where ``sizes`` is a sample
     # LAMMPS pair_style hybrid or hybrid/overlay ("" otherwise), its granular sub-style, and the
     # pairs another sub-style covers, (i, j) -> {its names}
     hybrid: str = ""
@@ -214,56 +212,8 @@ def types(spec: str, ntypes: int, where: str, text: str) -> range:
     return range(lo, hi + 1)
 
 
-class UnevaluatedNumber(DeckError):
-    """A number the deck gives through a variable or $(...) without a value here: ``mark`` is the
-    placeholder, whose reason the script kept (see :func:`explained`).
-
-    Parameters
-    ----------
-    where, text, why
-        As :class:`DeckError`'s.
-    mark : str
-        The placeholder the substitution left (:data:`restitution.dem.deck_text.PLACEHOLDER`).
-
-    Examples
-    --------
-    >>> UnevaluatedNumber("line 2", "x", "needs variable k", "<unevaluated-variable-k>").mark
-    '<unevaluated-variable-k>'
-    """
-
-    def __init__(self, where: str, text, why: str, mark: str):
-        super().__init__(where, text, why)
-        self.mark = mark
-
-
-def explained(exc: DeckError, reasons: dict) -> DeckError:
-    """The refusal with the reason its variable or expression has no value (the sub-expression).
-
-    Parameters
-    ----------
-    exc : DeckError
-        The refusal, its message completed in place where it is an :class:`UnevaluatedNumber`.
-    reasons : dict
-        The script's placeholder -> why it has no value.
-
-    Returns
-    -------
-    DeckError
-        ``exc``.
-
-    Examples
-    --------
-    >>> exc = UnevaluatedNumber("line 2", None, "needs variable k", "<unevaluated-variable-k>")
-    >>> str(explained(exc, {"<unevaluated-variable-k>": "never defined"}))
-    'line 2: needs variable k: never defined'
-    """
-    if isinstance(exc, UnevaluatedNumber) and exc.mark in reasons:
-        exc.args = (f"{exc.args[0]}: {reasons[exc.mark]}",)
-    return exc
-
-
 def number(token: str, where: str, text: str) -> float:
-    """A word as a number, or the refusal naming why it is none (a variable or $(...) without a value).
+    """A word as a number, or the refusal naming it.
 
     Parameters
     ----------
@@ -279,7 +229,7 @@ def number(token: str, where: str, text: str) -> float:
     Raises
     ------
     DeckError
-        :class:`UnevaluatedNumber` for a placeholder, else DeckError.
+        Where the word is no number.
 
     Examples
     --------
@@ -289,14 +239,7 @@ def number(token: str, where: str, text: str) -> float:
     try:
         return float(token)
     except ValueError:
-        m = PLACEHOLDER.search(token)
-        if m and m.group(1) == "variable":
-            raise UnevaluatedNumber(where, text, f"needs variable {m.group(2)}, which has no value the reader can "
-                                                 "evaluate", m.group(0)) from None
-        if m:
-            raise UnevaluatedNumber(where, text, "needs a $(...) expression the reader does not evaluate",
-                                    m.group(0)) from None
-        raise DeckError(where, text, f"{token!r} is not a number the reader can evaluate") from None
+        raise DeckError(where, text, f"{token!r} is not a number") from None
 
 
 def atom_type(token: str, where: str, text: str, what: str = "an atom type") -> int:
@@ -505,14 +448,14 @@ def spheres(deck: Deck, i: int, j: int) -> Pair:
     >>> spheres(Deck(radius={1: 0.5}, density={1: 2.0}), 1, 1).R1
     0.5
     """
-    if deck.at:           # one choice among a type's several sizes
-        (r1, rho1), (r2, rho2) = deck.at
-        return Pair.spheres(r1, r2, rho1, rho2)
     for t in (i, j):
         if t in deck.shapes:
             loc, text, what = deck.shapes[t]
             raise DeckError(place(loc), text, f"type {t}'s particles are {what}, not single spheres: the reader "
                                               "audits the head-on contact of two spheres only")
+    if deck.at:           # one choice among a type's several sizes (a clump's spheres refused above)
+        (r1, rho1), (r2, rho2) = deck.at
+        return Pair.spheres(r1, r2, rho1, rho2)
         why = f" ({deck.missing[t]})" if t in deck.missing else (
             " (no set, particle template, pour or data file gives it one: a type without particles?)")
         if t not in deck.radius:

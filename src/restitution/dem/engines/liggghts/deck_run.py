@@ -1,0 +1,135 @@
+"""LIGGGHTS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck_scratch`) runs in
+the ``liggghts`` binary with every command echoed after LIGGGHTS' own substitution (``-echo
+screen``), within a wall-time budget.
+
+LIGGGHTS 3.8.0 has no ``-skiprun``: each run's marker runs one step instead (``run 1``), which sets
+the run up as the deck's own run would (LIGGGHTS checks its materials, pair coefficients and meshes
+there) and does what its first step does (an insertion fix due then inserts, so a later ``set`` or
+``group`` finds the atoms it would find), and then writes the atoms' type, radius and mass as
+LIGGGHTS holds them. Particles a run would insert later are not there: their sizes come from the
+particle templates in the executed commands, as the reader reads them. A loop that waits for a
+value the deck's runs would change ends by the budget.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+from pathlib import Path
+
+from ...deck_child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from .run import MPI_NOT_STARTED, MPI_START_RETRIES
+
+__all__ = ["ENGINE", "INSTALL", "available", "marker", "ending", "run_copy"]
+
+#: The engine's name, as its refusals say it
+ENGINE = "LIGGGHTS"
+#: How to get it, said in one line where it is not installed
+INSTALL = "the deck is run by LIGGGHTS itself, whose binary liggghts is not on PATH: as root, apt-get install " \
+          "liggghts (Debian's package, LIGGGHTS 3.8.0)"
+#: Full precision for the dump's columns (LIGGGHTS' default %g keeps 6 digits of a mass)
+_FORMAT = 'modify format "%d %.17g %.17g"'
+
+
+def available() -> bool:
+    """Whether the ``liggghts`` binary is on PATH.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> isinstance(available(), bool)
+    True
+    """
+    return shutil.which("liggghts") is not None
+
+
+def marker(root: Path):
+    """The function that writes stage k's marker: a run of one step, then the atoms as LIGGGHTS
+    holds them.
+
+    Parameters
+    ----------
+    root : Path
+        The scratch directory.
+
+    Returns
+    -------
+    callable
+        ``f(k, run_text) -> str``.
+
+    Examples
+    --------
+    >>> print(marker(Path("/s"))(0, "run 10"))
+    run 1 pre yes post no
+    write_dump all custom /s/atoms type radius mass modify format "%d %.17g %.17g" append yes
+    <BLANKLINE>
+    """
+    def text(k: int, run: str) -> str:
+        # "pre yes": the set-up of every run of the deck's, not the shortened one LIGGGHTS may take
+        # for a run right after another
+        return f"run 1 pre yes post no\nwrite_dump all custom {root / ATOMS} type radius mass {_FORMAT} append yes\n"
+    return text
+
+
+def ending(root: Path) -> str:
+    """The commands that write the atoms where the deck ends.
+
+    Parameters
+    ----------
+    root : Path
+        The scratch directory.
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> ending(Path("/s")).split()[:3]
+    ['write_dump', 'all', 'custom']
+    """
+    return f"write_dump all custom {root / ATOMS_AT_END} type radius mass {_FORMAT}\n"
+
+
+def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
+    """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step, within ``budget`` seconds.
+
+    Parameters
+    ----------
+    deck : Path
+        The copied input script (its folder the working directory).
+    root : Path
+        The scratch directory (driver, screen and atoms files).
+    budget : float
+        Wall-time budget in seconds.
+
+    Returns
+    -------
+    EngineRun
+    """
+    # the deck included, then the end's atoms: a deck that jumps to another file never reaches
+    # the include appended to its own
+    driver = root / "driver"
+    driver.write_text(f"include {deck}\n{ending(root)}")
+    env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "LANG")}
+    env.update(HOME=str(root), OMP_NUM_THREADS="1")
+    # its screen is its standard output, line-buffered (stdbuf): an error that aborts MPI loses what
+    # a -screen file still held in its buffer, the echo of the command it stopped on with it
+    argv = ["liggghts", "-echo", "screen", "-log", "none", "-nocite", "-in", str(driver)]
+    stdbuf = shutil.which("stdbuf")
+    for _ in range(1 + MPI_START_RETRIES):
+        for name in (ATOMS, ATOMS_AT_END):
+            (root / name).unlink(missing_ok=True)
+        done = run_child([stdbuf, "-oL", *argv] if stdbuf else argv, deck.parent, env, root, budget,
+                         screen_is_stdout=True)
+        # Open MPI's singleton start fails now and then under load, before LIGGGHTS reads a line
+        if not (done.status and MPI_NOT_STARTED in done.echo + done.error):
+            break
+    if done.status and not done.timed_out:
+        # LIGGGHTS writes its ERROR to the screen file, and ends with status 1
+        done.error = next((ln for ln in reversed(done.echo.splitlines()) if ln.startswith("ERROR")), "") \
+            or done.error or f"LIGGGHTS ended with status {done.status}"
+    return done
