@@ -8,7 +8,7 @@ import pytest
 
 from cli_run import run_cli
 from restitution.dem.contact import Contact
-from restitution.dem.deck_beside import drag_eps
+from restitution.dem.deck.beside import drag_eps
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.pair import Pair
 

@@ -10,7 +10,7 @@ import pytest
 
 from restitution.dem.engines import ENGINES
 from restitution.dem.extrapolate import richardson
-from restitution.dem.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
+from restitution.dem.engines.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
                                            typed_e_table)
 from engine_case import MATERIAL, PAIR  # noqa: E402
 

@@ -48,7 +48,7 @@ rule dem_study:
 
 
 # The e a user types into each code against the eps the code really gives (issue 25): the library's
-# table (restitution.dem.typed_e_table), each row with the engine that confirms it. The table reads the
+# table (restitution.dem.engines.typed_e_table), each row with the engine that confirms it. The table reads the
 # engine registry, so every registered engine's modules are inputs (code() follows the registry).
 TYPED_E_FILES = ["results/dem/typed_e.csv", "results/dem/typed_e.tex", "results/dem/typed_e_values.tex"]
 

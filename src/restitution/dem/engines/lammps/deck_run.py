@@ -1,4 +1,4 @@
-"""LAMMPS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck_scratch`) runs in
+"""LAMMPS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck.scratch`) runs in
 the real engine with every run skipped (``-skiprun``) and every command echoed after LAMMPS' own
 substitution (``-echo screen``), in a child process with a wall-time budget. Each run's marker
 writes the atoms' type, radius and mass as LAMMPS holds them then.
@@ -10,7 +10,7 @@ import os
 import sys
 from pathlib import Path
 
-from ...deck_child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, run_child
 from . import run
 
 __all__ = ["ENGINE", "INSTALL", "available", "marker", "ending", "run_copy"]

@@ -1,4 +1,4 @@
-"""LIGGGHTS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck_scratch`) runs in
+"""LIGGGHTS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck.scratch`) runs in
 the ``liggghts`` binary with every command echoed after LIGGGHTS' own substitution (``-echo
 screen``), within a wall-time budget.
 
@@ -17,7 +17,7 @@ import os
 import shutil
 from pathlib import Path
 
-from ...deck_child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, run_child
 from .run import MPI_NOT_STARTED, MPI_START_RETRIES
 
 __all__ = ["ENGINE", "INSTALL", "available", "marker", "ending", "run_copy"]

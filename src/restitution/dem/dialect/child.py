@@ -1,4 +1,4 @@
-"""An engine's pass through a deck's scratch copy (:mod:`restitution.dem.deck_scratch`), as a child
+"""An engine's pass through a deck's scratch copy (:mod:`restitution.dem.deck.scratch`), as a child
 process within a wall-time budget and an output cap: what it echoed, the atoms its run markers and
 the deck's end wrote, its error and whether the budget ended it. Each engine's ``deck_run`` module
 says how its engine is started and what its markers write.
@@ -24,10 +24,28 @@ _MAX_OUTPUT = 512 * 2 ** 20
 
 @dataclass
 class EngineRun:
-    """What an engine did with a deck's scratch copy: ``echo`` its screen (the commands it ran,
-    echoed, and its messages), ``atoms`` the atoms each run's marker wrote, ``at_end`` those where
-    the deck ended, ``error`` the engine's error output (or "" where it ended well or was stopped),
-    ``timed_out`` whether the budget ended it, ``status`` its exit status."""
+    """What an engine did with a deck's scratch copy.
+
+    Parameters
+    ----------
+    echo : str
+        Its screen: the commands it ran, echoed, and its messages.
+    atoms : str
+        The atoms each run's marker wrote.
+    at_end : str
+        The atoms where the deck ended.
+    error : str
+        The engine's error output ("" where it ended well or was stopped).
+    timed_out : bool
+        Whether the budget ended it.
+    status : int or None
+        Its exit status (negative where the budget's kill ended it).
+
+    Examples
+    --------
+    >>> EngineRun("run 0", "", "", "", False, 0).timed_out
+    False
+    """
     echo: str
     atoms: str
     at_end: str
