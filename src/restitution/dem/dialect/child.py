@@ -11,8 +11,9 @@ import subprocess
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Protocol
 
-__all__ = ["EngineRun", "ATOMS", "ATOMS_AT_END", "run_child"]
+__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
 ATOMS = "atoms"
@@ -52,6 +53,40 @@ class EngineRun:
     error: str
     timed_out: bool
     status: int | None = None
+
+
+class DeckRun(Protocol):
+    """What an engine's ``deck_run`` module provides, as the deck audit (:mod:`restitution.dem.deck`)
+    runs a deck's scratch copy in that engine; each module's functions say what is its own.
+
+    Parameters
+    ----------
+    ENGINE : str
+        The engine's name, as its refusals say it.
+    INSTALL : str
+        How to get the engine, said in one line where it is not installed.
+
+    Examples
+    --------
+    >>> from restitution.dem.engines.lammps import deck_run
+    >>> deck_run.ENGINE, callable(deck_run.run_copy)
+    ('LAMMPS', True)
+    """
+    ENGINE: str
+    INSTALL: str
+
+    def available(self) -> bool:
+        """Whether the engine can be started here."""
+
+    def marker(self, root: Path):
+        """The function ``f(k, run_text) -> str`` that writes stage k's marker: the text that stands for
+        the deck's run ``run_text`` in the scratch copy (``root`` the scratch directory), which runs
+        as far as the engine must and then appends the atoms to ``root``/ATOMS."""
+
+    def run_copy(self, deck: Path, root: Path, budget: float) -> EngineRun:
+        """Run the scratch copy ``deck`` (its folder the working directory; ``root`` the scratch
+        directory of its screen and atoms files) in the engine within ``budget`` seconds of wall
+        time."""
 
 
 def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, screen_is_stdout: bool = False) -> EngineRun:
