@@ -225,7 +225,7 @@ bench: $(STAMP)
 scene: $(STAMP)
 	@test -n "$(SCENE)" || { echo "make scene needs SCENE=<scene file>, e.g. make scene SCENE=scenes/small.yaml" >&2; exit 2; }
 	$(GUARDED) $(SNAKEMAKE) scene --config scene=$(SCENE) $(QUIET)
-	@echo "report: results/scenes/$$($(BIN)/python -c 'import sys; from restitution.dem.scene_file import read_scene; print(read_scene(sys.argv[1]).name)' $(SCENE))/report.html"
+	@echo "report: results/scenes/$$($(BIN)/python -c 'import sys; from restitution.dem.scene.file import read_scene; print(read_scene(sys.argv[1]).name)' $(SCENE))/report.html"
 
 # The workflow scripts as Jupyter notebooks (notebooks/, not tracked), each with a first cell that
 # replays the pipeline's last run of its rule, so run `make paper` first.

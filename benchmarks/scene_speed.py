@@ -22,7 +22,7 @@ import numpy as np
 
 
 from restitution.dem.scene import answer_scene
-from restitution.dem.scene_file import scene_from_dict
+from restitution.dem.scene.file import scene_from_dict
 
 TARGET_SECONDS = 10.0
 

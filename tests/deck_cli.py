@@ -36,3 +36,28 @@ def audit(*argv):
     status, out, err = run(*argv, "--json")
     assert status == 0, err
     return json.loads(out), "".join(ln for ln in err.splitlines(True) if not ln.startswith(NOTE))
+
+
+#: A LIGGGHTS deck's granular box for two atom types, as the deck tests begin their LIGGGHTS decks
+LIGGGHTS_BOX = """\
+atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region reg block -0.05 0.05 -0.05 0.05 0 0.1 units box
+create_box 2 reg
+neighbor 0.002 bin
+neigh_modify delay 0
+"""
+
+
+def lammps_spheres(*spheres) -> str:
+    """A LAMMPS deck's start in SI units: one sphere of each type, type k's (diameter, density) the
+    k-th of ``spheres``, 0.5 apart on x, and pair_style granular."""
+    lines = ["units si", "atom_style sphere", "comm_modify vel yes", "region box block -1 1 -1 1 -1 1",
+             f"create_box {len(spheres)} box"]
+    lines += [f"create_atoms {k} single {0.5 * (k - 1):g} 0 0" for k in range(1, len(spheres) + 1)]
+    lines += [f"set type {k} diameter {d:g} density {rho:g}" for k, (d, rho) in enumerate(spheres, 1)]
+    return "\n".join([*lines, "pair_style granular"]) + "\n"

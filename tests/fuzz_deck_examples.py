@@ -115,8 +115,8 @@ def _ntypes(lines: list[str]) -> int | None:
 def _engine_view(path: Path, root: Path):
     """What LAMMPS executed (commands, the atoms it held at each run) in the audit's safe copy."""
     from restitution.dem.deck import BUDGET
-    from restitution.dem.deck_scratch import scratch_copy
-    from restitution.dem.deck_stream import executed, snapshots
+    from restitution.dem.deck.scratch import scratch_copy
+    from restitution.dem.deck.stream import executed, snapshots
     from restitution.dem.engines.lammps import deck_run
 
     scratch = scratch_copy(path, root, deck_run.marker(root))

@@ -74,7 +74,7 @@ def _answer(scene, method: str):
     (refused) or otherwise (a failure)."""
     from restitution.core.errors import ParameterError
     from restitution.dem.scene import answer_scene
-    from restitution.dem.scene_file import scene_from_dict
+    from restitution.dem.scene.file import scene_from_dict
 
     try:
         return answer_scene(scene_from_dict(copy.deepcopy(scene))), None

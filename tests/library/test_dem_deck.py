@@ -9,7 +9,7 @@ import math
 import pytest
 
 from dashpot import damped_overlap, dashpot_eps
-from deck_cli import NOTE, audit, run
+from deck_cli import LIGGGHTS_BOX, NOTE, audit, run
 from restitution.cli import main
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps.contact import lammps_contact
@@ -22,16 +22,7 @@ LIGGGHTS_DECK = """\
 # two materials, limitForce on
 variable E1 equal 5e7
 variable rad equal 0.5*0.002
-atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-region reg block -0.05 0.05 -0.05 0.05 0 0.1 units box
-create_box 2 reg
-neighbor 0.002 bin
-neigh_modify delay 0
+""" + LIGGGHTS_BOX + """\
 fix m1 all property/global youngsModulus peratomtype ${E1} 2e8
 fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
 fix m3 all property/global coefficientRestitution peratomtypepair 2 &
@@ -67,8 +58,8 @@ def test_a_liggghts_deck_with_two_materials_and_its_exact_lines(tmp_path):
     assert all(abs(e - 0.5) < 1e-8 for e in again[(1, 2)]["eps"])
 
 
-LAMMPS_DECK = """\
-variable e index 0.5
+#: Two spheres of two types, in LAMMPS' default units (the decks below add their contact)
+TWO_SPHERES = """\
 atom_style sphere
 region box block -1 1 -1 1 -1 1
 create_box 2 box
@@ -76,6 +67,8 @@ create_atoms 1 single 0 0 0
 create_atoms 2 single 0.5 0 0
 set type 1 diameter 0.002 density 2500
 set type 2 diameter 0.003 density 7800
+"""
+LAMMPS_DECK = "variable e index 0.5\n" + TWO_SPHERES + """\
 timestep 1e-7
 pair_style granular
 pair_coeff 1 1 hertz/material 5e7 ${e} 0.3 damping tsuji tangential linear_nohistory 0 0 limit_damping
@@ -125,14 +118,7 @@ def test_a_tsuji_deck_says_which_lammps_its_tsuji_is(tmp_path):
 
 
 #: Two types with their own E, nu and damping, limit_damping on type 1 only, no pair_coeff 1 2
-MIXED_DECK = """\
-atom_style sphere
-region box block -1 1 -1 1 -1 1
-create_box 2 box
-create_atoms 1 single 0 0 0
-create_atoms 2 single 0.5 0 0
-set type 1 diameter 0.002 density 2500
-set type 2 diameter 0.003 density 7800
+MIXED_DECK = TWO_SPHERES + """\
 pair_style granular
 pair_coeff 1 1 hertz/material 5e7 {d1} 0.3 damping {damping} tangential linear_nohistory 0 0 limit_damping
 pair_coeff 2 2 hertz/material 2e8 {d2} 0.2 damping {damping} tangential linear_nohistory 0 0

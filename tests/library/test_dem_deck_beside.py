@@ -7,22 +7,14 @@ import json
 import pytest
 
 from cli_run import run_cli
+from deck_cli import lammps_spheres
 from restitution.dem.contact import Contact
-from restitution.dem.deck_beside import drag_eps
+from restitution.dem.deck.beside import drag_eps
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.pair import Pair
 
 T = "tangential linear_nohistory 0 0"
-HEAD = """units si
-atom_style sphere
-comm_modify vel yes
-region box block -1 1 -1 1 -1 1
-create_box 2 box
-create_atoms 1 single 0 0 0
-create_atoms 2 single 0.5 0 0
-set type 1 diameter 0.02 density 2500
-set type 2 diameter 0.03 density 1000
-pair_style granular
+HEAD = lammps_spheres((0.02, 2500), (0.03, 1000)) + """\
 pair_coeff * * hooke 1000 500 {T}
 group two type 2
 """

@@ -272,7 +272,7 @@ def test_particles_never_shown_by_the_engine_are_not_reported_absent(tmp_path):
     # holds are unknown, and "type 1 has no particle" with no pair would be a guess
     text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nlabel l\njump SELF l\n"
     from restitution.dem.deck import audit_deck
-    from restitution.dem.deck_state import DeckError
+    from restitution.dem.dialect.state import DeckError
     with pytest.raises(DeckError, match="before any run or the deck's end"):
         audit_deck(text, [1.0], path=_write(tmp_path, text), budget=5.0)
 

@@ -7,6 +7,7 @@ import json
 import pytest
 
 from cli_run import run_cli
+from deck_cli import lammps_spheres
 from restitution.dem.deck import DT_TOL, FEW_STEPS
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.pair import Pair
@@ -14,15 +15,7 @@ from restitution.dem.pair import Pair
 pytestmark = pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed "
                                 "(pip install -e '.[dem]')")
 
-HEAD = """units si
-atom_style sphere
-comm_modify vel yes
-region box block -1 1 -1 1 -1 1
-create_box 1 box
-create_atoms 1 single 0 0 0
-set type 1 diameter 0.02 density 2500
-pair_style granular
-"""
+HEAD = lammps_spheres((0.02, 2500))
 T = "tangential linear_nohistory 0 0"
 #: (pair_coeff line, the deck's time step): a handful of steps per contact at every speed audited
 CASES = [(f"pair_coeff * * hooke 1000 50 {T}", 2e-3),

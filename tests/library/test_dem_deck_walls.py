@@ -9,6 +9,7 @@ import math
 import pytest
 
 from cli_run import run_cli
+from deck_cli import LIGGGHTS_BOX
 from restitution.cli import main
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.engines.liggghts import run as liggghts_run
@@ -137,17 +138,7 @@ def test_the_text_output_lists_the_walls(tmp_path):
     assert text.count("on wall w2") == 2
 
 
-LIGGGHTS_DECK = """\
-atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-region reg block -0.05 0.05 -0.05 0.05 0 0.1 units box
-create_box 2 reg
-neighbor 0.002 bin
-neigh_modify delay 0
+LIGGGHTS_DECK = LIGGGHTS_BOX + """\
 fix m1 all property/global youngsModulus peratomtype 5e7 2e8
 fix m2 all property/global poissonsRatio peratomtype 0.3 0.25
 fix m3 all property/global coefficientRestitution peratomtypepair 2 0.6 0.5 0.5 0.4

@@ -14,7 +14,7 @@ from restitution.dem.engines.liggghts.contact import liggghts_contact
 from restitution.dem.engines.liggghts.design import liggghts_design
 from restitution.dem.engines.liggghts.run import (available, liggghts_eps_extrapolated, liggghts_pair_style,
                                                   liggghts_states)
-from restitution.dem.typed_e_table import TYPED_E_CODES
+from restitution.dem.engines.typed_e_table import TYPED_E_CODES
 from engine_case import MATERIAL, PAIR, SPEEDS  # noqa: E402
 
 pytestmark = [pytest.mark.dem, pytest.mark.slow,

@@ -9,8 +9,9 @@ from pathlib import Path
 import pytest
 
 from restitution.dem.engines import ENGINES
-from restitution.dem.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
-                                           typed_e_engine_cases, typed_e_engine_results, typed_e_table)
+from restitution.dem.engines.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES,
+                                                   TYPED_E_ENGINE_RTOL, typed_e_engine_cases,
+                                                   typed_e_engine_results, typed_e_table)
 from engine_case import MATERIAL, PAIR  # noqa: E402
 
 DOCS = Path(__file__).resolve().parents[2] / "docs" / "howto"

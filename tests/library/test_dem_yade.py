@@ -14,7 +14,7 @@ from restitution.dem.engines.yade.contact import yade_mindlin_contact, yade_visc
 from restitution.dem.engines.yade.design import yade_design
 from restitution.dem.engines.yade.run import (available, mindlin_material, viscel_material, yade_eps_extrapolated,
                                               yade_states)
-from restitution.dem.typed_e_table import TYPED_E_CODES
+from restitution.dem.engines.typed_e_table import TYPED_E_CODES
 from engine_case import MATERIAL, PAIR, SPEEDS  # noqa: E402
 
 pytestmark = [pytest.mark.dem, pytest.mark.slow,

@@ -218,7 +218,7 @@ def test_dem_contact_times_and_reach_come_from_the_closed_form():
 def test_typed_e_table_hertz_and_hooke_rows_agree_exactly():
     """LIGGGHTS' hertz law is (3/2, 1/4), its hooke law (1, 0): both are the dashpot at the same
     Omega', so their typed-e rows are equal to rounding; and they match the reference integrator."""
-    from restitution.dem.typed_e_table import TYPED_E_CODES, typed_e_table
+    from restitution.dem.engines.typed_e_table import TYPED_E_CODES, typed_e_table
     rows = typed_e_table([0.1, 0.5, 0.9])
     for r in rows:
         for rule in ("limitForce off (default)", "limitForce on"):

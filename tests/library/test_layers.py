@@ -140,3 +140,72 @@ def test_the_rung_checks_see_a_cycle_and_a_private_import(tmp_path):
     (fast / "b.py").write_text("def f():\n    from .a import g\n")
     assert _private_imports(tmp_path) == ["fast/a.py imports ['_Quote'] from fast.b"]
     assert sorted(_cycles(tmp_path)) == [("fast.a", "fast.b"), ("fast.b", "fast.a")]
+
+
+# ------------------------------------------------------------------ dem: folders import one way
+def _dem_folder(package: str) -> str:
+    """The folder node of a package of dem: ``dem`` for its top-level files, ``dem/deck`` for a
+    subfolder's, ``dem/engines/lammps`` for an engine's (each engine its own node)."""
+    parts = package.split(".")[1:]   # below dem
+    if parts and parts[0] == "engines":
+        return "/".join(["dem", *parts[:2]]) if len(parts) > 1 else "dem/engines"
+    return "/".join(["dem", *parts[:1]])
+
+
+def _dem_folder_edges(root: Path = PKG) -> set[tuple[str, str]]:
+    """(importing folder, imported folder) for every import between two folders of dem, lazy ones
+    and absolute ones (``restitution.dem.x``) included."""
+    paths = sorted((root / "dem").rglob("*.py"))
+    modules = {_module_name(p, root): p for p in paths}
+    # the folder of a module is its package's: a subfolder's __init__ belongs to that subfolder
+    node = {m: _dem_folder(m if p.name == "__init__.py" else m.rsplit(".", 1)[0]) for m, p in modules.items()}
+    edges = set()
+    for m, path in modules.items():
+        here = m.split(".")
+        package = here if path.name == "__init__.py" else here[:-1]
+        for n in ast.walk(ast.parse(path.read_text(), filename=str(path))):
+            targets = []
+            if isinstance(n, ast.ImportFrom) and n.level:
+                base = ".".join(package[:len(package) - (n.level - 1)] + ([n.module] if n.module else []))
+                targets = [base, *(f"{base}.{a.name}" for a in n.names)]
+            elif isinstance(n, ast.ImportFrom) and (n.module or "").startswith("restitution."):
+                base = n.module.removeprefix("restitution.")
+                targets = [base, *(f"{base}.{a.name}" for a in n.names)]
+            elif isinstance(n, ast.Import):
+                targets = [a.name.removeprefix("restitution.") for a in n.names if a.name.startswith("restitution.")]
+            for t in targets:
+                if t in modules and node[t] != node[m]:
+                    edges.add((node[m], node[t]))
+    return edges
+
+
+def _folder_cycles(edges: set[tuple[str, str]]) -> list[tuple[str, str]]:
+    graph = {}
+    for a, b in edges:
+        graph.setdefault(a, set()).add(b)
+        graph.setdefault(b, set())
+    return sorted((a, b) for a in graph for b in _reach(graph, a) if b != a and a in _reach(graph, b))
+
+
+def test_dem_folders_import_one_way():
+    """No folder of dem imports one that imports it back: the model at dem's top, the dialects'
+    base (dialect) below the engines, the deck reader and scenes above them."""
+    edges = _dem_folder_edges()
+    assert ("dem/deck", "dem/engines/lammps") in edges   # the check sees the real imports
+    assert _folder_cycles(edges) == []
+
+
+def test_the_folder_check_sees_the_flat_layout(tmp_path):
+    """dem as it was: the deck reader at dem's top importing an engine's dialect, which imports the
+    deck state back from dem's top."""
+    dem = tmp_path / "dem"
+    (dem / "engines" / "lammps").mkdir(parents=True)
+    for f in ("__init__.py", "engines/__init__.py", "engines/lammps/__init__.py"):
+        (dem / f).write_text("")
+    (dem / "deck_state.py").write_text("from .pair import Pair\n")
+    (dem / "pair.py").write_text("")
+    (dem / "deck.py").write_text("def f():\n    from .engines.lammps import deck_run\n")
+    (dem / "engines" / "lammps" / "deck_run.py").write_text("from ...deck_state import Deck\n")
+    edges = _dem_folder_edges(tmp_path)
+    assert edges == {("dem", "dem/engines/lammps"), ("dem/engines/lammps", "dem")}
+    assert _folder_cycles(edges) == [("dem", "dem/engines/lammps"), ("dem/engines/lammps", "dem")]

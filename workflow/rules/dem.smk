@@ -48,7 +48,7 @@ rule dem_study:
 
 
 # The e a user types into each code against the eps the code really gives (issue 25): the library's
-# table (restitution.dem.typed_e_table), each row with the engine that confirms it. The table reads the
+# table (restitution.dem.engines.typed_e_table), each row with the engine that confirms it. The table reads the
 # engine registry, so every registered engine's modules are inputs (code() follows the registry).
 TYPED_E_FILES = ["results/dem/typed_e.csv", "results/dem/typed_e.tex", "results/dem/typed_e_values.tex"]
 
@@ -89,7 +89,7 @@ def typed_e_run_files():
     e and steps per contact; the others their input, command and output of one process."""
     import re
     from restitution.dem.engines import ENGINES
-    from restitution.dem.typed_e_table import TYPED_E_ENGINE_ES, TYPED_E_ENGINE_REFINEMENTS
+    from restitution.dem.engines.typed_e_table import TYPED_E_ENGINE_ES, TYPED_E_ENGINE_REFINEMENTS
     files = []
     for name in typed_e_run_engines():
         engine = ENGINES[name]

@@ -11,7 +11,7 @@ ON_REQUEST.update({"scene", "scene_answer", "scene_report"})
 SCENE_FILES = {}
 if config.get("scene"):
     from restitution.core.errors import ParameterError
-    from restitution.dem.scene_file import read_scene
+    from restitution.dem.scene.file import read_scene
 
     try:
         SCENE_FILES[read_scene(config["scene"]).name] = config["scene"]

@@ -11,7 +11,7 @@ from restitution_workflow.pipeline import start, write_text
 
 from restitution.cli import scene_table
 from restitution.dem.scene import answer_scene
-from restitution.dem.scene_file import read_scene
+from restitution.dem.scene.file import read_scene
 
 start(snakemake)
 

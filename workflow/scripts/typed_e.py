@@ -3,7 +3,7 @@
 #
 # Every DEM code whose damping is set from a typed restitution coefficient e gives an eps that
 # depends on e alone, but is e only where the code's damping formula and its end of contact agree.
-# The library's eps for each code and e (restitution.dem.typed_e_table, relative accuracy
+# The library's eps for each code and e (restitution.dem.engines.typed_e_table, relative accuracy
 # 1e-10), and for each row the engine that confirms it: the engine tests run every row at the e
 # values of TYPED_E_ENGINE_ES and demand TYPED_E_ENGINE_RTOL. This script only calls the library
 # and writes what it returns.
@@ -14,7 +14,7 @@ from restitution_workflow.latex import esc, fixed, sci
 from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.dem.engines.lammps.contact import LAMMPS_CHECKED, TSUJI_SQRT2_SINCE
-from restitution.dem.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
+from restitution.dem.engines.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
                                            typed_e_table)
 
 start(snakemake)

@@ -4,7 +4,7 @@
 # Every row of the typed-e table names the engine that confirms it: the row is run in that engine
 # at each e of TYPED_E_ENGINE_ES (three time steps, extrapolated to dt = 0) and must give the
 # table's eps to TYPED_E_ENGINE_RTOL. The engine tests do this; here the same runs
-# (restitution.dem.typed_e_table.typed_e_engine_cases) are made once more with what each engine
+# (restitution.dem.engines.typed_e_table.typed_e_engine_cases) are made once more with what each engine
 # was given and printed kept (restitution_workflow.engine_record), so that a reader can run them
 # again, and the eps each run gave is tabulated beside the table's. This script only calls the
 # library and writes what it returns; it stops, writing nothing, where an engine is missing or a
@@ -21,7 +21,7 @@ from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.dem.engines import ENGINES
 from restitution.dem.pair import Pair
-from restitution.dem.typed_e_table import (TYPED_E_ENGINE_ES, TYPED_E_ENGINE_REFINEMENTS, TYPED_E_ENGINE_RTOL,
+from restitution.dem.engines.typed_e_table import (TYPED_E_ENGINE_ES, TYPED_E_ENGINE_REFINEMENTS, TYPED_E_ENGINE_RTOL,
                                            typed_e_engine_cases, typed_e_engine_results)
 
 start(snakemake)

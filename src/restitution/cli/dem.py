@@ -92,7 +92,7 @@ def run_scene(args, out) -> int:
     from pathlib import Path
 
     from ..dem.scene import answer_scene, contact_count
-    from ..dem.scene_file import read_scene
+    from ..dem.scene.file import read_scene
     scene = read_scene(args.file)
     if args.out:
         _check_writable_dir("out", args.out)

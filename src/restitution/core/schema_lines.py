@@ -2,7 +2,7 @@
 ``variants[kim].D1 = -1: must be > 0`` or ``species[g1].radius = -0.001: must be > 0``.
 
 jsonschema's own messages are several lines long and name the failing keyword, not the field. The
-pipeline's config.yaml and the scene files (:mod:`restitution.dem.scene_file`) are checked this way.
+pipeline's config.yaml and the scene files (:mod:`restitution.dem.scene.file`) are checked this way.
 Needs jsonschema only for the errors it is given (no import here).
 """
 

@@ -1,6 +1,6 @@
 """YAML read strictly: what two readers of one file could take differently is refused, in one line.
 
-Every YAML input of the project (the scene files of :mod:`restitution.dem.scene_file`, the
+Every YAML input of the project (the scene files of :mod:`restitution.dem.scene.file`, the
 pipeline's ``config.yaml``) is read with :class:`StrictLoader`, PyYAML's safe loader with these
 refusals:
 

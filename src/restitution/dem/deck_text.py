@@ -1,7 +1,7 @@
 """LAMMPS' and LIGGGHTS' input-script text as the audit compares it with what an engine echoed:
 how a file becomes commands and words. The engines themselves substitute variables, evaluate
-expressions and decide which commands run (:mod:`restitution.dem.deck_scratch`,
-:mod:`restitution.dem.deck_stream`); nothing here does.
+expressions and decide which commands run (:mod:`restitution.dem.deck.scratch`,
+:mod:`restitution.dem.deck.stream`); nothing here does.
 
 LAMMPS (22 Jul 2025, and LIGGGHTS, which shares its parser) reads a script as follows, and so
 does :func:`logical_lines` with :func:`words`:

@@ -147,7 +147,7 @@ class Engine:
         self._missing("scenes")
 
     def scene_setting(self, scene, contact, fit) -> dict:
-        """The setting of one scene contact (scene_contacts.SceneContact) for a fitted model, as
+        """The setting of one scene contact (scene.contacts.SceneContact) for a fitted model, as
         its input line prints it; ParameterError where the engine cannot express it."""
         self._missing("scenes")
 

@@ -234,7 +234,7 @@ def _least_squares(model: ContactModel, end: str, fv, fe, s0: float, width: floa
 
 
 def fit_model(model: ContactModel, end: str, target, grid, tolerance: float, build: bool | None = None) -> Fit:
-    """Calibrate ``model`` to ``target`` (a scene_file.Target) and check it on ``grid`` (speeds);
+    """Calibrate ``model`` to ``target`` (a scene.file.Target) and check it on ``grid`` (speeds);
     ``build`` as :func:`scaled_eps`'s."""
     fv, fe = target.fit_points(grid)
     k = float(model.k)

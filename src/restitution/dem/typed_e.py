@@ -15,27 +15,103 @@ __all__ = ["unit_e", "beta_of_e", "e_of_beta", "effective_modulus", "linear_from
 
 
 def unit_e(name: str, e: float) -> float:
-    """``e`` as a float, refused (ParameterError naming ``name``) outside (0, 1)."""
+    """``e`` as a float, refused outside (0, 1).
+
+    Parameters
+    ----------
+    name : str
+        The field, as the refusal names it.
+    e : float
+        The restitution coefficient typed.
+
+    Returns
+    -------
+    float
+
+    Raises
+    ------
+    ParameterError
+        Where ``e`` is not in (0, 1).
+
+    Examples
+    --------
+    >>> unit_e("e", 0.5)
+    0.5
+    """
     if not 0.0 < e < 1.0:
         raise ParameterError(name, e, "must be a restitution coefficient in (0, 1)")
     return float(e)
 
 
 def beta_of_e(e: float) -> float:
-    """beta = -ln e / sqrt(ln^2 e + pi^2): the damping ratio whose linear dashpot gives eps = e."""
+    """beta = -ln e / sqrt(ln^2 e + pi^2): the damping ratio whose linear dashpot gives eps = e.
+
+    Parameters
+    ----------
+    e : float
+        The restitution coefficient, in (0, 1).
+
+    Returns
+    -------
+    float
+        beta, in (0, 1).
+
+    Examples
+    --------
+    >>> round(beta_of_e(0.5), 6)
+    0.215454
+    """
     ln_e = math.log(unit_e("e", e))
     return -ln_e / math.sqrt(ln_e ** 2 + math.pi ** 2)
 
 
 def e_of_beta(beta: float) -> float:
-    """The inverse of :func:`beta_of_e` (ParameterError for a beta no e in (0, 1) gives)."""
+    """The inverse of :func:`beta_of_e`.
+
+    Parameters
+    ----------
+    beta : float
+        The damping ratio.
+
+    Returns
+    -------
+    float
+        e, in (0, 1).
+
+    Raises
+    ------
+    ParameterError
+        For a beta outside (0, 1), which no e in (0, 1) gives.
+
+    Examples
+    --------
+    >>> round(e_of_beta(beta_of_e(0.5)), 12)
+    0.5
+    """
     if not 0.0 < beta < 1.0:
         raise ParameterError("D2", beta, "needs beta = -ln e / sqrt(ln^2 e + pi^2) in (0, 1)")
     return math.exp(-math.pi * beta / math.sqrt(1.0 - beta ** 2))
 
 
 def effective_modulus(E: float, nu: float) -> float:
-    """E* = E / (2 (1 - nu^2)) of two like particles of Young's modulus E and Poisson ratio nu."""
+    """E* = E / (2 (1 - nu^2)) of two like particles of Young's modulus E and Poisson ratio nu.
+
+    Parameters
+    ----------
+    E : float
+        Young's modulus, finite and > 0.
+    nu : float
+        Poisson ratio, in (-1, 0.5].
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> round(effective_modulus(1e7, 0.3))
+    5494505
+    """
     E = require_positive_finite("E", E)
     if nu is None or not -1.0 < nu <= 0.5:
         raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5]")
@@ -44,7 +120,32 @@ def effective_modulus(E: float, nu: float) -> float:
 
 def linear_from_time_and_e(name_t: str, t_c: float, name_e: str, e: float, end: str) -> Contact:
     """The linear spring-dashpot of contact time t_c and restitution e under the overlap rule:
-    k = m (pi^2 + ln^2 e) / t_c^2, eta = -2 m ln e / t_c, so D1 = k / m, D2 = eta / m."""
+    k = m (pi^2 + ln^2 e) / t_c^2, eta = -2 m ln e / t_c, so D1 = k / m, D2 = eta / m.
+
+    Parameters
+    ----------
+    name_t : str
+        The contact time's field, as a refusal names it.
+    t_c : float
+        Contact time, finite and > 0.
+    name_e : str
+        The restitution coefficient's field.
+    e : float
+        Restitution coefficient, in (0, 1).
+    end : str
+        The end-of-contact rule of the Contact returned.
+
+    Returns
+    -------
+    Contact
+        alpha = 1, gamma = 0.
+
+    Examples
+    --------
+    >>> c = linear_from_time_and_e("t_c", 1e-3, "e", 0.5, "overlap")
+    >>> round(c.eps(1.0), 9)       # integrated: the e asked
+    0.5
+    """
     t_c = require_positive_finite(name_t, t_c)
     ln_e = math.log(unit_e(name_e, e))
     return Contact("1", "0", (math.pi ** 2 + ln_e ** 2) / t_c ** 2, -2.0 * ln_e / t_c, end)
@@ -52,7 +153,31 @@ def linear_from_time_and_e(name_t: str, t_c: float, name_e: str, e: float, end: 
 
 def time_and_e_of_linear(contact: Contact, form: str = "the (t_c, e) form") -> tuple[float, float]:
     """(t_c, e) of :func:`linear_from_time_and_e` that give ``contact`` (alpha = 1, gamma = 0): D2 =
-    -2 ln e / t_c and D1 = (pi^2 + ln^2 e)/t_c^2, so zeta = D2 / (2 sqrt D1) = -ln e / sqrt(pi^2 + ln^2 e)."""
+    -2 ln e / t_c and D1 = (pi^2 + ln^2 e)/t_c^2, so zeta = D2 / (2 sqrt D1) = -ln e / sqrt(pi^2 + ln^2 e).
+
+    Parameters
+    ----------
+    contact : Contact
+        A linear spring-dashpot.
+    form : str
+        What the refusal calls the form asked.
+
+    Returns
+    -------
+    tuple of float
+        (t_c, e).
+
+    Raises
+    ------
+    ParameterError
+        Where the dashpot is not underdamped (D2 >= 2 sqrt(D1)).
+
+    Examples
+    --------
+    >>> c = linear_from_time_and_e("t_c", 1e-3, "e", 0.5, "overlap")
+    >>> [round(x, 12) for x in time_and_e_of_linear(c)]
+    [0.001, 0.5]
+    """
     zeta = contact.D2 / (2.0 * math.sqrt(contact.D1))
     if not 0.0 < zeta < 1.0:
         raise ParameterError("D2", contact.D2, f"needs D2 < 2 sqrt(D1): {form} is underdamped")
@@ -67,7 +192,23 @@ THORNTON_H = (-6.918798, -16.41105, 146.8049, -796.4559, 2928.711, -7206.864, 11
 
 
 def thornton_betan(en: float) -> float:
-    """beta_n = sqrt(1 / (1 - (1 + en)^2 exp(a(en))) - 1), a(en) = sum h_k en^k (their (B6)-(B7))."""
+    """beta_n = sqrt(1 / (1 - (1 + en)^2 exp(a(en))) - 1), a(en) = sum h_k en^k (their (B6)-(B7)).
+
+    Parameters
+    ----------
+    en : float
+        The normal restitution coefficient typed, in (0, 1).
+
+    Returns
+    -------
+    float
+        The Hertz-Mindlin damping ratio beta_n.
+
+    Examples
+    --------
+    >>> round(thornton_betan(0.5), 6)
+    0.233025
+    """
     en = unit_e("en", en)
     a = sum(h * en ** (k + 1) for k, h in enumerate(THORNTON_H))
     return math.sqrt(1.0 / (1.0 - (1.0 + en) ** 2 * math.exp(a)) - 1.0)

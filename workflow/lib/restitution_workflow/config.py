@@ -14,7 +14,7 @@ from fractions import Fraction
 import jsonschema
 import yaml
 
-# one-line messages from jsonschema's errors: shared with the scene files of restitution.dem.scene_file
+# one-line messages from jsonschema's errors: shared with the scene files of restitution.dem.scene.file
 from restitution.core.strict_yaml import Refused, StrictLoader
 from restitution.core.schema_lines import MAX_NAME, allowed as _allowed, field as _field, show as _show  # noqa: F401
 

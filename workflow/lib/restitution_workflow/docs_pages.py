@@ -311,7 +311,7 @@ def notebooks(out: Path = DOCS / "tutorials" / "_notebooks") -> list[Path]:
 
 
 def generate(app=None) -> None:
-    from restitution.dem.scene_file import scene_schema
+    from restitution.dem.scene.file import scene_schema
 
     _write("config.md", schema_page(
         "config.yaml", ROOT / "workflow" / "schemas" / "config.schema.yaml",
@@ -320,7 +320,7 @@ def generate(app=None) -> None:
     _write("scene.md", schema_page(
         "The scene file", scene_schema(),
         "A scene for `restitution scene FILE` and `make scene SCENE=FILE`, generated from "
-        "`src/restitution/dem/scene.schema.yaml` and each engine's options (`scene_option_schema` "
+        "`src/restitution/dem/scene/scene.schema.yaml` and each engine's options (`scene_option_schema` "
         "in `restitution.dem.engines`), against which every scene file is checked. "
         "See {doc}`../../howto/scenes` for how the answer is found."))
     _write("rungs.md", rungs_page())

@@ -132,7 +132,7 @@ def imports_of(root: Path, dotted: str) -> frozenset[str]:
     --------
     >>> from pathlib import Path
     >>> root = Path(__file__).resolve().parents[3]
-    >>> "restitution.dem.engines" in imports_of(root, "restitution.dem.typed_e_table")
+    >>> "restitution.dem.engines" in imports_of(root, "restitution.dem.engines.typed_e_table")
     True
     """
     f = module_file(root, dotted)
@@ -170,7 +170,7 @@ def closure(root: Path, modules) -> list[Path]:
     --------
     >>> from pathlib import Path
     >>> root = Path(__file__).resolve().parents[3]
-    >>> files = {f.relative_to(root).as_posix() for f in closure(root, ["restitution.dem.typed_e_table"])}
+    >>> files = {f.relative_to(root).as_posix() for f in closure(root, ["restitution.dem.engines.typed_e_table"])}
     >>> "src/restitution/dem/engines/yade/engine.py" in files     # a registry's entry
     True
     >>> "src/restitution/core/series.py" in {f.relative_to(root).as_posix() for f in

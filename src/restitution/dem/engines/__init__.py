@@ -16,5 +16,15 @@ ENGINES = {e.name: e for e in (LAMMPS, LIGGGHTS, YADE, MERCURYDPM, KRATOS)}
 
 
 def scene_engines() -> list[str]:
-    """The names a scene file's ``code`` may take: the engines that write scenes."""
+    """The names a scene file's ``code`` may take: the engines that write scenes.
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> "lammps" in scene_engines()
+    True
+    """
     return [name for name, e in ENGINES.items() if e.scene_options is not None]

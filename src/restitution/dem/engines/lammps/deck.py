@@ -1,6 +1,6 @@
 """LAMMPS' deck dialect: what ``pair_style granular`` (and the older gran/hooke, gran/hooke/history,
 gran/hertz/history), its ``pair_coeff`` lines and its ``fix wall/gran`` walls mean for a head-on
-contact. The generic reader (:mod:`restitution.dem.deck_reader`) reaches it through its table of
+contact. The generic reader (:mod:`restitution.dem.deck.reader`) reaches it through its table of
 dialects, by pair style and by engine; this module has the same names as every dialect:
 ``ENGINE``, ``PAIR_STYLES``, ``MAPPED``, ``FIXES``, :func:`pair_style`, :func:`pair_coeff`,
 :func:`pair_row` and :func:`wall`.
@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 from functools import partial
 
-from ...deck_state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types
+from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
 
@@ -225,7 +225,7 @@ def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
 def pair_row(deck: Deck, i: int, j: int) -> dict:
     """The audit's row for type pair (i, j), before its eps: the contact LAMMPS gives it, the e typed
     (tsuji, coeff_restitution) and the pair_coeff line that gives that e exactly. Its arguments and
-    its row are :meth:`~restitution.dem.deck_state.DeckDialect.pair_row`'s.
+    its row are :meth:`~restitution.dem.dialect.state.DeckDialect.pair_row`'s.
 
     Raises
     ------
@@ -303,7 +303,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     as the second body (the older hooke, hooke/history and hertz/history: their pair style's law, Kn
     Kt gamma_n gamma_t xmu dampflag [limit_damping]), and LAMMPS' keywords after the wall style
     (wiggle, shear, contacts, temperature) move it, heat it or write output: none changes the contact.
-    Its arguments are :meth:`~restitution.dem.deck_state.DeckDialect.wall`'s.
+    Its arguments are :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s.
 
     Examples
     --------

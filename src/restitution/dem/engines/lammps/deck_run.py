@@ -1,4 +1,4 @@
-"""LAMMPS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck_scratch`) runs in
+"""LAMMPS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck.scratch`) runs in
 the real engine with every run skipped (``-skiprun``) and every command echoed after LAMMPS' own
 substitution (``-echo screen``), in a child process with a wall-time budget. Each run's marker
 writes the atoms' type, radius and mass as LAMMPS holds them then.
@@ -10,10 +10,10 @@ import os
 import sys
 from pathlib import Path
 
-from ...deck_child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, run_child
 from . import run
 
-__all__ = ["ENGINE", "INSTALL", "available", "marker", "ending", "run_copy"]
+__all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy"]
 
 #: The engine's name, as its refusals say it
 ENGINE = "LAMMPS"
@@ -41,33 +41,15 @@ except Exception as exc:
 
 
 def available() -> bool:
-    """Whether LAMMPS' Python module loads (:func:`restitution.dem.engines.lammps.run.available`).
-
-    Returns
-    -------
-    bool
-
-    Examples
-    --------
-    >>> isinstance(available(), bool)
-    True
-    """
+    """Whether LAMMPS' Python module loads (:func:`restitution.dem.engines.lammps.run.available`; the
+    contract: :class:`~restitution.dem.dialect.child.DeckRun`)."""
     return run.available()
 
 
 def marker(root: Path):
     """The function that writes stage k's marker: the run, then the atoms as LAMMPS holds them
-    (k None: a quit, after the atoms where the deck ends).
-
-    Parameters
-    ----------
-    root : Path
-        The scratch directory.
-
-    Returns
-    -------
-    callable
-        ``f(k, run_text) -> str``.
+    (k None: a quit, after the atoms where the deck ends; the contract:
+    :class:`~restitution.dem.dialect.child.DeckRun`).
 
     Examples
     --------
@@ -81,7 +63,7 @@ def marker(root: Path):
     """
     def text(k: int | None, run: str) -> str:
         if k is None:        # a quit: LAMMPS ends the process there, the deck's end
-            return f"{ending(root)}{run}\n"
+            return f"{_ending(root)}{run}\n"
         # -skiprun skips a run's set-up too: a run of no step, timeout lifted, makes LAMMPS check
         # what it checks before every run (all pair coefficients set, ...)
         return (f"{run}\ntimer timeout off\nrun 0 post no\ntimer timeout 0 every 1\n"
@@ -94,45 +76,19 @@ def _dump(path: Path) -> str:
     return f"write_dump all custom {path} type radius mass modify format float %.17g"
 
 
-def ending(root: Path) -> str:
-    """The commands that write the atoms where the deck ends.
-
-    Parameters
-    ----------
-    root : Path
-        The scratch directory.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> ending(Path("/s")).split()[:3]
-    ['write_dump', 'all', 'custom']
-    """
+def _ending(root: Path) -> str:
+    """The commands that write the atoms where the deck ends, into ``root``."""
     return f"{_dump(root / ATOMS_AT_END)}\n"
 
 
 def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
     """Run the scratch copy ``deck`` in LAMMPS, runs skipped, within ``budget`` seconds.
 
-    Parameters
-    ----------
-    deck : Path
-        The copied input script (its folder the working directory).
-    root : Path
-        The scratch directory (screen and atoms files).
-    budget : float
-        Wall-time budget in seconds.
-
-    Returns
-    -------
-    EngineRun
+    The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "PYTHONPATH", "LANG")}
     env.update(HOME=str(root), OMP_NUM_THREADS="1")
-    done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), ending(root).strip()],
+    done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), _ending(root).strip()],
                      deck.parent, env, root, budget)
     if done.status and not done.error and not done.timed_out:     # (the budget's kill is no error of LAMMPS')
         done.error = f"LAMMPS ended with status {done.status}"

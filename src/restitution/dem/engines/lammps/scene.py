@@ -10,8 +10,8 @@ from fractions import Fraction
 from ...model_choice import ContactModel, Fit
 from .contact import base_eta_n0, lammps_contact, lammps_eta_n0, lammps_pair_coeff
 
-# Scene (restitution.dem.scene_file) and SceneContact (restitution.dem.scene_contacts) appear in
-# annotations only, unimported: scene_file checks a scene against this registry, so importing them
+# Scene (restitution.dem.scene.file) and SceneContact (restitution.dem.scene.contacts) appear in
+# annotations only, unimported: scene.file checks a scene against this registry, so importing them
 # here would tie the two into a loop.
 
 __all__ = ["lammps_models", "scene_setting", "contact_lines", "input_lines"]

@@ -2,7 +2,7 @@
 property/global``: youngsModulus, poissonsRatio, coefficientRestitution, characteristicVelocity),
 its particle templates and its ``fix wall/gran`` walls (primitive planes, the faces of meshes of the
 type their ``fix mesh/surface`` gives) mean for a head-on contact. The generic reader
-(:mod:`restitution.dem.deck_reader`) reaches it through its table of dialects, by pair style and by
+(:mod:`restitution.dem.deck.reader`) reaches it through its table of dialects, by pair style and by
 engine; this module has the same names as every dialect: ``ENGINE``, ``PAIR_STYLES``, ``MAPPED``,
 ``FIXES``, :func:`pair_style`, :func:`pair_coeff`, :func:`pair_row` and :func:`wall`.
 
@@ -13,7 +13,7 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 
 from __future__ import annotations
 
-from ...deck_state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
+from ...dialect.state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
 from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, liggghts_accepts_e,
                       liggghts_contact, liggghts_e)
 
@@ -182,7 +182,7 @@ def _model(deck: Deck, model: str, limit_force: bool) -> dict:
 def pair_row(deck: Deck, i: int, j: int) -> dict:
     """The audit's row for type pair (i, j), before its eps: the contact LIGGGHTS gives it, the e
     typed in coefficientRestitution and the line that gives that e exactly. Its arguments and its
-    row are :meth:`~restitution.dem.deck_state.DeckDialect.pair_row`'s.
+    row are :meth:`~restitution.dem.dialect.state.DeckDialect.pair_row`'s.
 
     Raises
     ------
@@ -263,7 +263,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     wall's own model (its model keywords, limitForce among them, are its own, not the pair
     style's), the wall as the second body. None, with the reason in ``unknown``, where a part is
     not mapped (a cylinder, a cohesion model, an unknown keyword, ...). Its arguments are
-    :meth:`~restitution.dem.deck_state.DeckDialect.wall`'s.
+    :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s.
 
     Raises
     ------

@@ -1,4 +1,4 @@
-"""LIGGGHTS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck_scratch`) runs in
+"""LIGGGHTS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck.scratch`) runs in
 the ``liggghts`` binary with every command echoed after LIGGGHTS' own substitution (``-echo
 screen``), within a wall-time budget.
 
@@ -17,10 +17,10 @@ import os
 import shutil
 from pathlib import Path
 
-from ...deck_child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, run_child
 from .run import MPI_NOT_STARTED, MPI_START_RETRIES
 
-__all__ = ["ENGINE", "INSTALL", "available", "marker", "ending", "run_copy"]
+__all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy"]
 
 #: The engine's name, as its refusals say it
 ENGINE = "LIGGGHTS"
@@ -32,33 +32,14 @@ _FORMAT = 'modify format "%d %.17g %.17g"'
 
 
 def available() -> bool:
-    """Whether the ``liggghts`` binary is on PATH.
-
-    Returns
-    -------
-    bool
-
-    Examples
-    --------
-    >>> isinstance(available(), bool)
-    True
-    """
+    """Whether the ``liggghts`` binary is on PATH (the contract:
+    :class:`~restitution.dem.dialect.child.DeckRun`)."""
     return shutil.which("liggghts") is not None
 
 
 def marker(root: Path):
     """The function that writes stage k's marker: a run of one step, then the atoms as LIGGGHTS
-    holds them.
-
-    Parameters
-    ----------
-    root : Path
-        The scratch directory.
-
-    Returns
-    -------
-    callable
-        ``f(k, run_text) -> str``.
+    holds them (the contract: :class:`~restitution.dem.dialect.child.DeckRun`).
 
     Examples
     --------
@@ -74,46 +55,20 @@ def marker(root: Path):
     return text
 
 
-def ending(root: Path) -> str:
-    """The commands that write the atoms where the deck ends.
-
-    Parameters
-    ----------
-    root : Path
-        The scratch directory.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> ending(Path("/s")).split()[:3]
-    ['write_dump', 'all', 'custom']
-    """
+def _ending(root: Path) -> str:
+    """The commands that write the atoms where the deck ends, into ``root``."""
     return f"write_dump all custom {root / ATOMS_AT_END} type radius mass {_FORMAT}\n"
 
 
 def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
     """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step, within ``budget`` seconds.
 
-    Parameters
-    ----------
-    deck : Path
-        The copied input script (its folder the working directory).
-    root : Path
-        The scratch directory (driver, screen and atoms files).
-    budget : float
-        Wall-time budget in seconds.
-
-    Returns
-    -------
-    EngineRun
+    The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
     # the deck included, then the end's atoms: a deck that jumps to another file never reaches
     # the include appended to its own
     driver = root / "driver"
-    driver.write_text(f"include {deck}\n{ending(root)}")
+    driver.write_text(f"include {deck}\n{_ending(root)}")
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "LANG")}
     env.update(HOME=str(root), OMP_NUM_THREADS="1")
     # its screen is its standard output, line-buffered (stdbuf): an error that aborts MPI loses what

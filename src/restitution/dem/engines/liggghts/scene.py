@@ -10,8 +10,8 @@ from ....core.errors import ParameterError
 from ...model_choice import ContactModel, Fit
 from .contact import LIGGGHTS_E, LIGGGHTS_MODULUS, liggghts_accepts_e, liggghts_contact, liggghts_e
 
-# Scene (restitution.dem.scene_file) and SceneContact (restitution.dem.scene_contacts) appear in
-# annotations only, unimported: scene_file checks a scene against this registry, so importing them
+# Scene (restitution.dem.scene.file) and SceneContact (restitution.dem.scene.contacts) appear in
+# annotations only, unimported: scene.file checks a scene against this registry, so importing them
 # here would tie the two into a loop.
 
 __all__ = ["liggghts_models", "wall_types", "scene_setting", "contact_lines", "input_lines"]

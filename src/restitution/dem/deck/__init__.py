@@ -25,10 +25,10 @@ Tangential, rolling and twisting models take no part in a head-on collision and 
 
 The deck's engine interprets it (:func:`engine_of` tells which): LAMMPS for a LAMMPS deck (its
 Python module, runs skipped), the ``liggghts`` binary for a LIGGGHTS deck (each run one step), both
-in a scratch copy of the deck's folder (:mod:`restitution.dem.deck_scratch`) where nothing that
+in a scratch copy of the deck's folder (:mod:`restitution.dem.deck.scratch`) where nothing that
 runs code or writes files is executed. Variables, expressions, ``if``, ``jump``/``label``, ``next``
 loops, ``include`` and ``quit`` are the engine's own; the audit reads the commands it echoed, in
-the order they ran (:mod:`restitution.dem.deck_stream`), and the atoms it held at each run. A
+the order they ran (:mod:`restitution.dem.deck.stream`), and the atoms it held at each run. A
 ``pair_style`` of another style discards the coefficients, as in the engines; ``clear`` discards
 every setting. Each ``run`` sees the settings of its moment: every change between runs is a stage
 of its own, audited (``run ... every`` with a command that changes the contact mid-run is
@@ -54,7 +54,7 @@ LAMMPS type labels (``labelmap atom``, a data file's Atom Type Labels) stand for
 on a pair_coeff line (conduction) are accepted and named; LIGGGHTS' aliases of property/global
 styles are read.
 
-This module audits; reading is :mod:`restitution.dem.deck_reader`'s (the commands every engine
+This module audits; reading is :mod:`restitution.dem.deck.reader`'s (the commands every engine
 shares), each engine's pair style, coefficients and walls its dialect's
 (:mod:`restitution.dem.engines.lammps.deck`, :mod:`restitution.dem.engines.liggghts.deck`), and
 the words :mod:`restitution.dem.deck_text`'s. ``Deck``, ``DeckError``, ``MAX_STAGES`` and
@@ -68,14 +68,14 @@ import tempfile
 from dataclasses import replace
 from pathlib import Path
 
-from ..core.collision import StickError
-from ..core.errors import ParameterError
-from .deck_beside import effects
-from .deck_reader import DIALECTS, MAX_STAGES, contact_key, read_executed
-from .deck_state import MAX_TYPES, Deck, DeckError, place, spheres
-from .engines.lammps.deck import DEFAULT_DT
-from .pair import Pair
-from .timestep import recommended_dt, verlet_eps
+from ...core.collision import StickError
+from ...core.errors import ParameterError
+from .beside import effects
+from .reader import DIALECTS, MAX_STAGES, contact_key, read_executed
+from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
+from ..engines.lammps.deck import DEFAULT_DT
+from ..pair import Pair
+from ..timestep import recommended_dt, verlet_eps
 
 __all__ = ["DeckError", "Deck", "audit_deck", "engine_of", "engine_read", "MAX_STAGES", "MAX_TYPES"]
 
@@ -244,12 +244,12 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     """
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
-    from .deck_scratch import scratch_copy
-    from .deck_stream import engine_error, executed, skipped, snapshots, unchecked
+    from .scratch import scratch_copy
+    from .stream import engine_error, executed, skipped, snapshots, unchecked
     if engine == "LAMMPS":
-        from .engines.lammps import deck_run
+        from ..engines.lammps import deck_run
     else:
-        from .engines.liggghts import deck_run
+        from ..engines.liggghts import deck_run
     if not deck_run.available():
         raise DeckError("engine", engine, deck_run.INSTALL)
     with tempfile.TemporaryDirectory(prefix="restitution-deck-") as tmp:

@@ -1,5 +1,5 @@
 """What an engine executed, read back from its run of a deck's scratch copy
-(:mod:`restitution.dem.deck_scratch`): the commands in the order they ran, each after the engine's
+(:mod:`restitution.dem.deck.scratch`): the commands in the order they ran, each after the engine's
 own substitution and with the deck line it came from, and the atoms each run saw.
 
 The engine echoes every command it reads (a line with a variable outside quotes twice: as written,
@@ -13,8 +13,8 @@ import math
 import re
 from dataclasses import dataclass
 
-from .deck_scratch import DYNAMIC, NOOP, Scratch, normalised
-from .deck_text import TRIPLE, segments
+from .scratch import DYNAMIC, NOOP, Scratch, normalised
+from ..deck_text import TRIPLE, segments
 
 __all__ = ["Executed", "executed", "skipped", "unchecked", "snapshots", "engine_error"]
 

@@ -1,14 +1,14 @@
 """The e a user types into a code against the eps the code really gives, for every registered
 engine whose damping is set from a typed e (rows from each engine's ``typed_e``).
 
-It reads the engine registry, so it lives above it: restitution.dem.typed_e holds the formulas the
-engines themselves share and cannot import the registry without a cycle.
+It reads the engine registry, so it lives beside it, above the engines: restitution.dem.typed_e holds
+the formulas the engines themselves share and cannot import the registry without a cycle.
 """
 
 from __future__ import annotations
 
-from .engines import ENGINES
-from .extrapolate import richardson
+from . import ENGINES
+from ..extrapolate import richardson
 
 __all__ = ["typed_e_table", "typed_e_codes", "typed_e_engine_cases", "typed_e_engine_results", "TYPED_E_CODES",
            "TYPED_E_ENGINES", "TYPED_E_ENGINE_ES", "TYPED_E_ENGINE_RTOL", "TYPED_E_ENGINE_REFINEMENTS"]

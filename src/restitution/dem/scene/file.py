@@ -15,9 +15,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import ParameterError, number_in
-from ..core.schema_lines import allowed, field, show
-from .engines import ENGINES, scene_engines
+from ...core.errors import ParameterError, number_in
+from ...core.schema_lines import allowed, field, show
+from ..engines import ENGINES, scene_engines
 
 __all__ = ["Scene", "AtomType", "Target", "read_scene", "scene_from_dict", "scene_schema", "SCHEMA_PATH", "TOL_RANGE", "CODE_OPTIONS"]
 
@@ -101,7 +101,7 @@ def read_scene(path) -> Scene:
     """The scene in the YAML file ``path``, checked; ParameterError (one line) for any mistake."""
     import yaml
 
-    from ..core.strict_yaml import Refused, StrictLoader
+    from ...core.strict_yaml import Refused, StrictLoader
 
     try:
         with open(path, "rb") as fh:

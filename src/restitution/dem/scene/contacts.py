@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .pair import Pair
-from .scene_file import AtomType, Scene
+from ..pair import Pair
+from .file import AtomType, Scene
 
 __all__ = ["SceneContact", "scene_contacts"]
 

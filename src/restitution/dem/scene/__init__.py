@@ -16,16 +16,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.errors import ParameterError
-from ..core.problem import Problem
-from ..fast.integrator import COLUMNS, collide_fast
-from .contact import Contact
-from .engine import Engine
-from .engines import ENGINES
-from .model_choice import EVAL_TOL, SMALL_EPS, Fit, fit_model, scaled_eps
-from .scene_contacts import SceneContact, scene_contacts
-from .scene_file import Scene
-from .timestep import REFINE, VERIFY_STEPS, recommended_dt, verlet_eps
+from ...core.errors import ParameterError
+from ...core.problem import Problem
+from ...fast.integrator import COLUMNS, collide_fast
+from ..contact import Contact
+from ..engine import Engine
+from ..engines import ENGINES
+from ..model_choice import EVAL_TOL, SMALL_EPS, Fit, fit_model, scaled_eps
+from .contacts import SceneContact, scene_contacts
+from .file import Scene
+from ..timestep import REFINE, VERIFY_STEPS, recommended_dt, verlet_eps
 
 __all__ = ["answer_scene"]
 

@@ -1,4 +1,4 @@
-"""An engine's pass through a deck's scratch copy (:mod:`restitution.dem.deck_scratch`), as a child
+"""An engine's pass through a deck's scratch copy (:mod:`restitution.dem.deck.scratch`), as a child
 process within a wall-time budget and an output cap: what it echoed, the atoms its run markers and
 the deck's end wrote, its error and whether the budget ended it. Each engine's ``deck_run`` module
 says how its engine is started and what its markers write.
@@ -11,8 +11,9 @@ import subprocess
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Protocol
 
-__all__ = ["EngineRun", "ATOMS", "ATOMS_AT_END", "run_child"]
+__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
 ATOMS = "atoms"
@@ -24,16 +25,68 @@ _MAX_OUTPUT = 512 * 2 ** 20
 
 @dataclass
 class EngineRun:
-    """What an engine did with a deck's scratch copy: ``echo`` its screen (the commands it ran,
-    echoed, and its messages), ``atoms`` the atoms each run's marker wrote, ``at_end`` those where
-    the deck ended, ``error`` the engine's error output (or "" where it ended well or was stopped),
-    ``timed_out`` whether the budget ended it, ``status`` its exit status."""
+    """What an engine did with a deck's scratch copy.
+
+    Parameters
+    ----------
+    echo : str
+        Its screen: the commands it ran, echoed, and its messages.
+    atoms : str
+        The atoms each run's marker wrote.
+    at_end : str
+        The atoms where the deck ended.
+    error : str
+        The engine's error output ("" where it ended well or was stopped).
+    timed_out : bool
+        Whether the budget ended it.
+    status : int or None
+        Its exit status (negative where the budget's kill ended it).
+
+    Examples
+    --------
+    >>> EngineRun("run 0", "", "", "", False, 0).timed_out
+    False
+    """
     echo: str
     atoms: str
     at_end: str
     error: str
     timed_out: bool
     status: int | None = None
+
+
+class DeckRun(Protocol):
+    """What an engine's ``deck_run`` module provides, as the deck audit (:mod:`restitution.dem.deck`)
+    runs a deck's scratch copy in that engine; each module's functions say what is its own.
+
+    Parameters
+    ----------
+    ENGINE : str
+        The engine's name, as its refusals say it.
+    INSTALL : str
+        How to get the engine, said in one line where it is not installed.
+
+    Examples
+    --------
+    >>> from restitution.dem.engines.lammps import deck_run
+    >>> deck_run.ENGINE, callable(deck_run.run_copy)
+    ('LAMMPS', True)
+    """
+    ENGINE: str
+    INSTALL: str
+
+    def available(self) -> bool:
+        """Whether the engine can be started here."""
+
+    def marker(self, root: Path):
+        """The function ``f(k, run_text) -> str`` that writes stage k's marker: the text that stands for
+        the deck's run ``run_text`` in the scratch copy (``root`` the scratch directory), which runs
+        as far as the engine must and then appends the atoms to ``root``/ATOMS."""
+
+    def run_copy(self, deck: Path, root: Path, budget: float) -> EngineRun:
+        """Run the scratch copy ``deck`` (its folder the working directory; ``root`` the scratch
+        directory of its screen and atoms files) in the engine within ``budget`` seconds of wall
+        time."""
 
 
 def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, screen_is_stdout: bool = False) -> EngineRun:

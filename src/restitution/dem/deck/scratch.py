@@ -15,8 +15,8 @@ import shutil
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .deck_state import DeckError
-from .deck_text import TRIPLE, segments as segments_of, strip_comment
+from ..dialect.state import DeckError
+from ..deck_text import TRIPLE, segments as segments_of, strip_comment
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised"]
 

@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import math
 
-from ..core.collision import StickError
-from .contact import Contact
-from .engines.lammps.deck import DEFAULT_DT
-from .pair import WALL_SIZE, Pair
+from ...core.collision import StickError
+from ..contact import Contact
+from ..engines.lammps.deck import DEFAULT_DT
+from ..pair import WALL_SIZE, Pair
 
 __all__ = ["BESIDE", "drag_eps", "effects"]
 
@@ -160,7 +160,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
 
     Examples
     --------
-    >>> from restitution.dem.deck_state import Deck
+    >>> from restitution.dem.dialect.state import Deck
     >>> d = Deck(ntypes=1, beside=[((None, 3), ["fix", "v", "all", "viscous", "0.5"])])
     >>> c, p = Contact(1, 0, 1e4, 10.0, "overlap"), Pair.spheres(0.5, 0.5, 1.0)
     >>> row = {"speeds": [1.0], "eps": [c.eps(1.0)], "sticks": [False], "passes_through": [False]}

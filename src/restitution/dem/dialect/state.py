@@ -1,4 +1,4 @@
-"""What the deck reader (:mod:`restitution.dem.deck_reader`) and the engines' deck dialects
+"""What the deck reader (:mod:`restitution.dem.deck.reader`) and the engines' deck dialects
 (:mod:`restitution.dem.engines.lammps.deck`, :mod:`restitution.dem.engines.liggghts.deck`) share:
 the settings a deck's commands build (:class:`Deck`), the one-line refusal (:class:`DeckError`),
 the readings of words every command makes the same way (numbers, atom types and ranges, type
@@ -15,9 +15,9 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import Protocol
 
-from ..core.errors import ParameterError
-from .calibrate import calibrate
-from .pair import Pair
+from ...core.errors import ParameterError
+from ..calibrate import calibrate
+from ..pair import Pair
 
 __all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e"]
@@ -106,7 +106,7 @@ class Deck:
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     dt: float | None = None                       # the timestep command's, None where the deck has none
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
-                                                  # (restitution.dem.deck_beside), in force now
+                                                  # (restitution.dem.deck.beside), in force now
     held: dict | None = None                      # type -> [(radius, density)] the engine held at a run, or
                                                   # None where the deck was read without its engine
     # type -> the (radius, density) its spheres may have where it has several sizes (the engine's,
@@ -394,6 +394,11 @@ def labelmap(deck: Deck, words: list, where: str, line: str) -> None:
         The command's words (at least two).
     where, line : str
         The line, for the refusal.
+
+    Returns
+    -------
+    None
+        The deck is changed in place.
 
     Raises
     ------

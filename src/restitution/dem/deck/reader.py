@@ -1,5 +1,5 @@
 """The generic reader of LAMMPS-family decks: what each command that runs does to the settings of a
-head-on two-sphere contact (:class:`~restitution.dem.deck_state.Deck`), for every engine alike
+head-on two-sphere contact (:class:`~restitution.dem.dialect.state.Deck`), for every engine alike
 (box, atoms, sizes, groups, fixes that pour or insert, data files, labels, runs and their stages).
 What a pair style, its coefficients and its walls mean is an engine's: :data:`DIALECTS` gives the
 dialect of each engine of the registry that has one (:mod:`restitution.dem.engines.lammps.deck`,
@@ -13,10 +13,10 @@ from __future__ import annotations
 import copy
 import re
 
-from .deck_beside import BESIDE
-from .deck_state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
-from .deck_text import ScriptError, words
-from .engines import ENGINES
+from .beside import BESIDE
+from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
+from ..deck_text import ScriptError, words
+from ..engines import ENGINES
 
 __all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key"]
 
@@ -70,7 +70,7 @@ _INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/r
 
 def read_executed(commands, atoms: list, radius: dict | None = None, density: dict | None = None,
                   read_file=None) -> Deck:
-    """The settings of a deck from the commands its engine ran (:mod:`restitution.dem.deck_stream`):
+    """The settings of a deck from the commands its engine ran (:mod:`restitution.dem.deck.stream`):
     no control flow here, the engine's own; the atoms each run saw as the engine held them.
 
     Parameters
@@ -96,7 +96,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
 
     Examples
     --------
-    >>> from restitution.dem.deck_stream import Executed
+    >>> from restitution.dem.deck.stream import Executed
     >>> cmds = [Executed((None, 1), "create_box 1 b"), Executed((None, 2), "pair_style granular"),
     ...         Executed((None, 3), "pair_coeff * * hooke 10 1"), Executed((None, 4), "run 1", 0)]
     >>> deck = read_executed(cmds, [{1: {(0.5, 2.0)}}])
@@ -481,7 +481,7 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     # a fix of the same ID replaces the earlier one, as in the engines
     deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
     if style in BESIDE:
-        deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck_beside)
+        deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck.beside)
         return
     if style in _INSERTING_FIXES:
         deck.inserting = True
