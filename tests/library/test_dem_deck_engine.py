@@ -233,6 +233,21 @@ def test_a_command_an_if_runs_is_made_safe_whatever_its_text(tmp_path, lines):
     assert "Traceback" not in err
 
 
+@pytest.mark.parametrize("absolute", [True, False], ids=["absolute", "climbing"])
+def test_a_file_included_from_outside_the_deck_folder_is_not_run(tmp_path, absolute):
+    """Only the deck's folder is copied and made safe: an include of a file outside it ran that
+    file as written, and its shell touched the file (found by trying it, not by a test)."""
+    outside, folder = tmp_path / "outside", tmp_path / "deck"
+    outside.mkdir()
+    folder.mkdir()
+    target = tmp_path / "TOUCHED"
+    (outside / "evil.in").write_text(f"shell touch {target}\n")
+    name = outside / "evil.in" if absolute else "../outside/evil.in"
+    status, out, err = deck(folder, HEAD + f"pair_coeff * * hooke 1000 1 {T}\ninclude {name}\nrun 1\n")
+    assert not target.exists()
+    assert status == 2 and out == "" and err.count("\n") == 1 and "outside the deck's folder" in err, err
+
+
 def test_a_pair_table_written_by_the_deck_is_not_written(tmp_path):
     target = tmp_path / "table.out"
     status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\n"

@@ -261,6 +261,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         done = deck_run.run_copy(scratch.deck, root, budget)
         commands = executed(done.echo, scratch)
         for loc, text in unchecked(commands, scratch):
+            if text.split()[0] in ("include", "jump"):
+                raise DeckError(place(loc), text, "the file it reads lies outside the deck's folder, which the audit "
+                                                  "copies and checks first (no shell, python or file output): it did "
+                                                  "not run it; copy the file beside the deck")
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
         atoms = snapshots(done.atoms) + snapshots(done.at_end)

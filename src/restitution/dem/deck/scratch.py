@@ -227,6 +227,11 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         # known as a command of its line, so its echo (also from inside an if) tells it was reached
         scratch.lines.setdefault(NOOP.format(len(scratch.skipped) - 1), loc)
         return NOOP.format(len(scratch.skipped) - 1)
+    if word in ("include", "jump") and len(key.split()) > 1 and _outside(key.split()[1]):
+        # a file outside the copied folder is read as it is, shell lines and all: never run
+        scratch.dynamic.append((loc, key))
+        scratch.lines.setdefault(DYNAMIC.format(len(scratch.dynamic) - 1), loc)
+        return DYNAMIC.format(len(scratch.dynamic) - 1)
     if word == "quit":
         path = scratch.root / f"quit_{sum(1 for _ in scratch.root.glob('quit_*'))}"
         path.write_text(marker(None, key))
@@ -247,6 +252,13 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
     if word == "if":
         return _safe_if(command, loc, scratch, marker)
     return None
+
+
+def _outside(name: str) -> bool:
+    """Whether a literal file name of include or jump leaves the deck's folder (absolute, or
+    climbing out by ..): the copy made safe holds the folder only."""
+    name = name.strip("\"'")
+    return "$" not in name and (os.path.isabs(name) or ".." in Path(name).parts)
 
 
 def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
