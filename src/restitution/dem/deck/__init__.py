@@ -289,6 +289,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         deck = read_executed(commands, atoms, radius, density, read_file)
     notes = [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
              "part in a contact" for cmd, loc in skipped(commands, scratch).items()]
+    notes += _override_notes(atoms, radius or {}, density or {})
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
         runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
@@ -297,6 +298,19 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                      "commands" + (f"; its last {len(last)} runs all saw the same contact settings" if len(last) > 1
                                    else ""))
     return deck, notes
+
+
+def _override_notes(atoms: list, radius: dict, density: dict) -> list:
+    """A line for each --radius or --density that replaces what a type's particles hold: the flags
+    complete walls-only types, so replacing a held size must never pass unsaid."""
+    notes = []
+    for flag, given, k in (("--radius", radius, 0), ("--density", density, 1)):
+        for t, value in sorted(given.items()):
+            held = sorted({size[k] for snap in atoms for size in snap.get(int(t), ()) if size[k] is not None})
+            if held and held != [value]:
+                what = f"{held[0]:.6g}" if len(held) == 1 else f"{held[0]:.6g} to {held[-1]:.6g}"
+                notes.append(f"type {t}: {flag} {value:g} replaces the {what} its particles hold in the deck")
+    return notes
 
 
 def _marker_stopped(echo: str, root: Path) -> bool:
