@@ -117,3 +117,14 @@ def test_the_curve_of_a_sticking_pair_starts_above_its_stored_boundary(tmp_path)
     assert lad.with_end("overlap").evaluate([2.0, 50.0], tol=1e-9, method="master").error_bound <= 1e-9
     with pytest.raises(ParameterError, match="contact never ends"):
         lad.with_end("overlap").evaluate([0.9 * c.stick_below], tol=1e-9)
+
+
+def test_a_curve_without_a_viscous_law_answers_at_its_first_node(tmp_path):
+    # the linear spring-dashpot sticks below its curve, so the curve has no law below it: its bound
+    # at the first node read the missing law and raised a TypeError (make fuzz, Omega = 1)
+    lad = Ladder(("1", "0"), cache_dir=str(tmp_path), stream=io.StringIO())
+    c = lad.overlap_curve()
+    assert c.law is None
+    r = lad.with_end("overlap").evaluate([c.omega_lo], tol=1e-9, method="master")
+    ref = collide(Problem.of(1, 0, "overlap"), c.omega_lo, rtol=1e-13).eps
+    assert r.error_bound <= 1e-9 and abs(r.eps[0] / ref - 1) <= r.error_bound + 2e-12

@@ -137,8 +137,9 @@ class OverlapCurve(PanelRange):
         b = 0.0
         if hi >= self.omega_lo * (1 - slack) and lo <= self.omega_hi * (1 + slack):
             b = self.bound_inside
-        if lo < self.omega_lo * (1 + slack):
-            # C exp(k ln Omega): the exponent's rounding, |k ln Omega| ulps
+        if lo < self.omega_lo * (1 + slack) and self.law is not None:
+            # C exp(k ln Omega): the exponent's rounding, |k ln Omega| ulps (a curve without a law
+            # answers from its panels alone, down to its first node)
             b = max(b, self.law_bound + TOL_FLOOR * (1.0 + self.law[1] * abs(math.log(lo))))
         if hi > self.omega_hi * (1 - slack):
             b = max(b, self.elastic_bound(max(lo, self.omega_hi * (1 - slack))))
