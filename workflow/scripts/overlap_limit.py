@@ -145,5 +145,5 @@ left.set_title("markers: integrator; thin dashed: leading laws", fontsize=10)
 right.set_xlabel(r"$1/\Omega$")
 right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C\,\Omega^\kappa) - 1|$")
 fig.legend(*right.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False)
-fig.set_layout_engine("tight", rect=(0, 0.17, 1, 1))   # redone when save_figure resizes
+fig.set_layout_engine("tight", rect=(0, 0.13, 1, 1))   # redone when save_figure resizes
 save_figure(fig, out.pdf, out.png, width=1.0)
