@@ -264,7 +264,7 @@ With $\ell = \gamma + 1$, $X = \ell^{{1/\ell}}$, $\lambda = X^\gamma$, $r = (\al
 \qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k),
 \end{{equation*}}
 where $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/\ell) - \psi(1/\ell)]/\ell$ and
-$L = \ln(\lambda \mathcal{{B}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{B}} = \ln X - \gamma_E - \psi(1/\ell) - \ln \ell$,
+$L = \ln(\lambda \mathcal{{M}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{M}} = \ln X - \gamma_E - \psi(1/\ell) - \ln \ell$,
 so every constant is in closed form. (The subscript of $c_{{\mathrm{{v}}}}$ keeps it apart from Kim's $c_0$ of
 Sec.~\ref{{sec:connection}}, an unrelated number.) Here $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
 $c_{{\mathrm{{v}}}} = {sci(V.c_const, 10)}$, and contact lasts $\tau_c = (2\ln(1/\Omega) + L)/\lambda$ with
