@@ -110,6 +110,7 @@ rule typed_e_runs:
         code=code("typed_e_runs.py"),
     output:
         csv=f"{TYPED_E_RUNS}/typed_e_runs.csv",
+        values=f"{TYPED_E_RUNS}/values.tex",
         runs=typed_e_run_files(),
         readme=f"{TYPED_E_RUNS}/README.txt",
     params:

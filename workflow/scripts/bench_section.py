@@ -97,4 +97,4 @@ ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$: error agains
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False)
 fig.set_size_inches(5.6, 5.4)
 fig.tight_layout(rect=(0, 0.22, 1, 1))
-save_figure(fig, snakemake.output.pdf, snakemake.output.png)
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.8)

@@ -52,4 +52,4 @@ ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
 # below the axes: inside, it covered the curves at small Omega
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False)
 fig.tight_layout(rect=(0, 0.25, 1, 1))
-save_figure(fig, snakemake.output.pdf, snakemake.output.png)
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.8)

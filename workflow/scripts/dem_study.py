@@ -13,8 +13,8 @@
 # %%
 import numpy as np
 import pandas as pd
-from restitution_workflow.engine_record import LammpsRecorder
-from restitution_workflow.latex import fixed, sci
+from restitution_workflow.engine_record import LammpsRecorder, lammps_version
+from restitution_workflow.latex import esc, fixed, sci
 from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
 
 from restitution.dem.calibrate import calibrate
@@ -128,6 +128,8 @@ macros = {
     "DemDevForce": sci(dev["force"], 2), "DemDevOverlap": sci(dev["overlap"], 2),
     "DemRuleGap": sci(100 * gap, 2), "DemMaterial": M["name"],
     "DemCalSpeeds": ", ".join(sci(g, 2) for g in P["calibration_speeds"]),
+    # the release as the runs' own screens name it (their first line), not as the library records it
+    "DemLammpsVersion": esc(lammps_version(run["output"] for run in decks.values())),
 }
 write_text(out["values"], "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))
 
@@ -148,4 +150,4 @@ bottom.set_yscale("log")
 bottom.set_xlabel(r"impact speed $g$ (m/s)")
 bottom.set_ylabel("|LAMMPS / ours - 1|")
 fig.tight_layout()
-save_figure(fig, out["pdf"], out["png"])
+save_figure(fig, out["pdf"], out["png"], width=0.75)

@@ -45,12 +45,12 @@ ax.annotate(r"$\tau_b$", (summary["tau_b"], 0.05 * x_max), xytext=(4, 0), textco
 ax.set_ylim(-0.1 * x_max, p.plot["y_margin"] * x_max)
 ax.set_xlim(0.0, tau_end)
 ax.set_ylabel(r"scaled deformation $x = \xi / A$")
-ax.set_title(rf"forward collision, $g = {summary['g']:g}$, $\Omega = {omega:.4f}$; "
-             rf"each $x_n$ to $\tau^{{{p.max_power}}}$", fontsize=11)   # its exponent >= 7 pt printed
-fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False)
+ax.set_title(rf"forward collision, $g = {summary['g']:g}$, $\Omega = {omega:.4f}$;" "\n"
+             rf"each $x_n$ to $\tau^{{{p.max_power}}}$", fontsize=11)
+fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False)
 ax_err.set_ylim(1e-10, 10)
-ax_err.set_xlabel(r"scaled time $\tau = t / B$")
+ax_err.set_xlabel(r"scaled time $\tau = t / t_*$")
 ax_err.set_ylabel(r"$|x_{\rm series} - x_{\rm ref}|$")
 fig.align_ylabels()
-fig.tight_layout(rect=(0, 0.09, 1, 1))
-save_figure(fig, snakemake.output.pdf, snakemake.output.png)
+fig.set_layout_engine("tight", rect=(0, 0.11, 1, 1))   # redone when save_figure resizes
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.75)   # the variants' width; the main one: 0.8

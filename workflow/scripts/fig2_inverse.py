@@ -36,11 +36,11 @@ x_max = float(ref["x_tilde"].max())
 fig, (ax, ax_err) = plt.subplots(2, 1, sharex=True, figsize=(5.6, 6.3),
                                  gridspec_kw={"height_ratios": [3, 1.5]})
 ax.plot(ref["tau_tilde"], ref["x_tilde"], color="black", lw=2.4,
-        label=r"reference: forward run reversed ($\tilde x(0) = \tilde x_c$)")
+        label=r"forward run reversed (from $\tilde x_c$)")
 has_zero = "x_tilde_from_zero" in ref
 if has_zero:
     ax.plot(ref["tau_tilde"], ref["x_tilde_from_zero"], color="grey", lw=1.6,
-            label=r"inverse equation integrated from $\tilde x(0) = 0$")
+            label=r"inverse equation from $\tilde x = 0$")
     target = ref["x_tilde_from_zero"].to_numpy()
 else:
     target = ref["x_tilde"].to_numpy()
@@ -57,17 +57,17 @@ ax.annotate(r"$\tilde\tau_b$", (inv["tau_tilde_b"], 0.05 * x_max), xytext=(4, 0)
             textcoords="offset points", color="grey")
 ax.set_ylim(-0.1 * x_max, p.plot["y_margin"] * x_max)
 ax.set_xlim(0.0, inv["tau_tilde_end"])
-ax.set_ylabel(r"inverse scaled deformation $\tilde x$")
+ax.set_ylabel(r"inverse deformation $\tilde x$")
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False)
 top = ax.secondary_xaxis("top", functions=(lambda s: summary["tau_c"] - s / t_scale,
                                            lambda t: (summary["tau_c"] - t) * t_scale))
-top.set_xlabel(r"forward scaled time $\tau = \tau_c - \tilde\tau\,\varepsilon^{-\gamma/(\gamma+1)}$")
+top.set_xlabel(r"forward time $\tau = \tau_c - \tilde\tau\,\varepsilon^{-\gamma/(\gamma+1)}$")
 ax.text(0.02, 0.97, rf"inverse collision, $g = {summary['g']:g}$, $\tilde\Omega = {omega_t:.4f}$;" "\n"
         rf"each $\tilde x_n$ to $\tilde\tau^{{{p.max_power}}}$", transform=ax.transAxes, ha="left",
         va="top", fontsize=11)   # its exponent >= 7 pt printed at 0.8 of the text width
 ax_err.set_ylim(1e-10, 10)
-ax_err.set_xlabel(r"inverse scaled time $\tilde\tau$ (measured from the end of contact)")
-ax_err.set_ylabel(r"$|\tilde x_{\rm series} - \tilde x_{\rm ref}|$" + ("\n" + r"(ref. from $\tilde x = 0$)" if has_zero else ""))
+ax_err.set_xlabel(r"inverse time $\tilde\tau$ (from the end of contact)")
+ax_err.set_ylabel(r"$|\tilde x_{\rm series} - \tilde x_{\rm ref}|$")   # ref: the grey curve where drawn
 fig.align_ylabels()
-fig.tight_layout(rect=(0, 0.17, 1, 1))
-save_figure(fig, snakemake.output.pdf, snakemake.output.png)
+fig.set_layout_engine("tight", rect=(0, 0.17, 1, 1))   # redone when save_figure resizes
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.75)   # the variants' width; the main one: 0.8

@@ -52,5 +52,5 @@ ax.set_ylim(-0.1, float(v_i[-1]) * 1.05)
 ax.set_xlabel(r"scaled deformation $x$, $\tilde x$")
 ax.set_ylabel(r"scaled velocity $x' = dx/d\tau$, $\tilde x'$")
 ax.legend(loc="upper left", title=rf"damped only ($\Omega = 0$), $\gamma = {gamma}$")
-fig.tight_layout()
-save_figure(fig, snakemake.output.pdf, snakemake.output.png)
+fig.set_layout_engine("tight")   # redone when save_figure resizes
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.75)

@@ -32,7 +32,7 @@ def finish(fig, ax, xlabel, *, ncol, bottom):
     ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
     fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=ncol, frameon=False,
                title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
-    fig.tight_layout(rect=(0, bottom, 1, 1))
+    fig.set_layout_engine("tight", rect=(0, bottom, 1, 1))   # redone when save_figure resizes
     return fig
 
 
@@ -53,7 +53,7 @@ def draw_eps_of_omega():
 
 def draw_eps_of_g():
     """eps(g) from the reference and from every relation."""
-    fig, ax = plt.subplots(figsize=(5.6, 4.6))
+    fig, ax = plt.subplots(figsize=(5.0, 4.9))
     ax.plot(curves["g"], curves["eps_reference"], color="black", lw=2.6, label="reference integration")
     drawn = [curves["eps_reference"].to_numpy()]
     for _, rel in errors.iterrows():
@@ -76,11 +76,11 @@ def draw_eps_of_g():
     ax.set_ylim(max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0))
     # the label sits at the foot of its line, where no curve runs (the curves keep to the upper part)
     ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 0.0), xycoords=("data", "axes fraction"), xytext=(3, 3),
-                textcoords="offset points", color="grey", fontsize=8.5)
+                textcoords="offset points", color="grey", fontsize=10)
     ax.set_xlim(curves["g"].min(), curves["g"].max())
-    return finish(fig, ax, r"impact speed $g$ (units of the $D_1$, $D_2$ fit)", ncol=2, bottom=0.17)
+    return finish(fig, ax, r"impact speed $g$ (units of the $D_1$, $D_2$ fit)", ncol=1, bottom=0.27)
 
 
 # %%
 fig = draw_eps_of_omega() if curves["omega"].nunique() == 1 else draw_eps_of_g()
-save_figure(fig, snakemake.output.pdf, snakemake.output.png)
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.75)   # the variants' width; the article's: 0.8

@@ -120,25 +120,30 @@ write_text(out.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macr
 
 # %% figure: the two rules over Omega, and how fast the law is approached
 plt = setup_matplotlib()
-fig, (left, right) = plt.subplots(1, 2, figsize=(7.2, 3.5))
+fig, (left, right) = plt.subplots(1, 2, figsize=(7.2, 4.3))
 colours = ["C0", "C1", "C2", "C3", "C4", "C5", "C6"]
+# a marker and a line style per exponent pair as well as a colour: the figure reads in greyscale
+markers = ["o", "s", "^", "D", "v", "P", "X"]
+dashes = ["-", (0, (5, 1.5)), "-.", (0, (1, 1.2)), (0, (6, 1.5, 1, 1.5, 1, 1.5)), (0, (3, 1)), "-"]
 for i, r in enumerate(rows):
     c = curve[(curve["alpha"] == r["alpha"]) & (curve["gamma"] == r["gamma"])]
     lab = rf"$\alpha = {r['alpha']}$, $\gamma = {r['gamma']}$"
-    left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], color=colours[i % 7], lw=1.6, label=lab)
-    left.loglog(c["omega"], c["law_overlap"] / c["law_force"], color=colours[i % 7], lw=0.9, ls="--")
+    pair = {"color": colours[i % 7], "marker": markers[i % 7], "mfc": "none", "ms": 4}
+    left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], lw=1.6, label=lab,
+                markevery=(i % 4 * max(len(c) // 32, 1), max(len(c) // 8, 1)), **pair)
+    left.loglog(c["omega"], c["law_overlap"] / c["law_force"], color=colours[i % 7], lw=0.9, ls=(0, (4, 2)))
     inv = np.asarray(P.decay_inverse_omegas, dtype=float)
     d = np.abs(reference_eps(Problem.of(r["alpha"], r["gamma"], "overlap"), 1.0 / inv, CURVE_RTOL)
                / (r["C"] * inv ** -float(Fraction(r["k"]))) - 1.0)
     # below its bound under this rule the integrator's own error shows (the plateau near 5e-13)
     keep = d > integrator_bound(CURVE_RTOL, Problem.of(r["alpha"], r["gamma"], "overlap"))
-    right.semilogy(inv[keep], d[keep], "o-", color=colours[i % 7], ms=3.5, lw=1.0, label=lab)
+    right.semilogy(inv[keep], d[keep], ls=dashes[i % 7], lw=1.0, label=lab, **pair)
 left.set_ylim(top=3.0)
 left.set_xlabel(r"$\Omega$")
 left.set_ylabel(r"$\varepsilon_{\mathrm{overlap}} / \varepsilon_{\mathrm{force}}$")
-left.set_title("solid: integrator; dashed: leading laws", fontsize=8.5)
+left.set_title("markers: integrator; thin dashed: leading laws", fontsize=10)
 right.set_xlabel(r"$1/\Omega$")
-right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C\,\Omega^k) - 1|$")
-right.legend(fontsize=8.5, frameon=False)
-fig.tight_layout()
-save_figure(fig, out.pdf, out.png)
+right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C\,\Omega^\kappa) - 1|$")
+fig.legend(*right.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False)
+fig.set_layout_engine("tight", rect=(0, 0.13, 1, 1))   # redone when save_figure resizes
+save_figure(fig, out.pdf, out.png, width=1.0)

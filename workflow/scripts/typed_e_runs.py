@@ -16,7 +16,8 @@ import re
 from pathlib import Path
 
 import pandas as pd
-from restitution_workflow.engine_record import LammpsRecorder, ProcessRecorder
+from restitution_workflow.engine_record import LammpsRecorder, ProcessRecorder, lammps_version
+from restitution_workflow.latex import esc, sci
 from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.dem.engines import ENGINES
@@ -76,6 +77,11 @@ if set(files) != declared:
 for rel, text in files.items():
     write_text(HERE / rel, text)
 write_csv(snakemake.output.csv, pd.DataFrame(rows))
+# what the text says of these runs: LAMMPS' release as its screens print it, and the one impact speed
+screens = [text for rel, text in files.items() if rel.startswith("lammps/") and rel.endswith(".out")]
+write_text(snakemake.output.values, "\n".join([
+    rf"\newcommand{{\TypedERunsLammpsVersion}}{{{esc(lammps_version(screens)) if screens else 'none'}}}",
+    rf"\newcommand{{\TypedERunsSpeed}}{{{sci(P.g, 2)}}}"]))
 steps = {name: [ENGINES[name].typed_e_steps * k for k in TYPED_E_ENGINE_REFINEMENTS] for name in P.engines}
 write_text(snakemake.output.readme, f"""\
 The engine runs behind the typed-e table (typed_e.csv, the article's table of the e typed into each

@@ -98,7 +98,7 @@ V.add("EpsExponent", 1 / ex.omega_exponent if ex.omega_exponent else None, kind=
       note="eps = (Omega~/Omega)^this for a relation Omega~(Omega)")
 V.add("OmegaAtG", omega, kind="formula")
 V.add("LengthScaleAtG", summary["length_scale"], kind="formula", note="A, xi = A x")
-V.add("TimeScaleAtG", summary["time_scale"], kind="formula", note="B, t = B tau")
+V.add("TimeScaleAtG", summary["time_scale"], kind="formula", note="t_*, t = t_* tau")
 
 # %% Reference collision at g_figure
 V.add("EpsAtG", eps)
@@ -107,7 +107,7 @@ V.add("XBAtG", summary["x_b"])
 V.add("TauCAtG", summary["tau_c"])
 V.add("XCAtG", summary["x_c"])
 V.add("EndAtG", summary["ended_by"], kind="exact", note="force: contact ends where the force vanishes")
-V.add("TimeBAtG", summary["tau_b"] * summary["time_scale"], note="t_b = B tau_b (physical)")
+V.add("TimeBAtG", summary["tau_b"] * summary["time_scale"], note="t_b = t_* tau_b (physical)")
 V.add("XiBAtG", summary["x_b"] * summary["length_scale"], note="xi_b = A x_b (physical)")
 V.add("OmegaTildeAtG", summary["inverse"]["omega_tilde"])
 V.add("XTildeCAtG", summary["inverse"]["x_tilde_c"])

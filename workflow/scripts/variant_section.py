@@ -78,7 +78,7 @@ out += [r"\begin{table}[tbp]", r"  \centering", r"  \scriptsize",
 out.append(r"\paragraph{Connection.}")
 if gamma_zero:
     out.append(r"The paper's procedure needs the reference point $\tau_0$ where the damped-only "
-               r"motion reaches $x = 1$. With $\gamma = 0$ that motion is $x_0 = 1 - e^{-\tau}$: it "
+               r"motion reaches $x = 1$. With $\gamma = 0$ that motion is $x_0 = 1 - \exp(-\tau)$: it "
                r"approaches $x = 1$ only as $\tau \to \infty$, so $\tau_0$, and with it every reading of the "
                r"procedure, does not exist.")
 elif raw["ReadingsDefined"] == 0:

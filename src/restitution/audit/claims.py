@@ -250,7 +250,7 @@ def _scaling_rows(values) -> list[dict]:
         rows.append(_row("eps-scaling", "eps has terms in g^(1/4) (compared with Brilliantov's g^(1/5))", "Sec. VI",
                          f"g^({printed.EPS_G_EXPONENT})", ours, "exact exponent", verdict,
                          "Brilliantov's 1 - eps ~ g^(1/5) is the leading small-g (elastic) law; its counterpart here "
-                         "is 1 - eps ~ delta = Omega^(-(gamma+1)/(alpha+1)) with Omega ~ g^((alpha-1-2gamma)/(gamma+1)), "
+                         "is 1 - eps ~ mu = Omega^(-(gamma+1)/(alpha+1)) with Omega ~ g^((alpha-1-2gamma)/(gamma+1)), "
                          "derived with its constant in the closed-form section; the viscous law eps ~ k Omega has "
                          "g^((alpha-1-2gamma)/(gamma+1)). That any function of Omega is one of g^(1/4) is true but "
                          f"says nothing. Measured local slopes: {measured:.3f} (Omega = 1e3..2e3), "
@@ -346,7 +346,7 @@ def build_claims(values: dict) -> list[dict]:
         rows.append(_row("omega", f"Omega at g = {values['g_figure']:g}", "Sec. VI", f"{printed.OMEGA_AT_G}",
                          f"{values['omega_at_g']:.4f}", f"{OMEGA_TOLERANCE:g}",
                          _within(values["omega_at_g"], printed.OMEGA_AT_G, OMEGA_TOLERANCE),
-                         f"Omega = D* v^((alpha-1-2gamma)/(gamma+1)), v = D2^(1/gamma) g; printed / ours = "
+                         f"Omega = D* v_K^((alpha-1-2gamma)/(gamma+1)), v_K = D2^(1/gamma) g; printed / ours = "
                          f"{printed.OMEGA_AT_G / values['omega_at_g']:.4f}"))
     if values.get("tau_b_at_g") is not None:
         note = "maximum compression of the reference integration at the Omega above"

@@ -25,7 +25,7 @@ import tempfile
 import types
 from pathlib import Path
 
-__all__ = ["LammpsRecorder", "ProcessRecorder", "mask_timings"]
+__all__ = ["LammpsRecorder", "ProcessRecorder", "lammps_version", "mask_timings"]
 
 #: The screen lines that carry a wall or CPU time, a date or a port of this machine (LAMMPS', LIGGGHTS'
 #: and Yade's), and what they become.
@@ -210,3 +210,18 @@ class ProcessRecorder:
             yield self
         finally:
             self._module.subprocess = subprocess
+
+
+def lammps_version(outputs) -> str:
+    """The version LAMMPS names in the first line of its screen, ``LAMMPS (22 Jul 2025 - Update 4)``,
+    as it prints it; the same in every one of ``outputs`` (screen texts), else ValueError."""
+    found = set()
+    for text in outputs:
+        m = re.match(r"LAMMPS \((.+)\)\s*$", text.splitlines()[0] if text else "")
+        if not m:
+            raise ValueError("a LAMMPS screen without its version line")
+        found.add(m.group(1))
+    if len(found) != 1:
+        raise ValueError(f"LAMMPS screens of different versions: {sorted(found)}")
+    return found.pop()
+

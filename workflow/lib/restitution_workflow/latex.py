@@ -55,7 +55,8 @@ def esc(text: str) -> str:
 
 
 _GREEK = {"Omega": r"\Omega", "tau": r"\tau", "Delta": r"\Delta", "eps": r"\varepsilon",
-          "alpha": r"\alpha", "gamma": r"\gamma", "delta": r"\delta", "pi": r"\pi", "xi": r"\xi"}
+          "alpha": r"\alpha", "gamma": r"\gamma", "delta": r"\delta", "pi": r"\pi", "xi": r"\xi",
+          "mu": r"\mu"}
 #: Tokens that stand for one sign, as the named group that matched them.
 _SIGNS = {"pm": r"\pm", "arrow": r"\to", "le": r"\le", "ge": r"\ge", "lt": "<", "gt": ">", "bar": "|",
           "approx": r"\approx", "sim": r"\sim"}
@@ -66,7 +67,7 @@ _TOKEN = re.compile(
     r"|(?P<sqrtp>sqrt\((?P<sqrtarg>[^()]*)\))"
     r"|(?P<sqrt>sqrt(?P<sqrtnum>[0-9]))"
     r"|(?P<func>\b(?:atanh|atan|tanh|tan|log|exp)\b)"
-    r"|(?P<greek>(?<![A-Za-z])(?:Omega|tau|Delta|eps|alpha|gamma|delta|pi|xi)(?![A-Za-z]))(?P<gtilde>~)?"
+    r"|(?P<greek>(?<![A-Za-z])(?:Omega|tau|Delta|eps|alpha|gamma|delta|pi|xi|mu)(?![A-Za-z]))(?P<gtilde>~)?"
     r"(?P<gsub>" + _SUB + r")?(?P<gprime>'{1,2}(?!s\b))?"
     r"|(?P<sym>\b(?:x|D|c|G|H|v|g)(?![A-Za-z(]))(?P<stilde>~)?(?P<ssub>" + _SUB + r"|\*)?"
     r"(?P<sprime>'{1,2}(?!s\b))?"

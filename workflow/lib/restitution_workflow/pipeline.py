@@ -142,13 +142,12 @@ STYLE = {
     "figure.dpi": 100,
     "savefig.dpi": 200,
     "font.size": 10,
-    # mathtext sets an exponent or index at 0.7 of its label: at 12 pt it is 8.4 pt, >= 7 pt printed
-    # down to 0.83 of the figure's size (a 5.6 in figure at 0.75 of the text width is printed at 0.86,
-    # a 7.2 in one at the full text width at 0.87)
+    # mathtext sets an exponent or index at 0.7 of its label; the printed size of both is what
+    # save_figure(width=...) measures and guarantees (MIN_PRINTED_PT)
     "axes.labelsize": 12,
     "xtick.labelsize": 12,
     "ytick.labelsize": 12,
-    "legend.fontsize": 8.5,   # >= 7 pt printed at 0.75 of the text width
+    "legend.fontsize": 10,   # its subscripts at 7 pt
     "axes.grid": True,
     "grid.alpha": 0.3,
     "mathtext.fontset": "cm",
@@ -189,8 +188,55 @@ def order_style(n: int, color, points: int) -> dict:
             "markersize": 3.5, "markevery": (step * (n % 4) // 4, step), "markerfacecolor": "none"}
 
 
-def save_figure(fig, pdf, png) -> None:
-    """Write the figure as PDF (for LaTeX) and PNG (for people), byte-reproducibly."""
+#: The manuscripts' text width (A4 less two 2.5 cm margins), in TeX points (1/72.27 in).
+TEXT_WIDTH_PT = 160 / 25.4 * 72.27
+#: The smallest size of any text in a figure as printed, in points: tick labels, their mathtext
+#: exponents, legend entries and their subscripts alike.
+MIN_PRINTED_PT = 7.0
+
+
+def printed_text_sizes(fig, width: float) -> tuple[float, float]:
+    """(smallest printed text size in pt, printed scale) of ``fig`` included at ``width`` times the
+    text width: measured in the PDF that savefig writes (its text operators, exponents included)."""
+    import io
+    import re
+
+    from restitution_workflow.pdf_text import measure
+
+    buf = io.BytesIO()
+    fig.savefig(buf, format="pdf", metadata=PDF_METADATA, bbox_inches="tight")
+    data = buf.getvalue()
+    box = [float(x) for x in re.search(rb"/MediaBox\s*\[([^\]]*)\]", data).group(1).split()]
+    # pdfTeX scales the figure's box to the requested width; TeX points vs PDF points: 72/72.27
+    scale = width * TEXT_WIDTH_PT * 72 / 72.27 / (box[2] - box[0])
+    sizes = [size for _, _, size, _ in measure(data, inside_forms=False)]
+    return (min(sizes) * scale if sizes else float("inf")), scale
+
+
+def fit_print_width(fig, width: float) -> float:
+    """Narrow ``fig`` (fonts and height kept) until its smallest text is at least MIN_PRINTED_PT when printed at
+    ``width`` times the text width; return that smallest size. Never enlarges the figure."""
+    smallest, _ = printed_text_sizes(fig, width)
+    for _ in range(8):
+        if smallest >= MIN_PRINTED_PT + 0.05:
+            break
+        w, h = fig.get_size_inches()
+        factor = max(smallest / (MIN_PRINTED_PT + 0.15), 0.6)
+        fig.set_size_inches(w * factor, h)
+        smallest, _ = printed_text_sizes(fig, width)
+    if smallest < MIN_PRINTED_PT:
+        raise RuntimeError(f"figure text would print at {smallest:.2f} pt (< {MIN_PRINTED_PT} pt) "
+                           f"at {width} of the text width")
+    return smallest
+
+
+def save_figure(fig, pdf, png, width: float | None = None) -> None:
+    """Write the figure as PDF (for LaTeX) and PNG (for people), byte-reproducibly.
+
+    ``width``: the fraction of the text width at which the manuscript includes the figure; the
+    figure is then made small enough that every text in it prints at MIN_PRINTED_PT or more."""
+    if width is not None:
+        fit_print_width(fig, width)
     for path, metadata in ((pdf, PDF_METADATA), (png, PNG_METADATA)):
         with atomic_path(path) as tmp:
             # the format from the final name (the temporary one ends in .tmp.<ext> anyway)

@@ -214,6 +214,6 @@ def script_sources(root: Path, script: Path) -> list[Path]:
     >>> root = Path(__file__).resolve().parents[3]
     >>> files = script_sources(root, root / "workflow" / "scripts" / "typed_e.py")
     >>> sorted(f.name for f in files if f.parent.name == "restitution_workflow")
-    ['__init__.py', 'atomic.py', 'latex.py', 'pipeline.py']
+    ['__init__.py', 'atomic.py', 'latex.py', 'pdf_text.py', 'pipeline.py']
     """
     return closure(root, _imports_in(root, script, None))
