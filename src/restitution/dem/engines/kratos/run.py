@@ -162,7 +162,19 @@ os._exit(0)     # Kratos' teardown has nothing left to write; skipping it saves 
 
 
 def available() -> bool:
-    """Whether KratosMultiphysics with its DEMApplication is installed (found, not imported)."""
+    """Whether KratosMultiphysics with its DEMApplication is installed (found, not imported).
+
+    Returns
+    -------
+    bool
+        True where KratosMultiphysics is found with its DEMApplication folder (neither is imported).
+
+    Examples
+    --------
+    >>> import importlib.util
+    >>> available() <= (importlib.util.find_spec("KratosMultiphysics") is not None)
+    True
+    """
     spec = importlib.util.find_spec("KratosMultiphysics")
     return spec is not None and spec.origin is not None and (Path(spec.origin).parent / "DEMApplication").is_dir()
 
