@@ -17,6 +17,7 @@ import math
 import os
 import sys
 
+from ...extrapolate import richardson
 from ...pair import Pair
 
 __all__ = ["available", "lammps_eps", "eps_runs", "lammps_eps_extrapolated", "lammps_wall_eps"]
@@ -256,5 +257,4 @@ def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, s
     """
     dt = t_c / steps
     e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types, ntypes, style) for k in (1, 2, 4))
-    r1, r2 = 2.0 * e2 - e1, 2.0 * e4 - e2
-    return (4.0 * r2 - r1) / 3.0, e1, e2, e4
+    return richardson(e1, e2, e4, 1), e1, e2, e4     # orders dt and dt^2

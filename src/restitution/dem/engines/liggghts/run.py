@@ -19,7 +19,8 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from ...extrapolate import richardson
+from ...engine import rebound_eps
+from ...extrapolate import eps_extrapolated
 from ...pair import Pair
 from .contact import LIGGGHTS_MODEL_TYPES
 
@@ -175,36 +176,13 @@ def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[f
     >>> [round(e, 2) for e in liggghts_eps_runs(pair, [(lines, 1.0, 3e-7, 1e-3)])]  # doctest: +SKIP
     [0.9]
     """
-    eps = []
-    for (_, g, *_), (rel, gap) in zip(cases, liggghts_states(pair, cases, timeout)):
-        if gap <= pair.R1 + pair.R2:
-            raise ArithmeticError("the spheres had not separated at the end of the LIGGGHTS run")
-        eps.append(-rel / g)   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
-    return eps
+    ends = [(rel, centres - pair.R1 - pair.R2) for rel, centres in liggghts_states(pair, cases, timeout)]
+    return rebound_eps(ends, [case[1] for case in cases], "LIGGGHTS")
 
 
-def eps_runs(pair: Pair, cases: list) -> list[float]:
-    """eps of each case (contact lines, g, dt, t_run): the runner form every engine's has.
-
-    Parameters
-    ----------
-    pair, cases
-        The two spheres, and (contact lines, g, dt, t_run) per run: the form
-        :attr:`restitution.dem.engine.Engine.runner` promises (:func:`liggghts_eps_runs` runs each).
-
-    Returns
-    -------
-    list of float
-        LIGGGHTS' eps of each run, in order.
-
-    Examples
-    --------
-    >>> pair = Pair.spheres(0.0025, 0.0025, 2500.0)
-    >>> lines = liggghts_pair_style(model="hertz", E=5e6, nu=0.45, e=0.9, limit_force=False)
-    >>> [round(e, 2) for e in eps_runs(pair, [(lines, 1.0, 3e-7, 1e-3), (lines, 2.0, 3e-7, 1e-3)])]  # doctest: +SKIP
-    [0.9, 0.9]
-    """
-    return liggghts_eps_runs(pair, cases)
+#: The runner form every engine's has (restitution.dem.engine.Engine.runner): LIGGGHTS' runs
+#: already take the cases as the form gives them
+eps_runs = liggghts_eps_runs
 
 
 def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
@@ -385,6 +363,4 @@ def liggghts_eps_extrapolated(pair: Pair, contact_lines: str, speeds, t_c: dict,
     >>> round(liggghts_eps_extrapolated(pair, lines, [1.0], {1.0: 6.4515e-4}, "1/4")[1.0][0], 4)  # doctest: +SKIP
     0.9
     """
-    cases = [(contact_lines, g, t_c[g] / steps / k, 1.5 * t_c[g]) for g in speeds for k in (1, 2, 4)]
-    eps = liggghts_eps_runs(pair, cases)
-    return {g: (richardson(*eps[3 * i: 3 * i + 3], gamma), *eps[3 * i: 3 * i + 3]) for i, g in enumerate(speeds)}
+    return eps_extrapolated(liggghts_eps_runs, pair, contact_lines, speeds, t_c, gamma, steps)

@@ -22,7 +22,8 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from ...extrapolate import richardson
+from ...engine import rebound_eps
+from ...extrapolate import eps_extrapolated
 from ...pair import Pair
 
 __all__ = ["available", "yade_eps_runs", "eps_runs", "yade_states", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
@@ -161,12 +162,8 @@ def yade_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float
     >>> [round(e, 3) for e in yade_eps_runs(pair, [(*setting, 1.0, 5e-8, 1.5e-4)])]  # doctest: +SKIP
     [0.55]
     """
-    eps = []
-    for case, (rel, gap) in zip(cases, yade_states(pair, cases, timeout)):
-        if gap <= pair.R1 + pair.R2:
-            raise ArithmeticError("the spheres had not separated at the end of the Yade run")
-        eps.append(-rel / case[3])   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
-    return eps
+    ends = [(rel, centres - pair.R1 - pair.R2) for rel, centres in yade_states(pair, cases, timeout)]
+    return rebound_eps(ends, [case[3] for case in cases], "Yade")
 
 
 def eps_runs(pair: Pair, cases: list) -> list[float]:
@@ -261,10 +258,4 @@ def yade_eps_extrapolated(pair: Pair, setting: tuple, speeds, t_c: dict, gamma, 
     >>> round(yade_eps_extrapolated(pair, setting, [1.0], {1.0: 1e-4}, "0")[1.0][0], 4)  # doctest: +SKIP
     0.5503
     """
-    cases = [(*setting, g, t_c[g] / steps / k, 1.5 * t_c[g]) for g in speeds for k in (1, 2, 4)]
-    eps = yade_eps_runs(pair, cases)
-    result = {}
-    for i, g in enumerate(speeds):
-        e1, e2, e4 = eps[3 * i: 3 * i + 3]
-        result[g] = (richardson(e1, e2, e4, gamma), e1, e2, e4)
-    return result
+    return eps_extrapolated(eps_runs, pair, setting, speeds, t_c, gamma, steps)
