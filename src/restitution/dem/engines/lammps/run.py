@@ -126,7 +126,9 @@ def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, t
     Raises
     ------
     RuntimeError
-        Where LAMMPS stops on the lines, or the spheres have not separated by t_run.
+        Where LAMMPS stops on the lines.
+    ArithmeticError
+        Where the spheres have not separated by t_run.
 
     Examples
     --------
@@ -204,7 +206,9 @@ def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: flo
     Raises
     ------
     RuntimeError
-        Where LAMMPS stops on the lines, or the sphere has not left the wall by t_run.
+        Where LAMMPS stops on the lines.
+    ArithmeticError
+        Where the sphere has not left the wall by t_run.
 
     Examples
     --------

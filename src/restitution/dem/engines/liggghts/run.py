@@ -167,7 +167,9 @@ def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[f
     Raises
     ------
     RuntimeError
-        Where LIGGGHTS stops, or the spheres have not separated.
+        Where LIGGGHTS stops.
+    ArithmeticError
+        Where the spheres have not separated.
 
     Examples
     --------
@@ -278,7 +280,9 @@ def liggghts_wall_eps_runs(radius: float, density: float, cases: list, timeout: 
     Raises
     ------
     RuntimeError
-        Where LIGGGHTS stops, or the sphere has not left the wall.
+        Where LIGGGHTS stops.
+    ArithmeticError
+        Where the sphere has not left the wall.
 
     Examples
     --------
