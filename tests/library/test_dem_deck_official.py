@@ -15,6 +15,7 @@ from restitution.dem.pair import Pair
 
 from cli_run import run_cli  # noqa: E402
 from dashpot import dashpot_eps  # noqa: E402
+from tsv_rows import tsv_rows  # noqa: E402
 
 
 LAMMPS_EXAMPLES = Path("/usr/share/lammps/examples")
@@ -276,54 +277,10 @@ def test_the_old_models_tutorial_is_refused_as_a_liggghts_deck():
 
 # ------------------------------------------------------------------ every official example deck
 #: (examples directory, deck, extra arguments, what restitution deck does with it: "audited", or
-#: a word of its one-line refusal). A deck that pours a range of sizes is audited at the range's
-#: ends, and again with one size given.
-OFFICIAL = [
-    ("lammps", "granular/in.pour.drum", (), "LAMMPS stops here: Cannot use tsuji model with a cohesive normal model"),
-    ("lammps", "granular/in.pour.flatwall", (), "normal model jkr is not mapped"),
-    ("lammps", "pour/in.pour", (), "audited"),
-    ("lammps", "pour/in.pour.2d", (), "audited"),
-    ("lammps", "pour/in.pour.2d.molecule", (), "fix pour ... mol pours molecules"),
-    ("lammps", "granregion/in.granregion.box", (), "audited"),
-    ("lammps", "granregion/in.granregion.funnel", (), "audited"),
-    ("lammps", "granregion/in.granregion.funnel", ("--radius", "1=0.25"), "audited"),
-    ("lammps", "granregion/in.granregion.mixer", (), "audited"),
-    ("lammps", "granregion/in.granregion.mixer", ("--radius", "1=0.3"), "audited"),
-    ("liggghts", "ParScale/fluidizedBedTempParScale/in.DEM", (), "the deck has no pair_style"),
-    ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_init", (), "audited"),
-    ("liggghts", "ParScale/fluidizedBedTempParScale/in.liggghts_run", (), "LIGGGHTS stops here: Cannot open restart file"),
-    ("liggghts", "ParScale/fluidizedBedTempParScale/pascal/in.pascal", (), "the deck has no pair_style"),
-    ("liggghts", "ParScale/heatTransferBed_paScal/in.liggghts", (), "LIGGGHTS stops here: Fix particletemplate/sphere "
-     "(id pts1): invalid radius random style"),
-    ("liggghts", "ParScale/heatTransferBed_paScal/pascal/in.pascal", (), "the deck has no pair_style"),
-    ("liggghts", "chute_wear/in.chute_wear", (), "audited"),
-    ("liggghts", "chute_wear/in.chute_wear", ("--radius", "1=0.0015"), "audited"),
-    ("liggghts", "cohesion/in.cohesion", (), "cohesion sjkr is not mapped"),
-    ("liggghts", "cohesion/in.noCohesion", (), "audited"),
-    ("liggghts", "contactModels/in.newModels", (), "audited"),
-    ("liggghts", "contactModels/in.oldModels", (), "LIGGGHTS stops here: Invalid pair style"),
-    ("liggghts", "conveyor/in.conveyor", (), "audited"),
-    ("liggghts", "conveyor/in.conveyor", ("--radius", "1=0.015"), "audited"),
-    ("liggghts", "heatTransfer_1/in.heatGran", (), "audited"),
-    ("liggghts", "heatTransfer_2/in.heatGran", (), "audited"),
-    ("liggghts", "hydrogel_multicontact/in.hydrogel_default", (), "audited"),
-    ("liggghts", "hydrogel_multicontact/in.hydrogel_multicontact", (), "surface multicontact is not mapped"),
-    ("liggghts", "hysteresis/in.hysteresis", (), "model hooke/hysteresis is not mapped"),
-    ("liggghts", "hysteresis/in.noHysteresis", (), "audited"),
-    ("liggghts", "insert_stream/in.insert_stream", (), "audited"),
-    ("liggghts", "insert_stream/in.insert_stream", ("--radius", "1=0.015"), "audited"),
-    ("liggghts", "insert_stream/in.insert_stream_reset_timestep", (), "LIGGGHTS stops here: Cannot open restart file"),
-    ("liggghts", "meshGran/in.meshGran", (), "audited"),
-    ("liggghts", "mesh_tet/in.mesh_tet", (), "audited"),
-    ("liggghts", "movingMeshGran/in.movingMeshGran", (), "audited"),
-    ("liggghts", "multisphere_stone_restitution/in.multisphere", (), "clumps of spheres (multisphere)"),
-    ("liggghts", "packing/in.packing", (), "audited"),
-    ("liggghts", "packing/in.packing", ("--radius", "1=0.005"), "audited"),
-    ("liggghts", "sph_1/in.sph_1", (), "pair_style sph/artVisc/tensCorr is not mapped"),
-    ("liggghts", "sph_2/in.sph_2", (), "pair_style sph/artVisc/tensCorr is not mapped"),
-    ("liggghts", "superquadric/in.particle_particle", (), "(atom_style superquadric): LIGGGHTS stops here: Invalid atom "
-     "style"),
-]
+#: words of its one-line refusal), from official_decks.tsv beside this file. A deck that pours a
+#: range of sizes is audited at the range's ends, and again with one size given.
+OFFICIAL = [(code, name, () if args == "-" else tuple(args.split()), outcome)
+            for code, name, args, outcome in tsv_rows(Path(__file__).with_name("official_decks.tsv"), 4)]
 ROOTS = {"lammps": LAMMPS_EXAMPLES, "liggghts": LIGGGHTS_EXAMPLES}
 AUDITED = [row for row in OFFICIAL if row[3] == "audited"]
 needs_examples = pytest.mark.skipif(not (LAMMPS_EXAMPLES / "granular").is_dir() or not LIGGGHTS_EXAMPLES.is_dir(),

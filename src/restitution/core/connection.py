@@ -26,12 +26,54 @@ __all__ = ["FitResult", "RetraceResult", "rebound_omega", "rebound_start", "exac
            "eps_from_connection", "omega_tilde_from_c", "connection_validity", "retrace"]
 
 def rebound_omega(ex, omega, eps):
-    """Omega~ = Omega eps^((alpha-1-2gamma)/(gamma+1)): Omega with the rebound speed eps g for g."""
+    """Omega~ = Omega eps^((alpha-1-2gamma)/(gamma+1)): Omega with the rebound speed eps g for g.
+
+    Parameters
+    ----------
+    ex : Exponents
+        alpha and gamma.
+    omega : float or numpy.ndarray
+        The forward collision's Omega.
+    eps : float or numpy.ndarray
+        Its coefficient of restitution.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Omega~.
+
+    Examples
+    --------
+    >>> from restitution.core.exponents import as_exponents
+    >>> round(rebound_omega(as_exponents(("3/2", "1")), 1.0, 0.5), 6)      # 0.5^(-3/4)
+    1.681793
+    """
     return omega * eps ** float(ex.omega_exponent)
 
 
 def rebound_start(ex, x_c, eps):
-    """x~_c = x_c eps^(-1/(gamma+1)): the end of contact in the inverse collision's own variables."""
+    """x~_c = x_c eps^(-1/(gamma+1)): the end of contact in the inverse collision's own variables.
+
+    Parameters
+    ----------
+    ex : Exponents
+        alpha and gamma.
+    x_c : float
+        Where the forward contact ended, in its variables.
+    eps : float
+        The forward collision's coefficient of restitution.
+
+    Returns
+    -------
+    float
+        x~_c.
+
+    Examples
+    --------
+    >>> from restitution.core.exponents import as_exponents
+    >>> round(rebound_start(as_exponents(("3/2", "1")), 0.3, 0.5), 6)      # 0.3 / sqrt(0.5)
+    0.424264
+    """
     return x_c * eps ** (-1.0 / float(ex.gamma + 1))
 
 
@@ -41,6 +83,27 @@ def exact_omega_tilde(problem, omegas, *, rtol: float = 1e-12) -> dict:
     Omega~ = Omega eps^((alpha-1-2gamma)/(gamma+1)) (the rebound speed g~ = eps g put into the
     definition of Omega). Also returns eps, x_c and x~_c = x_c eps^(-1/(gamma+1)), the start of the
     inverse collision in its own variables.
+
+    Parameters
+    ----------
+    problem : Problem or tuple
+        The exponents (an Exponents or an (alpha, gamma) pair).
+    omegas : array_like
+        Forward Omegas.
+    rtol : float, optional
+        The reference integrator's tolerance.
+
+    Returns
+    -------
+    dict
+        {"omega", "omega_tilde", "eps", "x_c", "x_tilde_c", "tau_b", "x_b", "tau_c", "ended_by"},
+        arrays over ``omegas``.
+
+    Examples
+    --------
+    >>> e = exact_omega_tilde(("3/2", "1"), [1.0])
+    >>> round(float(e["eps"][0]), 6), round(float(e["omega_tilde"][0]), 6)
+    (0.499731, 1.682471)
     """
     from .collision import collide_many
 
@@ -61,6 +124,25 @@ class FitResult:
     ``stderr`` is the usual OLS estimate sqrt(diag(s^2 (X^T X)^-1)), s^2 = RSS/(n - 3), and says how
     strongly the coefficients depend on that misfit, not a statistical uncertainty.
     ``max_abs_residual`` bounds |Omega~_exact - fit| over the sampled Omegas.
+
+    Parameters
+    ----------
+    c, stderr : tuple of float
+        c0-c2 and their standard errors.
+    covariance : numpy.ndarray
+        The 3 x 3 covariance the standard errors come from.
+    omega, omega_tilde, residuals : numpy.ndarray
+        The points fitted and the fit's misfit at each.
+    max_abs_residual, rms, max_rel_residual : float
+        The largest, root-mean-square and largest relative misfit.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> x = np.linspace(1.0, 4.0, 5)
+    >>> fit = fit_quadratic(x, 1.0 + 2.0 * x + 3.0 * x ** 2 + 0.01 * np.cos(x))
+    >>> sorted(fit.as_dict())[:3], fit.max_abs_residual < 0.01
+    (['c', 'max_abs_residual', 'max_rel_residual'], True)
     """
 
     c: tuple
@@ -81,7 +163,29 @@ class FitResult:
 
 
 def fit_quadratic(omegas, omega_tilde) -> FitResult:
-    """OLS fit of omega_tilde on [1, Omega, Omega^2] (see FitResult)."""
+    """OLS fit of omega_tilde on [1, Omega, Omega^2] (see FitResult).
+
+    Parameters
+    ----------
+    omegas, omega_tilde : array_like
+        The points, at least 4.
+
+    Returns
+    -------
+    FitResult
+
+    Raises
+    ------
+    ParameterError
+        With fewer than 4 points.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> x = np.linspace(1.0, 4.0, 5)
+    >>> [round(c, 9) for c in fit_quadratic(x, 1.0 + 2.0 * x + 3.0 * x ** 2).c]
+    [1.0, 2.0, 3.0]
+    """
     x = np.asarray(omegas, float)
     y = np.asarray(omega_tilde, float)
     if x.size < 4:
@@ -97,13 +201,53 @@ def fit_quadratic(omegas, omega_tilde) -> FitResult:
 
 
 def fit_connection(problem, omegas, *, rtol: float = 1e-12) -> FitResult:
-    """Fit c0-c2 to the exact Omega~(Omega) at the given Omegas (>= 4 of them)."""
+    """Fit c0-c2 to the exact Omega~(Omega) at the given Omegas (>= 4 of them).
+
+    Parameters
+    ----------
+    problem, omegas, rtol
+        As :func:`exact_omega_tilde` takes them; at least 4 Omegas.
+
+    Returns
+    -------
+    FitResult
+        :func:`fit_quadratic`'s, of the exact Omega~ at these Omegas.
+
+    Raises
+    ------
+    ParameterError
+        With fewer than 4 Omegas.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> fit = fit_connection(("3/2", "1"), np.linspace(0.5, 2.0, 6))
+    >>> [round(c, 4) for c in fit.c], fit.max_abs_residual < 5e-3
+    ([0.5335, 1.1812, -0.034], True)
+    """
     exact = exact_omega_tilde(problem, omegas, rtol=rtol)
     return fit_quadratic(exact["omega"], exact["omega_tilde"])
 
 
 def omega_tilde_from_c(omega, c) -> np.ndarray:
-    """c0 + c1 Omega + c2 Omega^2 (+ ...) for a sequence of coefficients c."""
+    """c0 + c1 Omega + c2 Omega^2 (+ ...) for a sequence of coefficients c.
+
+    Parameters
+    ----------
+    omega : array_like
+        Omegas.
+    c : sequence of float
+        c0, c1, c2, ...
+
+    Returns
+    -------
+    numpy.ndarray
+
+    Examples
+    --------
+    >>> omega_tilde_from_c([0.0, 1.0, 2.0], (1.0, 2.0, 3.0))
+    array([ 1.,  6., 17.])
+    """
     omega = np.asarray(omega, float)
     return sum(float(ci) * omega ** i for i, ci in enumerate(c))
 
@@ -117,6 +261,32 @@ def eps_from_connection(problem, omega, c):
     force) and flag where the relation fails. With k = alpha - 1 - 2gamma, eps > 1 exactly where
     Omega~ < Omega for k < 0 (the paper's case, k = -1/2) and where Omega~ > Omega for k > 0;
     :func:`connection_validity` gives those Omega intervals for a set of c's.
+
+    Parameters
+    ----------
+    problem : Problem or tuple
+        The exponents.
+    omega : float or array_like
+        Omegas.
+    c : sequence of float
+        c0, c1, c2, ...
+
+    Returns
+    -------
+    float or numpy.ndarray
+        eps (a float for a scalar Omega).
+
+    Raises
+    ------
+    ParameterError
+        Where alpha - 1 - 2 gamma = 0.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> c = fit_connection(("3/2", "1"), np.linspace(0.5, 2.0, 6)).c
+    >>> round(float(eps_from_connection(("3/2", "1"), 1.0, c)), 3)    # the exact eps is 0.4997
+    0.5
     """
     ex = as_exponents(problem)
     k = ex.omega_exponent
@@ -136,6 +306,31 @@ def connection_validity(problem, c) -> dict:
 
     Returns {"omega_tilde_nonpositive": [(lo, hi), ...], "eps_above_one": [(lo, hi), ...]}, from the
     real positive roots of the polynomials (hi = inf for an unbounded interval).
+
+    Parameters
+    ----------
+    problem : Problem or tuple
+        The exponents.
+    c : sequence of float
+        c0, c1, c2, ...
+
+    Returns
+    -------
+    dict
+        {"omega_tilde_nonpositive": intervals, "eps_above_one": intervals}.
+
+    Raises
+    ------
+    ParameterError
+        As :func:`eps_from_connection` does (alpha - 1 - 2 gamma = 0).
+
+    Examples
+    --------
+    The paper's printed c0-c2 give no eps for Omega in about (4.25, 55.3):
+
+    >>> v = connection_validity(("3/2", "1"), (6.0203, -1.5257, 0.0256))
+    >>> [(round(lo, 2), round(hi, 2)) for lo, hi in v["omega_tilde_nonpositive"]]
+    [(4.25, 55.35)]
     """
     ex = as_exponents(problem)
     k = ex.omega_exponent
@@ -183,6 +378,23 @@ class RetraceResult:
     ``max_deviation`` = max |x_retraced - x_forward| / x_b over ``tau`` (forward variables);
     ``v_end_error`` = |eps x~'(end) + 1|: the inverse run must arrive with x' = 1 in forward variables;
     ``tau_error`` = |tau_c - s^-gamma tau~_end|: and at forward time 0.
+
+    Parameters
+    ----------
+    omega, omega_tilde, eps : float
+        The forward Omega, the inverse one and the forward eps.
+    x_tilde_start : float
+        Where the inverse collision starts, in its variables.
+    tau, x_forward, x_retraced : numpy.ndarray
+        The forward times compared and both trajectories there.
+    max_deviation, v_end_error, tau_error : float
+        As above.
+
+    Examples
+    --------
+    >>> r = retrace(("3/2", "1"), 1.0, samples=21)
+    >>> r.tau.size <= 21, round(r.omega_tilde, 6)
+    (True, 1.682471)
     """
 
     omega: float
@@ -209,6 +421,32 @@ def retrace(problem, omega, *, rtol: float = 1e-12, samples: int = 201) -> Retra
 
     and x'' + Omega x^alpha + x^gamma x' = 0 becomes x~'' + Omega s^(alpha-1-2gamma) x~^alpha - x~^gamma x~' = 0:
     Omega~ = Omega eps^((alpha-1-2gamma)/(gamma+1)), x~(0) = x_c / s, x~'(0) = 1.
+
+    Parameters
+    ----------
+    problem : Problem or tuple
+        The exponents.
+    omega : float
+        The forward Omega.
+    rtol : float, optional
+        The integrators' tolerance.
+    samples : int, optional
+        How many forward times the two trajectories are compared at.
+
+    Returns
+    -------
+    RetraceResult
+
+    Raises
+    ------
+    ParameterError
+        Where omega is not a finite number > 0.
+
+    Examples
+    --------
+    >>> r = retrace(("3/2", "1"), 1.0)
+    >>> r.max_deviation < 1e-8, r.v_end_error < 1e-8
+    (True, True)
     """
     from .collision import collide, inverse_collide
 

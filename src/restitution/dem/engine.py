@@ -15,7 +15,7 @@ import importlib
 
 from ..core.errors import ParameterError
 
-__all__ = ["Engine"]
+__all__ = ["Engine", "rebound_eps"]
 
 
 class Engine:
@@ -124,7 +124,9 @@ class Engine:
 
     @property
     def runner(self):
-        """The module that runs the real engine, or None where it is not installed."""
+        """The module that runs the real engine, or None where it is not installed: its
+        ``eps_runs(pair, cases)`` gives the engine's eps of each case (setting, g, dt, t_run), in
+        order, the setting as :meth:`Engine.typed_e_case` gives it."""
         if self.runner_module is None:
             return None
         module = importlib.import_module(self.runner_module)
@@ -166,3 +168,45 @@ class Engine:
     def notes(self, settings) -> list:
         """What to say beside an answer made of these settings (one line each, for stderr)."""
         return []
+
+
+def rebound_eps(ends, speeds, label: str) -> list[float]:
+    """eps of each head-on run from the state it ended in: eps = -(v1 - v2) / g, the runners'
+    common last step (the bodies approach at v1 - v2 = g > 0 and rebound at -eps g).
+
+    Parameters
+    ----------
+    ends : iterable of (float, float)
+        (relative normal velocity v1 - v2, distance between the surfaces) at the end of each run.
+    speeds : iterable of float
+        Each run's approach speed g, in the same order.
+    label : str
+        The engine, as the refusal names it.
+
+    Returns
+    -------
+    list of float
+        eps of each run, in order.
+
+    Raises
+    ------
+    ArithmeticError
+        Where a run ended with the surfaces still touching (its velocity is not yet the rebound's).
+    ValueError
+        Where ``ends`` and ``speeds`` differ in length (a run whose state the engine did not report).
+
+    Examples
+    --------
+    >>> rebound_eps([(-0.5, 1e-4), (-1.5, 2e-5)], [1.0, 2.0], "Yade")
+    [0.5, 0.75]
+    >>> rebound_eps([(-0.5, 0.0)], [1.0], "Yade")
+    Traceback (most recent call last):
+    ...
+    ArithmeticError: the bodies had not separated at the end of the Yade run
+    """
+    eps = []
+    for (rel, gap), g in zip(ends, speeds, strict=True):
+        if gap <= 0.0:
+            raise ArithmeticError(f"the bodies had not separated at the end of the {label} run")
+        eps.append(-rel / g)
+    return eps

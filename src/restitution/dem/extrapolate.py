@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-__all__ = ["orders", "richardson"]
+__all__ = ["orders", "richardson", "eps_extrapolated"]
 
 
 def orders(gamma) -> tuple[float, float]:
@@ -68,3 +68,49 @@ def richardson(e1: float, e2: float, e4: float, gamma) -> float:
         return (f * b - a) / (f - 1.0)
 
     return level(level(e1, e2, p), level(e2, e4, p), q)
+
+
+def eps_extrapolated(eps_runs, pair, setting, speeds, t_c: dict, gamma, steps: int,
+                     t_run: dict | None = None) -> dict:
+    """{g: (eps extrapolated to dt = 0, eps at t_c/steps, /2, /4)} for one setting of an engine at
+    each speed, all the runs in one call of its runner (one engine process where it batches them).
+
+    Parameters
+    ----------
+    eps_runs : callable
+        The engine's runner, ``eps_runs(pair, [(setting, g, dt, t_run), ...])`` -> eps of each
+        (the form of :attr:`restitution.dem.engine.Engine.runner`).
+    pair : Pair
+        The two spheres.
+    setting
+        The engine's setting, as ``eps_runs`` takes it.
+    speeds : iterable of float
+        Approach speeds.
+    t_c : dict
+        {g: contact time}: the runs' steps are t_c / steps, / 2 steps and / 4 steps.
+    gamma : rational or str
+        The damping exponent (:func:`richardson`'s orders).
+    steps : int
+        Steps per contact of the coarsest run.
+    t_run : dict, optional
+        {g: length of the run}; 1.5 t_c where not given.
+
+    Returns
+    -------
+    dict
+        {g: (eps at dt = 0, the engine's eps at the three steps)}.
+
+    Examples
+    --------
+    A stand-in runner whose eps(dt) = 0.6 + 10 dt + 1e4 dt^2 is extrapolated to 0.6 at each speed:
+
+    >>> def runs(pair, cases):
+    ...     return [0.6 + 10 * dt + 1e4 * dt ** 2 for setting, g, dt, t in cases]
+    >>> out = eps_extrapolated(runs, None, "lines", [1.0, 2.0], {1.0: 1e-3, 2.0: 8e-4}, 1, steps=100)
+    >>> [round(out[g][0], 12) for g in (1.0, 2.0)]
+    [0.6, 0.6]
+    """
+    speeds = list(speeds)
+    length = t_run if t_run is not None else {g: 1.5 * t_c[g] for g in speeds}
+    eps = eps_runs(pair, [(setting, g, t_c[g] / steps / k, length[g]) for g in speeds for k in (1, 2, 4)])
+    return {g: (richardson(*eps[3 * i: 3 * i + 3], gamma), *eps[3 * i: 3 * i + 3]) for i, g in enumerate(speeds)}

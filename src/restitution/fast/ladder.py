@@ -55,7 +55,7 @@ from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request, Setting
 from .rungs import ladder_rungs, rung_names
 from .rungs.calibrated import SAFETY
 
-__all__ = ["EpsResult", "Part", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "DEFAULT_TOL", "TOL_FLOOR"]
+__all__ = ["EpsResult", "Part", "PartSettings", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "DEFAULT_TOL", "TOL_FLOOR"]
 
 # ------------------------------------------------------------------------------------------ result
 @dataclass(frozen=True)
@@ -76,13 +76,41 @@ class Part:
 
 
 @dataclass(frozen=True)
+class PartSettings:
+    """The setting of an answer made part by part: each part's rung and its
+    :class:`~restitution.fast.rung.Setting`, in increasing Omega. ``str()`` shows them as
+    "rung: setting" joined by "; " (how tables and ``--json`` show it).
+
+    Parameters
+    ----------
+    parts : tuple of (str, Setting)
+        (rung name, its setting) per part.
+
+    Examples
+    --------
+    >>> s = PartSettings((("master", Setting(label="61 panels")), ("integrator", Setting(rtol=5e-08))))
+    >>> str(s), s.parts[1][1].rtol
+    ('master: 61 panels; integrator: rtol=5e-08', 5e-08)
+    """
+
+    parts: tuple = ()
+
+    def __str__(self) -> str:
+        return "; ".join(f"{method}: {setting}" for method, setting in self.parts)
+
+    def __bool__(self) -> bool:
+        return bool(self.parts)
+
+
+@dataclass(frozen=True)
 class EpsResult:
     """What ``epsilon`` returns: eps (numpy array, same shape as the input), the rungs used and their bounds.
 
-    ``setting`` shows the rung's :class:`~restitution.fast.rung.Setting` (e.g. "rtol=1e-10"; each
-    part's is in ``parts``); ``candidates`` is the chooser's
-    table: one dict per rung with its bound over these inputs (inf when outside its domain), the
-    expected cost and why it was or was not eligible. An array whose parts different rungs answer
+    ``setting`` is the rung's :class:`~restitution.fast.rung.Setting` (its ``str()`` e.g.
+    "rtol=1e-10"), or for an answer made part by part a :class:`PartSettings` (each part's is also
+    in ``parts``); ``candidates`` is the chooser's table: one dict per rung name with its bound
+    over these inputs (inf when outside its domain), the expected cost, its Setting and why it was
+    or was not eligible (of two rungs of one name, one per end rule, the one serving the rule asked). An array whose parts different rungs answer
     (each point by the cheapest rung that meets tol over its part) has one :class:`Part` per rung
     in ``parts``, ``methods`` counts the points each answered, ``bounds`` is the bound at each
     point, and ``method`` names them all joined by "+" (the candidates then carry their part's index).
@@ -102,10 +130,11 @@ class EpsResult:
         read through it).
     tol : float or None
         The tolerance asked.
-    setting : str, optional
-        The rung's parameter.
+    setting : Setting or PartSettings, optional
+        What the rung ran at (its ``str()`` is what tables and ``--json`` show).
     candidates : tuple of dict, optional
-        The chooser's table (``method``, ``bound``, ``cost``, ``available``, ``reason``).
+        The chooser's table (``method``, ``bound``, ``cost``, ``setting`` (a Setting), ``available``,
+        ``reason``).
     coefficients : dict, optional
         The closed form's numbers, when that rung answered.
     parts : tuple of Part, optional
@@ -122,6 +151,9 @@ class EpsResult:
     ('exact-family', True)
     >>> r.methods
     {'exact-family': 1}
+    >>> r = epsilon(alpha="3/2", gamma=1, omega=0.3, method="integrator", tol=1e-6, build=False)
+    >>> round(r.setting.rtol, 12), str(r.setting), r.as_dict()["setting"]
+    (5e-08, 'rtol=5e-08', 'rtol=5e-08')
     """
 
     eps: np.ndarray
@@ -130,7 +162,7 @@ class EpsResult:
     omega: np.ndarray
     problem: Problem
     tol: float
-    setting: str = ""
+    setting: Setting | PartSettings = field(default_factory=Setting)
     candidates: tuple = ()
     coefficients: dict | None = None   # the closed form's numbers, when that rung answered
     parts: tuple = ()
@@ -163,7 +195,7 @@ class EpsResult:
     def as_dict(self) -> dict:
         return {"eps": np.asarray(self.eps, float).ravel().tolist(), "method": self.method,
                 "error_bound": float(self.error_bound), "alpha": str(self.alpha), "gamma": str(self.gamma),
-                "tol": self.tol, "setting": self.setting, "methods": self.methods,
+                "tol": self.tol, "setting": str(self.setting), "methods": self.methods,
                 "parts": [p.as_dict() for p in self.parts],
                 **({} if self.coefficients is None else {"coefficients": self.coefficients})}
 
@@ -188,6 +220,17 @@ def _omega_checked(omega, field_name: str = "omega") -> tuple[np.ndarray, float,
         bad = ~(np.isfinite(arr) & (arr >= lo) & (arr <= hi))
         raise ParameterError(field_name, float(arr[bad].flat[0]), allowed)
     return arr, least, most
+
+
+def _one_per_name(quotes: list) -> list:
+    """The quotes a table shows: of two rungs of one name (one per end rule, as master and
+    integrator are), the one that serves the rule asked; a rung serving neither, once."""
+    served = {q.name for q in quotes if q.serves}
+    first: dict = {}
+    for q in quotes:
+        if q.serves or q.name not in served:
+            first.setdefault(q.name, q)
+    return list(first.values())
 
 
 def _check_tol(tol) -> float:
@@ -406,12 +449,12 @@ class Ladder:
             # an exact rung first (Rung.exact): none is more accurate, and it reads no cache
             order = sorted(ok, key=lambda q: (not q.exact, q.cost, q.bound))
         chosen, eps, bound = self._first_within(order, flat, tol if checked else math.inf, cached)
-        table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": str(q.setting),
-                       "available": q.run is not None, "reason": q.reason} for q in quotes)
+        table = tuple({"method": q.name, "bound": q.bound, "cost": q.cost, "setting": q.setting,
+                       "available": q.run is not None, "reason": q.reason} for q in _one_per_name(quotes))
         lo, hi = extremes if extremes is not None else (float(np.min(flat)), float(np.max(flat)))
         part = Part(chosen.name, lo, hi, int(flat.size), float(bound), chosen.setting)
         return EpsResult(eps.reshape(om.shape), chosen.name, float(bound), om, self.problem,
-                         tol if checked else None, str(chosen.setting), table, chosen.coefficients,
+                         tol if checked else None, chosen.setting, table, chosen.coefficients,
                          (part,))
 
     # -- each part of an array its own rung
@@ -467,7 +510,7 @@ class Ladder:
         parts = tuple(p for r in results for p in r.parts)
         table = tuple({**row, "part": i} for i, r in enumerate(results) for row in r.candidates)
         return EpsResult(eps.reshape(om.shape), "+".join(names), max(p.bound for p in parts), om,
-                         self.problem, tol, "; ".join(f"{p.method}: {p.setting}" for p in parts),
+                         self.problem, tol, PartSettings(tuple((p.method, p.setting) for p in parts)),
                          table, None, parts)
 
     def _refuse_sticking(self, flat: np.ndarray) -> None:

@@ -24,8 +24,25 @@ def _one_plus_minus_u(lx, half_sigma):  # pragma: no cover - compiled
 
 
 @njit(cache=True)
+def _power_series(coef, u):  # pragma: no cover - compiled
+    """sum coef[j] u^j (Horner)."""
+    poly = coef[coef.size - 1]
+    for j in range(coef.size - 2, -1, -1):
+        poly = poly * u + coef[j]
+    return poly
+
+
+@njit(cache=True)
+def _chebyshev_series(coef, u):  # pragma: no cover - compiled
+    """sum coef[j] T_j(u) (Clenshaw)."""
+    b1, b2 = 0.0, 0.0
+    for j in range(coef.size - 1, 0, -1):
+        b1, b2 = 2.0 * u * b1 - b2 + coef[j], b1
+    return u * b1 - b2 + coef[0]
+
+
+@njit(cache=True)
 def _kernel(om, A, k, b, c_log, c3, half_sigma, m0, m1, coef, out):  # pragma: no cover - compiled
-    n = coef.size
     for i in range(om.size):
         x = b * om[i]
         lx = math.log(x)
@@ -38,15 +55,11 @@ def _kernel(om, A, k, b, c_log, c3, half_sigma, m0, m1, coef, out):  # pragma: n
             env *= up
         for _ in range(m1):
             env *= um
-        poly = coef[n - 1]
-        for j in range(n - 2, -1, -1):
-            poly = poly * u + coef[j]
-        out[i] = 1.0 / (1.0 + skel + env * poly)
+        out[i] = 1.0 / (1.0 + skel + env * _power_series(coef, u))
 
 
 @njit(cache=True)
 def _kernel_overlap(om, A, kv, b, lnK, decay_rate, half_sigma, m1, P, coef, out):  # pragma: no cover - compiled
-    n = coef.size
     for i in range(om.size):
         x = b * om[i]
         lx = math.log(x)
@@ -57,10 +70,7 @@ def _kernel_overlap(om, A, kv, b, lnK, decay_rate, half_sigma, m1, P, coef, out)
         env = math.exp(-decay_rate / x)
         for _ in range(m1):
             env *= um
-        b1, b2 = 0.0, 0.0                        # Clenshaw: the sum of coef[j] T_j(u)
-        for j in range(n - 1, 0, -1):
-            b1, b2 = 2.0 * u * b1 - b2 + coef[j], b1
-        poly = u * b1 - b2 + coef[0]
+        poly = _chebyshev_series(coef, u)
         out[i] = 1.0 / (w + math.exp(lnK - kv * lx + (kv - A) / P * lp + env * poly))
 
 

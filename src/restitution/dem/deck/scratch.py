@@ -219,19 +219,12 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
     word = key.split()[0]
     if "$" in word:
         # what it would run cannot be checked first: never run; the deck is refused if it reaches it
-        scratch.dynamic.append((loc, key))
-        scratch.lines.setdefault(DYNAMIC.format(len(scratch.dynamic) - 1), loc)
-        return DYNAMIC.format(len(scratch.dynamic) - 1)
+        return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
-        scratch.skipped.append((word, loc))
-        # known as a command of its line, so its echo (also from inside an if) tells it was reached
-        scratch.lines.setdefault(NOOP.format(len(scratch.skipped) - 1), loc)
-        return NOOP.format(len(scratch.skipped) - 1)
+        return _labelled(scratch, scratch.skipped, NOOP, (word, loc), loc)
     if word in ("include", "jump") and len(key.split()) > 1 and _outside(key.split()[1]):
         # a file outside the copied folder is read as it is, shell lines and all: never run
-        scratch.dynamic.append((loc, key))
-        scratch.lines.setdefault(DYNAMIC.format(len(scratch.dynamic) - 1), loc)
-        return DYNAMIC.format(len(scratch.dynamic) - 1)
+        return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word == "quit":
         path = scratch.root / f"quit_{sum(1 for _ in scratch.root.glob('quit_*'))}"
         path.write_text(marker(None, key))
@@ -252,6 +245,16 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
     if word == "if":
         return _safe_if(command, loc, scratch, marker)
     return None
+
+
+def _labelled(scratch: Scratch, kept: list, template: str, entry, loc) -> str:
+    """The no-op label that stands for a command never run: ``entry`` appended to ``kept`` (the
+    scratch's ``skipped`` or ``dynamic``), the label numbered by its place there, and known as a
+    command of line ``loc``, so that its echo (also from inside an if) tells the deck reached it."""
+    kept.append(entry)
+    label = template.format(len(kept) - 1)
+    scratch.lines.setdefault(label, loc)
+    return label
 
 
 def _outside(name: str) -> bool:

@@ -49,7 +49,30 @@ LINEAR_ZETA_STEP = 16.0 / 2 ** 18
 
 
 def kratos_modulus(E1: float, nu1: float, E2: float | None = None, nu2: float | None = None) -> float:
-    """E* = E1 E2 / (E2 (1 - nu1^2) + E1 (1 - nu2^2)), the second material the first by default."""
+    """E* = E1 E2 / (E2 (1 - nu1^2) + E1 (1 - nu2^2)), the second material the first by default.
+
+    Parameters
+    ----------
+    E1, nu1 : float
+        Young's modulus (> 0) and Poisson ratio (in (-1, 1)) of the first material.
+    E2, nu2 : float, optional
+        The second material's (or the wall's); the first's where None.
+
+    Returns
+    -------
+    float
+        The effective modulus E*.
+
+    Raises
+    ------
+    ParameterError
+        Where a modulus is not a finite positive number or a ratio is outside (-1, 1).
+
+    Examples
+    --------
+    >>> round(kratos_modulus(1e7, 0.3), 1), round(kratos_modulus(1e7, 0.3, 2e11, 0.3), 1)
+    (5494505.5, 10988461.6)
+    """
     E2 = E1 if E2 is None else E2
     nu2 = nu1 if nu2 is None else nu2
     for name, E in (("E", E1), ("E2", E2)):
@@ -62,7 +85,23 @@ def kratos_modulus(E1: float, nu1: float, E2: float | None = None, nu2: float | 
 
 def linear_force_eps(zeta: float) -> float:
     """eps of delta'' + 2 zeta w delta' + w^2 delta = 0 when the total force may not pull (it ends
-    where it vanishes), for any damping ratio zeta > 0 (under-, critically and overdamped)."""
+    where it vanishes), for any damping ratio zeta > 0 (under-, critically and overdamped).
+
+    Parameters
+    ----------
+    zeta : float
+        The damping ratio, > 0.
+
+    Returns
+    -------
+    float
+        eps, in (0, 1).
+
+    Examples
+    --------
+    >>> round(linear_force_eps(0.1), 6), round(linear_force_eps(1.0), 6), round(linear_force_eps(2.0), 6)
+    (0.744079, 0.135335, 0.047769)
+    """
     if zeta < 1.0:
         w = math.sqrt(1.0 - zeta * zeta)
         return math.exp(-zeta / w * (math.pi - math.atan2(2.0 * zeta * w, 1.0 - 2.0 * zeta * zeta)))
@@ -82,7 +121,29 @@ def _clamped(e: float) -> float:
 
 
 def kratos_linear_zeta(e: float) -> float:
-    """The zeta Kratos' bisection gives for e (its steps: the midpoint of the last interval)."""
+    """The zeta Kratos' bisection gives for e (its steps: the midpoint of the last interval).
+
+    Parameters
+    ----------
+    e : float
+        The typed COEFFICIENT_OF_RESTITUTION, in (0, 0.999] (below 0.001 read as 0.001).
+
+    Returns
+    -------
+    float
+        zeta, a midpoint of Kratos' bisection grid (cells LINEAR_ZETA_STEP wide).
+
+    Raises
+    ------
+    ParameterError
+        Where e is outside (0, 1], or above 0.999 (Kratos sets no damping there).
+
+    Examples
+    --------
+    >>> zeta = kratos_linear_zeta(0.5)
+    >>> round(zeta, 6), abs(linear_force_eps(zeta) - 0.5) < 1e-4
+    (0.25528, True)
+    """
     e = _clamped(e)
     lo, hi, width = _BISECTION
     mid = 0.5 * (lo + hi)
@@ -101,7 +162,30 @@ def kratos_linear_zeta(e: float) -> float:
 
 
 def kratos_damping_ratio(law: str, e: float) -> float:
-    """DAMPING_GAMMA that Kratos derives from a typed e for ``law`` ("hertz" or "linear")."""
+    """DAMPING_GAMMA that Kratos derives from a typed e for ``law`` ("hertz" or "linear").
+
+    Parameters
+    ----------
+    law : str
+        "hertz" (Thornton's fit) or "linear" (Kratos' bisection).
+    e : float
+        The typed COEFFICIENT_OF_RESTITUTION.
+
+    Returns
+    -------
+    float
+        The damping ratio.
+
+    Raises
+    ------
+    ParameterError
+        For another law, or an e Kratos does not damp with.
+
+    Examples
+    --------
+    >>> round(kratos_damping_ratio("hertz", 0.5), 6), round(kratos_damping_ratio("linear", 0.5), 6)
+    (0.233025, 0.25528)
+    """
     law = one_of("law", law, tuple(KRATOS_LAWS.values()))
     return thornton_betan(_clamped(e)) if law == "hertz" else kratos_linear_zeta(e)
 
@@ -111,7 +195,40 @@ def kratos_contact(pair: Pair, *, law: str, e: float, E: float, nu: float, E2: f
     """The contact of a Kratos material relation: ``law`` "hertz" or "linear" (or Kratos' name),
     typed e, the materials' E and nu (E2, nu2 of the other material or of the wall, the first by
     default); ``wall``: a sphere on a wall (``pair`` then Pair.wall: effective radius and mass the
-    sphere's)."""
+    sphere's).
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair.
+    law : str
+        "hertz", "linear", or Kratos' name of either (``KRATOS_LAWS``).
+    e : float
+        The typed COEFFICIENT_OF_RESTITUTION.
+    E, nu : float
+        The first material's Young's modulus and Poisson ratio.
+    E2, nu2 : float, optional
+        The other material's or the wall's (the first's where None).
+    wall : bool, optional
+        A sphere on a wall (the linear law's stiffness lacks the factor 1.432 there).
+
+    Returns
+    -------
+    Contact
+        Hertz: alpha = 3/2, gamma = 1/4; linear: alpha = 1, gamma = 0; end rule "force".
+
+    Raises
+    ------
+    ParameterError
+        For another law, a material constant out of range or an e Kratos does not damp with.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.01, 0.01, 2500.0)
+    >>> c = kratos_contact(pair, law="hertz", e=0.5, E=1e7, nu=0.3)
+    >>> str(c.alpha), str(c.gamma), c.end, round(c.D1 / 1e8, 6)
+    ('3/2', '1/4', 'force', 0.989359)
+    """
     law = KRATOS_LAWS.get(law, law)
     law = one_of("law", law, tuple(KRATOS_LAWS.values()))
     Es = kratos_modulus(E, nu, E2, nu2)
@@ -126,7 +243,30 @@ def kratos_contact(pair: Pair, *, law: str, e: float, E: float, nu: float, E2: f
 def kratos_e(contact: Contact) -> dict:
     """{"DAMPING_GAMMA", "COEFFICIENT_OF_RESTITUTION"} that give this contact's D2 (its D1 given by
     the materials): the damping ratio, and the e whose Kratos ratio is it (Hertz: Thornton's fit
-    inverted; linear: e_force(zeta), which Kratos' bisection turns back into zeta to 6e-5)."""
+    inverted; linear: e_force(zeta), which Kratos' bisection turns back into zeta to 6e-5).
+
+    Parameters
+    ----------
+    contact : Contact
+        Hertz (3/2, 1/4) or linear (1, 0), under the force rule.
+
+    Returns
+    -------
+    dict
+        {"DAMPING_GAMMA": the ratio, "COEFFICIENT_OF_RESTITUTION": e, or None where no e in
+        Kratos' range gives it}.
+
+    Raises
+    ------
+    ParameterError
+        For another end rule or other exponents.
+
+    Examples
+    --------
+    >>> c = kratos_contact(Pair.spheres(0.01, 0.01, 2500.0), law="hertz", e=0.5, E=1e7, nu=0.3)
+    >>> round(kratos_e(c)["COEFFICIENT_OF_RESTITUTION"], 12)
+    0.5
+    """
     if contact.end != "force":
         raise ParameterError("end", contact.end, "Kratos clips the normal force at zero: only the force rule")
     if (contact.alpha, contact.gamma) == (1.5, 0.25):
@@ -147,7 +287,29 @@ def kratos_typed_e(contact: Contact) -> float:
     """The COEFFICIENT_OF_RESTITUTION to type for ``contact``'s damping: Hertz, Thornton's fit
     inverted; linear, the e of the damping ratio nearest on Kratos' bisection grid (its answers are
     the midpoints of cells LINEAR_ZETA_STEP wide), so that Kratos lands on that ratio exactly.
-    ParameterError where no e in Kratos' range gives it."""
+    ParameterError where no e in Kratos' range gives it.
+
+    Parameters
+    ----------
+    contact : Contact
+        As :func:`kratos_e` takes it.
+
+    Returns
+    -------
+    float
+        The e to type, in KRATOS_E_RANGE.
+
+    Raises
+    ------
+    ParameterError
+        Where no e in Kratos' range gives the contact's damping.
+
+    Examples
+    --------
+    >>> c = kratos_contact(Pair.spheres(0.01, 0.01, 2500.0), law="linear", e=0.5, E=1e7, nu=0.3)
+    >>> round(kratos_typed_e(c), 6)     # 0.5 to Kratos' bisection
+    0.499995
+    """
     if contact.alpha == 1:
         zeta = contact.D2 / (2.0 * math.sqrt(contact.D1))
         e = linear_force_eps((round(zeta / LINEAR_ZETA_STEP - 0.5) + 0.5) * LINEAR_ZETA_STEP)

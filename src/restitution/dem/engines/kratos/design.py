@@ -19,7 +19,43 @@ def kratos_design(pair: Pair, *, eps: float, law: str, E: float, nu: float, E2: 
     Hertz: Thornton's fit inverted, eps reached to the library's accuracy. Linear: Kratos' bisection
     turns e into one of a grid of damping ratios (spaced LINEAR_ZETA_STEP): the e returned is the one whose
     ratio is the grid's nearest to the target's, and ``eps`` the one it really gives (within about
-    1e-4 of the target)."""
+    1e-4 of the target).
+
+    Parameters
+    ----------
+    pair, eps : Pair, float
+        The pair, and the eps to reach (as :meth:`~restitution.dem.engine.Engine.design` takes them).
+    law : str
+        "hertz" or "linear" (or Kratos' name of either).
+    E, nu : float
+        The first material's Young's modulus and Poisson ratio.
+    E2, nu2 : float, optional
+        The other material's or the wall's (the first's where None).
+    wall : bool, optional
+        A sphere-wall relation.
+    g : float, optional
+        The impact speed eps is computed at (1 by default).
+
+    Returns
+    -------
+    dict
+        {"COEFFICIENT_OF_RESTITUTION", "eps" (what Kratos gives with it), the contact's fields,
+        "contact_time"}.
+
+    Raises
+    ------
+    ParameterError
+        Where no e in Kratos' range reaches eps, or the spheres would pass through each other.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.01, 0.01, 2500.0)
+    >>> d = kratos_design(pair, eps=0.7, law="hertz", E=1e7, nu=0.3)
+    >>> round(d["COEFFICIENT_OF_RESTITUTION"], 6), round(d["eps"], 9)
+    (0.700227, 0.7)
+    >>> round(kratos_design(pair, eps=0.7, law="linear", E=1e7, nu=0.3)["eps"], 6)   # on Kratos' grid
+    0.699985
+    """
     stiffness = {"law": law, "E": E, "nu": nu, "E2": E2, "nu2": nu2, "wall": wall}
     contact = calibrated(kratos_contact(pair, e=0.5, **stiffness), eps, g)
     refuse_passing_through(contact, pair, eps, g, "Kratos")

@@ -38,7 +38,22 @@ _WALL_PARTS = ("RigidFacePart",)
 
 
 class MaterialsError(ParameterError):
-    """One line naming what in a Kratos materials file cannot be mapped or is missing."""
+    """One line naming what in a Kratos materials file cannot be mapped or is missing.
+
+    Parameters
+    ----------
+    where : str
+        The field or place named.
+    text
+        What the file holds there.
+    why : str
+        What is wrong or allowed.
+
+    Examples
+    --------
+    >>> str(MaterialsError("file", "JSON", "not a Kratos MaterialsDEM.json"))
+    "file = 'JSON': not a Kratos MaterialsDEM.json"
+    """
 
     def __init__(self, where: str, text, why: str):
         super().__init__(where, text, why)
@@ -53,7 +68,22 @@ def _json(text: str):
 
 def is_materials_file(text: str) -> bool:
     """Whether ``text`` is a JSON document (the dispatch of ``restitution deck``: a deck is never one);
-    what it holds is :func:`audit_materials`' to check."""
+    what it holds is :func:`audit_materials`' to check.
+
+    Parameters
+    ----------
+    text : str
+        The file's text.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> is_materials_file('{"materials": []}'), is_materials_file("units si")
+    (True, False)
+    """
     return text.lstrip().startswith("{") and isinstance(_json(text), dict)
 
 

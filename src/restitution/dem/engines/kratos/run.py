@@ -24,7 +24,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from ...extrapolate import richardson
+from ...engine import rebound_eps
+from ...extrapolate import eps_extrapolated
 from ...pair import Pair
 from .contact import KRATOS_LAWS
 
@@ -162,7 +163,19 @@ os._exit(0)     # Kratos' teardown has nothing left to write; skipping it saves 
 
 
 def available() -> bool:
-    """Whether KratosMultiphysics with its DEMApplication is installed (found, not imported)."""
+    """Whether KratosMultiphysics with its DEMApplication is installed (found, not imported).
+
+    Returns
+    -------
+    bool
+        True where KratosMultiphysics is found with its DEMApplication folder (neither is imported).
+
+    Examples
+    --------
+    >>> import importlib.util
+    >>> available() <= (importlib.util.find_spec("KratosMultiphysics") is not None)
+    True
+    """
     spec = importlib.util.find_spec("KratosMultiphysics")
     return spec is not None and spec.origin is not None and (Path(spec.origin).parent / "DEMApplication").is_dir()
 
@@ -208,12 +221,9 @@ def kratos_states(pair: Pair, cases: list, timeout: float = 900.0) -> list[dict]
 
 def kratos_eps_runs(pair: Pair, cases: list, timeout: float = 900.0) -> list[float]:
     """eps of each case (setting, g, dt, t_run) in one Kratos process."""
-    eps = []
-    for (_, g, _, _), state in zip(cases, kratos_states(pair, cases, timeout)):
-        if state["gap"] <= 0.0:
-            raise ArithmeticError("the bodies had not separated at the end of the Kratos run")
-        eps.append(-state["rel"] / g)   # approach: v1 - v2 = g > 0 (the sphere's -g on a wall)
-    return eps
+    # approach: v1 - v2 = g > 0 (the sphere's -g on a wall)
+    ends = [(state["rel"], state["gap"]) for state in kratos_states(pair, cases, timeout)]
+    return rebound_eps(ends, [case[1] for case in cases], "Kratos")
 
 
 #: The runner form every engine's has: eps of each case (setting, g, dt, t_run)
@@ -225,6 +235,4 @@ def kratos_eps_extrapolated(pair: Pair, setting: dict, speeds, t_run: dict, t_c:
     """{g: (eps extrapolated to dt = 0, eps at t_c/steps, /2, /4)} for one Kratos setting at each
     speed, in one process; t_run and t_c map each speed to the run's length and the contact time,
     gamma is the damping exponent (the extrapolation's orders, restitution.dem.extrapolate)."""
-    cases = [(setting, g, t_c[g] / steps / k, t_run[g]) for g in speeds for k in (1, 2, 4)]
-    eps = kratos_eps_runs(pair, cases)
-    return {g: (richardson(*eps[3 * i: 3 * i + 3], gamma), *eps[3 * i: 3 * i + 3]) for i, g in enumerate(speeds)}
+    return eps_extrapolated(kratos_eps_runs, pair, setting, speeds, t_c, gamma, steps, t_run)

@@ -58,12 +58,46 @@ TSUJI_POLY = (1.2728, -4.2783, 11.087, -22.348, 27.467, -18.022, 4.8218)
 
 
 def tsuji_a(e: float) -> float:
-    """tsuji damping's A(e), LAMMPS' documented polynomial (TSUJI_POLY)."""
+    """tsuji damping's A(e), LAMMPS' documented polynomial (TSUJI_POLY).
+
+    Parameters
+    ----------
+    e : float
+        The typed e.
+
+    Returns
+    -------
+    float
+        A(e), eta_n = A(e) sqrt(m k).
+
+    Examples
+    --------
+    >>> round(tsuji_a(0.5), 6)
+    0.340741
+    """
     return sum(c * e ** k for k, c in enumerate(TSUJI_POLY))
 
 
 def restitution_b(e: float, alpha: str) -> float:
-    """coeff_restitution's B(e): the damping that makes the overlap rule's eps e exactly."""
+    """coeff_restitution's B(e): the damping that makes the overlap rule's eps e exactly.
+
+    Parameters
+    ----------
+    e : float
+        The typed e, in (0, 1).
+    alpha : str
+        The normal model's exponent ("1" hooke, else hertz).
+
+    Returns
+    -------
+    float
+        B(e) = D2 / sqrt(D1).
+
+    Examples
+    --------
+    >>> round(restitution_b(0.5, "3/2"), 6), round(restitution_b(0.5, "1"), 6)
+    (0.481769, 0.430908)
+    """
     ln_e = math.log(e)
     return -_b_factor(alpha) * ln_e / math.sqrt(math.pi ** 2 + ln_e ** 2)
 
@@ -111,14 +145,67 @@ def _damping_exponent(alpha: str, damping: str) -> str:
 
 def base_eta_n0(damping: str) -> float:
     """An eta_n0 that ``damping`` accepts (an e in (0, 1) where it takes one), for a contact whose
-    D2 a calibration then replaces."""
+    D2 a calibration then replaces.
+
+    Parameters
+    ----------
+    damping : str
+        A LAMMPS damping model.
+
+    Returns
+    -------
+    float
+        0.5 for the models that take an e (tsuji, coeff_restitution), else 1.
+
+    Examples
+    --------
+    >>> base_eta_n0("tsuji"), base_eta_n0("velocity")
+    (0.5, 1.0)
+    """
     return 0.5 if damping in E_DAMPINGS else 1.0
 
 
 def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limit_damping: bool,
                    k_n: float | None = None, E: float | None = None, nu: float | None = None) -> Contact:
     """The model a LAMMPS ``pair_style granular`` setting gives for this pair (``eta_n0`` is e for
-    tsuji and coeff_restitution)."""
+    tsuji and coeff_restitution).
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair.
+    normal : str
+        "hooke", "hertz" or "hertz/material".
+    damping : str
+        "velocity", "mass_velocity", "viscoelastic", "tsuji" or "coeff_restitution".
+    eta_n0 : float
+        The damping column (an e in (0, 1) for tsuji and coeff_restitution).
+    limit_damping : bool
+        LAMMPS' limit_damping: the contact ends where the force vanishes (the force rule), else
+        where the overlap does.
+    k_n : float, optional
+        The stiffness column of hooke and hertz.
+    E, nu : float, optional
+        Young's modulus and Poisson ratio of hertz/material.
+
+    Returns
+    -------
+    Contact
+        alpha from the normal model, gamma from the damping model; the overlap rule unless
+        limit_damping.
+
+    Raises
+    ------
+    ParameterError
+        A model not named above, or a column out of its range.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> c = lammps_contact(pair, normal="hertz", damping="tsuji", eta_n0=0.5, limit_damping=False, k_n=1e6)
+    >>> str(c.alpha), str(c.gamma), c.end, round(c.eps(1.0), 6)
+    ('3/2', '1/4', 'overlap', 0.616076)
+    """
     alpha, D1 = _d1(pair, normal, k_n, E, nu)
     damping = one_of("damping", damping, DAMPING_MODELS)
     if damping in E_DAMPINGS:
@@ -141,7 +228,36 @@ LAMMPS_GRAN_STYLES = ("gran/hooke", "gran/hooke/history", "gran/hertz/history")
 
 def lammps_gran_contact(pair: Pair, *, style: str, k_n: float, gamma_n: float, limit_damping: bool) -> Contact:
     """The model an older LAMMPS granular pair style gives for this pair: hooke alpha = 1, gamma = 0,
-    D1 = Kn / m, D2 = gamma_n; hertz alpha = 3/2, gamma = 1/2, D1 = Kn sqrt(R) / m, D2 = gamma_n sqrt(R)."""
+    D1 = Kn / m, D2 = gamma_n; hertz alpha = 3/2, gamma = 1/2, D1 = Kn sqrt(R) / m, D2 = gamma_n sqrt(R).
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair.
+    style : str
+        One of LAMMPS_GRAN_STYLES.
+    k_n, gamma_n : float
+        The style's Kn and gamma_n.
+    limit_damping : bool
+        The force rule where True, else the overlap rule.
+
+    Returns
+    -------
+    Contact
+        hooke: alpha = 1, gamma = 0; hertz: alpha = 3/2, gamma = 1/2.
+
+    Raises
+    ------
+    ParameterError
+        Another style, or a column not finite and positive.
+
+    Examples
+    --------
+    >>> c = lammps_gran_contact(Pair.spheres(0.001, 0.001, 2500.0), style="gran/hooke", k_n=100.0,
+    ...                         gamma_n=5.0, limit_damping=False)
+    >>> str(c.alpha), c.D2, c.end
+    ('1', 5.0, 'overlap')
+    """
     style = one_of("pair_style", style, LAMMPS_GRAN_STYLES)
     k_n, gamma_n = require_positive_finite("Kn", k_n), require_positive_finite("gamma_n", gamma_n)
     end = "force" if limit_damping else "overlap"
@@ -152,7 +268,34 @@ def lammps_gran_contact(pair: Pair, *, style: str, k_n: float, gamma_n: float, l
 
 def lammps_eta_n0(pair: Pair, damping: str, contact: Contact) -> float:
     """The inverse of lammps_contact's damping column: eta_n0 (or tsuji's or coeff_restitution's e)
-    that gives contact.D2."""
+    that gives contact.D2.
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair.
+    damping : str
+        The LAMMPS damping model.
+    contact : Contact
+        The contact whose D2 is to be reached.
+
+    Returns
+    -------
+    float
+        eta_n0, or the e of tsuji and coeff_restitution.
+
+    Raises
+    ------
+    ParameterError
+        Where no eta_n0 (or e in (0, 1)) gives that D2.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> c = lammps_contact(pair, normal="hertz", damping="tsuji", eta_n0=0.5, limit_damping=False, k_n=1e6)
+    >>> round(lammps_eta_n0(pair, "tsuji", c), 12)
+    0.5
+    """
     damping = one_of("damping", damping, DAMPING_MODELS)
     if damping == "tsuji":
         return _e_from_tsuji_a(contact.D2 / math.sqrt(contact.D1))
@@ -165,7 +308,23 @@ def lammps_eta_n0(pair: Pair, damping: str, contact: Contact) -> float:
 
 def lammps_pair_coeff(*, normal: str, damping: str, eta_n0: float, limit_damping: bool,
                       k_n: float | None = None, E: float | None = None, nu: float | None = None) -> str:
-    """The ``pair_coeff`` line of that setting (frictionless tangential model: head-on contacts)."""
+    """The ``pair_coeff`` line of that setting (frictionless tangential model: head-on contacts).
+
+    Parameters
+    ----------
+    normal, damping, eta_n0, limit_damping, k_n, E, nu
+        As :func:`lammps_contact` takes them.
+
+    Returns
+    -------
+    str
+        The line, numbers to 12 significant digits.
+
+    Examples
+    --------
+    >>> lammps_pair_coeff(normal="hertz", damping="tsuji", eta_n0=0.5, limit_damping=False, k_n=1e6)
+    'pair_coeff * * hertz 1000000 0.5 damping tsuji tangential linear_nohistory 0 0'
+    """
     args = f"{E:.12g} {eta_n0:.12g} {nu:.12g}" if normal == "hertz/material" else f"{k_n:.12g} {eta_n0:.12g}"
     line = f"pair_coeff * * {normal} {args} damping {damping} tangential linear_nohistory 0 0"
     return line + (" limit_damping" if limit_damping else "")

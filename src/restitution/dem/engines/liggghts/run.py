@@ -6,6 +6,9 @@ about a second to start); each run prints its final velocities on a marked line,
 LIGGGHTS integrates like LAMMPS (fix nve/sphere: velocity Verlet, the force from the half-step
 velocity), so eps is first order in dt: :func:`liggghts_eps_extrapolated` runs three steps and
 removes the two leading orders (restitution.dem.extrapolate).
+
+Its Examples need LIGGGHTS (``apt-get install liggghts``), so the doctests skip them; the case
+they run is hertz with e = 0.9 and limitForce off, whose eps is e.
 """
 
 from __future__ import annotations
@@ -16,7 +19,8 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from ...extrapolate import richardson
+from ...engine import rebound_eps
+from ...extrapolate import eps_extrapolated
 from ...pair import Pair
 from .contact import LIGGGHTS_MODEL_TYPES
 
@@ -27,6 +31,19 @@ _MARK = "RESTITUTION-RESULT"
 
 
 def available() -> bool:
+    """Whether the ``liggghts`` binary is on PATH.
+
+    Returns
+    -------
+    bool
+        True where LIGGGHTS can be run; the tests that run it are skipped otherwise.
+
+    Examples
+    --------
+    >>> import shutil
+    >>> available() == (shutil.which("liggghts") is not None)
+    True
+    """
     return shutil.which("liggghts") is not None
 
 
@@ -35,7 +52,29 @@ def liggghts_pair_style(*, model: str, E: float, nu: float, e: float, limit_forc
                         nu2: float | None = None) -> str:
     """The box, material and pair_style lines of a LIGGGHTS deck for that contact model (one atom
     type, or two when the second sphere has its own E2, nu2; e for every pair), frictionless and
-    with no tangential model (head-on contacts need none)."""
+    with no tangential model (head-on contacts need none).
+
+    Parameters
+    ----------
+    model, E, nu, e, limit_force, characteristic_velocity, E2, nu2
+        As :func:`~restitution.dem.engines.liggghts.contact.liggghts_contact` takes them.
+
+    Returns
+    -------
+    str
+        The lines, joined by newlines.
+
+    Examples
+    --------
+    >>> print(liggghts_pair_style(model="hertz", E=5e6, nu=0.45, e=0.9, limit_force=False))
+    create_box 1 box
+    fix m1 all property/global youngsModulus peratomtype 5000000.0
+    fix m2 all property/global poissonsRatio peratomtype 0.45
+    fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9
+    fix m4 all property/global coefficientFriction peratomtypepair 1 0.0
+    pair_style gran model hertz tangential no_history limitForce off
+    pair_coeff * *
+    """
     two = E2 is not None
     n = 2 if two else 1
     lines = [f"create_box {n} box",
@@ -109,24 +148,73 @@ clear
 
 
 def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
-    """eps of each case (contact_lines, g, dt, t_run[, types]) in one LIGGGHTS process."""
-    eps = []
-    for (_, g, *_), (rel, gap) in zip(cases, liggghts_states(pair, cases, timeout)):
-        if gap <= pair.R1 + pair.R2:
-            raise ArithmeticError("the spheres had not separated at the end of the LIGGGHTS run")
-        eps.append(-rel / g)   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
-    return eps
+    """eps of each case (contact_lines, g, dt, t_run[, types]) in one LIGGGHTS process.
+
+    Parameters
+    ----------
+    pair : Pair
+        The two spheres.
+    cases : list of tuple
+        (contact_lines, g, dt, t_run) per run, optionally with the two spheres' atom types last.
+    timeout : float, optional
+        Seconds LIGGGHTS may take.
+
+    Returns
+    -------
+    list of float
+        LIGGGHTS' eps of each run, in order.
+
+    Raises
+    ------
+    RuntimeError
+        Where LIGGGHTS stops.
+    ArithmeticError
+        Where the spheres have not separated.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.0025, 0.0025, 2500.0)
+    >>> lines = liggghts_pair_style(model="hertz", E=5e6, nu=0.45, e=0.9, limit_force=False)
+    >>> [round(e, 2) for e in liggghts_eps_runs(pair, [(lines, 1.0, 3e-7, 1e-3)])]  # doctest: +SKIP
+    [0.9]
+    """
+    ends = [(rel, centres - pair.R1 - pair.R2) for rel, centres in liggghts_states(pair, cases, timeout)]
+    return rebound_eps(ends, [case[1] for case in cases], "LIGGGHTS")
 
 
-def eps_runs(pair: Pair, cases: list) -> list[float]:
-    """eps of each case (contact lines, g, dt, t_run): the runner form every engine's has."""
-    return liggghts_eps_runs(pair, cases)
+#: The runner form every engine's has (restitution.dem.engine.Engine.runner): LIGGGHTS' runs
+#: already take the cases as the form gives them
+eps_runs = liggghts_eps_runs
 
 
 def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
     """(relative velocity v1 - v2, centre distance) at the end of each case (contact_lines, g, dt,
     t_run[, types]), in one LIGGGHTS process; ``types``: the two spheres' atom types when
-    contact_lines (starting with create_box N) define more than two."""
+    contact_lines (starting with create_box N) define more than two.
+
+    Parameters
+    ----------
+    pair, cases, timeout
+        As :func:`liggghts_eps_runs` takes them.
+
+    Returns
+    -------
+    list of tuple
+        (v1 - v2, centre distance) per run, as LIGGGHTS holds them at the run's last step.
+
+    Raises
+    ------
+    RuntimeError
+        Where LIGGGHTS stops on the lines.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.0025, 0.0025, 2500.0)
+    >>> lines = liggghts_pair_style(model="hertz", E=5e6, nu=0.45, e=0.9, limit_force=False)
+    >>> ((rel, gap),) = liggghts_states(pair, [(lines, 1.0, 3e-7, 1e-3)])  # doctest: +SKIP
+    >>> round(-rel, 2), gap > 0.005  # doctest: +SKIP
+    (0.9, True)
+    """
     return _run([_run_block(pair, case[0], case[1], case[2], int(math.ceil(case[3] / case[2])), i, *case[4:])
                  for i, case in enumerate(cases)], timeout)
 
@@ -169,7 +257,39 @@ def liggghts_wall_eps_runs(radius: float, density: float, cases: list, timeout: 
     (contact_lines, g, dt, t_run, atom_type, wall_type) in one LIGGGHTS process: contact_lines are a
     scene's (create_box N and its fix property/global and pair_style lines), the wall has atom type
     wall_type and the deck's contact model. ``wall``: the wall's lines instead (a deck's own, a
-    flat surface at z = 0 with the fix ID wall), ``files``: {name: text} they read (a mesh)."""
+    flat surface at z = 0 with the fix ID wall), ``files``: {name: text} they read (a mesh).
+
+    Parameters
+    ----------
+    radius, density : float
+        The sphere's.
+    cases : list of tuple
+        (contact_lines, g, dt, t_run, atom_type, wall_type) per run.
+    timeout : float, optional
+        Seconds LIGGGHTS may take.
+    wall : str, optional
+        The deck's own wall lines instead of a wall of type wall_type.
+    files : dict, optional
+        {name: text} of the files the wall lines read.
+
+    Returns
+    -------
+    list of float
+        The sphere's eps on the wall (speed after / g), per run.
+
+    Raises
+    ------
+    RuntimeError
+        Where LIGGGHTS stops.
+    ArithmeticError
+        Where the sphere has not left the wall.
+
+    Examples
+    --------
+    >>> lines = liggghts_pair_style(model="hertz", E=5e6, nu=0.45, e=0.9, limit_force=False, E2=5e6, nu2=0.45)
+    >>> [round(e, 2) for e in liggghts_wall_eps_runs(0.0025, 2500.0, [(lines, 1.0, 1e-7, 1e-3, 1, 2)])]  # doctest: +SKIP
+    [0.9]
+    """
     states = _run([_wall_block(radius, density, case[0], case[1], case[2], int(math.ceil(case[3] / case[2])), i,
                                case[4], case[5], wall) for i, case in enumerate(cases)], timeout, files)
     if any(z <= radius for _, z in states):
@@ -218,7 +338,33 @@ def _run(blocks: list[str], timeout: float, files: dict | None = None) -> list[t
 def liggghts_eps_extrapolated(pair: Pair, contact_lines: str, speeds, t_c: dict, gamma, steps: int = 2000) -> dict:
     """{g: (eps extrapolated to dt = 0, eps at t_c/steps, /2, /4)} for one setting at each speed,
     all in one LIGGGHTS process; t_c maps each speed to its contact time, gamma is the damping
-    exponent (the extrapolation's orders, see restitution.dem.extrapolate)."""
-    cases = [(contact_lines, g, t_c[g] / steps / k, 1.5 * t_c[g]) for g in speeds for k in (1, 2, 4)]
-    eps = liggghts_eps_runs(pair, cases)
-    return {g: (richardson(*eps[3 * i: 3 * i + 3], gamma), *eps[3 * i: 3 * i + 3]) for i, g in enumerate(speeds)}
+    exponent (the extrapolation's orders, see restitution.dem.extrapolate).
+
+    Parameters
+    ----------
+    pair : Pair
+        The two spheres.
+    contact_lines : str
+        The setting's lines (:func:`liggghts_pair_style`).
+    speeds : iterable of float
+        Approach speeds.
+    t_c : dict
+        {g: contact time}: the runs' steps are t_c / steps, / 2 steps and / 4 steps.
+    gamma
+        The damping exponent.
+    steps : int, optional
+        Steps per contact of the coarsest run.
+
+    Returns
+    -------
+    dict
+        {g: (eps at dt = 0, LIGGGHTS' eps at the three steps)}.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.0025, 0.0025, 2500.0)
+    >>> lines = liggghts_pair_style(model="hertz", E=5e6, nu=0.45, e=0.9, limit_force=False)
+    >>> round(liggghts_eps_extrapolated(pair, lines, [1.0], {1.0: 6.4515e-4}, "1/4")[1.0][0], 4)  # doctest: +SKIP
+    0.9
+    """
+    return eps_extrapolated(liggghts_eps_runs, pair, contact_lines, speeds, t_c, gamma, steps)

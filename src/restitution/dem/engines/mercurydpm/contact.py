@@ -18,5 +18,30 @@ __all__ = ["mercury_linear_contact"]
 
 
 def mercury_linear_contact(pair: Pair, *, t_c: float, e: float) -> Contact:
-    """MercuryDPM LinearViscoelastic species from setCollisionTimeAndRestitutionCoefficient(t_c, e, m)."""
+    """MercuryDPM LinearViscoelastic species from setCollisionTimeAndRestitutionCoefficient(t_c, e, m).
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair.
+    t_c : float
+        The collision time.
+    e : float
+        The restitution coefficient, in (0, 1).
+
+    Returns
+    -------
+    Contact
+        alpha = 1, gamma = 0, the overlap rule (eps is e exactly).
+
+    Raises
+    ------
+    ParameterError
+        Where t_c or e is out of range.
+
+    Examples
+    --------
+    >>> round(mercury_linear_contact(Pair.spheres(0.001, 0.001, 2500.0), t_c=1e-4, e=0.5).eps(1.0), 12)
+    0.5
+    """
     return linear_from_time_and_e("t_c", t_c, "e", e, "overlap")

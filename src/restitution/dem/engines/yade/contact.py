@@ -32,7 +32,33 @@ __all__ = ["yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact",
 
 def yade_viscel_contact(pair: Pair, *, tc: float | None = None, en: float | None = None, kn: float | None = None,
                         cn: float | None = None) -> Contact:
-    """Yade ``ViscElMat`` given (tc, en) or (kn, cn), both particles of that material."""
+    """Yade ``ViscElMat`` given (tc, en) or (kn, cn), both particles of that material.
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair (its effective mass sets D1 and D2 in the (kn, cn) form).
+    tc, en : float, optional
+        Contact time and restitution coefficient, given together.
+    kn, cn : float, optional
+        Per-particle stiffness and damping, given together instead.
+
+    Returns
+    -------
+    Contact
+        alpha = 1, gamma = 0, the force rule.
+
+    Raises
+    ------
+    ParameterError
+        Where both forms or neither is given, or a value is out of range.
+
+    Examples
+    --------
+    >>> c = yade_viscel_contact(Pair.spheres(0.001, 0.001, 2500.0), tc=1e-4, en=0.5)
+    >>> round(c.eps(1.0), 4)          # above en: Yade clamps the attractive force
+    0.5503
+    """
     if tc is not None or en is not None:
         if kn is not None or cn is not None:
             raise ParameterError("kn", kn, "give either (tc, en) or (kn, cn), as Yade requires")
@@ -43,7 +69,34 @@ def yade_viscel_contact(pair: Pair, *, tc: float | None = None, en: float | None
 
 def yade_viscel_setting(pair: Pair, contact: Contact, *, given: str) -> dict:
     """The ViscElMat values that give ``contact`` (alpha = 1, gamma = 0): {"tc", "en"} when
-    ``given`` = "tc" (contact time and en both follow from D1, D2), {"kn", "cn"} for "kn"."""
+    ``given`` = "tc" (contact time and en both follow from D1, D2), {"kn", "cn"} for "kn".
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair.
+    contact : Contact
+        A linear contact (alpha = 1, gamma = 0).
+    given : str
+        "tc" or "kn": the form of ViscElMat sought.
+
+    Returns
+    -------
+    dict
+        {"tc", "en"} or {"kn", "cn"}.
+
+    Raises
+    ------
+    ParameterError
+        Another form, or a contact that form cannot give.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> s = yade_viscel_setting(pair, yade_viscel_contact(pair, tc=1e-4, en=0.5), given="tc")
+    >>> round(s["tc"], 12), round(s["en"], 9)
+    (0.0001, 0.5)
+    """
     given = one_of("given", given, ("tc", "kn"))
     if given == "kn":
         return {"kn": 2.0 * pair.m * contact.D1, "cn": 2.0 * pair.m * contact.D2}
@@ -53,7 +106,35 @@ def yade_viscel_setting(pair: Pair, contact: Contact, *, given: str) -> dict:
 
 def yade_mindlin_contact(pair: Pair, *, E: float, nu: float, en: float | None = None,
                          betan: float | None = None) -> Contact:
-    """Yade Hertz-Mindlin (Law2_ScGeom_MindlinPhys_Mindlin) with en (through Thornton's fit) or betan."""
+    """Yade Hertz-Mindlin (Law2_ScGeom_MindlinPhys_Mindlin) with en (through Thornton's fit) or betan.
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair.
+    E, nu : float
+        Young's modulus and Poisson ratio of the material.
+    en : float, optional
+        The restitution coefficient Thornton's fit turns into betan.
+    betan : float, optional
+        The damping ratio itself (exactly one of en and betan).
+
+    Returns
+    -------
+    Contact
+        alpha = 3/2, gamma = 1/4, the force rule.
+
+    Raises
+    ------
+    ParameterError
+        Where both or neither of en and betan is given, or a value is out of range.
+
+    Examples
+    --------
+    >>> c = yade_mindlin_contact(Pair.spheres(0.001, 0.001, 2500.0), E=1e7, nu=0.3, en=0.5)
+    >>> str(c.alpha), str(c.gamma), round(c.eps(1.0), 4)
+    ('3/2', '1/4', 0.5)
+    """
     if (en is None) == (betan is None):
         raise ParameterError("en", en, "give exactly one of en and betan, as Yade requires")
     beta = thornton_betan(en) if en is not None else require_positive_finite("betan", betan)
@@ -63,7 +144,24 @@ def yade_mindlin_contact(pair: Pair, *, E: float, nu: float, en: float | None = 
 
 def yade_mindlin_en(contact: Contact) -> dict:
     """{"betan", "en"} that give this Hertz-Mindlin contact's D2; en is None where Thornton's fit
-    cannot give that betan (the fit is monotonic in en on (0, 1), so one en at most)."""
+    cannot give that betan (the fit is monotonic in en on (0, 1), so one en at most).
+
+    Parameters
+    ----------
+    contact : Contact
+        A Hertz-Mindlin contact (alpha = 3/2, gamma = 1/4).
+
+    Returns
+    -------
+    dict
+        {"betan": the damping ratio, "en": the en that gives it, or None}.
+
+    Examples
+    --------
+    >>> c = yade_mindlin_contact(Pair.spheres(0.001, 0.001, 2500.0), E=1e7, nu=0.3, en=0.5)
+    >>> round(yade_mindlin_en(c)["en"], 9)
+    0.5
+    """
     beta = contact.D2 / (2.0 * math.sqrt(1.5 * contact.D1))
     lo, hi = 1e-6, 1.0 - 1e-12
     f = lambda e: thornton_betan(e) - beta   # noqa: E731

@@ -15,7 +15,39 @@ __all__ = ["yade_design", "TYPED_E"]
 def yade_design(pair: Pair, *, eps: float, law: str, tc: float | None = None, kn: float | None = None,
                 E: float | None = None, nu: float | None = None, g: float = 1.0) -> dict:
     """Yade values that give ``eps`` under its clamp: law "viscel-tc" (en for the given tc),
-    "viscel-kn" (cn for the given kn) or "mindlin" (betan, and the en Thornton's fit turns into it)."""
+    "viscel-kn" (cn for the given kn) or "mindlin" (betan, and the en Thornton's fit turns into it).
+
+    Parameters
+    ----------
+    pair, eps : Pair, float
+        The pair, and the eps to reach (as :meth:`~restitution.dem.engine.Engine.design` takes them).
+    law : str
+        "viscel-tc", "viscel-kn" or "mindlin".
+    tc : float, optional
+        The contact time (viscel-tc).
+    kn : float, optional
+        The stiffness (viscel-kn).
+    E, nu : float, optional
+        The material (mindlin).
+    g : float, optional
+        The impact speed eps is computed at (1 by default).
+
+    Returns
+    -------
+    dict
+        The values to set ({"tc", "en"}, {"kn", "cn"} or {"betan", "en"}), "eps" and the contact's fields.
+
+    Raises
+    ------
+    ParameterError
+        Another law, a value missing or out of range, or spheres that would pass through each other.
+
+    Examples
+    --------
+    >>> d = yade_design(Pair.spheres(0.001, 0.001, 2500.0), eps=0.7, law="viscel-tc", tc=1e-4)
+    >>> round(d["en"], 6), round(d["eps"], 9)
+    (0.679194, 0.7)
+    """
     law = one_of("law", law, ("viscel-tc", "viscel-kn", "mindlin"))
     if law == "viscel-tc":
         base = yade_viscel_contact(pair, tc=tc, en=0.5)

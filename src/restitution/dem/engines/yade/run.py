@@ -8,6 +8,9 @@ Yade's NewtonIntegrator is a leapfrog whose contact laws see the half-step veloc
 first order in dt, like LAMMPS': :func:`yade_eps_extrapolated` runs three steps and removes the
 two leading orders (restitution.dem.extrapolate). NewtonIntegrator's numerical ("local") damping, 0.2 by default,
 would add dissipation the contact law does not have: the runs set it to 0.
+
+Its Examples need Yade (``apt-get install yade``), so the doctests skip them; the case they
+run is ViscElMat(tc = 1e-4, en = 0.5), whose eps is 0.5503 under Yade's clamp.
 """
 
 from __future__ import annotations
@@ -19,7 +22,8 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from ...extrapolate import richardson
+from ...engine import rebound_eps
+from ...extrapolate import eps_extrapolated
 from ...pair import Pair
 
 __all__ = ["available", "yade_eps_runs", "eps_runs", "yade_states", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
@@ -57,12 +61,43 @@ print({mark!r} + json.dumps(out))
 
 
 def available() -> bool:
+    """Whether the ``yade`` binary is on PATH.
+
+    Returns
+    -------
+    bool
+        True where Yade can be run (its Python is its own: the runs are a subprocess).
+
+    Examples
+    --------
+    >>> import shutil
+    >>> available() == (shutil.which("yade") is not None)
+    True
+    """
     return shutil.which("yade") is not None
 
 
 def viscel_material(pair: Pair, *, tc=None, en=None, kn=None, cn=None) -> tuple[str, str, str]:
     """Yade's ViscElMat given (tc, en) or (kn, cn), both particles of that material, with its
-    Ip2 and Law2 functors (tangential stiffness and damping zero: head-on runs need none)."""
+    Ip2 and Law2 functors (tangential stiffness and damping zero: head-on runs need none).
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair (the first sphere's density is the material's).
+    tc, en, kn, cn : float, optional
+        As :func:`~restitution.dem.engines.yade.contact.yade_viscel_contact` takes them.
+
+    Returns
+    -------
+    tuple of str
+        (the material, the Ip2 functor, the Law2 functor), as Yade's Python takes them.
+
+    Examples
+    --------
+    >>> viscel_material(Pair.spheres(0.001, 0.001, 2500.0), tc=1e-4, en=0.5)[1:]
+    ('Ip2_ViscElMat_ViscElMat_ViscElPhys()', 'Law2_ScGeom_ViscElPhys_Basic()')
+    """
     rho = pair.m1 / (4.0 / 3.0 * math.pi * pair.R1 ** 3)
     args = f"tc={tc!r}, en={en!r}, et=1.0" if tc is not None else f"kn={kn!r}, cn={cn!r}, ks=0.0, cs=0.0"
     return (f"ViscElMat({args}, density={rho!r}, frictionAngle=0.0)", "Ip2_ViscElMat_ViscElMat_ViscElPhys()",
@@ -70,7 +105,27 @@ def viscel_material(pair: Pair, *, tc=None, en=None, kn=None, cn=None) -> tuple[
 
 
 def mindlin_material(pair: Pair, *, E: float, nu: float, en=None, betan=None) -> tuple[str, str, str]:
-    """Yade's Hertz-Mindlin (FrictMat, frictionless) with the damping given by en or betan."""
+    """Yade's Hertz-Mindlin (FrictMat, frictionless) with the damping given by en or betan.
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair (the first sphere's density is the material's).
+    E, nu : float
+        Young's modulus and Poisson ratio.
+    en, betan : float, optional
+        The damping, one of the two.
+
+    Returns
+    -------
+    tuple of str
+        As :func:`viscel_material`'s, for Hertz-Mindlin.
+
+    Examples
+    --------
+    >>> mindlin_material(Pair.spheres(0.001, 0.001, 2500.0), E=1e7, nu=0.3, en=0.5)[1]
+    'Ip2_FrictMat_FrictMat_MindlinPhys(en=0.5)'
+    """
     rho = pair.m1 / (4.0 / 3.0 * math.pi * pair.R1 ** 3)
     damping = f"en={en!r}" if en is not None else f"betan={betan!r}"
     return (f"FrictMat(young={E!r}, poisson={nu!r}, density={rho!r}, frictionAngle=0.0)",
@@ -78,23 +133,90 @@ def mindlin_material(pair: Pair, *, E: float, nu: float, en=None, betan=None) ->
 
 
 def yade_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
-    """eps of each case (material, ip2, law, g, dt, t_run) in one Yade process."""
-    eps = []
-    for case, (rel, gap) in zip(cases, yade_states(pair, cases, timeout)):
-        if gap <= pair.R1 + pair.R2:
-            raise ArithmeticError("the spheres had not separated at the end of the Yade run")
-        eps.append(-rel / case[3])   # approach: v1 - v2 = g > 0; rebound: v1 - v2 = -eps g
-    return eps
+    """eps of each case (material, ip2, law, g, dt, t_run) in one Yade process.
+
+    Parameters
+    ----------
+    pair : Pair
+        The two spheres.
+    cases : list of tuple
+        (material, ip2, law, g, dt, t_run) per run (the first three from :func:`viscel_material`
+        or :func:`mindlin_material`).
+    timeout : float, optional
+        Seconds Yade may take.
+
+    Returns
+    -------
+    list of float
+        Yade's eps of each run, in order.
+
+    Raises
+    ------
+    ArithmeticError
+        Where the spheres have not separated by t_run.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> setting = viscel_material(pair, tc=1e-4, en=0.5)
+    >>> [round(e, 3) for e in yade_eps_runs(pair, [(*setting, 1.0, 5e-8, 1.5e-4)])]  # doctest: +SKIP
+    [0.55]
+    """
+    ends = [(rel, centres - pair.R1 - pair.R2) for rel, centres in yade_states(pair, cases, timeout)]
+    return rebound_eps(ends, [case[3] for case in cases], "Yade")
 
 
 def eps_runs(pair: Pair, cases: list) -> list[float]:
-    """eps of each case ((material, ip2, law), g, dt, t_run): the runner form every engine's has."""
+    """eps of each case ((material, ip2, law), g, dt, t_run): the runner form every engine's has.
+
+    Parameters
+    ----------
+    pair, cases
+        The two spheres, and ((material, ip2, law), g, dt, t_run) per run: the form
+        :attr:`restitution.dem.engine.Engine.runner` promises (:func:`yade_eps_runs` runs each).
+
+    Returns
+    -------
+    list of float
+        Yade's eps of each run, in order.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> setting = viscel_material(pair, tc=1e-4, en=0.5)
+    >>> [round(e, 3) for e in eps_runs(pair, [(setting, 1.0, 5e-8, 1.5e-4), (setting, 2.0, 5e-8, 1.5e-4)])]  # doctest: +SKIP
+    [0.55, 0.55]
+    """
     return yade_eps_runs(pair, [(*setting, g, dt, t_run) for setting, g, dt, t_run in cases])
 
 
 def yade_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
     """(relative velocity v1 - v2, centre distance) at the end of each case (material, ip2, law,
-    g, dt, t_run), in one Yade process."""
+    g, dt, t_run), in one Yade process.
+
+    Parameters
+    ----------
+    pair, cases, timeout
+        As :func:`yade_eps_runs` takes them.
+
+    Returns
+    -------
+    list of tuple
+        (v1 - v2, centre distance) per run, from the JSON line Yade's script prints.
+
+    Raises
+    ------
+    RuntimeError
+        Where Yade fails.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> setting = viscel_material(pair, tc=1e-4, en=0.5)
+    >>> ((rel, gap),) = yade_states(pair, [(*setting, 1.0, 5e-8, 1.5e-4)])  # doctest: +SKIP
+    >>> round(-rel, 3), gap > 0.002  # doctest: +SKIP
+    (0.55, True)
+    """
     rows = [(mat, ip2, law, float(g), float(dt), int(math.ceil(t_run / dt))) for mat, ip2, law, g, dt, t_run in cases]
     script = _SCRIPT.format(radii_masses=repr((pair.R1, pair.R2, pair.m1, pair.m2)), cases=repr(rows), mark=_MARK)
     with tempfile.TemporaryDirectory() as tmp:
@@ -112,11 +234,28 @@ def yade_eps_extrapolated(pair: Pair, setting: tuple, speeds, t_c: dict, gamma, 
     """{g: (eps extrapolated to dt = 0, eps at t_c/steps, /2, /4)} for one Yade setting
     (material, ip2, law) at each speed, all in one Yade process; t_c maps each speed to its
     contact time, gamma is the damping exponent (which sets the extrapolation's orders, see
-    restitution.dem.extrapolate)."""
-    cases = [(*setting, g, t_c[g] / steps / k, 1.5 * t_c[g]) for g in speeds for k in (1, 2, 4)]
-    eps = yade_eps_runs(pair, cases)
-    result = {}
-    for i, g in enumerate(speeds):
-        e1, e2, e4 = eps[3 * i: 3 * i + 3]
-        result[g] = (richardson(e1, e2, e4, gamma), e1, e2, e4)
-    return result
+    restitution.dem.extrapolate).
+
+    Parameters
+    ----------
+    pair : Pair
+        The two spheres.
+    setting : tuple
+        (material, ip2, law).
+    speeds, t_c, gamma, steps
+        The speeds, {g: contact time}, the damping exponent and the coarsest run's steps per
+        contact, as :func:`~restitution.dem.engines.liggghts.run.liggghts_eps_extrapolated` takes them.
+
+    Returns
+    -------
+    dict
+        {g: (eps at dt = 0, Yade's eps at the three steps)}.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
+    >>> setting = viscel_material(pair, tc=1e-4, en=0.5)
+    >>> round(yade_eps_extrapolated(pair, setting, [1.0], {1.0: 1e-4}, "0")[1.0][0], 4)  # doctest: +SKIP
+    0.5503
+    """
+    return eps_extrapolated(eps_runs, pair, setting, speeds, t_c, gamma, steps)
