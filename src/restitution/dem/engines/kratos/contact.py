@@ -24,8 +24,6 @@ from __future__ import annotations
 
 import math
 
-from scipy.optimize import brentq
-
 from ....core.errors import ParameterError, one_of, require_positive_finite
 from ...contact import Contact
 from ...pair import Pair
@@ -127,6 +125,7 @@ def kratos_e(contact: Contact) -> dict:
     """{"DAMPING_GAMMA", "COEFFICIENT_OF_RESTITUTION"} that give this contact's D2 (its D1 given by
     the materials): the damping ratio, and the e whose Kratos ratio is it (Hertz: Thornton's fit
     inverted; linear: e_force(zeta), which Kratos' bisection turns back into zeta to 6e-5)."""
+    from scipy.optimize import brentq     # here: `restitution deck` does not pay its import
     if contact.end != "force":
         raise ParameterError("end", contact.end, "Kratos clips the normal force at zero: only the force rule")
     if (contact.alpha, contact.gamma) == (1.5, 0.25):
