@@ -442,6 +442,10 @@ def test_a_law_whose_eps_does_not_depend_on_size_gives_one_value(tmp_path):
     assert row["sizes"] == "any" and row["exact_line"]
     got = _in_lammps(row, Pair.spheres(0.01, 0.02, 2500.0, 2500.0), line)
     assert abs(got / row["eps"][2] - 1) < 1e-6, (got, row["eps"][2])
+    # one sentence, not a list of spheres that "gives the same"
+    status, text, _ = run_cli(["deck", str(tmp_path / "in.deck"), "--g", "1.0"])
+    assert ("types 1 1 (spheres of several sizes: this law's eps does not depend on size, so this row holds for "
+            "every size): LAMMPS hertz/material") in text, text
 
 
 POUR_RANGE = f"""units si
