@@ -125,6 +125,8 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
                 def wall_row(size, at_speeds, t=t, mesh=mesh, contact_of=contact_of, wall_type=wall_type):
                     pair = Pair.wall(*size)
                     contact, typed, model, exact = contact_of(pair, t)
+                    if at_speeds is None:
+                        return contact, pair.R1
                     row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                      "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
                                      "line": loc[1], "file": loc[0]}, contact, at_speeds, pair.R1, _dt(deck))
@@ -439,6 +441,8 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
                 sized = replace(deck, at=at) if at else deck
                 row = DIALECTS[deck.code].pair_row(sized, i, j)
                 contact, pair = row.pop("contact"), row.pop("pair")
+                if at_speeds is None:
+                    return contact, pair.R1 + pair.R2
                 row = _with_eps(row, contact, at_speeds, pair.R1 + pair.R2, _dt(deck))
                 return ({**row, "beside": effects(sized, row, contact, pair, (i, j),
                                                   lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k))},
@@ -481,14 +485,15 @@ def _choices(deck: Deck, i: int, j: int) -> list:
 
 def _over_sizes(choices: list, row_at, speeds) -> list:
     """[(row, at)] for the choices of sizes that :func:`_ends` may keep, ``row_at(choice, speeds)``
-    making each: every choice where they are few or their eps at the middle speed all agree (a law
-    whose eps may not depend on size: _ends compares them at every speed), else only the two whose
-    eps there is smallest and largest, found at that speed alone (what _ends would keep of all:
-    a poured range's 81 pairs of sizes cost 2 full rows, not 81)."""
+    making each (``row_at(choice, None)``: its contact and overlap limit alone): every choice where
+    they are few or their eps at the middle speed all agree (a law whose eps may not depend on size:
+    _ends compares them at every speed), else only the two whose eps there is smallest and largest,
+    found at that speed alone (what _ends would keep of all: a poured range's 45 pairs of sizes cost
+    2 full rows, not 45)."""
     if len(choices) <= 2:
         return [row_at(c, speeds) for c in choices]
     k = len(speeds) // 2
-    middle = [row_at(c, [speeds[k]])[0]["eps"][0] for c in choices]
+    middle = _middle_eps([row_at(c, None) for c in choices], speeds[k])
     known = [e for e in middle if e is not None]
     if len(known) == len(middle) and all(abs(e - known[0]) <= _SAME_EPS * max(abs(known[0]), 1e-300) for e in known):
         return [row_at(c, speeds) for c in choices]
@@ -496,6 +501,33 @@ def _over_sizes(choices: list, row_at, speeds) -> list:
     lo, hi = min(range(len(choices)), key=keyed.__getitem__), max(range(len(choices)), key=keyed.__getitem__)
     low = row_at(choices[lo], speeds)
     return [low, low if hi == lo else row_at(choices[hi], speeds)]
+
+
+def _middle_eps(contacts: list, g: float) -> list:
+    """eps at g of each (contact, overlap limit) as :func:`_with_eps` gives it (None where the bodies
+    pass through, 0 where they stick), the contacts of one law asked of the ladder at once: one
+    request of many points runs compiled at once, where many of one point run as plain Python first
+    (:func:`restitution.fast.jit.call_kernel`). Where the batch cannot answer (a law outside the
+    ladder, a sticking point), each is asked alone."""
+    from ...fast.ladder import epsilon
+    from ...fast.rung import reference_bound
+    out: list = [None] * len(contacts)
+    laws: dict = {}
+    for n, (contact, limit) in enumerate(contacts):
+        if not contact.reaches(g, limit):
+            laws.setdefault(getattr(contact, "problem", None), []).append(n)
+    for problem, members in laws.items():
+        try:
+            if problem is None or len(members) < 2:
+                raise ParameterError("omega", None, "asked alone")
+            got = epsilon(problem, omega=[contacts[n][0].omega(g) for n in members],
+                          tol=reference_bound(1e-12, problem.ex), build=False, cached=False).eps
+            for n, e in zip(members, got):
+                out[n] = float(e)
+        except ParameterError:       # StickError among them
+            for n in members:
+                out[n] = _eps_or_stick(contacts[n][0], g)[0]
+    return out
 
 
 def _ends(rows: list) -> list:
