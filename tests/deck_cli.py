@@ -61,3 +61,15 @@ def lammps_spheres(*spheres) -> str:
     lines += [f"create_atoms {k} single {0.5 * (k - 1):g} 0 0" for k in range(1, len(spheres) + 1)]
     lines += [f"set type {k} diameter {d:g} density {rho:g}" for k, (d, rho) in enumerate(spheres, 1)]
     return "\n".join([*lines, "pair_style granular"]) + "\n"
+
+
+def outside_file(tmp_path: Path, absolute: bool) -> tuple[Path, Path, str]:
+    """(the deck's folder, the file a shell would touch, the name the deck gives it) for a deck in
+    tmp_path/deck that reads tmp_path/outside/evil.in, whose shell touches tmp_path/TOUCHED; named by
+    its absolute path or by climbing out (../outside/evil.in)."""
+    outside, folder = tmp_path / "outside", tmp_path / "deck"
+    outside.mkdir()
+    folder.mkdir()
+    target = tmp_path / "TOUCHED"
+    (outside / "evil.in").write_text(f"shell touch {target}\n")
+    return folder, target, str(outside / "evil.in") if absolute else "../outside/evil.in"

@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from cli_run import run_cli
+from deck_cli import outside_file
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.engines.lammps.contact import lammps_contact
 from restitution.dem.pair import Pair
@@ -252,15 +253,49 @@ def test_a_command_an_if_runs_is_made_safe_whatever_its_text(tmp_path, lines):
 def test_a_file_included_from_outside_the_deck_folder_is_not_run(tmp_path, absolute):
     """Only the deck's folder is copied and made safe: an include of a file outside it ran that
     file as written, and its shell touched the file (found by trying it, not by a test)."""
-    outside, folder = tmp_path / "outside", tmp_path / "deck"
-    outside.mkdir()
-    folder.mkdir()
-    target = tmp_path / "TOUCHED"
-    (outside / "evil.in").write_text(f"shell touch {target}\n")
-    name = outside / "evil.in" if absolute else "../outside/evil.in"
+    folder, target, name = outside_file(tmp_path, absolute)
     status, out, err = deck(folder, HEAD + f"pair_coeff * * hooke 1000 1 {T}\ninclude {name}\nrun 1\n")
     assert not target.exists()
     assert status == 2 and out == "" and err.count("\n") == 1 and "outside the deck's folder" in err, err
+
+
+@pytest.mark.parametrize("absolute", [True, False], ids=["absolute", "climbing"])
+def test_a_file_outside_the_deck_folder_named_by_a_variable_is_not_run(tmp_path, absolute):
+    """The engine resolves ``include ${f}`` as it runs, after the copy was made safe: a file
+    outside the deck's folder ran as written, and its shell touched the file (issue 52's hole)."""
+    folder, target, name = outside_file(tmp_path, absolute)
+    before = sorted(tmp_path.rglob("*"))
+    status, out, err = deck(folder, HEAD + f"pair_coeff * * hooke 1000 1 {T}\nvariable f string {name}\n"
+                            "include ${f}\nrun 1\n")
+    assert not target.exists() and sorted(tmp_path.rglob("*")) == sorted(before + [folder / "in.deck"])
+    assert status == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert "line 13 (include" in err and "outside the deck's folder" in err, err
+
+
+@pytest.mark.parametrize("how", ["name", "folder"])
+def test_a_file_inside_the_deck_folder_named_by_a_variable_is_run(tmp_path, how):
+    """By its name, or by the deck's folder's own absolute path: the engine reads the safe copy."""
+    target = tmp_path / "TOUCHED"
+    name = "part.in" if how == "name" else str(tmp_path / "part.in")
+    part = f"shell touch {target}\npair_coeff * * hooke 2000 1 {T}\n"
+    p = pairs(tmp_path, HEAD + f"variable f string {name}\ninclude ${{f}}\nrun 1\n", files={"part.in": part})
+    assert not target.exists()
+    assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(2000, 1.0), rel=1e-10)
+
+
+def test_without_user_namespaces_a_file_named_by_a_variable_is_not_run(tmp_path, monkeypatch):
+    """Where the engine cannot be confined to the scratch directory, such an include is refused."""
+    import restitution.dem.deck as deck_module
+    import restitution.dem.dialect.child as child
+    monkeypatch.setattr(deck_module, "confining", lambda: False)
+    monkeypatch.setattr(child, "confining", lambda: False)
+    target = tmp_path / "TOUCHED"
+    (tmp_path / "part.in").write_text(f"shell touch {target}\npair_coeff * * hooke 2000 1 {T}\n")
+    from restitution.dem.deck import DeckError, engine_read
+    path = _write(tmp_path, HEAD + "variable f string part.in\ninclude ${f}\nrun 1\n")
+    with pytest.raises(DeckError, match="named by a variable"):
+        engine_read(path)
+    assert not target.exists()
 
 
 def test_a_pair_table_written_by_the_deck_is_not_written(tmp_path):
@@ -335,6 +370,18 @@ def test_a_drag_beside_the_contact_is_named(tmp_path):
     assert "fix viscous (drag): a drag force" in err and "changes the eps the engine measures: " in err
 
 
+def test_a_time_step_the_same_at_every_speed_is_said_once(tmp_path):
+    """A linear spring and dashpot: the contact time and eps do not depend on g, and the sentence
+    was repeated once per speed."""
+    text = HEAD + f"pair_coeff * * hooke 1000 0.5 damping velocity {T}\ntimestep 1e-3\nrun 1\n"
+    status, out, err = deck(tmp_path, text)
+    assert status == 0, err
+    p = next(p for p in json.loads(out)["pairs"] if p["types"] == [1, 1])
+    assert len({f"{n:.6g}" for n in p["steps_per_contact"]}) == 1 and len(p["speeds"]) > 1
+    line = next(ln for ln in err.splitlines() if ln.startswith("restitution deck: types 1 1:"))
+    assert line.count("steps") == 1 and "at every speed given" in line, err
+
+
 def test_few_steps_per_contact_give_the_eps_of_the_deck_time_step(tmp_path):
     # hooke k = 1000 on two 0.02 m spheres of 2500 kg/m^3: t_c about 7 ms, 7 steps of 1e-3 s
     text = HEAD + f"pair_coeff * * hooke 1000 0.5 {T}\ntimestep 1e-3\nrun 1\n"
@@ -351,7 +398,8 @@ def test_few_steps_per_contact_give_the_eps_of_the_deck_time_step(tmp_path):
 
 
 def test_without_lammps_one_line_names_the_dem_extra(tmp_path, monkeypatch):
-    monkeypatch.setattr(lammps_run, "available", lambda: False)
+    from restitution.dem.engines.lammps import deck_run
+    monkeypatch.setattr(deck_run.importlib.util, "find_spec", lambda name: None)
     err = refused(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 1\n")
     assert "pip install 'restitution[dem]'" in err
 
@@ -409,6 +457,10 @@ def test_a_law_whose_eps_does_not_depend_on_size_gives_one_value(tmp_path):
     assert row["sizes"] == "any" and row["exact_line"]
     got = _in_lammps(row, Pair.spheres(0.01, 0.02, 2500.0, 2500.0), line)
     assert abs(got / row["eps"][2] - 1) < 1e-6, (got, row["eps"][2])
+    # one sentence, not a list of spheres that "gives the same"
+    status, text, _ = run_cli(["deck", str(tmp_path / "in.deck"), "--g", "1.0"])
+    assert ("types 1 1 (spheres of several sizes: this law's eps does not depend on size, so this row holds for "
+            "every size): LAMMPS hertz/material") in text, text
 
 
 POUR_RANGE = f"""units si

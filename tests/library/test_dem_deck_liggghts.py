@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from cli_run import run_cli
+from deck_cli import outside_file
 from restitution.dem.engines.liggghts import deck_run
 from restitution.dem.engines.liggghts import run as liggghts_run
 from restitution.dem.engines.liggghts.contact import liggghts_contact
@@ -110,6 +111,31 @@ dump d all custom 1 dump.out id
     assert not target.exists() and set(tmp_path.iterdir()) == before | {tmp_path / "in.deck"}
     for word in ("shell", "print", "write_restart", "dump"):
         assert f"restitution deck: {word} (line" in err
+
+
+@needs_liggghts
+@pytest.mark.parametrize("absolute", [True, False], ids=["absolute", "climbing"])
+def test_a_file_outside_the_deck_folder_named_by_a_variable_is_not_run(tmp_path, absolute):
+    """LIGGGHTS resolves ``include ${f}`` as it runs, after the copy was made safe: a file outside
+    the deck's folder ran as written, and its shell touched the file (issue 52's hole)."""
+    folder, target, name = outside_file(tmp_path, absolute)
+    before = sorted(tmp_path.rglob("*"))
+    status, out, err = deck(folder, HEAD.format(e=0.5) + PLAIN + f"variable f string {name}\ninclude ${{f}}\n" + TAIL)
+    assert not target.exists() and sorted(tmp_path.rglob("*")) == sorted(before + [folder / "in.deck"])
+    assert status == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert "line 18 (include" in err and "outside the deck's folder" in err, err
+
+
+@needs_liggghts
+@pytest.mark.parametrize("how", ["name", "folder"])
+def test_a_file_inside_the_deck_folder_named_by_a_variable_is_run(tmp_path, how):
+    """By its name, or by the deck's folder's own absolute path: LIGGGHTS reads the safe copy."""
+    target = tmp_path / "TOUCHED"
+    name = "part.in" if how == "name" else str(tmp_path / "part.in")
+    (tmp_path / "part.in").write_text(f"shell touch {target}\n" + PLAIN)
+    p, _ = pairs(tmp_path, HEAD.format(e=0.5) + f"variable f string {name}\ninclude ${{f}}\n" + TAIL)
+    assert not target.exists()
+    assert all(e == pytest.approx(0.5, rel=1e-9) for e in p[(1, 1)]["eps"])
 
 
 @needs_liggghts

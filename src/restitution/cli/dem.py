@@ -215,11 +215,13 @@ def run_deck(args, out) -> None:
                if w is not None]
         if few:
             where = f" ({head.removeprefix('# ')})" if head else ""
+            said = [(f"{n:.3g} steps", " (" + (f"eps there {d:.6f}, " if d is not None else "too few to resolve it, ")
+                     + f"dt -> 0: {e:.6f}; dt <= {w:.3g} keeps eps within {p['dt_tol']:g})") for _, n, e, d, w in few]
+            # a law whose eps and contact time do not depend on g says the same at every speed: once
+            clauses = ([f"{said[0][0]} at every speed given{said[0][1]}"] if len(few) > 1 and len(set(said)) == 1
+                       else [f"{steps} at g = {g:.4g}{rest}" for (g, *_), (steps, rest) in zip(few, said)])
             print(f"restitution deck: {name}{where}: at the deck's time step {p['dt']:.4g} a contact lasts "
-                  + ", ".join(f"{n:.3g} steps at g = {g:.4g} (" + (f"eps there {d:.6f}, " if d is not None else
-                                                                   "too few to resolve it, ")
-                              + f"dt -> 0: {e:.6f}; dt <= {w:.3g} keeps eps within {p['dt_tol']:g})"
-                              for g, n, e, d, w in few), file=sys.stderr)
+                  + ", ".join(clauses), file=sys.stderr)
     if args.json:
         write_json(res, out)
         return
@@ -249,9 +251,9 @@ def _sized(row: dict) -> str:
     """Where a type has several sizes: which end of the pair's eps range the row is, at which spheres."""
     if "sizes" not in row:
         return ""
-    at = " and ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in row["at"])
     if row["sizes"] == "any":
-        return f" (several sizes; eps does not depend on size: {at} gives the same)"
+        return " (spheres of several sizes: this law's eps does not depend on size, so this row holds for every size)"
+    at = " and ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in row["at"])
     return f" ({row['sizes']} over the sizes present, at {at})"
 
 

@@ -14,7 +14,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from ..core.collision import OMEGA_RANGE, StickError
 from ..core.errors import DerivedRangeError, ParameterError, derived_in_range, real_array, require_positive_finite
@@ -98,8 +97,35 @@ def _omega_for(problem, target: float, rtol: float) -> float:
                                                 f"Omega in [{OMEGA_RANGE[0]:g}, {OMEGA_RANGE[1]:g}]")
         s, e = s_next, e_next
     a, b = sorted((s, s_next))
-    return 10.0 ** brentq(lambda t: _eps_at(problem, t, rtol) - target, a, b, xtol=_LOG_OMEGA_XTOL,
-                          rtol=4 * np.finfo(float).eps)
+    return 10.0 ** _root(lambda t: _eps_at(problem, t, rtol) - target, a, b, _LOG_OMEGA_XTOL)
+
+
+def _root(f, a: float, b: float, xtol: float) -> float:
+    """The root of ``f`` between a and b, where f changes sign, to xtol + 4 ulp: regula falsi with
+    the Illinois rule (an end kept twice in a row has its value halved, so both ends close in),
+    superlinear on a smooth f and never outside the bracket. (scipy's brentq served here; importing
+    scipy.optimize cost ``restitution deck`` more than the rest of its own work.)"""
+    fa, fb = f(a), f(b)
+    if fa == 0.0 or fb == 0.0:
+        return a if fa == 0.0 else b
+    kept = 0
+    c = a
+    for _ in range(200):
+        c = b - fb * (b - a) / (fb - fa)
+        if not min(a, b) < c < max(a, b):
+            c = 0.5 * (a + b)
+        fc = f(c)
+        if fc == 0.0:
+            return c
+        if (fc > 0.0) == (fb > 0.0):
+            b, fb = c, fc
+            fa, kept = (0.5 * fa if kept == -1 else fa), -1
+        else:
+            a, fa = c, fc
+            fb, kept = (0.5 * fb if kept == 1 else fb), 1
+        if abs(b - a) <= xtol + 4.0 * np.finfo(float).eps * abs(c):
+            return c
+    return c
 
 
 def _d2_for(ex, D1: float, g: float, omega: float, target: float) -> float:
@@ -171,6 +197,8 @@ def calibrate(alpha, gamma, *, D1, eps, g, end: str = "force", rtol: float = 1e-
     if len(d2s) == 1:
         best = d2s[0]
     else:
+        from scipy.optimize import minimize_scalar     # here: one target, the common case, does not pay its import
+
         def misfit(log_d2):
             c = Contact(ex.alpha, ex.gamma, D1, math.exp(log_d2), end)
             return sum((_safe_eps(c, float(v), rtol) - t) ** 2 for v, t in zip(gs, targets))

@@ -63,15 +63,18 @@ the words :mod:`restitution.dem.deck_text`'s. ``Deck``, ``DeckError``, ``MAX_STA
 
 from __future__ import annotations
 
+import os
 import re
 import tempfile
 from dataclasses import replace
+from functools import lru_cache
 from pathlib import Path
 
 from ...core.collision import StickError
 from ...core.errors import ParameterError
 from .beside import effects
 from .reader import DIALECTS, MAX_STAGES, contact_key, read_executed
+from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
 from ..engines.lammps.deck import DEFAULT_DT
 from ..pair import Pair
@@ -119,16 +122,18 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
                     continue
                 if t not in deck.sizes or t in deck.shapes:
                     spheres(deck, t, t)          # one line where the type lacks a radius or a density, or is no sphere
-                sized = []
-                for r, rho in deck.sizes.get(t) or [(deck.radius[t], deck.density[t])]:
-                    pair = Pair.wall(r, rho)
+                def wall_row(size, at_speeds, t=t, mesh=mesh, contact_of=contact_of, wall_type=wall_type):
+                    pair = Pair.wall(*size)
                     contact, typed, model, exact = contact_of(pair, t)
+                    if at_speeds is None:
+                        return contact, pair.R1
                     row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                      "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
-                                     "line": loc[1], "file": loc[0]}, contact, speeds, pair.R1, _dt(deck))
-                    sized.append(({**row, "beside": effects(deck, row, contact, pair, (t,))},
-                                  ((r, rho),) if t in deck.sizes else ()))
-                rows += _ends(sized)
+                                     "line": loc[1], "file": loc[0]}, contact, at_speeds, pair.R1, _dt(deck))
+                    return ({**row, "beside": effects(deck, row, contact, pair, (t,))},
+                            (tuple(size),) if t in deck.sizes else ())
+                rows += _time_steps(_ends(_over_sizes(
+                    deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds)))
     return rows, unknown
 
 
@@ -152,18 +157,34 @@ def _with_eps(row: dict, contact, speeds, limit: float, dt: float | None = None)
     eps = [(None, False) if t else _eps_or_stick(contact, g) for g, t in zip(speeds, through)]
     row.update(speeds=speeds, eps=[e for e, _ in eps], sticks=[s for _, s in eps], passes_through=through,
                overlap_limit=limit, **{k: v for k, v in contact.as_dict().items() if k != "end"})
-    if dt is not None:
-        steps, at_dt, within = [], [], []
-        for g, (e, stick), t in zip(speeds, eps, through):
-            t_c = None if t or stick else contact.contact_time(g)
-            n = None if t_c is None else t_c / dt
-            steps.append(n)
-            few = n is not None and n < FEW_STEPS
-            # below 2 steps the integrator does not resolve the contact: no eps is stated for it
-            at_dt.append(verlet_eps(contact, g, dt) if few and n >= 2 else None)
-            within.append(recommended_dt(contact, g, DT_TOL, eps=e, contact_time=t_c).dt if few else None)
-        row.update(dt=dt, steps_per_contact=steps, eps_at_dt=at_dt, dt_within_tol=within, dt_tol=DT_TOL)
+    # studied by _time_steps on the rows kept (a range of sizes keeps its two ends of many)
+    row["_time_step"] = (contact, dt)
     return row
+
+
+def _time_steps(rows: list) -> list:
+    """The rows, each with its deck's time step studied where it has one (:func:`_with_eps`)."""
+    for row in rows:
+        contact, dt = row.pop("_time_step")
+        if dt is not None:
+            steps, at_dt, within = zip(*(_time_step(contact, g, dt, e, stick or t) for g, e, stick, t
+                                         in zip(row["speeds"], row["eps"], row["sticks"], row["passes_through"])))
+            row.update(dt=dt, steps_per_contact=list(steps), eps_at_dt=list(at_dt), dt_within_tol=list(within),
+                       dt_tol=DT_TOL)
+    return rows
+
+
+@lru_cache(maxsize=4096)
+def _time_step(contact, g: float, dt: float, e, no_eps: bool) -> tuple:
+    """(steps per contact, the integrator's eps at dt, the dt within DT_TOL) at one speed; kept, as
+    a deck's walls and stages repeat the same contact (a tutorial's six walls over three runs: 18
+    times each contact time's quadratures)."""
+    t_c = None if no_eps else contact.contact_time(g, compiled=True)
+    n = None if t_c is None else t_c / dt
+    few = n is not None and n < FEW_STEPS
+    # below 2 steps the integrator does not resolve the contact: no eps is stated for it
+    return (n, verlet_eps(contact, g, dt) if few and n >= 2 else None,
+            recommended_dt(contact, g, DT_TOL, eps=e, contact_time=t_c).dt if few else None)
 
 
 def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
@@ -254,13 +275,17 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         raise DeckError("engine", engine, deck_run.INSTALL)
     with tempfile.TemporaryDirectory(prefix="restitution-deck-") as tmp:
         root = Path(tmp)
-        scratch = scratch_copy(path, root, deck_run.marker(root))
+        scratch = scratch_copy(path, root, deck_run.marker(root), confined=confining())
         if not any(key.split()[0] in ("pair_style", "if") for key in scratch.lines):
             raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                                 "(LIGGGHTS) line")
-        done = deck_run.run_copy(scratch.deck, root, budget)
+        done = deck_run.run_copy(scratch.deck, root, budget, original=path.resolve().parent)
         commands = executed(done.echo, scratch)
         for loc, text in unchecked(commands, scratch):
+            if text.split()[0] in ("include", "jump") and "$" in text.split()[1]:
+                raise DeckError(place(loc), text, "the file it reads is named by a variable, and this system does not "
+                                                  "let the audit run the engine where it sees the deck's folder only "
+                                                  "(no user namespaces): it did not run it; name the file as written")
             if text.split()[0] in ("include", "jump"):
                 raise DeckError(place(loc), text, "the file it reads lies outside the deck's folder, which the audit "
                                                   "copies and checks first (no shell, python or file output): it did "
@@ -285,6 +310,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                         raise
                 message = (f"{message}: the audit's dump of each type's radius and mass at this run; its atoms have "
                            "no radius (not spheres)")
+            if line and line.split()[0] in ("include", "jump") and confining() and _outside_folder(
+                    line.split()[1].strip("\"'"), scratch.deck.parent, path.resolve().parent):
+                message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
+                            "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, f"{engine} stops here: {message}")
         deck = read_executed(commands, atoms, radius, density, read_file)
     notes = [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
@@ -311,6 +340,13 @@ def _override_notes(atoms: list, radius: dict, density: dict) -> list:
                 what = f"{held[0]:.6g}" if len(held) == 1 else f"{held[0]:.6g} to {held[-1]:.6g}"
                 notes.append(f"type {t}: {flag} {value:g} replaces the {what} its particles hold in the deck")
     return notes
+
+
+def _outside_folder(name: str, copy: Path, folder: Path) -> bool:
+    """Whether the file ``name`` the engine was to read (from the copy ``copy`` of the deck's
+    folder ``folder``) lies outside that folder."""
+    where = Path(os.path.normpath(copy / name))
+    return not any(where == base or base in where.parents for base in (copy, folder))
 
 
 def _marker_stopped(echo: str, root: Path) -> bool:
@@ -415,16 +451,17 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
             if (i, j) in deck.others:
                 not_audited.append(_other_force(deck, i, j))
                 continue
-            rows = []
-            for at in _choices(deck, i, j):
+            def pair_row(at, at_speeds, i=i, j=j):
                 sized = replace(deck, at=at) if at else deck
                 row = DIALECTS[deck.code].pair_row(sized, i, j)
                 contact, pair = row.pop("contact"), row.pop("pair")
-                row = _with_eps(row, contact, speeds, pair.R1 + pair.R2, _dt(deck))
-                rows.append(({**row, "beside": effects(sized, row, contact, pair, (i, j),
-                                                       lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k))},
-                             at))
-            pairs += _ends(rows)
+                if at_speeds is None:
+                    return contact, pair.R1 + pair.R2
+                row = _with_eps(row, contact, at_speeds, pair.R1 + pair.R2, _dt(deck))
+                return ({**row, "beside": effects(sized, row, contact, pair, (i, j),
+                                                  lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k))},
+                        at)
+            pairs += _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row, speeds)))
     walls, walls_not = _wall_rows(deck, speeds)
     return pairs, walls, not_audited + walls_not
 
@@ -448,14 +485,63 @@ _SAME_EPS = 1e-9
 
 def _choices(deck: Deck, i: int, j: int) -> list:
     """The spheres a pair (i, j) is audited at: [()] where both types have one size, else every
-    choice of ((R_i, rho_i), (R_j, rho_j)) among their sizes (:attr:`Deck.sizes`)."""
+    choice of ((R_i, rho_i), (R_j, rho_j)) among their sizes (:attr:`Deck.sizes`), each unordered
+    choice once where i = j."""
     if i not in deck.sizes and j not in deck.sizes:
         return [()]
     one = {t: deck.sizes.get(t) or [(deck.radius.get(t), deck.density.get(t))] for t in (i, j)}
     for t, options in one.items():
         if options[0][0] is None or options[0][1] is None:
             spheres(deck, t, t)              # one line naming what the type lacks
-    return [(a, b) for a in one[i] for b in one[j]]
+    # a type with itself: (b, a) is the contact (a, b) is, and comes later: left out
+    return [(a, b) for m, a in enumerate(one[i]) for n, b in enumerate(one[j]) if i != j or m <= n]
+
+
+def _over_sizes(choices: list, row_at, speeds) -> list:
+    """[(row, at)] for the choices of sizes that :func:`_ends` may keep, ``row_at(choice, speeds)``
+    making each (``row_at(choice, None)``: its contact and overlap limit alone): every choice where
+    they are few or their eps at the middle speed all agree (a law whose eps may not depend on size:
+    _ends compares them at every speed), else only the two whose eps there is smallest and largest,
+    found at that speed alone (what _ends would keep of all: a poured range's 45 pairs of sizes cost
+    2 full rows, not 45)."""
+    if len(choices) <= 2:
+        return [row_at(c, speeds) for c in choices]
+    k = len(speeds) // 2
+    middle = _middle_eps([row_at(c, None) for c in choices], speeds[k])
+    known = [e for e in middle if e is not None]
+    if len(known) == len(middle) and all(abs(e - known[0]) <= _SAME_EPS * max(abs(known[0]), 1e-300) for e in known):
+        return [row_at(c, speeds) for c in choices]
+    keyed = [-1.0 if e is None else e for e in middle]
+    lo, hi = min(range(len(choices)), key=keyed.__getitem__), max(range(len(choices)), key=keyed.__getitem__)
+    low = row_at(choices[lo], speeds)
+    return [low, low if hi == lo else row_at(choices[hi], speeds)]
+
+
+def _middle_eps(contacts: list, g: float) -> list:
+    """eps at g of each (contact, overlap limit) as :func:`_with_eps` gives it (None where the bodies
+    pass through, 0 where they stick), the contacts of one law asked of the ladder at once: one
+    request of many points runs compiled at once, where many of one point run as plain Python first
+    (:func:`restitution.fast.jit.call_kernel`). Where the batch cannot answer (a law outside the
+    ladder, a sticking point), each is asked alone."""
+    from ...fast.ladder import epsilon
+    from ...fast.rung import reference_bound
+    out: list = [None] * len(contacts)
+    laws: dict = {}
+    for n, (contact, limit) in enumerate(contacts):
+        if not contact.reaches(g, limit):
+            laws.setdefault(getattr(contact, "problem", None), []).append(n)
+    for problem, members in laws.items():
+        try:
+            if problem is None or len(members) < 2:
+                raise ParameterError("omega", None, "asked alone")
+            got = epsilon(problem, omega=[contacts[n][0].omega(g) for n in members],
+                          tol=reference_bound(1e-12, problem.ex), build=False, cached=False).eps
+            for n, e in zip(members, got):
+                out[n] = float(e)
+        except ParameterError:       # StickError among them
+            for n in members:
+                out[n] = _eps_or_stick(contacts[n][0], g)[0]
+    return out
 
 
 def _ends(rows: list) -> list:

@@ -49,6 +49,8 @@ class Scratch:
     no-ops, [(command, (file, line))], the k-th echoed as ``NOOP.format(k)`` where reached;
     ``dynamic`` the commands whose name comes from a variable, [((file, line), text)], made
     ``DYNAMIC.format(k)``; ``stages`` the run markers' (file, line, text),
+    ``confined`` whether the engine will see nothing outside the scratch directory (else an
+    include or jump of a file named by a variable is made ``DYNAMIC`` too);
     indexed by the number in their file name; ``lines`` the normalised text of every command
     of the copied files (and of each command quoted in an ``if``) -> (file, line) of its first."""
     root: Path
@@ -57,6 +59,7 @@ class Scratch:
     dynamic: list = field(default_factory=list)
     stages: list = field(default_factory=list)
     lines: dict = field(default_factory=dict)
+    confined: bool = True
 
 
 def normalised(text: str) -> str:
@@ -79,7 +82,7 @@ def normalised(text: str) -> str:
     return " ".join(strip_comment(text).split())
 
 
-def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker) -> Scratch:
+def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, confined: bool = True) -> Scratch:
     """Copy the deck's folder into ``where``/deck and make the copy safe to run.
 
     Parameters
@@ -93,6 +96,10 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker) -> S
         records the atoms); it is written to ``where``/stage_k. A ``quit`` gets one too,
         ``marker(None, quit_text)``, written to ``where``/quit_n: the engine ends the process
         there, so what it records where the deck ends comes before the quit.
+    confined : bool
+        Whether the engine will run where it sees nothing outside ``where``
+        (:mod:`restitution.dem.dialect.sandbox`); if not, a file the deck names by a variable
+        could lie outside the copied folder, and its include or jump is never run.
 
     Returns
     -------
@@ -127,7 +134,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker) -> S
                                                      "reads in a folder of their own")
     copy = root / "deck"
     shutil.copytree(src.parent, copy, symlinks=True)
-    scratch = Scratch(root, copy / src.name)
+    scratch = Scratch(root, copy / src.name, confined=confined)
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(copy) for name in sorted(names)
                               if Path(base, name) != scratch.deck]
@@ -222,7 +229,8 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
         return _labelled(scratch, scratch.skipped, NOOP, (word, loc), loc)
-    if word in ("include", "jump") and len(key.split()) > 1 and _outside(key.split()[1]):
+    if word in ("include", "jump") and len(key.split()) > 1 and (
+            _outside(key.split()[1]) or not scratch.confined and "$" in key.split()[1]):
         # a file outside the copied folder is read as it is, shell lines and all: never run
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word == "quit":

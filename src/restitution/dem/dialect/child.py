@@ -13,6 +13,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Protocol
 
+from .sandbox import available as confining, confine
+
 __all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
@@ -83,13 +85,15 @@ class DeckRun(Protocol):
         the deck's run ``run_text`` in the scratch copy (``root`` the scratch directory), which runs
         as far as the engine must and then appends the atoms to ``root``/ATOMS."""
 
-    def run_copy(self, deck: Path, root: Path, budget: float) -> EngineRun:
+    def run_copy(self, deck: Path, root: Path, budget: float, original: Path | None = None) -> EngineRun:
         """Run the scratch copy ``deck`` (its folder the working directory; ``root`` the scratch
         directory of its screen and atoms files) in the engine within ``budget`` seconds of wall
-        time."""
+        time, confined to ``root`` where ``original`` (the deck's own folder) is given and the
+        system allows it (:func:`restitution.dem.dialect.child.run_child`)."""
 
 
-def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, screen_is_stdout: bool = False) -> EngineRun:
+def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, screen_is_stdout: bool = False,
+              original: Path | None = None, readable=()) -> EngineRun:
     """Run ``argv`` (an engine whose screen goes to ``root``/screen) until it ends, ``budget``
     seconds pass or its files outgrow the cap.
 
@@ -107,6 +111,12 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
         Wall-time budget in seconds.
     screen_is_stdout : bool
         The child's standard output is its screen: written to ``root``/screen.
+    original : Path, optional
+        The deck's own folder: where the system allows it, the child sees only ``root`` (writable),
+        the copy ``cwd`` also at ``original``, and the system's and ``readable``'s folders read-only
+        (:func:`restitution.dem.dialect.sandbox.confine`).
+    readable : sequence of path
+        Folders the program needs beside the system's.
 
     Returns
     -------
@@ -123,9 +133,10 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
     """
     screen = root / "screen"
     start = time.monotonic()
+    confined = confine(root, cwd, original, readable) if original is not None and confining() else None
     with open(screen, "wb") if screen_is_stdout else open(os.devnull, "wb") as stdout:
         proc = subprocess.Popen(argv, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=stdout,
-                                stderr=subprocess.PIPE, text=True)
+                                stderr=subprocess.PIPE, text=True, preexec_fn=confined)
     timed_out = False
     while True:
         try:

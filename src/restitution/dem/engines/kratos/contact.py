@@ -24,8 +24,6 @@ from __future__ import annotations
 
 import math
 
-from scipy.optimize import brentq
-
 from ....core.errors import ParameterError, one_of, require_positive_finite
 from ...contact import Contact
 from ...pair import Pair
@@ -267,6 +265,7 @@ def kratos_e(contact: Contact) -> dict:
     >>> round(kratos_e(c)["COEFFICIENT_OF_RESTITUTION"], 12)
     0.5
     """
+    from scipy.optimize import brentq     # here: `restitution deck` does not pay its import
     if contact.end != "force":
         raise ParameterError("end", contact.end, "Kratos clips the normal force at zero: only the force rule")
     if (contact.alpha, contact.gamma) == (1.5, 0.25):

@@ -31,8 +31,6 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from scipy.optimize import brentq
-
 from ....core.errors import ParameterError, derived_in_range, one_of, require_positive_finite
 from ...contact import Contact
 from ...pair import Pair, pair_inputs
@@ -115,6 +113,7 @@ def _e_from_restitution_b(b: float, alpha) -> float:
 
 
 def _e_from_tsuji_a(a: float) -> float:
+    from scipy.optimize import brentq     # here: `restitution deck` does not pay its import
     lo, hi = tsuji_a(1.0), tsuji_a(0.0)
     if not lo < a < hi:
         raise ParameterError("D2", a, f"needs A(e) = D2 / sqrt(D1) in ({lo:.4g}, {hi:.4g}), what tsuji's e in "

