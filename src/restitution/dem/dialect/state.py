@@ -120,6 +120,13 @@ class Deck:
     hybrid: str = ""
     substyle: str = ""
     others: dict = field(default_factory=dict)
+    # who meets whom (restitution.dem.deck.meeting): neigh_modify exclude settings in force, (loc,
+    # text, [style, args...]); fix ID -> (loc, text, group, style) of the fixes that move atoms (an
+    # integrator, fix move); (loc, text) of a command that made bonds, and special_bonds' lj weights
+    excludes: list = field(default_factory=list)
+    movers: dict = field(default_factory=dict)
+    bonds: tuple = ()
+    special_lj: tuple = (0.0, 0.0, 0.0)
 
 
 class DeckDialect(Protocol):
