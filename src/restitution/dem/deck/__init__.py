@@ -23,6 +23,11 @@ takes the types it names. A wall removed later (``unfix``) is still listed: it a
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
+Which spheres meet, and how they move, is :mod:`restitution.dem.deck.meeting`'s: a pair the
+engine's neighbour list leaves out (``neigh_modify exclude``, bonded atoms) is named, not audited;
+where one sphere of a pair is moved by no integrator (or by ``fix move linear``), the pair's eps is
+the other sphere's motion under the engine's force; ``fix rigid`` on spheres is refused.
+
 The deck's engine interprets it (:func:`engine_of` tells which): LAMMPS for a LAMMPS deck (its
 Python module, runs skipped), the ``liggghts`` binary for a LIGGGHTS deck (each run one step), both
 in a scratch copy of the deck's folder (:mod:`restitution.dem.deck.scratch`) where nothing that
