@@ -149,3 +149,9 @@ def test_a_tether_and_an_added_force_are_named_beside_the_contact(tmp_path):
     styles = {b["style"] for b in pairs(res)[(1, 2)]["beside"]}
     assert styles == {"addforce", "spring/self"} and "not understood" not in err
     assert math.isfinite(pairs(res)[(1, 2)]["eps"][0])
+
+
+def test_a_sphere_too_small_for_its_volume_is_refused_in_one_line(tmp_path):
+    """LAMMPS runs a diameter of 1e-300 (its volume underflows to 0): one line, no traceback."""
+    status, res, err = audit(tmp_path, TWO + "fix 1 all nve/sphere\nset atom 2 diameter 1e-300\nrun 10\n")
+    assert status == 2 and err.count("\n") == 1 and "volume is 0 in floating point" in err, err

@@ -167,6 +167,10 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         if min(radii) <= 0:
             deck.radius.pop(t, None)
             deck.missing[t] = f"type {t} holds point particles (radius 0), which have no contact radius"
+        elif any(rho is None for _, rho in sizes):
+            deck.radius.pop(t, None)
+            deck.missing[t] = (f"type {t} holds a sphere of radius {min(radii):g}, whose volume is 0 in floating "
+                               "point: it has no density")
         elif len(radii) == 1 and len(dens) == 1:
             deck.radius[t], deck.density[t] = radii.pop(), dens.pop()
         else:

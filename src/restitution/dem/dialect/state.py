@@ -468,6 +468,7 @@ def spheres(deck: Deck, i: int, j: int) -> Pair:
     if deck.at:           # one choice among a type's several sizes (a clump's spheres refused above)
         (r1, rho1), (r2, rho2) = deck.at
         return Pair.spheres(r1, r2, rho1, rho2)
+    for t in (i, j):
         why = f" ({deck.missing[t]})" if t in deck.missing else (
             " (no set, particle template, pour or data file gives it one: a type without particles?)")
         if t not in deck.radius:
