@@ -23,6 +23,11 @@ takes the types it names. A wall removed later (``unfix``) is still listed: it a
 
 Tangential, rolling and twisting models take no part in a head-on collision and are ignored.
 
+Which spheres meet, and how they move, is :mod:`restitution.dem.deck.meeting`'s: a pair the
+engine's neighbour list leaves out (``neigh_modify exclude``, bonded atoms) is named, not audited;
+where one sphere of a pair is moved by no integrator (or by ``fix move linear``), the pair's eps is
+the other sphere's motion under the engine's force; ``fix rigid`` on spheres is refused.
+
 The deck's engine interprets it (:func:`engine_of` tells which): LAMMPS for a LAMMPS deck (its
 Python module, runs skipped), the ``liggghts`` binary for a LIGGGHTS deck (each run one step), both
 in a scratch copy of the deck's folder (:mod:`restitution.dem.deck.scratch`) where nothing that
@@ -73,6 +78,7 @@ from pathlib import Path
 from ...core.collision import StickError
 from ...core.errors import ParameterError
 from .beside import effects
+from .meeting import excluded, held_contact, motion
 from .reader import DIALECTS, MAX_STAGES, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
@@ -119,6 +125,11 @@ def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
         for mesh, contact_of, wall_type in surfaces:
             for t in types:
                 if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
+                    continue
+                kind, why = motion(deck, t)
+                if kind != "free":
+                    unknown.append((*loc, " ".join(words), f"type {t}: {why}: its contact with the wall is not "
+                                                           "audited"))
                     continue
                 if t not in deck.sizes or t in deck.shapes:
                     spheres(deck, t, t)          # one line where the type lacks a radius or a density, or is no sphere
@@ -451,10 +462,28 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
             if (i, j) in deck.others:
                 not_audited.append(_other_force(deck, i, j))
                 continue
-            def pair_row(at, at_speeds, i=i, j=j):
+            if (why := excluded(deck, i, j)) is not None:
+                not_audited.append(why)
+                continue
+            moves = [motion(deck, t) for t in (i, j)]
+            for kind, why in moves:     # a moving fix's group not typed: said once
+                said = (*deck.style_line[0], deck.style_line[1], why)
+                if kind == "free" and why and said not in not_audited:
+                    not_audited.append(said)
+            if (why := _unmet(deck, i, j, moves)) is not None:
+                not_audited.append(why)
+                continue
+
+            def pair_row(at, at_speeds, i=i, j=j, moves=moves):
                 sized = replace(deck, at=at) if at else deck
                 row = DIALECTS[deck.code].pair_row(sized, i, j)
                 contact, pair = row.pop("contact"), row.pop("pair")
+                if moves[0][0] != moves[1][0]:      # one sphere never moves: the other's motion alone
+                    still = [k for k in (0, 1) if moves[k][0] == "held"][0]
+                    contact = held_contact(contact, pair, 1 - still)
+                    row.update(exact_line=None, held=moves[still][1],
+                               model=f"{row['model']}; {moves[still][1]}: the type {(i, j)[1 - still]} sphere's "
+                                     "motion alone")
                 if at_speeds is None:
                     return contact, pair.R1 + pair.R2
                 row = _with_eps(row, contact, at_speeds, pair.R1 + pair.R2, _dt(deck))
@@ -464,6 +493,19 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
             pairs += _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row, speeds)))
     walls, walls_not = _wall_rows(deck, speeds)
     return pairs, walls, not_audited + walls_not
+
+
+def _unmet(deck: Deck, i: int, j: int, moves: list) -> tuple | None:
+    """(file, line, text, why) where the engine's motion of the pair's spheres is not the audit's: the
+    audit's law covers two free spheres, or one free and one that never moves."""
+    loc, text = deck.style_line
+    unknown = [why for kind, why in moves if kind == "unknown"]
+    if unknown:
+        return (*loc, text, f"types {i} {j}: {unknown[0]}: not audited")
+    if all(kind == "held" for kind, _ in moves):
+        return (*loc, text, f"types {i} {j}: neither sphere is moved by the contact force ({moves[0][1]}): not "
+                            "audited")
+    return None
 
 
 def _other_force(deck: Deck, i: int, j: int) -> tuple:
@@ -604,8 +646,12 @@ def _empty_notes(deck: Deck) -> list:
     """One note per type without particles in the deck's runs (its pairs not audited)."""
     stages = [snap for _, snap, _ in deck.stages] or [deck]
     empty = sorted({t for d in stages for t in range(1, d.ntypes + 1) if _empty(d, t)})
+    # a fix deposit (or a pour yet to run) makes atoms of its type as the runs go
+    inserted = sorted(t for t in empty if any(t in made for d in stages for made in d.inserts if made))
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     return [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
-            "sphere pairs cannot happen there and are not audited" for t in empty] + \
+            "sphere pairs cannot happen there and are not audited" for t in empty if t not in inserted] + \
+        [f"type {t} is inserted by a fix (deposit) as the runs go, at sizes the audit does not read: its pairs "
+         "are not audited" for t in inserted] + \
         [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the smallest and "
          "largest radius and the lightest and densest among them" for t, (n, k) in sorted(sampled.items())]

@@ -28,7 +28,8 @@ BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
           "nve/limit": "a cap on how far an atom moves per step",
           "adapt": "coefficients or sizes changed as the run goes",
           "damping/cundall": "a global (Cundall) damping of every force on its atoms",
-          "damp/viscous": "a drag force", "viscous/sphere": "a drag torque"}
+          "damp/viscous": "a drag force", "viscous/sphere": "a drag torque",
+          "spring/self": "a spring tethering each atom to where it was", "addforce": "a force added to each atom"}
 #: The relative accuracy of drag_eps (its integration runs at a thousandth of it): without drag it
 #: met the library's eps to 4.5e-8 at worst over 6 exponent pairs, both end rules, 3 dampings, 3 speeds
 RTOL = 1e-7

@@ -14,6 +14,7 @@ import copy
 import re
 
 from .beside import BESIDE
+from .meeting import MOVERS, neigh_modify, special_bonds
 from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
@@ -37,7 +38,7 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "write_data", "write_dump", "reset_timestep", "run_style", "min_style", "minimize", "balance",
                "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
                "soft_particles", "modify_timing", "compute_modify", "comm_style"}
-_IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack",
+_IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "deposit",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "enforce2d", "move",
                      "ave/time", "ave/atom", "print", "move/mesh",
@@ -166,6 +167,10 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         if min(radii) <= 0:
             deck.radius.pop(t, None)
             deck.missing[t] = f"type {t} holds point particles (radius 0), which have no contact radius"
+        elif any(rho is None for _, rho in sizes):
+            deck.radius.pop(t, None)
+            deck.missing[t] = (f"type {t} holds a sphere of radius {min(radii):g}, whose volume is 0 in floating "
+                               "point: it has no density")
         elif len(radii) == 1 and len(dens) == 1:
             deck.radius[t], deck.density[t] = radii.pop(), dens.pop()
         else:
@@ -229,6 +234,15 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.units = words[1]
     elif cmd == "unfix" and len(words) >= 2:
         deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
+        deck.movers.pop(words[1], None)
+    elif cmd == "dimension" and words[1:] == ["3"]:
+        pass                             # the default
+    elif cmd == "neigh_modify":
+        neigh_modify(deck, words, loc, line)
+    elif cmd == "special_bonds":
+        special_bonds(deck, words, where, line)
+    elif cmd == "create_bonds":
+        deck.bonds = (loc, line)
     elif cmd == "timestep" and len(words) >= 2:
         deck.dt = number(words[1], where, line)
     elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
@@ -352,7 +366,9 @@ def contact_key(deck: Deck) -> str:
                        deck.hard, deck.model, deck.limit_force, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
-                       set(deck.shapes), deck.sizes, deck.others, [w for _, w in deck.beside])))
+                       set(deck.shapes), deck.sizes, deck.others, [w for _, w in deck.beside],
+                       [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
+                       bool(deck.bonds), deck.special_lj)))
 
 
 def _stage(deck: Deck, loc, line: str) -> None:
@@ -405,6 +421,8 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             section, hint = body, comment.strip()
             if section in ("Pair Coeffs", "PairIJ Coeffs") and coeffs and deck.code != "LAMMPS":
                 raise DeckError(here, body, "a data file's pair coefficients before pair_style granular")
+            if section == "Bonds":
+                deck.bonds = ((name, n), body)
             if section not in {"Atoms", "Pair Coeffs", "PairIJ Coeffs", "Atom Type Labels"} | _DATA_IRRELEVANT:
                 deck.unknown.append((name, n, raw.strip(), "data-file section not read"))
             continue
@@ -480,6 +498,14 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     style = words[3]
     # a fix of the same ID replaces the earlier one, as in the engines
     deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
+    deck.movers.pop(words[1], None)
+    if style.startswith("rigid"):
+        raise DeckError(where, line, f"fix {style} makes rigid bodies of spheres: a body's mass is not a sphere's, "
+                                     "and the reader audits the head-on contact of two single spheres only")
+    if style in MOVERS:
+        deck.movers[words[1]] = (loc, line, words[2], style)
+    if style.startswith("bond/create"):
+        deck.bonds = (loc, line)
     if style in BESIDE:
         deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck.beside)
         return

@@ -189,10 +189,9 @@ def snapshots(atoms: str) -> list[dict]:
             for row in lines[k + 1:k + 1 + n]:
                 t, r, m = row.split()[:3]
                 r, m = float(r), float(m)
-                # A radius below about 1e-108 (LAMMPS runs it) has no double-precision volume: the
-                # density is then infinite, which the law's range check refuses in one line.
                 volume = 4.0 / 3.0 * math.pi * r ** 3
-                rho = (m / volume if volume > 0 else math.inf) if r > 0 else None
+                # a radius below ~1e-108 has a volume that underflows to 0: no density (named)
+                rho = m / volume if volume > 0 else None
                 snap.setdefault(int(t), set()).add((r, None if rho is None else float(f"{rho:.12g}")))
             out.append(snap)
             k += 1 + n

@@ -120,6 +120,13 @@ class Deck:
     hybrid: str = ""
     substyle: str = ""
     others: dict = field(default_factory=dict)
+    # who meets whom (restitution.dem.deck.meeting): neigh_modify exclude settings in force, (loc,
+    # text, [style, args...]); fix ID -> (loc, text, group, style) of the fixes that move atoms (an
+    # integrator, fix move); (loc, text) of a command that made bonds, and special_bonds' lj weights
+    excludes: list = field(default_factory=list)
+    movers: dict = field(default_factory=dict)
+    bonds: tuple = ()
+    special_lj: tuple = (0.0, 0.0, 0.0)
 
 
 class DeckDialect(Protocol):
@@ -461,6 +468,7 @@ def spheres(deck: Deck, i: int, j: int) -> Pair:
     if deck.at:           # one choice among a type's several sizes (a clump's spheres refused above)
         (r1, rho1), (r2, rho2) = deck.at
         return Pair.spheres(r1, r2, rho1, rho2)
+    for t in (i, j):
         why = f" ({deck.missing[t]})" if t in deck.missing else (
             " (no set, particle template, pour or data file gives it one: a type without particles?)")
         if t not in deck.radius:

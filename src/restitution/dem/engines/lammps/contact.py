@@ -32,7 +32,7 @@ import math
 from fractions import Fraction
 
 from ....core.errors import ParameterError, derived_in_range, one_of, require_positive_finite
-from ...contact import Contact
+from ...contact import Contact, ElasticContact
 from ...pair import Pair, pair_inputs
 
 __all__ = ["tsuji_a", "restitution_b", "lammps_contact", "lammps_eta_n0", "lammps_pair_coeff", "lammps_gran_contact",
@@ -165,7 +165,7 @@ def base_eta_n0(damping: str) -> float:
 
 
 def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limit_damping: bool,
-                   k_n: float | None = None, E: float | None = None, nu: float | None = None) -> Contact:
+                   k_n: float | None = None, E: float | None = None, nu: float | None = None) -> Contact | ElasticContact:
     """The model a LAMMPS ``pair_style granular`` setting gives for this pair (``eta_n0`` is e for
     tsuji and coeff_restitution).
 
@@ -208,8 +208,11 @@ def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limi
     alpha, D1 = _d1(pair, normal, k_n, E, nu)
     damping = one_of("damping", damping, DAMPING_MODELS)
     if damping in E_DAMPINGS:
-        if not 0.0 < eta_n0 < 1.0:
-            raise ParameterError("eta_n0", eta_n0, f"is {damping}'s e: must be in (0, 1)")
+        if not 0.0 < eta_n0 <= 1.0:
+            raise ParameterError("eta_n0", eta_n0, f"is {damping}'s e: must be in (0, 1]")
+        if damping == "coeff_restitution" and eta_n0 == 1.0:
+            # its B(1) = 0: no damping at all (LAMMPS measures 1 to 3e-7); tsuji's A(1) is not 0
+            return ElasticContact(alpha, D1, "force" if limit_damping else "overlap")
         D2 = (tsuji_a(eta_n0) if damping == "tsuji" else restitution_b(eta_n0, alpha)) * math.sqrt(D1)
     else:
         eta = require_positive_finite("eta_n0", eta_n0)

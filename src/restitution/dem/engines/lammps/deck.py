@@ -274,7 +274,7 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     contact = lammps_contact(pair, **c.setting(stiffness))
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
-    if typed is not None and c.others is not None:
+    if typed is not None and c.others is not None and contact.D2 > 0:     # no damping (e = 1): eps is e already
         e_new = exact_e(contact, typed, partial(lammps_eta_n0, None, c.damping))
         if e_new is not None:
             # the pair's own line (a wildcard or mixed pair gets one naming it), its e replaced

