@@ -323,7 +323,7 @@ is not known. The article's figure of the error of $\varepsilon(g)$ shows the re
 the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
 Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error figures for every exponent pair of the
-stability atlas. The library prints the formula as one line of C with every number
+stability atlas. The formula can also be printed as one line of C with every number
 written out (Sec.~\ref{{sec:reproduce}}).
 
 \begin{{figure}}[htbp]
@@ -358,8 +358,8 @@ the error of $C$. The error figure for the main variant is {sci(main_overlap['bo
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly below
-$\Omega = 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the library's overlap-rule master
-curve and integrators cover those pairs.
+$\Omega = 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the overlap rule's master
+curve and the integrators cover those pairs.
 
 \begin{{table}}[htbp]
 \centering\footnotesize
