@@ -53,7 +53,7 @@ ax.loglog(curve["g"], rel(law_viscous), color="tab:blue", ls="-.", lw=1.5, label
 if "eps_printed" in curve and curve["eps_printed"].notna().any():
     ax.loglog(curve["g"], rel(curve["eps_printed"].to_numpy()), color="tab:red", ls=":", lw=2.0,
               label="Kim's printed relation")
-ax.set_xlabel(r"impact speed $g$")
+ax.set_xlabel(r"impact speed $g$ (units of the $D_1$, $D_2$ fit)")
 ax.set_ylabel(r"relative error in $\varepsilon$")
 ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$", fontsize=10)
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False)
@@ -78,18 +78,22 @@ LAW_RANGE = {   # (elastic law within LAW_TOL somewhere, viscous law within LAW_
 fig, axes = plt.subplots(2, 2, figsize=(7.2, 6.4), sharey=True, sharex=True)
 colors = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:cyan"]
 styles = ["-", "--", "-.", ":"]
+markers = ["o", "s", "^", "D", "v", "P"]   # also on the dotted error-figure lines, which differ in colour only
 for row, (fs, errs, rule) in enumerate(((forms, errors, "force"), (overlap_forms, overlap_errors, "overlap"))):
     for i, name in enumerate(p.variants):
         if not fs[name]["available"]:
             continue
         e = errs[name]
         kw = dict(color=colors[i % len(colors)], ls=styles[i % len(styles)], lw=1.5,
+                  marker=markers[i % len(markers)], markevery=0.125, ms=3.5,
                   label=rf"{esc(name)} ($\alpha = {p.exponents[name]['alpha']}$, $\gamma = {p.exponents[name]['gamma']}$)")
         axes[row, 0].loglog(e["omega"], np.maximum(e["err_eps"], 1e-17), **kw)
         el = e["omega"] >= 1
         axes[row, 1].loglog(e["omega"][el], np.maximum(e["err_one_minus_eps"][el], 1e-17), **kw)
         for ax, key in ((axes[row, 0], "bound_eps"), (axes[row, 1], "bound_one_minus_eps")):
             ax.axhline(fs[name][key], color=kw["color"], lw=0.8, ls=(0, (1, 2)))
+            ax.plot([0.97], [fs[name][key]], transform=ax.get_yaxis_transform(), color=kw["color"],
+                    marker=kw["marker"], ms=4, ls="none")
     axes[row, 0].set_ylabel(f"relative error, {rule} rule")
     axes[row, 0].set_title(rf"in $\varepsilon$ ({rule} rule)", fontsize=9)
     axes[row, 1].set_title(rf"in $1-\varepsilon$, $\Omega \geq 1$ ({rule} rule)", fontsize=9)
@@ -145,6 +149,11 @@ ref_check = collide((ex["alpha"], ex["gamma"]), CHECK_OMEGA, rtol=1e-12).eps
 check_lead = abs(float(V.eps(CHECK_OMEGA, order=0)) / ref_check - 1.0)
 check_first = abs(float(V.eps(CHECK_OMEGA, order=1)) / ref_check - 1.0)
 end_power = 1 + (g_ + 1) / (a_ - g_) if a_ > g_ else None
+# beta = (alpha - gamma)/((gamma + 1)(alpha + 1)) is rational for rational exponents: printed as the fraction,
+# checked against the library's floating-point value (a second route to the same number)
+end_coef = (a_ - g_) / ((g_ + 1) * (a_ + 1))
+if abs(float(end_coef) - float(E.E)) > 1e-12 * abs(float(E.E)):
+    raise SystemExit(f"end coefficient: exact {end_coef} but the library gives {E.E}")
 end_clause = (r"so for these exponents the term is smaller than the omitted $O(\mu^3)$: it is the leading effect of "
               r"ending at zero force, not the next term of the expansion" if end_power > 3 else
               r"so for these exponents it is the first correction after $C_2$")
@@ -187,6 +196,9 @@ macros = {
     "CFViscousFirstErr": sci(check_first, 2),
     "CFElasticCTwo": sci(E.C2, 6),
     "CFEndCoef": sci(E.E, 6),
+    "CFEndCoefExact": frac(end_coef),
+    # the range of Omega over which the form's coefficients were fitted and tested
+    "CFFitOmegaMin": sci(main["omega_range"][0], 1), "CFFitOmegaMax": sci(main["omega_range"][1], 1),
     "CFEndPower": frac(end_power) if end_power is not None else "none",
     "CFFormTerms": str(len(main["a"])),
 }
@@ -311,17 +323,15 @@ is not known. The article's figure of the error of $\varepsilon(g)$ shows the re
 the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
 Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error figures for every exponent pair of the
-stability atlas. The library prints the formula as one line of C with every number
-written out (\texttt{{restitution eps --method closed-form --json}}; the method's name is older than this
-paper's wording: it is the fitted uniform approximation, not a closed form, and so is the row
-\texttt{{closed-form}} of Table~\ref{{tab:bench}}).
+stability atlas. The formula can also be printed as one line of C with every number
+written out (Sec.~\ref{{sec:reproduce}}).
 
 \begin{{figure}}[htbp]
 \centering
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
 \caption{{Relative error of the uniform approximations against the compiled integrator, in $\varepsilon$ (left) and in
 $1 - \varepsilon$ (right), for every variant that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
-Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest measured error). Made by
+Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on points not used in the fit, plus the reference's accuracy), each marked at its right end with its variant's marker. Made by
 \texttt{{closed\_form\_section.py}}.}}
 \label{{fig:uniform-error}}
 \end{{figure}}
@@ -348,8 +358,8 @@ the error of $C$. The error figure for the main variant is {sci(main_overlap['bo
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly below
-$\Omega = 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the library's overlap-rule master
-curve and integrators cover those pairs.
+$\Omega = 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the overlap rule's master
+curve and the integrators cover those pairs.
 
 \begin{{table}}[htbp]
 \centering\footnotesize

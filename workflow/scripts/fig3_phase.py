@@ -51,6 +51,9 @@ ax.set_xlim(0.0, x_i[-1])
 ax.set_ylim(-0.1, float(v_i[-1]) * 1.05)
 ax.set_xlabel(r"scaled deformation $x$, $\tilde x$")
 ax.set_ylabel(r"scaled velocity $x' = dx/d\tau$, $\tilde x'$")
-ax.legend(loc="upper left", title=rf"damped only ($\Omega = 0$), $\gamma = {gamma}$")
+# below the figure: inside the axes, the inverse curve ran through it for gamma = 0 (the dashpot);
+# bbox_inches="tight" keeps it in the saved figure
+fig.legend(*ax.get_legend_handles_labels(), loc="upper center", bbox_to_anchor=(0.5, 0.0),
+           title=rf"damped only ($\Omega = 0$), $\gamma = {gamma}$")
 fig.set_layout_engine("tight")   # redone when save_figure resizes
 save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.75)
