@@ -207,8 +207,7 @@ def script_deck_cases(draw):
     n, normal, damping, g, types = _lammps_deck_draws(draw)
     labels = draw(st.booleans())
     name = {t: f"{'abc'[t - 1]}{t}" if labels else str(t) for t in types}
-    head = ["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1", f"create_box {n} box"]
-    head += [f"set type {t} diameter {2 * m['radius']:.8g} density {m['density']:.8g}" for t, m in types.items()]
+    head = _lammps_head(n, types)
     body = [] if not labels else ["labelmap atom " + " ".join(f"{t} {name[t]}" for t in types)]
     body.append("pair_style granular")
     count = iter(range(10 ** 6))
