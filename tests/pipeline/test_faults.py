@@ -101,7 +101,8 @@ def test_every_workflow_script_writes_outputs_through_the_atomic_helpers():
     for path in sorted([*scripts.glob("*.py"), helpers / "pipeline.py", helpers / "latex.py"]):
         for number, line in enumerate(path.read_text().splitlines(), 1):
             code = line.split("#", 1)[0]
-            if _DIRECT_WRITE.search(code) and "tmp" not in code and "open(log" not in code:
+            # a figure measured in memory (io.BytesIO) writes no file
+            if _DIRECT_WRITE.search(code) and "tmp" not in code and "open(log" not in code and "BytesIO()" not in code:
                 offenders.append(f"{path.name}:{number}: {line.strip()}")
     assert not offenders, "\n".join(offenders)
     pipeline = (helpers / "pipeline.py").read_text()

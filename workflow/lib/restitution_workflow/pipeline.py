@@ -203,9 +203,8 @@ def printed_text_sizes(fig, width: float) -> tuple[float, float]:
 
     from restitution_workflow.pdf_text import measure
 
-    buf = io.BytesIO()
-    fig.savefig(buf, format="pdf", metadata=PDF_METADATA, bbox_inches="tight")
-    data = buf.getvalue()
+    fig.savefig(in_memory := io.BytesIO(), format="pdf", metadata=PDF_METADATA, bbox_inches="tight")
+    data = in_memory.getvalue()
     box = [float(x) for x in re.search(rb"/MediaBox\s*\[([^\]]*)\]", data).group(1).split()]
     # pdfTeX scales the figure's box to the requested width; TeX points vs PDF points: 72/72.27
     scale = width * TEXT_WIDTH_PT * 72 / 72.27 / (box[2] - box[0])

@@ -156,8 +156,8 @@ def confine(root: Path, copy: Path, original: Path, readable=()):
     def view():
         new.mkdir(exist_ok=True)
         mount("tmpfs", str(new), "tmpfs", 0, "size=1m,mode=755")
-        for p in readable:
-            if Path(str(new) + str(p)).exists():
+        for p in sorted(readable, key=lambda p: len(p.parts)):   # a folder before those inside it
+            if Path(str(new) + str(p)).exists():       # inside one bound already
                 continue
             if os.path.islink(str(p)) or p != Path(os.path.realpath(p)):
                 continue

