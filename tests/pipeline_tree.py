@@ -2,7 +2,7 @@
 
 Never runs anything in the working tree. A copy gets the project minus .venv/results/.snakemake/
 logs/build (workflow/tools/rebuild.py's copy_tree) and a symlink to this checkout's .venv (so that
-`make` finds its tools; make runs with `-o .venv/.installed-stamp -o tex` so it can never reinstall
+`make` finds its tools; make runs with `-o` on the environment stamps and `tex` so it can never reinstall
 the shared environment or install TeX).
 
 One clean build (`make paper`) is shared by every test module that asks for it (`built_tree`, the
@@ -65,9 +65,11 @@ def copy_built(src: Path, dest: Path) -> Path:
 
 
 def make_cmd(target: str = "outputs", *extra: str) -> list[str]:
-    # -o: never remake the environment stamp (the .venv is shared with the working tree), and never
-    # install TeX from inside a test (`make test` did that, or it cannot be done here)
-    return ["make", "--no-print-directory", "-o", ".venv/.installed-stamp", "-o", "tex", target, *extra]
+    # -o: never remake an environment stamp (the .venv is shared with the working tree: a pip install
+    # run from the copy would point the shared editable install at it), and never install TeX from
+    # inside a test (`make test` did that, or it cannot be done here)
+    return ["make", "--no-print-directory", "-o", ".venv/.installed-stamp", "-o", ".venv/.kratos-stamp",
+            "-o", ".venv/.docs-stamp", "-o", "tex", target, *extra]
 
 
 def make(tree: Path, target: str = "outputs", *extra: str, env: dict | None = None,
