@@ -44,6 +44,35 @@ class ParameterError(ValueError):
         super().__init__(f"{field} = {value!r}: {allowed}")
 
 
+class InputFileError(ParameterError):
+    """A file the user gives (a DEM deck, a materials file) holds something that cannot be mapped,
+    or lacks something: one line naming where, what stands there and why.
+
+    The readers of each kind of file raise a subclass of their own, which may show the three its
+    own way.
+
+    Parameters
+    ----------
+    where : str
+        Where in the file: a line ("line 12") or a field or setting ("radius").
+    text
+        What stands there (a line, a value), or None.
+    why : str
+        What cannot be mapped, what is missing, or what is allowed.
+
+    Examples
+    --------
+    >>> err = InputFileError("radius", -0.5, "must be a finite number > 0")
+    >>> print(err)
+    radius = -0.5: must be a finite number > 0
+    >>> isinstance(err, ParameterError), err.field
+    (True, 'radius')
+    """
+
+    def __init__(self, where: str, text, why: str):
+        super().__init__(where, text, why)
+
+
 def _not_a_number(x) -> bool:
     """Values Python or numpy would quietly turn into a float: True (1), "0.5", a complex (its
     imaginary part dropped). The API takes the CLI's rules: numbers only."""

@@ -6,16 +6,20 @@ An engine is one object: its contact law and its parameters both ways (:meth:`En
 the real engine, or None where it is not installed), the settings whose damping is a typed e
 (``typed_e``), the hook of its deck dialect (``deck``, from ``deck_module``), and, for an engine a
 scene file may name (``scene_options`` not None), the scene's hooks: end rule, candidate models,
-each contact's setting and input lines.
+each contact's setting and input lines. An engine run as a child process describes how
+(:class:`EngineProcess`), and its runner's eps then follows the same steps as every other's.
 """
 
 from __future__ import annotations
 
 import importlib
+import shutil
+from collections.abc import Callable
+from dataclasses import dataclass
 
 from ..core.errors import ParameterError
 
-__all__ = ["Engine", "rebound_eps"]
+__all__ = ["Engine", "EngineProcess", "rebound_eps"]
 
 
 class Engine:
@@ -210,3 +214,98 @@ def rebound_eps(ends, speeds, label: str) -> list[float]:
             raise ArithmeticError(f"the bodies had not separated at the end of the {label} run")
         eps.append(-rel / g)
     return eps
+
+
+@dataclass(frozen=True)
+class EngineProcess:
+    """A real engine that runs head-on collisions as a child process, every case of a call in one
+    process (LIGGGHTS, Yade and Kratos each take a second or more to start): the engine reads how
+    each run ended (``ends``), and :meth:`eps_runs` turns that into eps the same way for all.
+
+    Parameters
+    ----------
+    label : str
+        The engine, as messages name it.
+    case : str
+        The engine's case tuple in words: what :meth:`eps_runs` takes per run.
+    speed_at : int
+        Where a case holds its approach speed g.
+    ends : callable
+        ``ends(pair, cases, timeout)`` -> (relative normal velocity v1 - v2, distance between the
+        surfaces) at the end of each case, all from one process of the engine.
+    timeout : float, optional
+        Seconds the engine may take where a call gives none.
+    program : str, optional
+        The program the engine is started as, where it is one on PATH (:meth:`available`).
+
+    Examples
+    --------
+    A stand-in engine whose runs all rebound at half their approach speed:
+
+    >>> toy = EngineProcess("Toy", "(setting, g, dt, t_run)", 1,
+    ...                     lambda pair, cases, timeout: [(-0.5 * g, 1e-4) for _, g, _, _ in cases])
+    >>> toy.eps_runs(None, [("lines", 1.0, 1e-7, 1e-3), ("lines", 2.0, 1e-7, 1e-3)])
+    [0.5, 0.5]
+    """
+
+    label: str
+    case: str
+    speed_at: int
+    ends: Callable
+    timeout: float = 600.0
+    program: str | None = None
+
+    def available(self) -> bool:
+        """Whether the engine's program is on PATH (the runner form's ``available()``, where the
+        engine is started as a program).
+
+        Returns
+        -------
+        bool
+            True where the engine can be run; the tests that run it are skipped otherwise.
+
+        Examples
+        --------
+        >>> EngineProcess("Toy", "(setting, g, dt, t_run)", 1, None, program="no-such-engine-here").available()
+        False
+        """
+        return self.program is not None and shutil.which(self.program) is not None
+
+    def eps_runs(self, pair, cases: list, timeout: float | None = None) -> list[float]:
+        """eps of each case, all in one process of the engine (each engine's runner form; the
+        engine's module names it ``<engine>_eps_runs`` too).
+
+        Parameters
+        ----------
+        pair : Pair
+            The two spheres (a ``Pair.wall`` for a sphere on a wall, where the engine runs one).
+        cases : list of tuple
+            One case per run, in the engine's form (:attr:`case`), its approach speed g at
+            :attr:`speed_at`.
+        timeout : float, optional
+            Seconds the engine may take (:attr:`timeout` where not given).
+
+        Returns
+        -------
+        list of float
+            The engine's eps of each run, in order.
+
+        Raises
+        ------
+        RuntimeError
+            Where the engine stops.
+        ArithmeticError
+            Where a run ended with the surfaces still touching (:func:`rebound_eps`).
+
+        Examples
+        --------
+        A stand-in engine whose run ends with the bodies still pressed together is refused:
+
+        >>> stuck = EngineProcess("Toy", "(setting, g, dt, t_run)", 1, lambda pair, cases, timeout: [(0.2, 0.0)])
+        >>> stuck.eps_runs(None, [("lines", 1.0, 1e-7, 1e-3)])
+        Traceback (most recent call last):
+        ...
+        ArithmeticError: the bodies had not separated at the end of the Toy run
+        """
+        ends = self.ends(pair, cases, self.timeout if timeout is None else timeout)
+        return rebound_eps(ends, [case[self.speed_at] for case in cases], self.label)

@@ -15,7 +15,7 @@ from fractions import Fraction
 from functools import lru_cache
 from typing import Protocol
 
-from ...core.errors import ParameterError
+from ...core.errors import InputFileError, ParameterError
 from ..calibrate import calibrate
 from ..pair import Pair
 
@@ -23,7 +23,7 @@ __all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e"]
 
 
-class DeckError(ParameterError):
+class DeckError(InputFileError):
     """One line naming what in the deck cannot be mapped or is missing.
 
     Parameters

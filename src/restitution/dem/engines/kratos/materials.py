@@ -25,7 +25,7 @@ from __future__ import annotations
 import json
 
 from ....core.collision import StickError
-from ....core.errors import ParameterError
+from ....core.errors import InputFileError, ParameterError
 from ...pair import Pair
 from .contact import KRATOS_E_RANGE, KRATOS_LAWS, kratos_contact
 from .design import kratos_design
@@ -37,7 +37,7 @@ _SPHERE_PARTS = ("SpheresPart", "DEMInletPart", "ClusterPart")
 _WALL_PARTS = ("RigidFacePart",)
 
 
-class MaterialsError(ParameterError):
+class MaterialsError(InputFileError):
     """One line naming what in a Kratos materials file cannot be mapped or is missing.
 
     Parameters
@@ -54,9 +54,6 @@ class MaterialsError(ParameterError):
     >>> str(MaterialsError("file", "JSON", "not a Kratos MaterialsDEM.json"))
     "file = 'JSON': not a Kratos MaterialsDEM.json"
     """
-
-    def __init__(self, where: str, text, why: str):
-        super().__init__(where, text, why)
 
 
 def _json(text: str):

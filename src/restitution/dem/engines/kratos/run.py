@@ -24,12 +24,12 @@ import sys
 import tempfile
 from pathlib import Path
 
-from ...engine import rebound_eps
+from ...engine import EngineProcess
 from ...extrapolate import eps_extrapolated
 from ...pair import Pair
 from .contact import KRATOS_LAWS
 
-__all__ = ["available", "kratos_states", "kratos_eps_runs", "eps_runs", "kratos_eps_extrapolated", "KRATOS_INSTALL"]
+__all__ = ["available", "kratos_states", "PROCESS", "kratos_eps_runs", "eps_runs", "kratos_eps_extrapolated", "KRATOS_INSTALL"]
 
 #: What to type where Kratos is missing (skip reasons, messages)
 KRATOS_INSTALL = "pip install -e '.[kratos]' (KratosDEMApplication)"
@@ -204,7 +204,40 @@ def _case(pair: Pair, setting: dict, g: float, dt: float, t_run: float) -> dict:
 def kratos_states(pair: Pair, cases: list, timeout: float = 900.0) -> list[dict]:
     """{"rel", "gap", "reach", "steps"} at the end of each case (setting, g, dt, t_run), all in one
     Kratos process: rel the relative normal velocity (v1 - v2, or the sphere's on a wall), gap the
-    surfaces' distance, reach the largest overlap seen at the ends of steps."""
+    surfaces' distance, reach the largest overlap seen at the ends of steps.
+
+    Parameters
+    ----------
+    pair : Pair
+        The two spheres, or ``Pair.wall`` for a sphere on a wall (then only its first sphere exists).
+    cases : list of tuple
+        (setting, g, dt, t_run) per run: ``setting`` a dict of law (Kratos' name or ours), e, E and
+        nu (E2, nu2 where the second sphere differs; E_wall, nu_wall for a sphere on a wall), g the
+        approach speed, dt the time step, t_run the run's length.
+    timeout : float, optional
+        Seconds Kratos may take.
+
+    Returns
+    -------
+    list of dict
+        {"rel", "gap", "reach", "steps", "masses"} per run, as Kratos holds them at its last step.
+
+    Raises
+    ------
+    RuntimeError
+        Where Kratos fails.
+
+    Examples
+    --------
+    Needs Kratos (``pip install -e '.[kratos]'``), so the doctests skip it; hertz with a typed e of
+    0.5, whose eps the library gives as 0.5:
+
+    >>> pair = Pair.spheres(0.01, 0.01, 2500.0)
+    >>> setting = {"law": "hertz", "e": 0.5, "E": 1e7, "nu": 0.3}
+    >>> (state,) = kratos_states(pair, [(setting, 1.0, 2e-6, 5e-3)])  # doctest: +SKIP
+    >>> round(-state["rel"], 2), state["gap"] > 0  # doctest: +SKIP
+    (0.5, True)
+    """
     rows = [_case(pair, *case) for case in cases]
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "collide.py"
@@ -219,15 +252,15 @@ def kratos_states(pair: Pair, cases: list, timeout: float = 900.0) -> list[dict]
     return json.loads(lines[-1][len(_MARK):])
 
 
-def kratos_eps_runs(pair: Pair, cases: list, timeout: float = 900.0) -> list[float]:
-    """eps of each case (setting, g, dt, t_run) in one Kratos process."""
+def _ends(pair: Pair, cases: list, timeout: float) -> list[tuple]:
     # approach: v1 - v2 = g > 0 (the sphere's -g on a wall)
-    ends = [(state["rel"], state["gap"]) for state in kratos_states(pair, cases, timeout)]
-    return rebound_eps(ends, [case[1] for case in cases], "Kratos")
+    return [(state["rel"], state["gap"]) for state in kratos_states(pair, cases, timeout)]
 
 
-#: The runner form every engine's has: eps of each case (setting, g, dt, t_run)
-eps_runs = kratos_eps_runs
+#: How Kratos runs collisions (restitution.dem.engine.EngineProcess): its eps_runs is the runner
+#: form every engine's has, the setting as :func:`kratos_states` takes it
+PROCESS = EngineProcess("Kratos", "(setting, g, dt, t_run)", 1, _ends, timeout=900.0)
+kratos_eps_runs = eps_runs = PROCESS.eps_runs
 
 
 def kratos_eps_extrapolated(pair: Pair, setting: dict, speeds, t_run: dict, t_c: dict, gamma,

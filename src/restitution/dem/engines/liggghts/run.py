@@ -19,32 +19,15 @@ import subprocess
 import tempfile
 from pathlib import Path
 
-from ...engine import rebound_eps
+from ...engine import EngineProcess
 from ...extrapolate import eps_extrapolated
 from ...pair import Pair
 from .contact import LIGGGHTS_MODEL_TYPES
 
-__all__ = ["available", "liggghts_pair_style", "liggghts_eps_runs", "eps_runs", "liggghts_states", "liggghts_eps_extrapolated",
+__all__ = ["available", "liggghts_pair_style", "PROCESS", "liggghts_eps_runs", "eps_runs", "liggghts_states", "liggghts_eps_extrapolated",
            "liggghts_wall_eps_runs"]
 
 _MARK = "RESTITUTION-RESULT"
-
-
-def available() -> bool:
-    """Whether the ``liggghts`` binary is on PATH.
-
-    Returns
-    -------
-    bool
-        True where LIGGGHTS can be run; the tests that run it are skipped otherwise.
-
-    Examples
-    --------
-    >>> import shutil
-    >>> available() == (shutil.which("liggghts") is not None)
-    True
-    """
-    return shutil.which("liggghts") is not None
 
 
 def liggghts_pair_style(*, model: str, E: float, nu: float, e: float, limit_force: bool,
@@ -147,44 +130,15 @@ clear
 """
 
 
-def liggghts_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
-    """eps of each case (contact_lines, g, dt, t_run[, types]) in one LIGGGHTS process.
-
-    Parameters
-    ----------
-    pair : Pair
-        The two spheres.
-    cases : list of tuple
-        (contact_lines, g, dt, t_run) per run, optionally with the two spheres' atom types last.
-    timeout : float, optional
-        Seconds LIGGGHTS may take.
-
-    Returns
-    -------
-    list of float
-        LIGGGHTS' eps of each run, in order.
-
-    Raises
-    ------
-    RuntimeError
-        Where LIGGGHTS stops.
-    ArithmeticError
-        Where the spheres have not separated.
-
-    Examples
-    --------
-    >>> pair = Pair.spheres(0.0025, 0.0025, 2500.0)
-    >>> lines = liggghts_pair_style(model="hertz", E=5e6, nu=0.45, e=0.9, limit_force=False)
-    >>> [round(e, 2) for e in liggghts_eps_runs(pair, [(lines, 1.0, 3e-7, 1e-3)])]  # doctest: +SKIP
-    [0.9]
-    """
-    ends = [(rel, centres - pair.R1 - pair.R2) for rel, centres in liggghts_states(pair, cases, timeout)]
-    return rebound_eps(ends, [case[1] for case in cases], "LIGGGHTS")
+def _ends(pair: Pair, cases: list, timeout: float) -> list[tuple]:
+    return [(rel, centres - pair.R1 - pair.R2) for rel, centres in liggghts_states(pair, cases, timeout)]
 
 
-#: The runner form every engine's has (restitution.dem.engine.Engine.runner): LIGGGHTS' runs
-#: already take the cases as the form gives them
-eps_runs = liggghts_eps_runs
+#: How LIGGGHTS runs collisions (restitution.dem.engine.EngineProcess): its eps_runs is the runner
+#: form every engine's has (restitution.dem.engine.Engine.runner), LIGGGHTS' cases already in it
+PROCESS = EngineProcess("LIGGGHTS", "(contact_lines, g, dt, t_run[, types])", 1, _ends, program="liggghts")
+liggghts_eps_runs = eps_runs = PROCESS.eps_runs
+available = PROCESS.available
 
 
 def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
@@ -195,7 +149,8 @@ def liggghts_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tup
     Parameters
     ----------
     pair, cases, timeout
-        As :func:`liggghts_eps_runs` takes them.
+        The two spheres, the cases as :data:`PROCESS` describes them (``types``: the two
+        spheres' atom types when the contact lines define more), and the seconds LIGGGHTS may take.
 
     Returns
     -------

@@ -17,16 +17,15 @@ from __future__ import annotations
 
 import json
 import math
-import shutil
 import subprocess
 import tempfile
 from pathlib import Path
 
-from ...engine import rebound_eps
+from ...engine import EngineProcess
 from ...extrapolate import eps_extrapolated
 from ...pair import Pair
 
-__all__ = ["available", "yade_eps_runs", "eps_runs", "yade_states", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
+__all__ = ["available", "PROCESS", "yade_eps_runs", "eps_runs", "yade_states", "yade_eps_extrapolated", "viscel_material", "mindlin_material"]
 
 _MARK = "RESTITUTION-RESULT "
 
@@ -58,23 +57,6 @@ for material, ip2, law, g, dt, steps in CASES:
     out.append({{"rel": O.bodies[0].state.vel[0] - O.bodies[1].state.vel[0], "gap": gap}})
 print({mark!r} + json.dumps(out))
 """
-
-
-def available() -> bool:
-    """Whether the ``yade`` binary is on PATH.
-
-    Returns
-    -------
-    bool
-        True where Yade can be run (its Python is its own: the runs are a subprocess).
-
-    Examples
-    --------
-    >>> import shutil
-    >>> available() == (shutil.which("yade") is not None)
-    True
-    """
-    return shutil.which("yade") is not None
 
 
 def viscel_material(pair: Pair, *, tc=None, en=None, kn=None, cn=None) -> tuple[str, str, str]:
@@ -132,38 +114,15 @@ def mindlin_material(pair: Pair, *, E: float, nu: float, en=None, betan=None) ->
             f"Ip2_FrictMat_FrictMat_MindlinPhys({damping})", "Law2_ScGeom_MindlinPhys_Mindlin()")
 
 
-def yade_eps_runs(pair: Pair, cases: list, timeout: float = 600.0) -> list[float]:
-    """eps of each case (material, ip2, law, g, dt, t_run) in one Yade process.
+def _ends(pair: Pair, cases: list, timeout: float) -> list[tuple]:
+    return [(rel, centres - pair.R1 - pair.R2) for rel, centres in yade_states(pair, cases, timeout)]
 
-    Parameters
-    ----------
-    pair : Pair
-        The two spheres.
-    cases : list of tuple
-        (material, ip2, law, g, dt, t_run) per run (the first three from :func:`viscel_material`
-        or :func:`mindlin_material`).
-    timeout : float, optional
-        Seconds Yade may take.
 
-    Returns
-    -------
-    list of float
-        Yade's eps of each run, in order.
-
-    Raises
-    ------
-    ArithmeticError
-        Where the spheres have not separated by t_run.
-
-    Examples
-    --------
-    >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
-    >>> setting = viscel_material(pair, tc=1e-4, en=0.5)
-    >>> [round(e, 3) for e in yade_eps_runs(pair, [(*setting, 1.0, 5e-8, 1.5e-4)])]  # doctest: +SKIP
-    [0.55]
-    """
-    ends = [(rel, centres - pair.R1 - pair.R2) for rel, centres in yade_states(pair, cases, timeout)]
-    return rebound_eps(ends, [case[3] for case in cases], "Yade")
+#: How Yade runs collisions (restitution.dem.engine.EngineProcess); the material, ip2 and law of a
+#: case from :func:`viscel_material` or :func:`mindlin_material`
+PROCESS = EngineProcess("Yade", "(material, ip2, law, g, dt, t_run)", 3, _ends, program="yade")
+yade_eps_runs = PROCESS.eps_runs
+available = PROCESS.available
 
 
 def eps_runs(pair: Pair, cases: list) -> list[float]:
@@ -197,7 +156,7 @@ def yade_states(pair: Pair, cases: list, timeout: float = 600.0) -> list[tuple]:
     Parameters
     ----------
     pair, cases, timeout
-        As :func:`yade_eps_runs` takes them.
+        The two spheres, the cases as :data:`PROCESS` describes them, and the seconds Yade may take.
 
     Returns
     -------
