@@ -55,12 +55,12 @@ neigh_modify delay 0
 
 def lammps_spheres(*spheres) -> str:
     """A LAMMPS deck's start in SI units: one sphere of each type, type k's (diameter, density) the
-    k-th of ``spheres``, 0.5 apart on x, and pair_style granular."""
+    k-th of ``spheres``, 0.5 apart on x, an integrator (a run moves them) and pair_style granular."""
     lines = ["units si", "atom_style sphere", "comm_modify vel yes", "region box block -1 1 -1 1 -1 1",
              f"create_box {len(spheres)} box"]
     lines += [f"create_atoms {k} single {0.5 * (k - 1):g} 0 0" for k in range(1, len(spheres) + 1)]
     lines += [f"set type {k} diameter {d:g} density {rho:g}" for k, (d, rho) in enumerate(spheres, 1)]
-    return "\n".join([*lines, "pair_style granular"]) + "\n"
+    return "\n".join([*lines, "fix integrate all nve/sphere", "pair_style granular"]) + "\n"
 
 
 def outside_file(tmp_path: Path, absolute: bool) -> tuple[Path, Path, str]:

@@ -97,9 +97,11 @@ def deck_cases(draw):
 
 def _lammps_head(n: int, types: dict) -> list[str]:
     """A LAMMPS deck's lines up to its contact lines, ones LAMMPS runs: the box, LAMMPS' ghost
-    velocities (its granular pairs need them), one atom of each type (_atoms)."""
+    velocities (its granular pairs need them), one atom of each type (_atoms), an integrator (a run
+    without one moves no atom, and its deck is refused)."""
     return (["units si", "atom_style sphere", "comm_modify vel yes", "boundary f f f",
-             "region box block -1 1 -1 1 -1 1", f"create_box {n} box"] + _atoms(types))
+             "region box block -1 1 -1 1 -1 1", f"create_box {n} box"] + _atoms(types)
+            + ["fix integrate all nve/sphere"])
 
 
 def _atoms(types: dict) -> list[str]:
@@ -177,7 +179,7 @@ def liggghts_deck_cases(draw):
             lines += _wall_lines(draw, types, f"fix floor GROUP wall/gran {models} mesh n_meshes 1 meshes mesh1{own}")
     lines += [f"fix pts{t} all particletemplate/sphere {_TEMPLATE_SEEDS[t - 1]} atom_type {t} density constant "
               f"{m['density']:.8g} radius constant {m['radius']:.8g}" for t, m in types.items()]
-    return "\n".join(lines + ["run 1"]) + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()}
+    return "\n".join(lines + ["fix integr all nve/sphere", "run 1"]) + "\n", [g, 10.0 * g], {t: {k: float(f"{v:.8g}") for k, v in m.items()}
                                                        for t, m in types.items()}
 
 

@@ -194,8 +194,8 @@ def _engine_lines(text: str, code: str, wall: bool = False) -> str:
     """The deck's lines an engine run takes. LAMMPS: its variables and pair_coeff lines (the runner
     writes the pair style), for a wall also the pair style, the groups and the wall's line.
     LIGGGHTS: the box, the materials and the pair style, never the wall or its mesh (_wall_runner
-    passes the deck's own wall lines apart), nor the deck's atoms and run; the particle templates and
-    the atoms' set lines only gave radii."""
+    passes the deck's own wall lines apart), nor the deck's atoms, integrator and run; the particle
+    templates and the atoms' set lines only gave radii."""
     body = text.splitlines()
     if code == "lammps":
         return "\n".join(ln for ln in body if ln.startswith(("variable", "pair_", "group", "fix floor") if wall
@@ -203,7 +203,7 @@ def _engine_lines(text: str, code: str, wall: bool = False) -> str:
     start = next(k for k, ln in enumerate(body) if ln.startswith("create_box"))
     return "\n".join([body[start]] + [ln for ln in body[start + 1:]
                                       if not ln.startswith(("fix pts", "fix floor", "fix mesh1", "group",
-                                                            "create_atoms", "set type", "run"))]
+                                                            "create_atoms", "set type", "run", "fix integr"))]
                      + [ln for ln in body[:start] if ln.startswith("variable")])
 
 

@@ -117,3 +117,18 @@ def test_a_calibration_does_not_depend_on_what_the_cache_holds(empty_cache, end)
     assert any(empty_cache.iterdir()), "nothing was cached: the test would test nothing"
     after = calibrate("3/2", "1/2", D1=2.0e5, eps=0.7, g=0.5, end=end)
     assert after.D2 == before.D2 and after.eps == before.eps
+
+
+def test_the_root_finder_raises_without_a_bracket_or_without_convergence(monkeypatch):
+    """Never a point that is not the root: same signs at both ends, a value that is not finite, or
+    the step cap reached each raise."""
+    import importlib
+    module = importlib.import_module("restitution.dem.calibrate")
+    with pytest.raises(ArithmeticError, match="no root bracketed"):
+        module._root(lambda x: x * x + 1.0, -1.0, 1.0, 1e-12)
+    with pytest.raises(ArithmeticError, match="no root bracketed"):
+        module._root(lambda x: math.nan, -1.0, 1.0, 1e-12)
+    assert module._root(lambda x: x ** 3 - 2.0, 0.0, 2.0, 1e-13) == pytest.approx(2.0 ** (1 / 3), abs=1e-12)
+    monkeypatch.setattr(module, "_ROOT_STEPS", 3)
+    with pytest.raises(ArithmeticError, match="not found"):
+        module._root(lambda x: x ** 3 - 2.0, 0.0, 2.0, 1e-13)

@@ -34,6 +34,7 @@ create_atoms 1 single 0 0 0
 create_atoms 2 single 0.5 0 0
 create_atoms 3 single -0.5 0 0
 set type 1*3 diameter 0.02 density 2500
+fix integrate all nve/sphere
 pair_style granular
 """
 
@@ -123,6 +124,7 @@ set type 1*2 diameter 0.02 density 2500
 create_atoms 2 single 0.5 0 0
 pair_style granular
 pair_coeff * * hertz 1e5 0.5 {T}
+fix integrate all nve/sphere
 run 1
 """
     p = pairs(tmp_path, text)
@@ -262,7 +264,7 @@ def test_a_file_outside_the_deck_folder_named_by_a_variable_is_not_run(tmp_path,
                             "include ${f}\nrun 1\n")
     assert not target.exists() and sorted(tmp_path.rglob("*")) == sorted(before + [folder / "in.deck"])
     assert status == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
-    assert "line 13 (include" in err and "outside the deck's folder" in err, err
+    assert "line 14 (include" in err and "outside the deck's folder" in err, err
 
 
 @pytest.mark.parametrize("how", ["name", "folder"])
@@ -274,6 +276,38 @@ def test_a_file_inside_the_deck_folder_named_by_a_variable_is_run(tmp_path, how)
     p = pairs(tmp_path, HEAD + f"variable f string {name}\ninclude ${{f}}\nrun 1\n", files={"part.in": part})
     assert not target.exists()
     assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(2000, 1.0), rel=1e-10)
+
+
+def test_echoed_commands_are_the_lines_they_came_from_never_another_file_or_the_audits_own(tmp_path):
+    """Field test: the audit's marker runs "timer timeout off" and "run 0 post no"; matched by text
+    they were another file's line 1 (not understood) and more runs of the deck's own line 15. Each
+    echoed command is known by its line's tag; the file a variable names, by its own lines only."""
+    files = {"part.in": f'pair_coeff * * hooke 2000 1 {T}\nif "1 > 0" then "timestep 2e-6"\n',
+             "other.in": "timer timeout off\nrun 0 post no\npair_coeff * * hooke 9000 1 " + T + "\n"}
+    status, out, err = deck(tmp_path, HEAD + "variable f string part.in\ninclude ${f}\nfix 1 all nve/sphere\n"
+                                             "run 0 post no\nrun 10\n", files=files)
+    assert status == 0 and "other.in" not in err and "not understood" not in err, err
+    res = json.loads(out)
+    assert [(r["line"], r["text"]) for r in res["stages"][0]["runs"]] == [(15, "run 0 post no"), (16, "run 10")]
+    row = {tuple(p["types"]): p for p in res["pairs"]}[(1, 1)]
+    assert row["dt"] == 2e-6 and row["eps"][2] == pytest.approx(eps_hooke(2000, 1.0), rel=1e-10)
+
+
+def test_commands_that_cannot_change_a_contact_are_accepted_without_a_word(tmp_path):
+    """dimension 2: LAMMPS keeps a sphere's mass and its granular forces (a head-on pair r 0.005 and
+    0.01, hertz/material viscoelastic, g 0.1, dt 2e-7: eps 0.86088418 in 2d and 3d alike); a
+    fix_modify of what a fix reports. A fix_modify of anything else is still named."""
+    text = HEAD.replace("units si", "units si\ndimension 2").replace("region box block -1 1 -1 1 -1 1",
+                                                                     "region box block -1 1 -1 1 -0.1 0.1")
+    text = text.replace("comm_modify vel yes", "comm_modify vel yes\nboundary f f p")
+    text += f"pair_coeff * * hooke 1000 1 {T}\nfix 1 all nve/sphere\nfix 2 all enforce2d\n"
+    text += "fix w all gravity 9.81 vector 0 -1 0\n"
+    status, out, err = deck(tmp_path, text + "fix_modify w energy yes virial no\nrun 1\n")
+    assert status == 0 and "not understood" not in err, err
+    p = {tuple(r["types"]): r for r in json.loads(out)["pairs"]}
+    assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
+    status, out, err = deck(tmp_path, text + "fix_modify w respa 1\nrun 1\n")
+    assert status == 0 and "line 18 not understood: fix_modify w respa 1" in err, err
 
 
 def test_without_user_namespaces_a_file_named_by_a_variable_is_not_run(tmp_path, monkeypatch):
@@ -415,6 +449,7 @@ set type 1 diameter 0.02 density 2500
 set atom 2 diameter 0.04 density 2500
 pair_style granular
 pair_coeff * * hooke 1000 50 {T}
+fix integrate all nve/sphere
 run 1
 """
 

@@ -40,6 +40,7 @@ fix m4 all property/global coefficientFriction peratomtypepair 1 0.5
 TAIL = """timestep 0.00001
 create_atoms 1 single 0 0 0.05
 set type 1 diameter 0.01 density 2500
+fix integr all nve/sphere
 run 1
 """
 PAIR = Pair.spheres(0.005, 0.005, 2500.0, 2500.0)

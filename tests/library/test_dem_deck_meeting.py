@@ -116,6 +116,30 @@ def test_a_sphere_no_fix_integrates_is_audited_as_held_and_lammps_agrees(tmp_pat
     assert abs(said - 0.8608847196) > 1e-3            # the free pair's eps, printed before
 
 
+def test_a_deck_whose_runs_integrate_no_atom_is_refused_in_one_line(tmp_path):
+    """Field test f2: LAMMPS runs it and moves no atom ("No fixes with time integration, atoms won't
+    move"; measured: a sphere given 1 m/s sits at its place after 0.2 s), so no contact happens."""
+    status, res, err = audit(tmp_path, TWO + "timestep 1e-6\nrun 100\n")
+    assert status == 2 and err.count("\n") == 1 and "no fix integrates any atom" in err, err
+
+
+def test_a_run_before_the_integrator_is_named_and_the_later_run_audited(tmp_path):
+    status, res, err = audit(tmp_path, TWO + "run 0\nfix 1 all nve/sphere\nrun 10\n")
+    assert status == 0, err
+    first, last = res["stages"]
+    assert first["pairs"] == [] and "types 1 2: neither sphere is moved" in err
+    row = pairs(last)[(1, 2)]
+    assert row["eps"][row["speeds"].index(0.1)] == pytest.approx(0.8608847196, rel=1e-9)
+
+
+def test_a_deck_without_a_run_is_audited_as_free_spheres(tmp_path):
+    """Settings written to be audited, not run: the pairs as an integrator would move them."""
+    status, res, err = audit(tmp_path, TWO)
+    assert status == 0, err
+    row = pairs(res)[(1, 2)]
+    assert row["eps"][row["speeds"].index(0.1)] == pytest.approx(0.8608847196, rel=1e-9)
+
+
 def test_a_rigid_body_of_spheres_is_refused_in_one_line(tmp_path):
     status, res, err = audit(tmp_path, TWO + "create_atoms 2 single 0.13 0 0\nset type 2 diameter 0.02 density 2500\n"
                                              "group mob type 1\ngroup clump type 2\nfix 1 mob nve/sphere\n"

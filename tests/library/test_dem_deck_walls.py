@@ -78,7 +78,8 @@ def test_flat_walls_are_audited_for_their_groups_types_the_others_named(tmp_path
     assert set(named) == {"w4", "w6", "w7"}
     assert "zcylinder" in named["w4"]
     assert "not defined by type" in named["w6"]
-    assert "region wall" in named["w7"]
+    assert "region wall" in named["w7"] and named["w7"].endswith("the spheres it acts on: every sphere")
+    assert named["w4"].endswith("the spheres it acts on: types 1, 2")
     assert err.count("\n") == 3 and all(f"fix w{k}" in err for k in (4, 6, 7))
     # the older model: its pair style's law, the sphere's own mass (hooke: D1 = Kn/m, D2 = gamma_n)
     w3 = [w for w in res["walls"] if w["wall"] == "w3"]
@@ -181,7 +182,8 @@ def test_liggghts_walls_take_the_wall_types_materials(tmp_path):
     for w in res["walls"]:
         assert all(abs(e - w["typed_e"]) < 1e-9 for e in w["eps"])
     assert {row["text"].split()[1]: row["why"] for row in res["unknown_lines"]} == {
-        "drum": "a zcylinder wall (only planes are audited): the wall's contacts are not audited"}
+        "drum": "a zcylinder wall (only planes are audited): the wall's contacts are not audited; the spheres it "
+                "acts on: types 1, 2"}
     assert "zcylinder" in err
 
 
@@ -334,7 +336,8 @@ def test_a_group_that_holds_no_atom_or_unknown_ones_names_its_wall(tmp_path, bef
     any type. Either way the wall is named, not audited; the group defined after atoms exist is.
     (The run comes after the wall: a wall defined after the deck's last run acts in no run.)"""
     head = LAMMPS_DECK.split("create_atoms")[0]
-    text = head + "\n".join([before, "group g type 1", after, DASHPOT_WALL.replace(" all ", " g "), "run 1000"]) + "\n"
+    text = head + "\n".join([before, "group g type 1", after, DASHPOT_WALL.replace(" all ", " g "),
+                             "fix integrate all nve/sphere", "run 1000"]) + "\n"
     res, err = audit(tmp_path, text, 1.0)
     assert res["walls"] == [] and [why in row["why"] for row in res["unknown_lines"]] == [True], res["unknown_lines"]
     err = _without_empty_types(err)

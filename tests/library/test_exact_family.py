@@ -227,3 +227,17 @@ def test_typed_e_table_hertz_and_hooke_rows_agree_exactly():
         c = TYPED_E_CODES["LAMMPS hertz + damping tsuji (default)"](r["e"])
         ref = reference_collide(Problem.of(c.alpha, c.gamma, c.end), c.omega(1.0), rtol=RTOL)
         assert abs(r["LAMMPS hertz + damping tsuji (default)"] / ref.eps - 1) <= ref.error_bound + 1e-14
+
+
+def test_the_contact_time_quadrature_raises_where_it_cannot_meet_its_tolerance():
+    """A step in the integrand keeps the two Gauss rules apart at every halving of the interval that
+    holds it: the cap of halvings raises instead of returning the last, unresolved value."""
+    from restitution.core.collision import IntegrationError
+
+    def step(x):
+        return 1.0 if x < 1.0 / 3.0 else 2.0
+    with pytest.raises(IntegrationError, match="did not reach rtol"):
+        exact_family._gauss_adaptive(step, 0.0, 1.0, exact_family.TIME_RTOL)
+    # a smooth integrand still meets it: the integral of e^x over [0, 1]
+    assert exact_family._gauss_adaptive(math.exp, 0.0, 1.0, exact_family.TIME_RTOL) == pytest.approx(
+        math.e - 1.0, rel=1e-14)

@@ -52,7 +52,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from .collision import UnresolvedError
+from .collision import IntegrationError, UnresolvedError
 from .sticking import StickError, stick_bound, stick_reason
 from .dashpot import contact_times, dashpot_collision
 from .errors import ParameterError, require_positive_finite
@@ -337,13 +337,24 @@ def _gauss(f, lo: float, hi: float, n: int) -> float:
     return half * math.fsum(w * f(mid + half * x) for x, w in zip(nodes, weights))
 
 
+#: Halvings of an interval before :func:`_gauss_adaptive` gives up (2^-40 of it: far below any
+#: smooth integrand's need, so reaching it means the integrand is not smooth there)
+_MAX_HALVINGS = 40
+
+
 def _gauss_adaptive(f, lo: float, hi: float, rtol: float, depth: int = 0) -> float:
     """The integral of a smooth positive f over [lo, hi]: Gauss-Legendre of 24 and 48 points, the
     interval halved where they differ by more than rtol of the larger (the 24-point rule's error;
-    the 48-point one's is far below). Positive f: each half's relative error bounds the whole's."""
+    the 48-point one's is far below). Positive f: each half's relative error bounds the whole's.
+    An interval still unresolved after _MAX_HALVINGS halvings raises IntegrationError: a time
+    stated to TIME_RTOL must meet it, never return what it reached there."""
     coarse, fine = _gauss(f, lo, hi, 24), _gauss(f, lo, hi, 48)
-    if abs(fine - coarse) <= rtol * abs(fine) or depth >= 40:
+    if abs(fine - coarse) <= rtol * abs(fine):
         return fine
+    if depth >= _MAX_HALVINGS:
+        raise IntegrationError(f"the contact time's quadrature did not reach rtol {rtol:g} on [{lo!r}, {hi!r}] "
+                               f"after {_MAX_HALVINGS} halvings (its two rules differ by "
+                               f"{abs(fine - coarse) / abs(fine) if fine else math.inf:.3g})")
     mid = 0.5 * (lo + hi)
     return _gauss_adaptive(f, lo, mid, rtol, depth + 1) + _gauss_adaptive(f, mid, hi, rtol, depth + 1)
 

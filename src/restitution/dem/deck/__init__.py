@@ -26,7 +26,9 @@ Tangential, rolling and twisting models take no part in a head-on collision and 
 Which spheres meet, and how they move, is :mod:`restitution.dem.deck.meeting`'s: a pair the
 engine's neighbour list leaves out (``neigh_modify exclude``, bonded atoms) is named, not audited;
 where one sphere of a pair is moved by no integrator (or by ``fix move linear``), the pair's eps is
-the other sphere's motion under the engine's force; ``fix rigid`` on spheres is refused.
+the other sphere's motion under the engine's force; ``fix rigid`` on spheres is refused, and so is
+a deck whose runs integrate no atom (the engine moves none: no contact happens). A wall not
+audited names the sphere types it acts on.
 
 The deck's engine interprets it (:func:`engine_of` tells which): LAMMPS for a LAMMPS deck (its
 Python module, runs skipped), the ``liggghts`` binary for a LIGGGHTS deck (each run one step), both
@@ -113,20 +115,29 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
     return sorted(t for t in held if 1 <= t <= deck.ntypes)
 
 
-def _wall_rows(deck: Deck, speeds) -> tuple[list, list]:
+def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
     """For every flat fix wall/gran and every type it acts on, the eps of that type's sphere
-    hitting it head-on; and the walls not audited, each with its reason."""
+    hitting it head-on; and the walls not audited, each with its reason (``ran``: the settings are
+    a run's, :func:`restitution.dem.deck.meeting.motion`)."""
     rows, unknown = [], []
     parse = DIALECTS[deck.code].wall
     for loc, words, types in deck.walls:
+        said = len(unknown)
         surfaces = parse(deck, loc, words, unknown)
-        if surfaces is None or (types := _wall_types(deck, types, loc, words, unknown)) is None:
+        if surfaces is None:
+            # which sphere types meet the wall not audited, where its group says
+            held = [t for t in _wall_types(deck, types, loc, words, []) or [] if not _empty(deck, t)]
+            unknown[said:] = [(f, n, text, f"{why}; the spheres it acts on: type{'s' if len(held) > 1 else ''} "
+                                           f"{', '.join(map(str, held))}" if held else why)
+                              for f, n, text, why in unknown[said:]]
+            continue
+        if (types := _wall_types(deck, types, loc, words, unknown)) is None:
             continue
         for mesh, contact_of, wall_type in surfaces:
             for t in types:
                 if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
                     continue
-                kind, why = motion(deck, t)
+                kind, why = motion(deck, t, ran)
                 if kind != "free":
                     unknown.append((*loc, " ".join(words), f"type {t}: {why}: its contact with the wall is not "
                                                            "audited"))
@@ -433,10 +444,17 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         (source, n), line = deck.stages[-1][0][-1]
         unknown.append((source, n, line, "the contact settings change after this, the deck's last run: no run uses "
                                          "the later ones, not audited"))
+    if deck.stages and not any(snap.movers for _, snap in stages):
+        # the engine's runs move no atom: no two spheres ever meet, and no eps is theirs
+        (source, n), line = stages[0][0][0]
+        raise DeckError(place((source, n)), line, "no fix integrates any atom in the deck's runs (LAMMPS: \"No fixes "
+                                                  "with time integration, atoms won't move\"): no contact ever "
+                                                  "happens, so there is no eps to audit; an integrator (fix nve/sphere) "
+                                                  "makes one")
     audited = []
     for runs, snap in stages:
         try:
-            pairs, walls, not_audited = _audit_stage(snap, speeds)
+            pairs, walls, not_audited = _audit_stage(snap, speeds, bool(runs))
         except DeckError as why:
             if len(stages) > 1:          # say which run LAMMPS would stop at
                 why.args = (f"{why.args[0]} (the run at {place(runs[0][0])})",)
@@ -449,8 +467,9 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck)}
 
 
-def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
-    """(pair rows, wall rows, walls not audited) of the deck's settings at one stage."""
+def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]:
+    """(pair rows, wall rows, walls not audited) of the deck's settings at one stage (``ran``: a
+    run's, not the end of a deck without one)."""
     if deck.ntypes <= 0:
         raise DeckError("create_box", None, "the deck has no create_box or read_data: the number of types is "
                                             "unknown")
@@ -465,7 +484,7 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
             if (why := excluded(deck, i, j)) is not None:
                 not_audited.append(why)
                 continue
-            moves = [motion(deck, t) for t in (i, j)]
+            moves = [motion(deck, t, ran) for t in (i, j)]
             for kind, why in moves:     # a moving fix's group not typed: said once
                 said = (*deck.style_line[0], deck.style_line[1], why)
                 if kind == "free" and why and said not in not_audited:
@@ -491,7 +510,7 @@ def _audit_stage(deck: Deck, speeds: list) -> tuple[list, list, list]:
                                                   lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k))},
                         at)
             pairs += _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row, speeds)))
-    walls, walls_not = _wall_rows(deck, speeds)
+    walls, walls_not = _wall_rows(deck, speeds, ran)
     return pairs, walls, not_audited + walls_not
 
 

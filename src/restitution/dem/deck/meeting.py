@@ -22,7 +22,7 @@ __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded",
 #: Fix styles that move the atoms of their group by integrating the forces on them
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
                          "nph", "nve/asphere", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk", "nvt/sllod",
-                         "nve/sphere/limit"})
+                         "nve/sphere/limit", "nve/bpm/sphere", "multisphere", "nve/superquadric"})
 #: Fix styles that move the atoms of their group: the integrators, and fix move (a prescribed motion)
 MOVERS = INTEGRATORS | {"move"}
 #: neigh_modify exclude styles and their number of arguments
@@ -120,14 +120,17 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
     return None
 
 
-def motion(deck: Deck, t: int) -> tuple[str, str]:
+def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
     """How the engine moves the spheres of type t: ("free", "") where an integrator moves them all
     (("free", why) where a moving fix's group cannot be typed, which why says),
     ("held", why) where none moves them or ``fix move linear`` keeps their velocity, ("unknown",
-    why) where the audit cannot tell, or they move otherwise. A deck with no moving fix at all
-    gives "free": its runs make no collision, and its pairs are audited as an integrator would
-    move them (the decks written to be audited, not run, are such)."""
+    why) where the audit cannot tell, or they move otherwise. A run with no moving fix at all moves
+    no atom (LAMMPS says so: "No fixes with time integration, atoms won't move"): "held". Settings
+    read where the deck has no run (``ran`` False: the decks written to be audited, not run) give
+    "free": their pairs are audited as an integrator would move them."""
     if not deck.movers:
+        if ran:
+            return "held", "no fix integrates any atom in this run"
         return "free", ""
     integrated, moved = [], []
     for fix, (loc, line, group, style) in deck.movers.items():

@@ -37,13 +37,19 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "echo", "label", "shell", "clear", "create_atoms", "displace_atoms",
                "write_data", "write_dump", "reset_timestep", "run_style", "min_style", "minimize", "balance",
                "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
-               "soft_particles", "modify_timing", "compute_modify", "comm_style"}
+               "soft_particles", "modify_timing", "compute_modify", "comm_style", "dimension"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "deposit",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "enforce2d", "move",
                      "ave/time", "ave/atom", "print", "move/mesh",
                      "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
                      "nve/noforce"}
+#: ``dimension`` is among them: in 2d LAMMPS gives a sphere's mass still (density/disc, which sets a
+#: disc's, is the engine's and read back with the atoms), and its granular forces are the same (a
+#: head-on pair r 0.005 and 0.01, hertz/material viscoelastic, g 0.1, dt 2e-7: eps 0.86088418 in 2d
+#: and 3d alike, the masses equal to the last digit)
+#: fix_modify keywords that change what a fix reports (its energy, its virial), never its force
+_FIX_MODIFY_ACCOUNTING = frozenset({"energy", "virial"})
 #: Data-file sections with no bearing on a head-on contact
 _DATA_IRRELEVANT = {"Velocities", "Bonds", "Angles", "Dihedrals", "Impropers", "Bond Coeffs", "Angle Coeffs",
                     "Dihedral Coeffs", "Improper Coeffs"}
@@ -235,8 +241,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     elif cmd == "unfix" and len(words) >= 2:
         deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
         deck.movers.pop(words[1], None)
-    elif cmd == "dimension" and words[1:] == ["3"]:
-        pass                             # the default
+    elif cmd == "fix_modify" and _accounting(words):
+        pass
     elif cmd == "neigh_modify":
         neigh_modify(deck, words, loc, line)
     elif cmd == "special_bonds":
@@ -249,6 +255,12 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         setattr(deck, cmd.split("_")[0], words[1] == "yes")
     elif cmd not in _IRRELEVANT:
         deck.unknown.append((*loc, line, "not understood"))
+
+
+def _accounting(words: list) -> bool:
+    """Whether a ``fix_modify ID keyword value ...`` only sets what the fix reports."""
+    pairs = words[2:]
+    return bool(pairs) and len(pairs) % 2 == 0 and all(k in _FIX_MODIFY_ACCOUNTING for k in pairs[::2])
 
 
 #: LAMMPS' hybrid pair styles: each pair's force from the sub-style its pair_coeff names (hybrid),
@@ -601,7 +613,14 @@ def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
 
 
 def _region_wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
-    deck.unknown.append((*loc, line, "a region wall (any shape): its contacts are not audited"))
+    """fix ID group wall/gran/region: named, not audited (its curvature and its model are not
+    read), with the types of the spheres it acts on where its group tells them."""
+    group = words[2]
+    held = sorted(deck.groups.get(group) or ()) if group != "all" else ()
+    on = "every sphere" if group == "all" else f"group {group}" + (
+        f" (type{'s' if len(held) > 1 else ''} {', '.join(map(str, held))})" if held else "")
+    deck.unknown.append((*loc, line, f"a region wall (any shape): its contacts are not audited; the spheres it "
+                                     f"acts on: {on}"))
 
 
 #: fix style -> (its least number of words, what it does to the deck): the engines' alike, then each

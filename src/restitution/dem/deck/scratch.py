@@ -5,12 +5,19 @@ a stage marker (an ``include`` of a small file that runs it and then writes the 
 Line numbers are kept (a rewritten command stays on its first line, its continuation lines become
 blank), so ``jump``/``label`` and the refusals' line numbers are the deck's own. A command whose
 name comes from a variable cannot be checked before it runs: such a deck is refused.
+
+Every command of the deck and of the files it names as written gets a comment that says where it
+stands (``#restitution-NONCE@K``, K an index into :attr:`Scratch.tags`); the engines echo a line as
+they read it, comment and all, so the audit tells each echoed command's file and line by its tag,
+never by its text (two files, or a marker of the audit's own, may hold the same text). The
+markers' lines are tagged as the audit's.
 """
 
 from __future__ import annotations
 
 import os
 import re
+import secrets
 import shutil
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -18,7 +25,8 @@ from pathlib import Path
 from ..dialect.state import DeckError
 from ..deck_text import TRIPLE, segments as segments_of, strip_comment
 
-__all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised"]
+__all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
+           "AUDIT"]
 
 #: The no-op the k-th skipped command becomes (both engines have label; nothing jumps to it): its
 #: echo tells that the deck reached it
@@ -36,6 +44,8 @@ SKIPPED_COMMANDS = frozenset({
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
                          "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
                          "couple/", "ave/euler", "dump")
+#: The tag of the audit's own lines (its markers'): never the deck's
+AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
 RUN_COMMANDS = ("run", "minimize")
 #: A deck's folder copied whole; a larger one is refused
@@ -52,7 +62,13 @@ class Scratch:
     ``confined`` whether the engine will see nothing outside the scratch directory (else an
     include or jump of a file named by a variable is made ``DYNAMIC`` too);
     indexed by the number in their file name; ``lines`` the normalised text of every command
-    of the copied files (and of each command quoted in an ``if``) -> (file, line) of its first."""
+    of the copied files (and of each command quoted in an ``if``) -> (file, line) of its first;
+    ``tag`` the comment that marks a line's place (``tag + K``, K an index into ``tags``, the
+    (file, line) of each tagged command, or ``tag + AUDIT``); ``files`` each copied file's own
+    map of ``lines`` (a file none names as written is read by its text, once an include or jump
+    of it ran); ``tagged`` the files whose commands carry their tag; ``quoted`` the commands an
+    ``if`` or a run's ``every`` runs, by the (file, line) of that command (echoed without a tag);
+    ``origin`` the deck's own folder, which the confined engine sees as the copy."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -60,6 +76,12 @@ class Scratch:
     stages: list = field(default_factory=list)
     lines: dict = field(default_factory=dict)
     confined: bool = True
+    tag: str = "#restitution@"
+    tags: list = field(default_factory=list)
+    files: dict = field(default_factory=dict)
+    tagged: set = field(default_factory=set)
+    quoted: dict = field(default_factory=dict)
+    origin: Path | None = None
 
 
 def normalised(text: str) -> str:
@@ -117,8 +139,8 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     ...     p = pathlib.Path(d, "in.x"); _ = p.write_text("shell touch f\\nrun 10\\n")
     ...     with tempfile.TemporaryDirectory() as w:
     ...         s = scratch_copy(p, w, lambda k, run: run + "\\n")
-    ...         s.deck.read_text().splitlines()[0], s.skipped
-    ('label restitution_skipped_0', [('shell', (None, 1))])
+    ...         s.deck.read_text().splitlines()[0].replace(s.tag, "#TAG@"), s.skipped
+    ('label restitution_skipped_0 #TAG@0', [('shell', (None, 1))])
     """
     src = Path(deck).resolve()
     root = Path(where)
@@ -134,7 +156,9 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
                                                      "reads in a folder of their own")
     copy = root / "deck"
     shutil.copytree(src.parent, copy, symlinks=True)
-    scratch = Scratch(root, copy / src.name, confined=confined)
+    # a nonce: a deck cannot write a tag that passes for another line's
+    scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
+                      origin=src.parent)
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(copy) for name in sorted(names)
                               if Path(base, name) != scratch.deck]
@@ -142,6 +166,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     # text of any other file (an old log, say) is not: only the deck and the files it names by
     # include or jump (every file where such a name comes from a variable) are mapped
     named = _named_files(scratch.deck)
+    literal = _named_files(scratch.deck, literal=True)
     for p in files:
         if p.is_symlink() or p.stat().st_size > _MAX_TEXT_BYTES:
             continue
@@ -151,18 +176,24 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         except (UnicodeDecodeError, OSError):
             continue
         label = None if p == scratch.deck else str(p.relative_to(copy))
+        # a file named as written is a script: its lines get their tags; any other (a data file,
+        # or a script named by a variable) is left as it is, its lines known by their text
+        if p == scratch.deck or p.name in literal:
+            scratch.tagged.add(label)
         lines = dict(scratch.lines)
         new = _rewritten(text, label, scratch, marker)
         if not mapped:
             scratch.lines = lines
+            scratch.files.pop(label, None)
         if new != text:
             p.write_text(new, encoding="utf-8")
     return scratch
 
 
-def _named_files(deck: Path) -> set | None:
+def _named_files(deck: Path, literal: bool = False) -> set | None:
     """The names of the files the deck's include and jump lines name (None where one comes from a
-    variable); files named in those files too, by the same rule, are found as their names repeat."""
+    variable; with ``literal``, those named as written, the others passed over); files named in
+    those files too, by the same rule, are found as their names repeat."""
     names: set = set()
     todo = [deck]
     while todo:
@@ -174,6 +205,8 @@ def _named_files(deck: Path) -> set | None:
             words = normalised(line).split()
             if len(words) >= 2 and words[0] in ("include", "jump") and words[1] != "SELF":
                 if "$" in words[1]:
+                    if literal:
+                        continue
                     return None
                 name = Path(words[1]).name
                 if name not in names:
@@ -182,6 +215,8 @@ def _named_files(deck: Path) -> set | None:
             elif "include" in words or "jump" in words:
                 for k, w in enumerate(words[:-1]):
                     if w.strip("\"'") in ("include", "jump") and "$" in words[k + 1]:
+                        if literal:
+                            continue
                         return None
                     if w.strip("\"'") in ("include", "jump") and words[k + 1].strip("\"'") != "SELF":
                         names.add(Path(words[k + 1].strip("\"'")).name)
@@ -209,13 +244,32 @@ def _rewritten(text: str, label, scratch: Scratch, marker) -> str:
         new = _safe(command, loc, scratch, marker)
         key = normalised(command)
         if key:
-            scratch.lines.setdefault(key, loc)
+            _known(scratch, key, loc)
+        last = n
         if new is not None:
-            scratch.lines.setdefault(normalised(new), loc)
+            _known(scratch, normalised(new), loc)
             out[start] = new.replace("\n", " ")
             for k in range(start + 1, n + 1):
                 out[k] = ""
+            last = start
+        if key and label in scratch.tagged:
+            # after the command's last line: a comment ends it, which the engine echoes as read
+            scratch.tags.append(loc)
+            out[last] = f"{out[last]} {scratch.tag}{len(scratch.tags) - 1}"
     return "\n".join(out)
+
+
+def _known(scratch: Scratch, key: str, loc) -> None:
+    """The command ``key`` known as one of line ``loc``: in the whole copy's map (its first) and in
+    its file's."""
+    scratch.lines.setdefault(key, loc)
+    scratch.files.setdefault(loc[0], {}).setdefault(key, loc)
+
+
+def _audit_lines(scratch: Scratch, text: str) -> str:
+    """A marker's text with each line tagged as the audit's own."""
+    return "".join(f"{line} {scratch.tag}{AUDIT}\n" if line.strip() else "\n" for line in text.split("\n")[:-1]) \
+        + text.split("\n")[-1]
 
 
 def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
@@ -235,7 +289,7 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word == "quit":
         path = scratch.root / f"quit_{sum(1 for _ in scratch.root.glob('quit_*'))}"
-        path.write_text(marker(None, key))
+        path.write_text(_audit_lines(scratch, marker(None, key)))
         return f"include {path}"
     if word == "fix":
         words = key.split()
@@ -248,7 +302,11 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         k = len(scratch.stages)
         scratch.stages.append((loc[0], loc[1], key))
         path = scratch.root / f"stage_{k}"
-        path.write_text(marker(k, key))
+        path.write_text(_audit_lines(scratch, marker(k, key)))
+        # the commands a run's every runs are echoed without a tag: known as the run's
+        for piece, quote in segments_of(key):
+            if quote and piece.endswith(quote) and len(piece) >= 2 * len(quote):
+                _quoted(scratch, normalised(piece[len(quote):-len(quote)]), loc)
         return f"include {path}"
     if word == "if":
         return _safe_if(command, loc, scratch, marker)
@@ -261,8 +319,15 @@ def _labelled(scratch: Scratch, kept: list, template: str, entry, loc) -> str:
     command of line ``loc``, so that its echo (also from inside an if) tells the deck reached it."""
     kept.append(entry)
     label = template.format(len(kept) - 1)
-    scratch.lines.setdefault(label, loc)
+    _known(scratch, label, loc)
     return label
+
+
+def _quoted(scratch: Scratch, key: str, loc) -> None:
+    """A command an if or a run's every on line ``loc`` runs (echoed after that line, untagged)."""
+    if key:
+        scratch.quoted.setdefault(loc, set()).add(key)
+        _known(scratch, key, loc)
 
 
 def _outside(name: str) -> bool:
@@ -283,7 +348,7 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
         if quote and piece.endswith(quote) and len(piece) >= 2 * len(quote):
             inner = piece[len(quote):-len(quote)]
             if previous not in ("if", "elif") and normalised(inner):
-                scratch.lines.setdefault(normalised(inner), loc)
+                _quoted(scratch, normalised(inner), loc)
                 new = _safe(inner, loc, scratch, marker)
                 if new is not None:
                     changed = True
@@ -295,6 +360,7 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
                 if not word or word.isspace():
                     continue
                 if previous not in ("if", "elif") and word not in ("if", "then", "elif", "else"):
+                    _quoted(scratch, normalised(word), loc)
                     new = _safe(word, loc, scratch, marker)
                     if new is not None:
                         changed = True

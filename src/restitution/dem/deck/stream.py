@@ -3,17 +3,19 @@
 own substitution and with the deck line it came from, and the atoms each run saw.
 
 The engine echoes every command it reads (a line with a variable outside quotes twice: as written,
-then substituted); its other output is told apart by not being a command of the copied files (or
-a command quoted in one of their ``if`` lines).
+then substituted), the comment that tags its place with it; its other output is told apart by
+carrying no tag and not being a command quoted in an ``if`` it ran.
 """
 
 from __future__ import annotations
 
 import math
+import os
 import re
 from dataclasses import dataclass
+from pathlib import Path
 
-from .scratch import DYNAMIC, NOOP, Scratch, normalised
+from .scratch import AUDIT, DYNAMIC, NOOP, Scratch, normalised
 from ..deck_text import TRIPLE, segments
 
 __all__ = ["Executed", "executed", "skipped", "unchecked", "snapshots", "engine_error"]
@@ -48,7 +50,13 @@ def _substituted(line: str) -> bool:
 
 
 def executed(echo: str, scratch: Scratch) -> list[Executed]:
-    """The commands an engine ran, from its echo.
+    """The commands an engine ran, from its echo, each with the deck line it came from.
+
+    A line is the deck's by the tag its scratch copy gave it (:mod:`restitution.dem.deck.scratch`),
+    never by its text alone: an untagged echo is a command an ``if`` or a run's ``every`` of a
+    line echoed before runs (one it quotes), a line of a file a variable named for an ``include``
+    or ``jump`` that ran (by its text, in that file only), or the engine's or the audit's own
+    (markers, output), never a deck's command.
 
     Parameters
     ----------
@@ -64,40 +72,105 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     Examples
     --------
     >>> from pathlib import Path
-    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), lines={"variable a equal 2": (None, 1),
-    ...                                                      "pair_coeff * * hooke $a 0": (None, 2)})
-    >>> [(e.loc, e.text) for e in executed("variable a equal 2\\npair_coeff * * hooke $a 0\\n"
-    ...                                    "pair_coeff * * hooke 2 0\\nCreated 1 atoms\\n", s)]
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), tag="#t@", tags=[(None, 1), (None, 2)])
+    >>> [(e.loc, e.text) for e in executed("variable a equal 2 #t@0\\npair_coeff * * hooke $a 0 #t@1\\n"
+    ...                                    "pair_coeff * * hooke 2 0\\nvariable a equal 2\\n", s)]
     [((None, 1), 'variable a equal 2'), ((None, 2), 'pair_coeff * * hooke 2 0')]
     """
     marker = re.compile(rf"include {re.escape(str(scratch.root))}/stage_(\d+)")
+    tagged = re.compile(rf"{re.escape(scratch.tag)}(\d+|{AUDIT})\s*$")
     lines = _echo_lines(echo)
-    out, k, opened = [], 0, False
+    out: list = []
+    k, opened = 0, None
+    ifs: list = []           # the lines echoed whose if or every runs quoted commands, latest last
+    files: list = []         # the untagged files an include or jump of the deck opened, innermost last
+
+    def follow(key: str) -> str:
+        """The command after the engine's substitutions: one echo after each, until no $ is left
+        outside quotes."""
+        nonlocal k
+        text = key
+        while _substituted(text) and k < len(lines) and not tagged.search(lines[k]) and \
+                normalised(lines[k]).split()[:1] == key.split()[:1]:
+            text = normalised(lines[k])
+            k += 1
+        return text
+
     while k < len(lines):
-        key = normalised(lines[k])
+        raw = lines[k]
+        key = normalised(raw)
         k += 1
+        if not key or _ERROR_CONTEXT.match(key):     # an error quotes the line, tag and all
+            continue
         m = marker.fullmatch(key)
         if m:
             stage = int(m.group(1))
             f, n, run = scratch.stages[stage]
             out.append(Executed((f, n), run, stage))
-            opened = True        # the marker's first command, echoed next, is the run itself
+            opened = run         # the marker's line of that text, echoed next, is the run itself
+            _latest(ifs, (f, n), scratch)
             continue
-        if key not in scratch.lines:
+        tag = tagged.search(raw)
+        if tag and tag.group(1) == AUDIT:
+            text = follow(key)
+            if opened is not None and key == opened:
+                out[-1].text = text          # the run, substituted: the stage's own text
+            opened = None
             continue
-        loc, text = scratch.lines[key], key
-        # one echo after each substitution, until no $ is left outside quotes
-        while _substituted(text) and k < len(lines) and normalised(lines[k]).split()[:1] == key.split()[:1]:
-            text = normalised(lines[k])
-            k += 1
-        if opened and text.split()[:1] == out[-1].text.split()[:1]:
-            # the run itself, echoed from its marker, substituted (its text may be that of an
-            # earlier line: the marker's line is its own)
-            out[-1].text, opened = text, False
-            continue
-        opened = False
+        opened = None
+        if tag:
+            loc = scratch.tags[int(tag.group(1))]
+        elif _MARK.fullmatch(key):
+            loc = scratch.lines.get(key)     # a no-op of the audit's, in a deck's line (an if's)
+        else:
+            loc = next((where for where in reversed(ifs) if key in scratch.quoted.get(where, ())), None)
+            if loc is None:
+                for depth in range(len(files) - 1, -1, -1):
+                    loc = scratch.files.get(files[depth], {}).get(key)
+                    if loc is not None:
+                        del files[depth + 1:]     # the files opened inside it have ended
+                        break
+        if loc is None:
+            continue                         # the engine's output, or a line of the audit's
+        text = follow(key)
         out.append(Executed(loc, text))
+        _latest(ifs, loc, scratch)
+        opened_file = _opened(text, scratch)
+        if opened_file is not None:
+            files.append(opened_file)
     return out
+
+
+def _latest(ifs: list, loc, scratch: Scratch) -> None:
+    """``loc`` made the latest of the lines whose quoted commands may be echoed next, where it has any."""
+    if loc in scratch.quoted:
+        if loc in ifs:
+            ifs.remove(loc)
+        ifs.append(loc)
+
+
+#: What an engine's error says after its message: the line it stopped on, quoted
+_ERROR_CONTEXT = re.compile(r"Last (?:input line|command): ")
+#: The audit's no-ops (skipped commands, names from a variable): their text is the audit's alone
+_MARK = re.compile(r"label restitution_(skipped|unchecked)_\d+")
+
+
+def _opened(text: str, scratch: Scratch):
+    """The copied file an include or jump opens where none of its lines carries a tag (a file the
+    deck names by a variable), as the scratch's ``files`` names it; else None."""
+    words = text.split()
+    if len(words) < 2 or words[0] not in ("include", "jump") or words[1] == "SELF":
+        return None
+    name = words[1].strip("\"'")
+    folder = scratch.deck.parent
+    where = Path(os.path.normpath(folder / name))
+    # the deck's own folder named by its absolute path is the copy, where the engine is confined
+    for base in (folder, scratch.origin):
+        if base is not None and (where == base or base in where.parents):
+            label = str(where.relative_to(base))
+            label = None if label == scratch.deck.name else label
+            return None if label in scratch.tagged or label not in scratch.files else label
+    return None
 
 
 def skipped(commands: list, scratch: Scratch) -> dict:
@@ -224,6 +297,7 @@ def engine_error(text: str, scratch: Scratch) -> tuple[str, str, str]:
     message = m.group(1).strip() if m else text.strip().splitlines()[-1] if text.strip() else "it stopped"
     last = re.search(r"Last (?:input line|command): (.*)$", text, re.M)
     line = normalised(last.group(1)) if last else ""
-    loc = scratch.lines.get(line)
+    tag = re.search(rf"{re.escape(scratch.tag)}(\d+)\s*$", last.group(1)) if last else None
+    loc = scratch.tags[int(tag.group(1))] if tag else scratch.lines.get(line)
     where = "the deck" if loc is None else f"line {loc[1]}" if loc[0] is None else f"{loc[0]} line {loc[1]}"
     return where, line, message
