@@ -40,7 +40,7 @@ include: "workflow/rules/manuscript.smk" # the reproduction article, built with 
 # Bookkeeping, tables and the plots (a second each, read from results) that a cluster executor
 # runs on the submitting host, not as a queued job.
 localrules: all, outputs, study, software, main_figure, manuscript_inputs, provenance, variants_tex, variant_section,
-    arxiv, scene, fig1_forward, fig2_inverse, fig3_phase, fig4_eps, uniform_atlas
+    arxiv, scene, fig1_forward, fig2_inverse, fig3_phase, fig4_eps, uniform_atlas, engine_runs_manifest
 
 
 rule all:

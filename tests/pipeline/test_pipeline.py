@@ -7,6 +7,7 @@ work on a copy of that build. Marked slow: the ones that need extra clean builds
 from __future__ import annotations
 
 import copy
+import hashlib
 import json
 import os
 import re
@@ -403,6 +404,14 @@ def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
     assert len(confirmed) == 3 * (len((tree / "results/dem/typed_e.csv").read_text().splitlines()) - 1)
     assert (confirmed["relative_deviation"].abs() <= 1e-6).all()
     assert "results/dem/typed_e_runs/README.txt" in (tmp_path / "arxiv" / "README.txt").read_text()
+    # the manifest lists every one of those run files, with the checksum of the bytes in the bundle
+    manifest = "results/dem/engine_runs_manifest.txt"
+    assert manifest in names and manifest in (tmp_path / "arxiv" / "README.txt").read_text()
+    listed = {line.split()[2]: line.split()[0] for line in (tmp_path / "arxiv" / manifest).read_text().splitlines()
+              if not line.startswith("#")}
+    run_files = set(runs) | {n for n in typed if not n.endswith("/values.tex")}   # the article's macros: no run
+    assert set(listed) == run_files, sorted(set(listed) ^ run_files)
+    assert all(hashlib.sha256((tmp_path / "arxiv" / n).read_bytes()).hexdigest() == h for n, h in listed.items())
     # what arXiv's processing does: pdflatex, no bibtex, nothing but the bundle, run again while the
     # log asks for it (a float moved by the resolved references can need a third pass; at most 5, as
     # latexmk); the PDF must then be ours, page for page

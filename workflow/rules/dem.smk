@@ -127,6 +127,29 @@ rule typed_e_runs:
         script_file("typed_e_runs.py")
 
 
+ENGINE_RUNS_MANIFEST = "results/dem/engine_runs_manifest.txt"
+
+
+rule engine_runs_manifest:
+    """Every engine run file the arXiv bundle carries with its SHA-256 (the manifest, in the bundle), the
+    supplement's count of them per engine, and one LAMMPS deck typeset as it was run."""
+    input:
+        lammps=lammps_run_files() + [LAMMPS_RUNS_README],
+        typed=typed_e_run_files() + [f"{TYPED_E_RUNS}/typed_e_runs.csv", f"{TYPED_E_RUNS}/README.txt"],
+        code=code("engine_runs_manifest.py"),
+    output:
+        manifest=ENGINE_RUNS_MANIFEST,
+        values="results/paper/engine_runs_values.tex",
+        deck="results/paper/engine_runs_deck.tex",
+    params:
+        # the first of the figure's runs: force rule, slowest speed, coarsest step
+        sample=lammps_run_files()[0],
+    log:
+        "logs/engine_runs_manifest.log",
+    script:
+        script_file("engine_runs_manifest.py")
+
+
 # The overlap rule's viscous limit (issue 24): eps ~ C Omega^k for gamma <= alpha < 2 gamma + 1, the law
 # against both integrators for the variants' exponents and a few more, and the section's numbers.
 OVERLAP_FILES = [

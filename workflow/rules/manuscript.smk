@@ -120,6 +120,8 @@ rule arxiv:
         # behind the typed-e table, its deck and its output, with how to rerun them (the READMEs last)
         engine_runs=lammps_run_files() + [LAMMPS_RUNS_README],
         typed_e_runs=typed_e_run_files() + [f"{TYPED_E_RUNS}/typed_e_runs.csv", f"{TYPED_E_RUNS}/README.txt"],
+        # the checksums of all of those files (the supplement's data section names it)
+        manifest=ENGINE_RUNS_MANIFEST,
         code=code("arxiv_bundle.py"),
     output:
         "results/paper/arxiv.tar.gz",

@@ -29,7 +29,8 @@ members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path
            Path(snakemake.input.supplement_aux).as_posix(): Path(snakemake.input.supplement_aux)}
 for path in snakemake.input.generated:
     members[Path(path).as_posix()] = Path(path)
-for path in [*snakemake.input.data, *snakemake.input.engine_runs, *snakemake.input.typed_e_runs]:
+for path in [*snakemake.input.data, *snakemake.input.engine_runs, *snakemake.input.typed_e_runs,
+             snakemake.input.manifest]:
     members[Path(path).as_posix()] = Path(path)   # at their project paths, read by no TeX run
 runs_readme = Path(snakemake.input.engine_runs[-1]).as_posix()
 typed_readme = Path(snakemake.input.typed_e_runs[-1]).as_posix()
@@ -42,6 +43,7 @@ screen output (.out) per run; {runs_readme} says how to rerun one and how each e
 Every engine run behind the typed-e table (LAMMPS, LIGGGHTS, Yade, Kratos: each row in the engine named
 for it) is under {Path(typed_readme).parent.as_posix()}/, with the eps each run gave beside the table's;
 {typed_readme} says how to rerun them.
+{snakemake.input.manifest} lists every one of those run files with its SHA-256 checksum and size.
 """
 for name in members:
     # relative, inside the bundle: no absolute path, no way out

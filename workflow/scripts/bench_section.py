@@ -7,6 +7,7 @@
 
 # %%
 import math
+import os
 
 import pandas as pd
 from restitution_workflow.latex import esc, sci
@@ -72,29 +73,35 @@ fig, ax = plt.subplots()
 # More methods than a colour cycle has colours: each gets its own colour and marker as well.
 colors = plt.get_cmap("tab20").colors
 markers = "os^DvP*X<>hp"
-# Methods whose points coincide on these axes (the perturbative route gives the same error at nearly
-# the same cost at every order) are drawn as concentric hollow markers of different shapes, largest first,
-# so that every legend entry stays visible: the rank of a method among those at its (rounded) place.
-place_rank, seen = {}, {}
+# Methods whose points coincide on these axes (the perturbative route gives the same error at nearly the same
+# cost at every order) are drawn once, with one legend entry naming them all: concentric markers of the same
+# point could not be told apart. One point: cost and error within a twentieth of a decade of each other.
+def same_point(a, b):
+    return all(abs(math.log10(a[c].iloc[0] / b[c].iloc[0])) < 0.05 for c in ("cost_per_eval_s", "max_rel_err"))
+
+
+entries = []  # [methods, frame]
 for method, group in rows.groupby("method", sort=True):
-    finite = group[group["max_rel_err"].apply(math.isfinite)]
-    if not finite.empty:
-        key = (round(math.log10(finite["cost_per_eval_s"].iloc[0]) * 2), round(math.log10(finite["max_rel_err"].iloc[0]) * 2))
-        place_rank[method] = seen.get(key, 0)
-        seen[key] = place_rank[method] + 1
-for i, (method, group) in enumerate(rows.groupby("method", sort=True)):
     finite = group[group["max_rel_err"].apply(math.isfinite)]
     if finite.empty:
         continue
-    ax.plot(finite["cost_per_eval_s"], finite["max_rel_err"], marker=markers[i % len(markers)],
-            markersize=max(3.0, 13.0 - 3.0 * place_rank[method]), markerfacecolor="none", markeredgewidth=1.2,
-            color=colors[(2 * i) % 20 + (i // 10) % 2], linestyle="-", label=method)
+    twin = next((e for e in entries if len(finite) == len(e[1]) == 1 and same_point(finite, e[1])), None)
+    if twin is not None:
+        twin[0].append(method)
+    else:
+        entries.append([[method], finite])
+for i, (methods, finite) in enumerate(entries):
+    cut = os.path.commonprefix(methods).rfind("-") + 1 if len(methods) > 1 else 0
+    label = methods[0] if len(methods) == 1 else methods[0][:cut] + ", ".join(m[cut:] for m in methods) + " (one point)"
+    ax.plot(finite["cost_per_eval_s"], finite["max_rel_err"], marker=markers[i % len(markers)], markersize=7.0,
+            markerfacecolor="none", markeredgewidth=1.2, color=colors[(2 * i) % 20 + (i // 10) % 2], linestyle="-",
+            label=label)
 ax.set_xscale("log")
 ax.set_yscale("log")
 ax.set_xlabel("cost per evaluation (s, one core, recorded)")
 ax.set_ylabel(r"max relative error in $\varepsilon$")
 ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$: error against cost")
-fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False)
-fig.set_size_inches(5.6, 5.4)
-fig.tight_layout(rect=(0, 0.22, 1, 1))
+fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False)
+fig.set_size_inches(5.6, 5.8)
+fig.tight_layout(rect=(0, 0.24, 1, 1))
 save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.8)

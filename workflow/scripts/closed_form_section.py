@@ -53,8 +53,9 @@ ax.loglog(curve["g"], rel(law_viscous), color="tab:blue", ls="-.", lw=1.5, label
 if "eps_printed" in curve and curve["eps_printed"].notna().any():
     ax.loglog(curve["g"], rel(curve["eps_printed"].to_numpy()), color="tab:red", ls=":", lw=2.0,
               label="Kim's printed relation")
-ax.set_xlabel(r"impact speed $g$ (units of the $D_1$, $D_2$ fit)")
-ax.set_ylabel(r"relative error in $\varepsilon$")
+ax.set_xlabel(r"impact speed $g$ (in the units of $D_1$, $D_2$)")
+# one axis, two quantities: the elastic law is a law for 1 - eps, and its curve is the error in that
+ax.set_ylabel(r"relative error in $\varepsilon$ (elastic law: in $1 - \varepsilon$)")
 ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$", fontsize=10)
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False)
 fig.set_layout_engine("tight", rect=(0, 0.25, 1, 1))   # redone when save_figure resizes
@@ -176,6 +177,10 @@ macros = {
     # the largest error itself on the points not used in the fit (the figure above is twice it plus the
     # reference's accuracy): what a reader compares with the benchmark's error on its own points
     "CFHeldOutEps": sci(max(main["measured"]["selection_eps"], main["measured"]["test_eps"]), 2),
+    # the two sets of points not used to fit the coefficients: the validation points (the grid points between
+    # the fitted ones, which choose the shape) and the random test points, used for nothing else
+    "CFValidationPoints": str(main["measured"]["n_selection"]), "CFTestPoints": str(main["measured"]["n_test"]),
+    "CFTestEps": sci(main["measured"]["test_eps"], 2),
     "CFOverlapBoundEps": sci(main_overlap["bound_eps"], 2) if main_overlap["available"] else "none",
     "CFOverlapBoundLoss": sci(main_overlap["bound_one_minus_eps"], 2) if main_overlap["available"] else "none",
     "CFViscousK": sci(V.k, 6), "CFElasticCOne": sci(E.C1, 6),
@@ -314,8 +319,8 @@ $10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} co
 where the error on the choice points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
 the compiled integrator on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
 the shape $(\sigma, m_0, m_1)$ is chosen by the error on the points in between, and the error figure stated is twice the
-largest relative error on those points and on thirty-two further points drawn at random in
-$[10^{{-8}}, 10^{{8}}]$, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference, plus that reference's accuracy
+largest relative error on those validation points and on {main['measured']['n_test']} test points drawn at random in
+$[10^{{-8}}, 10^{{8}}]$ and used for nothing else, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference, plus that reference's accuracy
 (\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
 proven bound. A variant with $\alpha \leq \gamma$ has no such form:
 for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
@@ -331,7 +336,7 @@ written out (Sec.~\ref{{sec:reproduce}}).
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
 \caption{{Relative error of the uniform approximations against the compiled integrator, in $\varepsilon$ (left) and in
 $1 - \varepsilon$ (right), for every variant that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
-Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on points not used in the fit, plus the reference's accuracy), each marked at its right end with its variant's marker. Made by
+Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on the validation and test points, plus the reference's accuracy), each marked at its right end with its variant's marker. Made by
 \texttt{{closed\_form\_section.py}}.}}
 \label{{fig:uniform-error}}
 \end{{figure}}
@@ -357,15 +362,15 @@ references are the creep law itself, checked against the integrator above it; th
 the error of $C$. The error figure for the main variant is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
-For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly below
-$\Omega = 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the overlap rule's master
+For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly when
+$\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the overlap rule's master
 curve and the integrators cover those pairs.
 
 \begin{{table}}[htbp]
 \centering\footnotesize
 \caption{{The overlap rule's form (\ref{{eq:uniform-overlap}}) of each variant: its number of coefficients and
 twice the largest relative errors in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$
-(over $\Omega \geq 1$), measured on points not used in the fit; below, its constants, shape and coefficients. Generated by
+(over $\Omega \geq 1$), measured on the validation and test points; below, its constants, shape and coefficients. Generated by
 \texttt{{closed\_form\_section.py}}.}}
 \label{{tab:uniform-overlap}}
 {overlap_tables}

@@ -21,7 +21,10 @@ KNOWN = {"eps_dashpot": ("linear dashpot, closed form", dict(ls="none", marker="
 
 # %%
 p = snakemake.params
-fig, ax = plt.subplots(figsize=(5.6, 5.8))
+# below: each variant's eps divided by the first variant's on the common grid, since on the log axes above
+# the curves of laws with similar k run on top of each other
+fig, (ax, ax_ratio) = plt.subplots(2, 1, figsize=(5.6, 7.4), sharex=True, height_ratios=(3, 1.3))
+first = None
 colors = plt.cm.tab10(np.arange(len(p.variants)) % 10)
 LINESTYLES = ["-", "--", "-.", (0, (5, 1.5, 1, 1.5, 1, 1.5))]
 MARKERS = ["o", "s", "^", "v", "D"]
@@ -34,6 +37,13 @@ for i, (name, known_file, curve_file) in enumerate(zip(p.variants, snakemake.inp
     ax.plot(known["omega"], known["eps_reference"], color=colors[i], lw=1.4, ls=LINESTYLES[i % len(LINESTYLES)],
             marker=MARKERS[i % len(MARKERS)], markersize=4.5, markerfacecolor="none",
             markevery=(i % 3, 3), label=rf"{name} ($\alpha = {alpha}$, $\gamma = {gamma}$)")
+    if first is None:
+        first = known
+    if not np.allclose(known["omega"], first["omega"], rtol=1e-12, atol=0):
+        raise SystemExit(f"variant {name}: its validation grid is not the first variant's")
+    ax_ratio.plot(known["omega"], known["eps_reference"] / first["eps_reference"], color=colors[i], lw=1.4,
+                  ls=LINESTYLES[i % len(LINESTYLES)], marker=MARKERS[i % len(MARKERS)], markersize=4.5,
+                  markerfacecolor="none", markevery=(i % 3, 3))
     lo, hi = curve["omega"].min(), curve["omega"].max()
     if hi > lo * (1 + 1e-9):
         ax.plot(curve["omega"], curve["eps"], color=colors[i], lw=3.5, alpha=0.6, solid_capstyle="butt")
@@ -47,9 +57,10 @@ ax.set_xscale("log")
 ax.set_yscale("log")
 ax.set_ylim(max(ax.get_ylim()[0], 1e-4), 1.5)
 ax.set_xlim(min(p.grid["omega_min"], ax.get_xlim()[0]), p.grid["omega_max"])
-ax.set_xlabel(r"$\Omega$")
+ax_ratio.set_xlabel(r"$\Omega$")
+ax_ratio.set_ylabel(rf"$\varepsilon$ / $\varepsilon$ of {p.variants[0]}")
 ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
 # below the axes: inside, it covered the curves at small Omega
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False)
-fig.tight_layout(rect=(0, 0.25, 1, 1))
+fig.tight_layout(rect=(0, 0.2, 1, 1))
 save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.8)

@@ -12,6 +12,7 @@
 # %%
 from fractions import Fraction
 
+import numpy as np
 import pandas as pd
 from restitution_workflow.latex import frac_tex, sci
 from restitution_workflow.pipeline import start, write_csv, write_text
@@ -57,6 +58,15 @@ for a, g in pairs:
 write_csv(snakemake.output.table, table)
 
 # %% the macros the article prints
+# the grid in words: from-to with the points per decade where it is log-spaced with a whole number of them,
+# else every value
+omegas = sorted(float(w) for w in p.omegas)
+steps = np.diff(np.log10(omegas))
+per_decade = round(1.0 / float(steps[0])) if len(steps) and steps[0] > 0 else 0
+if per_decade and np.allclose(steps, 1.0 / per_decade, rtol=0, atol=1e-9):
+    omega_grid = rf"from ${sci(omegas[0], 1)}$ to ${sci(omegas[-1], 1)}$, log-spaced with {per_decade} per decade,"
+else:
+    omega_grid = "= " + ", ".join(f"${sci(w, 3)}$" for w in omegas)
 force, overlap = table[table["end"] == "force"], table[table["end"] == "overlap"]
 pair_list = ", ".join(rf"$({frac_tex(a)}, {frac_tex(g)})$" for a, g in pairs)
 macros = {
@@ -65,6 +75,10 @@ macros = {
     "ExactOmegaMin": sci(min(p.omegas), 1),
     "ExactOmegaMax": sci(max(p.omegas), 1),
     "ExactPoints": str(len(table)),
+    # the grid itself, so that a reader can count the collisions: log-spaced with a whole number per decade
+    "ExactPointsForce": str(len(force)), "ExactPointsOverlap": str(len(overlap)),
+    "ExactOmegaGrid": omega_grid,
+    "ExactAboveFactor": sci(p.above, 3),
     "ExactDevForce": sci(float(force["rel_dev"].max()), 2),
     "ExactDevOverlap": sci(float(overlap["rel_dev"].max()), 2),
     "ExactDevAll": sci(float(table["rel_dev"].max()), 2),

@@ -78,7 +78,7 @@ def draw_eps_of_g():
     ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 0.0), xycoords=("data", "axes fraction"), xytext=(3, 3),
                 textcoords="offset points", color="grey", fontsize=10)
     ax.set_xlim(curves["g"].min(), curves["g"].max())
-    return finish(fig, ax, r"impact speed $g$ (units of the $D_1$, $D_2$ fit)", ncol=1, bottom=0.27)
+    return finish(fig, ax, r"impact speed $g$ (in the units of $D_1$, $D_2$)", ncol=1, bottom=0.27)
 
 
 # %%
