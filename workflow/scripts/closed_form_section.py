@@ -235,9 +235,9 @@ overlap_names = [n for n in p.variants if overlap_forms[n]["available"]]
 n_overlap = max((len(overlap_forms[n]["a"]) for n in overlap_names), default=0)
 # every number to the twelve digits the printed-digit check assumes (sigma and r too: sigma may be nu itself)
 overlap_coef_rows = [" & ".join([label] + [sci(overlap_forms[n][key], 12) for n in overlap_names]) + r" \\"
-                     for label, key in (("$b$", "b"), (r"$\Lambda$", "K"), (r"$\sigma$", "sigma"), (r"$\rho$", "r"))]
-overlap_coef_rows.append(" & ".join(["$m_1$"] + [str(overlap_forms[n]["m1"]) for n in overlap_names]) + r" \\")
-overlap_coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(overlap_forms[n]["a"][j], 12) if j < len(overlap_forms[n]["a"])
+                     for label, key in ((r"$\bar b$", "b"), (r"$\Lambda$", "K"), (r"$\bar\sigma$", "sigma"), (r"$\rho$", "r"))]
+overlap_coef_rows.append(" & ".join([r"$\bar s_1$"] + [str(overlap_forms[n]["m1"]) for n in overlap_names]) + r" \\")
+overlap_coef_rows += [" & ".join([rf"$\bar a_{{{j}}}$"] + [sci(overlap_forms[n]["a"][j], 12) if j < len(overlap_forms[n]["a"])
                                                      else "" for n in overlap_names]) + r" \\"
                       for j in range(n_overlap)]
 overlap_printed = max((overlap_forms[n]["printed_max_change"] for n in overlap_names), default=0.0)
@@ -259,9 +259,9 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
                       r"\bottomrule", r"\end{tabular}"])
 
 
-force_tables = two_tables("lllllllll", r"variant & $\alpha$ & $\gamma$ & $b$ & $c_3$ & $\sigma$ & $m_0$ & $m_1$ & "
+force_tables = two_tables("lllllllll", r"variant & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
                           r"$2\times$ max.\ error $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
-overlap_tables = two_tables("lllllll", r"variant & $\alpha$ & $\gamma$ & $\kappa$ & $n + 1$ & "
+overlap_tables = two_tables("lllllll", r"variant & $\alpha$ & $\gamma$ & $\kappa$ & $\bar n + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
@@ -296,29 +296,29 @@ $1 - \varepsilon = C_1 \mu - C_2 \mu^2 + O(\mu^3)$ with
 $C_1 = ((\alpha+1)/2)^{{\nu-1}} \mathrm{{B}}(\nu, 3/2)$ and $C_2 = \nu C_1^2$ (for $\alpha = 3/2$, $\gamma = 1/2$
 these are the constants of Ram\'irez et al.~\cite{{ramirez1999}}); here $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$. Contact ends where the
 force vanishes, before the deformation is back to zero, and that adds $-\beta\,\mu^{{1 + (\gamma+1)/(\alpha-\gamma)}}$,
-$\beta = (\alpha-\gamma)/((\gamma+1)(\alpha+1))$; here the power is {frac(end_power)} and $\beta = {sci(E.E, 6)}$, {end_clause}.
-Contact lasts $\tau_c = T_0\,\Omega^{{-1/(\alpha+1)}}$ with $T_0 = {sci(E.T0, 10)}$.
+$\beta = (\alpha-\gamma)/((\gamma+1)(\alpha+1))$; here the power is {frac(end_power)} and $\beta = {frac(end_coef)}$, {end_clause}.
+Contact lasts $\tau_c = \theta_c\,\Omega^{{-1/(\alpha+1)}}$ with $\theta_c = {sci(E.T0, 10)}$, its duration in the elastic time $\theta = \Omega^{{1/(\alpha+1)}}\tau$ of the article's appendix.
 
 {units}
 
 \paragraph{{A uniform approximation for every $\Omega$.}}
 With $z = b\,\Omega$, $u = \tanh(\tfrac{{\sigma}}{{2}} \ln z)$ and $\zeta = 1/\varepsilon$,
 \begin{{equation}}
-\zeta - 1 = \frac{{1}}{{k}}\left[\frac{{b\,(1+z)^{{1-\nu}}}}{{z}} + \frac{{c_{{\log}} \ln(1 + 1/z) + c_3}}{{(1+z)^2}}\right]
- + (1+u)^{{m_0}} (1-u)^{{m_1}} \sum_{{j=0}}^{{n}} a_j u^j ,
+\zeta - 1 = \frac{{1}}{{k}}\left[\frac{{b\,(1+z)^{{1-\nu}}}}{{z}} + \frac{{c_{{\log}} \ln(1 + 1/z) + c_{{\mathrm{{b}}}}}}{{(1+z)^2}}\right]
+ + (1+u)^{{s_0}} (1-u)^{{s_1}} \sum_{{j=0}}^{{n}} a_j u^j ,
 \label{{eq:uniform}}
 \end{{equation}}
-with $b = (k C_1)^{{1/(1-\nu)}}$ and $c_3 = c_{{\mathrm{{v}}}} + c_{{\log}} \ln b - (1-\nu)\,b - k$. The bracket alone has
-the exact leading and first-order terms at the viscous end, and the sum, vanishing like $\Omega^{{\sigma m_0}}$,
+with $b = (k C_1)^{{1/(1-\nu)}}$ and $c_{{\mathrm{{b}}}} = c_{{\mathrm{{v}}}} + c_{{\log}} \ln b - (1-\nu)\,b - k$. The bracket alone has
+the exact leading and first-order terms at the viscous end, and the sum, vanishing like $\Omega^{{\sigma s_0}}$,
 cannot change them. At the elastic end the bracket has only the leading term $C_1\mu$: the $\mu^2$ term of
-$\zeta - 1$, $(C_1^2 - C_2)\mu^2$, is left to the fitted sum, which vanishes like $\Omega^{{-\sigma m_1}}$ with
-$\sigma m_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
+$\zeta - 1$, $(C_1^2 - C_2)\mu^2$, is left to the fitted sum, which vanishes like $\Omega^{{-\sigma s_1}}$ with
+$\sigma s_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
 leading order only at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
 {sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The error figures below, measured over
 $10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($n = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
 where the error on the choice points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
 the compiled integrator on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
-the shape $(\sigma, m_0, m_1)$ is chosen by the error on the points in between, and the error figure stated is twice the
+the shape $(\sigma, s_0, s_1)$ is chosen by the error on the points in between, and the error figure stated is twice the
 largest relative error on those validation points and on {main['measured']['n_test']} test points drawn at random in
 $[10^{{-8}}, 10^{{8}}]$ and used for nothing else, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference, plus that reference's accuracy
 (\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
@@ -345,16 +345,17 @@ Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10
 Where contact lasts until the overlap is back to zero (the default of the DEM codes, Sec.~\ref{{sec:dem}}), fast
 impacts follow the creep law $\varepsilon = C\,\Omega^{{\kappa}}$, $\kappa = (\gamma+1)/(2\gamma+1-\alpha)$,
 up to a correction that vanishes like $\exp(-c/\Omega)$, and slow ones the same elastic limit as above. For
-$\gamma < \alpha < 2\gamma + 1$ (where the bodies cannot stick) one formula joins the two, with $z = b\,\Omega$,
-$u = \tanh(\tfrac{{\sigma}}{{2}} \ln z)$ and $P = 4$:
+$\gamma < \alpha < 2\gamma + 1$ (where the bodies cannot stick) one formula joins the two, with $\bar z = \bar b\,\Omega$,
+$\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and $P = 4$ (bars mark the constants of this form, which differ from those of
+Eq.~(\ref{{eq:uniform}})):
 \begin{{equation}}
-\frac{{1}}{{\varepsilon}} = \frac{{z^P}}{{1 + z^P}} + \Lambda z^{{-\kappa}} (1 + z^P)^{{(\kappa - \nu)/P}}
-\exp\!\Big[\exp(-\rho/z)\, (1-u)^{{m_1}} \sum_{{j=0}}^{{n}} a_j T_j(u)\Big],
+\frac{{1}}{{\varepsilon}} = \frac{{\bar z^P}}{{1 + \bar z^P}} + \Lambda \bar z^{{-\kappa}} (1 + \bar z^P)^{{(\kappa - \nu)/P}}
+\exp\!\Big[\exp(-\rho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar n}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
-with $T_j(u) = \cos(j \arccos u)$, $b = (C C_1)^{{1/(\kappa - \nu)}}$ and $\Lambda = b^{{\kappa}}/C$, so that
+with $\bar b = (C C_1)^{{1/(\kappa - \nu)}}$ and $\Lambda = \bar b^{{\kappa}}/C$, so that
 $\varepsilon \to C\,\Omega^{{\kappa}}$ and $1 - \varepsilon \to C_1 \Omega^{{-\nu}}$ exactly, and $\varepsilon > 0$
-for any coefficients. The envelope $\exp(-\rho/z)$ vanishes like the true correction; the shape $(\sigma, \rho, m_1)$ and the
+for any coefficients. The envelope $\exp(-\rho/\bar z)$ vanishes like the true correction; the shape $(\bar\sigma, \rho, \bar s_1)$ and the
 degree are chosen as for Eq.~(\ref{{eq:uniform}}), the coefficients fitted with a small penalty on their size (without
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = 10^{{-3}}$ each integration of the creeping return takes about a second, and there the

@@ -103,7 +103,7 @@ def val(x, err):
 
 
 rows = [r"\begin{tabular}{rrllll}", r"\toprule",
-        r"$k$ & power of $\Om$ & Pad\'e form & re-derived $h_k$ & this project & fit to the integrator \\",
+        r"$i$ & power of $\Om$ & Pad\'e form & re-derived $h_i$ & this project & fit to the integrator \\",
         r"\midrule"]
 for k in range(1, KMAX + 1):
     pub = (fixed(pade[k], 6) + ("" if k <= PADE_MATCHED else r"$^\ast$")) if k <= 8 else "---"
@@ -117,7 +117,7 @@ write_text(snakemake.output.table, "\n".join(rows))
 # %% truncation error of each partial sum against the integrator
 orders = p.orders
 err_rows = [r"\begin{tabular}{r" + "r" * (len(orders) + 2) + "}", r"\toprule",
-            r"$\Om$ & $\varepsilon$ & " + " & ".join(rf"$M={k}$" for k in orders) + r" & Pad\'e \\", r"\midrule"]
+            r"$\Om$ & $\varepsilon$ & " + " & ".join(rf"$i \le {k}$" for k in orders) + r" & Pad\'e \\", r"\midrule"]
 trunc = {}
 for w in p.omegas:
     e = eps_force(w)

@@ -81,8 +81,8 @@ def row(alpha, gamma, records) -> dict:
 
 def latex(rows) -> str:
     lines = [r"\begin{tabular}{llllllll}", r"\toprule",
-             r"$\alpha$ & $\gamma$ & $(\sigma, m_0, m_1)$ & $n + 1$ & $2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$ "
-             r"& largest test error & overlap rule: $n + 1$, $2\times$ max.\ errors \\",
+             r"$\alpha$ & $\gamma$ & $(\sigma, s_0, s_1)$ & $n + 1$ & $2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$ "
+             r"& largest test error & overlap rule: $\bar n + 1$, $2\times$ max.\ errors \\",
              r"\midrule"]
     for r in rows:
         ab = f"{frac_tex(Fraction(r['alpha']))} & {frac_tex(Fraction(r['gamma']))}"
