@@ -107,6 +107,10 @@ def main(argv=None) -> int:
             rows.append(row)
             print(f"{row['deck']:<36} cpu A/B {row['cpu_ratio']:5.2f}, A/(2B + 1 s) {row['cpu_a_over_2b_plus_1s']:4.2f}; "
                   f"wall A/B {row['wall_ratio']:5.2f}, A/(2B + 1 s) {row['wall_a_over_2b_plus_1s']:4.2f}", flush=True)
+    for kind in ("cpu", "wall"):
+        worst = max(rows, key=lambda r: r[f"{kind}_a_over_2b_plus_1s"])
+        print(f"{kind}: {sum(r[f'{kind}_within_2x_plus_1s'] for r in rows)} of {len(rows)} decks within 2B + 1 s; "
+              f"largest A/(2B + 1 s) {worst[f'{kind}_a_over_2b_plus_1s']:.2f} ({worst['deck']})")
     with open(out / "deck_speed.csv", "w", newline="") as fh:
         writer = csv.DictWriter(fh, fieldnames=list(rows[0]))
         writer.writeheader()

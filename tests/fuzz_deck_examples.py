@@ -120,7 +120,8 @@ def _engine_view(path: Path, root: Path):
     from restitution.dem.engines.lammps import deck_run
 
     scratch = scratch_copy(path, root, deck_run.marker(root))
-    done = deck_run.run_copy(scratch.deck, root, BUDGET)
+    # every run's marker writes the atoms (the audit's own pass writes them where they may change)
+    done = deck_run.run_copy(scratch.deck, root, BUDGET, check_every=True)
     return executed(done.echo, scratch), snapshots(done.atoms) + snapshots(done.at_end)
 
 

@@ -365,8 +365,109 @@ def test_particles_never_shown_by_the_engine_are_not_reported_absent(tmp_path):
     text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nlabel l\njump SELF l\n"
     from restitution.dem.deck import audit_deck
     from restitution.dem.dialect.state import DeckError
-    with pytest.raises(DeckError, match="before any run or the deck's end"):
+    # either part of the budget may run out first: a loop without a run echoes megabytes a second,
+    # and a loaded machine reaches the echo cap before the 5 s
+    with pytest.raises(DeckError, match=r"had not reached a run or the deck's end within the audit's budget "
+                                         r"\((5 s of wall time|16 MB of echo)"):
         audit_deck(text, [1.0], path=_write(tmp_path, text), budget=5.0)
+
+
+def test_a_loop_without_a_run_is_refused_at_the_echo_cap_in_little_memory(tmp_path, monkeypatch):
+    # a 3-line loop with no run echoes megabytes a second: the audit once read 2 GB of it after
+    # the engine's 60 s; now the engine is stopped where its echo reaches the cap, which the
+    # refusal names, and the echo is never read whole
+    from restitution.dem.dialect import child
+    monkeypatch.setattr(child, "MAX_ECHO", 2 ** 16)
+    text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nlabel l\nvariable i equal 1\njump SELF l\nrun 10\n"
+    from restitution.dem.deck import audit_deck
+    from restitution.dem.dialect.state import DeckError
+    import time
+    start = time.monotonic()
+    with pytest.raises(DeckError, match=r"within the audit's budget \(0.0625 MB of echo"):
+        audit_deck(text, [1.0], path=_write(tmp_path, text), budget=60.0)
+    assert time.monotonic() - start < 30.0
+
+
+def _engine_pass(tmp_path, text: str):
+    """(EngineRun, commands) of the audit's LAMMPS pass through the deck."""
+    from restitution.dem.deck import _engine_pass as engine_pass
+    from restitution.dem.deck.scratch import scratch_copy
+    from restitution.dem.engines.lammps import deck_run
+    (tmp_path / "deck").mkdir()
+    path = _write(tmp_path / "deck", text)
+    root = tmp_path / "scratch"
+    root.mkdir()
+    scratch = scratch_copy(path, root, deck_run.marker(root))
+    return engine_pass(deck_run, scratch, 60.0, path.parent)
+
+
+def test_a_loop_of_runs_that_change_nothing_is_set_up_once(tmp_path):
+    # a real pour deck repeats 10 000 times: define pours with a new seed, run; LAMMPS set up each
+    # run (milliseconds each: 60 times its own pass). A run met again where nothing in between
+    # changes what it checks or sees is not set up again, and its atoms are those of the last one
+    text = HEAD + f"""pair_coeff * * hooke 1000 1 {T}
+region top block -0.5 0.5 -0.5 0.5 0.5 0.9
+fix g all gravity 1.0 vector 0 0 -1
+variable n loop 300
+label l
+variable seed equal $n+1000
+fix drop all pour 1 2 ${{seed}} region top diam one 0.04 dens 2500 2500
+run 10
+next n
+jump SELF l
+"""
+    done, commands = _engine_pass(tmp_path, text)
+    runs = [c for c in commands if c.stage is not None]
+    assert len(runs) == 300
+    assert done.echo.count("Setting up Verlet run") == 1
+    status, out, err = deck(tmp_path, text)
+    assert status == 0, err
+    # every run sees the atoms LAMMPS holds (the pour inserts nothing while runs are skipped): one stage
+    stages = json.loads(out)["stages"]
+    assert len(stages) == 1 and len(stages[0]["runs"]) == 300
+    p = {tuple(r["types"]): r for r in stages[0]["pairs"]}
+    assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
+    assert p[(2, 2)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
+
+
+@pytest.mark.parametrize("change, stages", [
+    ("pair_coeff * * hooke ${k}000 1 " + T, 3), ("set type 1*3 diameter 0.0${k}", 3),
+    # a pour of other sizes into a type that holds atoms (the engine's atoms are what runs see)
+    ("fix drop all pour 1 2 ${k}123 region top diam one 0.0${k} dens 2500 2500", 1)])
+def test_a_loop_that_changes_the_contact_sees_each_change(tmp_path, change, stages):
+    # a marker met again skips LAMMPS' set-up and its dump only where nothing changed in between:
+    # here each pass of the loop changes the contact, the sizes or a pour, each run checked
+    text = HEAD + f"""pair_coeff * * hooke 1000 1 {T}
+region top block -0.5 0.5 -0.5 0.5 0.5 0.9
+fix g all gravity 1.0 vector 0 0 -1
+variable k loop 3
+label l
+{change}
+run 10
+next k
+jump SELF l
+"""
+    _, commands = _engine_pass(tmp_path, text)
+    assert sum(c.stage is not None and c.snapshot is not False for c in commands) == 3
+    status, out, err = deck(tmp_path, text)
+    assert status == 0, err
+    assert len(json.loads(out)["stages"]) == stages
+
+
+def test_a_variable_a_fix_reads_is_checked_at_each_run(tmp_path):
+    # LAMMPS checks a fix's variable when it sets a run up: deleted in a loop, the second run stops
+    text = HEAD + f"""pair_coeff * * hooke 1000 1 {T}
+variable f equal 0
+fix push all addforce v_f 0 0
+variable n loop 3
+label l
+run 10
+variable f delete
+next n
+jump SELF l
+"""
+    err = refused(tmp_path, text)
+    assert "LAMMPS stops here" in err and "addforce" in err
 
 
 @pytest.mark.parametrize("ending", ["quit\n", 'if "1 > 0" then quit\n', 'if "1 > 0" then "quit"\n'])

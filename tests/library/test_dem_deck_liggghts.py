@@ -7,6 +7,7 @@ deck's contact lines at three time steps (t_c/2000 to t_c/8000), extrapolated to
 engine test below repeats it."""
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -146,7 +147,10 @@ def test_a_settle_loop_ends_within_its_budget(tmp_path):
     (tmp_path / "in.deck").write_text(text)
     from restitution.dem.deck import audit_deck
     res = audit_deck(text, [1.0], path=tmp_path / "in.deck", budget=8.0)
-    assert any("LIGGGHTS had not ended the deck after 8 s" in note for note in res["notes"])
+    # whichever part of the budget ends it first, the note names it (LIGGGHTS' one-step runs may
+    # echo the 16 MB before the 8 s)
+    assert any(re.search(r"LIGGGHTS had not ended the deck within the audit's budget \((8 s of wall time|16 MB of "
+                         r"echo);", note) for note in res["notes"])
     assert res["pairs"][0]["eps"][0] == pytest.approx(0.5, rel=1e-9)
 
 

@@ -30,6 +30,9 @@ def _segments(line: str):
     """(text, quote) pieces of ``line``: quote is "" outside quotes, else the quote that opened the
     piece (the quotes themselves belong to the quoted piece). LAMMPS' own scan: a quote anywhere,
     even inside a word, opens or closes."""
+    if '"' not in line and "'" not in line:
+        # no quote: one piece (an engine's echo is mostly such lines, scanned by the thousand)
+        return [(line, "")] if line else []
     out, start, quote, k = [], 0, "", 0
     while k < len(line):
         if not quote:
@@ -73,6 +76,8 @@ def segments(line: str) -> list[tuple[str, str]]:
 
 def strip_comment(line: str) -> str:
     """``line`` up to its first ``#`` outside quotes."""
+    if "#" not in line:
+        return line
     kept = []
     for text, quote in _segments(line):
         if not quote and "#" in text:
@@ -110,6 +115,8 @@ def words(line: str) -> list[str]:
     """The words of a command: split at whitespace, a quoted text one word without its quotes.
     ScriptError where a quote is not closed, or a closing quote runs into more text (LAMMPS stops
     on both)."""
+    if '"' not in line and "'" not in line:
+        return line.split()       # no quote: whitespace alone splits it (str.isspace's whitespace)
     out, k, n = [], 0, len(line)
     while k < n:
         if line[k].isspace():

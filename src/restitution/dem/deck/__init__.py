@@ -73,6 +73,7 @@ from __future__ import annotations
 import os
 import re
 import tempfile
+import time
 from dataclasses import replace
 from functools import lru_cache
 from pathlib import Path
@@ -217,8 +218,10 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
         return 0.0, True
 
 
-#: Wall-time budget of an engine's pass through a deck (runs skipped), in seconds
-BUDGET = 60.0
+#: Wall-time budget of an engine's pass through a deck (runs skipped), in seconds: 10 times the
+#: longest pass of the official examples and tutorials on a loaded 2-core machine (2 s); what it
+#: echoes is capped too (:data:`restitution.dem.dialect.child.MAX_ECHO`)
+BUDGET = 20.0
 _LIGGGHTS_DECK = re.compile(r"^\s*(pair_style\s+gran\s+model|atom_style\s+granular|fix\s+\S+\s+\S+\s+"
                             r"(particletemplate|particledistribution|insert/|mesh/surface|property/global))", re.M)
 
@@ -288,7 +291,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import scratch_copy
-    from .stream import engine_error, executed, skipped, snapshots, unchecked
+    from .stream import engine_error, skipped, snapshots, unchecked
     if engine == "LAMMPS":
         from ..engines.lammps import deck_run
     else:
@@ -301,8 +304,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         if not any(key.split()[0] in ("pair_style", "if") for key in scratch.lines):
             raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                                 "(LIGGGHTS) line")
-        done = deck_run.run_copy(scratch.deck, root, budget, original=path.resolve().parent)
-        commands = executed(done.echo, scratch)
+        done, commands = _engine_pass(deck_run, scratch, budget, path.resolve().parent)
         for loc, text in unchecked(commands, scratch):
             if text.split()[0] in ("include", "jump") and "$" in text.split()[1]:
                 raise DeckError(place(loc), text, "the file it reads is named by a variable, and this system does not "
@@ -315,6 +317,12 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
         atoms = snapshots(done.atoms) + snapshots(done.at_end)
+        if done.timed_out and not atoms:
+            # no run and no end reached (a loop without a run): nothing to audit, and "no particle"
+            # would be a guess; said before the echo is read any further
+            raise DeckError("deck", None, f"{engine} had not reached a run or the deck's end within the audit's "
+                                          f"budget ({done.spent}; runs skipped): a loop that never runs? not "
+                                          "audited")
 
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
@@ -344,11 +352,46 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
         runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
-        notes.append(f"{engine} had not ended the deck after {budget:g} s ({runs}, so a loop waiting "
-                     f"for a value a run would change never ends): audited as far as it ran, {len(commands)} "
-                     "commands" + (f"; its last {len(last)} runs all saw the same contact settings" if len(last) > 1
-                                   else ""))
+        notes.append(f"{engine} had not ended the deck within the audit's budget ({done.spent}; {runs}, so a "
+                     "loop waiting for a value a run would change never ends): audited as far as it ran, "
+                     f"{len(commands)} commands" + (f"; its last {len(last)} runs all saw the same contact settings"
+                                                    if len(last) > 1 else ""))
     return deck, notes
+
+
+def _engine_pass(deck_run, scratch, budget: float, folder: Path) -> tuple:
+    """(EngineRun, list of Executed): the engine's pass through the scratch copy within ``budget``
+    seconds. LAMMPS' markers check and dump a run met again (a loop) only where something in between
+    may have changed what it checks or sees; where the echo shows such a change, the deck runs again,
+    every run checked, within what is left of the budget (a budget spent by then: the first pass,
+    read up to that run)."""
+    from .stream import first_unchecked
+    start = time.monotonic()
+    done = deck_run.run_copy(scratch.deck, scratch.root, budget, original=folder)
+    if done.timed_out and not done.atoms.strip() and not done.at_end.strip():
+        return done, []       # no run and no end reached: refused, the echo never read
+    commands = _read(done, scratch)
+    n = first_unchecked(commands, scratch)
+    if n is not None:
+        left = budget - (time.monotonic() - start)
+        if done.timed_out or left <= 0:
+            del commands[n:]
+            done.timed_out, done.spent = True, done.spent or f"{budget:g} s of wall time"
+        else:
+            done = deck_run.run_copy(scratch.deck, scratch.root, left, original=folder, check_every=True)
+            commands = _read(done, scratch)
+    return done, commands
+
+
+def _read(done, scratch) -> list:
+    """The commands of an engine's pass (:func:`restitution.dem.deck.stream.executed`); where the
+    budget stopped it at a run's marker before its dump, without that run (whether it was to write
+    the atoms is unknown)."""
+    from .stream import executed
+    commands = executed(done.echo, scratch)
+    if done.timed_out and commands and commands[-1].snapshot is False:
+        commands.pop()
+    return commands
 
 
 def _override_notes(atoms: list, radius: dict, density: dict) -> list:

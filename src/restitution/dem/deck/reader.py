@@ -85,7 +85,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     commands : list of Executed
         In the order they ran; a run's marker gives its stage number.
     atoms : list of dict
-        Each run's atoms, {type: {(radius, density)}}, indexed by stage order.
+        Each run's atoms, {type: {(radius, density)}}, in the order of the runs that wrote them
+        (a run whose ``snapshot`` is False wrote none: it saw the atoms of the run before).
     radius, density : dict, optional
         {type: value}, overriding what the engine holds.
     read_file : callable, optional
@@ -112,6 +113,9 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     """
     deck = Deck(held={})       # the engine holds the atoms: their sizes are never read from the deck
     done = 0
+    # whether the last command read was a run that joined the last stage and nothing read since:
+    # a run then joins it too (a loop's 10 000 runs, each key of the settings computed once)
+    same = False
     for cmd in commands:
         try:
             split = words(cmd.text)
@@ -119,14 +123,25 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
         if not split or split[0] in _ENGINE_ONLY:
             continue
-        if cmd.stage is not None:
+        plain_run = split[0] == "run" and "every" not in split
+        if cmd.stage is not None and cmd.snapshot is not False:
             if done >= len(atoms):
                 # the engine was stopped before this run wrote its atoms (its budget ran out): what
                 # it held from here on is unknown, so the audit ends at the last run it saw
                 break
             _held(deck, atoms[done], radius or {}, density or {})
             done += 1
+            same = False
+        elif cmd.stage is not None and same and plain_run:
+            deck.stages[-1][0].append((cmd.loc, cmd.text))
+            continue
+        elif cmd.stage is not None and done:
+            # a run that wrote no atoms saw those of the run before (the engine found nothing in
+            # between that changes them): held again, over what the commands since say of sizes
+            _held(deck, atoms[done - 1], radius or {}, density or {})
+        runs = (len(deck.stages), len(deck.stages[-1][0]) if deck.stages else 0)
         _execute(deck, split, cmd.text, cmd.loc, read_file)
+        same = plain_run and runs == (len(deck.stages), len(deck.stages[-1][0]) - 1 if deck.stages else -1)
     if not deck.stages:
         if not atoms:
             # no run and no end reached: "no particle" would be a guess, never a reading
@@ -524,10 +539,14 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if style in _INSERTING_FIXES:
         deck.inserting = True
         typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()
-        deck.inserts.append({int(words[5])} if typed else None)
+        made = {int(words[5])} if typed else None
+        # a fix defined again (a loop of 10 000 pours) adds nothing new: kept once
+        if made not in deck.inserts:
+            deck.inserts.append(made)
         if words[2] != "all":
-            deck.filled_groups.setdefault(words[2], []).append(
-                (f"fix {words[1]} ({style}) inserts", {int(words[5])} if typed else None))
+            filled = deck.filled_groups.setdefault(words[2], [])
+            if (f"fix {words[1]} ({style}) inserts", made) not in filled:
+                filled.append((f"fix {words[1]} ({style}) inserts", made))
     if style in _SHAPED_TEMPLATES:
         typed = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "atom_type"]
         shaped = [atom_type(typed[0], where, line)] if typed else range(1, deck.ntypes + 1)

@@ -16,23 +16,29 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from .scratch import AUDIT, DYNAMIC, NOOP, Scratch, normalised
-from ..deck_text import TRIPLE, segments
+from ..deck_text import TRIPLE, ScriptError, segments, words
+from ..dialect.child import ATOMS
 
-__all__ = ["Executed", "executed", "skipped", "unchecked", "snapshots", "engine_error"]
+__all__ = ["Executed", "executed", "skipped", "unchecked", "snapshots", "engine_error", "first_unchecked"]
 
 
-@dataclass
+@dataclass(slots=True)
 class Executed:
     """One command the engine ran: ``loc`` (file or None, line) of the deck line it came from,
     ``text`` as the engine ran it, ``stage`` the run marker's number where it is a run's marker
-    (then ``text`` is the run), else None."""
+    (then ``text`` is the run), else None; ``snapshot`` whether that marker wrote the atoms (a
+    LAMMPS marker skips its set-up check and its dump where its run was checked before,
+    :func:`first_unchecked`; None: each marker wrote them)."""
     loc: tuple
     text: str
     stage: int | None = None
+    snapshot: bool | None = None
 
 
 def _echo_lines(echo: str) -> list[str]:
     """The screen's lines, a command whose triple quote spans lines joined into one."""
+    if TRIPLE not in echo:
+        return echo.split("\n")
     out, pending = [], None
     for line in echo.split("\n"):
         pending = line if pending is None else pending + "\n" + line
@@ -46,7 +52,7 @@ def _echo_lines(echo: str) -> list[str]:
 
 def _substituted(line: str) -> bool:
     """Whether the engine substitutes in this line (a $ outside quotes), so echoes it twice."""
-    return any("$" in piece for piece, quote in segments(line) if not quote)
+    return "$" in line and any("$" in piece for piece, quote in segments(line) if not quote)
 
 
 def executed(echo: str, scratch: Scratch) -> list[Executed]:
@@ -77,11 +83,21 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     ...                                    "pair_coeff * * hooke 2 0\\nvariable a equal 2\\n", s)]
     [((None, 1), 'variable a equal 2'), ((None, 2), 'pair_coeff * * hooke 2 0')]
     """
+    prefix = f"include {scratch.root}/stage_"
     marker = re.compile(rf"include {re.escape(str(scratch.root))}/stage_(\d+)")
     tagged = re.compile(rf"{re.escape(scratch.tag)}(\d+|{AUDIT})\s*$")
+    dump = f"write_dump all custom {scratch.root / ATOMS} "
     lines = _echo_lines(echo)
+    # a loop echoes the same few lines thousands of times: each distinct line normalised once
+    keys: dict = {}
+
+    def key_of(line: str) -> str:
+        key = keys.get(line)
+        if key is None:
+            key = keys[line] = normalised(line)
+        return key
     out: list = []
-    k, opened = 0, None
+    k, opened, stage_at = 0, None, None
     ifs: list = []           # the lines echoed whose if or every runs quoted commands, latest last
     files: list = []         # the untagged files an include or jump of the deck opened, innermost last
 
@@ -91,24 +107,28 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
         nonlocal k
         text = key
         while _substituted(text) and k < len(lines) and not tagged.search(lines[k]) and \
-                normalised(lines[k]).split()[:1] == key.split()[:1]:
-            text = normalised(lines[k])
+                key_of(lines[k]).split()[:1] == key.split()[:1]:
+            text = key_of(lines[k])
             k += 1
         return text
 
     while k < len(lines):
         raw = lines[k]
-        key = normalised(raw)
+        key = key_of(raw)
         k += 1
         if not key or _ERROR_CONTEXT.match(key):     # an error quotes the line, tag and all
             continue
-        m = marker.fullmatch(key)
+        m = marker.fullmatch(key) if key.startswith(prefix) else None
         if m:
             stage = int(m.group(1))
             f, n, run = scratch.stages[stage]
-            out.append(Executed((f, n), run, stage))
+            stage_at = len(out)
+            out.append(Executed((f, n), run, stage, False))
             opened = run         # the marker's line of that text, echoed next, is the run itself
             _latest(ifs, (f, n), scratch)
+            continue
+        if key.startswith(dump) and stage_at is not None:
+            out[stage_at].snapshot = True         # the marker's dump of the atoms at this run
             continue
         tag = tagged.search(raw)
         if tag and tag.group(1) == AUDIT:
@@ -222,6 +242,75 @@ def unchecked(commands: list, scratch: Scratch) -> list:
     [((None, 2), '${c} 1')]
     """
     return [scratch.dynamic[k] for k in _marks(commands, _UNCHECKED)]
+
+
+#: Commands that change nothing a run's set-up checks or the audit reads: the script's control flow
+#: (the commands an if or include runs are echoed, and judged, each on its own). A variable is one
+#: of them only where no command names it as v_NAME (evaluated at a run's set-up, or per atom)
+_QUIET = frozenset({"label", "jump", "if", "include", "next", "variable"})
+#: Inserting fixes and the place of their random seed: a fix redefined with another seed alone
+#: inserts the same sizes, and LAMMPS' set-up checks nothing of the seed
+_SEEDED = {"pour": 6, "deposit": 7}
+
+
+def first_unchecked(commands: list, scratch: Scratch) -> int | None:
+    """The place in ``commands`` of the first run whose marker skipped the engine's set-up check and
+    its dump of the atoms (``snapshot`` False: a LAMMPS marker does both at its first run only)
+    although a command since the last check may have changed what a run checks or sees; None
+    where every such run followed only commands that change nothing of it (variables no command
+    reads as v_NAME, labels, jumps, ifs, includes, and fixes defined again as they were at the
+    check, an inserting fix's seed aside). Those runs then saw the atoms and the contact of the
+    last check, which the engine had checked.
+
+    Parameters
+    ----------
+    commands : list of Executed
+    scratch : Scratch
+        The copy the engine ran (every command of its files: which variables are read as v_NAME).
+
+    Returns
+    -------
+    int or None
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"))
+    >>> run, again = Executed((None, 3), "run 1", 0, True), Executed((None, 3), "run 1", 0, False)
+    >>> first_unchecked([run, Executed((None, 4), "variable i equal 2"), again], s) is None
+    True
+    >>> first_unchecked([run, Executed((None, 4), "pair_coeff * * hooke 2 0"), again], s)
+    2
+    """
+    text = " ".join(scratch.lines)
+    read = None if re.search(r"\bv_\$", text) else set(re.findall(r"\bv_(\w+)", text))
+    fixes: dict = {}
+    at_check: dict = {}
+    changed = False
+    for n, cmd in enumerate(commands):
+        if cmd.stage is not None:
+            if cmd.snapshot is not False:
+                changed, at_check = False, dict(fixes)
+            elif changed:
+                return n
+            continue
+        try:
+            split = words(cmd.text)
+        except ScriptError:
+            changed = True
+            continue
+        if not split:
+            continue
+        if split[0] in ("variable", "next"):
+            names = split[1:2] if split[0] == "variable" else split[1:]
+            changed = changed or read is None or any(name in read for name in names)
+        elif split[0] == "fix" and len(split) > 3:
+            seed = _SEEDED.get(split[3])
+            fixes[split[1]] = split[:seed] + split[seed + 1:] if seed is not None else split
+            changed = changed or at_check.get(split[1]) != fixes[split[1]]
+        elif split[0] not in _QUIET:
+            changed = True
+    return None
 
 
 _SKIPPED = re.compile(NOOP.format(r"(\d+)"))

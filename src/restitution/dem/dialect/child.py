@@ -15,14 +15,19 @@ from typing import Protocol
 
 from .sandbox import available as confining, confine
 
-__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "run_child"]
+__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "MAX_ECHO", "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
 ATOMS = "atoms"
 #: The file of the atoms where the deck ends
 ATOMS_AT_END = "atoms_end"
-#: A pass that writes more than this is stopped like one out of time
+#: A pass whose atoms files grow beyond this is stopped like one out of time
 _MAX_OUTPUT = 512 * 2 ** 20
+#: The most of an engine's screen (its echo) the audit reads: a pass that writes more is stopped
+#: there like one out of time. A loop without a run echoes megabytes a second, and every line read
+#: costs the audit's own memory and time (about 0.1 s a MB); the 10 000 runs of a real pour loop
+#: echo 11 MB
+MAX_ECHO = 16 * 2 ** 20
 
 
 @dataclass
@@ -43,6 +48,9 @@ class EngineRun:
         Whether the budget ended it.
     status : int or None
         Its exit status (negative where the budget's kill ended it).
+    spent : str
+        Where the budget ended it, the part of the budget that ran out ("20 s of wall time", "16 MB
+        of echo"); "" where it ended by itself.
 
     Examples
     --------
@@ -55,6 +63,7 @@ class EngineRun:
     error: str
     timed_out: bool
     status: int | None = None
+    spent: str = ""
 
 
 class DeckRun(Protocol):
@@ -85,11 +94,13 @@ class DeckRun(Protocol):
         the deck's run ``run_text`` in the scratch copy (``root`` the scratch directory), which runs
         as far as the engine must and then appends the atoms to ``root``/ATOMS."""
 
-    def run_copy(self, deck: Path, root: Path, budget: float, original: Path | None = None) -> EngineRun:
+    def run_copy(self, deck: Path, root: Path, budget: float, original: Path | None = None,
+                 check_every: bool = False) -> EngineRun:
         """Run the scratch copy ``deck`` (its folder the working directory; ``root`` the scratch
         directory of its screen and atoms files) in the engine within ``budget`` seconds of wall
         time, confined to ``root`` where ``original`` (the deck's own folder) is given and the
-        system allows it (:func:`restitution.dem.dialect.child.run_child`)."""
+        system allows it (:func:`restitution.dem.dialect.child.run_child`). A marker met again
+        may skip the engine's set-up and its dump of the atoms, unless ``check_every``."""
 
 
 def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, screen_is_stdout: bool = False,
@@ -137,20 +148,40 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
     with open(screen, "wb") if screen_is_stdout else open(os.devnull, "wb") as stdout:
         proc = subprocess.Popen(argv, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=stdout,
                                 stderr=subprocess.PIPE, text=True, preexec_fn=confined)
-    timed_out = False
+    spent = ""
     while True:
         try:
             _, err = proc.communicate(timeout=0.05)
             break
         except subprocess.TimeoutExpired:
-            out = sum(p.stat().st_size for p in (screen, root / ATOMS) if p.exists())
-            if time.monotonic() - start > budget or out > _MAX_OUTPUT:
-                timed_out = True
+            echoed, written = (p.stat().st_size if p.exists() else 0 for p in (screen, root / ATOMS))
+            if time.monotonic() - start > budget:
+                spent = f"{budget:g} s of wall time"
+            elif echoed > MAX_ECHO:
+                spent = f"{MAX_ECHO / 2 ** 20:g} MB of echo"
+            elif written > _MAX_OUTPUT:
+                spent = f"{_MAX_OUTPUT / 2 ** 20:g} MB of atoms written"
+            if spent:
                 proc.kill()
                 _, err = proc.communicate()
                 break
-    echo = screen.read_text(errors="replace") if screen.exists() else ""
+    # (the budget's kill is no error of the engine's)
+    error = "" if spent or proc.returncode == 0 else err.strip()
+    if not spent and screen.exists() and screen.stat().st_size > MAX_ECHO:
+        spent = f"{MAX_ECHO / 2 ** 20:g} MB of echo"      # ended between two looks: its end is not read
+    echo = _head(screen, MAX_ECHO)
     atoms, at_end = ((root / name).read_text(errors="replace") if (root / name).exists() else ""
                      for name in (ATOMS, ATOMS_AT_END))
-    error = "" if timed_out or proc.returncode == 0 else err.strip()
-    return EngineRun(echo, atoms, at_end, error, timed_out, proc.returncode)
+    return EngineRun(echo, atoms, at_end, error, bool(spent), proc.returncode, spent)
+
+
+def _head(path: Path, cap: int) -> str:
+    """The text of the file at ``path`` up to ``cap`` bytes, cut after its last whole line there
+    ("" where there is no file): what the engine wrote after the cap is never read."""
+    if not path.exists():
+        return ""
+    with open(path, "rb") as f:
+        data = f.read(cap + 1)
+    if len(data) > cap:
+        data = data[:data.rfind(b"\n", 0, cap) + 1]
+    return data.decode(errors="replace")

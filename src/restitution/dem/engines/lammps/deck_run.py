@@ -1,7 +1,11 @@
 """LAMMPS interprets a deck itself: its scratch copy (:mod:`restitution.dem.deck.scratch`) runs in
 the real engine with every run skipped (``-skiprun``) and every command echoed after LAMMPS' own
 substitution (``-echo screen``), in a child process with a wall-time budget. Each run's marker
-writes the atoms' type, radius and mass as LAMMPS holds them then.
+lets LAMMPS set up a run of no step (its checks before every run) and writes the atoms' type,
+radius and mass as LAMMPS holds them then; a marker met again (a loop) does neither, unless the
+pass is made with ``check_every``: the audit checks afterwards that nothing in between changed
+what a run checks or sees (:func:`restitution.dem.deck.stream.first_unchecked`), else it runs the
+deck again so. A set-up costs LAMMPS milliseconds, and a loop of 10 000 runs paid them all.
 """
 
 from __future__ import annotations
@@ -34,6 +38,10 @@ except Exception as exc:
     sys.exit(3)
 lmp = lammps.lammps(cmdargs=["-skiprun", "-echo", "screen", "-log", "none", "-nocite", "-screen", sys.argv[2]])
 try:
+    # the markers' flags: every marker checks its first run; a later one too where every is 1
+    lmp.command(f"variable restitution_every string {sys.argv[5]}")
+    for k in range(int(sys.argv[4])):
+        lmp.command(f"variable restitution_check_{k} string 1")
     lmp.file(sys.argv[1])
     # the atoms where the deck ends (a deck that ends on clear holds none, nor a box to dump)
     if lmp.extract_setting("box_exist"):
@@ -60,19 +68,19 @@ def marker(root: Path):
     --------
     >>> print(marker(Path("/s"))(0, "run 10"))
     run 10
-    timer timeout off
-    run 0 post no
-    timer timeout 0 every 1
-    write_dump all custom /s/atoms type radius mass modify format float %.17g append yes
+    if "${restitution_check_0} != 0" then "variable restitution_check_0 string ${restitution_every}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" "write_dump all custom /s/atoms type radius mass modify format float %.17g append yes"
     <BLANKLINE>
     """
     def text(k: int | None, run: str) -> str:
         if k is None:        # a quit: LAMMPS ends the process there, the deck's end
             return f"{_ending(root)}{run}\n"
         # -skiprun skips a run's set-up too: a run of no step, timeout lifted, makes LAMMPS check
-        # what it checks before every run (all pair coefficients set, ...)
-        return (f"{run}\ntimer timeout off\nrun 0 post no\ntimer timeout 0 every 1\n"
-                f"{_dump(root / ATOMS)} append yes\n")
+        # what it checks before every run (all pair coefficients set, ...); at the marker's first
+        # run, and at every run where the pass checks every one (run_copy's check_every). One line,
+        # no & continuation: the scratch copy tags each of the marker's lines with a comment
+        return (f'{run}\nif "${{restitution_check_{k}}} != 0" then "variable restitution_check_{k} string '
+                '${restitution_every}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" '
+                f'"{_dump(root / ATOMS)} append yes"\n')
     return text
 
 
@@ -96,15 +104,21 @@ def _ending(root: Path) -> str:
     return f"{_dump(root / ATOMS_AT_END)}\n"
 
 
-def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None) -> EngineRun:
-    """Run the scratch copy ``deck`` in LAMMPS, runs skipped, within ``budget`` seconds.
+def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
+             check_every: bool = False) -> EngineRun:
+    """Run the scratch copy ``deck`` in LAMMPS, runs skipped, within ``budget`` seconds: each
+    marker's set-up check and dump at its first run, or at every run with ``check_every``.
 
     The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
+    for name in (ATOMS, ATOMS_AT_END):      # a pass made again starts afresh (its markers append)
+        (root / name).unlink(missing_ok=True)
+    stages = sum(1 for _ in root.glob("stage_*"))
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "PYTHONPATH", "LANG")}
     env.update(HOME=str(root), OMP_NUM_THREADS="1")
     env.update(TMPDIR=str(root))
-    done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), _ending(root).strip()],
+    done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), _ending(root).strip(),
+                      str(stages), "1" if check_every else "0"],
                      deck.parent, env, root, budget, original=original, readable=_python_folders())
     if done.status and not done.error and not done.timed_out:     # (the budget's kill is no error of LAMMPS')
         done.error = f"LAMMPS ended with status {done.status}"

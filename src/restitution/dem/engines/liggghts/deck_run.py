@@ -61,8 +61,10 @@ def _ending(root: Path) -> str:
     return f"write_dump all custom {root / ATOMS_AT_END} type radius mass {_FORMAT}\n"
 
 
-def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None) -> EngineRun:
-    """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step, within ``budget`` seconds.
+def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
+             check_every: bool = True) -> EngineRun:
+    """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step, within ``budget`` seconds
+    (every marker runs its step and writes the atoms: ``check_every`` is always so here).
 
     The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
