@@ -85,7 +85,7 @@ def lammps_design(pair: Pair, *, eps: float, g: float, normal: str, damping: str
     >>> pair = Pair.spheres(0.001, 0.001, 2500.0)
     >>> d = lammps_design(pair, eps=0.7, g=1.0, normal="hertz", damping="viscoelastic", limit_damping=True, k_n=1e6)
     >>> d["pair_coeff"]
-    'pair_coeff * * hertz 1000000 8882138.73724 damping viscoelastic tangential linear_nohistory 0 0 limit_damping'
+    'pair_coeff * * hertz 1000000 8882138.73725 damping viscoelastic tangential linear_nohistory 0 0 limit_damping'
     >>> round(d["eps"], 9)
     0.7
     """
