@@ -50,6 +50,7 @@ pair_coeff      1 1 hertz/material 6.3e10 ${e} 0.22 damping tsuji tangential lin
 pair_coeff      2 2 hertz/material 2.0e11 0.8 0.29 damping tsuji tangential linear_nohistory 0 0
 pair_coeff      1 2 hertz/material 9.5e10 2.0e10 0.25 damping viscoelastic tangential linear_nohistory 0 0
 fix             floor all wall/gran granular hertz/material 2.0e11 0.8 0.29 damping tsuji tangential linear_nohistory 0 0 zplane 0.0 NULL
+fix             integrate all nve/sphere
 timestep        1e-7
 run             1000
 """
@@ -122,6 +123,7 @@ fix             m3 all property/global coefficientRestitution peratomtypepair 1 
 fix             m4 all property/global coefficientFriction peratomtypepair 1 0.5
 pair_style      gran model hertz tangential history limitForce on
 pair_coeff      * *
+fix             integrate all nve/sphere
 run             1
 """)
 print(subprocess.run([exe, "deck", "in.liggghts", "--g", "1"], capture_output=True, text=True).stdout)
