@@ -78,6 +78,10 @@ PIPELINE_WORDS = [r"ledger", r"\(tolerance", r"config", r"\.py\b", r"\.smk\b", r
                   r"\bmake\s+(paper|check|test|expected|arxiv|bench|venv|outputs|report|diff|scene|verify|notebooks)\b",
                   r"restitution\.(core|audit|fast|dem|cli)", r"pipeline", r"\bscript",
                   r"results/", r"\bcommit\b", r"\bmacro", r"\brow\s+\d", r"\bmodule\b"]
+#: Names the library gives its methods, which a reader of either document should meet only as what they are
+#: mathematically (a Chebyshev interpolant, an integration at a stated tolerance, the validation points).
+METHOD_WORDS = [r"ledger", r"master curve", r"\bcompiled (integrator|version)", r"scipy reference", r"choice points",
+                r"collide \(scipy\)"]
 RULE_NAMES = sorted({m for smk in (ROOT / "workflow" / "rules").glob("*.smk")
                      for m in re.findall(r"^rule (\w+):", smk.read_text(), re.M) if "_" in m})
 
@@ -134,3 +138,30 @@ def test_the_articles_main_text_names_no_part_of_the_pipeline():
     _, text = _pdf_text(ARTICLE_PDF)
     assert AVAILABILITY in text
     assert pipeline_vocabulary(main_text(text)) == []
+
+
+SUPPLEMENT_PDF = ROOT / "results" / "paper" / "supplement.pdf"
+#: Where the supplement names the code: its last section and what follows it (the appendix is checked).
+SUPPLEMENT_CODE = "Where the pieces are"
+
+
+def method_vocabulary(text: str) -> list[str]:
+    """The library's method names found in ``text``."""
+    return [w for w in METHOD_WORDS if re.search(w, text, re.I)]
+
+
+def test_the_method_vocabulary_check_finds_a_library_name():
+    assert method_vocabulary("fitted to the compiled integrator; see the claims ledger and the master curve") == [
+        r"ledger", r"master curve", r"\bcompiled (integrator|version)"]
+    assert method_vocabulary("an eighth-order Dormand-Prince integration at relative tolerance 1e-14") == []
+
+
+@needs_pdf
+def test_neither_document_calls_a_method_by_its_library_name():
+    _, article = _pdf_text(ARTICLE_PDF)
+    assert method_vocabulary(main_text(article)) == []
+    if SUPPLEMENT_PDF.exists():
+        _, supplement = _pdf_text(SUPPLEMENT_PDF)
+        before, _, after = supplement.partition(SUPPLEMENT_CODE)
+        appendix = after.split("Numerical stability at the extremes", 1)[-1] if after else ""
+        assert method_vocabulary(before) == [] and method_vocabulary(appendix) == []

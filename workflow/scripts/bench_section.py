@@ -7,7 +7,6 @@
 
 # %%
 import math
-import os
 
 import pandas as pd
 from restitution_workflow.latex import esc, sci
@@ -25,6 +24,28 @@ rows = bench[(bench["alpha"] == ex["alpha"]) & (bench["gamma"] == ex["gamma"])]
 rows = rows[rows["max_rel_err"].notna() & (rows["max_rel_err"] > 0)]
 
 
+# What each recorded method is, in the words of the manuscript (the recorded names are the library's).
+SHOWN = {
+    "master": r"Chebyshev in $\ln\Omega$",
+    "closed-form": "uniform approx.",
+    "viscous": "viscous limit",
+    "elastic": "elastic limit",
+    "paper-c": "Kim, printed $c_i$",
+    "fitted-c": "Kim, fitted $c_i$",
+    "integrator": "DOP853, machine code",
+    "solve_ivp plain": r"SciPy DOP853, $x(\tau)$",
+    "collide (scipy)": "SciPy DOP853, regularised",
+}
+READING_PREFIX = "perturbation-"
+
+
+def shown(method):
+    """The manuscript's name of a recorded method; a matching reading keeps its label (N1, ...)."""
+    if method.startswith(READING_PREFIX):
+        return "reading " + method[len(READING_PREFIX):]
+    return SHOWN.get(method, esc(method))
+
+
 def err(x):
     return "no value" if not math.isfinite(x) else sci(float(x), 2)
 
@@ -37,7 +58,7 @@ for _, r in rows.iterrows():
     domain = f"{sci(float(r['omega_min']), 1)}--{sci(float(r['omega_max']), 1)}"
     # the recorded setting "C1,C2,E" names the end-of-contact coefficient E, which the article calls beta
     setting = esc(str(r["setting"])).replace("C1,C2,E", r"$C_1, C_2, \beta$")
-    lines.append(f"{esc(r['method'])} & {setting} & {sci(float(r['evals_per_s']), 2)} & "
+    lines.append(f"{shown(r['method'])} & {setting} & {sci(float(r['evals_per_s']), 2)} & "
                  f"{err(r['max_rel_err'])} & {err(r['median_rel_err'])} & {domain} & {int(r['n_points'])} \\\\")
 lines += [r"\bottomrule", r"\end{tabular}"]
 write_text(snakemake.output.table, "\n".join(lines))
@@ -91,8 +112,12 @@ for method, group in rows.groupby("method", sort=True):
     else:
         entries.append([[method], finite])
 for i, (methods, finite) in enumerate(entries):
-    cut = os.path.commonprefix(methods).rfind("-") + 1 if len(methods) > 1 else 0
-    label = methods[0] if len(methods) == 1 else methods[0][:cut] + ", ".join(m[cut:] for m in methods) + " (one point)"
+    if len(methods) == 1:
+        label = shown(methods[0])
+    elif all(m.startswith(READING_PREFIX) for m in methods):
+        label = "readings " + ", ".join(m[len(READING_PREFIX):] for m in methods) + " (one point)"
+    else:
+        label = ", ".join(shown(m) for m in methods) + " (one point)"
     ax.plot(finite["cost_per_eval_s"], finite["max_rel_err"], marker=markers[i % len(markers)], markersize=7.0,
             markerfacecolor="none", markeredgewidth=1.2, color=colors[(2 * i) % 20 + (i // 10) % 2], linestyle="-",
             label=label)

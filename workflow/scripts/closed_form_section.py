@@ -16,7 +16,8 @@ from restitution_workflow.pipeline import read_json, save_figure, setup_matplotl
 
 from restitution.core import asymptotics as asy
 from restitution.core.collision import OMEGA_RANGE, collide
-from restitution.core.uniform import DEGREE_STEP, SELECTION_TARGET, UniformForm
+from restitution.core.uniform import DEGREE_STEP, OVERLAP_P, SELECTION_TARGET, UniformForm
+from restitution.fast.uniform_build import FIT_RTOL
 
 start(snakemake)
 plt = setup_matplotlib()
@@ -59,7 +60,7 @@ ax.set_ylabel(r"relative error in $\varepsilon$ (elastic law: in $1 - \varepsilo
 ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$", fontsize=10)
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False)
 fig.set_layout_engine("tight", rect=(0, 0.25, 1, 1))   # redone when save_figure resizes
-save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=0.8)
+save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=0.7)
 err_elastic_gmin, err_viscous_gmax = float(rel_loss(law_elastic)[0]), float(rel(law_viscous)[-1])
 LAW_TOL = 0.01
 ok_el = np.nonzero(rel_loss(law_elastic) <= LAW_TOL)[0]
@@ -181,6 +182,8 @@ macros = {
     # the fitted ones, which choose the shape) and the random test points, used for nothing else
     "CFValidationPoints": str(main["measured"]["n_selection"]), "CFTestPoints": str(main["measured"]["n_test"]),
     "CFTestEps": sci(main["measured"]["test_eps"], 2),
+    "CFTestLoss": sci(main["measured"]["test_one_minus_eps"], 2),
+    "CFFitRtol": sci(FIT_RTOL, 1),
     "CFOverlapBoundEps": sci(main_overlap["bound_eps"], 2) if main_overlap["available"] else "none",
     "CFOverlapBoundLoss": sci(main_overlap["bound_one_minus_eps"], 2) if main_overlap["available"] else "none",
     "CFViscousK": sci(V.k, 6), "CFElasticCOne": sci(E.C1, 6),
@@ -316,11 +319,11 @@ $\sigma s_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci
 leading order only at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
 {sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The error figures below, measured over
 $10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($n = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
-where the error on the choice points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
-the compiled integrator on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
+where the error on the validation points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
+integrations at relative tolerance $\CFFitRtol$ on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
 the shape $(\sigma, s_0, s_1)$ is chosen by the error on the points in between, and the error figure stated is twice the
 largest relative error on those validation points and on {main['measured']['n_test']} test points drawn at random in
-$[10^{{-8}}, 10^{{8}}]$ and used for nothing else, where $\varepsilon$ and $1 - \varepsilon$ come from the scipy reference, plus that reference's accuracy
+$[10^{{-8}}, 10^{{8}}]$ and used for nothing else, where $\varepsilon$ and $1 - \varepsilon$ come from independent integrations in the variables of Sec.~\ref{{sec:reference}}, plus their accuracy
 (\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
 proven bound. A variant with $\alpha \leq \gamma$ has no such form:
 for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
@@ -334,7 +337,7 @@ written out (Sec.~\ref{{sec:reproduce}}).
 \begin{{figure}}[htbp]
 \centering
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
-\caption{{Relative error of the uniform approximations against the compiled integrator, in $\varepsilon$ (left) and in
+\caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (left) and in
 $1 - \varepsilon$ (right), for every variant that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
 Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on the validation and test points, plus the reference's accuracy), each marked at its right end with its variant's marker. Made by
 \texttt{{closed\_form\_section.py}}.}}
@@ -344,12 +347,12 @@ Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10
 \paragraph{{The overlap rule in one formula.}}
 Where contact lasts until the overlap is back to zero (the default of the DEM codes, Sec.~\ref{{sec:dem}}), fast
 impacts follow the creep law $\varepsilon = C\,\Omega^{{\kappa}}$, $\kappa = (\gamma+1)/(2\gamma+1-\alpha)$,
-up to a correction that vanishes like $\exp(-c/\Omega)$, and slow ones the same elastic limit as above. For
+up to a correction that vanishes like $\exp(-\vartheta/\Omega)$, and slow ones the same elastic limit as above. For
 $\gamma < \alpha < 2\gamma + 1$ (where the bodies cannot stick) one formula joins the two, with $\bar z = \bar b\,\Omega$,
-$\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and $P = 4$ (bars mark the constants of this form, which differ from those of
+$\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P} of $\bar z$ below fixed (bars mark the constants of this form, which differ from those of
 Eq.~(\ref{{eq:uniform}})):
 \begin{{equation}}
-\frac{{1}}{{\varepsilon}} = \frac{{\bar z^P}}{{1 + \bar z^P}} + \Lambda \bar z^{{-\kappa}} (1 + \bar z^P)^{{(\kappa - \nu)/P}}
+\frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Lambda \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
 \exp\!\Big[\exp(-\rho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar n}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
@@ -364,8 +367,7 @@ the error of $C$. The error figure for the main variant is {sci(main_overlap['bo
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly when
-$\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the overlap rule's master
-curve and the integrators cover those pairs.
+$\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the integrations cover those pairs.
 
 \begin{{table}}[htbp]
 \centering\footnotesize

@@ -32,11 +32,13 @@ from ..core.overlap_limit import overlap_limit
 from ..core.uniform import FORM_RANGE, UniformForm, fit_uniform, rel_errors
 from .master import reference_eps
 
-__all__ = ["build_uniform", "GRID_STEP", "N_TEST", "BOUND_FACTOR", "REFERENCE_ACCURACY"]
+__all__ = ["build_uniform", "GRID_STEP", "N_TEST", "BOUND_FACTOR", "REFERENCE_ACCURACY", "FIT_RTOL"]
 
 GRID_STEP = 0.05
 N_TEST = 32
 BOUND_FACTOR = 2.0
+#: Relative tolerance of the integrations the coefficients are fitted to (the manuscript prints it).
+FIT_RTOL = 1e-14
 #: Accuracy of the references (relative): integrator at rtol 1e-14, scipy reference at 1e-12.
 REFERENCE_ACCURACY = 1e-11
 #: eps of the form must lie in (0, 1) on this many points across its range.
@@ -85,7 +87,7 @@ class _References:
         """eps from the compiled integrator at rtol 1e-14 (or the law)."""
         law = self._split(om)
         eps = np.empty(om.size)
-        eps[~law] = reference_eps(self.problem, om[~law], 1e-14)
+        eps[~law] = reference_eps(self.problem, om[~law], FIT_RTOL)
         if law.any():
             eps[law] = self.law(om[law])
         return eps
