@@ -1,5 +1,6 @@
 """What eps does an input deck really give? A reader of LAMMPS (``pair_style granular``) and
-LIGGGHTS (``pair_style gran model hertz|hooke``) input scripts, for every type pair.
+LIGGGHTS (``pair_style gran model hertz|hooke|hertz/stiffness|hooke/stiffness``) input scripts, for
+every type pair.
 
 The reader takes only what decides a head-on two-sphere contact: the contact model and its
 coefficients per type pair, the end-of-contact keyword, and each type's radius and density.

@@ -390,7 +390,7 @@ def contact_key(deck: Deck) -> str:
             return tuple(plain(v) for v in x)
         return x
     return repr(plain((deck.code, deck.style, deck.ntypes, deck.radius, deck.density, deck.units, deck.soft,
-                       deck.hard, deck.model, deck.limit_force, deck.gran, deck.atom_style, deck.missing,
+                       deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
                        set(deck.shapes), deck.sizes, deck.others, [w for _, w in deck.beside],

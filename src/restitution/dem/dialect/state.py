@@ -72,6 +72,7 @@ class Deck:
     prop_fix: dict = field(default_factory=dict)  # LIGGGHTS property/global name -> "fix ID group"
     model: str = ""                               # LIGGGHTS normal model
     limit_force: bool = False
+    absolute_damping: bool = False                # LIGGGHTS hooke/stiffness: gamman_abs, not m gamman
     style_line: tuple = ()                        # ((file, line number), text) of pair_style
     unknown: list = field(default_factory=list)   # (file or None, line number, text, why) not understood
     ignored: list = field(default_factory=list)   # what the audit passed over on purpose
