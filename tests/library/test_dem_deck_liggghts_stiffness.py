@@ -15,13 +15,11 @@ import math
 import pytest
 
 from cli_run import run_cli
+from deck_cli import needs_liggghts
 from restitution.dem.contact import Contact
 from restitution.dem.engines.liggghts import run as liggghts_run
 from restitution.dem.extrapolate import richardson
 from restitution.dem.pair import Pair
-
-needs_liggghts = pytest.mark.skipif(not liggghts_run.available(), reason="LIGGGHTS not installed: as root, apt-get "
-                                    "install liggghts (make test does it)")
 
 BOX = """atom_style granular
 atom_modify map array
@@ -203,3 +201,34 @@ def test_liggghts_gives_what_the_audit_says_of_a_wall(tmp_path, name, properties
     fix = wall.replace("fix w ", "fix wall ").replace("zplane -0.04", "zplane 0.0")
     assert _engine(lines, PAIRS[(1, 1)], row, fix) == pytest.approx(row["eps"], abs=TOL)
 
+
+# ---------------------------------------------------------------- cylinders: planes to LIGGGHTS
+#: A sphere of radius 5 mm inside a cylinder of radius 7.5 mm: were the wall's curvature in the
+#: effective radius, hertz/stiffness's eps would be 0.33 (LAMMPS' convention) or 0.28, not 0.358
+DRUM = "fix w all wall/gran model hertz/stiffness tangential history primitive type 2 {}\n"
+
+
+@needs_liggghts
+def test_a_liggghts_cylinder_is_audited_as_a_plane_and_says_why(tmp_path):
+    _, cyl, _ = audit(tmp_path, deck(2, HERTZ_2, STYLE.format("hertz/stiffness"), DRUM.format("zcylinder 0.0075 0 0")),
+                      (0.5, 2.0))
+    _, plane, _ = audit(tmp_path, deck(2, HERTZ_2, STYLE.format("hertz/stiffness"), DRUM.format("zplane -0.04")),
+                        (0.5, 2.0))
+    (row,) = cyl["walls"]
+    assert row["eps"] == plane["walls"][0]["eps"] and cyl["unknown_lines"] == []
+    assert ("zcylinder wall (audited as a flat wall: LIGGGHTS takes the sphere's own radius as the effective radius "
+            "against every wall)") in row["model"]
+
+
+@needs_liggghts
+@pytest.mark.dem
+@pytest.mark.slow
+def test_a_liggghts_cylinder_is_a_plane_to_liggghts(tmp_path):
+    """The sphere inside an xcylinder of radius 7.5 mm (its axis along x, its lowest line at z = 0),
+    falling onto it head-on: LIGGGHTS gives the plane's eps within 1e-8, extrapolated."""
+    _, res, _ = audit(tmp_path, deck(2, HERTZ_2, STYLE.format("hertz/stiffness"), DRUM.format("zcylinder 0.0075 0 0")),
+                      (0.5, 2.0))
+    (row,) = res["walls"]
+    lines = "create_box 2 box\n" + HERTZ_2 + STYLE.format("hertz/stiffness") + "\npair_coeff * *"
+    drum = DRUM.format("xcylinder 0.0075 0 0.0075").replace("fix w ", "fix wall ")
+    assert _engine(lines, PAIRS[(1, 1)], row, drum) == pytest.approx(row["eps"], abs=TOL)

@@ -14,8 +14,11 @@ one line (DeckError, exit status 2 in the CLI).
 Flat walls (``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes and
 the faces of meshes, of the type their ``fix mesh/surface`` gives) are audited as a sphere of each
 type they act on (``group ID type ...`` or all) hitting them head-on, LAMMPS' older wall models
-(hooke, hooke/history, hertz/history) with their pair style's law; other walls (cylinders,
-regions, a mesh's edges and corners) are named as not audited. A group holds the
+(hooke, hooke/history, hertz/history) with their pair style's law. Cylinders are audited with the
+curvature their engine puts in the contact: LAMMPS' zcylinder, met from inside, with the effective
+radius R 2Rc / (2Rc - R) LAMMPS gives it; LIGGGHTS' primitive cylinders as planes (LIGGGHTS takes
+the sphere's own radius as the effective radius against every wall), which their rows say. Other
+walls (regions, a mesh's edges and corners) are named as not audited. A group holds the
 atoms present when it is defined (and those a later command inserts into it): a group by type
 defined before any atom exists holds none, and its wall, acting on no atom, is named as not
 audited; a LAMMPS pour or deposit into the group adds the type it pours, a LIGGGHTS insert fix

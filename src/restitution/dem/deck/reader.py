@@ -632,14 +632,16 @@ def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
 
 
 def _region_wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
-    """fix ID group wall/gran/region: named, not audited (its curvature and its model are not
-    read), with the types of the spheres it acts on where its group tells them."""
+    """fix ID group wall/gran/region: named, not audited (LAMMPS gives each surface of the region
+    its own curvature in the effective radius, which needs the region read; it is not), with the
+    types of the spheres it acts on where its group tells them."""
     group = words[2]
     held = sorted(deck.groups.get(group) or ()) if group != "all" else ()
     on = "every sphere" if group == "all" else f"group {group}" + (
         f" (type{'s' if len(held) > 1 else ''} {', '.join(map(str, held))})" if held else "")
-    deck.unknown.append((*loc, line, f"a region wall (any shape): its contacts are not audited; the spheres it "
-                                     f"acts on: {on}"))
+    deck.unknown.append((*loc, line, "a region wall: the engine gives each surface of the region its own curvature "
+                                     "in the contact (LAMMPS: a cylinder's side -2R, a plane none), and the reader "
+                                     f"does not read regions: its contacts are not audited; the spheres it acts on: {on}"))
 
 
 #: fix style -> (its least number of words, what it does to the deck): the engines' alike, then each

@@ -176,7 +176,9 @@ class DeckDialect(Protocol):
 
 #: The audit lists every type pair, N (N + 1) / 2 of them: a deck with more types is refused.
 MAX_TYPES = 100
-#: Walls the audit takes: planes (a sphere against a flat wall). Curved ones are named, not audited.
+#: Flat walls (a sphere against a plane). Curved ones are each dialect's: audited with the
+#: curvature its engine puts in the contact (LAMMPS' zcylinder), as planes where the engine puts
+#: none (LIGGGHTS' cylinders), or named, not audited (region walls).
 FLAT_WALLS = ("xplane", "yplane", "zplane")
 
 
