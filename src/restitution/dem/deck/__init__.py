@@ -17,8 +17,10 @@ type they act on (``group ID type ...`` or all) hitting them head-on, LAMMPS' ol
 (hooke, hooke/history, hertz/history) with their pair style's law. Cylinders are audited with the
 curvature their engine puts in the contact: LAMMPS' zcylinder, met from inside, with the effective
 radius R 2Rc / (2Rc - R) LAMMPS gives it; LIGGGHTS' primitive cylinders as planes (LIGGGHTS takes
-the sphere's own radius as the effective radius against every wall), which their rows say. Other
-walls (regions, a mesh's edges and corners) are named as not audited. A group holds the
+the sphere's own radius as the effective radius against every wall), which their rows say. LAMMPS'
+region walls (``fix wall/gran/region``), whose every surface has its own curvature, are audited as
+planes where their law does not read the effective radius (the linear laws: no curvature changes
+their contact), else named as not audited, as are a mesh's edges and corners. A group holds the
 atoms present when it is defined (and those a later command inserts into it): a group by type
 defined before any atom exists holds none, and its wall, acting on no atom, is named as not
 audited; a LAMMPS pour or deposit into the group adds the type it pours, a LIGGGHTS insert fix

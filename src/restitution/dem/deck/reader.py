@@ -626,27 +626,15 @@ def _sampled(sizes: list) -> list:
 
 
 def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
-    """fix wall/gran: kept with the types its group holds now; its dialect reads it when audited."""
+    """fix wall/gran or wall/gran/region: kept with the types its group holds now; its dialect
+    reads it when audited."""
     group = words[2]
     deck.walls.append((loc, words, "all" if group == "all" else deck.groups.get(group, "undefined")))
 
 
-def _region_wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
-    """fix ID group wall/gran/region: named, not audited (LAMMPS gives each surface of the region
-    its own curvature in the effective radius, which needs the region read; it is not), with the
-    types of the spheres it acts on where its group tells them."""
-    group = words[2]
-    held = sorted(deck.groups.get(group) or ()) if group != "all" else ()
-    on = "every sphere" if group == "all" else f"group {group}" + (
-        f" (type{'s' if len(held) > 1 else ''} {', '.join(map(str, held))})" if held else "")
-    deck.unknown.append((*loc, line, "a region wall: the engine gives each surface of the region its own curvature "
-                                     "in the contact (LAMMPS: a cylinder's side -2R, a plane none), and the reader "
-                                     f"does not read regions: its contacts are not audited; the spheres it acts on: {on}"))
-
-
 #: fix style -> (its least number of words, what it does to the deck): the engines' alike, then each
 #: dialect's own; shorter, not understood
-_FIXES = {"pour": (7, _pour), "wall/gran": (4, _wall), "wall/gran/region": (4, _region_wall),
+_FIXES = {"pour": (7, _pour), "wall/gran": (4, _wall), "wall/gran/region": (4, _wall),
           **{style: fix for dialect in DIALECTS.values() for style, fix in dialect.FIXES.items()}}
 
 

@@ -322,6 +322,8 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         unknown.append((*loc, text, f"wall model {style} is not mapped (granular, {', '.join(_OLDER_WALLS)} are): "
                                     "the wall's contacts are not audited"))
         return None
+    if words[3] == "wall/gran/region":
+        return _region_wall(deck, loc, words, unknown)
     k = next((n for n, w in enumerate(words) if n > 4 and w in _WALL_STYLES), None)
     if k is None or words[k] not in FLAT_WALLS + ("zcylinder",):
         shape = "no wall style" if k is None else f"a {words[k]} wall"
@@ -366,6 +368,42 @@ def wall(deck: Deck, loc, words: list, unknown: list):
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact
     return [(None, contact_of, None)]
+
+
+def _region_wall(deck: Deck, loc, words: list, unknown: list):
+    """fix ID group wall/gran/region MODEL... region RID [contacts | temperature T]: audited as a
+    plane where its law does not read the effective radius (LAMMPS gives each surface of the
+    region its own curvature in it, a cylinder's side -2R, a plane none, which the reader does not
+    read), else named, not audited. As :func:`wall`'s result."""
+    text = " ".join(words)
+    k = next((n for n in range(5, len(words)) if words[n] == "region"), None)
+    n = len(words) if k is None else k + 2
+    while n < len(words) and words[n] in ("contacts", "temperature"):
+        n += 1 + _LAMMPS_WALL_KEYWORDS[words[n]]
+    if k is None or k + 2 > len(words) or n < len(words):
+        unknown.append((*loc, text, "a region wall not read (MODEL... region ID [contacts | temperature T]): the "
+                                    "wall's contacts are not audited"))
+        return None
+    said: list = []               # its model's refusal, said of the deck's own line
+    surfaces = wall(deck, loc, words[:3] + ["wall/gran"] + words[4:k] + ["zplane", "0", "NULL"], said)
+    if surfaces is None:
+        unknown += [(f, line, text, why) for f, line, _, why in said]
+        return None
+    (_, contact_of, _), = surfaces
+    # the law reads R_eff where a sphere twice as large, of the same mass, gets another contact
+    probes = [contact_of(Pair(r, WALL_SIZE, 1.0, WALL_SIZE), 1)[0] for r in (1.0, 2.0)]
+    if probes[0].as_dict() != probes[1].as_dict():
+        unknown.append((*loc, text, "a region wall whose law reads the effective radius, in which LAMMPS gives each "
+                                    "surface of the region its own curvature (a cylinder's side -2R, a plane none) "
+                                    "and the reader does not read regions: the wall's contacts are not audited"))
+        return None
+    why = ("region wall, audited as a plane: its law does not read the effective radius, so no surface's curvature "
+           "changes the contact")
+
+    def on_region(pair, t):
+        contact, typed, model, exact = contact_of(pair, t)
+        return contact, typed, model.replace("zplane wall", why), None
+    return [(None, on_region, None)]
 
 
 def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list, radius: float | None):

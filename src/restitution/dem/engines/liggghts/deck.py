@@ -355,6 +355,8 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         unknown.append((*loc, text, f"{why}: the wall's contacts are not audited"))
         return None
 
+    if words[3] != "wall/gran":
+        return skip(f"fix {words[3]} is not mapped (LIGGGHTS' walls are fix wall/gran primitives and meshes)")
     k = 4
     while k + 1 < len(words) and words[k] in LIGGGHTS_MODEL_TYPES:
         k += 2
