@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from restitution.cli import main
+from restitution.dem.engines.liggghts import run as liggghts_run
 
 LIGGGHTS_EXAMPLES = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
 LAMMPS_EXAMPLES = Path("/usr/share/lammps/examples")
@@ -17,6 +18,8 @@ needs_liggghts_examples = pytest.mark.skipif(not LIGGGHTS_EXAMPLES.is_dir(), rea
                                              "installed: as root, apt-get install liggghts-doc (make test does it)")
 needs_lammps_examples = pytest.mark.skipif(not (LAMMPS_EXAMPLES / "granular").is_dir(), reason="LAMMPS examples "
                                            "not installed: as root, apt-get install lammps-examples (make test does it)")
+needs_liggghts = pytest.mark.skipif(not liggghts_run.available(), reason="LIGGGHTS not installed: as root, apt-get "
+                                    "install liggghts (make test does it)")
 
 
 def run(*argv):

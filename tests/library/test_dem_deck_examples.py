@@ -23,11 +23,14 @@ def test_liggghts_contact_model_tutorial():
     assert len(pair["speeds"]) == 5 and max(pair["speeds"]) / min(pair["speeds"]) == pytest.approx(100)
     assert all(abs(e - 0.95) < 1e-9 for e in pair["eps"])
     assert pair["exact_line"].endswith("coefficientRestitution peratomtypepair 1 0.95")
-    # its two plane walls (of type 1, hertz) give e as well; the cylinder is named, not audited
+    # its two plane walls and its cylinder (of type 1, hertz) give e as well: the cylinder is a
+    # plane to LIGGGHTS' contact, which takes the sphere's own radius against every wall
     assert [(w["wall"], w["types"], w["wall_type"]) for w in res["walls"]] == [("zwalls1", [1], 1),
-                                                                                ("zwalls2", [1], 1)]
+                                                                                ("zwalls2", [1], 1),
+                                                                                ("cylwalls", [1], 1)]
+    assert "audited as a flat wall" in res["walls"][2]["model"]
     assert all(abs(e - 0.95) < 1e-9 for w in res["walls"] for e in w["eps"])
-    assert [row["text"].split()[1] for row in res["unknown_lines"] if "wall" in row["why"]] == ["cylwalls"]
+    assert [row["text"].split()[1] for row in res["unknown_lines"] if "wall" in row["why"]] == []
     # the same numbers from the dictionary, with the template's radius and density
     contact = liggghts_contact(Pair.spheres(0.0025, 0.0025, 2500.0), E=5e6, nu=0.45, e=0.95)
     assert pair["D1"] == pytest.approx(contact.D1, rel=1e-12) and pair["D2"] == pytest.approx(contact.D2, rel=1e-12)

@@ -13,15 +13,12 @@ from pathlib import Path
 import pytest
 
 from cli_run import run_cli
-from deck_cli import outside_file
+from deck_cli import needs_liggghts, outside_file
 from restitution.dem.engines.liggghts import deck_run
 from restitution.dem.engines.liggghts import run as liggghts_run
 from restitution.dem.engines.liggghts.contact import liggghts_contact
 from restitution.dem.extrapolate import richardson
 from restitution.dem.pair import Pair
-
-needs_liggghts = pytest.mark.skipif(not liggghts_run.available(), reason="LIGGGHTS not installed: as root, apt-get "
-                                    "install liggghts (make test does it)")
 
 HEAD = """atom_style granular
 atom_modify map array

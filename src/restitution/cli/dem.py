@@ -125,7 +125,8 @@ def add_deck_subcommand(subparsers) -> None:
     d = subparsers.add_parser(
         "deck", help="the eps a LAMMPS or LIGGGHTS input deck (or a Kratos MaterialsDEM.json) really gives, for "
                      "every type pair and flat wall",
-        description="Reads pair_style granular (LAMMPS) or pair_style gran model hertz|hooke (LIGGGHTS) decks, and "
+        description="Reads pair_style granular (LAMMPS) or pair_style gran model hertz|hooke|hertz/stiffness|"
+                    "hooke/stiffness (LIGGGHTS) decks, and "
                     "Kratos MaterialsDEM.json files (--radius per material id where the model part gives none). "
                     "One --g: five speeds over two decades around it; several: those speeds.")
     d.add_argument("file", help="the input script")

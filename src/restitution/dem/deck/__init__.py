@@ -1,5 +1,6 @@
 """What eps does an input deck really give? A reader of LAMMPS (``pair_style granular``) and
-LIGGGHTS (``pair_style gran model hertz|hooke``) input scripts, for every type pair.
+LIGGGHTS (``pair_style gran model hertz|hooke|hertz/stiffness|hooke/stiffness``) input scripts, for
+every type pair.
 
 The reader takes only what decides a head-on two-sphere contact: the contact model and its
 coefficients per type pair, the end-of-contact keyword, and each type's radius and density.
@@ -13,8 +14,13 @@ one line (DeckError, exit status 2 in the CLI).
 Flat walls (``fix wall/gran`` planes: LAMMPS ``granular`` models, LIGGGHTS primitive planes and
 the faces of meshes, of the type their ``fix mesh/surface`` gives) are audited as a sphere of each
 type they act on (``group ID type ...`` or all) hitting them head-on, LAMMPS' older wall models
-(hooke, hooke/history, hertz/history) with their pair style's law; other walls (cylinders,
-regions, a mesh's edges and corners) are named as not audited. A group holds the
+(hooke, hooke/history, hertz/history) with their pair style's law. Cylinders are audited with the
+curvature their engine puts in the contact: LAMMPS' zcylinder, met from inside, with the effective
+radius R 2Rc / (2Rc - R) LAMMPS gives it; LIGGGHTS' primitive cylinders as planes (LIGGGHTS takes
+the sphere's own radius as the effective radius against every wall), which their rows say. LAMMPS'
+region walls (``fix wall/gran/region``), whose every surface has its own curvature, are audited as
+planes where their law does not read the effective radius (the linear laws: no curvature changes
+their contact), else named as not audited, as are a mesh's edges and corners. A group holds the
 atoms present when it is defined (and those a later command inserts into it): a group by type
 defined before any atom exists holds none, and its wall, acting on no atom, is named as not
 audited; a LAMMPS pour or deposit into the group adds the type it pours, a LIGGGHTS insert fix

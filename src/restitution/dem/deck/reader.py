@@ -390,7 +390,7 @@ def contact_key(deck: Deck) -> str:
             return tuple(plain(v) for v in x)
         return x
     return repr(plain((deck.code, deck.style, deck.ntypes, deck.radius, deck.density, deck.units, deck.soft,
-                       deck.hard, deck.model, deck.limit_force, deck.gran, deck.atom_style, deck.missing,
+                       deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
                        set(deck.shapes), deck.sizes, deck.others, [w for _, w in deck.beside],
@@ -626,25 +626,15 @@ def _sampled(sizes: list) -> list:
 
 
 def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
-    """fix wall/gran: kept with the types its group holds now; its dialect reads it when audited."""
+    """fix wall/gran or wall/gran/region: kept with the types its group holds now; its dialect
+    reads it when audited."""
     group = words[2]
     deck.walls.append((loc, words, "all" if group == "all" else deck.groups.get(group, "undefined")))
 
 
-def _region_wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
-    """fix ID group wall/gran/region: named, not audited (its curvature and its model are not
-    read), with the types of the spheres it acts on where its group tells them."""
-    group = words[2]
-    held = sorted(deck.groups.get(group) or ()) if group != "all" else ()
-    on = "every sphere" if group == "all" else f"group {group}" + (
-        f" (type{'s' if len(held) > 1 else ''} {', '.join(map(str, held))})" if held else "")
-    deck.unknown.append((*loc, line, f"a region wall (any shape): its contacts are not audited; the spheres it "
-                                     f"acts on: {on}"))
-
-
 #: fix style -> (its least number of words, what it does to the deck): the engines' alike, then each
 #: dialect's own; shorter, not understood
-_FIXES = {"pour": (7, _pour), "wall/gran": (4, _wall), "wall/gran/region": (4, _region_wall),
+_FIXES = {"pour": (7, _pour), "wall/gran": (4, _wall), "wall/gran/region": (4, _wall),
           **{style: fix for dialect in DIALECTS.values() for style, fix in dialect.FIXES.items()}}
 
 

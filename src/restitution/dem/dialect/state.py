@@ -72,6 +72,7 @@ class Deck:
     prop_fix: dict = field(default_factory=dict)  # LIGGGHTS property/global name -> "fix ID group"
     model: str = ""                               # LIGGGHTS normal model
     limit_force: bool = False
+    absolute_damping: bool = False                # LIGGGHTS hooke/stiffness: gamman_abs, not m gamman
     style_line: tuple = ()                        # ((file, line number), text) of pair_style
     unknown: list = field(default_factory=list)   # (file or None, line number, text, why) not understood
     ignored: list = field(default_factory=list)   # what the audit passed over on purpose
@@ -175,7 +176,9 @@ class DeckDialect(Protocol):
 
 #: The audit lists every type pair, N (N + 1) / 2 of them: a deck with more types is refused.
 MAX_TYPES = 100
-#: Walls the audit takes: planes (a sphere against a flat wall). Curved ones are named, not audited.
+#: Flat walls (a sphere against a plane). Curved ones are each dialect's: audited with the
+#: curvature its engine puts in the contact (LAMMPS' zcylinder), as planes where the engine puts
+#: none (LIGGGHTS' cylinders), or named, not audited (region walls).
 FLAT_WALLS = ("xplane", "yplane", "zplane")
 
 

@@ -18,10 +18,12 @@ from dataclasses import dataclass
 from functools import partial
 
 from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types
+from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
 
-__all__ = ["ENGINE", "DEFAULT_DT", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall"]
+__all__ = ["ENGINE", "DEFAULT_DT", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall",
+           "concave_cylinder"]
 
 #: LAMMPS' default time step per unit style (checked in LAMMPS 22 Jul 2025), where a deck sets none
 DEFAULT_DT = {"lj": 0.005, "real": 1.0, "metal": 0.001, "si": 1e-8, "cgs": 1e-8, "electron": 0.001, "micro": 2.0,
@@ -297,13 +299,16 @@ _OLDER_WALLS = ("hooke", "hooke/history", "hertz/history")
 
 
 def wall(deck: Deck, loc, words: list, unknown: list):
-    """fix ID group wall/gran granular MODEL... xplane|yplane|zplane ...: [(None, a function of the
-    wall Pair and the sphere's type giving (contact, typed e, model, exact line or None), None)], or
-    None with the reason in ``unknown``. The wall's model is that of a pair_coeff line with the wall
-    as the second body (the older hooke, hooke/history and hertz/history: their pair style's law, Kn
-    Kt gamma_n gamma_t xmu dampflag [limit_damping]), and LAMMPS' keywords after the wall style
-    (wiggle, shear, contacts, temperature) move it, heat it or write output: none changes the contact.
-    Its arguments are :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s.
+    """fix ID group wall/gran granular MODEL... xplane|yplane|zplane lo hi | zcylinder R: [(None, a
+    function of the wall Pair and the sphere's type giving (contact, typed e, model, exact line or
+    None), None)], or None with the reason in ``unknown``. The wall's model is that of a pair_coeff
+    line with the wall as the second body (the older hooke, hooke/history and hertz/history: their
+    pair style's law, Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]), and LAMMPS' keywords after
+    the wall style (wiggle, shear, contacts, temperature) move it, heat it or write output: none
+    changes the contact. A zcylinder is met from inside (LAMMPS' zcylinder confines: a sphere
+    outside it overlaps it at every distance), where LAMMPS gives the wall the radius -2 R in the
+    effective radius (:func:`concave_cylinder`). Its arguments are
+    :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s.
 
     Examples
     --------
@@ -317,32 +322,43 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         unknown.append((*loc, text, f"wall model {style} is not mapped (granular, {', '.join(_OLDER_WALLS)} are): "
                                     "the wall's contacts are not audited"))
         return None
+    if words[3] == "wall/gran/region":
+        return _region_wall(deck, loc, words, unknown)
     k = next((n for n, w in enumerate(words) if n > 4 and w in _WALL_STYLES), None)
-    if k is None or words[k] not in FLAT_WALLS:
+    if k is None or words[k] not in FLAT_WALLS + ("zcylinder",):
         shape = "no wall style" if k is None else f"a {words[k]} wall"
-        unknown.append((*loc, text, f"{shape}: only planes are audited"))
+        unknown.append((*loc, text, f"{shape}: only planes and zcylinders are audited"))
         return None
-    n = k + 3                                      # xplane|yplane|zplane lo hi
+    n = k + (2 if words[k] == "zcylinder" else 3)   # zcylinder R; xplane|yplane|zplane lo hi
     if n > len(words):
-        unknown.append((*loc, text, f"{words[k]} needs lo and hi: the wall's contacts are not audited"))
+        args = "a radius" if words[k] == "zcylinder" else "lo and hi"
+        unknown.append((*loc, text, f"{words[k]} needs {args}: the wall's contacts are not audited"))
         return None
+    radius = None
+    if words[k] == "zcylinder":
+        try:
+            radius = number(words[k + 1], place(loc), text)
+        except DeckError as why:
+            unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
+            return None
     while n < len(words) and words[n] in _LAMMPS_WALL_KEYWORDS:
         n += 1 + _LAMMPS_WALL_KEYWORDS[words[n]]
     if n < len(words):
         unknown.append((*loc, text, f"keyword {words[n]} is not mapped: the wall's contacts are not audited"))
         return None
+    shape = _shape(words[k], radius)
     if style in _OLDER_WALLS:
-        return _older_wall(deck, loc, words, k, unknown)
+        return _older_wall(deck, loc, words, k, unknown, radius)
     try:
         c = _coeff(deck, ["pair_coeff", "*", "*", *words[5:k]], place(loc), text)
     except DeckError as why:
         unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
         return None
-    model = f"LAMMPS {c.normal}, damping {c.damping}, {words[k]} wall"
+    model = f"LAMMPS {c.normal}, damping {c.damping}, {shape}"
     typed = c.args[1] if c.damping in E_DAMPINGS else None
 
     def contact_of(pair, t):
-        contact = lammps_contact(pair, **c.setting())
+        contact = lammps_contact(_against(pair, radius, t, loc, text), **c.setting())
         exact = None
         if typed is not None:
             # tsuji's and coeff_restitution's eps depend on e alone (Omega = 1 / A(e)^2 for hooke
@@ -354,17 +370,102 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     return [(None, contact_of, None)]
 
 
-def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list):
+def _region_wall(deck: Deck, loc, words: list, unknown: list):
+    """fix ID group wall/gran/region MODEL... region RID [contacts | temperature T]: audited as a
+    plane where its law does not read the effective radius (LAMMPS gives each surface of the
+    region its own curvature in it, a cylinder's side -2R, a plane none, which the reader does not
+    read), else named, not audited. As :func:`wall`'s result."""
+    text = " ".join(words)
+    k = next((n for n in range(5, len(words)) if words[n] == "region"), None)
+    n = len(words) if k is None else k + 2
+    while n < len(words) and words[n] in ("contacts", "temperature"):
+        n += 1 + _LAMMPS_WALL_KEYWORDS[words[n]]
+    if k is None or k + 2 > len(words) or n < len(words):
+        unknown.append((*loc, text, "a region wall not read (MODEL... region ID [contacts | temperature T]): the "
+                                    "wall's contacts are not audited"))
+        return None
+    said: list = []               # its model's refusal, said of the deck's own line
+    surfaces = wall(deck, loc, words[:3] + ["wall/gran"] + words[4:k] + ["zplane", "0", "NULL"], said)
+    if surfaces is None:
+        unknown += [(f, line, text, why) for f, line, _, why in said]
+        return None
+    (_, contact_of, _), = surfaces
+    # the law reads R_eff where a sphere twice as large, of the same mass, gets another contact
+    probes = [contact_of(Pair(r, WALL_SIZE, 1.0, WALL_SIZE), 1)[0] for r in (1.0, 2.0)]
+    if probes[0].as_dict() != probes[1].as_dict():
+        unknown.append((*loc, text, "a region wall whose law reads the effective radius, in which LAMMPS gives each "
+                                    "surface of the region its own curvature (a cylinder's side -2R, a plane none) "
+                                    "and the reader does not read regions: the wall's contacts are not audited"))
+        return None
+    why = ("region wall, audited as a plane: its law does not read the effective radius, so no surface's curvature "
+           "changes the contact")
+
+    def on_region(pair, t):
+        contact, typed, model, exact = contact_of(pair, t)
+        return contact, typed, model.replace("zplane wall", why), None
+    return [(None, on_region, None)]
+
+
+def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list, radius: float | None):
     """A wall of an older model (words[4]) with its Kn Kt gamma_n gamma_t xmu dampflag
-    [limit_damping] before the wall style at words[k]: as wall's result, no e typed."""
+    [limit_damping] before the wall style at words[k] (a zcylinder's ``radius``, else None): as
+    wall's result, no e typed."""
     text = " ".join(words)
     try:
         law = _gran_law(f"gran/{words[4]}", words[5:k], deck.units, place(loc), text)
     except DeckError as why:
         unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
         return None
-    model = f"LAMMPS {words[4]} (older wall model), {words[k]} wall"
+    model = f"LAMMPS {words[4]} (older wall model), {_shape(words[k], radius)}"
 
     def contact_of(pair, t):
-        return lammps_gran_contact(pair, **law), None, model, None
+        return lammps_gran_contact(_against(pair, radius, t, loc, text), **law), None, model, None
     return [(None, contact_of, None)]
+
+
+def _shape(style: str, radius: float | None) -> str:
+    """The wall as the audit's rows name it."""
+    if radius is None:
+        return f"{style} wall"
+    return (f"zcylinder wall of radius {radius:g}, the sphere inside (LAMMPS' effective radius R 2Rc / (2Rc - R), "
+            "the wall's curvature in it)")
+
+
+def concave_cylinder(pair: Pair, radius: float) -> Pair:
+    """The sphere of a wall Pair against the inside of a cylinder of ``radius`` Rc, as LAMMPS'
+    fix wall/gran zcylinder meets it: its mass, and the effective radius R 2Rc / (2Rc - R) that a
+    wall of radius -2 Rc gives (LAMMPS' own choice for a cylinder, curved in one direction only;
+    checked in LAMMPS: a sphere of radius 5 mm inside a cylinder of 7.5 mm, hertz/material with
+    viscoelastic damping, gives this eps to 3e-12 after time-step extrapolation, where a plane's
+    effective radius would be off by 1e-5).
+
+    Parameters
+    ----------
+    pair : Pair
+        The sphere against a flat wall (:meth:`~restitution.dem.pair.Pair.wall`).
+    radius : float
+        The cylinder's, larger than the sphere's.
+
+    Returns
+    -------
+    Pair
+        A pair whose effective mass is the sphere's and whose effective radius is LAMMPS'.
+
+    Examples
+    --------
+    >>> round(concave_cylinder(Pair.wall(0.005, 2500.0), 0.0075).R, 12)
+    0.0075
+    """
+    reff = pair.R1 * 2.0 * radius / (2.0 * radius - pair.R1)
+    return Pair(reff, WALL_SIZE, pair.m1, WALL_SIZE)
+
+
+def _against(pair: Pair, radius: float | None, t: int, loc, text: str) -> Pair:
+    """The wall pair a sphere of type ``t`` meets: a plane's as it is, a zcylinder's
+    (:func:`concave_cylinder`) where the sphere fits inside it."""
+    if radius is None:
+        return pair
+    if not pair.R1 < radius:
+        raise DeckError(place(loc), text, f"a sphere of type {t} (radius {pair.R1:g}) does not fit inside the "
+                                          f"zcylinder of radius {radius:g}, which LAMMPS' wall confines it to")
+    return concave_cylinder(pair, radius)

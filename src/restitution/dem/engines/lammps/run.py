@@ -20,7 +20,7 @@ import sys
 from ...extrapolate import richardson
 from ...pair import Pair
 
-__all__ = ["available", "lammps_eps", "eps_runs", "lammps_eps_extrapolated", "lammps_wall_eps"]
+__all__ = ["available", "lammps_eps", "eps_runs", "lammps_eps_extrapolated", "lammps_wall_eps", "lammps_cylinder_eps"]
 
 
 def _load():
@@ -225,6 +225,53 @@ velocity all set 0 0 {-g!r} units box""", lines, 0.5 * radius, dt, t_run, f"z[1]
     if x[0, 2] <= radius:
         raise ArithmeticError("the sphere had not left the wall at the end of the run")
     return float(v[0, 2] / g)
+
+
+def lammps_cylinder_eps(radius: float, density: float, lines: str, g: float, dt: float, t_run: float,
+                        cylinder: float) -> float:
+    """eps = (speed after) / g for one sphere of atom type 1 inside a ``fix wall/gran ... zcylinder
+    R`` (R = ``cylinder``, its axis the z axis), hitting it head-on at speed g: the sphere starts
+    touching it at zero overlap, at x = R - radius, moving outward along x.
+
+    Parameters
+    ----------
+    radius, density : float
+        The sphere's (radius < cylinder).
+    lines : str
+        The pair style, its coefficients and the wall's lines.
+    g, dt, t_run
+        As :func:`lammps_eps` takes them.
+    cylinder : float
+        The zcylinder's radius, as the wall's line gives it.
+
+    Returns
+    -------
+    float
+        eps as LAMMPS gives it at this dt.
+
+    Raises
+    ------
+    RuntimeError
+        Where LAMMPS stops on the lines.
+    ArithmeticError
+        Where the sphere has not left the wall by t_run.
+
+    Examples
+    --------
+    >>> line = "pair_coeff * * hertz/material 1e7 3e4 0.3 tangential linear_nohistory 0 0"
+    >>> wall = (f"pair_style granular\\n{line}\\n"
+    ...         f"fix drum all wall/gran granular {line.split(maxsplit=3)[3]} zcylinder 0.0075")
+    >>> 0.0 < lammps_cylinder_eps(0.005, 2500.0, wall, 1.0, 1e-7, 3e-3, 0.0075) < 1.0  # doctest: +SKIP
+    True
+    """
+    start = cylinder - radius
+    x, v = _run(2.0 * cylinder, 1, f"""
+create_atoms 1 single {start!r} 0 0 units box
+set atom 1 diameter {2 * radius!r} density {density!r}
+velocity all set {g!r} 0 0 units box""", lines, 0.5 * radius, dt, t_run, f"{start!r} - x[1]")
+    if x[0, 0] >= start:
+        raise ArithmeticError("the sphere had not left the wall at the end of the run")
+    return float(-v[0, 0] / g)
 
 
 def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, steps: int = 4000,

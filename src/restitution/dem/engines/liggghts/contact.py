@@ -9,6 +9,18 @@ sqrt(D1); ``limitForce off`` (default) = "overlap", ``on`` = "force".
 sqrt(R) E* (15 m V^2 / (16 sqrt(R) E*))^(1/5) with V the ``characteristicVelocity``, gamma_n = 2
 beta sqrt(m k_n): alpha = 1, gamma = 0, D1 = k_n/m, D2 = 2 beta sqrt(D1). With ``limitForce off``
 eps is e exactly at every speed; with ``on`` it is higher (the force rule on a linear dashpot).
+
+``model hooke/stiffness`` and ``model hertz/stiffness`` take the stiffness and the damping as
+typed, per type pair (``fix property/global kn``, ``gamman`` or, with hooke/stiffness's
+``absolute_damping on``, ``gamman_abs``, each ``peratomtypepair``): LIGGGHTS 3.8.0's force is
+F = k_n delta + m gamma_n delta' for hooke/stiffness (F = k_n delta + gamma_n_abs delta' with
+absolute_damping), and F = sqrt(R delta) (k_n delta + m gamma_n delta') for hertz/stiffness, m and
+R the effective mass and radius (the sphere's own against a wall, whatever its shape). So
+hooke/stiffness is alpha = 1, gamma = 0, D1 = k_n/m, D2 = gamma_n (gamma_n_abs/m), and
+hertz/stiffness alpha = 3/2, gamma = 1/2, D1 = k_n sqrt(R)/m, D2 = gamma_n sqrt(R), whose eps
+depends on speed and size. k_n is divided by the unit style's nktv2p, 1 in the styles LIGGGHTS'
+granular decks can use (si, cgs, lj: STIFFNESS_UNITS). Checked against the engine in
+tests/library/test_dem_deck_liggghts_stiffness.py.
 """
 
 from __future__ import annotations
@@ -16,15 +28,21 @@ from __future__ import annotations
 import math
 from fractions import Fraction
 
-from ....core.errors import one_of, require_positive_finite
+from ....core.errors import ParameterError, one_of, require_positive_finite
 from ...contact import Contact, ElasticContact
 from ...pair import Pair
 from ...typed_e import beta_of_e, e_of_beta, effective_modulus
 
-__all__ = ["liggghts_contact", "liggghts_e", "liggghts_accepts_e", "LIGGGHTS_MODELS", "LIGGGHTS_E", "LIGGGHTS_NU",
-           "LIGGGHTS_MODULUS", "LIGGGHTS_MODEL_TYPES"]
+__all__ = ["liggghts_contact", "liggghts_stiffness_contact", "liggghts_e", "liggghts_accepts_e", "LIGGGHTS_MODELS",
+           "STIFFNESS_MODELS", "STIFFNESS_UNITS", "LIGGGHTS_E", "LIGGGHTS_NU", "LIGGGHTS_MODULUS",
+           "LIGGGHTS_MODEL_TYPES"]
 
 LIGGGHTS_MODELS = ("hertz", "hooke")
+#: The normal models whose stiffness and damping are typed per type pair (kn, gamman)
+STIFFNESS_MODELS = ("hertz/stiffness", "hooke/stiffness")
+#: The unit styles whose nktv2p, by which LIGGGHTS divides k_n, is 1 (LIGGGHTS 3.8.0, update.cpp);
+#: pair gran stops on the others ("Please use si,cgs or lj", checked)
+STIFFNESS_UNITS = ("si", "cgs", "lj")
 #: LIGGGHTS' own checks on the materials, which stop its run before the first step (3.8.0,
 #: global_properties.cpp; each confirmed with the engine): 0.05 < coefficientRestitution <= 1,
 #: 0 <= poissonsRatio <= 0.5, and Young's modulus within these bounds per unit style
@@ -140,3 +158,60 @@ def liggghts_e(contact: Contact) -> float:
     """
     factor = math.sqrt(5.0) if contact.alpha == Fraction(3, 2) else 2.0
     return e_of_beta(contact.D2 / math.sqrt(contact.D1) / factor)
+
+
+def liggghts_stiffness_contact(pair: Pair, *, model: str, kn: float, gamman: float, absolute_damping: bool = False,
+                               limit_force: bool = False) -> Contact | ElasticContact:
+    """LIGGGHTS ``model hooke/stiffness`` or ``hertz/stiffness`` with the type pair's kn and
+    gamman (gamman_abs where ``absolute_damping``, which only hooke/stiffness takes).
+
+    Parameters
+    ----------
+    pair : Pair
+        The colliding pair (a sphere and a wall: :meth:`~restitution.dem.pair.Pair.wall`).
+    model : {"hooke/stiffness", "hertz/stiffness"}
+        The normal model.
+    kn, gamman : float
+        The entries of the kn and gamman (or gamman_abs) matrices for the pair, in a unit style of
+        STIFFNESS_UNITS; gamman = 0: no damping, an ElasticContact.
+    absolute_damping : bool, optional
+        hooke/stiffness's absolute_damping on: the damping force is gamman_abs delta', not m
+        gamman delta'.
+    limit_force : bool, optional
+        limitForce on (the force rule); off by default (the overlap rule).
+
+    Returns
+    -------
+    Contact or ElasticContact
+
+    Raises
+    ------
+    ParameterError
+        Another model, absolute_damping with hertz/stiffness (LIGGGHTS stops on it), kn not
+        positive or gamman negative.
+
+    Examples
+    --------
+    >>> pair = Pair.spheres(0.005, 0.005, 2500.0)
+    >>> c = liggghts_stiffness_contact(pair, model="hooke/stiffness", kn=2000.0, gamman=20.0)
+    >>> str(c.alpha), str(c.gamma), c.D2, round(c.eps(1.0), 6)       # a linear dashpot: eps at every speed
+    ('1', '0', 20.0, 0.982189)
+    >>> c = liggghts_stiffness_contact(pair, model="hertz/stiffness", kn=2e6, gamman=2e3)
+    >>> str(c.alpha), str(c.gamma), round(c.D2, 6)
+    ('3/2', '1/2', 100.0)
+    """
+    model = one_of("model", model, STIFFNESS_MODELS)
+    require_positive_finite("kn", kn)
+    if not (math.isfinite(gamman) and gamman >= 0.0):
+        raise ParameterError("gamman", gamman, "must be finite and >= 0 (a negative one feeds energy in)")
+    if absolute_damping and model != "hooke/stiffness":
+        raise ParameterError("absolute_damping", "on", "LIGGGHTS 3.8.0 takes it with model hooke/stiffness only")
+    end = "force" if limit_force else "overlap"
+    if model == "hooke/stiffness":
+        D1, D2, alpha, gamma = kn / pair.m, gamman / pair.m if absolute_damping else gamman, "1", "0"
+    else:
+        root = math.sqrt(pair.R)
+        D1, D2, alpha, gamma = kn * root / pair.m, gamman * root, "3/2", "1/2"
+    if D2 == 0.0:
+        return ElasticContact(alpha, D1, end)
+    return Contact(alpha, gamma, D1, D2, end)

@@ -1,5 +1,7 @@
 """LIGGGHTS' deck dialect: what ``pair_style gran model hertz|hooke``, its materials (``fix
 property/global``: youngsModulus, poissonsRatio, coefficientRestitution, characteristicVelocity),
+``model hertz/stiffness|hooke/stiffness`` and their per-pair stiffness and damping (kn, gamman,
+gamman_abs with hooke/stiffness's absolute_damping on),
 its particle templates and its ``fix wall/gran`` walls (primitive planes, the faces of meshes of the
 type their ``fix mesh/surface`` gives) mean for a head-on contact. The generic reader
 (:mod:`restitution.dem.deck.reader`) reaches it through its table of dialects, by pair style and by
@@ -14,8 +16,10 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 from __future__ import annotations
 
 from ...dialect.state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
-from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODULUS, LIGGGHTS_NU, liggghts_accepts_e,
-                      liggghts_contact, liggghts_e)
+from ....core.errors import ParameterError
+from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODELS, LIGGGHTS_MODULUS, LIGGGHTS_NU,
+                      STIFFNESS_MODELS, STIFFNESS_UNITS, liggghts_accepts_e, liggghts_contact, liggghts_e,
+                      liggghts_stiffness_contact)
 
 __all__ = ["ENGINE", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall"]
 
@@ -23,16 +27,24 @@ ENGINE = "LIGGGHTS"
 #: The pair styles this dialect reads
 PAIR_STYLES = ("gran",)
 #: What it maps, as a refusal of another pair style lists it
-MAPPED = "LIGGGHTS pair_style gran model hertz|hooke"
+MAPPED = "LIGGGHTS pair_style gran model hertz|hooke|hertz/stiffness|hooke/stiffness"
+#: The normal models it maps
+_NORMAL = LIGGGHTS_MODELS + STIFFNESS_MODELS
+#: The model keywords each normal model takes that may change its normal force (LIGGGHTS 3.8.0
+#: stops on the others: "Unknown argument or wrong keyword order"); tangential_damping, which
+#: every one takes, changes only the tangential damping
+_NORMAL_KEYS = {"hertz": ("limitForce",), "hooke": ("limitForce",), "hertz/stiffness": ("limitForce",),
+                "hooke/stiffness": ("limitForce", "absolute_damping")}
 
 def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
-    """pair_style gran model hertz|hooke [limitForce on|off] [tangential, rolling_friction,
-    tangential_damping ...] [surface default]: the normal model and limitForce.
+    """pair_style gran model hertz|hooke|hertz/stiffness|hooke/stiffness [limitForce on|off]
+    [absolute_damping on|off] [tangential, rolling_friction, tangential_damping ...] [surface
+    default]: the normal model, limitForce and absolute_damping.
 
     Parameters
     ----------
     deck : Deck
-        Changed in place (``model``, ``limit_force``, ``ignored``).
+        Changed in place (``model``, ``limit_force``, ``absolute_damping``, ``ignored``).
     words : list of str
         The command's words.
     where, line : str
@@ -52,26 +64,41 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     """
     # every pair_style line sets the style afresh: LIGGGHTS' default for what it does not name
     # (limitForce off; checked: on, then a line without it, gives eps = e)
-    deck.model, deck.limit_force = "", False
-    i = 2
-    while i < len(words):
-        key = words[i]
-        val = words[i + 1] if i + 1 < len(words) else None
+    try:
+        deck.model, deck.limit_force, deck.absolute_damping = _normal(words[2:])
+    except ValueError as why:
+        raise DeckError(where, line, str(why)) from None
+    for i in range(2, len(words) - 1, 2):
+        if words[i] in ("tangential", "rolling_friction", "tangential_damping"):
+            deck.ignored.append(f"{words[i]} {words[i + 1]}")
+
+
+def _normal(pairs: list) -> tuple:
+    """(normal model, limitForce, absolute_damping) from key-value pairs (a pair style's after
+    ``gran``, or a wall's without its wall style and general keywords).
+
+    Raises
+    ------
+    ValueError
+        Naming the first pair that is not mapped (it may change the normal force), or no model.
+    """
+    model, on = None, {"limitForce": False, "absolute_damping": False}
+    for i in range(0, len(pairs), 2):
+        key = pairs[i]
+        val = pairs[i + 1] if i + 1 < len(pairs) else None
         if key == "model":
-            if val not in ("hertz", "hooke"):
-                raise DeckError(where, line, f"model {val} is not mapped (hertz and hooke are)")
-            deck.model = val
-        elif key == "limitForce":
-            deck.limit_force = val == "on"
-        elif key in ("tangential", "rolling_friction", "tangential_damping"):
-            deck.ignored.append(f"{key} {val}")
-        elif key == "surface" and val == "default":
-            pass
+            if val not in _NORMAL:
+                raise ValueError(f"model {val} is not mapped ({', '.join(_NORMAL)} are)")
+            model = val
+        elif key in on and model is not None and key in _NORMAL_KEYS[model]:
+            on[key] = val == "on"
+        elif key in ("tangential", "rolling_friction", "tangential_damping") or key == "surface" and val == "default":
+            pass                  # no part in a head-on contact
         else:
-            raise DeckError(where, line, f"{key} {val} is not mapped (it may change the normal force)")
-        i += 2
-    if not deck.model:
-        raise DeckError(where, line, "pair_style gran without model hertz|hooke")
+            raise ValueError(f"{key} {val} is not mapped (it may change the normal force)")
+    if model is None:
+        raise ValueError(f"no model {'|'.join(_NORMAL)}")
+    return model, on["limitForce"], on["absolute_damping"]
 
 
 def pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
@@ -149,25 +176,58 @@ def _materials(deck: Deck) -> tuple:
         return [number(v, place(loc), name) for v in vals[1:]]
 
     E, nu = per_type("youngsModulus"), per_type("poissonsRatio")
-    loc, vals = _prop(deck, "coefficientRestitution")
+    matrix, loc = _matrix(deck, "coefficientRestitution")
     where = place(loc)
-    m = deck.ntypes
+    _limits(deck, E, nu, matrix, where)
+    return E, nu, matrix, loc
+
+
+def _matrix(deck: Deck, name: str) -> tuple:
+    """(the per-type-pair property ``name`` flattened row by row, its location), as LIGGGHTS takes
+    it: peratomtypepair (or an alias) N, then N x N values, symmetric."""
+    loc, vals = _prop(deck, name)
+    where, m = place(loc), deck.ntypes
     if vals[0] not in _PER_PAIR:
-        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]}: LIGGGHTS takes it as one of "
+        raise DeckError(where, " ".join(vals), f"{name} {vals[0]}: LIGGGHTS takes it as one of "
                                                f"{', '.join(_PER_PAIR)} N, then N x N values")
     if len(vals) < 2 or vals[1] != str(m):
-        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]} gives N = "
+        raise DeckError(where, " ".join(vals), f"{name} {vals[0]} gives N = "
                                                f"{vals[1] if len(vals) > 1 else 'nothing'} where the deck has {m} "
                                                f"types: LIGGGHTS needs {vals[0]} {m}")
     if len(vals) != 2 + m * m:
-        raise DeckError(where, " ".join(vals), f"coefficientRestitution {vals[0]} {m} gives {len(vals) - 2} "
+        raise DeckError(where, " ".join(vals), f"{name} {vals[0]} {m} gives {len(vals) - 2} "
                                                f"value(s): LIGGGHTS needs {m}x{m} values, one per type pair")
-    matrix = [number(v, where, "coefficientRestitution") for v in vals[2:]]
+    matrix = [number(v, where, name) for v in vals[2:]]
+    # which of two unequal entries a contact reads would depend on the order of the atoms in the
+    # engine's neighbour list
     if any(matrix[(a - 1) * m + b - 1] != matrix[(b - 1) * m + a - 1] for a in range(1, m + 1)
            for b in range(a + 1, m + 1)):
-        raise DeckError(where, " ".join(vals), "the coefficientRestitution matrix is not symmetric")
-    _limits(deck, E, nu, matrix, where)
-    return E, nu, matrix, loc
+        raise DeckError(where, " ".join(vals), f"the {name} matrix is not symmetric")
+    return matrix, loc
+
+
+def _stiffness(deck: Deck, model: str, limit_force: bool, absolute: bool, pair, i: int, j: int):
+    """The contact of types i and j (j a wall's type for a wall) under hooke/stiffness or
+    hertz/stiffness: kn and gamman (gamman_abs) as typed for the pair."""
+    if deck.units not in STIFFNESS_UNITS:
+        raise DeckError("units", deck.units, f"LIGGGHTS divides kn by units {deck.units}'s nktv2p, which is not 1: "
+                                             f"model {model} is mapped in units {', '.join(STIFFNESS_UNITS)}")
+    damping = "gamman_abs" if absolute else "gamman"
+    (kn, loc_k), (gn, loc_g) = _matrix(deck, "kn"), _matrix(deck, damping)
+    k = (i - 1) * deck.ntypes + (j - 1)
+    try:
+        return liggghts_stiffness_contact(pair, model=model, kn=kn[k], gamman=gn[k], absolute_damping=absolute,
+                                          limit_force=limit_force)
+    except ParameterError as why:
+        at = loc_k if why.field in ("kn", "D1") else loc_g
+        raise DeckError(place(at), f"types {i} {j}", str(why)) from None
+
+
+def _label(model: str, limit_force: bool, absolute: bool) -> str:
+    """The model as the audit's rows name it."""
+    return (f"LIGGGHTS {model}, " + (f"absolute_damping {'on' if absolute else 'off'}, "
+                                     if model == "hooke/stiffness" else "")
+            + f"limitForce {'on' if limit_force else 'off'}")
 
 
 def _model(deck: Deck, model: str, limit_force: bool) -> dict:
@@ -199,15 +259,21 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     >>> row["model"], row["typed_e"], row["exact_line"]
     ('LIGGGHTS hertz, limitForce off', 0.9, 'fix m all property/global coefficientRestitution peratomtypepair 1 0.9')
     """
+    pair = spheres(deck, i, j)
+    model = _label(deck.model, deck.limit_force, deck.absolute_damping)
+    if deck.model in STIFFNESS_MODELS:
+        # no e typed: the stiffness and damping are, and no one line gives the pair an eps
+        contact = _stiffness(deck, deck.model, deck.limit_force, deck.absolute_damping, pair, i, j)
+        loc = _prop(deck, "gamman_abs" if deck.absolute_damping else "gamman")[0]
+        return {"types": [i, j], "model": model, "typed_e": None, "end": contact.end, "contact": contact,
+                "pair": pair, "line": loc[1], "file": loc[0], "exact_line": None}
     E, nu, matrix, loc = _materials(deck)
     m = deck.ntypes
     e = matrix[(i - 1) * m + (j - 1)]
-    pair = spheres(deck, i, j)
     kw = _model(deck, deck.model, deck.limit_force)
     contact = liggghts_contact(pair, E=E[i - 1], nu=nu[i - 1], E2=E[j - 1], nu2=nu[j - 1], e=e, **kw)
-    return {"types": [i, j], "model": f"LIGGGHTS {deck.model}, limitForce {'on' if deck.limit_force else 'off'}",
-            "typed_e": e, "end": contact.end, "contact": contact, "pair": pair, "line": loc[1], "file": loc[0],
-            "exact_line": _exact_line(deck, matrix, i, j, contact)}
+    return {"types": [i, j], "model": model, "typed_e": e, "end": contact.end, "contact": contact, "pair": pair,
+            "line": loc[1], "file": loc[0], "exact_line": _exact_line(deck, matrix, i, j, contact)}
 
 
 def _exact_line(deck: Deck, matrix: list, i: int, j: int, contact) -> str | None:
@@ -252,17 +318,23 @@ _LIGGGHTS_WALL_GENERAL = {"shear": 2, "temperature": 1, "store_force": 1, "store
                           "store_force_contact_stress": 1}
 #: primitive wall styles and their number of arguments
 _LIGGGHTS_PRIMITIVES = {"xplane": 1, "yplane": 1, "zplane": 1, "xcylinder": 3, "ycylinder": 3, "zcylinder": 3}
+#: Why a cylinder is audited as a plane: LIGGGHTS 3.8.0's normal models take the sphere's own
+#: radius as the effective radius against any wall (checked: a sphere of radius 5 mm inside a
+#: zcylinder of 7.5 mm, hertz/stiffness, gives a plane's eps to 2e-9 after time-step
+#: extrapolation, where the cylinder's curvature would have lowered it by 0.03)
+_FLAT_BY_ENGINE = "LIGGGHTS takes the sphere's own radius as the effective radius against every wall"
 
 
 def wall(deck: Deck, loc, words: list, unknown: list):
     """fix ID group wall/gran [model_type model_name]... (primitive type W STYLE ARGS | mesh
     n_meshes N meshes ID...) [general keywords] [model keywords], the order LIGGGHTS documents:
-    for each flat surface (a primitive plane, or each mesh, whose type is its fix mesh/surface's) a
+    for each surface (a primitive plane or cylinder, the latter a plane to LIGGGHTS' contact, or
+    each mesh, whose type is its fix mesh/surface's) a
     triple (mesh ID or None, a function of the wall Pair and the sphere's type giving (contact,
     typed e, model, exact line or None), W): the contact of a type with an atom of type W under the
     wall's own model (its model keywords, limitForce among them, are its own, not the pair
     style's), the wall as the second body. None, with the reason in ``unknown``, where a part is
-    not mapped (a cylinder, a cohesion model, an unknown keyword, ...). Its arguments are
+    not mapped (a cohesion model, an unknown keyword, ...). Its arguments are
     :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s.
 
     Raises
@@ -273,9 +345,9 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     Examples
     --------
     >>> unknown = []
-    >>> wall(Deck(), (None, 9), "fix w all wall/gran model hertz primitive type 1 zcylinder 1 0 0".split(), unknown)
+    >>> wall(Deck(), (None, 9), "fix w all wall/gran model jkr primitive type 1 zcylinder 1 0 0".split(), unknown)
     >>> unknown[0][3]
-    "a zcylinder wall (only planes are audited): the wall's contacts are not audited"
+    "model jkr is not mapped (hertz, hooke, hertz/stiffness, hooke/stiffness are): the wall's contacts are not audited"
     """
     text, where = " ".join(words), place(loc)
 
@@ -283,28 +355,21 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         unknown.append((*loc, text, f"{why}: the wall's contacts are not audited"))
         return None
 
-    model, limit, k = None, False, 4
+    if words[3] != "wall/gran":
+        return skip(f"fix {words[3]} is not mapped (LIGGGHTS' walls are fix wall/gran primitives and meshes)")
+    k = 4
     while k + 1 < len(words) and words[k] in LIGGGHTS_MODEL_TYPES:
-        key, val = words[k], words[k + 1]
-        if key == "model" and val in ("hertz", "hooke"):
-            model = val
-        elif key in ("tangential", "rolling_friction") or key == "surface" and val == "default":
-            pass                  # no part in a head-on contact (as for the pair style)
-        else:
-            return skip(f"{key} {val} is not mapped")
         k += 2
-    if model is None:
-        return skip("no model hertz|hooke")
+    pairs = words[4:k]            # the model_type/model_name pairs; the model keywords come last
     surfaces = []                 # (mesh ID or None, wall type, what it is)
     if k < len(words) and words[k] == "primitive":
         if k + 3 >= len(words) or words[k + 1] != "type" or words[k + 3] not in _LIGGGHTS_PRIMITIVES:
             return skip("a primitive wall not read (primitive type W STYLE ARGS)")
         style = words[k + 3]
-        if style not in FLAT_WALLS:
-            return skip(f"a {style} wall (only planes are audited)")
         if not words[k + 2].isdigit():
             return skip(f"wall type {words[k + 2]} is not a type the reader can read")
-        surfaces.append((None, int(words[k + 2]), f"{style} wall"))
+        surfaces.append((None, int(words[k + 2]), f"{style} wall" if style in FLAT_WALLS else
+                         f"{style} wall (audited as a flat wall: {_FLAT_BY_ENGINE})"))
         k += 4 + _LIGGGHTS_PRIMITIVES[style]
     elif k < len(words) and words[k] == "mesh":
         n = int(words[k + 2]) if k + 2 < len(words) and words[k + 1] == "n_meshes" and words[k + 2].isdigit() else 0
@@ -323,15 +388,25 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         key = words[k]
         if key in _LIGGGHTS_WALL_GENERAL:
             k += 1 + _LIGGGHTS_WALL_GENERAL[key]
-        elif key == "limitForce" and k + 1 < len(words):
-            limit, k = words[k + 1] == "on", k + 2
-        elif key == "tangential_damping" and k + 1 < len(words):
-            k += 2
+        elif key in ("limitForce", "absolute_damping", "tangential_damping") and k + 1 < len(words):
+            pairs, k = pairs + words[k:k + 2], k + 2
         else:
             return skip(f"keyword {key} is not mapped")
+    try:
+        model, limit, absolute = _normal(pairs)
+    except ValueError as why:
+        return skip(str(why))
     for _, w, _ in surfaces:
         if not 1 <= w <= deck.ntypes:
             raise DeckError(where, text, f"the wall's type must be in 1..{deck.ntypes}")
+    label = _label(model, limit, absolute)
+    if model in STIFFNESS_MODELS:
+        def stiff_with(w: int, surface: str):
+            def contact(pair, t):
+                return (_stiffness(deck, model, limit, absolute, pair, t, w), None, f"{label}, {surface} of type {w}",
+                        None)
+            return contact
+        return [(mesh, stiff_with(w, label_), w) for mesh, w, label_ in surfaces]
     E, nu, matrix, _ = _materials(deck)
     kw = _model(deck, model, limit)
 
@@ -346,6 +421,6 @@ def wall(deck: Deck, loc, words: list, unknown: list):
             # Elsewhere the two want different e's and no line serves both.
             same = (model, limit) == (deck.model, deck.limit_force)
             exact = _exact_line(deck, matrix, t, w, c) if same else None
-            return c, e, f"LIGGGHTS {model}, limitForce {'on' if limit else 'off'}, {surface} of type {w}", exact
+            return c, e, f"{label}, {surface} of type {w}", exact
         return contact
     return [(mesh, contact_with(w, label), w) for mesh, w, label in surfaces]
