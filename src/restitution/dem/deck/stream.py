@@ -55,6 +55,18 @@ def _substituted(line: str) -> bool:
     return "$" in line and any("$" in piece for piece, quote in segments(line) if not quote)
 
 
+def _once_each(func):
+    """(``func`` computed once per distinct argument, the dict of what it computed)."""
+    done: dict = {}
+
+    def once(arg):
+        found = done.get(arg)
+        if found is None:
+            found = done[arg] = func(arg)
+        return found
+    return once, done
+
+
 def executed(echo: str, scratch: Scratch) -> list[Executed]:
     """The commands an engine ran, from its echo, each with the deck line it came from.
 
@@ -88,22 +100,10 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     tagged = re.compile(rf"{re.escape(scratch.tag)}(\d+|{AUDIT})\s*$")
     dump = f"write_dump all custom {scratch.root / ATOMS} "
     lines = _echo_lines(echo)
-    # a loop echoes the same few lines thousands of times: each distinct line normalised once
-    keys: dict = {}
-
-    def key_of(line: str) -> str:
-        key = keys.get(line)
-        if key is None:
-            key = keys[line] = normalised(line)
-        return key
-    # and each distinct line scanned once for a $ outside quotes (a marker's quoted if is long)
-    scanned: dict = {}
-
-    def substituted(text: str) -> bool:
-        found = scanned.get(text)
-        if found is None:
-            found = scanned[text] = _substituted(text)
-        return found
+    # a loop echoes the same few lines thousands of times: each distinct line normalised once, and
+    # scanned once for a $ outside quotes (a marker's quoted if is long)
+    key_of, keys = _once_each(normalised)
+    substituted, _ = _once_each(_substituted)
     out: list = []
     k, opened, stage_at = 0, None, None
     ifs: list = []           # the lines echoed whose if or every runs quoted commands, latest last
@@ -125,7 +125,9 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
 
     while k < len(lines):
         raw = lines[k]
-        key = key_of(raw)
+        key = keys.get(raw)          # key_of, inline: the loop's hottest line
+        if key is None:
+            key = keys[raw] = normalised(raw)
         k += 1
         if not key or _ERROR_CONTEXT.match(key):     # an error quotes the line, tag and all
             continue
@@ -143,7 +145,7 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
             continue
         tag = tagged.search(raw) if scratch.tag in raw else None
         if tag and tag.group(1) == AUDIT:
-            text = follow(key)
+            text = follow(key) if "$" in key else key   # no $: nothing substituted
             if opened is not None and key == opened:
                 out[-1].text = text          # the run, substituted: the stage's own text
             opened = None
@@ -163,7 +165,7 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
                         break
         if loc is None:
             continue                         # the engine's output, or a line of the audit's
-        text = follow(key)
+        text = follow(key) if "$" in key else key   # no $: nothing substituted
         out.append(Executed(loc, text))
         _latest(ifs, loc, scratch)
         opened_file = _opened(text, scratch)
