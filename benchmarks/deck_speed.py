@@ -5,7 +5,8 @@ that pass plus 1 s).
     LD_LIBRARY_PATH=.venv/lib .venv/bin/python benchmarks/deck_speed.py [--runs 5] [--out results/bench]
         [--examples /usr/share/lammps/examples] [--tutorials /usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public]
 
-For each deck of ``examples/granular``, ``pour`` and ``granregion`` (copied with its folder into a
+For each deck of ``examples/granular``, ``pour`` and ``granregion``, and ``decks/in.pour_loop`` here
+(a loop of 10 000 runs, each pass pouring four types with new seeds; copied with its folder into a
 scratch directory, so that what the engine writes stays there), the two whole processes take turns
 ``--runs`` times after one warm-up each:
 
@@ -41,6 +42,8 @@ EXAMPLES = Path("/usr/share/lammps/examples")
 #: The official example folders the issue names
 FOLDERS = ("granular", "pour", "granregion")
 TUTORIALS = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
+#: A deck that loops: 10 000 passes that each define four pours with new seeds, then run
+LOOP = Path(__file__).parent / "decks" / "in.pour_loop"
 
 
 def timed(argv, cwd: Path, env) -> tuple[float, float]:
@@ -78,7 +81,7 @@ def main(argv=None) -> int:
     parser.add_argument("--tutorials", default=str(TUTORIALS))
     parser.add_argument("--only", default="", help="run only the decks whose name holds this text")
     args = parser.parse_args(argv)
-    decks = sorted(p for folder in FOLDERS for p in (Path(args.examples) / folder).glob("in.*"))
+    decks = sorted(p for folder in FOLDERS for p in (Path(args.examples) / folder).glob("in.*")) + [LOOP]
     decks += sorted(Path(args.tutorials).rglob("in.*")) if shutil.which("liggghts") else []
     decks = [d for d in decks if args.only in str(d)]
     if not decks:

@@ -119,16 +119,14 @@ def test_a_calibration_does_not_depend_on_what_the_cache_holds(empty_cache, end)
     assert after.D2 == before.D2 and after.eps == before.eps
 
 
-def test_the_root_finder_raises_without_a_bracket_or_without_convergence(monkeypatch):
+def test_the_root_finder_raises_without_a_bracket_or_without_convergence():
     """Never a point that is not the root: same signs at both ends, a value that is not finite, or
     the step cap reached each raise."""
-    import importlib
-    module = importlib.import_module("restitution.dem.calibrate")
+    from restitution.core.root import bracketed_root
     with pytest.raises(ArithmeticError, match="no root bracketed"):
-        module._root(lambda x: x * x + 1.0, -1.0, 1.0, 1e-12)
+        bracketed_root(lambda x: x * x + 1.0, -1.0, 1.0, 1e-12)
     with pytest.raises(ArithmeticError, match="no root bracketed"):
-        module._root(lambda x: math.nan, -1.0, 1.0, 1e-12)
-    assert module._root(lambda x: x ** 3 - 2.0, 0.0, 2.0, 1e-13) == pytest.approx(2.0 ** (1 / 3), abs=1e-12)
-    monkeypatch.setattr(module, "_ROOT_STEPS", 3)
+        bracketed_root(lambda x: math.nan, -1.0, 1.0, 1e-12)
+    assert bracketed_root(lambda x: x ** 3 - 2.0, 0.0, 2.0, 1e-13) == pytest.approx(2.0 ** (1 / 3), abs=1e-12)
     with pytest.raises(ArithmeticError, match="not found"):
-        module._root(lambda x: x ** 3 - 2.0, 0.0, 2.0, 1e-13)
+        bracketed_root(lambda x: x ** 3 - 2.0, 0.0, 2.0, 1e-13, steps=3)

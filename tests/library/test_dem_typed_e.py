@@ -4,6 +4,9 @@ printed number is the library's (typed_e_table) to the printed digits, and every
 engine TYPED_E_ENGINES names for it does, at each e of TYPED_E_ENGINE_ES, to TYPED_E_ENGINE_RTOL."""
 
 import re
+import subprocess
+import sys
+import textwrap
 from pathlib import Path
 
 import pytest
@@ -144,3 +147,28 @@ def test_every_row_is_what_its_engine_gives(engine):
     for r in results:
         assert abs(r["relative_deviation"]) <= TYPED_E_ENGINE_RTOL, r
     print(f"{entry.label}: worst relative deviation {worst:.2e} over {len(results)} row-e cases")
+
+
+# LAMMPS' tsuji damping is typed as e: the e that gives a contact's damping is the root of tsuji's
+# polynomial, found without importing scipy.optimize (which cost `restitution deck` a third of a
+# second on a tsuji deck). A fresh interpreter: this test process may hold scipy already.
+TSUJI_E = textwrap.dedent("""
+    import sys
+    from restitution.dem.engines.lammps.contact import lammps_contact, lammps_eta_n0
+    from restitution.dem.pair import Pair
+    pair = Pair.spheres(1e-3, 1.5e-3, 2500.0, 7800.0)
+    worst = 0.0
+    for k in range(1, 100):
+        e = k / 100
+        for normal in ({"normal": "hooke", "k_n": 2e4}, {"normal": "hertz/material", "E": 5e7, "nu": 0.3}):
+            contact = lammps_contact(pair, damping="tsuji", eta_n0=e, limit_damping=False, **normal)
+            worst = max(worst, abs(lammps_eta_n0(pair, "tsuji", contact) - e))
+    assert "scipy.optimize" not in sys.modules, "scipy.optimize was imported"
+    print(worst)
+""")
+
+
+def test_tsujis_typed_e_is_found_again_without_scipy():
+    proc = subprocess.run([sys.executable, "-c", TSUJI_E], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert float(proc.stdout) < 1e-13

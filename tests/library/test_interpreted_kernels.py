@@ -176,3 +176,35 @@ def test_a_creeping_return_counts_as_many_points():
     assert _plain_work(np.array([1e-4]), 1e-10, True, 3, 2) > INTERPRETED_MAX_POINTS
     assert _plain_work(np.array([1e-4]), 1e-10, False, 2, 3) > INTERPRETED_MAX_POINTS   # alpha < gamma creeps too
     assert _plain_work(law_check, 1e-14, False, 3, 2) == 3                             # the force rule: points
+
+
+# numba's start leaves objects that live until exit; the collector walking them at exit cost a
+# third of a one-call process. Registered first, the check runs last at exit (atexit is LIFO).
+COLLECTOR = textwrap.dedent("""
+    import atexit, gc
+    atexit.register(lambda: print("frozen at exit:", gc.get_freeze_count() > 0, flush=True))
+    from restitution.fast.jit import njit
+
+    @njit
+    def twice(x):
+        return 2.0 * x
+
+    assert gc.isenabled() and twice(1.5) == 3.0
+    assert gc.isenabled(), "numba's start left the collector off"
+    assert gc.get_freeze_count() == 0, "frozen before exit"
+
+    @njit
+    def thrice(x):
+        return 3.0 * x
+
+    gc.disable()
+    assert thrice(1.0) == 3.0 and not gc.isenabled(), "a caller's disabled collector was turned on"
+    gc.enable()
+""")
+
+
+def test_numba_start_gives_the_collector_back_and_the_heap_is_frozen_at_exit():
+    pytest.importorskip("numba")
+    proc = subprocess.run([sys.executable, "-c", COLLECTOR], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert proc.stdout.strip() == "frozen at exit: True", proc.stdout

@@ -5,7 +5,7 @@ exponents (the rational pair alpha, gamma), model (materials, Omega, the inverse
 law, collision and results (the scipy reference integration and what it returns), energy (1 - eps
 from the energy balance), highprec (mpmath Taylor), asymptotics (small- and large-Omega
 expansions, alpha = gamma), connection (the exact Omega~(Omega), its fit and the retrace check),
-errors (the input checks every layer uses).
+errors (the input checks every layer uses), root (a bracketed root without scipy).
 
 Imports nothing from the rest of the package.
 """

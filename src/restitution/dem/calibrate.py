@@ -13,12 +13,12 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import numpy as np
 
 from ..core.collision import OMEGA_RANGE, StickError
 from ..core.errors import DerivedRangeError, ParameterError, derived_in_range, real_array, require_positive_finite
 from ..core.exponents import as_exponents
 from ..core.problem import Problem
+from ..core.root import bracketed_root
 from .contact import Contact, contact_eps
 
 __all__ = ["calibrate", "Calibrated"]
@@ -97,46 +97,7 @@ def _omega_for(problem, target: float, rtol: float) -> float:
                                                 f"Omega in [{OMEGA_RANGE[0]:g}, {OMEGA_RANGE[1]:g}]")
         s, e = s_next, e_next
     a, b = sorted((s, s_next))
-    return 10.0 ** _root(lambda t: _eps_at(problem, t, rtol) - target, a, b, _LOG_OMEGA_XTOL)
-
-
-def _root(f, a: float, b: float, xtol: float) -> float:
-    """The root of ``f`` between a and b, where f changes sign, to xtol + 4 ulp: regula falsi with
-    the Illinois rule (an end kept twice in a row has its value halved, so both ends close in),
-    superlinear on a smooth f and never outside the bracket. (scipy's brentq served here; importing
-    scipy.optimize cost ``restitution deck`` more than the rest of its own work.) Ends without a
-    sign change between them, a value that is not finite, or no convergence in _ROOT_STEPS steps
-    raise ArithmeticError: a calibration is never given a point that is not the root."""
-    fa, fb = f(a), f(b)
-    if fa == 0.0 or fb == 0.0:
-        return a if fa == 0.0 else b
-    if not (math.isfinite(fa) and math.isfinite(fb)) or (fa > 0.0) == (fb > 0.0):
-        raise ArithmeticError(f"no root bracketed between {a!r} and {b!r}: f is {fa!r} and {fb!r} there")
-    kept = 0
-    c = a
-    for _ in range(_ROOT_STEPS):
-        c = b - fb * (b - a) / (fb - fa)
-        if not min(a, b) < c < max(a, b):
-            c = 0.5 * (a + b)
-        fc = f(c)
-        if fc == 0.0:
-            return c
-        if not math.isfinite(fc):
-            raise ArithmeticError(f"f is {fc!r} at {c!r}, inside the bracket [{a!r}, {b!r}]")
-        if (fc > 0.0) == (fb > 0.0):
-            b, fb = c, fc
-            fa, kept = (0.5 * fa if kept == -1 else fa), -1
-        else:
-            a, fa = c, fc
-            fb, kept = (0.5 * fb if kept == 1 else fb), 1
-        if abs(b - a) <= xtol + 4.0 * np.finfo(float).eps * abs(c):
-            return c
-    raise ArithmeticError(f"the root between {a!r} and {b!r} was not found to {xtol:g} in {_ROOT_STEPS} steps")
-
-
-#: Steps of :func:`_root` before it gives up (the Illinois rule closes a bracket of a decade to
-#: 1e-13 in far fewer on a smooth f; bisection alone would need 47)
-_ROOT_STEPS = 200
+    return 10.0 ** bracketed_root(lambda t: _eps_at(problem, t, rtol) - target, a, b, _LOG_OMEGA_XTOL)
 
 
 def _d2_for(ex, D1: float, g: float, omega: float, target: float) -> float:

@@ -15,6 +15,7 @@ import re
 
 from .beside import BESIDE
 from .meeting import MOVERS, neigh_modify, special_bonds
+from .stream import SEEDED
 from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
@@ -116,6 +117,15 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     # whether the last command read was a run that joined the last stage and nothing read since:
     # a run then joins it too (a loop's 10 000 runs, each key of the settings computed once)
     same = False
+    # A loop's pass that defines its pours again (new seeds) and runs: the pours read since the
+    # last run (seeds aside; None once anything else is read), and those before it where that run
+    # was recorded in the last stage. Each of these commands, and the run with the atoms held,
+    # overwrites the reader's state with what its own words or the same atoms say, so a pass equal
+    # to the one before leaves the state, hence the key, as that pass did: the run joins the stage,
+    # and the pass's pours, held back while they repeat the last pass's, are not read at all.
+    block: list | None = []
+    last_block: list | None = None
+    pending: list = []
     for cmd in commands:
         try:
             split = words(cmd.text)
@@ -124,6 +134,21 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         if not split or split[0] in _ENGINE_ONLY:
             continue
         plain_run = split[0] == "run" and "every" not in split
+        if cmd.stage is None and block is not None and (pour := _pour_again(split)) is not None:
+            block = block + [pour]
+            if last_block is not None and block == last_block[:len(block)]:
+                pending.append((split, cmd))
+                same = False
+                continue
+        elif cmd.stage is None:
+            block = None
+        elif cmd.snapshot is False and plain_run and block and block == last_block:
+            deck.stages[-1][0].append((cmd.loc, cmd.text))     # the atoms of the run before, held again
+            block, pending = [], []
+            continue
+        for held_back, held_cmd in pending:      # the pass differs from the last: its pours, in turn
+            _execute(deck, held_back, held_cmd.text, held_cmd.loc, read_file)
+        pending = []
         if cmd.stage is not None and cmd.snapshot is not False:
             if done >= len(atoms):
                 # the engine was stopped before this run wrote its atoms (its budget ran out): what
@@ -142,6 +167,11 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         runs = (len(deck.stages), len(deck.stages[-1][0]) if deck.stages else 0)
         _execute(deck, split, cmd.text, cmd.loc, read_file)
         same = plain_run and runs == (len(deck.stages), len(deck.stages[-1][0]) - 1 if deck.stages else -1)
+        if cmd.stage is not None:
+            recorded = bool(deck.stages) and runs != (len(deck.stages), len(deck.stages[-1][0]))
+            last_block, block = (block if plain_run and recorded else None), []
+    for held_back, held_cmd in pending:          # pours after the last run: settings no run used
+        _execute(deck, held_back, held_cmd.text, held_cmd.loc, read_file)
     if not deck.stages:
         if not atoms:
             # no run and no end reached: "no particle" would be a guess, never a reading
@@ -165,6 +195,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
     return deck
+
+
+def _pour_again(split: list) -> tuple | None:
+    """A fix pour or deposit's words without its seed (which the reader does not read); None for
+    any other command."""
+    seed = SEEDED.get(split[3]) if split[0] == "fix" and len(split) > 3 else None
+    return None if seed is None else tuple(split[:seed] + split[seed + 1:])
 
 
 #: Commands whose effect on the atoms the engine reports itself (the sizes a run sees), and the

@@ -19,7 +19,7 @@ from .scratch import AUDIT, DYNAMIC, NOOP, Scratch, normalised
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS
 
-__all__ = ["Executed", "executed", "skipped", "unchecked", "snapshots", "engine_error", "first_unchecked"]
+__all__ = ["Executed", "executed", "skipped", "unchecked", "snapshots", "engine_error", "first_unchecked", "SEEDED"]
 
 
 @dataclass(slots=True)
@@ -55,6 +55,18 @@ def _substituted(line: str) -> bool:
     return "$" in line and any("$" in piece for piece, quote in segments(line) if not quote)
 
 
+def _once_each(func):
+    """(``func`` computed once per distinct argument, the dict of what it computed)."""
+    done: dict = {}
+
+    def once(arg):
+        found = done.get(arg)
+        if found is None:
+            found = done[arg] = func(arg)
+        return found
+    return once, done
+
+
 def executed(echo: str, scratch: Scratch) -> list[Executed]:
     """The commands an engine ran, from its echo, each with the deck line it came from.
 
@@ -88,14 +100,10 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     tagged = re.compile(rf"{re.escape(scratch.tag)}(\d+|{AUDIT})\s*$")
     dump = f"write_dump all custom {scratch.root / ATOMS} "
     lines = _echo_lines(echo)
-    # a loop echoes the same few lines thousands of times: each distinct line normalised once
-    keys: dict = {}
-
-    def key_of(line: str) -> str:
-        key = keys.get(line)
-        if key is None:
-            key = keys[line] = normalised(line)
-        return key
+    # a loop echoes the same few lines thousands of times: each distinct line normalised once, and
+    # scanned once for a $ outside quotes (a marker's quoted if is long)
+    key_of, keys = _once_each(normalised)
+    substituted, _ = _once_each(_substituted)
     out: list = []
     k, opened, stage_at = 0, None, None
     ifs: list = []           # the lines echoed whose if or every runs quoted commands, latest last
@@ -105,16 +113,21 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
         """The command after the engine's substitutions: one echo after each, until no $ is left
         outside quotes."""
         nonlocal k
-        text = key
-        while _substituted(text) and k < len(lines) and not tagged.search(lines[k]) and \
-                key_of(lines[k]).split()[:1] == key.split()[:1]:
-            text = key_of(lines[k])
+        text, head = key, None
+        while substituted(text) and k < len(lines) and not tagged.search(lines[k]):
+            head = key.split(None, 1)[:1] if head is None else head
+            echoed = key_of(lines[k])
+            if echoed.split(None, 1)[:1] != head:
+                break
+            text = echoed
             k += 1
         return text
 
     while k < len(lines):
         raw = lines[k]
-        key = key_of(raw)
+        key = keys.get(raw)          # key_of, inline: the loop's hottest line
+        if key is None:
+            key = keys[raw] = normalised(raw)
         k += 1
         if not key or _ERROR_CONTEXT.match(key):     # an error quotes the line, tag and all
             continue
@@ -130,9 +143,9 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
         if key.startswith(dump) and stage_at is not None:
             out[stage_at].snapshot = True         # the marker's dump of the atoms at this run
             continue
-        tag = tagged.search(raw)
+        tag = tagged.search(raw) if scratch.tag in raw else None
         if tag and tag.group(1) == AUDIT:
-            text = follow(key)
+            text = follow(key) if "$" in key else key   # no $: nothing substituted
             if opened is not None and key == opened:
                 out[-1].text = text          # the run, substituted: the stage's own text
             opened = None
@@ -152,7 +165,7 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
                         break
         if loc is None:
             continue                         # the engine's output, or a line of the audit's
-        text = follow(key)
+        text = follow(key) if "$" in key else key   # no $: nothing substituted
         out.append(Executed(loc, text))
         _latest(ifs, loc, scratch)
         opened_file = _opened(text, scratch)
@@ -178,6 +191,8 @@ _MARK = re.compile(r"label restitution_(skipped|unchecked)_\d+")
 def _opened(text: str, scratch: Scratch):
     """The copied file an include or jump opens where none of its lines carries a tag (a file the
     deck names by a variable), as the scratch's ``files`` names it; else None."""
+    if not text.startswith(("include", "jump")):      # most commands: no split
+        return None
     words = text.split()
     if len(words) < 2 or words[0] not in ("include", "jump") or words[1] == "SELF":
         return None
@@ -250,7 +265,7 @@ def unchecked(commands: list, scratch: Scratch) -> list:
 _QUIET = frozenset({"label", "jump", "if", "include", "next", "variable"})
 #: Inserting fixes and the place of their random seed: a fix redefined with another seed alone
 #: inserts the same sizes, and LAMMPS' set-up checks nothing of the seed
-_SEEDED = {"pour": 6, "deposit": 7}
+SEEDED = {"pour": 6, "deposit": 7}
 
 
 def first_unchecked(commands: list, scratch: Scratch) -> int | None:
@@ -305,7 +320,7 @@ def first_unchecked(commands: list, scratch: Scratch) -> int | None:
             names = split[1:2] if split[0] == "variable" else split[1:]
             changed = changed or read is None or any(name in read for name in names)
         elif split[0] == "fix" and len(split) > 3:
-            seed = _SEEDED.get(split[3])
+            seed = SEEDED.get(split[3])
             fixes[split[1]] = split[:seed] + split[seed + 1:] if seed is not None else split
             changed = changed or at_check.get(split[1]) != fixes[split[1]]
         elif split[0] not in _QUIET:

@@ -32,6 +32,7 @@ import math
 from fractions import Fraction
 
 from ....core.errors import ParameterError, derived_in_range, one_of, require_positive_finite
+from ....core.root import bracketed_root
 from ...contact import Contact, ElasticContact
 from ...pair import Pair, pair_inputs
 
@@ -113,12 +114,11 @@ def _e_from_restitution_b(b: float, alpha) -> float:
 
 
 def _e_from_tsuji_a(a: float) -> float:
-    from scipy.optimize import brentq     # here: `restitution deck` does not pay its import
     lo, hi = tsuji_a(1.0), tsuji_a(0.0)
     if not lo < a < hi:
         raise ParameterError("D2", a, f"needs A(e) = D2 / sqrt(D1) in ({lo:.4g}, {hi:.4g}), what tsuji's e in "
                                       "(0, 1) can give")
-    return brentq(lambda e: tsuji_a(e) - a, 0.0, 1.0, xtol=1e-15)
+    return bracketed_root(lambda e: tsuji_a(e) - a, 0.0, 1.0, 1e-15)
 
 
 def _d1(pair: Pair, normal: str, k_n: float | None, E: float | None, nu: float | None) -> tuple[str, float]:
