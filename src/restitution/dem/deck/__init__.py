@@ -352,7 +352,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                             "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, f"{engine} stops here: {message}")
         deck = read_executed(commands, atoms, radius, density, read_file)
-    notes = [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
+        notes = _run_dependent_notes(commands, scratch, engine)
+    notes += [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
              "part in a contact" for cmd, loc in skipped(commands, scratch).items()]
     notes += _override_notes(atoms, radius or {}, density or {})
     if done.timed_out:
@@ -363,6 +364,40 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                      f"{len(commands)} commands" + (f"; its last {len(last)} runs all saw the same contact settings"
                                                     if len(last) > 1 else ""))
     return deck, notes
+
+
+def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
+    """A line for the commands after a run that read a value the skipped runs would have changed
+    (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text."""
+    from .runtime import run_dependent
+    texts: dict = {}
+
+    def source(loc):
+        name, n = loc
+        if name not in texts:
+            try:
+                texts[name] = (scratch.deck if name is None else scratch.deck.parent / name).read_text(
+                    encoding="utf-8", errors="replace").split("\n")
+            except OSError:
+                texts[name] = []
+        lines, k, text = texts[name], n - 1, ""
+        while 0 <= k < len(lines):
+            piece = lines[k].split(scratch.tag)[0].rstrip()
+            text += piece[:-1] if piece.endswith("&") else piece
+            if not piece.endswith("&"):
+                break
+            k += 1
+        return text
+    found = run_dependent(commands, {cmd.loc: source(cmd.loc) for cmd in commands
+                                     if isinstance(cmd.loc, tuple) and len(cmd.loc) == 2 and cmd.loc[1]})
+    if not found:
+        return []
+    runs = "skipped" if engine == "LAMMPS" else "one step long"
+    shown = "; ".join(f"{place(loc)} {text.strip()}" for loc, text in found[:3])
+    more = f" and {len(found) - 3} more" if len(found) > 3 else ""
+    return [f"after a run, {shown}{more}: reads a value the runs change (time, step, energies, positions, "
+            f"computes); with the runs {runs} it reads the value before them, so the branches taken and the "
+            "values set from here on, and the stages audited after it, may not be those the deck runs"]
 
 
 def _engine_pass(deck_run, scratch, budget: float, folder: Path) -> tuple:

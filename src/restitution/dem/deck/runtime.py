@@ -1,0 +1,143 @@
+"""What a pass with its runs skipped cannot tell: a command after a run that reads a value the run
+would have changed.
+
+The engine runs the deck with every run skipped (LAMMPS) or one step long (LIGGGHTS), so time,
+step, energies, positions and computes keep their values from before the runs. A command after a
+run that substitutes such a value (an ``if`` whose condition reads ``${t}`` of ``variable t equal
+time``, a ``pair_coeff`` from ``$(step*...)``) then takes another value, or another branch, than in
+the real simulation, and the stages the audit reads may not be the ones the deck runs. The audit
+cannot know the value, but it can tell which commands depend on one, from the deck's own variable
+definitions as the engine executed them, and say so.
+
+A reference counts as fixed by the run only where it provably is: a variable of a style the engine
+sets once (index, loop, string, world, ...), or an equal-style formula of numbers, math functions
+and such variables. Anything else (a thermo keyword, a compute, a fix, an atom value, a style this
+module does not know) counts as run-dependent: a needless warning costs a line of stderr, a missing
+one a wrong answer given as right.
+"""
+
+from __future__ import annotations
+
+import re
+
+__all__ = ["run_dependent"]
+
+#: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
+#: is not one: it formats an equal-style variable when used).
+_FIXED_STYLES = frozenset({"index", "loop", "world", "universe", "uloop", "string", "getenv"})
+#: Names an equal-style formula may hold without reading the simulation's state (LAMMPS' step
+#: functions, logfreq, stride, vdisplace, swiggle and cwiggle, read the step: not among them).
+_MATH = frozenset({"sqrt", "exp", "ln", "log", "abs", "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
+                   "ceil", "floor", "round", "ternary", "PI", "version", "random", "normal"})
+_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_NUMBER = re.compile(r"(?<![A-Za-z0-9_.])(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
+#: Commands after a run whose substituted values can change what the audit reads.
+_WATCHED = frozenset({"if", "pair_coeff", "pair_style", "fix", "set", "timestep", "create_atoms", "variable",
+                      "region", "mass", "neigh_modify", "special_bonds", "velocity", "fix_modify"})
+
+
+def _references(text: str, formula: bool = True) -> tuple[list, list, str]:
+    """(variable names referenced, immediate formulas, the text without them): ``${name}``, ``$x``,
+    ``$(formula)`` with its parentheses balanced and its ``:format`` dropped, and in a formula
+    ``v_name`` (in a command the engine reads ``v_name`` while it runs, unaffected by the skip)."""
+    names, formulas, rest, i = [], [], [], 0
+    while i < len(text):
+        if text.startswith("$(", i):
+            depth, j = 0, i + 1
+            while j < len(text):
+                depth += {"(": 1, ")": -1}.get(text[j], 0)
+                if depth == 0:
+                    break
+                j += 1
+            inner = text[i + 2:j]
+            formulas.append(inner.rsplit(":%", 1)[0] if ":%" in inner else inner)
+            i = j + 1
+        elif text.startswith("${", i):
+            j = text.find("}", i)
+            j = len(text) if j < 0 else j
+            names.append(text[i + 2:j])
+            i = j + 1
+        elif text[i] == "$" and i + 1 < len(text):
+            names.append(text[i + 1])
+            i += 2
+        elif formula and text.startswith("v_", i) and (i == 0 or not (text[i - 1].isalnum() or text[i - 1] == "_")):
+            m = _NAME.match(text, i + 2)
+            names.append(m.group(0) if m else "")
+            i = m.end() if m else i + 2
+        else:
+            rest.append(text[i])
+            i += 1
+    return names, formulas, "".join(rest)
+
+
+def _fixed(text: str, styles: dict, seen: frozenset = frozenset()) -> bool:
+    """Whether every substitution in the command ``text`` is fixed by the run."""
+    names, formulas, _ = _references(text, formula=False)
+    return (all(_variable_fixed(n, styles, seen) for n in names)
+            and all(_formula_fixed(f, styles, seen) for f in formulas))
+
+
+def _variable_fixed(name: str, styles: dict, seen: frozenset) -> bool:
+    if name in seen or name not in styles:
+        return False                          # circular, or defined where this pass did not see it
+    style, formula = styles[name]
+    if style in _FIXED_STYLES:
+        return True
+    return style == "equal" and _formula_fixed(formula, styles, seen | {name})
+
+
+def _formula_fixed(formula: str, styles: dict, seen: frozenset) -> bool:
+    names, formulas, bare = _references(formula)
+    return (all(_variable_fixed(n, styles, seen) for n in names)
+            and all(_formula_fixed(f, styles, seen) for f in formulas)
+            and all(n in _MATH for n in _NAME.findall(_NUMBER.sub(" ", bare))))
+
+
+def run_dependent(commands: list, source: dict | None = None) -> list:
+    """The commands after a run whose substituted values may depend on the runs the pass skipped.
+
+    Parameters
+    ----------
+    commands : list of Executed
+        The commands as the engine ran them (:func:`restitution.dem.deck.stream.executed`), with
+        ``stage`` set on the runs.
+    source : dict, optional
+        (file, line) -> the deck's text of that line, before substitution; a command's own text
+        where a line is missing.
+
+    Returns
+    -------
+    list of (tuple, str)
+        ((file, line), text before substitution) of each such command, each line once, in the
+        order the engine first ran it.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> cmds = [Executed((None, 1), "variable t equal time"), Executed((None, 2), "variable i loop 3"),
+    ...         Executed((None, 3), "run 10", stage=0), Executed((None, 4), 'if "${i} > 1" then quit'),
+    ...         Executed((None, 5), 'if "${t} > 0.1" then "jump SELF done"')]
+    >>> run_dependent(cmds)
+    [((None, 5), 'if "${t} > 0.1" then "jump SELF done"')]
+    """
+    source = source or {}
+    styles: dict = {}
+    after_run, found, seen = False, [], set()
+    for cmd in commands:
+        text = source.get(cmd.loc, cmd.text)
+        split = text.split()
+        if not split:
+            continue
+        if split[0] == "variable" and len(split) >= 3 and cmd.stage is None:
+            if split[2] == "delete":
+                styles.pop(split[1], None)
+            else:
+                # the text before substitution: an immediate $() in a definition is read as
+                # the formula it substitutes, so run-dependent where that is
+                styles[split[1]] = (split[2], " ".join(split[3:]))
+        if cmd.stage is not None:
+            after_run = True
+        elif after_run and split[0] in _WATCHED and cmd.loc not in seen and not _fixed(text, styles):
+            seen.add(cmd.loc)
+            found.append((cmd.loc, text))
+    return found
