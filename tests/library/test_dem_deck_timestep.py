@@ -8,6 +8,7 @@ import pytest
 
 from cli_run import run_cli
 from deck_cli import lammps_spheres
+from restitution.dem.contact import ElasticContact
 from restitution.dem.deck import DT_TOL, FEW_STEPS
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.pair import Pair
@@ -61,3 +62,21 @@ def test_a_deck_without_timestep_is_audited_at_lammps_default(tmp_path):
     assert status == 0, err
     (p,) = json.loads(out)["pairs"]
     assert p["dt"] == 1e-8                      # LAMMPS' default for units si
+
+
+def test_a_nearly_elastic_stiff_pair_states_its_steps_instead_of_refusing(tmp_path):
+    # glass-like spheres (E = 6e10) with a small viscoelastic damping: Omega reaches 1e17 at g = 0.01,
+    # beyond every integrator's range; eps is 1 - 6e-11 there and the contact practically elastic,
+    # so its steps per contact come from the undamped contact time (within 3.1e-5 of the damped one
+    # for every law measured at Omega = 1e15, less above)
+    path = tmp_path / "in.deck"
+    path.write_text(lammps_spheres((0.004, 2500)) + f"pair_coeff * * hertz/material 6e10 0.5 0.23 {T} "
+                    "damping viscoelastic limit_damping\ntimestep 1e-8\nrun 1\n")
+    status, out, err = run_cli(["deck", str(path), "--g", "0.01", "1", "--json"])
+    assert status == 0, err
+    (p,) = json.loads(out)["pairs"]
+    pair = Pair.spheres(0.002, 0.002, 2500.0)
+    c = ElasticContact("3/2", 4.0 / 3.0 * 6e10 / (2 * (1 - 0.23 ** 2)) * pair.R ** 0.5 / pair.m)
+    for g, eps, n in zip(p["speeds"], p["eps"], p["steps_per_contact"]):
+        assert 1.0 - 1e-9 < eps < 1.0
+        assert n == pytest.approx(c.contact_time(g) / 1e-8, rel=1e-4)
