@@ -536,7 +536,7 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
         for j in range(i, deck.ntypes + 1):
             if _empty(deck, i) or _empty(deck, j):
                 continue
-            if (i, j) in deck.others:
+            if (i, j) in deck.others or _adapted(deck, deck.idle.get((i, j), ())):
                 not_audited.append(_other_force(deck, i, j))
                 continue
             if (why := excluded(deck, i, j)) is not None:
@@ -585,10 +585,17 @@ def _unmet(deck: Deck, i: int, j: int, moves: list) -> tuple | None:
     return None
 
 
+def _adapted(deck: Deck, subs) -> bool:
+    """Whether a fix adapt in force changes a coefficient of one of these sub-styles (``pair SUB``)."""
+    return any(w[3] == "adapt" and any(a == "pair" and b in subs for a, b in zip(w[4:], w[5:]))
+               for _, w in deck.beside)
+
+
 def _other_force(deck: Deck, i: int, j: int) -> tuple:
-    """The line naming a pair of a hybrid pair style that another sub-style covers, not audited."""
+    """The line naming a pair of a hybrid pair style that another sub-style covers (or one whose
+    force a fix adapt brings in), not audited."""
     (source, n), line = deck.style_line
-    names = ", ".join(sorted(deck.others[(i, j)]))
+    names = ", ".join(sorted(deck.others.get((i, j), set()) | set(deck.idle.get((i, j), ()))))
     if deck.hybrid == "hybrid":
         why = (f"types {i} {j}: pair_coeff gives them sub-style {names}, not {deck.substyle}: no granular contact "
                "between them, not audited")
