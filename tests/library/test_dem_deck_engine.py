@@ -646,3 +646,31 @@ def test_hybrid_pair_styles_audit_the_granular_sub_style_where_it_alone_acts(tmp
     got = _in_lammps(p, Pair.spheres(0.01, 0.01, 2500.0, 2500.0),
                      f"pair_coeff * * gran/hooke\npair_coeff {other} lj/cut 1e-9 0.01", style=style, ntypes=3)
     assert abs(got / p["eps"][2] - 1) < 1e-6, (got, p["eps"][2])
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("other, audited", [("zero", True), ("soft 0.0", True), ("lj/cut 0 0.01", True),
+                                            ("soft 1e-9", False), ("lj/cut 1e-9 0.01", False)])
+def test_an_overlaid_sub_style_that_carries_no_force_leaves_the_pair_audited(tmp_path, other, audited):
+    # pair_style hybrid/overlay: a sub-style whose coefficients give it no force (zero; soft or
+    # lj/cut with a prefactor 0) adds nothing to the granular contact; any other is named, and so is
+    # a fix adapt that changes the idle sub-style's prefactor as the run goes
+    name = other.split()[0]
+    style = f"hybrid/overlay gran/hooke 2000.0 NULL 50.0 NULL 0.5 0 {name} 0.05"
+    text = HEAD + f"pair_style {style}\npair_coeff * * gran/hooke\npair_coeff 1 2 {other}\nrun 1\n"
+    status, out, err = deck(tmp_path, text)
+    assert status == 0, err
+    res = json.loads(out)
+    assert ((1, 2) in [tuple(p["types"]) for p in res["pairs"]]) == audited, err
+    if audited:
+        # LAMMPS under the deck's own hybrid/overlay lines gives the granular sub-style's eps
+        (p,) = [p for p in res["pairs"] if p["types"] == [1, 2]]
+        got = _in_lammps(p, Pair.spheres(0.01, 0.01, 2500.0, 2500.0),
+                         f"pair_coeff * * gran/hooke\npair_coeff 1 2 {other}", style=style, types=(1, 2), ntypes=3)
+        assert abs(got / p["eps"][2] - 1) < 1e-6, (got, p["eps"][2])
+    if audited and name == "soft":
+        adapted = text.replace("run 1", "variable a equal ramp(0,1)\nfix ad all adapt 1 pair soft a 1 2 v_a\nrun 1")
+        status, out, err = deck(tmp_path, adapted)
+        assert status == 0, err
+        assert (1, 2) not in [tuple(p["types"]) for p in json.loads(out)["pairs"]]
+        assert "adapt" in err

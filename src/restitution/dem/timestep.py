@@ -29,10 +29,11 @@ VERIFY_STEPS = 20_000
 REFINE = 1.25
 
 
-def verlet_eps(contact: Contact, g: float, dt: float, max_steps: int = 10_000_000) -> float:
+def verlet_eps(contact: Contact, g: float, dt: float, max_steps: int = 10_000_000, phase: float = 0.0) -> float:
     """eps of one head-on collision advanced the way DEM codes do it (velocity Verlet, force from
     the half-step velocity; the force clipped at zero under the force rule, as LAMMPS'
-    limit_damping does; no force once the overlap is gone)."""
+    limit_damping does; no force once the overlap is gone). ``phase`` in [0, 1): where in a step
+    the contact starts (the bodies ``phase * g * dt`` apart at the first step; 0: touching)."""
     a, c = float(contact.alpha), float(contact.gamma)
     D1, D2, clip = contact.D1, contact.D2, contact.end == "force"
 
@@ -42,7 +43,7 @@ def verlet_eps(contact: Contact, g: float, dt: float, max_steps: int = 10_000_00
         f = D1 * x ** a + D2 * x ** c * v
         return -max(f, 0.0) if clip else -f
 
-    x, v = 0.0, g
+    x, v = -phase * g * dt, g
     acc = 0.0
     for _ in range(max_steps):
         v_half = v + 0.5 * dt * acc

@@ -332,7 +332,7 @@ def _hybrid(deck: Deck, words: list, where: str, line: str) -> list:
     n = k + 1
     while n < len(words) and (words[n] in ("NULL", "limit_damping") or re.fullmatch(r"[-+.\deE]+", words[n])):
         n += 1
-    deck.hybrid, deck.substyle, deck.others = words[1], words[k], {}
+    deck.hybrid, deck.substyle, deck.others, deck.idle = words[1], words[k], {}, {}
     return ["pair_style", *words[k:n]]
 
 
@@ -341,7 +341,7 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if len(words) > 2 and words[1] in _HYBRID:
         words = _hybrid(deck, words, where, line)
     else:
-        deck.hybrid, deck.substyle, deck.others = "", "", {}
+        deck.hybrid, deck.substyle, deck.others, deck.idle = "", "", {}, {}
     style = words[1]
     if deck.style and style != deck.style:
         # LAMMPS keeps the coefficients for the same style (its settings change); another style
@@ -355,6 +355,21 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
                                      f"{', and '.join(d.MAPPED for d in DIALECTS.values())})")
     deck.code = PAIR_STYLES[style].ENGINE
     PAIR_STYLES[style].pair_style(deck, words, where, line)
+
+
+#: Sub-styles whose force is their first coefficient times a shape (soft's A, lj/cut's epsilon)
+_PREFACTOR_FIRST = ("soft", "lj/cut")
+
+
+def _idle(sub: str, args: list) -> bool:
+    """Whether a sub-style's pair_coeff arguments give it no force at all: the zero style, or a
+    prefactor of exactly 0 (LAMMPS multiplies its force by it)."""
+    if sub == "zero":
+        return True
+    try:
+        return sub in _PREFACTOR_FIRST and bool(args) and float(args[0]) == 0.0
+    except ValueError:
+        return False
 
 
 def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
@@ -374,6 +389,8 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
                 if deck.hybrid == "hybrid":
                     deck.coeffs.pop(key, None)
                     deck.others[key] = {sub}
+                elif _idle(sub, words[4:]):
+                    deck.idle.setdefault(key, set()).add(sub)
                 elif sub != "none":
                     deck.others.setdefault(key, set()).add(sub)
             return
@@ -430,7 +447,7 @@ def contact_key(deck: Deck) -> str:
                        deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
-                       set(deck.shapes), deck.sizes, deck.others, [w for _, w in deck.beside],
+                       set(deck.shapes), deck.sizes, deck.others, deck.idle, [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
                        bool(deck.bonds), deck.special_lj)))
 

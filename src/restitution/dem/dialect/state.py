@@ -121,6 +121,9 @@ class Deck:
     hybrid: str = ""
     substyle: str = ""
     others: dict = field(default_factory=dict)
+    # under hybrid/overlay, the pairs whose other sub-styles carry no force by their coefficients (the
+    # zero style, or a prefactor 0), (i, j) -> {their names}: a fix adapt on one gives it a force
+    idle: dict = field(default_factory=dict)
     # who meets whom (restitution.dem.deck.meeting): neigh_modify exclude settings in force, (loc,
     # text, [style, args...]); fix ID -> (loc, text, group, style) of the fixes that move atoms (an
     # integrator, fix move); (loc, text) of a command that made bonds, and special_bonds' lj weights

@@ -360,7 +360,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     def contact_of(pair, t):
         contact = lammps_contact(_against(pair, radius, t, loc, text), **c.setting())
         exact = None
-        if typed is not None:
+        if typed is not None and contact.D2 > 0:     # no damping (e = 1): eps is e already
             # tsuji's and coeff_restitution's eps depend on e alone (Omega = 1 / A(e)^2 for hooke
             # and hertz), so one e serves every type the wall acts on: the wall's own line with it
             e_new = exact_e(contact, typed, partial(lammps_eta_n0, None, c.damping))
