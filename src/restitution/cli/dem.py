@@ -134,6 +134,9 @@ def add_deck_subcommand(subparsers) -> None:
     d.add_argument("--radius", nargs="+", default=[], metavar="T=R", help="radius of atom type T")
     d.add_argument("--density", nargs="+", default=[], metavar="T=RHO", help="density of atom type T")
     d.add_argument("--json", action="store_true", help="machine-readable output")
+    d.add_argument("--budget", type=number_argument, default=None, metavar="SECONDS",
+                   help="wall time the engine's pass through the deck may take before it is ended, as a loop "
+                        "that never reaches a run would be (default: the audit's own, named where it ends a pass)")
 
 
 def _per_type(name: str, items) -> dict:
@@ -174,7 +177,7 @@ def run_deck(args, out) -> None:
         if engine.materials is not None and engine.materials.is_materials_file(text):
             return _run_materials(engine, args, text, speeds, read_file, out)
     res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file,
-                     path=args.file)
+                     path=args.file, **({} if args.budget is None else {"budget": args.budget}))
     for note in res["notes"]:
         print(f"restitution deck: {note}", file=sys.stderr)
     if any("damping tsuji" in row["model"] for row in res["pairs"] + res["walls"]):

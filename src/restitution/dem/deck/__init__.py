@@ -267,6 +267,8 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
 #: longest pass of the official examples and tutorials on a loaded 2-core machine (2 s); what it
 #: echoes is capped too (:data:`restitution.dem.dialect.child.MAX_ECHO`)
 BUDGET = 20.0
+#: The budgets a caller may ask for, in seconds.
+BUDGET_RANGE = (1.0, 3600.0)
 _LIGGGHTS_DECK = re.compile(r"^\s*(pair_style\s+gran\s+model|atom_style\s+granular|fix\s+\S+\s+\S+\s+"
                             r"(particletemplate|particledistribution|insert/|mesh/surface|property/global))", re.M)
 
@@ -366,8 +368,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             # no run and no end reached (a loop without a run): nothing to audit, and "no particle"
             # would be a guess; said before the echo is read any further
             raise DeckError("deck", None, f"{engine} had not reached a run or the deck's end within the audit's "
-                                          f"budget ({done.spent}; runs skipped): a loop that never runs? not "
-                                          "audited")
+                                          f"budget ({done.spent}; runs skipped): a loop that never runs, or a "
+                                          "set-up that takes longer (--budget SECONDS allows more time); not audited")
 
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
@@ -399,7 +401,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         last = deck.stages[-1][0] if deck.stages else []
         runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
         notes.append(f"{engine} had not ended the deck within the audit's budget ({done.spent}; {runs}, so a "
-                     "loop waiting for a value a run would change never ends): audited as far as it ran, "
+                     "loop waiting for a value a run would change never ends; --budget SECONDS allows more "
+                     "time): audited as far as it ran, "
                      f"{len(commands)} commands" + (f"; its last {len(last)} runs all saw the same contact settings"
                                                     if len(last) > 1 else ""))
     return deck, notes
@@ -515,6 +518,11 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     read_file : callable, optional
         Unused: the engine opens the files the deck names itself, in its scratch copy (kept for
         callers that pass it).
+    path : path-like, optional
+        The deck's file, whose folder the engine sees (a copy of it); None: the text alone.
+    budget : float, optional
+        Wall time in seconds the engine's pass may take (within :data:`BUDGET_RANGE`): it ends a
+        loop that never reaches a run.
 
     Returns
     -------
@@ -540,7 +548,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         One line naming what in the deck cannot be mapped or is missing (the run it stops at, where
         the deck has several stages).
     ParameterError
-        Without a speed.
+        Without a speed, or for a ``budget`` outside :data:`BUDGET_RANGE` seconds.
 
     Examples
     --------
@@ -554,6 +562,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     speeds = [float(g) for g in speeds]
     if not speeds:
         raise ParameterError("g", speeds, "give at least one impact speed")
+    if not BUDGET_RANGE[0] <= budget <= BUDGET_RANGE[1]:
+        raise ParameterError("budget", budget, f"must be in [{BUDGET_RANGE[0]:g}, {BUDGET_RANGE[1]:g}] seconds")
     engine = engine_of(text)
     if path is None:
         with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
