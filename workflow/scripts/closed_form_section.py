@@ -288,9 +288,8 @@ for the main variant
 With $\ell = \gamma + 1$, $X = \ell^{{1/\ell}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/\ell$ and $\psi$ the digamma function,
 \begin{{equation*}}
 \varepsilon = k\,\Omega\left[1 - \Omega\left(c_{{\log}} \ln\frac{{1}}{{\Omega}} + c_{{\mathrm{{v}}}}\right)\right] + O(\Omega^3 \ln^2 \Omega),
-\qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k),
 \end{{equation*}}
-where $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/\ell) - \psi(1/\ell)]/\ell$ and
+where $k = X^{{\alpha-\gamma}}$, $c_{{\log}} = 2rk$, $c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k)$, $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/\ell) - \psi(1/\ell)]/\ell$ and
 $L = \ln(\lambda \mathcal{{M}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{M}} = \ln X - \gamma_E - \psi(1/\ell) - \ln \ell$,
 so every constant is in closed form. (The subscript of $c_{{\mathrm{{v}}}}$ keeps it apart from Kim's $c_0$ of
 Sec.~\ref{{sec:connection}}, an unrelated number.) Here $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
