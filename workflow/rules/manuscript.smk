@@ -113,9 +113,10 @@ rule arxiv:
         generated=manuscript_inputs,   # asked when the DAG is built: every stage is included by then
         # the tables behind the engine and calibration numbers, so a reader can check them without
         # the software: LAMMPS' eps per speed and rule (extrapolated and coarsest step), the typed-e
-        # table, the calibrated dampings and Feng's formula against the exact family
+        # table, the calibrated dampings and Feng's formula against the exact family; and the ledger of
+        # Kim's claims with each row's tolerance and notes, which the supplement's table names
         data=["results/dem/lammps_eps.csv", "results/dem/typed_e.csv", "results/dem/calibration.csv",
-              "results/paper/feng_calibration.csv"],
+              "results/paper/feng_calibration.csv", f"results/{MAIN}/claims.csv"],
         # and every engine run behind an engine number: LAMMPS' behind lammps_eps.csv and each engine's
         # behind the typed-e table, its deck and its output, with how to rerun them (the READMEs last)
         engine_runs=lammps_run_files() + [LAMMPS_RUNS_README],

@@ -37,7 +37,8 @@ typed_readme = Path(snakemake.input.typed_e_runs[-1]).as_posix()
 readme = f"""\
 restitution.tex and supplement.tex compile with pdflatex alone, run until the log asks for no rerun
 (the bibliographies are the .bbl files; the article reads the supplement's labels from the .aux it carries).
-The tables behind the engine and calibration numbers are under results/dem/ and results/paper/ (CSV).
+The tables behind the engine and calibration numbers are under results/dem/ and results/paper/ (CSV);
+the ledger of Kim's claims, with each row's tolerance and notes, is claims.csv under results/<variant>/.
 Every LAMMPS run behind the article's LAMMPS figure is under {Path(runs_readme).parent.as_posix()}/: one deck (.in) and its
 screen output (.out) per run; {runs_readme} says how to rerun one and how each eps is read from it.
 Every engine run behind the typed-e table (LAMMPS, LIGGGHTS, Yade, Kratos: each row in the engine named

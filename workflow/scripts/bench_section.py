@@ -7,6 +7,7 @@
 
 # %%
 import math
+import re
 
 import pandas as pd
 from restitution_workflow.latex import esc, sci
@@ -32,7 +33,7 @@ SHOWN = {
     "elastic": "elastic limit",
     "paper-c": "Kim, printed $c_i$",
     "fitted-c": "Kim, fitted $c_i$",
-    "integrator": "DOP853, machine code",
+    "integrator": "DOP853, compiled (Numba)",
     "solve_ivp plain": r"SciPy DOP853, $x(\tau)$",
     "collide (scipy)": "SciPy DOP853, regularised",
 }
@@ -46,6 +47,40 @@ def shown(method):
     return SHOWN.get(method, esc(method))
 
 
+def power_of_ten(text: str) -> str:
+    """1e-06, 1e6 as $10^{-6}$, $10^{6}$."""
+    mant, _, exp = text.lower().partition("e")
+    head = "" if float(mant) == 1 else rf"{mant} \times "
+    return rf"${head}10^{{{int(exp)}}}$"
+
+
+def setting_tex(setting: str) -> str:
+    """A recorded setting (the benchmark's own shorthand) as the manuscript writes it."""
+    fixed_names = {"C1,C2,E": r"$C_1, C_2$, end term", "C1 only": r"$C_1$ only", "c0-c2": r"$c_0, c_1, c_2$",
+                   "Mueller-Poeschel": r"as in~\cite{granularsjl}"}
+    if setting in fixed_names:
+        return fixed_names[setting]
+    parts = []
+    for part in setting.split(", "):
+        if m := re.fullmatch(r"r?tol=([0-9.e+-]+)", part):
+            parts.append("tolerance " + power_of_ten(m.group(1)))
+        elif m := re.fullmatch(r"digits=(\d+)", part):
+            parts.append(f"{m.group(1)} digits")
+        elif m := re.fullmatch(r"(\d+)x(\d+) (.*)", part):
+            parts.append(rf"${m.group(1)} \times {m.group(2)}$ {esc(m.group(3))}")
+        elif m := re.fullmatch(r"([0-9.]+e[0-9+-]+) (.*)", part):
+            parts.append(f"{power_of_ten(m.group(1))} {esc(m.group(2))}")
+        else:
+            parts.append(esc(part))
+    return ", ".join(parts)
+
+
+def bound(x: float) -> str:
+    """An end of an Omega domain: a power of ten as one, anything else to four digits."""
+    k = round(math.log10(x))
+    return rf"$10^{{{k}}}$" if abs(x / 10.0 ** k - 1.0) < 1e-9 else sci(x, 4)
+
+
 def err(x):
     return "no value" if not math.isfinite(x) else sci(float(x), 2)
 
@@ -55,9 +90,8 @@ lines = [r"\begin{tabular}{llrrrlr}", r"\toprule",
          r"\midrule"]
 for _, r in rows.iterrows():
     # each method is measured on the points of the fixed held-out set that lie in its own domain
-    domain = f"{sci(float(r['omega_min']), 1)}--{sci(float(r['omega_max']), 1)}"
-    # the recorded setting "C1,C2,E" names the end-of-contact coefficient E, which the article calls beta
-    setting = esc(str(r["setting"])).replace("C1,C2,E", r"$C_1, C_2, \beta$")
+    domain = f"{bound(float(r['omega_min']))}--{bound(float(r['omega_max']))}"
+    setting = setting_tex(str(r["setting"]))
     lines.append(f"{shown(r['method'])} & {setting} & {sci(float(r['evals_per_s']), 2)} & "
                  f"{err(r['max_rel_err'])} & {err(r['median_rel_err'])} & {domain} & {int(r['n_points'])} \\\\")
 lines += [r"\bottomrule", r"\end{tabular}"]

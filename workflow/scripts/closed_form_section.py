@@ -12,6 +12,7 @@ from fractions import Fraction
 import numpy as np
 import pandas as pd
 from restitution_workflow.latex import esc, frac_tex, sci
+from restitution_workflow.law_names import law_name
 from restitution_workflow.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
 
 from restitution.core import asymptotics as asy
@@ -88,7 +89,7 @@ for row, (fs, errs, rule) in enumerate(((forms, errors, "force"), (overlap_forms
         e = errs[name]
         kw = dict(color=colors[i % len(colors)], ls=styles[i % len(styles)], lw=1.5,
                   marker=markers[i % len(markers)], markevery=0.125, ms=3.5,
-                  label=rf"{esc(name)} ($\alpha = {p.exponents[name]['alpha']}$, $\gamma = {p.exponents[name]['gamma']}$)")
+                  label=rf"{law_name(name, tex=False)} ($\alpha = {p.exponents[name]['alpha']}$, $\gamma = {p.exponents[name]['gamma']}$)")
         axes[row, 0].loglog(e["omega"], np.maximum(e["err_eps"], 1e-17), **kw)
         el = e["omega"] >= 1
         axes[row, 1].loglog(e["omega"][el], np.maximum(e["err_one_minus_eps"][el], 1e-17), **kw)
@@ -190,7 +191,7 @@ macros = {
     "CFViscousPrefactor": sci(V.k * scale, 4), "CFViscousPower": frac(w),
     "CFElasticPrefactor": sci(E.C1 * scale ** (-float(A_)), 4), "CFElasticPower": frac(-w * A_),
     "CFLawErrElastic": sci(100 * err_elastic_gmin, 2), "CFLawErrViscous": sci(100 * err_viscous_gmax, 2),
-    # the Hertz law with Kuwabara-Kono damping, where the elastic constants are Ramirez et al.'s
+    # the Hertz law with Kuwabara-Kono damping (Ramirez et al. state that its elastic constants exist)
     "CFHertzAlpha": frac(HERTZ[0]), "CFHertzGamma": frac(HERTZ[1]),
     "CFHertzLossPower": frac(elastic_power(*HERTZ)),
     # Eq. (uniform) at the elastic end (defect 2 of issue 43): exact to leading order only there
@@ -217,10 +218,10 @@ for name in p.variants:
     f = forms[name]
     ab = rf"{frac(p.exponents[name]['alpha'])} & {frac(p.exponents[name]['gamma'])}"
     if f["available"]:
-        rows.append(rf"{esc(name)} & {ab} & {sci(f['b'], 12)} & {sci(f['c3'], 12)} & {sci(f['sigma'], 12)} & "
+        rows.append(rf"{esc(law_name(name))} & {ab} & {sci(f['b'], 12)} & {sci(f['c3'], 12)} & {float(f['sigma']):g} & "
                     rf"{f['m0']} & {f['m1']} & {sci(f['bound_eps'], 2)}, {sci(f['bound_one_minus_eps'], 2)} \\")
     else:
-        rows.append(rf"{esc(name)} & {ab} & \multicolumn{{6}}{{l}}{{none: {esc(f['reason'])}}} \\")
+        rows.append(rf"{esc(law_name(name))} & {ab} & \multicolumn{{6}}{{l}}{{none: {esc(f['reason'])}}} \\")
 overlap_rows = []
 for name in p.variants:
     f = overlap_forms[name]
@@ -228,12 +229,12 @@ for name in p.variants:
     if f["available"]:
         kv = Fraction(p.exponents[name]["gamma"]) + 1
         kv /= 2 * Fraction(p.exponents[name]["gamma"]) + 1 - Fraction(p.exponents[name]["alpha"])
-        overlap_rows.append(rf"{esc(name)} & {ab} & {frac(kv)} & {len(f['a'])} & {sci(f['bound_eps'], 2)} & "
+        overlap_rows.append(rf"{esc(law_name(name))} & {ab} & {frac(kv)} & {len(f['a'])} & {sci(f['bound_eps'], 2)} & "
                             rf"{sci(f['bound_one_minus_eps'], 2)} \\")
     else:
         why = (r"none: $\alpha \geq 2\gamma + 1$, the bodies can stick" if "stick" in f["reason"]
                else r"none: $\alpha \leq \gamma$, as for the force rule")
-        overlap_rows.append(rf"{esc(name)} & {ab} & \multicolumn{{4}}{{l}}{{{why}}} \\")
+        overlap_rows.append(rf"{esc(law_name(name))} & {ab} & \multicolumn{{4}}{{l}}{{{why}}} \\")
 overlap_names = [n for n in p.variants if overlap_forms[n]["available"]]
 n_overlap = max((len(overlap_forms[n]["a"]) for n in overlap_names), default=0)
 # every number to the twelve digits the printed-digit check assumes (sigma and r too: sigma may be nu itself)
@@ -253,18 +254,24 @@ coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) if j < l
               for j in range(n_rows)]
 
 
+def stacked(name: str) -> str:
+    """A column head on two lines where the name has a dash (Hertz--Kuwabara--Kono), else one."""
+    first, dash, rest = esc(name).partition("--")
+    return rf"\shortstack{{{first}--\\{rest}}}" if dash else esc(name)
+
+
 def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list) -> str:
     """A form's table: one row per variant, then its numbers in one column per variant."""
     return "\n".join([rf"\begin{{tabular}}{{{cols}}}", r"\toprule", header + r" \\", r"\midrule", *rows,
                       r"\bottomrule", r"\end{tabular}", "", r"\vspace{1ex}",
                       rf"\begin{{tabular}}{{l{'r' * len(names)}}}", r"\toprule",
-                      " & " + " & ".join(esc(n) for n in names) + r" \\", r"\midrule", *coef_rows,
+                      " & " + " & ".join(stacked(law_name(n)) for n in names) + r" \\", r"\midrule", *coef_rows,
                       r"\bottomrule", r"\end{tabular}"])
 
 
-force_tables = two_tables("lllllllll", r"variant & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
+force_tables = two_tables(r">{\raggedright\arraybackslash}p{2.1cm}llllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
                           r"$2\times$ max.\ error $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
-overlap_tables = two_tables("lllllll", r"variant & $\alpha$ & $\gamma$ & $\kappa$ & $\bar n + 1$ & "
+overlap_tables = two_tables(r">{\raggedright\arraybackslash}p{2.1cm}llllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar n + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
@@ -272,7 +279,7 @@ text = rf"""
 \label{{sec:closed-form}}
 
 The paper set out to give $\varepsilon$ analytically in the viscous-dominant regime. Its relation
-does not hold (Sec.~\ref{{sec:ledger}}), but the two limits can be derived exactly (the derivations are in the
+does not hold (Sec.~\ref{{sec:ledger}}), but the two limits can be derived, with every constant in closed form; the remainders' orders are those of the first omitted terms, not proven bounds (the derivations are in the
 article's appendix), and a uniform approximation with fitted coefficients joins them. The numbers below are
 for the main variant
 ($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).
@@ -281,9 +288,8 @@ for the main variant
 With $\ell = \gamma + 1$, $X = \ell^{{1/\ell}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/\ell$ and $\psi$ the digamma function,
 \begin{{equation*}}
 \varepsilon = k\,\Omega\left[1 - \Omega\left(c_{{\log}} \ln\frac{{1}}{{\Omega}} + c_{{\mathrm{{v}}}}\right)\right] + O(\Omega^3 \ln^2 \Omega),
-\qquad k = X^{{\alpha-\gamma}},\quad c_{{\log}} = 2rk,\quad c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k),
 \end{{equation*}}
-where $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/\ell) - \psi(1/\ell)]/\ell$ and
+where $k = X^{{\alpha-\gamma}}$, $c_{{\log}} = 2rk$, $c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k)$, $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/\ell) - \psi(1/\ell)]/\ell$ and
 $L = \ln(\lambda \mathcal{{M}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{M}} = \ln X - \gamma_E - \psi(1/\ell) - \ln \ell$,
 so every constant is in closed form. (The subscript of $c_{{\mathrm{{v}}}}$ keeps it apart from Kim's $c_0$ of
 Sec.~\ref{{sec:connection}}, an unrelated number.) Here $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
@@ -296,8 +302,7 @@ $\varepsilon$ is a relative $O(\Omega^2 \ln^2 \Omega)$.
 \paragraph{{Elastic limit ($\Omega \to \infty$).}}
 With $\nu = (\gamma+1)/(\alpha+1)$ and $\mu = \Omega^{{-\nu}}$,
 $1 - \varepsilon = C_1 \mu - C_2 \mu^2 + O(\mu^3)$ with
-$C_1 = ((\alpha+1)/2)^{{\nu-1}} \mathrm{{B}}(\nu, 3/2)$ and $C_2 = \nu C_1^2$ (for $\alpha = 3/2$, $\gamma = 1/2$
-these are the constants of Ram\'irez et al.~\cite{{ramirez1999}}); here $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$. Contact ends where the
+$C_1 = ((\alpha+1)/2)^{{\nu-1}} \mathrm{{B}}(\nu, 3/2)$ and $C_2 = \nu C_1^2$; here $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$. Contact ends where the
 force vanishes, before the deformation is back to zero, and that adds $-\beta\,\mu^{{1 + (\gamma+1)/(\alpha-\gamma)}}$,
 $\beta = (\alpha-\gamma)/((\gamma+1)(\alpha+1))$; here the power is {frac(end_power)} and $\beta = {frac(end_coef)}$, {end_clause}.
 Contact lasts $\tau_c = \theta_c\,\Omega^{{-1/(\alpha+1)}}$ with $\theta_c = {sci(E.T0, 10)}$, its duration in the elastic time $\theta = \Omega^{{1/(\alpha+1)}}\tau$ of the article's appendix.
@@ -339,15 +344,14 @@ written out (Sec.~\ref{{sec:reproduce}}).
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
 \caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (left) and in
 $1 - \varepsilon$ (right), for every variant that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
-Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on the validation and test points, plus the reference's accuracy), each marked at its right end with its variant's marker. Made by
-\texttt{{closed\_form\_section.py}}.}}
+Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on the validation and test points, plus the reference's accuracy), each marked at its right end with its variant's marker.}}
 \label{{fig:uniform-error}}
 \end{{figure}}
 
 \paragraph{{The overlap rule in one formula.}}
 Where contact lasts until the overlap is back to zero (the default of the DEM codes, Sec.~\ref{{sec:dem}}), fast
 impacts follow the creep law $\varepsilon = C\,\Omega^{{\kappa}}$, $\kappa = (\gamma+1)/(2\gamma+1-\alpha)$,
-up to a correction that vanishes like $\exp(-\vartheta/\Omega)$, and slow ones the same elastic limit as above. For
+up to a correction that vanishes like $\exp(-Q/\Omega)$, and slow ones the same elastic limit as above. For
 $\gamma < \alpha < 2\gamma + 1$ (where the bodies cannot stick) one formula joins the two, with $\bar z = \bar b\,\Omega$,
 $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P} of $\bar z$ below fixed (bars mark the constants of this form, which differ from those of
 Eq.~(\ref{{eq:uniform}})):
@@ -373,8 +377,7 @@ $\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not dep
 \centering\footnotesize
 \caption{{The overlap rule's form (\ref{{eq:uniform-overlap}}) of each variant: its number of coefficients and
 twice the largest relative errors in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$
-(over $\Omega \geq 1$), measured on the validation and test points; below, its constants, shape and coefficients. Generated by
-\texttt{{closed\_form\_section.py}}.}}
+(over $\Omega \geq 1$), measured on the validation and test points; below, its constants, shape and coefficients.}}
 \label{{tab:uniform-overlap}}
 {overlap_tables}
 \end{{table}}

@@ -9,6 +9,7 @@
 # %%
 import numpy as np
 import pandas as pd
+from restitution_workflow.law_names import law_name
 from restitution_workflow.pipeline import save_figure, setup_matplotlib, start
 
 start(snakemake)
@@ -16,8 +17,8 @@ plt = setup_matplotlib()
 
 KNOWN = {"eps_dashpot": ("linear dashpot, closed form", dict(ls="none", marker="o", ms=4, mfc="none")),
          "eps_equal_exponents": (r"$\alpha = \gamma$, closed form", dict(ls="none", marker="s", ms=4, mfc="none")),
-         "eps_elastic_series": ("elastic-limit series (Ramirez et al. + end-of-contact term)", dict(ls="--", lw=1.2)),
-         "eps_pade": ("Pade form (Mueller & Poeschel)", dict(ls=":", lw=1.8))}
+         "eps_elastic_series": ("two-term elastic expansion + end-of-contact term", dict(ls="--", lw=1.2)),
+         "eps_pade": ("Padé form as implemented in Granulars.jl", dict(ls=":", lw=1.8))}
 
 # %%
 p = snakemake.params
@@ -36,7 +37,7 @@ for i, (name, known_file, curve_file) in enumerate(zip(p.variants, snakemake.inp
     # run close together (eps ~ k Omega with similar k), and colour alone would not tell them apart
     ax.plot(known["omega"], known["eps_reference"], color=colors[i], lw=1.4, ls=LINESTYLES[i % len(LINESTYLES)],
             marker=MARKERS[i % len(MARKERS)], markersize=4.5, markerfacecolor="none",
-            markevery=(i % 3, 3), label=rf"{name} ($\alpha = {alpha}$, $\gamma = {gamma}$)")
+            markevery=(i % 3, 3), label=rf"{law_name(name, tex=False)} ($\alpha = {alpha}$, $\gamma = {gamma}$)")
     if first is None:
         first = known
     if not np.allclose(known["omega"], first["omega"], rtol=1e-12, atol=0):
@@ -52,13 +53,13 @@ for i, (name, known_file, curve_file) in enumerate(zip(p.variants, snakemake.inp
     for col, (label, style) in KNOWN.items():
         if col in known:
             ok = np.isfinite(known[col]) & (known[col] > 0)
-            ax.plot(known["omega"][ok], known[col][ok], color="black", label=f"{name}: {label}", **style)
+            ax.plot(known["omega"][ok], known[col][ok], color="black", label=f"{law_name(name, tex=False)}: {label}", **style)
 ax.set_xscale("log")
 ax.set_yscale("log")
 ax.set_ylim(max(ax.get_ylim()[0], 1e-4), 1.5)
 ax.set_xlim(min(p.grid["omega_min"], ax.get_xlim()[0]), p.grid["omega_max"])
 ax_ratio.set_xlabel(r"$\Omega$")
-ax_ratio.set_ylabel(rf"$\varepsilon$ / $\varepsilon$ of {p.variants[0]}")
+ax_ratio.set_ylabel(rf"$\varepsilon$ / $\varepsilon$ of the first law")
 ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
 # below the axes: inside, it covered the curves at small Omega
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False)

@@ -10,6 +10,8 @@
 # %%
 from fractions import Fraction
 
+import math
+
 import numpy as np
 import pandas as pd
 from restitution_workflow.atomic import atomic_path
@@ -96,7 +98,9 @@ handles += [plt.Line2D([], [], ls="-", color="black", lw=0.6, alpha=0.6),
             plt.Line2D([], [], ls="", marker="s", mfc="none", color="grey"),
             plt.Line2D([], [], ls="", marker="x", color="grey"),
             plt.Line2D([], [], color="grey")]
-labels += ["limits", f"vs rtol {spec.tight_rtol:.0e}", "vs mpmath", "vs closed form", "stated accuracy"]
+tight_exp = round(math.log10(spec.tight_rtol))
+labels += ["limits", rf"against tolerance $10^{{{tight_exp}}}$", "against the high-precision integrator",
+           "against the closed forms", "stated accuracy"]
 fig.legend(handles, labels, loc="lower center", ncol=5, fontsize=8.5, frameon=False, bbox_to_anchor=(0.5, 0.0))
 fig.tight_layout(rect=(0, 0.05, 1, 1), h_pad=0.4, w_pad=0.3)
 

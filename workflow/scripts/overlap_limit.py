@@ -113,6 +113,7 @@ macros = {
     "OverlapPairs": str(len(rows)),
     "OverlapPairList": ", ".join(rf"$({frac(r['alpha'])}, {frac(r['gamma'])})$" for r in rows),
     "OverlapCheckMin": sci(min(P.check_omegas), 1), "OverlapCheckMax": sci(max(P.check_omegas), 1),
+    "OverlapRtol": sci(RTOL, 1),     # the direct integrations' relative tolerance (Table 2, the text)
     "OverlapMaxDevSmall": sci(max(r["max_dev_small"] for r in rows), 2),
     "OverlapHighprecOmega": sci(P.highprec_omega, 1), "OverlapHighprecDigits": str(P.highprec_digits),
     "OverlapMaxDevHighprec": sci(max(abs(r["dev_highprec"]) for r in rows), 2),

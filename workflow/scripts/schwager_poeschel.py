@@ -92,7 +92,7 @@ library = {2: -limit.C1, 4: limit.C2, 5: limit.E}
 origin = {0: "elastic", 1: "---", 3: "---", 2: r"$-C_1$, closed form", 4: r"$\nu C_1^2$, closed form",
           5: r"$4/15$, end of contact"}
 for k in range(6, KMAX + 1):
-    origin[k] = r"$d_{%d}$%s" % (k // 2, r" $+$ end" if k >= 10 else "") if k % 2 == 0 else "end of contact"
+    origin[k] = r"$v_{%d}$%s" % (k // 2, r" $+$ end" if k >= 10 else "") if k % 2 == 0 else "end of contact"
 
 
 def val(x, err):

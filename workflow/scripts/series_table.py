@@ -19,10 +19,10 @@ DIRECTIONS = ("forward", "inverse")
 
 
 def frac(value: Fraction, signed: bool = True) -> str:
-    """An exact rational in LaTeX: -\\frac{4}{35}, 1, ..."""
+    """An exact rational in LaTeX, inline (4/35): a stacked fraction in a small table is unreadable."""
     sign = "-" if value < 0 else ""
     a = abs(value)
-    body = f"{a.numerator}" if a.denominator == 1 else rf"\frac{{{a.numerator}}}{{{a.denominator}}}"
+    body = f"{a.numerator}" if a.denominator == 1 else f"{a.numerator}/{a.denominator}"
     return f"${sign}{body}$" if signed else f"${body}$"
 
 

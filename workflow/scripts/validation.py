@@ -9,11 +9,12 @@
 #
 # * alpha = 1, gamma = 0: the exact linear spring-dashpot (`restitution.core.dashpot`), force-zero end;
 # * alpha = gamma: the exact parametric solution (`restitution.core.asymptotics.equal_exponents_eps`);
-# * alpha = 3/2, gamma = 1/2 (viscoelastic spheres): the elastic-limit series of Ramirez et al.
-#   (1999), eps = 1 - C1 delta + C2 delta^2 + ..., delta = Omega^(-3/5)
+# * alpha = 3/2, gamma = 1/2 (viscoelastic spheres): the two-term elastic expansion (whose existence
+#   Ramirez et al. 1999 state), eps = 1 - C1 delta + C2 delta^2 + ..., delta = Omega^(-3/5)
 #   (`restitution.core.asymptotics.elastic_limit`): its error must fall like the first omitted power,
 #   delta^3, so the slope of log(error) against log(Omega) over the top decade of the grid is
-#   compared with -3A, A = (gamma+1)/(alpha+1); and the Pade form of Mueller and Poeschel (2011)
+#   compared with -3A, A = (gamma+1)/(alpha+1); and the Pade form as implemented in Granulars.jl
+#   (attributed there to Mueller and Poeschel 2011)
 #   (`restitution.fast.calibration.pade_mp2011`) where delta <= `pade_delta_max`;
 # * alpha - 1 - 2 gamma = 0: eps does not depend on g (spread of the figure-4 curve).
 #
@@ -89,12 +90,13 @@ if (ex.alpha, ex.gamma) == HERTZ:
         err = rel_err(eps, ref)
         return float(np.polyfit(np.log(omega[top]), np.log(err[top]), 1)[0]), err
 
-    # Ramirez et al.'s two terms as published: the first term they omit is the end-of-contact term
-    # beta mu^end_power (this project's, mu = Omega^-A), so their error falls like that term, not like delta^3.
+    # the two terms C1 mu - C2 mu^2 alone (Ramirez et al. state that such an expansion exists; their
+    # printed constants were not read): the first term omitted is the end-of-contact term
+    # beta mu^end_power (mu = Omega^-A), so the error falls like that term, not like delta^3.
     known["eps_ramirez"] = series.eps(omega, order=2, end_term=False)
     slope, err = error_slope(known["eps_ramirez"])
     expected = -A * min(3.0, series.end_power)
-    check("elastic-limit series of Ramirez et al. (two terms), error exponent", "ramirez1999", slope,
+    check("two-term elastic expansion without the end term, error exponent", "", slope,
           tol["series_slope_tolerance"], abs(slope - expected) <= tol["series_slope_tolerance"],
           what=f"slope (expected {expected:g})",
           note=f"C1 = {series.C1:.7f}, C2 = {series.C2:.7f}; the first omitted term is this work's "
@@ -116,7 +118,7 @@ if (ex.alpha, ex.gamma) == HERTZ:
     delta = omega ** (-A)
     near = delta <= tol["pade_delta_max"]
     err = rel_err(known["eps_pade"], ref)[near]
-    check("Pade form", "mueller2011", err.max() if near.any() else None, tol["pade_tolerance"],
+    check("Padé form as implemented in", "granularsjl", err.max() if near.any() else None, tol["pade_tolerance"],
           bool(near.any()) and err.max() <= tol["pade_tolerance"], what="max relative error",
           note=f"where delta = Omega^(-{A:g}) <= {tol['pade_delta_max']:g}",
           omega_range=(omega[near].min(), omega[near].max()) if near.any() else None, n=int(near.sum()))
@@ -125,7 +127,7 @@ if (ex.alpha, ex.gamma) == HERTZ:
 if ex.omega_exponent == 0:
     e = curve["eps"].to_numpy()
     spread = float((e.max() - e.min()) / e.mean())
-    check("eps independent of g", "", spread, tol["g_independence_tolerance"],
+    check("restitution independent of the impact speed", "", spread, tol["g_independence_tolerance"],
           spread <= tol["g_independence_tolerance"], what="relative spread of eps over g",
           note=f"{len(e)} impact speeds from {curve['g'].min():g} to {curve['g'].max():g}",
           omega_range=(float(curve["omega"].min()), float(curve["omega"].max())), n=len(e))
