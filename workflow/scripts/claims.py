@@ -74,6 +74,12 @@ def printed_numbers(where_text: str) -> str:
 
 
 ledger["where"] = ledger["where"].map(printed_numbers)
+# the statements and notes name an equation as "Eq. label" too: the same numbers there
+LABELS = "|".join(sorted(KIM_EQUATION, key=len, reverse=True))
+NAMED = re.compile(rf"Eq\. (?:\(({LABELS})\)|({LABELS})(?![A-Za-z0-9]))")
+for column in ("claim", "note"):
+    ledger[column] = ledger[column].map(
+        lambda text: NAMED.sub(lambda m: f"Eq. ({KIM_EQUATION[m.group(1) or m.group(2)]})", text))
 ledger.insert(0, "row", range(1, len(ledger) + 1))
 write_csv(snakemake.output.csv, ledger)
 write_json(snakemake.output.values, values)
