@@ -130,12 +130,12 @@ if w == 0:
 else:
     slow, fast = ("elastic", "viscous") if w < 0 else ("viscous", "elastic")
     units = (rf"In physical units $\Omega = D_1 D_2^{{-(\alpha+1)/(\gamma+1)}} g^{{\varpi}}$ with $\varpi = {frac(w)}$, so for "
-             rf"the main variant ($D_1 = {sci(mat['D1'], 4)}$, $D_2 = {sci(mat['D2'], 4)}$) slow impacts are {slow} and "
+             rf"Kim's material ($D_1 = {sci(mat['D1'], 4)}$, $D_2 = {sci(mat['D2'], 4)}$) slow impacts are {slow} and "
              rf"fast ones {fast}: in the elastic limit $1 - \varepsilon \approx {sci(E.C1 * scale ** (-float(A_)), 5)}\,"
              rf"g^{{{frac(-w * A_)}}}$, in the viscous limit $\varepsilon \approx {sci(V.k * scale, 5)}\,g^{{{frac(w)}}}$. "
              rf"The same rule for Hertz contact with Kuwabara--Kono damping ($\alpha = {frac(HERTZ[0])}$, "
              rf"$\gamma = {frac(HERTZ[1])}$) gives the $1 - \varepsilon \propto g^{{{frac(elastic_power(*HERTZ))}}}$ of "
-             rf"Brilliantov et al.~\cite{{brilliantov1996}}; for this variant the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
+             rf"Brilliantov et al.~\cite{{brilliantov1996}}; for this force law the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
              rf"fast impacts give $\varepsilon \propto g^{{{frac(w)}}}$, a regime that law, an expansion about "
              rf"elastic impacts, does not describe. Both laws are leading order only. At the slowest impact of "
              rf"\FigEps{{}} ($g = {sci(float(curve['g'].iloc[0]), 2)}$) the elastic law is off by "
@@ -279,9 +279,9 @@ text = rf"""
 \label{{sec:closed-form}}
 
 The paper set out to give $\varepsilon$ analytically in the viscous-dominant regime. Its relation
-does not hold (Sec.~\ref{{sec:ledger}}), but the two limits can be derived, with every constant in closed form; the remainders' orders are those of the first omitted terms, not proven bounds (the derivations are in the
+does not hold (Sec.~\ref{{sec:ledger}}), but the two limits can be derived by matched asymptotics, with every constant in closed form; the remainders' orders are those of the first omitted terms, not proven bounds (the derivations are in the
 article's appendix), and a uniform approximation with fitted coefficients joins them. The numbers below are
-for the main variant
+for Kim's force law
 ($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).
 
 \paragraph{{Viscous limit ($\Omega \to 0$, $\alpha > \gamma$).}}
@@ -330,9 +330,9 @@ the shape $(\sigma, s_0, s_1)$ is chosen by the error on the points in between, 
 largest relative error on those validation points and on {main['measured']['n_test']} test points drawn at random in
 $[10^{{-8}}, 10^{{8}}]$ and used for nothing else, where $\varepsilon$ and $1 - \varepsilon$ come from independent integrations in the variables of Sec.~\ref{{sec:reference}}, plus their accuracy
 (\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
-proven bound. A variant with $\alpha \leq \gamma$ has no such form:
+proven bound. A force law with $\alpha \leq \gamma$ has no such form:
 for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
-is not known. The article's figure of the error of $\varepsilon(g)$ shows the relative error in $\varepsilon(g)$ of the main variant from
+is not known. The article's figure of the error of $\varepsilon(g)$ shows the relative error in $\varepsilon(g)$ for Kim's force law from
 the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
 Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error figures for every exponent pair of the
@@ -343,8 +343,8 @@ written out (Sec.~\ref{{sec:reproduce}}).
 \centering
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
 \caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (left) and in
-$1 - \varepsilon$ (right), for every variant that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
-Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on the validation and test points, plus the reference's accuracy), each marked at its right end with its variant's marker.}}
+$1 - \varepsilon$ (right), for every force law that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
+Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on the validation and test points, plus the reference's accuracy), each marked at its right end with its force law's marker.}}
 \label{{fig:uniform-error}}
 \end{{figure}}
 
@@ -367,7 +367,7 @@ degree are chosen as for Eq.~(\ref{{eq:uniform}}), the coefficients fitted with 
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = 10^{{-3}}$ each integration of the creeping return takes about a second, and there the
 references are the creep law itself, checked against the integrator above it; the error figure adds that difference and
-the error of $C$. The error figure for the main variant is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
+the error of $C$. The error figure for Kim's force law is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly when
@@ -375,10 +375,12 @@ $\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not dep
 
 \begin{{table}}[htbp]
 \centering\footnotesize
-\caption{{The overlap rule's form (\ref{{eq:uniform-overlap}}) of each variant: its number of coefficients and
+\caption{{The overlap rule's form (\ref{{eq:uniform-overlap}}) of each force law: its number of coefficients and
 twice the largest relative errors in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$
-(over $\Omega \geq 1$), measured on the validation and test points; below, its constants, shape and coefficients.}}
+(over $\Omega \geq 1$), measured on the validation and test points, plus the accuracy of the reference integration;
+below, its constants, shape and coefficients.}}
 \label{{tab:uniform-overlap}}
+\vspace{{4pt}}
 {overlap_tables}
 \end{{table}}
 """

@@ -55,4 +55,4 @@ def wrapped(line: str) -> list[str]:
 
 deck = Path(snakemake.params.sample).read_text().splitlines()
 body = [w for line in deck for w in wrapped(line)]
-write_text(snakemake.output.deck, "{\\scriptsize\n\\begin{verbatim}\n" + "\n".join(body) + "\n\\end{verbatim}\n}\n")
+write_text(snakemake.output.deck, "{\\footnotesize\n\\begin{verbatim}\n" + "\n".join(body) + "\n\\end{verbatim}\n}\n")

@@ -66,8 +66,15 @@ hertz = table[table["p"] == str(HERTZ)]
 lines = [r"\begin{tabular}{rrrrrr}", r"\toprule",
          r"$e$ & $\phi_{\mathrm F}$ & $\Omega = \phi_{\mathrm F}^{-2}$ & $\varepsilon/e - 1$, overlap & "
          r"$\varepsilon$, force & $\varepsilon/e - 1$, force \\", r"\midrule"]
+# a deviation within the exact formula's rounding bound is zero to the accuracy available: marked, as
+# the article marks entries below its stated accuracy
+def within_rounding(x: float, bound: float) -> str:
+    return sci(x, 2) + (r"$^\dagger$" if abs(x) <= bound else "")
+
+
 for r in hertz.itertuples():
-    lines.append(rf"{fixed(r.e, 2)} & {sci(r.phi_feng, 6)} & {sci(r.omega, 6)} & {sci(r.rel_overlap, 2)} & "
+    lines.append(rf"{fixed(r.e, 2)} & {sci(r.phi_feng, 6)} & {sci(r.omega, 6)} & "
+                 rf"{within_rounding(r.rel_overlap, r.bound_overlap)} & "
                  rf"{sci(r.eps_force, 6)} & {sci(r.rel_force, 3)} \\")
 lines += [r"\bottomrule", r"\end{tabular}"]
 write_text(snakemake.output.tex, "\n".join(lines))

@@ -329,6 +329,10 @@ if p.claims:
           note="max |Omega~_printed - Omega~_exact| / Omega~_exact over the fit range")
     V.add("OmegaTildeSmallExponent", cv["omega_tilde_small_omega_exponent"], sig=3,
           note="local slope of the exact Omega~ at Omega = 1e-4")
+    lo_w, hi_w = cv.get("omega_tilde_small_omega_window", (None, None))
+    if lo_w is not None:
+        V.add("OmegaTildeSlopeFrom", lo_w, sig=1, kind="config", note="the slope's Omega window, lower end")
+        V.add("OmegaTildeSlopeTo", hi_w, sig=1, kind="config", note="the slope's Omega window, upper end")
     V.add("OmegaTildeExactExponent", (ex.alpha - ex.gamma) / (ex.gamma + 1), kind="exact",
           note="Omega~ ~ Omega^this as Omega -> 0: 1 + (alpha - 1 - 2 gamma)/(gamma + 1), from eps ~ k Omega")
     es = cv["eps_scaling"]

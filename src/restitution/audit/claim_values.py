@@ -324,11 +324,13 @@ def compute_claim_values(material_params: dict, settings: dict | None = None, *,
     values["omega_g_slope"] = _local_slope(mat.omega, 0.01, 1.0)
     eps_of = lambda w: collide(ex, w, rtol=rtol).eps  # noqa: E731
     # small Omega = large g (damping dominates), large Omega = small g (nearly elastic)
-    slope_eps_small_omega = _local_slope(eps_of, 1e-4, 2e-4)
+    small_window = (1e-4, 2e-4)   # deep in the viscous limit, far below the crossover at Omega ~ 1
+    slope_eps_small_omega = _local_slope(eps_of, *small_window)
     loss_window = (1e3, 2e3)   # beyond figure 4's grid: the elastic limit proper
     slope_loss_large_omega = _local_slope(lambda w: 1.0 - eps_of(w), *loss_window)
     slope_loss_range = _local_slope(lambda w: 1.0 - eps_of(w), float(np.max(omegas)) / 2, float(np.max(omegas)))
     values["omega_tilde_small_omega_exponent"] = 1.0 + float(k) * slope_eps_small_omega
+    values["omega_tilde_small_omega_window"] = small_window
     values["eps_scaling"] = {
         "eps_g_exponent_large_g": slope_eps_small_omega * float(k),
         "loss_g_exponent_small_g": slope_loss_large_omega * float(k),
