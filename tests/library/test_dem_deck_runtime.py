@@ -109,3 +109,13 @@ def test_a_budget_out_of_range_is_refused_in_one_line(tmp_path, budget):
     path.write_text(HEAD)
     status, out, err = run_cli(["deck", str(path), "--g", "0.1", "--budget", budget])
     assert status == 2 and out == "" and err.count("\n") == 1 and "budget" in err and "[1, 3600]" in err, err
+
+
+def test_a_line_met_again_is_checked_again_where_a_definition_changed():
+    """A loop's lines are checked once while the definitions stay (the cost of a 10,000-pass loop),
+    again once one changes: here k becomes the step on the second pass."""
+    once = ["variable k equal 2000", "run 10", "pair_coeff * * hooke ${k} 50"]
+    cmds = [Executed((None, n % 3 + 1), text, stage=0 if text.startswith("run") else None)
+            for n, text in enumerate(once + once + ["variable k equal 1000+step", "run 10", "pair_coeff * * hooke ${k} 50"])]
+    assert run_dependent(cmds) == [((None, 3), "pair_coeff * * hooke ${k} 50")]
+    assert run_dependent(cmds[:6]) == []

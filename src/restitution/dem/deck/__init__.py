@@ -430,8 +430,8 @@ def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
                 break
             k += 1
         return text
-    found = run_dependent(commands, {cmd.loc: source(cmd.loc) for cmd in commands
-                                     if isinstance(cmd.loc, tuple) and len(cmd.loc) == 2 and cmd.loc[1]})
+    found = run_dependent(commands, {loc: source(loc) for loc in {cmd.loc for cmd in commands}
+                                     if isinstance(loc, tuple) and len(loc) == 2 and loc[1]})
     if not found:
         return []
     runs = "skipped" if engine == "LAMMPS" else "one step long"

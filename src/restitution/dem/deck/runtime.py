@@ -122,6 +122,9 @@ def run_dependent(commands: list, source: dict | None = None) -> list:
     """
     source = source or {}
     styles: dict = {}
+    # a loop runs the same lines over and over: a line is checked again only where a variable
+    # definition changed since its last check (``version`` counts the changes)
+    version, checked = 0, {}
     after_run, found, seen = False, [], set()
     for cmd in commands:
         text = source.get(cmd.loc, cmd.text)
@@ -129,15 +132,20 @@ def run_dependent(commands: list, source: dict | None = None) -> list:
         if not split:
             continue
         if split[0] == "variable" and len(split) >= 3 and cmd.stage is None:
-            if split[2] == "delete":
-                styles.pop(split[1], None)
-            else:
-                # the text before substitution: an immediate $() in a definition is read as
-                # the formula it substitutes, so run-dependent where that is
-                styles[split[1]] = (split[2], " ".join(split[3:]))
+            # the text before substitution: an immediate $() in a definition is read as the
+            # formula it substitutes, so run-dependent where that is
+            definition = None if split[2] == "delete" else (split[2], " ".join(split[3:]))
+            if styles.get(split[1]) != definition:
+                version += 1
+                if definition is None:
+                    styles.pop(split[1], None)
+                else:
+                    styles[split[1]] = definition
         if cmd.stage is not None:
             after_run = True
-        elif after_run and split[0] in _WATCHED and cmd.loc not in seen and not _fixed(text, styles):
-            seen.add(cmd.loc)
-            found.append((cmd.loc, text))
+        elif after_run and split[0] in _WATCHED and cmd.loc not in seen and checked.get(cmd.loc) != version:
+            checked[cmd.loc] = version
+            if not _fixed(text, styles):
+                seen.add(cmd.loc)
+                found.append((cmd.loc, text))
     return found
