@@ -411,27 +411,23 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
 def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
     """A line for the commands after a run that read a value the skipped runs would have changed
     (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text."""
+    from ..deck_text import logical_lines
     from .runtime import run_dependent
-    texts: dict = {}
+    commands_at: dict = {}
 
-    def source(loc):
-        name, n = loc
-        if name not in texts:
+    def at(name) -> dict:
+        """{first physical line: command} of a copied file, read once."""
+        if name not in commands_at:
             try:
-                texts[name] = (scratch.deck if name is None else scratch.deck.parent / name).read_text(
-                    encoding="utf-8", errors="replace").split("\n")
+                text = (scratch.deck if name is None else scratch.deck.parent / name).read_text(
+                    encoding="utf-8", errors="replace")
             except OSError:
-                texts[name] = []
-        lines, k, text = texts[name], n - 1, ""
-        while 0 <= k < len(lines):
-            piece = lines[k].split(scratch.tag)[0].rstrip()
-            text += piece[:-1] if piece.endswith("&") else piece
-            if not piece.endswith("&"):
-                break
-            k += 1
-        return text
-    found = run_dependent(commands, {loc: source(loc) for loc in {cmd.loc for cmd in commands}
-                                     if isinstance(loc, tuple) and len(loc) == 2 and loc[1]})
+                text = ""
+            commands_at[name] = dict(logical_lines(text))
+        return commands_at[name]
+    source = {loc: at(loc[0]).get(loc[1]) for loc in {cmd.loc for cmd in commands}
+              if isinstance(loc, tuple) and len(loc) == 2 and loc[1]}
+    found = run_dependent(commands, {loc: text for loc, text in source.items() if text})
     if not found:
         return []
     runs = "skipped" if engine == "LAMMPS" else "one step long"
