@@ -201,14 +201,15 @@ def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: flo
     Returns
     -------
     float
-        eps as LAMMPS gives it at this dt.
+        The sphere's z velocity over g at the first step it no longer touches the plane: eps as
+        LAMMPS gives it at this dt.
 
     Raises
     ------
     RuntimeError
         Where LAMMPS stops on the lines.
     ArithmeticError
-        Where the sphere has not left the wall by t_run.
+        Where after t_run the sphere's centre is still within one radius of the plane z = 0.
 
     Examples
     --------
@@ -247,6 +248,7 @@ def lammps_cylinder_eps(radius: float, density: float, lines: str, g: float, dt:
     Returns
     -------
     float
+        Minus the sphere's x velocity over g at the first step it no longer touches the cylinder:
         eps as LAMMPS gives it at this dt.
 
     Raises
@@ -254,7 +256,7 @@ def lammps_cylinder_eps(radius: float, density: float, lines: str, g: float, dt:
     RuntimeError
         Where LAMMPS stops on the lines.
     ArithmeticError
-        Where the sphere has not left the wall by t_run.
+        Where after t_run the sphere's centre is still at x >= R - radius (touching the cylinder).
 
     Examples
     --------
