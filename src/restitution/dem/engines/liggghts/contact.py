@@ -113,11 +113,14 @@ def liggghts_contact(pair: Pair, *, E: float, nu: float, e: float, limit_force: 
     Returns
     -------
     Contact or ElasticContact
+        An ElasticContact where e = 1 (LIGGGHTS does not damp); else hertz (3/2, 1/4) or hooke
+        (1, 0). The force rule where ``limit_force``, else the overlap rule.
 
     Raises
     ------
     ParameterError
-        Another model, or a material constant out of range.
+        Another model; E or E2 not finite and positive, nu or nu2 outside (-1, 0.5]; e outside
+        (0, 1]; hooke without a finite, positive characteristic_velocity.
 
     Examples
     --------
@@ -183,6 +186,8 @@ def liggghts_stiffness_contact(pair: Pair, *, model: str, kn: float, gamman: flo
     Returns
     -------
     Contact or ElasticContact
+        An ElasticContact where gamman = 0; else hooke/stiffness (1, 0) or hertz/stiffness
+        (3/2, 1/2). The force rule where ``limit_force``, else the overlap rule.
 
     Raises
     ------

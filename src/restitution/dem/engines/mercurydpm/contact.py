@@ -37,7 +37,7 @@ def mercury_linear_contact(pair: Pair, *, t_c: float, e: float) -> Contact:
     Raises
     ------
     ParameterError
-        Where t_c or e is out of range.
+        Where t_c is not finite and positive, or e is not in (0, 1).
 
     Examples
     --------

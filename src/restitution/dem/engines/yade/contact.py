@@ -86,7 +86,8 @@ def yade_viscel_setting(pair: Pair, contact: Contact, *, given: str) -> dict:
     Raises
     ------
     ParameterError
-        Another form, or a contact that form cannot give.
+        A ``given`` other than "tc" or "kn"; for "tc", a contact that is not underdamped
+        (D2 >= 2 sqrt(D1)), which no (tc, en) gives.
 
     Examples
     --------
