@@ -56,6 +56,12 @@ def beta_of_e(e: float) -> float:
     float
         beta, in (0, 1).
 
+    Raises
+    ------
+    ParameterError
+        Where e is not in (0, 1); the refusal names the field "e" (call :func:`unit_e` first to
+        name another).
+
     Examples
     --------
     >>> round(beta_of_e(0.5), 6)
@@ -71,7 +77,7 @@ def e_of_beta(beta: float) -> float:
     Parameters
     ----------
     beta : float
-        The damping ratio.
+        The damping ratio, in (0, 1).
 
     Returns
     -------
@@ -81,7 +87,8 @@ def e_of_beta(beta: float) -> float:
     Raises
     ------
     ParameterError
-        For a beta outside (0, 1), which no e in (0, 1) gives.
+        For a beta outside (0, 1), which no e in (0, 1) gives; the refusal names the field "D2",
+        the contact value beta is derived from.
 
     Examples
     --------

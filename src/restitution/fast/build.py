@@ -41,7 +41,7 @@ def digest(text: str) -> str:
     Parameters
     ----------
     text : str
-        What to digest.
+        Any text; its UTF-8 bytes are hashed.
 
     Returns
     -------

@@ -62,7 +62,8 @@ def tsuji_a(e: float) -> float:
     Parameters
     ----------
     e : float
-        The typed e.
+        The damping column of ``damping tsuji`` (eta_n0), which LAMMPS reads as a restitution
+        coefficient.
 
     Returns
     -------
