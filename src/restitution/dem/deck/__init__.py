@@ -285,7 +285,7 @@ def engine_of(text: str) -> str:
 
     Returns
     -------
-    str
+    {"LIGGGHTS", "LAMMPS"}
 
     Examples
     --------

@@ -101,7 +101,12 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     Raises
     ------
     DeckError
-        One line naming what cannot be mapped.
+        Where the deck cannot be audited as it ran, in one line naming the command: one LAMMPS
+        would stop on (too few words, a line that does not split into words, a type range outside
+        1..ntypes), one the reader does not map (another pair style, particles other than single
+        spheres, rigid bodies, a restart file, a ``run ... every`` running anything but inert
+        commands), no granular pair style, no run or end of the deck before the engine stopped, or
+        more than MAX_STAGES runs with different contact settings.
 
     Examples
     --------

@@ -130,7 +130,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     Raises
     ------
     DeckError
-        Where the folder is too large to copy.
+        Where the deck's folder holds more than MAX_FOLDER_BYTES: it is copied whole.
 
     Examples
     --------

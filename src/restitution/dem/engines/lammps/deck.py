@@ -108,7 +108,7 @@ def pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
     Raises
     ------
     DeckError
-        Where a type range is not one.
+        Before create_box, or where I or J is not a type or a range of types within 1..ntypes.
 
     Examples
     --------
