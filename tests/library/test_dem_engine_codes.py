@@ -6,6 +6,9 @@ import math
 import pytest
 
 from restitution.core.errors import ParameterError
+from restitution.dem import Contact
+from restitution.dem.engines import ENGINES
+from restitution.dem.engines.kratos.contact import linear_force_eps
 from restitution.dem.engines.liggghts.contact import liggghts_contact, liggghts_e
 from restitution.dem.engines.liggghts.design import liggghts_design
 from restitution.dem.engines.yade.contact import (thornton_betan, yade_mindlin_contact, yade_mindlin_en,
@@ -86,3 +89,23 @@ def test_mercurydpm_design_reaches_its_eps_with_the_collision_time_asked():
     res = ENGINES["mercurydpm"].design(PAIR, eps=0.7, t_c=1e-4)
     assert res["t_c"] == 1e-4 and res["eps"] == pytest.approx(0.7, abs=1e-9)
     assert res["e"] == pytest.approx(0.7, abs=1e-9)     # overlap rule, linear dashpot: eps = e
+
+
+@pytest.mark.parametrize("setting", [
+    lambda c: yade_viscel_setting(PAIR, c, given="tc"),
+    lambda c: yade_viscel_setting(PAIR, c, given="kn"),
+    lambda c: ENGINES["mercurydpm"].setting(PAIR, c),
+])
+def test_a_linear_codes_setting_is_refused_for_a_contact_that_is_not_linear(setting):
+    # A (t_c, e) or (kn, cn) read off a Hertz contact gives another collision in the code:
+    # it was returned without a word.
+    hertz = Contact("3/2", "1/2", D1=1.5e8, D2=2.0e4)
+    with pytest.raises(ParameterError, match="needs the linear contact"):
+        setting(hertz)
+
+
+@pytest.mark.parametrize("zeta", [-0.1, float("nan"), float("inf")])
+def test_the_linear_force_rule_eps_refuses_a_damping_ratio_that_is_negative_or_not_finite(zeta):
+    # A negative ratio gave eps > 1 without a word.
+    with pytest.raises(ParameterError, match="zeta"):
+        linear_force_eps(zeta)

@@ -10,7 +10,7 @@ import math
 from ..core.errors import ParameterError, require_positive_finite
 from .contact import Contact
 
-__all__ = ["unit_e", "beta_of_e", "e_of_beta", "effective_modulus", "linear_from_time_and_e", "time_and_e_of_linear",
+__all__ = ["unit_e", "beta_of_e", "e_of_beta", "effective_modulus", "linear_from_time_and_e", "time_and_e_of_linear", "require_linear",
            "thornton_betan", "THORNTON_H"]
 
 
@@ -158,6 +158,42 @@ def linear_from_time_and_e(name_t: str, t_c: float, name_e: str, e: float, end: 
     return Contact("1", "0", (math.pi ** 2 + ln_e ** 2) / t_c ** 2, -2.0 * ln_e / t_c, end)
 
 
+def require_linear(contact: Contact, form: str) -> None:
+    """Refuse a contact that is not the linear spring-dashpot (alpha = 1, gamma = 0).
+
+    A code's linear form (a contact time and e, or kn and cn) read from a Hertz or other contact
+    would be a setting that gives a different collision, so it is refused rather than returned.
+
+    Parameters
+    ----------
+    contact : Contact
+        The contact a linear setting is sought for.
+    form : str
+        What the refusal calls the form asked.
+
+    Returns
+    -------
+    None
+        The contact is linear.
+
+    Raises
+    ------
+    ParameterError
+        Where alpha != 1 or gamma != 0.
+
+    Examples
+    --------
+    >>> require_linear(Contact(1, 0, D1=1e6, D2=10.0), "the (t_c, e) form")
+    >>> require_linear(Contact("3/2", "1/2", D1=1e6, D2=10.0), "the (t_c, e) form")
+    Traceback (most recent call last):
+    ...
+    restitution.core.errors.ParameterError: (alpha, gamma) = (1.5, 0.5): the (t_c, e) form needs the linear contact (alpha = 1, gamma = 0)
+    """
+    if contact.alpha != 1 or contact.gamma != 0:
+        raise ParameterError("(alpha, gamma)", (float(contact.alpha), float(contact.gamma)),
+                             f"{form} needs the linear contact (alpha = 1, gamma = 0)")
+
+
 def time_and_e_of_linear(contact: Contact, form: str = "the (t_c, e) form") -> tuple[float, float]:
     """(t_c, e) of :func:`linear_from_time_and_e` that give ``contact`` (alpha = 1, gamma = 0): D2 =
     -2 ln e / t_c and D1 = (pi^2 + ln^2 e)/t_c^2, so zeta = D2 / (2 sqrt D1) = -ln e / sqrt(pi^2 + ln^2 e).
@@ -177,7 +213,8 @@ def time_and_e_of_linear(contact: Contact, form: str = "the (t_c, e) form") -> t
     Raises
     ------
     ParameterError
-        Where the dashpot is not underdamped (D2 >= 2 sqrt(D1)).
+        Where the contact is not linear (alpha = 1, gamma = 0): no (t_c, e) gives it; or where the
+        dashpot is not underdamped (D2 >= 2 sqrt(D1)).
 
     Examples
     --------
@@ -185,6 +222,7 @@ def time_and_e_of_linear(contact: Contact, form: str = "the (t_c, e) form") -> t
     >>> [round(x, 12) for x in time_and_e_of_linear(c)]
     [0.001, 0.5]
     """
+    require_linear(contact, form)
     zeta = contact.D2 / (2.0 * math.sqrt(contact.D1))
     if not 0.0 < zeta < 1.0:
         raise ParameterError("D2", contact.D2, f"needs D2 < 2 sqrt(D1): {form} is underdamped")

@@ -83,23 +83,30 @@ def kratos_modulus(E1: float, nu1: float, E2: float | None = None, nu2: float | 
 
 def linear_force_eps(zeta: float) -> float:
     """eps of delta'' + 2 zeta w delta' + w^2 delta = 0 when the total force may not pull (it ends
-    where it vanishes), for any damping ratio zeta > 0 (under-, critically and overdamped).
+    where it vanishes), for any damping ratio zeta >= 0 (undamped: 1; under-, critically and overdamped).
 
     Parameters
     ----------
     zeta : float
-        The damping ratio, > 0.
+        The damping ratio, >= 0.
 
     Returns
     -------
     float
-        eps, in (0, 1).
+        eps, in (0, 1] (1 only at zeta = 0).
+
+    Raises
+    ------
+    ParameterError
+        For zeta not a finite number >= 0 (a negative ratio is no dissipative contact).
 
     Examples
     --------
     >>> round(linear_force_eps(0.1), 6), round(linear_force_eps(1.0), 6), round(linear_force_eps(2.0), 6)
     (0.744079, 0.135335, 0.047769)
     """
+    if not (math.isfinite(zeta) and zeta >= 0.0):
+        raise ParameterError("zeta", zeta, "must be a finite number >= 0")
     if zeta < 1.0:
         w = math.sqrt(1.0 - zeta * zeta)
         return math.exp(-zeta / w * (math.pi - math.atan2(2.0 * zeta * w, 1.0 - 2.0 * zeta * zeta)))

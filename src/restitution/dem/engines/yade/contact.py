@@ -22,7 +22,8 @@ import math
 from ....core.errors import ParameterError, one_of, require_positive_finite
 from ...contact import Contact
 from ...pair import Pair
-from ...typed_e import THORNTON_H, effective_modulus, linear_from_time_and_e, thornton_betan, time_and_e_of_linear
+from ...typed_e import (THORNTON_H, effective_modulus, linear_from_time_and_e, require_linear, thornton_betan,
+                        time_and_e_of_linear)
 
 __all__ = ["yade_viscel_contact", "yade_viscel_setting", "yade_mindlin_contact", "yade_mindlin_en", "thornton_betan",
            "THORNTON_H"]
@@ -86,8 +87,8 @@ def yade_viscel_setting(pair: Pair, contact: Contact, *, given: str) -> dict:
     Raises
     ------
     ParameterError
-        A ``given`` other than "tc" or "kn"; for "tc", a contact that is not underdamped
-        (D2 >= 2 sqrt(D1)), which no (tc, en) gives.
+        A ``given`` other than "tc" or "kn"; a contact that is not linear (alpha = 1, gamma = 0),
+        which neither form gives; for "tc", one that is not underdamped (D2 >= 2 sqrt(D1)).
 
     Examples
     --------
@@ -97,6 +98,7 @@ def yade_viscel_setting(pair: Pair, contact: Contact, *, given: str) -> dict:
     (0.0001, 0.5)
     """
     given = one_of("given", given, ("tc", "kn"))
+    require_linear(contact, f"ViscElMat's ({given}, ...) form")
     if given == "kn":
         return {"kn": 2.0 * pair.m * contact.D1, "cn": 2.0 * pair.m * contact.D2}
     tc, en = time_and_e_of_linear(contact, "ViscElMat's (tc, en) form")
