@@ -109,3 +109,11 @@ def test_the_linear_force_rule_eps_refuses_a_damping_ratio_that_is_negative_or_n
     # A negative ratio gave eps > 1 without a word.
     with pytest.raises(ParameterError, match="zeta"):
         linear_force_eps(zeta)
+
+
+@pytest.mark.parametrize("second, field", [({"E2": -1.0, "nu2": 0.3}, "E2"), ({"E2": 1e7, "nu2": 0.7}, "nu2"),
+                                           ({"E2": 1e7}, "nu2")])
+def test_a_second_materials_bad_modulus_is_refused_under_its_own_name(second, field):
+    # A bad E2 was refused as "E = -1", naming the field the user had right.
+    with pytest.raises(ParameterError, match=f"^{field} = "):
+        liggghts_contact(PAIR, E=1e7, nu=0.3, e=0.5, **second)

@@ -100,7 +100,7 @@ def e_of_beta(beta: float) -> float:
     return math.exp(-math.pi * beta / math.sqrt(1.0 - beta ** 2))
 
 
-def effective_modulus(E: float, nu: float) -> float:
+def effective_modulus(E: float, nu: float, names: tuple[str, str] = ("E", "nu")) -> float:
     """E* = E / (2 (1 - nu^2)) of two like particles of Young's modulus E and Poisson ratio nu.
 
     Parameters
@@ -109,19 +109,26 @@ def effective_modulus(E: float, nu: float) -> float:
         Young's modulus, finite and > 0.
     nu : float
         Poisson ratio, in (-1, 0.5].
+    names : tuple of str, optional
+        The fields a refusal names (("E2", "nu2") for a second material).
 
     Returns
     -------
     float
+
+    Raises
+    ------
+    ParameterError
+        Where E is not finite and > 0 or nu is not in (-1, 0.5], naming the field as ``names`` says.
 
     Examples
     --------
     >>> round(effective_modulus(1e7, 0.3))
     5494505
     """
-    E = require_positive_finite("E", E)
+    E = require_positive_finite(names[0], E)
     if nu is None or not -1.0 < nu <= 0.5:
-        raise ParameterError("nu", nu, "must be a Poisson ratio in (-1, 0.5]")
+        raise ParameterError(names[1], nu, "must be a Poisson ratio in (-1, 0.5]")
     return E / (2.0 * (1.0 - nu ** 2))
 
 

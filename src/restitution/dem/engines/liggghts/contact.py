@@ -79,7 +79,7 @@ def _liggghts_d1(pair: Pair, model: str, E: float, nu: float, characteristic_vel
     model = one_of("model", model, LIGGGHTS_MODELS)
     e_star = effective_modulus(E, nu)
     if E2 is not None or nu2 is not None:    # unlike materials: 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2
-        e_star = 1.0 / (1.0 / (2.0 * e_star) + 1.0 / (2.0 * effective_modulus(E2, nu2)))
+        e_star = 1.0 / (1.0 / (2.0 * e_star) + 1.0 / (2.0 * effective_modulus(E2, nu2, ("E2", "nu2"))))
     if model == "hertz":
         return 4.0 / 3.0 * e_star * math.sqrt(pair.R) / pair.m
     v = require_positive_finite("characteristic_velocity", characteristic_velocity)
