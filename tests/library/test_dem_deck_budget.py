@@ -113,3 +113,18 @@ def test_a_loop_that_never_runs_is_refused_as_a_loop(tmp_path):
     status, out, err = run_cli(["deck", str(path), "--g", "1.0", "--budget", "1"])
     assert status == 2 and err.count("\n") == 1, err
     assert "a loop that never reaches a run" in err and "--budget SECONDS" in err, err
+
+
+@needs_lammps
+def test_a_straight_pass_beyond_the_ceiling_is_refused_as_no_loop(tmp_path, monkeypatch):
+    # the ceiling lowered to half the budget: the slow set-up (seconds of CPU time) meets it before
+    # any run, having run no line twice; the refusal says so, not "a loop"
+    from restitution.dem.deck import audit_deck
+    from restitution.dem.dialect import child
+    from restitution.dem.dialect.state import DeckError
+    monkeypatch.setattr(child, "CEILING", 0.5)
+    text = SLOW.replace("run 10\n", "")
+    (tmp_path / "in.deck").write_text(text)
+    with pytest.raises(DeckError, match=r"budget \(0.5 s of wall time in all, the ceiling, in a pass that had run no "
+                                        r"line twice; runs skipped\): a pass that ran no line twice, so no loop"):
+        audit_deck(text, [1.0], path=tmp_path / "in.deck", budget=1.0)
