@@ -141,3 +141,13 @@ def test_a_force_set_otherwise_stays_named(fix):
     row = {"speeds": [1.0], "eps": [c.eps(1.0)], "sticks": [False], "passes_through": [False]}
     (e,) = effects(d, row, c, p, (1, 2))
     assert e["eps_engine"] is None and "not computed" in e["why"]
+
+
+@needs_lammps
+@pytest.mark.parametrize("fix", ["fix sf two setforce 0.0 NULL NULL", "fix still two freeze"])
+def test_a_fix_on_a_group_defined_before_its_atoms_acts_on_none(tmp_path, fix):
+    # a group holds the atoms present when it is defined: one by type defined before create_atoms
+    # holds none, and its fix changes no collision (the audit once sized it, exit 0)
+    text = lammps_spheres((0.02, 2500), (0.03, 1000)).replace("create_box 2 box\n", "create_box 2 box\ngroup two type 2\n")
+    pairs, err = _audit(tmp_path, text + f"pair_coeff * * hooke 1000 500 {T}\n{fix}\nrun 1\n")
+    assert all(p["beside"] == [] for p in pairs.values()), err

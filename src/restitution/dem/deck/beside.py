@@ -18,7 +18,7 @@ from ...core.collision import StickError
 from ..contact import Contact
 from ..engines.lammps.deck import DEFAULT_DT
 from ..pair import WALL_SIZE, Pair
-from .meeting import held_contact
+from .meeting import group_types, held_contact
 
 __all__ = ["BESIDE", "drag_eps", "effects"]
 
@@ -105,14 +105,6 @@ def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0)) -
     return float(-(v1 - v2) / g)
 
 
-def _group_types(deck, group: str):
-    """The types a fix's group holds (a set), or None where the audit cannot know them."""
-    if group == "all":
-        return set(range(1, deck.ntypes + 1))
-    held = deck.groups.get(group)
-    return None if held is None else set(held)
-
-
 def _keyword_ratios(words: list, start: int) -> dict:
     """{type: ratio} of the ``scale T ratio`` keywords from words[start:] on."""
     ratios, k = {}, start
@@ -173,7 +165,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     out = []
     for loc, words in getattr(deck, "beside", []):
         style, group = words[3], words[2]
-        held = _group_types(deck, group)
+        held = group_types(deck, group)
         acted = [t in held for t in types] if held is not None else None
         if acted is not None and not any(acted):
             continue
