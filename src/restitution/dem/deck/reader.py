@@ -308,6 +308,14 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.bonds = (loc, line)
     elif cmd == "timestep" and len(words) >= 2:
         deck.dt = number(words[1], where, line)
+    elif cmd == "region" and len(words) >= 3:
+        # read back by a region wall (its surfaces' curvature), which a run may see
+        if words[2] == "delete":
+            deck.regions.pop(words[1], None)
+        else:
+            deck.regions[words[1]] = list(words)
+    elif cmd == "lattice":
+        deck.lattice = list(words)
     elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
         setattr(deck, cmd.split("_")[0], words[1] == "yes")
     elif cmd not in _IRRELEVANT:

@@ -1,12 +1,20 @@
 """An engine's pass through a deck's scratch copy (:mod:`restitution.dem.deck.scratch`), as a child
-process within a wall-time budget and an output cap: what it echoed, the atoms its run markers and
-the deck's end wrote, its error and whether the budget ended it. Each engine's ``deck_run`` module
-says how its engine is started and what its markers write.
+process within a time budget and an output cap: what it echoed, the atoms its run markers and the
+deck's end wrote, its error and whether the budget ended it. Each engine's ``deck_run`` module says
+how its engine is started and what its markers write.
+
+The budget is there to end loops that never finish (a settle loop on a value the skipped runs never
+change), not to judge how fast an engine sets a deck up: its clock runs only once the engine runs a
+line of the deck a second time (a jump, a ``next`` loop, a file included again), which the scratch
+copy's tags tell. A pass that runs every line once ends by itself, however slow its set-up (50 000
+grains inserted before the first run); only a ceiling of :data:`CEILING` times the budget bounds it,
+against a single command that never ends.
 """
 
 from __future__ import annotations
 
 import os
+import re
 import subprocess
 import time
 from dataclasses import dataclass
@@ -15,7 +23,7 @@ from typing import Protocol
 
 from .sandbox import available as confining, confine
 
-__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "MAX_ECHO", "run_child"]
+__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "CEILING", "MAX_ECHO", "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
 ATOMS = "atoms"
@@ -28,6 +36,9 @@ _MAX_OUTPUT = 512 * 2 ** 20
 #: costs the audit's own memory and time (about 0.1 s a MB); the 10 000 runs of a real pour loop
 #: echo 11 MB
 MAX_ECHO = 16 * 2 ** 20
+#: A pass that runs no line twice is bounded by this many times the budget of wall time, not by the
+#: budget: a straight pass ends by itself, so only a command that never ends meets the ceiling
+CEILING = 10
 
 
 @dataclass
@@ -49,8 +60,14 @@ class EngineRun:
     status : int or None
         Its exit status (negative where the budget's kill ended it).
     spent : str
-        Where the budget ended it, the part of the budget that ran out ("20 s of wall time", "16 MB
-        of echo"); "" where it ended by itself.
+        Where the budget ended it, the part of the budget that ran out ("20 s of wall time in a
+        loop", "16 MB of echo"); "" where it ended by itself.
+    looped : bool
+        Whether the engine ran a line of the deck a second time (a loop) before it ended.
+    loop_time : float
+        The wall time, in seconds, from the engine's first line run a second time to its end.
+    wall : float
+        The pass's wall time, in seconds.
 
     Examples
     --------
@@ -64,6 +81,9 @@ class EngineRun:
     timed_out: bool
     status: int | None = None
     spent: str = ""
+    looped: bool = False
+    loop_time: float = 0.0
+    wall: float = 0.0
 
 
 class DeckRun(Protocol):
@@ -95,18 +115,21 @@ class DeckRun(Protocol):
         as far as the engine must and then appends the atoms to ``root``/ATOMS."""
 
     def run_copy(self, deck: Path, root: Path, budget: float, original: Path | None = None,
-                 check_every: bool = False) -> EngineRun:
+                 check_every: bool = False, tag: str | None = None, ceiling: float | None = None) -> EngineRun:
         """Run the scratch copy ``deck`` (its folder the working directory; ``root`` the scratch
         directory of its screen and atoms files) in the engine within ``budget`` seconds of wall
-        time, confined to ``root`` where ``original`` (the deck's own folder) is given and the
-        system allows it (:func:`restitution.dem.dialect.child.run_child`). A marker met again
-        may skip the engine's set-up and its dump of the atoms, unless ``check_every``."""
+        time in a loop (from the first line run twice, told by the scratch copy's ``tag``) and
+        ``ceiling`` in all, confined to ``root`` where ``original`` (the deck's own folder) is
+        given and the system allows it (:func:`restitution.dem.dialect.child.run_child`). A marker
+        met again may skip the engine's set-up and its dump of the atoms, unless ``check_every``."""
 
 
 def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, screen_is_stdout: bool = False,
-              original: Path | None = None, readable=()) -> EngineRun:
+              original: Path | None = None, readable=(), tag: str | None = None,
+              ceiling: float | None = None) -> EngineRun:
     """Run ``argv`` (an engine whose screen goes to ``root``/screen) until it ends, ``budget``
-    seconds pass or its files outgrow the cap.
+    seconds pass in a loop (all its time without ``tag``), ``ceiling`` seconds pass in all, or its
+    files outgrow the cap.
 
     Parameters
     ----------
@@ -119,7 +142,8 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
     root : Path
         The scratch directory: screen and atoms files.
     budget : float
-        Wall-time budget in seconds.
+        Wall-time budget of a loop in seconds: counted from the first line the engine echoes a
+        second time.
     screen_is_stdout : bool
         The child's standard output is its screen: written to ``root``/screen.
     original : Path, optional
@@ -128,6 +152,13 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
         (:func:`restitution.dem.dialect.sandbox.confine`).
     readable : sequence of path
         Folders the program needs beside the system's.
+    tag : str, optional
+        The scratch copy's tag (:attr:`restitution.dem.deck.scratch.Scratch.tag`): an echoed line
+        ending in the tag and a number is a line of the deck, and the same number twice is a line
+        run again. Without it the budget counts from the start.
+    ceiling : float, optional
+        Wall time in seconds the whole pass may take (default :data:`CEILING` times ``budget``; the
+        budget itself without ``tag``).
 
     Returns
     -------
@@ -139,11 +170,13 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
     >>> import sys, tempfile
     >>> with tempfile.TemporaryDirectory() as d:
     ...     done = run_child([sys.executable, "-c", "import sys; sys.exit(3)"], Path(d), {}, Path(d), 10.0)
-    >>> done.status, done.timed_out
-    (3, False)
+    >>> done.status, done.timed_out, done.looped
+    (3, False, False)
     """
     screen = root / "screen"
     start = time.monotonic()
+    lines = _Repeats(screen, tag) if tag else None
+    ceiling = (CEILING * budget if tag else budget) if ceiling is None else ceiling
     confined = confine(root, cwd, original, readable) if original is not None and confining() else None
     with open(screen, "wb") if screen_is_stdout else open(os.devnull, "wb") as stdout:
         proc = subprocess.Popen(argv, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=stdout,
@@ -155,8 +188,14 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
             break
         except subprocess.TimeoutExpired:
             echoed, written = (p.stat().st_size if p.exists() else 0 for p in (screen, root / ATOMS))
-            if time.monotonic() - start > budget:
-                spent = f"{budget:g} s of wall time"
+            now = time.monotonic()
+            looped_at = start if lines is None else lines.first_repeat(now)
+            if looped_at is not None and now - looped_at > budget:
+                spent = f"{budget:g} s of wall time in a loop" if lines else f"{budget:g} s of wall time"
+            elif now - start > ceiling:
+                straight = lines is not None and looped_at is None
+                spent = f"{ceiling:g} s of wall time in all, the ceiling" + (
+                    ", in a pass that had run no line twice" if straight else "")
             elif echoed > MAX_ECHO:
                 spent = f"{MAX_ECHO / 2 ** 20:g} MB of echo"
             elif written > _MAX_OUTPUT:
@@ -172,7 +211,34 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
     echo = _head(screen, MAX_ECHO)
     atoms, at_end = ((root / name).read_text(errors="replace") if (root / name).exists() else ""
                      for name in (ATOMS, ATOMS_AT_END))
-    return EngineRun(echo, atoms, at_end, error, bool(spent), proc.returncode, spent)
+    end = time.monotonic()
+    looped_at = lines.first_repeat(end) if lines else None
+    return EngineRun(echo, atoms, at_end, error, bool(spent), proc.returncode, spent, looped=looped_at is not None,
+                     loop_time=0.0 if looped_at is None else end - looped_at, wall=end - start)
+
+
+class _Repeats:
+    """Reads an engine's screen as it grows, for the first line of the deck echoed a second time
+    (its tag's number seen before): where a loop begins. Only whole lines are read, each once."""
+
+    def __init__(self, screen: Path, tag: str):
+        self.screen, self.offset, self.seen, self.at = screen, 0, set(), None
+        self.pattern = re.compile(re.escape(tag.encode()) + rb"(\d+)")
+
+    def first_repeat(self, now: float) -> float | None:
+        """The time (the clock of ``now``) the first line run twice was seen, None before."""
+        if self.at is None and self.screen.exists():
+            with open(self.screen, "rb") as f:
+                f.seek(self.offset)
+                data = f.read(4 * 2 ** 20)
+            data = data[:data.rfind(b"\n") + 1]
+            self.offset += len(data)
+            for m in self.pattern.finditer(data):
+                if m.group(1) in self.seen:
+                    self.at = now
+                    break
+                self.seen.add(m.group(1))
+        return self.at
 
 
 def _head(path: Path, cap: int) -> str:

@@ -106,6 +106,8 @@ class Deck:
     inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     dt: float | None = None                       # the timestep command's, None where the deck has none
+    regions: dict = field(default_factory=dict)   # region ID -> its words as the engine ran them
+    lattice: list = field(default_factory=list)   # the words of the last lattice command ([]: none)
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
                                                   # (restitution.dem.deck.beside), in force now
     held: dict | None = None                      # type -> [(radius, density)] the engine held at a run, or

@@ -371,10 +371,11 @@ def wall(deck: Deck, loc, words: list, unknown: list):
 
 
 def _region_wall(deck: Deck, loc, words: list, unknown: list):
-    """fix ID group wall/gran/region MODEL... region RID [contacts | temperature T]: audited as a
-    plane where its law does not read the effective radius (LAMMPS gives each surface of the
-    region its own curvature in it, a cylinder's side -2R, a plane none, which the reader does not
-    read), else named, not audited. As :func:`wall`'s result."""
+    """fix ID group wall/gran/region MODEL... region RID [contacts | temperature T]: one surface per
+    curvature the region's walls have, each with the effective radius LAMMPS gives a sphere on it
+    (:func:`region_surfaces`); a law that does not read the effective radius meets every surface as
+    a plane. A region whose curvature the audit cannot know is named, not audited. As :func:`wall`'s
+    result."""
     text = " ".join(words)
     k = next((n for n in range(5, len(words)) if words[n] == "region"), None)
     n = len(words) if k is None else k + 2
@@ -392,18 +393,125 @@ def _region_wall(deck: Deck, loc, words: list, unknown: list):
     (_, contact_of, _), = surfaces
     # the law reads R_eff where a sphere twice as large, of the same mass, gets another contact
     probes = [contact_of(Pair(r, WALL_SIZE, 1.0, WALL_SIZE), 1)[0] for r in (1.0, 2.0)]
-    if probes[0].as_dict() != probes[1].as_dict():
-        unknown.append((*loc, text, "a region wall whose law reads the effective radius, in which LAMMPS gives each "
-                                    "surface of the region its own curvature (a cylinder's side -2R, a plane none) "
-                                    "and the reader does not read regions: the wall's contacts are not audited"))
-        return None
-    why = ("region wall, audited as a plane: its law does not read the effective radius, so no surface's curvature "
-           "changes the contact")
+    if probes[0].as_dict() == probes[1].as_dict():
+        why = ("region wall, audited as a plane: its law does not read the effective radius, so no surface's "
+               "curvature changes the contact")
 
-    def on_region(pair, t):
-        contact, typed, model, exact = contact_of(pair, t)
-        return contact, typed, model.replace("zplane wall", why), None
-    return [(None, on_region, None)]
+        def on_region(pair, t):
+            contact, typed, model, exact = contact_of(pair, t)
+            return contact, typed, model.replace("zplane wall", why), None
+        return [(None, on_region, None)]
+    found = region_surfaces(deck, words[k + 1])
+    if isinstance(found, str):
+        unknown.append((*loc, text, f"a region wall whose law reads the effective radius, in which LAMMPS gives "
+                                    f"each surface of the region its own curvature: {found}; the wall's contacts "
+                                    "are not audited"))
+        return None
+
+    def on_surface(name: str, wall_radius: float, fits: float | None):
+        def contact_on(pair, t):
+            contact, typed, model, exact = contact_of(_on_curved(pair, wall_radius, fits, t, loc, text, name), t)
+            return contact, typed, model.replace("zplane wall", f"region {words[k + 1]}, {name}"), None
+        return contact_on
+    return [(None, on_surface(*surface), None) for surface in found]
+
+
+#: Region styles whose surfaces the audit reads, with their number of arguments
+_REGION_ARGS = {"block": 6, "plane": 6, "sphere": 4, "cylinder": 6}
+#: Region keywords read, each with one value; move and rotate are not among them (a moving wall)
+_REGION_KEYWORDS = frozenset({"side", "units", "open"})
+
+
+def region_surfaces(deck: Deck, rid: str) -> list | str:
+    """The kinds of surface a sphere meets on region ``rid`` as the deck defines it, each as (name,
+    the wall radius LAMMPS' region gives its contacts, the radius a sphere must stay below to fit
+    inside it or None): 0 for a flat one (LAMMPS then takes the
+    sphere's radius for R_eff), -R inside a sphere of radius R and R outside it, -2R inside a
+    cylinder's side and 2R outside it (curved one way only), the cylinder's ends and edges 0 (LAMMPS'
+    region_sphere.cpp and region_cylinder.cpp; R_eff = r Rw / (r + Rw) in its granular wall
+    model). Or, where the audit cannot know the curvature, the reason (a str).
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck at the run audited (its regions and lattice).
+    rid : str
+        The region's ID.
+
+    Returns
+    -------
+    list of (str, float, float or None), or str
+
+    Examples
+    --------
+    >>> d = Deck(regions={"drum": "region drum cylinder z 0 0 0.0075 -0.01 0.01 units box".split()})
+    >>> region_surfaces(d, "drum")
+    [('the inside of its curved side of radius 0.0075', -0.015, 0.0075), ('its flat ends', 0.0, None)]
+    >>> region_surfaces(d, "cup")
+    'region cup is not defined at this run'
+    """
+    words = deck.regions.get(rid)
+    if words is None:
+        return f"region {rid} is not defined at this run"
+    style = words[2]
+    if style not in _REGION_ARGS:
+        return f"a {style} region, whose surfaces' curvature the audit does not read (block, plane, sphere and " \
+               "cylinder regions are read)"
+    args, n, options = words[3:3 + _REGION_ARGS[style]], 3 + _REGION_ARGS[style], {"side": "in", "units": "lattice"}
+    opened = set()
+    while n < len(words) and words[n] in _REGION_KEYWORDS and n + 1 < len(words):
+        if words[n] == "open":
+            opened.add(words[n + 1])
+        else:
+            options[words[n]] = words[n + 1]
+        n += 2
+    if n < len(words):
+        return f"keyword {words[n]} of the region (a moving or rotating region, or one not read)"
+    if len(args) < _REGION_ARGS[style] or any("v_" in a for a in args):
+        return "its size is a variable's, which may change as the run goes" if any("v_" in a for a in args) else \
+            "its arguments are not read"
+    if style in ("block", "plane"):
+        return [("its flat faces", 0.0, None)]
+    radius = _region_number(args[3], deck, options["units"])
+    if isinstance(radius, str):
+        return radius
+    inside = options["side"] == "in"
+    where, sign, fits = ("inside", -1.0, radius) if inside else ("outside", 1.0, None)
+    if style == "sphere":
+        return [(f"the {where} of its sphere of radius {radius:g}", sign * radius, fits)]
+    surfaces = [] if "3" in opened else [(f"the {where} of its curved side of radius {radius:g}", sign * 2.0 * radius,
+                                          fits)]
+    caps = {"1", "2"} - opened if all(a not in ("INF", "-INF", "EDGE") for a in args[4:6]) else set()
+    return surfaces + ([("its flat ends", 0.0, None)] if caps else [])
+
+
+def _region_number(word: str, deck: Deck, units: str) -> float | str:
+    """A region's radius in the box's units: units box as written; units lattice scaled by the
+    lattice's spacing, known where the deck's lattice is none (its scale) or absent (1)."""
+    try:
+        value = float(word)
+    except ValueError:
+        return f"its radius {word} is not a number"
+    if units == "box":
+        return value
+    lattice = deck.lattice
+    if not lattice or (len(lattice) >= 3 and lattice[1] == "none"):
+        try:
+            return value * (float(lattice[2]) if lattice else 1.0)
+        except ValueError:
+            return f"the lattice spacing {lattice[2]} is not a number"
+    return ("its size is in lattice units (the region's default) of a lattice whose spacing the audit does not "
+            "read: give it units box")
+
+
+def _on_curved(pair: Pair, wall_radius: float, fits: float | None, t: int, loc, text: str, name: str) -> Pair:
+    """The wall pair a sphere of type ``t`` meets on a surface of wall radius ``wall_radius``: LAMMPS'
+    R_eff = r Rw / (r + Rw), the plane's r where Rw is 0; inside a curved surface (``fits`` its
+    radius) only a sphere smaller than it fits."""
+    if fits is not None and not pair.R1 < fits:
+        raise DeckError(place(loc), text, f"a sphere of type {t} (radius {pair.R1:g}) does not fit {name}, which "
+                                          "LAMMPS' region wall confines it to")
+    return _curved(pair, wall_radius)
 
 
 def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list, radius: float | None):
@@ -456,8 +564,15 @@ def concave_cylinder(pair: Pair, radius: float) -> Pair:
     >>> round(concave_cylinder(Pair.wall(0.005, 2500.0), 0.0075).R, 12)
     0.0075
     """
-    reff = pair.R1 * 2.0 * radius / (2.0 * radius - pair.R1)
-    return Pair(reff, WALL_SIZE, pair.m1, WALL_SIZE)
+    return _curved(pair, -2.0 * radius)
+
+
+def _curved(pair: Pair, wall_radius: float) -> Pair:
+    """The sphere of a wall Pair against a wall LAMMPS gives the radius ``wall_radius`` Rw (negative:
+    concave): its mass, and LAMMPS' effective radius r Rw / (r + Rw), the sphere's own where Rw is 0."""
+    if wall_radius == 0.0:
+        return pair
+    return Pair(pair.R1 * wall_radius / (pair.R1 + wall_radius), WALL_SIZE, pair.m1, WALL_SIZE)
 
 
 def _against(pair: Pair, radius: float | None, t: int, loc, text: str) -> Pair:

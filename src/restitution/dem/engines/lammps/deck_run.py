@@ -105,9 +105,11 @@ def _ending(root: Path) -> str:
 
 
 def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
-             check_every: bool = False) -> EngineRun:
-    """Run the scratch copy ``deck`` in LAMMPS, runs skipped, within ``budget`` seconds: each
-    marker's set-up check and dump at its first run, or at every run with ``check_every``.
+             check_every: bool = False, tag: str | None = None,
+             ceiling: float | None = None) -> EngineRun:
+    """Run the scratch copy ``deck`` in LAMMPS, runs skipped, within ``budget`` seconds in a loop
+    and ``ceiling`` in all (:func:`~restitution.dem.dialect.child.run_child`; ``tag`` the scratch
+    copy's): each marker's set-up check and dump at its first run, or at every run with ``check_every``.
 
     The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
@@ -119,7 +121,8 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
     env.update(TMPDIR=str(root))
     done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), _ending(root).strip(),
                       str(stages), "1" if check_every else "0"],
-                     deck.parent, env, root, budget, original=original, readable=_python_folders())
+                     deck.parent, env, root, budget, original=original, readable=_python_folders(),
+                     tag=tag, ceiling=ceiling)
     if done.status and not done.error and not done.timed_out:     # (the budget's kill is no error of LAMMPS')
         done.error = f"LAMMPS ended with status {done.status}"
     return done

@@ -229,10 +229,11 @@ velocity all set 0 0 {-g!r} units box""", lines, 0.5 * radius, dt, t_run, f"z[1]
 
 
 def lammps_cylinder_eps(radius: float, density: float, lines: str, g: float, dt: float, t_run: float,
-                        cylinder: float) -> float:
+                        cylinder: float, outside: bool = False) -> float:
     """eps = (speed after) / g for one sphere of atom type 1 inside a ``fix wall/gran ... zcylinder
     R`` (R = ``cylinder``, its axis the z axis), hitting it head-on at speed g: the sphere starts
-    touching it at zero overlap, at x = R - radius, moving outward along x.
+    touching it at zero overlap, at x = R - radius, moving outward along x. With ``outside``, at
+    x = R + radius moving inward (onto a region's outer surface, as ``side out`` has it).
 
     Parameters
     ----------
@@ -243,7 +244,10 @@ def lammps_cylinder_eps(radius: float, density: float, lines: str, g: float, dt:
     g, dt, t_run
         As :func:`lammps_eps` takes them.
     cylinder : float
-        The zcylinder's radius, as the wall's line gives it.
+        The zcylinder's radius, as the wall's line gives it (or the distance of any surface the
+        sphere meets on the x axis).
+    outside : bool, optional
+        The sphere starts outside, moving toward the axis.
 
     Returns
     -------
@@ -266,14 +270,15 @@ def lammps_cylinder_eps(radius: float, density: float, lines: str, g: float, dt:
     >>> 0.0 < lammps_cylinder_eps(0.005, 2500.0, wall, 1.0, 1e-7, 3e-3, 0.0075) < 1.0  # doctest: +SKIP
     True
     """
-    start = cylinder - radius
-    x, v = _run(2.0 * cylinder, 1, f"""
+    sign = -1.0 if outside else 1.0
+    start = cylinder - sign * radius
+    x, v = _run(max(2.0 * cylinder, cylinder + 3.0 * radius) if outside else 2.0 * cylinder, 1, f"""
 create_atoms 1 single {start!r} 0 0 units box
 set atom 1 diameter {2 * radius!r} density {density!r}
-velocity all set {g!r} 0 0 units box""", lines, 0.5 * radius, dt, t_run, f"{start!r} - x[1]")
-    if x[0, 0] >= start:
+velocity all set {sign * g!r} 0 0 units box""", lines, 0.5 * radius, dt, t_run, f"{sign * start!r} - {sign!r} * x[1]")
+    if sign * x[0, 0] >= sign * start:
         raise ArithmeticError("the sphere had not left the wall at the end of the run")
-    return float(-v[0, 0] / g)
+    return float(-sign * v[0, 0] / g)
 
 
 def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, steps: int = 4000,

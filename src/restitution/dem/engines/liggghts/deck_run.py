@@ -62,9 +62,11 @@ def _ending(root: Path) -> str:
 
 
 def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
-             check_every: bool = True) -> EngineRun:
-    """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step, within ``budget`` seconds
-    (every marker runs its step and writes the atoms: ``check_every`` is always so here).
+             check_every: bool = True, tag: str | None = None,
+             ceiling: float | None = None) -> EngineRun:
+    """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step, within ``budget`` seconds in
+    a loop and ``ceiling`` in all (:func:`~restitution.dem.dialect.child.run_child`; ``tag`` the
+    scratch copy's; every marker runs its step and writes the atoms: ``check_every`` is always so here).
 
     The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
@@ -82,7 +84,7 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
         for name in (ATOMS, ATOMS_AT_END):
             (root / name).unlink(missing_ok=True)
         done = run_child([stdbuf, "-oL", *argv] if stdbuf else argv, deck.parent, env, root, budget,
-                         screen_is_stdout=True, original=original)
+                         screen_is_stdout=True, original=original, tag=tag, ceiling=ceiling)
         # Open MPI's singleton start fails now and then under load, before LIGGGHTS reads a line
         if not (done.status and MPI_NOT_STARTED in done.echo + done.error):
             break
