@@ -103,6 +103,11 @@ def typed_e_run_files():
     return files
 
 
+# the engine tests' collision (tests/engine_case.py): unlike spheres, glass on steel; one speed, each row's
+# eps being a function of e alone. The manifest rule prints it for the article's table caption.
+TYPED_E_COLLISION = {"radii": [1e-3, 1.5e-3], "densities": [2500.0, 7800.0]}
+
+
 rule typed_e_runs:
     """Each typed-e row in its engine at the confirming e values (three time steps, extrapolated), its
     eps beside the table's, and every run's deck and output (LAMMPS, LIGGGHTS, Yade, Kratos)."""
@@ -115,10 +120,8 @@ rule typed_e_runs:
         readme=f"{TYPED_E_RUNS}/README.txt",
     params:
         engines=typed_e_run_engines(),
-        # the engine tests' collision (tests/engine_case.py): unlike spheres, glass on steel; one speed,
-        # each row's eps being a function of e alone
-        radii=[1e-3, 1.5e-3],
-        densities=[2500.0, 7800.0],
+        radii=TYPED_E_COLLISION["radii"],
+        densities=TYPED_E_COLLISION["densities"],
         material={"E": 5e7, "nu": 0.3},
         g=0.1,
     log:
@@ -144,6 +147,7 @@ rule engine_runs_manifest:
     params:
         # the first of the figure's runs: force rule, slowest speed, coarsest step
         sample=lammps_run_files()[0],
+        collision=TYPED_E_COLLISION,
     log:
         "logs/engine_runs_manifest.log",
     script:

@@ -45,6 +45,35 @@ Every engine run behind the typed-e table (LAMMPS, LIGGGHTS, Yade, Kratos: each 
 for it) is under {Path(typed_readme).parent.as_posix()}/, with the eps each run gave beside the table's;
 {typed_readme} says how to rerun them.
 {snakemake.input.manifest} lists every one of those run files with its SHA-256 checksum and size.
+
+Where the pieces are (in the project's sources, which this bundle does not carry): each figure and table
+of the supplement is made by one script under workflow/scripts/, a step of the Snakemake pipeline
+(rules in workflow/rules/, settings in config.yaml), which records its inputs.
+  series coefficients table: series_table.py, from series.py
+  forward and inverse collision figures, damped-only phase portrait: fig1_forward.py, fig2_inverse.py,
+    fig3_phase.py
+  readings of Kim's procedure and their errors in eps: connection_readings.py, eps_compare.py
+  ledger of Kim's claims: claims.py
+  uniform approximation (both end rules), its error figure and table: closed_form_section.py (the name is
+    older than the text's wording: besides the closed-form limits it fits the uniform approximation)
+  eps against Omega for every force law, validation table: compare_variants.py, validation.py,
+    variants_tex.py; the other force laws' sections: variant_section.py, with the main figures' scripts
+  speed against accuracy (table and figure): bench_section.py, from one recorded run of `make bench`
+    kept under benchmarks/recorded/
+  Feng's calibration: feng_calibration.py
+  half-power series of Hertz's law and its truncation errors: schwager_poeschel.py
+  stability atlas (table and figure): stability_atlas.py, fig_stability.py (library
+    restitution.audit.stability; its grid, tolerances and parallel jobs are the stability block of
+    config.yaml)
+  uniform-approximation atlas: uniform_atlas.py
+The tolerance study is results/<variant>/reference/accuracy.csv. Kim's matching procedure, in all its
+readings, is restitution.audit.matching; the reading used for the figures is set in config.yaml, which
+also lists the force laws (as "variants"). `restitution eps --method closed-form --json` prints the
+uniform approximation as one line of C (the option's name is older than the wording: it is the fitted
+uniform approximation). The DEM codes' contact laws are restitution.dem.engines, one module per code;
+`restitution calibrate` (with --end for the end rule) inverts eps(Omega), and `restitution lammps --eps`
+writes the pair_coeff line. The overlap rule's constant C is computed by restitution.core.overlap_limit,
+and 1 - eps from the dissipated energy by restitution.core.energy.
 """
 for name in members:
     # relative, inside the bundle: no absolute path, no way out

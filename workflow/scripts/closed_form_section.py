@@ -18,7 +18,7 @@ from restitution_workflow.pipeline import read_json, save_figure, setup_matplotl
 from restitution.core import asymptotics as asy
 from restitution.core.collision import OMEGA_RANGE, collide
 from restitution.core.uniform import DEGREE_STEP, OVERLAP_P, SELECTION_TARGET, UniformForm
-from restitution.fast.uniform_build import FIT_RTOL
+from restitution.fast.uniform_build import FIT_RTOL, LAW_BELOW
 
 start(snakemake)
 plt = setup_matplotlib()
@@ -45,7 +45,7 @@ ref = curve["eps_reference"].to_numpy()
 law_viscous = V.k * om
 law_elastic = 1.0 - E.C1 * om ** (-float(A_))
 rel = lambda x: np.abs(x / ref - 1.0)  # noqa: E731
-fig, ax = plt.subplots(figsize=(5.2, 4.6))
+fig, ax = plt.subplots(figsize=(7.6, 3.0))   # wide and low, the legend beside the axes (saves height)
 ax.loglog(curve["g"], np.maximum(rel(curve["eps_closed_form"].to_numpy()), 1e-17), color="tab:orange", lw=2.0,
           label="uniform approximation")
 rel_loss = lambda x: np.abs((1.0 - x) / (1.0 - ref) - 1.0)  # noqa: E731  (the elastic law is one for 1 - eps)
@@ -59,9 +59,9 @@ ax.set_xlabel(r"impact speed $g$ (in the units of $D_1$, $D_2$)")
 # one axis, two quantities: the elastic law is a law for 1 - eps, and its curve is the error in that
 ax.set_ylabel(r"relative error in $\varepsilon$ (elastic law: in $1 - \varepsilon$)")
 ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$", fontsize=10)
-fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=1, frameon=False)
-fig.set_layout_engine("tight", rect=(0, 0.25, 1, 1))   # redone when save_figure resizes
-save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=0.7)
+ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), frameon=False)
+fig.set_layout_engine("tight")   # redone when save_figure resizes
+save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=0.95)
 err_elastic_gmin, err_viscous_gmax = float(rel_loss(law_elastic)[0]), float(rel(law_viscous)[-1])
 LAW_TOL = 0.01
 ok_el = np.nonzero(rel_loss(law_elastic) <= LAW_TOL)[0]
@@ -77,38 +77,38 @@ LAW_RANGE = {   # (elastic law within LAW_TOL somewhere, viscous law within LAW_
     (False, False): rf"Neither comes within {_tol}\,\% anywhere over these speeds.",
 }
 
-# %% figure: relative error of the forms, every variant, force rule (top) and overlap rule (bottom)
-fig, axes = plt.subplots(2, 2, figsize=(7.2, 6.4), sharey=True, sharex=True)
-colors = ["tab:blue", "tab:orange", "tab:green", "tab:purple", "tab:brown", "tab:cyan"]
-styles = ["-", "--", "-.", ":"]
-markers = ["o", "s", "^", "D", "v", "P"]   # also on the dotted error-figure lines, which differ in colour only
+# %% figure: relative error of the forms, one panel per force law (columns) and end rule (rows): in one
+# panel per rule the three laws' curves and their error-figure lines ran together
+fig, axes = plt.subplots(2, len(p.variants), figsize=(7.2, 4.6), sharey=True, sharex=True, squeeze=False)
 for row, (fs, errs, rule) in enumerate(((forms, errors, "force"), (overlap_forms, overlap_errors, "overlap"))):
     for i, name in enumerate(p.variants):
+        ax = axes[row, i]
+        if row == 0:
+            ax.set_title(rf"{law_name(name, tex=False)} ($\alpha = {p.exponents[name]['alpha']}$, "
+                         rf"$\gamma = {p.exponents[name]['gamma']}$)", fontsize=8.5)
         if not fs[name]["available"]:
+            ax.text(0.5, 0.5, "no form:\nthe bodies can stick" if rule == "overlap" else "no form",
+                    transform=ax.transAxes, ha="center", va="center", fontsize=8.5)
             continue
         e = errs[name]
-        kw = dict(color=colors[i % len(colors)], ls=styles[i % len(styles)], lw=1.5,
-                  marker=markers[i % len(markers)], markevery=0.125, ms=3.5,
-                  label=rf"{law_name(name, tex=False)} ($\alpha = {p.exponents[name]['alpha']}$, $\gamma = {p.exponents[name]['gamma']}$)")
-        axes[row, 0].loglog(e["omega"], np.maximum(e["err_eps"], 1e-17), **kw)
         el = e["omega"] >= 1
-        axes[row, 1].loglog(e["omega"][el], np.maximum(e["err_one_minus_eps"][el], 1e-17), **kw)
-        for ax, key in ((axes[row, 0], "bound_eps"), (axes[row, 1], "bound_one_minus_eps")):
-            ax.axhline(fs[name][key], color=kw["color"], lw=0.8, ls=(0, (1, 2)))
-            ax.plot([0.97], [fs[name][key]], transform=ax.get_yaxis_transform(), color=kw["color"],
-                    marker=kw["marker"], ms=4, ls="none")
-    axes[row, 0].set_ylabel(f"relative error, {rule} rule")
-    axes[row, 0].set_title(rf"in $\varepsilon$ ({rule} rule)", fontsize=9)
-    axes[row, 1].set_title(rf"in $1-\varepsilon$, $\Omega \geq 1$ ({rule} rule)", fontsize=9)
+        ax.loglog(e["omega"], np.maximum(e["err_eps"], 1e-17), color="tab:blue", lw=1.3,
+                  label=r"in $\varepsilon$")
+        ax.loglog(e["omega"][el], np.maximum(e["err_one_minus_eps"][el], 1e-17), color="tab:orange", lw=1.3,
+                  ls="--", label=r"in $1-\varepsilon$ ($\Omega \geq 1$)")
+        ax.axhline(fs[name]["bound_eps"], color="tab:blue", lw=0.9, ls=(0, (1, 1.5)),
+                   label=r"error figure, $\varepsilon$")
+        ax.axhline(fs[name]["bound_one_minus_eps"], color="tab:orange", lw=0.9, ls=(0, (4, 2, 1, 2)),
+                   label=r"error figure, $1-\varepsilon$")
+    axes[row, 0].set_ylabel(f"{rule} rule: relative error", fontsize=9)
 for ax in axes.ravel():
     ax.set_ylim(1e-12, 1e-2)
+    ax.set_xticks([1e-8, 1e-4, 1, 1e4, 1e8], labels=["$10^{-8}$", "", "$1$", "", "$10^{8}$"])
 for ax in axes[1]:
     ax.set_xlabel(r"$\Omega$")
-handles = {}
-for ax in axes[:, 0]:
-    handles.update(zip(*reversed(ax.get_legend_handles_labels())))
-fig.legend(list(handles.values()), list(handles), loc="lower center", ncol=2, frameon=False, fontsize=8.5)
-fig.set_layout_engine("tight", rect=(0, 0.1, 1, 1))   # redone when save_figure resizes
+handles, labels = axes[0, 0].get_legend_handles_labels()
+fig.legend(handles, labels, loc="lower center", ncol=4, frameon=False, fontsize=8.5)
+fig.set_layout_engine("tight", rect=(0, 0.06, 1, 1))   # redone when save_figure resizes
 save_figure(fig, snakemake.output.err_pdf, snakemake.output.err_png, width=1.0)
 
 # %% the laws in physical units: Omega = D1 D2^(-(alpha+1)/(gamma+1)) g^w, w = (alpha-1-2gamma)/(gamma+1)
@@ -151,6 +151,16 @@ CHECK_OMEGA = 1e-4
 ref_check = collide((ex["alpha"], ex["gamma"]), CHECK_OMEGA, rtol=1e-12).eps
 check_lead = abs(float(V.eps(CHECK_OMEGA, order=0)) / ref_check - 1.0)
 check_first = abs(float(V.eps(CHECK_OMEGA, order=1)) / ref_check - 1.0)
+# the order of the omitted term, tested by a sequence rather than one point: (eps / eps_first - 1) scaled by
+# Omega^2 ln^2 Omega tends to a constant if that is the remainder's order (to 0 like 1/ln Omega if it were
+# Omega^2 ln Omega). Three digits: at 1e-5 the remainder is 5e-9 of eps, so the integrator's 1e-12 moves the
+# ratio by 2e-4 there (at 1e-6 by 1e-2 of it, which is why the sequence stops at 1e-5)
+REMAINDER_OMEGAS = (1e-2, 1e-3, 1e-4, 1e-5)
+REMAINDER_RTOL = 1e-12
+remainder_ratio = []
+for _om in REMAINDER_OMEGAS:
+    _ref = collide((ex["alpha"], ex["gamma"]), _om, rtol=REMAINDER_RTOL).eps
+    remainder_ratio.append((_ref / float(V.eps(_om, order=1)) - 1.0) / (_om * np.log(_om)) ** 2)
 end_power = 1 + (g_ + 1) / (a_ - g_) if a_ > g_ else None
 # beta = (alpha - gamma)/((gamma + 1)(alpha + 1)) is rational for rational exponents: printed as the fraction,
 # checked against the library's floating-point value (a second route to the same number)
@@ -187,6 +197,9 @@ macros = {
     "CFFitRtol": sci(FIT_RTOL, 1),
     "CFOverlapBoundEps": sci(main_overlap["bound_eps"], 2) if main_overlap["available"] else "none",
     "CFOverlapBoundLoss": sci(main_overlap["bound_one_minus_eps"], 2) if main_overlap["available"] else "none",
+    # the overlap form's size and where its references are the creep law rather than integrations
+    "CFOverlapTerms": str(len(main_overlap["a"])) if main_overlap["available"] else "none",
+    "CFOverlapLawBelow": sci(LAW_BELOW, 1),
     "CFViscousK": sci(V.k, 6), "CFElasticCOne": sci(E.C1, 6),
     "CFViscousPrefactor": sci(V.k * scale, 4), "CFViscousPower": frac(w),
     "CFElasticPrefactor": sci(E.C1 * scale ** (-float(A_)), 4), "CFElasticPower": frac(-w * A_),
@@ -203,6 +216,11 @@ macros = {
     "CFViscousCheckOmega": sci(CHECK_OMEGA, 1),
     "CFViscousLeadErr": sci(check_lead, 2),
     "CFViscousFirstErr": sci(check_first, 2),
+    "CFViscousRemRtol": sci(REMAINDER_RTOL, 1),
+    "CFViscousRemOmegaA": sci(REMAINDER_OMEGAS[0], 1), "CFViscousRemRatioA": sci(remainder_ratio[0], 3),
+    "CFViscousRemOmegaB": sci(REMAINDER_OMEGAS[1], 1), "CFViscousRemRatioB": sci(remainder_ratio[1], 3),
+    "CFViscousRemOmegaC": sci(REMAINDER_OMEGAS[2], 1), "CFViscousRemRatioC": sci(remainder_ratio[2], 3),
+    "CFViscousRemOmegaD": sci(REMAINDER_OMEGAS[3], 1), "CFViscousRemRatioD": sci(remainder_ratio[3], 3),
     "CFElasticCTwo": sci(E.C2, 6),
     "CFEndCoef": sci(E.E, 6),
     "CFEndCoefExact": frac(end_coef),
@@ -210,15 +228,23 @@ macros = {
     "CFFitOmegaMin": sci(main["omega_range"][0], 1), "CFFitOmegaMax": sci(main["omega_range"][1], 1),
     "CFEndPower": frac(end_power) if end_power is not None else "none",
     "CFFormTerms": str(len(main["a"])),
+    "CFFormDegree": str(len(main["a"]) - 1),
 }
 write_text(snakemake.output.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))
+
+
+def stacked(name: str) -> str:
+    """A column head on two lines where the name has a dash (Hertz--Kuwabara--Kono), else one."""
+    first, dash, rest = esc(name).partition("--")
+    return rf"\shortstack{{{first}--\\{rest}}}" if dash else esc(name)
+
 
 rows = []
 for name in p.variants:
     f = forms[name]
     ab = rf"{frac(p.exponents[name]['alpha'])} & {frac(p.exponents[name]['gamma'])}"
     if f["available"]:
-        rows.append(rf"{esc(law_name(name))} & {ab} & {sci(f['b'], 12)} & {sci(f['c3'], 12)} & {float(f['sigma']):g} & "
+        rows.append(rf"{stacked(law_name(name))} & {ab} & {sci(f['b'], 12)} & {sci(f['c3'], 12)} & {float(f['sigma']):g} & "
                     rf"{f['m0']} & {f['m1']} & {sci(f['bound_eps'], 2)}, {sci(f['bound_one_minus_eps'], 2)} \\")
     else:
         rows.append(rf"{esc(law_name(name))} & {ab} & \multicolumn{{6}}{{l}}{{none: {esc(f['reason'])}}} \\")
@@ -254,12 +280,6 @@ coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) if j < l
               for j in range(n_rows)]
 
 
-def stacked(name: str) -> str:
-    """A column head on two lines where the name has a dash (Hertz--Kuwabara--Kono), else one."""
-    first, dash, rest = esc(name).partition("--")
-    return rf"\shortstack{{{first}--\\{rest}}}" if dash else esc(name)
-
-
 def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list) -> str:
     """A form's table: one row per variant, then its numbers in one column per variant."""
     return "\n".join([rf"\begin{{tabular}}{{{cols}}}", r"\toprule", header + r" \\", r"\midrule", *rows,
@@ -269,8 +289,8 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
                       r"\bottomrule", r"\end{tabular}"])
 
 
-force_tables = two_tables(r">{\raggedright\arraybackslash}p{2.1cm}llllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
-                          r"$2\times$ max.\ error $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
+force_tables = two_tables(r"lllllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
+                          r"error figure: $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
 overlap_tables = two_tables(r">{\raggedright\arraybackslash}p{2.1cm}llllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar n + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
@@ -321,7 +341,7 @@ the exact leading and first-order terms at the viscous end, and the sum, vanishi
 cannot change them. At the elastic end the bracket has only the leading term $C_1\mu$: the $\mu^2$ term of
 $\zeta - 1$, $(C_1^2 - C_2)\mu^2$, is left to the fitted sum, which vanishes like $\Omega^{{-\sigma s_1}}$ with
 $\sigma s_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
-leading order only at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
+first order at the viscous end but only to leading order at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
 {sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The error figures below, measured over
 $10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($n = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
 where the error on the validation points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
@@ -342,9 +362,9 @@ written out (Sec.~\ref{{sec:reproduce}}).
 \begin{{figure}}[htbp]
 \centering
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
-\caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (left) and in
-$1 - \varepsilon$ (right), for every force law that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
-Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = 10^{{-3}}$ up); dotted lines: the error figures (twice the largest error measured on the validation and test points, plus the reference's accuracy), each marked at its right end with its force law's marker.}}
+\caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (solid) and in
+$1 - \varepsilon$ (dashed), for every force law that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
+Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = {sci(LAW_BELOW, 1)}$ up); one column per force law; dotted and dash-dotted lines: the error figures in $\varepsilon$ and in $1 - \varepsilon$ (twice the largest error measured on the validation and test points, plus the reference's accuracy; the two nearly coincide).}}
 \label{{fig:uniform-error}}
 \end{{figure}}
 
@@ -365,7 +385,7 @@ $\varepsilon \to C\,\Omega^{{\kappa}}$ and $1 - \varepsilon \to C_1 \Omega^{{-\n
 for any coefficients. The envelope $\exp(-\rho/\bar z)$ vanishes like the true correction; the shape $(\bar\sigma, \rho, \bar s_1)$ and the
 degree are chosen as for Eq.~(\ref{{eq:uniform}}), the coefficients fitted with a small penalty on their size (without
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
-formula). Below $\Omega = 10^{{-3}}$ each integration of the creeping return takes about a second, and there the
+formula). Below $\Omega = {sci(LAW_BELOW, 1)}$ each integration of the creeping return takes about a second, and there the
 references are the creep law itself, checked against the integrator above it; the error figure adds that difference and
 the error of $C$. The error figure for Kim's force law is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},

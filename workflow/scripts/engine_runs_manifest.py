@@ -39,6 +39,11 @@ macros = {
     "EngineTypedYadeFiles": str(typed["yade"]), "EngineTypedKratosFiles": str(typed["kratos"]),
     "EngineSampleDeck": esc(Path(snakemake.params.sample).name),
     "EngineChecksum": f"SHA-{hashlib.sha256().digest_size * 8}",
+    # the typed-e runs' pair of spheres, in mm and kg/m^3, for the article's table caption
+    "EngineTypedRadiusA": f"{1e3 * snakemake.params.collision['radii'][0]:g}",
+    "EngineTypedRadiusB": f"{1e3 * snakemake.params.collision['radii'][1]:g}",
+    "EngineTypedDensityA": f"{snakemake.params.collision['densities'][0]:g}",
+    "EngineTypedDensityB": f"{snakemake.params.collision['densities'][1]:g}",
 }
 write_text(snakemake.output.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()) + "\n")
 

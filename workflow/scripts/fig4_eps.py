@@ -26,20 +26,21 @@ curves = pd.read_csv(snakemake.input.curves)
 errors = pd.read_csv(snakemake.input.errors, keep_default_na=False)
 
 
-def finish(fig, ax, xlabel, *, ncol, bottom):
-    """Axis labels, and the legend below the axes (inside, it covered a curve for some variants)."""
+def finish(fig, ax, xlabel):
+    """Axis labels, and the legend beside the axes (inside, it covered a curve for some variants; below,
+    it left the page half empty)."""
     ax.set_xlabel(xlabel)
     ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
-    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=ncol, frameon=False,
-               title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
-    fig.set_layout_engine("tight", rect=(0, bottom, 1, 1))   # redone when save_figure resizes
+    ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), frameon=False,
+              title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
+    fig.set_layout_engine("tight")   # redone when save_figure resizes
     return fig
 
 
 def draw_eps_of_omega():
     """alpha - 1 - 2 gamma = 0: eps(Omega) on the validation grid, this material's Omega marked."""
     known = pd.read_csv(snakemake.input.known)
-    fig, ax = plt.subplots(figsize=(5.6, 4.6))
+    fig, ax = plt.subplots(figsize=(8.0, 3.0))
     ax.loglog(known["omega"], known["eps_reference"], color="black", lw=2.6, label="reference integration")
     closed = [c for c in known.columns if c.startswith("eps_") and c != "eps_reference"]
     for c, marker in zip(closed, "osD^"):
@@ -48,12 +49,12 @@ def draw_eps_of_omega():
     w = float(curves["omega"].iloc[0])
     ax.plot([w], [float(curves["eps_reference"].iloc[0])], "o", color="tab:red", ms=8,
             label=rf"this material: $\Omega = {w:.4g}$ for every $g$")
-    return finish(fig, ax, r"$\Omega$ (here independent of the impact speed)", ncol=1, bottom=0.25)
+    return finish(fig, ax, r"$\Omega$ (here independent of the impact speed)")
 
 
 def draw_eps_of_g():
     """eps(g) from the reference and from every relation."""
-    fig, ax = plt.subplots(figsize=(5.0, 4.9))
+    fig, ax = plt.subplots(figsize=(8.0, 3.0))
     ax.plot(curves["g"], curves["eps_reference"], color="black", lw=2.6, label="reference integration")
     drawn = [curves["eps_reference"].to_numpy()]
     for _, rel in errors.iterrows():
@@ -78,9 +79,9 @@ def draw_eps_of_g():
     ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 0.0), xycoords=("data", "axes fraction"), xytext=(3, 3),
                 textcoords="offset points", color="grey", fontsize=10)
     ax.set_xlim(curves["g"].min(), curves["g"].max())
-    return finish(fig, ax, r"impact speed $g$ (in the units of $D_1$, $D_2$)", ncol=1, bottom=0.27)
+    return finish(fig, ax, r"impact speed $g$ (in the units of $D_1$, $D_2$)")
 
 
 # %%
 fig = draw_eps_of_omega() if curves["omega"].nunique() == 1 else draw_eps_of_g()
-save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.7)   # the article includes it at 0.7, the variants at 0.75
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.9)   # the article and the variants include it at 0.9

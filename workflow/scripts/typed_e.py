@@ -32,7 +32,6 @@ write_csv(out.csv, pd.DataFrame(rows))
 
 # Each row's code is the engine that confirms it (a test checks that they are the same code), so
 # one column names both: the code and the version run
-# the option wraps (array's p column): on one line the table is wider than the page
 def release_name(engine: str) -> str:
     """LAMMPS' version as its own output names it ("LAMMPS (22 Jul 2025)"), not as the Python
     module's version label (2025.7.22); other engines unchanged."""
@@ -43,14 +42,17 @@ def release_name(engine: str) -> str:
     return f"LAMMPS ({day} {calendar.month_abbr[month]} {year})"
 
 
-lines = [r"\begin{tabular}{l>{\raggedright\arraybackslash}p{3.0cm}" + "r" * len(es) + "}", r"\toprule",
+# each row names its engine and version (a test reads them on the row's line); the columns are wide
+# enough that most rows take one or two lines
+lines = [r"\begin{tabular}{>{\raggedright\arraybackslash}p{2.5cm}>{\raggedright\arraybackslash}p{4.8cm}" + "r" * len(es) + "}",
+         r"\toprule",
          r"code, version run & option & " + " & ".join(rf"$e = {fixed(e, 2)}$" for e in es) + r" \\", r"\midrule"]
 for r in rows:
     option = r["code"].split(" ", 1)[1]
     # an option named in one word (Kratos' DEM_D_Hertz_viscous_Coulomb) may break after each underscore,
     # else it runs over the numbers beside it
-    cells = [esc(release_name(r["engine"])), esc(option).replace(r"\_", r"\_\allowbreak{}")] + [fixed(r[f"eps_at_e_{e:g}"], 4)
-                                                                               for e in es]
+    cells = [esc(release_name(r["engine"])), esc(option).replace(r"\_", r"\_\allowbreak{}")] + [
+        fixed(r[f"eps_at_e_{e:g}"], 4) for e in es]
     lines.append(" & ".join(cells) + r" \\")
 lines += [r"\bottomrule", r"\end{tabular}"]
 write_text(out.table, "\n".join(lines))

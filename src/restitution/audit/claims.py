@@ -242,7 +242,7 @@ def _scaling_rows(values) -> list[dict]:
         if exact is not None:
             small, large = exact
             verdict = REPRODUCED if small == quarter else NOT_REPRODUCED
-            ours = f"1 - eps ~ g^({small}) as g -> 0; eps ~ g^({large}) as g -> infinity (exact)"
+            ours = f"1 - eps ~ g^({small}) as g -> 0; eps ~ g^({large}) as g -> infinity (exact asymptotic exponents)"
         else:
             verdict = REPRODUCED if abs(measured - float(quarter)) <= EXPONENT_TOLERANCE else (
                 AMBIGUOUS if es["paper_relation_powers_of_g_quarter"] else NOT_REPRODUCED)
