@@ -594,3 +594,21 @@ def test_lammps_gives_the_audited_region_wall_eps(tmp_path, wall):
     (row,) = res["walls"]
     _in_the_drum(row, f"pair_style granular\npair_coeff * * hooke 1e4 5.0 damping mass_velocity {T}\n{DRUM_REGION}\n"
                       f"{wall}", 1e-9)
+
+
+@pytest.mark.parametrize("motion, audited", [("wiggle z 1e-6 1e-3", False), ("wiggle z 0.0 1e-3", True),
+                                             ("shear x 0.5", True)], ids=["wiggle", "still wiggle", "shear"])
+def test_a_wiggling_wall_is_named_not_audited(tmp_path, motion, audited):
+    """A wall that oscillates along an axis accelerates under the sphere during a contact: LAMMPS,
+    sphere r 5 mm (2500 kg/m^3) met at 0.1 m/s by hertz/material 1e8 5e5 0.3 at dt 2e-6, wiggle z 1e-6
+    1e-3, measures eps 0.849 to 1.061 by the wall's phase at contact, 0.956306 with the wall still
+    (the law's eps, 0.956303). A steady shear along the wall leaves the normal contact alone."""
+    wall = f"fix w all wall/gran granular hooke 1e4 5.0 damping mass_velocity {T} zplane 0.0 NULL {motion}"
+    text = LAMMPS_DECK.replace(DASHPOT_WALL, wall)
+    res, err = audit(tmp_path, text, 0.1)
+    assert any(w["wall"] == "w" for w in res["walls"]) is audited
+    named = [row for row in res["unknown_lines"] if row["text"].split()[1] == "w"]
+    assert bool(named) is not audited
+    if not audited:
+        assert "oscillates" in named[0]["why"] and "not audited" in named[0]["why"]
+        assert "fix w all" in err

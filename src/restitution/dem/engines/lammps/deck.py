@@ -291,7 +291,8 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
 
 # ---------------------------------------------------------------------------- walls
 #: LAMMPS fix wall/gran keywords after the wall style, with their number of values: they move or
-#: heat the wall or write output, none changes a head-on contact's eps at a given impact speed
+#: heat the wall or write output; of them only a wiggle (an oscillating wall) changes a head-on
+#: contact's eps at a given impact speed
 _LAMMPS_WALL_KEYWORDS = {"wiggle": 3, "shear": 2, "contacts": 0, "temperature": 1}
 _WALL_STYLES = FLAT_WALLS + ("zcylinder", "region")
 #: fix wall/gran's older models, each the law of the pair style gran/<model>
@@ -303,9 +304,10 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     function of the wall Pair and the sphere's type giving (contact, typed e, model, exact line or
     None), None)], or None with the reason in ``unknown``. The wall's model is that of a pair_coeff
     line with the wall as the second body (the older hooke, hooke/history and hertz/history: their
-    pair style's law, Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]), and LAMMPS' keywords after
-    the wall style (wiggle, shear, contacts, temperature) move it, heat it or write output: none
-    changes the contact. A zcylinder is met from inside (LAMMPS' zcylinder confines: a sphere
+    pair style's law, Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]). Of LAMMPS' keywords after
+    the wall style, shear moves it along itself, contacts and temperature heat it or write output:
+    none changes the contact; a wiggle of nonzero amplitude accelerates it under the sphere, and
+    such a wall is named, not audited. A zcylinder is met from inside (LAMMPS' zcylinder confines: a sphere
     outside it overlaps it at every distance), where LAMMPS gives the wall the radius -2 R in the
     effective radius (:func:`concave_cylinder`). Its arguments are
     :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s.
@@ -342,6 +344,16 @@ def wall(deck: Deck, loc, words: list, unknown: list):
             unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
             return None
     while n < len(words) and words[n] in _LAMMPS_WALL_KEYWORDS:
+        if words[n] == "wiggle" and not _still(words[n + 2:n + 3], place(loc), text):
+            # the wall accelerates under the sphere during a contact: the eps the engine measures
+            # depends on where in the cycle the contact falls (LAMMPS: 0.849 to 1.061 over the
+            # phases where the still wall gives 0.956), not on the law alone
+            amp, period = words[n + 2:n + 4]
+            unknown.append((*loc, text, f"wiggle {' '.join(words[n + 1:n + 4])}: the wall oscillates (amplitude "
+                                        f"{amp}, period {period}) and accelerates under the sphere during a "
+                                        "contact, so the eps the engine measures depends on where in the cycle "
+                                        "a contact falls: the wall's contacts are not audited"))
+            return None
         n += 1 + _LAMMPS_WALL_KEYWORDS[words[n]]
     if n < len(words):
         unknown.append((*loc, text, f"keyword {words[n]} is not mapped: the wall's contacts are not audited"))
@@ -368,6 +380,15 @@ def wall(deck: Deck, loc, words: list, unknown: list):
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact
     return [(None, contact_of, None)]
+
+
+def _still(amplitude: list, where: str, text: str) -> bool:
+    """Whether a wiggle's amplitude (a one-word list; empty where the line stops short, which
+    LAMMPS refuses) leaves the wall where it is."""
+    try:
+        return bool(amplitude) and number(amplitude[0], where, text) == 0.0
+    except DeckError:
+        return False
 
 
 def _region_wall(deck: Deck, loc, words: list, unknown: list):
