@@ -19,6 +19,7 @@ from .stream import SEEDED
 from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
+from ..engines.lammps.deck import DEFAULT_DT
 
 __all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key"]
 
@@ -452,11 +453,22 @@ def contact_key(deck: Deck) -> str:
                        bool(deck.bonds), deck.special_lj)))
 
 
+def _coarsest_dt(stage: Deck, deck: Deck) -> None:
+    """A run that sees a stage's contacts at another time step: the stage states the largest of
+    its runs' steps, where a contact has the fewest steps and the engine's eps strays furthest."""
+    def step(d: Deck):
+        return d.dt if d.dt is not None else DEFAULT_DT.get(d.units)
+    now, before = step(deck), step(stage)
+    if now is not None and (before is None or now > before):
+        stage.dt = now
+
+
 def _stage(deck: Deck, loc, line: str) -> None:
     """A run: the contact settings it sees, kept where they differ from the previous run's."""
     key = contact_key(deck)
     if deck.stages and deck.stages[-1][2] == key:
         deck.stages[-1][0].append((loc, line))
+        _coarsest_dt(deck.stages[-1][1], deck)
         return
     if not deck.code:
         return                           # no pair style yet: no contact to audit in this run
