@@ -179,3 +179,25 @@ def test_a_sphere_too_small_for_its_volume_is_refused_in_one_line(tmp_path):
     """LAMMPS runs a diameter of 1e-300 (its volume underflows to 0): one line, no traceback."""
     status, res, err = audit(tmp_path, TWO + "fix 1 all nve/sphere\nset atom 2 diameter 1e-300\nrun 10\n")
     assert status == 2 and err.count("\n") == 1 and "volume is 0 in floating point" in err, err
+
+
+@pytest.mark.parametrize("fix", ["temp/berendsen 0.0 0.0 1e-4", "temp/rescale 1 0.0 0.0 0.0 1.0",
+                                 "temp/csvr 1e-9 1e-9 1e-4 4711"])
+def test_a_thermostat_rescaling_velocities_is_named_beside_the_contact(tmp_path, fix):
+    """A thermostat rescales the velocities in every step of a contact: LAMMPS gives eps 0.0130 with
+    fix temp/berendsen 0 0 1e-4 (r 5 mm, hertz/material 1e8 5e5 0.3 at 0.1 m/s) where the contact law
+    alone gives 0.9746."""
+    status, res, err = audit(tmp_path, TWO + f"fix 1 all nve/sphere\nfix th all {fix}\nrun 10\n")
+    assert status == 0, err
+    assert {b["style"] for b in pairs(res)[(1, 2)]["beside"]} == {fix.split()[0]}
+    assert "not understood" not in err and f"fix {fix.split()[0]} (th)" in err
+
+
+def test_a_thermostatted_integrator_is_named_beside_the_contact(tmp_path):
+    """fix nvt/sphere as the deck's integrator: LAMMPS (temp 1e-6 1e-6 1e-4, r 5 mm, hertz/material 1e8
+    5e5 0.3 at 0.1 m/s) never lets the spheres part within 5e6 steps of tc/500, where the contact law
+    gives 0.9746; the spheres still move (an integrator), so the pair is audited and the fix named."""
+    status, res, err = audit(tmp_path, TWO + "fix 1 all nvt/sphere temp 1e-6 1e-6 1e-4\nrun 10\n")
+    assert status == 0, err
+    assert {b["style"] for b in pairs(res)[(1, 2)]["beside"]} == {"nvt/sphere"}
+    assert "not understood" not in err and "never moves" not in err

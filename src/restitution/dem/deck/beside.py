@@ -29,7 +29,12 @@ BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
           "adapt": "coefficients or sizes changed as the run goes",
           "damping/cundall": "a global (Cundall) damping of every force on its atoms",
           "damp/viscous": "a drag force", "viscous/sphere": "a drag torque",
-          "spring/self": "a spring tethering each atom to where it was", "addforce": "a force added to each atom"}
+          "spring/self": "a spring tethering each atom to where it was", "addforce": "a force added to each atom",
+          "temp/berendsen": "a thermostat rescaling the velocities", "temp/rescale": "a thermostat rescaling the velocities",
+          "temp/csvr": "a thermostat rescaling the velocities", "temp/csld": "a thermostat replacing the velocities",
+          # integrators (meeting.INTEGRATORS) with a Nose-Hoover thermostat on the velocities they integrate
+          "nvt/sphere": "a Nose-Hoover thermostat on the velocities", "npt/sphere": "a Nose-Hoover thermostat on the velocities",
+          "nvt": "a Nose-Hoover thermostat on the velocities", "npt": "a Nose-Hoover thermostat on the velocities"}
 #: The relative accuracy of drag_eps (its integration runs at a thousandth of it): without drag it
 #: met the library's eps to 4.5e-8 at worst over 6 exponent pairs, both end rules, 3 dampings, 3 speeds
 RTOL = 1e-7
