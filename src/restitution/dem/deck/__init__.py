@@ -394,8 +394,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError(where, line or None, f"{engine} stops here: {message}")
         deck = read_executed(commands, atoms, radius, density, read_file)
         notes = _run_dependent_notes(commands, scratch, engine)
-    notes += [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
-             "part in a contact" for cmd, loc in skipped(commands, scratch).items()]
+    notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
+              + ("as the audit runs the engine on one process" if cmd == "processors" else
+                 "as it may run code or write files")
+              + "; it has no part in a contact" for cmd, loc in skipped(commands, scratch).items()]
     notes += _override_notes(atoms, radius or {}, density or {})
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
