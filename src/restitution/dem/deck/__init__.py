@@ -142,6 +142,13 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
         if (types := _wall_types(deck, types, loc, words, unknown)) is None:
             continue
         for mesh, contact_of, wall_type in surfaces:
+            shaking = [text for _, text, moved in deck.shaken.values() if moved == mesh]
+            if shaking:
+                unknown.append((*loc, " ".join(words), f"mesh {mesh} oscillates ({shaking[0]}) and "
+                                                       "accelerates under a sphere during a contact, so the eps "
+                                                       "the engine measures depends on where in the cycle a "
+                                                       "contact falls: its faces are not audited"))
+                continue
             for t in types:
                 if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
                     continue

@@ -46,6 +46,11 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      "ave/time", "ave/atom", "print", "move/mesh",
                      "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
                      "nve/noforce"}
+#: LIGGGHTS move/mesh motions that oscillate: the mesh accelerates under a sphere during a contact,
+#: and the eps the engine measures depends on where in the cycle the contact falls (LIGGGHTS: 0.543
+#: to 0.649 by phase on a plate with wiggle amplitude 0 0 1e-4 period 0.01, where the still plate
+#: gives e = 0.6); a steady linear or rotating motion does not shake it
+_SHAKING = frozenset({"wiggle", "riggle", "viblin", "vibrot"})
 #: ``dimension`` is among them: in 2d LAMMPS gives a sphere's mass still (density/disc, which sets a
 #: disc's, is the engine's and read back with the atoms), and its granular forces are the same (a
 #: head-on pair r 0.005 and 0.01, hertz/material viscoelastic, g 0.1, dt 2e-7: eps 0.86088418 in 2d
@@ -294,6 +299,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     elif cmd == "unfix" and len(words) >= 2:
         deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
         deck.movers.pop(words[1], None)
+        deck.shaken.pop(words[1], None)
     elif cmd == "fix_modify" and _accounting(words):
         pass
     elif cmd == "neigh_modify":
@@ -450,6 +456,7 @@ def contact_key(deck: Deck) -> str:
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
                        set(deck.shapes), deck.sizes, deck.others, deck.idle, [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
+                       {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
                        bool(deck.bonds), deck.special_lj)))
 
 
@@ -592,6 +599,9 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     # a fix of the same ID replaces the earlier one, as in the engines
     deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
     deck.movers.pop(words[1], None)
+    deck.shaken.pop(words[1], None)
+    if style == "move/mesh" and len(words) > 6 and words[4] == "mesh" and words[6] in _SHAKING:
+        deck.shaken[words[1]] = (loc, line, words[5])
     if style.startswith("rigid"):
         raise DeckError(where, line, f"fix {style} makes rigid bodies of spheres: a body's mass is not a sphere's, "
                                      "and the reader audits the head-on contact of two single spheres only")
