@@ -75,6 +75,7 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     """
     if words[1] != "granular":
         deck.gran = _gran_law(words[1], words[2:], deck.units, where, line)
+    deck.cutoff = number(words[2], where, line) if words[1] == "granular" and len(words) > 2 else None
 
 
 def _gran_law(style: str, params: list, units: str, where: str, line: str) -> dict:
@@ -142,6 +143,7 @@ class _Coeff:
     limit: bool
     others: list        # the tokens after the normal model's numbers (tangential, rolling, ...)
     models: tuple       # the sub-model names, which LAMMPS requires equal before it mixes two types
+    cutoff: float | None = None     # the line's cutoff keyword, None where it has none
 
     def setting(self, stiffness: dict | None = None) -> dict:
         """codes.lammps_contact's keywords; ``stiffness`` those of a mixed pair (see _mixed), else
@@ -161,7 +163,7 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
         what = "E, damping, nu" if normal == "hertz/material" else "k, damping"
         raise DeckError(where, text, f"normal model {normal} needs {nargs} numbers ({what})")
     args = [number(a, where, text) for a in words[4:4 + nargs]]
-    damping, limit, k = "viscoelastic", False, 4 + nargs
+    damping, limit, cutoff, k = "viscoelastic", False, None, 4 + nargs
     models = {"tangential": None, "rolling": None, "twisting": None, "heat": None}
     while k < len(words):
         key = words[k]
@@ -172,6 +174,10 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
         elif key == "limit_damping":
             limit = True
             k += 1
+        elif key == "cutoff" and nxt is not None:
+            # how far LAMMPS looks for the pair (read against its contact distance in pair_row)
+            cutoff = number(nxt, where, text)
+            k += 2
         elif key == "tangential" and nxt in _LAMMPS_TANGENTIAL:
             deck.ignored.append(f"tangential {nxt}")
             models["tangential"] = nxt
@@ -193,7 +199,9 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
             raise DeckError(where, text, f"keyword {key} is not mapped")
     if damping not in DAMPING_MODELS:
         raise DeckError(where, text, f"damping {damping} is not mapped")
-    return _Coeff(normal, args, damping, limit, words[4 + nargs:], (normal, damping, *models.values()))
+    others = [w for n, w in enumerate(words[4 + nargs:], 4 + nargs)
+              if w != "cutoff" and (n == 0 or words[n - 1] != "cutoff")]
+    return _Coeff(normal, args, damping, limit, others, (normal, damping, *models.values()), cutoff)
 
 
 def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
@@ -220,7 +228,8 @@ def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
         except ValueError:
             others = None       # a NULL against a number: no single line to write
             break
-    mixed = _Coeff(a.normal, args, a.damping, a.limit or b.limit, others, a.models)
+    cuts = [c for c in (a.cutoff, b.cutoff) if c is not None]
+    mixed = _Coeff(a.normal, args, a.damping, a.limit or b.limit, others, a.models, min(cuts) if cuts else None)
     return mixed, stiffness
 
 
@@ -273,6 +282,14 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
         c, stiffness = _mixed(ci, cj)
         mixed_from = f"mixed from {place(loc)} and {place(loc_j)}"
     pair = spheres(deck, i, j)
+    cutoff = c.cutoff if c.cutoff is not None else deck.cutoff
+    if cutoff is not None and cutoff < pair.R1 + pair.R2:
+        # LAMMPS lists a pair within the cutoff (and its skin) only: spheres that reach each
+        # other first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005: eps 619 measured)
+        raise DeckError(place(loc), " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
+                        f"cutoff {cutoff:g} is below the contact distance {pair.R1 + pair.R2:g} of types {i} {j} "
+                        "(the sum of their radii): LAMMPS finds the pair only within the cutoff and its skin, so "
+                        "the spheres meet at an overlap, not at first touch: not audited")
     contact = lammps_contact(pair, **c.setting(stiffness))
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
