@@ -220,3 +220,13 @@ def test_a_granular_cutoff_is_read_against_the_contact_distance(tmp_path, style,
         assert all(math.isfinite(p["eps"][0]) for p in res["pairs"])
     else:
         assert status == 2 and "is below the contact distance" in err and err.count("\n") == 1
+
+
+def test_an_electric_field_on_charged_spheres_is_named_beside_the_contact(tmp_path):
+    """fix efield pushes charged spheres during a contact: LAMMPS, charges +-1e-6 in 1e5 V/m (r 5 and
+    8 mm, hertz/material 1e8 5e5 0.3, 0.1 m/s), gives 0.934 where the law alone gives 0.962."""
+    text = (TWO.replace("atom_style sphere", "atom_style hybrid sphere charge")
+            .replace("density 2500\n", "density 2500 charge 1e-6\n", 1) + "fix 1 all nve/sphere\nfix ef all efield 1e5 0 0\nrun 10\n")
+    status, res, err = audit(tmp_path, text)
+    assert status == 0, err
+    assert {b["style"] for b in pairs(res)[(1, 2)]["beside"]} == {"efield"} and "not understood" not in err

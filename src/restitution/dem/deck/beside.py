@@ -30,6 +30,7 @@ BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
           "damping/cundall": "a global (Cundall) damping of every force on its atoms",
           "damp/viscous": "a drag force", "viscous/sphere": "a drag torque",
           "spring/self": "a spring tethering each atom to where it was", "addforce": "a force added to each atom",
+          "efield": "an electric force q E on each charged atom",
           "temp/berendsen": "a thermostat rescaling the velocities", "temp/rescale": "a thermostat rescaling the velocities",
           "temp/csvr": "a thermostat rescaling the velocities", "temp/csld": "a thermostat replacing the velocities",
           # integrators (meeting.INTEGRATORS) with a Nose-Hoover thermostat on the velocities they integrate
