@@ -230,3 +230,20 @@ def test_an_electric_field_on_charged_spheres_is_named_beside_the_contact(tmp_pa
     status, res, err = audit(tmp_path, text)
     assert status == 0, err
     assert {b["style"] for b in pairs(res)[(1, 2)]["beside"]} == {"efield"} and "not understood" not in err
+
+
+@pytest.mark.parametrize("group, named", [("type 1", {(1, 2)}), ("type 1 2", set()), ("type 2", {(1, 2)})])
+def test_gravity_on_some_types_is_named_beside_the_pairs_it_pulls_apart(tmp_path, group, named):
+    """The field test's deck a55: gravity 9.81 along the line of centres on type 1 only (r 5 and 8 mm,
+    densities 2500 and 7800, hertz/material 1e8 5e5 0.3, 0.1 m/s). LAMMPS at tc/1000 and tc/2000 gives
+    0.960309 at parting (a constant-acceleration integration of the same law: 0.960346) where the law
+    alone gives 0.961967; gravity on every atom of both types leaves the relative motion the contact's."""
+    text = (TWO.replace("diameter 0.02 density 2500", "diameter 0.016 density 7800")
+            .replace(CONTACT, "pair_coeff * * hertz/material 1e8 5e5 0.3 tangential linear_nohistory 0 0")
+            + f"fix 1 all nve/sphere\ngroup g {group}\nfix gr g gravity 9.81 vector 1 0 0\nrun 10\n")
+    status, res, err = audit(tmp_path, text)
+    assert status == 0, err
+    found = {k for k, p in pairs(res).items() if any(b["style"] == "gravity" for b in p["beside"])}
+    row = pairs(res)[(1, 2)]
+    assert found == named and row["eps"][row["speeds"].index(0.1)] == pytest.approx(0.961967, abs=1e-6)
+    assert ("fix gravity (gr)" in err) == bool(named) and "not understood" not in err

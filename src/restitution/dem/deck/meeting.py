@@ -17,7 +17,8 @@ from dataclasses import replace
 
 from ..dialect.state import Deck, place
 
-__all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact"]
+__all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "group_types", "excluded", "motion",
+           "held_contact"]
 
 #: Fix styles that move the atoms of their group by integrating the forces on them
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
@@ -67,9 +68,26 @@ def special_bonds(deck: Deck, words: list, where: str, line: str) -> None:
     deck.special_lj = lj
 
 
-def _group_types(deck: Deck, group: str):
-    """The types a group holds (a set), or None where the audit cannot know them: its static
-    members by type, and those an inserting fix of a named type pours into it."""
+def group_types(deck: Deck, group: str):
+    """The types a group holds, or None where the audit cannot know them: its static members by
+    type, and those an inserting fix of a named type pours into it.
+
+    Parameters
+    ----------
+    deck : Deck
+    group : str
+        A group's name (``all``: every type).
+
+    Returns
+    -------
+    set of int or None
+
+    Examples
+    --------
+    >>> d = Deck(ntypes=3, groups={"t1": {1}, "moving": None})
+    >>> group_types(d, "all"), group_types(d, "t1"), group_types(d, "moving")
+    ({1, 2, 3}, {1}, None)
+    """
     if group == "all":
         return set(range(1, deck.ntypes + 1))
     static = deck.groups.get(group)
@@ -99,7 +117,7 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
             if {a, b} == {i, j}:
                 return (*loc, line, f"types {i} {j}: excluded by neigh_modify: no contact between them, not audited")
         elif style == "group" and len(args) == 2:
-            ga, gb = (_group_types(deck, g) for g in args)
+            ga, gb = (group_types(deck, g) for g in args)
             if ga is None or gb is None:
                 return (*loc, line, f"types {i} {j}: neigh_modify excludes pairs of groups whose atoms the audit "
                                     "cannot type: whether they meet is not known, not audited")
@@ -107,7 +125,7 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
                 return (*loc, line, f"types {i} {j}: excluded by neigh_modify (group {args[0]} with group "
                                     f"{args[1]}): no contact between them, not audited")
         elif style.startswith("molecule") and args:
-            held = _group_types(deck, args[0])
+            held = group_types(deck, args[0])
             if held is None or (i in held and j in held):
                 return (*loc, line, f"types {i} {j}: neigh_modify excludes pairs by molecule, which the audit does "
                                     "not read: not audited")
@@ -134,7 +152,7 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
         return "free", ""
     integrated, moved = [], []
     for fix, (loc, line, group, style) in deck.movers.items():
-        held = _group_types(deck, group)
+        held = group_types(deck, group)
         if held is None:
             # a group by region that an insertion fills, the usual LIGGGHTS deck: audited as free
             # spheres, and said

@@ -609,7 +609,9 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.movers[words[1]] = (loc, line, words[2], style)
     if style.startswith("bond/create"):
         deck.bonds = (loc, line)
-    if style in BESIDE:
+    if style in BESIDE and not (style == "gravity" and words[2] == "all"):
+        # gravity on every atom accelerates both bodies of a pair alike: their relative motion is the
+        # contact's (and a wall's sphere is audited without it, as before)
         deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck.beside)
         return
     if style in _INSERTING_FIXES:
