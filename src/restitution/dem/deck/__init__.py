@@ -381,7 +381,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
         if done.error:
-            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch)
+            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
                 where, line = place(commands[-1].loc), commands[-1].text
             if _marker_stopped(done.echo, root):
