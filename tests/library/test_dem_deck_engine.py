@@ -674,3 +674,19 @@ def test_an_overlaid_sub_style_that_carries_no_force_leaves_the_pair_audited(tmp
         assert status == 0, err
         assert (1, 2) not in [tuple(p["types"]) for p in json.loads(out)["pairs"]]
         assert "adapt" in err
+
+
+def test_an_engine_killed_without_an_error_says_so_not_its_last_cut_line(tmp_path, monkeypatch):
+    """LAMMPS ended by a signal mid-echo (its screen cut mid-word, no ERROR): the refusal names how
+    it ended, not the echo's last fragment (it had said "LAMMPS stops here: va")."""
+    from restitution.dem.engines.lammps import deck_run
+    real = deck_run.run_child
+
+    def killed(*args, **kwargs):
+        done = real(*args, **kwargs)
+        done.echo, done.atoms, done.at_end = done.echo[:done.echo.index("pair_coeff") + 2], "", ""
+        done.status, done.error = -9, ""
+        return done
+    monkeypatch.setattr(deck_run, "run_child", killed)
+    err = refused(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 1\n")
+    assert "LAMMPS stops here: it ended without an error message (killed by signal 9)" in err, err

@@ -198,3 +198,13 @@ def test_every_answered_tutorial_agrees_with_liggghts(name, radius):
     t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(1.0)
     eps = liggghts_run.liggghts_eps_runs(pair, [("\n".join(lines), 1.0, t_c / 2000 / k, 1.5 * t_c) for k in (1, 2, 4)])
     assert abs(richardson(*eps, p["gamma"]) - p["eps"][0]) <= 1e-6, eps
+
+
+@needs_liggghts
+def test_a_processors_layout_for_several_processes_is_not_a_refusal(tmp_path):
+    """`processors 6 1 1` (a public deck run under mpirun -np 6): the audit's serial engine stops on
+    it ("Specified processors != physical processors"); the layout has no part in a contact."""
+    text = HEAD.replace("units si\n", "units si\nprocessors 6 1 1\n").format(e=0.5) + PLAIN + TAIL
+    got, err = pairs(tmp_path, text)
+    assert got[(1, 1)]["eps"] == pytest.approx([0.5] * 5, abs=1e-12)
+    assert "processors (line 7 and any like it): not executed" in err

@@ -179,3 +179,71 @@ def test_a_sphere_too_small_for_its_volume_is_refused_in_one_line(tmp_path):
     """LAMMPS runs a diameter of 1e-300 (its volume underflows to 0): one line, no traceback."""
     status, res, err = audit(tmp_path, TWO + "fix 1 all nve/sphere\nset atom 2 diameter 1e-300\nrun 10\n")
     assert status == 2 and err.count("\n") == 1 and "volume is 0 in floating point" in err, err
+
+
+@pytest.mark.parametrize("fix", ["temp/berendsen 0.0 0.0 1e-4", "temp/rescale 1 0.0 0.0 0.0 1.0",
+                                 "temp/csvr 1e-9 1e-9 1e-4 4711"])
+def test_a_thermostat_rescaling_velocities_is_named_beside_the_contact(tmp_path, fix):
+    """A thermostat rescales the velocities in every step of a contact: LAMMPS gives eps 0.0130 with
+    fix temp/berendsen 0 0 1e-4 (r 5 mm, hertz/material 1e8 5e5 0.3 at 0.1 m/s) where the contact law
+    alone gives 0.9746."""
+    status, res, err = audit(tmp_path, TWO + f"fix 1 all nve/sphere\nfix th all {fix}\nrun 10\n")
+    assert status == 0, err
+    assert {b["style"] for b in pairs(res)[(1, 2)]["beside"]} == {fix.split()[0]}
+    assert "not understood" not in err and f"fix {fix.split()[0]} (th)" in err
+
+
+def test_a_thermostatted_integrator_is_named_beside_the_contact(tmp_path):
+    """fix nvt/sphere as the deck's integrator: LAMMPS (temp 1e-6 1e-6 1e-4, r 5 mm, hertz/material 1e8
+    5e5 0.3 at 0.1 m/s) never lets the spheres part within 5e6 steps of tc/500, where the contact law
+    gives 0.9746; the spheres still move (an integrator), so the pair is audited and the fix named."""
+    status, res, err = audit(tmp_path, TWO + "fix 1 all nvt/sphere temp 1e-6 1e-6 1e-4\nrun 10\n")
+    assert status == 0, err
+    assert {b["style"] for b in pairs(res)[(1, 2)]["beside"]} == {"nvt/sphere"}
+    assert "not understood" not in err and "never moves" not in err
+
+
+@pytest.mark.parametrize("style, coeff, answered", [
+    ("pair_style granular 0.05", " cutoff 0.03", True),    # both above every contact distance (0.01 to 0.02)
+    ("pair_style granular 0.004", "", False),              # LAMMPS: eps 619 for the r 0.005 pair
+    ("pair_style granular", " cutoff 0.015", False)])      # below 0.02, the two r 0.01 spheres' distance
+def test_a_granular_cutoff_is_read_against_the_contact_distance(tmp_path, style, coeff, answered):
+    """LAMMPS lists a pair within its cutoff (and the neighbor skin) only. Measured: `pair_style granular
+    0.004` on spheres r 0.005 (contact distance 0.01, skin 0.001) gives eps 618.87 at 0.1 m/s, where the
+    same deck without the cutoff gives 0.974618 (the law's): spheres listed late meet deep in overlap."""
+    # a box of 0.4 m: LAMMPS bins it by the cutoff (2 m at 0.005 is 6e7 bins)
+    text = (TWO.replace("pair_style granular\n", style + "\n").replace("limit_damping\n", "limit_damping" + coeff + "\n")
+            .replace("block -1 1 -1 1 -1 1", "block -0.2 0.2 -0.2 0.2 -0.2 0.2"))
+    status, res, err = audit(tmp_path, text + "fix 1 all nve/sphere\nrun 10\n")
+    if answered:
+        assert status == 0, err
+        assert all(math.isfinite(p["eps"][0]) for p in res["pairs"])
+    else:
+        assert status == 2 and "is below the contact distance" in err and err.count("\n") == 1
+
+
+def test_an_electric_field_on_charged_spheres_is_named_beside_the_contact(tmp_path):
+    """fix efield pushes charged spheres during a contact: LAMMPS, charges +-1e-6 in 1e5 V/m (r 5 and
+    8 mm, hertz/material 1e8 5e5 0.3, 0.1 m/s), gives 0.934 where the law alone gives 0.962."""
+    text = (TWO.replace("atom_style sphere", "atom_style hybrid sphere charge")
+            .replace("density 2500\n", "density 2500 charge 1e-6\n", 1) + "fix 1 all nve/sphere\nfix ef all efield 1e5 0 0\nrun 10\n")
+    status, res, err = audit(tmp_path, text)
+    assert status == 0, err
+    assert {b["style"] for b in pairs(res)[(1, 2)]["beside"]} == {"efield"} and "not understood" not in err
+
+
+@pytest.mark.parametrize("group, named", [("type 1", {(1, 2)}), ("type 1 2", set()), ("type 2", {(1, 2)})])
+def test_gravity_on_some_types_is_named_beside_the_pairs_it_pulls_apart(tmp_path, group, named):
+    """The field test's deck a55: gravity 9.81 along the line of centres on type 1 only (r 5 and 8 mm,
+    densities 2500 and 7800, hertz/material 1e8 5e5 0.3, 0.1 m/s). LAMMPS at tc/1000 and tc/2000 gives
+    0.960309 at parting (a constant-acceleration integration of the same law: 0.960346) where the law
+    alone gives 0.961967; gravity on every atom of both types leaves the relative motion the contact's."""
+    text = (TWO.replace("diameter 0.02 density 2500", "diameter 0.016 density 7800")
+            .replace(CONTACT, "pair_coeff * * hertz/material 1e8 5e5 0.3 tangential linear_nohistory 0 0")
+            + f"fix 1 all nve/sphere\ngroup g {group}\nfix gr g gravity 9.81 vector 1 0 0\nrun 10\n")
+    status, res, err = audit(tmp_path, text)
+    assert status == 0, err
+    found = {k for k, p in pairs(res).items() if any(b["style"] == "gravity" for b in p["beside"])}
+    row = pairs(res)[(1, 2)]
+    assert found == named and row["eps"][row["speeds"].index(0.1)] == pytest.approx(0.961967, abs=1e-6)
+    assert ("fix gravity (gr)" in err) == bool(named) and "not understood" not in err

@@ -122,3 +122,17 @@ def test_the_eps_at_a_coarse_time_step_is_stated_over_where_the_contact_starts(t
     assert lo - 1e-4 <= min(engine) and max(engine) <= hi + 1e-4, (lo, hi, engine)
     assert min(engine) - lo < 1e-3
     assert hi - lo > 0.03 and abs(engine[1] - p["eps_at_dt"][k]) > 0.03
+
+
+@pytest.mark.parametrize("first, then", [(1e-6, 2e-4), (2e-4, 1e-6)])
+def test_runs_that_change_only_the_time_step_state_the_largest(tmp_path, first, then):
+    """Two runs with the same contacts at two time steps are one stage: its statement is at the
+    coarser step (there a contact has the fewest steps), whichever run comes first."""
+    path = tmp_path / "in.deck"
+    path.write_text(HEAD + f"{CASES[0][0]}\ntimestep {first!r}\nrun 1\ntimestep {then!r}\nrun 1\n")
+    status, out, err = run_cli(["deck", str(path), "--g", "0.1", "--json"])
+    assert status == 0, err
+    res = json.loads(out)
+    (p,) = res["pairs"]
+    assert len(res["stages"]) == 1 and p["dt"] == 2e-4
+    assert "at the deck's time step 0.0002" in err

@@ -660,3 +660,35 @@ def test_lammps_gives_the_audited_eps_on_each_region_surface(tmp_path, case):
         engine = richardson(*runs, row["gamma"])
         print(f"{case} g {g:g}: audit {audited:.10f} LAMMPS {engine:.10f} ({runs[-1]:.10f} at t_c/8000)")
         assert abs(engine - audited) <= 1e-8, (g, runs, audited)
+@pytest.mark.parametrize("motion, audited", [("wiggle z 1e-6 1e-3", False), ("wiggle z 0.0 1e-3", True),
+                                             ("shear x 0.5", True)], ids=["wiggle", "still wiggle", "shear"])
+def test_a_wiggling_wall_is_named_not_audited(tmp_path, motion, audited):
+    """A wall that oscillates along an axis accelerates under the sphere during a contact: LAMMPS,
+    sphere r 5 mm (2500 kg/m^3) met at 0.1 m/s by hertz/material 1e8 5e5 0.3 at dt 2e-6, wiggle z 1e-6
+    1e-3, measures eps 0.849 to 1.061 by the wall's phase at contact, 0.956306 with the wall still
+    (the law's eps, 0.956303). A steady shear along the wall leaves the normal contact alone."""
+    wall = f"fix w all wall/gran granular hooke 1e4 5.0 damping mass_velocity {T} zplane 0.0 NULL {motion}"
+    text = LAMMPS_DECK.replace(DASHPOT_WALL, wall)
+    res, err = audit(tmp_path, text, 0.1)
+    assert any(w["wall"] == "w" for w in res["walls"]) is audited
+    named = [row for row in res["unknown_lines"] if row["text"].split()[1] == "w"]
+    assert bool(named) is not audited
+    if not audited:
+        assert "oscillates" in named[0]["why"] and "not audited" in named[0]["why"]
+        assert "fix w all" in err
+
+
+@pytest.mark.parametrize("motion, audited", [("wiggle amplitude 0 0 1e-4 period 0.01", False),
+                                             ("linear 0.1 0 0", True)], ids=["wiggle", "linear"])
+def test_a_vibrating_liggghts_mesh_is_named_not_audited(tmp_path, motion, audited):
+    """LIGGGHTS, a sphere r 2 mm (2500 kg/m^3, E 5e6, e 0.6 with the plate) met at 0.1 m/s by a plate
+    moved by move/mesh wiggle amplitude 0 0 1e-4 period 0.01 (dt 1e-6): eps 0.649, 0.543, 0.573, 0.625
+    over four phases of the plate at contact; 0.599988 with the plate still. A steady linear motion
+    leaves the contact as it is."""
+    text = liggghts_deck("") + f"fix shake all move/mesh mesh mesh1 {motion}\n"
+    res, err = audit(tmp_path, text, 0.1)
+    assert any(w["mesh"] == "mesh1" for w in res["walls"]) is audited
+    named = [row for row in res["unknown_lines"] if "oscillates" in row["why"]]
+    assert bool(named) is not audited
+    if not audited:
+        assert "mesh mesh1 oscillates (fix shake all move/mesh" in named[0]["why"]

@@ -141,6 +141,13 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
         if (types := _wall_types(deck, types, loc, words, unknown)) is None:
             continue
         for mesh, contact_of, wall_type in surfaces:
+            shaking = [text for _, text, moved in deck.shaken.values() if moved == mesh]
+            if shaking:
+                unknown.append((*loc, " ".join(words), f"mesh {mesh} oscillates ({shaking[0]}) and "
+                                                       "accelerates under a sphere during a contact, so the eps "
+                                                       "the engine measures depends on where in the cycle a "
+                                                       "contact falls: its faces are not audited"))
+                continue
             for t in types:
                 if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)
                     continue
@@ -378,7 +385,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
         if done.error:
-            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch)
+            where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
                 where, line = place(commands[-1].loc), commands[-1].text
             if _marker_stopped(done.echo, root):
@@ -398,8 +405,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError(where, line or None, f"{engine} stops here: {message}")
         deck = read_executed(commands, atoms, radius, density, read_file)
         notes = _run_dependent_notes(commands, scratch, engine)
-    notes += [f"{cmd} ({place(loc)} and any like it): not executed, as it may run code or write files; it has no "
-             "part in a contact" for cmd, loc in skipped(commands, scratch).items()]
+    notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
+              + ("as the audit runs the engine on one process" if cmd == "processors" else
+                 "as it may run code or write files")
+              + "; it has no part in a contact" for cmd, loc in skipped(commands, scratch).items()]
     notes += _override_notes(atoms, radius or {}, density or {})
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []

@@ -30,7 +30,14 @@ BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
           "adapt": "coefficients or sizes changed as the run goes",
           "damping/cundall": "a global (Cundall) damping of every force on its atoms",
           "damp/viscous": "a drag force", "viscous/sphere": "a drag torque",
-          "spring/self": "a spring tethering each atom to where it was", "addforce": "a force added to each atom"}
+          "spring/self": "a spring tethering each atom to where it was", "addforce": "a force added to each atom",
+          "efield": "an electric force q E on each charged atom",
+          "gravity": "a gravity on the atoms of its group only",
+          "temp/berendsen": "a thermostat rescaling the velocities", "temp/rescale": "a thermostat rescaling the velocities",
+          "temp/csvr": "a thermostat rescaling the velocities", "temp/csld": "a thermostat replacing the velocities",
+          # integrators (meeting.INTEGRATORS) with a Nose-Hoover thermostat on the velocities they integrate
+          "nvt/sphere": "a Nose-Hoover thermostat on the velocities", "npt/sphere": "a Nose-Hoover thermostat on the velocities",
+          "nvt": "a Nose-Hoover thermostat on the velocities", "npt": "a Nose-Hoover thermostat on the velocities"}
 #: The relative accuracy of drag_eps (its integration runs at a thousandth of it): without drag it
 #: met the library's eps to 4.5e-8 at worst over 6 exponent pairs, both end rules, 3 dampings, 3 speeds
 RTOL = 1e-7
@@ -165,6 +172,11 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     out = []
     for loc, words in getattr(deck, "beside", []):
         style, group = words[3], words[2]
+        if style == "gravity":
+            entry = _gravity(deck, loc, words, types)
+            if entry is not None:
+                out.append(entry)
+            continue
         held = group_types(deck, group)
         acted = [t in held for t in types] if held is not None else None
         if acted is not None and not any(acted):
@@ -177,6 +189,30 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
             _size(entry, deck, row, contact, pair, types, words, acted, frozen_contact)
         out.append(entry)
     return out
+
+
+def _gravity(deck, loc, words: list, types: tuple) -> dict | None:
+    """A gravity on some atoms only (``fix ID GROUP gravity``, GROUP not all) beside a pair whose two
+    bodies it accelerates differently, or None where it cannot change the pair's relative motion:
+    both bodies or neither in its group, or a sphere on a wall (audited without gravity, as where
+    gravity acts on every atom)."""
+    if len(types) == 1:
+        return None
+    held = group_types(deck, words[2])
+    entry = {"fix": words[1], "style": "gravity", "file": loc[0], "line": loc[1], "what": BESIDE["gravity"],
+             "eps_engine": None, "why": ""}
+    if held is None:
+        entry["why"] = (f"group {words[2]} has atoms the audit cannot type: it may accelerate one sphere and not "
+                        "the other during a contact; its size is not computed")
+        return entry
+    acted = [t in held for t in types]
+    if acted[0] == acted[1]:
+        return None                  # both bodies fall alike, or neither falls: the relative motion is the contact's
+    pushed = types[acted.index(True)]
+    entry["why"] = (f"it accelerates the type {pushed} sphere and not the other, so it pushes the spheres together "
+                    "or apart during a contact; its size (which depends on the direction of the field against the "
+                    "line of centres) is not computed")
+    return entry
 
 
 def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tuple, words: list,

@@ -19,6 +19,7 @@ from .stream import SEEDED
 from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
+from ..engines.lammps.deck import DEFAULT_DT
 
 __all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key"]
 
@@ -45,6 +46,11 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      "ave/time", "ave/atom", "print", "move/mesh",
                      "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
                      "nve/noforce"}
+#: LIGGGHTS move/mesh motions that oscillate: the mesh accelerates under a sphere during a contact,
+#: and the eps the engine measures depends on where in the cycle the contact falls (LIGGGHTS: 0.543
+#: to 0.649 by phase on a plate with wiggle amplitude 0 0 1e-4 period 0.01, where the still plate
+#: gives e = 0.6); a steady linear or rotating motion does not shake it
+_SHAKING = frozenset({"wiggle", "riggle", "viblin", "vibrot"})
 #: ``dimension`` is among them: in 2d LAMMPS gives a sphere's mass still (density/disc, which sets a
 #: disc's, is the engine's and read back with the atoms), and its granular forces are the same (a
 #: head-on pair r 0.005 and 0.01, hertz/material viscoelastic, g 0.1, dt 2e-7: eps 0.86088418 in 2d
@@ -298,6 +304,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     elif cmd == "unfix" and len(words) >= 2:
         deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
         deck.movers.pop(words[1], None)
+        deck.shaken.pop(words[1], None)
     elif cmd == "fix_modify" and _accounting(words):
         pass
     elif cmd == "neigh_modify":
@@ -462,7 +469,18 @@ def contact_key(deck: Deck) -> str:
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
                        set(deck.shapes), deck.sizes, deck.others, deck.idle, [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
+                       {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
                        bool(deck.bonds), deck.special_lj)))
+
+
+def _coarsest_dt(stage: Deck, deck: Deck) -> None:
+    """A run that sees a stage's contacts at another time step: the stage states the largest of
+    its runs' steps, where a contact has the fewest steps and the engine's eps strays furthest."""
+    def step(d: Deck):
+        return d.dt if d.dt is not None else DEFAULT_DT.get(d.units)
+    now, before = step(deck), step(stage)
+    if now is not None and (before is None or now > before):
+        stage.dt = now
 
 
 def _stage(deck: Deck, loc, line: str) -> None:
@@ -470,6 +488,7 @@ def _stage(deck: Deck, loc, line: str) -> None:
     key = contact_key(deck)
     if deck.stages and deck.stages[-1][2] == key:
         deck.stages[-1][0].append((loc, line))
+        _coarsest_dt(deck.stages[-1][1], deck)
         return
     if not deck.code:
         return                           # no pair style yet: no contact to audit in this run
@@ -593,6 +612,9 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     # a fix of the same ID replaces the earlier one, as in the engines
     deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
     deck.movers.pop(words[1], None)
+    deck.shaken.pop(words[1], None)
+    if style == "move/mesh" and len(words) > 6 and words[4] == "mesh" and words[6] in _SHAKING:
+        deck.shaken[words[1]] = (loc, line, words[5])
     if style.startswith("rigid"):
         raise DeckError(where, line, f"fix {style} makes rigid bodies of spheres: a body's mass is not a sphere's, "
                                      "and the reader audits the head-on contact of two single spheres only")
@@ -600,7 +622,9 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.movers[words[1]] = (loc, line, words[2], style)
     if style.startswith("bond/create"):
         deck.bonds = (loc, line)
-    if style in BESIDE:
+    if style in BESIDE and not (style == "gravity" and words[2] == "all"):
+        # gravity on every atom accelerates both bodies of a pair alike: their relative motion is the
+        # contact's (and a wall's sphere is audited without it, as before)
         deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck.beside)
         return
     if style in _INSERTING_FIXES:

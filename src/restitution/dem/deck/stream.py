@@ -377,14 +377,18 @@ def snapshots(atoms: str) -> list[dict]:
     return out
 
 
-def engine_error(text: str, scratch: Scratch) -> tuple[str, str, str]:
+def engine_error(text: str, scratch: Scratch, status: int | None = None) -> tuple[str, str, str]:
     """(where, line, message) of an engine's ERROR: the deck line it names (its last input line).
+    Where the engine wrote no ERROR (killed, or crashed), the message says so with its exit status:
+    the last line of its screen may be cut off mid-word.
 
     Parameters
     ----------
     text : str
         The engine's error output.
     scratch : Scratch
+    status : int, optional
+        Its exit status (negative: the signal that ended it).
 
     Returns
     -------
@@ -396,9 +400,13 @@ def engine_error(text: str, scratch: Scratch) -> tuple[str, str, str]:
     >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), lines={"run 1": (None, 7)})
     >>> engine_error("ERROR: All pair coeffs are not set (src/pair.cpp:1)\\nLast input line: run 1", s)
     ('line 7', 'run 1', 'All pair coeffs are not set')
+    >>> engine_error("Last input line: run 1\\n  va", s, -9)[2]
+    'it ended without an error message (killed by signal 9)'
     """
     m = re.search(r"ERROR(?: on proc \d+)?: (.*?)(?: \((?:\./)?src/[^)]*\))?$", text, re.M)
-    message = m.group(1).strip() if m else text.strip().splitlines()[-1] if text.strip() else "it stopped"
+    ended = (f" (killed by signal {-status})" if status is not None and status < 0 else
+             f" (exit status {status})" if status else "")
+    message = m.group(1).strip() if m else f"it ended without an error message{ended}"
     last = re.search(r"Last (?:input line|command): (.*)$", text, re.M)
     line = normalised(last.group(1)) if last else ""
     tag = re.search(rf"{re.escape(scratch.tag)}(\d+)\s*$", last.group(1)) if last else None

@@ -84,7 +84,9 @@ class Deck:
     groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
     walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
     meshes: dict = field(default_factory=dict)    # LIGGGHTS fix mesh/surface ID -> its atom type, or None
+    shaken: dict = field(default_factory=dict)    # LIGGGHTS fix move/mesh ID -> (loc, text, mesh ID) of an oscillation
     gran: dict = field(default_factory=dict)      # LAMMPS' older gran/* pair style: style, k_n, gamma_n, limit
+    cutoff: float | None = None                   # LAMMPS pair_style granular's global cutoff, None where none
     # Groups are static: a group holds the atoms present when it is defined, and those a later
     # command inserts into it by name (LAMMPS and LIGGGHTS alike; measured in LAMMPS: a wall on a
     # group by type defined before create_atoms lets the sphere through)

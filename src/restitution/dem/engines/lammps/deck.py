@@ -75,6 +75,7 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     """
     if words[1] != "granular":
         deck.gran = _gran_law(words[1], words[2:], deck.units, where, line)
+    deck.cutoff = number(words[2], where, line) if words[1] == "granular" and len(words) > 2 else None
 
 
 def _gran_law(style: str, params: list, units: str, where: str, line: str) -> dict:
@@ -142,6 +143,7 @@ class _Coeff:
     limit: bool
     others: list        # the tokens after the normal model's numbers (tangential, rolling, ...)
     models: tuple       # the sub-model names, which LAMMPS requires equal before it mixes two types
+    cutoff: float | None = None     # the line's cutoff keyword, None where it has none
 
     def setting(self, stiffness: dict | None = None) -> dict:
         """codes.lammps_contact's keywords; ``stiffness`` those of a mixed pair (see _mixed), else
@@ -161,7 +163,7 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
         what = "E, damping, nu" if normal == "hertz/material" else "k, damping"
         raise DeckError(where, text, f"normal model {normal} needs {nargs} numbers ({what})")
     args = [number(a, where, text) for a in words[4:4 + nargs]]
-    damping, limit, k = "viscoelastic", False, 4 + nargs
+    damping, limit, cutoff, k = "viscoelastic", False, None, 4 + nargs
     models = {"tangential": None, "rolling": None, "twisting": None, "heat": None}
     while k < len(words):
         key = words[k]
@@ -172,6 +174,10 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
         elif key == "limit_damping":
             limit = True
             k += 1
+        elif key == "cutoff" and nxt is not None:
+            # how far LAMMPS looks for the pair (read against its contact distance in pair_row)
+            cutoff = number(nxt, where, text)
+            k += 2
         elif key == "tangential" and nxt in _LAMMPS_TANGENTIAL:
             deck.ignored.append(f"tangential {nxt}")
             models["tangential"] = nxt
@@ -193,7 +199,9 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
             raise DeckError(where, text, f"keyword {key} is not mapped")
     if damping not in DAMPING_MODELS:
         raise DeckError(where, text, f"damping {damping} is not mapped")
-    return _Coeff(normal, args, damping, limit, words[4 + nargs:], (normal, damping, *models.values()))
+    others = [w for n, w in enumerate(words[4 + nargs:], 4 + nargs)
+              if w != "cutoff" and (n == 0 or words[n - 1] != "cutoff")]
+    return _Coeff(normal, args, damping, limit, others, (normal, damping, *models.values()), cutoff)
 
 
 def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
@@ -220,7 +228,8 @@ def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
         except ValueError:
             others = None       # a NULL against a number: no single line to write
             break
-    mixed = _Coeff(a.normal, args, a.damping, a.limit or b.limit, others, a.models)
+    cuts = [c for c in (a.cutoff, b.cutoff) if c is not None]
+    mixed = _Coeff(a.normal, args, a.damping, a.limit or b.limit, others, a.models, min(cuts) if cuts else None)
     return mixed, stiffness
 
 
@@ -273,6 +282,14 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
         c, stiffness = _mixed(ci, cj)
         mixed_from = f"mixed from {place(loc)} and {place(loc_j)}"
     pair = spheres(deck, i, j)
+    cutoff = c.cutoff if c.cutoff is not None else deck.cutoff
+    if cutoff is not None and cutoff < pair.R1 + pair.R2:
+        # LAMMPS lists a pair within the cutoff (and its skin) only: spheres that reach each
+        # other first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005: eps 619 measured)
+        raise DeckError(place(loc), " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
+                        f"cutoff {cutoff:g} is below the contact distance {pair.R1 + pair.R2:g} of types {i} {j} "
+                        "(the sum of their radii): LAMMPS finds the pair only within the cutoff and its skin, so "
+                        "the spheres meet at an overlap, not at first touch: not audited")
     contact = lammps_contact(pair, **c.setting(stiffness))
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
@@ -291,7 +308,8 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
 
 # ---------------------------------------------------------------------------- walls
 #: LAMMPS fix wall/gran keywords after the wall style, with their number of values: they move or
-#: heat the wall or write output, none changes a head-on contact's eps at a given impact speed
+#: heat the wall or write output; of them only a wiggle (an oscillating wall) changes a head-on
+#: contact's eps at a given impact speed
 _LAMMPS_WALL_KEYWORDS = {"wiggle": 3, "shear": 2, "contacts": 0, "temperature": 1}
 _WALL_STYLES = FLAT_WALLS + ("zcylinder", "region")
 #: fix wall/gran's older models, each the law of the pair style gran/<model>
@@ -303,9 +321,10 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     function of the wall Pair and the sphere's type giving (contact, typed e, model, exact line or
     None), None)], or None with the reason in ``unknown``. The wall's model is that of a pair_coeff
     line with the wall as the second body (the older hooke, hooke/history and hertz/history: their
-    pair style's law, Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]), and LAMMPS' keywords after
-    the wall style (wiggle, shear, contacts, temperature) move it, heat it or write output: none
-    changes the contact. A zcylinder is met from inside (LAMMPS' zcylinder confines: a sphere
+    pair style's law, Kn Kt gamma_n gamma_t xmu dampflag [limit_damping]). Of LAMMPS' keywords after
+    the wall style, shear moves it along itself, contacts and temperature heat it or write output:
+    none changes the contact; a wiggle of nonzero amplitude accelerates it under the sphere, and
+    such a wall is named, not audited. A zcylinder is met from inside (LAMMPS' zcylinder confines: a sphere
     outside it overlaps it at every distance), where LAMMPS gives the wall the radius -2 R in the
     effective radius (:func:`concave_cylinder`). Its arguments are
     :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s.
@@ -342,6 +361,16 @@ def wall(deck: Deck, loc, words: list, unknown: list):
             unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
             return None
     while n < len(words) and words[n] in _LAMMPS_WALL_KEYWORDS:
+        if words[n] == "wiggle" and not _still(words[n + 2:n + 3], place(loc), text):
+            # the wall accelerates under the sphere during a contact: the eps the engine measures
+            # depends on where in the cycle the contact falls (LAMMPS: 0.849 to 1.061 over the
+            # phases where the still wall gives 0.956), not on the law alone
+            amp, period = words[n + 2:n + 4]
+            unknown.append((*loc, text, f"wiggle {' '.join(words[n + 1:n + 4])}: the wall oscillates (amplitude "
+                                        f"{amp}, period {period}) and accelerates under the sphere during a "
+                                        "contact, so the eps the engine measures depends on where in the cycle "
+                                        "a contact falls: the wall's contacts are not audited"))
+            return None
         n += 1 + _LAMMPS_WALL_KEYWORDS[words[n]]
     if n < len(words):
         unknown.append((*loc, text, f"keyword {words[n]} is not mapped: the wall's contacts are not audited"))
@@ -368,6 +397,15 @@ def wall(deck: Deck, loc, words: list, unknown: list):
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact
     return [(None, contact_of, None)]
+
+
+def _still(amplitude: list, where: str, text: str) -> bool:
+    """Whether a wiggle's amplitude (a one-word list; empty where the line stops short, which
+    LAMMPS refuses) leaves the wall where it is."""
+    try:
+        return bool(amplitude) and number(amplitude[0], where, text) == 0.0
+    except DeckError:
+        return False
 
 
 def _region_wall(deck: Deck, loc, words: list, unknown: list):
