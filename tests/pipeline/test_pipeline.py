@@ -590,13 +590,17 @@ def test_the_typed_e_table_is_the_librarys_with_its_engine(built):
         for col, lib_row in zip(columns, computed):
             assert r[col] == pytest.approx(lib_row[r["code"]], rel=1e-12), (r["code"], col)
     tex = (built / "results/dem/typed_e.tex").read_text()
-    # each row names its engine (LAMMPS by its release date, as its own output does, the others by
-    # their version label) on the line that prints its eps
+    # each row names its engine on the line that prints its eps, and no keyword may break inside
     rows = tex.splitlines()
     assert all(any(line.startswith(TYPED_E_ENGINES[r["code"]].split()[0]) and f"& {r[columns[0]]:.4f} &" in line
                    for line in rows) for _, r in table.iterrows())
+    assert r"\allowbreak" not in tex
     # rule typed_e writes the table's macros, rule typed_e_runs those of the engines' own runs
     values = (built / "results/dem/typed_e_values.tex").read_text() + (
         built / "results/dem/typed_e_runs/values.tex").read_text()
+    # the caption names each engine's release once (LAMMPS by its release date, as its own output does,
+    # the others by their version label)
+    releases = re.search(r"\\newcommand\{\\TypedEReleases\}\{(.*)\}", values).group(1)
+    assert all(v.split()[-1] in releases for v in set(TYPED_E_ENGINES.values()) if not v.startswith("LAMMPS"))
     used = set(re.findall(r"\\(TypedE[A-Za-z]+)", (built / "paper/sections/dem.tex").read_text()))
     assert used and all(rf"\newcommand{{\{name}}}" in values for name in used)
