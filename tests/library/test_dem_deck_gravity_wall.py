@@ -141,3 +141,62 @@ run 0""")
         lmp.close()
     got = gravity_vector(f"fix 1 all gravity 2.5 {style}".split(), dimension)
     assert got == pytest.approx(force, abs=1e-12)
+
+
+#: Two spheres, type 2 frozen: {gravity} comes before or after the freeze (LAMMPS runs the fixes'
+#: forces in the order they were defined, and fix freeze zeroes those added before it)
+FROZEN = """\
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+comm_modify vel yes
+region box block -1 1 -1 1 -1 1 units box
+create_box 2 box
+create_atoms 1 single 0 0 0 units box
+create_atoms 2 single 0.1 0 0 units box
+set type 1 diameter 0.04 density 2500
+set type 2 diameter 0.06 density 1000
+pair_style granular
+pair_coeff * * hooke 1000 500 tangential linear_nohistory 0 0
+fix 1 all nve/sphere
+group two type 2
+{fixes}
+run 1
+"""
+FREEZE, GRAV = "fix frz two freeze", "fix grav all gravity 9.81 vector {sign} 0 0"
+
+
+@needs_lammps
+def test_a_sphere_falling_on_a_frozen_one_is_sized_at_both_directions_and_checked_in_lammps(tmp_path):
+    """Before: passed over (gravity on all). LAMMPS, the falling sphere moving along +x into the
+    frozen one under a field along +x (into it) and -x (off it), 64 000 steps per contact: it reads
+    the velocity at the first step the spheres are apart, after gravity has acted alone for up to
+    one step, g_grav dt / g = 1.1e-5 here; within twice that of the audit."""
+    g = 0.3
+    (tmp_path / "in.deck").write_text(FROZEN.format(fixes=GRAV.format(sign=1) + "\n" + FREEZE))
+    status, out, err = run_cli(["deck", str(tmp_path / "in.deck"), "--g", str(g), "--json"])
+    assert status == 0, err
+    row = next(p for p in json.loads(out)["pairs"] if p["types"] == [1, 2])
+    k = row["speeds"].index(g)
+    (fix,) = [b for b in row["beside"] if b["style"] == "gravity"]
+    into, off = (face["eps_engine"][k] for face in fix["faces"])
+    pair = Pair.spheres(0.02, 0.03, 2500, 1000)
+    t_c = 0.0218                         # the deck's 2.18e6 steps per contact at dt 1e-8
+    dt = t_c / 64000
+    lines = "\n".join(["pair_coeff * * hooke 1000 500 tangential linear_nohistory 0 0", "group two type 2"])
+    for sign, stated in ((1, into), (-1, off)):
+        engine = lammps_run.lammps_eps(pair, f"{lines}\n{GRAV.format(sign=sign)}\n{FREEZE}", g, dt, 3 * t_c, (1, 2), 2)
+        print(sign, stated, engine)
+        assert abs(engine - stated) < 2 * 9.81 * dt / g
+    assert into < row["eps"][k] < off
+
+
+@needs_lammps
+def test_a_gravity_defined_after_the_freeze_moves_the_frozen_sphere_too(tmp_path):
+    """LAMMPS: 0.975286 with the field either way, the eps of the freeze alone (measured)."""
+    (tmp_path / "in.deck").write_text(FROZEN.format(fixes=FREEZE + "\n" + GRAV.format(sign=1)))
+    status, out, err = run_cli(["deck", str(tmp_path / "in.deck"), "--g", "0.3", "--json"])
+    assert status == 0, err
+    row = next(p for p in json.loads(out)["pairs"] if p["types"] == [1, 2])
+    assert [b["style"] for b in row["beside"]] == ["freeze"]

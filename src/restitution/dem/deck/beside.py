@@ -183,7 +183,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     for loc, words in getattr(deck, "beside", []):
         style, group = words[3], words[2]
         if style == "gravity":
-            entry = _gravity(deck, loc, words, types, row, contact, pair)
+            entry = _gravity(deck, loc, words, types, row, contact, pair, frozen_contact)
             if entry is not None:
                 out.append(entry)
             continue
@@ -201,7 +201,8 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     return out
 
 
-def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, pair: Pair) -> dict | None:
+def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, pair: Pair,
+             frozen_contact=None) -> dict | None:
     """A gravity beside a collision where it changes the bodies' relative motion, or None where it
     cannot: both spheres of a pair in its group (they fall alike) or neither; a wall's sphere outside it.
 
@@ -228,6 +229,26 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
                         "the other during a contact; its size is not computed")
         return entry
     acted = [t in held for t in types]
+    # a fix freeze zeroes the forces the fixes before it added (LAMMPS runs post_force in the order
+    # the fixes were defined): a gravity defined after it moves the frozen atom too (measured)
+    order = [w[1] for _, w in deck.beside]
+    frozen = set().union(*[group_types(deck, w[2]) or set() for _, w in deck.beside
+                           if w[3] == "freeze" and order.index(w[1]) > order.index(words[1])])
+    still = [t in frozen for t in types]
+    if still.count(True) == 1 and frozen_contact is not None:
+        moving = still.index(False)
+        if not acted[moving]:
+            return None              # it falls on the frozen body only, whose force fix freeze zeroes
+        if deck.code != "LAMMPS":
+            entry["why"] = ("it pushes the moving sphere into its frozen partner or pulls it off during a contact; "
+                            "its size is computed for LAMMPS only (whose m_eff with a frozen atom was checked)")
+            return entry
+        entry["what"] = ("a gravity on the moving sphere, which pushes it into its frozen partner or pulls it off "
+                         "during a contact")
+        _pushed_against(entry, deck, words, row, frozen_contact(1 - moving),
+                        Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
+                        sphere=True)
+        return entry
     if acted[0] == acted[1]:
         return None                  # both bodies fall alike, or neither falls: the relative motion is the contact's
     pushed = types[acted.index(True)]
@@ -344,17 +365,25 @@ def _wall_gravity(entry: dict, deck, words: list, row: dict, contact: Contact, p
     """The eps the engine measures for a sphere on a wall under a gravity (entry updated: "faces",
     one {"face", "push", "eps_engine"} per face or per extreme direction, the push being gravity's
     component into the wall; "eps_engine" too where there is one face)."""
+    wall = next((w for _, w, _ in deck.walls if w[1] == row.get("wall")), None)
+    _pushed_against(entry, deck, words, row, contact, pair, wall_faces(wall) if wall is not None else None)
+
+
+def _pushed_against(entry: dict, deck, words: list, row: dict, contact: Contact, pair: Pair, faces,
+                    sphere: bool = False) -> None:
+    """entry's "faces" and "eps_engine" under the gravity ``words`` along the normals ``faces``
+    (:func:`wall_faces`; None: the two extreme directions). ``sphere``: the sphere moves against
+    an immovable sphere (``pair`` the moving one against an infinite mass, ``contact`` its own)."""
     field = gravity_vector(words, getattr(deck, "dimension", 3))
     if field is None or deck.units not in _GRAVITY_UNITS:
         entry["why"] += ("its size is not computed (a magnitude or direction this does not read)" if field is None
                          else f"its size is not computed in units {deck.units}")
         return
-    wall = next((w for _, w, _ in deck.walls if w[1] == row.get("wall")), None)
-    faces = wall_faces(wall) if wall is not None else None
     size = math.sqrt(sum(c * c for c in field))
+    partner, line = ("its partner", "line of centres") if sphere else ("the wall", "wall's normal")
     if faces is None:
-        pushes = [("into the wall, the normal along the field (the wall's normal not known here)", size),
-                  ("off the wall, the normal against the field", -size)]
+        pushes = [(f"into {partner}, the {line} along the field" + ("" if sphere else " (not known here)"), size),
+                  (f"off {partner}, against the field", -size)]
     else:
         pushes = []
         for what, normal in faces:
@@ -374,8 +403,8 @@ def _wall_gravity(entry: dict, deck, words: list, row: dict, contact: Contact, p
                       for what, push in pushes]
     if len(entry["faces"]) == 1:
         entry["eps_engine"] = entry["faces"][0]["eps_engine"]
-    entry["why"] += ("the contact law integrated with gravity's component along the wall's normal acting on the "
-                     "sphere (0 where the sphere does not leave the wall)")
+    entry["why"] += (f"the contact law integrated with gravity's component along the {line} acting on the "
+                     f"sphere (0 where the sphere does not leave {partner})")
 
 
 def _pushed_eps(contact: Contact, g: float, pair: Pair, push: float) -> float:
