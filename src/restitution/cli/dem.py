@@ -207,10 +207,10 @@ def run_deck(args, out) -> None:
         where = f" ({head.removeprefix('# ')})" if head else ""
         for fix in p.get("beside") or []:
             line = f"{fix['file']} line {fix['line']}" if fix["file"] else f"line {fix['line']}"
-            sized = [(g, e, own) for g, e, own in zip(p["speeds"], fix["eps_engine"] or [], p["eps"])
-                     if e is not None and own is not None]
-            size = (": " + ", ".join(f"{e:.6g} at g = {g:.4g} (the contact's own {own:.6g})" for g, e, own in sized)
-                    if sized else "")
+            size = _engine_eps(p, fix["eps_engine"])
+            if len(fix.get("faces") or []) > 1:       # a gravity on a wall of several faces or directions
+                size = ": " + "; ".join(f"{face['face']} (gravity {face['push']:+.4g} into it){_engine_eps(p, face['eps_engine'])}"
+                                        for face in fix["faces"])
             print(f"restitution deck: {name}{where}: {line} fix {fix['style']} ({fix['fix']}): {fix['what']}, which "
                   f"changes the eps the engine measures{size}" + (f"; {fix['why']}" if fix["why"] else ""),
                   file=sys.stderr)
@@ -370,3 +370,11 @@ def add_dem_subcommands(sub) -> None:
     add_lammps_subcommand(sub)
     add_deck_subcommand(sub)
     add_scene_subcommand(sub)
+
+
+def _engine_eps(row: dict, eps_engine) -> str:
+    """": eps at g = ... (the contact's own ...), ..." of a beside effect's eps_engine ("" where none)."""
+    sized = [(g, e, own) for g, e, own in zip(row["speeds"], eps_engine or [], row["eps"])
+             if e is not None and own is not None]
+    return (": " + ", ".join(f"{e:.6g} at g = {g:.4g} (the contact's own {own:.6g})" for g, e, own in sized)
+            if sized else "")

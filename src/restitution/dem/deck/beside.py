@@ -20,7 +20,7 @@ from ..engines.lammps.deck import DEFAULT_DT
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
 
-__all__ = ["BESIDE", "drag_eps", "effects"]
+__all__ = ["BESIDE", "drag_eps", "effects", "gravity_vector", "wall_faces"]
 
 #: Fix style -> what it does to the atoms of its group, beside the contact law
 BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
@@ -43,13 +43,16 @@ BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
 RTOL = 1e-7
 
 
-def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0)) -> float | None:
-    """eps of a head-on collision with a linear drag on each body beside the contact force.
+def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0), push: float = 0.0) -> float | None:
+    """eps of a head-on collision with a linear drag on each body beside the contact force, and a
+    constant acceleration of body 1 towards body 2 (gravity's component along the line of centres
+    on a sphere against a wall or an immovable partner).
 
     Body k feels the contact force and ``-drag[k] m_k v_k`` (a drag rate per unit mass: fix viscous
-    gamma / m, fix langevin 1 / damp). The bodies start touching at approach speed ``g``, the total
-    momentum zero; eps = -(v1 - v2) / g when the overlap returns to zero. The contact force is the contact's, per
-    unit effective mass m_eff, clipped at zero under the force rule (LAMMPS' limit_damping).
+    gamma / m, fix langevin 1 / damp); body 1 also ``push m_1``. The bodies start touching at
+    approach speed ``g``, the total momentum zero; eps = -(v1 - v2) / g when the overlap returns to
+    zero. The contact force is the contact's, per unit effective mass m_eff, clipped at zero under
+    the force rule (LAMMPS' limit_damping).
 
     Parameters
     ----------
@@ -60,11 +63,14 @@ def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0)) -
         The bodies' masses (a wall: :meth:`Pair.wall`, which never moves).
     drag : tuple of float
         Drag rate of each body (1/time), >= 0.
+    push : float, optional
+        Acceleration of body 1 towards body 2 (negative: away from it), acting throughout.
 
     Returns
     -------
     float or None
-        eps to about RTOL; None where the bodies do not part (within 10^4 drag or contact times).
+        eps to about RTOL; None where the bodies do not part (within 10^4 drag or contact times:
+        a push that holds a slow sphere on the wall).
 
     Examples
     --------
@@ -75,6 +81,10 @@ def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0)) -
     >>> # a drag rate b on both bodies adds b to the dashpot's: the same eps as D2 + b
     >>> abs(drag_eps(c, 1.0, p, (5.0, 5.0)) - Contact(1, 0, 1e4, 15.0, "overlap").eps(1.0)) < 1e-7
     True
+    >>> # a push into a wall: the sphere rebounds slower (in.pour's wall law, gravity 1 into it)
+    >>> w = Contact(1, 0, D1=2000 / (math.pi / 6), D2=50.0, end="overlap")
+    >>> round(drag_eps(w, 1.0, Pair.wall(0.5, 1.0), push=1.0) - w.eps(1.0), 4)
+    -0.0169
     """
     from scipy.integrate import solve_ivp     # here: a deck without such a fix does not pay its import
     wall = pair.m2 >= WALL_SIZE
@@ -98,7 +108,7 @@ def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0)) -
     def rhs(_t, y):
         x, v1, v2 = y
         f = force(x, v1 - v2)
-        return [v1 - v2, -share[0] * f - rate[0] * v1, share[1] * f - rate[1] * v2]
+        return [v1 - v2, -share[0] * f - rate[0] * v1 + push, share[1] * f - rate[1] * v2]
 
     def parted(_t, y):
         return y[0]
@@ -173,7 +183,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     for loc, words in getattr(deck, "beside", []):
         style, group = words[3], words[2]
         if style == "gravity":
-            entry = _gravity(deck, loc, words, types)
+            entry = _gravity(deck, loc, words, types, row, contact, pair, frozen_contact)
             if entry is not None:
                 out.append(entry)
             continue
@@ -191,21 +201,54 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     return out
 
 
-def _gravity(deck, loc, words: list, types: tuple) -> dict | None:
-    """A gravity on some atoms only (``fix ID GROUP gravity``, GROUP not all) beside a pair whose two
-    bodies it accelerates differently, or None where it cannot change the pair's relative motion:
-    both bodies or neither in its group, or a sphere on a wall (audited without gravity, as where
-    gravity acts on every atom)."""
-    if len(types) == 1:
-        return None
+def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, pair: Pair,
+             frozen_contact=None) -> dict | None:
+    """A gravity beside a collision where it changes the bodies' relative motion, or None where it
+    cannot: both spheres of a pair in its group (they fall alike) or neither; a wall's sphere outside it.
+
+    On a sphere against a wall it pushes the sphere into the wall (or pulls it off) during the
+    contact with its component along the wall's normal, which changes the eps the engine measures
+    (a constant force does no net work over a contact that ends where it began, but it shifts where
+    the damping acts and when the contact ends). That eps is computed face by face where the
+    wall's normal is known (:func:`wall_faces`), at the two extreme directions where it is not."""
     held = group_types(deck, words[2])
     entry = {"fix": words[1], "style": "gravity", "file": loc[0], "line": loc[1], "what": BESIDE["gravity"],
-             "eps_engine": None, "why": ""}
+             "eps_engine": None, "why": "", "along": None}
+    if len(types) == 1:
+        if held is not None and types[0] not in held:
+            return None
+        entry["what"] = "a gravity on the sphere, which pushes it into the wall or pulls it off during a contact"
+        if held is None:
+            entry["why"] = f"group {words[2]} has atoms the audit cannot type: the sphere may not fall; "
+        _wall_gravity(entry, deck, words, row, contact, pair)
+        if entry.get("faces") and not any(face["push"] for face in entry["faces"]):
+            return None              # the field lies along every face: it moves the sphere across the contact only
+        return entry
     if held is None:
         entry["why"] = (f"group {words[2]} has atoms the audit cannot type: it may accelerate one sphere and not "
                         "the other during a contact; its size is not computed")
         return entry
     acted = [t in held for t in types]
+    # a fix freeze zeroes the forces the fixes before it added (LAMMPS runs post_force in the order
+    # the fixes were defined): a gravity defined after it moves the frozen atom too (measured)
+    order = [w[1] for _, w in deck.beside]
+    frozen = set().union(*[group_types(deck, w[2]) or set() for _, w in deck.beside
+                           if w[3] == "freeze" and order.index(w[1]) > order.index(words[1])])
+    still = [t in frozen for t in types]
+    if still.count(True) == 1 and frozen_contact is not None:
+        moving = still.index(False)
+        if not acted[moving]:
+            return None              # it falls on the frozen body only, whose force fix freeze zeroes
+        if deck.code != "LAMMPS":
+            entry["why"] = ("it pushes the moving sphere into its frozen partner or pulls it off during a contact; "
+                            "its size is computed for LAMMPS only (whose m_eff with a frozen atom was checked)")
+            return entry
+        entry["what"] = ("a gravity on the moving sphere, which pushes it into its frozen partner or pulls it off "
+                         "during a contact")
+        _pushed_against(entry, deck, words, row, frozen_contact(1 - moving),
+                        Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
+                        sphere=True)
+        return entry
     if acted[0] == acted[1]:
         return None                  # both bodies fall alike, or neither falls: the relative motion is the contact's
     pushed = types[acted.index(True)]
@@ -213,6 +256,163 @@ def _gravity(deck, loc, words: list, types: tuple) -> dict | None:
                     "or apart during a contact; its size (which depends on the direction of the field against the "
                     "line of centres) is not computed")
     return entry
+
+
+#: Unit styles whose force / mass is the acceleration fix gravity's magnitude gives (LAMMPS'
+#: force->ftm2v is 1 in them; LIGGGHTS runs si or cgs)
+_GRAVITY_UNITS = ("lj", "si", "cgs")
+
+
+def gravity_vector(words: list, dimension: int = 3) -> tuple | None:
+    """fix ID group gravity MAGNITUDE STYLE ARGS as the acceleration vector (gx, gy, gz) the
+    engines give a run (LAMMPS' and LIGGGHTS' styles vector, spherical, chute; in 2-d LAMMPS turns
+    spherical's theta in the xy plane from +y and ignores phi), or None where it is not a number
+    this reads (a variable, another style).
+
+    Parameters
+    ----------
+    words : list of str
+        The fix's words.
+    dimension : int, optional
+        The deck's (2 or 3).
+
+    Returns
+    -------
+    tuple of float, or None
+
+    Examples
+    --------
+    >>> [round(c, 12) + 0.0 for c in gravity_vector("fix 2 all gravity 1.0 spherical 0.0 -180.0".split())]
+    [0.0, 0.0, -1.0]
+    >>> [round(c, 4) + 0.0 for c in gravity_vector("fix 2 all gravity 1.0 chute 26.0".split())]
+    [0.4384, 0.0, -0.8988]
+    >>> [round(c, 12) + 0.0 for c in gravity_vector("fix 2 all gravity 1.0 spherical 0.0 -180.0".split(), 2)]
+    [0.0, -1.0, 0.0]
+    >>> gravity_vector("fix g all gravity 9.81 vector 0 0 -2".split())
+    (0.0, 0.0, -9.81)
+    >>> gravity_vector("fix g all gravity v_g vector 0 0 -1".split()) is None
+    True
+    """
+    size = _number(words[4]) if len(words) > 4 else None
+    style, args = (words[5], [_number(w) for w in words[6:]]) if len(words) > 5 else (None, [])
+    if size is None or any(a is None for a in args):
+        return None
+    if style == "vector" and len(args) == 3 and dimension == 2:
+        args[2] = 0.0                        # LAMMPS ignores z in 2-d
+    if style == "vector" and len(args) == 3 and any(args):
+        norm = math.sqrt(sum(a * a for a in args))
+        return tuple(size * a / norm for a in args)
+    if style in ("spherical", "chute"):
+        # LAMMPS' fix gravity: chute ANGLE is spherical phi = 0, theta = 180 - ANGLE
+        phi, theta = (0.0, 180.0 - args[0]) if style == "chute" and len(args) == 1 else (
+            tuple(args) if style == "spherical" and len(args) == 2 else (None, None))
+        if phi is None:
+            return None
+        phi, theta = math.radians(phi), math.radians(theta)
+        if dimension == 2:
+            return (size * math.sin(theta), size * math.cos(theta), 0.0)
+        return (size * math.sin(theta) * math.cos(phi), size * math.sin(theta) * math.sin(phi),
+                size * math.cos(theta))
+    return None
+
+
+def wall_faces(words: list) -> list | None:
+    """The faces of a wall fix (its words) with the normal each turns to the spheres it meets:
+    [(what, (nx, ny, nz))] for planes a sphere meets from one known side (LAMMPS' xplane|yplane|zplane
+    lo hi: lo from above, hi from below); [(what, axis)] with an axis (0, 1, 2) where the normal lies
+    along that axis either way (LIGGGHTS' primitive planes, met from both sides) or (what, -axis - 1)
+    where it lies anywhere across that axis (a cylinder along it); None where it may point anywhere
+    (a region, a mesh).
+
+    Parameters
+    ----------
+    words : list of str
+        The wall fix's words.
+
+    Returns
+    -------
+    list or None
+
+    Examples
+    --------
+    >>> wall_faces("fix zlower all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 2000.0".split())
+    [('the face at z = 0.0', (0.0, 0.0, 1.0)), ('the face at z = 2000.0', (0.0, 0.0, -1.0))]
+    >>> wall_faces("fix w all wall/gran model hertz tangential history primitive type 1 zplane 0.0".split())
+    [('the plane z = 0.0 (met from either side)', 2)]
+    >>> wall_faces("fix w all wall/gran/region granular hooke 1 1 region box".split()) is None
+    True
+    """
+    axes = "xyz"
+    for k, w in enumerate(words):
+        if k <= 4 or not (w in ("xplane", "yplane", "zplane") or w in ("xcylinder", "ycylinder", "zcylinder")):
+            continue
+        axis = axes.index(w[0])
+        if w.endswith("cylinder"):
+            return [(f"a {w} (its normal across {w[0]})", -axis - 1)]
+        if words[k - 1] == "type" or (k >= 3 and words[k - 3] == "primitive"):      # LIGGGHTS' primitive plane
+            return [(f"the plane {w[0]} = {words[k + 1]} (met from either side)", axis)] if k + 1 < len(words) else None
+        faces = []
+        for side, at in zip((1.0, -1.0), words[k + 1:k + 3]):
+            if at != "NULL":
+                normal = [0.0, 0.0, 0.0]
+                normal[axis] = side
+                faces.append((f"the face at {w[0]} = {at}", tuple(normal)))
+        return faces or None
+    return None
+
+
+def _wall_gravity(entry: dict, deck, words: list, row: dict, contact: Contact, pair: Pair) -> None:
+    """The eps the engine measures for a sphere on a wall under a gravity (entry updated: "faces",
+    one {"face", "push", "eps_engine"} per face or per extreme direction, the push being gravity's
+    component into the wall; "eps_engine" too where there is one face)."""
+    wall = next((w for _, w, _ in deck.walls if w[1] == row.get("wall")), None)
+    _pushed_against(entry, deck, words, row, contact, pair, wall_faces(wall) if wall is not None else None)
+
+
+def _pushed_against(entry: dict, deck, words: list, row: dict, contact: Contact, pair: Pair, faces,
+                    sphere: bool = False) -> None:
+    """entry's "faces" and "eps_engine" under the gravity ``words`` along the normals ``faces``
+    (:func:`wall_faces`; None: the two extreme directions). ``sphere``: the sphere moves against
+    an immovable sphere (``pair`` the moving one against an infinite mass, ``contact`` its own)."""
+    field = gravity_vector(words, getattr(deck, "dimension", 3))
+    if field is None or deck.units not in _GRAVITY_UNITS:
+        entry["why"] += ("its size is not computed (a magnitude or direction this does not read)" if field is None
+                         else f"its size is not computed in units {deck.units}")
+        return
+    size = math.sqrt(sum(c * c for c in field))
+    partner, line = ("its partner", "line of centres") if sphere else ("the wall", "wall's normal")
+    if faces is None:
+        pushes = [(f"into {partner}, the {line} along the field" + ("" if sphere else " (not known here)"), size),
+                  (f"off {partner}, against the field", -size)]
+    else:
+        pushes = []
+        for what, normal in faces:
+            if isinstance(normal, tuple):
+                pushes.append((what, -sum(f * n for f, n in zip(field, normal))))
+            elif normal >= 0:
+                pushes += [(f"{what}, from the side gravity pushes into it", abs(field[normal])),
+                           (f"{what}, from the other side", -abs(field[normal]))]
+            else:
+                across = math.sqrt(sum(c * c for k, c in enumerate(field) if k != -normal - 1))
+                pushes += [(f"{what}, where it points along the field's part across it", across),
+                           (f"{what}, where it points against it", -across)]
+    # a component below 1e-12 of the field is the rounding of sin(180 deg) and the like: none
+    pushes = [(what, 0.0 if abs(push) <= 1e-12 * size else push) for what, push in pushes]
+    entry["faces"] = [{"face": what, "push": push,
+                       "eps_engine": _over_speeds(row, lambda g, p=push: _pushed_eps(contact, g, pair, p))}
+                      for what, push in pushes]
+    if len(entry["faces"]) == 1:
+        entry["eps_engine"] = entry["faces"][0]["eps_engine"]
+    entry["why"] += (f"the contact law integrated with gravity's component along the {line} acting on the "
+                     f"sphere (0 where the sphere does not leave {partner})")
+
+
+def _pushed_eps(contact: Contact, g: float, pair: Pair, push: float) -> float:
+    """eps under a constant push; the contact's own where there is none; 0 where it holds the sphere."""
+    if push == 0:
+        return _eps(contact, g)
+    eps = drag_eps(contact, g, pair, push=push)
+    return 0.0 if eps is None else eps
 
 
 def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tuple, words: list,

@@ -301,6 +301,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         _group(deck, words)
     elif cmd == "units" and len(words) >= 2:
         deck.units = words[1]
+    elif cmd == "dimension" and len(words) >= 2 and words[1] in ("2", "3"):
+        deck.dimension = int(words[1])       # fix gravity's direction depends on it
     elif cmd == "unfix" and len(words) >= 2:
         deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
         deck.movers.pop(words[1], None)
@@ -622,9 +624,9 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.movers[words[1]] = (loc, line, words[2], style)
     if style.startswith("bond/create"):
         deck.bonds = (loc, line)
-    if style in BESIDE and not (style == "gravity" and words[2] == "all"):
-        # gravity on every atom accelerates both bodies of a pair alike: their relative motion is the
-        # contact's (and a wall's sphere is audited without it, as before)
+    if style in BESIDE:
+        # gravity on every atom accelerates both bodies of a pair alike (beside passes it over
+        # there), but pushes a sphere into a wall during a contact
         deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck.beside)
         return
     if style in _INSERTING_FIXES:

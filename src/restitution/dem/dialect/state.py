@@ -79,6 +79,7 @@ class Deck:
     atom_style: str = ""
     missing: dict = field(default_factory=dict)   # type -> why a data file gives it no single radius/density
     units: str = "lj"                             # the engines' default unit style
+    dimension: int = 3                            # 2 or 3 (fix gravity's direction depends on it)
     soft: bool = False                            # LIGGGHTS soft_particles yes / hard_particles yes:
     hard: bool = False                            # its limits on Young's modulus lifted
     groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
