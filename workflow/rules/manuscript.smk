@@ -137,6 +137,9 @@ rule arxiv:
         code=code("arxiv_bundle.py"),
     output:
         "results/paper/arxiv.tar.gz",
+    params:
+        # the sources go in as an ancillary archive of the tracked files: a new commit makes a new bundle
+        commit=BUILD_COMMIT,
     log:
         "logs/arxiv.log",
     script:

@@ -7,12 +7,16 @@
 # `restitution`), not the `.bib`: arXiv runs pdflatex, not bibtex. Nothing outside the bundle is
 # referred to. The data tables behind the engine and calibration numbers travel with it, and every
 # engine run's deck and output (LAMMPS' behind its figure, each engine's behind the typed-e table),
-# with a README.txt at the top saying where they are and how to rerun them. The archive is byte-reproducible: sorted members, the fixed build date, no owners.
+# with a README.txt at the top saying where they are and how to rerun them. The project's own sources
+# travel as an ancillary archive, anc/restitution-sources.tar.gz (arXiv keeps anc/ as downloadable files):
+# every file git tracks, with the bytes this build was made from, so a reader can rerun the pipeline. Both
+# archives are byte-reproducible: sorted members, the fixed build date, no owners.
 
 # %%
 import gzip
 import io
 import os
+import subprocess
 import tarfile
 from pathlib import Path
 
@@ -21,6 +25,45 @@ from restitution_workflow.pipeline import start
 
 start(snakemake)
 EPOCH = int(os.environ.get("SOURCE_DATE_EPOCH", "1700000000"))
+SOURCES = "anc/restitution-sources.tar.gz"
+
+
+def tar_gz(contents: dict[str, bytes], executable: frozenset = frozenset()) -> bytes:
+    """A gzipped tar of ``contents`` whose bytes depend on the contents alone: sorted members, the fixed
+    build date, no owners, mode 644 (755 for the names in ``executable``)."""
+    buffer = io.BytesIO()
+    with tarfile.TarFile(fileobj=buffer, mode="w", format=tarfile.USTAR_FORMAT) as tar:   # in memory
+        for name in sorted(contents):
+            data = contents[name]
+            info = tarfile.TarInfo(name)
+            info.size, info.mtime = len(data), EPOCH
+            info.mode = 0o755 if name in executable else 0o644
+            tar.addfile(info, io.BytesIO(data))
+    raw = io.BytesIO()
+    with gzip.GzipFile(filename="", fileobj=raw, mode="wb", mtime=EPOCH) as gz:
+        gz.write(buffer.getvalue())
+    return raw.getvalue()
+
+
+def tracked_sources() -> tuple[dict[str, bytes], frozenset] | None:
+    """Every file git tracks in this checkout, as it is on disk (at a clean commit: the commit's bytes),
+    under restitution-sources/; None where this is not a git checkout (a copy made without .git)."""
+    listed = subprocess.run(["git", "ls-files", "-s", "-z"], capture_output=True)
+    if listed.returncode != 0:
+        return None
+    contents, executable = {}, set()
+    for entry in listed.stdout.decode().split("\0"):
+        if not entry:
+            continue
+        meta, path = entry.split("\t", 1)
+        mode = meta.split()[0]
+        if not Path(path).is_file():   # deleted in an uncommitted change: not part of what was built
+            continue
+        name = f"restitution-sources/{path}"
+        contents[name] = Path(path).read_bytes()
+        if mode == "100755":
+            executable.add(name)
+    return contents, frozenset(executable)
 
 # %% Members: name in the bundle -> file in the project
 members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path(snakemake.input.bbl),
@@ -46,7 +89,9 @@ for it) is under {Path(typed_readme).parent.as_posix()}/, with the eps each run 
 {typed_readme} says how to rerun them.
 {snakemake.input.manifest} lists every one of those run files with its SHA-256 checksum and size.
 
-Where the pieces are (in the project's sources, which this bundle does not carry): each figure and table
+{{sources}}
+
+Where the pieces are in the project's sources (the archive under anc/): each figure and table
 of the supplement is made by one script under workflow/scripts/, a step of the Snakemake pipeline
 (rules in workflow/rules/, settings in config.yaml), which records its inputs.
   series coefficients table: series_table.py, from series.py
@@ -79,17 +124,21 @@ for name in members:
     # relative, inside the bundle: no absolute path, no way out
     assert not name.startswith("/") and ".." not in Path(name).parts, name
 
-# %% Write it
+# %% The sources, as an ancillary archive
 contents = {name: path.read_bytes() for name, path in members.items()}
-contents["README.txt"] = readme.encode()
-buffer = io.BytesIO()
-with tarfile.TarFile(fileobj=buffer, mode="w", format=tarfile.USTAR_FORMAT) as tar:   # in memory
-    for name in sorted(contents):
-        data = contents[name]
-        info = tarfile.TarInfo(name)
-        info.size, info.mtime, info.mode = len(data), EPOCH, 0o644
-        tar.addfile(info, io.BytesIO(data))
-with atomic_path(snakemake.output[0]) as tmp, open(tmp, "wb") as raw:
-    with gzip.GzipFile(filename="", fileobj=raw, mode="wb", mtime=EPOCH) as gz:
-        gz.write(buffer.getvalue())
+sources = tracked_sources()
+if sources is None:
+    note = ("This bundle was made from a copy of the project that is not a git checkout, so it does not carry\n"
+            "the sources (a bundle made in the git checkout has them under anc/).")
+else:
+    files, executable = sources
+    contents[SOURCES] = tar_gz(files, executable)
+    note = (f"{SOURCES} holds the project's sources: the {len(files)} files under version control, as built\n"
+            f"(commit {snakemake.params.commit}). Unpacked, `make paper` in restitution-sources/ rebuilds both\n"
+            "documents, every number included; its README.md says what the build needs.")
+contents["README.txt"] = readme.replace("{sources}", note).encode()
+
+# %% Write it
+with atomic_path(snakemake.output[0]) as tmp:
+    Path(tmp).write_bytes(tar_gz(contents))
 print(f"{len(contents)} files in {snakemake.output[0]}")
