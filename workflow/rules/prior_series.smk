@@ -20,7 +20,7 @@ rule schwager_poeschel:
         fit_degree=11,
         residual_omega_max=3000.0,      # the fit of h_6..h_8 once h_0..h_5 are subtracted
         residual_degree=6,
-        end_omegas=[10.0, 30.0, 100.0],  # where the end relation's remainder is above the noise
+        end_omegas=[10.0, 15.0, 20.0, 30.0, 50.0, 100.0],  # where the end relation's remainder is above the noise
         omegas=[10.0, 30.0, 100.0, 1000.0, 10000.0],
         orders=[2, 4, 5, 6, 8, 10, 12],
     log:

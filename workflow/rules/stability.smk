@@ -109,6 +109,7 @@ rule uniform_atlas:
     output:
         csv="results/stability/uniform_forms.csv",
         tex="results/stability/uniform_forms.tex",
+        values="results/stability/uniform_forms_values.tex",   # the article's summary of the table
     params:
         pairs=_ATLAS_PAIRS,
     log:

@@ -7,6 +7,7 @@
 # the paper's printed relation, and the form's relative error in eps and 1 - eps for every variant.
 
 # %%
+import math
 from fractions import Fraction
 
 import numpy as np
@@ -119,6 +120,16 @@ def frac(s):
 HERTZ = (Fraction(3, 2), Fraction(1, 2))   # Hertz elasticity with Kuwabara-Kono damping (the model's definition)
 
 
+def end_term_power(a, g):
+    """q of the end term beta mu^q (Appendix A): (alpha + 1)/(alpha - gamma)."""
+    return (a + 1) / (a - g)
+
+
+def common_step(a: Fraction, b: Fraction) -> Fraction:
+    """The largest rational of which a and b are both whole multiples."""
+    return Fraction(math.gcd(a.numerator * b.denominator, b.numerator * a.denominator), a.denominator * b.denominator)
+
+
 def elastic_power(a, g):
     """Exponent of g in 1 - eps ~ C1 Omega^(-A) when Omega = const g^w."""
     return -(a - 1 - 2 * g) / (g + 1) * (g + 1) / (a + 1)
@@ -167,8 +178,8 @@ end_power = 1 + (g_ + 1) / (a_ - g_) if a_ > g_ else None
 end_coef = (a_ - g_) / ((g_ + 1) * (a_ + 1))
 if abs(float(end_coef) - float(E.E)) > 1e-12 * abs(float(E.E)):
     raise SystemExit(f"end coefficient: exact {end_coef} but the library gives {E.E}")
-end_clause = (r"so for these exponents the term is smaller than the omitted $O(\mu^3)$: it is the leading effect of "
-              r"ending at zero force, not the next term of the expansion" if end_power > 3 else
+end_clause = (r"so for these exponents the difference is smaller than the omitted $O(\mu^3)$: it is the leading effect of "
+              r"ending at zero force, not a term of an expansion of $\varepsilon_{\mathrm{force}}$ alone" if end_power > 3 else
               r"so for these exponents it is the first correction after $C_2$")
 
 # the elastic end of the form (the bracket has no delta^2 term; the fitted sum must supply it): measured at the
@@ -191,6 +202,9 @@ if any(len(forms[n]["a"]) != len(main["a"]) for n in fitted):
     raise SystemExit("the uniform forms have different numbers of coefficients: "
                      + ", ".join(f"{n}: {len(forms[n]['a'])}" for n in fitted))
 worst = max(fitted, key=lambda n: forms[n]["bound_eps"])
+# the out-of-sample figure: the test points alone (the validation points chose the shape, so they are a
+# model-selection set, not held out)
+worst_test = max(fitted, key=lambda n: forms[n]["measured"]["test_eps"])
 macros = {
     "CFBoundEpsWorst": sci(forms[worst]["bound_eps"], 2), "CFBoundEpsWorstLaw": esc(law_name(worst)),
     "CFLawsFitted": str(len(fitted)),
@@ -203,6 +217,8 @@ macros = {
     "CFValidationPoints": str(main["measured"]["n_selection"]), "CFTestPoints": str(main["measured"]["n_test"]),
     "CFTestEps": sci(main["measured"]["test_eps"], 2),
     "CFTestLoss": sci(main["measured"]["test_one_minus_eps"], 2),
+    "CFTestEpsWorst": sci(forms[worst_test]["measured"]["test_eps"], 2),
+    "CFTestEpsWorstLaw": esc(law_name(worst_test)),
     "CFFitRtol": sci(FIT_RTOL, 1),
     "CFOverlapBoundEps": sci(main_overlap["bound_eps"], 2) if main_overlap["available"] else "none",
     "CFOverlapBoundLoss": sci(main_overlap["bound_one_minus_eps"], 2) if main_overlap["available"] else "none",
@@ -216,6 +232,9 @@ macros = {
     # the Hertz law with Kuwabara-Kono damping (Ramirez et al. state that its elastic constants exist)
     "CFHertzAlpha": frac(HERTZ[0]), "CFHertzGamma": frac(HERTZ[1]),
     "CFHertzLossPower": frac(elastic_power(*HERTZ)),
+    # under the force rule the end term beta mu^q joins the series: its powers are those of the largest
+    # g^p of which both mu and mu^q are whole powers (q = 5/2 for Hertz: mu^(1/2), g^(1/10))
+    "CFHertzHalfLossPower": frac(elastic_power(*HERTZ) * common_step(Fraction(1), end_term_power(*HERTZ))),
     # Eq. (uniform) at the elastic end (defect 2 of issue 43): exact to leading order only there
     "CFElasticCheckOmega": sci(ELASTIC_CHECK, 1),
     "CFFormLossErrAtCheck": sci(form_loss_err, 2),
@@ -300,7 +319,7 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
 
 force_tables = two_tables(r"lllllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
                           r"error figure: $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
-overlap_tables = two_tables(r">{\raggedright\arraybackslash}p{2.1cm}llllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar n + 1$ & "
+overlap_tables = two_tables(r">{\raggedright\arraybackslash}p{2.1cm}llllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar N + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
@@ -330,10 +349,11 @@ $\varepsilon$ is a relative $O(\Omega^2 \ln^2 \Omega)$.
 
 \paragraph{{Elastic limit ($\Omega \to \infty$).}}
 With $\nu = (\gamma+1)/(\alpha+1)$ and $\mu = \Omega^{{-\nu}}$,
-$1 - \varepsilon = C_1 \mu - C_2 \mu^2 + O(\mu^3)$ with
+$1 - \varepsilon_{{\mathrm{{overlap}}}} = C_1 \mu - C_2 \mu^2 + O(\mu^3)$ with
 $C_1 = ((\alpha+1)/2)^{{\nu-1}} \mathrm{{B}}(\nu, 3/2)$ and $C_2 = \nu C_1^2$; here $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$. Contact ends where the
-force vanishes, before the deformation is back to zero, and that adds $-\beta\,\mu^{{1 + (\gamma+1)/(\alpha-\gamma)}}$,
-$\beta = (\alpha-\gamma)/((\gamma+1)(\alpha+1))$; here the power is {frac(end_power)} and $\beta = {frac(end_coef)}$, {end_clause}.
+force vanishes, before the deformation is back to zero, and the two end rules differ by
+$\varepsilon_{{\mathrm{{force}}}} - \varepsilon_{{\mathrm{{overlap}}}} = \beta\,\mu^{{q}}\,(1 + O(\mu))$, $q = 1 + (\gamma+1)/(\alpha-\gamma)$,
+$\beta = (\alpha-\gamma)/((\gamma+1)(\alpha+1))$; here $q = {frac(end_power)}$ and $\beta = {frac(end_coef)}$, {end_clause}.
 Contact lasts $\tau_c = \theta_c\,\Omega^{{-1/(\alpha+1)}}$ with $\theta_c = {sci(E.T0, 10)}$, its duration in the elastic time $\theta = \Omega^{{1/(\alpha+1)}}\tau$ of the article's appendix.
 
 {units}
@@ -342,7 +362,7 @@ Contact lasts $\tau_c = \theta_c\,\Omega^{{-1/(\alpha+1)}}$ with $\theta_c = {sc
 With $z = b\,\Omega$, $u = \tanh(\tfrac{{\sigma}}{{2}} \ln z)$ and $\zeta = 1/\varepsilon$,
 \begin{{equation}}
 \zeta - 1 = \frac{{1}}{{k}}\left[\frac{{b\,(1+z)^{{1-\nu}}}}{{z}} + \frac{{c_{{\log}} \ln(1 + 1/z) + c_{{\mathrm{{b}}}}}}{{(1+z)^2}}\right]
- + (1+u)^{{s_0}} (1-u)^{{s_1}} \sum_{{j=0}}^{{n}} a_j u^j ,
+ + (1+u)^{{s_0}} (1-u)^{{s_1}} \sum_{{j=0}}^{{N}} a_j u^j ,
 \label{{eq:uniform}}
 \end{{equation}}
 with $b = (k C_1)^{{1/(1-\nu)}}$ and $c_{{\mathrm{{b}}}} = c_{{\mathrm{{v}}}} + c_{{\log}} \ln b - (1-\nu)\,b - k$. The bracket alone has
@@ -352,11 +372,11 @@ $\zeta - 1$, $(C_1^2 - C_2)\mu^2$, is left to the fitted sum, which vanishes lik
 $\sigma s_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
 first order at the viscous end but only to leading order at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
 {sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The error figures below, measured over
-$10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($n = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
-where the error on the validation points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
+$10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($N = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
+where the error on the model-selection points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
 integrations at relative tolerance $\CFFitRtol$ on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
 the shape $(\sigma, s_0, s_1)$ is chosen by the error on the points in between, and the error figure stated is twice the
-largest relative error on those validation points and on {main['measured']['n_test']} test points drawn at random in
+largest relative error on those model-selection points and on {main['measured']['n_test']} test points drawn at random in
 $[10^{{-8}}, 10^{{8}}]$ and used for nothing else, where $\varepsilon$ and $1 - \varepsilon$ come from independent integrations in the variables of Sec.~\ref{{sec:reference}}, plus their accuracy
 (\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
 proven bound. A force law with $\alpha \leq \gamma$ has no such form:
@@ -365,15 +385,14 @@ is not known. The article's figure of the error of $\varepsilon(g)$ shows the re
 the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
 Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error figures for every exponent pair of the
-stability atlas. The formula can also be printed as one line of C with every number
-written out (Sec.~\ref{{sec:reproduce}}).
+stability atlas.
 
 \begin{{figure}}[htbp]
 \centering
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
 \caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (solid) and in
 $1 - \varepsilon$ (dashed), for every force law that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
-Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = {sci(LAW_BELOW, 1)}$ up); one column per force law; dotted and dash-dotted lines: the error figures in $\varepsilon$ and in $1 - \varepsilon$ (twice the largest error measured on the validation and test points, plus the reference's accuracy; the two nearly coincide).}}
+Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = {sci(LAW_BELOW, 1)}$ up); one column per force law; dotted and dash-dotted lines: the error figures in $\varepsilon$ and in $1 - \varepsilon$ (twice the largest error measured on the model-selection and test points, plus the reference's accuracy; the two nearly coincide).}}
 \label{{fig:uniform-error}}
 \end{{figure}}
 
@@ -386,7 +405,7 @@ $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P}
 Eq.~(\ref{{eq:uniform}})):
 \begin{{equation}}
 \frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Lambda \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
-\exp\!\Big[\exp(-\rho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar n}} \bar a_j \cos(j \arccos \bar u)\Big],
+\exp\!\Big[\exp(-\rho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
 with $\bar b = (C C_1)^{{1/(\kappa - \nu)}}$ and $\Lambda = \bar b^{{\kappa}}/C$, so that
@@ -406,7 +425,7 @@ $\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not dep
 \centering\footnotesize
 \caption{{The overlap rule's form (\ref{{eq:uniform-overlap}}) of each force law: its number of coefficients and
 twice the largest relative errors in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$
-(over $\Omega \geq 1$), measured on the validation and test points, plus the accuracy of the reference integration;
+(over $\Omega \geq 1$), measured on the model-selection and test points, plus the accuracy of the reference integration;
 below, its constants, shape and coefficients.}}
 \label{{tab:uniform-overlap}}
 \vspace{{4pt}}

@@ -58,6 +58,8 @@ def wrapped(line: str) -> list[str]:
     return out + [line]
 
 
-deck = Path(snakemake.params.sample).read_text().splitlines()
+# its comment lines left out (they speak of the software that ran it; the supplement says what the
+# commands after the run do), every command kept as it was run
+deck = [line for line in Path(snakemake.params.sample).read_text().splitlines() if not line.lstrip().startswith("#")]
 body = [w for line in deck for w in wrapped(line)]
 write_text(snakemake.output.deck, "{\\footnotesize\n\\begin{verbatim}\n" + "\n".join(body) + "\n\\end{verbatim}\n}\n")
