@@ -16,7 +16,7 @@ import re
 from .beside import BESIDE
 from .meeting import MOVERS, neigh_modify, special_bonds
 from .stream import SEEDED
-from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
+from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, types, unlabeled
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
 from ..engines.lammps.deck import DEFAULT_DT
@@ -228,6 +228,8 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     deck.atoms = deck.atoms or bool(atoms)
     deck.present |= set(atoms)
     for t, sizes in atoms.items():
+        # a pour's spheres arrive as its run goes, never in the engine's skipped run: with the held
+        sizes = set(sizes) | deck.poured.get(t, set())
         radii = {r for r, _ in sizes}
         dens = {rho for _, rho in sizes}
         deck.missing.pop(t, None)
@@ -683,22 +685,27 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
         elif tok == "dens":
             densities = {value(k + 1), value(k + 2)}
     deck.sizes.pop(t, None)
+    if deck.held is not None:
+        _poured(deck, t, diameters, densities, "poly" in tokens)
+        return
     if len(diameters) == 1 and len(densities) == 1:
         deck.radius[t], deck.density[t] = 0.5 * diameters.pop(), densities.pop()
         return
-    deck.radius.pop(t, None)
+    deck.radius.pop(t, None)       # the hand reader's decks: no range audited
     deck.density.pop(t, None)
-    if deck.held is None:          # the hand reader's decks: no range audited
-        what = "diameters" if len(diameters) > 1 else "densities"
-        lo, hi = min(diameters if len(diameters) > 1 else densities), max(diameters if len(diameters) > 1
-                                                                            else densities)
-        deck.missing[t] = f"fix {words[1]} pours {what} from {lo:g} to {hi:g}"
-        return
-    # a range (uniform between its ends) sampled with its ends; poly's diameters themselves
-    if "poly" not in tokens and len(diameters) > 1:
+    what = "diameters" if len(diameters) > 1 else "densities"
+    lo, hi = min(diameters if len(diameters) > 1 else densities), max(diameters if len(diameters) > 1
+                                                                        else densities)
+    deck.missing[t] = f"fix {words[1]} pours {what} from {lo:g} to {hi:g}"
+
+
+def _poured(deck: Deck, t: int, diameters: set, densities: set, poly: bool) -> None:
+    """The sizes a pour adds to type t (a range, uniform between its ends, sampled with its ends;
+    poly's diameters themselves), with every other source of t's sizes (:func:`pour_into`)."""
+    if not poly and len(diameters) > 1:
         lo, hi = min(diameters), max(diameters)
         diameters = {lo + (hi - lo) * k / (_RANGE_SAMPLES - 1) for k in range(_RANGE_SAMPLES)}
-    deck.sizes[t] = sorted({(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))})
+    pour_into(deck, t, {(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))})
 
 
 #: Sizes sampled across a pour's range of diameters, its ends included: a law whose eps is not

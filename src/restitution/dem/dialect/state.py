@@ -19,7 +19,7 @@ from ...core.errors import InputFileError, ParameterError
 from ..calibrate import calibrate
 from ..pair import Pair
 
-__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number",
+__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number", "pour_into",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e"]
 
 
@@ -119,6 +119,9 @@ class Deck:
     # or a sample of a pour's ranges, their ends included); ``at`` the two spheres a pair row is
     # audited at then, ((R1, rho1), (R2, rho2)), else ()
     sizes: dict = field(default_factory=dict)
+    # type -> {(radius, density)} its inserting fixes (a LAMMPS pour, a LIGGGHTS sphere template) add
+    # to it as the runs go, kept beside the atoms the engine holds (which a pour's never are)
+    poured: dict = field(default_factory=dict)
     at: tuple = ()
     sampled: dict = field(default_factory=dict)   # type -> how many sizes it held where ``sizes`` is a sample
     # LAMMPS pair_style hybrid or hybrid/overlay ("" otherwise), its granular sub-style, and the
@@ -447,6 +450,44 @@ def labelmap(deck: Deck, words: list, where: str, line: str) -> None:
 
 
 # ---------------------------------------------------------------------------- what the audit needs
+def pour_into(deck: Deck, t: int, sizes: set) -> None:
+    """Sizes an inserting fix adds to type t as the runs go (a LAMMPS pour, a LIGGGHTS sphere
+    template), kept with those every earlier one added and with the atoms of t the engine held at
+    the last run: t's radius and density where all share one, else all its sizes.
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck as read so far; ``poured``, ``radius``, ``density`` and ``sizes`` change.
+    t : int
+        The type filled.
+    sizes : set of tuple
+        The (radius, density) of the spheres the fix inserts.
+
+    Returns
+    -------
+    None
+        The deck changes in place.
+
+    Examples
+    --------
+    >>> deck = Deck(held={1: [(0.01, 3000.0)]})
+    >>> pour_into(deck, 1, {(0.005, 1000.0)})
+    >>> deck.sizes[1], 1 in deck.radius
+    ([(0.005, 1000.0), (0.01, 3000.0)], False)
+    """
+    poured = deck.poured.setdefault(t, set())
+    poured |= sizes
+    every = poured | set((deck.held or {}).get(t, ()))
+    deck.sizes.pop(t, None)
+    if len(every) == 1:
+        (deck.radius[t], deck.density[t]), = every
+        return
+    deck.radius.pop(t, None)
+    deck.density.pop(t, None)
+    deck.sizes[t] = sorted(every)
+
+
 def spheres(deck: Deck, i: int, j: int) -> Pair:
     """The two spheres of types i and j, or the refusal naming what the deck lacks for them.
 

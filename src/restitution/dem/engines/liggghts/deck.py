@@ -15,7 +15,7 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 
 from __future__ import annotations
 
-from ...dialect.state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
+from ...dialect.state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, pour_into, spheres
 from ....core.errors import ParameterError
 from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODELS, LIGGGHTS_MODULUS, LIGGGHTS_NU,
                       STIFFNESS_MODELS, STIFFNESS_UNITS, liggghts_accepts_e, liggghts_contact, liggghts_e,
@@ -123,7 +123,7 @@ def _property_global(deck: Deck, words: list, where: str, line: str, loc) -> Non
 
 def _sphere_template(deck: Deck, words: list, where: str, line: str, loc) -> None:
     """fix ID group particletemplate/sphere seed atom_type T density constant RHO radius constant R."""
-    tokens, t = words[5:], None
+    tokens, t, size = words[5:], None, {}
     for k, tok in enumerate(tokens):
         if tok == "atom_type":
             if k + 1 == len(tokens):
@@ -131,11 +131,14 @@ def _sphere_template(deck: Deck, words: list, where: str, line: str, loc) -> Non
             t = atom_type(tokens[k + 1], where, line)
         elif tok in ("density", "radius") and k + 2 < len(tokens) and tokens[k + 1] == "constant" \
                 and t is not None:
-            (deck.density if tok == "density" else deck.radius)[t] = number(tokens[k + 2], where, line)
+            size[tok] = (deck.density if tok == "density" else deck.radius)[t] = number(tokens[k + 2], where, line)
         elif tok in ("density", "radius") and k + 1 < len(tokens) and t is not None:
             # other distributions (gaussian, ...) give no single value: the type is unset, and says why
             (deck.density if tok == "density" else deck.radius).pop(t, None)
             deck.missing[t] = f"fix {words[1]} gives type {t} a {tok} from a {tokens[k + 1]} distribution"
+    if len(size) == 2 and deck.held is not None:
+        # its spheres may be inserted after the one step the audit runs: with the type's other sizes
+        pour_into(deck, t, {(size["radius"], size["density"])})
 
 
 def _mesh(deck: Deck, words: list, where: str, line: str, loc) -> None:
