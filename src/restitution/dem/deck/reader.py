@@ -183,6 +183,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             last_block, block = (block if plain_run and recorded else None), []
     for held_back, held_cmd in pending:          # pours after the last run: settings no run used
         _execute(deck, held_back, held_cmd.text, held_cmd.loc, read_file)
+    if deck.unmapped and not deck.stages:
+        raise DeckError(*deck.unmapped)  # the deck's pair style, though no run used it
     if not deck.stages:
         if not atoms:
             # no run and no end reached: "no particle" would be a guess, never a reading
@@ -375,8 +377,10 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.coeffs, deck.gran = {}, {}
     deck.style = style
     if style not in PAIR_STYLES:
-        raise DeckError(where, line, f"pair_style {style} is not mapped (the reader maps "
-                                     f"{', and '.join(d.MAPPED for d in DIALECTS.values())})")
+        deck.unmapped = (where, line, f"pair_style {style} is not mapped (the reader maps "
+                                      f"{', and '.join(d.MAPPED for d in DIALECTS.values())})")
+        return
+    deck.unmapped = ()
     deck.code = PAIR_STYLES[style].ENGINE
     PAIR_STYLES[style].pair_style(deck, words, where, line)
 
@@ -397,6 +401,8 @@ def _idle(sub: str, args: list) -> bool:
 
 
 def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    if deck.unmapped:
+        return                           # its coefficients are the engine's to check
     if deck.code not in DIALECTS:
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     if deck.hybrid and len(words) > 3:
@@ -489,6 +495,8 @@ def _coarsest_dt(stage: Deck, deck: Deck) -> None:
 
 def _stage(deck: Deck, loc, line: str) -> None:
     """A run: the contact settings it sees, kept where they differ from the previous run's."""
+    if deck.unmapped:
+        raise DeckError(*deck.unmapped)
     key = contact_key(deck)
     if deck.stages and deck.stages[-1][2] == key:
         deck.stages[-1][0].append((loc, line))

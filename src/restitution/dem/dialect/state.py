@@ -97,6 +97,9 @@ class Deck:
     # group ID -> [(the command that inserts atoms into it, their types or None where not known)]
     filled_groups: dict = field(default_factory=dict)
     style: str = ""                               # the pair style (LAMMPS keeps coefficients for the same)
+    # (where, text, why) of a pair style the reader does not map, in force until another replaces
+    # it: refused at a run that uses it, and no run may (a deck replacing it before its first run)
+    unmapped: tuple = ()
     reset: tuple = ()                             # (loc, text) of a pair_style of another that discarded them
     atom_style_loc: tuple = ()                    # (file, line number) of atom_style
     # types known to hold atoms (create_atoms, read_data, a pour or deposit that has run), and
