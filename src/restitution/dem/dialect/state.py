@@ -73,6 +73,7 @@ class Deck:
     model: str = ""                               # LIGGGHTS normal model
     limit_force: bool = False
     absolute_damping: bool = False                # LIGGGHTS hooke/stiffness: gamman_abs, not m gamman
+    cohesion: str = ""                            # LIGGGHTS cohesion sjkr|sjkr2 of the pair style, "" for none
     style_line: tuple = ()                        # ((file, line number), text) of pair_style
     unknown: list = field(default_factory=list)   # (file or None, line number, text, why) not understood
     ignored: list = field(default_factory=list)   # what the audit passed over on purpose

@@ -64,13 +64,36 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     """
     # every pair_style line sets the style afresh: LIGGGHTS' default for what it does not name
     # (limitForce off; checked: on, then a line without it, gives eps = e)
+    pairs = words[2:]
+    deck.cohesion = ""
+    for i in range(0, len(pairs) - 1, 2):
+        if pairs[i] == "cohesion" and pairs[i + 1] in _COHESION:
+            # its force is cohesionEnergyDensity times the contact area: audited where that is 0
+            deck.cohesion = pairs[i + 1]
+            pairs = pairs[:i] + pairs[i + 2:]
+            break
     try:
-        deck.model, deck.limit_force, deck.absolute_damping = _normal(words[2:])
+        deck.model, deck.limit_force, deck.absolute_damping = _normal(pairs)
     except ValueError as why:
         raise DeckError(where, line, str(why)) from None
     for i in range(2, len(words) - 1, 2):
         if words[i] in ("tangential", "rolling_friction", "tangential_damping"):
             deck.ignored.append(f"{words[i]} {words[i + 1]}")
+
+
+#: LIGGGHTS cohesion models whose force is the cohesionEnergyDensity of the pair times a contact area
+_COHESION = ("sjkr", "sjkr2")
+
+
+def _no_cohesion(deck: Deck, i: int, j: int) -> None:
+    """Refuses a pair a cohesion model gives a force: its cohesionEnergyDensity is not 0."""
+    if not deck.cohesion:
+        return
+    matrix, loc = _matrix(deck, "cohesionEnergyDensity")
+    k = matrix[(i - 1) * deck.ntypes + (j - 1)]
+    if k != 0:
+        raise DeckError(place(loc), f"types {i} {j}", f"cohesion {deck.cohesion} with cohesionEnergyDensity {k:g} "
+                                                      "adds an attractive normal force, which is not mapped")
 
 
 def _normal(pairs: list) -> tuple:
@@ -263,7 +286,10 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     ('LIGGGHTS hertz, limitForce off', 0.9, 'fix m all property/global coefficientRestitution peratomtypepair 1 0.9')
     """
     pair = spheres(deck, i, j)
+    _no_cohesion(deck, i, j)
     model = _label(deck.model, deck.limit_force, deck.absolute_damping)
+    if deck.cohesion:
+        model += f", cohesion {deck.cohesion} (cohesionEnergyDensity 0 here: no force)"
     if deck.model in STIFFNESS_MODELS:
         # no e typed: the stiffness and damping are, and no one line gives the pair an eps
         contact = _stiffness(deck, deck.model, deck.limit_force, deck.absolute_damping, pair, i, j)
