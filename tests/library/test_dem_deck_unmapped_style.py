@@ -6,13 +6,11 @@ import json
 
 import pytest
 
-from deck_cli import run
+from deck_cli import needs_lammps, run
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.pair import Pair
 
-needs_lammps = pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed "
-                                  "(pip install -e '.[dem]')")
 GRAN = "gran/hooke 3e4 2e4 200 100 0.0 1"
 HEAD = """units si
 atom_style sphere
