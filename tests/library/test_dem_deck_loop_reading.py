@@ -25,22 +25,24 @@ def _loop(passes: int, wide_at: int | None = None, coeff_at: int | None = None) 
 
 
 def _stages(deck) -> list:
-    return [(len(runs), snap.radius[1], snap.coeffs[(1, 1)][1][4]) for runs, snap, _ in deck.stages]
+    """(runs, type 1's radii, its k_n) of each stage: the spheres a pass poured stay in the later runs."""
+    return [(len(runs), tuple(sorted({r for r, _ in snap.sizes[1]})) if 1 in snap.sizes else (snap.radius[1],),
+             snap.coeffs[(1, 1)][1][4]) for runs, snap, _ in deck.stages]
 
 
 def test_a_pass_that_pours_again_joins_the_stage_unkeyed(monkeypatch):
     keyed = []
     monkeypatch.setattr(reader, "contact_key", lambda deck, key=reader.contact_key: keyed.append(1) or key(deck))
     deck = reader.read_executed(_loop(200), [{2: {(0.5, 2.0)}}])
-    assert _stages(deck) == [(200, 0.05, "10")]
+    assert _stages(deck) == [(200, (0.05,), "10")]
     assert len(keyed) <= 2, f"the settings were keyed at {len(keyed)} of 200 runs"
 
 
 @pytest.mark.parametrize("change, stages", [
-    ({"wide_at": 0}, [(1, 0.1, "10"), (199, 0.05, "10")]),
-    ({"wide_at": 1}, [(1, 0.05, "10"), (1, 0.1, "10"), (198, 0.05, "10")]),
-    ({"wide_at": 120}, [(120, 0.05, "10"), (1, 0.1, "10"), (79, 0.05, "10")]),
-    ({"coeff_at": 120}, [(120, 0.05, "10"), (80, 0.05, "20")])])
+    ({"wide_at": 0}, [(1, (0.1,), "10"), (199, (0.05, 0.1), "10")]),
+    ({"wide_at": 1}, [(1, (0.05,), "10"), (199, (0.05, 0.1), "10")]),
+    ({"wide_at": 120}, [(120, (0.05,), "10"), (80, (0.05, 0.1), "10")]),
+    ({"coeff_at": 120}, [(120, (0.05,), "10"), (80, (0.05,), "20")])])
 def test_a_pass_that_changes_the_contact_is_a_stage_of_its_own(change, stages):
     deck = reader.read_executed(_loop(200, **change), [{2: {(0.5, 2.0)}}])
     assert _stages(deck) == stages
@@ -49,5 +51,5 @@ def test_a_pass_that_changes_the_contact_is_a_stage_of_its_own(change, stages):
 def test_pours_after_the_last_run_are_read_as_settings_no_run_used():
     tail = [Executed((None, 5), "fix p all pour 2 1 7 region r diam one 0.3 dens 1 1")]
     deck = reader.read_executed(_loop(20) + tail, [{2: {(0.5, 2.0)}}])
-    assert _stages(deck) == [(20, 0.05, "10")]
-    assert deck.radius[1] == 0.15
+    assert _stages(deck) == [(20, (0.05,), "10")]
+    assert (0.15, 1.0) in deck.sizes[1]

@@ -16,7 +16,7 @@ import re
 from .beside import BESIDE
 from .meeting import MOVERS, neigh_modify, special_bonds
 from .stream import SEEDED
-from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, types, unlabeled
+from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, types, unlabeled
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
 from ..engines.lammps.deck import DEFAULT_DT
@@ -183,6 +183,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             last_block, block = (block if plain_run and recorded else None), []
     for held_back, held_cmd in pending:          # pours after the last run: settings no run used
         _execute(deck, held_back, held_cmd.text, held_cmd.loc, read_file)
+    if deck.unmapped and not deck.stages:
+        raise DeckError(*deck.unmapped)  # the deck's pair style, though no run used it
     if not deck.stages:
         if not atoms:
             # no run and no end reached: "no particle" would be a guess, never a reading
@@ -228,6 +230,8 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     deck.atoms = deck.atoms or bool(atoms)
     deck.present |= set(atoms)
     for t, sizes in atoms.items():
+        # a pour's spheres arrive as its run goes, never in the engine's skipped run: with the held
+        sizes = set(sizes) | deck.poured.get(t, set())
         radii = {r for r, _ in sizes}
         dens = {rho for _, rho in sizes}
         deck.missing.pop(t, None)
@@ -373,8 +377,10 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.coeffs, deck.gran = {}, {}
     deck.style = style
     if style not in PAIR_STYLES:
-        raise DeckError(where, line, f"pair_style {style} is not mapped (the reader maps "
-                                     f"{', and '.join(d.MAPPED for d in DIALECTS.values())})")
+        deck.unmapped = (where, line, f"pair_style {style} is not mapped (the reader maps "
+                                      f"{', and '.join(d.MAPPED for d in DIALECTS.values())})")
+        return
+    deck.unmapped = ()
     deck.code = PAIR_STYLES[style].ENGINE
     PAIR_STYLES[style].pair_style(deck, words, where, line)
 
@@ -395,6 +401,8 @@ def _idle(sub: str, args: list) -> bool:
 
 
 def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    if deck.unmapped:
+        return                           # its coefficients are the engine's to check
     if deck.code not in DIALECTS:
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     if deck.hybrid and len(words) > 3:
@@ -487,6 +495,8 @@ def _coarsest_dt(stage: Deck, deck: Deck) -> None:
 
 def _stage(deck: Deck, loc, line: str) -> None:
     """A run: the contact settings it sees, kept where they differ from the previous run's."""
+    if deck.unmapped:
+        raise DeckError(*deck.unmapped)
     key = contact_key(deck)
     if deck.stages and deck.stages[-1][2] == key:
         deck.stages[-1][0].append((loc, line))
@@ -683,22 +693,27 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
         elif tok == "dens":
             densities = {value(k + 1), value(k + 2)}
     deck.sizes.pop(t, None)
+    if deck.held is not None:
+        _poured(deck, t, diameters, densities, "poly" in tokens)
+        return
     if len(diameters) == 1 and len(densities) == 1:
         deck.radius[t], deck.density[t] = 0.5 * diameters.pop(), densities.pop()
         return
-    deck.radius.pop(t, None)
+    deck.radius.pop(t, None)       # the hand reader's decks: no range audited
     deck.density.pop(t, None)
-    if deck.held is None:          # the hand reader's decks: no range audited
-        what = "diameters" if len(diameters) > 1 else "densities"
-        lo, hi = min(diameters if len(diameters) > 1 else densities), max(diameters if len(diameters) > 1
-                                                                            else densities)
-        deck.missing[t] = f"fix {words[1]} pours {what} from {lo:g} to {hi:g}"
-        return
-    # a range (uniform between its ends) sampled with its ends; poly's diameters themselves
-    if "poly" not in tokens and len(diameters) > 1:
+    what = "diameters" if len(diameters) > 1 else "densities"
+    lo, hi = min(diameters if len(diameters) > 1 else densities), max(diameters if len(diameters) > 1
+                                                                        else densities)
+    deck.missing[t] = f"fix {words[1]} pours {what} from {lo:g} to {hi:g}"
+
+
+def _poured(deck: Deck, t: int, diameters: set, densities: set, poly: bool) -> None:
+    """The sizes a pour adds to type t (a range, uniform between its ends, sampled with its ends;
+    poly's diameters themselves), with every other source of t's sizes (:func:`pour_into`)."""
+    if not poly and len(diameters) > 1:
         lo, hi = min(diameters), max(diameters)
         diameters = {lo + (hi - lo) * k / (_RANGE_SAMPLES - 1) for k in range(_RANGE_SAMPLES)}
-    deck.sizes[t] = sorted({(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))})
+    pour_into(deck, t, {(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))})
 
 
 #: Sizes sampled across a pour's range of diameters, its ends included: a law whose eps is not

@@ -19,7 +19,7 @@ from ...core.errors import InputFileError, ParameterError
 from ..calibrate import calibrate
 from ..pair import Pair
 
-__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number",
+__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number", "pour_into",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e"]
 
 
@@ -73,6 +73,7 @@ class Deck:
     model: str = ""                               # LIGGGHTS normal model
     limit_force: bool = False
     absolute_damping: bool = False                # LIGGGHTS hooke/stiffness: gamman_abs, not m gamman
+    cohesion: str = ""                            # LIGGGHTS cohesion sjkr|sjkr2 of the pair style, "" for none
     style_line: tuple = ()                        # ((file, line number), text) of pair_style
     unknown: list = field(default_factory=list)   # (file or None, line number, text, why) not understood
     ignored: list = field(default_factory=list)   # what the audit passed over on purpose
@@ -97,6 +98,9 @@ class Deck:
     # group ID -> [(the command that inserts atoms into it, their types or None where not known)]
     filled_groups: dict = field(default_factory=dict)
     style: str = ""                               # the pair style (LAMMPS keeps coefficients for the same)
+    # (where, text, why) of a pair style the reader does not map, in force until another replaces
+    # it: refused at a run that uses it, and no run may (a deck replacing it before its first run)
+    unmapped: tuple = ()
     reset: tuple = ()                             # (loc, text) of a pair_style of another that discarded them
     atom_style_loc: tuple = ()                    # (file, line number) of atom_style
     # types known to hold atoms (create_atoms, read_data, a pour or deposit that has run), and
@@ -119,6 +123,9 @@ class Deck:
     # or a sample of a pour's ranges, their ends included); ``at`` the two spheres a pair row is
     # audited at then, ((R1, rho1), (R2, rho2)), else ()
     sizes: dict = field(default_factory=dict)
+    # type -> {(radius, density)} its inserting fixes (a LAMMPS pour, a LIGGGHTS sphere template) add
+    # to it as the runs go, kept beside the atoms the engine holds (which a pour's never are)
+    poured: dict = field(default_factory=dict)
     at: tuple = ()
     sampled: dict = field(default_factory=dict)   # type -> how many sizes it held where ``sizes`` is a sample
     # LAMMPS pair_style hybrid or hybrid/overlay ("" otherwise), its granular sub-style, and the
@@ -447,6 +454,44 @@ def labelmap(deck: Deck, words: list, where: str, line: str) -> None:
 
 
 # ---------------------------------------------------------------------------- what the audit needs
+def pour_into(deck: Deck, t: int, sizes: set) -> None:
+    """Sizes an inserting fix adds to type t as the runs go (a LAMMPS pour, a LIGGGHTS sphere
+    template), kept with those every earlier one added and with the atoms of t the engine held at
+    the last run: t's radius and density where all share one, else all its sizes.
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck as read so far; ``poured``, ``radius``, ``density`` and ``sizes`` change.
+    t : int
+        The type filled.
+    sizes : set of tuple
+        The (radius, density) of the spheres the fix inserts.
+
+    Returns
+    -------
+    None
+        The deck changes in place.
+
+    Examples
+    --------
+    >>> deck = Deck(held={1: [(0.01, 3000.0)]})
+    >>> pour_into(deck, 1, {(0.005, 1000.0)})
+    >>> deck.sizes[1], 1 in deck.radius
+    ([(0.005, 1000.0), (0.01, 3000.0)], False)
+    """
+    poured = deck.poured.setdefault(t, set())
+    poured |= sizes
+    every = poured | set((deck.held or {}).get(t, ()))
+    deck.sizes.pop(t, None)
+    if len(every) == 1:
+        (deck.radius[t], deck.density[t]), = every
+        return
+    deck.radius.pop(t, None)
+    deck.density.pop(t, None)
+    deck.sizes[t] = sorted(every)
+
+
 def spheres(deck: Deck, i: int, j: int) -> Pair:
     """The two spheres of types i and j, or the refusal naming what the deck lacks for them.
 

@@ -15,7 +15,7 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 
 from __future__ import annotations
 
-from ...dialect.state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, spheres
+from ...dialect.state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, pour_into, spheres
 from ....core.errors import ParameterError
 from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODELS, LIGGGHTS_MODULUS, LIGGGHTS_NU,
                       STIFFNESS_MODELS, STIFFNESS_UNITS, liggghts_accepts_e, liggghts_contact, liggghts_e,
@@ -64,13 +64,36 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     """
     # every pair_style line sets the style afresh: LIGGGHTS' default for what it does not name
     # (limitForce off; checked: on, then a line without it, gives eps = e)
+    pairs = words[2:]
+    deck.cohesion = ""
+    for i in range(0, len(pairs) - 1, 2):
+        if pairs[i] == "cohesion" and pairs[i + 1] in _COHESION:
+            # its force is cohesionEnergyDensity times the contact area: audited where that is 0
+            deck.cohesion = pairs[i + 1]
+            pairs = pairs[:i] + pairs[i + 2:]
+            break
     try:
-        deck.model, deck.limit_force, deck.absolute_damping = _normal(words[2:])
+        deck.model, deck.limit_force, deck.absolute_damping = _normal(pairs)
     except ValueError as why:
         raise DeckError(where, line, str(why)) from None
     for i in range(2, len(words) - 1, 2):
         if words[i] in ("tangential", "rolling_friction", "tangential_damping"):
             deck.ignored.append(f"{words[i]} {words[i + 1]}")
+
+
+#: LIGGGHTS cohesion models whose force is the cohesionEnergyDensity of the pair times a contact area
+_COHESION = ("sjkr", "sjkr2")
+
+
+def _no_cohesion(deck: Deck, i: int, j: int) -> None:
+    """Refuses a pair a cohesion model gives a force: its cohesionEnergyDensity is not 0."""
+    if not deck.cohesion:
+        return
+    matrix, loc = _matrix(deck, "cohesionEnergyDensity")
+    k = matrix[(i - 1) * deck.ntypes + (j - 1)]
+    if k != 0:
+        raise DeckError(place(loc), f"types {i} {j}", f"cohesion {deck.cohesion} with cohesionEnergyDensity {k:g} "
+                                                      "adds an attractive normal force, which is not mapped")
 
 
 def _normal(pairs: list) -> tuple:
@@ -123,7 +146,7 @@ def _property_global(deck: Deck, words: list, where: str, line: str, loc) -> Non
 
 def _sphere_template(deck: Deck, words: list, where: str, line: str, loc) -> None:
     """fix ID group particletemplate/sphere seed atom_type T density constant RHO radius constant R."""
-    tokens, t = words[5:], None
+    tokens, t, size = words[5:], None, {}
     for k, tok in enumerate(tokens):
         if tok == "atom_type":
             if k + 1 == len(tokens):
@@ -131,11 +154,14 @@ def _sphere_template(deck: Deck, words: list, where: str, line: str, loc) -> Non
             t = atom_type(tokens[k + 1], where, line)
         elif tok in ("density", "radius") and k + 2 < len(tokens) and tokens[k + 1] == "constant" \
                 and t is not None:
-            (deck.density if tok == "density" else deck.radius)[t] = number(tokens[k + 2], where, line)
+            size[tok] = (deck.density if tok == "density" else deck.radius)[t] = number(tokens[k + 2], where, line)
         elif tok in ("density", "radius") and k + 1 < len(tokens) and t is not None:
             # other distributions (gaussian, ...) give no single value: the type is unset, and says why
             (deck.density if tok == "density" else deck.radius).pop(t, None)
             deck.missing[t] = f"fix {words[1]} gives type {t} a {tok} from a {tokens[k + 1]} distribution"
+    if len(size) == 2 and deck.held is not None:
+        # its spheres may be inserted after the one step the audit runs: with the type's other sizes
+        pour_into(deck, t, {(size["radius"], size["density"])})
 
 
 def _mesh(deck: Deck, words: list, where: str, line: str, loc) -> None:
@@ -260,7 +286,10 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     ('LIGGGHTS hertz, limitForce off', 0.9, 'fix m all property/global coefficientRestitution peratomtypepair 1 0.9')
     """
     pair = spheres(deck, i, j)
+    _no_cohesion(deck, i, j)
     model = _label(deck.model, deck.limit_force, deck.absolute_damping)
+    if deck.cohesion:
+        model += f", cohesion {deck.cohesion} (cohesionEnergyDensity 0 here: no force)"
     if deck.model in STIFFNESS_MODELS:
         # no e typed: the stiffness and damping are, and no one line gives the pair an eps
         contact = _stiffness(deck, deck.model, deck.limit_force, deck.absolute_damping, pair, i, j)
