@@ -156,7 +156,9 @@ plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.l
                                    "axes.titlesize"), 10.5))
 fig, (top, bottom) = plt.subplots(2, 1, figsize=(0.62 * TEXT_WIDTH_PT / 72.27, 3.7), sharex=True,
                                gridspec_kw={"height_ratios": [2, 1]})   # 0.62: the article's width
-style = {"force": ("C0", "-", "o", "limit_damping (force rule)"), "overlap": ("C3", "--", "s", "default (overlap rule)")}
+# the LAMMPS keys name the option only (its rule is the line of the same colour): longer, the legend covered
+# the points at g >= 1
+style = {"force": ("C0", "-", "o", "limit_damping"), "overlap": ("C3", "--", "s", "default")}
 for rule, _ in RULES:
     colour, ls, marker, label = style[rule]
     top.plot(curves["g"], curves[f"eps_{rule}"], ls, color=colour, lw=1.4, label=f"ours, {rule} rule")
@@ -165,7 +167,11 @@ for rule, _ in RULES:
     bottom.plot(d["g"], np.abs(d["relative_deviation"]), marker + ls, color=colour, mfc="none", ms=6, lw=1.0)
 top.set_xscale("log")
 top.set_ylabel(r"restitution coefficient $\varepsilon$")
-top.legend(loc="lower left", fontsize=9)   # no exponent or index in it
+# below the curves, a band for the legend: beside them it covered the points at g >= 1
+lo = min(curves[f"eps_{rule}"].min() for rule, _ in RULES)
+hi = max(curves[f"eps_{rule}"].max() for rule, _ in RULES)
+top.set_ylim(lo - 0.75 * (hi - lo), hi + 0.05 * (hi - lo))
+top.legend(loc="lower left", fontsize=9, frameon=False)   # no exponent or index in it
 bottom.set_yscale("log")
 bottom.set_xlabel(r"impact speed $g$ (m/s)")
 bottom.set_ylabel("|LAMMPS / ours - 1|")

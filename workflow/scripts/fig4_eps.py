@@ -21,6 +21,7 @@ plt = setup_matplotlib()
 plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
                                    "axes.titlesize"), 10.5))
 
+LEGEND_BAND = 0.6
 STYLE = {"printed": dict(ls="--", color="tab:red"), "derived": dict(ls="-.", color="tab:blue"),
          "fitted": dict(ls=":", color="tab:green", lw=2.2)}
 
@@ -78,13 +79,15 @@ def draw_eps_of_g():
     # Room for every curve, but not for a relation that runs off to 0 or infinity.
     values = np.concatenate(drawn)
     values = values[np.isfinite(values) & (values > 0)]
-    ax.set_ylim(max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0))
+    lo, hi = max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0)
+    # and below them a band of 0.6 of that range for the legend, which covered curves at full width otherwise
+    ax.set_ylim(lo * (lo / hi) ** LEGEND_BAND, 3 * hi)   # 3: room for the label of g above the curves
     # the label sits at the top of its line, where no curve runs at g = 0.1 (the legend may take the foot)
     ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -3),
                 textcoords="offset points", va="top", color="grey")
     ax.set_xlim(curves["g"].min(), curves["g"].max())
-    # where the curves leave room differs from variant to variant: matplotlib's "best" is the place that
-    # covers the fewest points of the curves
+    # which corner of that band is free differs from variant to variant: matplotlib's "best" is the place
+    # that covers the fewest points of the curves
     return finish(fig, ax, r"impact speed $g$ (in the units of $D_1$, $D_2$)", "best")
 
 
