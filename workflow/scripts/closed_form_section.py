@@ -14,7 +14,8 @@ import numpy as np
 import pandas as pd
 from restitution_workflow.latex import esc, frac_tex, sci
 from restitution_workflow.law_names import law_name
-from restitution_workflow.pipeline import read_json, save_figure, setup_matplotlib, start, write_text
+from restitution_workflow.pipeline import (TEXT_WIDTH_PT, read_json, save_figure, setup_matplotlib,
+                                          start, write_text)
 
 from restitution.core import asymptotics as asy
 from restitution.core.collision import OMEGA_RANGE, collide
@@ -46,23 +47,31 @@ ref = curve["eps_reference"].to_numpy()
 law_viscous = V.k * om
 law_elastic = 1.0 - E.C1 * om ** (-float(A_))
 rel = lambda x: np.abs(x / ref - 1.0)  # noqa: E731
-fig, ax = plt.subplots(figsize=(7.6, 3.0))   # wide and low, the legend beside the axes (saves height)
+# drawn at the size it prints (width: a fraction of TEXT_WIDTH_PT): 10.5 pt puts tick exponents and legend
+# indices (0.7 of it) above 7 pt
+plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
+                                   "axes.titlesize"), 10.5))
+# the text width, the legend inside in the empty band between the approximation's error (below 1e-4) and the
+# laws' (above 1e-2)
+fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 2.7))
 ax.loglog(curve["g"], np.maximum(rel(curve["eps_closed_form"].to_numpy()), 1e-17), color="tab:orange", lw=2.0,
           label="uniform approximation")
 rel_loss = lambda x: np.abs((1.0 - x) / (1.0 - ref) - 1.0)  # noqa: E731  (the elastic law is one for 1 - eps)
 ax.loglog(curve["g"], rel_loss(law_elastic), color="tab:green", ls="--", lw=1.5,
-          label=r"elastic law $1 - C_1\mu$ (error in $1 - \varepsilon$)")
+          label=r"elastic law $1 - C_1\mu$")
 ax.loglog(curve["g"], rel(law_viscous), color="tab:blue", ls="-.", lw=1.5, label=r"viscous law $k\Omega$")
 if "eps_printed" in curve and curve["eps_printed"].notna().any():
     ax.loglog(curve["g"], rel(curve["eps_printed"].to_numpy()), color="tab:red", ls=":", lw=2.0,
               label="Kim's printed relation")
 ax.set_xlabel(r"impact speed $g$ (in the units of $D_1$, $D_2$)")
 # one axis, two quantities: the elastic law is a law for 1 - eps, and its curve is the error in that
-ax.set_ylabel(r"relative error in $\varepsilon$ (elastic law: in $1 - \varepsilon$)")
-ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$", fontsize=10)
-ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), frameon=False)
-fig.set_layout_engine("tight")   # redone when save_figure resizes
-save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=0.95)
+ax.set_ylabel("relative error in $\\varepsilon$\n(elastic law: in $1 - \\varepsilon$)")
+ax.set_ylim(1e-9, 1e4)
+ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$")
+ax.legend(loc="center", bbox_to_anchor=(0.5, 0.41), ncol=2, frameon=False, borderaxespad=0, handlelength=2.5)
+fig.set_layout_engine("tight")
+save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=1.0)
+plt = setup_matplotlib()   # the style of the other figures again
 err_elastic_gmin, err_viscous_gmax = float(rel_loss(law_elastic)[0]), float(rel(law_viscous)[-1])
 LAW_TOL = 0.01
 ok_el = np.nonzero(rel_loss(law_elastic) <= LAW_TOL)[0]
@@ -85,8 +94,10 @@ for row, (fs, errs, rule) in enumerate(((forms, errors, "force"), (overlap_forms
     for i, name in enumerate(p.variants):
         ax = axes[row, i]
         if row == 0:
-            ax.set_title(rf"{law_name(name, tex=False)} ($\alpha = {p.exponents[name]['alpha']}$, "
-                         rf"$\gamma = {p.exponents[name]['gamma']}$)", fontsize=8.5)
+            # the law's name over its exponents: on one line the three titles ran into each other
+            ax.set_title(rf"{law_name(name, tex=False)}" "\n"
+                         rf"$\alpha = {p.exponents[name]['alpha']}$, $\gamma = {p.exponents[name]['gamma']}$",
+                         fontsize=8.5)
         if not fs[name]["available"]:
             ax.text(0.5, 0.5, "no form:\nthe bodies can stick" if rule == "overlap" else "no form",
                     transform=ax.transAxes, ha="center", va="center", fontsize=8.5)
@@ -272,7 +283,8 @@ for name in p.variants:
     f = forms[name]
     ab = rf"{frac(p.exponents[name]['alpha'])} & {frac(p.exponents[name]['gamma'])}"
     if f["available"]:
-        rows.append(rf"{stacked(law_name(name))} & {ab} & {sci(f['b'], 12)} & {sci(f['c3'], 12)} & {float(f['sigma']):g} & "
+        # the name on one line: stacked, it stood above its row's numbers
+        rows.append(rf"{esc(law_name(name))} & {ab} & {sci(f['b'], 12)} & {sci(f['c3'], 12)} & {float(f['sigma']):g} & "
                     rf"{f['m0']} & {f['m1']} & {sci(f['bound_eps'], 2)}, {sci(f['bound_one_minus_eps'], 2)} \\")
     else:
         rows.append(rf"{esc(law_name(name))} & {ab} & \multicolumn{{6}}{{l}}{{none: {esc(f['reason'])}}} \\")
@@ -310,7 +322,8 @@ coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) if j < l
 
 def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list) -> str:
     """A form's table: one row per variant, then its numbers in one column per variant."""
-    return "\n".join([rf"\begin{{tabular}}{{{cols}}}", r"\toprule", header + r" \\", r"\midrule", *rows,
+    # 4pt between columns: with the law's name on one line the default 6pt made the first table 17pt too wide
+    return "\n".join([r"\setlength{\tabcolsep}{4pt}", rf"\begin{{tabular}}{{{cols}}}", r"\toprule", header + r" \\", r"\midrule", *rows,
                       r"\bottomrule", r"\end{tabular}", "", r"\vspace{1ex}",
                       rf"\begin{{tabular}}{{l{'r' * len(names)}}}", r"\toprule",
                       " & " + " & ".join(stacked(law_name(n)) for n in names) + r" \\", r"\midrule", *coef_rows,
@@ -319,7 +332,8 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
 
 force_tables = two_tables(r"lllllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
                           r"error figure: $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
-overlap_tables = two_tables(r">{\raggedright\arraybackslash}p{2.1cm}llllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar N + 1$ & "
+# the force law's column as wide as its longest name (a fixed 2.1 cm broke Hertz--Kuwabara--Kono over three lines)
+overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar N + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""

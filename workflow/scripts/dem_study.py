@@ -15,7 +15,8 @@ import numpy as np
 import pandas as pd
 from restitution_workflow.engine_record import LammpsRecorder, lammps_version
 from restitution_workflow.latex import esc, fixed, sci
-from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
+from restitution_workflow.pipeline import (TEXT_WIDTH_PT, save_figure, setup_matplotlib, start, write_csv,
+                                          write_text)
 
 from restitution.dem.calibrate import calibrate
 from restitution.dem.contact import Contact
@@ -149,8 +150,15 @@ write_text(out["values"], "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in m
 
 # %% figure
 plt = setup_matplotlib()
-fig, (top, bottom) = plt.subplots(2, 1, figsize=(5.6, 5.4), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
-style = {"force": ("C0", "-", "o", "limit_damping (force rule)"), "overlap": ("C3", "--", "s", "default (overlap rule)")}
+# drawn at the size it prints (width: a fraction of TEXT_WIDTH_PT): 10.5 pt puts tick exponents and legend
+# indices (0.7 of it) above 7 pt
+plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
+                                   "axes.titlesize"), 10.5))
+fig, (top, bottom) = plt.subplots(2, 1, figsize=(0.62 * TEXT_WIDTH_PT / 72.27, 3.7), sharex=True,
+                               gridspec_kw={"height_ratios": [2, 1]})   # 0.62: the article's width
+# the LAMMPS keys name the option only (its rule is the line of the same colour): longer, the legend covered
+# the points at g >= 1
+style = {"force": ("C0", "-", "o", "limit_damping"), "overlap": ("C3", "--", "s", "default")}
 for rule, _ in RULES:
     colour, ls, marker, label = style[rule]
     top.plot(curves["g"], curves[f"eps_{rule}"], ls, color=colour, lw=1.4, label=f"ours, {rule} rule")
@@ -159,9 +167,13 @@ for rule, _ in RULES:
     bottom.plot(d["g"], np.abs(d["relative_deviation"]), marker + ls, color=colour, mfc="none", ms=6, lw=1.0)
 top.set_xscale("log")
 top.set_ylabel(r"restitution coefficient $\varepsilon$")
-top.legend(loc="lower left")
+# below the curves, a band for the legend: beside them it covered the points at g >= 1
+lo = min(curves[f"eps_{rule}"].min() for rule, _ in RULES)
+hi = max(curves[f"eps_{rule}"].max() for rule, _ in RULES)
+top.set_ylim(lo - 0.75 * (hi - lo), hi + 0.05 * (hi - lo))
+top.legend(loc="lower left", fontsize=9, frameon=False)   # no exponent or index in it
 bottom.set_yscale("log")
 bottom.set_xlabel(r"impact speed $g$ (m/s)")
 bottom.set_ylabel("|LAMMPS / ours - 1|")
 fig.tight_layout()
-save_figure(fig, out["pdf"], out["png"], width=0.75)
+save_figure(fig, out["pdf"], out["png"], width=0.62)

@@ -58,16 +58,17 @@ ax.annotate(r"$\tilde\tau_b$", (inv["tau_tilde_b"], 0.05 * x_max), xytext=(4, 0)
 ax.set_ylim(-0.1 * x_max, p.plot["y_margin"] * x_max)
 ax.set_xlim(0.0, inv["tau_tilde_end"])
 ax.set_ylabel(r"inverse deformation $\tilde x$")
-fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False)
 top = ax.secondary_xaxis("top", functions=(lambda s: summary["tau_c"] - s / t_scale,
                                            lambda t: (summary["tau_c"] - t) * t_scale))
 top.set_xlabel(r"forward time $\tau = \tau_c - \tilde\tau\,\varepsilon^{-\gamma/(\gamma+1)}$")
-ax.text(0.02, 0.97, rf"inverse collision, $g = {summary['g']:g}$, $\tilde\Omega = {omega_t:.4f}$;" "\n"
-        rf"each $\tilde x_n$ to $\tilde\tau^{{{p.max_power}}}$", transform=ax.transAxes, ha="left",
-        va="top", fontsize=11)   # its exponent >= 7 pt printed at 0.8 of the text width
+# what is drawn, as the legend's title below the axes: inside them the curves ran through it
+fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False,
+           title=rf"inverse collision, $g = {summary['g']:g}$, $\tilde\Omega = {omega_t:.4f}$; "
+                 rf"each $\tilde x_n$ to $\tilde\tau^{{{p.max_power}}}$",
+           title_fontsize=11)   # its exponent >= 7 pt printed at 0.75 of the text width
 ax_err.set_ylim(1e-10, 10)
 ax_err.set_xlabel(r"inverse time $\tilde\tau$ (from the end of contact)")
 ax_err.set_ylabel(r"$|\tilde x_{\rm series} - \tilde x_{\rm ref}|$")   # ref: the grey curve where drawn
 fig.align_ylabels()
-fig.set_layout_engine("tight", rect=(0, 0.17, 1, 1))   # redone when save_figure resizes
+fig.set_layout_engine("tight", rect=(0, 0.2, 1, 1))   # redone when save_figure resizes
 save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.75)   # the variants' width; the main one: 0.8

@@ -12,11 +12,16 @@
 # %%
 import numpy as np
 import pandas as pd
-from restitution_workflow.pipeline import save_figure, setup_matplotlib, start
+from restitution_workflow.pipeline import TEXT_WIDTH_PT, save_figure, setup_matplotlib, start
 
 start(snakemake)
 plt = setup_matplotlib()
+# drawn at the size it prints (width: a fraction of TEXT_WIDTH_PT): 10.5 pt puts tick exponents and legend
+# indices (0.7 of it) above 7 pt
+plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
+                                   "axes.titlesize"), 10.5))
 
+LEGEND_BAND = 0.6
 STYLE = {"printed": dict(ls="--", color="tab:red"), "derived": dict(ls="-.", color="tab:blue"),
          "fitted": dict(ls=":", color="tab:green", lw=2.2)}
 
@@ -26,21 +31,21 @@ curves = pd.read_csv(snakemake.input.curves)
 errors = pd.read_csv(snakemake.input.errors, keep_default_na=False)
 
 
-def finish(fig, ax, xlabel):
-    """Axis labels, and the legend beside the axes (inside, it covered a curve for some variants; below,
-    it left the page half empty)."""
+def finish(fig, ax, xlabel, loc):
+    """Axis labels, and the legend inside the axes at ``loc``, a corner the curves leave empty (beside the
+    axes, it left the plot a third of the text width)."""
     ax.set_xlabel(xlabel)
     ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
-    ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), frameon=False,
-              title=rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
-    fig.set_layout_engine("tight")   # redone when save_figure resizes
+    ax.set_title(rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
+    ax.legend(loc=loc, frameon=False)
+    fig.set_layout_engine("tight")
     return fig
 
 
 def draw_eps_of_omega():
     """alpha - 1 - 2 gamma = 0: eps(Omega) on the validation grid, this material's Omega marked."""
     known = pd.read_csv(snakemake.input.known)
-    fig, ax = plt.subplots(figsize=(8.0, 3.0))
+    fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 2.8))
     ax.loglog(known["omega"], known["eps_reference"], color="black", lw=2.6, label="reference integration")
     closed = [c for c in known.columns if c.startswith("eps_") and c != "eps_reference"]
     for c, marker in zip(closed, "osD^"):
@@ -49,12 +54,12 @@ def draw_eps_of_omega():
     w = float(curves["omega"].iloc[0])
     ax.plot([w], [float(curves["eps_reference"].iloc[0])], "o", color="tab:red", ms=8,
             label=rf"this material: $\Omega = {w:.4g}$ for every $g$")
-    return finish(fig, ax, r"$\Omega$ (here independent of the impact speed)")
+    return finish(fig, ax, r"$\Omega$ (here independent of the impact speed)", "lower right")
 
 
 def draw_eps_of_g():
     """eps(g) from the reference and from every relation."""
-    fig, ax = plt.subplots(figsize=(8.0, 3.0))
+    fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 2.8))
     ax.plot(curves["g"], curves["eps_reference"], color="black", lw=2.6, label="reference integration")
     drawn = [curves["eps_reference"].to_numpy()]
     for _, rel in errors.iterrows():
@@ -74,14 +79,18 @@ def draw_eps_of_g():
     # Room for every curve, but not for a relation that runs off to 0 or infinity.
     values = np.concatenate(drawn)
     values = values[np.isfinite(values) & (values > 0)]
-    ax.set_ylim(max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0))
-    # the label sits at the foot of its line, where no curve runs (the curves keep to the upper part)
-    ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 0.0), xycoords=("data", "axes fraction"), xytext=(3, 3),
-                textcoords="offset points", color="grey", fontsize=10)
+    lo, hi = max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0)
+    # and below them a band of 0.6 of that range for the legend, which covered curves at full width otherwise
+    ax.set_ylim(lo * (lo / hi) ** LEGEND_BAND, 3 * hi)   # 3: room for the label of g above the curves
+    # the label sits at the top of its line, where no curve runs at g = 0.1 (the legend may take the foot)
+    ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -3),
+                textcoords="offset points", va="top", color="grey")
     ax.set_xlim(curves["g"].min(), curves["g"].max())
-    return finish(fig, ax, r"impact speed $g$ (in the units of $D_1$, $D_2$)")
+    # which corner of that band is free differs from variant to variant: matplotlib's "best" is the place
+    # that covers the fewest points of the curves
+    return finish(fig, ax, r"impact speed $g$ (in the units of $D_1$, $D_2$)", "best")
 
 
 # %%
 fig = draw_eps_of_omega() if curves["omega"].nunique() == 1 else draw_eps_of_g()
-save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.9)   # the article and the variants include it at 0.9
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=1.0)   # the article and the variants include it at 1.0

@@ -14,8 +14,7 @@ import math
 
 import numpy as np
 import pandas as pd
-from restitution_workflow.atomic import atomic_path
-from restitution_workflow.pipeline import PDF_METADATA, PNG_METADATA, setup_matplotlib, start
+from restitution_workflow.pipeline import TEXT_WIDTH_PT, save_figure, setup_matplotlib, start
 
 from restitution.audit import stability as st
 
@@ -26,6 +25,10 @@ except ImportError:  # pragma: no cover - the limits are another stage's work
 
 start(snakemake)
 plt = setup_matplotlib()
+# drawn at the size it prints (width: a fraction of TEXT_WIDTH_PT): 10.5 pt puts tick exponents and legend
+# indices (0.7 of it) above 7 pt
+plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
+                                   "axes.titlesize"), 10.5))
 spec = st.AtlasSpec.from_config(snakemake.params.spec)
 atlas = pd.read_csv(snakemake.input.atlas, dtype={"alpha": str, "gamma": str}, keep_default_na=False,
                     na_values=["", "nan", "NaN"])
@@ -42,7 +45,7 @@ styles = {a: dict(ls=STYLES[i % len(STYLES)], marker=MARKERS[i % len(MARKERS)], 
 # no row of eps itself: on log axes the pairs' curves coincide there (the caption gives their spread), so
 # the rows that tell the alphas apart get its height
 rows = ("one_minus", "tau_c", "error")
-fig, axes = plt.subplots(len(rows), len(gammas), figsize=(7.2, 8.2), sharex=True, sharey="row",
+fig, axes = plt.subplots(len(rows), len(gammas), figsize=(TEXT_WIDTH_PT / 72.27, 7.6), sharex=True, sharey="row",
                          squeeze=False)
 w_lo, w_hi = spec.omega_min, spec.omega_max
 viscous_w = np.logspace(np.log10(w_lo), -2, 60)
@@ -76,17 +79,17 @@ for j, g in enumerate(gammas):
             axes[1, j].plot(elastic_w, el.tau_c(elastic_w), "-", color="black", lw=0.6, alpha=0.6)
             if vl.kind == "force":
                 axes[1, j].plot(viscous_w, vl.tau_c(viscous_w), "-", color="black", lw=0.6, alpha=0.6)
-    axes[0, j].set_title(rf"$\gamma = {frac(g)}$", fontsize=10)
+    axes[0, j].set_title(rf"$\gamma = {frac(g)}$")
     axes[2, j].axhline(max(spec.accuracy_for(a, g) for a in spec.alphas), color="grey", lw=1.0)
 
 for ax in axes.flat:
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.grid(True, which="major", alpha=0.3)
-    ax.tick_params(labelsize=11.5)   # exponents (0.7 of it) >= 7 pt printed at the text width (7.2 in -> 6.3 in)
-    ax.set_xticks([1e-6, 1e-3, 1, 1e3, 1e6][:: 1 if len(gammas) < 3 else 2])   # off the panel edges: labels do not collide
+    # two labels, well inside the panel: at its edges the labels of neighbouring panels ran into each other
+    ax.set_xticks([1e-4, 1e4] if len(gammas) > 2 else [1e-6, 1e-3, 1, 1e3, 1e6])
 for ax, label in zip(axes[:, 0], (r"$1-\varepsilon$", r"$\tau_c$", "relative error")):
-    ax.set_ylabel(label, fontsize=12)
+    ax.set_ylabel(label)
 axes[2, 0].set_ylim(1e-17, 1e-6)
 for ax in axes[-1]:
     ax.set_xlabel(r"$\Omega$")
@@ -101,10 +104,13 @@ handles += [plt.Line2D([], [], ls="-", color="black", lw=0.6, alpha=0.6),
 tight_exp = round(math.log10(spec.tight_rtol))
 labels += ["limits", rf"against tolerance $10^{{{tight_exp}}}$", "against the high-precision integrator",
            "against the closed forms", "stated accuracy"]
-fig.legend(handles, labels, loc="lower center", ncol=5, fontsize=8.5, frameon=False, bbox_to_anchor=(0.5, 0.0))
-fig.tight_layout(rect=(0, 0.05, 1, 1), h_pad=0.4, w_pad=0.3)
+# the curves' key in one row, the markers' key in two below it
+n_lines = len(alphas) + 1
+fig.legend(handles[:n_lines], labels[:n_lines], loc="lower center", ncol=n_lines, frameon=False,
+           bbox_to_anchor=(0.5, 0.055), columnspacing=1.0, handletextpad=0.4)
+fig.legend(handles[n_lines:], labels[n_lines:], loc="lower center", ncol=2, frameon=False, bbox_to_anchor=(0.5, 0.0),
+           columnspacing=1.2, handletextpad=0.4)
+fig.tight_layout(rect=(0, 0.1, 1, 1), h_pad=0.4, w_pad=0.3)
 
 # %%
-for path, meta in ((snakemake.output.pdf, PDF_METADATA), (snakemake.output.png, PNG_METADATA)):
-    with atomic_path(path) as tmp:
-        fig.savefig(tmp, metadata=meta, bbox_inches="tight", format=path.rsplit(".", 1)[-1])
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=1.0)

@@ -14,7 +14,8 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 from restitution_workflow.latex import esc, frac_tex, sci
-from restitution_workflow.pipeline import save_figure, setup_matplotlib, start, write_csv, write_text
+from restitution_workflow.pipeline import (TEXT_WIDTH_PT, save_figure, setup_matplotlib, start, write_csv,
+                                          write_text)
 from restitution.core.problem import Problem
 
 from restitution.core.collision import collide
@@ -136,8 +137,13 @@ write_text(out.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macr
 
 # %% figure: the two rules over Omega, and how fast the law is approached
 plt = setup_matplotlib()
-fig, (left, right) = plt.subplots(1, 2, figsize=(7.2, 4.3))
+# drawn at the size it prints (width: a fraction of TEXT_WIDTH_PT): 10.5 pt puts tick exponents and legend
+# indices (0.7 of it) above 7 pt
+plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
+                                   "axes.titlesize"), 10.5))
+fig, (left, right) = plt.subplots(1, 2, figsize=(TEXT_WIDTH_PT / 72.27, 3.1))
 colours = ["C0", "C1", "C2", "C3", "C4", "C5", "C6"]
+LAW_OMEGA_MAX = 0.3
 # a marker and a line style per exponent pair as well as a colour: the figure reads in greyscale
 markers = ["o", "s", "^", "D", "v", "P", "X"]
 dashes = ["-", (0, (5, 1.5)), "-.", (0, (1, 1.2)), (0, (6, 1.5, 1, 1.5, 1, 1.5)), (0, (3, 1)), "-"]
@@ -147,7 +153,10 @@ for i, r in enumerate(rows):
     pair = {"color": colours[i % 7], "marker": markers[i % 7], "mfc": "none", "ms": 4}
     left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], lw=1.6, label=lab,
                 markevery=(i % 4 * max(len(c) // 32, 1), max(len(c) // 8, 1)), **pair)
-    left.loglog(c["omega"], c["law_overlap"] / c["law_force"], color=colours[i % 7], lw=0.9, ls=(0, (4, 2)))
+    # the leading laws are laws of the viscous limit: drawn up to a moderate Omega (beyond, they run off the top)
+    law = c["omega"] <= LAW_OMEGA_MAX
+    left.loglog(c["omega"][law], (c["law_overlap"] / c["law_force"])[law], color=colours[i % 7], lw=0.9,
+                ls=(0, (4, 2)))
     inv = np.asarray(P.decay_inverse_omegas, dtype=float)
     d = np.abs(reference_eps(Problem.of(r["alpha"], r["gamma"], "overlap"), 1.0 / inv, CURVE_RTOL)
                / (r["C"] * inv ** -float(Fraction(r["k"]))) - 1.0)
@@ -157,9 +166,9 @@ for i, r in enumerate(rows):
 left.set_ylim(top=3.0)
 left.set_xlabel(r"$\Omega$")
 left.set_ylabel(r"$\varepsilon_{\mathrm{overlap}} / \varepsilon_{\mathrm{force}}$")
-left.set_title("markers: integrator; thin dashed: leading laws", fontsize=10)
+left.set_title(rf"markers: integrator; thin dashed: leading laws ($\Omega \leq {LAW_OMEGA_MAX:g}$)", fontsize=9.5)
 right.set_xlabel(r"$1/\Omega$")
 right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C\,\Omega^\kappa) - 1|$")
-fig.legend(*right.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False)
-fig.set_layout_engine("tight", rect=(0, 0.13, 1, 1))   # redone when save_figure resizes
+fig.legend(*right.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False, fontsize=9.5)
+fig.set_layout_engine("tight", rect=(0, 0.12, 1, 1))
 save_figure(fig, out.pdf, out.png, width=1.0)
