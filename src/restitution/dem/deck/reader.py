@@ -304,9 +304,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     elif cmd == "dimension" and len(words) >= 2 and words[1] in ("2", "3"):
         deck.dimension = int(words[1])       # fix gravity's direction depends on it
     elif cmd == "unfix" and len(words) >= 2:
-        deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
-        deck.movers.pop(words[1], None)
-        deck.shaken.pop(words[1], None)
+        _unfix(deck, words[1])
     elif cmd == "fix_modify" and _accounting(words):
         pass
     elif cmd == "neigh_modify":
@@ -611,10 +609,13 @@ def _set(deck: Deck, words: list, where: str, line: str, loc) -> None:
 
 def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     style = words[3]
-    # a fix of the same ID replaces the earlier one, as in the engines
-    deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
-    deck.movers.pop(words[1], None)
-    deck.shaken.pop(words[1], None)
+    # a fix of the same ID replaces the earlier one where it stood in the engine's list of fixes
+    # (LAMMPS' and LIGGGHTS' Modify::add_fix; the style must be the same, else they stop), which
+    # orders their forces: a freeze defined again after a gravity still zeroes the forces before
+    # the gravity's (LAMMPS measured)
+    again = next((k for k, b in enumerate(deck.beside) if b[1][1] == words[1]), None)
+    wall_again = next((k for k, w in enumerate(deck.walls) if w[1][1] == words[1]), None)
+    _unfix(deck, words[1])
     if style == "move/mesh" and len(words) > 6 and words[4] == "mesh" and words[6] in _SHAKING:
         deck.shaken[words[1]] = (loc, line, words[5])
     if style.startswith("rigid"):
@@ -627,7 +628,8 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if style in BESIDE:
         # gravity on every atom accelerates both bodies of a pair alike (beside passes it over
         # there), but pushes a sphere into a wall during a contact
-        deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck.beside)
+        # each collision it acts on gets its size (deck.beside)
+        deck.beside.insert(len(deck.beside) if again is None else again, (loc, list(words)))
         return
     if style in _INSERTING_FIXES:
         deck.inserting = True
@@ -649,8 +651,19 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     least, handler = _FIXES.get(style, (0, None))
     if handler is not None and len(words) >= least:
         handler(deck, words, where, line, loc)
+        if wall_again is not None and deck.walls and deck.walls[-1][1][1] == words[1]:
+            deck.walls.insert(wall_again, deck.walls.pop())
     elif style not in _IRRELEVANT_FIXES:
         deck.unknown.append((*loc, line, "not understood"))
+
+
+def _unfix(deck: Deck, fix_id: str) -> None:
+    """The fix ``fix_id`` gone (unfixed, or defined again): no longer beside the contact, moving
+    atoms or walls, nor a wall a sphere meets."""
+    deck.beside = [b for b in deck.beside if b[1][1] != fix_id]
+    deck.movers.pop(fix_id, None)
+    deck.shaken.pop(fix_id, None)
+    deck.walls = [w for w in deck.walls if w[1][1] != fix_id]
 
 
 def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
