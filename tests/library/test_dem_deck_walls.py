@@ -728,3 +728,21 @@ def test_a_wall_defined_again_is_audited_once_as_redefined_and_an_unfixed_one_no
     walls = json.loads(out)["walls"]
     assert [w["wall"] for w in walls] == ["zlower"]
     assert walls[0]["eps"][0] == pytest.approx(0.835262, abs=1e-5)
+
+
+def test_a_walls_faces_are_those_its_engines_reader_read(tmp_path):
+    """The gravity beside a wall takes the wall's faces from the engine's reader of the wall, not from
+    its words read again: a LIGGGHTS mesh named zplane, with store_force after it, has faces that may
+    turn anywhere (the two extreme directions), where a second reading of the words took 'zplane
+    store_force yes' for a LAMMPS plane with faces at z = store_force and z = yes. A primitive plane's
+    faces stay the plane met from either side."""
+    plate = ("fix zplane all mesh/surface file plate.stl type 1\n"
+             "fix plate all wall/gran model hertz tangential history mesh n_meshes 1 meshes zplane store_force yes")
+    text = LIGGGHTS_DECK.format(limit="", floor=FLOOR.format(limit=""), plate=plate)
+    res, _ = audit(tmp_path, text + "fix grav all gravity 9.81 vector 0 0 -1\n", 1.0)
+    faces = {(w["wall"], w["types"][0]): [f["face"] for b in w["beside"] if b["style"] == "gravity"
+                                          for f in b["faces"]] for w in res["walls"]}
+    assert faces[("plate", 1)] == ["into the wall, the wall's normal along the field (not known here)",
+                                   "off the wall, against the field"]
+    assert faces[("floor", 1)] == ["the plane z = 0.0 (met from either side), from the side gravity pushes into it",
+                                   "the plane z = 0.0 (met from either side), from the other side"]

@@ -140,7 +140,7 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
             continue
         if (types := _wall_types(deck, types, loc, words, unknown)) is None:
             continue
-        for mesh, contact_of, wall_type in surfaces:
+        for mesh, contact_of, wall_type, faces in surfaces:
             shaking = [text for _, text, moved in deck.shaken.values() if moved == mesh]
             if shaking:
                 unknown.append((*loc, " ".join(words), f"mesh {mesh} oscillates ({shaking[0]}) and "
@@ -158,7 +158,8 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     continue
                 if t not in deck.sizes or t in deck.shapes:
                     spheres(deck, t, t)          # one line where the type lacks a radius or a density, or is no sphere
-                def wall_row(size, at_speeds, t=t, mesh=mesh, contact_of=contact_of, wall_type=wall_type):
+                def wall_row(size, at_speeds, t=t, mesh=mesh, contact_of=contact_of, wall_type=wall_type,
+                             faces=faces):
                     pair = Pair.wall(*size)
                     contact, typed, model, exact = contact_of(pair, t)
                     if at_speeds is None:
@@ -166,7 +167,7 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                      "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
                                      "line": loc[1], "file": loc[0]}, contact, at_speeds, pair.R1, _dt(deck))
-                    return ({**row, "beside": effects(deck, row, contact, pair, (t,))},
+                    return ({**row, "beside": effects(deck, row, contact, pair, (t,), faces=faces)},
                             (tuple(size),) if t in deck.sizes else ())
                 rows += _time_steps(_ends(_over_sizes(
                     deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds)))

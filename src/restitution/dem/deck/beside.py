@@ -20,7 +20,7 @@ from ..engines.lammps.deck import DEFAULT_DT
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
 
-__all__ = ["BESIDE", "drag_eps", "effects", "gravity_vector", "wall_faces"]
+__all__ = ["BESIDE", "drag_eps", "effects", "gravity_vector"]
 
 #: Fix style -> what it does to the atoms of its group, beside the contact law
 BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
@@ -145,7 +145,8 @@ def _number(word: str) -> float | None:
     return value if math.isfinite(value) else None
 
 
-def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_contact=None) -> list[dict]:
+def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_contact=None,
+            faces: list | None = None) -> list[dict]:
     """What each fix acting beside the contact does to one audited collision (a type pair, or a
     type on a wall): one dict per fix that acts on a body of it, {"fix", "style", "file", "line",
     "what", "eps_engine" (a list over ``row["speeds"]``, or None where no size is computed),
@@ -164,6 +165,9 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     frozen_contact : callable, optional
         ``frozen_contact(k)``: the contact the engine gives the pair where body k is frozen (its
         mass infinite); needed where a ``fix freeze`` holds one body of a pair.
+    faces : list, optional
+        A wall's faces with their normals, as its engine's reader gives them
+        (:func:`restitution.dem.dialect.state.wall_faces`); None where they may point anywhere.
 
     Returns
     -------
@@ -183,7 +187,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     for loc, words in getattr(deck, "beside", []):
         style, group = words[3], words[2]
         if style == "gravity":
-            entry = _gravity(deck, loc, words, types, row, contact, pair, frozen_contact)
+            entry = _gravity(deck, loc, words, types, row, contact, pair, frozen_contact, faces)
             if entry is not None:
                 out.append(entry)
             continue
@@ -202,7 +206,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
 
 
 def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, pair: Pair,
-             frozen_contact=None) -> dict | None:
+             frozen_contact=None, faces: list | None = None) -> dict | None:
     """A gravity beside a collision where it changes the bodies' relative motion, or None where it
     cannot: both spheres of a pair in its group (they fall alike) or neither; a wall's sphere outside it.
 
@@ -210,7 +214,8 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
     contact with its component along the wall's normal, which changes the eps the engine measures
     (a constant force does no net work over a contact that ends where it began, but it shifts where
     the damping acts and when the contact ends). That eps is computed face by face where the
-    wall's normal is known (:func:`wall_faces`), at the two extreme directions where it is not."""
+    wall's normal is known (``faces``, as the wall's engine reads them), at the two extreme directions
+    where it is not."""
     held = group_types(deck, words[2])
     entry = {"fix": words[1], "style": "gravity", "file": loc[0], "line": loc[1], "what": BESIDE["gravity"],
              "eps_engine": None, "why": "", "along": None}
@@ -220,7 +225,7 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
         entry["what"] = "a gravity on the sphere, which pushes it into the wall or pulls it off during a contact"
         if held is None:
             entry["why"] = f"group {words[2]} has atoms the audit cannot type: the sphere may not fall; "
-        _wall_gravity(entry, deck, words, row, contact, pair)
+        _pushed_against(entry, deck, words, row, contact, pair, faces)
         if entry.get("faces") and not any(face["push"] for face in entry["faces"]):
             return None              # the field lies along every face: it moves the sphere across the contact only
         return entry
@@ -316,64 +321,12 @@ def gravity_vector(words: list, dimension: int = 3) -> tuple | None:
     return None
 
 
-def wall_faces(words: list) -> list | None:
-    """The faces of a wall fix (its words) with the normal each turns to the spheres it meets:
-    [(what, (nx, ny, nz))] for planes a sphere meets from one known side (LAMMPS' xplane|yplane|zplane
-    lo hi: lo from above, hi from below); [(what, axis)] with an axis (0, 1, 2) where the normal lies
-    along that axis either way (LIGGGHTS' primitive planes, met from both sides) or (what, -axis - 1)
-    where it lies anywhere across that axis (a cylinder along it); None where it may point anywhere
-    (a region, a mesh).
-
-    Parameters
-    ----------
-    words : list of str
-        The wall fix's words.
-
-    Returns
-    -------
-    list or None
-
-    Examples
-    --------
-    >>> wall_faces("fix zlower all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 2000.0".split())
-    [('the face at z = 0.0', (0.0, 0.0, 1.0)), ('the face at z = 2000.0', (0.0, 0.0, -1.0))]
-    >>> wall_faces("fix w all wall/gran model hertz tangential history primitive type 1 zplane 0.0".split())
-    [('the plane z = 0.0 (met from either side)', 2)]
-    >>> wall_faces("fix w all wall/gran/region granular hooke 1 1 region box".split()) is None
-    True
-    """
-    axes = "xyz"
-    for k, w in enumerate(words):
-        if k <= 4 or not (w in ("xplane", "yplane", "zplane") or w in ("xcylinder", "ycylinder", "zcylinder")):
-            continue
-        axis = axes.index(w[0])
-        if w.endswith("cylinder"):
-            return [(f"a {w} (its normal across {w[0]})", -axis - 1)]
-        if words[k - 1] == "type" or (k >= 3 and words[k - 3] == "primitive"):      # LIGGGHTS' primitive plane
-            return [(f"the plane {w[0]} = {words[k + 1]} (met from either side)", axis)] if k + 1 < len(words) else None
-        faces = []
-        for side, at in zip((1.0, -1.0), words[k + 1:k + 3]):
-            if at != "NULL":
-                normal = [0.0, 0.0, 0.0]
-                normal[axis] = side
-                faces.append((f"the face at {w[0]} = {at}", tuple(normal)))
-        return faces or None
-    return None
-
-
-def _wall_gravity(entry: dict, deck, words: list, row: dict, contact: Contact, pair: Pair) -> None:
-    """The eps the engine measures for a sphere on a wall under a gravity (entry updated: "faces",
-    one {"face", "push", "eps_engine"} per face or per extreme direction, the push being gravity's
-    component into the wall; "eps_engine" too where there is one face)."""
-    wall = next((w for _, w, _ in deck.walls if w[1] == row.get("wall")), None)
-    _pushed_against(entry, deck, words, row, contact, pair, wall_faces(wall) if wall is not None else None)
-
-
 def _pushed_against(entry: dict, deck, words: list, row: dict, contact: Contact, pair: Pair, faces,
                     sphere: bool = False) -> None:
     """entry's "faces" and "eps_engine" under the gravity ``words`` along the normals ``faces``
-    (:func:`wall_faces`; None: the two extreme directions). ``sphere``: the sphere moves against
-    an immovable sphere (``pair`` the moving one against an infinite mass, ``contact`` its own)."""
+    (:func:`restitution.dem.dialect.state.wall_faces`; None: the two extreme directions).
+    ``sphere``: the sphere moves against an immovable sphere (``pair`` the moving one against an
+    infinite mass, ``contact`` its own)."""
     field = gravity_vector(words, getattr(deck, "dimension", 3))
     if field is None or deck.units not in _GRAVITY_UNITS:
         entry["why"] += ("its size is not computed (a magnitude or direction this does not read)" if field is None
