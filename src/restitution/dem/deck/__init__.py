@@ -824,7 +824,9 @@ def _empty_notes(deck: Deck) -> list:
     # a fix deposit (or a pour yet to run) makes atoms of its type as the runs go
     inserted = sorted(t for t in empty if any(t in made for d in stages for made in d.inserts if made))
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
-    return [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
+    deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
+    return [f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
+            "whatever set gave the type's atoms before: audited at that size" for t, fix in sorted(deposited.items())] + [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
             "sphere pairs cannot happen there and are not audited" for t in empty if t not in inserted] + \
         [f"type {t} is inserted by a fix (deposit) as the runs go, at sizes the audit does not read: its pairs "
          "are not audited" for t in inserted] + \

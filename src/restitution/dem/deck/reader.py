@@ -136,14 +136,21 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     # and the pass's pours, held back while they repeat the last pass's, are not read at all.
     block: list | None = []
     last_block: list | None = None
+    deposited_ran: set = set()     # types a fix deposit has run for
     pending: list = []
     for cmd in commands:
         try:
             split = words(cmd.text)
         except ScriptError as why:
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
+        if split and split[0] == "set":
+            _resized(deck, deposited_ran)
         if not split or split[0] in _ENGINE_ONLY:
             continue
+        if split[0] == "run":
+            deposited_ran |= {t for t, made in deck.deposits.items() if made is not None}
+        elif split[0] == "clear":
+            deposited_ran = set()
         plain_run = split[0] == "run" and "every" not in split
         if cmd.stage is None and block is not None and (pour := _pour_again(split)) is not None:
             block = block + [pour]
@@ -227,6 +234,9 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     deck.held = {t: sorted(v) for t, v in atoms.items()}
     deck.atoms = deck.atoms or bool(atoms)
     deck.present |= set(atoms)
+    for t, made in deck.deposits.items():
+        if made is not None and t in atoms:     # the atoms already there, and those the runs deposit
+            atoms = {**atoms, t: set(atoms[t]) | {DEPOSITED}}
     for t, sizes in atoms.items():
         radii = {r for r, _ in sizes}
         dens = {rho for _, rho in sizes}
@@ -248,6 +258,11 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
             deck.sizes[t] = _sampled(sorted(set(sizes)))
             if len(deck.sizes[t]) < len(set(sizes)):
                 deck.sampled[t] = len(set(sizes))
+    for t in [t for t, made in deck.deposits.items() if made is None]:
+        for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
+            known.pop(t, None)
+        deck.missing[t] = (f"a set after a run may resize the atoms a fix deposit made of type {t} in that run, "
+                           "which the engine's pass (its runs skipped) never made")
 
 
 def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
@@ -719,6 +734,33 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
 _RANGE_SAMPLES = 9
 
 
+#: The size LAMMPS gives an atom a fix deposit makes (radius, density): its atom style's defaults
+#: (AtomVecSphere: diameter 1, density 1), whatever ``set`` gave the type's atoms before (LAMMPS
+#: 22 Jul 2025, atom_style sphere, units si: every deposited atom of a type set to diameter 0.3
+#: and density 7000 has radius 0.5 and mass pi/6)
+DEPOSITED = (0.5, 1.0)
+
+
+def _deposit(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """fix ID group deposit N type M seed [keywords]: type t's atoms made as the runs go, with
+    LAMMPS' default size (DEPOSITED); a molecule's (mol) from its template, which the reader does
+    not read (the type's entry in ``missing`` says so)."""
+    t = atom_type(words[5], where, line)
+    if "mol" in words[8:]:
+        deck.missing[t] = f"fix {words[1]} deposits molecules, whose sizes come from a molecule template"
+        return
+    deck.deposits[t] = words[1]
+    deck.radius[t], deck.density[t] = DEPOSITED
+
+
+def _resized(deck: Deck, ran: set) -> None:
+    """A ``set`` after a run: it may resize the atoms the fixes deposit of ``ran`` made in the runs
+    before, which the engine's pass (its runs skipped) never made, so their size is not known:
+    each such type in ``missing`` from here on."""
+    for t in sorted(ran & set(deck.deposits)):
+        deck.deposits[t] = None
+
+
 def _sampled(sizes: list) -> list:
     """At most about _RANGE_SAMPLES of a type's held sizes, sorted by radius: evenly spaced in that
     order, the smallest and largest radius and the lightest and densest among them (pairing every
@@ -740,7 +782,7 @@ def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
 
 #: fix style -> (its least number of words, what it does to the deck): the engines' alike, then each
 #: dialect's own; shorter, not understood
-_FIXES = {"pour": (7, _pour), "wall/gran": (4, _wall), "wall/gran/region": (4, _wall),
+_FIXES = {"pour": (7, _pour), "deposit": (8, _deposit), "wall/gran": (4, _wall), "wall/gran/region": (4, _wall),
           **{style: fix for dialect in DIALECTS.values() for style, fix in dialect.FIXES.items()}}
 
 

@@ -84,6 +84,8 @@ class Deck:
     hard: bool = False                            # its limits on Young's modulus lifted
     groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
     walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
+    # type -> ID of the LAMMPS fix deposit making its atoms (None: a set may have resized them since)
+    deposits: dict = field(default_factory=dict)
     meshes: dict = field(default_factory=dict)    # LIGGGHTS fix mesh/surface ID -> its atom type, or None
     shaken: dict = field(default_factory=dict)    # LIGGGHTS fix move/mesh ID -> (loc, text, mesh ID) of an oscillation
     gran: dict = field(default_factory=dict)      # LAMMPS' older gran/* pair style: style, k_n, gamma_n, limit
