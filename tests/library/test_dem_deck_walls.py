@@ -9,7 +9,7 @@ import math
 import pytest
 
 from cli_run import run_cli
-from deck_cli import LIGGGHTS_BOX
+from deck_cli import IN_POUR, LIGGGHTS_BOX
 from restitution.cli import main
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.engines.liggghts import run as liggghts_run
@@ -697,21 +697,12 @@ def test_a_vibrating_liggghts_mesh_is_named_not_audited(tmp_path, motion, audite
 
 
 #: in.pour's sphere and wall, the wall defined again with other coefficients, a second wall unfixed
-REDEFINED_WALL = """\
-atom_style sphere
-boundary f p fm
-comm_modify vel yes
-region reg block -10 10 -10 10 -0.5 16 units box
-create_box 1 reg
-create_atoms 1 single 0 0 5 units box
-set type 1 diameter 1.0 density 1.0
-pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
-pair_coeff * *
+REDEFINED_WALL = IN_POUR + """\
 fix 1 all nve/sphere
 fix zlower all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 2000.0
-fix xwall all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 xplane -10 10
+fix other all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 NULL
 fix zlower all wall/gran hooke/history 4000.0 NULL 10.0 NULL 0.5 0 zplane 0.0 2000.0
-unfix xwall
+unfix other
 run 1
 """
 

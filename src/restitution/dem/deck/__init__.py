@@ -655,8 +655,10 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                 if at_speeds is None:
                     return contact, pair.R1 + pair.R2
                 row = _with_eps(row, contact, at_speeds, pair.R1 + pair.R2, _dt(deck))
+                unmoved = [k for k in (0, 1) if moves[k][0] == "held"] if moves[0][0] != moves[1][0] else [None]
                 return ({**row, "beside": effects(sized, row, contact, pair, (i, j),
-                                                  lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k))},
+                                                  lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k),
+                                                  unmoved=unmoved[0])},
                         at)
             pairs += _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row, speeds)))
     walls, walls_not = _wall_rows(deck, speeds, ran)

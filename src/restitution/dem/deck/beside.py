@@ -146,7 +146,7 @@ def _number(word: str) -> float | None:
 
 
 def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_contact=None,
-            faces: list | None = None) -> list[dict]:
+            faces: list | None = None, unmoved: int | None = None) -> list[dict]:
     """What each fix acting beside the contact does to one audited collision (a type pair, or a
     type on a wall): one dict per fix that acts on a body of it, {"fix", "style", "file", "line",
     "what", "eps_engine" (a list over ``row["speeds"]``, or None where no size is computed),
@@ -168,6 +168,9 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     faces : list, optional
         A wall's faces with their normals, as its engine's reader gives them
         (:func:`restitution.dem.dialect.state.wall_faces`); None where they may point anywhere.
+    unmoved : int, optional
+        The body (0 or 1) of a pair that no fix integrates, ``contact`` then the other's motion
+        alone (:func:`restitution.dem.deck.meeting.held_contact`).
 
     Returns
     -------
@@ -187,7 +190,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     for loc, words in getattr(deck, "beside", []):
         style, group = words[3], words[2]
         if style == "gravity":
-            entry = _gravity(deck, loc, words, types, row, contact, pair, frozen_contact, faces)
+            entry = _gravity(deck, loc, words, types, row, contact, pair, frozen_contact, faces, unmoved)
             if entry is not None:
                 out.append(entry)
             continue
@@ -206,7 +209,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
 
 
 def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, pair: Pair,
-             frozen_contact=None, faces: list | None = None) -> dict | None:
+             frozen_contact=None, faces: list | None = None, unmoved: int | None = None) -> dict | None:
     """A gravity beside a collision where it changes the bodies' relative motion, or None where it
     cannot: both spheres of a pair in its group (they fall alike) or neither; a wall's sphere outside it.
 
@@ -240,6 +243,34 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
     frozen = set().union(*[group_types(deck, w[2]) or set() for _, w in deck.beside
                            if w[3] == "freeze" and order.index(w[1]) > order.index(words[1])])
     still = [t in frozen for t in types]
+    # a body no fix integrates, or whose every force a setforce 0 0 0 zeroes after the gravity
+    # added its own (or where the gravity adds none), never moves; the engine's contact force
+    # (m_eff of both masses) moves the other alone (LAMMPS measured)
+    kept, partly = _set_still(deck, words, types, acted, order)
+    if unmoved is not None:
+        kept[unmoved] = True
+    if partly and any(acted) and not any(still):
+        entry["why"] = (f"a fix setforce that holds the type {partly[0]} sphere along some axes only, or sets a "
+                        "value other than 0: with the gravity its size (which depends on the directions) is not "
+                        "computed")
+        return entry
+    if kept.count(True) == 1 and not any(still):
+        moving = kept.index(False)
+        if not acted[moving]:
+            return None              # it falls on the body that never moves only, or on neither
+        if deck.code != "LAMMPS":
+            entry["why"] = ("it pushes the moving sphere into its partner, which never moves, or pulls it off during a "
+                            "contact; its size is computed for LAMMPS only (whose m_eff there was checked)")
+            return entry
+        entry["what"] = ("a gravity on the moving sphere, which pushes it into its partner (which never moves) or "
+                         "pulls it off during a contact")
+        alone = contact if unmoved is not None else held_contact(contact, pair, moving)
+        _pushed_against(entry, deck, words, row, alone,
+                        Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
+                        sphere=True)
+        return entry
+    if kept.count(True) == 2 and not any(still):
+        return None                  # neither moves: the collision does not happen (said beside it)
     if still.count(True) == 1 and frozen_contact is not None:
         moving = still.index(False)
         if not acted[moving]:
@@ -261,6 +292,25 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
                     "or apart during a contact; its size (which depends on the direction of the field against the "
                     "line of centres) is not computed")
     return entry
+
+
+def _set_still(deck, words: list, types: tuple, acted: list, order: list) -> tuple[list, list]:
+    """([whether each body of a pair keeps its velocity under the fix setforce that hold it, with the
+    gravity ``words``], [types a setforce holds otherwise: along some axes only, to a value, with a
+    keyword]). A setforce 0 0 0 zeroes every force the fixes before it added (LAMMPS runs post_force
+    in the order the fixes were defined): a gravity after it moves the body, one before it does not."""
+    kept, partly = [False] * len(types), []
+    for _, w in deck.beside:
+        if w[3] != "setforce" or (held := group_types(deck, w[2])) is None:
+            continue
+        for k, t in enumerate(types):
+            if t not in held:
+                continue
+            if len(w) == 7 and all(_number(v) == 0.0 for v in w[4:7]):
+                kept[k] = kept[k] or order.index(w[1]) > order.index(words[1]) or not acted[k]
+            elif any(v != "NULL" for v in w[4:7]) or len(w) > 7:
+                partly.append(t)
+    return kept, partly
 
 
 #: Unit styles whose force / mass is the acceleration fix gravity's magnitude gives (LAMMPS'
