@@ -256,41 +256,38 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
         return entry
     if kept.count(True) == 1 and not any(still):
         moving = kept.index(False)
-        if not acted[moving]:
-            return None              # it falls on the body that never moves only, or on neither
-        if deck.code != "LAMMPS":
-            entry["why"] = ("it pushes the moving sphere into its partner, which never moves, or pulls it off during a "
-                            "contact; its size is computed for LAMMPS only (whose m_eff there was checked)")
-            return entry
-        entry["what"] = ("a gravity on the moving sphere, which pushes it into its partner (which never moves) or "
-                         "pulls it off during a contact")
         alone = contact if unmoved is not None else held_contact(contact, pair, moving)
-        _pushed_against(entry, deck, words, row, alone,
-                        Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
-                        sphere=True)
-        return entry
+        return _onto_still(entry, deck, words, row, pair, acted, moving, alone, "its partner (which never moves)")
     if kept.count(True) == 2 and not any(still):
         return None                  # neither moves: the collision does not happen (said beside it)
     if still.count(True) == 1 and frozen_contact is not None:
         moving = still.index(False)
-        if not acted[moving]:
-            return None              # it falls on the frozen body only, whose force fix freeze zeroes
-        if deck.code != "LAMMPS":
-            entry["why"] = ("it pushes the moving sphere into its frozen partner or pulls it off during a contact; "
-                            "its size is computed for LAMMPS only (whose m_eff with a frozen atom was checked)")
-            return entry
-        entry["what"] = ("a gravity on the moving sphere, which pushes it into its frozen partner or pulls it off "
-                         "during a contact")
-        _pushed_against(entry, deck, words, row, frozen_contact(1 - moving),
-                        Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
-                        sphere=True)
-        return entry
+        return _onto_still(entry, deck, words, row, pair, acted, moving, frozen_contact(1 - moving),
+                           "its frozen partner")
     if acted[0] == acted[1]:
         return None                  # both bodies fall alike, or neither falls: the relative motion is the contact's
     pushed = types[acted.index(True)]
     entry["why"] = (f"it accelerates the type {pushed} sphere and not the other, so it pushes the spheres together "
                     "or apart during a contact; its size (which depends on the direction of the field against the "
                     "line of centres) is not computed")
+    return entry
+
+
+def _onto_still(entry: dict, deck, words: list, row: dict, pair: Pair, acted: list, moving: int,
+                alone: Contact, partner: str) -> dict | None:
+    """The gravity ``words`` on a pair whose body ``moving`` meets a partner that does not move
+    (``alone``: the contact the moving body sees), entry updated; None where the gravity does not
+    act on the moving body (the partner's is zeroed, or it has none)."""
+    if not acted[moving]:
+        return None
+    if deck.code != "LAMMPS":
+        entry["why"] = (f"it pushes the moving sphere into {partner} or pulls it off during a contact; its size is "
+                        "computed for LAMMPS only (whose m_eff there was checked)")
+        return entry
+    entry["what"] = f"a gravity on the moving sphere, which pushes it into {partner} or pulls it off during a contact"
+    _pushed_against(entry, deck, words, row, alone,
+                    Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
+                    sphere=True)
     return entry
 
 
