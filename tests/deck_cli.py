@@ -33,6 +33,21 @@ def run(*argv):
     return status, out.getvalue(), err.getvalue()
 
 
+#: examples/pour/in.pour's sphere and contact (lj units; a sphere of diameter 1, density 1), to which
+#: a test adds its fixes, walls and run
+IN_POUR = """\
+atom_style sphere
+boundary p p fm
+comm_modify vel yes
+region reg block -10 10 -10 10 -0.5 16 units box
+create_box 1 reg
+create_atoms 1 single 0 0 5 units box
+set type 1 diameter 1.0 density 1.0
+pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
+pair_coeff * *
+"""
+
+
 #: The version note restitution deck writes for tsuji decks (its own test in test_dem_deck.py); the other
 #: tests read stderr without it
 NOTE = "restitution deck: note: tsuji damping as LAMMPS 22 Jul 2025"

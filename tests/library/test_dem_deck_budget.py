@@ -128,3 +128,15 @@ def test_a_straight_pass_beyond_the_ceiling_is_refused_as_no_loop(tmp_path, monk
     with pytest.raises(DeckError, match=r"budget \(0.5 s of wall time in all, the ceiling, in a pass that had run no "
                                         r"line twice; runs skipped\): a pass that ran no line twice, so no loop"):
         audit_deck(text, [1.0], path=tmp_path / "in.deck", budget=1.0)
+
+
+def test_the_budgets_default_in_the_help_is_the_librarys_constant(monkeypatch, capsys):
+    """--budget's help gives the default the audit uses, read from its one constant (it said 20 in
+    words of its own): a changed constant shows."""
+    import restitution.dem.deck as deck
+    from restitution.cli import main
+    monkeypatch.setattr(deck, "BUDGET", 37.5)
+    with pytest.raises(SystemExit):
+        main(["deck", "--help"])
+    help_text = " ".join(capsys.readouterr().out.split())
+    assert "(default: 37.5)" in help_text

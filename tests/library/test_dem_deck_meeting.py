@@ -157,13 +157,15 @@ def test_e_of_one_is_answered_with_the_laws_eps(tmp_path, damping, engine):
     assert pairs(res)[(1, 2)]["eps"][0] == pytest.approx(engine, abs=3e-7)
 
 
-def test_a_deposited_type_is_said_to_be_inserted_not_unused(tmp_path):
+def test_a_deposited_type_is_audited_at_lammps_default_size_not_unused(tmp_path):
     text = TWO.replace("create_atoms 2 single 0.1 0 0\n", "").replace("set type 2 diameter 0.02 density 2500\n", "")
     text += "region ins block -0.5 0.5 -0.5 0.5 0.5 0.9\nfix dep all deposit 10 2 10 12345 region ins near 0.05\n" \
             "fix 1 all nve/sphere\nrun 10\n"
     status, res, err = audit(tmp_path, text)
     assert status == 0, err
-    assert "type 2 is inserted by a fix (deposit)" in err and "walls only" not in err and "not understood" not in err
+    assert "type 2: the atoms fix dep (deposit) makes get LAMMPS' default size" in err
+    assert "walls only" not in err and "not understood" not in err
+    assert (2, 2) in pairs(res)
 
 
 def test_a_tether_and_an_added_force_are_named_beside_the_contact(tmp_path):

@@ -9,7 +9,7 @@ import math
 import pytest
 
 from cli_run import run_cli
-from deck_cli import LIGGGHTS_BOX
+from deck_cli import IN_POUR, LIGGGHTS_BOX
 from restitution.cli import main
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.engines.liggghts import run as liggghts_run
@@ -694,3 +694,46 @@ def test_a_vibrating_liggghts_mesh_is_named_not_audited(tmp_path, motion, audite
     assert bool(named) is not audited
     if not audited:
         assert "mesh mesh1 oscillates (fix shake all move/mesh" in named[0]["why"]
+
+
+#: in.pour's sphere and wall, the wall defined again with other coefficients, a second wall unfixed
+REDEFINED_WALL = IN_POUR + """\
+fix 1 all nve/sphere
+fix zlower all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 2000.0
+fix other all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 NULL
+fix zlower all wall/gran hooke/history 4000.0 NULL 10.0 NULL 0.5 0 zplane 0.0 2000.0
+unfix other
+run 1
+"""
+
+
+@pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed")
+def test_a_wall_defined_again_is_audited_once_as_redefined_and_an_unfixed_one_not_at_all(tmp_path):
+    """LAMMPS replaces a fix of the same ID and drops an unfixed one. LAMMPS dropping the sphere on
+    the two zlower lines at dt 4e-6, 2e-6, 1e-6: 0.8352756, 0.8352611, 0.8352622 (the first
+    line's law alone gives 0.249); the audit's 0.8352604 is within that wobble. Before: three
+    rows, the first line's (0.249) and the unfixed wall's among them."""
+    (tmp_path / "in.deck").write_text(REDEFINED_WALL)
+    status, out, err = run_cli(["deck", str(tmp_path / "in.deck"), "--g", "1", "--json"])
+    assert status == 0, err
+    walls = json.loads(out)["walls"]
+    assert [w["wall"] for w in walls] == ["zlower"]
+    assert walls[0]["eps"][0] == pytest.approx(0.835262, abs=1e-5)
+
+
+def test_a_walls_faces_are_those_its_engines_reader_read(tmp_path):
+    """The gravity beside a wall takes the wall's faces from the engine's reader of the wall, not from
+    its words read again: a LIGGGHTS mesh named zplane, with store_force after it, has faces that may
+    turn anywhere (the two extreme directions), where a second reading of the words took 'zplane
+    store_force yes' for a LAMMPS plane with faces at z = store_force and z = yes. A primitive plane's
+    faces stay the plane met from either side."""
+    plate = ("fix zplane all mesh/surface file plate.stl type 1\n"
+             "fix plate all wall/gran model hertz tangential history mesh n_meshes 1 meshes zplane store_force yes")
+    text = LIGGGHTS_DECK.format(limit="", floor=FLOOR.format(limit=""), plate=plate)
+    res, _ = audit(tmp_path, text + "fix grav all gravity 9.81 vector 0 0 -1\n", 1.0)
+    faces = {(w["wall"], w["types"][0]): [f["face"] for b in w["beside"] if b["style"] == "gravity"
+                                          for f in b["faces"]] for w in res["walls"]}
+    assert faces[("plate", 1)] == ["into the wall, the wall's normal along the field (not known here)",
+                                   "off the wall, against the field"]
+    assert faces[("floor", 1)] == ["the plane z = 0.0 (met from either side), from the side gravity pushes into it",
+                                   "the plane z = 0.0 (met from either side), from the other side"]

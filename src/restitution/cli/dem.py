@@ -134,10 +134,24 @@ def add_deck_subcommand(subparsers) -> None:
     d.add_argument("--radius", nargs="+", default=[], metavar="T=R", help="radius of atom type T")
     d.add_argument("--density", nargs="+", default=[], metavar="T=RHO", help="density of atom type T")
     d.add_argument("--json", action="store_true", help="machine-readable output")
-    d.add_argument("--budget", type=number_argument, default=None, metavar="SECONDS",
+    d.add_argument("--budget", type=number_argument, default=_LibraryDefault("restitution.dem.deck", "BUDGET"),
+                   metavar="SECONDS",
                    help="wall time the engine's pass through the deck may spend in a loop (from the first line it "
                         "runs a second time) before it is ended; a pass that runs no line twice may take 10 times "
-                        "it in all (default: 20)")
+                        "it in all (default: %(default)s)")
+
+
+class _LibraryDefault:
+    """An option's default that is a library constant, shown by --help and left to the library
+    otherwise: read when the help is printed, because importing the deck audit to build the parser
+    would cost every subcommand's start most of a second."""
+
+    def __init__(self, module: str, name: str):
+        self.module, self.name = module, name
+
+    def __str__(self) -> str:
+        import importlib
+        return f"{getattr(importlib.import_module(self.module), self.name):g}"
 
 
 def _per_type(name: str, items) -> dict:
@@ -178,7 +192,7 @@ def run_deck(args, out) -> None:
         if engine.materials is not None and engine.materials.is_materials_file(text):
             return _run_materials(engine, args, text, speeds, read_file, out)
     res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file,
-                     path=args.file, **({} if args.budget is None else {"budget": args.budget}))
+                     path=args.file, **({} if isinstance(args.budget, _LibraryDefault) else {"budget": args.budget}))
     for note in res["notes"]:
         print(f"restitution deck: {note}", file=sys.stderr)
     if any("damping tsuji" in row["model"] for row in res["pairs"] + res["walls"]):

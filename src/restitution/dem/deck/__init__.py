@@ -140,7 +140,7 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
             continue
         if (types := _wall_types(deck, types, loc, words, unknown)) is None:
             continue
-        for mesh, contact_of, wall_type in surfaces:
+        for mesh, contact_of, wall_type, faces in surfaces:
             shaking = [text for _, text, moved in deck.shaken.values() if moved == mesh]
             if shaking:
                 unknown.append((*loc, " ".join(words), f"mesh {mesh} oscillates ({shaking[0]}) and "
@@ -158,7 +158,8 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     continue
                 if t not in deck.sizes or t in deck.shapes:
                     spheres(deck, t, t)          # one line where the type lacks a radius or a density, or is no sphere
-                def wall_row(size, at_speeds, t=t, mesh=mesh, contact_of=contact_of, wall_type=wall_type):
+                def wall_row(size, at_speeds, t=t, mesh=mesh, contact_of=contact_of, wall_type=wall_type,
+                             faces=faces):
                     pair = Pair.wall(*size)
                     contact, typed, model, exact = contact_of(pair, t)
                     if at_speeds is None:
@@ -166,7 +167,7 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                      "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
                                      "line": loc[1], "file": loc[0]}, contact, at_speeds, pair.R1, _dt(deck))
-                    return ({**row, "beside": effects(deck, row, contact, pair, (t,))},
+                    return ({**row, "beside": effects(deck, row, contact, pair, (t,), faces=faces)},
                             (tuple(size),) if t in deck.sizes else ())
                 rows += _time_steps(_ends(_over_sizes(
                     deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds)))
@@ -654,8 +655,10 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                 if at_speeds is None:
                     return contact, pair.R1 + pair.R2
                 row = _with_eps(row, contact, at_speeds, pair.R1 + pair.R2, _dt(deck))
+                unmoved = [k for k in (0, 1) if moves[k][0] == "held"] if moves[0][0] != moves[1][0] else [None]
                 return ({**row, "beside": effects(sized, row, contact, pair, (i, j),
-                                                  lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k))},
+                                                  lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k),
+                                                  unmoved=unmoved[0])},
                         at)
             pairs += _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row, speeds)))
     walls, walls_not = _wall_rows(deck, speeds, ran)
@@ -823,7 +826,9 @@ def _empty_notes(deck: Deck) -> list:
     # a fix deposit (or a pour yet to run) makes atoms of its type as the runs go
     inserted = sorted(t for t in empty if any(t in made for d in stages for made in d.inserts if made))
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
-    return [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
+    deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
+    return [f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
+            "whatever set gave the type's atoms before: audited at that size" for t, fix in sorted(deposited.items())] + [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
             "sphere pairs cannot happen there and are not audited" for t in empty if t not in inserted] + \
         [f"type {t} is inserted by a fix (deposit) as the runs go, at sizes the audit does not read: its pairs "
          "are not audited" for t in inserted] + \

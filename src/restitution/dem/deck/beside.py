@@ -20,7 +20,7 @@ from ..engines.lammps.deck import DEFAULT_DT
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
 
-__all__ = ["BESIDE", "drag_eps", "effects", "gravity_vector", "wall_faces"]
+__all__ = ["BESIDE", "drag_eps", "effects", "gravity_vector"]
 
 #: Fix style -> what it does to the atoms of its group, beside the contact law
 BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
@@ -145,7 +145,8 @@ def _number(word: str) -> float | None:
     return value if math.isfinite(value) else None
 
 
-def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_contact=None) -> list[dict]:
+def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_contact=None,
+            faces: list | None = None, unmoved: int | None = None) -> list[dict]:
     """What each fix acting beside the contact does to one audited collision (a type pair, or a
     type on a wall): one dict per fix that acts on a body of it, {"fix", "style", "file", "line",
     "what", "eps_engine" (a list over ``row["speeds"]``, or None where no size is computed),
@@ -164,6 +165,12 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     frozen_contact : callable, optional
         ``frozen_contact(k)``: the contact the engine gives the pair where body k is frozen (its
         mass infinite); needed where a ``fix freeze`` holds one body of a pair.
+    faces : list, optional
+        A wall's faces with their normals, as its engine's reader gives them
+        (:func:`restitution.dem.dialect.state.wall_faces`); None where they may point anywhere.
+    unmoved : int, optional
+        The body (0 or 1) of a pair that no fix integrates, ``contact`` then the other's motion
+        alone (:func:`restitution.dem.deck.meeting.held_contact`).
 
     Returns
     -------
@@ -183,7 +190,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
     for loc, words in getattr(deck, "beside", []):
         style, group = words[3], words[2]
         if style == "gravity":
-            entry = _gravity(deck, loc, words, types, row, contact, pair, frozen_contact)
+            entry = _gravity(deck, loc, words, types, row, contact, pair, frozen_contact, faces, unmoved)
             if entry is not None:
                 out.append(entry)
             continue
@@ -202,7 +209,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
 
 
 def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, pair: Pair,
-             frozen_contact=None) -> dict | None:
+             frozen_contact=None, faces: list | None = None, unmoved: int | None = None) -> dict | None:
     """A gravity beside a collision where it changes the bodies' relative motion, or None where it
     cannot: both spheres of a pair in its group (they fall alike) or neither; a wall's sphere outside it.
 
@@ -210,7 +217,8 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
     contact with its component along the wall's normal, which changes the eps the engine measures
     (a constant force does no net work over a contact that ends where it began, but it shifts where
     the damping acts and when the contact ends). That eps is computed face by face where the
-    wall's normal is known (:func:`wall_faces`), at the two extreme directions where it is not."""
+    wall's normal is known (``faces``, as the wall's engine reads them), at the two extreme directions
+    where it is not."""
     held = group_types(deck, words[2])
     entry = {"fix": words[1], "style": "gravity", "file": loc[0], "line": loc[1], "what": BESIDE["gravity"],
              "eps_engine": None, "why": "", "along": None}
@@ -220,7 +228,7 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
         entry["what"] = "a gravity on the sphere, which pushes it into the wall or pulls it off during a contact"
         if held is None:
             entry["why"] = f"group {words[2]} has atoms the audit cannot type: the sphere may not fall; "
-        _wall_gravity(entry, deck, words, row, contact, pair)
+        _pushed_against(entry, deck, words, row, contact, pair, faces)
         if entry.get("faces") and not any(face["push"] for face in entry["faces"]):
             return None              # the field lies along every face: it moves the sphere across the contact only
         return entry
@@ -235,20 +243,27 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
     frozen = set().union(*[group_types(deck, w[2]) or set() for _, w in deck.beside
                            if w[3] == "freeze" and order.index(w[1]) > order.index(words[1])])
     still = [t in frozen for t in types]
+    # a body no fix integrates, or whose every force a setforce 0 0 0 zeroes after the gravity
+    # added its own (or where the gravity adds none), never moves; the engine's contact force
+    # (m_eff of both masses) moves the other alone (LAMMPS measured)
+    kept, partly = _set_still(deck, words, types, acted, order)
+    if unmoved is not None:
+        kept[unmoved] = True
+    if partly and any(acted) and not any(still):
+        entry["why"] = (f"a fix setforce that holds the type {partly[0]} sphere along some axes only, or sets a "
+                        "value other than 0: with the gravity its size (which depends on the directions) is not "
+                        "computed")
+        return entry
+    if kept.count(True) == 1 and not any(still):
+        moving = kept.index(False)
+        alone = contact if unmoved is not None else held_contact(contact, pair, moving)
+        return _onto_still(entry, deck, words, row, pair, acted, moving, alone, "its partner (which never moves)")
+    if kept.count(True) == 2 and not any(still):
+        return None                  # neither moves: the collision does not happen (said beside it)
     if still.count(True) == 1 and frozen_contact is not None:
         moving = still.index(False)
-        if not acted[moving]:
-            return None              # it falls on the frozen body only, whose force fix freeze zeroes
-        if deck.code != "LAMMPS":
-            entry["why"] = ("it pushes the moving sphere into its frozen partner or pulls it off during a contact; "
-                            "its size is computed for LAMMPS only (whose m_eff with a frozen atom was checked)")
-            return entry
-        entry["what"] = ("a gravity on the moving sphere, which pushes it into its frozen partner or pulls it off "
-                         "during a contact")
-        _pushed_against(entry, deck, words, row, frozen_contact(1 - moving),
-                        Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
-                        sphere=True)
-        return entry
+        return _onto_still(entry, deck, words, row, pair, acted, moving, frozen_contact(1 - moving),
+                           "its frozen partner")
     if acted[0] == acted[1]:
         return None                  # both bodies fall alike, or neither falls: the relative motion is the contact's
     pushed = types[acted.index(True)]
@@ -256,6 +271,43 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
                     "or apart during a contact; its size (which depends on the direction of the field against the "
                     "line of centres) is not computed")
     return entry
+
+
+def _onto_still(entry: dict, deck, words: list, row: dict, pair: Pair, acted: list, moving: int,
+                alone: Contact, partner: str) -> dict | None:
+    """The gravity ``words`` on a pair whose body ``moving`` meets a partner that does not move
+    (``alone``: the contact the moving body sees), entry updated; None where the gravity does not
+    act on the moving body (the partner's is zeroed, or it has none)."""
+    if not acted[moving]:
+        return None
+    if deck.code != "LAMMPS":
+        entry["why"] = (f"it pushes the moving sphere into {partner} or pulls it off during a contact; its size is "
+                        "computed for LAMMPS only (whose m_eff there was checked)")
+        return entry
+    entry["what"] = f"a gravity on the moving sphere, which pushes it into {partner} or pulls it off during a contact"
+    _pushed_against(entry, deck, words, row, alone,
+                    Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
+                    sphere=True)
+    return entry
+
+
+def _set_still(deck, words: list, types: tuple, acted: list, order: list) -> tuple[list, list]:
+    """([whether each body of a pair keeps its velocity under the fix setforce that hold it, with the
+    gravity ``words``], [types a setforce holds otherwise: along some axes only, to a value, with a
+    keyword]). A setforce 0 0 0 zeroes every force the fixes before it added (LAMMPS runs post_force
+    in the order the fixes were defined): a gravity after it moves the body, one before it does not."""
+    kept, partly = [False] * len(types), []
+    for _, w in deck.beside:
+        if w[3] != "setforce" or (held := group_types(deck, w[2])) is None:
+            continue
+        for k, t in enumerate(types):
+            if t not in held:
+                continue
+            if len(w) == 7 and all(_number(v) == 0.0 for v in w[4:7]):
+                kept[k] = kept[k] or order.index(w[1]) > order.index(words[1]) or not acted[k]
+            elif any(v != "NULL" for v in w[4:7]) or len(w) > 7:
+                partly.append(t)
+    return kept, partly
 
 
 #: Unit styles whose force / mass is the acceleration fix gravity's magnitude gives (LAMMPS'
@@ -316,64 +368,12 @@ def gravity_vector(words: list, dimension: int = 3) -> tuple | None:
     return None
 
 
-def wall_faces(words: list) -> list | None:
-    """The faces of a wall fix (its words) with the normal each turns to the spheres it meets:
-    [(what, (nx, ny, nz))] for planes a sphere meets from one known side (LAMMPS' xplane|yplane|zplane
-    lo hi: lo from above, hi from below); [(what, axis)] with an axis (0, 1, 2) where the normal lies
-    along that axis either way (LIGGGHTS' primitive planes, met from both sides) or (what, -axis - 1)
-    where it lies anywhere across that axis (a cylinder along it); None where it may point anywhere
-    (a region, a mesh).
-
-    Parameters
-    ----------
-    words : list of str
-        The wall fix's words.
-
-    Returns
-    -------
-    list or None
-
-    Examples
-    --------
-    >>> wall_faces("fix zlower all wall/gran hooke/history 2000.0 NULL 50.0 NULL 0.5 0 zplane 0.0 2000.0".split())
-    [('the face at z = 0.0', (0.0, 0.0, 1.0)), ('the face at z = 2000.0', (0.0, 0.0, -1.0))]
-    >>> wall_faces("fix w all wall/gran model hertz tangential history primitive type 1 zplane 0.0".split())
-    [('the plane z = 0.0 (met from either side)', 2)]
-    >>> wall_faces("fix w all wall/gran/region granular hooke 1 1 region box".split()) is None
-    True
-    """
-    axes = "xyz"
-    for k, w in enumerate(words):
-        if k <= 4 or not (w in ("xplane", "yplane", "zplane") or w in ("xcylinder", "ycylinder", "zcylinder")):
-            continue
-        axis = axes.index(w[0])
-        if w.endswith("cylinder"):
-            return [(f"a {w} (its normal across {w[0]})", -axis - 1)]
-        if words[k - 1] == "type" or (k >= 3 and words[k - 3] == "primitive"):      # LIGGGHTS' primitive plane
-            return [(f"the plane {w[0]} = {words[k + 1]} (met from either side)", axis)] if k + 1 < len(words) else None
-        faces = []
-        for side, at in zip((1.0, -1.0), words[k + 1:k + 3]):
-            if at != "NULL":
-                normal = [0.0, 0.0, 0.0]
-                normal[axis] = side
-                faces.append((f"the face at {w[0]} = {at}", tuple(normal)))
-        return faces or None
-    return None
-
-
-def _wall_gravity(entry: dict, deck, words: list, row: dict, contact: Contact, pair: Pair) -> None:
-    """The eps the engine measures for a sphere on a wall under a gravity (entry updated: "faces",
-    one {"face", "push", "eps_engine"} per face or per extreme direction, the push being gravity's
-    component into the wall; "eps_engine" too where there is one face)."""
-    wall = next((w for _, w, _ in deck.walls if w[1] == row.get("wall")), None)
-    _pushed_against(entry, deck, words, row, contact, pair, wall_faces(wall) if wall is not None else None)
-
-
 def _pushed_against(entry: dict, deck, words: list, row: dict, contact: Contact, pair: Pair, faces,
                     sphere: bool = False) -> None:
     """entry's "faces" and "eps_engine" under the gravity ``words`` along the normals ``faces``
-    (:func:`wall_faces`; None: the two extreme directions). ``sphere``: the sphere moves against
-    an immovable sphere (``pair`` the moving one against an infinite mass, ``contact`` its own)."""
+    (:func:`restitution.dem.dialect.state.wall_faces`; None: the two extreme directions).
+    ``sphere``: the sphere moves against an immovable sphere (``pair`` the moving one against an
+    infinite mass, ``contact`` its own)."""
     field = gravity_vector(words, getattr(deck, "dimension", 3))
     if field is None or deck.units not in _GRAVITY_UNITS:
         entry["why"] += ("its size is not computed (a magnitude or direction this does not read)" if field is None

@@ -136,14 +136,21 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     # and the pass's pours, held back while they repeat the last pass's, are not read at all.
     block: list | None = []
     last_block: list | None = None
+    deposited_ran: set = set()     # types a fix deposit has run for
     pending: list = []
     for cmd in commands:
         try:
             split = words(cmd.text)
         except ScriptError as why:
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
+        if split and split[0] == "set":
+            _resized(deck, deposited_ran)
         if not split or split[0] in _ENGINE_ONLY:
             continue
+        if split[0] == "run":
+            deposited_ran |= {t for t, made in deck.deposits.items() if made is not None}
+        elif split[0] == "clear":
+            deposited_ran = set()
         plain_run = split[0] == "run" and "every" not in split
         if cmd.stage is None and block is not None and (pour := _pour_again(split)) is not None:
             block = block + [pour]
@@ -229,6 +236,9 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     deck.held = {t: sorted(v) for t, v in atoms.items()}
     deck.atoms = deck.atoms or bool(atoms)
     deck.present |= set(atoms)
+    for t, made in deck.deposits.items():
+        if made is not None and t in atoms:     # the atoms already there, and those the runs deposit
+            atoms = {**atoms, t: set(atoms[t]) | {DEPOSITED}}
     for t, sizes in atoms.items():
         # a pour's spheres arrive as its run goes, never in the engine's skipped run: with the held
         sizes = set(sizes) | deck.poured.get(t, set())
@@ -252,6 +262,11 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
             deck.sizes[t] = _sampled(sorted(set(sizes)))
             if len(deck.sizes[t]) < len(set(sizes)):
                 deck.sampled[t] = len(set(sizes))
+    for t in [t for t, made in deck.deposits.items() if made is None]:
+        for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
+            known.pop(t, None)
+        deck.missing[t] = (f"a set after a run may resize the atoms a fix deposit made of type {t} in that run, "
+                           "which the engine's pass (its runs skipped) never made")
 
 
 def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
@@ -308,9 +323,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     elif cmd == "dimension" and len(words) >= 2 and words[1] in ("2", "3"):
         deck.dimension = int(words[1])       # fix gravity's direction depends on it
     elif cmd == "unfix" and len(words) >= 2:
-        deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
-        deck.movers.pop(words[1], None)
-        deck.shaken.pop(words[1], None)
+        _unfix(deck, words[1])
     elif cmd == "fix_modify" and _accounting(words):
         pass
     elif cmd == "neigh_modify":
@@ -621,10 +634,13 @@ def _set(deck: Deck, words: list, where: str, line: str, loc) -> None:
 
 def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     style = words[3]
-    # a fix of the same ID replaces the earlier one, as in the engines
-    deck.beside = [b for b in deck.beside if b[1][1] != words[1]]
-    deck.movers.pop(words[1], None)
-    deck.shaken.pop(words[1], None)
+    # a fix of the same ID replaces the earlier one where it stood in the engine's list of fixes
+    # (LAMMPS' and LIGGGHTS' Modify::add_fix; the style must be the same, else they stop), which
+    # orders their forces: a freeze defined again after a gravity still zeroes the forces before
+    # the gravity's (LAMMPS measured)
+    again = next((k for k, b in enumerate(deck.beside) if b[1][1] == words[1]), None)
+    wall_again = next((k for k, w in enumerate(deck.walls) if w[1][1] == words[1]), None)
+    _unfix(deck, words[1])
     if style == "move/mesh" and len(words) > 6 and words[4] == "mesh" and words[6] in _SHAKING:
         deck.shaken[words[1]] = (loc, line, words[5])
     if style.startswith("rigid"):
@@ -637,7 +653,8 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if style in BESIDE:
         # gravity on every atom accelerates both bodies of a pair alike (beside passes it over
         # there), but pushes a sphere into a wall during a contact
-        deck.beside.append((loc, list(words)))     # each collision it acts on gets its size (deck.beside)
+        # each collision it acts on gets its size (deck.beside)
+        deck.beside.insert(len(deck.beside) if again is None else again, (loc, list(words)))
         return
     if style in _INSERTING_FIXES:
         deck.inserting = True
@@ -659,8 +676,19 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     least, handler = _FIXES.get(style, (0, None))
     if handler is not None and len(words) >= least:
         handler(deck, words, where, line, loc)
+        if wall_again is not None and deck.walls and deck.walls[-1][1][1] == words[1]:
+            deck.walls.insert(wall_again, deck.walls.pop())
     elif style not in _IRRELEVANT_FIXES:
         deck.unknown.append((*loc, line, "not understood"))
+
+
+def _unfix(deck: Deck, fix_id: str) -> None:
+    """The fix ``fix_id`` gone (unfixed, or defined again): no longer beside the contact, moving
+    atoms or walls, nor a wall a sphere meets."""
+    deck.beside = [b for b in deck.beside if b[1][1] != fix_id]
+    deck.movers.pop(fix_id, None)
+    deck.shaken.pop(fix_id, None)
+    deck.walls = [w for w in deck.walls if w[1][1] != fix_id]
 
 
 def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
@@ -721,6 +749,33 @@ def _poured(deck: Deck, t: int, diameters: set, densities: set, poly: bool) -> N
 _RANGE_SAMPLES = 9
 
 
+#: The size LAMMPS gives an atom a fix deposit makes (radius, density): its atom style's defaults
+#: (AtomVecSphere: diameter 1, density 1), whatever ``set`` gave the type's atoms before (LAMMPS
+#: 22 Jul 2025, atom_style sphere, units si: every deposited atom of a type set to diameter 0.3
+#: and density 7000 has radius 0.5 and mass pi/6)
+DEPOSITED = (0.5, 1.0)
+
+
+def _deposit(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """fix ID group deposit N type M seed [keywords]: type t's atoms made as the runs go, with
+    LAMMPS' default size (DEPOSITED); a molecule's (mol) from its template, which the reader does
+    not read (the type's entry in ``missing`` says so)."""
+    t = atom_type(words[5], where, line)
+    if "mol" in words[8:]:
+        deck.missing[t] = f"fix {words[1]} deposits molecules, whose sizes come from a molecule template"
+        return
+    deck.deposits[t] = words[1]
+    deck.radius[t], deck.density[t] = DEPOSITED
+
+
+def _resized(deck: Deck, ran: set) -> None:
+    """A ``set`` after a run: it may resize the atoms the fixes deposit of ``ran`` made in the runs
+    before, which the engine's pass (its runs skipped) never made, so their size is not known:
+    each such type in ``missing`` from here on."""
+    for t in sorted(ran & set(deck.deposits)):
+        deck.deposits[t] = None
+
+
 def _sampled(sizes: list) -> list:
     """At most about _RANGE_SAMPLES of a type's held sizes, sorted by radius: evenly spaced in that
     order, the smallest and largest radius and the lightest and densest among them (pairing every
@@ -742,7 +797,7 @@ def _wall(deck: Deck, words: list, where: str, line: str, loc) -> None:
 
 #: fix style -> (its least number of words, what it does to the deck): the engines' alike, then each
 #: dialect's own; shorter, not understood
-_FIXES = {"pour": (7, _pour), "wall/gran": (4, _wall), "wall/gran/region": (4, _wall),
+_FIXES = {"pour": (7, _pour), "deposit": (8, _deposit), "wall/gran": (4, _wall), "wall/gran/region": (4, _wall),
           **{style: fix for dialect in DIALECTS.values() for style, fix in dialect.FIXES.items()}}
 
 

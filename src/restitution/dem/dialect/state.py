@@ -20,7 +20,7 @@ from ..calibrate import calibrate
 from ..pair import Pair
 
 __all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number", "pour_into",
-           "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e"]
+           "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e", "wall_faces"]
 
 
 class DeckError(InputFileError):
@@ -85,6 +85,8 @@ class Deck:
     hard: bool = False                            # its limits on Young's modulus lifted
     groups: dict = field(default_factory=dict)    # group ID -> set of types, or None where not by type
     walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
+    # type -> ID of the LAMMPS fix deposit making its atoms (None: a set may have resized them since)
+    deposits: dict = field(default_factory=dict)
     meshes: dict = field(default_factory=dict)    # LIGGGHTS fix mesh/surface ID -> its atom type, or None
     shaken: dict = field(default_factory=dict)    # LIGGGHTS fix move/mesh ID -> (loc, text, mesh ID) of an oscillation
     gran: dict = field(default_factory=dict)      # LAMMPS' older gran/* pair style: style, k_n, gamma_n, limit
@@ -186,7 +188,8 @@ class DeckDialect(Protocol):
     def wall(self, deck: Deck, loc, words: list, unknown: list):
         """A fix wall/gran's flat surfaces (its words, at ``loc``) as [(mesh ID or None, a function of
         the wall Pair and the sphere's type giving (contact, typed e, model, exact line or None), the
-        wall's type or None)], or None with (file, line, text, why) appended to ``unknown``."""
+        wall's type or None, its faces as :func:`wall_faces` gives them or None where a face's
+        normal may point anywhere)], or None with (file, line, text, why) appended to ``unknown``."""
 
 
 #: The audit lists every type pair, N (N + 1) / 2 of them: a deck with more types is refused.
@@ -195,6 +198,52 @@ MAX_TYPES = 100
 #: curvature its engine puts in the contact (LAMMPS' zcylinder), as planes where the engine puts
 #: none (LIGGGHTS' cylinders), or named, not audited (region walls).
 FLAT_WALLS = ("xplane", "yplane", "zplane")
+
+
+def wall_faces(style: str, args: list, either_side: bool = False) -> list | None:
+    """The faces of a primitive wall with the normal each turns to the spheres it meets, as the
+    dialects read their walls' words: [(what, (nx, ny, nz))] for planes a sphere meets from one
+    known side (LAMMPS' xplane|yplane|zplane lo hi: lo from above, hi from below, NULL none);
+    [(what, axis)] with an axis (0, 1, 2) where the normal lies along that axis either way
+    (``either_side``: LIGGGHTS' primitive planes); [(what, -axis - 1)] where it lies anywhere
+    across that axis (a cylinder along it). None where there is no face.
+
+    Parameters
+    ----------
+    style : str
+        xplane, yplane, zplane, xcylinder, ycylinder or zcylinder.
+    args : list of str
+        The words after it (a plane's lo and hi, or its one position where ``either_side``).
+    either_side : bool, optional
+        Whether a plane is met from both sides.
+
+    Returns
+    -------
+    list or None
+
+    Examples
+    --------
+    >>> wall_faces("zplane", ["0.0", "2000.0"])
+    [('the face at z = 0.0', (0.0, 0.0, 1.0)), ('the face at z = 2000.0', (0.0, 0.0, -1.0))]
+    >>> wall_faces("zplane", ["0.0"], either_side=True)
+    [('the plane z = 0.0 (met from either side)', 2)]
+    >>> wall_faces("zcylinder", ["0.05"])
+    [('a zcylinder (its normal across z)', -3)]
+    >>> wall_faces("xplane", ["NULL", "NULL"]) is None
+    True
+    """
+    axis = "xyz".index(style[0])
+    if style.endswith("cylinder"):
+        return [(f"a {style} (its normal across {style[0]})", -axis - 1)]
+    if either_side:
+        return [(f"the plane {style[0]} = {args[0]} (met from either side)", axis)] if args else None
+    faces = []
+    for side, at in zip((1.0, -1.0), args[:2]):
+        if at != "NULL":
+            normal = [0.0, 0.0, 0.0]
+            normal[axis] = side
+            faces.append((f"the face at {style[0]} = {at}", tuple(normal)))
+    return faces or None
 
 
 def types(spec: str, ntypes: int, where: str, text: str) -> range:

@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 from functools import partial
 
-from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types
+from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types, wall_faces
 from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
@@ -326,14 +326,15 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     none changes the contact; a wiggle of nonzero amplitude accelerates it under the sphere, and
     such a wall is named, not audited. A zcylinder is met from inside (LAMMPS' zcylinder confines: a sphere
     outside it overlaps it at every distance), where LAMMPS gives the wall the radius -2 R in the
-    effective radius (:func:`concave_cylinder`). Its arguments are
-    :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s.
+    effective radius (:func:`concave_cylinder`). Its arguments and result are
+    :meth:`~restitution.dem.dialect.state.DeckDialect.wall`'s, each surface's faces those its words
+    give (:func:`~restitution.dem.dialect.state.wall_faces`; a region's none).
 
     Examples
     --------
-    >>> [(mesh, wall_type) for mesh, _, wall_type in
+    >>> [(mesh, wall_type, faces) for mesh, _, wall_type, faces in
     ...  wall(Deck(), (None, 9), "fix w all wall/gran granular hooke 1000 50 zplane 0 NULL".split(), [])]
-    [(None, None)]
+    [(None, None, [('the face at z = 0', (0.0, 0.0, 1.0))])]
     """
     text = " ".join(words)
     style = words[4] if len(words) > 4 else None
@@ -376,8 +377,9 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         unknown.append((*loc, text, f"keyword {words[n]} is not mapped: the wall's contacts are not audited"))
         return None
     shape = _shape(words[k], radius)
+    faces = wall_faces(words[k], words[k + 1:k + 3])
     if style in _OLDER_WALLS:
-        return _older_wall(deck, loc, words, k, unknown, radius)
+        return _older_wall(deck, loc, words, k, unknown, radius, faces)
     try:
         c = _coeff(deck, ["pair_coeff", "*", "*", *words[5:k]], place(loc), text)
     except DeckError as why:
@@ -396,7 +398,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
             if e_new is not None:
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
         return contact, typed, model, exact
-    return [(None, contact_of, None)]
+    return [(None, contact_of, None, faces)]
 
 
 def _still(amplitude: list, where: str, text: str) -> bool:
@@ -428,7 +430,7 @@ def _region_wall(deck: Deck, loc, words: list, unknown: list):
     if surfaces is None:
         unknown += [(f, line, text, why) for f, line, _, why in said]
         return None
-    (_, contact_of, _), = surfaces
+    (_, contact_of, _, _), = surfaces
     # the law reads R_eff where a sphere twice as large, of the same mass, gets another contact
     probes = [contact_of(Pair(r, WALL_SIZE, 1.0, WALL_SIZE), 1)[0] for r in (1.0, 2.0)]
     if probes[0].as_dict() == probes[1].as_dict():
@@ -438,7 +440,7 @@ def _region_wall(deck: Deck, loc, words: list, unknown: list):
         def on_region(pair, t):
             contact, typed, model, exact = contact_of(pair, t)
             return contact, typed, model.replace("zplane wall", why), None
-        return [(None, on_region, None)]
+        return [(None, on_region, None, None)]
     found = region_surfaces(deck, words[k + 1])
     if isinstance(found, str):
         unknown.append((*loc, text, f"a region wall whose law reads the effective radius, in which LAMMPS gives "
@@ -451,7 +453,7 @@ def _region_wall(deck: Deck, loc, words: list, unknown: list):
             contact, typed, model, exact = contact_of(_on_curved(pair, wall_radius, fits, t, loc, text, name), t)
             return contact, typed, model.replace("zplane wall", f"region {words[k + 1]}, {name}"), None
         return contact_on
-    return [(None, on_surface(*surface), None) for surface in found]
+    return [(None, on_surface(*surface), None, None) for surface in found]
 
 
 #: Region styles whose surfaces the audit reads, with their number of arguments
@@ -552,10 +554,10 @@ def _on_curved(pair: Pair, wall_radius: float, fits: float | None, t: int, loc, 
     return _curved(pair, wall_radius)
 
 
-def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list, radius: float | None):
+def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list, radius: float | None, faces: list | None):
     """A wall of an older model (words[4]) with its Kn Kt gamma_n gamma_t xmu dampflag
-    [limit_damping] before the wall style at words[k] (a zcylinder's ``radius``, else None): as
-    wall's result, no e typed."""
+    [limit_damping] before the wall style at words[k] (a zcylinder's ``radius``, else None), its
+    ``faces``: as wall's result, no e typed."""
     text = " ".join(words)
     try:
         law = _gran_law(f"gran/{words[4]}", words[5:k], deck.units, place(loc), text)
@@ -566,7 +568,7 @@ def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list, radius: flo
 
     def contact_of(pair, t):
         return lammps_gran_contact(_against(pair, radius, t, loc, text), **law), None, model, None
-    return [(None, contact_of, None)]
+    return [(None, contact_of, None, faces)]
 
 
 def _shape(style: str, radius: float | None) -> str:

@@ -15,7 +15,8 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 
 from __future__ import annotations
 
-from ...dialect.state import FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, pour_into, spheres
+from ...dialect.state import (FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, pour_into, spheres,
+                              wall_faces)
 from ....core.errors import ParameterError
 from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODELS, LIGGGHTS_MODULUS, LIGGGHTS_NU,
                       STIFFNESS_MODELS, STIFFNESS_UNITS, liggghts_accepts_e, liggghts_contact, liggghts_e,
@@ -390,15 +391,17 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     while k + 1 < len(words) and words[k] in LIGGGHTS_MODEL_TYPES:
         k += 2
     pairs = words[4:k]            # the model_type/model_name pairs; the model keywords come last
-    surfaces = []                 # (mesh ID or None, wall type, what it is)
+    surfaces = []                 # (mesh ID or None, wall type, what it is, its faces)
     if k < len(words) and words[k] == "primitive":
         if k + 3 >= len(words) or words[k + 1] != "type" or words[k + 3] not in _LIGGGHTS_PRIMITIVES:
             return skip("a primitive wall not read (primitive type W STYLE ARGS)")
         style = words[k + 3]
         if not words[k + 2].isdigit():
             return skip(f"wall type {words[k + 2]} is not a type the reader can read")
+        # a primitive plane is met from either side; a mesh's faces may turn anywhere
         surfaces.append((None, int(words[k + 2]), f"{style} wall" if style in FLAT_WALLS else
-                         f"{style} wall (audited as a flat wall: {_FLAT_BY_ENGINE})"))
+                         f"{style} wall (audited as a flat wall: {_FLAT_BY_ENGINE})",
+                         wall_faces(style, words[k + 4:k + 5], either_side=True)))
         k += 4 + _LIGGGHTS_PRIMITIVES[style]
     elif k < len(words) and words[k] == "mesh":
         n = int(words[k + 2]) if k + 2 < len(words) and words[k + 1] == "n_meshes" and words[k + 2].isdigit() else 0
@@ -409,7 +412,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
                 return skip(f"mesh {mesh} has no fix mesh/surface before it")
             if deck.meshes[mesh] is None:
                 return skip(f"mesh {mesh}'s fix mesh/surface gives no type the reader can read")
-            surfaces.append((mesh, deck.meshes[mesh], f"a face of mesh {mesh}"))
+            surfaces.append((mesh, deck.meshes[mesh], f"a face of mesh {mesh}", None))
         k += 4 + n
     else:
         return skip("no wall style read (primitive or mesh)")
@@ -425,7 +428,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         model, limit, absolute = _normal(pairs)
     except ValueError as why:
         return skip(str(why))
-    for _, w, _ in surfaces:
+    for _, w, _, _ in surfaces:
         if not 1 <= w <= deck.ntypes:
             raise DeckError(where, text, f"the wall's type must be in 1..{deck.ntypes}")
     label = _label(model, limit, absolute)
@@ -435,7 +438,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
                 return (_stiffness(deck, model, limit, absolute, pair, t, w), None, f"{label}, {surface} of type {w}",
                         None)
             return contact
-        return [(mesh, stiff_with(w, label_), w) for mesh, w, label_ in surfaces]
+        return [(mesh, stiff_with(w, label_), w, faces) for mesh, w, label_, faces in surfaces]
     E, nu, matrix, _ = _materials(deck)
     kw = _model(deck, model, limit)
 
@@ -452,4 +455,4 @@ def wall(deck: Deck, loc, words: list, unknown: list):
             exact = _exact_line(deck, matrix, t, w, c) if same else None
             return c, e, f"{label}, {surface} of type {w}", exact
         return contact
-    return [(mesh, contact_with(w, label), w) for mesh, w, label in surfaces]
+    return [(mesh, contact_with(w, label), w, faces) for mesh, w, label, faces in surfaces]

