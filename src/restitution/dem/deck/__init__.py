@@ -45,8 +45,9 @@ the order they ran (:mod:`restitution.dem.deck.stream`), and the atoms it held a
 ``pair_style`` of another style discards the coefficients, as in the engines; ``clear`` discards
 every setting. Each ``run`` sees the settings of its moment: every change between runs is a stage
 of its own, audited (``run ... every`` with a command that changes the contact mid-run is
-refused). Particles that are not single spheres (LIGGGHTS multisphere clumps, superquadrics) are
-refused. A deck its engine stops on is refused with the engine's message and the line.
+refused). Particles that are not single spheres (LIGGGHTS multisphere clumps, superquadrics, a LAMMPS
+``fix pour ... mol`` of a template of several atoms) are refused; a pour of a one-atom template pours
+spheres of the template's ``Diameters`` and ``Masses`` (density 1 without Masses, as LAMMPS). A deck its engine stops on is refused with the engine's message and the line.
 
 A type whose atoms have several sizes (or that a ``fix pour`` fills
 from a range of diameters, sampled at nine points with its ends) gives each of its pairs two rows,

@@ -11,6 +11,7 @@ style. Which commands run (if, jump, label, next, quit, include, variable) is th
 from __future__ import annotations
 
 import copy
+import math
 import re
 
 from .beside import BESIDE
@@ -342,6 +343,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             deck.regions[words[1]] = list(words)
     elif cmd == "lattice":
         deck.lattice = list(words)
+    elif cmd == "molecule" and len(words) >= 3:
+        deck.templates[words[1]] = _template(words, where, line, read_file)
     elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
         setattr(deck, cmd.split("_")[0], words[1] == "yes")
     elif cmd not in _IRRELEVANT:
@@ -697,11 +700,11 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
     poured atom in LAMMPS 22 Jul 2025 has radius 0.5 and mass pi/6). A range or poly of several
     diameters (densities) gives the type several sizes (``sizes``: a range sampled with its ends);
     read without the engine, it gives none (the type's entry in ``missing`` says so)."""
-    if "mol" in words[7:]:
-        raise DeckError(where, line, "fix pour ... mol pours molecules (rigid clumps of spheres), not single "
-                                     "spheres: the reader audits the head-on contact of two spheres only")
-    t = atom_type(words[5], where, line)
     tokens = words[7:]
+    if "mol" in tokens:
+        _pour_template(deck, words, where, line)
+        return
+    t = atom_type(words[5], where, line)
 
     def value(k):
         if k >= len(tokens):
@@ -742,6 +745,65 @@ def _poured(deck: Deck, t: int, diameters: set, densities: set, poly: bool) -> N
         lo, hi = min(diameters), max(diameters)
         diameters = {lo + (hi - lo) * k / (_RANGE_SAMPLES - 1) for k in range(_RANGE_SAMPLES)}
     pour_into(deck, t, {(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))})
+
+
+def _template(words: list, where: str, line: str, read_file) -> tuple | str:
+    """molecule ID FILE: the one sphere of its template as (its type, radius, density), or why a
+    pour of it is not audited. LAMMPS gives a template atom the Diameters and Masses sections' values;
+    without Masses, density 1 (22 Jul 2025: a poured template atom of diameter 0.3 has mass
+    pi/6 * 0.3**3); without Diameters it stops at the pour's run (measured)."""
+    if len(words) != 3:
+        return f"molecule {words[1]} has several files or keywords (offset, scale, ...), which the reader does not map"
+    text = fetch(read_file, words[2], where, line)
+    counts, sections, current = {}, {}, None
+    for n, raw in enumerate(text.splitlines()):
+        body = raw.partition("#")[0].split()
+        if n == 0 or not body:
+            continue                                   # the title line, blank or comment lines
+        if current is None and len(body) == 2 and re.fullmatch(r"\d+", body[0]):
+            counts[body[1]] = int(body[0])             # a header: N atoms, N bonds, ...
+        elif body[0][0].isalpha():
+            current = " ".join(body)
+            sections[current] = []
+        elif current is not None:
+            sections[current].append(body)
+    if counts.get("atoms") != 1:
+        return (f"molecule {words[1]} holds {counts.get('atoms', 'no')} atoms: a pour of it inserts clumps of "
+                "spheres (rigid or bonded), and the reader audits the head-on contact of two single spheres only")
+    if "Diameters" not in sections:
+        return f"molecule {words[1]} has no Diameters section: LAMMPS stops when it pours it"
+    try:
+        kind = int(sections["Types"][0][1]) if "Types" in sections else None
+        radius = 0.5 * float(sections["Diameters"][0][1])
+        volume = 4.0 / 3.0 * math.pi * radius ** 3
+        density = float(sections["Masses"][0][1]) / volume if "Masses" in sections else 1.0
+    except (IndexError, ValueError, ZeroDivisionError):
+        return f"molecule {words[1]}'s Types, Diameters or Masses section does not read as one atom's numbers"
+    if kind is None:
+        return f"molecule {words[1]} has no Types section"
+    return (kind, radius, density)
+
+
+def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
+    """fix ID group pour N offset seed ... mol TEMPLATE: a template of one sphere pours spheres of its
+    size (diam and dens are ignored; LAMMPS measured) of type offset + its type; anything else is
+    refused."""
+    tokens = words[7:]
+    k = tokens.index("mol")
+    made = deck.templates.get(tokens[k + 1]) if k + 1 < len(tokens) else None
+    if "rigid" in tokens or "shake" in tokens:
+        made = "fix pour ... rigid/shake makes each poured molecule a constrained body"
+    if made is None:
+        made = "fix pour ... mol names no molecule template the deck defined"
+    if isinstance(made, str):
+        raise DeckError(where, line, made)
+    kind, radius, density = made
+    t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
+    deck.sizes.pop(t, None)
+    if deck.held is not None:
+        pour_into(deck, t, {(radius, density)})
+    else:
+        deck.radius[t], deck.density[t] = radius, density
 
 
 #: Sizes sampled across a pour's range of diameters, its ends included: a law whose eps is not

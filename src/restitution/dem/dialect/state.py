@@ -145,6 +145,9 @@ class Deck:
     movers: dict = field(default_factory=dict)
     bonds: tuple = ()
     special_lj: tuple = (0.0, 0.0, 0.0)
+    # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
+    # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)
+    templates: dict = field(default_factory=dict)
 
 
 class DeckDialect(Protocol):
