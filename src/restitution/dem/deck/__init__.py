@@ -53,8 +53,10 @@ A type whose atoms have several sizes (or that a ``fix pour`` fills
 from a range of diameters, sampled at nine points with its ends) gives each of its pairs two rows,
 the smallest and the largest eps at the middle speed with the spheres they are at (``sizes``,
 ``at``), or one row where the sizes' eps agree to 1e-9 (a law whose eps does not depend on size).
-Under ``pair_style hybrid`` or ``hybrid/overlay`` the one granular sub-style is read from the
-pair_coeff lines naming it; a pair another sub-style covers is named, not audited.
+Under ``pair_style hybrid`` or ``hybrid/overlay`` the granular sub-style is read from the
+pair_coeff lines naming it; a pair another sub-style covers is named, not audited. Two granular
+sub-styles (an older gran/* and granular) give each pair the one its pair_coeff lines name, as
+LAMMPS maps them; a pair both cover (hybrid/overlay) is refused.
 
 Files the deck names (``include``, ``jump``, ``read_data``) are read through a ``read_file``
 callable (the CLI resolves their names against the deck's directory, where LAMMPS is normally

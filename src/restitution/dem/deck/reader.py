@@ -363,28 +363,40 @@ _HYBRID = ("hybrid", "hybrid/overlay")
 
 
 def _hybrid(deck: Deck, words: list, where: str, line: str) -> list:
-    """pair_style hybrid[/overlay] S1 args S2 args ...: the pair_style command of its one granular
-    sub-style (the reader maps no two), which pair_coeff lines naming it set. A sub-style's
-    arguments are numbers, NULL or limit_damping up to the next sub-style's name."""
+    """pair_style hybrid[/overlay] S1 args S2 args ...: the pair_style commands of its granular
+    sub-styles, which pair_coeff lines naming them set: one, or an older gran/* style and granular
+    (each sets its own part of the deck: the older law, granular's cutoff). A sub-style's arguments
+    are numbers, NULL or limit_damping up to the next sub-style's name."""
     grans = [k for k, w in enumerate(words) if k >= 2 and w in PAIR_STYLES]
-    if len(grans) != 1:
-        raise DeckError(where, line, f"pair_style {words[1]} with {'no' if not grans else len(grans)} granular "
-                                     "sub-styles: the reader maps one")
-    k = grans[0]
-    n = k + 1
-    while n < len(words) and (words[n] in ("NULL", "limit_damping") or re.fullmatch(r"[-+.\deE]+", words[n])):
-        n += 1
-    deck.hybrid, deck.substyle, deck.others, deck.idle = words[1], words[k], {}, {}
-    return ["pair_style", *words[k:n]]
+    names = [words[k] for k in grans]
+    older = [name for name in names if name != "granular"]
+    if not grans or len(set(names)) < len(names) or len(older) > 1 or \
+            any(PAIR_STYLES[name].ENGINE != "LAMMPS" for name in names[1:]):
+        raise DeckError(where, line, f"pair_style {words[1]} with {len(grans) or 'no'} granular sub-styles "
+                                     f"({' '.join(names) or 'none'}): the reader maps one, or one older gran/* "
+                                     "style beside granular")
+    substyles = []
+    for k in grans:
+        n = k + 1
+        while n < len(words) and (words[n] in ("NULL", "limit_damping") or re.fullmatch(r"[-+.\deE]+", words[n])):
+            n += 1
+        substyles.append(["pair_style", *words[k:n]])
+    substyles.sort(key=lambda sub: sub[1] == "granular")     # granular's cutoff last: the older resets it
+    deck.hybrid, deck.substyle, deck.others, deck.idle = words[1], " and ".join(names), {}, {}
+    deck.granular_of = {}
+    return substyles
 
 
 def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
     deck.style_line = (loc, line)
+    substyles = [words]
     if len(words) > 2 and words[1] in _HYBRID:
-        words = _hybrid(deck, words, where, line)
+        substyles = _hybrid(deck, words, where, line)
+        words = substyles[0]
     else:
         deck.hybrid, deck.substyle, deck.others, deck.idle = "", "", {}, {}
-    style = words[1]
+        deck.granular_of = {}
+    style = " ".join(sub[1] for sub in substyles)
     if deck.style and style != deck.style:
         # LAMMPS keeps the coefficients for the same style (its settings change); another style
         # starts without any, and LAMMPS stops at the next run unless new pair_coeff lines follow
@@ -392,6 +404,12 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
             deck.reset = (loc, line)
         deck.coeffs, deck.gran = {}, {}
     deck.style = style
+    if len(substyles) > 1:
+        deck.unmapped = ()
+        deck.code = PAIR_STYLES[words[1]].ENGINE
+        for sub in substyles:
+            PAIR_STYLES[sub[1]].pair_style(deck, sub, where, line)
+        return
     if style not in PAIR_STYLES:
         deck.unmapped = (where, line, f"pair_style {style} is not mapped (the reader maps "
                                       f"{', and '.join(d.MAPPED for d in DIALECTS.values())})")
@@ -425,6 +443,19 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
         sub = words[3]
         if sub == deck.substyle:
             words = [*words[:3], *words[4:]]
+        elif sub in deck.substyle.split(" and "):
+            # one of two granular sub-styles: the pairs LAMMPS' loop sets now take it (hybrid), or add
+            # it (hybrid/overlay, a pair of both then refused)
+            words = [*words[:3], *words[4:]]
+            DIALECTS[deck.code].pair_coeff(deck, words, where, line, loc)
+            for key, (_, set_by) in deck.coeffs.items():
+                if set_by is words:
+                    if deck.hybrid == "hybrid":
+                        deck.granular_of[key] = {sub}
+                        deck.others.pop(key, None)
+                    else:
+                        deck.granular_of.setdefault(key, set()).add(sub)
+            return
         else:
             # another sub-style (or none): under hybrid it replaces the granular one on these pairs,
             # under hybrid/overlay it adds its force to it
@@ -434,6 +465,7 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
                 key = (min(i, j), max(i, j))
                 if deck.hybrid == "hybrid":
                     deck.coeffs.pop(key, None)
+                    deck.granular_of.pop(key, None)
                     deck.others[key] = {sub}
                 elif _idle(sub, words[4:]):
                     deck.idle.setdefault(key, set()).add(sub)
@@ -493,7 +525,8 @@ def contact_key(deck: Deck) -> str:
                        deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
-                       set(deck.shapes), deck.sizes, deck.others, deck.idle, [w for _, w in deck.beside],
+                       set(deck.shapes), deck.sizes, deck.others, deck.idle, deck.granular_of,
+                       [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
                        bool(deck.bonds), deck.special_lj)))

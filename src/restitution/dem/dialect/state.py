@@ -134,6 +134,9 @@ class Deck:
     # pairs another sub-style covers, (i, j) -> {its names}
     hybrid: str = ""
     substyle: str = ""
+    # where a hybrid style has two granular sub-styles (an older gran/* and granular): the pairs their
+    # pair_coeff lines map, (i, j) -> {sub-style names} ({} where it has one)
+    granular_of: dict = field(default_factory=dict)
     others: dict = field(default_factory=dict)
     # under hybrid/overlay, the pairs whose other sub-styles carry no force by their coefficients (the
     # zero style, or a prefactor 0), (i, j) -> {their names}: a fix adapt on one gives it a force

@@ -257,7 +257,11 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
         mix = f", nor both {i} {i} and {j} {j}, from which LAMMPS would mix it" if i != j else ""
         raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair{mix}{why}: LAMMPS "
                                                          "stops (all pair coeffs are not set)")
-    if deck.gran:
+    if deck.granular_of and deck.gran:
+        older = _older_or_granular(deck, i, j)
+    else:
+        older = bool(deck.gran)
+    if older:
         pair = spheres(deck, i, j)
         loc = deck.style_line[0]
         contact = lammps_gran_contact(pair, **deck.gran)
@@ -304,6 +308,26 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     model = f"LAMMPS {c.normal}, damping {c.damping}" + (f" ({mixed_from})" if mixed_from else "")
     return {"types": [i, j], "model": model, "typed_e": typed, "end": contact.end, "contact": contact, "pair": pair,
             "exact_line": exact, "line": loc[1], "file": loc[0]}
+
+
+def _older_or_granular(deck: Deck, i: int, j: int) -> bool:
+    """Under a hybrid style of an older gran/* sub-style and granular, whether pair (i, j) takes the
+    older law (else granular's pair_coeff line). LAMMPS' hybrid mixes a pair no line names only from
+    two like pairs of one same sub-style; a pair two sub-styles cover (hybrid/overlay) adds both
+    forces, which the reader does not map."""
+    subs = deck.granular_of.get((i, j))
+    if subs is None:
+        subs_i, subs_j = deck.granular_of.get((i, i), set()), deck.granular_of.get((j, j), set())
+        if len(subs_i) != 1 or subs_i != subs_j:
+            raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair, and types "
+                                                             f"{i} {i} and {j} {j} do not share one sub-style: "
+                                                             "LAMMPS' hybrid cannot mix it and stops")
+        subs = subs_i
+    if len(subs) > 1:
+        raise DeckError("pair_coeff", f"types {i} {j}", f"sub-styles {' and '.join(sorted(subs))} both act on this "
+                                                         "pair (hybrid/overlay): their forces add, which the reader "
+                                                         "does not map")
+    return next(iter(subs)) != "granular"
 
 
 # ---------------------------------------------------------------------------- walls
