@@ -157,7 +157,7 @@ for i, (methods, finite) in enumerate(entries):
             label=label)
 ax.set_xscale("log")
 ax.set_yscale("log")
-ax.set_xlabel("cost per evaluation (s, one core, recorded)")
+ax.set_xlabel("cost per evaluation (s, one core, one timing run)")
 ax.set_ylabel(r"max relative error in $\varepsilon$")
 ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$: error against cost")
 fig.legend(*ax.get_legend_handles_labels(), loc="lower center", ncol=2, frameon=False)

@@ -30,7 +30,7 @@ x_i = np.linspace(0.0, 1.5 * x_turn, n)
 v_f = 1.0 - x_f ** k / k
 v_i = 1.0 + x_i ** k / k
 
-fig, ax = plt.subplots()
+fig, ax = plt.subplots(figsize=(6.3, 3.0))   # wide and low: the legend stands beside the axes
 ax.plot(x_f, v_f, color="tab:blue", lw=2, label=r"forward: $x' + x^{\gamma+1}/(\gamma+1) = 1$")
 ax.plot(x_i, v_i, color="tab:red", lw=2,
         label=r"inverse: $\tilde x' - \tilde x^{\gamma+1}/(\gamma+1) = 1$")
@@ -51,9 +51,9 @@ ax.set_xlim(0.0, x_i[-1])
 ax.set_ylim(-0.1, float(v_i[-1]) * 1.05)
 ax.set_xlabel(r"scaled deformation $x$, $\tilde x$")
 ax.set_ylabel(r"scaled velocity $x' = dx/d\tau$, $\tilde x'$")
-# below the figure: inside the axes, the inverse curve ran through it for gamma = 0 (the dashpot);
-# bbox_inches="tight" keeps it in the saved figure
-fig.legend(*ax.get_legend_handles_labels(), loc="upper center", bbox_to_anchor=(0.5, 0.0),
+# beside the axes: inside them, the inverse curve ran through it for gamma = 0 (the dashpot), and below
+# them it made a tall, narrow figure that left the page's width empty; bbox_inches="tight" keeps it
+fig.legend(*ax.get_legend_handles_labels(), loc="center left", bbox_to_anchor=(1.0, 0.5),
            title=rf"damped only ($\Omega = 0$), $\gamma = {gamma}$")
 fig.set_layout_engine("tight")   # redone when save_figure resizes
-save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=0.75)
+save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=1.0)   # the main figure and the variants' width

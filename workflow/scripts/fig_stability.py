@@ -43,9 +43,10 @@ MARKERS = ["o", "s", "^", "D", "v"]
 styles = {a: dict(ls=STYLES[i % len(STYLES)], marker=MARKERS[i % len(MARKERS)], markersize=3.2,
                   markerfacecolor="none", markeredgewidth=0.7) for i, a in enumerate(alphas)}
 # no row of eps itself: on log axes the pairs' curves coincide there (the caption gives their spread), so
-# the rows that tell the alphas apart get its height
+# the rows that tell the alphas apart get its height; 6.2 in, not more: a taller atlas stood alone on a
+# float page with a fifth of it empty, this one heads a page of text
 rows = ("one_minus", "tau_c", "error")
-fig, axes = plt.subplots(len(rows), len(gammas), figsize=(TEXT_WIDTH_PT / 72.27, 7.6), sharex=True, sharey="row",
+fig, axes = plt.subplots(len(rows), len(gammas), figsize=(TEXT_WIDTH_PT / 72.27, 6.2), sharex=True, sharey="row",
                          squeeze=False)
 w_lo, w_hi = spec.omega_min, spec.omega_max
 viscous_w = np.logspace(np.log10(w_lo), -2, 60)

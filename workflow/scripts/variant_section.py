@@ -64,7 +64,8 @@ what = {"fig1": rf"forward collision at $g = {T['GFig']}$ against the series (co
                  r"$\varepsilon(g)$ from the reference and the relations (compare \FigEps{})")}
 for f, text in what.items():
     out += [r"\begin{figure}[tbp]", r"  \centering",
-            rf"  \includegraphics[width={'' if f == 'fig4' else 0.75}\textwidth]{{{d}/figures/{f}.pdf}}",
+            # fig3 carries its legend beside the axes, so it takes the full width (fig3_phase.py)
+            rf"  \includegraphics[width={'' if f in ('fig3', 'fig4') else 0.75}\textwidth]{{{d}/figures/{f}.pdf}}",
             rf"  \caption{{{name} ($\alpha = {T['ExpAlpha']}$, $\gamma = {T['ExpGamma']}$, "
             rf"$D_1 = {T['DOne']}$, $D_2 = {T['DTwo']}$): {text}; the main figure's counterpart for this force law.}}",
             rf"  \label{{fig:{v}-{f}}}", r"\end{figure}", ""]
