@@ -81,9 +81,15 @@ def test_atomic_path_file_in_the_way(tmp_path):
 
 
 def test_pipeline_scripts_of_this_stage_write_atomically():
+    import inspect
+
+    from restitution_workflow import pipeline
+
+    # a figure saved through save_figure is written under a temporary name and renamed, as atomic_path does
+    assert "atomic_path(" in inspect.getsource(pipeline.save_figure)
     for name in ("stability_atlas.py", "fig_stability.py"):
         text = (ROOT / "workflow" / "scripts" / name).read_text()
-        assert "atomic_path" in text or "write_text_atomic" in text, name
+        assert "atomic_path" in text or "write_text_atomic" in text or "save_figure(" in text, name
         assert ".to_csv(snakemake" not in text and ".savefig(snakemake" not in text, name
 
 
