@@ -57,3 +57,17 @@ def test_a_set_after_a_deposits_run_leaves_its_size_unknown_and_said(tmp_path):
     status, out, err = _audit(tmp_path, DEPOSIT.format(type=2, after="set type 2 diameter 0.2\nrun 60\n"))
     assert "set after a run may resize" in err
     assert status != 0 or not any(2 in p["types"] for p in json.loads(out)["stages"][-1]["pairs"])
+
+
+def test_a_pour_and_a_deposit_into_one_empty_type_give_both_sizes(tmp_path):
+    """Both insert their spheres as the runs go, so the type holds the pour's size and the
+    deposit's default one. Before, the later of the two alone sized the type: one row, at the
+    deposit's radius 0.5 density 1, for a type whose poured pairs are another collision."""
+    pour = "fix g all gravity 9.81 vector 0 0 -1\nfix p all pour 5 2 123 region ins diam one 0.2 dens 2500 2500\n"
+    text = DEPOSIT.format(type=2, after="").replace("fix d all deposit", pour + "fix d all deposit")
+    status, out, err = _audit(tmp_path, text)
+    assert status == 0, err
+    rows = [p for p in json.loads(out)["pairs"] if p["types"] == [2, 2]]
+    # the ends of the type's range: both sizes stand among the spheres its rows are audited at
+    assert len(rows) == 2
+    assert {tuple(sphere) for r in rows for sphere in r["at"]} == {(0.1, 2500.0), (0.5, 1.0)}

@@ -237,11 +237,8 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     deck.held = {t: sorted(v) for t, v in atoms.items()}
     deck.atoms = deck.atoms or bool(atoms)
     deck.present |= set(atoms)
-    for t, made in deck.deposits.items():
-        if made is not None and t in atoms:     # the atoms already there, and those the runs deposit
-            atoms = {**atoms, t: set(atoms[t]) | {DEPOSITED}}
     for t, sizes in atoms.items():
-        # a pour's spheres arrive as its run goes, never in the engine's skipped run: with the held
+        # a pour's or deposit's spheres arrive as its run goes, never in the engine's skipped run: with the held
         sizes = set(sizes) | deck.poured.get(t, set())
         radii = {r for r, _ in sizes}
         dens = {rho for _, rho in sizes}
@@ -860,7 +857,7 @@ def _deposit(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.missing[t] = f"fix {words[1]} deposits molecules, whose sizes come from a molecule template"
         return
     deck.deposits[t] = words[1]
-    deck.radius[t], deck.density[t] = DEPOSITED
+    pour_into(deck, t, {DEPOSITED})
 
 
 def _resized(deck: Deck, ran: set) -> None:
