@@ -14,7 +14,7 @@
 # A deck sets its damping through options whose effect on the coefficient of restitution the
 # engines' manuals do not state: LAMMPS' `damping tsuji` takes an e that is not the eps it produces,
 # unlike types are mixed, and without `limit_damping` contact lasts until the overlap is back to
-# zero. `restitution deck FILE --g SPEEDS` reads the deck as the engine would and prints, for every
+# zero. `restitution deck FILE --g SPEEDS` has the engine read the deck and prints, for every
 # type pair and every flat wall, the eps it gives, and the line that would give the typed e exactly.
 #
 # Here is a small LAMMPS deck: glass (type 1) and steel (type 2) spheres with Hertz contact from
@@ -104,33 +104,61 @@ for line in dict.fromkeys(item["exact_line"] for item in audit["pairs"] + audit[
 # %% [markdown]
 # ## A LIGGGHTS deck
 #
-# The same command reads LIGGGHTS input: its materials come from `fix property/global`, and with
-# `limitForce on` contact ends where the force vanishes, so the typed coefficientRestitution is
-# not the eps either (LIGGGHTS' default, `limitForce off`, gives the typed e exactly).
+# The same command reads LIGGGHTS input. This deck is laid out as LIGGGHTS' tutorials are: type 1
+# is the particles' material, type 2 the floor's, which no particle has; materials come from
+# `fix property/global`, 200 spheres are inserted and fall under gravity. Between particles
+# `limitForce on` ends contact where the force vanishes, so the typed coefficientRestitution is not
+# the eps; the floor's own `fix wall/gran` line leaves it at LIGGGHTS' default, `limitForce off`,
+# which gives the typed e exactly.
 
 # %%
 Path("in.liggghts").write_text("""\
 atom_style      granular
+atom_modify     map array
+communicate     single vel yes
+newton          off
 units           si
+boundary        f f f
 region          box block 0 0.1 0 0.1 0 0.1
-create_box      1 box
-create_atoms    1 single 0.05 0.05 0.05
-set             type 1 diameter 0.002
-set             type 1 density 2500
-fix             m1 all property/global youngsModulus peratomtype 5.e7
-fix             m2 all property/global poissonsRatio peratomtype 0.3
-fix             m3 all property/global coefficientRestitution peratomtypepair 1 0.5
-fix             m4 all property/global coefficientFriction peratomtypepair 1 0.5
+create_box      2 box
+neighbor        0.001 bin
+fix             m1 all property/global youngsModulus peratomtype 5.e7 1.e8
+fix             m2 all property/global poissonsRatio peratomtype 0.3 0.29
+fix             m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.7 0.7 0.9
+fix             m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.3 0.3 0.2
 pair_style      gran model hertz tangential history limitForce on
 pair_coeff      * *
+timestep        5e-6
+fix             gravi all gravity 9.81 vector 0.0 0.0 -1.0
+fix             floor all wall/gran model hertz tangential history primitive type 2 zplane 0.0
+fix             pts all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.001
+fix             dist all particledistribution/discrete 32452843 1 pts 1.0
+region          fill block 0.01 0.09 0.01 0.09 0.05 0.09 units box
+fix             ins all insert/pack seed 49979687 distributiontemplate dist insert_every once &
+                overlapcheck yes all_in yes particles_in_region 200 region fill
 fix             integrate all nve/sphere
-run             1
+run             20000
 """)
-print(subprocess.run([exe, "deck", "in.liggghts", "--g", "1"], capture_output=True, text=True).stdout)
+ligg = subprocess.run([exe, "deck", "in.liggghts", "--g", "0.1", "1"], capture_output=True, text=True)
+print(ligg.stdout)
+print(ligg.stderr)
+
+# %% [markdown]
+# LIGGGHTS itself read the deck (its runs cut to no step, in a scratch copy): the audit knows the
+# inserted spheres' size from what LIGGGHTS inserted, and it says three things a reader of the deck
+# alone would miss:
+#
+# - type 2 has no particle, so its sphere pairs cannot happen and are not reported; it matters only
+#   as the floor's material;
+# - gravity acts during a contact with the floor, which moves the eps the engine measures a little
+#   away from the contact's own, by an amount computed for each speed;
+# - at the deck's time step a contact lasts only 20 to 30 steps, and the eps the engine gives then
+#   depends on where in a step the contact starts; the note gives the time step that keeps eps
+#   within 0.001 of its dt -> 0 value.
 
 # %% [markdown]
 # Paste the printed lines over the deck's own: the LAMMPS `pair_coeff` and `fix wall/gran` lines
 # above (or use `damping coeff_restitution`, whose e is the eps under LAMMPS' default end rule), the
 # LIGGGHTS `coefficientRestitution` line here. The
-# [LAMMPS page](../howto/lammps.md#what-does-my-deck-really-give) lists what the reader understands
-# (variables, `include`, `read_data`, walls, LIGGGHTS' `fix property/global`) and what it refuses.
+# [LAMMPS page](../howto/lammps.md#what-does-my-deck-really-give) says what the audit takes from
+# the engine's reading, what it names without auditing, and what it refuses.
