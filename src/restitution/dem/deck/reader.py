@@ -17,7 +17,8 @@ import re
 from .beside import BESIDE
 from .meeting import MOVERS, neigh_modify, special_bonds
 from .stream import SEEDED
-from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, types, unlabeled
+from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, type_pairs, types,
+                             unlabeled)
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
 from ..engines.lammps.deck import DEFAULT_DT
@@ -387,6 +388,10 @@ def _hybrid(deck: Deck, words: list, where: str, line: str) -> list:
 def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
     deck.style_line = (loc, line)
     substyles = [words]
+    # a hybrid style issued again, or replaced, or replacing another: LAMMPS drops every coefficient
+    # (22 Jul 2025 measured: hybrid then the same hybrid, hybrid then granular, granular then hybrid
+    # each stop the next run on "All pair coeffs are not set"; granular issued again keeps them)
+    hybrid_again = bool(deck.style) and (bool(deck.hybrid) or words[1] in _HYBRID)
     if len(words) > 2 and words[1] in _HYBRID:
         substyles = _hybrid(deck, words, where, line)
         words = substyles[0]
@@ -394,7 +399,7 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.hybrid, deck.substyle, deck.others, deck.idle = "", "", {}, {}
         deck.granular_of = {}
     style = " ".join(sub[1] for sub in substyles)
-    if deck.style and style != deck.style:
+    if deck.style and (style != deck.style or hybrid_again):
         # LAMMPS keeps the coefficients for the same style (its settings change); another style
         # starts without any, and LAMMPS stops at the next run unless new pair_coeff lines follow
         if deck.coeffs or deck.gran:
@@ -456,10 +461,7 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
         else:
             # another sub-style (or none): under hybrid it replaces the granular one on these pairs,
             # under hybrid/overlay it adds its force to it
-            covered = {(i, j) for i in types(words[1], deck.ntypes, where, line)
-                       for j in types(words[2], deck.ntypes, where, line)}
-            for i, j in covered:
-                key = (min(i, j), max(i, j))
+            for key in type_pairs(words[1], words[2], deck.ntypes, where, line):
                 if deck.hybrid == "hybrid":
                     deck.coeffs.pop(key, None)
                     deck.granular_of.pop(key, None)

@@ -19,7 +19,7 @@ from ...core.errors import InputFileError, ParameterError
 from ..calibrate import calibrate
 from ..pair import Pair
 
-__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number", "pour_into",
+__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "type_pairs", "number", "pour_into",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e", "wall_faces"]
 
 
@@ -290,6 +290,42 @@ def types(spec: str, ntypes: int, where: str, text: str) -> range:
     if not 1 <= lo <= hi <= ntypes:
         raise DeckError(where, text, f"types must be in 1..{ntypes}")
     return range(lo, hi + 1)
+
+
+def type_pairs(first: str, second: str, ntypes: int, where: str, text: str) -> list:
+    """The type pairs (i, j), i <= j, a ``pair_coeff FIRST SECOND ...`` sets, by LAMMPS' own loop
+    for every pair style, hybrid sub-styles too: i over the first range, j from max(jlo, i) over
+    the second; two single types put in order first (LAMMPS' input swaps them).
+
+    Parameters
+    ----------
+    first, second : str
+        The two type ranges as written (labels replaced).
+    ntypes : int
+        The deck's number of types.
+    where, text : str
+        The line, for the refusal.
+
+    Returns
+    -------
+    list of tuple
+
+    Raises
+    ------
+    DeckError
+        As :func:`types` for either range.
+
+    Examples
+    --------
+    >>> type_pairs("*", "2", 3, "line 1", ""), type_pairs("2", "1*3", 3, "line 1", "")
+    ([(1, 2), (2, 2)], [(2, 2), (2, 3)])
+    >>> type_pairs("3", "2", 3, "line 1", "")
+    [(2, 3)]
+    """
+    if first.isdigit() and second.isdigit() and int(first) > int(second):
+        first, second = second, first
+    to = types(second, ntypes, where, text)
+    return [(i, j) for i in types(first, ntypes, where, text) for j in range(max(to.start, i), to.stop)]
 
 
 def number(token: str, where: str, text: str) -> float:
