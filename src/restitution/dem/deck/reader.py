@@ -41,7 +41,9 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "echo", "label", "shell", "clear", "create_atoms", "displace_atoms",
                "write_data", "write_dump", "reset_timestep", "run_style", "min_style", "minimize", "balance",
                "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
-               "soft_particles", "modify_timing", "compute_modify", "comm_style", "dimension"}
+               "soft_particles", "modify_timing", "compute_modify", "comm_style", "dimension",
+               # copies of the atoms there are, sizes, types and groups kept (the engine holds them)
+               "replicate"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "deposit",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "enforce2d", "move",
@@ -77,6 +79,7 @@ MAX_STAGES = 100
 #: Commands that neither make atoms, nor run, nor change what the reader reads (units, atom_style and
 #: soft_/hard_particles, though in _IRRELEVANT, are read): a run's ``every`` may run them
 _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms", "units",
+                                  "replicate",
                                   "atom_style", "soft_particles", "hard_particles"})
 #: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
 #: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
@@ -139,6 +142,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     block: list | None = []
     last_block: list | None = None
     deposited_ran: set = set()     # types a fix deposit has run for
+    made: dict = {}                # type -> the sizes of the atoms LAMMPS pours made in the runs so far
     pending: list = []
     for cmd in commands:
         try:
@@ -147,12 +151,16 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
         if split and split[0] == "set":
             _resized(deck, deposited_ran)
+            if made and set_poured(deck, made, split, cmd.loc, cmd.text):
+                block, same = None, False        # the poured sizes changed: no pass repeats the last
         if not split or split[0] in _ENGINE_ONLY:
             continue
         if split[0] == "run":
-            deposited_ran |= {t for t, made in deck.deposits.items() if made is not None}
+            deposited_ran |= {t for t, fix in deck.deposits.items() if fix is not None}
+            for t, sizes in deck.pours.values():
+                made.setdefault(t, set()).update(sizes)
         elif split[0] == "clear":
-            deposited_ran = set()
+            deposited_ran, made = set(), {}
         plain_run = split[0] == "run" and "every" not in split
         if cmd.stage is None and block is not None and (pour := _pour_again(split)) is not None:
             block = block + [pour]
@@ -261,6 +269,10 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
             deck.sizes[t] = _sampled(sorted(set(sizes)))
             if len(deck.sizes[t]) < len(set(sizes)):
                 deck.sampled[t] = len(set(sizes))
+    for t, why in deck.resized.items():
+        for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
+            known.pop(t, None)
+        deck.missing[t] = why
     for t in [t for t, made in deck.deposits.items() if made is None]:
         for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
             known.pop(t, None)
@@ -528,7 +540,7 @@ def contact_key(deck: Deck) -> str:
                        [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
-                       bool(deck.bonds), deck.special_lj)))
+                       bool(deck.bonds), deck.special_lj, deck.dt_reset[1:])))
 
 
 def _coarsest_dt(stage: Deck, deck: Deck) -> None:
@@ -691,6 +703,10 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         # each collision it acts on gets its size (deck.beside)
         deck.beside.insert(len(deck.beside) if again is None else again, (loc, list(words)))
         return
+    if style == "dt/reset":
+        # the time step changes during the runs: the audit's steps per contact are at the deck's
+        deck.dt_reset = (loc, line, words[1])
+        return
     if style in _INSERTING_FIXES:
         deck.inserting = True
         typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()
@@ -723,6 +739,9 @@ def _unfix(deck: Deck, fix_id: str) -> None:
     deck.beside = [b for b in deck.beside if b[1][1] != fix_id]
     deck.movers.pop(fix_id, None)
     deck.shaken.pop(fix_id, None)
+    deck.pours.pop(fix_id, None)
+    if deck.dt_reset and deck.dt_reset[2] == fix_id:
+        deck.dt_reset = ()
     deck.walls = [w for w in deck.walls if w[1][1] != fix_id]
 
 
@@ -757,7 +776,7 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
             densities = {value(k + 1), value(k + 2)}
     deck.sizes.pop(t, None)
     if deck.held is not None:
-        _poured(deck, t, diameters, densities, "poly" in tokens)
+        _poured(deck, words[1], t, diameters, densities, "poly" in tokens)
         return
     if len(diameters) == 1 and len(densities) == 1:
         deck.radius[t], deck.density[t] = 0.5 * diameters.pop(), densities.pop()
@@ -770,13 +789,15 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
     deck.missing[t] = f"fix {words[1]} pours {what} from {lo:g} to {hi:g}"
 
 
-def _poured(deck: Deck, t: int, diameters: set, densities: set, poly: bool) -> None:
-    """The sizes a pour adds to type t (a range, uniform between its ends, sampled with its ends;
-    poly's diameters themselves), with every other source of t's sizes (:func:`pour_into`)."""
+def _poured(deck: Deck, fix: str, t: int, diameters: set, densities: set, poly: bool) -> None:
+    """The sizes pour ``fix`` adds to type t (a range, uniform between its ends, sampled with its
+    ends; poly's diameters themselves), with every other source of t's sizes (:func:`pour_into`)."""
     if not poly and len(diameters) > 1:
         lo, hi = min(diameters), max(diameters)
         diameters = {lo + (hi - lo) * k / (_RANGE_SAMPLES - 1) for k in range(_RANGE_SAMPLES)}
-    pour_into(deck, t, {(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))})
+    sizes = {(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))}
+    deck.pours[fix] = (t, sizes)
+    pour_into(deck, t, sizes)
 
 
 def _template(words: list, where: str, line: str, read_file) -> tuple | str:
@@ -833,6 +854,7 @@ def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
     t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
     deck.sizes.pop(t, None)
     if deck.held is not None:
+        deck.pours[words[1]] = (t, {(radius, density)})
         pour_into(deck, t, {(radius, density)})
     else:
         deck.radius[t], deck.density[t] = radius, density
@@ -868,6 +890,80 @@ def _resized(deck: Deck, ran: set) -> None:
     each such type in ``missing`` from here on."""
     for t in sorted(ran & set(deck.deposits)):
         deck.deposits[t] = None
+
+
+#: set keywords that leave an atom's type, radius and mass as they are
+_SIZELESS_SET = frozenset({"x", "y", "z", "vx", "vy", "vz", "omega", "angmom", "image", "charge", "temperature",
+                           "dipole", "dipole/random", "quat", "quat/random", "theta", "theta/random", "spin",
+                           "spin/random", "mol"})
+
+
+def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
+    """A ``set`` after pours ran: the atoms they made in the runs before (``made``, type -> their
+    (radius, density), changed in place) exist in LAMMPS, never in the engine's pass (its runs
+    skipped), so the reader changes them as LAMMPS does (22 Jul 2025 measured): ``diameter`` keeps
+    an atom's mass (its density becomes m / V at the new radius), ``density`` sets the mass of that
+    density at the atom's radius, ``mass`` the mass; atoms a pour makes later get its own size again.
+    Where the reader cannot tell which of them a set changes (a region, a group other than all,
+    atom IDs), or how (another keyword: ``type``, an atom-style variable, ...), the type's size is
+    unknown from here on (``resized``, in ``missing`` at each run). Returns whether a type's sizes
+    changed.
+
+    Examples
+    --------
+    >>> deck = Deck(held={})
+    >>> made = {1: {(0.005, 2500.0)}}
+    >>> set_poured(deck, made, "set type 1 diameter 0.006".split(), (None, 9), "")
+    True
+    >>> [(r, round(rho, 6)) for r, rho in sorted(deck.poured[1])]
+    [(0.003, 11574.074074)]
+    """
+    if len(words) < 3:
+        return False
+    if words[1] == "type":
+        try:
+            targets = [t for t in types(words[2], deck.ntypes, place(loc), text) if made.get(t)]
+        except DeckError:
+            return False              # LAMMPS stops on the range: its own refusal
+        exact = True
+    else:
+        targets = [t for t, sizes in made.items() if sizes]
+        exact = words[1] == "group" and words[2] == "all"
+    changed = False
+    for t in targets:
+        sizes, why = set(made[t]), None if exact else f"set {words[1]} {words[2]}: the reader does not know which"
+        for key, value in zip(words[3::2], words[4::2]):
+            if key in _SIZELESS_SET or why:
+                continue
+            try:
+                x = float(value)
+            except ValueError:
+                why = f"set ... {key} {value}: its value per atom is not read"
+                continue
+            if key == "diameter":
+                sizes = {(0.5 * x, rho * (r / (0.5 * x)) ** 3) for r, rho in sizes}
+            elif key == "density":
+                sizes = {(r, x) for r, _ in sizes}
+            elif key == "mass":
+                sizes = {(r, x / (4.0 / 3.0 * math.pi * r ** 3)) for r, _ in sizes}
+            else:
+                why = f"set ... {key} changes them in a way the reader does not map"
+        if len(words[3:]) % 2:
+            why = why or "its keywords do not pair with values"
+        if why:
+            deck.resized[t] = (f"{place(loc)} ({' '.join(text.split())}) changes the atoms the pours made of type {t} "
+                               f"in the runs before, which the engine's pass (its runs skipped) never made: {why}, so "
+                               "their size is not known")
+            changed = True
+            continue
+        sizes = {(r, float(f"{rho:.12g}")) for r, rho in sizes}
+        if sizes != made[t]:
+            made[t] = sizes
+            # those made, and those the pours in force make from here on at their own size
+            deck.poured[t] = sizes.union(*(s for u, s in deck.pours.values() if u == t))
+            pour_into(deck, t, set())       # the type's sizes anew (a type no atom of holds in the pass)
+            changed = True
+    return changed
 
 
 def _sampled(sizes: list) -> list:

@@ -115,6 +115,7 @@ class Deck:
     inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     dt: float | None = None                       # the timestep command's, None where the deck has none
+    dt_reset: tuple = ()                          # (loc, text, fix ID) of a fix dt/reset in force, else ()
     regions: dict = field(default_factory=dict)   # region ID -> its words as the engine ran them
     lattice: list = field(default_factory=list)   # the words of the last lattice command ([]: none)
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
@@ -148,6 +149,10 @@ class Deck:
     movers: dict = field(default_factory=dict)
     bonds: tuple = ()
     special_lj: tuple = (0.0, 0.0, 0.0)
+    # LAMMPS fix pour ID -> (its type, the (radius, density) it pours), for pours in force; type ->
+    # why a set after their runs leaves the size of the atoms they made unknown
+    pours: dict = field(default_factory=dict)
+    resized: dict = field(default_factory=dict)
     # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
     # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)
     templates: dict = field(default_factory=dict)
