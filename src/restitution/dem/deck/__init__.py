@@ -388,6 +388,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
 
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
+        restarts = _restart_infos(root) if scratch.restarts else None
         if done.error:
             where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
@@ -396,7 +397,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 # the atoms have no radius to write (an atom style without one): the deck's own
                 # refusal where it has one (its pair style, say), else this
                 try:
-                    read_executed(commands, atoms or [{}], radius, density, read_file)
+                    read_executed(commands, atoms or [{}], radius, density, read_file, restarts)
                 except DeckError as why:
                     if "has no pair_style" not in str(why):
                         raise
@@ -407,7 +408,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, f"{engine} stops here: {message}")
-        deck = read_executed(commands, atoms, radius, density, read_file)
+        deck = read_executed(commands, atoms, radius, density, read_file, restarts)
         notes = _run_dependent_notes(commands, scratch, engine)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
@@ -424,6 +425,18 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                      f"{len(commands)} commands" + (f"; its last {len(last)} runs all saw the same contact settings"
                                                     if len(last) > 1 else ""))
     return deck, notes
+
+
+def _restart_infos(root: Path) -> list:
+    """What the engine held after each read_restart it ran, in order: the blocks its markers' info
+    appended (:data:`restitution.dem.dialect.child.RESTART_INFO`)."""
+    from ..dialect.child import RESTART_INFO
+    try:
+        text = (root / RESTART_INFO).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return []
+    fence = "Info-Info-Info-Info-Info-Info-Info-Info-Info-Info-Info"
+    return [block for block in text.split(fence)[1::2]]
 
 
 def _run_dependent_notes(commands: list, scratch, engine: str) -> list:

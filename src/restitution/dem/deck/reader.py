@@ -88,7 +88,7 @@ _INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/r
 
 
 def read_executed(commands, atoms: list, radius: dict | None = None, density: dict | None = None,
-                  read_file=None) -> Deck:
+                  read_file=None, restarts: list | None = None) -> Deck:
     """The settings of a deck from the commands its engine ran (:mod:`restitution.dem.deck.stream`):
     no control flow here, the engine's own; the atoms each run saw as the engine held them.
 
@@ -104,6 +104,11 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     read_file : callable, optional
         ``read_file(name)``: the text of a file the deck names (a data file's Pair Coeffs), or
         raises OSError.
+    restarts : list of str, optional
+        What the engine held after each ``read_restart`` it ran, in order (LAMMPS' ``info system
+        coeffs groups``): a restart file the deck wrote earlier in the pass is read back as the
+        settings at its ``write_restart`` that LAMMPS stores, checked against it
+        (:func:`read_restart`). None: every read_restart is refused.
 
     Returns
     -------
@@ -143,6 +148,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     last_block: list | None = None
     deposited_ran: set = set()     # types a fix deposit has run for
     made: dict = {}                # type -> the sizes of the atoms LAMMPS pours made in the runs so far
+    written: dict = {}             # restart file -> the settings at its write_restart (restart_state)
+    infos = iter(restarts or ())
     pending: list = []
     for cmd in commands:
         try:
@@ -193,7 +200,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             # between that changes them): held again, over what the commands since say of sizes
             _held(deck, atoms[done - 1], radius or {}, density or {})
         runs = (len(deck.stages), len(deck.stages[-1][0]) if deck.stages else 0)
-        _execute(deck, split, cmd.text, cmd.loc, read_file)
+        if split[0] == "write_restart" and len(split) > 1:
+            written[split[1]] = restart_state(deck, made, deposited_ran)
+        if split[0] == "read_restart" and restarts is not None and len(split) > 1:
+            made = read_restart(deck, split, cmd.loc, cmd.text, written.get(split[1]), next(infos, None))
+            deposited_ran = set()
+        else:
+            _execute(deck, split, cmd.text, cmd.loc, read_file)
         same = plain_run and runs == (len(deck.stages), len(deck.stages[-1][0]) - 1 if deck.stages else -1)
         if cmd.stage is not None:
             recorded = bool(deck.stages) and runs != (len(deck.stages), len(deck.stages[-1][0]))
@@ -225,6 +238,132 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
     return deck
+
+
+#: What a LAMMPS restart file stores of the settings the reader keeps (22 Jul 2025, measured after
+#: write_restart, clear, read_restart: the pair style and its coefficients, the time step, groups,
+#: type labels, special_bonds; not fixes, regions, neigh_modify exclusions or molecule templates):
+#: a read_restart starts afresh as clear does, with these of the settings at the write
+_RESTORED = ("code", "ntypes", "units", "dimension", "atom_style", "atom_style_loc", "style", "style_line",
+             "unmapped", "reset", "coeffs", "gran", "cutoff", "hybrid", "substyle", "granular_of", "others",
+             "idle", "groups", "empty_groups", "filled_groups", "labels", "dt", "atoms", "present",
+             "present_unknown", "bonds", "special_lj")
+
+
+def restart_state(deck: Deck, made: dict, deposited: set) -> tuple:
+    """The settings a ``write_restart`` stores (:data:`_RESTORED`), the sizes of the atoms LAMMPS
+    pours had made by then (in the file, never in the engine's pass: its runs are skipped) and the
+    types a fix deposit had made atoms of.
+
+    Examples
+    --------
+    >>> state, made, deposited = restart_state(Deck(ntypes=2, regions={"r": []}), {}, set())
+    >>> state["ntypes"], "regions" in state
+    (2, False)
+    """
+    return ({name: copy.deepcopy(getattr(deck, name)) for name in _RESTORED}, copy.deepcopy(made), set(deposited))
+
+
+def _restart_info(info: str) -> dict:
+    """What LAMMPS' ``info system coeffs groups`` says it holds: units, atom style, number of types,
+    pair style, time step, the pairs whose coefficients are set, the groups."""
+    found: dict = {"set": set(), "unset": set(), "groups": set()}
+    for line in info.splitlines():
+        if m := re.match(r"Units\s*=\s*(\S+)", line):
+            found["units"] = m.group(1)
+        elif m := re.match(r"Atom style\s*=\s*(\S+)", line):
+            found["atom_style"] = m.group(1)
+        elif m := re.match(r"Atoms\s*=\s*\d+,\s*types\s*=\s*(\d+),\s*style\s*=\s*(\S+)", line):
+            found["ntypes"], found["pair_style"] = int(m.group(1)), m.group(2)
+        elif m := re.match(r"Current timestep size\s*=\s*(\S+)", line):
+            found["dt"] = float(m.group(1))
+        elif m := re.match(r"\s*(\d+)\s+(\d+):\s*is (not )?set", line):
+            found["unset" if m.group(3) else "set"].add((int(m.group(1)), int(m.group(2))))
+        elif m := re.match(r"Group\[\s*\d+\]:\s*(\S+)", line):
+            found["groups"].add(m.group(1))
+    return found
+
+
+def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None, info: str | None) -> dict:
+    """read_restart FILE (LAMMPS): the settings the deck had at its ``write_restart FILE`` that a
+    restart stores (:data:`_RESTORED`), the rest afresh as after clear, checked against what LAMMPS
+    says it holds after the read (``info``: units, atom style, types, pair style, time step, the
+    pairs whose coefficients are set, the groups); the atoms are the engine's at the next run, with
+    those the pours had made before the write. Returns the poured atoms' sizes by type.
+
+    Raises
+    ------
+    DeckError
+        Where the file is not one the deck wrote earlier in the pass (a binary file the reader does
+        not read), the restart holds atoms a fix deposit made, or what LAMMPS holds is not what the
+        deck had at the write.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, units="si", atom_style="sphere", dt=1e-6, style="granular",
+    ...             style_line=(((None, 3), "pair_style granular")), coeffs={(1, 1): ((None, 4), ["pair_coeff"])},
+    ...             regions={"r": ["region"]})
+    >>> info = ("Units = si\\nAtom style = sphere\\nAtoms = 1, types = 1, style = granular\\n"
+    ...         "Current timestep size = 1e-06\\n     1      1: is set\\nGroup[ 0]: all (static)\\n")
+    >>> after = Deck()
+    >>> read_restart(after, ["read_restart", "f"], (None, 9), "read_restart f", restart_state(deck, {}, set()), info)
+    {}
+    >>> after.coeffs == deck.coeffs, after.regions
+    (True, {})
+    """
+    where = place(loc)
+    if written is None:
+        raise DeckError(where, line, f"read_restart reads {words[1]}, which the deck did not write before (with "
+                                     "write_restart, in the engine's pass): what a binary restart file holds is not "
+                                     "read, not audited")
+    if info is None:
+        raise DeckError(where, line, "LAMMPS gave no account of what it holds after the read (the audit's info): "
+                                     "not audited")
+    state, made, deposited = written
+    if deposited:
+        raise DeckError(where, line, f"the restart file holds the atoms fix deposit made of type "
+                                     f"{min(deposited)} in the runs before its write, which the engine's pass (its "
+                                     "runs skipped) never made: their sizes are not followed, not audited")
+    held = _restart_info(info)
+    style_words = state["style_line"][1].split() if state["style_line"] else []
+    dt = state["dt"] if state["dt"] is not None else DEFAULT_DT.get(state["units"])
+    set_before = set(state["coeffs"]) | set(state["others"]) | set(state["idle"])
+    checks = [("units", held.get("units"), state["units"]),
+              ("atom style", held.get("atom_style"), (state["atom_style"] or "atomic").split()[0]),
+              ("number of types", held.get("ntypes"), state["ntypes"]),
+              ("pair style", held.get("pair_style"), style_words[1] if len(style_words) > 1 else "none"),
+              ("groups", held["groups"], {"all", *state["groups"]})]
+    for what, engine, reader in checks:
+        if engine != reader:
+            raise DeckError(where, line, f"after the read LAMMPS holds {what} {_shown(engine)}, where the deck had "
+                                         f"{_shown(reader)} at its write_restart: what the file holds is not "
+                                         "followed, not audited")
+    if dt is None or held.get("dt") is None or abs(held["dt"] - dt) > 1e-5 * abs(dt):
+        raise DeckError(where, line, f"after the read LAMMPS holds time step {held.get('dt')}, where the deck had "
+                                     f"{dt} at its write_restart: not audited")
+    if held["set"] - set_before:
+        pairs = ", ".join(f"{i} {j}" for i, j in sorted(held["set"] - set_before))
+        raise DeckError(where, line, f"after the read LAMMPS holds coefficients for types {pairs}, which the deck "
+                                     "had not set at its write_restart: not audited")
+    fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
+    deck.__dict__.update(fresh.__dict__)
+    for name, value in copy.deepcopy(state).items():
+        setattr(deck, name, value)
+    for key in held["unset"]:
+        # a sub-style whose coefficients a restart does not store: LAMMPS holds none for the pair
+        deck.coeffs.pop(key, None)
+        deck.others.pop(key, None)
+        deck.idle.pop(key, None)
+    deck.held = {}
+    for t, sizes in made.items():
+        deck.poured[t] = set(sizes)
+        pour_into(deck, t, set())
+    return copy.deepcopy(made)
+
+
+def _shown(value) -> str:
+    """A value as a refusal names it (a set of groups sorted)."""
+    return " ".join(sorted(value)) if isinstance(value, set) else str(value)
 
 
 def _pour_again(split: list) -> tuple | None:
@@ -911,7 +1050,7 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
 
     Examples
     --------
-    >>> deck = Deck(held={})
+    >>> deck = Deck(ntypes=1, held={})
     >>> made = {1: {(0.005, 2500.0)}}
     >>> set_poured(deck, made, "set type 1 diameter 0.006".split(), (None, 9), "")
     True

@@ -71,7 +71,10 @@ class Scratch:
     map of ``lines`` (a file none names as written is read by its text, once an include or jump
     of it ran); ``tagged`` the files whose commands carry their tag; ``quoted`` the commands an
     ``if`` or a run's ``every`` runs, by the (file, line) of that command (echoed without a tag);
-    ``origin`` the deck's own folder, which the confined engine sees as the copy."""
+    ``origin`` the deck's own folder, which the confined engine sees as the copy; ``restarts`` the
+    (file, line, text) of each ``read_restart`` made a marker (``include`` of ``restart_k``: the read,
+    then what the engine holds, :data:`restitution.dem.dialect.child.RESTART_INFO`), where the engine's marker has a ``restart``
+    (LAMMPS): a ``write_restart`` then runs, into the copy."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -85,6 +88,7 @@ class Scratch:
     tagged: set = field(default_factory=set)
     quoted: dict = field(default_factory=dict)
     origin: Path | None = None
+    restarts: list = field(default_factory=list)
 
 
 def normalised(text: str) -> str:
@@ -120,7 +124,11 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         ``marker(k, run_text) -> str``: the text of stage k's marker file (the run, then what
         records the atoms); it is written to ``where``/stage_k. A ``quit`` gets one too,
         ``marker(None, quit_text)``, written to ``where``/quit_n: the engine ends the process
-        there, so what it records where the deck ends comes before the quit.
+        there, so what it records where the deck ends comes before the quit. Where it has an
+        attribute ``restart`` (``restart(read_text) -> str``: the read, then what records the
+        engine's state), each ``read_restart`` gets one, written to ``where``/restart_k, and a
+        ``write_restart`` whose file stays in the copy runs (else both stay as they are: the
+        write never runs).
     confined : bool
         Whether the engine will run where it sees nothing outside ``where``
         (:mod:`restitution.dem.dialect.sandbox`); if not, a file the deck names by a variable
@@ -284,6 +292,18 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
     if "$" in word:
         # what it would run cannot be checked first: never run; the deck is refused if it reaches it
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
+    restart = getattr(marker, "restart", None)
+    if word == "write_restart" and restart is not None and len(key.split()) > 1 and (
+            scratch.confined or not _outside(key.split()[1]) and "$" not in key.split()[1]):
+        # its file lands in the copy (the engine's working folder; confined, nothing else is
+        # writable): the deck's read_restart reads it back, in the audit's scratch alone
+        return None
+    if word == "read_restart" and restart is not None:
+        k = len(scratch.restarts)
+        scratch.restarts.append((loc[0], loc[1], key))
+        path = scratch.root / f"restart_{k}"
+        path.write_text(_audit_lines(scratch, restart(key)))
+        return f"include {path}"
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
         return _labelled(scratch, scratch.skipped, NOOP, (word, loc), loc)
     if word in ("include", "jump") and len(key.split()) > 1 and (
