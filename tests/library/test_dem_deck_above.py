@@ -8,11 +8,8 @@ import json
 
 import pytest
 
-from deck_cli import needs_lammps, run
-from restitution.dem.contact import Contact
+from deck_cli import agrees_with_lammps, needs_lammps, run
 from restitution.dem.deck.scratch import MAX_UP
-from restitution.dem.engines.lammps import run as lammps_run
-from restitution.dem.pair import Pair
 
 SIZES = {1: (0.005, 2500.0), 2: (0.003, 7000.0)}
 DATA = """data
@@ -64,13 +61,7 @@ def test_files_named_above_the_decks_folder_are_copied_and_audited(tmp_path):
     assert "shell (../common.in line 1 and any like it): not executed" in err, err
     rows = json.loads(out)["pairs"]
     assert [r["types"] for r in rows] == [[1, 1], [1, 2], [2, 2]]
-    for r in rows:
-        (i, j), g = r["types"], r["speeds"][2]
-        t_c = Contact(r["alpha"], r["gamma"], r["D1"], r["D2"], r["end"]).contact_time(g)
-        pair = Pair.spheres(SIZES[i][0], SIZES[j][0], SIZES[i][1], SIZES[j][1])
-        engine = lammps_run.lammps_eps_extrapolated(pair, LINES, g, t_c, types=(i, j), ntypes=2)
-        print(r["types"], r["eps"][2], engine)
-        assert abs(engine[0] / r["eps"][2] - 1) < 1e-6
+    agrees_with_lammps(rows, SIZES, LINES, 2)
 
 
 @needs_lammps

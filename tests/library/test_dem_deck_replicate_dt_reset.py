@@ -10,12 +10,9 @@ import contextlib
 
 import pytest
 
-from deck_cli import needs_lammps, run
+from deck_cli import agrees_with_lammps, needs_lammps, run
 from restitution.cli import main
-from restitution.dem.contact import Contact
 from restitution.dem.dialect import child
-from restitution.dem.engines.lammps import run as lammps_run
-from restitution.dem.pair import Pair
 
 LINE = "pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3"
 DECK = f"""units si
@@ -50,14 +47,7 @@ def test_replicate_is_audited_as_the_atoms_it_copies(tmp_path):
     assert "not understood" not in err, err
     rows = json.loads(out)["pairs"]
     assert [r["types"] for r in rows] == [[1, 1], [1, 2], [2, 2]]
-    sizes = {1: (0.005, 2500.0), 2: (0.003, 7000.0)}
-    for r in rows:
-        (i, j), g = r["types"], r["speeds"][2]
-        t_c = Contact(r["alpha"], r["gamma"], r["D1"], r["D2"], r["end"]).contact_time(g)
-        pair = Pair.spheres(sizes[i][0], sizes[j][0], sizes[i][1], sizes[j][1])
-        engine = lammps_run.lammps_eps_extrapolated(pair, LINE, g, t_c, types=(i, j), ntypes=2)
-        print(r["types"], r["eps"][2], engine)
-        assert abs(engine[0] / r["eps"][2] - 1) < 1e-6
+    agrees_with_lammps(rows, {1: (0.005, 2500.0), 2: (0.003, 7000.0)}, LINE, 2)
 
 
 @needs_lammps

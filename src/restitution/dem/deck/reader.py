@@ -255,6 +255,20 @@ def restart_state(deck: Deck, made: dict, deposited: set) -> tuple:
     pours had made by then (in the file, never in the engine's pass: its runs are skipped) and the
     types a fix deposit had made atoms of.
 
+    Parameters
+    ----------
+    deck : Deck
+        The settings at the write.
+    made : dict
+        Type -> {(radius, density)} of the atoms the pours had made.
+    deposited : set
+        The types a fix deposit had made atoms of.
+
+    Returns
+    -------
+    tuple
+        (the stored settings by field name, ``made``, ``deposited``), copies.
+
     Examples
     --------
     >>> state, made, deposited = restart_state(Deck(ntypes=2, regions={"r": []}), {}, set())
@@ -289,7 +303,27 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     restart stores (:data:`_RESTORED`), the rest afresh as after clear, checked against what LAMMPS
     says it holds after the read (``info``: units, atom style, types, pair style, time step, the
     pairs whose coefficients are set, the groups); the atoms are the engine's at the next run, with
-    those the pours had made before the write. Returns the poured atoms' sizes by type.
+    those the pours had made before the write.
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place: the settings after the read.
+    words : list of str
+        The read_restart command's words (the file as the engine read it).
+    loc : tuple
+        (file or None, line number) of the command.
+    line : str
+        The command, for the refusal.
+    written : tuple or None
+        :func:`restart_state` at the deck's write_restart of that file, None where it wrote none.
+    info : str or None
+        LAMMPS' ``info system coeffs groups`` after the read.
+
+    Returns
+    -------
+    dict
+        The sizes of the atoms the pours had made by the write, by type.
 
     Raises
     ------
@@ -1045,8 +1079,25 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
     density at the atom's radius, ``mass`` the mass; atoms a pour makes later get its own size again.
     Where the reader cannot tell which of them a set changes (a region, a group other than all,
     atom IDs), or how (another keyword: ``type``, an atom-style variable, ...), the type's size is
-    unknown from here on (``resized``, in ``missing`` at each run). Returns whether a type's sizes
-    changed.
+    unknown from here on (``resized``, in ``missing`` at each run).
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place (``poured``, the types' sizes, ``resized``).
+    made : dict
+        Type -> {(radius, density)} of the atoms the pours made in the runs so far.
+    words : list of str
+        The set command's words, as the engine ran it.
+    loc : tuple
+        (file or None, line number) of the command.
+    text : str
+        The command, for the reason a size is not known.
+
+    Returns
+    -------
+    bool
+        Whether a type's sizes changed.
 
     Examples
     --------
