@@ -94,3 +94,19 @@ def outside_file(tmp_path: Path, absolute: bool) -> tuple[Path, Path, str]:
     target = tmp_path / "TOUCHED"
     (outside / "evil.in").write_text(f"shell touch {target}\n")
     return folder, target, str(outside / "evil.in") if absolute else "../outside/evil.in"
+
+
+def agrees_with_lammps(rows: list, sizes: dict, lines: str, ntypes: int, style: str = "granular") -> None:
+    """Each pair row's eps at its middle speed against LAMMPS' own, head-on, at the types' sizes
+    ({type: (radius, density)}) under the deck's ``lines``: 4000, 8000 and 16000 steps per contact,
+    extrapolated to dt -> 0, within 1e-6."""
+    from restitution.dem.contact import Contact
+    from restitution.dem.pair import Pair
+    for r in rows:
+        (i, j), g = r["types"], r["speeds"][2]
+        t_c = Contact(r["alpha"], r["gamma"], r["D1"], r["D2"], r["end"]).contact_time(g)
+        pair = Pair.spheres(sizes[i][0], sizes[j][0], sizes[i][1], sizes[j][1])
+        engine = lammps_run.lammps_eps_extrapolated(pair, lines, g, t_c, types=(i, j), ntypes=ntypes, style=style)
+        print(r["types"], r["eps"][2], engine)
+        assert abs(engine[0] / r["eps"][2] - 1) < 1e-6, (r["types"], r["eps"][2], engine)
+

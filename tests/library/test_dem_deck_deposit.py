@@ -71,3 +71,15 @@ def test_a_pour_and_a_deposit_into_one_empty_type_give_both_sizes(tmp_path):
     # the ends of the type's range: both sizes stand among the spheres its rows are audited at
     assert len(rows) == 2
     assert {tuple(sphere) for r in rows for sphere in r["at"]} == {(0.1, 2500.0), (0.5, 1.0)}
+
+
+def test_the_deposit_note_names_the_types_other_sizes(tmp_path):
+    """Type 1 holds its created atom (diameter 0.5, density 2500) and the deposit's (diameter 1,
+    density 1): its pairs are audited over both, and the note says so (before: "audited at that
+    size", as if the deposit's were the type's one size)."""
+    status, out, err = _audit(tmp_path, DEPOSIT.format(type=1, after=""))
+    assert status == 0, err
+    rows = [p for p in json.loads(out)["pairs"] if p["types"] == [1, 1]]
+    assert {tuple(sphere) for r in rows for sphere in r["at"]} == {(0.25, 2500.0), (0.5, 1.0)}
+    note = next(line for line in err.splitlines() if "(deposit) makes" in line)
+    assert "beside the type's other sizes (radius 0.25 density 2500)" in note, note

@@ -134,11 +134,14 @@ def add_deck_subcommand(subparsers) -> None:
     d.add_argument("--radius", nargs="+", default=[], metavar="T=R", help="radius of atom type T")
     d.add_argument("--density", nargs="+", default=[], metavar="T=RHO", help="density of atom type T")
     d.add_argument("--json", action="store_true", help="machine-readable output")
-    d.add_argument("--budget", type=number_argument, default=_LibraryDefault("restitution.dem.deck", "BUDGET"),
-                   metavar="SECONDS",
-                   help="wall time the engine's pass through the deck may spend in a loop (from the first line it "
-                        "runs a second time) before it is ended; a pass that runs no line twice may take 10 times "
-                        "it in all (default: %(default)s)")
+    budget = d.add_argument("--budget", type=number_argument,
+                            default=_LibraryDefault("restitution.dem.deck", "BUDGET"), metavar="SECONDS",
+                            help="wall time the engine's pass through the deck may spend in a loop (from the first "
+                                 "line it runs a second time) before it is ended; a pass that runs no line twice may "
+                                 "take %(ceiling)s times it in all (default: %(default)s)")
+    # the ceiling as the library has it, read when the help is printed (argparse fills %(name)s
+    # from the action's attributes)
+    budget.ceiling = _LibraryDefault("restitution.dem.dialect.child", "CEILING")
 
 
 class _LibraryDefault:
@@ -240,7 +243,8 @@ def run_deck(args, out) -> None:
             # a law whose eps and contact time do not depend on g says the same at every speed: once
             clauses = ([f"{said[0][0]} at every speed given{said[0][1]}"] if len(few) > 1 and len(set(said)) == 1
                        else [f"{steps} at g = {g:.4g}{rest}" for (g, *_), (steps, rest) in zip(few, said)])
-            print(f"restitution deck: {name}{where}: at the deck's time step {p['dt']:.4g} a contact lasts "
+            reset = f" ({p['dt_reset']} changes the time step during the runs)" if p.get("dt_reset") else ""
+            print(f"restitution deck: {name}{where}: at the deck's time step {p['dt']:.4g}{reset} a contact lasts "
                   + ", ".join(clauses), file=sys.stderr)
     if args.json:
         write_json(res, out)

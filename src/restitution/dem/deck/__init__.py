@@ -388,6 +388,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
 
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
+        restarts = _restart_infos(root) if scratch.restarts else None
         if done.error:
             where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
@@ -396,7 +397,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 # the atoms have no radius to write (an atom style without one): the deck's own
                 # refusal where it has one (its pair style, say), else this
                 try:
-                    read_executed(commands, atoms or [{}], radius, density, read_file)
+                    read_executed(commands, atoms or [{}], radius, density, read_file, restarts)
                 except DeckError as why:
                     if "has no pair_style" not in str(why):
                         raise
@@ -407,7 +408,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, f"{engine} stops here: {message}")
-        deck = read_executed(commands, atoms, radius, density, read_file)
+        deck = read_executed(commands, atoms, radius, density, read_file, restarts)
         notes = _run_dependent_notes(commands, scratch, engine)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
@@ -424,6 +425,18 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                      f"{len(commands)} commands" + (f"; its last {len(last)} runs all saw the same contact settings"
                                                     if len(last) > 1 else ""))
     return deck, notes
+
+
+def _restart_infos(root: Path) -> list:
+    """What the engine held after each read_restart it ran, in order: the blocks its markers' info
+    appended (:data:`restitution.dem.dialect.child.RESTART_INFO`)."""
+    from ..dialect.child import RESTART_INFO
+    try:
+        text = (root / RESTART_INFO).read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return []
+    fence = "Info-Info-Info-Info-Info-Info-Info-Info-Info-Info-Info"
+    return [block for block in text.split(fence)[1::2]]
 
 
 def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
@@ -616,7 +629,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                         "walls": walls})
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
-            "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck)}
+            "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck)}
 
 
 def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]:
@@ -665,6 +678,10 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                         at)
             pairs += _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row, speeds)))
     walls, walls_not = _wall_rows(deck, speeds, ran)
+    if deck.dt_reset:
+        for row in pairs + walls:
+            if "dt" in row:
+                row["dt_reset"] = f"{place(deck.dt_reset[0])} fix {deck.dt_reset[2]} dt/reset"
     return pairs, walls, not_audited + walls_not
 
 
@@ -831,9 +848,32 @@ def _empty_notes(deck: Deck) -> list:
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
     return [f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
-            "whatever set gave the type's atoms before: audited at that size" for t, fix in sorted(deposited.items())] + [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
+            f"whatever set gave the type's atoms before: audited at that size{_beside_deposited(stages, t)}"
+            for t, fix in sorted(deposited.items())] + [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
             "sphere pairs cannot happen there and are not audited" for t in empty if t not in inserted] + \
         [f"type {t} is inserted by a fix (deposit) as the runs go, at sizes the audit does not read: its pairs "
          "are not audited" for t in inserted] + \
         [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the smallest and "
          "largest radius and the lightest and densest among them" for t, (n, k) in sorted(sampled.items())]
+
+
+def _beside_deposited(stages: list, t: int) -> str:
+    """The other sizes type t holds beside a deposit's (its created or poured atoms), as a deposit's
+    note names them: the pairs are audited over all of them."""
+    from .reader import DEPOSITED
+    others = sorted({size for d in stages for size in d.sizes.get(t, ())} - {DEPOSITED})
+    if not others:
+        return ""
+    shown = ", ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in others[:3])
+    more = f" and {len(others) - 3} more" if len(others) > 3 else ""
+    return f", beside the type's other sizes ({shown}{more}), over which its pairs are audited"
+
+
+def _dt_reset_notes(deck: Deck) -> list:
+    """One note per fix dt/reset some run sees: it changes the time step during the runs, where the
+    audit's steps per contact (and the eps the integrator gives at the deck's step) are stated at
+    the deck's own timestep."""
+    seen = dict.fromkeys(snap.dt_reset for _, snap, _ in deck.stages if snap.dt_reset)
+    return [f"{place(loc)} fix {fix} dt/reset changes the time step during the runs ({text}): the steps per contact "
+            "and the eps at the deck's time step stated here are at its timestep command's dt (or LAMMPS' default), "
+            "not at the steps dt/reset takes; eps at dt -> 0 does not depend on it" for loc, text, fix in seen]

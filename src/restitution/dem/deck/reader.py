@@ -17,7 +17,8 @@ import re
 from .beside import BESIDE
 from .meeting import MOVERS, neigh_modify, special_bonds
 from .stream import SEEDED
-from ..dialect.state import Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, types, unlabeled
+from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, type_pairs, types,
+                             unlabeled)
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
 from ..engines.lammps.deck import DEFAULT_DT
@@ -40,7 +41,9 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "echo", "label", "shell", "clear", "create_atoms", "displace_atoms",
                "write_data", "write_dump", "reset_timestep", "run_style", "min_style", "minimize", "balance",
                "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
-               "soft_particles", "modify_timing", "compute_modify", "comm_style", "dimension"}
+               "soft_particles", "modify_timing", "compute_modify", "comm_style", "dimension",
+               # copies of the atoms there are, sizes, types and groups kept (the engine holds them)
+               "replicate"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "deposit",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "enforce2d", "move",
@@ -76,6 +79,7 @@ MAX_STAGES = 100
 #: Commands that neither make atoms, nor run, nor change what the reader reads (units, atom_style and
 #: soft_/hard_particles, though in _IRRELEVANT, are read): a run's ``every`` may run them
 _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms", "units",
+                                  "replicate",
                                   "atom_style", "soft_particles", "hard_particles"})
 #: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
 #: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
@@ -84,7 +88,7 @@ _INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/r
 
 
 def read_executed(commands, atoms: list, radius: dict | None = None, density: dict | None = None,
-                  read_file=None) -> Deck:
+                  read_file=None, restarts: list | None = None) -> Deck:
     """The settings of a deck from the commands its engine ran (:mod:`restitution.dem.deck.stream`):
     no control flow here, the engine's own; the atoms each run saw as the engine held them.
 
@@ -100,6 +104,11 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     read_file : callable, optional
         ``read_file(name)``: the text of a file the deck names (a data file's Pair Coeffs), or
         raises OSError.
+    restarts : list of str, optional
+        What the engine held after each ``read_restart`` it ran, in order (LAMMPS' ``info system
+        coeffs groups``): a restart file the deck wrote earlier in the pass is read back as the
+        settings at its ``write_restart`` that LAMMPS stores, checked against it
+        (:func:`read_restart`). None: every read_restart is refused.
 
     Returns
     -------
@@ -138,6 +147,9 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     block: list | None = []
     last_block: list | None = None
     deposited_ran: set = set()     # types a fix deposit has run for
+    made: dict = {}                # type -> the sizes of the atoms LAMMPS pours made in the runs so far
+    written: dict = {}             # restart file -> the settings at its write_restart (restart_state)
+    infos = iter(restarts or ())
     pending: list = []
     for cmd in commands:
         try:
@@ -146,12 +158,16 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
         if split and split[0] == "set":
             _resized(deck, deposited_ran)
+            if made and set_poured(deck, made, split, cmd.loc, cmd.text):
+                block, same = None, False        # the poured sizes changed: no pass repeats the last
         if not split or split[0] in _ENGINE_ONLY:
             continue
         if split[0] == "run":
-            deposited_ran |= {t for t, made in deck.deposits.items() if made is not None}
+            deposited_ran |= {t for t, fix in deck.deposits.items() if fix is not None}
+            for t, sizes in deck.pours.values():
+                made.setdefault(t, set()).update(sizes)
         elif split[0] == "clear":
-            deposited_ran = set()
+            deposited_ran, made = set(), {}
         plain_run = split[0] == "run" and "every" not in split
         if cmd.stage is None and block is not None and (pour := _pour_again(split)) is not None:
             block = block + [pour]
@@ -184,7 +200,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             # between that changes them): held again, over what the commands since say of sizes
             _held(deck, atoms[done - 1], radius or {}, density or {})
         runs = (len(deck.stages), len(deck.stages[-1][0]) if deck.stages else 0)
-        _execute(deck, split, cmd.text, cmd.loc, read_file)
+        if split[0] == "write_restart" and len(split) > 1:
+            written[split[1]] = restart_state(deck, made, deposited_ran)
+        if split[0] == "read_restart" and restarts is not None and len(split) > 1:
+            made = read_restart(deck, split, cmd.loc, cmd.text, written.get(split[1]), next(infos, None))
+            deposited_ran = set()
+        else:
+            _execute(deck, split, cmd.text, cmd.loc, read_file)
         same = plain_run and runs == (len(deck.stages), len(deck.stages[-1][0]) - 1 if deck.stages else -1)
         if cmd.stage is not None:
             recorded = bool(deck.stages) and runs != (len(deck.stages), len(deck.stages[-1][0]))
@@ -216,6 +238,166 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                             "(LIGGGHTS) line")
     return deck
+
+
+#: What a LAMMPS restart file stores of the settings the reader keeps (22 Jul 2025, measured after
+#: write_restart, clear, read_restart: the pair style and its coefficients, the time step, groups,
+#: type labels, special_bonds; not fixes, regions, neigh_modify exclusions or molecule templates):
+#: a read_restart starts afresh as clear does, with these of the settings at the write
+_RESTORED = ("code", "ntypes", "units", "dimension", "atom_style", "atom_style_loc", "style", "style_line",
+             "unmapped", "reset", "coeffs", "gran", "cutoff", "hybrid", "substyle", "granular_of", "others",
+             "idle", "groups", "empty_groups", "filled_groups", "labels", "dt", "atoms", "present",
+             "present_unknown", "bonds", "special_lj")
+
+
+def restart_state(deck: Deck, made: dict, deposited: set) -> tuple:
+    """The settings a ``write_restart`` stores (:data:`_RESTORED`), the sizes of the atoms LAMMPS
+    pours had made by then (in the file, never in the engine's pass: its runs are skipped) and the
+    types a fix deposit had made atoms of.
+
+    Parameters
+    ----------
+    deck : Deck
+        The settings at the write.
+    made : dict
+        Type -> {(radius, density)} of the atoms the pours had made.
+    deposited : set
+        The types a fix deposit had made atoms of.
+
+    Returns
+    -------
+    tuple
+        (the stored settings by field name, ``made``, ``deposited``), copies.
+
+    Examples
+    --------
+    >>> state, made, deposited = restart_state(Deck(ntypes=2, regions={"r": []}), {}, set())
+    >>> state["ntypes"], "regions" in state
+    (2, False)
+    """
+    return ({name: copy.deepcopy(getattr(deck, name)) for name in _RESTORED}, copy.deepcopy(made), set(deposited))
+
+
+def _restart_info(info: str) -> dict:
+    """What LAMMPS' ``info system coeffs groups`` says it holds: units, atom style, number of types,
+    pair style, time step, the pairs whose coefficients are set, the groups."""
+    found: dict = {"set": set(), "unset": set(), "groups": set()}
+    for line in info.splitlines():
+        if m := re.match(r"Units\s*=\s*(\S+)", line):
+            found["units"] = m.group(1)
+        elif m := re.match(r"Atom style\s*=\s*(\S+)", line):
+            found["atom_style"] = m.group(1)
+        elif m := re.match(r"Atoms\s*=\s*\d+,\s*types\s*=\s*(\d+),\s*style\s*=\s*(\S+)", line):
+            found["ntypes"], found["pair_style"] = int(m.group(1)), m.group(2)
+        elif m := re.match(r"Current timestep size\s*=\s*(\S+)", line):
+            found["dt"] = float(m.group(1))
+        elif m := re.match(r"\s*(\d+)\s+(\d+):\s*is (not )?set", line):
+            found["unset" if m.group(3) else "set"].add((int(m.group(1)), int(m.group(2))))
+        elif m := re.match(r"Group\[\s*\d+\]:\s*(\S+)", line):
+            found["groups"].add(m.group(1))
+    return found
+
+
+def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None, info: str | None) -> dict:
+    """read_restart FILE (LAMMPS): the settings the deck had at its ``write_restart FILE`` that a
+    restart stores (:data:`_RESTORED`), the rest afresh as after clear, checked against what LAMMPS
+    says it holds after the read (``info``: units, atom style, types, pair style, time step, the
+    pairs whose coefficients are set, the groups); the atoms are the engine's at the next run, with
+    those the pours had made before the write.
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place: the settings after the read.
+    words : list of str
+        The read_restart command's words (the file as the engine read it).
+    loc : tuple
+        (file or None, line number) of the command.
+    line : str
+        The command, for the refusal.
+    written : tuple or None
+        :func:`restart_state` at the deck's write_restart of that file, None where it wrote none.
+    info : str or None
+        LAMMPS' ``info system coeffs groups`` after the read.
+
+    Returns
+    -------
+    dict
+        The sizes of the atoms the pours had made by the write, by type.
+
+    Raises
+    ------
+    DeckError
+        Where the file is not one the deck wrote earlier in the pass (a binary file the reader does
+        not read), the restart holds atoms a fix deposit made, or what LAMMPS holds is not what the
+        deck had at the write.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, units="si", atom_style="sphere", dt=1e-6, style="granular",
+    ...             style_line=(((None, 3), "pair_style granular")), coeffs={(1, 1): ((None, 4), ["pair_coeff"])},
+    ...             regions={"r": ["region"]})
+    >>> info = ("Units = si\\nAtom style = sphere\\nAtoms = 1, types = 1, style = granular\\n"
+    ...         "Current timestep size = 1e-06\\n     1      1: is set\\nGroup[ 0]: all (static)\\n")
+    >>> after = Deck()
+    >>> read_restart(after, ["read_restart", "f"], (None, 9), "read_restart f", restart_state(deck, {}, set()), info)
+    {}
+    >>> after.coeffs == deck.coeffs, after.regions
+    (True, {})
+    """
+    where = place(loc)
+    if written is None:
+        raise DeckError(where, line, f"read_restart reads {words[1]}, which the deck did not write before (with "
+                                     "write_restart, in the engine's pass): what a binary restart file holds is not "
+                                     "read, not audited")
+    if info is None:
+        raise DeckError(where, line, "LAMMPS gave no account of what it holds after the read (the audit's info): "
+                                     "not audited")
+    state, made, deposited = written
+    if deposited:
+        raise DeckError(where, line, f"the restart file holds the atoms fix deposit made of type "
+                                     f"{min(deposited)} in the runs before its write, which the engine's pass (its "
+                                     "runs skipped) never made: their sizes are not followed, not audited")
+    held = _restart_info(info)
+    style_words = state["style_line"][1].split() if state["style_line"] else []
+    dt = state["dt"] if state["dt"] is not None else DEFAULT_DT.get(state["units"])
+    set_before = set(state["coeffs"]) | set(state["others"]) | set(state["idle"])
+    checks = [("units", held.get("units"), state["units"]),
+              ("atom style", held.get("atom_style"), (state["atom_style"] or "atomic").split()[0]),
+              ("number of types", held.get("ntypes"), state["ntypes"]),
+              ("pair style", held.get("pair_style"), style_words[1] if len(style_words) > 1 else "none"),
+              ("groups", held["groups"], {"all", *state["groups"]})]
+    for what, engine, reader in checks:
+        if engine != reader:
+            raise DeckError(where, line, f"after the read LAMMPS holds {what} {_shown(engine)}, where the deck had "
+                                         f"{_shown(reader)} at its write_restart: what the file holds is not "
+                                         "followed, not audited")
+    if dt is None or held.get("dt") is None or abs(held["dt"] - dt) > 1e-5 * abs(dt):
+        raise DeckError(where, line, f"after the read LAMMPS holds time step {held.get('dt')}, where the deck had "
+                                     f"{dt} at its write_restart: not audited")
+    if held["set"] - set_before:
+        pairs = ", ".join(f"{i} {j}" for i, j in sorted(held["set"] - set_before))
+        raise DeckError(where, line, f"after the read LAMMPS holds coefficients for types {pairs}, which the deck "
+                                     "had not set at its write_restart: not audited")
+    fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
+    deck.__dict__.update(fresh.__dict__)
+    for name, value in copy.deepcopy(state).items():
+        setattr(deck, name, value)
+    for key in held["unset"]:
+        # a sub-style whose coefficients a restart does not store: LAMMPS holds none for the pair
+        deck.coeffs.pop(key, None)
+        deck.others.pop(key, None)
+        deck.idle.pop(key, None)
+    deck.held = {}
+    for t, sizes in made.items():
+        deck.poured[t] = set(sizes)
+        pour_into(deck, t, set())
+    return copy.deepcopy(made)
+
+
+def _shown(value) -> str:
+    """A value as a refusal names it (a set of groups sorted)."""
+    return " ".join(sorted(value)) if isinstance(value, set) else str(value)
 
 
 def _pour_again(split: list) -> tuple | None:
@@ -260,6 +442,10 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
             deck.sizes[t] = _sampled(sorted(set(sizes)))
             if len(deck.sizes[t]) < len(set(sizes)):
                 deck.sampled[t] = len(set(sizes))
+    for t, why in deck.resized.items():
+        for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
+            known.pop(t, None)
+        deck.missing[t] = why
     for t in [t for t, made in deck.deposits.items() if made is None]:
         for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
             known.pop(t, None)
@@ -387,6 +573,10 @@ def _hybrid(deck: Deck, words: list, where: str, line: str) -> list:
 def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
     deck.style_line = (loc, line)
     substyles = [words]
+    # a hybrid style issued again, or replaced, or replacing another: LAMMPS drops every coefficient
+    # (22 Jul 2025 measured: hybrid then the same hybrid, hybrid then granular, granular then hybrid
+    # each stop the next run on "All pair coeffs are not set"; granular issued again keeps them)
+    hybrid_again = bool(deck.style) and (bool(deck.hybrid) or words[1] in _HYBRID)
     if len(words) > 2 and words[1] in _HYBRID:
         substyles = _hybrid(deck, words, where, line)
         words = substyles[0]
@@ -394,7 +584,7 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.hybrid, deck.substyle, deck.others, deck.idle = "", "", {}, {}
         deck.granular_of = {}
     style = " ".join(sub[1] for sub in substyles)
-    if deck.style and style != deck.style:
+    if deck.style and (style != deck.style or hybrid_again):
         # LAMMPS keeps the coefficients for the same style (its settings change); another style
         # starts without any, and LAMMPS stops at the next run unless new pair_coeff lines follow
         if deck.coeffs or deck.gran:
@@ -456,10 +646,7 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
         else:
             # another sub-style (or none): under hybrid it replaces the granular one on these pairs,
             # under hybrid/overlay it adds its force to it
-            covered = {(i, j) for i in types(words[1], deck.ntypes, where, line)
-                       for j in types(words[2], deck.ntypes, where, line)}
-            for i, j in covered:
-                key = (min(i, j), max(i, j))
+            for key in type_pairs(words[1], words[2], deck.ntypes, where, line):
                 if deck.hybrid == "hybrid":
                     deck.coeffs.pop(key, None)
                     deck.granular_of.pop(key, None)
@@ -526,7 +713,7 @@ def contact_key(deck: Deck) -> str:
                        [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
-                       bool(deck.bonds), deck.special_lj)))
+                       bool(deck.bonds), deck.special_lj, deck.dt_reset[1:])))
 
 
 def _coarsest_dt(stage: Deck, deck: Deck) -> None:
@@ -689,6 +876,10 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         # each collision it acts on gets its size (deck.beside)
         deck.beside.insert(len(deck.beside) if again is None else again, (loc, list(words)))
         return
+    if style == "dt/reset":
+        # the time step changes during the runs: the audit's steps per contact are at the deck's
+        deck.dt_reset = (loc, line, words[1])
+        return
     if style in _INSERTING_FIXES:
         deck.inserting = True
         typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()
@@ -721,6 +912,9 @@ def _unfix(deck: Deck, fix_id: str) -> None:
     deck.beside = [b for b in deck.beside if b[1][1] != fix_id]
     deck.movers.pop(fix_id, None)
     deck.shaken.pop(fix_id, None)
+    deck.pours.pop(fix_id, None)
+    if deck.dt_reset and deck.dt_reset[2] == fix_id:
+        deck.dt_reset = ()
     deck.walls = [w for w in deck.walls if w[1][1] != fix_id]
 
 
@@ -755,7 +949,7 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
             densities = {value(k + 1), value(k + 2)}
     deck.sizes.pop(t, None)
     if deck.held is not None:
-        _poured(deck, t, diameters, densities, "poly" in tokens)
+        _poured(deck, words[1], t, diameters, densities, "poly" in tokens)
         return
     if len(diameters) == 1 and len(densities) == 1:
         deck.radius[t], deck.density[t] = 0.5 * diameters.pop(), densities.pop()
@@ -768,13 +962,15 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
     deck.missing[t] = f"fix {words[1]} pours {what} from {lo:g} to {hi:g}"
 
 
-def _poured(deck: Deck, t: int, diameters: set, densities: set, poly: bool) -> None:
-    """The sizes a pour adds to type t (a range, uniform between its ends, sampled with its ends;
-    poly's diameters themselves), with every other source of t's sizes (:func:`pour_into`)."""
+def _poured(deck: Deck, fix: str, t: int, diameters: set, densities: set, poly: bool) -> None:
+    """The sizes pour ``fix`` adds to type t (a range, uniform between its ends, sampled with its
+    ends; poly's diameters themselves), with every other source of t's sizes (:func:`pour_into`)."""
     if not poly and len(diameters) > 1:
         lo, hi = min(diameters), max(diameters)
         diameters = {lo + (hi - lo) * k / (_RANGE_SAMPLES - 1) for k in range(_RANGE_SAMPLES)}
-    pour_into(deck, t, {(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))})
+    sizes = {(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))}
+    deck.pours[fix] = (t, sizes)
+    pour_into(deck, t, sizes)
 
 
 def _template(words: list, where: str, line: str, read_file) -> tuple | str:
@@ -831,6 +1027,7 @@ def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
     t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
     deck.sizes.pop(t, None)
     if deck.held is not None:
+        deck.pours[words[1]] = (t, {(radius, density)})
         pour_into(deck, t, {(radius, density)})
     else:
         deck.radius[t], deck.density[t] = radius, density
@@ -866,6 +1063,97 @@ def _resized(deck: Deck, ran: set) -> None:
     each such type in ``missing`` from here on."""
     for t in sorted(ran & set(deck.deposits)):
         deck.deposits[t] = None
+
+
+#: set keywords that leave an atom's type, radius and mass as they are
+_SIZELESS_SET = frozenset({"x", "y", "z", "vx", "vy", "vz", "omega", "angmom", "image", "charge", "temperature",
+                           "dipole", "dipole/random", "quat", "quat/random", "theta", "theta/random", "spin",
+                           "spin/random", "mol"})
+
+
+def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
+    """A ``set`` after pours ran: the atoms they made in the runs before (``made``, type -> their
+    (radius, density), changed in place) exist in LAMMPS, never in the engine's pass (its runs
+    skipped), so the reader changes them as LAMMPS does (22 Jul 2025 measured): ``diameter`` keeps
+    an atom's mass (its density becomes m / V at the new radius), ``density`` sets the mass of that
+    density at the atom's radius, ``mass`` the mass; atoms a pour makes later get its own size again.
+    Where the reader cannot tell which of them a set changes (a region, a group other than all,
+    atom IDs), or how (another keyword: ``type``, an atom-style variable, ...), the type's size is
+    unknown from here on (``resized``, in ``missing`` at each run).
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place (``poured``, the types' sizes, ``resized``).
+    made : dict
+        Type -> {(radius, density)} of the atoms the pours made in the runs so far.
+    words : list of str
+        The set command's words, as the engine ran it.
+    loc : tuple
+        (file or None, line number) of the command.
+    text : str
+        The command, for the reason a size is not known.
+
+    Returns
+    -------
+    bool
+        Whether a type's sizes changed.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, held={})
+    >>> made = {1: {(0.005, 2500.0)}}
+    >>> set_poured(deck, made, "set type 1 diameter 0.006".split(), (None, 9), "")
+    True
+    >>> [(r, round(rho, 6)) for r, rho in sorted(deck.poured[1])]
+    [(0.003, 11574.074074)]
+    """
+    if len(words) < 3:
+        return False
+    if words[1] == "type":
+        try:
+            targets = [t for t in types(words[2], deck.ntypes, place(loc), text) if made.get(t)]
+        except DeckError:
+            return False              # LAMMPS stops on the range: its own refusal
+        exact = True
+    else:
+        targets = [t for t, sizes in made.items() if sizes]
+        exact = words[1] == "group" and words[2] == "all"
+    changed = False
+    for t in targets:
+        sizes, why = set(made[t]), None if exact else f"set {words[1]} {words[2]}: the reader does not know which"
+        for key, value in zip(words[3::2], words[4::2]):
+            if key in _SIZELESS_SET or why:
+                continue
+            try:
+                x = float(value)
+            except ValueError:
+                why = f"set ... {key} {value}: its value per atom is not read"
+                continue
+            if key == "diameter":
+                sizes = {(0.5 * x, rho * (r / (0.5 * x)) ** 3) for r, rho in sizes}
+            elif key == "density":
+                sizes = {(r, x) for r, _ in sizes}
+            elif key == "mass":
+                sizes = {(r, x / (4.0 / 3.0 * math.pi * r ** 3)) for r, _ in sizes}
+            else:
+                why = f"set ... {key} changes them in a way the reader does not map"
+        if len(words[3:]) % 2:
+            why = why or "its keywords do not pair with values"
+        if why:
+            deck.resized[t] = (f"{place(loc)} ({' '.join(text.split())}) changes the atoms the pours made of type {t} "
+                               f"in the runs before, which the engine's pass (its runs skipped) never made: {why}, so "
+                               "their size is not known")
+            changed = True
+            continue
+        sizes = {(r, float(f"{rho:.12g}")) for r, rho in sizes}
+        if sizes != made[t]:
+            made[t] = sizes
+            # those made, and those the pours in force make from here on at their own size
+            deck.poured[t] = sizes.union(*(s for u, s in deck.pours.values() if u == t))
+            pour_into(deck, t, set())       # the type's sizes anew (a type no atom of holds in the pass)
+            changed = True
+    return changed
 
 
 def _sampled(sizes: list) -> list:

@@ -51,8 +51,11 @@ _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "q
 AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
 RUN_COMMANDS = ("run", "minimize")
-#: A deck's folder copied whole; a larger one is refused
+#: A deck's folder copied whole; a larger one is refused (with the files above it that it names)
 MAX_FOLDER_BYTES = 200 * 2 ** 20
+#: How many folders above the deck's its files may reach by ``..`` (a CFDEM case's ``../DEM/...``):
+#: what they name there is copied beside the copy, at the same place; further is refused
+MAX_UP = 3
 _MAX_TEXT_BYTES = 20 * 2 ** 20
 
 
@@ -71,7 +74,12 @@ class Scratch:
     map of ``lines`` (a file none names as written is read by its text, once an include or jump
     of it ran); ``tagged`` the files whose commands carry their tag; ``quoted`` the commands an
     ``if`` or a run's ``every`` runs, by the (file, line) of that command (echoed without a tag);
-    ``origin`` the deck's own folder, which the confined engine sees as the copy."""
+    ``origin`` the deck's own folder, which the confined engine sees as the copy; ``restarts`` the
+    (file, line, text) of each ``read_restart`` made a marker (``include`` of ``restart_k``: the read,
+    then what the engine holds, :data:`restitution.dem.dialect.child.RESTART_INFO`), where the engine's marker has a ``restart``
+    (LAMMPS): a ``write_restart`` then runs, into the copy; ``mirrored`` the paths above the deck's
+    folder that its files name (``../DEM/data.txt``, normalised), copied to the same place relative
+    to the copy (:func:`scratch_copy`)."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -85,6 +93,8 @@ class Scratch:
     tagged: set = field(default_factory=set)
     quoted: dict = field(default_factory=dict)
     origin: Path | None = None
+    restarts: list = field(default_factory=list)
+    mirrored: set = field(default_factory=set)
 
 
 def normalised(text: str) -> str:
@@ -120,7 +130,11 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         ``marker(k, run_text) -> str``: the text of stage k's marker file (the run, then what
         records the atoms); it is written to ``where``/stage_k. A ``quit`` gets one too,
         ``marker(None, quit_text)``, written to ``where``/quit_n: the engine ends the process
-        there, so what it records where the deck ends comes before the quit.
+        there, so what it records where the deck ends comes before the quit. Where it has an
+        attribute ``restart`` (``restart(read_text) -> str``: the read, then what records the
+        engine's state), each ``read_restart`` gets one, written to ``where``/restart_k, and a
+        ``write_restart`` whose file stays in the copy runs (else both stay as they are: the
+        write never runs).
     confined : bool
         Whether the engine will run where it sees nothing outside ``where``
         (:mod:`restitution.dem.dialect.sandbox`); if not, a file the deck names by a variable
@@ -133,7 +147,9 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     Raises
     ------
     DeckError
-        Where the deck's folder holds more than MAX_FOLDER_BYTES: it is copied whole.
+        Where the deck's folder, with the files above it that the deck names, holds more than
+        MAX_FOLDER_BYTES (the folder is copied whole), or the deck names a file more than MAX_UP
+        folders above its own.
 
     Examples
     --------
@@ -157,13 +173,24 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             raise DeckError("deck", str(src.parent), f"its folder holds more than {MAX_FOLDER_BYTES >> 20} MB, copied "
                                                      "whole to run the deck safely: put the deck and the files it "
                                                      "reads in a folder of their own")
-    copy = root / "deck"
+    above, depth = _above(src, total)
+    # a deck that names files above its folder: the copy as deep in the scratch as they reach, and
+    # each file named copied at its place relative to it (never the folders' other files)
+    copy = root.joinpath("deck", *src.parent.parts[len(src.parent.parts) - depth:])
     shutil.copytree(src.parent, copy, symlinks=True)
+    for name in above:
+        target = Path(os.path.normpath(copy / name))
+        target.parent.mkdir(parents=True, exist_ok=True)
+        source = Path(os.path.normpath(src.parent / name))
+        if source.is_dir():
+            shutil.copytree(source, target, symlinks=True, dirs_exist_ok=True)
+        else:
+            shutil.copyfile(source, target)
     # a nonce: a deck cannot write a tag that passes for another line's
     scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
-                      origin=src.parent)
+                      origin=src.parent, mirrored=set(above))
     # the deck first: a command written alike in several files is located in the deck
-    files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(copy) for name in sorted(names)
+    files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(root / "deck") for name in sorted(names)
                               if Path(base, name) != scratch.deck]
     # the lines of a file the deck reads as commands are the engine's commands when echoed; the
     # text of any other file (an old log, say) is not: only the deck and the files it names by
@@ -178,7 +205,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             text = p.read_text(encoding="utf-8")
         except (UnicodeDecodeError, OSError):
             continue
-        label = None if p == scratch.deck else str(p.relative_to(copy))
+        label = None if p == scratch.deck else os.path.relpath(p, copy)
         # a file named as written is a script: its lines get their tags; any other (a data file,
         # or a script named by a variable) is left as it is, its lines known by their text
         if p == scratch.deck or p.name in literal:
@@ -191,6 +218,58 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         if new != text:
             p.write_text(new, encoding="utf-8")
     return scratch
+
+
+#: A word that names a path above the deck's folder (``../x``, ``a/../../x``)
+_UP = re.compile(r"(?:^|/)\.\.(?:/|$)")
+
+
+def _above(deck: Path, total: int) -> tuple[list, int]:
+    """The paths above the deck's folder that the deck and the files it names (include, jump, and
+    those named above it) name by ``..`` as written, normalised (``../DEM/data.txt``), each one that
+    exists; and how many folders up the furthest reaches. ``total``: the bytes of the folder."""
+    folder, found, todo, seen = deck.parent, set(), [deck], set()
+    while todo:
+        path = todo.pop()
+        if path in seen or not path.is_file() or path.stat().st_size > _MAX_TEXT_BYTES:
+            continue
+        seen.add(path)
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        for n, line in enumerate(text.splitlines(), 1):
+            for word in normalised(line).split():
+                word = word.strip("\"'")
+                if "$" in word or not _UP.search(word) or os.path.isabs(word):
+                    continue
+                name = os.path.normpath(word)
+                up = len(Path(name).parts) - len(Path(name.lstrip("./")).parts) if name.startswith("..") else 0
+                source = Path(os.path.normpath(folder / name))
+                if not up or not os.path.lexists(source):
+                    if up:
+                        continue        # nothing there: the engine says so where it is read
+                    todo.append(source)  # a file in the folder named by a path through ..
+                    continue
+                if up > MAX_UP or up >= len(folder.parts):
+                    raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
+                                    f"it names {word}, {up} folders above the deck's: the audit copies what a deck "
+                                    f"names up to {MAX_UP} folders above its own (the deck runs in a copy made "
+                                    "safe); move the case's files nearer")
+                if source.is_symlink():
+                    continue            # as in the folder's copy, a link is not followed
+                found.add(name)
+                todo.append(source)
+                total += sum(p.stat().st_size for p in ([source] if source.is_file() else source.rglob("*"))
+                             if p.is_file() and not p.is_symlink())
+                if total > MAX_FOLDER_BYTES:
+                    raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
+                                    f"the deck's folder and the files above it that the deck names hold more than "
+                                    f"{MAX_FOLDER_BYTES >> 20} MB, copied to run the deck safely: not audited")
+        # the scripts it includes by their names as written (a name through .. is a word above)
+        todo += [folder / name for name in _named_files(path) or () if not _UP.search(name)]
+    depth = max((len(Path(n).parts) - len(Path(n.lstrip("./")).parts) for n in found), default=0)
+    return sorted(found), depth
 
 
 def _named_files(deck: Path, literal: bool = False) -> set | None:
@@ -284,10 +363,22 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
     if "$" in word:
         # what it would run cannot be checked first: never run; the deck is refused if it reaches it
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
+    restart = getattr(marker, "restart", None)
+    if word == "write_restart" and restart is not None and len(key.split()) > 1 and (
+            scratch.confined or not _outside(key.split()[1], scratch) and "$" not in key.split()[1]):
+        # its file lands in the copy (the engine's working folder; confined, nothing else is
+        # writable): the deck's read_restart reads it back, in the audit's scratch alone
+        return None
+    if word == "read_restart" and restart is not None:
+        k = len(scratch.restarts)
+        scratch.restarts.append((loc[0], loc[1], key))
+        path = scratch.root / f"restart_{k}"
+        path.write_text(_audit_lines(scratch, restart(key)))
+        return f"include {path}"
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
         return _labelled(scratch, scratch.skipped, NOOP, (word, loc), loc)
     if word in ("include", "jump") and len(key.split()) > 1 and (
-            _outside(key.split()[1]) or not scratch.confined and "$" in key.split()[1]):
+            _outside(key.split()[1], scratch) or not scratch.confined and "$" in key.split()[1]):
         # a file outside the copied folder is read as it is, shell lines and all: never run
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word == "quit":
@@ -333,11 +424,13 @@ def _quoted(scratch: Scratch, key: str, loc) -> None:
         _known(scratch, key, loc)
 
 
-def _outside(name: str) -> bool:
-    """Whether a literal file name of include or jump leaves the deck's folder (absolute, or
-    climbing out by ..): the copy made safe holds the folder only."""
+def _outside(name: str, scratch: Scratch) -> bool:
+    """Whether a literal file name of include or jump (or write_restart) leaves what the copy made
+    safe holds: absolute, or climbing out by .. to a path the deck's files do not name as written
+    (those are copied, :attr:`Scratch.mirrored`)."""
     name = name.strip("\"'")
-    return "$" not in name and (os.path.isabs(name) or ".." in Path(name).parts)
+    return "$" not in name and (os.path.isabs(name) or ".." in Path(name).parts
+                                and os.path.normpath(name) not in scratch.mirrored)
 
 
 def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:

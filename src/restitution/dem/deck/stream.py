@@ -28,11 +28,13 @@ class Executed:
     ``text`` as the engine ran it, ``stage`` the run marker's number where it is a run's marker
     (then ``text`` is the run), else None; ``snapshot`` whether that marker wrote the atoms (a
     LAMMPS marker skips its set-up check and its dump where its run was checked before,
-    :func:`first_unchecked`; None: each marker wrote them)."""
+    :func:`first_unchecked`; None: each marker wrote them); ``restart`` the read_restart marker's
+    number where it is one (``text`` the read_restart)."""
     loc: tuple
     text: str
     stage: int | None = None
     snapshot: bool | None = None
+    restart: int | None = None
 
 
 def _echo_lines(echo: str) -> list[str]:
@@ -97,6 +99,7 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     """
     prefix = f"include {scratch.root}/stage_"
     marker = re.compile(rf"include {re.escape(str(scratch.root))}/stage_(\d+)")
+    restart = re.compile(rf"include {re.escape(str(scratch.root))}/restart_(\d+)")
     tagged = re.compile(rf"{re.escape(scratch.tag)}(\d+|{AUDIT})\s*$")
     dump = f"write_dump all custom {scratch.root / ATOMS} "
     lines = _echo_lines(echo)
@@ -138,6 +141,13 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
             stage_at = len(out)
             out.append(Executed((f, n), run, stage, False))
             opened = run         # the marker's line of that text, echoed next, is the run itself
+            _latest(ifs, (f, n), scratch)
+            continue
+        m = restart.fullmatch(key) if key.startswith(f"include {scratch.root}/restart_") else None
+        if m:
+            f, n, read = scratch.restarts[int(m.group(1))]
+            out.append(Executed((f, n), read, restart=int(m.group(1))))
+            opened = read       # its marker's first line, echoed next: the read_restart, substituted
             _latest(ifs, (f, n), scratch)
             continue
         if key.startswith(dump) and stage_at is not None:

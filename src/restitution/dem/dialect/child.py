@@ -23,12 +23,15 @@ from typing import Protocol
 
 from .sandbox import available as confining, confine
 
-__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "CEILING", "MAX_ECHO", "run_child"]
+__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "RESTART_INFO", "CEILING", "MAX_ECHO", "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
 ATOMS = "atoms"
 #: The file of the atoms where the deck ends
 ATOMS_AT_END = "atoms_end"
+#: The file in the scratch directory where each read_restart's marker appends what the engine holds
+#: after it (LAMMPS' info), one block per read, in the order they ran
+RESTART_INFO = "restart_info"
 #: A pass whose atoms files grow beyond this is stopped like one out of time
 _MAX_OUTPUT = 512 * 2 ** 20
 #: The most of an engine's screen (its echo) the audit reads: a pass that writes more is stopped

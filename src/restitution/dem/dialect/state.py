@@ -19,7 +19,7 @@ from ...core.errors import InputFileError, ParameterError
 from ..calibrate import calibrate
 from ..pair import Pair
 
-__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "number", "pour_into",
+__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "type_pairs", "number", "pour_into",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e", "wall_faces"]
 
 
@@ -115,6 +115,7 @@ class Deck:
     inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     dt: float | None = None                       # the timestep command's, None where the deck has none
+    dt_reset: tuple = ()                          # (loc, text, fix ID) of a fix dt/reset in force, else ()
     regions: dict = field(default_factory=dict)   # region ID -> its words as the engine ran them
     lattice: list = field(default_factory=list)   # the words of the last lattice command ([]: none)
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
@@ -148,6 +149,10 @@ class Deck:
     movers: dict = field(default_factory=dict)
     bonds: tuple = ()
     special_lj: tuple = (0.0, 0.0, 0.0)
+    # LAMMPS fix pour ID -> (its type, the (radius, density) it pours), for pours in force; type ->
+    # why a set after their runs leaves the size of the atoms they made unknown
+    pours: dict = field(default_factory=dict)
+    resized: dict = field(default_factory=dict)
     # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
     # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)
     templates: dict = field(default_factory=dict)
@@ -290,6 +295,42 @@ def types(spec: str, ntypes: int, where: str, text: str) -> range:
     if not 1 <= lo <= hi <= ntypes:
         raise DeckError(where, text, f"types must be in 1..{ntypes}")
     return range(lo, hi + 1)
+
+
+def type_pairs(first: str, second: str, ntypes: int, where: str, text: str) -> list:
+    """The type pairs (i, j), i <= j, a ``pair_coeff FIRST SECOND ...`` sets, by LAMMPS' own loop
+    for every pair style, hybrid sub-styles too: i over the first range, j from max(jlo, i) over
+    the second; two single types put in order first (LAMMPS' input swaps them).
+
+    Parameters
+    ----------
+    first, second : str
+        The two type ranges as written (labels replaced).
+    ntypes : int
+        The deck's number of types.
+    where, text : str
+        The line, for the refusal.
+
+    Returns
+    -------
+    list of tuple
+
+    Raises
+    ------
+    DeckError
+        As :func:`types` for either range.
+
+    Examples
+    --------
+    >>> type_pairs("*", "2", 3, "line 1", ""), type_pairs("2", "1*3", 3, "line 1", "")
+    ([(1, 2), (2, 2)], [(2, 2), (2, 3)])
+    >>> type_pairs("3", "2", 3, "line 1", "")
+    [(2, 3)]
+    """
+    if first.isdigit() and second.isdigit() and int(first) > int(second):
+        first, second = second, first
+    to = types(second, ntypes, where, text)
+    return [(i, j) for i in types(first, ntypes, where, text) for j in range(max(to.start, i), to.stop)]
 
 
 def number(token: str, where: str, text: str) -> float:

@@ -17,7 +17,7 @@ import math
 from dataclasses import dataclass
 from functools import partial
 
-from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, types, wall_faces
+from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, type_pairs, wall_faces
 from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
@@ -123,15 +123,10 @@ def pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
         model = words[k + 1:k + 2 + _LAMMPS_HEAT.get(words[k + 1] if k + 1 < len(words) else "", 0)]
         deck.unknown.append((*loc, line, f"heat {' '.join(model)}: heat conduction, which does not touch the normal "
                                          "force: accepted"))
-    # LAMMPS' own loop: i over the first range, j from max(jlo, i) over the second (pair_coeff * 2
-    # on three types sets (1, 2) and (2, 2), not (2, 3); 2*3 1*2 sets (2, 2) alone); two single
-    # types it puts in order first (3 2 sets (2, 3))
     if words[1].isdigit() and words[2].isdigit() and int(words[1]) > int(words[2]):
         words = [words[0], words[2], words[1], *words[3:]]      # LAMMPS swaps two single types
-    second = types(words[2], deck.ntypes, where, line)
-    for i in types(words[1], deck.ntypes, where, line):
-        for j in range(max(second.start, i), second.stop):
-            deck.coeffs[(i, j)] = (loc, words)
+    for key in type_pairs(words[1], words[2], deck.ntypes, where, line):
+        deck.coeffs[key] = (loc, words)
 
 
 @dataclass
@@ -252,7 +247,7 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     ('LAMMPS hooke, damping viscoelastic', 5)
     """
     if (i, j) not in deck.coeffs and ((i, i) not in deck.coeffs or (j, j) not in deck.coeffs):
-        why = (f" (pair_style at {place(deck.reset[0])}, another style, discarded the earlier ones)"
+        why = (f" (pair_style at {place(deck.reset[0])} discarded the earlier ones)"
                if deck.reset else "")
         mix = f", nor both {i} {i} and {j} {j}, from which LAMMPS would mix it" if i != j else ""
         raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair{mix}{why}: LAMMPS "

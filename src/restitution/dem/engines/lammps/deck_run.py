@@ -15,7 +15,7 @@ import os
 import sys
 from pathlib import Path
 
-from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, run_child
 
 __all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy"]
 
@@ -81,6 +81,13 @@ def marker(root: Path):
         return (f'{run}\nif "${{restitution_check_{k}}} != 0" then "variable restitution_check_{k} string '
                 '${restitution_every}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" '
                 f'"{_dump(root / ATOMS)} append yes"\n')
+
+    def restart(read: str) -> str:
+        # what LAMMPS holds after the read, in its own words: units, atom and pair style, types,
+        # time step, which pair coefficients are set, the groups (the audit reads it back, never
+        # the binary file)
+        return f"{read}\ninfo system coeffs groups out append {root / RESTART_INFO}\n"
+    text.restart = restart
     return text
 
 
@@ -113,7 +120,7 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
 
     The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
-    for name in (ATOMS, ATOMS_AT_END):      # a pass made again starts afresh (its markers append)
+    for name in (ATOMS, ATOMS_AT_END, RESTART_INFO):      # a pass made again starts afresh (its markers append)
         (root / name).unlink(missing_ok=True)
     stages = sum(1 for _ in root.glob("stage_*"))
     env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "PYTHONPATH", "LANG")}

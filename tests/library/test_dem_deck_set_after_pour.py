@@ -1,0 +1,100 @@
+"""A ``set type T diameter|density|mass`` after a fix pour's run (R3): LAMMPS resizes the atoms the
+pour made in the runs before, which the engine's pass (its runs skipped) never made; the audit kept
+the pour's size for them. Measured in LAMMPS 22 Jul 2025 (a pour of diameter 0.01, density 2500, run
+3000 steps, 269 atoms poured, then ``set type 1 diameter 0.006`` and 3000 more steps): the 269 have
+radius 0.003 and their mass kept (density 2500 (5/3)^3 = 11574.07); the 131 poured later the pour's
+size; a ``set type 1 density 1000`` then gives every atom of the type the mass of density 1000 at its
+own radius. ``set`` changes the atoms that exist, never those poured later."""
+
+import json
+
+import pytest
+
+from deck_cli import needs_lammps, run
+from restitution.dem.contact import Contact
+from restitution.dem.engines.lammps import run as lammps_run
+from restitution.dem.pair import Pair
+
+LINE = "pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3"
+DECK = f"""units si
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+region box block 0 0.1 0 0.1 0 0.2
+create_box 2 box
+create_atoms 2 single 0.05 0.05 0.01
+set type 2 diameter 0.004 density 3000
+pair_style granular
+{LINE}
+region ins block 0 0.1 0 0.1 0.1 0.2
+fix 1 all nve/sphere
+fix g all gravity 9.81 vector 0 0 -1
+fix p all pour 400 1 123 region ins diam one 0.01 dens 2500 2500
+timestep 1e-5
+run 100
+{{between}}{{set}}
+run 100
+"""
+
+
+def _audit(tmp_path, between: str, set_: str):
+    (tmp_path / "in.deck").write_text(DECK.format(between=between, set=set_))
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json")
+    return status, (json.loads(out) if status == 0 else None), err
+
+
+def _engine(r, sizes):
+    """LAMMPS' own eps for the row's pair at the row's spheres, head-on, 4000 to 16000 steps per contact."""
+    g = r["speeds"][2]
+    (r1, d1), (r2, d2) = sizes
+    t_c = Contact(r["alpha"], r["gamma"], r["D1"], r["D2"], r["end"]).contact_time(g)
+    return lammps_run.lammps_eps_extrapolated(Pair.spheres(r1, r2, d1, d2), LINE, g, t_c, types=(1, 1))
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_set_after_the_pour_ran_resizes_the_poured_atoms(tmp_path):
+    """Before: type 1 audited at the pour's radius 0.005, density 2500. The pour unfixed, the type's
+    atoms are the 269 the set resized: radius 0.003, mass kept."""
+    status, got, err = _audit(tmp_path, "unfix p\n", "set type 1 diameter 0.006")
+    assert status == 0, err
+    last = {tuple(r["types"]): r for r in got["stages"][-1]["pairs"]}
+    rho = 2500 * (0.005 / 0.003) ** 3
+    row = last[(1, 1)]
+    assert "sizes" not in row, row.get("at")
+    assert row["overlap_limit"] == pytest.approx(0.006, rel=1e-12)      # R1 + R2
+    engine = _engine(row, [(0.003, rho), (0.003, rho)])
+    print(row["eps"][2], engine)
+    assert abs(engine[0] / row["eps"][2] - 1) < 1e-6
+    stale = _engine(row, [(0.005, 2500.0), (0.005, 2500.0)])[0]
+    assert abs(stale / row["eps"][2] - 1) > 1e-3          # the size it had before would be audited wrongly
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_atoms_poured_after_the_set_get_the_pours_size_again(tmp_path):
+    """The pour still in force: the type holds both, the set's (radius 0.003, mass kept) and the
+    pour's (0.005, 2500); a density set after gives every existing atom density 1000."""
+    status, got, err = _audit(tmp_path, "", "set type 1 diameter 0.006")
+    assert status == 0, err
+    rows = [r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 1]]
+    at = sorted({tuple(s) for r in rows for s in r["at"]})
+    assert at == [(0.003, pytest.approx(2500 * (0.005 / 0.003) ** 3, rel=1e-9)), (0.005, 2500.0)], at
+    for r in rows:
+        engine = _engine(r, r["at"])
+        print(r["at"], r["eps"][2], engine)
+        assert abs(engine[0] / r["eps"][2] - 1) < 1e-6
+    status, got, err = _audit(tmp_path, "", "set type 1 diameter 0.006\nrun 100\nunfix p\nset type 1 density 1000")
+    assert status == 0, err
+    rows = [r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 1]]
+    assert sorted({tuple(s) for r in rows for s in r["at"]}) == [(0.003, 1000.0), (0.005, 1000.0)]
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("set_", ["set region ins diameter 0.006", "set type 1 type 2"])
+def test_a_set_the_reader_cannot_follow_on_poured_atoms_is_refused(tmp_path, set_):
+    """Which poured atoms a region holds, or poured atoms moved to another type: refused in one line."""
+    status, got, err = _audit(tmp_path, "unfix p\n", set_)
+    assert status == 2 and got is None, err
+    assert len(err.strip().splitlines()) == 1 and "pour" in err, err
