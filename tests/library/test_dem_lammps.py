@@ -115,3 +115,30 @@ def test_a_run_long_past_the_contact_ends_when_the_bodies_part():
             f"fix floor all_ wall/gran granular {line.split(maxsplit=3)[3]} zplane 0.0 NULL")
     short, long = (lammps_wall_eps(PAIR.R1, 2500.0, wall, 10.0, t_c / 200, k * t_c) for k in (1.5, 400.0))
     assert short == long and 0.0 < short < 1.0
+
+
+@pytest.mark.parametrize("limit", [True, False], ids=["limit_damping", "default"])
+def test_the_time_step_error_after_dt_is_of_order_one_plus_gamma(limit):
+    """LAMMPS' viscoelastic damping (gamma = 1/2) at dt, dt/2, dt/4, dt/8: once the first-order term
+    is removed the error falls like dt^1.5, not dt^2, and the (dt, dt^1.5) model fits the four runs far
+    better than (dt, dt^2); what the article's extrapolation assumes."""
+    from restitution.dem.extrapolate import fit_residual, observed_order
+    setting = _setting({"normal": "hertz/material", "E": 5e7, "nu": 0.3}, "viscoelastic", limit)
+    contact, line = lammps_contact(PAIR, **setting), lammps_pair_coeff(**setting)
+    assert contact.gamma == 0.5
+    for g in (0.01, 1.0):
+        t_c = contact.contact_time(g)
+        runs = [lammps_eps(PAIR, line, g, t_c / 2000 / k, 1.5 * t_c) for k in (1, 2, 4, 8)]
+        assert observed_order(*runs) == pytest.approx(1.5, abs=0.03), runs
+        assert fit_residual(runs, 2.0) > 20 * fit_residual(runs, 1.5), runs
+
+
+def test_tsuji_damping_is_weaker_than_tsujis_formula_by_about_sqrt2():
+    """The damping that returns e under the overlap rule (for which Tsuji's A(e) was fitted) is about
+    sqrt(2) times the D2 = A(e) sqrt(D1) that LAMMPS applies (the mapping the engine tests above check
+    in LAMMPS itself): LAMMPS puts the effective mass where Tsuji's formula has a particle's."""
+    from restitution.dem.engines.lammps.contact import tsuji_a
+    contact = lammps_contact(PAIR, normal="hertz", k_n=3e8, damping="tsuji", eta_n0=0.5, limit_damping=False)
+    cal = calibrate(contact.alpha, contact.gamma, D1=contact.D1, eps=0.5, g=0.1, end="overlap")
+    assert cal.D2 / contact.D2 == pytest.approx(math.sqrt(2), rel=2e-3)
+    assert contact.D2 == pytest.approx(tsuji_a(0.5) * math.sqrt(contact.D1), rel=1e-12)

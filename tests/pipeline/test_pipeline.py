@@ -391,7 +391,7 @@ def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
     runs = sorted(p.relative_to(tree).as_posix() for p in (tree / "results/dem/lammps_runs").iterdir())
     decks = [n for n in runs if n.endswith(".in")]
     assert {n.split("/")[-1].split("_")[0] for n in decks} == {"force", "overlap"}
-    assert len(decks) == 3 * (len((tree / "results/dem/lammps_eps.csv").read_text().splitlines()) - 1)   # header
+    assert len(decks) == 4 * (len((tree / "results/dem/lammps_eps.csv").read_text().splitlines()) - 1)   # header
     assert all(n[:-3] + ".out" in runs for n in decks) and "results/dem/lammps_runs/README.txt" in runs
     assert set(runs) <= set(names), sorted(set(runs) - set(names))
     assert "results/dem/lammps_runs/README.txt" in (tmp_path / "arxiv" / "README.txt").read_text()

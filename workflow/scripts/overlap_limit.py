@@ -13,6 +13,7 @@ from functools import lru_cache
 
 import numpy as np
 import pandas as pd
+from matplotlib.lines import Line2D
 from restitution_workflow.latex import esc, frac_tex, sci
 from restitution_workflow.pipeline import (TEXT_WIDTH_PT, save_figure, setup_matplotlib, start, write_csv,
                                           write_text)
@@ -151,12 +152,14 @@ for i, r in enumerate(rows):
     c = curve[(curve["alpha"] == r["alpha"]) & (curve["gamma"] == r["gamma"])]
     lab = rf"$\alpha = {r['alpha']}$, $\gamma = {r['gamma']}$"
     pair = {"color": colours[i % 7], "marker": markers[i % 7], "mfc": "none", "ms": 4}
-    left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], lw=1.6, label=lab,
+    left.loglog(c["omega"], c["eps_overlap"] / c["eps_force"], lw=1.0, ls="-", label=lab,
                 markevery=(i % 4 * max(len(c) // 32, 1), max(len(c) // 8, 1)), **pair)
-    # the leading laws are laws of the viscous limit: drawn up to a moderate Omega (beyond, they run off the top)
+    # the leading laws are laws of the viscous limit: drawn up to a moderate Omega (beyond, they run off the top);
+    # as wide pale bands under the integrations' thin solid lines: a thin dashed line of the same colour was hard
+    # to tell from the integration it lies on, a band shows the line inside it where they agree and apart where not
     law = c["omega"] <= LAW_OMEGA_MAX
-    left.loglog(c["omega"][law], (c["law_overlap"] / c["law_force"])[law], color=colours[i % 7], lw=0.9,
-                ls=(0, (4, 2)))
+    left.loglog(c["omega"][law], (c["law_overlap"] / c["law_force"])[law], color=colours[i % 7], lw=5.0,
+                alpha=0.3, solid_capstyle="butt", zorder=1)
     inv = np.asarray(P.decay_inverse_omegas, dtype=float)
     d = np.abs(reference_eps(Problem.of(r["alpha"], r["gamma"], "overlap"), 1.0 / inv, CURVE_RTOL)
                / (r["C"] * inv ** -float(Fraction(r["k"]))) - 1.0)
@@ -166,7 +169,11 @@ for i, r in enumerate(rows):
 left.set_ylim(top=3.0)
 left.set_xlabel(r"$\Omega$")
 left.set_ylabel(r"$\varepsilon_{\mathrm{overlap}} / \varepsilon_{\mathrm{force}}$")
-left.set_title(rf"markers: integrator; thin dashed: leading laws ($\Omega \leq {LAW_OMEGA_MAX:g}$)", fontsize=9.5)
+# a key of the two styles in the panel itself (black: the colours are the exponent pairs of the figure's legend)
+styles = [Line2D([], [], color="k", lw=1.0, marker="o", mfc="none", ms=4, label="integration"),
+          Line2D([], [], color="k", lw=5.0, alpha=0.3, solid_capstyle="butt",
+                 label=rf"leading law ($\Omega \leq {LAW_OMEGA_MAX:g}$)")]
+left.legend(handles=styles, loc="lower right", frameon=False, fontsize=9.5)   # the corner the curves leave free
 right.set_xlabel(r"$1/\Omega$")
 right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C\,\Omega^\kappa) - 1|$")
 fig.legend(*right.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False, fontsize=9.5)

@@ -10,13 +10,16 @@
 
 # %%
 import calendar
+import math
 import re
 
 import pandas as pd
 from restitution_workflow.latex import esc, fixed, sci
 from restitution_workflow.pipeline import start, write_csv, write_text
 
-from restitution.dem.engines.lammps.contact import LAMMPS_CHECKED, TSUJI_SQRT2_SINCE
+from restitution.dem.calibrate import calibrate
+from restitution.dem.contact import Contact
+from restitution.dem.engines.lammps.contact import LAMMPS_CHECKED, TSUJI_SQRT2_SINCE, tsuji_a
 from restitution.dem.engines.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINES, TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL,
                                            typed_e_table)
 
@@ -74,8 +77,20 @@ loss_ratio = {code: fixed((1 - top[code]) / (1 - max(es)), 1)
               for code in ("Yade Hertz-Mindlin en", "Kratos DEM_D_Hertz_viscous_Coulomb")}
 if len(set(loss_ratio.values())) != 1:
     raise SystemExit(f"the fitted relations miss e = {max(es)} differently: {loss_ratio}")
+# LAMMPS' tsuji damping against Tsuji's formula: Tsuji's A(e) was fitted with the mass of one particle where
+# LAMMPS puts the effective mass, half of it for like particles. The damping that returns e under the rule the
+# fit was made for (zero overlap, LAMMPS' default; eps depends on e alone, D1 = g = 1 lose nothing), over
+# LAMMPS' A(e) sqrt(D1): sqrt(2) up to the fit's own error if that is the whole difference; and the eps that
+# A(e) times sqrt(2), what LAMMPS' development source applies, gives for the middle e under either rule
+TSUJI = ("3/2", "1/4")                      # Hertz elasticity, tsuji's delta^(1/4) damping
+ratio = {e: calibrate(*TSUJI, D1=1.0, eps=e, g=1.0, end="overlap").D2 / tsuji_a(e) for e in es}
+sqrt2_eps = {end: Contact(*TSUJI, 1.0, math.sqrt(2.0) * tsuji_a(MID), end).eps(1.0) for end in ("force", "overlap")}
 macros = {
     "TypedEMid": fixed(MID, 1),
+    "TypedETsujiRatioMin": fixed(min(ratio.values()), 3), "TypedETsujiRatioMax": fixed(max(ratio.values()), 3),
+    "TypedETsujiRatioAtMid": fixed(ratio[MID], 4), "TypedEMinE": fixed(min(es), 2),
+    "TypedETsujiSqrtTwoAtMid": fixed(sqrt2_eps["overlap"], 4),
+    "TypedETsujiSqrtTwoLimitAtMid": fixed(sqrt2_eps["force"], 4),
     "TypedEEngineEs": ", ".join(fixed(e, 2) for e in TYPED_E_ENGINE_ES),
     "TypedEEngineRtol": sci(TYPED_E_ENGINE_RTOL, 1),
     "TypedEClampAtMid": fixed(half[clamp], 4),
