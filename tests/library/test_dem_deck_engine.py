@@ -228,6 +228,26 @@ run 1
         assert f"restitution deck: {word} (line" in err
 
 
+def test_an_output_fix_is_not_executed_and_is_named(tmp_path):
+    """Field test: fix print, fix ave/time and fix balance with an output file were made no-ops (a
+    fix of the same ID that does nothing) but, unlike the commands made no-ops, never named on
+    stderr, which the documentation promises for both."""
+    text = HEAD + f"""pair_coeff * * hooke 1000 1 {T}
+compute ke all ke
+fix p all print 1 "x" file printed.txt
+fix a all ave/time 1 1 1 c_ke file averaged.txt
+fix b all balance 1 1.1 shift x 5 1.1 out balanced.txt
+unfix b
+run 1
+"""
+    before = set(tmp_path.iterdir())
+    status, out, err = deck(tmp_path, text)
+    assert status == 0, err
+    assert set(tmp_path.iterdir()) == before | {tmp_path / "in.deck"}
+    for word, line in (("fix print", 14), ("fix ave/time", 15), ("fix balance", 16)):
+        assert f"restitution deck: {word} (line {line} and any like it): not executed" in err, err
+
+
 @pytest.mark.parametrize("lines", [
     'variable c string shell\nif "1 > 0" then "${{c}} touch {target}"',
     'variable c string shell\nif "1 > 0" then "print x" else "${{c}} touch {target}"',

@@ -71,7 +71,8 @@ class Scratch:
     map of ``lines`` (a file none names as written is read by its text, once an include or jump
     of it ran); ``tagged`` the files whose commands carry their tag; ``quoted`` the commands an
     ``if`` or a run's ``every`` runs, by the (file, line) of that command (echoed without a tag);
-    ``origin`` the deck's own folder, which the confined engine sees as the copy."""
+    ``origin`` the deck's own folder, which the confined engine sees as the copy; ``silenced`` the
+    output fixes made a fix that does nothing, {((file, line), its text): its index in ``skipped``}."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -85,6 +86,7 @@ class Scratch:
     tagged: set = field(default_factory=set)
     quoted: dict = field(default_factory=dict)
     origin: Path | None = None
+    silenced: dict = field(default_factory=dict)
 
 
 def normalised(text: str) -> str:
@@ -298,8 +300,11 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         words = key.split()
         if len(words) > 3 and words[3].startswith(_SKIPPED_FIX_PREFIXES):
             scratch.skipped.append((f"fix {words[3]}", loc))
-            # a fix of the same ID that never acts under skipped runs, for unfix and fix_modify
-            return f"fix {words[1]} all nve/noforce"
+            # a fix of the same ID that never acts under skipped runs, for unfix and fix_modify;
+            # its echo from this line tells the deck reached it, as a no-op label's does
+            noop = f"fix {words[1]} all nve/noforce"
+            scratch.silenced[(loc, noop)] = len(scratch.skipped) - 1
+            return noop
         return None
     if word in RUN_COMMANDS:
         k = len(scratch.stages)
