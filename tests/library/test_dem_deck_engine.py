@@ -248,6 +248,16 @@ run 1
         assert f"restitution deck: {word} (line {line} and any like it): not executed" in err, err
 
 
+def test_a_size_given_for_a_type_the_deck_has_not_is_named(tmp_path):
+    """Field test: --radius 4=0.1 on a deck of three atom types was taken without a word, though it
+    sizes nothing (a slip for type 3, say)."""
+    status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 1\n", "--radius", "4=0.1",
+                            "--density", "5=3000")
+    assert status == 0, err
+    assert "restitution deck: type 4: --radius 0.1 names no atom type of the deck (it has 3): not used" in err, err
+    assert "restitution deck: type 5: --density 3000 names no atom type of the deck (it has 3): not used" in err, err
+
+
 @pytest.mark.parametrize("lines", [
     'variable c string shell\nif "1 > 0" then "${{c}} touch {target}"',
     'variable c string shell\nif "1 > 0" then "print x" else "${{c}} touch {target}"',
