@@ -229,6 +229,36 @@ run 1
         assert f"restitution deck: {word} (line" in err
 
 
+def test_an_output_fix_is_not_executed_and_is_named(tmp_path):
+    """Field test: fix print, fix ave/time and fix balance with an output file were made no-ops (a
+    fix of the same ID that does nothing) but, unlike the commands made no-ops, never named on
+    stderr, which the documentation promises for both."""
+    text = HEAD + f"""pair_coeff * * hooke 1000 1 {T}
+compute ke all ke
+fix p all print 1 "x" file printed.txt
+fix a all ave/time 1 1 1 c_ke file averaged.txt
+fix b all balance 1 1.1 shift x 5 1.1 out balanced.txt
+unfix b
+run 1
+"""
+    before = set(tmp_path.iterdir())
+    status, out, err = deck(tmp_path, text)
+    assert status == 0, err
+    assert set(tmp_path.iterdir()) == before | {tmp_path / "in.deck"}
+    for word, line in (("fix print", 14), ("fix ave/time", 15), ("fix balance", 16)):
+        assert f"restitution deck: {word} (line {line} and any like it): not executed" in err, err
+
+
+def test_a_size_given_for_a_type_the_deck_has_not_is_named(tmp_path):
+    """Field test: --radius 4=0.1 on a deck of three atom types was taken without a word, though it
+    sizes nothing (a slip for type 3, say)."""
+    status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 1\n", "--radius", "4=0.1",
+                            "--density", "5=3000")
+    assert status == 0, err
+    assert "restitution deck: type 4: --radius 0.1 names no atom type of the deck (it has 3): not used" in err, err
+    assert "restitution deck: type 5: --density 3000 names no atom type of the deck (it has 3): not used" in err, err
+
+
 @pytest.mark.parametrize("lines", [
     'variable c string shell\nif "1 > 0" then "${{c}} touch {target}"',
     'variable c string shell\nif "1 > 0" then "print x" else "${{c}} touch {target}"',

@@ -414,7 +414,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
               + "; it has no part in a contact" for cmd, loc in skipped(commands, scratch).items()]
-    notes += _override_notes(atoms, radius or {}, density or {})
+    notes += _override_notes(atoms, radius or {}, density or {}, deck.ntypes)
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
         runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
@@ -509,12 +509,17 @@ def _read(done, scratch) -> list:
     return commands
 
 
-def _override_notes(atoms: list, radius: dict, density: dict) -> list:
+def _override_notes(atoms: list, radius: dict, density: dict, ntypes: int) -> list:
     """A line for each --radius or --density that replaces what a type's particles hold: the flags
-    complete walls-only types, so replacing a held size must never pass unsaid."""
+    complete walls-only types, so replacing a held size must never pass unsaid; nor one for a type
+    the deck does not have (of its ``ntypes``), which sizes nothing."""
     notes = []
     for flag, given, k in (("--radius", radius, 0), ("--density", density, 1)):
         for t, value in sorted(given.items()):
+            if int(t) > ntypes:
+                notes.append(f"type {t}: {flag} {value:g} names no atom type of the deck (it has {ntypes}): "
+                             "not used")
+                continue
             held = sorted({size[k] for snap in atoms for size in snap.get(int(t), ()) if size[k] is not None})
             if held and held != [value]:
                 what = f"{held[0]:.6g}" if len(held) == 1 else f"{held[0]:.6g} to {held[-1]:.6g}"

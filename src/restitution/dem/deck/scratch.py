@@ -79,7 +79,8 @@ class Scratch:
     then what the engine holds, :data:`restitution.dem.dialect.child.RESTART_INFO`), where the engine's marker has a ``restart``
     (LAMMPS): a ``write_restart`` then runs, into the copy; ``mirrored`` the paths above the deck's
     folder that its files name (``../DEM/data.txt``, normalised), copied to the same place relative
-    to the copy (:func:`scratch_copy`)."""
+    to the copy (:func:`scratch_copy`); ``silenced`` the output fixes made a fix that does nothing,
+    {((file, line), its text): its index in ``skipped``}."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -95,6 +96,7 @@ class Scratch:
     origin: Path | None = None
     restarts: list = field(default_factory=list)
     mirrored: set = field(default_factory=set)
+    silenced: dict = field(default_factory=dict)
 
 
 def normalised(text: str) -> str:
@@ -389,8 +391,11 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         words = key.split()
         if len(words) > 3 and words[3].startswith(_SKIPPED_FIX_PREFIXES):
             scratch.skipped.append((f"fix {words[3]}", loc))
-            # a fix of the same ID that never acts under skipped runs, for unfix and fix_modify
-            return f"fix {words[1]} all nve/noforce"
+            # a fix of the same ID that never acts under skipped runs, for unfix and fix_modify;
+            # its echo from this line tells the deck reached it, as a no-op label's does
+            noop = f"fix {words[1]} all nve/noforce"
+            scratch.silenced[(loc, noop)] = len(scratch.skipped) - 1
+            return noop
         return None
     if word in RUN_COMMANDS:
         k = len(scratch.stages)

@@ -46,6 +46,11 @@ _LAMMPS_NORMAL_ARGS = {"hooke": 2, "hertz": 2, "hertz/material": 3}
 _LAMMPS_HEAT = {"none": 0, "area": 1, "radius": 1}
 #: Unit styles whose pressure-to-force conversion (LAMMPS' nktv2p) is 1: gran/hertz/history's Kn as typed
 _NKTV2P_ONE = ("si", "cgs", "lj", "micro", "nano")
+#: LAMMPS' force-to-acceleration factor ftm2v (update.cpp) of the unit styles where it is not 1: the
+#: integrator moves an atom by ftm2v F / m, so the contact's D1 and D2 are ftm2v times the law's as
+#: typed (metal, two spheres of mass 83.8 under gran/hooke 200 NULL 0.01: eps 0.4845 in LAMMPS, where
+#: the law without the factor gives 0.9928); in every other style (si, cgs, lj, micro, nano) it is 1
+FTM2V = {"real": 1.0 / 48.88821291 / 48.88821291, "metal": 1.0 / 1.0364269e-4, "electron": 0.937582899}
 
 
 def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
@@ -73,9 +78,19 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     >>> deck.gran["k_n"], deck.gran["limit_damping"]
     (2000.0, False)
     """
+    _forces_as_typed(deck.units, where, line)
     if words[1] != "granular":
         deck.gran = _gran_law(words[1], words[2:], deck.units, where, line)
     deck.cutoff = number(words[2], where, line) if words[1] == "granular" and len(words) > 2 else None
+
+
+def _forces_as_typed(units: str, where: str, line: str) -> None:
+    """Refuse a unit style in which LAMMPS scales every force by ftm2v before it moves the atoms
+    (:data:`FTM2V`): the contact laws are mapped with forces as typed."""
+    if units in FTM2V:
+        raise DeckError(where, line, f"units {units}: LAMMPS turns forces into accelerations with ftm2v = "
+                                     f"{FTM2V[units]:.6g} there, so the contact is not the law as typed, which the "
+                                     f"reader does not map (units {', '.join(_NKTV2P_ONE)} are, where it is 1)")
 
 
 def _gran_law(style: str, params: list, units: str, where: str, line: str) -> dict:
@@ -246,6 +261,7 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     >>> row["model"], row["line"]
     ('LAMMPS hooke, damping viscoelastic', 5)
     """
+    _forces_as_typed(deck.units, "units", deck.units)     # a units line after the pair_style line
     if (i, j) not in deck.coeffs and ((i, i) not in deck.coeffs or (j, j) not in deck.coeffs):
         why = (f" (pair_style at {place(deck.reset[0])} discarded the earlier ones)"
                if deck.reset else "")
