@@ -96,6 +96,22 @@ def outside_file(tmp_path: Path, absolute: bool) -> tuple[Path, Path, str]:
     return folder, target, str(outside / "evil.in") if absolute else "../outside/evil.in"
 
 
+def outside_file_outcome(result: tuple, absolute: bool, folder: Path, line: int) -> None:
+    """What a deck that includes :func:`outside_file`'s file by a variable gets (``result``: its
+    status, stdout, stderr): named by climbing out, where the engine runs confined, the file is
+    copied above the deck's copy made safe and the deck answered; else one line refusing the
+    include at ``line`` (deck line number). Either way nothing ran: the caller checks the files."""
+    from restitution.dem.dialect.sandbox import available as confining
+    status, out, err = result
+    if not absolute and confining():
+        # the deck names the file above its folder as written (its variable line): copied there
+        # made safe, which the confined engine reads
+        assert status == 0 and "shell (../outside/evil.in line 1 and any like it): not executed" in err, err
+        return
+    assert status == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert f"line {line} (include" in err and "outside the deck's folder" in err, err
+
+
 def agrees_with_lammps(rows: list, sizes: dict, lines: str, ntypes: int, style: str = "granular") -> None:
     """Each pair row's eps at its middle speed against LAMMPS' own, head-on, at the types' sizes
     ({type: (radius, density)}) under the deck's ``lines``: 4000, 8000 and 16000 steps per contact,

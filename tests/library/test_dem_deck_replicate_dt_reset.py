@@ -10,27 +10,13 @@ import contextlib
 
 import pytest
 
-from deck_cli import agrees_with_lammps, needs_lammps, run
+from deck_cli import agrees_with_lammps, lammps_spheres, needs_lammps, run
 from restitution.cli import main
 from restitution.dem.dialect import child
 
 LINE = "pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3"
-DECK = f"""units si
-atom_style sphere
-comm_modify vel yes
-region box block 0 0.1 0 0.1 0 0.1
-create_box 2 box
-create_atoms 1 single 0.02 0.05 0.05
-create_atoms 2 single 0.04 0.05 0.05
-set type 1 diameter 0.01 density 2500
-set type 2 diameter 0.006 density 7000
-pair_style granular
-{LINE}
-fix 1 all nve/sphere
-timestep {{dt}}
-{{extra}}
-run 10
-"""
+#: two spheres of types 1 and 2 (diameters 0.01 and 0.006, densities 2500 and 7000), apart
+DECK = lammps_spheres((0.01, 2500.0), (0.006, 7000.0)) + f"{LINE}\ntimestep {{dt}}\n{{extra}}\nrun 10\n"
 
 
 def _audit(tmp_path, extra: str, dt: float = 1e-7):
