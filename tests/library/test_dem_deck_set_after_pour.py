@@ -98,3 +98,14 @@ def test_a_set_the_reader_cannot_follow_on_poured_atoms_is_refused(tmp_path, set
     status, got, err = _audit(tmp_path, "unfix p\n", set_)
     assert status == 2 and got is None, err
     assert len(err.strip().splitlines()) == 1 and "pour" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_set_of_velocities_on_a_region_leaves_the_poured_sizes_known(tmp_path):
+    """Which poured atoms a region holds does not matter where the set sizes none of them (before:
+    refused as though it resized them)."""
+    status, got, err = _audit(tmp_path, "unfix p\n", "set region ins vx 0 omega 0 0 0")
+    assert status == 0, err
+    row = {tuple(r["types"]): r for r in got["stages"][-1]["pairs"]}[(1, 1)]
+    assert "at" not in row and row["overlap_limit"] == pytest.approx(0.01, rel=1e-12)

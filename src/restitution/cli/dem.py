@@ -228,9 +228,12 @@ def run_deck(args, out) -> None:
             if len(fix.get("faces") or []) > 1:       # a gravity on a wall of several faces or directions
                 size = ": " + "; ".join(f"{face['face']} (gravity {face['push']:+.4g} into it){_engine_eps(p, face['eps_engine'])}"
                                         for face in fix["faces"])
-            print(f"restitution deck: {name}{where}: {line} fix {fix['style']} ({fix['fix']}): {fix['what']}, which "
-                  f"changes the eps the engine measures{size}" + (f"; {fix['why']}" if fix["why"] else ""),
-                  file=sys.stderr)
+            # a fix whose computed size is the contact's own eps at every speed changes nothing
+            kept = fix["eps_engine"] is not None and list(fix["eps_engine"]) == list(p["eps"])
+            effect = "which leaves the eps the engine measures the contact's" if kept else \
+                f"which changes the eps the engine measures{size}"
+            print(f"restitution deck: {name}{where}: {line} fix {fix['style']} ({fix['fix']}): {fix['what']}, {effect}"
+                  + (f"; {fix['why']}" if fix["why"] else ""), file=sys.stderr)
     for p, name, _, _, _, head in rows:
         few = [(g, n, e, d, w) for g, n, e, d, w in zip(p["speeds"], p.get("steps_per_contact") or [], p["eps"],
                                                          p.get("eps_at_dt_spread") or [], p.get("dt_within_tol") or [])

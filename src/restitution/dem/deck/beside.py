@@ -13,6 +13,7 @@ with ``fix viscous`` and ``fix freeze``: tests/library/test_dem_deck_beside.py).
 from __future__ import annotations
 
 import math
+import re
 
 from ...core.collision import StickError
 from ..contact import Contact
@@ -20,7 +21,7 @@ from ..engines.lammps.deck import DEFAULT_DT
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
 
-__all__ = ["BESIDE", "drag_eps", "effects", "gravity_vector"]
+__all__ = ["BESIDE", "adapt_parts", "drag_eps", "effects", "gravity_vector"]
 
 #: Fix style -> what it does to the atoms of its group, beside the contact law
 BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
@@ -477,6 +478,9 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
             if not over:
                 entry["eps_engine"] = list(row["eps"])
         return
+    elif style == "adapt":
+        _adapt(entry, deck, row, words)
+        return
     else:
         entry["why"] = "its size is not computed"
         return
@@ -487,6 +491,81 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
                 "total momentum is zero at first touch")
         full = drag if not wall else (drag[0], 0.0)
         entry["eps_engine"] = _over_speeds(row, lambda g: drag_eps(contact, g, pair, full))
+
+
+#: fix adapt's attributes -> how many words follow each (LAMMPS 22 Jul 2025: pair pstyle pparam I J
+#: v_name; bond and angle bstyle bparam v_name; kspace v_name; atom attribute v_name), and its keywords
+_ADAPT_ATTRIBUTES = {"pair": 5, "bond": 3, "angle": 3, "kspace": 1, "atom": 2}
+_ADAPT_KEYWORDS = ("scale", "reset", "mass")
+
+
+def adapt_parts(words: list) -> tuple[list, dict]:
+    """The attributes and keywords of a fix adapt.
+
+    Parameters
+    ----------
+    words : list of str
+        fix ID group adapt N attribute args ... keyword value ..., as the engine ran it.
+
+    Returns
+    -------
+    tuple
+        ([(attribute, its words)], {keyword: value}); a word that is neither ends the reading
+        (LAMMPS stops on it).
+
+    Examples
+    --------
+    >>> adapt_parts("fix a all adapt 0 atom diameter v_d reset yes".split())
+    ([('atom', ['diameter', 'v_d'])], {'reset': 'yes'})
+    """
+    parts, keys, k = [], {}, 5
+    while k < len(words):
+        if words[k] in _ADAPT_ATTRIBUTES:
+            n = _ADAPT_ATTRIBUTES[words[k]]
+            parts.append((words[k], words[k + 1:k + 1 + n]))
+            k += 1 + n
+        elif words[k] in _ADAPT_KEYWORDS and k + 1 < len(words):
+            keys[words[k]] = words[k + 1]
+            k += 2
+        else:
+            break
+    return parts, keys
+
+
+#: The names an equal-style formula may hold and still be a constant: numbers, operators and these
+#: math functions (a step, time, ramp, another variable, a compute or an atom's value may change)
+_CONSTANT_NAMES = frozenset({"sqrt", "exp", "ln", "log", "abs", "sin", "cos", "tan", "asin", "acos", "atan",
+                             "atan2", "ceil", "floor", "round", "PI", "e", "E"})
+
+
+def _adapt(entry: dict, deck, row: dict, words: list) -> None:
+    """fix adapt whose every attribute is ``atom diameter v_NAME``, NAME an equal-style variable of a
+    constant formula, in a deck that inserts no atoms: it gives every atom of its group that one
+    diameter at each run's set-up and keeps it so through the run (LAMMPS measured: the engine's
+    pass holds the adapted size, and no keyword but reset yes, refused by the reader, undoes it);
+    the sizes audited are those, and eps is the contact's. Anything else changes coefficients or
+    sizes the audit does not follow (entry updated)."""
+    parts, keys = adapt_parts(words)
+    names = [args[1][2:] for kind, args in parts if kind == "atom" and len(args) == 2 and args[0] == "diameter"
+             and args[1].startswith("v_")]
+    if not parts or len(names) < len(parts) or keys.get("scale", "no") != "no":
+        entry["why"] = "it changes coefficients, or sizes otherwise than by a diameter variable: its size is not computed"
+        return
+    formulas = [deck.variables.get(name) for name in names]
+    if any(f is None or set(re.findall(r"[A-Za-z_]\w*", f)) - _CONSTANT_NAMES for f in formulas):
+        entry["why"] = (f"its diameter variable{'s' if len(names) > 1 else ''} "
+                        f"{', '.join('v_' + n for n in names)} may change as the run goes (not an equal-style "
+                        "constant): its size is not computed")
+        return
+    if getattr(deck, "inserting", False):
+        entry["why"] = ("a fix inserts atoms as the runs go, which it may resize at a later set-up or step: its size "
+                        "is not computed")
+        return
+    entry["eps_engine"] = list(row["eps"])
+    entry["what"] = "the atoms' diameters set from a variable"
+    entry["why"] = (f"it sets the diameter of the atoms of group {words[2]} to the constant "
+                    f"{' and '.join(f'v_{n} = {f}' for n, f in zip(names, formulas))} at the run's set-up, which the "
+                    "engine's pass made: the sizes audited are the adapted ones, and eps is the contact's")
 
 
 #: fix setforce's components, in order

@@ -14,7 +14,7 @@ import copy
 import math
 import re
 
-from .beside import BESIDE
+from .beside import BESIDE, adapt_parts
 from .meeting import MOVERS, neigh_modify, special_bonds
 from .stream import SEEDED
 from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, type_pairs, types,
@@ -160,6 +160,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _resized(deck, deposited_ran)
             if made and set_poured(deck, made, split, cmd.loc, cmd.text):
                 block, same = None, False        # the poured sizes changed: no pass repeats the last
+        if split and split[0] == "variable" and len(split) > 2:
+            _variable(deck, split)
         if not split or split[0] in _ENGINE_ONLY:
             continue
         if split[0] == "run":
@@ -660,15 +662,20 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
 
 
 def _run_every(words: list, where: str, line: str) -> None:
-    """run N every M c1 c2 ...: LAMMPS runs the commands between the parts of the run; only inert
-    ones (output, say) leave the contact as the reader reads it."""
+    """run N every M c1 c2 ...: LAMMPS runs the commands after each part of M steps, the last too
+    (22 Jul 2025 measured); the engine's pass never runs them (LAMMPS' -skiprun sets the run up
+    once, LIGGGHTS' marker runs one step of a run without every), so the contact they would give
+    the parts after the first is nowhere in what it ran. Only inert ones (output, say) leave the
+    contact as the reader reads it; NULL runs none."""
     if "every" not in words:
         return
     for command in words[words.index("every") + 2:]:
         first = command.split()[0] if command.split() else ""
         if first not in _INERT and first != "NULL":
-            raise DeckError(where, line, f"run ... every runs {first} during the run, between its parts: the reader "
-                                         "does not follow it")
+            raise DeckError(where, line, f"run ... every runs {first} between the run's parts, which may change the "
+                                         "contact from the second part on, and the engine's pass never runs them "
+                                         "(its runs skipped or cut to one step): not audited; split the run into "
+                                         "runs with the commands between them")
 
 
 def _inserted(deck: Deck) -> None:
@@ -870,6 +877,13 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.movers[words[1]] = (loc, line, words[2], style)
     if style.startswith("bond/create"):
         deck.bonds = (loc, line)
+    if style == "adapt":
+        parts, keys = adapt_parts(words)
+        if keys.get("reset") == "yes" and any(kind == "atom" and args[:1] != ["charge"] for kind, args in parts):
+            # the engine's pass writes the atoms after its run's set-up and end, the sizes put back:
+            # the run's own are never read
+            raise DeckError(where, line, "fix adapt ... reset yes puts the atoms' sizes back at the end of each run, "
+                                         "before the engine's pass writes them: the sizes during the run are not read")
     if style in BESIDE:
         # gravity on every atom accelerates both bodies of a pair alike (beside passes it over
         # there), but pushes a sphere into a wall during a contact
@@ -912,7 +926,7 @@ def _unfix(deck: Deck, fix_id: str) -> None:
     deck.beside = [b for b in deck.beside if b[1][1] != fix_id]
     deck.movers.pop(fix_id, None)
     deck.shaken.pop(fix_id, None)
-    deck.pours.pop(fix_id, None)
+    deck.pours = {key: made for key, made in deck.pours.items() if key[0] != fix_id}
     if deck.dt_reset and deck.dt_reset[2] == fix_id:
         deck.dt_reset = ()
     deck.walls = [w for w in deck.walls if w[1][1] != fix_id]
@@ -969,7 +983,7 @@ def _poured(deck: Deck, fix: str, t: int, diameters: set, densities: set, poly: 
         lo, hi = min(diameters), max(diameters)
         diameters = {lo + (hi - lo) * k / (_RANGE_SAMPLES - 1) for k in range(_RANGE_SAMPLES)}
     sizes = {(0.5 * d, rho) for d in diameters for rho in (min(densities), max(densities))}
-    deck.pours[fix] = (t, sizes)
+    deck.pours[(fix, t)] = (t, sizes)
     pour_into(deck, t, sizes)
 
 
@@ -1027,7 +1041,7 @@ def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
     t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
     deck.sizes.pop(t, None)
     if deck.held is not None:
-        deck.pours[words[1]] = (t, {(radius, density)})
+        deck.pours[(words[1], t)] = (t, {(radius, density)})
         pour_into(deck, t, {(radius, density)})
     else:
         deck.radius[t], deck.density[t] = radius, density
@@ -1068,7 +1082,10 @@ def _resized(deck: Deck, ran: set) -> None:
 #: set keywords that leave an atom's type, radius and mass as they are
 _SIZELESS_SET = frozenset({"x", "y", "z", "vx", "vy", "vz", "omega", "angmom", "image", "charge", "temperature",
                            "dipole", "dipole/random", "quat", "quat/random", "theta", "theta/random", "spin",
-                           "spin/random", "mol"})
+                           "spin/random", "mol", "property/atom"})
+#: set keywords that take more than one value (LIGGGHTS' property/atom: a name and a value)
+_SET_VALUES = {"image": 3, "omega": 3, "angmom": 3, "dipole": 3, "quat": 4, "dipole/random": 2, "spin": 4,
+               "spin/random": 2, "property/atom": 2}
 
 
 def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
@@ -1077,7 +1094,12 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
     skipped), so the reader changes them as LAMMPS does (22 Jul 2025 measured): ``diameter`` keeps
     an atom's mass (its density becomes m / V at the new radius), ``density`` sets the mass of that
     density at the atom's radius, ``mass`` the mass; atoms a pour makes later get its own size again.
-    Where the reader cannot tell which of them a set changes (a region, a group other than all,
+    LIGGGHTS' insertions (insert/pack, insert/stream, insert/rate/region of one-sized sphere
+    templates) likewise: its engine's pass runs each run for one step, so the atoms inserted after
+    that step never exist there. LIGGGHTS 3.8.0 (measured) inserts later atoms at the template's size
+    again, but its ``diameter`` keeps the atom's density (the mass becomes that density at the new
+    radius) and its ``mass`` leaves that density as it was, for a later diameter to read: a mass is
+    not followed. Where the reader cannot tell which of them a set changes (a region, a group other than all,
     atom IDs), or how (another keyword: ``type``, an atom-style variable, ...), the type's size is
     unknown from here on (``resized``, in ``missing`` at each run).
 
@@ -1119,31 +1141,38 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
     else:
         targets = [t for t, sizes in made.items() if sizes]
         exact = words[1] == "group" and words[2] == "all"
-    changed = False
+    changed, liggghts = False, deck.code == "LIGGGHTS"
+    fixes, cut = ("insertions", "each run cut to one step") if liggghts else ("pours", "its runs skipped")
     for t in targets:
-        sizes, why = set(made[t]), None if exact else f"set {words[1]} {words[2]}: the reader does not know which"
-        for key, value in zip(words[3::2], words[4::2]):
-            if key in _SIZELESS_SET or why:
+        sizes, why, k = set(made[t]), None, 3
+        while k < len(words) and not why:
+            key, n = words[k], _SET_VALUES.get(words[k], 1)
+            value, k = words[k + 1:k + 1 + n], k + 1 + n
+            if len(value) < n:
+                why = "its keywords do not pair with values"
+            elif key in _SIZELESS_SET:
                 continue
-            try:
-                x = float(value)
-            except ValueError:
-                why = f"set ... {key} {value}: its value per atom is not read"
-                continue
-            if key == "diameter":
+            elif not exact:
+                why = f"set {words[1]} {words[2]}: the reader does not know which"
+            elif key not in ("diameter", "density", "mass"):
+                why = f"set ... {key} changes them in a way the reader does not map"
+            elif (x := _float(value[0])) is None:
+                why = f"set ... {key} {value[0]}: its value per atom is not read"
+            elif key == "diameter" and liggghts:
+                sizes = {(0.5 * x, rho) for _, rho in sizes}
+            elif key == "diameter":
                 sizes = {(0.5 * x, rho * (r / (0.5 * x)) ** 3) for r, rho in sizes}
             elif key == "density":
                 sizes = {(r, x) for r, _ in sizes}
-            elif key == "mass":
-                sizes = {(r, x / (4.0 / 3.0 * math.pi * r ** 3)) for r, _ in sizes}
+            elif liggghts:
+                why = ("set ... mass: LIGGGHTS keeps the atom's density beside its mass, and a later diameter or "
+                       "insertion reads that density, which the reader does not follow")
             else:
-                why = f"set ... {key} changes them in a way the reader does not map"
-        if len(words[3:]) % 2:
-            why = why or "its keywords do not pair with values"
+                sizes = {(r, x / (4.0 / 3.0 * math.pi * r ** 3)) for r, _ in sizes}
         if why:
-            deck.resized[t] = (f"{place(loc)} ({' '.join(text.split())}) changes the atoms the pours made of type {t} "
-                               f"in the runs before, which the engine's pass (its runs skipped) never made: {why}, so "
-                               "their size is not known")
+            deck.resized[t] = (f"{place(loc)} ({' '.join(text.split())}) changes the atoms the {fixes} made of type {t} "
+                               f"in the runs before, which the engine's pass ({cut}) never made: {why}, so their size "
+                               "is not known")
             changed = True
             continue
         sizes = {(r, float(f"{rho:.12g}")) for r, rho in sizes}
@@ -1154,6 +1183,23 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
             pour_into(deck, t, set())       # the type's sizes anew (a type no atom of holds in the pass)
             changed = True
     return changed
+
+
+def _variable(deck: Deck, words: list) -> None:
+    """variable NAME STYLE ...: an equal-style variable's formula (defined again, the new one: LAMMPS
+    replaces it), None for other styles; delete forgets it."""
+    if words[2] == "delete":
+        deck.variables.pop(words[1], None)
+    else:
+        deck.variables[words[1]] = " ".join(words[3:]) if words[2] == "equal" else None
+
+
+def _float(token: str) -> float | None:
+    """The number a token reads as, None where it does not (a variable, a word)."""
+    try:
+        return float(token)
+    except ValueError:
+        return None
 
 
 def _sampled(sizes: list) -> list:

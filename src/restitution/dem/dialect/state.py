@@ -149,13 +149,21 @@ class Deck:
     movers: dict = field(default_factory=dict)
     bonds: tuple = ()
     special_lj: tuple = (0.0, 0.0, 0.0)
-    # LAMMPS fix pour ID -> (its type, the (radius, density) it pours), for pours in force; type ->
-    # why a set after their runs leaves the size of the atoms they made unknown
+    # (inserting fix ID, type) -> (the type, the (radius, density) it inserts of that type), for
+    # the inserting fixes in force (a LAMMPS pour, a LIGGGHTS insert/* of one-sized sphere
+    # templates); type -> why a set after their runs leaves the size of the atoms they made unknown
     pours: dict = field(default_factory=dict)
     resized: dict = field(default_factory=dict)
     # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
     # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)
     templates: dict = field(default_factory=dict)
+    # LIGGGHTS particletemplate/sphere ID -> (its type, (radius, density)), None where its size is
+    # not one constant; particledistribution/discrete ID -> the template IDs it draws from
+    sphere_templates: dict = field(default_factory=dict)
+    # variable name -> its equal-style formula as the engine ran it, None for a variable of another
+    # style (a fix adapt's size is known where its variable is a constant)
+    variables: dict = field(default_factory=dict)
+    distributions: dict = field(default_factory=dict)
 
 
 class DeckDialect(Protocol):

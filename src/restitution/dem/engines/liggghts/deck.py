@@ -160,9 +160,29 @@ def _sphere_template(deck: Deck, words: list, where: str, line: str, loc) -> Non
             # other distributions (gaussian, ...) give no single value: the type is unset, and says why
             (deck.density if tok == "density" else deck.radius).pop(t, None)
             deck.missing[t] = f"fix {words[1]} gives type {t} a {tok} from a {tokens[k + 1]} distribution"
+    deck.sphere_templates[words[1]] = (t, (size["radius"], size["density"])) if len(size) == 2 else None
     if len(size) == 2 and deck.held is not None:
         # its spheres may be inserted after the one step the audit runs: with the type's other sizes
         pour_into(deck, t, {(size["radius"], size["density"])})
+
+
+def _distribution(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """fix ID group particledistribution/discrete[/numberbased|/massbased] seed N template1 weight1 ...:
+    the templates it draws from."""
+    deck.distributions[words[1]] = words[6::2]
+
+
+def _insertion(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    """fix ID group insert/pack|insert/stream|insert/rate/region ... distributiontemplate D ...: the
+    (type, size) of each sphere template D draws from, as the atoms it inserts in the runs get them
+    (``pours``; a ``set`` after its runs changes those it made, :func:`~restitution.dem.deck.reader.set_poured`).
+    Nothing where a template has no one constant size (its type's entry in ``missing`` says so)."""
+    named = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "distributiontemplate"]
+    made = [deck.sphere_templates.get(tid) for tid in deck.distributions.get(named[0], [None])] if named else [None]
+    if deck.held is None or None in made:
+        return
+    for t in {t for t, _ in made}:
+        deck.pours[(words[1], t)] = (t, {size for u, size in made if u == t})
 
 
 def _mesh(deck: Deck, words: list, where: str, line: str, loc) -> None:
@@ -173,6 +193,8 @@ def _mesh(deck: Deck, words: list, where: str, line: str, loc) -> None:
 
 #: fix style -> (its least number of words, what it does to the deck); shorter, not understood
 FIXES = {"property/global": (6, _property_global), "particletemplate/sphere": (4, _sphere_template),
+         **{f"particledistribution/discrete{kind}": (6, _distribution) for kind in ("", "/numberbased", "/massbased")},
+         **{f"insert/{kind}": (4, _insertion) for kind in ("pack", "stream", "rate/region")},
          "mesh/surface": (4, _mesh), "mesh/surface/stress": (4, _mesh)}
 
 

@@ -1,0 +1,55 @@
+"""A fix adapt that sets the atoms' diameter from a constant equal-style variable: LAMMPS sets it at
+the run's set-up (N = 0) or every N steps, the engine's pass holds the adapted size (set up by its
+marker), and the audit uses it; its note said "its size is not computed" all the same. With
+``reset yes`` LAMMPS puts the sizes back when the run ends, before the marker writes the atoms: the
+audit printed eps 0.63330 at the original diameter 0.01 with exit 0, where the run has 0.006
+(0.76526). Measured in LAMMPS 22 Jul 2025."""
+
+import pytest
+
+from deck_cli import agrees_with_lammps, audit, lammps_spheres, needs_lammps, run
+
+LINE = "pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3"
+DECK = lammps_spheres((0.01, 2500.0)).replace("atom_style sphere", "atom_style sphere 1") + LINE + """
+variable d equal {value}
+fix ad all adapt {every} atom diameter v_d{keys}
+timestep 1e-6
+run 100
+"""
+
+
+def _deck(tmp_path, value="0.006", every=0, keys=""):
+    (tmp_path / "in.deck").write_text(DECK.format(value=value, every=every, keys=keys))
+    return tmp_path / "in.deck"
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("every", [0, 10])
+def test_a_constant_diameter_is_audited_at_the_adapted_size_and_said_so(tmp_path, every):
+    """LAMMPS keeps the density (adapt's mass yes): radius 0.003, density 2500, head-on."""
+    got, err = audit(_deck(tmp_path, every=every), "--g", "0.5")
+    (row,) = got["pairs"]
+    assert row["overlap_limit"] == pytest.approx(0.006, rel=1e-12)
+    agrees_with_lammps([row], {1: (0.003, 2500.0)}, LINE, 1)
+    (note,) = [ln for ln in err.splitlines() if "fix adapt" in ln]
+    assert "not computed" not in note and "leaves the eps the engine measures the contact's" in note, note
+    assert "v_d = 0.006" in note and row["beside"][0]["eps_engine"] == row["eps"]
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_diameter_that_may_change_as_the_run_goes_is_not_computed(tmp_path):
+    got, err = audit(_deck(tmp_path, value="0.006+1e-6*step"), "--g", "0.5")
+    (note,) = [ln for ln in err.splitlines() if "fix adapt" in ln]
+    assert "v_d may change as the run goes" in note and "not computed" in note, note
+    assert got["pairs"][0]["beside"][0]["eps_engine"] is None
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_sizes_put_back_after_the_run_are_refused(tmp_path):
+    """Before: eps at the original diameter 0.01, exit 0."""
+    status, out, err = run(_deck(tmp_path, keys=" reset yes"), "--g", "0.5")
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert "line 12 (fix ad all adapt 0 atom diameter v_d reset yes)" in err and "reset yes" in err, err
