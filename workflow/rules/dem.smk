@@ -60,6 +60,8 @@ rule typed_e:
     values at which the engine tests run it and the agreement they demand."""
     input:
         code=code("typed_e.py"),
+        # the engines' runs of the table's rows: the text quotes how close they come
+        runs="results/dem/typed_e_runs/typed_e_runs.csv",
     output:
         csv=TYPED_E_FILES[0],
         table=TYPED_E_FILES[1],

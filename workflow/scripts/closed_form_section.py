@@ -2,7 +2,7 @@
 # # The coefficient of restitution in closed form: the manuscript's section
 #
 # Reads the uniform forms of every variant (uniform_form.py) and writes the section text with the
-# limits of the main variant (restitution.core.asymptotics), the form's numbers and error figures of every
+# limits of the main variant (restitution.core.asymptotics), the form's numbers and error estimates of every
 # variant, and two figures: eps(g) of the main variant from the closed form over the reference and
 # the paper's printed relation, and the form's relative error in eps and 1 - eps for every variant.
 
@@ -88,8 +88,11 @@ LAW_RANGE = {   # (elastic law within LAW_TOL somewhere, viscous law within LAW_
 }
 
 # %% figure: relative error of the forms, one panel per force law (columns) and end rule (rows): in one
-# panel per rule the three laws' curves and their error-figure lines ran together
-fig, axes = plt.subplots(2, len(p.variants), figsize=(7.2, 4.6), sharey=True, sharex=True, squeeze=False)
+# panel per rule the three laws' curves and their error-estimate lines ran together
+# as wide as the text it prints at, so that its sizes print as set (at 7.2 in wide the fit to 7 pt shrank the
+# titles and the ticks' exponents to that limit)
+fig, axes = plt.subplots(2, len(p.variants), figsize=(TEXT_WIDTH_PT / 72.27, 4.6), sharey=True, sharex=True,
+                         squeeze=False)
 for row, (fs, errs, rule) in enumerate(((forms, errors, "force"), (overlap_forms, overlap_errors, "overlap"))):
     for i, name in enumerate(p.variants):
         ax = axes[row, i]
@@ -97,10 +100,10 @@ for row, (fs, errs, rule) in enumerate(((forms, errors, "force"), (overlap_forms
             # the law's name over its exponents: on one line the three titles ran into each other
             ax.set_title(rf"{law_name(name, tex=False)}" "\n"
                          rf"$\alpha = {p.exponents[name]['alpha']}$, $\gamma = {p.exponents[name]['gamma']}$",
-                         fontsize=8.5)
+                         fontsize=10)
         if not fs[name]["available"]:
             ax.text(0.5, 0.5, "no form:\nthe bodies can stick" if rule == "overlap" else "no form",
-                    transform=ax.transAxes, ha="center", va="center", fontsize=8.5)
+                    transform=ax.transAxes, ha="center", va="center", fontsize=9.5)
             continue
         e = errs[name]
         el = e["omega"] >= 1
@@ -109,17 +112,18 @@ for row, (fs, errs, rule) in enumerate(((forms, errors, "force"), (overlap_forms
         ax.loglog(e["omega"][el], np.maximum(e["err_one_minus_eps"][el], 1e-17), color="tab:orange", lw=1.3,
                   ls="--", label=r"in $1-\varepsilon$ ($\Omega \geq 1$)")
         ax.axhline(fs[name]["bound_eps"], color="tab:blue", lw=0.9, ls=(0, (1, 1.5)),
-                   label=r"error figure, $\varepsilon$")
+                   label=r"error estimate, $\varepsilon$")
         ax.axhline(fs[name]["bound_one_minus_eps"], color="tab:orange", lw=0.9, ls=(0, (4, 2, 1, 2)),
-                   label=r"error figure, $1-\varepsilon$")
-    axes[row, 0].set_ylabel(f"{rule} rule: relative error", fontsize=9)
+                   label=r"error estimate, $1-\varepsilon$")
+    # on two lines: on one, at this size, the two rows' labels ran into each other
+    axes[row, 0].set_ylabel(f"{rule} rule:\nrelative error", fontsize=10)
 for ax in axes.ravel():
     ax.set_ylim(1e-12, 1e-2)
     ax.set_xticks([1e-8, 1e-4, 1, 1e4, 1e8], labels=["$10^{-8}$", "", "$1$", "", "$10^{8}$"])
 for ax in axes[1]:
     ax.set_xlabel(r"$\Omega$")
 handles, labels = axes[0, 0].get_legend_handles_labels()
-fig.legend(handles, labels, loc="lower center", ncol=4, frameon=False, fontsize=8.5)
+fig.legend(handles, labels, loc="lower center", ncol=4, frameon=False, fontsize=9.5)
 fig.set_layout_engine("tight", rect=(0, 0.06, 1, 1))   # redone when save_figure resizes
 save_figure(fig, snakemake.output.err_pdf, snakemake.output.err_png, width=1.0)
 
@@ -331,7 +335,7 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
 
 
 force_tables = two_tables(r"lllllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
-                          r"error figure: $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
+                          r"error estimate: $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
 # the force law's column as wide as its longest name (a fixed 2.1 cm broke Hertz--Kuwabara--Kono over three lines)
 overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar N + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
@@ -385,20 +389,20 @@ cannot change them. At the elastic end the bracket has only the leading term $C_
 $\zeta - 1$, $(C_1^2 - C_2)\mu^2$, is left to the fitted sum, which vanishes like $\Omega^{{-\sigma s_1}}$ with
 $\sigma s_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
 first order at the viscous end but only to leading order at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
-{sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The error figures below, measured over
+{sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The error estimates below, measured over
 $10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($N = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
 where the error on the model-selection points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
 integrations at relative tolerance $\CFFitRtol$ on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
-the shape $(\sigma, s_0, s_1)$ is chosen by the error on the points in between, and the error figure stated is twice the
+the shape $(\sigma, s_0, s_1)$ is chosen by the error on the points in between, and the empirical error estimate stated is twice the
 largest relative error on those model-selection points and on {main['measured']['n_test']} test points drawn at random in
 $[10^{{-8}}, 10^{{8}}]$ and used for nothing else, where $\varepsilon$ and $1 - \varepsilon$ come from independent integrations in the variables of Sec.~\ref{{sec:reference}}, plus their accuracy
-(\TabUniform; Fig.~\ref{{fig:uniform-error}}). That figure is a measurement with a margin of two, not a
-proven bound. A force law with $\alpha \leq \gamma$ has no such form:
+(\TabUniform; Fig.~\ref{{fig:uniform-error}}). That estimate is a measurement with a margin of two, not a
+proven bound: a maximum over finitely many points, not the supremum over $\Omega$. A force law with $\alpha \leq \gamma$ has no such form:
 for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
 is not known. The article's figure of the error of $\varepsilon(g)$ shows the relative error in $\varepsilon(g)$ for Kim's force law from
 the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
 $\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
-Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error figures for every exponent pair of the
+Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error estimates for every exponent pair of the
 stability atlas.
 
 \begin{{figure}}[htbp]
@@ -406,7 +410,7 @@ stability atlas.
 \includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
 \caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (solid) and in
 $1 - \varepsilon$ (dashed), for every force law that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
-Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = {sci(LAW_BELOW, 1)}$ up); one column per force law; dotted and dash-dotted lines: the error figures in $\varepsilon$ and in $1 - \varepsilon$ (twice the largest error measured on the model-selection and test points, plus the reference's accuracy; the two nearly coincide).}}
+Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = {sci(LAW_BELOW, 1)}$ up); one column per force law; dotted and dash-dotted lines: the empirical error estimates in $\varepsilon$ and in $1 - \varepsilon$ (twice the largest error measured on the model-selection and test points, plus the reference's accuracy; the two nearly coincide).}}
 \label{{fig:uniform-error}}
 \end{{figure}}
 
@@ -428,8 +432,8 @@ for any coefficients. The envelope $\exp(-\rho/\bar z)$ vanishes like the true c
 degree are chosen as for Eq.~(\ref{{eq:uniform}}), the coefficients fitted with a small penalty on their size (without
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = {sci(LAW_BELOW, 1)}$ each integration of the creeping return takes about a second, and there the
-references are the creep law itself, checked against the integrator above it; the error figure adds that difference and
-the error of $C$. The error figure for Kim's force law is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
+references are the creep law itself, checked against the integrator above it; the error estimate adds that difference and
+the error of $C$. The error estimate for Kim's force law is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly when

@@ -152,6 +152,10 @@ macros = {
     "DemDesignSpeed": sci(P["design_speed"], 2), "DemEtaNZero": sci(design["eta_n0"], 4),
     "DemSpeedMin": sci(min(P["speeds"]), 2), "DemSpeedMax": sci(max(P["speeds"]), 2),
     "DemSpeedCount": str(len(P["speeds"])), "DemSteps": str(P["lammps_steps"]),
+    # the scaled parameter the runs span (the same under both rules: Omega does not depend on the end rule),
+    # so that the text can say which regime the engine was tested in and which it was not
+    "DemOmegaMin": sci(min(contacts["force"].omega(g) for g in P["speeds"]), 3),
+    "DemOmegaMax": sci(max(contacts["force"].omega(g) for g in P["speeds"]), 3),
     "DemDevForce": sci(dev["force"], 2), "DemDevOverlap": sci(dev["overlap"], 2),
     "DemDevForceDtTwo": sci(dev_dt2["force"], 2), "DemDevOverlapDtTwo": sci(dev_dt2["overlap"], 2),
     # the fourth run's test of the error model, over both rules and every speed
@@ -192,6 +196,8 @@ top.set_ylim(lo - 0.75 * (hi - lo), hi + 0.05 * (hi - lo))
 top.legend(loc="lower left", fontsize=9, frameon=False)   # no exponent or index in it
 bottom.set_yscale("log")
 bottom.set_xlabel(r"impact speed $g$ (m/s)")
-bottom.set_ylabel("|LAMMPS / ours - 1|")
+# short, in mathtext (a true minus): the bottom panel is a third of the figure's height, and the caption names
+# eps_L as LAMMPS' eps
+bottom.set_ylabel(r"$|\varepsilon_{\mathrm{L}}/\varepsilon - 1|$")
 fig.tight_layout()
 save_figure(fig, out["pdf"], out["png"], width=0.62)

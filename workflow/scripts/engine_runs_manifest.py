@@ -32,9 +32,17 @@ lammps_decks = [f for f in inputs.lammps if f.endswith(".in")]
 typed = Counter(Path(f).parts[3] for f in inputs.typed if len(Path(f).parts) == 5)
 if set(typed) != {"lammps", "liggghts", "yade", "kratos"}:
     raise SystemExit(f"typed-e runs of an unexpected set of engines: {sorted(typed)}")
+# the figure's decks are named <rule>_g<speed>_n<steps per contact>: how many time steps each rule and speed
+# was run at, read from the names (one number, or the supplement's sentence would be wrong for some)
+steps_per_case = Counter(Path(f).stem.rsplit("_n", 1)[0] for f in lammps_decks)
+if len(set(steps_per_case.values())) != 1:
+    raise SystemExit(f"the LAMMPS figure's cases have different numbers of time steps: {dict(steps_per_case)}")
+fig_steps = sorted({int(Path(f).stem.rsplit("_n", 1)[1]) for f in lammps_decks})
 macros = {
     "EngineRunFiles": str(len(files)),
     "EngineLammpsFigDecks": str(len(lammps_decks)),
+    "EngineLammpsFigStepsPerCase": str(next(iter(steps_per_case.values()))),
+    "EngineLammpsFigSteps": ", ".join(map(str, fig_steps)),
     "EngineTypedLammpsFiles": str(typed["lammps"]), "EngineTypedLiggghtsFiles": str(typed["liggghts"]),
     "EngineTypedYadeFiles": str(typed["yade"]), "EngineTypedKratosFiles": str(typed["kratos"]),
     "EngineSampleDeck": esc(Path(snakemake.params.sample).name),

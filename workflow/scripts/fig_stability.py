@@ -108,10 +108,10 @@ labels += ["limits", rf"against tolerance $10^{{{tight_exp}}}$", "against the hi
 # the curves' key in one row, the markers' key in two below it
 n_lines = len(alphas) + 1
 fig.legend(handles[:n_lines], labels[:n_lines], loc="lower center", ncol=n_lines, frameon=False,
-           bbox_to_anchor=(0.5, 0.055), columnspacing=1.0, handletextpad=0.4)
+           bbox_to_anchor=(0.5, 0.085), columnspacing=1.0, handletextpad=0.4)   # above the two rows below, clear of them
 fig.legend(handles[n_lines:], labels[n_lines:], loc="lower center", ncol=2, frameon=False, bbox_to_anchor=(0.5, 0.0),
            columnspacing=1.2, handletextpad=0.4)
-fig.tight_layout(rect=(0, 0.1, 1, 1), h_pad=0.4, w_pad=0.3)
+fig.tight_layout(rect=(0, 0.13, 1, 1), h_pad=0.4, w_pad=0.3)
 
 # %%
 save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=1.0)
