@@ -83,9 +83,12 @@ run 10
 
 
 @needs_lammps
-def test_a_slow_straight_deck_is_answered_at_a_small_budget(tmp_path):
+def test_a_slow_straight_deck_is_answered_at_a_small_budget(tmp_path, monkeypatch):
     # LAMMPS' own pass takes seconds (3 s of CPU time): beyond the budget of 2 s, within the
-    # ceiling of 20 s; refused before as "a loop that never runs"
+    # ceiling; refused before as "a loop that never runs". The ceiling raised to 60 budgets: at
+    # the library's 10, a machine at load 7-12 on 2 cores stretched the 3 s past 20 s of wall time
+    from restitution.dem.dialect import child
+    monkeypatch.setattr(child, "CEILING", 60.0)
     path = tmp_path / "in.deck"
     path.write_text(SLOW)
     status, out, err = run_cli(["deck", str(path), "--g", "1.0", "--budget", "2"])
