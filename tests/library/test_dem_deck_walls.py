@@ -80,7 +80,10 @@ def test_flat_walls_are_audited_for_their_groups_types_the_others_named(tmp_path
     # the cone's law (hooke, LAMMPS' default viscoelastic damping) reads the effective radius
     assert "region wall whose law reads the effective radius" in named["w7"]
     assert named["w7"].endswith("the spheres it acts on: types 1, 2")
-    assert err.count("\n") == 2 and all(f"fix w{k}" in err for k in (6, 7))
+    # w1, w2 and w3 all lie at z = 0 (the engine checks run each alone): a sphere there meets them
+    # at once and the engine adds their forces, named beside each of their rows (w1 acts on type 1 only)
+    shared = [ln for ln in err.splitlines() if "another wall at the same surface (z = 0)" in ln]
+    assert len(shared) == 8 and err.count("\n") == 2 + len(shared) and all(f"fix w{k}" in err for k in (6, 7))
     # the older model: its pair style's law, the sphere's own mass (hooke: D1 = Kn/m, D2 = gamma_n)
     w3 = [w for w in res["walls"] if w["wall"] == "w3"]
     assert all(w["end"] == "force" and w["typed_e"] is None and w["exact_line"] is None for w in w3)
@@ -737,3 +740,29 @@ def test_a_walls_faces_are_those_its_engines_reader_read(tmp_path):
                                    "off the wall, against the field"]
     assert faces[("floor", 1)] == ["the plane z = 0.0 (met from either side), from the side gravity pushes into it",
                                    "the plane z = 0.0 (met from either side), from the other side"]
+
+
+@pytest.mark.parametrize("second, named", [
+    ("fix b all wall/gran {law} zplane 0.0 NULL", True),
+    ("fix b all wall/gran {law} zplane NULL 0.0", True),
+    ("fix b all wall/gran {law} zplane 0.05 NULL", False),
+    ("region cup block -0.04 0.04 -0.04 0.04 0.0 0.09 units box\nfix b all wall/gran/region {law} region cup", True),
+    ("region cup block -0.04 0.04 -0.04 0.04 0.01 0.09 units box\nfix b all wall/gran/region {law} region cup", False),
+], ids=["same", "other side", "apart", "region face", "region apart"])
+def test_two_walls_at_one_plane_name_each_other_beside_their_rows(tmp_path, second, named):
+    """The engine adds the forces of every wall a sphere overlaps: two identical hertz/material
+    coeff_restitution (e = 0.5) walls at z = 0, a sphere r 2 mm (2500 kg/m^3) at 1 m/s, LAMMPS
+    extrapolated from t_c/4000 to t_c/16000: eps 0.366035 (0.500000 with one wall; the same with the
+    second a zplane NULL 0.0 or a block region's bottom face at z = 0; LIGGGHTS, two hertz e = 0.5
+    primitive planes: 0.366029). Before, each wall's row said 0.5 and nothing else."""
+    law = f"granular hertz/material 1e8 0.5 0.3 damping coeff_restitution {T}"
+    text = LAMMPS_DECK.split("group small")[0] + (f"fix a all wall/gran {law} zplane 0.0 NULL\n"
+                                                  + second.format(law=law) + "\n")
+    res, err = audit(tmp_path, text, 1.0)
+    assert {row["wall"] for row in res["walls"]} == {"a", "b"}
+    for row in res["walls"]:
+        other = [b for b in row["beside"] if b["style"].startswith("wall/gran")]
+        assert [b["fix"] for b in other] == ([{"a": "b", "b": "a"}[row["wall"]]] if named else [])
+        if named:
+            assert "another wall at the same surface (z = 0)" in other[0]["what"]
+    assert ("another wall at the same surface" in err) is named

@@ -93,7 +93,7 @@ from .meeting import excluded, held_contact, motion
 from .reader import DIALECTS, MAX_STAGES, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
-from ..engines.lammps.deck import DEFAULT_DT
+from ..engines.lammps.deck import DEFAULT_DT, region_number
 from ..contact import TIMES_OMEGA_MAX, ElasticContact
 from ..pair import Pair
 from ..timestep import recommended_dt, verlet_eps
@@ -125,12 +125,92 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
     return sorted(t for t in held if 1 <= t <= deck.ntypes)
 
 
+#: A primitive wall's shape word and how many numbers after it place its surface: a plane's
+#: position(s) (LAMMPS' lo and hi, LIGGGHTS' one), a cylinder's radius and (LIGGGHTS) its axis
+_PLACED = {"xplane": 2, "yplane": 2, "zplane": 2, "xcylinder": 3, "ycylinder": 3, "zcylinder": 3}
+
+
+def _surfaces_at(words: list, deck: Deck | None = None) -> set:
+    """Where a primitive wall's surfaces lie, as comparable keys: ("z", 0.0) for a plane at z = 0
+    (either face: the engines push a sphere off a plane from whichever side it overlaps it), a
+    cylinder's style with its numbers, a LAMMPS block region's faces as planes (``deck``: its
+    regions); empty for a mesh or another region.
+
+    Examples
+    --------
+    >>> sorted(_surfaces_at("fix w all wall/gran granular hooke 1 1 zplane 0.0 NULL".split()))
+    [('z', 0.0)]
+    >>> _surfaces_at("fix w all wall/gran model hertz primitive type 2 zcylinder 0.05 0 0".split())
+    {('zcylinder', 0.05, 0.0, 0.0)}
+    >>> d = Deck(regions={"cup": "region cup block -1 1 -1 1 0 INF units box".split()})
+    >>> sorted(_surfaces_at("fix w all wall/gran/region granular hooke 1 1 region cup".split(), d))
+    [('x', -1.0), ('x', 1.0), ('y', -1.0), ('y', 1.0), ('z', 0.0)]
+    """
+    if words[3:4] == ["wall/gran/region"] and deck is not None and "region" in words[4:]:
+        return _block_faces(deck, words[words.index("region", 4) + 1:][:1])
+    for k, word in enumerate(words[4:], 4):
+        if word in _PLACED:
+            numbers = []
+            for arg in words[k + 1:k + 1 + _PLACED[word]]:
+                try:
+                    numbers.append(float(arg))
+                except ValueError:
+                    if arg != "NULL":
+                        break
+            if word.endswith("plane"):
+                return {(word[0], at) for at in numbers}
+            return {(word, *numbers)} if numbers else set()
+    return set()
+
+
+def _block_faces(deck: Deck, rid: list) -> set:
+    """The planes of a block region's finite faces, as :func:`_surfaces_at` keys; none for another
+    style, a moving one or one whose coordinates are not read."""
+    words = deck.regions.get(rid[0]) if rid else None
+    if not words or words[2] != "block" or len(words) < 9:
+        return set()
+    units = words[words.index("units") + 1] if "units" in words[9:-1] else "lattice"
+    if any(w in ("move", "rotate") for w in words[9:]):
+        return set()
+    faces = set()
+    for k, arg in enumerate(words[3:9]):
+        at = region_number(arg, deck, units)
+        if isinstance(at, float) and abs(at) != float("inf"):
+            faces.add(("xyz"[k // 2], at))
+    return faces
+
+
+def _shared_faces(deck: Deck) -> dict:
+    """{(wall ID, type): [(other wall's loc, words, where)]} for walls that act on the same type at
+    the same plane or cylinder: the engine adds both walls' forces on a sphere that meets them there
+    (LAMMPS and LIGGGHTS, two identical hertz walls of e = 0.5 at z = 0: eps 0.366, where one gives
+    0.5), a law no row of one wall says."""
+    placed = []
+    for loc, words, types in deck.walls:
+        held = _wall_types(deck, types, loc, words, [])
+        if held and (at := _surfaces_at(words, deck)):
+            placed.append((loc, words, set(held), at))
+    shared = {}
+    for loc, words, held, at in placed:
+        for other_loc, other, other_held, other_at in placed:
+            if other[1] == words[1]:
+                continue
+            for t in sorted(held & other_held):
+                if at & other_at:
+                    where = ", ".join(f"{k[0]} = {k[1]:g}" if len(k) == 2 else " ".join(f"{x:g}" if isinstance(x, float)
+                                                                                     else x for x in k)
+                                      for k in sorted(at & other_at, key=str))
+                    shared.setdefault((words[1], t), []).append((other_loc, other, where))
+    return shared
+
+
 def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
     """For every flat fix wall/gran and every type it acts on, the eps of that type's sphere
     hitting it head-on; and the walls not audited, each with its reason (``ran``: the settings are
     a run's, :func:`restitution.dem.deck.meeting.motion`)."""
     rows, unknown = [], []
     parse = DIALECTS[deck.code].wall
+    shared = _shared_faces(deck)
     for loc, words, types in deck.walls:
         said = len(unknown)
         surfaces = parse(deck, loc, words, unknown)
@@ -170,8 +250,13 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                      "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
                                      "line": loc[1], "file": loc[0]}, contact, at_speeds, pair.R1, _dt(deck))
-                    return ({**row, "beside": effects(deck, row, contact, pair, (t,), faces=faces)},
-                            (tuple(size),) if t in deck.sizes else ())
+                    beside = effects(deck, row, contact, pair, (t,), faces=faces)
+                    beside += [{"fix": other[1], "style": other[3], "file": other_loc[0], "line": other_loc[1],
+                                "what": f"another wall at the same surface ({where}), whose force the engine adds "
+                                        "to this wall's on a sphere that meets both", "eps_engine": None,
+                                "why": "its size is not computed", "along": None}
+                               for other_loc, other, where in shared.get((words[1], t), [])]
+                    return ({**row, "beside": beside}, (tuple(size),) if t in deck.sizes else ())
                 rows += _time_steps(_ends(_over_sizes(
                     deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds)))
     return rows, unknown

@@ -22,7 +22,7 @@ from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
 
-__all__ = ["ENGINE", "DEFAULT_DT", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall",
+__all__ = ["ENGINE", "DEFAULT_DT", "region_number", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall",
            "concave_cylinder"]
 
 #: LAMMPS' default time step per unit style (checked in LAMMPS 22 Jul 2025), where a deck sets none
@@ -547,7 +547,7 @@ def region_surfaces(deck: Deck, rid: str) -> list | str:
             "its arguments are not read"
     if style in ("block", "plane"):
         return [("its flat faces", 0.0, None)]
-    radius = _region_number(args[3], deck, options["units"])
+    radius = region_number(args[3], deck, options["units"])
     if isinstance(radius, str):
         return radius
     inside = options["side"] == "in"
@@ -560,9 +560,31 @@ def region_surfaces(deck: Deck, rid: str) -> list | str:
     return surfaces + ([("its flat ends", 0.0, None)] if caps else [])
 
 
-def _region_number(word: str, deck: Deck, units: str) -> float | str:
-    """A region's radius in the box's units: units box as written; units lattice scaled by the
-    lattice's spacing, known where the deck's lattice is none (its scale) or absent (1)."""
+def region_number(word: str, deck: Deck, units: str) -> float | str:
+    """A region's length or coordinate in the box's units: units box as written; units lattice
+    scaled by the lattice's spacing, known where the deck's lattice is none (its scale) or absent (1).
+
+    Parameters
+    ----------
+    word : str
+        The number as the region's line gives it.
+    deck : Deck
+        The deck (its lattice).
+    units : str
+        The region's ``units`` keyword: box or lattice.
+
+    Returns
+    -------
+    float or str
+        The value, or why it is not known.
+
+    Examples
+    --------
+    >>> region_number("0.5", Deck(), "lattice"), region_number("0.5", Deck(lattice=["lattice", "none", "2"]), "lattice")
+    (0.5, 1.0)
+    >>> region_number("1", Deck(lattice=["lattice", "fcc", "0.8"]), "lattice")[:40]
+    'its size is in lattice units (the region'
+    """
     try:
         value = float(word)
     except ValueError:
