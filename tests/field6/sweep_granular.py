@@ -1,9 +1,11 @@
 """Sweep LAMMPS pair granular normal x damping x limit_damping: audit vs own harness (unlike spheres)."""
-import json, os, subprocess, sys, itertools
+import json, os, subprocess, sys, itertools, tempfile
 sys.path.insert(0, os.path.dirname(__file__))
 from harness import measure, lammps_once
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+#: a folder of its own for the deck (the audit copies the deck's whole folder)
+SCRATCH = tempfile.mkdtemp(prefix="field6-sweep-")
 EXE = os.path.join(HERE, "..", "..", ".venv", "bin", "restitution")
 normals = {"hooke": "hooke 2000 {d}", "hertz": "hertz 5e7 {d}", "hertz/material": "hertz/material 5e7 {d} 0.3"}
 damps = {"velocity": {"hooke": 0.2, "hertz": 0.05, "hertz/material": 0.05},
@@ -36,7 +38,7 @@ for (nn, nf), dn, lim in itertools.product(normals.items(), damps, ("", " limit_
     if only and not any(o in tag for o in only):
         continue
     law = nf.format(d=damps[dn][nn]) + f" damping {dn} tangential linear_nohistory 0 0" + lim
-    path = "/tmp/f6/sweep/in.sweep"
+    path = os.path.join(SCRATCH, "in.sweep")
     open(path, "w").write(DECK.format(law=law))
     out = subprocess.run([EXE, "deck", path, "--g", str(g), "--json"], capture_output=True, text=True)
     if out.returncode != 0:
