@@ -426,6 +426,7 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     atoms share one; several (a type of several sizes) in ``sizes``; a type without atoms
     keeps what an inserting fix gives it (a pour) or none (walls only, or unused)."""
     deck.held = {t: sorted(v) for t, v in atoms.items()}
+    deck.once = {t: set(v.once) for t, v in atoms.items() if getattr(v, "once", None)}
     deck.atoms = deck.atoms or bool(atoms)
     deck.present |= set(atoms)
     for t, sizes in atoms.items():
@@ -723,7 +724,8 @@ def contact_key(deck: Deck) -> str:
                        deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
-                       set(deck.shapes), deck.sizes, deck.others, deck.idle, deck.granular_of,
+                       set(deck.shapes), deck.sizes, {t: deck.once.get(t, set()) - deck.poured.get(t, set())
+                                                      for t in deck.sizes}, deck.others, deck.idle, deck.granular_of,
                        [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
