@@ -438,6 +438,10 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
     wall = len(types) == 1
     masses = (pair.m1,) if wall else (pair.m1, pair.m2)
     drag = None
+    if style in ("viscous", "langevin") and deck.units not in _GRAVITY_UNITS:
+        # where LAMMPS' ftm2v is not 1 a drag's rate is not gamma / m (not checked there)
+        entry["why"] = f"its size is not computed in units {deck.units}"
+        return
     if style == "viscous" and len(words) > 4 and (gamma := _number(words[4])) is not None and gamma >= 0:
         ratios = _keyword_ratios(words, 5)
         drag = tuple(gamma * ratios.get(t, 1.0) / m if on else 0.0 for t, m, on in zip(types, masses, acted))
