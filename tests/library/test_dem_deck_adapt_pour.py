@@ -16,31 +16,15 @@ depends on size):
 
 import pytest
 
-from deck_cli import agrees_with_lammps, audit, needs_lammps
+from deck_cli import agrees_with_lammps, audit, lammps_pour, needs_lammps
 
 LINE = "pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3"
-DECK = f"""units si
-atom_style sphere 1
-boundary p p f
-comm_modify vel yes
-region box block 0 0.1 0 0.1 0 0.2
-create_box 1 box
-create_atoms 1 single 0.05 0.05 0.01
-set type 1 diameter {{first}} density 2500
-pair_style granular
-{LINE}
-region ins block 0 0.1 0 0.1 0.1 0.2
-fix 1 all nve/sphere
-fix g all gravity 9.81 vector 0 0 -1
-fix p all pour 400 1 123 region ins diam one 0.01 dens 2500 2500
-variable d equal 2*0.003
-timestep 1e-5
-{{rest}}
-"""
+DECK = "variable d equal 2*0.003\ntimestep 1e-5\n{rest}\n"
 
 
 def _audit(tmp_path, rest: str, first: float = 0.01):
-    (tmp_path / "in.deck").write_text(DECK.format(first=first, rest=rest))
+    deck = lammps_pour(LINE, sphere=(1, first, 2500.0), dynamic=True) + DECK.format(rest=rest)
+    (tmp_path / "in.deck").write_text(deck)
     return audit(tmp_path / "in.deck", "--g", "0.5")
 
 
