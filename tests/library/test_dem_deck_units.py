@@ -94,6 +94,18 @@ def test_a_wall_in_metal_units_is_audited_as_lammps_moves_the_sphere(tmp_path, m
 
 
 @needs_lammps
+@pytest.mark.parametrize("units, computed", [("metal", False), ("micro", True)])
+def test_a_drag_beside_is_computed_only_where_ftm2v_is_one(tmp_path, units, computed):
+    """fix viscous's rate gamma / m holds where LAMMPS' ftm2v is 1; elsewhere it is named, not computed."""
+    deck = tmp_path / "in.units"
+    deck.write_text(SPHERES.format(units=units, contact=GRANULAR + "\nfix drag all viscous 0.001"))
+    got, err = audit(deck, "--g", 0.01)
+    (entry,) = got["pairs"][0]["beside"]
+    assert (entry["eps_engine"] is not None) == computed, entry
+    assert computed or f"not computed in units {units}" in entry["why"], entry["why"]
+
+
+@needs_lammps
 @pytest.mark.parametrize("units", ["si", "lj", "micro", "nano", "cgs"])
 def test_unit_styles_where_ftm2v_is_one_are_audited_as_typed(tmp_path, units):
     deck = tmp_path / "in.units"

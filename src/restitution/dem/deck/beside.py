@@ -17,7 +17,7 @@ import re
 
 from ...core.collision import StickError
 from ..contact import Contact
-from ..engines.lammps.deck import DEFAULT_DT
+from ..engines.lammps.deck import DEFAULT_DT, FTM2V
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
 
@@ -438,7 +438,7 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
     wall = len(types) == 1
     masses = (pair.m1,) if wall else (pair.m1, pair.m2)
     drag = None
-    if style in ("viscous", "langevin") and deck.units not in _GRAVITY_UNITS:
+    if style in ("viscous", "langevin") and deck.units in FTM2V:
         # where LAMMPS' ftm2v is not 1 a drag's rate is not gamma / m (not checked there)
         entry["why"] = f"its size is not computed in units {deck.units}"
         return
