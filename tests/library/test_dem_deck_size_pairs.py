@@ -7,7 +7,7 @@ pour keeps making that size, two spheres of it meet, and the end stays."""
 
 import pytest
 
-from deck_cli import agrees_with_lammps, audit, needs_lammps
+from deck_cli import agrees_with_lammps, audit, needs_lammps, run
 
 LINE = "pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3"
 DECK = f"""units si
@@ -54,3 +54,17 @@ def test_a_size_one_atom_alone_has_meets_only_the_others(tmp_path):
 def test_a_size_a_pour_keeps_making_meets_itself(tmp_path):
     rows = _rows(tmp_path, POUR)
     assert [r["at"] for r in rows] == [[[0.005, 2500.0], [0.005, 2500.0]], [[0.003, 2500.0], [0.003, 2500.0]]]
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_type_of_one_sphere_of_each_of_two_sizes_meets_at_those_two_alone(tmp_path):
+    """Before: 0.003 against 0.003 and 0.005 against 0.005, neither of which can happen."""
+    (tmp_path / "in.deck").write_text(DECK.format(pour="").replace("create_atoms 1 single -0.5 0 0\n", ""))
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5")
+    assert status == 0, err
+    assert "types 1 1 (spheres of several sizes, of which only these meet: radius 0.003 density 2500 and radius " \
+           "0.005 density 2500)" in out, out
+    got, _ = audit(tmp_path / "in.deck", "--g", "0.5")
+    (row,) = got["pairs"]
+    assert row["sizes"] == "only" and row["eps"][2] == pytest.approx(0.7305232343, rel=1e-9)

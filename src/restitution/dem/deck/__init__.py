@@ -798,10 +798,14 @@ def _ends(rows: list) -> list:
     """The rows of one pair or wall over the sizes present: the one row where there is one size; else
     the rows of the smallest and the largest eps at the middle speed, each with the sizes it is at
     (``sizes``: "smallest eps" or "largest eps", ``at``: [[R, rho], [R, rho]]), or one row (``sizes``:
-    "any", the sizes' eps within 1e-9) where the law's eps does not depend on size. A speed where
+    "any", the sizes' eps within 1e-9) where the law's eps does not depend on size, or "only" where
+    one choice of sizes alone can meet. A speed where
     some size passes through or sticks is taken as it comes in the row that has it."""
     if len(rows) == 1 and not rows[0][1]:
         return [rows[0][0]]
+    if len(rows) == 1:          # of a type's sizes, one pair alone can meet (one sphere of each)
+        row, at = rows[0]
+        return [{**row, "sizes": "only", "at": [list(at[0]), list(at[1])] if len(at) == 2 else [list(at[0])]}]
     k = len(rows[0][0]["speeds"]) // 2
 
     def middle(item):
