@@ -84,6 +84,30 @@ def lammps_spheres(*spheres) -> str:
     return "\n".join([*lines, "fix integrate all nve/sphere", "pair_style granular"]) + "\n"
 
 
+def lammps_pour(line: str, ntypes: int = 1, sphere: tuple = (1, 0.01, 2500.0), dynamic: bool = False) -> str:
+    """A LAMMPS deck's start in SI units with a pour: one sphere of type sphere[0] (diameter, density
+    sphere[1:]) at the floor of a 0.1 x 0.1 x 0.2 box, the contact ``line`` under pair_style
+    granular, an integrator, gravity and ``fix p`` pouring 400 spheres of type 1 (diameter 0.01,
+    density 2500) from the box's upper half; ``dynamic``: atom_style sphere 1 (radii a fix adapt may
+    change)."""
+    t, d, rho = sphere
+    return f"""units si
+atom_style sphere{' 1' if dynamic else ''}
+boundary p p f
+comm_modify vel yes
+region box block 0 0.1 0 0.1 0 0.2
+create_box {ntypes} box
+create_atoms {t} single 0.05 0.05 0.01
+set type {t} diameter {d:g} density {rho:g}
+pair_style granular
+{line}
+region ins block 0 0.1 0 0.1 0.1 0.2
+fix 1 all nve/sphere
+fix g all gravity 9.81 vector 0 0 -1
+fix p all pour 400 1 123 region ins diam one 0.01 dens 2500 2500
+"""
+
+
 def outside_file(tmp_path: Path, absolute: bool) -> tuple[Path, Path, str]:
     """(the deck's folder, the file a shell would touch, the name the deck gives it) for a deck in
     tmp_path/deck that reads tmp_path/outside/evil.in, whose shell touches tmp_path/TOUCHED; named by

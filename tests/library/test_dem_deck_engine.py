@@ -459,14 +459,17 @@ jump SELF l
     assert len(stages) == 1 and len(stages[0]["runs"]) == 300
     p = {tuple(r["types"]): r for r in stages[0]["pairs"]}
     assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
-    assert p[(2, 2)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
+    # type 2's one created sphere (radius 0.01) meets the poured ones (0.02) only: its largest eps
+    assert p[(2, 2)]["at"] == [[0.01, 2500.0], [0.02, 2500.0]]
+    assert p[(2, 2)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0, 0.01, 0.02), rel=1e-10)
 
 
 @pytest.mark.parametrize("change, stages", [
     ("pair_coeff * * hooke ${k}000 1 " + T, 3), ("set type 1*3 diameter 0.0${k}", 3),
     # a pour of other sizes into a type that holds atoms: its spheres join them and stay (the
-    # second pass pours the size type 2 already has, and joins the first pass's stage)
-    ("fix drop all pour 1 2 ${k}123 region top diam one 0.0${k} dens 2500 2500", 2)])
+    # second pass pours the size of type 2's one sphere, which then meets another of its size: a
+    # stage of its own)
+    ("fix drop all pour 1 2 ${k}123 region top diam one 0.0${k} dens 2500 2500", 3)])
 def test_a_loop_that_changes_the_contact_sees_each_change(tmp_path, change, stages):
     # a marker met again skips LAMMPS' set-up and its dump only where nothing changed in between:
     # here each pass of the loop changes the contact, the sizes or a pour, each run checked
@@ -579,8 +582,11 @@ def _in_lammps(row: dict, pair: Pair, lines: str, style: str = "granular", types
 SIZES = BOX + f"""create_box 1 box
 create_atoms 1 single 0 0 0
 create_atoms 1 single 0.5 0 0
+create_atoms 1 single 0 0.5 0
+create_atoms 1 single 0.5 0.5 0
 set type 1 diameter 0.02 density 2500
 set atom 2 diameter 0.04 density 2500
+set atom 4 diameter 0.04 density 2500
 pair_style granular
 pair_coeff * * hooke 1000 50 {T}
 fix integrate all nve/sphere

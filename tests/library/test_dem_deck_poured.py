@@ -48,22 +48,22 @@ def _in_lammps(row: dict) -> float:
 
 @needs_lammps
 @pytest.mark.dem
-@pytest.mark.parametrize("made", [
-    "create_atoms 1 single 0.5 0.5 0.1\nset type 1 diameter 0.02 density 3000\n",
-    "fix big all pour 10 1 5767 region slab diam one 0.02 dens 3000 3000\n"])
-def test_a_pour_into_a_type_of_other_spheres_adds_its_size(tmp_path, made):
+@pytest.mark.parametrize("made, smallest", [
+    # one sphere of diameter 0.02 meets the poured ones, never another of its size
+    ("create_atoms 1 single 0.5 0.5 0.1\nset type 1 diameter 0.02 density 3000\n", [[0.005, 1000.0], [0.01, 3000.0]]),
+    ("fix big all pour 10 1 5767 region slab diam one 0.02 dens 3000 3000\n", [[0.01, 3000.0], [0.01, 3000.0]])])
+def test_a_pour_into_a_type_of_other_spheres_adds_its_size(tmp_path, made, smallest):
     """Before: one row, the sphere of diameter 0.02 alone (eps 0.98574), the poured spheres' 0.99814
     nowhere."""
     rows = _rows(tmp_path, HEAD + made + "fix ins all pour 50 1 1234 region slab diam one 0.01 dens 1000 1000\n"
                                          "run 10\n")
     assert [(r["sizes"], r["at"]) for r in rows] == [
-        ("smallest eps", [[0.01, 3000.0], [0.01, 3000.0]]),
-        ("largest eps", [[0.005, 1000.0], [0.005, 1000.0]])]
+        ("smallest eps", smallest), ("largest eps", [[0.005, 1000.0], [0.005, 1000.0]])]
     for r in rows:
         engine = _in_lammps(r)
         print(r["at"], r["eps"][2], engine)
         assert abs(engine / r["eps"][2] - 1) < 1e-6
-    assert rows[1]["eps"][2] > rows[0]["eps"][2] + 1e-2
+    assert rows[1]["eps"][2] > rows[0]["eps"][2] + 1e-3      # 0.99814 against 0.99709 or 0.98574
 
 
 @needs_lammps

@@ -10,29 +10,15 @@ import json
 
 import pytest
 
-from deck_cli import needs_lammps, run
+from deck_cli import lammps_pour, needs_lammps, run
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.pair import Pair
 
 LINE = "pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3"
-DECK = f"""units si
-atom_style sphere
-boundary p p f
-comm_modify vel yes
-region box block 0 0.1 0 0.1 0 0.2
-create_box 2 box
-create_atoms 2 single 0.05 0.05 0.01
-set type 2 diameter 0.004 density 3000
-pair_style granular
-{LINE}
-region ins block 0 0.1 0 0.1 0.1 0.2
-fix 1 all nve/sphere
-fix g all gravity 9.81 vector 0 0 -1
-fix p all pour 400 1 123 region ins diam one 0.01 dens 2500 2500
-timestep 1e-5
+DECK = lammps_pour(LINE, ntypes=2, sphere=(2, 0.004, 3000.0)) + """timestep 1e-5
 run 100
-{{between}}{{set}}
+{between}{set}
 run 100
 """
 

@@ -281,6 +281,8 @@ def _sized(row: dict) -> str:
     if row["sizes"] == "any":
         return " (spheres of several sizes: this law's eps does not depend on size, so this row holds for every size)"
     at = " and ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in row["at"])
+    if row["sizes"] == "only":
+        return f" (spheres of several sizes, of which only these meet: {at})"
     return f" ({row['sizes']} over the sizes present, at {at})"
 
 

@@ -52,7 +52,9 @@ spheres of the template's ``Diameters`` and ``Masses`` (density 1 without Masses
 A type whose atoms have several sizes (or that a ``fix pour`` fills
 from a range of diameters, sampled at nine points with its ends) gives each of its pairs two rows,
 the smallest and the largest eps at the middle speed with the spheres they are at (``sizes``,
-``at``), or one row where the sizes' eps agree to 1e-9 (a law whose eps does not depend on size).
+``at``), or one row where the sizes' eps agree to 1e-9 (a law whose eps does not depend on size);
+a size with itself only where two spheres of it can meet (more than one atom has it, or a pour
+keeps making it).
 Under ``pair_style hybrid`` or ``hybrid/overlay`` the granular sub-style is read from the
 pair_coeff lines naming it; a pair another sub-style covers is named, not audited. Two granular
 sub-styles (an older gran/* and granular) give each pair the one its pair_coeff lines name, as
@@ -815,7 +817,9 @@ _SAME_EPS = 1e-9
 def _choices(deck: Deck, i: int, j: int) -> list:
     """The spheres a pair (i, j) is audited at: [()] where both types have one size, else every
     choice of ((R_i, rho_i), (R_j, rho_j)) among their sizes (:attr:`Deck.sizes`), each unordered
-    choice once where i = j."""
+    choice once where i = j, and a size with itself only where two spheres of it can meet: a
+    size one atom alone has at the run (:attr:`Deck.once`), no inserting fix making more of it
+    (:attr:`Deck.poured`), meets only the type's other sizes."""
     if i not in deck.sizes and j not in deck.sizes:
         return [()]
     one = {t: deck.sizes.get(t) or [(deck.radius.get(t), deck.density.get(t))] for t in (i, j)}
@@ -823,7 +827,9 @@ def _choices(deck: Deck, i: int, j: int) -> list:
         if options[0][0] is None or options[0][1] is None:
             spheres(deck, t, t)              # one line naming what the type lacks
     # a type with itself: (b, a) is the contact (a, b) is, and comes later: left out
-    return [(a, b) for m, a in enumerate(one[i]) for n, b in enumerate(one[j]) if i != j or m <= n]
+    alone = deck.once.get(i, set()) - deck.poured.get(i, set()) if i == j else set()
+    return [(a, b) for m, a in enumerate(one[i]) for n, b in enumerate(one[j])
+            if i != j or m < n or m == n and a not in alone]
 
 
 def _over_sizes(choices: list, row_at, speeds) -> list:
@@ -877,10 +883,14 @@ def _ends(rows: list) -> list:
     """The rows of one pair or wall over the sizes present: the one row where there is one size; else
     the rows of the smallest and the largest eps at the middle speed, each with the sizes it is at
     (``sizes``: "smallest eps" or "largest eps", ``at``: [[R, rho], [R, rho]]), or one row (``sizes``:
-    "any", the sizes' eps within 1e-9) where the law's eps does not depend on size. A speed where
+    "any", the sizes' eps within 1e-9) where the law's eps does not depend on size, or "only" where
+    one choice of sizes alone can meet. A speed where
     some size passes through or sticks is taken as it comes in the row that has it."""
     if len(rows) == 1 and not rows[0][1]:
         return [rows[0][0]]
+    if len(rows) == 1:          # of a type's sizes, one pair alone can meet (one sphere of each)
+        row, at = rows[0]
+        return [{**row, "sizes": "only", "at": [list(at[0]), list(at[1])] if len(at) == 2 else [list(at[0])]}]
     k = len(rows[0][0]["speeds"]) // 2
 
     def middle(item):

@@ -17,11 +17,11 @@ import re
 
 from ...core.collision import StickError
 from ..contact import Contact
-from ..engines.lammps.deck import DEFAULT_DT
+from ..engines.lammps.deck import DEFAULT_DT, FTM2V
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
 
-__all__ = ["BESIDE", "adapt_parts", "drag_eps", "effects", "gravity_vector"]
+__all__ = ["BESIDE", "adapt_parts", "adapted_diameter", "drag_eps", "effects", "gravity_vector"]
 
 #: Fix style -> what it does to the atoms of its group, beside the contact law
 BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
@@ -438,6 +438,10 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
     wall = len(types) == 1
     masses = (pair.m1,) if wall else (pair.m1, pair.m2)
     drag = None
+    if style in ("viscous", "langevin") and deck.units in FTM2V:
+        # where LAMMPS' ftm2v is not 1 a drag's rate is not gamma / m (not checked there)
+        entry["why"] = f"its size is not computed in units {deck.units}"
+        return
     if style == "viscous" and len(words) > 4 and (gamma := _number(words[4])) is not None and gamma >= 0:
         ratios = _keyword_ratios(words, 5)
         drag = tuple(gamma * ratios.get(t, 1.0) / m if on else 0.0 for t, m, on in zip(types, masses, acted))
@@ -538,13 +542,66 @@ _CONSTANT_NAMES = frozenset({"sqrt", "exp", "ln", "log", "abs", "sin", "cos", "t
                              "atan2", "ceil", "floor", "round", "PI", "e", "E"})
 
 
+def adapted_diameter(deck, words: list) -> float | None:
+    """The one diameter a fix adapt gives the atoms of its group, where its every attribute is
+    ``atom diameter v_NAME``, NAME an equal-style variable of a constant formula, and it does not
+    scale; else None (it changes coefficients, or sizes as the run goes).
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck as read so far (its equal-style variables).
+    words : list of str
+        fix ID group adapt N attribute args ... keyword value ..., as the engine ran it.
+
+    Returns
+    -------
+    float or None
+
+    Examples
+    --------
+    >>> from restitution.dem.dialect.state import Deck
+    >>> d = Deck(variables={"d": "2*0.003", "t": "0.006+1e-6*step"})
+    >>> adapted_diameter(d, "fix a all adapt 0 atom diameter v_d".split())
+    0.006
+    >>> adapted_diameter(d, "fix a all adapt 0 atom diameter v_t".split()) is None
+    True
+    """
+    parts, keys = adapt_parts(words)
+    names = [args[1][2:] for kind, args in parts if kind == "atom" and len(args) == 2 and args[0] == "diameter"
+             and args[1].startswith("v_")]
+    if not parts or len(names) < len(parts) or keys.get("scale", "no") != "no":
+        return None
+    values = [_constant(deck.variables.get(name)) for name in names]
+    return None if None in values else values[-1]
+
+
+def _constant(formula: str | None) -> float | None:
+    """The value of an equal-style formula of numbers, operators and math functions alone (LAMMPS'
+    ^ is a power), None where it holds anything else (a step, time, another variable) or fails."""
+    if formula is None or set(re.findall(r"[A-Za-z_]\w*", re.sub(r"\d[eE][-+]?\d", "0", formula))) - _CONSTANT_NAMES:
+        return None
+    if not re.fullmatch(r"[\w.+\-*/^()\s,]*", formula):
+        return None
+    names = {name: getattr(math, name.lower(), None) for name in _CONSTANT_NAMES}
+    names.update(PI=math.pi, E=math.e, e=math.e, ln=math.log, log=math.log10, abs=abs, round=round)
+    try:
+        value = eval(formula.replace("^", "**"), {"__builtins__": {}}, names)   # names checked above
+    except (ArithmeticError, SyntaxError, TypeError, ValueError):
+        return None
+    return float(value) if isinstance(value, (int, float)) and math.isfinite(value) else None
+
+
 def _adapt(entry: dict, deck, row: dict, words: list) -> None:
     """fix adapt whose every attribute is ``atom diameter v_NAME``, NAME an equal-style variable of a
-    constant formula, in a deck that inserts no atoms: it gives every atom of its group that one
-    diameter at each run's set-up and keeps it so through the run (LAMMPS measured: the engine's
-    pass holds the adapted size, and no keyword but reset yes, refused by the reader, undoes it);
-    the sizes audited are those, and eps is the contact's. Anything else changes coefficients or
-    sizes the audit does not follow (entry updated)."""
+    constant formula: it gives every atom of its group that one diameter at each run's set-up (and
+    every N steps) and keeps it so through the run (LAMMPS measured: the engine's pass holds the
+    adapted size, and no keyword but reset yes, refused by the reader, undoes it); the sizes audited
+    are those, and eps is the contact's. The atoms a LAMMPS pour makes keep the pour's size until
+    the adapt resizes them (LAMMPS measured: N = 0, at the next run's set-up; N = 10, within 10
+    steps), which the reader follows (:func:`restitution.dem.deck.reader.read_executed`): the sizes
+    audited hold both. Anything else changes coefficients or sizes the audit does not follow
+    (entry updated)."""
     parts, keys = adapt_parts(words)
     names = [args[1][2:] for kind, args in parts if kind == "atom" and len(args) == 2 and args[0] == "diameter"
              and args[1].startswith("v_")]
@@ -552,20 +609,26 @@ def _adapt(entry: dict, deck, row: dict, words: list) -> None:
         entry["why"] = "it changes coefficients, or sizes otherwise than by a diameter variable: its size is not computed"
         return
     formulas = [deck.variables.get(name) for name in names]
-    if any(f is None or set(re.findall(r"[A-Za-z_]\w*", f)) - _CONSTANT_NAMES for f in formulas):
+    if adapted_diameter(deck, words) is None:
         entry["why"] = (f"its diameter variable{'s' if len(names) > 1 else ''} "
                         f"{', '.join('v_' + n for n in names)} may change as the run goes (not an equal-style "
                         "constant): its size is not computed")
         return
+    inserted = also = ""
     if getattr(deck, "inserting", False):
-        entry["why"] = ("a fix inserts atoms as the runs go, which it may resize at a later set-up or step: its size "
-                        "is not computed")
-        return
+        if deck.code != "LAMMPS" or deck.deposits:
+            entry["why"] = ("a fix inserts atoms as the runs go, which it may resize at a later set-up or step, and "
+                            "which the reader follows for LAMMPS' pours only: its size is not computed")
+            return
+        inserted = ("; the atoms a pour makes keep the pour's size until the adapt resizes them (at the next run's "
+                    "set-up where N is 0, within N steps else), which the audit follows")
+        also = " and the pour's"
     entry["eps_engine"] = list(row["eps"])
     entry["what"] = "the atoms' diameters set from a variable"
     entry["why"] = (f"it sets the diameter of the atoms of group {words[2]} to the constant "
                     f"{' and '.join(f'v_{n} = {f}' for n, f in zip(names, formulas))} at the run's set-up, which the "
-                    "engine's pass made: the sizes audited are the adapted ones, and eps is the contact's")
+                    f"engine's pass made{inserted}: the sizes audited are the adapted ones{also}, and eps is the "
+                    "contact's")
 
 
 #: fix setforce's components, in order

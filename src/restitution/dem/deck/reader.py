@@ -14,7 +14,7 @@ import copy
 import math
 import re
 
-from .beside import BESIDE, adapt_parts
+from .beside import BESIDE, adapt_parts, adapted_diameter
 from .meeting import MOVERS, neigh_modify, special_bonds
 from .stream import SEEDED
 from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, type_pairs, types,
@@ -23,7 +23,7 @@ from ..deck_text import ScriptError, words
 from ..engines import ENGINES
 from ..engines.lammps.deck import DEFAULT_DT
 
-__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key"]
+__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key", "repour", "adapt_poured"]
 
 #: Engine (a Deck's ``code``) -> its deck dialect: the module that reads its pair style, its
 #: coefficients and its walls, as each registered engine's deck hook names it
@@ -166,8 +166,12 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             continue
         if split[0] == "run":
             deposited_ran |= {t for t, fix in deck.deposits.items() if fix is not None}
+            # a fix adapt resizes the atoms poured before at the run's set-up; those poured in
+            # the run where it acts every N steps, after it (LAMMPS measured)
+            resized = adapt_poured(deck, made, cmd.loc, cmd.text, during=False)
             for t, sizes in deck.pours.values():
                 made.setdefault(t, set()).update(sizes)
+            repour(deck, made, resized | adapt_poured(deck, made, cmd.loc, cmd.text, during=True))
         elif split[0] == "clear":
             deposited_ran, made = set(), {}
         plain_run = split[0] == "run" and "every" not in split
@@ -208,7 +212,10 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             made = read_restart(deck, split, cmd.loc, cmd.text, written.get(split[1]), next(infos, None))
             deposited_ran = set()
         else:
+            pours = dict(deck.pours)
             _execute(deck, split, cmd.text, cmd.loc, read_file)
+            # a pour gone (or defined anew) adds its size no more
+            repour(deck, made, {t for key, (t, _) in pours.items() if deck.pours.get(key) != pours[key]})
         same = plain_run and runs == (len(deck.stages), len(deck.stages[-1][0]) - 1 if deck.stages else -1)
         if cmd.stage is not None:
             recorded = bool(deck.stages) and runs != (len(deck.stages), len(deck.stages[-1][0]))
@@ -419,6 +426,7 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     atoms share one; several (a type of several sizes) in ``sizes``; a type without atoms
     keeps what an inserting fix gives it (a pour) or none (walls only, or unused)."""
     deck.held = {t: sorted(v) for t, v in atoms.items()}
+    deck.once = {t: set(v.once) for t, v in atoms.items() if getattr(v, "once", None)}
     deck.atoms = deck.atoms or bool(atoms)
     deck.present |= set(atoms)
     for t, sizes in atoms.items():
@@ -716,7 +724,8 @@ def contact_key(deck: Deck) -> str:
                        deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
-                       set(deck.shapes), deck.sizes, deck.others, deck.idle, deck.granular_of,
+                       set(deck.shapes), deck.sizes, {t: deck.once.get(t, set()) - deck.poured.get(t, set())
+                                                      for t in deck.sizes}, deck.others, deck.idle, deck.granular_of,
                        [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
@@ -1183,6 +1192,111 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
             pour_into(deck, t, set())       # the type's sizes anew (a type no atom of holds in the pass)
             changed = True
     return changed
+
+
+def repour(deck: Deck, made: dict, changed: set) -> None:
+    """The sizes of each type in ``changed`` anew: those of the atoms the pours made in the runs so far
+    (``made``) and those the pours in force make from here on (and a fix deposit's). A pour
+    unfixed (or defined anew) before it ran made none, and one unfixed after a ``set`` resized
+    what it made adds its own size no more (LAMMPS measured: pour, run, set type 1 diameter 0.006,
+    unfix, run: every atom of the type has radius 0.003); a type left with none has no particle
+    the engine's pass does not hold.
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place (``poured``, the types' sizes).
+    made : dict
+        Type -> {(radius, density)} of the atoms the pours made in the runs so far.
+    changed : set of int
+        The types whose pours (or the atoms they made) changed.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, held={}, poured={1: {(0.005, 2500.0)}}, radius={1: 0.005}, density={1: 2500.0})
+    >>> repour(deck, {}, {1})
+    >>> deck.poured, deck.radius
+    ({}, {})
+    """
+    for t in sorted(changed):
+        now = set(made.get(t, ())).union(*(s for u, s in deck.pours.values() if u == t))
+        if t in deck.deposits:
+            now.add(DEPOSITED)
+        if now == deck.poured.get(t):
+            continue
+        if now or t in (deck.held or {}):
+            deck.poured[t] = now
+            pour_into(deck, t, set())
+            continue
+        del deck.poured[t]
+        for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
+            known.pop(t, None)
+
+
+def adapt_poured(deck: Deck, made: dict, loc, text: str, during: bool) -> set:
+    """The atoms the pours made (``made``, changed in place) resized by the fix adapts in force
+    that give their group one constant diameter (LAMMPS 22 Jul 2025 measured, adapt 0 on group
+    all beside a pour: after the first run the atom created has the adapted radius, the 269 poured
+    the pour's; at the second run's set-up all 270 the adapted one, the 131 poured in it the pour's;
+    adapt 10: every atom the adapted one after each run). At a run's set-up (``during`` False) every
+    such adapt resizes them; during the run (True) those whose N is not 0. An adapt's ``mass yes``
+    (its default) keeps the density, ``mass no`` the mass. Where the reader cannot tell which
+    poured atoms its group holds, the deck is refused.
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck as read so far (its fixes in force, groups and variables).
+    made : dict
+        Type -> {(radius, density)} of the atoms the pours made in the runs so far.
+    loc : tuple
+        (file or None, line number) of the run.
+    text : str
+        The run.
+
+    Returns
+    -------
+    set of int
+        The types whose poured atoms it resized.
+
+    Raises
+    ------
+    DeckError
+        Where the adapt's group may hold poured atoms the reader cannot type.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, code="LAMMPS", variables={"d": "0.006"},
+    ...             beside=[((None, 5), "fix a all adapt 0 atom diameter v_d".split())])
+    >>> made = {1: {(0.005, 2500.0)}}
+    >>> adapt_poured(deck, made, (None, 6), "run 10", during=False), made
+    ({1}, {1: {(0.003, 2500.0)}})
+    """
+    done: set = set()
+    if deck.code != "LAMMPS" or not any(made.values()):
+        return done
+    for where, words in deck.beside:
+        if words[3] != "adapt" or (diameter := adapted_diameter(deck, words)) is None:
+            continue
+        if during and words[4] == "0":
+            continue
+        group = words[2]
+        if group == "all":
+            resized = [t for t in made if made[t]]
+        else:
+            fillers = [filled for _, filled in deck.filled_groups.get(group, [])]
+            typed = deck.groups.get(group, set())
+            if None in fillers or typed is None or typed & {t for t in made if made[t]}:
+                raise DeckError(place(where), " ".join(words), f"which atoms a pour made group {group} holds, which "
+                                                               f"this adapt resizes at the run at {place(loc)} "
+                                                               f"({text}), the reader does not know: not audited")
+            resized = sorted(set().union(*fillers) & {t for t in made if made[t]})
+        keep_mass = adapt_parts(words)[1].get("mass", "yes") == "no"
+        r = 0.5 * diameter
+        for t in resized:
+            made[t] = {(r, float(f"{rho * (a / r) ** 3 if keep_mass else rho:.12g}")) for a, rho in made[t]}
+        done.update(resized)
+    return done
 
 
 def _variable(deck: Deck, words: list) -> None:

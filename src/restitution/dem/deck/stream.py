@@ -19,7 +19,8 @@ from .scratch import AUDIT, DYNAMIC, NOOP, Scratch, normalised
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS
 
-__all__ = ["Executed", "executed", "skipped", "unchecked", "snapshots", "engine_error", "first_unchecked", "SEEDED"]
+__all__ = ["Executed", "HeldSizes", "executed", "skipped", "unchecked", "snapshots", "engine_error", "first_unchecked",
+           "SEEDED"]
 
 
 @dataclass(slots=True)
@@ -351,9 +352,28 @@ def _marks(commands: list, pattern) -> list[int]:
     return [int(m.group(1)) for cmd in commands if (m := pattern.fullmatch(cmd.text))]
 
 
+class HeldSizes(set):
+    """The (radius, density) of a type's atoms at a run, as a set; ``once`` those exactly one atom
+    has (no pair of two spheres of that size exists there).
+
+    Examples
+    --------
+    >>> held = HeldSizes({(0.5, 1.0), (0.3, 1.0)})
+    >>> held.once = frozenset({(0.3, 1.0)})
+    >>> sorted(held), sorted(held.once)
+    ([(0.3, 1.0), (0.5, 1.0)], [(0.3, 1.0)])
+    """
+
+    once: frozenset = frozenset()
+
+    def __repr__(self) -> str:
+        return repr(set(self))
+
+
 def snapshots(atoms: str) -> list[dict]:
     """Each run's atoms, from the markers' dumps (columns type radius mass): {type: {(radius,
-    density)}}, density = mass / (4/3 pi r^3) (a point particle's None).
+    density)}} (a :class:`HeldSizes`, whose ``once`` are the sizes one atom alone has), density =
+    mass / (4/3 pi r^3) (a point particle's None).
 
     Parameters
     ----------
@@ -368,6 +388,8 @@ def snapshots(atoms: str) -> list[dict]:
     >>> snapshots("ITEM: TIMESTEP\\n0\\nITEM: NUMBER OF ATOMS\\n1\\nITEM: BOX BOUNDS pp pp pp\\n0 1\\n0 1\\n0 1\\n"
     ...           "ITEM: ATOMS type radius mass\\n2 0.5 0.5235987755982988\\n")
     [{2: {(0.5, 1.0)}}]
+    >>> sorted(_[0][2].once)
+    [(0.5, 1.0)]
     """
     out, lines, k = [], atoms.split("\n"), 0
     while k < len(lines):
@@ -377,13 +399,18 @@ def snapshots(atoms: str) -> list[dict]:
             while not lines[k].startswith("ITEM: ATOMS"):
                 k += 1
             snap: dict = {}
+            counts: dict = {}
             for row in lines[k + 1:k + 1 + n]:
                 t, r, m = row.split()[:3]
                 r, m = float(r), float(m)
                 volume = 4.0 / 3.0 * math.pi * r ** 3
                 # a radius below ~1e-108 has a volume that underflows to 0: no density (named)
                 rho = m / volume if volume > 0 else None
-                snap.setdefault(int(t), set()).add((r, None if rho is None else float(f"{rho:.12g}")))
+                size = (r, None if rho is None else float(f"{rho:.12g}"))
+                snap.setdefault(int(t), HeldSizes()).add(size)
+                counts[(int(t), size)] = counts.get((int(t), size), 0) + 1
+            for t, sizes in snap.items():
+                sizes.once = frozenset(size for size in sizes if counts[(t, size)] == 1)
             out.append(snap)
             k += 1 + n
         else:

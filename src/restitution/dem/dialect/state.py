@@ -129,6 +129,9 @@ class Deck:
     # type -> {(radius, density)} its inserting fixes (a LAMMPS pour, a LIGGGHTS sphere template) add
     # to it as the runs go, kept beside the atoms the engine holds (which a pour's never are)
     poured: dict = field(default_factory=dict)
+    # type -> the sizes exactly one of its atoms has at the run (the engine's count): two spheres
+    # of such a size meet only where an inserting fix keeps making it
+    once: dict = field(default_factory=dict)
     at: tuple = ()
     sampled: dict = field(default_factory=dict)   # type -> how many sizes it held where ``sizes`` is a sample
     # LAMMPS pair_style hybrid or hybrid/overlay ("" otherwise), its granular sub-style, and the

@@ -18,12 +18,13 @@ from dataclasses import dataclass
 from functools import partial
 
 from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, type_pairs, wall_faces
+from ...contact import Contact, ElasticContact
 from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
 
-__all__ = ["ENGINE", "DEFAULT_DT", "region_number", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall",
-           "concave_cylinder"]
+__all__ = ["ENGINE", "DEFAULT_DT", "FTM2V", "NKTV2P", "region_number", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style",
+           "pair_coeff", "pair_row", "wall", "concave_cylinder", "accelerated"]
 
 #: LAMMPS' default time step per unit style (checked in LAMMPS 22 Jul 2025), where a deck sets none
 DEFAULT_DT = {"lj": 0.005, "real": 1.0, "metal": 0.001, "si": 1e-8, "cgs": 1e-8, "electron": 0.001, "micro": 2.0,
@@ -44,12 +45,14 @@ _LAMMPS_NORMAL_ARGS = {"hooke": 2, "hertz": 2, "hertz/material": 3}
 #: LAMMPS pair_coeff heat models (pair_style granular's heat keyword) and their number of arguments:
 #: conduction between touching spheres, which changes temperatures, not forces
 _LAMMPS_HEAT = {"none": 0, "area": 1, "radius": 1}
-#: Unit styles whose pressure-to-force conversion (LAMMPS' nktv2p) is 1: gran/hertz/history's Kn as typed
-_NKTV2P_ONE = ("si", "cgs", "lj", "micro", "nano")
+#: LAMMPS' pressure conversion nktv2p (update.cpp) of the unit styles where it is not 1: gran/hertz/history
+#: and its wall model divide Kn by it (pair_gran_hertz_history.cpp, fix_wall_gran.cpp)
+NKTV2P = {"real": 68568.415, "metal": 1.6021765e6, "electron": 2.94210108e13}
 #: LAMMPS' force-to-acceleration factor ftm2v (update.cpp) of the unit styles where it is not 1: the
-#: integrator moves an atom by ftm2v F / m, so the contact's D1 and D2 are ftm2v times the law's as
-#: typed (metal, two spheres of mass 83.8 under gran/hooke 200 NULL 0.01: eps 0.4845 in LAMMPS, where
-#: the law without the factor gives 0.9928); in every other style (si, cgs, lj, micro, nano) it is 1
+#: integrator moves an atom by ftm2v F / m (fix nve/sphere's dtf = dt ftm2v / 2), F the force the
+#: law computes with the atoms' true masses, so the contact's D1 and D2 are ftm2v times the law's
+#: (metal, two spheres of mass 83.8 under gran/hooke 200 NULL 0.01: eps 0.4845 in LAMMPS, where the
+#: law without the factor gives 0.9928); in every other style (si, cgs, lj, micro, nano) it is 1
 FTM2V = {"real": 1.0 / 48.88821291 / 48.88821291, "metal": 1.0 / 1.0364269e-4, "electron": 0.937582899}
 
 
@@ -78,30 +81,61 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     >>> deck.gran["k_n"], deck.gran["limit_damping"]
     (2000.0, False)
     """
-    _forces_as_typed(deck.units, where, line)
     if words[1] != "granular":
-        deck.gran = _gran_law(words[1], words[2:], deck.units, where, line)
+        deck.gran = _gran_law(words[1], words[2:], where, line)
     deck.cutoff = number(words[2], where, line) if words[1] == "granular" and len(words) > 2 else None
 
 
-def _forces_as_typed(units: str, where: str, line: str) -> None:
-    """Refuse a unit style in which LAMMPS scales every force by ftm2v before it moves the atoms
-    (:data:`FTM2V`): the contact laws are mapped with forces as typed."""
-    if units in FTM2V:
-        raise DeckError(where, line, f"units {units}: LAMMPS turns forces into accelerations with ftm2v = "
-                                     f"{FTM2V[units]:.6g} there, so the contact is not the law as typed, which the "
-                                     f"reader does not map (units {', '.join(_NKTV2P_ONE)} are, where it is 1)")
+def accelerated(contact, units: str):
+    """The contact as LAMMPS integrates it in ``units``: m delta'' = ftm2v F(delta, delta') (:data:`FTM2V`),
+    F the law's force with the atoms' true masses (its damping's m_eff, tsuji's sqrt(m k)), so D1 and
+    D2 per unit mass both times ftm2v; the contact itself where ftm2v is 1.
+
+    Parameters
+    ----------
+    contact : Contact or ElasticContact
+        The law's contact, forces as typed.
+    units : str
+        The deck's unit style.
+
+    Returns
+    -------
+    Contact or ElasticContact
+
+    Examples
+    --------
+    >>> from restitution.dem.contact import Contact
+    >>> c = accelerated(Contact("1", "0", 2.0, 0.5, "overlap"), "metal")
+    >>> round(c.D1 / 2.0, 4), round(c.D2 / 0.5, 4), accelerated(c, "si") is c
+    (9648.5338, 9648.5338, True)
+    """
+    factor = FTM2V.get(units)
+    if factor is None:
+        return contact
+    if isinstance(contact, ElasticContact):
+        return ElasticContact(contact.alpha, factor * contact.D1, contact.end)
+    return Contact(contact.alpha, contact.gamma, factor * contact.D1, factor * contact.D2, contact.end)
 
 
-def _gran_law(style: str, params: list, units: str, where: str, line: str) -> dict:
+def _in_units(model: str, units: str) -> str:
+    """A row's model, with the factor LAMMPS puts on its forces where it is not 1."""
+    return f"{model}; units {units}: forces times ftm2v = {FTM2V[units]:.10g}" if units in FTM2V else model
+
+
+def _older_contact(pair: Pair, law: dict, units: str):
+    """The contact an older style's law (:func:`_gran_law`) gives in ``units``: gran/hertz/history's Kn
+    divided by nktv2p (:data:`NKTV2P`), and the forces times ftm2v (:func:`accelerated`)."""
+    if law["style"] == "gran/hertz/history":
+        law = {**law, "k_n": law["k_n"] / NKTV2P.get(units, 1.0)}
+    return accelerated(lammps_gran_contact(pair, **law), units)
+
+
+def _gran_law(style: str, params: list, where: str, line: str) -> dict:
     """codes.lammps_gran_contact's keywords from an older style's Kn Kt gamma_n gamma_t xmu dampflag
-    [limit_damping] (Kt, gamma_t, xmu and dampflag act tangentially only)."""
+    [limit_damping] (Kt, gamma_t, xmu and dampflag act tangentially only), Kn as typed."""
     if len(params) not in (6, 7) or len(params) == 7 and params[6] != "limit_damping":
         raise DeckError(where, line, f"{style} needs Kn Kt gamma_n gamma_t xmu dampflag [limit_damping], as "
                                      "LAMMPS does")
-    if style == "gran/hertz/history" and units not in _NKTV2P_ONE:
-        raise DeckError(where, line, f"units {units}: gran/hertz/history's Kn is converted from pressure "
-                                     f"units there, which the reader does not map ({', '.join(_NKTV2P_ONE)} are)")
     return {"style": style, "k_n": number(params[0], where, line), "gamma_n": number(params[2], where, line),
             "limit_damping": len(params) == 7}
 
@@ -261,7 +295,6 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     >>> row["model"], row["line"]
     ('LAMMPS hooke, damping viscoelastic', 5)
     """
-    _forces_as_typed(deck.units, "units", deck.units)     # a units line after the pair_style line
     if (i, j) not in deck.coeffs and ((i, i) not in deck.coeffs or (j, j) not in deck.coeffs):
         why = (f" (pair_style at {place(deck.reset[0])} discarded the earlier ones)"
                if deck.reset else "")
@@ -275,8 +308,9 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     if older:
         pair = spheres(deck, i, j)
         loc = deck.style_line[0]
-        contact = lammps_gran_contact(pair, **deck.gran)
-        return {"types": [i, j], "model": f"LAMMPS {deck.gran['style']}", "typed_e": None, "end": contact.end,
+        contact = _older_contact(pair, deck.gran, deck.units)
+        return {"types": [i, j], "model": _in_units(f"LAMMPS {deck.gran['style']}", deck.units), "typed_e": None,
+                "end": contact.end,
                 "contact": contact, "pair": pair, "exact_line": None, "line": loc[1], "file": loc[0]}
     if (i, j) in deck.coeffs:
         loc, words = deck.coeffs[(i, j)]
@@ -308,7 +342,8 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     contact = lammps_contact(pair, **c.setting(stiffness))
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
-    if typed is not None and c.others is not None and contact.D2 > 0:     # no damping (e = 1): eps is e already
+    # (where ftm2v is not 1 the e typed is not the law's own: no line is worked back from it)
+    if typed is not None and c.others is not None and contact.D2 > 0 and deck.units not in FTM2V:
         e_new = exact_e(contact, typed, partial(lammps_eta_n0, None, c.damping))
         if e_new is not None:
             # the pair's own line (a wildcard or mixed pair gets one naming it), its e replaced
@@ -316,7 +351,9 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
             numbers[1] = f"{e_new:.10g}"
             limit = ["limit_damping"] if c.limit and "limit_damping" not in c.others else []
             exact = " ".join(["pair_coeff", str(i), str(j), c.normal, *numbers, *c.others, *limit])
-    model = f"LAMMPS {c.normal}, damping {c.damping}" + (f" ({mixed_from})" if mixed_from else "")
+    model = _in_units(f"LAMMPS {c.normal}, damping {c.damping}" + (f" ({mixed_from})" if mixed_from else ""),
+                      deck.units)
+    contact = accelerated(contact, deck.units)
     return {"types": [i, j], "model": model, "typed_e": typed, "end": contact.end, "contact": contact, "pair": pair,
             "exact_line": exact, "line": loc[1], "file": loc[0]}
 
@@ -420,19 +457,19 @@ def wall(deck: Deck, loc, words: list, unknown: list):
     except DeckError as why:
         unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
         return None
-    model = f"LAMMPS {c.normal}, damping {c.damping}, {shape}"
+    model = _in_units(f"LAMMPS {c.normal}, damping {c.damping}, {shape}", deck.units)
     typed = c.args[1] if c.damping in E_DAMPINGS else None
 
     def contact_of(pair, t):
         contact = lammps_contact(_against(pair, radius, t, loc, text), **c.setting())
         exact = None
-        if typed is not None and contact.D2 > 0:     # no damping (e = 1): eps is e already
+        if typed is not None and contact.D2 > 0 and deck.units not in FTM2V:     # no damping (e = 1): eps is e
             # tsuji's and coeff_restitution's eps depend on e alone (Omega = 1 / A(e)^2 for hooke
             # and hertz), so one e serves every type the wall acts on: the wall's own line with it
             e_new = exact_e(contact, typed, partial(lammps_eta_n0, None, c.damping))
             if e_new is not None:
                 exact = " ".join([*words[:7], f"{e_new:.10g}", *words[8:]])
-        return contact, typed, model, exact
+        return accelerated(contact, deck.units), typed, model, exact
     return [(None, contact_of, None, faces)]
 
 
@@ -617,14 +654,14 @@ def _older_wall(deck: Deck, loc, words: list, k: int, unknown: list, radius: flo
     ``faces``: as wall's result, no e typed."""
     text = " ".join(words)
     try:
-        law = _gran_law(f"gran/{words[4]}", words[5:k], deck.units, place(loc), text)
+        law = _gran_law(f"gran/{words[4]}", words[5:k], place(loc), text)
     except DeckError as why:
         unknown.append((*loc, text, f"{why.args[0].split(': ', 1)[-1]}: the wall's contacts are not audited"))
         return None
-    model = f"LAMMPS {words[4]} (older wall model), {_shape(words[k], radius)}"
+    model = _in_units(f"LAMMPS {words[4]} (older wall model), {_shape(words[k], radius)}", deck.units)
 
     def contact_of(pair, t):
-        return lammps_gran_contact(_against(pair, radius, t, loc, text), **law), None, model, None
+        return _older_contact(_against(pair, radius, t, loc, text), law, deck.units), None, model, None
     return [(None, contact_of, None, faces)]
 
 

