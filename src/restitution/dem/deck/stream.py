@@ -377,7 +377,9 @@ def snapshots(atoms: str) -> list[dict]:
             while not lines[k].startswith("ITEM: ATOMS"):
                 k += 1
             snap: dict = {}
-            for row in lines[k + 1:k + 1 + n]:
+            # atoms of one size print the same row: each distinct row read once (a tutorial's
+            # tens of thousands of atoms are a handful of rows)
+            for row in set(lines[k + 1:k + 1 + n]):
                 t, r, m = row.split()[:3]
                 r, m = float(r), float(m)
                 volume = 4.0 / 3.0 * math.pi * r ** 3
