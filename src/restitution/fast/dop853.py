@@ -44,7 +44,8 @@ E5 = np.ascontiguousarray(_dop.E5, dtype=np.float64)
 _A_ROWS = [[(j, float(a)) for j, a in enumerate(A[s, :s]) if a != 0.0] for s in range(N_STAGES)]
 _B_TERMS = [(j, float(b)) for j, b in enumerate(B) if b != 0.0]
 _C_LIST = [float(c) for c in C]
-_E3_LIST, _E5_LIST = [float(e) for e in E3], [float(e) for e in E5]
+#: (stage, E3, E5) of the stages either error estimate reads
+_E_TERMS = [(j, float(e3), float(e5)) for j, (e3, e5) in enumerate(zip(E3, E5)) if e3 != 0.0 or e5 != 0.0]
 
 
 def _step(fun, t, y, f0, h):
@@ -74,11 +75,14 @@ def _error(K, h, y, ynew, rtol, atol):
     n = len(y)
     e5 = e3 = 0.0
     for i in range(n):
+        s3 = s5 = 0.0
+        for j, c3, c5 in _E_TERMS:
+            k = K[j][i]
+            s3 += k * c3
+            s5 += k * c5
         scale = atol[i] + max(abs(y[i]), abs(ynew[i])) * rtol
-        s5 = sum(K[j][i] * _E5_LIST[j] for j in range(len(K))) / scale
-        s3 = sum(K[j][i] * _E3_LIST[j] for j in range(len(K))) / scale
-        e5 += s5 * s5
-        e3 += s3 * s3
+        e5 += (s5 / scale) ** 2
+        e3 += (s3 / scale) ** 2
     denom = (e5 + 0.01 * e3) * n
     # both underflow to zero on a component decaying towards 0 (numpy's 0/0 is scipy's nan -> 0)
     return 0.0 if denom == 0.0 else abs(h) * e5 / math.sqrt(denom)
