@@ -100,6 +100,11 @@ def test_liggghts_read_data_example():
     assert "type 1 holds 505 sizes: audited at 9 of them" in notes and "type 2 has no particle" in notes
     # the smallest diameter in the data file, 0.01816704, is the smallest radius audited
     assert min(r for p in res["pairs"] for r, _ in p["at"]) == pytest.approx(0.00908352, rel=1e-12)
+    # its gravity beside the floor depends on size where the law's eps does not: given at the
+    # smallest and the largest sphere (diameter 0.0245606), the ends of its range
+    floor = next(w for w in res["walls"] if w["wall"] == "wall_bottom")
+    assert [b["at"] for b in floor["beside"] if b["style"] == "gravity"] == [[[0.00908352, 11.5]],
+                                                                             [[0.0122803, 11.5]]]
     res, err = audit(deck, "--g", 1.0, "--radius", "1=0.01")
     assert [p["types"] for p in res["pairs"]] == [[1, 1]] and "sizes" not in res["pairs"][0]
     res, _ = audit(deck, "--g", 1.0, "--radius", "1=0.01", "2=0.01", "--density", "2=11.5")

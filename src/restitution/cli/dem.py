@@ -222,14 +222,15 @@ def run_deck(args, out) -> None:
                   f"largest overlap reaches {reach}): no eps there", file=sys.stderr)
     for p, name, _, _, _, head in rows:
         where = f" ({head.removeprefix('# ')})" if head else ""
-        for fix in p.get("beside") or []:
+        for sized in _by_fix(p.get("beside") or []):
+            fix = sized[0]
             line = f"{fix['file']} line {fix['line']}" if fix["file"] else f"line {fix['line']}"
-            size = _engine_eps(p, fix["eps_engine"])
-            if len(fix.get("faces") or []) > 1:       # a gravity on a wall of several faces or directions
-                size = ": " + "; ".join(f"{face['face']} (gravity {face['push']:+.4g} into it){_engine_eps(p, face['eps_engine'])}"
-                                        for face in fix["faces"])
+            size = "".join(_effect_size(p, each, len(sized) > 1) for each in sized)
+            if len(sized) > 1:
+                size = (", by the sizes present (the law's own eps does not depend on size), at the sizes that end "
+                        "its range" + size)
             # a fix whose computed size is the contact's own eps at every speed changes nothing
-            kept = fix["eps_engine"] is not None and list(fix["eps_engine"]) == list(p["eps"])
+            kept = fix["eps_engine"] is not None and list(fix["eps_engine"]) == list(p["eps"]) and len(sized) == 1
             effect = "which leaves the eps the engine measures the contact's" if kept else \
                 f"which changes the eps the engine measures{size}"
             print(f"restitution deck: {name}{where}: {line} fix {fix['style']} ({fix['fix']}): {fix['what']}, {effect}"
@@ -393,6 +394,29 @@ def add_dem_subcommands(sub) -> None:
     add_lammps_subcommand(sub)
     add_deck_subcommand(sub)
     add_scene_subcommand(sub)
+
+
+def _by_fix(beside: list) -> list:
+    """A row's beside effects, those of one fix given at several sizes (``at``) together."""
+    out: list = []
+    for fix in beside:
+        if out and "at" in fix and "at" in out[-1][0] and (fix["fix"], fix["file"], fix["line"]) == (
+                out[-1][0]["fix"], out[-1][0]["file"], out[-1][0]["line"]):
+            out[-1].append(fix)
+        else:
+            out.append([fix])
+    return out
+
+
+def _effect_size(row: dict, fix: dict, at: bool) -> str:
+    """": eps at g = ..." of one beside effect (face by face where several; ``at``: led by its sizes)."""
+    size = _engine_eps(row, fix["eps_engine"])
+    if len(fix.get("faces") or []) > 1:       # a gravity on a wall of several faces or directions
+        size = ": " + "; ".join(f"{face['face']} (gravity {face['push']:+.4g} into it){_engine_eps(row, face['eps_engine'])}"
+                                for face in fix["faces"])
+    if not at:
+        return size
+    return "; at " + " and ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in fix["at"]) + size
 
 
 def _engine_eps(row: dict, eps_engine) -> str:

@@ -95,6 +95,14 @@ def scaled_collision(problem, omega: float, rtol: float = 1e-12):
     return collide(problem, omega, rtol=rtol)
 
 
+@lru_cache(maxsize=4096)
+def _eps_at(contact: "Contact", g: float, rtol: float) -> float:
+    """:meth:`Contact.eps`, kept: a deck's walls of one law and its stages ask the same contacts
+    again (a LIGGGHTS tutorial's six walls of one law, each at nine sizes and five speeds), and each
+    asks the ladder, which quotes its every rung in exact fractions."""
+    return contact_eps(contact.problem, contact.omega(g), rtol)
+
+
 @lru_cache(maxsize=1024)
 def _exact_collision(problem, omega: float):
     """The closed form's collision, kept: a deck's pairs, walls, sizes and speeds share Omega where
@@ -179,7 +187,7 @@ class Contact:
 
     def eps(self, g: float, rtol: float = 1e-12) -> float:
         """eps at impact speed g, to the reference's bound at rtol (:func:`contact_eps`)."""
-        return contact_eps(self.problem, self.omega(g), rtol)
+        return _eps_at(self, float(g), rtol)
 
     def contact_time(self, g: float, rtol: float = 1e-12, compiled: bool = False) -> float:
         """t_c in the units of D1, D2, g: the scaled tau_c times the time scale B(g) (the scipy

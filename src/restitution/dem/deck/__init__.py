@@ -54,7 +54,8 @@ from a range of diameters, sampled at nine points with its ends) gives each of i
 the smallest and the largest eps at the middle speed with the spheres they are at (``sizes``,
 ``at``), or one row where the sizes' eps agree to 1e-9 (a law whose eps does not depend on size);
 a size with itself only where two spheres of it can meet (more than one atom has it, or a pour
-keeps making it).
+keeps making it). Where the sizes' eps agree, a fix beside the contact whose effect still depends on size (a gravity on a wall) is given at
+the sizes that end its range at the middle speed, each with its ``at``.
 Under ``pair_style hybrid`` or ``hybrid/overlay`` the granular sub-style is read from the
 pair_coeff lines naming it; a pair another sub-style covers is named, not audited. Two granular
 sub-styles (an older gran/* and granular) give each pair the one its pair_coeff lines name, as
@@ -252,13 +253,15 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     row = _with_eps({"wall": words[1], "mesh": mesh, "types": [t], "wall_type": wall_type,
                                      "model": model, "typed_e": typed, "end": contact.end, "exact_line": exact,
                                      "line": loc[1], "file": loc[0]}, contact, at_speeds, pair.R1, _dt(deck))
-                    beside = effects(deck, row, contact, pair, (t,), faces=faces)
-                    beside += [{"fix": other[1], "style": other[3], "file": other_loc[0], "line": other_loc[1],
-                                "what": f"another wall at the same surface ({where}), whose force the engine adds "
-                                        "to this wall's on a sphere that meets both", "eps_engine": None,
-                                "why": "its size is not computed", "along": None}
-                               for other_loc, other, where in shared.get((words[1], t), [])]
-                    return ({**row, "beside": beside}, (tuple(size),) if t in deck.sizes else ())
+                    # another wall at this surface: named beside the row (the engine adds both forces)
+                    others = [{"fix": other[1], "style": other[3], "file": other_loc[0], "line": other_loc[1],
+                               "what": f"another wall at the same surface ({where}), whose force the engine adds "
+                                       "to this wall's on a sphere that meets both", "eps_engine": None,
+                               "why": "its size is not computed", "along": None}
+                              for other_loc, other, where in shared.get((words[1], t), [])]
+                    # sized by _ends on the rows it keeps (_beside)
+                    row["_beside"] = lambda at_row: effects(deck, at_row, contact, pair, (t,), faces=faces) + others
+                    return row, (tuple(size),) if t in deck.sizes else ()
                 rows += _time_steps(_ends(_over_sizes(
                     deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds)))
     return rows, unknown
@@ -764,10 +767,9 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                     return contact, pair.R1 + pair.R2
                 row = _with_eps(row, contact, at_speeds, pair.R1 + pair.R2, _dt(deck))
                 unmoved = [k for k in (0, 1) if moves[k][0] == "held"] if moves[0][0] != moves[1][0] else [None]
-                return ({**row, "beside": effects(sized, row, contact, pair, (i, j),
-                                                  lambda k, d=sized, i=i, j=j: _frozen_contact(d, i, j, k),
-                                                  unmoved=unmoved[0])},
-                        at)
+                row["_beside"] = lambda at_row: effects(sized, at_row, contact, pair, (i, j),
+                                                        lambda k: _frozen_contact(sized, i, j, k), unmoved=unmoved[0])
+                return row, at
             pairs += _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row, speeds)))
     walls, walls_not = _wall_rows(deck, speeds, ran)
     if deck.dt_reset:
@@ -884,13 +886,14 @@ def _ends(rows: list) -> list:
     the rows of the smallest and the largest eps at the middle speed, each with the sizes it is at
     (``sizes``: "smallest eps" or "largest eps", ``at``: [[R, rho], [R, rho]]), or one row (``sizes``:
     "any", the sizes' eps within 1e-9) where the law's eps does not depend on size, or "only" where
-    one choice of sizes alone can meet. A speed where
-    some size passes through or sticks is taken as it comes in the row that has it."""
+    one choice of sizes alone can meet. A speed where some size passes through or sticks is taken as
+    it comes in the row that has it. Each row kept gets what acts beside its contact (:func:`_beside`),
+    the rows left out none: it is computed for the rows kept alone."""
     if len(rows) == 1 and not rows[0][1]:
-        return [rows[0][0]]
+        return [_beside(rows[0][0])]
     if len(rows) == 1:          # of a type's sizes, one pair alone can meet (one sphere of each)
         row, at = rows[0]
-        return [{**row, "sizes": "only", "at": [list(at[0]), list(at[1])] if len(at) == 2 else [list(at[0])]}]
+        return [{**_beside(row), "sizes": "only", "at": _at(at)}]
     k = len(rows[0][0]["speeds"]) // 2
 
     def middle(item):
@@ -901,9 +904,63 @@ def _ends(rows: list) -> list:
                    for a, b in zip(r["eps"], lo[0]["eps"])) for r, _ in rows)
     out = []
     for (row, at), end in ([(lo, "any")] if same else [(lo, "smallest eps"), (hi, "largest eps")]):
-        out.append({**row, "sizes": end, "at": [list(at[0]), list(at[1])] if len(at) == 2 else [list(at[0])],
-                    "exact_line": row["exact_line"] if same else None})
+        out.append({**_beside(row, rows if same else ()), "sizes": end, "exact_line": row["exact_line"] if same else None,
+                    "at": _at(at)})
     return out
+
+
+def _at(at: tuple) -> list:
+    """A choice of sizes as the JSON gives it: [[R, rho]] (a wall) or [[R, rho], [R, rho]] (a pair)."""
+    return [list(at[0]), list(at[1])] if len(at) == 2 else [list(at[0])]
+
+
+def _beside(row: dict, over=()) -> dict:
+    """The row with what acts beside its contact (``beside``: :func:`restitution.dem.deck.beside.effects`
+    at the row's sizes, which _with_eps's caller left as ``row["_beside"]``).
+
+    ``over``: the [(row, at)] of every size of a law whose eps does not depend on size, of which
+    ``row`` is the one kept. An effect may still depend on size (a gravity beside a wall shifts eps
+    the more the longer a contact lasts, which for Hertz grows with the radius): each effect is
+    asked at the middle speed at every size, and one whose eps differs between them (beyond 1e-9)
+    is given at the sizes at the ends of its range there (for each face of a wall, its smallest
+    and largest), each entry with the sizes it is at (``at``), in that order; an effect that does
+    not differ is the kept row's. Only those sizes are computed at every speed."""
+    beside, row = row["_beside"], {key: value for key, value in row.items() if key != "_beside"}
+    row["beside"] = effects = beside(row)
+    if len(over) < 2 or not effects:
+        return row
+    k = len(row["speeds"]) // 2
+    one = ("speeds", "eps", "sticks", "passes_through")
+    at_middle = [r["_beside"]({**r, **{key: [r[key][k]] for key in one}}) for r, _ in over]
+    full: dict = {}
+    out = []
+    for n, effect in enumerate(effects):
+        values = [_middle_values(sized[n]) for sized in at_middle]
+        ends = sorted({pick(range(len(over)), key=lambda m, f=f: values[m][f])
+                       for f in range(len(values[0])) if all(v[f] is not None for v in values)
+                       for pick in (min, max)
+                       if not _all_same([v[f] for v in values])})
+        if not ends:
+            out.append(effect)
+            continue
+        for m in ends:
+            if m not in full:
+                full[m] = over[m][0]["_beside"](over[m][0])
+            out.append({**full[m][n], "at": _at(over[m][1])})
+    row["beside"] = out
+    return row
+
+
+def _middle_values(effect: dict) -> tuple:
+    """An effect's eps at the one speed it was asked at: one per face, or its own (None: not computed)."""
+    if effect.get("faces"):
+        return tuple(face["eps_engine"][0] if face["eps_engine"] else None for face in effect["faces"])
+    return (effect["eps_engine"][0] if effect["eps_engine"] else None,)
+
+
+def _all_same(values: list) -> bool:
+    """Whether these eps agree to _SAME_EPS (relative)."""
+    return all(abs(v - values[0]) <= _SAME_EPS * max(abs(values[0]), 1e-300) for v in values)
 
 
 #: A frozen atom's mass, as a multiple of its own: the engine takes the other atom's mass for m_eff

@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 import os
 import re
+from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -400,7 +401,9 @@ def snapshots(atoms: str) -> list[dict]:
                 k += 1
             snap: dict = {}
             counts: dict = {}
-            for row in lines[k + 1:k + 1 + n]:
+            # atoms of one size print the same row: each distinct row read once, with how many
+            # atoms print it (a tutorial's tens of thousands of atoms are a handful of rows)
+            for row, many in Counter(lines[k + 1:k + 1 + n]).items():
                 t, r, m = row.split()[:3]
                 r, m = float(r), float(m)
                 volume = 4.0 / 3.0 * math.pi * r ** 3
@@ -408,7 +411,7 @@ def snapshots(atoms: str) -> list[dict]:
                 rho = m / volume if volume > 0 else None
                 size = (r, None if rho is None else float(f"{rho:.12g}"))
                 snap.setdefault(int(t), HeldSizes()).add(size)
-                counts[(int(t), size)] = counts.get((int(t), size), 0) + 1
+                counts[(int(t), size)] = counts.get((int(t), size), 0) + many
             for t, sizes in snap.items():
                 sizes.once = frozenset(size for size in sizes if counts[(t, size)] == 1)
             out.append(snap)
