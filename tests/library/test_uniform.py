@@ -156,3 +156,30 @@ def test_every_atlas_pair_keeps_its_bound_on_fresh_points(alpha, gamma):
     el = om >= 1
     ome = np.array([r.one_minus_eps for r in runs])[el]
     assert np.max(np.abs(form.one_minus_eps(om[el]) / ome - 1)) <= form.bound_one_minus_eps
+
+
+def test_bound_covers_the_dense_scan_of_held_out_points(form):
+    """The stated bound is twice the largest error over every held-out set, the dense scan included:
+    the scan's own maximum (recomputed here on its points against the integrator) is inside half of it."""
+    from restitution.core.problem import Problem
+    from restitution.fast.master import reference_eps
+    from restitution.fast.uniform_build import BOUND_FACTOR, dense_points
+
+    m = form.measured
+    assert m["n_dense"] == dense_points().size
+    om = dense_points()
+    err = np.max(np.abs(form.eps(om) / reference_eps(Problem.of(form.alpha, form.gamma, "force"), om, 1e-14) - 1))
+    assert err == pytest.approx(m["dense_eps"], rel=1e-6)
+    assert BOUND_FACTOR * max(m["dense_eps"], m["test_eps"], m["selection_eps"]) <= form.bound_eps
+
+
+def test_dense_scan_points_are_neither_fit_nor_selection_points():
+    """Every dense-scan point lies a quarter of GRID_STEP (in log10 Omega) from the nearest fit or
+    model-selection point (log10 Omega = -9 + k GRID_STEP), so the scan is held out; and it spans the
+    form's range."""
+    from restitution.fast.uniform_build import GRID_STEP, dense_points
+
+    om = dense_points()
+    offset = (np.log10(om) + 9.0) / GRID_STEP
+    assert np.min(np.abs(offset - np.round(offset))) > 0.2
+    assert FORM_RANGE[0] < om.min() and om.max() < FORM_RANGE[1] and om.size >= 16 * 40

@@ -195,6 +195,10 @@ hi = max(curves[f"eps_{rule}"].max() for rule, _ in RULES)
 top.set_ylim(lo - 0.75 * (hi - lo), hi + 0.05 * (hi - lo))
 top.legend(loc="lower left", fontsize=9, frameon=False)   # no exponent or index in it
 bottom.set_yscale("log")
+# a factor of three of room beyond the extreme deviations: at the automatic limits the smallest one's marker
+# (overlap rule, g = 1) was cut by the axis
+dev = np.abs(runs["relative_deviation"].to_numpy())
+bottom.set_ylim(dev.min() / 3, dev.max() * 3)
 bottom.set_xlabel(r"impact speed $g$ (m/s)")
 # short, in mathtext (a true minus): the bottom panel is a third of the figure's height, and the caption names
 # eps_L as LAMMPS' eps

@@ -142,7 +142,7 @@ plt = setup_matplotlib()
 # indices (0.7 of it) above 7 pt
 plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
                                    "axes.titlesize"), 10.5))
-fig, (left, right) = plt.subplots(1, 2, figsize=(TEXT_WIDTH_PT / 72.27, 3.1))
+fig, (left, right) = plt.subplots(1, 2, figsize=(TEXT_WIDTH_PT / 72.27, 3.4))
 colours = ["C0", "C1", "C2", "C3", "C4", "C5", "C6"]
 LAW_OMEGA_MAX = 0.3
 # a marker and a line style per exponent pair as well as a colour: the figure reads in greyscale
@@ -173,9 +173,12 @@ left.set_ylabel(r"$\varepsilon_{\mathrm{overlap}} / \varepsilon_{\mathrm{force}}
 styles = [Line2D([], [], color="k", lw=1.0, marker="o", mfc="none", ms=4, label="integration"),
           Line2D([], [], color="k", lw=5.0, alpha=0.3, solid_capstyle="butt",
                  label=rf"leading law ($\Omega \leq {LAW_OMEGA_MAX:g}$)")]
-left.legend(handles=styles, loc="lower right", frameon=False, fontsize=9.5)   # the corner the curves leave free
 right.set_xlabel(r"$1/\Omega$")
 right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C\,\Omega^\kappa) - 1|$")
-fig.legend(*right.get_legend_handles_labels(), loc="lower center", ncol=3, frameon=False, fontsize=9.5)
-fig.set_layout_engine("tight", rect=(0, 0.12, 1, 1))
+# the two styles' key below the panels with the exponent pairs' (inside the left panel it covered the curves
+# of the pairs with the steepest laws)
+handles, labels = right.get_legend_handles_labels()
+fig.legend(handles + styles, labels + [h.get_label() for h in styles], loc="lower center", ncol=3, frameon=False,
+           fontsize=9.5)
+fig.set_layout_engine("tight", rect=(0, 0.19, 1, 1))
 save_figure(fig, out.pdf, out.png, width=1.0)

@@ -60,8 +60,9 @@ from .overlap_limit import overlap_limit
 __all__ = ["UniformForm", "Skeleton", "OverlapSkeleton", "skeleton", "fit_uniform", "SHAPES", "DEGREE",
            "FORM_RANGE", "UNIFORM_VERSION"]
 
-#: Bumped whenever the form or its fit changes (cached forms of an older kind are rebuilt).
-UNIFORM_VERSION = 1
+#: Bumped whenever the form, its fit or its measured bound changes (cached forms of an older kind are
+#: rebuilt; 2: the bound includes a dense scan of held-out points).
+UNIFORM_VERSION = 2
 #: Polynomial degree of the fitted term: DEGREE + 1 fitted coefficients, raised in steps of
 #: DEGREE_STEP (up to MAX_DEGREE) only while the error on the choice points stays above
 #: SELECTION_TARGET; which is the case only for small A (e.g. gamma = 0, alpha >= 2), where the

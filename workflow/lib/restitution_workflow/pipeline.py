@@ -150,7 +150,8 @@ STYLE = {
     "legend.fontsize": 10,   # its subscripts at 7 pt
     "axes.grid": True,
     "grid.alpha": 0.3,
-    "mathtext.fontset": "cm",
+    # one family for text, ticks and mathematics (Computer Modern mathematics beside DejaVu Sans text mixed two)
+    "mathtext.fontset": "dejavusans",
     "svg.hashsalt": "restitution",
     "pdf.compression": 6,
     "path.simplify": False,
