@@ -578,6 +578,8 @@ def adapted_diameter(deck, words: list) -> float | None:
 
     Examples
     --------
+    A constant formula gives its diameter; one that grows with the step gives none:
+
     >>> from restitution.dem.dialect.state import Deck
     >>> d = Deck(variables={"d": "2*0.003", "t": "0.006+1e-6*step"})
     >>> adapted_diameter(d, "fix a all adapt 0 atom diameter v_d".split())
