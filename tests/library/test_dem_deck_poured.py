@@ -93,7 +93,8 @@ pair_coeff * *
 @pytest.mark.slow
 def test_a_liggghts_insertion_after_the_first_step_adds_its_template(tmp_path):
     """LIGGGHTS' insertion starting at step 5000 puts nothing in the audit's one-step run. Before:
-    one row at the created sphere (0.90329), the inserted spheres' 0.98343 nowhere."""
+    one row at the created sphere (0.90329), the inserted spheres' 0.98343 nowhere. The one created
+    sphere has no like partner: its end of the range is its contact with an inserted sphere."""
     deck = LIGGGHTS_BOX + STIFF + """create_atoms 1 single 0 0 0.02 units box
 set atom 1 diameter 0.02 density 2500
 fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.003
@@ -107,12 +108,12 @@ run 10000
 """
     rows = _rows(tmp_path, deck)
     assert [(r["types"], r["at"]) for r in rows] == [
-        ([1, 1], [[0.01, 2500.0], [0.01, 2500.0]]), ([1, 1], [[0.003, 2500.0], [0.003, 2500.0]])]
+        ([1, 1], [[0.003, 2500.0], [0.01, 2500.0]]), ([1, 1], [[0.003, 2500.0], [0.003, 2500.0]])]
     contact = "create_box 2 box\n" + STIFF
     for r in rows:
-        (r1, rho), _ = r["at"]
+        (r1, rho1), (r2, rho2) = r["at"]
         t_c = Contact(r["alpha"], r["gamma"], r["D1"], r["D2"], r["end"]).contact_time(1.0)
-        engine = liggghts_run.liggghts_eps_extrapolated(Pair.spheres(r1, r1, rho, rho), contact, [1.0], {1.0: t_c},
+        engine = liggghts_run.liggghts_eps_extrapolated(Pair.spheres(r1, r2, rho1, rho2), contact, [1.0], {1.0: t_c},
                                                         r["gamma"])
         print(r["at"], r["eps"][2], engine)
         assert abs(engine[1.0][0] / r["eps"][2] - 1) < 1e-5
