@@ -28,7 +28,7 @@ include: "workflow/rules/connection.smk" # c0-c2 three ways, eps(g) every way, t
 include: "workflow/rules/figures.smk"    # figures 1-4 (PDF + PNG)
 include: "workflow/rules/variants.smk"   # validation, cross-variant figure, generated sections
 include: "workflow/rules/prior_series.smk" # Schwager-Poeschel series, term by term
-include: "workflow/rules/closed_form.smk" # eps in closed form: the uniform form of every variant
+include: "workflow/rules/uniform.smk" # the uniform approximation of every variant (fitted, not a closed form)
 include: "workflow/rules/values.smk"     # every number the manuscript prints, as LaTeX macros
 include: "workflow/rules/stability.smk"  # appendix: the stability atlas at the extremes (issue 6)
 include: "workflow/rules/dem.smk"        # using the results in a DEM code: LAMMPS runs, calibration

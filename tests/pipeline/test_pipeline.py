@@ -284,7 +284,7 @@ def test_eps_every_way_and_its_error_table(built):
     assert tex.count(r"\\") - 2 == len(errors)
 
 
-def test_the_closed_form_section_prints_each_variants_form_and_bound(built):
+def test_the_uniform_section_prints_each_variants_form_and_bound(built):
     """Per variant, form.json holds the fitted form and bounds; eps_g.csv evaluates it on figure 4's
     speeds within its bound of the reference; the article's table prints every variant's bound."""
     import numpy as np
@@ -295,18 +295,20 @@ def test_the_closed_form_section_prints_each_variants_form_and_bound(built):
     # names it instead of reprinting it
     tex = (built / "results/paper/uniform_table.tex").read_text()
     for variant in ("kim", "hertz", "dashpot"):
-        form = json.loads((built / f"results/{variant}/closed_form/form.json").read_text())
+        form = json.loads((built / f"results/{variant}/uniform/form.json").read_text())
         assert form["available"] and len(form["a"]) == 12
         u = UniformForm.from_dict({k: v for k, v in form.items() if k not in ("available", "formula")
                                    and not k.startswith("printed")})
-        curve = read_csv(built / f"results/{variant}/closed_form/eps_g.csv")
-        assert np.array_equal(u.eps(curve["omega"].to_numpy()), curve["eps_closed_form"].to_numpy())
+        curve = read_csv(built / f"results/{variant}/uniform/eps_g.csv")
+        assert np.array_equal(u.eps(curve["omega"].to_numpy()), curve["eps_uniform"].to_numpy())
         inside = (curve["omega"] >= 1e-8) & (curve["omega"] <= 1e8)
-        err = np.abs(curve["eps_closed_form"] / curve["eps_reference"] - 1)[inside]
+        err = np.abs(curve["eps_uniform"] / curve["eps_reference"] - 1)[inside]
         assert err.max() <= form["bound_eps"] + 1e-9     # eps_reference: scipy at the pipeline's rtol
         assert f"{form['bound_eps']:.1e}".split("e")[0] in tex
-    section = (built / "results/paper/closed_form.tex").read_text()
-    assert r"\label{sec:closed-form}" in section and "closed_form_error.pdf" in section
+    section = (built / "results/paper/uniform_section.tex").read_text()
+    assert r"\label{sec:uniform}" in section and "uniform_error.pdf" in section
+    # the supplement refers to the article's formula and table instead of reprinting them (issue 53)
+    assert r"\label{eq:uniform}" not in section
 
 
 def test_the_claims_ledger_lists_every_claim_with_a_computed_value(built):

@@ -20,8 +20,9 @@ from pipeline_tree import ALL, FLAT, FLAT_CONFIG, copy_built  # noqa: E402
 from test_pipeline import (assert_one_config_error, PER_VARIANT, ROOT, VARIANT_NAMES, planned, read_csv,  # noqa: E402
                            rebuild, snakemake)
 
-#: Manuscript-level jobs: they gather every variant, so a new variant reruns them.
-GATHERING = {"compare_variants", "variants_tex", "closed_form_section", "manuscript", "supplement", ALL}
+#: Manuscript-level jobs: they gather every variant, so a new variant reruns them (uniform_atlas: its table's rows
+#: of the variants' exponent pairs refer to the article's table instead of repeating it; it only reads the shards).
+GATHERING = {"compare_variants", "variants_tex", "uniform_section", "uniform_atlas", "manuscript", "supplement", ALL}
 
 
 def jobs_by_variant(tree: Path, *args: str) -> dict[str, set]:

@@ -31,7 +31,7 @@ rule variant_section:
     input:
         values="results/{variant}/values/values.json",
         validation=rules.validation.output.json,
-        form="results/{variant}/closed_form/form.json",
+        form="results/{variant}/uniform/form.json",
         code=code("variant_section.py"),
     output:
         "results/{variant}/section.tex",

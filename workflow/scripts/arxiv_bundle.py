@@ -99,8 +99,8 @@ of the supplement is made by one script under workflow/scripts/, a step of the S
     fig3_phase.py
   readings of Kim's procedure and their errors in eps: connection_readings.py, eps_compare.py
   ledger of Kim's claims: claims.py
-  uniform approximation (both end rules), its error figure and table: closed_form_section.py (the name is
-    older than the text's wording: besides the closed-form limits it fits the uniform approximation)
+  uniform approximation (both end rules), its error figure and table: uniform_section.py (also the limits'
+    constants)
   eps against Omega for every force law, validation table: compare_variants.py, validation.py,
     variants_tex.py; the other force laws' sections: variant_section.py, with the main figures' scripts
   speed against accuracy (table and figure): bench_section.py, from one recorded run of `make bench`

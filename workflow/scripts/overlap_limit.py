@@ -133,6 +133,9 @@ macros = {
     "OverlapMainOmegaAtGMax": sci(om_max, 3), "OverlapMainRuleRatioAtGMax": sci(gmax_ratio, 3),
     "OverlapMainSpeedAtGMax": sci(eps(main["alpha"], main["gamma"], om_max, "overlap") * mat["g_max"], 4),
     "OverlapMainRatioAtTenth": sci(main[f"ratio_{TENTH:g}"], 3),
+    # where the law starts to hold (deviation OverlapDevTenth at TENTH) the rebound is already weak: the largest
+    # eps of the pairs there, under the overlap rule (the practical range of the law, issue 53)
+    "OverlapEpsAtTenthMax": sci(max(eps(r["alpha"], r["gamma"], TENTH, "overlap") for r in rows), 2),
 }
 write_text(out.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))
 

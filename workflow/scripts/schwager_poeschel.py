@@ -172,6 +172,15 @@ def tfrac(q):
 
 
 end_pade_dev = abs(pade[5] - limit.E)
+# the two end coefficients as the supplement derives them (two Picard steps of dV/dy = mu y^gamma - y^alpha / V
+# from V(0) = eps_overlap, evaluated at y_c = mu V, which needs alpha - gamma = 1): a second route to the library's
+# constants, which must agree exactly
+if alpha - gamma != 1:
+    raise SystemExit(f"the end-term derivation assumes alpha - gamma = 1, not {alpha - gamma}")
+derived = ((alpha - gamma) / ((gamma + 1) * (alpha + 1)),
+           1 / ((gamma + 1) * (alpha + gamma + 2)) - 1 / (2 * (alpha + 1) ** 2))
+if tuple(derived) != tuple(END_COEFFICIENTS):
+    raise SystemExit(f"end coefficients: derived {derived}, library {END_COEFFICIENTS}")
 macros = {
     "SPKmax": str(KMAX),
     "SPAlpha": frac_tex(alpha),
@@ -185,6 +194,9 @@ macros = {
     "SPSecondEndIndex": str(int(4 * end_power)),
     "SPEndCoef": tfrac(END_COEFFICIENTS[0]),
     "SPEndCoefTwo": tfrac(END_COEFFICIENTS[1]),
+    # the two parts of the second coefficient, as the supplement's derivation sums them
+    "SPEndTwoFirst": tfrac(1 / ((gamma + 1) * (alpha + gamma + 2))),
+    "SPEndTwoSecond": tfrac(1 / (2 * (alpha + 1) ** 2)),
     "SPTruncOmega": sci(TRUNC_OMEGA, 2),
     "SPFirstOmega": sci(p.omegas[0], 2),
     "SPCheckOrder": str(CHECK_ORDER),

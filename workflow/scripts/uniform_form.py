@@ -1,5 +1,5 @@
 # %% [markdown]
-# # The uniform closed form of one variant
+# # The uniform approximation of one variant
 #
 # Fits eps(Omega) in the forms of `restitution.core.uniform`, one per end rule (the library chooses
 # the shape and measures the bound on points it was not fitted on), then evaluates them where the
@@ -50,10 +50,10 @@ form = form_and_errors("force", snakemake.output.json, snakemake.output.errors, 
 # (the build's references there are the limit law, checked against the integrator above it)
 form_and_errors("overlap", snakemake.output.overlap_json, snakemake.output.overlap_errors, LAW_BELOW)
 if form is None:
-    write_csv(snakemake.output.curve, pd.DataFrame(columns=["g", "omega", "eps_reference", "eps_closed_form"]))
+    write_csv(snakemake.output.curve, pd.DataFrame(columns=["g", "omega", "eps_reference", "eps_uniform"]))
 else:
     curve = pd.read_csv(snakemake.input.curve)
     cols = ["g", "omega", "eps_reference"] + (["eps_printed"] if "eps_printed" in curve else [])
     out = curve[cols].copy()
-    out["eps_closed_form"] = form.eps(curve["omega"].to_numpy())
+    out["eps_uniform"] = form.eps(curve["omega"].to_numpy())
     write_csv(snakemake.output.curve, out)

@@ -1,9 +1,10 @@
 # %% [markdown]
-# # The coefficient of restitution in closed form: the manuscript's section
+# # The uniform approximation: the article's macros and tables, the supplement's section
 #
-# Reads the uniform forms of every variant (uniform_form.py) and writes the section text with the
-# limits of the main variant (restitution.core.asymptotics), the form's numbers and error estimates of every
-# variant, and two figures: eps(g) of the main variant from the closed form over the reference and
+# Reads the uniform forms of every variant (uniform_form.py) and writes the supplement's section (the limits'
+# constants of the main variant from restitution.core.asymptotics, how the form is fitted, the overlap rule's
+# form), the macros and tables the article prints, and two figures: eps(g) of the main variant from the
+# uniform approximation over the reference and
 # the paper's printed relation, and the form's relative error in eps and 1 - eps for every variant.
 
 # %%
@@ -54,7 +55,7 @@ plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.l
 # the text width, the legend inside in the empty band between the approximation's error (below 1e-4) and the
 # laws' (above 1e-2)
 fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 2.7))
-ax.loglog(curve["g"], np.maximum(rel(curve["eps_closed_form"].to_numpy()), 1e-17), color="tab:orange", lw=2.0,
+ax.loglog(curve["g"], np.maximum(rel(curve["eps_uniform"].to_numpy()), 1e-17), color="tab:orange", lw=2.0,
           label="uniform approximation")
 rel_loss = lambda x: np.abs((1.0 - x) / (1.0 - ref) - 1.0)  # noqa: E731  (the elastic law is one for 1 - eps)
 ax.loglog(curve["g"], rel_loss(law_elastic), color="tab:green", ls="--", lw=1.5,
@@ -155,21 +156,20 @@ if w == 0:
              r"impact speed.")
 else:
     slow, fast = ("elastic", "viscous") if w < 0 else ("viscous", "elastic")
-    units = (rf"In physical units $\Omega = D_1 D_2^{{-(\alpha+1)/(\gamma+1)}} g^{{\varpi}}$ with $\varpi = {frac(w)}$, so for "
-             rf"Kim's material ($D_1 = {sci(mat['D1'], 4)}$, $D_2 = {sci(mat['D2'], 4)}$) slow impacts are {slow} and "
-             rf"fast ones {fast}: in the elastic limit $1 - \varepsilon \approx {sci(E.C1 * scale ** (-float(A_)), 5)}\,"
-             rf"g^{{{frac(-w * A_)}}}$, in the viscous limit $\varepsilon \approx {sci(V.k * scale, 5)}\,g^{{{frac(w)}}}$. "
+    # the prefactors of the two laws are the article's (CFViscousPrefactor, CFElasticPrefactor): here only what
+    # it leaves out, the exponents' comparison with Brilliantov et al. and the laws' errors over Kim's speeds
+    units = (rf"\paragraph{{The leading laws in physical units.}} With $\Omega \propto g^{{\varpi}}$, $\varpi = {frac(w)}$, "
+             rf"slow impacts of Kim's material are {slow} and fast ones {fast}. "
              rf"The same rule for Hertz contact with Kuwabara--Kono damping ($\alpha = {frac(HERTZ[0])}$, "
              rf"$\gamma = {frac(HERTZ[1])}$) gives the $1 - \varepsilon \propto g^{{{frac(elastic_power(*HERTZ))}}}$ of "
-             rf"Brilliantov et al.~\cite{{brilliantov1996}}; for this force law the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
+             rf"Brilliantov et al.~\cite{{brilliantov1996}}; for Kim's exponents the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
              rf"fast impacts give $\varepsilon \propto g^{{{frac(w)}}}$, a regime that law, an expansion about "
              rf"elastic impacts, does not describe. Both laws are leading order only. At the slowest impact of "
              rf"\FigEps{{}} ($g = {sci(float(curve['g'].iloc[0]), 2)}$) the elastic law is off by "
              rf"{sci(100 * err_elastic_gmin, 2)}\,\% in $1 - \varepsilon$; at the fastest "
              rf"($g = {sci(float(curve['g'].iloc[-1]), 2)}$) the viscous law is off by {sci(100 * err_viscous_gmax, 2)}\,\% "
              rf"in $\varepsilon$. " + LAW_RANGE[(g_el is not None, g_vi is not None)]
-             + r" Everywhere in between, and for a result with a measured error anywhere, use the uniform "
-               r"approximation~(\ref{eq:uniform}) below (\FigUniformEps).")
+             + r" Everywhere in between the article's uniform approximation holds (\FigUniformEps).")
 
 
 # the viscous expansion against the reference integrator (printed beside it)
@@ -350,77 +350,43 @@ overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\ka
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
-\section{{Both limits and the uniform approximation}}
-\label{{sec:closed-form}}
+\section{{Both limits and the uniform approximation: numbers and fit}}
+\label{{sec:uniform}}
 
-The paper set out to give $\varepsilon$ analytically in the viscous-dominant regime. Its relation
-does not hold (Sec.~\ref{{sec:ledger}}), but the two limits can be derived by matched asymptotics, with every constant in closed form; the remainders' orders are those of the first omitted terms, not proven bounds (the derivations are in the
-article's appendix), and a uniform approximation with fitted coefficients joins them. The numbers below are
-for Kim's force law
-($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).
+The article's section on both limits states the viscous and elastic limits, the end-rule term and the uniform
+approximation, and its appendix derives them; Kim's relation does not hold (Sec.~\ref{{sec:ledger}}). This section
+adds what the article leaves out: the constants to ten digits, the leading laws in physical units with their errors,
+how the coefficients are fitted, the error over $\Omega$ (Fig.~\ref{{fig:uniform-error}}) and the overlap rule's form.
 
-\paragraph{{Viscous limit ($\Omega \to 0$, $\alpha > \gamma$).}}
-With $\ell = \gamma + 1$, $X = \ell^{{1/\ell}}$, $\lambda = X^\gamma$, $r = (\alpha-\gamma)/\ell$ and $\psi$ the digamma function,
-\begin{{equation*}}
-\varepsilon = k\,\Omega\left[1 - \Omega\left(c_{{\log}} \ln\frac{{1}}{{\Omega}} + c_{{\mathrm{{v}}}}\right)\right] + O(\Omega^3 \ln^2 \Omega),
-\end{{equation*}}
-where $k = X^{{\alpha-\gamma}}$, $c_{{\log}} = 2rk$, $c_{{\mathrm{{v}}}} = r\,(kL - K_0 - k)$, $K_0 = X^{{\alpha+1}}[\psi((\alpha+1)/\ell) - \psi(1/\ell)]/\ell$ and
-$L = \ln(\lambda \mathcal{{M}}/((\alpha-\gamma) X^{{2\alpha-3\gamma-1}}))$ with $\ln \mathcal{{M}} = \ln X - \gamma_E - \psi(1/\ell) - \ln \ell$,
-so every constant is in closed form. (The subscript of $c_{{\mathrm{{v}}}}$ keeps it apart from Kim's $c_0$ of
-Sec.~\ref{{sec:connection}}, an unrelated number.) Here $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
-$c_{{\mathrm{{v}}}} = {sci(V.c_const, 10)}$, and contact lasts $\tau_c = (2\ln(1/\Omega) + L)/\lambda$ with
-$L = {sci(V.L, 10)}$, $\lambda = {sci(V.lam, 10)}$. Checked against the reference integrator at
-$\Omega = {sci(CHECK_OMEGA, 1)}$: the leading term alone is off by {sci(check_lead, 2)} (relative), with the
-first correction by {sci(check_first, 2)}, the size expected of the omitted term: $O(\Omega^3 \ln^2 \Omega)$ in
-$\varepsilon$ is a relative $O(\Omega^2 \ln^2 \Omega)$.
-
-\paragraph{{Elastic limit ($\Omega \to \infty$).}}
-With $\nu = (\gamma+1)/(\alpha+1)$ and $\mu = \Omega^{{-\nu}}$,
-$1 - \varepsilon_{{\mathrm{{overlap}}}} = C_1 \mu - C_2 \mu^2 + O(\mu^3)$ with
-$C_1 = ((\alpha+1)/2)^{{\nu-1}} \mathrm{{B}}(\nu, 3/2)$ and $C_2 = \nu C_1^2$; here $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$. Contact ends where the
-force vanishes, before the deformation is back to zero, and the two end rules differ by
-$\varepsilon_{{\mathrm{{force}}}} - \varepsilon_{{\mathrm{{overlap}}}} = \beta\,\mu^{{q}}\,(1 + O(\mu))$, $q = 1 + (\gamma+1)/(\alpha-\gamma)$,
-$\beta = (\alpha-\gamma)/((\gamma+1)(\alpha+1))$; here $q = {frac(end_power)}$ and $\beta = {frac(end_coef)}$, {end_clause}.
-Contact lasts $\tau_c = \theta_c\,\Omega^{{-1/(\alpha+1)}}$ with $\theta_c = {sci(E.T0, 10)}$, its duration in the elastic time $\theta = \Omega^{{1/(\alpha+1)}}\tau$ of the article's appendix.
+\paragraph{{Constants for Kim's exponents ($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).}}
+In the article's notation, viscous limit: $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
+$c_{{\mathrm{{v}}}} = {sci(V.c_const, 10)}$ (the subscript keeps it apart from Kim's unrelated $c_0$ of
+Sec.~\ref{{sec:connection}}), and contact lasts $\tau_c = (2\ln(1/\Omega) + L)/\lambda$ with $L = {sci(V.L, 10)}$,
+$\lambda = X^\gamma = {sci(V.lam, 10)}$. Elastic limit: $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$, end-rule term
+$\beta\mu^q$ with $q = {frac(end_power)}$ and $\beta = {frac(end_coef)}$, {end_clause}; contact lasts
+$\tau_c = \theta_c\,\Omega^{{-1/(\alpha+1)}}$ with $\theta_c = {sci(E.T0, 10)}$, its duration in the elastic time
+$\theta = \Omega^{{1/(\alpha+1)}}\tau$ of the article's appendix.
 
 {units}
 
-\paragraph{{A uniform approximation for every $\Omega$.}}
-With $z = b\,\Omega$, $u = \tanh(\tfrac{{\sigma}}{{2}} \ln z)$ and $\zeta = 1/\varepsilon$,
-\begin{{equation}}
-\zeta - 1 = \frac{{1}}{{k}}\left[\frac{{b\,(1+z)^{{1-\nu}}}}{{z}} + \frac{{c_{{\log}} \ln(1 + 1/z) + c_{{\mathrm{{b}}}}}}{{(1+z)^2}}\right]
- + (1+u)^{{s_0}} (1-u)^{{s_1}} \sum_{{j=0}}^{{N}} a_j u^j ,
-\label{{eq:uniform}}
-\end{{equation}}
-with $b = (k C_1)^{{1/(1-\nu)}}$ and $c_{{\mathrm{{b}}}} = c_{{\mathrm{{v}}}} + c_{{\log}} \ln b - (1-\nu)\,b - k$. The bracket alone has
-the exact leading and first-order terms at the viscous end, and the sum, vanishing like $\Omega^{{\sigma s_0}}$,
-cannot change them. At the elastic end the bracket has only the leading term $C_1\mu$: the $\mu^2$ term of
-$\zeta - 1$, $(C_1^2 - C_2)\mu^2$, is left to the fitted sum, which vanishes like $\Omega^{{-\sigma s_1}}$ with
-$\sigma s_1 = {sci(sigma_m1, 3)}$ here, more slowly than $\mu^2 = \Omega^{{-{sci(2 * float(A_), 3)}}}$. So the formula is exact to
-first order at the viscous end but only to leading order at the elastic end: at $\Omega = {sci(ELASTIC_CHECK, 1)}$ its relative error in $1 - \varepsilon$ is
-{sci(form_loss_err, 2)}, against {sci(c2_rel, 2)} for the whole $C_2$ term. The error estimates below, measured over
-$10^{{-8}} \leq \Omega \leq 10^{{8}}$, are not affected. Its {len(main['a'])} coefficients ($N = {len(main['a']) - 1}$; more, in steps of {DEGREE_STEP}, only
-where the error on the model-selection points below stays above {sci(SELECTION_TARGET, 1)}) are fitted to
-integrations at relative tolerance $\CFFitRtol$ on every other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade),
-the shape $(\sigma, s_0, s_1)$ is chosen by the error on the points in between, and the empirical error estimate stated is twice the
-largest relative error on those model-selection points, on {main['measured']['n_test']} test points drawn at random in
-$[10^{{-8}}, 10^{{8}}]$, where $\varepsilon$ and $1 - \varepsilon$ come from independent integrations in the variables of Sec.~\ref{{sec:reference}},
-and on a dense scan of {main['measured']['n_dense']} log-spaced points between the grid points (the integrator at $\CFFitRtol$), plus their accuracy
-(\TabUniform; Fig.~\ref{{fig:uniform-error}}). The dense scan, four times finer than the model-selection points, raises their
-maximum by a factor of at most {dense_ratio:.3f} over the laws of \TabUniform; the factor two is a margin for the points in between, not a proven bound:
-a maximum over finitely many points, not the supremum over $\Omega$. A force law with $\alpha \leq \gamma$ has no such form:
-for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$ the first viscous correction
-is not known. The article's figure of the error of $\varepsilon(g)$ shows the relative error in $\varepsilon(g)$ for Kim's force law from
-the formula, from the two leading-order laws and from the paper's relation. The numbers of \TabUniform, typed as printed, change
-$\varepsilon$ by at most {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative.
-Table~\ref{{tab:uniform-atlas}} in the appendix gives the form's error estimates for every exponent pair of the
-stability atlas.
+\paragraph{{How the uniform approximation is fitted.}}
+Its {len(main['a'])} coefficients (more, in steps of {DEGREE_STEP}, only where the error on the model-selection
+points stays above {sci(SELECTION_TARGET, 1)}) are fitted to integrations at relative tolerance $\CFFitRtol$ on every
+other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per decade); the points in between choose the
+shape $(\sigma, s_0, s_1)$. On the {main['measured']['n_test']} random test points, $\varepsilon$ and $1 - \varepsilon$
+come from independent integrations in the variables of Sec.~\ref{{sec:reference}}; the dense scan uses the integrator at
+$\CFFitRtol$. The article gives the resulting errors and the error estimate; Fig.~\ref{{fig:uniform-error}} shows the
+error over the whole range. The numbers of \TabUniform, typed as printed, change $\varepsilon$ by at most
+{sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative. A force law with
+$\alpha \leq \gamma$ has no such form: for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$
+the first viscous correction is not known. Table~\ref{{tab:uniform-atlas}} in the appendix gives the form for every
+exponent pair of the stability atlas.
 
 \begin{{figure}}[htbp]
 \centering
-\includegraphics[width=\linewidth]{{results/paper/closed_form_error.pdf}}
+\includegraphics[width=\linewidth]{{results/paper/uniform_error.pdf}}
 \caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (solid) and in
-$1 - \varepsilon$ (dashed), for every force law that has one: Eq.~(\ref{{eq:uniform}}) for the force rule (top),
+$1 - \varepsilon$ (dashed), for every force law that has one: the article's uniform approximation for the force rule (top),
 Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = {sci(LAW_BELOW, 1)}$ up); one column per force law; dotted and dash-dotted lines: the empirical error estimates in $\varepsilon$ and in $1 - \varepsilon$ (twice the largest error measured on the model-selection, test and dense-scan points, plus the reference's accuracy; the two nearly coincide).}}
 \label{{fig:uniform-error}}
 \end{{figure}}
@@ -431,7 +397,7 @@ impacts follow the creep law $\varepsilon = C\,\Omega^{{\kappa}}$, $\kappa = (\g
 up to a correction that vanishes like $\exp(-Q/\Omega)$, and slow ones the same elastic limit as above. For
 $\gamma < \alpha < 2\gamma + 1$ (where the bodies cannot stick) one formula joins the two, with $\bar z = \bar b\,\Omega$,
 $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P} of $\bar z$ below fixed (bars mark the constants of this form, which differ from those of
-Eq.~(\ref{{eq:uniform}})):
+the article's uniform approximation):
 \begin{{equation}}
 \frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Lambda \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
 \exp\!\Big[\exp(-\rho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
@@ -440,7 +406,7 @@ Eq.~(\ref{{eq:uniform}})):
 with $\bar b = (C C_1)^{{1/(\kappa - \nu)}}$ and $\Lambda = \bar b^{{\kappa}}/C$, so that
 $\varepsilon \to C\,\Omega^{{\kappa}}$ and $1 - \varepsilon \to C_1 \Omega^{{-\nu}}$ exactly, and $\varepsilon > 0$
 for any coefficients. The envelope $\exp(-\rho/\bar z)$ vanishes like the true correction; the shape $(\bar\sigma, \rho, \bar s_1)$ and the
-degree are chosen as for Eq.~(\ref{{eq:uniform}}), the coefficients fitted with a small penalty on their size (without
+degree are chosen as for the force rule's form, the coefficients fitted with a small penalty on their size (without
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = {sci(LAW_BELOW, 1)}$ each integration of the creeping return takes about a second, and there the
 references are the creep law itself, checked against the integrator above it; the error estimate adds that difference and
