@@ -228,6 +228,23 @@ run 1
         assert f"restitution deck: {word} (line" in err
 
 
+def test_a_deck_in_latin1_is_made_safe_and_audited(tmp_path):
+    """Field test r7: a deck whose comment holds a Latin-1 byte (saved by another editor) was passed
+    over when the copy was made safe, as if it were not a script: its pair_style went unseen ("the
+    deck has no pair_style") and its shell lines would have been left in place. LAMMPS runs it."""
+    target = tmp_path / "TOUCHED"
+    text = ("# r\xe9glages du contact\n" + HEAD + f"pair_coeff * * hooke 1000 1 {T}  # \xe9crit\n"
+            f"shell touch {target}\nrun 1\n").encode("latin-1")
+    path = tmp_path / "in.deck"
+    path.write_bytes(text)
+    status, out, err = run_cli(["deck", str(path), "--g", "1.0", "--json"])
+    assert status == 0, err
+    assert not target.exists() and "restitution deck: shell (line" in err
+    got = {tuple(p["types"]): p for p in json.loads(out)["pairs"]}
+    assert got[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
+    assert path.read_bytes() == text
+
+
 def test_an_output_fix_is_not_executed_and_is_named(tmp_path):
     """Field test: fix print, fix ave/time and fix balance with an output file were made no-ops (a
     fix of the same ID that does nothing) but, unlike the commands made no-ops, never named on
