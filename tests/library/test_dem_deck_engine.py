@@ -245,6 +245,25 @@ def test_a_deck_in_latin1_is_made_safe_and_audited(tmp_path):
     assert path.read_bytes() == text
 
 
+@pytest.mark.parametrize("style, coeff", [("granular", f"hooke 1000 0 {T}"),
+                                          ("granular", f"hertz/material 1e8 0.0 0.3 damping viscoelastic {T}"),
+                                          ("gran/hooke 1000 NULL 0.0 NULL 0.5 0", "")],
+                         ids=["hooke velocity 0", "viscoelastic 0", "gran/hooke gamma_n 0"])
+def test_an_undamped_contact_is_elastic_not_refused(tmp_path, style, coeff):
+    """Field test r7: an elastic reference run (normal damping 0) was refused ('eta_n0 = 0.0: must
+    be a finite number > 0'), with one such pair the whole deck. LAMMPS runs it; nothing damps."""
+    text = HEAD.replace("pair_style granular", f"pair_style {style}") + f"pair_coeff * * {coeff}\nrun 1\n"
+    p = pairs(tmp_path, text)
+    assert p[(1, 2)]["eps"][2] == 1.0
+    pair = Pair.spheres(0.01, 0.01, 2500.0)
+    t_c = 3.2 * math.sqrt(pair.m / 1000.0) if "hooke" in (style + coeff) else 1e-4
+    if "hooke" in (style + coeff):
+        line = f"pair_coeff * * {coeff}" if coeff else "pair_coeff * *"
+        # LAMMPS' velocity Verlet: 1 + 6.7e-6 at t_c/400, falling as dt^2 towards the audit's 1
+        coarse, fine = (lammps_run.lammps_eps(pair, line, 1.0, t_c / n, 1.5 * t_c, style=style) for n in (400, 1600))
+        assert abs(fine - 1.0) <= 1e-6 and abs(fine - 1.0) <= abs(coarse - 1.0) / 8, (coarse, fine)
+
+
 def test_an_output_fix_is_not_executed_and_is_named(tmp_path):
     """Field test: fix print, fix ave/time and fix balance with an output file were made no-ops (a
     fix of the same ID that does nothing) but, unlike the commands made no-ops, never named on
