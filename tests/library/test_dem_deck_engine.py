@@ -264,6 +264,36 @@ def test_an_undamped_contact_is_elastic_not_refused(tmp_path, style, coeff):
         assert abs(fine - 1.0) <= 1e-6 and abs(fine - 1.0) <= abs(coarse - 1.0) / 8, (coarse, fine)
 
 
+DATA_ONE_TYPE = """one sphere
+
+1 atoms
+1 atom types
+-1 1 xlo xhi
+-1 1 ylo yhi
+-1 1 zlo zhi
+
+Atoms # sphere
+
+1 1 0.02 2500 0 0 0
+"""
+
+
+def test_read_data_with_room_for_more_types_is_audited(tmp_path):
+    """Field test r7: ``read_data FILE extra/atom/types 1`` (room for a type created later) was
+    refused as if it shifted types; LAMMPS keeps the file's types and makes room for type 2."""
+    text = BOX.replace("region box block -1 1 -1 1 -1 1\n", "") + f"""read_data data.one extra/atom/types 1
+create_atoms 2 single 0.5 0 0
+set type 2 diameter 0.01 density 3000
+fix integrate all nve/sphere
+pair_style granular
+pair_coeff * * hooke 1000 1 {T}
+run 1
+"""
+    p = pairs(tmp_path, text, files={"data.one": DATA_ONE_TYPE})
+    assert p[(1, 2)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0, r2=0.005, rho2=3000.0), rel=1e-10)
+    assert p[(2, 2)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0, 0.005, 0.005, 3000.0, 3000.0), rel=1e-10)
+
+
 def test_an_output_fix_is_not_executed_and_is_named(tmp_path):
     """Field test: fix print, fix ave/time and fix balance with an output file were made no-ops (a
     fix of the same ID that does nothing) but, unlike the commands made no-ops, never named on

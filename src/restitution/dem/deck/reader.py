@@ -774,11 +774,17 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
     """read_data FILE [nocoeff] [group ID]: the number of types, each type's radius and density
     where all its atoms share them (where no engine holds them), and a data file's Pair Coeffs /
     PairIJ Coeffs."""
-    name, opts, coeffs = words[1], words[2:], True
+    name, opts, coeffs, extra = words[1], words[2:], True, 0
     k = 0
     while k < len(opts):
         if opts[k] == "nocoeff":
             coeffs, k = False, k + 1
+        elif opts[k] == "extra/atom/types" and k + 1 < len(opts):
+            # room for types the deck creates later: the file's types keep their numbers
+            more = 0 if opts[k + 1] == "0" else atom_type(opts[k + 1], where, line, "extra/atom/types")
+            extra, k = extra + more, k + 2
+        elif opts[k].startswith("extra/") and k + 1 < len(opts):
+            k += 2                             # room for bonds, angles, special neighbours: no contact
         elif opts[k] == "group" and k + 1 < len(opts):
             deck.filled_groups.setdefault(opts[k + 1], []).append((f"read_data {name} adds", None))
             k += 2
@@ -831,6 +837,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             rest = cols[1:] if section == "Pair Coeffs" else cols[2:]
             _pair_coeff(deck, unlabeled(deck, ["pair_coeff", i, j, *rest], here, body), here, body, (name, n))
     deck.present |= set(per_type)
+    deck.ntypes += extra
     for t in range(1, deck.ntypes + 1 if deck.held is None else 1):
         if t not in per_type:
             deck.missing[t] = f"{name} has no atom of type {t}"
