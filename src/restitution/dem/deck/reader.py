@@ -1011,14 +1011,29 @@ def _poured(deck: Deck, fix: str, t: int, diameters: set, densities: set, poly: 
     pour_into(deck, t, sizes)
 
 
-def _template(words: list, where: str, line: str, read_file) -> tuple | str:
-    """molecule ID FILE: the one sphere of its template as (its type, radius, density), or why a
-    pour of it is not audited. LAMMPS gives a template atom the Diameters and Masses sections' values;
-    without Masses, density 1 (22 Jul 2025: a poured template atom of diameter 0.3 has mass
-    pi/6 * 0.3**3); without Diameters it stops at the pour's run (measured)."""
-    if len(words) != 3:
-        return f"molecule {words[1]} has several files or keywords (offset, scale, ...), which the reader does not map"
-    text = fetch(read_file, words[2], where, line)
+#: molecule command keywords: any of them shifts the template's types or scales its sizes
+_MOLECULE_KEYWORDS = frozenset({"offset", "toff", "boff", "aoff", "doff", "ioff", "scale"})
+
+
+def _template(words: list, where: str, line: str, read_file) -> list | str:
+    """molecule ID FILE [FILE ...]: the one sphere of each template as (its type, radius, density),
+    or why a pour of them is not audited. LAMMPS gives a template atom the Diameters and Masses
+    sections' values; without Masses, density 1 (22 Jul 2025: a poured template atom of diameter 0.3
+    has mass pi/6 * 0.3**3); without Diameters it stops at the pour's run (measured). A set of
+    several files is poured by molfrac, each template's sphere as its own."""
+    if len(words) < 3 or _MOLECULE_KEYWORDS & set(words[3:]):
+        return f"molecule {words[1]} has keywords (offset, scale, ...) that the reader does not map"
+    spheres = []
+    for name in words[2:]:
+        one = _one_sphere(words[1], fetch(read_file, name, where, line))
+        if isinstance(one, str):
+            return one
+        spheres.append(one)
+    return spheres
+
+
+def _one_sphere(mol: str, text: str) -> tuple | str:
+    """(type, radius, density) of a molecule file's one atom, or why it is not one sphere."""
     counts, sections, current = {}, {}, None
     for n, raw in enumerate(text.splitlines()):
         body = raw.partition("#")[0].split()
@@ -1032,26 +1047,26 @@ def _template(words: list, where: str, line: str, read_file) -> tuple | str:
         elif current is not None:
             sections[current].append(body)
     if counts.get("atoms") != 1:
-        return (f"molecule {words[1]} holds {counts.get('atoms', 'no')} atoms: a pour of it inserts clumps of "
+        return (f"molecule {mol} holds {counts.get('atoms', 'no')} atoms: a pour of it inserts clumps of "
                 "spheres (rigid or bonded), and the reader audits the head-on contact of two single spheres only")
     if "Diameters" not in sections:
-        return f"molecule {words[1]} has no Diameters section: LAMMPS stops when it pours it"
+        return f"molecule {mol} has no Diameters section: LAMMPS stops when it pours it"
     try:
         kind = int(sections["Types"][0][1]) if "Types" in sections else None
         radius = 0.5 * float(sections["Diameters"][0][1])
         volume = 4.0 / 3.0 * math.pi * radius ** 3
         density = float(sections["Masses"][0][1]) / volume if "Masses" in sections else 1.0
     except (IndexError, ValueError, ZeroDivisionError):
-        return f"molecule {words[1]}'s Types, Diameters or Masses section does not read as one atom's numbers"
+        return f"molecule {mol}'s Types, Diameters or Masses section does not read as one atom's numbers"
     if kind is None:
-        return f"molecule {words[1]} has no Types section"
+        return f"molecule {mol} has no Types section"
     return (kind, radius, density)
 
 
 def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
-    """fix ID group pour N offset seed ... mol TEMPLATE: a template of one sphere pours spheres of its
-    size (diam and dens are ignored; LAMMPS measured) of type offset + its type; anything else is
-    refused."""
+    """fix ID group pour N offset seed ... mol TEMPLATE: each one-sphere template of the set pours
+    spheres of its size (diam and dens are ignored; LAMMPS measured) of type offset + its type;
+    anything else is refused."""
     tokens = words[7:]
     k = tokens.index("mol")
     made = deck.templates.get(tokens[k + 1]) if k + 1 < len(tokens) else None
@@ -1061,14 +1076,21 @@ def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
         made = "fix pour ... mol names no molecule template the deck defined"
     if isinstance(made, str):
         raise DeckError(where, line, made)
-    kind, radius, density = made
-    t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
-    deck.sizes.pop(t, None)
-    if deck.held is not None:
-        deck.pours[(words[1], t)] = (t, {(radius, density)})
-        pour_into(deck, t, {(radius, density)})
-    else:
-        deck.radius[t], deck.density[t] = radius, density
+    poured: dict = {}
+    for kind, radius, density in made:
+        t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
+        poured.setdefault(t, set()).add((radius, density))
+    for t, sizes in poured.items():
+        deck.sizes.pop(t, None)
+        if deck.held is not None:
+            deck.pours[(words[1], t)] = (t, sizes)
+            pour_into(deck, t, sizes)
+        elif len(sizes) == 1:
+            deck.radius[t], deck.density[t] = next(iter(sizes))
+        else:                          # the hand reader's decks: no range audited
+            deck.radius.pop(t, None)
+            deck.density.pop(t, None)
+            deck.missing[t] = f"fix {words[1]} pours {len(sizes)} templates' sizes into type {t}"
 
 
 #: Sizes sampled across a pour's range of diameters, its ends included: a law whose eps is not
