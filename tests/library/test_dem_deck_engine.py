@@ -304,13 +304,15 @@ fix p all print 1 "x" file printed.txt
 fix a all ave/time 1 1 1 c_ke file averaged.txt
 fix b all balance 1 1.1 shift x 5 1.1 out balanced.txt
 unfix b
+fix ph all phonon 1 1 0 map.in {tmp_path / "phonon_out"}
 run 1
 """
     before = set(tmp_path.iterdir())
     status, out, err = deck(tmp_path, text)
     assert status == 0, err
     assert set(tmp_path.iterdir()) == before | {tmp_path / "in.deck"}
-    for word, line in (("fix print", 14), ("fix ave/time", 15), ("fix balance", 16)):
+    # field test r7: fix phonon (its log to a path of the deck's choosing) ran in the engine's pass
+    for word, line in (("fix print", 14), ("fix ave/time", 15), ("fix balance", 16), ("fix phonon", 18)):
         assert f"restitution deck: {word} (line {line} and any like it): not executed" in err, err
 
 

@@ -46,7 +46,7 @@ SKIPPED_COMMANDS = frozenset({
 #: nothing, so unfix and fix_modify still find it
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
                          "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
-                         "couple/", "ave/euler", "dump")
+                         "couple/", "ave/euler", "dump", "phonon", "saed/vtk")
 #: The tag of the audit's own lines (its markers'): never the deck's
 AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
