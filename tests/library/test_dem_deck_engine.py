@@ -228,6 +228,72 @@ run 1
         assert f"restitution deck: {word} (line" in err
 
 
+def test_a_deck_in_latin1_is_made_safe_and_audited(tmp_path):
+    """Field test r7: a deck whose comment holds a Latin-1 byte (saved by another editor) was passed
+    over when the copy was made safe, as if it were not a script: its pair_style went unseen ("the
+    deck has no pair_style") and its shell lines would have been left in place. LAMMPS runs it."""
+    target = tmp_path / "TOUCHED"
+    text = ("# r\xe9glages du contact\n" + HEAD + f"pair_coeff * * hooke 1000 1 {T}  # \xe9crit\n"
+            f"shell touch {target}\nrun 1\n").encode("latin-1")
+    path = tmp_path / "in.deck"
+    path.write_bytes(text)
+    status, out, err = run_cli(["deck", str(path), "--g", "1.0", "--json"])
+    assert status == 0, err
+    assert not target.exists() and "restitution deck: shell (line" in err
+    got = {tuple(p["types"]): p for p in json.loads(out)["pairs"]}
+    assert got[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
+    assert path.read_bytes() == text
+
+
+@pytest.mark.parametrize("style, coeff", [("granular", f"hooke 1000 0 {T}"),
+                                          ("granular", f"hertz/material 1e8 0.0 0.3 damping viscoelastic {T}"),
+                                          ("gran/hooke 1000 NULL 0.0 NULL 0.5 0", "")],
+                         ids=["hooke velocity 0", "viscoelastic 0", "gran/hooke gamma_n 0"])
+def test_an_undamped_contact_is_elastic_not_refused(tmp_path, style, coeff):
+    """Field test r7: an elastic reference run (normal damping 0) was refused ('eta_n0 = 0.0: must
+    be a finite number > 0'), with one such pair the whole deck. LAMMPS runs it; nothing damps."""
+    text = HEAD.replace("pair_style granular", f"pair_style {style}") + f"pair_coeff * * {coeff}\nrun 1\n"
+    p = pairs(tmp_path, text)
+    assert p[(1, 2)]["eps"][2] == 1.0
+    pair = Pair.spheres(0.01, 0.01, 2500.0)
+    t_c = 3.2 * math.sqrt(pair.m / 1000.0) if "hooke" in (style + coeff) else 1e-4
+    if "hooke" in (style + coeff):
+        line = f"pair_coeff * * {coeff}" if coeff else "pair_coeff * *"
+        # LAMMPS' velocity Verlet: 1 + 6.7e-6 at t_c/400, falling as dt^2 towards the audit's 1
+        coarse, fine = (lammps_run.lammps_eps(pair, line, 1.0, t_c / n, 1.5 * t_c, style=style) for n in (400, 1600))
+        assert abs(fine - 1.0) <= 1e-6 and abs(fine - 1.0) <= abs(coarse - 1.0) / 8, (coarse, fine)
+
+
+DATA_ONE_TYPE = """one sphere
+
+1 atoms
+1 atom types
+-1 1 xlo xhi
+-1 1 ylo yhi
+-1 1 zlo zhi
+
+Atoms # sphere
+
+1 1 0.02 2500 0 0 0
+"""
+
+
+def test_read_data_with_room_for_more_types_is_audited(tmp_path):
+    """Field test r7: ``read_data FILE extra/atom/types 1`` (room for a type created later) was
+    refused as if it shifted types; LAMMPS keeps the file's types and makes room for type 2."""
+    text = BOX.replace("region box block -1 1 -1 1 -1 1\n", "") + f"""read_data data.one extra/atom/types 1
+create_atoms 2 single 0.5 0 0
+set type 2 diameter 0.01 density 3000
+fix integrate all nve/sphere
+pair_style granular
+pair_coeff * * hooke 1000 1 {T}
+run 1
+"""
+    p = pairs(tmp_path, text, files={"data.one": DATA_ONE_TYPE})
+    assert p[(1, 2)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0, r2=0.005, rho2=3000.0), rel=1e-10)
+    assert p[(2, 2)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0, 0.005, 0.005, 3000.0, 3000.0), rel=1e-10)
+
+
 def test_an_output_fix_is_not_executed_and_is_named(tmp_path):
     """Field test: fix print, fix ave/time and fix balance with an output file were made no-ops (a
     fix of the same ID that does nothing) but, unlike the commands made no-ops, never named on
@@ -238,13 +304,15 @@ fix p all print 1 "x" file printed.txt
 fix a all ave/time 1 1 1 c_ke file averaged.txt
 fix b all balance 1 1.1 shift x 5 1.1 out balanced.txt
 unfix b
+fix ph all phonon 1 1 0 map.in {tmp_path / "phonon_out"}
 run 1
 """
     before = set(tmp_path.iterdir())
     status, out, err = deck(tmp_path, text)
     assert status == 0, err
     assert set(tmp_path.iterdir()) == before | {tmp_path / "in.deck"}
-    for word, line in (("fix print", 14), ("fix ave/time", 15), ("fix balance", 16)):
+    # field test r7: fix phonon (its log to a path of the deck's choosing) ran in the engine's pass
+    for word, line in (("fix print", 14), ("fix ave/time", 15), ("fix balance", 16), ("fix phonon", 18)):
         assert f"restitution deck: {word} (line {line} and any like it): not executed" in err, err
 
 

@@ -17,18 +17,21 @@ from restitution.dem.pair import Pair
 HERTZ = "gran/hertz/history 1e6 NULL 3000 NULL 0.5 0"
 
 
-def _deck(tmp_path, template: str, offset: int = 0) -> list:
+def _deck(tmp_path, template: str, offset: int = 0, more: dict | None = None) -> list:
     (tmp_path / "one.mol").write_text(template)
+    for name, text in (more or {}).items():
+        (tmp_path / name).write_text(text)
+    files = " ".join(["one.mol", *(more or {})])
     (tmp_path / "in.deck").write_text(f"""units si
 atom_style sphere
 comm_modify vel yes
 region box block 0 1 0 1 0 1
 create_box 2 box
-molecule m1 one.mol
+molecule m1 {files}
 pair_style {HERTZ}
 pair_coeff * *
 region slab block 0.1 0.9 0.1 0.9 0.5 0.9
-fix ins all pour 20 {offset} 4767 region slab mol m1 diam one 0.05 dens 500 500
+fix ins all pour 20 {offset} 4767 region slab mol m1 diam one 0.05 dens 500 500{" molfrac 0.5 0.5" if more else ""}
 fix 1 all nve/sphere
 fix g all gravity 9.81 vector 0 0 -1
 timestep 1e-6
@@ -71,3 +74,21 @@ def test_a_pour_of_a_two_atom_template_stays_refused(tmp_path):
     status, out, err = _deck(tmp_path, template)
     assert status == 2 and out == ""
     assert len(err.strip().splitlines()) == 1 and "holds 2 atoms" in err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_pour_of_a_set_of_one_atom_templates_is_audited_over_its_sizes(tmp_path):
+    """Field test r7: ``molecule grains small.mol big.mol`` poured with molfrac was refused ("several
+    files or keywords"); LAMMPS pours spheres of both templates' sizes into type 1. The range's ends
+    are the two same-size pairs, each checked in LAMMPS head-on (dt -> 0)."""
+    heavy = 4 / 3 * math.pi * 0.015 ** 3 * 2000
+    status, out, err = _deck(tmp_path, _one(0.02, 4 / 3 * math.pi * 0.01 ** 3 * 3000),
+                             more={"big.mol": _one(0.03, heavy)})
+    assert status == 0, err
+    rows = json.loads(out)["pairs"]
+    ends = sorted((a[0], round(a[1], 9), b[0], round(b[1], 9)) for a, b in (r["at"] for r in rows))
+    assert ends == [(0.01, 3000.0, 0.01, 3000.0), (0.015, 2000.0, 0.015, 2000.0)]
+    for row in rows:
+        (radius, density), _ = row["at"]
+        assert abs(_in_lammps(row, radius, density) / row["eps"][2] - 1) < 1e-6, row

@@ -29,19 +29,54 @@ TIMES_OMEGA_MAX = 1e15
 
 
 def contact_eps(problem, omega: float, rtol: float = 1e-12) -> float:
-    """eps at one Omega to the scipy reference's bound at ``rtol`` (10 rtol + 1e-13, more for large
-    exponents), from the cheapest rung of the ladder that meets it: under the overlap rule the compiled integrator
-    (tens of microseconds) instead of the reference (20-200 ms), which calibrations call dozens of
-    times. Near the overlap rule's sticking boundary, where no fast rung meets that bound, the
-    reference answers as before. Raises StickError where the bodies stick under the overlap rule.
-    Nothing cached is read (``cached=False``): a master curve some earlier run left in the cache
-    answers within the same bound but not to the same bits, and a calibration (the pipeline's
-    calibration table, a DEM designer's D2) must not depend on what the user's cache holds."""
+    """eps at one Omega, to the scipy reference's bound at ``rtol``, from the cheapest rung that meets it.
+
+    Under the overlap rule this is the compiled integrator (tens of microseconds) instead of the
+    reference (20-200 ms), which calibrations call dozens of times. Near the overlap rule's sticking
+    boundary, where no fast rung meets that bound, the reference answers. Nothing cached on disk is
+    read: a master curve some earlier run left in the cache answers within the same bound but not to
+    the same bits, and a calibration (the pipeline's calibration table, a DEM designer's D2) must
+    not depend on what the user's cache holds. Answers are kept in memory for the process, keyed
+    by (problem, Omega, rtol): a deck's walls of one law, its stages, sizes and speeds ask the same
+    Omega again (a LIGGGHTS tutorial's six walls of one law, each at nine sizes and five speeds),
+    and each ask of the ladder quotes its every rung in exact fractions.
+
+    Parameters
+    ----------
+    problem : Problem
+        The exponents and end rule (an Exponents or an (alpha, gamma) pair: the force rule).
+    omega : float
+        The scaled parameter Omega > 0.
+    rtol : float
+        The tolerance of the scipy reference whose bound (10 rtol + 1e-13, more for large
+        exponents) the answer meets.
+
+    Returns
+    -------
+    float
+        eps at ``omega``.
+
+    Raises
+    ------
+    ParameterError
+        For bad input; StickError (a ParameterError) where the bodies stick under the overlap rule.
+
+    Examples
+    --------
+    >>> round(contact_eps(("3/2", "1/2"), 1.0), 9)
+    0.393930603
+    >>> contact_eps(("3/2", "1/2"), 1.0) == contact_eps(Problem.of("3/2", "1/2"), 1)
+    True
+    """
+    return _contact_eps(as_problem(problem), float(omega), float(rtol))
+
+
+@lru_cache(maxsize=4096)
+def _contact_eps(problem: Problem, omega: float, rtol: float) -> float:
     from ..core.collision import StickError
     from ..core.errors import ParameterError
     from ..fast.ladder import epsilon
     from ..fast.rung import reference_bound
-    problem = as_problem(problem)
     try:
         tol = reference_bound(rtol, problem.ex)   # the force rule's, as the reference states it
         return float(epsilon(problem, omega=[omega], tol=tol, build=False, cached=False).eps[0])
@@ -93,14 +128,6 @@ def scaled_collision(problem, omega: float, rtol: float = 1e-12):
     if in_family(problem):
         return _exact_collision(as_problem(problem), float(omega))
     return collide(problem, omega, rtol=rtol)
-
-
-@lru_cache(maxsize=4096)
-def _eps_at(contact: "Contact", g: float, rtol: float) -> float:
-    """:meth:`Contact.eps`, kept: a deck's walls of one law and its stages ask the same contacts
-    again (a LIGGGHTS tutorial's six walls of one law, each at nine sizes and five speeds), and each
-    asks the ladder, which quotes its every rung in exact fractions."""
-    return contact_eps(contact.problem, contact.omega(g), rtol)
 
 
 @lru_cache(maxsize=1024)
@@ -187,7 +214,7 @@ class Contact:
 
     def eps(self, g: float, rtol: float = 1e-12) -> float:
         """eps at impact speed g, to the reference's bound at rtol (:func:`contact_eps`)."""
-        return _eps_at(self, float(g), rtol)
+        return contact_eps(self.problem, self.omega(g), rtol)
 
     def contact_time(self, g: float, rtol: float = 1e-12, compiled: bool = False) -> float:
         """t_c in the units of D1, D2, g: the scaled tau_c times the time scale B(g) (the scipy

@@ -229,10 +229,10 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
         for mesh, contact_of, wall_type, faces in surfaces:
             shaking = [text for _, text, moved in deck.shaken.values() if moved == mesh]
             if shaking:
-                unknown.append((*loc, " ".join(words), f"mesh {mesh} oscillates ({shaking[0]}) and "
-                                                       "accelerates under a sphere during a contact, so the eps "
-                                                       "the engine measures depends on where in the cycle a "
-                                                       "contact falls: its faces are not audited"))
+                unknown.append((*loc, " ".join(words), f"mesh {mesh} moves with an acceleration ({shaking[0]}): "
+                                                       "its faces accelerate under a sphere during a contact, so "
+                                                       "the eps the engine measures depends on when and where on "
+                                                       "a face a contact falls: its faces are not audited"))
                 continue
             for t in types:
                 if _empty(deck, t):          # no sphere of it to meet the wall (named in the notes)

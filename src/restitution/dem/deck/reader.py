@@ -50,11 +50,18 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      "ave/time", "ave/atom", "print", "move/mesh",
                      "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
                      "nve/noforce"}
-#: LIGGGHTS move/mesh motions that oscillate: the mesh accelerates under a sphere during a contact,
-#: and the eps the engine measures depends on where in the cycle the contact falls (LIGGGHTS: 0.543
-#: to 0.649 by phase on a plate with wiggle amplitude 0 0 1e-4 period 0.01, where the still plate
-#: gives e = 0.6); a steady linear or rotating motion does not shake it
-_SHAKING = frozenset({"wiggle", "riggle", "viblin", "vibrot"})
+#: LIGGGHTS move/mesh motions that accelerate a face under a sphere during a contact, so that the
+#: eps the engine measures depends on when in the cycle and where on the face a contact falls:
+#: an oscillation (LIGGGHTS: 0.543 to 0.649 by phase on a plate with wiggle amplitude 0 0 1e-4
+#: period 0.01, where the still plate gives e = 0.6) and a rotation, whose face points accelerate
+#: towards the axis (a floor turned at period 0.2 s about an axis 2 cm below it: 0.4779 at g = 0.1
+#: where the still floor gives 0.4999). Only ``linear`` at a constant velocity leaves it still;
+#: ``linear/variable`` does where its velocities are constant (_steady).
+_SHAKING = frozenset({"wiggle", "riggle", "viblin", "vibrot", "rotate", "rotate/variable"})
+#: Names an equal-style formula may hold and still give one value at every step (``random`` and
+#: ``normal`` draw anew at each evaluation; time, step and the rest read the simulation's state)
+_CONSTANT_MATH = frozenset({"sqrt", "exp", "ln", "log", "abs", "sin", "cos", "tan", "asin", "acos", "atan",
+                            "atan2", "ceil", "floor", "round", "ternary", "PI", "version"})
 #: ``dimension`` is among them: in 2d LAMMPS gives a sphere's mass still (density/disc, which sets a
 #: disc's, is the engine's and read back with the atoms), and its granular forces are the same (a
 #: head-on pair r 0.005 and 0.01, hertz/material viscoelastic, g 0.1, dt 2e-7: eps 0.86088418 in 2d
@@ -767,11 +774,17 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
     """read_data FILE [nocoeff] [group ID]: the number of types, each type's radius and density
     where all its atoms share them (where no engine holds them), and a data file's Pair Coeffs /
     PairIJ Coeffs."""
-    name, opts, coeffs = words[1], words[2:], True
+    name, opts, coeffs, extra = words[1], words[2:], True, 0
     k = 0
     while k < len(opts):
         if opts[k] == "nocoeff":
             coeffs, k = False, k + 1
+        elif opts[k] == "extra/atom/types" and k + 1 < len(opts):
+            # room for types the deck creates later: the file's types keep their numbers
+            more = 0 if opts[k + 1] == "0" else atom_type(opts[k + 1], where, line, "extra/atom/types")
+            extra, k = extra + more, k + 2
+        elif opts[k].startswith("extra/") and k + 1 < len(opts):
+            k += 2                             # room for bonds, angles, special neighbours: no contact
         elif opts[k] == "group" and k + 1 < len(opts):
             deck.filled_groups.setdefault(opts[k + 1], []).append((f"read_data {name} adds", None))
             k += 2
@@ -824,6 +837,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             rest = cols[1:] if section == "Pair Coeffs" else cols[2:]
             _pair_coeff(deck, unlabeled(deck, ["pair_coeff", i, j, *rest], here, body), here, body, (name, n))
     deck.present |= set(per_type)
+    deck.ntypes += extra
     for t in range(1, deck.ntypes + 1 if deck.held is None else 1):
         if t not in per_type:
             deck.missing[t] = f"{name} has no atom of type {t}"
@@ -877,7 +891,8 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     again = next((k for k, b in enumerate(deck.beside) if b[1][1] == words[1]), None)
     wall_again = next((k for k, w in enumerate(deck.walls) if w[1][1] == words[1]), None)
     _unfix(deck, words[1])
-    if style == "move/mesh" and len(words) > 6 and words[4] == "mesh" and words[6] in _SHAKING:
+    if style == "move/mesh" and len(words) > 6 and words[4] == "mesh" and (
+            words[6] in _SHAKING or words[6] == "linear/variable" and not all(_steady(deck, w) for w in words[7:10])):
         deck.shaken[words[1]] = (loc, line, words[5])
     if style.startswith("rigid"):
         raise DeckError(where, line, f"fix {style} makes rigid bodies of spheres: a body's mass is not a sphere's, "
@@ -996,14 +1011,29 @@ def _poured(deck: Deck, fix: str, t: int, diameters: set, densities: set, poly: 
     pour_into(deck, t, sizes)
 
 
-def _template(words: list, where: str, line: str, read_file) -> tuple | str:
-    """molecule ID FILE: the one sphere of its template as (its type, radius, density), or why a
-    pour of it is not audited. LAMMPS gives a template atom the Diameters and Masses sections' values;
-    without Masses, density 1 (22 Jul 2025: a poured template atom of diameter 0.3 has mass
-    pi/6 * 0.3**3); without Diameters it stops at the pour's run (measured)."""
-    if len(words) != 3:
-        return f"molecule {words[1]} has several files or keywords (offset, scale, ...), which the reader does not map"
-    text = fetch(read_file, words[2], where, line)
+#: molecule command keywords: any of them shifts the template's types or scales its sizes
+_MOLECULE_KEYWORDS = frozenset({"offset", "toff", "boff", "aoff", "doff", "ioff", "scale"})
+
+
+def _template(words: list, where: str, line: str, read_file) -> list | str:
+    """molecule ID FILE [FILE ...]: the one sphere of each template as (its type, radius, density),
+    or why a pour of them is not audited. LAMMPS gives a template atom the Diameters and Masses
+    sections' values; without Masses, density 1 (22 Jul 2025: a poured template atom of diameter 0.3
+    has mass pi/6 * 0.3**3); without Diameters it stops at the pour's run (measured). A set of
+    several files is poured by molfrac, each template's sphere as its own."""
+    if len(words) < 3 or _MOLECULE_KEYWORDS & set(words[3:]):
+        return f"molecule {words[1]} has keywords (offset, scale, ...) that the reader does not map"
+    spheres = []
+    for name in words[2:]:
+        one = _one_sphere(words[1], fetch(read_file, name, where, line))
+        if isinstance(one, str):
+            return one
+        spheres.append(one)
+    return spheres
+
+
+def _one_sphere(mol: str, text: str) -> tuple | str:
+    """(type, radius, density) of a molecule file's one atom, or why it is not one sphere."""
     counts, sections, current = {}, {}, None
     for n, raw in enumerate(text.splitlines()):
         body = raw.partition("#")[0].split()
@@ -1017,26 +1047,26 @@ def _template(words: list, where: str, line: str, read_file) -> tuple | str:
         elif current is not None:
             sections[current].append(body)
     if counts.get("atoms") != 1:
-        return (f"molecule {words[1]} holds {counts.get('atoms', 'no')} atoms: a pour of it inserts clumps of "
+        return (f"molecule {mol} holds {counts.get('atoms', 'no')} atoms: a pour of it inserts clumps of "
                 "spheres (rigid or bonded), and the reader audits the head-on contact of two single spheres only")
     if "Diameters" not in sections:
-        return f"molecule {words[1]} has no Diameters section: LAMMPS stops when it pours it"
+        return f"molecule {mol} has no Diameters section: LAMMPS stops when it pours it"
     try:
         kind = int(sections["Types"][0][1]) if "Types" in sections else None
         radius = 0.5 * float(sections["Diameters"][0][1])
         volume = 4.0 / 3.0 * math.pi * radius ** 3
         density = float(sections["Masses"][0][1]) / volume if "Masses" in sections else 1.0
     except (IndexError, ValueError, ZeroDivisionError):
-        return f"molecule {words[1]}'s Types, Diameters or Masses section does not read as one atom's numbers"
+        return f"molecule {mol}'s Types, Diameters or Masses section does not read as one atom's numbers"
     if kind is None:
-        return f"molecule {words[1]} has no Types section"
+        return f"molecule {mol} has no Types section"
     return (kind, radius, density)
 
 
 def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
-    """fix ID group pour N offset seed ... mol TEMPLATE: a template of one sphere pours spheres of its
-    size (diam and dens are ignored; LAMMPS measured) of type offset + its type; anything else is
-    refused."""
+    """fix ID group pour N offset seed ... mol TEMPLATE: each one-sphere template of the set pours
+    spheres of its size (diam and dens are ignored; LAMMPS measured) of type offset + its type;
+    anything else is refused."""
     tokens = words[7:]
     k = tokens.index("mol")
     made = deck.templates.get(tokens[k + 1]) if k + 1 < len(tokens) else None
@@ -1046,14 +1076,21 @@ def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
         made = "fix pour ... mol names no molecule template the deck defined"
     if isinstance(made, str):
         raise DeckError(where, line, made)
-    kind, radius, density = made
-    t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
-    deck.sizes.pop(t, None)
-    if deck.held is not None:
-        deck.pours[(words[1], t)] = (t, {(radius, density)})
-        pour_into(deck, t, {(radius, density)})
-    else:
-        deck.radius[t], deck.density[t] = radius, density
+    poured: dict = {}
+    for kind, radius, density in made:
+        t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
+        poured.setdefault(t, set()).add((radius, density))
+    for t, sizes in poured.items():
+        deck.sizes.pop(t, None)
+        if deck.held is not None:
+            deck.pours[(words[1], t)] = (t, sizes)
+            pour_into(deck, t, sizes)
+        elif len(sizes) == 1:
+            deck.radius[t], deck.density[t] = next(iter(sizes))
+        else:                          # the hand reader's decks: no range audited
+            deck.radius.pop(t, None)
+            deck.density.pop(t, None)
+            deck.missing[t] = f"fix {words[1]} pours {len(sizes)} templates' sizes into type {t}"
 
 
 #: Sizes sampled across a pour's range of diameters, its ends included: a law whose eps is not
@@ -1306,6 +1343,20 @@ def _variable(deck: Deck, words: list) -> None:
         deck.variables.pop(words[1], None)
     else:
         deck.variables[words[1]] = " ".join(words[3:]) if words[2] == "equal" else None
+
+
+def _steady(deck: Deck, token: str, seen: frozenset = frozenset()) -> bool:
+    """Whether a velocity the engine reads as ``v_NAME`` (or a number) keeps one value at every step:
+    a number, or an equal-style variable of numbers, constant functions and such variables."""
+    if _float(token) is not None:
+        return True
+    name = token[2:] if token.startswith("v_") else None
+    formula = deck.variables.get(name) if name and name not in seen else None
+    if formula is None:
+        return False                       # not equal-style, undefined, or circular
+    bare = re.sub(r"(?<![A-Za-z0-9_.])(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", " ", formula)
+    return all(w in _CONSTANT_MATH or w.startswith("v_") and _steady(deck, w, seen | {name})
+               for w in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", bare))
 
 
 def _float(token: str) -> float | None:

@@ -46,7 +46,7 @@ SKIPPED_COMMANDS = frozenset({
 #: nothing, so unfix and fix_modify still find it
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
                          "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
-                         "couple/", "ave/euler", "dump")
+                         "couple/", "ave/euler", "dump", "phonon", "saed/vtk")
 #: The tag of the audit's own lines (its markers'): never the deck's
 AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
@@ -204,8 +204,10 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             continue
         mapped = named is None or p == scratch.deck or p.name in named
         try:
-            text = p.read_text(encoding="utf-8")
-        except (UnicodeDecodeError, OSError):
+            # bytes that are not UTF-8 (a Latin-1 comment from another editor) kept as they are:
+            # the engines read bytes, and a file passed over here would run unmade safe
+            text = p.read_text(encoding="utf-8", errors="surrogateescape")
+        except OSError:
             continue
         label = None if p == scratch.deck else os.path.relpath(p, copy)
         # a file named as written is a script: its lines get their tags; any other (a data file,
@@ -218,7 +220,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             scratch.lines = lines
             scratch.files.pop(label, None)
         if new != text:
-            p.write_text(new, encoding="utf-8")
+            p.write_text(new, encoding="utf-8", errors="surrogateescape")
     return scratch
 
 

@@ -190,9 +190,10 @@ def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limi
 
     Returns
     -------
-    Contact
+    Contact or ElasticContact
         alpha from the normal model, gamma from the damping model; the overlap rule unless
-        limit_damping.
+        limit_damping. An ElasticContact where nothing damps (eta_n0 = 0, or coeff_restitution's
+        e = 1).
 
     Raises
     ------
@@ -216,6 +217,10 @@ def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limi
             return ElasticContact(alpha, D1, "force" if limit_damping else "overlap")
         D2 = (tsuji_a(eta_n0) if damping == "tsuji" else restitution_b(eta_n0, alpha)) * math.sqrt(D1)
     else:
+        if eta_n0 == 0.0:
+            # no damping term at all: an elastic reference run (LAMMPS measures eps 1.0000000 at
+            # 200 and 800 steps per contact, hertz/material viscoelastic 0 and hooke velocity 0)
+            return ElasticContact(alpha, D1, "force" if limit_damping else "overlap")
         eta = require_positive_finite("eta_n0", eta_n0)
         D2 = {"velocity": eta / pair.m, "mass_velocity": eta, "viscoelastic": eta * math.sqrt(pair.R)}[damping]
         D2 = derived_in_range("the damping D2", D2, {"eta_n0": eta, **pair_inputs(pair)})
@@ -229,7 +234,8 @@ def lammps_contact(pair: Pair, *, normal: str, damping: str, eta_n0: float, limi
 LAMMPS_GRAN_STYLES = ("gran/hooke", "gran/hooke/history", "gran/hertz/history")
 
 
-def lammps_gran_contact(pair: Pair, *, style: str, k_n: float, gamma_n: float, limit_damping: bool) -> Contact:
+def lammps_gran_contact(pair: Pair, *, style: str, k_n: float, gamma_n: float,
+                        limit_damping: bool) -> Contact | ElasticContact:
     """The model an older LAMMPS granular pair style gives for this pair: hooke alpha = 1, gamma = 0,
     D1 = Kn / m, D2 = gamma_n; hertz alpha = 3/2, gamma = 1/2, D1 = Kn sqrt(R) / m, D2 = gamma_n sqrt(R).
 
@@ -246,13 +252,14 @@ def lammps_gran_contact(pair: Pair, *, style: str, k_n: float, gamma_n: float, l
 
     Returns
     -------
-    Contact
-        hooke: alpha = 1, gamma = 0; hertz: alpha = 3/2, gamma = 1/2.
+    Contact or ElasticContact
+        hooke: alpha = 1, gamma = 0; hertz: alpha = 3/2, gamma = 1/2; an ElasticContact where
+        gamma_n = 0 (no damping).
 
     Raises
     ------
     ParameterError
-        Another style, or a column not finite and positive.
+        Another style, Kn not finite and positive, or gamma_n negative or not finite.
 
     Examples
     --------
@@ -262,9 +269,13 @@ def lammps_gran_contact(pair: Pair, *, style: str, k_n: float, gamma_n: float, l
     ('1', 5.0, 'overlap')
     """
     style = one_of("pair_style", style, LAMMPS_GRAN_STYLES)
-    k_n, gamma_n = require_positive_finite("Kn", k_n), require_positive_finite("gamma_n", gamma_n)
+    k_n = require_positive_finite("Kn", k_n)
     end = "force" if limit_damping else "overlap"
-    if style == "gran/hertz/history":
+    hertz = style == "gran/hertz/history"
+    if gamma_n == 0.0:                     # no damping: an elastic reference run (eps 1 in LAMMPS)
+        return ElasticContact("3/2" if hertz else "1", k_n * math.sqrt(pair.R) / pair.m if hertz else k_n / pair.m, end)
+    gamma_n = require_positive_finite("gamma_n", gamma_n)
+    if hertz:
         return Contact("3/2", "1/2", k_n * math.sqrt(pair.R) / pair.m, gamma_n * math.sqrt(pair.R), end)
     return Contact("1", "0", k_n / pair.m, gamma_n, end)
 
