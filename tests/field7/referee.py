@@ -21,7 +21,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
 
-def deck(engine, block, units, ntypes, g, a, b, dt, nsteps, extra=""):
+def deck(engine, block, units, ntypes, g, a, b, dt, nsteps, extra="", frozen_b=False):
     ta, da, ra = a
     L = 50 * max(float(da), float(b[1]) if b else 0)
     lines = [f"units {units}"]
@@ -41,7 +41,8 @@ def deck(engine, block, units, ntypes, g, a, b, dt, nsteps, extra=""):
                   f"set atom 1 diameter {da}", f"set atom 1 density {ra}",
                   f"set atom 2 diameter {db}", f"set atom 2 density {rb}",
                   "group g1 id 1", "group g2 id 2",
-                  f"velocity g1 set {g/2} 0 0 units box", f"velocity g2 set {-g/2} 0 0 units box",
+                  (f"velocity g1 set {g} 0 0 units box" if frozen_b else f"velocity g1 set {g/2} 0 0 units box"),
+                  (f"velocity g2 set 0 0 0 units box" if frozen_b else f"velocity g2 set {-g/2} 0 0 units box"),
                   "variable dx equal x[2]-x[1]", "variable rv equal vx[2]-vx[1]"]
     else:
         xa = float(da) / 2 + gap
@@ -53,7 +54,7 @@ def deck(engine, block, units, ntypes, g, a, b, dt, nsteps, extra=""):
                   f"set atom 1 density {ra}", "group g1 id 1", f"velocity g1 set {-g} 0 0 units box",
                   "variable dx equal 2*x[1]", "variable rv equal vx[1]"]
     lines += [block, extra, "neighbor " + str(0.2 * float(da)) + " bin", "neigh_modify delay 0",
-              "fix nve all nve/sphere", f"timestep {dt}", "thermo 1",
+              ("fix nve g1 nve/sphere" if frozen_b else "fix nve all nve/sphere"), f"timestep {dt}", "thermo 1",
               "thermo_style custom step v_dx v_rv"]
     lines += ['thermo_modify format float %.16g' if engine == "lammps" else 'thermo_modify format float "%.16g"']
     lines += [f"run {nsteps}"]
@@ -83,8 +84,11 @@ def run(engine, text):
     return rows
 
 
+FROZEN = False
+
+
 def measure(engine, block, units, ntypes, g, a, b, dt, nsteps, extra=""):
-    rows = run(engine, deck(engine, block, units, ntypes, g, a, b, dt, nsteps, extra))
+    rows = run(engine, deck(engine, block, units, ntypes, g, a, b, dt, nsteps, extra, FROZEN))
     contact = float(a[1]) / 2 + (float(b[1]) / 2 if b else float(a[1]) / 2)
     inside = [k for k, r in enumerate(rows) if r[1] < contact]
     if not inside:
@@ -111,7 +115,10 @@ def main():
     ap.add_argument("--extra", default="")
     ap.add_argument("--dts", type=float, nargs="*", default=[], help="also run at these time steps")
     ap.add_argument("--wall", action="store_true", help="no second sphere: the block has a wall at x = 0")
+    ap.add_argument("--frozen-b", action="store_true", help="the second sphere has no integrator")
     o = ap.parse_args()
+    global FROZEN
+    FROZEN = o.frozen_b
     block = open(o.block).read()
     dt = o.dt0
     for _ in range(40):   # find the contact time at a coarse step
