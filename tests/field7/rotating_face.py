@@ -67,7 +67,7 @@ run {nsteps}
     with tempfile.TemporaryDirectory() as tmp:
         shutil.copy(os.path.join(o.deckdir, "floor.stl"), tmp)
         open(os.path.join(tmp, "in.rot"), "w").write(deck)
-        out = subprocess.run(["liggghts", "-log", "none", "-in", "in.rot"], cwd=tmp, capture_output=True, text=True).stdout
+        out = subprocess.run(["liggghts", "-log", "none", "-in", "in.rot"], cwd=tmp, capture_output=True, text=True, errors="replace").stdout
     rows = [tuple(map(float, m.groups())) for m in
             re.finditer(r"^\s*(\d+)\s+([-0-9.eE+]+)\s+([-0-9.eE+]+)\s+([-0-9.eE+]+)\s+([-0-9.eE+]+)\s*$", out, re.M)]
     data = []
