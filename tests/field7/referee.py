@@ -93,12 +93,14 @@ def measure(engine, block, units, ntypes, g, a, b, dt, nsteps, extra=""):
     inside = [k for k, r in enumerate(rows) if r[1] < contact]
     if not inside:
         return 0, float("nan"), False
-    first, last = inside[0], inside[-1]
+    first = last = inside[0]
+    while last + 1 < len(rows) and rows[last + 1][1] < contact:   # the first contact only
+        last += 1
     # velocities at the last step before the first overlap and the first step after the last one
     # (the same as the final ones without gravity; with it, the rebound speed as the contact ends)
     v_in = rows[first - 1][2] if first > 0 else rows[0][2]
     v_out = rows[last + 1][2] if last + 1 < len(rows) else rows[-1][2]
-    return len(inside), -v_out / v_in, last + 1 < len(rows)
+    return last - first + 1, -v_out / v_in, last + 1 < len(rows)
 
 
 def main():
@@ -115,13 +117,14 @@ def main():
     ap.add_argument("--extra", default="")
     ap.add_argument("--dts", type=float, nargs="*", default=[], help="also run at these time steps")
     ap.add_argument("--wall", action="store_true", help="no second sphere: the block has a wall at x = 0")
+    ap.add_argument("--tc", type=float, help="the contact time, when known (skips the coarse search)")
     ap.add_argument("--frozen-b", action="store_true", help="the second sphere has no integrator")
     o = ap.parse_args()
     global FROZEN
     FROZEN = o.frozen_b
     block = open(o.block).read()
     dt = o.dt0
-    for _ in range(40):   # find the contact time at a coarse step
+    for _ in range(0 if o.tc else 40):   # find the contact time at a coarse step
         n, eps, sep = measure(o.engine, block, o.units, o.ntypes, o.g, o.a, o.b, dt, 400, o.extra)
         if n == 0:  # never touched in 400 steps: larger step
             dt *= 4
@@ -133,8 +136,8 @@ def main():
             dt /= 4
             continue
         break
-    tc = n * dt
-    print(f"t_c ~ {tc:.6g} (coarse {n} steps at dt {dt:.3g})")
+    tc = o.tc if o.tc else n * dt
+    print(f"t_c ~ {tc:.6g}" + ("" if o.tc else f" (coarse {n} steps at dt {dt:.3g})"))
     prev = None
     for N in o.N:
         dtN = tc / N
