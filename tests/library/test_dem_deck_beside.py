@@ -151,3 +151,112 @@ def test_a_fix_on_a_group_defined_before_its_atoms_acts_on_none(tmp_path, fix):
     text = lammps_spheres((0.02, 2500), (0.03, 1000)).replace("create_box 2 box\n", "create_box 2 box\ngroup two type 2\n")
     pairs, err = _audit(tmp_path, text + f"pair_coeff * * hooke 1000 500 {T}\n{fix}\nrun 1\n")
     assert all(p["beside"] == [] for p in pairs.values()), err
+
+
+#: fix lineforce and planeforce cut the force on their atoms to a line or a plane (LAMMPS' head-on
+#: runs are along x): a contact along the line keeps its eps, one across it has no force
+CUT = HEAD.format(T=T) + "{fix}\nrun 1\n"
+
+
+def _engine_eps(p, fix, types=(1, 2)):
+    """LAMMPS' eps of the head-on collision of ``types`` along x beside ``fix``, extrapolated from
+    4000, 8000 and 16000 steps per contact, at each speed of the row ``p``."""
+    radius, density = {1: 0.01, 2: 0.015}, {1: 2500.0, 2: 1000.0}
+    pair = Pair.spheres(radius[types[0]], radius[types[1]], density[types[0]], density[types[1]])
+    lines = f"pair_coeff * * hooke 1000 500 {T}\ngroup two type 2\n{fix}"
+    out = []
+    for g in p["speeds"]:
+        t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
+        out.append(lammps_run.lammps_eps_extrapolated(pair, lines, g, 3 * t_c, steps=4000, types=types, ntypes=2)[0])
+    return out
+
+
+@needs_lammps
+@pytest.mark.parametrize("fix", ["fix lf all lineforce 1 0 0", "fix lf all planeforce 0 0 1"])
+def test_a_force_cut_to_a_line_or_plane_is_named_with_no_eps_where_the_direction_is_unknown(tmp_path, fix):
+    """In 3d the collision may point anywhere: along the line (in the plane) LAMMPS gives the contact's
+    eps, across it the spheres pass through each other. Before: "not understood", the contact's eps."""
+    pairs, err = _audit(tmp_path, CUT.format(fix=fix))
+    style = fix.split()[3]
+    for p in pairs.values():
+        (beside,) = p["beside"]
+        assert beside["style"] == style and beside["eps_engine"] is None and "no eps is the engine's" in beside["why"]
+    assert f"fix {style} (lf)" in err and "changes the eps the engine measures" in err and "not understood" not in err
+    p = pairs[(1, 2)]
+    for engine, own in zip(_engine_eps(p, fix), p["eps"]):       # along x: the line, or in the plane
+        assert engine == pytest.approx(own, rel=ENGINE_RTOL)
+    across = fix.replace("1 0 0", "0 1 0") if style == "lineforce" else fix.replace("0 0 1", "1 0 0")
+    with pytest.raises(ArithmeticError, match="not separated"):   # across: they pass through each other
+        _engine_eps(p, across)
+
+
+@needs_lammps
+def test_in_2d_a_line_along_z_holds_its_body_and_a_plane_of_normal_z_keeps_the_contact(tmp_path):
+    """A 2d deck's contacts lie in xy: a lineforce along z removes every contact force on its atoms
+    (one body of a pair keeps its velocity, the other moves alone: eps in its frame; two pass through
+    each other), a planeforce of normal z none. LAMMPS' head-on along x with the same fix line."""
+    pairs, err = _audit(tmp_path, "dimension 2\n" + CUT.format(fix="fix lf two lineforce 0 0 1"))
+    assert pairs[(1, 1)]["beside"] == []
+    (held,) = pairs[(1, 2)]["beside"]
+    (both,) = pairs[(2, 2)]["beside"]
+    assert both["eps_engine"] is None and "pass through each other" in both["why"]
+    p = pairs[(1, 2)]
+    for g, engine, said, own in zip(p["speeds"], _engine_eps(p, "fix lf two lineforce 0 0 1"), held["eps_engine"],
+                                    p["eps"]):
+        print(f"g {g:g}: audit {said:.8f} LAMMPS {engine:.8f} contact's own {own:.8f}")
+        assert said == pytest.approx(engine, rel=ENGINE_RTOL)
+        assert abs(said - own) > 10 * ENGINE_RTOL * own
+    pairs, err = _audit(tmp_path, "dimension 2\n" + CUT.format(fix="fix lf all planeforce 0 0 1"))
+    for p in pairs.values():
+        (kept,) = p["beside"]
+        assert kept["eps_engine"] == p["eps"] and "keeps its force whole" in kept["why"]
+    assert "leaves the eps the engine measures the contact's" in err
+
+
+@pytest.mark.parametrize("fix, normal, kept", [("fix lf all lineforce 0 0 1", (0.0, 0.0, 1.0), True),
+                                               ("fix lf all planeforce 1 0 0", (0.0, 0.0, 1.0), True),
+                                               ("fix lf all lineforce 1 0 0", (0.0, 0.0, 1.0), False),
+                                               ("fix lf all lineforce 0 1 1", (0.0, 0.0, 1.0), False)])
+def test_a_wall_whose_normal_the_cut_keeps_has_the_contacts_eps(fix, normal, kept):
+    """A wall's normal is known: along the line the wall's force is whole (LAMMPS: a zplane wall with
+    lineforce 0 0 1 gave the contact's eps, 0.99518646 at dt 1e-5 with and without it). Across or
+    oblique it is cut only where the wall's fix is defined before the lineforce (measured both ways:
+    the sphere passed through the wall, or kept the contact's eps): no eps is claimed."""
+    from restitution.dem.deck.beside import effects
+    from restitution.dem.dialect.state import Deck
+    d = Deck(ntypes=1, code="LAMMPS", beside=[((None, 9), fix.split())])
+    c, p = Contact(1, 0, 1e4, 10.0, "overlap"), Pair.wall(0.5, 1.0)
+    row = {"speeds": [1.0], "eps": [c.eps(1.0)], "sticks": [False], "passes_through": [False]}
+    (e,) = effects(d, row, c, p, (1,), faces=[("the face at z = 0.0", normal)])
+    if kept:
+        assert e["eps_engine"] == row["eps"]
+    else:
+        assert e["eps_engine"] is None and "no eps is the engine's" in e["why"]
+
+
+def test_a_gravity_beside_a_force_cut_to_a_line_is_not_sized():
+    """The cut removes the gravity's force too where the gravity is defined before it (LAMMPS adds and
+    cuts forces in the order of the fixes): the gravity's push into the wall is not computed."""
+    from restitution.dem.deck.beside import effects
+    from restitution.dem.dialect.state import Deck
+    fixes = [((None, 8), "fix g all gravity 9.81 vector 0 0 -1".split()), ((None, 9), "fix lf all lineforce 1 0 0".split())]
+    c, p = Contact(1, 0, 1e4, 10.0, "overlap"), Pair.wall(0.5, 1.0)
+    row = {"speeds": [1.0], "eps": [c.eps(1.0)], "sticks": [False], "passes_through": [False]}
+    got = {e["style"]: e for e in effects(Deck(ntypes=1, code="LAMMPS", beside=fixes), row, c, p, (1,),
+                                          faces=[("the face at z = 0.0", (0.0, 0.0, 1.0))])}
+    assert got["gravity"]["eps_engine"] is None and "cuts the forces" in got["gravity"]["why"]
+    alone = effects(Deck(ntypes=1, code="LAMMPS", beside=fixes[:1]), row, c, p, (1,),
+                    faces=[("the face at z = 0.0", (0.0, 0.0, 1.0))])
+    assert alone[0]["eps_engine"] is not None      # without the cut it is sized
+
+
+def test_a_gravity_on_both_spheres_under_the_same_cut_still_leaves_the_pair_alone():
+    """Both spheres of a pair fall alike and are cut alike: their relative motion is the contact's,
+    and nothing is said of the gravity (the cut itself is named, with no eps)."""
+    from restitution.dem.deck.beside import effects
+    from restitution.dem.dialect.state import Deck
+    fixes = [((None, 8), "fix g all gravity 9.81 vector 0 0 -1".split()), ((None, 9), "fix lf all lineforce 1 0 0".split())]
+    c, p = Contact(1, 0, 1e4, 10.0, "overlap"), Pair.spheres(0.5, 0.5, 1.0)
+    row = {"speeds": [1.0], "eps": [c.eps(1.0)], "sticks": [False], "passes_through": [False]}
+    got = effects(Deck(ntypes=1, code="LAMMPS", groups={"all": {1}}, beside=fixes), row, c, p, (1, 1))
+    assert [e["style"] for e in got] == ["lineforce"]

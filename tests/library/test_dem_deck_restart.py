@@ -88,7 +88,12 @@ def test_a_restart_across_clear_is_audited_as_lammps_holds_it(tmp_path):
     status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json")
     assert status == 0, err
     assert not (tmp_path / "state.restart").exists()          # written in the scratch copy alone
-    rows = json.loads(out)["pairs"]
+    _as_through_restart(tmp_path, json.loads(out)["pairs"])
+
+
+def _as_through_restart(tmp_path, rows) -> None:
+    """Every pair of the deck's restart audited, each eps LAMMPS' through its own restart (head-on,
+    2000, 4000 and 8000 steps per contact, extrapolated) to 1e-6."""
     assert [r["types"] for r in rows] == [[1, 1], [1, 2], [2, 2]]
     assert rows[1]["model"] == "LAMMPS hooke, damping mass_velocity"
     for r in rows:
@@ -124,3 +129,20 @@ def test_coefficients_given_again_after_the_read_replace_the_stored_ones(tmp_pat
     assert status == 0, err
     rows = {tuple(r["types"]): r for r in json.loads(out)["pairs"]}
     assert rows[(1, 2)]["line"] == deck.splitlines().index(deck.splitlines()[-3]) + 1
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_restart_written_to_an_absolute_path_is_redirected_into_the_scratch(tmp_path):
+    """write_restart /abs/path then read_restart of it: the confined engine stopped on its read-only
+    file system ("Cannot open restart file"), and the deck was refused. The file is now written into
+    the audit's scratch and read back from there; nothing is written at the path. Each pair's eps
+    against LAMMPS through its own restart, head-on, at 2000, 4000 and 8000 steps per contact."""
+    outside = tmp_path / "elsewhere" / "state.restart"
+    folder = tmp_path / "deck"
+    folder.mkdir()
+    (folder / "in.deck").write_text(HEAD.format(name=str(outside)) + TAIL)
+    status, out, err = run(folder / "in.deck", "--g", "0.5", "--json")
+    assert status == 0, err
+    assert not outside.parent.exists() and sorted(p.name for p in folder.iterdir()) == ["in.deck"]
+    _as_through_restart(tmp_path, json.loads(out)["pairs"])

@@ -208,3 +208,49 @@ def test_numba_start_gives_the_collector_back_and_the_heap_is_frozen_at_exit():
     proc = subprocess.run([sys.executable, "-c", COLLECTOR], capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr[-3000:]
     assert proc.stdout.strip() == "frozen at exit: True", proc.stdout
+
+
+# numba's first compile or cache load imports numba.np.arraymath, whose BLAS probe imported
+# scipy.linalg (a quarter of a second of CPU) to pick an inner product no kernel here uses.
+NO_BLAS_PROBE = textwrap.dedent("""
+    import sys
+    import numpy as np
+    from restitution.fast.integrator import collide_fast
+
+    res = collide_fast(2, 3, 1, np.geomspace(11.0, 113.0, 45), 1e-12, "overlap")   # compiled: 45 points
+    assert "numba" in sys.modules and np.all(np.isfinite(res[:, 0]))
+    assert "scipy.linalg" not in sys.modules, "numba's start imported scipy.linalg"
+    import numba.np.arraymath as arraymath, numba.np.linalg as linalg
+    assert arraymath.ensure_blas is linalg.ensure_blas, "numba's own probe was not given back"
+    print("no scipy.linalg")
+""")
+
+
+def test_numba_start_does_not_import_scipy_linalg():
+    pytest.importorskip("numba")
+    proc = subprocess.run([sys.executable, "-c", NO_BLAS_PROBE], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert proc.stdout.strip() == "no scipy.linalg"
+
+
+# The plain kernels' budget counts CPU, not the wall clock: on a loaded machine waiting for a core
+# made numba start for work that had cost far less than its start.
+WAITING = textwrap.dedent("""
+    import sys, time
+    from restitution.fast import jit
+
+    @jit.njit
+    def waits(seconds):
+        time.sleep(seconds)   # plain Python only: the wall clock runs, the CPU does not
+        return seconds
+
+    assert jit.call_kernel(1, 8, waits, 0.3) == 0.3 and "numba" not in sys.modules
+    print(round(jit._SPENT["plain"], 2))
+""")
+
+
+def test_the_plain_budget_counts_cpu_not_waiting():
+    pytest.importorskip("numba")
+    proc = subprocess.run([sys.executable, "-c", WAITING], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr[-3000:]
+    assert float(proc.stdout) < 0.1, proc.stdout

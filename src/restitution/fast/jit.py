@@ -47,6 +47,7 @@ def _compile(func, args, kwargs):
     no writable user cache), numba refuses ``cache=True``: compile without caching."""
     from numba import njit as numba_njit
 
+    _skip_blas_probe()
     _survive_damaged_cache()
     if args and callable(args[0]):
         return numba_njit(func)
@@ -137,8 +138,11 @@ def _starting():
 
 
 #: Seconds of plain-Python kernel time after which a process starts numba: its start with the
-#: kernel's compiled code on disk (measured 0.42 s), or compiling it (6-8 s) where there is none.
-#: Either way at most twice the cost of the choice made in hindsight.
+#: kernel's compiled code on disk (measured 0.40-0.46 s of CPU with the 45-point call that made it,
+#: scipy.linalg not imported: :func:`_skip_blas_probe`), or compiling it (6-8 s) where there is none.
+#: Either way at most twice the cost of the choice made in hindsight. The kernels' time is the
+#: calling thread's CPU time, not the wall clock: on a loaded machine the wall clock stretches the
+#: plain kernels' time, and numba was started earlier than the work asked for.
 PLAIN_BUDGET = 0.4
 COMPILE_BUDGET = 6.0
 _SPENT = {"plain": 0.0}
@@ -197,7 +201,7 @@ def call_kernel(n: int, limit: int, kernel, *args):
         import numpy as np
 
         _MODE.plain = True
-        start = time.perf_counter()
+        start = time.thread_time()
         try:
             with np.errstate(all="ignore"):   # compiled code warns about nothing
                 return kernel(*args)
@@ -205,8 +209,37 @@ def call_kernel(n: int, limit: int, kernel, *args):
             pass
         finally:
             _MODE.plain = False
-            _SPENT["plain"] += time.perf_counter() - start
+            _SPENT["plain"] += time.thread_time() - start
     return kernel(*args)
+
+
+def _skip_blas_probe() -> None:
+    """Import numba's ``numba.np.arraymath`` without its probe for a BLAS, which imports
+    ``scipy.linalg`` (a quarter of a second of CPU, a third of numba's start with the kernels on
+    disk) only to choose the inner product of ``np.correlate`` and ``np.convolve``, which no kernel
+    here uses: with the probe answering "none", those two fall back to numba's own loop. Every other
+    use of BLAS in numba asks ``ensure_blas`` when it compiles, which is given back unchanged.
+    Nothing happens where the module is already imported or scipy.linalg is (then the probe is free)."""
+    if "numba.np.arraymath" in sys.modules or "scipy.linalg" in sys.modules:
+        return
+    try:
+        from numba.np import linalg
+    except ImportError:   # pragma: no cover - another numba layout: its own probe runs
+        return
+    probe = getattr(linalg, "ensure_blas", None)
+    if probe is None:     # pragma: no cover - another numba layout
+        return
+
+    def absent():
+        raise ImportError("BLAS not probed (restitution.fast.jit)")
+
+    linalg.ensure_blas = absent
+    try:
+        from numba.np import arraymath
+    finally:
+        linalg.ensure_blas = probe
+    if getattr(arraymath, "ensure_blas", None) is absent:
+        arraymath.ensure_blas = probe
 
 
 def _note_damaged(path: str, exc: BaseException) -> None:

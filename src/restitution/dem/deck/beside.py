@@ -36,6 +36,8 @@ BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
           "spring/self": "a spring tethering each atom to where it was", "addforce": "a force added to each atom",
           "efield": "an electric force q E on each charged atom",
           "gravity": "a gravity on the atoms of its group only",
+          "lineforce": "the forces on its atoms cut to their component along a line",
+          "planeforce": "the forces on its atoms cut to their components in a plane",
           "temp/berendsen": "a thermostat rescaling the velocities", "temp/rescale": "a thermostat rescaling the velocities",
           "temp/csvr": "a thermostat rescaling the velocities", "temp/csld": "a thermostat replacing the velocities",
           # integrators (meeting.INTEGRATORS) with a Nose-Hoover thermostat on the velocities they integrate
@@ -237,7 +239,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
         if acted is None:
             entry["why"] = f"group {group} has atoms the audit cannot type: its size is not computed"
         else:
-            _size(entry, deck, row, contact, pair, types, words, acted, frozen_contact)
+            _size(entry, deck, row, contact, pair, types, words, acted, frozen_contact, faces)
         out.append(entry)
     return out
 
@@ -260,6 +262,8 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
         if held is not None and types[0] not in held:
             return None
         entry["what"] = "a gravity on the sphere, which pushes it into the wall or pulls it off during a contact"
+        if _cut(deck, types, entry):
+            return entry
         if held is None:
             entry["why"] = f"group {words[2]} has atoms the audit cannot type: the sphere may not fall; "
         _pushed_against(entry, deck, words, row, contact, pair, faces)
@@ -271,6 +275,8 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
                         "the other during a contact; its size is not computed")
         return entry
     acted = [t in held for t in types]
+    if any(acted) and _cut(deck, types, entry, alike=acted[0] == acted[1]):
+        return entry
     # a fix freeze zeroes the forces the fixes before it added (LAMMPS runs post_force in the order
     # the fixes were defined): a gravity defined after it moves the frozen atom too (measured)
     order = [w[1] for _, w in deck.beside]
@@ -305,6 +311,24 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
                     "or apart during a contact; its size (which depends on the direction of the field against the "
                     "line of centres) is not computed")
     return entry
+
+
+def _cut(deck, types: tuple, entry: dict, alike: bool = False) -> bool:
+    """Whether a fix lineforce or planeforce acts on a body of the collision, which cuts the
+    gravity's force too where it is defined after it: the gravity's size is then not computed
+    (entry's why says so). ``alike``: the gravity acts on both bodies of a pair, which it still
+    accelerates alike where each cut holds both or neither (then not named here)."""
+    cutting = []
+    for _, w in deck.beside:
+        if w[3] in ("lineforce", "planeforce"):
+            held = group_types(deck, w[2])
+            on = [True, True] if held is None else [t in held for t in types]
+            if any(on) and not (alike and len(types) == 2 and held is not None and on[0] == on[1]):
+                cutting.append(w)
+    if cutting:
+        entry["why"] = (f"beside the fix {cutting[0][3]} ({cutting[0][1]}), which cuts the forces on its atoms to a "
+                        "direction (the gravity's too where defined before it), its size is not computed")
+    return bool(cutting)
 
 
 def _onto_still(entry: dict, deck, words: list, row: dict, pair: Pair, acted: list, moving: int,
@@ -450,9 +474,12 @@ def _pushed_eps(contact: Contact, g: float, pair: Pair, push: float) -> float:
 
 
 def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tuple, words: list,
-          acted: list, frozen_contact) -> None:
+          acted: list, frozen_contact, faces: list | None = None) -> None:
     """The size of one fix's effect, where it has one the audit can compute (entry updated)."""
     style = words[3]
+    if style in ("lineforce", "planeforce"):
+        _projected(entry, deck, row, contact, pair, types, words, acted, faces)
+        return
     wall = len(types) == 1
     masses = (pair.m1,) if wall else (pair.m1, pair.m2)
     drag = None
@@ -694,6 +721,120 @@ def _setforce(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types:
                     "the engine's force (of both masses) moves the other alone: eps in its frame"
                     + (f"; along {' and '.join(free)} the contact's own, an oblique contact between the two (not "
                        "computed)" if free else ""))
+
+
+def _kept_along(style: str, u: tuple, n: tuple) -> float:
+    """The share of a force along the unit vector ``n`` that fix lineforce or planeforce (unit
+    direction ``u``) leaves along ``n``: (n.u)^2 for a line, 1 - (n.u)^2 for a plane's normal."""
+    c = sum(a * b for a, b in zip(u, n)) ** 2
+    return c if style == "lineforce" else 1.0 - c
+
+
+def _contact_normals(deck, types: tuple, faces: list | None) -> tuple[str, list | None]:
+    """Where a collision's line of centres may point: ("any", None) in 3d, ("circle", [axis]) for
+    every direction across an axis (a 2d deck's contacts lie in xy; a cylinder wall's normal lies
+    across its axis), ("list", normals) for a wall whose faces' normals are known."""
+    axes = ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+    if len(types) == 1 and faces:
+        normals, circles = [], []
+        for _, n in faces:
+            if isinstance(n, tuple):
+                normals.append(n)
+            elif n >= 0:
+                normals.append(axes[n])
+            else:
+                circles.append(axes[-n - 1])
+        if circles and normals or len(set(circles)) > 1:
+            return "any", None
+        return ("circle", circles[:1]) if circles else ("list", normals)
+    if getattr(deck, "dimension", 3) == 2:
+        return "circle", [axes[2]]
+    return "any", None
+
+
+def _projection_over(style: str, u: tuple, kind: str, where: list | None) -> str:
+    """"whole" where fix lineforce/planeforce (unit direction ``u``) leaves a contact's force along
+    every normal it may have whole, "none" where it removes it along every one, else "mixed"."""
+    if kind == "list":
+        kept = [_kept_along(style, u, n) for n in where]
+    elif kind == "circle":
+        # over the directions n across the axis a, (n.u)^2 runs from 0 to |u|^2 - (a.u)^2
+        c = sum(x * y for x, y in zip(u, where[0])) ** 2
+        across = 1.0 - c
+        kept = [0.0, across] if style == "lineforce" else [1.0, 1.0 - across]
+    else:
+        return "mixed"
+    if all(abs(k - 1.0) <= 1e-12 for k in kept):
+        return "whole"
+    if all(abs(k) <= 1e-12 for k in kept):
+        return "none"
+    return "mixed"
+
+
+def _projected(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tuple, words: list,
+               acted: list, faces: list | None) -> None:
+    """fix ID group lineforce|planeforce x y z: each step the force on the group's atoms is cut to
+    its component along the line (x, y, z), or to its components in the plane of that normal; their
+    velocities are not touched. A head-on contact whose line of centres the force keeps whole has the
+    contact's eps; one across the line (along the plane's normal) moves no body of the group: two such
+    bodies pass through each other, one keeps its velocity while the engine's force (of both masses)
+    moves the other alone (as a setforce 0 along it; LAMMPS measured); one between, an oblique
+    collision, is not computed. A pair's force is always cut (LAMMPS computes it before the fixes
+    act); a wall's only where the wall's fix is defined before this one (the fixes add and cut
+    forces in the order they were defined; LAMMPS measured), which the audit does not follow. Where
+    the collision's direction is not known and the effect depends on it, no eps is the engine's.
+    (entry updated)"""
+    style = words[3]
+    u = [_number(w) for w in words[4:7]]
+    norm = math.sqrt(sum(x * x for x in u)) if len(u) == 3 and None not in u else 0.0
+    if len(words) != 7 or norm == 0.0:
+        entry["why"] = "its direction is not three numbers (a variable, a zero vector): its size is not computed"
+        return
+    u = tuple(x / norm for x in u)
+    line = (f"the line ({' '.join(words[4:7])})" if style == "lineforce"
+            else f"the plane of normal ({' '.join(words[4:7])})")
+    kind, where = _contact_normals(deck, types, faces)
+    over = _projection_over(style, u, kind, where)
+    across = "across the line" if style == "lineforce" else "along the plane's normal"
+    along = "along the line" if style == "lineforce" else "in the plane"
+    wall = len(types) == 1
+    if over == "whole":
+        entry["eps_engine"] = list(row["eps"])
+        entry["why"] = f"every contact this collision may have lies {along} ({line}), which keeps its force whole"
+        return
+    if wall:
+        entry["why"] = (f"where the wall's fix is defined before it (the engine adds and cuts the forces in the order "
+                        f"the fixes were defined) it cuts the wall's force on the sphere to {line}: "
+                        + ("a contact " + across + " then has no force and the sphere passes through the wall; "
+                           if over == "none" else
+                           f"a contact {along} keeps the contact's eps, one {across} has no force (the sphere passes "
+                           "through the wall), one between differs; ")
+                        + "where the wall's fix is defined after it, the contact's own: the audit does not follow "
+                        "that order, no eps is the engine's")
+        return
+    if over == "none" and all(acted):
+        entry["why"] = (f"it cuts the contact's force on both bodies to {line}, across which every contact this "
+                        "collision may have lies: no force moves them apart, they pass through each other (no rebound)")
+        return
+    if over == "none":
+        if deck.code != "LAMMPS":
+            entry["why"] = (f"it cuts the force on the type {types[acted.index(True)]} body to {line}, across which "
+                            "every contact lies: that body keeps its velocity; its size is computed for LAMMPS only")
+            return
+        moving = held_contact(contact, pair, acted.index(False))
+        reach = pair.R1 + pair.R2
+        entry["eps_engine"] = [None if eps is None or moving.reaches(g, reach) else _eps(moving, g)
+                               for g, eps in zip(row["speeds"], row["eps"])]
+        entry["why"] = (f"it cuts the force on the type {types[acted.index(True)]} body to {line}, across which every "
+                        "contact lies: that body keeps its velocity whatever the force, and the engine's force (of "
+                        "both masses) moves the other alone: eps in its frame")
+        return
+    held = ("both bodies pass through each other, no rebound" if all(acted) else
+            f"the type {types[acted.index(True)]} body keeps its velocity while the engine's force moves the other "
+            "alone")
+    entry["why"] = (f"it cuts the force on its atoms to {line}: a contact {along} has the contact's eps, one {across} "
+                    f"has no force on them ({held}), an oblique one lies between; the collision's direction is not "
+                    "known here: no eps is the engine's")
 
 
 def _eps(contact: Contact, g: float) -> float:

@@ -364,8 +364,9 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     where = place(loc)
     if written is None:
         raise DeckError(where, line, f"read_restart reads {words[1]}, which the deck did not write before (with "
-                                     "write_restart, in the engine's pass): what a binary restart file holds is not "
-                                     "read, not audited")
+                                     "write_restart, in the engine's pass): LAMMPS gives no account of the contact "
+                                     "coefficients a restart file holds (write_coeff writes none for the granular "
+                                     "styles, info only whether each pair is set), not audited")
     if info is None:
         raise DeckError(where, line, "LAMMPS gave no account of what it holds after the read (the audit's info): "
                                      "not audited")

@@ -80,7 +80,9 @@ class Scratch:
     (LAMMPS): a ``write_restart`` then runs, into the copy; ``mirrored`` the paths above the deck's
     folder that its files name (``../DEM/data.txt``, normalised), copied to the same place relative
     to the copy (:func:`scratch_copy`); ``silenced`` the output fixes made a fix that does nothing,
-    {((file, line), its text): its index in ``skipped``}."""
+    {((file, line), its text): its index in ``skipped``}; ``redirected`` the files a ``write_restart``
+    names outside the copy (an absolute path, a climb by ..), each -> the file in the scratch it
+    writes instead, which a later ``read_restart`` of that name reads."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -97,6 +99,7 @@ class Scratch:
     restarts: list = field(default_factory=list)
     mirrored: set = field(default_factory=set)
     silenced: dict = field(default_factory=dict)
+    redirected: dict = field(default_factory=dict)
 
 
 def normalised(text: str) -> str:
@@ -368,12 +371,24 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         # what it would run cannot be checked first: never run; the deck is refused if it reaches it
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     restart = getattr(marker, "restart", None)
-    if word == "write_restart" and restart is not None and len(key.split()) > 1 and (
-            scratch.confined or not _outside(key.split()[1], scratch) and "$" not in key.split()[1]):
-        # its file lands in the copy (the engine's working folder; confined, nothing else is
-        # writable): the deck's read_restart reads it back, in the audit's scratch alone
-        return None
+    if word == "write_restart" and restart is not None and len(key.split()) > 1:
+        name = key.split()[1]
+        if _outside(name, scratch):
+            # a file outside the copy (an absolute path: read-only for the confined engine, which
+            # stopped there) is written into the scratch instead, where a read_restart of the same
+            # name reads it back; its base name kept (a * in it is the step, as LAMMPS writes it)
+            name = name.strip("\"'")
+            target = scratch.redirected.setdefault(name, scratch.root / f"written_{len(scratch.redirected)}_"
+                                                                        f"{Path(name).name}")
+            return " ".join(["write_restart", str(target), *key.split()[2:]])
+        if scratch.confined or "$" not in name:
+            # its file lands in the copy (the engine's working folder; confined, nothing else is
+            # writable): the deck's read_restart reads it back, in the audit's scratch alone
+            return None
     if word == "read_restart" and restart is not None:
+        words = key.split()
+        if len(words) > 1 and words[1].strip("\"'") in scratch.redirected:
+            key = " ".join(["read_restart", str(scratch.redirected[words[1].strip("\"'")]), *words[2:]])
         k = len(scratch.restarts)
         scratch.restarts.append((loc[0], loc[1], key))
         path = scratch.root / f"restart_{k}"
