@@ -260,3 +260,24 @@ def test_a_gravity_on_both_spheres_under_the_same_cut_still_leaves_the_pair_alon
     row = {"speeds": [1.0], "eps": [c.eps(1.0)], "sticks": [False], "passes_through": [False]}
     got = effects(Deck(ntypes=1, code="LAMMPS", groups={"all": {1}}, beside=fixes), row, c, p, (1, 1))
     assert [e["style"] for e in got] == ["lineforce"]
+
+
+@needs_lammps
+@pytest.mark.parametrize("fix, named", [("fix a all aveforce 0.0 0.0 0.0", True), ("fix d all drag 0 0 0 1.0 0.001", True),
+                                        ("fix m all momentum 1 linear 1 1 1 rescale", True),
+                                        ("fix m two momentum 1 linear 1 1 1", True),
+                                        ("fix m all momentum 1 linear 1 1 1", False),
+                                        ("fix r all recenter INIT INIT INIT", False)],
+                         ids=["aveforce", "drag", "momentum rescale", "momentum on one type", "momentum", "recenter"])
+def test_forces_averaged_dragged_or_momentum_rescaled_are_named_beside_the_pair(tmp_path, fix, named):
+    """Field test r7: fix aveforce, drag, momentum and recenter were named only as lines not understood.
+    LAMMPS, the pair head-on (hooke 1000 500, g 1, 2000 and 4000 steps per contact): aveforce 0 0 0
+    along the collision lets the spheres pass through each other; drag 1.0 0.001 towards a point gives
+    0.98980 and 0.99012 where the contact gives 0.99551; a linear momentum removed from, or a recenter
+    of, a group holding both spheres shifts them alike (0.9955059679 and 0.9955058882 with and without,
+    to the last digit), while with rescale, or on one sphere only, their relative velocity changes."""
+    pairs, err = _audit(tmp_path, HEAD.format(T=T) + fix + "\nrun 1\n")
+    style = fix.split()[3]
+    assert (f"fix {style} ({fix.split()[1]})" in err) is named, err
+    assert any(b["style"] == style for b in pairs[(1, 2)]["beside"]) is named
+    assert f"not understood: {fix}" not in err

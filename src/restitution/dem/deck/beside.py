@@ -38,6 +38,13 @@ BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
           "gravity": "a gravity on the atoms of its group only",
           "lineforce": "the forces on its atoms cut to their component along a line",
           "planeforce": "the forces on its atoms cut to their components in a plane",
+          "aveforce": "the forces on its atoms replaced by their group's average (two spheres of a contact in the "
+                      "group: their contact forces cancel)",
+          "drag": "a force pulling each atom towards a point",
+          "momentum": "its group's momentum removed every few steps, which changes a sphere's velocity against a "
+                      "wall, and with angular or rescale the velocities of two spheres unlike",
+          "recenter": "its group's atoms shifted to keep their centre of mass in place, which moves a sphere "
+                      "against a wall",
           "temp/berendsen": "a thermostat rescaling the velocities", "temp/rescale": "a thermostat rescaling the velocities",
           "temp/csvr": "a thermostat rescaling the velocities", "temp/csld": "a thermostat replacing the velocities",
           # integrators (meeting.INTEGRATORS) with a Nose-Hoover thermostat on the velocities they integrate
@@ -234,6 +241,8 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
         acted = [t in held for t in types] if held is not None else None
         if acted is not None and not any(acted):
             continue
+        if len(types) == 2 and acted is not None and all(acted) and _alike(words):
+            continue                       # both spheres shifted alike: their relative motion is as it was
         entry = {"fix": words[1], "style": style, "file": loc[0], "line": loc[1], "what": BESIDE[style],
                  "eps_engine": None, "why": "", "along": None}
         if acted is None:
@@ -242,6 +251,13 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
             _size(entry, deck, row, contact, pair, types, words, acted, frozen_contact, faces)
         out.append(entry)
     return out
+
+
+def _alike(words: list) -> bool:
+    """Whether fix ``words`` changes the velocities or positions of every atom of its group alike
+    (a linear momentum removed without rescaling; a shift of the whole group), which leaves two
+    spheres of the group as they move relative to each other."""
+    return words[3] == "recenter" or words[3] == "momentum" and not {"angular", "rescale"} & set(words[5:])
 
 
 def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, pair: Pair,
