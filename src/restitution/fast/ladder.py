@@ -412,7 +412,7 @@ class Ladder:
         if build is not None and not isinstance(build, bool):   # build="no" is truthy: it would build
             raise ParameterError("build", build, "must be True, False or None")
         if isinstance(method, str) and method in RENAMED:
-            print(f'restitution: eps method "{method}" is now called "{RENAMED[method]}" (a fitted approximation '
+            print(f'restitution: note: eps method "{method}" is now called "{RENAMED[method]}" (a fitted approximation '
                   f'with a measured error, not a closed form); "{method}" will go', file=sys.stderr, flush=True)
             method = RENAMED[method]
         if method is not None and method not in self.rung_names:
