@@ -150,11 +150,11 @@ def bench_pair(alpha: str, gamma: str, n_points: int, quick: bool, out: Path, lo
              f"(with the relations, the uniform form and the mpmath check {build_s:.1f} s); claimed bound "
              f"{m.bound(omegas):.2g}")
 
-    # -- the uniform closed form (restitution.core.uniform), alpha > gamma
+    # -- the uniform approximation (restitution.core.uniform), alpha > gamma
     if cal.uniform is not None:
         u = cal.uniform
         uniform_eps(u, big[:10])
-        row("closed-form", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: uniform_eps(u, big), n_fast, 5),
+        row("uniform", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: uniform_eps(u, big), n_fast, 5),
             approx=uniform_eps(u, omegas), note=f"stated bound {u.bound_eps:.2g} (eps), {u.bound_one_minus_eps:.2g} (1 - eps)")
 
     # -- expansions on their domains
@@ -261,13 +261,13 @@ def bench_overlap(alpha: str, gamma: str, n_points: int, quick: bool, out: Path,
     row("master (overlap)", f"{curve.coef.shape[0]}x{curve.coef.shape[1] - 1} Chebyshev",
         _time_per_point(lambda: curve.eps(big), n_fast, 5), curve.eps(omegas),
         note=f"build {build_s:.1f} s on its own; stated bound {curve.bound_inside:.2g}")
-    # the overlap rule's uniform closed form, where it exists (gamma < alpha < 2 gamma + 1)
+    # the overlap rule's uniform approximation, where it exists (gamma < alpha < 2 gamma + 1)
     if ex.gamma < ex.alpha < 2 * ex.gamma + 1:
         t0 = time.perf_counter()
         u = build_uniform(Problem(as_exponents(ex), "overlap"))
         u_build = time.perf_counter() - t0
         uniform_eps(u, big[:10])
-        row("closed-form (overlap)", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: uniform_eps(u, big), n_fast, 5),
+        row("uniform (overlap)", f"uniform, {len(u.coef)} coef.", _time_per_point(lambda: uniform_eps(u, big), n_fast, 5),
             uniform_eps(u, omegas), note=f"build {u_build:.1f} s; stated bound {u.bound_eps:.2g} (eps), "
                                          f"{u.bound_one_minus_eps:.2g} (1 - eps) over Omega in [1e-8, 1e8]")
     collide_fast(ex.p, ex.q_alpha, ex.q_gamma, omegas[:2], 1e-9, "overlap")
@@ -404,7 +404,7 @@ def pareto(rows: list[dict], path_pdf: Path, path_png: Path) -> None:
 
     plt.rcParams.update({"svg.hashsalt": "restitution", "font.size": 8})
     fig, axes = plt.subplots(1, len(EXPONENTS), figsize=(7.0, 3.4), sharey=True)
-    markers = {"closed-form": "h", "master": "*", "integrator": "o", "solve_ivp plain": "s", "collide (scipy)": "D",
+    markers = {"uniform": "h", "master": "*", "integrator": "o", "solve_ivp plain": "s", "collide (scipy)": "D",
                "highprec": "P", "viscous": "<", "elastic": ">", "pade-mp2011": "X", "paper-c": "v",
                "master (overlap)": "p", "integrator (overlap)": "d", "collide (scipy, overlap)": "x",
                "fitted-c": "^", "perturbation-N1": "1", "perturbation-N2": "2", "perturbation-N3": "3",

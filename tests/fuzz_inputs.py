@@ -42,7 +42,7 @@ SUBCOMMANDS = {
 }
 CHOICES = {
     "collide-method": (["reference", "fast", "closed-form"], ["bogus", "", "REFERENCE"]),
-    "eps-method": (["integrator", "closed-form", "viscous", "elastic", "reference"], ["bogus", "master2"]),
+    "eps-method": (["integrator", "uniform", "closed-form", "viscous", "elastic", "reference"], ["bogus", "master2"]),
     "end": (["force", "overlap"], ["both", "", "Force"]),
     "normal": (["hooke", "hertz", "hertz/material"], ["dmt", ""]),
     "damping": (["velocity", "mass_velocity", "viscoelastic", "tsuji", "coeff_restitution"], ["mdr", ""]),

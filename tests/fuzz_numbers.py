@@ -184,7 +184,7 @@ def check_number_case(case) -> list[dict]:
         # paper's and Hertz exponents; the relations' builds take minutes and stay unbuilt
         pair = (case["alpha"], case["gamma"])
         build = ((method == "master" and pair in COMMON_PAIRS)
-                 or (method == "closed-form" and pair in COMMON_PAIRS[:2]))
+                 or (method == "uniform" and pair in COMMON_PAIRS[:2]))
         r = attempt(method, lambda m=method: api.epsilon(tol=None, method=m, build=build, **common))
         if r is not None:
             records.append(judge(method, float(r.eps[0]), float(r.error_bound)))

@@ -81,12 +81,12 @@ for tol, method, bound, cost in rows:
 # cost nothing until the tolerance passes that bound, and then the integrators take over.
 #
 # Forcing a method (`method=...`, with `tol=None` to take its own bound) shows the whole menu the
-# chooser picks from: the fitted closed form, the master curve, the compiled integrator and scipy's
+# chooser picks from: the fitted uniform approximation, the master curve, the compiled integrator and scipy's
 # reference integration, on 200 speeds.
 
 # %%
 forced = {}
-for method in ("closed-form", "master", "integrator", "reference"):
+for method in ("uniform", "master", "integrator", "reference"):
     epsilon(alpha="3/2", gamma="1/2", omega=omega, method=method, tol=None)   # builds, if any
     t0 = time.perf_counter()
     r = epsilon(alpha="3/2", gamma="1/2", omega=omega, method=method, tol=None)

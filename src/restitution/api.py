@@ -63,6 +63,9 @@ def epsilon(*, alpha=None, gamma=None, omega=None, g=None, D1=None, D2=None, tol
         ``method`` takes that method's bound as it comes.
     method : str, optional
         Force one rung by name (see the table of rungs); by default the cheapest that meets ``tol``.
+        ``"uniform"`` is the fitted uniform approximation (exact where a closed form exists:
+        alpha = gamma, the linear dashpot); its former name ``"closed-form"`` still works, with a
+        note on stderr.
     build : bool, optional
         ``False``: use only what needs no build (no master curve or fit is made or read from a
         build this call would start).
@@ -123,10 +126,11 @@ def collide(alpha=None, gamma=None, omega=None, *, method: str = "reference", rt
       works and says so on stderr.
     * ``"highprec"``: mpmath Taylor series at ``digits`` digits (:mod:`restitution.core.highprec`),
       rounded to doubles; ``rtol`` of the result is 10^(1 - digits).
-    * ``"exact-family"`` and ``"closed-form"``: exact, for alpha = 2 gamma + 1 only: the linear
+    * ``"exact-family"`` and its alias ``"closed-form"``: exact, for alpha = 2 gamma + 1 only: the linear
       spring-dashpot (alpha = 1, gamma = 0) and the family that maps onto it at (gamma+1) Omega
       (:func:`restitution.core.exact_family.exact_collision`; tau_b, tau_c by quadrature to about
-      1e-14), every Omega > 0; eps within 8 u (1 + ln(1/eps)) as ``error_bound`` states.
+      1e-14), every Omega > 0; eps within 8 u (1 + ln(1/eps)) as ``error_bound`` states. (For
+      :func:`epsilon`, ``"closed-form"`` is the old name of ``"uniform"``, the fitted approximation.)
 
     ``end``: the end-of-contact rule, "force" (default) or "overlap" (see
     :data:`restitution.core.results.END_RULES`); every method serves both. With ``problem=`` the

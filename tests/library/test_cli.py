@@ -144,7 +144,7 @@ def test_bad_input_gives_one_line_and_exit_2(args):
     # scipy.integrate's import was most of a one-point call; the compiled integrator reads only its tableau
     (["--alpha", "3/2", "--gamma", "1", "--omega", "0.1", "--no-build"], "integrator", "scipy.integrate"),
     # numba's import and start cost most of a second; a request no compiled kernel serves skips them
-    (["--alpha", "1", "--gamma", "1", "--omega", "0.1", "3"], "closed-form", "numba"),
+    (["--alpha", "1", "--gamma", "1", "--omega", "0.1", "3"], "uniform", "numba"),
 ])
 def test_a_one_off_eps_call_imports_only_what_its_answer_needs(argv, method, unused, empty_cache):
     # an empty cache of its own: with a master curve that an earlier test built in the session's

@@ -136,13 +136,13 @@ def test_forced_method(kim):
         kim.evaluate(np.array([0.1, 1.0]), tol=1e-6, method="paper-c")
     assert exc.value.field == "tol"
     with pytest.raises(ParameterError) as exc:   # the uniform form exists, but its bound is ~1e-5
-        kim.evaluate(np.array([0.1]), tol=1e-6, method="closed-form")
-    assert exc.value.field == "tol" and "closed-form" in str(exc.value)
+        kim.evaluate(np.array([0.1]), tol=1e-6, method="uniform")
+    assert exc.value.field == "tol" and "uniform" in str(exc.value)
     with pytest.raises(ParameterError) as exc:   # outside the range its bound was measured on
-        kim.evaluate(np.array([1e-9]), method="closed-form", tol=None)
+        kim.evaluate(np.array([1e-9]), method="uniform", tol=None)
     assert exc.value.field == "method" and "1e-08" in str(exc.value)
-    r = kim.evaluate(np.array([0.1]), method="closed-form", tol=None)   # no tol: its own bound
-    assert r.method == "closed-form" and r.tol is None and 0 < r.error_bound <= 1e-4
+    r = kim.evaluate(np.array([0.1]), method="uniform", tol=None)   # no tol: its own bound
+    assert r.method == "uniform" and r.tol is None and 0 < r.error_bound <= 1e-4
 
 
 def test_a_million_speeds_are_answered_by_the_master_curve(kim):
@@ -223,13 +223,13 @@ def test_integrator_bound_against_mpmath(alpha, gamma):
 def test_closed_form_rungs_against_mpmath(alpha, gamma, tmp_path):
     lad = Ladder((alpha, gamma), cache_dir=str(tmp_path), stream=io.StringIO())
     om = np.array([0.07, 1.3, 450.0])
-    q = next(q for q in lad.quotes(om, 1e-12) if q.name == "closed-form")
+    q = next(q for q in lad.quotes(om, 1e-12) if q.name == "uniform")
     got = q.run(om)
     ref = np.array([hp(alpha, gamma, w) for w in om])
     assert np.all(np.abs(got / ref - 1) <= q.bound)
     r = lad.evaluate(om, tol=1e-12)
     # the dashpot is the exact family's gamma = 0 member, whose rung the chooser takes first
-    assert r.method == ("exact-family" if (alpha, gamma) == ("1", "0") else "closed-form")
+    assert r.method == ("exact-family" if (alpha, gamma) == ("1", "0") else "uniform")
 
 
 # ----------------------------------------------------------------------------- the public call
@@ -371,7 +371,7 @@ def _panel(c, omega=0.47):
 def test_a_tampered_calibration_is_never_used(tmp_path, entry, change, reseal):
     """Valid JSON with a shifted coefficient (sealed again or not) or a NaN: not used with its tight
     bound. Without building it is refused; with building it is rebuilt and eps is right again."""
-    method = {"master": "master", "uniform": "closed-form"}[entry]
+    method = {"master": "master", "uniform": "uniform"}[entry]
     lad = Ladder(("3/2", "1"), settings=SMALL, cache_dir=str(tmp_path), stream=io.StringIO())
     lad.calibration()
     omega = np.geomspace(0.05, 20.0, 7)

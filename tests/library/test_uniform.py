@@ -97,12 +97,13 @@ def test_pairs_without_a_uniform_form_are_refused_with_the_reason(alpha, gamma, 
         skeleton((alpha, gamma))
 
 
-def test_cli_closed_form_json_contract(tmp_path, capsys):
-    """`restitution eps ... --method closed-form --json`: eps, method, error_bound, coefficients."""
+def test_cli_uniform_json_contract(tmp_path, capsys):
+    """`restitution eps ... --method uniform --json`: eps, method, error_bound, coefficients."""
     assert main(["eps", "--alpha", "3/2", "--gamma", "1", "--omega", "1e-6", "0.3", "1e7",
-                 "--method", "closed-form", "--json"]) == 0
-    out = json.loads(capsys.readouterr().out)
-    assert out["method"] == "closed-form" and len(out["eps"]) == 3
+                 "--method", "uniform", "--json"]) == 0
+    captured = capsys.readouterr()
+    out = json.loads(captured.out)
+    assert out["method"] == "uniform" and len(out["eps"]) == 3 and "closed-form" not in captured.err
     assert 0 < out["error_bound"] <= 1e-4
     c = out["coefficients"]
     assert {"k", "A", "b", "c_log", "c3", "sigma", "m0", "m1", "a"} <= set(c) and len(c["a"]) == 12
@@ -110,8 +111,31 @@ def test_cli_closed_form_json_contract(tmp_path, capsys):
     assert abs(out["eps"][1] / ref - 1) <= out["error_bound"]
 
 
-def test_cli_refuses_closed_form_for_alpha_below_gamma(capsys):
-    assert main(["eps", "--alpha", "1", "--gamma", "3/2", "--omega", "0.3", "--method", "closed-form"]) == 2
+def test_cli_old_name_closed_form_still_answers_with_a_one_line_note(capsys):
+    """The uniform approximation was called closed-form: that name still works, says so once on
+    stderr, and answers as "uniform" does."""
+    argv = ["eps", "--alpha", "3/2", "--gamma", "1", "--omega", "0.3", "--json", "--method"]
+    assert main([*argv, "uniform"]) == 0
+    new = json.loads(capsys.readouterr().out)
+    assert main([*argv, "closed-form"]) == 0
+    captured = capsys.readouterr()
+    old = json.loads(captured.out)
+    err = captured.err.strip().splitlines()
+    assert len(err) == 1 and '"closed-form"' in err[0] and '"uniform"' in err[0] and "Traceback" not in captured.err
+    assert old["method"] == "uniform" and old["eps"] == new["eps"] and old["error_bound"] == new["error_bound"]
+
+
+def test_collide_closed_form_stays_the_exact_family(capsys):
+    """collide's "closed-form" is the exact family's whole collision (a genuine closed form), no note;
+    the uniform approximation gives eps alone and is no collide method."""
+    exact = main(["collide", "--alpha", "3", "--gamma", "1", "--omega", "2", "--json", "--method", "closed-form"])
+    captured = capsys.readouterr()
+    assert exact == 0 and captured.err == ""
+    assert main(["collide", "--alpha", "3", "--gamma", "1", "--omega", "2", "--method", "uniform"]) == 2
+
+
+def test_cli_refuses_uniform_for_alpha_below_gamma(capsys):
+    assert main(["eps", "--alpha", "1", "--gamma", "3/2", "--omega", "0.3", "--method", "uniform"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "alpha < gamma" in err[0]
 

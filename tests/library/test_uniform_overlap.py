@@ -118,9 +118,9 @@ def test_pairs_without_an_overlap_form_are_refused_with_the_reason(alpha, gamma,
         skeleton(Problem.of(alpha, gamma, "overlap"))
 
 
-def test_cli_refuses_the_closed_form_where_the_bodies_can_stick(capsys):
+def test_cli_refuses_the_uniform_approximation_where_the_bodies_can_stick(capsys):
     assert main(["eps", "--alpha", "4", "--gamma", "1", "--omega", "3", "--end", "overlap",
-                 "--method", "closed-form"]) == 2
+                 "--method", "uniform"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "stick" in err[0]
 
@@ -144,14 +144,14 @@ def test_a_tampered_overlap_form_is_never_used(tmp_path, change):
     rebuilt with building, and eps right again."""
     omega = np.geomspace(0.05, 20.0, 7)
     first = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
-    good = first.with_end("overlap").evaluate(omega, tol=None, method="closed-form").eps
+    good = first.with_end("overlap").evaluate(omega, tol=None, method="uniform").eps
     (path,) = tmp_path.glob("uniform-overlap-*.json")
     _tamper(path, change)
     fresh = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
     with pytest.raises(ParameterError, match="method"):
-        fresh.with_end("overlap").evaluate(omega, tol=None, method="closed-form", build=False)
+        fresh.with_end("overlap").evaluate(omega, tol=None, method="uniform", build=False)
     again = Ladder(("3/2", "1"), cache_dir=str(tmp_path), stream=io.StringIO())
-    r = again.with_end("overlap").evaluate(omega, tol=None, method="closed-form")
+    r = again.with_end("overlap").evaluate(omega, tol=None, method="uniform")
     np.testing.assert_allclose(r.eps, good, rtol=1e-12)
     ref = np.array([collide(Problem.of("3/2", "1", "overlap"), float(w), rtol=1e-12).eps for w in omega])
     assert np.max(np.abs(r.eps / ref - 1)) <= r.error_bound

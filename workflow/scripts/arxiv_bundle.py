@@ -113,9 +113,8 @@ of the supplement is made by one script under workflow/scripts/, a step of the S
   uniform-approximation atlas: uniform_atlas.py
 The tolerance study is results/<variant>/reference/accuracy.csv. Kim's matching procedure, in all its
 readings, is restitution.audit.matching; the reading used for the figures is set in config.yaml, which
-also lists the force laws (as "variants"). `restitution eps --method closed-form --json` prints the
-uniform approximation as one line of C (the option's name is older than the wording: it is the fitted
-uniform approximation). The DEM codes' contact laws are restitution.dem.engines, one module per code;
+also lists the force laws (as "variants"). `restitution eps --method uniform --json` prints the
+uniform approximation's numbers (its old name closed-form still works, with a note). The DEM codes' contact laws are restitution.dem.engines, one module per code;
 `restitution calibrate` (with --end for the end rule) inverts eps(Omega), and `restitution lammps --eps`
 writes the pair_coeff line. The overlap rule's constant C is computed by restitution.core.overlap_limit,
 and 1 - eps from the dissipated energy by restitution.core.energy.

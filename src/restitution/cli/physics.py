@@ -79,7 +79,8 @@ def add_eps_subcommand(subparsers) -> argparse.ArgumentParser:
     p.add_argument("--tol", type=number_argument, default=None,
                    help="relative tolerance in (0, 1) (default 1e-9; with --method and no --tol, that method's own bound)")
     p.add_argument("--method", default=None,
-                   help="force one rung of the ladder (it must meet --tol if given), e.g. closed-form, master, integrator")
+                   help="force one rung of the ladder (it must meet --tol if given), e.g. uniform (the fitted uniform "
+                        "approximation; its old name closed-form still works, with a note), master, integrator")
     p.add_argument("--no-build", action="store_true",
                    help="never build the master curve; use only methods that need nothing cached")
     add_end(p)

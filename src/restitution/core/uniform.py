@@ -1,5 +1,6 @@
-"""eps(Omega) in one closed form, exact to leading and first order in both limits (alpha > gamma),
-and one for the overlap end rule (gamma < alpha < 2 gamma + 1), exact to leading order in both.
+"""eps(Omega) by one uniform approximation, exact to leading and first order in both limits
+(alpha > gamma), and one for the overlap end rule (gamma < alpha < 2 gamma + 1), exact to leading
+order in both; in between it is fitted (12 numbers), so its error is measured, not proved.
 
 With eta = 1/eps, x = b Omega and u = tanh((sigma/2) ln x) = (x^sigma - 1)/(x^sigma + 1):
 
@@ -22,7 +23,8 @@ u (u lies in (-1, 1), so 12 significant digits of each a_j are plenty; the pipel
 printed digits). It is fitted (linear least squares, made minimax by Lawson's reweighting) to the
 relative error of eta - 1, which bounds the relative error of eps and at most twice that of
 1 - eps. The shape (sigma, m0, m1) is chosen from a fixed small set by the error on points not
-used in the fit; the bound is stated from points used neither in the fit nor in that choice
+used in the fit; the error (``bound_eps``, ``bound_one_minus_eps``: an estimate with a margin,
+not a proven bound) is stated from points used neither in the fit nor in that choice
 (:func:`restitution.fast.uniform_build.build_uniform`).
 
 Under the overlap rule (contact ends at x = 0, :mod:`restitution.core.overlap_limit`) fast impacts

@@ -7,7 +7,7 @@ eps request builds only what it reads), cached and checked on load by :mod:`rest
 * one build per relation rung (``relation_build(name)``): its c0-c2 (the paper's perturbation
   route takes seconds an order); their errors are measured on the master curve's grid when loaded,
   so a stored c0-c2 is always quoted with the error it really has;
-* the uniform closed form (``UNIFORM``, :mod:`restitution.fast.uniform_build`) and its overlap-rule
+* the uniform approximation (``UNIFORM``, :mod:`restitution.fast.uniform_build`) and its overlap-rule
   twin (``UNIFORM_OVERLAP``, gamma < alpha < 2 gamma + 1);
 * the master curve's check against the mpmath reference (``MPMATH``,
   :func:`restitution.fast.master.mpmath_check`), which can only widen the curve's bound.
@@ -123,7 +123,7 @@ class Calibration:
     profiles: dict            # rung -> np.ndarray of relative errors on master.grid_log10_omega
     relations: dict           # rung -> {"c": [c0, c1, c2], "source": str}
     unavailable: dict         # rung -> reason
-    uniform: UniformForm | None = None   # the uniform closed form (alpha > gamma)
+    uniform: UniformForm | None = None   # the uniform approximation (alpha > gamma)
 
 
 def measure_master(master: MasterCurve) -> Calibration:

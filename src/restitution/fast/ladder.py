@@ -55,7 +55,13 @@ from .rung import DEFAULT_TOL, TOL_FLOOR, Quote, Request, Setting
 from .rungs import ladder_rungs, rung_names
 from .rungs.calibrated import SAFETY
 
-__all__ = ["EpsResult", "Part", "PartSettings", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "DEFAULT_TOL", "TOL_FLOOR"]
+__all__ = ["EpsResult", "Part", "PartSettings", "Ladder", "epsilon", "rung_names", "SAFETY", "MUELLER_POESCHEL_PADE", "DEFAULT_TOL", "TOL_FLOOR",
+           "RENAMED"]
+
+#: Old method names still accepted, with a one-line note on stderr: scripts and command lines written
+#: before the rename keep working, and say what to write instead. "closed-form" was the fitted uniform
+#: approximation's name (alpha = gamma and the dashpot, answered exactly by the same rung, included).
+RENAMED = {"closed-form": "uniform"}
 
 # ------------------------------------------------------------------------------------------ result
 @dataclass(frozen=True)
@@ -136,7 +142,7 @@ class EpsResult:
         The chooser's table (``method``, ``bound``, ``cost``, ``setting`` (a Setting), ``available``,
         ``reason``).
     coefficients : dict, optional
-        The closed form's numbers, when that rung answered.
+        The uniform approximation's numbers, when that rung answered.
     parts : tuple of Part, optional
         Which rung answered which points, with its bound over them.
 
@@ -164,7 +170,7 @@ class EpsResult:
     tol: float
     setting: Setting | PartSettings = field(default_factory=Setting)
     candidates: tuple = ()
-    coefficients: dict | None = None   # the closed form's numbers, when that rung answered
+    coefficients: dict | None = None   # the uniform approximation's numbers, when that rung answered
     parts: tuple = ()
 
     alpha = read_through("problem", "alpha")
@@ -405,6 +411,10 @@ class Ladder:
         tol = _check_tol(DEFAULT_TOL if tol is None else tol)
         if build is not None and not isinstance(build, bool):   # build="no" is truthy: it would build
             raise ParameterError("build", build, "must be True, False or None")
+        if isinstance(method, str) and method in RENAMED:
+            print(f'restitution: note: eps method "{method}" is now called "{RENAMED[method]}" (a fitted approximation '
+                  f'with a measured error, not a closed form); "{method}" will go', file=sys.stderr, flush=True)
+            method = RENAMED[method]
         if method is not None and method not in self.rung_names:
             raise ParameterError("method", method, f"must be one of {', '.join(self.rung_names)}")
         flat = om.ravel()

@@ -1,6 +1,7 @@
-"""Building the uniform closed form of :mod:`restitution.core.uniform` for one pair of exponents.
+"""Building the uniform approximation of :mod:`restitution.core.uniform` for one pair of exponents.
 
-Three disjoint sets of points, so that the stated bound is a measurement, not a fit residual:
+Three disjoint sets of points, so that its stated error (``bound_eps``) is a measurement, not a fit residual
+(an estimate with a margin, not a proven bound):
 
 1. fit: every other point of a grid in log10 Omega (steps of GRID_STEP over [1e-9, 1e9]), eps from
    the compiled integrator at rtol 1e-14 (accurate to ~1e-14, validated against mpmath);

@@ -1,5 +1,5 @@
-"""The uniform closed forms (:mod:`restitution.core.uniform`, both end rules) as compiled loops: the
-ladder's closed-form rung and the benchmark evaluate them here (the numpy version in core makes a
+"""The uniform approximations (:mod:`restitution.core.uniform`, both end rules) as compiled loops: the
+ladder's uniform rung and the benchmark evaluate them here (the numpy version in core makes a
 dozen temporary arrays per call and reaches about half the speed)."""
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
-"""The uniform closed form as a build (:mod:`restitution.fast.uniform_build`), one per end rule:
+"""The uniform approximation as a build (:mod:`restitution.fast.uniform_build`), one per end rule:
 the force rule's (alpha > gamma, 0.6-0.7 s) and the overlap rule's own (gamma < alpha < 2 gamma + 1,
-2-3.5 s). A stored form is used only if it is for these exponents and rule and meets its bound at
+2-3.5 s). A stored form is used only if it is for these exponents and rule and meets its error estimate at
 a few points (the overlap rule's from Omega = 1e-3 up: below, each integration of the creeping
 return is slow)."""
 
@@ -19,7 +19,7 @@ __all__ = ["UniformFormBuild"]
 
 
 class UniformFormBuild(Build):
-    """The uniform closed form of the end rule ``end`` ("force" or "overlap")."""
+    """The uniform approximation of the end rule ``end`` ("force" or "overlap")."""
 
     def __init__(self, end: str):
         self.end = end
@@ -47,4 +47,4 @@ class UniformFormBuild(Build):
         return UniformForm.from_dict(d)
 
     def what(self, site):
-        return f"the {self.end} rule's uniform closed form for {site.for_pair}"
+        return f"the {self.end} rule's uniform approximation for {site.for_pair}"

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from ..rung import Rung
 from .calibrated import ElasticRung, MasterRung, PadeRung, RelationRung, ViscousRung
-from .closed_form import ClosedForm
 from .exact_family import ExactFamily
 from .highprec import Highprec
 from .integrator import Integrator
@@ -17,6 +16,7 @@ from .overlap_integrator import OverlapIntegrator
 from .overlap_law import OverlapLaw
 from .overlap_master import OverlapMaster
 from .reference import Reference
+from .uniform import Uniform
 
 __all__ = ["RUNGS", "ladder_rungs", "rung_names"]
 
@@ -26,7 +26,7 @@ RUNGS: tuple[Rung, ...] = (
     PadeRung(),
     ViscousRung(),
     ElasticRung(),
-    ClosedForm(),
+    Uniform(),
     MasterRung(),
     OverlapMaster(),
     OverlapLaw(),

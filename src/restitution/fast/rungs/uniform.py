@@ -1,8 +1,13 @@
-"""The closed-form rung: exact where the problem is solvable (alpha = gamma; the linear
-spring-dashpot, both end rules), otherwise the uniform form of :mod:`restitution.core.uniform`
-built on its own (alpha > gamma under the force rule, gamma < alpha < 2 gamma + 1 under the overlap
-rule; Omega in FORM_RANGE, its stated bound). Not for alpha = 2 gamma + 1 other than the dashpot:
-the exact-family rung (:mod:`restitution.fast.rungs.exact_family`) answers those exactly."""
+"""The uniform rung: the uniform approximation of :mod:`restitution.core.uniform`, fitted and built
+on its own (alpha > gamma under the force rule, gamma < alpha < 2 gamma + 1 under the overlap rule;
+Omega in FORM_RANGE), its error estimate the build's measured one (twice the largest error on
+held-out points plus the references' accuracy: a measurement, not a proof). Where the problem is
+solvable it answers with the exact closed form instead (alpha = gamma; the linear spring-dashpot,
+both end rules). Not for alpha = 2 gamma + 1 other than the dashpot: the exact-family rung
+(:mod:`restitution.fast.rungs.exact_family`) answers those exactly.
+
+It was called "closed-form" until the fitted formula was named for what it is; the ladder still
+accepts that name, with a note (:data:`restitution.fast.ladder.RENAMED`)."""
 
 from __future__ import annotations
 
@@ -15,9 +20,8 @@ from ..uniform_build import REFERENCE_ACCURACY
 from ..uniform_eval import uniform_eps
 from ..calibration import UNIFORM, UNIFORM_OVERLAP
 from ..rung import Request, Rung, Setting
-from .exact_family import family_collision
 
-__all__ = ["ClosedForm", "EXACT_BOUND"]
+__all__ = ["Uniform", "EXACT_BOUND"]
 
 #: Bound of the exact forms (validated against mpmath).
 EXACT_BOUND = 2e-14
@@ -45,35 +49,32 @@ def dashpot_eps(omega: np.ndarray, end: str = "force") -> np.ndarray:
     return np.array([dashpot_collision(float(w), end=end).eps for w in np.ravel(omega)])
 
 
-class ClosedForm(Rung):
-    """Exact where the problem is solvable (alpha = gamma by :mod:`restitution.core.asymptotics`;
-    the linear spring-dashpot by :mod:`restitution.core.dashpot`), bound EXACT_BOUND (validated
-    against mpmath); otherwise the uniform form (:mod:`restitution.core.uniform`, a build of its own
-    per end rule), Omega in FORM_RANGE, bound the form's stated one: twice its largest error on
-    points used neither in its fit nor in the choice of its shape."""
+class Uniform(Rung):
+    """The uniform approximation (:mod:`restitution.core.uniform`, a build of its own per end rule),
+    Omega in FORM_RANGE, its error the build's estimate: twice its largest error measured on points
+    used neither in its fit nor in the choice of its shape, plus the references' accuracy. Where the
+    problem is solvable, the exact closed form instead (alpha = gamma by
+    :mod:`restitution.core.asymptotics`; the linear spring-dashpot by :mod:`restitution.core.dashpot`),
+    bound EXACT_BOUND (validated against mpmath)."""
 
-    name = "closed-form"
+    name = "uniform"
     ends = ("force", "overlap")
-    # one collision in closed form, trajectory quantities included, exists for the linear dashpot
-    # and the family that maps onto it (what collide's "closed-form" has always covered)
-    collides = True
-
-    def collision(self, problem, omega, *, rtol, digits, t_eval=None):
-        return family_collision(problem, omega, self.name)
+    # no collision: the approximation gives eps alone (collide's "closed-form", the exact family's
+    # whole collision, is an alias of "exact-family": restitution.fast.collide.ALIASES)
 
     def outside(self, req):
         kind = _kind(req)
         if kind == "none":
-            return ("alpha < gamma: the viscous limit's first correction, which the uniform form needs, "
+            return ("alpha < gamma: the viscous limit's first correction, which the uniform approximation needs, "
                     "is not known in closed form")
         if kind == "family":
-            return "alpha = 2 gamma + 1: the exact-family rung answers exactly, no uniform form is fitted"
+            return "alpha = 2 gamma + 1: the exact-family rung answers exactly, no uniform approximation is fitted"
         if kind == "sticks":
-            return "alpha >= 2 gamma + 1: the bodies can stick under the overlap rule, no uniform form"
+            return "alpha >= 2 gamma + 1: the bodies can stick under the overlap rule, no uniform approximation"
         if kind == "dashpot" and req.end == "overlap" and req.lo <= 0.25:
             return "Omega <= 1/4: the overdamped dashpot sticks under the overlap rule"
         if kind == "uniform" and (req.lo < FORM_RANGE[0] or req.hi > FORM_RANGE[1]):
-            return f"Omega outside [{FORM_RANGE[0]:g}, {FORM_RANGE[1]:g}] (where its bound was measured)"
+            return f"Omega outside [{FORM_RANGE[0]:g}, {FORM_RANGE[1]:g}] (where its error was measured)"
         return None
 
     def edges(self, req):
@@ -88,7 +89,7 @@ class ClosedForm(Rung):
         return UNIFORM_OVERLAP if req.end == "overlap" else UNIFORM
 
     def floor(self, req):
-        # a form's stated bound adds its references' accuracy to what it measured (uniform_build)
+        # a form's error estimate adds its references' accuracy to what it measured (uniform_build)
         return REFERENCE_ACCURACY
 
     def price(self, req):
@@ -100,7 +101,7 @@ class ClosedForm(Rung):
             return EXACT_BOUND, Setting(label="alpha = gamma")
         if kind == "dashpot":
             return EXACT_BOUND, Setting(label="spring-dashpot", end=req.end)
-        return form.bound_eps, Setting(label="uniform form", end=req.end)
+        return form.bound_eps, Setting(label="uniform approximation", end=req.end)
 
     def coefficients(self, req, form):
         kind = _kind(req)
