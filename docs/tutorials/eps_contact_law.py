@@ -101,8 +101,8 @@ fig, ax = plt.subplots(figsize=(6, 3.6))
 for method, (r, cost) in forced.items():
     ax.loglog([cost], [r.error_bound], "o", label=method)
 ax.set_xlabel("seconds per point (this build)")
-ax.set_ylabel("guaranteed relative error bound")
-ax.set_title("The menu: cost against guaranteed accuracy")
+ax.set_ylabel("stated relative error bound")
+ax.set_title("The menu: cost against stated accuracy")
 ax.legend(fontsize=8)
 fig.tight_layout()
 
