@@ -59,6 +59,21 @@ def test_generated_text_writes_numbers_and_minus_signs_as_mathematics():
     assert math_text("P-N2-K2-Dprinted") == "P-N2-K2-Dprinted"
 
 
+def test_printed_bounds_are_rounded_outward():
+    """A bound printed with fewer digits still holds: "at most" rounds up, "at least" down (a referee
+    found 1.106e-10 printed as "at most 1e-10" and 2.796e-9 as "at least 3e-9")."""
+    import numpy as np
+    from restitution_workflow.latex import outward, sci_down, sci_up
+
+    assert sci_up(1.106e-10) == r"\ensuremath{1.2\times 10^{-10}}"
+    assert sci_down(2.796e-9) == r"\ensuremath{2.7\times 10^{-9}}"
+    assert sci_up(0.0544) == "0.055" and sci_up(None) == "---"
+    values = np.random.default_rng(53).lognormal(0.0, 20.0, 2000) * np.where(np.arange(2000) % 3, 1, -1)
+    for x in values:
+        up, down = outward(x, 2, upper=True), outward(x, 2, upper=False)
+        assert down <= x <= up and up - down <= 1.01e-1 * 10.0 ** np.floor(np.log10(abs(x)))
+
+
 # ---------------------------------------------------------------------------------------------------------
 # Issue 43: the article is a physics paper (at most 16 pages, a Conclusions section) whose main text names
 # no part of the pipeline; the pipeline is named only in the "Data and code availability" paragraph. The

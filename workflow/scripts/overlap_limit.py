@@ -14,7 +14,7 @@ from functools import lru_cache
 import numpy as np
 import pandas as pd
 from matplotlib.lines import Line2D
-from restitution_workflow.latex import esc, frac_tex, sci
+from restitution_workflow.latex import esc, frac_tex, sci, sci_up
 from restitution_workflow.pipeline import (TEXT_WIDTH_PT, save_figure, setup_matplotlib, start, write_csv,
                                           write_text)
 from restitution.core.problem import Problem
@@ -119,9 +119,9 @@ macros = {
     "OverlapMaxDevSmall": sci(max(r["max_dev_small"] for r in rows), 2),
     "OverlapHighprecOmega": sci(P.highprec_omega, 1), "OverlapHighprecDigits": str(P.highprec_digits),
     "OverlapMaxDevHighprec": sci(max(abs(r["dev_highprec"]) for r in rows), 2),
-    "OverlapMaxCError": sci(max(r["C_error"] for r in rows), 2),
+    "OverlapMaxCError": sci_up(max(r["C_error"] for r in rows), 2),     # "at most": a bound, rounded up
     "OverlapMaxSlopeDev": sci(max(abs(r["slope"] - float(Fraction(r["k"]))) for r in rows), 2),
-    "OverlapDevTenth": sci(dev_tenth, 2), "OverlapTenthOmega": sci(TENTH, 2), "OverlapDevModerateMax": sci(max(abs(r[f"dev_{max(mods):g}"]) for r in rows), 2),
+    "OverlapDevTenth": sci_up(dev_tenth, 2), "OverlapTenthOmega": sci(TENTH, 2), "OverlapDevModerateMax": sci(max(abs(r[f"dev_{max(mods):g}"]) for r in rows), 2),
     "OverlapModerateMax": sci(max(mods), 2), "OverlapFloorFactor": f"{FLOOR_FACTOR:g}",
     "OverlapMainK": frac(main["k"]), "OverlapMainC": sci(main["C"], 10),
     "OverlapMainCErr": sci(main["C_error"], 1), "OverlapMainForceK": sci(main["force_k"], 10),
@@ -135,7 +135,7 @@ macros = {
     "OverlapMainRatioAtTenth": sci(main[f"ratio_{TENTH:g}"], 3),
     # where the law starts to hold (deviation OverlapDevTenth at TENTH) the rebound is already weak: the largest
     # eps of the pairs there, under the overlap rule (the practical range of the law, issue 53)
-    "OverlapEpsAtTenthMax": sci(max(eps(r["alpha"], r["gamma"], TENTH, "overlap") for r in rows), 2),
+    "OverlapEpsAtTenthMax": sci_up(max(eps(r["alpha"], r["gamma"], TENTH, "overlap") for r in rows), 2),
 }
 write_text(out.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))
 

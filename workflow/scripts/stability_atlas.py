@@ -90,7 +90,7 @@ if snakemake.rule == "stability_atlas":
 
 # %%
 if snakemake.rule == "stability_atlas":
-    from restitution_workflow.latex import fixed, frac_tex, sci
+    from restitution_workflow.latex import fixed, frac_tex, sci, sci_up
     from fractions import Fraction
 
     def ex(text):
@@ -174,7 +174,7 @@ if snakemake.rule == "stability_atlas":
         "StabMaxErrRefAt": rf"$\alpha={ex(r_a)}$, $\gamma={ex(r_g)}$, $\Omega={sci(r_w, 2)}$" if r_a else "---",
         "StabMaxErrExact": sci(e_err, 2),
         "StabMaxTightRef": sci(max(finite([r["max_tight_ref"] for r in summary]), default=math.nan), 2),
-        "StabMaxRefEstimate": sci(max(finite([r["max_ref_estimate"] for r in summary]), default=math.nan), 2),
+        "StabMaxRefEstimate": sci_up(max(finite([r["max_ref_estimate"] for r in summary]), default=math.nan), 2),
         "StabMaxTauCForce": sci(max(r["tau_c_max"] for r in force), 3) if force else "---",
         "StabMaxTauCCreep": sci(max(r["tau_c_max"] for r in creep), 3) if creep else "---",
         "StabMinXc": sci(min(finite([r["x_c_min"] for r in summary]), default=math.nan), 2),

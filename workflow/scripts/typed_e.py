@@ -14,7 +14,7 @@ import math
 import re
 
 import pandas as pd
-from restitution_workflow.latex import esc, fixed, sci
+from restitution_workflow.latex import esc, fixed, sci, sci_up
 from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.dem.calibrate import calibrate
@@ -112,7 +112,7 @@ macros = {
     "TypedEOwnRuleRows": str(len(own_rule)), "TypedEOwnRuleMissing": str(len(missing)),
     "TypedERunSteps": str(len(TYPED_E_ENGINE_REFINEMENTS)),
     **{f"TypedEFinest{name}": sci(finest[name], 2) for name in ("LAMMPS", "LIGGGHTS", "Yade", "Kratos")},
-    "TypedEExtrapolatedMax": sci(extrapolated.max(), 2),
+    "TypedEExtrapolatedMax": sci_up(extrapolated.max(), 2),    # "within": a bound, rounded up
     "TypedETsujiRatioMin": fixed(min(ratio.values()), 3), "TypedETsujiRatioMax": fixed(max(ratio.values()), 3),
     "TypedETsujiRatioAtMid": fixed(ratio[MID], 4), "TypedEMinE": fixed(min(es), 2),
     "TypedETsujiSqrtTwoAtMid": fixed(sqrt2_eps["overlap"], 4),

@@ -13,7 +13,7 @@ from fractions import Fraction
 
 import numpy as np
 import pandas as pd
-from restitution_workflow.latex import esc, frac_tex, sci
+from restitution_workflow.latex import esc, frac_tex, sci, sci_up
 from restitution_workflow.law_names import law_name
 from restitution_workflow.pipeline import (TEXT_WIDTH_PT, read_json, save_figure, setup_matplotlib,
                                           start, write_text)
@@ -231,7 +231,7 @@ worst_test = max(fitted, key=lambda n: held_out(forms[n]["measured"]))
 # measured case for the factor in the error estimate
 dense_ratio = max(forms[n]["measured"]["dense_eps"] / forms[n]["measured"]["selection_eps"] for n in fitted)
 macros = {
-    "CFBoundEpsWorst": sci(forms[worst]["bound_eps"], 2), "CFBoundEpsWorstLaw": esc(law_name(worst)),
+    "CFBoundEpsWorst": sci_up(forms[worst]["bound_eps"], 2),   # "at most": bounds are rounded up "CFBoundEpsWorstLaw": esc(law_name(worst)),
     "CFLawsFitted": str(len(fitted)),
     "CFBoundEps": sci(main["bound_eps"], 2), "CFBoundLoss": sci(main["bound_one_minus_eps"], 2),
     # the sets of points not used to fit the coefficients: the validation points (the grid points between
@@ -240,7 +240,7 @@ macros = {
     "CFDensePoints": str(main["measured"]["n_dense"]),
     "CFTestEps": sci(held_out(main["measured"]), 2),
     "CFTestLoss": sci(held_out(main["measured"], "one_minus_eps"), 2),
-    "CFTestEpsWorst": sci(held_out(forms[worst_test]["measured"]), 2),
+    "CFTestEpsWorst": sci_up(held_out(forms[worst_test]["measured"]), 2),
     "CFTestEpsWorstLaw": esc(law_name(worst_test)),
     "CFDenseOverSelection": f"{dense_ratio:.3f}",
     "CFFitRtol": sci(FIT_RTOL, 1),
@@ -318,7 +318,7 @@ overlap_names = [n for n in p.variants if overlap_forms[n]["available"]]
 n_overlap = max((len(overlap_forms[n]["a"]) for n in overlap_names), default=0)
 # every number to the twelve digits the printed-digit check assumes (sigma and r too: sigma may be nu itself)
 overlap_coef_rows = [" & ".join([label] + [sci(overlap_forms[n][key], 12) for n in overlap_names]) + r" \\"
-                     for label, key in ((r"$\bar b$", "b"), (r"$\Lambda$", "K"), (r"$\bar\sigma$", "sigma"), (r"$\rho$", "r"))]
+                     for label, key in ((r"$\bar b$", "b"), (r"$\Theta$", "K"), (r"$\bar\sigma$", "sigma"), (r"$\rho$", "r"))]
 overlap_coef_rows.append(" & ".join([r"$\bar s_1$"] + [str(overlap_forms[n]["m1"]) for n in overlap_names]) + r" \\")
 overlap_coef_rows += [" & ".join([rf"$\bar a_{{{j}}}$"] + [sci(overlap_forms[n]["a"][j], 12) if j < len(overlap_forms[n]["a"])
                                                      else "" for n in overlap_names]) + r" \\"
@@ -399,11 +399,11 @@ $\gamma < \alpha < 2\gamma + 1$ (where the bodies cannot stick) one formula join
 $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P} of $\bar z$ below fixed (bars mark the constants of this form, which differ from those of
 the article's uniform approximation):
 \begin{{equation}}
-\frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Lambda \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
+\frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Theta \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
 \exp\!\Big[\exp(-\rho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
-with $\bar b = (C C_1)^{{1/(\kappa - \nu)}}$ and $\Lambda = \bar b^{{\kappa}}/C$, so that
+with $\bar b = (C C_1)^{{1/(\kappa - \nu)}}$ and $\Theta = \bar b^{{\kappa}}/C$, so that
 $\varepsilon \to C\,\Omega^{{\kappa}}$ and $1 - \varepsilon \to C_1 \Omega^{{-\nu}}$ exactly, and $\varepsilon > 0$
 for any coefficients. The envelope $\exp(-\rho/\bar z)$ vanishes like the true correction; the shape $(\bar\sigma, \rho, \bar s_1)$ and the
 degree are chosen as for the force rule's form, the coefficients fitted with a small penalty on their size (without

@@ -15,7 +15,7 @@ from fractions import Fraction
 
 import numpy as np
 import pandas as pd
-from restitution_workflow.latex import esc, frac_tex, math_text, sci
+from restitution_workflow.latex import esc, frac_tex, math_text, sci, sci_up
 from restitution_workflow.pipeline import read_json, start, write_json, write_text
 
 from restitution.audit import claims as cl
@@ -201,7 +201,7 @@ if fit["applies"]:
         V.add(err, fit["stderr"][i], sig=2, note="OLS standard error (model misfit)")
     V.add("FitMaxResidual", fit["max_abs_residual"], sig=2)
     V.add("FitRMS", fit["rms"], sig=2)
-    V.add("FitMaxRelResidual", fit["max_rel_residual"], sig=2)
+    V.add("FitMaxRelResidual", fit["max_rel_residual"], tex=sci_up(fit["max_rel_residual"], 2), sig=2)   # "at most"
 else:
     V.add("FitReason", fit["reason"], tex=math_text(fit["reason"]), kind="exact")
 rt = fit["retrace"]
@@ -230,7 +230,9 @@ for _, r in errors.iterrows():
     defined = int(r["n_defined"]) > 0
     V.add(defined_name, defined, kind="exact")
     for col, name in zip(ERROR_COLUMNS, error_names):
-        V.add(name, float(r[col]) if defined and r[col] != "" else None, sig=2)
+        err = float(r[col]) if defined and r[col] != "" else None
+        # a largest error is printed as a bound ("up to", "at most"): rounded up, so that it still bounds
+        V.add(name, err, tex=sci_up(err, 2) if col.startswith("max") else None, sig=2)
     V.add(undefined_name, int(r["n_undefined"]), kind="exact", note="speeds with Omega~ <= 0 (no eps)")
     V.add(above_name, int(r["n_above_one"]), kind="exact", note="speeds with eps > 1")
 
@@ -352,6 +354,12 @@ if p.claims:
         g_lo, g_hi = float(curve["g"].min()), float(curve["g"].max())
         V.add("PrintedNoEpsGMin", max(nonpos[0]["g"][0], g_lo), sig=3, note="clipped to the studied speeds")
         V.add("PrintedNoEpsGMax", min(nonpos[0]["g"][1], g_hi), sig=3, note="clipped to the studied speeds")
+        # the whole interval, not clipped: Omega~ is a quadratic in Omega with two roots, and below the slower
+        # speed (the larger Omega) it is positive again, so "no eps below g = ..." would be false
+        V.add("PrintedNoEpsGRootLow", nonpos[0]["g"][0], sig=3, note="slower root: Omega~ > 0 again below it")
+        V.add("PrintedNoEpsGRootHigh", nonpos[0]["g"][1], sig=3, note="faster root of the printed Omega~")
+        V.add("PrintedNoEpsOmegaRootLow", min(nonpos[0]["omega"]), sig=4, note="smaller Omega root")
+        V.add("PrintedNoEpsOmegaRootHigh", max(nonpos[0]["omega"]), sig=4, note="larger Omega root")
         # the fastest studied speed inside that interval: the edge above is where Omega~ crosses zero, between
         # two studied speeds
         inside = curve["g"][(curve["g"] >= nonpos[0]["g"][0]) & (curve["g"] <= nonpos[0]["g"][1])]

@@ -107,7 +107,7 @@ if raw["FitApplies"]:
                rf"with $g \in [{T['FitGMin']}, {T['FitGMax']}]$ ($\Omega \in [{T['FitOmegaMin']}, "
                rf"{T['FitOmegaMax']}]$) has $c_0 = {T['FitCZero']} \pm {T['FitCZeroErr']}$, "
                rf"$c_1 = {T['FitCOne']} \pm {T['FitCOneErr']}$, $c_2 = {T['FitCTwo']} \pm {T['FitCTwoErr']}$, "
-               rf"with residuals up to ${T['FitMaxResidual']}$ in $\tilde\Omega$ (rms ${T['FitRMS']}$). "
+               rf"whose largest residual in $\tilde\Omega$ is ${T['FitMaxResidual']}$ (rms ${T['FitRMS']}$). "
                rf"Table~\ref{{tab:eps-errors-{v}}} gives the error in $\varepsilon(g)$ of each relation.")
     out += ["", r"\begin{table}[tbp]", r"  \centering", r"  \footnotesize",
             rf"  \fitwidth{{\input{{{d}/connection/eps_errors.tex}}}}",

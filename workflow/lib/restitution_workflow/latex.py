@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 import re
+from decimal import ROUND_CEILING, ROUND_FLOOR, Decimal
 from fractions import Fraction
 
 
@@ -25,6 +26,37 @@ def sci(x, sig: int = 4) -> str:
         # in running text a bare "-" is a hyphen: math mode makes it a minus sign
         return rf"\ensuremath{{{text}}}" if x < 0 else text
     return rf"\ensuremath{{{mant}\times 10^{{{e}}}}}"
+
+
+def outward(x, sig: int, *, upper: bool) -> float:
+    """x rounded to `sig` significant digits away from the side it bounds.
+
+    An upper bound ("at most", "up to", "below") is rounded towards +infinity, a lower bound
+    ("at least") towards -infinity, so that the printed bound still holds: 1.106e-10 printed as an
+    upper bound with two digits is 1.2e-10, not 1.1e-10; 2.796e-9 as a lower bound is 2.7e-9.
+
+    Examples
+    --------
+    >>> outward(1.106e-10, 2, upper=True), outward(2.796e-9, 2, upper=False)
+    (1.2e-10, 2.7e-09)
+    >>> outward(0.0544, 2, upper=True), outward(9.96, 2, upper=True)
+    (0.055, 10.0)
+    """
+    if x == 0 or not math.isfinite(x):
+        return float(x)
+    d = Decimal(repr(float(x)))
+    quantum = Decimal(1).scaleb(d.adjusted() - sig + 1)
+    return float(d.quantize(quantum, rounding=ROUND_CEILING if upper else ROUND_FLOOR))
+
+
+def sci_up(x, sig: int = 2) -> str:
+    """An upper bound x as `sci` prints it, rounded up (`outward`), so that it still bounds."""
+    return sci(x if x is None else outward(x, sig, upper=True), sig)
+
+
+def sci_down(x, sig: int = 2) -> str:
+    """A lower bound x as `sci` prints it, rounded down (`outward`), so that it still bounds."""
+    return sci(x if x is None else outward(x, sig, upper=False), sig)
 
 
 def fixed(x, decimals: int = 4) -> str:
