@@ -251,7 +251,7 @@ def _scaling_rows(values) -> list[dict]:
                          f"g^({printed.EPS_G_EXPONENT})", ours, "exact exponent", verdict,
                          "Brilliantov's 1 - eps ~ g^(1/5) is the leading small-g (elastic) law; its counterpart here "
                          "is 1 - eps ~ mu = Omega^(-(gamma+1)/(alpha+1)) with Omega ~ g^((alpha-1-2gamma)/(gamma+1)), "
-                         "derived with its constant in the closed-form section; the viscous law eps ~ k Omega has "
+                         "derived with its constant in the article's elastic limit; the viscous law eps ~ k Omega has "
                          "g^((alpha-1-2gamma)/(gamma+1)). That any function of Omega is one of g^(1/4) is true but "
                          f"says nothing. Measured local slopes: {measured:.3f} (Omega = 1e3..2e3), "
                          f"{es['eps_g_exponent_large_g']:.3f} (large g)"))
