@@ -17,6 +17,7 @@ import re
 from .beside import BESIDE, adapt_parts, adapted_diameter
 from .meeting import MOVERS, neigh_modify, special_bonds
 from .stream import SEEDED
+from .runtime import constant_in_time
 from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, type_pairs, types,
                              unlabeled)
 from ..deck_text import ScriptError, words
@@ -56,12 +57,8 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
 #: period 0.01, where the still plate gives e = 0.6) and a rotation, whose face points accelerate
 #: towards the axis (a floor turned at period 0.2 s about an axis 2 cm below it: 0.4779 at g = 0.1
 #: where the still floor gives 0.4999). Only ``linear`` at a constant velocity leaves it still;
-#: ``linear/variable`` does where its velocities are constant (_steady).
+#: ``linear/variable`` does where its velocities are constant (runtime.constant_in_time).
 _SHAKING = frozenset({"wiggle", "riggle", "viblin", "vibrot", "rotate", "rotate/variable"})
-#: Names an equal-style formula may hold and still give one value at every step (``random`` and
-#: ``normal`` draw anew at each evaluation; time, step and the rest read the simulation's state)
-_CONSTANT_MATH = frozenset({"sqrt", "exp", "ln", "log", "abs", "sin", "cos", "tan", "asin", "acos", "atan",
-                            "atan2", "ceil", "floor", "round", "ternary", "PI", "version"})
 #: ``dimension`` is among them: in 2d LAMMPS gives a sphere's mass still (density/disc, which sets a
 #: disc's, is the engine's and read back with the atoms), and its granular forces are the same (a
 #: head-on pair r 0.005 and 0.01, hertz/material viscoelastic, g 0.1, dt 2e-7: eps 0.86088418 in 2d
@@ -893,7 +890,7 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     wall_again = next((k for k, w in enumerate(deck.walls) if w[1][1] == words[1]), None)
     _unfix(deck, words[1])
     if style == "move/mesh" and len(words) > 6 and words[4] == "mesh" and (
-            words[6] in _SHAKING or words[6] == "linear/variable" and not all(_steady(deck, w) for w in words[7:10])):
+            words[6] in _SHAKING or words[6] == "linear/variable" and not all(constant_in_time(w, deck.variables) for w in words[7:10])):
         deck.shaken[words[1]] = (loc, line, words[5])
     if style.startswith("rigid"):
         raise DeckError(where, line, f"fix {style} makes rigid bodies of spheres: a body's mass is not a sphere's, "
@@ -1344,20 +1341,6 @@ def _variable(deck: Deck, words: list) -> None:
         deck.variables.pop(words[1], None)
     else:
         deck.variables[words[1]] = " ".join(words[3:]) if words[2] == "equal" else None
-
-
-def _steady(deck: Deck, token: str, seen: frozenset = frozenset()) -> bool:
-    """Whether a velocity the engine reads as ``v_NAME`` (or a number) keeps one value at every step:
-    a number, or an equal-style variable of numbers, constant functions and such variables."""
-    if _float(token) is not None:
-        return True
-    name = token[2:] if token.startswith("v_") else None
-    formula = deck.variables.get(name) if name and name not in seen else None
-    if formula is None:
-        return False                       # not equal-style, undefined, or circular
-    bare = re.sub(r"(?<![A-Za-z0-9_.])(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?", " ", formula)
-    return all(w in _CONSTANT_MATH or w.startswith("v_") and _steady(deck, w, seen | {name})
-               for w in re.findall(r"[A-Za-z_][A-Za-z0-9_]*", bare))
 
 
 def _float(token: str) -> float | None:

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["run_dependent"]
+__all__ = ["run_dependent", "constant_in_time"]
 
 #: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
 #: is not one: it formats an equal-style variable when used).
@@ -29,6 +29,8 @@ _FIXED_STYLES = frozenset({"index", "loop", "world", "universe", "uloop", "strin
 #: functions, logfreq, stride, vdisplace, swiggle and cwiggle, read the step: not among them).
 _MATH = frozenset({"sqrt", "exp", "ln", "log", "abs", "sin", "cos", "tan", "asin", "acos", "atan", "atan2",
                    "ceil", "floor", "round", "ternary", "PI", "version", "random", "normal"})
+#: Functions that draw a new value at each evaluation
+_DRAWN = frozenset({"random", "normal"})
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _NUMBER = re.compile(r"(?<![A-Za-z0-9_.])(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
 #: Commands after a run whose substituted values can change what the audit reads.
@@ -77,20 +79,50 @@ def _fixed(text: str, styles: dict, seen: frozenset = frozenset()) -> bool:
             and all(_formula_fixed(f, styles, seen) for f in formulas))
 
 
-def _variable_fixed(name: str, styles: dict, seen: frozenset) -> bool:
+def _variable_fixed(name: str, styles: dict, seen: frozenset, allowed: frozenset = _MATH) -> bool:
     if name in seen or name not in styles:
         return False                          # circular, or defined where this pass did not see it
     style, formula = styles[name]
     if style in _FIXED_STYLES:
         return True
-    return style == "equal" and _formula_fixed(formula, styles, seen | {name})
+    return style == "equal" and _formula_fixed(formula, styles, seen | {name}, allowed)
 
 
-def _formula_fixed(formula: str, styles: dict, seen: frozenset) -> bool:
+def _formula_fixed(formula: str, styles: dict, seen: frozenset, allowed: frozenset = _MATH) -> bool:
     names, formulas, bare = _references(formula)
-    return (all(_variable_fixed(n, styles, seen) for n in names)
-            and all(_formula_fixed(f, styles, seen) for f in formulas)
-            and all(n in _MATH for n in _NAME.findall(_NUMBER.sub(" ", bare))))
+    return (all(_variable_fixed(n, styles, seen, allowed) for n in names)
+            and all(_formula_fixed(f, styles, seen, allowed) for f in formulas)
+            and all(n in allowed for n in _NAME.findall(_NUMBER.sub(" ", bare))))
+
+
+def constant_in_time(token: str, formulas: dict) -> bool:
+    """Whether a value the engine reads as ``v_NAME`` (or a number) keeps one value at every step.
+
+    Stricter than fixed by the run: ``random`` and ``normal`` draw anew at each evaluation.
+
+    Parameters
+    ----------
+    token : str
+        A number or ``v_NAME``.
+    formulas : dict
+        Variable name -> its equal-style formula (None for another style).
+
+    Returns
+    -------
+    bool
+        True for a number, or an equal-style variable of numbers, math functions and such variables.
+
+    Examples
+    --------
+    >>> constant_in_time("v_a", {"a": "2*sqrt(v_b)", "b": "4"}), constant_in_time("v_t", {"t": "0.1*time"})
+    (True, False)
+    >>> constant_in_time("v_r", {"r": "random(0,1,5)"}), constant_in_time("0.5", {})
+    (False, True)
+    """
+    if _NUMBER.fullmatch(token.lstrip("+-")):
+        return True
+    styles = {k: ("equal", f) for k, f in formulas.items() if f is not None}
+    return token.startswith("v_") and _variable_fixed(token[2:], styles, frozenset(), _MATH - _DRAWN)
 
 
 def run_dependent(commands: list, source: dict | None = None) -> list:
