@@ -191,6 +191,20 @@ def test_a_force_cut_to_a_line_or_plane_is_named_with_no_eps_where_the_direction
 
 
 @needs_lammps
+@pytest.mark.parametrize("group", ["all", "two"])
+def test_in_2d_a_force_set_to_zero_along_z_leaves_every_contact_alone(tmp_path, group):
+    """A 2d deck's contacts lie in xy, so a setforce NULL NULL 0.0 (common in 2d decks) cuts no
+    contact force: the contact's own eps, as a planeforce of normal z. Before, the audit said it
+    changes the eps, the bodies keeping their velocity 'along z', a direction no contact has."""
+    pairs, err = _audit(tmp_path, "dimension 2\n" + CUT.format(fix=f"fix sf {group} setforce NULL NULL 0.0"))
+    assert sum(len(p["beside"]) for p in pairs.values()) == (3 if group == "all" else 2)
+    for p in pairs.values():
+        for fix in p["beside"]:
+            assert fix["eps_engine"] == p["eps"] and "which it leaves alone" in fix["why"]
+    assert "leaves the eps the engine measures the contact's" in err and "changes the eps" not in err
+
+
+@needs_lammps
 def test_in_2d_a_line_along_z_holds_its_body_and_a_plane_of_normal_z_keeps_the_contact(tmp_path):
     """A 2d deck's contacts lie in xy: a lineforce along z removes every contact force on its atoms
     (one body of a pair keeps its velocity, the other moves alone: eps in its frame; two pass through

@@ -715,6 +715,22 @@ def test_an_accelerating_liggghts_mesh_is_named_not_audited(tmp_path, motion, va
         assert "mesh mesh1 moves with an acceleration (fix shake all move/mesh" in named[0]["why"]
 
 
+def test_a_liggghts_servo_mesh_is_named_as_moving_not_as_missing(tmp_path):
+    """A mesh/surface/stress/servo wall moves at the velocity its controller sets each step to reach
+    a target force: the audit names it as a moving mesh whose faces are not audited, not as a mesh
+    that no fix mesh/surface defines (the reason it gave before)."""
+    servo = ("fix mesh1 all mesh/surface/stress/servo file plate.stl type 1 com 0. 0. 0. ctrlPV force "
+             "axis 0. 0. -1. target_val 10 vel_max 0.1 kp 5.\n")
+    text = liggghts_deck("").replace("fix mesh1 all mesh/surface file plate.stl type 1\n", servo)
+    assert servo in text
+    res, err = audit(tmp_path, text, 0.1)
+    assert not any(w["mesh"] == "mesh1" for w in res["walls"])
+    named = [row["why"] for row in res["unknown_lines"] if "mesh1" in row["why"]]
+    assert named and all("moves with an acceleration (fix mesh1 all mesh/surface/stress/servo" in why
+                         for why in named), named
+    assert not any("has no fix mesh/surface" in why for why in named)
+
+
 #: in.pour's sphere and wall, the wall defined again with other coefficients, a second wall unfixed
 REDEFINED_WALL = IN_POUR + """\
 fix 1 all nve/sphere

@@ -512,7 +512,7 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
         entry["why"] = ("its drag alone; its random force (temperature from " + words[4] + ") scatters the eps "
                         "around this")
     elif style == "setforce":
-        _setforce(entry, deck, row, contact, pair, types, words, acted)
+        _setforce(entry, deck, row, contact, pair, types, words, acted, faces)
         return
     elif style == "freeze" and deck.code != "LAMMPS":
         entry["why"] = "its size is computed for LAMMPS only (whose m_eff with a frozen atom was checked)"
@@ -699,7 +699,7 @@ _AXES = ("x", "y", "z")
 
 
 def _setforce(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tuple, words: list,
-              acted: list) -> None:
+              acted: list, faces: list | None = None) -> None:
     """fix ID group setforce fx fy fz: where every component given is a constant zero (the others
     NULL) and no keyword follows, the body of the group keeps its velocity along those axes whatever
     the contact's force. A head-on contact along such an axis then moves the other body alone, under
@@ -717,10 +717,20 @@ def _setforce(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types:
     if not zero:
         entry["eps_engine"], entry["why"] = list(row["eps"]), "every component NULL: it sets no force"
         return
+    free = [axis for axis in _AXES if axis not in zero]
+    # zeroing some components keeps the force's projection on the others: where every contact the
+    # collision may have lies along those (a 2d deck's contacts, held in z), it changes nothing
+    if free:
+        unit = {axis: tuple(float(a == axis) for a in _AXES) for axis in _AXES}
+        style, u = ("lineforce", unit[free[0]]) if len(free) == 1 else ("planeforce", unit[zero[0]])
+        if _projection_over(style, u, *_contact_normals(deck, types, faces)) == "whole":
+            entry["eps_engine"] = list(row["eps"])
+            entry["why"] = (f"every contact this collision may have lies along {' and '.join(free)}, which it leaves "
+                            "alone")
+            return
     if deck.code != "LAMMPS":
         entry["why"] = "its size is computed for LAMMPS only (whose m_eff with a force set to zero was checked)"
         return
-    free = [axis for axis in _AXES if axis not in zero]
     along = (f"along {' and '.join(zero)} (the component{'s' if len(zero) > 1 else ''} it sets to zero)" if free
              else "along any axis")
     if len(types) == 1 or all(acted):

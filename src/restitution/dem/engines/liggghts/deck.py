@@ -191,11 +191,19 @@ def _mesh(deck: Deck, words: list, where: str, line: str, loc) -> None:
     deck.meshes[words[1]] = int(typed[0]) if typed and typed[0].isdigit() else None
 
 
+def _servo(deck: Deck, words: list, where: str, line: str, loc) -> None:
+    # a servo wall is a mesh whose velocity its controller changes every step to reach a target
+    # force: a sphere's contact with it meets an accelerating face, as a shaken mesh's does
+    _mesh(deck, words, where, line, loc)
+    deck.shaken[words[1]] = (loc, line, words[1])
+
+
 #: fix style -> (its least number of words, what it does to the deck); shorter, not understood
 FIXES = {"property/global": (6, _property_global), "particletemplate/sphere": (4, _sphere_template),
          **{f"particledistribution/discrete{kind}": (6, _distribution) for kind in ("", "/numberbased", "/massbased")},
          **{f"insert/{kind}": (4, _insertion) for kind in ("pack", "stream", "rate/region")},
-         "mesh/surface": (4, _mesh), "mesh/surface/stress": (4, _mesh)}
+         "mesh/surface": (4, _mesh), "mesh/surface/stress": (4, _mesh),
+         "mesh/surface/stress/servo": (4, _servo)}
 
 
 # ---------------------------------------------------------------------------- materials and pairs
