@@ -107,7 +107,246 @@ def r05():
     report("r05", "1-mesh + gravity into it, g=0.05 (audit stderr 0.657429)", 0.657429, ref, tol=2e-6)
 
 
-CASES = {k: v for k, v in dict(globals()).items() if k[:1] in "ra" and k[1:3].isdigit()}
+
+def _lmp_pairs(case, deck, g, checks, extra=(), units="si", ntypes=2, dt0=1e-7, stage=None):
+    """checks: (label, types, lines, (r1, m1), (r2, m2), kwargs) per pair."""
+    rc, a, err = R.audit(deck, [g], *extra)
+    if rc != 0:
+        print(f"{case} | audit exit {rc}: {err.strip()[:300]}")
+        return
+    for label, types, lines, (r1, m1), (r2, m2), kw in checks:
+        src = a if stage is None else a["stages"][stage]
+        if kw.get("eps_audit") is not None:
+            ae = kw.pop("eps_audit")
+        else:
+            ae = eps_of(find(src["pairs"], types), g)
+        kw2 = dict(kw)
+        t1, t2 = kw2.pop("t", types)
+        ref = R.extrapolate(lambda **k: R.lammps_pair(lines, t1, r1, m1, t2, r2, m2, g, units=units,
+                                                       ntypes=ntypes, **kw2, **k), dt0)
+        report(case, label, ae, ref)
+
+
+GRAN = "tangential linear_nohistory 0 0"
+M1 = R.sphere_mass(0.002, 2500)
+M2 = R.sphere_mass(0.003, 7800)
+
+
+def a09():
+    lines = ["pair_style hybrid granular gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0",
+             f"pair_coeff 1 1 granular hertz/material 1e8 0.5 0.3 damping tsuji {GRAN}",
+             "pair_coeff 2 2 gran/hooke/history",
+             f"pair_coeff 1 2 granular hooke 2000.0 0.3 damping mass_velocity {GRAN}"]
+    _lmp_pairs("a09", DECKS / "a09_hybrid/in.deck", 1.0, [
+        ("1-1 tsuji in hybrid", [1, 1], lines, (0.002, M1), (0.002, M1), {}),
+        ("1-2 hooke in hybrid", [1, 2], lines, (0.002, M1), (0.003, M2), {}),
+        ("2-2 gran/hooke/history in hybrid", [2, 2], lines, (0.003, M2), (0.003, M2), {}),
+    ])
+
+
+def a11():
+    lines = ["pair_style granular",
+             f"pair_coeff 1 1 hertz/material 1.5e8 0.46 0.3 damping tsuji {GRAN}",
+             f"pair_coeff 2 2 hertz/material 1.5e8 0.457 0.3 damping coeff_restitution {GRAN}",
+             f"pair_coeff 1 2 hooke 910 3.3333 damping mass_velocity {GRAN}"]
+    _lmp_pairs("a11", DECKS / "a11_formats/in.deck", 1.0, [
+        ("1-1 $(v_e0:%.2f)", [1, 1], lines, (0.002, M1), (0.002, M1), {}),
+        ("1-2 kn $(v_e0*2:%.2f)*1e3, $(10.0/3.0:%.5g)", [1, 2], lines, (0.002, M1), (0.003, M2), {}),
+        ("2-2 format variable", [2, 2], lines, (0.003, M2), (0.003, M2), {}),
+    ])
+
+
+def a12():
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 0.5 0.3 damping tsuji {GRAN}",
+             f"pair_coeff 2* 1* hertz/material 1e8 0.9 0.3 damping tsuji {GRAN}"]
+    _lmp_pairs("a12", DECKS / "a12_range_rule/in.deck", 1.0, [
+        ("1-2 after 2* 1*", [1, 2], lines, (0.002, M1), (0.003, M2), {}),
+        ("2-2 after 2* 1*", [2, 2], lines, (0.003, M2), (0.003, M2), {}),
+    ])
+
+
+def a04():
+    # type 2 not integrated: LAMMPS moves the type 1 sphere only; the referee holds atom 2 still
+    d = DECKS / "a04_no_integrator_type2/in.deck"
+    rc, a, err = R.audit(d, [1.0])
+    ae = eps_of(find(a["pairs"], [1, 2]), 1.0)
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 0.5 0.3 damping coeff_restitution {GRAN}"]
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.002, M1, 2, 0.003, M2, 1.0,
+                                                   still2=True, **k), 1e-7)
+    report("a04", "1-2, type 2 not integrated", ae, ref)
+
+
+def a14():
+    mh = R.sphere_mass(0.5, 1.0)   # create_atoms' default sphere (diameter 1, density 1), then diameter 0.004
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 3000.0 0.3 damping viscoelastic {GRAN}"]
+    rc, a, err = R.audit(DECKS / "a14_type_fraction/in.deck", [1.0])
+    rows = [it for it in a["pairs"] if it["types"] == [1, 1]]
+    lo = min(eps_of(it, 1.0) for it in rows)
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.002, mh, 1, 0.002, mh, 1.0, **k), 1e-6)
+    report("a14", "1-1 the heavy spheres (mass kept through set diameter)", lo, ref)
+
+
+def a15():
+    mt1 = R.sphere_mass(0.5, 2500)   # density set at diameter 1, then diameter 0.004 keeps the mass
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 3000.0 0.3 damping viscoelastic {GRAN}"]
+    _lmp_pairs("a15", DECKS / "a15_density_then_diameter/in.deck", 1.0, [
+        ("1-2 set density before diameter, set mass", [1, 2], lines, (0.002, mt1), (0.003, 0.0005), {}),
+    ])
+
+
+def a16():
+    mt1 = R.sphere_mass(2.0, 2.5)
+    mt2 = R.sphere_mass(3.0, 1.0)
+    lines = ["pair_style granular",
+             f"pair_coeff 1 2 hertz/material 1e4 0.5 0.3 damping coeff_restitution {GRAN}",
+             f"pair_coeff 1 1 hooke 5.0 0.02 damping velocity {GRAN}",
+             f"pair_coeff 2 2 hertz 2.0 0.01 damping viscoelastic {GRAN} limit_damping"]
+    _lmp_pairs("a16", DECKS / "a16_units_real/in.deck", 1.0, [
+        ("1-2 units real", [1, 2], lines, (2.0, mt1), (3.0, mt2), {}),
+    ], units="real", dt0=0.01)
+
+
+def a17():
+    mt1 = R.sphere_mass(0.1, 2.5)
+    mt2 = R.sphere_mass(0.2, 7.8)
+    lines = ["pair_style gran/hertz/history 2e9 NULL 5e3 NULL 0.5 0", "pair_coeff * *"]
+    _lmp_pairs("a17", DECKS / "a17_units_cgs_hertzhist/in.deck", 1.0, [
+        ("1-1 cgs hertz/history", [1, 1], lines, (0.1, mt1), (0.1, mt1), {}),
+        ("1-2 cgs hertz/history", [1, 2], lines, (0.1, mt1), (0.2, mt2), {}),
+    ], units="cgs")
+    rc, a, err = R.audit(DECKS / "a17_units_cgs_hertzhist/in.deck", [1.0])
+    w = ["fix side all wall/gran hertz/history 2e9 NULL 5e3 NULL 0.5 0 zcylinder 4.0"]
+    ae = eps_of(find(a["walls"], [2], "side"), 1.0)
+    ref = R.extrapolate(lambda **k: R.lammps_wall(lines + w, 2, 0.2, mt2, 1.0, wall_point=(4.0, 0, 0),
+                                                   normal=(-1, 0, 0), units="cgs", box=6.0, **k), 1e-7)
+    report("a17", "2 inside zcylinder 4.0 (cgs)", ae, ref)
+    w = ["fix floor all wall/gran hertz/history 2e9 NULL 5e3 NULL 0.5 0 zplane 0.0 NULL"]
+    ae = eps_of(find(a["walls"], [2], "floor"), 1.0)
+    ref = R.extrapolate(lambda **k: R.lammps_wall(lines + w, 2, 0.2, mt2, 1.0, units="cgs", **k), 1e-7)
+    report("a17", "2 on zplane (cgs)", ae, ref)
+
+
+def a18():
+    rc, a, err = R.audit(DECKS / "a18_lj_pour_range/in.deck", [1.0])
+    rows = [it for it in a["pairs"] if it["types"] == [1, 1]]
+    lo = min(eps_of(it, 1.0) for it in rows)
+    hi = max(eps_of(it, 1.0) for it in rows)
+    lines = ["pair_style gran/hooke 2000.0 NULL 50.0 NULL 0.5 0", "pair_coeff * *"]
+    mh = R.sphere_mass(0.6, 3.0)
+    ml = R.sphere_mass(0.4, 1.0)
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.6, mh, 1, 0.6, mh, 1.0, units="lj",
+                                                   ntypes=1, **k), 1e-4)
+    report("a18", "1-1 heaviest poured (d 1.2, dens 3)", lo, ref)
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.4, ml, 1, 0.4, ml, 1.0, units="lj",
+                                                   ntypes=1, **k), 1e-4)
+    report("a18", "1-1 lightest poured (d 0.8, dens 1)", hi, ref)
+    # a heavy and a light one: must lie between
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.6, mh, 1, 0.4, ml, 1.0, units="lj",
+                                                   ntypes=1, **k), 1e-4)
+    print(f"a18 | 1-1 heavy with light: engine {ref['eps0']} (audit range {lo} .. {hi})")
+
+
+def a19():
+    d = DECKS / "a19_restyle_stages/in.deck"
+    mt1 = R.sphere_mass(0.002, 2500)
+    mt2 = R.sphere_mass(0.003, 7800)
+    l2 = ["pair_style granular", f"pair_coeff * * hooke 1e4 20.0 damping mass_velocity {GRAN}",
+          f"pair_coeff 1 1 hooke 1e4 40.0 damping mass_velocity {GRAN}"]
+    _lmp_pairs("a19", d, 1.0, [("stage 2 1-1", [1, 1], l2, (0.002, mt1), (0.002, mt1), {})], stage=1)
+    l3 = ["pair_style gran/hooke/history 2e4 NULL 30.0 NULL 0.5 0 limit_damping", "pair_coeff * *"]
+    _lmp_pairs("a19", d, 1.0, [("stage 3 2-2 limit_damping", [2, 2], l3, (0.003, mt2), (0.003, mt2), {})], stage=2)
+    l4 = ["pair_style granular", f"pair_coeff * * hertz 1e6 3.0 damping viscoelastic {GRAN}"]
+    _lmp_pairs("a19", d, 1.0, [("stage 4 1-2", [1, 2], l4, (0.002, mt1), (0.003, mt2), {})], stage=3)
+
+
+def a20():
+    ml = {1: (0.002, R.sphere_mass(0.002, 2500)), 2: (0.003, R.sphere_mass(0.003, 7800)),
+          3: (0.005, R.sphere_mass(0.005, 1100))}
+    lines = ["pair_style granular",
+             f"pair_coeff 1 1 hertz/material 6e10 0.4 0.22 damping coeff_restitution {GRAN}",
+             f"pair_coeff 2 2 hertz/material 2e11 0.8 0.29 damping coeff_restitution {GRAN}",
+             f"pair_coeff 3 3 hertz/material 1e7 0.6 0.45 damping coeff_restitution {GRAN}",
+             f"pair_coeff 1 3 hertz/material 2e7 0.2 0.35 damping viscoelastic {GRAN}"]
+    _lmp_pairs("a20", DECKS / "a20_labels_data/in.deck", 1.0, [
+        ("1-2 mixed by LAMMPS", [1, 2], lines, ml[1], ml[2], {}),
+        ("2-3 mixed by LAMMPS", [2, 3], lines, ml[2], ml[3], {}),
+    ], ntypes=3, dt0=1e-8)
+
+
+def a21():
+    lines = ["pair_style granular",
+             f"pair_coeff 1 2 hertz/material 1e8 0.55 0.3 damping coeff_restitution {GRAN} limit_damping"]
+    _lmp_pairs("a21", DECKS / "a21_include_jump/in.deck", 1.0, [
+        ("stage 4 1-2 (e12 0.55 from the if/jump, limit_damping)", [1, 2],
+         lines + [f"pair_coeff 1 1 hertz/material 1e8 0.6 0.3 damping coeff_restitution {GRAN}",
+                  f"pair_coeff 2 2 hertz/material 1e8 0.9 0.3 damping coeff_restitution {GRAN}"],
+         (0.002, M1), (0.003, M2), {}),
+    ], stage=3)
+
+
+def a25():
+    rc, a, err = R.audit(DECKS / "a25_viscous_langevin/in.deck", [1.0], "--json")
+    lines = ["pair_style granular",
+             f"pair_coeff * * hooke 1e4 0.5 damping mass_velocity {GRAN} limit_damping",
+             "fix visc all viscous 1e-3 scale 2 4.0"]
+    for types, (r1, m1), (r2, m2), stated in (([1, 1], (0.002, M1), (0.002, M1), 0.998736),
+                                               ([1, 2], (0.002, M1), (0.003, M2), 0.998381)):
+        ref = R.extrapolate(lambda **k: R.lammps_pair(lines, types[0], r1, m1, types[1], r2, m2, 1.0, **k), 1e-7)
+        report("a25", f"{types} with fix viscous (stderr {stated})", stated, ref, tol=1.5e-6)
+
+
+def l01():
+    mat = ["fix m1 all property/global youngsModulus peratomtype 5.e7 1.e8 2.e8",
+           "fix m2 all property/global poissonsRatio peratomtype 0.3 0.25 0.3",
+           "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.45 0.6 0.7 0.6 0.8 0.75 0.7 0.75 0.9",
+           "fix m4 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5",
+           "fix m5 all property/global characteristicVelocity scalar 2.0",
+           "pair_style gran model hooke tangential no_history limitForce on", "pair_coeff * *"]
+    rc, a, err = R.audit(DECKS / "l01_hooke_charvel/in.deck", [1.0])
+    for types, (r1, m1), (r2, m2) in (([1, 1], (0.002, M1), (0.002, M1)), ([1, 2], (0.002, M1), (0.003, M2))):
+        ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, types[0], r1, m1, types[1], r2, m2, 1.0,
+                                                         ntypes=3, **k), 1e-7)
+        report("l01", f"{types} hooke charVel limitForce on", eps_of(find(a["pairs"], types), 1.0), ref)
+    w = mat + ["fix floor all wall/gran model hooke tangential no_history primitive type 3 zplane 0.0"]
+    ref = R.extrapolate(lambda **k: R.liggghts_wall(w, 2, 0.003, M2, 1.0, ntypes=3, **k), 1e-7)
+    report("l01", "2 on floor (type 3)", eps_of(find(a["walls"], [2], "floor"), 1.0), ref)
+
+
+def l02():
+    mat = ["fix m1 all property/global kn peratomtypepair 2 2000 3000 3000 5000",
+           "fix m2 all property/global kt peratomtypepair 2 0 0 0 0",
+           "fix m3 all property/global gamman_abs peratomtypepair 2 0.05 0.08 0.08 0.1",
+           "fix m4 all property/global gammat_abs peratomtypepair 2 0 0 0 0",
+           "fix m6 all property/global gamman peratomtypepair 2 10 20 20 30",
+           "fix m7 all property/global gammat peratomtypepair 2 0 0 0 0",
+           "fix m5 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5",
+           "pair_style gran model hooke/stiffness tangential no_history absolute_damping on limitForce on",
+           "pair_coeff * *"]
+    rc, a, err = R.audit(DECKS / "l02_stiffness/in.deck", [1.0])
+    for types, (r1, m1), (r2, m2) in (([1, 1], (0.002, M1), (0.002, M1)), ([1, 2], (0.002, M1), (0.003, M2))):
+        ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, types[0], r1, m1, types[1], r2, m2, 1.0, **k), 1e-7)
+        report("l02", f"{types} hooke/stiffness absolute_damping", eps_of(find(a["pairs"], types), 1.0), ref)
+    w = mat + ["fix floor all wall/gran model hooke/stiffness tangential no_history primitive type 2 zplane 0.0"]
+    ref = R.extrapolate(lambda **k: R.liggghts_wall(w, 1, 0.002, M1, 1.0, **k), 1e-7)
+    report("l02", "1 on floor (wall without absolute_damping)", eps_of(find(a["walls"], [1], "floor"), 1.0), ref)
+
+
+def l05():
+    mat = ["fix m1 all property/global youngsModulus peratomtype 5.e7 5.e7",
+           "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3",
+           "fix m3 all property/global coefficientRestitution peratomtypepair 2 0.9 0.6 0.6 0.7",
+           "fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5",
+           "pair_style gran model hertz tangential history limitForce on", "pair_coeff * *"]
+    rc, a, err = R.audit(DECKS / "l05_material_restage/in.deck", [1.0])
+    ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, 1, 0.002, M1, 1, 0.002, M1, 1.0, **k), 1e-7)
+    report("l05", "stage 3 1-1 e 0.9 limitForce on", eps_of(find(a["stages"][2]["pairs"], [1, 1]), 1.0), ref)
+
+
+CASES = {k: v for k, v in dict(globals()).items() if k[:1] in "ral" and k[1:3].isdigit()}
 
 if __name__ == "__main__":
     for name in sys.argv[1:]:

@@ -134,7 +134,7 @@ def _run_lammps(spec):
 
 def lammps_pair(lines, t1, r1, m1, t2, r2, m2, g, dt, *, units="si", ntypes=2, chunk=1,
                 max_steps=10**6, before_atoms=(), phase=0.0, newton="off", atom_style="sphere",
-                dimension=3):
+                dimension=3, still2=False):
     """Two spheres head-on along x, total momentum zero, approaching at relative speed g.
 
     `lines` are the deck's contact lines (pair_style, pair_coeff, ...) run after the atoms exist.
@@ -145,6 +145,8 @@ def lammps_pair(lines, t1, r1, m1, t2, r2, m2, g, dt, *, units="si", ntypes=2, c
     gap = phase * g * dt
     v1 = g * m2 / (m1 + m2)
     v2 = -g * m1 / (m1 + m2)
+    if still2:   # the second sphere held: no integrator acts on it
+        v1, v2 = g, 0.0
     box = 4 * rsum + 10 * g * dt + 1e-30
     spec = {
         "units": units, "ntypes": ntypes, "box": box, "skin": 0.3 * max(r1, r2),
@@ -156,6 +158,8 @@ def lammps_pair(lines, t1, r1, m1, t2, r2, m2, g, dt, *, units="si", ntypes=2, c
         "max_steps": max_steps, "mode": "pair", "rsum": rsum, "g": g, "newton": newton,
         "atom_style": atom_style, "dimension": dimension,
     }
+    if still2:
+        spec["integrate_group"] = "g1"
     if dimension == 2:
         spec["boundary"] = "f f p"
     return _run_lammps(spec)
@@ -326,7 +330,7 @@ def extrapolate(run, dt0, *, levels=(2000, 4000, 8000), phases=(0.25, 0.75), **k
     Richardson removes. Returns eps0 (two Richardson levels), the raw averages, and `wobble` (the
     difference between the one- and two-level estimates: the extrapolation's own uncertainty).
     """
-    r = run(dt=dt0, **kw)
+    r = run(dt=dt0, chunk=10, **kw)
     if not r["steps"]:
         raise RuntimeError(f"no contact at dt0 {dt0}: {r}")
     tc = r["steps"] * dt0
