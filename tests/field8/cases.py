@@ -312,7 +312,7 @@ def l01():
                                                          ntypes=3, **k), 1e-7)
         report("l01", f"{types} hooke charVel limitForce on", eps_of(find(a["pairs"], types), 1.0), ref)
     w = mat + ["fix floor all wall/gran model hooke tangential no_history primitive type 3 zplane 0.0"]
-    ref = R.extrapolate(lambda **k: R.liggghts_wall(w, 2, 0.003, M2, 1.0, ntypes=3, **k), 1e-7)
+    ref = R.extrapolate(lambda **k: R.liggghts_wall(w, 2, 0.003, M2, 1.0, ntypes=3, dummy=0.001, box=0.02, **k), 1e-7)
     report("l01", "2 on floor (type 3)", eps_of(find(a["walls"], [2], "floor"), 1.0), ref)
 
 
@@ -344,6 +344,60 @@ def l05():
     rc, a, err = R.audit(DECKS / "l05_material_restage/in.deck", [1.0])
     ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, 1, 0.002, M1, 1, 0.002, M1, 1.0, **k), 1e-7)
     report("l05", "stage 3 1-1 e 0.9 limitForce on", eps_of(find(a["stages"][2]["pairs"], [1, 1]), 1.0), ref)
+
+
+def a33():
+    lines = ["pair_style granular",
+             f"pair_coeff * * hooke 2000 20 damping mass_velocity {GRAN}"]
+    m9 = R.sphere_mass(0.002, 9000)
+    rc, a, err = R.audit(DECKS / "a33_set_after_pour_seed/in.deck", [1.0])
+    rows = [it for it in a["stages"][1]["pairs"] if it["types"] == [1, 1]]
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.002, m9, 1, 0.002, m9, 1.0, ntypes=1, **k), 1e-7)
+    for it in rows:
+        report("a33", f"stage 2 row '{it['model'][:40]}...'", eps_of(it, 1.0), ref)
+
+
+def r06c():
+    mat = ["hard_particles yes",
+           "fix mEY all property/global youngsModulus peratomtype 7.0e10 7.0e10",
+           "fix mPO all property/global poissonsRatio peratomtype 0.25 0.25",
+           "fix mCOR all property/global coefficientRestitution peratomtypepair 2 0.8 0.8 0.8 0.8",
+           "fix mCOF all property/global coefficientFriction peratomtypepair 2 0.05 0 0 0",
+           "fix mCORF all property/global coefficientRollingFriction peratomtypepair 2 0.1 0 0 0",
+           "fix mCORVD all property/global coefficientRollingViscousDamping peratomtypepair 2 0.13 0.13 0.13 0.13",
+           "fix mRS all property/global rollingStiffness scalar 2.25",
+           "pair_style gran model hertz tangential history rolling_friction epsd3 limitForce on",
+           "pair_coeff * *"]
+    rc, a, err = R.audit(DECKS / "r06c_ykevin_isocomp_plainrun/0-iso_comp.lmp", [0.1])
+    for d in (0.0001, 0.00042):
+        r = d / 2
+        m = R.sphere_mass(r, 2650)
+        ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, 1, r, m, 1, r, m, 0.1, **k), 1e-9)
+        report("r06c", f"1-1 d={d}", eps_of(find(a["pairs"], [1, 1]), 0.1), ref)
+    stl = ("solid f\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 -1 0\nvertex 1 1 0\n"
+           "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 1 0\n"
+           "vertex -1 1 0\nendloop\nendfacet\nendsolid f\n")
+    r = 0.00042 / 2
+    m = R.sphere_mass(r, 2650)
+    w = mat + ["fix zl all mesh/surface/stress file face.stl type 2 scale 1e-3",
+               "fix walls0 all wall/gran model hertz tangential no_history mesh n_meshes 1 meshes zl"]
+    ref = R.extrapolate(lambda **k: R.liggghts_wall(w, 1, r, m, 0.1, files={"face.stl": stl}, box=0.002, **k), 1e-9)
+    rows = [it for it in a["walls"] if it["types"] == [1]]
+    report("r06c", "1 on a mesh face (wall line without limitForce)", eps_of(rows[0], 0.1), ref)
+
+
+def a34b():
+    # the user's shell has CASE=stiff: LAMMPS there includes params_stiff.in (e 0.9)
+    import os
+    env = dict(os.environ, CASE="stiff")
+    import subprocess
+    r = subprocess.run([str(R.RESTITUTION), "deck", "in.deck", "--g", "1", "--json"], cwd=DECKS / "a34b_getenv_include",
+                       env=dict(R._env(), CASE="stiff"), capture_output=True, text=True)
+    a = json.loads(r.stdout)
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 0.9 0.3 damping coeff_restitution {GRAN}"]
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.002, M1, 1, 0.002, M1, 1.0, ntypes=1, **k), 1e-7)
+    report("a34b", "1-1 with CASE=stiff in the environment", eps_of(find(a["pairs"], [1, 1]), 1.0), ref)
 
 
 CASES = {k: v for k, v in dict(globals()).items() if k[:1] in "ral" and k[1:3].isdigit()}

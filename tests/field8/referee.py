@@ -206,6 +206,10 @@ def _liggghts_deck(spec):
     out.append(f"timestep {spec['dt']}")
     for k, a in enumerate(spec["atoms"]):
         out.append(f"create_atoms {a['type']} single {a['x'][0]} {a['x'][1]} {a['x'][2]} units box")
+    if spec.get("dummy"):
+        # LIGGGHTS stops on a system whose smallest atom type is not 1: a resting type-1 sphere far off
+        out.append(f"create_atoms 1 single {0.9 * L} {0.9 * L} {0.9 * L} units box")
+        out.append(f"set atom {len(spec['atoms']) + 1} diameter {spec['dummy']!r} density 1000")
     for k, a in enumerate(spec["atoms"]):
         vol = 4.0 / 3.0 * math.pi * a["radius"] ** 3
         out.append(f"set atom {k+1} diameter {2*a['radius']!r} density {a['mass']/vol!r}")
@@ -301,7 +305,7 @@ def liggghts_pair(lines, t1, r1, m1, t2, r2, m2, g, dt, *, units="si", ntypes=2,
 
 def liggghts_wall(lines, t1, r1, m1, g, dt, *, wall_point=(0, 0, 0), normal=(0, 0, 1), units="si",
                   ntypes=2, chunk=1, max_steps=10**6, phase=0.0, after_atoms=(), box=None,
-                  files=None):
+                  files=None, dummy=None):
     """LIGGGHTS: one sphere onto a wall (lines include the fix wall/gran)."""
     n = [float(c) for c in normal]
     gap = phase * g * dt
@@ -313,7 +317,7 @@ def liggghts_wall(lines, t1, r1, m1, g, dt, *, wall_point=(0, 0, 0), normal=(0, 
         "atoms": [{"type": t1, "radius": r1, "mass": m1, "x": x, "v": v}],
         "lines": list(lines), "after_atoms": list(after_atoms), "dt": dt, "chunk": chunk,
         "max_steps": max_steps, "mode": "wall", "normal": n,
-        "wall_point": list(wall_point), "g": g, "files": files or {},
+        "wall_point": list(wall_point), "g": g, "files": files or {}, "dummy": dummy,
     }
     return _run_liggghts(spec)
 
