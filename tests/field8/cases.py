@@ -368,7 +368,7 @@ def r06c():
            "fix mRS all property/global rollingStiffness scalar 2.25",
            "pair_style gran model hertz tangential history rolling_friction epsd3 limitForce on",
            "pair_coeff * *"]
-    rc, a, err = R.audit(DECKS / "r06c_ykevin_isocomp_plainrun/0-iso_comp.lmp", [0.1])
+    rc, a, err = R.audit(DECKS / "r06_ykevin_isocomp/0-iso_comp_plainrun.lmp", [0.1])
     for d in (0.0001, 0.00042):
         r = d / 2
         m = R.sphere_mass(r, 2650)
@@ -398,6 +398,118 @@ def a34b():
              f"pair_coeff * * hertz/material 1e8 0.9 0.3 damping coeff_restitution {GRAN}"]
     ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.002, M1, 1, 0.002, M1, 1.0, ntypes=1, **k), 1e-7)
     report("a34b", "1-1 with CASE=stiff in the environment", eps_of(find(a["pairs"], [1, 1]), 1.0), ref)
+
+
+def l08():
+    import subprocess
+    r = subprocess.run([str(R.RESTITUTION), "deck", "in.deck", "--g", "1", "--json"], cwd=DECKS / "l08_getenv",
+                       env=dict(R._env(), CASE="stiff"), capture_output=True, text=True)
+    a = json.loads(r.stdout)
+    mat = ["fix m1 all property/global youngsModulus peratomtype 5.e7",
+           "fix m2 all property/global poissonsRatio peratomtype 0.3",
+           "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9",
+           "fix m4 all property/global coefficientFriction peratomtypepair 1 0.5",
+           "pair_style gran model hertz tangential history", "pair_coeff * *"]
+    ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, 1, 0.002, M1, 1, 0.002, M1, 1.0, ntypes=1, **k), 1e-7)
+    report("l08", "1-1 with CASE=stiff in the environment", eps_of(find(a["pairs"], [1, 1]), 1.0), ref)
+
+
+def r01dt():
+    # the audit's stated spread at the deck's own dt (2.27 steps per contact), 64 start phases
+    pair = ["pair_style gran/hooke/history 1e5 2e4 50 15 0.4 1", "pair_coeff * *"]
+    m = R.sphere_mass(0.001, 2500)
+    lo, hi, vals = R.at_dt(lambda **kw: {"eps": R.lammps_pair(pair, 1, 0.001, m, 1, 0.001, m, 0.5,
+                           ntypes=3, dimension=2, **kw)["eps_raw"]}, 1e-5, phases=[i / 64 for i in range(64)])
+    print(f"r01dt | 1-1 at dt 1e-5, 64 start phases: {lo:.6f} .. {hi:.6f} (audit stderr: 0.924115 to 1.081105)")
+
+
+def r09b():
+    rc, a, err = R.audit(DECKS / "r09b_archer2_pour_hertz/in.pour", [1.0])
+    lines = ["pair_style granular",
+             "pair_coeff 1 * hertz 1000.0 50.0 tangential mindlin 800.0 1.0 0.5 rolling sds 500.0 200.0 0.5 twisting marshall",
+             "pair_coeff 2 2 hertz 200.0 20.0 tangential linear_history 300.0 1.0 0.1 rolling sds 200.0 100.0 0.1 twisting marshall"]
+    rows = [it for it in a["pairs"] if it["types"] == [1, 1]]
+    lo, hi = min(eps_of(it, 1.0) for it in rows), max(eps_of(it, 1.0) for it in rows)
+    for r, ae in ((0.5, lo), (0.25, hi)):
+        m = R.sphere_mass(r, 1.0)
+        ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, r, m, 1, r, m, 1.0, units="lj", **k), 1e-4)
+        report("r09b", f"1-1 r={r}", ae, ref)
+    m1, m2 = R.sphere_mass(0.5, 1.0), R.sphere_mass(0.25, 1.0)
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.5, m1, 1, 0.25, m2, 1.0, units="lj", **k), 1e-4)
+    print(f"r09b | 1-1 r 0.5 with r 0.25: engine {ref['eps0']} (audit range {lo} .. {hi})")
+    w = ["fix 2 all wall/gran granular hertz/material 1e5 1e3 0.3 tangential mindlin NULL 1.0 0.5 zplane 0 NULL"]
+    rows = [it for it in a["walls"] if it["types"] == [1]]
+    wl = min(eps_of(it, 1.0) for it in rows)
+    ref = R.extrapolate(lambda **k: R.lammps_wall(lines + w, 1, 0.5, m1, 1.0, units="lj", **k), 1e-4)
+    report("r09b", "1 on the floor, r 0.5", wl, ref)
+
+
+def a36():
+    lines = ["pair_style granular", f"pair_coeff * * hooke 2000.0 0.5 damping tsuji {GRAN}"]
+    _lmp_pairs("a36", DECKS / "a36_hooke_tsuji/in.deck", 1.0, [
+        ("1-2 hooke + tsuji", [1, 2], lines, (0.002, M1), (0.003, M2), {})])
+
+
+def a37():
+    lines = ["pair_style granular",
+             f"pair_coeff 1 1 hertz/material 1e8 0.4 0.3 damping tsuji {GRAN} limit_damping",
+             f"pair_coeff 2 2 hertz/material 2e8 0.6 0.25 damping tsuji {GRAN}"]
+    _lmp_pairs("a37", DECKS / "a37_limit_damping_mix/in.deck", 1.0, [
+        ("1-2 mixed by LAMMPS (limit_damping on one side)", [1, 2], lines, (0.002, M1), (0.003, M2), {})])
+
+
+def a40():
+    rc, a, err = R.audit(DECKS / "a40_pour_poly/in.deck", [1.0])
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 20000 0.3 damping viscoelastic {GRAN}"]
+    rows = [it for it in a["pairs"] if it["types"] == [1, 1]]
+    lo, hi = min(eps_of(it, 1.0) for it in rows), max(eps_of(it, 1.0) for it in rows)
+    ms, mb = R.sphere_mass(0.001, 2500), R.sphere_mass(0.003, 2500)
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.003, mb, 1, 0.003, mb, 1.0, ntypes=1, **k), 1e-7)
+    report("a40", "1-1 both d 0.006", lo, ref)
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.001, ms, 1, 0.001, ms, 1.0, ntypes=1, **k), 1e-7)
+    report("a40", "1-1 both d 0.002", hi, ref)
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.001, ms, 1, 0.003, mb, 1.0, ntypes=1, **k), 1e-7)
+    inside = lo - 1e-6 <= ref["eps0"] <= hi + 1e-6
+    print(f"a40 | 1-1 d 0.002 with d 0.006: engine {ref['eps0']} (audit range {lo} .. {hi}) {'INSIDE' if inside else 'OUTSIDE'}")
+
+
+def a42():
+    rc, a, err = R.audit(DECKS / "a42_freeze/in.deck", [1.0])
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 0.5 0.3 damping coeff_restitution {GRAN}",
+             "fix fr g2 freeze"]
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.002, M1, 2, 0.003, M2, 1.0, still2="freeze", **k), 1e-7)
+    report("a42", "1 onto a frozen 2", eps_of(find(a["pairs"], [1, 2]), 1.0), ref)
+
+
+def a07():
+    rc, a, err = R.audit(DECKS / "a07_fix_move_type2/in.deck", [1.0])
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 0.5 0.3 damping coeff_restitution {GRAN}",
+             "fix mv g2 move linear 0.0 0.0 0.0"]
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.002, M1, 2, 0.003, M2, 1.0, still2=True, **k), 1e-7)
+    report("a07", "1 onto a 2 held by fix move", eps_of(find(a["pairs"], [1, 2]), 1.0), ref)
+
+
+def r02b():
+    # hooke/history kn 400, gamman 1670 sqrt(9.8/0.0008): the audit says the pair sticks at g = 0.1
+    g = 1670 * (9.8 / 0.0008) ** 0.5
+    m = R.sphere_mass(0.0004, 2500)
+    lines = [f"pair_style gran/hooke/history 400 0.0 {g!r} 0.0 0.4 1", "pair_coeff * *"]
+    r = R.lammps_pair(lines, 1, 0.0004, m, 1, 0.0004, m, 0.1, dt=2e-7, ntypes=1, dimension=2, chunk=100,
+                      max_steps=2 * 10**6)
+    print(f"r02b | 1-1 at g 0.1, dt 2e-7, up to 0.4 s: {r}")
+
+
+def a30():
+    rc, a, err = R.audit(DECKS / "a30_wall_lj93/in.deck", [1.0])
+    lines = ["pair_style granular",
+             f"pair_coeff * * hertz/material 1e8 0.5 0.3 damping coeff_restitution {GRAN}",
+             f"fix floor all wall/gran granular hertz/material 1e8 0.5 0.3 damping coeff_restitution {GRAN} zplane 0.0 NULL",
+             "fix soft all wall/lj93 zlo 0.0 1e-6 0.003 0.01"]   # the deck's zlo EDGE is its box bottom, z = 0
+    ref = R.extrapolate(lambda **k: R.lammps_wall(lines, 1, 0.002, M1, 1.0, box=0.05, **k), 1e-7)
+    report("a30", "1 on the floor with the deck's wall/lj93 beside it", eps_of(find(a["walls"], [1], "floor"), 1.0), ref)
 
 
 CASES = {k: v for k, v in dict(globals()).items() if k[:1] in "ral" and k[1:3].isdigit()}

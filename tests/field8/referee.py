@@ -158,7 +158,7 @@ def lammps_pair(lines, t1, r1, m1, t2, r2, m2, g, dt, *, units="si", ntypes=2, c
         "max_steps": max_steps, "mode": "pair", "rsum": rsum, "g": g, "newton": newton,
         "atom_style": atom_style, "dimension": dimension,
     }
-    if still2:
+    if still2 and still2 != "freeze":   # "freeze": at rest, integrated, held by the deck's own fix
         spec["integrate_group"] = "g1"
     if dimension == 2:
         spec["boundary"] = "f f p"
