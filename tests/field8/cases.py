@@ -512,6 +512,22 @@ def a30():
     report("a30", "1 on the floor with the deck's wall/lj93 beside it", eps_of(find(a["walls"], [1], "floor"), 1.0), ref)
 
 
+def a43():
+    lines = ["pair_style granular",
+             f"pair_coeff 1 1 hertz/material 1e8 0.4 0.3 damping coeff_restitution {GRAN}",
+             f"pair_coeff 1 2 hooke 3000 0.5 damping mass_velocity {GRAN}",
+             f"pair_coeff 2 2 hertz/material 1e8 0.8 0.3 damping tsuji {GRAN}"]
+    _lmp_pairs("a43", DECKS / "a43_pairij_data/in.deck", 1.0, [
+        ("1-2 from the data file's PairIJ Coeffs", [1, 2], lines, (0.002, M1), (0.003, M2), {})])
+
+
+def a45():
+    m = math.pi * 0.002 ** 2 * 2.5        # set density/disc in 2d: pi r^2 rho
+    lines = ["pair_style granular", f"pair_coeff * * hooke 2000 0.05 damping velocity {GRAN}"]
+    _lmp_pairs("a45", DECKS / "a45_2d_density_disc/in.deck", 1.0, [
+        ("1-1 2d, density/disc", [1, 1], lines, (0.002, m), (0.002, m), {"dimension": 2})], ntypes=1)
+
+
 CASES = {k: v for k, v in dict(globals()).items() if k[:1] in "ral" and k[1:3].isdigit()}
 
 if __name__ == "__main__":
