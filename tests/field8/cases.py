@@ -528,6 +528,14 @@ def a45():
         ("1-1 2d, density/disc", [1, 1], lines, (0.002, m), (0.002, m), {"dimension": 2})], ntypes=1)
 
 
+def a51b():
+    # LAMMPS writes settled.data itself and reads it back: the spheres stay r 0.002, density 2500
+    rc, a, err = R.audit(DECKS / "a51b_write_data_stale/in.deck", [1.0])
+    lines = ["pair_style granular", f"pair_coeff * * hooke 2000 0.05 damping velocity {GRAN}"]
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, 0.002, M1, 1, 0.002, M1, 1.0, ntypes=1, **k), 1e-7)
+    report("a51b", "stage 2 1-1 after write_data + read_data", eps_of(find(a["stages"][1]["pairs"], [1, 1]), 1.0), ref)
+
+
 CASES = {k: v for k, v in dict(globals()).items() if k[:1] in "ral" and k[1:3].isdigit()}
 
 if __name__ == "__main__":
