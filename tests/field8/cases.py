@@ -536,6 +536,24 @@ def a51b():
     report("a51b", "stage 2 1-1 after write_data + read_data", eps_of(find(a["stages"][1]["pairs"], [1, 1]), 1.0), ref)
 
 
+def r06t():
+    # D2: the same collision with and without torsionTorque on (LIGGGHTS' rolling-model setting)
+    base = ["hard_particles yes",
+            "fix mEY all property/global youngsModulus peratomtype 7.0e10 7.0e10",
+            "fix mPO all property/global poissonsRatio peratomtype 0.25 0.25",
+            "fix mCOR all property/global coefficientRestitution peratomtypepair 2 0.8 0.8 0.8 0.8",
+            "fix mCOF all property/global coefficientFriction peratomtypepair 2 0.05 0 0 0",
+            "fix mCORF all property/global coefficientRollingFriction peratomtypepair 2 0.1 0 0 0",
+            "fix mCORVD all property/global coefficientRollingViscousDamping peratomtypepair 2 0.13 0.13 0.13 0.13",
+            "fix mRS all property/global rollingStiffness scalar 2.25"]
+    r = 0.00042 / 2
+    m = R.sphere_mass(r, 2650)
+    for tail in ("limitForce on", "limitForce on torsionTorque on"):
+        mat = base + [f"pair_style gran model hertz tangential history rolling_friction epsd3 {tail}", "pair_coeff * *"]
+        ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, 1, r, m, 1, r, m, 0.1, **k), 1e-9)
+        print(f"r06t | {tail}: engine dt->0 {ref['eps0']} (wobble {ref['wobble']})")
+
+
 CASES = {k: v for k, v in dict(globals()).items() if k[:1] in "ral" and k[1:3].isdigit()}
 
 if __name__ == "__main__":
