@@ -35,6 +35,21 @@ def report(case, label, audit_eps, ref, tol=2e-6):
     return verdict
 
 
+# a flat face of two triangles, 2 x 2 before the deck's scale: a stand-in for a mesh's face (LIGGGHTS
+# takes the sphere's own radius against any wall, so only flatness matters)
+FLAT_STL = ("solid f\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 -1 0\nvertex 1 1 0\n"
+            "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 1 0\n"
+            "vertex -1 1 0\nendloop\nendfacet\nendsolid f\n")
+
+
+def _lig_like_pairs(case, mat, radii, density, g, audit_eps, dt0):
+    """LIGGGHTS: two like spheres head-on at each radius, against one audit row."""
+    for r in radii:
+        m = R.sphere_mass(r, density)
+        ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, 1, r, m, 1, r, m, g, **k), dt0)
+        report(case, f"1-1 r={r:.6g} g={g}", audit_eps, ref)
+
+
 def eps_of(item, g):
     for s, e in zip(item["speeds"], item["eps"]):
         if abs(s - g) <= 1e-9 * abs(g):
@@ -83,15 +98,11 @@ def r05():
         "pair_style gran model hertz tangential history cohesion sjkr rolling_friction cdt",
         "pair_coeff * *",
     ]
-    for r in (0.0005062582509797333, 0.0006099561759045066):
-        m = R.sphere_mass(r, 1580)
-        ref = R.extrapolate(lambda **kw: R.liggghts_pair(mat, 1, r, m, 1, r, m, 0.5, **kw), 1e-7)
-        report("r05", f"1-1 r={r:.6g} g=0.5", eps_of(find(st["pairs"], [1, 1]), 0.5), ref)
+    _lig_like_pairs("r05", mat, (0.0005062582509797333, 0.0006099561759045066), 1580, 0.5,
+                    eps_of(find(st["pairs"], [1, 1]), 0.5), 1e-7)
     # the mesh face: a flat two-triangle mesh of type 2 with the deck's wall line (a stand-in for
     # cylinder.stl's faces: the face is flat, LIGGGHTS takes the sphere's radius against a wall)
-    stl = ("solid f\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 -1 0\nvertex 1 1 0\n"
-           "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 1 0\n"
-           "vertex -1 1 0\nendloop\nendfacet\nendsolid f\n")
+    stl = FLAT_STL
     r = 0.0005062582509797333
     m = R.sphere_mass(r, 1580)
     wall = mat + ["fix cad all mesh/surface file face.stl type 2 scale 1e-2",
@@ -132,16 +143,24 @@ M1 = R.sphere_mass(0.002, 2500)
 M2 = R.sphere_mass(0.003, 7800)
 
 
+def _three(case, folder, lines, labels):
+    """The pairs 1-1, 1-2 and 2-2 of the two-type decks (type 1: r 0.002, density 2500; type 2: r
+    0.003, density 7800), each under `lines`."""
+    b1, b2 = (0.002, M1), (0.003, M2)
+    _lmp_pairs(case, DECKS / folder / "in.deck", 1.0, [
+        (labels[0], [1, 1], lines, b1, b1, {}),
+        (labels[1], [1, 2], lines, b1, b2, {}),
+        (labels[2], [2, 2], lines, b2, b2, {}),
+    ])
+
+
 def a09():
     lines = ["pair_style hybrid granular gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0",
              f"pair_coeff 1 1 granular hertz/material 1e8 0.5 0.3 damping tsuji {GRAN}",
              "pair_coeff 2 2 gran/hooke/history",
              f"pair_coeff 1 2 granular hooke 2000.0 0.3 damping mass_velocity {GRAN}"]
-    _lmp_pairs("a09", DECKS / "a09_hybrid/in.deck", 1.0, [
-        ("1-1 tsuji in hybrid", [1, 1], lines, (0.002, M1), (0.002, M1), {}),
-        ("1-2 hooke in hybrid", [1, 2], lines, (0.002, M1), (0.003, M2), {}),
-        ("2-2 gran/hooke/history in hybrid", [2, 2], lines, (0.003, M2), (0.003, M2), {}),
-    ])
+    _three("a09", "a09_hybrid", lines, ("1-1 tsuji in hybrid", "1-2 hooke in hybrid",
+                                        "2-2 gran/hooke/history in hybrid"))
 
 
 def a11():
@@ -149,11 +168,8 @@ def a11():
              f"pair_coeff 1 1 hertz/material 1.5e8 0.46 0.3 damping tsuji {GRAN}",
              f"pair_coeff 2 2 hertz/material 1.5e8 0.457 0.3 damping coeff_restitution {GRAN}",
              f"pair_coeff 1 2 hooke 910 3.3333 damping mass_velocity {GRAN}"]
-    _lmp_pairs("a11", DECKS / "a11_formats/in.deck", 1.0, [
-        ("1-1 $(v_e0:%.2f)", [1, 1], lines, (0.002, M1), (0.002, M1), {}),
-        ("1-2 kn $(v_e0*2:%.2f)*1e3, $(10.0/3.0:%.5g)", [1, 2], lines, (0.002, M1), (0.003, M2), {}),
-        ("2-2 format variable", [2, 2], lines, (0.003, M2), (0.003, M2), {}),
-    ])
+    _three("a11", "a11_formats", lines, ("1-1 $(v_e0:%.2f)", "1-2 kn $(v_e0*2:%.2f)*1e3, $(10.0/3.0:%.5g)",
+                                         "2-2 format variable"))
 
 
 def a12():
@@ -369,14 +385,8 @@ def r06c():
            "pair_style gran model hertz tangential history rolling_friction epsd3 limitForce on",
            "pair_coeff * *"]
     rc, a, err = R.audit(DECKS / "r06_ykevin_isocomp/0-iso_comp_plainrun.lmp", [0.1])
-    for d in (0.0001, 0.00042):
-        r = d / 2
-        m = R.sphere_mass(r, 2650)
-        ref = R.extrapolate(lambda **k: R.liggghts_pair(mat, 1, r, m, 1, r, m, 0.1, **k), 1e-9)
-        report("r06c", f"1-1 d={d}", eps_of(find(a["pairs"], [1, 1]), 0.1), ref)
-    stl = ("solid f\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 -1 0\nvertex 1 1 0\n"
-           "endloop\nendfacet\nfacet normal 0 0 1\nouter loop\nvertex -1 -1 0\nvertex 1 1 0\n"
-           "vertex -1 1 0\nendloop\nendfacet\nendsolid f\n")
+    _lig_like_pairs("r06c", mat, (0.00005, 0.00021), 2650, 0.1, eps_of(find(a["pairs"], [1, 1]), 0.1), 1e-9)
+    stl = FLAT_STL
     r = 0.00042 / 2
     m = R.sphere_mass(r, 2650)
     w = mat + ["fix zl all mesh/surface/stress file face.stl type 2 scale 1e-3",

@@ -132,6 +132,22 @@ def _run_lammps(spec):
     raise RuntimeError(f"LAMMPS referee failed: {r.stderr[-2000:]}")
 
 
+def _wall_spec(t1, r1, m1, g, dt, wall_point, normal, units, ntypes, chunk, max_steps, phase, box, lines):
+    """The part of a sphere-on-wall spec both engines share: the sphere touching the wall (phase *
+    g * dt short of it), moving into it at g."""
+    n = [float(c) for c in normal]
+    gap = phase * g * dt
+    x = [wall_point[i] + n[i] * (r1 + gap) for i in range(3)]
+    v = [-g * n[i] for i in range(3)]
+    L = box if box is not None else 4 * r1 + 10 * g * dt + max(abs(c) for c in wall_point) * 1.5
+    return {
+        "units": units, "ntypes": ntypes, "box": L, "skin": 0.3 * r1,
+        "atoms": [{"type": t1, "radius": r1, "mass": m1, "x": x, "v": v}],
+        "lines": list(lines), "dt": dt, "chunk": chunk, "max_steps": max_steps, "mode": "wall",
+        "normal": n, "wall_point": list(wall_point), "g": g,
+    }
+
+
 def lammps_pair(lines, t1, r1, m1, t2, r2, m2, g, dt, *, units="si", ntypes=2, chunk=1,
                 max_steps=10**6, before_atoms=(), phase=0.0, newton="off", atom_style="sphere",
                 dimension=3, still2=False):
@@ -169,18 +185,9 @@ def lammps_wall(lines, t1, r1, m1, g, dt, *, wall_point=(0, 0, 0), normal=(0, 0,
                 ntypes=2, chunk=1, max_steps=10**6, before_atoms=(), phase=0.0, box=None,
                 newton="off", atom_style="sphere", box_center=None):
     """One sphere onto a wall whose surface passes through wall_point with outward `normal`."""
-    n = [float(c) for c in normal]
-    gap = phase * g * dt
-    x = [wall_point[i] + n[i] * (r1 + gap) for i in range(3)]
-    v = [-g * n[i] for i in range(3)]
-    L = box if box is not None else 4 * r1 + 10 * g * dt + max(abs(c) for c in wall_point) * 1.5
-    spec = {
-        "units": units, "ntypes": ntypes, "box": L, "skin": 0.3 * r1,
-        "atoms": [{"type": t1, "radius": r1, "mass": m1, "x": x, "v": v}],
-        "lines": list(lines), "before_atoms": list(before_atoms), "dt": dt, "chunk": chunk,
-        "max_steps": max_steps, "mode": "wall", "normal": n,
-        "wall_point": list(wall_point), "g": g, "newton": newton, "atom_style": atom_style,
-    }
+    spec = _wall_spec(t1, r1, m1, g, dt, wall_point, normal, units, ntypes, chunk, max_steps, phase,
+                      box, lines)
+    spec.update(before_atoms=list(before_atoms), newton=newton, atom_style=atom_style)
     return _run_lammps(spec)
 
 
@@ -307,18 +314,9 @@ def liggghts_wall(lines, t1, r1, m1, g, dt, *, wall_point=(0, 0, 0), normal=(0, 
                   ntypes=2, chunk=1, max_steps=10**6, phase=0.0, after_atoms=(), box=None,
                   files=None, dummy=None):
     """LIGGGHTS: one sphere onto a wall (lines include the fix wall/gran)."""
-    n = [float(c) for c in normal]
-    gap = phase * g * dt
-    x = [wall_point[i] + n[i] * (r1 + gap) for i in range(3)]
-    v = [-g * n[i] for i in range(3)]
-    L = box if box is not None else 4 * r1 + 10 * g * dt + max(abs(c) for c in wall_point) * 1.5
-    spec = {
-        "units": units, "ntypes": ntypes, "box": L, "skin": 0.3 * r1,
-        "atoms": [{"type": t1, "radius": r1, "mass": m1, "x": x, "v": v}],
-        "lines": list(lines), "after_atoms": list(after_atoms), "dt": dt, "chunk": chunk,
-        "max_steps": max_steps, "mode": "wall", "normal": n,
-        "wall_point": list(wall_point), "g": g, "files": files or {}, "dummy": dummy,
-    }
+    spec = _wall_spec(t1, r1, m1, g, dt, wall_point, normal, units, ntypes, chunk, max_steps, phase,
+                      box, lines)
+    spec.update(after_atoms=list(after_atoms), files=files or {}, dummy=dummy)
     return _run_liggghts(spec)
 
 
