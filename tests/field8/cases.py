@@ -564,6 +564,28 @@ def r06t():
         print(f"r06t | {tail}: engine dt->0 {ref['eps0']} (wobble {ref['wobble']})")
 
 
+def a55():
+    """405 spheres of random diameter: the audit's "smallest/largest eps over the sizes present"
+    against the pairs of the two smallest and the two largest spheres LAMMPS holds."""
+    import subprocess
+    code = ("from lammps import lammps\nimport json\n"
+            "l=lammps(cmdargs=['-log','none','-screen','none','-skiprun'])\nl.file('in.deck')\n"
+            "n=l.get_natoms()\nr=l.numpy.extract_atom('radius')[:n].copy()\n"
+            "m=l.numpy.extract_atom('rmass')[:n].copy()\ni=r.argsort()\n"
+            "print(json.dumps([[float(r[k]),float(m[k])] for k in list(i[:2])+list(i[-2:])]))\n")
+    out = subprocess.run([str(R.PYTHON), "-c", code], cwd=DECKS / "a55_random_diameters", env=R._env(),
+                         capture_output=True, text=True, check=True).stdout
+    (rs1, ms1), (rs2, ms2), (rl1, ml1), (rl2, ml2) = json.loads(out.splitlines()[-1])
+    rc, a, err = R.audit(DECKS / "a55_random_diameters/in.deck", [1.0])
+    rows = [it for it in a["pairs"] if it["types"] == [1, 1]]
+    lo, hi = min(eps_of(it, 1.0) for it in rows), max(eps_of(it, 1.0) for it in rows)
+    lines = ["pair_style granular", f"pair_coeff * * hooke 2000 0.05 damping velocity {GRAN}"]
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, rs1, ms1, 1, rs2, ms2, 1.0, ntypes=1, **k), 1e-7)
+    report("a55", f"1-1 the two smallest spheres (r {rs1:.6g}, {rs2:.6g}) vs the stated smallest", lo, ref)
+    ref = R.extrapolate(lambda **k: R.lammps_pair(lines, 1, rl1, ml1, 1, rl2, ml2, 1.0, ntypes=1, **k), 1e-7)
+    report("a55", f"1-1 the two largest spheres (r {rl1:.6g}, {rl2:.6g}) vs the stated largest", hi, ref)
+
+
 CASES = {k: v for k, v in dict(globals()).items() if k[:1] in "ral" and k[1:3].isdigit()}
 
 if __name__ == "__main__":
