@@ -568,11 +568,15 @@ def _hybrid(deck: Deck, words: list, where: str, line: str) -> list:
     grans = [k for k, w in enumerate(words) if k >= 2 and w in PAIR_STYLES]
     names = [words[k] for k in grans]
     older = [name for name in names if name != "granular"]
-    if not grans or len(set(names)) < len(names) or len(older) > 1 or \
+    if not grans or len(set(older)) < len(older) or len(older) > 1 or \
             any(PAIR_STYLES[name].ENGINE != "LAMMPS" for name in names[1:]):
         raise DeckError(where, line, f"pair_style {words[1]} with {len(grans) or 'no'} granular sub-styles "
                                      f"({' '.join(names) or 'none'}): the reader maps one, or one older gran/* "
-                                     "style beside granular")
+                                     "style beside granular, or several granular")
+    if names.count("granular") > 1:
+        # LAMMPS numbers the instances of one sub-style, and pair_coeff names one as "granular N"
+        count = iter(range(1, len(names) + 1))
+        names = [name if not name.startswith("granular") else f"granular {next(count)}" for name in names]
     substyles = []
     for k in grans:
         n = k + 1
@@ -643,6 +647,9 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     if deck.hybrid and len(words) > 3:
         sub = words[3]
+        if f"{sub} 1" in deck.substyle.split(" and ") and len(words) > 4:
+            # one of several instances of a sub-style, named by its number (LAMMPS stops without it)
+            sub, words = f"{sub} {words[4]}", [*words[:4], *words[5:]]
         if sub == deck.substyle:
             words = [*words[:3], *words[4:]]
         elif sub in deck.substyle.split(" and "):
@@ -683,12 +690,38 @@ def _run_every(words: list, where: str, line: str) -> None:
     if "every" not in words:
         return
     for command in words[words.index("every") + 2:]:
-        first = command.split()[0] if command.split() else ""
-        if first not in _INERT and first != "NULL":
+        first = _first_not_inert(command)
+        if first is not None:
             raise DeckError(where, line, f"run ... every runs {first} between the run's parts, which may change the "
                                          "contact from the second part on, and the engine's pass never runs them "
                                          "(its runs skipped or cut to one step): not audited; split the run into "
                                          "runs with the commands between them")
+
+
+def _first_not_inert(command: str) -> str | None:
+    """The first command word a run's ``every`` may run that can change a contact, None if none:
+    inert ones, NULL, quit (it ends the deck) and an if whose every branch is such (its condition
+    chooses among them)."""
+    try:
+        parts = words(command)
+    except ScriptError:
+        return command
+    if not parts or parts[0] in _INERT or parts[0] in ("NULL", "quit"):
+        return None
+    if parts[0] != "if" or len(parts) < 4 or parts[2] != "then":
+        return parts[0]
+    # if COND then C... [elif COND C...]... [else C...]: the words after then, elif's condition and
+    # else are branch commands
+    branches, k = [], 3
+    while k < len(parts):
+        if parts[k] == "elif":
+            k += 2
+        elif parts[k] == "else":
+            k += 1
+        else:
+            branches.append(parts[k])
+            k += 1
+    return next((first for first in map(_first_not_inert, branches) if first is not None), None)
 
 
 def _inserted(deck: Deck) -> None:

@@ -49,6 +49,11 @@ try:
 except Exception as exc:
     sys.stderr.write(str(exc).strip())
     sys.exit(3)
+# the deck has run: LAMMPS' teardown is not the deck's (with two granular sub-styles it deletes a
+# fix twice and aborts), so the process ends here, its screen file flushed
+lmp.flush_buffers()
+sys.stdout.flush()
+os._exit(0)
 """
 
 
