@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import copy
 import math
+import os
 import re
 
 from .beside import BESIDE, adapt_parts, adapted_diameter
@@ -153,6 +154,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     deposited_ran: set = set()     # types a fix deposit has run for
     made: dict = {}                # type -> the sizes of the atoms LAMMPS pours made in the runs so far
     written: dict = {}             # restart file -> the settings at its write_restart (restart_state)
+    data_written: dict = {}        # data file a write_data wrote -> whether pours had made atoms by then
     infos = iter(restarts or ())
     pending: list = []
     for cmd in commands:
@@ -166,6 +168,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                 block, same = None, False        # the poured sizes changed: no pass repeats the last
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
+        if split and split[0] == "write_data" and len(split) > 1:
+            data_written[split[1]] = bool(made)
+        if split and split[0] == "read_data" and len(split) > 1 and data_written.get(split[1]):
+            # the engine's pass skips runs: the file it wrote lacks the atoms the pours made
+            raise DeckError(place(cmd.loc), cmd.text, f"the deck wrote {split[1]} after poured atoms were made "
+                                                      "(write_data); the engine's pass skips runs, so its file "
+                                                      "lacks them: not audited")
         if not split or split[0] in _ENGINE_ONLY:
             continue
         if split[0] == "run":
@@ -480,6 +489,9 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         labelmap(deck, words, where, line)
     elif cmd == "create_box":
         deck.ntypes = atom_type(words[1], where, line, "the number of types")
+    elif cmd == "shell" and words[1:2] == ["putenv"]:
+        # the engine sets them itself (the pass runs it): a later getenv reads these
+        deck.putenv.update(w.split("=", 1) for w in words[2:] if "=" in w)
     elif cmd == "read_data" and len(words) >= 2:
         _read_data(deck, words, where, line, read_file)
         deck.atoms = True
@@ -497,7 +509,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             _inserted(deck)
     elif cmd == "clear":
         # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
-        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages, environment=deck.environment,
+                     putenv=deck.putenv)     # the process's environment outlives a clear
         deck.__dict__.update(fresh.__dict__)
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
@@ -1296,7 +1309,7 @@ def repour(deck: Deck, made: dict, changed: set) -> None:
             deck.poured[t] = now
             pour_into(deck, t, set())
             continue
-        del deck.poured[t]
+        deck.poured.pop(t, None)          # (a clear has already dropped it)
         for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
             known.pop(t, None)
 
@@ -1372,6 +1385,9 @@ def _variable(deck: Deck, words: list) -> None:
     replaces it), None for other styles; delete forgets it."""
     if words[2] == "delete":
         deck.variables.pop(words[1], None)
+    elif words[2] == "getenv" and len(words) > 3:
+        deck.environment[words[3]] = deck.putenv.get(words[3], os.environ.get(words[3], ""))
+        deck.variables[words[1]] = None
     else:
         deck.variables[words[1]] = " ".join(words[3:]) if words[2] == "equal" else None
 
@@ -1385,14 +1401,16 @@ def _float(token: str) -> float | None:
 
 
 def _sampled(sizes: list) -> list:
-    """At most about _RANGE_SAMPLES of a type's held sizes, sorted by radius: evenly spaced in that
-    order, the smallest and largest radius and the lightest and densest among them (pairing every
-    size of a type with hundreds of sizes with every other costs minutes where the eps of a few
-    spread over them tells the range)."""
+    """At most about _RANGE_SAMPLES + 6 of a type's held sizes, sorted by radius: evenly spaced in
+    that order, the two smallest and two largest radii and the two lightest and two densest among
+    them (pairing every size of a type with hundreds of sizes with every other costs minutes where
+    the eps of a few spread over them tells the range; a size one sphere alone holds meets only
+    others, so the next one to each end is kept too)."""
     if len(sizes) <= _RANGE_SAMPLES:
         return sizes
     picks = {sizes[round(k * (len(sizes) - 1) / (_RANGE_SAMPLES - 1))] for k in range(_RANGE_SAMPLES)}
-    picks |= {min(sizes, key=lambda s: s[1]), max(sizes, key=lambda s: s[1])}
+    by_density = sorted(sizes, key=lambda s: s[1])
+    picks |= {*sizes[:2], *sizes[-2:], *by_density[:2], *by_density[-2:]}
     return sorted(picks)
 
 
