@@ -985,7 +985,10 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         if wall_again is not None and deck.walls and deck.walls[-1][1][1] == words[1]:
             deck.walls.insert(wall_again, deck.walls.pop())
     elif style not in _IRRELEVANT_FIXES:
-        deck.unknown.append((*loc, line, "not understood"))
+        # a fix the audit does not know may push its atoms (a wall potential, a field): the rows
+        # do not include what it does, and say so
+        deck.unknown.append((*loc, line, f"not understood: fix {style} may add forces to its atoms (group "
+                                         f"{words[2]}), which the eps printed do not include"))
 
 
 def _unfix(deck: Deck, fix_id: str) -> None:
