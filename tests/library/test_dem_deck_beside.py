@@ -295,3 +295,14 @@ def test_forces_averaged_dragged_or_momentum_rescaled_are_named_beside_the_pair(
     assert (f"fix {style} ({fix.split()[1]})" in err) is named, err
     assert any(b["style"] == style for b in pairs[(1, 2)]["beside"]) is named
     assert f"not understood: {fix}" not in err
+
+
+@needs_lammps
+def test_a_fix_the_audit_does_not_know_is_said_to_be_left_out_of_the_eps(tmp_path):
+    """Field round 8: a wall/lj93 at the granular floor's plane (LAMMPS: 0.51111 where the floor
+    alone gives 0.5) was named only as 'not understood'; the line now says that such a fix may add
+    forces the eps printed do not include."""
+    pairs, err = _audit(tmp_path, HEAD.format(T=T).replace("units si", "units si\nboundary p p f")
+                        + "fix soft all wall/lj93 zlo EDGE 1e-6 0.003 0.01\nrun 1\n")
+    assert "not understood: fix wall/lj93 may add forces to its atoms (group all), which the eps printed do not " \
+           "include" in err, err

@@ -55,3 +55,26 @@ def test_a_run_in_parts_with_nothing_between_is_audited_as_one_run(tmp_path):
     got, err = audit(tmp_path / "in.deck", "--g", "0.5")
     assert len(got["stages"]) == 1 and [r["types"] for r in got["pairs"]] == [[1, 1]], got
     agrees_with_lammps(got["pairs"], {1: (0.005, 2500.0)}, LINE, 1)
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between, audited", [
+    ("\"if '${x} < 1.2' then 'write_restart consol.equil' 'quit'\"", True),
+    ("\"if '${x} < 1.2' then 'print low' elif '${x} > 5' 'quit' else 'thermo 10'\"", True),
+    (f"\"if '${{x}} < 1.2' then 'print low' else '{LINE.replace('1000', '2000')}'\"", False)],
+    ids=["write_restart and quit", "print, quit, thermo", "a pair_coeff in a branch"])
+def test_an_if_between_the_parts_is_read_by_its_branches(tmp_path, between, audited):
+    """Field round 8: a settle loop that writes a restart and quits once a variable falls below a
+    threshold (run N every M "if ... then 'write_restart ...' 'quit'") was refused, though no branch
+    can change a contact. An if between the parts is now read by its branches: inert ones, and quit,
+    which ends the deck, leave the run audited; a branch that sets a contact is refused as before."""
+    (tmp_path / "in.deck").write_text(DECK + f"variable x equal 2.0\nrun 30 every 10 {between}\n")
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5")
+    if audited:
+        got, err = audit(tmp_path / "in.deck", "--g", "0.5")
+        assert len(got["stages"]) == 1 and [r["types"] for r in got["pairs"]] == [[1, 1]], got
+        agrees_with_lammps(got["pairs"], {1: (0.005, 2500.0)}, LINE, 1)
+        assert not (tmp_path / "consol.equil").exists()
+    else:
+        assert status == 2 and out == "" and "runs pair_coeff between the run's parts" in err, err

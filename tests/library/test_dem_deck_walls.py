@@ -715,6 +715,23 @@ def test_an_accelerating_liggghts_mesh_is_named_not_audited(tmp_path, motion, va
         assert "mesh mesh1 moves with an acceleration (fix shake all move/mesh" in named[0]["why"]
 
 
+def test_liggghts_torsion_torque_of_the_rolling_model_leaves_the_normal_contact(tmp_path):
+    """Field round 8: torsionTorque on (an option LIGGGHTS 3.8.0's rolling model epsd3 registers, a
+    torque about the contact normal) was refused as a keyword that may change the normal force.
+    LIGGGHTS runs the deck; the pairs and walls are audited as without the rolling model."""
+    rolling = ("fix r1 all property/global coefficientRollingFriction peratomtypepair 2 0.1 0.1 0.1 0.1\n"
+               "fix r2 all property/global coefficientRollingViscousDamping peratomtypepair 2 0.1 0.1 0.1 0.1\n"
+               "fix r3 all property/global rollingStiffness scalar 1e3\n"
+               "pair_style gran model hertz tangential history rolling_friction epsd3 torsionTorque on\n")
+    plain, _ = audit(tmp_path, liggghts_deck(""), 1.0)
+    text = liggghts_deck("").replace("pair_style gran model hertz tangential history\n", rolling)
+    assert "torsionTorque on" in text
+    res, err = audit(tmp_path, text, 1.0)
+    assert [p["eps"] for p in res["pairs"]] == [p["eps"] for p in plain["pairs"]]
+    assert [w["eps"] for w in res["walls"]] == [w["eps"] for w in plain["walls"]]
+    assert "torsionTorque on" in res["ignored"] and "torsionTorque on" not in str(res["unknown_lines"])
+
+
 def test_a_liggghts_servo_mesh_is_named_as_moving_not_as_missing(tmp_path):
     """A mesh/surface/stress/servo wall moves at the velocity its controller sets each step to reach
     a target force: the audit names it as a moving mesh whose faces are not audited, not as a mesh

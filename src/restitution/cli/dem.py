@@ -284,7 +284,8 @@ def _sized(row: dict) -> str:
     at = " and ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in row["at"])
     if row["sizes"] == "only":
         return f" (spheres of several sizes, of which only these meet: {at})"
-    return f" ({row['sizes']} over the sizes present, at {at})"
+    over = "the sizes sampled (a note says which)" if row.get("sampled") else "the sizes present"
+    return f" ({row['sizes']} over {over}, at {at})"
 
 
 def _run_materials(engine, args, text: str, speeds: list, read_file, out) -> None:

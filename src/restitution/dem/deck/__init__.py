@@ -262,8 +262,8 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     # sized by _ends on the rows it keeps (_beside)
                     row["_beside"] = lambda at_row: effects(deck, at_row, contact, pair, (t,), faces=faces) + others
                     return row, (tuple(size),) if t in deck.sizes else ()
-                rows += _time_steps(_ends(_over_sizes(
-                    deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds)))
+                rows += _sampled_rows(deck, (t,), _time_steps(_ends(_over_sizes(
+                    deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds))))
     return rows, unknown
 
 
@@ -441,7 +441,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import scratch_copy
-    from .stream import engine_error, skipped, snapshots, unchecked
+    from .stream import engine_error, skipped, snapshots, unchecked, written_then_read
     if engine == "LAMMPS":
         from ..engines.lammps import deck_run
     else:
@@ -466,6 +466,11 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                                                   "not run it; copy the file beside the deck")
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
+        if (hit := written_then_read(commands, scratch)) is not None:
+            (wrote, writer), (read, reader) = hit
+            raise DeckError(place(read), reader, f"it reads a file that {place(wrote)} ({writer}) names, which the "
+                                                 "audit does not run (it may run code or write files): the file read "
+                                                 "may not be the one the engine run by hand reads; not audited")
         atoms = snapshots(done.atoms) + snapshots(done.at_end)
         if done.timed_out and not atoms:
             # no run and no end reached (a loop without a run): nothing to audit, and "no particle"
@@ -724,7 +729,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                         "walls": walls})
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
-            "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck)}
+            "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck) + _environment_notes(deck)}
 
 
 def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]:
@@ -770,7 +775,8 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                 row["_beside"] = lambda at_row: effects(sized, at_row, contact, pair, (i, j),
                                                         lambda k: _frozen_contact(sized, i, j, k), unmoved=unmoved[0])
                 return row, at
-            pairs += _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row, speeds)))
+            pairs += _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row,
+                                                                                speeds))))
     walls, walls_not = _wall_rows(deck, speeds, ran)
     if deck.dt_reset:
         for row in pairs + walls:
@@ -879,6 +885,17 @@ def _middle_eps(contacts: list, g: float) -> list:
             for n in members:
                 out[n] = _eps_or_stick(contacts[n][0], g)[0]
     return out
+
+
+def _sampled_rows(deck: Deck, types: tuple, rows: list) -> list:
+    """The rows of a range (``sizes`` smallest or largest eps) marked ``sampled`` where a type of
+    theirs holds more sizes than were audited: the range is over the sizes sampled, which need
+    not hold its ends."""
+    if any(t in deck.sampled for t in types):
+        for row in rows:
+            if row.get("sizes") in ("smallest eps", "largest eps"):
+                row["sampled"] = True
+    return rows
 
 
 def _ends(rows: list) -> list:
@@ -1010,8 +1027,9 @@ def _empty_notes(deck: Deck) -> list:
             "sphere pairs cannot happen there and are not audited" for t in empty if t not in inserted] + \
         [f"type {t} is inserted by a fix (deposit) as the runs go, at sizes the audit does not read: its pairs "
          "are not audited" for t in inserted] + \
-        [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the smallest and "
-         "largest radius and the lightest and densest among them" for t, (n, k) in sorted(sampled.items())]
+        [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the two smallest and "
+         "two largest radii and the two lightest and two densest among them; its pairs' eps range is over these, "
+         "and the sizes left out may reach beyond it" for t, (n, k) in sorted(sampled.items())]
 
 
 def _beside_deposited(stages: list, t: int) -> str:
@@ -1024,6 +1042,14 @@ def _beside_deposited(stages: list, t: int) -> str:
     shown = ", ".join(f"radius {r:.6g} density {rho:.6g}" for r, rho in others[:3])
     more = f" and {len(others) - 3} more" if len(others) > 3 else ""
     return f", beside the type's other sizes ({shown}{more}), over which its pairs are audited"
+
+
+def _environment_notes(deck: Deck) -> list:
+    """One note per environment variable a getenv-style variable of the deck read: the engine's pass
+    ran in the user's environment, and the answer holds for the values it had."""
+    return [f"the deck reads the environment variable {name} (a getenv variable), here "
+            + (f"'{value}'" if value else "unset or empty") + ": the answer holds for this value"
+            for name, value in sorted(deck.environment.items())]
 
 
 def _dt_reset_notes(deck: Deck) -> list:

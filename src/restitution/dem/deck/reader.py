@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import copy
 import math
+import os
 import re
 
 from .beside import BESIDE, adapt_parts, adapted_diameter
@@ -153,6 +154,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     deposited_ran: set = set()     # types a fix deposit has run for
     made: dict = {}                # type -> the sizes of the atoms LAMMPS pours made in the runs so far
     written: dict = {}             # restart file -> the settings at its write_restart (restart_state)
+    data_written: dict = {}        # data file a write_data wrote -> whether pours had made atoms by then
     infos = iter(restarts or ())
     pending: list = []
     for cmd in commands:
@@ -166,6 +168,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                 block, same = None, False        # the poured sizes changed: no pass repeats the last
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
+        if split and split[0] == "write_data" and len(split) > 1:
+            data_written[split[1]] = bool(made)
+        if split and split[0] == "read_data" and len(split) > 1 and data_written.get(split[1]):
+            # the engine's pass skips runs: the file it wrote lacks the atoms the pours made
+            raise DeckError(place(cmd.loc), cmd.text, f"the deck wrote {split[1]} after poured atoms were made "
+                                                      "(write_data); the engine's pass skips runs, so its file "
+                                                      "lacks them: not audited")
         if not split or split[0] in _ENGINE_ONLY:
             continue
         if split[0] == "run":
@@ -480,6 +489,9 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         labelmap(deck, words, where, line)
     elif cmd == "create_box":
         deck.ntypes = atom_type(words[1], where, line, "the number of types")
+    elif cmd == "shell" and words[1:2] == ["putenv"]:
+        # the engine sets them itself (the pass runs it): a later getenv reads these
+        deck.putenv.update(w.split("=", 1) for w in words[2:] if "=" in w)
     elif cmd == "read_data" and len(words) >= 2:
         _read_data(deck, words, where, line, read_file)
         deck.atoms = True
@@ -497,7 +509,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             _inserted(deck)
     elif cmd == "clear":
         # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
-        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages, environment=deck.environment,
+                     putenv=deck.putenv)     # the process's environment outlives a clear
         deck.__dict__.update(fresh.__dict__)
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
@@ -568,11 +581,15 @@ def _hybrid(deck: Deck, words: list, where: str, line: str) -> list:
     grans = [k for k, w in enumerate(words) if k >= 2 and w in PAIR_STYLES]
     names = [words[k] for k in grans]
     older = [name for name in names if name != "granular"]
-    if not grans or len(set(names)) < len(names) or len(older) > 1 or \
+    if not grans or len(set(older)) < len(older) or len(older) > 1 or \
             any(PAIR_STYLES[name].ENGINE != "LAMMPS" for name in names[1:]):
         raise DeckError(where, line, f"pair_style {words[1]} with {len(grans) or 'no'} granular sub-styles "
                                      f"({' '.join(names) or 'none'}): the reader maps one, or one older gran/* "
-                                     "style beside granular")
+                                     "style beside granular, or several granular")
+    if names.count("granular") > 1:
+        # LAMMPS numbers the instances of one sub-style, and pair_coeff names one as "granular N"
+        count = iter(range(1, len(names) + 1))
+        names = [name if not name.startswith("granular") else f"granular {next(count)}" for name in names]
     substyles = []
     for k in grans:
         n = k + 1
@@ -643,6 +660,9 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     if deck.hybrid and len(words) > 3:
         sub = words[3]
+        if f"{sub} 1" in deck.substyle.split(" and ") and len(words) > 4:
+            # one of several instances of a sub-style, named by its number (LAMMPS stops without it)
+            sub, words = f"{sub} {words[4]}", [*words[:4], *words[5:]]
         if sub == deck.substyle:
             words = [*words[:3], *words[4:]]
         elif sub in deck.substyle.split(" and "):
@@ -683,12 +703,38 @@ def _run_every(words: list, where: str, line: str) -> None:
     if "every" not in words:
         return
     for command in words[words.index("every") + 2:]:
-        first = command.split()[0] if command.split() else ""
-        if first not in _INERT and first != "NULL":
+        first = _first_not_inert(command)
+        if first is not None:
             raise DeckError(where, line, f"run ... every runs {first} between the run's parts, which may change the "
                                          "contact from the second part on, and the engine's pass never runs them "
                                          "(its runs skipped or cut to one step): not audited; split the run into "
                                          "runs with the commands between them")
+
+
+def _first_not_inert(command: str) -> str | None:
+    """The first command word a run's ``every`` may run that can change a contact, None if none:
+    inert ones, NULL, quit (it ends the deck) and an if whose every branch is such (its condition
+    chooses among them)."""
+    try:
+        parts = words(command)
+    except ScriptError:
+        return command
+    if not parts or parts[0] in _INERT or parts[0] in ("NULL", "quit"):
+        return None
+    if parts[0] != "if" or len(parts) < 4 or parts[2] != "then":
+        return parts[0]
+    # if COND then C... [elif COND C...]... [else C...]: the words after then, elif's condition and
+    # else are branch commands
+    branches, k = [], 3
+    while k < len(parts):
+        if parts[k] == "elif":
+            k += 2
+        elif parts[k] == "else":
+            k += 1
+        else:
+            branches.append(parts[k])
+            k += 1
+    return next((first for first in map(_first_not_inert, branches) if first is not None), None)
 
 
 def _inserted(deck: Deck) -> None:
@@ -939,7 +985,10 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         if wall_again is not None and deck.walls and deck.walls[-1][1][1] == words[1]:
             deck.walls.insert(wall_again, deck.walls.pop())
     elif style not in _IRRELEVANT_FIXES:
-        deck.unknown.append((*loc, line, "not understood"))
+        # a fix the audit does not know may push its atoms (a wall potential, a field): the rows
+        # do not include what it does, and say so
+        deck.unknown.append((*loc, line, f"not understood: fix {style} may add forces to its atoms (group "
+                                         f"{words[2]}), which the eps printed do not include"))
 
 
 def _unfix(deck: Deck, fix_id: str) -> None:
@@ -1263,7 +1312,7 @@ def repour(deck: Deck, made: dict, changed: set) -> None:
             deck.poured[t] = now
             pour_into(deck, t, set())
             continue
-        del deck.poured[t]
+        deck.poured.pop(t, None)          # (a clear has already dropped it)
         for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
             known.pop(t, None)
 
@@ -1339,6 +1388,9 @@ def _variable(deck: Deck, words: list) -> None:
     replaces it), None for other styles; delete forgets it."""
     if words[2] == "delete":
         deck.variables.pop(words[1], None)
+    elif words[2] == "getenv" and len(words) > 3:
+        deck.environment[words[3]] = deck.putenv.get(words[3], os.environ.get(words[3], ""))
+        deck.variables[words[1]] = None
     else:
         deck.variables[words[1]] = " ".join(words[3:]) if words[2] == "equal" else None
 
@@ -1352,14 +1404,16 @@ def _float(token: str) -> float | None:
 
 
 def _sampled(sizes: list) -> list:
-    """At most about _RANGE_SAMPLES of a type's held sizes, sorted by radius: evenly spaced in that
-    order, the smallest and largest radius and the lightest and densest among them (pairing every
-    size of a type with hundreds of sizes with every other costs minutes where the eps of a few
-    spread over them tells the range)."""
+    """At most about _RANGE_SAMPLES + 6 of a type's held sizes, sorted by radius: evenly spaced in
+    that order, the two smallest and two largest radii and the two lightest and two densest among
+    them (pairing every size of a type with hundreds of sizes with every other costs minutes where
+    the eps of a few spread over them tells the range; a size one sphere alone holds meets only
+    others, so the next one to each end is kept too)."""
     if len(sizes) <= _RANGE_SAMPLES:
         return sizes
     picks = {sizes[round(k * (len(sizes) - 1) / (_RANGE_SAMPLES - 1))] for k in range(_RANGE_SAMPLES)}
-    picks |= {min(sizes, key=lambda s: s[1]), max(sizes, key=lambda s: s[1])}
+    by_density = sorted(sizes, key=lambda s: s[1])
+    picks |= {*sizes[:2], *sizes[-2:], *by_density[:2], *by_density[-2:]}
     return sorted(picks)
 
 

@@ -42,6 +42,9 @@ SKIPPED_COMMANDS = frozenset({
     # the audit's engine runs on one process, which a layout for several stops ("Specified
     # processors != physical processors"); how the box is split has no part in a contact
     "processors"})
+#: shell's subcommands LAMMPS and LIGGGHTS do themselves (a directory, a file moved or removed, an
+#: environment variable): no program runs; every other runs one through system()
+SHELL_BUILTINS = frozenset({"cd", "mkdir", "mv", "rm", "rmdir", "putenv"})
 #: Fix styles never executed (they write files or print): kept as a fix of the same ID that does
 #: nothing, so unfix and fix_modify still find it
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
@@ -81,8 +84,10 @@ class Scratch:
     folder that its files name (``../DEM/data.txt``, normalised), copied to the same place relative
     to the copy (:func:`scratch_copy`); ``silenced`` the output fixes made a fix that does nothing,
     {((file, line), its text): its index in ``skipped``}; ``redirected`` the files a ``write_restart``
-    names outside the copy (an absolute path, a climb by ..), each -> the file in the scratch it
-    writes instead, which a later ``read_restart`` of that name reads."""
+    or ``write_data`` names outside the copy (an absolute path, a climb by ..), each -> the file in
+    the scratch it writes instead, which a later read of that name reads; ``skipped_text`` the text
+    of each skipped command by its index in ``skipped`` (the files it names, which a later read of
+    one of them may need)."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -100,6 +105,7 @@ class Scratch:
     mirrored: set = field(default_factory=set)
     silenced: dict = field(default_factory=dict)
     redirected: dict = field(default_factory=dict)
+    skipped_text: dict = field(default_factory=dict)
 
 
 def normalised(text: str) -> str:
@@ -371,20 +377,24 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         # what it would run cannot be checked first: never run; the deck is refused if it reaches it
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     restart = getattr(marker, "restart", None)
-    if word == "write_restart" and restart is not None and len(key.split()) > 1:
+    # a restart file (where the engine's marker reads restarts back) and a data file are written
+    # into the copy: a later read_restart or read_data of them reads what the deck wrote
+    if (word == "write_restart" and restart is not None or word == "write_data") and len(key.split()) > 1:
         name = key.split()[1]
         if _outside(name, scratch):
             # a file outside the copy (an absolute path: read-only for the confined engine, which
-            # stopped there) is written into the scratch instead, where a read_restart of the same
-            # name reads it back; its base name kept (a * in it is the step, as LAMMPS writes it)
+            # stopped there) is written into the scratch instead, where a read of the same name
+            # reads it back; its base name kept (a * in it is the step, as LAMMPS writes it)
             name = name.strip("\"'")
             target = scratch.redirected.setdefault(name, scratch.root / f"written_{len(scratch.redirected)}_"
                                                                         f"{Path(name).name}")
-            return " ".join(["write_restart", str(target), *key.split()[2:]])
+            return " ".join([word, str(target), *key.split()[2:]])
         if scratch.confined or "$" not in name:
             # its file lands in the copy (the engine's working folder; confined, nothing else is
-            # writable): the deck's read_restart reads it back, in the audit's scratch alone
+            # writable): the deck's read reads it back, in the audit's scratch alone
             return None
+    if word == "read_data" and len(key.split()) > 1 and key.split()[1].strip("\"'") in scratch.redirected:
+        return " ".join(["read_data", str(scratch.redirected[key.split()[1].strip("\"'")]), *key.split()[2:]])
     if word == "read_restart" and restart is not None:
         words = key.split()
         if len(words) > 1 and words[1].strip("\"'") in scratch.redirected:
@@ -394,7 +404,11 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         path = scratch.root / f"restart_{k}"
         path.write_text(_audit_lines(scratch, restart(key)))
         return f"include {path}"
+    if word == "shell" and scratch.confined and key.split()[1:2] and key.split()[1] in SHELL_BUILTINS:
+        # the engine does these itself (no program runs), where nothing outside the copy is writable
+        return None
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
+        scratch.skipped_text[len(scratch.skipped)] = key
         return _labelled(scratch, scratch.skipped, NOOP, (word, loc), loc)
     if word in ("include", "jump") and len(key.split()) > 1 and (
             _outside(key.split()[1], scratch) or not scratch.confined and "$" in key.split()[1]):
@@ -407,6 +421,7 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
     if word == "fix":
         words = key.split()
         if len(words) > 3 and words[3].startswith(_SKIPPED_FIX_PREFIXES):
+            scratch.skipped_text[len(scratch.skipped)] = key
             scratch.skipped.append((f"fix {words[3]}", loc))
             # a fix of the same ID that never acts under skipped runs, for unfix and fix_modify;
             # its echo from this line tells the deck reached it, as a no-op label's does

@@ -20,7 +20,7 @@ from .scratch import AUDIT, DYNAMIC, NOOP, Scratch, normalised
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS
 
-__all__ = ["Executed", "HeldSizes", "executed", "skipped", "unchecked", "snapshots", "engine_error", "first_unchecked",
+__all__ = ["Executed", "HeldSizes", "executed", "skipped", "unchecked", "written_then_read", "snapshots", "engine_error", "first_unchecked",
            "SEEDED"]
 
 
@@ -250,6 +250,63 @@ def skipped(commands: list, scratch: Scratch) -> dict:
             command, loc = scratch.skipped[k]
             out.setdefault(command, loc)
     return out
+
+
+#: Commands that read a file the deck names (its word, the index of the file name among its words)
+_READS = {"include": 1, "read_data": 1, "molecule": 2, "read_dump": 1}
+
+
+def _read_file(text: str) -> str | None:
+    """The file a command reads, where it is one of those a skipped command could have written."""
+    words = text.split()
+    if words and words[0] in _READS and len(words) > _READS[words[0]]:
+        return words[_READS[words[0]]].strip("\"'")
+    if words[:1] == ["variable"] and len(words) > 3 and words[2] in ("file", "atomfile"):
+        return words[3].strip("\"'")
+    if words[:1] == ["fix"] and "file" in words[4:-1]:           # a LIGGGHTS mesh
+        return words[words.index("file", 4) + 1].strip("\"'")
+    return None
+
+
+def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
+    """The first read of a file that a skipped command reached before it names (``shell cp a b``
+    then ``include b``; ``print ... file b`` then ``include b``): the engine's pass never wrote it,
+    so what it read there is not what the engine run by hand reads. ((file, line), text) of the
+    skipped command and of the read, or None.
+
+    Parameters
+    ----------
+    commands : list of Executed
+    scratch : Scratch
+
+    Returns
+    -------
+    tuple or None
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), skipped=[("shell", (None, 3))],
+    ...             skipped_text={0: "shell cp p9.in p.in"})
+    >>> written_then_read([Executed((None, 3), "label restitution_skipped_0"),
+    ...                    Executed((None, 4), "include p.in")], s)
+    (((None, 3), 'shell cp p9.in p.in'), ((None, 4), 'include p.in'))
+    """
+    reached = []
+    for cmd in commands:
+        mark = _SKIPPED.fullmatch(cmd.text)
+        k = int(mark.group(1)) if mark else scratch.silenced.get((cmd.loc, cmd.text))
+        if k is not None and k in scratch.skipped_text:
+            reached.append((scratch.skipped[k][1], scratch.skipped_text[k]))
+            continue
+        name = _read_file(cmd.text)
+        if name is None or not reached:
+            continue
+        base = os.path.basename(name)
+        for loc, text in reached:
+            if base and any(os.path.basename(word.strip("\"'")) == base for word in text.split()[1:]):
+                return (loc, text), (cmd.loc, cmd.text)
+    return None
 
 
 def unchecked(commands: list, scratch: Scratch) -> list:

@@ -23,7 +23,8 @@ from typing import Protocol
 
 from .sandbox import available as confining, confine
 
-__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "RESTART_INFO", "CEILING", "MAX_ECHO", "run_child"]
+__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "RESTART_INFO", "CEILING", "MAX_ECHO", "engine_environment",
+           "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
 ATOMS = "atoms"
@@ -125,6 +126,29 @@ class DeckRun(Protocol):
         ``ceiling`` in all, confined to ``root`` where ``original`` (the deck's own folder) is
         given and the system allows it (:func:`restitution.dem.dialect.child.run_child`). A marker
         met again may skip the engine's set-up and its dump of the atoms, unless ``check_every``."""
+
+
+def engine_environment(root: Path) -> dict:
+    """The environment the engine's pass runs in: the user's, as the engine run by hand would see
+    it (a deck's ``getenv`` variables choose its parameters), with HOME and TMPDIR in the scratch
+    directory ``root`` (what the engine writes there stays there) and one thread.
+
+    Parameters
+    ----------
+    root : Path
+        The scratch directory.
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> env = engine_environment(Path("/s"))
+    >>> env["HOME"], env["TMPDIR"], env["OMP_NUM_THREADS"]
+    ('/s', '/s', '1')
+    """
+    return {**os.environ, "HOME": str(root), "TMPDIR": str(root), "OMP_NUM_THREADS": "1"}
 
 
 def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, screen_is_stdout: bool = False,

@@ -167,6 +167,10 @@ class Deck:
     # style (a fix adapt's size is known where its variable is a constant)
     variables: dict = field(default_factory=dict)
     distributions: dict = field(default_factory=dict)
+    # environment variable -> the value a getenv-style variable of the deck read (the engine's pass
+    # runs in the user's environment): the answer holds for these values
+    environment: dict = field(default_factory=dict)
+    putenv: dict = field(default_factory=dict)     # variables the deck's shell putenv set
 
 
 class DeckDialect(Protocol):

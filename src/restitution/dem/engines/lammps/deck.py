@@ -301,10 +301,8 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
         mix = f", nor both {i} {i} and {j} {j}, from which LAMMPS would mix it" if i != j else ""
         raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair{mix}{why}: LAMMPS "
                                                          "stops (all pair coeffs are not set)")
-    if deck.granular_of and deck.gran:
-        older = _older_or_granular(deck, i, j)
-    else:
-        older = bool(deck.gran)
+    # under a hybrid style of several granular sub-styles, the one that gives this pair its force
+    older = _older_or_granular(deck, i, j) if deck.granular_of else bool(deck.gran)
     if older:
         pair = spheres(deck, i, j)
         loc = deck.style_line[0]
@@ -350,7 +348,10 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
             numbers = [f"{x:.10g}" for x in c.args]
             numbers[1] = f"{e_new:.10g}"
             limit = ["limit_damping"] if c.limit and "limit_damping" not in c.others else []
-            exact = " ".join(["pair_coeff", str(i), str(j), c.normal, *numbers, *c.others, *limit])
+            # under a hybrid style the line names its sub-style (and instance), as LAMMPS requires
+            sub = (deck.granular_of.get((i, j)) or deck.granular_of.get((i, i)) or {deck.substyle}) if deck.hybrid \
+                else set()
+            exact = " ".join(["pair_coeff", str(i), str(j), *sorted(sub), c.normal, *numbers, *c.others, *limit])
     model = _in_units(f"LAMMPS {c.normal}, damping {c.damping}" + (f" ({mixed_from})" if mixed_from else ""),
                       deck.units)
     contact = accelerated(contact, deck.units)
@@ -359,8 +360,9 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
 
 
 def _older_or_granular(deck: Deck, i: int, j: int) -> bool:
-    """Under a hybrid style of an older gran/* sub-style and granular, whether pair (i, j) takes the
-    older law (else granular's pair_coeff line). LAMMPS' hybrid mixes a pair no line names only from
+    """Under a hybrid style of an older gran/* sub-style and granular, or of several instances of
+    granular ("granular 1", ...), whether pair (i, j) takes the older law (else a granular
+    pair_coeff line, the last that names the pair). LAMMPS' hybrid mixes a pair no line names only from
     two like pairs of one same sub-style; a pair two sub-styles cover (hybrid/overlay) adds both
     forces, which the reader does not map."""
     subs = deck.granular_of.get((i, j))
@@ -375,7 +377,7 @@ def _older_or_granular(deck: Deck, i: int, j: int) -> bool:
         raise DeckError("pair_coeff", f"types {i} {j}", f"sub-styles {' and '.join(sorted(subs))} both act on this "
                                                          "pair (hybrid/overlay): their forces add, which the reader "
                                                          "does not map")
-    return next(iter(subs)) != "granular"
+    return not next(iter(subs)).startswith("granular")
 
 
 # ---------------------------------------------------------------------------- walls

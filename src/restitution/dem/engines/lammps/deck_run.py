@@ -15,7 +15,7 @@ import os
 import sys
 from pathlib import Path
 
-from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, engine_environment, run_child
 
 __all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy"]
 
@@ -49,6 +49,11 @@ try:
 except Exception as exc:
     sys.stderr.write(str(exc).strip())
     sys.exit(3)
+# the deck has run: LAMMPS' teardown is not the deck's (with two granular sub-styles it deletes a
+# fix twice and aborts), so the process ends here, its screen file flushed
+lmp.flush_buffers()
+sys.stdout.flush()
+os._exit(0)
 """
 
 
@@ -123,9 +128,7 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
     for name in (ATOMS, ATOMS_AT_END, RESTART_INFO):      # a pass made again starts afresh (its markers append)
         (root / name).unlink(missing_ok=True)
     stages = sum(1 for _ in root.glob("stage_*"))
-    env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "PYTHONPATH", "LANG")}
-    env.update(HOME=str(root), OMP_NUM_THREADS="1")
-    env.update(TMPDIR=str(root))
+    env = engine_environment(root)
     done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), _ending(root).strip(),
                       str(stages), "1" if check_every else "0"],
                      deck.parent, env, root, budget, original=original, readable=_python_folders(),

@@ -78,8 +78,14 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     except ValueError as why:
         raise DeckError(where, line, str(why)) from None
     for i in range(2, len(words) - 1, 2):
-        if words[i] in ("tangential", "rolling_friction", "tangential_damping"):
+        if words[i] in _HEAD_ON_IDLE:
             deck.ignored.append(f"{words[i]} {words[i + 1]}")
+
+
+#: pair style keywords with no part in a head-on contact: the tangential and rolling models and
+#: their options (torsionTorque, which LIGGGHTS 3.8.0's rolling model epsd3 registers, adds a
+#: torque about the contact normal)
+_HEAD_ON_IDLE = ("tangential", "rolling_friction", "tangential_damping", "torsionTorque")
 
 
 #: LIGGGHTS cohesion models whose force is the cohesionEnergyDensity of the pair times a contact area
@@ -116,7 +122,7 @@ def _normal(pairs: list) -> tuple:
             model = val
         elif key in on and model is not None and key in _NORMAL_KEYS[model]:
             on[key] = val == "on"
-        elif key in ("tangential", "rolling_friction", "tangential_damping") or key == "surface" and val == "default":
+        elif key in _HEAD_ON_IDLE or key == "surface" and val == "default":
             pass                  # no part in a head-on contact
         else:
             raise ValueError(f"{key} {val} is not mapped (it may change the normal force)")

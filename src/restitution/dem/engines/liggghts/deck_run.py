@@ -13,11 +13,10 @@ value the deck's runs would change ends by the budget.
 
 from __future__ import annotations
 
-import os
 import shutil
 from pathlib import Path
 
-from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, engine_environment, run_child
 from . import run
 from .run import MPI_NOT_STARTED, MPI_START_RETRIES
 
@@ -74,8 +73,7 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
     # the include appended to its own
     driver = root / "driver"
     driver.write_text(f"include {deck}\n{_ending(root)}")
-    env = {k: v for k, v in os.environ.items() if k in ("PATH", "LD_LIBRARY_PATH", "LANG")}
-    env.update(HOME=str(root), OMP_NUM_THREADS="1", TMPDIR=str(root))
+    env = engine_environment(root)
     # its screen is its standard output, line-buffered (stdbuf): an error that aborts MPI loses what
     # a -screen file still held in its buffer, the echo of the command it stopped on with it
     argv = ["liggghts", "-echo", "screen", "-log", "none", "-nocite", "-in", str(driver)]
