@@ -73,7 +73,7 @@ write_csv(out.curves, curve)
 frac = lambda s: frac_tex(Fraction(s))  # noqa: E731
 mods = list(P.moderate_omegas)
 lines = [r"\begin{tabular}{" + "l" * (6 + len(mods)) + "}", r"\toprule",
-         r"$\alpha$ & $\gamma$ & $\kappa$ & $C$ & slope & dev., $\Omega \le " + sci(max(P.check_omegas), 1) + "$ & "
+         r"$\alpha$ & $\gamma$ & $\kappa$ & $C_o$ & slope & dev., $\Omega \le " + sci(max(P.check_omegas), 1) + "$ & "
          + " & ".join(rf"dev., $\Omega = {sci(om, 2)}$" for om in mods) + r" \\", r"\midrule"]
 # A deviation at moderate Omega no larger than twice the pair's accuracy floor (its column "dev., Omega <= ...":
 # how far the two integrations and the high-precision one are from the law where it holds) is marked with a
@@ -177,7 +177,7 @@ styles = [Line2D([], [], color="k", lw=1.0, marker="o", mfc="none", ms=4, label=
           Line2D([], [], color="k", lw=5.0, alpha=0.3, solid_capstyle="butt",
                  label=rf"leading law ($\Omega \leq {LAW_OMEGA_MAX:g}$)")]
 right.set_xlabel(r"$1/\Omega$")
-right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C\,\Omega^\kappa) - 1|$")
+right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C_o\,\Omega^\kappa) - 1|$")
 # the two styles' key below the panels with the exponent pairs' (inside the left panel it covered the curves
 # of the pairs with the steepest laws)
 handles, labels = right.get_legend_handles_labels()

@@ -11,8 +11,10 @@
 import math
 from fractions import Fraction
 
+import mpmath
 import numpy as np
 import pandas as pd
+import sympy as sp
 from restitution_workflow.latex import esc, frac_tex, sci, sci_up
 from restitution_workflow.law_names import law_name
 from restitution_workflow.pipeline import (TEXT_WIDTH_PT, read_json, save_figure, setup_matplotlib,
@@ -20,6 +22,7 @@ from restitution_workflow.pipeline import (TEXT_WIDTH_PT, read_json, save_figure
 
 from restitution.core import asymptotics as asy
 from restitution.core.collision import OMEGA_RANGE, collide
+from restitution.core.dashpot import dashpot_collision
 from restitution.core.uniform import DEGREE_STEP, OVERLAP_P, SELECTION_TARGET, UniformForm
 from restitution.fast.uniform_build import FIT_RTOL, LAW_BELOW
 
@@ -197,6 +200,66 @@ end_clause = (r"so for these exponents the difference is smaller than the omitte
               r"ending at zero force, not a term of an expansion of $\varepsilon_{\mathrm{force}}$ alone" if end_power > 3 else
               r"so for these exponents it is the first correction after $C_2$")
 
+# Eq. (viscous) against an exact result that shares nothing with its derivation: the linear dashpot (alpha = 1,
+# gamma = 0), whose force-rule eps is elementary (Appendix, core.dashpot). The relative difference at two Omega,
+# scaled by Omega^2 ln^2 Omega, and the expansion of the exact formula itself, by sympy, whose terms below
+# Omega^2 must vanish if k, c_log and c_v are right (the library's constants enter as exact rationals)
+DASHPOT_OMEGAS = (1e-3, 1e-4)
+V_dash = asy.viscous_limit(("1", "0"))
+dashpot_rel = [dashpot_collision(_om).eps / float(V_dash.eps(_om, order=1)) - 1.0 for _om in DASHPOT_OMEGAS]
+dashpot_ratio = [r / (_om * math.log(_om)) ** 2 for r, _om in zip(dashpot_rel, DASHPOT_OMEGAS)]
+_t = sp.symbols("t", positive=True)
+_w = sp.sqrt(sp.Rational(1, 4) - _t)
+_ln_exact = (sp.log(_t) - sp.log(sp.Rational(1, 2) - _t + _w)) / (2 * _w)      # ln eps, tau_c of the force rule
+_k, _cl, _cv = (sp.nsimplify(x) for x in (V_dash.k, V_dash.c_log, V_dash.c_const))
+_ln_first = sp.log(_k * _t) + sp.log(1 - _t * (_cl * sp.log(1 / _t) + _cv))
+_diff = sp.expand(sp.series(_ln_exact - _ln_first, _t, 0, 3).removeO())
+_lt = sp.Symbol("L")
+_poly = sp.Poly(sp.expand(_diff.subs(sp.log(_t), _lt)), _t, _lt)
+if any(m[0] < 2 for m, c in _poly.terms() if c != 0):
+    raise SystemExit(f"the dashpot's exact eps disagrees with Eq. (viscous) below Omega^2: {_diff}")
+dashpot_terms = {m[1]: _poly.coeff_monomial(_t ** 2 * _lt ** m[1]) for m, c in _poly.terms() if m[0] == 2}
+if set(dashpot_terms) - {0, 1, 2} or not all(v.is_Integer for v in dashpot_terms.values()):
+    raise SystemExit(f"unexpected form of the dashpot's remainder: {_diff}")
+# the three terms against the exact difference at the smaller Omega: what they leave is O(Omega^3 ln^3 Omega)
+_om = DASHPOT_OMEGAS[-1]
+_pred = sum(float(c) * _om ** 2 * math.log(_om) ** j for j, c in dashpot_terms.items())
+dashpot_pred_dev = abs(math.expm1(_pred) / dashpot_rel[-1] - 1.0)
+
+
+def whole(x: float) -> str:
+    """A constant that is a whole number for these exponents, printed as one; ten digits if it is not."""
+    return sci(round(x), 1) if abs(x - round(x)) <= 1e-12 * max(1.0, abs(x)) else sci(x, 10)
+
+
+# Ramirez et al.'s closed form of the Hertz constant (alpha = 3/2, gamma = 1/2), evaluated as they write it, against
+# the library's C1 of Eq. (elastic) at those exponents: sqrt(pi) Gamma(3/5) / (2^(1/5) 5^(2/5) Gamma(21/10))
+E_hertz = asy.elastic_limit(tuple(str(x) for x in HERTZ))
+# their expression's four rationals, as written: sqrt(pi) Gamma(a) / (2^b 5^c Gamma(d)); the article prints the
+# expression from these and the number from evaluating it
+RAMIREZ = dict(a=Fraction(3, 5), b=Fraction(1, 5), c=Fraction(2, 5), d=Fraction(21, 10))
+_f = lambda q: mpmath.mpf(q.numerator) / q.denominator  # noqa: E731
+with mpmath.workdps(30):
+    ramirez_c1 = float(mpmath.sqrt(mpmath.pi) * mpmath.gamma(_f(RAMIREZ["a"]))
+                       / (2 ** _f(RAMIREZ["b"]) * 5 ** _f(RAMIREZ["c"]) * mpmath.gamma(_f(RAMIREZ["d"]))))
+ramirez_form = (rf"\sqrt{{\pi}}\,\Gamma(\tfrac{{{RAMIREZ['a'].numerator}}}{{{RAMIREZ['a'].denominator}}})"
+                rf"/\big(2^{{{RAMIREZ['b']}}}\,5^{{{RAMIREZ['c']}}}\,"
+                rf"\Gamma(\tfrac{{{RAMIREZ['d'].numerator}}}{{{RAMIREZ['d'].denominator}}})\big)")
+ramirez_dev = abs(ramirez_c1 / E_hertz.C1 - 1.0)
+RAMIREZ_C2 = Fraction(3, 5)      # their C2 = (3/5) C1^2
+ramirez_c2_dev = abs(float(RAMIREZ_C2) * ramirez_c1 ** 2 / E_hertz.C2 - 1.0)
+nu_hertz = (HERTZ[1] + 1) / (HERTZ[0] + 1)
+
+# the physical range of the viscous side for Hertz with Kuwabara-Kono damping: Omega = const g^w_hertz, so going
+# from Omega = 1 down to the viscous limit's Omega = VISCOUS_EDGE multiplies the impact speed by this factor
+VISCOUS_EDGE = 0.1
+w_hertz = (HERTZ[0] - 1 - 2 * HERTZ[1]) / (HERTZ[1] + 1)
+hertz_speed_factor = VISCOUS_EDGE ** (1.0 / float(w_hertz))
+# Eq. (uniform)'s fitted correction vanishes like Omega^(sigma s0) at the viscous end, where zeta ~ 1/(k Omega):
+# relative to zeta it is O(Omega^(1 + sigma s0)); for Hertz-Kuwabara-Kono and for the main law
+hertz_name = next(n for n in p.variants if (Fraction(p.exponents[n]["alpha"]), Fraction(p.exponents[n]["gamma"])) == HERTZ)
+sigma_s0 = {n: float(forms[n]["sigma"]) * forms[n]["m0"] for n in (hertz_name, p.main)}
+
 # the elastic end of the form (the bracket has no delta^2 term; the fitted sum must supply it): measured at the
 # largest Omega the reference integrator accepts, against the size of the C2 term there
 
@@ -273,6 +336,23 @@ macros = {
     "CFViscousRemOmegaB": sci(REMAINDER_OMEGAS[1], 1), "CFViscousRemRatioB": sci(remainder_ratio[1], 3),
     "CFViscousRemOmegaC": sci(REMAINDER_OMEGAS[2], 1), "CFViscousRemRatioC": sci(remainder_ratio[2], 3),
     "CFViscousRemOmegaD": sci(REMAINDER_OMEGAS[3], 1), "CFViscousRemRatioD": sci(remainder_ratio[3], 3),
+    # the dashpot check of Eq. (viscous): relative difference of the exact eps, its ratio to Omega^2 ln^2 Omega, and
+    # the exact expansion's Omega^2 ln^j Omega coefficients (sympy)
+    "CFDashOmegaA": sci(DASHPOT_OMEGAS[0], 1), "CFDashRelA": sci(dashpot_rel[0], 3), "CFDashRatioA": sci(dashpot_ratio[0], 3),
+    "CFDashOmegaB": sci(DASHPOT_OMEGAS[1], 1), "CFDashRelB": sci(dashpot_rel[1], 3), "CFDashRatioB": sci(dashpot_ratio[1], 3),
+    "CFDashK": whole(V_dash.k), "CFDashCLog": whole(V_dash.c_log), "CFDashCV": whole(V_dash.c_const),
+    "CFDashTermTwo": str(dashpot_terms.get(2, 0)), "CFDashTermOne": str(dashpot_terms.get(1, 0)),
+    "CFDashTermZero": str(dashpot_terms.get(0, 0)), "CFDashPredDev": sci_up(dashpot_pred_dev, 1),
+    # Ramirez et al.'s closed form of C1 (Hertz) against the library's, and (3/5) C1^2 against C2
+    "CFRamirezForm": rf"\ensuremath{{{ramirez_form}}}",
+    "CFRamirezCOne": sci(ramirez_c1, 11), "CFRamirezDev": sci_up(max(ramirez_dev, 1e-16), 1),
+    "CFRamirezCTwoDev": sci_up(max(ramirez_c2_dev, 1e-16), 1), "CFRamirezCTwoFactor": frac(RAMIREZ_C2), "CFHertzNu": frac(nu_hertz),
+    # Omega of Hertz-Kuwabara-Kono against g, and the speed factor from Omega = 1 to the viscous limit's edge
+    "CFHertzOmegaPower": frac(w_hertz), "CFViscousEdge": sci(VISCOUS_EDGE, 1),
+    "CFHertzSpeedFactor": sci(hertz_speed_factor, 2),
+    # Eq. (uniform)'s correction at the viscous end: sigma s0, and the relative remainder's power 1 + sigma s0
+    "CFHertzSigmaSZero": sci(sigma_s0[hertz_name], 2), "CFHertzRemPower": sci(1 + sigma_s0[hertz_name], 2),
+    "CFSigmaSZero": sci(sigma_s0[p.main], 2), "CFRemPower": sci(1 + sigma_s0[p.main], 2),
     "CFElasticCTwo": sci(E.C2, 6),
     "CFEndCoef": sci(E.E, 6),
     "CFEndCoefExact": frac(end_coef),
@@ -378,7 +458,7 @@ come from independent integrations in the variables of Sec.~\ref{{sec:reference}
 $\CFFitRtol$. The article gives the resulting errors and the error estimate; Fig.~\ref{{fig:uniform-error}} shows the
 error over the whole range. The numbers of \TabUniform, typed as printed, change $\varepsilon$ by at most
 {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative. A force law with
-$\alpha \leq \gamma$ has no such form: for $\alpha = \gamma$ the exact parametric closed form applies, for $\alpha < \gamma$
+$\alpha \leq \gamma$ has no such form: for $\alpha = \gamma$ the exact implicit relation of Hunt and Crossley's case applies, for $\alpha < \gamma$
 the first viscous correction is not known. Table~\ref{{tab:uniform-atlas}} in the appendix gives the form for every
 exponent pair of the stability atlas.
 
@@ -393,7 +473,7 @@ Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = {s
 
 \paragraph{{The overlap rule in one formula.}}
 Where contact lasts until the overlap is back to zero (the default of the DEM codes, Sec.~\ref{{sec:dem}}), fast
-impacts follow the creep law $\varepsilon = C\,\Omega^{{\kappa}}$, $\kappa = (\gamma+1)/(2\gamma+1-\alpha)$,
+impacts follow the creep law $\varepsilon = C_o\,\Omega^{{\kappa}}$, $\kappa = (\gamma+1)/(2\gamma+1-\alpha)$,
 up to a correction that vanishes like $\exp(-Q/\Omega)$, and slow ones the same elastic limit as above. For
 $\gamma < \alpha < 2\gamma + 1$ (where the bodies cannot stick) one formula joins the two, with $\bar z = \bar b\,\Omega$,
 $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P} of $\bar z$ below fixed (bars mark the constants of this form, which differ from those of
@@ -403,14 +483,14 @@ the article's uniform approximation):
 \exp\!\Big[\exp(-\rho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
-with $\bar b = (C C_1)^{{1/(\kappa - \nu)}}$ and $\Theta = \bar b^{{\kappa}}/C$, so that
-$\varepsilon \to C\,\Omega^{{\kappa}}$ and $1 - \varepsilon \to C_1 \Omega^{{-\nu}}$ exactly, and $\varepsilon > 0$
+with $\bar b = (C_o C_1)^{{1/(\kappa - \nu)}}$ and $\Theta = \bar b^{{\kappa}}/C_o$, so that
+$\varepsilon \to C_o\,\Omega^{{\kappa}}$ and $1 - \varepsilon \to C_1 \Omega^{{-\nu}}$ exactly, and $\varepsilon > 0$
 for any coefficients. The envelope $\exp(-\rho/\bar z)$ vanishes like the true correction; the shape $(\bar\sigma, \rho, \bar s_1)$ and the
 degree are chosen as for the force rule's form, the coefficients fitted with a small penalty on their size (without
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = {sci(LAW_BELOW, 1)}$ each integration of the creeping return takes about a second, and there the
 references are the creep law itself, checked against the integrator above it; the error estimate adds that difference and
-the error of $C$. The error estimate for Kim's force law is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
+the error of $C_o$. The error estimate for Kim's force law is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly when
