@@ -73,7 +73,7 @@ write_csv(out.curves, curve)
 frac = lambda s: frac_tex(Fraction(s))  # noqa: E731
 mods = list(P.moderate_omegas)
 lines = [r"\begin{tabular}{" + "l" * (6 + len(mods)) + "}", r"\toprule",
-         r"$\alpha$ & $\gamma$ & $\kappa$ & $C$ & slope & dev., $\Omega \le " + sci(max(P.check_omegas), 1) + "$ & "
+         r"$\alpha$ & $\gamma$ & $\kappa$ & $C_{\mathrm o}$ & slope & dev., $\Omega \le " + sci(max(P.check_omegas), 1) + "$ & "
          + " & ".join(rf"dev., $\Omega = {sci(om, 2)}$" for om in mods) + r" \\", r"\midrule"]
 # A deviation at moderate Omega no larger than twice the pair's accuracy floor (its column "dev., Omega <= ...":
 # how far the two integrations and the high-precision one are from the law where it holds) is marked with a
