@@ -119,6 +119,7 @@ def test_shell_rules_write_through_the_atomic_writer():
     """The rules that write with shell commands (PDF copy, main figures, study list) go through the
     one atomic writer (a hidden temporary name, renamed; the digest recorded), placeholders quoted."""
     for smk, rule in (("manuscript.smk", "rule manuscript:"), ("manuscript.smk", "rule supplement:"),
+                      ("manuscript.smk", "rule article_labels:"),
                       ("figures.smk", "rule main_figure:"),
                       ("variants.smk", "rule study:")):
         text = (ROOT / "workflow" / "rules" / smk).read_text()

@@ -105,6 +105,7 @@ def test_the_full_plan(fresh):
         assert jobs[rule] == n, rule
     assert jobs["manuscript"] == (1 if ALL == "all" else 0)
     assert jobs["supplement"] == (1 if ALL == "all" else 0)
+    assert jobs["article_labels"] == (1 if ALL == "all" else 0)   # the supplement reads the article's labels
 
 
 def test_every_output_is_a_target_of_all(built):
@@ -127,7 +128,8 @@ def test_touching_a_figure_script_reruns_that_figure_and_the_manuscript(built, t
     (tree / "workflow/scripts/fig1_forward.py").touch()
     expected = {"fig1_forward": len(VARIANT_NAMES), "main_figure": 2, "study": len(VARIANT_NAMES), ALL: 1}
     if ALL == "all":
-        expected["manuscript"] = expected["supplement"] = 1   # the figure is in the supplement, the article reads its .aux
+        # the figure is in the supplement, the article reads its .aux, the supplement the article's label numbers
+        expected["manuscript"] = expected["supplement"] = expected["article_labels"] = 1
     assert planned(tree, ALL) == Counter(expected)
 
 
@@ -371,7 +373,7 @@ def test_the_ledger_table_and_discussion_are_generated_from_claims_csv(built):
 def test_the_pdf_has_no_unresolved_references(built):
     assert (built / "results/paper/restitution.pdf").stat().st_size > 50_000
     assert (built / "results/paper/supplement.pdf").stat().st_size > 50_000
-    for log_file in ("build/paper/restitution.log", "build/supplement/supplement.log"):
+    for log_file in ("build/paper/restitution.log", "build/supplement/supplement.log"):   # both ways of xr
         log = (built / log_file).read_text(errors="replace")
         assert "undefined" not in log.lower(), [l for l in log.splitlines() if "undefined" in l.lower()]
         assert "Rerun to get" not in log
@@ -419,6 +421,7 @@ def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
     # latexmk); the PDF must then be ours, page for page
     # the article and its supplement (the article reads the supplement's labels from the .aux it carries)
     assert "supplement.tex" in names and "supplement.bbl" in names and "results/paper/supplement.aux" in names
+    assert "results/paper/article_labels.aux" in names   # and the supplement the article's (label numbers only)
     for job in ("restitution", "supplement"):
         for _ in range(5):
             run = subprocess.run(["pdflatex", "-interaction=nonstopmode", "-halt-on-error", f"{job}.tex"],

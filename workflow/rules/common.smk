@@ -81,6 +81,8 @@ BUILD_COMMIT, BUILD_VERSIONS = build_commit(ROOT), versions()
 
 # The one atomic writer, for shell rules: `{ATOMIC} install SRC DEST`, `... | {ATOMIC} write DEST`.
 ATOMIC = f"{shlex.quote(sys.executable)} {shlex.quote(str(ROOT / 'workflow' / 'lib' / 'restitution_workflow' / 'atomic.py'))}"
+# The numbers of a document's labels from its .aux: `{AUX_LABELS} FILE.aux | {ATOMIC} write DEST`.
+AUX_LABELS = f"{shlex.quote(sys.executable)} {shlex.quote(str(ROOT / 'workflow' / 'lib' / 'restitution_workflow' / 'aux_labels.py'))}"
 
 
 def script_file(name):
@@ -137,6 +139,7 @@ PAPER_BBL = "results/paper/restitution.bbl"
 SUPPLEMENT_PDF = "results/paper/supplement.pdf"
 SUPPLEMENT_BBL = "results/paper/supplement.bbl"
 SUPPLEMENT_AUX = "results/paper/supplement.aux"   # the article's cross-references to the supplement (xr)
+ARTICLE_LABELS = "results/paper/article_labels.aux"   # the supplement's cross-references to the article (xr)
 EXTRA = [name for name in VARIANTS if name != MAIN]   # variants with a generated section
 
 #: Rules built for only some variants (rule name -> predicate on the variant's name), each set
@@ -145,7 +148,7 @@ BUILT_FOR = {}
 #: Rules built only when their output is asked for (not part of `all`/`outputs`), and the rules
 #: that make the PDF (`all` adds them; `outputs` is everything that needs no TeX).
 ON_REQUEST = {"arxiv"}
-NEEDS_TEX = {"manuscript", "supplement"}
+NEEDS_TEX = {"article_labels", "manuscript", "supplement"}
 #: The values each wildcard of a final output takes; a stage with wildcards of its own adds them.
 WILDCARD_VALUES = {"variant": lambda: list(VARIANTS), "fig": lambda: FIGURES, "ext": lambda: ["pdf", "png"]}
 

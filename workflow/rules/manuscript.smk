@@ -57,12 +57,39 @@ rule provenance:
         script_file("provenance.py")
 
 
+rule article_labels:
+    """The numbers of the article's labels, which the supplement cites (xr, prefix A-), while the article
+    cites the supplement's: one pdflatex pass of the article gives them before the supplement is built, so
+    the two documents need no cycle in the build. Only the numbers are kept
+    (workflow/lib/restitution_workflow/aux_labels.py): they follow from the article's source alone, not from
+    its pages, its citations or the supplement's .aux of an earlier build that this pass may find."""
+    input:
+        tex="paper/restitution.tex",
+        code="workflow/lib/restitution_workflow/aux_labels.py",
+        generated=manuscript_inputs,   # asked when the DAG is built: every stage is included by then
+    output:
+        ARTICLE_LABELS,
+    log:
+        "logs/article_labels.log",
+    params:
+        build="build/article-labels",
+    shell:
+        "rm -rf {params.build:q} && mkdir -p {params.build:q} && "
+        "export FORCE_SOURCE_DATE=1 SOURCE_DATE_EPOCH=${{SOURCE_DATE_EPOCH:-1700000000}}; "
+        "pdflatex -draftmode -interaction=nonstopmode -halt-on-error -file-line-error "
+        "-output-directory={params.build:q} {input.tex:q} > {log:q} 2>&1 "
+        "|| (tail -n 40 {log:q} >&2; exit 1); "
+        "{AUX_LABELS} {params.build:q}/restitution.aux | {ATOMIC} write {output:q}"
+
+
 rule supplement:
     """The supplement (paper/supplement.tex): the audit, the other force laws, the cost study, the DEM
-    details and the stability atlas. Its .aux is an output too: the article reads its labels (xr)."""
+    details and the stability atlas. Its .aux is an output too: the article reads its labels (xr), as it
+    reads the article's (rule article_labels)."""
     input:
         tex="paper/supplement.tex",
         bib="paper/restitution.bib",
+        article=ARTICLE_LABELS,
         generated=manuscript_inputs,   # asked when the DAG is built: every stage is included by then
     output:
         pdf=SUPPLEMENT_PDF,
@@ -120,6 +147,7 @@ rule arxiv:
         supplement_tex="paper/supplement.tex",
         supplement_bbl=SUPPLEMENT_BBL,
         supplement_aux=SUPPLEMENT_AUX,
+        article_labels=ARTICLE_LABELS,
         supplement_pdf=SUPPLEMENT_PDF,
         generated=manuscript_inputs,   # asked when the DAG is built: every stage is included by then
         # the tables behind the engine and calibration numbers, so a reader can check them without

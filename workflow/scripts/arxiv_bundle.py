@@ -67,9 +67,11 @@ def tracked_sources() -> tuple[dict[str, bytes], frozenset] | None:
 
 # %% Members: name in the bundle -> file in the project
 members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path(snakemake.input.bbl),
-           # the supplement beside the article, and its .aux where the article's xr reads it
+           # the supplement beside the article, its .aux where the article's xr reads it, and the numbers of the
+           # article's labels where the supplement's xr reads them
            "supplement.tex": Path(snakemake.input.supplement_tex), "supplement.bbl": Path(snakemake.input.supplement_bbl),
-           Path(snakemake.input.supplement_aux).as_posix(): Path(snakemake.input.supplement_aux)}
+           Path(snakemake.input.supplement_aux).as_posix(): Path(snakemake.input.supplement_aux),
+           Path(snakemake.input.article_labels).as_posix(): Path(snakemake.input.article_labels)}
 for path in snakemake.input.generated:
     members[Path(path).as_posix()] = Path(path)
 for path in [*snakemake.input.data, *snakemake.input.engine_runs, *snakemake.input.typed_e_runs,
@@ -79,7 +81,8 @@ runs_readme = Path(snakemake.input.engine_runs[-1]).as_posix()
 typed_readme = Path(snakemake.input.typed_e_runs[-1]).as_posix()
 readme = f"""\
 restitution.tex and supplement.tex compile with pdflatex alone, run until the log asks for no rerun
-(the bibliographies are the .bbl files; the article reads the supplement's labels from the .aux it carries).
+(the bibliographies are the .bbl files; the article reads the supplement's labels from the .aux it carries,
+the supplement the numbers of the article's labels from results/paper/article_labels.aux).
 The tables behind the engine and calibration numbers are under results/dem/ and results/paper/ (CSV);
 the ledger of Kim's claims, with each row's tolerance and notes, is claims.csv under results/<variant>/.
 Every LAMMPS run behind the article's LAMMPS figure is under {Path(runs_readme).parent.as_posix()}/: one deck (.in) and its

@@ -15,7 +15,8 @@ from restitution_workflow.pipeline import save_figure, setup_matplotlib, start
 start(snakemake)
 plt = setup_matplotlib()
 
-KNOWN = {"eps_dashpot": ("linear dashpot, closed form", dict(ls="none", marker="o", ms=4, mfc="none")),
+KNOWN = {"eps_dashpot": ("closed form",   # after the law's name: "linear dashpot: closed form"
+                         dict(ls="none", marker="o", ms=4, mfc="none")),
          "eps_equal_exponents": (r"$\alpha = \gamma$, closed form", dict(ls="none", marker="s", ms=4, mfc="none")),
          "eps_elastic_series": ("two-term elastic expansion + end-of-contact term", dict(ls="--", lw=1.2)),
          "eps_pade": ("Padé form attributed to Müller & Pöschel", dict(ls=":", lw=1.8))}

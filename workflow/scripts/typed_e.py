@@ -46,10 +46,10 @@ def release_name(engine: str) -> str:
 
 
 # each row names its engine (a test reads it on the row's line) in one word, so that no name wraps and a row
-# is one line; the releases, one per engine, are named once, in the caption (macro TypedEReleases). An option
+# is one line; the releases, one per engine, are named once, in the data statement (macro TypedEReleases, written
+# by rule typed_e_runs from the runs' own output). An option
 # is kept whole: a keyword with underscores (limit_damping, DEM_D_Hertz_viscous_Coulomb) is one box, and the
 # option breaks only between words
-releases = list(dict.fromkeys(release_name(r["engine"]) for r in rows))
 
 
 def unbroken(option: str) -> str:
@@ -130,6 +130,5 @@ macros = {
     # how far the fitted relation misses at the top e, in the loss: (1 - eps)/(1 - e), the same for Yade's
     # Hertz-Mindlin and Kratos' Hertz law (one relation; checked to the printed digit)
     "TypedEMindlinLossRatio": loss_ratio["Yade Hertz-Mindlin en"],
-    "TypedEReleases": ", ".join(esc(r) for r in releases),
 }
 write_text(out.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))

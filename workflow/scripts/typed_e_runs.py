@@ -77,11 +77,16 @@ if set(files) != declared:
 for rel, text in files.items():
     write_text(HERE / rel, text)
 write_csv(snakemake.output.csv, pd.DataFrame(rows))
-# what the text says of these runs: LAMMPS' release as its screens print it, and the one impact speed
+# what the text says of these runs: LAMMPS' release as its screens print it, the one impact speed, and each
+# engine's release once, in the order of the registry (the article's data statement): LAMMPS' as its screens
+# print it (the Python module's label, 2025.7.22, leaves out the update), the others' by their version label
 screens = [text for rel, text in files.items() if rel.startswith("lammps/") and rel.endswith(".out")]
+lammps_release = lammps_version(screens) if screens else "none"
+releases = [f"LAMMPS ({lammps_release})" if name == "lammps" else ENGINES[name].version for name in P.engines]
 write_text(snakemake.output.values, "\n".join([
-    rf"\newcommand{{\TypedERunsLammpsVersion}}{{{esc(lammps_version(screens)) if screens else 'none'}}}",
-    rf"\newcommand{{\TypedERunsSpeed}}{{{sci(P.g, 2)}}}"]))
+    rf"\newcommand{{\TypedERunsLammpsVersion}}{{{esc(lammps_release)}}}",
+    rf"\newcommand{{\TypedERunsSpeed}}{{{sci(P.g, 2)}}}",
+    rf"\newcommand{{\TypedEReleases}}{{{', '.join(esc(r) for r in releases)}}}"]))
 steps = {name: [ENGINES[name].typed_e_steps * k for k in TYPED_E_ENGINE_REFINEMENTS] for name in P.engines}
 write_text(snakemake.output.readme, f"""\
 The engine runs behind the typed-e table (typed_e.csv, the article's table of the e typed into each

@@ -168,11 +168,11 @@ else:
              rf"Brilliantov et al.~\cite{{brilliantov1996}}; for Kim's exponents the elastic law is $g^{{{frac(-w * A_)}}}$ instead, and "
              rf"fast impacts give $\varepsilon \propto g^{{{frac(w)}}}$, a regime that law, an expansion about "
              rf"elastic impacts, does not describe. Both laws are leading order only. At the slowest impact of "
-             rf"\FigEps{{}} ($g = {sci(float(curve['g'].iloc[0]), 2)}$) the elastic law is off by "
+             rf"\ArtFig{{fig:eps}} ($g = {sci(float(curve['g'].iloc[0]), 2)}$) the elastic law is off by "
              rf"{sci(100 * err_elastic_gmin, 2)}\,\% in $1 - \varepsilon$; at the fastest "
              rf"($g = {sci(float(curve['g'].iloc[-1]), 2)}$) the viscous law is off by {sci(100 * err_viscous_gmax, 2)}\,\% "
              rf"in $\varepsilon$. " + LAW_RANGE[(g_el is not None, g_vi is not None)]
-             + r" Everywhere in between the article's uniform approximation holds (\FigUniformEps).")
+             + r" Everywhere in between the uniform approximation of \ArtEq{eq:uniform} holds (\ArtFig{fig:uniform-eps}).")
 
 
 # the viscous expansion against the reference integrator (printed beside it)
@@ -433,19 +433,19 @@ text = rf"""
 \section{{Both limits and the uniform approximation: numbers and fit}}
 \label{{sec:uniform}}
 
-The article's section on both limits states the viscous and elastic limits, the end-rule term and the uniform
-approximation, and its appendix derives them; Kim's relation does not hold (Sec.~\ref{{sec:ledger}}). This section
+\ArtSec{{sec:limits}} states the viscous and elastic limits, the end-rule term and the uniform
+approximation, and \ArtApp{{app:derivations}} derives them; Kim's relation does not hold (Sec.~\ref{{sec:ledger}}). This section
 adds what the article leaves out: the constants to ten digits, the leading laws in physical units with their errors,
 how the coefficients are fitted, the error over $\Omega$ (Fig.~\ref{{fig:uniform-error}}) and the overlap rule's form.
 
 \paragraph{{Constants for Kim's exponents ($\alpha = {frac(ex['alpha'])}$, $\gamma = {frac(ex['gamma'])}$).}}
-In the article's notation, viscous limit: $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
+In the notation of \ArtEqs{{eq:viscous}}{{eq:end-term}}, viscous limit: $k = {sci(V.k, 10)}$, $c_{{\log}} = {sci(V.c_log, 10)}$,
 $c_{{\mathrm{{v}}}} = {sci(V.c_const, 10)}$ (the subscript keeps it apart from Kim's unrelated $c_0$ of
 Sec.~\ref{{sec:connection}}), and contact lasts $\tau_c = (2\ln(1/\Omega) + L)/\lambda$ with $L = {sci(V.L, 10)}$,
 $\lambda = X^\gamma = {sci(V.lam, 10)}$. Elastic limit: $C_1 = {sci(E.C1, 10)}$, $C_2 = {sci(E.C2, 10)}$, end-rule term
 $\beta\mu^q$ with $q = {frac(end_power)}$ and $\beta = {frac(end_coef)}$, {end_clause}; contact lasts
 $\tau_c = \theta_c\,\Omega^{{-1/(\alpha+1)}}$ with $\theta_c = {sci(E.T0, 10)}$, its duration in the elastic time
-$\theta = \Omega^{{1/(\alpha+1)}}\tau$ of the article's appendix.
+$\theta = \Omega^{{1/(\alpha+1)}}\tau$ of \ArtApp{{app:derivations}}.
 
 {units}
 
@@ -456,9 +456,10 @@ other point of a grid over $10^{{-9}} \leq \Omega \leq 10^{{9}}$ (twenty per dec
 shape $(\sigma, s_0, s_1)$. On the {main['measured']['n_test']} random test points, $\varepsilon$ and $1 - \varepsilon$
 come from independent integrations in the variables of Sec.~\ref{{sec:reference}}; the dense scan uses the integrator at
 $\CFFitRtol$. The article gives the resulting errors and the error estimate; Fig.~\ref{{fig:uniform-error}} shows the
-error over the whole range. The numbers of \TabUniform, typed as printed, change $\varepsilon$ by at most
+error over the whole range. The numbers of \ArtTab{{tab:uniform}}, typed as printed, change $\varepsilon$ by at most
 {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative. A force law with
-$\alpha \leq \gamma$ has no such form: for $\alpha = \gamma$ the exact implicit relation of Hunt and Crossley's case applies, for $\alpha < \gamma$
+$\alpha \leq \gamma$ has no such form: for $\alpha = \gamma$ the exact implicit relation
+$1 + \varepsilon = \Omega\ln\big((\Omega+1)/(\Omega-\varepsilon)\big)$ of \ArtSec{{sec:model}} (Hunt and Crossley's case) applies, for $\alpha < \gamma$
 the first viscous correction is not known. Table~\ref{{tab:uniform-atlas}} in the appendix gives the form for every
 exponent pair of the stability atlas.
 
@@ -466,18 +467,18 @@ exponent pair of the stability atlas.
 \centering
 \includegraphics[width=\linewidth]{{results/paper/uniform_error.pdf}}
 \caption{{Relative error of the uniform approximations against integrations at relative tolerance $\CFFitRtol$, in $\varepsilon$ (solid) and in
-$1 - \varepsilon$ (dashed), for every force law that has one: the article's uniform approximation for the force rule (top),
+$1 - \varepsilon$ (dashed), for every force law that has one: \ArtEq{{eq:uniform}} for the force rule (top),
 Eq.~(\ref{{eq:uniform-overlap}}) for the overlap rule (bottom, from $\Omega = {sci(LAW_BELOW, 1)}$ up); one column per force law; dotted and dash-dotted lines: the empirical error estimates in $\varepsilon$ and in $1 - \varepsilon$ (twice the largest error measured on the model-selection, test and dense-scan points, plus the reference's accuracy; the two nearly coincide).}}
 \label{{fig:uniform-error}}
 \end{{figure}}
 
 \paragraph{{The overlap rule in one formula.}}
 Where contact lasts until the overlap is back to zero (the default of the DEM codes, Sec.~\ref{{sec:dem}}), fast
-impacts follow the creep law $\varepsilon = C_o\,\Omega^{{\kappa}}$, $\kappa = (\gamma+1)/(2\gamma+1-\alpha)$,
+impacts follow the creep law $\varepsilon = C_o\,\Omega^{{\kappa}}$ of \ArtEq{{eq:overlap-limit}}, $\kappa = (\gamma+1)/(2\gamma+1-\alpha)$,
 up to a correction that vanishes like $\exp(-Q/\Omega)$, and slow ones the same elastic limit as above. For
 $\gamma < \alpha < 2\gamma + 1$ (where the bodies cannot stick) one formula joins the two, with $\bar z = \bar b\,\Omega$,
 $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P} of $\bar z$ below fixed (bars mark the constants of this form, which differ from those of
-the article's uniform approximation):
+that of \ArtEq{{eq:uniform}}):
 \begin{{equation}}
 \frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Theta \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
 \exp\!\Big[\exp(-\rho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
@@ -494,7 +495,7 @@ the error of $C_o$. The error estimate for Kim's force law is {sci(main_overlap[
 and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly when
-$\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (the article's section on this family); the integrations cover those pairs.
+$\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (\ArtSec{{sec:exact-family}}); the integrations cover those pairs.
 
 \begin{{table}}[htbp]
 \centering\footnotesize

@@ -61,7 +61,7 @@ what = {"fig1": rf"forward collision at $g = {T['GFig']}$ against the series (co
         "fig3": r"damped-only phase portrait (compare Fig.~\ref{fig:phase})",
         "fig4": (r"$\varepsilon(\Om)$ from the reference and the closed form: $\varepsilon$ does not depend on $g$ "
                  r"here, so $\varepsilon(g)$ would be a flat line; the dot is this material" if k_zero else
-                 r"$\varepsilon(g)$ from the reference and the relations (compare \FigEps{})")}
+                 r"$\varepsilon(g)$ from the reference and the relations (compare \ArtFig{fig:eps})")}
 for f, text in what.items():
     out += [r"\begin{figure}[tbp]", r"  \centering",
             # fig3 carries its legend beside the axes, so it takes the full width (fig3_phase.py)
@@ -95,7 +95,7 @@ else:
                  r"whatever $\varepsilon$ is, so no relation $\tilde\Omega(\Omega)$ determines $\varepsilon$ "
                  r"and none is drawn.")
     else:
-        text += rf"figure~\ref{{fig:{v}-fig4}} draws reading {T['FigReading']}."
+        text += rf"figure~\ref{{fig:{v}-fig4}} draws the reading marked $\dagger$ there."
     out.append(text)
     out += ["", r"\begin{table}[tbp]", r"  \centering", r"  \small",
             rf"  \input{{{d}/connection/readings.tex}}",
@@ -142,7 +142,7 @@ form = read_json(snakemake.input.form)
 if form["available"]:
     # its constants, coefficients and error estimates are the article's table: not reprinted here (issue 53)
     out.append(r"Its uniform approximation, with its constants, coefficients and error estimates, is in "
-               r"\TabUniform{}; the appendix's table of the atlas adds its largest error on the held-out points.")
+               r"\ArtTab{tab:uniform}; the appendix's table of the atlas adds its largest error on the held-out points.")
 else:
     out.append(rf"It has no uniform approximation: {esc(form['reason'])}.")
 write_text(snakemake.output[0], "\n".join(out))

@@ -65,7 +65,7 @@ VALIDATION_ATOL = 1e-9
 ON_REQUEST = ["results/paper/arxiv.tar.gz", "results/paper/diff.pdf", "results/report.html"]
 #: Built only when TeX is available.
 REQUIRES_TEX = ["results/paper/restitution.pdf", "results/paper/restitution.bbl", "results/paper/supplement.pdf",
-                "results/paper/supplement.bbl", "results/paper/supplement.aux"]
+                "results/paper/supplement.bbl", "results/paper/supplement.aux", "results/paper/article_labels.aux"]
 
 
 def _outputs(tree: Path) -> list[Path]:

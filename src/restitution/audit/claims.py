@@ -135,7 +135,9 @@ def _c_rows(values) -> list[dict]:
     notes = [f"{len(readings) - len(solved)} readings have no solution"]
     if solved:
         near = min(solved, key=lambda r: distance(r["c"]))
-        notes.append(f"the closest is {near['reading']} with (" + ", ".join(f"{v:.4f}" for v in near["c"])
+        # named by what it does, not by its label in the table of readings: the notes are read as text
+        what = near.get("description", "").rstrip(".") or near["reading"]
+        notes.append(f"the closest reading ({what}) gives (" + ", ".join(f"{v:.4f}" for v in near["c"])
                      + f"), {distance(near['c']):.3g} away in the worst coefficient")
     if fit.get("c"):
         notes.append(f"the fit is over g in [{fit['g_min']:g}, {fit['g_max']:g}] ({fit['n']} points), "
