@@ -1,0 +1,170 @@
+"""Referee runs of field round 9: each case's engine value beside the audit's (its --json).
+
+``python tests/field9/check.py CASE ...`` (from the worktree, LD_LIBRARY_PATH set for LAMMPS)
+writes decks/CASE/referee.txt. Importing this module runs nothing.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(os.path.dirname(HERE)))
+
+from tests.field9 import referee as R  # noqa: E402
+
+SI = ["units si"]
+HM = "hertz/material 1e7 1.1e6 0.3 damping viscoelastic tangential linear_nohistory 0 0"
+
+
+def audit_row(case, types, g=1.0, stage=-1, wall=False, which=0):
+    """The audit's (eps, t_c) for a type pair (or a wall row) at speed g, from audit.json."""
+    with open(os.path.join(HERE, "decks", case, "audit.json")) as f:
+        data = json.load(f)
+    rows = data["stages"][stage]["walls" if wall else "pairs"]
+    rows = [r for r in rows if r["types"] == list(types)]
+    r = rows[which]
+    k = min(range(len(r["speeds"])), key=lambda i: abs(r["speeds"][i] - g))
+    tc = r["steps_per_contact"][k] * r["dt"] if r.get("dt") else None
+    return r["eps"][k], tc, r
+
+
+def compare(case, label, audit_eps, res):
+    e0, wob, eps, dts = res
+    line = (f"{label}: audit {audit_eps:.10f}  engine {e0:.10f} (fit residual {wob:.1e}; "
+            f"eps at dt {dts[0]:.3g}..{dts[-1]:.3g}: {eps[0]:.8f}..{eps[-1]:.8f})  "
+            f"diff {audit_eps - e0:+.2e}")
+    print(case, line)
+    with open(os.path.join(HERE, "decks", case, "referee.txt"), "a") as f:
+        f.write(line + "\n")
+
+
+def pair(case, label, types, head, contact, ntypes, s1, s2, g=1.0, stage=-1, which=0, **kw):
+    a, tc, _ = audit_row(case, types, g, stage, which=which)
+    res = R.lammps_pair(head, contact, ntypes, types[0], s1[0], s1[1], types[1], s2[0], s2[1], g, tc, **kw)
+    compare(case, label, a, res)
+
+
+CASES = {}
+
+
+def case(fn):
+    CASES[fn.__name__] = fn
+    return fn
+
+
+@case
+def a01_neigh_exclude():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    pair("a01_neigh_exclude", "types 1 1 g 1", (1, 1), SI, c, 2, (0.01, 2500), (0.01, 2500))
+    pair("a01_neigh_exclude", "types 2 2 g 1", (2, 2), SI, c, 2, (0.02, 7800), (0.02, 7800))
+
+
+@case
+def a03_fix_deposit():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    pair("a03_fix_deposit", "types 1 2 smallest (r 0.005/2500 vs 0.5/1) g 1", (1, 2), SI, c, 2,
+         (0.01, 2500), (1.0, 1.0))
+    pair("a03_fix_deposit", "types 1 2 largest (r 0.005/2500 vs 0.01/7800) g 1", (1, 2), SI, c, 2,
+         (0.01, 2500), (0.02, 7800), which=1)
+
+
+@case
+def a06_fix_move():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    # type 2 (body 2) moves at a constant velocity, type 1 integrates
+    a, tc, _ = audit_row("a06_fix_move", (1, 2), 1.0)
+    fixes = ["group mv id 2", "group fr id 1", "fix mv mv move linear 0 0 -0.5", "fix nve fr nve/sphere"]
+    # closing speed 1: body 1 at +0.5, body 2 held at -0.5 by fix move; eps = -(v1' - v2)/(v1 - v2)
+    res = R.lammps_pair(SI, c, 2, 1, 0.01, 2500, 2, 0.02, 7800, 1.0, tc, fixes=fixes,
+                        equal_speeds=True)
+    compare("a06_fix_move", "types 1 2 g 1 (type 2 under fix move)", a, res)
+
+
+@case
+def a08_set_mass():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    # set type 1 mass 0.02: as a density giving that mass at diameter 0.01
+    rho1 = 0.02 / (3.141592653589793 * 0.01**3 / 6)
+    pair("a08_set_mass", "types 1 1 g 1", (1, 1), SI, c, 2, (0.01, rho1), (0.01, rho1))
+    pair("a08_set_mass", "types 1 2 g 1", (1, 2), SI, c, 2, (0.01, rho1), (0.02, 7800))
+
+
+@case
+def a09_pair_style_again():
+    c = ["pair_style granular", "pair_coeff * * " + HM,
+         "pair_coeff 2 2 hooke 1e5 0.2 damping velocity tangential linear_nohistory 0 0",
+         "pair_style granular",
+         "pair_coeff 1 1 hooke 1e5 0.3 damping velocity tangential linear_nohistory 0 0"]
+    pair("a09_pair_style_again", "stage 2 types 1 1 g 1", (1, 1), SI, c, 2, (0.01, 2500), (0.01, 2500))
+    pair("a09_pair_style_again", "stage 2 types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+    pair("a09_pair_style_again", "stage 2 types 2 2 g 1", (2, 2), SI, c, 2, (0.02, 7800), (0.02, 7800))
+
+
+@case
+def a12_density_disc_2d():
+    c = ["pair_style granular", "pair_coeff * * " + HM,
+         "pair_coeff 2 2 hooke 1e5 2.0 damping velocity tangential linear_nohistory 0 0"]
+    # density/disc: mass pi r^2 rho, as a sphere density rho * 3 / (4 r) (the force does not see
+    # the dimension; the referee runs in 3d)
+    rho1 = 2500 * 3 / (4 * 0.005)
+    pair("a12_density_disc_2d", "types 1 1 g 1", (1, 1), SI, c, 2, (0.01, rho1), (0.01, rho1))
+    pair("a12_density_disc_2d", "types 1 2 g 1", (1, 2), SI, c, 2, (0.01, rho1), (0.02, 7800))
+    pair("a12_density_disc_2d", "types 2 2 g 1", (2, 2), SI, c, 2, (0.02, 7800), (0.02, 7800))
+
+
+@case
+def a13_typefraction():
+    c = ["pair_style granular",
+         "pair_coeff * * hooke 1e4 1.0 damping mass_velocity tangential linear_nohistory 0 0",
+         "pair_coeff 3 3 " + HM + " limit_damping"]
+    pair("a13_typefraction", "types 3 3 g 1", (3, 3), SI, c, 3, (0.014, 4000), (0.014, 4000))
+    pair("a13_typefraction", "types 3 3 g 3.16", (3, 3), SI, c, 3, (0.014, 4000), (0.014, 4000), g=3.16228)
+    pair("a13_typefraction", "types 1 3 g 1", (1, 3), SI, c, 3, (0.01, 2500), (0.014, 4000))
+
+
+@case
+def a14_immediate_fmt():
+    c = ["pair_style granular",
+         "pair_coeff 1 1 hertz/material 2.000e+07 366666.7 0.3 damping viscoelastic tangential linear_nohistory 0 0",
+         "pair_coeff 2 2 hertz/material 1e7 0.7 0.3 damping coeff_restitution tangential linear_nohistory 0 0",
+         "pair_coeff 1 2 hooke 10000 0.57 damping tsuji tangential linear_nohistory 0 0"]
+    pair("a14_immediate_fmt", "types 1 1 g 1", (1, 1), SI, c, 2, (0.01, 2500), (0.01, 2500))
+    pair("a14_immediate_fmt", "types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+    pair("a14_immediate_fmt", "types 2 2 g 1", (2, 2), SI, c, 2, (0.02, 7800), (0.02, 7800))
+
+
+@case
+def a15_loop_next():
+    c = ["pair_style granular",
+         "pair_coeff * * hertz/material 1e7 3e5 0.3 damping viscoelastic tangential linear_nohistory 0 0"]
+    pair("a15_loop_next", "stage 3 types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+    pair("a15_loop_next", "stage 3 types 2 2 g 1", (2, 2), SI, c, 2, (0.02, 7800), (0.02, 7800))
+
+
+@case
+def a16_run_pre_no():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    between = ["pair_coeff 1 2 hooke 1e4 0.5 damping velocity tangential linear_nohistory 0 0"]
+    pair("a16_run_pre_no", "stage 2 types 1 2 g 1 (run pre no)", (1, 2), SI, c, 2, (0.01, 2500),
+         (0.02, 7800), between=between)
+
+
+@case
+def a17_timestep_var_upto():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    pair("a17_timestep_var_upto", "types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+
+
+def main(names):
+    for n in names or list(CASES):
+        p = os.path.join(HERE, "decks", n, "referee.txt")
+        if os.path.exists(p):
+            os.remove(p)
+        CASES[n]()
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
