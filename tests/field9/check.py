@@ -27,7 +27,8 @@ def audit_row(case, types, g=1.0, stage=-1, wall=False, which=0):
     rows = [r for r in rows if r["types"] == list(types)]
     r = rows[which]
     k = min(range(len(r["speeds"])), key=lambda i: abs(r["speeds"][i] - g))
-    tc = r["steps_per_contact"][k] * r["dt"] if r.get("dt") else None
+    spc = r.get("steps_per_contact")
+    tc = spc[k] * r["dt"] if r.get("dt") and spc and spc[k] else None
     return r["eps"][k], tc, r
 
 
@@ -156,6 +157,93 @@ def a16_run_pre_no():
 def a17_timestep_var_upto():
     c = ["pair_style granular", "pair_coeff * * " + HM]
     pair("a17_timestep_var_upto", "types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+
+
+@case
+def b01_exclude_none():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    pair("b01_exclude_none", "stage 2 types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+
+
+@case
+def b03_freeze():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    a, tc, r = audit_row("b03_freeze", (1, 2), 1.0)
+    fz = [b for b in r["beside"] if b["style"] == "freeze"][0]
+    k = r["speeds"].index(min(r["speeds"], key=lambda v: abs(v - 1.0)))
+    res = R.lammps_pair(SI, c, 2, 1, 0.01, 2500, 2, 0.02, 7800, 1.0, tc,
+                        fixes=["group fz id 2", "fix fz fz freeze"])
+    compare("b03_freeze", "types 1 2 g 1 with type 2 frozen (the audit's stderr value)",
+            fz["eps_engine"][k], res)
+
+
+@case
+def b04_viscous_scale():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    fixes = ["fix v all viscous 0.05 scale 2 3.0"]
+    for types, s1, s2 in (((1, 1), (0.01, 2500), (0.01, 2500)), ((1, 2), (0.01, 2500), (0.02, 7800)),
+                          ((2, 2), (0.02, 7800), (0.02, 7800))):
+        a, tc, r = audit_row("b04_viscous_scale", types, 1.0)
+        k = r["speeds"].index(min(r["speeds"], key=lambda v: abs(v - 1.0)))
+        v = [b for b in r["beside"] if b["style"] == "viscous"][0]
+        res = R.lammps_pair(SI, c, 2, types[0], s1[0], s1[1], types[1], s2[0], s2[1], 1.0, tc, fixes=fixes)
+        compare("b04_viscous_scale", f"types {types[0]} {types[1]} g 1 with fix viscous (stderr value)",
+                v["eps_engine"][k], res)
+
+
+@case
+def b05_create_after_set():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    pair("b05_create_after_set", "types 1 1 largest (0.005/2500 vs 0.5/1) g 1", (1, 1), SI, c, 2,
+         (0.01, 2500), (1.0, 1.0), which=1)
+    # eps 2.8e-7: a first-order error at t_c/1000 swamps it, so finer steps
+    pair("b05_create_after_set", "types 1 1 smallest (0.5/1 vs 0.5/1) g 1", (1, 1), SI, c, 2,
+         (1.0, 1.0), (1.0, 1.0), which=0, steps=(8000, 11314, 16000, 22627, 32000))
+
+
+@case
+def b07_cgs_hertz():
+    c = ["pair_style granular",
+         "pair_coeff * * hertz/material 1e8 1e4 0.3 damping viscoelastic tangential linear_nohistory 0 0",
+         "pair_coeff 2 2 hooke 1e6 0.2 damping tsuji tangential linear_nohistory 0 0"]
+    h = ["units cgs"]
+    pair("b07_cgs_hertz", "types 1 2 g 1", (1, 2), h, c, 2, (1.0, 2.5), (2.0, 7.8))
+    pair("b07_cgs_hertz", "types 2 2 g 1", (2, 2), h, c, 2, (2.0, 7.8), (2.0, 7.8))
+
+
+@case
+def b08_labels_clear():
+    c = ["pair_style granular",
+         "pair_coeff 2 2 hertz/material 1e7 1.1e6 0.3 damping viscoelastic tangential linear_nohistory 0 0",
+         "pair_coeff 1 1 hooke 1e5 2.0 damping velocity tangential linear_nohistory 0 0",
+         "pair_coeff 2 1 hooke 1e5 0.6 damping coeff_restitution tangential linear_nohistory 0 0 limit_damping"]
+    pair("b08_labels_clear", "stage 2 types 1 2 (steel glass) g 1", (1, 2), SI, c, 2, (0.02, 7800), (0.01, 2500))
+    pair("b08_labels_clear", "stage 2 types 1 1 (steel) g 1", (1, 1), SI, c, 2, (0.02, 7800), (0.02, 7800))
+
+
+@case
+def b09_setatom_sizes():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    rho3 = (3.141592653589793 / 6) / (3.141592653589793 * 0.016**3 / 6)
+    pair("b09_setatom_sizes", "types 1 1 largest (0.005/2500 vs 0.008/mass pi/6) g 1", (1, 1), SI, c, 2,
+         (0.01, 2500), (0.016, rho3), which=1)
+    pair("b09_setatom_sizes", "types 1 1 smallest (0.008/mass pi/6 vs 0.5/1000) g 1", (1, 1), SI, c, 2,
+         (0.016, rho3), (1.0, 1000), which=0)
+
+
+@case
+def b11_lj_hooke_history():
+    h = ["units lj", "newton off"]
+    c = ["pair_style gran/hooke/history 2000.0 NULL 50.0 NULL 0.5 0", "pair_coeff * *"]
+    pair("b11_lj_hooke_history", "types 1 2 g 1", (1, 2), h, c, 2, (1.0, 1.0), (1.5, 2.0))
+    pair("b11_lj_hooke_history", "types 2 2 g 1", (2, 2), h, c, 2, (1.5, 2.0), (1.5, 2.0))
+    w = ["fix w all wall/gran hooke/history 4000.0 NULL 100.0 NULL 0.5 0 zplane 0.0 NULL"]
+    for t, d, rho in ((1, 1.0, 1.0), (2, 1.5, 2.0)):
+        a, tc, r = audit_row("b11_lj_hooke_history", (t,), 1.0, wall=True)
+        if tc is None:  # sticks: eps 0, no contact time stated; the run lasts 10 type-1 contacts
+            a, tc = 0.0, 10 * audit_row("b11_lj_hooke_history", (1,), 1.0, wall=True)[1]
+        res = R.lammps_wall(h, c, w, 2, t, d, rho, 1.0, tc)
+        compare("b11_lj_hooke_history", f"type {t} on wall g 1", a, res)
 
 
 def main(names):

@@ -81,6 +81,17 @@ def _lammps_once(head, contact, ntypes, bodies, dt, t_max, wall=None, between=No
             lmp.command(f"group b{k} id {k}")
             lmp.command(f"velocity b{k} set 0 0 {v}")
         v0 = [b[3] for b in bodies]
+        # stop at the first step the bodies no longer overlap: a drag or any force beside the
+        # contact keeps changing the velocities after it, and eps is taken at the contact's end
+        # (a body under fix move or freeze keeps its velocity, so the run may also end by time)
+        if len(bodies) == 1:
+            lmp.command(f"variable sep equal z[1]-{bodies[0][4] / 2}-{bodies[0][2] - bodies[0][4] / 2}")
+        else:
+            r12 = (bodies[0][4] + bodies[1][4]) / 2
+            lmp.command(f"variable sep equal sqrt((x[2]-x[1])^2+(y[2]-y[1])^2+(z[2]-z[1])^2)-{r12}")
+        lmp.command("variable moved equal step>2")
+        lmp.command("variable apart equal v_moved*(v_sep>0)")
+        lmp.command("fix halt all halt 1 v_apart > 0.5 error continue message no")
         lmp.command(f"run {int(math.ceil(t_max / dt))}{pre}")
         ids = lmp.numpy.extract_atom("id")
         vel = lmp.numpy.extract_atom("v")
