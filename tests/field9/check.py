@@ -246,6 +246,61 @@ def b11_lj_hooke_history():
         compare("b11_lj_hooke_history", f"type {t} on wall g 1", a, res)
 
 
+MAT = ["fix m1 all property/global youngsModulus peratomtype 5e6 2e7",
+       "fix m2 all property/global poissonsRatio peratomtype 0.3 0.25",
+       "fix m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.6 0.6 0.8",
+       "fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5"]
+HZ = ["pair_style gran model hertz tangential history", "pair_coeff * *"]
+S1, S2 = (0.008, 2500), (0.012, 7800)
+
+
+def lpair(case, label, types, contact, s1, s2, g=1.0, stage=-1, which=0, steps=(400, 800, 1600, 3200), **kw):
+    a, tc, _ = audit_row(case, types, g, stage, which=which)
+    res = R.liggghts_pair("si", 2, contact, types[0], s1[0], s1[1], types[1], s2[0], s2[1], g, tc,
+                          steps=steps, **kw)
+    compare(case, label, a, res)
+
+
+@case
+def l01_two_templates():
+    lpair("l01_two_templates", "types 1 2 g 1", (1, 2), MAT + HZ, S1, S2)
+    lpair("l01_two_templates", "types 2 2 g 1", (2, 2), MAT + HZ, S2, S2)
+
+
+@case
+def l02_property_redefined():
+    between = ["fix m3 all property/global coefficientRestitution peratomtypepair 2 0.3 0.4 0.4 0.9"]
+    for t, s1, s2 in (((1, 1), S1, S1), ((1, 2), S1, S2), ((2, 2), S2, S2)):
+        lpair("l02_property_redefined", f"stage 2 types {t[0]} {t[1]} g 1", t, MAT + HZ, s1, s2,
+              between=between)
+
+
+@case
+def l03_limitforce_hooke_wall():
+    c = MAT + ["fix m5 all property/global characteristicVelocity scalar 2.0",
+               "pair_style gran model hooke tangential history limitForce on", "pair_coeff * *"]
+    lpair("l03_limitforce_hooke_wall", "types 1 1 g 1", (1, 1), c, S1, S1)
+    lpair("l03_limitforce_hooke_wall", "types 1 2 g 1", (1, 2), c, S1, S2)
+    a, tc, _ = audit_row("l03_limitforce_hooke_wall", (1,), 1.0, wall=True)
+    w = ["fix wall all wall/gran model hertz tangential history primitive type 2 zplane -0.05"]
+    res = R.liggghts_wall("si", 2, c, w, 1, S1[0], S1[1], 1.0, tc, zwall=-0.05, steps=(400, 800, 1600, 3200))
+    compare("l03_limitforce_hooke_wall", "type 1 on wall g 1", a, res)
+
+
+@case
+def l04_variables_loop():
+    c = [m.replace("0.5 0.6 0.6 0.8", "0.45 0.6 0.6 0.75") for m in MAT] + HZ
+    lpair("l04_variables_loop", "types 2 2 g 1", (2, 2), c, S2, S2)
+
+
+@case
+def l07_model_switch():
+    c = MAT + ["fix m5 all property/global characteristicVelocity scalar 2.0"] + HZ
+    between = ["pair_style gran model hooke tangential history", "pair_coeff * *"]
+    lpair("l07_model_switch", "stage 2 types 1 2 g 1", (1, 2), c, S1, S2, between=between)
+    lpair("l07_model_switch", "stage 2 types 1 2 g 0.1", (1, 2), c, S1, S2, g=0.1, between=between)
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")

@@ -156,6 +156,9 @@ create_atoms {t1} single 0 0 {z1} units box
 {second}
 set atom 1 diameter {d1} density {rho1}
 {set2}
+create_atoms 1 single {xs} 0 0 units box
+set atom {ids} diameter {d1} density {rho1}
+{between}
 velocity all set 0 0 0 units box
 group b1 id 1
 group b2 id 2
@@ -169,7 +172,7 @@ print "VZ1 ${{v1}}"
 """
 
 
-def _liggghts_once(units, ntypes, contact, bodies, dt, t_max, wall=""):
+def _liggghts_once(units, ntypes, contact, bodies, dt, t_max, wall="", between=None):
     size = 20 * max(b[4] for b in bodies)
     b1 = bodies[0]
     two = len(bodies) > 1
@@ -183,13 +186,15 @@ def _liggghts_once(units, ntypes, contact, bodies, dt, t_max, wall=""):
         var2="variable v2 equal vz[2]" if two else "",
         print2='print "VZ2 ${v2}"' if two else "",
         n=int(math.ceil(t_max / dt)),
+        xs=0.8 * size, ids=3 if two else 2,
+        between=("run 1\n" + "\n".join(between)) if between else "",
     )
     with tempfile.TemporaryDirectory() as tmp:
         path = os.path.join(tmp, "in.ref")
         with open(path, "w") as f:
             f.write(text)
         out = subprocess.run(["liggghts", "-in", "in.ref", "-log", "none", "-echo", "none"],
-                             cwd=tmp, capture_output=True, text=True, timeout=600)
+                             cwd=tmp, capture_output=True, text=True, errors="replace", timeout=600)
     vals = dict(re.findall(r"^(VZ\d) (\S+)$", out.stdout, re.M))
     if "VZ1" not in vals:
         raise RuntimeError(out.stdout[-2000:] + out.stderr[-2000:])
@@ -198,15 +203,17 @@ def _liggghts_once(units, ntypes, contact, bodies, dt, t_max, wall=""):
     return (float(vals["VZ2"]) - float(vals["VZ1"])) / (b1[3] - bodies[1][3])
 
 
-def liggghts_pair(units, ntypes, contact, t1, d1, rho1, t2, d2, rho2, g, t_c, steps=STEPS):
-    """As lammps_pair, in LIGGGHTS: contact holds the fix property/global and pair lines."""
+def liggghts_pair(units, ntypes, contact, t1, d1, rho1, t2, d2, rho2, g, t_c, steps=STEPS, between=None):
+    """As lammps_pair, in LIGGGHTS (a still type-1 sphere far off, as LIGGGHTS wants type 1 to
+    exist): contact holds the fix property/global and pair lines;
+    between, lines issued after a first ``run 1`` under them (the bodies at rest, touching)."""
     m1 = rho1 * math.pi * d1**3 / 6
     m2 = rho2 * math.pi * d2**3 / 6
     v1 = g * m2 / (m1 + m2)
     v2 = -g * m1 / (m1 + m2)
     bodies = [(t1, 0.0, 0.0, v1, d1, rho1), (t2, 0.0, (d1 + d2) / 2, v2, d2, rho2)]
     dts = [t_c / n for n in steps]
-    eps = [_liggghts_once(units, ntypes, contact, bodies, dt, 3 * t_c) for dt in dts]
+    eps = [_liggghts_once(units, ntypes, contact, bodies, dt, 3 * t_c, between=between) for dt in dts]
     e0, w = extrapolate(eps, dts)
     return e0, w, eps, dts
 
