@@ -301,6 +301,46 @@ def l07_model_switch():
     lpair("l07_model_switch", "stage 2 types 1 2 g 0.1", (1, 2), c, S1, S2, g=0.1, between=between)
 
 
+@case
+def r01_linussgi_resodyn():
+    c = ["fix m1 all property/global youngsModulus peratomtype 5e6 5e6",
+         "fix m2 all property/global poissonsRatio peratomtype 0.4 0.4",
+         "fix m3 all property/global coefficientRestitution peratomtypepair 2 0.664838 0.664838 0.664838 0.664838",
+         "fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.720222 0.720222 0.720222",
+         "fix m6 all property/global cohesionEnergyDensity peratomtypepair 2 0 0 0 0",
+         "fix m7 all property/global coefficientRollingFriction peratomtypepair 2 0.04335 0.04335 0.04335 0.04335",
+         "pair_style gran model hertz tangential history cohesion sjkr rolling_friction cdt", "pair_coeff * *"]
+    s0, s9 = (2 * 0.0005062582509797333, 1580), (2 * 0.0006099561759045066, 1580)
+    lpair("r01_linussgi_resodyn", "types 1 1 smallest size g 1", (1, 1), c, s0, s0, stage=0)
+    lpair("r01_linussgi_resodyn", "types 1 1 smallest vs largest g 0.1", (1, 1), c, s0, s9, g=0.1, stage=0)
+
+
+WALL_HM = ["fix floor all wall/gran granular " + HM + " zplane 0 NULL"]
+
+
+@case
+def c05_set_density_after_pour():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    # LAMMPS running the deck itself holds type 1 at radius 0.005, mass 0.00261799 (density 5000)
+    pair("c05_set_density_after_pour", "stage 2 types 1 1 g 1", (1, 1), SI, c, 2, (0.01, 5000), (0.01, 5000))
+    pair("c05_set_density_after_pour", "stage 2 types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 5000), (0.02, 7800))
+    a, tc, _ = audit_row("c05_set_density_after_pour", (1,), 1.0, wall=True)
+    compare("c05_set_density_after_pour", "stage 2 type 1 on floor g 1 (no gravity)", a,
+            R.lammps_wall(SI, c, WALL_HM, 2, 1, 0.01, 5000, 1.0, tc))
+
+
+@case
+def c06_set_diameter_after_pour():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    # LAMMPS running the deck itself holds type 1 at radius 0.003, mass 0.001309 (set diameter keeps it)
+    rho = 0.001308996939 / (3.141592653589793 * 0.006**3 / 6)
+    pair("c06_set_diameter_after_pour", "stage 2 types 1 1 g 1", (1, 1), SI, c, 2, (0.006, rho), (0.006, rho))
+    pair("c06_set_diameter_after_pour", "stage 2 types 1 2 g 1", (1, 2), SI, c, 2, (0.006, rho), (0.02, 7800))
+    a, tc, _ = audit_row("c06_set_diameter_after_pour", (1,), 1.0, wall=True)
+    compare("c06_set_diameter_after_pour", "stage 2 type 1 on floor g 1 (no gravity)", a,
+            R.lammps_wall(SI, c, WALL_HM, 2, 1, 0.006, rho, 1.0, tc))
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")
