@@ -341,6 +341,38 @@ def c06_set_diameter_after_pour():
             R.lammps_wall(SI, c, WALL_HM, 2, 1, 0.006, rho, 1.0, tc))
 
 
+@case
+def c10_step_variable():
+    # the deck's second run: eta = 0.5 + 0.5 * 1000 / 1000 = 1.0 (step is 1000 after run 1000)
+    c = ["pair_style granular", "pair_coeff * * hooke 1e4 1.0 damping velocity tangential linear_nohistory 0 0"]
+    pair("c10_step_variable", "run 2 (eta 1.0) types 1 1 g 1", (1, 1), SI, c, 2, (0.01, 2500), (0.01, 2500))
+
+
+@case
+def c15_step_if_branch():
+    # step >= 1000 after run 1000: the then-branch, eta 1.5
+    c = ["pair_style granular", "pair_coeff * * hooke 1e4 1.5 damping velocity tangential linear_nohistory 0 0"]
+    pair("c15_step_if_branch", "run 2 (eta 1.5) types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+
+
+@case
+def r03b_srjalles_nocohesion():
+    n4 = lambda v: " ".join([str(v)] * 16)
+    c = ["fix m1 all property/global youngsModulus peratomtype 1e8 1e8 1e8 1e8",
+         "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3 0.3",
+         "fix m3 all property/global coefficientRestitution peratomtypepair 4 "
+         "0.1 0.1 0.3 0.1 0.1 0.1 0.1 0.1 0.3 0.1 0.1 0.1 0.1 0.1 0.1 0.1",
+         "fix m4 all property/global coefficientFriction peratomtypepair 4 "
+         "0.95 0.426 0.55 0 0.426 0 0 0 0.55 0 0 0 0 0 0 0",
+         "fix m5 all property/global coefficientRollingFriction peratomtypepair 4 "
+         "0.25 0.15 0.25 0 0.15 0 0 0 0.25 0 0 0 0 0 0 0",
+         "fix m6 all property/global cohesionEnergyDensity peratomtypepair 4 " + n4(0),
+         "pair_style gran model hertz tangential history cohesion sjkr rolling_friction epsd2", "pair_coeff * *"]
+    a, tc, _ = audit_row("r03b_srjalles_nocohesion", (1, 1), 1.0)
+    res = R.liggghts_pair("si", 4, c, 1, 0.005, 4829, 1, 0.005, 4829, 1.0, tc, steps=(400, 800, 1600, 3200))
+    compare("r03b_srjalles_nocohesion", "types 1 1 g 1", a, res)
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")
