@@ -373,6 +373,43 @@ def r03b_srjalles_nocohesion():
     compare("r03b_srjalles_nocohesion", "types 1 1 g 1", a, res)
 
 
+@case
+def c17_mix_coeffrest():
+    c = ["pair_style granular",
+         "pair_coeff 1 1 hooke 1e4 0.3 damping coeff_restitution tangential linear_nohistory 0 0",
+         "pair_coeff 2 2 hooke 4e4 0.8 damping coeff_restitution tangential linear_nohistory 0 0 limit_damping"]
+    pair("c17_mix_coeffrest", "types 1 2 (mixed by LAMMPS) g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+
+
+@case
+def c18_mix_tsuji_material():
+    c = ["pair_style granular",
+         "pair_coeff 1 1 hertz/material 1e7 0.4 0.2 damping tsuji tangential linear_nohistory 0 0",
+         "pair_coeff 2 2 hertz/material 2e8 0.9 0.35 damping tsuji tangential linear_nohistory 0 0"]
+    pair("c18_mix_tsuji_material", "types 1 2 (mixed by LAMMPS) g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+
+
+@case
+def c19_ranges():
+    c = ["pair_style granular",
+         "pair_coeff * * hooke 1e4 0.5 damping velocity tangential linear_nohistory 0 0",
+         "pair_coeff 2* 1* hooke 2e4 1.0 damping velocity tangential linear_nohistory 0 0",
+         "pair_coeff 3 1 hooke 3e4 0.2 damping mass_velocity tangential linear_nohistory 0 0"]
+    for t, s1, s2 in (((1, 2), (0.01, 2500), (0.02, 7800)), ((1, 3), (0.01, 2500), (0.015, 1000)),
+                      ((2, 3), (0.02, 7800), (0.015, 1000)), ((3, 3), (0.015, 1000), (0.015, 1000))):
+        pair("c19_ranges", f"types {t[0]} {t[1]} g 1", t, SI, c, 3, s1, s2)
+
+
+@case
+def c21_units_real():
+    c = ["pair_style granular",
+         "pair_coeff * * hertz/material 1e3 50 0.3 damping viscoelastic tangential linear_nohistory 0 0",
+         "pair_coeff 2 2 hooke 1e-2 0.5 damping tsuji tangential linear_nohistory 0 0"]
+    for g in (0.316228, 1.0):
+        pair("c21_units_real", f"types 1 1 g {g}", (1, 1), ["units real"], c, 2, (10, 2.5), (10, 2.5), g=g)
+        pair("c21_units_real", f"types 1 2 g {g}", (1, 2), ["units real"], c, 2, (10, 2.5), (20, 7.8), g=g)
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")
