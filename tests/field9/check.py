@@ -410,6 +410,42 @@ def c21_units_real():
         pair("c21_units_real", f"types 1 2 g {g}", (1, 2), ["units real"], c, 2, (10, 2.5), (20, 7.8), g=g)
 
 
+@case
+def c30_pour_diam_range():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    pair("c30_pour_diam_range", "smallest eps (0.01/2500 both) g 1", (1, 1), SI, c, 1, (0.02, 2500), (0.02, 2500), which=0)
+    pair("c30_pour_diam_range", "largest eps (0.0025/2500 both) g 1", (1, 1), SI, c, 1, (0.005, 2500), (0.005, 2500), which=1)
+
+
+@case
+def c31_pour_poly_dens_range():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    pair("c31_pour_poly_dens_range", "smallest eps (0.008/3000 both) g 1", (1, 1), SI, c, 1, (0.016, 3000), (0.016, 3000), which=0)
+    pair("c31_pour_poly_dens_range", "largest eps (0.002/1000 both) g 1", (1, 1), SI, c, 1, (0.004, 1000), (0.004, 1000), which=1)
+    # a pair the sampled range should bound: the largest heavy sphere on the smallest light one
+    a_lo = audit_row("c31_pour_poly_dens_range", (1, 1), 1.0, which=0)[0]
+    a_hi, tc, _ = audit_row("c31_pour_poly_dens_range", (1, 1), 1.0, which=1)
+    res = R.lammps_pair(SI, c, 1, 1, 0.016, 3000, 1, 0.004, 1000, 1.0, tc)
+    with open(os.path.join(HERE, "decks", "c31_pour_poly_dens_range", "referee.txt"), "a") as f:
+        f.write(f"mixed pair 0.008/3000 on 0.002/1000 g 1: engine {res[0]:.10f}, inside the audit's range "
+                f"[{a_lo:.10f}, {a_hi:.10f}]: {a_lo <= res[0] <= a_hi}\n")
+
+
+@case
+def r04_mattapow_inclined():
+    c = ["pair_style gran model hertz tangential history tangential_damping on limitForce off", "pair_coeff * *",
+         "fix m1 all property/global youngsModulus peratomtype 5e6 5e6",
+         "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3",
+         "fix m3 all property/global coefficientRestitution peratomtypepair 2 0.6 0.6 0.6 0.6",
+         "fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5"]
+    a, tc, _ = audit_row("r04_mattapow_inclined", (1, 2), 1.0)
+    # type 2 (the lattice layer) has no integrator: body 2 keeps its velocity
+    res = R.liggghts_pair("si", 2, c, 1, 0.002, 2500, 2, 0.001, 2500, 1.0, tc, steps=(400, 800, 1600, 3200),
+                          integ="b1", equal_speeds=True)
+    compare("r04_mattapow_inclined", "types 1 2 g 1, type 2 not integrated", a, res)
+    lpair("r04_mattapow_inclined", "types 1 1 g 1", (1, 1), c, (0.002, 2500), (0.002, 2500))
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")

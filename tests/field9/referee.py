@@ -150,7 +150,6 @@ neighbor {skin} bin
 neigh_modify delay 0
 {contact}
 timestep {dt}
-fix integr all nve/sphere
 {wall}
 create_atoms {t1} single 0 0 {z1} units box
 {second}
@@ -162,6 +161,7 @@ set atom {ids} diameter {d1} density {rho1}
 velocity all set 0 0 0 units box
 group b1 id 1
 group b2 id 2
+fix integr {integ} nve/sphere
 velocity b1 set 0 0 {v1} units box
 {vel2}
 run {n}
@@ -172,7 +172,7 @@ print "VZ1 ${{v1}}"
 """
 
 
-def _liggghts_once(units, ntypes, contact, bodies, dt, t_max, wall="", between=None):
+def _liggghts_once(units, ntypes, contact, bodies, dt, t_max, wall="", between=None, integ="all"):
     size = 20 * max(b[4] for b in bodies)
     b1 = bodies[0]
     two = len(bodies) > 1
@@ -186,7 +186,7 @@ def _liggghts_once(units, ntypes, contact, bodies, dt, t_max, wall="", between=N
         var2="variable v2 equal vz[2]" if two else "",
         print2='print "VZ2 ${v2}"' if two else "",
         n=int(math.ceil(t_max / dt)),
-        xs=0.8 * size, ids=3 if two else 2,
+        xs=0.8 * size, ids=3 if two else 2, integ=integ,
         between=("run 1\n" + "\n".join(between)) if between else "",
     )
     with tempfile.TemporaryDirectory() as tmp:
@@ -203,17 +203,22 @@ def _liggghts_once(units, ntypes, contact, bodies, dt, t_max, wall="", between=N
     return (float(vals["VZ2"]) - float(vals["VZ1"])) / (b1[3] - bodies[1][3])
 
 
-def liggghts_pair(units, ntypes, contact, t1, d1, rho1, t2, d2, rho2, g, t_c, steps=STEPS, between=None):
+def liggghts_pair(units, ntypes, contact, t1, d1, rho1, t2, d2, rho2, g, t_c, steps=STEPS, between=None,
+                  integ="all", equal_speeds=False):
     """As lammps_pair, in LIGGGHTS (a still type-1 sphere far off, as LIGGGHTS wants type 1 to
     exist): contact holds the fix property/global and pair lines;
-    between, lines issued after a first ``run 1`` under them (the bodies at rest, touching)."""
+    between, lines issued after a first ``run 1`` under them (the bodies at rest, touching);
+    integ, the group that fix nve/sphere integrates (b1: body 1 alone)."""
     m1 = rho1 * math.pi * d1**3 / 6
     m2 = rho2 * math.pi * d2**3 / 6
     v1 = g * m2 / (m1 + m2)
     v2 = -g * m1 / (m1 + m2)
+    if equal_speeds:  # a partner that is not integrated stays where it is, at rest (its stored
+        v1, v2 = g, 0.0  # velocity would enter the damping force though it never moves)
     bodies = [(t1, 0.0, 0.0, v1, d1, rho1), (t2, 0.0, (d1 + d2) / 2, v2, d2, rho2)]
     dts = [t_c / n for n in steps]
-    eps = [_liggghts_once(units, ntypes, contact, bodies, dt, 3 * t_c, between=between) for dt in dts]
+    eps = [_liggghts_once(units, ntypes, contact, bodies, dt, 3 * t_c, between=between, integ=integ)
+           for dt in dts]
     e0, w = extrapolate(eps, dts)
     return e0, w, eps, dts
 
