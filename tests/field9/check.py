@@ -446,6 +446,55 @@ def r04_mattapow_inclined():
     lpair("r04_mattapow_inclined", "types 1 1 g 1", (1, 1), c, (0.002, 2500), (0.002, 2500))
 
 
+@case
+def c13_variable_file():
+    c = ["pair_style granular", "pair_coeff * * hooke 1e4 0.6 damping velocity tangential linear_nohistory 0 0"]
+    pair("c13_variable_file", "types 1 1 g 1 (e = 0.6, the file's second line after next)", (1, 1), SI, c, 2,
+         (0.01, 2500), (0.01, 2500))
+
+
+@case
+def c14_jump_other_file():
+    c = ["pair_style granular", "pair_coeff * * hooke 1e4 0.1 damping velocity tangential linear_nohistory 0 0",
+         "pair_coeff 1 2 hooke 1e4 0.7 damping velocity tangential linear_nohistory 0 0"]
+    pair("c14_jump_other_file", "types 1 1 g 1", (1, 1), SI, c, 2, (0.01, 2500), (0.01, 2500))
+    pair("c14_jump_other_file", "types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+
+
+@case
+def r05_edoyango_foundation():
+    c = ["fix m1 all property/global youngsModulus peratomtype 1e7",
+         "fix m2 all property/global poissonsRatio peratomtype 0.45",
+         "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9",
+         "fix m4 all property/global coefficientFriction peratomtypepair 1 0.5",
+         "fix m5 all property/global coefficientRollingFriction peratomtypepair 1 0.3",
+         "pair_style gran model hertz tangential no_history rolling_friction cdt", "pair_coeff * *"]
+    a, tc, _ = audit_row("r05_edoyango_foundation", (1, 1), 1.0)
+    res = R.liggghts_pair("si", 1, c, 1, 0.5, 2500, 1, 0.5, 2500, 1.0, tc, steps=(400, 800, 1600, 3200))
+    compare("r05_edoyango_foundation", "types 1 1 g 1", a, res)
+    a, tc, _ = audit_row("r05_edoyango_foundation", (1,), 1.0, wall=True)
+    w = ["fix zwalls1 all wall/gran model hertz tangential history primitive type 1 zplane 0."]
+    res = R.liggghts_wall("si", 1, c, w, 1, 0.5, 2500, 1.0, tc, steps=(400, 800, 1600, 3200))
+    compare("r05_edoyango_foundation", "type 1 on zwalls1 g 1 (no gravity)", a, res)
+
+
+@case
+def c29_double_nve_coarse_dt():
+    c = ["pair_style granular", "pair_coeff * * hooke 1e4 0.5 damping velocity tangential linear_nohistory 0 0"]
+    _, _, r = audit_row("c29_double_nve_coarse_dt", (1, 1), 1.0)
+    k = r["speeds"].index(1.0)
+    b = [(1, 0.0, 0.0, 0.5, 0.01, 2500), (1, 0.0, 0.01, -0.5, 0.01, 2500)]
+    two = ["fix 1 all nve/sphere", "fix 2 all nve/sphere"]
+    e1 = R._lammps_once(SI, c, 1, b, 4e-5, 3 * 8.1e-4)
+    e2 = R._lammps_once(SI, c, 1, b, 4e-5, 3 * 8.1e-4, fixes=two)
+    with open(os.path.join(HERE, "decks", "c29_double_nve_coarse_dt", "referee.txt"), "w") as f:
+        f.write(f"at the deck's dt 4e-5, touching on a step: audit eps_at_dt {r['eps_at_dt'][k]:.10f}; "
+                f"LAMMPS with one nve/sphere {e1:.10f}, with the deck's two {e2:.10f}\n")
+    res = R.lammps_pair(SI, c, 1, 1, 0.01, 2500, 1, 0.01, 2500, 1.0, r["steps_per_contact"][k] * r["dt"],
+                        fixes=two)
+    compare("c29_double_nve_coarse_dt", "types 1 1 g 1, dt -> 0 with the two integrators", r["eps"][k], res)
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")
