@@ -495,6 +495,19 @@ def c29_double_nve_coarse_dt():
     compare("c29_double_nve_coarse_dt", "types 1 1 g 1, dt -> 0 with the two integrators", r["eps"][k], res)
 
 
+@case
+def l08_set_after_late_insert():
+    c = [m for m in MAT[:4]] + [
+        "fix m5 all property/global kn peratomtypepair 2 1e4 1e4 1e4 1e4",
+        "fix m6 all property/global gamman peratomtypepair 2 300 300 300 300",
+        "fix m7 all property/global kt peratomtypepair 2 1e4 1e4 1e4 1e4",
+        "fix m8 all property/global gammat peratomtypepair 2 300 300 300 300",
+        "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"]
+    # LIGGGHTS running the deck itself holds type 1 at radius 0.004, mass 0.00134041 (density 5000)
+    lpair("l08_set_after_late_insert", "stage 2 types 1 1 g 1", (1, 1), c, (0.008, 5000), (0.008, 5000))
+    lpair("l08_set_after_late_insert", "stage 2 types 1 2 g 1", (1, 2), c, (0.008, 5000), (0.012, 7800))
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")
