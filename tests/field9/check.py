@@ -11,9 +11,12 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.dirname(os.path.dirname(HERE)))
 
-from tests.field9 import referee as R  # noqa: E402
+try:  # imported as tests.field9.check: nothing to change
+    from . import referee as R
+except ImportError:  # run as a script: the worktree onto the path, then the harness
+    sys.path.insert(0, os.path.dirname(os.path.dirname(HERE)))
+    from tests.field9 import referee as R  # noqa: E402
 
 SI = ["units si"]
 HM = "hertz/material 1e7 1.1e6 0.3 damping viscoelastic tangential linear_nohistory 0 0"
@@ -506,6 +509,25 @@ def l08_set_after_late_insert():
     # LIGGGHTS running the deck itself holds type 1 at radius 0.004, mass 0.00134041 (density 5000)
     lpair("l08_set_after_late_insert", "stage 2 types 1 1 g 1", (1, 1), c, (0.008, 5000), (0.008, 5000))
     lpair("l08_set_after_late_insert", "stage 2 types 1 2 g 1", (1, 2), c, (0.008, 5000), (0.012, 7800))
+
+
+@case
+def c36_default_damping():
+    c = ["pair_style granular", "pair_coeff * * hooke 1e4 0.5 tangential linear_nohistory 0 0",
+         "pair_coeff 2 2 hertz 1e6 3e4 tangential linear_history 1e4 0 0.3 rolling sds 100 0 0.1 twisting marshall"]
+    pair("c36_default_damping", "types 2 2 g 1 (no damping keyword)", (2, 2), SI, c, 2, (0.02, 7800), (0.02, 7800))
+    pair("c36_default_damping", "types 1 2 g 3.16 (no damping keyword)", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800),
+         g=3.16228)
+
+
+@case
+def c37_keyword_order():
+    c = ["pair_style granular",
+         "pair_coeff * * hooke 1e4 0.5 tangential linear_nohistory 0 0 rolling sds 100 0 0.1 damping mass_velocity "
+         "twisting sds 10 0 0.1 limit_damping",
+         "pair_coeff 1 2 hertz/material 1e7 0.4 0.3 tangential mindlin NULL 0 0.3 limit_damping damping tsuji"]
+    pair("c37_keyword_order", "types 1 2 g 1", (1, 2), SI, c, 2, (0.01, 2500), (0.02, 7800))
+    pair("c37_keyword_order", "types 2 2 g 1", (2, 2), SI, c, 2, (0.02, 7800), (0.02, 7800))
 
 
 def main(names):
