@@ -530,6 +530,25 @@ def c37_keyword_order():
     pair("c37_keyword_order", "types 2 2 g 1", (2, 2), SI, c, 2, (0.02, 7800), (0.02, 7800))
 
 
+@case
+def c39_wall_on_group_after_pour():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    a, tc, _ = audit_row("c39_wall_on_group_after_pour", (1,), 1.0, wall=True)
+    compare("c39_wall_on_group_after_pour", "stage 2 type 1 on floor g 1 (no gravity)", a,
+            R.lammps_wall(SI, c, WALL_HM, 1, 1, 0.01, 2500, 1.0, tc))
+
+
+@case
+def c40_viscous_on_group_after_pour():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    a, tc, r = audit_row("c40_viscous_on_group_after_pour", (1,), 1.0, wall=True)
+    v = [b for b in r["beside"] if b["style"] == "viscous"][0]
+    k = r["speeds"].index(1.0)
+    compare("c40_viscous_on_group_after_pour", "stage 2 type 1 on floor g 1 with fix viscous 0.05 (stderr value)",
+            v["eps_engine"][k], R.lammps_wall(SI, c, WALL_HM, 1, 1, 0.01, 2500, 1.0, tc,
+                                              fixes=["fix v all viscous 0.05"]))
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")

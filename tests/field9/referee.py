@@ -127,12 +127,12 @@ def lammps_pair(head, contact, ntypes, t1, d1, rho1, t2, d2, rho2, g, t_c, steps
     return e0, w, eps, dts
 
 
-def lammps_wall(head, contact, wall, ntypes, t1, d1, rho1, g, t_c, zwall=0.0, steps=STEPS):
+def lammps_wall(head, contact, wall, ntypes, t1, d1, rho1, g, t_c, zwall=0.0, steps=STEPS, **kw):
     """A sphere of type t1 falling at speed g onto a wall below it at z = zwall (the wall lines
     given verbatim, their plane at zwall); the sphere starts touching it."""
     bodies = [(t1, 0.0, zwall + d1 / 2, -g, d1, rho1)]
     dts = [t_c / n for n in steps]
-    eps = [_lammps_once(head, contact, ntypes, bodies, dt, 3 * t_c, wall=wall) for dt in dts]
+    eps = [_lammps_once(head, contact, ntypes, bodies, dt, 3 * t_c, wall=wall, **kw) for dt in dts]
     e0, w = extrapolate(eps, dts)
     return e0, w, eps, dts
 
