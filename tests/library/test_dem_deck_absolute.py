@@ -43,3 +43,18 @@ def test_a_data_file_by_absolute_path_is_read(tmp_path):
     agrees_with_lammps(got["pairs"], {1: (0.003, 2000.0)},
                        LINE.replace("hooke 1000.0 0.7 damping coeff_restitution", "hooke 1000.0 0.3 damping viscoelastic"),
                        1)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_file_by_absolute_path_named_in_a_variable_gives_its_coefficients(tmp_path):
+    """variable f string /abs/materials.in, then include ${f}: the copy's lines are known as that
+    file's, by their text."""
+    shared, case = tmp_path / "shared", tmp_path / "case"
+    shared.mkdir(), case.mkdir()
+    (shared / "materials.in").write_text(f"{LINE}\n")
+    (case / "in.deck").write_text(lammps_spheres((0.004, 2500.0)) + f"variable f string {shared / 'materials.in'}\n"
+                                  "include ${f}\ntimestep 1e-6\nrun 10\n")
+    got, err = audit(case / "in.deck", "--g", "1")
+    (row,) = got["pairs"]
+    assert row["typed_e"] == 0.7 and row["file"] == str(shared / "materials.in")

@@ -313,8 +313,9 @@ def _absolute(deck: Path, total: int) -> list:
         for n, line in enumerate(text.splitlines(), 1):
             for word in normalised(line).split():
                 word = word.strip("\"'")
-                if "$" in word or not os.path.isabs(word) or word in found or not os.path.isfile(word):
-                    continue
+                if "$" in word or not os.path.isabs(word) or word in found or not os.path.isfile(word) \
+                        or Path(word).resolve().is_relative_to(deck.parent):
+                    continue        # (the deck's own folder: the confined engine sees its copy there)
                 total += os.path.getsize(word)
                 if total > MAX_FOLDER_BYTES:
                     raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),

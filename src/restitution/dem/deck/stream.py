@@ -211,6 +211,10 @@ def _opened(text: str, scratch: Scratch):
     name = words[1].strip("\"'")
     folder = scratch.deck.parent
     where = Path(os.path.normpath(folder / name))
+    # a file named by an absolute path, read from its copy in the scratch
+    label = next((name for name, target in scratch.absolute.items() if where == target), None)
+    if label is not None:
+        return None if label in scratch.tagged or label not in scratch.files else label
     # the deck's own folder named by its absolute path is the copy, where the engine is confined
     for base in (folder, scratch.origin):
         if base is not None and (where == base or base in where.parents):
