@@ -534,6 +534,16 @@ def _restart_infos(root: Path) -> list:
     return [block for block in text.split(fence)[1::2]]
 
 
+def _unguarded(text: str | None) -> str | None:
+    """A copied line as the deck wrote it where the copy guards its set (scratch.UNSET): the guard's
+    count of atoms is the audit's, not the deck's."""
+    from .scratch import UNSET
+    if text is None or UNSET not in text:
+        return text
+    guarded = re.search(r'then "(set [^"]*)" else', text)
+    return guarded.group(1) if guarded else text
+
+
 def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
     """A line for the commands after a run that read a value the skipped runs would have changed
     (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text."""
@@ -551,7 +561,7 @@ def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
                 text = ""
             commands_at[name] = dict(logical_lines(text))
         return commands_at[name]
-    source = {loc: at(loc[0]).get(loc[1]) for loc in {cmd.loc for cmd in commands}
+    source = {loc: _unguarded(at(loc[0]).get(loc[1])) for loc in {cmd.loc for cmd in commands}
               if isinstance(loc, tuple) and len(loc) == 2 and loc[1]}
     found = run_dependent(commands, {loc: text for loc, text in source.items() if text})
     if not found:

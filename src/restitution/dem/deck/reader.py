@@ -162,6 +162,10 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             split = words(cmd.text)
         except ScriptError as why:
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
+        if split and split[0] == "set" and cmd.unset and not made and not deposited_ran:
+            # no atom in the pass, and no pour or deposit has made any in the runs before: the
+            # deck's own run stops here too
+            raise DeckError(place(cmd.loc), cmd.text, "LAMMPS stops here: Set command on system without atoms")
         if split and split[0] == "set":
             _resized(deck, deposited_ran)
             if made and set_poured(deck, made, split, cmd.loc, cmd.text):

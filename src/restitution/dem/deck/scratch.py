@@ -50,6 +50,8 @@ SHELL_BUILTINS = frozenset({"cd", "mkdir", "mv", "rm", "rmdir", "putenv"})
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
                          "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
                          "couple/", "ave/euler", "dump", "phonon", "saed/vtk")
+#: What the print that stands for a set met by no atom begins with (where the engine guards set)
+UNSET = "restitution_unset"
 #: The tag of the audit's own lines (its markers'): never the deck's
 AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
@@ -409,15 +411,16 @@ def _audit_lines(scratch: Scratch, text: str) -> str:
         + text.split("\n")[-1]
 
 
-def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
-    """The command made safe (None where it is already)."""
+def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str | None:
+    """The command made safe (None where it is already); ``top``: a line of its own, not a command
+    an if quotes."""
     key = normalised(command)
     if not key:
         return None
     if scratch.absolute and any(w.strip("\"'") in scratch.absolute for w in key.split()[1:]):
         # a file named by an absolute path: its copy in the scratch, the command made safe as written
         swapped = " ".join(str(scratch.absolute.get(w.strip("\"'"), w)) for w in key.split())
-        safe = _safe(swapped, loc, scratch, marker)
+        safe = _safe(swapped, loc, scratch, marker, top)
         return swapped if safe is None else safe
     word = key.split()[0]
     if "$" in word:
@@ -488,6 +491,15 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         return f"include {path}"
     if word == "if":
         return _safe_if(command, loc, scratch, marker)
+    if word == "set" and top and getattr(marker, "guards_set", False) and not set("\"'") & set(key):
+        # a set meets no atom where only a pour (its runs skipped) makes them, and the engine stops
+        # ("Set command on system without atoms") where the deck's own run would set the poured
+        # atoms: there the set is printed instead (print substitutes its variables, which the echo
+        # of a quoted text does not), and the printed line read as the deck's set
+        probe = f"print '{UNSET} {key}'"
+        _quoted(scratch, key, loc)
+        _quoted(scratch, probe, loc)
+        return f'if "$(count(all)) > 0" then "{key}" else "{probe}"'
     return None
 
 
@@ -531,7 +543,7 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
             inner = piece[len(quote):-len(quote)]
             if previous not in ("if", "elif") and normalised(inner):
                 _quoted(scratch, normalised(inner), loc)
-                new = _safe(inner, loc, scratch, marker)
+                new = _safe(inner, loc, scratch, marker, top=False)
                 if new is not None:
                     changed = True
                     piece = f"{quote}{new}{quote}"
@@ -543,7 +555,7 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
                     continue
                 if previous not in ("if", "elif") and word not in ("if", "then", "elif", "else"):
                     _quoted(scratch, normalised(word), loc)
-                    new = _safe(word, loc, scratch, marker)
+                    new = _safe(word, loc, scratch, marker, top=False)
                     if new is not None:
                         changed = True
                         words[k] = f'"{new}"'
