@@ -797,3 +797,12 @@ def test_an_engine_killed_without_an_error_says_so_not_its_last_cut_line(tmp_pat
     monkeypatch.setattr(deck_run, "run_child", killed)
     err = refused(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 1\n")
     assert "LAMMPS stops here: it ended without an error message (killed by signal 9)" in err, err
+
+
+@pytest.mark.parametrize("bare", ["jump", "include"])
+def test_a_bare_jump_or_include_is_lammps_own_refusal(tmp_path, bare):
+    """make fuzz (seed 53): a mutation left `jump` without its file; LAMMPS stops on it, and the
+    audit's check of where the file lies read a name that is not there (a traceback)."""
+    status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\n{bare}\nrun 1\n")
+    assert status == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
+    assert f"({bare}): LAMMPS stops here" in err, err

@@ -166,3 +166,25 @@ def test_a_set_before_any_atom_still_stops_as_lammps_does(tmp_path):
     status, out, err = run(tmp_path / "in.deck", "--g", "1")
     assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
     assert "line 7 (set type 1 density 9000): LAMMPS stops here: Set command on system without atoms" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("poured", [True, False])
+def test_a_velocity_after_a_pour_only_run_is_read_as_lammps_runs_it(tmp_path, poured):
+    """Field round 9: pour, settle, velocity all set 0 0 0 (a common pattern) was refused with
+    "Velocity command with no atoms existing", an error of the audit's pass alone. Without a pour
+    run before it, LAMMPS' own refusal stays."""
+    pour = ("fix grav all gravity 9.81 vector 0 0 -1\nregion slab block 0.01 0.09 0.01 0.09 0.1 0.19 units box\n"
+            "fix ins all pour 200 1 300719 region slab diam one 0.004 dens 2500 2500\nrun 1\n") if poured else ""
+    (tmp_path / "in.deck").write_text(
+        "units si\natom_style sphere\nboundary f f f\ncomm_modify vel yes\n"
+        "region box block 0 0.1 0 0.1 0 0.2 units box\ncreate_box 1 box\nneighbor 0.001 bin\n"
+        f"pair_style granular\n{HOOKE}\ntimestep 1e-6\nfix integ all nve/sphere\n{pour}"
+        "velocity all set 0 0 0\nrun 100\n")
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    if poured:
+        got, err = audit(tmp_path / "in.deck", "--g", "1")
+        agrees_with_lammps(got["pairs"], {1: (0.002, 2500.0)}, HOOKE, 1)
+    else:
+        assert status == 2 and "LAMMPS stops here: Velocity command with no atoms existing" in err, err

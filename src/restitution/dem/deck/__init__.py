@@ -498,8 +498,9 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                         raise
                 message = (f"{message}: the audit's dump of each type's radius and mass at this run; its atoms have "
                            "no radius (not spheres)")
-            if line and line.split()[0] in ("include", "jump") and confining() and _outside_folder(
-                    line.split()[1].strip("\"'"), scratch.deck.parent, path.resolve().parent):
+            named = line.split()[1:2] if line and line.split()[0] in ("include", "jump") else []
+            if named and confining() and _outside_folder(
+                    named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, f"{engine} stops here: {message}")

@@ -52,6 +52,8 @@ _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "q
                          "couple/", "ave/euler", "dump", "phonon", "saed/vtk")
 #: What the print that stands for a set met by no atom begins with (where the engine guards set)
 UNSET = "restitution_unset"
+#: The commands guarded so, each with what LAMMPS says where it meets no atom
+GUARDED = {"set": "Set command on system without atoms", "velocity": "Velocity command with no atoms existing"}
 #: The tag of the audit's own lines (its markers'): never the deck's
 AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
@@ -491,11 +493,11 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         return f"include {path}"
     if word == "if":
         return _safe_if(command, loc, scratch, marker)
-    if word == "set" and top and getattr(marker, "guards_set", False) and not set("\"'") & set(key):
-        # a set meets no atom where only a pour (its runs skipped) makes them, and the engine stops
-        # ("Set command on system without atoms") where the deck's own run would set the poured
-        # atoms: there the set is printed instead (print substitutes its variables, which the echo
-        # of a quoted text does not), and the printed line read as the deck's set
+    if word in GUARDED and top and getattr(marker, "guards_set", False) and not set("\"'") & set(key):
+        # a set (a velocity) meets no atom where only a pour (its runs skipped) makes them, and the
+        # engine stops ("Set command on system without atoms") where the deck's own run would set
+        # the poured atoms: there the command is printed instead (print substitutes its variables,
+        # which the echo of a quoted text does not), and the printed line read as the deck's
         probe = f"print '{UNSET} {key}'"
         _quoted(scratch, key, loc)
         _quoted(scratch, probe, loc)

@@ -16,7 +16,7 @@ from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
-from .scratch import AUDIT, DYNAMIC, NOOP, UNSET, Scratch, normalised
+from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, UNSET, Scratch, normalised
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS
 
@@ -207,9 +207,9 @@ def _latest(ifs: list, loc, scratch: Scratch) -> None:
 
 #: What an engine's error says after its message: the line it stopped on, quoted
 _ERROR_CONTEXT = re.compile(r"Last (?:input line|command): ")
-#: The print that stands for a set met by no atom in the pass (scratch.UNSET), and what it prints
+#: The print that stands for a set (velocity) met by no atom in the pass (scratch.UNSET), and what it prints
 _UNSET = f"print '{UNSET} "
-_UNSET_PRINTED = f"{UNSET} set "
+_UNSET_PRINTED = tuple(f"{UNSET} {word} " for word in GUARDED)
 #: The audit's no-ops (skipped commands, names from a variable): their text is the audit's alone
 _MARK = re.compile(r"label restitution_(skipped|unchecked)_\d+")
 
