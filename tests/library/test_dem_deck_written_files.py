@@ -186,5 +186,6 @@ def test_a_velocity_after_a_pour_only_run_is_read_as_lammps_runs_it(tmp_path, po
     if poured:
         got, err = audit(tmp_path / "in.deck", "--g", "1")
         agrees_with_lammps(got["pairs"], {1: (0.002, 2500.0)}, HOOKE, 1)
+        assert "reads a value the runs change" not in err and "restitution_unset" not in err, err
     else:
         assert status == 2 and "LAMMPS stops here: Velocity command with no atoms existing" in err, err

@@ -541,7 +541,7 @@ def _unguarded(text: str | None) -> str | None:
     from .scratch import UNSET
     if text is None or UNSET not in text:
         return text
-    guarded = re.search(r'then "(set [^"]*)" else', text)
+    guarded = re.search(r'then "((?:set|velocity) [^"]*)" else', text)
     return guarded.group(1) if guarded else text
 
 
