@@ -127,10 +127,11 @@ def outside_file_outcome(result: tuple, absolute: bool, folder: Path, line: int)
     include at ``line`` (deck line number). Either way nothing ran: the caller checks the files."""
     from restitution.dem.dialect.sandbox import available as confining
     status, out, err = result
-    if not absolute and confining():
-        # the deck names the file above its folder as written (its variable line): copied there
-        # made safe, which the confined engine reads
-        assert status == 0 and "shell (../outside/evil.in line 1 and any like it): not executed" in err, err
+    if confining():
+        # the deck names the file above its folder, or by its absolute path, as written (its
+        # variable line): copied into the scratch made safe, which the confined engine reads
+        shown = str(folder.parent / "outside" / "evil.in") if absolute else "../outside/evil.in"
+        assert status == 0 and f"shell ({shown} line 1 and any like it): not executed" in err, err
         return
     assert status == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
     assert f"line {line} (include" in err and "outside the deck's folder" in err, err

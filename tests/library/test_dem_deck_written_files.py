@@ -127,3 +127,65 @@ def test_a_clear_after_a_pour_starts_afresh(tmp_path):
     got, err = audit(tmp_path / "in.deck", "--g", "1")
     assert [r["types"] for r in got["pairs"]] == [[1, 1]] and "sizes" not in got["pairs"][0]
     agrees_with_lammps(got["pairs"], {1: (0.003, 2500.0)}, HOOKE, 1)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_set_after_a_pour_only_run_sets_the_poured_spheres(tmp_path):
+    """Field rounds 8 and 9: a pour makes the only atoms, a run, then set type 1 density 9000. The
+    engine's pass skips the run, so the set met no atom and LAMMPS stopped there ("Set command on
+    system without atoms"); the deck was refused though LAMMPS runs it and sets the 200 poured
+    spheres. The copy now guards each set: where no atom is there, it is printed, substituted, and
+    read as the deck's set. The second run's pairs of 9000 are LAMMPS' own; the pour's 2500, which
+    it may still insert, ends the range."""
+    (tmp_path / "in.deck").write_text(
+        "units si\natom_style sphere\nboundary f f f\ncomm_modify vel yes\n"
+        "region box block 0 0.1 0 0.1 0 0.2 units box\ncreate_box 1 box\nneighbor 0.001 bin\n"
+        f"pair_style granular\n{HOOKE}\ntimestep 1e-6\nfix integ all nve/sphere\n"
+        "fix grav all gravity 9.81 vector 0 0 -1\nregion slab block 0.01 0.09 0.01 0.09 0.1 0.19 units box\n"
+        "fix ins all pour 200 1 300719 region slab diam one 0.004 dens 2500 2500\nrun 1\n"
+        "variable rho equal 9000\nset type 1 density ${rho}\nrun 100\n")
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert len(got["stages"]) == 2 and "reads a value the runs change" not in err
+    rows = {row["at"][0][1]: row for row in got["stages"][1]["pairs"]}
+    assert sorted(rows) == [2500.0, 9000.0] and all(row["at"][0] == row["at"][1] for row in rows.values())
+    for density, row in rows.items():
+        agrees_with_lammps([row], {1: (0.002, density)}, HOOKE, 1)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_set_before_any_atom_still_stops_as_lammps_does(tmp_path):
+    """The guard of the set above must not hide a deck LAMMPS stops on: a set before any atom
+    exists, with no pour that ran, is refused with LAMMPS' own message."""
+    (tmp_path / "in.deck").write_text(
+        "units si\natom_style sphere\nboundary f f f\ncomm_modify vel yes\n"
+        "region box block 0 0.1 0 0.1 0 0.2 units box\ncreate_box 1 box\nset type 1 density 9000\n"
+        "create_atoms 1 single 0.02 0.05 0.05\ncreate_atoms 1 single 0.04 0.05 0.05\n"
+        f"pair_style granular\n{HOOKE}\nfix integ all nve/sphere\ntimestep 1e-6\nrun 10\n")
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert "line 7 (set type 1 density 9000): LAMMPS stops here: Set command on system without atoms" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("poured", [True, False])
+def test_a_velocity_after_a_pour_only_run_is_read_as_lammps_runs_it(tmp_path, poured):
+    """Field round 9: pour, settle, velocity all set 0 0 0 (a common pattern) was refused with
+    "Velocity command with no atoms existing", an error of the audit's pass alone. Without a pour
+    run before it, LAMMPS' own refusal stays."""
+    pour = ("fix grav all gravity 9.81 vector 0 0 -1\nregion slab block 0.01 0.09 0.01 0.09 0.1 0.19 units box\n"
+            "fix ins all pour 200 1 300719 region slab diam one 0.004 dens 2500 2500\nrun 1\n") if poured else ""
+    (tmp_path / "in.deck").write_text(
+        "units si\natom_style sphere\nboundary f f f\ncomm_modify vel yes\n"
+        "region box block 0 0.1 0 0.1 0 0.2 units box\ncreate_box 1 box\nneighbor 0.001 bin\n"
+        f"pair_style granular\n{HOOKE}\ntimestep 1e-6\nfix integ all nve/sphere\n{pour}"
+        "velocity all set 0 0 0\nrun 100\n")
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    if poured:
+        got, err = audit(tmp_path / "in.deck", "--g", "1")
+        agrees_with_lammps(got["pairs"], {1: (0.002, 2500.0)}, HOOKE, 1)
+        assert "reads a value the runs change" not in err and "restitution_unset" not in err, err
+    else:
+        assert status == 2 and "LAMMPS stops here: Velocity command with no atoms existing" in err, err

@@ -498,8 +498,9 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                         raise
                 message = (f"{message}: the audit's dump of each type's radius and mass at this run; its atoms have "
                            "no radius (not spheres)")
-            if line and line.split()[0] in ("include", "jump") and confining() and _outside_folder(
-                    line.split()[1].strip("\"'"), scratch.deck.parent, path.resolve().parent):
+            named = line.split()[1:2] if line and line.split()[0] in ("include", "jump") else []
+            if named and confining() and _outside_folder(
+                    named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, f"{engine} stops here: {message}")
@@ -534,6 +535,16 @@ def _restart_infos(root: Path) -> list:
     return [block for block in text.split(fence)[1::2]]
 
 
+def _unguarded(text: str | None) -> str | None:
+    """A copied line as the deck wrote it where the copy guards its set (scratch.UNSET): the guard's
+    count of atoms is the audit's, not the deck's."""
+    from .scratch import UNSET
+    if text is None or UNSET not in text:
+        return text
+    guarded = re.search(r'then "((?:set|velocity) [^"]*)" else', text)
+    return guarded.group(1) if guarded else text
+
+
 def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
     """A line for the commands after a run that read a value the skipped runs would have changed
     (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text."""
@@ -551,7 +562,7 @@ def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
                 text = ""
             commands_at[name] = dict(logical_lines(text))
         return commands_at[name]
-    source = {loc: at(loc[0]).get(loc[1]) for loc in {cmd.loc for cmd in commands}
+    source = {loc: _unguarded(at(loc[0]).get(loc[1])) for loc in {cmd.loc for cmd in commands}
               if isinstance(loc, tuple) and len(loc) == 2 and loc[1]}
     found = run_dependent(commands, {loc: text for loc, text in source.items() if text})
     if not found:

@@ -17,6 +17,7 @@ import re
 
 from .beside import BESIDE, adapt_parts, adapted_diameter
 from .meeting import MOVERS, neigh_modify, special_bonds
+from .scratch import GUARDED
 from .stream import SEEDED
 from .runtime import constant_in_time
 from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, type_pairs, types,
@@ -162,6 +163,10 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             split = words(cmd.text)
         except ScriptError as why:
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
+        if split and cmd.unset and not made and not deposited_ran:
+            # no atom in the pass, and no pour or deposit has made any in the runs before: the
+            # deck's own run stops here too
+            raise DeckError(place(cmd.loc), cmd.text, f"LAMMPS stops here: {GUARDED[split[0]]}")
         if split and split[0] == "set":
             _resized(deck, deposited_ran)
             if made and set_poured(deck, made, split, cmd.loc, cmd.text):

@@ -50,6 +50,10 @@ SHELL_BUILTINS = frozenset({"cd", "mkdir", "mv", "rm", "rmdir", "putenv"})
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
                          "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
                          "couple/", "ave/euler", "dump", "phonon", "saed/vtk")
+#: What the print that stands for a set met by no atom begins with (where the engine guards set)
+UNSET = "restitution_unset"
+#: The commands guarded so, each with what LAMMPS says where it meets no atom
+GUARDED = {"set": "Set command on system without atoms", "velocity": "Velocity command with no atoms existing"}
 #: The tag of the audit's own lines (its markers'): never the deck's
 AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
@@ -87,7 +91,8 @@ class Scratch:
     or ``write_data`` names outside the copy (an absolute path, a climb by ..), each -> the file in
     the scratch it writes instead, which a later read of that name reads; ``skipped_text`` the text
     of each skipped command by its index in ``skipped`` (the files it names, which a later read of
-    one of them may need)."""
+    one of them may need); ``absolute`` the files the deck names by an absolute path, each -> its
+    copy in the scratch, which the copy's commands name instead."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -106,6 +111,7 @@ class Scratch:
     silenced: dict = field(default_factory=dict)
     redirected: dict = field(default_factory=dict)
     skipped_text: dict = field(default_factory=dict)
+    absolute: dict = field(default_factory=dict)
 
 
 def normalised(text: str) -> str:
@@ -197,12 +203,21 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             shutil.copytree(source, target, symlinks=True, dirs_exist_ok=True)
         else:
             shutil.copyfile(source, target)
+    # a file named by an absolute path (a cluster's /home/... parameter file): copied into the
+    # scratch, where the copy's commands read it, made safe as the folder's files are
+    absolute = {}
+    for name in _absolute(src, total):
+        target = root.joinpath("absolute", *Path(name).parts[1:])
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(name, target)
+        absolute[name] = target
     # a nonce: a deck cannot write a tag that passes for another line's
     scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
-                      origin=src.parent, mirrored=set(above))
+                      origin=src.parent, mirrored=set(above), absolute=absolute)
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(root / "deck") for name in sorted(names)
-                              if Path(base, name) != scratch.deck]
+                              if Path(base, name) != scratch.deck] + sorted(absolute.values())
+    labels = {target: name for name, target in absolute.items()}
     # the lines of a file the deck reads as commands are the engine's commands when echoed; the
     # text of any other file (an old log, say) is not: only the deck and the files it names by
     # include or jump (every file where such a name comes from a variable) are mapped
@@ -218,7 +233,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             text = p.read_text(encoding="utf-8", errors="surrogateescape")
         except OSError:
             continue
-        label = None if p == scratch.deck else os.path.relpath(p, copy)
+        label = None if p == scratch.deck else labels.get(p) or os.path.relpath(p, copy)
         # a file named as written is a script: its lines get their tags; any other (a data file,
         # or a script named by a variable) is left as it is, its lines known by their text
         if p == scratch.deck or p.name in literal:
@@ -283,6 +298,37 @@ def _above(deck: Path, total: int) -> tuple[list, int]:
         todo += [folder / name for name in _named_files(path) or () if not _UP.search(name)]
     depth = max((len(Path(n).parts) - len(Path(n.lstrip("./")).parts) for n in found), default=0)
     return sorted(found), depth
+
+
+def _absolute(deck: Path, total: int) -> list:
+    """The files the deck and the scripts it names (include, jump; those named by an absolute path
+    too) name by an absolute path as written, each one that is a file; ``total``: the bytes copied
+    so far, which these may not take above MAX_FOLDER_BYTES."""
+    found, todo, seen = [], [deck], set()
+    while todo:
+        path = todo.pop()
+        if path in seen or not path.is_file() or path.stat().st_size > _MAX_TEXT_BYTES:
+            continue
+        seen.add(path)
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        for n, line in enumerate(text.splitlines(), 1):
+            for word in normalised(line).split():
+                word = word.strip("\"'")
+                if "$" in word or not os.path.isabs(word) or word in found or not os.path.isfile(word) \
+                        or Path(word).resolve().is_relative_to(deck.parent):
+                    continue        # (the deck's own folder: the confined engine sees its copy there)
+                total += os.path.getsize(word)
+                if total > MAX_FOLDER_BYTES:
+                    raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
+                                    f"the deck's folder and the files it names hold more than "
+                                    f"{MAX_FOLDER_BYTES >> 20} MB, copied to run the deck safely: not audited")
+                found.append(word)
+                todo.append(Path(word))
+        todo += [deck.parent / name for name in _named_files(path) or () if not os.path.isabs(name)]
+    return found
 
 
 def _named_files(deck: Path, literal: bool = False) -> set | None:
@@ -367,11 +413,17 @@ def _audit_lines(scratch: Scratch, text: str) -> str:
         + text.split("\n")[-1]
 
 
-def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
-    """The command made safe (None where it is already)."""
+def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str | None:
+    """The command made safe (None where it is already); ``top``: a line of its own, not a command
+    an if quotes."""
     key = normalised(command)
     if not key:
         return None
+    if scratch.absolute and any(w.strip("\"'") in scratch.absolute for w in key.split()[1:]):
+        # a file named by an absolute path: its copy in the scratch, the command made safe as written
+        swapped = " ".join(str(scratch.absolute.get(w.strip("\"'"), w)) for w in key.split())
+        safe = _safe(swapped, loc, scratch, marker, top)
+        return swapped if safe is None else safe
     word = key.split()[0]
     if "$" in word:
         # what it would run cannot be checked first: never run; the deck is refused if it reaches it
@@ -441,6 +493,15 @@ def _safe(command: str, loc, scratch: Scratch, marker) -> str | None:
         return f"include {path}"
     if word == "if":
         return _safe_if(command, loc, scratch, marker)
+    if word in GUARDED and top and getattr(marker, "guards_set", False) and not set("\"'") & set(key):
+        # a set (a velocity) meets no atom where only a pour (its runs skipped) makes them, and the
+        # engine stops ("Set command on system without atoms") where the deck's own run would set
+        # the poured atoms: there the command is printed instead (print substitutes its variables,
+        # which the echo of a quoted text does not), and the printed line read as the deck's
+        probe = f"print '{UNSET} {key}'"
+        _quoted(scratch, key, loc)
+        _quoted(scratch, probe, loc)
+        return f'if "$(count(all)) > 0" then "{key}" else "{probe}"'
     return None
 
 
@@ -466,6 +527,8 @@ def _outside(name: str, scratch: Scratch) -> bool:
     safe holds: absolute, or climbing out by .. to a path the deck's files do not name as written
     (those are copied, :attr:`Scratch.mirrored`)."""
     name = name.strip("\"'")
+    if os.path.isabs(name) and Path(name).is_relative_to(scratch.root):
+        return False          # a copy the scratch made (of a file named by an absolute path)
     return "$" not in name and (os.path.isabs(name) or ".." in Path(name).parts
                                 and os.path.normpath(name) not in scratch.mirrored)
 
@@ -482,7 +545,7 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
             inner = piece[len(quote):-len(quote)]
             if previous not in ("if", "elif") and normalised(inner):
                 _quoted(scratch, normalised(inner), loc)
-                new = _safe(inner, loc, scratch, marker)
+                new = _safe(inner, loc, scratch, marker, top=False)
                 if new is not None:
                     changed = True
                     piece = f"{quote}{new}{quote}"
@@ -494,7 +557,7 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
                     continue
                 if previous not in ("if", "elif") and word not in ("if", "then", "elif", "else"):
                     _quoted(scratch, normalised(word), loc)
-                    new = _safe(word, loc, scratch, marker)
+                    new = _safe(word, loc, scratch, marker, top=False)
                     if new is not None:
                         changed = True
                         words[k] = f'"{new}"'

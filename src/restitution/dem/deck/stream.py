@@ -16,7 +16,7 @@ from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
-from .scratch import AUDIT, DYNAMIC, NOOP, Scratch, normalised
+from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, UNSET, Scratch, normalised
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS
 
@@ -31,12 +31,14 @@ class Executed:
     (then ``text`` is the run), else None; ``snapshot`` whether that marker wrote the atoms (a
     LAMMPS marker skips its set-up check and its dump where its run was checked before,
     :func:`first_unchecked`; None: each marker wrote them); ``restart`` the read_restart marker's
-    number where it is one (``text`` the read_restart)."""
+    number where it is one (``text`` the read_restart); ``unset`` whether it is a set that met no
+    atom in the pass (the scratch copy printed it instead of running it)."""
     loc: tuple
     text: str
     stage: int | None = None
     snapshot: bool | None = None
     restart: int | None = None
+    unset: bool = False
 
 
 def _echo_lines(echo: str) -> list[str]:
@@ -110,7 +112,7 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     key_of, keys = _once_each(normalised)
     substituted, _ = _once_each(_substituted)
     out: list = []
-    k, opened, stage_at = 0, None, None
+    k, opened, stage_at, unset_at = 0, None, None, None
     ifs: list = []           # the lines echoed whose if or every runs quoted commands, latest last
     files: list = []         # the untagged files an include or jump of the deck opened, innermost last
 
@@ -135,6 +137,11 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
             key = keys[raw] = normalised(raw)
         k += 1
         if not key or _ERROR_CONTEXT.match(key):     # an error quotes the line, tag and all
+            continue
+        if unset_at is not None and key.startswith(_UNSET_PRINTED):
+            # the deck's set, as LAMMPS substituted it: its own line's command
+            out.append(Executed(unset_at, key[len(UNSET) + 1:], unset=True))
+            unset_at = None
             continue
         m = marker.fullmatch(key) if key.startswith(prefix) else None
         if m:
@@ -178,6 +185,10 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
         if loc is None:
             continue                         # the engine's output, or a line of the audit's
         text = follow(key) if "$" in key else key   # no $: nothing substituted
+        if text.startswith(_UNSET):
+            unset_at = loc       # a set that met no atom in the pass: its printed text comes next
+            _latest(ifs, loc, scratch)
+            continue
         out.append(Executed(loc, text))
         _latest(ifs, loc, scratch)
         opened_file = _opened(text, scratch)
@@ -196,6 +207,9 @@ def _latest(ifs: list, loc, scratch: Scratch) -> None:
 
 #: What an engine's error says after its message: the line it stopped on, quoted
 _ERROR_CONTEXT = re.compile(r"Last (?:input line|command): ")
+#: The print that stands for a set (velocity) met by no atom in the pass (scratch.UNSET), and what it prints
+_UNSET = f"print '{UNSET} "
+_UNSET_PRINTED = tuple(f"{UNSET} {word} " for word in GUARDED)
 #: The audit's no-ops (skipped commands, names from a variable): their text is the audit's alone
 _MARK = re.compile(r"label restitution_(skipped|unchecked)_\d+")
 
@@ -211,6 +225,10 @@ def _opened(text: str, scratch: Scratch):
     name = words[1].strip("\"'")
     folder = scratch.deck.parent
     where = Path(os.path.normpath(folder / name))
+    # a file named by an absolute path, read from its copy in the scratch
+    label = next((name for name, target in scratch.absolute.items() if where == target), None)
+    if label is not None:
+        return None if label in scratch.tagged or label not in scratch.files else label
     # the deck's own folder named by its absolute path is the copy, where the engine is confined
     for base in (folder, scratch.origin):
         if base is not None and (where == base or base in where.parents):

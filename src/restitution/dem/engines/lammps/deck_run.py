@@ -93,6 +93,8 @@ def marker(root: Path):
         # the binary file)
         return f"{read}\ninfo system coeffs groups out append {root / RESTART_INFO}\n"
     text.restart = restart
+    # LAMMPS stops on a set that meets no atom: the copy guards each one (scratch.UNSET)
+    text.guards_set = True
     return text
 
 
