@@ -24,7 +24,7 @@ pair_coeff 2 2 granular hertz 1e6 0.2 tangential linear_nohistory 1 0.3 damping 
 """
 
 
-def _deck(tmp_path, hybrid: str, lines: str):
+def _deck(tmp_path, hybrid: str, lines: str, styles: str = STYLE):
     (tmp_path / "in.deck").write_text(f"""units si
 atom_style sphere
 comm_modify vel yes
@@ -34,7 +34,7 @@ create_atoms 1 single 0.3 0.5 0.5
 create_atoms 2 single 0.6 0.5 0.5
 set type 1 diameter 0.01 density 2500
 set type 2 diameter 0.02 density 1000
-pair_style {hybrid} {STYLE}
+pair_style {hybrid} {styles}
 {lines}fix 1 all nve/sphere
 timestep 1e-6
 run 10
@@ -102,21 +102,7 @@ def _engine_in_child(g: float, t_c: float, types: tuple, steps: int = 16000) -> 
 
 
 def _two(tmp_path, hybrid: str, lines: str):
-    (tmp_path / "in.deck").write_text(f"""units si
-atom_style sphere
-comm_modify vel yes
-region box block 0 1 0 1 0 1
-create_box 2 box
-create_atoms 1 single 0.3 0.5 0.5
-create_atoms 2 single 0.6 0.5 0.5
-set type 1 diameter 0.01 density 2500
-set type 2 diameter 0.02 density 1000
-pair_style {hybrid} {TWO}
-{lines}fix 1 all nve/sphere
-timestep 1e-6
-run 10
-""")
-    return run(tmp_path / "in.deck", "--g", "0.5", "--json")
+    return _deck(tmp_path, hybrid, lines, TWO)
 
 
 @needs_lammps

@@ -256,46 +256,33 @@ def _above(deck: Path, total: int) -> tuple[list, int]:
     """The paths above the deck's folder that the deck and the files it names (include, jump, and
     those named above it) name by ``..`` as written, normalised (``../DEM/data.txt``), each one that
     exists; and how many folders up the furthest reaches. ``total``: the bytes of the folder."""
-    folder, found, todo, seen = deck.parent, set(), [deck], set()
-    while todo:
-        path = todo.pop()
-        if path in seen or not path.is_file() or path.stat().st_size > _MAX_TEXT_BYTES:
+    folder, found, todo = deck.parent, set(), [deck]
+    for path, n, line, word in _words_named(deck, todo):
+        if "$" in word or not _UP.search(word) or os.path.isabs(word):
             continue
-        seen.add(path)
-        try:
-            text = path.read_text(encoding="utf-8", errors="replace")
-        except OSError:
+        name = os.path.normpath(word)
+        up = len(Path(name).parts) - len(Path(name.lstrip("./")).parts) if name.startswith("..") else 0
+        source = Path(os.path.normpath(folder / name))
+        if not up or not os.path.lexists(source):
+            if up:
+                continue        # nothing there: the engine says so where it is read
+            todo.append(source)  # a file in the folder named by a path through ..
             continue
-        for n, line in enumerate(text.splitlines(), 1):
-            for word in normalised(line).split():
-                word = word.strip("\"'")
-                if "$" in word or not _UP.search(word) or os.path.isabs(word):
-                    continue
-                name = os.path.normpath(word)
-                up = len(Path(name).parts) - len(Path(name.lstrip("./")).parts) if name.startswith("..") else 0
-                source = Path(os.path.normpath(folder / name))
-                if not up or not os.path.lexists(source):
-                    if up:
-                        continue        # nothing there: the engine says so where it is read
-                    todo.append(source)  # a file in the folder named by a path through ..
-                    continue
-                if up > MAX_UP or up >= len(folder.parts):
-                    raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
-                                    f"it names {word}, {up} folders above the deck's: the audit copies what a deck "
-                                    f"names up to {MAX_UP} folders above its own (the deck runs in a copy made "
-                                    "safe); move the case's files nearer")
-                if source.is_symlink():
-                    continue            # as in the folder's copy, a link is not followed
-                found.add(name)
-                todo.append(source)
-                total += sum(p.stat().st_size for p in ([source] if source.is_file() else source.rglob("*"))
-                             if p.is_file() and not p.is_symlink())
-                if total > MAX_FOLDER_BYTES:
-                    raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
-                                    f"the deck's folder and the files above it that the deck names hold more than "
-                                    f"{MAX_FOLDER_BYTES >> 20} MB, copied to run the deck safely: not audited")
-        # the scripts it includes by their names as written (a name through .. is a word above)
-        todo += [folder / name for name in _named_files(path) or () if not _UP.search(name)]
+        if up > MAX_UP or up >= len(folder.parts):
+            raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
+                            f"it names {word}, {up} folders above the deck's: the audit copies what a deck "
+                            f"names up to {MAX_UP} folders above its own (the deck runs in a copy made "
+                            "safe); move the case's files nearer")
+        if source.is_symlink():
+            continue            # as in the folder's copy, a link is not followed
+        found.add(name)
+        todo.append(source)
+        total += sum(p.stat().st_size for p in ([source] if source.is_file() else source.rglob("*"))
+                     if p.is_file() and not p.is_symlink())
+        if total > MAX_FOLDER_BYTES:
+            raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
+                            f"the deck's folder and the files above it that the deck names hold more than "
+                            f"{MAX_FOLDER_BYTES >> 20} MB, copied to run the deck safely: not audited")
     depth = max((len(Path(n).parts) - len(Path(n.lstrip("./")).parts) for n in found), default=0)
     return sorted(found), depth
 
@@ -304,7 +291,27 @@ def _absolute(deck: Path, total: int) -> list:
     """The files the deck and the scripts it names (include, jump; those named by an absolute path
     too) name by an absolute path as written, each one that is a file; ``total``: the bytes copied
     so far, which these may not take above MAX_FOLDER_BYTES."""
-    found, todo, seen = [], [deck], set()
+    found, todo = [], [deck]
+    for path, n, line, word in _words_named(deck, todo):
+        if "$" in word or not os.path.isabs(word) or word in found or not os.path.isfile(word) \
+                or Path(word).resolve().is_relative_to(deck.parent):
+            continue        # (the deck's own folder: the confined engine sees its copy there)
+        total += os.path.getsize(word)
+        if total > MAX_FOLDER_BYTES:
+            raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
+                            f"the deck's folder and the files it names hold more than "
+                            f"{MAX_FOLDER_BYTES >> 20} MB, copied to run the deck safely: not audited")
+        found.append(word)
+        todo.append(Path(word))
+    return found
+
+
+def _words_named(deck: Path, todo: list):
+    """(file, line number, line, word without quotes) of every word of the scripts in ``todo``, of
+    the scripts each names by include or jump as written (a name by .. or an absolute path is a
+    word, which the caller follows or not) and of what the caller appends to ``todo`` as it goes;
+    each file read once, one larger than _MAX_TEXT_BYTES or unreadable passed over."""
+    seen = set()
     while todo:
         path = todo.pop()
         if path in seen or not path.is_file() or path.stat().st_size > _MAX_TEXT_BYTES:
@@ -316,19 +323,8 @@ def _absolute(deck: Path, total: int) -> list:
             continue
         for n, line in enumerate(text.splitlines(), 1):
             for word in normalised(line).split():
-                word = word.strip("\"'")
-                if "$" in word or not os.path.isabs(word) or word in found or not os.path.isfile(word) \
-                        or Path(word).resolve().is_relative_to(deck.parent):
-                    continue        # (the deck's own folder: the confined engine sees its copy there)
-                total += os.path.getsize(word)
-                if total > MAX_FOLDER_BYTES:
-                    raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
-                                    f"the deck's folder and the files it names hold more than "
-                                    f"{MAX_FOLDER_BYTES >> 20} MB, copied to run the deck safely: not audited")
-                found.append(word)
-                todo.append(Path(word))
-        todo += [deck.parent / name for name in _named_files(path) or () if not os.path.isabs(name)]
-    return found
+                yield path, n, line, word.strip("\"'")
+        todo += [deck.parent / name for name in _named_files(path) or () if not _UP.search(name)]
 
 
 def _named_files(deck: Path, literal: bool = False) -> set | None:

@@ -238,6 +238,13 @@ def _opened(text: str, scratch: Scratch):
     return None
 
 
+def _skipped_index(cmd: Executed, scratch: Scratch) -> int | None:
+    """The index in the scratch's ``skipped`` of the command made a no-op that ``cmd`` is (a no-op
+    label, or an output fix's stand-in echoed from its own line), None where it is none."""
+    mark = _SKIPPED.fullmatch(cmd.text)
+    return int(mark.group(1)) if mark else scratch.silenced.get((cmd.loc, cmd.text))
+
+
 def skipped(commands: list, scratch: Scratch) -> dict:
     """The commands made no-ops that the engine reached: {command: (file, line) of the first}.
 
@@ -261,9 +268,7 @@ def skipped(commands: list, scratch: Scratch) -> dict:
     """
     out = {}
     for cmd in commands:
-        mark = _SKIPPED.fullmatch(cmd.text)
-        # a no-op label, or an output fix's stand-in echoed from its own line
-        k = int(mark.group(1)) if mark else scratch.silenced.get((cmd.loc, cmd.text))
+        k = _skipped_index(cmd, scratch)
         if k is not None:
             command, loc = scratch.skipped[k]
             out.setdefault(command, loc)
@@ -312,8 +317,7 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     """
     reached = []
     for cmd in commands:
-        mark = _SKIPPED.fullmatch(cmd.text)
-        k = int(mark.group(1)) if mark else scratch.silenced.get((cmd.loc, cmd.text))
+        k = _skipped_index(cmd, scratch)
         if k is not None and k in scratch.skipped_text:
             reached.append((scratch.skipped[k][1], scratch.skipped_text[k]))
             continue
