@@ -329,6 +329,9 @@ if p.claims:
     V.add("InvFormResidualForward", pf["residual_forward"], sig=2, kind="error", note="finite differences")
     V.add("RelationMaxRelError", cv["fig4"]["paper_relation_omega_tilde_max_rel_error_in_fit_range"], sig=3,
           note="max |Omega~_printed - Omega~_exact| / Omega~_exact over the fit range")
+    # the absolute counterpart of PrintedEpsMaxRelFit, as the ledger's discussion quotes it (four digits)
+    V.add("PrintedEpsMaxAbsFit", cv["fig4"]["max_abs_error_paper_in_fit_range"], sig=4,
+          note="max |eps_printed - eps_reference| over the fit range")
     V.add("OmegaTildeSmallExponent", cv["omega_tilde_small_omega_exponent"], sig=3,
           note="local slope of the exact Omega~ at Omega = 1e-4")
     lo_w, hi_w = cv.get("omega_tilde_small_omega_window", (None, None))
