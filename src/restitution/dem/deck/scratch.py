@@ -69,7 +69,8 @@ _MAX_TEXT_BYTES = 20 * 2 ** 20
 @dataclass
 class Scratch:
     """The scratch copy of a deck: ``deck`` the copied input script; ``skipped`` the commands made
-    no-ops, [(command, (file, line))], the k-th echoed as ``NOOP.format(k)`` where reached;
+    no-ops, [(command, (file, line), its text)] (the text names the files it would have written,
+    which a later read may need), the k-th echoed as ``NOOP.format(k)`` where reached;
     ``dynamic`` the commands whose name comes from a variable, [((file, line), text)], made
     ``DYNAMIC.format(k)``; ``stages`` the run markers' (file, line, text),
     ``confined`` whether the engine will see nothing outside the scratch directory (else an
@@ -89,9 +90,7 @@ class Scratch:
     to the copy (:func:`scratch_copy`); ``silenced`` the output fixes made a fix that does nothing,
     {((file, line), its text): its index in ``skipped``}; ``redirected`` the files a ``write_restart``
     or ``write_data`` names outside the copy (an absolute path, a climb by ..), each -> the file in
-    the scratch it writes instead, which a later read of that name reads; ``skipped_text`` the text
-    of each skipped command by its index in ``skipped`` (the files it names, which a later read of
-    one of them may need); ``absolute`` the files the deck names by an absolute path, each -> its
+    the scratch it writes instead, which a later read of that name reads; ``absolute`` the files the deck names by an absolute path, each -> its
     copy in the scratch, which the copy's commands name instead."""
     root: Path
     deck: Path
@@ -110,7 +109,6 @@ class Scratch:
     mirrored: set = field(default_factory=set)
     silenced: dict = field(default_factory=dict)
     redirected: dict = field(default_factory=dict)
-    skipped_text: dict = field(default_factory=dict)
     absolute: dict = field(default_factory=dict)
 
 
@@ -176,7 +174,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     ...     with tempfile.TemporaryDirectory() as w:
     ...         s = scratch_copy(p, w, lambda k, run: run + "\\n")
     ...         s.deck.read_text().splitlines()[0].replace(s.tag, "#TAG@"), s.skipped
-    ('label restitution_skipped_0 #TAG@0', [('shell', (None, 1))])
+    ('label restitution_skipped_0 #TAG@0', [('shell', (None, 1), 'shell touch f')])
     """
     src = Path(deck).resolve()
     root = Path(where)
@@ -456,8 +454,7 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         # the engine does these itself (no program runs), where nothing outside the copy is writable
         return None
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
-        scratch.skipped_text[len(scratch.skipped)] = key
-        return _labelled(scratch, scratch.skipped, NOOP, (word, loc), loc)
+        return _labelled(scratch, scratch.skipped, NOOP, (word, loc, key), loc)
     if word in ("include", "jump") and len(key.split()) > 1 and (
             _outside(key.split()[1], scratch) or not scratch.confined and "$" in key.split()[1]):
         # a file outside the copied folder is read as it is, shell lines and all: never run
@@ -469,8 +466,7 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
     if word == "fix":
         words = key.split()
         if len(words) > 3 and words[3].startswith(_SKIPPED_FIX_PREFIXES):
-            scratch.skipped_text[len(scratch.skipped)] = key
-            scratch.skipped.append((f"fix {words[3]}", loc))
+            scratch.skipped.append((f"fix {words[3]}", loc, key))
             # a fix of the same ID that never acts under skipped runs, for unfix and fix_modify;
             # its echo from this line tells the deck reached it, as a no-op label's does
             noop = f"fix {words[1]} all nve/noforce"

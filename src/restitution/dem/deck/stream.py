@@ -262,7 +262,8 @@ def skipped(commands: list, scratch: Scratch) -> dict:
     Examples
     --------
     >>> from pathlib import Path
-    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), skipped=[("shell", (None, 3)), ("dump", (None, 4))])
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), skipped=[("shell", (None, 3), "shell touch f"),
+    ...                                                       ("dump", (None, 4), "dump d all atom 1 d.out")])
     >>> skipped([Executed((None, 4), "label restitution_skipped_1")], s)
     {'dump': (None, 4)}
     """
@@ -270,7 +271,7 @@ def skipped(commands: list, scratch: Scratch) -> dict:
     for cmd in commands:
         k = _skipped_index(cmd, scratch)
         if k is not None:
-            command, loc = scratch.skipped[k]
+            command, loc, _ = scratch.skipped[k]
             out.setdefault(command, loc)
     return out
 
@@ -309,8 +310,7 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     Examples
     --------
     >>> from pathlib import Path
-    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), skipped=[("shell", (None, 3))],
-    ...             skipped_text={0: "shell cp p9.in p.in"})
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), skipped=[("shell", (None, 3), "shell cp p9.in p.in")])
     >>> written_then_read([Executed((None, 3), "label restitution_skipped_0"),
     ...                    Executed((None, 4), "include p.in")], s)
     (((None, 3), 'shell cp p9.in p.in'), ((None, 4), 'include p.in'))
@@ -318,8 +318,8 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     reached = []
     for cmd in commands:
         k = _skipped_index(cmd, scratch)
-        if k is not None and k in scratch.skipped_text:
-            reached.append((scratch.skipped[k][1], scratch.skipped_text[k]))
+        if k is not None:
+            reached.append(scratch.skipped[k][1:])
             continue
         name = _read_file(cmd.text)
         if name is None or not reached:
