@@ -133,6 +133,6 @@ macros = {
     # Kratos' linear law misses e only by its bisection's tolerance: quoted as a bound (rounded up) so that
     # the text can set it apart from the misses of the fitted relations and of LAMMPS' tsuji damping
     "TypedEKratosLinearMaxDev": sci_up(max(abs(r["Kratos DEM_D_Linear_viscous_Coulomb"] / r["e"] - 1.0)
-                                           for r in table), 1),
+                                           for r in table), 2),
 }
 write_text(out.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))
