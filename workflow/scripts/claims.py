@@ -120,7 +120,7 @@ write_text(snakemake.output.table, "\n".join(lines))
 bad = ledger[ledger["verdict"] == cl.NOT_REPRODUCED]
 items = []
 for r in bad.itertuples():
-    text = (rf"\item[{r.row}.] \emph{{{math_text(r.claim)}}} ({esc(r.where)}). The paper: "
+    text = (rf"\item[{r.row}.] \emph{{{math_text(r.claim)}}} ({esc(r.where)}). Kim's paper: "
             rf"{math_text(r.paper_value)}; this work: {math_text(r.our_value)} (tolerance "
             rf"{math_text(r.tolerance)}).")
     if r.note:

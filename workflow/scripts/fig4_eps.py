@@ -21,7 +21,6 @@ plt = setup_matplotlib()
 plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
                                    "axes.titlesize"), 10.5))
 
-LEGEND_BAND = 0.6
 STYLE = {"printed": dict(ls="--", color="tab:red"), "derived": dict(ls="-.", color="tab:blue"),
          "fitted": dict(ls=":", color="tab:green", lw=2.2)}
 
@@ -32,12 +31,16 @@ errors = pd.read_csv(snakemake.input.errors, keep_default_na=False)
 
 
 def finish(fig, ax, xlabel, loc):
-    """Axis labels, and the legend inside the axes at ``loc``, a corner the curves leave empty (beside the
-    axes, it left the plot a third of the text width)."""
+    """Axis labels, and the legend below the axes, in two columns (beside the axes, it left the plot a third of
+    the text width; inside, it covered part of the range the relations' curves run through). ``loc`` is kept
+    for the figure of eps(Omega), whose few markers leave a corner empty."""
     ax.set_xlabel(xlabel)
     ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
     ax.set_title(rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
-    ax.legend(loc=loc, frameon=False)
+    if loc is None:
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.3), ncol=2, frameon=False, borderaxespad=0)
+    else:
+        ax.legend(loc=loc, frameon=False)
     fig.set_layout_engine("tight")
     return fig
 
@@ -59,7 +62,7 @@ def draw_eps_of_omega():
 
 def draw_eps_of_g():
     """eps(g) from the reference and from every relation."""
-    fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 2.8))
+    fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 2.95))
     ax.plot(curves["g"], curves["eps_reference"], color="black", lw=2.6, label="reference integration")
     drawn = [curves["eps_reference"].to_numpy()]
     for _, rel in errors.iterrows():
@@ -80,15 +83,12 @@ def draw_eps_of_g():
     values = np.concatenate(drawn)
     values = values[np.isfinite(values) & (values > 0)]
     lo, hi = max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0)
-    # and below them a band of 0.6 of that range for the legend, which covered curves at full width otherwise
-    ax.set_ylim(lo * (lo / hi) ** LEGEND_BAND, 3 * hi)   # 3: room for the label of g above the curves
-    # the label sits at the top of its line, where no curve runs at g = 0.1 (the legend may take the foot)
+    ax.set_ylim(lo, 3 * hi)   # 3: room for the label of g above the curves
+    # the label sits at the top of its line, where no curve runs at g = 0.1
     ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -3),
                 textcoords="offset points", va="top", color="grey")
     ax.set_xlim(curves["g"].min(), curves["g"].max())
-    # which corner of that band is free differs from variant to variant: matplotlib's "best" is the place
-    # that covers the fewest points of the curves
-    return finish(fig, ax, r"impact speed $g$ (in the units of $D_1$, $D_2$)", "best")
+    return finish(fig, ax, r"impact speed $g$ (in the units of $D_1$, $D_2$)", None)
 
 
 # %%

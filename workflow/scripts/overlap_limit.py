@@ -175,7 +175,7 @@ left.set_ylabel(r"$\varepsilon_{\mathrm{overlap}} / \varepsilon_{\mathrm{force}}
 # a key of the two styles in the panel itself (black: the colours are the exponent pairs of the figure's legend)
 styles = [Line2D([], [], color="k", lw=1.0, marker="o", mfc="none", ms=4, label="integration"),
           Line2D([], [], color="k", lw=5.0, alpha=0.3, solid_capstyle="butt",
-                 label=rf"leading law ($\Omega \leq {LAW_OMEGA_MAX:g}$)")]
+                 label=rf"ratio of leading laws ($\Omega \leq {LAW_OMEGA_MAX:g}$)")]
 right.set_xlabel(r"$1/\Omega$")
 right.set_ylabel(r"$|\varepsilon_{\mathrm{overlap}} / (C_o\,\Omega^\kappa) - 1|$")
 # the two styles' key below the panels with the exponent pairs' (inside the left panel it covered the curves

@@ -3,8 +3,9 @@
 #
 # Hertz contact with viscoelastic damping (alpha = 3/2, gamma = 1/2), contact ending at zero force.
 # Their series eps = 1 + sum_k h_k s^k, s = Omega^(-3/10), re-derived by restitution.core.delayed_recovery,
-# is set beside (a) the only published numbers available here, the Taylor coefficients of Mueller and
-# Poeschel's Pade form, which was built on the series (their own printed h_k could not be obtained);
+# is set beside (a) the Taylor coefficients of Mueller and Poeschel's Pade form, built on the series, with the
+# four coefficients as Granulars.jl's getA.py implements them (a secondary source: Schwager and Poeschel's and
+# Mueller and Poeschel's printed coefficients are not compared here);
 # (b) this project's elastic expansion (restitution.core.asymptotics: C1, C2 and the end term); (c) a
 # least-squares fit of the integrator's eps at large Omega, a check that shares nothing with the
 # derivation; and (d) the truncation error of every partial sum against the integrator.
@@ -104,8 +105,8 @@ for k in range(6, 9):
     fit_val[k], fit_acc[k] = res_b[k - 6], abs(res_a[k - 6] - res_b[k - 6])
 
 # %% coefficient table
-# No column holds Schwager and Poeschel's printed numbers: their text could not be obtained for this
-# work. The comparison column is the Pade form's Taylor coefficients (its h_2, h_4 are -C1, C2).
+# No column holds Schwager and Poeschel's printed numbers: the comparison column is the Taylor coefficients of
+# the Pade form as Granulars.jl implements it (its h_2, h_4 are -C1, C2).
 library = {2: -limit.C1, 4: limit.C2, 5: limit.E}
 origin = {0: "elastic", 1: "---", 3: "---", 2: r"$-C_1$, closed form", 4: r"$\nu C_1^2$, closed form",
           5: r"$4/15$, end of contact"}

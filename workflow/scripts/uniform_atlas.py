@@ -2,7 +2,8 @@
 # # The uniform approximation for every exponent pair of the stability atlas
 #
 # For alpha > gamma the library fits the form and measures its bound on points it did not use
-# (restitution.fast.uniform_build); alpha = gamma has an exact closed form and alpha < gamma none.
+# (restitution.fast.uniform_build); alpha = gamma has an exact implicit relation for eps (solved to rounding by
+# restitution.core.asymptotics.equal_exponents_eps: not a closed form) and alpha < gamma no form.
 # Where gamma < alpha < 2 gamma + 1 the overlap end rule has its own form, built the same way.
 #
 # Two rules run this script. `uniform_shard` builds the forms of its share of the pairs and writes
@@ -133,7 +134,8 @@ def latex(rows) -> str:
                          + (rf"{r['overlap_n_coef']}; {sci(r['overlap_bound_eps'], 2)}, {sci(r['overlap_bound_one_minus_eps'], 2)} \\"
                             if r["overlap_form"] == "uniform" else r"sticks \\"))
         else:
-            what = "exact closed form" if r["form"] == "exact" else "no uniform form (first viscous correction unknown)"
+            what = (r"exact implicit relation (\ArtSec{sec:model}), solved to rounding" if r["form"] == "exact"
+                    else "no uniform form (first viscous correction unknown)")
             lines.append(rf"{ab} & \multicolumn{{4}}{{l}}{{{what}}} \\")
     lines += [r"\bottomrule", r"\end{tabular}"]
     return "\n".join(lines) + "\n"

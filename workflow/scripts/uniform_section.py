@@ -55,9 +55,9 @@ rel = lambda x: np.abs(x / ref - 1.0)  # noqa: E731
 # indices (0.7 of it) above 7 pt
 plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
                                    "axes.titlesize"), 10.5))
-# the text width, the legend inside in the empty band between the approximation's error (below 1e-4) and the
-# laws' (above 1e-2)
-fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 2.7))
+# the text width; the legend below the axes, off the data (inside, in the band between the curves, a reader
+# took it for part of the plot)
+fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 3.0))
 ax.loglog(curve["g"], np.maximum(rel(curve["eps_uniform"].to_numpy()), 1e-17), color="tab:orange", lw=2.0,
           label="uniform approximation")
 rel_loss = lambda x: np.abs((1.0 - x) / (1.0 - ref) - 1.0)  # noqa: E731  (the elastic law is one for 1 - eps)
@@ -71,8 +71,8 @@ ax.set_xlabel(r"impact speed $g$ (in the units of $D_1$, $D_2$)")
 # one axis, two quantities: the elastic law is a law for 1 - eps, and its curve is the error in that
 ax.set_ylabel("relative error in $\\varepsilon$\n(elastic law: in $1 - \\varepsilon$)")
 ax.set_ylim(1e-9, 1e4)
-ax.set_title(rf"$\alpha = {ex['alpha']}$, $\gamma = {ex['gamma']}$")
-ax.legend(loc="center", bbox_to_anchor=(0.5, 0.41), ncol=2, frameon=False, borderaxespad=0, handlelength=2.5)
+# no title: the caption names the material, and with it the exponents
+ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.3), ncol=2, frameon=False, borderaxespad=0, handlelength=2.5)
 fig.set_layout_engine("tight")
 save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=1.0)
 plt = setup_matplotlib()   # the style of the other figures again

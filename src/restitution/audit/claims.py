@@ -327,7 +327,7 @@ def _closed_form_rows(values) -> list[dict]:
                  REPRODUCED if solves else NOT_REPRODUCED,
                  f"x~_c = {pf['x_c']}; as x~_c -> 0 it tends to sqrt2 tanh(tau/sqrt2) "
                  f"({pf['limit_at_tau_half']:.6f} at tau = 1/2), not the sqrt2 tan(tau/sqrt2) = "
-                 f"{pf['sqrt2_tan_at_tau_half']:.6f} the paper then states; the inverse solution is "
+                 f"{pf['sqrt2_tan_at_tau_half']:.6f} Kim's paper then states; the inverse solution is "
                  "H tan(atan(x~_c/H) + H tau/2), H = sqrt(2 - x~_c^2)")]
 
 
@@ -340,7 +340,7 @@ def build_claims(values: dict) -> list[dict]:
     rows: list[dict] = []
     rows += _series_rows(values)
     if values.get("d_star") is not None:
-        rows.append(_row("dstar", "D* = D1 / D2^((alpha-1)/gamma) at the paper's D1, D2", "Sec. VI",
+        rows.append(_row("dstar", "D* = D1 / D2^((alpha-1)/gamma) at Kim's D1, D2", "Sec. VI",
                          f"~{printed.D_STAR:g}", f"{values['d_star']:.6f}", f"{D_STAR_TOLERANCE:g}",
                          _within(values["d_star"], printed.D_STAR, D_STAR_TOLERANCE),
                          f"D1 = {values['D1']:g}, D2 = {values['D2']:g}"))
@@ -369,7 +369,7 @@ def build_claims(values: dict) -> list[dict]:
         # every number the paper prints is for its own exponents: elsewhere nothing can be decided
         for r in rows:
             r["verdict"] = AMBIGUOUS
-            r["note"] = (f"computed for alpha = {values.get('alpha')}, gamma = {values.get('gamma')}; the paper's "
+            r["note"] = (f"computed for alpha = {values.get('alpha')}, gamma = {values.get('gamma')}; Kim's "
                          f"numbers are for alpha = {printed.ALPHA}, gamma = {printed.GAMMA}. " + r["note"]).strip()
     return rows
 

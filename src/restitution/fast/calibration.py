@@ -51,9 +51,10 @@ def relation_build(name: str) -> str:
 FIT_OMEGA = (0.1, 3.0, 41)
 #: Mueller & Poeschel, PRE 84, 021302 (2011), alpha = 3/2, gamma = 1/2:
 #: eps = (1 + a v) / (1 + a v + b2 v^2 + b3 v^3 + b4 v^4), v = Omega^(-3/10) (their sqrt(beta) g^(1/10)
-#: in our scaling). Coefficients as used in a public implementation; we could not read the paper
-#: itself. They are consistent with the exact expansion: the v^2 term is -C1, the v^3 term vanishes
-#: (b3 = a b2 to 6 digits) and the v^4 term is C2 = (3/5) C1^2 to 6 digits (checked in the tests).
+#: in our scaling). Coefficients as Granulars.jl's getA.py implements them (a secondary source; they are not
+#: compared with the numbers printed in the paper). They are consistent with the exact expansion: the v^2
+#: term is -C1, the v^3 term vanishes (b3 = a b2 to 6 digits) and the v^4 term is C2 = (3/5) C1^2 to 6
+#: digits (checked in the tests).
 MUELLER_POESCHEL_PADE = {"a": 0.501086, "b2": 1.15345, "b3": 0.577977, "b4": 0.532178}
 
 
