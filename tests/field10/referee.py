@@ -222,6 +222,14 @@ def main(d):
             verdict = "agree" if diff is not None and abs(diff) <= tol else "DISAGREE"
             if diff is not None:
                 worst = max(worst, abs(diff))
+            if chk.get("at_dt") and row.get("eps_at_dt") and row["eps_at_dt"][k] is not None:
+                run = _lammps_run if spec["engine"] == "lammps" else _liggghts_run
+                e_dt, n_dt, sep_dt = run(spec, chk, g, dt, 100000)
+                sp = (row.get("eps_at_dt_spread") or [None] * len(speeds))[k]
+                ok = abs(e_dt - row["eps_at_dt"][k]) < 1e-5
+                out.append(f"{label} g {g:.6g}: at the deck's dt {dt}: audit eps_at_dt {row['eps_at_dt'][k]} "
+                           f"(spread {sp}); engine touching on a step {e_dt:.8f} after {n_dt} steps  "
+                           f"[{'agree' if ok else 'DISAGREE'}]")
             out.append(f"{label} g {g:.6g}: audit eps {ea} ; engine {m['eps0']:.8f} (wobble {m['wobble']:.1e}; "
                        f"dt->0 from {', '.join('%.8f' % v for v in m['vals'])} at tc/{NSTEPS}) "
                        f"tc {m['tc']:.4g} ; diff {diff if diff is None else '%.2e' % diff}  [{verdict}]")
