@@ -42,16 +42,22 @@ def _lammps_run(spec, chk, g, dt, maxsteps):
     r1, m1 = chk["r1"], chk["m1"]
     if "wall" in chk:
         # sphere just touching the wall from the side the spec names
-        cmds += [f"create_atoms {chk['t1']} single {chk.get('x', 0.0)} {chk.get('y', 0.0)} {chk['z0']}",
+        ax = chk.get("axis", "z")
+        pos = {"x": chk.get("x", 0.0), "y": chk.get("y", 0.0), "z": 0.0 if ax != "z" else chk["z0"]}
+        pos[ax] = chk["z0"]
+        vel = {"x": 0, "y": 0, "z": 0}
+        vel[ax] = -g * chk.get("sign", 1)
+        cmds += [f"create_atoms {chk['t1']} single {pos['x']} {pos['y']} {pos['z']}",
                  f"set atom 1 diameter {2*r1}", f"set atom 1 mass {m1}",
-                 f"velocity all set 0 0 {-g*chk.get('sign', 1)}", chk["wall"]]
-        axis = "z"
-        cond = (f"variable d equal {chk.get('sign',1)}*(z[1]-({chk['zw']}))\n"
+                 f"velocity all set {vel['x']} {vel['y']} {vel['z']}", chk["wall"]]
+        cond = (f"variable d equal {chk.get('sign',1)}*({ax}[1]-({chk['zw']}))\n"
                 f"variable rs equal {chk.get('touch', r1)}")
     else:
         r2, m2 = chk["r2"], chk["m2"]
         v1 = g * m2 / (m1 + m2)
         v2 = -g * m1 / (m1 + m2)
+        if chk.get("still2"):  # partner held still by the deck (no integrator, fix move 0)
+            v1, v2 = g, 0.0
         cmds += [f"create_atoms {chk['t1']} single {-r1} 0 0",
                  f"create_atoms {chk['t2']} single {r2} 0 0",
                  f"set atom 1 diameter {2*r1}", f"set atom 1 mass {m1}",
@@ -61,8 +67,8 @@ def _lammps_run(spec, chk, g, dt, maxsteps):
         cond = ("variable d equal x[2]-x[1]\n"
                 f"variable rs equal {r1 + r2}")
     cmds += spec.get("post", [])
-    cmds += [f"fix nve all {spec.get('integrator', 'nve/sphere')}",
-             f"timestep {dt}"]
+    cmds += spec.get("integr_lines", [f"fix nve all {spec.get('integrator', 'nve/sphere')}"])
+    cmds += [f"timestep {dt}"]
     for c in cmds:
         lmp.command(c)
     for c in cond.split("\n"):
@@ -75,7 +81,7 @@ def _lammps_run(spec, chk, g, dt, maxsteps):
     d = lmp.extract_variable("d")
     rs = lmp.extract_variable("rs")
     if "wall" in chk:
-        vz = lmp.numpy.extract_atom("v")[0][2] * chk.get("sign", 1)
+        vz = lmp.numpy.extract_atom("v")[0]["xyz".index(chk.get("axis", "z"))] * chk.get("sign", 1)
         out = (vz / g, step, d > rs)
     else:
         v = lmp.numpy.extract_atom("v")
