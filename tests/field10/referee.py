@@ -136,7 +136,7 @@ def _liggghts_run(spec, chk, g, dt, maxsteps):
             subprocess.run(["cp", src, tmp], check=True)
         with open(os.path.join(tmp, "in.ref"), "w") as fh:
             fh.write("\n".join(lines) + "\n")
-        p = subprocess.run(["liggghts", "-in", "in.ref", "-log", "log.ref", "-screen", "none"],
+        p = subprocess.run(["liggghts", "-in", "in.ref", "-log", "log.ref"],
                            cwd=tmp, capture_output=True, text=True)
         log = open(os.path.join(tmp, "log.ref")).read()
     rows = []
@@ -153,7 +153,7 @@ def _liggghts_run(spec, chk, g, dt, maxsteps):
                 except ValueError:
                     pass
     if not rows:
-        raise RuntimeError("LIGGGHTS failed:\n" + log[-2000:])
+        raise RuntimeError("LIGGGHTS failed:\n" + log[-2000:] + p.stdout[-2000:])
     rs = chk.get("touch", r1) if "wall" in chk else chk["r1"] + chk["r2"]
     for step, d, vr in rows[1:]:
         if d > rs:
