@@ -58,8 +58,9 @@ def _lammps_run(spec, chk, g, dt, maxsteps):
         v2 = -g * m1 / (m1 + m2)
         if chk.get("still2"):  # partner held still by the deck (no integrator, fix move 0)
             v1, v2 = g, 0.0
-        cmds += [f"create_atoms {chk['t1']} single {-r1} 0 0",
-                 f"create_atoms {chk['t2']} single {r2} 0 0",
+        gap = chk.get("gap", 0.0)  # start apart: first overlap falls inside a step
+        cmds += [f"create_atoms {chk['t1']} single {-r1 - gap / 2} 0 0",
+                 f"create_atoms {chk['t2']} single {r2 + gap / 2} 0 0",
                  f"set atom 1 diameter {2*r1}", f"set atom 1 mass {m1}",
                  f"set atom 2 diameter {2*r2}", f"set atom 2 mass {m2}",
                  f"velocity all set 0 0 0", f"group a1 id 1", f"group a2 id 2",
@@ -73,7 +74,7 @@ def _lammps_run(spec, chk, g, dt, maxsteps):
         lmp.command(c)
     for c in cond.split("\n"):
         lmp.command(c)
-    lmp.command('variable stop equal "v_d > v_rs"')
+    lmp.command(f'variable stop equal "(v_d > v_rs) && (step > {chk.get("gapsteps", 0)})"')
     lmp.command("fix h all halt 1 v_stop == 1 error continue")
     lmp.command("thermo 0")
     lmp.command(f"run {maxsteps}")
