@@ -503,7 +503,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
-            raise DeckError(where, line or None, f"{engine} stops here: {message}")
+            raise DeckError(where, line or None, _stopped(engine, message, commands))
         deck = read_executed(commands, atoms, radius, density, read_file, restarts)
         notes = _run_dependent_notes(commands, scratch, engine)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
@@ -533,6 +533,47 @@ def _restart_infos(root: Path) -> list:
         return []
     fence = "Info-Info-Info-Info-Info-Info-Info-Info-Info-Info-Info"
     return [block for block in text.split(fence)[1::2]]
+
+
+#: What an engine's error says where the confinement, not the deck, stopped it: a write into a
+#: folder the view binds read-only (the system's), or a stand-in full (sandbox._STAND_IN)
+_CONFINED = ("Read-only file system", "No space left on device")
+#: What an engine's error says where what it read may be what the runs before would have made: a
+#: variable's value (a count of atoms, an energy), or no atom to act on
+_RUN_STATE = re.compile(r"^Variable |Divide by 0|no atoms|without atoms|atoms existing")
+#: The fixes that make atoms as a run goes, which a pass whose runs are skipped never makes
+_INSERTING = re.compile(r"fix\s+\S+\s+\S+\s+(pour|deposit|insert/\S+)\b")
+
+
+def _stopped(engine: str, message: str, commands: list) -> str:
+    """The reason a deck is refused where its engine stopped in the audit's pass, said truly: the
+    engine's own stop, the audit's confinement, or the pass's runs (skipped by LAMMPS, cut to one
+    step by LIGGGHTS), after which what the engine holds is not what the deck's own runs make.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> _stopped("LAMMPS", "Unknown command: pair_coef", [])
+    'LAMMPS stops here: Unknown command: pair_coef'
+    >>> print(_stopped("LAMMPS", "Variable m: Divide by 0 in variable formula",
+    ...                [Executed((None, 3), "fix p all pour 10 1 5 region r"), Executed((None, 4), "run 10", 0)]))
+    LAMMPS stopped here in the audit's pass, in which the runs before are skipped, so it holds none of the atoms the inserting fixes make in them (fix p), nor anything else the runs change: Variable m: Divide by 0 in variable formula; the deck run by hand may not stop here, but what it reads here depends on its runs, which the audit does not make: not audited
+    """
+    if any(cause in message for cause in _CONFINED):
+        return (f"{engine}, run by the audit where it may write only in its copy of the deck's folder and a stand-in "
+                f"of the folders outside it, stopped here: {message}; the deck run by hand may not stop here: "
+                "not audited")
+    runs = [k for k, cmd in enumerate(commands) if cmd.stage is not None]
+    if not runs or not _RUN_STATE.search(message):
+        return f"{engine} stops here: {message}"
+    inserting = sorted({m.group(0).split()[1] for cmd in commands[:runs[-1]] if (m := _INSERTING.match(cmd.text))})
+    cut = "skipped" if engine == "LAMMPS" else "cut to one step"
+    held = (f"none of the atoms the inserting fixes make in them ({', '.join(f'fix {i}' for i in inserting)}), nor "
+            "anything else the runs change" if inserting else
+            "not what they make of the atoms, the step and the values computed from them")
+    return (f"{engine} stopped here in the audit's pass, in which the runs before are {cut}, so it holds {held}: "
+            f"{message}; the deck run by hand may not stop here, but what it reads here depends on its runs, which "
+            "the audit does not make: not audited")
 
 
 def _unguarded(text: str | None) -> str | None:
