@@ -820,14 +820,24 @@ def _stage(deck: Deck, loc, line: str) -> None:
 
 
 def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> None:
-    """read_data FILE [nocoeff] [group ID]: the number of types, each type's radius and density
-    where all its atoms share them (where no engine holds them), and a data file's Pair Coeffs /
-    PairIJ Coeffs."""
+    """read_data FILE [nocoeff] [group ID] [add ...] [offset toff ...] [shift ...]: the number of
+    types, each type's radius and density where all its atoms share them (where no engine holds
+    them), and a data file's Pair Coeffs / PairIJ Coeffs. With ``add`` the file's atoms join those
+    held (the deck's number of types kept, LAMMPS stops where the file's exceed it); ``offset``
+    moves the file's types (its atoms', coefficients' and labels') up by toff; ``shift`` moves its
+    atoms only."""
     name, opts, coeffs, extra = words[1], words[2:], True, 0
-    k = 0
+    k, add, toff = 0, False, 0
     while k < len(opts):
         if opts[k] == "nocoeff":
             coeffs, k = False, k + 1
+        elif opts[k] == "add" and k + 1 < len(opts):
+            add, k = True, k + 2           # append, merge or an ID offset: which IDs, not which types
+        elif opts[k] == "offset" and k + 5 < len(opts):
+            toff = 0 if opts[k + 1] == "0" else atom_type(opts[k + 1], where, line, "offset's type offset")
+            k += 6                         # bonds', angles', ... offsets: no contact
+        elif opts[k] == "shift" and k + 3 < len(opts):
+            k += 4                         # positions: the audit's collision is head-on, wherever
         elif opts[k] == "extra/atom/types" and k + 1 < len(opts):
             # room for types the deck creates later: the file's types keep their numbers
             more = 0 if opts[k + 1] == "0" else atom_type(opts[k + 1], where, line, "extra/atom/types")
@@ -851,7 +861,12 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             continue
         here = f"{name} line {n}"
         if section is None and (m := re.fullmatch(r"(\d+)\s+atom\s+types", body)):
-            deck.ntypes = atom_type(m.group(1), here, body, "the number of types")
+            n_file = atom_type(m.group(1), here, body, "the number of types")
+            if not add:
+                deck.ntypes = n_file
+            elif n_file + toff > deck.ntypes:
+                raise DeckError(where, line, f"{name}'s {n_file} atom types from {toff + 1} on exceed the "
+                                             f"deck's {deck.ntypes}: LAMMPS stops")
             continue
         if body[0].isalpha():                          # a section's name; data lines start with a number
             section, hint = body, comment.strip()
@@ -865,6 +880,12 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
         if section is None:
             continue                                   # header: atoms, box bounds, other counts
         cols = body.split()
+        if toff and cols[0].isdigit() and section in ("Atom Type Labels", "Pair Coeffs", "PairIJ Coeffs", "Atoms"):
+            # the file's types moved up (an Atoms line's type is its second column)
+            at = 1 if section == "Atoms" else 0
+            cols[at] = str(int(cols[at]) + toff) if cols[at].isdigit() else cols[at]
+            if section == "PairIJ Coeffs" and len(cols) > 1 and cols[1].isdigit():
+                cols[1] = str(int(cols[1]) + toff)
         if section == "Atom Type Labels":             # type label, as labelmap atom gives them
             labelmap(deck, ["labelmap", "atom", *cols[:2]], here, body)
         elif section == "Atoms" and deck.held is None:
@@ -888,6 +909,8 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
     deck.present |= set(per_type)
     deck.ntypes += extra
     for t in range(1, deck.ntypes + 1 if deck.held is None else 1):
+        if add and t not in per_type:
+            continue                                   # the atoms held before keep theirs
         if t not in per_type:
             deck.missing[t] = f"{name} has no atom of type {t}"
             continue
