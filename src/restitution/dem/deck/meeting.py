@@ -121,6 +121,9 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
                 return (*loc, line, f"types {i} {j}: excluded by neigh_modify: no contact between them, not audited")
         elif style == "group" and len(args) == 2:
             ga, gb = (group_types(deck, g) for g in args)
+            known = gb if ga is None else ga
+            if (ga is None or gb is None) and known is not None and i not in known and j not in known:
+                continue       # an excluded pair has an atom in each group: neither type is in the one known
             if ga is None or gb is None:
                 return (*loc, line, f"types {i} {j}: neigh_modify excludes pairs of groups whose atoms the audit "
                                     "cannot type: whether they meet is not known, not audited")
