@@ -455,6 +455,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                                 "(LIGGGHTS) line")
         done, commands = _engine_pass(deck_run, scratch, budget, path.resolve().parent)
+        clocked = None if done.error or done.timed_out else _clocked_pass(deck_run, scratch, commands, budget,
+                                                                          path.resolve().parent)
+        if clocked is not None:
+            done, commands = clocked
         for loc, text in unchecked(commands, scratch):
             if text.split()[0] in ("include", "jump") and "$" in text.split()[1]:
                 raise DeckError(place(loc), text, "the file it reads is named by a variable, and this system does not "
@@ -505,7 +509,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                             "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, _stopped(engine, message, commands))
         deck = read_executed(commands, atoms, radius, density, read_file, restarts)
-        notes = _run_dependent_notes(commands, scratch, engine)
+        notes = _run_dependent_notes(commands, scratch, engine, clocked is not None)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
@@ -586,8 +590,47 @@ def _unguarded(text: str | None) -> str | None:
     return guarded.group(1) if guarded else text
 
 
-def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
+def _run_dependent_notes(commands: list, scratch, engine: str, clocked: bool = False) -> list:
     """A line for the commands after a run that read a value the skipped runs would have changed
+    (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text; ``clocked``:
+    the pass set the step and time after each run to the deck's (:func:`_clocked_pass`)."""
+    found = _run_dependent(commands, scratch, clocked)
+    said = (["after each run the audit's pass set LAMMPS' step and time to those the deck's run reaches "
+             "(reset_timestep), so the values read from them are the deck's"] if clocked else [])
+    if not found:
+        return said
+    runs = "skipped" if engine == "LAMMPS" else "one step long"
+    shown = "; ".join(f"{place(loc)} {text.strip()}" for loc, text in found[:3])
+    more = f" and {len(found) - 3} more" if len(found) > 3 else ""
+    changed = "energies, positions, computes" if clocked else "time, step, energies, positions, computes"
+    return said + [f"after a run, {shown}{more}: reads a value the runs change ({changed}); with the runs {runs} "
+                   "it reads the value before them, so the branches taken and the values set from here on, and the "
+                   "stages audited after it, may not be those the deck runs"]
+
+
+def _clocked_pass(deck_run, scratch, commands: list, budget: float, folder: Path):
+    """(EngineRun, commands) of a LAMMPS pass made again with its step and time set after each
+    skipped run to those the deck's run reaches (``marker(root, clock=True)``), where the first pass
+    (``commands``) read them after a run and every run is a ``run N`` of a literal N; else None.
+    LAMMPS refuses to set the step where a time-dependent fix (a pour) is defined: that pass stops,
+    and the first one stands (None), as where the deck reads a restart (its record is the pass's)."""
+    from .scratch import remark
+    clockable = getattr(deck_run, "clockable", None)
+    if clockable is None or scratch.restarts or not clockable([key for _, _, key in scratch.stages]):
+        return None
+    found = _run_dependent(commands, scratch)
+    if not found or len(_run_dependent(commands, scratch, clocked=True)) == len(found):
+        return None
+    remark(scratch, deck_run.marker(scratch.root, clock=True))
+    done, again = _engine_pass(deck_run, scratch, budget, folder)
+    remark(scratch, deck_run.marker(scratch.root))
+    if done.error or done.timed_out:
+        return None
+    return done, again
+
+
+def _run_dependent(commands: list, scratch, clocked: bool = False) -> list:
+    """The commands after a run that read a value the skipped runs would have changed
     (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text."""
     from ..deck_text import logical_lines
     from .runtime import run_dependent
@@ -605,15 +648,7 @@ def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
         return commands_at[name]
     source = {loc: _unguarded(at(loc[0]).get(loc[1])) for loc in {cmd.loc for cmd in commands}
               if isinstance(loc, tuple) and len(loc) == 2 and loc[1]}
-    found = run_dependent(commands, {loc: text for loc, text in source.items() if text})
-    if not found:
-        return []
-    runs = "skipped" if engine == "LAMMPS" else "one step long"
-    shown = "; ".join(f"{place(loc)} {text.strip()}" for loc, text in found[:3])
-    more = f" and {len(found) - 3} more" if len(found) > 3 else ""
-    return [f"after a run, {shown}{more}: reads a value the runs change (time, step, energies, positions, "
-            f"computes); with the runs {runs} it reads the value before them, so the branches taken and the "
-            "values set from here on, and the stages audited after it, may not be those the deck runs"]
+    return run_dependent(commands, {loc: text for loc, text in source.items() if text}, clocked)
 
 
 def _engine_pass(deck_run, scratch, budget: float, folder: Path) -> tuple:

@@ -505,6 +505,13 @@ def _read_back(key: str, scratch: Scratch) -> str | None:
     return " ".join([words[0], str(scratch.redirected[name]), *words[2:]])
 
 
+def remark(scratch: Scratch, marker) -> None:
+    """Each run's marker file written anew by ``marker`` (``marker(k, run_text)``, as
+    :func:`scratch_copy` takes it), for another pass of the same copy."""
+    for k, (_, _, key) in enumerate(scratch.stages):
+        (scratch.root / f"stage_{k}").write_text(_audit_lines(scratch, marker(k, key)))
+
+
 def _labelled(scratch: Scratch, kept: list, template: str, entry, loc) -> str:
     """The no-op label that stands for a command never run: ``entry`` appended to ``kept`` (the
     scratch's ``skipped`` or ``dynamic``), the label numbered by its place there, and known as a
