@@ -10,7 +10,7 @@ import json
 
 import pytest
 
-from deck_cli import needs_lammps, run
+from deck_cli import lammps_pour, needs_lammps, run
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.pair import Pair
@@ -18,19 +18,7 @@ from restitution.dem.pair import Pair
 LINES = {(1, 1): "pair_coeff 1 1 hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3",
          (1, 2): "pair_coeff 1 2 hertz 2e6 200 damping mass_velocity tangential linear_nohistory 1 0.3",
          (2, 2): "pair_coeff 2 2 hertz 4e6 100 damping mass_velocity tangential linear_nohistory 1 0.3"}
-DECK = """units si
-atom_style sphere
-boundary p p f
-comm_modify vel yes
-region box block 0 0.1 0 0.1 0 0.2
-create_box 2 box
-pair_style granular
-{lines}
-region ins block 0 0.1 0 0.1 0.1 0.2
-fix 1 all nve/sphere
-fix g all gravity 9.81 vector 0 0 -1
-fix p all pour 400 1 123 region ins diam one 0.01 dens 2500 2500
-timestep 1e-5
+DECK = lammps_pour("\n".join(LINES.values()), ntypes=2, sphere=None) + """timestep 1e-5
 run 100
 unfix p
 {set}
@@ -39,7 +27,7 @@ run 100
 
 
 def _audit(tmp_path, set_: str):
-    (tmp_path / "in.deck").write_text(DECK.format(lines="\n".join(LINES.values()), set=set_))
+    (tmp_path / "in.deck").write_text(DECK.format(set=set_))
     status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json")
     return status, (json.loads(out) if status == 0 else None), err
 

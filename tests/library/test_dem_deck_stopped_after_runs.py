@@ -5,27 +5,14 @@ never says; no value is guessed."""
 
 import pytest
 
-from deck_cli import needs_lammps, run
+from deck_cli import lammps_pour, needs_lammps, run
 
-DECK = """units si
-atom_style sphere
-boundary p p f
-comm_modify vel yes
-region box block 0 0.1 0 0.1 0 0.2
-create_box 1 box
-pair_style granular
-pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3
-region ins block 0 0.1 0 0.1 0.1 0.2
-fix 1 all nve/sphere
-fix g all gravity 9.81 vector 0 0 -1
-fix p all pour 400 1 123 region ins diam one 0.01 dens 2500 2500
-timestep 1e-5
+LINE = "pair_coeff * * hertz 1e6 {eta} damping mass_velocity tangential linear_nohistory 1 0.3"
+DECK = lammps_pour(LINE.format(eta=300), sphere=None) + """timestep 1e-5
 run 100
 variable mmean equal mass(all)/count(all)
 variable eta equal 300*v_mmean/0.001309
-pair_coeff * * hertz 1e6 ${eta} damping mass_velocity tangential linear_nohistory 1 0.3
-run 100
-"""
+""" + LINE.format(eta="${eta}") + "\nrun 100\n"
 
 
 @needs_lammps
