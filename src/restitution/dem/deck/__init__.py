@@ -543,8 +543,10 @@ def _restart_infos(root: Path) -> list:
 #: folder the view binds read-only (the system's), or a stand-in full (sandbox._STAND_IN)
 _CONFINED = ("Read-only file system", "No space left on device")
 #: What an engine's error says where what it read may be what the runs before would have made: a
-#: variable's value (a count of atoms, an energy), or no atom to act on
-_RUN_STATE = re.compile(r"^Variable |Divide by 0|no atoms|without atoms|atoms existing")
+#: formula's value out of its domain (a count of atoms, an energy, 0), or no atom to act on (not a
+#: variable that does not exist, which the deck run by hand meets too)
+_RUN_STATE = re.compile(r"Divide by 0|Modulo 0|Sqrt of negative|Log of zero|Power by 0|no atoms|without atoms|"
+                        r"atoms existing")
 #: The fixes that make atoms as a run goes, which a pass whose runs are skipped never makes
 _INSERTING = re.compile(r"fix\s+\S+\s+\S+\s+(pour|deposit|insert/\S+)\b")
 
