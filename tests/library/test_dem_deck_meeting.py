@@ -50,6 +50,18 @@ def test_a_pair_the_neighbour_list_excludes_is_named_not_audited(tmp_path, exclu
     assert "types 1 2: excluded by neigh_modify: no contact" in err.replace(" (group a with group b)", "")
 
 
+def test_an_exclusion_by_a_group_it_cannot_type_keeps_the_pairs_the_known_group_cannot_hold(tmp_path):
+    """Field round 9, D4: ``exclude group t1 top``, top a region's group: an excluded pair has an atom
+    of t1 (type 1 only), so 2 2 is never excluded and is audited (before: no row at all)."""
+    status, res, err = audit(tmp_path, TWO + "region top block INF INF INF INF 0.03 INF\ngroup top region top\n"
+                                             "group t1 type 1\nneigh_modify exclude group t1 top\n"
+                                             "fix 1 all nve/sphere\nrun 10\n")
+    assert status == 0, err
+    assert set(pairs(res)) == {(2, 2)}
+    assert "types 1 1: neigh_modify excludes pairs of groups whose atoms the audit cannot type" in err
+    assert "types 2 2: neigh_modify" not in err
+
+
 def test_exclude_none_makes_the_pair_again(tmp_path):
     status, res, err = audit(tmp_path, TWO + "neigh_modify exclude type 1 2\nneigh_modify exclude none\n"
                                              "fix 1 all nve/sphere\nrun 10\n")

@@ -78,9 +78,10 @@ def test_atoms_poured_after_the_set_get_the_pours_size_again(tmp_path):
 
 @needs_lammps
 @pytest.mark.dem
-@pytest.mark.parametrize("set_", ["set region ins diameter 0.006", "set type 1 type 2"])
+@pytest.mark.parametrize("set_", ["set region ins diameter 0.006", "set region ins type 2 diameter 0.006"])
 def test_a_set_the_reader_cannot_follow_on_poured_atoms_is_refused(tmp_path, set_):
-    """Which poured atoms a region holds, or poured atoms moved to another type: refused in one line."""
+    """Which poured atoms a region holds resized, moved to another type or not: refused in one line
+    (poured atoms moved to another type alone are read: test_dem_deck_set_type_after_pour.py)."""
     status, got, err = _audit(tmp_path, "unfix p\n", set_)
     assert status == 2 and got is None, err
     assert len(err.strip().splitlines()) == 1 and "pour" in err, err

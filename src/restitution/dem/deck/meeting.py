@@ -18,7 +18,7 @@ from dataclasses import replace
 from ..dialect.state import Deck, place
 
 __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact",
-           "group_types"]
+           "group_types", "integrators"]
 
 #: Fix styles that move the atoms of their group by integrating the forces on them
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
@@ -121,6 +121,9 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
                 return (*loc, line, f"types {i} {j}: excluded by neigh_modify: no contact between them, not audited")
         elif style == "group" and len(args) == 2:
             ga, gb = (group_types(deck, g) for g in args)
+            known = gb if ga is None else ga
+            if (ga is None or gb is None) and known is not None and i not in known and j not in known:
+                continue       # an excluded pair has an atom in each group: neither type is in the one known
             if ga is None or gb is None:
                 return (*loc, line, f"types {i} {j}: neigh_modify excludes pairs of groups whose atoms the audit "
                                     "cannot type: whether they meet is not known, not audited")
@@ -175,6 +178,26 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
     if integrated:
         return "free", ""
     return "held", f"no fix integrates type {t}: its spheres never move"
+
+
+def integrators(deck: Deck, t: int) -> list:
+    """The fixes that integrate the spheres of type t, by their groups that the audit can type, in the
+    deck's order: more than one advances them more than once a step (LAMMPS warns of atoms
+    integrated more than once), each by a whole step with the same force.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, movers={"1": ((None, 5), "fix 1 all nve/sphere", "all", "nve/sphere"),
+    ...                               "2": ((None, 6), "fix 2 all nve/sphere", "all", "nve/sphere")})
+    >>> integrators(deck, 1)
+    ['1', '2']
+    """
+    out = []
+    for fix, (_, _, group, style) in deck.movers.items():
+        held = group_types(deck, group)
+        if style != "move" and held is not None and t in held:
+            out.append(fix)
+    return out
 
 
 def held_contact(contact, pair, moving: int):
