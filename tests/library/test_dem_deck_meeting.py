@@ -100,12 +100,18 @@ run {int(1e-2 / dt)} post no""")
 
 @pytest.mark.parametrize("held", ["group mob type 1\nfix 1 mob nve/sphere",
                                   "group mob type 1\ngroup fixed type 2\nfix 1 mob nve/sphere\n"
-                                  "fix mv fixed move linear 0 0 0"])
+                                  "fix mv fixed move linear 0 0 0",
+                                  # field test r10: nve/noforce was said to leave type 2 unmoved; it moves
+                                  # it at its velocity (here 0); an output fix beside it is no mover of all
+                                  "group mob type 1\ngroup fixed type 2\nfix 1 mob nve/sphere\n"
+                                  "fix nf fixed nve/noforce\nfix out all ave/time 1 1 1 c_thermo_temp file t.out"],
+                         ids=["no integrator", "move linear", "nve/noforce"])
 def test_a_sphere_no_fix_integrates_is_audited_as_held_and_lammps_agrees(tmp_path, held):
     status, res, err = audit(tmp_path, TWO + held + "\ntimestep 1e-6\nrun 10\n")
     assert status == 0, err
     rows = pairs(res)
     assert (2, 2) not in rows and "types 2 2: neither sphere is moved" in err
+    assert ("nve/noforce) moves type 2 at its velocity" in err) == ("noforce" in held), err
     k = rows[(1, 2)]["speeds"].index(0.1)
     said = rows[(1, 2)]["eps"][k]
     t_c = rows[(1, 2)]["steps_per_contact"][k] * 1e-6

@@ -24,8 +24,9 @@ __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded",
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
                          "nph", "nve/asphere", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk", "nvt/sllod",
                          "nve/sphere/limit", "nve/bpm/sphere", "multisphere", "nve/superquadric"})
-#: Fix styles that move the atoms of their group: the integrators, and fix move (a prescribed motion)
-MOVERS = INTEGRATORS | {"move"}
+#: Fix styles that move the atoms of their group: the integrators, fix move (a prescribed motion)
+#: and nve/noforce (each atom at its own velocity, which no force changes)
+MOVERS = INTEGRATORS | {"move", "nve/noforce"}
 #: neigh_modify exclude styles and their number of arguments
 _EXCLUDE_ARGS = {"type": 2, "group": 2, "molecule/intra": 1, "molecule/inter": 1, "molecule": 1, "none": 0}
 #: special_bonds' named settings: their lj weights
@@ -163,12 +164,14 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
                              "type: the pairs are audited as spheres that move freely; a sphere outside the group "
                              "never moves, and its eps differs")
         if t in held:
-            (moved if style == "move" else integrated).append((fix, line))
+            (moved if style in ("move", "nve/noforce") else integrated).append((fix, line))
     if integrated and moved:
-        return "unknown", f"type {t} is both integrated and moved by fix move"
+        return "unknown", f"type {t} is both integrated and moved by fix {moved[0][1].split()[3]}"
     if moved:
         fix, line = moved[0]
         words = line.split()
+        if words[3] == "nve/noforce":
+            return "held", f"fix {fix} (nve/noforce) moves type {t} at its velocity, which no force changes"
         if len(words) > 4 and words[4] == "linear":
             return "held", f"fix {fix} moves type {t} at a constant velocity"
         return "unknown", f"fix {fix} moves type {t} on a path whose velocity changes"
