@@ -235,7 +235,7 @@ def test_an_adhesive_model_with_cohesion_is_refused_in_one_line(tmp_path, normal
     deck = tmp_path / "in.adhesive"
     deck.write_text(ADHESIVE_DECK.format(normal=normal, cohesion=" 0.05", tail=NO_HISTORY))
     status, out, err = run(deck, "--g", 1.0)
-    assert status == 2 and out == "" and err.count("\n") == 1 and f"{normal} with cohesion 0.05" in err, err
+    assert status == 2 and out == "" and err.count("\n") == 1 and f"{normal} is not mapped at cohesion 0.05" in err, err
 
 
 @pytest.mark.parametrize("text, word", [

@@ -71,8 +71,11 @@ def special_bonds(deck: Deck, words: list, where: str, line: str) -> None:
 
 def group_types(deck: Deck, group: str):
     """The types a group holds, or None where the audit cannot know them: its static members by
-    type (none where it was defined by type before any atom existed: a group holds the atoms
-    present when it is defined), and those an inserting fix of a named type pours into it.
+    type (none where it was defined before any atom existed: a group holds the atoms present when
+    it is defined), and those an inserting fix of a named type pours into it. A group by type
+    before which more atoms of its types were made (``partial_groups``) holds some atoms of those
+    types only: None. One made before any atom that every inserting fix fills, and nothing else
+    made atoms since, holds every atom.
 
     Parameters
     ----------
@@ -91,11 +94,21 @@ def group_types(deck: Deck, group: str):
     ({2}, {1, 2})
     >>> group_types(Deck(ntypes=2, groups={"two": {2}}, empty_groups={"two"}), "two")
     set()
+    >>> group_types(Deck(ntypes=2, groups={"two": {2}}, partial_groups={"two": "line 9"}), "two") is None
+    True
     """
     if group == "all":
         return set(range(1, deck.ntypes + 1))
     static = deck.groups.get(group)
     fillers = deck.filled_groups.get(group, [])
+    if group in deck.empty_groups and group not in deck.partial_groups and deck.inserts and all(
+            made in [f for _, f in fillers] for made in deck.inserts):
+        # made before any atom, and every atom since made by a fix that fills it (LIGGGHTS'
+        # nve_group): it holds every atom there is, of the types they fill it with where known
+        if any(filled is None for _, filled in fillers):
+            return set(range(1, deck.ntypes + 1))
+    elif group in deck.partial_groups and group not in deck.empty_groups:
+        return None                      # atoms of its types made after it are not its members
     if any(filled is None for _, filled in fillers) or (static is None and group in deck.groups):
         return None
     if static is None and not fillers:

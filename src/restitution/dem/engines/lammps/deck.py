@@ -207,7 +207,7 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
     named = normal = words[3] if len(words) > 3 else None
     if normal in _LAMMPS_ADHESIVE and len(words) > 7:
         if number(words[7], where, text) != 0.0:
-            raise DeckError(where, text, f"normal model {normal} with cohesion {words[7]} is not mapped (adhesion; "
+            raise DeckError(where, text, f"normal model {normal} is not mapped at cohesion {words[7]} (adhesion; "
                                          "at cohesion 0 it is hertz/material's force, which is)")
         deck.ignored.append(f"{normal} at cohesion 0 (hertz/material's force)")
         words, normal = [*words[:3], "hertz/material", *words[4:7], *words[8:]], "hertz/material"
