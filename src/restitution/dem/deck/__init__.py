@@ -112,6 +112,12 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
         why = "not defined before it" if types == "undefined" else "not defined by type"
         unknown.append((*loc, " ".join(words), f"group {words[2]} is {why}: the wall's contacts are not audited"))
         return None
+    if words[2] in deck.partial_groups and words[2] not in deck.empty_groups:
+        unknown.append((*loc, " ".join(words), f"group {words[2]} was defined by type before "
+                                               f"{deck.partial_groups[words[2]]} made more atoms of its types, "
+                                               "which it does not hold (a group holds the atoms present when it is "
+                                               "defined): the wall's contacts are not audited"))
+        return None
     fillers = deck.filled_groups.get(words[2], [])
     unknown_fill = [what for what, filled in fillers if filled is None]
     if unknown_fill:
@@ -441,7 +447,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import scratch_copy
-    from .stream import engine_error, skipped, snapshots, unchecked, written_then_read
+    from .stream import deck_commands, engine_error, skipped, snapshots, unchecked, written_then_read
     if engine == "LAMMPS":
         from ..engines.lammps import deck_run
     else:
@@ -496,7 +502,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 # the atoms have no radius to write (an atom style without one): the deck's own
                 # refusal where it has one (its pair style, say), else this
                 try:
-                    read_executed(commands, atoms or [{}], radius, density, read_file, restarts)
+                    read_executed(deck_commands(commands, scratch), atoms or [{}], radius, density, read_file, restarts)
                 except DeckError as why:
                     if "has no pair_style" not in str(why):
                         raise
@@ -508,7 +514,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, _stopped(engine, message, commands))
-        deck = read_executed(commands, atoms, radius, density, read_file, restarts)
+        deck = read_executed(deck_commands(commands, scratch), atoms, radius, density, read_file, restarts)
         notes = _run_dependent_notes(commands, scratch, engine, clocked is not None)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else

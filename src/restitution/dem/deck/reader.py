@@ -273,7 +273,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
 #: a read_restart starts afresh as clear does, with these of the settings at the write
 _RESTORED = ("code", "ntypes", "units", "dimension", "atom_style", "atom_style_loc", "style", "style_line",
              "unmapped", "reset", "coeffs", "gran", "cutoff", "hybrid", "substyle", "granular_of", "others",
-             "idle", "groups", "empty_groups", "filled_groups", "labels", "dt", "atoms", "present",
+             "idle", "groups", "empty_groups", "filled_groups", "partial_groups", "labels", "dt", "atoms", "present",
              "present_unknown", "bonds", "special_lj")
 
 
@@ -504,10 +504,16 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.atoms = True
         if len(words) > 1 and words[1].isdigit():
             deck.present.add(int(words[1]))
+            _made_after(deck, {int(words[1])}, f"{where} ({line})")
         else:
             deck.present_unknown = True
+            _made_after(deck, None, f"{where} ({line})")
     elif cmd == "run":
         _run_every(words, where, line)
+        if deck.inserting:
+            # the atoms inserted during this run are no members of the groups defined before it
+            for inserted in deck.inserts:
+                _made_after(deck, inserted, f"{where} ({line}), where an inserting fix makes atoms", inserting=True)
         _stage(deck, loc, line)
         if deck.inserting:
             deck.atoms = True
@@ -742,6 +748,33 @@ def _first_not_inert(command: str) -> str | None:
     return next((first for first in map(_first_not_inert, branches) if first is not None), None)
 
 
+def _made_after(deck: Deck, made, what: str, inserting: bool = False) -> None:
+    """Atoms of the types ``made`` (None: not known) made by ``what``: a group defined by type
+    before them does not hold them (a group holds the atoms present when it is defined; LAMMPS
+    measured: an integrator's or a wall's group by type misses a sphere of its type created after
+    it), unless it is the group an inserting fix fills with them (``inserting``: ``made`` are an
+    inserting fix's); such a group is partial from here on.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=2, groups={"early": {1}, "two": {2}})
+    >>> _made_after(deck, {1}, "line 9 (create_atoms 1 single 0 0 0)")
+    >>> deck.partial_groups
+    {'early': 'line 9 (create_atoms 1 single 0 0 0)'}
+    """
+    for name, static in deck.groups.items():
+        if static is None or name in deck.partial_groups:
+            continue
+        fills = [f for _, f in deck.filled_groups.get(name, [])]
+        if inserting and made in fills:
+            continue                     # (as far as the reader can tell) the fix that fills it
+        if name in deck.empty_groups:
+            static = set(range(1, deck.ntypes + 1))     # made before any atom: every newcomer is outside it
+        filled = set().union(*(f for f in fills if f is not None))
+        if made is None or (made & static) - filled:
+            deck.partial_groups[name] = what
+
+
 def _inserted(deck: Deck) -> None:
     """After a run, the atoms the deck's inserting fixes have made: their types where named."""
     for inserted in deck.inserts:
@@ -779,7 +812,7 @@ def contact_key(deck: Deck) -> str:
     return repr(plain((deck.code, deck.style, deck.ntypes, deck.radius, deck.density, deck.units, deck.soft,
                        deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
-                       [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
+                       [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups, deck.partial_groups,
                        set(deck.shapes), deck.sizes, {t: deck.once.get(t, set()) - deck.poured.get(t, set())
                                                       for t in deck.sizes}, deck.others, deck.idle, deck.granular_of,
                        [w for _, w in deck.beside],
@@ -1517,6 +1550,7 @@ def _group(deck: Deck, words: list) -> None:
     if style in ("delete", "clear"):
         deck.groups.pop(name, None)
         deck.empty_groups.discard(name)
+        deck.partial_groups.pop(name, None)
         return
     held = None
     if style == "type" and args:
@@ -1527,9 +1561,15 @@ def _group(deck: Deck, words: list) -> None:
             for a in args:
                 lo, _, hi = a.partition(":")
                 held |= set(range(int(lo), int(hi or lo) + 1))
+    if held is None and not deck.atoms and style != "dynamic" and name not in deck.groups:
+        # any static group made before any atom exists holds none (a region's, the usual LIGGGHTS
+        # nve_group that an insertion then fills): its members are those inserted into it by name
+        held = set()
     if held is not None and deck.atoms:
         deck.empty_groups.discard(name)
     elif held is not None and name not in deck.groups:
         deck.empty_groups.add(name)
     old = deck.groups.get(name, set())
+    if held is not None and old is not None and old <= held and deck.atoms:
+        deck.partial_groups.pop(name, None)     # every atom of its types is a member again
     deck.groups[name] = None if held is None or old is None else old | held

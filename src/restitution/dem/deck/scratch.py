@@ -39,6 +39,9 @@ SKIPPED_COMMANDS = frozenset({
     "shell", "python", "plugin", "pair_write", "bond_write", "angle_write", "dihedral_write", "write_data", "write_restart", "write_dump", "write_coeff", "dump",
     "dump_modify", "undump", "restart", "log", "print", "info", "echo", "timer", "group2ndx", "ndx2group",
     "balance", "rerun", "partition", "message", "server", "mdi", "kim", "net", "geturl", "fitpod",
+    # these write a file of their own (a VMD script of a region, a matrix of second or third
+    # derivatives of the energy)
+    "region2vmd", "dynamical_matrix", "third_order",
     # the audit's engine runs on one process, which a layout for several stops ("Specified
     # processors != physical processors"); how the box is split has no part in a contact
     "processors"})

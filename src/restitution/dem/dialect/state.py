@@ -99,6 +99,9 @@ class Deck:
     empty_groups: set = field(default_factory=set)   # groups by type defined before any atom existed
     # group ID -> [(the command that inserts atoms into it, their types or None where not known)]
     filled_groups: dict = field(default_factory=dict)
+    # group ID -> the command that made atoms of a type it was defined by after it was defined:
+    # those are not its members, so its types no longer say which atoms it holds
+    partial_groups: dict = field(default_factory=dict)
     style: str = ""                               # the pair style (LAMMPS keeps coefficients for the same)
     # (where, text, why) of a pair style the reader does not map, in force until another replaces
     # it: refused at a run that uses it, and no run may (a deck replacing it before its first run)
