@@ -268,8 +268,8 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     # sized by _ends on the rows it keeps (_beside)
                     row["_beside"] = lambda at_row: effects(deck, at_row, contact, pair, (t,), faces=faces) + others
                     return row, (tuple(size),) if t in deck.sizes else ()
-                rows += _sampled_rows(deck, (t,), _time_steps(_ends(_over_sizes(
-                    deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds))))
+                rows += _pending_rows(deck, (t,), _sampled_rows(deck, (t,), _time_steps(_ends(_over_sizes(
+                    deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds)))))
     return rows, unknown
 
 
@@ -870,8 +870,8 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                 row["_beside"] = lambda at_row: effects(sized, at_row, contact, pair, (i, j),
                                                         lambda k: _frozen_contact(sized, i, j, k), unmoved=unmoved[0])
                 return row, at
-            pairs += _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row,
-                                                                                speeds))))
+            pairs += _pending_rows(deck, (i, j), _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(
+                _choices(deck, i, j), pair_row, speeds)))))
     walls, walls_not = _wall_rows(deck, speeds, ran)
     if deck.dt_reset:
         for row in pairs + walls:
@@ -1024,6 +1024,18 @@ def _middle_eps(contacts: list, g: float) -> list:
     return out
 
 
+def _pending_rows(deck: Deck, types: tuple, rows: list) -> list:
+    """The rows of a range marked ``if_poured`` (the pours' fix IDs) where a sphere of theirs is
+    of a size only a pour still in force gives after a set resized what it made: that end of the
+    range holds only if the pour has not finished inserting, which the audit does not know."""
+    for row in rows:
+        fixes = sorted({fix for t, at in zip(types, row.get("at", ())) for fix, _ in
+                        deck.pending.get(t, {}).get(tuple(at), ())})
+        if fixes:
+            row["if_poured"] = fixes
+    return rows
+
+
 def _sampled_rows(deck: Deck, types: tuple, rows: list) -> list:
     """The rows of a range (``sizes`` smallest or largest eps) marked ``sampled`` where a type of
     theirs holds more sizes than were audited: the range is over the sizes sampled, which need
@@ -1151,13 +1163,17 @@ def _empty(deck: Deck, t: int) -> bool:
 
 
 def _empty_notes(deck: Deck) -> list:
-    """One note per type without particles in the deck's runs (its pairs not audited)."""
+    """One note per type without particles in the deck's runs (its pairs not audited), per type
+    audited at a deposit's default size, per type sampled, and per size only a pour that may have
+    finished gives."""
     stages = [snap for _, snap, _ in deck.stages] or [deck]
     empty = sorted({t for d in stages for t in range(1, d.ntypes + 1) if _empty(d, t)})
     # a fix deposit (or a pour yet to run) makes atoms of its type as the runs go
     inserted = sorted(t for t in empty if any(t in made for d in stages for made in d.inserts if made))
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
+    pending = {(t, (fix, where, *size)) for d in stages for t, sizes in d.pending.items()
+               for size, fixes in sizes.items() for fix, where in fixes}
     return [f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
             f"whatever set gave the type's atoms before: audited at that size{_beside_deposited(stages, t)}"
             for t, fix in sorted(deposited.items())] + [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
@@ -1166,7 +1182,11 @@ def _empty_notes(deck: Deck) -> list:
          "are not audited" for t in inserted] + \
         [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the two smallest and "
          "two largest radii and the two lightest and two densest among them; its pairs' eps range is over these, "
-         "and the sizes left out may reach beyond it" for t, (n, k) in sorted(sampled.items())]
+         "and the sizes left out may reach beyond it" for t, (n, k) in sorted(sampled.items())] + \
+        [f"type {t}: spheres of radius {r:.6g} density {rho:.6g} exist only if fix {fix} had not finished inserting "
+         f"when the set at {where} resized those it had made, which the audit (its runs skipped) does not know: the "
+         "rows at that size hold only then"
+         for t, (fix, where, r, rho) in sorted(pending)]
 
 
 def _beside_deposited(stages: list, t: int) -> str:

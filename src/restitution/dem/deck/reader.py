@@ -813,6 +813,7 @@ def contact_key(deck: Deck) -> str:
                        deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups, deck.partial_groups,
+                       deck.pending,
                        set(deck.shapes), deck.sizes, {t: deck.once.get(t, set()) - deck.poured.get(t, set())
                                                       for t in deck.sizes}, deck.others, deck.idle, deck.granular_of,
                        [w for _, w in deck.beside],
@@ -1317,7 +1318,9 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
     moved: dict = {}
     retyped: set = set()
     for t in targets:
-        sizes, why, k, to, gone = set(made[t]), None, 3, set(), False
+        # each size made -> what the set makes of it (a size only a pour that may have finished
+        # gave stays such a size after the set)
+        image, why, k, to, gone = {size: size for size in made[t]}, None, 3, set(), False
         while k < len(words) and not why:
             key, n = words[k], _SET_VALUES.get(words[k], 1)
             value, k = words[k + 1:k + 1 + n], k + 1 + n
@@ -1340,16 +1343,16 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
             elif (x := _float(value[0])) is None:
                 why = f"set ... {key} {value[0]}: its value per atom is not read"
             elif key == "diameter" and liggghts:
-                sizes = {(0.5 * x, rho) for _, rho in sizes}
+                image = {o: (0.5 * x, rho) for o, (_, rho) in image.items()}
             elif key == "diameter":
-                sizes = {(0.5 * x, rho * (r / (0.5 * x)) ** 3) for r, rho in sizes}
+                image = {o: (0.5 * x, rho * (r / (0.5 * x)) ** 3) for o, (r, rho) in image.items()}
             elif key == "density":
-                sizes = {(r, x) for r, _ in sizes}
+                image = {o: (r, x) for o, (r, _) in image.items()}
             elif liggghts:
                 why = ("set ... mass: LIGGGHTS keeps the atom's density beside its mass, and a later diameter or "
                        "insertion reads that density, which the reader does not follow")
             else:
-                sizes = {(r, x / (4.0 / 3.0 * math.pi * r ** 3)) for r, _ in sizes}
+                image = {o: (r, x / (4.0 / 3.0 * math.pi * r ** 3)) for o, (r, _) in image.items()}
         if why:
             # and those it moves to another type, wherever in the set its type keyword is
             for u in {t} | _retype_to(deck, words):
@@ -1358,7 +1361,8 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
                                    "so their size is not known")
             changed = True
             continue
-        sizes = {(r, float(f"{rho:.12g}")) for r, rho in sizes}
+        image = {o: (r, float(f"{rho:.12g}")) for o, (r, rho) in image.items()}
+        sizes = set(image.values())
         for u in to:
             moved.setdefault(u, set()).update(sizes)
         if gone:
@@ -1368,6 +1372,13 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
             made[t] = sizes
             # those made, and those the pours in force make from here on at their own size
             deck.poured[t] = sizes.union(*(s for u, s in deck.pours.values() if u == t))
+            # a pour that has made all its atoms makes no more: its own size is there only if not,
+            # and so is what this set makes of a size that was there only if not
+            before = deck.pending.get(t, {})
+            pending = {image[o]: fixes for o, fixes in before.items() if o in image}
+            pending.update({size: [(key[0], place(loc))] for key, (u, ours) in deck.pours.items() if u == t
+                            for size in ours if size not in sizes})
+            deck.pending[t] = pending
             pour_into(deck, t, set())       # the type's sizes anew (a type no atom of holds in the pass)
             changed = True
     for u, sizes in moved.items():
@@ -1417,6 +1428,9 @@ def repour(deck: Deck, made: dict, changed: set) -> None:
     """
     for t in sorted(changed):
         now = set(made.get(t, ())).union(*(s for u, s in deck.pours.values() if u == t))
+        if t in deck.pending:
+            # a size a pour that may have finished gave stays in doubt where it may have been made
+            deck.pending[t] = {size: fixes for size, fixes in deck.pending[t].items() if size in now}
         if t in deck.deposits:
             now.add(DEPOSITED)
         if now == deck.poured.get(t):

@@ -159,6 +159,10 @@ class Deck:
     # the inserting fixes in force (a LAMMPS pour, a LIGGGHTS insert/* of one-sized sphere
     # templates); type -> why a set after their runs leaves the size of the atoms they made unknown
     pours: dict = field(default_factory=dict)
+    # type -> {(radius, density): [(fix ID, where the set was)]}: sizes only a pour still in force
+    # after a set resized what it made would give, if it has not finished inserting (which the
+    # audit, its runs skipped, does not know)
+    pending: dict = field(default_factory=dict)
     resized: dict = field(default_factory=dict)
     # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
     # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)
