@@ -84,22 +84,21 @@ def lammps_spheres(*spheres) -> str:
     return "\n".join([*lines, "fix integrate all nve/sphere", "pair_style granular"]) + "\n"
 
 
-def lammps_pour(line: str, ntypes: int = 1, sphere: tuple = (1, 0.01, 2500.0), dynamic: bool = False) -> str:
+def lammps_pour(line: str, ntypes: int = 1, sphere: tuple | None = (1, 0.01, 2500.0), dynamic: bool = False) -> str:
     """A LAMMPS deck's start in SI units with a pour: one sphere of type sphere[0] (diameter, density
-    sphere[1:]) at the floor of a 0.1 x 0.1 x 0.2 box, the contact ``line`` under pair_style
-    granular, an integrator, gravity and ``fix p`` pouring 400 spheres of type 1 (diameter 0.01,
-    density 2500) from the box's upper half; ``dynamic``: atom_style sphere 1 (radii a fix adapt may
-    change)."""
-    t, d, rho = sphere
+    sphere[1:]) at the floor of a 0.1 x 0.1 x 0.2 box (None: no atom but those poured), the contact
+    ``line`` under pair_style granular, an integrator, gravity and ``fix p`` pouring 400 spheres of
+    type 1 (diameter 0.01, density 2500) from the box's upper half; ``dynamic``: atom_style sphere 1
+    (radii a fix adapt may change)."""
+    made = "" if sphere is None else (f"create_atoms {sphere[0]} single 0.05 0.05 0.01\n"
+                                      f"set type {sphere[0]} diameter {sphere[1]:g} density {sphere[2]:g}\n")
     return f"""units si
 atom_style sphere{' 1' if dynamic else ''}
 boundary p p f
 comm_modify vel yes
 region box block 0 0.1 0 0.1 0 0.2
 create_box {ntypes} box
-create_atoms {t} single 0.05 0.05 0.01
-set type {t} diameter {d:g} density {rho:g}
-pair_style granular
+{made}pair_style granular
 {line}
 region ins block 0 0.1 0 0.1 0.1 0.2
 fix 1 all nve/sphere

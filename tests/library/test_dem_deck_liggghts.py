@@ -252,3 +252,31 @@ def test_two_templates_of_a_distribution_are_audited_at_the_sizes_liggghts_inser
                                               [(lines, 1.0, t_c / n, 1.5 * t_c) for n in (2000, 4000, 8000)])
         assert richardson(*runs, 1) == pytest.approx(r["eps"][0], rel=1e-8), (r["at"], runs)
     assert not list(tmp_path.glob("log.liggghts"))
+
+
+@needs_liggghts
+def test_liggghts_nve_group_filled_by_the_insertion_moves_every_sphere(tmp_path):
+    """Field test r10 (L11): LIGGGHTS' usual nve_group, a region group made before any atom and
+    filled by the deck's one insertion, holds every sphere there is: no "a sphere outside the
+    group never moves" (there is none)."""
+    text = LIGGGHTS_BOX + """\
+group nve_group region reg
+fix m1 all property/global youngsModulus peratomtype 5e6 5e6
+fix m2 all property/global poissonsRatio peratomtype 0.45 0.45
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.3 0.3 0.3 0.3
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 1e-6
+fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002
+fix pdd all particledistribution/discrete 32452843 1 pts1 1.0
+region ins block -0.04 0.04 -0.04 0.04 0.02 0.08 units box
+fix ins nve_group insert/pack seed 32452867 distributiontemplate pdd maxattempt 100 insert_every once overlapcheck yes all_in yes vel constant 0 0 -1 region ins particles_in_region 10
+fix integr nve_group nve/sphere
+run 10
+"""
+    deck = tmp_path / "in.liggghts"
+    deck.write_text(text)
+    status, out, err = run_cli(["deck", str(deck), "--g", "1.0"])
+    assert status == 0 and "never moves" not in err and "cannot type" not in err, err
+    assert "types 1 1" in out

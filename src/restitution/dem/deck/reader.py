@@ -273,7 +273,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
 #: a read_restart starts afresh as clear does, with these of the settings at the write
 _RESTORED = ("code", "ntypes", "units", "dimension", "atom_style", "atom_style_loc", "style", "style_line",
              "unmapped", "reset", "coeffs", "gran", "cutoff", "hybrid", "substyle", "granular_of", "others",
-             "idle", "groups", "empty_groups", "filled_groups", "labels", "dt", "atoms", "present",
+             "idle", "groups", "empty_groups", "filled_groups", "partial_groups", "labels", "dt", "atoms", "present",
              "present_unknown", "bonds", "special_lj")
 
 
@@ -504,10 +504,16 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.atoms = True
         if len(words) > 1 and words[1].isdigit():
             deck.present.add(int(words[1]))
+            _made_after(deck, {int(words[1])}, f"{where} ({line})")
         else:
             deck.present_unknown = True
+            _made_after(deck, None, f"{where} ({line})")
     elif cmd == "run":
         _run_every(words, where, line)
+        if deck.inserting:
+            # the atoms inserted during this run are no members of the groups defined before it
+            for inserted in deck.inserts:
+                _made_after(deck, inserted, f"{where} ({line}), where an inserting fix makes atoms", inserting=True)
         _stage(deck, loc, line)
         if deck.inserting:
             deck.atoms = True
@@ -742,6 +748,33 @@ def _first_not_inert(command: str) -> str | None:
     return next((first for first in map(_first_not_inert, branches) if first is not None), None)
 
 
+def _made_after(deck: Deck, made, what: str, inserting: bool = False) -> None:
+    """Atoms of the types ``made`` (None: not known) made by ``what``: a group defined by type
+    before them does not hold them (a group holds the atoms present when it is defined; LAMMPS
+    measured: an integrator's or a wall's group by type misses a sphere of its type created after
+    it), unless it is the group an inserting fix fills with them (``inserting``: ``made`` are an
+    inserting fix's); such a group is partial from here on.
+
+    Examples
+    --------
+    >>> deck = Deck(ntypes=2, groups={"early": {1}, "two": {2}})
+    >>> _made_after(deck, {1}, "line 9 (create_atoms 1 single 0 0 0)")
+    >>> deck.partial_groups
+    {'early': 'line 9 (create_atoms 1 single 0 0 0)'}
+    """
+    for name, static in deck.groups.items():
+        if static is None or name in deck.partial_groups:
+            continue
+        fills = [f for _, f in deck.filled_groups.get(name, [])]
+        if inserting and made in fills:
+            continue                     # (as far as the reader can tell) the fix that fills it
+        if name in deck.empty_groups:
+            static = set(range(1, deck.ntypes + 1))     # made before any atom: every newcomer is outside it
+        filled = set().union(*(f for f in fills if f is not None))
+        if made is None or (made & static) - filled:
+            deck.partial_groups[name] = what
+
+
 def _inserted(deck: Deck) -> None:
     """After a run, the atoms the deck's inserting fixes have made: their types where named."""
     for inserted in deck.inserts:
@@ -779,7 +812,8 @@ def contact_key(deck: Deck) -> str:
     return repr(plain((deck.code, deck.style, deck.ntypes, deck.radius, deck.density, deck.units, deck.soft,
                        deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
-                       [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups,
+                       [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups, deck.partial_groups,
+                       deck.pending,
                        set(deck.shapes), deck.sizes, {t: deck.once.get(t, set()) - deck.poured.get(t, set())
                                                       for t in deck.sizes}, deck.others, deck.idle, deck.granular_of,
                        [w for _, w in deck.beside],
@@ -820,14 +854,24 @@ def _stage(deck: Deck, loc, line: str) -> None:
 
 
 def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> None:
-    """read_data FILE [nocoeff] [group ID]: the number of types, each type's radius and density
-    where all its atoms share them (where no engine holds them), and a data file's Pair Coeffs /
-    PairIJ Coeffs."""
+    """read_data FILE [nocoeff] [group ID] [add ...] [offset toff ...] [shift ...]: the number of
+    types, each type's radius and density where all its atoms share them (where no engine holds
+    them), and a data file's Pair Coeffs / PairIJ Coeffs. With ``add`` the file's atoms join those
+    held (the deck's number of types kept, LAMMPS stops where the file's exceed it); ``offset``
+    moves the file's types (its atoms', coefficients' and labels') up by toff; ``shift`` moves its
+    atoms only."""
     name, opts, coeffs, extra = words[1], words[2:], True, 0
-    k = 0
+    k, add, toff = 0, False, 0
     while k < len(opts):
         if opts[k] == "nocoeff":
             coeffs, k = False, k + 1
+        elif opts[k] == "add" and k + 1 < len(opts):
+            add, k = True, k + 2           # append, merge or an ID offset: which IDs, not which types
+        elif opts[k] == "offset" and k + 5 < len(opts):
+            toff = 0 if opts[k + 1] == "0" else atom_type(opts[k + 1], where, line, "offset's type offset")
+            k += 6                         # bonds', angles', ... offsets: no contact
+        elif opts[k] == "shift" and k + 3 < len(opts):
+            k += 4                         # positions: the audit's collision is head-on, wherever
         elif opts[k] == "extra/atom/types" and k + 1 < len(opts):
             # room for types the deck creates later: the file's types keep their numbers
             more = 0 if opts[k + 1] == "0" else atom_type(opts[k + 1], where, line, "extra/atom/types")
@@ -851,7 +895,12 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             continue
         here = f"{name} line {n}"
         if section is None and (m := re.fullmatch(r"(\d+)\s+atom\s+types", body)):
-            deck.ntypes = atom_type(m.group(1), here, body, "the number of types")
+            n_file = atom_type(m.group(1), here, body, "the number of types")
+            if not add:
+                deck.ntypes = n_file
+            elif n_file + toff > deck.ntypes:
+                raise DeckError(where, line, f"{name}'s {n_file} atom types from {toff + 1} on exceed the "
+                                             f"deck's {deck.ntypes}: LAMMPS stops")
             continue
         if body[0].isalpha():                          # a section's name; data lines start with a number
             section, hint = body, comment.strip()
@@ -865,6 +914,12 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
         if section is None:
             continue                                   # header: atoms, box bounds, other counts
         cols = body.split()
+        if toff and cols[0].isdigit() and section in ("Atom Type Labels", "Pair Coeffs", "PairIJ Coeffs", "Atoms"):
+            # the file's types moved up (an Atoms line's type is its second column)
+            at = 1 if section == "Atoms" else 0
+            cols[at] = str(int(cols[at]) + toff) if cols[at].isdigit() else cols[at]
+            if section == "PairIJ Coeffs" and len(cols) > 1 and cols[1].isdigit():
+                cols[1] = str(int(cols[1]) + toff)
         if section == "Atom Type Labels":             # type label, as labelmap atom gives them
             labelmap(deck, ["labelmap", "atom", *cols[:2]], here, body)
         elif section == "Atoms" and deck.held is None:
@@ -888,6 +943,8 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
     deck.present |= set(per_type)
     deck.ntypes += extra
     for t in range(1, deck.ntypes + 1 if deck.held is None else 1):
+        if add and t not in per_type:
+            continue                                   # the atoms held before keep theirs
         if t not in per_type:
             deck.missing[t] = f"{name} has no atom of type {t}"
             continue
@@ -1183,7 +1240,9 @@ _SIZELESS_SET = frozenset({"x", "y", "z", "vx", "vy", "vz", "omega", "angmom", "
                            "spin/random", "mol", "property/atom"})
 #: set keywords that take more than one value (LIGGGHTS' property/atom: a name and a value)
 _SET_VALUES = {"image": 3, "omega": 3, "angmom": 3, "dipole": 3, "quat": 4, "dipole/random": 2, "spin": 4,
-               "spin/random": 2, "property/atom": 2}
+               "spin/random": 2, "property/atom": 2, "type/fraction": 3, "type/ratio": 3, "type/subset": 3}
+#: set keywords that give some of the atoms chosen another type (the new type their first value)
+_RETYPE = ("type", "type/fraction", "type/ratio", "type/subset")
 
 
 def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
@@ -1197,9 +1256,14 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
     that step never exist there. LIGGGHTS 3.8.0 (measured) inserts later atoms at the template's size
     again, but its ``diameter`` keeps the atom's density (the mass becomes that density at the new
     radius) and its ``mass`` leaves that density as it was, for a later diameter to read: a mass is
-    not followed. Where the reader cannot tell which of them a set changes (a region, a group other than all,
-    atom IDs), or how (another keyword: ``type``, an atom-style variable, ...), the type's size is
-    unknown from here on (``resized``, in ``missing`` at each run).
+    not followed. A ``type``, ``type/fraction``, ``type/ratio`` or ``type/subset`` moves some of the
+    atoms chosen to another type (which ones, the engine's random draw or a region): those atoms
+    may be of the new type, with the sizes the set leaves them, and those not moved keep theirs, so
+    both types hold those sizes (22 Jul 2025 measured: 269 poured, ``set type 1 type/fraction 2 0.5
+    5678``, 144 left of type 1 and 125 of type 2, every one at the pour's size); ``type`` on every
+    atom of a type (``set type T``) moves them all. Where the reader cannot tell which of them a set
+    resizes (a region, a group other than all, atom IDs), or how (another keyword: an atom-style
+    variable, ...), the type's size is unknown from here on (``resized``, in ``missing`` at each run).
 
     Parameters
     ----------
@@ -1227,9 +1291,18 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
     True
     >>> [(r, round(rho, 6)) for r, rho in sorted(deck.poured[1])]
     [(0.003, 11574.074074)]
+    >>> deck = Deck(ntypes=2, held={})
+    >>> set_poured(deck, {1: {(0.005, 2500.0)}}, "set type 1 type/fraction 2 0.5 9".split(), (None, 9), "")
+    True
+    >>> deck.poured, deck.radius
+    ({2: {(0.005, 2500.0)}}, {2: 0.005})
     """
     if len(words) < 3:
         return False
+    try:
+        words = unlabeled(deck, words, place(loc), text)
+    except DeckError:
+        return False                  # LAMMPS stops on a label it does not know: its own refusal
     if words[1] == "type":
         try:
             targets = [t for t in types(words[2], deck.ntypes, place(loc), text) if made.get(t)]
@@ -1241,8 +1314,13 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
         exact = words[1] == "group" and words[2] == "all"
     changed, liggghts = False, deck.code == "LIGGGHTS"
     fixes, cut = ("insertions", "each run cut to one step") if liggghts else ("pours", "its runs skipped")
+    # the atoms moved to another type, added once every target is read: new type -> their sizes
+    moved: dict = {}
+    retyped: set = set()
     for t in targets:
-        sizes, why, k = set(made[t]), None, 3
+        # each size made -> what the set makes of it (a size only a pour that may have finished
+        # gave stays such a size after the set)
+        image, why, k, to, gone = {size: size for size in made[t]}, None, 3, set(), False
         while k < len(words) and not why:
             key, n = words[k], _SET_VALUES.get(words[k], 1)
             value, k = words[k + 1:k + 1 + n], k + 1 + n
@@ -1250,6 +1328,14 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
                 why = "its keywords do not pair with values"
             elif key in _SIZELESS_SET:
                 continue
+            elif key in _RETYPE:
+                new = deck.labels.get(value[0], value[0])
+                if not (str(new).isdigit() and 1 <= int(new) <= deck.ntypes):
+                    why = f"set ... {key} {value[0]}: not a type of the deck's"
+                else:
+                    to.add(int(new))
+                    # the plain keyword on every atom of the type moves them all
+                    gone = gone or (key == "type" and exact and words[1] == "type" and int(new) != t)
             elif not exact:
                 why = f"set {words[1]} {words[2]}: the reader does not know which"
             elif key not in ("diameter", "density", "mass"):
@@ -1257,30 +1343,63 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
             elif (x := _float(value[0])) is None:
                 why = f"set ... {key} {value[0]}: its value per atom is not read"
             elif key == "diameter" and liggghts:
-                sizes = {(0.5 * x, rho) for _, rho in sizes}
+                image = {o: (0.5 * x, rho) for o, (_, rho) in image.items()}
             elif key == "diameter":
-                sizes = {(0.5 * x, rho * (r / (0.5 * x)) ** 3) for r, rho in sizes}
+                image = {o: (0.5 * x, rho * (r / (0.5 * x)) ** 3) for o, (r, rho) in image.items()}
             elif key == "density":
-                sizes = {(r, x) for r, _ in sizes}
+                image = {o: (r, x) for o, (r, _) in image.items()}
             elif liggghts:
                 why = ("set ... mass: LIGGGHTS keeps the atom's density beside its mass, and a later diameter or "
                        "insertion reads that density, which the reader does not follow")
             else:
-                sizes = {(r, x / (4.0 / 3.0 * math.pi * r ** 3)) for r, _ in sizes}
+                image = {o: (r, x / (4.0 / 3.0 * math.pi * r ** 3)) for o, (r, _) in image.items()}
         if why:
-            deck.resized[t] = (f"{place(loc)} ({' '.join(text.split())}) changes the atoms the {fixes} made of type {t} "
-                               f"in the runs before, which the engine's pass ({cut}) never made: {why}, so their size "
-                               "is not known")
+            # and those it moves to another type, wherever in the set its type keyword is
+            for u in {t} | _retype_to(deck, words):
+                deck.resized[u] = (f"{place(loc)} ({' '.join(text.split())}) changes the atoms the {fixes} made of "
+                                   f"type {t} in the runs before, which the engine's pass ({cut}) never made: {why}, "
+                                   "so their size is not known")
             changed = True
             continue
-        sizes = {(r, float(f"{rho:.12g}")) for r, rho in sizes}
-        if sizes != made[t]:
+        image = {o: (r, float(f"{rho:.12g}")) for o, (r, rho) in image.items()}
+        sizes = set(image.values())
+        for u in to:
+            moved.setdefault(u, set()).update(sizes)
+        if gone:
+            made[t] = set()
+            retyped.add(t)
+        elif sizes != made[t]:
             made[t] = sizes
             # those made, and those the pours in force make from here on at their own size
             deck.poured[t] = sizes.union(*(s for u, s in deck.pours.values() if u == t))
+            # a pour that has made all its atoms makes no more: its own size is there only if not,
+            # and so is what this set makes of a size that was there only if not
+            before = deck.pending.get(t, {})
+            pending = {image[o]: fixes for o, fixes in before.items() if o in image}
+            pending.update({size: [(key[0], place(loc))] for key, (u, ours) in deck.pours.items() if u == t
+                            for size in ours if size not in sizes})
+            deck.pending[t] = pending
             pour_into(deck, t, set())       # the type's sizes anew (a type no atom of holds in the pass)
             changed = True
-    return changed
+    for u, sizes in moved.items():
+        if not sizes <= made.get(u, set()):
+            made[u] = made.get(u, set()) | sizes
+            retyped.add(u)
+    repour(deck, made, retyped)
+    return changed or bool(retyped)
+
+
+def _retype_to(deck: Deck, words: list) -> set:
+    """The types a set's type keywords (``_RETYPE``) move atoms to, as far as its words pair with values."""
+    out, k = set(), 3
+    while k < len(words):
+        key, n = words[k], _SET_VALUES.get(words[k], 1)
+        if key in _RETYPE and k + 1 < len(words):
+            new = str(deck.labels.get(words[k + 1], words[k + 1]))
+            if new.isdigit() and 1 <= int(new) <= deck.ntypes:
+                out.add(int(new))
+        k += 1 + n
+    return out
 
 
 def repour(deck: Deck, made: dict, changed: set) -> None:
@@ -1309,6 +1428,9 @@ def repour(deck: Deck, made: dict, changed: set) -> None:
     """
     for t in sorted(changed):
         now = set(made.get(t, ())).union(*(s for u, s in deck.pours.values() if u == t))
+        if t in deck.pending:
+            # a size a pour that may have finished gave stays in doubt where it may have been made
+            deck.pending[t] = {size: fixes for size, fixes in deck.pending[t].items() if size in now}
         if t in deck.deposits:
             now.add(DEPOSITED)
         if now == deck.poured.get(t):
@@ -1442,6 +1564,7 @@ def _group(deck: Deck, words: list) -> None:
     if style in ("delete", "clear"):
         deck.groups.pop(name, None)
         deck.empty_groups.discard(name)
+        deck.partial_groups.pop(name, None)
         return
     held = None
     if style == "type" and args:
@@ -1452,9 +1575,15 @@ def _group(deck: Deck, words: list) -> None:
             for a in args:
                 lo, _, hi = a.partition(":")
                 held |= set(range(int(lo), int(hi or lo) + 1))
+    if held is None and not deck.atoms and style != "dynamic" and name not in deck.groups:
+        # any static group made before any atom exists holds none (a region's, the usual LIGGGHTS
+        # nve_group that an insertion then fills): its members are those inserted into it by name
+        held = set()
     if held is not None and deck.atoms:
         deck.empty_groups.discard(name)
     elif held is not None and name not in deck.groups:
         deck.empty_groups.add(name)
     old = deck.groups.get(name, set())
+    if held is not None and old is not None and old <= held and deck.atoms:
+        deck.partial_groups.pop(name, None)     # every atom of its types is a member again
     deck.groups[name] = None if held is None or old is None else old | held

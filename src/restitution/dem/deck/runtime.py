@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["run_dependent", "constant_in_time"]
+__all__ = ["run_dependent", "constant_in_time", "CLOCK"]
 
 #: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
 #: is not one: it formats an equal-style variable when used).
@@ -72,11 +72,16 @@ def _references(text: str, formula: bool = True) -> tuple[list, list, str]:
     return names, formulas, "".join(rest)
 
 
-def _fixed(text: str, styles: dict, seen: frozenset = frozenset()) -> bool:
+#: What a pass whose step and time are set after each skipped run to those the deck's run reaches
+#: (a clocked pass) reads as the deck's own run does
+CLOCK = frozenset({"step", "time", "dt"})
+
+
+def _fixed(text: str, styles: dict, seen: frozenset = frozenset(), allowed: frozenset = _MATH) -> bool:
     """Whether every substitution in the command ``text`` is fixed by the run."""
     names, formulas, _ = _references(text, formula=False)
-    return (all(_variable_fixed(n, styles, seen) for n in names)
-            and all(_formula_fixed(f, styles, seen) for f in formulas))
+    return (all(_variable_fixed(n, styles, seen, allowed) for n in names)
+            and all(_formula_fixed(f, styles, seen, allowed) for f in formulas))
 
 
 def _variable_fixed(name: str, styles: dict, seen: frozenset, allowed: frozenset = _MATH) -> bool:
@@ -125,8 +130,9 @@ def constant_in_time(token: str, formulas: dict) -> bool:
     return token.startswith("v_") and _variable_fixed(token[2:], styles, frozenset(), _MATH - _DRAWN)
 
 
-def run_dependent(commands: list, source: dict | None = None) -> list:
-    """The commands after a run whose substituted values may depend on the runs the pass skipped.
+def run_dependent(commands: list, source: dict | None = None, clocked: bool = False) -> list:
+    """The commands after a run whose substituted values may depend on the runs the pass skipped
+    (``clocked``: where the pass set its step and time after each run to the deck's, those not).
 
     Parameters
     ----------
@@ -151,7 +157,10 @@ def run_dependent(commands: list, source: dict | None = None) -> list:
     ...         Executed((None, 5), 'if "${t} > 0.1" then "jump SELF done"')]
     >>> run_dependent(cmds)
     [((None, 5), 'if "${t} > 0.1" then "jump SELF done"')]
+    >>> run_dependent(cmds, clocked=True)
+    []
     """
+    allowed = _MATH | CLOCK if clocked else _MATH
     source = source or {}
     styles: dict = {}
     # a loop runs the same lines over and over: a line is checked again only where a variable
@@ -177,7 +186,7 @@ def run_dependent(commands: list, source: dict | None = None) -> list:
             after_run = True
         elif after_run and split[0] in _WATCHED and cmd.loc not in seen and checked.get(cmd.loc) != version:
             checked[cmd.loc] = version
-            if not _fixed(text, styles):
+            if not _fixed(text, styles, allowed=allowed):
                 seen.add(cmd.loc)
                 found.append((cmd.loc, text))
     return found

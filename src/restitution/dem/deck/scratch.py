@@ -39,6 +39,9 @@ SKIPPED_COMMANDS = frozenset({
     "shell", "python", "plugin", "pair_write", "bond_write", "angle_write", "dihedral_write", "write_data", "write_restart", "write_dump", "write_coeff", "dump",
     "dump_modify", "undump", "restart", "log", "print", "info", "echo", "timer", "group2ndx", "ndx2group",
     "balance", "rerun", "partition", "message", "server", "mdi", "kim", "net", "geturl", "fitpod",
+    # these write a file of their own (a VMD script of a region, a matrix of second or third
+    # derivatives of the energy)
+    "region2vmd", "dynamical_matrix", "third_order",
     # the audit's engine runs on one process, which a layout for several stops ("Specified
     # processors != physical processors"); how the box is split has no part in a contact
     "processors"})
@@ -439,12 +442,10 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
             # its file lands in the copy (the engine's working folder; confined, nothing else is
             # writable): the deck's read reads it back, in the audit's scratch alone
             return None
-    if word == "read_data" and len(key.split()) > 1 and key.split()[1].strip("\"'") in scratch.redirected:
-        return " ".join(["read_data", str(scratch.redirected[key.split()[1].strip("\"'")]), *key.split()[2:]])
+    if word == "read_data" and (read := _read_back(key, scratch)) is not None:
+        return read
     if word == "read_restart" and restart is not None:
-        words = key.split()
-        if len(words) > 1 and words[1].strip("\"'") in scratch.redirected:
-            key = " ".join(["read_restart", str(scratch.redirected[words[1].strip("\"'")]), *words[2:]])
+        key = _read_back(key, scratch) or key
         k = len(scratch.restarts)
         scratch.restarts.append((loc[0], loc[1], key))
         path = scratch.root / f"restart_{k}"
@@ -495,6 +496,23 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         _quoted(scratch, probe, loc)
         return f'if "$(count(all)) > 0" then "{key}" else "{probe}"'
     return None
+
+
+def _read_back(key: str, scratch: Scratch) -> str | None:
+    """A read (read_data, read_restart) of a file a write redirected into the scratch
+    (:attr:`Scratch.redirected`), made to read that file; None where it names no such file."""
+    words = key.split()
+    name = words[1].strip("\"'") if len(words) > 1 else None
+    if name not in scratch.redirected:
+        return None
+    return " ".join([words[0], str(scratch.redirected[name]), *words[2:]])
+
+
+def remark(scratch: Scratch, marker) -> None:
+    """Each run's marker file written anew by ``marker`` (``marker(k, run_text)``, as
+    :func:`scratch_copy` takes it), for another pass of the same copy."""
+    for k, (_, _, key) in enumerate(scratch.stages):
+        (scratch.root / f"stage_{k}").write_text(_audit_lines(scratch, marker(k, key)))
 
 
 def _labelled(scratch: Scratch, kept: list, template: str, entry, loc) -> str:

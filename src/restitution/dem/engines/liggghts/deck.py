@@ -65,14 +65,7 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     """
     # every pair_style line sets the style afresh: LIGGGHTS' default for what it does not name
     # (limitForce off; checked: on, then a line without it, gives eps = e)
-    pairs = words[2:]
-    deck.cohesion = ""
-    for i in range(0, len(pairs) - 1, 2):
-        if pairs[i] == "cohesion" and pairs[i + 1] in _COHESION:
-            # its force is cohesionEnergyDensity times the contact area: audited where that is 0
-            deck.cohesion = pairs[i + 1]
-            pairs = pairs[:i] + pairs[i + 2:]
-            break
+    deck.cohesion, pairs = _cohesion(words[2:])
     try:
         deck.model, deck.limit_force, deck.absolute_damping = _normal(pairs)
     except ValueError as why:
@@ -90,6 +83,15 @@ _HEAD_ON_IDLE = ("tangential", "rolling_friction", "tangential_damping", "torsio
 
 #: LIGGGHTS cohesion models whose force is the cohesionEnergyDensity of the pair times a contact area
 _COHESION = ("sjkr", "sjkr2")
+
+
+def _cohesion(pairs: list) -> tuple[str, list]:
+    """(the cohesion model of _COHESION the key-value pairs name, or "", the pairs without it): its
+    force is cohesionEnergyDensity times the contact area, audited where that is 0."""
+    for i in range(0, len(pairs) - 1, 2):
+        if pairs[i] == "cohesion" and pairs[i + 1] in _COHESION:
+            return pairs[i + 1], pairs[:i] + pairs[i + 2:]
+    return "", pairs
 
 
 def _no_cohesion(deck: Deck, i: int, j: int) -> None:
@@ -460,6 +462,7 @@ def wall(deck: Deck, loc, words: list, unknown: list):
             pairs, k = pairs + words[k:k + 2], k + 2
         else:
             return skip(f"keyword {key} is not mapped")
+    cohesion, pairs = _cohesion(pairs)
     try:
         model, limit, absolute = _normal(pairs)
     except ValueError as why:
@@ -468,6 +471,17 @@ def wall(deck: Deck, loc, words: list, unknown: list):
         if not 1 <= w <= deck.ntypes:
             raise DeckError(where, text, f"the wall's type must be in 1..{deck.ntypes}")
     label = _label(model, limit, absolute)
+    if cohesion:
+        # as for a pair: no force where the wall's type's cohesionEnergyDensity with every sphere
+        # type is 0 (LIGGGHTS reads the entry of the sphere's type and the wall's)
+        matrix, _ = _matrix(deck, "cohesionEnergyDensity")
+        for _, w, _, _ in surfaces:
+            k = next((matrix[(t - 1) * deck.ntypes + (w - 1)] for t in range(1, deck.ntypes + 1)
+                      if matrix[(t - 1) * deck.ntypes + (w - 1)] != 0), 0)
+            if k:
+                return skip(f"cohesion {cohesion} with cohesionEnergyDensity {k:g} for the wall's type {w} adds an "
+                            "attractive normal force, which is not mapped")
+        label += f", cohesion {cohesion} (cohesionEnergyDensity 0 here: no force)"
     if model in STIFFNESS_MODELS:
         def stiff_with(w: int, surface: str):
             def contact(pair, t):

@@ -1,0 +1,37 @@
+"""A value read from ``step`` or ``time`` after a run (field round 9, D2: c10, c11, c15): the pass
+skips the runs, so it read step 0 and audited settings the deck never runs (eta 0.5 where the
+deck's second run has 1.0: 0.7346 printed, LAMMPS 0.5347), with a note. Where every run is a
+``run N`` of a literal N, the pass is made again with LAMMPS' step and time set after each run to
+those the deck's run reaches (reset_timestep): the stage audited is the deck's. LAMMPS refuses to
+set the step where a time-dependent fix (a pour) is defined: there the first pass and its note stand."""
+
+import pytest
+
+from deck_cli import agrees_with_lammps, audit, lammps_spheres, needs_lammps
+
+LINE = "pair_coeff * * hooke 1e4 {eta} damping velocity tangential linear_nohistory 0 0"
+DECK = (lammps_spheres((0.01, 2500.0)) + LINE.format(eta=0.5) + "\ntimestep 1e-6\nPOURrun 1000\n"
+        "READ\n" + LINE.format(eta="${eta}") + "\nrun 1000\n")
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("read", ["variable eta equal 0.5+0.5*step/1000", "variable eta equal 0.5+500*time",
+                                  'if "$(step) >= 1000" then "variable eta equal 1.0" else "variable eta equal 0.5"'])
+def test_a_value_of_the_step_after_a_run_is_the_decks(tmp_path, read):
+    (tmp_path / "in.deck").write_text(DECK.replace("POUR", "").replace("READ", read))
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert len(got["stages"]) == 2, err
+    agrees_with_lammps(got["stages"][1]["pairs"], {1: (0.005, 2500.0)}, LINE.format(eta=1.0), 1)
+    assert "set LAMMPS' step and time to those the deck's run reaches" in err
+    # (a variable an if's branch defines is one the note cannot follow: it still names the line read)
+    assert read.startswith("if") or "reads a value the runs" not in err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_with_a_pour_defined_the_pass_without_the_clock_stands_and_says_so(tmp_path):
+    pour = "fix g all gravity 9.81 vector 0 0 -1\nregion ins block -0.5 0.5 -0.5 0.5 0.5 0.9\nfix p all pour 10 1 4767548 region ins diam one 0.01\n"
+    (tmp_path / "in.deck").write_text(DECK.replace("POUR", pour).replace("READ", "variable eta equal 0.5+0.5*step/1000"))
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert "reads a value the runs change (time, step" in err and "set LAMMPS' step" not in err, err

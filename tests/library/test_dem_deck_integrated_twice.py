@@ -1,0 +1,38 @@
+"""Two integrators on the same atoms (field round 9, D3 / c29: ``fix 1 all nve/sphere`` and ``fix 2
+all nve/sphere``): each advances the atoms by a whole step, so a contact lasts half the steps, and
+the eps at the deck's time step is not one integrator's (LAMMPS, hooke at dt 4e-5: 0.8290 with the
+two, 0.7335 with one, which the audit stated on stderr). Now the steps per contact are halved, no
+eps at the deck's time step is stated, and stderr says why; at dt -> 0 the eps is one integrator's
+(LAMMPS with the two: 0.7345665, the audit's 0.7345668)."""
+
+import pytest
+
+from deck_cli import audit, lammps_spheres, needs_lammps
+
+LINE = "pair_coeff * * hooke 1e4 0.5 damping velocity tangential linear_nohistory 0 0"
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_type_integrated_twice_states_no_eps_at_the_decks_step(tmp_path):
+    deck = lammps_spheres((0.01, 2500.0)).replace("fix integrate all nve/sphere\n", "")
+    (tmp_path / "in.deck").write_text(deck + LINE + "\nfix 1 all nve/sphere\nfix 2 all nve/sphere\n"
+                                      "timestep 4e-5\nrun 100\n")
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    row, = got["pairs"]
+    assert row["eps"][2] == pytest.approx(0.7345667552, abs=1e-9)
+    assert row["steps_per_contact"][2] == pytest.approx(10.09, abs=0.01)       # 20.2 with one integrator
+    assert all(e is None for e in row["eps_at_dt"]) and all(w is None for w in row["dt_within_tol"])
+    assert "integrated 2 times each step" in err and "eps there" not in err and "not stated" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_two_types_integrated_a_different_number_of_times_are_not_audited_together(tmp_path):
+    deck = lammps_spheres((0.01, 2500.0), (0.01, 2500.0)).replace("fix integrate all nve/sphere\n", "")
+    (tmp_path / "in.deck").write_text(deck + LINE + "\ngroup two type 2\nfix 1 all nve/sphere\n"
+                                      "fix 2 two nve/sphere\ntimestep 1e-6\nrun 100\n")
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert [r["types"] for r in got["pairs"]] == [[1, 1], [2, 2]]
+    assert "types 1 2: integrated a different number of times each step" in err, err
+    assert "eps at dt -> 0 is one integrator's" in err
