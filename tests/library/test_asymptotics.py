@@ -130,6 +130,18 @@ def test_viscous_first_correction(alpha, gamma):
     assert np.all(r <= 20 * (om * np.log(1 / om)) ** 2)
 
 
+@pytest.mark.parametrize("alpha, gamma", [("3/2", "1/4"), ("2", "1/2"), ("3", "1"), ("5", "2"), ("7/3", "2/3")])
+def test_viscous_correction_of_the_exact_family_is_the_dashpots(alpha, gamma):
+    """For alpha = 2 gamma + 1, eps(Omega) is the dashpot's at l Omega (l = gamma + 1), whose expansion
+    W [1 - W (2 ln(1/W) - 2)] gives c_log = 2 l and c_const = -2 l (ln l + 1): the digamma closed forms,
+    which do not use the mapping, must reproduce both (referee r18's analytic check, gamma > 0)."""
+    v = asy.viscous_limit((alpha, gamma))
+    ell = float(as_exponents(alpha, gamma).gamma) + 1.0
+    assert v.kind == "force"
+    assert v.c_log == pytest.approx(2.0 * ell, rel=1e-13)
+    assert v.c_const == pytest.approx(-2.0 * ell * (math.log(ell) + 1.0), rel=1e-13)
+
+
 def test_viscous_first_correction_against_mpmath():
     V = asy.viscous_limit(("3/2", "1"))
     hp = float(reference_collision(("3/2", "1"), 1e-6, digits=20).eps)

@@ -328,7 +328,7 @@ def _closed_form_rows(values) -> list[dict]:
                  f"x~_c = {pf['x_c']}; as x~_c -> 0 it tends to sqrt2 tanh(tau/sqrt2) "
                  f"({pf['limit_at_tau_half']:.6f} at tau = 1/2), not the sqrt2 tan(tau/sqrt2) = "
                  f"{pf['sqrt2_tan_at_tau_half']:.6f} Kim's paper then states; the inverse solution is "
-                 "H tan(atan(x~_c/H) + H tau/2), H = sqrt(2 - x~_c^2)")]
+                 "G_inv tan(atan(x~_c/G_inv) + G_inv tau~/2), G_inv = sqrt(2 - x~_c^2)")]
 
 
 def build_claims(values: dict) -> list[dict]:
