@@ -114,9 +114,8 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
         return None
     if words[2] in deck.partial_groups and words[2] not in deck.empty_groups:
         unknown.append((*loc, " ".join(words), f"group {words[2]} was defined by type before "
-                                               f"{deck.partial_groups[words[2]]} made more atoms of its types, "
-                                               "which it does not hold (a group holds the atoms present when it is "
-                                               "defined): the wall's contacts are not audited"))
+                                               f"{deck.partial_groups[words[2]]} (a group holds the atoms present "
+                                               "when it is defined): the wall's contacts are not audited"))
         return None
     fillers = deck.filled_groups.get(words[2], [])
     unknown_fill = [what for what, filled in fillers if filled is None]

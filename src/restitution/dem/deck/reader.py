@@ -175,6 +175,12 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError(place(cmd.loc), cmd.text, f"LAMMPS stops here: {GUARDED[split[0]]}")
         if split and split[0] == "set":
             _resized(deck, deposited_ran)
+            if any(k in _RETYPE for k in split[3::2]):
+                # its members keep their group under their new type
+                for name, static in deck.groups.items():
+                    if static and name not in deck.empty_groups:
+                        deck.partial_groups.setdefault(name, f"{place(cmd.loc)} ({cmd.text}) gave atoms another type, "
+                                                             "which keep their groups")
             if made and set_poured(deck, made, split, cmd.loc, cmd.text):
                 block, same = None, False        # the poured sizes changed: no pass repeats the last
         if split and split[0] == "variable" and len(split) > 2:
@@ -823,7 +829,7 @@ def _made_after(deck: Deck, made, what: str, inserting: bool = False) -> None:
     >>> deck = Deck(ntypes=2, groups={"early": {1}, "two": {2}})
     >>> _made_after(deck, {1}, "line 9 (create_atoms 1 single 0 0 0)")
     >>> deck.partial_groups
-    {'early': 'line 9 (create_atoms 1 single 0 0 0)'}
+    {'early': 'line 9 (create_atoms 1 single 0 0 0) made more atoms of its types, which it does not hold'}
     """
     for name, static in deck.groups.items():
         if static is None or name in deck.partial_groups:
@@ -835,7 +841,7 @@ def _made_after(deck: Deck, made, what: str, inserting: bool = False) -> None:
             static = set(range(1, deck.ntypes + 1))     # made before any atom: every newcomer is outside it
         filled = set().union(*(f for f in fills if f is not None))
         if made is None or (made & static) - filled:
-            deck.partial_groups[name] = what
+            deck.partial_groups[name] = f"{what} made more atoms of its types, which it does not hold"
 
 
 def _inserted(deck: Deck) -> None:
