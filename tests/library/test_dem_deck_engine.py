@@ -844,3 +844,19 @@ def test_a_set_by_where_the_atoms_are_after_a_run_is_refused(tmp_path, lines, re
     before = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n{lines}\nrun 10\n"
     status, _, err = deck(tmp_path, before)
     assert status == 0 or "where the run left them" not in err, err
+
+
+def test_read_data_with_a_fixs_own_section_is_audited(tmp_path):
+    """Field test r11 (a38): ``read_data FILE fix ID NULL Section`` (a fix property/atom reads its own
+    section of the file) was refused as if it shifted types; LAMMPS runs it, and the section holds
+    per-atom values of the fix's, no size."""
+    text = BOX.replace("region box block -1 1 -1 1 -1 1\n", "") + f"""fix prop all property/atom d_charge2
+read_data data.one fix prop NULL Charge2
+fix integrate all nve/sphere
+pair_style granular
+pair_coeff * * hooke 1000 1 {T}
+run 1
+"""
+    data = DATA_ONE_TYPE + "\nCharge2\n\n1 0.5\n"
+    p = pairs(tmp_path, text, files={"data.one": data})
+    assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0, 0.01, 0.01, 2500.0, 2500.0), rel=1e-10)

@@ -950,9 +950,10 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
         elif opts[k] == "group" and k + 1 < len(opts):
             deck.filled_groups.setdefault(opts[k + 1], []).append((f"read_data {name} adds", None))
             k += 2
+        elif opts[k] == "fix" and k + 3 < len(opts):
+            k += 4                             # a fix's own section (per-atom values of a property/atom)
         else:
-            raise DeckError(where, line, f"read_data option {opts[k]} is not mapped (it may add, shift or offset "
-                                         "types)")
+            raise DeckError(where, line, f"read_data option {opts[k]} is not mapped")
     text = fetch(read_file, name, where, line)
     section, hint, per_type = None, "", {}
     for n, raw in enumerate(text.splitlines(), 1):
