@@ -35,3 +35,6 @@ def test_with_a_pour_defined_the_pass_without_the_clock_stands_and_says_so(tmp_p
     (tmp_path / "in.deck").write_text(DECK.replace("POUR", pour).replace("READ", "variable eta equal 0.5+0.5*step/1000"))
     got, err = audit(tmp_path / "in.deck", "--g", "1")
     assert "reads a value the runs change (time, step" in err and "set LAMMPS' step" not in err, err
+    # field test r11 (D2): the stage built on it (here the one stage of both runs, as the pass read
+    # the same eta at both) says so in its rows, not only on stderr
+    assert all(row.get("may_differ") for row in got["stages"][-1]["pairs"]), got["stages"][-1]["pairs"]

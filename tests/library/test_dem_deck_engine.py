@@ -819,3 +819,44 @@ def test_a_bare_jump_or_include_is_lammps_own_refusal(tmp_path, bare):
     status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\n{bare}\nrun 1\n")
     assert status == 2 and out == "" and err.count("\n") == 1 and "Traceback" not in err, err
     assert f"({bare}): LAMMPS stops here" in err, err
+
+
+@pytest.mark.parametrize("lines, refused", [
+    ("region low block -1 1 -1 1 -1 0\nset region low diameter 0.03", True),
+    ("region low block -1 1 -1 1 -1 0\ngroup fallen region low\nset group fallen density 3000", True),
+    ("variable d atom 0.02+0.01*(z<0)\nset type 1 diameter v_d", True),
+    ("region low block -1 1 -1 1 -1 0\ndelete_atoms region low", True),
+    ("region low block -1 1 -1 1 -1 0\nset region low vx 0.0", False),
+    ("group one type 1\nset group one diameter 0.03", False),
+], ids=["set region", "group region", "atom variable", "delete region", "sizeless", "group by type"])
+def test_a_set_by_where_the_atoms_are_after_a_run_is_refused(tmp_path, lines, refused):
+    """Field test r11 (D1): after spheres fell, ``set region low diameter 0.02`` resized those the
+    run left in the region; the audit's pass, its runs skipped, resized those at the start (0.96186
+    printed where LAMMPS gives 0.94036, exit 0). Such a set (a region, a group picked by region
+    after a run, an atom-style variable, delete_atoms by region) after a run is refused in one
+    line; before any run, or on sizeless keywords, or by type, it is the engine's own."""
+    text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 10\n{lines}\nrun 10\n"
+    status, out, err = deck(tmp_path, text)
+    if refused:
+        assert status == 2 and out == "" and err.count("\n") == 1 and "where the run left them" in err, err
+    else:
+        assert status == 0, err
+    before = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n{lines}\nrun 10\n"
+    status, _, err = deck(tmp_path, before)
+    assert status == 0 or "where the run left them" not in err, err
+
+
+def test_read_data_with_a_fixs_own_section_is_audited(tmp_path):
+    """Field test r11 (a38): ``read_data FILE fix ID NULL Section`` (a fix property/atom reads its own
+    section of the file) was refused as if it shifted types; LAMMPS runs it, and the section holds
+    per-atom values of the fix's, no size."""
+    text = BOX.replace("region box block -1 1 -1 1 -1 1\n", "") + f"""fix prop all property/atom d_charge2
+read_data data.one fix prop NULL Charge2
+fix integrate all nve/sphere
+pair_style granular
+pair_coeff * * hooke 1000 1 {T}
+run 1
+"""
+    data = DATA_ONE_TYPE + "\nCharge2\n\n1 0.5\n"
+    p = pairs(tmp_path, text, files={"data.one": data})
+    assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0, 0.01, 0.01, 2500.0, 2500.0), rel=1e-10)

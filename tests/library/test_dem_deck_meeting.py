@@ -296,3 +296,15 @@ def test_a_walls_group_by_type_before_more_atoms_of_its_type_is_named_not_audite
     status, res, err = audit(tmp_path, text)
     assert status == 0 and res["walls"] == [], res["walls"]
     assert "group early was defined by type before line" in err and "the wall's contacts are not audited" in err, err
+
+
+def test_a_walls_group_by_type_whose_atoms_get_another_type_is_named_not_audited(tmp_path):
+    """Field test r11 (a17): a wall on a group by type 1, then ``set type 1 type 2``: the atoms keep
+    their group under their new type, so the wall acts on spheres of type 2, which the audit did
+    not say (it kept a "type 1 on wall" row). After the set the wall is named, not audited."""
+    wall = "fix w g wall/gran granular hooke 1000 0.02 damping velocity tangential linear_nohistory 0 0 zplane -0.5 NULL"
+    text = TWO + f"group g type 1\n{wall}\nfix 1 all nve/sphere\ntimestep 1e-6\nrun 10\nset type 1 type 2\nrun 10\n"
+    status, res, err = audit(tmp_path, text)
+    assert status == 0, err
+    assert [w["types"] for w in res["stages"][0]["walls"]] == [[1]] and res["stages"][-1]["walls"] == []
+    assert "gave atoms another type, which keep their groups" in err, err

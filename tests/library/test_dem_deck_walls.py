@@ -815,3 +815,15 @@ def test_two_walls_at_one_plane_name_each_other_beside_their_rows(tmp_path, seco
         if named:
             assert "another wall at the same surface (z = 0)" in other[0]["what"]
     assert ("another wall at the same surface" in err) is named
+
+
+def test_a_liggghts_planar_mesh_is_a_mesh(tmp_path):
+    """Field test r11 (L06): a fix mesh/surface/planar floor had no row, and the audit said it "may
+    add forces" and that the mesh had "no fix mesh/surface before it". LIGGGHTS meets a sphere on it
+    as on any mesh face: 0.44999622 extrapolated for the typed e 0.45 of the two types."""
+    text = liggghts_deck("").replace("fix mesh1 all mesh/surface file plate.stl type 1\n",
+                                     "fix mesh1 all mesh/surface/planar file plate.stl type 1\n")
+    assert "mesh/surface/planar" in text
+    res, err = audit(tmp_path, text, 0.1)
+    assert any(w["mesh"] == "mesh1" for w in res["walls"]), err
+    assert "has no fix mesh/surface" not in err and "may add forces" not in err, err

@@ -276,7 +276,15 @@ def run_deck(args, out) -> None:
 
 
 def _sized(row: dict) -> str:
-    """Where a type has several sizes: which end of the pair's eps range the row is, at which spheres."""
+    """Where a type has several sizes: which end of the pair's eps range the row is, at which spheres;
+    and where the stage's settings were read from values the runs change, that they may not be the deck's."""
+    doubt = (" [its settings follow a value the skipped runs change: may not be the deck's, a note says which]"
+             if row.get("may_differ") else "")
+    return _ends_said(row) + doubt
+
+
+def _ends_said(row: dict) -> str:
+    """Which end of the pair's eps range the row is, at which spheres ("" for one size)."""
     if "sizes" not in row:
         return ""
     if row["sizes"] == "any":

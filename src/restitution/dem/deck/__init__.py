@@ -114,9 +114,8 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
         return None
     if words[2] in deck.partial_groups and words[2] not in deck.empty_groups:
         unknown.append((*loc, " ".join(words), f"group {words[2]} was defined by type before "
-                                               f"{deck.partial_groups[words[2]]} made more atoms of its types, "
-                                               "which it does not hold (a group holds the atoms present when it is "
-                                               "defined): the wall's contacts are not audited"))
+                                               f"{deck.partial_groups[words[2]]} (a group holds the atoms present "
+                                               "when it is defined): the wall's contacts are not audited"))
         return None
     fillers = deck.filled_groups.get(words[2], [])
     unknown_fill = [what for what, filled in fillers if filled is None]
@@ -516,6 +515,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError(where, line or None, _stopped(engine, message, commands))
         deck = read_executed(deck_commands(commands, scratch), atoms, radius, density, read_file, restarts)
         notes = _run_dependent_notes(commands, scratch, engine, clocked is not None)
+        deck.doubtful_runs = _runs_after(commands, _run_dependent(commands, scratch, clocked is not None))
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
@@ -614,6 +614,15 @@ def _run_dependent_notes(commands: list, scratch, engine: str, clocked: bool = F
     return said + [f"after a run, {shown}{more}: reads a value the runs change ({changed}); with the runs {runs} "
                    "it reads the value before them, so the branches taken and the values set from here on, and the "
                    "stages audited after it, may not be those the deck runs"]
+
+
+def _runs_after(commands: list, found: list) -> set:
+    """The (file, line) of the runs the engine reached after the first of ``found`` (commands that
+    read a value the skipped runs would have changed)."""
+    if not found:
+        return set()
+    first = next((k for k, cmd in enumerate(commands) if cmd.loc == found[0][0]), len(commands))
+    return {cmd.loc for cmd in commands[first:] if cmd.stage is not None}
 
 
 def _clocked_pass(deck_run, scratch, commands: list, budget: float, folder: Path):
@@ -820,6 +829,10 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                 why.args = (f"{why.args[0]} (the run at {place(runs[0][0])})",)
             raise
         unknown += [row for row in not_audited if row not in unknown]
+        if any(loc in deck.doubtful_runs for loc, _ in runs):
+            # settings read after a run from values the runs change: marked in each row, not only on stderr
+            for row in pairs + walls:
+                row["may_differ"] = True
         audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
                         "walls": walls})
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],

@@ -158,17 +158,29 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     data_written: dict = {}        # data file a write_data wrote -> whether pours had made atoms by then
     infos = iter(restarts or ())
     pending: list = []
+    moved_since = False            # a run has gone: the atoms are where it left them, never the pass
+    placed: set = set()            # groups picked by where the atoms were, after a run
     for cmd in commands:
         try:
             split = words(cmd.text)
         except ScriptError as why:
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
+        if split and split[0] in ("run", "minimize"):
+            moved_since = True
+        elif split and moved_since and split[0] in ("group", "set", "delete_atoms"):
+            _where_the_run_left(split, placed, cmd)
         if split and cmd.unset and not made and not deposited_ran:
             # no atom in the pass, and no pour or deposit has made any in the runs before: the
             # deck's own run stops here too
             raise DeckError(place(cmd.loc), cmd.text, f"LAMMPS stops here: {GUARDED[split[0]]}")
         if split and split[0] == "set":
             _resized(deck, deposited_ran)
+            if any(k in _RETYPE for k in split[3::2]):
+                # its members keep their group under their new type
+                for name, static in deck.groups.items():
+                    if static and name not in deck.empty_groups:
+                        deck.partial_groups.setdefault(name, f"{place(cmd.loc)} ({cmd.text}) gave atoms another type, "
+                                                             "which keep their groups")
             if made and set_poured(deck, made, split, cmd.loc, cmd.text):
                 block, same = None, False        # the poured sizes changed: no pass repeats the last
         if split and split[0] == "variable" and len(split) > 2:
@@ -748,6 +760,63 @@ def _first_not_inert(command: str) -> str | None:
     return next((first for first in map(_first_not_inert, branches) if first is not None), None)
 
 
+#: set keywords that change an atom's size or type
+_SIZING_SET = frozenset({"diameter", "density", "density/disc", "mass", "type", "type/fraction", "type/ratio",
+                         "type/subset"})
+
+
+def _where_the_run_left(split: list, placed: set, cmd) -> None:
+    """A group, set or delete_atoms after a run: one that picks atoms by where they are (a region,
+    a group so picked, an atom-style variable, delete_atoms' overlap or porosity) picks those the
+    deck's runs left there, which the engine's pass (its runs skipped, LIGGGHTS' cut to one step)
+    never moved: where it changes sizes or types or removes atoms, which it does is not known
+    (field test r11: ``set region low diameter 0.02`` after spheres fell gave 0.96186 where LAMMPS
+    gives 0.94036). Refused in one line; a group so picked is remembered in ``placed``.
+
+    Examples
+    --------
+    >>> placed = set()
+    >>> _where_the_run_left("group low region bottom".split(), placed, None), placed
+    (None, {'low'})
+    >>> _where_the_run_left("set group low vx 0.0".split(), placed, None)
+    >>> from restitution.dem.deck.stream import Executed
+    >>> _where_the_run_left("set group low diameter 0.02".split(), placed, Executed((None, 9), "set"))
+    Traceback (most recent call last):
+    ...
+    restitution.dem.dialect.state.DeckError: line 9 (set): after a run, it picks atoms by where the run left them (group low, picked by where its atoms were after a run), which the audit's pass (its runs skipped) does not know: the sizes and types it leaves are not known; not audited
+    """
+    if split[0] == "group" and len(split) > 2:
+        name, style = split[1], split[2]
+        if style in ("delete", "clear"):
+            placed.discard(name)
+        elif style in ("region", "variable", "dynamic") or any(g in placed for g in split[3:]):
+            placed.add(name)
+        else:
+            placed.discard(name)     # a group by type or ID holds the atoms of those, wherever
+        return None
+    why = None
+    if split[0] == "set" and len(split) > 3:
+        sizing = [(k, v) for k, v in zip(split[3::2], split[4::2]) if k in _SIZING_SET]
+        if not sizing:
+            return None
+        if split[1] == "region":
+            why = f"region {split[2]}"
+        elif split[1] == "group" and split[2] in placed:
+            why = f"group {split[2]}, picked by where its atoms were after a run"
+        elif any(v.startswith("v_") for _, v in sizing):
+            why = next(f"{k} {v}, an atom-style variable that may read positions" for k, v in sizing if v.startswith("v_"))
+    elif split[0] == "delete_atoms" and len(split) > 2:
+        if split[1] in ("region", "overlap", "porosity"):
+            why = f"delete_atoms {split[1]}"
+        elif split[1] == "group" and split[2] in placed:
+            why = f"group {split[2]}, picked by where its atoms were after a run"
+    if why:
+        raise DeckError(place(cmd.loc), cmd.text, f"after a run, it picks atoms by where the run left them ({why}), "
+                                                  "which the audit's pass (its runs skipped) does not know: the "
+                                                  "sizes and types it leaves are not known; not audited")
+    return None
+
+
 def _made_after(deck: Deck, made, what: str, inserting: bool = False) -> None:
     """Atoms of the types ``made`` (None: not known) made by ``what``: a group defined by type
     before them does not hold them (a group holds the atoms present when it is defined; LAMMPS
@@ -760,7 +829,7 @@ def _made_after(deck: Deck, made, what: str, inserting: bool = False) -> None:
     >>> deck = Deck(ntypes=2, groups={"early": {1}, "two": {2}})
     >>> _made_after(deck, {1}, "line 9 (create_atoms 1 single 0 0 0)")
     >>> deck.partial_groups
-    {'early': 'line 9 (create_atoms 1 single 0 0 0)'}
+    {'early': 'line 9 (create_atoms 1 single 0 0 0) made more atoms of its types, which it does not hold'}
     """
     for name, static in deck.groups.items():
         if static is None or name in deck.partial_groups:
@@ -772,7 +841,7 @@ def _made_after(deck: Deck, made, what: str, inserting: bool = False) -> None:
             static = set(range(1, deck.ntypes + 1))     # made before any atom: every newcomer is outside it
         filled = set().union(*(f for f in fills if f is not None))
         if made is None or (made & static) - filled:
-            deck.partial_groups[name] = what
+            deck.partial_groups[name] = f"{what} made more atoms of its types, which it does not hold"
 
 
 def _inserted(deck: Deck) -> None:
@@ -881,9 +950,10 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
         elif opts[k] == "group" and k + 1 < len(opts):
             deck.filled_groups.setdefault(opts[k + 1], []).append((f"read_data {name} adds", None))
             k += 2
+        elif opts[k] == "fix" and k + 3 < len(opts):
+            k += 4                             # a fix's own section (per-atom values of a property/atom)
         else:
-            raise DeckError(where, line, f"read_data option {opts[k]} is not mapped (it may add, shift or offset "
-                                         "types)")
+            raise DeckError(where, line, f"read_data option {opts[k]} is not mapped")
     text = fetch(read_file, name, where, line)
     section, hint, per_type = None, "", {}
     for n, raw in enumerate(text.splitlines(), 1):

@@ -163,6 +163,9 @@ class Deck:
     # after a set resized what it made would give, if it has not finished inserting (which the
     # audit, its runs skipped, does not know)
     pending: dict = field(default_factory=dict)
+    # the (file, line) of the runs the engine reached after a command read a value the skipped runs
+    # would have changed: the stages they end may not be the deck's
+    doubtful_runs: set = field(default_factory=set)
     resized: dict = field(default_factory=dict)
     # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
     # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)

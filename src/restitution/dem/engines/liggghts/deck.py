@@ -210,7 +210,8 @@ def _servo(deck: Deck, words: list, where: str, line: str, loc) -> None:
 FIXES = {"property/global": (6, _property_global), "particletemplate/sphere": (4, _sphere_template),
          **{f"particledistribution/discrete{kind}": (6, _distribution) for kind in ("", "/numberbased", "/massbased")},
          **{f"insert/{kind}": (4, _insertion) for kind in ("pack", "stream", "rate/region")},
-         "mesh/surface": (4, _mesh), "mesh/surface/stress": (4, _mesh),
+         # planar: a mesh LIGGGHTS checks to be one plane, met as any other (0.45 for a typed e 0.45)
+         "mesh/surface": (4, _mesh), "mesh/surface/stress": (4, _mesh), "mesh/surface/planar": (4, _mesh),
          "mesh/surface/stress/servo": (4, _servo)}
 
 
