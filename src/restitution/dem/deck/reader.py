@@ -760,11 +760,6 @@ def _first_not_inert(command: str) -> str | None:
     return next((first for first in map(_first_not_inert, branches) if first is not None), None)
 
 
-#: set keywords that change an atom's size or type
-_SIZING_SET = frozenset({"diameter", "density", "density/disc", "mass", "type", "type/fraction", "type/ratio",
-                         "type/subset"})
-
-
 def _where_the_run_left(split: list, placed: set, cmd) -> None:
     """A group, set or delete_atoms after a run: one that picks atoms by where they are (a region,
     a group so picked, an atom-style variable, delete_atoms' overlap or porosity) picks those the
@@ -1313,6 +1308,8 @@ _SET_VALUES = {"image": 3, "omega": 3, "angmom": 3, "dipole": 3, "quat": 4, "dip
                "spin/random": 2, "property/atom": 2, "type/fraction": 3, "type/ratio": 3, "type/subset": 3}
 #: set keywords that give some of the atoms chosen another type (the new type their first value)
 _RETYPE = ("type", "type/fraction", "type/ratio", "type/subset")
+#: set keywords that change an atom's size or type
+_SIZING_SET = frozenset({"diameter", "density", "density/disc", "mass", *_RETYPE})
 
 
 def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
