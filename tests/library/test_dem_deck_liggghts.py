@@ -169,7 +169,7 @@ LIGGGHTS_EXAMPLES = Path("/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_pu
 #: test_dem_deck_official.py's table lists them
 TUTORIALS = [("cohesion/in.noCohesion", {}), ("contactModels/in.newModels", {}), ("heatTransfer_1/in.heatGran", {}),
              ("heatTransfer_2/in.heatGran", {}), ("hysteresis/in.noHysteresis", {}), ("meshGran/in.meshGran", {}),
-             ("mesh_tet/in.mesh_tet", {}), ("movingMeshGran/in.movingMeshGran", {}),
+             ("movingMeshGran/in.movingMeshGran", {}),
              ("chute_wear/in.chute_wear", {1: 0.0015}), ("conveyor/in.conveyor", {1: 0.015}),
              ("insert_stream/in.insert_stream", {1: 0.015}), ("packing/in.packing", {1: 0.005})]
 

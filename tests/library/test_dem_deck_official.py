@@ -308,6 +308,10 @@ def test_every_official_deck_is_audited_or_refused_in_one_line(code, name, args,
     status, out, err = _official(code, name, args)
     if outcome == "audited":
         assert status == 0 and "eps 0." in out, err
+    elif outcome == "static":
+        # in.mesh_tet groups its region before create_atoms fills it, so its integrator holds no
+        # sphere: LIGGGHTS keeps every kinetic energy at 0 over its 1000 steps under gravity
+        assert status == 0 and "eps" not in out and "never move" in err, (out, err)
     else:
         assert status == 2 and out == "" and err.count("\n") == 1 and outcome in err, err
 
