@@ -1,7 +1,8 @@
 # Stage: prior series set beside this project's numbers. Schwager and Poeschel's (2008) half-power
 # series for Hertz contact with viscoelastic damping, re-derived (restitution.core.delayed_recovery) and
-# compared term by term: with the published numbers that can be read, this project's elastic expansion,
-# a fit to the integrator, and the integrator itself.
+# compared term by term: with the published numbers that can be read (Schwager and Poeschel's second
+# coefficient as quoted by Chatterjee et al.), this project's elastic expansion, a fit to the integrator, and the
+# integrator itself. And Chatterjee, James and Brogliato's (2022) zero-load expansion at general exponents.
 
 
 rule schwager_poeschel:
@@ -23,7 +24,28 @@ rule schwager_poeschel:
         end_omegas=[10.0, 15.0, 20.0, 30.0, 50.0, 100.0],  # where the end relation's remainder is above the noise
         omegas=[10.0, 30.0, 100.0, 1000.0, 10000.0],
         orders=[2, 4, 5, 6, 8, 10, 12],
+        # Schwager and Poeschel's printed mu^2 coefficient as Chatterjee et al.'s toolbox quotes it (config.yaml)
+        quoted_c2=config["prior_art"]["schwager_poeschel_c2"],
     log:
         "logs/schwager_poeschel.log",
     script:
         script_file("schwager_poeschel.py")
+
+
+rule chatterjee_coefficients:
+    """Chatterjee, James and Brogliato's (2022) zero-load coefficients, from their Beta-function forms and
+    their integrals in mpmath, against the library's C1 and C2 at the article's force laws, the exact
+    family's pairs and the stability atlas's pairs."""
+    input:
+        code=code("chatterjee.py"),
+    output:
+        values="results/paper/chatterjee_values.tex",
+    params:
+        # evaluated when the job runs: the atlas's pairs are set in stability.smk, included later
+        pairs=lambda wildcards: ([[v["alpha"], v["gamma"]] for v in config["variants"]]
+                                 + config["exact_family"]["pairs"] + _ATLAS_PAIRS),
+        digits=30,
+    log:
+        "logs/chatterjee_coefficients.log",
+    script:
+        script_file("chatterjee.py")

@@ -4,8 +4,9 @@
 # Hertz contact with viscoelastic damping (alpha = 3/2, gamma = 1/2), contact ending at zero force.
 # Their series eps = 1 + sum_k h_k s^k, s = Omega^(-3/10), re-derived by restitution.core.delayed_recovery,
 # is set beside (a) the Taylor coefficients of Mueller and Poeschel's Pade form, built on the series, with the
-# four coefficients as Granulars.jl's getA.py implements them (a secondary source: Schwager and Poeschel's and
-# Mueller and Poeschel's printed coefficients are not compared here);
+# four coefficients as Granulars.jl's getA.py implements them (a secondary source), and Schwager and Poeschel's
+# printed second coefficient as Chatterjee, James and Brogliato's toolbox quotes it (config.yaml: an input,
+# another secondary source; their other printed coefficients are not compared here);
 # (b) this project's elastic expansion (restitution.core.asymptotics: C1, C2 and the end term); (c) a
 # least-squares fit of the integrator's eps at large Omega, a check that shares nothing with the
 # derivation; and (d) the truncation error of every partial sum against the integrator.
@@ -104,9 +105,18 @@ res_b = np.polynomial.polynomial.polyfit(s_fit[near], resid, p.residual_degree +
 for k in range(6, 9):
     fit_val[k], fit_acc[k] = res_b[k - 6], abs(res_a[k - 6] - res_b[k - 6])
 
+# %% Schwager and Poeschel's second coefficient, as quoted (an input): its distance from nu C1^2, set beside
+# the half unit of its last printed decimal (what rounding alone could explain)
+quoted_c2 = float(p.quoted_c2)
+quoted_text = repr(quoted_c2)
+quoted_decimals = len(quoted_text.split(".")[1])
+quoted_dev = abs(quoted_c2 - limit.C2)
+quoted_rounding = 0.5 * 10.0 ** -quoted_decimals
+print(f"quoted C2 {quoted_text}, nu C1^2 {limit.C2!r}, difference {quoted_dev:.3e} (rounding {quoted_rounding:.0e})")
+
 # %% coefficient table
-# No column holds Schwager and Poeschel's printed numbers: the comparison column is the Taylor coefficients of
-# the Pade form as Granulars.jl implements it (its h_2, h_4 are -C1, C2).
+# The comparison columns: the Taylor coefficients of the Pade form as Granulars.jl implements it (its h_2, h_4
+# are -C1, C2), and Schwager and Poeschel's h_4 as Chatterjee et al. quote it (their only number read here).
 library = {2: -limit.C1, 4: limit.C2, 5: limit.E}
 origin = {0: "elastic", 1: "---", 3: "---", 2: r"$-C_1$, closed form", 4: r"$\nu C_1^2$, closed form",
           5: r"$4/15$, end of contact"}
@@ -121,15 +131,16 @@ def val(x, err):
     return fixed(x, digits)
 
 
-rows = [r"\begin{tabular}{rrllll}", r"\toprule",
-        r"$i$ & power of $\Om$ & Pad\'e form & re-derived $h_i$ & this project & fit to the integrator \\",
+rows = [r"\begin{tabular}{rrlllll}", r"\toprule",
+        r"$i$ & power of $\Om$ & Pad\'e form & S.\,\&\,P., quoted & re-derived $h_i$ & this project & fit to the integrator \\",
         r"\midrule"]
 for k in range(1, KMAX + 1):
     pub = (fixed(pade[k], 6) + ("" if k <= PADE_MATCHED else r"$^\ast$")) if k <= 8 else "---"
     derived = val(h[k], h_err[k]) + ("" if h_err[k] == 0 else rf" ($\pm${sci(h_err[k], 1)})")
     ours = fixed(library[k], 7) if k in library else ("0" if k in (1, 3) else "---")
     fitted = (fixed(fit_val[k], 6) + rf" ($\pm${sci(max(fit_acc[k], 1e-9), 1)})") if k in fit_val else "---"
-    rows.append(rf"{k} & $-{3 * k}/10$ & {pub} & {derived} & {ours} & {fitted} \\")
+    quoted = quoted_text if k == 4 else "---"
+    rows.append(rf"{k} & $-{3 * k}/10$ & {pub} & {quoted} & {derived} & {ours} & {fitted} \\")
 rows += [r"\bottomrule", r"\end{tabular}"]
 write_text(snakemake.output.table, "\n".join(rows))
 
@@ -204,6 +215,10 @@ macros = {
     "SPPadeHFive": fixed(pade[5], 6),
     "SPPadeHTwo": fixed(pade[2], 6), "SPPadeHFour": fixed(pade[4], 6),
     "SPCOneNeg": fixed(-limit.C1, 7), "SPCTwo": fixed(limit.C2, 7),
+    # Schwager and Poeschel's h_4 as quoted, nu C1^2 to two more decimals than the quotation, their distance
+    "SPQuotedCTwo": quoted_text, "SPCTwoLong": fixed(limit.C2, quoted_decimals + 1),
+    "SPQuotedCTwoDev": sci(quoted_dev, 2), "SPQuotedCTwoRelDev": sci(quoted_dev / limit.C2, 2),
+    "SPQuotedRounding": sci(quoted_rounding, 1),
     "SPPadeHFiveDev": sci(end_pade_dev, 1),
     "SPPadeHThree": sci(pade[3], 1),
     "SPPadeHSix": fixed(pade[6], 4),
