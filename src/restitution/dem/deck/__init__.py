@@ -126,8 +126,8 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
     # its static members, and the atoms a pour or deposit of a named type inserts into it
     held = (set() if words[2] in deck.empty_groups else set(types)).union(*(filled for _, filled in fillers))
     if not held:
-        unknown.append((*loc, " ".join(words), f"group {words[2]} is defined by type before any atom exists (a "
-                                               "group holds the atoms present when it is defined): it holds none, "
+        unknown.append((*loc, " ".join(words), f"group {words[2]} was defined before any atom it would hold existed "
+                                               "(a group holds the atoms present when it is defined): it holds none, "
                                                "and the wall acts on no atom"))
         return None
     return sorted(t for t in held if 1 <= t <= deck.ntypes)
@@ -138,11 +138,13 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
 _PLACED = {"xplane": 2, "yplane": 2, "zplane": 2, "xcylinder": 3, "ycylinder": 3, "zcylinder": 3}
 
 
-def _surfaces_at(words: list, deck: Deck | None = None) -> set:
-    """Where a primitive wall's surfaces lie, as comparable keys: ("z", 0.0) for a plane at z = 0
-    (either face: the engines push a sphere off a plane from whichever side it overlaps it), a
-    cylinder's style with its numbers, a LAMMPS block region's faces as planes (``deck``: its
-    regions); empty for a mesh or another region.
+def _surfaces_at(words: list, deck: Deck | None = None) -> set | None:
+    """Where a wall's surfaces lie, as comparable keys: ("z", 0.0) for a plane at z = 0 (either
+    face: the engines push a sphere off a plane from whichever side it overlaps it), a cylinder as
+    (style, radius, centre, centre), a sphere as ("sphere", centre, radius); a LAMMPS region's
+    (``deck``: its regions) block faces, axis-aligned plane, cylinder side and finite ends. None
+    where the audit does not place them: a mesh, another region style, a moving region, one sized by
+    a variable or in lattice units it does not read.
 
     Examples
     --------
@@ -150,12 +152,19 @@ def _surfaces_at(words: list, deck: Deck | None = None) -> set:
     [('z', 0.0)]
     >>> _surfaces_at("fix w all wall/gran model hertz primitive type 2 zcylinder 0.05 0 0".split())
     {('zcylinder', 0.05, 0.0, 0.0)}
-    >>> d = Deck(regions={"cup": "region cup block -1 1 -1 1 0 INF units box".split()})
+    >>> _surfaces_at("fix w all wall/gran granular hooke 1 1 zcylinder 0.05".split())
+    {('zcylinder', 0.05, 0.0, 0.0)}
+    >>> d = Deck(regions={"cup": "region cup block -1 1 -1 1 0 INF units box".split(),
+    ...                   "can": "region can cylinder z 0 0 0.5 0 2 units box".split()})
     >>> sorted(_surfaces_at("fix w all wall/gran/region granular hooke 1 1 region cup".split(), d))
     [('x', -1.0), ('x', 1.0), ('y', -1.0), ('y', 1.0), ('z', 0.0)]
+    >>> sorted(_surfaces_at("fix w all wall/gran/region granular hooke 1 1 region can".split(), d), key=str)
+    [('z', 0.0), ('z', 2.0), ('zcylinder', 0.5, 0.0, 0.0)]
+    >>> _surfaces_at("fix w all wall/gran model hertz mesh n_meshes 1 meshes floor".split()) is None
+    True
     """
-    if words[3:4] == ["wall/gran/region"] and deck is not None and "region" in words[4:]:
-        return _block_faces(deck, words[words.index("region", 4) + 1:][:1])
+    if words[3:4] == ["wall/gran/region"]:
+        return _region_places(deck, words[words.index("region", 4) + 1]) if deck and "region" in words[4:-1] else None
     for k, word in enumerate(words[4:], 4):
         if word in _PLACED:
             numbers = []
@@ -167,44 +176,68 @@ def _surfaces_at(words: list, deck: Deck | None = None) -> set:
                         break
             if word.endswith("plane"):
                 return {(word[0], at) for at in numbers}
-            return {(word, *numbers)} if numbers else set()
-    return set()
+            # LAMMPS' cylinders lie on the axis itself (its one argument, the radius)
+            return {(word, *numbers, *[0.0] * (3 - len(numbers)))} if numbers else None
+    return None
 
 
-def _block_faces(deck: Deck, rid: list) -> set:
-    """The planes of a block region's finite faces, as :func:`_surfaces_at` keys; none for another
-    style, a moving one or one whose coordinates are not read."""
-    words = deck.regions.get(rid[0]) if rid else None
-    if not words or words[2] != "block" or len(words) < 9:
-        return set()
-    units = words[words.index("units") + 1] if "units" in words[9:-1] else "lattice"
-    if any(w in ("move", "rotate") for w in words[9:]):
-        return set()
-    faces = set()
-    for k, arg in enumerate(words[3:9]):
-        at = region_number(arg, deck, units)
-        if isinstance(at, float) and abs(at) != float("inf"):
-            faces.add(("xyz"[k // 2], at))
-    return faces
+def _region_places(deck: Deck, rid: str) -> set | None:
+    """The surfaces of LAMMPS region ``rid`` as :func:`_surfaces_at` keys, or None where the audit
+    does not place them."""
+    words = deck.regions.get(rid)
+    if not words or len(words) < 3 or words[2] not in ("block", "plane", "cylinder", "sphere"):
+        return None
+    count = {"block": 6, "plane": 6, "cylinder": 6, "sphere": 4}[words[2]]
+    args, rest = words[3:3 + count], words[3 + count:]
+    options = dict(zip(rest[::2], rest[1::2]))
+    if len(args) < count or len(rest) % 2 or set(options) - {"side", "units", "open"}:
+        return None                  # a moving or rotating region, or one not read
+    units = options.get("units", "lattice")
+    opened = {v for k, v in zip(rest[::2], rest[1::2]) if k == "open"}
+    if words[2] == "cylinder":
+        axis, numbers = args[0], [region_number(a, deck, units) for a in args[1:4]]
+        ends = [region_number(a, deck, units) if a not in ("INF", "-INF", "EDGE") else None for a in args[4:6]]
+    else:
+        numbers = [region_number(a, deck, units) if a not in ("INF", "-INF", "EDGE") else None for a in args]
+        ends = []
+    if any(isinstance(x, str) for x in numbers + ends):
+        return None                  # a variable's size, or lattice units not read
+    if words[2] == "block":
+        return {("xyz"[k // 2], at) for k, at in enumerate(numbers) if at is not None}
+    if words[2] == "sphere":
+        return {("sphere", *numbers)} if None not in numbers else None
+    if words[2] == "plane":
+        normal = numbers[3:]
+        axes = [k for k, n in enumerate(normal) if n]
+        return {("xyz"[axes[0]], numbers[axes[0]])} if len(axes) == 1 and None not in numbers[:3] else None
+    c1, c2, radius = numbers
+    places = set() if "3" in opened else {(f"{axis}cylinder", radius, c1, c2)}
+    return places | {(axis, at) for face, at in zip("12", ends) if at is not None and face not in opened}
 
 
 def _shared_faces(deck: Deck) -> dict:
     """{(wall ID, type): [(other wall's loc, words, where)]} for walls that act on the same type at
-    the same plane or cylinder: the engine adds both walls' forces on a sphere that meets them there
-    (LAMMPS and LIGGGHTS, two identical hertz walls of e = 0.5 at z = 0: eps 0.366, where one gives
-    0.5), a law no row of one wall says."""
+    the same plane, cylinder or sphere, or where one of them is not placed (a mesh, a region the
+    audit does not read), so that they may meet there: the engine adds both walls' forces on a
+    sphere that meets them at one surface (LAMMPS and LIGGGHTS, two identical hertz walls of e = 0.5
+    at z = 0: eps 0.366, where one gives 0.5; a mesh floor on a plane the same), a law no row of one
+    wall says."""
     placed = []
     for loc, words, types in deck.walls:
         held = _wall_types(deck, types, loc, words, [])
-        if held and (at := _surfaces_at(words, deck)):
-            placed.append((loc, words, set(held), at))
+        if held:
+            placed.append((loc, words, set(held), _surfaces_at(words, deck)))
     shared = {}
     for loc, words, held, at in placed:
         for other_loc, other, other_held, other_at in placed:
             if other[1] == words[1]:
                 continue
             for t in sorted(held & other_held):
-                if at & other_at:
+                if at is None or other_at is None:
+                    unplaced = words if at is None else other
+                    shared.setdefault((words[1], t), []).append((other_loc, other, (
+                        f"the audit does not place the surfaces of wall {unplaced[1]}")))
+                elif at & other_at:
                     where = ", ".join(f"{k[0]} = {k[1]:g}" if len(k) == 2 else " ".join(f"{x:g}" if isinstance(x, float)
                                                                                      else x for x in k)
                                       for k in sorted(at & other_at, key=str))
@@ -260,8 +293,11 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                                      "line": loc[1], "file": loc[0]}, contact, at_speeds, pair.R1, _dt(deck))
                     # another wall at this surface: named beside the row (the engine adds both forces)
                     others = [{"fix": other[1], "style": other[3], "file": other_loc[0], "line": other_loc[1],
-                               "what": f"another wall at the same surface ({where}), whose force the engine adds "
-                                       "to this wall's on a sphere that meets both", "eps_engine": None,
+                               "what": (f"another wall at the same surface ({where}), whose force the engine "
+                                        "adds to this wall's on a sphere that meets both" if "place" not in where else
+                                        f"another wall, which may meet this one at a surface ({where}): where it "
+                                        "does, the engine adds both walls' forces on a sphere there"),
+                               "eps_engine": None,
                                "why": "its size is not computed", "along": None}
                               for other_loc, other, where in shared.get((words[1], t), [])]
                     # sized by _ends on the rows it keeps (_beside)

@@ -29,6 +29,30 @@ INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sp
 MOVERS = INTEGRATORS | {"move", "nve/noforce"}
 #: Of the movers, those that move their atoms without the forces on them
 _PRESCRIBED = ("move", "nve/noforce")
+
+
+def _integrates(line: str) -> bool | None:
+    """Whether a moving fix's ``line`` integrates its atoms under the forces on them: True for an
+    integrator, and for ``fix move`` whose every coordinate is NULL (LAMMPS then "time-integrates
+    [it] using the current velocity and force", as fix nve: ``linear NULL NULL NULL``, ``variable``
+    with all six NULL); None for a ``fix move`` that prescribes some coordinates and integrates
+    others, whose eps depends on the contact's direction; False for a prescribed motion.
+
+    Examples
+    --------
+    >>> _integrates("fix mv t2 move linear NULL NULL NULL"), _integrates("fix 1 all nve/sphere")
+    (True, True)
+    >>> _integrates("fix mv t2 move linear NULL NULL 0.0"), _integrates("fix mv t2 move linear 0 0 0")
+    (None, False)
+    """
+    words = line.split()
+    if words[3] not in _PRESCRIBED:
+        return True
+    if words[3] != "move" or len(words) < 5 or words[4] not in ("linear", "variable"):
+        return False
+    given = words[5:8] if words[4] == "linear" else words[5:11]
+    nulls = sum(w == "NULL" for w in given)
+    return True if nulls == len(given) else (None if nulls else False)
 #: neigh_modify exclude styles and their number of arguments
 _EXCLUDE_ARGS = {"type": 2, "group": 2, "molecule/intra": 1, "molecule/inter": 1, "molecule": 1, "none": 0}
 #: special_bonds' named settings: their lj weights
@@ -182,7 +206,11 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
                              "type: the pairs are audited as spheres that move freely; a sphere outside the group "
                              "never moves, and its eps differs")
         if t in held:
-            (moved if style in _PRESCRIBED else integrated).append((fix, line))
+            if (integrates := _integrates(line)) is None:
+                return "unknown", (f"fix {fix} moves type {t} at a set velocity along some axes and integrates "
+                                   "it under the force along the others (NULL): its eps depends on the "
+                                   "contact's direction")
+            (integrated if integrates else moved).append((fix, line))
     if integrated and moved:
         return "unknown", f"type {t} is both integrated and moved by fix {moved[0][1].split()[3]}"
     if moved:
@@ -211,9 +239,9 @@ def integrators(deck: Deck, t: int) -> list:
     ['1', '2']
     """
     out = []
-    for fix, (_, _, group, style) in deck.movers.items():
+    for fix, (_, line, group, _) in deck.movers.items():
         held = group_types(deck, group)
-        if style not in _PRESCRIBED and held is not None and t in held:
+        if _integrates(line) and held is not None and t in held:
             out.append(fix)
     return out
 
