@@ -39,12 +39,41 @@ SHOWN = {
     "collide (scipy)": "SciPy DOP853, regularised",
 }
 READING_PREFIX = "perturbation-"
+# The reading of Kim's procedure behind each perturbation row, as the run recorded it in its note ("paper's
+# procedure, reading C-N1-K2-Dlinear"): the supplement names the rows by these labels, which are those of its
+# readings section, not by the benchmark's short names (N1 ... N4 alone named no row of the readings table).
+READING_LABEL = {r["method"]: m.group(1) for _, r in rows.iterrows()
+                 if str(r["method"]).startswith(READING_PREFIX)
+                 and (m := re.search(r"reading (\S+)", str(r.get("note", ""))))}
 
 
-def shown(method):
-    """The manuscript's name of a recorded method; a matching reading keeps its label (N1, ...)."""
+def reading_label(method, tex=True):
+    """The label of the reading of Kim's procedure behind a perturbation row (typewriter type in the table;
+    plain in the figure, whose text matplotlib sets without TeX)."""
+    return rf"\texttt{{{READING_LABEL[method]}}}" if tex else READING_LABEL[method]
+
+
+def reading_range(labels):
+    """Readings that differ only in their order N as one legend entry (C-N1..N4-K2-Dlinear): four labels in
+    full made the legend too wide to print at 7 pt.
+
+    Examples
+    --------
+    >>> reading_range(["C-N1-K2-Dlinear", "C-N2-K2-Dlinear", "C-N4-K2-Dlinear"])
+    'C-N1..N4-K2-Dlinear'
+    >>> reading_range(["C-N1-K2-Dlinear", "P-N2-K2-Dprinted"])
+    'C-N1-K2-Dlinear, P-N2-K2-Dprinted'
+    """
+    parts = [re.fullmatch(r"(.*-N)(\d+)(-.*)", label) for label in labels]
+    if len(labels) > 1 and all(parts) and len({(m.group(1), m.group(3)) for m in parts}) == 1:
+        return f"{parts[0].group(1)}{parts[0].group(2)}..N{parts[-1].group(2)}{parts[0].group(3)}"
+    return ", ".join(labels)
+
+
+def shown(method, tex=True):
+    """The manuscript's name of a recorded method; a perturbation row is named by its reading's label."""
     if method.startswith(READING_PREFIX):
-        return "reading " + method[len(READING_PREFIX):]
+        return "Kim, " + reading_label(method, tex)
     return SHOWN.get(method, esc(method))
 
 
@@ -149,11 +178,11 @@ for method, group in rows.groupby("method", sort=True):
         entries.append([[method], finite])
 for i, (methods, finite) in enumerate(entries):
     if len(methods) == 1:
-        label = shown(methods[0])
+        label = shown(methods[0], tex=False)
     elif all(m.startswith(READING_PREFIX) for m in methods):
-        label = "readings " + ", ".join(m[len(READING_PREFIX):] for m in methods) + " (one point)"
+        label = "Kim, " + reading_range([reading_label(m, tex=False) for m in methods]) + " (one point)"
     else:
-        label = ", ".join(shown(m) for m in methods) + " (one point)"
+        label = ", ".join(shown(m, tex=False) for m in methods) + " (one point)"
     ax.plot(finite["cost_per_eval_s"], finite["max_rel_err"], marker=markers[i % len(markers)], markersize=7.0,
             markerfacecolor="none", markeredgewidth=1.2, color=colors[(2 * i) % 20 + (i // 10) % 2], linestyle="-",
             label=label)

@@ -18,7 +18,8 @@ from restitution_workflow.latex import esc, fixed
 from restitution_workflow.pipeline import read_json, start, write_csv, write_json, write_text
 
 from restitution.audit import matching, readings
-from restitution.audit.readings import XC_SUFFIX
+from restitution.audit.readings import XC_SUFFIX, Reading
+from restitution.audit.relations import PERTURBATION_ORDERS, PERTURBATION_READING
 
 start(snakemake)
 
@@ -39,6 +40,13 @@ def key(reading) -> str:
 if p.readings != "all":
     wanted = set(p.readings)
     readings = [r for r in readings if key(r) in wanted]
+else:
+    # with every reading, also those of the perturbation route (the procedure to order Omega^n on the converged
+    # series, shifts from the velocity to first order): the supplement's cost table has a row for each, named by
+    # its label, and its coefficients belong in the same table as the other readings'
+    labels = {r.label for r in readings}
+    readings += [route for route in (Reading(omega_orders=n, **PERTURBATION_READING) for n in PERTURBATION_ORDERS)
+                 if route.label not in labels]
 
 # %% The procedure, reading by reading
 rows = []

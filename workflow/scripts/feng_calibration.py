@@ -17,7 +17,7 @@ import math
 from fractions import Fraction
 
 import pandas as pd
-from restitution_workflow.latex import fixed, frac_tex, sci
+from restitution_workflow.latex import fixed, frac_tex, sci, sci_up
 from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.core.collision import collide
@@ -87,7 +87,7 @@ macros = {
     "FengTargetCount": str(len(p.targets)),
     "FengTargetMin": fixed(min(p.targets), 2),
     "FengTargetMax": fixed(max(p.targets), 2),
-    "FengOverlapMaxDev": sci(float(overlap_dev), 2),
+    "FengOverlapMaxDev": sci_up(float(overlap_dev), 2),   # "to a relative": a bound, rounded up
     "FengOverlapMaxBound": sci(float(table["bound_overlap"].max()), 2),
     "FengForceMinGap": sci(float(table["rel_force"].min()), 2),
     "FengForceMaxGap": sci(float(table["rel_force"].max()), 2),

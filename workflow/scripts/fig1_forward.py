@@ -31,13 +31,12 @@ x_max = float(ref["x"].max())
 fig, (ax, ax_err) = plt.subplots(2, 1, sharex=True, figsize=(5.6, 5.6),
                                  gridspec_kw={"height_ratios": [3, 1.5]})
 ax.plot(ref["tau"], ref["x"], color="black", lw=2.4, label="reference integration")
-colors = plt.cm.viridis(np.linspace(0.0, 0.85, p.omega_order + 1))
 ref_on_grid = ref["tau"].to_numpy()
 for n in range(p.omega_order + 1):
     label = rf"series to $\Omega^{{{n}}}$"
-    ax.plot(tau, series.evaluate(tau, omega, order=n), lw=1.3, label=label, **order_style(n, colors[n], tau.size))
+    ax.plot(tau, series.evaluate(tau, omega, order=n), lw=1.3, label=label, **order_style(n, tau.size))
     err = np.abs(series.evaluate(ref_on_grid, omega, order=n) - ref["x"].to_numpy())
-    ax_err.semilogy(ref_on_grid, np.maximum(err, 1e-16), lw=1.1, **order_style(n, colors[n], ref_on_grid.size))
+    ax_err.semilogy(ref_on_grid, np.maximum(err, 1e-16), lw=1.1, **order_style(n, ref_on_grid.size))
 for a in (ax, ax_err):
     a.axvline(summary["tau_b"], color="grey", ls=":", lw=1)
 ax.annotate(r"$\tau_b$", (summary["tau_b"], 0.05 * x_max), xytext=(4, 0), textcoords="offset points",

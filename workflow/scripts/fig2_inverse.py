@@ -44,13 +44,12 @@ if has_zero:
     target = ref["x_tilde_from_zero"].to_numpy()
 else:
     target = ref["x_tilde"].to_numpy()
-colors = plt.cm.plasma(np.linspace(0.0, 0.85, p.omega_order + 1))
 grid = ref["tau_tilde"].to_numpy()
 for n in range(p.omega_order + 1):
     ax.plot(tau_t, series.evaluate(tau_t, omega_t, order=n), lw=1.3, label=rf"series to $\tilde\Omega^{{{n}}}$",
-            **order_style(n, colors[n], tau_t.size))
+            **order_style(n, tau_t.size))
     err = np.abs(series.evaluate(grid, omega_t, order=n) - target)
-    ax_err.semilogy(grid, np.maximum(err, 1e-16), lw=1.1, **order_style(n, colors[n], grid.size))
+    ax_err.semilogy(grid, np.maximum(err, 1e-16), lw=1.1, **order_style(n, grid.size))
 for a in (ax, ax_err):
     a.axvline(inv["tau_tilde_b"], color="grey", ls=":", lw=1)
 ax.annotate(r"$\tilde\tau_b$", (inv["tau_tilde_b"], 0.05 * x_max), xytext=(4, 0),

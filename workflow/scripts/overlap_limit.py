@@ -116,7 +116,7 @@ macros = {
     "OverlapPairList": ", ".join(rf"$({frac(r['alpha'])}, {frac(r['gamma'])})$" for r in rows),
     "OverlapCheckMin": sci(min(P.check_omegas), 1), "OverlapCheckMax": sci(max(P.check_omegas), 1),
     "OverlapRtol": sci(RTOL, 1),     # the direct integrations' relative tolerance (Table 2, the text)
-    "OverlapMaxDevSmall": sci(max(r["max_dev_small"] for r in rows), 2),
+    "OverlapMaxDevSmall": sci_up(max(r["max_dev_small"] for r in rows), 2),   # "holds to": a bound, rounded up
     "OverlapHighprecOmega": sci(P.highprec_omega, 1), "OverlapHighprecDigits": str(P.highprec_digits),
     "OverlapMaxDevHighprec": sci(max(abs(r["dev_highprec"]) for r in rows), 2),
     "OverlapMaxCError": sci_up(max(r["C_error"] for r in rows), 2),     # "at most": a bound, rounded up
@@ -145,7 +145,10 @@ plt = setup_matplotlib()
 # indices (0.7 of it) above 7 pt
 plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.labelsize", "legend.fontsize",
                                    "axes.titlesize"), 10.5))
-fig, (left, right) = plt.subplots(1, 2, figsize=(TEXT_WIDTH_PT / 72.27, 3.4))
+# drawn at 0.9 of the text width, the width the article prints it at (at the full width its tick exponents printed
+# at 6.7 pt, referee r19), and as high as it printed before
+PRINT_WIDTH = 0.9
+fig, (left, right) = plt.subplots(1, 2, figsize=(PRINT_WIDTH * TEXT_WIDTH_PT / 72.27, PRINT_WIDTH * 3.4))
 colours = ["C0", "C1", "C2", "C3", "C4", "C5", "C6"]
 LAW_OMEGA_MAX = 0.3
 # a marker and a line style per exponent pair as well as a colour: the figure reads in greyscale
@@ -184,4 +187,4 @@ handles, labels = right.get_legend_handles_labels()
 fig.legend(handles + styles, labels + [h.get_label() for h in styles], loc="lower center", ncol=3, frameon=False,
            fontsize=9.5)
 fig.set_layout_engine("tight", rect=(0, 0.19, 1, 1))
-save_figure(fig, out.pdf, out.png, width=1.0)
+save_figure(fig, out.pdf, out.png, width=PRINT_WIDTH)

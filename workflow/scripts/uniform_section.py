@@ -57,7 +57,10 @@ plt.rcParams.update(dict.fromkeys(("axes.labelsize", "xtick.labelsize", "ytick.l
                                    "axes.titlesize"), 10.5))
 # the text width; the legend below the axes, off the data (inside, in the band between the curves, a reader
 # took it for part of the plot)
-fig, ax = plt.subplots(figsize=(TEXT_WIDTH_PT / 72.27, 3.0))
+# drawn at 0.9 of the text width, the width the article prints it at (at the full width its tick exponents printed
+# at 6.7 pt, referee r19), and as high as it printed before
+EPS_PRINT_WIDTH = 0.9
+fig, ax = plt.subplots(figsize=(EPS_PRINT_WIDTH * TEXT_WIDTH_PT / 72.27, EPS_PRINT_WIDTH * 3.0))
 ax.loglog(curve["g"], np.maximum(rel(curve["eps_uniform"].to_numpy()), 1e-17), color="tab:orange", lw=2.0,
           label="uniform approximation")
 rel_loss = lambda x: np.abs((1.0 - x) / (1.0 - ref) - 1.0)  # noqa: E731  (the elastic law is one for 1 - eps)
@@ -74,7 +77,7 @@ ax.set_ylim(1e-9, 1e4)
 # no title: the caption names the material, and with it the exponents
 ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.3), ncol=2, frameon=False, borderaxespad=0, handlelength=2.5)
 fig.set_layout_engine("tight")
-save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=1.0)
+save_figure(fig, snakemake.output.eps_pdf, snakemake.output.eps_png, width=EPS_PRINT_WIDTH)
 plt = setup_matplotlib()   # the style of the other figures again
 err_elastic_gmin, err_viscous_gmax = float(rel_loss(law_elastic)[0]), float(rel(law_viscous)[-1])
 LAW_TOL = 0.01
@@ -428,7 +431,7 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
 force_tables = two_tables(r"lllllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
                           r"error estimate: $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
 # the force law's column as wide as its longest name (a fixed 2.1 cm broke Hertz--Kuwabara--Kono over three lines)
-overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar N + 1$ & "
+overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar J + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
@@ -460,8 +463,8 @@ come from independent integrations in the variables of Sec.~\ref{{sec:reference}
 $\CFFitRtol$. The article gives the resulting errors and the error estimate; Fig.~\ref{{fig:uniform-error}} shows the
 error over the whole range. The numbers of \ArtTab{{tab:uniform}}, typed as printed, change $\varepsilon$ by at most
 {sci(max(f['printed_max_change'] for f in forms.values() if f['available']), 2)} relative. A force law with
-$\alpha \leq \gamma$ has no such form: for $\alpha = \gamma$ the exact implicit relation
-$1 + \varepsilon = \Omega\ln\big((\Omega+1)/(\Omega-\varepsilon)\big)$ of \ArtSec{{sec:model}} (Hunt and Crossley's case) applies, for $\alpha < \gamma$
+$\alpha \leq \gamma$ has no such form: for $\alpha = \gamma$ the exact implicit relation of \ArtSec{{sec:model}}
+(Hunt and Crossley's case) applies, for $\alpha < \gamma$
 the first viscous correction is not known. Table~\ref{{tab:uniform-atlas}} in the appendix gives the form for every
 exponent pair of the stability atlas.
 
@@ -483,7 +486,7 @@ $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P}
 that of \ArtEq{{eq:uniform}}):
 \begin{{equation}}
 \frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Theta \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
-\exp\!\Big[\exp(-\bar Q/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
+\exp\!\Big[\exp(-\bar Q/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar J}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
 with $\bar b = (C_o C_1)^{{1/(\kappa - \nu)}}$ and $\Theta = \bar b^{{\kappa}}/C_o$, so that

@@ -175,18 +175,29 @@ def setup_matplotlib():
     return plt
 
 
-#: Line styles and markers of successive orders Omega^0, Omega^1, ...: consecutive orders often
-#: coincide over most of the plot, so colour alone would not tell them apart.
-ORDER_DASHES = ["--", "-.", (0, (1, 1.2)), (0, (6, 1.5, 1, 1.5, 1, 1.5)), (0, (3, 1))]
+#: Line styles, markers and colours of successive orders Omega^0, Omega^1, ...: consecutive orders often
+#: coincide over most of the plot, so each differs from the others in all three. The colours are the
+#: Okabe-Ito qualitative set (distinct hues, also for colour-blind readers): a sequential colour map gave
+#: the highest orders near-identical green shades (referee r19). No two dash patterns alike.
+ORDER_DASHES = ["--", "-.", (0, (1, 1.2)), (0, (6, 1.5, 1, 1.5, 1, 1.5)), (0, (9, 2.5))]
 ORDER_MARKERS = ["o", "s", "^", "D", "v"]
+ORDER_COLORS = ["#0072B2", "#E69F00", "#009E73", "#D55E00", "#CC79A7"]
 
 
-def order_style(n: int, color, points: int) -> dict:
+def order_style(n: int, points: int) -> dict:
     """matplotlib keywords for the curve of order n, markers spread over ``points`` samples (offset
-    per order so that markers of overlapping curves do not hide each other)."""
+    per order so that markers of overlapping curves do not hide each other).
+
+    Examples
+    --------
+    >>> style = order_style(4, 801)
+    >>> style["marker"], style["color"], style["markevery"]
+    ('v', '#CC79A7', (0, 100))
+    """
     step = max(points // 8, 1)
-    return {"color": color, "ls": ORDER_DASHES[n % len(ORDER_DASHES)], "marker": ORDER_MARKERS[n % len(ORDER_MARKERS)],
-            "markersize": 3.5, "markevery": (step * (n % 4) // 4, step), "markerfacecolor": "none"}
+    k = len(ORDER_MARKERS)
+    return {"color": ORDER_COLORS[n % k], "ls": ORDER_DASHES[n % k], "marker": ORDER_MARKERS[n % k],
+            "markersize": 4.0, "markevery": (step * (n % 4) // 4, step), "markerfacecolor": "none"}
 
 
 #: The manuscripts' text width (A4 less two 2.5 cm margins), in TeX points (1/72.27 in).
