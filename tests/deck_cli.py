@@ -192,3 +192,15 @@ def liggghts_held_at_end(deck: Path, tmp: Path) -> dict:
     for t, r, m in (ln.split() for ln in (folder / "held").read_text().splitlines()[9:]):
         held.setdefault(int(t), set()).add((float(r), float(m) / (4.0 / 3.0 * math.pi * float(r) ** 3)))
     return held
+
+
+def as_without_runs(status: int, got, err: str, before: str) -> None:
+    """What the deck audit gives where its engine does not make the deck's runs (``--run-budget 0``),
+    for a deck that reads after a run what they change: ``before`` "refused" (a set by position, in
+    one line), "may_differ" (the last stage's rows marked) or "if_poured" (a row at a pour's size)."""
+    if before == "refused":
+        assert status == 2 and len(err.strip().splitlines()) == 1 and "where the run left them" in err, err
+    elif before == "may_differ":
+        assert status == 0 and all(p.get("may_differ") for p in got["stages"][-1]["pairs"]), err
+    else:
+        assert status == 0 and any(p.get("if_poured") for p in got["stages"][-1]["pairs"]), err

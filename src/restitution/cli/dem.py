@@ -145,7 +145,7 @@ def add_deck_subcommand(subparsers) -> None:
     run_budget = d.add_argument(
         "--run-budget", type=float, default=_LibraryDefault("restitution.dem.deck", "RUN_BUDGET"), metavar="SECONDS",
         help="where the deck reads, after a run, what its runs change (a set or group by region or by an atom-style "
-             "variable of positions, a count after a pour, the step, an energy), LAMMPS makes its runs for real (at "
+             "variable of positions, a count after a pour, the step, an energy), its engine makes its runs for real (at "
              "most %(steps)s steps, outputs not written) within this wall time, and the audit reads the state they "
              "reach; 0, or a budget that runs out, keeps the runs skipped: such a set is refused and such a stage's "
              "rows are marked (default: %(default)s)")

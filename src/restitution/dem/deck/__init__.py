@@ -376,7 +376,7 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
 BUDGET = 20.0
 #: The budgets a caller may ask for, in seconds.
 BUDGET_RANGE = (1.0, 3600.0)
-#: Wall time in seconds the engine may spend making a deck's runs for real (LAMMPS), where its pass
+#: Wall time in seconds the engine may spend making a deck's runs for real, where its pass
 #: with runs skipped met a command that reads what they change: a position, a count after a pour,
 #: the step, an energy (:func:`_made_runs`). Two spheres' 8000 steps take LAMMPS 0.2 s; a pour of
 #: 3000 grains over 25 000 steps about 20 s on a loaded 2-core machine
@@ -684,7 +684,7 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
     pass with them skipped (``commands``) met the ``causes`` (:func:`_run_causes`): (EngineRun,
     commands, the note that says so), or (None, None, the note that says why it was not made: the
     budget ran out, the runs are longer than :data:`MAX_RUN_STEPS`, the engine stopped); None where
-    ``budget`` is 0 or the engine makes runs of one step only (LIGGGHTS). ``looped``: the pass with
+    ``budget`` is 0 or the engine cannot make them (``MAKES_RUNS`` of its ``deck_run``). ``looped``: the pass with
     runs skipped was ended in a loop (a settle loop waiting for a value only runs change), so its
     runs tell nothing of the deck's steps, and the wall time alone bounds the runs made.
 
@@ -698,11 +698,12 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
         f" and {len(causes) - 2} more" if len(causes) > 2 else "")
     what = (f"after a run, {shown}: what it reads or holds depends on where the runs before leave the atoms or "
             "on a value they change")
+    cut = "skipped" if deck_run.ENGINE == "LAMMPS" else "one step long"
     steps = None if looped else _run_steps(commands)
     if not looped and (steps is None or steps > MAX_RUN_STEPS):
         many = "runs whose length is not a number" if steps is None else f"{steps} steps"
         return None, None, (f"{what}; the audit makes at most {MAX_RUN_STEPS} steps for real and the deck has {many}: "
-                            "its runs skipped, as said")
+                            f"its runs {cut}, as said")
     remark(scratch, deck_run.marker(scratch.root, real=True))
     try:
         done = deck_run.run_copy(scratch.deck, scratch.root, budget, original=folder, check_every=True,
@@ -715,10 +716,10 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
     if done.timed_out:
         return None, None, (f"{what}; {deck_run.ENGINE} making its runs for real ran out of "
                             f"the audit's --run-budget {budget:g} s ({done.spent}); --run-budget SECONDS allows more: "
-                            "its runs skipped, as said")
+                            f"its runs {cut}, as said")
     if done.error:
         return None, None, (f"{what}; {deck_run.ENGINE} making its runs for real stopped: "
-                            f"{' '.join(done.error.split())[:300]}: its runs skipped, as said")
+                            f"{' '.join(done.error.split())[:300]}: its runs {cut}, as said")
     return done, made, (
         f"{what}: {deck_run.ENGINE} made the deck's {runs} runs ({steps if steps is not None else 'their'} steps) for real, in {done.wall:.2g} s of the "
         f"--run-budget {budget:g} s, its outputs not written: the atoms, sizes, types, branches and values audited "
