@@ -136,10 +136,11 @@ def outside_file_outcome(result: tuple, absolute: bool, folder: Path, line: int)
     assert f"line {line} (include" in err and "outside the deck's folder" in err, err
 
 
-def agrees_with_lammps(rows: list, sizes: dict, lines: str, ntypes: int, style: str = "granular") -> None:
+def agrees_with_lammps(rows: list, sizes: dict, lines: str, ntypes: int, style: str = "granular",
+                       tol: float = 1e-6) -> None:
     """Each pair row's eps at its middle speed against LAMMPS' own, head-on, at the types' sizes
     ({type: (radius, density)}) under the deck's ``lines``: 4000, 8000 and 16000 steps per contact,
-    extrapolated to dt -> 0, within 1e-6."""
+    extrapolated to dt -> 0, within ``tol`` (relative)."""
     from restitution.dem.contact import Contact
     from restitution.dem.pair import Pair
     for r in rows:
@@ -148,5 +149,58 @@ def agrees_with_lammps(rows: list, sizes: dict, lines: str, ntypes: int, style: 
         pair = Pair.spheres(sizes[i][0], sizes[j][0], sizes[i][1], sizes[j][1])
         engine = lammps_run.lammps_eps_extrapolated(pair, lines, g, t_c, types=(i, j), ntypes=ntypes, style=style)
         print(r["types"], r["eps"][2], engine)
-        assert abs(engine[0] / r["eps"][2] - 1) < 1e-6, (r["types"], r["eps"][2], engine)
+        assert abs(engine[0] / r["eps"][2] - 1) < tol, (r["types"], r["eps"][2], engine)
 
+
+
+def lammps_held_at_end(deck: Path) -> dict:
+    """{type: {(radius, density)}} of the atoms LAMMPS holds where it has run ``deck`` to its end,
+    runs made, in its own folder (a deck of the tests writes no file): the referee of an audit that
+    made the deck's runs for real."""
+    import math
+    import os
+
+    import lammps
+    here = os.getcwd()
+    os.chdir(Path(deck).parent)
+    lmp = lammps.lammps(cmdargs=["-log", "none", "-screen", "none", "-nocite"])
+    try:
+        lmp.file(str(Path(deck).name))
+        types, radii, masses = (lmp.numpy.extract_atom(name) for name in ("type", "radius", "rmass"))
+        held: dict = {}
+        for t, r, m in zip(types, radii, masses):
+            held.setdefault(int(t), set()).add((float(r), float(m) / (4.0 / 3.0 * math.pi * float(r) ** 3)))
+        return held
+    finally:
+        lmp.close()
+        os.chdir(here)
+
+
+def liggghts_held_at_end(deck: Path, tmp: Path) -> dict:
+    """{type: {(radius, density)}} of the atoms LIGGGHTS holds where it has run ``deck`` (a copy of
+    its folder in ``tmp``) to its end, runs made: the referee of an audit that made them."""
+    import math
+    import shutil
+    import subprocess
+    folder = Path(tmp) / "engine"
+    shutil.copytree(Path(deck).parent, folder)
+    text = Path(deck).read_text() + '\nwrite_dump all custom held type radius mass modify format "%d %.17g %.17g"\n'
+    (folder / "in.held").write_text(text)
+    subprocess.run(["liggghts", "-in", "in.held", "-echo", "none", "-log", "none", "-nocite"], cwd=folder,
+                   capture_output=True, check=True, stdin=subprocess.DEVNULL)
+    held: dict = {}
+    for t, r, m in (ln.split() for ln in (folder / "held").read_text().splitlines()[9:]):
+        held.setdefault(int(t), set()).add((float(r), float(m) / (4.0 / 3.0 * math.pi * float(r) ** 3)))
+    return held
+
+
+def as_without_runs(status: int, got, err: str, before: str) -> None:
+    """What the deck audit gives where its engine does not make the deck's runs (``--run-budget 0``),
+    for a deck that reads after a run what they change: ``before`` "refused" (a set by position, in
+    one line), "may_differ" (the last stage's rows marked) or "if_poured" (a row at a pour's size)."""
+    if before == "refused":
+        assert status == 2 and len(err.strip().splitlines()) == 1 and "where the run left them" in err, err
+    elif before == "may_differ":
+        assert status == 0 and all(p.get("may_differ") for p in got["stages"][-1]["pairs"]), err
+    else:
+        assert status == 0 and any(p.get("if_poured") for p in got["stages"][-1]["pairs"]), err

@@ -101,11 +101,14 @@ def test_a_settle_loop_is_ended_by_its_budget(tmp_path):
     path = tmp_path / "in.deck"
     path.write_text(QUICK + "label l\nrun 10\nvariable ke equal ke\nif \"${ke} < 1\" then \"jump SELF l\"\n")
     start = time.monotonic()
-    status, out, err = run_cli(["deck", str(path), "--g", "1.0", "--budget", "1"])
+    status, out, err = run_cli(["deck", str(path), "--g", "1.0", "--budget", "1", "--run-budget", "1"])
     assert status == 0, err
     # whichever bound comes first (a loop of empty runs echoes megabytes a second), the note names a loop
     assert re.search(r"within the audit's budget \((1 s of wall time in a loop|16 MB of echo); its runs are skipped, "
                      r"so a loop waiting", err), err
+    # the loop reads ke, which the runs change: LAMMPS makes them, and its loop does not end either
+    # within --run-budget
+    assert "ran out of the audit's --run-budget 1 s" in err, err
     assert time.monotonic() - start < CEILING * 1.0 + 10.0
 
 

@@ -458,9 +458,12 @@ if "${{ke}} > 1e-9" then "jump SELF l"
     from restitution.dem.deck import audit_deck
     import time
     start = time.monotonic()
-    res = audit_deck(text, [1.0], path=path, budget=20.0)
-    assert time.monotonic() - start < 40.0
+    res = audit_deck(text, [1.0], path=path, budget=20.0, run_budget=5.0)
+    # the loop reads ke, which the runs change: LAMMPS makes them, within their own budget, and the
+    # loop (the spheres never stop) does not end there either
+    assert time.monotonic() - start < 40.0 + 5.0
     assert any("had not ended the deck" in note and "same contact settings" in note for note in res["notes"])
+    assert any("ran out of the audit's --run-budget 5 s" in note for note in res["notes"]), res["notes"]
     assert res["pairs"][0]["eps"][0] == pytest.approx(eps_hooke(1000, 1.0), rel=1e-10)
 
 
@@ -834,13 +837,17 @@ def test_a_set_by_where_the_atoms_are_after_a_run_is_refused(tmp_path, lines, re
     run left in the region; the audit's pass, its runs skipped, resized those at the start (0.96186
     printed where LAMMPS gives 0.94036, exit 0). Such a set (a region, a group picked by region
     after a run, an atom-style variable, delete_atoms by region) after a run is refused in one
-    line; before any run, or on sizeless keywords, or by type, it is the engine's own."""
+    line where the runs are not made (--run-budget 0; made, the engine's state is audited:
+    test_dem_deck_made_runs.py); before any run, or on sizeless keywords, or by type, it is the
+    engine's own."""
     text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nrun 10\n{lines}\nrun 10\n"
-    status, out, err = deck(tmp_path, text)
+    status, out, err = deck(tmp_path, text, "--run-budget", 0)
     if refused:
         assert status == 2 and out == "" and err.count("\n") == 1 and "where the run left them" in err, err
     else:
         assert status == 0, err
+    status, out, err = deck(tmp_path, text)
+    assert status == 0 and ("for real" in err) == refused, err
     before = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n{lines}\nrun 10\n"
     status, _, err = deck(tmp_path, before)
     assert status == 0 or "where the run left them" not in err, err

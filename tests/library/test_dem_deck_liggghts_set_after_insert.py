@@ -51,9 +51,9 @@ run 1000
 LINES = "create_box 1 box\n" + materials(1) + STYLE
 
 
-def _audit(tmp_path, between: str, set_: str):
+def _audit(tmp_path, between: str, set_: str, *args):
     (tmp_path / "in.deck").write_text(DECK.format(between=between, set=set_))
-    status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json")
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json", *args)
     return status, (json.loads(out) if status == 0 else None), err
 
 
@@ -126,9 +126,24 @@ def test_atoms_inserted_after_the_set_get_the_templates_size_again(tmp_path, set
 @pytest.mark.parametrize("set_", ["set type 1 mass 0.001", "set region ins diameter 0.006"])
 def test_a_set_the_reader_does_not_follow_on_inserted_atoms_is_refused(tmp_path, set_):
     """A mass (LIGGGHTS keeps a density beside it that a later diameter reads), or which inserted
-    atoms a region holds: refused in one line."""
-    status, got, err = _audit(tmp_path, "unfix ins\n", set_)
+    atoms a region holds: refused in one line; the second where LIGGGHTS does not make the runs
+    (--run-budget 0); made, the atoms it holds are audited."""
+    status, got, err = _audit(tmp_path, "unfix ins\n", set_, "--run-budget", "0")
     assert status == 2 and got is None, err
     # (by region after a run: the atoms the run left there, which no pass knows, field test r11)
     said = "where the run left them (region ins)" if "region" in set_ else "insertions"
     assert len(err.strip().splitlines()) == 1 and said in err, err
+    if "region" not in set_:
+        return
+    status, got, err = _audit(tmp_path, "unfix ins\n", set_)
+    assert status == 0 and "LIGGGHTS made the deck's 2 runs" in err, err
+    held = _liggghts_sizes(tmp_path, "unfix ins\n", set_)
+    rows = [r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 1]]
+    # (the spheres the run left in the region resized, those that had left it not)
+    assert {tuple(s) for r in rows for s in r.get("at") or []} == held, (held, rows)
+    for r in rows:
+        for size in r.get("at") or [next(iter(held))] * 2:
+            assert any(size[0] == h[0] and size[1] == pytest.approx(h[1], rel=1e-8) for h in held), (size, held)
+        engine = _engine(r, *(r.get("at") or [next(iter(held))] * 2))
+        print(r.get("at"), r["eps"][2], engine)
+        assert abs(engine[0] / r["eps"][2] - 1) < 1e-6

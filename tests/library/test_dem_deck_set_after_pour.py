@@ -10,7 +10,7 @@ import json
 
 import pytest
 
-from deck_cli import lammps_pour, needs_lammps, run
+from deck_cli import lammps_held_at_end, lammps_pour, needs_lammps, run
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.pair import Pair
@@ -23,9 +23,9 @@ run 100
 """
 
 
-def _audit(tmp_path, between: str, set_: str):
+def _audit(tmp_path, between: str, set_: str, *args):
     (tmp_path / "in.deck").write_text(DECK.format(between=between, set=set_))
-    status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json")
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json", *args)
     return status, (json.loads(out) if status == 0 else None), err
 
 
@@ -60,8 +60,10 @@ def test_a_set_after_the_pour_ran_resizes_the_poured_atoms(tmp_path):
 @pytest.mark.dem
 def test_atoms_poured_after_the_set_get_the_pours_size_again(tmp_path):
     """The pour still in force: the type holds both, the set's (radius 0.003, mass kept) and the
-    pour's (0.005, 2500); a density set after gives every existing atom density 1000."""
-    status, got, err = _audit(tmp_path, "", "set type 1 diameter 0.006")
+    pour's (0.005, 2500); a density set after gives every existing atom density 1000. So where the
+    runs are not made (--run-budget 0); made, the sizes are those LAMMPS holds
+    (test_the_runs_made_hold_what_lammps_holds)."""
+    status, got, err = _audit(tmp_path, "", "set type 1 diameter 0.006", "--run-budget", "0")
     assert status == 0, err
     rows = [r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 1]]
     at = sorted({tuple(s) for r in rows for s in r["at"]})
@@ -75,7 +77,8 @@ def test_atoms_poured_after_the_set_get_the_pours_size_again(tmp_path):
         engine = _engine(r, r["at"])
         print(r["at"], r["eps"][2], engine)
         assert abs(engine[0] / r["eps"][2] - 1) < 1e-6
-    status, got, err = _audit(tmp_path, "", "set type 1 diameter 0.006\nrun 100\nunfix p\nset type 1 density 1000")
+    status, got, err = _audit(tmp_path, "", "set type 1 diameter 0.006\nrun 100\nunfix p\nset type 1 density 1000",
+                              "--run-budget", "0")
     assert status == 0, err
     rows = [r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 1]]
     assert sorted({tuple(s) for r in rows for s in r["at"]}) == [(0.003, 1000.0), (0.005, 1000.0)]
@@ -88,11 +91,43 @@ def test_atoms_poured_after_the_set_get_the_pours_size_again(tmp_path):
 @pytest.mark.parametrize("set_", ["set region ins diameter 0.006", "set region ins type 2 diameter 0.006"])
 def test_a_set_the_reader_cannot_follow_on_poured_atoms_is_refused(tmp_path, set_):
     """Which poured atoms a region holds resized, moved to another type or not: refused in one line
-    (poured atoms moved to another type alone are read: test_dem_deck_set_type_after_pour.py)."""
-    status, got, err = _audit(tmp_path, "unfix p\n", set_)
+    where the runs are not made (poured atoms moved to another type alone are read:
+    test_dem_deck_set_type_after_pour.py); made, the sizes are those LAMMPS holds
+    (test_the_runs_made_hold_what_lammps_holds)."""
+    status, got, err = _audit(tmp_path, "unfix p\n", set_, "--run-budget", "0")
     assert status == 2 and got is None, err
     # (by region after a run: the atoms the run left there, which no pass knows, field test r11)
     assert len(err.strip().splitlines()) == 1 and "where the run left them (region ins)" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between, set_", [("", "set type 1 diameter 0.006"),
+                                           ("unfix p\n", "set region ins diameter 0.006"),
+                                           ("unfix p\n", "set region ins type 2 diameter 0.006")])
+def test_the_runs_made_hold_what_lammps_holds(tmp_path, between, set_):
+    """A pour that may have finished before a set, or a set by region after it: LAMMPS makes the
+    runs, and the last stage's types and sizes are those LAMMPS holds at the deck's end (run to it
+    here), each row's eps LAMMPS' own head-on, no row marked ``if_poured``."""
+    status, got, err = _audit(tmp_path, between, set_)
+    assert status == 0 and "for real" in err, err
+    held = lammps_held_at_end(tmp_path / "in.deck")
+    rows = got["stages"][-1]["pairs"]
+    seen: dict = {}
+    for r in rows:
+        assert not r.get("if_poured") and not r.get("may_differ"), r
+        for t, at in zip(r["types"], r.get("at") or [None, None]):
+            seen.setdefault(t, set()).add(None if at is None else tuple(at))
+    for t, sizes in held.items():
+        # a row's ends are among the sizes LAMMPS holds, and a type of one size is that size
+        ends = {s for s in seen[t] if s is not None}
+        assert all(any(s == pytest.approx(h, rel=1e-9) for h in sizes) for s in ends), (t, ends, sizes)
+        assert ends or len(sizes) == 1, (t, sizes)
+    for r in rows:
+        at = r.get("at") or [next(iter(held[t])) for t in r["types"]]
+        engine = _engine(r, at)
+        print(r["types"], at, r["eps"][2], engine)
+        assert abs(engine[0] / r["eps"][2] - 1) < 1e-6
 
 
 @needs_lammps

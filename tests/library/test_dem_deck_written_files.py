@@ -8,7 +8,7 @@ file's eps, exit 0, with a note that the shell 'has no part in a contact')."""
 
 import pytest
 
-from deck_cli import agrees_with_lammps, audit, lammps_spheres, needs_lammps, run
+from deck_cli import agrees_with_lammps, audit, lammps_held_at_end, lammps_spheres, needs_lammps, run
 from restitution.dem.dialect.sandbox import available as confining
 
 HOOKE = "pair_coeff * * hooke 2000 0.05 damping velocity tangential linear_nohistory 0 0"
@@ -145,12 +145,19 @@ def test_a_set_after_a_pour_only_run_sets_the_poured_spheres(tmp_path):
         "fix grav all gravity 9.81 vector 0 0 -1\nregion slab block 0.01 0.09 0.01 0.09 0.1 0.19 units box\n"
         "fix ins all pour 200 1 300719 region slab diam one 0.004 dens 2500 2500\nrun 1\n"
         "variable rho equal 9000\nset type 1 density ${rho}\nrun 100\n")
-    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    got, err = audit(tmp_path / "in.deck", "--g", "1", "--run-budget", "0")
     assert len(got["stages"]) == 2 and "reads a value the runs change" not in err
     rows = {row["at"][0][1]: row for row in got["stages"][1]["pairs"]}
     assert sorted(rows) == [2500.0, 9000.0] and all(row["at"][0] == row["at"][1] for row in rows.values())
     for density, row in rows.items():
         agrees_with_lammps([row], {1: (0.002, density)}, HOOKE, 1)
+    # the runs made (the pour's 2500 holds only if it has not finished): the sizes LAMMPS holds
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    held = lammps_held_at_end(tmp_path / "in.deck")
+    assert "for real" in err and len(held[1]) == 1, (err, held)
+    rows = got["stages"][1]["pairs"]
+    assert len(rows) == 1 and "at" not in rows[0] and not rows[0].get("if_poured"), rows
+    agrees_with_lammps(rows, {1: next(iter(held[1]))}, HOOKE, 1)
 
 
 @needs_lammps

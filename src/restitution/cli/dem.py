@@ -142,6 +142,14 @@ def add_deck_subcommand(subparsers) -> None:
     # the ceiling as the library has it, read when the help is printed (argparse fills %(name)s
     # from the action's attributes)
     budget.ceiling = _LibraryDefault("restitution.dem.dialect.child", "CEILING")
+    run_budget = d.add_argument(
+        "--run-budget", type=float, default=_LibraryDefault("restitution.dem.deck", "RUN_BUDGET"), metavar="SECONDS",
+        help="where the deck reads, after a run, what its runs change (a set or group by region or by an atom-style "
+             "variable of positions, a count after a pour, the step, an energy), its engine makes its runs for real (at "
+             "most %(steps)s steps, outputs not written) within this wall time, and the audit reads the state they "
+             "reach; 0, or a budget that runs out, keeps the runs skipped: such a set is refused and such a stage's "
+             "rows are marked (default: %(default)s)")
+    run_budget.steps = _LibraryDefault("restitution.dem.deck", "MAX_RUN_STEPS")
 
 
 class _LibraryDefault:
@@ -195,7 +203,8 @@ def run_deck(args, out) -> None:
         if engine.materials is not None and engine.materials.is_materials_file(text):
             return _run_materials(engine, args, text, speeds, read_file, out)
     res = audit_deck(text, speeds, _per_type("radius", args.radius), _per_type("density", args.density), read_file,
-                     path=args.file, **({} if isinstance(args.budget, _LibraryDefault) else {"budget": args.budget}))
+                     path=args.file, **({} if isinstance(args.budget, _LibraryDefault) else {"budget": args.budget}),
+                     **({} if isinstance(args.run_budget, _LibraryDefault) else {"run_budget": args.run_budget}))
     for note in res["notes"]:
         print(f"restitution deck: {note}", file=sys.stderr)
     if any("damping tsuji" in row["model"] for row in res["pairs"] + res["walls"]):

@@ -93,7 +93,7 @@ from ...core.collision import StickError
 from ...core.errors import ParameterError
 from .beside import effects
 from .meeting import excluded, held_contact, integrators, motion
-from .reader import DIALECTS, MAX_STAGES, contact_key, read_executed
+from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
 from ..engines.lammps.deck import DEFAULT_DT, region_number
@@ -412,6 +412,16 @@ def _eps_or_stick(contact, g: float) -> tuple[float, bool]:
 BUDGET = 20.0
 #: The budgets a caller may ask for, in seconds.
 BUDGET_RANGE = (1.0, 3600.0)
+#: Wall time in seconds the engine may spend making a deck's runs for real, where its pass
+#: with runs skipped met a command that reads what they change: a position, a count after a pour,
+#: the step, an energy (:func:`_made_runs`). Two spheres' 8000 steps take LAMMPS 0.2 s; a pour of
+#: 3000 grains over 25 000 steps about 20 s on a loaded 2-core machine
+RUN_BUDGET = 60.0
+#: The run budgets a caller may ask for, in seconds (0: the runs are never made)
+RUN_BUDGET_RANGE = (0.0, 3600.0)
+#: The most steps of all its runs together the engine makes for real: a deck's production runs
+#: (10^8 steps) are not the audit's to make, whatever the wall time allowed
+MAX_RUN_STEPS = 10_000_000
 _LIGGGHTS_DECK = re.compile(r"^\s*(pair_style\s+gran\s+model|atom_style\s+granular|fix\s+\S+\s+\S+\s+"
                             r"(particletemplate|particledistribution|insert/|mesh/surface|property/global))", re.M)
 
@@ -439,7 +449,7 @@ def engine_of(text: str) -> str:
 
 
 def engine_read(path, radius: dict | None = None, density: dict | None = None, budget: float = BUDGET,
-                engine: str | None = None) -> tuple[Deck, list]:
+                engine: str | None = None, run_budget: float = RUN_BUDGET) -> tuple[Deck, list]:
     """The settings of a deck as its engine ran it: its own pass through a scratch copy of the
     deck's folder (nothing that runs code or writes files executed), read back.
 
@@ -454,6 +464,9 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         :data:`restitution.dem.dialect.child.CEILING` times it).
     engine : {"LAMMPS", "LIGGGHTS"}, optional
         The engine (:func:`engine_of` the deck's text where None).
+    run_budget : float
+        Wall time in seconds the engine may spend making the deck's runs for real, where the pass
+        with runs skipped met a command that reads what they change (:func:`_made_runs`); 0: never.
 
     Returns
     -------
@@ -549,9 +562,31 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
             raise DeckError(where, line or None, _stopped(engine, message, commands))
-        deck = read_executed(deck_commands(commands, scratch), atoms, radius, density, read_file, restarts)
-        notes = _run_dependent_notes(commands, scratch, engine, clocked is not None)
-        deck.doubtful_runs = _runs_after(commands, _run_dependent(commands, scratch, clocked is not None))
+        read = deck_commands(commands, scratch)
+        try:
+            deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts), None
+        except DeckError as why:
+            if by_position(read) is None:
+                raise
+            deck, refusal = None, why       # the runs made for real may answer it
+        found = _run_dependent(commands, scratch, clocked is not None)
+        causes = _run_causes(found, by_position(read), deck)
+        made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
+                          done.timed_out and done.looped) if causes else None
+        if made is not None and made[0] is not None:
+            done, commands, said = made
+            atoms = snapshots(done.atoms) + snapshots(done.at_end)
+            restarts = _restart_infos(root) if scratch.restarts else None
+            deck = read_executed(deck_commands(commands, scratch), atoms, radius, density, read_file, restarts,
+                                 ran=True)
+            notes = [said]
+        else:
+            said = [made[2]] if made is not None else []
+            if refusal is not None:
+                refusal.args = ("; ".join([refusal.args[0], *said]),)
+                raise refusal
+            notes = _run_dependent_notes(commands, scratch, engine, clocked is not None) + said
+            deck.doubtful_runs = _runs_after(commands, found)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
@@ -650,6 +685,81 @@ def _run_dependent_notes(commands: list, scratch, engine: str, clocked: bool = F
     return said + [f"after a run, {shown}{more}: reads a value the runs change ({changed}); with the runs {runs} "
                    "it reads the value before them, so the branches taken and the values set from here on, and the "
                    "stages audited after it, may not be those the deck runs"]
+
+
+def _run_causes(found: list, picked: tuple | None, deck: Deck | None) -> list:
+    """((file, line), text) of what makes a pass with runs skipped read something else than the
+    deck's runs do: the commands after a run that read a value the runs change (``found``), the
+    first that picks atoms by where a run left them (``picked``), and the runs whose sizes include
+    one only a pour not yet finished gives (``deck``'s stages' ``pending``), in the deck's order."""
+    causes = list(found) + ([picked] if picked and picked not in found else [])
+    for runs, snap, _ in deck.stages if deck is not None else ():
+        if snap.pending:
+            causes.append((runs[0][0], f"{runs[0][1]}, whose sizes include a pour's own only if it has not "
+                                       "finished"))
+    return sorted(causes, key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
+
+
+def _run_steps(commands: list) -> int | None:
+    """The steps of all the runs the pass met (``run N``, ``minimize``'s iterations at most), None
+    where one's length is not a number."""
+    steps = 0
+    for cmd in commands:
+        if cmd.stage is None:
+            continue
+        split = cmd.text.split()
+        n = split[1] if split[0] == "run" and len(split) > 1 else split[3] if len(split) > 3 else ""
+        if not n.isdigit():
+            return None
+        steps += int(n)
+    return steps
+
+
+def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, folder: Path, looped: bool = False):
+    """The engine's pass through the scratch copy with the deck's runs made for real, where the
+    pass with them skipped (``commands``) met the ``causes`` (:func:`_run_causes`): (EngineRun,
+    commands, the note that says so), or (None, None, the note that says why it was not made: the
+    budget ran out, the runs are longer than :data:`MAX_RUN_STEPS`, the engine stopped); None where
+    ``budget`` is 0 or the engine cannot make them (``MAKES_RUNS`` of its ``deck_run``). ``looped``: the pass with
+    runs skipped was ended in a loop (a settle loop waiting for a value only runs change), so its
+    runs tell nothing of the deck's steps, and the wall time alone bounds the runs made.
+
+    The deck's outputs are suppressed as in the first pass; each run's marker writes the atoms
+    where the run left them, the atoms the run's pours made among them, so a set by position, a
+    count after a pour or a step read afterwards are the engine's own."""
+    from .scratch import remark
+    if budget <= 0 or not getattr(deck_run, "MAKES_RUNS", False):
+        return None
+    shown = "; ".join(f"{place(loc)} {text.strip()}" for loc, text in causes[:2]) + (
+        f" and {len(causes) - 2} more" if len(causes) > 2 else "")
+    what = (f"after a run, {shown}: what it reads or holds depends on where the runs before leave the atoms or "
+            "on a value they change")
+    cut = "skipped" if deck_run.ENGINE == "LAMMPS" else "one step long"
+    steps = None if looped else _run_steps(commands)
+    if not looped and (steps is None or steps > MAX_RUN_STEPS):
+        many = "runs whose length is not a number" if steps is None else f"{steps} steps"
+        return None, None, (f"{what}; the audit makes at most {MAX_RUN_STEPS} steps for real and the deck has {many}: "
+                            f"its runs {cut}, as said")
+    remark(scratch, deck_run.marker(scratch.root, real=True))
+    try:
+        done = deck_run.run_copy(scratch.deck, scratch.root, budget, original=folder, check_every=True,
+                                 tag=scratch.tag, ceiling=budget, real=True)
+    finally:
+        remark(scratch, deck_run.marker(scratch.root))
+    made = _read(done, scratch)
+    runs = sum(1 for cmd in made if cmd.stage is not None)
+    steps = _run_steps(made)
+    if done.timed_out:
+        return None, None, (f"{what}; {deck_run.ENGINE} making its runs for real ran out of "
+                            f"the audit's --run-budget {budget:g} s ({done.spent}); --run-budget SECONDS allows more: "
+                            f"its runs {cut}, as said")
+    if done.error:
+        return None, None, (f"{what}; {deck_run.ENGINE} making its runs for real stopped: "
+                            f"{' '.join(done.error.split())[:300]}: its runs {cut}, as said")
+    return done, made, (
+        f"{what}: {deck_run.ENGINE} made the deck's {runs} runs ({steps if steps is not None else 'their'} steps) for real, in {done.wall:.2g} s of the "
+        f"--run-budget {budget:g} s, its outputs not written: the atoms, sizes, types, branches and values audited "
+        "are those its runs reach")
 
 
 def _runs_after(commands: list, found: list) -> set:
@@ -776,7 +886,7 @@ def _marker_stopped(echo: str, root: Path) -> bool:
 
 
 def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | None = None, read_file=None, *,
-               path=None, budget: float = BUDGET) -> dict:
+               path=None, budget: float = BUDGET, run_budget: float = RUN_BUDGET) -> dict:
     """The eps an input deck really gives, for every type pair and flat wall, at every run.
 
     Parameters
@@ -795,6 +905,12 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     budget : float, optional
         Wall time in seconds the engine's pass may take (within :data:`BUDGET_RANGE`): it ends a
         loop that never reaches a run.
+    run_budget : float, optional
+        Wall time in seconds (within :data:`RUN_BUDGET_RANGE`) the engine may spend making the
+        deck's runs for real where its pass with them skipped met a command that reads what they
+        change (a set by position, a count after a pour, the step): the audit is then of the state
+        the runs reach, and a note says so; 0, or a budget that runs out, keeps the pass with runs
+        skipped (such a set refused, such a stage's rows marked ``may_differ``).
 
     Returns
     -------
@@ -836,13 +952,16 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         raise ParameterError("g", speeds, "give at least one impact speed")
     if not BUDGET_RANGE[0] <= budget <= BUDGET_RANGE[1]:
         raise ParameterError("budget", budget, f"must be in [{BUDGET_RANGE[0]:g}, {BUDGET_RANGE[1]:g}] seconds")
+    if not RUN_BUDGET_RANGE[0] <= run_budget <= RUN_BUDGET_RANGE[1]:
+        raise ParameterError("run_budget", run_budget,
+                             f"must be in [{RUN_BUDGET_RANGE[0]:g}, {RUN_BUDGET_RANGE[1]:g}] seconds")
     engine = engine_of(text)
     if path is None:
         with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
             (Path(tmp) / "in.deck").write_text(text)
-            deck, notes = engine_read(Path(tmp) / "in.deck", radius, density, budget, engine)
+            deck, notes = engine_read(Path(tmp) / "in.deck", radius, density, budget, engine, run_budget)
     else:
-        deck, notes = engine_read(Path(path), radius, density, budget, engine)
+        deck, notes = engine_read(Path(path), radius, density, budget, engine, run_budget)
     stages = [(runs, snap) for runs, snap, _ in deck.stages] or [([], deck)]
     unknown = list(dict.fromkeys(deck.unknown))      # a loop runs its lines again: each named once
     if deck.stages and contact_key(deck) != contact_key(deck.stages[-1][1]):    # --radius, --density in both

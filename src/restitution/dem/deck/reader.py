@@ -26,7 +26,8 @@ from ..deck_text import ScriptError, words
 from ..engines import ENGINES
 from ..engines.lammps.deck import DEFAULT_DT
 
-__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key", "repour", "adapt_poured"]
+__all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key", "repour", "adapt_poured",
+           "by_position"]
 
 #: Engine (a Deck's ``code``) -> its deck dialect: the module that reads its pair style, its
 #: coefficients and its walls, as each registered engine's deck hook names it
@@ -94,7 +95,7 @@ _INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/r
 
 
 def read_executed(commands, atoms: list, radius: dict | None = None, density: dict | None = None,
-                  read_file=None, restarts: list | None = None) -> Deck:
+                  read_file=None, restarts: list | None = None, ran: bool = False) -> Deck:
     """The settings of a deck from the commands its engine ran (:mod:`restitution.dem.deck.stream`):
     no control flow here, the engine's own; the atoms each run saw as the engine held them.
 
@@ -115,6 +116,10 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         coeffs groups``): a restart file the deck wrote earlier in the pass is read back as the
         settings at its ``write_restart`` that LAMMPS stores, checked against it
         (:func:`read_restart`). None: every read_restart is refused.
+    ran : bool
+        Whether the engine made the runs (its markers wrote the atoms where each run left them,
+        those its pours and deposits made included): a command after a run may then pick atoms by
+        position, and no inserting fix's sizes are modelled (:attr:`Deck.ran`).
 
     Returns
     -------
@@ -139,7 +144,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     >>> deck.stages[0][1].radius, deck.stages[0][1].density
     ({1: 0.5}, {1: 2.0})
     """
-    deck = Deck(held={})       # the engine holds the atoms: their sizes are never read from the deck
+    deck = Deck(held={}, ran=ran)     # the engine holds the atoms: their sizes are never read from the deck
     done = 0
     # whether the last command read was a run that joined the last stage and nothing read since:
     # a run then joins it too (a loop's 10 000 runs, each key of the settings computed once)
@@ -167,7 +172,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
         if split and split[0] in ("run", "minimize"):
             moved_since = True
-        elif split and moved_since and split[0] in ("group", "set", "delete_atoms"):
+        elif split and moved_since and not ran and split[0] in ("group", "set", "delete_atoms"):
             _where_the_run_left(split, placed, cmd)
         if split and cmd.unset and not made and not deposited_ran:
             # no atom in the pass, and no pour or deposit has made any in the runs before: the
@@ -456,6 +461,12 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     """The atoms a run sees, as the engine held them: each type's radius and density where all its
     atoms share one; several (a type of several sizes) in ``sizes``; a type without atoms
     keeps what an inserting fix gives it (a pour) or none (walls only, or unused)."""
+    if deck.ran:
+        # the runs made: a type whose atoms the runs or the commands since retyped, deleted or lost
+        # has none at this run, whatever size it had at the last
+        for t in set(deck.held or ()) - set(atoms):
+            for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
+                known.pop(t, None)
     deck.held = {t: sorted(v) for t, v in atoms.items()}
     deck.once = {t: set(v.once) for t, v in atoms.items() if getattr(v, "once", None)}
     deck.atoms = deck.atoms or bool(atoms)
@@ -812,6 +823,34 @@ def _where_the_run_left(split: list, placed: set, cmd) -> None:
     return None
 
 
+def by_position(commands) -> tuple | None:
+    """The first group, set or delete_atoms after a run that picks atoms by where the run left them
+    (:func:`_where_the_run_left`, which refuses it in a pass whose runs are skipped), as
+    ((file, line), text); None where there is none.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> cmds = [Executed((None, 3), "run 10", 0), Executed((None, 4), "set region low diameter 0.02")]
+    >>> by_position(cmds), by_position(cmds[1:])
+    (((None, 4), 'set region low diameter 0.02'), None)
+    """
+    moved, placed = False, set()
+    for cmd in commands:
+        try:
+            split = words(cmd.text)
+        except ScriptError:
+            return None                # refused as it is read
+        if split and split[0] in ("run", "minimize"):
+            moved = True
+        elif split and moved and split[0] in ("group", "set", "delete_atoms"):
+            try:
+                _where_the_run_left(split, placed, cmd)
+            except DeckError:
+                return cmd.loc, cmd.text
+    return None
+
+
 def _made_after(deck: Deck, made, what: str, inserting: bool = False) -> None:
     """Atoms of the types ``made`` (None: not known) made by ``what``: a group defined by type
     before them does not hold them (a group holds the atoms present when it is defined; LAMMPS
@@ -1159,6 +1198,8 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
             diameters = {value(k + 1), value(k + 2)}          # older LAMMPS: diam lo hi
         elif tok == "dens":
             densities = {value(k + 1), value(k + 2)}
+    if deck.ran:
+        return                       # the engine made the runs: what it poured is among the atoms held
     deck.sizes.pop(t, None)
     if deck.held is not None:
         _poured(deck, words[1], t, diameters, densities, "poly" in tokens)
@@ -1250,6 +1291,8 @@ def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
         made = "fix pour ... mol names no molecule template the deck defined"
     if isinstance(made, str):
         raise DeckError(where, line, made)
+    if deck.ran:
+        return                       # the engine made the runs: what it poured is among the atoms held
     poured: dict = {}
     for kind, radius, density in made:
         t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
@@ -1284,6 +1327,8 @@ def _deposit(deck: Deck, words: list, where: str, line: str, loc) -> None:
     LAMMPS' default size (DEPOSITED); a molecule's (mol) from its template, which the reader does
     not read (the type's entry in ``missing`` says so)."""
     t = atom_type(words[5], where, line)
+    if deck.ran:
+        return                       # the engine made the runs: what it deposited is among the atoms held
     if "mol" in words[8:]:
         deck.missing[t] = f"fix {words[1]} deposits molecules, whose sizes come from a molecule template"
         return

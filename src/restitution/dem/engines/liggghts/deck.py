@@ -154,7 +154,11 @@ def _property_global(deck: Deck, words: list, where: str, line: str, loc) -> Non
 
 
 def _sphere_template(deck: Deck, words: list, where: str, line: str, loc) -> None:
-    """fix ID group particletemplate/sphere seed atom_type T density constant RHO radius constant R."""
+    """fix ID group particletemplate/sphere seed atom_type T density constant RHO radius constant R
+    (where the engine made the runs, :attr:`Deck.ran`, nothing: what it inserted is among the atoms
+    held)."""
+    if deck.ran:
+        return
     tokens, t, size = words[5:], None, {}
     for k, tok in enumerate(tokens):
         if tok == "atom_type":
@@ -187,7 +191,7 @@ def _insertion(deck: Deck, words: list, where: str, line: str, loc) -> None:
     Nothing where a template has no one constant size (its type's entry in ``missing`` says so)."""
     named = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "distributiontemplate"]
     made = [deck.sphere_templates.get(tid) for tid in deck.distributions.get(named[0], [None])] if named else [None]
-    if deck.held is None or None in made:
+    if deck.held is None or deck.ran or None in made:
         return
     for t in {t for t, _ in made}:
         deck.pours[(words[1], t)] = (t, {size for u, size in made if u == t})

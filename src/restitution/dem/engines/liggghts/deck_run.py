@@ -20,10 +20,13 @@ from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, engine_environment,
 from . import run
 from .run import MPI_NOT_STARTED, MPI_START_RETRIES
 
-__all__ = ["ENGINE", "INSTALL", "available", "marker", "run_copy"]
+__all__ = ["ENGINE", "MAKES_RUNS", "INSTALL", "available", "marker", "run_copy"]
 
 #: The engine's name, as its refusals say it
 ENGINE = "LIGGGHTS"
+#: It makes a deck's runs for real where asked (``marker(root, real=True)``): the audit then reads
+#: the state they reach (:func:`restitution.dem.deck._made_runs`)
+MAKES_RUNS = True
 #: How to get it, said in one line where it is not installed
 INSTALL = "the deck is run by LIGGGHTS itself, whose binary liggghts is not on PATH: as root, apt-get install " \
           "liggghts (Debian's package, LIGGGHTS 3.8.0)"
@@ -37,9 +40,10 @@ def available() -> bool:
     return run.available()
 
 
-def marker(root: Path):
-    """The function that writes stage k's marker: a run of one step, then the atoms as LIGGGHTS
-    holds them (the contract: :class:`~restitution.dem.dialect.child.DeckRun`).
+def marker(root: Path, real: bool = False):
+    """The function that writes stage k's marker: a run of one step (with ``real``, the deck's run
+    itself), then the atoms as LIGGGHTS holds them (the contract:
+    :class:`~restitution.dem.dialect.child.DeckRun`).
 
     Examples
     --------
@@ -47,11 +51,14 @@ def marker(root: Path):
     run 1 pre yes post no
     write_dump all custom /s/atoms type radius mass modify format "%d %.17g %.17g" append yes
     <BLANKLINE>
+    >>> print(marker(Path("/s"), real=True)(0, "run 10").splitlines()[0])
+    run 10
     """
     def text(k: int, run: str) -> str:
         # "pre yes": the set-up of every run of the deck's, not the shortened one LIGGGHTS may take
         # for a run right after another
-        return f"run 1 pre yes post no\nwrite_dump all custom {root / ATOMS} type radius mass {_FORMAT} append yes\n"
+        made = run if real else "run 1 pre yes post no"
+        return f"{made}\nwrite_dump all custom {root / ATOMS} type radius mass {_FORMAT} append yes\n"
     return text
 
 
@@ -62,8 +69,9 @@ def _ending(root: Path) -> str:
 
 def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
              check_every: bool = True, tag: str | None = None,
-             ceiling: float | None = None) -> EngineRun:
-    """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step, within ``budget`` seconds in
+             ceiling: float | None = None, real: bool = False) -> EngineRun:
+    """Run the scratch copy ``deck`` in LIGGGHTS, each run of one step (with ``real``, as the deck
+    has it: its markers then those of ``marker(root, real=True)``), within ``budget`` seconds in
     a loop and ``ceiling`` in all (:func:`~restitution.dem.dialect.child.run_child`; ``tag`` the
     scratch copy's; every marker runs its step and writes the atoms: ``check_every`` is always so here).
 
