@@ -280,3 +280,38 @@ run 10
     status, out, err = run_cli(["deck", str(deck), "--g", "1.0"])
     assert status == 0 and "never moves" not in err and "cannot type" not in err, err
     assert "types 1 1" in out
+
+
+@needs_liggghts
+def test_an_integrators_group_given_again_after_the_insertion_moves_the_inserted_spheres(tmp_path):
+    """Field round 12, D6 (L14): a region group made before any atom holds none, so its integrator
+    moves nothing in the first run; given again after the insertion's run, it holds the inserted
+    spheres, which LIGGGHTS then moves (their mean height falls from 0.10035 to 0.08839). The
+    audit kept one stage, said that no fix integrates type 1 and dropped every pair: the second run
+    is now a stage of its own, audited as free spheres (the group's atoms untyped, said)."""
+    text = LIGGGHTS_BOX + """\
+fix m1 all property/global youngsModulus peratomtype 5e6 5e6
+fix m2 all property/global poissonsRatio peratomtype 0.3 0.3
+fix m3 all property/global coefficientRestitution peratomtypepair 2 0.6 0.5 0.5 0.4
+fix m4 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5
+pair_style gran model hertz tangential history
+pair_coeff * *
+timestep 1e-5
+fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.003
+fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0
+region bc block -0.04 0.04 -0.04 0.04 0.05 0.09 units box
+group early region reg
+fix ins all insert/pack seed 32452867 distributiontemplate pdd1 vel constant 0 0 -0.5 insert_every once overlapcheck yes all_in yes particles_in_region 20 region bc
+fix integr early nve/sphere
+run 100
+group early region reg
+run 100
+"""
+    deck = tmp_path / "in.liggghts"
+    deck.write_text(text)
+    status, out, err = run_cli(["deck", str(deck), "--g", "1.0", "--json"])
+    assert status == 0, err
+    first, last = json.loads(out)["stages"]
+    assert first["pairs"] == [] and "no fix integrates type 1" in err
+    (row,) = [p for p in last["pairs"] if p["types"] == [1, 1]]
+    assert row["eps"][0] == pytest.approx(0.6, abs=1e-9) and "cannot type" in err

@@ -239,6 +239,17 @@ def test_a_tether_and_an_added_force_are_named_beside_the_contact(tmp_path):
     assert math.isfinite(pairs(res)[(1, 2)]["eps"][0])
 
 
+def test_a_constant_added_force_is_not_named_for_two_spheres_of_one_mass(tmp_path):
+    """Field round 12, D4 (a02): fix addforce gives each atom the same force, so two spheres of one mass
+    get the same acceleration and meet as without it; named only where the masses differ (1 2)."""
+    status, res, err = audit(tmp_path, TWO + "fix 1 all nve/sphere\nfix af all addforce 0 0 -0.003\nrun 10\n")
+    assert status == 0, err
+    rows = pairs(res)
+    assert [b["style"] for b in rows[(1, 2)]["beside"]] == ["addforce"]
+    assert rows[(1, 1)]["beside"] == [] and rows[(2, 2)]["beside"] == []
+    assert "types 1 1" not in err and "types 2 2" not in err
+
+
 def test_a_sphere_too_small_for_its_volume_is_refused_in_one_line(tmp_path):
     """LAMMPS runs a diameter of 1e-300 (its volume underflows to 0): one line, no traceback."""
     status, res, err = audit(tmp_path, TWO + "fix 1 all nve/sphere\nset atom 2 diameter 1e-300\nrun 10\n")

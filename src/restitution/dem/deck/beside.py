@@ -241,7 +241,7 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
         acted = [t in held for t in types] if held is not None else None
         if acted is not None and not any(acted):
             continue
-        if len(types) == 2 and acted is not None and all(acted) and _alike(words):
+        if len(types) == 2 and acted is not None and all(acted) and (_alike(words) or _same_push(words, pair)):
             continue                       # both spheres shifted alike: their relative motion is as it was
         entry = {"fix": words[1], "style": style, "file": loc[0], "line": loc[1], "what": BESIDE[style],
                  "eps_engine": None, "why": "", "along": None}
@@ -251,6 +251,23 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
             _size(entry, deck, row, contact, pair, types, words, acted, frozen_contact, faces)
         out.append(entry)
     return out
+
+
+def _same_push(words: list, pair: Pair) -> bool:
+    """Whether fix ``words`` is an addforce of constant components on every atom of its group, which
+    on two spheres of one mass is the same acceleration each: their relative motion is as it was
+    (field test round 12, a02: named for a pair of one type, where it changes nothing).
+
+    Examples
+    --------
+    >>> p, q = Pair.spheres(0.5, 0.5, 1.0), Pair.spheres(0.5, 0.25, 1.0)
+    >>> _same_push("fix f all addforce 0 0 -3".split(), p), _same_push("fix f all addforce 0 0 -3".split(), q)
+    (True, False)
+    >>> _same_push("fix f all addforce 0 0 v_fz".split(), p), _same_push("fix f all addforce 0 0 -3 region r".split(), p)
+    (False, False)
+    """
+    return (words[3] == "addforce" and len(words) >= 7 and pair.m1 == pair.m2 and "region" not in words[7:]
+            and all(_number(w) is not None for w in words[4:7]))
 
 
 def _alike(words: list) -> bool:

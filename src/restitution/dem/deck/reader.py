@@ -921,6 +921,8 @@ def contact_key(deck: Deck) -> str:
                                                       for t in deck.sizes}, deck.others, deck.idle, deck.granular_of,
                        [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
+                       # a moving fix's group given again between runs holds other atoms from there on
+                       {g: deck.groups.get(g, "undefined") for _, _, g, _ in deck.movers.values()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
                        bool(deck.bonds), deck.special_lj, deck.dt_reset[1:])))
 
