@@ -22,7 +22,10 @@ from test_pipeline import (assert_one_config_error, PER_VARIANT, ROOT, VARIANT_N
 
 #: Manuscript-level jobs: they gather every variant, so a new variant reruns them (uniform_atlas: its table's rows
 #: of the variants' exponent pairs refer to the article's table instead of repeating it; it only reads the shards).
-GATHERING = {"compare_variants", "variants_tex", "uniform_section", "uniform_atlas", "article_labels", "manuscript", "supplement", ALL}
+#: jobs that read every variant (chatterjee_coefficients compares the prior-art coefficients at each
+#: variant's force law), rerun when one is added
+GATHERING = {"compare_variants", "variants_tex", "uniform_section", "uniform_atlas", "chatterjee_coefficients",
+             "article_labels", "manuscript", "supplement", ALL}
 
 
 def jobs_by_variant(tree: Path, *args: str) -> dict[str, set]:

@@ -241,6 +241,11 @@ def fit_print_width(fig, width: float) -> float:
     return smallest
 
 
+#: The PNGs' resolution: a figure drawn at 0.9 of the text width keeps more than 500 pixels on each
+#: side, which the report shows without upscaling (at 200 dpi the dashpot variant's Fig. 4 had 484)
+PNG_DPI = 250
+
+
 def save_figure(fig, pdf, png, width: float | None = None) -> None:
     """Write the figure as PDF (for LaTeX) and PNG (for people), byte-reproducibly.
 
@@ -248,7 +253,8 @@ def save_figure(fig, pdf, png, width: float | None = None) -> None:
     figure is then made small enough that every text in it prints at MIN_PRINTED_PT or more."""
     if width is not None:
         fit_print_width(fig, width)
-    for path, metadata in ((pdf, PDF_METADATA), (png, PNG_METADATA)):
+    for path, metadata, dpi in ((pdf, PDF_METADATA, None), (png, PNG_METADATA, PNG_DPI)):
         with atomic_path(path) as tmp:
             # the format from the final name (the temporary one ends in .tmp.<ext> anyway)
-            fig.savefig(tmp, format=Path(path).suffix[1:], metadata=metadata, bbox_inches="tight")
+            fig.savefig(tmp, format=Path(path).suffix[1:], metadata=metadata, bbox_inches="tight",
+                        **({"dpi": dpi} if dpi else {}))
