@@ -1,0 +1,163 @@
+"""Field round 13: write each deck's spec.json for referee13.py from the engine's own sizes and masses
+(engine_state.txt beside each deck, or the deck's own set lines where no run changes them).
+usage: python specs.py [DECKID ...]"""
+import json, math, os, sys
+
+D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
+HOOKE = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
+LL = ["pair_style granular", f"pair_coeff * * {HOOKE}"]
+FLOOR = f"fix floor all wall/gran granular {HOOKE} zplane 0 NULL"
+GL = ["fix m1 all property/global youngsModulus peratomtype 5e6 5e6",
+      "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3",
+      "fix m3 all property/global kn peratomtypepair 2 2000 2000 2000 2000",
+      "fix m4 all property/global gamman peratomtypepair 2 3000 3000 3000 3000",
+      "fix m5 all property/global kt peratomtypepair 2 1000 1000 1000 1000",
+      "fix m6 all property/global gammat peratomtypepair 2 50 50 50 50",
+      "fix m7 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5",
+      "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"]
+GWALL = "fix wall all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.0"
+
+
+def m(r, rho):
+    return rho * 4.0 / 3.0 * math.pi * r ** 3
+
+
+def P(t1, t2, r1, m1, r2=None, m2=None, **kw):
+    c = {"t1": t1, "t2": t2, "r1": r1, "m1": m1, "r2": r2 or r1, "m2": m2 or m1, "speed_idx": [2]}
+    c.update(kw)
+    return c
+
+
+def W(t1, r1, m1, wall=FLOOR, wall_id="floor", **kw):
+    c = {"t1": t1, "wall_id": wall_id, "wall": wall, "r1": r1, "m1": m1, "z0": r1, "zw": 0, "speed_idx": [2]}
+    c.update(kw)
+    return c
+
+
+m4, m6 = m(0.002, 2500), m(0.003, 2500)
+S = {
+ "a01_settle_set_region_low": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 1, 0.002, m4), P(1, 2, 0.002, m4, 0.003, 0.00011309734), P(2, 2, 0.003, 0.00011309734),
+    W(1, 0.002, m4), W(2, 0.003, 0.00011309734)]},
+ "a02_pour_delete_region": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 1, 0.003, 0.00028274334, match="smallest"), P(1, 1, 0.0015, 3.5342917e-05, match="largest"),
+    W(1, 0.003, 0.00028274334, match="smallest"), W(1, 0.0015, 3.5342917e-05, match="largest")]},
+ "a04_loop_until_time": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 1, 0.002, m4, stage=1), P(1, 1, 0.0025, m(0.0025, 2000), stage=2), W(1, 0.0025, m(0.0025, 2000), stage=2)]},
+ "a05_loop_until_ke_iter_size": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 1, 0.0021, 8.3775804e-05, stage=2), W(1, 0.0021, 8.3775804e-05, stage=2)]},
+ "a07_adapt_grow_then_set_density": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 1, 0.003, 0.00011309734), P(1, 2, 0.003, 0.00011309734, 0.003, 0.00028274334), P(2, 2, 0.003, 0.00028274334),
+    W(2, 0.003, 0.00028274334)]},
+ "a08_adapt_reset_yes": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.002, m4, 0.003, 0.00028274334), W(2, 0.003, 0.00028274334)]},
+}
+
+def LLk(k):
+    return ["pair_style granular", f"pair_coeff * * hooke {k} 3000 damping mass_velocity tangential linear_nohistory 1 0.3"]
+
+
+S.update({
+ "a06_pours_in_loop_stages": {"engine": "lammps", "lines": LLk(3000), "checks": [
+    P(1, 1, 0.0015, 3.5342917e-05, stage=1, spec_override={"lines": LLk(1000)}),
+    P(1, 2, 0.0015, 3.5342917e-05, 0.002, 8.3775804e-05, stage=2, spec_override={"lines": LLk(2000)}),
+    P(1, 2, 0.0015, 3.5342917e-05, 0.0025, 0.00016362462, stage=3, match="smallest"),
+    P(2, 2, 0.0025, 0.00016362462, stage=3, match="smallest"),
+    W(2, 0.0025, 0.00016362462, stage=3, match="smallest")]},
+})
+
+H4 = "hooke 4000 1000 damping mass_velocity tangential linear_nohistory 1 0.3"
+TS = "hertz/material 1e7 0.5 0.3 damping tsuji tangential linear_nohistory 1 0.3 limit_damping"
+S.update({
+ "a09_reset_timestep_step_branch": {"engine": "lammps", "lines": LL, "checks": [P(1, 1, 0.003, m4), W(1, 0.003, m4)]},
+ "a10_write_read_restart_lammps": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {H4}"], "checks": [
+    P(1, 2, 0.002, m4, 0.003, 0.00011309734), P(2, 2, 0.003, 0.00011309734),
+    W(2, 0.003, 0.00011309734, wall=f"fix floor all wall/gran granular {H4} zplane 0 NULL")]},
+ "a15_run_every_set": {"engine": "lammps", "lines": LL, "checks": [P(1, 2, 0.002, m4, 0.0035, m4), P(2, 2, 0.0035, m4)]},
+ "a19_step_var_after_run": {"engine": "lammps", "lines": LL + [
+    "pair_coeff 2 2 hooke 8000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"], "checks": [
+    P(1, 1, 0.002, m4), P(2, 2, 0.002, m4)]},
+ "a20_group_region_after_fall_move": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.002, m4, 0.002, 0.00016755161), P(2, 2, 0.002, 0.00016755161), W(2, 0.002, 0.00016755161)]},
+ "a25_halt_on_energy_then_set_region": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.002, m4, 0.0025, 9.817477e-05), P(2, 2, 0.0025, 9.817477e-05), W(2, 0.0025, 9.817477e-05)]},
+ "a26_pour_then_set_type_all": {"engine": "lammps", "lines": LL, "checks": [P(1, 1, 0.002, 3.3510322e-05), W(1, 0.002, 3.3510322e-05)]},
+ "a23_move_null_type2": {"engine": "lammps", "lines": LL, "checks": [P(1, 2, 0.002, m4, 0.003, m6)]},
+ "a24_move_group_regiven": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.002, m4, 0.003, m6, stage=1, still2=True), P(1, 2, 0.002, m4, 0.003, m6, stage=2)]},
+ "a16_efield_charged_uncharged": {"engine": "lammps", "atom_style": "hybrid sphere charge", "lines": LL, "checks": [
+    P(1, 1, 0.002, m4, speed_idx=[0, 2]),
+    P(1, 2, 0.002, m4, speed_idx=[0, 2], spec_override={"post": ["set atom 2 charge 1e-6", "fix ef all efield 1000 0 0"]}),
+    P(2, 2, 0.002, m4, speed_idx=[0, 2], spec_override={"post": ["set atom 1 charge 1e-6", "set atom 2 charge 1e-6", "fix ef all efield 1000 0 0"]})]},
+ "a18_json_eps_at_dt_coarse": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.002, m4, 0.003, m6, at_dt=True), P(2, 2, 0.003, m6, at_dt=True), W(1, 0.002, m4, at_dt=True)]},
+ "a34_tsuji_eps_at_dt": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {TS}"], "checks": [
+    P(1, 2, 0.002, m4, 0.003, m6, at_dt=True, speed_idx=[0, 2, 4]),
+    W(1, 0.002, m4, wall=f"fix floor all wall/gran granular {TS} zplane 0 NULL", at_dt=True, speed_idx=[0, 4])]},
+ "a03b_count_immediate_after_pour_if": {"engine": "lammps", "lines": LL, "checks": [P(1, 1, 0.003, m4), W(1, 0.003, m4)]},
+ "a03c_atoms_thermo_after_pour": {"engine": "lammps", "lines": LL, "checks": [P(1, 1, 0.003, m4), W(1, 0.003, m4)]},
+})
+
+def RW(fid, k, eta, region):
+    return f"fix {fid} all wall/gran/region granular hooke {k} {eta} damping mass_velocity tangential linear_nohistory 1 0.3 region {region}"
+
+
+def PW(fid, k, eta, rest):
+    return f"fix {fid} all wall/gran granular hooke {k} {eta} damping mass_velocity tangential linear_nohistory 1 0.3 {rest}"
+
+
+FL = "region fl plane 0 0 0 0 0 1 side in units box"
+S.update({
+ "w01_primitive_and_region_plane_same_z": {"engine": "lammps", "lines": LL, "pre": [FL], "checks": [
+    W(1, 0.002, m4, wall_id="floor", label="floor alone"),
+    W(1, 0.002, m4, wall=RW("rw", 5000, 3000, "fl"), wall_id="rw", label="rw alone"),
+    W(1, 0.002, m4, wall_id="floor", label="floor row vs both walls (engine truth)", spec_override={"post": [RW("rw", 5000, 3000, "fl")]}),
+    W(1, 0.002, m4, wall=RW("rw", 5000, 3000, "fl"), wall_id="rw", label="rw row vs both walls (engine truth)", spec_override={"post": [FLOOR]})]},
+ "w02_two_region_walls_shared_boundary": {"engine": "lammps", "lines": LL,
+    "pre": ["region cup block -0.02 0.02 -0.02 0.02 0 0.09 side in units box", FL], "checks": [
+    W(1, 0.002, m4, wall=RW("rw1", 4000, 3000, "cup"), wall_id="rw1", label="rw1 alone"),
+    W(1, 0.002, m4, wall=RW("rw2", 1000, 1000, "fl"), wall_id="rw2", label="rw2 alone"),
+    W(1, 0.002, m4, wall=RW("rw1", 4000, 3000, "cup"), wall_id="rw1", label="rw1 row vs both (engine truth)", spec_override={"post": [RW("rw2", 1000, 1000, "fl")]}),
+    W(1, 0.002, m4, wall=RW("rw2", 1000, 1000, "fl"), wall_id="rw2", label="rw2 row vs both (engine truth)", spec_override={"post": [RW("rw1", 4000, 3000, "cup")]})]},
+ "w03_cylinder_region_and_zcylinder": {"engine": "lammps", "lines": LL,
+    "pre": ["region cyl cylinder z 0 0 0.02 -0.05 0.05 side in units box"], "checks": [
+    W(1, 0.002, m4, wall=RW("rw", 4000, 3000, "cyl"), wall_id="rw", axis="x", sign=-1, zw=0.02, z0=0.018, label="rw alone"),
+    W(1, 0.002, m4, wall=PW("zc", 2000, 3000, "zcylinder 0.02"), wall_id="zc", axis="x", sign=-1, zw=0.02, z0=0.018, label="zc alone"),
+    W(1, 0.002, m4, wall=RW("rw", 4000, 3000, "cyl"), wall_id="rw", axis="x", sign=-1, zw=0.02, z0=0.018, label="rw row vs both (engine truth)",
+      spec_override={"post": [PW("zc", 2000, 3000, "zcylinder 0.02")]}),
+    W(1, 0.002, m4, wall=PW("zc", 2000, 3000, "zcylinder 0.02"), wall_id="zc", axis="x", sign=-1, zw=0.02, z0=0.018, label="zc row vs both (engine truth)",
+      spec_override={"post": [RW("rw", 4000, 3000, "cyl")]})]},
+ "w04_sphere_region_twice": {"engine": "lammps", "lines": LL,
+    "pre": ["region s1 sphere 0 0 0.05 0.02 side in units box", "region s2 sphere 0 0 0.05 0.02 side in units box"], "checks": [
+    W(1, 0.002, m4, wall=RW("rw1", 2000, 3000, "s1"), wall_id="rw1", zw=0.03, z0=0.032, label="rw1 alone"),
+    W(1, 0.002, m4, wall=RW("rw1", 2000, 3000, "s1"), wall_id="rw1", zw=0.03, z0=0.032, label="rw1 row vs both (engine truth)",
+      spec_override={"post": [RW("rw2", 2000, 3000, "s2")]})]},
+ "w05_cone_and_plane": {"engine": "lammps", "lines": LL,
+    "pre": ["region cn cone z 0 0 0.025 0.01 0 0.09 side in units box", FL], "checks": [
+    W(1, 0.002, m4, wall=RW("rw2", 2000, 3000, "fl"), wall_id="rw2", label="rw2 (plane) alone"),
+    W(1, 0.002, m4, wall=RW("rw2", 2000, 3000, "fl"), wall_id="rw2", label="rw2 row vs plane + cone cap (engine truth)",
+      spec_override={"post": [RW("rw1", 4000, 3000, "cn")]})]},
+ "w06_same_zplane_twice": {"engine": "lammps", "lines": LL, "checks": [
+    W(1, 0.002, m4, wall=PW("f1", 2000, 3000, "zplane 0 NULL"), wall_id="f1", label="f1 alone"),
+    W(1, 0.002, m4, wall=PW("f1", 2000, 3000, "zplane 0 NULL"), wall_id="f1", label="f1 row vs both (engine truth)",
+      spec_override={"post": [PW("f2", 2000, 3000, "zplane 0.0 0.2")]})]},
+ "w07_wall_on_type2_group_region_on_all": {"engine": "lammps", "lines": LL, "pre": [FL], "checks": [
+    W(1, 0.002, m4, wall=RW("rw", 2000, 3000, "fl"), wall_id="rw", label="type 1: rw alone (engine truth: f2 is on type 2 only)"),
+    W(2, 0.002, m4, wall=RW("rw", 2000, 3000, "fl"), wall_id="rw", label="type 2: rw row vs both (engine truth)",
+      spec_override={"post": ["group t2 type 2", "fix f2 t2 wall/gran granular hooke 8000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL"]}),
+    W(2, 0.002, m4, wall="group t2 type 2", wall_id="f2", label="type 2: f2 row vs both (engine truth)",
+      spec_override={"post": ["fix f2 t2 wall/gran granular hooke 8000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL", RW("rw", 2000, 3000, "fl")]})]},
+ "w08_floor_and_ceiling_distinct": {"engine": "lammps", "lines": LL, "pre": ["region top plane 0 0 0.09 0 0 -1 side in units box"], "checks": [
+    W(1, 0.002, m4, wall_id="floor", label="floor (engine: floor and ceiling both present)", spec_override={"post": [RW("rw", 5000, 3000, "top")]}),
+    W(1, 0.002, m4, wall=RW("rw", 5000, 3000, "top"), wall_id="rw", sign=-1, zw=0.09, z0=0.088, label="ceiling (both present)",
+      spec_override={"post": [FLOOR]})]},
+ "w09_region_plane_nearly_same_z": {"engine": "lammps", "lines": LL, "pre": ["region fl plane 0 0 1e-4 0 0 1 side in units box"], "checks": [
+    W(1, 0.002, m4, wall=RW("rw", 5000, 3000, "fl"), wall_id="rw", zw=1e-4, z0=0.0021, label="rw alone", speed_idx=[0, 2, 4]),
+    W(1, 0.002, m4, wall=RW("rw", 5000, 3000, "fl"), wall_id="rw", zw=1e-4, z0=0.0021, label="rw row vs both (engine truth)", speed_idx=[0, 2, 4],
+      spec_override={"post": [FLOOR]})]},
+})
+
+if __name__ == "__main__":
+    for k in (sys.argv[1:] or S):
+        json.dump(S[k], open(os.path.join(D, k, "spec.json"), "w"), indent=1)
+        print("spec", k)
