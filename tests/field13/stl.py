@@ -1,6 +1,7 @@
 """Field round 13: stand-in ASCII STL meshes for the LIGGGHTS decks (no import from the project).
 usage: python stl.py plane Z HALF OUT.stl      a square at height Z, |x|,|y| <= HALF, normal +z
        python stl.py cylinder R Z0 Z1 N OUT.stl   the side of a z-cylinder of radius R, N facets round
+       python stl.py xcylinder R YC ZC X0 X1 N OUT.stl   the side of an x-cylinder about (YC, ZC)
 """
 import math, sys
 
@@ -20,6 +21,14 @@ if kind == "plane":
     z, h, fn = float(sys.argv[2]), float(sys.argv[3]), sys.argv[4]
     facet(out, (-h, -h, z), (h, -h, z), (h, h, z))
     facet(out, (-h, -h, z), (h, h, z), (-h, h, z))
+elif kind == "xcylinder":
+    r, yc, zc, x0, x1, n, fn = (float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4]), float(sys.argv[5]),
+                                float(sys.argv[6]), int(sys.argv[7]), sys.argv[8])
+    for k in range(n):
+        a0, a1 = 2 * math.pi * k / n, 2 * math.pi * (k + 1) / n
+        p0 = (yc + r * math.cos(a0), zc + r * math.sin(a0)); p1 = (yc + r * math.cos(a1), zc + r * math.sin(a1))
+        facet(out, (x0, p0[0], p0[1]), (x0, p1[0], p1[1]), (x1, p1[0], p1[1]))
+        facet(out, (x0, p0[0], p0[1]), (x1, p1[0], p1[1]), (x1, p0[0], p0[1]))
 else:
     r, z0, z1, n, fn = float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4]), int(sys.argv[5]), sys.argv[6]
     for k in range(n):
