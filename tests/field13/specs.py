@@ -82,9 +82,6 @@ S.update({
  "a25_halt_on_energy_then_set_region": {"engine": "lammps", "lines": LL, "checks": [
     P(1, 2, 0.002, m4, 0.0025, 9.817477e-05), P(2, 2, 0.0025, 9.817477e-05), W(2, 0.0025, 9.817477e-05)]},
  "a26_pour_then_set_type_all": {"engine": "lammps", "lines": LL, "checks": [P(1, 1, 0.002, 3.3510322e-05), W(1, 0.002, 3.3510322e-05)]},
- "a23_move_null_type2": {"engine": "lammps", "lines": LL, "checks": [P(1, 2, 0.002, m4, 0.003, m6)]},
- "a24_move_group_regiven": {"engine": "lammps", "lines": LL, "checks": [
-    P(1, 2, 0.002, m4, 0.003, m6, stage=1, still2=True), P(1, 2, 0.002, m4, 0.003, m6, stage=2)]},
  "a16_efield_charged_uncharged": {"engine": "lammps", "atom_style": "hybrid sphere charge", "lines": LL, "checks": [
     P(1, 1, 0.002, m4, speed_idx=[0, 2]),
     P(1, 2, 0.002, m4, speed_idx=[0, 2], spec_override={"post": ["set atom 2 charge 1e-6", "fix ef all efield 1000 0 0"]}),
@@ -261,6 +258,31 @@ S.update({
     P(1, 2, 0.002, m4, 0.003, m6)]},
  "a36_shell_in_loop_real_runs": {"engine": "lammps", "lines": LL, "checks": [
     P(1, 1, 0.002, m(0.002, 1000)), W(1, 0.002, m(0.002, 1000))]},
+})
+
+GR = ["fix m1 all property/global youngsModulus peratomtype 5.e6", "fix m2 all property/global poissonsRatio peratomtype 0.45",
+      "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.3",
+      "fix m4 all property/global coefficientFriction peratomtypepair 1 0.5",
+      "pair_style gran model hertz tangential history", "pair_coeff * *"]
+S.update({
+ "R04_liggghts_packing": {"engine": "liggghts", "ntypes": 1, "lines": GR, "checks": [
+    P(1, 1, 0.005, m(0.005, 2500), 0.008, m(0.008, 2500), stage=1, speed_idx=[0, 4]),
+    P(1, 1, 0.00694, m(0.00694, 2500), 0.0111, m(0.0111, 2500), stage=3, speed_idx=[2], label="types 1 1 at the grown sizes"),
+    W(1, 0.005, m(0.005, 2500), wall="fix zwalls1 all wall/gran model hertz tangential history primitive type 1 zplane 0.00", wall_id="zwalls1", speed_idx=[2])]},
+ "R05_liggghts_chute_wear": {"engine": "liggghts", "ntypes": 1, "lines": GR, "checks": [
+    P(1, 1, 0.0015, m(0.0015, 2500), 0.0025, m(0.0025, 2500), speed_idx=[0, 4])]},
+})
+
+for _k in ("a13_shell_cd_touch", "a14_outputs_same_names", "a32_periodic_restart_avetime_outputs"):
+    S[_k] = {"engine": "lammps", "lines": LL, "checks": [P(1, 1, 0.002, m4), W(1, 0.002, m4)]}
+for _k in ("L07_shell", "L08_outputs_same_names", "L19_periodic_restart_outputs"):
+    S[_k] = {"engine": "liggghts", "lines": GL, "checks": [P(1, 1, 0.002, m4), W(1, 0.002, m4, wall=GWALL, wall_id="wall")]}
+
+S.update({
+ "a23b_move_null_type2_groups_after_atoms": {"engine": "lammps", "lines": LL, "checks": [P(1, 2, 0.002, m4, 0.003, m6)]},
+ "a25b_halt_then_step_branch": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 1, 0.002, 3.3510322e-05), W(1, 0.002, 3.3510322e-05)]},
+ "a24_move_group_regiven": {"engine": "lammps", "lines": LL, "checks": [P(1, 2, 0.002, m4, 0.003, m6, stage=2)]},
 })
 
 # LIGGGHTS refuses a run without an atom of type 1 ("Atom types must start from 1 for granular simulations"): where
