@@ -285,6 +285,8 @@ S.update({
  "a24_move_group_regiven": {"engine": "lammps", "lines": LL, "checks": [P(1, 2, 0.002, m4, 0.003, m6, stage=2)]},
 })
 
+S["a37_budget0_pour_then_set_type"] = dict(S["a26_pour_then_set_type_all"])
+
 # LIGGGHTS refuses a run without an atom of type 1 ("Atom types must start from 1 for granular simulations"): where
 # a check holds no type-1 sphere, one small type-1 sphere is parked far from the pair, touching nothing.
 for _k, _sp in S.items():
