@@ -287,6 +287,9 @@ S.update({
 
 S["a37_budget0_pour_then_set_type"] = dict(S["a26_pour_then_set_type_all"])
 
+S["a38_adapt_grow_then_run"] = {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.003, 0.00028274334), W(1, 0.003, 0.00028274334)]}
+
 # LIGGGHTS refuses a run without an atom of type 1 ("Atom types must start from 1 for granular simulations"): where
 # a check holds no type-1 sphere, one small type-1 sphere is parked far from the pair, touching nothing.
 for _k, _sp in S.items():
