@@ -127,8 +127,8 @@ def latex(rows) -> str:
     # the essential columns, upright on the page: the shape (sigma, s0, s1) and the estimate in 1 - eps are in
     # uniform_forms.csv
     lines = [r"\begin{tabular}{llllll}", r"\toprule",
-             r"$\alpha$ & $\gamma$ & $J + 1$ & error estimate in $\varepsilon$ "
-             r"& largest held-out error in $\varepsilon$ & overlap rule: $\bar J + 1$; estimates in $\varepsilon$, $1 - \varepsilon$ \\",
+             r"$\alpha$ & $\gamma$ & $N + 1$ & error estimate in $\varepsilon$ "
+             r"& largest held-out error in $\varepsilon$ & overlap rule: $\bar N + 1$; estimates in $\varepsilon$, $1 - \varepsilon$ \\",
              r"\midrule"]
     for r in rows:
         ab = f"{frac_tex(Fraction(r['alpha']))} & {frac_tex(Fraction(r['gamma']))}"

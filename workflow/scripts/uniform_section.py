@@ -432,7 +432,7 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
 force_tables = two_tables(r"lllllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
                           r"error estimate: $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
 # the force law's column as wide as its longest name (a fixed 2.1 cm broke Hertz--Kuwabara--Kono over three lines)
-overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar J + 1$ & "
+overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar N + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
@@ -487,7 +487,7 @@ $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P}
 that of \ArtEq{{eq:uniform}}):
 \begin{{equation}}
 \frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Theta \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
-\exp\!\Big[\exp(-\bar Q/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar J}} \bar a_j \cos(j \arccos \bar u)\Big],
+\exp\!\Big[\exp(-\bar Q/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
 with $\bar b = (C_o C_1)^{{1/(\kappa - \nu)}}$ and $\Theta = \bar b^{{\kappa}}/C_o$, so that
