@@ -422,7 +422,8 @@ coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) if j < l
 def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list) -> str:
     """A form's table: one row per variant, then its numbers in one column per variant."""
     # 4pt between columns: with the law's name on one line the default 6pt made the first table 17pt too wide
-    return "\n".join([r"\setlength{\tabcolsep}{4pt}", rf"\begin{{tabular}}{{{cols}}}", r"\toprule", header + r" \\", r"\midrule", *rows,
+    # 3pt: at \small (every script at 7 pt) the article's table of the forms was 14pt wider than the text at 4pt
+    return "\n".join([r"\setlength{\tabcolsep}{3pt}", rf"\begin{{tabular}}{{{cols}}}", r"\toprule", header + r" \\", r"\midrule", *rows,
                       r"\bottomrule", r"\end{tabular}", "", r"\vspace{1ex}",
                       rf"\begin{{tabular}}{{l{'r' * len(names)}}}", r"\toprule",
                       " & " + " & ".join(stacked(law_name(n)) for n in names) + r" \\", r"\midrule", *coef_rows,
@@ -504,7 +505,7 @@ For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula:
 $\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (\ArtSec{{sec:exact-family}}); the integrations cover those pairs.
 
 \begin{{table}}[htbp]
-\centering\footnotesize
+\centering\small
 \caption{{The overlap rule's form (\ref{{eq:uniform-overlap}}) of each force law: its number of coefficients and
 twice the largest relative errors in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$
 (over $\Omega \geq 1$), measured on the model-selection, test and dense-scan points, plus the accuracy of the reference integration;
