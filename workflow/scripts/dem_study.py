@@ -153,12 +153,13 @@ macros = {
     "DemSpeedMin": sci(min(P["speeds"]), 2), "DemSpeedMax": sci(max(P["speeds"]), 2),
     "DemSpeedCount": str(len(P["speeds"])), "DemSteps": str(P["lammps_steps"]),
     # the scaled parameter the runs span (the same under both rules: Omega does not depend on the end rule),
-    # so that the text can say which regime the engine was tested in and which it was not
-    "DemOmegaMin": sci(min(contacts["force"].omega(g) for g in P["speeds"]), 3),
-    "DemOmegaMax": sci(max(contacts["force"].omega(g) for g in P["speeds"]), 3),
+    # so that the text can say which regime the engine was tested in and which it was not; a range the
+    # text states as bounds ("stay at Omega >= ..."), so its ends are rounded outward
+    "DemOmegaMin": sci_down(min(contacts["force"].omega(g) for g in P["speeds"]), 3),
+    "DemOmegaMax": sci_up(max(contacts["force"].omega(g) for g in P["speeds"]), 3),
     # printed as bounds ("agrees to a relative ..."): rounded outward, as every bound the paper prints
     "DemDevForce": sci_up(dev["force"], 2), "DemDevOverlap": sci_up(dev["overlap"], 2),
-    "DemDevForceDtTwo": sci(dev_dt2["force"], 2), "DemDevOverlapDtTwo": sci(dev_dt2["overlap"], 2),
+    "DemDevForceDtTwo": sci_up(dev_dt2["force"], 2), "DemDevOverlapDtTwo": sci_up(dev_dt2["overlap"], 2),
     # the fourth run's test of the error model, over both rules and every speed
     "DemOrderMin": fixed(runs["observed_order"].min(), 3), "DemOrderMax": fixed(runs["observed_order"].max(), 3),
     "DemResidualGammaMax": sci_up(runs["residual_gamma"].max(), 2),

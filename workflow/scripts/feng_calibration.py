@@ -17,7 +17,7 @@ import math
 from fractions import Fraction
 
 import pandas as pd
-from restitution_workflow.latex import fixed, frac_tex, sci, sci_up
+from restitution_workflow.latex import fixed, frac_tex, sci, sci_down, sci_up
 from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.core.collision import collide
@@ -89,9 +89,10 @@ macros = {
     "FengTargetMax": fixed(max(p.targets), 2),
     "FengOverlapMaxDev": sci_up(float(overlap_dev), 2),   # "to a relative": a bound, rounded up
     "FengOverlapMaxBound": sci(float(table["bound_overlap"].max()), 2),
-    "FengForceMinGap": sci(float(table["rel_force"].min()), 2),
-    "FengForceMaxGap": sci(float(table["rel_force"].max()), 2),
-    "FengRefMaxDev": sci(float(ref_dev), 2),
+    # a range ("by a relative ... to ..."): its ends rounded outward
+    "FengForceMinGap": sci_down(float(table["rel_force"].min()), 2),
+    "FengForceMaxGap": sci_up(float(table["rel_force"].max()), 3),
+    "FengRefMaxDev": sci_up(float(ref_dev), 2),   # "agrees ... to": a bound
     "FengRtol": sci(p.rtol, 1),
 }
 write_text(snakemake.output.values, "\n".join(

@@ -68,7 +68,9 @@ for j, g in enumerate(gammas):
         st_ = dict(styles[a], markevery=(alphas.index(a) % 4 + 1, 6))   # markers offset per alpha
         axes[0, j].plot(w, 1.0 - d["eps"], color=c, lw=1.2, label=rf"$\alpha = {frac(a)}$", **st_)
         axes[1, j].plot(w, d["tau_c"], color=c, lw=1.2, **st_)
-        for col, marker, size in (("err_tight", "o", 9), ("err_ref", "s", 16), ("err_exact", "x", 9)):
+        # sizes in pt^2 at print size (the figure is drawn at the width it prints): about 4.5 to 5 pt
+        # across, so that each marker's shape can be told at print size (at 3 pt it could not)
+        for col, marker, size in (("err_tight", "o", 20), ("err_ref", "s", 25), ("err_exact", "x", 20)):
             e = d[col].to_numpy(dtype=float)
             m = np.isfinite(e)
             axes[2, j].scatter(w[m], np.maximum(e[m], 1e-17), s=size, marker=marker,

@@ -118,9 +118,9 @@ macros = {
     "OverlapRtol": sci(RTOL, 1),     # the direct integrations' relative tolerance (Table 2, the text)
     "OverlapMaxDevSmall": sci_up(max(r["max_dev_small"] for r in rows), 2),   # "holds to": a bound, rounded up
     "OverlapHighprecOmega": sci(P.highprec_omega, 1), "OverlapHighprecDigits": str(P.highprec_digits),
-    "OverlapMaxDevHighprec": sci(max(abs(r["dev_highprec"]) for r in rows), 2),
+    "OverlapMaxDevHighprec": sci_up(max(abs(r["dev_highprec"]) for r in rows), 2),   # "agrees ... to": a bound
     "OverlapMaxCError": sci_up(max(r["C_error"] for r in rows), 2),     # "at most": a bound, rounded up
-    "OverlapMaxSlopeDev": sci(max(abs(r["slope"] - float(Fraction(r["k"]))) for r in rows), 2),
+    "OverlapMaxSlopeDev": sci_up(max(abs(r["slope"] - float(Fraction(r["k"]))) for r in rows), 2),
     "OverlapDevTenth": sci_up(dev_tenth, 2), "OverlapTenthOmega": sci(TENTH, 2), "OverlapDevModerateMax": sci(max(abs(r[f"dev_{max(mods):g}"]) for r in rows), 2),
     "OverlapModerateMax": sci(max(mods), 2), "OverlapFloorFactor": f"{FLOOR_FACTOR:g}",
     "OverlapMainK": frac(main["k"]), "OverlapMainC": sci(main["C"], 10),

@@ -15,7 +15,7 @@
 import numpy as np
 from fractions import Fraction
 
-from restitution_workflow.latex import fixed, frac_tex, sci
+from restitution_workflow.latex import fixed, frac_tex, sci, sci_down, sci_up
 from restitution_workflow.pipeline import start, write_text
 
 from restitution.core.asymptotics import elastic_limit
@@ -218,8 +218,12 @@ macros = {
     # Schwager and Poeschel's h_4 as quoted, nu C1^2 to two more decimals than the quotation, their distance
     "SPQuotedCTwo": quoted_text, "SPCTwoLong": fixed(limit.C2, quoted_decimals + 1),
     "SPQuotedCTwoDev": sci(quoted_dev, 2), "SPQuotedCTwoRelDev": sci(quoted_dev / limit.C2, 2),
-    "SPQuotedRounding": sci(quoted_rounding, 1),
-    "SPPadeHFiveDev": sci(end_pade_dev, 1),
+    # the article's one clause on it: the distance as a lower bound ("differs by ..., more than its
+    # rounding"), so rounded down, beside the rounding as an upper bound
+    "SPQuotedCTwoRelDevAtLeast": sci_down(abs(quoted_dev / limit.C2), 1),
+    "SPQuotedRounding": sci_up(quoted_rounding, 1),
+    # agreements ("to ..."): bounds, rounded up
+    "SPPadeHFiveDev": sci_up(end_pade_dev, 1),
     "SPPadeHThree": sci(pade[3], 1),
     "SPPadeHSix": fixed(pade[6], 4),
     "SPHSix": val(h[6], h_err[6]),
@@ -227,7 +231,7 @@ macros = {
     "SPHSeven": fixed(h[7], 6),
     "SPHEight": val(h[8], h_err[8]),
     "SPHEightErr": sci(h_err[8], 1),
-    "SPOverlapCheckDev": sci(overlap_check, 1),
+    "SPOverlapCheckDev": sci_up(overlap_check, 1),
     "SPHalfWidth": str(INTERPOLANTS[0][0]),
     "SPEndOmegaMin": sci(min(p.end_omegas), 2),
     "SPEndOmegaMax": sci(max(p.end_omegas), 2),
@@ -236,25 +240,25 @@ macros = {
     "SPEndScaledPoints": str(len(end_scaled)),
     "SPEndRatioOmegaA": sci(END_RATIO_OMEGAS[0], 2), "SPEndRatioA": fixed(end_ratio[0], 3),
     "SPEndRatioOmegaB": sci(END_RATIO_OMEGAS[1], 2), "SPEndRatioB": fixed(end_ratio[1], 3),
-    "SPEndScaledSecondDev": sci(end_scaled_dev, 1),
+    "SPEndScaledSecondDev": sci_up(end_scaled_dev, 1),
     "SPFitHSixSpread": sci(fit_acc[6], 1),
     "SPFitHSevenSpread": sci(fit_acc[7], 1),
-    "SPFitHSixDev": sci(abs(fit_val[6] - h[6]), 1),
-    "SPFitHSevenDev": sci(abs(fit_val[7] - h[7]), 1),
-    "SPFitHFiveDev": sci(abs(fit_val[5] - h[5]), 1),
-    "SPFitHTwoDev": sci(abs(fit_val[2] - h[2]), 1),
+    "SPFitHSixDev": sci_up(abs(fit_val[6] - h[6]), 1),
+    "SPFitHSevenDev": sci_up(abs(fit_val[7] - h[7]), 1),
+    "SPFitHFiveDev": sci_up(abs(fit_val[5] - h[5]), 1),
+    "SPFitHTwoDev": sci_up(abs(fit_val[2] - h[2]), 1),
     "SPFitOmegaMin": sci(p.fit_omega[0], 2),
     "SPFitOmegaMax": sci(p.fit_omega[1], 2),
     "SPCheckOmega": sci(check_omega, 2),
-    "SPCheckDev": sci(max(check_dev, 1e-16), 1),
+    "SPCheckDev": sci_up(max(check_dev, 1e-16), 1),
     "SPRtol": sci(p.rtol, 1),
     "SPTruncFiveThousand": sci(abs(trunc[TRUNC_OMEGA][5]), 1),
     "SPTruncTopThousand": sci(abs(trunc[TRUNC_OMEGA][orders[-1]]), 1),
     "SPTruncFiveTen": sci(abs(trunc[p.omegas[0]][5]), 1),
-    "SPTruncTopTen": sci(abs(trunc[p.omegas[0]][orders[-1]]), 1),
+    "SPTruncTopTen": sci_up(abs(trunc[p.omegas[0]][orders[-1]]), 1),
     "SPTopOrder": str(orders[-1]),
     # a wrong h_6 would show in the K = 10 partial sum at the largest Omega, times s^6
-    "SPTruncTenLast": sci(abs(trunc[p.omegas[-1]][CHECK_ORDER]), 1),
+    "SPTruncTenLast": sci_up(abs(trunc[p.omegas[-1]][CHECK_ORDER]), 1),
     "SPLastOmega": sci(p.omegas[-1], 2),
     "SPHSixImplied": sci(abs(trunc[p.omegas[-1]][CHECK_ORDER]) / p.omegas[-1] ** (-6 * float(S_POWER)), 1),
 }

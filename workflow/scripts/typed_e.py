@@ -14,7 +14,7 @@ import math
 import re
 
 import pandas as pd
-from restitution_workflow.latex import esc, fixed, sci, sci_up
+from restitution_workflow.latex import esc, fixed, fixed_down, fixed_up, sci, sci_up
 from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.dem.calibrate import calibrate
@@ -121,10 +121,12 @@ macros = {
     # "within": bounds, rounded up like every bound the article prints (1.0145e-4 is not within 1.0e-4)
     **{f"TypedEFinest{name}": sci_up(finest[name], 2) for name in ("LAMMPS", "LIGGGHTS", "Yade", "Kratos")},
     "TypedEExtrapolatedMax": sci_up(extrapolated.max(), 2),    # "within": a bound, rounded up
-    "TypedETsujiRatioMin": fixed(ratio_grid[e_low], 3), "TypedETsujiRatioMax": fixed(ratio_grid[e_high], 3),
+    # ranges ("... to ... times LAMMPS'"): their ends rounded outward
+    "TypedETsujiRatioMin": fixed_down(ratio_grid[e_low], 3), "TypedETsujiRatioMax": fixed_up(ratio_grid[e_high], 3),
     "TypedETsujiRatioMinAt": fixed(e_low, 3), "TypedETsujiRatioMaxAt": fixed(e_high, 3),
     "TypedETsujiGridStep": fixed(TSUJI_STEP, 3),
-    "TypedETsujiRatioTableMin": fixed(min(ratio.values()), 3), "TypedETsujiRatioTableMax": fixed(max(ratio.values()), 3),
+    "TypedETsujiRatioTableMin": fixed_down(min(ratio.values()), 3),
+    "TypedETsujiRatioTableMax": fixed_up(max(ratio.values()), 3),
     "TypedETsujiRatioAtMid": fixed(ratio[MID], 4), "TypedEMinE": fixed(min(es), 2),
     "TypedETsujiSqrtTwoAtMid": fixed(sqrt2_eps["overlap"], 4),
     "TypedETsujiSqrtTwoLimitAtMid": fixed(sqrt2_eps["force"], 4),

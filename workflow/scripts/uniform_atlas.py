@@ -61,6 +61,13 @@ def write_table():
     write_text(snakemake.output.values, worst_values(rows))
 
 
+def held_out_tex(x) -> str:
+    """A largest held-out error as the documents print it: a maximum, rounded up, to three digits as the
+    article prints the same number for its own laws (uniform_section.py's CFTestEpsWorst), so that one
+    number has one printing in the table, the article and the abstract."""
+    return sci_up(x, 3)
+
+
 def worst_values(rows) -> str:
     """The article's summary of the table: its worst error figure and its worst error on the held-out
     points alone (the random test points and the dense scan, used for nothing else), each with the pair
@@ -87,7 +94,7 @@ def worst_values(rows) -> str:
         rf"\newcommand{{\UABoundEpsWorst}}{{{sci(bound['bound_eps'], 2)}}}",
         rf"\newcommand{{\UABoundEpsWorstPair}}{{{pair(bound)}}}",
         # "at most" in the abstract: a bound, rounded up
-        rf"\newcommand{{\UATestEpsWorst}}{{{sci_up(test['held_out_eps'], 2)}}}",
+        rf"\newcommand{{\UATestEpsWorst}}{{{held_out_tex(test['held_out_eps'])}}}",
         rf"\newcommand{{\UATestEpsWorstPair}}{{{pair(test)}}}",
         rf"\newcommand{{\UADenseOverSelection}}{{{dense_ratio:.3f}}}",
     ]) + "\n"
@@ -120,18 +127,18 @@ def latex(rows) -> str:
     # the essential columns, upright on the page: the shape (sigma, s0, s1) and the estimate in 1 - eps are in
     # uniform_forms.csv
     lines = [r"\begin{tabular}{llllll}", r"\toprule",
-             r"$\alpha$ & $\gamma$ & $J + 1$ & error estimate in $\varepsilon$ "
-             r"& largest held-out error in $\varepsilon$ & overlap rule: $\bar J + 1$; estimates in $\varepsilon$, $1 - \varepsilon$ \\",
+             r"$\alpha$ & $\gamma$ & $N + 1$ & error estimate in $\varepsilon$ "
+             r"& largest held-out error in $\varepsilon$ & overlap rule: $\bar N + 1$; estimates in $\varepsilon$, $1 - \varepsilon$ \\",
              r"\midrule"]
     for r in rows:
         ab = f"{frac_tex(Fraction(r['alpha']))} & {frac_tex(Fraction(r['gamma']))}"
         if r["form"] == "uniform" and (str(Fraction(r["alpha"])), str(Fraction(r["gamma"]))) in in_article:
             # the article's table of the uniform approximation prints this pair's shape, size and estimates
-            lines.append(rf"{ab} & \multicolumn{{2}}{{l}}{{in \ArtTab{{tab:uniform}}}} & {sci(r['held_out_eps'], 2)} & "
+            lines.append(rf"{ab} & \multicolumn{{2}}{{l}}{{in \ArtTab{{tab:uniform}}}} & {held_out_tex(r['held_out_eps'])} & "
                          + (rf"{r['overlap_n_coef']}; {sci(r['overlap_bound_eps'], 2)}, {sci(r['overlap_bound_one_minus_eps'], 2)} \\"
                             if r["overlap_form"] == "uniform" else r"sticks \\"))
         elif r["form"] == "uniform":
-            lines.append(rf"{ab} & {r['n_coef']} & {sci(r['bound_eps'], 2)} & {sci(r['held_out_eps'], 2)} & "
+            lines.append(rf"{ab} & {r['n_coef']} & {sci(r['bound_eps'], 2)} & {held_out_tex(r['held_out_eps'])} & "
                          + (rf"{r['overlap_n_coef']}; {sci(r['overlap_bound_eps'], 2)}, {sci(r['overlap_bound_one_minus_eps'], 2)} \\"
                             if r["overlap_form"] == "uniform" else r"sticks \\"))
         else:

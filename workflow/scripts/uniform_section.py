@@ -304,9 +304,10 @@ macros = {
     # the fitted ones, which choose the shape), the random test points and the dense scan, used for nothing else
     "CFValidationPoints": str(main["measured"]["n_selection"]), "CFTestPoints": str(main["measured"]["n_test"]),
     "CFDensePoints": str(main["measured"]["n_dense"]),
-    "CFTestEps": sci(held_out(main["measured"]), 2),
-    "CFTestLoss": sci(held_out(main["measured"], "one_minus_eps"), 2),
-    # three digits: the error estimate (twice the largest error on any set, plus the reference accuracy) is
+    # largest errors on the held-out points: maxima, rounded up
+    "CFTestEps": sci_up(held_out(main["measured"]), 2),
+    "CFTestLoss": sci_up(held_out(main["measured"], "one_minus_eps"), 2),
+    # three digits, as Table S16 of the supplement prints it (uniform_atlas.py's held_out_tex): the error estimate (twice the largest error on any set, plus the reference accuracy) is
     # printed beside it, and at two digits, rounded up, the two could read as inconsistent
     "CFTestEpsWorst": sci_up(held_out(forms[worst_test]["measured"]), 3),
     "CFTestEpsWorstLaw": esc(law_name(worst_test)),
@@ -421,7 +422,8 @@ coef_rows += [" & ".join([rf"$a_{{{j}}}$"] + [sci(forms[n]["a"][j], 12) if j < l
 def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list) -> str:
     """A form's table: one row per variant, then its numbers in one column per variant."""
     # 4pt between columns: with the law's name on one line the default 6pt made the first table 17pt too wide
-    return "\n".join([r"\setlength{\tabcolsep}{4pt}", rf"\begin{{tabular}}{{{cols}}}", r"\toprule", header + r" \\", r"\midrule", *rows,
+    # 3pt: at \small (every script at 7 pt) the article's table of the forms was 14pt wider than the text at 4pt
+    return "\n".join([r"\setlength{\tabcolsep}{3pt}", rf"\begin{{tabular}}{{{cols}}}", r"\toprule", header + r" \\", r"\midrule", *rows,
                       r"\bottomrule", r"\end{tabular}", "", r"\vspace{1ex}",
                       rf"\begin{{tabular}}{{l{'r' * len(names)}}}", r"\toprule",
                       " & " + " & ".join(stacked(law_name(n)) for n in names) + r" \\", r"\midrule", *coef_rows,
@@ -431,7 +433,7 @@ def two_tables(cols: str, header: str, rows: list, names: list, coef_rows: list)
 force_tables = two_tables(r"lllllllll", r"force law & $\alpha$ & $\gamma$ & $b$ & $c_{\mathrm b}$ & $\sigma$ & $s_0$ & $s_1$ & "
                           r"error estimate: $\varepsilon$, $1-\varepsilon$", rows, coef_names, coef_rows)
 # the force law's column as wide as its longest name (a fixed 2.1 cm broke Hertz--Kuwabara--Kono over three lines)
-overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar J + 1$ & "
+overlap_tables = two_tables(r"lllllll", r"force law & $\alpha$ & $\gamma$ & $\kappa$ & $\bar N + 1$ & "
                             r"$2\times$ max.\ error $\varepsilon$ & $2\times$ max.\ error $1-\varepsilon$", overlap_rows, overlap_names,
                             overlap_coef_rows)
 text = rf"""
@@ -486,7 +488,7 @@ $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P}
 that of \ArtEq{{eq:uniform}}):
 \begin{{equation}}
 \frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Theta \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
-\exp\!\Big[\exp(-\bar Q/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar J}} \bar a_j \cos(j \arccos \bar u)\Big],
+\exp\!\Big[\exp(-\bar Q/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
 with $\bar b = (C_o C_1)^{{1/(\kappa - \nu)}}$ and $\Theta = \bar b^{{\kappa}}/C_o$, so that
@@ -503,7 +505,7 @@ For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula:
 $\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (\ArtSec{{sec:exact-family}}); the integrations cover those pairs.
 
 \begin{{table}}[htbp]
-\centering\footnotesize
+\centering\small
 \caption{{The overlap rule's form (\ref{{eq:uniform-overlap}}) of each force law: its number of coefficients and
 twice the largest relative errors in $\varepsilon$ (over $10^{{-8}} \leq \Omega \leq 10^{{8}}$) and in $1 - \varepsilon$
 (over $\Omega \geq 1$), measured on the model-selection, test and dense-scan points, plus the accuracy of the reference integration;

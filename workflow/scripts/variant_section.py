@@ -69,7 +69,7 @@ for f, text in what.items():
             rf"  \caption{{{name} ($\alpha = {T['ExpAlpha']}$, $\gamma = {T['ExpGamma']}$, "
             rf"$D_1 = {T['DOne']}$, $D_2 = {T['DTwo']}$): {text}; the main figure's counterpart for this force law.}}",
             rf"  \label{{fig:{v}-{f}}}", r"\end{figure}", ""]
-out += [r"\begin{table}[tbp]", r"  \centering", r"  \scriptsize",
+out += [r"\begin{table}[tbp]", r"  \centering", r"  \small",
         rf"  \input{{{d}/series/table.tex}}",
         rf"  \caption{{Nonzero coefficients of the forward and inverse series for the law {name}, "
         rf"$x_n = \sum c\,\tau^{{\text{{power}}}}$ up to $\tau^{{{T['SeriesMaxPower']}}}$, exact rationals "
@@ -109,7 +109,7 @@ if raw["FitApplies"]:
                rf"$c_1 = {T['FitCOne']} \pm {T['FitCOneErr']}$, $c_2 = {T['FitCTwo']} \pm {T['FitCTwoErr']}$, "
                rf"whose largest residual in $\tilde\Omega$ is ${T['FitMaxResidual']}$ (rms ${T['FitRMS']}$). "
                rf"Table~\ref{{tab:eps-errors-{v}}} gives the error in $\varepsilon(g)$ of each relation.")
-    out += ["", r"\begin{table}[tbp]", r"  \centering", r"  \footnotesize",
+    out += ["", r"\begin{table}[tbp]", r"  \centering", r"  \small",
             rf"  \fitwidth{{\input{{{d}/connection/eps_errors.tex}}}}",
             rf"  \caption{{{name}: error of $\varepsilon$ from each relation "
             rf"$\tilde\Omega = c_0 + c_1\Omega + c_2\Omega^2$ against the reference over the {T['GPoints']} "

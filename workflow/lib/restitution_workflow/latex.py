@@ -59,6 +59,35 @@ def sci_down(x, sig: int = 2) -> str:
     return sci(x if x is None else outward(x, sig, upper=False), sig)
 
 
+def fixed_up(x, decimals: int = 4) -> str:
+    """An upper bound x as `fixed` prints it, rounded up at its last decimal, so that it still bounds.
+
+    Examples
+    --------
+    >>> fixed_up(1.46182, 3), fixed_up(1.0700, 2)
+    ('1.462', '1.07')
+    """
+    return fixed(_quantize(x, decimals, upper=True), decimals)
+
+
+def fixed_down(x, decimals: int = 4) -> str:
+    """A lower bound x as `fixed` prints it, rounded down at its last decimal, so that it still bounds.
+
+    Examples
+    --------
+    >>> fixed_down(1.40495, 3)
+    '1.404'
+    """
+    return fixed(_quantize(x, decimals, upper=False), decimals)
+
+
+def _quantize(x, decimals: int, *, upper: bool):
+    if x is None or not math.isfinite(x):
+        return x
+    d = Decimal(repr(float(x))).quantize(Decimal(1).scaleb(-decimals), rounding=ROUND_CEILING if upper else ROUND_FLOOR)
+    return float(d)
+
+
 def fixed(x, decimals: int = 4) -> str:
     """x with a fixed number of decimals (--- for None/NaN), a real minus sign in math mode."""
     if x is None or (isinstance(x, float) and not math.isfinite(x)):
