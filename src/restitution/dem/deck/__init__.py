@@ -96,7 +96,7 @@ from .meeting import excluded, held_contact, integrators, motion
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
-from ..engines.lammps.deck import DEFAULT_DT, region_number
+from ..engines.lammps.deck import DEFAULT_DT, REGION_UNBOUNDED, read_region, region_number
 from ..contact import TIMES_OMEGA_MAX, ElasticContact
 from ..pair import Pair
 from ..timestep import recommended_dt, verlet_eps
@@ -182,37 +182,31 @@ def _surfaces_at(words: list, deck: Deck | None = None) -> set | None:
 
 
 def _region_places(deck: Deck, rid: str) -> set | None:
-    """The surfaces of LAMMPS region ``rid`` as :func:`_surfaces_at` keys, or None where the audit
-    does not place them."""
-    words = deck.regions.get(rid)
-    if not words or len(words) < 3 or words[2] not in ("block", "plane", "cylinder", "sphere"):
-        return None
-    count = {"block": 6, "plane": 6, "cylinder": 6, "sphere": 4}[words[2]]
-    args, rest = words[3:3 + count], words[3 + count:]
-    options = dict(zip(rest[::2], rest[1::2]))
-    if len(args) < count or len(rest) % 2 or set(options) - {"side", "units", "open"}:
+    """The surfaces of LAMMPS region ``rid`` (:func:`~restitution.dem.engines.lammps.deck.read_region`)
+    as :func:`_surfaces_at` keys, or None where the audit does not place them."""
+    region = read_region(deck, rid)
+    if isinstance(region, str):
         return None                  # a moving or rotating region, or one not read
-    units = options.get("units", "lattice")
-    opened = {v for k, v in zip(rest[::2], rest[1::2]) if k == "open"}
-    if words[2] == "cylinder":
+    args, units = region.args, region.units
+    if region.style == "cylinder":
         axis, numbers = args[0], [region_number(a, deck, units) for a in args[1:4]]
-        ends = [region_number(a, deck, units) if a not in ("INF", "-INF", "EDGE") else None for a in args[4:6]]
+        ends = [region_number(a, deck, units) if a not in REGION_UNBOUNDED else None for a in args[4:6]]
     else:
-        numbers = [region_number(a, deck, units) if a not in ("INF", "-INF", "EDGE") else None for a in args]
+        numbers = [region_number(a, deck, units) if a not in REGION_UNBOUNDED else None for a in args]
         ends = []
     if any(isinstance(x, str) for x in numbers + ends):
         return None                  # a variable's size, or lattice units not read
-    if words[2] == "block":
+    if region.style == "block":
         return {("xyz"[k // 2], at) for k, at in enumerate(numbers) if at is not None}
-    if words[2] == "sphere":
+    if region.style == "sphere":
         return {("sphere", *numbers)} if None not in numbers else None
-    if words[2] == "plane":
+    if region.style == "plane":
         normal = numbers[3:]
         axes = [k for k, n in enumerate(normal) if n]
         return {("xyz"[axes[0]], numbers[axes[0]])} if len(axes) == 1 and None not in numbers[:3] else None
     c1, c2, radius = numbers
-    places = set() if "3" in opened else {(f"{axis}cylinder", radius, c1, c2)}
-    return places | {(axis, at) for face, at in zip("12", ends) if at is not None and face not in opened}
+    places = set() if "3" in region.opened else {(f"{axis}cylinder", radius, c1, c2)}
+    return places | {(axis, at) for face, at in zip("12", ends) if at is not None and face not in region.opened}
 
 
 def _shared_faces(deck: Deck) -> dict:
