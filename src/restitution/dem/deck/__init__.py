@@ -95,7 +95,7 @@ from .beside import effects
 from .meeting import excluded, held_contact, integrators, motion
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
-from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
+from ..dialect.state import MAX_TYPES, Deck, DeckError, PairNotMapped, place, spheres
 from ..engines.lammps.deck import DEFAULT_DT, REGION_UNBOUNDED, read_region, region_number
 from ..contact import TIMES_OMEGA_MAX, ElasticContact
 from ..pair import Pair
@@ -969,33 +969,36 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                                                   "with time integration, atoms won't move\"): no contact ever "
                                                   "happens, so there is no eps to audit; an integrator (fix nve/sphere) "
                                                   "makes one")
-    audited = []
+    audited, unmapped = [], []
     for runs, snap in stages:
         try:
-            pairs, walls, not_audited = _audit_stage(snap, speeds, bool(runs))
+            pairs, walls, not_audited, not_mapped = _audit_stage(snap, speeds, bool(runs))
         except DeckError as why:
             if len(stages) > 1:          # say which run LAMMPS would stop at
                 why.args = (f"{why.args[0]} (the run at {place(runs[0][0])})",)
             raise
         unknown += [row for row in not_audited if row not in unknown]
+        unmapped += not_mapped
         if any(loc in deck.doubtful_runs for loc, _ in runs):
             # settings read after a run from values the runs change: marked in each row, not only on stderr
             for row in pairs + walls:
                 row["may_differ"] = True
         audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
                         "walls": walls})
+    if unmapped and not any(stage["pairs"] or stage["walls"] for stage in audited):
+        raise unmapped[0]            # nothing the deck's contacts do is mapped: refused, in one line
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
             "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck) + _environment_notes(deck)}
 
 
-def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]:
-    """(pair rows, wall rows, walls not audited) of the deck's settings at one stage (``ran``: a
-    run's, not the end of a deck without one)."""
+def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list, list]:
+    """(pair rows, wall rows, pairs and walls not audited, the :class:`PairNotMapped` among them) of
+    the deck's settings at one stage (``ran``: a run's, not the end of a deck without one)."""
     if deck.ntypes <= 0:
         raise DeckError("create_box", None, "the deck has no create_box or read_data: the number of types is "
                                             "unknown")
-    pairs, not_audited = [], []
+    pairs, not_audited, unmapped = [], [], []
     for i in range(1, deck.ntypes + 1):
         for j in range(i, deck.ntypes + 1):
             if _empty(deck, i) or _empty(deck, j):
@@ -1032,15 +1035,19 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                 row["_beside"] = lambda at_row: effects(sized, at_row, contact, pair, (i, j),
                                                         lambda k: _frozen_contact(sized, i, j, k), unmoved=unmoved[0])
                 return row, at
-            pairs += _pending_rows(deck, (i, j), _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(
-                _choices(deck, i, j), pair_row, speeds)))))
+            try:
+                pairs += _pending_rows(deck, (i, j), _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(
+                    _choices(deck, i, j), pair_row, speeds)))))
+            except PairNotMapped as why:     # the engine runs it: the deck's other pairs are audited
+                not_audited.append(why.row(i, j))
+                unmapped.append(why)
     walls, walls_not = _wall_rows(deck, speeds, ran)
     if deck.dt_reset:
         for row in pairs + walls:
             if "dt" in row:
                 row["dt_reset"] = f"{place(deck.dt_reset[0])} fix {deck.dt_reset[2]} dt/reset"
     pairs, walls, doubled = _integrated_again(deck, pairs, walls)
-    return pairs, walls, not_audited + walls_not + doubled
+    return pairs, walls, not_audited + walls_not + doubled, unmapped
 
 
 def _integrated_again(deck: Deck, pairs: list, walls: list) -> tuple[list, list, list]:

@@ -17,7 +17,8 @@ import math
 from dataclasses import dataclass
 from functools import partial
 
-from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, type_pairs, wall_faces
+from ...dialect.state import (FLAT_WALLS, Deck, DeckError, PairNotMapped, exact_e, number, place, spheres, type_pairs,
+                              wall_faces)
 from ...contact import Contact, ElasticContact
 from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
@@ -267,6 +268,15 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
     return _Coeff(normal, args, damping, limit, others, (named, damping, *models.values()), cutoff)
 
 
+def _mapped(deck: Deck, loc: tuple, words: list) -> _Coeff:
+    """A pair_coeff line's coefficients, or :class:`PairNotMapped` where the audit does not map its
+    model: the engine has run the line, so only the pairs it covers go unaudited."""
+    try:
+        return _coeff(deck, words, place(loc), " ".join(words))
+    except DeckError as why:
+        raise PairNotMapped(loc, " ".join(words), why.args[0].split(": ", 1)[-1]) from None
+
+
 def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
     """LAMMPS' mixing of two types' coefficients (pair_style granular, init_one): geometric means,
     for hertz/material the effective modulus 1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j, used as
@@ -332,13 +342,12 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     if (i, j) in deck.coeffs:
         loc, words = deck.coeffs[(i, j)]
         where, text = place(loc), " ".join(words)
-        c = _coeff(deck, words, where, text)
+        c = _mapped(deck, loc, words)
         stiffness = None
         mixed_from = None
     else:
         (loc, wi), (loc_j, wj) = deck.coeffs[(i, i)], deck.coeffs[(j, j)]
-        ci = _coeff(deck, wi, place(loc), " ".join(wi))
-        cj = _coeff(deck, wj, place(loc_j), " ".join(wj))
+        ci, cj = _mapped(deck, loc, wi), _mapped(deck, loc_j, wj)
         if ci.models != cj.models:
             raise DeckError("pair_coeff", f"types {i} {j}", f"types {i} and {j} use different models "
                                                              f"({' '.join(filter(None, ci.models))} against "
@@ -352,10 +361,10 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     if cutoff is not None and cutoff < pair.R1 + pair.R2:
         # LAMMPS lists a pair within the cutoff (and its skin) only: spheres that reach each
         # other first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005: eps 619 measured)
-        raise DeckError(place(loc), " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
-                        f"cutoff {cutoff:g} is below the contact distance {pair.R1 + pair.R2:g} of types {i} {j} "
-                        "(the sum of their radii): LAMMPS finds the pair only within the cutoff and its skin, so "
-                        "the spheres meet at an overlap, not at first touch: not audited")
+        raise PairNotMapped(loc, " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
+                            f"cutoff {cutoff:g} is below the contact distance {pair.R1 + pair.R2:g} (the sum of "
+                            "their radii): LAMMPS finds the pair only within the cutoff and its skin, so the "
+                            "spheres meet at an overlap, not at first touch")
     contact = lammps_contact(pair, **c.setting(stiffness))
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
