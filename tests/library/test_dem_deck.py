@@ -238,6 +238,25 @@ def test_an_adhesive_model_with_cohesion_is_refused_in_one_line(tmp_path, normal
     assert status == 2 and out == "" and err.count("\n") == 1 and f"{normal} is not mapped at cohesion 0.05" in err, err
 
 
+def test_one_cohesive_pair_leaves_the_others_audited(tmp_path):
+    """Field round 13, D6: one pair_coeff line the audit does not map (jkr at cohesion 0.5 for 1 2,
+    which LAMMPS runs) refused the whole deck, LAMMPS' own in.pour.flatwall among them. Now that pair
+    is named, not audited, and the others are: hooke with mass_velocity damping is the linear
+    dashpot, whose eps is exp(-pi zeta / sqrt(1 - zeta^2)) in closed form."""
+    deck = tmp_path / "in.deck"
+    deck.write_text(TWO_SPHERES + "timestep 1e-7\npair_style granular\n"
+                    "pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+                    "pair_coeff 1 2 jkr 1e7 3000 0.3 0.5 damping mass_velocity tangential linear_nohistory 1 0.3\n")
+    res, err = audit(deck, "--g", 1.0)
+    assert sorted(p["types"] for p in res["pairs"]) == [[1, 1], [2, 2]]
+    assert "types 1 2: normal model jkr is not mapped at cohesion 0.5" in err and "not audited" in err, err
+    for p in res["pairs"]:
+        zeta = p["D2"] / (2.0 * math.sqrt(p["D1"]))
+        assert all(eps == pytest.approx(math.exp(-math.pi * zeta / math.sqrt(1.0 - zeta ** 2)), rel=1e-8)
+                   for eps in p["eps"])
+        assert p["D2"] == pytest.approx(3000.0, rel=1e-12)   # mass_velocity: eta per unit reduced mass
+
+
 @pytest.mark.parametrize("text, word", [
     (LAMMPS_DECK.replace("damping tsuji", "damping none"), "LAMMPS stops here: Must specify damping granular model"),
     ("\n".join(ln for ln in LAMMPS_DECK.splitlines() if not ln.startswith("pair_coeff")).replace(

@@ -279,20 +279,25 @@ def test_a_thermostatted_integrator_is_named_beside_the_contact(tmp_path):
 
 
 @pytest.mark.parametrize("style, coeff, answered", [
-    ("pair_style granular 0.05", " cutoff 0.03", True),    # both above every contact distance (0.01 to 0.02)
-    ("pair_style granular 0.004", "", False),              # LAMMPS: eps 619 for the r 0.005 pair
-    ("pair_style granular", " cutoff 0.015", False)])      # below 0.02, the two r 0.01 spheres' distance
+    ("pair_style granular 0.05", " cutoff 0.03", {(1, 1), (1, 2), (2, 2)}),   # above every contact distance
+    ("pair_style granular 0.004", "", set()),              # LAMMPS: eps 619 for the r 0.005 pair
+    ("pair_style granular", " cutoff 0.015", {(1, 1), (1, 2)})])   # below 0.02, the two r 0.01 spheres' distance
 def test_a_granular_cutoff_is_read_against_the_contact_distance(tmp_path, style, coeff, answered):
     """LAMMPS lists a pair within its cutoff (and the neighbor skin) only. Measured: `pair_style granular
     0.004` on spheres r 0.005 (contact distance 0.01, skin 0.001) gives eps 618.87 at 0.1 m/s, where the
-    same deck without the cutoff gives 0.974618 (the law's): spheres listed late meet deep in overlap."""
+    same deck without the cutoff gives 0.974618 (the law's): spheres listed late meet deep in overlap.
+    A pair beyond its cutoff is not audited, the others are (field round 13: the whole deck was
+    refused); where no pair is left, the deck is refused in one line."""
     # a box of 0.4 m: LAMMPS bins it by the cutoff (2 m at 0.005 is 6e7 bins)
     text = (TWO.replace("pair_style granular\n", style + "\n").replace("limit_damping\n", "limit_damping" + coeff + "\n")
             .replace("block -1 1 -1 1 -1 1", "block -0.2 0.2 -0.2 0.2 -0.2 0.2"))
     status, res, err = audit(tmp_path, text + "fix 1 all nve/sphere\nrun 10\n")
     if answered:
         assert status == 0, err
+        assert {tuple(p["types"]) for p in res["pairs"]} == answered
         assert all(math.isfinite(p["eps"][0]) for p in res["pairs"])
+        left = {(1, 1), (1, 2), (2, 2)} - answered
+        assert all(f"types {i} {j}: cutoff" in err for i, j in left) and err.count("below the contact") == len(left)
     else:
         assert status == 2 and "is below the contact distance" in err and err.count("\n") == 1
 

@@ -95,8 +95,8 @@ from .beside import effects
 from .meeting import excluded, held_contact, integrators, motion
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
-from ..dialect.state import MAX_TYPES, Deck, DeckError, place, spheres
-from ..engines.lammps.deck import DEFAULT_DT, region_number
+from ..dialect.state import MAX_TYPES, Deck, DeckError, PairNotMapped, place, spheres
+from ..engines.lammps.deck import DEFAULT_DT, REGION_UNBOUNDED, read_region, region_number
 from ..contact import TIMES_OMEGA_MAX, ElasticContact
 from ..pair import Pair
 from ..timestep import recommended_dt, verlet_eps
@@ -182,37 +182,31 @@ def _surfaces_at(words: list, deck: Deck | None = None) -> set | None:
 
 
 def _region_places(deck: Deck, rid: str) -> set | None:
-    """The surfaces of LAMMPS region ``rid`` as :func:`_surfaces_at` keys, or None where the audit
-    does not place them."""
-    words = deck.regions.get(rid)
-    if not words or len(words) < 3 or words[2] not in ("block", "plane", "cylinder", "sphere"):
-        return None
-    count = {"block": 6, "plane": 6, "cylinder": 6, "sphere": 4}[words[2]]
-    args, rest = words[3:3 + count], words[3 + count:]
-    options = dict(zip(rest[::2], rest[1::2]))
-    if len(args) < count or len(rest) % 2 or set(options) - {"side", "units", "open"}:
+    """The surfaces of LAMMPS region ``rid`` (:func:`~restitution.dem.engines.lammps.deck.read_region`)
+    as :func:`_surfaces_at` keys, or None where the audit does not place them."""
+    region = read_region(deck, rid)
+    if isinstance(region, str):
         return None                  # a moving or rotating region, or one not read
-    units = options.get("units", "lattice")
-    opened = {v for k, v in zip(rest[::2], rest[1::2]) if k == "open"}
-    if words[2] == "cylinder":
+    args, units = region.args, region.units
+    if region.style == "cylinder":
         axis, numbers = args[0], [region_number(a, deck, units) for a in args[1:4]]
-        ends = [region_number(a, deck, units) if a not in ("INF", "-INF", "EDGE") else None for a in args[4:6]]
+        ends = [region_number(a, deck, units) if a not in REGION_UNBOUNDED else None for a in args[4:6]]
     else:
-        numbers = [region_number(a, deck, units) if a not in ("INF", "-INF", "EDGE") else None for a in args]
+        numbers = [region_number(a, deck, units) if a not in REGION_UNBOUNDED else None for a in args]
         ends = []
     if any(isinstance(x, str) for x in numbers + ends):
         return None                  # a variable's size, or lattice units not read
-    if words[2] == "block":
+    if region.style == "block":
         return {("xyz"[k // 2], at) for k, at in enumerate(numbers) if at is not None}
-    if words[2] == "sphere":
+    if region.style == "sphere":
         return {("sphere", *numbers)} if None not in numbers else None
-    if words[2] == "plane":
+    if region.style == "plane":
         normal = numbers[3:]
         axes = [k for k, n in enumerate(normal) if n]
         return {("xyz"[axes[0]], numbers[axes[0]])} if len(axes) == 1 and None not in numbers[:3] else None
     c1, c2, radius = numbers
-    places = set() if "3" in opened else {(f"{axis}cylinder", radius, c1, c2)}
-    return places | {(axis, at) for face, at in zip("12", ends) if at is not None and face not in opened}
+    places = set() if "3" in region.opened else {(f"{axis}cylinder", radius, c1, c2)}
+    return places | {(axis, at) for face, at in zip("12", ends) if at is not None and face not in region.opened}
 
 
 def _shared_faces(deck: Deck) -> dict:
@@ -975,33 +969,36 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                                                   "with time integration, atoms won't move\"): no contact ever "
                                                   "happens, so there is no eps to audit; an integrator (fix nve/sphere) "
                                                   "makes one")
-    audited = []
+    audited, unmapped = [], []
     for runs, snap in stages:
         try:
-            pairs, walls, not_audited = _audit_stage(snap, speeds, bool(runs))
+            pairs, walls, not_audited, not_mapped = _audit_stage(snap, speeds, bool(runs))
         except DeckError as why:
             if len(stages) > 1:          # say which run LAMMPS would stop at
                 why.args = (f"{why.args[0]} (the run at {place(runs[0][0])})",)
             raise
         unknown += [row for row in not_audited if row not in unknown]
+        unmapped += not_mapped
         if any(loc in deck.doubtful_runs for loc, _ in runs):
             # settings read after a run from values the runs change: marked in each row, not only on stderr
             for row in pairs + walls:
                 row["may_differ"] = True
         audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
                         "walls": walls})
+    if unmapped and not any(stage["pairs"] or stage["walls"] for stage in audited):
+        raise unmapped[0]            # nothing the deck's contacts do is mapped: refused, in one line
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
             "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck) + _environment_notes(deck)}
 
 
-def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]:
-    """(pair rows, wall rows, walls not audited) of the deck's settings at one stage (``ran``: a
-    run's, not the end of a deck without one)."""
+def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list, list]:
+    """(pair rows, wall rows, pairs and walls not audited, the :class:`PairNotMapped` among them) of
+    the deck's settings at one stage (``ran``: a run's, not the end of a deck without one)."""
     if deck.ntypes <= 0:
         raise DeckError("create_box", None, "the deck has no create_box or read_data: the number of types is "
                                             "unknown")
-    pairs, not_audited = [], []
+    pairs, not_audited, unmapped = [], [], []
     for i in range(1, deck.ntypes + 1):
         for j in range(i, deck.ntypes + 1):
             if _empty(deck, i) or _empty(deck, j):
@@ -1038,15 +1035,19 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list]
                 row["_beside"] = lambda at_row: effects(sized, at_row, contact, pair, (i, j),
                                                         lambda k: _frozen_contact(sized, i, j, k), unmoved=unmoved[0])
                 return row, at
-            pairs += _pending_rows(deck, (i, j), _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(
-                _choices(deck, i, j), pair_row, speeds)))))
+            try:
+                pairs += _pending_rows(deck, (i, j), _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(
+                    _choices(deck, i, j), pair_row, speeds)))))
+            except PairNotMapped as why:     # the engine runs it: the deck's other pairs are audited
+                not_audited.append(why.row(i, j))
+                unmapped.append(why)
     walls, walls_not = _wall_rows(deck, speeds, ran)
     if deck.dt_reset:
         for row in pairs + walls:
             if "dt" in row:
                 row["dt_reset"] = f"{place(deck.dt_reset[0])} fix {deck.dt_reset[2]} dt/reset"
     pairs, walls, doubled = _integrated_again(deck, pairs, walls)
-    return pairs, walls, not_audited + walls_not + doubled
+    return pairs, walls, not_audited + walls_not + doubled, unmapped
 
 
 def _integrated_again(deck: Deck, pairs: list, walls: list) -> tuple[list, list, list]:

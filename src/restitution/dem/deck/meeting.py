@@ -53,6 +53,8 @@ def _integrates(line: str) -> bool | None:
     given = words[5:8] if words[4] == "linear" else words[5:11]
     nulls = sum(w == "NULL" for w in given)
     return True if nulls == len(given) else (None if nulls else False)
+
+
 #: neigh_modify exclude styles and their number of arguments
 _EXCLUDE_ARGS = {"type": 2, "group": 2, "molecule/intra": 1, "molecule/inter": 1, "molecule": 1, "none": 0}
 #: special_bonds' named settings: their lj weights

@@ -19,7 +19,7 @@ from ...core.errors import InputFileError, ParameterError
 from ..calibrate import calibrate
 from ..pair import Pair
 
-__all__ = ["DeckError", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "type_pairs", "number", "pour_into",
+__all__ = ["DeckError", "PairNotMapped", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "type_pairs", "number", "pour_into",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e", "wall_faces"]
 
 
@@ -45,6 +45,38 @@ class DeckError(InputFileError):
         super().__init__(where, text, why)
         shown = "" if text is None else f" ({' '.join(str(text).split())})"
         self.args = (f"{where}{shown}: {why}",)
+
+
+class PairNotMapped(DeckError):
+    """A type pair's contact line that the engine runs and the audit does not map (a cohesive normal
+    model, an unmapped keyword or damping): that pair alone is not audited, the deck's other pairs
+    and walls are (LAMMPS' own examples give jkr to one type beside hertz on another).
+
+    Parameters
+    ----------
+    loc : tuple
+        (file or None, line number) of the line.
+    text : str
+        The line.
+    why : str
+        What the audit does not map in it.
+
+    Examples
+    --------
+    >>> err = PairNotMapped((None, 7), "pair_coeff 1 2 jkr 1e7 50 0.3 0.5", "normal model jkr is not mapped")
+    >>> str(err)
+    'line 7 (pair_coeff 1 2 jkr 1e7 50 0.3 0.5): normal model jkr is not mapped'
+    >>> err.row(1, 2)[3]
+    'types 1 2: normal model jkr is not mapped: not audited'
+    """
+
+    def __init__(self, loc: tuple, text: str, why: str):
+        super().__init__(place(loc), text, why)
+        self.loc, self.text, self.why = loc, text, why
+
+    def row(self, i: int, j: int) -> tuple:
+        """The (file, line, text, why) the audit lists as not audited, for type pair (i, j)."""
+        return (*self.loc, self.text, f"types {i} {j}: {self.why}: not audited")
 
 
 @dataclass

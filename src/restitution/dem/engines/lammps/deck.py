@@ -17,14 +17,16 @@ import math
 from dataclasses import dataclass
 from functools import partial
 
-from ...dialect.state import FLAT_WALLS, Deck, DeckError, exact_e, number, place, spheres, type_pairs, wall_faces
+from ...dialect.state import (FLAT_WALLS, Deck, DeckError, PairNotMapped, exact_e, number, place, spheres, type_pairs,
+                              wall_faces)
 from ...contact import Contact, ElasticContact
 from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
 
-__all__ = ["ENGINE", "DEFAULT_DT", "FTM2V", "NKTV2P", "region_number", "PAIR_STYLES", "MAPPED", "FIXES", "pair_style",
-           "pair_coeff", "pair_row", "wall", "concave_cylinder", "accelerated"]
+__all__ = ["ENGINE", "DEFAULT_DT", "FTM2V", "NKTV2P", "Region", "read_region", "REGION_UNBOUNDED", "region_number",
+           "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall", "concave_cylinder",
+           "accelerated"]
 
 #: LAMMPS' default time step per unit style (checked in LAMMPS 22 Jul 2025), where a deck sets none
 DEFAULT_DT = {"lj": 0.005, "real": 1.0, "metal": 0.001, "si": 1e-8, "cgs": 1e-8, "electron": 0.001, "micro": 2.0,
@@ -266,6 +268,15 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
     return _Coeff(normal, args, damping, limit, others, (named, damping, *models.values()), cutoff)
 
 
+def _mapped(deck: Deck, loc: tuple, words: list) -> _Coeff:
+    """A pair_coeff line's coefficients, or :class:`PairNotMapped` where the audit does not map its
+    model: the engine has run the line, so only the pairs it covers go unaudited."""
+    try:
+        return _coeff(deck, words, place(loc), " ".join(words))
+    except DeckError as why:
+        raise PairNotMapped(loc, " ".join(words), why.args[0].split(": ", 1)[-1]) from None
+
+
 def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
     """LAMMPS' mixing of two types' coefficients (pair_style granular, init_one): geometric means,
     for hertz/material the effective modulus 1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j, used as
@@ -331,13 +342,12 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     if (i, j) in deck.coeffs:
         loc, words = deck.coeffs[(i, j)]
         where, text = place(loc), " ".join(words)
-        c = _coeff(deck, words, where, text)
+        c = _mapped(deck, loc, words)
         stiffness = None
         mixed_from = None
     else:
         (loc, wi), (loc_j, wj) = deck.coeffs[(i, i)], deck.coeffs[(j, j)]
-        ci = _coeff(deck, wi, place(loc), " ".join(wi))
-        cj = _coeff(deck, wj, place(loc_j), " ".join(wj))
+        ci, cj = _mapped(deck, loc, wi), _mapped(deck, loc_j, wj)
         if ci.models != cj.models:
             raise DeckError("pair_coeff", f"types {i} {j}", f"types {i} and {j} use different models "
                                                              f"({' '.join(filter(None, ci.models))} against "
@@ -351,10 +361,10 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     if cutoff is not None and cutoff < pair.R1 + pair.R2:
         # LAMMPS lists a pair within the cutoff (and its skin) only: spheres that reach each
         # other first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005: eps 619 measured)
-        raise DeckError(place(loc), " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
-                        f"cutoff {cutoff:g} is below the contact distance {pair.R1 + pair.R2:g} of types {i} {j} "
-                        "(the sum of their radii): LAMMPS finds the pair only within the cutoff and its skin, so "
-                        "the spheres meet at an overlap, not at first touch: not audited")
+        raise PairNotMapped(loc, " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
+                            f"cutoff {cutoff:g} is below the contact distance {pair.R1 + pair.R2:g} (the sum of "
+                            "their radii): LAMMPS finds the pair only within the cutoff and its skin, so the "
+                            "spheres meet at an overlap, not at first touch")
     contact = lammps_contact(pair, **c.setting(stiffness))
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None
@@ -552,6 +562,84 @@ def _region_wall(deck: Deck, loc, words: list, unknown: list):
 _REGION_ARGS = {"block": 6, "plane": 6, "sphere": 4, "cylinder": 6}
 #: Region keywords read, each with one value; move and rotate are not among them (a moving wall)
 _REGION_KEYWORDS = frozenset({"side", "units", "open"})
+#: The bounds a region may give instead of a number: unbounded, or the box's edge
+REGION_UNBOUNDED = ("INF", "-INF", "EDGE")
+
+
+@dataclass(frozen=True)
+class Region:
+    """A LAMMPS region line as the audit reads it (:func:`read_region`).
+
+    Attributes
+    ----------
+    style : str
+        block, plane, sphere or cylinder.
+    args : tuple of str
+        Its style's arguments as the line gives them (a cylinder's first is its axis).
+    side : str
+        ``in`` (LAMMPS' default) or ``out``.
+    units : str
+        ``lattice`` (LAMMPS' default) or ``box``; :func:`region_number` reads a length in them.
+    opened : frozenset of str
+        The faces its ``open`` keywords remove (a cylinder's 1 and 2 are its ends, 3 its side).
+    """
+
+    style: str
+    args: tuple
+    side: str = "in"
+    units: str = "lattice"
+    opened: frozenset = frozenset()
+
+
+def read_region(deck: Deck, rid: str) -> Region | str:
+    """Region ``rid`` of the deck read into its style, arguments and side/units/open keywords, or,
+    where the audit does not read it, why (a str): not defined, another style, a keyword such as move
+    or rotate (a moving region), too few arguments or a size given by a variable. The one parser of
+    region lines: a region wall's curvature (:func:`region_surfaces`) and where its surfaces lie (the
+    deck audit's walls that meet at one surface) both read it.
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck at the run audited (its regions).
+    rid : str
+        The region's ID.
+
+    Returns
+    -------
+    Region or str
+
+    Examples
+    --------
+    >>> d = Deck(regions={"can": "region can cylinder z 0 0 0.5 0 INF open 2 side out units box".split(),
+    ...                   "spin": "region spin sphere 0 0 0 1 rotate v_a 0 0 0 0 0 1".split()})
+    >>> read_region(d, "can")
+    Region(style='cylinder', args=('z', '0', '0', '0.5', '0', 'INF'), side='out', units='box', opened=frozenset({'2'}))
+    >>> read_region(d, "spin")
+    'keyword rotate of the region (a moving or rotating region, or one not read)'
+    """
+    words = deck.regions.get(rid)
+    if words is None:
+        return f"region {rid} is not defined at this run"
+    style = words[2] if len(words) > 2 else ""
+    if style not in _REGION_ARGS:
+        return f"a {style} region, whose surfaces' curvature the audit does not read (block, plane, sphere and " \
+               "cylinder regions are read)"
+    n = 3 + _REGION_ARGS[style]
+    args, options, opened = tuple(words[3:n]), {"side": "in", "units": "lattice"}, set()
+    while n < len(words) and words[n] in _REGION_KEYWORDS and n + 1 < len(words):
+        if words[n] == "open":
+            opened.add(words[n + 1])
+        else:
+            options[words[n]] = words[n + 1]
+        n += 2
+    if n < len(words):
+        return f"keyword {words[n]} of the region (a moving or rotating region, or one not read)"
+    if any("v_" in a for a in args):
+        return "its size is a variable's, which may change as the run goes"
+    if len(args) < _REGION_ARGS[style]:
+        return "its arguments are not read"
+    return Region(style, args, options["side"], options["units"], frozenset(opened))
 
 
 def region_surfaces(deck: Deck, rid: str) -> list | str:
@@ -582,38 +670,21 @@ def region_surfaces(deck: Deck, rid: str) -> list | str:
     >>> region_surfaces(d, "cup")
     'region cup is not defined at this run'
     """
-    words = deck.regions.get(rid)
-    if words is None:
-        return f"region {rid} is not defined at this run"
-    style = words[2]
-    if style not in _REGION_ARGS:
-        return f"a {style} region, whose surfaces' curvature the audit does not read (block, plane, sphere and " \
-               "cylinder regions are read)"
-    args, n, options = words[3:3 + _REGION_ARGS[style]], 3 + _REGION_ARGS[style], {"side": "in", "units": "lattice"}
-    opened = set()
-    while n < len(words) and words[n] in _REGION_KEYWORDS and n + 1 < len(words):
-        if words[n] == "open":
-            opened.add(words[n + 1])
-        else:
-            options[words[n]] = words[n + 1]
-        n += 2
-    if n < len(words):
-        return f"keyword {words[n]} of the region (a moving or rotating region, or one not read)"
-    if len(args) < _REGION_ARGS[style] or any("v_" in a for a in args):
-        return "its size is a variable's, which may change as the run goes" if any("v_" in a for a in args) else \
-            "its arguments are not read"
-    if style in ("block", "plane"):
+    region = read_region(deck, rid)
+    if isinstance(region, str):
+        return region
+    if region.style in ("block", "plane"):
         return [("its flat faces", 0.0, None)]
-    radius = region_number(args[3], deck, options["units"])
+    radius = region_number(region.args[3], deck, region.units)
     if isinstance(radius, str):
         return radius
-    inside = options["side"] == "in"
+    inside = region.side == "in"
     where, sign, fits = ("inside", -1.0, radius) if inside else ("outside", 1.0, None)
-    if style == "sphere":
+    if region.style == "sphere":
         return [(f"the {where} of its sphere of radius {radius:g}", sign * radius, fits)]
-    surfaces = [] if "3" in opened else [(f"the {where} of its curved side of radius {radius:g}", sign * 2.0 * radius,
-                                          fits)]
-    caps = {"1", "2"} - opened if all(a not in ("INF", "-INF", "EDGE") for a in args[4:6]) else set()
+    surfaces = [] if "3" in region.opened else [(f"the {where} of its curved side of radius {radius:g}",
+                                                 sign * 2.0 * radius, fits)]
+    caps = {"1", "2"} - region.opened if all(a not in REGION_UNBOUNDED for a in region.args[4:6]) else set()
     return surfaces + ([("its flat ends", 0.0, None)] if caps else [])
 
 

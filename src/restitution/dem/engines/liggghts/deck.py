@@ -15,8 +15,8 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 
 from __future__ import annotations
 
-from ...dialect.state import (FLAT_WALLS, Deck, DeckError, atom_type, exact_e, number, place, pour_into, spheres,
-                              wall_faces)
+from ...dialect.state import (FLAT_WALLS, Deck, DeckError, PairNotMapped, atom_type, exact_e, number, place,
+                              pour_into, spheres, wall_faces)
 from ....core.errors import ParameterError
 from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODELS, LIGGGHTS_MODULUS, LIGGGHTS_NU,
                       STIFFNESS_MODELS, STIFFNESS_UNITS, liggghts_accepts_e, liggghts_contact, liggghts_e,
@@ -101,8 +101,9 @@ def _no_cohesion(deck: Deck, i: int, j: int) -> None:
     matrix, loc = _matrix(deck, "cohesionEnergyDensity")
     k = matrix[(i - 1) * deck.ntypes + (j - 1)]
     if k != 0:
-        raise DeckError(place(loc), f"types {i} {j}", f"cohesion {deck.cohesion} with cohesionEnergyDensity {k:g} "
-                                                      "adds an attractive normal force, which is not mapped")
+        # the pair alone: LIGGGHTS runs it, and the deck's other pairs feel no cohesion
+        raise PairNotMapped(loc, f"types {i} {j}", f"cohesion {deck.cohesion} with cohesionEnergyDensity {k:g} "
+                                                   "adds an attractive normal force, which is not mapped")
 
 
 def _normal(pairs: list) -> tuple:
