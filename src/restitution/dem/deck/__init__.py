@@ -536,7 +536,13 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
         restarts = _restart_infos(root) if scratch.restarts else None
-        if done.error:
+        made = None
+        if done.error and (found := _run_dependent(commands, scratch)):
+            # the engine stopped after reading what the skipped runs change (a loop on the step or
+            # time that never ends in that pass, a value stepped out of its range): the deck run by
+            # hand may not stop; the runs made for real tell (a loop ends as the engine ends it)
+            made = _made_runs(deck_run, scratch, commands, found, run_budget, path.resolve().parent, done.looped)
+        if done.error and (made is None or made[0] is None):
             where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
                 where, line = place(commands[-1].loc), commands[-1].text
@@ -555,18 +561,20 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
-            raise DeckError(where, line or None, _stopped(engine, message, commands))
-        read = deck_commands(commands, scratch)
-        try:
-            deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts), None
-        except DeckError as why:
-            if by_position(read) is None:
-                raise
-            deck, refusal = None, why       # the runs made for real may answer it
-        found = _run_dependent(commands, scratch, clocked is not None)
-        causes = _run_causes(found, by_position(read), deck)
-        made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
-                          done.timed_out and done.looped) if causes else None
+            raise DeckError(where, line or None, "; ".join([_stopped(engine, message, commands), *made[2:]]
+                                                            if made else [_stopped(engine, message, commands)]))
+        if made is None:
+            read = deck_commands(commands, scratch)
+            try:
+                deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts), None
+            except DeckError as why:
+                if by_position(read) is None:
+                    raise
+                deck, refusal = None, why       # the runs made for real may answer it
+            found = _run_dependent(commands, scratch, clocked is not None)
+            causes = _run_causes(found, by_position(read), deck)
+            made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
+                              done.timed_out and done.looped) if causes else None
         if made is not None and made[0] is not None:
             done, commands, said = made
             atoms = snapshots(done.atoms) + snapshots(done.at_end)
