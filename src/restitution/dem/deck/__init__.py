@@ -589,6 +589,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 raise refusal
             notes = _run_dependent_notes(commands, scratch, engine, clocked is not None) + said
             deck.doubtful_runs = _runs_after(commands, found)
+        _hold_charges(deck, commands, deck_run.charges(root) if hasattr(deck_run, "charges") else None)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
@@ -604,6 +605,24 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                      f"{len(commands)} commands" + (f"; its last {len(last)} runs all saw the same contact settings"
                                                     if len(last) > 1 else ""))
     return deck, notes
+
+
+#: Commands that may change the charges atoms hold, or which atoms there are: after a run, the
+#: charges the engine holds at the deck's end are not every run's
+_CHARGING = re.compile(r"(set\s.*\bcharge\b|fix\s+\S+\s+\S+\s+adapt\s.*\bcharge\b|delete_atoms|read_data|"
+                       r"read_restart|fix\s+\S+\s+\S+\s+(evaporate|pour|deposit))")
+
+
+def _hold_charges(deck: Deck, commands: list, charges: dict | None) -> None:
+    """Give the deck and each of its stages the charges its engine held at the deck's end
+    (``charges``, :func:`restitution.dem.engines.lammps.deck_run.charges`) where they are every
+    run's: no command after the first run changes a charge or the atoms held (then, and where the
+    engine gives none, they stay unknown: fix efield is named wherever it may act)."""
+    first = next((k for k, cmd in enumerate(commands) if cmd.stage is not None), len(commands))
+    if charges is None or any(_CHARGING.match((_unguarded(cmd.text) or "").strip()) for cmd in commands[first:]):
+        return
+    for held in [deck] + [snap for _, snap, _ in deck.stages]:
+        held.charges = charges
 
 
 def _restart_infos(root: Path) -> list:
