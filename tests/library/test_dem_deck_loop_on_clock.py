@@ -10,19 +10,9 @@ audited, each eps the engine's own head-on (dt -> 0)."""
 
 import pytest
 
-from deck_cli import LIGGGHTS_BOX, agrees_with_lammps, needs_lammps, needs_liggghts, run
+from deck_cli import LAMMPS_TWO, LIGGGHTS_BOX, agrees_with_lammps, needs_lammps, needs_liggghts, run
 
-BOX = """units si
-atom_style sphere
-boundary p p f
-comm_modify vel yes
-region box block 0 0.02 0 0.02 -2 0.05 units box
-create_box 1 box
-create_atoms 1 single 0.005 0.01 0.03
-create_atoms 1 single 0.015 0.01 0.03
-set type 1 diameter 0.002 density 2500
-pair_style granular
-fix integ all nve/sphere
+BOX = LAMMPS_TWO + """fix integ all nve/sphere
 timestep 1e-5
 """
 LAW = "hertz/material 1e7 {} 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"
@@ -73,17 +63,24 @@ def _lammps_truth(path, name: str) -> tuple:
         os.chdir(here)
 
 
+def _four_stages(tmp_path, text: str, eta: float, rows: str) -> list:
+    """The audit's stages of a LAMMPS deck ``text`` whose loop LAMMPS run by hand ends after 400
+    steps at ``eta``: four, made for real, one row each of ``rows`` ("pairs" or "walls")."""
+    path = tmp_path / "in.deck"
+    path.write_text(text)
+    assert _lammps_truth(path, "eta") == (400, eta)
+    status, got, err = _json(path)
+    assert status == 0 and "LAMMPS made the deck's 4 runs (400 steps) for real" in err, err
+    stages = got["stages"]
+    assert len(stages) == 4 and all(len(s[rows]) == 1 for s in stages), stages
+    return stages
+
+
 @needs_lammps
 @pytest.mark.dem
 @pytest.mark.slow
 def test_a_loop_on_the_time_ends_as_lammps_ends_it_and_each_stage_is_lammps_own(tmp_path):
-    path = tmp_path / "in.deck"
-    path.write_text(ON_TIME)
-    assert _lammps_truth(path, "eta") == (400, 8e6)
-    status, got, err = _json(path)
-    assert status == 0 and "LAMMPS made the deck's 4 runs (400 steps) for real" in err, err
-    stages = got["stages"]
-    assert len(stages) == 4 and all(len(s["pairs"]) == 1 for s in stages), stages
+    stages = _four_stages(tmp_path, ON_TIME, 8e6, "pairs")
     for stage, eta in zip(stages, (1e6, 2e6, 4e6, 8e6)):
         assert stage["pairs"][0]["D2"] == pytest.approx(stages[0]["pairs"][0]["D2"] * eta / 1e6, rel=1e-12)
         agrees_with_lammps(stage["pairs"], {1: (0.001, 2500.0)}, f"pair_coeff * * {LAW.format(eta)}", 1)
@@ -96,13 +93,7 @@ def test_a_wall_remade_in_a_loop_on_the_step_is_audited_at_every_pass(tmp_path):
     from restitution.dem.contact import Contact
     from restitution.dem.engines.lammps.run import lammps_wall_eps
     from restitution.dem.extrapolate import richardson
-    path = tmp_path / "in.deck"
-    path.write_text(ON_STEP)
-    assert _lammps_truth(path, "eta") == (400, 2.7e7)
-    status, got, err = _json(path)
-    assert status == 0 and "LAMMPS made the deck's 4 runs (400 steps) for real" in err, err
-    stages = got["stages"]
-    assert len(stages) == 4 and all(len(s["walls"]) == 1 for s in stages), stages
+    stages = _four_stages(tmp_path, ON_STEP, 2.7e7, "walls")
     for stage, eta in zip(stages, (1e6, 3e6, 9e6, 2.7e7)):
         row = stage["walls"][0]
         g = row["speeds"][2]
