@@ -938,7 +938,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     dict
         {"code", "stages", "pairs", "walls", "unknown_lines", "ignored"}. ``stages``: one entry
         for each change of the contact settings between runs ({"runs": [{"file", "line", "text"}],
-        "pairs", "walls"}; a deck without a run has one stage, its settings at its end); ``pairs``
+        "pairs", "walls"}, and "why" where it has neither; a deck without a run has one stage, its
+        settings at its end); ``pairs``
         and ``walls`` are the last stage's. A pair row holds, for a type pair, the eps the deck
         really gives at ``speeds`` (relative accuracy 1e-10), beside the e typed (or None) and the
         line that would give that e exactly. Where the spheres' centres would meet
@@ -1011,6 +1012,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                 row["may_differ"] = True
         audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
                         "walls": walls})
+        if not pairs and not walls:
+            audited[-1]["why"] = _no_rows(snap)
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
             "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck) + _environment_notes(deck)}
@@ -1349,6 +1352,20 @@ def _empty(deck: Deck, t: int) -> bool:
     a type of walls only, or unused; no sphere of it meets another."""
     return (deck.held is not None and t not in deck.held and t not in deck.radius and t not in deck.missing
             and t not in deck.sizes)
+
+
+def _no_rows(deck: Deck) -> str:
+    """Why a stage has no row: no atom held at its run, or none of its pairs and walls audited.
+
+    Examples
+    --------
+    >>> _no_rows(Deck(ntypes=2, held={}))
+    'the engine holds no atom at this run (none made yet, or none left), so no two spheres meet and none meets a wall'
+    """
+    if all(_empty(deck, t) for t in range(1, deck.ntypes + 1)):
+        return ("the engine holds no atom at this run (none made yet, or none left), so no two spheres meet and none "
+                "meets a wall")
+    return "none of its type pairs or walls is audited: the notes on stderr say why of each"
 
 
 def _empty_notes(deck: Deck) -> list:
