@@ -59,6 +59,21 @@ def audit(*argv):
     return json.loads(out), "".join(ln for ln in err.splitlines(True) if not ln.startswith(NOTE))
 
 
+#: A LAMMPS deck's start in SI units: two spheres of type 1 apart (r 1 mm, density 2500), a granular
+#: pair style whose coefficients the test gives
+LAMMPS_TWO = """units si
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+region box block 0 0.02 0 0.02 -2 0.05 units box
+create_box 1 box
+create_atoms 1 single 0.005 0.01 0.03
+create_atoms 1 single 0.015 0.01 0.03
+set type 1 diameter 0.002 density 2500
+pair_style granular
+"""
+
+
 #: A LIGGGHTS deck's granular box for two atom types, as the deck tests begin their LIGGGHTS decks
 LIGGGHTS_BOX = """\
 atom_style granular

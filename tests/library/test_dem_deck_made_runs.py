@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from deck_cli import agrees_with_lammps, as_without_runs, lammps_held_at_end, needs_lammps, run
+from deck_cli import LAMMPS_TWO, agrees_with_lammps, as_without_runs, lammps_held_at_end, needs_lammps, run
 
 FIELD = Path(__file__).resolve().parents[1]
 VISCO = "pair_coeff * * hertz/material 1e7 {} 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"
@@ -67,17 +67,7 @@ def test_the_runs_made_give_the_engines_types_sizes_and_eps(name):
     as_without_runs(status, got, err, before)
 
 
-BOX = """units si
-atom_style sphere
-boundary p p f
-comm_modify vel yes
-region box block 0 0.02 0 0.02 -2 0.05 units box
-create_box 1 box
-create_atoms 1 single 0.005 0.01 0.03
-create_atoms 1 single 0.015 0.01 0.03
-set type 1 diameter 0.002 density 2500
-pair_style granular
-{line}
+BOX = LAMMPS_TWO + """{line}
 fix grav all gravity 9.81 vector 0 0 -1
 fix integ all nve/sphere
 timestep 1e-5

@@ -265,10 +265,17 @@ def run_deck(args, out) -> None:
     if res["ignored"]:
         out.write(f"# {res['code']} deck; no part in a head-on contact: {', '.join(res['ignored'])}\n")
     shown = None
+    # a stage without rows has its heading all the same, and why it has none
+    empty = {_stage_head(s, k, len(stages)): s["why"] for k, s in enumerate(stages, 1) if "why" in s}
+    rows += [(None, "", "", "", "", head) for head in empty]
+    rows.sort(key=lambda row: int(row[-1].split()[2]) if row[-1] else 0)     # by stage, in order within one
     for p, name, reach, pushed, kept, head in rows:
         if head and head != shown:
             out.write(head + "\n")
             shown = head
+        if p is None:
+            out.write(f"(no rows: {empty[head]})\n")
+            continue
         typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
         out.write(f"{name}: {p['model']} ({typed}), end rule {p['end']}\n")
         steps = p.get("steps_per_contact") or [None] * len(p["speeds"])

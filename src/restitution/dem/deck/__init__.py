@@ -536,7 +536,13 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
         restarts = _restart_infos(root) if scratch.restarts else None
-        if done.error:
+        made = None
+        if done.error and (found := _run_dependent(commands, scratch)):
+            # the engine stopped after reading what the skipped runs change (a loop on the step or
+            # time that never ends in that pass, a value stepped out of its range): the deck run by
+            # hand may not stop; the runs made for real tell (a loop ends as the engine ends it)
+            made = _made_runs(deck_run, scratch, commands, found, run_budget, path.resolve().parent, done.looped)
+        if done.error and (made is None or made[0] is None):
             where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
                 where, line = place(commands[-1].loc), commands[-1].text
@@ -555,18 +561,20 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
-            raise DeckError(where, line or None, _stopped(engine, message, commands))
-        read = deck_commands(commands, scratch)
-        try:
-            deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts), None
-        except DeckError as why:
-            if by_position(read) is None:
-                raise
-            deck, refusal = None, why       # the runs made for real may answer it
-        found = _run_dependent(commands, scratch, clocked is not None)
-        causes = _run_causes(found, by_position(read), deck)
-        made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
-                          done.timed_out and done.looped) if causes else None
+            raise DeckError(where, line or None, "; ".join([_stopped(engine, message, commands), *made[2:]]
+                                                            if made else [_stopped(engine, message, commands)]))
+        if made is None:
+            read = deck_commands(commands, scratch)
+            try:
+                deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts), None
+            except DeckError as why:
+                if by_position(read) is None:
+                    raise
+                deck, refusal = None, why       # the runs made for real may answer it
+            found = _run_dependent(commands, scratch, clocked is not None)
+            causes = _run_causes(found, by_position(read), deck)
+            made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
+                              done.timed_out and done.looped) if causes else None
         if made is not None and made[0] is not None:
             done, commands, said = made
             atoms = snapshots(done.atoms) + snapshots(done.at_end)
@@ -581,6 +589,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 raise refusal
             notes = _run_dependent_notes(commands, scratch, engine, clocked is not None) + said
             deck.doubtful_runs = _runs_after(commands, found)
+        _hold_charges(deck, commands, deck_run.charges(root) if hasattr(deck_run, "charges") else None)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
@@ -596,6 +605,24 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                      f"{len(commands)} commands" + (f"; its last {len(last)} runs all saw the same contact settings"
                                                     if len(last) > 1 else ""))
     return deck, notes
+
+
+#: Commands that may change the charges atoms hold, or which atoms there are: after a run, the
+#: charges the engine holds at the deck's end are not every run's
+_CHARGING = re.compile(r"(set\s.*\bcharge\b|fix\s+\S+\s+\S+\s+adapt\s.*\bcharge\b|delete_atoms|read_data|"
+                       r"read_restart|fix\s+\S+\s+\S+\s+(evaporate|pour|deposit))")
+
+
+def _hold_charges(deck: Deck, commands: list, charges: dict | None) -> None:
+    """Give the deck and each of its stages the charges its engine held at the deck's end
+    (``charges``, :func:`restitution.dem.engines.lammps.deck_run.charges`) where they are every
+    run's: no command after the first run changes a charge or the atoms held (then, and where the
+    engine gives none, they stay unknown: fix efield is named wherever it may act)."""
+    first = next((k for k, cmd in enumerate(commands) if cmd.stage is not None), len(commands))
+    if charges is None or any(_CHARGING.match((_unguarded(cmd.text) or "").strip()) for cmd in commands[first:]):
+        return
+    for held in [deck] + [snap for _, snap, _ in deck.stages]:
+        held.charges = charges
 
 
 def _restart_infos(root: Path) -> list:
@@ -911,7 +938,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     dict
         {"code", "stages", "pairs", "walls", "unknown_lines", "ignored"}. ``stages``: one entry
         for each change of the contact settings between runs ({"runs": [{"file", "line", "text"}],
-        "pairs", "walls"}; a deck without a run has one stage, its settings at its end); ``pairs``
+        "pairs", "walls"}, and "why" where it has neither; a deck without a run has one stage, its
+        settings at its end); ``pairs``
         and ``walls`` are the last stage's. A pair row holds, for a type pair, the eps the deck
         really gives at ``speeds`` (relative accuracy 1e-10), beside the e typed (or None) and the
         line that would give that e exactly. Where the spheres' centres would meet
@@ -985,6 +1013,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                 row["may_differ"] = True
         audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
                         "walls": walls})
+        if not pairs and not walls:
+            audited[-1]["why"] = _no_rows(snap)
     if unmapped and not any(stage["pairs"] or stage["walls"] for stage in audited):
         raise unmapped[0]            # nothing the deck's contacts do is mapped: refused, in one line
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
@@ -1329,6 +1359,20 @@ def _empty(deck: Deck, t: int) -> bool:
     a type of walls only, or unused; no sphere of it meets another."""
     return (deck.held is not None and t not in deck.held and t not in deck.radius and t not in deck.missing
             and t not in deck.sizes)
+
+
+def _no_rows(deck: Deck) -> str:
+    """Why a stage has no row: no atom held at its run, or none of its pairs and walls audited.
+
+    Examples
+    --------
+    >>> _no_rows(Deck(ntypes=2, held={}))
+    'the engine holds no atom at this run (none made yet, or none left), so no two spheres meet and none meets a wall'
+    """
+    if all(_empty(deck, t) for t in range(1, deck.ntypes + 1)):
+        return ("the engine holds no atom at this run (none made yet, or none left), so no two spheres meet and none "
+                "meets a wall")
+    return "none of its type pairs or walls is audited: the notes on stderr say why of each"
 
 
 def _empty_notes(deck: Deck) -> list:

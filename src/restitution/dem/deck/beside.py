@@ -243,6 +243,8 @@ def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_
             continue
         if len(types) == 2 and acted is not None and all(acted) and (_alike(words) or _same_push(words, pair)):
             continue                       # both spheres shifted alike: their relative motion is as it was
+        if style == "efield" and not _charged(deck, words, types, pair, acted):
+            continue                       # no charge it acts on, or the same push on both spheres
         entry = {"fix": words[1], "style": style, "file": loc[0], "line": loc[1], "what": BESIDE[style],
                  "eps_engine": None, "why": "", "along": None}
         if acted is None:
@@ -268,6 +270,39 @@ def _same_push(words: list, pair: Pair) -> bool:
     """
     return (words[3] == "addforce" and len(words) >= 7 and pair.m1 == pair.m2 and "region" not in words[7:]
             and all(_number(w) is not None for w in words[4:7]))
+
+
+def _charged(deck, words: list, types: tuple, pair: Pair, acted: list | None) -> bool:
+    """Whether fix efield ``words`` may change one collision's relative motion: not where the charges
+    the engine holds (``deck.charges``; {} where its atom style holds none) leave every body it acts
+    on uncharged, nor, between two spheres it acts on in a field of constant components, where both
+    hold one charge per mass (the same push on each: LAMMPS head-on, two spheres of 1e-7 C in 1e5
+    V/m, eps as without the field to 2e-13). Where the charges are not known, it may.
+
+    Examples
+    --------
+    >>> from restitution.dem.dialect.state import Deck
+    >>> ef, p = "fix ef all efield 0 0 1e5".split(), Pair.spheres(0.001, 0.001, 2500.0)
+    >>> d = Deck(charges={1: {0.0}, 2: {1e-9}})
+    >>> [_charged(d, ef, t, p, [True] * len(t)) for t in ((1, 1), (1, 2), (2, 2), (1,), (2,))]
+    [False, True, False, False, True]
+    >>> _charged(Deck(charges={}), ef, (1, 2), p, [True, True]), _charged(Deck(), ef, (1, 1), p, [True, True])
+    (False, True)
+    """
+    charges = getattr(deck, "charges", None)
+    if charges == {}:
+        return False                 # an atom style without a charge (LAMMPS then refuses the fix)
+    if charges is None or acted is None or any(t not in charges for t in types):
+        return True
+    held = [charges[t] if on else {0.0} for t, on in zip(types, acted)]
+    if all(q == {0.0} for q in held):
+        return False
+    constant = len(words) >= 7 and all(_number(w) is not None for w in words[4:7]) and not (
+        {"region", "energy", "potential"} & set(words[7:]))
+    if len(types) == 2 and constant and all(acted) and all(len(q) == 1 for q in held):
+        (q1,), (q2,) = held
+        return not math.isclose(q1 * pair.m2, q2 * pair.m1, rel_tol=1e-12, abs_tol=0.0)
+    return True
 
 
 def _alike(words: list) -> bool:

