@@ -20,6 +20,8 @@ FIELD = Path(__file__).resolve().parents[1]
 VISCO = "pair_coeff * * hertz/material 1e7 {} 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"
 RESTITUTION = "pair_coeff {} hertz/material 1e7 {} 0.3 damping coeff_restitution tangential linear_nohistory 1 0.3"
 
+HOOKE = "pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
+
 #: deck -> (the contact lines in force at its last run, as it types them; what the pass with runs
 #: skipped does with it)
 DECKS = {
@@ -30,6 +32,11 @@ DECKS = {
         RESTITUTION.format(pair, e) for pair, e in (("1 1", 0.9), ("2 2", 0.3), ("1 2", 0.6))), "refused"),
     "field11/decks/a26_if_position_after_fall": (VISCO.format("3e5"), "may_differ"),
     "field11/decks/a01_if_count_after_pour": (RESTITUTION.format("* *", 0.9), "may_differ"),
+    # field round 13 (D1): fix adapt ... reset no grows the diameters from 0.004 to 0.006 in the first
+    # run; the later stage was audited at the sizes before it, silently (a38 types 1 2: 0.4973 where
+    # LAMMPS gives 0.2551)
+    "field13/decks/a07_adapt_grow_then_set_density": (HOOKE, "may_differ"),
+    "field13/decks/a38_adapt_grow_then_run": (HOOKE, "may_differ"),
     "field10/decks/f04_pour_done_then_set": ("pair_coeff * * hooke 1000 0.02 damping velocity tangential "
                                              "linear_nohistory 0 0", "if_poured"),
 }
@@ -130,4 +137,5 @@ def test_a_settle_loop_on_a_position_ends_in_the_runs_made(tmp_path):
     last = got["stages"][-1]["pairs"]
     assert [p["types"] for p in last] == [[1, 1]] and last[0]["overlap_limit"] == pytest.approx(0.02, rel=1e-12)
     agrees_with_lammps(last, {1: (0.01, 2.5)}, VISCO.format("3e6"), 1)
+
 

@@ -489,6 +489,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import scratch_copy
+    from .runtime import resized_by_runs
     from .stream import deck_commands, engine_error, skipped, snapshots, unchecked, written_then_read
     if engine == "LAMMPS":
         from ..engines.lammps import deck_run
@@ -564,7 +565,9 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 raise
             deck, refusal = None, why       # the runs made for real may answer it
         found = _run_dependent(commands, scratch, clocked is not None)
-        causes = _run_causes(found, by_position(read), deck)
+        resized = resized_by_runs(commands)
+        causes = sorted(_run_causes(found, by_position(read), deck) + resized,
+                        key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
         made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
                           done.timed_out and done.looped) if causes else None
         if made is not None and made[0] is not None:
@@ -580,7 +583,12 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 refusal.args = ("; ".join([refusal.args[0], *said]),)
                 raise refusal
             notes = _run_dependent_notes(commands, scratch, engine, clocked is not None) + said
-            deck.doubtful_runs = _runs_after(commands, found)
+            if resized and not said:
+                notes.append(f"after a run, {place(resized[0][0])} {resized[0][1]}: with the runs "
+                             f"{'skipped' if engine == 'LAMMPS' else 'one step long'} the sizes and masses read "
+                             "from here on are those before it, not the deck's")
+            # the rows of these runs are marked, not only named on stderr
+            deck.doubtful_runs = _runs_after(commands, found) | _runs_after(commands, resized)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
