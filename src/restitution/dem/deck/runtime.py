@@ -159,10 +159,19 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
     [((None, 5), 'if "${t} > 0.1" then "jump SELF done"')]
     >>> run_dependent(cmds, clocked=True)
     []
+
+    A fix halt may end a run early, so a clocked pass's step after it is not the deck's:
+
+    >>> halted = cmds[:2] + [Executed((None, 6), "fix h all halt 10 v_t > 1"), *cmds[2:]]
+    >>> [loc for loc, _ in run_dependent(halted, clocked=True)]
+    [(None, 5)]
     """
     allowed = _MATH | CLOCK if clocked else _MATH
     source = source or {}
     styles: dict = {}
+    # a fix halt may end a run before its last step: the step and time after it are not those a
+    # clocked pass sets (the deck's run to its end)
+    halts: set = set()
     # a loop runs the same lines over and over: a line is checked again only where a variable
     # definition changed since its last check (``version`` counts the changes)
     version, checked = 0, {}
@@ -182,8 +191,14 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
                     styles.pop(split[1], None)
                 else:
                     styles[split[1]] = definition
+        if split[0] == "unfix" and len(split) > 1 or split[0] == "fix" and len(split) > 1:
+            halts.discard(split[1])
+            if split[0] == "fix" and len(split) > 3 and split[3] == "halt":
+                halts.add(split[1])
         if cmd.stage is not None:
             after_run = True
+            if halts and allowed is not _MATH:
+                allowed, version = _MATH, version + 1
         elif after_run and split[0] in _WATCHED and cmd.loc not in seen and checked.get(cmd.loc) != version:
             checked[cmd.loc] = version
             if not _fixed(text, styles, allowed=allowed):

@@ -50,8 +50,11 @@ SKIPPED_COMMANDS = frozenset({
 SHELL_BUILTINS = frozenset({"cd", "mkdir", "mv", "rm", "rmdir", "putenv"})
 #: Fix styles never executed (they write files or print): kept as a fix of the same ID that does
 #: nothing, so unfix and fix_modify still find it
+#: (not fix halt: it reads state and ends a run, its message on the screen, no file; LAMMPS 22 Jul 2025
+#: fix halt: attributes bondmax, tlimit, diskfree (statvfs of a path), v_name; keywords error,
+#: message, path: where the runs are made for real, the run it ends is the deck's)
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
-                         "vector", "halt", "external", "mdi", "pafi", "plumed", "colvars", "imd",
+                         "vector", "external", "mdi", "pafi", "plumed", "colvars", "imd",
                          "couple/", "ave/euler", "dump", "phonon", "saed/vtk")
 #: What the print that stands for a set met by no atom begins with (where the engine guards set)
 UNSET = "restitution_unset"
