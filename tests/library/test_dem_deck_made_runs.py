@@ -143,3 +143,41 @@ def test_a_settle_loop_on_a_position_ends_in_the_runs_made(tmp_path):
     agrees_with_lammps(last, {1: (0.01, 2.5)}, VISCO.format("3e6"), 1)
 
 
+
+FALL = """units si
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+region box block 0 0.04 0 0.04 0 0.1 units box
+create_box 2 box
+pair_style granular
+{line}
+fix floor all wall/gran granular hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL
+fix integ all nve/sphere
+timestep 1e-5
+create_atoms 1 single 0.02 0.02 0.05
+create_atoms 1 single 0.01 0.01 0.09
+set type 1 diameter 0.004 density 2500
+velocity all set 0 0 -1
+{output}
+run 2000
+region low block INF INF INF INF INF 0.02 units box
+set region low type 2
+set type 2 diameter 0.006 density 1000
+run 100
+""".replace("{line}", HOOKE)
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("output", ["", 'fix out all print 1000 "falling"', "fix out all ave/time 100 1 100 c_thermo_temp"])
+def test_an_output_fix_not_run_moves_no_atom_in_the_runs_made(tmp_path, output):
+    """The fix standing for an output fix not run was nve/noforce, which moved every atom at its
+    velocity once more in the runs made for real: the sphere falling at 1 m/s reached z 0.01 in
+    2000 steps instead of 0.03, set region low made it type 2, and the audit printed rows for
+    type 2, which LAMMPS run by hand never holds."""
+    (tmp_path / "in.deck").write_text(FALL.format(output=output))
+    status, got, err = _json(tmp_path / "in.deck")
+    held = lammps_held_at_end(tmp_path / "in.deck")
+    assert status == 0 and "for real" in err, err
+    assert sorted(held) == [1] and [p["types"] for p in got["stages"][-1]["pairs"]] == [[1, 1]], (held, got)
