@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from cli_run import run_cli
-from deck_cli import IN_POUR, LIGGGHTS_BOX, needs_lammps
+from deck_cli import IN_POUR, LIGGGHTS_BOX, needs_lammps, needs_liggghts
 from deck_cli import run as run_deck
 from restitution.cli import main
 from restitution.dem.engines.lammps import run as lammps_run
@@ -907,3 +907,14 @@ def test_walls_closer_than_a_spheres_diameter_are_named_as_meeting_it_together()
     far, err = _beside(FIELD13 / "w08_floor_and_ceiling_distinct" / "in.deck")
     assert not any("another wall" in w for what in far.values() for w in what), far
 
+
+@needs_liggghts
+@pytest.mark.dem
+def test_two_meshes_of_one_wall_are_named_as_meeting_at_a_surface():
+    """Field round 13 (L12): the same plane STL twice in one wall/gran (n_meshes 2): LIGGGHTS adds both
+    meshes' forces (0.21999859), where each mesh's row said 0.3630 with no word."""
+    rows, err = _beside(FIELD13 / "L12_two_meshes_same_plane" / "in.deck", "1")
+    assert set(rows) == {("wmesh", "cad1"), ("wmesh", "cad2")}
+    for (_, mesh), what in rows.items():
+        other = "cad2" if mesh == "cad1" else "cad1"
+        assert any(f"another mesh of this wall ({other})" in w for w in what), what

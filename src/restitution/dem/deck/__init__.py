@@ -340,6 +340,15 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                                "eps_engine": None,
                                "why": "its size is not computed", "along": None}
                               for other_loc, other, where in shared.get((words[1], t), [])]
+                    # the other meshes of this one fix (n_meshes 2 or more): LIGGGHTS adds each mesh's
+                    # force on a sphere that meets them at one place (field round 13, one plane twice:
+                    # 0.2200 where each mesh's row said 0.3630); the audit does not place meshes
+                    others += [{"fix": words[1], "style": words[3], "file": loc[0], "line": loc[1],
+                                "what": (f"another mesh of this wall ({other_mesh}), which may meet this one at a "
+                                         "surface (the audit does not place meshes): where it does, the engine adds "
+                                         "both meshes' forces on a sphere there"),
+                                "eps_engine": None, "why": "its size is not computed", "along": None}
+                               for other_mesh in dict.fromkeys(m for m, *_ in surfaces) if other_mesh != mesh]
                     # sized by _ends on the rows it keeps (_beside)
                     row["_beside"] = lambda at_row: effects(deck, at_row, contact, pair, (t,), faces=faces) + others
                     return row, (tuple(size),) if t in deck.sizes else ()
