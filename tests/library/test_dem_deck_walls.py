@@ -5,11 +5,13 @@ walls it cannot map are named, one line each, and the rest of the deck is still 
 import io
 import json
 import math
+from pathlib import Path
 
 import pytest
 
 from cli_run import run_cli
-from deck_cli import IN_POUR, LIGGGHTS_BOX
+from deck_cli import IN_POUR, LIGGGHTS_BOX, needs_lammps, needs_liggghts
+from deck_cli import run as run_deck
 from restitution.cli import main
 from restitution.dem.engines.lammps import run as lammps_run
 from restitution.dem.engines.liggghts import run as liggghts_run
@@ -880,3 +882,39 @@ def test_a_liggghts_planar_mesh_is_a_mesh(tmp_path):
     res, err = audit(tmp_path, text, 0.1)
     assert any(w["mesh"] == "mesh1" for w in res["walls"]), err
     assert "has no fix mesh/surface" not in err and "may add forces" not in err, err
+
+
+FIELD13 = Path(__file__).resolve().parents[1] / "field13" / "decks"
+
+
+def _beside(deck, g="3.162"):
+    status, out, err = run_deck(deck, "--g", g, "--json")
+    assert status == 0, err
+    return {(w["wall"], w["mesh"]): [b["what"] for b in w.get("beside", [])] for w in json.loads(out)["walls"]}, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_walls_closer_than_a_spheres_diameter_are_named_as_meeting_it_together():
+    """Field round 13 (w09): a floor at z = 0 and a plane region wall at z = 1e-4; a sphere of
+    diameter 0.004 overlaps both, and LAMMPS adds both forces (0.40373 at g 3.162, 0.35482 at g 10),
+    where each row said 0.5370 with no word. A ceiling at 0.09 (w08) is not named."""
+    near, err = _beside(FIELD13 / "w09_region_plane_nearly_same_z" / "in.deck")
+    assert set(near) == {("floor", None), ("rw", None)}
+    for what in near.values():
+        (named,) = [w for w in what if "another wall near this one" in w]
+        assert "z = 0 and z = 0.0001" in named or "z = 0.0001 and z = 0" in named, named
+    far, err = _beside(FIELD13 / "w08_floor_and_ceiling_distinct" / "in.deck")
+    assert not any("another wall" in w for what in far.values() for w in what), far
+
+
+@needs_liggghts
+@pytest.mark.dem
+def test_two_meshes_of_one_wall_are_named_as_meeting_at_a_surface():
+    """Field round 13 (L12): the same plane STL twice in one wall/gran (n_meshes 2): LIGGGHTS adds both
+    meshes' forces (0.21999859), where each mesh's row said 0.3630 with no word."""
+    rows, err = _beside(FIELD13 / "L12_two_meshes_same_plane" / "in.deck", "1")
+    assert set(rows) == {("wmesh", "cad1"), ("wmesh", "cad2")}
+    for (_, mesh), what in rows.items():
+        other = "cad2" if mesh == "cad1" else "cad1"
+        assert any(f"another mesh of this wall ({other})" in w for w in what), what

@@ -209,13 +209,56 @@ def _region_places(deck: Deck, rid: str) -> set | None:
     return places | {(axis, at) for face, at in zip("12", ends) if at is not None and face not in region.opened}
 
 
+def _reach(deck: Deck, t: int) -> float | None:
+    """The largest diameter of type ``t``'s spheres at this stage, None where the audit has none."""
+    sizes = deck.sizes.get(t) or ([(deck.radius[t], None)] if t in deck.radius else [])
+    return 2.0 * max(r for r, _ in sizes) if sizes else None
+
+
+def _near(at: set, other_at: set, reach: float | None) -> list:
+    """The pairs of two walls' surfaces (:func:`_surfaces_at` keys) one sphere may overlap at
+    once: the same surface, or parallel planes, coaxial cylinders or concentric spheres closer than
+    ``reach``, the sphere's diameter (a sphere overlaps two parallel surfaces together exactly where
+    they are less than its diameter apart, at whatever speed; how deep a contact goes at a speed
+    would give a narrower rule, per speed, which the audit does not need to name the other wall).
+
+    Examples
+    --------
+    >>> _near({("z", 0.0)}, {("z", 1e-4)}, 0.004), _near({("z", 0.0)}, {("z", 0.09)}, 0.004)
+    ([(('z', 0.0), ('z', 0.0001))], [])
+    >>> _near({("zcylinder", 0.05, 0.0, 0.0)}, {("zcylinder", 0.052, 0.0, 0.0), ("z", 0.0)}, 0.004)
+    [(('zcylinder', 0.05, 0.0, 0.0), ('zcylinder', 0.052, 0.0, 0.0))]
+    """
+    found = []
+    for a in sorted(at, key=str):
+        for b in sorted(other_at, key=str):
+            if a == b:
+                found.append((a, b))
+            elif reach is not None and a[0] == b[0] and len(a) == len(b):
+                # a plane's position; a cylinder's radius about one axis; a sphere's about one centre
+                gap = abs(a[1] - b[1]) if len(a) == 2 else (
+                    abs(a[1] - b[1]) if a[2:] == b[2:] and a[0] != "sphere" else
+                    abs(a[4] - b[4]) if a[0] == "sphere" and a[1:4] == b[1:4] else None)
+                if gap is not None and gap < reach:
+                    found.append((a, b))
+    return found
+
+
+def _shown(key: tuple) -> str:
+    """A surface key as the notes say it: "z = 0", "zcylinder 0.05 0 0"."""
+    return f"{key[0]} = {key[1]:g}" if len(key) == 2 else " ".join(f"{x:g}" if isinstance(x, float) else x
+                                                                    for x in key)
+
+
 def _shared_faces(deck: Deck) -> dict:
     """{(wall ID, type): [(other wall's loc, words, where)]} for walls that act on the same type at
-    the same plane, cylinder or sphere, or where one of them is not placed (a mesh, a region the
-    audit does not read), so that they may meet there: the engine adds both walls' forces on a
-    sphere that meets them at one surface (LAMMPS and LIGGGHTS, two identical hertz walls of e = 0.5
-    at z = 0: eps 0.366, where one gives 0.5; a mesh floor on a plane the same), a law no row of one
-    wall says."""
+    the same plane, cylinder or sphere, or at parallel ones closer than the type's largest diameter
+    (:func:`_near`; field round 13: a floor at z = 0 and a plane region at 1e-4, sphere diameter
+    0.004: LAMMPS 0.4037 at g 3.162 where either wall's row said 0.5370), or where one of them is not
+    placed (a mesh, a region the audit does not read), so that they may meet there: the engine adds
+    both walls' forces on a sphere that meets them at one surface (LAMMPS and LIGGGHTS, two
+    identical hertz walls of e = 0.5 at z = 0: eps 0.366, where one gives 0.5; a mesh floor on a
+    plane the same), a law no row of one wall says."""
     placed = []
     for loc, words, types in deck.walls:
         held = _wall_types(deck, types, loc, words, [])
@@ -231,10 +274,10 @@ def _shared_faces(deck: Deck) -> dict:
                     unplaced = words if at is None else other
                     shared.setdefault((words[1], t), []).append((other_loc, other, (
                         f"the audit does not place the surfaces of wall {unplaced[1]}")))
-                elif at & other_at:
-                    where = ", ".join(f"{k[0]} = {k[1]:g}" if len(k) == 2 else " ".join(f"{x:g}" if isinstance(x, float)
-                                                                                     else x for x in k)
-                                      for k in sorted(at & other_at, key=str))
+                elif near := _near(at, other_at, _reach(deck, t)):
+                    where = ", ".join(_shown(a) if a == b else (
+                        f"{_shown(a)} and {_shown(b)}, less than the diameter {_reach(deck, t):g} of type {t}'s "
+                        "largest sphere apart, so that a sphere may overlap both") for a, b in near)
                     shared.setdefault((words[1], t), []).append((other_loc, other, where))
     return shared
 
@@ -288,12 +331,24 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     # another wall at this surface: named beside the row (the engine adds both forces)
                     others = [{"fix": other[1], "style": other[3], "file": other_loc[0], "line": other_loc[1],
                                "what": (f"another wall at the same surface ({where}), whose force the engine "
-                                        "adds to this wall's on a sphere that meets both" if "place" not in where else
+                                        "adds to this wall's on a sphere that meets both" if "overlap" not in where
+                                        and "place" not in where else
+                                        f"another wall near this one ({where}): the engine adds both walls' forces "
+                                        "on a sphere that overlaps both" if "place" not in where else
                                         f"another wall, which may meet this one at a surface ({where}): where it "
                                         "does, the engine adds both walls' forces on a sphere there"),
                                "eps_engine": None,
                                "why": "its size is not computed", "along": None}
                               for other_loc, other, where in shared.get((words[1], t), [])]
+                    # the other meshes of this one fix (n_meshes 2 or more): LIGGGHTS adds each mesh's
+                    # force on a sphere that meets them at one place (field round 13, one plane twice:
+                    # 0.2200 where each mesh's row said 0.3630); the audit does not place meshes
+                    others += [{"fix": words[1], "style": words[3], "file": loc[0], "line": loc[1],
+                                "what": (f"another mesh of this wall ({other_mesh}), which may meet this one at a "
+                                         "surface (the audit does not place meshes): where it does, the engine adds "
+                                         "both meshes' forces on a sphere there"),
+                                "eps_engine": None, "why": "its size is not computed", "along": None}
+                               for other_mesh in dict.fromkeys(m for m, *_ in surfaces) if other_mesh != mesh]
                     # sized by _ends on the rows it keeps (_beside)
                     row["_beside"] = lambda at_row: effects(deck, at_row, contact, pair, (t,), faces=faces) + others
                     return row, (tuple(size),) if t in deck.sizes else ()
@@ -489,6 +544,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import scratch_copy
+    from .runtime import resized_by_runs
     from .stream import deck_commands, engine_error, skipped, snapshots, unchecked, written_then_read
     if engine == "LAMMPS":
         from ..engines.lammps import deck_run
@@ -572,7 +628,9 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     raise
                 deck, refusal = None, why       # the runs made for real may answer it
             found = _run_dependent(commands, scratch, clocked is not None)
-            causes = _run_causes(found, by_position(read), deck)
+            resized = resized_by_runs(commands)
+            causes = sorted(_run_causes(found, by_position(read), deck) + resized,
+                            key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
             made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
                               done.timed_out and done.looped) if causes else None
         if made is not None and made[0] is not None:
@@ -588,7 +646,12 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 refusal.args = ("; ".join([refusal.args[0], *said]),)
                 raise refusal
             notes = _run_dependent_notes(commands, scratch, engine, clocked is not None) + said
-            deck.doubtful_runs = _runs_after(commands, found)
+            if resized and not said:
+                notes.append(f"after a run, {place(resized[0][0])} {resized[0][1]}: with the runs "
+                             f"{'skipped' if engine == 'LAMMPS' else 'one step long'} the sizes and masses read "
+                             "from here on are those before it, not the deck's")
+            # the rows of these runs are marked, not only named on stderr
+            deck.doubtful_runs = _runs_after(commands, found) | _runs_after(commands, resized)
         _hold_charges(deck, commands, deck_run.charges(root) if hasattr(deck_run, "charges") else None)
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else

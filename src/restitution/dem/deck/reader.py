@@ -51,7 +51,7 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "deposit",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "enforce2d", "move",
-                     "ave/time", "ave/atom", "print", "move/mesh",
+                     "ave/time", "ave/atom", "print", "move/mesh", "halt",
                      "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
                      "nve/noforce"}
 #: LIGGGHTS move/mesh motions that accelerate a face under a sphere during a contact, so that the

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["run_dependent", "constant_in_time", "CLOCK"]
+__all__ = ["run_dependent", "resized_by_runs", "constant_in_time", "CLOCK"]
 
 #: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
 #: is not one: it formats an equal-style variable when used).
@@ -159,10 +159,19 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
     [((None, 5), 'if "${t} > 0.1" then "jump SELF done"')]
     >>> run_dependent(cmds, clocked=True)
     []
+
+    A fix halt may end a run early, so a clocked pass's step after it is not the deck's:
+
+    >>> halted = cmds[:2] + [Executed((None, 6), "fix h all halt 10 v_t > 1"), *cmds[2:]]
+    >>> [loc for loc, _ in run_dependent(halted, clocked=True)]
+    [(None, 5)]
     """
     allowed = _MATH | CLOCK if clocked else _MATH
     source = source or {}
     styles: dict = {}
+    # a fix halt may end a run before its last step: the step and time after it are not those a
+    # clocked pass sets (the deck's run to its end)
+    halts: set = set()
     # a loop runs the same lines over and over: a line is checked again only where a variable
     # definition changed since its last check (``version`` counts the changes)
     version, checked = 0, {}
@@ -182,11 +191,79 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
                     styles.pop(split[1], None)
                 else:
                     styles[split[1]] = definition
+        if split[0] == "unfix" and len(split) > 1 or split[0] == "fix" and len(split) > 1:
+            halts.discard(split[1])
+            if split[0] == "fix" and len(split) > 3 and split[3] == "halt":
+                halts.add(split[1])
         if cmd.stage is not None:
             after_run = True
+            if halts and allowed is not _MATH:
+                allowed, version = _MATH, version + 1
         elif after_run and split[0] in _WATCHED and cmd.loc not in seen and checked.get(cmd.loc) != version:
             checked[cmd.loc] = version
             if not _fixed(text, styles, allowed=allowed):
                 seen.add(cmd.loc)
                 found.append((cmd.loc, text))
     return found
+
+
+def resized_by_runs(commands: list) -> list:
+    """The runs after a run in which a fix adapt changed the atoms' sizes as it went (``reset no``,
+    the default, leaves them changed: LAMMPS fix adapt), whose sizes and masses are then those the
+    run left, which a pass with its runs skipped (or one step long) never reaches.
+
+    A fix adapt that gives its group one constant diameter counts not: its size is known before the
+    run (:func:`restitution.dem.deck.beside.adapted_diameter`). A ``reset yes`` puts the sizes back.
+
+    Parameters
+    ----------
+    commands : list of Executed
+        The commands as the engine ran them, with ``stage`` set on the runs.
+
+    Returns
+    -------
+    list of (tuple, str)
+        ((file, line), text) of the first such run, with why, as :func:`run_dependent` gives its
+        commands; empty where there is none.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> cmds = [Executed((None, 1), "variable d equal 0.004+0.02*time"),
+    ...         Executed((None, 2), "fix ad all adapt 1 atom diameter v_d reset no"),
+    ...         Executed((None, 3), "run 1000", stage=0), Executed((None, 4), "unfix ad"),
+    ...         Executed((None, 5), "run 100", stage=1)]
+    >>> resized_by_runs(cmds)
+    [((None, 5), 'run 100, whose sizes are those the run at line 3 left, as fix adapt ad resized its atoms')]
+    >>> resized_by_runs([Executed((None, 1), "variable d equal 0.006"), *cmds[1:]])
+    []
+    """
+    from ..dialect.state import place
+    from .beside import adapt_parts
+    formulas: dict = {}
+    adapts: dict = {}
+    grown = None
+    for cmd in commands:
+        split = cmd.text.split()
+        if not split:
+            continue
+        if cmd.stage is not None:
+            if grown is not None:
+                return [(cmd.loc, f"{cmd.text.strip()}, whose sizes are those the run at {place(grown[0])} left, "
+                                  f"as fix adapt {grown[1]} resized its atoms")]
+            grown = next(((cmd.loc, fix) for fix in adapts), None)
+        elif split[0] == "variable" and len(split) >= 3:
+            formulas[split[1]] = " ".join(split[3:]) if split[2] == "equal" else None
+        elif split[0] == "unfix" and len(split) > 1:
+            adapts.pop(split[1], None)
+        elif split[0] == "fix" and len(split) > 3:
+            adapts.pop(split[1], None)
+            if split[3] != "adapt":
+                continue
+            parts, keys = adapt_parts(split)
+            sized = [args for kind, args in parts if kind == "atom" and args[:1] != ["charge"]]
+            if sized and keys.get("reset", "no") != "yes" and not (
+                    keys.get("scale", "no") == "no" and len(sized) == len(parts)
+                    and all(len(a) == 2 and a[0] == "diameter" and constant_in_time(a[1], formulas) for a in sized)):
+                adapts[split[1]] = True
+    return []

@@ -247,8 +247,8 @@ def _skipped_index(cmd: Executed, scratch: Scratch) -> int | None:
 
 def deck_commands(commands: list, scratch: Scratch) -> list:
     """The commands of the deck's own that the engine executed: without the fix that stands for an
-    output fix not run (a ``fix ID all nve/noforce`` that keeps its ID for unfix), which is the
-    audit's, so that it is never read as a fix that moves every atom.
+    output fix not run (a ``fix ID all viscous 0.0`` that keeps its ID for unfix), which is the
+    audit's, so that it is never read as a fix that damps every atom.
 
     Parameters
     ----------
@@ -264,9 +264,9 @@ def deck_commands(commands: list, scratch: Scratch) -> list:
     Examples
     --------
     >>> from pathlib import Path
-    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), silenced={((None, 4), "fix 2 all nve/noforce"): 0})
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), silenced={((None, 4), "fix 2 all viscous 0.0"): 0})
     >>> [c.text for c in deck_commands([Executed((None, 3), "fix 1 all nve/sphere"),
-    ...                                 Executed((None, 4), "fix 2 all nve/noforce")], s)]
+    ...                                 Executed((None, 4), "fix 2 all viscous 0.0")], s)]
     ['fix 1 all nve/sphere']
     """
     return [cmd for cmd in commands if (cmd.loc, cmd.text) not in scratch.silenced]
