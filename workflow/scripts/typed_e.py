@@ -22,6 +22,7 @@ from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps.contact import LAMMPS_CHECKED, TSUJI_SQRT2_SINCE, tsuji_a
 from restitution.dem.engines.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINE_REFINEMENTS, TYPED_E_ENGINES,
                                            TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL, typed_e_table)
+from restitution.dem.typed_e import THORNTON_H
 
 start(snakemake)
 out = snakemake.output
@@ -117,6 +118,10 @@ extrapolated = runs["relative_deviation"].abs().groupby(runs["engine_name"]).max
 macros = {
     "TypedEMid": fixed(MID, 1),
     "TypedEOwnRuleRows": str(len(own_rule)), "TypedEOwnRuleMissing": str(len(missing)),
+    # Thornton, Cummins and Cleary's coefficients as the library holds them (the ones Yade and Kratos use),
+    # printed as they stand, so that a reader can recompute the Hertz-Mindlin rows without the engines
+    "TypedEThorntonTerms": str(len(THORNTON_H)),
+    "TypedEThorntonH": ", ".join(f"${h!r}$" for h in THORNTON_H),
     "TypedERunSteps": str(len(TYPED_E_ENGINE_REFINEMENTS)),
     # "within": bounds, rounded up like every bound the article prints (1.0145e-4 is not within 1.0e-4)
     **{f"TypedEFinest{name}": sci_up(finest[name], 2) for name in ("LAMMPS", "LIGGGHTS", "Yade", "Kratos")},

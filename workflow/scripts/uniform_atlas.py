@@ -91,9 +91,10 @@ def worst_values(rows) -> str:
         rf"\newcommand{{\UACoefMin}}{{{min(int(r['n_coef']) for r in fitted)}}}",
         rf"\newcommand{{\UACoefMax}}{{{max(int(r['n_coef']) for r in fitted)}}}",
         rf"\newcommand{{\UAPairsAtCoefMin}}{{{sum(int(r['n_coef']) == fewest for r in fitted)}}}",
-        rf"\newcommand{{\UABoundEpsWorst}}{{{sci(bound['bound_eps'], 2)}}}",
+        rf"\newcommand{{\UABoundEpsWorst}}{{{sci_up(bound['bound_eps'], 2)}}}",
         rf"\newcommand{{\UABoundEpsWorstPair}}{{{pair(bound)}}}",
-        # "at most" in the abstract: a bound, rounded up
+        # "at most" in the abstract: a bound, rounded up; the error estimate beside it is twice the held-out
+        # maximum (and more), rounded up too, so that it is not printed below its own definition
         rf"\newcommand{{\UATestEpsWorst}}{{{held_out_tex(test['held_out_eps'])}}}",
         rf"\newcommand{{\UATestEpsWorstPair}}{{{pair(test)}}}",
         rf"\newcommand{{\UADenseOverSelection}}{{{dense_ratio:.3f}}}",
@@ -128,18 +129,18 @@ def latex(rows) -> str:
     # uniform_forms.csv
     lines = [r"\begin{tabular}{llllll}", r"\toprule",
              r"$\alpha$ & $\gamma$ & $N + 1$ & error estimate in $\varepsilon$ "
-             r"& largest held-out error in $\varepsilon$ & overlap rule: $\bar N + 1$; estimates in $\varepsilon$, $1 - \varepsilon$ \\",
+             r"& largest held-out error & overlap rule: $\bar N + 1$; estimates in $\varepsilon$, $1 - \varepsilon$ \\",
              r"\midrule"]
     for r in rows:
         ab = f"{frac_tex(Fraction(r['alpha']))} & {frac_tex(Fraction(r['gamma']))}"
         if r["form"] == "uniform" and (str(Fraction(r["alpha"])), str(Fraction(r["gamma"]))) in in_article:
             # the article's table of the uniform approximation prints this pair's shape, size and estimates
             lines.append(rf"{ab} & \multicolumn{{2}}{{l}}{{in \ArtTab{{tab:uniform}}}} & {held_out_tex(r['held_out_eps'])} & "
-                         + (rf"{r['overlap_n_coef']}; {sci(r['overlap_bound_eps'], 2)}, {sci(r['overlap_bound_one_minus_eps'], 2)} \\"
+                         + (rf"{r['overlap_n_coef']}; {sci_up(r['overlap_bound_eps'], 2)}, {sci_up(r['overlap_bound_one_minus_eps'], 2)} \\"
                             if r["overlap_form"] == "uniform" else r"sticks \\"))
         elif r["form"] == "uniform":
-            lines.append(rf"{ab} & {r['n_coef']} & {sci(r['bound_eps'], 2)} & {held_out_tex(r['held_out_eps'])} & "
-                         + (rf"{r['overlap_n_coef']}; {sci(r['overlap_bound_eps'], 2)}, {sci(r['overlap_bound_one_minus_eps'], 2)} \\"
+            lines.append(rf"{ab} & {r['n_coef']} & {sci_up(r['bound_eps'], 2)} & {held_out_tex(r['held_out_eps'])} & "
+                         + (rf"{r['overlap_n_coef']}; {sci_up(r['overlap_bound_eps'], 2)}, {sci_up(r['overlap_bound_one_minus_eps'], 2)} \\"
                             if r["overlap_form"] == "uniform" else r"sticks \\"))
         else:
             what = (r"exact implicit relation (\ArtSec{sec:model}), solved to rounding" if r["form"] == "exact"

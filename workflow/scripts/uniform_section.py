@@ -297,9 +297,11 @@ worst_test = max(fitted, key=lambda n: held_out(forms[n]["measured"]))
 # measured case for the factor in the error estimate
 dense_ratio = max(forms[n]["measured"]["dense_eps"] / forms[n]["measured"]["selection_eps"] for n in fitted)
 macros = {
-    "CFBoundEpsWorst": sci_up(forms[worst]["bound_eps"], 2),   # "at most": bounds are rounded up "CFBoundEpsWorstLaw": esc(law_name(worst)),
+    # error estimates (twice the largest error on any set, plus the reference accuracy) are rounded up like
+    # bounds: rounded to nearest, 2 x 3.92e-4 printed as 7.8e-4, below the definition's own figures
+    "CFBoundEpsWorst": sci_up(forms[worst]["bound_eps"], 2),
     "CFLawsFitted": str(len(fitted)),
-    "CFBoundEps": sci(main["bound_eps"], 2), "CFBoundLoss": sci(main["bound_one_minus_eps"], 2),
+    "CFBoundEps": sci_up(main["bound_eps"], 2), "CFBoundLoss": sci_up(main["bound_one_minus_eps"], 2),
     # the sets of points not used to fit the coefficients: the validation points (the grid points between
     # the fitted ones, which choose the shape), the random test points and the dense scan, used for nothing else
     "CFValidationPoints": str(main["measured"]["n_selection"]), "CFTestPoints": str(main["measured"]["n_test"]),
@@ -313,8 +315,8 @@ macros = {
     "CFTestEpsWorstLaw": esc(law_name(worst_test)),
     "CFDenseOverSelection": f"{dense_ratio:.3f}",
     "CFFitRtol": sci(FIT_RTOL, 1),
-    "CFOverlapBoundEps": sci(main_overlap["bound_eps"], 2) if main_overlap["available"] else "none",
-    "CFOverlapBoundLoss": sci(main_overlap["bound_one_minus_eps"], 2) if main_overlap["available"] else "none",
+    "CFOverlapBoundEps": sci_up(main_overlap["bound_eps"], 2) if main_overlap["available"] else "none",
+    "CFOverlapBoundLoss": sci_up(main_overlap["bound_one_minus_eps"], 2) if main_overlap["available"] else "none",
     # the overlap form's size and where its references are the creep law rather than integrations
     "CFOverlapTerms": str(len(main_overlap["a"])) if main_overlap["available"] else "none",
     "CFOverlapLawBelow": sci(LAW_BELOW, 1),
@@ -384,7 +386,7 @@ for name in p.variants:
     if f["available"]:
         # the name on one line: stacked, it stood above its row's numbers
         rows.append(rf"{esc(law_name(name))} & {ab} & {sci(f['b'], 12)} & {sci(f['c3'], 12)} & {float(f['sigma']):g} & "
-                    rf"{f['m0']} & {f['m1']} & {sci(f['bound_eps'], 2)}, {sci(f['bound_one_minus_eps'], 2)} \\")
+                    rf"{f['m0']} & {f['m1']} & {sci_up(f['bound_eps'], 2)}, {sci_up(f['bound_one_minus_eps'], 2)} \\")
     else:
         rows.append(rf"{esc(law_name(name))} & {ab} & \multicolumn{{6}}{{l}}{{none: {esc(f['reason'])}}} \\")
 overlap_rows = []
@@ -394,8 +396,8 @@ for name in p.variants:
     if f["available"]:
         kv = Fraction(p.exponents[name]["gamma"]) + 1
         kv /= 2 * Fraction(p.exponents[name]["gamma"]) + 1 - Fraction(p.exponents[name]["alpha"])
-        overlap_rows.append(rf"{esc(law_name(name))} & {ab} & {frac(kv)} & {len(f['a'])} & {sci(f['bound_eps'], 2)} & "
-                            rf"{sci(f['bound_one_minus_eps'], 2)} \\")
+        overlap_rows.append(rf"{esc(law_name(name))} & {ab} & {frac(kv)} & {len(f['a'])} & {sci_up(f['bound_eps'], 2)} & "
+                            rf"{sci_up(f['bound_one_minus_eps'], 2)} \\")
     else:
         why = (r"none: $\alpha \geq 2\gamma + 1$, the bodies can stick" if "stick" in f["reason"]
                else r"none: $\alpha \leq \gamma$, as for the force rule")
@@ -468,7 +470,7 @@ error over the whole range. The numbers of \ArtTab{{tab:uniform}}, typed as prin
 $\alpha \leq \gamma$ has no such form: for $\alpha = \gamma$ the exact implicit relation of \ArtSec{{sec:model}}
 (Hunt and Crossley's case) applies, for $\alpha < \gamma$
 the first viscous correction is not known. Table~\ref{{tab:uniform-atlas}} in the appendix gives the form for every
-exponent pair of the stability atlas.
+exponent pair of its survey of the reference integrator.
 
 \begin{{figure}}[htbp]
 \centering
@@ -498,8 +500,8 @@ degree are chosen as for the force rule's form, the coefficients fitted with a s
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = {sci(LAW_BELOW, 1)}$ each integration of the creeping return takes about a second, and there the
 references are the creep law itself, checked against the integrator above it; the error estimate adds that difference and
-the error of $C_o$. The error estimate for Kim's force law is {sci(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
-and {sci(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
+the error of $C_o$. The error estimate for Kim's force law is {sci_up(main_overlap['bound_eps'], 2) if main_overlap['available'] else 'none'} in $\varepsilon$
+and {sci_up(main_overlap['bound_one_minus_eps'], 2) if main_overlap['available'] else 'none'} in $1 - \varepsilon$ (Table~\ref{{tab:uniform-overlap}},
 lower row of Fig.~\ref{{fig:uniform-error}}); the printed numbers change $\varepsilon$ by at most {sci(overlap_printed, 2)}.
 For $\alpha \geq 2\gamma + 1$ the bodies can stick and there is no such formula: for $\alpha = 2\gamma + 1$ exactly when
 $\Omega \leq 1/(4(\gamma+1))$, at every impact speed since $\Omega$ does not depend on $g$ there (\ArtSec{{sec:exact-family}}); the integrations cover those pairs.
