@@ -251,14 +251,15 @@ def _shown(key: tuple) -> str:
 
 
 def _shared_faces(deck: Deck) -> dict:
-    """{(wall ID, type): [(other wall's loc, words, where)]} for walls that act on the same type at
+    """{(wall ID, type): [(other wall's loc, words, where, kind)]} for walls that act on the same type at
     the same plane, cylinder or sphere, or at parallel ones closer than the type's largest diameter
     (:func:`_near`; field round 13: a floor at z = 0 and a plane region at 1e-4, sphere diameter
     0.004: LAMMPS 0.4037 at g 3.162 where either wall's row said 0.5370), or where one of them is not
     placed (a mesh, a region the audit does not read), so that they may meet there: the engine adds
     both walls' forces on a sphere that meets them at one surface (LAMMPS and LIGGGHTS, two
     identical hertz walls of e = 0.5 at z = 0: eps 0.366, where one gives 0.5; a mesh floor on a
-    plane the same), a law no row of one wall says."""
+    plane the same), a law no row of one wall says. ``kind``: "same" (one surface), "near" (some
+    pair of surfaces apart by less than the diameter) or "unplaced"."""
     placed = []
     for loc, words, types in deck.walls:
         held = _wall_types(deck, types, loc, words, [])
@@ -273,12 +274,13 @@ def _shared_faces(deck: Deck) -> dict:
                 if at is None or other_at is None:
                     unplaced = words if at is None else other
                     shared.setdefault((words[1], t), []).append((other_loc, other, (
-                        f"the audit does not place the surfaces of wall {unplaced[1]}")))
-                elif near := _near(at, other_at, _reach(deck, t)):
+                        f"the audit does not place the surfaces of wall {unplaced[1]}"), "unplaced"))
+                elif near := _near(at, other_at, reach := _reach(deck, t)):
                     where = ", ".join(_shown(a) if a == b else (
-                        f"{_shown(a)} and {_shown(b)}, less than the diameter {_reach(deck, t):g} of type {t}'s "
+                        f"{_shown(a)} and {_shown(b)}, less than the diameter {reach:g} of type {t}'s "
                         "largest sphere apart, so that a sphere may overlap both") for a, b in near)
-                    shared.setdefault((words[1], t), []).append((other_loc, other, where))
+                    kind = "same" if all(a == b for a, b in near) else "near"
+                    shared.setdefault((words[1], t), []).append((other_loc, other, where, kind))
     return shared
 
 
@@ -330,16 +332,16 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                                      "line": loc[1], "file": loc[0]}, contact, at_speeds, pair.R1, _dt(deck))
                     # another wall at this surface: named beside the row (the engine adds both forces)
                     others = [{"fix": other[1], "style": other[3], "file": other_loc[0], "line": other_loc[1],
-                               "what": (f"another wall at the same surface ({where}), whose force the engine "
-                                        "adds to this wall's on a sphere that meets both" if "overlap" not in where
-                                        and "place" not in where else
-                                        f"another wall near this one ({where}): the engine adds both walls' forces "
-                                        "on a sphere that overlaps both" if "place" not in where else
-                                        f"another wall, which may meet this one at a surface ({where}): where it "
-                                        "does, the engine adds both walls' forces on a sphere there"),
+                               "what": {"same": f"another wall at the same surface ({where}), whose force the "
+                                                "engine adds to this wall's on a sphere that meets both",
+                                        "near": f"another wall near this one ({where}): the engine adds both walls' "
+                                                "forces on a sphere that overlaps both",
+                                        "unplaced": f"another wall, which may meet this one at a surface ({where}): "
+                                                    "where it does, the engine adds both walls' forces on a sphere "
+                                                    "there"}[kind],
                                "eps_engine": None,
                                "why": "its size is not computed", "along": None}
-                              for other_loc, other, where in shared.get((words[1], t), [])]
+                              for other_loc, other, where, kind in shared.get((words[1], t), [])]
                     # the other meshes of this one fix (n_meshes 2 or more): LIGGGHTS adds each mesh's
                     # force on a sphere that meets them at one place (field round 13, one plane twice:
                     # 0.2200 where each mesh's row said 0.3630); the audit does not place meshes
