@@ -295,6 +295,7 @@ def test_the_uniform_section_prints_each_variants_form_and_bound(built):
     import numpy as np
 
     from restitution.core.uniform import UniformForm
+    from restitution_workflow.latex import sci_up
 
     # the forms' table is the article's (results/paper/uniform_table.tex); the supplement's section
     # names it instead of reprinting it
@@ -309,7 +310,8 @@ def test_the_uniform_section_prints_each_variants_form_and_bound(built):
         inside = (curve["omega"] >= 1e-8) & (curve["omega"] <= 1e8)
         err = np.abs(curve["eps_uniform"] / curve["eps_reference"] - 1)[inside]
         assert err.max() <= form["bound_eps"] + 1e-9     # eps_reference: scipy at the pipeline's rtol
-        assert f"{form['bound_eps']:.1e}".split("e")[0] in tex
+        # printed as an upper bound, so rounded up at its second digit (issue 53)
+        assert sci_up(form["bound_eps"], 2) in tex
     section = (built / "results/paper/uniform_section.tex").read_text()
     assert r"\label{sec:uniform}" in section and "uniform_error.pdf" in section
     # the supplement refers to the article's formula and table instead of reprinting them (issue 53)
