@@ -288,3 +288,18 @@ def test_every_printed_error_estimate_is_at_least_twice_its_printed_held_out_max
               ("Kim's exponents, Sec. 3", _number(cf["CFBoundEps"]), _number(cf["CFTestEps"]))]
     short = [(p, e, h) for p, e, h in pairs if e < 2 * h * (1 - 1e-12)]
     assert not short, f"error estimates printed below twice their printed held-out maximum: {short}"
+
+
+@needs_pdf
+@pytest.mark.skipif(not SUPPLEMENT_PDF.exists(), reason="needs the built supplement (make paper)")
+def test_the_supplements_wide_tables_are_on_pages_a_viewer_turns_upright():
+    """Tables set sideways (pdflscape) carry /Rotate 90 on their page, so that a PDF viewer shows them
+    upright; rotating's sidewaystable turned only the text (issue 53's referee: "landscape tables")."""
+    pages, text = _pdf_text(SUPPLEMENT_PDF)
+    sideways = []
+    for n, page in enumerate(text.split("\f")[:pages], 1):
+        if re.search(r"Table S\d+: (Coefficients \$?h|Truncation error|Cost and accuracy)", page):
+            info = subprocess.run(["pdfinfo", "-f", str(n), "-l", str(n), str(SUPPLEMENT_PDF)],
+                                  capture_output=True, text=True, check=True).stdout
+            sideways.append((n, re.search(r"rot:\s+(\d+)", info).group(1)))
+    assert len(sideways) >= 2 and all(rot == "90" for _, rot in sideways), sideways
