@@ -32,9 +32,9 @@ Tangential, rolling and twisting models take no part in a head-on collision and 
 Which spheres meet, and how they move, is :mod:`restitution.dem.deck.meeting`'s: a pair the
 engine's neighbour list leaves out (``neigh_modify exclude``, bonded atoms) is named, not audited;
 where one sphere of a pair is moved by no integrator (or by ``fix move linear``), the pair's eps is
-the other sphere's motion under the engine's force; ``fix rigid`` on spheres is refused, and so is
-a deck whose runs integrate no atom (the engine moves none: no contact happens). A wall not
-audited names the sphere types it acts on.
+the other sphere's motion under the engine's force; the pairs of a type whose spheres ``fix rigid``
+joins into bodies are named, not audited, and a deck whose runs integrate no atom is refused (the
+engine moves none: no contact happens). A wall not audited names the sphere types it acts on.
 
 The deck's engine interprets it (:func:`engine_of` tells which): LAMMPS for a LAMMPS deck (its
 Python module, runs skipped), the ``liggghts`` binary for a LIGGGHTS deck (each run one step), both

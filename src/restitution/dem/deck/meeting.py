@@ -198,8 +198,12 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
         if ran:
             return "held", "no fix integrates any atom in this run"
         return "free", ""
+    if (body := _in_body(deck, t)) is not None:
+        return "unknown", body
     integrated, moved = [], []
     for fix, (loc, line, group, style) in deck.movers.items():
+        if style.startswith("rigid"):
+            continue
         held = group_types(deck, group)
         if held is None:
             # a group by region that an insertion fills, the usual LIGGGHTS deck: audited as free
@@ -228,6 +232,28 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
     return "held", f"no fix integrates type {t}: its spheres never move"
 
 
+def _in_body(deck: Deck, t: int) -> str | None:
+    """Why type t's spheres are not single spheres where a fix rigid joins some of them into bodies
+    (a body's mass and motion are not one sphere's), None where none does. The bodies' atoms are
+    the groups a ``group N g1 ... gN`` body style names, else the fix's own group; a type with any
+    atom in them counts, and every type where the audit cannot type those groups."""
+    for fix, (_, line, group, style) in deck.movers.items():
+        if not style.startswith("rigid"):
+            continue
+        words = line.split()
+        named = (words[6:6 + int(words[5])] if len(words) > 5 and words[4] == "group" and words[5].isdigit()
+                 else [group])
+        held = [group_types(deck, g) for g in named]
+        if any(h is None for h in held):
+            return (f"fix {fix} ({style}) joins the atoms of group{'s' if len(named) > 1 else ''} "
+                    f"{', '.join(named)} into rigid bodies, which the audit cannot type: a body's mass and "
+                    "motion are not one sphere's")
+        if any(t in h for h in held):
+            return (f"fix {fix} ({style}) joins type {t}'s spheres into rigid bodies: a body's mass and motion are "
+                    "not one sphere's")
+    return None
+
+
 def integrators(deck: Deck, t: int) -> list:
     """The fixes that integrate the spheres of type t, by their groups that the audit can type, in the
     deck's order: more than one advances them more than once a step (LAMMPS warns of atoms
@@ -241,7 +267,9 @@ def integrators(deck: Deck, t: int) -> list:
     ['1', '2']
     """
     out = []
-    for fix, (_, line, group, _) in deck.movers.items():
+    for fix, (_, line, group, style) in deck.movers.items():
+        if style.startswith("rigid"):
+            continue                     # a body, not a sphere: its pairs are not audited (motion)
         held = group_types(deck, group)
         if _integrates(line) and held is not None and t in held:
             out.append(fix)

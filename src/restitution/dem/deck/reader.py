@@ -1106,11 +1106,12 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if style == "move/mesh" and len(words) > 6 and words[4] == "mesh" and (
             words[6] in _SHAKING or words[6] == "linear/variable" and not all(constant_in_time(w, deck.variables) for w in words[7:10])):
         deck.shaken[words[1]] = (loc, line, words[5])
-    if style.startswith("rigid"):
-        raise DeckError(where, line, f"fix {style} makes rigid bodies of spheres: a body's mass is not a sphere's, "
-                                     "and the reader audits the head-on contact of two single spheres only")
-    if style in MOVERS:
+    # a rigid body's spheres move as one body: their types' pairs are named, not audited
+    # (meeting.motion), the deck's single spheres audited (field round 13: R03 refused whole)
+    if style in MOVERS or style.startswith("rigid"):
         deck.movers[words[1]] = (loc, line, words[2], style)
+        if style.startswith("rigid"):
+            return
     if style.startswith("bond/create"):
         deck.bonds = (loc, line)
     if style == "adapt":
