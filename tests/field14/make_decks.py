@@ -78,6 +78,18 @@ deck("r02_adapt_diameter_scale_yes", "# fix adapt diameter scale yes (a factor 1
 deck("r02b_adapt_scale_constant", "# fix adapt diameter scale yes by a constant 1.5, reset no, then unfix: radii 0.003 after the first run\n"
      + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "variable s equal 1.5\n"
      "fix ad all adapt 1 atom diameter v_s scale yes reset no\nrun 1000\nunfix ad\nrun 100\n")
+deck("r06_adapt_fep_diameter", "# fix adapt/fep (FEP package) grows type 2's diameter by a time ramp, reset no\n"
+     + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "variable dgrow equal 0.004+0.02*time\n"
+     "fix af all adapt/fep 1 atom diameter 2 v_dgrow reset no\nrun 10000\nunfix af\nrun 100\n")
+deck("r07_adapt_pair_granular", "# fix adapt on a pair granular coefficient (does LAMMPS allow it?)\n"
+     + ADAPT_BASE + "variable kk equal 2000+1e5*time\nfix ap all adapt 1 pair granular kn 1 1 v_kk reset no\nrun 1000\nunfix ap\nrun 100\n")
+deck("r16_ramp_between_runs", "# a diameter from ramp() read between runs: LAMMPS ramps over the previous run, so after it the value is the end one\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO
+     + "variable d equal ramp(0.004,0.002)\nrun 10000\nset type 1 diameter ${d}\nrun 100\n")
+deck("r17_vdisplace_swiggle_between_runs", "# a density from vdisplace() and a stiffness from swiggle() read after the run (both use the time since the run began)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO
+     + "variable rho equal vdisplace(1000,50000)\nvariable k equal swiggle(2000,1500,0.4)\nrun 10000\nset type 1 density ${rho}\n"
+     "pair_coeff * * hooke ${k} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
 deck("r03_adapt_group_type2_only", "# fix adapt on a type-2 group only, reset no: type 2 grows to 0.006, type 1 stays\n"
      + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "group g2 type 2\nvariable dgrow equal 0.004+0.02*time\n"
      "fix ad g2 adapt 1 atom diameter v_dgrow reset no\nrun 10000\nunfix ad\nrun 100\n")
@@ -193,6 +205,22 @@ deck("t03_coeffrest_hertz_limit_coarse", "# hertz/material coeff_restitution 0.5
      + head() + "pair_style granular\npair_coeff * * hertz/material 1e7 0.5 0.3 damping coeff_restitution tangential linear_nohistory 1 0.3 limit_damping\n" + GRAV
      + "fix floor all wall/gran granular hertz/material 1e7 0.5 0.3 damping coeff_restitution tangential linear_nohistory 1 0.3 limit_damping zplane 0 NULL\nfix integ all nve/sphere\ntimestep 3e-4\n"
      + TWO + "run 100\n")
+
+# ---------------------------------------------------------------- degenerate values (crash hunt)
+def _deg(pc, atoms=TWO):
+    return head() + f"pair_style granular\npair_coeff * * {pc}\n" + GRAV + FLOOR + TAIL + atoms + "run 100\n"
+
+
+deck("x02_hooke_k_zero", "# a hooke stiffness of 0 (no repulsion: the spheres pass through)\n"
+     + _deg("hooke 0 3000 damping mass_velocity tangential linear_nohistory 1 0.3"))
+deck("x03_negative_damping", "# a negative damping column (energy gain: eps > 1)\n"
+     + _deg("hooke 2000 -3000 damping mass_velocity tangential linear_nohistory 1 0.3"))
+deck("x04_density_zero", "# type 2 of density 0 (mass 0)\n" + _deg(HK, TWO.replace("0.006 density 2500", "0.006 density 0")))
+deck("x05_diameter_zero", "# type 2 of diameter 0\n" + _deg(HK, TWO.replace("diameter 0.006 density 2500", "diameter 0 density 2500")))
+deck("x07_run0_only_in_loop", "# only run 0 commands, in a loop that changes the stiffness each pass\n"
+     + head() + "pair_style granular\n" + GRAV + FLOOR + TAIL + TWO
+     + "variable k index 1000 2000 4000\nlabel l\npair_coeff * * hooke ${k} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 0\nnext k\njump SELF l\n")
+
 
 # ---------------------------------------------------------------- sandbox
 deck("x01_shell_devshm_proc_root", "# shell builtins at /dev/shm and /proc/1/root; write_coeff and write_data through them\n"

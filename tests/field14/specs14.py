@@ -63,6 +63,8 @@ S = {
     P(1, 2, 0.003, m3, stage=2), W(1, 0.003, m3, stage=2)]},
  "r02b_adapt_scale_constant": {"engine": "lammps", "lines": LL, "checks": [
     P(1, 2, 0.003, m3, stage=2), W(1, 0.003, m3, stage=2)]},
+ "r06_adapt_fep_diameter": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.002, m2, 0.003, m3), P(2, 2, 0.003, m3), W(2, 0.003, m3)]},
  "r03_adapt_group_type2_only": {"engine": "lammps", "lines": LL, "checks": [
     P(1, 2, 0.002, m2, 0.003, m3, stage=2), W(2, 0.003, m3, stage=2)]},
  "r09_bound_zmax_sets_density": {"engine": "lammps", "lines": LL, "checks": [
@@ -107,6 +109,97 @@ def main(names):
         json.dump(S[n], open(os.path.join(D, n, "spec.json"), "w"), indent=1)
     print("specs:", len([n for n in (names or S) if n in S]))
 
+
+
+# ---------------------------------------------------------------- LIGGGHTS
+MAT3 = ["fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6",
+        "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3",
+        "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5"]
+E3 = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8"
+HERTZ = ["pair_style gran model hertz tangential history", "pair_coeff * *"]
+WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0"
+STIFF3 = ["fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000",
+          "fix m5 all property/global gamman peratomtypepair 3 3000 2000 1000 2000 2500 1500 1000 1500 2000",
+          "fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000",
+          "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50"]
+L1, L2, L2b = (0.002, 8.37758e-05), (0.003, 0.000169646), (0.003, 0.000113097)
+
+
+def LP(t1, t2, a, b, **kw):
+    return P(t1, t2, a[0], a[1], b[0], b[1], **kw)
+
+
+def LW(t1, a, wall=WALL3, wall_id="wprim", **kw):
+    return W(t1, a[0], a[1], wall=wall, wall_id=wall_id, **kw)
+
+
+S.update({
+ "L01_e_one_everywhere": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [
+    "fix m3 all property/global coefficientRestitution peratomtypepair 3 1 1 1 1 1 1 1 1 1"] + HERTZ, "checks": [
+    LP(1, 2, L1, L2), LW(1, L1)]},
+ "L03_variable_count_alias": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [
+    "fix m3 all property/global coefficientRestitution atomtypepair 3 0.6 0.55 0.7 0.55 0.4 0.45 0.7 0.45 0.8"] + HERTZ, "checks": [
+    LP(1, 2, L1, L2), LW(1, L1)]},
+ "L04_sjkr_one_pair_22": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [E3,
+    "fix m9 all property/global cohesionEnergyDensity peratomtypepair 3 0 0 0 0 300000 0 0 0 0",
+    "pair_style gran model hertz tangential history cohesion sjkr", "pair_coeff * *"], "checks": [
+    LP(1, 2, L1, L2), LW(1, L1, wall="fix wprim all wall/gran model hertz tangential history cohesion sjkr primitive type 3 zplane 0.0")]},
+ "L05_sjkr_wall_pair_only": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [E3,
+    "fix m9 all property/global cohesionEnergyDensity peratomtypepair 3 0 0 300000 0 0 0 300000 0 0",
+    "pair_style gran model hertz tangential history cohesion sjkr", "pair_coeff * *"], "checks": [
+    LP(1, 1, L1, L1), LP(1, 2, L1, L2)]},
+ "L06_hookestiff_two_templates_two_types": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + STIFF3 + [
+    "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"], "checks": [
+    LP(1, 2, L1, L2b), LP(1, 1, L1, L1), LW(1, L1, wall="fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0")]},
+ "L07_rolling_epsd2_tangential_damping_off": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [E3,
+    "fix m10 all property/global coefficientRollingFriction peratomtypepair 3 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1",
+    "pair_style gran model hertz tangential history rolling_friction epsd2 tangential_damping off", "pair_coeff * *"], "checks": [
+    LP(1, 2, L1, L2), LW(1, L1, wall="fix wprim all wall/gran model hertz tangential history rolling_friction epsd2 primitive type 3 zplane 0.0")]},
+ "L08_hertzstiff_coarse_dt": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [
+    "fix m4 all property/global kn peratomtypepair 3 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5",
+    "fix m5 all property/global gamman peratomtypepair 3 3e5 3e5 3e5 3e5 3e5 3e5 3e5 3e5 3e5"] + STIFF3[2:] + [
+    "pair_style gran model hertz/stiffness tangential history", "pair_coeff * *"], "checks": [
+    LP(1, 2, L1, L2, speed_idx=[0, 3], at_dt=True),
+    LW(1, L1, wall="fix wprim all wall/gran model hertz/stiffness tangential history primitive type 3 zplane 0.0", speed_idx=[2], at_dt=True)]},
+ "L09_mesh_scale_rotate_move": {"engine": "liggghts", "ntypes": 3, "files": ["plane_mm.stl"], "lines": MAT3 + [E3] + HERTZ, "checks": [
+    LW(1, L1, wall="fix cad all mesh/surface file plane_mm.stl type 3 scale 0.001 rotate axis 0 0 1 angle 30 move 0 0 0.001\n"
+       "fix wmesh all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad", wall_id="wmesh", z0=0.003, zw=0.001)]},
+ "L10_mesh_plane_and_primitive_1e-4": {"engine": "liggghts", "ntypes": 3, "files": ["plane0.stl"], "lines": MAT3 + [E3] + HERTZ, "checks": [
+    LW(1, L1, wall="fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0001", z0=0.0021, zw=0.0001,
+       speed_idx=[0, 2, 4], label="wprim row vs mesh+primitive (engine truth)",
+       spec_override={"post": ["fix cad all mesh/surface file plane0.stl type 3",
+                               "fix wmesh all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad"]})]},
+ "L11_two_primitive_planes_1e-4": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [E3] + HERTZ, "checks": [
+    LW(1, L1, wall="fix wprim2 all wall/gran model hertz tangential history primitive type 3 zplane 0.0001", wall_id="wprim2", z0=0.0021, zw=0.0001,
+       speed_idx=[0, 2, 4], label="wprim2 row vs both planes (engine truth)", spec_override={"post": [WALL3]})]},
+ "L12_soft_particles_low_E": {"engine": "liggghts", "ntypes": 3, "pre": ["soft_particles yes"], "lines": [
+    MAT3[0].replace("5e6 5e6 5e6", "1e5 1e5 1e5")] + MAT3[1:] + [E3] + HERTZ, "checks": [LP(1, 2, L1, L2, speed_idx=[0, 2]), LW(1, L1, speed_idx=[0, 1])]},
+ "L13_hertz_limitforce_pair_only": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [E3.replace("0.6 0.5 0.7", "0.2 0.5 0.7"),
+    "pair_style gran model hertz tangential history limitForce on", "pair_coeff * *"], "checks": [LP(1, 1, L1, L1), LW(1, L1)]},
+})
+
+
+# ---------------------------------------------------------------- real decks
+S.update({
+ "R01_gravelle_pouring_granular": {"engine": "lammps", "units": "lj", "lines": ["pair_style granular",
+    "pair_coeff * * hooke 15000 500 tangential linear_nohistory 1.0 0.4 damping mass_velocity"], "checks": [
+    P(1, 2, 0.5, 0.52359878, tc=0.01, speed_idx=[0, 2, 4]),
+    W(1, 0.5, 0.52359878, wall="fix mywall1 all wall/gran/region hooke/history 15000 NULL 500 NULL 0.5 0 region wbox", wall_id="mywall1",
+      z0=-24.5, zw=-25, tc=0.01, speed_idx=[0, 2, 4], spec_override={"pre": ["region wbox block -25 25 -25 25 -25 25"]})]},
+ "R02_caesar_random_diameter_drop": {"engine": "liggghts", "ntypes": 1, "pre": ["hard_particles yes"], "files": ["ground_standin.stl"], "lines": [
+    "fix m1 all property/global youngsModulus peratomtype 2.1e11", "fix m2 all property/global poissonsRatio peratomtype 0.30",
+    "fix m3 all property/global coefficientRestitution atomtypepair 1 0.4", "fix m4 all property/global coefficientFriction atomtypepair 1 0.3",
+    "pair_style gran model hertz tangential history", "pair_coeff * *"], "checks": [
+    P(1, 1, 0.0025, 0.000513781, 0.015, 0.110977, label="types 1 1 (r 2.5 mm on r 15 mm)"),
+    W(1, 0.015, 0.110977, wall="fix z_wall_lo all wall/gran model hertz tangential history primitive type 1 zplane 0.0", wall_id="z_wall_lo")]},
+ "R03_caesar_simple_drop_ground": {"engine": "liggghts", "ntypes": 1, "files": ["ground_standin.stl"], "lines": [
+    "fix m1 all property/global youngsModulus peratomtype 5e7", "fix m2 all property/global poissonsRatio peratomtype 0.25",
+    "fix m3 all property/global coefficientRestitution atomtypepair 1 0.5", "fix m4 all property/global coefficientFriction atomtypepair 1 0.4",
+    "pair_style gran model hertz tangential history", "pair_coeff * *"], "checks": [
+    P(1, 1, 0.25, 163.625),
+    W(1, 0.25, 163.625, wall="fix ground all mesh/surface file ground_standin.stl type 1\nfix walls all wall/gran model hertz tangential history mesh n_meshes 1 meshes ground",
+      wall_id="walls", x=5.0, y=5.0)]},
+})
 
 if __name__ == "__main__":
     main(sys.argv[1:])
