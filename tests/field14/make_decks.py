@@ -63,6 +63,42 @@ deck("p08_dmt_22_limit_damping_others", "# hertz/material with limit_damping for
      + head() + f"pair_style granular\npair_coeff * * {HM} limit_damping\npair_coeff 2 2 {DMT}\n" + GRAV
      + f"fix floor all wall/gran granular {HM} limit_damping zplane 0 NULL\n" + TAIL + TWO + "run 1000\n")
 
+deck("p09_hybrid_granular_and_granhooke_jkr11", "# hybrid of granular (jkr for 1 1) and the older gran/hooke/history (every other pair)\n"
+     + head() + "pair_style hybrid granular gran/hooke/history 2000 NULL 3000 NULL 0.3 1\npair_coeff * * gran/hooke/history\n"
+     f"pair_coeff 1 1 granular {JKR}\n" + GRAV + FLOOR + TAIL + TWO + "run 1000\n")
+deck("p10_labels_star_with_label_jkr", "# type labels; pair_coeff * c (a star with a label): 1 3, 2 3, 3 3 get the unmapped jkr line\n"
+     + head(3) + "labelmap atom 1 a 2 b 3 c\npair_style granular\n"
+     f"pair_coeff * * {HK}\npair_coeff * c {JKR}\n" + GRAV + FLOOR + TAIL + THREE + "run 1000\n")
+deck("p11_data_pairij_jkr_row", "# read_data with a PairIJ Coeffs section: 1 2 is jkr there, a later pair_coeff 1 1 overrides one row\n"
+     + """units si
+atom_style sphere
+boundary p p f
+comm_modify vel yes
+pair_style granular
+read_data data.p11
+pair_coeff 1 1 hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
+""" + GRAV + FLOOR + TAIL + "run 1000\n",
+     extra={"data.p11": """p11
+
+2 atoms
+2 atom types
+
+0 0.04 xlo xhi
+0 0.04 ylo yhi
+0 0.1 zlo zhi
+
+PairIJ Coeffs # granular
+
+1 1 hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
+1 2 jkr 1e7 3000 0.3 0.5 damping mass_velocity tangential linear_nohistory 1 0.3
+2 2 hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
+
+Atoms # sphere
+
+1 1 0.004 2500 0.02 0.02 0.01
+2 2 0.006 2500 0.01 0.01 0.01
+"""})
+
 # ---------------------------------------------------------------- runs made for real
 ADAPT_BASE = head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + """create_atoms 1 single 0.02 0.02 0.01
 create_atoms 2 single 0.01 0.01 0.01
@@ -90,6 +126,15 @@ deck("r17_vdisplace_swiggle_between_runs", "# a density from vdisplace() and a s
      + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO
      + "variable rho equal vdisplace(1000,50000)\nvariable k equal swiggle(2000,1500,0.4)\nrun 10000\nset type 1 density ${rho}\n"
      "pair_coeff * * hooke ${k} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
+deck("r18_adapt_ramp_growth", "# the fix adapt idiom of LAMMPS' own docs: diameter from ramp(0.004,0.006) over the run, reset no, then unfix and run\n"
+     + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "variable dgrow equal ramp(0.004,0.006)\n"
+     "fix ad all adapt 1 atom diameter v_dgrow reset no\nrun 10000\nunfix ad\nrun 100\n")
+deck("r19_adapt_ramp_no_unfix", "# ramp growth with fix adapt left defined over two runs (LAMMPS ramps again in the second run)\n"
+     + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "variable dgrow equal ramp(0.004,0.006)\n"
+     "fix ad all adapt 1 atom diameter v_dgrow reset no\nrun 10000\nrun 100\n")
+deck("r20_adapt_elapsed_growth", "# fix adapt growth by elapsed (steps since the run began), reset no, then unfix and run\n"
+     + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "variable dgrow equal 0.004+2e-7*elapsed\n"
+     "fix ad all adapt 1 atom diameter v_dgrow reset no\nrun 10000\nunfix ad\nrun 100\n")
 deck("r03_adapt_group_type2_only", "# fix adapt on a type-2 group only, reset no: type 2 grows to 0.006, type 1 stays\n"
      + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "group g2 type 2\nvariable dgrow equal 0.004+0.02*time\n"
      "fix ad g2 adapt 1 atom diameter v_dgrow reset no\nrun 10000\nunfix ad\nrun 100\n")
@@ -164,6 +209,24 @@ deck("w08_wall_on_region_group", "# a wall on a group picked by region at the st
      + f"fix wl gl wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL\n"
      + f"fix wr all wall/gran granular {HK} zplane 0 NULL\n" + GRAV + TAIL + "run 1000\n")
 
+deck("w09_plane_region_side_out_flipped_near_floor", "# a plane region with normal -z and side out (its wall faces +z) at z = 1e-4, over a zplane floor at 0\n"
+     + head(box="-0.02 0.02 -0.02 0.02 -0.001 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HK}\n"
+     + "region fl plane 0 0 1e-4 0 0 -1 side out units box\n"
+     + "fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region fl\n"
+     + FLOOR + TAIL + "create_atoms 1 single 0 0 0.01\nset type 1 diameter 0.004 density 2500\nvelocity all set 0 0 -0.5\nrun 2000\n")
+deck("w10_block_side_out_top_near_floor", "# a block region side out (an obstacle slab from z = -0.01 to 1e-4) as a wall, over a zplane floor at 0\n"
+     + head(box="-0.02 0.02 -0.02 0.02 -0.011 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HK}\n"
+     + "region slab block -0.015 0.015 -0.015 0.015 -0.01 1e-4 side out units box\n"
+     + "fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region slab\n"
+     + FLOOR + TAIL + "create_atoms 1 single 0 0 0.01\nset type 1 diameter 0.004 density 2500\nvelocity all set 0 0 -0.5\nrun 2000\n")
+
+deck("w11_jkr_wall_same_plane_as_floor", "# a jkr wall (not mapped) at the same zplane 0 as an audited hooke floor, both on all atoms\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR
+     + f"fix wj all wall/gran granular {JKR} zplane 0 NULL\n" + TAIL + TWO + "run 1000\n")
+deck("w12_wall_on_id_group_same_plane", "# a second floor at the same zplane 0 on a group defined by atom id (holding the type-2 atom)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO
+     + "group g2 id 2\nfix wg g2 wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL\nrun 1000\n")
+
 # ---------------------------------------------------------------- particle properties
 deck("q01_mass_cmd_on_sphere", "# mass command on atom_style sphere after set density\n"
      + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO + "mass 1 1.0\nmass 2 1.0\nrun 1000\n")
@@ -192,6 +255,9 @@ Atoms # hybrid
 deck("q03_set_mass_then_diameter", "# set mass, then set diameter: does LAMMPS keep the mass or the density?\n"
      + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO
      + "set type 1 mass 1e-4\nset type 1 diameter 0.005\nrun 1000\n")
+
+deck("q04_hybrid_sphere_bond_mass_cmd", "# atom_style hybrid sphere bond: the mass command is allowed (per-type masses, which LAMMPS does not use)\n"
+     + head(style="hybrid sphere bond") + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO + "mass * 1.0\nrun 1000\n")
 
 # ---------------------------------------------------------------- time step
 deck("t01_hertzmat_two_sizes_coarse_dt", "# hertz/material viscoelastic, two sizes, about 10 steps per contact\n"

@@ -104,6 +104,13 @@ deck("L14_adapt_growth_hookestiff", "# LIGGGHTS fix adapt grows every diameter f
 deck("L15_adapt_scale_hookestiff", "# LIGGGHTS fix adapt, diameter scaled by a constant 1.5 (scale yes, reset no), then unfix and run again\n"
      + ADAPTL + "variable s equal 1.5\nfix ad all adapt 1 atom diameter v_s scale yes reset no\nrun 1000\nunfix ad\nrun 100\n")
 
+deck("L16_adapt_ramp_hookestiff", "# LIGGGHTS fix adapt, the diameter ramped from 4 to 6 mm over the run by ramp() (reset no), then unfix and run again\n"
+     + ADAPTL + "variable dgrow equal ramp(0.004,0.006)\nfix ad all adapt 1 atom diameter v_dgrow reset no\nrun 10000\nunfix ad\nrun 100\n")
+
+deck("L17_wall_on_region_group_same_plane", "# a second primitive floor at z = 0 on a group picked by region (holding the type-2 sphere), beside the floor on all\n"
+     + head() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + "region left block -0.02 0 INF INF INF INF units box\ngroup gl region left\n"
+     + "fix wl gl wall/gran model hertz tangential history primitive type 3 zplane 0.0\n" + RUN)
+
 
 def write(name):
     text, g, files = DECKS[name]

@@ -63,6 +63,28 @@ S = {
     P(1, 2, 0.003, m3, stage=2), W(1, 0.003, m3, stage=2)]},
  "r02b_adapt_scale_constant": {"engine": "lammps", "lines": LL, "checks": [
     P(1, 2, 0.003, m3, stage=2), W(1, 0.003, m3, stage=2)]},
+ "r18_adapt_ramp_growth": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.003, m3, stage=2), P(2, 2, 0.003, m3, stage=2), W(1, 0.003, m3, stage=2)]},
+ "r20_adapt_elapsed_growth": {"engine": "lammps", "lines": LL, "checks": [
+    P(1, 2, 0.003, m3, stage=2), W(1, 0.003, m3, stage=2)]},
+ "p09_hybrid_granular_and_granhooke_jkr11": {"engine": "lammps", "lines": ["pair_style hybrid granular gran/hooke/history 2000 NULL 3000 NULL 0.3 1",
+    "pair_coeff * * gran/hooke/history", f"pair_coeff 1 1 granular {JKR}"], "checks": [P(1, 2, 0.002, m2, 0.003, m3)]},
+ "p10_labels_star_with_label_jkr": {"engine": "lammps", "ntypes": 3, "pre": ["labelmap atom 1 a 2 b 3 c"], "lines": LL + [f"pair_coeff * c {JKR}"],
+    "checks": [P(1, 2, 0.002, m2, 0.003, m3)]},
+ "p11_data_pairij_jkr_row": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff 1 1 {HK}", f"pair_coeff 1 2 {JKR}", f"pair_coeff 2 2 {HK}",
+    "pair_coeff 1 1 hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"], "checks": [P(1, 1, 0.002, m2), P(2, 2, 0.003, m3)]},
+ "q04_hybrid_sphere_bond_mass_cmd": {"engine": "lammps", "atom_style": "hybrid sphere bond", "pre": ["mass * 1.0"], "lines": LL, "checks": [
+    P(1, 2, 0.002, m2, 0.003, m3)]},
+ "w08_wall_on_region_group": {"engine": "lammps", "lines": LL, "checks": [
+    W(2, 0.003, m3, wall=f"fix wr all wall/gran granular {HK} zplane 0 NULL", wall_id="wr", speed_idx=[0, 2, 4], label="wr row vs wr + wl (engine truth)",
+      spec_override={"post": ["fix wl all wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL"]}),
+    W(1, 0.002, m2, wall=f"fix wr all wall/gran granular {HK} zplane 0 NULL", wall_id="wr")]},
+ "r17_vdisplace_swiggle_between_runs": {"engine": "lammps", "lines": ["pair_style granular",
+    "pair_coeff * * hooke 3500 3000 damping mass_velocity tangential linear_nohistory 1 0.3"], "checks": [
+    P(1, 1, 0.002, 0.00020106193, stage=2), P(1, 2, 0.002, 0.00020106193, 0.003, m3, stage=2)]},
+ "x07_run0_only_in_loop": {"engine": "lammps", "lines": ["pair_style granular",
+    "pair_coeff * * hooke 4000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"], "checks": [
+    P(1, 2, 0.002, m2, 0.003, m3, stage=3)]},
  "r06_adapt_fep_diameter": {"engine": "lammps", "lines": LL, "checks": [
     P(1, 2, 0.002, m2, 0.003, m3), P(2, 2, 0.003, m3), W(2, 0.003, m3)]},
  "r03_adapt_group_type2_only": {"engine": "lammps", "lines": LL, "checks": [
@@ -178,6 +200,24 @@ S.update({
     "pair_style gran model hertz tangential history limitForce on", "pair_coeff * *"], "checks": [LP(1, 1, L1, L1), LW(1, L1)]},
 })
 
+
+L3 = (0.003, 0.000282743)
+STIFFL = MAT3 + STIFF3 + ["pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"]
+WSTIFF = "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0"
+S.update({
+ "L14_adapt_growth_hookestiff": {"engine": "liggghts", "ntypes": 3, "lines": STIFFL, "checks": [
+    LP(1, 2, L3, L3, stage=2), LW(1, L3, wall=WSTIFF, stage=2)]},
+ "L16_adapt_ramp_hookestiff": {"engine": "liggghts", "ntypes": 3, "lines": STIFFL, "checks": [
+    LP(1, 2, L3, L3, stage=2), LW(1, L3, wall=WSTIFF, stage=2)]},
+})
+
+DUMMY1 = ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 2 diameter 0.004 density 2500"]  # LIGGGHTS wants type 1 present
+S.update({
+ "L17_wall_on_region_group_same_plane": {"engine": "liggghts", "ntypes": 3, "lines": MAT3 + [E3] + HERTZ, "checks": [
+    LW(2, L2, label="wprim type 2 alone (control)", spec_override={"post": DUMMY1}),
+    LW(2, L2, label="wprim row type 2 vs wprim + wl (engine truth)", speed_idx=[0, 2, 4],
+       spec_override={"post": DUMMY1 + ["fix wl all wall/gran model hertz tangential history primitive type 3 zplane 0.0"]})]},
+})
 
 # ---------------------------------------------------------------- real decks
 S.update({
