@@ -50,6 +50,9 @@ deck("p03_labels_reversed_dmt", "# type labels; the unmapped dmt line names its 
 deck("p04_hybrid_instances_jkr_22", "# hybrid of two granular instances: * * to instance 1, then 2 2 to instance 2 with jkr: 2 2 not audited, 1 1 / 1 2 from instance 1\n"
      + head() + f"pair_style hybrid granular granular\npair_coeff * * granular 1 {HK}\n"
      f"pair_coeff 2 2 granular 2 {JKR}\n" + GRAV + FLOOR + TAIL + TWO + "run 1000\n")
+deck("p04b_hybrid_instances_mapped_22", "# hybrid of two granular instances: * * to instance 1 (hooke 2000), 2 2 to instance 2 (hooke 5000)\n"
+     + head() + f"pair_style hybrid granular granular\npair_coeff * * granular 1 {HK}\n"
+     "pair_coeff 2 2 granular 2 hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + FLOOR + TAIL + TWO + "run 1000\n")
 deck("p05_cutoff_keyword_near_contact", "# pair_coeff cutoff keyword: 1 1 cutoff 0.0039 (+ skin 0.001 covers contact at 0.004); 2 2 cutoff 0.001 (contact at 0.006 seen late)\n"
      + head() + f"pair_style granular\npair_coeff * * {HK}\n"
      f"pair_coeff 1 1 {HK} cutoff 0.0039\npair_coeff 2 2 {HK} cutoff 0.001\n" + GRAV + FLOOR + TAIL + TWO + "run 1000\n")
@@ -183,6 +186,15 @@ deck("w03_region_sphere_side_out_hertz", "# a ball obstacle: sphere region side 
      + "region ball sphere 0 0 0 0.01 side out units box\n"
      + f"fix wb all wall/gran/region granular {HM} region ball\n" + TAIL
      + "create_atoms 1 single 0 0 0.02\nset type 1 diameter 0.004 density 2500\nvelocity all set 0 0 -0.5\nrun 2000\n")
+deck("w03b_region_sphere_side_out_coarse_dt", "# w03's ball obstacle (sphere region side out, hertz/material) at dt 1e-4 (few steps per contact)\n"
+     + head(box="-0.05 0.05 -0.05 0.05 -0.05 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
+     + "region ball sphere 0 0 0 0.01 side out units box\n"
+     + f"fix wb all wall/gran/region granular {HM} region ball\n" + "fix integ all nve/sphere\ntimestep 1e-4\n"
+     + "create_atoms 1 single 0 0 0.02\nset type 1 diameter 0.004 density 2500\nvelocity all set 0 0 -0.5\nrun 200\n")
+deck("w04b_zcylinder_coarse_dt", "# a zcylinder wall (R 0.0075) met from inside, hertz/material, at dt 1e-4\n"
+     + head(box="-0.012 0.012 -0.012 0.012 0 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
+     + f"fix cyl all wall/gran granular {HM} zcylinder 0.0075\n" + "fix integ all nve/sphere\ntimestep 1e-4\n"
+     + "create_atoms 1 single 0 0 0.01\nset type 1 diameter 0.004 density 2500\nvelocity all set 0.5 0 0\nrun 200\n")
 deck("w04_zcylinder_and_floor_edge", "# a zcylinder wall (R 0.01) and a zplane floor meet at an edge; hertz walls\n"
      + head(box="-0.012 0.012 -0.012 0.012 0 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
      + f"fix cyl all wall/gran granular {HM} zcylinder 0.01\nfix floor all wall/gran granular {HM} zplane 0 NULL\n" + GRAV + TAIL
@@ -226,6 +238,28 @@ deck("w11_jkr_wall_same_plane_as_floor", "# a jkr wall (not mapped) at the same 
 deck("w12_wall_on_id_group_same_plane", "# a second floor at the same zplane 0 on a group defined by atom id (holding the type-2 atom)\n"
      + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO
      + "group g2 id 2\nfix wg g2 wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL\nrun 1000\n")
+
+deck("w13_moving_plane_region_same_plane", "# a plane region at z = 0 that 'moves' by a variable that stays 0, as a wall, beside the zplane floor at 0\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR
+     + "variable zero equal 0*time\nregion pl plane 0 0 0 0 0 1 side in move NULL NULL v_zero units box\n"
+     + "fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl\n"
+     + TAIL + TWO + "run 1000\n")
+deck("w14_wiggling_floor_same_plane", "# a second zplane floor at 0 that wiggles by 1e-6 in z, beside the still floor at 0\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR
+     + "fix ww all wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL wiggle z 1e-6 0.1\n"
+     + TAIL + TWO + "run 1000\n")
+
+deck("w15_oscillating_plane_region_hooke", "# the only floor is a plane region oscillating in z (amplitude 0.5 mm, period 10 ms) by a move variable; hooke wall law\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + "variable zw equal 0.0005*sin(2*PI*time/0.01)\nregion pl plane 0 0 0 0 0 1 side in move NULL NULL v_zw units box\n"
+     + "fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl\n"
+     + TAIL + TWO + "run 1000\n")
+
+deck("w15b_oscillating_plane_region_hertz", "# w15 with a hertz/material wall law (which reads the effective radius)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + "variable zw equal 0.0005*sin(2*PI*time/0.01)\nregion pl plane 0 0 0 0 0 1 side in move NULL NULL v_zw units box\n"
+     + f"fix rw all wall/gran/region granular {HM} region pl\n"
+     + TAIL + TWO + "run 1000\n")
 
 # ---------------------------------------------------------------- particle properties
 deck("q01_mass_cmd_on_sphere", "# mass command on atom_style sphere after set density\n"

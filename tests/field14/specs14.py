@@ -117,6 +117,16 @@ S = {
  "w03_region_sphere_side_out_hertz": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {HM}"],
     "pre": ["region ball sphere 0 0 0 0.01 side out units box"], "checks": [
     W(1, 0.002, m2, wall=f"fix wb all wall/gran/region granular {HM} region ball", wall_id="wb", z0=0.012, zw=0.01, speed_idx=[0, 2, 4])]},
+ "w03b_region_sphere_side_out_coarse_dt": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {HM}"],
+    "pre": ["region ball sphere 0 0 0 0.01 side out units box"], "checks": [
+    W(1, 0.002, m2, wall=f"fix wb all wall/gran/region granular {HM} region ball", wall_id="wb", z0=0.012, zw=0.01, speed_idx=[0, 2], at_dt=True)]},
+ "w04b_zcylinder_coarse_dt": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {HM}"], "checks": [
+    W(1, 0.002, m2, wall=f"fix cyl all wall/gran granular {HM} zcylinder 0.0075", wall_id="cyl", axis="x", z0=0.0055, zw=0.0075, sign=-1,
+      speed_idx=[0, 2], at_dt=True)]},
+ "w15_oscillating_plane_region_hooke": {"engine": "lammps", "lines": LL,
+    "pre": ["variable zw equal 0.0005*sin(2*PI*time/0.01)", "region pl plane 0 0 0 0 0 1 side in move NULL NULL v_zw units box"], "checks": [
+    W(1, 0.002, m2, wall="fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl",
+      wall_id="rw", speed_idx=[0, 2, 4], label="rw, the sphere meeting the plane at t = 0 (the plane rising at 0.31 m/s)")]},
  "w04_zcylinder_and_floor_edge": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {HM}"], "checks": [
     W(1, 0.002, m2, wall=f"fix floor all wall/gran granular {HM} zplane 0 NULL", x=0.0079, label="floor alone, near the cylinder's edge"),
     W(1, 0.002, m2, wall=f"fix floor all wall/gran granular {HM} zplane 0 NULL", x=0.0079, label="floor row vs floor+cylinder at the edge (engine truth)",
