@@ -41,6 +41,10 @@ S = {
  "p03_labels_reversed_dmt": {"engine": "lammps", "pre": ["labelmap atom 1 glass 2 steel"], "lines": ["pair_style granular",
     f"pair_coeff glass glass {HK}", "pair_coeff steel steel hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3",
     f"pair_coeff steel glass {DMT}"], "checks": [P(2, 2, 0.003, m3), P(1, 1, 0.002, m2)]},
+ "p12b_mixed_all_cohesion0": {"engine": "lammps", "lines": ["pair_style granular",
+    "pair_coeff 1 1 jkr 1e7 3000 0.3 0 damping mass_velocity tangential linear_nohistory 1 0.3",
+    "pair_coeff 2 2 jkr 2e7 3000 0.3 0 damping mass_velocity tangential linear_nohistory 1 0.3"], "checks": [
+    P(1, 2, 0.002, m2, 0.003, m3, speed_idx=[0, 2, 4]), P(2, 2, 0.003, m3, speed_idx=[0, 2])]},
  "p04_hybrid_instances_jkr_22": {"engine": "lammps", "lines": ["pair_style hybrid granular granular",
     f"pair_coeff * * granular 1 {HK}", f"pair_coeff 2 2 granular 2 {JKR}"], "checks": [P(1, 2, 0.002, m2, 0.003, m3)]},
  "p05_cutoff_keyword_near_contact": {"engine": "lammps", "lines": LL + [f"pair_coeff 1 1 {HK} cutoff 0.0039",
