@@ -57,6 +57,9 @@ deck("p12_mixed_from_unmapped_jkr", "# 1 1 jkr with cohesion 0.5 (unmapped), 2 2
      + head() + "pair_style granular\n"
      f"pair_coeff 1 1 {JKR}\npair_coeff 2 2 jkr 2e7 3000 0.3 0 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV
      + "fix floor all wall/gran granular hertz/material 1e7 3000 0.3 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + TAIL + TWO + "run 1000\n")
+deck("p04c_hybrid_jkr_then_star_reassigns", "# hybrid of two granular instances: 2 2 to instance 2 (jkr) first, then * * to instance 1 (hooke 2000) takes 2 2 back\n"
+     + head() + f"pair_style hybrid granular granular\npair_coeff 2 2 granular 2 {JKR}\npair_coeff * * granular 1 {HK}\n"
+     + GRAV + FLOOR + TAIL + TWO + "run 1000\n")
 deck("p05_cutoff_keyword_near_contact", "# pair_coeff cutoff keyword: 1 1 cutoff 0.0039 (+ skin 0.001 covers contact at 0.004); 2 2 cutoff 0.001 (contact at 0.006 seen late)\n"
      + head() + f"pair_style granular\npair_coeff * * {HK}\n"
      f"pair_coeff 1 1 {HK} cutoff 0.0039\npair_coeff 2 2 {HK} cutoff 0.001\n" + GRAV + FLOOR + TAIL + TWO + "run 1000\n")

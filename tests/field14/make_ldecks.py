@@ -111,6 +111,13 @@ deck("L17_wall_on_region_group_same_plane", "# a second primitive floor at z = 0
      + head() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + "region left block -0.02 0 INF INF INF INF units box\ngroup gl region left\n"
      + "fix wl gl wall/gran model hertz tangential history primitive type 3 zplane 0.0\n" + RUN)
 
+deck("L18_template_radius_gaussian", "# a particle template with radius gaussian (LIGGGHTS-PUBLIC 3.8.0 has only constant)\n" + head() + MAT3 + E3 + HERTZ + WALL3
+     + """fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius gaussian number 0.002 0.0002
+fix pdd all particledistribution/discrete 32452843 1 pts1 1.0
+region ins block -0.03 0.03 -0.03 0.03 0.02 0.1 units box
+fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes all_in yes particles_in_region 20 region ins
+""" + RUN)
+
 
 def write(name):
     text, g, files = DECKS[name]
