@@ -41,6 +41,10 @@ DECKS = {
     # 1000; the halt was not executed and the step read as the run's end (types 1 1: 0.4973 where
     # LAMMPS gives 0.6470)
     "field13/decks/a25b_halt_then_step_branch": (HOOKE, "may_differ"),
+    # field round 14 (D4): fix adapt/fep grows type 2 from 0.004 to 0.006 in the first run; it was taken
+    # for an unknown force and the later stage audited at the sizes before it (2 2: 0.4973 where LAMMPS
+    # gives 0.2551)
+    "field14/decks/r06_adapt_fep_diameter": (HOOKE, "may_differ"),
     "field10/decks/f04_pour_done_then_set": ("pair_coeff * * hooke 1000 0.02 damping velocity tangential "
                                              "linear_nohistory 0 0", "if_poured"),
 }

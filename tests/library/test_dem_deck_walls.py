@@ -842,6 +842,39 @@ def test_two_walls_at_one_plane_name_each_other_beside_their_rows(tmp_path, seco
     assert ("another wall at the same surface" in err) is named
 
 
+@pytest.mark.parametrize("group", ["region left block INF INF INF INF INF INF units box\ngroup g region left",
+                                   "group g id 1:100"], ids=["by region", "by id"])
+def test_a_wall_on_a_group_the_audit_cannot_type_is_named_beside_a_wall_at_its_surface(tmp_path, group):
+    """Field round 14, D2 (w08, w12): a second floor at z = 0 on a group by region or by id was left out
+    of the same-surface check with its own rows (its group not typed), so the other floor's row said
+    0.11699 with nothing beside it where LAMMPS, adding both floors' forces, gives 0.09315. Its rows
+    stay not audited; the other wall's row names it."""
+    law = f"granular hertz/material 1e8 0.5 0.3 damping coeff_restitution {T}"
+    text = LAMMPS_DECK.split("group small")[0] + (f"fix a all wall/gran {law} zplane 0.0 NULL\n{group}\n"
+                                                  f"fix b g wall/gran {law} zplane 0.0 NULL\n")
+    res, err = audit(tmp_path, text, 1.0)
+    assert {row["wall"] for row in res["walls"]} == {"a"}
+    for row in res["walls"]:
+        other = [b for b in row["beside"] if b["style"].startswith("wall/gran")]
+        assert [b["fix"] for b in other] == ["b"]
+        assert ("another wall at the same surface (z = 0; wall b's group g is not typed by the audit: it may "
+                f"hold type {row['types'][0]}'s spheres)") in other[0]["what"]
+
+
+@pytest.mark.parametrize("region", ["region pl plane 0 0 0 0 0 1 move NULL NULL v_zw units box",
+                                    "region pl block -1 1 -1 1 v_zw 1 units box"], ids=["move", "variable face"])
+def test_a_region_wall_that_moves_is_not_audited_whatever_its_law(tmp_path, region):
+    """Field round 14, D3 (w15): a plane region vibrated by a variable under a hooke law, which does
+    not read the curvature, was audited as a still plane (0.5370) where LAMMPS measures 1.2437, 0.9468
+    and 0.6137 at g = 0.1, 1, 10: the eps depends on the phase a contact meets."""
+    law = f"granular hooke 5000 3000 damping mass_velocity {T}"
+    text = LAMMPS_DECK.split("group small")[0] + ("variable zw equal 0.0005*sin(2*PI*time/0.01)\n"
+                                                  f"{region}\nfix b all wall/gran/region {law} region pl\n")
+    res, err = audit(tmp_path, text, 1.0)
+    assert res["walls"] == []
+    assert "region pl" in err and "its faces move under a sphere during a contact" in err
+
+
 def test_a_cylinder_wall_and_a_cylinder_region_of_one_radius_name_each_other(tmp_path):
     """Field round 12, D7 (g04): a zcylinder wall and a cylinder region of the same radius on the same
     axis; LAMMPS adds both forces (0.36603515 for e = 0.5), and each row said 0.5 and nothing else."""

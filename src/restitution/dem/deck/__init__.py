@@ -91,7 +91,7 @@ from pathlib import Path
 
 from ...core.collision import StickError
 from ...core.errors import ParameterError
-from .beside import effects
+from .beside import ADAPT, effects
 from .meeting import excluded, held_contact, integrators, motion
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
@@ -131,6 +131,20 @@ def _wall_types(deck: Deck, types, loc, words, unknown: list):
                                                "and the wall acts on no atom"))
         return None
     return sorted(t for t in held if 1 <= t <= deck.ntypes)
+
+
+def _possible_types(deck: Deck, types, words) -> list:
+    """The types a wall may act on where :func:`_wall_types` cannot type its group: every type for a
+    group by region, id or the like, or one an insertion of unknown types fills; a group by type
+    defined before more atoms of its types were made, its types (some of their atoms); none for a
+    group defined nowhere or holding no atom."""
+    if types == "undefined":
+        return []
+    if types is None or any(filled is None for _, filled in deck.filled_groups.get(words[2], [])):
+        return list(range(1, deck.ntypes + 1))
+    if words[2] in deck.partial_groups and words[2] not in deck.empty_groups:
+        return sorted(t for t in types if 1 <= t <= deck.ntypes)
+    return []
 
 
 #: A primitive wall's shape word and how many numbers after it place its surface: a plane's
@@ -232,16 +246,22 @@ def _near(at: set, other_at: set, reach: float | None) -> list:
     found = []
     for a in sorted(at, key=str):
         for b in sorted(other_at, key=str):
-            if a == b:
+            if a == b or reach is not None and (gap := _gap(a, b)) is not None and gap < reach:
                 found.append((a, b))
-            elif reach is not None and a[0] == b[0] and len(a) == len(b):
-                # a plane's position; a cylinder's radius about one axis; a sphere's about one centre
-                gap = abs(a[1] - b[1]) if len(a) == 2 else (
-                    abs(a[1] - b[1]) if a[2:] == b[2:] and a[0] != "sphere" else
-                    abs(a[4] - b[4]) if a[0] == "sphere" and a[1:4] == b[1:4] else None)
-                if gap is not None and gap < reach:
-                    found.append((a, b))
     return found
+
+
+def _gap(a: tuple, b: tuple) -> float | None:
+    """The distance between two surfaces of one kind (:func:`_surfaces_at` keys) that never cross:
+    parallel planes (their positions), cylinders about one axis (their radii), spheres about one
+    centre (their radii); None for any other two."""
+    if a[0] != b[0] or len(a) != len(b):
+        return None
+    if len(a) == 2:                                      # ("z", at)
+        return abs(a[1] - b[1])
+    if a[0] == "sphere":                                 # ("sphere", x, y, z, radius)
+        return abs(a[4] - b[4]) if a[1:4] == b[1:4] else None
+    return abs(a[1] - b[1]) if a[2:] == b[2:] else None  # ("zcylinder", radius, c1, c2)
 
 
 def _shown(key: tuple) -> str:
@@ -263,22 +283,29 @@ def _shared_faces(deck: Deck) -> dict:
     placed = []
     for loc, words, types in deck.walls:
         held = _wall_types(deck, types, loc, words, [])
+        untyped = held is None and bool(held := _possible_types(deck, types, words))
         if held:
-            placed.append((loc, words, set(held), _surfaces_at(words, deck)))
+            placed.append((loc, words, set(held), _surfaces_at(words, deck), untyped))
     shared = {}
-    for loc, words, held, at in placed:
-        for other_loc, other, other_held, other_at in placed:
+    for loc, words, held, at, _ in placed:
+        for other_loc, other, other_held, other_at, untyped in placed:
             if other[1] == words[1]:
                 continue
+            # a wall whose group the audit cannot type is not audited, but may still act beside
+            # this one (field round 14, D2: a floor on a group by region at the same z; the row
+            # of the other floor said 0.11699, LAMMPS 0.09315)
+            maybe = (f"; wall {other[1]}'s group {other[2]} is not typed by the audit: it may hold type {{t}}'s "
+                     "spheres") if untyped else ""
             for t in sorted(held & other_held):
                 if at is None or other_at is None:
                     unplaced = words if at is None else other
                     shared.setdefault((words[1], t), []).append((other_loc, other, (
-                        f"the audit does not place the surfaces of wall {unplaced[1]}"), "unplaced"))
+                        f"the audit does not place the surfaces of wall {unplaced[1]}" + maybe.format(t=t)),
+                        "unplaced"))
                 elif near := _near(at, other_at, reach := _reach(deck, t)):
                     where = ", ".join(_shown(a) if a == b else (
                         f"{_shown(a)} and {_shown(b)}, less than the diameter {reach:g} of type {t}'s "
-                        "largest sphere apart, so that a sphere may overlap both") for a, b in near)
+                        "largest sphere apart, so that a sphere may overlap both") for a, b in near) + maybe.format(t=t)
                     kind = "same" if all(a == b for a, b in near) else "near"
                     shared.setdefault((words[1], t), []).append((other_loc, other, where, kind))
     return shared
@@ -1201,7 +1228,7 @@ def _unmet(deck: Deck, i: int, j: int, moves: list) -> tuple | None:
 
 def _adapted(deck: Deck, subs) -> bool:
     """Whether a fix adapt in force changes a coefficient of one of these sub-styles (``pair SUB``)."""
-    return any(w[3] == "adapt" and any(a == "pair" and b in subs for a, b in zip(w[4:], w[5:]))
+    return any(w[3] in ADAPT and any(a == "pair" and b in subs for a, b in zip(w[4:], w[5:]))
                for _, w in deck.beside)
 
 

@@ -23,14 +23,18 @@ from ..engines.lammps.deck import DEFAULT_DT, FTM2V
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
 
-__all__ = ["BESIDE", "adapt_parts", "adapted_diameter", "drag_eps", "effects", "gravity_vector"]
+__all__ = ["ADAPT", "BESIDE", "adapt_parts", "adapted_diameter", "drag_eps", "effects", "gravity_vector"]
 
+#: The fix adapt styles: adapt/fep (the FEP package) takes adapt's attributes and keywords, with the
+#: same defaults (LAMMPS' documentation; field round 14, D4: it was taken for an unknown force)
+ADAPT = frozenset({"adapt", "adapt/fep"})
 #: Fix style -> what it does to the atoms of its group, beside the contact law
 BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
           "langevin": "a thermostat's drag force -m v / damp and a random force",
           "setforce": "forces set to given values", "freeze": "frozen atoms (no force moves them)",
           "nve/limit": "a cap on how far an atom moves per step",
           "adapt": "coefficients or sizes changed as the run goes",
+          "adapt/fep": "coefficients or sizes changed as the run goes",
           "damping/cundall": "a global (Cundall) damping of every force on its atoms",
           "damp/viscous": "a drag force", "viscous/sphere": "a drag torque",
           "spring/self": "a spring tethering each atom to where it was", "addforce": "a force added to each atom",
@@ -595,7 +599,7 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
             if not over:
                 entry["eps_engine"] = list(row["eps"])
         return
-    elif style == "adapt":
+    elif style in ADAPT:
         _adapt(entry, deck, row, words)
         return
     else:
@@ -613,7 +617,9 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
 #: fix adapt's attributes -> how many words follow each (LAMMPS 22 Jul 2025: pair pstyle pparam I J
 #: v_name; bond and angle bstyle bparam v_name; kspace v_name; atom attribute v_name), and its keywords
 _ADAPT_ATTRIBUTES = {"pair": 5, "bond": 3, "angle": 3, "kspace": 1, "atom": 2}
-_ADAPT_KEYWORDS = ("scale", "reset", "mass")
+#: adapt/fep's atom attribute names the atom type it changes before its variable (diameter 2 v_d)
+_FEP_ATTRIBUTES = {**_ADAPT_ATTRIBUTES, "atom": 3}
+_ADAPT_KEYWORDS = ("scale", "reset", "mass", "after")
 
 
 def adapt_parts(words: list) -> tuple[list, dict]:
@@ -634,11 +640,18 @@ def adapt_parts(words: list) -> tuple[list, dict]:
     --------
     >>> adapt_parts("fix a all adapt 0 atom diameter v_d reset yes".split())
     ([('atom', ['diameter', 'v_d'])], {'reset': 'yes'})
+
+    adapt/fep's atom attribute takes a type (its sizes never count as one constant diameter for
+    the group):
+
+    >>> adapt_parts("fix a all adapt/fep 1 atom diameter 2 v_d".split())
+    ([('atom', ['diameter', '2', 'v_d'])], {})
     """
+    attributes = _FEP_ATTRIBUTES if len(words) > 3 and words[3] == "adapt/fep" else _ADAPT_ATTRIBUTES
     parts, keys, k = [], {}, 5
     while k < len(words):
-        if words[k] in _ADAPT_ATTRIBUTES:
-            n = _ADAPT_ATTRIBUTES[words[k]]
+        if words[k] in attributes:
+            n = attributes[words[k]]
             parts.append((words[k], words[k + 1:k + 1 + n]))
             k += 1 + n
         elif words[k] in _ADAPT_KEYWORDS and k + 1 < len(words):

@@ -15,7 +15,7 @@ import math
 import os
 import re
 
-from .beside import BESIDE, adapt_parts, adapted_diameter
+from .beside import ADAPT, BESIDE, adapt_parts, adapted_diameter
 from .meeting import MOVERS, neigh_modify, special_bonds
 from .scratch import GUARDED
 from .stream import SEEDED
@@ -1114,7 +1114,7 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
             return
     if style.startswith("bond/create"):
         deck.bonds = (loc, line)
-    if style == "adapt":
+    if style in ADAPT:
         parts, keys = adapt_parts(words)
         if keys.get("reset") == "yes" and any(kind == "atom" and args[:1] != ["charge"] for kind, args in parts):
             # the engine's pass writes the atoms after its run's set-up and end, the sizes put back:
@@ -1602,7 +1602,7 @@ def adapt_poured(deck: Deck, made: dict, loc, text: str, during: bool) -> set:
     if deck.code != "LAMMPS" or not any(made.values()):
         return done
     for where, words in deck.beside:
-        if words[3] != "adapt" or (diameter := adapted_diameter(deck, words)) is None:
+        if words[3] not in ADAPT or (diameter := adapted_diameter(deck, words)) is None:
             continue
         if during and words[4] == "0":
             continue

@@ -239,7 +239,7 @@ def resized_by_runs(commands: list) -> list:
     []
     """
     from ..dialect.state import place
-    from .beside import adapt_parts
+    from .beside import ADAPT, adapt_parts
     formulas: dict = {}
     adapts: dict = {}
     grown = None
@@ -258,7 +258,7 @@ def resized_by_runs(commands: list) -> list:
             adapts.pop(split[1], None)
         elif split[0] == "fix" and len(split) > 3:
             adapts.pop(split[1], None)
-            if split[3] != "adapt":
+            if split[3] not in ADAPT:
                 continue
             parts, keys = adapt_parts(split)
             sized = [args for kind, args in parts if kind == "atom" and args[:1] != ["charge"]]

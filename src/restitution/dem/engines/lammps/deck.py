@@ -24,7 +24,7 @@ from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
 
-__all__ = ["ENGINE", "DEFAULT_DT", "FTM2V", "NKTV2P", "Region", "read_region", "REGION_UNBOUNDED", "region_number",
+__all__ = ["ENGINE", "DEFAULT_DT", "FTM2V", "NKTV2P", "Region", "read_region", "region_moves", "REGION_UNBOUNDED", "region_number",
            "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall", "concave_cylinder",
            "accelerated"]
 
@@ -533,6 +533,11 @@ def _region_wall(deck: Deck, loc, words: list, unknown: list):
         unknown += [(f, line, text, why) for f, line, _, why in said]
         return None
     (_, contact_of, _, _), = surfaces
+    if (moving := region_moves(deck, words[k + 1])) is not None:
+        unknown.append((*loc, text, f"{moving}: its faces move under a sphere during a contact, so the eps the "
+                                    "engine measures depends on when and where a contact falls; the wall's "
+                                    "contacts are not audited"))
+        return None
     # the law reads R_eff where a sphere twice as large, of the same mass, gets another contact
     probes = [contact_of(Pair(r, WALL_SIZE, 1.0, WALL_SIZE), 1)[0] for r in (1.0, 2.0)]
     if probes[0].as_dict() == probes[1].as_dict():
@@ -640,6 +645,42 @@ def read_region(deck: Deck, rid: str) -> Region | str:
     if len(args) < _REGION_ARGS[style]:
         return "its arguments are not read"
     return Region(style, args, options["side"], options["units"], frozenset(opened))
+
+
+def region_moves(deck: Deck, rid: str) -> str | None:
+    """Why region ``rid``'s surfaces may move during a run (its ``move`` or ``rotate`` keyword, or a
+    size or position given by a variable, which LAMMPS evaluates at every step), None where they do
+    not. Whatever its law, a wall on such a region is not a still plane (field round 14, D3: a plane
+    region moved by ``v_zw``, a sine in time, under a hooke law was audited as a still plane: 0.5370
+    where LAMMPS measures 1.2437, 0.9468, 0.6137 at g = 0.1, 1, 10).
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck at the run audited (its regions).
+    rid : str
+        The region's ID.
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> d = Deck(regions={"pl": "region pl plane 0 0 0 0 0 1 move NULL NULL v_zw".split(),
+    ...                   "up": "region up block 0 1 0 1 v_lo 1 units box".split(),
+    ...                   "box": "region box block 0 1 0 1 0 1 units box".split()})
+    >>> region_moves(d, "pl"), region_moves(d, "up"), region_moves(d, "box")
+    ('region pl moves (keyword move)', 'region up is placed by a variable (v_lo), which LAMMPS evaluates at every step', None)
+    """
+    words = deck.regions.get(rid) or []
+    keyword = next((w for w in words[3:] if w in ("move", "rotate")), None)
+    if keyword is not None:
+        return f"region {rid} moves (keyword {keyword})"
+    variable = next((w for w in words[3:] if w.startswith("v_")), None)
+    if variable is not None:
+        return f"region {rid} is placed by a variable ({variable}), which LAMMPS evaluates at every step"
+    return None
 
 
 def region_surfaces(deck: Deck, rid: str) -> list | str:
