@@ -45,6 +45,11 @@ DECKS = {
     # for an unknown force and the later stage audited at the sizes before it (2 2: 0.4973 where LAMMPS
     # gives 0.2551)
     "field14/decks/r06_adapt_fep_diameter": (HOOKE, "may_differ"),
+    # field round 14 (D1): in the runs made for real, the marker's run of no step after each run set up
+    # fix adapt once more: a ramp() growth back at its start, a scale yes factor applied twice (r18 1 2:
+    # 0.4973, r02: 0.0340, where LAMMPS gives 0.2551)
+    "field14/decks/r18_adapt_ramp_growth": (HOOKE, "may_differ"),
+    "field14/decks/r02_adapt_diameter_scale_yes": (HOOKE, "may_differ"),
     "field10/decks/f04_pour_done_then_set": ("pair_coeff * * hooke 1000 0.02 damping velocity tangential "
                                              "linear_nohistory 0 0", "if_poured"),
 }

@@ -79,9 +79,10 @@ def marker(root: Path, clock: bool = False, real: bool = False):
     literal N then sets LAMMPS' step and time to those the deck's own run reaches
     (``reset_timestep``, which LAMMPS refuses where a time-dependent fix, a pour say, is defined:
     the pass then stops there, and the caller keeps its pass without the clock). With ``real``, for
-    a pass whose runs LAMMPS makes (no ``-skiprun``): the run, then its set-up check and dump, no
-    timeout re-armed (it would end every later run at once), so the atoms written are where the run
-    left them.
+    a pass whose runs LAMMPS makes (no ``-skiprun``): the run, then the dump, so the atoms written
+    are where the run left them. No run of no step after it: the deck's run made its own set-up
+    checks, and another set-up would apply a fix adapt once more (a ``ramp()`` back at its start, a
+    ``scale yes`` factor twice: field round 14, D1, types 1 2 at 0.4973 where LAMMPS gives 0.2551).
 
     Examples
     --------
@@ -89,17 +90,22 @@ def marker(root: Path, clock: bool = False, real: bool = False):
     run 10
     if "${restitution_check_0} != 0" then "variable restitution_check_0 string ${restitution_every}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" "write_dump all custom /s/atoms type radius mass modify format float %.17g append yes"
     <BLANKLINE>
+    >>> print(marker(Path("/s"), real=True)(0, "run 10"))
+    run 10
+    write_dump all custom /s/atoms type radius mass modify format float %.17g append yes
+    <BLANKLINE>
     """
     def text(k: int | None, run: str) -> str:
         if k is None:        # a quit: LAMMPS ends the process there, the deck's end
             return f"{_ending(root)}{run}\n"
+        if real:             # every run's atoms, where it left them (run_copy's check_every)
+            return f"{run}\n{_dump(root / ATOMS)} append yes\n"
         # -skiprun skips a run's set-up too: a run of no step, timeout lifted, makes LAMMPS check
         # what it checks before every run (all pair coefficients set, ...); at the marker's first
         # run, and at every run where the pass checks every one (run_copy's check_every). One line,
         # no & continuation: the scratch copy tags each of the marker's lines with a comment
-        timer = ('', '') if real else ('"timer timeout off" ', '"timer timeout 0 every 1" ')
         return (f'{run}\nif "${{restitution_check_{k}}} != 0" then "variable restitution_check_{k} string '
-                f'${{restitution_every}}" {timer[0]}"run 0 post no" {timer[1]}'
+                f'${{restitution_every}}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" '
                 f'"{_dump(root / ATOMS)} append yes"\n' + (_clock(run) if clock else ""))
 
     def restart(read: str) -> str:
