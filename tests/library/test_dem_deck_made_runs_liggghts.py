@@ -64,3 +64,15 @@ def test_liggghts_makes_the_runs_and_its_state_is_audited(tmp_path, name):
     before = LIGGGHTS_DECKS[name]
     status, got, err = _json(path, "--run-budget", "0")
     as_without_runs(status, got, err, before)
+
+
+@needs_liggghts
+@pytest.mark.dem
+@pytest.mark.slow
+def test_a_deck_the_engine_crashes_on_when_its_runs_are_made_is_refused():
+    """Field round 14, L15: LIGGGHTS 3.8.0 crashes (signal 11) on ``fix adapt ... scale yes`` run by
+    hand; the audit named the crash of its runs made for real and printed both stages from its
+    one-step pass (type 1 at r 1.08e-7, exit 0). A crash making the deck's own runs refuses the deck."""
+    status, got, err = _json(FIELD / "field14/decks/L15_adapt_scale_hookestiff/in.deck")
+    assert status == 2 and got is None
+    assert err.count("\n") == 1 and "LIGGGHTS crashed making the deck's runs for real (Segmentation fault)" in err

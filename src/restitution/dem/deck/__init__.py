@@ -866,6 +866,14 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
         return None, None, (f"{what}; {deck_run.ENGINE} making its runs for real ran out of "
                             f"the audit's --run-budget {budget:g} s ({done.spent}); --run-budget SECONDS allows more: "
                             f"its runs {cut}, as said")
+    if done.error and _crashed(done):
+        # the engine crashes on the deck run by hand too (field round 14, L15: LIGGGHTS 3.8.0 on fix
+        # adapt ... scale yes, rc 139): the one-step pass's sizes are its bug's, not the deck's
+        last = next((cmd for cmd in reversed(made) if cmd.stage is not None), None)
+        raise DeckError(place(last.loc) if last else "deck", last.text if last else None,
+                        f"{deck_run.ENGINE} crashed making the deck's runs for real ({_crash_words(done)}); those "
+                        "runs are the deck's own, its outputs aside, so the deck does not run in this engine: "
+                        "not audited")
     if done.error:
         return None, None, (f"{what}; {deck_run.ENGINE} making its runs for real stopped: "
                             f"{' '.join(done.error.split())[:300]}: its runs {cut}, as said")
@@ -873,6 +881,23 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
         f"{what}: {deck_run.ENGINE} made the deck's {runs} runs ({steps if steps is not None else 'their'} steps) for real, in {done.wall:.2g} s of the "
         f"--run-budget {budget:g} s, its outputs not written: the atoms, sizes, types, branches and values audited "
         "are those its runs reach")
+
+
+#: What an engine's error output says where a signal, not the engine's own check, ended it
+_SIGNALLED = re.compile(r"Process received signal|Segmentation fault|Bus error|Floating point exception|Aborted")
+
+
+def _crashed(done) -> bool:
+    """Whether a pass the budget did not stop ended on a signal (a crash), not on the engine's own
+    ERROR message: an exit status beyond 128 or negative, or the MPI library's report of a signal."""
+    status = done.status or 0
+    return not done.timed_out and (status < 0 or status > 128 or bool(_SIGNALLED.search(done.error or "")))
+
+
+def _crash_words(done) -> str:
+    """A crash in a few words: the signal's name where the error output gives it, else the status."""
+    m = re.search(r"Signal: ([A-Za-z ]+?) \(\d+\)", done.error or "") or _SIGNALLED.search(done.error or "")
+    return (m.group(1) if m.lastindex else m.group(0)) if m else f"exit status {done.status}"
 
 
 def _runs_after(commands: list, found: list) -> set:
