@@ -257,6 +257,24 @@ def test_one_cohesive_pair_leaves_the_others_audited(tmp_path):
         assert p["D2"] == pytest.approx(3000.0, rel=1e-12)   # mass_velocity: eta per unit reduced mass
 
 
+def test_a_pair_mixed_from_a_cohesive_line_and_one_at_cohesion_0_is_audited(tmp_path):
+    """Field round 14, p12: 1 1 jkr at cohesion 0.5, 2 2 jkr at 0 and no 1 2 line: LAMMPS mixes the
+    cohesion as a geometric mean, 0, and its 1 2 eps is bit for bit that of both lines at cohesion 0
+    (0.26127268 at g = 0.1 head-on, dt -> 0); the pair was named not mapped. Its row now equals the
+    row of the same deck with 1 1 at cohesion 0; 1 1 stays named."""
+    jkr = "pair_coeff {t} {t} jkr {E} 3000 0.3 {c} damping mass_velocity tangential linear_nohistory 1 0.3\n"
+    deck, plain = tmp_path / "in.deck", tmp_path / "in.plain"
+    for path, c in ((deck, 0.5), (plain, 0)):
+        path.write_text(TWO_SPHERES + "timestep 1e-7\npair_style granular\n" + jkr.format(t=1, E="1e7", c=c)
+                        + jkr.format(t=2, E="2e7", c=0))
+    res, err = audit(deck, "--g", 0.1, 1.0)
+    ref, _ = audit(plain, "--g", 0.1, 1.0)
+    rows = {tuple(p["types"]): p for p in res["pairs"]}
+    assert sorted(rows) == [(1, 2), (2, 2)] and "types 1 1: normal model jkr is not mapped at cohesion 0.5" in err
+    assert rows[(1, 2)]["eps"] == {tuple(p["types"]): p for p in ref["pairs"]}[(1, 2)]["eps"]
+    assert not [line for line in err.splitlines() if "types 1 2" in line and "not audited" in line]
+
+
 @pytest.mark.parametrize("text, word", [
     (LAMMPS_DECK.replace("damping tsuji", "damping none"), "LAMMPS stops here: Must specify damping granular model"),
     ("\n".join(ln for ln in LAMMPS_DECK.splitlines() if not ln.startswith("pair_coeff")).replace(

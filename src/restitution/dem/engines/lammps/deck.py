@@ -277,6 +277,29 @@ def _mapped(deck: Deck, loc: tuple, words: list) -> _Coeff:
         raise PairNotMapped(loc, " ".join(words), why.args[0].split(": ", 1)[-1]) from None
 
 
+def _mixed_cohesion(wi: list, wj: list) -> tuple[list, list]:
+    """Two types' pair_coeff lines as their mixed pair sees them: where both use one adhesive model
+    (jkr, dmt), LAMMPS mixes the cohesion as a geometric mean, so one line at cohesion 0 gives the
+    pair cohesion 0, hertz/material's force (field round 14, p12: 1 1 jkr at 0.5, 2 2 at 0: LAMMPS'
+    1 2 is bit for bit that of both at 0, yet it was named not mapped at cohesion 0.5).
+
+    Examples
+    --------
+    >>> a = "pair_coeff 1 1 jkr 1e7 50 0.3 0.5".split()
+    >>> _mixed_cohesion(a, "pair_coeff 2 2 jkr 1e7 50 0.3 0".split())[0][7]
+    '0'
+    >>> _mixed_cohesion(a, "pair_coeff 2 2 jkr 1e7 50 0.3 0.2".split())[0][7]
+    '0.5'
+    """
+    if not (len(wi) > 7 and len(wj) > 7 and wi[3] == wj[3] and wi[3] in _LAMMPS_ADHESIVE):
+        return wi, wj
+    try:
+        zero = float(wi[7]) == 0.0 or float(wj[7]) == 0.0
+    except ValueError:
+        return wi, wj
+    return tuple([*w[:7], "0", *w[8:]] for w in (wi, wj)) if zero else (wi, wj)
+
+
 def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
     """LAMMPS' mixing of two types' coefficients (pair_style granular, init_one): geometric means,
     for hertz/material the effective modulus 1/E* = (1 - nu_i^2)/E_i + (1 - nu_j^2)/E_j, used as
@@ -347,6 +370,7 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
         mixed_from = None
     else:
         (loc, wi), (loc_j, wj) = deck.coeffs[(i, i)], deck.coeffs[(j, j)]
+        wi, wj = _mixed_cohesion(wi, wj)
         ci, cj = _mapped(deck, loc, wi), _mapped(deck, loc_j, wj)
         if ci.models != cj.models:
             raise DeckError("pair_coeff", f"types {i} {j}", f"types {i} and {j} use different models "
