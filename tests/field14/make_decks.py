@@ -268,6 +268,13 @@ deck("w15b_oscillating_plane_region_hertz", "# w15 with a hertz/material wall la
      + f"fix rw all wall/gran/region granular {HM} region pl\n"
      + TAIL + TWO + "run 1000\n")
 
+deck("w16_block_open_bottom_on_floor", "# a block region wall whose bottom face (5) is open, standing on a zplane floor at its bottom z = 0\n"
+     + head(box="-0.02 0.02 -0.02 0.02 -0.001 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HK}\n"
+     + "region cup block -0.015 0.015 -0.015 0.015 0 0.04 open 5 units box\n"
+     + f"fix wc all wall/gran/region granular {HK} region cup\n"
+     + "fix floor all wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + GRAV + TAIL
+     + "create_atoms 1 single 0 0 0.01\nset type 1 diameter 0.004 density 2500\nrun 2000\n")
+
 # ---------------------------------------------------------------- particle properties
 deck("q01_mass_cmd_on_sphere", "# mass command on atom_style sphere after set density\n"
      + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO + "mass 1 1.0\nmass 2 1.0\nrun 1000\n")

@@ -131,6 +131,11 @@ S = {
     "pre": ["variable zw equal 0.0005*sin(2*PI*time/0.01)", "region pl plane 0 0 0 0 0 1 side in move NULL NULL v_zw units box"], "checks": [
     W(1, 0.002, m2, wall="fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl",
       wall_id="rw", speed_idx=[0, 2, 4], label="rw, the sphere meeting the plane at t = 0 (the plane rising at 0.31 m/s)")]},
+ "w16_block_open_bottom_on_floor": {"engine": "lammps", "lines": LL,
+    "pre": ["region cup block -0.015 0.015 -0.015 0.015 0 0.04 open 5 units box"], "checks": [
+    W(1, 0.002, m2, wall="fix floor all wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL",
+      speed_idx=[0, 2, 4], label="floor row vs floor + the open-bottomed block wall (engine truth)",
+      spec_override={"post": [f"fix wc all wall/gran/region granular {HK} region cup"]})]},
  "w04_zcylinder_and_floor_edge": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {HM}"], "checks": [
     W(1, 0.002, m2, wall=f"fix floor all wall/gran granular {HM} zplane 0 NULL", x=0.0079, label="floor alone, near the cylinder's edge"),
     W(1, 0.002, m2, wall=f"fix floor all wall/gran granular {HM} zplane 0 NULL", x=0.0079, label="floor row vs floor+cylinder at the edge (engine truth)",
