@@ -275,6 +275,12 @@ deck("w16_block_open_bottom_on_floor", "# a block region wall whose bottom face 
      + "fix floor all wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + GRAV + TAIL
      + "create_atoms 1 single 0 0 0.01\nset type 1 diameter 0.004 density 2500\nrun 2000\n")
 
+deck("w17_rocking_plane_region_hooke", "# the floor is a plane region rocked about the y axis (rotate by v_th, 0.05 rad amplitude, period 10 ms); hooke wall law\n"
+     + head(box="-0.02 0.02 -0.02 0.02 -0.01 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + "variable th equal 0.05*sin(2*PI*time/0.01)\nregion pl plane 0 0 0 0 0 1 side in rotate v_th 0 0 0 0 1 0 units box\n"
+     + "fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl\n"
+     + TAIL + "create_atoms 1 single 0.01 0 0.01\nset type 1 diameter 0.004 density 2500\nrun 1000\n")
+
 # ---------------------------------------------------------------- particle properties
 deck("q01_mass_cmd_on_sphere", "# mass command on atom_style sphere after set density\n"
      + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO + "mass 1 1.0\nmass 2 1.0\nrun 1000\n")

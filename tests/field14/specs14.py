@@ -136,6 +136,10 @@ S = {
     W(1, 0.002, m2, wall="fix floor all wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL",
       speed_idx=[0, 2, 4], label="floor row vs floor + the open-bottomed block wall (engine truth)",
       spec_override={"post": [f"fix wc all wall/gran/region granular {HK} region cup"]})]},
+ "w17_rocking_plane_region_hooke": {"engine": "lammps", "lines": LL,
+    "pre": ["variable th equal 0.05*sin(2*PI*time/0.01)", "region pl plane 0 0 0 0 0 1 side in rotate v_th 0 0 0 0 1 0 units box"], "checks": [
+    W(1, 0.002, m2, wall="fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl",
+      wall_id="rw", x=0.01, speed_idx=[0, 2, 4], label="rw at x = 0.01, met at t = 0 (the plane turning at 31 rad/s)")]},
  "w04_zcylinder_and_floor_edge": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {HM}"], "checks": [
     W(1, 0.002, m2, wall=f"fix floor all wall/gran granular {HM} zplane 0 NULL", x=0.0079, label="floor alone, near the cylinder's edge"),
     W(1, 0.002, m2, wall=f"fix floor all wall/gran granular {HM} zplane 0 NULL", x=0.0079, label="floor row vs floor+cylinder at the edge (engine truth)",
