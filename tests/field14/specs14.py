@@ -242,6 +242,11 @@ S.update({
        spec_override={"post": DUMMY1 + ["fix wl all wall/gran model hertz tangential history primitive type 3 zplane 0.0"]})]},
 })
 
+S.update({
+ "L19_read_data_granular_columns": {"engine": "liggghts", "ntypes": 3, "lines": STIFFL, "checks": [
+    LP(1, 2, (0.0025, 7.85398e-05), (0.0015, 0.00011027)), LW(1, (0.0025, 7.85398e-05), wall=WSTIFF)]},
+})
+
 # ---------------------------------------------------------------- real decks
 S.update({
  "R01_gravelle_pouring_granular": {"engine": "lammps", "units": "lj", "lines": ["pair_style granular",
