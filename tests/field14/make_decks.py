@@ -136,7 +136,7 @@ deck("r17_vdisplace_swiggle_between_runs", "# a density from vdisplace() and a s
      + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO
      + "variable rho equal vdisplace(1000,50000)\nvariable k equal swiggle(2000,1500,0.4)\nrun 10000\nset type 1 density ${rho}\n"
      "pair_coeff * * hooke ${k} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
-deck("r18_adapt_ramp_growth", "# the fix adapt idiom of LAMMPS' own docs: diameter from ramp(0.004,0.006) over the run, reset no, then unfix and run\n"
+deck("r18_adapt_ramp_growth", "# growth by ramp(): diameter from ramp(0.004,0.006) over the run, reset no, then unfix and run\n"
      + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "variable dgrow equal ramp(0.004,0.006)\n"
      "fix ad all adapt 1 atom diameter v_dgrow reset no\nrun 10000\nunfix ad\nrun 100\n")
 deck("r19_adapt_ramp_no_unfix", "# ramp growth with fix adapt left defined over two runs (LAMMPS ramps again in the second run)\n"
