@@ -136,7 +136,7 @@ deck("r17_vdisplace_swiggle_between_runs", "# a density from vdisplace() and a s
      + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO
      + "variable rho equal vdisplace(1000,50000)\nvariable k equal swiggle(2000,1500,0.4)\nrun 10000\nset type 1 density ${rho}\n"
      "pair_coeff * * hooke ${k} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
-deck("r18_adapt_ramp_growth", "# the fix adapt idiom of LAMMPS' own docs: diameter from ramp(0.004,0.006) over the run, reset no, then unfix and run\n"
+deck("r18_adapt_ramp_growth", "# growth by ramp(): diameter from ramp(0.004,0.006) over the run, reset no, then unfix and run\n"
      + ADAPT_BASE.replace("atom_style sphere", "atom_style sphere 1") + "variable dgrow equal ramp(0.004,0.006)\n"
      "fix ad all adapt 1 atom diameter v_dgrow reset no\nrun 10000\nunfix ad\nrun 100\n")
 deck("r19_adapt_ramp_no_unfix", "# ramp growth with fix adapt left defined over two runs (LAMMPS ramps again in the second run)\n"
@@ -267,6 +267,19 @@ deck("w15b_oscillating_plane_region_hertz", "# w15 with a hertz/material wall la
      + "variable zw equal 0.0005*sin(2*PI*time/0.01)\nregion pl plane 0 0 0 0 0 1 side in move NULL NULL v_zw units box\n"
      + f"fix rw all wall/gran/region granular {HM} region pl\n"
      + TAIL + TWO + "run 1000\n")
+
+deck("w16_block_open_bottom_on_floor", "# a block region wall whose bottom face (5) is open, standing on a zplane floor at its bottom z = 0\n"
+     + head(box="-0.02 0.02 -0.02 0.02 -0.001 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HK}\n"
+     + "region cup block -0.015 0.015 -0.015 0.015 0 0.04 open 5 units box\n"
+     + f"fix wc all wall/gran/region granular {HK} region cup\n"
+     + "fix floor all wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + GRAV + TAIL
+     + "create_atoms 1 single 0 0 0.01\nset type 1 diameter 0.004 density 2500\nrun 2000\n")
+
+deck("w17_rocking_plane_region_hooke", "# the floor is a plane region rocked about the y axis (rotate by v_th, 0.05 rad amplitude, period 10 ms); hooke wall law\n"
+     + head(box="-0.02 0.02 -0.02 0.02 -0.01 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + "variable th equal 0.05*sin(2*PI*time/0.01)\nregion pl plane 0 0 0 0 0 1 side in rotate v_th 0 0 0 0 1 0 units box\n"
+     + "fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl\n"
+     + TAIL + "create_atoms 1 single 0.01 0 0.01\nset type 1 diameter 0.004 density 2500\nrun 1000\n")
 
 # ---------------------------------------------------------------- particle properties
 deck("q01_mass_cmd_on_sphere", "# mass command on atom_style sphere after set density\n"

@@ -42,8 +42,8 @@ fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50
 DECKS = {}
 
 
-def deck(name, text, g=1, files=None):
-    DECKS[name] = (text, g, files or {})
+def deck(name, text, g=1, files=None, data=None):
+    DECKS[name] = (text, g, files or {}, data or {})
 
 
 deck("L01_e_one_everywhere", "# coefficientRestitution 1.0 for every pair and the wall: eps 1?\n" + head() + MAT3
@@ -118,14 +118,43 @@ region ins block -0.03 0.03 -0.03 0.03 0.02 0.1 units box
 fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes all_in yes particles_in_region 20 region ins
 """ + RUN)
 
+deck("L19_read_data_granular_columns", "# LIGGGHTS read_data (atom_style granular: id type diameter density x y z), hooke/stiffness (sizes matter)\n"
+     + """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+read_data data.L19
+neighbor 0.002 bin
+neigh_modify delay 0
+""" + MAT3 + STIFF3 + "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+     + "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n" + RUN,
+     data={"data.L19": """L19
+
+2 atoms
+3 atom types
+
+-0.05 0.05 xlo xhi
+-0.05 0.05 ylo yhi
+-0.01 0.15 zlo zhi
+
+Atoms
+
+1 1 0.005 1200 0.01 0 0.01
+2 2 0.003 7800 -0.01 0 0.01
+"""})
+
 
 def write(name):
-    text, g, files = DECKS[name]
+    text, g, files, data = DECKS[name]
     d = os.path.join(D, name)
     os.makedirs(d, exist_ok=True)
     open(os.path.join(d, "in.deck"), "w").write(text)
     open(os.path.join(d, "G"), "w").write(f"{g}\n")
     open(os.path.join(d, "LIGGGHTS"), "w").write("")
+    for f, t in data.items():
+        open(os.path.join(d, f), "w").write(t)
     for f, args in files.items():
         subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
 

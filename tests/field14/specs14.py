@@ -131,6 +131,15 @@ S = {
     "pre": ["variable zw equal 0.0005*sin(2*PI*time/0.01)", "region pl plane 0 0 0 0 0 1 side in move NULL NULL v_zw units box"], "checks": [
     W(1, 0.002, m2, wall="fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl",
       wall_id="rw", speed_idx=[0, 2, 4], label="rw, the sphere meeting the plane at t = 0 (the plane rising at 0.31 m/s)")]},
+ "w16_block_open_bottom_on_floor": {"engine": "lammps", "lines": LL,
+    "pre": ["region cup block -0.015 0.015 -0.015 0.015 0 0.04 open 5 units box"], "checks": [
+    W(1, 0.002, m2, wall="fix floor all wall/gran granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL",
+      speed_idx=[0, 2, 4], label="floor row vs floor + the open-bottomed block wall (engine truth)",
+      spec_override={"post": [f"fix wc all wall/gran/region granular {HK} region cup"]})]},
+ "w17_rocking_plane_region_hooke": {"engine": "lammps", "lines": LL,
+    "pre": ["variable th equal 0.05*sin(2*PI*time/0.01)", "region pl plane 0 0 0 0 0 1 side in rotate v_th 0 0 0 0 1 0 units box"], "checks": [
+    W(1, 0.002, m2, wall="fix rw all wall/gran/region granular hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 region pl",
+      wall_id="rw", x=0.01, speed_idx=[0, 2, 4], label="rw at x = 0.01, met at t = 0 (the plane turning at 31 rad/s)")]},
  "w04_zcylinder_and_floor_edge": {"engine": "lammps", "lines": ["pair_style granular", f"pair_coeff * * {HM}"], "checks": [
     W(1, 0.002, m2, wall=f"fix floor all wall/gran granular {HM} zplane 0 NULL", x=0.0079, label="floor alone, near the cylinder's edge"),
     W(1, 0.002, m2, wall=f"fix floor all wall/gran granular {HM} zplane 0 NULL", x=0.0079, label="floor row vs floor+cylinder at the edge (engine truth)",
@@ -231,6 +240,11 @@ S.update({
     LW(2, L2, label="wprim type 2 alone (control)", spec_override={"post": DUMMY1}),
     LW(2, L2, label="wprim row type 2 vs wprim + wl (engine truth)", speed_idx=[0, 2, 4],
        spec_override={"post": DUMMY1 + ["fix wl all wall/gran model hertz tangential history primitive type 3 zplane 0.0"]})]},
+})
+
+S.update({
+ "L19_read_data_granular_columns": {"engine": "liggghts", "ntypes": 3, "lines": STIFFL, "checks": [
+    LP(1, 2, (0.0025, 7.85398e-05), (0.0015, 0.00011027)), LW(1, (0.0025, 7.85398e-05), wall=WSTIFF)]},
 })
 
 # ---------------------------------------------------------------- real decks
