@@ -19,6 +19,7 @@ import os
 import re
 import secrets
 import shutil
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -138,6 +139,28 @@ def normalised(text: str) -> str:
     return " ".join(strip_comment(text).split())
 
 
+def _not_copied(root: Path):
+    """The ``ignore`` of the deck folder's copy: the scratch directory ``root`` itself, where it lies
+    in that folder (a deck saved in the temporary directory: the copy copied itself until "File name
+    too long", field round 14, x10), and what is no file, folder or link (a named pipe, whose read
+    would wait, a socket, a device: x11)."""
+    held = root.resolve()
+
+    def ignore(folder, names) -> set:
+        out = set()
+        for name in names:
+            p = Path(folder, name)
+            try:
+                mode = p.lstat().st_mode
+            except OSError:
+                out.add(name)
+                continue
+            if p.resolve() == held or not (stat.S_ISREG(mode) or stat.S_ISDIR(mode) or stat.S_ISLNK(mode)):
+                out.add(name)
+        return out
+    return ignore
+
+
 def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, confined: bool = True) -> Scratch:
     """Copy the deck's folder into ``where``/deck and make the copy safe to run.
 
@@ -184,11 +207,14 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     """
     src = Path(deck).resolve()
     root = Path(where)
+    ignore = _not_copied(root)
     total = 0
-    for base, _, names in os.walk(src.parent):
+    for base, folders, names in os.walk(src.parent):
+        skipped = ignore(base, folders + names)
+        folders[:] = [f for f in folders if f not in skipped]
         for name in names:
             p = Path(base, name)
-            if not p.is_symlink():
+            if name not in skipped and not p.is_symlink():
                 total += p.stat().st_size
         if total > MAX_FOLDER_BYTES:
             raise DeckError("deck", str(src.parent), f"its folder holds more than {MAX_FOLDER_BYTES >> 20} MB, copied "
@@ -198,13 +224,13 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     # a deck that names files above its folder: the copy as deep in the scratch as they reach, and
     # each file named copied at its place relative to it (never the folders' other files)
     copy = root.joinpath("deck", *src.parent.parts[len(src.parent.parts) - depth:])
-    shutil.copytree(src.parent, copy, symlinks=True)
+    shutil.copytree(src.parent, copy, symlinks=True, ignore=ignore)
     for name in above:
         target = Path(os.path.normpath(copy / name))
         target.parent.mkdir(parents=True, exist_ok=True)
         source = Path(os.path.normpath(src.parent / name))
         if source.is_dir():
-            shutil.copytree(source, target, symlinks=True, dirs_exist_ok=True)
+            shutil.copytree(source, target, symlinks=True, dirs_exist_ok=True, ignore=ignore)
         else:
             shutil.copyfile(source, target)
     # a file named by an absolute path (a cluster's /home/... parameter file): copied into the
