@@ -815,13 +815,16 @@ def test_a_walls_faces_are_those_its_engines_reader_read(tmp_path):
     ("fix b all wall/gran {law} zplane 0.05 NULL", False),
     ("region cup block -0.04 0.04 -0.04 0.04 0.0 0.09 units box\nfix b all wall/gran/region {law} region cup", True),
     ("region cup block -0.04 0.04 -0.04 0.04 0.01 0.09 units box\nfix b all wall/gran/region {law} region cup", False),
+    # field round 14, w16: the face at the floor is open, no wall
+    ("region cup block -0.04 0.04 -0.04 0.04 0.0 0.09 open 5 units box\nfix b all wall/gran/region {law} region cup",
+     False),
     # field round 12, D7: a cylinder region's end and a plane region at the plane (LAMMPS 0.36604431 for
     # each, where the audit printed 0.5 with nothing said)
     ("region can cylinder z 0 0 0.03 0.0 0.09 units box\nfix b all wall/gran/region {law} region can", True),
     ("region can cylinder z 0 0 0.03 0.01 0.09 units box\nfix b all wall/gran/region {law} region can", False),
     ("region pl plane 0 0 0 0 0 1 units box\nfix b all wall/gran/region {law} region pl", True),
     ("region pl plane 0 0 0.05 0 0 1 units box\nfix b all wall/gran/region {law} region pl", False),
-], ids=["same", "other side", "apart", "region face", "region apart", "cylinder end", "cylinder apart",
+], ids=["same", "other side", "apart", "region face", "region apart", "open face", "cylinder end", "cylinder apart",
         "plane region", "plane region apart"])
 def test_two_walls_at_one_plane_name_each_other_beside_their_rows(tmp_path, second, named):
     """The engine adds the forces of every wall a sphere overlaps: two identical hertz/material

@@ -211,7 +211,9 @@ def _region_places(deck: Deck, rid: str) -> set | None:
     if any(isinstance(x, str) for x in numbers + ends):
         return None                  # a variable's size, or lattice units not read
     if region.style == "block":
-        return {("xyz"[k // 2], at) for k, at in enumerate(numbers) if at is not None}
+        # faces 1 to 6: xlo, xhi, ylo, yhi, zlo, zhi; an open one is no wall (field round 14, w16:
+        # a box open at its bottom was named as a second wall at the floor)
+        return {("xyz"[k // 2], at) for k, at in enumerate(numbers) if at is not None and str(k + 1) not in region.opened}
     if region.style == "sphere":
         return {("sphere", *numbers)} if None not in numbers else None
     if region.style == "plane":
