@@ -603,7 +603,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         if done.error and (made is None or made[0] is None):
             where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
-                where, line = place(commands[-1].loc), commands[-1].text
+                # (as the deck wrote it, not as the copy guards a set)
+                where, line = place(commands[-1].loc), _unguarded(commands[-1].text)
             if _marker_stopped(done.echo, root):
                 # the atoms have no radius to write (an atom style without one): the deck's own
                 # refusal where it has one (its pair style, say), else this
@@ -619,8 +620,12 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
-            raise DeckError(where, line or None, "; ".join([_stopped(engine, message, commands), *made[2:]]
-                                                            if made else [_stopped(engine, message, commands)]))
+            # where the runs were not made (made[1]: the commands of a pass that made them and stopped
+            # too), what the pass read after a run decided where it went, and its stop is its own
+            unmade = found if made is None or made[1] is None else []
+            said = made[2:] if made else (["--run-budget 0 makes no run for real (a budget in seconds lets the "
+                                           "engine make them)"] if unmade else [])
+            raise DeckError(where, line or None, "; ".join([_stopped(engine, message, commands, unmade), *said]))
         if made is None:
             read = deck_commands(commands, scratch)
             try:
@@ -714,10 +719,15 @@ _RUN_STATE = re.compile(r"Divide by 0|Modulo 0|Sqrt of negative|Log of zero|Powe
 _INSERTING = re.compile(r"fix\s+\S+\s+\S+\s+(pour|deposit|insert/\S+)\b")
 
 
-def _stopped(engine: str, message: str, commands: list) -> str:
+def _stopped(engine: str, message: str, commands: list, read: list = ()) -> str:
     """The reason a deck is refused where its engine stopped in the audit's pass, said truly: the
     engine's own stop, the audit's confinement, or the pass's runs (skipped by LAMMPS, cut to one
     step by LIGGGHTS), after which what the engine holds is not what the deck's own runs make.
+    ``read``: the commands after a run that read before the stop a value the runs change
+    (:func:`_run_dependent`), where the runs were not made for real: the branches the pass took
+    from the first of them on are its own, not the deck's, so its stop says nothing of the deck's
+    (field round 13: a loop of pours until a count, exhausted in the pass alone, stopped it on a
+    loop variable LAMMPS run by hand has defined; "LAMMPS stops here" said it was the deck's).
 
     Examples
     --------
@@ -727,19 +737,30 @@ def _stopped(engine: str, message: str, commands: list) -> str:
     >>> print(_stopped("LAMMPS", "Variable m: Divide by 0 in variable formula",
     ...                [Executed((None, 3), "fix p all pour 10 1 5 region r"), Executed((None, 4), "run 10", 0)]))
     LAMMPS stopped here in the audit's pass, in which the runs before are skipped, so it holds none of the atoms the inserting fixes make in them (fix p), nor anything else the runs change: Variable m: Divide by 0 in variable formula; the deck run by hand may not stop here, but what it reads here depends on its runs, which the audit does not make: not audited
+    >>> print(_stopped("LAMMPS", "Invalid variable reference v_c in variable formula",
+    ...                [Executed((None, 4), "run 10", 0), Executed((None, 5), 'if "$(count(all)) > 9" then "jump SELF d"'),
+    ...                 Executed((None, 8), "set type 1 diameter $(v_c)")],
+    ...                [((None, 5), 'if "$(count(all)) > 9" then "jump SELF d"')]))
+    LAMMPS stopped here in the audit's pass, in which the runs before are skipped, so it holds not what they make of the atoms, the step and the values computed from them, and line 5 (if "$(count(all)) > 9" then "jump SELF d") read such a value before this, which decided the branches and values from there on: Invalid variable reference v_c in variable formula; the deck run by hand may not stop here, but what it reads here depends on its runs, which the audit does not make: not audited
     """
     if any(cause in message for cause in _CONFINED):
         return (f"{engine}, run by the audit where it may write only in its copy of the deck's folder and a stand-in "
                 f"of the folders outside it, stopped here: {message}; the deck run by hand may not stop here: "
                 "not audited")
     runs = [k for k, cmd in enumerate(commands) if cmd.stage is not None]
-    if not runs or not _RUN_STATE.search(message):
+    # the command it stopped on, where it read such a value itself, is "here" already
+    before = [(loc, text) for loc, text in read if not commands or loc != commands[-1].loc]
+    if not runs or not (before or _RUN_STATE.search(message)):
         return f"{engine} stops here: {message}"
     inserting = sorted({m.group(0).split()[1] for cmd in commands[:runs[-1]] if (m := _INSERTING.match(cmd.text))})
     cut = "skipped" if engine == "LAMMPS" else "cut to one step"
     held = (f"none of the atoms the inserting fixes make in them ({', '.join(f'fix {i}' for i in inserting)}), nor "
             "anything else the runs change" if inserting else
             "not what they make of the atoms, the step and the values computed from them")
+    if before:
+        loc, text = before[0]
+        held += (f", and {place(loc)} ({' '.join(text.split())}) read such a value before this, which decided the "
+                 "branches and values from there on")
     return (f"{engine} stopped here in the audit's pass, in which the runs before are {cut}, so it holds {held}: "
             f"{message}; the deck run by hand may not stop here, but what it reads here depends on its runs, which "
             "the audit does not make: not audited")
@@ -805,7 +826,8 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
     """The engine's pass through the scratch copy with the deck's runs made for real, where the
     pass with them skipped (``commands``) met the ``causes`` (:func:`_run_causes`): (EngineRun,
     commands, the note that says so), or (None, None, the note that says why it was not made: the
-    budget ran out, the runs are longer than :data:`MAX_RUN_STEPS`, the engine stopped); None where
+    budget ran out, the runs are longer than :data:`MAX_RUN_STEPS`), or (None, the commands it ran,
+    the note) where the engine making them stopped too; None where
     ``budget`` is 0 or the engine cannot make them (``MAKES_RUNS`` of its ``deck_run``). ``looped``: the pass with
     runs skipped was ended in a loop (a settle loop waiting for a value only runs change), so its
     runs tell nothing of the deck's steps, and the wall time alone bounds the runs made.
@@ -840,7 +862,7 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
                             f"the audit's --run-budget {budget:g} s ({done.spent}); --run-budget SECONDS allows more: "
                             f"its runs {cut}, as said")
     if done.error:
-        return None, None, (f"{what}; {deck_run.ENGINE} making its runs for real stopped: "
+        return None, made, (f"{what}; {deck_run.ENGINE} making its runs for real stopped: "
                             f"{' '.join(done.error.split())[:300]}: its runs {cut}, as said")
     return done, made, (
         f"{what}: {deck_run.ENGINE} made the deck's {runs} runs ({steps if steps is not None else 'their'} steps) for real, in {done.wall:.2g} s of the "
