@@ -801,7 +801,10 @@ def _run_causes(found: list, picked: tuple | None, deck: Deck | None) -> list:
     one only a pour not yet finished gives (``deck``'s stages' ``pending``), in the deck's order."""
     causes = list(found) + ([picked] if picked and picked not in found else [])
     for runs, snap, _ in deck.stages if deck is not None else ():
-        if snap.pending:
+        # a type whose pours were all unfixed before the set keeps an empty entry: no size in doubt
+        # (field round 13, a26: pour, unfix, set type 1 density: every atom the pour made is
+        # resized, whether or not it had finished, and the runs were made for a false cause)
+        if any(snap.pending.values()):
             causes.append((runs[0][0], f"{runs[0][1]}, whose sizes include a pour's own only if it has not "
                                        "finished"))
     return sorted(causes, key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
