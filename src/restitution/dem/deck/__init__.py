@@ -1029,7 +1029,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         {"code", "stages", "pairs", "walls", "unknown_lines", "ignored"}. ``stages``: one entry
         for each change of the contact settings between runs ({"runs": [{"file", "line", "text"}],
         "pairs", "walls"}, and "why" where it has neither; a deck without a run has one stage, its
-        settings at its end); ``pairs``
+        settings at its end; a run of a line the engine ran more than once, in a loop, has "pass":
+        the how-manieth time it ran it); ``pairs``
         and ``walls`` are the last stage's. A pair row holds, for a type pair, the eps the deck
         really gives at ``speeds`` (relative accuracy 1e-10), beside the e typed (or None) and the
         line that would give that e exactly. Where the spheres' centres would meet
@@ -1088,6 +1089,9 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                                                   "happens, so there is no eps to audit; an integrator (fix nve/sphere) "
                                                   "makes one")
     audited, unmapped = [], []
+    # a loop runs one line many times: each run says which time it is, where there are several
+    times = {loc: n for loc, n in _counted(loc for runs, _ in stages for loc, _ in runs).items() if n > 1}
+    met: dict = {}
     for runs, snap in stages:
         try:
             pairs, walls, not_audited, not_mapped = _audit_stage(snap, speeds, bool(runs))
@@ -1101,8 +1105,12 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             # settings read after a run from values the runs change: marked in each row, not only on stderr
             for row in pairs + walls:
                 row["may_differ"] = True
-        audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
-                        "walls": walls})
+        said = []
+        for (f, n), t in runs:
+            said.append({"file": f, "line": n, "text": t})
+            if (f, n) in times:
+                met[(f, n)] = said[-1]["pass"] = met.get((f, n), 0) + 1
+        audited.append({"runs": said, "pairs": pairs, "walls": walls})
         if not pairs and not walls:
             audited[-1]["why"] = _no_rows(snap)
     if unmapped and not any(stage["pairs"] or stage["walls"] for stage in audited):
@@ -1110,6 +1118,14 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
             "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck) + _environment_notes(deck)}
+
+
+def _counted(items) -> dict:
+    """{item: how many times it comes}, in the order each first comes."""
+    counts: dict = {}
+    for item in items:
+        counts[item] = counts.get(item, 0) + 1
+    return counts
 
 
 def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list, list]:
@@ -1471,18 +1487,24 @@ def _empty_notes(deck: Deck) -> list:
     finished gives."""
     stages = [snap for _, snap, _ in deck.stages] or [deck]
     empty = sorted({t for d in stages for t in range(1, d.ntypes + 1) if _empty(d, t)})
-    # a fix deposit (or a pour yet to run) makes atoms of its type as the runs go
-    inserted = sorted(t for t in empty if any(t in made for d in stages for made in d.inserts if made))
+    # the inserting fixes defined at a run where their type has no atom make its atoms as that run
+    # goes; one defined only at a later run (field round 13, a06: a loop pours type 1, then type 2)
+    # has made none there, and none of its sizes is missing
+    inserted = {t: _inserters([d for d in stages if _empty(d, t)], t) for t in empty}
+    later = {t: _inserters([d for d in stages if not _empty(d, t)], t) for t in empty}
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
     pending = {(t, (fix, where, *size)) for d in stages for t, sizes in d.pending.items()
                for size, fixes in sizes.items() for fix, where in fixes}
     return [f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
             f"whatever set gave the type's atoms before: audited at that size{_beside_deposited(stages, t)}"
-            for t, fix in sorted(deposited.items())] + [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
-            "sphere pairs cannot happen there and are not audited" for t in empty if t not in inserted] + \
-        [f"type {t} is inserted by a fix (deposit) as the runs go, at sizes the audit does not read: its pairs "
-         "are not audited" for t in inserted] + \
+            for t, fix in sorted(deposited.items())] + [
+            f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} ("
+            + (f"those before {later[t]} makes its atoms" if later[t] else "walls only, or unused")
+            + "): its sphere pairs cannot happen there and are not audited" for t in empty if not inserted[t]] + \
+        [f"type {t} is inserted by {inserted[t]} as the runs go, at sizes the audit does not read: its pairs "
+         f"{'at the runs where it has no atom yet ' if len(stages) > 1 else ''}are not audited"
+         for t in empty if inserted[t]] + \
         [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the two smallest and "
          "two largest radii and the two lightest and two densest among them; its pairs' eps range is over these, "
          "and the sizes left out may reach beyond it" for t, (n, k) in sorted(sampled.items())] + \
@@ -1490,6 +1512,18 @@ def _empty_notes(deck: Deck) -> list:
          f"when the set at {where} resized those it had made, which the audit (its runs skipped) does not know: the "
          "rows at that size hold only then"
          for t, (fix, where, r, rho) in sorted(pending)]
+
+
+def _inserters(stages: list, t: int) -> str:
+    """The inserting fixes the stages name for type t, as "fix ID (style)" joined by "or" ("": none).
+
+    Examples
+    --------
+    >>> _inserters([Deck(inserters={2: {"ins": "pour"}}), Deck(inserters={2: {"d": "deposit"}})], 2)
+    'fix ins (pour) or fix d (deposit)'
+    """
+    named = {f"fix {fix} ({style})": None for d in stages for fix, style in d.inserters.get(t, {}).items()}
+    return " or ".join(named)
 
 
 def _beside_deposited(stages: list, t: int) -> str:

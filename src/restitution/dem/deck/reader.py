@@ -1137,6 +1137,8 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         # a fix defined again (a loop of 10 000 pours) adds nothing new: kept once
         if made not in deck.inserts:
             deck.inserts.append(made)
+        for t in made or ():
+            deck.inserters.setdefault(t, {})[words[1]] = style
         if words[2] != "all":
             filled = deck.filled_groups.setdefault(words[2], [])
             if (f"fix {words[1]} ({style}) inserts", made) not in filled:
