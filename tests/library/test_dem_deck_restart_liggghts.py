@@ -55,3 +55,27 @@ def test_a_liggghts_restart_in_one_deck_is_audited_from_its_settings_after_the_r
     # the stage before the read has the first gamman: another eps for the same spheres of type 1
     assert stages[0]["pairs"][0]["types"] == [1, 1] and "gamman peratomtypepair 2 3000" in first
     assert abs(stages[0]["pairs"][0]["eps"][2] - rows[(1, 1)]["eps"][2]) > 0.1
+
+
+@needs_liggghts
+@pytest.mark.dem
+def test_a_liggghts_restart_with_the_runs_made_reads_its_own_account(tmp_path):
+    """After the read, a density set by the step the restart holds: 1000 steps when LIGGGHTS runs
+    the deck, 1 in the pass whose runs are one step long. LIGGGHTS makes the runs for real, reads
+    the restart its own runs wrote (the account of each pass is its own), and the last stage is at
+    the density LIGGGHTS holds at the deck's end."""
+    import json
+    text = DECK.read_text().replace("set type 2 density 1000", 'if "$(step) > 500" then "set type 2 density 1000"')
+    assert text != DECK.read_text()
+    (tmp_path / "deck").mkdir()
+    path = tmp_path / "deck" / "in.deck"
+    path.write_text(text)
+    status, out, err = run(path, "--g", "1", "--json")
+    assert status == 0 and "LIGGGHTS made the deck's 2 runs" in err, err
+    held = liggghts_held_at_end(path, tmp_path)
+    assert [(r, pytest.approx(rho, rel=1e-9)) for r, rho in held[2]] == [(0.003, 1000.0)], held
+    last = {tuple(r["types"]): r for r in json.loads(out)["stages"][-1]["pairs"]}
+    one = json.loads(run(DECK, "--g", "1", "--json")[1])["stages"][-1]["pairs"]
+    # the same spheres and contacts as the deck that sets the density unconditionally (checked
+    # against LIGGGHTS head-on above)
+    assert [last[tuple(r["types"])]["eps"] for r in one] == [r["eps"] for r in one]

@@ -100,7 +100,8 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
     argv = ["liggghts", "-echo", "screen", "-log", "none", "-nocite", "-in", str(driver)]
     stdbuf = shutil.which("stdbuf")
     for _ in range(1 + MPI_START_RETRIES):
-        for name in (ATOMS, ATOMS_AT_END):
+        # a pass made again (the runs made for real) starts afresh: its reads' accounts are its own
+        for name in (ATOMS, ATOMS_AT_END, RESTART_INFO):
             (root / name).unlink(missing_ok=True)
         done = run_child([stdbuf, "-oL", *argv] if stdbuf else argv, deck.parent, env, root, budget,
                          screen_is_stdout=True, original=original, tag=tag, ceiling=ceiling)
