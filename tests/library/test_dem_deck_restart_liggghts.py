@@ -25,6 +25,7 @@ def _contact_lines(text: str) -> str:
 
 @needs_liggghts
 @pytest.mark.dem
+@pytest.mark.slow
 def test_a_liggghts_restart_in_one_deck_is_audited_from_its_settings_after_the_read(tmp_path):
     import json
 
@@ -59,6 +60,7 @@ def test_a_liggghts_restart_in_one_deck_is_audited_from_its_settings_after_the_r
 
 @needs_liggghts
 @pytest.mark.dem
+@pytest.mark.slow
 def test_a_liggghts_restart_with_the_runs_made_reads_its_own_account(tmp_path):
     """After the read, a density set by the step the restart holds: 1000 steps when LIGGGHTS runs
     the deck, 1 in the pass whose runs are one step long. LIGGGHTS makes the runs for real, reads
