@@ -212,9 +212,14 @@ def liggghts_held_at_end(deck: Path, tmp: Path) -> dict:
 def as_without_runs(status: int, got, err: str, before: str) -> None:
     """What the deck audit gives where its engine does not make the deck's runs (``--run-budget 0``),
     for a deck that reads after a run what they change: ``before`` "refused" (a set by position, in
-    one line), "may_differ" (the last stage's rows marked) or "if_poured" (a row at a pour's size)."""
+    one line), "may_differ" (the last stage's rows marked), "if_poured" (a row at a pour's size) or
+    "stopped" (the engine's pass stopped where the runs skipped left it: refused in one line that says
+    the deck run by hand may not stop there, and why the runs were not made)."""
     if before == "refused":
         assert status == 2 and len(err.strip().splitlines()) == 1 and "where the run left them" in err, err
+    elif before == "stopped":
+        assert status == 2 and len(err.strip().splitlines()) == 1 and "stops here:" not in err, err
+        assert "the deck run by hand may not stop here" in err and "--run-budget 0 makes no run" in err, err
     elif before == "may_differ":
         assert status == 0 and all(p.get("may_differ") for p in got["stages"][-1]["pairs"]), err
     else:

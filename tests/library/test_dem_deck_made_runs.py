@@ -50,6 +50,16 @@ DECKS = {
     # 0.4973, r02: 0.0340, where LAMMPS gives 0.2551)
     "field14/decks/r18_adapt_ramp_growth": (HOOKE, "may_differ"),
     "field14/decks/r02_adapt_diameter_scale_yes": (HOOKE, "may_differ"),
+    # field round 13 (D5): a count after a pour (count(all) in a variable, immediate, the atoms
+    # keyword) picks an if's branch, and loops end on a count, an energy, the step: the pass with
+    # the runs skipped took the other branch or ran its loop out and stopped (Set command on system
+    # without atoms; an undefined loop variable), which the deck run by hand never does
+    "field13/decks/a03_count_after_pour_if": (HOOKE, "stopped"),
+    "field13/decks/a03b_count_immediate_after_pour_if": (HOOKE, "stopped"),
+    "field13/decks/a03c_atoms_thermo_after_pour": (HOOKE, "stopped"),
+    "field13/decks/a27_loop_pour_until_count": (HOOKE, "stopped"),
+    "field13/decks/a30_pe_energy_threshold_loop": (HOOKE, "stopped"),
+    "field13/decks/a33_step_loop_until": (HOOKE + "\n" + HOOKE.replace("* *", "1 2").replace("3000", "2500"), "stopped"),
     "field10/decks/f04_pour_done_then_set": ("pair_coeff * * hooke 1000 0.02 damping velocity tangential "
                                              "linear_nohistory 0 0", "if_poured"),
 }

@@ -139,3 +139,28 @@ def test_a_set_of_velocities_on_a_region_leaves_the_poured_sizes_known(tmp_path)
     assert status == 0, err
     row = {tuple(r["types"]): r for r in got["stages"][-1]["pairs"]}[(1, 1)]
     assert "at" not in row and row["overlap_limit"] == pytest.approx(0.01, rel=1e-12)
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("args", [[], ["--run-budget", "0"]])
+def test_a_pour_unfixed_before_a_set_leaves_no_size_in_doubt(tmp_path, args):
+    """Field round 13 (a26, a37): pour, run, ``unfix``, ``set type 1 density 1000``: the set
+    resizes every atom the pour made, whether or not it had finished (here it has not: 400 asked,
+    fewer made in 100 steps), so the stage after it holds one size. Before, an empty entry of the
+    pour's sizes in doubt made the runs for real, with the false cause "whose sizes include a
+    pour's own only if it has not finished", and under ``--run-budget 0`` the same rows stood
+    without it: now neither run makes the runs, no row is marked, and each eps is LAMMPS' own at
+    the sizes LAMMPS holds at the deck's end."""
+    status, got, err = _audit(tmp_path, "unfix p\n", "set type 1 density 1000", *args)
+    assert status == 0, err
+    assert "for real" not in err and "pour's own" not in err and "not finished" not in err, err
+    held = lammps_held_at_end(tmp_path / "in.deck")
+    assert [(r, pytest.approx(rho, rel=1e-12)) for r, rho in held[1]] == [(0.005, 1000.0)], held
+    rows = {tuple(r["types"]): r for r in got["stages"][-1]["pairs"]}
+    assert sorted(rows) == [(1, 1), (1, 2), (2, 2)], rows
+    for types, r in rows.items():
+        assert not r.get("if_poured") and not r.get("may_differ") and "at" not in r, r
+        engine = _engine(r, [next(iter(held[t])) for t in types])
+        print(types, r["eps"][2], engine)
+        assert abs(engine[0] / r["eps"][2] - 1) < 1e-6

@@ -344,12 +344,28 @@ def _run_materials(engine, args, text: str, speeds: list, read_file, out) -> Non
 
 
 def _stage_head(stage: dict, k: int, n: int) -> str:
-    """The text output's heading of stage k of n (none where the deck has one stage)."""
+    """The text output's heading of stage k of n (none where the deck has one stage).
+
+    Examples
+    --------
+    >>> runs = [{"file": None, "line": 22, "pass": p} for p in (1, 2, 3)] + [{"file": None, "line": 29}]
+    >>> _stage_head({"runs": runs}, 1, 2)
+    '# stage 1 of 2: the contact settings of the runs at line 22 (passes 1 to 3), line 29'
+    """
     if n == 1:
         return ""
     runs = stage["runs"]
-    where = ", ".join(f"{r['file']} line {r['line']}" if r["file"] else f"line {r['line']}" for r in runs[:5])
-    more = f" and {len(runs) - 5} more" if len(runs) > 5 else ""
+    # a loop's passes of one line, one after another, said once: "line 22 (passes 1 to 13)"
+    spans: list = []
+    for r in runs:
+        here = f"{r['file']} line {r['line']}" if r["file"] else f"line {r['line']}"
+        if spans and spans[-1][0] == here and r.get("pass") is not None and spans[-1][2] == r["pass"] - 1:
+            spans[-1][2] = r["pass"]
+        else:
+            spans.append([here, r.get("pass"), r.get("pass")])
+    where = ", ".join(here + ("" if first is None else f" (pass {first})" if first == last else
+                              f" (passes {first} to {last})") for here, first, last in spans[:5])
+    more = f" and {len(spans) - 5} more" if len(spans) > 5 else ""
     return f"# stage {k} of {n}: the contact settings of the run{'s' if len(runs) > 1 else ''} at {where}{more}"
 
 

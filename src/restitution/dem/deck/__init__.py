@@ -632,7 +632,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         if done.error and (made is None or made[0] is None):
             where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
-                where, line = place(commands[-1].loc), commands[-1].text
+                # (as the deck wrote it, not as the copy guards a set)
+                where, line = place(commands[-1].loc), _unguarded(commands[-1].text)
             if _marker_stopped(done.echo, root):
                 # the atoms have no radius to write (an atom style without one): the deck's own
                 # refusal where it has one (its pair style, say), else this
@@ -648,8 +649,12 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
-            raise DeckError(where, line or None, "; ".join([_stopped(engine, message, commands), *made[2:]]
-                                                            if made else [_stopped(engine, message, commands)]))
+            # where the runs were not made (made[1]: the commands of a pass that made them and stopped
+            # too), what the pass read after a run decided where it went, and its stop is its own
+            unmade = found if made is None or made[1] is None else []
+            said = made[2:] if made else (["--run-budget 0 makes no run for real (a budget in seconds lets the "
+                                           "engine make them)"] if unmade else [])
+            raise DeckError(where, line or None, "; ".join([_stopped(engine, message, commands, unmade), *said]))
         if made is None:
             read = deck_commands(commands, scratch)
             try:
@@ -743,10 +748,15 @@ _RUN_STATE = re.compile(r"Divide by 0|Modulo 0|Sqrt of negative|Log of zero|Powe
 _INSERTING = re.compile(r"fix\s+\S+\s+\S+\s+(pour|deposit|insert/\S+)\b")
 
 
-def _stopped(engine: str, message: str, commands: list) -> str:
+def _stopped(engine: str, message: str, commands: list, read: list = ()) -> str:
     """The reason a deck is refused where its engine stopped in the audit's pass, said truly: the
     engine's own stop, the audit's confinement, or the pass's runs (skipped by LAMMPS, cut to one
     step by LIGGGHTS), after which what the engine holds is not what the deck's own runs make.
+    ``read``: the commands after a run that read before the stop a value the runs change
+    (:func:`_run_dependent`), where the runs were not made for real: the branches the pass took
+    from the first of them on are its own, not the deck's, so its stop says nothing of the deck's
+    (field round 13: a loop of pours until a count, exhausted in the pass alone, stopped it on a
+    loop variable LAMMPS run by hand has defined; "LAMMPS stops here" said it was the deck's).
 
     Examples
     --------
@@ -756,19 +766,30 @@ def _stopped(engine: str, message: str, commands: list) -> str:
     >>> print(_stopped("LAMMPS", "Variable m: Divide by 0 in variable formula",
     ...                [Executed((None, 3), "fix p all pour 10 1 5 region r"), Executed((None, 4), "run 10", 0)]))
     LAMMPS stopped here in the audit's pass, in which the runs before are skipped, so it holds none of the atoms the inserting fixes make in them (fix p), nor anything else the runs change: Variable m: Divide by 0 in variable formula; the deck run by hand may not stop here, but what it reads here depends on its runs, which the audit does not make: not audited
+    >>> print(_stopped("LAMMPS", "Invalid variable reference v_c in variable formula",
+    ...                [Executed((None, 4), "run 10", 0), Executed((None, 5), 'if "$(count(all)) > 9" then "jump SELF d"'),
+    ...                 Executed((None, 8), "set type 1 diameter $(v_c)")],
+    ...                [((None, 5), 'if "$(count(all)) > 9" then "jump SELF d"')]))
+    LAMMPS stopped here in the audit's pass, in which the runs before are skipped, so it holds not what they make of the atoms, the step and the values computed from them, and line 5 (if "$(count(all)) > 9" then "jump SELF d") read such a value before this, which decided the branches and values from there on: Invalid variable reference v_c in variable formula; the deck run by hand may not stop here, but what it reads here depends on its runs, which the audit does not make: not audited
     """
     if any(cause in message for cause in _CONFINED):
         return (f"{engine}, run by the audit where it may write only in its copy of the deck's folder and a stand-in "
                 f"of the folders outside it, stopped here: {message}; the deck run by hand may not stop here: "
                 "not audited")
     runs = [k for k, cmd in enumerate(commands) if cmd.stage is not None]
-    if not runs or not _RUN_STATE.search(message):
+    # the command it stopped on, where it read such a value itself, is "here" already
+    before = [(loc, text) for loc, text in read if not commands or loc != commands[-1].loc]
+    if not runs or not (before or _RUN_STATE.search(message)):
         return f"{engine} stops here: {message}"
     inserting = sorted({m.group(0).split()[1] for cmd in commands[:runs[-1]] if (m := _INSERTING.match(cmd.text))})
     cut = "skipped" if engine == "LAMMPS" else "cut to one step"
     held = (f"none of the atoms the inserting fixes make in them ({', '.join(f'fix {i}' for i in inserting)}), nor "
             "anything else the runs change" if inserting else
             "not what they make of the atoms, the step and the values computed from them")
+    if before:
+        loc, text = before[0]
+        held += (f", and {place(loc)} ({' '.join(text.split())}) read such a value before this, which decided the "
+                 "branches and values from there on")
     return (f"{engine} stopped here in the audit's pass, in which the runs before are {cut}, so it holds {held}: "
             f"{message}; the deck run by hand may not stop here, but what it reads here depends on its runs, which "
             "the audit does not make: not audited")
@@ -809,7 +830,10 @@ def _run_causes(found: list, picked: tuple | None, deck: Deck | None) -> list:
     one only a pour not yet finished gives (``deck``'s stages' ``pending``), in the deck's order."""
     causes = list(found) + ([picked] if picked and picked not in found else [])
     for runs, snap, _ in deck.stages if deck is not None else ():
-        if snap.pending:
+        # a type whose pours were all unfixed before the set keeps an empty entry: no size in doubt
+        # (field round 13, a26: pour, unfix, set type 1 density: every atom the pour made is
+        # resized, whether or not it had finished, and the runs were made for a false cause)
+        if any(snap.pending.values()):
             causes.append((runs[0][0], f"{runs[0][1]}, whose sizes include a pour's own only if it has not "
                                        "finished"))
     return sorted(causes, key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
@@ -834,7 +858,8 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
     """The engine's pass through the scratch copy with the deck's runs made for real, where the
     pass with them skipped (``commands``) met the ``causes`` (:func:`_run_causes`): (EngineRun,
     commands, the note that says so), or (None, None, the note that says why it was not made: the
-    budget ran out, the runs are longer than :data:`MAX_RUN_STEPS`, the engine stopped); None where
+    budget ran out, the runs are longer than :data:`MAX_RUN_STEPS`), or (None, the commands it ran,
+    the note) where the engine making them stopped too; None where
     ``budget`` is 0 or the engine cannot make them (``MAKES_RUNS`` of its ``deck_run``). ``looped``: the pass with
     runs skipped was ended in a loop (a settle loop waiting for a value only runs change), so its
     runs tell nothing of the deck's steps, and the wall time alone bounds the runs made.
@@ -877,7 +902,7 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
                         "runs are the deck's own, its outputs aside, so the deck does not run in this engine: "
                         "not audited")
     if done.error:
-        return None, None, (f"{what}; {deck_run.ENGINE} making its runs for real stopped: "
+        return None, made, (f"{what}; {deck_run.ENGINE} making its runs for real stopped: "
                             f"{' '.join(done.error.split())[:300]}: its runs {cut}, as said")
     return done, made, (
         f"{what}: {deck_run.ENGINE} made the deck's {runs} runs ({steps if steps is not None else 'their'} steps) for real, in {done.wall:.2g} s of the "
@@ -1058,7 +1083,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
         {"code", "stages", "pairs", "walls", "unknown_lines", "ignored"}. ``stages``: one entry
         for each change of the contact settings between runs ({"runs": [{"file", "line", "text"}],
         "pairs", "walls"}, and "why" where it has neither; a deck without a run has one stage, its
-        settings at its end); ``pairs``
+        settings at its end; a run of a line the engine ran more than once, in a loop, has "pass":
+        the how-manieth time it ran it); ``pairs``
         and ``walls`` are the last stage's. A pair row holds, for a type pair, the eps the deck
         really gives at ``speeds`` (relative accuracy 1e-10), beside the e typed (or None) and the
         line that would give that e exactly. Where the spheres' centres would meet
@@ -1117,6 +1143,9 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                                                   "happens, so there is no eps to audit; an integrator (fix nve/sphere) "
                                                   "makes one")
     audited, unmapped = [], []
+    # a loop runs one line many times: each run says which time it is, where there are several
+    times = {loc: n for loc, n in _counted(loc for runs, _ in stages for loc, _ in runs).items() if n > 1}
+    met: dict = {}
     for runs, snap in stages:
         try:
             pairs, walls, not_audited, not_mapped = _audit_stage(snap, speeds, bool(runs))
@@ -1130,8 +1159,12 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             # settings read after a run from values the runs change: marked in each row, not only on stderr
             for row in pairs + walls:
                 row["may_differ"] = True
-        audited.append({"runs": [{"file": f, "line": n, "text": t} for (f, n), t in runs], "pairs": pairs,
-                        "walls": walls})
+        said = []
+        for (f, n), t in runs:
+            said.append({"file": f, "line": n, "text": t})
+            if (f, n) in times:
+                met[(f, n)] = said[-1]["pass"] = met.get((f, n), 0) + 1
+        audited.append({"runs": said, "pairs": pairs, "walls": walls})
         if not pairs and not walls:
             audited[-1]["why"] = _no_rows(snap)
     if unmapped and not any(stage["pairs"] or stage["walls"] for stage in audited):
@@ -1139,6 +1172,14 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
             "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck) + _environment_notes(deck)}
+
+
+def _counted(items) -> dict:
+    """{item: how many times it comes}, in the order each first comes."""
+    counts: dict = {}
+    for item in items:
+        counts[item] = counts.get(item, 0) + 1
+    return counts
 
 
 def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list, list]:
@@ -1500,18 +1541,24 @@ def _empty_notes(deck: Deck) -> list:
     finished gives."""
     stages = [snap for _, snap, _ in deck.stages] or [deck]
     empty = sorted({t for d in stages for t in range(1, d.ntypes + 1) if _empty(d, t)})
-    # a fix deposit (or a pour yet to run) makes atoms of its type as the runs go
-    inserted = sorted(t for t in empty if any(t in made for d in stages for made in d.inserts if made))
+    # the inserting fixes defined at a run where their type has no atom make its atoms as that run
+    # goes; one defined only at a later run (field round 13, a06: a loop pours type 1, then type 2)
+    # has made none there, and none of its sizes is missing
+    inserted = {t: _inserters([d for d in stages if _empty(d, t)], t) for t in empty}
+    later = {t: _inserters([d for d in stages if not _empty(d, t)], t) for t in empty}
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
     pending = {(t, (fix, where, *size)) for d in stages for t, sizes in d.pending.items()
                for size, fixes in sizes.items() for fix, where in fixes}
     return [f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
             f"whatever set gave the type's atoms before: audited at that size{_beside_deposited(stages, t)}"
-            for t, fix in sorted(deposited.items())] + [f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} (walls only, or unused): its "
-            "sphere pairs cannot happen there and are not audited" for t in empty if t not in inserted] + \
-        [f"type {t} is inserted by a fix (deposit) as the runs go, at sizes the audit does not read: its pairs "
-         "are not audited" for t in inserted] + \
+            for t, fix in sorted(deposited.items())] + [
+            f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} ("
+            + (f"those before {later[t]} makes its atoms" if later[t] else "walls only, or unused")
+            + "): its sphere pairs cannot happen there and are not audited" for t in empty if not inserted[t]] + \
+        [f"type {t} is inserted by {inserted[t]} as the runs go, at sizes the audit does not read: its pairs "
+         f"{'at the runs where it has no atom yet ' if len(stages) > 1 else ''}are not audited"
+         for t in empty if inserted[t]] + \
         [f"type {t} holds {n} sizes: audited at {k} of them, spread evenly in radius with the two smallest and "
          "two largest radii and the two lightest and two densest among them; its pairs' eps range is over these, "
          "and the sizes left out may reach beyond it" for t, (n, k) in sorted(sampled.items())] + \
@@ -1519,6 +1566,18 @@ def _empty_notes(deck: Deck) -> list:
          f"when the set at {where} resized those it had made, which the audit (its runs skipped) does not know: the "
          "rows at that size hold only then"
          for t, (fix, where, r, rho) in sorted(pending)]
+
+
+def _inserters(stages: list, t: int) -> str:
+    """The inserting fixes the stages name for type t, as "fix ID (style)" joined by "or" ("": none).
+
+    Examples
+    --------
+    >>> _inserters([Deck(inserters={2: {"ins": "pour"}}), Deck(inserters={2: {"d": "deposit"}})], 2)
+    'fix ins (pour) or fix d (deposit)'
+    """
+    named = {f"fix {fix} ({style})": None for d in stages for fix, style in d.inserters.get(t, {}).items()}
+    return " or ".join(named)
 
 
 def _beside_deposited(stages: list, t: int) -> str:

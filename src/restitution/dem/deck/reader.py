@@ -292,6 +292,13 @@ _RESTORED = ("code", "ntypes", "units", "dimension", "atom_style", "atom_style_l
              "unmapped", "reset", "coeffs", "gran", "cutoff", "hybrid", "substyle", "granular_of", "others",
              "idle", "groups", "empty_groups", "filled_groups", "partial_groups", "labels", "dt", "atoms", "present",
              "present_unknown", "bonds", "special_lj")
+#: What a LIGGGHTS 3.8.0 restart file stores of them (measured after write_restart, clear,
+#: read_restart): the pair style with its normal model (a hooke/stiffness pair style not given again
+#: stops the next run for want of its kn, a fix property/global, which the restart does not hold)
+#: and its coefficients, groups; not the time step (LIGGGHTS' default, 1e-8 in si, after the read),
+#: nor any fix (materials, walls, meshes, templates)
+_RESTORED_LIGGGHTS = tuple(name for name in _RESTORED if name != "dt") + (
+    "model", "limit_force", "absolute_damping", "cohesion")
 
 
 def restart_state(deck: Deck, made: dict, deposited: set) -> tuple:
@@ -319,7 +326,8 @@ def restart_state(deck: Deck, made: dict, deposited: set) -> tuple:
     >>> state["ntypes"], "regions" in state
     (2, False)
     """
-    return ({name: copy.deepcopy(getattr(deck, name)) for name in _RESTORED}, copy.deepcopy(made), set(deposited))
+    kept = _RESTORED_LIGGGHTS if deck.code == "LIGGGHTS" else _RESTORED
+    return ({name: copy.deepcopy(getattr(deck, name)) for name in kept}, copy.deepcopy(made), set(deposited))
 
 
 def _restart_info(info: str) -> dict:
@@ -343,11 +351,12 @@ def _restart_info(info: str) -> dict:
 
 
 def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None, info: str | None) -> dict:
-    """read_restart FILE (LAMMPS): the settings the deck had at its ``write_restart FILE`` that a
-    restart stores (:data:`_RESTORED`), the rest afresh as after clear, checked against what LAMMPS
-    says it holds after the read (``info``: units, atom style, types, pair style, time step, the
-    pairs whose coefficients are set, the groups); the atoms are the engine's at the next run, with
-    those the pours had made before the write.
+    """read_restart FILE (LAMMPS, LIGGGHTS): the settings the deck had at its ``write_restart FILE``
+    that a restart stores (:data:`_RESTORED`, :data:`_RESTORED_LIGGGHTS`), the rest afresh as after
+    clear, checked against what the engine says it holds after the read (``info``: units, atom
+    style, types, pair style, groups; LAMMPS' also the time step and the pairs whose coefficients
+    are set); the atoms are the engine's at the next run, with those the pours had made before the
+    write.
 
     Parameters
     ----------
@@ -362,7 +371,7 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     written : tuple or None
         :func:`restart_state` at the deck's write_restart of that file, None where it wrote none.
     info : str or None
-        LAMMPS' ``info system coeffs groups`` after the read.
+        The engine's ``info system coeffs groups`` (LIGGGHTS: ``info system groups``) after the read.
 
     Returns
     -------
@@ -392,37 +401,39 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     where = place(loc)
     if written is None:
         raise DeckError(where, line, f"read_restart reads {words[1]}, which the deck did not write before (with "
-                                     "write_restart, in the engine's pass): LAMMPS gives no account of the contact "
-                                     "coefficients a restart file holds (write_coeff writes none for the granular "
-                                     "styles, info only whether each pair is set), not audited")
-    if info is None:
-        raise DeckError(where, line, "LAMMPS gave no account of what it holds after the read (the audit's info): "
-                                     "not audited")
+                                     "write_restart, in the engine's pass): neither engine gives an account of the "
+                                     "contact coefficients a restart file holds (LAMMPS' write_coeff writes none for "
+                                     "the granular styles, its info only whether each pair is set), not audited")
     state, made, deposited = written
+    engine = state["code"] or "LAMMPS"
+    if info is None:
+        raise DeckError(where, line, f"{engine} gave no account of what it holds after the read (the audit's info): "
+                                     "not audited")
     if deposited:
         raise DeckError(where, line, f"the restart file holds the atoms fix deposit made of type "
                                      f"{min(deposited)} in the runs before its write, which the engine's pass (its "
                                      "runs skipped) never made: their sizes are not followed, not audited")
     held = _restart_info(info)
     style_words = state["style_line"][1].split() if state["style_line"] else []
-    dt = state["dt"] if state["dt"] is not None else DEFAULT_DT.get(state["units"])
+    dt = state["dt"] if state.get("dt") is not None else DEFAULT_DT.get(state["units"])
     set_before = set(state["coeffs"]) | set(state["others"]) | set(state["idle"])
     checks = [("units", held.get("units"), state["units"]),
               ("atom style", held.get("atom_style"), (state["atom_style"] or "atomic").split()[0]),
               ("number of types", held.get("ntypes"), state["ntypes"]),
               ("pair style", held.get("pair_style"), style_words[1] if len(style_words) > 1 else "none"),
               ("groups", held["groups"], {"all", *state["groups"]})]
-    for what, engine, reader in checks:
-        if engine != reader:
-            raise DeckError(where, line, f"after the read LAMMPS holds {what} {_shown(engine)}, where the deck had "
+    for what, holds, reader in checks:
+        if holds != reader:
+            raise DeckError(where, line, f"after the read {engine} holds {what} {_shown(holds)}, where the deck had "
                                          f"{_shown(reader)} at its write_restart: what the file holds is not "
                                          "followed, not audited")
-    if dt is None or held.get("dt") is None or abs(held["dt"] - dt) > 1e-5 * abs(dt):
+    # LIGGGHTS' restart holds no time step, and its info says none: after the read it has its default
+    if "dt" in state and (dt is None or held.get("dt") is None or abs(held["dt"] - dt) > 1e-5 * abs(dt)):
         raise DeckError(where, line, f"after the read LAMMPS holds time step {held.get('dt')}, where the deck had "
                                      f"{dt} at its write_restart: not audited")
     if held["set"] - set_before:
         pairs = ", ".join(f"{i} {j}" for i, j in sorted(held["set"] - set_before))
-        raise DeckError(where, line, f"after the read LAMMPS holds coefficients for types {pairs}, which the deck "
+        raise DeckError(where, line, f"after the read {engine} holds coefficients for types {pairs}, which the deck "
                                      "had not set at its write_restart: not audited")
     fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
     deck.__dict__.update(fresh.__dict__)
@@ -1138,6 +1149,8 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         # a fix defined again (a loop of 10 000 pours) adds nothing new: kept once
         if made not in deck.inserts:
             deck.inserts.append(made)
+        for t in made or ():
+            deck.inserters.setdefault(t, {})[words[1]] = style
         if words[2] != "all":
             filled = deck.filled_groups.setdefault(words[2], [])
             if (f"fix {words[1]} ({style}) inserts", made) not in filled:

@@ -148,6 +148,9 @@ class Deck:
     # (run locations, the deck as that run sees it, its contact key), one per change of contact settings
     stages: list = field(default_factory=list)
     inserts: list = field(default_factory=list)   # inserting fixes' types (a set, or None where unknown)
+    # type -> {fix ID: style} of the inserting fixes defined so far that name it (a LAMMPS pour or
+    # deposit), as ``inserts``: what a note on a type with no atom yet names
+    inserters: dict = field(default_factory=dict)
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     dt: float | None = None                       # the timestep command's, None where the deck has none
     dt_reset: tuple = ()                          # (loc, text, fix ID) of a fix dt/reset in force, else ()

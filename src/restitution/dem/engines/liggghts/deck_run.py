@@ -16,7 +16,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
-from ...dialect.child import ATOMS, ATOMS_AT_END, EngineRun, engine_environment, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, engine_environment, run_child
 from . import run
 from .run import MPI_NOT_STARTED, MPI_START_RETRIES
 
@@ -53,12 +53,25 @@ def marker(root: Path, real: bool = False):
     <BLANKLINE>
     >>> print(marker(Path("/s"), real=True)(0, "run 10").splitlines()[0])
     run 10
+
+    A read_restart (of a file the deck wrote in its copy) is followed by LIGGGHTS' account of what
+    it holds:
+
+    >>> print(marker(Path("/s")).restart("read_restart f.restart"), end="")
+    read_restart f.restart
+    info system groups out append /s/restart_info
     """
     def text(k: int, run: str) -> str:
         # "pre yes": the set-up of every run of the deck's, not the shortened one LIGGGHTS may take
         # for a run right after another
         made = run if real else "run 1 pre yes post no"
         return f"{made}\nwrite_dump all custom {root / ATOMS} type radius mass {_FORMAT} append yes\n"
+
+    def restart(read: str) -> str:
+        # units, atom style, types, pair style and groups, in LIGGGHTS 3.8.0's words (its info has
+        # no "coeffs" and no time step; the audit reads it back, never the binary file)
+        return f"{read}\ninfo system groups out append {root / RESTART_INFO}\n"
+    text.restart = restart
     return text
 
 
@@ -87,7 +100,8 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
     argv = ["liggghts", "-echo", "screen", "-log", "none", "-nocite", "-in", str(driver)]
     stdbuf = shutil.which("stdbuf")
     for _ in range(1 + MPI_START_RETRIES):
-        for name in (ATOMS, ATOMS_AT_END):
+        # a pass made again (the runs made for real) starts afresh: its reads' accounts are its own
+        for name in (ATOMS, ATOMS_AT_END, RESTART_INFO):
             (root / name).unlink(missing_ok=True)
         done = run_child([stdbuf, "-oL", *argv] if stdbuf else argv, deck.parent, env, root, budget,
                          screen_is_stdout=True, original=original, tag=tag, ceiling=ceiling)
