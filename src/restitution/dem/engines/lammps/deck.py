@@ -558,8 +558,8 @@ def _region_wall(deck: Deck, loc, words: list, unknown: list):
         return None
     (_, contact_of, _, _), = surfaces
     if (moving := region_moves(deck, words[k + 1])) is not None:
-        unknown.append((*loc, text, f"{moving}: its faces move under a sphere during a contact, so the eps the "
-                                    "engine measures depends on when and where a contact falls; the wall's "
+        unknown.append((*loc, text, f"{moving}: its faces may move under a sphere during a contact, so the eps "
+                                    "the engine measures may depend on when and where a contact falls; the wall's "
                                     "contacts are not audited"))
         return None
     # the law reads R_eff where a sphere twice as large, of the same mass, gets another contact
