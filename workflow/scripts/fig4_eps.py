@@ -12,6 +12,7 @@
 # %%
 import numpy as np
 import pandas as pd
+from matplotlib.transforms import ScaledTranslation
 from restitution_workflow.pipeline import TEXT_WIDTH_PT, save_figure, setup_matplotlib, start
 
 start(snakemake)
@@ -41,7 +42,14 @@ def finish(fig, ax, xlabel, loc):
     ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
     ax.set_title(rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
     if loc is None:
-        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.3), ncol=2, frameon=False, borderaxespad=0)
+        # hung below the x label by a fixed distance in points, measured once drawn: at a fixed fraction of the
+        # axes height (-0.3) it touched the label where that runs deeper (subscripts; supplement Fig. S9, r22)
+        fig.set_layout_engine("tight")
+        fig.canvas.draw()
+        label_depth = (ax.get_window_extent().y0 - ax.xaxis.label.get_window_extent().y0) * 72.0 / fig.dpi
+        below = ax.transAxes + ScaledTranslation(0.0, -(label_depth + 4.0) / 72.0, fig.dpi_scale_trans)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, 0.0), bbox_transform=below, ncol=2, frameon=False,
+                  borderaxespad=0)
     else:
         ax.legend(loc=loc, frameon=False)
     fig.set_layout_engine("tight")

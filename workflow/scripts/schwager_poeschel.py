@@ -132,7 +132,7 @@ def val(x, err):
 
 
 rows = [r"\begin{tabular}{rrlllll}", r"\toprule",
-        r"$i$ & power of $\Om$ & Pad\'e form & S.\,\&\,P., quoted & re-derived $h_i$ & this project & fit to the integrator \\",
+        r"$i$ & power of $\Om$ & Pad\'e form & S.\,\&\,P., quoted & re-derived $h_i$ & this paper & fit to the integrator \\",
         r"\midrule"]
 for k in range(1, KMAX + 1):
     pub = (fixed(pade[k], 6) + ("" if k <= PADE_MATCHED else r"$^\ast$")) if k <= 8 else "---"

@@ -58,16 +58,37 @@ def unbroken(option: str) -> str:
     return " ".join(rf"\mbox{{{esc(w)}}}" if "_" in w else esc(w) for w in option.split(" "))
 
 
-lines = [r"\begin{tabular}{l>{\raggedright\arraybackslash}p{5.5cm}" + "r" * len(es) + "}",
+# The end rule each option's formula was derived for, beside the one the option runs (the table's rule column,
+# and the count of options that miss e under their own rule). The dashpot's formula (LAMMPS' coeff_restitution,
+# LIGGGHTS, Yade's ViscElMat) and Tsuji's fit are the overlap rule's; Kratos' linear law bisects the force
+# rule's eps (the engines' contact modules say where each comes from). Thornton's fit (Yade's Hertz-Mindlin,
+# Kratos' Hertz law) is taken as made for the force rule because Yade's source says so; their paper is not
+# checked on this, so the column marks those two rows (THORNTON_ROWS) and the caption says what the mark means
+DERIVED_FOR = {"Yade Hertz-Mindlin en": "force", "Kratos DEM_D_Hertz_viscous_Coulomb": "force",
+               "Kratos DEM_D_Linear_viscous_Coulomb": "force"}
+THORNTON_ROWS = ("Yade Hertz-Mindlin en", "Kratos DEM_D_Hertz_viscous_Coulomb")
+RULE_LETTER = {"overlap": "o", "force": "f"}
+
+
+def rule_cell(code: str) -> str:
+    """'derived for / runs' as two letters (o: zero overlap, f: zero force); * where the derived-for rule
+    rests on Yade's source, not on Thornton et al.'s paper."""
+    mark = r"$^\ast$" if code in THORNTON_ROWS else ""
+    return rf"{RULE_LETTER[DERIVED_FOR.get(code, 'overlap')]}{mark}\,/\,{RULE_LETTER[TYPED_E_CODES[code](0.5).end]}"
+
+
+lines = [r"\begin{tabular}{l>{\raggedright\arraybackslash}p{5.5cm}c" + "r" * len(es) + "}",
          r"\toprule",
-         r"code & option & " + " & ".join(rf"$e = {fixed(e, 2)}$" for e in es) + r" \\", r"\midrule"]
+         # "e =" once: the rule column's width is taken from the repeated heads, so that no option wraps
+         r"code & option & rule & " + " & ".join((r"$e = {}$" if i == 0 else "${}$").format(fixed(e, 2))
+                                                 for i, e in enumerate(es)) + r" \\", r"\midrule"]
 # Kratos' options are class names of its source: the article names the model they select (the class names are
 # in the supplement's DEM section), as it does for the other codes' options
 SHOWN = {"Kratos DEM_D_Hertz_viscous_Coulomb": "Hertz, viscous damping",
          "Kratos DEM_D_Linear_viscous_Coulomb": "linear, viscous damping"}
 for r in rows:
     option = SHOWN.get(r["code"], r["code"].split(" ", 1)[1])
-    cells = [esc(release_name(r["engine"]).split(" ", 1)[0]), unbroken(option)] + [
+    cells = [esc(release_name(r["engine"]).split(" ", 1)[0]), unbroken(option), rule_cell(r["code"])] + [
         fixed(r[f"eps_at_e_{e:g}"], 4) for e in es]
     lines.append(" & ".join(cells) + r" \\")
 lines += [r"\bottomrule", r"\end{tabular}"]
@@ -97,14 +118,9 @@ grid = [min(es) + i * (max(es) - min(es)) / (n_grid - 1) for i in range(n_grid)]
 ratio_grid = {e: calibrate(*TSUJI, D1=1.0, eps=e, g=1.0, end="overlap").D2 / tsuji_a(e) for e in grid}
 e_low, e_high = min(ratio_grid, key=ratio_grid.get), max(ratio_grid, key=ratio_grid.get)
 sqrt2_eps = {end: Contact(*TSUJI, 1.0, math.sqrt(2.0) * tsuji_a(MID), end).eps(1.0) for end in ("force", "overlap")}
-# The options that do not return e under the rule their formula was derived for. The dashpot's formula
-# (LAMMPS' coeff_restitution, LIGGGHTS, Yade's ViscElMat) and Tsuji's fit are the overlap rule's; Thornton's fit
-# (Yade's Hertz-Mindlin, Kratos' Hertz law) was made for the force rule, and Kratos' linear law bisects the
-# force rule's eps (the engines' contact modules say where each comes from). A row runs "its" rule when its end
-# rule is that one; it misses e when it is off by more than the table's accuracy (1e-10) can explain: MISS is
-# far above that and far below the smallest miss (Kratos' bisection, about 1e-5)
-DERIVED_FOR = {"Yade Hertz-Mindlin en": "force", "Kratos DEM_D_Hertz_viscous_Coulomb": "force",
-               "Kratos DEM_D_Linear_viscous_Coulomb": "force"}
+# A row runs "its" rule when its end rule is the one its formula was derived for (DERIVED_FOR, above, the
+# table's rule column); it misses e when it is off by more than the table's accuracy (1e-10) can explain: MISS
+# is far above that and far below the smallest miss (Kratos' bisection, about 1e-5)
 MISS = 1e-8
 own_rule = [code for code in TYPED_E_CODES if TYPED_E_CODES[code](MID).end == DERIVED_FOR.get(code, "overlap")]
 missing = [code for code in own_rule if any(abs(r[code] / r["e"] - 1.0) > MISS for r in table)]
@@ -115,17 +131,25 @@ runs = pd.read_csv(snakemake.input.runs)
 runs["engine_name"] = runs["engine"].str.split(" ").str[0]
 finest = (runs[f"eps_dt{TYPED_E_ENGINE_REFINEMENTS[-1]}"] / runs["eps_table"] - 1.0).abs().groupby(runs["engine_name"]).max()
 extrapolated = runs["relative_deviation"].abs().groupby(runs["engine_name"]).max()
+# Where the change between successive step sizes does not shrink, two error terms do not describe the runs: with
+# three step sizes the extrapolation fits them exactly and cannot show it, so the caption counts these rows
+steps = [runs[f"eps_dt{k}"] for k in TYPED_E_ENGINE_REFINEMENTS]
+not_shrinking = int(sum(((b - c).abs() >= (a - b).abs()) for a, b, c in zip(steps, steps[1:], steps[2:])).astype(bool).sum())
 macros = {
     "TypedEMid": fixed(MID, 1),
     "TypedEOwnRuleRows": str(len(own_rule)), "TypedEOwnRuleMissing": str(len(missing)),
     # Thornton, Cummins and Cleary's coefficients as the library holds them (the ones Yade and Kratos use),
     # printed as they stand, so that a reader can recompute the Hertz-Mindlin rows without the engines
     "TypedEThorntonTerms": str(len(THORNTON_H)),
-    "TypedEThorntonH": ", ".join(f"${h!r}$" for h in THORNTON_H),
+    # set as the rows of a display, five to a row: in running text the list overran the line (supplement)
+    "TypedEThorntonH": r" \\ ".join(
+        rf"t_{{{i + 1}}}, \dots, t_{{{min(i + 5, len(THORNTON_H))}}} &= "
+        + r",\ ".join(f"{h!r}" for h in THORNTON_H[i:i + 5]) for i in range(0, len(THORNTON_H), 5)),
     "TypedERunSteps": str(len(TYPED_E_ENGINE_REFINEMENTS)),
     # "within": bounds, rounded up like every bound the article prints (1.0145e-4 is not within 1.0e-4)
     **{f"TypedEFinest{name}": sci_up(finest[name], 2) for name in ("LAMMPS", "LIGGGHTS", "Yade", "Kratos")},
     "TypedEExtrapolatedMax": sci_up(extrapolated.max(), 2),    # "within": a bound, rounded up
+    "TypedERunsNotShrinking": str(not_shrinking), "TypedERunsCount": str(len(runs)),
     # ranges ("... to ... times LAMMPS'"): their ends rounded outward
     "TypedETsujiRatioMin": fixed_down(ratio_grid[e_low], 3), "TypedETsujiRatioMax": fixed_up(ratio_grid[e_high], 3),
     "TypedETsujiRatioMinAt": fixed(e_low, 3), "TypedETsujiRatioMaxAt": fixed(e_high, 3),

@@ -22,6 +22,7 @@ from restitution_workflow.pipeline import (TEXT_WIDTH_PT, read_json, save_figure
 
 from restitution.core import asymptotics as asy
 from restitution.core.collision import OMEGA_RANGE, collide
+from restitution.core.problem import Problem
 from restitution.core.dashpot import dashpot_collision
 from restitution.core.uniform import DEGREE_STEP, OVERLAP_P, SELECTION_TARGET, UniformForm
 from restitution.fast.uniform_build import FIT_RTOL, LAW_BELOW
@@ -199,6 +200,16 @@ end_power = 1 + (g_ + 1) / (a_ - g_) if a_ > g_ else None
 end_coef = (a_ - g_) / ((g_ + 1) * (a_ + 1))
 if abs(float(end_coef) - float(E.E)) > 1e-12 * abs(float(E.E)):
     raise SystemExit(f"end coefficient: exact {end_coef} but the library gives {E.E}")
+# Eq. (end-term) at these exponents: the difference of the two rules over its leading term beta mu^q, at three
+# Omega of the elastic side. It tends to 1 like 1 + O(mu); the text says how far from 1 it still is there (for
+# Kim's exponents, q = 5, the O(mu) correction is not small at these Omega)
+END_RATIO_OMEGAS = (10.0, 30.0, 100.0)
+end_ratio = []
+for _om in END_RATIO_OMEGAS:
+    _eps_f = collide(Problem.of(ex["alpha"], ex["gamma"], "force"), _om, rtol=1e-12).eps
+    _eps_o = collide(Problem.of(ex["alpha"], ex["gamma"], "overlap"), _om, rtol=1e-12).eps
+    end_ratio.append((_eps_f - _eps_o) / (float(E.E) * float(E.delta(_om)) ** float(E.end_power)))
+print("(eps_force - eps_overlap) / (beta mu^q):", dict(zip(END_RATIO_OMEGAS, end_ratio)))
 end_clause = (r"so for these exponents the difference is smaller than the omitted $O(\mu^3)$: it is the leading effect of "
               r"ending at zero force, not a term of an expansion of $\varepsilon_{\mathrm{force}}$ alone" if end_power > 3 else
               r"so for these exponents it is the first correction after $C_2$")
@@ -364,6 +375,9 @@ macros = {
     "CFElasticCTwo": sci(E.C2, 6),
     "CFEndCoef": sci(E.E, 6),
     "CFEndCoefExact": frac(end_coef),
+    "CFEndRatioOmegaA": sci(END_RATIO_OMEGAS[0], 2), "CFEndRatioA": f"{end_ratio[0]:.2f}",
+    "CFEndRatioOmegaB": sci(END_RATIO_OMEGAS[1], 2), "CFEndRatioB": f"{end_ratio[1]:.2f}",
+    "CFEndRatioOmegaC": sci(END_RATIO_OMEGAS[2], 2), "CFEndRatioC": f"{end_ratio[2]:.2f}",
     # the range of Omega over which the form's coefficients were fitted and tested
     "CFFitOmegaMin": sci(main["omega_range"][0], 1), "CFFitOmegaMax": sci(main["omega_range"][1], 1),
     "CFEndPower": frac(end_power) if end_power is not None else "none",
@@ -406,7 +420,7 @@ overlap_names = [n for n in p.variants if overlap_forms[n]["available"]]
 n_overlap = max((len(overlap_forms[n]["a"]) for n in overlap_names), default=0)
 # every number to the twelve digits the printed-digit check assumes (sigma and r too: sigma may be nu itself)
 overlap_coef_rows = [" & ".join([label] + [sci(overlap_forms[n][key], 12) for n in overlap_names]) + r" \\"
-                     for label, key in ((r"$\bar b$", "b"), (r"$\Theta$", "K"), (r"$\bar\sigma$", "sigma"), (r"$\bar Q$", "r"))]
+                     for label, key in ((r"$\bar b$", "b"), (r"$\Theta$", "K"), (r"$\bar\sigma$", "sigma"), (r"$\bar\varrho$", "r"))]
 overlap_coef_rows.append(" & ".join([r"$\bar s_1$"] + [str(overlap_forms[n]["m1"]) for n in overlap_names]) + r" \\")
 overlap_coef_rows += [" & ".join([rf"$\bar a_{{{j}}}$"] + [sci(overlap_forms[n]["a"][j], 12) if j < len(overlap_forms[n]["a"])
                                                      else "" for n in overlap_names]) + r" \\"
@@ -490,12 +504,13 @@ $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P}
 that of \ArtEq{{eq:uniform}}):
 \begin{{equation}}
 \frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Theta \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
-\exp\!\Big[\exp(-\bar Q/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
+\exp\!\Big[\exp(-\bar\varrho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
 with $\bar b = (C_o C_1)^{{1/(\kappa - \nu)}}$ and $\Theta = \bar b^{{\kappa}}/C_o$, so that
 $\varepsilon \to C_o\,\Omega^{{\kappa}}$ and $1 - \varepsilon \to C_1 \Omega^{{-\nu}}$ exactly, and $\varepsilon > 0$
-for any coefficients. The envelope $\exp(-\bar Q/\bar z)$ vanishes like the true correction; the shape $(\bar\sigma, \bar Q, \bar s_1)$ and the
+for any coefficients. The envelope $\exp(-\bar\varrho/\bar z)$ has the form of the heuristic correction $\exp(-Q/\Omega)$, but its rate
+$\bar\varrho$ is a fitted shape constant, not the heuristic's $Q$; the shape $(\bar\sigma, \bar\varrho, \bar s_1)$ and the
 degree are chosen as for the force rule's form, the coefficients fitted with a small penalty on their size (without
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = {sci(LAW_BELOW, 1)}$ each integration of the creeping return takes about a second, and there the
