@@ -67,3 +67,21 @@ def test_the_help_states_the_ceiling_the_library_has(monkeypatch):
         main(["deck", "--help"])
     text = " ".join(out.getvalue().split())
     assert "may take 7 times it in all" in text, text
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_dt_reset_unfixed_after_a_run_still_names_the_later_runs_step(tmp_path):
+    """Field round 14, r13: after fix dt/reset and a run, an unfix leaves LAMMPS' step where the fix
+    last set it (stage 2 ran at 1e-4 where the deck's timestep is 1e-5); the later stage was stated at
+    the timestep command's dt with nothing said. A timestep command makes the step known again."""
+    status, out, err = _audit(tmp_path, "fix dt all dt/reset 1 NULL 1e-5 1e-4 units box\nrun 10\nunfix dt\n"
+                                        "pair_coeff 1 1 hertz 2e6 300 damping mass_velocity tangential "
+                                        "linear_nohistory 1 0.3", dt=4e-4)
+    assert status == 0, err
+    last = json.loads(out)["stages"][-1]["pairs"]
+    assert last and all(r.get("dt_reset") == "line 14 fix dt dt/reset" for r in last)
+    status, out, err = _audit(tmp_path, "fix dt all dt/reset 1 NULL 1e-5 1e-4 units box\nrun 10\nunfix dt\n"
+                                        "timestep 4e-4", dt=4e-4)
+    assert status == 0, err
+    assert all("dt_reset" not in r for r in json.loads(out)["stages"][-1]["pairs"])

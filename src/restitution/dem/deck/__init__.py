@@ -1605,6 +1605,7 @@ def _dt_reset_notes(deck: Deck) -> list:
     audit's steps per contact (and the eps the integrator gives at the deck's step) are stated at
     the deck's own timestep."""
     seen = dict.fromkeys(snap.dt_reset for _, snap, _ in deck.stages if snap.dt_reset)
-    return [f"{place(loc)} fix {fix} dt/reset changes the time step during the runs ({text}): the steps per contact "
-            "and the eps at the deck's time step stated here are at its timestep command's dt (or LAMMPS' default), "
-            "not at the steps dt/reset takes; eps at dt -> 0 does not depend on it" for loc, text, fix in seen]
+    return [f"{place(loc)} fix {fix} dt/reset changes the time step during the runs ({text}), and an unfix leaves it "
+            "where the fix last set it: the steps per contact and the eps at the deck's time step stated here are at "
+            "its timestep command's dt (or LAMMPS' default), not at the steps dt/reset takes; eps at dt -> 0 does not "
+            "depend on it" for loc, text, fix in seen]

@@ -591,6 +591,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.bonds = (loc, line)
     elif cmd == "timestep" and len(words) >= 2:
         deck.dt = number(words[1], where, line)
+        deck.dt_reset = ()           # a step known again, whatever a fix dt/reset left
     elif cmd == "region" and len(words) >= 3:
         # read back by a region wall (its surfaces' curvature), which a run may see
         if words[2] == "delete":
@@ -1140,7 +1141,7 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         return
     if style == "dt/reset":
         # the time step changes during the runs: the audit's steps per contact are at the deck's
-        deck.dt_reset = (loc, line, words[1])
+        deck.dt_reset, deck.dt_reset_runs = (loc, line, words[1]), _runs_recorded(deck)
         return
     if style in _INSERTING_FIXES:
         deck.inserting = True
@@ -1173,6 +1174,11 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
                                          f"{words[2]}), which the eps printed do not include"))
 
 
+def _runs_recorded(deck: Deck) -> int:
+    """How many runs the deck's stages hold so far."""
+    return sum(len(stage[0]) for stage in deck.stages)
+
+
 def _unfix(deck: Deck, fix_id: str) -> None:
     """The fix ``fix_id`` gone (unfixed, or defined again): no longer beside the contact, moving
     atoms or walls, nor a wall a sphere meets."""
@@ -1180,7 +1186,9 @@ def _unfix(deck: Deck, fix_id: str) -> None:
     deck.movers.pop(fix_id, None)
     deck.shaken.pop(fix_id, None)
     deck.pours = {key: made for key, made in deck.pours.items() if key[0] != fix_id}
-    if deck.dt_reset and deck.dt_reset[2] == fix_id:
+    # a fix dt/reset unfixed after a run leaves the time step where it last set it, not at the
+    # timestep command's: deck.dt_reset stays until a timestep command (field round 14, r13)
+    if deck.dt_reset and deck.dt_reset[2] == fix_id and _runs_recorded(deck) == deck.dt_reset_runs:
         deck.dt_reset = ()
     deck.walls = [w for w in deck.walls if w[1][1] != fix_id]
 

@@ -154,6 +154,7 @@ class Deck:
     labels: dict = field(default_factory=dict)    # LAMMPS type label -> atom type (labelmap atom, data files)
     dt: float | None = None                       # the timestep command's, None where the deck has none
     dt_reset: tuple = ()                          # (loc, text, fix ID) of a fix dt/reset in force, else ()
+    dt_reset_runs: int = 0                        # the runs recorded when that fix was defined
     regions: dict = field(default_factory=dict)   # region ID -> its words as the engine ran them
     lattice: list = field(default_factory=list)   # the words of the last lattice command ([]: none)
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
