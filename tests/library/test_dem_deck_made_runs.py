@@ -60,6 +60,9 @@ DECKS = {
     "field13/decks/a27_loop_pour_until_count": (HOOKE, "stopped"),
     "field13/decks/a30_pe_energy_threshold_loop": (HOOKE, "stopped"),
     "field13/decks/a33_step_loop_until": (HOOKE + "\n" + HOOKE.replace("* *", "1 2").replace("3000", "2500"), "stopped"),
+    # field round 14 (r10): an if on a fix ave/time's value after the run; the runs made stopped on the
+    # audit's stand-in for the fix ("Mismatched fix in variable formula"): it now runs, its file dropped
+    "field14/decks/r10_ave_time_value_read": (HOOKE, "may_differ"),
     "field10/decks/f04_pour_done_then_set": ("pair_coeff * * hooke 1000 0.02 damping velocity tangential "
                                              "linear_nohistory 0 0", "if_poured"),
 }
