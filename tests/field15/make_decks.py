@@ -332,6 +332,11 @@ deck("d01_2d_density_disc", "# dimension 2, set density/disc (mass = rho pi r^2)
 deck("n06_fix_evaporate_type2", "# fix evaporate removes the type-2 sphere in run 1; after it only type 1 (named?)\n"
      + BASE + TWO + "group g2 type 2\nregion all block EDGE EDGE EDGE EDGE EDGE EDGE units box\nfix ev g2 evaporate 10 5 all 4767\nrun 100\nunfix ev\nrun 100\n")
 
+deck("n07_atom_swap_types", "# fix atom/swap swaps the types of type-1 and type-2 spheres in run 1 (sizes stay with the atoms); unfix; run 2\n"
+     + BASE + TWO + "fix sw all atom/swap 10 1 4767 3000.0 types 1 2\nrun 100\nunfix sw\nrun 100\n")
+deck("n08_atom_swap_count_read", "# n07 with a count read after the unfix (the runs made for real)\n"
+     + BASE + TWO + "fix sw all atom/swap 10 1 4767 3000.0 types 1 2\nrun 100\nunfix sw\n" + COUNT + "run 100\n")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]

@@ -116,20 +116,24 @@ def build():
     lam("n04b_fix_set_density_count_read", [PE("n04b_fix_set_density_count_read", 2, 2, 2), WE("n04b_fix_set_density_count_read", 2, 2)])
     lam("d01_2d_density_disc", [PE("d01_2d_density_disc", 1, 1, 2, tc=0.01)], dimension=2)
     lig = lambda n, lines, checks, **kw: S.__setitem__(n, dict({"engine": "liggghts", "ntypes": 3, "lines": lines, "checks": checks}, **kw))
+    DUMP = {"post": ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 3 diameter 0.004 density 2500"]}
+    DUMW = {"post": ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 2 diameter 0.004 density 2500"]}
     E3B = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.35 0.4 0.35 0.45 0.5 0.4 0.5 0.55"
     CV = "fix m11 all property/global characteristicVelocity scalar 1.0"
     lig("L01_restart_clear_new_e", MAT3 + [E3B] + HERTZ, [LP("L01_restart_clear_new_e", 1, 2, stage=2), LW("L01_restart_clear_new_e", 1, stage=2)])
     lig("L02_restart_pair_style_changed", MAT3 + [E3, CV, "pair_style gran model hooke tangential history", "pair_coeff * *"],
         [LP("L02_restart_pair_style_changed", 1, 2, stage=2),
-         LW("L02_restart_pair_style_changed", 2, wall="fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0", stage=2)])
-    lig("L03_restart_resized_after_read", MAT3 + [E3] + HERTZ, [LP("L03_restart_resized_after_read", 2, 2, stage=2)])
+         LW("L02_restart_pair_style_changed", 2, wall="fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0", stage=2, spec_override=DUMW)])
+    DUMP = {"post": ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 3 diameter 0.004 density 2500"]}
+    DUMW = {"post": ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 2 diameter 0.004 density 2500"]}
+    lig("L03_restart_resized_after_read", MAT3 + [E3] + HERTZ, [LP("L03_restart_resized_after_read", 2, 2, stage=2, spec_override=DUMP)])
     lig("L08_hooke_tangential_damping_off", MAT3 + [E3, CV, "pair_style gran model hooke tangential history tangential_damping off", "pair_coeff * *"],
         [LP("L08_hooke_tangential_damping_off", 1, 2)])
     GABS = ["fix m12 all property/global gamman_abs peratomtypepair 3 0.3 0.2 0.1 0.2 0.25 0.15 0.1 0.15 0.2",
             "fix m13 all property/global gammat_abs peratomtypepair 3 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1"]
     lig("L09_hooke_limitforce_absolute_damping", MAT3 + STIFF3 + GABS + ["pair_style gran model hooke/stiffness tangential history limitForce on absolute_damping on",
                                                                      "pair_coeff * *"],
-        [LP("L09_hooke_limitforce_absolute_damping", 1, 1), LP("L09_hooke_limitforce_absolute_damping", 2, 2)])
+        [LP("L09_hooke_limitforce_absolute_damping", 1, 1), LP("L09_hooke_limitforce_absolute_damping", 2, 2, spec_override=DUMP)])
     lig("L07_hertzstiff_rolling_cdt", MAT3 + STIFF3 + ["fix m10 all property/global coefficientRollingFriction peratomtypepair 3 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1",
                                                      "pair_style gran model hertz/stiffness tangential history rolling_friction cdt", "pair_coeff * *"],
         [LP("L07_hertzstiff_rolling_cdt", 1, 2)])
