@@ -337,6 +337,13 @@ deck("n07_atom_swap_types", "# fix atom/swap swaps the types of type-1 and type-
 deck("n08_atom_swap_count_read", "# n07 with a count read after the unfix (the runs made for real)\n"
      + BASE + TWO + "fix sw all atom/swap 10 1 4767 3000.0 types 1 2\nrun 100\nunfix sw\n" + COUNT + "run 100\n")
 
+deck("n09_atom_swap_semigrand", "# fix atom/swap semi-grand: type-1 spheres may become type 2 (keeping r 2 mm) in run 1; unfix; run 2\n"
+     + BASE + "create_atoms 1 random 6 4767 NULL\ncreate_atoms 2 single 0.01 0.01 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n"
+     "fix sw all atom/swap 10 5 4767 3000.0 semi-grand yes types 1 2 mu 0.0 1.0e10\nrun 100\nunfix sw\nrun 100\n")
+
+deck("n10_neigh_delay10_default_skin", "# neigh_modify delay 10 (LAMMPS' old default) with the default skin 1 mm: at g = 10 the spheres close 1 mm in 10 steps\n"
+     + BASE + TWO + "neigh_modify delay 10 every 1 check yes\nrun 100\n", g=10)
+
 
 def write(name):
     text, g, args, extra = DECKS[name]
