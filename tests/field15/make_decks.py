@@ -344,6 +344,33 @@ deck("n09_atom_swap_semigrand", "# fix atom/swap semi-grand: type-1 spheres may 
 deck("n10_neigh_delay10_default_skin", "# neigh_modify delay 10 (LAMMPS' old default) with the default skin 1 mm: at g = 10 the spheres close 1 mm in 10 steps\n"
      + BASE + TWO + "neigh_modify delay 10 every 1 check yes\nrun 100\n", g=10)
 
+# ---------------------------------------------------------------- the clock after skipped runs, fixes beside the contact
+deck("c01_run_upto_step_read", "# run 1000, then run 1500 upto (500 more steps): the stiffness from $(1000+step) = 2500\n"
+     + BASE + TWO + "run 1000\nrun 1500 upto\npair_coeff * * hooke $(1000+step) 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
+deck("c02_time_after_dt_change", "# dt 1e-5 for 1000 steps, then 2e-5 for 1000: time 0.03; stiffness 1000+1e5*time = 4000\n"
+     + BASE + TWO + "run 1000\ntimestep 2e-5\nrun 1000\ntimestep 1e-5\npair_coeff * * hooke $(1000+1e5*time) 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
+deck("c03_reset_timestep_time_kw", "# reset_timestep 0 time 0.5 after a run: stiffness 1000+2000*time = 2000 (LAMMPS' time after the reset)\n"
+     + BASE + TWO + "run 1000\nreset_timestep 0 time 0.5\npair_coeff * * hooke $(1000+2000*time) 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
+deck("c04_run_every_set", "# run 200 every 100 with a set of type 2's density in between (documented: refused)\n"
+     + BASE + TWO + 'run 200 every 100 "set type 2 density 5000"\nrun 100\n')
+deck("c05_step_in_loop_with_upto", "# a loop of run 300 upto 900 steps, stiffness from step after: 1000+step = 1900\n"
+     + BASE + TWO + "variable i loop 3\nlabel l\nrun $(300*v_i) upto\nnext i\njump SELF l\npair_coeff * * hooke $(1000+step) 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
+deck("f01_temp_rescale", "# fix temp/rescale every step on all (velocities rescaled during a contact)\n"
+     + BASE + TWO + "fix tr all temp/rescale 1 0.0 0.0 0.0 1.0\nrun 100\n")
+deck("f02_planeforce_x", "# fix planeforce 1 0 0: the x component of every force removed (a contact along x has none)\n"
+     + BASE + TWO + "fix pf all planeforce 1 0 0\nrun 100\n")
+deck("f03_momentum_linear", "# fix momentum 1 linear 1 1 1 (zeroes the total momentum each step: relative motion kept)\n"
+     + BASE + TWO + "fix mo all momentum 1 linear 1 1 1\nrun 100\n")
+deck("f04_wall_reflect_at_floor", "# fix wall/reflect zlo at the floor beside the granular floor\n"
+     + BASE.replace("boundary p p f", "boundary p p f") + TWO + "fix wr all wall/reflect zlo EDGE\nrun 100\n")
+deck("f05_move_type2_linear", "# fix move linear 0 0 0 on type 2 (held still) and no integrator on it\n"
+     + BASE.replace("fix integ all nve/sphere", "group g1 type 1\nfix integ g1 nve/sphere") + TWO + "group g2 type 2\nfix mv g2 move linear 0 0 0\nrun 100\n")
+deck("f06_nve_no_sphere", "# fix nve (no rotation) instead of nve/sphere\n"
+     + BASE.replace("fix integ all nve/sphere", "fix integ all nve") + TWO + "run 100\n")
+deck("f07_spring_self", "# fix spring/self 10 on type 1 (a tether)\n" + BASE + TWO + "group g1 type 1\nfix ss g1 spring/self 10.0\nrun 100\n")
+deck("f08_heat_flow_only", "# integrator split: fix nve/sphere on type 1 only; type 2 never moves (no integrator, no fix)\n"
+     + BASE.replace("fix integ all nve/sphere", "group g1 type 1\nfix integ g1 nve/sphere") + TWO + "run 100\n")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]

@@ -85,6 +85,10 @@ deck("L14_hertz_e_from_variable_after_step", "# e of 1 1 from step after a run (
      + head() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "variable e11 equal 0.3+step/10000\n"
      "fix m3 all property/global coefficientRestitution peratomtypepair 3 ${e11} 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\nrun 100\n")
 
+deck("L15_neigh_stale_lists", "# LIGGGHTS with neighbor 1e-5 bin and neigh_modify delay 0 every 200 check no (lists rebuilt every 2 ms)\n"
+     + head().replace("neighbor 0.002 bin\nneigh_modify delay 0", "neighbor 1e-5 bin\nneigh_modify delay 0 every 200 check no")
+     + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN)
+
 
 def write(name):
     text, g, files, data = DECKS[name]
