@@ -115,6 +115,10 @@ def build():
                                            WE("n04_fix_set_density_then_unfix", 2, 2)])
     lam("n04b_fix_set_density_count_read", [PE("n04b_fix_set_density_count_read", 2, 2, 2), WE("n04b_fix_set_density_count_read", 2, 2)])
     lam("d01_2d_density_disc", [PE("d01_2d_density_disc", 1, 1, 2, tc=0.01)], dimension=2)
+    K = "damping mass_velocity tangential linear_nohistory 1 0.3"
+    lam("c01_run_upto_step_read", [PE("c01_run_upto_step_read", 3, 1, 2, 2)], lines=["pair_style granular", f"pair_coeff * * hooke 2500 3000 {K}"])
+    lam("c02_time_after_dt_change", [PE("c02_time_after_dt_change", 3, 1, 2, 2)], lines=["pair_style granular", f"pair_coeff * * hooke 4000 3000 {K}"])
+    lam("c03_reset_timestep_time_kw", [PE("c03_reset_timestep_time_kw", 2, 1, 2)], lines=["pair_style granular", f"pair_coeff * * hooke 2000 3000 {K}"])
     lig = lambda n, lines, checks, **kw: S.__setitem__(n, dict({"engine": "liggghts", "ntypes": 3, "lines": lines, "checks": checks}, **kw))
     DUMP = {"post": ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 3 diameter 0.004 density 2500"]}
     DUMW = {"post": ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 2 diameter 0.004 density 2500"]}
