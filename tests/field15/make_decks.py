@@ -371,6 +371,59 @@ deck("f07_spring_self", "# fix spring/self 10 on type 1 (a tether)\n" + BASE + T
 deck("f08_heat_flow_only", "# integrator split: fix nve/sphere on type 1 only; type 2 never moves (no integrator, no fix)\n"
      + BASE.replace("fix integ all nve/sphere", "group g1 type 1\nfix integ g1 nve/sphere") + TWO + "run 100\n")
 
+# ---------------------------------------------------------------- region combinations, new contact models
+RW = head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+deck("w13_region_union_plane_block", "# a wall on a union of the z = 0 plane and a block on it (x < 0.015): a floor plus a box\n"
+     + RW + "region pl plane 0 0 0 0 0 1 side in units box\nregion bk block 0 0.005 EDGE EDGE 0 0.03 side out units box\nregion un union 2 pl bk\n"
+     f"fix floor all wall/gran/region granular {HK} region un\n" + TAIL + TWO + "run 100\n")
+deck("w14_region_intersect_two_planes", "# a wall on the intersection of z >= 0 and x <= 0.035 (a floor with a side wall)\n"
+     + RW + "region pl plane 0 0 0 0 0 1 side in units box\nregion px plane 0.035 0 0 -1 0 0 side in units box\nregion it intersect 2 pl px\n"
+     f"fix floor all wall/gran/region granular {HK} region it\n" + TAIL + TWO + "run 100\n")
+deck("w15_region_cone_side_in", "# a cone region (z axis, radius 0.03 at z = 0 to 0.01 at z = 0.05) as the container, with a zplane floor\n"
+     + RW + FLOOR + "region cn cone z 0.02 0.02 0.03 0.01 0 0.05 side in units box\n"
+     f"fix cw all wall/gran/region granular {HK} region cn\n" + TAIL + TWO + "run 100\n")
+deck("w16_region_plane_tilted_only_floor", "# the only floor a plane region tilted 30 degrees (normal 0.5 0 0.866), gravity along -z\n"
+     + RW + "region pl plane 0.02 0.02 0 0.5 0 0.8660254 side in units box\n"
+     f"fix floor all wall/gran/region granular {HK} region pl\n" + TAIL + TWO + "run 100\n")
+deck("p01_mdr_normal_model", "# pair granular normal model mdr (LAMMPS 2025) on 2 2, hooke elsewhere\n"
+     + BASE + TWO + "pair_coeff 2 2 mdr 5e6 0.4 1.9e5 2 0.5 0.5 damping mdr 1 tangential linear_nohistory 1 0.3\nrun 100\n")
+deck("p02_hooke_damping_tsuji", "# hooke with damping tsuji (allowed for hooke?)\n"
+     + head() + f"pair_style granular\npair_coeff * * hooke 2000 0.5 damping tsuji tangential linear_nohistory 1 0.3\n" + GRAV
+     + "fix floor all wall/gran granular hooke 2000 0.5 damping tsuji tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
+deck("p03_hertz_damping_viscoelastic", "# normal hertz (not /material) with damping viscoelastic\n"
+     + head() + f"pair_style granular\npair_coeff * * hertz 1e6 50 damping viscoelastic tangential linear_nohistory 1 0.3\n" + GRAV
+     + "fix floor all wall/gran granular hertz 1e6 50 damping viscoelastic tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
+deck("p04_granhooke_history_limit_damping", "# pair gran/hooke/history with limit_damping and a wall/gran hooke/history\n"
+     + head() + "pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 1 limit_damping\npair_coeff * *\n" + GRAV
+     + "fix floor all wall/gran hooke/history 2000 NULL 3000 NULL 0.3 1 zplane 0 NULL limit_damping\n" + TAIL + TWO + "run 100\n")
+
+RWH = head(bnd="f f f", box="-0.05 0.05 -0.05 0.05 0 0.1") + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV + f"fix floor all wall/gran granular {HM} zplane 0 NULL\n"
+ATC = "create_atoms 1 single 0.0 0.0 0.01\ncreate_atoms 2 single 0.001 0.0 0.03\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n"
+deck("w17_region_cone_equal_radii_hertz", "# a region cone with equal radii (a cylinder of r 7.5 mm, z axis) as a hertz/material wall, spheres inside\n"
+     + RWH + "region cn cone z 0 0 0.0075 0.0075 0 0.1 side in units box\n"
+     f"fix cw all wall/gran/region granular {HM} region cn\n" + TAIL + ATC + "run 100\n")
+deck("w18_region_cylinder_hertz", "# a region cylinder (r 7.5 mm, z axis) as a hertz/material wall, spheres inside\n"
+     + RWH + "region cy cylinder z 0 0 0.0075 0 0.1 side in units box\n"
+     f"fix cw all wall/gran/region granular {HM} region cy\n" + TAIL + ATC + "run 100\n")
+deck("w19_region_cone_tapered_hertz", "# a tapered region cone (r 30 mm at z 0 to 10 mm at z 0.05) as a hertz/material wall\n"
+     + RWH + "region cn cone z 0 0 0.03 0.01 0 0.05 side in units box\n"
+     f"fix cw all wall/gran/region granular {HM} region cn\n" + TAIL + ATC + "run 100\n")
+
+# ---------------------------------------------------------------- LAMMPS restarts written by the deck
+deck("r01_restart_clear_read_no_pair_again", "# write_restart, clear, read_restart: pair granular's coefficients from the restart, no wall given again\n"
+     + BASE + TWO + "run 100\nwrite_restart f15.restart\nclear\nread_restart f15.restart\ncomm_modify vel yes\n" + GRAV + TAIL + "run 100\n")
+deck("r02_restart_then_pair_coeff_11", "# restart read back, then pair_coeff 1 1 changed to hooke 5000 and the floor given again\n"
+     + BASE + TWO + "run 100\nwrite_restart f15.restart\nclear\nread_restart f15.restart\ncomm_modify vel yes\n"
+     "pair_coeff 1 1 hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + FLOOR + TAIL + "run 100\n")
+deck("r03_restart_after_pour_then_set", "# a pour, write_restart, clear, read_restart, set type 1 density 1000: the poured atoms from the restart\n"
+     + head(2) + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "region slab block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix p all pour 5 1 4767548 region slab diam one 0.004 dens 2500 2500\n"
+     "create_atoms 2 single 0.01 0.01 0.01\nset type 2 diameter 0.006 density 2500\nrun 2000\nwrite_restart f15.restart\nclear\nread_restart f15.restart\ncomm_modify vel yes\n"
+     "set type 1 density 1000\n" + GRAV + FLOOR + TAIL + "run 100\n")
+
+deck("r01b_restart_no_pair_again_count_read", "# r01 with a count read after the read_restart (the runs made for real)\n"
+     + BASE + TWO + "run 100\nwrite_restart f15.restart\nclear\nread_restart f15.restart\ncomm_modify vel yes\n" + GRAV + TAIL + COUNT + "run 100\n")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]

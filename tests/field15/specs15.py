@@ -119,6 +119,17 @@ def build():
     lam("c01_run_upto_step_read", [PE("c01_run_upto_step_read", 3, 1, 2, 2)], lines=["pair_style granular", f"pair_coeff * * hooke 2500 3000 {K}"])
     lam("c02_time_after_dt_change", [PE("c02_time_after_dt_change", 3, 1, 2, 2)], lines=["pair_style granular", f"pair_coeff * * hooke 4000 3000 {K}"])
     lam("c03_reset_timestep_time_kw", [PE("c03_reset_timestep_time_kw", 2, 1, 2)], lines=["pair_style granular", f"pair_coeff * * hooke 2000 3000 {K}"])
+    lam("w18_region_cylinder_hertz", [WE("w18_region_cylinder_hertz", 1, 1, wall=f"fix cw all wall/gran/region granular {HM} region cy", wall_id="cw",
+                                         axis="x", z0=0.0055, zw=0.0075, sign=-1, match="inside", z=0.05)],
+        lines=["pair_style granular", f"pair_coeff * * {HM}"], pre=["region cy cylinder z 0 0 0.0075 -1 1 side in units box"])
+    TS = "hooke 2000 0.5 damping tsuji tangential linear_nohistory 1 0.3"
+    lam("p02_hooke_damping_tsuji", [PE("p02_hooke_damping_tsuji", 1, 1, 2), WE("p02_hooke_damping_tsuji", 1, 2, wall=f"fix floor all wall/gran granular {TS} zplane 0 NULL")],
+        lines=["pair_style granular", f"pair_coeff * * {TS}"])
+    HV = "hertz 1e6 50 damping viscoelastic tangential linear_nohistory 1 0.3"
+    lam("p03_hertz_damping_viscoelastic", [PE("p03_hertz_damping_viscoelastic", 1, 1, 2)], lines=["pair_style granular", f"pair_coeff * * {HV}"])
+    lam("w16_region_plane_tilted_only_floor", [WE("w16_region_plane_tilted_only_floor", 1, 1, wall=f"fix floor all wall/gran/region granular {HK} region pl",
+                                                  label="tilted plane met along -z, the plane's normal tilted 30 deg (LAMMPS: the contact along the normal)")],
+        pre=["region pl plane 0 0 0 0 0 1 side in units box"])
     lig = lambda n, lines, checks, **kw: S.__setitem__(n, dict({"engine": "liggghts", "ntypes": 3, "lines": lines, "checks": checks}, **kw))
     DUMP = {"post": ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 3 diameter 0.004 density 2500"]}
     DUMW = {"post": ["create_atoms 1 single 0.1 0.1 0.1 units box", "set atom 2 diameter 0.004 density 2500"]}
