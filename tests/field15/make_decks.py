@@ -424,6 +424,14 @@ deck("r03_restart_after_pour_then_set", "# a pour, write_restart, clear, read_re
 deck("r01b_restart_no_pair_again_count_read", "# r01 with a count read after the read_restart (the runs made for real)\n"
      + BASE + TWO + "run 100\nwrite_restart f15.restart\nclear\nread_restart f15.restart\ncomm_modify vel yes\n" + GRAV + TAIL + COUNT + "run 100\n")
 
+D2B = (BASE.replace("boundary p p f", "dimension 2\nboundary p f p").replace("0 0.04 0 0.04 0 0.1", "0 0.04 0 0.1 -0.001 0.001")
+       .replace("vector 0 0 -1", "vector 0 -1 0").replace("zplane 0 NULL", "yplane 0 NULL")
+       + "create_atoms 1 single 0.02 0.01 0\ncreate_atoms 2 single 0.01 0.01 0\nset type 1 diameter 0.004 density/disc 2500\nset type 2 diameter 0.004 density/disc 2500\nfix e2d all enforce2d\n")
+deck("d02_2d_adapt_diameter_disc", "# 2d, fix adapt atom diameter/disc 0.006 constant (mass from the disc area), reset no, unfix, run\n"
+     + D2B + "variable d equal 0.006\nfix ad all adapt 1 atom diameter/disc v_d reset no\nrun 100\nunfix ad\nrun 100\n")
+deck("d03_2d_adapt_diameter_not_disc", "# 2d, fix adapt atom diameter 0.006 (mass as a sphere's, LAMMPS' rule), reset no, unfix, run\n"
+     + D2B + "variable d equal 0.006\nfix ad all adapt 1 atom diameter v_d reset no\nrun 100\nunfix ad\nrun 100\n")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]
