@@ -432,6 +432,11 @@ deck("d02_2d_adapt_diameter_disc", "# 2d, fix adapt atom diameter/disc 0.006 con
 deck("d03_2d_adapt_diameter_not_disc", "# 2d, fix adapt atom diameter 0.006 (mass as a sphere's, LAMMPS' rule), reset no, unfix, run\n"
      + D2B + "variable d equal 0.006\nfix ad all adapt 1 atom diameter v_d reset no\nrun 100\nunfix ad\nrun 100\n")
 
+deck("x08_read_data_link_to_urandom", "# read_data of a link to /dev/urandom (made by links.sh)\n"
+     + "units si\natom_style sphere\nboundary p p f\ncomm_modify vel yes\nread_data rnd.data\n" + f"pair_style granular\npair_coeff * * {HK}\n" + TAIL + "run 100\n")
+deck("x09_include_a_directory", "# include of a folder beside the deck (LAMMPS: cannot open)\n" + BASE + TWO + "include sub\nrun 100\n", extra={"sub/keep": "x\n"})
+deck("x10_molecule_fifo", "# molecule template read from a named pipe (made by links.sh)\n" + BASE + TWO + "molecule m mol.fifo\nrun 100\n")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]
@@ -442,6 +447,7 @@ def write(name):
     if args:
         open(os.path.join(d, "ARGS"), "w").write(args + "\n")
     for f, t in extra.items():
+        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
         open(os.path.join(d, f), "w").write(t)
 
 
