@@ -89,6 +89,9 @@ deck("L15_neigh_stale_lists", "# LIGGGHTS with neighbor 1e-5 bin and neigh_modif
      + head().replace("neighbor 0.002 bin\nneigh_modify delay 0", "neighbor 1e-5 bin\nneigh_modify delay 0 every 200 check no")
      + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN)
 
+deck("L16_neigh_exclude_type_12", "# LIGGGHTS neigh_modify exclude type 1 2: no 1-2 contact\n"
+     + head() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + "neigh_modify exclude type 1 2\n" + RUN)
+
 
 def write(name):
     text, g, files, data = DECKS[name]
