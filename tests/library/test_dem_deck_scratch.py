@@ -41,3 +41,19 @@ def test_a_pipe_or_socket_beside_the_deck_is_left_out_of_the_copy(tmp_path, kind
         if kind == "socket":
             sock.close()
     assert sorted(p.name for p in scratch.deck.parent.iterdir() if not p.name.startswith(".")) == ["in.deck"]
+
+
+def test_a_link_to_a_device_is_left_out_and_the_scan_of_named_files_reads_no_device(tmp_path):
+    """Field round 15, x05-x07: an include of a link to /dev/zero ran out of memory in the scan of the
+    files a deck names (and the engine would read it without end), one of a named pipe hung. Such a
+    link is not copied; the scan reads regular files of bounded size only."""
+    folder, where = tmp_path / "deck", tmp_path / "scratch"
+    folder.mkdir()
+    where.mkdir()
+    (folder / "in.deck").write_text("atom_style sphere\ninclude zero.lmp\ninclude pipe.lmp\nrun 10\n")
+    (folder / "zero.lmp").symlink_to("/dev/zero")
+    os.mkfifo(folder / "pipe.lmp")
+    (folder / "dangling.lmp").symlink_to(tmp_path / "nowhere")
+    scratch = scratch_copy(folder / "in.deck", where, _marker)
+    copied = sorted(p.name for p in scratch.deck.parent.iterdir() if not p.name.startswith("."))
+    assert copied == ["dangling.lmp", "in.deck"]

@@ -146,9 +146,12 @@ def normalised(text: str) -> str:
 def _not_copied(root: Path):
     """The ``ignore`` of the deck folder's copy: the scratch directory ``root`` itself, where it lies
     in that folder (a deck saved in the temporary directory: the copy copied itself until "File name
-    too long", field round 14, x10), and what is no file, folder or link (a named pipe, whose read
-    would wait, a socket, a device: x11)."""
+    too long", field round 14, x10), what is no file, folder or link (a named pipe, whose read
+    would wait, a socket, a device: x11), and a link to such a thing."""
     held = root.resolve()
+
+    def kept(mode: int) -> bool:
+        return stat.S_ISREG(mode) or stat.S_ISDIR(mode)
 
     def ignore(folder, names) -> set:
         out = set()
@@ -159,7 +162,17 @@ def _not_copied(root: Path):
             except OSError:
                 out.add(name)
                 continue
-            if p.resolve() == held or not (stat.S_ISREG(mode) or stat.S_ISDIR(mode) or stat.S_ISLNK(mode)):
+            if p.resolve() == held:
+                out.add(name)
+            elif stat.S_ISLNK(mode):
+                # a link is copied as a link, which the engine follows: one to a device or a pipe
+                # (an include of a link to /dev/zero, read without end: round 15, x05) is left out
+                try:
+                    if not kept(p.stat().st_mode):
+                        out.add(name)
+                except OSError:
+                    pass                 # a dangling link: copied, the engine finds nothing there
+            elif not kept(mode):
                 out.add(name)
         return out
     return ignore
@@ -348,7 +361,7 @@ def _words_named(deck: Path, todo: list):
     seen = set()
     while todo:
         path = todo.pop()
-        if path in seen or not path.is_file() or path.stat().st_size > _MAX_TEXT_BYTES:
+        if path in seen or not _text_file(path):
             continue
         seen.add(path)
         try:
@@ -361,6 +374,18 @@ def _words_named(deck: Path, todo: list):
         todo += [deck.parent / name for name in _named_files(path) or () if not _UP.search(name)]
 
 
+def _text_file(path: Path) -> bool:
+    """Whether ``path`` (a link followed) is a regular file of at most _MAX_TEXT_BYTES, which the
+    scan of named files may read whole: not a device, a pipe (whose read would wait) or a link to
+    one, nor a huge or sparse file (field round 15, x05-x07: an include of a link to /dev/zero or to
+    a 3 GB sparse file ran out of memory, one of a named pipe hung)."""
+    try:
+        info = path.stat()
+    except OSError:
+        return False
+    return stat.S_ISREG(info.st_mode) and info.st_size <= _MAX_TEXT_BYTES
+
+
 def _named_files(deck: Path, literal: bool = False) -> set | None:
     """The names of the files the deck's include and jump lines name (None where one comes from a
     variable; with ``literal``, those named as written, the others passed over); files named in
@@ -368,8 +393,11 @@ def _named_files(deck: Path, literal: bool = False) -> set | None:
     names: set = set()
     todo = [deck]
     while todo:
+        path = todo.pop()
+        if not _text_file(path):
+            continue
         try:
-            text = todo.pop().read_text(encoding="utf-8", errors="replace")
+            text = path.read_text(encoding="utf-8", errors="replace")
         except OSError:
             continue
         for line in text.splitlines():
