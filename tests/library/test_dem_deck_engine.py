@@ -869,3 +869,15 @@ run 1
     data = DATA_ONE_TYPE + "\nCharge2\n\n1 0.5\n"
     p = pairs(tmp_path, text, files={"data.one": data})
     assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(1000, 1.0, 0.01, 0.01, 2500.0, 2500.0), rel=1e-10)
+
+
+@pytest.mark.parametrize("fix, words", [
+    ("fix ev all evaporate 1000 1 box 12345", "fix evaporate deletes atoms as the runs go; it adds no force"),
+    ("fix df all deform 1 x final 0 2", "fix deform changes the box as the runs go; it adds no force"),
+])
+def test_a_fix_that_pushes_no_atom_is_not_said_to_add_forces(tmp_path, fix, words):
+    """Field round 15 (n06-n08, a10): evaporate, deform, atom/swap and set were each said to "add
+    forces" their eps did not include; none pushes an atom."""
+    status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\n{fix}\nrun 1\n")
+    assert status == 0, err
+    assert words in err and "may add forces" not in err, err

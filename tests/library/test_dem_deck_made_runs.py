@@ -63,6 +63,13 @@ DECKS = {
     # field round 14 (r10): an if on a fix ave/time's value after the run; the runs made stopped on the
     # audit's stand-in for the fix ("Mismatched fix in variable formula"): it now runs, its file dropped
     "field14/decks/r10_ave_time_value_read": (HOOKE, "may_differ"),
+    # field round 15 (D1): fix set (LAMMPS 2025) sets a diameter every step, or a density, during the
+    # first run; it was taken for a force and its sizes never read (n03b 1 1: 0.4972 where LAMMPS gives
+    # 0.4691; n04 2 2: 0.2551 where LAMMPS gives 0.0408)
+    "field15/decks/n03b_fix_set_diameter_hertz": ("pair_coeff * * hertz/material 1e7 1.4e7 0.3 damping "
+                                                             "viscoelastic tangential linear_nohistory 1 0.3",
+                                                             "may_differ"),
+    "field15/decks/n04_fix_set_density_then_unfix": (HOOKE, "may_differ"),
     "field10/decks/f04_pour_done_then_set": ("pair_coeff * * hooke 1000 0.02 damping velocity tangential "
                                              "linear_nohistory 0 0", "if_poured"),
 }

@@ -54,6 +54,14 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      "ave/time", "ave/atom", "print", "move/mesh", "halt",
                      "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
                      "nve/noforce"}
+#: Fixes that push no atom but change what the runs see, each with what it does: named as such, not
+#: as a force (field round 15: "may add forces" said of each). Where a run sees fix set or atom/swap,
+#: the runs are made for real (:func:`restitution.dem.deck.runtime.resized_by_runs`)
+_NO_FORCE = {"set": "sets its atoms' attributes as the runs go (where a run sees it, the audit makes the runs "
+                    "and reads the sizes and types they reach)",
+             "atom/swap": "swaps its atoms' types as the runs go (where a run sees it, the audit makes the runs "
+                          "and reads the types they reach)",
+             "evaporate": "deletes atoms as the runs go", "deform": "changes the box as the runs go"}
 #: LIGGGHTS move/mesh motions that accelerate a face under a sphere during a contact, so that the
 #: eps the engine measures depends on when in the cycle and where on the face a contact falls:
 #: an oscillation (LIGGGHTS: 0.543 to 0.649 by phase on a plate with wiggle amplitude 0 0 1e-4
@@ -1167,6 +1175,8 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         handler(deck, words, where, line, loc)
         if wall_again is not None and deck.walls and deck.walls[-1][1][1] == words[1]:
             deck.walls.insert(wall_again, deck.walls.pop())
+    elif style in _NO_FORCE:
+        deck.unknown.append((*loc, line, f"fix {style} {_NO_FORCE[style]}; it adds no force to a contact"))
     elif style not in _IRRELEVANT_FIXES:
         # a fix the audit does not know may push its atoms (a wall potential, a field): the rows
         # do not include what it does, and say so
