@@ -279,10 +279,14 @@ def run_deck(args, out) -> None:
         typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
         out.write(f"{name}: {p['model']} ({typed}), end rule {p['end']}\n")
         steps = p.get("steps_per_contact") or [None] * len(p["speeds"])
-        for g, e, stick, through, n in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"], steps):
+        late = p.get("late") or [False] * len(p["speeds"])
+        for g, e, stick, through, n, found_late in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"], steps,
+                                                       late):
             out.write(f"  g {g:<12.6g} " + (
                 f"passes through: the largest overlap reaches {reach} = {p['overlap_limit']:.4g}, the engine "
                 f"pushes {pushed} (no eps)\n" if through else
+                f"found late: above {p['late_above']:.4g} the neighbour lists may find the contact only in "
+                "overlap (no eps)\n" if found_late else
                 f"sticks: the attractive phase keeps {kept} (eps 0)\n" if stick else f"eps {e:.10f}" + (
                     f"  ({n:.3g} steps per contact at dt {p['dt']:.4g})" if n is not None else "") + "\n"))
         if p["exact_line"]:

@@ -92,7 +92,7 @@ from pathlib import Path
 from ...core.collision import StickError
 from ...core.errors import ParameterError
 from .beside import ADAPT, effects
-from .meeting import excluded, held_contact, integrators, motion
+from .meeting import excluded, held_contact, integrators, late_speed, motion
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, PairNotMapped, place, spheres
@@ -1155,6 +1155,12 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             raise
         unknown += [row for row in not_audited if row not in unknown]
         unmapped += not_mapped
+        if (late := late_speed(snap)) is not None:
+            # LAMMPS' fix wall/gran loops over its atoms, no list; LIGGGHTS' walls use its lists
+            hit = _found_late(pairs + (walls if snap.code != "LAMMPS" else []), late[0])
+            said_late = f"{late[1]}: no eps is given above that speed, where the contact is not the law's"
+            if hit and said_late not in notes:
+                notes.append(said_late)
         if any(loc in deck.doubtful_runs for loc, _ in runs):
             # settings read after a run from values the runs change: marked in each row, not only on stderr
             for row in pairs + walls:
@@ -1172,6 +1178,24 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
             "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck) + _environment_notes(deck)}
+
+
+def _found_late(rows: list, g_max: float) -> int:
+    """Takes the eps out of each row at the speeds above ``g_max`` (:func:`meeting.late_speed`), marking
+    them ``late`` (the row's ``late_above`` says where); how many rows it marked."""
+    hit = 0
+    for row in rows:
+        late = [g > g_max for g in row["speeds"]]
+        if not any(late):
+            continue
+        hit += 1
+        row.update(late=late, late_above=g_max, eps=[None if x else e for e, x in zip(row["eps"], late)])
+        for key in ("eps_at_dt", "eps_at_dt_spread", "dt_within_tol"):     # the time step's study too
+            if row.get(key):
+                row[key] = [None if x else e for e, x in zip(row[key], late)]
+        if late[len(late) // 2]:
+            row["exact_line"] = None
+    return hit
 
 
 def _counted(items) -> dict:

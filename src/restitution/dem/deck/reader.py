@@ -591,6 +591,11 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         _unfix(deck, words[1])
     elif cmd == "fix_modify" and _accounting(words):
         pass
+    elif cmd == "neighbor" and len(words) >= 2:
+        try:
+            deck.skin = float(words[1])
+        except ValueError:
+            deck.skin = None
     elif cmd == "neigh_modify":
         neigh_modify(deck, words, loc, line)
     elif cmd == "special_bonds":
