@@ -88,6 +88,7 @@ rule fig4_eps:
         pdf="results/{variant}/figures/fig4.pdf",
         png=report("results/{variant}/figures/fig4.png", caption="../report/fig4.rst",
                    category="Figures", subcategory="{variant}"),
+        values="results/{variant}/figures/fig4_values.tex",   # where the axes clip a curve (the caption says)
     params:
         exponents=exponents,
         g_figure=vparam("g_figure"),

@@ -13,7 +13,8 @@
 import numpy as np
 import pandas as pd
 from matplotlib.transforms import ScaledTranslation
-from restitution_workflow.pipeline import TEXT_WIDTH_PT, save_figure, setup_matplotlib, start
+from restitution_workflow.latex import sci
+from restitution_workflow.pipeline import TEXT_WIDTH_PT, save_figure, setup_matplotlib, start, write_text
 
 start(snakemake)
 plt = setup_matplotlib()
@@ -95,6 +96,20 @@ def draw_eps_of_g():
     values = values[np.isfinite(values) & (values > 0)]
     lo, hi = max(0.5 * values.min(), 1e-4), min(max(3.0, 1.5 * values.max()), 30.0)
     ax.set_ylim(lo, 3 * hi)   # 3: room for the label of g above the curves
+    clip["top"] = 3 * hi
+    for _, rel in errors.iterrows():
+        col = f"eps_{rel['kind']}"
+        if col in curves and (curves[col] > clip["top"]).any():
+            clip["curves"].append(col)
+            # the slowest speed at which the drawn line (straight between grid points on these log axes) is
+            # still inside the axes, coming from above: where the axes start to cut it off
+            y = curves[col].to_numpy()
+            g = curves["g"].to_numpy()
+            out = np.nonzero(y > clip["top"])[0]
+            i = out[-1]
+            if i + 1 < len(y) and np.isfinite(y[i + 1]):
+                t = np.log(y[i] / clip["top"]) / np.log(y[i] / y[i + 1])
+                clip["below_g"] = float(np.exp(np.log(g[i]) + t * np.log(g[i + 1] / g[i])))
     # the label sits at the top of its line, where no curve runs at g = 0.1
     ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -3),
                 textcoords="offset points", va="top", color="grey")
@@ -103,5 +118,17 @@ def draw_eps_of_g():
 
 
 # %%
+# What the axes cut off at the top (the caption of the article's figure says it; referee r23): the top of the axes,
+# the curves that leave it, and the speed below which the one that does is cut off
+clip = {"top": None, "curves": [], "below_g": None}
 fig = draw_eps_of_omega() if curves["omega"].nunique() == 1 else draw_eps_of_g()
 save_figure(fig, snakemake.output.pdf, snakemake.output.png, width=PRINT_WIDTH)
+if clip["curves"] not in ([], ["eps_printed"]) or (clip["curves"] and clip["below_g"] is None):
+    # the article's caption says the printed coefficients' curve, and only it, is cut off below a speed
+    raise SystemExit(f"fig4: curves clipped {clip['curves']} (cut off below g = {clip['below_g']}): "
+                     "the caption names the printed coefficients' curve alone, cut off below a speed")
+macros = {
+    "FigEpsAxisTop": sci(clip["top"], 2) if clip["top"] else "---",
+    "FigEpsClipBelowG": sci(clip["below_g"], 2) if clip["below_g"] else "---",
+}
+write_text(snakemake.output.values, "\n".join(rf"\newcommand{{\{k}}}{{{v}}}" for k, v in macros.items()))

@@ -420,7 +420,7 @@ overlap_names = [n for n in p.variants if overlap_forms[n]["available"]]
 n_overlap = max((len(overlap_forms[n]["a"]) for n in overlap_names), default=0)
 # every number to the twelve digits the printed-digit check assumes (sigma and r too: sigma may be nu itself)
 overlap_coef_rows = [" & ".join([label] + [sci(overlap_forms[n][key], 12) for n in overlap_names]) + r" \\"
-                     for label, key in ((r"$\bar b$", "b"), (r"$\Theta$", "K"), (r"$\bar\sigma$", "sigma"), (r"$\bar\varrho$", "r"))]
+                     for label, key in ((r"$\bar b$", "b"), (r"$\Theta$", "K"), (r"$\bar\sigma$", "sigma"), (r"$\bar\Lambda$", "r"))]
 overlap_coef_rows.append(" & ".join([r"$\bar s_1$"] + [str(overlap_forms[n]["m1"]) for n in overlap_names]) + r" \\")
 overlap_coef_rows += [" & ".join([rf"$\bar a_{{{j}}}$"] + [sci(overlap_forms[n]["a"][j], 12) if j < len(overlap_forms[n]["a"])
                                                      else "" for n in overlap_names]) + r" \\"
@@ -504,13 +504,13 @@ $\bar u = \tanh(\tfrac{{\bar\sigma}}{{2}} \ln \bar z)$ and the power {OVERLAP_P}
 that of \ArtEq{{eq:uniform}}):
 \begin{{equation}}
 \frac{{1}}{{\varepsilon}} = \frac{{\bar z^{OVERLAP_P}}}{{1 + \bar z^{OVERLAP_P}}} + \Theta \bar z^{{-\kappa}} (1 + \bar z^{OVERLAP_P})^{{(\kappa - \nu)/{OVERLAP_P}}}
-\exp\!\Big[\exp(-\bar\varrho/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
+\exp\!\Big[\exp(-\bar\Lambda/\bar z)\, (1-\bar u)^{{\bar s_1}} \sum_{{j=0}}^{{\bar N}} \bar a_j \cos(j \arccos \bar u)\Big],
 \label{{eq:uniform-overlap}}
 \end{{equation}}
 with $\bar b = (C_o C_1)^{{1/(\kappa - \nu)}}$ and $\Theta = \bar b^{{\kappa}}/C_o$, so that
 $\varepsilon \to C_o\,\Omega^{{\kappa}}$ and $1 - \varepsilon \to C_1 \Omega^{{-\nu}}$ exactly, and $\varepsilon > 0$
-for any coefficients. The envelope $\exp(-\bar\varrho/\bar z)$ has the form of the heuristic correction $\exp(-Q/\Omega)$, but its rate
-$\bar\varrho$ is a fitted shape constant, not the heuristic's $Q$; the shape $(\bar\sigma, \bar\varrho, \bar s_1)$ and the
+for any coefficients. The envelope $\exp(-\bar\Lambda/\bar z)$ has the form of the heuristic correction $\exp(-Q/\Omega)$, but its rate
+$\bar\Lambda$ is a fitted shape constant, not the heuristic's $Q$; the shape $(\bar\sigma, \bar\Lambda, \bar s_1)$ and the
 degree are chosen as for the force rule's form, the coefficients fitted with a small penalty on their size (without
 it they grow to $10^8$ where the envelope leaves them free, and twelve printed digits would no longer reproduce the
 formula). Below $\Omega = {sci(LAW_BELOW, 1)}$ each integration of the creeping return takes about a second, and there the
