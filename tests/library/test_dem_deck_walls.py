@@ -654,7 +654,7 @@ def test_a_region_wall_takes_the_effective_radius_lammps_gives_its_surface(tmp_p
 
 @pytest.mark.parametrize("region, why", [
     ("region drum cone z 0 0 0.01 0.04 0.0 0.05 units box", "a cone region"),
-    ("region drum sphere 0 0 0 v_r units box", "placed by a variable (v_r)"),
+    ("region drum sphere 0 0 0 v_r units box", "a variable's"),
     ("region drum sphere 0 0 0 0.0075 move v_x NULL NULL units box", "keyword move"),
     ("lattice sc 0.5\nregion drum sphere 0 0 0 0.0075", "lattice units")])
 def test_a_region_whose_curvature_is_not_known_stays_named(tmp_path, region, why):
@@ -879,6 +879,19 @@ def test_a_region_wall_that_moves_is_not_audited_whatever_its_law(tmp_path, regi
     res, err = audit(tmp_path, text, 1.0)
     assert res["walls"] == []
     assert "region pl" in err and "its faces may move under a sphere during a contact" in err
+
+
+@pytest.mark.parametrize("region", ["region pl plane 0 0 0 0 0 1 rotate v_zw 0 0 0 0 1 0 units box",
+                                    "region pl block -1 1 -1 1 -0.05 v_zw side out units box"],
+                         ids=["rotate by a constant", "face at a constant"])
+def test_a_region_placed_by_a_constant_variable_is_audited_as_still(tmp_path, region):
+    """Field round 15, w06/w09: a face at v_zl = 0 and a rotation by v_th = 0 were named as moving and
+    not audited; LAMMPS' still floor gives 0.36298287 (hooke 2000 3000 mass_velocity, type 1)."""
+    law = f"granular hooke 5000 3000 damping mass_velocity {T}"
+    text = LAMMPS_DECK.split("group small")[0] + ("variable zw equal 0\n"
+                                                  f"{region}\nfix b all wall/gran/region {law} region pl\n")
+    res, err = audit(tmp_path, text, 1.0)
+    assert [w["wall"] for w in res["walls"]] and "faces may move" not in err, err
 
 
 def test_a_cylinder_wall_and_a_cylinder_region_of_one_radius_name_each_other(tmp_path):

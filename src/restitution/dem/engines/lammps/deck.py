@@ -693,18 +693,30 @@ def region_moves(deck: Deck, rid: str) -> str | None:
     --------
     >>> d = Deck(regions={"pl": "region pl plane 0 0 0 0 0 1 move NULL NULL v_zw".split(),
     ...                   "up": "region up block 0 1 0 1 v_lo 1 units box".split(),
-    ...                   "box": "region box block 0 1 0 1 0 1 units box".split()})
-    >>> region_moves(d, "pl"), region_moves(d, "up"), region_moves(d, "box")
-    ('region pl moves (keyword move)', 'region up is placed by a variable (v_lo), which LAMMPS evaluates at every step', None)
+    ...                   "box": "region box block 0 1 0 1 0 1 units box".split(),
+    ...                   "still": "region still plane 0 0 0 0 0 1 rotate v_th 0 0 0 0 1 0".split()},
+    ...          variables={"zw": "0.001*sin(time)", "lo": "0.002*time", "th": "0"})
+    >>> region_moves(d, "pl"), region_moves(d, "up"), region_moves(d, "box"), region_moves(d, "still")
+    ('region pl moves (keyword move)', 'region up is placed by a variable (v_lo), which LAMMPS evaluates at every step', None, None)
     """
     words = deck.regions.get(rid) or []
+    # a variable that is one number keeps the region where it is (field round 15, w06/w09: a face at
+    # v_zl = 0, a rotation by v_th = 0, were named as moving and not audited)
+    changing = [w for w in words[3:] if w.startswith("v_") and _number_or_none(deck.variables.get(w[2:])) is None]
     keyword = next((w for w in words[3:] if w in ("move", "rotate")), None)
-    if keyword is not None:
+    if keyword is not None and changing:
         return f"region {rid} moves (keyword {keyword})"
-    variable = next((w for w in words[3:] if w.startswith("v_")), None)
-    if variable is not None:
-        return f"region {rid} is placed by a variable ({variable}), which LAMMPS evaluates at every step"
+    if changing:
+        return f"region {rid} is placed by a variable ({changing[0]}), which LAMMPS evaluates at every step"
     return None
+
+
+def _number_or_none(formula) -> float | None:
+    """The number an equal-style variable's formula is where it is a plain number, else None."""
+    try:
+        return float(formula)
+    except (TypeError, ValueError):
+        return None
 
 
 def region_surfaces(deck: Deck, rid: str) -> list | str:
