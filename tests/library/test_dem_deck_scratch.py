@@ -56,4 +56,4 @@ def test_a_link_to_a_device_is_left_out_and_the_scan_of_named_files_reads_no_dev
     (folder / "dangling.lmp").symlink_to(tmp_path / "nowhere")
     scratch = scratch_copy(folder / "in.deck", where, _marker)
     copied = sorted(p.name for p in scratch.deck.parent.iterdir() if not p.name.startswith("."))
-    assert copied == ["dangling.lmp", "in.deck"]
+    assert copied == ["dangling.lmp", "in.deck"] and scratch.left_out == {"zero.lmp", "pipe.lmp"}

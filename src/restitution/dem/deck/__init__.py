@@ -645,7 +645,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 message = (f"{message}: the audit's dump of each type's radius and mass at this run; its atoms have "
                            "no radius (not spheres)")
             named = line.split()[1:2] if line and line.split()[0] in ("include", "jump") else []
-            if named and confining() and _outside_folder(
+            if named and Path(named[0].strip("\"'")).name in scratch.left_out:
+                message += (": the deck's folder holds it as a pipe, a device or a link to one, which the audit "
+                            "does not copy (its read may never end); not audited")
+            elif named and confining() and _outside_folder(
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")

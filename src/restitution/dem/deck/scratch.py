@@ -102,7 +102,8 @@ class Scratch:
     {((file, line), its text): its index in ``skipped``}; ``redirected`` the files a ``write_restart``
     or ``write_data`` names outside the copy (an absolute path, a climb by ..), each -> the file in
     the scratch it writes instead, which a later read of that name reads; ``absolute`` the files the deck names by an absolute path, each -> its
-    copy in the scratch, which the copy's commands name instead."""
+    copy in the scratch, which the copy's commands name instead; ``left_out`` the names in the deck's
+    folder not copied (a pipe, a device, a link to one: :func:`_not_copied`)."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -121,6 +122,7 @@ class Scratch:
     silenced: dict = field(default_factory=dict)
     redirected: dict = field(default_factory=dict)
     absolute: dict = field(default_factory=dict)
+    left_out: set = field(default_factory=set)
 
 
 def normalised(text: str) -> str:
@@ -174,7 +176,9 @@ def _not_copied(root: Path):
                     pass                 # a dangling link: copied, the engine finds nothing there
             elif not kept(mode):
                 out.add(name)
+        ignore.left |= {name for name in out if Path(folder, name).resolve() != held}
         return out
+    ignore.left = set()
     return ignore
 
 
@@ -260,7 +264,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         absolute[name] = target
     # a nonce: a deck cannot write a tag that passes for another line's
     scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
-                      origin=src.parent, mirrored=set(above), absolute=absolute)
+                      origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(ignore.left))
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(root / "deck") for name in sorted(names)
                               if Path(base, name) != scratch.deck] + sorted(absolute.values())
