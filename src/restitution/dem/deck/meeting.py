@@ -95,6 +95,17 @@ def late_speed(deck: Deck) -> tuple[float, str] | None:
     bin`` with ``neigh_modify every 200 check no``: LAMMPS measured 5.99 to 0.82 by the gap at the
     start, where the contact gives 0.4025). None where K is 1, or the step or skin is unknown.
 
+    Parameters
+    ----------
+    deck : Deck
+        The deck at the run audited (its time step, neighbor skin, neigh_modify settings, units and
+        engine).
+
+    Returns
+    -------
+    tuple of (float, str), or None
+        The speed and the sentence that says why.
+
     Examples
     --------
     >>> d = Deck(dt=1e-5, skin=1e-5, neigh={"every": 200, "delay": 0, "check": "no"}, units="si")
