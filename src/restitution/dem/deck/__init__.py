@@ -85,6 +85,7 @@ from __future__ import annotations
 import os
 import re
 import tempfile
+from collections import Counter
 from dataclasses import replace
 from functools import lru_cache
 from pathlib import Path
@@ -1147,7 +1148,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
                                                   "makes one")
     audited, unmapped = [], []
     # a loop runs one line many times: each run says which time it is, where there are several
-    times = {loc: n for loc, n in _counted(loc for runs, _ in stages for loc, _ in runs).items() if n > 1}
+    times = {loc: n for loc, n in Counter(loc for runs, _ in stages for loc, _ in runs).items() if n > 1}
     met: dict = {}
     for runs, snap in stages:
         try:
@@ -1199,14 +1200,6 @@ def _found_late(rows: list, g_max: float) -> int:
         if late[len(late) // 2]:
             row["exact_line"] = None
     return hit
-
-
-def _counted(items) -> dict:
-    """{item: how many times it comes}, in the order each first comes."""
-    counts: dict = {}
-    for item in items:
-        counts[item] = counts.get(item, 0) + 1
-    return counts
 
 
 def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list, list]:

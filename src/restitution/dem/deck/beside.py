@@ -23,11 +23,14 @@ from ..engines.lammps.deck import DEFAULT_DT, FTM2V
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
 
-__all__ = ["ADAPT", "BESIDE", "adapt_parts", "adapted_diameter", "drag_eps", "effects", "gravity_vector"]
+__all__ = ["ADAPT", "SETTING", "BESIDE", "adapt_parts", "adapted_diameter", "drag_eps", "effects", "gravity_vector"]
 
 #: The fix adapt styles: adapt/fep (the FEP package) takes adapt's attributes and keywords, with the
 #: same defaults (LAMMPS' documentation; field round 14, D4: it was taken for an unknown force)
 ADAPT = frozenset({"adapt", "adapt/fep"})
+#: Fixes that set their atoms' attributes or types as a run goes (fix set, LAMMPS 2025: the set
+#: command every N steps; atom/swap: types swapped): a run that sees one is made for real
+SETTING = frozenset({"set", "atom/swap"})
 #: Fix style -> what it does to the atoms of its group, beside the contact law
 BESIDE = {"viscous": "a drag force -gamma v on every atom of its group",
           "langevin": "a thermostat's drag force -m v / damp and a random force",

@@ -18,7 +18,7 @@ from dataclasses import replace
 from ..dialect.state import Deck, place
 
 __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact",
-           "group_types", "integrators", "late_speed"]
+           "group_types", "integrators", "late_speed", "rigid"]
 
 #: Fix styles that move the atoms of their group by integrating the forces on them
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
@@ -27,6 +27,18 @@ INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sp
 #: Fix styles that move the atoms of their group: the integrators, fix move (a prescribed motion)
 #: and nve/noforce (each atom at its own velocity, which no force changes)
 MOVERS = INTEGRATORS | {"move", "nve/noforce"}
+def rigid(style: str) -> bool:
+    """Whether a fix style joins its atoms into rigid bodies (rigid, rigid/small, rigid/nve, ...),
+    whose pairs are named, not audited (:func:`motion`).
+
+    Examples
+    --------
+    >>> rigid("rigid/small"), rigid("nve/sphere")
+    (True, False)
+    """
+    return style.startswith("rigid")
+
+
 #: Of the movers, those that move their atoms without the forces on them
 _PRESCRIBED = ("move", "nve/noforce")
 
@@ -254,7 +266,7 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
         return "unknown", body
     integrated, moved = [], []
     for fix, (loc, line, group, style) in deck.movers.items():
-        if style.startswith("rigid"):
+        if rigid(style):
             continue
         held = group_types(deck, group)
         if held is None:
@@ -290,7 +302,7 @@ def _in_body(deck: Deck, t: int) -> str | None:
     the groups a ``group N g1 ... gN`` body style names, else the fix's own group; a type with any
     atom in them counts, and every type where the audit cannot type those groups."""
     for fix, (_, line, group, style) in deck.movers.items():
-        if not style.startswith("rigid"):
+        if not rigid(style):
             continue
         words = line.split()
         named = (words[6:6 + int(words[5])] if len(words) > 5 and words[4] == "group" and words[5].isdigit()
@@ -320,7 +332,7 @@ def integrators(deck: Deck, t: int) -> list:
     """
     out = []
     for fix, (_, line, group, style) in deck.movers.items():
-        if style.startswith("rigid"):
+        if rigid(style):
             continue                     # a body, not a sphere: its pairs are not audited (motion)
         held = group_types(deck, group)
         if _integrates(line) and held is not None and t in held:

@@ -16,7 +16,7 @@ import os
 import re
 
 from .beside import ADAPT, BESIDE, adapt_parts, adapted_diameter
-from .meeting import MOVERS, neigh_modify, special_bonds
+from .meeting import MOVERS, neigh_modify, rigid, special_bonds
 from .scratch import GUARDED
 from .stream import SEEDED
 from .runtime import constant_in_time
@@ -1133,9 +1133,9 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.shaken[words[1]] = (loc, line, words[5])
     # a rigid body's spheres move as one body: their types' pairs are named, not audited
     # (meeting.motion), the deck's single spheres audited (field round 13: R03 refused whole)
-    if style in MOVERS or style.startswith("rigid"):
+    if style in MOVERS or rigid(style):
         deck.movers[words[1]] = (loc, line, words[2], style)
-        if style.startswith("rigid"):
+        if rigid(style):
             return
     if style.startswith("bond/create"):
         deck.bonds = (loc, line)

@@ -239,11 +239,10 @@ def resized_by_runs(commands: list) -> list:
     []
     """
     from ..dialect.state import place
-    from .beside import ADAPT, adapt_parts
+    from .beside import ADAPT, SETTING, adapt_parts
     formulas: dict = {}
     adapts: dict = {}
-    # fix set (LAMMPS 2025: the set command applied every N steps) and fix atom/swap (types swapped)
-    setting: dict = {}
+    setting: dict = {}       # the SETTING fixes in force
     grown = None
     for cmd in commands:
         split = cmd.text.split()
@@ -268,7 +267,7 @@ def resized_by_runs(commands: list) -> list:
         elif split[0] == "fix" and len(split) > 3:
             adapts.pop(split[1], None)
             setting.pop(split[1], None)
-            if split[3] in ("set", "atom/swap"):
+            if split[3] in SETTING:
                 setting[split[1]] = True
                 continue
             if split[3] not in ADAPT:

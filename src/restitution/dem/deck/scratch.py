@@ -145,11 +145,12 @@ def normalised(text: str) -> str:
     return " ".join(strip_comment(text).split())
 
 
-def _not_copied(root: Path):
-    """The ``ignore`` of the deck folder's copy: the scratch directory ``root`` itself, where it lies
-    in that folder (a deck saved in the temporary directory: the copy copied itself until "File name
-    too long", field round 14, x10), what is no file, folder or link (a named pipe, whose read
-    would wait, a socket, a device: x11), and a link to such a thing."""
+def _not_copied(root: Path) -> tuple:
+    """The ``ignore`` of the deck folder's copy, and the set of names it has left out (filled as the
+    copy goes): the scratch directory ``root`` itself, where it lies in that folder (a deck saved in
+    the temporary directory: the copy copied itself until "File name too long", field round 14,
+    x10), what is no file, folder or link (a named pipe, whose read would wait, a socket, a device:
+    x11), and a link to such a thing (not counted as left out: the scratch itself)."""
     held = root.resolve()
 
     def kept(mode: int) -> bool:
@@ -176,10 +177,10 @@ def _not_copied(root: Path):
                     pass                 # a dangling link: copied, the engine finds nothing there
             elif not kept(mode):
                 out.add(name)
-        ignore.left |= {name for name in out if Path(folder, name).resolve() != held}
+        left.update(name for name in out if Path(folder, name).resolve() != held)
         return out
-    ignore.left = set()
-    return ignore
+    left: set = set()
+    return ignore, left
 
 
 def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, confined: bool = True) -> Scratch:
@@ -228,7 +229,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     """
     src = Path(deck).resolve()
     root = Path(where)
-    ignore = _not_copied(root)
+    ignore, left_out = _not_copied(root)
     total = 0
     for base, folders, names in os.walk(src.parent):
         skipped = ignore(base, folders + names)
@@ -264,7 +265,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         absolute[name] = target
     # a nonce: a deck cannot write a tag that passes for another line's
     scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
-                      origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(ignore.left))
+                      origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(left_out))
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(root / "deck") for name in sorted(names)
                               if Path(base, name) != scratch.deck] + sorted(absolute.values())
