@@ -47,6 +47,9 @@ def _tree(tmp_path: Path) -> Path:
 #: the environment is the test run's own: make must not try to install it again in the tiny tree
 NO_INSTALL = ("STAMP=Snakefile", "KRATOS_STAMP=kratos-installed")
 
+#: the guard's grace from a signal to its SIGKILL of a Snakemake that did not stop (its default)
+GRACE_S = 20
+
 
 def _start(tree: Path, target: str, **env) -> subprocess.Popen:
     return subprocess.Popen(["make", "--no-print-directory", *NO_INSTALL, target], cwd=tree, start_new_session=True,
@@ -101,9 +104,15 @@ def test_stopping_make_stops_the_whole_build(tmp_path, how, target):
         # the guard stopped the running job itself; Snakemake alone waits for it until the guard's
         # grace runs out and it is killed (which the timing below would still let pass)
         err = make.stderr.read()
-        assert "did not stop within" not in err, err[-2000:]
+        # One exception: CPython drops a KeyboardInterrupt raised while a module-lock callback runs
+        # ("Exception ignored in ... _get_module_lock ... KeyboardInterrupt") and the Snakemake it
+        # reached never learns of the signal (CI saw it hang so once); the guard's kill after its
+        # grace is then the designed way out, and everything below must still hold.
+        swallowed = "Exception ignored in" in err and "KeyboardInterrupt" in err
+        if not swallowed:
+            assert "did not stop within" not in err, err[-2000:]
         assert _gone(procs, 30), [p.cmdline() for p in procs if p.is_running()]
-        assert time.monotonic() - t0 < 30, "the build did not stop within seconds"
+        assert time.monotonic() - t0 < GRACE_S + 10, "the build did not stop within seconds"
     finally:
         for p in _everything_under(make.pid) if make.poll() is None else []:
             p.kill()
