@@ -147,3 +147,19 @@ def test_a_set_the_reader_does_not_follow_on_inserted_atoms_is_refused(tmp_path,
         engine = _engine(r, *(r.get("at") or [next(iter(held))] * 2))
         print(r.get("at"), r["eps"][2], engine)
         assert abs(engine[0] / r["eps"][2] - 1) < 1e-6
+
+
+@needs_liggghts
+@pytest.mark.dem
+def test_runs_whose_length_a_variable_gives_are_made_for_real(tmp_path):
+    """``run ${n}`` with n = 1000.4: LIGGGHTS runs 1000 steps (it reads a length by its leading
+    digits). Before, the length was the deck's unsubstituted text, "not a number", and the runs
+    the set by region needs were not made (field round 15, R01)."""
+    deck = DECK.format(between="unfix ins\n", set="set region ins diameter 0.006").replace(
+        "timestep 1e-5\n", "timestep 1e-5\nvariable n equal 2000.8/2\n").replace("run 1000\n", "run ${n}\n")
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "0.5", "--json")
+    assert status == 0 and "LIGGGHTS made the deck's 2 runs (2000 steps)" in err, err
+    assert "not a number" not in err
+    rows = [r for r in json.loads(out)["stages"][-1]["pairs"] if r["types"] == [1, 1]]
+    assert rows and all(r["eps"] for r in rows)

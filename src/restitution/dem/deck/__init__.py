@@ -845,16 +845,19 @@ def _run_causes(found: list, picked: tuple | None, deck: Deck | None) -> list:
 
 def _run_steps(commands: list) -> int | None:
     """The steps of all the runs the pass met (``run N``, ``minimize``'s iterations at most), None
-    where one's length is not a number."""
+    where one's length is not a number.
+
+    A length is read as LIGGGHTS 3.8.0 reads it, by its leading digits (``run 38.16`` makes 38
+    steps, ``run 1e1`` one: measured); LAMMPS stops on any other length, so it never gets here."""
     steps = 0
     for cmd in commands:
         if cmd.stage is None:
             continue
         split = cmd.text.split()
-        n = split[1] if split[0] == "run" and len(split) > 1 else split[3] if len(split) > 3 else ""
-        if not n.isdigit():
+        n = re.match(r"\d+", split[1] if split[0] == "run" and len(split) > 1 else split[3] if len(split) > 3 else "")
+        if n is None:
             return None
-        steps += int(n)
+        steps += int(n.group())
     return steps
 
 

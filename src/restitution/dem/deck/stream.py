@@ -18,7 +18,7 @@ from pathlib import Path
 
 from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, UNSET, Scratch, normalised
 from ..deck_text import TRIPLE, ScriptError, segments, words
-from ..dialect.child import ATOMS
+from ..dialect.child import ATOMS, RUN_PRINTED
 
 __all__ = ["Executed", "HeldSizes", "executed", "skipped", "unchecked", "written_then_read", "snapshots", "engine_error", "first_unchecked",
            "SEEDED", "deck_commands"]
@@ -159,6 +159,9 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
             opened = read       # its marker's first line, echoed next: the read_restart, substituted
             _latest(ifs, (f, n), scratch)
             continue
+        if key.startswith(_RUN_PRINTED) and stage_at is not None:
+            out[stage_at].text = key[len(_RUN_PRINTED):]    # the run, substituted by the engine's print
+            continue
         if key.startswith(dump) and stage_at is not None:
             out[stage_at].snapshot = True         # the marker's dump of the atoms at this run
             continue
@@ -210,6 +213,8 @@ _ERROR_CONTEXT = re.compile(r"Last (?:input line|command): ")
 #: The print that stands for a set (velocity) met by no atom in the pass (scratch.UNSET), and what it prints
 _UNSET = f"print '{UNSET} "
 _UNSET_PRINTED = tuple(f"{UNSET} {word} " for word in GUARDED)
+#: What a marker's print of its run's substituted text prints before it (child.RUN_PRINTED)
+_RUN_PRINTED = f"{RUN_PRINTED} "
 #: The audit's no-ops (skipped commands, names from a variable): their text is the audit's alone
 _MARK = re.compile(r"label restitution_(skipped|unchecked)_\d+")
 

@@ -23,7 +23,7 @@ from typing import Protocol
 
 from .sandbox import available as confining, confine
 
-__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "RESTART_INFO", "CEILING", "MAX_ECHO", "engine_environment",
+__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "RESTART_INFO", "RUN_PRINTED", "CEILING", "MAX_ECHO", "engine_environment",
            "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
@@ -33,6 +33,10 @@ ATOMS_AT_END = "atoms_end"
 #: The file in the scratch directory where each read_restart's marker appends what the engine holds
 #: after it (LAMMPS' info), one block per read, in the order they ran
 RESTART_INFO = "restart_info"
+#: What a marker prints before the run it stands for where the engine echoes its own line of the
+#: run unsubstituted (LIGGGHTS' marker runs one step of its own): the run's text as the engine
+#: substitutes it, so that its length is the deck's
+RUN_PRINTED = "restitution_run"
 #: A pass whose atoms files grow beyond this is stopped like one out of time
 _MAX_OUTPUT = 512 * 2 ** 20
 #: The most of an engine's screen (its echo) the audit reads: a pass that writes more is stopped

@@ -16,7 +16,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
-from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, engine_environment, run_child
+from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, RUN_PRINTED, EngineRun, engine_environment, run_child
 from . import run
 from .run import MPI_NOT_STARTED, MPI_START_RETRIES
 
@@ -54,6 +54,11 @@ def marker(root: Path, real: bool = False):
     >>> print(marker(Path("/s"), real=True)(0, "run 10").splitlines()[0])
     run 10
 
+    A run whose length a variable gives is printed first, substituted by LIGGGHTS:
+
+    >>> print(marker(Path("/s"))(0, "run ${n}").splitlines()[0])
+    print "restitution_run run ${n}"
+
     A read_restart (of a file the deck wrote in its copy) is followed by LIGGGHTS' account of what
     it holds:
 
@@ -65,7 +70,11 @@ def marker(root: Path, real: bool = False):
         # "pre yes": the set-up of every run of the deck's, not the shortened one LIGGGHTS may take
         # for a run right after another
         made = run if real else "run 1 pre yes post no"
-        return f"{made}\nwrite_dump all custom {root / ATOMS} type radius mass {_FORMAT} append yes\n"
+        # the deck's run is not echoed where the marker's own stands for it: a length given by a
+        # variable (field round 15, R01: run ${r_1step}) is printed as LIGGGHTS substitutes it
+        # (print substitutes inside its quotes, which no echo does)
+        said = f'print "{RUN_PRINTED} {run}"\n' if not real and "$" in run and not set("\"'") & set(run) else ""
+        return f"{said}{made}\nwrite_dump all custom {root / ATOMS} type radius mass {_FORMAT} append yes\n"
 
     def restart(read: str) -> str:
         # units, atom style, types, pair style and groups, in LIGGGHTS 3.8.0's words (its info has
