@@ -19,7 +19,8 @@ from restitution_workflow.pipeline import start, write_csv, write_text
 
 from restitution.dem.calibrate import calibrate
 from restitution.dem.contact import Contact
-from restitution.dem.engines.lammps.contact import LAMMPS_CHECKED, TSUJI_SQRT2_SINCE, tsuji_a
+from restitution.dem.engines.kratos.contact import LINEAR_ZETA_STEP
+from restitution.dem.engines.lammps.contact import LAMMPS_CHECKED, TSUJI_POLY, TSUJI_SQRT2_SINCE, tsuji_a
 from restitution.dem.engines.typed_e_table import (TYPED_E_CODES, TYPED_E_ENGINE_REFINEMENTS, TYPED_E_ENGINES,
                                            TYPED_E_ENGINE_ES, TYPED_E_ENGINE_RTOL, typed_e_table)
 from restitution.dem.typed_e import THORNTON_H
@@ -166,8 +167,14 @@ macros = {
     "TypedEThorntonTerms": str(len(THORNTON_H)),
     # set as the rows of a display, five to a row: in running text the list overran the line (supplement)
     "TypedEThorntonH": r" \\ ".join(
-        rf"t_{{{i + 1}}}, \dots, t_{{{min(i + 5, len(THORNTON_H))}}} &= "
+        rf"u_{{{i + 1}}}, \dots, u_{{{min(i + 5, len(THORNTON_H))}}} &= "
         + r",\ ".join(f"{h!r}" for h in THORNTON_H[i:i + 5]) for i in range(0, len(THORNTON_H), 5)),
+    # LAMMPS' documented polynomial for tsuji damping, as the library holds it, so that a reader can
+    # recompute the tsuji rows without LAMMPS
+    "TypedETsujiTerms": str(len(TSUJI_POLY) - 1),
+    "TypedETsujiPoly": rf"A_0, \dots, A_{{{len(TSUJI_POLY) - 1}}} &= " + r",\ ".join(f"{a!r}" for a in TSUJI_POLY),
+    # the width of the last interval of Kratos' bisection for its linear law's damping ratio
+    "TypedEKratosZetaStep": sci(LINEAR_ZETA_STEP, 2),
     "TypedERunSteps": str(len(TYPED_E_ENGINE_REFINEMENTS)),
     # "within": bounds, rounded up like every bound the article prints (1.0145e-4 is not within 1.0e-4)
     **{f"TypedEFinest{name}": sci_up(finest[name], 2) for name in ("LAMMPS", "LIGGGHTS", "Yade", "Kratos")},
