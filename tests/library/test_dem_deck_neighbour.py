@@ -32,3 +32,57 @@ def test_no_eps_is_given_where_the_lists_find_the_contact_late(deck, walls):
                         and r["late_above"] == pytest.approx(0.005) for r in rows)
     if not walls:     # LAMMPS' fix wall/gran loops over its atoms, no neighbour list
         assert all("late" not in w and None not in w["eps"] for w in got["walls"])
+
+
+#: field round 16's deck shape (LAMMPS, hooke with mass_velocity damping, two free spheres and a floor)
+HEAD = (FIELD / "n02_neigh_stale_lists" / "in.deck").read_text().split("\nneighbor 1e-5 bin")[0] + "\n"
+
+
+def _audit(tmp_path, tail, *speeds):
+    (tmp_path / "in.deck").write_text(HEAD + tail)
+    return _json(tmp_path / "in.deck", *speeds)
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("every", [2, 10])
+def test_lists_checked_every_k_steps_find_two_spheres_late_at_any_speed(tmp_path, every):
+    """``check yes`` with every K > 1 (field round 16, n01, n04): a rebuild waits for an atom to have
+    moved half the skin, seen only at the next check, and two spheres closing on each other have each
+    moved half the skin just as they touch. LAMMPS measured, at the deck's own step, 0.498 to 0.722 by
+    the starting gap at g = 0.05 (every 10, skin 1e-4) and up to 0.516 at g = 0.5 (every 2, skin
+    2e-5), where the contact gives 0.4829 to 0.4983 with the usual lists; the audit said 0.497262
+    below skin / (K dt). Now no sphere pair has an eps at any speed; LAMMPS' wall/gran rows keep theirs."""
+    status, got, err = _audit(tmp_path, f"neighbor 2e-5 bin\nneigh_modify every {every} delay 0 check yes\nrun 100\n",
+                              0.05, 0.5)
+    assert status == 0, err
+    assert "at any speed" in err and f"up to {every - 1} steps" in err, err
+    assert got["pairs"] and all(r["late"] == [True, True] and r["eps"] == [None, None] and r["late_above"] == 0
+                                for r in got["pairs"])
+    assert got["walls"] and all("late" not in w and None not in w["eps"] for w in got["walls"])
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_lists_set_for_a_later_run_with_the_same_contacts_are_read(tmp_path):
+    """A first run with the usual lists, then ``neighbor 1e-5`` and ``every 20 check no`` before a
+    second run with the same contact settings (field round 16, n07: LAMMPS 0.498 to 1.037 by the
+    starting gap at g = 1 in the second run): the stage held the first run's lists only, and gave
+    0.497262 at every speed. Now the second run's lists count."""
+    status, got, err = _audit(tmp_path, "run 100\nneighbor 1e-5 bin\nneigh_modify every 20 delay 0 check no\nrun 100\n",
+                              0.01, 1.0)
+    assert status == 0, err
+    assert len(got["stages"]) == 1 and "= 0.05 may first meet" in err, err
+    assert all(r["late"] == [False, True] and r["eps"][0] is not None for r in got["pairs"])
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_neigh_modify_include_names_the_pairs_outside_its_group(tmp_path):
+    """``neigh_modify include g1`` (type 1): LAMMPS builds no list for a pair of type-2 atoms, which
+    passed through each other (field round 16, n06); the audit gave 2 2 the law's eps."""
+    status, got, err = _audit(tmp_path, "create_atoms 2 single 0.03 0.03 0.01\nset type 2 diameter 0.006 density 2500\n"
+                              "group g1 type 1\natom_modify first g1\nneigh_modify include g1\nrun 100\n", 1.0)
+    assert status == 0, err
+    assert {tuple(r["types"]) for r in got["pairs"]} == {(1, 1)}
+    assert "types 2 2: neigh_modify include g1" in err and "types 1 2: neigh_modify include g1" in err, err

@@ -285,8 +285,9 @@ def run_deck(args, out) -> None:
             out.write(f"  g {g:<12.6g} " + (
                 f"passes through: the largest overlap reaches {reach} = {p['overlap_limit']:.4g}, the engine "
                 f"pushes {pushed} (no eps)\n" if through else
-                f"found late: above {p['late_above']:.4g} the neighbour lists may find the contact only in "
-                "overlap (no eps)\n" if found_late else
+                ("found late: the neighbour lists may find the contact only in overlap, at any speed (no eps)\n"
+                 if p["late_above"] == 0 else f"found late: above {p['late_above']:.4g} the neighbour lists may find "
+                 "the contact only in overlap (no eps)\n") if found_late else
                 f"sticks: the attractive phase keeps {kept} (eps 0)\n" if stick else f"eps {e:.10f}" + (
                     f"  ({n:.3g} steps per contact at dt {p['dt']:.4g})" if n is not None else "") + "\n"))
         if p["exact_line"]:

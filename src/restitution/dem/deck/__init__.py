@@ -93,7 +93,7 @@ from pathlib import Path
 from ...core.collision import StickError
 from ...core.errors import ParameterError
 from .beside import ADAPT, effects
-from .meeting import excluded, held_contact, integrators, late_speed, motion
+from .meeting import excluded, held_contact, integrators, late_speeds, motion
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, PairNotMapped, place, spheres
@@ -1162,12 +1162,18 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             raise
         unknown += [row for row in not_audited if row not in unknown]
         unmapped += not_mapped
-        if (late := late_speed(snap)) is not None:
-            # LAMMPS' fix wall/gran loops over its atoms, no list; LIGGGHTS' walls use its lists
-            hit = _found_late(pairs + (walls if snap.code != "LAMMPS" else []), late[0])
-            said_late = f"{late[1]}: no eps is given above that speed, where the contact is not the law's"
-            if hit and said_late not in notes:
-                notes.append(said_late)
+        late = late_speeds(snap)
+        # LAMMPS' fix wall/gran loops over its atoms, no list; LIGGGHTS' walls use its lists
+        listed = [] if snap.code == "LAMMPS" else walls
+        for kind, rows, what in (("pairs", pairs, "sphere pairs"),
+                                 ("walls", [w for w in listed if not w["mesh"]], "walls"),
+                                 ("meshes", [w for w in listed if w["mesh"]], "mesh walls")):
+            if kind in late and _found_late(rows, late[kind][0]):
+                g, why = late[kind]
+                said_late = (f"{why}: no eps is given for {what} " + ("at any speed" if g == 0 else "above that speed")
+                             + ", where the contact is not the law's")
+                if said_late not in notes:
+                    notes.append(said_late)
         if any(loc in deck.doubtful_runs for loc, _ in runs):
             # settings read after a run from values the runs change: marked in each row, not only on stderr
             for row in pairs + walls:
@@ -1188,7 +1194,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
 
 
 def _found_late(rows: list, g_max: float) -> int:
-    """Takes the eps out of each row at the speeds above ``g_max`` (:func:`meeting.late_speed`), marking
+    """Takes the eps out of each row at the speeds above ``g_max`` (:func:`meeting.late_speeds`), marking
     them ``late`` (the row's ``late_above`` says where); how many rows it marked."""
     hit = 0
     for row in rows:

@@ -18,7 +18,7 @@ from dataclasses import replace
 from ..dialect.state import Deck, place
 
 __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact",
-           "group_types", "integrators", "late_speed", "rigid"]
+           "group_types", "integrators", "late_speeds", "rigid"]
 
 #: Fix styles that move the atoms of their group by integrating the forces on them
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
@@ -75,13 +75,20 @@ _PRESETS = {"fene": (0.0, 1.0, 1.0), "charmm": (0.0, 0.0, 0.0), "amber": (0.0, 0
 
 
 def neigh_modify(deck: Deck, words: list, loc, line: str) -> None:
-    """neigh_modify ... exclude STYLE args ...: the exclusions in force (``exclude none`` clears them);
-    and every, delay and check, how often the engine may rebuild its neighbour lists."""
+    """neigh_modify ... exclude STYLE args ...: the exclusions in force (``exclude none`` clears them),
+    ``include GROUP`` among them; and every, delay and check, how often the engine may rebuild its
+    neighbour lists."""
     k = 1
     while k < len(words):
         if words[k] in ("every", "delay", "check") and k + 1 < len(words):
             value = words[k + 1]
             deck.neigh = {**deck.neigh, words[k]: int(value) if value.isdigit() else value}
+            k += 2
+        elif words[k] == "include" and k + 1 < len(words):
+            # lists built for one group's atoms only (field round 16, n06: two spheres outside it
+            # passed through each other in LAMMPS); "include all" lifts it
+            kept = [e for e in deck.excludes if e[2][0] != "include"]
+            deck.excludes = kept + ([] if words[k + 1] == "all" else [(loc, line, ["include", words[k + 1]])])
             k += 2
         elif words[k] == "exclude" and k + 1 < len(words):
             style = words[k + 1]
@@ -99,47 +106,93 @@ def neigh_modify(deck: Deck, words: list, loc, line: str) -> None:
 _DEFAULT_SKIN = {"si": 0.001, "cgs": 0.1, "micro": 0.1, "nano": 0.1, "lj": 0.3, "real": 2.0, "metal": 2.0}
 
 
-def late_speed(deck: Deck) -> tuple[float, str] | None:
-    """(g, why) above which two bodies approaching at relative speed g may first be in each other's
-    neighbour list when they already overlap, where ``neigh_modify`` lets the engine rebuild its
-    lists only every K > 1 steps (every, delay): between two builds they close by g K dt, and a pair
-    beyond the skin at a build is not looked at until the next (field round 15, D2: ``neighbor 1e-5
-    bin`` with ``neigh_modify every 200 check no``: LAMMPS measured 5.99 to 0.82 by the gap at the
-    start, where the contact gives 0.4025). None where K is 1, or the step or skin is unknown.
+def late_speeds(deck: Deck) -> dict:
+    """Where two bodies may first be in each other's neighbour list when they already overlap, so
+    that the engine's eps is not the law's: for each kind of row ("pairs" of spheres, "walls" found
+    through the lists, "meshes"), (g, why): no eps holds above the relative speed g, 0 meaning at
+    every speed. Read from each run's ``neighbor`` skin, ``neigh_modify`` every K, delay D and check,
+    and time step (the stage's own and ``lists_seen``, those of later runs with the same contacts);
+    the smallest g of them. Measured in LAMMPS and LIGGGHTS (field rounds 15 and 16):
+
+    * ``check no``: the lists are rebuilt every T steps, T = K rounded up past D; a pair beyond the
+      skin at a build closes by g T dt before the next: late above skin / (T dt) (``every 200 check
+      no``, skin 1e-5: 5.99 to 0.82 by the starting gap where the contact gives 0.4025).
+    * ``check yes`` with K > 1: a rebuild waits for an atom to have moved half the skin, seen at the
+      next of the checks K steps apart, and two spheres approaching each other each move half the
+      skin just as they touch: they may overlap for up to K - 1 steps unseen, at any speed (``every
+      10 check yes``: 0.498 to 0.722 by the starting gap at g = 0.05; ``every 2``: up to 0.516 where
+      the deck's step gives 0.498). A sphere against a body found through the lists, which stands
+      still, moves the half skin before it touches: late above skin / (2 K dt), and skin / (D dt).
+    * ``check yes`` with K = 1 and D > 0: nothing is looked at for D steps after a build: late above
+      skin / (D dt).
+
+    LIGGGHTS' mesh walls were found late below those speeds (0.9 times skin / (D dt), delay 10): half
+    of each bound, and at every speed where the spheres' pairs are.
 
     Parameters
     ----------
     deck : Deck
         The deck at the run audited (its time step, neighbor skin, neigh_modify settings, units and
-        engine).
+        engine, and ``lists_seen``).
 
     Returns
     -------
-    tuple of (float, str), or None
-        The speed and the sentence that says why.
+    dict
+        Kind -> (g, why) for each kind of row that may be found late; empty where none is.
 
     Examples
     --------
     >>> d = Deck(dt=1e-5, skin=1e-5, neigh={"every": 200, "delay": 0, "check": "no"}, units="si")
-    >>> late_speed(d)[0]
+    >>> late_speeds(d)["pairs"][0]
     0.005
-    >>> late_speed(Deck(dt=1e-5, skin=1e-3, units="si")) is None
-    True
-    >>> late_speed(Deck(code="LIGGGHTS", dt=1e-5, skin=1e-3, units="si"))[0]      # its delay 10
+    >>> late_speeds(Deck(dt=1e-5, skin=1e-3, units="si"))
+    {}
+    >>> late_speeds(Deck(code="LIGGGHTS", dt=1e-5, skin=1e-3, units="si"))["pairs"][0]     # its delay 10
     10.0
+    >>> late = late_speeds(Deck(dt=1e-5, skin=1e-4, neigh={"every": 10}, units="si"))
+    >>> late["pairs"][0], late["walls"][0]
+    (0.0, 0.5)
     """
+    found: dict = {}
+    for neigh, skin, dt in [(deck.neigh, deck.skin, deck.dt), *deck.lists_seen]:
+        for kind, (g, why) in _late_in(deck, neigh, skin, dt).items():
+            if kind not in found or g < found[kind][0]:
+                found[kind] = (g, why)
+    return found
+
+
+def _late_in(deck: Deck, neigh: dict, skin, dt) -> dict:
+    """:func:`late_speeds` of one run's settings."""
     # the defaults: LAMMPS' every 1 delay 0 check yes; LIGGGHTS 3.8.0 keeps the older delay 10
-    every, delay = deck.neigh.get("every", 1), deck.neigh.get("delay", 10 if deck.code == "LIGGGHTS" else 0)
-    if not isinstance(every, int) or not isinstance(delay, int):
-        return None
-    steps = max(every, delay, 1)
-    skin = deck.skin if deck.skin is not None else _DEFAULT_SKIN.get(deck.units or "lj")
-    if steps <= 1 or skin is None or not deck.dt:
-        return None
-    why = (f"neigh_modify every {every} delay {delay} check {deck.neigh.get('check', 'yes')} with a skin of {skin:g}: "
-           f"the engine rebuilds its neighbour lists at most every {steps} steps, so two bodies approaching faster "
-           f"than skin / ({steps} dt) = {skin / (steps * deck.dt):.4g} may first meet already overlapping")
-    return skin / (steps * deck.dt), why
+    every, delay = neigh.get("every", 1), neigh.get("delay", 10 if deck.code == "LIGGGHTS" else 0)
+    check = neigh.get("check", "yes")
+    skin = skin if skin is not None else _DEFAULT_SKIN.get(deck.units or "lj")
+    if not isinstance(every, int) or not isinstance(delay, int) or skin is None or not dt:
+        return {}
+    every = max(every, 1)
+    said = f"neigh_modify every {every} delay {delay} check {check} with a skin of {skin:g}"
+    if check == "no":
+        steps = every * max(1, -(-delay // every))
+        if steps <= 1:
+            return {}
+        g = skin / (steps * dt)
+        why = (f"{said}: the engine rebuilds its neighbour lists every {steps} steps without looking, so two bodies "
+               f"approaching faster than skin / ({steps} dt) = {g:.4g} may first meet already overlapping")
+        return {"pairs": (g, why), "walls": (g, why), "meshes": (g / 2, why)}
+    if every > 1:
+        wall = min(skin / (2 * every * dt), skin / (delay * dt) if delay else float("inf"))
+        why = (f"{said}: the engine looks at its neighbour lists only every {every} steps, rebuilding them once an "
+               f"atom has moved half the skin, so two approaching spheres may overlap for up to {every - 1} steps "
+               "before their contact is seen, at any speed")
+        wall_why = (f"{said}: a sphere approaching a still body faster than {wall:.4g} may first meet it already "
+                    "overlapping")
+        return {"pairs": (0.0, why), "walls": (wall, wall_why), "meshes": (0.0, why)}
+    if delay <= 1:
+        return {}
+    g = skin / (delay * dt)
+    why = (f"{said}: the engine looks at its neighbour lists no sooner than {delay} steps after a build, so two "
+           f"bodies approaching faster than skin / ({delay} dt) = {g:.4g} may first meet already overlapping")
+    return {"pairs": (g, why), "walls": (g, why), "meshes": (g / 2, why)}
 
 
 def special_bonds(deck: Deck, words: list, where: str, line: str) -> None:
@@ -219,7 +272,13 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
     """(loc, text, why) where the engine never makes a contact between types i and j, or cannot be
     known to make it; None where it does."""
     for loc, line, (style, *args) in deck.excludes:
-        if style == "type" and len(args) == 2:
+        if style == "include":
+            held = group_types(deck, args[0])
+            if held is None or i not in held or j not in held:
+                return (*loc, line, f"types {i} {j}: neigh_modify include {args[0]}: the engine builds its neighbour "
+                                    "lists for that group's atoms only, and a pair with an atom outside it (or one the "
+                                    "audit cannot type) may never meet: not audited")
+        elif style == "type" and len(args) == 2:
             a, b = (_excluded_types(deck, x) for x in args)
             if a is None or b is None:
                 return (*loc, line, f"types {i} {j}: the audit cannot read the excluded types: not audited")

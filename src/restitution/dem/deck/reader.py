@@ -970,6 +970,12 @@ def _stage(deck: Deck, loc, line: str) -> None:
     if deck.stages and deck.stages[-1][2] == key:
         deck.stages[-1][0].append((loc, line))
         _coarsest_dt(deck.stages[-1][1], deck)
+        # the lists that find its contacts may be rebuilt otherwise in this run (field round 16, n07:
+        # neighbor and neigh_modify changed before a second run with the same contacts)
+        seen = (dict(deck.neigh), deck.skin, deck.dt)
+        stage = deck.stages[-1][1]
+        if seen != (stage.neigh, stage.skin, stage.dt) and seen not in stage.lists_seen:
+            stage.lists_seen.append(seen)
         return
     if not deck.code:
         return                           # no pair style yet: no contact to audit in this run

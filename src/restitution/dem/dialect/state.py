@@ -156,9 +156,12 @@ class Deck:
     dt_reset: tuple = ()                          # (loc, text, fix ID) of a fix dt/reset in force, else ()
     dt_reset_runs: int = 0                        # the runs recorded when that fix was defined
     skin: float | None = None                     # the neighbor command's skin, None where it has none
-    # neigh_modify's every, delay and check as set so far (meeting.late_speed: the engine's defaults
+    # neigh_modify's every, delay and check as set so far (meeting.late_speeds: the engine's defaults
     # where the deck sets none)
     neigh: dict = field(default_factory=dict)
+    # (neigh, skin, dt) of the later runs a stage holds (same contacts, other lists or step), for
+    # meeting.late_speeds
+    lists_seen: list = field(default_factory=list)
     regions: dict = field(default_factory=dict)   # region ID -> its words as the engine ran them
     lattice: list = field(default_factory=list)   # the words of the last lattice command ([]: none)
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
