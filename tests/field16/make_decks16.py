@@ -204,6 +204,40 @@ deck("s03c_fixset_diameter_grows_hertz", "# as s03b under hertz/material (the si
      + BASEH + TWO + "variable d atom 0.004+0.2*time\nfix fs all set 100 0 type 1 diameter v_d\nrun 1000\nrun 1000\n")
 
 
+# ---------------------------------------------------------------- the sandbox
+deck("x01_jump_to_file_with_shell", "# jump to another file beside the deck, which runs shell, print to a file above, write_data to /tmp and a run\n"
+     + BASE + TWO + "jump part2.in\n",
+     extra={"part2.in": "shell touch f16_jumped.txt\nprint \"x\" file ../../f16_jump_print.txt\nwrite_data /tmp/f16_jump.data\nrun 100\n"})
+deck("x02_include_proc_environ", "# include /proc/self/environ (a file of size 0 that reads the environment)\n"
+     + BASE + TWO + "include /proc/self/environ\nrun 100\n")
+deck("x03_variable_python", "# a python-style variable whose function writes /tmp/f16_pyvar.txt, used in pair_coeff\n"
+     + BASE + TWO + 'python f return v_p format f here """\ndef f():\n    open("/tmp/f16_pyvar.txt", "w").write("x")\n    return 2000.0\n"""\n'
+     + "variable p python f\npair_coeff * * hooke ${p} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
+deck("x04_molecule_dev_zero_absolute", "# molecule file /dev/zero by its absolute path\n" + BASE + TWO + "molecule m /dev/zero\nrun 100\n")
+deck("x05_write_restart_parent_then_read", "# write_restart ../f16_parent.restart, clear, read_restart of it, new coefficients\n"
+     + BASE + TWO + "run 100\nwrite_restart ../f16_parent.restart\nclear\nread_restart ../f16_parent.restart\n"
+     + "pair_style granular\npair_coeff * * hooke 3000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + "fix integ all nve/sphere\ncomm_modify vel yes\nrun 100\n")
+deck("x06_shell_putenv_getenv", "# shell putenv F16K=4000 (a builtin the engine does), then a getenv variable in pair_coeff\n"
+     + BASE + TWO + "shell putenv F16K=4000\nvariable k getenv F16K\npair_coeff * * hooke ${k} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
+deck("x07_include_self_recursion", "# include loop.in, which includes itself: LAMMPS' own nesting limit\n"
+     + BASE + TWO + "include loop.in\nrun 100\n", extra={"loop.in": "include loop.in\n"})
+deck("x08_infinite_jump_loop", "# label and jump SELF for ever, no run: the engine by hand never ends\n"
+     + BASE + TWO + "label spin\nvariable a equal 1\njump SELF spin\nrun 100\n", args="--budget 5")
+deck("x09_fix_ave_time_file_proc", "# fix ave/time with its file in /proc/self/fd/1 and a fix print to /dev/full\n"
+     + BASE + TWO + "compute ke all ke\nfix at all ave/time 10 10 100 c_ke file /proc/self/fd/1\nfix pr all print 10 \"x\" file /dev/full\nrun 100\n")
+deck("x10_include_dotdot_chain", "# include ../../../etc/hostname (four folders up by ..)\n" + BASE + TWO + "include ../../../../etc/hostname\nrun 100\n")
+deck("x11_read_dump_of_own_dump_via_rerun", "# rerun of a dump the deck names (rerun is skipped): then run\n"
+     + BASE + TWO + "rerun nothere.dump dump x y z\nrun 100\n")
+deck("x12_fix_print_file_then_include", "# fix print writes a pair_coeff line to f16p.in during a run; the deck then includes it\n"
+     + BASE + TWO + 'fix pr all print 1 "pair_coeff * * hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3" file f16p.in screen no\nrun 1\nunfix pr\ninclude f16p.in\nrun 100\n')
+
+deck("n21_every5_checkyes_default_skin", "# a usual-looking deck: default skin (1 mm in si), neigh_modify every 5 delay 0 check yes: audit's bound 20 m/s\n"
+     + BASE + TWO4 + "neigh_modify every 5 delay 0 check yes\nrun 1000\n", g=1)
+deck("n22_every2_delay10_checkyes", "# neigh_modify every 2 delay 10 check yes, skin 1e-4: audit's bound skin/(10 dt) = 1 m/s\n"
+     + BASE + TWO4 + NB + "neigh_modify every 2 delay 10 check yes\nrun 1000\n", g="0.3 0.6 0.9")
+
+
 def write(name):
     text, g, args, extra = DECKS[name]
     d = os.path.join(D, name)
