@@ -237,6 +237,11 @@ deck("n21_every5_checkyes_default_skin", "# a usual-looking deck: default skin (
 deck("n22_every2_delay10_checkyes", "# neigh_modify every 2 delay 10 check yes, skin 1e-4: audit's bound skin/(10 dt) = 1 m/s\n"
      + BASE + TWO4 + NB + "neigh_modify every 2 delay 10 check yes\nrun 1000\n", g="0.3 0.6 0.9")
 
+deck("t01_timestep_raised_stage2", "# run 1 at dt 1e-5, then timestep 1e-4 (contact settings unchanged), run 2: 4.7 steps per contact there\n"
+     + BASE + TWO4 + "run 1000\ntimestep 1e-4\nrun 1000\n", g=1)
+deck("t02_timestep_raised_with_stale_lists", "# every 10 check no, skin 1e-4, run 1 at dt 1e-6 (bound 10 m/s); timestep 1e-5 for run 2 (bound 1 m/s)\n"
+     + BASE.replace("timestep 1e-5", "timestep 1e-6") + TWO4 + NB + "neigh_modify every 10 delay 0 check no\nrun 1000\ntimestep 1e-5\nrun 1000\n", g="0.5 2 5")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]

@@ -79,6 +79,9 @@ deck("L19_set_loop_diameter", "# set type 1 diameter from an index variable in a
 deck("L20_mesh_stale_check_no_every5", "# a mesh floor with neigh_modify delay 0 every 5 check no, skin 1e-4 (bound 2 m/s)\n"
      + nhead("neighbor 1e-4 bin\nneigh_modify delay 0 every 5 check no\n") + MAT3 + E3 + HERTZ + MESH + ATOMS + RUN, g="1 1.5 1.9", files=PL)
 
+deck("L21_timestep_raised_stage2", "# LIGGGHTS: run at dt 1e-5, then timestep 5e-5 with nothing else changed, run again\n"
+     + head() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "timestep 5e-5\nrun 1000\n")
+
 
 def write(name):
     text, g, files, data = DECKS[name]

@@ -55,6 +55,38 @@ def build():
     S[d] = {"engine": "lammps", "lines": LL, "checks": [W(1, 0.002, M2, wall=f"fix xw all wall/gran granular {HM} xplane 0 NULL", wall_id="xw", axis="x")]}
     d = "b01_rigid_small_mol_plus_free"
     lam(d, [P(2, 2, 0.003, M3), W(2, 0.003, M3)])
+    d = "R01_granudrum_liggghts_basics"
+    mat = ["hard_particles yes", "soft_particles yes",
+           "fix m1 all property/global youngsModulus peratomtype 5e6 5e6", "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3",
+           "fix m3 all property/global coefficientFriction peratomtypepair 2 0.6 0.6 0.6 0",
+           "fix m4 all property/global coefficientRollingFriction peratomtypepair 2 0.5 0.5 0.5 0",
+           "fix m5 all property/global coefficientRestitution peratomtypepair 2 0.3 0.3 0.3 0.1",
+           "fix m6 all property/global cohesionEnergyDensity peratomtypepair 2 0 0 0 0",
+           "pair_style gran model hertz tangential history cohesion sjkr rolling_friction cdt", "pair_coeff * *"]
+    rho = 1580
+    mm = lambda r: rho * 4 / 3 * 3.141592653589793 * r ** 3
+    S[d] = {"engine": "liggghts", "ntypes": 2, "lines": mat, "checks": [
+        P(1, 1, 0.000525, mm(0.000525), 0.000525, mm(0.000525), speed_idx=[0, 2, 4]),
+        P(1, 1, 0.000525, mm(0.000525), 0.00075, mm(0.00075), speed_idx=[2])]}
+    import importlib.util as _u
+    _m = _u.spec_from_file_location("ml14", os.path.join(HERE, "..", "field14", "make_ldecks.py"))
+    ML = _u.module_from_spec(_m); _m.loader.exec_module(ML)
+    mat3 = ML.MAT3.strip().splitlines()
+    lig = lambda n, checks, lines: S.__setitem__(n, {"engine": "liggghts", "ntypes": 3, "lines": lines, "checks": checks})
+    e3 = lambda e11: [f"fix m3 all property/global coefficientRestitution peratomtypepair 3 {e11} 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8"]
+    hz = ["pair_style gran model hertz tangential history", "pair_coeff * *"]
+    lig("L11_loop_e_from_index", [LP("L11_loop_e_from_index", 1, 1, stage=1)], mat3 + e3(0.3) + hz)
+    lig("L12_restart_in_loop", [LP("L12_restart_in_loop", 1, 1, stage=2)], mat3 + e3(0.5) + hz)
+    st = ML.STIFF3.strip().splitlines()
+    st[0] = "fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000"
+    lig("L17_hooke_stiffness_peratomtype_loop", [LP("L17_hooke_stiffness_peratomtype_loop", 1, 1, stage=2),
+        LW("L17_hooke_stiffness_peratomtype_loop", 1, wall="fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0", stage=2)],
+        mat3 + st + ["pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"])
+    lig("L14_peratomtype_from_variables", [LP("L14_peratomtype_from_variables", 1, 2)],
+        ["fix m1 all property/global youngsModulus peratomtype 5e6 1e7 5e6", "fix m2 all property/global poissonsRatio peratomtype 0.25 0.25 0.25",
+         "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5",
+         "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.55 0.7 0.55 0.4 0.45 0.7 0.45 0.8",
+         "pair_style gran model hooke tangential history", "pair_coeff * *", "fix m11 all property/global characteristicVelocity scalar 1.0"])
     return S
 
 
