@@ -3,7 +3,7 @@ usual `neighbor 0.002 bin` / `neigh_modify delay 0`), two spheres head-on or one
 mesh floor, from many starting gaps, read after one continuous run long enough to meet and part (no gravity).
 Materials: round 14's (E 5e6, nu 0.3, e matrix 0.6 0.5 0.7 / 0.5 0.4 0.45 / 0.7 0.45 0.8, hertz). No import from the
 project. usage: python liggghts_neighbor16.py SPEC.json (keys: neigh [lines], g [..], gaps {"lin": [a, b, n]},
-t1 t2 r1 r2 rho1 rho2 dt, wall: "prim" | "mesh" (then t1 alone falls onto z = 0), stl (the mesh file, for mesh))"""
+t1 t2 r1 r2 rho1 rho2 dt, post (lines after the atoms), wall: "prim" | "mesh" (then t1 alone falls onto z = 0), stl (the mesh file, for mesh))"""
 import json, math, os, shutil, subprocess, sys, tempfile
 
 MAT = """fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
@@ -51,6 +51,7 @@ velocity a2 set {-g * m1 / (m1 + m2)} 0 0
 variable e equal (vx[2]-vx[1])/{g}
 variable sep equal x[2]-x[1]-{r1 + r2}
 """
+    txt += "".join(ln + "\n" for ln in s.get("post", []))
     txt += f"timestep {s['dt']}\nfix integr all nve/sphere\nrun {n}\nprint \"F16EPS ${{e}} ${{sep}}\"\n"
     return txt
 

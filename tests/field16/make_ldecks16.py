@@ -82,6 +82,12 @@ deck("L20_mesh_stale_check_no_every5", "# a mesh floor with neigh_modify delay 0
 deck("L21_timestep_raised_stage2", "# LIGGGHTS: run at dt 1e-5, then timestep 5e-5 with nothing else changed, run again\n"
      + head() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "timestep 5e-5\nrun 1000\n")
 
+deck("L22_neigh_include_group", "# LIGGGHTS atom_modify first g1 + neigh_modify include g1 (g1 = type 1): pairs of two type-2 spheres in no list\n"
+     + head() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + "create_atoms 2 single -0.03 0 0.01 units box\nset type 2 diameter 0.006 density 1500\n"
+     + "group g1 type 1\natom_modify first g1\nneigh_modify include g1\n" + RUN)
+deck("L23_delay5_skin1e-4_near", "# LIGGGHTS neigh_modify delay 5 (every 1 check yes), skin 1e-4: bound 2 m/s; speeds near it\n"
+     + nhead("neighbor 1e-4 bin\nneigh_modify delay 5\n") + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN, g="1.5 1.9 2.1")
+
 
 def write(name):
     text, g, files, data = DECKS[name]
