@@ -87,6 +87,12 @@ def build():
          "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5",
          "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.55 0.7 0.55 0.4 0.45 0.7 0.45 0.8",
          "pair_style gran model hooke tangential history", "pair_coeff * *", "fix m11 all property/global characteristicVelocity scalar 1.0"])
+    lam("x06_shell_putenv_getenv", [P(1, 2, 0.002, M2, 0.003, M3)], lines=["pair_style granular", f"pair_coeff * * hooke 4000 3000 {K}"])
+    lam("v03_avecorrelate_if", [P(1, 2, 0.002, M2, 0.003, M3, stage=2)], lines=["pair_style granular", f"pair_coeff * * hooke 2000 6000 {K}"])
+    lam("v04_fix_vector_if", [P(1, 2, 0.002, M2, 0.003, M3, stage=2)], lines=["pair_style granular", f"pair_coeff * * hooke 5000 3000 {K}"])
+    lam("v05_avetime_running_loop", [P(1, 2, 0.002, M2, 0.003, M3, stage=2)], lines=["pair_style granular", f"pair_coeff * * hooke 2000 1500 {K}"])
+    lam("x05_write_restart_parent_then_read", [P(1, 2, 0.002, M2, 0.003, M3, stage=2)], lines=["pair_style granular", f"pair_coeff * * hooke 3000 3000 {K}"])
+    lam("n21_every5_checkyes_default_skin", [P(1, 2, 0.002, M2, 0.002, M2, speed_idx=[2], at_dt=True)])
     return S
 
 
