@@ -242,6 +242,19 @@ deck("t01_timestep_raised_stage2", "# run 1 at dt 1e-5, then timestep 1e-4 (cont
 deck("t02_timestep_raised_with_stale_lists", "# every 10 check no, skin 1e-4, run 1 at dt 1e-6 (bound 10 m/s); timestep 1e-5 for run 2 (bound 1 m/s)\n"
      + BASE.replace("timestep 1e-5", "timestep 1e-6") + TWO4 + NB + "neigh_modify every 10 delay 0 check no\nrun 1000\ntimestep 1e-5\nrun 1000\n", g="0.5 2 5")
 
+deck("s12_fixset_mass_beyond_step_budget", "# fix set type 1 mass 2e-4 every 10 steps in a run of 2e7 steps (beyond the audit's 1e7), unfix, run\n"
+     + BASE + TWO + "variable mm atom 2e-4\nfix fs all set 10 0 type 1 mass v_mm\nrun 20000000\nunfix fs\nrun 100\n")
+deck("s13_atom_swap_beyond_step_budget", "# atom/swap types 1 2 every 10 steps in a run of 2e7+5 steps (beyond 1e7), unfix, run\n"
+     + BASE.replace("comm_modify vel yes\n", "comm_modify vel yes\natom_modify map yes\n") + TWO
+     + "fix sw all atom/swap 10 1 12345 1.0 types 1 2\nrun 20000005\nunfix sw\nrun 100\n")
+
+deck("n23_hertzmaterial_every10_checkyes", "# hertz/material viscoelastic, every 10 delay 0 check yes, skin 1e-4 (audit's bound 1 m/s)\n"
+     + BASEH + TWO4 + NB + "neigh_modify every 10 delay 0 check yes\nrun 1000\n", g="0.1 0.5")
+deck("n24_granhertzhistory_every10_checkyes", "# pair gran/hertz/history 2e7 NULL 3000 NULL 0.5 1, every 10 delay 0 check yes, skin 1e-4 (bound 1 m/s)\n"
+     + head() + "pair_style gran/hertz/history 2e7 NULL 3000 NULL 0.5 1\npair_coeff * *\n" + GRAV
+     + "fix floor all wall/gran hertz/history 2e7 NULL 3000 NULL 0.5 1 zplane 0 NULL\n" + TAIL + TWO4 + NB
+     + "neigh_modify every 10 delay 0 check yes\nrun 1000\n", g="0.1 0.5")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]

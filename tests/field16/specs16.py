@@ -93,6 +93,9 @@ def build():
     lam("v05_avetime_running_loop", [P(1, 2, 0.002, M2, 0.003, M3, stage=2)], lines=["pair_style granular", f"pair_coeff * * hooke 2000 1500 {K}"])
     lam("x05_write_restart_parent_then_read", [P(1, 2, 0.002, M2, 0.003, M3, stage=2)], lines=["pair_style granular", f"pair_coeff * * hooke 3000 3000 {K}"])
     lam("n21_every5_checkyes_default_skin", [P(1, 2, 0.002, M2, 0.002, M2, speed_idx=[2], at_dt=True)])
+    lam("n24_granhertzhistory_every10_checkyes", [P(1, 2, 0.002, M2, 0.002, M2, speed_idx=[1])],
+        lines=["pair_style gran/hertz/history 2e7 NULL 3000 NULL 0.5 1", "pair_coeff * *"])
+    lam("n23_hertzmaterial_every10_checkyes", [P(1, 2, 0.002, M2, 0.002, M2, speed_idx=[1])], lines=LH)
     return S
 
 
