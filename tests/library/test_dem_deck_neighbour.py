@@ -86,3 +86,20 @@ def test_neigh_modify_include_names_the_pairs_outside_its_group(tmp_path):
     assert status == 0, err
     assert {tuple(r["types"]) for r in got["pairs"]} == {(1, 1)}
     assert "types 2 2: neigh_modify include g1" in err and "types 1 2: neigh_modify include g1" in err, err
+
+
+FIELD16 = Path(__file__).resolve().parents[1] / "field16" / "decks"
+
+
+@needs_liggghts
+@pytest.mark.dem
+def test_liggghts_walls_of_spheres_outside_an_include_group_are_named():
+    """LIGGGHTS finds its walls through the same lists (field round 16, L22): a type-2 sphere outside
+    ``neigh_modify include g1`` was thrown off the floor at 43 times its impact speed, where the audit
+    printed the law's 0.45; now its wall row is named, type 1's kept."""
+    status, got, err = _json(FIELD16 / "L22_neigh_include_group" / "in.deck", 1.0)
+    assert status == 0, err
+    assert "type 2: neigh_modify include g1" in err and "may never meet the wall" in err, err
+    assert {w["types"][0] for w in got["walls"]} == {1}
+    assert {tuple(r["types"]) for r in got["pairs"]} == {(1, 1)}
+

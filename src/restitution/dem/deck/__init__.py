@@ -93,7 +93,7 @@ from pathlib import Path
 from ...core.collision import StickError
 from ...core.errors import ParameterError
 from .beside import ADAPT, effects
-from .meeting import excluded, held_contact, integrators, late_speeds, motion
+from .meeting import excluded, held_contact, integrators, late_speeds, motion, unlisted
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, PairNotMapped, place, spheres
@@ -348,6 +348,10 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                 if kind != "free":
                     unknown.append((*loc, " ".join(words), f"type {t}: {why}: its contact with the wall is not "
                                                            "audited"))
+                    continue
+                # LAMMPS' fix wall/gran loops over its atoms, no list; LIGGGHTS' walls use its lists
+                if deck.code != "LAMMPS" and (why := unlisted(deck, t)) is not None:
+                    unknown.append((*loc, " ".join(words), why))
                     continue
                 if t not in deck.sizes or t in deck.shapes:
                     spheres(deck, t, t)          # one line where the type lacks a radius or a density, or is no sphere

@@ -18,7 +18,7 @@ from dataclasses import replace
 from ..dialect.state import Deck, place
 
 __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact",
-           "group_types", "integrators", "late_speeds", "rigid"]
+           "group_types", "integrators", "late_speeds", "rigid", "unlisted"]
 
 #: Fix styles that move the atoms of their group by integrating the forces on them
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
@@ -266,6 +266,37 @@ def _excluded_types(deck: Deck, value: str):
     if value.isdigit():
         return int(value)
     return deck.labels.get(value)
+
+
+def unlisted(deck: Deck, t: int) -> str | None:
+    """Why spheres of type t may be in no neighbour list (``neigh_modify include GROUP`` with t
+    possibly outside the group), or None. LIGGGHTS finds its walls through the same lists: a sphere
+    outside the group meets no wall there either (field round 16, L22: LIGGGHTS threw a type-2 sphere
+    off its floor at 43 times its impact speed, where the audit printed the law's 0.45).
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck at the run audited.
+    t : int
+        The sphere's type.
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> d = Deck(ntypes=2, groups={"g1": {1}}, excludes=[((None, 3), "neigh_modify include g1", ["include", "g1"])])
+    >>> unlisted(d, 1) is None, unlisted(d, 2)[:36]
+    (True, 'type 2: neigh_modify include g1: the')
+    """
+    for _, _, (style, *args) in deck.excludes:
+        if style == "include" and ((held := group_types(deck, args[0])) is None or t not in held):
+            return (f"type {t}: neigh_modify include {args[0]}: the engine builds its neighbour lists for that group's "
+                    "atoms only, and finds its walls through them: a sphere outside it may never meet the wall, "
+                    "not audited")
+    return None
 
 
 def excluded(deck: Deck, i: int, j: int) -> tuple | None:

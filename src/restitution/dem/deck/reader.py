@@ -52,6 +52,8 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "enforce2d", "move",
                      "ave/time", "ave/atom", "print", "move/mesh", "halt",
+                     # averaging fixes push nothing (field round 16, v01b v03 v04: "may add forces" said)
+                     "ave/chunk", "ave/correlate", "ave/correlate/long", "ave/histo", "ave/histo/weight", "vector",
                      "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
                      "nve/noforce"}
 #: Fixes that push no atom but change what the runs see, each with what it does: named as such, not
