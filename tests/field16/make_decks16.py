@@ -255,6 +255,13 @@ deck("n24_granhertzhistory_every10_checkyes", "# pair gran/hertz/history 2e7 NUL
      + "fix floor all wall/gran hertz/history 2e7 NULL 3000 NULL 0.5 1 zplane 0 NULL\n" + TAIL + TWO4 + NB
      + "neigh_modify every 10 delay 0 check yes\nrun 1000\n", g="0.1 0.5")
 
+deck("p01_rolling_none_twisting_none", "# pair_coeff and wall with rolling none and twisting none (LAMMPS 2025 accepts none for either)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK} rolling none twisting none\n" + GRAV
+     + f"fix floor all wall/gran granular {HK} rolling none twisting none zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
+deck("p02_damping_none_heat_none", "# hooke with damping none (LAMMPS: no normal damping) and heat none on the pair\n"
+     + head() + "pair_style granular\npair_coeff * * hooke 2000 0 damping none tangential linear_nohistory 1 0.3 heat none\n" + GRAV
+     + "fix floor all wall/gran granular hooke 2000 0 damping none tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]
