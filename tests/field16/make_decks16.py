@@ -262,6 +262,11 @@ deck("p02_damping_none_heat_none", "# hooke with damping none (LAMMPS: no normal
      + head() + "pair_style granular\npair_coeff * * hooke 2000 0 damping none tangential linear_nohistory 1 0.3 heat none\n" + GRAV
      + "fix floor all wall/gran granular hooke 2000 0 damping none tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
 
+deck("x13_shell_rm_mv_mkdir_outside", "# shell builtins aimed at real files: rm a file beside the deck and one in a sibling deck folder, mv the deck,\n"
+     "# mkdir above; then run. The files must still be there after the audit.\n"
+     + BASE + TWO + "shell rm victim.txt\nshell rm ../x12_fix_print_file_then_include/G\nshell mkdir ../../f16_made_dir\nshell mv in.deck gone.deck\nrun 100\n",
+     extra={"victim.txt": "keep me\n"})
+
 
 def write(name):
     text, g, args, extra = DECKS[name]
