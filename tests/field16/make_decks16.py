@@ -267,6 +267,11 @@ deck("x13_shell_rm_mv_mkdir_outside", "# shell builtins aimed at real files: rm 
      + BASE + TWO + "shell rm victim.txt\nshell rm ../x12_fix_print_file_then_include/G\nshell mkdir ../../f16_made_dir\nshell mv in.deck gone.deck\nrun 100\n",
      extra={"victim.txt": "keep me\n"})
 
+deck("n25_run_every_neigh_modify", "# run 1000 every 500 \"neigh_modify every 10 delay 0 check no\": from the second part on lists every 10 steps (bound 1)\n"
+     + BASE + TWO4 + NB + 'run 1000 every 500 "neigh_modify every 10 delay 0 check no"\n', g="0.5 2")
+deck("n26_if_branch_neigh_after_count", "# after a run, an if on a count sets every 20 check no and skin 1e-5 (bound 0.05); run 2 with the same contact\n"
+     + BASE + TWO4 + 'run 100\nvariable n equal count(all)\nif "${n} > 1" then "neighbor 1e-5 bin" "neigh_modify every 20 delay 0 check no"\nrun 1000\n', g=1)
+
 
 def write(name):
     text, g, args, extra = DECKS[name]
