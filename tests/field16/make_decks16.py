@@ -272,6 +272,11 @@ deck("n25_run_every_neigh_modify", "# run 1000 every 500 \"neigh_modify every 10
 deck("n26_if_branch_neigh_after_count", "# after a run, an if on a count sets every 20 check no and skin 1e-5 (bound 0.05); run 2 with the same contact\n"
      + BASE + TWO4 + 'run 100\nvariable n equal count(all)\nif "${n} > 1" then "neighbor 1e-5 bin" "neigh_modify every 20 delay 0 check no"\nrun 1000\n', g=1)
 
+deck("x14_write_data_into_usr_then_read", "# write_data /usr/f16_x14.data, clear, read_data of it (a system folder the view binds read-only)\n"
+     + BASE + TWO + "run 10\nwrite_data /usr/f16_x14.data\nclear\nunits si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\n"
+     + "read_data /usr/f16_x14.data\npair_style granular\npair_coeff * * hooke 3000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + "fix integ all nve/sphere\ntimestep 1e-5\nrun 10\n")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]
