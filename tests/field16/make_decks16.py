@@ -277,6 +277,10 @@ deck("x14_write_data_into_usr_then_read", "# write_data /usr/f16_x14.data, clear
      + "read_data /usr/f16_x14.data\npair_style granular\npair_coeff * * hooke 3000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
      + "fix integ all nve/sphere\ntimestep 1e-5\nrun 10\n")
 
+deck("n27_cutoff_keyword_widens_lists", "# pair_coeff ... cutoff 0.006 (contact at 0.004): lists hold pairs within cutoff + skin; every 10 check no, skin 1e-4\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK} cutoff 0.006\n" + GRAV + FLOOR + TAIL + TWO4 + NB
+     + "neigh_modify every 10 delay 0 check no\nrun 1000\n", g="0.5 2 5")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]
