@@ -255,6 +255,32 @@ deck("n24_granhertzhistory_every10_checkyes", "# pair gran/hertz/history 2e7 NUL
      + "fix floor all wall/gran hertz/history 2e7 NULL 3000 NULL 0.5 1 zplane 0 NULL\n" + TAIL + TWO4 + NB
      + "neigh_modify every 10 delay 0 check yes\nrun 1000\n", g="0.1 0.5")
 
+deck("p01_rolling_none_twisting_none", "# pair_coeff and wall with rolling none and twisting none (LAMMPS 2025 accepts none for either)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK} rolling none twisting none\n" + GRAV
+     + f"fix floor all wall/gran granular {HK} rolling none twisting none zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
+deck("p02_damping_none_heat_none", "# hooke with damping none (LAMMPS: no normal damping) and heat none on the pair\n"
+     + head() + "pair_style granular\npair_coeff * * hooke 2000 0 damping none tangential linear_nohistory 1 0.3 heat none\n" + GRAV
+     + "fix floor all wall/gran granular hooke 2000 0 damping none tangential linear_nohistory 1 0.3 zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
+
+deck("x13_shell_rm_mv_mkdir_outside", "# shell builtins aimed at real files: rm a file beside the deck and one in a sibling deck folder, mv the deck,\n"
+     "# mkdir above; then run. The files must still be there after the audit.\n"
+     + BASE + TWO + "shell rm victim.txt\nshell rm ../x12_fix_print_file_then_include/G\nshell mkdir ../../f16_made_dir\nshell mv in.deck gone.deck\nrun 100\n",
+     extra={"victim.txt": "keep me\n"})
+
+deck("n25_run_every_neigh_modify", "# run 1000 every 500 \"neigh_modify every 10 delay 0 check no\": from the second part on lists every 10 steps (bound 1)\n"
+     + BASE + TWO4 + NB + 'run 1000 every 500 "neigh_modify every 10 delay 0 check no"\n', g="0.5 2")
+deck("n26_if_branch_neigh_after_count", "# after a run, an if on a count sets every 20 check no and skin 1e-5 (bound 0.05); run 2 with the same contact\n"
+     + BASE + TWO4 + 'run 100\nvariable n equal count(all)\nif "${n} > 1" then "neighbor 1e-5 bin" "neigh_modify every 20 delay 0 check no"\nrun 1000\n', g=1)
+
+deck("x14_write_data_into_usr_then_read", "# write_data /usr/f16_x14.data, clear, read_data of it (a system folder the view binds read-only)\n"
+     + BASE + TWO + "run 10\nwrite_data /usr/f16_x14.data\nclear\nunits si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\n"
+     + "read_data /usr/f16_x14.data\npair_style granular\npair_coeff * * hooke 3000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + "fix integ all nve/sphere\ntimestep 1e-5\nrun 10\n")
+
+deck("n27_cutoff_keyword_widens_lists", "# pair_coeff ... cutoff 0.006 (contact at 0.004): lists hold pairs within cutoff + skin; every 10 check no, skin 1e-4\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK} cutoff 0.006\n" + GRAV + FLOOR + TAIL + TWO4 + NB
+     + "neigh_modify every 10 delay 0 check no\nrun 1000\n", g="0.5 2 5")
+
 
 def write(name):
     text, g, args, extra = DECKS[name]

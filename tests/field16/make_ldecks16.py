@@ -88,6 +88,13 @@ deck("L22_neigh_include_group", "# LIGGGHTS atom_modify first g1 + neigh_modify 
 deck("L23_delay5_skin1e-4_near", "# LIGGGHTS neigh_modify delay 5 (every 1 check yes), skin 1e-4: bound 2 m/s; speeds near it\n"
      + nhead("neighbor 1e-4 bin\nneigh_modify delay 5\n") + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN, g="1.5 1.9 2.1")
 
+deck("L24_clear_restores_delay10", "# skin 1e-4 and delay 0 in stage 1; write_restart, clear, read_restart, skin 1e-4 again without neigh_modify\n"
+     "# (LIGGGHTS' delay 10 is back: bound 1 m/s) and e changed (a new stage)\n"
+     + nhead("neighbor 1e-4 bin\nneigh_modify delay 0\n") + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN
+     + "write_restart f16.restart\nclear\nnewton off\nread_restart f16.restart\nneighbor 1e-4 bin\ncommunicate single vel yes\n" + MAT3
+     + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
+     + HERTZ + WALL3 + INT + "run 100\n", g="0.5 2")
+
 
 def write(name):
     text, g, files, data = DECKS[name]

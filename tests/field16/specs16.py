@@ -96,6 +96,14 @@ def build():
     lam("n24_granhertzhistory_every10_checkyes", [P(1, 2, 0.002, M2, 0.002, M2, speed_idx=[1])],
         lines=["pair_style gran/hertz/history 2e7 NULL 3000 NULL 0.5 1", "pair_coeff * *"])
     lam("n23_hertzmaterial_every10_checkyes", [P(1, 2, 0.002, M2, 0.002, M2, speed_idx=[1])], lines=LH)
+    d = "R02b_repose_no_twisting_none"
+    HMc = "hertz/material 1e7 0.5 0.3 tangential mindlin NULL 1.0 0.5 damping coeff_restitution rolling sds 1e3 10 0.1"
+    r, m = E(d, 1, 1)
+    S[d] = {"engine": "lammps", "ntypes": 1, "lines": ["pair_style granular", f"pair_coeff 1 1 {HMc}"],
+            "pre": ["region cyl cylinder z 0 0 0.025 -0.05 0.05 units box"],
+            "checks": [P(1, 1, r, m, stage=1), W(1, r, m, wall=f"fix floor all wall/gran granular {HMc} zplane 0.0 NULL", wall_id="floor", stage=2),
+                       W(1, r, m, wall=f"fix cylwall all wall/gran/region granular {HMc} region cyl", wall_id="cylwall", axis="x",
+                         z0=0.025 - r, zw=0.025, sign=-1, touch=r, face="curved", stage=1)]}
     return S
 
 
