@@ -349,8 +349,7 @@ def _wall_rows(deck: Deck, speeds, ran: bool) -> tuple[list, list]:
                     unknown.append((*loc, " ".join(words), f"type {t}: {why}: its contact with the wall is not "
                                                            "audited"))
                     continue
-                # LAMMPS' fix wall/gran loops over its atoms, no list; LIGGGHTS' walls use its lists
-                if deck.code != "LAMMPS" and (why := unlisted(deck, t)) is not None:
+                if (why := unlisted(deck, t)) is not None:
                     unknown.append((*loc, " ".join(words), why))
                     continue
                 if t not in deck.sizes or t in deck.shapes:

@@ -270,9 +270,9 @@ def _excluded_types(deck: Deck, value: str):
 
 def unlisted(deck: Deck, t: int) -> str | None:
     """Why spheres of type t may be in no neighbour list (``neigh_modify include GROUP`` with t
-    possibly outside the group), or None. LIGGGHTS finds its walls through the same lists: a sphere
-    outside the group meets no wall there either (field round 16, L22: LIGGGHTS threw a type-2 sphere
-    off its floor at 43 times its impact speed, where the audit printed the law's 0.45).
+    possibly outside the group), or None. Its walls go wrong too (field round 16, n06 and L22: LAMMPS
+    threw a type-2 sphere off its fix wall/gran floor at 24 to 60 times its impact speed, LIGGGHTS
+    at 43 times, where the audit printed the law's 0.363 and 0.45).
 
     Parameters
     ----------
@@ -294,8 +294,8 @@ def unlisted(deck: Deck, t: int) -> str | None:
     for _, _, (style, *args) in deck.excludes:
         if style == "include" and ((held := group_types(deck, args[0])) is None or t not in held):
             return (f"type {t}: neigh_modify include {args[0]}: the engine builds its neighbour lists for that group's "
-                    "atoms only, and finds its walls through them: a sphere outside it may never meet the wall, "
-                    "not audited")
+                    "atoms only, and a sphere outside it was thrown off a wall at many times its impact speed in "
+                    "LAMMPS and LIGGGHTS: not audited")
     return None
 
 

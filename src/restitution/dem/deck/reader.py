@@ -97,7 +97,11 @@ MAX_STAGES = 100
 #: soft_/hard_particles, though in _IRRELEVANT, are read): a run's ``every`` may run them
 _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms", "units",
                                   "replicate",
-                                  "atom_style", "soft_particles", "hard_particles"})
+                                  "atom_style", "soft_particles", "hard_particles",
+                                  # how often the lists are rebuilt decides whether a contact is found in
+                                  # time (field round 16, n25: run 1000 every 500 "neigh_modify every 10
+                                  # delay 0 check no", 0.497 printed where the second part's lists find late)
+                                  "neighbor", "neigh_modify"})
 #: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
 #: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
 #: particle templates

@@ -254,6 +254,11 @@ def _coeff(deck: Deck, words: list, where: str, text: str) -> _Coeff:
             deck.ignored.append(f"heat {nxt}")
             models["heat"] = nxt
             k += 2 + _LAMMPS_HEAT[nxt]
+        elif key in ("rolling", "twisting") and nxt == "none":
+            # no rolling or twisting model: LAMMPS accepts the word and adds nothing (field round 16,
+            # D6: R02 and p01 were refused, "keyword twisting is not mapped", where LAMMPS runs them)
+            models[key] = None
+            k += 2
         elif key == "twisting" and nxt in ("marshall", "sds"):
             deck.ignored.append(f"twisting {nxt}")
             models["twisting"] = nxt
