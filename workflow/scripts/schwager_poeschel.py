@@ -213,6 +213,11 @@ macros = {
     "SPFirstOmega": sci(p.omegas[0], 2),
     "SPCheckOrder": str(CHECK_ORDER),
     "SPPadeHFive": fixed(pade[5], 6),
+    # the form itself, (1 + a s) / (1 + a s + b2 s^2 + b3 s^3 + b4 s^4), s = sqrt(mu), as the library
+    # holds it, so that a reader can rebuild every Pade entry without the third-party script
+    "SPPadeForm": ", ".join(f"${name} = {c[k]!r}$" for k, name in
+                            (("a", r"a_{\mathrm P}"), ("b2", r"b_{\mathrm P2}"), ("b3", r"b_{\mathrm P3}"),
+                             ("b4", r"b_{\mathrm P4}"))),
     "SPPadeHTwo": fixed(pade[2], 6), "SPPadeHFour": fixed(pade[4], 6),
     "SPCOneNeg": fixed(-limit.C1, 7), "SPCTwo": fixed(limit.C2, 7),
     # Schwager and Poeschel's h_4 as quoted, nu C1^2 to two more decimals than the quotation, their distance

@@ -167,12 +167,12 @@ macros = {
     "TypedEThorntonTerms": str(len(THORNTON_H)),
     # set as the rows of a display, five to a row: in running text the list overran the line (supplement)
     "TypedEThorntonH": r" \\ ".join(
-        rf"u_{{{i + 1}}}, \dots, u_{{{min(i + 5, len(THORNTON_H))}}} &= "
+        rf"\Xi_{{{i + 1}}}, \dots, \Xi_{{{min(i + 5, len(THORNTON_H))}}} &= "
         + r",\ ".join(f"{h!r}" for h in THORNTON_H[i:i + 5]) for i in range(0, len(THORNTON_H), 5)),
     # LAMMPS' documented polynomial for tsuji damping, as the library holds it, so that a reader can
     # recompute the tsuji rows without LAMMPS
     "TypedETsujiTerms": str(len(TSUJI_POLY) - 1),
-    "TypedETsujiPoly": rf"A_0, \dots, A_{{{len(TSUJI_POLY) - 1}}} &= " + r",\ ".join(f"{a!r}" for a in TSUJI_POLY),
+    "TypedETsujiPoly": rf"\Psi_0, \dots, \Psi_{{{len(TSUJI_POLY) - 1}}} &= " + r",\ ".join(f"{a!r}" for a in TSUJI_POLY),
     # the width of the last interval of Kratos' bisection for its linear law's damping ratio
     "TypedEKratosZetaStep": sci(LINEAR_ZETA_STEP, 2),
     "TypedERunSteps": str(len(TYPED_E_ENGINE_REFINEMENTS)),
