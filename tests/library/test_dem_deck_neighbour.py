@@ -115,3 +115,15 @@ def test_a_run_whose_every_changes_the_lists_is_refused():
     as for any command a run's every runs that may change the contact."""
     status, _, err = _json(FIELD16 / "n25_run_every_neigh_modify" / "in.deck", 1.0)
     assert status == 2 and len(err.strip().splitlines()) == 1 and "every runs neigh_modify" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_lists_built_once_per_run_find_no_contact_in_time(tmp_path):
+    """``neigh_modify once yes`` (field round 17, a07): LAMMPS builds its lists at the run's start
+    only; two spheres 1.1 mm or more apart (skin 1 mm) passed through each other, and 0.497 was
+    printed. Now no eps at any speed; LAMMPS' wall/gran rows keep theirs."""
+    status, got, err = _audit(tmp_path, "neigh_modify once yes\nrun 100\n", 0.1, 1.0)
+    assert status == 0, err
+    assert "once yes" in err and all(r["late_above"] == 0 and r["eps"] == [None, None] for r in got["pairs"]), err
+    assert got["walls"] and all(None not in w["eps"] for w in got["walls"])

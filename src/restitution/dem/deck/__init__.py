@@ -93,7 +93,7 @@ from pathlib import Path
 from ...core.collision import StickError
 from ...core.errors import ParameterError
 from .beside import ADAPT, effects
-from .meeting import excluded, held_contact, integrators, late_speeds, motion, unlisted
+from .meeting import excluded, held_contact, integrators, late_speeds, motion, phantom_velocity, unlisted
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, PairNotMapped, place, spheres
@@ -1232,6 +1232,13 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list,
                 not_audited.append(why)
                 continue
             moves = [motion(deck, t, ran) for t in (i, j)]
+            phantom = [why for t, (kind, said) in zip((i, j), moves)
+                       if kind == "held" and said.startswith("no fix integrates type")
+                       and (why := phantom_velocity(deck, t)) is not None]
+            if phantom and moves[0][0] != moves[1][0]:
+                not_audited.append((*deck.style_line[0], deck.style_line[1],
+                                    f"types {i} {j}: {phantom[0]}: not audited"))
+                continue
             for kind, why in moves:     # a moving fix's group not typed: said once
                 said = (*deck.style_line[0], deck.style_line[1], why)
                 if kind == "free" and why and said not in not_audited:

@@ -18,7 +18,7 @@ from dataclasses import replace
 from ..dialect.state import Deck, place
 
 __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact",
-           "group_types", "integrators", "late_speeds", "rigid", "unlisted"]
+           "group_types", "integrators", "late_speeds", "phantom_velocity", "rigid", "unlisted"]
 
 #: Fix styles that move the atoms of their group by integrating the forces on them
 INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sphere", "nph/sphere", "nvt", "npt",
@@ -80,7 +80,7 @@ def neigh_modify(deck: Deck, words: list, loc, line: str) -> None:
     neighbour lists."""
     k = 1
     while k < len(words):
-        if words[k] in ("every", "delay", "check") and k + 1 < len(words):
+        if words[k] in ("every", "delay", "check", "once") and k + 1 < len(words):
             value = words[k + 1]
             deck.neigh = {**deck.neigh, words[k]: int(value) if value.isdigit() else value}
             k += 2
@@ -125,6 +125,7 @@ def late_speeds(deck: Deck) -> dict:
       still, moves the half skin before it touches: late above skin / (2 K dt), and skin / (D dt).
     * ``check yes`` with K = 1 and D > 0: nothing is looked at for D steps after a build: late above
       skin / (D dt).
+    * ``once yes``: the lists are built at a run's start only: at every speed.
 
     LIGGGHTS' mesh walls were found late below those speeds (0.9 times skin / (D dt), delay 10): half
     of each bound, and at every speed where the spheres' pairs are.
@@ -170,6 +171,13 @@ def _late_in(deck: Deck, neigh: dict, skin, dt) -> dict:
     if not isinstance(every, int) or not isinstance(delay, int) or skin is None or not dt:
         return {}
     every = max(every, 1)
+    if neigh.get("once") == "yes":
+        # lists built at a run's start only: bodies further apart than the skin then never meet
+        # (field round 17, a07, G11: LAMMPS and LIGGGHTS let them pass through each other)
+        why = (f"neigh_modify once yes with a skin of {skin:g}: the engine builds its neighbour lists at the start "
+               "of each run only, so bodies further apart than the skin then never meet, and those closer may be "
+               "found late, at any speed")
+        return {"pairs": (0.0, why), "walls": (0.0, why), "meshes": (0.0, why)}
     said = f"neigh_modify every {every} delay {delay} check {check} with a skin of {skin:g}"
     if check == "no":
         steps = every * max(1, -(-delay // every))
@@ -384,6 +392,42 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
     if integrated:
         return "free", ""
     return "held", f"no fix integrates type {t}: its spheres never move"
+
+
+def phantom_velocity(deck: Deck, t: int) -> str | None:
+    """Why spheres of type t, which no fix integrates, may still hold a velocity, or None: a
+    velocity command on a group that may hold them, or an inserting fix that made them (it gives
+    its atoms a velocity). The engine leaves such a sphere in place, yet the contact's damping reads
+    the velocity it holds (field round 17, w21: a still partner given 0.3 0.3 0.3, head-on at g = 1,
+    LAMMPS 0.56423 where the still sphere gives the audit's 0.61384; LIGGGHTS the same, G17).
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck at the run audited.
+    t : int
+        The type no fix integrates.
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> d = Deck(ntypes=2, groups={"t2": {2}}, velocities=[((None, 9), "velocity t2 set 0.3 0 0", "t2")])
+    >>> phantom_velocity(d, 1) is None, phantom_velocity(d, 2)[:37]
+    (True, 'line 9 velocity t2 set 0.3 0 0 gives ')
+    """
+    for loc, line, group in deck.velocities:
+        held = group_types(deck, group)
+        if held is None or t in held:
+            return (f"{place(loc)} {line} gives type {t}'s spheres a velocity, and no fix integrates them: the "
+                    "engine leaves them in place while the contact's damping reads that velocity")
+    for inserted in deck.inserts:
+        if inserted is None or t in inserted:
+            return (f"an inserting fix makes type {t}'s spheres with a velocity, and no fix integrates them: the "
+                    "engine leaves them in place while the contact's damping reads that velocity")
+    return None
 
 
 def _in_body(deck: Deck, t: int) -> str | None:

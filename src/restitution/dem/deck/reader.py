@@ -602,6 +602,10 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             deck.skin = float(words[1])
         except ValueError:
             deck.skin = None
+    elif cmd == "velocity" and len(words) >= 3:
+        still = words[2] == "set" and all(w in ("0", "0.0", "NULL") for w in words[3:6]) and len(words) >= 6
+        if not still:
+            deck.velocities = deck.velocities + [(loc, line, words[1])]
     elif cmd == "neigh_modify":
         neigh_modify(deck, words, loc, line)
     elif cmd == "special_bonds":

@@ -162,6 +162,8 @@ class Deck:
     # (neigh, skin, dt) of the later runs a stage holds (same contacts, other lists or step), for
     # meeting.late_speeds
     lists_seen: list = field(default_factory=list)
+    # (loc, line, group) of the velocity commands that may give atoms a velocity (meeting.phantom_velocity)
+    velocities: list = field(default_factory=list)
     regions: dict = field(default_factory=dict)   # region ID -> its words as the engine ran them
     lattice: list = field(default_factory=list)   # the words of the last lattice command ([]: none)
     beside: list = field(default_factory=list)    # (loc, words) of fixes acting beside the contact law
