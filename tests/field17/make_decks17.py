@@ -1,0 +1,206 @@
+"""Field round 17: write the LAMMPS (a*, m*, w*) and LIGGGHTS (G*) decks (decks/NAME/in.deck, G, extra files, a
+LIGGGHTS marker) on round 15's LAMMPS header and round 14's LIGGGHTS header. Each deck's first comment says what it
+tries. usage: python make_decks17.py [NAME ...]"""
+import importlib.util, os, subprocess, sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+D = os.path.join(HERE, "decks")
+
+
+def _load(name, path):
+    s = importlib.util.spec_from_file_location(name, os.path.join(HERE, "..", *path))
+    m = importlib.util.module_from_spec(s)
+    s.loader.exec_module(m)
+    return m
+
+
+M = _load("md15", ("field15", "make_decks.py"))
+L = _load("ml14", ("field14", "make_ldecks.py"))
+head, HK, HM, TWO, TWO4, GRAV, FLOOR, TAIL = M.head, M.HK, M.HM, M.TWO, M.TWO4, M.GRAV, M.FLOOR, M.TAIL
+lhead, MAT3, E3, HERTZ, WALL3, ATOMS, RUN = L.head, L.MAT3, L.E3, L.HERTZ, L.WALL3, L.ATOMS, L.RUN
+BASE = head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+NB = "neighbor 1e-4 bin\n"
+DECKS = {}
+
+
+def deck(name, text, g=1, files=None, data=None, liggghts=False):
+    DECKS[name] = (text, g, files or {}, data or {}, liggghts)
+
+
+def nhead(neigh):
+    """round 14's LIGGGHTS header with its neighbour lines replaced"""
+    return lhead().replace("neighbor 0.002 bin\nneigh_modify delay 0\n", neigh)
+
+
+# ---------------------------------------------------------------- LAMMPS: neighbour settings set in ways a reader may miss
+deck("a01_neigh_in_include", "# neighbor 1e-5 and every 20 check no in an included file (bound 0.05 m/s)\n"
+     + BASE + TWO4 + "include lists.in\nrun 1000\n", g=1,
+     data={"lists.in": "neighbor 1e-5 bin\nneigh_modify every 20 delay 0 check no\n"})
+deck("a02_neigh_in_if_before_run", "# the stale lists set in an if branch taken before the only run (bound 0.05 m/s)\n"
+     + BASE + TWO4 + "variable fast equal 1\nif \"${fast} == 1\" then \"neighbor 1e-5 bin\" \"neigh_modify every 20 delay 0 check no\"\nrun 1000\n", g=1)
+deck("a03_neigh_from_string_var", "# neigh_modify ${nm} with nm a string variable holding 'every 20 delay 0 check no', skin from an equal variable\n"
+     + BASE + TWO4 + "variable nm string \"every 20 delay 0 check no\"\nvariable sk equal 0.5e-5*2\nneighbor ${sk} bin\nneigh_modify ${nm}\nrun 1000\n", g=1)
+deck("a04_clear_then_default_lists", "# stale lists, run, clear, the same deck again without them: stage 2 has LAMMPS' defaults\n"
+     + BASE + TWO4 + "neighbor 1e-5 bin\nneigh_modify every 20 delay 0 check no\nrun 100\nclear\n" + BASE + TWO4 + "run 100\n", g="0.02 1")
+deck("a05_clear_then_stale_lists", "# default lists, run, clear, the deck again with stale lists: stage 2 bound 0.05 m/s\n"
+     + BASE + TWO4 + "run 100\nclear\n" + BASE + TWO4 + "neighbor 1e-5 bin\nneigh_modify every 20 delay 0 check no\nrun 100\n", g=1)
+deck("a06_restart_keeps_lists", "# stale lists, run, write_restart, clear, read_restart, run: are the lists in the restart?\n"
+     + BASE + TWO4 + "neighbor 1e-5 bin\nneigh_modify every 20 delay 0 check no\nrun 100\nwrite_restart f17.restart\nclear\n"
+     + "read_restart f17.restart\npair_style granular\npair_coeff * * " + HK + "\n" + FLOOR + TAIL + "run 100\n", g="0.02 1")
+deck("a07_once_yes_far_gap", "# neigh_modify once yes: lists built at the run's start only; spheres 1 cm apart\n"
+     + BASE + TWO4 + "neigh_modify once yes\nrun 1000\n", g=1)
+deck("a08_exclude_type_12", "# neigh_modify exclude type 1 2: pairs 1 2 never interact\n"
+     + BASE + TWO4 + "neigh_modify exclude type 1 2\nrun 1000\n", g=1)
+deck("a09_include_and_exclude", "# include g1 (type 1) and exclude type 1 1: no pair at all is listed except 1 2\n"
+     + BASE + TWO4 + "create_atoms 1 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\ngroup g1 type 1\natom_modify first g1\n"
+     + "neigh_modify include g1 exclude type 1 1\nrun 1000\n", g=1)
+deck("a10_exclude_group", "# neigh_modify exclude group g2 g2 (type 2 among itself)\n"
+     + BASE + TWO4 + "create_atoms 2 single 0.03 0.03 0.01\nset type 2 diameter 0.004 density 2500\ngroup g2 type 2\nneigh_modify exclude group g2 g2\nrun 1000\n", g=1)
+deck("a11_exclude_none_after", "# exclude type 1 2, then neigh_modify exclude none before the run: every pair listed again\n"
+     + BASE + TWO4 + "neigh_modify exclude type 1 2\nneigh_modify exclude none\nrun 1000\n", g=1)
+deck("a12_multi_every10_checkno", "# neighbor 1e-4 multi with every 10 check no (bound 1 m/s)\n"
+     + BASE + TWO4 + "neighbor 1e-4 multi\nneigh_modify every 10 delay 0 check no\nrun 1000\n", g="0.5 2")
+deck("a13_every3_delay6_checkno", "# every 3 delay 6 check no: LAMMPS rebuilds every 6 steps (bound skin/(6 dt) = 1.667 m/s, not 3.33)\n"
+     + BASE + TWO4 + NB + "neigh_modify every 3 delay 6 check no\nrun 1000\n", g="1.5 2.5")
+deck("a14_jump_skips_neigh", "# a jump over the stale neigh_modify: LAMMPS never runs it; the lists are LAMMPS' defaults\n"
+     + BASE + TWO4 + "jump SELF skip\nneighbor 1e-5 bin\nneigh_modify every 20 delay 0 check no\nlabel skip\nrun 1000\n", g=1)
+deck("a15_page_one_binsize", "# neigh_modify page/one/binsize (no effect on when lists are built), every 1 delay 0 check yes\n"
+     + BASE + TWO4 + "neigh_modify every 1 delay 0 check yes page 100000 one 2000 binsize 0.01\nrun 1000\n", g=1)
+deck("a16_nsq_stale_var_every", "# neighbor nsq, every from an equal variable of another variable (every 20 check no, skin 1e-5)\n"
+     + BASE + TWO4 + "variable base equal 4\nvariable k equal v_base*5\nneighbor 1e-5 nsq\nneigh_modify every ${k} delay 0 check no\nrun 1000\n", g=1)
+deck("a17_sort_and_comm_cutoff", "# atom_modify sort and comm_modify cutoff: no effect on the contact\n"
+     + BASE + TWO4 + "atom_modify sort 10 0.002\ncomm_modify cutoff 0.02\nrun 1000\n", g=1)
+deck("a18_neigh_loop_if_branch", "# a two-pass loop: pass 2 sets stale lists in an if branch on the loop variable (bound 0.05 in pass 2)\n"
+     + BASE + TWO4 + "variable i loop 2\nlabel top\nif \"${i} == 2\" then \"neighbor 1e-5 bin\" \"neigh_modify every 20 delay 0 check no\"\nrun 200\nnext i\njump SELF top\n", g=1)
+deck("a19_dt_reset_raises_dt", "# fix dt/reset raises dt from 1e-6 up to 1e-4 during the run (neighbour bound at 1e-6 would be 100)\n"
+     + BASE.replace("timestep 1e-5", "timestep 1e-6") + TWO4 + NB + "neigh_modify every 10 delay 0 check no\n"
+     + "fix dtr all dt/reset 1 1e-7 1e-4 0.01 units box\nrun 1000\n", g="0.5 2 5")
+deck("a20_dt_reset_plain", "# fix dt/reset (max 1e-4) with LAMMPS' default lists\n"
+     + BASE.replace("timestep 1e-5", "timestep 1e-6") + TWO4 + "fix dtr all dt/reset 1 1e-7 1e-4 0.01 units box\nrun 1000\n", g=1)
+# ---------------------------------------------------------------- LAMMPS: models, mixing, labels, adapt
+deck("m01_mix_hertzmaterial_E", "# pair_coeff 1 1 and 2 2 hertz/material with other E, nu, e (coeff_restitution); 1 2 mixed by LAMMPS\n"
+     + head() + "pair_style granular\n"
+     + "pair_coeff 1 1 hertz/material 1e7 0.5 0.3 damping coeff_restitution tangential linear_nohistory 1 0.3\n"
+     + "pair_coeff 2 2 hertz/material 4e7 0.8 0.2 damping coeff_restitution tangential linear_nohistory 1 0.3\n"
+     + GRAV + TAIL + TWO, g="0.1 1")
+deck("m02_mix_hooke_viscoelastic", "# hooke 1 1 and 2 2 with other kn and damping; 1 2 mixed (geometric mean)\n"
+     + head() + "pair_style granular\n"
+     + "pair_coeff 1 1 hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + "pair_coeff 2 2 hooke 8000 1000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO, g=1)
+deck("m03_mix_unlike_models", "# 1 1 hooke and 2 2 hertz/material, no 1 2 line: LAMMPS cannot mix them\n"
+     + head() + "pair_style granular\n"
+     + "pair_coeff 1 1 hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + f"pair_coeff 2 2 {HM}\n" + GRAV + TAIL + TWO, g=1)
+deck("m04_mix_damping_unlike", "# 1 1 hertz/material viscoelastic, 2 2 hertz/material tsuji: same normal model, damping mixed?\n"
+     + head() + "pair_style granular\n"
+     + "pair_coeff 1 1 hertz/material 1e7 0.5 0.3 damping viscoelastic tangential linear_nohistory 1 0.3\n"
+     + "pair_coeff 2 2 hertz/material 1e7 0.5 0.3 damping tsuji tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO, g="0.1 1")
+deck("m05_limit_damping_one_pair", "# limit_damping on 1 1 only (hooke with strong damping), not on 2 2 nor the mixed 1 2\n"
+     + head() + "pair_style granular\n"
+     + "pair_coeff 1 1 hooke 2000 30000 damping mass_velocity tangential linear_nohistory 1 0.3 limit_damping\n"
+     + "pair_coeff 2 2 hooke 2000 30000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO, g=1)
+deck("m06_labelmap_pair_coeff", "# type labels: pair_coeff by label, the 1 2 pair with its own coefficients\n"
+     + head() + "labelmap atom 1 big 2 small\npair_style granular\npair_coeff * * " + HK + "\n"
+     + "pair_coeff big small hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + FLOOR + TAIL
+     + "create_atoms big single 0.02 0.02 0.01\ncreate_atoms small single 0.01 0.01 0.01\nset type big diameter 0.006 density 2500\nset type small diameter 0.004 density 2500\nrun 100\n", g=1)
+deck("m07_adapt_pair_kn", "# fix adapt on pair granular's coefficients (if LAMMPS allows it)\n"
+     + BASE + TWO4 + "variable k equal 2000+1e6*time\nfix ad all adapt 1 pair granular kn * * v_k\nrun 1000\n", g=1)
+deck("m08_adapt_gran_hooke_history", "# pair gran/hooke/history and fix adapt diameter with reset yes (sizes change in the run)\n"
+     + head() + "pair_style gran/hooke/history 2000 NULL 30 NULL 0.5 1\npair_coeff * *\n" + GRAV
+     + "fix floor all wall/gran hooke/history 2000 NULL 30 NULL 0.5 1 zplane 0 NULL\n" + TAIL + TWO4
+     + "variable dd atom 0.004+0.01*time\nfix ad all adapt 1 atom diameter v_dd reset yes\nrun 1000\n", g=1)
+deck("m09_pair_coeff_order_override", "# pair_coeff 1 2 first, then pair_coeff * * later: the later * * overrides 1 2\n"
+     + head() + "pair_style granular\npair_coeff 1 2 hooke 9000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + f"pair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO4 + "run 100\n", g=1)
+deck("m10_units_cgs", "# units cgs: hooke kn in dyne/cm, radii in cm, speeds in cm/s\n"
+     + head().replace("units si", "units cgs").replace("0 0.04 0 0.04 0 0.1", "0 4 0 4 0 10")
+     + "pair_style granular\npair_coeff * * hooke 2e6 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + "fix grav all gravity 981 vector 0 0 -1\nfix floor all wall/gran granular hooke 2e6 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL\n"
+     + TAIL + "create_atoms 1 single 2 2 1\ncreate_atoms 2 single 1 1 1\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.4 density 2.5\nrun 100\n", g=100)
+# ---------------------------------------------------------------- LAMMPS: partners held or moved, walls
+deck("w11_fix_move_partner", "# type 2 held by fix move linear 0 0 0 (a wall made of spheres), type 1 under nve/sphere\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TWO4
+     + "group t1 type 1\ngroup t2 type 2\nfix integ t1 nve/sphere\nfix mv t2 move linear 0 0 0\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("w12_no_integrator_type2", "# type 2 under no integrator (static spheres), type 1 under nve/sphere\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TWO4
+     + "group t1 type 1\nfix integ t1 nve/sphere\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("w13_velocity_set_partner_moving", "# type 2 moved by fix move linear 0 0 -0.5 (a moving piston of spheres)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TWO4
+     + "group t1 type 1\ngroup t2 type 2\nfix integ t1 nve/sphere\nfix mv t2 move linear 0 0 -0.5\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("w14_wallgran_contacts_kw", "# fix wall/gran with the contacts keyword (per-atom contact output)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + f"fix floor all wall/gran granular {HK} zplane 0 NULL contacts\n" + TAIL + TWO4 + "run 100\n", g=1)
+deck("w15_wallregion_moving_block", "# fix wall/gran/region on a block region moving with a velocity (region move v_z)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + "variable zz equal 0.001+0.5*time\nregion lid block 0 0.04 0 0.04 -1 0.001 move NULL NULL v_zz side out units box\n"
+     + f"fix lidw all wall/gran/region granular {HK} region lid\n" + TAIL + TWO4 + "run 100\n", g=1)
+deck("w16_wallregion_open_cylinder", "# fix wall/gran/region on a cylinder with open ends (open 1 open 2)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR
+     + "region cyl cylinder z 0.02 0.02 0.015 0 0.1 side in open 1 open 2 units box\n"
+     + f"fix cw all wall/gran/region granular {HK} region cyl\n" + TAIL + TWO4 + "run 100\n", g=1)
+deck("w17_wallgran_limit_damping_wall_only", "# limit_damping on the wall only (strong damping), not on the pair\n"
+     + head() + "pair_style granular\npair_coeff * * hooke 2000 30000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV
+     + "fix floor all wall/gran granular hooke 2000 30000 damping mass_velocity tangential linear_nohistory 1 0.3 limit_damping zplane 0 NULL\n"
+     + TAIL + TWO4 + "run 100\n", g=1)
+deck("w18_wallgran_stale_every10_checkyes", "# LAMMPS wall/gran/region under every 10 check yes (the audit calls pairs late at any speed; the wall?)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + "region bx block 0 0.04 0 0.04 0 0.08 side in units box\n"
+     + f"fix wr all wall/gran/region granular {HK} region bx\n" + TAIL + TWO4 + NB + "neigh_modify every 10 delay 0 check yes\nrun 1000\n", g="0.5 2")
+deck("w19_wallgran_variable_wall_position", "# fix wall/gran zplane with a wiggle of zero amplitude (a moving wall that does not move)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + f"fix floor all wall/gran granular {HK} zplane 0 NULL wiggle z 0.0 0.01\n" + TAIL + TWO4 + "run 100\n", g=1)
+deck("w20_freeze_after_gravity", "# type 2 frozen (fix freeze) after gravity; the audit sizes it\n"
+     + BASE + TWO4 + "group t2 type 2\nfix fr t2 freeze\nrun 100\n", g=1)
+
+# ---------------------------------------------------------------- LIGGGHTS
+LB = MAT3 + E3 + HERTZ + WALL3 + ATOMS
+deck("G01_neigh_in_include", "# LIGGGHTS: neighbor 1e-5 and every 20 check no in an included file (bound 0.05 m/s)\n"
+     + nhead("include lists.in\n") + LB + RUN, g=1, data={"lists.in": "neighbor 1e-5 bin\nneigh_modify delay 0 every 20 check no\n"}, liggghts=True)
+deck("G02_neigh_in_if", "# LIGGGHTS: stale lists from an if branch\n"
+     + nhead("variable fast equal 1\nneighbor 0.002 bin\nif \"${fast} == 1\" then \"neighbor 1e-5 bin\" \"neigh_modify delay 0 every 20 check no\"\n") + LB + RUN, g=1, liggghts=True)
+deck("G03_exclude_type_12", "# LIGGGHTS: neigh_modify exclude type 1 2\n"
+     + nhead("neighbor 0.002 bin\nneigh_modify delay 0 exclude type 1 2\n") + LB + RUN, g=1, liggghts=True)
+deck("G04_no_integrator_type2", "# LIGGGHTS: nve/sphere on type 1 only; type 2 static\n"
+     + lhead() + LB + "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\ngroup t1 type 1\nfix integr t1 nve/sphere\nrun 2000\n", g=1, liggghts=True)
+deck("G05_move_mesh_linear_stale", "# LIGGGHTS: a mesh lid moving down at 0.5 m/s (move/mesh linear) under delay 10 skin 1e-4\n"
+     + nhead("neighbor 1e-4 bin\n") + MAT3 + E3 + HERTZ + WALL3
+     + "fix lid all mesh/surface file plane0.stl type 3 move 0 0 0.03\nfix wl all wall/gran model hertz tangential history mesh n_meshes 1 meshes lid\n"
+     + "fix mv all move/mesh mesh lid linear 0 0 -0.5\n" + ATOMS + RUN, g="0.2 0.4", files={"plane0.stl": ("plane", "0", "0.04")}, liggghts=True)
+deck("G06_clear_loop_stale", "# LIGGGHTS: pass 1 usual lists, clear, pass 2 the deck with stale lists (every 20 check no, skin 1e-5)\n"
+     + lhead() + LB + RUN + "clear\n" + nhead("neighbor 1e-5 bin\nneigh_modify delay 0 every 20 check no\n") + LB + RUN, g=1, liggghts=True)
+deck("G07_distribution_two_sizes", "# LIGGGHTS: insert/pack with a two-template distribution (2 and 3 mm) of type 1\n"
+     + lhead() + MAT3 + E3 + HERTZ + WALL3
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\n"
+     + "fix pts2 all particletemplate/sphere 15485867 atom_type 1 density constant 2500 radius constant 0.003\n"
+     + "fix pdd all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.02 0.08 units box\n"
+     + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 20 region ins\n"
+     + RUN, g=1, liggghts=True)
+deck("G08_freeze_partner", "# LIGGGHTS: type 2 frozen (fix freeze)\n"
+     + lhead() + LB + "group t2 type 2\nfix fr t2 freeze\n" + RUN, g=1, liggghts=True)
+deck("G09_neigh_var_every", "# LIGGGHTS: every from an equal variable (every 20 check no, skin 1e-5)\n"
+     + nhead("variable k equal 4*5\nneighbor 1e-5 bin\nneigh_modify delay 0 every ${k} check no\n") + LB + RUN, g=1, liggghts=True)
+deck("G10_mesh_rotating_stale", "# LIGGGHTS: a mesh floor rotating slowly about z (move/mesh rotate) under every 5 check no, skin 1e-4\n"
+     + nhead("neighbor 1e-4 bin\nneigh_modify delay 0 every 5 check no\n") + MAT3 + E3 + HERTZ
+     + "fix cad all mesh/surface file plane0.stl type 3\nfix wmesh all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
+     + "fix rot all move/mesh mesh cad rotate origin 0 0 0 axis 0 0 1 period 10\n" + ATOMS + RUN, g="0.5 0.9 1.5",
+     files={"plane0.stl": ("plane", "0", "0.04")}, liggghts=True)
+
+
+def write(name):
+    text, g, files, data, lig = DECKS[name]
+    d = os.path.join(D, name)
+    os.makedirs(d, exist_ok=True)
+    open(os.path.join(d, "in.deck"), "w").write(text)
+    open(os.path.join(d, "G"), "w").write(f"{g}\n")
+    if lig:
+        open(os.path.join(d, "LIGGGHTS"), "w").write("")
+    for f, t in data.items():
+        open(os.path.join(d, f), "w").write(t)
+    for f, args in files.items():
+        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+
+
+if __name__ == "__main__":
+    for n in (sys.argv[1:] or DECKS):
+        write(n)
+    print(len(DECKS), "decks")

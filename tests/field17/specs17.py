@@ -1,0 +1,47 @@
+"""Field round 17: each deck's spec.json for round 13's referee (tests/field13/referee13.py, which runs round 10's
+head-on referee unchanged). Sizes and masses are those the deck gives with create_atoms + set (no run changes them
+in these decks; the engine's own state is checked by engine.sh's run of the deck). usage: python specs17.py"""
+import json, math, os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+D = os.path.join(HERE, "decks")
+m = lambda r, rho: rho * 4 / 3 * math.pi * r ** 3
+K = "damping mass_velocity tangential linear_nohistory 1 0.3"
+HK = f"hooke 2000 3000 {K}"
+
+
+def P(t1, t2, r1, m1, r2, m2, **kw):
+    return dict({"t1": t1, "t2": t2, "r1": r1, "m1": m1, "r2": r2, "m2": m2, "speed_idx": [0, 2]}, **kw)
+
+
+def W(t1, r1, m1, wall, wall_id="floor", **kw):
+    return dict({"t1": t1, "wall_id": wall_id, "wall": wall, "r1": r1, "m1": m1, "z0": r1, "zw": 0, "speed_idx": [0, 2]}, **kw)
+
+
+S = {
+    "m01_mix_hertzmaterial_E": {"lines": ["pair_style granular",
+        "pair_coeff 1 1 hertz/material 1e7 0.5 0.3 damping coeff_restitution tangential linear_nohistory 1 0.3",
+        "pair_coeff 2 2 hertz/material 4e7 0.8 0.2 damping coeff_restitution tangential linear_nohistory 1 0.3"],
+        "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 2500))]},
+    "m02_mix_hooke_viscoelastic": {"lines": ["pair_style granular", f"pair_coeff 1 1 {HK}", f"pair_coeff 2 2 hooke 8000 1000 {K}"],
+        "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 2500))]},
+    "m05_limit_damping_one_pair": {"lines": ["pair_style granular", f"pair_coeff 1 1 hooke 2000 30000 {K} limit_damping",
+        f"pair_coeff 2 2 hooke 2000 30000 {K}"],
+        "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 2500)), P(1, 1, 0.002, m(0.002, 2500), 0.002, m(0.002, 2500))]},
+    "m06_labelmap_pair_coeff": {"pre": ["labelmap atom 1 big 2 small"], "lines": ["pair_style granular", f"pair_coeff * * {HK}",
+        f"pair_coeff big small hooke 5000 3000 {K}"],
+        "checks": [P(1, 2, 0.003, m(0.003, 2500), 0.002, m(0.002, 2500))]},
+    "w11_fix_move_partner": {"lines": ["pair_style granular", f"pair_coeff * * {HK}"],
+        "integr_lines": ["fix nve a1 nve/sphere", "fix mv a2 move linear 0 0 0"],
+        "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.002, m(0.002, 2500), still2=True)]},
+    "w17_wallgran_limit_damping_wall_only": {"lines": ["pair_style granular", f"pair_coeff * * hooke 2000 30000 {K}"],
+        "checks": [W(1, 0.002, m(0.002, 2500), f"fix floor all wall/gran granular hooke 2000 30000 {K} limit_damping zplane 0 NULL")]},
+    "m10_units_cgs": {"units": "cgs", "lines": ["pair_style granular", f"pair_coeff * * hooke 2e6 3000 {K}"],
+        "checks": [P(1, 2, 0.2, m(0.2, 2.5), 0.2, m(0.2, 2.5))]},
+}
+
+if __name__ == "__main__":
+    for name, spec in S.items():
+        spec = dict({"engine": "lammps"}, **spec)
+        json.dump(spec, open(os.path.join(D, name, "spec.json"), "w"), indent=1)
+    print(len(S), "specs")
