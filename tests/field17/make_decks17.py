@@ -185,6 +185,83 @@ deck("G10_mesh_rotating_stale", "# LIGGGHTS: a mesh floor rotating slowly about 
      + "fix rot all move/mesh mesh cad rotate origin 0 0 0 axis 0 0 1 period 10\n" + ATOMS + RUN, g="0.5 0.9 1.5",
      files={"plane0.stl": ("plane", "0", "0.04")}, liggghts=True)
 
+# ---------------------------------------------------------------- batch 2: neighbour keywords kept between lines, units, molecules, bonds
+deck("a21_units_lj_default_skin", "# units lj: LAMMPS' default skin 0.3 sigma; every 20 check no, dt 1e-4 (bound 0.3/(20 dt) = 150)\n"
+     + head().replace("units si", "units lj").replace("0 0.04 0 0.04 0 0.1", "0 20 0 20 0 50")
+     + "pair_style granular\npair_coeff * * hooke 2e5 30 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + "fix integ all nve/sphere\ntimestep 1e-4\ncreate_atoms 1 single 10 10 5\ncreate_atoms 2 single 5 5 5\nset type 1 diameter 1 density 1\nset type 2 diameter 1 density 1\n"
+     + "neigh_modify every 20 delay 0 check no\nrun 100\n", g="100 300")
+deck("a22_delay_kept_from_earlier_line", "# neigh_modify delay 10, then neigh_modify every 5 check no: LAMMPS keeps delay 10 (rebuild every 10 steps, bound 1 m/s)\n"
+     + BASE + TWO4 + NB + "neigh_modify delay 10\nneigh_modify every 5 check no\nrun 1000\n", g="0.8 1.5")
+deck("a23_exclude_molecule_intra", "# molecule IDs from fix property/atom mol; both spheres in molecule 1; exclude molecule/intra all\n"
+     + BASE + TWO4 + "fix pm all property/atom mol\nset atom * mol 1\nneigh_modify exclude molecule/intra all\nrun 1000\n", g=1)
+deck("a24_bonded_pair_special_zero", "# atom_style hybrid sphere bond; spheres 1 and 2 bonded (a harmonic bond of zero stiffness); special_bonds lj 0 0 0: the bonded pair has no pair force\n"
+     + head().replace("atom_style sphere 1", "atom_style hybrid sphere 1 bond").replace("create_box 2 box", "create_box 2 box bond/types 1 extra/bond/per/atom 1 extra/special/per/atom 1")
+     + f"pair_style granular\npair_coeff * * {HK}\nbond_style harmonic\nbond_coeff 1 0.0 0.01\nspecial_bonds lj 0 0 0\n" + GRAV + FLOOR + TAIL + TWO4
+     + "create_bonds single/bond 1 1 2\nrun 1000\n", g=1)
+deck("a25_checkno_then_every20_separate", "# neigh_modify check no, then neigh_modify every 20 delay 0 on another line: every 20 check no (bound 0.05 with skin 1e-5)\n"
+     + BASE + TWO4 + "neighbor 1e-5 bin\nneigh_modify check no\nneigh_modify every 20 delay 0\nrun 1000\n", g="0.04 1")
+deck("a26_once_yes_then_no", "# neigh_modify once yes, then once no before the run: lists rebuilt as usual\n"
+     + BASE + TWO4 + "neigh_modify once yes\nneigh_modify once no\nrun 1000\n", g=1)
+deck("a27_pair_style_granular_global_cutoff", "# pair_style granular 0.01: a global cutoff beyond contact; every 20 check no, skin 1e-5\n"
+     + head() + f"pair_style granular 0.01\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO4
+     + "neighbor 1e-5 bin\nneigh_modify every 20 delay 0 check no\nrun 1000\n", g="0.04 1")
+deck("a28_once_yes_in_include", "# neigh_modify once yes in an included settings file\n"
+     + BASE + TWO4 + "include settings.in\nrun 1000\n", g=1, data={"settings.in": "neigh_modify once yes\nthermo 100\n"})
+deck("a29_units_micro", "# units micro: LAMMPS' default skin 0.1 micrometre; every 20 check no, dt 1e-3 microsecond\n"
+     + head().replace("units si", "units micro").replace("0 0.04 0 0.04 0 0.1", "0 400 0 400 0 1000")
+     + "pair_style granular\npair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + "fix integ all nve/sphere\ntimestep 1e-3\ncreate_atoms 1 single 200 200 100\ncreate_atoms 2 single 100 100 100\nset type 1 diameter 40 density 2.5e-12\nset type 2 diameter 40 density 2.5e-12\n"
+     + "neigh_modify every 20 delay 0 check no\nrun 100\n", g="1 10")
+deck("G11_once_yes_liggghts", "# LIGGGHTS: neigh_modify once yes (lists built at the run's start only)\n"
+     + nhead("neighbor 0.002 bin\nneigh_modify delay 0 once yes\n") + LB + RUN, g=1, liggghts=True)
+deck("G12_every5_checkno_default_delay", "# LIGGGHTS: neigh_modify every 5 check no, no delay given: LIGGGHTS' delay 10 stays (rebuild every 10 steps, bound 1 m/s)\n"
+     + nhead("neighbor 1e-4 bin\nneigh_modify every 5 check no\n") + LB + RUN, g="0.8 1.5", liggghts=True)
+deck("G13_mesh_every5_checkno_default_delay", "# LIGGGHTS: a mesh floor, neigh_modify every 5 check no (delay 10 stays): mesh half bound 0.5\n"
+     + nhead("neighbor 1e-4 bin\nneigh_modify every 5 check no\n") + MAT3 + E3 + HERTZ
+     + "fix cad all mesh/surface file plane0.stl type 3\nfix wmesh all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n" + ATOMS + RUN,
+     g="0.45 0.8", files={"plane0.stl": ("plane", "0", "0.04")}, liggghts=True)
+
+# ---------------------------------------------------------------- batch 3: fixes that act on the atoms beside the contact, 2d masses, cohesion
+FX = head() + f"pair_style granular\npair_coeff * * {HK}\n" + FLOOR + TWO4 + "group t1 type 1\ngroup t2 type 2\n"
+deck("a30_spring_self", "# fix spring/self 100 on every atom: a spring to each atom's start point acts during contacts\n"
+     + FX + "fix integ all nve/sphere\nfix ss all spring/self 100.0\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a31_addforce_type2", "# fix addforce on type 2 only (a constant force on one body of the pair 1 2)\n"
+     + FX + "fix integ all nve/sphere\nfix af t2 addforce 0.0 0.0 -0.01\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a32_temp_rescale", "# fix temp/rescale every 10 steps to a temperature: rescales the spheres' velocities\n"
+     + FX + "fix integ all nve/sphere\nfix tr all temp/rescale 10 1e-20 1e-20 1e-21 1.0\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a33_gravity_type2_only", "# fix gravity on type 2 only: a field on one body of the pair 1 2\n"
+     + FX + "fix integ all nve/sphere\nfix grav t2 gravity 9.81 vector 0 0 -1\ntimestep 1e-5\nrun 1000\n", g="0.1 1")
+deck("a34_nve_noforce_type2", "# type 2 under fix nve/noforce (moves at its velocity, no force acts): like fix move\n"
+     + FX + "fix integ t1 nve/sphere\nfix nf t2 nve/noforce\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a35_nvt_sphere", "# fix nvt/sphere on every atom (a Nose-Hoover thermostat on the spheres)\n"
+     + FX + "fix integ all nvt/sphere temp 1e-20 1e-20 1e-3\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a36_momentum_angular", "# fix momentum every 5 steps, linear and angular, rescale\n"
+     + FX + "fix integ all nve/sphere\nfix mom all momentum 5 linear 1 1 1 angular rescale\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a37_aveforce_type2", "# fix aveforce on type 2: each type-2 atom gets the group's average force\n"
+     + FX + "create_atoms 2 single 0.03 0.03 0.01\nset type 2 diameter 0.004 density 2500\ngroup t2 type 2\nfix integ all nve/sphere\nfix avf t2 aveforce NULL NULL NULL\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a38_wall_reflect", "# fix wall/reflect zlo EDGE beside the granular floor at z = 0\n"
+     + FX + "fix integ all nve/sphere\nfix wr all wall/reflect zlo EDGE\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a39_efield_like_addforce_variable", "# fix addforce on all with a force from an atom-style variable of the type (type 2 pushed, type 1 not)\n"
+     + FX + "fix integ all nve/sphere\nvariable fz atom -0.01*(type==2)\nfix af all addforce 0.0 0.0 v_fz\ntimestep 1e-5\nrun 1000\n", g=1)
+D2 = ("units si\ndimension 2\natom_style sphere 1\nboundary p p p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 -0.001 0.001 units box\ncreate_box 2 box\n"
+      + f"pair_style granular\npair_coeff * * {HK}\n" + "fix integ all nve/sphere\nfix e2 all enforce2d\ntimestep 1e-5\n"
+      + "create_atoms 1 single 0.02 0.02 0\ncreate_atoms 2 single 0.01 0.01 0\n")
+deck("d01_2d_set_density", "# dimension 2, set diameter and density (LAMMPS' mass: 4/3 pi r^3 rho, or pi r^2 rho in 2d?)\n"
+     + D2 + "set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g=1)
+deck("d02_2d_set_density_disc", "# dimension 2, set density/disc (mass pi r^2 rho)\n"
+     + D2 + "set type 1 diameter 0.004 density/disc 2500\nset type 2 diameter 0.006 density/disc 2500\nrun 100\n", g=1)
+deck("d03_2d_read_data", "# dimension 2, atoms read from a data file with diameter and density columns\n"
+     + D2.replace("create_box 2 box\n", "").replace("region box block 0 0.04 0 0.04 -0.001 0.001 units box\n", "read_data disks.data\n")
+     .replace("create_atoms 1 single 0.02 0.02 0\ncreate_atoms 2 single 0.01 0.01 0\n", "") + "run 100\n", g=1,
+     data={"disks.data": "disks\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n-0.001 0.001 zlo zhi\n\nAtoms # sphere\n\n1 1 0.004 2500 0.02 0.02 0\n2 2 0.006 2500 0.01 0.01 0\n"})
+deck("G14_cohesion_sjkr", "# LIGGGHTS: cohesion sjkr with a cohesion energy density: an attraction during contacts\n"
+     + lhead() + MAT3 + E3 + "fix m9 all property/global cohesionEnergyDensity peratomtypepair 3 5e4 5e4 5e4 5e4 5e4 5e4 5e4 5e4 5e4\n"
+     + "pair_style gran model hertz tangential history cohesion sjkr\npair_coeff * *\n"
+     + "fix wprim all wall/gran model hertz tangential history cohesion sjkr primitive type 3 zplane 0.0\n" + ATOMS + RUN, g="0.1 1", liggghts=True)
+deck("G15_nve_noforce_liggghts", "# LIGGGHTS: fix freeze-like partner via fix nve/noforce on type 2\n"
+     + lhead() + LB + "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\ngroup t1 type 1\ngroup t2 type 2\nfix integr t1 nve/sphere\nfix nf t2 nve/noforce\nrun 2000\n", g=1, liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]

@@ -38,7 +38,17 @@ S = {
         "checks": [W(1, 0.002, m(0.002, 2500), f"fix floor all wall/gran granular hooke 2000 30000 {K} limit_damping zplane 0 NULL")]},
     "m10_units_cgs": {"units": "cgs", "lines": ["pair_style granular", f"pair_coeff * * hooke 2e6 3000 {K}"],
         "checks": [P(1, 2, 0.2, m(0.2, 2.5), 0.2, m(0.2, 2.5))]},
+    "d01_2d_set_density": {"dimension": 2, "lines": ["pair_style granular", f"pair_coeff * * {HK}"],
+        "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 2500))]},
+    "d03_2d_read_data": {"dimension": 2, "lines": ["pair_style granular", f"pair_coeff * * {HK}"],
+        "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 2500))]},
+    "a21_units_lj_default_skin": {"units": "lj", "lines": ["pair_style granular", f"pair_coeff * * hooke 2e5 30 {K}"],
+        "checks": [P(1, 2, 0.5, m(0.5, 1), 0.5, m(0.5, 1), speed_idx=[0])]},
+    "a34_nve_noforce_type2": {"lines": ["pair_style granular", f"pair_coeff * * {HK}"],
+        "integr_lines": ["fix nve a1 nve/sphere", "fix nf a2 nve/noforce"],
+        "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.002, m(0.002, 2500), still2=True)]},
 }
+
 
 if __name__ == "__main__":
     for name, spec in S.items():
