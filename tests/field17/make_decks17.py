@@ -262,6 +262,37 @@ deck("G14_cohesion_sjkr", "# LIGGGHTS: cohesion sjkr with a cohesion energy dens
 deck("G15_nve_noforce_liggghts", "# LIGGGHTS: fix freeze-like partner via fix nve/noforce on type 2\n"
      + lhead() + LB + "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\ngroup t1 type 1\ngroup t2 type 2\nfix integr t1 nve/sphere\nfix nf t2 nve/noforce\nrun 2000\n", g=1, liggghts=True)
 
+# ---------------------------------------------------------------- batch 4: labels in neigh_modify, position groups, phantom velocities, size distributions
+deck("a40_labelmap_exclude", "# type labels: neigh_modify exclude type big small (the pair 1 2 by its labels)\n"
+     + head() + "labelmap atom 1 big 2 small\npair_style granular\npair_coeff * * " + HK + "\n" + GRAV + FLOOR + TAIL
+     + "create_atoms big single 0.02 0.02 0.01\ncreate_atoms small single 0.01 0.01 0.01\nset type big diameter 0.006 density 2500\nset type small diameter 0.004 density 2500\n"
+     + "neigh_modify exclude type big small\nrun 100\n", g=1)
+deck("a41_exclude_region_group", "# neigh_modify exclude group low low, low a region group (atoms below z = 0.02): pairs of two low atoms never meet\n"
+     + BASE + TWO4 + "region lo block INF INF INF INF INF 0.02 units box\ngroup low region lo\nneigh_modify exclude group low low\nrun 1000\n", g=1)
+deck("w21_velocity_on_unintegrated_partner", "# type 2 under no integrator but given a velocity (velocity t2 set 0.3 0.3 0.3): it never moves, yet the contact's damping reads that velocity\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + FLOOR + TWO4
+     + "group t1 type 1\ngroup t2 type 2\nvelocity t2 set 0.3 0.3 0.3\nfix integ t1 nve/sphere\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("w22_region_group_integrator", "# three type-2 spheres, nve/sphere on type 1 and on a region group holding one type-2 sphere: type 2 is integrated in part\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + FLOOR + TWO4
+     + "create_atoms 2 single 0.03 0.03 0.05\nset type 2 diameter 0.004 density 2500\nregion up block INF INF INF INF 0.03 INF units box\ngroup upper region up\ngroup t1 type 1\n"
+     + "fix integ t1 nve/sphere\nfix integ2 upper nve/sphere\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("G16_hookestiffness_distribution", "# LIGGGHTS: hooke/stiffness (kn, gamman per type pair) with two templates of type 1 (2 and 3 mm): eps depends on size\n"
+     + lhead() + "fix m1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+     + "fix m2 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000\n"
+     + "fix m3 all property/global gamman peratomtypepair 3 300 300 300 300 300 300 300 300 300\n"
+     + "fix m4 all property/global gammat peratomtypepair 3 100 100 100 100 100 100 100 100 100\n"
+     + "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5\n"
+     + "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+     + "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\n"
+     + "fix pts2 all particletemplate/sphere 15485867 atom_type 1 density constant 2500 radius constant 0.003\n"
+     + "fix pdd all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.02 0.08 units box\n"
+     + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 20 region ins\n"
+     + RUN, g=1, liggghts=True)
+deck("G17_velocity_on_unintegrated_partner", "# LIGGGHTS: type 2 under no integrator but given a velocity (velocity t2 set 0.3 0.3 0.3)\n"
+     + lhead() + LB + "group t1 type 1\ngroup t2 type 2\nvelocity t2 set 0.3 0.3 0.3\ntimestep 1e-5\nfix integr t1 nve/sphere\nrun 2000\n", g=1, liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]

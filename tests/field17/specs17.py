@@ -38,6 +38,17 @@ S = {
         "checks": [W(1, 0.002, m(0.002, 2500), f"fix floor all wall/gran granular hooke 2000 30000 {K} limit_damping zplane 0 NULL")]},
     "m10_units_cgs": {"units": "cgs", "lines": ["pair_style granular", f"pair_coeff * * hooke 2e6 3000 {K}"],
         "checks": [P(1, 2, 0.2, m(0.2, 2.5), 0.2, m(0.2, 2.5))]},
+    "G16_hookestiffness_distribution": {"engine": "liggghts", "ntypes": 3, "lines": [
+        "fix m1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000",
+        "fix m2 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000",
+        "fix m3 all property/global gamman peratomtypepair 3 300 300 300 300 300 300 300 300 300",
+        "fix m4 all property/global gammat peratomtypepair 3 100 100 100 100 100 100 100 100 100",
+        "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5",
+        "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"],
+        "checks": [P(1, 1, 0.003, m(0.003, 2500), 0.003, m(0.003, 2500), match="smallest"),
+                   P(1, 1, 0.002, m(0.002, 2500), 0.002, m(0.002, 2500), match="largest"),
+                   W(1, 0.003, m(0.003, 2500), "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0",
+                     wall_id="wprim", match="smallest")]},
     "d01_2d_set_density": {"dimension": 2, "lines": ["pair_style granular", f"pair_coeff * * {HK}"],
         "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 2500))]},
     "d03_2d_read_data": {"dimension": 2, "lines": ["pair_style granular", f"pair_coeff * * {HK}"],
@@ -53,5 +64,7 @@ S = {
 if __name__ == "__main__":
     for name, spec in S.items():
         spec = dict({"engine": "lammps"}, **spec)
+        if name == "m01_mix_hertzmaterial_E":
+            spec["checks"][0]["speed_idx"] = [0, 1]
         json.dump(spec, open(os.path.join(D, name, "spec.json"), "w"), indent=1)
     print(len(S), "specs")
