@@ -82,23 +82,23 @@ deck("m01_mix_hertzmaterial_E", "# pair_coeff 1 1 and 2 2 hertz/material with ot
      + head() + "pair_style granular\n"
      + "pair_coeff 1 1 hertz/material 1e7 0.5 0.3 damping coeff_restitution tangential linear_nohistory 1 0.3\n"
      + "pair_coeff 2 2 hertz/material 4e7 0.8 0.2 damping coeff_restitution tangential linear_nohistory 1 0.3\n"
-     + GRAV + TAIL + TWO, g="0.1 1")
+     + GRAV + TAIL + TWO + "run 100\n", g="0.1 1")
 deck("m02_mix_hooke_viscoelastic", "# hooke 1 1 and 2 2 with other kn and damping; 1 2 mixed (geometric mean)\n"
      + head() + "pair_style granular\n"
      + "pair_coeff 1 1 hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
-     + "pair_coeff 2 2 hooke 8000 1000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO, g=1)
+     + "pair_coeff 2 2 hooke 8000 1000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO + "run 100\n", g=1)
 deck("m03_mix_unlike_models", "# 1 1 hooke and 2 2 hertz/material, no 1 2 line: LAMMPS cannot mix them\n"
      + head() + "pair_style granular\n"
      + "pair_coeff 1 1 hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
-     + f"pair_coeff 2 2 {HM}\n" + GRAV + TAIL + TWO, g=1)
+     + f"pair_coeff 2 2 {HM}\n" + GRAV + TAIL + TWO + "run 100\n", g=1)
 deck("m04_mix_damping_unlike", "# 1 1 hertz/material viscoelastic, 2 2 hertz/material tsuji: same normal model, damping mixed?\n"
      + head() + "pair_style granular\n"
      + "pair_coeff 1 1 hertz/material 1e7 0.5 0.3 damping viscoelastic tangential linear_nohistory 1 0.3\n"
-     + "pair_coeff 2 2 hertz/material 1e7 0.5 0.3 damping tsuji tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO, g="0.1 1")
+     + "pair_coeff 2 2 hertz/material 1e7 0.5 0.3 damping tsuji tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO + "run 100\n", g="0.1 1")
 deck("m05_limit_damping_one_pair", "# limit_damping on 1 1 only (hooke with strong damping), not on 2 2 nor the mixed 1 2\n"
      + head() + "pair_style granular\n"
      + "pair_coeff 1 1 hooke 2000 30000 damping mass_velocity tangential linear_nohistory 1 0.3 limit_damping\n"
-     + "pair_coeff 2 2 hooke 2000 30000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO, g=1)
+     + "pair_coeff 2 2 hooke 2000 30000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + TAIL + TWO + "run 100\n", g=1)
 deck("m06_labelmap_pair_coeff", "# type labels: pair_coeff by label, the 1 2 pair with its own coefficients\n"
      + head() + "labelmap atom 1 big 2 small\npair_style granular\npair_coeff * * " + HK + "\n"
      + "pair_coeff big small hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n" + GRAV + FLOOR + TAIL
@@ -292,6 +292,35 @@ deck("G16_hookestiffness_distribution", "# LIGGGHTS: hooke/stiffness (kn, gamman
      + RUN, g=1, liggghts=True)
 deck("G17_velocity_on_unintegrated_partner", "# LIGGGHTS: type 2 under no integrator but given a velocity (velocity t2 set 0.3 0.3 0.3)\n"
      + lhead() + LB + "group t1 type 1\ngroup t2 type 2\nvelocity t2 set 0.3 0.3 0.3\ntimestep 1e-5\nfix integr t1 nve/sphere\nrun 2000\n", g=1, liggghts=True)
+
+# ---------------------------------------------------------------- batch 5: fix move with NULL components
+deck("w23_fix_move_linear_null", "# type 2 under fix move linear NULL NULL NULL: LAMMPS integrates every component like nve (a free sphere, no rotation)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + FLOOR + TWO4
+     + "group t1 type 1\ngroup t2 type 2\nfix integ t1 nve/sphere\nfix mv t2 move linear NULL NULL NULL\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("w24_fix_move_linear_z_null", "# type 2 under fix move linear 0 0 NULL: held in x and y, free along z\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + FLOOR + TWO4
+     + "group t1 type 1\ngroup t2 type 2\nfix integ t1 nve/sphere\nfix mv t2 move linear 0 0 NULL\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("w25_fix_move_wiggle_partner", "# type 2 under fix move wiggle (an oscillating particle wall)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + FLOOR + TWO4
+     + "group t1 type 1\ngroup t2 type 2\nfix integ t1 nve/sphere\nfix mv t2 move wiggle 0 0 0.001 0.01\ntimestep 1e-5\nrun 1000\n", g=1)
+
+# ---------------------------------------------------------------- batch 6: respa, a gaussian size template under a size-dependent law
+deck("a42_run_style_respa", "# run_style respa 2 2 with pair granular (LAMMPS stops if it cannot)\n"
+     + BASE + TWO4 + "run_style respa 2 2\nrun 100\n", g=1)
+HS = ("fix m1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+      "fix m2 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000\n"
+      "fix m3 all property/global gamman peratomtypepair 3 300 300 300 300 300 300 300 300 300\n"
+      "fix m4 all property/global gammat peratomtypepair 3 100 100 100 100 100 100 100 100 100\n"
+      "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5\n"
+      "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+      "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n")
+deck("G18_gaussian_radius_hookestiffness", "# LIGGGHTS: hooke/stiffness with a gaussian radius template (mu 2 mm, sigma 0.4 mm), 200 particles inserted at once\n"
+     + lhead() + HS
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius gaussian 0.002 0.0004\n"
+     + "fix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.04 0.04 -0.04 0.04 0.01 0.14 units box\n"
+     + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 200 region ins\n"
+     + RUN, g=1, liggghts=True)
 
 
 def write(name):
