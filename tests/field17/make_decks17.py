@@ -322,6 +322,13 @@ deck("G18_gaussian_radius_hookestiffness", "# LIGGGHTS: hooke/stiffness with a g
      + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 200 region ins\n"
      + RUN, g=1, liggghts=True)
 
+# ---------------------------------------------------------------- batch 7: a floor of wall particles that got the pour's velocity
+deck("w26_particle_floor_with_initial_velocity", "# a floor of type-2 particles (a lattice row) and type-1 spheres above; velocity all set 0 0 -1 before the groups are chosen; only type 1 is integrated\n"
+     + head().replace("create_box 2 box", "create_box 2 box") + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + "lattice sc 0.004 origin 0.5 0.5 0.5\nregion fl block 0 0.04 0 0.04 0 0.004 units box\ncreate_atoms 2 region fl\n"
+     + "region up block 0 0.04 0 0.04 0.02 0.03 units box\ncreate_atoms 1 region up\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.004 density 2500\n"
+     + "velocity all set 0 0 -1\ngroup mobile type 1\nfix integ mobile nve/sphere\ntimestep 1e-5\nrun 2000\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]

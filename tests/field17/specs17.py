@@ -8,6 +8,7 @@ D = os.path.join(HERE, "decks")
 m = lambda r, rho: rho * 4 / 3 * math.pi * r ** 3
 K = "damping mass_velocity tangential linear_nohistory 1 0.3"
 HK = f"hooke 2000 3000 {K}"
+R03 = "hertz/material 7e7 0.926 0.245 tangential mindlin NULL 1.0 0.16 rolling sds 1e5 1.0 0.1 damping tsuji twisting none"
 
 
 def P(t1, t2, r1, m1, r2, m2, **kw):
@@ -52,6 +53,9 @@ S = {
     "w23_fix_move_linear_null": {"lines": ["pair_style granular", f"pair_coeff * * {HK}"],
         "integr_lines": ["fix nve a1 nve/sphere", "fix mv a2 move linear NULL NULL NULL"],
         "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.002, m(0.002, 2500))]},
+    "R03_dirt_column_collapse": {"ntypes": 1, "lines": ["pair_style granular", "pair_coeff 1 1 " + R03],
+        "checks": [P(1, 1, 0.0015, m(0.0015, 2500), 0.0015, m(0.0015, 2500), speed_idx=[1], stage=2),
+                   W(1, 0.0015, m(0.0015, 2500), "fix floor all wall/gran granular " + R03 + " zplane 0.0 NULL", speed_idx=[1], stage=2)]},
     "d01_2d_set_density": {"dimension": 2, "lines": ["pair_style granular", f"pair_coeff * * {HK}"],
         "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 2500))]},
     "d03_2d_read_data": {"dimension": 2, "lines": ["pair_style granular", f"pair_coeff * * {HK}"],
