@@ -329,6 +329,23 @@ deck("w26_particle_floor_with_initial_velocity", "# a floor of type-2 particles 
      + "region up block 0 0.04 0 0.04 0.02 0.03 units box\ncreate_atoms 1 region up\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.004 density 2500\n"
      + "velocity all set 0 0 -1\ngroup mobile type 1\nfix integ mobile nve/sphere\ntimestep 1e-5\nrun 2000\n", g=1)
 
+# ---------------------------------------------------------------- batch 8: a zero-size type, coeff_restitution on hooke, LIGGGHTS dt/reset
+deck("m11_zero_diameter_type2", "# type 2 spheres of diameter 0 (point particles) with a mass: pairs with them\n"
+     + BASE + "create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.0\nset type 2 mass 1e-4\nrun 100\n", g=1)
+deck("m12_coeff_restitution_on_hooke", "# hooke normal model with damping coeff_restitution (its damping parameter read as e = 0.5)\n"
+     + head() + "pair_style granular\npair_coeff * * hooke 2000 0.5 damping coeff_restitution tangential linear_nohistory 1 0.3\n"
+     + "fix floor all wall/gran granular hooke 2000 0.5 damping coeff_restitution tangential linear_nohistory 1 0.3 zplane 0 NULL\n"
+     + GRAV + TAIL + TWO + "run 100\n", g="0.1 1")
+deck("G19_dt_reset_liggghts", "# LIGGGHTS: timestep 1e-6, fix dt/reset up to 1e-4, every 10 check no, skin 1e-4\n"
+     + nhead("neighbor 1e-4 bin\nneigh_modify delay 0 every 10 check no\n") + LB
+     + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nfix dtr all dt/reset 1 1e-7 1e-4 0.01 units box\nrun 2000\n",
+     g="0.5 2 5", liggghts=True)
+
+deck("G20_cohesion_one_pair", "# LIGGGHTS: cohesion sjkr with a cohesion energy density on 1 1 only (0 elsewhere): the other pairs and walls are audited\n"
+     + lhead() + MAT3 + E3 + "fix m9 all property/global cohesionEnergyDensity peratomtypepair 3 5e4 0 0 0 0 0 0 0 0\n"
+     + "pair_style gran model hertz tangential history cohesion sjkr\npair_coeff * *\n"
+     + "fix wprim all wall/gran model hertz tangential history cohesion sjkr primitive type 3 zplane 0.0\n" + ATOMS + RUN, g="0.1 1", liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
