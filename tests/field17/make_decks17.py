@@ -346,6 +346,25 @@ deck("G20_cohesion_one_pair", "# LIGGGHTS: cohesion sjkr with a cohesion energy 
      + "pair_style gran model hertz tangential history cohesion sjkr\npair_coeff * *\n"
      + "fix wprim all wall/gran model hertz tangential history cohesion sjkr primitive type 3 zplane 0.0\n" + ATOMS + RUN, g="0.1 1", liggghts=True)
 
+# ---------------------------------------------------------------- batch 9: two integrators of different kinds, type labels from a data file
+deck("a43_nve_plus_nve_sphere", "# fix nve/sphere on all and fix nve on type 1: type 1's translation integrated twice\n"
+     + FX + "fix integ all nve/sphere\nfix integ2 t1 nve\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("a44_nve_sphere_plus_noforce", "# fix nve/sphere and fix nve/noforce on all: positions advanced twice, velocities by the force once\n"
+     + FX + "fix integ all nve/sphere\nfix nf all nve/noforce\ntimestep 1e-5\nrun 1000\n", g=1)
+deck("m13_data_type_labels", "# type labels from the data file's Atom Type Labels section; pair_coeff and set by label\n"
+     + "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data labels.data\n"
+     + "pair_style granular\npair_coeff * * " + HK + "\npair_coeff glass steel hooke 6000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+     + "set type steel density 7800\nfix integ all nve/sphere\ntimestep 1e-5\nrun 100\n", g=1,
+     data={"labels.data": "labels\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtom Type Labels\n\n1 glass\n2 steel\n\nAtoms # sphere\n\n1 glass 0.004 2500 0.02 0.02 0.01\n2 steel 0.006 2500 0.01 0.01 0.01\n"})
+
+# ---------------------------------------------------------------- batch 10: exclusions changed between runs
+deck("a45_exclude_added_stage2", "# run; neigh_modify exclude type 1 2; run: the second run never lets 1 and 2 meet\n"
+     + BASE + TWO4 + "run 500\nneigh_modify exclude type 1 2\nrun 500\n", g=1)
+deck("a46_exclude_removed_stage2", "# exclude type 1 2; run; neigh_modify exclude none; run: 1 2 meet in the second run only\n"
+     + BASE + TWO4 + "neigh_modify exclude type 1 2\nrun 500\nneigh_modify exclude none\nrun 500\n", g=1)
+deck("a47_once_yes_stage2_only", "# run with LAMMPS' lists; neigh_modify once yes; run\n"
+     + BASE + TWO4 + "run 500\nneigh_modify once yes\nrun 500\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
