@@ -365,6 +365,16 @@ deck("a46_exclude_removed_stage2", "# exclude type 1 2; run; neigh_modify exclud
 deck("a47_once_yes_stage2_only", "# run with LAMMPS' lists; neigh_modify once yes; run\n"
      + BASE + TWO4 + "run 500\nneigh_modify once yes\nrun 500\n", g=1)
 
+# ---------------------------------------------------------------- batch 11: the line's form (continuation, keyword order, once from a variable)
+deck("a48_cluster_keyword_order", "# neigh_modify cluster yes check no every 20 delay 0 (keywords in another order, cluster among them), skin 1e-5\n"
+     + BASE + TWO4 + "neighbor 1e-5 bin\nneigh_modify cluster yes check no every 20 delay 0\nrun 1000\n", g="0.04 1")
+deck("a49_continuation_line", "# neigh_modify split over two lines with & (every 20 delay 0 check no), skin 1e-5\n"
+     + BASE + TWO4 + "neighbor 1e-5 &\n   bin\nneigh_modify every 20 &\n   delay 0 check no\nrun 1000\n", g="0.04 1")
+deck("a50_once_from_variable", "# neigh_modify once ${o} with o a string variable yes\n"
+     + BASE + TWO4 + "variable o string yes\nneigh_modify once ${o}\nrun 1000\n", g=1)
+deck("G21_continuation_liggghts", "# LIGGGHTS: neigh_modify split over two lines with & (delay 0 every 20 check no), skin 1e-5\n"
+     + nhead("neighbor 1e-5 bin\nneigh_modify delay 0 &\n every 20 check no\n") + LB + RUN, g="0.04 1", liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
