@@ -375,6 +375,13 @@ deck("a50_once_from_variable", "# neigh_modify once ${o} with o a string variabl
 deck("G21_continuation_liggghts", "# LIGGGHTS: neigh_modify split over two lines with & (delay 0 every 20 check no), skin 1e-5\n"
      + nhead("neighbor 1e-5 bin\nneigh_modify delay 0 &\n every 20 check no\n") + LB + RUN, g="0.04 1", liggghts=True)
 
+# ---------------------------------------------------------------- batch 12: a wall sheared along its own normal
+deck("w27_wallgran_shear_along_normal", "# fix wall/gran zplane with shear z 0.5: a shear along the wall's own normal (the wall does not move)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV
+     + f"fix floor all wall/gran granular {HK} zplane 0 NULL shear z 0.5\n" + TAIL + TWO4 + "run 100\n", g=1)
+deck("G22_primitive_shear_along_normal", "# LIGGGHTS: a primitive zplane with shear z 0.5 (along its own normal)\n"
+     + lhead() + MAT3 + E3 + HERTZ + "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0 shear z 0.5\n" + ATOMS + RUN, g=1, liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
