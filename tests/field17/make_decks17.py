@@ -382,6 +382,15 @@ deck("w27_wallgran_shear_along_normal", "# fix wall/gran zplane with shear z 0.5
 deck("G22_primitive_shear_along_normal", "# LIGGGHTS: a primitive zplane with shear z 0.5 (along its own normal)\n"
      + lhead() + MAT3 + E3 + HERTZ + "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0 shear z 0.5\n" + ATOMS + RUN, g=1, liggghts=True)
 
+deck("G23_mesh_surface_vel_normal", "# LIGGGHTS: a mesh floor with surface_vel 0 0 0.5 (a conveyor velocity along the face's normal; the mesh does not move)\n"
+     + lhead() + MAT3 + E3 + HERTZ
+     + "fix cad all mesh/surface file plane0.stl type 3 surface_vel 0. 0. 0.5\nfix wmesh all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
+     + ATOMS + RUN, g=1, files={"plane0.stl": ("plane", "0", "0.04")}, liggghts=True)
+deck("G24_mesh_surface_vel_tangential", "# LIGGGHTS: a mesh floor with surface_vel 0.5 0 0 (a conveyor belt in the face's plane)\n"
+     + lhead() + MAT3 + E3 + HERTZ
+     + "fix cad all mesh/surface file plane0.stl type 3 surface_vel 0.5 0. 0.\nfix wmesh all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
+     + ATOMS + RUN, g=1, files={"plane0.stl": ("plane", "0", "0.04")}, liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
