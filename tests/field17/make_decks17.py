@@ -391,6 +391,12 @@ deck("G24_mesh_surface_vel_tangential", "# LIGGGHTS: a mesh floor with surface_v
      + "fix cad all mesh/surface file plane0.stl type 3 surface_vel 0.5 0. 0.\nfix wmesh all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n"
      + ATOMS + RUN, g=1, files={"plane0.stl": ("plane", "0", "0.04")}, liggghts=True)
 
+deck("w28_wallgran_zcylinder_hertz", "# fix wall/gran zcylinder 0.015 (inside of a cylinder) under hertz/material viscoelastic: a curved wall with a size-dependent law\n"
+     + head().replace("boundary p p f", "boundary f f f").replace("0 0.04 0 0.04 0 0.1", "-0.02 0.02 -0.02 0.02 0 0.1")
+     + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV
+     + f"fix cyl all wall/gran granular {HM} zcylinder 0.015\n" + TAIL
+     + "create_atoms 1 single 0 0 0.01\ncreate_atoms 2 single 0.006 0 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]

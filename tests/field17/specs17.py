@@ -8,6 +8,7 @@ D = os.path.join(HERE, "decks")
 m = lambda r, rho: rho * 4 / 3 * math.pi * r ** 3
 K = "damping mass_velocity tangential linear_nohistory 1 0.3"
 HK = f"hooke 2000 3000 {K}"
+HM = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"
 R03 = "hertz/material 7e7 0.926 0.245 tangential mindlin NULL 1.0 0.16 rolling sds 1e5 1.0 0.1 damping tsuji twisting none"
 
 
@@ -67,6 +68,11 @@ S = {
     "m13_data_type_labels": {"pre": ["labelmap atom 1 glass 2 steel"], "lines": ["pair_style granular", f"pair_coeff * * {HK}",
         f"pair_coeff glass steel hooke 6000 3000 {K}"],
         "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 7800)), P(2, 2, 0.003, m(0.003, 7800), 0.003, m(0.003, 7800))]},
+    "w28_wallgran_zcylinder_hertz": {"lines": ["pair_style granular", f"pair_coeff * * {HM}"],
+        "checks": [W(1, 0.002, m(0.002, 2500), f"fix cyl all wall/gran granular {HM} zcylinder 0.015", wall_id="cyl",
+                     axis="x", z0=0.013, zw=0.015, sign=-1, speed_idx=[0, 2]),
+                   W(2, 0.003, m(0.003, 2500), f"fix cyl all wall/gran granular {HM} zcylinder 0.015", wall_id="cyl",
+                     axis="x", z0=0.012, zw=0.015, sign=-1, speed_idx=[0, 2])]},
     "d01_2d_set_density": {"dimension": 2, "lines": ["pair_style granular", f"pair_coeff * * {HK}"],
         "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 2500))]},
     "d03_2d_read_data": {"dimension": 2, "lines": ["pair_style granular", f"pair_coeff * * {HK}"],
