@@ -397,6 +397,11 @@ deck("w28_wallgran_zcylinder_hertz", "# fix wall/gran zcylinder 0.015 (inside of
      + f"fix cyl all wall/gran granular {HM} zcylinder 0.015\n" + TAIL
      + "create_atoms 1 single 0 0 0.01\ncreate_atoms 2 single 0.006 0 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g=1)
 
+deck("w29_group_before_create_atoms", "# group mobile type 1 and fix nve/sphere on it, then more type-1 atoms made: LAMMPS' groups are sets of atoms, the new ones are in no group but all and never move\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + FLOOR
+     + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\ngroup mobile type 1\nfix integ mobile nve/sphere\n"
+     + "create_atoms 1 single 0.01 0.01 0.01\ncreate_atoms 1 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\ntimestep 1e-5\nrun 1000\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
