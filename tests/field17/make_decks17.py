@@ -402,6 +402,14 @@ deck("w29_group_before_create_atoms", "# group mobile type 1 and fix nve/sphere 
      + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\ngroup mobile type 1\nfix integ mobile nve/sphere\n"
      + "create_atoms 1 single 0.01 0.01 0.01\ncreate_atoms 1 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\ntimestep 1e-5\nrun 1000\n", g=1)
 
+deck("x01_log_dump_restart_outside", "# writers aimed outside the folder: log, dump, restart, write_dump, print file, fix ave/time file, thermo_modify ... (canary names f17*)\n"
+     + BASE + TWO4 + "log /tmp/f17_log.lammps append\ndump d1 all atom 10 /tmp/f17_dump.atom\nrestart 50 /tmp/f17_a.restart /tmp/f17_b.restart\n"
+     + "print \"canary\" file /tmp/f17_print.txt\nprint \"canary\" append ../f17_up.txt\nvariable t equal time\nfix at all ave/time 1 1 10 v_t file /tmp/f17_avetime.txt\n"
+     + "run 100\nwrite_dump all atom /tmp/f17_wd.atom\nwrite_data /tmp/f17_wd.data\nlog none\n", g=1)
+deck("G25_liggghts_writers_outside", "# LIGGGHTS: writers aimed outside the folder (log, dump, write_restart, print file)\n"
+     + lhead() + LB + "log /tmp/f17_lig.log\ndump d1 all custom 10 /tmp/f17_lig.dump id x y z\nprint \"canary\" file /tmp/f17_lig_print.txt\n" + RUN
+     + "write_restart /tmp/f17_lig.restart\n", g=1, liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
