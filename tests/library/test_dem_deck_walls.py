@@ -970,3 +970,20 @@ def test_two_meshes_of_one_wall_are_named_as_meeting_at_a_surface():
     for (_, mesh), what in rows.items():
         other = "cad2" if mesh == "cad1" else "cad1"
         assert any(f"another mesh of this wall ({other})" in w for w in what), what
+
+
+@needs_liggghts
+@pytest.mark.dem
+@pytest.mark.parametrize("shear, named", [("shear z 0.5", True), ("shear x 0.5", False)])
+def test_a_liggghts_plane_sheared_along_its_normal_is_named(tmp_path, shear, named):
+    """LIGGGHTS runs ``zplane 0.0 shear z 0.5`` (LAMMPS refuses a shear along the normal): the floor
+    moves into the sphere during a contact, 0.741 at g = 1 where the still floor gives 0.700 (field
+    round 17, G22); printed as the still floor's 0.7 before. A shear in the plane keeps the floor's eps."""
+    deck = (Path(__file__).resolve().parents[1] / "field17" / "decks" / "G22_primitive_shear_along_normal"
+            / "in.deck").read_text()
+    assert "shear z 0.5" in deck
+    (tmp_path / "in.deck").write_text(deck.replace("shear z 0.5", shear))
+    status, out, err = run_deck(tmp_path / "in.deck", "--g", "1", "--json")
+    assert status == 0, err
+    walls = json.loads(out)["walls"]
+    assert (not walls) == named and ("along its own normal" in err) == named, err
