@@ -127,3 +127,15 @@ def test_lists_built_once_per_run_find_no_contact_in_time(tmp_path):
     assert status == 0, err
     assert "once yes" in err and all(r["late_above"] == 0 and r["eps"] == [None, None] for r in got["pairs"]), err
     assert got["walls"] and all(None not in w["eps"] for w in got["walls"])
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_the_lists_bound_is_read_at_the_largest_step_a_dt_reset_may_take(tmp_path):
+    """A fix dt/reset raises the step during the run (field round 17, a19: 1e-6 to 1e-4 at once,
+    LAMMPS up to 3.3 at g = 0.5 where 0.497 was printed below the bound at the deck's step). The bound
+    skin / (10 dt) is read at its largest step, 1e-4: 0.1, not 1.0 at the deck's 1e-5."""
+    status, got, err = _audit(tmp_path, "neighbor 1e-4 bin\nneigh_modify every 10 delay 0 check no\n"
+                              "fix dtr all dt/reset 1 1e-7 1e-4 0.01 units box\nrun 100\n", 0.05, 0.5)
+    assert status == 0, err
+    assert all(r["late"] == [False, True] and r["late_above"] == pytest.approx(0.1) for r in got["pairs"]), err

@@ -155,11 +155,38 @@ def late_speeds(deck: Deck) -> dict:
     (0.0, 0.5)
     """
     found: dict = {}
+    largest = _reset_largest_dt(deck)
     for neigh, skin, dt in [(deck.neigh, deck.skin, deck.dt), *deck.lists_seen]:
-        for kind, (g, why) in _late_in(deck, neigh, skin, dt).items():
+        reset = largest if largest is None or not dt else max(dt, largest)
+        for kind, (g, why) in _late_in(deck, neigh, skin, reset or dt).items():
+            if reset is None:
+                # a fix dt/reset with no largest step: the bound has no floor
+                g, why = 0.0, f"{why}; fix {deck.dt_reset[2]} dt/reset may raise the step without limit"
+            elif reset != dt:
+                why = f"{why} (at the largest step fix {deck.dt_reset[2]} dt/reset may take, {reset:g})"
             if kind not in found or g < found[kind][0]:
                 found[kind] = (g, why)
     return found
+
+
+def _for_meshes(why: str, g: float) -> str:
+    """The sentence of a bound said for LIGGGHTS' mesh walls, which are found late from half of it."""
+    return f"{why}; LIGGGHTS' mesh walls were found late from about half that speed, {g / 2:.4g}"
+
+
+def _reset_largest_dt(deck: Deck) -> float | None:
+    """The largest step a fix dt/reset in force may take (its Tmax), 0 where none is in force, None
+    where it has no largest (NULL): the lists' bounds are read at that step (field round 17, a19:
+    dt/reset raised 1e-6 to 1e-4 at once, LAMMPS up to 3.3 at g = 0.5 where 0.497 was printed)."""
+    if not deck.dt_reset:
+        return 0.0
+    words = deck.dt_reset[1].split()
+    if len(words) < 7:
+        return None
+    try:
+        return float(words[6])
+    except ValueError:
+        return None
 
 
 def _late_in(deck: Deck, neigh: dict, skin, dt) -> dict:
@@ -186,7 +213,7 @@ def _late_in(deck: Deck, neigh: dict, skin, dt) -> dict:
         g = skin / (steps * dt)
         why = (f"{said}: the engine rebuilds its neighbour lists every {steps} steps without looking, so two bodies "
                f"approaching faster than skin / ({steps} dt) = {g:.4g} may first meet already overlapping")
-        return {"pairs": (g, why), "walls": (g, why), "meshes": (g / 2, why)}
+        return {"pairs": (g, why), "walls": (g, why), "meshes": (g / 2, _for_meshes(why, g))}
     if every > 1:
         wall = min(skin / (2 * every * dt), skin / (delay * dt) if delay else float("inf"))
         why = (f"{said}: the engine looks at its neighbour lists only every {every} steps, rebuilding them once an "
@@ -200,7 +227,7 @@ def _late_in(deck: Deck, neigh: dict, skin, dt) -> dict:
     g = skin / (delay * dt)
     why = (f"{said}: the engine looks at its neighbour lists no sooner than {delay} steps after a build, so two "
            f"bodies approaching faster than skin / ({delay} dt) = {g:.4g} may first meet already overlapping")
-    return {"pairs": (g, why), "walls": (g, why), "meshes": (g / 2, why)}
+    return {"pairs": (g, why), "walls": (g, why), "meshes": (g / 2, _for_meshes(why, g))}
 
 
 def special_bonds(deck: Deck, words: list, where: str, line: str) -> None:
