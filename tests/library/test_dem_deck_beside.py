@@ -3,11 +3,12 @@ speed caps are named on stderr with the eps the engine measures with them, and t
 against LAMMPS running the collision with the deck's own fix line (extrapolated to dt = 0)."""
 
 import json
+from pathlib import Path
 
 import pytest
 
 from cli_run import run_cli
-from deck_cli import lammps_spheres
+from deck_cli import lammps_spheres, needs_lammps, run
 from restitution.dem.contact import Contact
 from restitution.dem.deck.beside import drag_eps
 from restitution.dem.engines.lammps import run as lammps_run
@@ -306,3 +307,13 @@ def test_a_fix_the_audit_does_not_know_is_said_to_be_left_out_of_the_eps(tmp_pat
                         + "fix soft all wall/lj93 zlo EDGE 1e-6 0.003 0.01\nrun 1\n")
     assert "not understood: fix wall/lj93 may add forces to its atoms (group all), which the eps printed do not " \
            "include" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_an_aveforce_with_every_component_null_changes_no_force():
+    """``fix aveforce NULL NULL NULL`` averages nothing (field round 17, a37): it was said to change
+    the eps the engine measures; the rows are the contact's own."""
+    deck = Path(__file__).resolve().parents[1] / "field17" / "decks" / "a37_aveforce_type2" / "in.deck"
+    status, out, err = run(deck, "--g", "1")
+    assert status == 0 and "every component NULL: it changes no force" in err, err

@@ -573,6 +573,10 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
     elif style == "setforce":
         _setforce(entry, deck, row, contact, pair, types, words, acted, faces)
         return
+    elif style == "aveforce" and len(words) > 6 and all(v == "NULL" for v in words[4:7]) and len(words) == 7:
+        # every component NULL: LAMMPS averages no force (field round 17, a37, a form research decks use)
+        entry["eps_engine"], entry["why"] = list(row["eps"]), "every component NULL: it changes no force"
+        return
     elif style == "freeze" and deck.code != "LAMMPS":
         entry["why"] = "its size is computed for LAMMPS only (whose m_eff with a frozen atom was checked)"
         return
