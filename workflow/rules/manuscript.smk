@@ -155,7 +155,11 @@ rule arxiv:
         # table, the calibrated dampings and Feng's formula against the exact family; and the ledger of
         # Kim's claims with each row's tolerance and notes, which the supplement's table names
         data=["results/dem/lammps_eps.csv", "results/dem/typed_e.csv", "results/dem/calibration.csv",
-              "results/paper/feng_calibration.csv", f"results/{MAIN}/claims.csv"],
+              "results/paper/feng_calibration.csv", f"results/{MAIN}/claims.csv",
+              # every atlas pair's uniform form, shape and coefficients, which the supplement's table
+              # summarises and the abstract quotes (referee r27: printed nowhere before)
+              *expand("results/stability/uniform/{shard}-of-{shards}.json", shard=range(STABILITY_SHARDS),
+                      shards=STABILITY_SHARDS)],
         # and every engine run behind an engine number: LAMMPS' behind lammps_eps.csv and each engine's
         # behind the typed-e table, its deck and its output, with how to rerun them (the READMEs last)
         engine_runs=lammps_run_files() + [LAMMPS_RUNS_README],
