@@ -1232,9 +1232,8 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list,
                 not_audited.append(why)
                 continue
             moves = [motion(deck, t, ran) for t in (i, j)]
-            phantom = [why for t, (kind, said) in zip((i, j), moves)
-                       if kind == "held" and said.startswith("no fix integrates type")
-                       and (why := phantom_velocity(deck, t)) is not None]
+            phantom = [why for t, (kind, _) in zip((i, j), moves)
+                       if kind == "held" and (why := phantom_velocity(deck, t)) is not None]
             if phantom and moves[0][0] != moves[1][0]:
                 not_audited.append((*deck.style_line[0], deck.style_line[1],
                                     f"types {i} {j}: {phantom[0]}: not audited"))

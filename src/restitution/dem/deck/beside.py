@@ -19,6 +19,7 @@ from functools import lru_cache
 from ...core.collision import StickError
 from ...fast.dop853 import solve
 from ..contact import Contact
+from ..dialect.state import number_or_none
 from ..engines.lammps.deck import DEFAULT_DT, FTM2V
 from ..pair import WALL_SIZE, Pair
 from .meeting import group_types, held_contact
@@ -187,14 +188,6 @@ def _keyword_ratios(words: list, start: int) -> dict:
     return ratios
 
 
-def _number(word: str) -> float | None:
-    try:
-        value = float(word)
-    except ValueError:
-        return None
-    return value if math.isfinite(value) else None
-
-
 def effects(deck, row: dict, contact: Contact, pair: Pair, types: tuple, frozen_contact=None,
             faces: list | None = None, unmoved: int | None = None) -> list[dict]:
     """What each fix acting beside the contact does to one audited collision (a type pair, or a
@@ -276,7 +269,7 @@ def _same_push(words: list, pair: Pair) -> bool:
     (False, False)
     """
     return (words[3] == "addforce" and len(words) >= 7 and pair.m1 == pair.m2 and "region" not in words[7:]
-            and all(_number(w) is not None for w in words[4:7]))
+            and all(number_or_none(w) is not None for w in words[4:7]))
 
 
 def _charged(deck, words: list, types: tuple, pair: Pair, acted: list | None) -> bool:
@@ -304,7 +297,7 @@ def _charged(deck, words: list, types: tuple, pair: Pair, acted: list | None) ->
     held = [charges[t] if on else {0.0} for t, on in zip(types, acted)]
     if all(q == {0.0} for q in held):
         return False
-    constant = len(words) >= 7 and all(_number(w) is not None for w in words[4:7]) and not (
+    constant = len(words) >= 7 and all(number_or_none(w) is not None for w in words[4:7]) and not (
         {"region", "energy", "potential"} & set(words[7:]))
     if len(types) == 2 and constant and all(acted) and all(len(q) == 1 for q in held):
         (q1,), (q2,) = held
@@ -436,7 +429,7 @@ def _set_still(deck, words: list, types: tuple, acted: list, order: list) -> tup
         for k, t in enumerate(types):
             if t not in held:
                 continue
-            if len(w) == 7 and all(_number(v) == 0.0 for v in w[4:7]):
+            if len(w) == 7 and all(number_or_none(v) == 0.0 for v in w[4:7]):
                 kept[k] = kept[k] or order.index(w[1]) > order.index(words[1]) or not acted[k]
             elif any(v != "NULL" for v in w[4:7]) or len(w) > 7:
                 partly.append(t)
@@ -478,8 +471,8 @@ def gravity_vector(words: list, dimension: int = 3) -> tuple | None:
     >>> gravity_vector("fix g all gravity v_g vector 0 0 -1".split()) is None
     True
     """
-    size = _number(words[4]) if len(words) > 4 else None
-    style, args = (words[5], [_number(w) for w in words[6:]]) if len(words) > 5 else (None, [])
+    size = number_or_none(words[4]) if len(words) > 4 else None
+    style, args = (words[5], [number_or_none(w) for w in words[6:]]) if len(words) > 5 else (None, [])
     if size is None or any(a is None for a in args):
         return None
     if style == "vector" and len(args) == 3 and dimension == 2:
@@ -562,10 +555,10 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
         # where LAMMPS' ftm2v is not 1 a drag's rate is not gamma / m (not checked there)
         entry["why"] = f"its size is not computed in units {deck.units}"
         return
-    if style == "viscous" and len(words) > 4 and (gamma := _number(words[4])) is not None and gamma >= 0:
+    if style == "viscous" and len(words) > 4 and (gamma := number_or_none(words[4])) is not None and gamma >= 0:
         ratios = _keyword_ratios(words, 5)
         drag = tuple(gamma * ratios.get(t, 1.0) / m if on else 0.0 for t, m, on in zip(types, masses, acted))
-    elif style == "langevin" and len(words) > 6 and (damp := _number(words[6])) is not None and damp > 0:
+    elif style == "langevin" and len(words) > 6 and (damp := number_or_none(words[6])) is not None and damp > 0:
         ratios = _keyword_ratios(words, 8)
         drag = tuple(1.0 / (damp * ratios.get(t, 1.0)) if on else 0.0 for t, on in zip(types, acted))
         entry["why"] = ("its drag alone; its random force (temperature from " + words[4] + ") scatters the eps "
@@ -595,7 +588,7 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
         entry["eps_engine"] = list(row["eps"])
         entry["why"] = "a torque only: a head-on collision does not turn the bodies, its eps is the contact's"
         return
-    elif style == "nve/limit" and len(words) > 4 and (xmax := _number(words[4])) is not None and xmax > 0:
+    elif style == "nve/limit" and len(words) > 4 and (xmax := number_or_none(words[4])) is not None and xmax > 0:
         dt = deck.dt if deck.dt is not None else DEFAULT_DT.get(deck.units)
         if dt:
             cap = xmax / dt
@@ -780,8 +773,8 @@ def _setforce(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types:
     axis left NULL is the contact's own; an oblique one lies between, not computed. Its torque is not
     set, which a head-on collision does not use. (entry updated)"""
     values, keywords = words[4:7], words[7:]
-    zero = [axis for axis, v in zip(_AXES, values) if _number(v) == 0.0]
-    set_otherwise = [v for v in values if v != "NULL" and _number(v) != 0.0]
+    zero = [axis for axis, v in zip(_AXES, values) if number_or_none(v) == 0.0]
+    set_otherwise = [v for v in values if v != "NULL" and number_or_none(v) != 0.0]
     if len(values) < 3 or keywords or set_otherwise:
         entry["why"] = ("a component set to a value other than 0 or NULL (a force, a variable), or a keyword "
                         "(region): its size is not computed")
@@ -883,7 +876,7 @@ def _projected(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types
     the collision's direction is not known and the effect depends on it, no eps is the engine's.
     (entry updated)"""
     style = words[3]
-    u = [_number(w) for w in words[4:7]]
+    u = [number_or_none(w) for w in words[4:7]]
     norm = math.sqrt(sum(x * x for x in u)) if len(u) == 3 and None not in u else 0.0
     if len(words) != 7 or norm == 0.0:
         entry["why"] = "its direction is not three numbers (a variable, a zero vector): its size is not computed"

@@ -13,9 +13,10 @@ velocity, so in its frame it is one held still.
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 
-from ..dialect.state import Deck, place
+from ..dialect.state import Deck, number_or_none, place
 
 __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact",
            "group_types", "integrators", "late_speeds", "phantom_velocity", "rigid", "unlisted"]
@@ -157,13 +158,12 @@ def late_speeds(deck: Deck) -> dict:
     found: dict = {}
     largest = _reset_largest_dt(deck)
     for neigh, skin, dt in [(deck.neigh, deck.skin, deck.dt), *deck.lists_seen]:
-        reset = largest if largest is None or not dt else max(dt, largest)
-        for kind, (g, why) in _late_in(deck, neigh, skin, reset or dt).items():
-            if reset is None:
-                # a fix dt/reset with no largest step: the bound has no floor
-                g, why = 0.0, f"{why}; fix {deck.dt_reset[2]} dt/reset may raise the step without limit"
-            elif reset != dt:
-                why = f"{why} (at the largest step fix {deck.dt_reset[2]} dt/reset may take, {reset:g})"
+        # an unknown step stays unknown unless the fix's largest says what it reaches
+        step = dt if largest is None or (not dt and math.isinf(largest)) else max(dt or 0.0, largest)
+        for kind, (g, why) in _late_in(deck, neigh, skin, step).items():
+            if step != dt:
+                why = (f"{why} (read at the step fix {deck.dt_reset[2]} dt/reset may take: "
+                       + (f"{step:g})" if math.isfinite(step) else "any, it has no largest)"))
             if kind not in found or g < found[kind][0]:
                 found[kind] = (g, why)
     return found
@@ -175,18 +175,15 @@ def _for_meshes(why: str, g: float) -> str:
 
 
 def _reset_largest_dt(deck: Deck) -> float | None:
-    """The largest step a fix dt/reset in force may take (its Tmax), 0 where none is in force, None
-    where it has no largest (NULL): the lists' bounds are read at that step (field round 17, a19:
-    dt/reset raised 1e-6 to 1e-4 at once, LAMMPS up to 3.3 at g = 0.5 where 0.497 was printed)."""
+    """The largest step a fix dt/reset in force may take (its Tmax), infinite where it has none
+    (NULL), None where no such fix is in force: the lists' bounds are read at that step (field round
+    17, a19: dt/reset raised 1e-6 to 1e-4 at once, LAMMPS up to 3.3 at g = 0.5 where 0.497 was
+    printed); at an infinite step every bound is 0, every speed."""
     if not deck.dt_reset:
-        return 0.0
+        return None
     words = deck.dt_reset[1].split()
-    if len(words) < 7:
-        return None
-    try:
-        return float(words[6])
-    except ValueError:
-        return None
+    largest = number_or_none(words[6]) if len(words) > 6 else None
+    return float("inf") if largest is None else largest
 
 
 def _late_in(deck: Deck, neigh: dict, skin, dt) -> dict:
@@ -327,11 +324,17 @@ def unlisted(deck: Deck, t: int) -> str | None:
     (True, 'type 2: neigh_modify include g1: the')
     """
     for _, _, (style, *args) in deck.excludes:
-        if style == "include" and ((held := group_types(deck, args[0])) is None or t not in held):
+        if style == "include" and _outside(deck, args[0], t):
             return (f"type {t}: neigh_modify include {args[0]}: the engine builds its neighbour lists for that group's "
                     "atoms only, and a sphere outside it was thrown off a wall at many times its impact speed in "
                     "LAMMPS and LIGGGHTS: not audited")
     return None
+
+
+def _outside(deck: Deck, group: str, t: int) -> bool:
+    """Whether spheres of type t may lie outside ``group`` (or the audit cannot type the group)."""
+    held = group_types(deck, group)
+    return held is None or t not in held
 
 
 def excluded(deck: Deck, i: int, j: int) -> tuple | None:
@@ -339,8 +342,7 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
     known to make it; None where it does."""
     for loc, line, (style, *args) in deck.excludes:
         if style == "include":
-            held = group_types(deck, args[0])
-            if held is None or i not in held or j not in held:
+            if _outside(deck, args[0], i) or _outside(deck, args[0], j):
                 return (*loc, line, f"types {i} {j}: neigh_modify include {args[0]}: the engine builds its neighbour "
                                     "lists for that group's atoms only, and a pair with an atom outside it (or one the "
                                     "audit cannot type) may never meet: not audited")
@@ -422,9 +424,9 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
 
 
 def phantom_velocity(deck: Deck, t: int) -> str | None:
-    """Why spheres of type t, which no fix integrates, may still hold a velocity, or None: a
-    velocity command on a group that may hold them, or an inserting fix that made them (it gives
-    its atoms a velocity). The engine leaves such a sphere in place, yet the contact's damping reads
+    """Why spheres of type t, which no fix moves (none of the deck's moving fixes may hold them),
+    may still hold a velocity, or None: a velocity command on a group that may hold them, or an
+    inserting fix that made them (it gives its atoms a velocity). The engine leaves such a sphere in place, yet the contact's damping reads
     the velocity it holds (field round 17, w21: a still partner given 0.3 0.3 0.3, head-on at g = 1,
     LAMMPS 0.56423 where the still sphere gives the audit's 0.61384; LIGGGHTS the same, G17).
 
@@ -433,7 +435,7 @@ def phantom_velocity(deck: Deck, t: int) -> str | None:
     deck : Deck
         The deck at the run audited.
     t : int
-        The type no fix integrates.
+        The sphere's type.
 
     Returns
     -------
@@ -441,10 +443,14 @@ def phantom_velocity(deck: Deck, t: int) -> str | None:
 
     Examples
     --------
-    >>> d = Deck(ntypes=2, groups={"t2": {2}}, velocities=[((None, 9), "velocity t2 set 0.3 0 0", "t2")])
+    >>> d = Deck(ntypes=2, groups={"t1": {1}, "t2": {2}}, velocities=[((None, 9), "velocity t2 set 0.3 0 0", "t2")],
+    ...          movers={"i": ((None, 8), "fix i t1 nve/sphere", "t1", "nve/sphere")})
     >>> phantom_velocity(d, 1) is None, phantom_velocity(d, 2)[:37]
     (True, 'line 9 velocity t2 set 0.3 0 0 gives ')
     """
+    # a fix move or nve/noforce moves its atoms at the velocity they hold: what the damping reads
+    if any(not _outside(deck, group, t) for _, _, group, style in deck.movers.values() if not rigid(style)):
+        return None
     for loc, line, group in deck.velocities:
         held = group_types(deck, group)
         if held is None or t in held:

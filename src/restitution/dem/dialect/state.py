@@ -19,7 +19,7 @@ from ...core.errors import InputFileError, ParameterError
 from ..calibrate import calibrate
 from ..pair import Pair
 
-__all__ = ["DeckError", "PairNotMapped", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "type_pairs", "number", "pour_into",
+__all__ = ["DeckError", "PairNotMapped", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "type_pairs", "number", "number_or_none", "pour_into",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e", "wall_faces"]
 
 
@@ -438,6 +438,31 @@ def number(token: str, where: str, text: str) -> float:
         return float(token)
     except ValueError:
         raise DeckError(where, text, f"{token!r} is not a number") from None
+
+
+def number_or_none(token) -> float | None:
+    """A word (or None) as a finite number, None where it is none: for the readings that name what
+    they cannot read instead of refusing it.
+
+    Parameters
+    ----------
+    token : str or None
+        The word, substituted.
+
+    Returns
+    -------
+    float or None
+
+    Examples
+    --------
+    >>> number_or_none("2.5e-3"), number_or_none("v_x"), number_or_none(None), number_or_none("inf")
+    (0.0025, None, None, None)
+    """
+    try:
+        value = float(token)
+    except (TypeError, ValueError):
+        return None
+    return value if math.isfinite(value) else None
 
 
 def atom_type(token: str, where: str, text: str, what: str = "an atom type") -> int:

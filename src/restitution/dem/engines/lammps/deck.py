@@ -17,8 +17,8 @@ import math
 from dataclasses import dataclass
 from functools import partial
 
-from ...dialect.state import (FLAT_WALLS, Deck, DeckError, PairNotMapped, exact_e, number, place, spheres, type_pairs,
-                              wall_faces)
+from ...dialect.state import (FLAT_WALLS, Deck, DeckError, PairNotMapped, exact_e, number, number_or_none, place,
+                              spheres, type_pairs, wall_faces)
 from ...contact import Contact, ElasticContact
 from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
@@ -707,21 +707,13 @@ def region_moves(deck: Deck, rid: str) -> str | None:
     words = deck.regions.get(rid) or []
     # a variable that is one number keeps the region where it is (field round 15, w06/w09: a face at
     # v_zl = 0, a rotation by v_th = 0, were named as moving and not audited)
-    changing = [w for w in words[3:] if w.startswith("v_") and _number_or_none(deck.variables.get(w[2:])) is None]
+    changing = [w for w in words[3:] if w.startswith("v_") and number_or_none(deck.variables.get(w[2:])) is None]
     keyword = next((w for w in words[3:] if w in ("move", "rotate")), None)
     if keyword is not None and changing:
         return f"region {rid} moves (keyword {keyword})"
     if changing:
         return f"region {rid} is placed by a variable ({changing[0]}), which LAMMPS evaluates at every step"
     return None
-
-
-def _number_or_none(formula) -> float | None:
-    """The number an equal-style variable's formula is where it is a plain number, else None."""
-    try:
-        return float(formula)
-    except (TypeError, ValueError):
-        return None
 
 
 def region_surfaces(deck: Deck, rid: str) -> list | str:
