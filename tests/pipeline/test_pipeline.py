@@ -388,6 +388,13 @@ def test_the_pdf_has_no_unresolved_references(built):
                     reason="needs pdflatex, latexmk and poppler-utils (make test installs them as root)")
 def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
     tree = copy_built(built, tmp_path / "t")
+    # a git checkout, as a build is made, so that the bundle carries the sources archive with its tree hash
+    git = ["git", "-c", "user.name=t", "-c", "user.email=t@t", "-c", "init.defaultBranch=main"]
+    for command in (["init", "-q"], ["add", "-A"], ["commit", "-q", "-m", "sources"]):
+        subprocess.run([*git, *command], cwd=tree, env={**ENV, "GIT_CONFIG_GLOBAL": os.devnull}, check=True,
+                       capture_output=True)
+    commit_tree = subprocess.run(["git", "rev-parse", "HEAD^{tree}"], cwd=tree, capture_output=True,
+                                 text=True, check=True).stdout.strip()
     proc = make(tree, "arxiv")
     assert proc.returncode == 0, proc.stderr[-3000:]
     bundle = tree / "results/paper/arxiv.tar.gz"
@@ -405,6 +412,17 @@ def test_the_arxiv_bundle_compiles_alone_with_plain_pdflatex(built, tmp_path):
     assert all(n[:-3] + ".out" in runs for n in decks) and "results/dem/lammps_runs/README.txt" in runs
     assert set(runs) <= set(names), sorted(set(runs) - set(names))
     assert "results/dem/lammps_runs/README.txt" in (tmp_path / "arxiv" / "README.txt").read_text()
+    # the sources: the commit's files, whose tree hash, recomputed from the unpacked archive as the README
+    # says, is the one it states and the commit's
+    with tarfile.open(tmp_path / "arxiv/anc/restitution-sources.tar.gz") as tar:
+        tar.extractall(tmp_path / "src", **({"filter": "data"} if hasattr(tarfile, "data_filter") else {}))
+    for command in (["init", "-q"], ["add", "-A", "-f"]):
+        subprocess.run([*git, *command], cwd=tmp_path / "src/restitution-sources", check=True, capture_output=True,
+                       env={**ENV, "GIT_CONFIG_GLOBAL": os.devnull})
+    unpacked_tree = subprocess.run(["git", "write-tree"], cwd=tmp_path / "src/restitution-sources",
+                                   capture_output=True, text=True, check=True).stdout.strip()
+    assert unpacked_tree == commit_tree
+    assert f"git tree hash is {commit_tree}, the tree of that commit" in (tmp_path / "arxiv/README.txt").read_text()
     # and every engine run behind the typed-e table: each engine's inputs and outputs, the eps of each
     # run beside the table's (each row at each confirming e), with how to rerun them
     typed = sorted(p.relative_to(tree).as_posix() for p in (tree / "results/dem/typed_e_runs").rglob("*") if p.is_file())

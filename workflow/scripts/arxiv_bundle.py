@@ -18,6 +18,7 @@ import io
 import os
 import subprocess
 import tarfile
+import tempfile
 from pathlib import Path
 
 from restitution_workflow.atomic import atomic_path
@@ -64,6 +65,31 @@ def tracked_sources() -> tuple[dict[str, bytes], frozenset] | None:
         if mode == "100755":
             executable.add(name)
     return contents, frozenset(executable)
+
+def git_tree(files: dict[str, bytes], executable: frozenset) -> str:
+    """The git tree hash of ``files`` (names under restitution-sources/), found as a reader finds it from
+    the unpacked archive (``git init``, ``git add -A -f``, ``git write-tree``), so that the hash the README
+    states is the one their check prints; it equals ``git rev-parse COMMIT^{tree}`` of a clean build."""
+    with tempfile.TemporaryDirectory() as scratch:
+        root = Path(scratch) / "restitution-sources"
+        for name, data in files.items():
+            path = Path(scratch) / name
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_bytes(data)
+            path.chmod(0o755 if name in executable else 0o644)
+        # no user or system git settings (autocrlf, filters) may change what is hashed
+        env = {**os.environ, "GIT_CONFIG_GLOBAL": os.devnull, "GIT_CONFIG_NOSYSTEM": "1"}
+        for command in (["init", "-q"], ["add", "-A", "-f"]):
+            subprocess.run(["git", *command], cwd=root, env=env, check=True, capture_output=True)
+        return subprocess.run(["git", "write-tree"], cwd=root, env=env, check=True, capture_output=True,
+                              text=True).stdout.strip()
+
+
+def commit_tree() -> str | None:
+    """The tree of the checkout's HEAD, or None where git cannot say."""
+    head = subprocess.run(["git", "rev-parse", "HEAD^{tree}"], capture_output=True, text=True)
+    return head.stdout.strip() if head.returncode == 0 else None
+
 
 # %% Members: name in the bundle -> file in the project
 members = {"restitution.tex": Path(snakemake.input.tex), "restitution.bbl": Path(snakemake.input.bbl),
@@ -135,9 +161,15 @@ if sources is None:
 else:
     files, executable = sources
     contents[SOURCES] = tar_gz(files, executable)
+    tree = git_tree(files, executable)
+    same = ("the tree of that commit" if tree == commit_tree() else
+            "NOT the tree of that commit: the build was made with uncommitted changes")
     note = (f"{SOURCES} holds the project's sources: the {len(files)} files under version control, as built\n"
             f"(commit {snakemake.params.commit}). Unpacked, `make paper` in restitution-sources/ rebuilds both\n"
-            "documents, every number included; its README.md says what the build needs.")
+            "documents, every number included; its README.md says what the build needs.\n"
+            f"Its files' git tree hash is {tree}, {same} (in the project's repository:\n"
+            "git rev-parse COMMIT^{tree}). To recompute it: tar xzf the archive, then in restitution-sources/\n"
+            "git init -q && git add -A -f && git write-tree.")
 contents["README.txt"] = readme.replace("{sources}", note).encode()
 
 # %% Write it
