@@ -34,3 +34,28 @@ def test_pairs_with_a_held_sphere_that_holds_a_velocity_are_named(tmp_path, velo
     assert ((1, 2) not in audited) == named, err
     assert ("gives type 2's spheres a velocity" in err) == named, err
     assert (1, 1) in audited
+
+
+def _stages(tmp_path, runs: str):
+    deck = HEAD.replace("fix integ all nve/sphere\n", "") + f"group t1 type 1\ngroup t2 type 2\n{runs}"
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
+    assert status == 0, err
+    got = json.loads(out)
+    return [{tuple(r["types"]) for r in stage["pairs"]} for stage in got.get("stages", [got])], err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("runs, named", [
+    # type 2 falls under gravity in the first run; held from the second on, it keeps the velocity it fell with
+    ("fix integ all nve/sphere\nrun 100\nunfix integ\nfix integ t1 nve/sphere\nrun 100\n", True),
+    ("fix integ all nve/sphere\nrun 100\nrun 100\n", False),
+    # a velocity command between two runs whose contacts are otherwise the same (they were one stage)
+    ("fix integ t1 nve/sphere\nrun 100\nvelocity t2 set 0.3 0 0\nrun 100\n", True),
+    ("fix integ t1 nve/sphere\nrun 100\nvelocity t2 set 0 0 0\nrun 100\n", False)])
+def test_a_held_sphere_keeps_the_velocity_of_an_earlier_run(tmp_path, runs, named):
+    stages, err = _stages(tmp_path, runs)
+    assert (1, 2) in stages[0] or named is False and len(stages) == 1, err
+    assert ((1, 2) not in stages[-1]) == named, err
+    assert all((1, 1) in s for s in stages)

@@ -563,6 +563,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             for inserted in deck.inserts:
                 _made_after(deck, inserted, f"{where} ({line}), where an inserting fix makes atoms", inserting=True)
         _stage(deck, loc, line)
+        _moved_in_run(deck, loc, line)
         if deck.inserting:
             deck.atoms = True
             _inserted(deck)
@@ -959,7 +960,11 @@ def contact_key(deck: Deck) -> str:
                        # a moving fix's group given again between runs holds other atoms from there on
                        {g: deck.groups.get(g, "undefined") for _, _, g, _ in deck.movers.values()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
-                       bool(deck.bonds), deck.special_lj, deck.dt_reset[1:])))
+                       bool(deck.bonds), deck.special_lj, deck.dt_reset[1:],
+                       # a velocity given to atoms no fix moves is read by their contacts' damping (field
+                       # round 17: a velocity command between two runs of one stage was not seen)
+                       sorted({g for _, _, g in deck.velocities}
+                              - {g for _, _, g, st in deck.movers.values() if not rigid(st)}))))
 
 
 def _coarsest_dt(stage: Deck, deck: Deck) -> None:
@@ -997,6 +1002,20 @@ def _stage(deck: Deck, loc, line: str) -> None:
     snap = copy.deepcopy(deck, {id(deck.unknown): deck.unknown, id(deck.ignored): deck.ignored})
     deck.stages = stages
     stages.append(([(loc, line)], snap, key))
+
+
+def _moved_in_run(deck: Deck, loc, line: str) -> None:
+    """The atoms a fix moved in this run keep the velocity they end it with, which the runs skipped do
+    not show: where a later run holds them with no fix, the contact's damping reads it, as it reads a
+    velocity command's (meeting.phantom_velocity). Each moving fix's group is kept as a velocity given
+    at this run, once."""
+    given = {(moved_line, group) for _, moved_line, group in deck.velocities}
+    for fix, (_, _, group, style) in deck.movers.items():
+        if rigid(style):
+            continue
+        moved = f"{line} (where fix {fix} ({style}) moved group {group})"
+        if (moved, group) not in given:
+            deck.velocities = deck.velocities + [(loc, moved, group)]
 
 
 def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> None:
