@@ -156,6 +156,8 @@ rule arxiv:
         # Kim's claims with each row's tolerance and notes, which the supplement's table names
         data=["results/dem/lammps_eps.csv", "results/dem/typed_e.csv", "results/dem/calibration.csv",
               "results/paper/feng_calibration.csv", f"results/{MAIN}/claims.csv",
+              # the tolerance study behind the supplement's accuracy figures (referee r28: named, not carried)
+              f"results/{MAIN}/reference/accuracy.csv",
               # every atlas pair's uniform form, shape and coefficients, which the supplement's table
               # summarises and the abstract quotes (referee r27: printed nowhere before)
               *expand("results/stability/uniform/{shard}-of-{shards}.json", shard=range(STABILITY_SHARDS),

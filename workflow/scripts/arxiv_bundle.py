@@ -104,13 +104,15 @@ for path in [*snakemake.input.data, *snakemake.input.engine_runs, *snakemake.inp
              snakemake.input.manifest]:
     members[Path(path).as_posix()] = Path(path)   # at their project paths, read by no TeX run
 runs_readme = Path(snakemake.input.engine_runs[-1]).as_posix()
+claims = next(Path(p).as_posix() for p in snakemake.input.data if p.endswith("/claims.csv"))
+accuracy = next(Path(p).as_posix() for p in snakemake.input.data if p.endswith("/reference/accuracy.csv"))
 typed_readme = Path(snakemake.input.typed_e_runs[-1]).as_posix()
 readme = f"""\
 restitution.tex and supplement.tex compile with pdflatex alone, run until the log asks for no rerun
 (the bibliographies are the .bbl files; the article reads the supplement's labels from the .aux it carries,
 the supplement the numbers of the article's labels from results/paper/article_labels.aux).
 The tables behind the engine and calibration numbers are under results/dem/ and results/paper/ (CSV);
-the ledger of Kim's claims, with each row's tolerance and notes, is claims.csv under results/<variant>/.
+the ledger of Kim's claims, with each row's tolerance and notes, is {claims}.
 Every LAMMPS run behind the article's LAMMPS figure is under {Path(runs_readme).parent.as_posix()}/: one deck (.in) and its
 screen output (.out) per run; {runs_readme} says how to rerun one and how each eps is read from it.
 Every engine run behind the typed-e table (LAMMPS, LIGGGHTS, Yade, Kratos: each row in the engine named
@@ -140,7 +142,7 @@ of the supplement is made by one script under workflow/scripts/, a step of the S
     restitution.audit.stability; its grid, tolerances and parallel jobs are the stability block of
     config.yaml)
   uniform-approximation atlas: uniform_atlas.py
-The tolerance study is results/<variant>/reference/accuracy.csv. Kim's matching procedure, in all its
+The tolerance study (the supplement's accuracy of the reference integrations) is {accuracy}. Kim's matching procedure, in all its
 readings, is restitution.audit.matching; the reading used for the figures is set in config.yaml, which
 also lists the force laws (as "variants"). `restitution eps --method uniform --json` prints the
 uniform approximation's numbers (its old name closed-form still works, with a note). The DEM codes' contact laws are restitution.dem.engines, one module per code;
