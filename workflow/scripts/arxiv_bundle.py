@@ -139,8 +139,9 @@ of the supplement is made by one script under workflow/scripts/, a step of the S
   Feng's calibration: feng_calibration.py
   half-power series of Hertz's law and its truncation errors: schwager_poeschel.py
   stability atlas (table and figure): stability_atlas.py, fig_stability.py (library
-    restitution.audit.stability; its grid, tolerances and parallel jobs are the stability block of
-    config.yaml)
+    restitution.audit.stability; its grid, tolerances and parallel jobs are the defaults of
+    restitution.audit.stability.AtlasSpec, which an optional stability block of config.yaml overrides,
+    field by field, as workflow/schemas/config.schema.yaml describes)
   uniform-approximation atlas: uniform_atlas.py
 The tolerance study (the supplement's accuracy of the reference integrations) is {accuracy}. Kim's matching procedure, in all its
 readings, is restitution.audit.matching; the reading used for the figures is set in config.yaml, which

@@ -63,18 +63,21 @@ def unbroken(option: str) -> str:
 # and the count of options that miss e under their own rule). The dashpot's formula (LAMMPS' coeff_restitution,
 # LIGGGHTS, Yade's ViscElMat) and Tsuji's fit are the overlap rule's; Kratos' linear law bisects the force
 # rule's eps (the engines' contact modules say where each comes from). Thornton's fit (Yade's Hertz-Mindlin,
-# Kratos' Hertz law) is taken as made for the force rule because Yade's source says so; their paper is not
-# checked on this, so the column marks those two rows (THORNTON_ROWS) and the caption says what the mark means
+# Kratos' Hertz law) is taken as made for the force rule because Yade's source says so, and LAMMPS' tsuji
+# polynomial (Marshall's fit, by LAMMPS' source) as the overlap rule's because the damping that returns e under
+# that rule is its near-constant multiple; neither paper is checked on this, so the column marks those rows
+# (INFERRED_ROWS) and the caption says what the mark means (referee r29)
 DERIVED_FOR = {"Yade Hertz-Mindlin en": "force", "Kratos DEM_D_Hertz_viscous_Coulomb": "force",
                "Kratos DEM_D_Linear_viscous_Coulomb": "force"}
-THORNTON_ROWS = ("Yade Hertz-Mindlin en", "Kratos DEM_D_Hertz_viscous_Coulomb")
+INFERRED_ROWS = ("Yade Hertz-Mindlin en", "Kratos DEM_D_Hertz_viscous_Coulomb",
+                 "LAMMPS hertz + damping tsuji, limit_damping", "LAMMPS hertz + damping tsuji (default)")
 RULE_LETTER = {"overlap": "o", "force": "f"}
 
 
 def rule_cell(code: str) -> str:
     """'derived for / runs' as two letters (o: zero overlap, f: zero force); * where the derived-for rule
-    rests on Yade's source, not on Thornton et al.'s paper."""
-    mark = r"$^\ast$" if code in THORNTON_ROWS else ""
+    is inferred, not read in the paper the fit comes from."""
+    mark = r"$^\ast$" if code in INFERRED_ROWS else ""
     return rf"{RULE_LETTER[DERIVED_FOR.get(code, 'overlap')]}{mark}\,/\,{RULE_LETTER[TYPED_E_CODES[code](0.5).end]}"
 
 
