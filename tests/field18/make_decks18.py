@@ -477,6 +477,138 @@ deck("G30_periodic_neighbor_across", "# LIGGGHTS periodic x with the two spheres
      + RUN, g="0.1 1", liggghts=True)
 
 
+# ================================================================ batch 2: lattice units, molecule offsets, defaults, LIGGGHTS set semantics
+deck("b01_region_sphere_lattice_units", "# lattice sc 0.01, then a sphere region of radius 2 in lattice units (0.02 m) as a concave wall, hertz/material\n"
+     + head(box="-0.03 0.03 -0.03 0.03 -0.03 0.03", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
+     + "lattice sc 0.01\nregion ball sphere 0 0 0 2 side in\n" + f"fix bw all wall/gran/region granular {HM} region ball\n" + TAIL
+     + "create_atoms 1 single 0 0 0 units box\ncreate_atoms 2 single 0.01 0 0 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g="0.1 1")
+deck("b02_region_cylinder_lattice_pillar", "# lattice sc 0.001, a z-cylinder pillar of radius 3 lattice units (3 mm), side out, hertz/material\n"
+     + head(box="-0.03 0.03 -0.03 0.03 0 0.03", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
+     + "lattice sc 0.001\nregion pil cylinder z 0 0 3 0 30 side out\n" + f"fix pw all wall/gran/region granular {HM} region pil\n" + TAIL
+     + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g="0.1 1")
+deck("b03_create_mol_type_offset", "# create_atoms 1 single ... mol: the template's types are offset by 1 (its type-1 sphere becomes type 2)\n"
+     + head(ntypes=3) + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "molecule ball ball.mol\ncreate_atoms 1 single 0.02 0.02 0.02 mol ball 4567\ncreate_atoms 1 single 0.01 0.01 0.01\nset type 1 diameter 0.004 density 2500\nrun 100\n", g=1,
+     data={"ball.mol": "# one sphere of type 1\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"})
+deck("b04_deposit_mol_type_offset", "# fix deposit type 1 with a molecule whose sphere is type 1: inserted spheres are type 2 (offset 1), 6 mm, 0.0009 kg\n"
+     + head(ntypes=2) + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "molecule ball ball.mol\ncreate_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n"
+     + "region top block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix dep all deposit 5 1 200 12345 region top mol ball vz -1 -1 units box\nrun 2000\n", g=1,
+     data={"ball.mol": "# one sphere of type 1\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"})
+deck("b05_pour_mol_no_rigid", "# fix pour type 0 with a one-sphere molecule template (Diameters, Masses), no rigid: single spheres of type 2\n"
+     + head(ntypes=2) + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "molecule ball ball.mol\ncreate_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n"
+     + "region slab block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix p all pour 5 0 4767548 region slab mol ball\nrun 2000\n", g=1,
+     data={"ball.mol": "# one sphere of type 2\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 2\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"})
+deck("b06_default_damping_viscoelastic", "# pair_coeff without a damping keyword: LAMMPS' default damping is viscoelastic (eta_n0 3000 read as viscoelastic's)\n"
+     + head() + f"pair_style granular\npair_coeff * * hooke 2000 300 {TL}\n" + GRAV
+     + f"fix floor all wall/gran granular hertz/material 1e7 1.4e7 0.3 {TL} zplane 0 NULL\n" + TAIL + TWO + "run 100\n", g="0.1 1")
+deck("b07_explicit_unlike_models", "# 1 1 hooke, 2 2 hertz/material, 1 2 given explicitly as hertz (no mixing needed): each pair its own model\n"
+     + head() + "pair_style granular\n" + f"pair_coeff 1 1 {HK}\npair_coeff 2 2 {HM}\npair_coeff 1 2 hertz 1e6 30 {K}\n"
+     + GRAV + TAIL + TWO + "run 100\n", g="0.1 1")
+deck("b08_no_comm_vel", "# no comm_modify vel yes: LAMMPS' pair granular needs ghost velocities and stops at the run\n"
+     + head().replace("comm_modify vel yes\n", "") + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO + "run 100\n", g=1)
+deck("b09_read_restart_shipped", "# read_restart of a restart file shipped beside the deck (made by LAMMPS from make_restart.in): sizes and masses from it\n"
+     + "read_restart shipped.restart\n" + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + "run 100\n", g=1,
+     data={"make_restart.in": head() + TWO.replace("0.006 density 2500", "0.005 density 6000") + "write_restart shipped.restart\n"})
+deck("b10_wall_default_damping_old_style_mix", "# the floor without a damping keyword (viscoelastic by default), hertz/material, spheres hertz/material with damping tsuji\n"
+     + head() + f"pair_style granular\npair_coeff * * hertz/material 1e7 0.5 0.3 damping tsuji {TL}\n" + GRAV
+     + f"fix floor all wall/gran granular hertz/material 1e7 1.4e7 0.3 {TL} zplane 0 NULL\n" + TAIL + TWO + "run 100\n", g="0.1 1")
+deck("b11_region_variable_radius_sphere", "# a sphere region whose radius is v_r = 0.02 + 0.01*step/1000 (grows in the run), side in: a moving wall\n"
+     + head(box="-0.05 0.05 -0.05 0.05 -0.05 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
+     + "variable r equal 0.02+0.01*step/1000\nregion ball sphere 0 0 0 v_r side in units box\n" + f"fix bw all wall/gran/region granular {HM} region ball\n" + TAIL
+     + "create_atoms 1 single 0 0 0\ncreate_atoms 2 single 0.01 0 0\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g="0.1 1")
+deck("b12_lattice_create_box_region", "# the box region and a block wall region in lattice units (lattice sc 0.001): the wall region's faces are flat; sizes by set\n"
+     + "units si\natom_style sphere 1\nboundary f f f\ncomm_modify vel yes\nlattice sc 0.001\nregion box block 0 40 0 40 0 100\ncreate_box 2 box\n"
+     + f"pair_style granular\npair_coeff * * {HM}\nregion bx block 0 40 0 40 0 100 side in\nfix bw all wall/gran/region granular {HM} region bx\n" + TAIL
+     + "create_atoms 1 single 20 20 10\ncreate_atoms 2 single 10 10 10\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g="0.1 1")
+deck("b13_set_diameter_then_create_then_set_density", "# type 1: set diameter 0.004 (1 m spheres' mass kept), then density 2500: LAMMPS' mass is 4/3 pi r^3 2500 at the new radius\n"
+     + BASEH(HK) + "create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.01\nset type 1 diameter 0.004\nset type 1 density 2500\nset type 2 density 2500\nset type 2 diameter 0.004\nrun 100\n", g=1)
+deck("b14_molecule_no_diameters", "# create_atoms with a molecule template that has Masses but no Diameters: the spheres' radius is LAMMPS' default\n"
+     + head(box="-1 1 -1 1 -1 1", bnd="f f f") + f"pair_style granular\npair_coeff * * {HK}\n" + TAIL
+     + "molecule ball ball.mol\ncreate_atoms 0 single 0 0 0 mol ball 4567\ncreate_atoms 1 single 0.5 0.5 0.5\nset type 1 diameter 0.004 density 2500\nrun 100\n", g=1,
+     data={"ball.mol": "# one sphere of type 2 without a diameter\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 2\n\nMasses\n\n1 0.0009\n"})
+deck("b15_wall_region_lattice_offset_plane", "# lattice sc 0.01 and a plane region given in lattice units through (0,0,1) (z = 0.01 m), hertz/material\n"
+     + head(box="-0.05 0.05 -0.05 0.05 -0.05 0.05", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
+     + "lattice sc 0.01\nregion fl plane 0 0 1 0 0 1 side in\n" + f"fix rw all wall/gran/region granular {HM} region fl\n" + TAIL
+     + "create_atoms 1 single 0 0 0.03 units box\ncreate_atoms 2 single 0.02 0 0.03 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g="0.1 1")
+
+# ---------------------------------------------------------------- LIGGGHTS batch 2
+deck("G31_asymmetric_e_matrix", "# LIGGGHTS coefficientRestitution matrix not symmetric (e12 0.5, e21 0.3): which does LIGGGHTS use?\n"
+     + lhead() + MAT3 + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.3 0.4 0.45 0.7 0.45 0.8\n"
+     + HERTZ + WALL3 + ATOMS + RUN, g="0.1 1", liggghts=True)
+LST = ("fix m4 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+       "fix m5 all property/global gamman peratomtypepair 3 300 300 300 300 300 300 300 300 300\n"
+       "fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000\n"
+       "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50\n"
+       "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+       "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n")
+deck("G32_set_density_then_diameter", "# LIGGGHTS hooke/stiffness (mass-dependent): set type 2 density 8000, then set type 2 diameter 0.006 (does the mass follow?)\n"
+     + lhead() + MAT3 + LST + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\n"
+     + "set type 1 diameter 0.004 density 2500\nset type 2 density 8000\nset type 2 diameter 0.006\n" + RUN, g="0.1 1", liggghts=True)
+deck("G33_set_diameter_shrink_later", "# LIGGGHTS hooke/stiffness: set type 2 diameter 0.006 density 1500, later set type 2 diameter 0.003\n"
+     + lhead() + MAT3 + LST + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\n"
+     + "set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\nset type 2 diameter 0.003\n" + RUN, g="0.1 1", liggghts=True)
+deck("G34_set_mass_hookestiffness", "# LIGGGHTS hooke/stiffness: set type 2 mass 0.0005 after its diameter and density\n"
+     + lhead() + MAT3 + LST + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\n"
+     + "set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\nset type 2 mass 0.0005\n" + RUN, g="0.1 1", liggghts=True)
+deck("G35_create_no_set_defaults", "# LIGGGHTS hooke/stiffness: type 2 created without set (LIGGGHTS' default diameter and density)\n"
+     + lhead(box="-2 2 -2 2 -1 3") + MAT3 + LST + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -1 0 1 units box\n"
+     + "set type 1 diameter 0.004 density 2500\n" + RUN, g="0.1 1", liggghts=True)
+deck("G36_zcylinder_hertzstiffness", "# LIGGGHTS primitive zcylinder radius 0.03 under hertz/stiffness (size-dependent): the curvature LIGGGHTS uses\n"
+     + lhead() + MAT3 + "fix m4 all property/global kn peratomtypepair 3 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5\n"
+     + "fix m5 all property/global gamman peratomtypepair 3 30000 30000 30000 30000 30000 30000 30000 30000 30000\n"
+     + "fix m6 all property/global kt peratomtypepair 3 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5\n"
+     + "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50\n"
+     + "pair_style gran model hertz/stiffness tangential history\npair_coeff * *\n"
+     + "fix wcyl all wall/gran model hertz/stiffness tangential history primitive type 3 zcylinder 0.03 0. 0.\n"
+     + ATOMS.replace("0.01 0 0.01", "0.02 0 0.01") + RUN, g="0.1 1", liggghts=True)
+deck("G37_hertzstiffness_damped", "# LIGGGHTS hertz/stiffness with strong gamman (eps well below 1), on a primitive floor\n"
+     + lhead() + MAT3 + "fix m4 all property/global kn peratomtypepair 3 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5\n"
+     + "fix m5 all property/global gamman peratomtypepair 3 30000 20000 10000 20000 25000 15000 10000 15000 20000\n"
+     + "fix m6 all property/global kt peratomtypepair 3 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5\n"
+     + "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50\n"
+     + "pair_style gran model hertz/stiffness tangential history\npair_coeff * *\n"
+     + "fix wprim all wall/gran model hertz/stiffness tangential history primitive type 3 zplane 0.0\n" + ATOMS + RUN, g="0.1 1", liggghts=True)
+deck("G38_hooke_stiffness_tangential_damping_off", "# LIGGGHTS hooke/stiffness with tangential_damping off and absolute_damping off (nothing head-on)\n"
+     + lhead() + MAT3 + LST.replace("tangential history\npair_coeff", "tangential history tangential_damping off\npair_coeff") + ATOMS + RUN, g="0.1 1", liggghts=True)
+
+
+# ================================================================ batch 3: offsets, hybrid instances and scaling, group walls, dynamic groups, LIGGGHTS 2d and two-type distributions
+deck("b16_pour_mol_type_offset", "# fix pour type 1 with a one-sphere molecule whose sphere is type 1: inserted spheres are type 2 (offset 1)\n"
+     + head(ntypes=2) + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "molecule ball ball.mol\ncreate_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n"
+     + "region slab block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix p all pour 5 1 4767548 region slab mol ball\nrun 2000\n", g=1,
+     data={"ball.mol": "# one sphere of type 1\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"})
+deck("b17_hybrid_two_granular_instances", "# pair_style hybrid granular granular (not overlay): 1 1 and 1 2 by instance 1, 2 2 by instance 2\n"
+     + head() + "pair_style hybrid granular granular\n"
+     + f"pair_coeff 1 1 granular 1 {HK}\npair_coeff 1 2 granular 1 {HK}\npair_coeff 2 2 granular 2 hooke 8000 1000 {K}\n"
+     + GRAV + FLOOR + TAIL + TWO4 + "run 100\n", g=1)
+deck("b18_hybrid_scaled_granular", "# pair_style hybrid/scaled 2.0 granular: LAMMPS multiplies the granular force (spring and damping) by 2\n"
+     + head() + "pair_style hybrid/scaled 2.0 granular\n" + f"pair_coeff * * granular {HK}\n" + GRAV + FLOOR + TAIL + TWO4 + "run 100\n", g=1)
+deck("b19_wall_on_group", "# the floor acts on type 1 only (fix floor t1 wall/gran): type 2 falls through it\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + TWO + "group t1 type 1\n" + FLOOR.replace("floor all", "floor t1") + TAIL + "run 100\n", g=1)
+deck("b20_dynamic_group_integrator", "# the integrator on a dynamic group (atoms inside a region, updated every step): spheres outside do not move\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TWO4
+     + "region low block 0 0.04 0 0.04 0 0.05 units box\ngroup low dynamic all region low every 1\nfix integ low nve/sphere\ntimestep 1e-5\nrun 100\n", g=1)
+deck("b21_hybrid_scaled_two_granular", "# pair_style hybrid/scaled 0.5 granular 0.5 granular with the same coefficients: the sum is the one contact\n"
+     + head() + "pair_style hybrid/scaled 0.5 granular 0.5 granular\n" + f"pair_coeff * * granular 1 {HK}\npair_coeff * * granular 2 {HK}\n" + GRAV + FLOOR + TAIL + TWO4 + "run 100\n", g=1)
+deck("G39_wall_on_group", "# LIGGGHTS the primitive floor acts on type 1 only (fix wprim t1 wall/gran)\n"
+     + lhead() + MAT3 + E3 + HERTZ + ATOMS + "group t1 type 1\n" + WALL3.replace("wprim all", "wprim t1") + RUN, g="0.1 1", liggghts=True)
+deck("G40_2d_liggghts_set_density", "# LIGGGHTS in 2d (dimension 2, enforce2d) with set density and hooke/stiffness (mass-dependent)\n"
+     + "dimension 2\n" + lhead(bnd="f f p", box="-0.05 0.05 -0.01 0.15 -0.001 0.001") + MAT3 + LST.replace("primitive type 3 zplane 0.0", "primitive type 3 yplane 0.0")
+     + "create_atoms 1 single 0.01 0.01 0 units box\ncreate_atoms 2 single -0.01 0.01 0 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\n"
+     + "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 -1.0 0.0\nfix integr all nve/sphere\nfix e2 all enforce2d\nrun 2000\n", g="0.1 1", liggghts=True)
+deck("G41_distribution_two_types", "# LIGGGHTS insert/pack from templates of type 1 (2 mm) and type 2 (3 mm, density 1500): hooke/stiffness\n"
+     + lhead() + MAT3 + LST
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\n"
+     + "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1500 radius constant 0.003\n"
+     + "fix pdd all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.02 0.08 units box\n"
+     + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 20 region ins\n"
+     + RUN, g="0.1 1", liggghts=True)
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)

@@ -115,7 +115,7 @@ S = {
         "fix m8 all property/global gammat_abs peratomtypepair 3 0.05 0.05 0.05 0.05 0.05 0.05 0.05 0.05 0.05",
         "pair_style gran model hooke/stiffness tangential history absolute_damping on", "pair_coeff * *"],
         "checks": [P(1, 2, 0.002, lm1, 0.003, lm2),
-                   W(2, 0.003, lm2, "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0 absolute_damping on", wall_id="wprim")]},
+                   W(1, 0.002, lm1, "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0 absolute_damping on", wall_id="wprim")]},
     "G04_hertzstiffness": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + [
         "fix m4 all property/global kn peratomtypepair 3 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5",
         "fix m5 all property/global gamman peratomtypepair 3 300 300 300 300 300 300 300 300 300",
@@ -132,6 +132,31 @@ S = {
         "fix m5 all property/global characteristicVelocity scalar 2.0", "pair_style gran model hooke tangential history limitForce on", "pair_coeff * *"],
         "checks": [P(1, 2, 0.002, lm1, 0.003, lm2),
                    W(1, 0.002, lm1, "fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0 limitForce on", wall_id="wprim")]},
+    "b07_explicit_unlike_models": {"lines": GL(f"1 1 {HK}", f"2 2 {HM}", f"1 2 hertz 1e6 30 {K}"),
+        "checks": [P(1, 2, 0.002, m2, 0.003, m3, speed_idx=[1]), P(2, 2, 0.003, m3, 0.003, m3, speed_idx=[1])]},
+    "b17_hybrid_two_granular_instances": {"lines": ["pair_style hybrid granular granular", f"pair_coeff 1 1 granular 1 {HK}",
+                                                    f"pair_coeff 1 2 granular 1 {HK}", f"pair_coeff 2 2 granular 2 hooke 8000 1000 {K}"],
+        "checks": [P(2, 2, 0.002, m2, 0.002, m2, speed_idx=[2])]},
+    "G36_zcylinder_hertzstiffness": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + [
+        "fix m4 all property/global kn peratomtypepair 3 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5",
+        "fix m5 all property/global gamman peratomtypepair 3 30000 30000 30000 30000 30000 30000 30000 30000 30000",
+        "fix m6 all property/global kt peratomtypepair 3 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5",
+        "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50",
+        "pair_style gran model hertz/stiffness tangential history", "pair_coeff * *"],
+        "checks": [W(1, 0.002, lm1, "fix wcyl all wall/gran model hertz/stiffness tangential history primitive type 3 zcylinder 0.03 0. 0.",
+                     wall_id="wcyl", axis="x", z0=0.028, zw=0.03, sign=-1, speed_idx=[0, 1])]},
+    "G37_hertzstiffness_damped": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + [
+        "fix m4 all property/global kn peratomtypepair 3 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5 2e5",
+        "fix m5 all property/global gamman peratomtypepair 3 30000 20000 10000 20000 25000 15000 10000 15000 20000",
+        "fix m6 all property/global kt peratomtypepair 3 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5 1e5",
+        "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50",
+        "pair_style gran model hertz/stiffness tangential history", "pair_coeff * *"],
+        "checks": [P(1, 2, 0.002, lm1, 0.003, lm2, speed_idx=[0, 1])]},
+    "G40_2d_liggghts_set_density": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + LSTIFF,
+        "checks": [P(1, 2, 0.002, math.pi * 0.002 ** 2 * 2500, 0.003, math.pi * 0.003 ** 2 * 1500)]},
+    "G32_set_density_then_diameter": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + LSTIFF,
+        "checks": [P(2, 2, 0.003, 0.000904779, 0.003, 0.000904779)]},
+
 }
 
 
