@@ -609,6 +609,94 @@ deck("G41_distribution_two_types", "# LIGGGHTS insert/pack from templates of typ
      + RUN, g="0.1 1", liggghts=True)
 
 
+# ================================================================ batch 4: commands after an insertion run act on atoms the skipped runs never made
+POUR2 = ("region slab block 0.005 0.035 0.005 0.035 0.05 0.09 units box\n"
+         "fix p all pour 6 2 4767548 region slab diam one 0.004 dens 2500 2500\n")
+deck("b22_set_after_pour_run", "# fix pour of type 2 (4 mm), run, then set type 2 diameter 0.006: LAMMPS changes the poured atoms (radius 3 mm, mass kept)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV + FLOOR.replace(HK, HM) + TAIL
+     + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n" + POUR2 + "run 2000\nunfix p\nset type 2 diameter 0.006\nrun 1000\n", g="0.1 1")
+deck("b23_group_after_pour_run", "# pour of type 2, run, then group mob type 2 and the integrator on it only: in LAMMPS the poured spheres move, type 1 does not\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n" + POUR2
+     + "run 2000\nunfix p\nunfix integ\ngroup mob type 2\nfix integ2 mob nve/sphere\nrun 1000\n", g=1)
+deck("b24_delete_after_pour_run", "# pour of type 2, run, delete_atoms group of type 2: stage 2 has no type 2; then set type 1 density 5000\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 1 single 0.01 0.01 0.01\nset type 1 diameter 0.004 density 2500\n" + POUR2
+     + "run 2000\nunfix p\ngroup t2 type 2\ndelete_atoms group t2\nset type 1 density 5000\nrun 1000\n", g=1)
+deck("b25_set_density_after_deposit_run", "# fix deposit of type 2 (LAMMPS' default 1 m spheres, lj units), run, then set type 2 diameter 0.5 density 2\n"
+     + head(box="0 20 0 20 0 40", units="lj") + "pair_style granular\npair_coeff * * hooke 2e4 30 " + K + "\n"
+     + "fix grav all gravity 1 vector 0 0 -1\nfix floor all wall/gran granular hooke 2e4 30 " + K + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-4\n"
+     + "create_atoms 1 single 10 10 2\nset type 1 diameter 2 density 3\nregion top block 2 18 2 18 20 30 units box\n"
+     + "fix dep all deposit 5 2 100 12345 region top vz -1 -1 units box\nrun 1000\nunfix dep\nset type 2 diameter 0.5 density 2\nrun 1000\n", g="1 10")
+deck("b26_freeze_group_after_pour", "# pour of type 2, run, then group t2 type 2 and fix freeze on it: the poured spheres are frozen in stage 2\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n" + POUR2
+     + "run 2000\nunfix p\ngroup t2 type 2\nfix fr t2 freeze\nrun 1000\n", g=1)
+deck("G42_set_density_after_insert_run", "# LIGGGHTS insert/pack of type 1 (2 mm, 2500), run, then set type 1 density 8000 (hooke/stiffness): stage 2 masses\n"
+     + lhead() + MAT3 + LST
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\n"
+     + "fix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.02 0.08 units box\n"
+     + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 20 region ins\n"
+     + RUN + "unfix ins\nset type 1 density 8000\nrun 1000\n", g="0.1 1", liggghts=True)
+deck("G43_group_after_insert_run", "# LIGGGHTS insert/pack of type 2, run, then integrate only group mob type 2 (type 1 static) in run 2\n"
+     + lhead() + MAT3 + LST + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.003\n"
+     + "fix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\n"
+     + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n"
+     + RUN + "unfix ins\nunfix integr\ngroup mob type 2\nfix integr2 mob nve/sphere\nrun 1000\n", g="0.1 1", liggghts=True)
+
+
+# ================================================================ batch 5: 2025 keywords and models
+deck("b27_synchronized_verlet_coarse", "# pair_coeff ... synchronized_verlet (LAMMPS 2025: another velocity-Verlet variant for the force), hooke mass_velocity at dt 5e-5 (about 9 steps per contact)\n"
+     + (head() + "pair_style granular\npair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1.0 0.3 synchronized_verlet\n" + GRAV + FLOOR + TAIL).replace("timestep 1e-5", "timestep 5e-5") + TWO4 + "run 100\n", g=1)
+deck("b28_plain_verlet_coarse", "# the same deck as b27 without synchronized_verlet (the reference for its time-step claims)\n"
+     + BASEH("hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1.0 0.3").replace("timestep 1e-5", "timestep 5e-5") + TWO4 + "run 100\n", g=1)
+deck("b30_synchronized_verlet_hertz_fine", "# synchronized_verlet with hertz/material viscoelastic at the usual dt (40+ steps per contact): dt -> 0 eps unchanged?\n"
+     + head() + "pair_style granular\npair_coeff * * hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_history 1000 1.0 0.3 synchronized_verlet\n" + GRAV + FLOOR + TAIL + TWO + "run 100\n", g="0.1 1")
+deck("b31_mindlin_force_tangential", "# tangential mindlin/force and mindlin_rescale/force and linear_history/static (2025 tangential models; nothing head-on)\n"
+     + head() + "pair_style granular\n" + f"pair_coeff 1 1 hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential mindlin/force NULL 1.0 0.4\n"
+     + f"pair_coeff 2 2 hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential mindlin/force NULL 1.0 0.4\n"
+     + f"pair_coeff 1 2 hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential mindlin_rescale/force NULL 1.0 0.4\n" + GRAV + TAIL + TWO + "run 100\n", g="0.1 1")
+
+
+# ================================================================ batch 6: values read after runs (LIGGGHTS runs one step long in the audit's pass), property redefinitions, wall motions
+deck("G44_e_from_step_after_run", "# LIGGGHTS: after run 2000, e = 0.5 + step/10000 = 0.7 for every pair (a value the run changes), then run 1000\n"
+     + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN
+     + "variable e equal 0.5+step/10000\nfix m3 all property/global coefficientRestitution peratomtypepair 3 ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e}\nrun 1000\n", g="0.1 1", liggghts=True)
+deck("G45_property_redefined_between_runs", "# LIGGGHTS: coefficientRestitution redefined (same fix ID) after run 1: stage 2 has the new e\n"
+     + lhead() + LB + RUN
+     + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.8 0.7 0.8 0.85 0.45 0.7 0.45 0.8\nrun 1000\n", g="0.1 1", liggghts=True)
+deck("G46_e_from_time_elapsed", "# LIGGGHTS: e from elapsed steps after a run: variable e equal 0.3+elapsed/10000 read in the second run's set-up? (immediate $() after run 1)\n"
+     + lhead() + LB + RUN
+     + "fix m3 all property/global coefficientRestitution peratomtypepair 3 $(0.3+step/10000) 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\nrun 1000\n", g="0.1 1", liggghts=True)
+deck("b32_zcylinder_shear_theta", "# fix wall/gran zcylinder with shear theta 0.5 (a turning drum wall: tangential only for a radial contact)\n"
+     + head(box="-0.02 0.02 -0.02 0.02 0 0.1", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
+     + f"fix cyl all wall/gran granular {HM} zcylinder 0.015 shear theta 0.5\n" + TAIL
+     + "create_atoms 1 single 0 0 0.01\ncreate_atoms 2 single 0.006 0 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g="0.1 1")
+deck("b33_k_from_time_after_run", "# LAMMPS: after run 1000 (time 0.01), the stiffness $(2000+1e5*time) = 3000, then run 100\n"
+     + BASEH(HK) + TWO4 + "run 1000\npair_coeff * * hooke $(2000+1e5*time) 3000 " + K + "\nrun 100\n", g=1)
+deck("b34_zcylinder_wiggle_axial", "# fix wall/gran zcylinder wiggling along its own axis (z): for a radial contact the wall moves in its plane\n"
+     + head(box="-0.02 0.02 -0.02 0.02 0 0.1", bnd="f f f") + f"pair_style granular\npair_coeff * * {HM}\n"
+     + f"fix cyl all wall/gran granular {HM} zcylinder 0.015 wiggle z 0.001 0.01\n" + TAIL
+     + "create_atoms 1 single 0 0 0.05\ncreate_atoms 2 single 0.006 0 0.05\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g="0.1 1")
+
+
+# ================================================================ batch 7: units conversions of the older styles, extreme speeds
+deck("u11_real_gran_hertz_history", "# units real with pair gran/hertz/history (Kn in pressure units: LAMMPS divides by nktv2p) and a wall of the same style\n"
+     + head(box="0 100 0 100 0 200", units="real") + "pair_style gran/hertz/history 1e6 NULL 20 NULL 0.5 0\npair_coeff * *\n"
+     + "fix floor all wall/gran hertz/history 1e6 NULL 20 NULL 0.5 0 zplane 0 NULL\n"
+     + "fix integ all nve/sphere\ntimestep 1.0\ncreate_atoms 1 single 50 50 20\ncreate_atoms 2 single 20 20 20\nset type 1 diameter 4 density 2\nset type 2 diameter 6 density 2\nrun 100\n", g="0.001 0.01")
+deck("u12_metal_gran_hooke_history", "# units metal with pair gran/hooke/history (Kn in force/distance, gamma_n in 1/time)\n"
+     + head(box="0 100 0 100 0 200", units="metal") + "pair_style gran/hooke/history 20 NULL 0.003 NULL 0.5 0\npair_coeff * *\n"
+     + "fix integ all nve/sphere\ntimestep 0.0005\ncreate_atoms 1 single 50 50 20\ncreate_atoms 2 single 20 20 20\nset type 1 diameter 4 density 2\nset type 2 diameter 6 density 2\nrun 100\n", g="1 10")
+deck("x01_extreme_speeds_hertz", "# hertz/material viscoelastic at speeds from 1e-6 to 1e3 m/s (nearly elastic to heavily damped)\n"
+     + BASEH(HM) + TWO + "run 100\n", g="1e-6 1e-3 100 1000")
+deck("x02_near_critical_hooke", "# hooke mass_velocity near critical damping (zeta about 0.95 for 1 1): eps tiny but not 0\n"
+     + BASEH(f"hooke 2000 13000 {K}") + TWO4 + "run 100\n", g=1)
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)

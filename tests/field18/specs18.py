@@ -155,7 +155,31 @@ S = {
     "G40_2d_liggghts_set_density": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + LSTIFF,
         "checks": [P(1, 2, 0.002, math.pi * 0.002 ** 2 * 2500, 0.003, math.pi * 0.003 ** 2 * 1500)]},
     "G32_set_density_then_diameter": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + LSTIFF,
-        "checks": [P(2, 2, 0.003, 0.000904779, 0.003, 0.000904779)]},
+        "checks": [P(1, 1, 0.003, 0.000904779, 0.003, 0.000904779, label="types 2 2 (as 1 1: every entry alike)")]},
+
+    "k05_timestep_change_between_runs": {"lines": GL(f"* * {HM}"),
+        "checks": [P(1, 1, 0.002, m2, 0.002, m2, speed_idx=[1]), P(1, 2, 0.002, m2, 0.003, m3, speed_idx=[1])]},
+
+    "b22_set_after_pour_run": {"lines": GL(f"* * {HM}"),
+        "checks": [P(2, 2, 0.003, 8.37758e-05, 0.003, 8.37758e-05, speed_idx=[0, 1], stage=2),
+                   P(1, 2, 0.002, 8.37758e-05, 0.003, 8.37758e-05, speed_idx=[0], stage=2)]},
+
+    "b27_synchronized_verlet_coarse": {"lines": GL("* * hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1.0 0.3 synchronized_verlet"),
+        "checks": [P(1, 2, 0.002, m2, 0.002, m2, speed_idx=[2])]},
+    "b28_plain_verlet_coarse": {"lines": GL("* * hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1.0 0.3"),
+        "checks": [P(1, 2, 0.002, m2, 0.002, m2, speed_idx=[2])]},
+    "b30_synchronized_verlet_hertz_fine": {"lines": GL("* * hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_history 1000 1.0 0.3 synchronized_verlet"),
+        "checks": [P(1, 2, 0.002, m2, 0.003, m3, speed_idx=[0, 1])]},
+
+    "u11_real_gran_hertz_history": {"units": "real", "lines": ["pair_style gran/hertz/history 1e6 NULL 20 NULL 0.5 0", "pair_coeff * *"],
+        "checks": [P(1, 2, 2.0, m(2.0, 2), 3.0, m(3.0, 2), speed_idx=[0, 1]),
+                   W(2, 3.0, m(3.0, 2), "fix floor all wall/gran hertz/history 1e6 NULL 20 NULL 0.5 0 zplane 0 NULL", speed_idx=[1])]},
+    "u12_metal_gran_hooke_history": {"units": "metal", "lines": ["pair_style gran/hooke/history 20 NULL 0.003 NULL 0.5 0", "pair_coeff * *"],
+        "checks": [P(1, 2, 2.0, m(2.0, 2), 3.0, m(3.0, 2))]},
+    "x01_extreme_speeds_hertz": {"lines": GL(f"* * {HM}"),
+        "checks": [P(1, 2, 0.002, m2, 0.003, m3, speed_idx=[0, 2]), W(1, 0.002, m2, f"fix floor all wall/gran granular {HM} zplane 0 NULL", speed_idx=[0, 1])]},
+    "x02_near_critical_hooke": {"lines": GL(f"* * hooke 2000 13000 {K}"),
+        "checks": [P(1, 1, 0.002, m2, 0.002, m2, speed_idx=[2])]},
 
 }
 
