@@ -697,6 +697,44 @@ deck("x02_near_critical_hooke", "# hooke mass_velocity near critical damping (ze
      + BASEH(f"hooke 2000 13000 {K}") + TWO4 + "run 100\n", g=1)
 
 
+# ================================================================ batch 8: integrators twice, momentum on a type, jkr at zero cohesion
+deck("b35_integrated_twice", "# type 1 integrated twice (fix integ all nve/sphere and fix extra t1 nve/sphere): LAMMPS warns and moves it two steps per step\n"
+     + BASEH(HK) + TWO4 + "group t1 type 1\nfix extra t1 nve/sphere\nrun 100\n", g=1)
+deck("b36_momentum_on_type_group", "# fix momentum every 1 linear 1 1 1 on group t1 (the type-1 spheres only): their common velocity is zeroed each step\n"
+     + BASEH(HK) + TWO4 + "create_atoms 1 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\ngroup t1 type 1\nfix mo t1 momentum 1 linear 1 1 1\nrun 100\n", g=1)
+deck("p27_jkr_zero_cohesion_tsuji", "# normal jkr at surface energy 0 (Hertz's force) with tsuji damping\n"
+     + BASEH(f"jkr 1e7 0.6 0.3 0.0 damping tsuji {TL}") + TWO + "run 100\n", g="0.1 1")
+deck("p28_jkr_zero_cohesion_viscoelastic", "# normal jkr at surface energy 0 with viscoelastic damping (the contact radius is JKR's)\n"
+     + BASEH(f"jkr 1e7 1.4e7 0.3 0.0 damping viscoelastic {TL}") + TWO + "run 100\n", g="0.1 1")
+deck("b37_nve_and_nve_sphere", "# type 2 integrated by fix nve and by fix nve/sphere (translation twice)\n"
+     + BASEH(HK) + TWO4 + "group t2 type 2\nfix extra t2 nve\nrun 100\n", g=1)
+
+
+# ================================================================ batch 9: several molecule templates in one pour, a large deck's cost
+deck("b38_pour_two_mol_templates", "# molecule ID with two files (spheres of type 1 and 2, Diameters and Masses), fix pour type 0 with molfrac 0.5 0.5\n"
+     + head(ntypes=3) + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "molecule tmpl a.mol b.mol\ncreate_atoms 3 single 0.02 0.02 0.01\nset type 3 diameter 0.004 density 2500\n"
+     + "region slab block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix p all pour 6 0 4767548 region slab mol tmpl molfrac 0.5 0.5\nrun 2000\n", g=1,
+     data={"a.mol": "# one sphere of type 1\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.003\n\nMasses\n\n1 0.00004\n",
+           "b.mol": "# one sphere of type 2\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 2\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"})
+deck("x03_large_lattice_cost", "# 64 000 spheres on a lattice (create_atoms box), sizes by set: the audit's cost beside LAMMPS' own skip-run pass\n"
+     + "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nlattice sc 0.005\nregion box block 0 40 0 40 0 45\ncreate_box 2 box\n"
+     + "region fill block 0 40 0 40 1 41\ncreate_atoms 1 region fill\nset type 1 diameter 0.004 density 2500\nset type 1 type/fraction 2 0.5 4567\n"
+     + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV + FLOOR.replace(HK, HM) + TAIL + "run 1000\n", g="0.1 1")
+
+
+# ================================================================ batch 10: a long finite loop, then the production settings
+deck("b39_long_finite_loop_then_change", "# a finite loop of 12000 short runs (settling), then the stiffness changes and the production run: LAMMPS ends it\n"
+     + BASEH(HK) + TWO4 + "variable i loop 12000\nlabel l\nvariable s equal ${i}*3\nrun 10\nnext i\njump SELF l\n"
+     + "pair_coeff * * hooke 9000 3000 " + K + "\nrun 1000\n", g=1)
+
+deck("b40_long_loop_echo_then_change", "# a finite loop of 10000 passes with twelve commands each (as a pouring tutorial's), then the stiffness changes for the production run\n"
+     + BASEH(HK) + TWO4 + "variable i loop 10000\nlabel l\n"
+     + "".join(f"variable seed{k} equal floor(${{i}}*{34512 + 1000 * k}/10000) # a seed per pass, as the pouring tutorials do\n" for k in range(10))
+     + "run 10 # a short run each pass\nnext i\njump SELF l\n"
+     + "pair_coeff * * hooke 9000 3000 " + K + "\nrun 1000\n", g=1)
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)

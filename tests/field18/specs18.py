@@ -181,6 +181,13 @@ S = {
     "x02_near_critical_hooke": {"lines": GL(f"* * hooke 2000 13000 {K}"),
         "checks": [P(1, 1, 0.002, m2, 0.002, m2, speed_idx=[2])]},
 
+    "b39_long_finite_loop_then_change": {"lines": GL(f"* * hooke 9000 3000 {K}"),
+        "checks": [P(1, 2, 0.002, m2, 0.002, m2, speed_idx=[2], stage=2)]},
+    "b40_long_loop_echo_then_change": {"lines": GL(f"* * hooke 9000 3000 {K}"),
+        "checks": [P(1, 2, 0.002, m2, 0.002, m2, speed_idx=[2], label="types 1 2 in the production run (pair_coeff after the loop)")]},
+    "p28_jkr_zero_cohesion_viscoelastic": {"lines": GL(f"* * jkr 1e7 1.4e7 0.3 0.0 damping viscoelastic {TL}"),
+        "checks": [P(1, 2, 0.002, m2, 0.003, m3, speed_idx=[0, 1])]},
+
 }
 
 
