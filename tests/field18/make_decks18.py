@@ -734,6 +734,43 @@ deck("b40_long_loop_echo_then_change", "# a finite loop of 10000 passes with twe
      + "run 10 # a short run each pass\nnext i\njump SELF l\n"
      + "pair_coeff * * hooke 9000 3000 " + K + "\nrun 1000\n", g=1)
 
+deck("b41_many_types_120", "# 120 atom types (one per size class, as polydisperse decks with neighbor multi do); atoms of types 1, 60 and 120\n"
+     + head(ntypes=120) + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV + FLOOR.replace(HK, HM) + TAIL
+     + "create_atoms 1 single 0.01 0.01 0.01\ncreate_atoms 60 single 0.02 0.02 0.01\ncreate_atoms 120 single 0.03 0.03 0.01\n"
+     + "set type 1 diameter 0.003 density 2500\nset type 60 diameter 0.004 density 2500\nset type 120 diameter 0.005 density 2500\nrun 100\n", g="0.1 1")
+
+deck("b42_old_hertz_history_zcylinder", "# the older wall style hertz/history on a zcylinder (spheres inside): the curvature it uses\n"
+     + head(box="-0.02 0.02 -0.02 0.02 0 0.1", bnd="f f f") + "pair_style gran/hertz/history 1e6 NULL 2000 NULL 0.5 0\npair_coeff * *\n"
+     + "fix cyl all wall/gran hertz/history 1e6 NULL 2000000 NULL 0.5 0 zcylinder 0.015\n" + TAIL
+     + "create_atoms 1 single 0 0 0.01\ncreate_atoms 2 single 0.006 0 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g="0.1 1")
+deck("b43_old_hooke_history_wall_limit_damping", "# the older wall style hooke/history with limit_damping (heavy damping: the force rule), pair gran/hooke/history without\n"
+     + head() + "pair_style gran/hooke/history 2000 NULL 60000 NULL 0.5 0\npair_coeff * *\n" + GRAV
+     + "fix floor all wall/gran hooke/history 2000 NULL 60000 NULL 0.5 0 zplane 0 NULL limit_damping\n" + TAIL + TWO4 + "run 100\n", g=1)
+
+deck("b44_retype_after_pour_run", "# pour of type 2, run, set type 2 type 3 (the poured spheres become type 3, whose pairs have their own stiffness), run\n"
+     + head(ntypes=3) + f"pair_style granular\npair_coeff * * {HK}\npair_coeff * 3 hooke 9000 3000 {K}\n" + GRAV + FLOOR + TAIL
+     + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n" + POUR2 + "run 2000\nunfix p\nset type 2 type 3\nrun 1000\n", g=1)
+
+deck("G47_long_loop_then_change", "# LIGGGHTS: a finite loop of 3000 short runs (settling), then coefficientRestitution changes for the production run\n"
+     + lhead() + LB + "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
+     + "variable i loop 3000\nlabel l\nrun 10\nnext i\njump SELF l\n"
+     + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.8 0.7 0.8 0.85 0.45 0.7 0.45 0.8\nrun 1000\n", g="0.1 1", liggghts=True)
+
+deck("b45_delete_after_deposit_run", "# fix deposit of type 2 (lj, default 1-unit spheres), run, delete_atoms of group type 2: stage 2 has type 1 only\n"
+     + head(box="0 20 0 20 0 40", units="lj") + "pair_style granular\npair_coeff * * hooke 2e4 30 " + K + "\n"
+     + "fix grav all gravity 1 vector 0 0 -1\nfix floor all wall/gran granular hooke 2e4 30 " + K + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-4\n"
+     + "create_atoms 1 single 10 10 2\ncreate_atoms 1 single 5 5 2\nset type 1 diameter 2 density 3\nregion top block 2 18 2 18 20 30 units box\n"
+     + "fix dep all deposit 5 2 100 12345 region top vz -1 -1 units box\nrun 1000\nunfix dep\ngroup t2 type 2\ndelete_atoms group t2\n"
+     + "pair_coeff 1 1 hooke 4e4 30 " + K + "\nrun 1000\n", g="1 10")
+deck("G48_delete_after_insert_run", "# LIGGGHTS insert/pack of type 2, run, delete_atoms of group type 2, then e changes: stage 2 has type 1 only\n"
+     + lhead() + MAT3 + E3 + HERTZ + WALL3 + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 1 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.003\n"
+     + "fix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\n"
+     + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n"
+     + RUN + "unfix ins\ngroup t2 type 2\ndelete_atoms group t2\n"
+     + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\nrun 1000\n", g="0.1 1", liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]

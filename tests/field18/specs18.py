@@ -74,7 +74,8 @@ S = {
     "s03_deposit_default_size": {"units": "lj", "lines": GL(f"* * hooke 2e4 30 {K}"),
         "checks": [P(1, 2, 1.0, 12.566370614359172, 0.5, 0.5235987755982988)]},
     "s06_set_mass_after_diameter": {"lines": GL(f"* * {HK}"),
-        "checks": [P(1, 2, 0.002, m2, 0.003, 0.001, speed_idx=[2]), P(2, 2, 0.003, 0.001, 0.003, 0.001, speed_idx=[2])]},
+        "checks": [P(1, 2, 0.002, m2, 0.003, 0.001, speed_idx=[2]), P(2, 2, 0.003, 0.001, 0.003, 0.001, speed_idx=[2]),
+                   W(2, 0.003, 0.001, f"fix floor all wall/gran granular {HK} zplane 0 NULL", speed_idx=[2])]},
     "s11_create_mol_template": {"lines": GL(f"* * {HK}"),
         "checks": [P(1, 2, 0.002, 8e-5, 0.003, 4e-4, speed_idx=[2])]},
     "u01_units_micro": {"units": "micro", "lines": GL(f"* * hooke 2000 2.8 {K}"),
@@ -187,6 +188,25 @@ S = {
         "checks": [P(1, 2, 0.002, m2, 0.002, m2, speed_idx=[2], label="types 1 2 in the production run (pair_coeff after the loop)")]},
     "p28_jkr_zero_cohesion_viscoelastic": {"lines": GL(f"* * jkr 1e7 1.4e7 0.3 0.0 damping viscoelastic {TL}"),
         "checks": [P(1, 2, 0.002, m2, 0.003, m3, speed_idx=[0, 1])]},
+
+    "k18_respa_granular": {"lines": GL(f"* * {HK}"), "post": ["run_style respa 2 2 pair 2"],
+        "checks": [P(1, 2, 0.002, m2, 0.002, m2, speed_idx=[2])]},
+
+    "b42_old_hertz_history_zcylinder": {"lines": ["pair_style gran/hertz/history 1e6 NULL 2000 NULL 0.5 0", "pair_coeff * *"],
+        "checks": [W(1, 0.002, m2, "fix cyl all wall/gran hertz/history 1e6 NULL 2000000 NULL 0.5 0 zcylinder 0.015", wall_id="cyl", axis="x", z0=0.013, zw=0.015, sign=-1, speed_idx=[0, 1]),
+                   W(2, 0.003, m3, "fix cyl all wall/gran hertz/history 1e6 NULL 2000000 NULL 0.5 0 zcylinder 0.015", wall_id="cyl", axis="x", z0=0.012, zw=0.015, sign=-1, speed_idx=[1])]},
+
+    "p16_restyle_keeps_coeffs": {"lines": ["pair_style granular", f"pair_coeff * * {HK}", "pair_style granular", f"pair_coeff 1 1 hooke 9000 3000 {K}"],
+        "checks": [P(1, 2, 0.002, m2, 0.002, m2, speed_idx=[2], stage=2), P(1, 1, 0.002, m2, 0.002, m2, speed_idx=[2], stage=2)]},
+    "G14_e_one_pair": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + [
+        "fix m3 all property/global coefficientRestitution peratomtypepair 3 1.0 0.5 0.7 0.5 0.2 0.45 0.7 0.45 0.8",
+        "pair_style gran model hertz tangential history", "pair_coeff * *"],
+        "checks": [P(1, 1, 0.002, lm1, 0.002, lm1, speed_idx=[1]), P(1, 2, 0.002, lm1, 0.003, lm2, speed_idx=[1])]},
+
+    "b16_pour_mol_type_offset": {"lines": GL(f"* * {HK}"),
+        "checks": [P(1, 2, 0.002, m2, 0.003, 0.0009, speed_idx=[2]), P(2, 2, 0.003, 0.0009, 0.003, 0.0009, speed_idx=[2])]},
+    "b24_delete_after_pour_run": {"lines": GL(f"* * {HK}"),
+        "checks": [P(1, 1, 0.002, 0.000167552, 0.002, 0.000167552, speed_idx=[2], stage=2)]},
 
 }
 
