@@ -771,6 +771,33 @@ deck("G48_delete_after_insert_run", "# LIGGGHTS insert/pack of type 2, run, dele
      + RUN + "unfix ins\ngroup t2 type 2\ndelete_atoms group t2\n"
      + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\nrun 1000\n", g="0.1 1", liggghts=True)
 
+deck("b46_set_group_after_pour_run", "# pour of type 2 (4 mm), run, group t2 type 2, set group t2 diameter 0.006 (LAMMPS: the poured spheres 3 mm, mass kept), run\n"
+     + head() + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV + FLOOR.replace(HK, HM) + TAIL
+     + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n" + POUR2 + "run 2000\nunfix p\ngroup t2 type 2\nset group t2 diameter 0.006\nrun 1000\n", g="0.1 1")
+deck("b47_set_region_after_pour_run", "# pour of type 2 (4 mm), run, set region low diameter 0.006 (the poured spheres that have landed), run\n"
+     + head() + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV + FLOOR.replace(HK, HM) + TAIL
+     + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n" + POUR2
+     + "run 20000\nunfix p\nregion low block 0 0.04 0 0.04 0 0.03 units box\nset region low diameter 0.006\nrun 1000\n", g="0.1 1")
+deck("b48_delete_region_after_pour_run", "# pour of type 2, run, delete_atoms region high (those still falling), run: some poured spheres stay\n"
+     + head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\n" + POUR2
+     + "run 3000\nunfix p\nregion high block 0 0.04 0 0.04 0.03 0.1 units box\ndelete_atoms region high\nrun 1000\n", g=1)
+deck("b49_set_group_density_after_deposit_run", "# deposit of type 2 (lj default unit spheres), run, group t2 type 2, set group t2 density 5, run: the mass of the deposited spheres\n"
+     + head(box="0 20 0 20 0 40", units="lj") + "pair_style granular\npair_coeff * * hooke 2e4 30 " + K + "\n"
+     + "fix grav all gravity 1 vector 0 0 -1\nfix floor all wall/gran granular hooke 2e4 30 " + K + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-4\n"
+     + "create_atoms 1 single 10 10 2\nset type 1 diameter 2 density 3\nregion top block 2 18 2 18 20 30 units box\n"
+     + "fix dep all deposit 5 2 100 12345 region top vz -1 -1 units box\nrun 1000\nunfix dep\ngroup t2 type 2\nset group t2 density 5\nrun 1000\n", g="1 10")
+
+deck("b50_two_floors_same_plane", "# two fix wall/gran on the same plane z = 0 (a floor given twice, as an include may do): LAMMPS adds both forces\n"
+     + BASEH(HK) + "fix floor2 all wall/gran granular " + HK + " zplane 0 NULL\n" + TWO4 + "run 100\n", g=1)
+deck("G49_two_floors_same_plane", "# LIGGGHTS two primitive floors on the same plane z = 0 (two fixes): LIGGGHTS adds both forces\n"
+     + lhead() + LB + "fix wprim2 all wall/gran model hertz tangential history primitive type 3 zplane 0.0\n" + RUN, g="0.1 1", liggghts=True)
+
+deck("G50_long_loop_time_budget", "# LIGGGHTS: a finite loop of 15000 short runs, then coefficientRestitution changes for the production run (the audit's time budget)\n"
+     + lhead() + LB + "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
+     + "variable i loop 15000\nlabel l\nrun 10\nnext i\njump SELF l\n"
+     + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.8 0.7 0.8 0.85 0.45 0.7 0.45 0.8\nrun 1000\n", g="0.1 1", liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
