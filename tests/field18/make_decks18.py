@@ -798,6 +798,16 @@ deck("G50_long_loop_time_budget", "# LIGGGHTS: a finite loop of 15000 short runs
      + "variable i loop 15000\nlabel l\nrun 10\nnext i\njump SELF l\n"
      + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.8 0.7 0.8 0.85 0.45 0.7 0.45 0.8\nrun 1000\n", g="0.1 1", liggghts=True)
 
+deck("b51_pour_type_label", "# type labels; fix pour of type 'small' given by its label (6 mm, density 7800), type 'big' made by create_atoms\n"
+     + head() + "labelmap atom 1 big 2 small\n" + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
+     + "create_atoms big single 0.02 0.02 0.01\nset type big diameter 0.004 density 2500\n"
+     + "region slab block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix p all pour 6 small 4767548 region slab diam one 0.006 dens 7800 7800\nrun 2000\n", g=1)
+deck("b52_deposit_type_label", "# type labels; fix deposit of type 'small' by its label (LAMMPS' default 1-unit size, lj)\n"
+     + head(box="0 20 0 20 0 40", units="lj") + "labelmap atom 1 big 2 small\npair_style granular\npair_coeff * * hooke 2e4 30 " + K + "\n"
+     + "fix grav all gravity 1 vector 0 0 -1\nfix floor all wall/gran granular hooke 2e4 30 " + K + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-4\n"
+     + "create_atoms big single 10 10 2\nset type big diameter 2 density 3\nregion top block 2 18 2 18 20 30 units box\n"
+     + "fix dep all deposit 5 small 100 12345 region top vz -1 -1 units box\nrun 1000\n", g="1 10")
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
