@@ -10,6 +10,7 @@ C = {
  "effect named fairly": "k03 k11 k17 G28 p13 u06 w05 w06 w07 w10 w11 w14 w15 b01 b02 b11 b34 k01 k02 k04 k08 k10 k12 k13 k14 k15 k19 "
                         "b20 b23 b26 b35 b36 b37 b50 G09 G18 G19 G24 G43 G49",
  "named with a false word": "R01",
+ "SILENTLY WRONG (D1)": "b53",
  "WRONG: pairs the engine makes declared impossible (D1)": "b04",
  "WRONG: pairs that cannot happen reported (D2)": "b24 b45 G48",
  "WRONG NUMBER, cause and remedy named falsely (D5)": "b40",

@@ -808,6 +808,12 @@ deck("b52_deposit_type_label", "# type labels; fix deposit of type 'small' by it
      + "create_atoms big single 10 10 2\nset type big diameter 2 density 3\nregion top block 2 18 2 18 20 30 units box\n"
      + "fix dep all deposit 5 small 100 12345 region top vz -1 -1 units box\nrun 1000\n", g="1 10")
 
+deck("b53_deposit_mol_offset_type_present", "# type 2 spheres of 4 mm made by create_atoms, and fix deposit type 1 of a one-sphere molecule (its type 1, 6 mm, 0.0009 kg): LAMMPS adds 6 mm type-2 spheres\n"
+     + head(ntypes=2) + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV + FLOOR.replace(HK, HM) + TAIL
+     + "molecule ball ball.mol\ncreate_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.004 density 2500\n"
+     + "region top block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix dep all deposit 5 1 200 12345 region top mol ball vz -1 -1 units box\nrun 2000\n", g="0.1 1",
+     data={"ball.mol": "# one sphere of type 1\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"})
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]

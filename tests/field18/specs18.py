@@ -208,6 +208,12 @@ S = {
     "b24_delete_after_pour_run": {"lines": GL(f"* * {HK}"),
         "checks": [P(1, 1, 0.002, 0.000167552, 0.002, 0.000167552, speed_idx=[2], stage=2)]},
 
+    "b53_deposit_mol_offset_type_present": {"lines": GL(f"* * {HM}"),
+        "checks": [P(1, 2, 0.002, m2, 0.003, 0.0009, speed_idx=[0, 1], label="types 1 2 with a deposited 6 mm type-2 sphere (audit row: its 4 mm one)"),
+                   P(2, 2, 0.003, 0.0009, 0.003, 0.0009, speed_idx=[0, 1], label="types 2 2, two deposited 6 mm spheres"),
+                   P(2, 2, 0.002, m2, 0.003, 0.0009, speed_idx=[0], label="types 2 2, a 4 mm and a deposited 6 mm sphere"),
+                   W(2, 0.003, 0.0009, f"fix floor all wall/gran granular {HM} zplane 0 NULL", speed_idx=[0, 1], label="wall floor type 2, a deposited 6 mm sphere")]},
+
 }
 
 
