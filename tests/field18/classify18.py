@@ -3,10 +3,10 @@ usage: python classify18.py   (prints the table rows for FINDINGS.md)"""
 import os
 C = {
  "correct, engine-checked": "p01 p02 p03 p06 p07 p08 p09 p10 p14 p15 p16 p18 p21 p22 p28 s01 s03 s06 s11 u01 u02 u03 u04 u08 u10 u11 u12 "
-                            "w02 w03 w04 w09 w13 k05 k18 b07 b17 b22 b27 b28 b30 b39 b42 x01 x02 G01 G03 G04 G11 G14 G22 G29 G32 G36 G37 G40",
+                            "w02 w03 w04 w09 w13 k05 k18 b07 b17 b22 b27 b28 b30 b39 b42 b54 x01 x02 G01 G03 G04 G11 G14 G22 G29 G32 G36 G37 G40",
  "correct otherwise": "p11 p17 p19 p20 p23 p25 s02 s05 s07 s08 s09 s10 s12 s14 s15 u05 u07 u09 w01 w08 w12 b03 b05 b06 b10 b12 b13 b14 b15 "
                       "b16 b19 b31 b33 b38 b44 k06 k07 k09 k16 k20 x03 G02 G05 G06 G07 G08 G10 G13 G15 G16 G17 G20 G21 G23 G25 G26 G27 "
-                      "G30 G33 G34 G35 G38 G39 G41 G42 G44 G45 G46 G47 G50 b47 b48 b52 R01b",
+                      "G30 G33 G34 G35 G38 G39 G41 G42 G44 G45 G46 G47 G50 G51 b47 b48 b52 R01b",
  "effect named fairly": "k03 k11 k17 G28 p13 u06 w05 w06 w07 w10 w11 w14 w15 b01 b02 b11 b34 k01 k02 k04 k08 k10 k12 k13 k14 k15 k19 "
                         "b20 b23 b26 b35 b36 b37 b50 G09 G18 G19 G24 G43 G49",
  "named with a false word": "R01",

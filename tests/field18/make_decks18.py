@@ -814,6 +814,18 @@ deck("b53_deposit_mol_offset_type_present", "# type 2 spheres of 4 mm made by cr
      + "region top block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix dep all deposit 5 1 200 12345 region top mol ball vz -1 -1 units box\nrun 2000\n", g="0.1 1",
      data={"ball.mol": "# one sphere of type 1\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"})
 
+deck("b54_pour_mol_offset_type_present", "# as b53 with fix pour instead of deposit: type 2 has 4 mm spheres and the pour's template adds 6 mm 0.0009 kg ones\n"
+     + head(ntypes=2) + f"pair_style granular\npair_coeff * * {HM}\n" + GRAV + FLOOR.replace(HK, HM) + TAIL
+     + "molecule ball ball.mol\ncreate_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.004 density 2500\n"
+     + "region slab block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix p all pour 5 1 4767548 region slab mol ball\nrun 2000\n", g="0.1 1",
+     data={"ball.mol": "# one sphere of type 1\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"})
+deck("G51_insert_into_type_present", "# LIGGGHTS: type 2 has a 6 mm sphere (density 1500) made by create_atoms; insert/pack adds 3 mm type-2 spheres (density 1500), hooke/stiffness\n"
+     + lhead() + MAT3 + LST + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.0015\n"
+     + "fix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\n"
+     + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, g="0.1 1", liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
