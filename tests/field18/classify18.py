@@ -12,7 +12,7 @@ C = {
  "named with a false word": "R01",
  "SILENTLY WRONG (D1)": "b53",
  "WRONG: pairs the engine makes declared impossible (D1)": "b04",
- "WRONG: pairs that cannot happen reported (D2)": "b24 b45 G48",
+ "WRONG: pairs that cannot happen reported (D2)": "b24 b45 b55 G48",
  "WRONG NUMBER, cause and remedy named falsely (D5)": "b40",
  "fair refusal": "p04 p05 p12 p24 p27 b08 b18 b21 b32 b43 b51 G12 G31",
  "AVOIDABLE REFUSAL": "s04 s13 b09 b25 b46 b49 b41",

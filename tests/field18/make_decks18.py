@@ -826,6 +826,10 @@ deck("G51_insert_into_type_present", "# LIGGGHTS: type 2 has a 6 mm sphere (dens
      + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\n"
      + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, g="0.1 1", liggghts=True)
 
+deck("b55_evaporate_type2", "# fix evaporate removes every type-2 sphere in the box during run 1 (group t2); stage 2 has type 1 only, with a new stiffness\n"
+     + BASEH(HK) + TWO + "create_atoms 1 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\ngroup t2 type 2\nregion everywhere block 0 0.04 0 0.04 0 0.1 units box\n"
+     + "fix ev t2 evaporate 1 10 everywhere 4567\nrun 100\nunfix ev\npair_coeff * * hooke 9000 3000 " + K + "\nrun 100\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
