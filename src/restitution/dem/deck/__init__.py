@@ -696,11 +696,23 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             # the rows of these runs are marked, not only named on stderr
             deck.doubtful_runs = _runs_after(commands, found) | _runs_after(commands, resized)
         _hold_charges(deck, commands, deck_run.charges(root) if hasattr(deck_run, "charges") else None)
+        # a loop the pass did not finish (nor the runs made for real) may end in the engine, which then
+        # runs what follows it (field round 18, b40: 10 000 passes filled the echo's cap, and the
+        # production run's new stiffness after the loop was never seen: its 1 2 was printed as the
+        # settling run's)
+        unseen = _unseen_after(commands, path.resolve()) if done.timed_out else None
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
               + ("as the audit runs the engine on one process" if cmd == "processors" else
                  "as it may run code or write files")
               + "; it has no part in a contact" for cmd, loc in skipped(commands, scratch).items()]
     notes += _override_notes(atoms, radius or {}, density or {}, deck.ntypes)
+    if unseen is not None:
+        loc, text = unseen
+        runs = "runs skipped" if engine == "LAMMPS" else "runs of one step"
+        raise DeckError(place(loc), text, f"{engine} had not ended the deck within the audit's limits ({done.spent}; "
+                                          f"{runs}): the engine reaches this line once the loop before it ends, "
+                                          "and it may change a contact, so the contacts read so far may not be the "
+                                          "deck's; not audited (--budget SECONDS allows more time and echo)")
     if done.timed_out:
         last = deck.stages[-1][0] if deck.stages else []
         runs = "its runs are skipped" if engine == "LAMMPS" else "its runs are of one step"
@@ -965,6 +977,39 @@ def _clocked_pass(deck_run, scratch, commands: list, budget: float, folder: Path
     if done.error or done.timed_out:
         return None
     return done, again
+
+
+#: Commands that change no contact when the engine runs them after a loop the audit's pass did not
+#: finish: output, loop control, variables, computes and runs themselves (a jump to another file may
+#: hold anything, so only ``jump SELF`` counts)
+_NO_CONTACT = frozenset({"run", "print", "thermo", "thermo_style", "thermo_modify", "dump", "dump_modify", "undump",
+                         "write_restart", "write_data", "write_dump", "write_coeff", "log", "restart", "next", "label",
+                         "variable", "compute", "uncompute", "compute_modify", "info", "echo", "timer", "quit"})
+
+
+def _unseen_after(commands: list, deck: Path) -> tuple | None:
+    """The first command of the deck's files after the furthest line the engine's pass ran in each,
+    that may change a contact ((loc, text)), or None where every such line only prints, loops or
+    runs: where a pass ended early, what the engine would run after the loop. The files are read as
+    the user wrote them (the scratch copy's runs are the audit's includes)."""
+    from ..deck_text import logical_lines
+    furthest: dict = {}
+    for cmd in commands:
+        if isinstance(cmd.loc, tuple) and len(cmd.loc) == 2 and cmd.loc[1]:
+            furthest[cmd.loc[0]] = max(furthest.get(cmd.loc[0], 0), cmd.loc[1])
+    for name, last in sorted(furthest.items(), key=lambda item: (item[0] is not None, str(item[0]))):
+        try:
+            text = (deck if name is None else deck.parent / name).read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        for n, line in logical_lines(text):
+            if n <= last or not line or not line.split():
+                continue
+            words = line.split()
+            if words[0] in _NO_CONTACT or words[0] == "jump" and words[1:2] == ["SELF"]:
+                continue
+            return (name, n), line
+    return None
 
 
 def _run_dependent(commands: list, scratch, clocked: bool = False) -> list:

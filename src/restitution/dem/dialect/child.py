@@ -23,7 +23,7 @@ from typing import Protocol
 
 from .sandbox import available as confining, confine
 
-__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "RESTART_INFO", "RUN_PRINTED", "CEILING", "MAX_ECHO", "engine_environment",
+__all__ = ["DeckRun", "EngineRun", "ATOMS", "ATOMS_AT_END", "RESTART_INFO", "RUN_PRINTED", "CEILING", "MAX_ECHO", "echo_cap", "engine_environment",
            "run_child"]
 
 #: The file in the scratch directory that each run's marker appends the atoms to
@@ -44,6 +44,31 @@ _MAX_OUTPUT = 512 * 2 ** 20
 #: costs the audit's own memory and time (about 0.1 s a MB); the 10 000 runs of a real pour loop
 #: echo 11 MB
 MAX_ECHO = 16 * 2 ** 20
+#: The echo's cap grows with the pass's budget, by this many bytes a second of budget (from
+#: :data:`MAX_ECHO`), up to :data:`MAX_ECHO_ASKED`: a user who asks for more time gets a longer loop read too
+#: (field round 18, b40: a finite loop of 10 000 passes outgrew 16 MB, and --budget 600 still stopped there)
+ECHO_PER_SECOND = 2 ** 20
+MAX_ECHO_ASKED = 256 * 2 ** 20
+
+
+def echo_cap(budget: float) -> int:
+    """The most of the engine's echo a pass with this budget reads, in bytes.
+
+    Parameters
+    ----------
+    budget : float
+        The pass's budget of wall time in seconds.
+
+    Returns
+    -------
+    int
+
+    Examples
+    --------
+    >>> echo_cap(10) == MAX_ECHO, echo_cap(60) == 60 * 2 ** 20, echo_cap(3600) == MAX_ECHO_ASKED
+    (True, True, True)
+    """
+    return int(min(max(MAX_ECHO, budget * ECHO_PER_SECOND), MAX_ECHO_ASKED))
 #: A pass that runs no line twice is bounded by this many times the budget of wall time, not by the
 #: budget: a straight pass ends by itself, so only a command that never ends meets the ceiling
 CEILING = 10
@@ -215,7 +240,7 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
     with open(screen, "wb") if screen_is_stdout else open(os.devnull, "wb") as stdout:
         proc = subprocess.Popen(argv, cwd=cwd, env=env, stdin=subprocess.DEVNULL, stdout=stdout,
                                 stderr=subprocess.PIPE, text=True, preexec_fn=confined)
-    spent = ""
+    spent, cap = "", echo_cap(budget)
     while True:
         try:
             _, err = proc.communicate(timeout=0.05)
@@ -230,8 +255,8 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
                 straight = lines is not None and looped_at is None
                 spent = f"{ceiling:g} s of wall time in all, the ceiling" + (
                     ", in a pass that had run no line twice" if straight else "")
-            elif echoed > MAX_ECHO:
-                spent = f"{MAX_ECHO / 2 ** 20:g} MB of echo"
+            elif echoed > cap:
+                spent = f"{cap / 2 ** 20:g} MB of echo"
             elif written > _MAX_OUTPUT:
                 spent = f"{_MAX_OUTPUT / 2 ** 20:g} MB of atoms written"
             if spent:
@@ -240,9 +265,9 @@ def run_child(argv: list, cwd: Path, env: dict, root: Path, budget: float, scree
                 break
     # (the budget's kill is no error of the engine's)
     error = "" if spent or proc.returncode == 0 else err.strip()
-    if not spent and screen.exists() and screen.stat().st_size > MAX_ECHO:
-        spent = f"{MAX_ECHO / 2 ** 20:g} MB of echo"      # ended between two looks: its end is not read
-    echo = _head(screen, MAX_ECHO)
+    if not spent and screen.exists() and screen.stat().st_size > cap:
+        spent = f"{cap / 2 ** 20:g} MB of echo"      # ended between two looks: its end is not read
+    echo = _head(screen, cap)
     atoms, at_end = ((root / name).read_text(errors="replace") if (root / name).exists() else ""
                      for name in (ATOMS, ATOMS_AT_END))
     end = time.monotonic()
