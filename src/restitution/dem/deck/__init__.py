@@ -1631,10 +1631,13 @@ def _empty_notes(deck: Deck) -> list:
     later = {t: _inserters([d for d in stages if not _empty(d, t)], t) for t in empty}
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
+    template = {t: mol for d in stages for t, mol in d.deposited_templates.items()}
     pending = {(t, (fix, where, *size)) for d in stages for t, sizes in d.pending.items()
                for size, fixes in sizes.items() for fix, where in fixes}
-    return [f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
-            f"whatever set gave the type's atoms before: audited at that size{_beside_deposited(stages, t)}"
+    return [(f"type {t}: the atoms fix {fix} (deposit) makes are molecule {template[t]}'s sphere, of its size: "
+             f"audited at that size" if t in template else
+             f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
+             f"whatever set gave the type's atoms before: audited at that size") + _beside_deposited(stages, t)
             for t, fix in sorted(deposited.items())] + [
             f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} ("
             + (f"those before {later[t]} makes its atoms" if later[t] else "walls only, or unused")

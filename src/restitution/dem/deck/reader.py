@@ -1194,7 +1194,9 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if style in _INSERTING_FIXES:
         deck.inserting = True
         typed = style in ("pour", "deposit") and len(words) > 5 and words[5].isdigit()
-        made = {int(words[5])} if typed else None
+        # with a molecule template the type word is an offset
+        made = (set(template_types(deck, words, where, line)) if typed and "mol" in _keywords(words) else
+                {int(words[5])} if typed else None)
         # a fix defined again (a loop of 10 000 pours) adds nothing new: kept once
         if made not in deck.inserts:
             deck.inserts.append(made)
@@ -1352,25 +1354,65 @@ def _one_sphere(mol: str, text: str) -> tuple | str:
     return (kind, radius, density)
 
 
-def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
-    """fix ID group pour N offset seed ... mol TEMPLATE: each one-sphere template of the set pours
-    spheres of its size (diam and dens are ignored; LAMMPS measured) of type offset + its type;
-    anything else is refused."""
-    tokens = words[7:]
+def _keywords(words: list) -> list:
+    """The keywords of a fix pour (after N type seed) or deposit (after N type M seed)."""
+    return words[8:] if words[3] == "deposit" else words[7:]
+
+
+def template_types(deck: Deck, words: list, where: str, line: str) -> dict:
+    """{type: {(radius, density)}} that a fix pour or deposit of ``mol TEMPLATE`` makes: each
+    one-sphere template of the set, of its own size (diam and dens are ignored: LAMMPS measured),
+    of type offset + its type (the fix's type word is that offset, 0 allowed); anything else is
+    refused.
+
+    Parameters
+    ----------
+    deck : Deck
+        The deck, with the molecule templates read so far.
+    words : list of str
+        The fix's words.
+    where, line : str
+        Where the fix is, and its text, for a refusal.
+
+    Returns
+    -------
+    dict
+
+    Raises
+    ------
+    DeckError
+        Where the template is not one sphere, is not defined, or the molecules are rigid bodies.
+
+    Examples
+    --------
+    >>> d = Deck(ntypes=3, templates={"ball": [(1, 0.003, 2500.0)]})
+    >>> template_types(d, "fix dep all deposit 5 1 200 7 region r mol ball".split(), "line 9", "")
+    {2: {(0.003, 2500.0)}}
+    >>> template_types(d, "fix p all pour 5 0 7 region r mol ball".split(), "line 9", "")
+    {1: {(0.003, 2500.0)}}
+    """
+    tokens, style = _keywords(words), words[3]
     k = tokens.index("mol")
     made = deck.templates.get(tokens[k + 1]) if k + 1 < len(tokens) else None
     if "rigid" in tokens or "shake" in tokens:
-        made = "fix pour ... rigid/shake makes each poured molecule a constrained body"
+        made = f"fix {style} ... rigid/shake makes each molecule a constrained body"
     if made is None:
-        made = "fix pour ... mol names no molecule template the deck defined"
+        made = f"fix {style} ... mol names no molecule template the deck defined"
     if isinstance(made, str):
         raise DeckError(where, line, made)
+    offset = int(number(words[5], where, line))
+    types: dict = {}
+    for kind, radius, density in made:
+        types.setdefault(atom_type(str(offset + kind), where, line), set()).add((radius, density))
+    return types
+
+
+def _pour_template(deck: Deck, words: list, where: str, line: str) -> None:
+    """fix ID group pour N offset seed ... mol TEMPLATE: the types and sizes of
+    :func:`template_types`."""
+    poured = template_types(deck, words, where, line)
     if deck.ran:
         return                       # the engine made the runs: what it poured is among the atoms held
-    poured: dict = {}
-    for kind, radius, density in made:
-        t = atom_type(str(int(number(words[5], where, line)) + kind), where, line)
-        poured.setdefault(t, set()).add((radius, density))
     for t, sizes in poured.items():
         deck.sizes.pop(t, None)
         if deck.held is not None:
@@ -1400,12 +1442,21 @@ def _deposit(deck: Deck, words: list, where: str, line: str, loc) -> None:
     """fix ID group deposit N type M seed [keywords]: type t's atoms made as the runs go, with
     LAMMPS' default size (DEPOSITED); a molecule's (mol) from its template, which the reader does
     not read (the type's entry in ``missing`` says so)."""
+    if "mol" in words[8:]:
+        # its one-sphere templates' sizes, at their offset types (field round 18, b53: the template's
+        # 6 mm spheres of type 2 went unseen, and type 2's 4 mm rows were printed alone)
+        made = template_types(deck, words, where, line)
+        if deck.ran:
+            return
+        template = _keywords(words)[_keywords(words).index("mol") + 1]
+        for t, sizes in made.items():
+            deck.deposits[t] = words[1]
+            deck.deposited_templates[t] = template
+            pour_into(deck, t, sizes)
+        return
     t = atom_type(words[5], where, line)
     if deck.ran:
         return                       # the engine made the runs: what it deposited is among the atoms held
-    if "mol" in words[8:]:
-        deck.missing[t] = f"fix {words[1]} deposits molecules, whose sizes come from a molecule template"
-        return
     deck.deposits[t] = words[1]
     pour_into(deck, t, {DEPOSITED})
 

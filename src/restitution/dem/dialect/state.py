@@ -119,6 +119,9 @@ class Deck:
     walls: list = field(default_factory=list)     # (loc, words, the group's types then) of fix wall/gran
     # type -> ID of the LAMMPS fix deposit making its atoms (None: a set may have resized them since)
     deposits: dict = field(default_factory=dict)
+    # type -> the molecule template whose one sphere a fix deposit of ``deposits`` makes (its size,
+    # not LAMMPS' default)
+    deposited_templates: dict = field(default_factory=dict)
     meshes: dict = field(default_factory=dict)    # LIGGGHTS fix mesh/surface ID -> its atom type, or None
     shaken: dict = field(default_factory=dict)    # LIGGGHTS fix move/mesh ID -> (loc, text, mesh ID) of an oscillation
     gran: dict = field(default_factory=dict)      # LAMMPS' older gran/* pair style: style, k_n, gamma_n, limit
