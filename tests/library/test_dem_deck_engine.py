@@ -496,6 +496,7 @@ def test_a_loop_without_a_run_is_refused_at_the_echo_cap_in_little_memory(tmp_pa
     # refusal names, and the echo is never read whole
     from restitution.dem.dialect import child
     monkeypatch.setattr(child, "MAX_ECHO", 2 ** 16)
+    monkeypatch.setattr(child, "ECHO_PER_SECOND", 0)      # the cap itself, whatever the budget
     text = HEAD + f"pair_coeff * * hooke 1000 1 {T}\nlabel l\nvariable i equal 1\njump SELF l\nrun 10\n"
     from restitution.dem.deck import audit_deck
     from restitution.dem.dialect.state import DeckError

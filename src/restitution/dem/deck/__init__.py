@@ -1628,7 +1628,10 @@ def _empty_notes(deck: Deck) -> list:
     # goes; one defined only at a later run (field round 13, a06: a loop pours type 1, then type 2)
     # has made none there, and none of its sizes is missing
     inserted = {t: _inserters([d for d in stages if _empty(d, t)], t) for t in empty}
-    later = {t: _inserters([d for d in stages if not _empty(d, t)], t) for t in empty}
+    # ... named only where the type is empty before it has atoms, never after them (deleted: field
+    # round 18, b24)
+    later = {t: _inserters([d for d in stages if not _empty(d, t)], t) if _empty_first(stages, t) else ""
+             for t in empty}
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
     template = {t: mol for d in stages for t, mol in d.deposited_templates.items()}
@@ -1640,7 +1643,7 @@ def _empty_notes(deck: Deck) -> list:
              f"whatever set gave the type's atoms before: audited at that size") + _beside_deposited(stages, t)
             for t, fix in sorted(deposited.items())] + [
             f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} ("
-            + (f"those before {later[t]} makes its atoms" if later[t] else "walls only, or unused")
+            + (f"those before {later[t]} makes its atoms" if later[t] else "walls only, unused, or deleted")
             + "): its sphere pairs cannot happen there and are not audited" for t in empty if not inserted[t]] + \
         [f"type {t} is inserted by {inserted[t]} as the runs go, at sizes the audit does not read: its pairs "
          f"{'at the runs where it has no atom yet ' if len(stages) > 1 else ''}are not audited"
@@ -1652,6 +1655,13 @@ def _empty_notes(deck: Deck) -> list:
          f"when the set at {where} resized those it had made, which the audit (its runs skipped) does not know: the "
          "rows at that size hold only then"
          for t, (fix, where, r, rho) in sorted(pending)]
+
+
+def _empty_first(stages: list, t: int) -> bool:
+    """Whether type t is empty only in the stages before its first atoms (not again after them)."""
+    empties = [_empty(d, t) for d in stages]
+    first = empties.index(False) if False in empties else len(empties)
+    return not any(empties[first:])
 
 
 def _inserters(stages: list, t: int) -> str:

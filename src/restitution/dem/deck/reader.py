@@ -178,6 +178,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     infos = iter(restarts or ())
     pending: list = []
     moved_since = False            # a run has gone: the atoms are where it left them, never the pass
+    active: set = set()            # the fixes defined now (a deposit still in force makes more atoms)
     placed: set = set()            # groups picked by where the atoms were, after a run
     for cmd in commands:
         try:
@@ -202,6 +203,12 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                                                              "which keep their groups")
             if made and set_poured(deck, made, split, cmd.loc, cmd.text):
                 block, same = None, False        # the poured sizes changed: no pass repeats the last
+        if split and split[0] == "fix" and len(split) > 1:
+            active.add(split[1])
+        elif split and split[0] == "unfix" and len(split) > 1:
+            active.discard(split[1])
+        if split and split[0] == "delete_atoms" and split[1:2] == ["group"] and len(split) > 2 and moved_since:
+            _deleted(deck, made, split[2], active)
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
         if split and split[0] == "write_data" and len(split) > 1:
@@ -1004,6 +1011,26 @@ def _stage(deck: Deck, loc, line: str) -> None:
     stages.append(([(loc, line)], snap, key))
 
 
+def _deleted(deck: Deck, made: dict, group: str, active: set) -> None:
+    """delete_atoms group G after a run: every atom of the types G holds whole (a group by type with
+    no atom of its types made after it) is gone, those the pours and deposits made in the runs
+    before included, which the engine's pass never held (field round 18, b24, b45: their pairs were
+    still reported, though LAMMPS held none); a pour or deposit still in force makes more."""
+    static = deck.groups.get(group)
+    if not isinstance(static, set) or group in deck.partial_groups or group in deck.empty_groups:
+        return
+    for t in static:
+        made.pop(t, None)
+        if deck.held is not None:
+            deck.held.pop(t, None)        # the engine deletes them too: its next run holds none
+        # a fix no longer defined inserts no more of them
+        deck.inserters[t] = {fix: style for fix, style in deck.inserters.get(t, {}).items() if fix in active}
+        if deck.deposits.get(t) not in active:
+            deck.deposits.pop(t, None)
+            deck.deposited_templates.pop(t, None)
+    repour(deck, made, set(static))
+
+
 def _moved_in_run(deck: Deck, loc, line: str) -> None:
     """The atoms a fix moved in this run keep the velocity they end it with, which the runs skipped do
     not show: where a later run holds them with no fix, the contact's damping reads it, as it reads a
@@ -1395,7 +1422,8 @@ def template_types(deck: Deck, words: list, where: str, line: str) -> dict:
     k = tokens.index("mol")
     made = deck.templates.get(tokens[k + 1]) if k + 1 < len(tokens) else None
     if "rigid" in tokens or "shake" in tokens:
-        made = f"fix {style} ... rigid/shake makes each molecule a constrained body"
+        made = f"fix {style} ... rigid/shake makes each {'poured' if style == 'pour' else 'deposited'} molecule a " \
+               "constrained body"
     if made is None:
         made = f"fix {style} ... mol names no molecule template the deck defined"
     if isinstance(made, str):
