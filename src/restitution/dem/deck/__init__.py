@@ -1642,9 +1642,11 @@ def _empty_notes(deck: Deck) -> list:
              f"type {t}: the atoms fix {fix} (deposit) makes get LAMMPS' default size, diameter 1 and density 1, "
              f"whatever set gave the type's atoms before: audited at that size") + _beside_deposited(stages, t)
             for t, fix in sorted(deposited.items())] + [
-            f"type {t} has no particle{' at some runs' if len(stages) > 1 else ''} ("
-            + (f"those before {later[t]} makes its atoms" if later[t] else "walls only, unused, or deleted")
-            + "): its sphere pairs cannot happen there and are not audited" for t in empty if not inserted[t]] + \
+            f"{_types_named(ts)} {'has' if len(ts) == 1 else 'have'} no particle"
+            f"{' at some runs' if len(stages) > 1 else ''} ("
+            + (f"those before {why} makes its atoms" if why else "walls only, unused, or deleted")
+            + f"): {'its' if len(ts) == 1 else 'their'} sphere pairs cannot happen there and are not audited"
+            for why, ts in _by_reason({t: later[t] for t in empty if not inserted[t]})] + \
         [f"type {t} is inserted by {inserted[t]} as the runs go, at sizes the audit does not read: its pairs "
          f"{'at the runs where it has no atom yet ' if len(stages) > 1 else ''}are not audited"
          for t in empty if inserted[t]] + \
@@ -1655,6 +1657,33 @@ def _empty_notes(deck: Deck) -> list:
          f"when the set at {where} resized those it had made, which the audit (its runs skipped) does not know: the "
          "rows at that size hold only then"
          for t, (fix, where, r, rho) in sorted(pending)]
+
+
+def _by_reason(reasons: dict) -> list:
+    """[(reason, [types])] of a {type: reason}, the types of one reason together, in type order
+    (a deck of 120 size classes, 117 of them empty, says so in one line: field round 18, b41)."""
+    grouped: dict = {}
+    for t in sorted(reasons):
+        grouped.setdefault(reasons[t], []).append(t)
+    return sorted(grouped.items(), key=lambda item: item[1][0])
+
+
+def _types_named(ts: list) -> str:
+    """"type 3", or "types 2-59, 61" for several, runs of consecutive types joined.
+
+    Examples
+    --------
+    >>> _types_named([3]), _types_named([2, 3, 4, 7, 9, 10])
+    ('type 3', 'types 2-4, 7, 9-10')
+    """
+    runs: list = []
+    for t in ts:
+        if runs and t == runs[-1][1] + 1:
+            runs[-1][1] = t
+        else:
+            runs.append([t, t])
+    named = ", ".join(f"{a}" if a == b else f"{a}-{b}" for a, b in runs)
+    return f"type {named}" if len(ts) == 1 else f"types {named}"
 
 
 def _empty_first(stages: list, t: int) -> bool:

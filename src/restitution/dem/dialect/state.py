@@ -284,7 +284,7 @@ class DeckDialect(Protocol):
 
 
 #: The audit lists every type pair, N (N + 1) / 2 of them: a deck with more types is refused.
-MAX_TYPES = 100
+MAX_TYPES = 1000
 #: Flat walls (a sphere against a plane). Curved ones are each dialect's: audited with the
 #: curvature its engine puts in the contact (LAMMPS' zcylinder), as planes where the engine puts
 #: none (LIGGGHTS' cylinders), or named, not audited (region walls).
