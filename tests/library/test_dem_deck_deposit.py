@@ -51,12 +51,24 @@ def test_a_type_only_deposited_is_audited_at_lammps_default_size(tmp_path):
     assert "not audited" not in err
 
 
-def test_a_set_after_a_deposits_run_leaves_its_size_unknown_and_said(tmp_path):
-    """A set after the run may resize the atoms the run deposited, which the engine's pass never
-    made: the audit does not take the default size for them then, and says why."""
+def test_a_set_after_a_deposits_run_is_answered_by_the_runs_made(tmp_path):
+    """A set after the run resizes the atoms the run deposited, which the engine's pass never made:
+    the audit makes the runs for real and reads the sizes LAMMPS holds, and says so (before: the
+    type was left unsized and the deck refused with "give --radius", field round 18, D4). LAMMPS
+    keeps a deposited atom's mass when set gives it another diameter (radius 0.1, mass pi/6), so its
+    2 2 row is the collision of those spheres."""
     status, out, err = _audit(tmp_path, DEPOSIT.format(type=2, after="set type 2 diameter 0.2\nrun 60\n"))
-    assert "set after a run may resize" in err
-    assert status != 0 or not any(2 in p["types"] for p in json.loads(out)["stages"][-1]["pairs"])
+    assert status == 0 and "made the deck's" in err, err
+    (got,) = [p["eps"] for p in json.loads(out)["stages"][-1]["pairs"] if p["types"] == [2, 2]]
+    # the same spheres made by create_atoms, read without any run: density (pi/6) / (4/3 pi 0.1^3) = 125
+    held = DEPOSIT.format(type=2, after="").replace("set type 2 diameter 0.3 density 7000",
+                                                    "create_atoms 2 single 2 2 1 units box\n"
+                                                    "set type 2 diameter 0.2 density 125")
+    (tmp_path / "held").mkdir()
+    status, out, err = _audit(tmp_path / "held", held.split("region ins")[0])
+    assert status == 0, err
+    (want,) = [p["eps"] for p in json.loads(out)["pairs"] if p["types"] == [2, 2]]
+    assert got == pytest.approx(want, rel=1e-12)
 
 
 def test_a_pour_and_a_deposit_into_one_empty_type_give_both_sizes(tmp_path):

@@ -855,6 +855,12 @@ def _run_causes(found: list, picked: tuple | None, deck: Deck | None) -> list:
         if any(snap.pending.values()):
             causes.append((runs[0][0], f"{runs[0][1]}, whose sizes include a pour's own only if it has not "
                                        "finished"))
+        # a set after a run resized atoms an inserting fix made in it, which the pass never held, in a
+        # way the reader cannot follow (a deposit's, a group it cannot type): the runs made tell
+        # (field round 18, D4: b25, b49 refused with "give --radius")
+        elif snap.resized or any(fix is None for fix in snap.deposits.values()):
+            causes.append((runs[0][0], f"{runs[0][1]}, whose sizes a set after an inserting run changed in atoms "
+                                       "the pass never made"))
     return sorted(causes, key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
 
 

@@ -1011,13 +1011,41 @@ def _stage(deck: Deck, loc, line: str) -> None:
     stages.append(([(loc, line)], snap, key))
 
 
+def whole_types(deck: Deck, group: str) -> set | None:
+    """The types whose every atom group ``group`` holds (a group by type with no atom of its types
+    made after it), or None where the audit cannot say.
+
+    Parameters
+    ----------
+    deck : Deck
+    group : str
+
+    Returns
+    -------
+    set of int, or None
+
+    Examples
+    --------
+    >>> whole_types(Deck(ntypes=2, groups={"t2": {2}}), "t2"), whole_types(Deck(ntypes=2), "all")
+    ({2}, {1, 2})
+    >>> whole_types(Deck(ntypes=2, groups={"t2": {2}}, partial_groups={"t2": "line 9"}), "t2") is None
+    True
+    """
+    if group == "all":
+        return set(range(1, deck.ntypes + 1))
+    static = deck.groups.get(group)
+    if not isinstance(static, set) or group in deck.partial_groups or group in deck.empty_groups:
+        return None
+    return set(static)
+
+
 def _deleted(deck: Deck, made: dict, group: str, active: set) -> None:
     """delete_atoms group G after a run: every atom of the types G holds whole (a group by type with
     no atom of its types made after it) is gone, those the pours and deposits made in the runs
     before included, which the engine's pass never held (field round 18, b24, b45: their pairs were
     still reported, though LAMMPS held none); a pour or deposit still in force makes more."""
-    static = deck.groups.get(group)
-    if not isinstance(static, set) or group in deck.partial_groups or group in deck.empty_groups:
+    static = whole_types(deck, group)
+    if static is None:
         return
     for t in static:
         made.pop(t, None)
@@ -1574,9 +1602,13 @@ def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:
         except DeckError:
             return False              # LAMMPS stops on the range: its own refusal
         exact = True
+    elif words[1] == "group" and (whole := whole_types(deck, words[2])) is not None:
+        # a group by type that holds every atom of its types sets them as set type does (field
+        # round 18, b46: set group t2 after a pour was refused)
+        targets, exact = [t for t in sorted(whole) if made.get(t)], True
     else:
         targets = [t for t, sizes in made.items() if sizes]
-        exact = words[1] == "group" and words[2] == "all"
+        exact = False
     changed, liggghts = False, deck.code == "LIGGGHTS"
     fixes, cut = ("insertions", "each run cut to one step") if liggghts else ("pours", "its runs skipped")
     # the atoms moved to another type, added once every target is read: new type -> their sizes
