@@ -420,6 +420,20 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     (True, {})
     """
     where = place(loc)
+    held = _restart_info(info) if info is not None else {}
+    if written is None and "dt" in held and "ntypes" in held:
+        # a restart the deck did not write (shipped beside it): LAMMPS says what it holds but not its
+        # contact coefficients (write_coeff writes none for the granular styles), so the deck's own
+        # lines after the read decide, and a pair whose coefficients only the file holds is not
+        # audited (field round 18, D3: b09 refused though it set every pair again)
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
+        deck.__dict__.update(fresh.__dict__)
+        deck.units, deck.atom_style, deck.ntypes, deck.dt = held.get("units"), held.get("atom_style"), \
+            held["ntypes"], held["dt"]
+        deck.held, deck.atoms = {}, True
+        if held.get("pair_style", "none") != "none" and held["set"]:
+            deck.restart_pairs = (loc, line, held["pair_style"], set(held["set"]))
+        return {}
     if written is None:
         raise DeckError(where, line, f"read_restart reads {words[1]}, which the deck did not write before (with "
                                      "write_restart, in the engine's pass): neither engine gives an account of the "
@@ -434,7 +448,6 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
         raise DeckError(where, line, f"the restart file holds the atoms fix deposit made of type "
                                      f"{min(deposited)} in the runs before its write, which the engine's pass (its "
                                      "runs skipped) never made: their sizes are not followed, not audited")
-    held = _restart_info(info)
     style_words = state["style_line"][1].split() if state["style_line"] else []
     dt = state["dt"] if state.get("dt") is not None else DEFAULT_DT.get(state["units"])
     set_before = set(state["coeffs"]) | set(state["others"]) | set(state["idle"])
@@ -693,6 +706,8 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.hybrid, deck.substyle, deck.others, deck.idle = "", "", {}, {}
         deck.granular_of = {}
     style = " ".join(sub[1] for sub in substyles)
+    if deck.restart_pairs and (style != deck.restart_pairs[2] or len(substyles) > 1):
+        deck.restart_pairs = ()       # another style: the file's coefficients are gone
     if deck.style and (style != deck.style or hybrid_again):
         # LAMMPS keeps the coefficients for the same style (its settings change); another style
         # starts without any, and LAMMPS stops at the next run unless new pair_coeff lines follow
@@ -988,6 +1003,12 @@ def _stage(deck: Deck, loc, line: str) -> None:
     """A run: the contact settings it sees, kept where they differ from the previous run's."""
     if deck.unmapped:
         raise DeckError(*deck.unmapped)
+    if deck.restart_pairs and (kept := deck.restart_pairs[3] - set(deck.coeffs)):
+        at, text, style, _ = deck.restart_pairs
+        pairs = ", ".join(f"{i} {j}" for i, j in sorted(kept))
+        raise DeckError(place(at), text, f"the restart file holds {style} coefficients for types {pairs}, which the "
+                                         "deck did not set again before the run at "
+                                         f"{place(loc)}: LAMMPS gives no account of them, not audited")
     key = contact_key(deck)
     if deck.stages and deck.stages[-1][2] == key:
         deck.stages[-1][0].append((loc, line))

@@ -142,6 +142,9 @@ class Deck:
     # it: refused at a run that uses it, and no run may (a deck replacing it before its first run)
     unmapped: tuple = ()
     reset: tuple = ()                             # (loc, text) of a pair_style of another that discarded them
+    # (loc, text, pair style, {pairs}) of a restart file the deck did not write: the pairs whose
+    # coefficients only that file holds (LAMMPS keeps them where the deck gives the same style again)
+    restart_pairs: tuple = ()
     atom_style_loc: tuple = ()                    # (file, line number) of atom_style
     # types known to hold atoms (create_atoms, read_data, a pour or deposit that has run), and
     # whether atoms of types the reader does not know exist: ``set group all`` sizes those only
