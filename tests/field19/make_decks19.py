@@ -443,6 +443,47 @@ deck("L24_hooke_viscoelastic_off", "# LIGGGHTS hooke with viscoelastic damping? 
      + lhead() + MAT3 + E3 + "fix m9 all property/global characteristicVelocity scalar 2.0\npair_style gran model hooke tangential history\npair_coeff * *\n"
      + "fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0 shear x 0.1\n" + ATOMS + RUN, liggghts=True)
 
+# ================================================================ b*: groups, fix IDs, order (second batch)
+deck("b01_static_group_before_atoms_wall", "# group g1 type 1 made before the atoms exist (a static group: empty); the floor acts on g1 only, so on no sphere\n"
+     + head() + G1(HK) + GRAV + "group g1 type 1\n" + f"fix floor g1 wall/gran granular {HK} zplane 0 NULL\n" + TAIL + TWO + "run 100\n", g=1)
+deck("b02_static_group_before_atoms_integrator", "# fix nve/sphere on a group made before the atoms exist (empty): type-1 spheres are never integrated (held); type 2 integrated by a second fix\n"
+     + head() + G1(HK) + GRAV + FLOOR + "group g1 type 1\nfix integ g1 nve/sphere\ntimestep 1e-5\n" + TWO + "group g2 type 2\nfix integ2 g2 nve/sphere\nrun 100\n", g=1)
+deck("b03_fix_redefined_same_id", "# fix floor re-issued with the same ID and no unfix (LAMMPS replaces it): stage 2's floor is hertz/material\n"
+     + BASE(HK) + TWO + "run 100\n" + f"fix floor all wall/gran granular {HM} zplane 0 NULL\nrun 100\n")
+deck("b04_coeff_after_last_run", "# pair_coeff and a new floor after the last run: nothing runs with them\n"
+     + BASE(HK) + TWO + "run 100\npair_coeff * * hooke 9000 3000 " + K + "\nunfix floor\nfix floor2 all wall/gran granular " + HM + " zplane 0 NULL\n")
+deck("b05_limit_damping_mixed", "# 1 1 hertz/material viscoelastic with limit_damping, 2 2 without: LAMMPS' mixed 1 2 (limit or not?)\n"
+     + head() + f"pair_style granular\npair_coeff 1 1 {HM} limit_damping\npair_coeff 2 2 {HM}\n" + GRAV + TAIL + TWO + "run 100\n")
+deck("b06_pour_rigid_dimer", "# fix pour of a two-sphere molecule as rigid bodies (rigid/small): a clump, not a sphere\n"
+     + head(style="sphere", box="0 0.04 0 0.04 0 0.2") + "molecule dimer dimer.mol\n" + G1(HK) + GRAV + FLOOR + "timestep 1e-5\n"
+     + "fix rb all rigid/small molecule mol dimer\nregion top block 0 0.04 0 0.04 0.1 0.2 units box\nfix p all pour 5 0 4767 region top mol dimer rigid rb\nrun 1000\n", g=1,
+     data={"dimer.mol": "dimer\n\n2 atoms\n\nCoords\n\n1 0 0 0\n2 0.004 0 0\n\nTypes\n\n1 1\n2 2\n\nDiameters\n\n1 0.004\n2 0.004\n\nMasses\n\n1 8.4e-5\n2 8.4e-5\n"})
+deck("b07_coeff_from_xcm_after_run", "# kn from the centre of mass height after a falling run: 2000 + 1e5*xcm(all,z)\n"
+     + BASE(HK) + TWO4.replace("0.02 0.02 0.01", "0.02 0.02 0.05") + "run 2000\nvariable kn equal 2000+1e5*xcm(all,z)\npair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
+deck("b08_if_on_ke_branch", "# if the kinetic energy after a falling run is above 1e-9 then hooke 9000 else hooke 2000\n"
+     + BASE(HK) + TWO4.replace("0.02 0.02 0.01", "0.02 0.02 0.05") + "run 500\nvariable e equal ke\nif \"${e} > 1e-9\" then \"pair_coeff * * hooke 9000 3000 " + K + "\" else \"pair_coeff * * hooke 2000 3000 " + K + "\"\nrun 100\n", g=1)
+deck("b09_static_group_before_pour_wall", "# group t1 type 1 made after create_atoms but before fix pour adds type-1 spheres (not in t1); the floor acts on t1 only\n"
+     + head(box="0 0.04 0 0.04 0 0.2") + G1(HK) + GRAV + TAIL + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\ngroup t1 type 1\n"
+     + f"fix floor t1 wall/gran granular {HK} zplane 0 NULL\n" + "region top block 0 0.04 0 0.04 0.1 0.2 units box\nfix p all pour 10 1 4767 region top diam one 0.006 dens 2500 2500\nrun 1000\n", g=1)
+deck("b10_coeff_change_then_run0", "# the coefficients change, then run 0 (no step): the last contacts happen under the first run's settings\n"
+     + BASE(HK) + TWO + "run 100\npair_coeff * * hooke 9000 3000 " + K + "\nrun 0\n", g=1)
+deck("b11_type_set_after_group_wall", "# floor on group g1 (type 1 at its making); then set group g1 type 2: the wall now acts on type-2 spheres (g1's)\n"
+     + head() + G1(HK) + GRAV + TAIL + TWO + "group g1 type 1\n" + f"fix floor g1 wall/gran granular {HK} zplane 0 NULL\nset group g1 type 2\nrun 100\n", g=1)
+deck("b12_delete_atoms_overlap_setup", "# delete_atoms overlap removes the type-2 sphere overlapping a type-1 one before the run: type 2 left with none\n"
+     + head() + G1(HK) + GRAV + FLOOR + TAIL + "create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.021 0.02 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n"
+     + "group t1 type 1\ngroup t2 type 2\ndelete_atoms overlap 0.004 t2 t1\nrun 100\n", g=1)
+deck("L25_property_redefined_same_id", "# LIGGGHTS: fix m3 coefficientRestitution re-issued with the same ID (no unfix) between runs: 0.3 everywhere for stage 2\n"
+     + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\nrun 1000\n", liggghts=True)
+deck("L26_integrate_type1_only", "# LIGGGHTS: nve/sphere on type 1 only: type-2 spheres are held (never move)\n"
+     + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + "group t1 type 1\ntimestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr t1 nve/sphere\nrun 2000\n", liggghts=True)
+deck("L27_static_group_before_insert_wall", "# LIGGGHTS: group t1 type 1 made before insert/pack adds type-1 spheres; the floor acts on t1 (the one create_atoms sphere) only\n"
+     + lhead() + MAT3 + E3 + HERTZ + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\ngroup t1 type 1\n"
+     + "fix wprim t1 wall/gran model hertz tangential history primitive type 3 zplane 0.0\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.003\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
+deck("L28_pair_model_changed_walls_kept", "# LIGGGHTS: stage 2 pair_style gran model hooke (characteristicVelocity) while the wall keeps hertz\n"
+     + lhead() + MAT3 + E3 + "fix m9 all property/global characteristicVelocity scalar 2.0\n" + HERTZ + WALL3 + ATOMS + RUN + "pair_style gran model hooke tangential history\npair_coeff * *\nrun 1000\n", liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
