@@ -484,6 +484,80 @@ deck("L27_static_group_before_insert_wall", "# LIGGGHTS: group t1 type 1 made be
 deck("L28_pair_model_changed_walls_kept", "# LIGGGHTS: stage 2 pair_style gran model hooke (characteristicVelocity) while the wall keeps hertz\n"
      + lhead() + MAT3 + E3 + "fix m9 all property/global characteristicVelocity scalar 2.0\n" + HERTZ + WALL3 + ATOMS + RUN + "pair_style gran model hooke tangential history\npair_coeff * *\nrun 1000\n", liggghts=True)
 
+# ================================================================ c*: third batch (2d insertion masses, extreme e, default dt, cohesion mixing)
+H2D = ("units si\ndimension 2\natom_style sphere\nboundary p f p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.2 -0.001 0.001 units box\ncreate_box 2 box\n")
+deck("c01_2d_pour_disc_masses", "# 2d: fix pour of 4 mm discs (dens 2500) into type 2 beside a created 4 mm type-1 disc (set density): the masses LAMMPS gives each\n"
+     + H2D + G1(HM) + "fix grav all gravity 9.81 vector 0 -1 0\n" + f"fix floor all wall/gran granular {HM} yplane 0 NULL\nfix integ all nve/sphere\nfix 2d all enforce2d\ntimestep 1e-5\n"
+     + "create_atoms 1 single 0.02 0.01 0\nset type 1 diameter 0.004 density 2500\nregion top block 0 0.04 0.1 0.19 -0.001 0.001 units box\n"
+     + "fix p all pour 10 2 4767 region top diam one 0.004 dens 2500 2500\nrun 1000\n")
+deck("c02_2d_density_disc", "# 2d: set density/disc (mass pi r^2 rho) on type 2, density (4/3 pi r^3 rho) on type 1\n"
+     + H2D + G1(HM) + f"fix floor all wall/gran granular {HM} yplane 0 NULL\nfix integ all nve/sphere\nfix 2d all enforce2d\ntimestep 1e-5\n"
+     + "create_atoms 1 single 0.01 0.01 0\ncreate_atoms 2 single 0.03 0.01 0\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.004 density/disc 2500\nrun 100\n")
+deck("c03_2d_deposit_default", "# 2d: fix deposit of LAMMPS' default spheres (diameter 1, density 1) into type 2, units lj, hooke\n"
+     + "units lj\ndimension 2\natom_style sphere\nboundary p f p\ncomm_modify vel yes\nregion box block 0 20 0 40 -0.5 0.5 units box\ncreate_box 2 box\n"
+     + G1(f"hooke 2e4 30 {K}") + f"fix floor all wall/gran granular hooke 2e4 30 {K} yplane 0 NULL\nfix integ all nve/sphere\nfix 2d all enforce2d\ntimestep 1e-4\n"
+     + "create_atoms 1 single 5 2 0\nset type 1 diameter 1.5 density 1\nregion top block 0 20 20 38 -0.5 0.5 units box\nfix dep all deposit 5 2 100 12345 region top vy -1 -1 units box\nrun 600\n", g="0.1 1")
+deck("c04_liggghts_hertz_e_low_high", "# LIGGGHTS hertz with e 0.05 (1 1), 0.99 (2 2), 0.02 (1 2) and a wall e 0.01: is eps e at the ends of the range?\n"
+     + lhead() + MAT3 + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.05 0.02 0.01 0.02 0.99 0.5 0.01 0.5 0.5\n" + HERTZ + WALL3 + ATOMS + RUN, liggghts=True)
+deck("c05_lammps_coeffrest_e_low", "# LAMMPS hertz/material coeff_restitution e 0.05 without limit_damping (the overlap rule) and hooke coeff_restitution 0.05\n"
+     + head() + f"pair_style granular\npair_coeff 1 1 hertz/material 1e7 0.05 0.3 damping coeff_restitution {TL}\npair_coeff 2 2 hooke 2000 0.05 damping coeff_restitution {TL}\npair_coeff 1 2 hertz/material 1e7 0.95 0.3 damping coeff_restitution {TL}\n"
+     + GRAV + TAIL + TWO + "run 100\n")
+deck("c06_no_timestep_units_lj", "# units lj with no timestep command (LAMMPS' default 0.005): hooke 2e4 with mass_velocity, unit spheres: few steps per contact\n"
+     + head(units="lj", box="0 20 0 20 0 40") + G1(f"hooke 200 5 {K}") + "fix grav all gravity 1.0 vector 0 0 -1\n" + f"fix floor all wall/gran granular hooke 200 5 {K} zplane 0 NULL\nfix integ all nve/sphere\n"
+     + "create_atoms 1 single 5 5 2\ncreate_atoms 2 single 10 10 2\nset type 1 diameter 1 density 1\nset type 2 diameter 1 density 1\nrun 100\n", g="0.1 1")
+deck("c07_dmt_cohesion_mixed_to_zero", "# dmt: 1 1 surface energy 0, 2 2 surface energy 0.05; LAMMPS mixes 1 2 (geometric: 0?)\n"
+     + head() + f"pair_style granular\npair_coeff 1 1 dmt 1e7 1.4e7 0.3 0.0 damping viscoelastic {TL}\npair_coeff 2 2 dmt 1e7 1.4e7 0.3 0.05 damping viscoelastic {TL}\n"
+     + GRAV + TAIL + TWO + "run 100\n")
+deck("c08_timestep_before_units_reset", "# timestep 1e-6 given before units si (which resets dt to its default 1e-8): the deck's dt\n"
+     + "timestep 1e-6\n" + head() + G1(HK) + GRAV + FLOOR + "fix integ all nve/sphere\n" + TWO4 + "run 100\n", g=1)
+deck("c09_run0_then_runs_in_loop", "# the settings change, run 0, then change back and run 100: the last run's settings are the first's\n"
+     + BASE(HK) + TWO + "run 100\npair_coeff * * hooke 9000 3000 " + K + "\nrun 0\npair_coeff * * " + HK + "\nrun 100\n", g=1)
+deck("c10_run_upto_zero_steps", "# run 200 upto after run 200 (0 steps: LAMMPS runs none) with changed settings, as the deck's last run\n"
+     + BASE(HK) + TWO + "run 200\npair_coeff * * hooke 9000 3000 " + K + "\nrun 200 upto\n", g=1)
+deck("c11_pour_diam_range_dens_range_hertzmat", "# fix pour diam range 2-6 mm and dens range 1500-7800 (hertz/material): the extreme eps over a continuum\n"
+     + head(box="0 0.04 0 0.04 0 0.2") + G1(HM) + GRAV + f"fix floor all wall/gran granular {HM} zplane 0 NULL\n" + TAIL
+     + "region top block 0 0.04 0 0.04 0.1 0.2 units box\nfix p all pour 30 1 4767 region top diam range 0.002 0.006 dens 1500 7800\nrun 1000\n")
+deck("c12_liggghts_insert_2d", "# LIGGGHTS 2d (dimension 2) with insert/pack of 3 mm discs: LIGGGHTS' masses in 2d\n"
+     + "atom_style granular\natom_modify map array\ndimension 2\nboundary f f p\nnewton off\ncommunicate single vel yes\nunits si\nregion reg block -0.05 0.05 -0.01 0.15 -0.002 0.002 units box\ncreate_box 3 reg\nneighbor 0.002 bin\nneigh_modify delay 0\n"
+     + MAT3 + LST + "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 yplane 0.0\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.0015\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 0.04 0.1 -0.002 0.002 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n"
+     + "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 -1.0 0.0\nfix integr all nve/sphere\nfix e2d all enforce2d\nrun 2000\n", liggghts=True)
+
+deck("c19_star_then_22_no_mix", "# pair_coeff * * hertz/material E 1e7, then pair_coeff 2 2 with E 8e7: 1 2 was set by * * and keeps E 1e7 (LAMMPS mixes only pairs never set)\n"
+     + head() + f"pair_style granular\npair_coeff * * {HM}\npair_coeff 2 2 hertz/material 8e7 0.35e7 0.45 damping viscoelastic {TL}\n" + GRAV + TAIL + TWO + "run 100\n")
+deck("c20_integrator_static_group_before_pour", "# fix nve/sphere on group t1 (type 1 at its making: one created sphere); fix pour then adds type-1 spheres that no fix integrates\n"
+     + head(box="0 0.04 0 0.04 0 0.2") + G1(HK) + GRAV + FLOOR + "timestep 1e-5\ncreate_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\ngroup t1 type 1\nfix integ t1 nve/sphere\n"
+     + "region top block 0 0.04 0 0.04 0.1 0.2 units box\nfix p all pour 10 1 4767 region top diam one 0.006 dens 2500 2500\nrun 1000\n", g=1)
+deck("L32_integrator_static_group_before_insert", "# LIGGGHTS: nve/sphere on group t1 made before insert/pack adds type-1 spheres (not integrated)\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\ngroup t1 type 1\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.003\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n"
+     + "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr t1 nve/sphere\nrun 2000\n", liggghts=True)
+
+POURB = head(box="0 0.04 0 0.04 0 0.2") + G1(HM) + GRAV + f"fix floor all wall/gran granular {HM} zplane 0 NULL\n" + TAIL + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nregion top block 0 0.04 0 0.04 0.1 0.2 units box\n"
+deck("c21_set_atom_all_after_pour_run", "# set atom * diameter 0.005 after a pour run (every atom, poured ones too; mass kept)\n"
+     + POURB + "fix p all pour 10 2 4767 region top diam one 0.003 dens 2500 2500\nrun 1000\nunfix p\nset atom * diameter 0.005\nrun 100\n")
+deck("c22_two_pour_stages_same_type", "# pour 3 mm spheres into type 2, run; unfix; pour 6 mm spheres into type 2 again, run: stage 2 holds both sizes\n"
+     + POURB + "fix p all pour 10 2 4767 region top diam one 0.003 dens 2500 2500\nrun 1000\nunfix p\nfix p2 all pour 10 2 5867 region top diam one 0.006 dens 2500 2500\nrun 1000\n")
+deck("c23_deposit_run_shorter_than_interval", "# fix deposit 5 atoms every 500 steps into type 2, but the only run is 100 steps: does LAMMPS insert any?\n"
+     + POURB + "fix dep all deposit 5 2 500 12345 region top vz -1 -1 units box\nrun 100\n")
+
+MOLS = {"small.mol": "small\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.003\n\nMasses\n\n1 0.0001\n",
+        "big.mol": "big\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 1\n\nDiameters\n\n1 0.006\n\nMasses\n\n1 0.0009\n"}
+deck("c24_deposit_two_templates_molfrac", "# fix deposit of a two-template molecule (3 mm 1e-4 kg, 6 mm 9e-4 kg) with molfrac 0.5 0.5, offset to type 2\n"
+     + POURB.replace("create_box 2", "create_box 2") + "molecule two small.mol big.mol\nfix dep all deposit 10 1 50 12345 region top mol two molfrac 0.5 0.5 vz -1 -1 units box\nrun 1000\n",
+     data=MOLS)
+deck("c25_region_cylinder_x_axis", "# wall/gran/region on a static cylinder along x (side in): its curvature is in the y-z plane\n"
+     + head(box="-0.05 0.05 -0.05 0.05 -0.05 0.05", bnd="f f f") + G1(HM) + "region drum cylinder x 0 0 0.03 -0.04 0.04 side in units box\n"
+     + "fix dw all wall/gran/region granular " + HM + " region drum\n" + GRAV + TAIL + "create_atoms 1 single 0 0 0\ncreate_atoms 2 single 0.01 0 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n")
+deck("c26_gran_hertz_history_omp_typed", "# pair_style gran/hertz/history/omp typed (the OpenMP variant) with its wall: same forces as gran/hertz/history\n"
+     + "package omp 1\n" + head() + "pair_style gran/hertz/history/omp 1e6 NULL 2000 NULL 0.5 0\npair_coeff * *\n" + GRAV
+     + "fix floor all wall/gran hertz/history 1e6 NULL 2000 NULL 0.5 0 zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
+deck("c27_suffix_omp", "# suffix omp before pair_style gran/hooke/history: LAMMPS uses the /omp variant if built with it\n"
+     + "package omp 1\nsuffix omp\n" + head() + "pair_style gran/hooke/history 3000 NULL 400 NULL 0.5 0\npair_coeff * *\n" + GRAV
+     + "fix floor all wall/gran hooke/history 3000 NULL 400 NULL 0.5 0 zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]

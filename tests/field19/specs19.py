@@ -123,6 +123,17 @@ S = {
         "ntypes": 1, "checks": [P(1, 1, 0.002, m2, 0.002, m2, speed_idx=[1])]},
     "R05_dirt_slot_hopper": {"lines": GL("1 1 hertz/material 5.000000e+07 0.5 0.3 tangential mindlin NULL 1.0 0.5 damping tsuji"),
         "ntypes": 1, "checks": [P(1, 1, 0.002, m2, 0.002, m2)]},
+    "c05_lammps_coeffrest_e_low": {"lines": GL(f"1 1 hertz/material 1e7 0.05 0.3 damping coeff_restitution {TL}", f"2 2 hooke 2000 0.05 damping coeff_restitution {TL}",
+                                                f"1 2 hertz/material 1e7 0.95 0.3 damping coeff_restitution {TL}"),
+        "checks": [P(1, 1, 0.002, m2, 0.002, m2, speed_idx=[1]), P(1, 2, 0.002, m2, 0.003, m3)]},
+    "c11_pour_diam_range_dens_range_hertzmat": {"lines": GL(f"* * {HM}"),
+        "checks": [P(1, 1, 0.003, m(0.003, 7800), 0.003, m(0.003, 7800), match="smallest"), P(1, 1, 0.001, m(0.001, 1500), 0.001, m(0.001, 1500), match="largest", speed_idx=[1])]},
+    "c07_dmt_cohesion_mixed_to_zero": {"lines": GL(f"1 1 dmt 1e7 1.4e7 0.3 0.0 damping viscoelastic {TL}", f"2 2 dmt 1e7 1.4e7 0.3 0.05 damping viscoelastic {TL}"),
+        "checks": [P(1, 2, 0.002, m2, 0.003, m3, speed_idx=[0, 1])]},
+    "c19_star_then_22_no_mix": {"lines": GL(f"* * {HM}", f"2 2 hertz/material 8e7 0.35e7 0.45 damping viscoelastic {TL}"),
+        "checks": [P(1, 2, 0.002, m2, 0.003, m3)]},
+    "c02_2d_density_disc": {"dimension": 2, "lines": GL(f"* * {HM}"),
+        "checks": [P(1, 2, 0.002, m2, 0.002, math.pi * 0.002 ** 2 * 2500, speed_idx=[1])]},
 }
 
 
