@@ -558,6 +558,31 @@ deck("c27_suffix_omp", "# suffix omp before pair_style gran/hooke/history: LAMMP
      + "package omp 1\nsuffix omp\n" + head() + "pair_style gran/hooke/history 3000 NULL 400 NULL 0.5 0\npair_coeff * *\n" + GRAV
      + "fix floor all wall/gran hooke/history 3000 NULL 400 NULL 0.5 0 zplane 0 NULL\n" + TAIL + TWO + "run 100\n")
 
+deck("c28_deposit_interval_longer_than_run", "# fix deposit of a 6 mm template (mol) every 1000 steps into type 2, run 500: does LAMMPS insert any?\n"
+     + POURB + "molecule big big.mol\nfix dep all deposit 5 1 1000 12345 region top mol big vz -1 -1 units box\nrun 500\n", data=MOLS)
+deck("L33_insert_start_after_run", "# LIGGGHTS insert/pack of 3 mm type-2 spheres with start 100000, the only run 2000 steps: LIGGGHTS inserts none\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 1 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.0015\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every 1000 start 100000 overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
+deck("L34_insert_rate_region_start_after_run", "# LIGGGHTS insert/rate/region of 3 mm type-2 spheres starting at step 5000, the only run 2000 steps\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 1 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.0015\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/rate/region seed 32452867 distributiontemplate pdd nparticles 10 particlerate 1000 insert_every 1000 start 5000 overlapcheck yes region ins\n" + RUN, liggghts=True)
+deck("c29_pour_then_run0_only", "# fix pour into type 2, and the deck's only run is run 0: no sphere is poured\n"
+     + POURB + "fix p all pour 10 2 4767 region top diam one 0.006 dens 2500 2500\nrun 0\n")
+
+deck("c30_pour_unfixed_before_run", "# fix pour into type 2 defined and unfixed before the first run: nothing is poured\n"
+     + POURB + "fix p all pour 10 2 4767 region top diam one 0.006 dens 2500 2500\nunfix p\nrun 500\n")
+deck("L35_insert_unfixed_before_run", "# LIGGGHTS insert/pack of type-2 spheres defined and unfixed before the first run: nothing is inserted\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 1 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.0015\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\nunfix ins\n" + RUN, liggghts=True)
+deck("L36_insert_start_in_second_run", "# LIGGGHTS insert/pack of type-2 spheres starting at step 3000: run 2000 (none yet), then run 2000 (inserted)\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 1 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.0015\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every 1000 start 3000 overlapcheck yes particles_in_region 10 region ins\n" + RUN
+     + "fix m5 all property/global gamman peratomtypepair 3 300 100 100 100 100 150 100 150 200\nrun 2000\n", liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
