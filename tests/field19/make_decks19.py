@@ -583,6 +583,14 @@ deck("L36_insert_start_in_second_run", "# LIGGGHTS insert/pack of type-2 spheres
      + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every 1000 start 3000 overlapcheck yes particles_in_region 10 region ins\n" + RUN
      + "fix m5 all property/global gamman peratomtypepair 3 300 100 100 100 100 150 100 150 200\nrun 2000\n", liggghts=True)
 
+deck("c31_pour_poly_zero_probability", "# fix pour diam poly 2 with probability 0 for 2 mm and 1 for 6 mm: LAMMPS pours 6 mm spheres only\n"
+     + POURB + "fix p all pour 10 2 4767 region top diam poly 2 0.002 0.0 0.006 1.0 dens 2500 2500\nrun 1000\n")
+deck("L37_distribution_weight_zero", "# LIGGGHTS particledistribution/discrete with weights 0 (2 mm) and 1 (3 mm) into type 2\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.001\nfix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1500 radius constant 0.0015\n"
+     + "fix pdd all particledistribution/discrete 32452843 2 pts1 0.0 pts2 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]

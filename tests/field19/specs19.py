@@ -134,6 +134,10 @@ S = {
         "checks": [P(1, 2, 0.002, m2, 0.003, m3)]},
     "c02_2d_density_disc": {"dimension": 2, "lines": GL(f"* * {HM}"),
         "checks": [P(1, 2, 0.002, m2, 0.002, math.pi * 0.002 ** 2 * 2500, speed_idx=[1])]},
+    "c31_pour_poly_zero_probability": {"lines": GL(f"* * {HM}"),
+        "checks": [P(2, 2, 0.003, m3, 0.003, m3, match="smallest", speed_idx=[0, 1])]},
+    "L37_distribution_weight_zero": {"engine": "liggghts", "ntypes": 3, "lines": LMAT + LST,
+        "checks": [P(1, 2, 0.002, m(0.002, 2500), 0.0015, m(0.0015, 1500), match="smallest")]},
 }
 
 
