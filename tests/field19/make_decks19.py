@@ -591,6 +591,18 @@ deck("L37_distribution_weight_zero", "# LIGGGHTS particledistribution/discrete w
      + "fix pdd all particledistribution/discrete 32452843 2 pts1 0.0 pts2 1.0\n"
      + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
 
+deck("c32_deposit_near_impossible", "# fix deposit of a 6 mm template with near 0.5 (no site in the region is that far from every atom): every attempt fails, nothing deposited\n"
+     + POURB + "molecule big big.mol\nfix dep all deposit 3 1 100 12345 region top mol big near 0.5 attempt 5 vz -1 -1 units box\nrun 500\n", data=MOLS)
+deck("L38_insert_region_too_small", "# LIGGGHTS insert/pack of 3 mm spheres into a region 2 mm tall (all_in yes): no sphere fits, none inserted\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 1 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.0015\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.05 0.052 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes all_in yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
+
+deck("c34_set_density_before_pour_runs", "# set type 2 density 7800 issued after fix pour but before the run: no type-2 atom exists then, so the poured spheres keep dens 2500\n"
+     + POURB + "fix p all pour 10 2 4767 region top diam one 0.006 dens 2500 2500\nset type 2 density 7800\nrun 1000\n")
+deck("c35_set_density_between_pour_runs", "# pour 6 mm (dens 2500) into type 2, run 500; set type 2 density 7800 (the poured so far); run 500 more with the pour still on (later ones 2500)\n"
+     + POURB + "fix p all pour 10 2 4767 region top diam one 0.006 dens 2500 2500\nrun 500\nset type 2 density 7800\nrun 500\n")
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
