@@ -603,6 +603,24 @@ deck("c34_set_density_before_pour_runs", "# set type 2 density 7800 issued after
 deck("c35_set_density_between_pour_runs", "# pour 6 mm (dens 2500) into type 2, run 500; set type 2 density 7800 (the poured so far); run 500 more with the pour still on (later ones 2500)\n"
      + POURB + "fix p all pour 10 2 4767 region top diam one 0.006 dens 2500 2500\nrun 500\nset type 2 density 7800\nrun 500\n")
 
+deck("c36_pour_mol_molfrac_zero", "# fix pour of a two-template molecule (3 mm, 6 mm) with molfrac 0.0 1.0 into type 2 (offset 1): only 6 mm spheres poured\n"
+     + POURB + "molecule two small.mol big.mol\nfix p all pour 10 1 4767 region top mol two molfrac 0.0 1.0\nrun 1000\n", data=MOLS)
+deck("c37_deposit_mol_molfrac_zero", "# fix deposit of the same two-template molecule with molfrac 0.0 1.0: only 6 mm spheres deposited\n"
+     + POURB + "molecule two small.mol big.mol\nfix dep all deposit 5 1 100 12345 region top mol two molfrac 0.0 1.0 vz -1 -1 units box\nrun 600\n", data=MOLS)
+deck("L39_unused_template", "# LIGGGHTS: a 1 mm type-2 template defined but not in the distribution (only the 1.5 mm one is)\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.001\nfix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1500 radius constant 0.0015\n"
+     + "fix pdd all particledistribution/discrete 32452843 1 pts2 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
+deck("L40_distribution_zero_weight_other_type", "# LIGGGHTS: a distribution of a type-2 template (weight 1) and a type-3 template (weight 0): no type-3 sphere is made\n"
+     + lhead(nt=4) + "fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3 0.3\n"
+     + "fix m7 all property/global coefficientFriction peratomtypepair 4 " + " ".join(["0.5"]*16) + "\n"
+     + "fix m3 all property/global coefficientRestitution peratomtypepair 4 0.6 0.5 0.7 0.5 0.5 0.4 0.45 0.45 0.7 0.45 0.8 0.3 0.5 0.45 0.3 0.9\n" + HERTZ
+     + "fix wprim all wall/gran model hertz tangential history primitive type 4 zplane 0.0\ncreate_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.0015\nfix pts2 all particletemplate/sphere 15485867 atom_type 3 density constant 1500 radius constant 0.001\n"
+     + "fix pdd all particledistribution/discrete 32452843 2 pts1 1.0 pts2 0.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
