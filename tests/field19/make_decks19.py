@@ -621,6 +621,14 @@ deck("L40_distribution_zero_weight_other_type", "# LIGGGHTS: a distribution of a
      + "fix pdd all particledistribution/discrete 32452843 2 pts1 1.0 pts2 0.0\n"
      + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
 
+deck("c38_create_atoms_multi_template", "# create_atoms with a molecule ID holding two templates (3 mm, 6 mm): which does LAMMPS create?\n"
+     + POURB + "molecule two small.mol big.mol\ncreate_atoms 1 single 0.01 0.01 0.03 mol two 3456\ncreate_atoms 1 single 0.03 0.03 0.03 mol two 3457\nrun 100\n", data=MOLS)
+deck("L41_distribution_not_inserted", "# LIGGGHTS: two distributions, pdd1 (1 mm type 2) used by no insertion, pdd2 (1.5 mm type 2) inserted\n"
+     + lhead() + MAT3 + LST + LW("hooke/stiffness tangential history") + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+     + "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.001\nfix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1500 radius constant 0.0015\n"
+     + "fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0\nfix pdd2 all particledistribution/discrete 49979687 1 pts2 1.0\n"
+     + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd2 insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
