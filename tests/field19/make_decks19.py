@@ -629,6 +629,11 @@ deck("L41_distribution_not_inserted", "# LIGGGHTS: two distributions, pdd1 (1 mm
      + "fix pdd1 all particledistribution/discrete 32452843 1 pts1 1.0\nfix pdd2 all particledistribution/discrete 49979687 1 pts2 1.0\n"
      + "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\nfix ins all insert/pack seed 32452867 distributiontemplate pdd2 insert_every once overlapcheck yes particles_in_region 10 region ins\n" + RUN, liggghts=True)
 
+deck("v17_coeff_from_elaplong_after_runs", "# kn from elaplong after two runs (300 and 700 steps): LAMMPS' value between runs, used in pair_coeff\n"
+     + BASE(HK) + TWO4 + "run 300\nrun 700\nvariable kn equal 2000+elaplong\npair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
+deck("v18_coeff_from_step_after_reset_and_upto", "# reset_timestep 5000 then run 6000 upto (1000 steps): kn = step - 3000 = 3000 after it\n"
+     + BASE(HK) + TWO4 + "reset_timestep 5000\nrun 6000 upto\nvariable kn equal step-3000\npair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
