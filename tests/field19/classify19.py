@@ -6,7 +6,7 @@ C = {
                             "v02 v05 v08 v14 L08 L10 L17 L20 L25 L26 L28 R04 R05 c02 c05 c07 c11 c19",
  "correct otherwise": "a01 a03 a05 a06 a07 b03 b07 b08 b12 d02 d06 d09 e04 e10 h04 h08 m06 m12 n04 n05 n06 n07 n08 v01 v03 v04 v07 v12 v13 v15 v16 "
                       "r01 r02 L02 L03 L04 L07 L09 L11 L12 L14 L16 L18 L19 L21 L22 L24 R01 R02 R03 "
-                      "c01 c03 c06 c09 c14 c17 c18 c22 c24 c25 c27 c28 c34 c35 c38 v18 L31 L35 R06 R07",
+                      "c01 c03 c06 c09 c14 c17 c18 c22 c24 c25 c27 c28 c34 c35 c38 c39 c40 v18 L31 L35 R06 R07",
  "effect named fairly": "e01 e02 e03 e05 e06 e07 e09 e11 e12 e15 f03 h01 h02 h05 h06 h07 h09 n01 n02 n03 b01 b04 b09 b11 b13 L05 L06 L13 L27 L29 c20 L32",
  "SILENTLY WRONG: a size range widened by a size the engine never makes, called present (C5)": "c31 L37 c36 c37 L39 L40 L41",
  "WRONG: eps for settings no step uses, nothing said (C1)": "b10 c10 c29",

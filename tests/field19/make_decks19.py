@@ -634,6 +634,13 @@ deck("v17_coeff_from_elaplong_after_runs", "# kn from elaplong after two runs (3
 deck("v18_coeff_from_step_after_reset_and_upto", "# reset_timestep 5000 then run 6000 upto (1000 steps): kn = step - 3000 = 3000 after it\n"
      + BASE(HK) + TWO4 + "reset_timestep 5000\nrun 6000 upto\nvariable kn equal step-3000\npair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
 
+deck("c39_region_cylinder_open_ends", "# wall/gran/region on a z cylinder (side in) with both flat ends open (open 1 open 2): only its curved side is a wall\n"
+     + head(box="-0.05 0.05 -0.05 0.05 -0.05 0.05", bnd="f f f") + G1(HM) + "region tube cylinder z 0 0 0.03 -0.04 0.04 side in open 1 open 2 units box\n"
+     + "fix tw all wall/gran/region granular " + HM + " region tube\n" + TAIL + "create_atoms 1 single 0 0 0\ncreate_atoms 2 single 0.01 0 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n")
+deck("c40_region_block_open_top", "# wall/gran/region on a block (side in) with its top face open (open 6): five flat faces\n"
+     + head(box="-0.05 0.05 -0.05 0.05 -0.05 0.05", bnd="f f f") + G1(HK) + "region bx block -0.03 0.03 -0.03 0.03 -0.03 0.03 side in open 6 units box\n"
+     + "fix bw all wall/gran/region granular " + HK + " region bx\n" + GRAV + TAIL + "create_atoms 1 single 0 0 0\ncreate_atoms 2 single 0.01 0 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
