@@ -286,6 +286,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError("deck", None, "the engine stopped (a quit, or the audit's time budget) before any "
                                           "run or the deck's end showed the particles it holds: not audited")
         _held(deck, atoms[-1], radius or {}, density or {})
+        _uninserted_templates(deck)
     for d in [deck] + [snap for _, snap, _ in deck.stages]:
         for t, r in (radius or {}).items():
             d.radius[int(t)] = r
@@ -582,6 +583,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             # the atoms inserted during this run are no members of the groups defined before it
             for inserted in deck.inserts:
                 _made_after(deck, inserted, f"{where} ({line}), where an inserting fix makes atoms", inserting=True)
+        _uninserted_templates(deck)
         _stage(deck, loc, line)
         _moved_in_run(deck, loc, line)
         if deck.inserting:
@@ -1080,6 +1082,20 @@ def _deleted(deck: Deck, made: dict, group: str, active: set) -> None:
     repour(deck, made, set(static))
 
 
+def _uninserted_templates(deck: Deck) -> None:
+    """A LIGGGHTS deck whose sphere templates no insertion draws from (none defined yet): each
+    constant-size template sizes its type, as the spheres it describes may be inserted later. Where
+    an insertion is defined, only the templates its distribution draws with a weight above 0 make
+    spheres (the insertion pours them), and a template it does not draw makes none (field round 19,
+    C5: L37, L39 audited sizes LIGGGHTS never made)."""
+    if deck.code != "LIGGGHTS" or deck.inserts or deck.held is None or deck.ran:
+        return
+    for template in deck.sphere_templates.values():
+        if template is not None:
+            t, size = template
+            pour_into(deck, t, {size})
+
+
 def _moved_in_run(deck: Deck, loc, line: str) -> None:
     """The atoms a fix moved in this run keep the velocity they end it with, which the runs skipped do
     not show: where a later run holds them with no fix, the contact's damping reads it, as it reads a
@@ -1344,8 +1360,10 @@ def _pour(deck: Deck, words: list, where: str, line: str, loc) -> None:
         elif tok == "diam" and k + 1 < len(tokens) and tokens[k + 1] == "range":
             diameters = {value(k + 2), value(k + 3)}
         elif tok == "diam" and k + 1 < len(tokens) and tokens[k + 1] == "poly":
+            # a diameter of probability 0 is never poured (field round 19, C5: c31 audited 2 mm
+            # spheres LAMMPS never made as a size present)
             n = int(value(k + 2))
-            diameters = {value(k + 3 + 2 * m) for m in range(n)}
+            diameters = {value(k + 3 + 2 * m) for m in range(n) if value(k + 4 + 2 * m) > 0}
         elif tok == "diam":
             diameters = {value(k + 1), value(k + 2)}          # older LAMMPS: diam lo hi
         elif tok == "dens":
@@ -1478,6 +1496,14 @@ def template_types(deck: Deck, words: list, where: str, line: str) -> dict:
     if isinstance(made, str):
         raise DeckError(where, line, made)
     offset = int(number(words[5], where, line))
+    # molfrac: each molecule's relative probability; one of 0 is never made (field round 19, C5:
+    # c36, c37 audited a 3 mm template LAMMPS never made)
+    fractions = []
+    if "molfrac" in tokens:
+        at = tokens.index("molfrac") + 1
+        fractions = [number(w, where, line) for w in tokens[at:at + len(made)]]
+    if len(fractions) == len(made):
+        made = [m for m, f in zip(made, fractions) if f > 0]
     types: dict = {}
     for kind, radius, density in made:
         types.setdefault(atom_type(str(offset + kind), where, line), set()).add((radius, density))

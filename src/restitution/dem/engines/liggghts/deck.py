@@ -15,8 +15,8 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 
 from __future__ import annotations
 
-from ...dialect.state import (FLAT_WALLS, Deck, DeckError, PairNotMapped, atom_type, exact_e, number, place,
-                              pour_into, spheres, wall_faces)
+from ...dialect.state import (FLAT_WALLS, Deck, DeckError, PairNotMapped, atom_type, exact_e, number, number_or_none,
+                              place, pour_into, spheres, wall_faces)
 from ....core.errors import ParameterError
 from .contact import (LIGGGHTS_E, LIGGGHTS_MODEL_TYPES, LIGGGHTS_MODELS, LIGGGHTS_MODULUS, LIGGGHTS_NU,
                       STIFFNESS_MODELS, STIFFNESS_UNITS, liggghts_accepts_e, liggghts_contact, liggghts_e,
@@ -168,21 +168,29 @@ def _sphere_template(deck: Deck, words: list, where: str, line: str, loc) -> Non
             t = atom_type(tokens[k + 1], where, line)
         elif tok in ("density", "radius") and k + 2 < len(tokens) and tokens[k + 1] == "constant" \
                 and t is not None:
-            size[tok] = (deck.density if tok == "density" else deck.radius)[t] = number(tokens[k + 2], where, line)
+            size[tok] = number(tokens[k + 2], where, line)
+            if deck.held is None:       # the hand reader: the template's size is its type's
+                (deck.density if tok == "density" else deck.radius)[t] = size[tok]
         elif tok in ("density", "radius") and k + 1 < len(tokens) and t is not None:
             # other distributions (gaussian, ...) give no single value: the type is unset, and says why
             (deck.density if tok == "density" else deck.radius).pop(t, None)
             deck.missing[t] = f"fix {words[1]} gives type {t} a {tok} from a {tokens[k + 1]} distribution"
+    # its spheres are made only by an insertion whose distribution draws it (_insertion): a template
+    # no insertion uses, or drawn with weight 0, makes none (field round 19, C5: L39, L40 audited
+    # sizes and types LIGGGHTS never made)
     deck.sphere_templates[words[1]] = (t, (size["radius"], size["density"])) if len(size) == 2 else None
-    if len(size) == 2 and deck.held is not None:
-        # its spheres may be inserted after the one step the audit runs: with the type's other sizes
-        pour_into(deck, t, {(size["radius"], size["density"])})
 
 
 def _distribution(deck: Deck, words: list, where: str, line: str, loc) -> None:
     """fix ID group particledistribution/discrete[/numberbased|/massbased] seed N template1 weight1 ...:
-    the templates it draws from."""
-    deck.distributions[words[1]] = words[6::2]
+    the templates it draws from, those of weight 0 left out (LIGGGHTS makes none of them: field round
+    19, C5, L37)."""
+    drawn = []
+    for tid, weight in zip(words[6::2], words[7::2]):
+        value = number_or_none(weight)
+        if value is None or value > 0:
+            drawn.append(tid)
+    deck.distributions[words[1]] = drawn
 
 
 def _insertion(deck: Deck, words: list, where: str, line: str, loc) -> None:
@@ -195,7 +203,10 @@ def _insertion(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if deck.held is None or deck.ran or None in made:
         return
     for t in {t for t, _ in made}:
-        deck.pours[(words[1], t)] = (t, {size for u, size in made if u == t})
+        sizes = {size for u, size in made if u == t}
+        deck.pours[(words[1], t)] = (t, sizes)
+        # its spheres may be inserted after the one step the audit runs: with the type's other sizes
+        pour_into(deck, t, sizes)
 
 
 def _mesh(deck: Deck, words: list, where: str, line: str, loc) -> None:
