@@ -614,6 +614,9 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         _group(deck, words)
     elif cmd == "units" and len(words) >= 2:
         deck.units = words[1]
+        # both engines set the units' default time step here, whatever a timestep before said (field
+        # round 19, C3: c13, L30 gave steps per contact at a dt the engines no longer used)
+        deck.dt, deck.dt_reset = None, ()
     elif cmd == "dimension" and len(words) >= 2 and words[1] in ("2", "3"):
         deck.dimension = int(words[1])       # fix gravity's direction depends on it
     elif cmd == "unfix" and len(words) >= 2:
