@@ -186,7 +186,7 @@ def test_a_deck_whose_runs_integrate_no_atom_is_refused_in_one_line(tmp_path):
 
 
 def test_a_run_before_the_integrator_is_named_and_the_later_run_audited(tmp_path):
-    status, res, err = audit(tmp_path, TWO + "run 0\nfix 1 all nve/sphere\nrun 10\n")
+    status, res, err = audit(tmp_path, TWO + "run 10\nfix 1 all nve/sphere\nrun 10\n")
     assert status == 0, err
     first, last = res["stages"]
     assert first["pairs"] == [] and "types 1 2: neither sphere is moved" in err

@@ -20,8 +20,8 @@ from .meeting import MOVERS, neigh_modify, rigid, special_bonds
 from .scratch import GUARDED
 from .stream import SEEDED
 from .runtime import constant_in_time
-from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, place, pour_into, type_pairs, types,
-                             unlabeled)
+from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, number_or_none, place, pour_into,
+                             type_pairs, types, unlabeled)
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
 from ..engines.lammps.deck import DEFAULT_DT
@@ -579,6 +579,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             _made_after(deck, None, f"{where} ({line})")
     elif cmd == "run":
         _run_every(words, where, line)
+        if _no_step(deck, words):
+            return                        # a run of 0 steps: no contact happens in it (field round 19, C1)
         if deck.inserting:
             # the atoms inserted during this run are no members of the groups defined before it
             for inserted in deck.inserts:
@@ -589,6 +591,11 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         if deck.inserting:
             deck.atoms = True
             _inserted(deck)
+    elif cmd == "reset_timestep" and len(words) >= 2:
+        step = number_or_none(words[1])
+        deck.step = int(step) if step is not None else None
+    elif cmd == "minimize":
+        deck.step = None
     elif cmd == "clear":
         # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
         fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages, environment=deck.environment,
@@ -1083,6 +1090,19 @@ def _deleted(deck: Deck, made: dict, group: str, active: set) -> None:
             deck.deposits.pop(t, None)
             deck.deposited_templates.pop(t, None)
     repour(deck, made, set(static))
+
+
+def _no_step(deck: Deck, words: list) -> bool:
+    """Whether ``run N [upto] ...`` makes no step (``run 0``; ``run N upto`` at step N already), the
+    step the runs reach kept in ``deck.step``. Field round 19, C1: b10's run 0 after new coefficients
+    was reported as the deck's last stage, where LAMMPS makes no step under them."""
+    n = number_or_none(words[1]) if len(words) > 1 else None
+    if n is None or deck.step is None:
+        deck.step = None
+        return False
+    made = n - deck.step if "upto" in words[2:] else n
+    deck.step = deck.step + made
+    return made <= 0
 
 
 def _uninserted_templates(deck: Deck) -> None:

@@ -145,6 +145,9 @@ class Deck:
     # (loc, text, pair style, {pairs}) of a restart file the deck did not write: the pairs whose
     # coefficients only that file holds (LAMMPS keeps them where the deck gives the same style again)
     restart_pairs: tuple = ()
+    # the step the runs so far reach (run N, run N upto, reset_timestep), None where unknown (a
+    # minimize): a run that makes no step sees no contact
+    step: int | None = 0
     atom_style_loc: tuple = ()                    # (file, line number) of atom_style
     # types known to hold atoms (create_atoms, read_data, a pour or deposit that has run), and
     # whether atoms of types the reader does not know exist: ``set group all`` sizes those only
