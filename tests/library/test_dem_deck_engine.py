@@ -403,7 +403,8 @@ def test_echoed_commands_are_the_lines_they_came_from_never_another_file_or_the_
                                              "run 0 post no\nrun 10\n", files=files)
     assert status == 0 and "other.in" not in err and "not understood" not in err, err
     res = json.loads(out)
-    assert [(r["line"], r["text"]) for r in res["stages"][0]["runs"]] == [(15, "run 0 post no"), (16, "run 10")]
+    # (the deck's own run 0 makes no step, so it is no run of a stage: field round 19, C1)
+    assert [(r["line"], r["text"]) for r in res["stages"][0]["runs"]] == [(16, "run 10")]
     row = {tuple(p["types"]): p for p in res["pairs"]}[(1, 1)]
     assert row["dt"] == 2e-6 and row["eps"][2] == pytest.approx(eps_hooke(2000, 1.0), rel=1e-10)
 
