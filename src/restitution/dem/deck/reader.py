@@ -706,6 +706,10 @@ def _hybrid(deck: Deck, words: list, where: str, line: str) -> list:
 
 def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
     deck.style_line = (loc, line)
+    # an OpenMP or OPT variant typed by its name computes the plain style's forces, as the plain name
+    # under `suffix omp` does (field round 19, c26: gran/hertz/history/omp was refused)
+    if len(words) > 1 and words[1].endswith(("/omp", "/opt")) and words[1].rsplit("/", 1)[0] in PAIR_STYLES:
+        words = [words[0], words[1].rsplit("/", 1)[0], *words[2:]]
     substyles = [words]
     # a hybrid style issued again, or replaced, or replacing another: LAMMPS drops every coefficient
     # (22 Jul 2025 measured: hybrid then the same hybrid, hybrid then granular, granular then hybrid
