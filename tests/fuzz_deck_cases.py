@@ -256,7 +256,7 @@ def script_deck_cases(draw):
     stages = draw(st.integers(1, 3))
     for s in range(stages):
         if s:
-            body.append("run 0")
+            body.append("run 1")
             restyle = draw(st.sampled_from(["none", "other", "same"]))
             if restyle == "other":       # discards every coefficient: all are written again below
                 body += ["pair_style gran/hooke 1000.0 NULL 10.0 NULL 0.5 0", "pair_coeff * *", "pair_style granular"]
@@ -267,7 +267,7 @@ def script_deck_cases(draw):
         if n > 1 and draw(st.booleans()):
             i, j = sorted(draw(st.sampled_from([(a, b) for a in types for b in types if a < b])))
             write(i, j, i)
-    body.append("run 0")
+    body.append("run 1")
     return "\n".join(head + body) + "\n", [g, 10.0 * g], \
         {t: {k: float(f"{v:.8g}") for k, v in m.items()} for t, m in types.items()}, len(head)
 

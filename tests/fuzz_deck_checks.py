@@ -54,7 +54,7 @@ def check_script_deck_case(text: str, speeds: list, types: dict, nhead: int) -> 
         for k, stage in enumerate(res["stages"]):
             first = stage["runs"][0]["line"]             # the deck's line number of the stage's first run
             # the engine needs no run: the earlier runs become no-ops, the stage ends before its own
-            own = ["print run" if ln == "run 0" else ln for ln in lines[nhead:first - 1]]
+            own = ["print run" if ln == "run 1" else ln for ln in lines[nhead:first - 1]]
             path = Path(tmp) / f"in.stage{k}"
             path.write_text("\n".join(own) + "\n")
             engine = _lammps_runner(f"include {path}", len(types))
