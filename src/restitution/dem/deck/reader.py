@@ -1357,6 +1357,10 @@ def _unfix(deck: Deck, fix_id: str) -> None:
     deck.movers.pop(fix_id, None)
     deck.shaken.pop(fix_id, None)
     deck.pours = {key: made for key, made in deck.pours.items() if key[0] != fix_id}
+    # an inserting fix gone inserts no more (field round 19, c30: a pour unfixed before any run was
+    # said to insert its type "as the runs go")
+    for fixes in deck.inserters.values():
+        fixes.pop(fix_id, None)
     # a fix dt/reset unfixed after a run leaves the time step where it last set it, not at the
     # timestep command's: deck.dt_reset stays until a timestep command (field round 14, r13)
     if deck.dt_reset and deck.dt_reset[2] == fix_id and _runs_recorded(deck) == deck.dt_reset_runs:
