@@ -70,13 +70,13 @@ def git_tree(files: dict[str, bytes], executable: frozenset) -> str:
     """The git tree hash of ``files`` (names under restitution-sources/), found as a reader finds it from
     the unpacked archive (``git init``, ``git add -A -f``, ``git write-tree``), so that the hash the README
     states is the one their check prints; it equals ``git rev-parse COMMIT^{tree}`` of a clean build."""
-    with tempfile.TemporaryDirectory() as scratch:
-        root = Path(scratch) / "restitution-sources"
+    with tempfile.TemporaryDirectory() as tmp_dir:        # a scratch copy, no output of the rule
+        root = Path(tmp_dir) / "restitution-sources"
         for name, data in files.items():
-            path = Path(scratch) / name
-            path.parent.mkdir(parents=True, exist_ok=True)
-            path.write_bytes(data)
-            path.chmod(0o755 if name in executable else 0o644)
+            tmp_file = Path(tmp_dir) / name
+            tmp_file.parent.mkdir(parents=True, exist_ok=True)
+            tmp_file.write_bytes(data)
+            tmp_file.chmod(0o755 if name in executable else 0o644)
         # no user or system git settings (autocrlf, filters) may change what is hashed
         env = {**os.environ, "GIT_CONFIG_GLOBAL": os.devnull, "GIT_CONFIG_NOSYSTEM": "1"}
         for command in (["init", "-q"], ["add", "-A", "-f"]):
