@@ -1088,8 +1088,6 @@ def _deleted(deck: Deck, made: dict, group: str, active: set) -> None:
         made.pop(t, None)
         if deck.held is not None:
             deck.held.pop(t, None)        # the engine deletes them too: its next run holds none
-        # a fix no longer defined inserts no more of them
-        deck.inserters[t] = {fix: style for fix, style in deck.inserters.get(t, {}).items() if fix in active}
         if deck.deposits.get(t) not in active:
             deck.deposits.pop(t, None)
             deck.deposited_templates.pop(t, None)
