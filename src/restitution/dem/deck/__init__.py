@@ -1638,6 +1638,9 @@ def _empty_notes(deck: Deck) -> list:
     # round 18, b24)
     later = {t: _inserters([d for d in stages if not _empty(d, t)], t) if _empty_first(stages, t) else ""
              for t in empty}
+    # a LIGGGHTS insertion whose start step no run before reaches (field round 19, C4)
+    waiting = {t: f"the runs before step {start}, where fix {fix} ({style}) starts inserting its spheres"
+               for d in stages for fix, (start, style, made) in d.waiting.items() for t in made}
     sampled = {t: (n, len(d.sizes[t])) for d in stages for t, n in d.sampled.items() if t in d.sizes}
     deposited = {t: fix for d in stages for t, fix in d.deposits.items() if fix is not None}
     template = {t: mol for d in stages for t, mol in d.deposited_templates.items()}
@@ -1650,9 +1653,10 @@ def _empty_notes(deck: Deck) -> list:
             for t, fix in sorted(deposited.items())] + [
             f"{_types_named(ts)} {'has' if len(ts) == 1 else 'have'} no particle"
             f"{' at some runs' if len(stages) > 1 else ''} ("
-            + (f"those before {why} makes its atoms" if why else "walls only, unused, or deleted")
-            + f"): {'its' if len(ts) == 1 else 'their'} sphere pairs cannot happen there and are not audited"
-            for why, ts in _by_reason({t: later[t] for t in empty if not inserted[t]})] + \
+            + why + f"): {'its' if len(ts) == 1 else 'their'} sphere pairs cannot happen there and are not audited"
+            for why, ts in _by_reason({t: waiting.get(t) or (f"those before {later[t]} makes its atoms" if later[t]
+                                                             else "walls only, unused, or deleted")
+                                       for t in empty if not inserted[t]})] + \
         [f"type {t} is inserted by {inserted[t]} as the runs go, at sizes the audit does not read: its pairs "
          f"{'at the runs where it has no atom yet ' if len(stages) > 1 else ''}are not audited"
          for t in empty if inserted[t]] + \

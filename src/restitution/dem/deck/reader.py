@@ -180,6 +180,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     moved_since = False            # a run has gone: the atoms are where it left them, never the pass
     active: set = set()            # the fixes defined now (a deposit still in force makes more atoms)
     placed: set = set()            # groups picked by where the atoms were, after a run
+    stepless = None                # the first run that made no step (run 0)
     for cmd in commands:
         try:
             split = words(cmd.text)
@@ -222,12 +223,16 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             continue
         if split[0] == "run":
             deposited_ran |= {t for t, fix in deck.deposits.items() if fix is not None}
+            starting = started(deck, split)
+            if starting:
+                block, same = None, False        # sizes come in: this run is no repeat of the last
+            stepless = stepless or (cmd if deck.step is not None and _run_end(deck, split) == deck.step else None)
             # a fix adapt resizes the atoms poured before at the run's set-up; those poured in
             # the run where it acts every N steps, after it (LAMMPS measured)
             resized = adapt_poured(deck, made, cmd.loc, cmd.text, during=False)
             for t, sizes in deck.pours.values():
                 made.setdefault(t, set()).update(sizes)
-            repour(deck, made, resized | adapt_poured(deck, made, cmd.loc, cmd.text, during=True))
+            repour(deck, made, resized | starting | adapt_poured(deck, made, cmd.loc, cmd.text, during=True))
         elif split[0] == "clear":
             deposited_ran, made = set(), {}
         plain_run = split[0] == "run" and "every" not in split
@@ -286,7 +291,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError("deck", None, "the engine stopped (a quit, or the audit's time budget) before any "
                                           "run or the deck's end showed the particles it holds: not audited")
         _held(deck, atoms[-1], radius or {}, density or {})
+        repour(deck, {}, started(deck, None))
         _uninserted_templates(deck)
+        if stepless is not None:
+            # field round 19, c29: a deck whose only run is run 0 was audited as set up, unsaid
+            deck.unknown.append((*stepless.loc, stepless.text, "makes no step, as every run of the deck: no contact "
+                                 "happens in them; audited as the deck sets up, with the spheres its inserting "
+                                 "fixes would make"))
     for d in [deck] + [snap for _, snap, _ in deck.stages]:
         for t, r in (radius or {}).items():
             d.radius[int(t)] = r
@@ -1094,17 +1105,54 @@ def _deleted(deck: Deck, made: dict, group: str, active: set) -> None:
     repour(deck, made, set(static))
 
 
+def _run_end(deck: Deck, words: list) -> int | None:
+    """The step ``run N [upto] ...`` ends at, None where unknown. The engines read N as C's atoi
+    does (LIGGGHTS measured: run 0.5 makes no step, run 2.9 two; LAMMPS stops on such an N)."""
+    n = re.match(r"[-+]?\d+", words[1]) if len(words) > 1 else None
+    if n is None or deck.step is None:
+        return None
+    return max(int(n.group(0)), deck.step) if "upto" in words[2:] else deck.step + int(n.group(0))
+
+
 def _no_step(deck: Deck, words: list) -> bool:
     """Whether ``run N [upto] ...`` makes no step (``run 0``; ``run N upto`` at step N already), the
     step the runs reach kept in ``deck.step``. Field round 19, C1: b10's run 0 after new coefficients
     was reported as the deck's last stage, where LAMMPS makes no step under them."""
-    n = number_or_none(words[1]) if len(words) > 1 else None
-    if n is None or deck.step is None:
-        deck.step = None
-        return False
-    made = n - deck.step if "upto" in words[2:] else n
-    deck.step = deck.step + made
-    return made <= 0
+    before, deck.step = deck.step, _run_end(deck, words)
+    return deck.step is not None and deck.step <= before
+
+
+def started(deck: Deck, words: list | None) -> set:
+    """The types of the LIGGGHTS insertions waiting for their start step (:attr:`Deck.waiting`) that
+    the run ``words`` reaches (all where its end is unknown, or ``words`` is None): from here on they
+    are pours (``deck.pours``), which the caller adds to the sizes made.
+
+    Parameters
+    ----------
+    deck : Deck
+        Changed in place.
+    words : list of str or None
+        The run command; None: the deck's end, where a deck without runs is audited as set up.
+
+    Returns
+    -------
+    set of int
+
+    Examples
+    --------
+    >>> deck = Deck(step=0, waiting={"ins": (3000, "insert/pack", {2: {(0.0015, 1500.0)}})})
+    >>> started(deck, ["run", "2000"]), started(deck, ["run", "4000"]), deck.pours
+    (set(), {2}, {('ins', 2): (2, {(0.0015, 1500.0)})})
+    """
+    end = None if words is None else _run_end(deck, words)
+    types = set()
+    for fix, (start, _, made) in list(deck.waiting.items()):
+        if end is None or start <= end:
+            del deck.waiting[fix]
+            for t, sizes in made.items():
+                deck.pours[(fix, t)] = (t, sizes)
+                types.add(t)
+    return types
 
 
 def _uninserted_templates(deck: Deck) -> None:
@@ -1359,6 +1407,7 @@ def _unfix(deck: Deck, fix_id: str) -> None:
     # said to insert its type "as the runs go")
     for fixes in deck.inserters.values():
         fixes.pop(fix_id, None)
+    deck.waiting.pop(fix_id, None)
     # a fix dt/reset unfixed after a run leaves the time step where it last set it, not at the
     # timestep command's: deck.dt_reset stays until a timestep command (field round 14, r13)
     if deck.dt_reset and deck.dt_reset[2] == fix_id and _runs_recorded(deck) == deck.dt_reset_runs:

@@ -238,6 +238,10 @@ class Deck:
     # style (a fix adapt's size is known where its variable is a constant)
     variables: dict = field(default_factory=dict)
     distributions: dict = field(default_factory=dict)
+    # LIGGGHTS insertion fix ID -> (its start step, its style, {type: {(radius, density)}}) where its
+    # ``start`` lies beyond the next step: it inserts nothing in the runs that end before that step
+    # (field round 19, C4), and becomes a pour at the first run that reaches it
+    waiting: dict = field(default_factory=dict)
     # environment variable -> the value a getenv-style variable of the deck read (the engine's pass
     # runs in the user's environment): the answer holds for these values
     environment: dict = field(default_factory=dict)

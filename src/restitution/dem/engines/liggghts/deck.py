@@ -15,6 +15,8 @@ property/global styles (atomtype, vector; atomtypepair, matrix) are read.
 
 from __future__ import annotations
 
+import re
+
 from ...dialect.state import (FLAT_WALLS, Deck, DeckError, PairNotMapped, atom_type, exact_e, number, number_or_none,
                               place, pour_into, spheres, wall_faces)
 from ....core.errors import ParameterError
@@ -200,10 +202,25 @@ def _insertion(deck: Deck, words: list, where: str, line: str, loc) -> None:
     Nothing where a template has no one constant size (its type's entry in ``missing`` says so)."""
     named = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "distributiontemplate"]
     made = [deck.sphere_templates.get(tid) for tid in deck.distributions.get(named[0], [None])] if named else [None]
-    if deck.held is None or deck.ran or None in made:
+    if deck.held is None or deck.ran:
         return
-    for t in {t for t, _ in made}:
-        sizes = {size for u, size in made if u == t}
+    # LIGGGHTS reads the start step as C's atoi does, and stops where it is not after the step the
+    # runs reach (measured: start 2000 after run 2000 stops, 2001 runs); the audit's pass makes no
+    # step, so its engine never stops there
+    start = [int(m.group(0)) for k in range(4, len(words) - 1) if words[k] == "start"
+             and (m := re.match(r"[-+]?\d+", words[k + 1]))]
+    if start and deck.step is not None and start[0] <= deck.step:
+        raise DeckError(where, line, f"start {start[0]} is not after step {deck.step}, which the deck's runs reach "
+                                     "here: LIGGGHTS stops on it ('start' step can not be before current step)")
+    if None in made:
+        return
+    sizes = {t: {size for u, size in made if u == t} for t, _ in made}
+    if start and (deck.step is None or start[0] > deck.step + 1):
+        # nothing is inserted before the start step (field round 19, C4: L33's spheres were audited
+        # where LIGGGHTS, its start after the only run, made none)
+        deck.waiting[words[1]] = (start[0], words[3], sizes)
+        return
+    for t, sizes in sizes.items():
         deck.pours[(words[1], t)] = (t, sizes)
         # its spheres may be inserted after the one step the audit runs: with the type's other sizes
         pour_into(deck, t, sizes)
