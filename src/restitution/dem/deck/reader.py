@@ -748,6 +748,15 @@ def _pair_style(deck: Deck, words: list, where: str, line: str, loc) -> None:
         for sub in substyles:
             PAIR_STYLES[sub[1]].pair_style(deck, sub, where, line)
         return
+    if style == "none":
+        # no force between any two atoms (a settling stage: field round 19, a10 was refused whole):
+        # its runs are no stage, as runs before any pair style are not
+        deck.unmapped, deck.code = (), ""
+        note = (*loc, line, "no force between spheres: the runs under it are no stage of the audit, and a wall met "
+                            "only in them is not audited")
+        if note not in deck.unknown:
+            deck.unknown.append(note)
+        return
     if style not in PAIR_STYLES:
         deck.unmapped = (where, line, f"pair_style {style} is not mapped (the reader maps "
                                       f"{', and '.join(d.MAPPED for d in DIALECTS.values())})")
