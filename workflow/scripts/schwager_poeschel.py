@@ -63,6 +63,11 @@ print("remainder / mu^(15/2):", dict(zip(p.end_omegas, end_scaled)), "mpmath:", 
 END_RATIO_OMEGAS = (100.0, 1000.0)
 end_ratio = [(eps_force(w) - eps_force(w, "overlap")) / (limit.E * float(limit.delta(w)) ** limit.end_power)
              for w in END_RATIO_OMEGAS]
+# ... over Eq. (end-term)'s factor eps_o^(q-1) = eps_o^(3/2): off 1 by O(mu^q eps_o^(q-2)), printed beside it
+end_factor_dev = [r / eps_force(w, "overlap") ** (limit.end_power - 1) - 1 for r, w in zip(end_ratio, END_RATIO_OMEGAS)]
+end_factor_size = [float(limit.delta(w)) ** limit.end_power * eps_force(w, "overlap") ** (limit.end_power - 2)
+                   for w in END_RATIO_OMEGAS]
+assert all(abs(d) < z for d, z in zip(end_factor_dev, end_factor_size)), (end_factor_dev, end_factor_size)
 
 # the integrator's accuracy, measured once against the mpmath reference
 check_omega = p.check_omega
@@ -245,6 +250,8 @@ macros = {
     "SPEndScaledPoints": str(len(end_scaled)),
     "SPEndRatioOmegaA": sci(END_RATIO_OMEGAS[0], 2), "SPEndRatioA": fixed(end_ratio[0], 3),
     "SPEndRatioOmegaB": sci(END_RATIO_OMEGAS[1], 2), "SPEndRatioB": fixed(end_ratio[1], 3),
+    "SPEndFactorDevA": sci(abs(end_factor_dev[0]), 1), "SPEndFactorSizeA": sci(end_factor_size[0], 1),
+    "SPEndFactorDevB": sci(abs(end_factor_dev[1]), 1), "SPEndFactorSizeB": sci(end_factor_size[1], 1),
     "SPEndScaledSecondDev": sci_up(end_scaled_dev, 1),
     "SPFitHSixSpread": sci(fit_acc[6], 1),
     "SPFitHSevenSpread": sci(fit_acc[7], 1),
