@@ -697,12 +697,99 @@ L("L69_liggghts_newton_on", "# LIGGGHTS newton on (engine decides), hertz\n"
   + lhead().replace("newton off", "newton on") + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN)
 
 
+# ================================================================ seventh batch: commands run between the parts of run ... every
+deck("e07_run_every_refix_floor_stiffer", "# run 100 every 100 \"unfix floor\" \"fix floor ... hooke 9000\", then run 100: the last run's floor has kn 9000\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"unfix floor\" \"fix floor all wall/gran granular " + hk(9000) + " zplane 0 NULL\"\nrun 100\n", g=1)
+deck("e08_run_every_include_coeff", "# run 100 every 100 \"include in.change\" (in.change: pair_coeff * * hooke 9000), then run 100 at kn 9000\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"include in.change\"\nrun 100\n", g=1, data={"in.change": "pair_coeff * * " + hk(9000) + "\n"})
+deck("e09_run_every_add_viscous", "# run 100 every 100 \"fix visc all viscous 0.05\", then run 100 with that drag\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"fix visc all viscous 0.05\"\nrun 100\n", g=1)
+deck("e10_run_every_exclude", "# run 100 every 100 \"neigh_modify exclude type 1 2\", then run 100: 1 2 never collide there\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"neigh_modify exclude type 1 2\"\nrun 100\n", g=1)
+deck("e11_run_every_pair_style", "# run 100 every 100 \"pair_style gran/hooke 9000 NULL 300 NULL 0.5 0\" \"pair_coeff * *\", then run 100 with gran/hooke\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"pair_style gran/hooke 9000 NULL 300 NULL 0.5 0\" \"pair_coeff * *\"\nrun 100\n", g=1)
+deck("e12_run_every_timestep_then_run", "# run 100 every 100 \"timestep 2e-6\", then run 1000: the last run at dt 2e-6\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"timestep 2e-6\"\nrun 1000\n", g=1)
+deck("e13_run_every_unfix_integ", "# run 100 every 100 \"unfix integ\" \"fix integ all nve/limit 1e-7\": the last run integrated by nve/limit (speed cap 0.01)\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"unfix integ\" \"fix integ all nve/limit 1e-7\"\nrun 100\n", g=1)
+deck("e14_run_every_fix_adapt", "# run 100 every 100 \"fix ad all adapt 1 atom diameter v_dd reset no\" (dd 0.006), then run 100: spheres 6 mm\n"
+     + BASE(HK) + TWO4 + "variable dd equal 0.006\nrun 100 every 100 \"fix ad all adapt 1 atom diameter v_dd reset no\"\nrun 100\n", g=1)
+L("L70_run_every_refix_e", "# LIGGGHTS run 500 every 500 \"fix m3 all property/global coefficientRestitution ... 0.3\", then run 500 at e 0.3\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "run 500 every 500 \"fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\"\nrun 500\n")
+L("L71_run_every_unfix_wall", "# LIGGGHTS run 500 every 500 \"unfix wprim\", then run 500 without the wall\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "run 500 every 500 \"unfix wprim\"\nrun 500\n")
+L("L72_run_every_timestep", "# LIGGGHTS run 500 every 500 \"timestep 1e-4\", then run 500 at dt 1e-4\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "run 500 every 500 \"timestep 1e-4\"\nrun 500\n")
+
+
+# ================================================================ eighth batch: settings changed after the last run (no step uses them)
+deck("z01_trailing_pair_coeff", "# run 100 at kn 2000, then pair_coeff * * kn 9000 after the last run: no step uses kn 9000\n"
+     + BASE(HK) + TWO4 + "run 100\npair_coeff * * " + hk(9000) + "\n", g=1)
+deck("z02_trailing_timestep", "# run 100 at dt 1e-5, then timestep 5e-4 after the last run: no step at 5e-4\n"
+     + BASE(HK) + TWO4 + "run 100\ntimestep 5e-4\n", g=1)
+deck("z03_trailing_set_density", "# run 100, then set type 2 density 7800 after the last run: no step with steel spheres\n"
+     + BASE(HK) + TWO4 + "run 100\nset type 2 density 7800\n", g=1)
+deck("z04_trailing_unfix_wall_and_new_wall", "# run 100 with floor kn 2000, then unfix floor and a floor kn 9000 after the last run\n"
+     + BASE(HK) + TWO4 + "run 100\nunfix floor\nfix floor all wall/gran granular " + hk(9000) + " zplane 0 NULL\n", g=1)
+deck("z05_trailing_pair_style_change", "# run 100 granular hooke, then pair_style gran/hooke/history 9000 ... after the last run\n"
+     + BASE(HK) + TWO4 + "run 100\npair_style gran/hooke/history 9000 NULL 400 NULL 0.5 0\npair_coeff * *\n", g=1)
+deck("z06_trailing_create_atoms_type3", "# run 100 with types 1 2, then create_atoms type 3 (7800) and pair_coeff 3 3 after the last run\n"
+     + head(3) + G1(HK) + GRAV + FLOOR + TAIL + TWO4 + "run 100\ncreate_atoms 3 single 0.03 0.03 0.02\nset type 3 diameter 0.005 density 7800\npair_coeff 3 3 " + hk(9000) + "\n", g=1)
+deck("z07_trailing_run0_after_change", "# run 100 at kn 2000, pair_coeff kn 9000 then run 0 (no step) at the end\n"
+     + BASE(HK) + TWO4 + "run 100\npair_coeff * * " + hk(9000) + "\nrun 0\n", g=1)
+deck("z08_trailing_minimize_after_change", "# run 100 at kn 2000, pair_coeff kn 9000 then minimize (steps, but no dynamics)\n"
+     + BASE(HK) + TWO4 + "run 100\npair_coeff * * " + hk(9000) + "\nminimize 1e-8 1e-8 10 100\n", g=1)
+L("L73_trailing_property_change", "# LIGGGHTS run 1000 at e table E3, then coefficientRestitution 0.3 for all after the last run: no step uses it\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\n")
+L("L74_trailing_timestep", "# LIGGGHTS run 1000 at 1e-5, then timestep 1e-4 after the last run\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "timestep 1e-4\n")
+L("L75_trailing_set_density_stiffness", "# LIGGGHTS hooke/stiffness run, then set type 2 density 7800 after the last run\n"
+  + lhead() + MAT3 + LST + LWST + ATOMS + RUN + "set type 2 density 7800\n")
+L("L76_trailing_run0_after_change", "# LIGGGHTS run 1000, then e 0.3 and a run 0 (no step)\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\nrun 0\n")
+
+
+# ================================================================ ninth batch: commands of run ... every the audit may not refuse
+deck("e15_run_every_timestep_coarser", "# run 100 every 100 \"timestep 2e-4\", then run 100: the last run at dt 2e-4 (2-5 steps per contact)\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"timestep 2e-4\"\nrun 100\n", g=1)
+deck("e16_run_every_unfix_floor_then_floor2", "# run 100 every 100 \"unfix floor\", then fix floor2 (kn 9000, same plane) and run 100: the last run has floor2 only\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"unfix floor\"\nfix floor2 all wall/gran granular " + hk(9000) + " zplane 0 NULL\nrun 100\n", g=1)
+deck("e18_run_every_delete_type2", "# run 100 every 100 \"delete_atoms group t2\" (group of type 2), then run 100: no type 2 sphere left\n"
+     + BASE(HK) + TWO4 + "group t2 type 2\nrun 100 every 100 \"delete_atoms group t2\"\nrun 100\n", g=1)
+deck("e19_run_every_if_pair_coeff", "# run 100 every 100 \"if '1 > 0' then 'pair_coeff * * hooke 9000 ...'\", then run 100 at kn 9000\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"if '1 > 0' then 'pair_coeff * * " + hk(9000) + "'\"\nrun 100\n", g=1)
+deck("e20_run_every_unfix_grav", "# run 100 every 100 \"unfix grav\", then run 100 without gravity (the audit's gravity notes are for run 1)\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"unfix grav\"\nrun 100\n", g=1)
+deck("e21_run_every_unfix_freeze", "# type 2 frozen by fix fz; run 100 every 100 \"unfix fz\", then run 100 with type 2 free (1 2 eps is the contact's own)\n"
+     + BASE(HK) + TWO + "group t2 type 2\nfix fz t2 freeze\nrun 100 every 100 \"unfix fz\"\nrun 100\n", g=1)
+L("L77_run_every_if_property", "# LIGGGHTS run 500 every 500 \"if '1 > 0' then 'fix m3 ... 0.3'\", then run 500 at e 0.3\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "run 500 every 500 \"if '1 > 0' then 'fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3'\"\nrun 500\n")
+L("L78_run_every_unfix_wall_refix_other", "# LIGGGHTS run 500 every 500 \"unfix wprim\", then a wall wp2 of type 2 and run 500: the last run has wp2 only\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "run 500 every 500 \"unfix wprim\"\nfix wp2 all wall/gran model hertz tangential history primitive type 2 zplane 0.0\nrun 500\n")
+
+
+# ================================================================ tenth batch: more commands of run ... every
+deck("e22_run_every_next_index", "# variable k index 2000 9000; run 100 every 100 \"next k\"; pair_coeff kn $k; run 100: LAMMPS uses kn 9000\n"
+     + BASE(HK) + TWO4 + "variable k index 2000 9000\nrun 100 every 100 \"next k\"\npair_coeff * * hooke $k 3000 " + K + "\nprint \"PROBE k $k\"\nrun 100\n", g=1)
+deck("e23_run_every_group_grows_wall", "# wall acts on group lows (type 2); run 100 every 100 \"group lows type 1\" adds type 1: in run 2 type 1 meets the wall too\n"
+     + head() + G1(HK) + GRAV + TAIL + TWO4 + "group lows type 2\nfix floor lows wall/gran granular " + hk(5000) + " zplane 0 NULL\nrun 100 every 100 \"group lows type 1\"\nrun 100\n", g=1)
+deck("e24_run_every_unfix_integ_only", "# run 100 every 100 \"unfix integ\", then run 100: nothing is integrated in run 2 (no sphere moves)\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"unfix integ\"\nrun 100\n", g=1)
+deck("e25_run_every_next_file_variable", "# variable k file kn.txt (2000 then 9000); run 100 every 100 \"next k\"; pair_coeff kn ${k}; run 100: kn 9000\n"
+     + BASE(HK) + TWO4 + "variable k file kn.txt\nrun 100 every 100 \"next k\"\npair_coeff * * hooke ${k} 3000 " + K + "\nrun 100\n", g=1, data={"kn.txt": "2000\n9000\n"})
+L("L79_run_every_next_index_e", "# LIGGGHTS variable e index 0.9 0.3; run 500 every 500 \"next e\"; fix m3 with ${e}; run 500: LIGGGHTS uses e 0.3\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "variable e index 0.9 0.3\nrun 500 every 500 \"next e\"\nfix m3 all property/global coefficientRestitution peratomtypepair 3 ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e}\nprint \"PROBE e ${e}\"\nrun 500\n")
+deck("e26_run_every_next_loop_variable_timestep", "# variable d index 1e-5 2e-4; run 100 every 100 \"next d\"; timestep $d; run 100: the last run at 2e-4\n"
+     + BASE(HK) + TWO4 + "variable d index 1e-5 2e-4\nrun 100 every 100 \"next d\"\ntimestep $d\nrun 100\n", g=1)
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)
     os.makedirs(d, exist_ok=True)
     open(os.path.join(d, "in.deck"), "w").write(text)
     open(os.path.join(d, "G"), "w").write(f"{g}\n")
+    open(os.path.join(d, "DECK"), "w").write("in.deck\n")  # else the scripts take the first in.* (in.2 sorts before in.deck)
     if lig:
         open(os.path.join(d, "LIGGGHTS"), "w").write("")
     for f, t in data.items():
