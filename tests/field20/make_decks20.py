@@ -783,6 +783,65 @@ deck("e26_run_every_next_loop_variable_timestep", "# variable d index 1e-5 2e-4;
      + BASE(HK) + TWO4 + "variable d index 1e-5 2e-4\nrun 100 every 100 \"next d\"\ntimestep $d\nrun 100\n", g=1)
 
 
+# ================================================================ eleventh batch: quit, files written by the deck and read back
+deck("z09_trailing_unknown_command", "# run 100 then an unknown command after the last run: LAMMPS stops with an error after making its run\n"
+     + BASE(HK) + TWO4 + "run 100\nbogus_command 1 2 3\n", g=1)
+deck("z10_quit_before_change", "# run 100 at kn 2000, quit, then pair_coeff kn 9000 and run 100 that never happen\n"
+     + BASE(HK) + TWO4 + "run 100\nquit\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("z11_if_quit_before_change", "# if \"1 > 0\" then quit after run 100: the kn 9000 stage never happens\n"
+     + BASE(HK) + TWO4 + "run 100\nif \"1 > 0\" then quit\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("z12_print_file_then_include", "# print writes gen.in (kn 9000) with the file keyword, include gen.in: a stale gen.in (kn 2500) sits in the folder\n"
+     + head() + "pair_style granular\nprint \"pair_coeff * * " + hk(9000) + "\" file gen.in\ninclude gen.in\n" + GRAV + TAIL + TWO + "run 100\n", g=1,
+     data={"gen.in": "pair_coeff * * " + hk(2500) + "\n"})
+deck("z13_shell_echo_then_include", "# shell writes gen.in (kn 9000), include gen.in: a stale gen.in (kn 2500) sits in the folder\n"
+     + head() + "pair_style granular\nshell echo \"pair_coeff * * " + hk(9000) + "\" > gen.in\ninclude gen.in\n" + GRAV + TAIL + TWO + "run 100\n", g=1,
+     data={"gen.in": "pair_coeff * * " + hk(2500) + "\n"})
+deck("z14_print_append_then_include", "# print ... append gen.in adds a pair_coeff kn 9000 after the stale kn 2500 line: the include ends at kn 9000\n"
+     + head() + "pair_style granular\nprint \"pair_coeff * * " + hk(9000) + "\" append gen.in\ninclude gen.in\n" + GRAV + TAIL + TWO + "run 100\n", g=1,
+     data={"gen.in": "pair_coeff * * " + hk(2500) + "\n"})
+deck("z15_print_file_no_stale", "# print writes gen.in (kn 9000), include gen.in, no gen.in in the folder beforehand\n"
+     + head() + "pair_style granular\nprint \"pair_coeff * * " + hk(9000) + "\" file gen.in\ninclude gen.in\n" + GRAV + TAIL + TWO + "run 100\n", g=1)
+deck("z16_variable_file_written_by_print", "# print writes kn.txt (9000), variable k file kn.txt reads it: a stale kn.txt (2500) sits in the folder\n"
+     + head() + "print \"9000\" file kn.txt\nvariable k file kn.txt\npair_style granular\npair_coeff * * hooke ${k} 3000 " + K + "\n" + GRAV + TAIL + TWO + "run 100\n", g=1,
+     data={"kn.txt": "2500\n"})
+L("L80_liggghts_print_file_include", "# LIGGGHTS print writes e.in (e 0.3 for all) with file, include e.in: a stale e.in (e 0.9) sits in the folder\n"
+  + lhead() + MAT3 + "print \"fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\" file e.in\ninclude e.in\n" + HERTZ + WALL3 + ATOMS + RUN,
+  data={"e.in": "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.9 0.9 0.9 0.9 0.9 0.9 0.9 0.9\n"})
+L("L81_liggghts_quit", "# LIGGGHTS run 1000, quit, then e 0.3 and run 500 that never happen (if LIGGGHTS knows quit)\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "quit\nfix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\nrun 500\n")
+L("L82_liggghts_fix_adapt_diameter", "# LIGGGHTS fix adapt atom diameter to 6 mm (reset no) in run 1, unfix, run 2 - hooke/stiffness (mass by its density)\n"
+  + lhead() + MAT3 + LST + LWST + ATOMS.replace("0.006 density", "0.004 density") + LRUN + "variable dd equal 0.006\nfix ad all adapt 1 atom diameter v_dd reset no\nrun 500\nunfix ad\nrun 500\n")
+
+
+# ================================================================ twelfth batch: files written during runs and read after them
+deck("z17_fix_print_file_read_after_run", "# fix print writes kn.txt (9000) during run 1; variable k file kn.txt after it; pair_coeff ${k}; run 2: kn 9000. A stale kn.txt (2500) sits in the folder\n"
+     + BASE(HK) + TWO4 + "fix pr all print 50 \"9000\" file kn.txt screen no\nrun 100\nunfix pr\nvariable k file kn.txt\npair_coeff * * hooke ${k} 3000 " + K + "\nprint \"PROBE k ${k}\"\nrun 100\n", g=1,
+     data={"kn.txt": "2500\n"})
+deck("z18_fix_ave_time_file_include", "# fix print writes a pair_coeff line into gen.in during run 1; include gen.in after it; stale gen.in (kn 2500) in the folder\n"
+     + BASE(HK) + TWO4 + "fix pr all print 50 \"pair_coeff * * " + hk(9000) + "\" file gen.in screen no title \"# generated\"\nrun 100\nunfix pr\ninclude gen.in\nrun 100\n", g=1,
+     data={"gen.in": "pair_coeff * * " + hk(2500) + "\n"})
+L("L83_liggghts_fix_print_file_include", "# LIGGGHTS fix print writes e.in (e 0.3) during run 1; include e.in after it; stale e.in (e 0.9) in the folder\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "fix pr all print 500 \"fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\" file e.in screen no title \"# generated\"\nrun 1000\nunfix pr\ninclude e.in\nrun 500\n",
+  data={"e.in": "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.9 0.9 0.9 0.9 0.9 0.9 0.9 0.9\n"})
+
+
+# ================================================================ thirteenth batch: LIGGGHTS quit and clear
+L("L84_liggghts_if_quit", "# LIGGGHTS run 1000, if \"1 > 0\" then quit, then e 0.3 and run 500 that never happen\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "if \"1 > 0\" then quit\nfix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\nrun 500\n")
+L("L85_liggghts_quit_in_include", "# LIGGGHTS run 1000, include in.stop (quit), then e 0.3 and run 500 that never happen\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "include in.stop\nfix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\nrun 500\n",
+  data={"in.stop": "quit\n"})
+L("L86_liggghts_quit_minimal", "# minimal: LIGGGHTS run 1000 at e 0.5 (one type), quit, e 0.3 and run 1000 never happen\n"
+  + lhead(nt=1) + "fix m1 all property/global youngsModulus peratomtype 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3\n"
+  "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.5\nfix m7 all property/global coefficientFriction peratomtypepair 1 0.5\n" + HERTZ
+  + "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 1 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n" + RUN
+  + "quit\nfix m3 all property/global coefficientRestitution peratomtypepair 1 0.3\nrun 1000\n")
+L("L87_liggghts_clear_second_box", "# LIGGGHTS clear between two simulations: the second (e 0.3 for all) is what runs last\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "clear\n" + lhead() + MAT3 + "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\n" + HERTZ + WALL3 + ATOMS + RUN)
+deck("z19_quit_in_include", "# LAMMPS run 100, include in.stop (quit), then kn 9000 and run 100 that never happen\n"
+     + BASE(HK) + TWO4 + "run 100\ninclude in.stop\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1, data={"in.stop": "quit\n"})
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)
