@@ -842,6 +842,50 @@ deck("z19_quit_in_include", "# LAMMPS run 100, include in.stop (quit), then kn 9
      + BASE(HK) + TWO4 + "run 100\ninclude in.stop\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1, data={"in.stop": "quit\n"})
 
 
+# ================================================================ fourteenth batch: duplicate labels, LIGGGHTS units lj default
+deck("z21_duplicate_label_first_wins", "# two 'label target': jump SELF target goes to the first in the file (LAMMPS scans from the top): kn 9000, not the 3000 after the jump\n"
+     + head() + G1(HK) + GRAV + TAIL + TWO + "variable c equal 0\nlabel target\nvariable c equal $(v_c+1)\nif \"${c} > 1\" then \"jump SELF done\"\npair_coeff * * " + hk(9000)
+     + "\njump SELF target\nlabel target\npair_coeff * * " + hk(3000) + "\nlabel done\nprint \"PROBE c ${c}\"\nrun 100\n", g=1)
+L("L88_liggghts_duplicate_label", "# LIGGGHTS: two 'label target', jump SELF target: the first in the file (e 0.3), not the second (e 0.9)\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + "variable c equal 0\nlabel target\nvariable c equal ${c}+1\nif \"${c} > 1\" then \"jump SELF done\"\n"
+  "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\njump SELF target\nlabel target\n"
+  "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.9 0.9 0.9 0.9 0.9 0.9 0.9 0.9\nlabel done\nprint \"PROBE c ${c}\"\n" + RUN)
+L("L89_liggghts_no_units_lj", "# LIGGGHTS deck without a units command: units lj (default), dt default 0.005? hertz in lj numbers\n"
+  + lhead().replace("units si\n", "").replace("-0.05 0.05 -0.05 0.05 -0.01 0.15", "-50 50 -50 50 -10 150").replace("neighbor 0.002 bin", "neighbor 0.2 bin")
+  + "fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3\n"
+  "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5\n" + E3 + HERTZ
+  + "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\ncreate_atoms 1 single 10 0 10 units box\ncreate_atoms 2 single -10 0 10 units box\n"
+  "set type 1 diameter 4 density 2.5\nset type 2 diameter 6 density 1.5\nfix gravi all gravity 1 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 1000\n", g="0.1 1")
+
+
+# ================================================================ fifteenth batch: shell cd changes where later files are read
+deck("z22_shell_cd_then_include", "# shell cd sub, then include in.x: the engine reads sub/in.x (kn 9000), not ./in.x (kn 2500)\n"
+     + head() + "pair_style granular\nshell cd sub\ninclude in.x\n" + GRAV + TAIL + TWO + "run 100\n", g=1,
+     data={"in.x": "pair_coeff * * " + hk(2500) + "\n", "sub/in.x": "pair_coeff * * " + hk(9000) + "\n"})
+deck("z23_shell_cd_then_read_data", "# shell cd sub, then read_data spheres.data: the engine reads sub/spheres.data (6 mm spheres), not ./spheres.data (4 mm)\n"
+     + "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nshell cd sub\nread_data spheres.data\n" + G1(HK) + GRAV + FLOOR + TAIL + "run 100\n", g=1,
+     data={"spheres.data": "spheres\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 1 0.004 2500 0.005 0.005 0.01\n2 2 0.004 2500 0.015 0.005 0.01\n",
+           "sub/spheres.data": "spheres\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 1 0.006 2500 0.005 0.005 0.01\n2 2 0.006 2500 0.015 0.005 0.01\n"})
+L("L90_liggghts_shell_cd_then_include", "# LIGGGHTS shell cd sub, then include e.in: the engine reads sub/e.in (e 0.3), not ./e.in (e 0.9)\n"
+  + lhead() + MAT3 + "shell cd sub\ninclude e.in\n" + HERTZ + WALL3 + ATOMS + RUN,
+  data={"e.in": "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.9 0.9 0.9 0.9 0.9 0.9 0.9 0.9 0.9\n",
+        "sub/e.in": "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\n"})
+deck("z24_variable_file_after_shell_cd", "# shell cd sub, variable k file kn.txt: sub/kn.txt (9000), not ./kn.txt (2500)\n"
+     + head() + "shell cd sub\nvariable k file kn.txt\npair_style granular\npair_coeff * * hooke ${k} 3000 " + K + "\n" + GRAV + TAIL + TWO + "run 100\n", g=1,
+     data={"kn.txt": "2500\n", "sub/kn.txt": "9000\n"})
+
+
+# ================================================================ sixteenth batch: run ... every against LIGGGHTS insertions
+L("L91_run_every_reset_timestep_insert_start", "# insert start 1500; run 1000 every 500 \"reset_timestep 0\" then run 1000: steps restart at 0, 1500 is never reached: no type 2\n"
+  + LB() + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n" + T2 + INSREG
+  + PACK.replace("insert_every once", "insert_every 10000 start 1500") + LRUN + "run 1000 every 500 \"reset_timestep 0\"\nrun 1000\n")
+L("L92_run_every_unfix_insert_before_start", "# insert start 700; run 1000 every 500 \"unfix ins\": the fix is gone at step 500, before its start: no type 2\n"
+  + LB() + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n" + T2 + INSREG
+  + PACK.replace("insert_every once", "insert_every 10000 start 700") + LRUN + "run 1000 every 500 \"unfix ins\"\nrun 500\n")
+deck("i16_run_every_unfix_pour_first_chunk", "# fix pour (type 2, 5 mm) unfixed by run 100 every 100 \"unfix p\" after the first chunk; pour inserts on its first step anyway\n"
+     + POURBOX + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nfix p all pour 10 2 4767 region top diam one 0.005 dens 2500 2500\nrun 200 every 100 \"unfix p\"\n", g=1)
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)
@@ -852,6 +896,7 @@ def write(name):
     if lig:
         open(os.path.join(d, "LIGGGHTS"), "w").write("")
     for f, t in data.items():
+        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
         open(os.path.join(d, f), "w").write(t)
     for f, args in files.items():
         subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
