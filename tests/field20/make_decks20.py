@@ -886,6 +886,18 @@ deck("i16_run_every_unfix_pour_first_chunk", "# fix pour (type 2, 5 mm) unfixed 
      + POURBOX + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nfix p all pour 10 2 4767 region top diam one 0.005 dens 2500 2500\nrun 200 every 100 \"unfix p\"\n", g=1)
 
 
+# ================================================================ seventeenth batch: quit and jump inside run ... every
+deck("e27_run_every_quit", "# run 100 every 100 \"quit\": LAMMPS ends the deck after the run; the kn 9000 stage after it never runs\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"quit\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("e28_run_every_jump", "# run 100 every 100 \"jump SELF end\": the deck continues at label end (skipping the kn 9000 line)\n"
+     + BASE(HK) + TWO4 + "run 100 every 100 \"jump SELF end\"\npair_coeff * * " + hk(9000) + "\nlabel end\nrun 100\n", g=1)
+L("L93_run_every_quit", "# LIGGGHTS run 500 every 500 \"quit\": the deck ends; e 0.3 and run 500 after it never run\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "run 500 every 500 \"quit\"\nfix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\nrun 500\n")
+L("L94_liggghts_quit_in_loop_end", "# LIGGGHTS loop of two runs with e from an index variable, quit after the first pass (if on the loop counter)\n"
+  + lhead() + MAT3 + HERTZ + WALL3 + ATOMS + LRUN + "variable e index 0.9 0.3\nvariable n loop 2\nlabel lp\nfix m3 all property/global coefficientRestitution peratomtypepair 3 ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e}\nrun 300\n"
+  "if \"${n} == 1\" then \"jump SELF stop\"\nnext e\nnext n\njump SELF lp\nlabel stop\nquit\n")
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)
