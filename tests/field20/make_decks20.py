@@ -898,6 +898,28 @@ L("L94_liggghts_quit_in_loop_end", "# LIGGGHTS loop of two runs with e from an i
   "if \"${n} == 1\" then \"jump SELF stop\"\nnext e\nnext n\njump SELF lp\nlabel stop\nquit\n")
 
 
+# ================================================================ eighteenth batch: runs inside if, halt, timer timeout
+deck("z25_run_inside_if", "# if \"1 > 0\" then \"pair_coeff * * hooke 9000 ...\" \"run 100\": a stage at kn 9000 made inside the if, after run 100 at kn 2000\n"
+     + BASE(HK) + TWO4 + "run 100\nif \"1 > 0\" then \"pair_coeff * * " + hk(9000) + "\" \"run 100\"\n", g=1)
+deck("z26_fix_halt_error_hard", "# fix halt at step 1 with error hard ends LAMMPS in run 1: the kn 9000 stage never runs (engine exits with an error)\n"
+     + BASE(HK) + TWO4 + "variable one equal 1\nfix h all halt 1 v_one == 1 error hard\nrun 100\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("z27_fix_halt_error_continue", "# fix halt error continue: run 1 stops at step 1, the deck goes on: the kn 9000 stage runs\n"
+     + BASE(HK) + TWO4 + "variable one equal 1\nfix h all halt 1 v_one == 1 error continue\nrun 100\nunfix h\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("z28_timer_timeout_zero", "# timer timeout 0 (no time left): LAMMPS skips the runs' steps; every run makes 0 steps? (engine says)\n"
+     + BASE(HK) + TWO4 + "timer timeout 0\nrun 100\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+L("L95_liggghts_run_inside_if", "# LIGGGHTS if \"1 > 0\" then \"fix m3 ... 0.3\" \"run 500\": a stage at e 0.3 made inside the if\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN + "if \"1 > 0\" then \"fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\" \"run 500\"\n")
+
+
+# ================================================================ nineteenth batch: LIGGGHTS if with contact commands
+L("L96_liggghts_if_fix_property", "# LIGGGHTS if \"1 > 0\" then \"fix m3 ... 0.3\" before the only run: e 0.3 for all\n"
+  + lhead() + MAT3 + E3 + "if \"1 > 0\" then \"fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\"\n" + HERTZ + WALL3 + ATOMS + RUN)
+L("L97_liggghts_if_else_run", "# LIGGGHTS if/else choosing which run length to make (run 500 or run 800): one stage, e table E3\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + LRUN + "variable a equal 1\nif \"${a} > 0\" then \"run 500\" else \"run 800\"\n")
+deck("z29_if_else_run_lammps", "# LAMMPS if/else choosing which run length to make: one stage kn 2000\n"
+     + BASE(HK) + TWO4 + "variable a equal 1\nif \"${a} > 0\" then \"run 100\" else \"run 200\"\n", g=1)
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)
