@@ -14,6 +14,7 @@ C = {
  "effect named fairly": "m01 m02 m03 m04 m05 m09 m10 m13 m16 m17 m18 m19 m20 m23 h01 h09 h10 h11 h13 h14 t01 t07 "
     "w01 w02 w04 w06 w09 w11 w16 w17 s11 s12 s14 s24 i02 i12 L02 L03 L10 L19 L26 L28 L30 L31 L32 L35 L38 L39 L49 L82 R02 R03 R04",
  "SILENTLY WRONG: `quit` not seen (LIGGGHTS quit; quit in run N every M in both engines), stages after it reported as the deck's (new, D1)": "L81 L85 L86 L93 e27",
+ "WRONG EPS with a false word (effectively silent): `partition yes 1 CMD` skipped although LAMMPS/LIGGGHTS with one partition run CMD; 'it has no part in a contact' (new, D5)": "z30 z31 z32 L98",
  "WRONG, nothing said: what `unfix` in `run N every M` removes is reported for the runs after it (new, D2)": "e03 e24 L71",
  "WRONG with a false word: same (D2), a removed wall or fix said to act; z28 `timer timeout 0` (LAMMPS skips every run) called 'no part in a contact'": "e16 e20 e21 L78 z28",
  "WRONG NUMBER, nothing said: `timestep` in `run N every M` not seen, steps per contact and eps at the deck's dt stated at the old dt (new, D3)": "e15 L72",

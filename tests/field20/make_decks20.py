@@ -920,6 +920,17 @@ deck("z29_if_else_run_lammps", "# LAMMPS if/else choosing which run length to ma
      + BASE(HK) + TWO4 + "variable a equal 1\nif \"${a} > 0\" then \"run 100\" else \"run 200\"\n", g=1)
 
 
+# ================================================================ twentieth batch: partition (skipped by the audit) runs its command on partition 1
+deck("z30_partition_yes_1_pair_coeff", "# partition yes 1 pair_coeff * * hooke 9000: with one partition LAMMPS runs it (kn 9000)\n"
+     + BASE(HK) + TWO4 + "partition yes 1 pair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("z31_partition_no_2_set_density", "# partition no 2 set type 2 density 7800: partition 1 runs it (steel type 2)\n"
+     + BASE(HK) + TWO4 + "partition no 2 set type 2 density 7800\nrun 100\n", g=1)
+deck("z32_partition_yes_1_timestep", "# partition yes 1 timestep 2e-4: the run at 2e-4\n"
+     + BASE(HK) + TWO4 + "partition yes 1 timestep 2e-4\nrun 100\n", g=1)
+L("L98_liggghts_partition_yes_1_property", "# LIGGGHTS partition yes 1 fix m3 ... e 0.3 (one partition: it runs)\n"
+  + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + "partition yes 1 fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\n" + RUN)
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)

@@ -93,6 +93,9 @@ S = {
         "pair_style gran model hertz tangential history", "pair_coeff * *"], checks=[P(1, 1, 0.002, m(0.002, 2500), 0.002, m(0.002, 2500), stage=1)]),
     "e16_run_every_unfix_floor_then_floor2": {"lines": GL(f"* * {HK}"), "checks": [W(1, 0.002, m2, f"fix floor2 all wall/gran granular {hk(9000)} zplane 0 NULL", wall_id="floor2", stage=2)]},
     "e27_run_every_quit": {"lines": GL(f"* * {HK}"), "checks": [P(1, 2, 0.002, m2, 0.002, m2, stage=1)]},
+    "z30_partition_yes_1_pair_coeff": {"lines": GL(f"* * {HK}") + [f"partition yes 1 pair_coeff * * {hk(9000)}"], "checks": [P(1, 2, 0.002, m2, 0.002, m2)]},
+    "L98_liggghts_partition_yes_1_property": LIG(lines=LMAT + LE3 + ["partition yes 1 fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3",
+        "pair_style gran model hertz tangential history", "pair_coeff * *"], checks=[P(1, 2, 0.002, m(0.002, 2500), 0.003, m(0.003, 1500))]),
     "L61_read_data_liggghts_cv": LIG(lines=LMAT + LST, checks=[P(1, 2, 0.001, m(0.001, 7800), 0.003, m(0.003, 1500), match="largest")]),
 }
 
