@@ -931,6 +931,29 @@ L("L98_liggghts_partition_yes_1_property", "# LIGGGHTS partition yes 1 fix m3 ..
   + lhead() + MAT3 + E3 + HERTZ + WALL3 + ATOMS + "partition yes 1 fix m3 all property/global coefficientRestitution peratomtypepair 3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3 0.3\n" + RUN)
 
 
+# ================================================================ twenty-first batch: skipped commands that read or write what later lines use
+deck("z33_write_data_clear_read_data", "# set sizes 6 mm, write_data state.data, clear, read_data state.data: the engine reads 6 mm spheres; a stale state.data (4 mm) sits in the folder\n"
+     + BASE(HK) + TWO4 + "set type * diameter 0.006 density 2500\nwrite_data state.data\nclear\nunits si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data state.data\n"
+     + G1(HK) + GRAV + FLOOR + TAIL + "run 100\n", g=1,
+     data={"state.data": "stale\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 1 0.004 2500 0.02 0.02 0.01\n2 2 0.004 2500 0.01 0.01 0.01\n"})
+deck("z34_ndx2group_then_set", "# group g2 empty, ndx2group groups.ndx g2 (atoms 2 and 3), set group g2 type 2 diameter 0.006: two type-2 6 mm spheres\n"
+     + BASE(HK) + "create_atoms 1 single 0.005 0.005 0.01\ncreate_atoms 1 single 0.015 0.005 0.01\ncreate_atoms 1 single 0.025 0.025 0.01\nset type * diameter 0.004 density 2500\n"
+     + "group g2 empty\nndx2group groups.ndx g2\nset group g2 type 2\nset group g2 diameter 0.006 density 2500\nrun 100\n", g=1,
+     data={"groups.ndx": "[ g2 ]\n2 3\n"})
+deck("z35_ndx2group_wall_group", "# the floor acts on group low, filled by ndx2group (atom 1 only): type 2 never meets the floor\n"
+     + head() + G1(HK) + GRAV + TAIL + TWO4 + "group low empty\nndx2group groups.ndx low\nfix floor low wall/gran granular " + hk(5000) + " zplane 0 NULL\nrun 100\n", g=1,
+     data={"groups.ndx": "[ low ]\n1\n"})
+
+MAPBASE = lambda model: head(extra="atom_modify map array\n") + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
+deck("z36_ndx2group_then_set_mapped", "# atom map on; group g2 empty, ndx2group groups.ndx g2 (atoms 2 and 3), set group g2 type 2, diameter 6 mm: two type-2 6 mm spheres\n"
+     + MAPBASE(HK) + "create_atoms 1 single 0.005 0.005 0.01\ncreate_atoms 1 single 0.015 0.005 0.01\ncreate_atoms 1 single 0.025 0.025 0.01\nset type * diameter 0.004 density 2500\n"
+     + "group g2 empty\nndx2group groups.ndx g2\nset group g2 type 2\nset group g2 diameter 0.006 density 2500\nrun 100\n", g=1,
+     data={"groups.ndx": "[ g2 ]\n2 3\n"})
+deck("z37_ndx2group_wall_group_mapped", "# atom map on; the floor acts on group low, filled by ndx2group (atom 1 only): type 2 never meets the floor\n"
+     + head(extra="atom_modify map array\n") + G1(HK) + GRAV + TAIL + TWO4 + "group low empty\nndx2group groups.ndx low\nfix floor low wall/gran granular " + hk(5000) + " zplane 0 NULL\nrun 100\n", g=1,
+     data={"groups.ndx": "[ low ]\n1\n"})
+
+
 def write(name):
     text, g, files, data, lig = DECKS[name]
     d = os.path.join(D, name)
