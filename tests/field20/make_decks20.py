@@ -953,6 +953,15 @@ deck("z37_ndx2group_wall_group_mapped", "# atom map on; the floor acts on group 
      + head(extra="atom_modify map array\n") + G1(HK) + GRAV + TAIL + TWO4 + "group low empty\nndx2group groups.ndx low\nfix floor low wall/gran granular " + hk(5000) + " zplane 0 NULL\nrun 100\n", g=1,
      data={"groups.ndx": "[ low ]\n1\n"})
 
+deck("z38_write_coeff_include_back", "# write_coeff coeffs.in (kn 2000), pair_coeff kn 9000, include coeffs.in: kn 2000 again; a stale coeffs.in (kn 5000) in the folder\n"
+     + BASE(HK) + TWO4 + "write_coeff coeffs.in\npair_coeff * * " + hk(9000) + "\ninclude coeffs.in\nrun 100\n", g=1,
+     data={"coeffs.in": "pair_coeff * * " + hk(5000) + "\n"})
+deck("z39_fix_ttm_drag", "# fix ttm (two-temperature model: a Langevin-like drag gamma_p and a random force on every atom) beside the contact\n"
+     + BASE(HK) + TWO4 + "fix tt all ttm 48279 1.0 1.0 1.0 1e-3 0.0 0.0 2 2 2 set 1e-30\nrun 100\n", g=1)
+
+deck("z40_fix_ttm_drag_periodic", "# periodic box, fix ttm (Langevin-like drag gamma_p 1e-3 and a random force of T 1e-30 on every atom) beside the contact\n"
+     + head(bnd="p p p") + G1(HK) + TAIL + TWO4 + "fix tt all ttm 48279 1.0 1.0 1.0 1e-3 0.0 0.0 2 2 2 set 1e-30\nrun 100\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
