@@ -20,7 +20,7 @@ C = {
  "WRONG NUMBER, nothing said: `timestep` in `run N every M` not seen, steps per contact and eps at the deck's dt stated at the old dt (new, D3)": "e15 L72",
  "same (D3), the later dt finer (the stated steps per contact too few: harmless direction)": "e12 t08",
  "left class: steps per contact at the coarsest timestep of a merged stage": "t11",
- "left class: run-time failures (the engine stops only when the runs are made; the audit answers)": "h02 i04 i14 i16 L92 z26",
+ "left class: run-time failures (the engine stops only when the runs are made; the audit answers)": "h02 i04 i14 i16 L92 z26 z41",
  "fair refusal": "L01 L04 L08 L11 L12 L16 L17 L20 L23 L33 L34 L40 L44 L46 L47 L48 L64 L69 h03 i05 i11 m12 m24 p15 s03 s13 s15 s17 t12 w10 x04 z09 z13 z34 z35 z39 "
     "e01 e02 e04 e07 e08 e09 e10 e11 e13 e14 e18 e19 e22 e23 e25 e26 e28 L59 L70 L77 L79",
  "AVOIDABLE REFUSAL (mild, new): a file the deck writes with print/fix print/write_coeff, read back by include/variable file": "z12 z14 z15 z16 z17 z18 z38 L80 L83",

@@ -962,6 +962,11 @@ deck("z39_fix_ttm_drag", "# fix ttm (two-temperature model: a Langevin-like drag
 deck("z40_fix_ttm_drag_periodic", "# periodic box, fix ttm (Langevin-like drag gamma_p 1e-3 and a random force of T 1e-30 on every atom) beside the contact\n"
      + head(bnd="p p p") + G1(HK) + TAIL + TWO4 + "fix tt all ttm 48279 1.0 1.0 1.0 1e-3 0.0 0.0 2 2 2 set 1e-30\nrun 100\n", g=1)
 
+deck("z41_fix_tmd_pull", "# fix tmd (targeted MD: each step constrains the atoms toward target positions) beside the contact (LAMMPS runs it; it changes the collision)\n"
+     + head(bnd="p p p", extra="atom_modify map array\n") + G1(HK) + TAIL + "create_atoms 1 single 0.018 0.02 0.05\ncreate_atoms 1 single 0.022 0.02 0.05\nset type * diameter 0.004 density 2500\n"
+     + "fix tm all tmd 0.0 target.txt 0\nrun 100\n", g=1,
+     data={"target.txt": "# target\nxlo xhi 0 0.04\nylo yhi 0 0.04\nzlo zhi 0 0.1\n1 0.010 0.02 0.05\n2 0.030 0.02 0.05\n"})
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
