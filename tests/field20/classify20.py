@@ -8,9 +8,9 @@ C = {
     "p01 p04 p06 p08 p09 p10 p11 p12 p13 p14 p16 p17 p18 p19 p20 p22 s02 s04 s05 s06 s07 s09 s10 s16 s19 s20 s21 s22 "
     "x02 x05 x06 x07 x08 x09 x10 x11 x12 x13 x14 x15 x16 x17 x18 x19 x20 x21 x22 x23 x24 x25 x26 x27 x28 x29 x30 x31 x32 x33 x34 x35 x37 x38 "
     "t02 t03 t04 t05 t06 t10 t13 w03 w05 w08 w12 w13 w14 m08 m11 m14 m15 m22 h04 h07 h12 h15 e05 e06 "
-    "i01 i03 i06 i07 i08 i09 i10 i13 i15 z01 z02 z03 z04 z05 z06 z07 z08 z10 z11 z19 z21 z22 z23 z24 z25 z27 z29 z33 "
+    "i01 i03 i06 i07 i08 i09 i10 i13 i15 z01 z02 z03 z04 z05 z06 z07 z08 z10 z11 z19 z21 z22 z23 z24 z25 z27 z29 z33 z42 "
     "L05 L06 L07 L09 L14 L15 L18 L21 L22 L25 L29 L37 L41 L45 L50 L52 L53 L55 L58 L60 L62 L63 L65 L66 L67 L68 "
-    "L73 L74 L75 L76 L87 L88 L89 L90 L91 L94 L96",
+    "L73 L74 L75 L76 L87 L88 L89 L90 L91 L94 L96 L99 L100",
  "effect named fairly": "m01 m02 m03 m04 m05 m09 m10 m13 m16 m17 m18 m19 m20 m23 h01 h09 h10 h11 h13 h14 t01 t07 "
     "w01 w02 w04 w06 w09 w11 w16 w17 z37 s11 s12 s14 s24 i02 i12 L02 L03 L10 L19 L26 L28 L30 L31 L32 L35 L38 L39 L49 L82 R02 R03 R04",
  "SILENTLY WRONG: `quit` not seen (LIGGGHTS quit; quit in run N every M in both engines), stages after it reported as the deck's (new, D1)": "L81 L85 L86 L93 e27",

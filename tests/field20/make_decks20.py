@@ -967,6 +967,14 @@ deck("z41_fix_tmd_pull", "# fix tmd (targeted MD: each step constrains the atoms
      + "fix tm all tmd 0.0 target.txt 0\nrun 100\n", g=1,
      data={"target.txt": "# target\nxlo xhi 0 0.04\nylo yhi 0 0.04\nzlo zhi 0 0.1\n1 0.010 0.02 0.05\n2 0.030 0.02 0.05\n"})
 
+L("L99_liggghts_if_set_density", "# LIGGGHTS if \"1 > 0\" then \"set type 2 density 7800\" before the only run - hooke/stiffness (steel type 2)\n"
+  + lhead() + MAT3 + LST + LWST + ATOMS + "if \"1 > 0\" then \"set type 2 density 7800\"\n" + RUN)
+L("L100_liggghts_if_create_atoms", "# LIGGGHTS if \"1 > 0\" then \"create_atoms 2 single ...\" \"set type 2 ...\": type 2 exists - hooke/stiffness\n"
+  + lhead() + MAT3 + LST + LWST + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+  + "if \"1 > 0\" then \"create_atoms 2 single -0.01 0 0.01 units box\" \"set type 2 diameter 0.006 density 1500\"\n" + RUN)
+deck("z42_if_set_density", "# LAMMPS if \"1 > 0\" then \"set type 2 density 7800\": steel type 2\n"
+     + BASE(HK) + TWO4 + "if \"1 > 0\" then \"set type 2 density 7800\"\nrun 100\n", g=1)
+
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
