@@ -578,7 +578,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     """
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
-    from .scratch import scratch_copy
+    from .scratch import PUSHING_FIX_PREFIXES, scratch_copy
     from .runtime import resized_by_runs
     from .stream import deck_commands, engine_error, skipped, snapshots, unchecked, written_then_read
     if engine == "LAMMPS":
@@ -607,6 +607,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 raise DeckError(place(loc), text, "the file it reads lies outside the deck's folder, which the audit "
                                                   "copies and checks first (no shell, python or file output): it did "
                                                   "not run it; copy the file beside the deck")
+            if text.split()[0] == "timer":
+                raise DeckError(place(loc), text, "a timeout of no time ends every run after it at its first check, "
+                                                  "before it makes its steps (LAMMPS measured), which the engine's pass, "
+                                                  "its runs skipped, does not show: not audited")
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
         if (hit := written_then_read(commands, scratch)) is not None:
@@ -702,9 +706,13 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         # settling run's)
         unseen = _unseen_after(commands, path.resolve()) if done.timed_out else None
     notes += [f"{cmd} ({place(loc)} and any like it): not executed, "
-              + ("as the audit runs the engine on one process" if cmd == "processors" else
-                 "as it may run code or write files")
-              + "; it has no part in a contact" for cmd, loc in skipped(commands, scratch).items()]
+              + ("as the audit runs the engine on one process; it has no part in a contact" if cmd == "processors" else
+                 "as the engine runs as partition 1 of 1, which it leaves out" if cmd == "partition no 1" else
+                 "as it may run code or write files; it may add forces to its atoms, which the eps printed do not "
+                 "include" if cmd.startswith("fix ") and cmd.split()[1].startswith(PUSHING_FIX_PREFIXES) else
+                 "as it times the runs; the audit takes each run to make all its steps" if cmd == "timer" else
+                 "as it may run code or write files; it has no part in a contact")
+              for cmd, loc in skipped(commands, scratch).items()]
     notes += _override_notes(atoms, radius or {}, density or {}, deck.ntypes)
     if unseen is not None:
         loc, text = unseen

@@ -101,7 +101,15 @@ _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "l
                                   # how often the lists are rebuilt decides whether a contact is found in
                                   # time (field round 16, n25: run 1000 every 500 "neigh_modify every 10
                                   # delay 0 check no", 0.497 printed where the second part's lists find late)
-                                  "neighbor", "neigh_modify"})
+                                  "neighbor", "neigh_modify",
+                                  # each changes what the later parts of a run see: a wall or fix gone, the
+                                  # time step (field round 20, e03, e15: a floor unfixed and dt 2e-4 after
+                                  # the first part were audited as before), the atoms' velocities or places,
+                                  # the box, the step a LIGGGHTS insertion starts at, the styles read next
+                                  # (partition runs a command)
+                                  "unfix", "timestep", "velocity", "displace_atoms", "change_box", "region",
+                                  "reset_timestep", "special_bonds", "partition", "comm_modify", "dimension",
+                                  "suffix", "package", "kspace_style", "run_style"})
 #: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
 #: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
 #: particle templates
@@ -277,6 +285,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _execute(deck, split, cmd.text, cmd.loc, read_file)
             # a pour gone (or defined anew) adds its size no more
             repour(deck, made, {t for key, (t, _) in pours.items() if deck.pours.get(key) != pours[key]})
+            if deck.ended:
+                break                    # the deck quit after this run's first part: nothing after it runs
         same = plain_run and runs == (len(deck.stages), len(deck.stages[-1][0]) - 1 if deck.stages else -1)
         if cmd.stage is not None:
             recorded = bool(deck.stages) and runs != (len(deck.stages), len(deck.stages[-1][0]))
@@ -589,7 +599,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             deck.present_unknown = True
             _made_after(deck, None, f"{where} ({line})")
     elif cmd == "run":
-        _run_every(words, where, line)
+        deck.ended = _run_every(words, where, line)
         if _no_step(deck, words):
             return                        # a run of 0 steps: no contact happens in it (field round 19, C1)
         if deck.inserting:
@@ -669,6 +679,13 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.lattice = list(words)
     elif cmd == "molecule" and len(words) >= 3:
         deck.templates[words[1]] = _template(words, where, line, read_file)
+    elif cmd == "ndx2group" and len(words) > 2:
+        # the groups named take their atoms from the index file (the engine reads it; field round 20,
+        # z36): members by number, not by type
+        for name in words[2:]:
+            deck.groups[name] = None
+            deck.empty_groups.discard(name)
+            deck.partial_groups.pop(name, None)
     elif cmd in ("soft_particles", "hard_particles") and len(words) >= 2:
         setattr(deck, cmd.split("_")[0], words[1] == "yes")
     elif cmd not in _IRRELEVANT:
@@ -822,21 +839,29 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
     DIALECTS[deck.code].pair_coeff(deck, words, where, line, loc)
 
 
-def _run_every(words: list, where: str, line: str) -> None:
+def _run_every(words: list, where: str, line: str) -> bool:
     """run N every M c1 c2 ...: LAMMPS runs the commands after each part of M steps, the last too
     (22 Jul 2025 measured); the engine's pass never runs them (LAMMPS' -skiprun sets the run up
     once, LIGGGHTS' marker runs one step of a run without every), so the contact they would give
     the parts after the first is nowhere in what it ran. Only inert ones (output, say) leave the
-    contact as the reader reads it; NULL runs none."""
+    contact as the reader reads it; NULL runs none. Whether a quit among them ends the deck after
+    the run's first part (field round 20, e27, L93: the runs after it were audited as the deck's)."""
     if "every" not in words:
-        return
-    for command in words[words.index("every") + 2:]:
+        return False
+    commands = words[words.index("every") + 2:]
+    for command in commands:
         first = _first_not_inert(command)
         if first is not None:
             raise DeckError(where, line, f"run ... every runs {first} between the run's parts, which may change the "
                                          "contact from the second part on, and the engine's pass never runs them "
                                          "(its runs skipped or cut to one step): not audited; split the run into "
                                          "runs with the commands between them")
+    quits = [command for command in commands if "quit" in command.split()]
+    if any(command.split()[0] != "quit" for command in quits):
+        raise DeckError(where, line, "run ... every runs an if that may quit between the run's parts: whether the "
+                                     "deck ends there depends on what the run does, which the engine's pass (its runs "
+                                     "skipped or cut to one step) does not show; not audited")
+    return bool(quits)
 
 
 def _first_not_inert(command: str) -> str | None:

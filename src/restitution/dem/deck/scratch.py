@@ -38,8 +38,8 @@ DYNAMIC = "label restitution_unchecked_{}"
 #: skip-run mode. None changes a contact.
 SKIPPED_COMMANDS = frozenset({
     "shell", "python", "plugin", "pair_write", "bond_write", "angle_write", "dihedral_write", "write_data", "write_restart", "write_dump", "write_coeff", "dump",
-    "dump_modify", "undump", "restart", "log", "print", "info", "echo", "timer", "group2ndx", "ndx2group",
-    "balance", "rerun", "partition", "message", "server", "mdi", "kim", "net", "geturl", "fitpod",
+    "dump_modify", "undump", "restart", "log", "print", "info", "echo", "timer", "group2ndx",
+    "balance", "rerun", "message", "server", "mdi", "kim", "net", "geturl", "fitpod",
     # these write a file of their own (a VMD script of a region, a matrix of second or third
     # derivatives of the energy)
     "region2vmd", "dynamical_matrix", "third_order",
@@ -57,6 +57,12 @@ SHELL_BUILTINS = frozenset({"cd", "mkdir", "mv", "rm", "rmdir", "putenv"})
 _SKIPPED_FIX_PREFIXES = ("ave/", "print", "balance", "ttm", "tmd", "reaxff/", "qeq/reaxff", "python",
                          "vector", "external", "mdi", "pafi", "plumed", "colvars", "imd",
                          "couple/", "ave/euler", "dump", "phonon", "saed/vtk")
+#: Of those, the ones that push atoms (a drag, a target, code or a program giving forces): their
+#: note says so (field round 20, z40: fix ttm's drag was said to have no part in a contact)
+PUSHING_FIX_PREFIXES = ("ttm", "tmd", "python", "external", "mdi", "pafi", "plumed", "colvars", "imd", "couple/")
+#: A partition spec LAMMPS and LIGGGHTS accept where they run as one partition (the audit's engine
+#: does): it holds partition 1; any other stops the engine ("Invalid range string", measured)
+_FIRST_PARTITION = re.compile(r"1|\*|1\*|\*1|1\*1")
 #: Fixes that average or store values and write nothing but the file their ``file`` keyword names:
 #: run without it, so that what a variable reads of them after a run is the engine's
 _AVERAGING_FIXES = frozenset({"ave/time", "ave/histo", "ave/histo/weight", "ave/correlate", "ave/correlate/long",
@@ -520,12 +526,26 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
     if word == "shell" and scratch.confined and key.split()[1:2] and key.split()[1] in SHELL_BUILTINS:
         # the engine does these itself (no program runs), where nothing outside the copy is writable
         return None
+    if word == "timer" and _timeout_zero(key):
+        # every run after it ends at its first check (LAMMPS measured: no step made), which the
+        # engine's pass, whose runs are skipped by the same timer, cannot show
+        return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
         return _labelled(scratch, scratch.skipped, NOOP, (word, loc, key), loc)
     if word in ("include", "jump") and len(key.split()) > 1 and (
             _outside(key.split()[1], scratch) or not scratch.confined and "$" in key.split()[1]):
         # a file outside the copied folder is read as it is, shell lines and all: never run
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
+    if word == "partition" and len(key.split()) > 3 and key.split()[1] in ("yes", "no") \
+            and _FIRST_PARTITION.fullmatch(key.split()[2]):
+        # the engine, one partition, runs the command where it is meant for partition 1 (yes) and
+        # never where not (no): field round 20, z30 and L98 (their pair_coeff, coefficientRestitution
+        # skipped, the eps before them printed)
+        inner = key.split(None, 3)[3]
+        if key.split()[1] == "no":
+            return _labelled(scratch, scratch.skipped, NOOP, ("partition no 1", loc, key), loc)
+        safe = _safe(inner, loc, scratch, marker, top)
+        return inner if safe is None else safe
     if word == "quit":
         path = scratch.root / f"quit_{sum(1 for _ in scratch.root.glob('quit_*'))}"
         path.write_text(_audit_lines(scratch, marker(None, key)))
@@ -574,6 +594,13 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         _quoted(scratch, probe, loc)
         return f'if "$(count(all)) > 0" then "{key}" else "{probe}"'
     return None
+
+
+def _timeout_zero(key: str) -> bool:
+    """Whether ``timer ... timeout T ...`` gives a timeout of no time (0, 0:0, 0:0:0)."""
+    words = key.split()
+    return any(w == "timeout" and k + 1 < len(words) and re.fullmatch(r"0+(:0+){0,2}", words[k + 1]) is not None
+               for k, w in enumerate(words))
 
 
 def _read_back(key: str, scratch: Scratch) -> str | None:

@@ -66,7 +66,11 @@ def marker(root: Path, real: bool = False):
     read_restart f.restart
     info system groups out append /s/restart_info
     """
-    def text(k: int, run: str) -> str:
+    def text(k: int | None, run: str) -> str:
+        if k is None:
+            # a quit: LIGGGHTS ends the process there (exit status 1, no message), the deck's end
+            # (field round 20, L86: it was run as a stage, and the runs after it audited as the deck's)
+            return f"{_ending(root)}{run}\n"
         # "pre yes": the set-up of every run of the deck's, not the shortened one LIGGGHTS may take
         # for a run right after another
         made = run if real else "run 1 pre yes post no"
@@ -117,7 +121,10 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
         # Open MPI's singleton start fails now and then under load, before LIGGGHTS reads a line
         if not (done.status and MPI_NOT_STARTED in done.echo + done.error):
             break
-    if done.status and not done.timed_out:
+    # LIGGGHTS' quit ends with status 1 and no message: after its marker wrote the atoms where the
+    # deck ends, no ERROR on the screen, it is the deck's end, no error
+    quit = (root / ATOMS_AT_END).exists() and not any(ln.startswith("ERROR") for ln in done.echo.splitlines())
+    if done.status and not done.timed_out and not quit:
         # LIGGGHTS writes its ERROR to the screen file, and ends with status 1
         done.error = next((ln for ln in reversed(done.echo.splitlines()) if ln.startswith("ERROR")), "") \
             or done.error or f"LIGGGHTS ended with status {done.status}"

@@ -1,0 +1,79 @@
+"""Field round 20's classes: what the engine ran that the audit did not see.
+
+D1 (silently wrong): a LIGGGHTS ``quit`` (L86) and a ``quit`` a run's ``every`` runs (e27, L93) end
+the deck, and the runs after them were audited as its last stage. D5: ``partition yes 1 CMD`` runs
+CMD in an engine of one partition (z30, L98; ``partition no 2`` stops it, z31), ``timer timeout 0``
+ends the runs before their steps (z28), ``fix ttm`` pushes the atoms (z40), ``ndx2group`` fills a
+group (z36): each was said to have no part in a contact. D2, D3: ``unfix`` and ``timestep`` run
+between a run's parts (e03, e15, L72) were neither run nor refused. Each eps compared here is the
+engine's: LIGGGHTS' typed e for the hertz rows (its hertz damping returns e exactly, Eq. (10)), and
+round 18's LAMMPS head-on runs for hooke 2000 and 9000 (0.49726208, 0.72384049)."""
+
+import json
+from pathlib import Path
+
+import pytest
+
+from deck_cli import needs_lammps, needs_liggghts, run
+
+DECKS = Path(__file__).resolve().parents[1] / "field20" / "decks"
+
+
+def audit(name):
+    status, out, err = run(DECKS / name / "in.deck", "--g", "1", "--json")
+    return status, (json.loads(out) if status == 0 else None), err
+
+
+def eps(got, types):
+    return [r["eps"][0] for r in got["pairs"] if tuple(r["types"]) == types]
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("name, types, expected", [
+    pytest.param("L86_liggghts_quit_minimal", (1, 1), 0.5, marks=needs_liggghts),
+    pytest.param("L93_run_every_quit", (1, 1), 0.6, marks=needs_liggghts),
+    pytest.param("e27_run_every_quit", (1, 2), 0.49726208, marks=needs_lammps)])
+def test_a_quit_ends_the_deck(name, types, expected):
+    status, got, err = audit(name)
+    assert status == 0, err
+    assert len(got["stages"]) == 1
+    assert eps(got, types) == [pytest.approx(expected, abs=2e-7)]
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("name, types, expected", [
+    pytest.param("z30_partition_yes_1_pair_coeff", (1, 1), 0.72384049, marks=needs_lammps),
+    pytest.param("L98_liggghts_partition_yes_1_property", (1, 1), 0.3, marks=needs_liggghts)])
+def test_partition_1_runs_its_command(name, types, expected):
+    status, got, err = audit(name)
+    assert status == 0, err
+    assert eps(got, types) == [pytest.approx(expected, abs=2e-7)]
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("name, said", [
+    pytest.param("z31_partition_no_2_set_density", "LAMMPS stops here", marks=needs_lammps),
+    pytest.param("z28_timer_timeout_zero", "a timeout of no time", marks=needs_lammps),
+    pytest.param("e03_run_every_unfix_floor", "run ... every runs unfix", marks=needs_lammps),
+    pytest.param("e15_run_every_timestep_coarser", "run ... every runs timestep", marks=needs_lammps),
+    pytest.param("L72_run_every_timestep", "run ... every runs timestep", marks=needs_liggghts)])
+def test_what_the_pass_cannot_show_is_refused(name, said):
+    status, got, err = audit(name)
+    assert status == 2 and said in err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_pushing_skipped_fix_is_named_as_pushing():
+    status, got, err = audit("z40_fix_ttm_drag_periodic")
+    assert status == 0, err
+    assert "fix ttm" in err and "may add forces to its atoms" in err and "no part in a contact" not in err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_ndx2group_fills_its_group():
+    # LAMMPS holds two 6 mm type-2 spheres, made so through the group the index file fills
+    status, got, err = audit("z36_ndx2group_then_set_mapped")
+    assert status == 0, err
+    assert eps(got, (2, 2)) and "type 2 has no particle" not in err
