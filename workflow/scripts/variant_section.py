@@ -78,11 +78,17 @@ out += [r"\begin{table}[tbp]", r"  \centering", r"  \small",
 
 # %% The connection
 out.append(r"\paragraph{Connection.}")
+# Kim's reference point is where the forward damped-only curve meets the shifted inverse one, which for
+# his gamma = 1 is the line x = 1; elsewhere the two differ, and the reading taken is said (referee r30)
+out.append(r"Kim joins the series at the reference point $\tau_0$ where the forward damped-only curve meets the "
+           r"inverse one shifted down by one, on the line $x = 1$ for his $\gamma = 1$; for other $\gamma$ the "
+           r"curves cross where $x^{\gamma+1} = (\gamma+1)/2$ (the dotted line of the phase portrait), and we take "
+           r"$x = 1$, the line his equations name.")
 if gamma_zero:
-    out.append(r"Kim's procedure needs the reference point $\tau_0$ where the damped-only "
-               r"motion reaches $x = 1$. With $\gamma = 0$ that motion is $x_0 = 1 - \exp(-\tau)$: it "
+    out.append(r"With $\gamma = 0$ the damped-only motion is $x_0 = 1 - \exp(-\tau)$: it "
                r"approaches $x = 1$ only as $\tau \to \infty$, so $\tau_0$, and with it every reading of the "
-               r"procedure, does not exist.")
+               r"procedure, does not exist. At the crossing, $x = 1/2$, reached at $\tau = \ln 2$, it would; "
+               r"the procedure has not been computed under that reading.")
 elif raw["ReadingsDefined"] == 0:
     out.append(rf"None of the {T['ReadingsComputed']} readings of Kim's procedure computed for this "
                rf"force law has a solution ({T.get('ReadingsReason', '')}).")
