@@ -75,6 +75,8 @@ GUARDED = {"set": "Set command on system without atoms", "velocity": "Velocity c
 AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
 RUN_COMMANDS = ("run", "minimize")
+#: The label that opens stage k's marker where it stands inline in an if (its echo marks the stage)
+STAGE_LABEL = "restitution_stage_"
 #: A deck's folder copied whole; a larger one is refused (with the files above it that it names)
 MAX_FOLDER_BYTES = 200 * 2 ** 20
 #: How many folders above the deck's its files may reach by ``..`` (a CFDEM case's ``../DEM/...``):
@@ -549,6 +551,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
     if word == "quit":
         path = scratch.root / f"quit_{sum(1 for _ in scratch.root.glob('quit_*'))}"
         path.write_text(_audit_lines(scratch, marker(None, key)))
+        if not top and getattr(marker, "inline", False):
+            return _inline(marker(None, key))
         return f"include {path}"
     if word == "fix":
         words = key.split()
@@ -581,6 +585,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         for piece, quote in segments_of(key):
             if quote and piece.endswith(quote) and len(piece) >= 2 * len(quote):
                 _quoted(scratch, normalised(piece[len(quote):-len(quote)]), loc)
+        if not top and getattr(marker, "inline", False):
+            return _inline(f"label {STAGE_LABEL}{k}\n" + marker(k, key))
         return f"include {path}"
     if word == "if":
         return _safe_if(command, loc, scratch, marker)
@@ -594,6 +600,16 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         _quoted(scratch, probe, loc)
         return f'if "$(count(all)) > 0" then "{key}" else "{probe}"'
     return None
+
+
+def _inline(text: str) -> list:
+    """A marker's commands as an if runs them, one quoted argument each (:func:`_safe_if`)."""
+    return [line for line in text.split("\n") if line.strip()]
+
+
+def _quote(command: str) -> str:
+    """One command as an if's argument: in double quotes, or single where it holds a double."""
+    return f"'{command}'" if '"' in command else f'"{command}"'
 
 
 def _timeout_zero(key: str) -> bool:
@@ -661,7 +677,10 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
             if previous not in ("if", "elif") and normalised(inner):
                 _quoted(scratch, normalised(inner), loc)
                 new = _safe(inner, loc, scratch, marker, top=False)
-                if new is not None:
+                if isinstance(new, list):
+                    changed = True
+                    piece = " ".join(map(_quote, new))
+                elif new is not None:
                     changed = True
                     piece = f"{quote}{new}{quote}"
             previous = piece
@@ -673,7 +692,10 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
                 if previous not in ("if", "elif") and word not in ("if", "then", "elif", "else"):
                     _quoted(scratch, normalised(word), loc)
                     new = _safe(word, loc, scratch, marker, top=False)
-                    if new is not None:
+                    if isinstance(new, list):
+                        changed = True
+                        words[k] = " ".join(map(_quote, new))
+                    elif new is not None:
                         changed = True
                         words[k] = f'"{new}"'
                 previous = word

@@ -16,7 +16,7 @@ from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
-from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, UNSET, Scratch, normalised
+from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, STAGE_LABEL, UNSET, Scratch, normalised
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS, RUN_PRINTED
 
@@ -101,8 +101,8 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     ...                                    "pair_coeff * * hooke 2 0\\nvariable a equal 2\\n", s)]
     [((None, 1), 'variable a equal 2'), ((None, 2), 'pair_coeff * * hooke 2 0')]
     """
-    prefix = f"include {scratch.root}/stage_"
-    marker = re.compile(rf"include {re.escape(str(scratch.root))}/stage_(\d+)")
+    prefix, inline = f"include {scratch.root}/stage_", f"label {STAGE_LABEL}"
+    marker = re.compile(rf"include {re.escape(str(scratch.root))}/stage_(\d+)|label {STAGE_LABEL}(\d+)")
     restart = re.compile(rf"include {re.escape(str(scratch.root))}/restart_(\d+)")
     tagged = re.compile(rf"{re.escape(scratch.tag)}(\d+|{AUDIT})\s*$")
     dump = f"write_dump all custom {scratch.root / ATOMS} "
@@ -143,9 +143,9 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
             out.append(Executed(unset_at, key[len(UNSET) + 1:], unset=True))
             unset_at = None
             continue
-        m = marker.fullmatch(key) if key.startswith(prefix) else None
+        m = marker.fullmatch(key) if key.startswith((prefix, inline)) else None
         if m:
-            stage = int(m.group(1))
+            stage = int(m.group(1) or m.group(2))
             f, n, run = scratch.stages[stage]
             stage_at = len(out)
             out.append(Executed((f, n), run, stage, False))

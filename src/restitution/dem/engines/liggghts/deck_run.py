@@ -85,6 +85,9 @@ def marker(root: Path, real: bool = False):
         # no "coeffs" and no time step; the audit reads it back, never the binary file)
         return f"{read}\ninfo system groups out append {root / RESTART_INFO}\n"
     text.restart = restart
+    # LIGGGHTS 3.8.0 stops on an include inside an if ("Cannot use include command within an if
+    # command"): a run or quit an if runs gets the marker's commands inline (field round 20, L95, L97)
+    text.inline = True
     return text
 
 
