@@ -1375,9 +1375,10 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         deck.bonds = (loc, line)
     if style in ADAPT:
         parts, keys = adapt_parts(words)
-        if keys.get("reset") == "yes" and any(kind == "atom" and args[:1] != ["charge"] for kind, args in parts):
-            # the engine's pass writes the atoms after its run's set-up and end, the sizes put back:
-            # the run's own are never read
+        if keys.get("reset") == "yes" and any(kind == "atom" and args[:1] != ["charge"] for kind, args in parts) \
+                and (deck.code != "LAMMPS" or deck.ran):
+            # LAMMPS' pass writes the atoms by a dump at its run's set-up, as the run sees them; the
+            # others write them after the run, the sizes put back: the run's own are never read
             raise DeckError(where, line, "fix adapt ... reset yes puts the atoms' sizes back at the end of each run, "
                                          "before the engine's pass writes them: the sizes during the run are not read")
     if style in BESIDE:

@@ -18,7 +18,7 @@ from pathlib import Path
 
 from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, STAGE_LABEL, UNSET, Scratch, normalised
 from ..deck_text import TRIPLE, ScriptError, segments, words
-from ..dialect.child import ATOMS, RUN_PRINTED
+from ..dialect.child import ATOMS, RUN_PRINTED, SETUP_DUMP
 
 __all__ = ["Executed", "HeldSizes", "executed", "skipped", "unchecked", "written_then_read", "snapshots", "engine_error", "first_unchecked",
            "SEEDED", "deck_commands"]
@@ -105,7 +105,8 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
     marker = re.compile(rf"include {re.escape(str(scratch.root))}/stage_(\d+)|label {STAGE_LABEL}(\d+)")
     restart = re.compile(rf"include {re.escape(str(scratch.root))}/restart_(\d+)")
     tagged = re.compile(rf"{re.escape(scratch.tag)}(\d+|{AUDIT})\s*$")
-    dump = f"write_dump all custom {scratch.root / ATOMS} "
+    # the marker's dump of the atoms: LAMMPS' at its run's set-up, LIGGGHTS' after its step
+    dump = (f"write_dump all custom {scratch.root / ATOMS} ", f"dump {SETUP_DUMP}")
     lines = _echo_lines(echo)
     # a loop echoes the same few lines thousands of times: each distinct line normalised once, and
     # scanned once for a $ outside quotes (a marker's quoted if is long)

@@ -37,6 +37,8 @@ RESTART_INFO = "restart_info"
 #: run unsubstituted (LIGGGHTS' marker runs one step of its own): the run's text as the engine
 #: substitutes it, so that its length is the deck's
 RUN_PRINTED = "restitution_run"
+#: The ID prefix of the dump a LAMMPS marker writes the atoms with at its run's set-up
+SETUP_DUMP = "restitution_atoms_"
 #: A pass whose atoms files grow beyond this is stopped like one out of time
 _MAX_OUTPUT = 512 * 2 ** 20
 #: The most of an engine's screen (its echo) the audit reads: a pass that writes more is stopped

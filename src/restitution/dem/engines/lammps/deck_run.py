@@ -15,7 +15,8 @@ import os
 import sys
 from pathlib import Path
 
-from ...dialect.child import ATOMS, ATOMS_AT_END, RESTART_INFO, EngineRun, engine_environment, run_child
+from ...dialect.child import (ATOMS, ATOMS_AT_END, RESTART_INFO, SETUP_DUMP, EngineRun, engine_environment,
+                              run_child)
 
 __all__ = ["ENGINE", "MAKES_RUNS", "INSTALL", "available", "marker", "run_copy", "clockable", "charges"]
 
@@ -88,7 +89,7 @@ def marker(root: Path, clock: bool = False, real: bool = False):
     --------
     >>> print(marker(Path("/s"))(0, "run 10"))
     run 10
-    if "${restitution_check_0} != 0" then "variable restitution_check_0 string ${restitution_every}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" "write_dump all custom /s/atoms type radius mass modify format float %.17g append yes"
+    if "${restitution_check_0} != 0" then "variable restitution_check_0 string ${restitution_every}" "timer timeout off" "dump restitution_atoms_0 all custom 1 /s/atoms type radius mass" "dump_modify restitution_atoms_0 format float %.17g append yes" "run 0 post no" "undump restitution_atoms_0" "timer timeout 0 every 1"
     <BLANKLINE>
     >>> print(marker(Path("/s"), real=True)(0, "run 10"))
     run 10
@@ -104,9 +105,12 @@ def marker(root: Path, clock: bool = False, real: bool = False):
         # what it checks before every run (all pair coefficients set, ...); at the marker's first
         # run, and at every run where the pass checks every one (run_copy's check_every). One line,
         # no & continuation: the scratch copy tags each of the marker's lines with a comment
+        # the atoms are written by a dump at that run's set-up, as the run sees them: a fix adapt with
+        # reset yes puts their sizes back when a run ends, before any command after it could read them
+        # (field rounds 19, 20: f02, s18 were refused)
         return (f'{run}\nif "${{restitution_check_{k}}} != 0" then "variable restitution_check_{k} string '
-                f'${{restitution_every}}" "timer timeout off" "run 0 post no" "timer timeout 0 every 1" '
-                f'"{_dump(root / ATOMS)} append yes"\n' + (_clock(run) if clock else ""))
+                f'${{restitution_every}}" "timer timeout off" "{_setup_dump(root / ATOMS, k)}" "run 0 post no" '
+                f'"undump {SETUP_DUMP}{k}" "timer timeout 0 every 1"\n' + (_clock(run) if clock else ""))
 
     def restart(read: str) -> str:
         # what LAMMPS holds after the read, in its own words: units, atom and pair style, types,
@@ -157,6 +161,14 @@ def _python_folders() -> list:
 def _dump(path: Path) -> str:
     """The command that writes each atom's type, radius and mass, all digits kept, to ``path``."""
     return f"write_dump all custom {path} type radius mass modify format float %.17g"
+
+
+def _setup_dump(path: Path, k: int) -> str:
+    """The two commands, as an if's quoted arguments, of the dump (ID restitution_atoms_k) that
+    writes each atom's type, radius and mass, all digits kept, to ``path`` at the next run's set-up,
+    appended."""
+    return (f'dump {SETUP_DUMP}{k} all custom 1 {path} type radius mass" '
+            f'"dump_modify {SETUP_DUMP}{k} format float %.17g append yes')
 
 
 def _ending(root: Path) -> str:
