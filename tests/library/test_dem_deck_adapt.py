@@ -3,11 +3,12 @@ the run's set-up (N = 0) or every N steps, the engine's pass holds the adapted s
 marker), and the audit uses it; its note said "its size is not computed" all the same. With
 ``reset yes`` LAMMPS puts the sizes back when the run ends, before the marker writes the atoms: the
 audit printed eps 0.63330 at the original diameter 0.01 with exit 0, where the run has 0.006
-(0.76526). Measured in LAMMPS 22 Jul 2025."""
+(0.76526); it was refused next, and is now read at the run's set-up, where the run's sizes are.
+Measured in LAMMPS 22 Jul 2025."""
 
 import pytest
 
-from deck_cli import agrees_with_lammps, audit, lammps_spheres, needs_lammps, run
+from deck_cli import agrees_with_lammps, audit, lammps_spheres, needs_lammps
 
 LINE = "pair_coeff * * hertz 1e6 300 damping mass_velocity tangential linear_nohistory 1 0.3"
 DECK = lammps_spheres((0.01, 2500.0)).replace("atom_style sphere", "atom_style sphere 1") + LINE + """
@@ -19,6 +20,7 @@ run 100
 
 
 def _deck(tmp_path, value="0.006", every=0, keys=""):
+    tmp_path.mkdir(parents=True, exist_ok=True)
     (tmp_path / "in.deck").write_text(DECK.format(value=value, every=every, keys=keys))
     return tmp_path / "in.deck"
 
@@ -48,8 +50,12 @@ def test_a_diameter_that_may_change_as_the_run_goes_is_not_computed(tmp_path):
 
 @needs_lammps
 @pytest.mark.dem
-def test_sizes_put_back_after_the_run_are_refused(tmp_path):
-    """Before: eps at the original diameter 0.01, exit 0."""
-    status, out, err = run(_deck(tmp_path, keys=" reset yes"), "--g", "0.5")
-    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
-    assert "line 12 (fix ad all adapt 0 atom diameter v_d reset yes)" in err and "reset yes" in err, err
+def test_sizes_put_back_after_the_run_are_read_as_the_run_sees_them(tmp_path):
+    """Before: eps at the original diameter 0.01, exit 0; then refused. LAMMPS' marker now dumps the
+    atoms at the run's set-up, where the adaptation stands: the rows are those of reset no, whose
+    sizes LAMMPS keeps after the run (radius 0.003, density 2500, checked head-on above)."""
+    put_back, _ = audit(_deck(tmp_path / "yes", keys=" reset yes"), "--g", "0.5")
+    kept, _ = audit(_deck(tmp_path / "no"), "--g", "0.5")
+    assert [(r["types"], r["eps"], r["overlap_limit"]) for r in put_back["pairs"]] == \
+        [(r["types"], r["eps"], r["overlap_limit"]) for r in kept["pairs"]]
+    assert put_back["pairs"][0]["overlap_limit"] == pytest.approx(0.006, rel=1e-12)
