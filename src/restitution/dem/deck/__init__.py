@@ -580,7 +580,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import PUSHING_FIX_PREFIXES, scratch_copy
     from .runtime import resized_by_runs
-    from .stream import deck_commands, engine_error, skipped, snapshots, unchecked, written_then_read
+    from .stream import (deck_commands, engine_error, random_drawn, skipped, snapshots, unchecked,
+                         written_then_read)
     if engine == "LAMMPS":
         from ..engines.lammps import deck_run
     else:
@@ -613,6 +614,12 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                                                   "its runs skipped, does not show: not audited")
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
+        if (drawn := random_drawn(commands, scratch)) is not None:
+            raise DeckError(place(drawn[0]), drawn[1], "it reads a variable drawn from random() or normal(), whose "
+                                                       "every evaluation draws, after the engine run by hand has drawn "
+                                                       "from it where the audit's pass does not (its thermo output or "
+                                                       "a fix as the runs go, a print or shell line the audit does not "
+                                                       "run): the value read here is not the pass's; not audited")
         if (hit := written_then_read(commands, scratch)) is not None:
             (wrote, writer), (read, reader) = hit
             raise DeckError(place(read), reader, f"it reads a file that {place(wrote)} ({writer}) names, which the "

@@ -856,7 +856,8 @@ def _run_every(words: list, where: str, line: str) -> bool:
                                          "contact from the second part on, and the engine's pass never runs them "
                                          "(its runs skipped or cut to one step): not audited; split the run into "
                                          "runs with the commands between them")
-    quits = [command for command in commands if "quit" in command.split()]
+    # a quit quoted inside an if's branch counts too (field round 21, c28: 'print done' 'quit')
+    quits = [command for command in commands if "quit" in (w.strip("\"'") for w in command.split())]
     if any(command.split()[0] != "quit" for command in quits):
         raise DeckError(where, line, "run ... every runs an if that may quit between the run's parts: whether the "
                                      "deck ends there depends on what the run does, which the engine's pass (its runs "

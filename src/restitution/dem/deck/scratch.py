@@ -75,6 +75,11 @@ GUARDED = {"set": "Set command on system without atoms", "velocity": "Velocity c
 AUDIT = "audit"
 #: Runs: each a stage, its marker the include that runs it and then writes the atoms' state
 RUN_COMMANDS = ("run", "minimize")
+#: The characters LAMMPS 22 Jul 2025 replaces in its input by ASCII ones (measured, each alone in a
+#: line: typographic quotes, the Unicode spaces, the word joiner and byte-order mark, the minus sign)
+_ASCII = str.maketrans({**{c: " " for c in "\u00a0\u202f\u2060\ufeff"},
+                        **{chr(c): " " for c in range(0x2000, 0x200c)},
+                        "\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2212": "-"})
 #: The label that opens stage k's marker where it stands inline in an if (its echo marks the stage)
 STAGE_LABEL = "restitution_stage_"
 #: A deck's folder copied whole; a larger one is refused (with the files above it that it names)
@@ -290,9 +295,13 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         try:
             # bytes that are not UTF-8 (a Latin-1 comment from another editor) kept as they are:
             # the engines read bytes, and a file passed over here would run unmade safe
-            text = p.read_text(encoding="utf-8", errors="surrogateescape")
+            original = p.read_text(encoding="utf-8", errors="surrogateescape")
         except OSError:
             continue
+        # LAMMPS reads typographic quotes and spaces in its input as their ASCII equivalents (it
+        # warns and goes on): the copy is made of the text it reads (field round 21, a05: an if in
+        # typographic quotes ran its branch in LAMMPS, unseen by the audit)
+        text = original.translate(_ASCII) if mapped and getattr(marker, "ascii", False) else original
         label = None if p == scratch.deck else labels.get(p) or os.path.relpath(p, copy)
         # a file named as written is a script: its lines get their tags; any other (a data file,
         # or a script named by a variable) is left as it is, its lines known by their text
@@ -303,7 +312,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         if not mapped:
             scratch.lines = lines
             scratch.files.pop(label, None)
-        if new != text:
+        if new != original:
             p.write_text(new, encoding="utf-8", errors="surrogateescape")
     return scratch
 

@@ -325,6 +325,67 @@ def _read_file(text: str) -> str | None:
     return None
 
 
+#: A variable drawn from the engine's random-number generator at each evaluation
+_RANDOM_DEF = re.compile(r"variable\s+(\S+)\s+\S+.*\b(?:random|normal)\(")
+#: Commands that evaluate a variable as the runs go (their output, a fix's or dump's values)
+_DURING_RUNS = ("thermo_style", "thermo_modify", "fix", "dump", "compute", "fix_modify")
+
+
+def random_drawn(commands: list, scratch: Scratch) -> tuple | None:
+    """The first command of the deck that reads a variable drawn from ``random()`` or ``normal()``
+    after the engine run by hand has drawn from it where the audit's pass does not: a command the
+    pass never runs that reads it (a print, a shell line), or a run while a command that reads it
+    as the runs go stands (thermo output, a fix, a dump) or its ``every`` reads it. Each evaluation
+    draws, so the value read there is not the pass's (field round 21, r25: thermo output of v_r in
+    a run, then an if on ${r}: LAMMPS took the other branch). ((file, line), text), or None.
+
+    Parameters
+    ----------
+    commands : list of Executed
+    scratch : Scratch
+
+    Returns
+    -------
+    tuple or None
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), stages=[(None, 3, "run 10")],
+    ...             lines={"variable r equal random(1,9,5)": (None, 1), "thermo_style custom step v_r": (None, 2),
+    ...                    "run 10": (None, 3), "pair_coeff * * hooke ${r} 0": (None, 4)})
+    >>> random_drawn([Executed((None, 2), "thermo_style custom step v_r"), Executed((None, 3), "run 10", 0),
+    ...               Executed((None, 4), "pair_coeff * * hooke 7.2 0")], s)
+    ((None, 4), 'pair_coeff * * hooke ${r} 0')
+    """
+    names = {m.group(1) for key in scratch.lines if (m := _RANDOM_DEF.match(key))}
+    if not names:
+        return None
+    alt = "|".join(map(re.escape, sorted(names, key=len, reverse=True)))
+    single = "|".join(re.escape(n) for n in names if len(n) == 1)
+    reads = re.compile(rf"v_(?:{alt})\b|\$\{{(?:{alt})\}}" + (rf"|\$(?:{single})" if single else ""))
+    at: dict = {}
+    for key, loc in scratch.lines.items():
+        at.setdefault(loc, []).append(key)
+    # the generator is one, whatever the seed after its first use: a random() of a command's own
+    # draws from it too (field round 21, r21: print "$(random(0,1,99))")
+    draws = re.compile(rf"{reads.pattern}|\b(?:random|normal)\(")
+    during = any(key.split()[0] in _DURING_RUNS and draws.search(key) for key in scratch.lines if key.split())
+    drawn = False
+    for cmd in commands:
+        k = _skipped_index(cmd, scratch)
+        if k is not None:
+            drawn = drawn or bool(draws.search(scratch.skipped[k][2]))
+            continue
+        if cmd.stage is not None:
+            drawn = drawn or during or bool(draws.search(cmd.text))
+            continue
+        read = [key for key in at.get(cmd.loc, ()) if reads.search(key) and not _RANDOM_DEF.match(key)]
+        if drawn and read:
+            return cmd.loc, read[0]
+    return None
+
+
 def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     """The first read of a file that a skipped command reached before it names (``shell cp a b``
     then ``include b``; ``print ... file b`` then ``include b``): the engine's pass never wrote it,

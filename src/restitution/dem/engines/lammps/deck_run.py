@@ -120,6 +120,8 @@ def marker(root: Path, clock: bool = False, real: bool = False):
     text.restart = restart
     # LAMMPS stops on a set that meets no atom: the copy guards each one (scratch.UNSET)
     text.guards_set = True
+    # LAMMPS reads typographic quotes and spaces as ASCII ones: the copy is made of what it reads
+    text.ascii = True
     return text
 
 
