@@ -12,7 +12,7 @@ from pathlib import Path
 import json
 import pytest
 
-from deck_cli import needs_lammps, run
+from deck_cli import needs_lammps, needs_liggghts, run
 
 BASE = (Path(__file__).resolve().parents[1] / "field20" / "decks" / "z30_partition_yes_1_pair_coeff" / "in.deck")
 KN9000 = "pair_coeff * * hooke 9000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
@@ -64,3 +64,17 @@ def test_a_quit_quoted_in_an_every_if_branch_is_refused(tmp_path):
     status, got, err = deck(tmp_path, "run 200 every 100 \"if '$(step) >= 100' then 'print done' 'quit'\"\n"
                             + KN9000 + "\nrun 100")
     assert status == 2 and "may quit" in err, err
+
+
+@needs_liggghts
+@pytest.mark.dem
+def test_a_liggghts_deck_whose_liggghts_lines_are_included_runs_in_liggghts(tmp_path):
+    # field round 21, N01: every line only LIGGGHTS knows sat in an included settings file, and the
+    # deck was run in LAMMPS, which stopped on it; LIGGGHTS' hertz returns the typed e (0.5)
+    lines = (BASE.parents[1] / "L86_liggghts_quit_minimal" / "in.deck").read_text().splitlines()
+    settings = [ln for ln in lines[:lines.index("run 1000")] if not ln.startswith("#")]
+    (tmp_path / "in.settings").write_text("\n".join(settings) + "\n")
+    (tmp_path / "in.deck").write_text("include in.settings\nrun 1000\n")
+    status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
+    assert status == 0, err
+    assert [r["eps"][0] for r in json.loads(out)["pairs"] if r["types"] == [1, 1]] == [pytest.approx(0.5, abs=2e-7)]
