@@ -1,5 +1,5 @@
 """Field round 21: one compact block per deck folder: rc, the engine's runs and PROBE lines, per stage the rows at the
-last speed (model cut short, eps), and the stderr notes other than the usual gravity / unused-type / stage-count ones.
+speed nearest 1 (model cut short, eps), and the stderr notes other than the usual gravity / unused-type / stage-count ones.
 usage: python brief21.py DECKDIR ..."""
 import json, os, sys
 SKIP = ("fix gravity (grav", "has no particle", "the contact settings change between runs", "at the deck's time step",
@@ -17,7 +17,8 @@ for d in sys.argv[1:]:
         rows = []
         for r in st.get("pairs", []) + st.get("walls", []):
             lab = ("p" + "".join(map(str, r["types"]))) if "wall" not in r else f"w{r['wall']}{r['types']}"
-            e = r["eps"][-1]
+            sp = [abs(x - 1.0) for x in r["speeds"]]
+            e = r["eps"][sp.index(min(sp))]
             rows.append(f"{lab}={'None' if e is None else '%.5f' % e}" + (f"[{r.get('sizes')}]" if r.get("sizes") else ""))
         print(f"  s{k+1}: " + " ".join(rows)[:500])
         ms = sorted({r["model"][:80] for r in st.get("pairs", []) + st.get("walls", [])})

@@ -130,6 +130,30 @@ deck("r17_random_atom_diameter", "# diameters from an atom-style random(): sizes
 deck("r18_count_region_after_fall", "# count of spheres in a low region after the fall (group by region): 2 -> kn 9000\n"
      + BASE() + TWO + "run 3000\nregion low block INF INF INF INF 0 0.0035 units box\nvariable nl equal count(all,low)\nif \"${nl} > 1\" then \"pair_coeff * * " + hk(9000) + "\"\nprint \"PROBE nl ${nl}\"\nrun 100\n", g=1)
 
+deck("r19_thermo_draws_random", "# thermo_style custom step v_r with random(): every thermo output of run 1 draws one number; kn = ${r} after the run is the next draw\n"
+     + BASE() + TWO + "variable r equal random(1000,9000,4711)\nthermo_style custom step v_r\nthermo 10\nrun 100\nvariable kn equal ${r}\n" + PRB + "pair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
+deck("r20_random_diameter_loop_print", "# four type-1 spheres sized in a loop by an equal-style random() (3..6 mm), with a print of a random x each pass: the print draws too\n"
+     + BASE() + "variable x equal random(0.005,0.035,1234)\nvariable d equal random(0.003,0.006,1234)\nvariable i loop 4\nlabel lp\nprint \"PROBE placing sphere $i at x ${x}\"\ncreate_atoms 1 single $(0.008*v_i) 0.02 0.01\nset atom $i diameter ${d} density 2500\nnext i\njump SELF lp\ncreate_atoms 2 single 0.03 0.03 0.05\nset type 2 diameter 0.006 density 2500\nrun 100\n", g=1)
+deck("r21_random_immediate_in_print", "# print \"$(random(0,1,99))\" draws from the same generator as v_r: kn = ${r} is the second draw\n"
+     + BASE() + "variable r equal random(1000,9000,99)\nprint \"PROBE seed draw $(random(0,1,99))\"\nvariable kn equal ${r}\n" + PRB + "pair_coeff * * hooke ${kn} 3000 " + K + "\n" + TWO + "run 100\n", g=1)
+deck("r22_fix_print_draws_random", "# fix print every 20 steps prints ${r} (a draw each time) during run 1; kn = ${r} after it\n"
+     + BASE() + TWO + "variable r equal random(1000,9000,4711)\nfix pr all print 20 \"PROBE r ${r}\" screen yes\nrun 100\nunfix pr\nvariable kn equal ${r}\n" + PRB + "pair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
+deck("r23_shell_echo_draws_random", "# shell echo ${r} (the substitution draws even though the shell command is only a process): kn = ${r} next\n"
+     + BASE() + "variable r equal random(1000,9000,4711)\nshell echo ${r}\nvariable kn equal ${r}\n" + PRB + "pair_coeff * * hooke ${kn} 3000 " + K + "\n" + TWO + "run 100\n", g=1)
+deck("r24_random_type_choice_print", "# a loop makes 6 spheres; each pass prints a random number then picks type 2 if another draw < 0.5 (6 mm), else type 1 (4 mm)\n"
+     + BASE() + "variable r equal random(0,1,2024)\nvariable i loop 6\nlabel lp\nprint \"PROBE pass $i draw ${r}\"\nif \"${r} < 0.5\" then \"create_atoms 2 single $(0.006*v_i) 0.02 0.01\" else \"create_atoms 1 single $(0.006*v_i) 0.02 0.01\"\nnext i\njump SELF lp\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 7800\nprint \"PROBE n2 $(count(all))\"\nrun 100\n", g=1)
+deck("r25_thermo_draws_then_if", "# thermo output v_r during run 1 (11 draws), then if \"${r} > 5000\" picks kn 9000 else kn 500: the branch depends on the draw count\n"
+     + BASE() + TWO + "variable r equal random(1000,9000,4711)\nthermo_style custom step v_r\nthermo 10\nrun 100\nif \"${r} > 5000\" then \"pair_coeff * * " + hk(9000) + "\" else \"pair_coeff * * " + hk(500) + "\"\nrun 100\n", g=1)
+deck("u07_units_cgs_same_as_si", "# units cgs, the SI deck's contact in cgs: kn 2e6 dyn/cm, gamma 3000 1/s, 0.4/0.6 cm, 2.5 g/cm3: eps as the SI deck (p11 0.49726)\n"
+     + head(units="cgs", box="0 4 0 4 0 10") + G1(hk("2e6")) + "fix grav all gravity 981 vector 0 0 -1\n" + f"fix floor all wall/gran granular {hk('2e6')} zplane 0 NULL\n"
+     + "fix integ all nve/sphere\ntimestep 1e-5\ncreate_atoms 1 single 2 2 1\ncreate_atoms 2 single 1 1 1\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 2.5\nrun 100\n", g=100)
+deck("u08_units_micro_same_as_si", "# units micro, the SI deck's contact: kn 2e6 pg/us^2, gamma 3e-3 1/us, 4000/6000 um, 2.5e-3 pg/um^3: eps as the SI deck (p11 0.49726)\n"
+     + head(units="micro", box="0 40000 0 40000 0 100000") + G1(hk("2e6", "3e-3")) + "fix grav all gravity 9.81e-6 vector 0 0 -1\n" + f"fix floor all wall/gran granular {hk('2e6', '3e-3')} zplane 0 NULL\n"
+     + "fix integ all nve/sphere\ntimestep 10\ncreate_atoms 1 single 20000 20000 10000\ncreate_atoms 2 single 10000 10000 10000\nset type 1 diameter 4000 density 2.5e-3\nset type 2 diameter 6000 density 2.5e-3\nrun 100\n", g=1)
+deck("u09_units_cgs_hertz_material_same_as_si", "# units cgs, hertz/material E 1e8 dyn/cm2 (1e7 Pa), eta 1.4e8 (1.4e7 Pa s in poise), 0.4/0.6 cm, 2.5 g/cm3\n"
+     + head(units="cgs", box="0 4 0 4 0 10") + G1(HM.replace("1e7 1.4e7", "1e8 1.4e8")) + "fix grav all gravity 981 vector 0 0 -1\n" + f"fix floor all wall/gran granular {HM.replace('1e7 1.4e7', '1e8 1.4e8')} zplane 0 NULL\n"
+     + "fix integ all nve/sphere\ntimestep 1e-6\ncreate_atoms 1 single 2 2 1\ncreate_atoms 2 single 1 1 1\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 2.5\nrun 100\n", g="10 100")
+
 # ================================================================ v*: variable styles and functions
 deck("v01_getenv_home", "# variable h getenv HOME: set in the engine's shell, so the if takes kn 9000; an empty HOME would keep kn 2000\n"
      + BASE() + "variable h getenv HOME\nif \"${h} != ''\" then \"pair_coeff * * " + hk(9000) + "\"\nprint \"PROBE home ${h}\"\n" + TWO + "run 100\n", g=1)
@@ -477,6 +501,11 @@ L("N37_smart_quotes_if_liggghts", "# LIGGGHTS 3.8 if with typographic quotes: no
   + LB() + ATOMS + "if \u201c1 > 0\u201d then \u201cfix m3 all property/global coefficientRestitution peratomtypepair 3 0.25 0.25 0.25 0.25 0.25 0.25 0.25 0.25 0.25\u201d\n" + RUN)
 L("N38_run_every_liggghts_string", "# LIGGGHTS: a run from string variable with upto: ${r} 1000 upto; then e 0.2 and run 100\n"
   + LB() + ATOMS + LRUN + "variable r string \"run 1000 upto\"\n${r}\n" + E3b(0.2) + "run 100\n")
+
+L("N39_random_e_after_print", "# LIGGGHTS: e from an equal-style random() (0.2..0.9); a print of ${r} draws first, so e is the second draw\n"
+  + lhead() + MAT3 + "variable r equal random(0.2,0.9,32452843)\nprint \"PROBE first ${r}\"\nvariable e equal ${r}\nprint \"PROBE e ${e}\"\nfix m3 all property/global coefficientRestitution peratomtypepair 3 ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e}\n" + HERTZ + WALL3 + ATOMS + RUN)
+L("N40_random_e_thermo_draws", "# LIGGGHTS: thermo_style custom step v_r during run 1 draws; e = ${r} after it for run 2\n"
+  + LB() + ATOMS + LRUN + "variable r equal random(0.2,0.9,32452843)\nthermo_style custom step v_r\nthermo 100\nrun 1000\nvariable e equal ${r}\nprint \"PROBE e ${e}\"\nfix m3 all property/global coefficientRestitution peratomtypepair 3 ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e}\nrun 100\n")
 
 
 def write(name):
