@@ -91,6 +91,17 @@ deck("a24_cmd_from_string_variable", "# a whole command from a string variable: 
 deck("a25_run_from_string_variable", "# the run from a string variable: variable r string run; ${r} 100 at kn 2000, then kn 9000 and run 100: two stages\n"
      + BASE() + TWO + "variable r string run\n${r} 100\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
 
+deck("a26_nbsp_inside_ascii_if_body", "# an ASCII if whose body holds non-breaking spaces (UTF-8 C2 A0): LAMMPS makes them spaces and runs pair_coeff kn 7000\n"
+     + BASE() + "if \"1 > 0\" then \"pair_coeff\u00a0*\u00a0*\u00a0hooke 7000 3000 " + K + "\"\n" + TWO + "run 100\n", g=1)
+deck("a27_smart_quotes_run_every_body", "# run 100 every 50 “pair_coeff ... 9000” (typographic quotes around the every command) then run 100 at kn 9000\n"
+     + BASE() + TWO + "run 100 every 50 \u201cpair_coeff * * " + hk(9000) + "\u201d\nrun 100\n", g=1)
+deck("a28_smart_quotes_if_hertz_material", "# hertz/material E 1e7 (viscoelastic) and an if with typographic quotes raising E to 5e7: engine E 5e7\n"
+     + BASE(HM) + TWO + "if \u201c1 > 0\u201d then \u201cpair_coeff * * " + HM.replace("1e7", "5e7") + "\u201d\nrun 100\n", g=1)
+deck("a29_smart_quotes_if_labels", "# labelmap and an if with typographic quotes setting pair_coeff steel steel kn 8000 (type 2)\n"
+     + head() + "labelmap atom 1 glass 2 steel\n" + G1(HK) + GRAV + FLOOR + TAIL + TWO + "if \u201c1 > 0\u201d then \u201cpair_coeff steel steel " + hk(8000) + "\u201d\nrun 100\n", g=1)
+deck("a30_smart_quotes_if_then_run_stage", "# two runs; between them an if with typographic quotes sets kn 9000: stage 2 at kn 9000 in the engine\n"
+     + BASE() + TWO + "run 100\nif \u201c1 > 0\u201d then \u201cpair_coeff * * " + hk(9000) + "\u201d\nrun 100\n", g=1)
+
 # ================================================================ r*: what runs change, read back
 deck("r01_ke_settle_loop", "# settling loop: run 200, if the kinetic energy is above 1e-12 jump back (LAMMPS loops until settled), then kn 9000 for the last run\n"
      + BASE() + TWO + "variable n loop 20\nlabel settle\nrun 200\nif \"$(ke) < 1e-12\" then \"jump SELF settled\"\nnext n\njump SELF settle\nlabel settled\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
@@ -153,6 +164,11 @@ deck("u08_units_micro_same_as_si", "# units micro, the SI deck's contact: kn 2e6
 deck("u09_units_cgs_hertz_material_same_as_si", "# units cgs, hertz/material E 1e8 dyn/cm2 (1e7 Pa), eta 1.4e8 (1.4e7 Pa s in poise), 0.4/0.6 cm, 2.5 g/cm3\n"
      + head(units="cgs", box="0 4 0 4 0 10") + G1(HM.replace("1e7 1.4e7", "1e8 1.4e8")) + "fix grav all gravity 981 vector 0 0 -1\n" + f"fix floor all wall/gran granular {HM.replace('1e7 1.4e7', '1e8 1.4e8')} zplane 0 NULL\n"
      + "fix integ all nve/sphere\ntimestep 1e-6\ncreate_atoms 1 single 2 2 1\ncreate_atoms 2 single 1 1 1\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 2.5\nrun 100\n", g="10 100")
+
+deck("r26_normal_draw_in_print_then_diameter", "# print of $(normal(0,1,77)) draws from the shared generator; set type 2 diameter from v_d = random(0.004,0.008,77) next\n"
+     + BASE() + TWO + "variable d equal random(0.004,0.008,77)\nprint \"PROBE noise $(normal(0,1,77))\"\nset type 2 diameter ${d}\nrun 100\n", g=1)
+deck("r27_thermo_random_then_set_density", "# thermo_style custom v_r in run 1 (random 2000..8000), then set type 2 density ${r} for run 2\n"
+     + BASE() + TWO + "variable r equal random(2000,8000,4711)\nthermo_style custom step v_r\nthermo 25\nrun 100\nset type 2 density ${r}\nrun 100\n", g=1)
 
 # ================================================================ v*: variable styles and functions
 deck("v01_getenv_home", "# variable h getenv HOME: set in the engine's shell, so the if takes kn 9000; an empty HOME would keep kn 2000\n"
@@ -282,6 +298,16 @@ deck("c23_if_body_from_variable", "# if \"1 > 0\" then \"${c}\" with c holding p
      + BASE() + "variable c string \"pair_coeff * * " + hk(7000) + "\"\nif \"1 > 0\" then \"${c}\"\n" + TWO + "run 100\n", g=1)
 deck("c24_next_from_variable_loop", "# a loop whose pair_coeff line is ${pc${i}}-free: variable names built from i: v_k1 v_k2 (kn 3000, 6000): last 6000\n"
      + BASE() + TWO + "variable k1 equal 3000\nvariable k2 equal 6000\nvariable i loop 2\nlabel lp\npair_coeff * * hooke $(v_k${i}) 3000 " + K + "\nnext i\njump SELF lp\nrun 100\n", g=1)
+
+deck("c25_run_every_if_quit_step", "# run 200 every 100 \"if '$(step) >= 100' then quit\": LAMMPS quits after the first part; the kn 9000 stage never runs\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) >= 100' then quit\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("c26_run_every_if_quit_false_then_stage", "# run 200 every 100 \"if '$(step) > 5000' then quit\" (never true): the kn 9000 stage runs\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) > 5000' then quit\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+
+deck("c27_run_every_if_quit_continued", "# R01's form: run 200 every 100 & / \"if '$(step) >= 100' then & / 'print done' & / 'quit'\" over continued lines: LAMMPS quits after part 1; the kn 9000 stage never runs\n"
+     + BASE() + TWO + "run 200 every 100 &\n    \"if '$(step) >= 100' then &\n        'print PROBE-done' &\n        'quit'\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("c28_run_every_if_quit_two_cmds_one_line", "# run 200 every 100 \"if '$(step) >= 100' then 'print x' 'quit'\" on one line: LAMMPS quits after part 1\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) >= 100' then 'print PROBE-done' 'quit'\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
 
 # ================================================================ f*: fixes beside the contact
 deck("f01_temp_berendsen", "# fix temp/berendsen to T 0 rescales velocities every step (a thermostat on two spheres): eps not the contact's\n"
@@ -506,6 +532,12 @@ L("N39_random_e_after_print", "# LIGGGHTS: e from an equal-style random() (0.2..
   + lhead() + MAT3 + "variable r equal random(0.2,0.9,32452843)\nprint \"PROBE first ${r}\"\nvariable e equal ${r}\nprint \"PROBE e ${e}\"\nfix m3 all property/global coefficientRestitution peratomtypepair 3 ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e}\n" + HERTZ + WALL3 + ATOMS + RUN)
 L("N40_random_e_thermo_draws", "# LIGGGHTS: thermo_style custom step v_r during run 1 draws; e = ${r} after it for run 2\n"
   + LB() + ATOMS + LRUN + "variable r equal random(0.2,0.9,32452843)\nthermo_style custom step v_r\nthermo 100\nrun 1000\nvariable e equal ${r}\nprint \"PROBE e ${e}\"\nfix m3 all property/global coefficientRestitution peratomtypepair 3 ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e} ${e}\nrun 100\n")
+
+L("N41_run_every_if_quit_liggghts", "# LIGGGHTS run 2000 every 1000 \"if '${s} >= 1000' then quit\" (s equal step): quits after the first part; the e 0.2 stage never runs\n"
+  + LB() + ATOMS + LRUN + "variable s equal step\nrun 2000 every 1000 \"if '${s} >= 1000' then quit\"\n" + E3b(0.2) + "run 100\n")
+
+L("N42_run_every_if_quit_continued_liggghts", "# LIGGGHTS, R01's form: run 2000 every 1000 & / \"if '${s} >= 1000' then & / 'print done' & / 'quit'\": quits after part 1; the e 0.2 stage never runs\n"
+  + LB() + ATOMS + LRUN + "variable s equal step\nrun 2000 every 1000 &\n    \"if '${s} >= 1000' then &\n        'print PROBE-done' &\n        'quit'\"\n" + E3b(0.2) + "run 100\n")
 
 
 def write(name):

@@ -1,0 +1,16 @@
+#!/bin/sh
+# Field round 21: build the public deck(s) R* from their repositories (their text is not committed).
+# usage (from the worktree): sh tests/field21/R_fetch21.sh MIRRORS   where MIRRORS/<owner>+<name>/repo is a git directory
+# of each repository (a bare clone); the commits are pinned below. Edits are made by sed and listed in each deck's first comment.
+M=${1:?mirror directory}
+D=tests/field21/decks
+g() { git --git-dir="$M/$1/repo" show "$2:$3"; }
+# R01: ykevin09/examples_LIGGGHTS 0-element/1-undrained_simple_shear/0-25_25_25_dmax_vs_dmin_3/0-iso_comp.lmp @ f1dc1423b97def51d0b6f104ff3698091fbdbb34
+C=f1dc1423b97def51d0b6f104ff3698091fbdbb34; P=0-element/1-undrained_simple_shear/0-25_25_25_dmax_vs_dmin_3
+d=$D/R01_ykevin_iso_comp_run_every_if_quit; mkdir -p $d/input/data $d/input/mesh; touch $d/LIGGGHTS; echo "0.1 1" > $d/G; echo in.deck > $d/DECK
+{ echo "# R01 ykevin09/examples_LIGGGHTS $P/0-iso_comp.lmp @f1dc142; edits: totalStep 2e8 -> 2000, hstep 10000 -> 500, rstep -> 1000: 15625 Ottawa sand spheres (2 types), hertz e 0.8 with limitForce, six moving mesh plates, run N every M \"if '\${eBvol} < 1.2' then 'write_restart ...' 'quit'\""
+  g ykevin09+examples_LIGGGHTS $C $P/0-iso_comp.lmp | sed -e 's/^variable        totalStep equal 2e8/variable        totalStep equal 2000/' \
+    -e 's/^variable        hstep equal 10000/variable        hstep equal 500/' -e 's/^variable        rstep equal v_hstep\*10/variable        rstep equal 1000/'; } > $d/in.deck
+g ykevin09+examples_LIGGGHTS $C $P/input/data/Ottawa-F65.spl > $d/input/data/Ottawa-F65.spl
+g ykevin09+examples_LIGGGHTS $C $P/input/mesh/plane.stl > $d/input/mesh/plane.stl
+echo done
