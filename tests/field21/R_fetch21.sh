@@ -13,4 +13,15 @@ d=$D/R01_ykevin_iso_comp_run_every_if_quit; mkdir -p $d/input/data $d/input/mesh
     -e 's/^variable        hstep equal 10000/variable        hstep equal 500/' -e 's/^variable        rstep equal v_hstep\*10/variable        rstep equal 1000/'; } > $d/in.deck
 g ykevin09+examples_LIGGGHTS $C $P/input/data/Ottawa-F65.spl > $d/input/data/Ottawa-F65.spl
 g ykevin09+examples_LIGGGHTS $C $P/input/mesh/plane.stl > $d/input/mesh/plane.stl
-echo done
+
+# R02: R01's deck with the void-ratio threshold 1.2 -> 100 (true at once) and a next stage appended (e 0.5, run 1000), as a
+# modeller chaining stages writes it: LIGGGHTS quits in the run every's if after its first part; the appended stage never runs
+d=$D/R02_ykevin_iso_comp_threshold_met_next_stage; mkdir -p $d/input/data $d/input/mesh; touch $d/LIGGGHTS; echo "0.1 1" > $d/G; echo in.deck > $d/DECK
+{ echo "# R02 ykevin09/examples_LIGGGHTS $P/0-iso_comp.lmp @f1dc142; edits as R01, and threshold '< 1.2' -> '< 100', a stage appended: e 0.5 and run 1000"
+  g ykevin09+examples_LIGGGHTS $C $P/0-iso_comp.lmp | sed -e 's/^variable        totalStep equal 2e8/variable        totalStep equal 2000/' \
+    -e 's/^variable        hstep equal 10000/variable        hstep equal 500/' -e 's/^variable        rstep equal v_hstep\*10/variable        rstep equal 1000/' \
+    -e "s/if '\${eBvol} < 1.2'/if '\${eBvol} < 100'/"
+  echo "fix             m3 all property/global coefficientRestitution peratomtypepair 2 0.5 0.5 0.5 0.5"; echo "run             1000"; } > $d/in.deck
+g ykevin09+examples_LIGGGHTS $C $P/input/data/Ottawa-F65.spl > $d/input/data/Ottawa-F65.spl
+g ykevin09+examples_LIGGGHTS $C $P/input/mesh/plane.stl > $d/input/mesh/plane.stl
+echo done R02

@@ -309,6 +309,17 @@ deck("c27_run_every_if_quit_continued", "# R01's form: run 200 every 100 & / \"i
 deck("c28_run_every_if_quit_two_cmds_one_line", "# run 200 every 100 \"if '$(step) >= 100' then 'print x' 'quit'\" on one line: LAMMPS quits after part 1\n"
      + BASE() + TWO + "run 200 every 100 \"if '$(step) >= 100' then 'print PROBE-done' 'quit'\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
 
+deck("c29_run_every_if_quit_quoted_single", "# run 200 every 100 \"if '$(step) >= 100' then 'quit'\" (the one command quoted): LAMMPS quits after part 1; kn 9000 never runs\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) >= 100' then 'quit'\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("c30_run_every_if_else_quit", "# run 200 every 100 \"if '$(step) < 100' then 'print x' else 'quit'\": at step 100 the else branch quits\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) < 100' then 'print PROBE-x' else 'quit'\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("c31_plain_if_print_then_quit", "# if \"1 > 0\" then \"print PROBE-bye\" \"quit\" after run 100 (no run every): the kn 9000 stage never runs\n"
+     + BASE() + TWO + "run 100\nif \"1 > 0\" then \"print PROBE-bye\" \"quit\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("c32_run_every_two_strings_second_quit", "# run 200 every 100 \"print PROBE-a\" \"quit\" (two every-commands, the second quit): LAMMPS quits after part 1\n"
+     + BASE() + TWO + "run 200 every 100 \"print PROBE-a\" \"quit\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+deck("c33_run_every_if_quit_with_exit_status", "# run 200 every 100 \"if '$(step) >= 100' then 'quit 0'\": quit with a status\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) >= 100' then 'quit 0'\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
+
 # ================================================================ f*: fixes beside the contact
 deck("f01_temp_berendsen", "# fix temp/berendsen to T 0 rescales velocities every step (a thermostat on two spheres): eps not the contact's\n"
      + BASE() + TWO + "fix tb all temp/berendsen 1e-30 1e-30 1e-4\nrun 100\n", g=1)
