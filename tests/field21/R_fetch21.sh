@@ -25,3 +25,16 @@ d=$D/R02_ykevin_iso_comp_threshold_met_next_stage; mkdir -p $d/input/data $d/inp
 g ykevin09+examples_LIGGGHTS $C $P/input/data/Ottawa-F65.spl > $d/input/data/Ottawa-F65.spl
 g ykevin09+examples_LIGGGHTS $C $P/input/mesh/plane.stl > $d/input/mesh/plane.stl
 echo done R02
+# R03, R04: DiscreteLogarithm/capillary-LAMMPS-LIGGGHTS examples/freecool/freecool.gran.si.lammps @ a6e98666135d912c3219803bd904dba3b7d9fc3b
+# (its -var values vfraction 0.3 and seed 12345 given as variable lines in front; run 100000000 -> 1000).
+# R03 keeps the deck's fix addcapillaryforce (this LAMMPS has no such fix: the engine stops there); R04 comments it out.
+C=a6e98666135d912c3219803bd904dba3b7d9fc3b; F=examples/freecool/freecool.gran.si.lammps
+d=$D/R03_discretelog_freecool_capillary_fix; mkdir -p $d; echo "0.01 0.1" > $d/G; echo in.deck > $d/DECK
+{ echo "# R03 DiscreteLogarithm/capillary-LAMMPS-LIGGGHTS $F @${C%%????????????????????????????????}; edits: -var vfraction 0.3 seed 12345 as variable lines, run 1e8 -> 1000; 27 spheres of 1 mm, mass 1 kg, gran/hertz/history gamma 0, a custom capillary fix"
+  echo "variable vfraction equal 0.3"; echo "variable seed equal 12345"
+  g DiscreteLogarithm+capillary-LAMMPS-LIGGGHTS $C $F | sed -e 's/^run\t\t100000000/run 1000/'; } > $d/in.deck
+d=$D/R04_discretelog_freecool_no_capillary; mkdir -p $d; echo "0.01 0.1" > $d/G; echo in.deck > $d/DECK
+{ echo "# R04 as R03 with the fix addcapillaryforce line commented out: elastic hertz (gamma_n 0): eps 1"
+  echo "variable vfraction equal 0.3"; echo "variable seed equal 12345"
+  g DiscreteLogarithm+capillary-LAMMPS-LIGGGHTS $C $F | sed -e 's/^run\t\t100000000/run 1000/' -e 's/^fix             5 all addcapillaryforce/#fix 5 all addcapillaryforce/'; } > $d/in.deck
+echo done R03 R04
