@@ -320,6 +320,17 @@ deck("c32_run_every_two_strings_second_quit", "# run 200 every 100 \"print PROBE
 deck("c33_run_every_if_quit_with_exit_status", "# run 200 every 100 \"if '$(step) >= 100' then 'quit 0'\": quit with a status\n"
      + BASE() + TWO + "run 200 every 100 \"if '$(step) >= 100' then 'quit 0'\"\npair_coeff * * " + hk(9000) + "\nrun 100\n", g=1)
 
+deck("c34_run_every_if_jump_quoted", "# run 200 every 100 \"if '$(step) >= 200' then 'jump SELF end'\": LAMMPS jumps to label end after the run, skipping kn 9000\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) >= 200' then 'jump SELF end'\"\npair_coeff * * " + hk(9000) + "\nlabel end\nrun 100\n", g=1)
+deck("c35_run_every_if_unfix_floor_quoted", "# run 200 every 100 \"if '$(step) >= 100' then 'unfix floor' 'fix floor all wall/gran ... 9000 ...'\" at step 100: the floor is kn 9000 from part 2 on and in run 2\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) == 100' then 'unfix floor' 'fix floor all wall/gran granular " + hk(9000) + " zplane 0 NULL'\"\nrun 100\n", g=1)
+deck("c36_run_every_if_timestep_quoted", "# run 200 every 100 \"if '$(step) == 100' then 'timestep 2e-4'\": dt 2e-4 from part 2 on and in run 2\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) == 100' then 'timestep 2e-4'\"\nrun 100\n", g=1)
+deck("c37_run_every_if_pair_coeff_quoted", "# run 200 every 100 \"if '$(step) == 100' then 'pair_coeff * * hooke 9000 ...'\": kn 9000 from part 2 on and in run 2\n"
+     + BASE() + TWO + "run 200 every 100 \"if '$(step) == 100' then 'pair_coeff * * " + hk(9000) + "'\"\nrun 100\n", g=1)
+deck("r28_thermo_random_with_ke_read", "# thermo v_r during run 1; then if \"$(ke) > 0 && ${r} > 5000\" (a run-state read, so the audit makes the runs): kn 9000 or 500\n"
+     + BASE() + TWO + "variable r equal random(1000,9000,4711)\nthermo_style custom step ke v_r\nthermo 10\nrun 100\nif \"$(ke) > 0 && ${r} > 5000\" then \"pair_coeff * * " + hk(9000) + "\" else \"pair_coeff * * " + hk(500) + "\"\nrun 100\n", g=1)
+
 # ================================================================ f*: fixes beside the contact
 deck("f01_temp_berendsen", "# fix temp/berendsen to T 0 rescales velocities every step (a thermostat on two spheres): eps not the contact's\n"
      + BASE() + TWO + "fix tb all temp/berendsen 1e-30 1e-30 1e-4\nrun 100\n", g=1)
