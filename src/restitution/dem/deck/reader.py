@@ -599,7 +599,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             deck.present_unknown = True
             _made_after(deck, None, f"{where} ({line})")
     elif cmd == "run":
-        deck.ended = _run_every(words, where, line)
+        ending = _run_every(words, where, line)
+        deck.ended = ending == "quits"
         if _no_step(deck, words):
             return                        # a run of 0 steps: no contact happens in it (field round 19, C1)
         if deck.inserting:
@@ -608,6 +609,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
                 _made_after(deck, inserted, f"{where} ({line}), where an inserting fix makes atoms", inserting=True)
         _uninserted_templates(deck)
         _stage(deck, loc, line)
+        if ending == "may quit":
+            deck.may_end = (where, line)
         _moved_in_run(deck, loc, line)
         if deck.inserting:
             deck.atoms = True
@@ -839,15 +842,17 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
     DIALECTS[deck.code].pair_coeff(deck, words, where, line, loc)
 
 
-def _run_every(words: list, where: str, line: str) -> bool:
+def _run_every(words: list, where: str, line: str) -> str | None:
     """run N every M c1 c2 ...: LAMMPS runs the commands after each part of M steps, the last too
     (22 Jul 2025 measured); the engine's pass never runs them (LAMMPS' -skiprun sets the run up
     once, LIGGGHTS' marker runs one step of a run without every), so the contact they would give
     the parts after the first is nowhere in what it ran. Only inert ones (output, say) leave the
-    contact as the reader reads it; NULL runs none. Whether a quit among them ends the deck after
-    the run's first part (field round 20, e27, L93: the runs after it were audited as the deck's)."""
+    contact as the reader reads it; NULL runs none. "quits" where a quit among them ends the deck
+    after the run's first part (field round 20, e27, L93: the runs after it were audited as the
+    deck's), "may quit" where an if's branch quits (whether it does depends on the run: no stage
+    may follow, field round 21, c28), else None."""
     if "every" not in words:
-        return False
+        return None
     commands = words[words.index("every") + 2:]
     for command in commands:
         first = _first_not_inert(command)
@@ -859,10 +864,8 @@ def _run_every(words: list, where: str, line: str) -> bool:
     # a quit quoted inside an if's branch counts too (field round 21, c28: 'print done' 'quit')
     quits = [command for command in commands if "quit" in (w.strip("\"'") for w in command.split())]
     if any(command.split()[0] != "quit" for command in quits):
-        raise DeckError(where, line, "run ... every runs an if that may quit between the run's parts: whether the "
-                                     "deck ends there depends on what the run does, which the engine's pass (its runs "
-                                     "skipped or cut to one step) does not show; not audited")
-    return bool(quits)
+        return "may quit"
+    return "quits" if quits else None
 
 
 def _first_not_inert(command: str) -> str | None:
@@ -1084,6 +1087,11 @@ def _stage(deck: Deck, loc, line: str) -> None:
         return
     if not deck.code:
         return                           # no pair style yet: no contact to audit in this run
+    if deck.may_end:
+        raise DeckError(*deck.may_end, "run ... every runs an if that may quit between the run's parts, and a run with "
+                                       f"other contact settings follows at {place(loc)}: whether the deck reaches it "
+                                       "depends on what the run does, which the engine's pass (its runs skipped or "
+                                       "cut to one step) does not show; not audited")
     if len(deck.stages) >= MAX_STAGES:
         raise DeckError(place(loc), line, f"more than {MAX_STAGES} runs with different contact settings: the "
                                           "audit reports each, and stops here")

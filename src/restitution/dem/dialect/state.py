@@ -224,8 +224,10 @@ class Deck:
     # each run's marker wrote are where that run left them, those its inserting fixes made among
     # them, so no inserting fix's sizes are modelled
     ran: bool = False
-    # a run's every ran quit: the engine ends the deck after that run's first part
+    # a run's every ran quit: the engine ends the deck after that run's first part; (where, text)
+    # of a run whose every may quit (an if's branch): no run with other contact settings may follow
     ended: bool = False
+    may_end: tuple = ()
     # type -> {charge q} its atoms hold, as the engine holds them at the deck's end (LAMMPS, an atom
     # style with a charge), where no command after the first run changes a charge; None: not known
     charges: dict | None = None
