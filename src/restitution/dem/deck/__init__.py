@@ -635,12 +635,6 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                                                   "its runs skipped, does not show: not audited")
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
-        if (drawn := random_drawn(commands, scratch)) is not None:
-            raise DeckError(place(drawn[0]), drawn[1], "it reads a variable drawn from random() or normal(), whose "
-                                                       "every evaluation draws, after the engine run by hand has drawn "
-                                                       "from it where the audit's pass does not (its thermo output or "
-                                                       "a fix as the runs go, a print or shell line the audit does not "
-                                                       "run): the value read here is not the pass's; not audited")
         if (hit := written_then_read(commands, scratch)) is not None:
             (wrote, writer), (read, reader) = hit
             raise DeckError(place(read), reader, f"it reads a file that {place(wrote)} ({writer}) names, which the "
@@ -727,6 +721,14 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                              "from here on are those before it, not the deck's")
             # the rows of these runs are marked, not only named on stderr
             deck.doubtful_runs = _runs_after(commands, found) | _runs_after(commands, resized)
+        # the runs made for real draw as the runs go as the engine does; a command never run does not
+        # (field round 21: r28 read right once its runs were made)
+        if (drawn := random_drawn(commands, scratch, runs_draw=not deck.ran)) is not None:
+            raise DeckError(place(drawn[0]), drawn[1], "it reads a variable drawn from random() or normal(), whose "
+                                                       "every evaluation draws, after the engine run by hand has drawn "
+                                                       "from it where the audit's pass does not (its thermo output or "
+                                                       "a fix as the runs go, a print or shell line the audit does not "
+                                                       "run): the value read here is not the pass's; not audited")
         _hold_charges(deck, commands, deck_run.charges(root) if hasattr(deck_run, "charges") else None)
         # a loop the pass did not finish (nor the runs made for real) may end in the engine, which then
         # runs what follows it (field round 18, b40: 10 000 passes filled the echo's cap, and the

@@ -331,11 +331,12 @@ _RANDOM_DEF = re.compile(r"variable\s+(\S+)\s+\S+.*\b(?:random|normal)\(")
 _DURING_RUNS = ("thermo_style", "thermo_modify", "fix", "dump", "compute", "fix_modify")
 
 
-def random_drawn(commands: list, scratch: Scratch) -> tuple | None:
+def random_drawn(commands: list, scratch: Scratch, runs_draw: bool = True) -> tuple | None:
     """The first command of the deck that reads a variable drawn from ``random()`` or ``normal()``
     after the engine run by hand has drawn from it where the audit's pass does not: a command the
     pass never runs that reads it (a print, a shell line), or a run while a command that reads it
-    as the runs go stands (thermo output, a fix, a dump) or its ``every`` reads it. Each evaluation
+    as the runs go stands (thermo output, a fix, a dump) or its ``every`` reads it (``runs_draw``:
+    the runs were skipped, not made for real). Each evaluation
     draws, so the value read there is not the pass's (field round 21, r25: thermo output of v_r in
     a run, then an if on ${r}: LAMMPS took the other branch). ((file, line), text), or None.
 
@@ -378,7 +379,7 @@ def random_drawn(commands: list, scratch: Scratch) -> tuple | None:
             drawn = drawn or bool(draws.search(scratch.skipped[k][2]))
             continue
         if cmd.stage is not None:
-            drawn = drawn or during or bool(draws.search(cmd.text))
+            drawn = drawn or runs_draw and (during or bool(draws.search(cmd.text)))
             continue
         read = [key for key in at.get(cmd.loc, ()) if reads.search(key) and not _RANDOM_DEF.match(key)]
         if drawn and read:
