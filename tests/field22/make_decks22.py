@@ -246,6 +246,34 @@ L("N18_e_if_on_step_after_run", "# LIGGGHTS: run 1000, then if \"${s} > 500\" th
   + LB() + ATOMS + LRUN + "variable s equal step\nrun 1000\nif \"${s} > 500\" then \"" + E3b(0.3).strip() + "\"\nrun 100\n")
 
 
+# ================================================================ w*: variants of the round's finds (added after the first 84)
+RHI = "region hi block INF INF INF INF 0.005 INF units box\n"
+deck("w01_group_dynamic_set_before_run", "# group dynamic then set group at once (no run yet): LAMMPS' membership before any run (engine says)\n"
+     + BASE() + TWO + RHI + "group hi dynamic all region hi\nset group hi density 7800\nrun 100\n", g=1)
+deck("w02_group_dynamic_var_every", "# group dynamic all var v_up every 10 (atom-style z>0.005); run 5000 (falls); set group up density 7800 (nobody in the engine)\n"
+     + BASE() + TWO + "variable up atom z>0.005\ngroup up dynamic all var up every 10\nrun 5000\nset group up density 7800\nrun 100\n", g=1)
+deck("w03_group_union_of_dynamic", "# a static group copied (union) from a dynamic group after the fall: empty in the engine; set density 7800\n"
+     + BASE() + TWO + RHI + "group hi dynamic all region hi\nrun 5000\ngroup cp union hi\nset group cp density 7800\nrun 100\n", g=1)
+deck("w04_group_dynamic_static_after", "# dynamic group after the fall, then group hi static (freezes the engine's membership: empty), set density 7800\n"
+     + BASE() + TWO + RHI + "group hi dynamic all region hi\nrun 5000\ngroup hi static\nset group hi density 7800\nrun 100\n", g=1)
+deck("w05_group_dynamic_pair_stage", "# dynamic group after the fall used by set group ... type 2 (the engine changes nobody's type)\n"
+     + BASE() + TWO + RHI + "group hi dynamic all region hi\nrun 5000\nset group hi type 2\nset type 2 density 7800\nrun 100\n", g=1)
+deck("w06_lost_then_new_atom_own_density", "# type 2 sphere lost (thermo_modify lost ignore); a new type 2 with diameter 0.006 density 1000 set by atom id 3\n"
+     + BASE() + TWO + "thermo_modify lost ignore\ngroup up type 2\nvelocity up set 0 0 100\nrun 300\ncreate_atoms 2 single 0.01 0.01 0.05\nset atom 3 diameter 0.006 density 1000\nrun 100\n", g=1)
+deck("w07_lost_then_set_type_density", "# the type 2 sphere lost; a new type 2 atom made; set type 2 diameter 0.008 density 1000 (both in the audit's pass, one in the engine)\n"
+     + BASE() + TWO + "thermo_modify lost ignore\ngroup up type 2\nvelocity up set 0 0 100\nrun 300\ncreate_atoms 2 single 0.01 0.01 0.05\nset type 2 diameter 0.008 density 1000\nrun 100\n", g=1)
+deck("w08_lost_boundary_m_shrinkwrap", "# boundary p p m: the thrown sphere stays (shrink-wrapped box grows); kn from count 2 -> 5000 (no loss)\n"
+     + head(bnd="p p m") + G1(HK) + GRAV + FLOOR + TAIL + TWO + "group up type 2\nvelocity up set 0 0 100\nrun 300\nvariable kn equal 2000*count(all)+1000\n" + PRB + "pair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
+deck("w09_fix_halt_continue_step", "# fix halt at step > 150 (continue): run 300 stops at 160; kn = 2000+10*step -> 3600 in the engine\n"
+     + BASE() + TWO + "variable s equal step\nfix h all halt 10 v_s > 150 error continue\nrun 300\nunfix h\nvariable kn equal 2000+10*step\n" + PRB + "pair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
+deck("w10_dt_reset_time", "# fix dt/reset during run 300 then kn = 2000+1e5*time (time accumulates with the varying dt)\n"
+     + BASE() + TWO + "fix dtr all dt/reset 1 1e-7 1e-4 1e-3 units box\nrun 300\nunfix dtr\ntimestep 1e-5\nvariable kn equal round(2000+1e5*time)\n" + PRB + "pair_coeff * * hooke ${kn} 3000 " + K + "\nrun 100\n", g=1)
+deck("w11_fix_halt_continue_if_step", "# fix halt stops run 300 at 160; if \"${s} < 300\" then pair_coeff kn 6000 (the engine takes it)\n"
+     + BASE() + TWO + "variable s equal step\nfix h all halt 10 v_s > 150 error continue\nrun 300\nunfix h\nif \"${s} < 300\" then \"pair_coeff * * " + hk(6000) + "\"\nrun 100\n", g=1)
+deck("w12_lost_atoms_dynamic_region_delete", "# lost atom (p p f, lost ignore), then 'set type 2 density 7800' and a new type 2 atom with default density 1 and diameter 1 -> set diameter only\n"
+     + BASE() + TWO + "thermo_modify lost ignore\ngroup up type 2\nvelocity up set 0 0 100\nrun 300\nset type 2 density 7800\ncreate_atoms 2 single 0.01 0.01 0.05\nset atom 3 diameter 0.006 density 2500\nrun 100\n", g=1)
+
+
 def write(name):
     text, g, data, lig, deckname = DECKS[name]
     d = os.path.join(D, name)
