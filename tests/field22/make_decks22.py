@@ -274,11 +274,62 @@ deck("w12_lost_atoms_dynamic_region_delete", "# lost atom (p p f, lost ignore), 
      + BASE() + TWO + "thermo_modify lost ignore\ngroup up type 2\nvelocity up set 0 0 100\nrun 300\nset type 2 density 7800\ncreate_atoms 2 single 0.01 0.01 0.05\nset atom 3 diameter 0.006 density 2500\nrun 100\n", g=1)
 
 
+# ================================================================ y*: more variants (line separators, losses, region walls)
+_b = BASE() + TWO
+deck("y01_comment_lone_cr_command", "# a comment line ending in a lone CR (no LF) before pair_coeff kn 5000: LAMMPS reads one comment line (kn 2000 stays)\n"
+     + _b + "# stiffer contacts\rpair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+deck("y02_trailing_comment_lone_cr", "# pair_coeff kn 5000 # old: ...<CR>pair_coeff kn 2000: LAMMPS strips the comment and the CR'd rest (kn 5000)\n"
+     + _b + "pair_coeff * * " + hk(5000) + " # old value\rpair_coeff * * " + hk(2000) + "\nrun 100\n", g=1)
+deck("y03_comment_u2028_command", "# a comment, U+2028 LINE SEPARATOR, then pair_coeff kn 5000 (one line to LAMMPS: a comment; kn 2000)\n"
+     + _b + "# stiffer\u2028pair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+deck("y04_comment_nel_command", "# a comment, U+0085 NEXT LINE, then pair_coeff kn 5000 (one line to LAMMPS: a comment; kn 2000)\n"
+     + _b + "# stiffer\u0085pair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+deck("y05_include_cr_only", "# an include whose lines end in CR alone: '# settings<CR>pair_coeff kn 5000<CR>' is one comment line to LAMMPS (kn 2000)\n"
+     + _b + "include in.c\nrun 100\n", g=1, data={"in.c": "# settings\rpair_coeff * * " + hk(5000) + "\r"})
+deck("y06_comment_formfeed_command", "# a comment, form feed, then pair_coeff kn 5000 (one line to LAMMPS: a comment; kn 2000)\n"
+     + _b + "# stiffer\fpair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+deck("y07_comment_vt_u2029", "# a comment, U+2029 PARAGRAPH SEPARATOR, then pair_coeff kn 5000 (kn 2000 in LAMMPS)\n"
+     + _b + "# stiffer\u2029pair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+deck("y08_fix_evaporate_then_set", "# fix evaporate removes the type 2 sphere during the run (region around it); then create_atoms 2 + set atom 3 / set type 2 density 1000\n"
+     + _b + "region ev block 0 0.015 0 0.015 INF INF units box\nfix ev all evaporate 10 1 ev 4711\nrun 100\nunfix ev\ncreate_atoms 2 single 0.01 0.01 0.05\nset type 2 diameter 0.006 density 1000\nrun 100\n", g=1)
+deck("y09_lost_type_gone_stage", "# the only type 2 sphere lost (lost ignore); pair_coeff 1 2 changes to kn 8000 for the next run: no 1 2 pair in the engine\n"
+     + _b + "thermo_modify lost ignore\ngroup up type 2\nvelocity up set 0 0 100\nrun 300\npair_coeff 1 2 " + hk(8000) + "\nrun 100\n", g=1)
+deck("y10_wall_gran_region", "# fix wall/gran/region granular hooke kn 2000 on the box's region (flat faces) instead of a zplane wall\n"
+     + head() + G1(HK) + GRAV + f"region wb block 0 0.04 0 0.04 0 0.1 side in units box\nfix floor all wall/gran/region granular {HK} region wb\n" + TAIL + TWO + "run 100\n", g=1)
+deck("y11_group_dynamic_delete_atoms", "# delete_atoms group hi (dynamic, empty after the fall): the engine deletes nobody\n"
+     + _b + "region hi block INF INF INF INF 0.005 INF units box\ngroup hi dynamic all region hi\nrun 5000\ndelete_atoms group hi\nset type 2 density 7800\nrun 100\n", g=1)
+deck("y12_group_dynamic_set_diameter", "# set group hi diameter 0.008 (dynamic, after the fall: nobody in the engine)\n"
+     + _b + "region hi block INF INF INF INF 0.005 INF units box\ngroup hi dynamic all region hi\nrun 5000\nset group hi diameter 0.008\nrun 100\n", g=1)
+deck("y13_group_dynamic_run_every_refresh", "# dynamic group in a region the spheres fall INTO (z<0.005): empty at definition, both at the end; set group low density 7800\n"
+     + _b + "region low block INF INF INF INF 0 0.005 units box\ngroup low dynamic all region low\nrun 5000\nset group low density 7800\nrun 100\n", g=1)
+L("y14_liggghts_comment_lone_cr", "# LIGGGHTS: a comment ending in a lone CR before the e 0.2 matrix: one comment line to LIGGGHTS (e 0.6 ... stays)\n"
+  + lhead() + MAT3 + E3 + "# softer\r" + E3b(0.2) + HERTZ + WALL3 + ATOMS + RUN)
+
+
+# ================================================================ z*: bytes (NUL, Latin-1), atom ids after runs
+_b = BASE() + TWO
+deck("z01_nul_before_pair_coeff", "# a NUL byte opens the pair_coeff kn 5000 line: LAMMPS reads the line as empty (kn 2000) (engine says)\n"
+     + _b + "\0pair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+deck("z02_latin1_comment", "# Durchmesser f\u00fcr Glas (this comment in Latin-1 bytes, not UTF-8): kn 5000 after it\n"
+     + _b + "pair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+L("z03_latin1_comment_liggghts", "# LIGGGHTS: Durchmesser f\u00fcr Glas (Latin-1 bytes) and e 0.2 after it\n"
+  + lhead() + MAT3 + E3b(0.2) + HERTZ + WALL3 + ATOMS + RUN)
+deck("z04_reset_atoms_sort_after_run", "# type 1 moves from y 0.03 to y 0.005 in run 100; reset_atoms id sort yes renumbers by place: set atom 1 density 7800 hits type 1 in the engine (type 2 before the run)\n"
+     + head() + G1(HK) + FLOOR + TAIL + "create_atoms 1 single 0.01 0.03 0.01\ncreate_atoms 2 single 0.03 0.01 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n"
+     + "group one type 1\nvelocity one set 0 -25 0\nrun 100\nvelocity all set 0 0 0\nreset_atoms id sort yes\nset atom 1 density 7800\nrun 100\n", g=1)
+deck("z05_lost_then_reset_atoms_id", "# atom 1 (type 1) lost in the run (lost ignore); reset_atoms id renumbers the type 2 atom to 1; set atom 1 density 7800 (type 2 in the engine)\n"
+     + _b + "thermo_modify lost ignore\ngroup one type 1\nvelocity one set 0 0 100\nrun 300\nreset_atoms id\nset atom 1 density 7800\ncreate_atoms 1 single 0.03 0.03 0.05\nset type 1 diameter 0.004 density 2500\nrun 100\n", g=1)
+deck("z06_lost_warn_set_type", "# thermo_modify lost warn: the type 2 sphere lost with a warning; then create_atoms 2 and set atom 2 density 1000 (the new atom has id 2 in the engine)\n"
+     + _b + "thermo_modify lost warn\ngroup up type 2\nvelocity up set 0 0 100\nrun 300\ncreate_atoms 2 single 0.01 0.01 0.05\nset type 2 diameter 0.006 density 2500\nset atom 2 density 1000\nrun 100\n", g=1)
+
+LATIN1 = {"z02_latin1_comment", "z03_latin1_comment_liggghts"}  # written in Latin-1 bytes (an old editor)
+
+
 def write(name):
     text, g, data, lig, deckname = DECKS[name]
     d = os.path.join(D, name)
     os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, deckname), "w").write(text)
+    open(os.path.join(d, deckname), "w", encoding="latin-1" if name in LATIN1 else "utf-8").write(text)
     open(os.path.join(d, "G"), "w").write(f"{g}\n")
     open(os.path.join(d, "DECK"), "w").write(deckname + "\n")
     if lig:

@@ -38,8 +38,8 @@ thermo 0
 run 20000000
 print "PROBE22 eps $((vcm(f22a2,x)-vcm(f22a1,x))/{g}:%.6f) steps $(step) m $(v_f22m1) $(v_f22m2)"
 """
-txt = open(os.path.join(tmp, deck)).read()
-open(os.path.join(tmp, deck), "w").write(txt + tail)
+txt = open(os.path.join(tmp, deck), newline="", encoding="latin-1").read()  # byte for byte: lone CRs, NULs, Latin-1 as the engine reads them
+open(os.path.join(tmp, deck), "w", newline="", encoding="latin-1").write(txt + tail)
 if os.path.exists(os.path.join(d, "LIGGGHTS")):
     sys.exit("LAMMPS only")
 p = subprocess.run(["lmp", "-in", deck, "-log", "none"], cwd=tmp, capture_output=True, text=True)
