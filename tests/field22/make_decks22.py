@@ -322,6 +322,18 @@ deck("z05_lost_then_reset_atoms_id", "# atom 1 (type 1) lost in the run (lost ig
 deck("z06_lost_warn_set_type", "# thermo_modify lost warn: the type 2 sphere lost with a warning; then create_atoms 2 and set atom 2 density 1000 (the new atom has id 2 in the engine)\n"
      + _b + "thermo_modify lost warn\ngroup up type 2\nvelocity up set 0 0 100\nrun 300\ncreate_atoms 2 single 0.01 0.01 0.05\nset type 2 diameter 0.006 density 2500\nset atom 2 density 1000\nrun 100\n", g=1)
 
+# ================================================================ v*: last variants (discharge, atom/swap, CR mid-command)
+deck("v01_discharge_lost_big_sphere", "# hopper-like discharge: no floor in run 1 (10000 steps), the 8 mm type 1 sphere falls out of the open bottom (lost ignore), the 4 mm one is held; then a floor and run 2: only 4 mm type 1 spheres remain\n"
+     + head() + G1(HK) + GRAV + TAIL + "create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 1 single 0.01 0.01 0.05\nset atom 1 diameter 0.008 density 2500\nset atom 2 diameter 0.004 density 2500\n"
+     + "create_atoms 2 single 0.03 0.03 0.05\nset type 2 diameter 0.006 density 2500\nthermo_modify lost ignore\ngroup held id 2 3\nfix hold held setforce 0 0 0\nrun 10000\nunfix hold\n"
+     + f"fix floor all wall/gran granular {HK} zplane 0 NULL\nrun 100\n", g=1)
+deck("v02_atom_swap_then_set_type", "# fix atom/swap (MC) swaps the types of the 4 mm (type 1) and 6 mm (type 2) spheres once (run 10, every 10); then set type 2 density 7800 hits the 4 mm sphere in the engine\n"
+     + BASE() + TWO + "fix sw all atom/swap 10 1 1234 1.0 types 1 2\nrun 10\nunfix sw\nset type 2 density 7800\nrun 100\n", g=1)
+deck("v03_lone_cr_mid_command", "# a lone CR inside a pair_coeff (between damping and tangential): whitespace to LAMMPS (kn 5000 runs)\n"
+     + BASE() + TWO + "pair_coeff * * hooke 5000 3000 damping mass_velocity\rtangential linear_nohistory 1 0.3\nrun 100\n", g=1)
+deck("v04_lone_cr_after_amp", "# 'pair_coeff ... damping mass_velocity &<CR>tangential ...<LF>': to LAMMPS the & is not last (CR follows) (engine says)\n"
+     + BASE() + TWO + "pair_coeff * * hooke 5000 3000 damping mass_velocity &\rtangential linear_nohistory 1 0.3\nrun 100\n", g=1)
+
 LATIN1 = {"z02_latin1_comment", "z03_latin1_comment_liggghts"}  # written in Latin-1 bytes (an old editor)
 
 
