@@ -334,6 +334,13 @@ deck("v03_lone_cr_mid_command", "# a lone CR inside a pair_coeff (between dampin
 deck("v04_lone_cr_after_amp", "# 'pair_coeff ... damping mass_velocity &<CR>tangential ...<LF>': to LAMMPS the & is not last (CR follows) (engine says)\n"
      + BASE() + TWO + "pair_coeff * * hooke 5000 3000 damping mass_velocity &\rtangential linear_nohistory 1 0.3\nrun 100\n", g=1)
 
+deck("z07_reset_atoms_sort_order_flips", "# type 1 (id 1) at y 0.01, type 2 (id 2) at y 0.03 moving to y 0.005 in run 100; reset_atoms id sort yes gives id 1 to the type 2 sphere; set atom 1 density 7800 (type 2 in the engine)\n"
+     + head() + G1(HK) + FLOOR + TAIL + "create_atoms 1 single 0.01 0.01 0.01\ncreate_atoms 2 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n"
+     + "group two type 2\nvelocity two set 0 -25 0\nrun 100\nvelocity all set 0 0 0\nreset_atoms id sort yes\nset atom 1 density 7800\nrun 100\n", g=1)
+deck("z08_evaporate_then_reset_ids", "# fix evaporate removes the type 1 sphere (id 1) in run 1; reset_atoms id makes the type 2 sphere id 1; set atom 1 density 7800 (type 2 in the engine)\n"
+     + BASE() + "create_atoms 1 single 0.01 0.01 0.01\ncreate_atoms 2 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n"
+     + "region ev block 0 0.015 0 0.015 INF INF units box\nfix ev all evaporate 10 1 ev 4711\nrun 100\nunfix ev\nreset_atoms id\nset atom 1 density 7800\ncreate_atoms 1 single 0.01 0.01 0.05\nset type 1 diameter 0.004 density 2500\nrun 100\n", g=1)
+
 LATIN1 = {"z02_latin1_comment", "z03_latin1_comment_liggghts"}  # written in Latin-1 bytes (an old editor)
 
 
