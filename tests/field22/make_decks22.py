@@ -341,6 +341,11 @@ deck("z08_evaporate_then_reset_ids", "# fix evaporate removes the type 1 sphere 
      + BASE() + "create_atoms 1 single 0.01 0.01 0.01\ncreate_atoms 2 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n"
      + "region ev block 0 0.015 0 0.015 INF INF units box\nfix ev all evaporate 10 1 ev 4711\nrun 100\nunfix ev\nreset_atoms id\nset atom 1 density 7800\ncreate_atoms 1 single 0.01 0.01 0.05\nset type 1 diameter 0.004 density 2500\nrun 100\n", g=1)
 
+L("y15_liggghts_include_cr_only", "# LIGGGHTS: an include whose lines end in CR alone ('# softer<CR>fix m3 ... e 0.2<CR>'): one comment line to LIGGGHTS (e 0.6 ... stays)\n"
+  + lhead() + MAT3 + E3 + "include in.e\n" + HERTZ + WALL3 + ATOMS + RUN, data={"in.e": "# softer\r" + E3b(0.2).strip() + "\r"})
+L("y16_liggghts_trailing_comment_cr", "# LIGGGHTS: 'fix m3 ... e 0.2 # old<CR>fix m3 ... e 0.6 matrix': LIGGGHTS strips the comment and the rest (e 0.2)\n"
+  + lhead() + MAT3 + E3b(0.2).strip() + " # old\r" + E3 + HERTZ + WALL3 + ATOMS + RUN)
+
 LATIN1 = {"z02_latin1_comment", "z03_latin1_comment_liggghts"}  # written in Latin-1 bytes (an old editor)
 
 
