@@ -2,12 +2,12 @@
 usage: python classify22.py   (prints the table rows for FINDINGS.md)"""
 import os
 C = {
- "correct, engine-checked (state22: the engine's atoms at the deck's end; probe22: head-on pair at dt 1e-8 s; |audit - engine| <= 2e-5)":
+ "correct, engine-checked (state22: the engine's atoms at the deck's end; probe22: head-on pair at dt 1e-8 s; abs(audit - engine) <= 2e-5)":
     "t19 t23 t24 t25 t21 q01 q04 q05 q06 q08 q12 q14 q17 x07 x10 x11 w01 w07 w09 y03 y04 y06 y07 y08 y10 y12 z01 z02 z04 z05 t14 t15 t17 t20 t28 t29 t32 t33 x08 x09 x12 v02 z07",
  "correct by the engine's PROBE print (kn it ends with) and the audit's eps for that kn elsewhere in this round":
     "t01 t03 t05 t08 t10 t11 t12 t18 t30 t31 t34 q03 q07 q09 q11 q13 q18 x01 x02 x03 x06 q15 w08 w10 w11",
  "correct, LIGGGHTS typed e (engine's PROBE e where printed)": "N01 N03 N04 N05 N06 N07 N08 N09 N10 N11 N12 N13 N15 N16 N18 z03",
- "correct, LIGGGHTS engine-checked (lprobe22: head-on pair in LIGGGHTS at dt 1e-7 s, types 1 1 and 1 2; |audit - engine| <= 2e-5)": "N17",
+ "correct, LIGGGHTS engine-checked (lprobe22: head-on pair in LIGGGHTS at dt 1e-7 s, types 1 1 and 1 2; abs(audit - engine) <= 2e-5)": "N17",
  "effect named fairly": "x04",
  "SILENTLY WRONG E1: `set group` on a dynamic group after a run: the audit uses the membership at definition, the engine the one at the run's end":
     "t16 w02 w04 w05 y13",
