@@ -1,0 +1,1 @@
+# softerfix m3 all property/global coefficientRestitution peratomtypepair 3 0.2 0.2 0.2 0.2 0.2 0.2 0.2 0.2 0.2
