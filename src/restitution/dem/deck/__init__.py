@@ -600,7 +600,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import PUSHING_FIX_PREFIXES, scratch_copy
-    from .runtime import resized_by_runs
+    from .runtime import lost_in_runs, resized_by_runs
     from .stream import (deck_commands, engine_error, random_drawn, skipped, snapshots, unchecked,
                          written_then_read)
     if engine == "LAMMPS":
@@ -697,7 +697,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     raise
                 deck, refusal = None, why       # the runs made for real may answer it
             found = _run_dependent(commands, scratch, clocked is not None)
-            resized = resized_by_runs(commands)
+            resized = resized_by_runs(commands) + lost_in_runs(commands)
             causes = sorted(_run_causes(found, by_position(read), deck) + resized,
                             key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
             made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,

@@ -198,6 +198,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             moved_since = True
         elif split and moved_since and not ran and split[0] in ("group", "set", "delete_atoms"):
             _where_the_run_left(split, placed, cmd)
+        elif split and split[:1] == ["group"] and len(split) > 2 and split[2] == "dynamic":
+            placed.add(split[1])     # its members change as the runs move the atoms
         if split and cmd.unset and not made and not deposited_ran:
             # no atom in the pass, and no pour or deposit has made any in the runs before: the
             # deck's own run stops here too
@@ -918,6 +920,8 @@ def _where_the_run_left(split: list, placed: set, cmd) -> None:
         name, style = split[1], split[2]
         if style in ("delete", "clear"):
             placed.discard(name)
+        elif style == "static":
+            pass                     # its members frozen where they are now: as placed as before
         elif style in ("region", "variable", "dynamic") or any(g in placed for g in split[3:]):
             placed.add(name)
         else:
@@ -971,6 +975,10 @@ def by_position(commands) -> tuple | None:
                 _where_the_run_left(split, placed, cmd)
             except DeckError:
                 return cmd.loc, cmd.text
+        elif split and split[:1] == ["group"] and len(split) > 2 and split[2] == "dynamic":
+            # a dynamic group defined before the runs: its members are where the runs leave them
+            # (field round 22, t16: a set of it after a fall set atoms LAMMPS no longer held in it)
+            placed.add(split[1])
     return None
 
 

@@ -279,3 +279,56 @@ def resized_by_runs(commands: list) -> list:
                     and all(len(a) == 2 and a[0] == "diameter" and constant_in_time(a[1], formulas) for a in sized)):
                 adapts[split[1]] = True
     return []
+
+
+def lost_in_runs(commands: list) -> list:
+    """The first run after a run in which atoms may have gone: lost through an open boundary where
+    ``thermo_modify lost ignore`` or ``warn`` lets the engine go on, or removed by a ``fix
+    evaporate``. The pass, its runs skipped, still holds them (field round 22, v01: a sphere that
+    fell out of the box was audited beside the two the engine kept, and set atom N then picked
+    another atom than the engine's, w06).
+
+    Parameters
+    ----------
+    commands : list of Executed
+        The commands as the engine ran them, with ``stage`` set on the runs.
+
+    Returns
+    -------
+    list of (tuple, str)
+        ((file, line), text) of that run, with why, as :func:`resized_by_runs` gives its runs;
+        empty where there is none.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> cmds = [Executed((None, 1), "thermo_modify lost ignore"), Executed((None, 2), "run 1000", stage=0),
+    ...         Executed((None, 3), "run 100", stage=1)]
+    >>> lost_in_runs(cmds)
+    [((None, 3), 'run 100, whose atoms are those the run at line 2 left, some perhaps lost (thermo_modify lost ignore)')]
+    >>> lost_in_runs(cmds[1:])
+    []
+    """
+    from ..dialect.state import place
+    why, evaporating, last = None, set(), None
+    for cmd in commands:
+        split = cmd.text.split()
+        if not split:
+            continue
+        if cmd.stage is not None:
+            if last is not None:
+                return [(cmd.loc, f"{cmd.text.strip()}, whose atoms are those the run at {place(last)} left, some "
+                                  f"perhaps {last_why}")]
+            cause = why or (f"removed by fix {next(iter(evaporating))} (evaporate)" if evaporating else None)
+            if cause is not None:
+                last, last_why = cmd.loc, cause
+        elif split[0] == "thermo_modify" and "lost" in split[1:-1]:
+            value = split[split.index("lost") + 1]
+            why = f"lost ({cmd.text.strip()})" if value in ("ignore", "warn") else None
+        elif split[0] == "unfix" and len(split) > 1:
+            evaporating.discard(split[1])
+        elif split[0] == "fix" and len(split) > 3:
+            evaporating.discard(split[1])
+            if split[3] == "evaporate":
+                evaporating.add(split[1])
+    return []

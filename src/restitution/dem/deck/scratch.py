@@ -23,7 +23,7 @@ import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..dialect.state import DeckError
+from ..dialect.state import DeckError, place
 from ..deck_text import TRIPLE, segments as segments_of, strip_comment
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
@@ -295,9 +295,20 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         try:
             # bytes that are not UTF-8 (a Latin-1 comment from another editor) kept as they are:
             # the engines read bytes, and a file passed over here would run unmade safe
-            original = p.read_text(encoding="utf-8", errors="surrogateescape")
+            raw = p.read_bytes()
         except OSError:
             continue
+        if mapped and (cr := re.search(rb"\r(?!\n)", raw)) is not None:
+            # the engines end a line at a line feed only, where Python's text reading ends one at a
+            # lone carriage return too (field round 22, y01: "# note<CR>pair_coeff ..." is one comment
+            # line to LAMMPS, two lines to a reader of text): refused, as a line the two read apart
+            label = None if p == scratch.deck else labels.get(p) or os.path.relpath(p, copy)
+            raise DeckError(place((label, raw.count(b"\n", 0, cr.start()) + 1)), None,
+                            "a carriage return not followed by a line feed: the engine reads it as part of the line "
+                            "(a space, or inside a comment), not as a line end; not audited (save the file with "
+                            "LF or CRLF line ends)")
+        # CRLF read as LF, as Python's text reading did before (the engines take CR as a space)
+        original = raw.decode("utf-8", errors="surrogateescape").replace("\r\n", "\n")
         # LAMMPS reads typographic quotes and spaces in its input as their ASCII equivalents (it
         # warns and goes on): the copy is made of the text it reads (field round 21, a05: an if in
         # typographic quotes ran its branch in LAMMPS, unseen by the audit)
