@@ -298,11 +298,11 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             raw = p.read_bytes()
         except OSError:
             continue
+        label = None if p == scratch.deck else labels.get(p) or os.path.relpath(p, copy)
         if mapped and (cr := re.search(rb"\r(?!\n)", raw)) is not None:
             # the engines end a line at a line feed only, where Python's text reading ends one at a
             # lone carriage return too (field round 22, y01: "# note<CR>pair_coeff ..." is one comment
             # line to LAMMPS, two lines to a reader of text): refused, as a line the two read apart
-            label = None if p == scratch.deck else labels.get(p) or os.path.relpath(p, copy)
             raise DeckError(place((label, raw.count(b"\n", 0, cr.start()) + 1)), None,
                             "a carriage return not followed by a line feed: the engine reads it as part of the line "
                             "(a space, or inside a comment), not as a line end; not audited (save the file with "
@@ -313,7 +313,6 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         # warns and goes on): the copy is made of the text it reads (field round 21, a05: an if in
         # typographic quotes ran its branch in LAMMPS, unseen by the audit)
         text = original.translate(_ASCII) if mapped and getattr(marker, "ascii", False) else original
-        label = None if p == scratch.deck else labels.get(p) or os.path.relpath(p, copy)
         # a file named as written is a script: its lines get their tags; any other (a data file,
         # or a script named by a variable) is left as it is, its lines known by their text
         if p == scratch.deck or p.name in literal:
@@ -627,9 +626,13 @@ def _inline(text: str) -> list:
     return [line for line in text.split("\n") if line.strip()]
 
 
-def _quote(command: str) -> str:
-    """One command as an if's argument: in double quotes, or single where it holds a double."""
-    return f"'{command}'" if '"' in command else f'"{command}"'
+def _arguments(new: str | list, quote: str) -> str:
+    """What :func:`_safe` made of an if's command, as the if's argument(s): one command in the quote
+    it had, or a marker's commands inline (:func:`_inline`), each in double quotes, or single where
+    it holds a double."""
+    if isinstance(new, str):
+        return f"{quote}{new}{quote}"
+    return " ".join(f"'{command}'" if '"' in command else f'"{command}"' for command in new)
 
 
 def _timeout_zero(key: str) -> bool:
@@ -697,12 +700,9 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
             if previous not in ("if", "elif") and normalised(inner):
                 _quoted(scratch, normalised(inner), loc)
                 new = _safe(inner, loc, scratch, marker, top=False)
-                if isinstance(new, list):
+                if new is not None:
                     changed = True
-                    piece = " ".join(map(_quote, new))
-                elif new is not None:
-                    changed = True
-                    piece = f"{quote}{new}{quote}"
+                    piece = _arguments(new, quote)
             previous = piece
         elif not quote:
             words = re.split(r"(\s+)", piece)
@@ -712,12 +712,9 @@ def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
                 if previous not in ("if", "elif") and word not in ("if", "then", "elif", "else"):
                     _quoted(scratch, normalised(word), loc)
                     new = _safe(word, loc, scratch, marker, top=False)
-                    if isinstance(new, list):
+                    if new is not None:
                         changed = True
-                        words[k] = " ".join(map(_quote, new))
-                    elif new is not None:
-                        changed = True
-                        words[k] = f'"{new}"'
+                        words[k] = _arguments(new, '"')
                 previous = word
             piece = "".join(words)
         out.append(piece)
