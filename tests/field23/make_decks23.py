@@ -61,7 +61,7 @@ def L(name, text, **kw):
 # ==== decks (field round 23): a* labelmap, r* read_data/read_restart, m* molecule templates, p* fix pour/deposit ranges,
 # b* replicate/change_box/displace/delete_atoms, u* units, d* damping models and older pair styles, n* exclusions,
 # w* walls, v* variable styles, R* run forms/time step, L* LIGGGHTS, e* re-checks of earlier rounds' classes
-HM = "hertz/material 1e7 0.3 damping viscoelastic " + TL
+HM = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic " + TL  # E, eta_n0, nu (round 22's)
 RUN1 = "run 100\n"
 SPH = lambda d, rho, x=0.02, y=0.02, z=0.01, t=1: f"create_atoms {t} single {x} {y} {z}\n"
 
@@ -139,7 +139,7 @@ deck("m01_create_atoms_mol", "# molecule m1 (type 2, 6 mm, mass for rho 7800); c
      data={"m1.mol": MOL(2, 0.006, mass(0.006, 7800))})
 deck("m02_deposit_two_mols", "# fix deposit with two one-sphere templates (type 1 4 mm rho 2500, type 2 6 mm rho 7800) molfrac 0.5 1\n"
      + BASE() + "molecule m1 m1.mol\nmolecule m2 m2.mol\nregion ins block 0.005 0.035 0.005 0.035 0.05 0.08 units box\n"
-     + "fix dep all deposit 6 0 20 4711 region ins near 0.01 mol m1 molfrac 0.5 1.0 vz -1 -1\n" + "molecule m12 m1.mol m2.mol\nunfix dep\nfix dep all deposit 6 0 20 4711 region ins near 0.01 mol m12 molfrac 0.5 1.0 vz -1 -1\nrun 200\n", g=1,
+     + "molecule m12 m1.mol m2.mol\nfix dep all deposit 6 0 20 4711 region ins near 0.01 mol m12 molfrac 0.5 1.0 vz -1 -1\nrun 200\n", g=1,
      data={"m1.mol": MOL(1, 0.004, mass(0.004, 2500)), "m2.mol": MOL(2, 0.006, mass(0.006, 7800))})
 deck("m03_pour_mol", "# fix pour with a one-sphere template (type 2, 6 mm, rho 7800)\n"
      + BASE() + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nmolecule m2 m2.mol\nregion ins block 0.005 0.035 0.005 0.035 0.05 0.08 units box\n"
@@ -192,7 +192,7 @@ deck("b09_displace_rotate", "# displace_atoms all rotate about z (90 deg about 0
      + BASE() + TWO + "displace_atoms all rotate 0.02 0.02 0 0 0 1 90 units box\nregion rt block 0.025 INF INF INF INF INF units box\nset region rt density 7800\n" + RUN1, g=1)
 # ---------------------------------------------------------------- u*: units
 CGS_HK = f"hooke 2e6 3000 {K}"
-CGS_HM = "hertz/material 1e8 0.3 damping viscoelastic " + TL
+CGS_HM = "hertz/material 1e8 1.4e5 0.3 damping viscoelastic " + TL  # 1e7 Pa, 1.4e7 1/(m s) in cgs
 def ubase(units, model, box, sizes, g="1"):
     d1, d2, r1, r2 = sizes
     return (head(2, box=box, units=units) + G1(model) + f"fix floor all wall/gran granular {model} zplane 0 NULL\nfix integ all nve/sphere\n"
@@ -205,8 +205,8 @@ deck("u03_si_hertz_material_ref", "# units si twin of u02 (E 1e7 Pa, 4/6 mm, 250
      + ubase("si", HM, "0 0.04 0 0.04 0 0.1", (0.004, 0.006, 2500, 2500)) + "timestep 1e-5\n" + RUN1, g=1)
 deck("u04_lj_hooke", "# units lj: hooke kn 2000 gamma 3 mass_velocity, d 1 / 1.5, density 1\n"
      + ubase("lj", "hooke 2000 3 " + K, "0 10 0 10 0 20", (1, 1.5, 1, 1)) + "timestep 1e-4\n" + RUN1, g=1)
-deck("u05_micro_hertz", "# units micro (um, pg, us: velocity um/us = m/s): hertz/material E 1e7 Pa = 1e1 pg/(um us^2), 4/6 um? sizes 40/60 um rho 2.5e-6 pg/um3\n"
-     + ubase("micro", "hertz/material 10 0.3 damping viscoelastic " + TL, "0 400 0 400 0 1000", (40, 60, 2.5e-6, 2.5e-6)) + "timestep 1e-3\n" + RUN1, g=1)
+deck("u05_micro_hertz", "# units micro (um, pg, us: velocity um/us = m/s): hertz/material E 1e7 Pa = 1e4 pg/(um us^2), eta_n0 1.4e-5, 4/6 um? sizes 40/60 um rho 2.5e-6 pg/um3\n"
+     + ubase("micro", "hertz/material 1e4 1.4e-5 0.3 damping viscoelastic " + TL, "0 400 0 400 0 1000", (40, 60, 2.5e-6, 2.5e-6)) + "timestep 1e-3\n" + RUN1, g=1)
 deck("u06_metal_hooke", "# units metal with granular (velocity A/ps = 100 m/s): hooke kn 2000 (eV/A2), gamma 3 (1/ps), 4/6 A, density 2.5 g/cm3\n"
      + ubase("metal", "hooke 2000 3 " + K, "0 40 0 40 0 100", (4, 6, 2.5, 2.5)) + "timestep 1e-4\n" + RUN1, g=1)
 deck("u07_cgs_hertz_wall_gravity", "# units cgs hertz/material with gravity 981 cm/s2\n"
@@ -223,18 +223,18 @@ dd("d05_hertz_viscoelastic", "hertz kn 1e5 damping viscoelastic 50", "hertz 1e5 
 dd("d06_dmt", "dmt E 1e7 eta 0.5 nu 0.3 work 0.01 (cohesion)", "dmt 1e7 0.5 0.3 0.01 damping tsuji " + TL)
 dd("d07_jkr", "jkr E 1e7 eta 0.5 nu 0.3 work 0.01 (cohesion, end rule)", "jkr 1e7 0.5 0.3 0.01 damping tsuji " + TL)
 dd("d08_hooke_limit_damping", "hooke 2000 gamma 30000 (big) with limit_damping: the attractive end force clipped", "hooke 2000 30000 " + K + " limit_damping")
-dd("d09_hertzmat_visco_limit_damping", "hertz/material viscoelastic big eta with limit_damping", "hertz/material 1e7 5000 0.3 damping viscoelastic " + TL + " limit_damping")
+dd("d09_hertzmat_visco_limit_damping", "hertz/material viscoelastic big eta with limit_damping", "hertz/material 1e7 1.4e8 0.3 damping viscoelastic " + TL + " limit_damping")
 dd("d10_hooke_coeff_rest_one", "hooke coeff_restitution 1.0", "hooke 2000 1.0 damping coeff_restitution " + TL)
 dd("d11_hertzmat_tsuji_zero", "hertz/material tsuji e 0.05 (near zero)", "hertz/material 1e7 0.05 0.3 damping tsuji " + TL)
 deck("d12_mixed_models_explicit", "# pair_coeff 1 1 hooke, 2 2 hertz/material, 1 2 hertz/material explicit\n"
-     + head() + "pair_style granular\n" + f"pair_coeff 1 1 {HK}\npair_coeff 2 2 {HM}\npair_coeff 1 2 hertz/material 2e7 0.3 damping viscoelastic {TL}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
+     + head() + "pair_style granular\n" + f"pair_coeff 1 1 {HK}\npair_coeff 2 2 {HM}\npair_coeff 1 2 hertz/material 2e7 1.4e7 0.3 damping viscoelastic {TL}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
 deck("d13_hertzmat_mixing_E", "# pair_coeff 1 1 hertz/material E 1e7, 2 2 E 5e7: 1 2 mixed by LAMMPS (effective modulus)\n"
-     + head() + "pair_style granular\n" + f"pair_coeff 1 1 {HM}\npair_coeff 2 2 hertz/material 5e7 0.3 damping viscoelastic {TL}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
+     + head() + "pair_style granular\n" + f"pair_coeff 1 1 {HM}\npair_coeff 2 2 hertz/material 5e7 1.4e7 0.3 damping viscoelastic {TL}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
 deck("d14_hooke_mixing_kn_gamma", "# pair_coeff 1 1 hooke 2000 3000, 2 2 hooke 8000 1000: 1 2 mixed (geometric)\n"
      + head() + "pair_style granular\n" + f"pair_coeff 1 1 {HK}\npair_coeff 2 2 {hk(8000, 1000)}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
 dd("d15_hooke_tsuji", "hooke kn 2000 damping tsuji 0.5", "hooke 2000 0.5 damping tsuji " + TL)
 dd("d16_hertzmat_visco_rolling_twist", "hertz/material viscoelastic + tangential mindlin + rolling sds + twisting marshall (head-on: no part)",
-   "hertz/material 1e7 0.3 damping viscoelastic tangential mindlin NULL 1 0.4 rolling sds 1e3 50 0.1 twisting marshall")
+   "hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential mindlin NULL 1 0.4 rolling sds 1e3 50 0.1 twisting marshall")
 def old(name, comment, style, coeff="", g=1, extra=""):
     deck(name, "# " + comment + "\n" + head() + f"pair_style {style}\npair_coeff * *{coeff}\n" + GRAV
          + "fix floor all wall/gran hooke/history 2000 NULL 3000 NULL 0.5 1 zplane 0 NULL\n" + TAIL + TWO + extra + RUN1, g=g)
@@ -247,6 +247,9 @@ deck("d22_granular_cutoff", "# pair_style granular 0.02 (a global cutoff): no pa
      + head() + "pair_style granular 0.02\n" + f"pair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
 dd("d23_hertzmat_coeff_rest_wall", "hertz/material coeff_restitution 0.4 pair and wall", "hertz/material 1e7 0.4 0.3 damping coeff_restitution " + TL)
 dd("d24_hooke_coeff_rest_zero", "hooke coeff_restitution 0.0 (engine says)", "hooke 2000 0.0 damping coeff_restitution " + TL)
+dd("d29_dmt_viscoelastic", "dmt E 1e7 eta 1.4e7 nu 0.3 work 0.01 damping viscoelastic (cohesion: refusal or mapped)", "dmt 1e7 1.4e7 0.3 0.01 damping viscoelastic " + TL)
+dd("d30_jkr_viscoelastic", "jkr E 1e7 eta 1.4e7 nu 0.3 work 0.01 damping viscoelastic (cohesion, end rule)", "jkr 1e7 1.4e7 0.3 0.01 damping viscoelastic " + TL)
+dd("d31_hertzmat_visco_no_limit", "twin of d09 without limit_damping", "hertz/material 1e7 1.4e8 0.3 damping viscoelastic " + TL)
 dd("d25_dmt_zero_work", "dmt work 0 (no cohesion: hertz-like)", "dmt 1e7 0.5 0.3 0.0 damping tsuji " + TL)
 dd("d26_jkr_zero_work", "jkr work 0 (engine says)", "jkr 1e7 0.5 0.3 0.0 damping tsuji " + TL)
 dd("d27_hooke_viscoelastic", "hooke kn 2000 damping viscoelastic 3000 (hooke with a viscoelastic damping: factor a = delta*R?)", "hooke 2000 3000 damping viscoelastic " + TL)
@@ -273,14 +276,14 @@ dd("n11_exclude_molecule_intra", "atom_style sphere: neigh_modify exclude molecu
 ww = lambda name, comment, wall, g=1, extra="", model=HK: deck(name, "# " + comment + "\n" + head() + G1(model) + GRAV + wall + "\n" + TAIL + TWO + extra + RUN1, g=g)
 ww("w01_wall_hertzmat_tsuji", "fix wall/gran granular hertz/material damping tsuji (pair hooke)", f"fix floor all wall/gran granular hertz/material 1e7 0.5 0.3 damping tsuji {TL} zplane 0 NULL")
 ww("w02_wall_region_moving", "fix wall/gran/region with a plane region moving up at 0.5 m/s (the relative speed is g)",
-   f"region fl plane 0 0 0.0 0 0 1 side in move NULL NULL v_zz units box\nvariable zz equal 0.5*time\nfix floor all wall/gran/region granular {HK} region fl")
+   f"variable zz equal 0.5*time\nregion fl plane 0 0 0.0 0 0 1 side in move NULL NULL v_zz units box\nfix floor all wall/gran/region granular {HK} region fl")
 ww("w03_wall_old_hooke_history", "fix wall/gran hooke/history kn 5000 NULL 3000 NULL 0.5 1 (old syntax) beside pair granular", "fix floor all wall/gran hooke/history 5000 NULL 3000 NULL 0.5 1 zplane 0 NULL")
 ww("w04_wall_wiggle", "fix wall/gran granular with wiggle z 0.001 0.01 (a moving wall)", f"fix floor all wall/gran granular {HK} zplane 0 NULL wiggle z 0.001 0.01")
 ww("w05_wall_limit_damping", "fix wall/gran granular hooke 2000 30000 limit_damping", f"fix floor all wall/gran granular hooke 2000 30000 {K} limit_damping zplane 0 NULL")
 ww("w06_wall_coeff_rest", "fix wall/gran granular hooke coeff_restitution 0.3", f"fix floor all wall/gran granular hooke 2000 0.3 damping coeff_restitution {TL} zplane 0 NULL")
 ww("w07_wall_zcylinder", "fix wall/gran granular zcylinder 0.018 (a wall all spheres may meet)", f"fix floor all wall/gran granular {HK} zcylinder 0.018")
 ww("w08_wall_region_sphere_inside", "fix wall/gran/region granular with a sphere region (concave wall, radius 0.05)",
-   f"region ball sphere 0.02 0.02 0.05 0.05 side in units box\nfix floor all wall/gran/region granular hertz/material 1e7 0.3 damping viscoelastic {TL} region ball", model=HM)
+   f"region ball sphere 0.02 0.02 0.05 0.05 side in units box\nfix floor all wall/gran/region granular hertz/material 1e7 1.4e7 0.3 damping viscoelastic {TL} region ball", model=HM)
 ww("w09_wall_hertz_old", "fix wall/gran hertz/history kn 1e6 gamma 3000 (old syntax)", "fix floor all wall/gran hertz/history 1e6 NULL 3000 NULL 0.5 1 zplane 0 NULL")
 ww("w10_wall_temperature_kw", "fix wall/gran granular ... contacts keyword", f"fix floor all wall/gran granular {HK} zplane 0 NULL contacts")
 ww("w11_two_walls_diff", "two walls: floor kn 2000 and ceiling kn 8000 at 0.1", f"fix floor all wall/gran granular {HK} zplane 0 NULL\nfix ceil all wall/gran granular {hk(8000)} zplane NULL 0.1")
@@ -412,6 +415,39 @@ ee("e15_timer_timeout", "timer timeout 0.0001 then run (engine may stop the run 
 ee("e16_set_diameter_range_types", "set type 1*2 diameter 0.005", "set type 1*2 diameter 0.005\nrun 100\n")
 ee("e17_run_every_unfix", "run 100 every 50 \"unfix grav\" (mapped: gravity gone)", "run 100 every 50 \"unfix grav\"\nrun 100\n")
 ee("e18_if_quoted_triple", "if with triple quotes containing two commands (kn 5000 then 6000)", "if \"1 > 0\" then \"\"\"pair_coeff * * " + hk(5000) + "\npair_coeff * * " + hk(6000) + "\"\"\"\nrun 100\n")
+
+# ---------------------------------------------------------------- f*: other fixes that change a two-body collision (added at 21:00)
+HB = lambda: BASE(HM)
+ff = lambda name, comment, lines, model=HK: deck(name, "# " + comment + "\n" + BASE(model) + TWO + lines + RUN1, g=1)
+ff("f01_freeze_type2", "fix freeze on type 2 (force zeroed: a sphere that does not move): 1 2 is a sphere on a fixed sphere", "group t2 type 2\nfix fr t2 freeze\n")
+ff("f02_setforce_type2", "fix setforce 0 0 0 on type 2 (keeps its velocity, no contact force)", "group t2 type 2\nfix sf t2 setforce 0.0 0.0 0.0\n")
+ff("f03_nve_sphere_subgroup", "fix nve/sphere only on type 1 (type 2 never moves): integ replaced", "unfix integ\ngroup t1 type 1\nfix integ t1 nve/sphere\n")
+ff("f04_move_linear_type2", "fix move linear 0 0 0 on type 2 (held in place, not integrated)", "group t2 type 2\nunfix integ\ngroup t1 type 1\nfix integ t1 nve/sphere\nfix mv t2 move linear 0 0 0\n")
+ff("f05_double_integration", "type 2 integrated twice (nve/sphere on all plus nve/sphere on t2): LAMMPS warns; 1 2 changes", "group t2 type 2\nfix integ2 t2 nve/sphere\n")
+ff("f06_viscous_sphere", "fix viscous/sphere 1e-4 (rotational only: no part head-on?)", "fix vs all viscous/sphere 1e-4\n")
+ff("f07_damping_cundall", "fix damping/cundall 0.5 0.5 (local damping: changes eps)", "fix dc all damping/cundall 0.5 0.5\n")
+ff("f08_addforce_type1", "fix addforce 0.01 0 0 on type 1 (a body force along x: changes a head-on x collision)", "group t1 type 1\nfix af t1 addforce 0.01 0.0 0.0\n")
+ff("f09_spring_self_type2", "fix spring/self 1000 on type 2 (tethered)", "group t2 type 2\nfix ss t2 spring/self 1000.0\n")
+ff("f10_rigid_small_pair", "fix rigid/small of a 2-sphere clump of type 2 (molecule ids needed: engine says)", "group t2 type 2\nfix rb t2 rigid/small molecule\n")
+ff("f11_freeze_hertz", "fix freeze on type 2 with hertz/material", "group t2 type 2\nfix fr t2 freeze\n", model=HM)
+ff("f12_gravity_group_only", "gravity on type 1 only (fix grav unfixed, fix g1 t1 gravity)", "unfix grav\ngroup t1 type 1\nfix g1 t1 gravity 9.81 vector 0 0 -1\n")
+ff("f13_nve_limit", "fix nve/limit 1e-6 on all (integ replaced): velocities limited per step (engine decides)", "unfix integ\nfix integ all nve/limit 1e-6\n")
+ff("f14_langevin_zero_t", "fix langevin 0 0 0.001 seed (friction toward rest: changes eps)", "fix lv all langevin 0.0 0.0 0.001 4711\n")
+ff("f15_aveforce_type2", "fix aveforce 0 0 0 on type 2 (net force zeroed: a 1-atom group frozen in force)", "group t2 type 2\nfix avf t2 aveforce 0.0 0.0 0.0\n")
+# ---------------------------------------------------------------- h*: size-sensitive twins with hertz/material (LAMMPS set diameter keeps the mass)
+hh = lambda name, comment, lines, data=None: deck(name, "# " + comment + "\n" + BASE(HM) + TWO + lines + RUN1, g=1, data=data)
+hh("h01_labelmap_set_diameter_hertz", "labelmap; set type big diameter 0.010 (mass kept): hertz sees the size", LM + "set type big diameter 0.010\n")
+hh("h02_atom_var_diameter_hertz", "variable d atom 0.004+0.004*(x>0.015); set group all diameter v_d (type 1 -> 8 mm, type 2 -> 4 mm)", "variable d atom 0.004+0.004*(x>0.015)\nset group all diameter v_d\n")
+hh("h03_displace_region_diameter_hertz", "displace_atoms move 0.01 0 0 then set region x>0.025 diameter 0.010", "displace_atoms all move 0.01 0 0 units box\nregion rt block 0.025 INF INF INF INF INF units box\nset region rt diameter 0.010\n")
+hh("h04_set_density_then_diameter", "set type 2 density 7800 then diameter 0.010 (mass kept from 6 mm 7800)", "set type 2 density 7800\nset type 2 diameter 0.010\n")
+hh("h05_set_diameter_then_density", "set type 2 diameter 0.010 then density 1000 (mass from 10 mm 1000)", "set type 2 diameter 0.010\nset type 2 density 1000\n")
+hh("h06_read_data_hertz", "hertz read_data twin (r01 sizes)", "")
+hh("h07_index_redefine_diameter", "variable d index 0.008; variable d index 0.010 (ignored); set type 2 diameter ${d}", "variable d index 0.008\nvariable d index 0.010\nset type 2 diameter ${d}\n")
+hh("h08_set_type_fraction", "set type 1 type/fraction 2 1.0 4711 (all type 1 become type 2)", "set type 1 type/fraction 2 1.0 4711\n")
+hh("h09_set_type_ratio", "set type 2 type/ratio 1 1.0 4711 (the type 2 atom becomes type 1)", "set type 2 type/ratio 1 1.0 4711\n")
+hh("h10_set_region_type", "region around the type 1 sphere; set region r type 2", "region r sphere 0.02 0.02 0.01 0.003 units box\nset region r type 2\n")
+hh("h11_velocity_then_diameter_var", "variable d equal 0.002*3; set type 1 diameter $d (single-letter variable without braces)", "variable d equal 0.002*3\nset type 1 diameter $d\n")
+hh("h12_set_diameter_vzero", "set type 2 diameter 0.0 (a point: engine says)", "set type 2 diameter 0.0\n")
 
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)

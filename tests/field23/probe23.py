@@ -3,7 +3,8 @@ is run to its end in a scratch copy (nested so ../ stays inside), then its atoms
 asked for are made far above any wall, touching, at relative speed g along x, and run at dt = 1e-8 s until they part
 (gravity moves both alike; fixes of the deck stay). No import from the project: the engine decides. Resolution: at
 dt = 1e-8 s a 4 mm hooke contact (~5e-4 s) lasts ~5e4 steps, so the step error in eps is below 1e-4.
-usage: python probe21.py DECKDIR T1 T2 D1 RHO1 D2 RHO2 [G] [Z] [XC] [DT]"""
+PROBE_PRE (env): commands, ;-separated, put before the probe (e.g. unfix p for a fix pour that forbids a timestep change).
+usage: python probe23.py DECKDIR T1 T2 D1 RHO1 D2 RHO2 [G] [Z] [XC] [DT]"""
 import os, shutil, subprocess, sys, tempfile
 d, t1, t2, d1, r1, d2, r2 = sys.argv[1:8]
 g = float(sys.argv[8]) if len(sys.argv) > 8 else 1.0
@@ -14,7 +15,7 @@ deck = open(os.path.join(d, "DECK")).read().strip()
 top = tempfile.mkdtemp(prefix="field23-probe."); tmp = os.path.join(top, "a", "b", "c")
 shutil.copytree(d, tmp)
 x1, x2 = -float(d1) / 2, float(d2) / 2
-tail = f"""
+tail = "\n" + os.environ.get("PROBE_PRE", "").replace(";", "\n") + f"""
 delete_atoms group all
 create_atoms {t1} single {xc + x1} {xc} {z} units box
 create_atoms {t2} single {xc + x2} {xc} {z} units box
