@@ -449,6 +449,115 @@ hh("h10_set_region_type", "region around the type 1 sphere; set region r type 2"
 hh("h11_velocity_then_diameter_var", "variable d equal 0.002*3; set type 1 diameter $d (single-letter variable without braces)", "variable d equal 0.002*3\nset type 1 diameter $d\n")
 hh("h12_set_diameter_vzero", "set type 2 diameter 0.0 (a point: engine says)", "set type 2 diameter 0.0\n")
 
+# ---------------------------------------------------------------- k*: more LAMMPS forms (added at 20:40)
+kk = lambda name, comment, body, g=1, data=None: deck(name, "# " + comment + "\n" + body, g=g, data=data)
+NODAMP = f"hooke 2000 3000 {TL}"
+kk("k01_default_damping", "pair_coeff hooke 2000 3000 with no damping keyword (LAMMPS' default damping viscoelastic)", BASE(NODAMP) + TWO + RUN1)
+kk("k02_hertzmat_mix_nu", "hertz/material 1 1 E 1e7 nu 0.3, 2 2 E 5e7 nu 0.45: 1 2 mixed from E and nu", head() + "pair_style granular\n"
+   + f"pair_coeff 1 1 {HM}\npair_coeff 2 2 hertz/material 5e7 1.4e7 0.45 damping viscoelastic {TL}\n" + GRAV + FLOOR + TAIL + TWO + RUN1)
+kk("k03_coeff_rest_mixed", "hertz/material coeff_restitution 1 1 e 0.8, 2 2 e 0.4: 1 2 mixed (geometric: 0.566?)", head() + "pair_style granular\n"
+   + f"pair_coeff 1 1 hertz/material 1e7 0.8 0.3 damping coeff_restitution {TL}\npair_coeff 2 2 hertz/material 1e7 0.4 0.3 damping coeff_restitution {TL}\n" + GRAV + FLOOR + TAIL + TWO + RUN1)
+kk("k04_dmt_zero_work_visco", "dmt work 0 damping viscoelastic (= hertz/material force)", BASE("dmt 1e7 1.4e7 0.3 0.0 damping viscoelastic " + TL) + TWO + RUN1)
+kk("k05_jkr_zero_work_visco", "jkr work 0 damping viscoelastic", BASE("jkr 1e7 1.4e7 0.3 0.0 damping viscoelastic " + TL) + TWO + RUN1)
+kk("k06_hertz_limit_damping", "hertz kn 1e6 gamma 3e5 mass_velocity limit_damping", BASE("hertz 1e6 3e5 damping mass_velocity " + TL + " limit_damping") + TWO + RUN1)
+kk("k07_no_comm_vel", "no comm_modify vel yes (engine says)", BASE().replace("comm_modify vel yes\n", "") + TWO + RUN1)
+kk("k08_exclude_type_labels", "neigh_modify exclude type small big (labels)", BASE() + TWO + LM + "neigh_modify exclude type small big\n" + RUN1)
+kk("k09_group_type_compare", "group g type > 1; set group g density 7800", BASE() + TWO + "group g type > 1\nset group g density 7800\n" + RUN1)
+kk("k10_set_type_open_range", "set type 2* density 7800", BASE() + TWO + "set type 2* density 7800\n" + RUN1)
+kk("k11_pair_coeff_open_range", "pair_coeff 2* 2* kn 8000 (2 2 only)", BASE() + TWO + f"pair_coeff 2* 2* {hk(8000)}\n" + RUN1)
+kk("k12_if_elif_else", "if 0 then kn 3000 elif 1 then kn 5000 else kn 7000 -> 5000", BASE() + TWO
+   + f"if \"0 > 1\" then \"pair_coeff * * {hk(3000)}\" elif \"1 > 0\" \"pair_coeff * * {hk(5000)}\" else \"pair_coeff * * {hk(7000)}\"\n" + RUN1)
+kk("k13_nested_var_name", "variable i equal 2; kn${i} (kn2 = 6000): pair_coeff ${kn${i}}? (engine says)", BASE() + TWO
+   + "variable i equal 2\nvariable kn1 equal 3000\nvariable kn2 equal 6000\nvariable k equal v_kn${i}\n" + f"pair_coeff * * hooke $(v_k) 3000 {K}\n" + RUN1)
+kk("k14_pour_type_label", "fix pour by type label big (type 2), diam one 0.006 dens 7800 7800", BASE() + LM + INS
+   + "create_atoms small single 0.02 0.02 0.01\nset type small diameter 0.004 density 2500\nfix p all pour 5 big 4767 region ins diam one 0.006 dens 7800 7800\nrun 200\n")
+kk("k15_create_atoms_basis", "lattice sc 0.01 with basis of 2 types? create_atoms 1 region r basis 1 2 (engine says): then set type 2 diameter 0.006 density 7800",
+   BASE() + "lattice custom 0.01 a1 1 0 0 a2 0 1 0 a3 0 0 1 basis 0 0 0 basis 0.5 0.5 0.5\nregion r block 0 2 0 2 1 2\ncreate_atoms 1 region r basis 2 2\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 7800\n" + RUN1)
+kk("k16_include_var_path", "include ${f} with variable f string kn.in (kn 6000)", BASE() + TWO + "variable f string kn.in\ninclude ${f}\n" + RUN1, data={"kn.in": f"pair_coeff * * {hk(6000)}\n"})
+kk("k17_hertzmat_damping_first", "pair_coeff with damping before tangential and a rolling model after (order of keywords)", BASE(f"hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_history 1e3 1 0.3 rolling sds 1e3 50 0.1") + TWO + RUN1)
+kk("k18_set_type_mass_hertz", "hertz: set type 2 mass 1e-3 (rho from mass, radius kept)", BASE(HM) + TWO + "set type 2 mass 1e-3\n" + RUN1)
+kk("k19_variable_atom_set_density", "variable r atom 2500+5300*(type==2); set group all density v_r", BASE() + TWO + "variable r atom 2500+5300*(type==2)\nset group all density v_r\n" + RUN1)
+kk("k20_units_cgs_g100", "the u02 cgs deck audited with --g 100 (1 m/s in cm/s): ARGS none, G 100", ubase("cgs", CGS_HM, "0 4 0 4 0 10", (0.4, 0.6, 2.5, 2.5)) + "timestep 1e-5\n" + RUN1, g=100)
+# ---------------------------------------------------------------- L26+: more LIGGGHTS
+L("L26_E_too_big_no_hard", "# LIGGGHTS youngsModulus 1e10 without hard_particles yes (engine says)\n"
+  + lhead() + MAT3.replace("5e6 5e6 5e6", "1e10 1e10 1e10") + E3 + HERTZ + WALL3 + ATOMS + RUN)
+L("L27_E_big_hard_particles", "# LIGGGHTS youngsModulus 1e10 with hard_particles yes: hertz typed e\n"
+  + lhead() + "hard_particles yes\n" + MAT3.replace("5e6 5e6 5e6", "1e10 1e10 1e10") + E3 + HERTZ + WALL3 + ATOMS + RUN)
+L("L28_immediate_var_liggghts", "# LIGGGHTS: $(0.3+0.2) immediate form in the e matrix (LIGGGHTS 3.8 may not know $(...): engine says)\n"
+  + lhead() + MAT3 + "fix m3 all property/global coefficientRestitution peratomtypepair 3 $(0.3+0.2) 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n" + HERTZ + WALL3 + ATOMS + RUN)
+L("L29_if_elif_liggghts", "# LIGGGHTS if/elif/else: elif branch e 0.5\n"
+  + lhead() + MAT3 + E3 + "if \"0 > 1\" then \"" + E3b(0.2).strip() + "\" elif \"1 > 0\" \"" + E3b(0.5).strip() + "\" else \"" + E3b(0.9).strip() + "\"\n" + HERTZ + WALL3 + ATOMS + RUN)
+L("L30_e_matrix_extra_value", "# LIGGGHTS e matrix with 10 values for 3 types (one extra: engine says)\n"
+  + lhead() + MAT3 + E3.replace("0.8\n", "0.8 0.3\n") + HERTZ + WALL3 + ATOMS + RUN)
+L("L31_e_number_forms", "# LIGGGHTS e values written .6 / 5e-1 / 0.40 (number forms)\n"
+  + lhead() + MAT3 + "fix m3 all property/global coefficientRestitution peratomtypepair 3 .6 5e-1 0.7 5e-1 0.40 0.45 0.7 0.45 0.8\n" + HERTZ + WALL3 + ATOMS + RUN)
+L("L32_e_matrix_short", "# LIGGGHTS e matrix with 8 values for 3 types (one missing: engine says)\n"
+  + lhead() + MAT3 + E3.replace(" 0.8\n", "\n") + HERTZ + WALL3 + ATOMS + RUN)
+L("L33_atom_style_sphere", "# LIGGGHTS atom_style sphere instead of granular (engine says)\n"
+  + lhead().replace("atom_style granular", "atom_style sphere") + MAT3 + E3 + HERTZ + WALL3 + ATOMS + RUN)
+L("L34_variable_e_vector_style", "# LIGGGHTS: e from a variable string 0.35 (string style)\n"
+  + lhead() + MAT3 + "variable e string 0.35\n" + E3b("${e}") + HERTZ + WALL3 + ATOMS + RUN)
+L("L35_units_cgs_hooke_charvel", "# LIGGGHTS units cgs hooke with characteristicVelocity 200 (cm/s): e typed\n"
+  + lhead(units="cgs", box="-5 5 -5 5 -1 15").replace("neighbor 0.002", "neighbor 0.2") + MAT3.replace("5e6 5e6 5e6", "5e7 5e7 5e7") + E3 + "fix m4 all property/global characteristicVelocity scalar 200.\n" + HOOKE
+  + "fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0\n"
+  + "create_atoms 1 single 1 0 1 units box\ncreate_atoms 2 single -1 0 1 units box\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 1.5\n"
+  + "timestep 1e-5\nfix gravi all gravity 981 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 1000\n")
+
+# ---------------------------------------------------------------- n12+: group-based exclusions and walls with groups made before later atoms (added at 20:45)
+deck("n12_exclude_group_then_new_atom", "# group g1 type 1, g2 type 2, neigh_modify exclude group g1 g2; then create_atoms 1 (not in g1): the new type 1 sphere meets type 2\n"
+     + BASE() + TWO + "group g1 type 1\ngroup g2 type 2\nneigh_modify exclude group g1 g2\ncreate_atoms 1 single 0.03 0.03 0.01\nset atom 3 diameter 0.004 density 2500\n" + RUN1, g=1)
+deck("n13_exclude_group_then_pour", "# exclude group g1 g2 (by type at definition), then fix pour of type 1 (poured atoms in no group): 1 2 happens\n"
+     + BASE() + TWO + INS + "group g1 type 1\ngroup g2 type 2\nneigh_modify exclude group g1 g2\nfix p all pour 5 1 4767 region ins diam one 0.004 dens 2500 2500\nrun 200\n", g=1)
+deck("n14_wall_group_empty", "# fix wall/gran on group g1 defined (type 1) before any atom exists: the wall acts on nobody\n"
+     + head() + G1(HK) + GRAV + "group g1 type 1\n" + f"fix floor g1 wall/gran granular {HK} zplane 0 NULL\n" + TAIL + TWO + RUN1, g=1)
+deck("n15_exclude_group_dynamic", "# exclude group of a dynamic group (engine says)\n"
+     + BASE() + TWO + "group g1 dynamic all var one\nvariable one atom type==1\ngroup g2 type 2\nneigh_modify exclude group g1 g2\n" + RUN1, g=1)
+deck("n16_exclude_type_then_set_type", "# neigh_modify exclude type 1 2; then set atom 1 type 3 (3 types): the 3 2 pair meets\n"
+     + base2(nt=3) + TWO + "neigh_modify exclude type 1 2\nset atom 1 type 3\n" + RUN1, g=1)
+
+# ---------------------------------------------------------------- (20:50) hybrid/scaled, hybrid atom styles in data files, read_dump add, 2d discs
+deck("n17_hybrid_scaled_half", "# pair_style hybrid/scaled 0.5 granular: the contact force halved (kn and damping halved): eps changes\n"
+     + head() + f"pair_style hybrid/scaled 0.5 granular\npair_coeff * * granular {HK}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
+deck("n18_hybrid_scaled_var", "# pair_style hybrid/scaled v_s granular with s equal 2.0\n"
+     + head() + f"variable s equal 2.0\npair_style hybrid/scaled v_s granular\npair_coeff * * granular {HK}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
+deck("n19_hybrid_scaled_two", "# pair_style hybrid/scaled 1.0 granular 1.0 granular: two granular sub-styles on different pairs\n"
+     + head() + f"pair_style hybrid/scaled 0.5 granular 1.0 granular\npair_coeff 1 1 granular 1 {HK}\npair_coeff 1 2 granular 2 {HK}\npair_coeff 2 2 granular 2 {HK}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
+HYB = "# hybrid\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # hybrid\n\n1 1 0.02 0.02 0.01 0.004 2500 7\n2 2 0.01 0.01 0.01 0.006 7800 8\n"
+deck("r15_read_data_hybrid_sphere_molecular", "# atom_style hybrid sphere molecular? (sphere + bond: columns id type x y z diameter density molecule)\n"
+     + "units si\natom_style hybrid sphere bond\nboundary p p f\ncomm_modify vel yes\nread_data d.data\n" + G1(HK) + GRAV + FLOOR + TAIL + RUN1, g=1, data={"d.data": HYB})
+deck("r16_read_dump_add", "# read_dump of a given dump file adds a type 2 atom (add yes): its size the default (diameter 1?) (engine says)\n"
+     + BASE() + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nread_dump atoms.dump 0 x y z add yes box no\n" + RUN1, g=1,
+     data={"atoms.dump": "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS pp pp ff\n0 0.04\n0 0.04\n0 0.1\nITEM: ATOMS id type x y z\n5 2 0.01 0.01 0.01\n"})
+deck("r17_read_dump_add_then_set", "# read_dump add yes (type 2), then set type 2 diameter 0.006 density 7800\n"
+     + BASE() + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nread_dump atoms.dump 0 x y z add yes box no\nset type 2 diameter 0.006 density 7800\n" + RUN1, g=1,
+     data={"atoms.dump": "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS pp pp ff\n0 0.04\n0 0.04\n0 0.1\nITEM: ATOMS id type x y z\n5 2 0.01 0.01 0.01\n"})
+deck("r18_read_dump_replace_type", "# read_dump of positions only (no add): moves atom 2 to x 0.03; then set region x>0.025 density 7800\n"
+     + BASE() + TWO + "read_dump atoms.dump 0 x y z box no\nregion rt block 0.025 INF INF INF INF INF units box\nset region rt density 7800\n" + RUN1, g=1,
+     data={"atoms.dump": "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n2\nITEM: BOX BOUNDS pp pp ff\n0 0.04\n0 0.04\n0 0.1\nITEM: ATOMS id type x y z\n1 1 0.02 0.02 0.01\n2 2 0.03 0.01 0.01\n"})
+D2 = lambda setlines, model=HK: ("units si\ndimension 2\natom_style sphere 1\nboundary p f p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.1 -0.001 0.001 units box\ncreate_box 2 box\n"
+     + G1(model) + "fix grav all gravity 9.81 vector 0 -1 0\n" + f"fix floor all wall/gran granular {model} yplane 0 NULL\nfix integ all nve/sphere disc\nfix e2 all enforce2d\ntimestep 1e-5\n"
+     + "create_atoms 1 single 0.02 0.01 0\ncreate_atoms 2 single 0.01 0.01 0\n" + setlines + RUN1)
+deck("x01_2d_density_disc", "# 2d: set type density/disc (mass = pi r^2 rho): 4 mm / 6 mm, rho 2500 (areal)\n"
+     + D2("set type 1 diameter 0.004 density/disc 2500\nset type 2 diameter 0.006 density/disc 2500\n"), g=1)
+deck("x02_2d_density_plain", "# 2d: set type density (LAMMPS: sphere volume even in 2d?)\n"
+     + D2("set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n"), g=1)
+deck("x03_2d_density_disc_hertz", "# 2d hertz/material with density/disc\n"
+     + D2("set type 1 diameter 0.004 density/disc 2500\nset type 2 diameter 0.006 density/disc 2500\n", model=HM), g=1)
+deck("x04_2d_read_data", "# 2d read_data Atoms # sphere (density: LAMMPS 2d read_data makes mass from area? engine says)\n"
+     + "units si\ndimension 2\natom_style sphere 1\nboundary p f p\ncomm_modify vel yes\nread_data d.data\n" + G1(HK) + "fix grav all gravity 9.81 vector 0 -1 0\n"
+     + f"fix floor all wall/gran granular {HK} yplane 0 NULL\nfix integ all nve/sphere disc\nfix e2 all enforce2d\ntimestep 1e-5\n" + RUN1, g=1,
+     data={"d.data": "# 2d\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.1 ylo yhi\n-0.001 0.001 zlo zhi\n\nAtoms # sphere\n\n1 1 0.004 2500 0.02 0.01 0\n2 2 0.006 2500 0.01 0.01 0\n"})
+deck("x05_2d_pour", "# 2d fix pour (discs? engine says) diam one 0.004 dens 2500 2500\n"
+     + "units si\ndimension 2\natom_style sphere 1\nboundary p f p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.1 -0.001 0.001 units box\ncreate_box 2 box\n"
+     + G1(HK) + "fix grav all gravity 9.81 vector 0 -1 0\n" + f"fix floor all wall/gran granular {HK} yplane 0 NULL\nfix integ all nve/sphere disc\nfix e2 all enforce2d\ntimestep 1e-5\n"
+     + "region ins block 0.005 0.035 0.05 0.09 -0.001 0.001 units box\nfix p all pour 5 1 4767 region ins diam one 0.004 dens 2500 2500\nrun 200\n", g=1)
+
+deck("r19_default_diameter_lost", "# a type 2 sphere of LAMMPS' default diameter 1 m in a 4 cm box (no set): does the engine stop (lost atoms) at the first run? (the read_dump of r16 without read_dump)\n"
+     + BASE() + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\ncreate_atoms 2 single 0.01 0.01 0.01\n" + RUN1, g=1)
+deck("r20_read_dump_add_box_yes", "# r16 with the added atom given a size right after (set atom 5 diameter 0.006 density 7800) and read_dump ... add keep\n"
+     + BASE() + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nread_dump atoms.dump 0 x y z add keep box no\nset atom 5 diameter 0.006 density 7800\n" + RUN1, g=1,
+     data={"atoms.dump": "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS pp pp ff\n0 0.04\n0 0.04\n0 0.1\nITEM: ATOMS id type x y z\n5 2 0.01 0.01 0.01\n"})
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 

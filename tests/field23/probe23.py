@@ -1,8 +1,9 @@
 """Field round 23: the eps LAMMPS itself gives a head-on pair with the contact settings a deck leaves it holding: the deck
 is run to its end in a scratch copy (nested so ../ stays inside), then its atoms are deleted, two spheres of the types
-asked for are made far above any wall, touching, at relative speed g along x, and run at dt = 1e-8 s until they part
+asked for are made far above any wall, touching, at relative speed g along x, and run at dt = 1e-8 s until they part (at most PROBE_STEPS, default 3e6 = 0.03 s: 20 times the longest contact here; a pair still together then has stuck)
 (gravity moves both alike; fixes of the deck stay). No import from the project: the engine decides. Resolution: at
 dt = 1e-8 s a 4 mm hooke contact (~5e-4 s) lasts ~5e4 steps, so the step error in eps is below 1e-4.
+PROBE_MID (env): commands put after the two spheres are made (e.g. group t2 type 2, so a deck's fix on group t2 acts on them).
 PROBE_PRE (env): commands, ;-separated, put before the probe (e.g. unfix p for a fix pour that forbids a timestep change).
 usage: python probe23.py DECKDIR T1 T2 D1 RHO1 D2 RHO2 [G] [Z] [XC] [DT]"""
 import os, shutil, subprocess, sys, tempfile
@@ -26,6 +27,7 @@ group f23a1 id ${{f23i1}}
 group f23a2 id ${{f23i2}}
 set group f23a1 diameter {d1} density {r1}
 set group f23a2 diameter {d2} density {r2}
+""" + os.environ.get("PROBE_MID", "").replace(";", "\n") + f"""
 variable f23m1 equal mass(f23a1)
 variable f23m2 equal mass(f23a2)
 velocity all set 0 0 0
@@ -36,7 +38,7 @@ variable f23s equal (v_f23d>0)&&(step>10)
 fix f23h all halt 1 v_f23s == 1 error continue
 timestep {dt}
 thermo 0
-run 20000000
+run {os.environ.get("PROBE_STEPS", "3000000")}
 print "PROBE23 eps $((vcm(f23a2,x)-vcm(f23a1,x))/{g}:%.6f) steps $(step) m $(v_f23m1) $(v_f23m2)"
 """
 txt = open(os.path.join(tmp, deck), newline="", encoding="latin-1").read()  # byte for byte: lone CRs, NULs, Latin-1 as the engine reads them

@@ -20,7 +20,7 @@ variable f23s equal (xcm(f23a,z)>{r})&&(step>10)
 fix f23h all halt 1 v_f23s == 1 error continue
 timestep 1e-8
 thermo 0
-run 20000000
+run 3000000
 print "PROBE23 wall eps $(vcm(f23a,z)/{g}:%.6f) steps $(step)"
 """
 open(os.path.join(tmp, deck), "a").write(tail)
