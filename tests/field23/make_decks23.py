@@ -416,7 +416,7 @@ ee("e16_set_diameter_range_types", "set type 1*2 diameter 0.005", "set type 1*2 
 ee("e17_run_every_unfix", "run 100 every 50 \"unfix grav\" (mapped: gravity gone)", "run 100 every 50 \"unfix grav\"\nrun 100\n")
 ee("e18_if_quoted_triple", "if with triple quotes containing two commands (kn 5000 then 6000)", "if \"1 > 0\" then \"\"\"pair_coeff * * " + hk(5000) + "\npair_coeff * * " + hk(6000) + "\"\"\"\nrun 100\n")
 
-# ---------------------------------------------------------------- f*: other fixes that change a two-body collision (added at 21:00)
+# ---------------------------------------------------------------- f*: other fixes that change a two-body collision
 HB = lambda: BASE(HM)
 ff = lambda name, comment, lines, model=HK: deck(name, "# " + comment + "\n" + BASE(model) + TWO + lines + RUN1, g=1)
 ff("f01_freeze_type2", "fix freeze on type 2 (force zeroed: a sphere that does not move): 1 2 is a sphere on a fixed sphere", "group t2 type 2\nfix fr t2 freeze\n")
@@ -449,7 +449,7 @@ hh("h10_set_region_type", "region around the type 1 sphere; set region r type 2"
 hh("h11_velocity_then_diameter_var", "variable d equal 0.002*3; set type 1 diameter $d (single-letter variable without braces)", "variable d equal 0.002*3\nset type 1 diameter $d\n")
 hh("h12_set_diameter_vzero", "set type 2 diameter 0.0 (a point: engine says)", "set type 2 diameter 0.0\n")
 
-# ---------------------------------------------------------------- k*: more LAMMPS forms (added at 20:40)
+# ---------------------------------------------------------------- k*: more LAMMPS forms
 kk = lambda name, comment, body, g=1, data=None: deck(name, "# " + comment + "\n" + body, g=g, data=data)
 NODAMP = f"hooke 2000 3000 {TL}"
 kk("k01_default_damping", "pair_coeff hooke 2000 3000 with no damping keyword (LAMMPS' default damping viscoelastic)", BASE(NODAMP) + TWO + RUN1)
@@ -503,7 +503,7 @@ L("L35_units_cgs_hooke_charvel", "# LIGGGHTS units cgs hooke with characteristic
   + "create_atoms 1 single 1 0 1 units box\ncreate_atoms 2 single -1 0 1 units box\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 1.5\n"
   + "timestep 1e-5\nfix gravi all gravity 981 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 1000\n")
 
-# ---------------------------------------------------------------- n12+: group-based exclusions and walls with groups made before later atoms (added at 20:45)
+# ---------------------------------------------------------------- n12+: group-based exclusions and walls with groups made before later atoms
 deck("n12_exclude_group_then_new_atom", "# group g1 type 1, g2 type 2, neigh_modify exclude group g1 g2; then create_atoms 1 (not in g1): the new type 1 sphere meets type 2\n"
      + BASE() + TWO + "group g1 type 1\ngroup g2 type 2\nneigh_modify exclude group g1 g2\ncreate_atoms 1 single 0.03 0.03 0.01\nset atom 3 diameter 0.004 density 2500\n" + RUN1, g=1)
 deck("n13_exclude_group_then_pour", "# exclude group g1 g2 (by type at definition), then fix pour of type 1 (poured atoms in no group): 1 2 happens\n"
@@ -515,7 +515,7 @@ deck("n15_exclude_group_dynamic", "# exclude group of a dynamic group (engine sa
 deck("n16_exclude_type_then_set_type", "# neigh_modify exclude type 1 2; then set atom 1 type 3 (3 types): the 3 2 pair meets\n"
      + base2(nt=3) + TWO + "neigh_modify exclude type 1 2\nset atom 1 type 3\n" + RUN1, g=1)
 
-# ---------------------------------------------------------------- (20:50) hybrid/scaled, hybrid atom styles in data files, read_dump add, 2d discs
+# ---------------------------------------------------------------- hybrid/scaled, hybrid atom styles in data files, read_dump add, 2d discs
 deck("n17_hybrid_scaled_half", "# pair_style hybrid/scaled 0.5 granular: the contact force halved (kn and damping halved): eps changes\n"
      + head() + f"pair_style hybrid/scaled 0.5 granular\npair_coeff * * granular {HK}\n" + GRAV + FLOOR + TAIL + TWO + RUN1, g=1)
 deck("n18_hybrid_scaled_var", "# pair_style hybrid/scaled v_s granular with s equal 2.0\n"
@@ -557,6 +557,15 @@ deck("r19_default_diameter_lost", "# a type 2 sphere of LAMMPS' default diameter
 deck("r20_read_dump_add_box_yes", "# r16 with the added atom given a size right after (set atom 5 diameter 0.006 density 7800) and read_dump ... add keep\n"
      + BASE() + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nread_dump atoms.dump 0 x y z add keep box no\nset atom 5 diameter 0.006 density 7800\n" + RUN1, g=1,
      data={"atoms.dump": "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n1\nITEM: BOX BOUNDS pp pp ff\n0 0.04\n0 0.04\n0 0.1\nITEM: ATOMS id type x y z\n5 2 0.01 0.01 0.01\n"})
+
+deck("r21_set_z_outside_box", "# set atom 2 z 0.2 (outside the p p f box): LAMMPS loses it at the run's setup (thermo_modify lost error, the default)\n"
+     + BASE() + TWO + "set atom 2 z 0.2\n" + RUN1, g=1)
+deck("r22_thrown_out_lost_error", "# the type 2 sphere thrown up at 200 m/s in a p p f box, run 1000, thermo 100: LAMMPS stops (Lost atoms) in the run\n"
+     + BASE() + TWO + "group t2 type 2\nvelocity t2 set 0 0 200\nthermo 100\nrun 1000\npair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+deck("r23_thrown_out_thermo_0", "# as r22 with thermo 0 (lost atoms only checked at the run's start and end)\n"
+     + BASE() + TWO + "group t2 type 2\nvelocity t2 set 0 0 200\nthermo 0\nrun 1000\npair_coeff * * " + hk(5000) + "\nrun 100\n", g=1)
+deck("r24_big_default_sphere_type1", "# both types sized, then a third atom of type 1 left at the default diameter 1 (no set after it)\n"
+     + BASE() + TWO + "create_atoms 1 single 0.03 0.03 0.05\n" + RUN1, g=1)
 
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
