@@ -567,6 +567,23 @@ deck("r23_thrown_out_thermo_0", "# as r22 with thermo 0 (lost atoms only checked
 deck("r24_big_default_sphere_type1", "# both types sized, then a third atom of type 1 left at the default diameter 1 (no set after it)\n"
      + BASE() + TWO + "create_atoms 1 single 0.03 0.03 0.05\n" + RUN1, g=1)
 
+L("L36_lost_atom_in_run_liggghts", "# LIGGGHTS: the type 2 sphere thrown up at 200 m/s in the f f f box, run 1000 (LIGGGHTS default: lost atoms error?), then e 0.3, run 100\n"
+  + LB() + ATOMS + LRUN + "group up type 2\nvelocity up set 0 0 200\nrun 1000\n" + E3b(0.3) + "run 100\n")
+rr("R11_fix_halt_hard", "fix halt 10 v_t > 0.0005 error hard: LAMMPS exits in run 1 (time passes 5e-4 at step 50); pair_coeff kn 5000 after never read",
+   "variable t equal time\nfix h all halt 10 v_t > 0.0005 error hard\nrun 100\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+rr("R12_fix_halt_soft", "fix halt ... error soft: run 1 ends early, the deck goes on (kn 5000 for run 2)",
+   "variable t equal time\nfix h all halt 10 v_t > 0.0005 error soft\nrun 100\nunfix h\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+rr("R13_fix_halt_hard_never", "fix halt with a condition never true (error hard): the deck runs on (kn 5000)",
+   "variable t equal time\nfix h all halt 10 v_t > 1.0 error hard\nrun 100\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+
+HS = ("fix k1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\nfix k2 all property/global kt peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+      "fix k3 all property/global gamman peratomtypepair 3 500 500 500 500 500 500 500 500 500\nfix k4 all property/global gammat peratomtypepair 3 500 500 500 500 500 500 500 500 500\n"
+      "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\nfix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n")
+L("L37_lost_then_new_atom_id_liggghts", "# LIGGGHTS hooke/stiffness (eps depends on masses): the type 2 sphere (id 2) thrown out of the f f f box in run 1 (LIGGGHTS loses it without error), create_atoms 2 (engine id 2 = max+1), set atom 2 density 500\n"
+  + lhead() + MAT3 + HS + ATOMS + LRUN + "group up type 2\nvelocity up set 0 0 200\nrun 1000\ncreate_atoms 2 single -0.01 0 0.05 units box\nset atom 2 diameter 0.006 density 500\nrun 100\n")
+L("L38_lost_then_set_type_liggghts", "# LIGGGHTS hooke/stiffness: type 2 sphere lost in run 1; the only type 2 pairs left are none; then create_atoms 2 + set type 2 diameter 0.008\n"
+  + lhead() + MAT3 + HS + ATOMS + LRUN + "group up type 2\nvelocity up set 0 0 200\nrun 1000\ncreate_atoms 2 single -0.01 0 0.05 units box\nset type 2 diameter 0.008 density 500\nrun 100\n")
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
