@@ -584,6 +584,38 @@ L("L37_lost_then_new_atom_id_liggghts", "# LIGGGHTS hooke/stiffness (eps depends
 L("L38_lost_then_set_type_liggghts", "# LIGGGHTS hooke/stiffness: type 2 sphere lost in run 1; the only type 2 pairs left are none; then create_atoms 2 + set type 2 diameter 0.008\n"
   + lhead() + MAT3 + HS + ATOMS + LRUN + "group up type 2\nvelocity up set 0 0 200\nrun 1000\ncreate_atoms 2 single -0.01 0 0.05 units box\nset type 2 diameter 0.008 density 500\nrun 100\n")
 
+# ---------------------------------------------------------------- z*: the working directory changed by shell cd; quoted labels; run_style respa
+DATA_RHO = lambda rho: DATA2.format(nt=2).replace("7800", str(rho))
+deck("z01_shell_cd_read_data", "# shell cd sub, then read_data d.data: LAMMPS reads sub/d.data (type 2 rho 7800), not ./d.data (rho 1000)\n"
+     + "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nshell cd sub\nread_data d.data\n" + G1(HK) + GRAV + FLOOR + TAIL + RUN1, g=1,
+     data={"d.data": DATA_RHO(1000), "sub/d.data": DATA_RHO(7800)})
+deck("z02_shell_cd_include", "# shell cd sub, include kn.in: LAMMPS reads sub/kn.in (kn 8000), not ./kn.in (kn 3000)\n"
+     + BASE() + TWO + "shell cd sub\ninclude kn.in\n" + RUN1, g=1, data={"kn.in": f"pair_coeff * * {hk(3000)}\n", "sub/kn.in": f"pair_coeff * * {hk(8000)}\n"})
+deck("z03_shell_cd_file_var", "# shell cd sub, variable kn file kn.txt: LAMMPS reads sub/kn.txt (8000)\n"
+     + BASE() + TWO + "shell cd sub\nvariable kn file kn.txt\npair_coeff * * hooke ${kn} 3000 " + K + "\n" + RUN1, g=1, data={"kn.txt": "3000\n", "sub/kn.txt": "8000\n"})
+deck("z04_shell_cd_back", "# shell cd sub then shell cd .. then include kn.in: ./kn.in (kn 3000)\n"
+     + BASE() + TWO + "shell cd sub\nshell cd ..\ninclude kn.in\n" + RUN1, g=1, data={"kn.in": f"pair_coeff * * {hk(3000)}\n", "sub/kn.in": f"pair_coeff * * {hk(8000)}\n"})
+deck("z05_shell_cd_molecule", "# shell cd sub, molecule m1 m1.mol: LAMMPS reads sub/m1.mol (6 mm rho 7800), not ./m1.mol (6 mm rho 1000)\n"
+     + BASE() + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nshell cd sub\nmolecule m1 m1.mol\ncreate_atoms 0 single 0.01 0.01 0.01 mol m1 1234\n" + RUN1, g=1,
+     data={"m1.mol": MOL(2, 0.006, mass(0.006, 1000)), "sub/m1.mol": MOL(2, 0.006, mass(0.006, 7800))})
+deck("a13_labelmap_quoted", "# labelmap atom 1 'small' 2 \"big\" (quoted labels); pair_coeff big big 8000\n"
+     + BASE() + TWO + "labelmap atom 1 'small' 2 \"big\"\n" + f"pair_coeff big big {hk(8000)}\n" + RUN1, g=1)
+rr("R14_run_style_respa", "run_style respa 2 2 (pair on the outer level? engine says)", "run_style respa 2 2\nrun 100\n")
+L("L39_shell_cd_include_liggghts", "# LIGGGHTS: shell cd sub, include in.e (sub/in.e: e 0.3; ./in.e: e 0.9)\n"
+  + lhead() + MAT3 + E3 + "shell cd sub\ninclude in.e\n" + HERTZ + WALL3 + ATOMS + RUN, data={"in.e": E3b(0.9), "sub/in.e": E3b(0.3)})
+
+# escapes: files a deck writes outside its own folder (the audit must keep them inside its scratch copy)
+deck("z06_shell_cd_up_write_data", "# shell cd .. then write_data f23z06.data (LAMMPS writes beside the deck's folder)\n"
+     + BASE() + TWO + "shell cd ..\nwrite_data f23z06.data\nshell cd z06_shell_cd_up_write_data\n" + RUN1, g=1)
+deck("z07_log_up", "# log ../f23z07.log (a log file outside the deck's folder)\n" + BASE() + TWO + "log ../f23z07.log\n" + RUN1, g=1)
+deck("z08_shell_cd_tmp_restart", "# shell cd /tmp then write_restart f23z08.restart\n" + BASE() + TWO + "shell cd /tmp\nwrite_restart f23z08.restart\n" + RUN1, g=1)
+deck("z09_fix_print_up", "# fix print 10 to ../f23z09.txt during the run\n" + BASE() + TWO + "fix pr all print 10 \"step $(step)\" file ../f23z09.txt screen no\n" + RUN1, g=1)
+deck("z10_write_coeff_up", "# write_coeff ../f23z10.coeff\n" + BASE() + TWO + "write_coeff ../f23z10.coeff\n" + RUN1, g=1)
+deck("z11_write_dump_abs", "# write_dump all atom /tmp/f23z11.dump (absolute path)\n" + BASE() + TWO + "write_dump all atom /tmp/f23z11.dump\n" + RUN1, g=1)
+deck("z12_shell_mkdir_touch", "# shell mkdir ../f23z12dir and shell touch ../f23z12.txt\n" + BASE() + TWO + "shell mkdir ../f23z12dir\nshell touch ../f23z12.txt\n" + RUN1, g=1)
+deck("z13_fix_ave_time_file_up", "# fix ave/time ... file ../f23z13.txt (written during runs); then kn from it? no: just the file\n"
+     + BASE() + TWO + "variable one equal 1\nfix av all ave/time 10 1 10 v_one file ../f23z13.txt\n" + RUN1, g=1)
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
