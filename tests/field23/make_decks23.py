@@ -616,6 +616,15 @@ deck("z12_shell_mkdir_touch", "# shell mkdir ../f23z12dir and shell touch ../f23
 deck("z13_fix_ave_time_file_up", "# fix ave/time ... file ../f23z13.txt (written during runs); then kn from it? no: just the file\n"
      + BASE() + TWO + "variable one equal 1\nfix av all ave/time 10 1 10 v_one file ../f23z13.txt\n" + RUN1, g=1)
 
+rr("R15_timer_timeout_zero", "timer timeout 0 after run 1 (earlier rounds' class): run 2 makes no step? (engine says)",
+   "run 100\ntimer timeout 0\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+rr("R16_halt_soft_then_timeout_off", "fix halt error soft in run 1, then timer timeout off: run 2 makes its steps (kn 5000)",
+   "variable t equal time\nfix h all halt 10 v_t > 0.0005 error soft\nrun 100\nunfix h\ntimer timeout off\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+rr("R17_halt_soft_three_runs", "fix halt error soft in run 1 (kn 2000), kn 5000 for run 2, kn 8000 for run 3: runs 2 and 3 skipped by LAMMPS",
+   "variable t equal time\nfix h all halt 10 v_t > 0.0005 error soft\nrun 100\nunfix h\npair_coeff * * " + hk(5000) + "\nrun 100\npair_coeff * * " + hk(8000) + "\nrun 100\n")
+rr("R18_halt_continue", "fix halt error continue in run 1: the run ends, later runs go on (kn 5000)",
+   "variable t equal time\nfix h all halt 10 v_t > 0.0005 error continue\nrun 100\nunfix h\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
