@@ -625,6 +625,12 @@ rr("R17_halt_soft_three_runs", "fix halt error soft in run 1 (kn 2000), kn 5000 
 rr("R18_halt_continue", "fix halt error continue in run 1: the run ends, later runs go on (kn 5000)",
    "variable t equal time\nfix h all halt 10 v_t > 0.0005 error continue\nrun 100\nunfix h\npair_coeff * * " + hk(5000) + "\nrun 100\n")
 
+L("L40_lost_error_liggghts", "# LIGGGHTS thermo_modify lost error, the type 2 sphere thrown out in run 1 (LIGGGHTS stops), then e 0.3 and run 100 (never reached)\n"
+  + LB() + ATOMS + LRUN + "thermo_modify lost error\ngroup up type 2\nvelocity up set 0 0 200\nrun 1000\n" + E3b(0.3) + "run 100\n")
+rr("R19_halt_tlimit_soft", "fix halt 10 tlimit > 0.0 error soft (wall-clock, met at the first check): later runs skipped",
+   "fix h all halt 10 tlimit > 0.0 error soft\nrun 100\nunfix h\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+deck("R20_halt_soft_in_include", "# the soft halt set up in an include file (halt.in)\n" + BASE() + TWO + "include halt.in\nrun 100\nunfix h\npair_coeff * * " + hk(5000) + "\nrun 100\n", g=1, data={"halt.in": "variable t equal time\nfix h all halt 10 v_t > 0.0005 error soft\n"})
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 

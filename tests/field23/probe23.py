@@ -30,9 +30,9 @@ set group f23a2 diameter {d2} density {r2}
 """ + os.environ.get("PROBE_MID", "").replace(";", "\n") + f"""
 variable f23m1 equal mass(f23a1)
 variable f23m2 equal mass(f23a2)
-velocity all set 0 0 0
-velocity f23a1 set $({g}*v_f23m2/(v_f23m1+v_f23m2)) 0 0
-velocity f23a2 set $(-{g}*v_f23m1/(v_f23m1+v_f23m2)) 0 0
+velocity all set 0 0 0 units box
+velocity f23a1 set $({g}*v_f23m2/(v_f23m1+v_f23m2)) 0 0 units box
+velocity f23a2 set $(-{g}*v_f23m1/(v_f23m1+v_f23m2)) 0 0 units box
 variable f23d equal xcm(f23a2,x)-xcm(f23a1,x)-({float(d1) / 2 + float(d2) / 2})
 variable f23s equal (v_f23d>0)&&(step>10)
 fix f23h all halt 1 v_f23s == 1 error continue
