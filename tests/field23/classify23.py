@@ -1,24 +1,35 @@
 """Field round 23: the outcome of each deck folder (by the prefix of its name), checked to cover every folder once.
-usage: python classify22.py   (prints the table rows for FINDINGS.md)"""
+usage: python classify23.py   (prints the table rows for FINDINGS.md)"""
 import os
 C = {
- "correct, engine-checked (state23: the engine's atoms at the deck's end; probe23: head-on pair at dt 1e-8 s; abs(audit - engine) <= 2e-5)":
-    "t19 t23 t24 t25 t21 q01 q04 q05 q06 q08 q12 q14 q17 x07 x10 x11 w01 w07 w09 y03 y04 y06 y07 y08 y10 y12 z01 z02 z04 z05 t14 t15 t17 t20 t28 t29 t32 t33 x08 x09 x12 v02 z07",
- "correct by the engine's PROBE print (kn it ends with) and the audit's eps for that kn elsewhere in this round":
-    "t01 t03 t05 t08 t10 t11 t12 t18 t30 t31 t34 q03 q07 q09 q11 q13 q18 x01 x02 x03 x06 q15 w08 w10 w11",
- "correct, LIGGGHTS typed e (engine's PROBE e where printed)": "N01 N03 N04 N05 N06 N07 N08 N09 N10 N11 N12 N13 N15 N16 N18 z03",
- "correct, LIGGGHTS engine-checked (lprobe23: head-on pair in LIGGGHTS at dt 1e-7 s, types 1 1 and 1 2; abs(audit - engine) <= 2e-5)": "N17",
- "effect named fairly": "x04",
- "SILENTLY WRONG E1: `set group` on a dynamic group after a run: the audit uses the membership at definition, the engine the one at the run's end":
-    "t16 w02 w04 w05 y13",
- "SILENTLY WRONG E2: atoms lost in a run (thermo_modify lost ignore) kept by the audit: phantom sizes in ranges, pairs that cannot happen, atom ids shifted":
-    "t13 w06 w12 z06 v01",
- "SILENTLY WRONG E3: a lone CR (no LF) ends a line for the audit, not for the engine (deck, include, LIGGGHTS; v04: a deck LAMMPS stops at, answered)": "q02 y01 y02 y05 y14 y15 y16 v04",
- "WRONG REFUSAL (false word): 'LAMMPS stops here' where LAMMPS runs the deck to its end (y11: E1, delete_atoms of a dynamic group the run emptied; v03: E3, a lone CR inside a pair_coeff)": "y11 v03",
- "WRONG EPS next to only 'line N not understood: reset_atoms id' (E2: fix evaporate deleted atom 1 in the run; the engine renumbers, set atom 1 hits the other type)": "z08",
- "answers pairs of a type whose only atom the run lost, no note (mild: the numbers are the settings' own)": "y09",
- "fair refusal (run ... every with commands; or the engine itself stops on the deck)":
-    "t02 t06 t07 t35 t36 x05 t04 t09 t22 t26 t27 q10 q16 N02 N14 w03",
+ "correct, engine-checked (LAMMPS: referee23/probe23 head-on pairs of the engine's end-state sizes at dt 1e-8 s, wprobe23 for walls where named in FINDINGS; abs(audit - engine) <= 2e-5; pairs the audit leaves out as excluded measured -1 = no contact)":
+    "R01 R02 R03 R06 R07 R08 R09 R10 R13 R14 R16 R18 a01 a02 a03 a04 a05 a06 a07 a08 a09 a10 a11 a12 a13 b02 b04 b05 b06 b08 b09 "
+    "d01 d02 d03 d04 d05 d08 d09 d10 d11 d12 d13 d14 d15 d16 d17 d18 d19 d20 d21 d22 d23 d27 d28 d31 "
+    "e01 e02 e03 e04 e07 e08 e10 e11 e13 e14 e15 e16 f06 h01 h02 h03 h04 h05 h06 h07 h08 h09 h10 h11 "
+    "k01 k02 k03 k04 k05 k06 k08 k09 k10 k11 k12 k13 k15 k16 k17 k18 k19 k20 m01 m02 m03 m04 m05 m06 m07 "
+    "n01 n02 n03 n06 n07 n08 n10 n16 p01 p02 p03 p05 p06 p07 r01 r02 r03 r04 r06 r07 r08 r09 r12 r13 r14 r15 r17 r18 r20 "
+    "v02 v03 v04 v05 v06 v07 v08 v09 v10 v11 v12 v13 v14 v16 v18 v19 w01 w03 w05 w06 w08 w09 w10 w11 x02 x04 "
+    "z01 z02 z03 z04 z05 u01 u03 u04 u06",
+ "correct otherwise (e05 e06: quit before the change, rows = the base deck's, engine-checked in R03; z06-z13: writes outside the folder, base rows; n04: static groups of the deck's own two atoms; x01 x03 u05 m05-like: the engine's pair still in contact after 0.03 s or within its step error, as the audit's sticks / ~0 / ~1; x05: one type poured, base row)":
+    "e05 e06 z06 z07 z08 z09 z10 z11 z12 z13 n04 x01 x03 u05 x05",
+ "correct, LIGGGHTS engine-checked (lprobe23: head-on pair in LIGGGHTS at dt 1e-7 s; abs(audit - engine) <= 2e-5 (hooke: 9e-5, its step error); L16's excluded 1 2 measured -1)":
+    "L01 L02 L03 L04 L05 L08 L09 L10 L13 L14 L15 L16 L17 L18 L19 L20 L22 L24 L25 L27 L28 L29 L31 L33 L34 L35 L39",
+ "effect named fairly (the row is the contact's, a note names what changes it, with the engine's number where the note gives one: f01 0.362983 vs engine 0.362979, f02 0.464962 vs 0.464963, f11 0.333809 vs 0.333806, f14 0.386754 vs 0.386754; or the pair is left out with its reason)":
+    "R04 R05 f01 f02 f03 f04 f05 f07 f08 f09 f11 f12 f13 f14 f15 w02 w04 n12 n13 n14 L07",
+ "SILENTLY WRONG U: a non-SI deck (units cgs): g is read in the deck's speed unit (cm/s), the rows say only 'g 1'; at --g 1 the audit gives the eps at 1 cm/s (u02 0.7533136 = engine at 1 cm/s; engine at 1 m/s 0.497208); u08 (real: A/fs) the same for its push-through notes":
+    "u02 u07 u08",
+ "SILENTLY WRONG S: LAMMPS (or LIGGGHTS with lost error) stops inside a run (Lost atoms; fix halt error hard); the audit answers the later stages, which the engine never reaches, no note":
+    "r22 r23 R11 L40",
+ "answered where the engine stops inside the run being audited (S, milder: the rows are those of the run that stops; no note, or only 'not understood: read_dump')":
+    "r16 r19 r24",
+ "SILENTLY WRONG H: fix halt ... error soft (or tlimit) ends a run and LAMMPS skips every later run; the audit reports the later runs' settings":
+    "R12 R17 R19 R20",
+ "SILENTLY WRONG E2L: LIGGGHTS loses an atom in a run without an error; the audit keeps it (a later set atom hits it; phantom sizes in ranges; a 2 2 pair LIGGGHTS cannot have)":
+    "L37",
+ "answers pairs of a type whose only atom LIGGGHTS lost, no note (E2L, mild: the numbers are the settings' own; L38's 1 2 engine-checked 0.881478)":
+    "L36 L38",
+ "fair refusal (the engine itself stops on the deck; or the contact is not mapped: dmt/jkr with cohesion, hybrid/scaled, hybrid/overlay; or an earlier round's deliberate refusal: timer timeout 0, random() draws, a lone CR; d24: coeff_restitution 0, LAMMPS' positions become NaN)":
+    "L06 L11 L12 L21 L23 L26 L30 L32 b01 b03 b07 d06 d07 d25 d26 e17 e18 f10 h12 k07 k14 n05 n11 n15 p04 r05 r10 r11 r21 v01 v15 v17 v20 w07 n09 n19 d29 d30 n17 n18 R15 e09 e12 d24",
 }
 folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
 seen = {}
