@@ -631,6 +631,20 @@ rr("R19_halt_tlimit_soft", "fix halt 10 tlimit > 0.0 error soft (wall-clock, met
    "fix h all halt 10 tlimit > 0.0 error soft\nrun 100\nunfix h\npair_coeff * * " + hk(5000) + "\nrun 100\n")
 deck("R20_halt_soft_in_include", "# the soft halt set up in an include file (halt.in)\n" + BASE() + TWO + "include halt.in\nrun 100\nunfix h\npair_coeff * * " + hk(5000) + "\nrun 100\n", g=1, data={"halt.in": "variable t equal time\nfix h all halt 10 v_t > 0.0005 error soft\n"})
 
+rr("R21_timer_timeout_real", "timer timeout 0:00:01 every 100, then run 3000000 (longer than 1 s): LAMMPS ends it at the timeout and skips the later run (kn 5000)",
+   "timer timeout 0:00:01 every 100\nrun 3000000\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+rr("R22_run_upto_past", "run 200, pair_coeff kn 5000, run 100 upto (the step is past 100: engine says)", "run 200\npair_coeff * * " + hk(5000) + "\nrun 100 upto\n")
+rr("R23_run_stop_before_end", "run 100 start 0 stop 50 (engine says)", "pair_coeff * * " + hk(5000) + "\nrun 100 start 0 stop 50\n")
+rr("R24_run_zero_between", "run 100 (kn 2000), kn 5000 with run 0, kn 8000 with run 100: the kn 5000 stage makes no step",
+   "run 100\npair_coeff * * " + hk(5000) + "\nrun 0\npair_coeff * * " + hk(8000) + "\nrun 100\n")
+
+rr("R25_run_start_after", "run 100 start 200 stop 300 at step 0 (LAMMPS: start after the run's start? engine says)", "pair_coeff * * " + hk(5000) + "\nrun 100 start 200 stop 300\n")
+rr("R26_run_float_steps", "run 1e2 (a float step count: engine says)", "pair_coeff * * " + hk(5000) + "\nrun 1e2\n")
+rr("R27_run_negative", "run -100 (engine says)", "pair_coeff * * " + hk(5000) + "\nrun -100\n")
+rr("R28_run_every_zero", "run 100 every 0 \"print hi\" (engine says)", "pair_coeff * * " + hk(5000) + "\nrun 100 every 0 \"print hi\"\n")
+rr("R29_run_bad_keyword", "run 100 pre maybe (engine says)", "pair_coeff * * " + hk(5000) + "\nrun 100 pre maybe\n")
+rr("R30_run_upto_past_then_more", "run 200, kn 5000, run 100 upto (LAMMPS stops here), kn 8000, run 100", "run 200\npair_coeff * * " + hk(5000) + "\nrun 100 upto\npair_coeff * * " + hk(8000) + "\nrun 100\n")
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
