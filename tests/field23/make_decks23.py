@@ -645,6 +645,22 @@ rr("R28_run_every_zero", "run 100 every 0 \"print hi\" (engine says)", "pair_coe
 rr("R29_run_bad_keyword", "run 100 pre maybe (engine says)", "pair_coeff * * " + hk(5000) + "\nrun 100 pre maybe\n")
 rr("R30_run_upto_past_then_more", "run 200, kn 5000, run 100 upto (LAMMPS stops here), kn 8000, run 100", "run 200\npair_coeff * * " + hk(5000) + "\nrun 100 upto\npair_coeff * * " + hk(8000) + "\nrun 100\n")
 
+# q*: commands the audit's pass does not execute (dump, print, timer, write_*), given arguments LAMMPS refuses
+qq = lambda name, comment, line: deck(name, "# " + comment + "\n" + BASE() + TWO + "pair_coeff * * " + hk(5000) + "\n" + line + "\n" + RUN1, g=1)
+qq("Q01_dump_every_zero", "dump d all custom 0 f23.dump id (N = 0: LAMMPS stops?)", "dump d all custom 0 f23.dump id type x y z")
+qq("Q02_dump_modify_missing", "dump_modify of a dump that does not exist", "dump_modify nod sort id")
+qq("Q03_undump_missing", "undump of a dump that does not exist", "undump nod")
+qq("Q04_timer_bad", "timer with an unknown keyword", "timer sometimes")
+qq("Q05_write_dump_bad_style", "write_dump all nosuchstyle f.txt", "write_dump all nosuchstyle f23.txt")
+qq("Q06_print_undefined_var", "print \"${nope}\" (an undefined variable)", "print \"kn is ${nope}\"")
+qq("Q07_dump_image_no_jpeg", "dump image (LAMMPS built without JPEG/PNG? engine says)", "dump im all image 100 f23.*.ppm type type")
+qq("Q08_print_file_dir_missing", "print ... file nodir/f.txt (a folder that does not exist)", "print \"hi\" file nodir/f23.txt")
+qq("Q09_fix_print_bad", "fix print 0 (N = 0)", "fix pr all print 0 \"hi\"")
+qq("Q10_dump_bad_column", "dump custom with an unknown column", "dump d all custom 10 f23.dump id nosuchcol")
+qq("Q11_thermo_bad_keyword", "thermo_style custom step nosuchkw", "thermo_style custom step nosuchkw")
+qq("Q12_write_restart_bad_kw", "write_restart f23.restart nosuchkw", "write_restart f23.restart nosuchkw")
+L("L41_run_float_liggghts", "# LIGGGHTS run 1e3 (engine says), e 0.3 before it\n" + LB() + ATOMS + LRUN.replace("", "") + E3b(0.3) + "run 1e3\n")
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
