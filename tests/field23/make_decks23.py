@@ -661,6 +661,13 @@ qq("Q11_thermo_bad_keyword", "thermo_style custom step nosuchkw", "thermo_style 
 qq("Q12_write_restart_bad_kw", "write_restart f23.restart nosuchkw", "write_restart f23.restart nosuchkw")
 L("L41_run_float_liggghts", "# LIGGGHTS run 1e3 (engine says), e 0.3 before it\n" + LB() + ATOMS + LRUN.replace("", "") + E3b(0.3) + "run 1e3\n")
 
+qq("Q13_log_dir_missing", "log nodir/f23.log (a folder that does not exist)", "log nodir/f23.log")
+qq("Q14_echo_bad", "echo sometimes (an illegal echo mode)", "echo sometimes")
+qq("Q15_fix_ave_time_file_dir_missing", "fix ave/time ... file nodir/f23.txt", "variable one equal 1\nfix av all ave/time 10 1 10 v_one file nodir/f23.txt")
+qq("Q16_restart_dir_missing", "restart 50 nodir/f23.restart (written during the run)", "restart 50 nodir/f23.restart")
+qq("Q17_info_bad", "info nosuchcategory", "info nosuchcategory")
+qq("Q18_fix_ave_time_bad_nfreq", "fix ave/time 10 3 20 (Nfreq not a multiple of Nevery: LAMMPS stops?)", "variable one equal 1\nfix av all ave/time 10 3 20 v_one")
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
