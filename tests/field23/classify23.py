@@ -25,7 +25,7 @@ C = {
  "SILENTLY WRONG R: LAMMPS stops at an illegal run command (run 1e2, run -100, every 0, pre maybe, start/stop/upto out of order); the audit's pass never checks it and answers the settings of a run LAMMPS never makes, no note":
     "R23 R25 R26 R27 R28 R29 R30",
  "WRONG EPS next to a note that does not explain it, X: LAMMPS stops at a command the audit does not execute (print of an undefined variable or into a missing folder, dump/dump_modify/undump/write_dump/fix print/timer/log/echo/restart/fix ave/time file with arguments LAMMPS refuses); the only note: 'not executed ... it has no part in a contact'":
-    "Q01 Q02 Q03 Q04 Q05 Q06 Q08 Q09 Q10 Q13 Q14 Q15 Q16",
+    "Q01 Q02 Q03 Q04 Q05 Q06 Q08 Q09 Q10 Q13 Q14 Q15 Q16 Q21 Q24 L42 L43",
  "WRONG EPS next to a note that does not explain it, H by a real timeout: timer timeout 1 s ends a long run, LAMMPS skips the later one; note: 'the audit takes each run to make all its steps'":
     "R21",
  "SILENTLY WRONG H: fix halt ... error soft (or tlimit) ends a run and LAMMPS skips every later run; the audit reports the later runs' settings":
@@ -35,7 +35,7 @@ C = {
  "answers pairs of a type whose only atom LIGGGHTS lost, no note (E2L, mild: the numbers are the settings' own; L38's 1 2 engine-checked 0.881478)":
     "L36 L38",
  "fair refusal (the engine itself stops on the deck; or the contact is not mapped: dmt/jkr with cohesion, hybrid/scaled, hybrid/overlay; or an earlier round's deliberate refusal: timer timeout 0, random() draws, a lone CR; d24: coeff_restitution 0, LAMMPS' positions become NaN)":
-    "L06 L11 L12 L21 L23 L26 L30 L32 b01 b03 b07 d06 d07 d25 d26 e17 e18 f10 h12 k07 k14 n05 n11 n15 p04 r05 r10 r11 r21 v01 v15 v17 v20 w07 n09 n19 d29 d30 n17 n18 R15 e09 e12 d24 Q11 Q12 Q18",
+    "L06 L11 L12 L21 L23 L26 L30 L32 b01 b03 b07 d06 d07 d25 d26 e17 e18 f10 h12 k07 k14 n05 n11 n15 p04 r05 r10 r11 r21 v01 v15 v17 v20 w07 n09 n19 d29 d30 n17 n18 R15 e09 e12 d24 Q11 Q12 Q18 Q19 Q20 Q22 Q23",
 }
 folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
 seen = {}

@@ -668,6 +668,15 @@ qq("Q16_restart_dir_missing", "restart 50 nodir/f23.restart (written during the 
 qq("Q17_info_bad", "info nosuchcategory", "info nosuchcategory")
 qq("Q18_fix_ave_time_bad_nfreq", "fix ave/time 10 3 20 (Nfreq not a multiple of Nevery: LAMMPS stops?)", "variable one equal 1\nfix av all ave/time 10 3 20 v_one")
 
+qq("Q19_jump_missing_label", "jump SELF nolabel (the label does not exist)", "jump SELF nolabel")
+qq("Q20_fix_ave_time_missing_compute", "fix ave/time of c_nope (no such compute)", "fix av all ave/time 10 1 10 c_nope")
+qq("Q21_fix_print_undefined_var", "fix print 10 \"x ${nope}\" (an undefined variable inside double quotes)", "fix pr all print 10 \"x ${nope}\"")
+qq("Q22_thermo_undefined_var", "thermo_style custom step v_nope (checked at the run's setup)", "thermo_style custom step v_nope")
+qq("Q23_include_missing", "include nofile.in", "include nofile.in")
+qq("Q24_print_immediate_bad", "print \"$(v_nope+1)\" (an immediate of an undefined variable)", "print \"value $(v_nope+1)\"")
+L("L42_print_undefined_var_liggghts", "# LIGGGHTS print \"${nope}\" before the run (e 0.3 matrix)\n" + lhead() + MAT3 + E3b(0.3) + HERTZ + WALL3 + ATOMS + "print \"e is ${nope}\"\n" + RUN)
+L("L43_dump_every_zero_liggghts", "# LIGGGHTS dump every 0 (e 0.3 matrix)\n" + lhead() + MAT3 + E3b(0.3) + HERTZ + WALL3 + ATOMS + "dump d all custom 0 f23.dump id type x y z\n" + RUN)
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
