@@ -677,6 +677,25 @@ qq("Q24_print_immediate_bad", "print \"$(v_nope+1)\" (an immediate of an undefin
 L("L42_print_undefined_var_liggghts", "# LIGGGHTS print \"${nope}\" before the run (e 0.3 matrix)\n" + lhead() + MAT3 + E3b(0.3) + HERTZ + WALL3 + ATOMS + "print \"e is ${nope}\"\n" + RUN)
 L("L43_dump_every_zero_liggghts", "# LIGGGHTS dump every 0 (e 0.3 matrix)\n" + lhead() + MAT3 + E3b(0.3) + HERTZ + WALL3 + ATOMS + "dump d all custom 0 f23.dump id type x y z\n" + RUN)
 
+# LIGGGHTS: fixes that change a collision (LAMMPS' f* tried above)
+LF = lambda name, comment, lines: L(name, "# LIGGGHTS: " + comment + "\n" + LB() + ATOMS + "group t1 type 1\ngroup t2 type 2\n" + lines + RUN)
+LF("L44_freeze_type2", "fix freeze on type 2: 1 2 is a sphere on a frozen sphere", "fix fr t2 freeze\n")
+LF("L45_viscous_all", "fix viscous 0.001 on all (a drag)", "fix vs all viscous 0.001\n")
+LF("L46_setforce_type2", "fix setforce 0 0 0 on type 2", "fix sf t2 setforce 0.0 0.0 0.0\n")
+LF("L47_addforce_type1", "fix addforce 0.01 0 0 on type 1", "fix af t1 addforce 0.01 0.0 0.0\n")
+LF("L48_langevin", "fix langevin 0 0 0.001", "fix lv all langevin 0.0 0.0 0.001 48279\n")
+L("L49_nve_sphere_subgroup", "# LIGGGHTS: nve/sphere on type 1 only (type 2 never moves)\n"
+  + LB() + ATOMS + "group t1 type 1\ntimestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr t1 nve/sphere\nrun 1000\n")
+
+ee("e19_dynamic_group_var", "group up dynamic all var up every 10 (z > 0.005); run 5000 (both fall); set group up density 7800 (none in the engine)",
+   "variable up atom z>0.005\ngroup up dynamic all var up every 10\nrun 5000\nset group up density 7800\nrun 100\n")
+ee("e20_lost_warn_set_atom", "thermo_modify lost warn; type 2 thrown out; create_atoms 2 (engine id 2); set atom 2 diameter 0.006 density 1000",
+   "thermo_modify lost warn\ngroup t2 type 2\nvelocity t2 set 0 0 100\nrun 300\ncreate_atoms 2 single 0.01 0.01 0.05\nset atom 2 diameter 0.006 density 1000\nrun 100\n")
+ee("e21_quit_in_run_every", "run 100 every 50 \"quit\" (LAMMPS quits at step 50); kn 5000 after never read", "run 100 every 50 \"quit\"\npair_coeff * * " + hk(5000) + "\nrun 100\n")
+ee("e22_partition_yes_1", "partition yes 1 pair_coeff kn 5000 (one partition: LAMMPS runs it)", "partition yes 1 pair_coeff * * " + hk(5000) + "\nrun 100\n")
+ee("e23_dollar_format_in_set", "set type 2 density $(7800:%.0f)", "set type 2 density $(7800:%.0f)\nrun 100\n")
+ee("e24_restyle_wall_region", "unfix floor; fix floor wall/gran/region granular kn 8000 on a plane region", "unfix floor\nregion pl plane 0 0 0 0 0 1 side in units box\nfix floor all wall/gran/region granular " + hk(8000) + " region pl\nrun 100\n")
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
