@@ -10,8 +10,8 @@ C = {
     "n01 n02 n03 n06 n07 n08 n10 n16 p01 p02 p03 p05 p06 p07 r01 r02 r03 r04 r06 r07 r08 r09 r12 r13 r14 r15 r17 r18 r20 "
     "v02 v03 v04 v05 v06 v07 v08 v09 v10 v11 v12 v13 v14 v16 v18 v19 w01 w03 w05 w06 w08 w09 w10 w11 x02 x04 "
     "z01 z02 z03 z04 z05 u01 u03 u04 u06 e19 e20 e22 e23 e24",
- "correct otherwise (Q17: info only warns; Q07 dump image (this LAMMPS has it), R24 (kn 8000 last), L41 (LIGGGHTS takes run 1e3): rows whose values are engine-checked in other decks; e05 e06: quit before the change, rows = the base deck's, engine-checked in R03; z06-z13: writes outside the folder, base rows; n04: static groups of the deck's own two atoms; x01 x03 u05 m05-like: the engine's pair still in contact after 0.03 s or within its step error, as the audit's sticks / ~0 / ~1; x05: one type poured, base row)":
-    "Q17 Q07 R24 L41 e21 e05 e06 z06 z07 z08 z09 z10 z11 z12 z13 n04 x01 x03 u05 x05",
+ "correct otherwise (Q25 Q28 Q32 Q34: pair_write, a missing plugin, group2ndx, restart with two file names run in LAMMPS, base kn 5000 rows; Q17: info only warns; Q07 dump image (this LAMMPS has it), R24 (kn 8000 last), L41 (LIGGGHTS takes run 1e3): rows whose values are engine-checked in other decks; e05 e06: quit before the change, rows = the base deck's, engine-checked in R03; z06-z13: writes outside the folder, base rows; n04: static groups of the deck's own two atoms; x01 x03 u05 m05-like: the engine's pair still in contact after 0.03 s or within its step error, as the audit's sticks / ~0 / ~1; x05: one type poured, base row)":
+    "Q25 Q28 Q32 Q34 Q17 Q07 R24 L41 e21 e05 e06 z06 z07 z08 z09 z10 z11 z12 z13 n04 x01 x03 u05 x05",
  "correct, LIGGGHTS engine-checked (lprobe23: head-on pair in LIGGGHTS at dt 1e-7 s; abs(audit - engine) <= 2e-5 (hooke: 9e-5, its step error); L16's excluded 1 2 measured -1)":
     "L01 L02 L03 L04 L05 L08 L09 L10 L13 L14 L15 L16 L17 L18 L19 L20 L22 L24 L25 L27 L28 L29 L31 L33 L34 L35 L39",
  "effect named fairly (the row is the contact's, a note names what changes it, with the engine's number where the note gives one: f01 0.362983 vs engine 0.362979, f02 0.464962 vs 0.464963, f11 0.333809 vs 0.333806, f14 0.386754 vs 0.386754, L45 (LIGGGHTS fix viscous) 0.597665 vs LIGGGHTS at separation 0.597652; or the pair is left out with its reason)":
@@ -25,7 +25,7 @@ C = {
  "SILENTLY WRONG R: LAMMPS stops at an illegal run command (run 1e2, run -100, every 0, pre maybe, start/stop/upto out of order); the audit's pass never checks it and answers the settings of a run LAMMPS never makes, no note":
     "R23 R25 R26 R27 R28 R29 R30",
  "WRONG EPS next to a note that does not explain it, X: LAMMPS stops at a command the audit does not execute (print of an undefined variable or into a missing folder, dump/dump_modify/undump/write_dump/fix print/timer/log/echo/restart/fix ave/time file with arguments LAMMPS refuses); the only note: 'not executed ... it has no part in a contact'":
-    "Q01 Q02 Q03 Q04 Q05 Q06 Q08 Q09 Q10 Q13 Q14 Q15 Q16 Q21 Q24 L42 L43",
+    "Q01 Q02 Q03 Q04 Q05 Q06 Q08 Q09 Q10 Q13 Q14 Q15 Q16 Q21 Q24 L42 L43 Q26 Q27 Q29 Q30 Q31",
  "WRONG EPS next to a note that does not explain it, H by a real timeout: timer timeout 1 s ends a long run, LAMMPS skips the later one; note: 'the audit takes each run to make all its steps'":
     "R21",
  "SILENTLY WRONG H: fix halt ... error soft (or tlimit) ends a run and LAMMPS skips every later run; the audit reports the later runs' settings":
@@ -35,7 +35,7 @@ C = {
  "answers pairs of a type whose only atom LIGGGHTS lost, no note (E2L, mild: the numbers are the settings' own; L38's 1 2 engine-checked 0.881478)":
     "L36 L38",
  "fair refusal (the engine itself stops on the deck; or the contact is not mapped: dmt/jkr with cohesion, hybrid/scaled, hybrid/overlay; or an earlier round's deliberate refusal: timer timeout 0, random() draws, a lone CR; d24: coeff_restitution 0, LAMMPS' positions become NaN)":
-    "L06 L11 L12 L21 L23 L26 L30 L32 b01 b03 b07 d06 d07 d25 d26 e17 e18 f10 h12 k07 k14 n05 n11 n15 p04 r05 r10 r11 r21 v01 v15 v17 v20 w07 n09 n19 d29 d30 n17 n18 R15 e09 e12 d24 Q11 Q12 Q18 Q19 Q20 Q22 Q23 L48",
+    "L06 L11 L12 L21 L23 L26 L30 L32 b01 b03 b07 d06 d07 d25 d26 e17 e18 f10 h12 k07 k14 n05 n11 n15 p04 r05 r10 r11 r21 v01 v15 v17 v20 w07 n09 n19 d29 d30 n17 n18 R15 e09 e12 d24 Q11 Q12 Q18 Q19 Q20 Q22 Q23 L48 Q33",
 }
 folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
 seen = {}

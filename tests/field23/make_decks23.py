@@ -696,6 +696,17 @@ ee("e22_partition_yes_1", "partition yes 1 pair_coeff kn 5000 (one partition: LA
 ee("e23_dollar_format_in_set", "set type 2 density $(7800:%.0f)", "set type 2 density $(7800:%.0f)\nrun 100\n")
 ee("e24_restyle_wall_region", "unfix floor; fix floor wall/gran/region granular kn 8000 on a plane region", "unfix floor\nregion pl plane 0 0 0 0 0 1 side in units box\nfix floor all wall/gran/region granular " + hk(8000) + " region pl\nrun 100\n")
 
+qq("Q25_pair_write_granular", "pair_write 1 1 100 r 0.001 0.01 f23.table GRAN (pair granular may not support it: engine says)", "pair_write 1 1 100 r 0.001 0.01 f23.table GRAN")
+qq("Q26_rerun_missing_dump", "rerun of a dump file that does not exist", "rerun nodump.txt dump x y z")
+qq("Q27_python_command", "python source inline (LAMMPS built without Python?)", "python source here \"print(1)\"")
+qq("Q28_plugin_load_missing", "plugin load of a missing library", "plugin load nosuch.so")
+qq("Q29_fix_plumed", "fix plumed (package absent?)", "fix pl all plumed plumedfile plumed.dat outfile p.log")
+qq("Q30_fix_ttm_bad", "fix ttm with too few arguments", "fix tt all ttm 4711")
+qq("Q31_balance_bad", "balance with an unknown style", "balance 1.1 nosuchstyle")
+qq("Q32_group2ndx", "group2ndx f23.ndx (a package command: engine says)", "group2ndx f23.ndx")
+qq("Q33_write_data_bad_kw", "write_data f23.data nosuchkw", "write_data f23.data nosuchkw")
+qq("Q34_restart_bad_args", "restart 0 then restart with a bad keyword", "restart 100 f23.restart nosuchkw")
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
