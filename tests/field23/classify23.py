@@ -9,7 +9,7 @@ C = {
     "k01 k02 k03 k04 k05 k06 k08 k09 k10 k11 k12 k13 k15 k16 k17 k18 k19 k20 m01 m02 m03 m04 m05 m06 m07 "
     "n01 n02 n03 n06 n07 n08 n10 n16 p01 p02 p03 p05 p06 p07 r01 r02 r03 r04 r06 r07 r08 r09 r12 r13 r14 r15 r17 r18 r20 "
     "v02 v03 v04 v05 v06 v07 v08 v09 v10 v11 v12 v13 v14 v16 v18 v19 w01 w03 w05 w06 w08 w09 w10 w11 x02 x04 "
-    "z01 z02 z03 z04 z05 u01 u03 u04 u06 e19 e20 e22 e23 e24",
+    "z01 z02 z03 z04 z05 u01 u03 u04 u06 k24 k25 e19 e20 e22 e23 e24",
  "correct otherwise (Q25 Q28 Q32 Q34: pair_write, a missing plugin, group2ndx, restart with two file names run in LAMMPS, base kn 5000 rows; Q17: info only warns; Q07 dump image (this LAMMPS has it), R24 (kn 8000 last), L41 (LIGGGHTS takes run 1e3): rows whose values are engine-checked in other decks; e05 e06: quit before the change, rows = the base deck's, engine-checked in R03; z06-z13: writes outside the folder, base rows; n04: static groups of the deck's own two atoms; x01 x03 u05 m05-like: the engine's pair still in contact after 0.03 s or within its step error, as the audit's sticks / ~0 / ~1; x05: one type poured, base row)":
     "Q25 Q28 Q32 Q34 Q17 Q07 R24 L41 e21 e05 e06 z06 z07 z08 z09 z10 z11 z12 z13 n04 x01 x03 u05 x05",
  "correct, LIGGGHTS engine-checked (lprobe23: head-on pair in LIGGGHTS at dt 1e-7 s; abs(audit - engine) <= 2e-5 (hooke: 9e-5, its step error); L16's excluded 1 2 measured -1)":
@@ -35,7 +35,7 @@ C = {
  "answers pairs of a type whose only atom LIGGGHTS lost, no note (E2L, mild: the numbers are the settings' own; L38's 1 2 engine-checked 0.881478)":
     "L36 L38",
  "fair refusal (the engine itself stops on the deck; or the contact is not mapped: dmt/jkr with cohesion, hybrid/scaled, hybrid/overlay; or an earlier round's deliberate refusal: timer timeout 0, random() draws, a lone CR; d24: coeff_restitution 0, LAMMPS' positions become NaN)":
-    "L06 L11 L12 L21 L23 L26 L30 L32 b01 b03 b07 d06 d07 d25 d26 e17 e18 f10 h12 k07 k14 n05 n11 n15 p04 r05 r10 r11 r21 v01 v15 v17 v20 w07 n09 n19 d29 d30 n17 n18 R15 e09 e12 d24 Q11 Q12 Q18 Q19 Q20 Q22 Q23 L48 Q33",
+    "L06 L11 L12 L21 L23 L26 L30 L32 b01 b03 b07 d06 d07 d25 d26 e17 e18 f10 h12 k07 k14 n05 n11 n15 p04 r05 r10 r11 r21 v01 v15 v17 v20 w07 n09 n19 d29 d30 n17 n18 R15 e09 e12 d24 Q11 Q12 Q18 Q19 Q20 Q22 Q23 L48 Q33 k21 k22 k23",
 }
 folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
 seen = {}

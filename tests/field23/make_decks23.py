@@ -707,6 +707,12 @@ qq("Q32_group2ndx", "group2ndx f23.ndx (a package command: engine says)", "group
 qq("Q33_write_data_bad_kw", "write_data f23.data nosuchkw", "write_data f23.data nosuchkw")
 qq("Q34_restart_bad_args", "restart 0 then restart with a bad keyword", "restart 100 f23.restart nosuchkw")
 
+kk("k21_fix_adapt_pair_granular", "fix adapt 1 pair granular kn ... (not supported by pair granular? engine says)", BASE() + TWO + "variable k equal 5000\nfix ad all adapt 1 pair granular kn * * v_k\n" + RUN1)
+kk("k22_negative_kn", "hooke -2000 3000 (engine says)", BASE() + TWO + f"pair_coeff * * hooke -2000 3000 {K}\n" + RUN1)
+kk("k23_negative_damping", "hooke 2000 -3000 (negative damping: engine says)", BASE() + TWO + f"pair_coeff * * hooke 2000 -3000 {K}\n" + RUN1)
+kk("k24_hertz_tsuji", "hertz kn 1e6 damping tsuji 0.5", BASE("hertz 1e6 0.5 damping tsuji " + TL) + TWO + RUN1)
+kk("k25_zero_damping", "hooke 2000 0 (no damping: eps 1)", BASE(f"hooke 2000 0 {K}") + TWO + RUN1)
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
