@@ -23,9 +23,9 @@ C = {
  "answered where the engine stops inside the run being audited, or after the last run (S/R, milder: the rows are those of the run that stops or completed; no note, or only 'not understood: read_dump'; R22: run 100 upto after step 200, the deck's last line)":
     "r16 r19 r24 R22",
  "SILENTLY WRONG R: LAMMPS stops at an illegal run command (run 1e2, run -100, every 0, pre maybe, start/stop/upto out of order); the audit's pass never checks it and answers the settings of a run LAMMPS never makes, no note":
-    "R23 R25 R26 R27 R28 R29 R30",
+    "R23 R25 R26 R27 R28 R29 R30 L50 L51",
  "WRONG EPS next to a note that does not explain it, X: LAMMPS stops at a command the audit does not execute (print of an undefined variable or into a missing folder, dump/dump_modify/undump/write_dump/fix print/timer/log/echo/restart/fix ave/time file with arguments LAMMPS refuses); the only note: 'not executed ... it has no part in a contact'":
-    "Q01 Q02 Q03 Q04 Q05 Q06 Q08 Q09 Q10 Q13 Q14 Q15 Q16 Q21 Q24 L42 L43 Q26 Q27 Q29 Q30 Q31",
+    "Q01 Q02 Q03 Q04 Q05 Q06 Q08 Q09 Q10 Q13 Q14 Q15 Q16 Q21 Q24 L42 L43 Q26 Q27 Q29 Q30 Q31 Q35 Q36",
  "WRONG EPS next to a note that does not explain it, H by a real timeout: timer timeout 1 s ends a long run, LAMMPS skips the later one; note: 'the audit takes each run to make all its steps'":
     "R21",
  "SILENTLY WRONG H: fix halt ... error soft (or tlimit) ends a run and LAMMPS skips every later run; the audit reports the later runs' settings":

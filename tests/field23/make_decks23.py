@@ -713,6 +713,11 @@ kk("k23_negative_damping", "hooke 2000 -3000 (negative damping: engine says)", B
 kk("k24_hertz_tsuji", "hertz kn 1e6 damping tsuji 0.5", BASE("hertz 1e6 0.5 damping tsuji " + TL) + TWO + RUN1)
 kk("k25_zero_damping", "hooke 2000 0 (no damping: eps 1)", BASE(f"hooke 2000 0 {K}") + TWO + RUN1)
 
+qq("Q35_if_print_undefined", "if \"1 > 0\" then \"print '${nope}'\" (the branch LAMMPS runs prints an undefined variable)", "if \"1 > 0\" then \"print '${nope}'\"")
+qq("Q36_print_divide_zero", "print \"$(1/0)\" (LAMMPS: divide by 0 in variable formula)", "print \"value $(1/0)\"")
+L("L50_run_stop_before_end_liggghts", "# LIGGGHTS run 1000 start 0 stop 500 (engine says), e 0.3 before it\n" + LB() + ATOMS + LRUN + E3b(0.3) + "run 1000 start 0 stop 500\n")
+L("L51_run_negative_liggghts", "# LIGGGHTS run -100 (engine says), e 0.3 before it\n" + LB() + ATOMS + LRUN + E3b(0.3) + "run -100\n")
+
 
 LATIN1 = set()  # written in Latin-1 bytes (an old editor)
 
