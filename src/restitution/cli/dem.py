@@ -130,9 +130,11 @@ def add_deck_subcommand(subparsers) -> None:
                     "Kratos MaterialsDEM.json files (--radius per material id where the model part gives none). "
                     "One --g: five speeds over two decades around it; several: those speeds.")
     d.add_argument("file", help="the input script")
-    d.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V", help="impact speed(s)")
-    d.add_argument("--radius", nargs="+", default=[], metavar="T=R", help="radius of atom type T")
-    d.add_argument("--density", nargs="+", default=[], metavar="T=RHO", help="density of atom type T")
+    d.add_argument("--g", type=number_argument, nargs="+", required=True, metavar="V",
+                   help="impact speed(s), in the deck's units (m/s for units si, cm/s for cgs)")
+    d.add_argument("--radius", nargs="+", default=[], metavar="T=R", help="radius of atom type T (the deck's units)")
+    d.add_argument("--density", nargs="+", default=[], metavar="T=RHO",
+                   help="density of atom type T (the deck's units)")
     d.add_argument("--json", action="store_true", help="machine-readable output")
     budget = d.add_argument("--budget", type=number_argument,
                             default=_LibraryDefault("restitution.dem.deck", "BUDGET"), metavar="SECONDS",
@@ -262,6 +264,8 @@ def run_deck(args, out) -> None:
     if args.json:
         write_json(res, out)
         return
+    if res.get("units", "si") != "si":
+        out.write(f"# speeds g in {res['speed_unit']}: the deck's units {res['units']}, as its sizes and masses\n")
     if res["ignored"]:
         out.write(f"# {res['code']} deck; no part in a head-on contact: {', '.join(res['ignored'])}\n")
     shown = None
@@ -277,7 +281,7 @@ def run_deck(args, out) -> None:
             out.write(f"(no rows: {empty[head]})\n")
             continue
         typed = "none typed" if p["typed_e"] is None else f"typed e {p['typed_e']:.6g}"
-        out.write(f"{name}: {p['model']} ({typed}), end rule {p['end']}\n")
+        out.write(f"{name}{_lone(p)}: {p['model']} ({typed}), end rule {p['end']}\n")
         steps = p.get("steps_per_contact") or [None] * len(p["speeds"])
         late = p.get("late") or [False] * len(p["speeds"])
         for g, e, stick, through, n, found_late in zip(p["speeds"], p["eps"], p["sticks"], p["passes_through"], steps,
@@ -302,6 +306,12 @@ def _sized(row: dict) -> str:
     doubt = (" [its settings follow a value the skipped runs change: may not be the deck's, a note says which]"
              if row.get("may_differ") else "")
     return _ends_said(row) + doubt
+
+
+def _lone(row: dict) -> str:
+    """Where a type has one sphere, which no fix adds to: that its pair with itself does not happen."""
+    return (f" [type {row['types'][0]} has one sphere at this run and no fix makes more: this pair does not happen "
+            "here; its eps is the settings' for two such spheres]" if row.get("lone") else "")
 
 
 def _ends_said(row: dict) -> str:

@@ -97,7 +97,7 @@ from .meeting import excluded, held_contact, integrators, late_speeds, motion, p
 from .reader import DIALECTS, MAX_STAGES, by_position, contact_key, read_executed
 from ..dialect.sandbox import available as confining
 from ..dialect.state import MAX_TYPES, Deck, DeckError, PairNotMapped, place, spheres
-from ..engines.lammps.deck import DEFAULT_DT, REGION_UNBOUNDED, read_region, region_number
+from ..engines.lammps.deck import DEFAULT_DT, REGION_UNBOUNDED, SPEED_UNITS, read_region, region_number
 from ..contact import TIMES_OMEGA_MAX, ElasticContact
 from ..pair import Pair
 from ..timestep import recommended_dt, verlet_eps
@@ -600,7 +600,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import PUSHING_FIX_PREFIXES, scratch_copy
-    from .runtime import lost_in_runs, resized_by_runs
+    from .runtime import lost_in_runs, resized_by_runs, stops_in_runs
     from .stream import (deck_commands, engine_error, random_drawn, skipped, snapshots, unchecked,
                          written_then_read)
     if engine == "LAMMPS":
@@ -688,6 +688,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             said = made[2:] if made else (["--run-budget 0 makes no run for real (a budget in seconds lets the "
                                            "engine make them)"] if unmade else [])
             raise DeckError(where, line or None, "; ".join([_stopped(engine, message, commands, unmade), *said]))
+        stop_note = None
         if made is None:
             read = deck_commands(commands, scratch)
             try:
@@ -698,10 +699,31 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 deck, refusal = None, why       # the runs made for real may answer it
             found = _run_dependent(commands, scratch, clocked is not None)
             resized = resized_by_runs(commands) + lost_in_runs(commands)
-            causes = sorted(_run_causes(found, by_position(read), deck) + resized,
-                            key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
+            needs = _run_causes(found, by_position(read), deck) + resized
+            stops = stops_in_runs(commands)
+            causes = sorted(needs + stops, key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
             made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
                               done.timed_out and done.looped) if causes else None
+            if made is not None and made[0] is None and made[1] and _STOPPED in made[2] \
+                    and ("ERROR" in made[2] or "fix halt" in made[2]):
+                # the engine stopped in a run made as the deck makes it (field round 23, r22: "Lost
+                # atoms" in the first run; R11, R12: a fix halt): the stages after it never happen
+                last = next((cmd for cmd in reversed(made[1]) if cmd.stage is not None), made[1][-1])
+                error = made[2].split(_STOPPED, 1)[-1].rsplit(": its runs", 1)[0].split(" Last input line:")[0]
+                raise DeckError(place(last.loc), last.text,
+                                f"{engine} stops in this run, made for real as the deck makes it: {error}; the "
+                                "stages after it are not the deck's: not audited")
+            if made is not None and not needs and (engine == "LAMMPS" or made[0] is None):
+                # the runs were made only to see whether LAMMPS ends each of them (it stops where a
+                # sphere leaves a fixed face or a fix halt is met, which the pass cannot show): it
+                # does, and the pass stands as it is; LIGGGHTS, which drops a lost sphere and goes
+                # on, is read from its runs (L37). Where they could not be made, that is said.
+                unchecked = made[0] is None
+                made = None
+                if unchecked:
+                    stop_note = (f"{place(stops[0][0])} {stops[0][1]}: {engine} was not run to see whether it "
+                                 "does (the audit's limits on runs made for real), so the stages after it hold "
+                                 "only if it does")
         if made is not None and made[0] is not None:
             done, commands, said = made
             atoms = snapshots(done.atoms) + snapshots(done.at_end)
@@ -714,7 +736,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             if refusal is not None:
                 refusal.args = ("; ".join([refusal.args[0], *said]),)
                 raise refusal
-            notes = _run_dependent_notes(commands, scratch, engine, clocked is not None) + said
+            notes = _run_dependent_notes(commands, scratch, engine, clocked is not None) + said + (
+                [stop_note] if stop_note else [])
             if resized and not said:
                 notes.append(f"after a run, {place(resized[0][0])} {resized[0][1]}: with the runs "
                              f"{'skipped' if engine == 'LAMMPS' else 'one step long'} the sizes and masses read "
@@ -742,6 +765,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                  "include" if cmd.startswith("fix ") and cmd.split()[1].startswith(PUSHING_FIX_PREFIXES) else
                  "as it times the runs; the audit takes each run to make all its steps" if cmd == "timer" else
                  "as it may run code or write files; it has no part in a contact")
+              # never run, never checked: a deck LAMMPS stops at such a line (a file it cannot open, a
+              # bad argument: field round 23, Q01-Q16) is audited as if it ran past it
+              + ("; nor is it checked: where the engine stops on it, the runs after it do not happen"
+                 if cmd not in ("processors", "partition no 1") else "")
               for cmd, loc in skipped(commands, scratch).items()]
     notes += _override_notes(atoms, radius or {}, density or {}, deck.ntypes)
     if unseen is not None:
@@ -920,6 +947,23 @@ def _run_steps(commands: list) -> int | None:
     return steps
 
 
+#: How the note of runs made for real that the engine stopped names the stop (read back by the caller)
+_STOPPED = "making its runs for real stopped: "
+#: LAMMPS' message where a fix halt with error soft meets its condition (22 Jul 2025)
+_SOFT_HALT = re.compile(r"Fix halt condition for fix-id (\S+) met on step \d+")
+
+
+def _soft(commands: list, fix: str) -> bool:
+    """Whether the last ``fix`` of ID ``fix`` among the commands run is a halt with error soft (not
+    continue, whose message is the same and which goes on as if nothing happened: round 23, R18)."""
+    style = None
+    for cmd in commands:
+        words = cmd.text.split()
+        if words[:2] == ["fix", fix] and len(words) > 3:
+            style = words[words.index("error") + 1] if words[3] == "halt" and "error" in words[:-1] else None
+    return style == "soft"
+
+
 def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, folder: Path, looped: bool = False):
     """The engine's pass through the scratch copy with the deck's runs made for real, where the
     pass with them skipped (``commands``) met the ``causes`` (:func:`_run_causes`): (EngineRun,
@@ -967,8 +1011,17 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
                         f"{deck_run.ENGINE} crashed making the deck's runs for real ({_crash_words(done)}); those "
                         "runs are the deck's own, its outputs aside, so the deck does not run in this engine: "
                         "not audited")
+    halted = _SOFT_HALT.search(done.echo or "")
+    if not done.error and halted and _soft(made, halted.group(1)) \
+            and re.search(r"^\s*(run|rerun)\b", done.echo[halted.end():], re.M) \
+            and not any(entry[0] == "timer" for entry in scratch.skipped):
+        # a soft halt met: LAMMPS forces its timer out, and every run after it makes no step until
+        # a timer command resets it (field round 23, R12, R17: the later runs' settings never
+        # acted); a deck with a timer command (which the pass never runs, R16) is left as it was
+        return None, made, (f"{what}; {deck_run.ENGINE} {_STOPPED}{halted.group(0)} (fix halt, error soft): "
+                            f"it makes no step in any run after it: its runs {cut}, as said")
     if done.error:
-        return None, made, (f"{what}; {deck_run.ENGINE} making its runs for real stopped: "
+        return None, made, (f"{what}; {deck_run.ENGINE} {_STOPPED}"
                             f"{' '.join(done.error.split())[:300]}: its runs {cut}, as said")
     return done, made, (
         f"{what}: {deck_run.ENGINE} made the deck's {runs} runs ({steps if steps is not None else 'their'} steps) for real, in {done.wall:.2g} s of the "
@@ -1158,9 +1211,10 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     text : str
         The input script.
     speeds : sequence of float
-        Impact speeds.
+        Impact speeds, in the deck's own units (m/s for units si, cm/s for cgs: the result's
+        ``speed_unit``), as every length, mass and time the deck holds.
     radius, density : dict, optional
-        {type: value}, overriding or completing what the engine holds.
+        {type: value}, overriding or completing what the engine holds, in the deck's units.
     read_file : callable, optional
         Unused: the engine opens the files the deck names itself, in its scratch copy (kept for
         callers that pass it).
@@ -1179,7 +1233,8 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     Returns
     -------
     dict
-        {"code", "stages", "pairs", "walls", "unknown_lines", "ignored"}. ``stages``: one entry
+        {"code", "units", "speed_unit", "stages", "pairs", "walls", "unknown_lines", "ignored"}:
+        ``units`` the deck's unit style, ``speed_unit`` the unit of its speeds. ``stages``: one entry
         for each change of the contact settings between runs ({"runs": [{"file", "line", "text"}],
         "pairs", "walls"}, and "why" where it has neither; a deck without a run has one stage, its
         settings at its end; a run of a line the engine ran more than once, in a loop, has "pass":
@@ -1280,7 +1335,9 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
             audited[-1]["why"] = _no_rows(snap)
     if unmapped and not any(stage["pairs"] or stage["walls"] for stage in audited):
         raise unmapped[0]            # nothing the deck's contacts do is mapped: refused, in one line
-    return {"code": stages[-1][1].code, "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
+    units = stages[-1][1].units or "lj"      # LAMMPS' default unit style
+    return {"code": stages[-1][1].code, "units": units, "speed_unit": SPEED_UNITS.get(units, f"units {units}"),
+            "stages": audited, "pairs": audited[-1]["pairs"], "walls": audited[-1]["walls"],
             "unknown_lines": [{"file": f, "line": n, "text": t, "why": why} for f, n, t, why in unknown],
             "ignored": sorted(set(deck.ignored)), "notes": notes + _empty_notes(deck) + _dt_reset_notes(deck) + _environment_notes(deck)}
 
@@ -1353,8 +1410,14 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list,
                                                         lambda k: _frozen_contact(sized, i, j, k), unmoved=unmoved[0])
                 return row, at
             try:
-                pairs += _pending_rows(deck, (i, j), _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(
+                rows = _pending_rows(deck, (i, j), _sampled_rows(deck, (i, j), _time_steps(_ends(_over_sizes(
                     _choices(deck, i, j), pair_row, speeds)))))
+                if i == j and _lone(deck, i):
+                    # kept, as the settings' own eps for two such spheres, and marked as a pair
+                    # this stage cannot have
+                    for row in rows:
+                        row["lone"] = True
+                pairs += rows
             except PairNotMapped as why:     # the engine runs it: the deck's other pairs are audited
                 not_audited.append(why.row(i, j))
                 unmapped.append(why)
@@ -1646,6 +1709,27 @@ def _empty(deck: Deck, t: int) -> bool:
     a type of walls only, or unused; no sphere of it meets another."""
     return (deck.held is not None and t not in deck.held and t not in deck.radius and t not in deck.missing
             and t not in deck.sizes)
+
+
+def _lone(deck: Deck, t: int) -> bool:
+    """Whether type t has exactly one sphere at this run, as the engine holds it (one size, which
+    :attr:`Deck.once` says one atom has), and no inserting
+    fix (a pour, a deposit, a LIGGGHTS insertion waiting for its start) adds to it: its pair with
+    itself cannot happen (field round 22, t13, y09: types 2 2 was printed for a lone sphere as if it
+    could): the row is marked ``lone``.
+
+    Examples
+    --------
+    >>> one = Deck(ntypes=2, held={1: [(0.002, 2500.0)], 2: [(0.003, 2500.0)]}, once={2: {(0.003, 2500.0)}})
+    >>> _lone(one, 1), _lone(one, 2)
+    (False, True)
+    >>> one.poured[2] = {(0.003, 2500.0)}
+    >>> _lone(one, 2)
+    False
+    """
+    return (deck.held is not None and len(deck.held.get(t, ())) == 1 and bool(deck.once.get(t))
+            and t not in deck.sizes and not deck.poured.get(t) and deck.deposits.get(t) is None
+            and not any(t in made for _, _, made in deck.waiting.values()))
 
 
 def _no_rows(deck: Deck) -> str:

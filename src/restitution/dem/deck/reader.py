@@ -454,7 +454,8 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
         deck.__dict__.update(fresh.__dict__)
         deck.units, deck.atom_style, deck.ntypes, deck.dt = held.get("units"), held.get("atom_style"), \
             held["ntypes"], held["dt"]
-        deck.held, deck.atoms = {}, True
+        # the file's step is not read: unknown (a run's start, stop or upto is then not checked)
+        deck.held, deck.atoms, deck.step = {}, True, None
         if held.get("pair_style", "none") != "none" and held["set"]:
             deck.restart_pairs = (loc, line, held["pair_style"], set(held["set"]))
         return {}
@@ -497,6 +498,7 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     deck.__dict__.update(fresh.__dict__)
     for name, value in copy.deepcopy(state).items():
         setattr(deck, name, value)
+    deck.step = None      # the file's step, which this reading does not follow
     for key in held["unset"]:
         # a sub-style whose coefficients a restart does not store: LAMMPS holds none for the pair
         deck.coeffs.pop(key, None)
@@ -601,6 +603,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             deck.present_unknown = True
             _made_after(deck, None, f"{where} ({line})")
     elif cmd == "run":
+        if (stop := run_refused(words, deck.step, deck.code)) is not None:
+            raise DeckError(where, line, f"{deck.code} stops here: {stop}")
         ending = _run_every(words, where, line)
         deck.ended = ending == "quits"
         if _no_step(deck, words):
@@ -1049,7 +1053,7 @@ def contact_key(deck: Deck) -> str:
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups, deck.partial_groups,
                        deck.pending,
                        set(deck.shapes), deck.sizes, {t: deck.once.get(t, set()) - deck.poured.get(t, set())
-                                                      for t in deck.sizes}, deck.others, deck.idle, deck.granular_of,
+                                                      for t in set(deck.sizes) | set(deck.once)}, deck.others, deck.idle, deck.granular_of,
                        [w for _, w in deck.beside],
                        [w for _, _, w in deck.excludes], {k: (g, st) for k, (_, _, g, st) in deck.movers.items()},
                        # a moving fix's group given again between runs holds other atoms from there on
@@ -1163,6 +1167,113 @@ def _run_end(deck: Deck, words: list) -> int | None:
     if n is None or deck.step is None:
         return None
     return max(int(n.group(0)), deck.step) if "upto" in words[2:] else deck.step + int(n.group(0))
+
+
+#: LAMMPS' run keywords and the number of values each takes (every: its N, then the commands)
+_RUN_KEYWORDS = {"upto": 0, "start": 1, "stop": 1, "pre": 1, "post": 1, "every": None}
+#: The words LAMMPS' utils::logical reads as yes or no
+_LOGICAL = {"yes", "no", "on", "off", "true", "false", "1", "0"}
+
+
+def run_refused(words: list, step: int | None, code: str = "LAMMPS") -> str | None:
+    """What LAMMPS (22 Jul 2025) says where it stops on a ``run`` command's arguments, None where it
+    takes them. Its ``-skiprun`` skips a run before reading them, so the pass never checks them
+    (field round 23, R23-R30: ``run 1e2``, ``run -100``, ``every 0``, ``pre maybe``, a ``start``,
+    ``stop`` or ``upto`` the step contradicts were audited as runs LAMMPS makes). The step checks
+    are made only where the step the runs reach is known (``step`` not None). LIGGGHTS 3.8.0, whose
+    pass cuts each run to one step, reads N as C's atoi does and checks N, start, stop and upto alone
+    (measured: L50, L51), in messages without the values.
+
+    Parameters
+    ----------
+    words : list of str
+        The run command, as the engine echoed it (its variables substituted).
+    step : int or None
+        The step the deck's runs have reached before it.
+    code : {"LAMMPS", "LIGGGHTS"}
+        The engine.
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> run_refused("run 1e2".split(), 0), run_refused("run 100 every 0 NULL".split(), 0)
+    ("Expected integer parameter instead of '1e2'", 'Invalid run every argument: 0')
+    >>> run_refused("run 100 upto".split(), 200), run_refused("run 100 start 0 stop 50".split(), 0)
+    ('Invalid run command upto value: 100', 'Run command stop value 50 is before end of run at step 100')
+    >>> run_refused("run 100 pre no post yes every 50 NULL".split(), None) is None
+    True
+    >>> run_refused("run 1e2".split(), 0, "LIGGGHTS"), run_refused("run -100".split(), 0, "LIGGGHTS")
+    (None, 'Invalid run command N value')
+    """
+    if len(words) < 2:
+        return "Illegal run command"
+    if code != "LAMMPS":
+        return _liggghts_run_refused(words, step)
+    if re.fullmatch(r"[-+]?\d+", words[1]) is None:
+        return f"Expected integer parameter instead of '{words[1]}'"
+    n, upto, start, stop, k = int(words[1]), False, None, None, 2
+    while k < len(words):
+        key = words[k]
+        if key not in _RUN_KEYWORDS:
+            return f"Unknown run keyword: {key}"
+        if key == "every":
+            if k + 1 >= len(words) or re.fullmatch(r"[-+]?\d+", words[k + 1]) is None:
+                return f"Expected integer parameter instead of '{words[k + 1] if k + 1 < len(words) else ''}'"
+            if int(words[k + 1]) <= 0:
+                return f"Invalid run every argument: {words[k + 1]}"
+            break                      # the rest are the commands it runs
+        if k + _RUN_KEYWORDS[key] >= len(words):
+            return f"Illegal run {key} command: missing argument"
+        value = words[k + 1] if _RUN_KEYWORDS[key] else None
+        if key == "upto":
+            upto = True
+        elif key in ("start", "stop"):
+            if re.fullmatch(r"[-+]?\d+", value) is None:
+                return f"Expected integer parameter instead of '{value}'"
+            start, stop = (int(value), stop) if key == "start" else (start, int(value))
+        elif value.lower() not in _LOGICAL:
+            return f"Expected boolean parameter instead of '{value}'"
+        k += 1 + _RUN_KEYWORDS[key]
+    if not upto and n < 0:
+        return f"Invalid run command N value: {n}"
+    if step is None:
+        return None
+    if upto:
+        if n < step:
+            return f"Invalid run command upto value: {n}"
+        n -= step
+    if start is not None and start > step:
+        return f"Run command start value {start} is after start of run at step {step}"
+    if stop is not None and stop < step + n:
+        return f"Run command stop value {stop} is before end of run at step {step + n}"
+    return None
+
+
+def _liggghts_run_refused(words: list, step: int | None) -> str | None:
+    """:func:`run_refused` for LIGGGHTS 3.8.0: N, upto, start and stop, N read as atoi reads it."""
+    def atoi(word: str) -> int:
+        m = re.match(r"\s*[-+]?\d+", word)
+        return int(m.group(0)) if m else 0
+    n, upto = atoi(words[1]), "upto" in words[2:words.index("every") if "every" in words else None]
+    keys = words[2:words.index("every")] if "every" in words else words[2:]
+    start = atoi(keys[keys.index("start") + 1]) if "start" in keys[:-1] else None
+    stop = atoi(keys[keys.index("stop") + 1]) if "stop" in keys[:-1] else None
+    if not upto and n < 0:
+        return "Invalid run command N value"
+    if step is None:
+        return None
+    if upto:
+        if n < step:
+            return "Invalid run command upto value"
+        n -= step
+    if start is not None and start > step:
+        return "Run command start value is after start of run"
+    if stop is not None and stop < step + n:
+        return "Run command stop value is before end of run"
+    return None
 
 
 def _no_step(deck: Deck, words: list) -> bool:

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["run_dependent", "resized_by_runs", "constant_in_time", "CLOCK"]
+__all__ = ["run_dependent", "resized_by_runs", "lost_in_runs", "stops_in_runs", "constant_in_time", "CLOCK"]
 
 #: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
 #: is not one: it formats an equal-style variable when used).
@@ -332,3 +332,79 @@ def lost_in_runs(commands: list) -> list:
             if split[3] == "evaporate":
                 evaporating.add(split[1])
     return []
+
+
+def stops_in_runs(commands: list) -> list:
+    """The first run after a run in which the engine may have stopped, or lost atoms, where the
+    pass (its runs skipped, or one step long) cannot tell: a box with a fixed (``f``) face, through
+    which a sphere that leaves it is lost (LAMMPS stops, "Lost atoms", under its default
+    ``thermo_modify lost error``; LIGGGHTS 3.8.0 drops it and goes on), and a ``fix halt`` whose
+    ``error`` is ``hard`` (its default: the engine exits when its condition holds) or ``soft`` (the
+    run ends there, and LAMMPS makes no step in any run after it). Field round 23, r22, R11, R12: the
+    later stages of decks that LAMMPS stops in their first run were audited, L37: a
+    sphere LIGGGHTS lost stayed in the audit.
+
+    Parameters
+    ----------
+    commands : list of Executed
+        The commands as the engine ran them, with ``stage`` set on the runs.
+
+    Returns
+    -------
+    list of (tuple, str)
+        ((file, line), text) of that run, with why, as :func:`lost_in_runs` gives its runs; empty
+        where there is none.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> cmds = [Executed((None, 1), "boundary p p f"), Executed((None, 2), "run 1000", stage=0),
+    ...         Executed((None, 3), "run 100", stage=1)]
+    >>> stops_in_runs(cmds)
+    [((None, 3), 'run 100, reached only if the run at line 2 keeps every sphere in the box (boundary p p f)')]
+    >>> stops_in_runs([Executed((None, 1), "boundary p p sm")] + cmds[1:])
+    []
+    >>> halt = Executed((None, 1), "fix h all halt 10 v_t > 0.0005")
+    >>> stops_in_runs([halt] + cmds[1:])[0][1]
+    'run 100, reached only if the run at line 2 does not meet the condition of fix h (halt, error hard)'
+    """
+    from ..dialect.state import place
+    boundary, halts, last = None, {}, None
+    for cmd in commands:
+        split = cmd.text.split()
+        if not split:
+            continue
+        if cmd.stage is not None:
+            if last is not None:
+                return [(cmd.loc, f"{cmd.text.strip()}, reached only if the run at {place(last)} {last_why}")]
+            if halts:
+                fix, style = next(iter(halts.items()))
+                last, last_why = cmd.loc, f"does not meet the condition of fix {fix} (halt, error {style})"
+            elif boundary is not None:
+                last, last_why = cmd.loc, f"keeps every sphere in the box ({boundary})"
+        elif split[0] == "boundary":
+            # only a plain f face loses atoms: p wraps them, s and m (shrink-wrapped) follow them
+            boundary = cmd.text.strip() if any(face == "f" for face in _faces(split[1:])) else None
+        elif split[0] == "change_box" and "boundary" in split:
+            k = split.index("boundary")
+            faces = split[k + 1:k + 4]
+            boundary = cmd.text.strip() if any(face == "f" for face in _faces(faces)) else boundary
+        elif split[0] == "unfix" and len(split) > 1:
+            halts.pop(split[1], None)
+        elif split[0] == "fix" and len(split) > 3:
+            halts.pop(split[1], None)
+            if split[3] == "halt":
+                # hard (its default) exits; soft ends the run and LAMMPS skips every later run
+                # (field round 23, R12); continue goes on as if nothing happened
+                style = split[split.index("error") + 1] if "error" in split[:-1] else "hard"
+                if style in ("hard", "soft"):
+                    halts[split[1]] = style
+    return []
+
+
+def _faces(words: list) -> list:
+    """The six faces of a boundary's three words (``p``, ``fm``, ``f``: one letter for both faces)."""
+    out = []
+    for word in words[:3]:
+        out += [word[0], word[-1]] if word else []
+    return out

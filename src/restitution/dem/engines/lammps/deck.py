@@ -24,13 +24,19 @@ from ...pair import WALL_SIZE, Pair
 from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_contact, lammps_eta_n0,
                       lammps_gran_contact)
 
-__all__ = ["ENGINE", "DEFAULT_DT", "FTM2V", "NKTV2P", "Region", "read_region", "region_moves", "REGION_UNBOUNDED", "region_number",
+__all__ = ["ENGINE", "DEFAULT_DT", "SPEED_UNITS", "FTM2V", "NKTV2P", "Region", "read_region", "region_moves", "REGION_UNBOUNDED", "region_number",
            "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall", "concave_cylinder",
            "accelerated"]
 
 #: LAMMPS' default time step per unit style (checked in LAMMPS 22 Jul 2025), where a deck sets none
 DEFAULT_DT = {"lj": 0.005, "real": 1.0, "metal": 0.001, "si": 1e-8, "cgs": 1e-8, "electron": 0.001, "micro": 2.0,
               "nano": 0.00045}
+
+#: The speed unit of each unit style (LAMMPS' units page; LIGGGHTS has si and cgs of them): a deck's
+#: --g is taken in its own units, as every length, mass and time it holds
+SPEED_UNITS = {"si": "m/s", "cgs": "cm/s", "lj": "LJ velocity units (sigma/tau)", "real": "Angstrom/fs",
+               "metal": "Angstrom/ps", "electron": "Bohr/atomic time unit", "micro": "micrometre/microsecond",
+               "nano": "nm/ns"}
 
 ENGINE = "LAMMPS"
 #: The pair styles this dialect reads
