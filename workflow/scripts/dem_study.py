@@ -191,7 +191,7 @@ for rule, _ in RULES:
     top.plot(d["g"], d["eps_lammps"], marker, color=colour, mfc="none", ms=7, label=f"LAMMPS, {label}")
     bottom.plot(d["g"], np.abs(d["relative_deviation"]), marker + ls, color=colour, mfc="none", ms=6, lw=1.0)
 top.set_xscale("log")
-top.set_ylabel(r"restitution coefficient $\varepsilon$")
+top.set_ylabel(r"restitution $\varepsilon$")     # the full name ran the panel's height (referee r31)
 # below the curves, a band for the legend: beside them it covered the points at g >= 1
 lo = min(curves[f"eps_{rule}"].min() for rule, _ in RULES)
 hi = max(curves[f"eps_{rule}"].max() for rule, _ in RULES)

@@ -40,7 +40,8 @@ def finish(fig, ax, xlabel, loc):
     the text width; inside, it covered part of the range the relations' curves run through). ``loc`` is kept
     for the figure of eps(Omega), whose few markers leave a corner empty."""
     ax.set_xlabel(xlabel)
-    ax.set_ylabel(r"coefficient of restitution $\varepsilon$")
+    # short: the full name ran taller than the axes of the flat eps(g) figure (referee r31)
+    ax.set_ylabel(r"restitution $\varepsilon$")
     ax.set_title(rf"$\alpha = {p.exponents['alpha']}$, $\gamma = {p.exponents['gamma']}$")
     if loc is None:
         # hung below the x label by a fixed distance in points, measured once drawn: at a fixed fraction of the
@@ -74,7 +75,8 @@ def draw_eps_of_omega():
 
 def draw_eps_of_g():
     """eps(g) from the reference and from every relation."""
-    fig, ax = plt.subplots(figsize=(PRINT_WIDTH * TEXT_WIDTH_PT / 72.27, PRINT_WIDTH * 2.95))
+    # 3.05 in: at 2.95 the axes were four times as wide as high (referee r31); at 3.4 the article ran a page over
+    fig, ax = plt.subplots(figsize=(PRINT_WIDTH * TEXT_WIDTH_PT / 72.27, PRINT_WIDTH * 3.05))
     ax.plot(curves["g"], curves["eps_reference"], color="black", lw=2.6, label="reference integration")
     drawn = [curves["eps_reference"].to_numpy()]
     for _, rel in errors.iterrows():
