@@ -206,6 +206,25 @@ deck("G02_rigid_small_clump", "# as G01 with fix rigid/small and molecule ids by
 deck("G03_rigid_one_sphere", "# a rigid body of the type 2 sphere alone: its mass is its own\n"
      + GB("group t2 type 2\nfix rb t2 rigid single\ngroup rest subtract all t2\nfix integ rest nve/sphere\n"), g=1)
 
+# ---------------------------------------------------------------- S (more): errors inside a run in a box with no f face (no trigger)
+PB = lambda lines: m.head(2, bnd="p p p") + m.G1(HK) + m.TAIL + TWO + lines
+deck("S16_thermo_div0_ppp", "# p p p box, no gravity: thermo_style custom step v_x, x = 1/(step-50), thermo 10: LAMMPS errors at step 50 of run 1; kn 5000 after\n"
+     + PB("variable x equal 1/(step-50)\nthermo_style custom step v_x\nthermo 10\nrun 100\n" + K5 + "run 100\n"), g=1)
+deck("S17_thermo_sqrt_neg_ppp", "# p p p: thermo_style custom step v_x, x = sqrt(50-step): LAMMPS errors at step 60 of run 1; kn 5000 after\n"
+     + PB("variable x equal sqrt(50-step)\nthermo_style custom step v_x\nthermo 10\nrun 100\n" + K5 + "run 100\n"), g=1)
+deck("S18_fix_ave_time_div0_ppp", "# p p p: fix ave/time 10 1 10 v_x (x = 1/(step-50)): LAMMPS errors at step 50; kn 5000 after\n"
+     + PB("variable x equal 1/(step-50)\nfix av all ave/time 10 1 10 v_x\nrun 100\n" + K5 + "run 100\n"), g=1)
+deck("S19_thermo_div0_ppf", "# S16 in the base p p f box (its f face makes the audit run it for real)\n"
+     + SB("p p f", "variable x equal 1/(step-50)\nthermo_style custom step v_x\nthermo 10\nrun 100\n" + K5 + "run 100\n"), g=1)
+L("S20_liggghts_thermo_div0", "# LIGGGHTS p p p box: thermo_style custom step v_x, x = 1/(step-50), thermo 10: LIGGGHTS errors at step 50; e 0.3 after\n"
+  + m.lhead(bnd="p p p") + m.MAT3 + m.E3 + m.HERTZ + m.ATOMS + "timestep 1e-5\nfix integr all nve/sphere\nvariable x equal 1/(step-50)\nthermo_style custom step v_x\nthermo 10\nrun 100\n" + m.E3b(0.3) + "run 100\n")
+rr("H14_soft_long_unmakeable", "soft halt met at step 60 of a 2e7-step run (too long for the audit to make), kn 5000 after",
+   HALT("soft") + "run 20000000\nunfix h\n" + K5 + "run 100\nprint \"PROBE step $(step)\"\n")
+rr("H15_soft_tlimit_message_no", "fix halt 10 tlimit > 0.0 error soft message no (wall clock, met at once, silent): kn 5000 run skipped",
+   "fix h all halt 10 tlimit > 0.0 error soft message no\nrun 100\nunfix h\n" + K5 + "run 100\nprint \"PROBE step $(step)\"\n")
+L("E08_liggghts_stiffness_lose_big", "# LIGGGHTS hooke/stiffness (eps depends on masses): two type 2 spheres, 6 mm (id 2) and 10 mm (id 3); id 3 thrown out in run 1; 1 2 rows after\n"
+  + m.lhead() + m.MAT3 + m.HS + m.ATOMS + "create_atoms 2 single -0.03 0 0.01 units box\nset atom 3 diameter 0.010 density 1500\n" + m.LRUN + "group up id 3\nvelocity up set 0 0 200\nrun 1000\nrun 100\n")
+
 
 def write(name):
     m.write(name)
