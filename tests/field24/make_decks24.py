@@ -225,6 +225,41 @@ rr("H15_soft_tlimit_message_no", "fix halt 10 tlimit > 0.0 error soft message no
 L("E08_liggghts_stiffness_lose_big", "# LIGGGHTS hooke/stiffness (eps depends on masses): two type 2 spheres, 6 mm (id 2) and 10 mm (id 3); id 3 thrown out in run 1; 1 2 rows after\n"
   + m.lhead() + m.MAT3 + m.HS + m.ATOMS + "create_atoms 2 single -0.03 0 0.01 units box\nset atom 3 diameter 0.010 density 1500\n" + m.LRUN + "group up id 3\nvelocity up set 0 0 200\nrun 1000\nrun 100\n")
 
+# ---------------------------------------------------------------- budgets: --run-budget 0 on decks the engine stops
+deck("S21_thrown_out_budget0", "# round 23's r22 (type 2 thrown out of the p p f box: LAMMPS stops, Lost atoms) audited with --run-budget 0\n"
+     + SB("p p f", "group t2 type 2\nvelocity t2 set 0 0 200\nthermo 100\nrun 1000\n" + K5 + "run 100\n"), g=1, data={"ARGS": "--run-budget 0\n"})
+rr("H16_soft_budget0", "round 23's R12 (soft halt met in run 1, kn 5000 run 2 skipped) audited with --run-budget 0",
+   HALT("soft") + "run 100\nunfix h\n" + K5 + "run 100\nprint \"PROBE step $(step)\"\n", data={"ARGS": "--run-budget 0\n"})
+rr("H17_hard_budget0", "round 23's R11 (halt hard met in run 1) audited with --run-budget 0",
+   HALT("hard") + "run 100\nunfix h\n" + K5 + "run 100\n", data={"ARGS": "--run-budget 0\n"})
+
+# ---------------------------------------------------------------- T: integrators and thermostats that change a collision
+TB = lambda integ: (m.head(2) + m.G1(HK) + m.GRAV + m.FLOOR + integ + "timestep 1e-5\n" + TWO + "run 100\n")
+deck("T01_nvt_sphere", "# fix nvt/sphere temp 300 300 1e-3 instead of nve/sphere (a Nose-Hoover thermostat on the spheres)\n" + TB("fix integ all nvt/sphere temp 300 300 1e-3\n"), g=1)
+deck("T02_temp_berendsen", "# nve/sphere + fix temp/berendsen 0 0 1e-4 (rescales velocities every step toward T = 0)\n" + TB("fix integ all nve/sphere\nfix tb all temp/berendsen 0.0 0.0 1e-4\n"), g=1)
+deck("T03_temp_rescale", "# nve/sphere + fix temp/rescale 1 0 0 1e-30 1.0 (velocities rescaled to T = 0 every step)\n" + TB("fix integ all nve/sphere\nfix tr all temp/rescale 1 0.0 0.0 1e-30 1.0\n"), g=1)
+deck("T04_nve_noforce", "# fix nve/noforce instead of nve/sphere (positions follow velocities, forces never act)\n" + TB("fix integ all nve/noforce\n"), g=1)
+deck("T05_momentum", "# nve/sphere + fix momentum 1 linear 1 1 1 (zeroes the total momentum each step: no effect on a head-on pair at rest centre)\n" + TB("fix integ all nve/sphere\nfix mom all momentum 1 linear 1 1 1\n"), g=1)
+deck("T06_nph_sphere", "# fix nph/sphere (barostat) on the spheres, p p f box: engine says\n" + TB("fix integ all nph/sphere x 0 0 1e-3\n"), g=1)
+deck("T07_temp_csvr", "# nve/sphere + fix temp/csvr 0 0 1e-4 seed (stochastic rescale to T = 0)\n" + TB("fix integ all nve/sphere\nfix tc all temp/csvr 0.0 0.0 1e-4 54321\n"), g=1)
+
+# ---------------------------------------------------------------- K: neighbor settings that miss contacts
+deck("K01_skin_tiny_every_1000", "# neighbor 1e-6 bin, neigh_modify every 1000 check no: a pair approaching from apart is found late (deep overlap) or never\n"
+     + m.head(2, extra="neighbor 1e-6 bin\nneigh_modify delay 0 every 1000 check no\n") + m.G1(HK) + m.GRAV + m.FLOOR + m.TAIL + TWO + "run 100\n", g=1)
+deck("K02_skin_tiny_check_yes", "# neighbor 1e-6 bin with the default every 1 check yes: contacts found\n"
+     + m.head(2, extra="neighbor 1e-6 bin\n") + m.G1(HK) + m.GRAV + m.FLOOR + m.TAIL + TWO + "run 100\n", g=1)
+
+# ---------------------------------------------------------------- B: bonded spheres (special_bonds: a bonded pair is left out of the neighbor list)
+BOND = ("units si\natom_style hybrid sphere bond\nboundary p p f\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.1 units box\n"
+        "create_box 2 box bond/types 1 extra/bond/per/atom 1 extra/special/per/atom 1\n" + m.G1(HK) + "bond_style harmonic\nbond_coeff 1 0.0 0.01\n"
+        + m.GRAV + m.FLOOR + m.TAIL + TWO)
+deck("B01_bonded_only_pair", "# the type 1 and the type 2 sphere bonded (bond_style harmonic of stiffness 0): special_bonds lj 0 0 0 (default) leaves them out of each other's list: the 1 2 pair cannot meet\n"
+     + BOND + "create_bonds single/bond 1 1 2\nrun 100\n", g=1)
+deck("B02_bonded_special_one", "# B01 with special_bonds lj 1 1 1 (bonded pairs kept in the list): the 1 2 pair meets\n"
+     + BOND + "special_bonds lj 1 1 1\ncreate_bonds single/bond 1 1 2\nrun 100\n", g=1)
+deck("B03_bonded_plus_free", "# B01 plus a free type 2 sphere (id 3): 1 2 meets through id 3\n"
+     + BOND + "create_atoms 2 single 0.03 0.03 0.01\nset type 2 diameter 0.006 density 2500\ncreate_bonds single/bond 1 1 2\nrun 100\n", g=1)
+
 
 def write(name):
     m.write(name)

@@ -13,7 +13,7 @@ for d in sys.argv[1:]:
         if l.startswith("# stage"):
             rows = {}
         elif not l.startswith(" "):
-            name = l.split(":")[0]
+            name = l.split(":")[0].split(" [")[0]
         elif l.split()[:2] == ["g", "1"]:
             rows[name] = l.split()[3]
     for t, u in (("1", "1"), ("1", "2"), ("2", "2")):
