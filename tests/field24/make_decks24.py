@@ -260,6 +260,31 @@ deck("B02_bonded_special_one", "# B01 with special_bonds lj 1 1 1 (bonded pairs 
 deck("B03_bonded_plus_free", "# B01 plus a free type 2 sphere (id 3): 1 2 meets through id 3\n"
      + BOND + "create_atoms 2 single 0.03 0.03 0.01\nset type 2 diameter 0.006 density 2500\ncreate_bonds single/bond 1 1 2\nrun 100\n", g=1)
 
+# ---------------------------------------------------------------- more S, E, N, R, V
+deck("S22_fs_thrown_down", "# boundary p p fs: the type 2 sphere thrown down at 200 m/s through the floor wall, out of the fixed bottom face: Lost atoms; kn 5000 after\n"
+     + SB("p p fs", "group t2 type 2\nvelocity t2 set 0 0 -200\nrun 1000\n" + K5 + "run 100\n"), g=1)
+deck("S23_sf_thrown_up", "# boundary p p sf (shrink-wrapped bottom, fixed top): the type 2 sphere thrown up out of the top: Lost atoms; kn 5000 after\n"
+     + m.head(2, bnd="p p sf") + m.G1(HK) + m.GRAV + m.TAIL + TWO + "group t2 type 2\nvelocity t2 set 0 0 200\nrun 1000\n" + K5 + "run 100\n", g=1)
+deck("S24_change_box_f_no_wall", "# p p p box, no gravity or wall: run 1, change_box all boundary p p f, type 2 thrown up: lost in run 2; kn 8000 for run 3\n"
+     + m.head(2, bnd="p p p") + m.G1(HK) + m.TAIL + TWO + "run 100\nchange_box all boundary p p f\ngroup t2 type 2\nvelocity t2 set 0 0 200\n" + K5 + "run 1000\n" + K8 + "run 100\n", g=1)
+L("E09_liggghts_lost_then_insert", "# LIGGGHTS hooke/stiffness: the type 2 sphere (6 mm, 1500) thrown out in run 1, then insert/pack of 10 type 2 spheres of 8 mm rho 1500 (pts only 2): 1 2 rows at 8 mm only\n"
+  + m.lhead() + m.MAT3 + m.HS + m.ATOMS + m.LRUN + "group up type 2\nvelocity up set 0 0 200\nrun 1000\n"
+  + "fix pts3 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.004\nfix pdd2 all particledistribution/discrete 32452843 1 pts3 1.0\nregion bc block -0.03 0.03 -0.03 0.03 0.02 0.1 units box\n"
+  + "fix ins all insert/pack seed 32452867 distributiontemplate pdd2 insert_every once overlapcheck yes all_in yes particles_in_region 10 region bc\nrun 100\n")
+L("N14_liggghts_lone_insert_later", "# LIGGGHTS: one type 2 sphere, insert/pack of type 2 (pts2) with start 500 in a later run: not lone in that run\n"
+  + m.LB() + m.ATOMS + m.LRUN + m.PTS.replace("pts1 0.5 pts2 0.5", "pts2 1.0").replace("discrete 32452843 2", "discrete 32452843 1")
+  + "run 100\nfix ins all insert/pack seed 32452867 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 10 region bc\nrun 200\n")
+rr("R28_every_print", "run 100 every 50 \"print hi\" (no contact change): kn 5000", K5 + "run 100 every 50 \"print hi\"\n")
+rr("R29_every_thermo_style", "run 100 every 50 \"thermo_style one\" (no contact change)", K5 + "run 100 every 50 \"thermo_style one\"\n")
+rr("R30_loop_upto", "a loop of 3 passes of run 300 upto (step 300, then 0-step runs: legal), kn 5000 before", K5 + "variable i loop 3\nlabel l\nrun 300 upto\nnext i\njump SELF l\n")
+rr("V01_is_file_present", "if $(is_file(kn.txt)) then include kn.txt (kn 5000 in it; present)",
+   "if $(is_file(kn.in)) then \"include kn.in\" else \"pair_coeff * * " + hk(8000) + "\"\nrun 100\n", data={"kn.in": K5})
+rr("V02_is_file_absent", "if $(is_file(nofile.in)) then ... else kn 8000", "if $(is_file(nofile.in)) then \"include nofile.in\" else \"pair_coeff * * " + hk(8000) + "\"\nrun 100\n")
+rr("V03_is_os", "if $(is_os(^Linux)) then kn 5000 else kn 8000", "if $(is_os(^Linux)) then \"pair_coeff * * " + hk(5000) + "\" else \"pair_coeff * * " + hk(8000) + "\"\nrun 100\n")
+rr("V04_extract_setting", "variable n equal extract_setting(world_size): kn $(1000*v_n+4000) = 5000 in serial", "variable n equal extract_setting(world_size)\npair_coeff * * hooke $(1000*v_n+4000) 3000 " + K + "\nrun 100\n")
+rr("V05_is_available_pair", "if $(is_available(pair_style,granular)) then kn 5000", "if $(is_available(pair_style,granular)) then \"pair_coeff * * " + hk(5000) + "\"\nrun 100\n")
+rr("V06_version_check", "variable v equal version; kn 5000 if version >= 20250722", "variable v equal version\nif \"${v} >= 20250722\" then \"pair_coeff * * " + hk(5000) + "\"\nrun 100\n")
+
 
 def write(name):
     m.write(name)
