@@ -285,6 +285,24 @@ rr("V04_extract_setting", "variable n equal extract_setting(world_size): kn $(10
 rr("V05_is_available_pair", "if $(is_available(pair_style,granular)) then kn 5000", "if $(is_available(pair_style,granular)) then \"pair_coeff * * " + hk(5000) + "\"\nrun 100\n")
 rr("V06_version_check", "variable v equal version; kn 5000 if version >= 20250722", "variable v equal version\nif \"${v} >= 20250722\" then \"pair_coeff * * " + hk(5000) + "\"\nrun 100\n")
 
+# ---------------------------------------------------------------- V: include through if branches and jumps
+KN = {"kn.in": K5}
+rr("V07_if_one_include", "if 1 then include kn.in (kn 5000 in it)", "if 1 then \"include kn.in\"\nrun 100\n", data=KN)
+rr("V08_is_file_direct_pair", "if $(is_file(kn.in)) then pair_coeff kn 5000 directly, else kn 8000", "if $(is_file(kn.in)) then \"pair_coeff * * " + hk(5000) + "\" else \"pair_coeff * * " + hk(8000) + "\"\nrun 100\n", data=KN)
+rr("V09_is_file_var", "variable f equal is_file(kn.in); kn $(2000+3000*v_f) = 5000", "variable f equal is_file(kn.in)\npair_coeff * * hooke $(2000+3000*v_f) 3000 " + K + "\nrun 100\n", data=KN)
+rr("V10_is_file_include_no_else", "if $(is_file(kn.in)) then include kn.in (no else)", "if $(is_file(kn.in)) then \"include kn.in\"\nrun 100\n", data=KN)
+rr("V11_jump_file", "jump kn2.in (kn2.in: kn 5000 and run 100; the deck's lines after the jump never run)", "jump kn2.in\npair_coeff * * " + hk(8000) + "\nrun 100\n", data={"kn2.in": K5 + "run 100\n"})
+rr("V12_if_index_include", "variable a index 1; if \"${a} == 1\" then \"include kn.in\"", "variable a index 1\nif \"${a} == 1\" then \"include kn.in\"\nrun 100\n", data=KN)
+rr("V13_include_nested_in_if", "if 1 then include outer.in; outer.in includes kn.in", "if 1 then \"include outer.in\"\nrun 100\n", data={"outer.in": "include kn.in\n", **KN})
+rr("V14_if_include_sizes", "if 1 then include sizes.in (set type 2 density 7800): sizes, not contact settings", "if 1 then \"include sizes.in\"\nrun 100\n", data={"sizes.in": "set type 2 density 7800\n"})
+rr("V15_include_in_loop", "a 2-pass loop whose body includes kn.in then runs 50 steps", "variable i loop 2\nlabel l\ninclude kn.in\nrun 50\nnext i\njump SELF l\n", data=KN)
+rr("V16_if_include_then_run", "if 1 then \"include kn.in\" \"run 100\" (the run inside the branch)", "if 1 then \"include kn.in\" \"run 100\"\n", data=KN)
+rr("V17_include_plain", "include kn.in (no if): control", "include kn.in\nrun 100\n", data=KN)
+rr("V18_if_else_include", "if 0 then pair_coeff kn 8000 else include kn.in", "if 0 then \"pair_coeff * * " + hk(8000) + "\" else \"include kn.in\"\nrun 100\n", data=KN)
+rr("V19_if_include_wall", "if 1 then include wall.in (unfix floor, new floor wall with kn 5000)", "if 1 then \"include wall.in\"\nrun 100\n",
+   data={"wall.in": "unfix floor\nfix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\n"})
+L("V20_liggghts_if_include", "# LIGGGHTS: if 1 then include e.in (e 0.3 for every pair)\n" + m.LB() + m.ATOMS + m.LRUN + "if 1 then \"include e.in\"\nrun 100\n", data={"e.in": m.E3b(0.3)})
+
 
 def write(name):
     m.write(name)
