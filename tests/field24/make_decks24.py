@@ -303,6 +303,15 @@ rr("V19_if_include_wall", "if 1 then include wall.in (unfix floor, new floor wal
    data={"wall.in": "unfix floor\nfix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\n"})
 L("V20_liggghts_if_include", "# LIGGGHTS: if 1 then include e.in (e 0.3 for every pair)\n" + m.LB() + m.ATOMS + m.LRUN + "if 1 then \"include e.in\"\nrun 100\n", data={"e.in": m.E3b(0.3)})
 
+rr("V21_if_jump_file", "if 1 then jump kn2.in (kn2.in: kn 5000, run 100)", "if 1 then \"jump kn2.in\"\npair_coeff * * " + hk(8000) + "\nrun 100\n", data={"kn2.in": K5 + "run 100\n"})
+rr("V22_if_include_with_run", "if 1 then include stage.in (stage.in: kn 5000, run 100), then kn 8000 run 100", "if 1 then \"include stage.in\"\n" + K8 + "run 100\n", data={"stage.in": K5 + "run 100\n"})
+rr("V23_if_include_by_var", "variable f string kn.in; if 1 then \"include ${f}\"", "variable f string kn.in\nif 1 then \"include ${f}\"\nrun 100\n", data=KN)
+rr("V24_if_read_data_add", "if 1 then read_data add.data add append (a type 2 sphere of 10 mm rho 7800)", "if 1 then \"read_data add.data add append\"\nrun 100\n",
+   data={"add.data": "# one sphere\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 2 0.010 7800 0.03 0.03 0.02\n"})
+rr("V25_if_include_fix_halt", "if 1 then include halt.in (fix halt soft met in run 1), kn 5000 run 2 skipped by LAMMPS",
+   "if 1 then \"include halt.in\"\nrun 100\nunfix h\n" + K5 + "run 100\nprint \"PROBE step $(step)\"\n", data={"halt.in": HALT("soft")})
+rr("V26_if_include_timestep", "if 1 then include dt.in (timestep 1e-4: 5 steps per contact)", "if 1 then \"include dt.in\"\nrun 100\n", data={"dt.in": "timestep 1e-4\n"})
+
 
 def write(name):
     m.write(name)

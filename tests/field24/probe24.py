@@ -4,6 +4,7 @@ asked for are made far above any wall, touching, at relative speed g along x, an
 (gravity moves both alike; fixes of the deck stay). No import from the project: the engine decides. Resolution: at
 dt = 1e-8 s a 4 mm hooke contact (~5e-4 s) lasts ~5e4 steps, so the step error in eps is below 1e-4.
 PROBE_MID (env): commands put after the two spheres are made (e.g. group t2 type 2, so a deck's fix on group t2 acts on them).
+PROBE_FILE (env): the file the probe is appended to (default the deck; a file the deck jumps to and ends in).
 PROBE_PRE (env): commands, ;-separated, put before the probe (e.g. unfix p for a fix pour that forbids a timestep change).
 usage: python probe24.py DECKDIR T1 T2 D1 RHO1 D2 RHO2 [G] [Z] [XC] [DT]"""
 import os, shutil, subprocess, sys, tempfile
@@ -41,8 +42,9 @@ thermo 0
 run {os.environ.get("PROBE_STEPS", "3000000")}
 print "PROBE24 eps $((vcm(f24a2,x)-vcm(f24a1,x))/{g}:%.6f) steps $(step) m $(v_f24m1) $(v_f24m2)"
 """
-txt = open(os.path.join(tmp, deck), newline="", encoding="latin-1").read()  # byte for byte: lone CRs, NULs, Latin-1 as the engine reads them
-open(os.path.join(tmp, deck), "w", newline="", encoding="latin-1").write(txt + tail)
+target = os.environ.get("PROBE_FILE", deck)  # where the deck ends: a file it jumps to
+txt = open(os.path.join(tmp, target), newline="", encoding="latin-1").read()  # byte for byte: lone CRs, NULs, Latin-1 as the engine reads them
+open(os.path.join(tmp, target), "w", newline="", encoding="latin-1").write(txt + tail)
 if os.path.exists(os.path.join(d, "LIGGGHTS")):
     sys.exit("LAMMPS only")
 p = subprocess.run(["lmp", "-in", deck, "-log", "none"], cwd=tmp, capture_output=True, text=True)
