@@ -312,6 +312,20 @@ rr("V25_if_include_fix_halt", "if 1 then include halt.in (fix halt soft met in r
    "if 1 then \"include halt.in\"\nrun 100\nunfix h\n" + K5 + "run 100\nprint \"PROBE step $(step)\"\n", data={"halt.in": HALT("soft")})
 rr("V26_if_include_timestep", "if 1 then include dt.in (timestep 1e-4: 5 steps per contact)", "if 1 then \"include dt.in\"\nrun 100\n", data={"dt.in": "timestep 1e-4\n"})
 
+rr("H18_if_fix_halt_soft", "if 1 then \"fix h all halt ... error soft\" (the halt in an if's quoted command): run 2 skipped",
+   "variable t equal time\nif 1 then \"fix h all halt 10 v_t > 0.0005 error soft\"\nrun 100\nunfix h\n" + K5 + "run 100\nprint \"PROBE step $(step)\"\n")
+U04 = m.ubase("metal", HMu("1e4", "1e-3"), "0 40 0 40 0 100", (4, 6, 2.5, 2.5)) + "timestep 1e-3\nrun 100\n"
+deck("U09_metal_units_in_if_include", "# U04 (units metal, hertz/material) with its units line moved into units.in, included by an if\n"
+     + U04.replace("units metal\n", "if 1 then \"include units.in\"\n"), g=1, data={"units.in": "units metal\n"})
+deck("U10_cgs_units_in_if_include", "# round 23's u02 (units cgs hertz/material) with its units line in units.in, included by an if\n"
+     + (m.ubase("cgs", m.CGS_HM, "0 4 0 4 0 10", (0.4, 0.6, 2.5, 2.5)) + "timestep 1e-5\nrun 100\n").replace("units cgs\n", "if 1 then \"include units.in\"\n"), g=1, data={"units.in": "units cgs\n"})
+PAIRIN = {"pair.in": m.G1(HK).replace("hooke 2000", "hooke 5000")}
+deck("V28_if_include_pair_style", "# pair_style granular and its pair_coeff (kn 5000) only in pair.in, included by an if\n"
+     + m.head(2) + "if 1 then \"include pair.in\"\n" + m.GRAV + m.FLOOR + m.TAIL + TWO + "run 100\n", g=1, data=PAIRIN)
+deck("V29_if_include_only_wall", "# the only floor wall (kn 5000) made in wall.in, included by an if\n"
+     + m.head(2) + m.G1(HK) + m.GRAV + "if 1 then \"include wall.in\"\n" + m.TAIL + TWO + "run 100\n", g=1,
+     data={"wall.in": "fix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\n"})
+
 
 def write(name):
     m.write(name)
