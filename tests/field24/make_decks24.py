@@ -326,6 +326,15 @@ deck("V29_if_include_only_wall", "# the only floor wall (kn 5000) made in wall.i
      + m.head(2) + m.G1(HK) + m.GRAV + "if 1 then \"include wall.in\"\n" + m.TAIL + TWO + "run 100\n", g=1,
      data={"wall.in": "fix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\n"})
 
+rr("V30_if_jump_skip_block", "if 1 then \"jump SELF skip\" over a kn 8000 pair_coeff: LAMMPS keeps kn 2000",
+   "if 1 then \"jump SELF skip\"\npair_coeff * * " + hk(8000) + "\nlabel skip\nrun 100\n")
+deck("V31_if_read_restart", "# if 1 then read_restart base.restart (step 1000, kn 2000 stored in it); kn 5000 after; run 1500 upto (legal)\n"
+     + RHEAD.replace("units si\natom_style sphere 1\n", "") + "if 1 then \"read_restart base.restart\"\n" + m.GRAV + m.FLOOR + m.TAIL + K5 + "run 1500 upto\n", g=1)
+PREP["V31_if_read_restart"] = rp
+deck("V32_if_read_restart_upto_illegal", "# if 1 then read_restart base.restart (step 1000); kn 5000; run 500 upto (illegal)\n"
+     + RHEAD.replace("units si\natom_style sphere 1\n", "") + "if 1 then \"read_restart base.restart\"\n" + m.GRAV + m.FLOOR + m.TAIL + K5 + "run 500 upto\n", g=1)
+PREP["V32_if_read_restart_upto_illegal"] = rp
+
 
 def write(name):
     m.write(name)
