@@ -335,6 +335,20 @@ deck("V32_if_read_restart_upto_illegal", "# if 1 then read_restart base.restart 
      + RHEAD.replace("units si\natom_style sphere 1\n", "") + "if 1 then \"read_restart base.restart\"\n" + m.GRAV + m.FLOOR + m.TAIL + K5 + "run 500 upto\n", g=1)
 PREP["V32_if_read_restart_upto_illegal"] = rp
 
+rr("H19_soft_then_clear", "soft halt met in run 1, then clear and the whole deck again with kn 5000 (clear makes a new timer: its run is made)",
+   HALT("soft") + "run 100\nclear\n" + BASE() + TWO + K5 + "run 100\nprint \"PROBE step $(step)\"\n")
+deck("V34_if_include_dimension2", "# dimension 2 (discs: masses of discs) set in dim.in, included by an if; 2d box, hooke mass_velocity\n"
+     + "units si\nif 1 then \"include dim.in\"\natom_style sphere 1\nboundary p f p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.1 -0.001 0.001 units box\ncreate_box 2 box\n"
+     + m.G1(HK) + "fix grav all gravity 9.81 vector 0 -1 0\nfix floor all wall/gran granular " + HK + " yplane 0 NULL\nfix integ all nve/sphere\nfix 2d all enforce2d\ntimestep 1e-5\n"
+     + "create_atoms 1 single 0.02 0.01 0\ncreate_atoms 2 single 0.01 0.01 0\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g=1, data={"dim.in": "dimension 2\n"})
+deck("V35_dimension2_plain_control", "# control of V34: dimension 2 written plainly\n"
+     + "units si\ndimension 2\natom_style sphere 1\nboundary p f p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.1 -0.001 0.001 units box\ncreate_box 2 box\n"
+     + m.G1(HK) + "fix grav all gravity 9.81 vector 0 -1 0\nfix floor all wall/gran granular " + HK + " yplane 0 NULL\nfix integ all nve/sphere\nfix 2d all enforce2d\ntimestep 1e-5\n"
+     + "create_atoms 1 single 0.02 0.01 0\ncreate_atoms 2 single 0.01 0.01 0\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n", g=1)
+rr("V36_if_include_exclude", "if 1 then include ex.in (neigh_modify exclude type 1 2): the 1 2 pair cannot meet", "if 1 then \"include ex.in\"\nrun 100\n", data={"ex.in": "neigh_modify exclude type 1 2\n"})
+rr("V37_if_include_viscous", "if 1 then include vis.in (fix vis all viscous 0.001): a drag during every contact", "if 1 then \"include vis.in\"\nrun 100\n", data={"vis.in": "fix vis all viscous 0.001\n"})
+rr("V38_viscous_plain_control", "control of V37: fix vis all viscous 0.001 written plainly", "fix vis all viscous 0.001\nrun 100\n")
+
 
 def write(name):
     m.write(name)
