@@ -7,11 +7,11 @@ T = [
   "referee_all.log, uref.log, vref.log; abs(audit - engine) <= 2e-5; U decks in their own units; curved walls by "
   "wcprobe24, wcref.log; LIGGGHTS: lprobe24 at dt 1e-7 s, lref.log, within its step error 9e-5)",
   "H04 H05 H07 H09 H10 K02 N01 N02 N03 N06 N07 N08 N09 N13 R01 R03 R05 R07 R10 R11 R13 R15 R16 R17 R19 R21 R23 R28 R29 "
-  "R30 S01 S03 S11 V08 V09 V14 V38 W01 W02 W03 W05 U01 U02 U03 U04 U05 U08 E01 E03 E05 E08 E09 N11 N14 R26 R27 U06 W06"),
+  "R30 S01 S03 S11 V08 V09 V14 V38 V40 V41 W01 W02 W03 W05 U01 U02 U03 U04 U05 U08 E01 E03 E05 E08 E09 N11 N14 R26 R27 U06 W06 U12"),
  ("correct otherwise (rows = the base law's engine-checked values for the sizes the engine holds: N05 N12 (2 2 = "
   "4 on 6 mm, 0.414918), S06 S12 S13 S14 V02-V06 V11 V15 V17 V24 V27 V30 V35 W04 B02 (special_bonds lj 1 1 1: the bonded pair meets); E02 E06 LIGGGHTS typed e "
-  "with the lost type's rows gone; U07: engine still in contact after 0.03 s = audit 'sticks'; V34 = V35)",
-  "N05 N12 S06 S12 S13 S14 V02 V03 V04 V06 V11 V15 V17 V24 V27 V30 V34 V35 W04 B02 E02 E06 U07"),
+  "with the lost type's rows gone; U07: engine still in contact after 0.03 s = audit 'sticks'; U11 LIGGGHTS cgs sticks, LIGGGHTS 1e-4 after 2 ms; V34 = V35; N15-N17 a deposit, pour or create_atoms of a type 2 template: not lone, base rows)",
+  "N05 N12 S06 S12 S13 S14 V02 V03 V04 V06 V11 V15 V17 V24 V27 V30 V34 V35 W04 B02 E02 E06 U07 U11 N15 N16 N17"),
  ("effect named fairly (a note names the cause: runs too long to make, S03-like: S04 E04 E07 H14; neighbor lists "
   "rebuilt blind, K01 'found late'; thermostats T01 T02 T03 T07, T05 fix momentum on walls; pairs left out with their "
   "reason: T04 nve/noforce, B01 B03 bonded atoms, G01 rigid body (over-broad: type 2, in no body, also left out))",
@@ -38,8 +38,8 @@ T = [
   "time-step note at dt 1e-5 for a deck whose timestep 1e-4 is in an if's include (V26: engine at 1e-4 0.385627)",
   "U10 V26"),
  ("false refusal: `stop $(step+100)` after a run expanded at step 0 (R22); pair_style restored by read_restart (V33, "
-  "V31 in an if); pair_style only in an if's include (V28); soft halt then `clear` and a new simulation (H19)",
-  "R22 V28 V31 V33 H19"),
+  "V31 in an if); pair_style only in an if's include (V28) and in the common `if \"${restart} == 1\" then \"read_restart ...\" else \"include init.in\"` (V39); soft halt then `clear` and a new simulation (H19)",
+  "R22 V28 V31 V33 V39 H19"),
  ("avoidable refusal: `run 100 every 50 \"variable x equal 1\"` (a command that changes no contact)", "R24"),
  ("answered where the engine stops inside the run being audited (mild, the run's own settings): S05 (sphere thrown "
   "out in the only run), N10 (deposited default-size atoms lost: Lost atoms)", "S05 N10"),

@@ -349,6 +349,33 @@ rr("V36_if_include_exclude", "if 1 then include ex.in (neigh_modify exclude type
 rr("V37_if_include_viscous", "if 1 then include vis.in (fix vis all viscous 0.001): a drag during every contact", "if 1 then \"include vis.in\"\nrun 100\n", data={"vis.in": "fix vis all viscous 0.001\n"})
 rr("V38_viscous_plain_control", "control of V37: fix vis all viscous 0.001 written plainly", "fix vis all viscous 0.001\nrun 100\n")
 
+INIT = {"init.in": "region box block 0 0.04 0 0.04 0 0.1 units box\ncreate_box 2 box\n" + m.G1(HK).replace("hooke 2000", "hooke 5000") + TWO}
+deck("V39_restart_or_init_pattern", "# the common pattern: variable restart index 0; if restart then read_restart else include init.in (box, pair_style kn 5000, atoms)\n"
+     + RHEAD + "variable restart index 0\nif \"${restart} == 1\" then \"read_restart base.restart\" else \"include init.in\"\n" + m.GRAV
+     + "fix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\n" + m.TAIL + "run 100\n", g=1, data=INIT)
+PREP["V39_restart_or_init_pattern"] = rp
+
+rr("V40_if_ampersand_lines", "if 1 then & over lines, two quoted commands: variable and pair_coeff kn 5000", "if 1 then &\n  \"variable k equal 5000\" &\n  \"pair_coeff * * hooke ${k} 3000 " + K + "\"\nrun 100\n")
+rr("V41_if_triple_quotes", "if 1 then \"\"\"...\"\"\" (a triple-quoted command: pair_coeff kn 5000)", "if 1 then \"\"\"pair_coeff * * " + hk(5000) + "\"\"\"\nrun 100\n")
+
+MOL2 = {"m2.mol": m.MOL(2, 0.006, m.mass(0.006, 2500))}
+rr("N15_lone_deposit_mol", "one type 2 sphere (6 mm) + fix deposit of a one-sphere type 2 template (6 mm, 2500): not lone",
+   "molecule m2 m2.mol\nregion ins block 0.005 0.035 0.005 0.035 0.05 0.08 units box\nfix dep all deposit 3 0 20 4711 region ins near 0.01 mol m2 vz -1 -1\nrun 200\n", data=MOL2)
+rr("N16_lone_pour_mol", "one type 2 sphere (6 mm) + fix pour of a one-sphere type 2 template: not lone",
+   "molecule m2 m2.mol\nregion ins block 0.005 0.035 0.005 0.035 0.05 0.08 units box\nfix p all pour 3 0 4711 region ins mol m2\nrun 200\n", data=MOL2)
+rr("N17_lone_create_mol", "one type 2 sphere + create_atoms 0 single ... mol m2 (a second type 2 sphere from a template): not lone",
+   "molecule m2 m2.mol\ncreate_atoms 0 single 0.03 0.03 0.01 mol m2 1234\nrun 100\n", data=MOL2)
+
+HScgs = m.HS.replace("2000 2000 2000 2000 2000 2000 2000 2000 2000", "2e6 2e6 2e6 2e6 2e6 2e6 2e6 2e6 2e6").replace("500 500 500 500 500 500 500 500 500", "5e5 5e5 5e5 5e5 5e5 5e5 5e5 5e5 5e5")
+L("U11_liggghts_cgs_stiffness", "# LIGGGHTS units cgs, hooke/stiffness kn 2e6 dyne/cm gamman 5e5 g/s (= the SI 2000 N/m, 500 kg/s): eps depends on masses; speeds in cm/s\n"
+  + m.lhead(units="cgs", box="-5 5 -5 5 -1 15") + m.MAT3.replace("5e6", "5e7") + HScgs
+  + "create_atoms 1 single 1 0 1 units box\ncreate_atoms 2 single -1 0 1 units box\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 1.5\ntimestep 1e-5\nfix gravi all gravity 981 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 1000\n", g=100)
+
+HScgs2 = m.HS.replace("2000 2000 2000 2000 2000 2000 2000 2000 2000", "2e6 2e6 2e6 2e6 2e6 2e6 2e6 2e6 2e6")
+L("U12_liggghts_cgs_stiffness_gamma", "# U11 with gamman 500 left as in SI (LIGGGHTS hooke/stiffness gamman is per mass: 1/s): eps as E08's in SI; speeds in cm/s\n"
+  + m.lhead(units="cgs", box="-5 5 -5 5 -1 15") + m.MAT3.replace("5e6", "5e7") + HScgs2
+  + "create_atoms 1 single 1 0 1 units box\ncreate_atoms 2 single -1 0 1 units box\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 1.5\ntimestep 1e-5\nfix gravi all gravity 981 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 1000\n", g=100)
+
 
 def write(name):
     m.write(name)
