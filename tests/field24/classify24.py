@@ -27,6 +27,7 @@ T = [
   "box with no f face and no fix halt: no run is made for real; the later stage is answered", "S16 S17 S18 S20"),
  ("SILENTLY WRONG S/H under --run-budget 0: a sphere lost (S21 = r22), a hard (H17) or soft (H16) halt: rc 0, the "
   "later stage's rows, no note (the budget's own note appears only where a budget runs out)", "S21 H16 H17"),
+ ("SILENTLY WRONG S: the f face of a box read_restart restores (no boundary command in the deck): a sphere lost in run 1, LAMMPS stops; the later stage answered, no note", "S25"),
  ("SILENTLY WRONG R: after read_restart (step 1000) `run 500 upto` / `run 100 start 1500 stop 2000`: LAMMPS stops; "
   "the audit checks them against step 0 and answers", "R06 R08"),
  ("SILENTLY WRONG V: commands of a file an include or jump inside an if's quoted commands opens are not read: "
@@ -38,8 +39,8 @@ T = [
   "time-step note at dt 1e-5 for a deck whose timestep 1e-4 is in an if's include (V26: engine at 1e-4 0.385627)",
   "U10 V26"),
  ("false refusal: `stop $(step+100)` after a run expanded at step 0 (R22); pair_style restored by read_restart (V33, "
-  "V31 in an if); pair_style only in an if's include (V28) and in the common `if \"${restart} == 1\" then \"read_restart ...\" else \"include init.in\"` (V39); soft halt then `clear` and a new simulation (H19)",
-  "R22 V28 V31 V33 V39 H19"),
+  "V31 in an if); pair_style only in an if's include (V28) and in the common `if \"${restart} == 1\" then \"read_restart ...\" else \"include init.in\"` (V39); soft halt then `clear` and a new simulation (H19); `run 50 start 0 stop 120` / `run 80 upto` after a run a halt with error continue ended at step 60 (R31, R32: the audit takes step 100)",
+  "R22 V28 V31 V33 V39 H19 R31 R32"),
  ("avoidable refusal: `run 100 every 50 \"variable x equal 1\"` (a command that changes no contact)", "R24"),
  ("answered where the engine stops inside the run being audited (mild, the run's own settings): S05 (sphere thrown "
   "out in the only run), N10 (deposited default-size atoms lost: Lost atoms)", "S05 N10"),

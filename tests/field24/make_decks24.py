@@ -376,6 +376,16 @@ L("U12_liggghts_cgs_stiffness_gamma", "# U11 with gamman 500 left as in SI (LIGG
   + m.lhead(units="cgs", box="-5 5 -5 5 -1 15") + m.MAT3.replace("5e6", "5e7") + HScgs2
   + "create_atoms 1 single 1 0 1 units box\ncreate_atoms 2 single -1 0 1 units box\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 1.5\ntimestep 1e-5\nfix gravi all gravity 981 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 1000\n", g=100)
 
+deck("S25_restart_f_face_thrown", "# no boundary command: read_restart base.restart restores the p p f box; pair_style again; the type 2 sphere thrown up: Lost atoms in run 1; kn 5000 after\n"
+     + "read_restart base.restart\ncomm_modify vel yes\npair_style granular\npair_coeff * * " + HK + "\n" + m.GRAV + m.FLOOR + m.TAIL
+     + "group t2 type 2\nvelocity t2 set 0 0 200\nrun 1000\n" + K5 + "run 100\n", g=1)
+PREP["S25_restart_f_face_thrown"] = rp
+CONT = "variable t equal time\nfix h all halt 10 v_t > 0.0005 error continue\nrun 100\nunfix h\n"
+rr("R31_continue_then_stop_legal", "fix halt error continue ends run 1 at step 60; kn 5000; run 50 start 0 stop 120 (LAMMPS: 60 -> 110, legal)",
+   CONT + K5 + "run 50 start 0 stop 120\nprint \"PROBE step $(step)\"\n")
+rr("R32_continue_then_upto_legal", "halt continue at step 60; kn 5000; run 80 upto (LAMMPS: 60 -> 80, legal)",
+   CONT + K5 + "run 80 upto\nprint \"PROBE step $(step)\"\n")
+
 
 def write(name):
     m.write(name)
