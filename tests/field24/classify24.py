@@ -38,10 +38,10 @@ T = [
  ("WRONG note, V: the speed unit said (lj) for a cgs deck whose units line is in an if's include (U10, eps right); the "
   "time-step note at dt 1e-5 for a deck whose timestep 1e-4 is in an if's include (V26: engine at 1e-4 0.385627)",
   "U10 V26"),
- ("false refusal: `stop $(step+100)` after a run expanded at step 0 (R22); pair_style restored by read_restart (V33, "
-  "V31 in an if); pair_style only in an if's include (V28) and in the common `if \"${restart} == 1\" then \"read_restart ...\" else \"include init.in\"` (V39); soft halt then `clear` and a new simulation (H19); `run 50 start 0 stop 120` / `run 80 upto` after a run a halt with error continue ended at step 60 (R31, R32: the audit takes step 100)",
-  "R22 V28 V31 V33 V39 H19 R31 R32"),
- ("avoidable refusal: `run 100 every 50 \"variable x equal 1\"` (a command that changes no contact)", "R24"),
+ ("false refusal ('LAMMPS stops here / in this run' where LAMMPS runs the deck): `stop $(step+100)` after a run expanded at step 0 (R22); a soft halt, then `clear` and a new simulation (H19); `run 50 start 0 stop 120` / `run 80 upto` after a run a halt with error continue ended at step 60 (R31, R32: the audit takes step 100)",
+  "R22 H19 R31 R32"),
+ ("avoidable refusal (the engine runs the deck, the contact is mapped): the pair_style restored by read_restart, pair_coeff given after it (V33; V31 the read_restart in an if); pair_style only in an if's include (V28) and in the common `if \"${restart} == 1\" then \"read_restart ...\" else \"include init.in\"` (V39); LIGGGHTS read_restart of a given file with the contact fully re-specified after it (E10); `run 100 every 50 \"variable x equal 1\"`, a command that changes no contact (R24)",
+  "V33 V31 V28 V39 E10 R24"),
  ("answered where the engine stops inside the run being audited (mild, the run's own settings): S05 (sphere thrown "
   "out in the only run), N10 (deposited default-size atoms lost: Lost atoms)", "S05 N10"),
 ]

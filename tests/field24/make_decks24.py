@@ -386,6 +386,12 @@ rr("R31_continue_then_stop_legal", "fix halt error continue ends run 1 at step 6
 rr("R32_continue_then_upto_legal", "halt continue at step 60; kn 5000; run 80 upto (LAMMPS: 60 -> 80, legal)",
    CONT + K5 + "run 80 upto\nprint \"PROBE step $(step)\"\n")
 
+LPREP = {}  # folder -> LIGGGHTS deck run in it before the round (writes the restart file the deck reads)
+lrp = (m.lhead() + m.MAT3 + m.HS + m.ATOMS + "create_atoms 2 single -0.03 0 0.01 units box\nset atom 3 diameter 0.010 density 1500\n" + m.LRUN + "run 100\nwrite_restart lbase.restart\n")
+L("E10_liggghts_restart_f_lost", "# LIGGGHTS: read_restart lbase.restart (f f f box, ids 1 type 1 4 mm, 2 type 2 6 mm, 3 type 2 10 mm; no boundary command), id 3 thrown out in run 1 (lost silently), run 100: 1 2 rows over 6 mm only?\n"
+  + "atom_style granular\natom_modify map array\ncommunicate single vel yes\nnewton off\nread_restart lbase.restart\nneighbor 0.002 bin\nneigh_modify delay 0\n" + m.MAT3 + m.HS + m.LRUN + "group up id 3\nvelocity up set 0 0 200\nrun 1000\nrun 100\n")
+LPREP["E10_liggghts_restart_f_lost"] = lrp
+
 
 def write(name):
     m.write(name)
@@ -393,6 +399,10 @@ def write(name):
     if name in PREP:
         open(os.path.join(d, "prep.in"), "w").write(PREP[name])
         subprocess.run(["lmp", "-in", "prep.in", "-log", "none"], cwd=d, capture_output=True)
+        os.remove(os.path.join(d, "prep.in"))
+    if name in LPREP:
+        open(os.path.join(d, "prep.in"), "w").write(LPREP[name])
+        subprocess.run(["liggghts", "-in", "prep.in", "-log", "none"], cwd=d, capture_output=True)
         os.remove(os.path.join(d, "prep.in"))
     args = os.path.join(d, "ARGS")
     if os.path.exists(args):
