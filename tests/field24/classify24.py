@@ -12,13 +12,13 @@ T = [
   "4 on 6 mm, 0.414918), S06 S12 S13 S14 V02-V06 V11 V15 V17 V24 V27 V30 V35 W04 B02 (special_bonds lj 1 1 1: the bonded pair meets); E02 E06 LIGGGHTS typed e "
   "with the lost type's rows gone; U07: engine still in contact after 0.03 s = audit 'sticks'; U11 LIGGGHTS cgs sticks, LIGGGHTS 1e-4 after 2 ms; V34 = V35; N15-N17 a deposit, pour or create_atoms of a type 2 template: not lone, base rows)",
   "N05 N12 S06 S12 S13 S14 V02 V03 V04 V06 V11 V15 V17 V24 V27 V30 V34 V35 W04 B02 E02 E06 U07 U11 N15 N16 N17"),
- ("effect named fairly (a note names the cause: runs too long to make, S03-like: S04 E04 E07 H14; neighbor lists "
+ ("effect named fairly (a note names the cause: runs too long to make, S03-like: S04 E04 E07 H14, S26 (3000 atoms, 300000 steps; audited only, the engine not run); neighbor lists "
   "rebuilt blind, K01 'found late'; thermostats T01 T02 T03 T07, T05 fix momentum on walls; pairs left out with their "
   "reason: T04 nve/noforce, B01 B03 bonded atoms, G01 rigid body (over-broad: type 2, in no body, also left out))",
-  "S04 E04 E07 H14 K01 T01 T02 T03 T05 T07 T04 B01 B03 G01"),
+  "S04 S26 E04 E07 H14 K01 T01 T02 T03 T05 T07 T04 B01 B03 G01"),
  ("fair refusal (the engine itself stops on the deck: Lost atoms S02 S08 S09 S10 S15 S19 S22 S23 S24; halt met H06 "
   "H11 H12 H13 H18; illegal runs R02 R04 R09 R12 R14 R18 R20 R25 V32; G02 G03 N04 S07 T06 V05 V20 at set-up)",
-  "S02 S08 S09 S10 S15 S19 S22 S23 S24 H06 H11 H12 H13 H18 R02 R04 R09 R12 R14 R18 R20 R25 V32 G02 G03 N04 S07 T06 V05 V20"),
+  "R33 S02 S08 S09 S10 S15 S19 S22 S23 S24 H06 H11 H12 H13 H18 R02 R04 R09 R12 R14 R18 R20 R25 V32 G02 G03 N04 S07 T06 V05 V20"),
  ("SILENTLY WRONG H: fix halt error soft with `message no` (LAMMPS prints no 'condition met' line): LAMMPS makes no "
   "step after it; the audit answers the later run's kn 5000 rows, no note", "H01 H15"),
  ("WRONG next to a note that does not explain it, H: any timer command (timer full, timer timeout off before the halt, "
@@ -33,8 +33,8 @@ T = [
  ("SILENTLY WRONG V: commands of a file an include or jump inside an if's quoted commands opens are not read: "
   "pair_coeff (V01 V07 V10 V12 V13 V16 V18 V23), the stage's run in it (V22), a jump (V21), a wall (V19), a soft halt "
   "(V25), units metal (U09: eps 0.99993 for 0.997257), neigh_modify exclude (V36: a row for a pair that never meets), "
-  "fix viscous (V37: 0.414916 for 0.413598), the only wall (V29: no wall row)",
-  "V01 V07 V10 V12 V13 V16 V18 V19 V21 V22 V23 V25 U09 V29 V36 V37"),
+  "fix viscous (V37: 0.414916 for 0.413598), the only wall (V29: no wall row); LIGGGHTS `if 1 then \"jump e.in\"` (V42: e 0.5 for 0.29998)",
+  "V01 V07 V10 V12 V13 V16 V18 V19 V21 V22 V23 V25 U09 V29 V36 V37 V42"),
  ("WRONG note, V: the speed unit said (lj) for a cgs deck whose units line is in an if's include (U10, eps right); the "
   "time-step note at dt 1e-5 for a deck whose timestep 1e-4 is in an if's include (V26: engine at 1e-4 0.385627)",
   "U10 V26"),

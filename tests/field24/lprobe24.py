@@ -27,8 +27,9 @@ run 20000
 variable f24e equal (vx[2]-vx[1])/{g}
 print "LPROBE24 eps ${{f24e}}"
 """
-txt = open(os.path.join(tmp, deck), newline="", encoding="latin-1").read()
-open(os.path.join(tmp, deck), "w", newline="", encoding="latin-1").write(txt + tail)
+target = os.environ.get("PROBE_FILE", deck)  # where the deck ends: a file it jumps to
+txt = open(os.path.join(tmp, target), newline="", encoding="latin-1").read()
+open(os.path.join(tmp, target), "w", newline="", encoding="latin-1").write(txt + tail)
 p = subprocess.run(["liggghts", "-in", deck, "-log", "none"], cwd=tmp, capture_output=True, text=True, errors="replace")
 print(os.path.basename(d.rstrip("/")), t1, t2, *[l for l in p.stdout.splitlines() if l.startswith("LPROBE24") or "ERROR" in l][:3])
 shutil.rmtree(top)

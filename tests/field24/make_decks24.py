@@ -392,6 +392,12 @@ L("E10_liggghts_restart_f_lost", "# LIGGGHTS: read_restart lbase.restart (f f f 
   + "atom_style granular\natom_modify map array\ncommunicate single vel yes\nnewton off\nread_restart lbase.restart\nneighbor 0.002 bin\nneigh_modify delay 0\n" + m.MAT3 + m.HS + m.LRUN + "group up id 3\nvelocity up set 0 0 200\nrun 1000\nrun 100\n")
 LPREP["E10_liggghts_restart_f_lost"] = lrp
 
+deck("S26_many_atoms_over_budget", "# S12 with runs of 300000 steps (more than the 60 s budget of runs made for real): what is said? (audited only; the engine not run: minutes)\n"
+     + m.head(2, bnd="p p f", box="0 0.1 0 0.1 0 0.2") + m.G1(HK) + m.GRAV + m.FLOOR + m.TAIL
+     + "lattice sc 0.0065\nregion fill block 0 0.1 0 0.1 0.005 0.05 units box\ncreate_atoms 1 region fill\nregion half block 0 0.05 INF INF INF INF units box\nset region half type 2\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 300000\n" + K5 + "run 100\n", g=1)
+L("V42_liggghts_if_jump", "# LIGGGHTS: if 1 then jump e.in (e.in: e 0.3 for all pairs, run 100; the deck's lines after never run)\n" + m.LB() + m.ATOMS + m.LRUN + "if 1 then \"jump e.in\"\n" + m.E3b(0.9) + "run 100\n", data={"e.in": m.E3b(0.3) + "run 100\n"})
+rr("R33_every_include", "run 100 every 50 \"include kn.in\" (kn 5000 in it: changes the contact from the second part on; deliberate refusal)", "run 100 every 50 \"include kn.in\"\n", data=KN)
+
 
 def write(name):
     m.write(name)
