@@ -7,7 +7,7 @@ T = [
   "referee_all.log, uref.log, vref.log; abs(audit - engine) <= 2e-5; U decks in their own units; curved walls by "
   "wcprobe24, wcref.log; LIGGGHTS: lprobe24 at dt 1e-7 s, lref.log, within its step error 9e-5)",
   "H04 H05 H07 H09 H10 K02 N01 N02 N03 N06 N07 N08 N09 N13 R01 R03 R05 R07 R10 R11 R13 R15 R16 R17 R19 R21 R23 R28 R29 "
-  "R30 S01 S03 S11 V08 V09 V14 V38 V40 V41 W01 W02 W03 W05 U01 U02 U03 U04 U05 U08 E01 E03 E05 E08 E09 N11 N14 R26 R27 U06 W06 U12"),
+  "R30 S01 S03 S11 V08 V09 V14 V38 V40 V41 U13 W01 W02 W03 W05 U01 U02 U03 U04 U05 U08 E01 E03 E05 E08 E09 N11 N14 R26 R27 U06 W06 U12"),
  ("correct otherwise (rows = the base law's engine-checked values for the sizes the engine holds: N05 N12 (2 2 = "
   "4 on 6 mm, 0.414918), S06 S12 S13 S14 V02-V06 V11 V15 V17 V24 V27 V30 V35 W04 B02 (special_bonds lj 1 1 1: the bonded pair meets); E02 E06 LIGGGHTS typed e "
   "with the lost type's rows gone; U07: engine still in contact after 0.03 s = audit 'sticks'; U11 LIGGGHTS cgs sticks, LIGGGHTS 1e-4 after 2 ms; V34 = V35; N15-N17 a deposit, pour or create_atoms of a type 2 template: not lone, base rows)",

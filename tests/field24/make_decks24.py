@@ -398,6 +398,11 @@ deck("S26_many_atoms_over_budget", "# S12 with runs of 300000 steps (more than t
 L("V42_liggghts_if_jump", "# LIGGGHTS: if 1 then jump e.in (e.in: e 0.3 for all pairs, run 100; the deck's lines after never run)\n" + m.LB() + m.ATOMS + m.LRUN + "if 1 then \"jump e.in\"\n" + m.E3b(0.9) + "run 100\n", data={"e.in": m.E3b(0.3) + "run 100\n"})
 rr("R33_every_include", "run 100 every 50 \"include kn.in\" (kn 5000 in it: changes the contact from the second part on; deliberate refusal)", "run 100 every 50 \"include kn.in\"\n", data=KN)
 
+U04m = HMu("1e4", "1e-3")
+deck("U13_metal_from_restart", "# units metal restored by read_restart (no units line; the LAMMPS manual: units is in the restart file), pair_style and pair_coeff re-given: hertz/material as U04\n"
+     + "read_restart metal.restart\ncomm_modify vel yes\npair_style granular\npair_coeff * * " + U04m + "\nfix floor all wall/gran granular " + U04m + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-3\nrun 100\n", g=1)
+PREP["U13_metal_from_restart"] = U04.replace("run 100\n", "run 10\nwrite_restart metal.restart\n")
+
 
 def write(name):
     m.write(name)
