@@ -33,13 +33,13 @@ T = [
  ("SILENTLY WRONG V: commands of a file an include or jump inside an if's quoted commands opens are not read: "
   "pair_coeff (V01 V07 V10 V12 V13 V16 V18 V23), the stage's run in it (V22), a jump (V21), a wall (V19), a soft halt "
   "(V25), units metal (U09: eps 0.99993 for 0.997257), neigh_modify exclude (V36: a row for a pair that never meets), "
-  "fix viscous (V37: 0.414916 for 0.413598), the only wall (V29: no wall row); LIGGGHTS `if 1 then \"jump e.in\"` (V42: e 0.5 for 0.29998)",
-  "V01 V07 V10 V12 V13 V16 V18 V19 V21 V22 V23 V25 U09 V29 V36 V37 V42"),
+  "fix viscous (V37: 0.414916 for 0.413598), the only wall (V29: no wall row); LIGGGHTS `if 1 then \"jump e.in\"` (V42: e 0.5 for 0.29998); `boundary p p f` (S27: a sphere lost in run 1, LAMMPS stops, the kn 5000 stage answered)",
+  "V01 V07 V10 V12 V13 V16 V18 V19 V21 V22 V23 V25 U09 V29 V36 V37 V42 S27"),
  ("WRONG note, V: the speed unit said (lj) for a cgs deck whose units line is in an if's include (U10, eps right); the "
   "time-step note at dt 1e-5 for a deck whose timestep 1e-4 is in an if's include (V26: engine at 1e-4 0.385627)",
   "U10 V26"),
- ("false refusal ('LAMMPS stops here / in this run' where LAMMPS runs the deck): `stop $(step+100)` after a run expanded at step 0 (R22); a soft halt, then `clear` and a new simulation (H19); `run 50 start 0 stop 120` / `run 80 upto` after a run a halt with error continue ended at step 60 (R31, R32: the audit takes step 100)",
-  "R22 H19 R31 R32"),
+ ("false refusal ('LAMMPS stops here / in this run' where LAMMPS runs the deck): `stop $(step+100)` after a run expanded at step 0 (R22); a soft halt, then `clear` and a new simulation (H19); `run 50 start 0 stop 120` / `run 80 upto` after a run a halt with error continue ended at step 60 (R31, R32: the audit takes step 100); `run 2000000 upto` after a `timer timeout 0:00:01` ended a 3e6-step run at step 1885700 (R34)",
+  "R22 H19 R31 R32 R34"),
  ("avoidable refusal (the engine runs the deck, the contact is mapped): the pair_style restored by read_restart, pair_coeff given after it (V33; V31 the read_restart in an if); pair_style only in an if's include (V28) and in the common `if \"${restart} == 1\" then \"read_restart ...\" else \"include init.in\"` (V39); LIGGGHTS read_restart of a given file with the contact fully re-specified after it (E10); `run 100 every 50 \"variable x equal 1\"`, a command that changes no contact (R24)",
   "V33 V31 V28 V39 E10 R24"),
  ("answered where the engine stops inside the run being audited (mild, the run's own settings): S05 (sphere thrown "

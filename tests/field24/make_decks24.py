@@ -403,6 +403,12 @@ deck("U13_metal_from_restart", "# units metal restored by read_restart (no units
      + "read_restart metal.restart\ncomm_modify vel yes\npair_style granular\npair_coeff * * " + U04m + "\nfix floor all wall/gran granular " + U04m + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-3\nrun 100\n", g=1)
 PREP["U13_metal_from_restart"] = U04.replace("run 100\n", "run 10\nwrite_restart metal.restart\n")
 
+deck("S27_if_include_boundary_lost", "# boundary p p f set in bnd.in, included by an if; the type 2 sphere thrown up: Lost atoms in run 1; kn 5000 after\n"
+     + m.head(2).replace("boundary p p f\n", "if 1 then \"include bnd.in\"\n") + m.G1(HK) + m.GRAV + m.FLOOR + m.TAIL + TWO
+     + "group t2 type 2\nvelocity t2 set 0 0 200\nrun 1000\n" + K5 + "run 100\n", g=1, data={"bnd.in": "boundary p p f\n"})
+rr("R34_timeout_then_upto", "timer timeout 0:00:01 every 100 ends a 3e6-step run early (at step ~1e6 or so); timer timeout off; kn 5000; run 2000000 upto (legal only if the step is below 2e6: engine says)",
+   "timer timeout 0:00:01 every 100\nrun 3000000\ntimer timeout off\n" + K5 + "run 2000000 upto\nprint \"PROBE step $(step)\"\n")
+
 
 def write(name):
     m.write(name)
