@@ -149,8 +149,9 @@ def add_deck_subcommand(subparsers) -> None:
         help="where the deck reads, after a run, what its runs change (a set or group by region or by an atom-style "
              "variable of positions, a count after a pour, the step, an energy), its engine makes its runs for real (at "
              "most %(steps)s steps, outputs not written) within this wall time, and the audit reads the state they "
-             "reach; 0, or a budget that runs out, keeps the runs skipped: such a set is refused and such a stage's "
-             "rows are marked (default: %(default)s)")
+             "reach; where a run is followed by another, they are made to see that the engine ends each (a deck it "
+             "stops in is refused); 0, or a budget that runs out, keeps the runs skipped: such a set is refused, such "
+             "a stage's rows are marked, and an end not seen is said (default: %(default)s)")
     run_budget.steps = _LibraryDefault("restitution.dem.deck", "MAX_RUN_STEPS")
 
 

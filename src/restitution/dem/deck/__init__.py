@@ -600,7 +600,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import PUSHING_FIX_PREFIXES, scratch_copy
-    from .runtime import lost_in_runs, resized_by_runs, stops_in_runs
+    from .runtime import fixed_face, lost_in_runs, resized_by_runs, stops_in_runs
     from .stream import (deck_commands, engine_error, random_drawn, skipped, snapshots, unchecked,
                          written_then_read)
     if engine == "LAMMPS":
@@ -612,7 +612,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     with tempfile.TemporaryDirectory(prefix="restitution-deck-") as tmp:
         root = Path(tmp)
         scratch = scratch_copy(path, root, deck_run.marker(root), confined=confining())
-        if not any(key.split()[0] in ("pair_style", "if") for key in scratch.lines):
+        if not any(key.split()[0] in ("pair_style", "if", "read_restart") for key in scratch.lines):
             raise DeckError("pair_style", None, "the deck has no pair_style granular (LAMMPS) or pair_style gran "
                                                 "(LIGGGHTS) line")
         done, commands = _engine_pass(deck_run, scratch, budget, path.resolve().parent)
@@ -692,7 +692,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         if made is None:
             read = deck_commands(commands, scratch)
             try:
-                deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts), None
+                deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts,
+                                              timed=any(_timeout(e[2]) for e in scratch.skipped if e[0] == "timer")), None
             except DeckError as why:
                 if by_position(read) is None:
                     raise
@@ -704,8 +705,14 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             causes = sorted(needs + stops, key=lambda c: (str(c[0][0] or ""), c[0][1] or 0))
             made = _made_runs(deck_run, scratch, commands, causes, run_budget, path.resolve().parent,
                               done.timed_out and done.looped) if causes else None
+            if stops and not needs and made is None and run_budget <= 0:
+                stop_note = (f"{place(stops[0][0])} {stops[0][1]}: with --run-budget 0 {engine} was not run to "
+                             "see whether it does, so the stages after it hold only if it does")
+            # a timer timeout the audit does not run may end a deck's run early, where the runs
+            # made for real make every step (round 24, R34: a later upto legal in LAMMPS failed)
+            timed = any(_timeout(entry[2]) for entry in scratch.skipped if entry[0] == "timer")
             if made is not None and made[0] is None and made[1] and _STOPPED in made[2] \
-                    and ("ERROR" in made[2] or "fix halt" in made[2]):
+                    and ("ERROR" in made[2] and not timed or "fix halt" in made[2]):
                 # the engine stopped in a run made as the deck makes it (field round 23, r22: "Lost
                 # atoms" in the first run; R11, R12: a fix halt): the stages after it never happen
                 last = next((cmd for cmd in reversed(made[1]) if cmd.stage is not None), made[1][-1])
@@ -713,17 +720,18 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                 raise DeckError(place(last.loc), last.text,
                                 f"{engine} stops in this run, made for real as the deck makes it: {error}; the "
                                 "stages after it are not the deck's: not audited")
-            if made is not None and not needs and (engine == "LAMMPS" or made[0] is None):
+            if made is not None and not needs and (engine == "LAMMPS" or made[0] is None or not fixed_face(commands)):
                 # the runs were made only to see whether LAMMPS ends each of them (it stops where a
                 # sphere leaves a fixed face or a fix halt is met, which the pass cannot show): it
-                # does, and the pass stands as it is; LIGGGHTS, which drops a lost sphere and goes
-                # on, is read from its runs (L37). Where they could not be made, that is said.
+                # does, and the pass stands as it is; LIGGGHTS, which drops a sphere lost through a
+                # fixed face and goes on, is read from its runs (L37). Where they could not be made,
+                # that is said.
                 unchecked = made[0] is None
                 made = None
                 if unchecked:
-                    stop_note = (f"{place(stops[0][0])} {stops[0][1]}: {engine} was not run to see whether it "
-                                 "does (the audit's limits on runs made for real), so the stages after it hold "
-                                 "only if it does")
+                    stop_note = (f"{place(stops[0][0])} {stops[0][1]}: {engine} was not seen to (the audit's "
+                                 "limits on runs made for real, or a timer the audit does not run, which may end "
+                                 "a run early: round 24, R34), so the stages after it hold only if it does")
         if made is not None and made[0] is not None:
             done, commands, said = made
             atoms = snapshots(done.atoms) + snapshots(done.at_end)
@@ -953,6 +961,18 @@ _STOPPED = "making its runs for real stopped: "
 _SOFT_HALT = re.compile(r"Fix halt condition for fix-id (\S+) met on step \d+")
 
 
+def _timeout(timer: str) -> bool:
+    """Whether a ``timer`` command sets a timeout that may end a run (any but ``off``).
+
+    Examples
+    --------
+    >>> _timeout("timer timeout 0:00:01 every 100"), _timeout("timer timeout off"), _timeout("timer full")
+    (True, False, False)
+    """
+    words = timer.split()
+    return "timeout" in words[:-1] and words[words.index("timeout") + 1] != "off"
+
+
 def _soft(commands: list, fix: str) -> bool:
     """Whether the last ``fix`` of ID ``fix`` among the commands run is a halt with error soft (not
     continue, whose message is the same and which goes on as if nothing happened: round 23, R18)."""
@@ -977,7 +997,7 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
     The deck's outputs are suppressed as in the first pass; each run's marker writes the atoms
     where the run left them, the atoms the run's pours made among them, so a set by position, a
     count after a pour or a step read afterwards are the engine's own."""
-    from .scratch import remark
+    from .scratch import NOOP, remark
     if budget <= 0 or not getattr(deck_run, "MAKES_RUNS", False):
         return None
     shown = "; ".join(f"{place(loc)} {text.strip()}" for loc, text in causes[:2]) + (
@@ -1012,12 +1032,17 @@ def _made_runs(deck_run, scratch, commands: list, causes: list, budget: float, f
                         "runs are the deck's own, its outputs aside, so the deck does not run in this engine: "
                         "not audited")
     halted = _SOFT_HALT.search(done.echo or "")
-    if not done.error and halted and _soft(made, halted.group(1)) \
-            and re.search(r"^\s*(run|rerun)\b", done.echo[halted.end():], re.M) \
-            and not any(entry[0] == "timer" for entry in scratch.skipped):
+    after = done.echo[halted.end():] if halted else ""
+    # a clear after it makes a new timer (round 24, H19: a new simulation that LAMMPS runs)
+    cleared = re.search(r"^\s*clear\b", after, re.M)
+    after = after[:cleared.start()] if cleared else after
+    if not done.error and halted and _soft(made, halted.group(1)) and re.search(r"^\s*(run|rerun)\b", after, re.M) \
+            and not any(entry[0] == "timer" and "timeout" in entry[2].split()
+                        and re.search(re.escape(NOOP.format(k)) + r"\b", after) for k, entry in enumerate(scratch.skipped)):
         # a soft halt met: LAMMPS forces its timer out, and every run after it makes no step until
-        # a timer command resets it (field round 23, R12, R17: the later runs' settings never
-        # acted); a deck with a timer command (which the pass never runs, R16) is left as it was
+        # a timer timeout resets it (field round 23, R12, R17: the later runs' settings never
+        # acted); a deck whose timer timeout comes after it (never run by the pass, R16) is left as
+        # it was; any other timer command resets nothing (round 24, H02, H03, H08)
         return None, made, (f"{what}; {deck_run.ENGINE} {_STOPPED}{halted.group(0)} (fix halt, error soft): "
                             f"it makes no step in any run after it: its runs {cut}, as said")
     if done.error:

@@ -117,7 +117,7 @@ _INSERTING_FIXES = {"pour", "deposit", "insert/pack", "insert/stream", "insert/r
 
 
 def read_executed(commands, atoms: list, radius: dict | None = None, density: dict | None = None,
-                  read_file=None, restarts: list | None = None, ran: bool = False) -> Deck:
+                  read_file=None, restarts: list | None = None, ran: bool = False, timed: bool = False) -> Deck:
     """The settings of a deck from the commands its engine ran (:mod:`restitution.dem.deck.stream`):
     no control flow here, the engine's own; the atoms each run saw as the engine held them.
 
@@ -142,6 +142,9 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         Whether the engine made the runs (its markers wrote the atoms where each run left them,
         those its pours and deposits made included): a command after a run may then pick atoms by
         position, and no inserting fix's sizes are modelled (:attr:`Deck.ran`).
+    timed : bool
+        Whether the deck sets a timer (which the pass never runs), whose timeout may end a run before
+        its last step: the steps the runs reach are then not known.
 
     Returns
     -------
@@ -183,6 +186,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     made: dict = {}                # type -> the sizes of the atoms LAMMPS pours made in the runs so far
     written: dict = {}             # restart file -> the settings at its write_restart (restart_state)
     data_written: dict = {}        # data file a write_data wrote -> whether pours had made atoms by then
+    halting = timed                # a fix halt defined (a timer set): the step the runs reach is not known
     infos = iter(restarts or ())
     pending: list = []
     moved_since = False            # a run has gone: the atoms are where it left them, never the pass
@@ -231,7 +235,17 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                                                       "lacks them: not audited")
         if not split or split[0] in _ENGINE_ONLY:
             continue
+        halting = halting or split[0] == "fix" and len(split) > 3 and split[3] == "halt"
         if split[0] == "run":
+            # a value substituted in the run line was the pass's (its runs skipped), not the one at
+            # the step the deck's runs reach (field round 24, R22: stop $(step+100) after a run):
+            # its step checks are left out there
+            # nor after a fix halt, which may end a run before its last step (round 24, R31, R32)
+            step = None if halting or "$" in (cmd.written or "") and not deck.ran else deck.step
+            if (stop := run_refused(split, step, deck.code)) is not None:
+                raise DeckError(place(cmd.loc), cmd.text, f"{deck.code} stops here: {stop}")
+            if halting:
+                deck.step = None     # R32: run 80 upto after a halt at step 60 makes 20 steps
             deposited_ran |= {t for t, fix in deck.deposits.items() if fix is not None}
             starting = started(deck, split)
             if starting:
@@ -377,7 +391,7 @@ def restart_state(deck: Deck, made: dict, deposited: set) -> tuple:
 
 def _restart_info(info: str) -> dict:
     """What LAMMPS' ``info system coeffs groups`` says it holds: units, atom style, number of types,
-    pair style, time step, the pairs whose coefficients are set, the groups."""
+    pair style, time step and step number, the pairs whose coefficients are set, the groups."""
     found: dict = {"set": set(), "unset": set(), "groups": set()}
     for line in info.splitlines():
         if m := re.match(r"Units\s*=\s*(\S+)", line):
@@ -388,6 +402,8 @@ def _restart_info(info: str) -> dict:
             found["ntypes"], found["pair_style"] = int(m.group(1)), m.group(2)
         elif m := re.match(r"Current timestep size\s*=\s*(\S+)", line):
             found["dt"] = float(m.group(1))
+        elif m := re.match(r"Current timestep number\s*=\s*(\d+)", line):
+            found["step"] = int(m.group(1))
         elif m := re.match(r"\s*(\d+)\s+(\d+):\s*is (not )?set", line):
             found["unset" if m.group(3) else "set"].add((int(m.group(1)), int(m.group(2))))
         elif m := re.match(r"Group\[\s*\d+\]:\s*(\S+)", line):
@@ -454,8 +470,13 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
         deck.__dict__.update(fresh.__dict__)
         deck.units, deck.atom_style, deck.ntypes, deck.dt = held.get("units"), held.get("atom_style"), \
             held["ntypes"], held["dt"]
-        # the file's step is not read: unknown (a run's start, stop or upto is then not checked)
-        deck.held, deck.atoms, deck.step = {}, True, None
+        # the file's step, as LAMMPS says it (a run's start, stop or upto is checked against it:
+        # field round 24, R06)
+        deck.held, deck.atoms, deck.step = {}, True, held.get("step")
+        if held.get("pair_style") == "granular":
+            # LAMMPS restores the style (its models come per pair_coeff line), which the deck need not
+            # give again (its manual; field round 24, V33): read as given here
+            _pair_style(deck, ["pair_style", "granular"], where, line, loc)
         if held.get("pair_style", "none") != "none" and held["set"]:
             deck.restart_pairs = (loc, line, held["pair_style"], set(held["set"]))
         return {}
@@ -498,7 +519,7 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     deck.__dict__.update(fresh.__dict__)
     for name, value in copy.deepcopy(state).items():
         setattr(deck, name, value)
-    deck.step = None      # the file's step, which this reading does not follow
+    deck.step = held.get("step")      # the file's step, as LAMMPS says it after the read
     for key in held["unset"]:
         # a sub-style whose coefficients a restart does not store: LAMMPS holds none for the pair
         deck.coeffs.pop(key, None)
@@ -603,8 +624,6 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             deck.present_unknown = True
             _made_after(deck, None, f"{where} ({line})")
     elif cmd == "run":
-        if (stop := run_refused(words, deck.step, deck.code)) is not None:
-            raise DeckError(where, line, f"{deck.code} stops here: {stop}")
         ending = _run_every(words, where, line)
         deck.ended = ending == "quits"
         if _no_step(deck, words):

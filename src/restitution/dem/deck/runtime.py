@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["run_dependent", "resized_by_runs", "lost_in_runs", "stops_in_runs", "constant_in_time", "CLOCK"]
+__all__ = ["run_dependent", "resized_by_runs", "lost_in_runs", "stops_in_runs", "fixed_face", "constant_in_time", "CLOCK"]
 
 #: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
 #: is not one: it formats an equal-style variable when used).
@@ -336,7 +336,9 @@ def lost_in_runs(commands: list) -> list:
 
 def stops_in_runs(commands: list) -> list:
     """The first run after a run in which the engine may have stopped, or lost atoms, where the
-    pass (its runs skipped, or one step long) cannot tell: a box with a fixed (``f``) face, through
+    pass (its runs skipped, or one step long) cannot tell: any run may end on an error in what it
+    evaluates (field round 24, S16: a thermo variable dividing by zero), and in particular a box
+    with a fixed (``f``) face, through
     which a sphere that leaves it is lost (LAMMPS stops, "Lost atoms", under its default
     ``thermo_modify lost error``; LIGGGHTS 3.8.0 drops it and goes on), and a ``fix halt`` whose
     ``error`` is ``hard`` (its default: the engine exits when its condition holds) or ``soft`` (the
@@ -362,7 +364,9 @@ def stops_in_runs(commands: list) -> list:
     ...         Executed((None, 3), "run 100", stage=1)]
     >>> stops_in_runs(cmds)
     [((None, 3), 'run 100, reached only if the run at line 2 keeps every sphere in the box (boundary p p f)')]
-    >>> stops_in_runs([Executed((None, 1), "boundary p p sm")] + cmds[1:])
+    >>> stops_in_runs([Executed((None, 1), "boundary p p sm")] + cmds[1:])[0][1]
+    'run 100, reached only if the run at line 2 ends without an error'
+    >>> stops_in_runs(cmds[1:2])
     []
     >>> halt = Executed((None, 1), "fix h all halt 10 v_t > 0.0005")
     >>> stops_in_runs([halt] + cmds[1:])[0][1]
@@ -382,6 +386,10 @@ def stops_in_runs(commands: list) -> list:
                 last, last_why = cmd.loc, f"does not meet the condition of fix {fix} (halt, error {style})"
             elif boundary is not None:
                 last, last_why = cmd.loc, f"keeps every sphere in the box ({boundary})"
+            else:
+                # anything the run evaluates may stop it (round 24, S16: a thermo variable dividing
+                # by zero at step 50): that the engine ends it is seen only where it is made
+                last, last_why = cmd.loc, "ends without an error"
         elif split[0] == "boundary":
             # only a plain f face loses atoms: p wraps them, s and m (shrink-wrapped) follow them
             boundary = cmd.text.strip() if any(face == "f" for face in _faces(split[1:])) else None
@@ -400,6 +408,30 @@ def stops_in_runs(commands: list) -> list:
                 if style in ("hard", "soft"):
                     halts[split[1]] = style
     return []
+
+
+def fixed_face(commands: list) -> bool:
+    """Whether the box has a fixed (``f``) face at any run, through which a sphere is lost.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> fixed_face([Executed((None, 1), "boundary p p fm"), Executed((None, 2), "run 10", stage=0)])
+    True
+    >>> fixed_face([Executed((None, 1), "boundary p p m"), Executed((None, 2), "run 10", stage=0)])
+    False
+    """
+    boundary = False
+    for cmd in commands:
+        split = cmd.text.split()
+        if cmd.stage is not None and boundary:
+            return True
+        if split[:1] == ["boundary"]:
+            boundary = "f" in _faces(split[1:])
+        elif split[:1] == ["change_box"] and "boundary" in split:
+            k = split.index("boundary")
+            boundary = "f" in _faces(split[k + 1:k + 4])
+    return False
 
 
 def _faces(words: list) -> list:

@@ -32,13 +32,15 @@ class Executed:
     LAMMPS marker skips its set-up check and its dump where its run was checked before,
     :func:`first_unchecked`; None: each marker wrote them); ``restart`` the read_restart marker's
     number where it is one (``text`` the read_restart); ``unset`` whether it is a set that met no
-    atom in the pass (the scratch copy printed it instead of running it)."""
+    atom in the pass (the scratch copy printed it instead of running it); ``written`` a run's text
+    as the deck wrote it, before the engine's substitutions."""
     loc: tuple
     text: str
     stage: int | None = None
     snapshot: bool | None = None
     restart: int | None = None
     unset: bool = False
+    written: str | None = None
 
 
 def _echo_lines(echo: str) -> list[str]:
@@ -149,7 +151,7 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
             stage = int(m.group(1) or m.group(2))
             f, n, run = scratch.stages[stage]
             stage_at = len(out)
-            out.append(Executed((f, n), run, stage, False))
+            out.append(Executed((f, n), run, stage, False, written=run))
             opened = run         # the marker's line of that text, echoed next, is the run itself
             _latest(ifs, (f, n), scratch)
             continue
