@@ -105,14 +105,92 @@ L("I26_liggghts_insert_across_runs", "# LIGGGHTS: insertion of type 2 across two
   "fix ins all insert/pack seed 86028157 distributiontemplate pdd insert_every 2000 overlapcheck yes all_in yes particles_in_region 3 region ins\n"
   + m.ATOMS + m.LRUN + "run 2000\nrun 2000\n" + m.E3b(0.3) + "run 1000\n", g=1)
 
+# ---------------------------------------------------------------- second set (added mid-round)
+rr("M25_run_every_variable", "run 1000 every 100 \"variable x equal $(step)\" (round 24's R24: no contact change)", "run 1000 every 100 \"variable x equal $(step)\"\n" + K5 + "run 100\n")
+rr("M26_loop_break_if", "loop of runs broken by an if jump on pass 3", "variable i loop 10\nlabel l\nrun 100\nif \"$i == 3\" then \"jump SELF done\"\nnext i\njump SELF l\nlabel done\n" + K5 + "run 100\n")
+rr("M27_run_zero_series", "run 0 three times then kn 5000 run 0", "run 0\nrun 0\n" + K5 + "run 0\n")
+rr("M28_deposit_across_runs", "fix deposit of type 2 (diameter set by a molecule-free set after) across runs",
+   "region ins block 0.005 0.035 0.005 0.035 0.06 0.09 units box\nfix dp all deposit 2 2 500 12345 region ins near 0.007 vz -0.1 -0.1\n"
+   "run 1000\nset type 2 diameter 0.006 density 2500\nrun 1000\n" + K5 + "run 100\n")
+rr("M29_run_every_two_cmds", "run 300 every 100 \"print a\" \"variable y equal 2\" then kn 5000", "run 300 every 100 \"print a\" \"variable y equal 2\"\n" + K5 + "run 100\n")
+rr("I27_include_jump_loop", "an if includes a file that loops runs with jump SELF", "if 1 then \"include loop.in\"\n" + K5 + "run 100\n",
+   data={"loop.in": "variable j loop 3\nlabel lj\nrun 100\nnext j\njump SELF lj\n"})
+rr("I28_include_if_pair_coeff", "include a file whose if sets pair_coeff directly", "include a.in\nrun 100\n", data={"a.in": "if 1 then \"" + K5.strip() + "\"\n"})
+rr("I29_if_include_pair_style", "pair_style gran/hooke 5000 ... in an if's include", "if 1 then \"include ps.in\"\nrun 100\n",
+   data={"ps.in": "pair_style gran/hooke 5000 NULL 3000 NULL 0 0\npair_coeff * *\n"})
+rr("I30_if_include_region_wall_region_in_deck", "region in the deck, wall/gran/region kn 8000 in the include", "region cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box\nif 1 then \"include rw.in\"\nrun 100\n",
+   data={"rw.in": "fix rw all wall/gran/region granular " + hk(8000) + " region cyl\n"})
+rr("I31_if_include_run_every", "an if includes a file with run 200 every 100 \"print x\" then kn 5000", "if 1 then \"include re.in\"\n" + K5 + "run 100\n",
+   data={"re.in": "run 200 every 100 \"print x\"\n"})
+rr("I32_if_include_timestep", "timestep 2e-5 in an if's include, then runs", "if 1 then \"include ts.in\"\nrun 100\n", data={"ts.in": "timestep 2e-5\n"})
+
+# ---------------------------------------------------------------- third set
+rr("M30_halt_continue_met", "fix halt error continue met in run 1, later runs go on (kn 5000)", "variable t equal time\nfix h all halt 10 v_t > 0.0005 error continue\nrun 100\nunfix h\n" + K5 + "run 100\n")
+rr("M31_timeout_not_hit", "timer timeout 0:10:00 every 10 over several short runs", "timer timeout 0:10:00 every 10\nrun 200\nrun 200\n" + K5 + "run 200\n")
+rr("M32_ave_histo_correlate", "fix ave/histo and ave/correlate writing files across runs", "compute vz all property/atom vz\nfix hi all ave/histo 10 5 50 -1 1 10 c_vz mode vector file h.txt\nvariable k equal vcm(all,z)\nfix co all ave/correlate 10 5 50 v_k file c.txt\nrun 300\n" + K5 + "run 300\n")
+rr("M33_many_atoms_runs", "300 type 1 spheres of 2 mm in a lattice-free random fill, three runs of 5000 steps", "region fill block 0.002 0.038 0.002 0.038 0.02 0.09 units box\ncreate_atoms 1 random 300 4242 fill overlap 0.0021\nset type 1 diameter 0.004 density 2500\nrun 5000\nrun 5000\n" + K5 + "run 5000\n")
+rr("M34_unfix_integ_between", "no integrator in run 2 (unfix integ), refixed for run 3", "run 100\nunfix integ\nrun 100\nfix integ all nve/sphere\n" + K5 + "run 100\n")
+rr("M35_velocity_create_between", "velocity all create between runs (random, p p f)", "run 100\nvelocity all create 0.0 4928 units box\nvelocity all set 0.1 0.1 0 sum yes units box\n" + K5 + "run 500\n")
+rr("M36_shell_between", "shell echo between runs", "run 100\nshell echo hello\n" + K5 + "run 100\n")
+rr("M37_if_on_state", "an if on the centre-of-mass speed after run 1 (falling spheres: kn 5000, else kn 8000)", "run 300\nvariable v equal vcm(all,z)\nif \"${v} < -0.01\" then \"" + K5.strip() + "\" else \"" + K8.strip() + "\"\nrun 100\n")
+rr("M38_if_on_step", "an if on $(step) after two runs", "run 100\nrun 100\nif \"$(step) >= 200\" then \"" + K8.strip() + "\"\nrun 100\n")
+rr("M39_include_per_pass", "a loop including kn${i}.in on each pass", "variable i loop 2\nlabel l\ninclude kn$i.in\nrun 100\nnext i\njump SELF l\n",
+   data={"kn1.in": K5, "kn2.in": K8})
+rr("M40_delete_overlap_between", "delete_atoms overlap between runs (no overlap: nothing deleted)", "run 100\ndelete_atoms overlap 0.0001 all all\n" + K5 + "run 100\n")
+rr("I33_exclude_then_none", "neigh_modify exclude type 1 2 in an if's include, exclude none in the deck", "if 1 then \"include ex.in\"\nneigh_modify exclude none\nrun 100\n", data={"ex.in": "neigh_modify exclude type 1 2\n"})
+rr("I34_freeze_group_in_include", "fix freeze on type 2 in an if's include", "if 1 then \"include fr.in\"\nrun 100\n", data={"fr.in": "group g2 type 2\nfix fz g2 freeze\n"})
+rr("I35_random_atoms_in_include", "create_atoms random 5 of type 2 (3 mm via set in include) in an if's include", "if 1 then \"include ra.in\"\nrun 100\n",
+   data={"ra.in": "region top block 0.005 0.035 0.005 0.035 0.05 0.09 units box\ncreate_atoms 2 random 5 777 top\nset type 2 diameter 0.003 density 2500\n"})
+rr("I36_restart_or_include", "if \"${restart} == 1\" then \"read_restart x\" else \"include kn.in\" with restart 0", "variable restart index 0\nif \"${restart} == 1\" then \"read_restart x.bin\" else \"include kn.in\"\nrun 100\n", data=KN5)
+rr("I37_if_include_quoted_triple", "if with triple-quoted commands containing include", "if 1 then \"\"\"include kn.in\"\"\"\nrun 100\n", data=KN5)
+rr("I38_if_include_semicolon_like_two", "if 1 then \"include kn.in\" \"pair_coeff 1 1 hooke 8000 ...\"", "if 1 then \"include kn.in\" \"pair_coeff 1 1 " + hk(8000) + "\"\nrun 100\n", data=KN5)
+rr("I39_if_include_group_wall", "a wall on group g1 only (group and wall in the include)", "unfix floor\nif 1 then \"include gw.in\"\nrun 100\n",
+   data={"gw.in": "group g1 type 1\nfix floor g1 wall/gran granular " + hk(5000) + " zplane 0 NULL\n"})
+L("I40_liggghts_plain_include_if_direct", "# LIGGGHTS: a plain include whose if sets e 0.3 directly\n" + LW + m.E3 + "include e.in\n" + m.HERTZ + m.WALL3 + m.ATOMS + m.RUN,
+  g=1, data={"e.in": "if 1 then \"fix m3 all property/global coefficientRestitution peratomtypepair 3 " + " ".join(["0.3"] * 9) + "\"\n"})
+L("I41_liggghts_if_jump_label", "# LIGGGHTS: if 1 then \"jump e.in lab\", e.in sets e 0.3 after a label and jumps back\n" + LW + m.E3 + "if 1 then \"jump e.in lab\"\nlabel back\n" + m.HERTZ + m.WALL3 + m.ATOMS + m.RUN,
+  g=1, data={"e.in": "print skipped\nlabel lab\nfix m3 all property/global coefficientRestitution peratomtypepair 3 " + " ".join(["0.3"] * 9) + "\njump in.deck back\n"})
+
+# ---------------------------------------------------------------- fourth set: what a run writes, read back later by the deck
+REST = lambda: BASE().replace("create_box 2 box\n", "create_box 2 box\n")
+rr("M41_print_file_subdir", "fix print into out/ (a folder of the deck) across runs", "variable t equal time\nfix pr all print 10 \"$t\" file out/pr.txt screen no\nrun 300\n" + K5 + "run 300\n", data={"out/keep.txt": "x\n"})
+rr("M42_read_dump_of_run", "a dump written in run 1 read back (read_dump) before run 2", "dump d all custom 100 a.dump id type x y z vx vy vz\nrun 100\nundump d\nread_dump a.dump 100 x y z vx vy vz\n" + K5 + "run 100\n")
+rr("M43_include_file_fix_print_wrote", "fix print writes a pair_coeff line in run 1; the deck includes that file before run 2",
+   "fix pr all print 100 \"" + K5.strip() + "\" file gen.in screen no\nrun 100\nunfix pr\ninclude gen.in\nrun 100\n")
+rr("M44_variable_file_print_wrote", "a print ... file writes 5000 after run 1; variable file reads it; pair_coeff ${k}",
+   "run 100\nprint \"5000\" file k.txt screen no\nvariable k file k.txt\npair_coeff * * hooke ${k} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n")
+rr("M45_restart_during_run_read_back", "restart 100 r.bin written during run 1; clear; read_restart r.bin; kn 5000",
+   "restart 100 r.bin\nrun 200\nclear\nread_restart r.bin\ncomm_modify vel yes\npair_coeff * * " + hk(5000) + "\nfix grav all gravity 9.81 vector 0 0 -1\nfix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-5\nrun 100\n")
+rr("M46_fix_ave_time_file_read_as_variable", "fix ave/time of step writes a file; after the run a variable file reads it (not a number: engine decides)",
+   "variable s equal step\nfix av all ave/time 100 1 100 v_s file s.txt\nrun 100\nunfix av\nvariable st file s.txt\nprint \"read ${st}\"\n" + K5 + "run 100\n")
+rr("M47_write_data_read_data_add", "write_data between runs, delete all, read_data of it", "run 100\nwrite_data w.data\ndelete_atoms group all\nread_data w.data add append\n" + K5 + "run 100\n")
+rr("M48_include_log_of_print_append", "print ... append each pass writes pair_coeff lines; the deck includes the file after the loop",
+   "variable i loop 2\nlabel l\nrun 100\nprint \"" + K5.strip() + "\" append gen.in screen no\nnext i\njump SELF l\ninclude gen.in\nrun 100\n")
+rr("M49_dump_then_rerun", "dump written in run 1, rerun of it (rerun re-reads the dump) then a run", "dump d all custom 50 a.dump id type x y z\nrun 100\nundump d\nrerun a.dump dump x y z\n" + K5 + "run 100\n")
+
+# ---------------------------------------------------------------- fifth set: LIGGGHTS multi-run decks it runs to the end
+LG = lambda: m.LB() + m.ATOMS + m.LRUN
+L("M50_liggghts_loop_runs", "# LIGGGHTS: a loop of 4 runs, e 0.3 after\n" + LG() + "variable i loop 4\nlabel l\nrun 200\nnext i\njump SELF l\n" + m.E3b(0.3) + "run 100\n", g=1)
+L("M51_liggghts_print_dump_files", "# LIGGGHTS: fix print file and dump every 50 across runs, e 0.3 after\n" + LG()
+  + "variable t equal time\nfix pr all print 50 \"$t\" file pr.txt screen no\ndump d all custom 50 a.dump id type x y z\nrun 300\n" + m.E3b(0.3) + "run 300\n", g=1)
+L("M52_liggghts_upto_series", "# LIGGGHTS: run 100 upto, run 300 upto, e 0.3, run 500 upto\n" + LG() + "run 100 upto\nrun 300 upto\n" + m.E3b(0.3) + "run 500 upto\n", g=1)
+L("M53_liggghts_ave_time_file", "# LIGGGHTS: fix ave/time file across runs\n" + LG() + "compute ke all ke\nfix av all ave/time 10 5 50 c_ke file ke.txt\nrun 300\n" + m.E3b(0.3) + "run 300\n", g=1)
+L("M54_liggghts_long_runs", "# LIGGGHTS: three runs of 20000 steps, e 0.3 last\n" + LG() + "run 20000\nrun 20000\n" + m.E3b(0.3) + "run 20000\n", g=1)
+L("M55_liggghts_halt_never", "# LIGGGHTS: fix halt never met, multi-run\n" + LG() + "variable t equal time\nfix h all halt 10 v_t > 1.0 error hard\nrun 300\n" + m.E3b(0.3) + "run 300\n", g=1)
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
           ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
-          ("X03_lammps_pour_flatwall", "/usr/share/lammps/examples/granular", "in.pour.flatwall", False)]
+          ("X03_lammps_pour_flatwall", "/usr/share/lammps/examples/granular", "in.pour.flatwall", False),
+          ("X04_lammps_granregion_box", "/usr/share/lammps/examples/granregion", "in.granregion.box", False),
+          ("X05_lammps_granregion_funnel", "/usr/share/lammps/examples/granregion", "in.granregion.funnel", False),
+          ("X06_lammps_granregion_mixer", "/usr/share/lammps/examples/granregion", "in.granregion.mixer", False)]
     T = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
     for t, f in (("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
-                 ("hysteresis", "in.hysteresis"), ("contactModels", "in.newModels"), ("conveyor", "in.conveyor")):
+                 ("hysteresis", "in.hysteresis"), ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"),
+                 ("insert_stream", "in.insert_stream_reset_timestep"), ("cohesion", "in.noCohesion"), ("contactModels", "in.oldModels"),
+                 ("hysteresis", "in.noHysteresis"), ("movingMeshGran", "in.movingMeshGran"), ("chute_wear", "in.chute_wear")):
         ex.append(("X_lig_" + t + "_" + f[3:], os.path.join(T, t), f, True))
     for name, src, f, lig in ex:
         d = os.path.join(m.D, name)
