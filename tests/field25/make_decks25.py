@@ -178,6 +178,36 @@ L("M53_liggghts_ave_time_file", "# LIGGGHTS: fix ave/time file across runs\n" + 
 L("M54_liggghts_long_runs", "# LIGGGHTS: three runs of 20000 steps, e 0.3 last\n" + LG() + "run 20000\nrun 20000\n" + m.E3b(0.3) + "run 20000\n", g=1)
 L("M55_liggghts_halt_never", "# LIGGGHTS: fix halt never met, multi-run\n" + LG() + "variable t equal time\nfix h all halt 10 v_t > 1.0 error hard\nrun 300\n" + m.E3b(0.3) + "run 300\n", g=1)
 
+# ---------------------------------------------------------------- sixth set: more of what an if's include can do
+rr("I42_if_include_quit", "run 1, an if's include quits, kn 5000 never reached", "run 100\nif 1 then \"include q.in\"\n" + K5 + "run 100\n", data={"q.in": "quit\n"})
+rr("I43_if_include_jump_to_label", "an if's include jumps to a label in the deck, skipping kn 5000", "if 1 then \"include j.in\"\n" + K5 + "label skip\nrun 100\n", data={"j.in": "jump in.deck skip\n"})
+rr("I44_index_not_redefined", "variable kn index 2000 in the deck; the if's include says index 5000 (LAMMPS keeps 2000)",
+   "variable kn index 2000\nif 1 then \"include v.in\"\npair_coeff * * hooke ${kn} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n", data={"v.in": "variable kn index 5000\n"})
+rr("I45_delete_redefine", "variable kn equal 2000; the if's include deletes it and sets 5000", "variable kn equal 2000\nif 1 then \"include v.in\"\npair_coeff * * hooke ${kn} 3000 damping mass_velocity tangential linear_nohistory 1 0.3\nrun 100\n",
+   data={"v.in": "variable kn delete\nvariable kn equal 5000\n"})
+rr("I46_continuation_no_newline", "the included file: pair_coeff with & continuation, no final newline", "if 1 then \"include kn.in\"\nrun 100\n",
+   data={"kn.in": "pair_coeff * * hooke 5000 3000 &\n  damping mass_velocity tangential linear_nohistory 1 0.3"})
+rr("I47_immediate_count", "the included file: pair_coeff hooke $(2500*count(all))", "if 1 then \"include kn.in\"\nrun 100\n",
+   data={"kn.in": "pair_coeff * * hooke $(2500*count(all)) 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"})
+rr("I48_if_include_clear_rebuild", "an if's include clears and rebuilds the whole deck with kn 5000", "run 100\nif 1 then \"include new.in\"\nrun 100\n",
+   data={"new.in": "clear\n" + BASE().replace(HK, hk(5000)) + TWO})
+rr("I49_if_include_log", "an if's include opens a log file (log sub.log append)", "if 1 then \"include lg.in\"\n" + K5 + "run 100\n", data={"lg.in": "log sub.log append\n"})
+rr("I50_if_include_in_jumped_file", "jump to a file whose if includes kn.in", "jump j.in\n", data={"j.in": "if 1 then \"include kn.in\"\nrun 100\n", **KN5})
+
+# ---------------------------------------------------------------- seventh set: slow multi-run decks
+rr("M56_many_atoms_slow_runs", "3267 spheres of 1 mm on a lattice (type 1), two runs of 3000 steps, kn 5000 last run",
+   "region lay block 0 0.04 0 0.04 0.02 0.0236 units box\nlattice sc 0.0012\ncreate_atoms 1 region lay\nset type 1 diameter 0.001 density 2500\n"
+   "run 3000\nrun 3000\n" + K5 + "run 100\n")
+rr("M57_dump_image_runs", "dump image every 50 across runs", "dump im all image 50 img.*.ppm type type\nrun 200\n" + K5 + "run 200\n")
+
+# ---------------------------------------------------------------- eighth set: outputs into a folder a shell command makes
+rr("M58_shell_mkdir_fix_print", "shell mkdir out, then fix print into out/ across runs", "shell mkdir out\nvariable t equal time\nfix pr all print 10 \"$t\" file out/pr.txt screen no\nrun 100\n" + K5 + "run 100\n")
+rr("M59_shell_mkdir_dump", "shell mkdir post, dump into post/ across runs", "shell mkdir post\ndump d all custom 10 post/a.*.dump id type x y z\nrun 100\n" + K5 + "run 100\n")
+rr("M60_shell_mkdir_ave_time", "shell mkdir out, fix ave/time into out/ across runs", "shell mkdir out\ncompute ke all ke\nfix av all ave/time 10 5 50 c_ke file out/ke.txt\nrun 100\n" + K5 + "run 100\n")
+L("M61_liggghts_shell_mkdir_dump", "# LIGGGHTS: shell mkdir post, dump into post/ across runs\n" + m.LB() + m.ATOMS + m.LRUN
+  + "shell mkdir post\ndump d all custom 50 post/a.*.dump id type x y z\nrun 300\n" + m.E3b(0.3) + "run 300\n", g=1)
+rr("M62_shell_mkdir_restart", "shell mkdir rs, restart files into rs/ across runs", "shell mkdir rs\nrestart 50 rs/r.*.bin\nrun 100\n" + K5 + "run 100\n")
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
