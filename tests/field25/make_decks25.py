@@ -208,6 +208,22 @@ L("M61_liggghts_shell_mkdir_dump", "# LIGGGHTS: shell mkdir post, dump into post
   + "shell mkdir post\ndump d all custom 50 post/a.*.dump id type x y z\nrun 300\n" + m.E3b(0.3) + "run 300\n", g=1)
 rr("M62_shell_mkdir_restart", "shell mkdir rs, restart files into rs/ across runs", "shell mkdir rs\nrestart 50 rs/r.*.bin\nrun 100\n" + K5 + "run 100\n")
 
+# ---------------------------------------------------------------- ninth set: paths, many passes, variables in conditions
+rr("M63_loop_2000_runs", "a loop of 2000 runs of 10 steps, kn 5000 after", "variable i loop 2000\nlabel l\nrun 10\nnext i\njump SELF l\n" + K5 + "run 10\n")
+rr("I51_include_subdir_chain", "if 1 then \"include sub/a.in\", sub/a.in includes sub/b.in (paths from the working folder)", "if 1 then \"include sub/a.in\"\nrun 100\n",
+   data={"sub/a.in": "include sub/b.in\n", "sub/b.in": K5})
+rr("I52_include_relative_to_cwd", "sub/a.in says include b.in: LAMMPS opens ./b.in (kn 8000), not sub/b.in (kn 5000)", "if 1 then \"include sub/a.in\"\nrun 100\n",
+   data={"sub/a.in": "include b.in\n", "sub/b.in": K5, "b.in": K8})
+rr("I53_variable_in_condition", "the if's include sets use5 = 1; a later if on it sets kn 5000", "if 1 then \"include v.in\"\nif \"${use5} == 1\" then \"" + K5.strip() + "\"\nrun 100\n",
+   data={"v.in": "variable use5 equal 1\n"})
+rr("I54_if_include_sets_loop_count", "the if's include sets the loop count n = 3; each pass includes kn$i.in? no: pass 3 sets kn 8000", "if 1 then \"include n.in\"\nvariable i loop ${n}\nlabel l\nif \"$i == 3\" then \"" + K8.strip() + "\"\nrun 50\nnext i\njump SELF l\n",
+   data={"n.in": "variable n equal 3\n"})
+
+rr("I55_labelmap_include_pour_label", "labelmap in an if's include; fix pour of type big (3 mm) in the deck", "if 1 then \"include lm.in\"\nregion ins block 0.005 0.035 0.005 0.035 0.06 0.09 units box\nfix p all pour 3 big 4767548 region ins diam one 0.003 dens 2500 2500\nrun 5000\n",
+   data={"lm.in": "labelmap atom 1 small 2 big\n"})
+rr("I56_labelmap_include_set_label", "labelmap in an if's include; set type big density 7800 in the deck", "if 1 then \"include lm.in\"\nset type big density 7800\nrun 100\n",
+   data={"lm.in": "labelmap atom 1 small 2 big\n"})
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
