@@ -224,6 +224,13 @@ rr("I55_labelmap_include_pour_label", "labelmap in an if's include; fix pour of 
 rr("I56_labelmap_include_set_label", "labelmap in an if's include; set type big density 7800 in the deck", "if 1 then \"include lm.in\"\nset type big density 7800\nrun 100\n",
    data={"lm.in": "labelmap atom 1 small 2 big\n"})
 
+# ---------------------------------------------------------------- tenth set: absolute output paths across runs (escape and refusal)
+rr("M64_abs_fix_print", "shell mkdir -p /tmp/f25abs, fix print into it across runs", "shell mkdir -p /tmp/f25abs\nvariable t equal time\nfix pr all print 10 \"$t\" file /tmp/f25abs/pr.txt screen no\nrun 100\n" + K5 + "run 100\n")
+rr("M65_abs_dump_restart", "dump and restart files under /tmp/f25abs2 (made by shell) across runs", "shell mkdir -p /tmp/f25abs2\ndump d all atom 10 /tmp/f25abs2/a.dump\nrestart 50 /tmp/f25abs2/r.*.bin\nrun 100\nwrite_restart /tmp/f25abs2/w.bin\n" + K5 + "run 100\n")
+
+L("M66_liggghts_run_every_print", "# LIGGGHTS: run 300 every 100 \"print hi\", e 0.3, run 100\n" + m.LB() + m.ATOMS + m.LRUN + "run 300 every 100 \"print hi\"\n" + m.E3b(0.3) + "run 100\n", g=1)
+L("M67_liggghts_loop_if_e", "# LIGGGHTS: loop of 3 runs; pass 2 sets e 0.3 by an if\n" + m.LB() + m.ATOMS + m.LRUN + "variable i loop 3\nlabel l\nif \"$i == 2\" then \"" + m.E3b(0.3).strip() + "\"\nrun 100\nnext i\njump SELF l\n", g=1)
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
