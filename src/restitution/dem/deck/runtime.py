@@ -390,13 +390,8 @@ def stops_in_runs(commands: list) -> list:
                 # anything the run evaluates may stop it (round 24, S16: a thermo variable dividing
                 # by zero at step 50): that the engine ends it is seen only where it is made
                 last, last_why = cmd.loc, "ends without an error"
-        elif split[0] == "boundary":
-            # only a plain f face loses atoms: p wraps them, s and m (shrink-wrapped) follow them
-            boundary = cmd.text.strip() if any(face == "f" for face in _faces(split[1:])) else None
-        elif split[0] == "change_box" and "boundary" in split:
-            k = split.index("boundary")
-            faces = split[k + 1:k + 4]
-            boundary = cmd.text.strip() if any(face == "f" for face in _faces(faces)) else boundary
+        elif (fixed := _fixed_after(split)) is not None:
+            boundary = cmd.text.strip() if fixed else None
         elif split[0] == "unfix" and len(split) > 1:
             halts.pop(split[1], None)
         elif split[0] == "fix" and len(split) > 3:
@@ -426,12 +421,21 @@ def fixed_face(commands: list) -> bool:
         split = cmd.text.split()
         if cmd.stage is not None and boundary:
             return True
-        if split[:1] == ["boundary"]:
-            boundary = "f" in _faces(split[1:])
-        elif split[:1] == ["change_box"] and "boundary" in split:
-            k = split.index("boundary")
-            boundary = "f" in _faces(split[k + 1:k + 4])
+        if (fixed := _fixed_after(split)) is not None:
+            boundary = fixed
     return False
+
+
+def _fixed_after(split: list) -> bool | None:
+    """Whether the box has a fixed face after a ``boundary`` or ``change_box ... boundary`` command
+    (only a plain ``f`` loses atoms: ``p`` wraps them, ``s`` and ``m`` follow them); None for any
+    other command."""
+    if split[:1] == ["boundary"]:
+        return "f" in _faces(split[1:])
+    if split[:1] == ["change_box"] and "boundary" in split:
+        k = split.index("boundary")
+        return "f" in _faces(split[k + 1:k + 4])
+    return None
 
 
 def _faces(words: list) -> list:
