@@ -691,9 +691,11 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
         stop_note = None
         if made is None:
             read = deck_commands(commands, scratch)
+            # a timer timeout the audit does not run may end a deck's run early, where the runs
+            # made for real make every step (round 24, R34: a later upto legal in LAMMPS failed)
+            timed = any(_timeout(entry[2]) for entry in scratch.skipped if entry[0] == "timer")
             try:
-                deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts,
-                                              timed=any(_timeout(e[2]) for e in scratch.skipped if e[0] == "timer")), None
+                deck, refusal = read_executed(read, atoms, radius, density, read_file, restarts, timed=timed), None
             except DeckError as why:
                 if by_position(read) is None:
                     raise
@@ -708,9 +710,6 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             if stops and not needs and made is None and run_budget <= 0:
                 stop_note = (f"{place(stops[0][0])} {stops[0][1]}: with --run-budget 0 {engine} was not run to "
                              "see whether it does, so the stages after it hold only if it does")
-            # a timer timeout the audit does not run may end a deck's run early, where the runs
-            # made for real make every step (round 24, R34: a later upto legal in LAMMPS failed)
-            timed = any(_timeout(entry[2]) for entry in scratch.skipped if entry[0] == "timer")
             if made is not None and made[0] is None and made[1] and _STOPPED in made[2] \
                     and ("ERROR" in made[2] and not timed or "fix halt" in made[2]):
                 # the engine stopped in a run made as the deck makes it (field round 23, r22: "Lost
