@@ -5,7 +5,8 @@ the deck, and the runs after them were audited as its last stage. D5: ``partitio
 CMD in an engine of one partition (z30, L98; ``partition no 2`` stops it, z31), ``timer timeout 0``
 ends the runs before their steps (z28), ``fix ttm`` pushes the atoms (z40), ``ndx2group`` fills a
 group (z36): each was said to have no part in a contact. D2, D3: ``unfix`` and ``timestep`` run
-between a run's parts (e03, e15, L72) were neither run nor refused. Each eps compared here is the
+between a run's parts (e03, e15, L72) were neither run nor refused; refused then, they now run as
+the engine runs them (the run written out in its parts, :func:`restitution.dem.deck.scratch.split_every`). Each eps compared here is the
 engine's: LIGGGHTS' typed e for the hertz rows (its hertz damping returns e exactly, Eq. (10)), and
 round 18's LAMMPS head-on runs for hooke 2000 and 9000 (0.49726208, 0.72384049)."""
 
@@ -53,13 +54,33 @@ def test_partition_1_runs_its_command(name, types, expected):
 @pytest.mark.dem
 @pytest.mark.parametrize("name, said", [
     pytest.param("z31_partition_no_2_set_density", "LAMMPS stops here", marks=needs_lammps),
-    pytest.param("z28_timer_timeout_zero", "a timeout of no time", marks=needs_lammps),
-    pytest.param("e03_run_every_unfix_floor", "run ... every runs unfix", marks=needs_lammps),
-    pytest.param("e15_run_every_timestep_coarser", "run ... every runs timestep", marks=needs_lammps),
-    pytest.param("L72_run_every_timestep", "run ... every runs timestep", marks=needs_liggghts)])
+    pytest.param("z28_timer_timeout_zero", "a timeout of no time", marks=needs_lammps)])
 def test_what_the_pass_cannot_show_is_refused(name, said):
     status, got, err = audit(name)
     assert status == 2 and said in err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_floor_unfixed_by_a_runs_every_is_gone_from_the_runs_after():
+    """e03: ``run 100 every 100 "unfix floor"``, ``run 100``: refused since round 20, now the command
+    runs after the run's one part as LAMMPS runs it, and the second run has no floor (LAMMPS' second
+    run: the sphere passes z = 0, ENGINE.txt)."""
+    status, got, err = audit("e03_run_every_unfix_floor")
+    assert status == 0, err
+    assert [bool(stage["walls"]) for stage in got["stages"]] == [True, False], got["stages"]
+    assert eps(got, (1, 2)) == [pytest.approx(0.49726208, abs=2e-7)]
+
+
+@pytest.mark.dem
+@pytest.mark.parametrize("name, dt", [pytest.param("e15_run_every_timestep_coarser", 2e-4, marks=needs_lammps),
+                                      pytest.param("L72_run_every_timestep", 1e-4, marks=needs_liggghts)])
+def test_a_time_step_a_runs_every_sets_is_the_one_stated(name, dt):
+    """e15, L72: the time step set between a run's parts is the one the engine's later runs take
+    (round 20: the steps per contact were stated at the old one); the coarsest is stated."""
+    status, got, err = audit(name)
+    assert status == 0, err
+    assert f"at the deck's time step {dt:g} a contact lasts" in err, err
 
 
 @needs_lammps

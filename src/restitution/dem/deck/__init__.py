@@ -777,6 +777,13 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
               + ("; nor is it checked: where the engine stops on it, the runs after it do not happen"
                  if cmd not in ("processors", "partition no 1") else "")
               for cmd, loc in skipped(commands, scratch).items()]
+    reached = {cmd.stage for cmd in commands if cmd.stage is not None}
+    notes += [f"{place(scratch.stages[k][:2])} ({run}): " + (
+        f"made as its {count} parts, the commands its every names run after each, as {engine} makes it; each "
+        f"part a run of its own here, with the contact those commands leave (passes 1 to {count} of the line)"
+        if count > 1 else f"the commands its every names run after it, as {engine} runs them: the runs after "
+                          "it see the contact they leave")
+        for k, (run, count) in scratch.parts.items() if k in reached]
     notes += _override_notes(atoms, radius or {}, density or {}, deck.ntypes)
     if unseen is not None:
         loc, text = unseen

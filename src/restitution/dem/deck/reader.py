@@ -626,6 +626,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
     elif cmd == "run":
         ending = _run_every(words, where, line)
         deck.ended = ending == "quits"
+        _not_set_up(deck, words, where, line)
         if _no_step(deck, words):
             return                        # a run of 0 steps: no contact happens in it (field round 19, C1)
         if deck.inserting:
@@ -1039,6 +1040,56 @@ def _inserted(deck: Deck) -> None:
             deck.present_unknown = True
         else:
             deck.present |= inserted
+
+
+def set_up_key(deck: Deck) -> str:
+    """What the engine reads into its contact forces when it sets a run up (its ``init``): the pair
+    style, the coefficients of pairs of two types, the fixes (walls, material properties, what acts
+    beside the contact), exclusions and movers; not the atoms' sizes, which it reads from the atoms
+    at every step, nor LAMMPS' coefficients of a type with itself, which pair_coeff sets where the
+    forces read them (its set-up copies a pair i < j to j > i: measured, below).
+
+    Parameters
+    ----------
+    deck : Deck
+
+    Returns
+    -------
+    str
+
+    Examples
+    --------
+    >>> set_up_key(Deck(radius={1: 0.5})) == set_up_key(Deck(radius={1: 0.7}))
+    True
+    >>> a, b = Deck(coeffs={(1, 1): (3, ["hooke", "2000"])}), Deck(coeffs={(1, 1): (9, ["hooke", "5000"])})
+    >>> set_up_key(a) == set_up_key(b)
+    True
+    """
+    return repr((deck.code, deck.style, deck.model, deck.limit_force, deck.absolute_damping, deck.gran,
+                 sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1]),
+                 sorted((k, repr(v)) for k, (_, v) in deck.props.items()),
+                 [(w, t) for _, w, t in deck.walls], repr(deck.meshes), [w for _, w in deck.beside],
+                 repr(deck.others), repr(deck.idle), repr(deck.granular_of), [w for _, _, w in deck.excludes],
+                 sorted((k, repr(v)) for k, v in deck.movers.items())))
+
+
+def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
+    """A run with ``pre no`` after its first: the engine does not set it up (LAMMPS' run.cpp: only
+    ``pre yes`` or no run yet does), so a contact setting changed since the last set-up acts in part
+    or not at all. LAMMPS 22 Jul 2025 measured: ``pair_coeff 1 2`` changed from kn 2000 to 5000
+    before ``run N pre no``: 0.4409 (the new kn) where the type-1 sphere is the pair's first atom,
+    0.2550 (the old) where it is the second; ``pair_coeff 1 1`` so changed: 0.4409 in either order.
+    Refused in one line where such a setting changed; any other run records what its set-up read."""
+    pre = [words[k + 1] for k in range(2, len(words) - 1) if words[k] == "pre" and "every" not in words[2:k]]
+    key = set_up_key(deck)
+    if pre[-1:] == ["no"] and deck.set_up is not None:
+        if key != deck.set_up:
+            raise DeckError(where, line, "pre no after a contact setting changed since the last run: the engine does "
+                                         "not set this run up again, so the change acts in part or not at all (LAMMPS "
+                                         "measured: a pair_coeff of types 1 2 acts on one order of the pair's atoms "
+                                         "only); not audited (remove pre no)")
+        return
+    deck.set_up = key
 
 
 def contact_key(deck: Deck) -> str:

@@ -24,10 +24,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..dialect.state import DeckError, place
-from ..deck_text import TRIPLE, segments as segments_of, strip_comment
+from ..deck_text import TRIPLE, ScriptError, segments as segments_of, strip_comment, words
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
-           "AUDIT"]
+           "AUDIT", "split_every", "MAX_PARTS"]
 
 #: The no-op the k-th skipped command becomes (both engines have label; nothing jumps to it): its
 #: echo tells that the deck reached it
@@ -80,6 +80,17 @@ RUN_COMMANDS = ("run", "minimize")
 _ASCII = str.maketrans({**{c: " " for c in "\u00a0\u202f\u2060\ufeff"},
                         **{chr(c): " " for c in range(0x2000, 0x200c)},
                         "\u2018": "'", "\u2019": "'", "\u201c": '"', "\u201d": '"', "\u2212": "-"})
+#: The most parts a ``run N every M`` with commands between them is written out in, each a run of the
+#: copy's own (:func:`split_every`); one in more parts stays as written
+MAX_PARTS = 1000
+#: What a run's every may run that keeps the run as written: a run, quit, clear or branch between
+#: the parts, or a file opened there, is the deck's control flow, which the copy does not rewrite
+_UNSPLIT = frozenset({"run", "minimize", "quit", "include", "jump", "label", "next", "clear", "if"})
+#: What a run's every may evaluate that differs where its commands run between runs of their own: a
+#: value substituted or referenced (a ramp() or the step read inside the run, as LAMMPS runs them,
+#: is not the one read after a run of the copy: field round 22, t02's ramp(2000,8000) read 2000
+#: where LAMMPS reads 8000), or a function of the run's own start and end
+_IN_RUN = re.compile(r"\$|\b(?:[vcf]|[id]2?)_\w|\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(")
 #: The label that opens stage k's marker where it stands inline in an if (its echo marks the stage)
 STAGE_LABEL = "restitution_stage_"
 #: A deck's folder copied whole; a larger one is refused (with the files above it that it names)
@@ -116,7 +127,10 @@ class Scratch:
     or ``write_data`` names outside the copy (an absolute path, a climb by ..), each -> the file in
     the scratch it writes instead, which a later read of that name reads; ``absolute`` the files the deck names by an absolute path, each -> its
     copy in the scratch, which the copy's commands name instead; ``left_out`` the names in the deck's
-    folder not copied (a pipe, a device, a link to one: :func:`_not_copied`)."""
+    folder not copied (a pipe, a device, a link to one: :func:`_not_copied`); ``after`` what stage
+    k's marker file holds after its marker, where its run is the first part of a run in parts
+    (:func:`split_every`): the commands between the parts and the markers of the later ones;
+    ``parts`` that run's text as written and its number of parts, by k."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -136,6 +150,8 @@ class Scratch:
     redirected: dict = field(default_factory=dict)
     absolute: dict = field(default_factory=dict)
     left_out: set = field(default_factory=set)
+    after: dict = field(default_factory=dict)
+    parts: dict = field(default_factory=dict)
 
 
 def normalised(text: str) -> str:
@@ -606,6 +622,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
             scratch.silenced[(loc, noop)] = len(scratch.skipped) - 1
             return noop
         return None
+    if word in RUN_COMMANDS and top and (parts := split_every(key)) is not None:
+        return _parts(scratch, loc, key, marker, *parts)
     if word in RUN_COMMANDS:
         k = len(scratch.stages)
         scratch.stages.append((loc[0], loc[1], key))
@@ -667,7 +685,95 @@ def remark(scratch: Scratch, marker) -> None:
     """Each run's marker file written anew by ``marker`` (``marker(k, run_text)``, as
     :func:`scratch_copy` takes it), for another pass of the same copy."""
     for k, (_, _, key) in enumerate(scratch.stages):
-        (scratch.root / f"stage_{k}").write_text(_audit_lines(scratch, marker(k, key)))
+        (scratch.root / f"stage_{k}").write_text(_audit_lines(scratch, marker(k, key)) + scratch.after.get(k, ""))
+
+
+def split_every(run: str) -> tuple[list[str], list[str]] | None:
+    """``run N every M c1 c2 ...`` as the runs of its parts and the commands LAMMPS runs after each
+    (the last part too), where the pass must run them to see the contact of each part: N and M
+    literal, no ``upto`` (its parts depend on the step then), at most :data:`MAX_PARTS` parts, and
+    among the commands one the copy does not make a no-op, none of which runs, quits, clears,
+    branches or opens a file, nor substitutes or references a value (the step, a ramp, a compute:
+    LAMMPS evaluates them inside its run, where they differ from between two runs): those keep the
+    run as written. The first part sets the run up as
+    LAMMPS' first part always does (``pre yes``); each keeps the run's start, stop and post, which
+    LAMMPS applies to every part alike (its run.cpp, 22 Jul 2025). None where it is not such a run.
+
+    Parameters
+    ----------
+    run : str
+        A run command, normalised.
+
+    Returns
+    -------
+    (list of str, list of str) or None
+        The parts' runs and the commands between them.
+
+    Examples
+    --------
+    >>> split_every('run 250 every 100 "pair_coeff * * 2000 0" "print x"')
+    (['run 100 pre yes', 'run 100', 'run 50'], ['pair_coeff * * 2000 0', 'print x'])
+    >>> split_every('run 0 pre no every 10 "variable a equal 2"')
+    (['run 0 pre yes'], ['variable a equal 2'])
+    >>> split_every('run 100 every 10 "print x"') is None, split_every("run 100 every 10 NULL") is None
+    (True, True)
+    >>> split_every('run 300 every 100 "pair_coeff * * hooke $(v_kn) 0"') is None
+    True
+    """
+    try:
+        split = words(run)
+    except ScriptError:
+        return None
+    if split[:1] != ["run"] or "every" not in split or not split[1:2] or not split[1].isdigit():
+        return None
+    at = split.index("every")
+    keywords, commands = split[2:at], split[at + 2:]
+    if len(keywords) % 2 or not split[at + 1:at + 2] or not split[at + 1].isdigit() or int(split[at + 1]) == 0:
+        return None
+    if any(key not in ("start", "stop", "pre", "post") for key in keywords[::2]):
+        return None                 # upto (its steps counted from the step it starts at), or a typo
+    firsts = [command.split()[0] if command.split() else "" for command in commands]
+    if not commands or all(first in SKIPPED_COMMANDS or first == "NULL" for first in firsts) \
+            or any(first in _UNSPLIT or not first for first in firsts) \
+            or any(_IN_RUN.search(command) for command in commands):
+        return None
+    steps, every = int(split[1]), int(split[at + 1])
+    count = max(1, -(-steps // every))
+    if count > MAX_PARTS:
+        return None
+    kept = [f"{key} {value}" for key, value in zip(keywords[::2], keywords[1::2]) if key != "pre"]
+    later = [f"pre {value}" for key, value in zip(keywords[::2], keywords[1::2]) if key == "pre"][-1:]
+    runs = [" ".join(["run", str(min(every, steps - j * every)), *kept, *(["pre yes"] if j == 0 else later)])
+            for j in range(count)]
+    return runs, commands
+
+
+def _parts(scratch: Scratch, loc, key: str, marker, runs: list, between: list) -> str:
+    """A run in parts (:func:`split_every`) as the copy runs it: a marker for each part, a stage of
+    its own, the commands made safe after each; the first marker's file holds the rest (after
+    its marker: :attr:`Scratch.after`), so the run's line stays one include. The commands are
+    echoed without a tag, known as the run's line's, as LAMMPS echoes those its every runs."""
+    lines = []
+    for command in between:
+        made = _safe(command, loc, scratch, marker)
+        line = command if made is None else made
+        _quoted(scratch, normalised(command), loc)
+        _quoted(scratch, normalised(line), loc)
+        lines.append(line)
+    first = len(scratch.stages)
+    for run in runs:
+        scratch.stages.append((loc[0], loc[1], run))
+    after = []
+    for j in range(len(runs)):
+        after.extend(lines)
+        if j + 1 < len(runs):
+            after.append(f"include {scratch.root / f'stage_{first + j + 1}'} {scratch.tag}{AUDIT}")
+    scratch.after[first] = "\n".join(after) + "\n"
+    scratch.parts[first] = (key, len(runs))
+    for j, run in enumerate(runs):
+        (scratch.root / f"stage_{first + j}").write_text(_audit_lines(scratch, marker(first + j, run))
+                                                         + scratch.after.get(first + j, ""))
+    return f"include {scratch.root / f'stage_{first}'}"
 
 
 def _labelled(scratch: Scratch, kept: list, template: str, entry, loc) -> str:

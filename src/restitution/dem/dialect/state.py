@@ -228,6 +228,9 @@ class Deck:
     # of a run whose every may quit (an if's branch): no run with other contact settings may follow
     ended: bool = False
     may_end: tuple = ()
+    # what the engine's set-up of the last run that made one read (reader.set_up_key), None before
+    # the first run: a run with pre no after a change of it is not set up again
+    set_up: str | None = None
     # type -> {charge q} its atoms hold, as the engine holds them at the deck's end (LAMMPS, an atom
     # style with a charge), where no command after the first run changes a charge; None: not known
     charges: dict | None = None
