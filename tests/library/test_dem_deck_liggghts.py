@@ -96,6 +96,26 @@ def test_liggghts_gives_what_the_audit_says(tmp_path, e, lines):
     assert abs(got - p[(1, 1)]["eps"][2]) <= 1e-6, eps
 
 
+#: hooke with ktToKnUser on (its tangential stiffness 2/7 of the normal one): field round 26, L23 was
+#: refused as a keyword that may change the normal force
+HOOKE_KT = ("fix m5 all property/global characteristicVelocity scalar 1.0\n"
+            "pair_style gran model hooke tangential history ktToKnUser on\npair_coeff * *\n")
+
+
+@needs_liggghts
+@pytest.mark.dem
+def test_kt_to_kn_user_changes_no_head_on_contact(tmp_path):
+    """LIGGGHTS' hooke model scales only kt by it: the row is e's, the keyword named as idle, and
+    LIGGGHTS' head-on runs (t_c/2000 to t_c/8000, extrapolated) give it within 1e-6."""
+    p, err = pairs(tmp_path, HEAD.format(e=0.6) + HOOKE_KT + TAIL)
+    row = p[(1, 1)]
+    assert all(e == pytest.approx(0.6, rel=1e-9) for e in row["eps"]) and "hooke" in row["model"], row
+    t_c = row["steps_per_contact"][2] * 1e-5
+    box = "create_box 1 box\n" + "\n".join(HEAD.format(e=0.6).splitlines()[10:]) + "\n" + HOOKE_KT
+    eps = liggghts_run.liggghts_eps_runs(PAIR, [(box, 1.0, t_c / 2000 / k, 1.5 * t_c) for k in (1, 2, 4)])
+    assert abs(richardson(*eps, 0.25) - 0.6) <= 1e-6, eps
+
+
 @needs_liggghts
 def test_a_liggghts_deck_runs_nothing_that_writes_or_runs_code(tmp_path):
     target = tmp_path / "TOUCHED"
