@@ -34,9 +34,9 @@ SHOWN = {
     "elastic": "elastic limit",
     "paper-c": "Kim, printed $c_i$",
     "fitted-c": "Kim, fitted $c_i$",
-    "integrator": "DOP853, compiled (Numba)",
-    "solve_ivp plain": r"SciPy DOP853, $x(\tau)$",
-    "collide (scipy)": "SciPy DOP853, regularised",
+    "integrator": "DOP853, compiled",
+    "solve_ivp plain": r"DOP853, plain $x(\tau)$",
+    "collide (scipy)": "DOP853, regularised",
 }
 READING_PREFIX = "perturbation-"
 # The reading of Kim's procedure behind each perturbation row, as the run recorded it in its note ("paper's
