@@ -45,3 +45,47 @@ def test_a_pair_given_back_to_the_sub_style_after_none_has_its_new_law(tmp_path)
     got, err = audit(tmp_path / "in.deck", "--g", "1")
     row = next(r for r in got["pairs"] if r["types"] == [1, 2])
     assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 5e-5, row["eps"]
+
+
+#: N15: a sphere made 0.5 m wide in a 4 cm periodic box, LAMMPS told to go on past lost atoms
+LOSING = """units si
+atom_style sphere 1
+boundary p p f
+comm_modify vel yes
+region box block 0 0.04 0 0.04 0 0.1 units box
+create_box 2 box
+pair_style granular
+pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
+fix grav all gravity 9.81 vector 0 0 -1
+fix floor all wall/gran granular hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 zplane 0 NULL
+fix integ all nve/sphere
+timestep 1e-5
+create_atoms 1 single 0.02 0.02 0.01
+create_atoms 2 single 0.01 0.01 0.01
+set type 1 diameter 0.004 density 2500
+set type 2 diameter 0.006 density 2500
+thermo_modify lost {lost}
+set atom 2 diameter 0.5
+run 10
+"""
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("lost", ["ignore", "warn"])
+def test_a_run_that_may_lose_atoms_unseen_says_so(tmp_path, lost):
+    """N15: LAMMPS loses the type-1 sphere in the deck's one run and goes on (measured: it holds the
+    0.25 m sphere alone at the end); the rows stand, the note names the line and what is not seen."""
+    from deck_cli import lammps_held_at_end
+    (tmp_path / "in.deck").write_text(LOSING.format(lost=lost))
+    assert set(lammps_held_at_end(tmp_path / "in.deck")) == {2}
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert f"line 17 (thermo_modify lost {lost}): LAMMPS drops an atom it loses in a run and goes on" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_lost_error_needs_no_such_note(tmp_path):
+    (tmp_path / "in.deck").write_text(LOSING.format(lost="error").replace("set atom 2 diameter 0.5\n", ""))
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert "drops an atom it loses" not in err, err

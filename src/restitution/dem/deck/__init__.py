@@ -777,6 +777,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
               + ("; nor is it checked: where the engine stops on it, the runs after it do not happen"
                  if cmd not in ("processors", "partition no 1") else "")
               for cmd, loc in skipped(commands, scratch).items()]
+    if (lost := _lost_not_stopping(commands, engine)) is not None:
+        notes.append(lost)
     reached = {cmd.stage for cmd in commands if cmd.stage is not None}
     notes += [f"{place(scratch.stages[k][:2])} ({run}): " + (
         f"made as its {count} parts, the commands its every names run after each, as {engine} makes it; each "
@@ -919,6 +921,39 @@ def _run_dependent_notes(commands: list, scratch, engine: str, clocked: bool = F
     return said + [f"after a run, {shown}{more}: reads a value the runs change ({changed}); with the runs {runs} "
                    "it reads the value before them, so the branches taken and the values set from here on, and the "
                    "stages audited after it, may not be those the deck runs"]
+
+
+def _lost_not_stopping(commands: list, engine: str) -> str | None:
+    """The note where a run goes on losing atoms: ``thermo_modify lost ignore`` (or ``warn``) in force
+    at a run the engine reached (a thermo_style makes a new thermo, whose lost is error again). The
+    engine then drops an atom it loses and goes on (field round 26, N15, N12: a 0.5 m sphere in a
+    4 cm periodic box made LAMMPS lose the others at its run's first step, whose pairs were printed
+    with no word); the audit sees the atoms a run leaves only where it made the runs for real, so
+    the note says so, with the line.
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> cmds = [Executed((None, 3), "thermo_modify lost ignore flush yes"), Executed((None, 4), "run 10", stage=0)]
+    >>> _lost_not_stopping(cmds, "LAMMPS")[:40]
+    'line 3 (thermo_modify lost ignore flush '
+    >>> _lost_not_stopping([cmds[0], Executed((None, 4), "thermo_style one"), cmds[1]], "LAMMPS") is None
+    True
+    """
+    setting = None
+    for cmd in commands:
+        words = cmd.text.split()
+        if words[:1] == ["thermo_style"]:
+            setting = None
+        elif words[:1] == ["thermo_modify"] and "lost" in words[1:-1]:
+            value = words[words.index("lost", 1) + 1]
+            setting = None if value == "error" else (cmd.loc, cmd.text)
+        elif cmd.stage is not None and setting is not None:
+            loc, text = setting
+            return (f"{place(loc)} ({text}): {engine} drops an atom it loses in a run and goes on; the audit sees "
+                    "which atoms a run leaves only where it makes the runs for real, never in the last: a pair "
+                    "whose spheres the engine loses is printed as if it met")
+    return None
 
 
 def _run_causes(found: list, picked: tuple | None, deck: Deck | None) -> list:
