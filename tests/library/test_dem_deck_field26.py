@@ -89,3 +89,18 @@ def test_lost_error_needs_no_such_note(tmp_path):
     (tmp_path / "in.deck").write_text(LOSING.format(lost="error").replace("set atom 2 diameter 0.5\n", ""))
     got, err = audit(tmp_path / "in.deck", "--g", "1")
     assert "drops an atom it loses" not in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_one_pairs_small_cutoff_leaves_it_to_the_radii(tmp_path):
+    """CU01: a cutoff of 1 mm on the 1 2 pair alone (contact distance 10 mm), the others without: LAMMPS'
+    lists take the pair by its radii, the largest cutoff setting their reach, and it meets at first
+    touch; the audit gave no row. Now its row is the law's, LAMMPS' own run within 5e-5 (16 000 steps
+    a contact)."""
+    law = "hooke 3000 300 damping mass_velocity tangential linear_nohistory 1 0.3"
+    deck = HEAD_ON.format(line=f"pair_coeff * * {law}\npair_coeff 1 2 {law} cutoff 0.001") + "run 30000\n"
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 5e-5, row["eps"]

@@ -340,6 +340,35 @@ def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
     return mixed, stiffness
 
 
+def _largest_cutoff(deck: Deck) -> float:
+    """The largest cutoff of any pair (infinite where one has none, its cutoff then the radii's):
+    LAMMPS' granular neighbour lists take a pair by its radii and skin, the cutoffs setting only how
+    far they reach, the largest of them; so a pair's own small cutoff leaves it out only where every
+    cutoff is small (field round 26, CU01: cutoff 0.001 on one pair of 5 mm contact distance, the
+    others without: LAMMPS met it at first touch, 0.414777 from a 4 mm gap at dt 1e-7 s, which the
+    audit had left out).
+
+    Examples
+    --------
+    >>> from restitution.dem.dialect.state import Deck
+    >>> _largest_cutoff(Deck(coeffs={(1, 1): (1, ["hooke", "1", "0", "cutoff", "0.001"]), (1, 2): (2, ["hooke", "1", "0"])}))
+    inf
+    >>> _largest_cutoff(Deck(cutoff=0.002, coeffs={(1, 1): (1, ["hooke", "1", "0", "cutoff", "0.001"]), (1, 2): (2, ["hooke"])}))
+    0.002
+    """
+    largest = 0.0
+    for _, words in deck.coeffs.values():
+        own = next((w for k, w in enumerate(words[1:]) if words[k] == "cutoff"), None)
+        try:
+            cut = float(own) if own is not None else deck.cutoff
+        except ValueError:
+            cut = None
+        if cut is None:
+            return math.inf
+        largest = max(largest, cut)
+    return largest if deck.coeffs else (deck.cutoff if deck.cutoff is not None else math.inf)
+
+
 def pair_row(deck: Deck, i: int, j: int) -> dict:
     """The audit's row for type pair (i, j), before its eps: the contact LAMMPS gives it, the e typed
     (tsuji, coeff_restitution) and the pair_coeff line that gives that e exactly. Its arguments and
@@ -393,7 +422,7 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
         mixed_from = f"mixed from {place(loc)} and {place(loc_j)}"
     pair = spheres(deck, i, j)
     cutoff = c.cutoff if c.cutoff is not None else deck.cutoff
-    if cutoff is not None and cutoff < pair.R1 + pair.R2:
+    if cutoff is not None and _largest_cutoff(deck) < pair.R1 + pair.R2:
         # LAMMPS lists a pair within the cutoff (and its skin) only: spheres that reach each
         # other first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005: eps 619 measured)
         raise PairNotMapped(loc, " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
