@@ -104,3 +104,26 @@ def test_one_pairs_small_cutoff_leaves_it_to_the_radii(tmp_path):
     got, err = audit(tmp_path / "in.deck", "--g", "1")
     row = next(r for r in got["pairs"] if r["types"] == [1, 2])
     assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 5e-5, row["eps"]
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("after_a_run", [False, True], ids=["first line", "after a run"])
+def test_a_pour_after_clear_is_read_as_without_it(tmp_path, after_a_run):
+    """CL01, CL22: a pour after ``clear`` into a type that has a sphere already was read as the hand
+    reader's, its 7800 kg/m3 spheres lost to the atoms held at the run (two poured spheres: LAMMPS
+    0.445815, not printed). A clear
+    on the first line changes nothing in LAMMPS, and one after a run starts the same simulation
+    afresh: the rows are those of the deck without it."""
+    from deck_cli import lammps_pour
+    law = "pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
+    deck = lammps_pour(law, ntypes=2, sphere=(2, 0.006, 2500.0)).replace(
+        "fix p all pour 400 1 123 region ins diam one 0.01 dens 2500 2500",
+        "fix p all pour 3 2 4767 region ins diam one 0.003 dens 7800 7800") + "run 2000\n"
+    before = (deck.replace("fix p all pour", "# no pour: fix p all pour") + "clear\n") if after_a_run else "clear\n"
+    rows = {}
+    for name, text in (("plain", deck), ("cleared", before + deck)):
+        (tmp_path / f"in.{name}").write_text(text)
+        got, _ = audit(tmp_path / f"in.{name}", "--g", "1")
+        rows[name] = sorted((tuple(r["types"]), round(r["eps"][0], 9)) for r in got["stages"][-1]["pairs"])
+    assert rows["cleared"] == rows["plain"] and ((2, 2), pytest.approx(0.445804, abs=2e-6)) in rows["plain"], rows

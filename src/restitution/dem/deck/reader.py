@@ -650,8 +650,12 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         deck.step = None
     elif cmd == "clear":
         # LAMMPS starts afresh (box, atoms, styles, coefficients); the runs before it stay stages
+        # the process's environment outlives a clear, and so does how the pass reads the atoms: from
+        # the engine (held, never from the deck's own sizes), from runs it made for real or not
+        # (field round 26, CL01-CL05, CL22: a pour after a clear was read as the hand reader's, its
+        # sizes lost to the atoms held at the run; CL25, CL28: atoms lost in runs made for real)
         fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages, environment=deck.environment,
-                     putenv=deck.putenv)     # the process's environment outlives a clear
+                     putenv=deck.putenv, held=None if deck.held is None else {}, ran=deck.ran)
         deck.__dict__.update(fresh.__dict__)
     elif cmd == "read_restart":
         raise DeckError(where, line, "read_restart: the types, sizes and coefficients come from a binary restart "
