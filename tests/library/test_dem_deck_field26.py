@@ -127,3 +127,20 @@ def test_a_pour_after_clear_is_read_as_without_it(tmp_path, after_a_run):
         got, _ = audit(tmp_path / f"in.{name}", "--g", "1")
         rows[name] = sorted((tuple(r["types"]), round(r["eps"][0], 9)) for r in got["stages"][-1]["pairs"])
     assert rows["cleared"] == rows["plain"] and ((2, 2), pytest.approx(0.445804, abs=2e-6)) in rows["plain"], rows
+
+
+@needs_lammps
+def test_a_folder_that_changes_while_copied_is_refused_in_one_line(tmp_path, monkeypatch):
+    """P02: files removed from the folder a shell cd .. has the audit copy, while it copies: a
+    Python traceback (shutil.Error from copytree). Now one line, exit status 2."""
+    import shutil
+
+    from restitution.dem.deck import scratch
+
+    def vanishing(src, dst, **kwargs):
+        raise shutil.Error([(str(src) + "/kn.in", str(dst) + "/kn.in", "[Errno 2] No such file or directory")])
+    monkeypatch.setattr(scratch.shutil, "copytree", vanishing)
+    (tmp_path / "in.deck").write_text(HEAD_ON.format(line="pair_coeff * * " + LAW.format(kn=1000).split(None, 1)[1]))
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert "changed or could not be read while the audit copied it" in err and "No such file" in err, err

@@ -275,15 +275,24 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     # a deck that names files above its folder: the copy as deep in the scratch as they reach, and
     # each file named copied at its place relative to it (never the folders' other files)
     copy = root.joinpath("deck", *src.parent.parts[len(src.parent.parts) - depth:])
-    shutil.copytree(src.parent, copy, symlinks=True, ignore=ignore)
-    for name in above:
-        target = Path(os.path.normpath(copy / name))
-        target.parent.mkdir(parents=True, exist_ok=True)
-        source = Path(os.path.normpath(src.parent / name))
-        if source.is_dir():
-            shutil.copytree(source, target, symlinks=True, dirs_exist_ok=True, ignore=ignore)
-        else:
-            shutil.copyfile(source, target)
+    try:
+        shutil.copytree(src.parent, copy, symlinks=True, ignore=ignore)
+        for name in above:
+            target = Path(os.path.normpath(copy / name))
+            target.parent.mkdir(parents=True, exist_ok=True)
+            source = Path(os.path.normpath(src.parent / name))
+            if source.is_dir():
+                shutil.copytree(source, target, symlinks=True, dirs_exist_ok=True, ignore=ignore)
+            else:
+                shutil.copyfile(source, target)
+    except (shutil.Error, OSError) as why:
+        # a file removed or made unreadable while the folder is copied (field round 26, P02: another
+        # process emptied the folder above the deck's, which a shell cd .. has the audit copy)
+        first = why.args[0][0] if isinstance(why, shutil.Error) and why.args and why.args[0] else why
+        raise DeckError("deck", str(src.parent), "its folder (with the files above it that the deck names) "
+                                                 f"changed or could not be read while the audit copied it "
+                                                 f"({' '.join(str(first).split())[:200]}); not audited: run "
+                                                 "the audit again once nothing writes there") from None
     # a file named by an absolute path (a cluster's /home/... parameter file): copied into the
     # scratch, where the copy's commands read it, made safe as the folder's files are
     absolute = {}
