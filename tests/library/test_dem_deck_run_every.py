@@ -148,3 +148,20 @@ def test_an_if_between_the_parts_is_read_by_its_branches(tmp_path, between, audi
         assert not (tmp_path / "consol.equil").exists()
     else:
         assert status == 2 and out == "" and "runs pair_coeff between the run's parts" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_step_read_between_the_parts_is_the_decks(tmp_path):
+    """Field round 25, M25: ``variable s equal $(step)`` between the parts was refused. Made as the
+    parts, the step it reads after a part of the copy is set to the deck's (the pass made again, its
+    runs for real): an if on it after the run picks LAMMPS' branch (s = 300: kn 3000; the pass with
+    its runs skipped would read 0 and pick kn 9000)."""
+    stiff = {kn: LINE.replace("1000", kn) for kn in ("3000", "9000")}
+    deck = HEAD_ON.format(line=LINE) + ('run 300 every 100 "variable s equal $(step)"\n'
+                                        f'if "${{s}} >= 300" then "{stiff["3000"]}" else "{stiff["9000"]}"\n'
+                                        "run 30000\n")
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 5e-5, (row["eps"], err)
