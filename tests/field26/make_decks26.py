@@ -356,6 +356,105 @@ L("L27_insert_pack_two_types_walls3", "# LIGGGHTS insert/pack two templates type
   + "fix ins all insert/pack seed 32452867 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 20 region bc\nrun 1000\n", g=1)
 
 
+# ================================================================ second set (round 26, after batch 1)
+# N: the engine stops at the set-up of a run (neighbor list overflow, neighbor bins after read_restart)
+LAY = "lattice sc 0.004\nregion lay block 0.005 0.03 0.005 0.03 0.03 0.045 units box\ncreate_atoms 1 region lay\nset type 1 diameter 0.0042\n"
+rr("N01_neigh_overflow_last_run", "touching lattice of 4.2 mm spheres at 4 mm spacing; neigh_modify one 2: overflow at the last run's set-up", LAY + "neigh_modify page 100 one 2\nrun 100\n")
+rr("N02_neigh_overflow_then_run", "same overflow in a run followed by another (kn 5000)", LAY + "neigh_modify page 100 one 2\nrun 100\n" + K5 + "run 100\n")
+rr("N03_restart_cycle_no_pair", "run; write_restart; clear; read_restart; run (LAMMPS: neighbor bins error at set-up)", "run 10\nwrite_restart r.bin\nclear\nread_restart r.bin\nrun 10\n")
+rr("N04_restart_cycle_then_run", "R03 with a second run after the read_restart run", "run 100\nwrite_restart a.restart\nclear\nread_restart a.restart\n" + K5 + "fix grav all gravity 9.81 vector 0 0 -1\nfix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\nfix integ all nve/sphere\nrun 100\n" + K8 + "run 100\n")
+rr("N05_restart_cycle_neighbor_set", "R03 with neighbor 0.001 bin after read_restart (engine decides)", "run 100\nwrite_restart a.restart\nclear\nread_restart a.restart\nneighbor 0.001 bin\ncomm_modify vel yes\n" + K5 + "fix grav all gravity 9.81 vector 0 0 -1\nfix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\nfix integ all nve/sphere\nrun 100\n")
+rr("N06_big_default_sphere_then_set", "create_atoms 2 single (default 1 m) then set it to 6 mm before the run (engine runs?)", "create_atoms 2 single 0.03 0.03 0.05\nset atom 3 diameter 0.006 density 2500\nrun 10\n")
+rr("N07_overflow_in_if_include", "the overflow set-up comes from an if's include (neigh_modify one 2)", LAY + "if 1 then \"include n.in\"\nrun 100\n", data={"n.in": "neigh_modify page 100 one 2\n"})
+rr("N08_pour_then_overflow_loop", "a loop of runs; pass 2 sets neigh_modify one 2 (overflow on the lattice at pass 2's run)", LAY + "variable i loop 2\nlabel l\nif \"$i == 2\" then \"neigh_modify page 100 one 2\"\nrun 50\nnext i\njump SELF l\n")
+
+# G: 2d decks: density/disc, enforce2d
+def base2d(model=HK, extra=""):
+    return ("units si\ndimension 2\natom_style sphere 1\nboundary p f p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.1 -0.005 0.005 units box\ncreate_box 2 box\n"
+            "pair_style granular\npair_coeff * * " + model + "\nfix grav all gravity 9.81 vector 0 -1 0\nfix floor all wall/gran granular " + model + " yplane 0 NULL\nfix integ all nve/sphere\nfix e2 all enforce2d\ntimestep 1e-5\n"
+            "create_atoms 1 single 0.02 0.01 0\ncreate_atoms 2 single 0.01 0.01 0\n" + extra)
+deck("G01_2d_density_disc", "# 2d: set type 1 diameter 0.004 density/disc 2500, type 2 density 2500 (3d mass)\n" + base2d(extra="set type 1 diameter 0.004 density/disc 2500\nset type 2 diameter 0.006 density 2500\n") + "run 100\n", g=1)
+deck("G02_2d_density_plain", "# 2d: set density 2500 (LAMMPS: 3d sphere mass unless density/disc)\n" + base2d(extra="set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n") + "run 100\n", g=1)
+deck("G03_2d_pour", "# 2d fix pour diam range 0.003 0.005 (disc? sphere mass) type 2\n" + base2d(extra="set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nregion ins block 0.005 0.035 0.05 0.09 -0.005 0.005 units box\nfix p all pour 4 2 4767 region ins diam range 0.003 0.005 dens 2500 2500\n") + "run 2000\n", g=1)
+deck("G04_2d_density_disc_if_include", "# 2d: density/disc set in an if's include\n" + base2d(extra="set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nif 1 then \"include d.in\"\n") + "run 100\n", g=1, data={"d.in": "set type 2 density/disc 2500\n"})
+deck("G05_2d_hertz_material_disc", "# 2d: hertz/material viscoelastic with density/disc\n" + base2d(model=HM, extra="set type 1 diameter 0.004 density/disc 2500\nset type 2 diameter 0.006 density/disc 2500\n") + "run 100\n", g=1)
+
+# A: fix adapt with a constant size factor, and other adapt forms
+rr("A01_adapt_constant_reset_no", "fix adapt 1 atom diameter v_d with d equal 1.5 (constant), reset no", "variable d equal 1.5\nfix ad all adapt 1 atom diameter v_d reset no\nrun 100\n")
+rr("A02_adapt_then_unfix", "fix adapt diameter 1.5 in run 1, unfix (reset no keeps the sizes), kn 5000 run 2", "variable d equal 1.5\nfix ad all adapt 1 atom diameter v_d reset no\nrun 100\nunfix ad\n" + K5 + "run 100\n")
+rr("A03_adapt_reset_yes_unfix", "fix adapt diameter 1.5 reset yes (sizes restored at the end of the run), then run 2", "variable d equal 1.5\nfix ad all adapt 1 atom diameter v_d\nrun 100\nunfix ad\n" + K5 + "run 100\n")
+rr("A04_adapt_pair_granular", "fix adapt pair granular? (engine decides)", "variable k equal 5000\nfix ad all adapt 1 pair granular kn * * v_k\nrun 100\n")
+
+# P: shell cd and relative paths
+rr("P01_shell_cd_include", "shell cd sub; include kn.in opens sub/kn.in (kn 5000), not ./kn.in (kn 8000)", "shell cd sub\ninclude kn.in\nrun 100\n", data={"sub/kn.in": K5, "kn.in": K8})
+rr("P02_shell_cd_back", "shell cd sub; shell cd ..; include kn.in (./kn.in kn 8000)", "shell cd sub\nshell cd ..\ninclude kn.in\nrun 100\n", data={"sub/kn.in": K5, "kn.in": K8})
+rr("P03_jump_var_label", "variable lab string L5; jump SELF ${lab}", "variable lab string L5\njump SELF ${lab}\nlabel L8\n" + K8 + "jump SELF end\nlabel L5\n" + K5 + "label end\nrun 100\n")
+rr("P04_next_two_vars", "next i j on two loops at once; kn 1000*(i+j)+1000: last i 2 j 2 -> 5000", "variable i loop 2\nvariable j loop 2\nlabel l\npair_coeff * * hooke $(1000*(v_i+v_j)+1000) 3000 " + K + "\nrun 10\nnext i j\njump SELF l\n")
+rr("P05_include_clear_rebuild_in_loop", "pass 2 of a loop includes a file that clears and rebuilds the deck with kn 8000 (the loop variable survives clear)",
+   "variable i loop 2\nlabel l\nif \"$i == 2\" then \"include new.in\"\nrun 50\nnext i\njump SELF l\n", data={"new.in": "clear\n" + BASE().replace(HK, hk(8000)) + TWO})
+
+# M: atomfile with a map (redo of V05/V15), mol sets, mixed
+MAP = lambda: BASE().replace("comm_modify vel yes\n", "comm_modify vel yes\natom_modify map array\n")
+deck("M01_atomfile_with_map", "# atom_modify map array; variable d atomfile (ids 1 2 3: 5, 7, 3 mm); set group all diameter v_d\n" + MAP() + TWO + "create_atoms 1 single 0.03 0.03 0.02\nvariable d atomfile d.txt\nset group all diameter v_d\nrun 100\n",
+     g=1, data={"d.txt": "# sizes\n3\n1 0.005\n2 0.007\n3 0.003\n"})
+deck("M02_atomfile_next_loop_map", "# map; atomfile with 2 sets; next d in a loop; type 2 9 mm in pass 2\n" + MAP() + TWO + "variable d atomfile d.txt\nvariable i loop 2\nlabel l\nset group all diameter v_d\nrun 10\nnext d\nnext i\njump SELF l\n",
+     g=1, data={"d.txt": "2\n1 0.004\n2 0.006\n2\n1 0.004\n2 0.009\n"})
+deck("M03_atomfile_density", "# map; atomfile density (id 2 7800) via set density v_r\n" + MAP() + TWO + "variable r atomfile r.txt\nset group all density v_r\nrun 100\n", g=1, data={"r.txt": "2\n1 2500\n2 7800\n"})
+rr("M04_set_mol_region", "fix property/atom mol; set region mol 3; set mol 3 diameter 0.008 (type 1 at x 0.02, region x > 0.015)", "fix pm all property/atom mol ghost yes\nregion rt block 0.015 INF INF INF INF INF units box\nset region rt mol 3\nset mol 3 diameter 0.008\nrun 100\n")
+
+# Q: more hybrid / labels / restyle mixes
+hy("Q01_hybrid_labels_limit_damping", "hybrid granular: small big with limit_damping, gamma 30000 (sticky without it)",
+   "labelmap atom 1 small 2 big\npair_style hybrid granular\npair_coeff * * granular " + HK + "\npair_coeff small big granular hooke 2000 30000 " + K + " limit_damping\n")
+hy("Q02_hybrid_gran_hooke_history_labels_range", "hybrid granular gran/hooke/history: * big gran/hooke/history (1 2, 2 2)",
+   "labelmap atom 1 small 2 big\npair_style hybrid granular gran/hooke/history 5000 NULL 3000 NULL 0.5 1\npair_coeff * * granular " + HK + "\npair_coeff * big gran/hooke/history\n")
+hy("Q03_restyle_hybrid_to_granular", "hybrid granular zero then pair_style granular kn 5000 (restyle clears hybrid)",
+   "pair_style hybrid granular zero 0.01\npair_coeff * * granular " + HK + "\npair_coeff 1 2 zero\npair_style granular\n" + K5)
+hy("Q04_tsuji_labels_mixed", "labels; hertz/material tsuji e 0.5 for small big, hooke for the rest",
+   "labelmap atom 1 small 2 big\npair_style granular\npair_coeff * * " + HK + "\npair_coeff small big hertz/material 1e7 0.5 0.3 damping tsuji " + TL + "\n")
+hy("Q05_coeff_rest_range_three", "3 types: hooke coeff_restitution 0.3 on 1*2 3, mass_velocity elsewhere",
+   "pair_style granular\npair_coeff * * " + HK + "\npair_coeff 1*2 3 hooke 2000 0.3 damping coeff_restitution " + TL + "\n", nt=3)
+hy("Q06_mixing_hertz_material_ranges", "3 types: hertz/material E by type range (1*2 1*2 E 1e7, 3 3 E 5e7): 1 3 and 2 3 mixed",
+   "pair_style granular\npair_coeff 1*2 1*2 " + HM + "\npair_coeff 3 3 hertz/material 5e7 1.4e7 0.3 damping viscoelastic " + TL + "\n", nt=3)
+
+# Y: runs stopped or not, more forms
+rr("Y01_halt_soft_in_include_loop", "loop; pass 2 includes a file adding a soft halt met at once; kn 5000 after the loop", "variable s equal step\nvariable i loop 3\nlabel l\nif \"$i == 2\" then \"include h.in\"\nrun 50\nnext i\njump SELF l\n" + K5 + "run 50\n",
+   data={"h.in": "fix h all halt 5 v_s >= 0 error soft\n"})
+rr("Y02_lost_ignore_then_create", "lost ignore; type 2 thrown out in run 1; create_atoms 2 (default size) + set 8 mm; run", "thermo_modify lost ignore\ngroup t2 type 2\nvelocity t2 set 0 0 100\nrun 300\ncreate_atoms 2 single 0.01 0.01 0.05\nset type 2 diameter 0.008 density 2500\nrun 50\n")
+rr("Y03_timer_timeout_loop_passes", "timer timeout 0:00:01 then a loop of 3 long runs (the first ends by timeout)", "timer timeout 0:00:01 every 1000\nvariable i loop 3\nlabel l\nrun 3000000\nnext i\njump SELF l\n")
+rr("Y04_run_upto_after_halt_continue", "halt continue at 60; run 200 upto; kn 5000; run 300 upto", "variable s equal step\nfix h all halt 10 v_s >= 60 error continue\nrun 100\nunfix h\nrun 200 upto\n" + K5 + "run 300 upto\n")
+rr("Y05_run_every_print_in_loop", "loop of 2 with run 100 every 50 \"print $i\"; kn 5000 on pass 2", "variable i loop 2\nlabel l\nif \"$i == 2\" then \"" + K5.strip() + "\"\nrun 100 every 50 \"print 'pass $i'\"\nnext i\njump SELF l\n")
+rr("Y06_halt_hard_never_met_many", "fix halt error hard never met over a loop of 5 runs; kn 5000 last", "variable s equal step\nfix h all halt 10 v_s > 100000 error hard\nvariable i loop 5\nlabel l\nrun 40\nnext i\njump SELF l\n" + K5 + "run 10\n")
+rr("Y07_lost_error_pff_loop", "boundary with f: a loop whose pass 2 throws type 2 up (Lost atoms at pass 2)", "group t2 type 2\nvariable i loop 3\nlabel l\nif \"$i == 2\" then \"velocity t2 set 0 0 100\"\nrun 200\nnext i\njump SELF l\n")
+
+# Z: units with walls, gravity and format
+deck("Z01_cgs_wall_gravity_g100", "# units cgs hooke pair and wall kn 5e6, gravity 981; --g 100\n" + ub("cgs", "hooke 5e6 3000 " + K, "0 4 0 4 0 10", (0.4, 0.6, 2.5, 2.5)) + "fix grav all gravity 981 vector 0 0 -1\ntimestep 1e-5\nrun 100\n", g="100")
+deck("Z02_lj_format_kn", "# units lj, kn $(4000/2:%.0f) = 2000, --g 1\n" + ub("lj", "hooke 2000 3 " + K, "0 10 0 10 0 20", (1, 1.5, 1, 1)) + "pair_coeff * * hooke $(5000/2:%.0f) 3 " + K + "\ntimestep 1e-4\nrun 100\n", g="1")
+deck("Z03_micro_include_if_dt", "# units micro hertz/material; timestep from an if's include (2e-2: coarse?)\n" + ub("micro", "hertz/material 1e4 1.4e-5 0.3 damping viscoelastic " + TL, "0 400 0 400 0 1000", (40, 60, 2.5e-6, 2.5e-6)) + "timestep 1e-3\nif 1 then \"include t.in\"\nrun 100\n", g="1", data={"t.in": "timestep 2e-2\n"})
+deck("Z04_cgs_tsuji_g_list", "# units cgs hertz/material tsuji e 0.5 (eps depends on speed? no: tsuji), --g '10 100 1000'\n" + ub("cgs", "hertz/material 1e8 0.5 0.3 damping tsuji " + TL, "0 4 0 4 0 10", (0.4, 0.6, 2.5, 2.5)) + "timestep 1e-5\nrun 100\n", g="10 100 1000")
+deck("Z05_lj_pour_range", "# units lj: pour diam range 0.5 1.0 type 2, hooke kn 2000 gamma 3 mass_velocity, --g 1\n" + ub("lj", "hooke 2000 3 " + K, "0 10 0 10 0 20", (1, 1.5, 1, 1)) + "fix grav all gravity 1 vector 0 0 -1\nregion ins block 1 9 1 9 10 18 units box\nfix p all pour 5 2 4767 region ins diam range 0.5 1.0 dens 1 1\ntimestep 1e-3\nrun 3000\n", g="1")
+
+# LIGGGHTS, second set
+LT2 = lambda e=(0.6, 0.5, 0.5): LH2() + E2(*e)
+L("L28_include_e_file_walls2", "# LIGGGHTS: e matrix in an include (plain), walls type 2, e 0.35/0.8\n" + LH2() + "include mat.in\n" + m.HERTZ + W2 + A1 + LR, g=1, data={"mat.in": E2(0.35, 0.8, 0.9)})
+L("L29_unfix_wall_liggghts", "# LIGGGHTS: wall e12 0.4; unfix wprim; new wall type 2 hooke? no: hertz again, e via matrix 0.4; run 2 (engine decides)\n" + LT2((0.6, 0.4, 0.9)) + m.HERTZ + W2 + A1 + m.LRUN + "run 100\nunfix wprim\nfix wp2 all wall/gran model hertz tangential history primitive type 2 zplane 0.0\n" + E2(0.6, 0.25, 0.9) + "run 100\n", g=1)
+L("L30_exclude_liggghts_type1", "# LIGGGHTS: neigh_modify exclude type 1 1 (atoms type 1 only): 1 1 cannot meet; wall row stays\n" + LT2() + "neigh_modify exclude type 1 1\n" + m.HERTZ + W2 + A1 + LR, g=1)
+L("L31_hooke_stiffness_matrices", "# LIGGGHTS hooke/stiffness: kn 2000 gamman 3000? (engine decides eps)\n" + LH2() + "fix k1 all property/global kn peratomtypepair 2 2000 2000 2000 2000\nfix k2 all property/global kt peratomtypepair 2 2000 2000 2000 2000\n"
+  + "fix k3 all property/global gamman peratomtypepair 2 10 10 10 10\nfix k4 all property/global gammat peratomtypepair 2 10 10 10 10\npair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+  + "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.0\n" + A1 + LR, g=1)
+L("L32_if_string_compare_liggghts", "# LIGGGHTS: variable mode string soft; if \"${mode} == soft\" then e 0.3 (string compare in LIGGGHTS' if?)\n" + LT2() + "variable mode string soft\nif \"${mode} == soft\" then \"" + E2(0.3, 0.3, 0.3).strip() + "\"\n" + m.HERTZ + W2 + A1 + LR, g=1)
+L("L33_run_upto_e_change", "# LIGGGHTS: run 300 upto, e 0.3, run 600 upto\n" + LT2() + m.HERTZ + W2 + A1 + m.LRUN + "run 300 upto\n" + E2(0.3, 0.3, 0.3) + "run 600 upto\n", g=1)
+L("L34_e_matrix_continuation", "# LIGGGHTS: e matrix split over lines with &\n" + LH2() + "fix m3 all property/global coefficientRestitution peratomtypepair 2 &\n  0.65 0.45 &\n  0.45 0.9\n" + m.HERTZ + W2 + A1 + LR, g=1)
+L("L35_mesh_type3_and_primitive_type2", "# LIGGGHTS 3 types: mesh floor type 3 (e13 0.7), primitive cylinder type 2 (e12 0.5), atoms type 1\n" + m.lhead() + m.MAT3 + m.E3 + m.HERTZ
+  + "fix cad all mesh/surface file floor.stl type 3\nfix wm all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\nfix wc all wall/gran model hertz tangential history primitive type 2 zcylinder 0.04 0 0\n" + A1 + LR, g=1, data={"floor.stl": STL})
+L("L36_freeze_then_unfix", "# LIGGGHTS: fix freeze on atom 1 in run 1, unfixed for run 2 with e 0.3\n" + LT2() + m.HERTZ + W2 + A1 + m.LRUN + "group g1 id 1\nfix fz g1 freeze\nrun 100\nunfix fz\n" + E2(0.3, 0.3, 0.3) + "run 100\n", g=1)
+L("L37_hertz_limitForce_loop", "# LIGGGHTS: loop of 2 runs; pass 2 restyles the pair with limitForce on (e 0.3)\n" + LT2((0.3, 0.3, 0.3)) + m.HERTZ + W2 + A1 + m.LRUN
+  + "variable i loop 2\nlabel l\nif \"$i == 2\" then \"pair_style gran model hertz tangential history limitForce on\" \"pair_coeff * *\"\nrun 100\nnext i\njump SELF l\n", g=1)
+L("L38_e_one_hertz_walls_mesh", "# LIGGGHTS hertz e 1.0 with a mesh wall type 2\n" + LT2((1.0, 1.0, 1.0)) + m.HERTZ + "fix cad all mesh/surface file floor.stl type 2\nfix wm all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n" + A1 + LR, g=1, data={"floor.stl": STL})
+L("L39_variable_e_equal_delayed", "# LIGGGHTS: variable a equal 0.2; e matrix ${a}; a redefined 0.7 after (no effect)\n" + LH2() + "variable a equal 0.2\nfix m3 all property/global coefficientRestitution peratomtypepair 2 ${a} ${a} ${a} ${a}\nvariable a equal 0.7\n" + m.HERTZ + W2 + A1 + LR, g=1)
+L("L40_two_atom_types_insert_walls3_cohesion_off", "# LIGGGHTS types 1 2 atoms, wall type 3, hooke characteristicVelocity, e matrix E3\n" + m.lhead() + m.MAT3 + m.E3 + "fix m4 all property/global characteristicVelocity scalar 2.\n" + m.HOOKE
+  + "fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0\n" + m.ATOMS + LR, g=1)
+
+
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
           ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
