@@ -455,6 +455,22 @@ L("L40_two_atom_types_insert_walls3_cohesion_off", "# LIGGGHTS types 1 2 atoms, 
   + "fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0\n" + m.ATOMS + LR, g=1)
 
 
+# ================================================================ third set: hybrid with one granular sub-style, none (after T07/T14)
+HN = "pair_style hybrid granular\npair_coeff * * granular " + HK + "\n"
+hy("T17_hybrid_one_none_numeric", "hybrid granular (one sub-style); pair_coeff 1 2 none (numeric)", HN + "pair_coeff 1 2 none\n")
+hy("T18_hybrid_one_none_11", "hybrid granular (one sub-style); pair_coeff 1 1 none", HN + "pair_coeff 1 1 none\n")
+hy("T19_hybrid_overlay_one_none", "hybrid/overlay granular (one sub-style); pair_coeff 1 2 none", "pair_style hybrid/overlay granular\npair_coeff * * granular " + HK + "\npair_coeff 1 2 none\n")
+hy("T20_hybrid_one_star_none_then_11", "hybrid granular; pair_coeff * * none then 1 1 and 2 2 granular (1 2 never granular: engine decides)",
+   "pair_style hybrid granular\npair_coeff * * none\npair_coeff 1 1 granular " + HK + "\npair_coeff 2 2 granular " + hk(8000) + "\n")
+hy("T21_hybrid_one_none_in_if_include", "hybrid granular; 1 2 none from an if's include", HN + "if 1 then \"include n.in\"\n", data={"n.in": "pair_coeff 1 2 none\n"})
+hy("T22_hybrid_one_none_3types", "3 types, hybrid granular; pair_coeff 2*3 3 none (2 3 and 3 3)", HN + "pair_coeff 2*3 3 none\n", nt=3)
+hy("T23_hybrid_two_styles_none_reassigned", "hybrid granular gran/hooke: 1 2 none then 1 2 gran/hooke (kn 5000)", "pair_style hybrid granular gran/hooke 5000 NULL 3000 NULL 0.5 1\npair_coeff * * granular " + HK + "\npair_coeff 1 2 none\npair_coeff 1 2 gran/hooke\n")
+hy("T24_hybrid_one_none_exclude_none", "hybrid granular; 1 2 none; neigh_modify exclude type 1 2 then exclude none", HN + "pair_coeff 1 2 none\nneigh_modify exclude type 1 2\nneigh_modify exclude none\n")
+hy("T25_hybrid_one_gran_hooke_none", "hybrid gran/hooke/history (one old sub-style); pair_coeff 1 2 none", "pair_style hybrid gran/hooke/history 2000 NULL 3000 NULL 0.5 1\npair_coeff * * gran/hooke/history\npair_coeff 1 2 none\n")
+hy("T26_hybrid_one_restyle_plain", "hybrid granular with 1 2 none, then pair_style granular (restyle) kn 5000", HN + "pair_coeff 1 2 none\npair_style granular\n" + K5)
+rr("T27_hybrid_one_none_between_runs", "run with plain granular; then pair_style hybrid granular with 1 2 none; run", "run 50\n" + HN + "pair_coeff 1 2 none\nrun 50\n")
+
+
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
           ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
