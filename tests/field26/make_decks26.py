@@ -471,6 +471,53 @@ hy("T26_hybrid_one_restyle_plain", "hybrid granular with 1 2 none, then pair_sty
 rr("T27_hybrid_one_none_between_runs", "run with plain granular; then pair_style hybrid granular with 1 2 none; run", "run 50\n" + HN + "pair_coeff 1 2 none\nrun 50\n")
 
 
+# ================================================================ fourth set: lattice units of regions (wall curvature), mixing of unlike models
+HMW = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic " + TL
+def fbase(extra_wall, lat="", model=HMW):
+    return ("units si\natom_style sphere 1\nboundary f f f\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.1 units box\ncreate_box 2 box\n" + lat
+            + "pair_style granular\npair_coeff * * " + model + "\nfix grav all gravity 9.81 vector 0 0 -1\nfix floor all wall/gran granular " + model + " zplane 0 NULL\n"
+            + extra_wall + "\nfix integ all nve/sphere\ntimestep 1e-5\n"
+            + "create_atoms 1 single 0.02 0.02 0.01 units box\ncreate_atoms 2 single 0.012 0.02 0.01 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\nrun 100\n")
+deck("RU01_cyl_region_lattice_units", "# lattice sc 0.5 (scale 0.5); region cylinder z 0.04 0.04 0.038 0 0.2 in lattice units (= 0.02 0.02 r 0.019 box); wall/gran/region hertz/material\n"
+     + fbase("region cyl cylinder z 0.04 0.04 0.038 0 0.2 side in\nfix cw all wall/gran/region granular " + HMW + " region cyl", lat="lattice sc 0.5\n"), g=1)
+deck("RU02_cyl_region_box_units", "# RU01 with the region in box units (control)\n"
+     + fbase("region cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box\nfix cw all wall/gran/region granular " + HMW + " region cyl"), g=1)
+deck("RU03_sphere_region_lattice_units", "# lattice sc 0.5; region sphere 0.04 0.04 0.1 0.1 side in (lattice units: centre 0.02 0.02 0.05 r 0.05); wall hertz/material\n"
+     + fbase("region ball sphere 0.04 0.04 0.1 0.1 side in\nfix bw all wall/gran/region granular " + HMW + " region ball", lat="lattice sc 0.5\n"), g=1)
+deck("RU04_zcylinder_hertz", "# fix wall/gran zcylinder 0.019 (box f f f) hertz/material: curvature 0.019 m\n"
+     + fbase("fix cw all wall/gran granular " + HMW + " zcylinder 0.019").replace("create_atoms 1 single 0.02 0.02", "create_atoms 1 single 0.025 0.02"), g=1)
+deck("RU05_cyl_lattice_fcc", "# lattice fcc 0.4 (si: the lattice constant 0.4, scale for regions 0.4); region cylinder 0.05 0.05 0.0475 in lattice units -> 0.02 0.02 0.019\n"
+     + fbase("region cyl cylinder z 0.05 0.05 0.0475 0 0.25 side in\nfix cw all wall/gran/region granular " + HMW + " region cyl", lat="lattice fcc 0.4\n"), g=1)
+deck("RU06_sphere_obstacle_out_hertz", "# region sphere side out (a 5 mm ball obstacle) hertz/material, units box\n"
+     + fbase("region ball sphere 0.03 0.03 0.06 0.005 side out units box\nfix bw all wall/gran/region granular " + HMW + " region ball"), g=1)
+deck("RU07_cyl_lattice_in_include", "# the lattice command in an if's include; region cylinder in lattice units in the deck\n"
+     + fbase("if 1 then \"include lat.in\"\nregion cyl cylinder z 0.04 0.04 0.038 0 0.2 side in\nfix cw all wall/gran/region granular " + HMW + " region cyl"), g=1, data={"lat.in": "lattice sc 0.5\n"})
+deck("RU08_cyl_lattice_changed_after", "# region cylinder defined in lattice units of lattice sc 0.5; a later lattice sc 2 does not move it\n"
+     + fbase("region cyl cylinder z 0.04 0.04 0.038 0 0.2 side in\nlattice sc 2\nfix cw all wall/gran/region granular " + HMW + " region cyl", lat="lattice sc 0.5\n"), g=1)
+hy("MX01_mixed_damping_models", "pair_coeff 1 1 hooke mass_velocity, 2 2 hooke tsuji 0.5: 1 2 mixed? (engine decides)",
+   "pair_style granular\npair_coeff 1 1 " + HK + "\npair_coeff 2 2 hooke 2000 0.5 damping tsuji " + TL + "\n")
+hy("MX02_mixed_normal_models", "pair_coeff 1 1 hooke, 2 2 hertz/material: 1 2 mixed? (engine decides)",
+   "pair_style granular\npair_coeff 1 1 " + HK + "\npair_coeff 2 2 " + HMW + "\n")
+hy("MX03_mixed_hertzmat_poisson", "pair_coeff 1 1 hertz/material E 1e7 nu 0.3, 2 2 E 1e7 nu 0.45: 1 2 mixed",
+   "pair_style granular\npair_coeff 1 1 " + HMW + "\npair_coeff 2 2 hertz/material 1e7 1.4e7 0.45 damping viscoelastic " + TL + "\n")
+hy("MX04_mixed_coeff_rest", "pair_coeff 1 1 hooke coeff_restitution 0.3, 2 2 hooke coeff_restitution 0.8: 1 2 mixed (geometric 0.49?)",
+   "pair_style granular\npair_coeff 1 1 hooke 2000 0.3 damping coeff_restitution " + TL + "\npair_coeff 2 2 hooke 8000 0.8 damping coeff_restitution " + TL + "\n")
+
+
+# ================================================================ fifth set: more set-up errors of the last run
+rr("N09_set_z_outside_last_run", "set atom 2 z 0.5 (outside the f face at 0.1) before the last run: lost at its set-up", "set atom 2 z 0.5\nrun 100\n")
+rr("N10_set_z_outside_then_run", "N09 with another run after", "set atom 2 z 0.5\nrun 100\n" + K5 + "run 100\n")
+rr("N11_set_z_outside_lost_ignore", "N09 with thermo_modify lost ignore (LAMMPS drops it and runs)", "thermo_modify lost ignore\nset atom 2 z 0.5\nrun 100\n")
+rr("N12_big_default_sphere_lost_ignore", "S02 with thermo_modify lost ignore", "thermo_modify lost ignore\ncreate_atoms 2 single 0.03 0.03 0.05\nrun 10\n")
+rr("N13_restart_cycle_comm_only", "R03 with comm_modify vel yes after read_restart (no neighbor command)", "run 100\nwrite_restart a.restart\nclear\nread_restart a.restart\ncomm_modify vel yes\n" + K5 + "fix grav all gravity 9.81 vector 0 0 -1\nfix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\nfix integ all nve/sphere\nrun 100\n")
+rr("N14_restart_cycle_neighbor_only", "R03 with neighbor 0.001 bin after read_restart (no comm_modify)", "run 100\nwrite_restart a.restart\nclear\nread_restart a.restart\nneighbor 0.001 bin\n" + K5 + "fix grav all gravity 9.81 vector 0 0 -1\nfix floor all wall/gran granular " + hk(5000) + " zplane 0 NULL\nfix integ all nve/sphere\nrun 100\n")
+
+rr("N15_set_big_sphere_lost_ignore", "lost ignore; set atom 2 diameter 0.5 (a 0.5 m sphere in a 4 cm periodic box); run", "thermo_modify lost ignore\nset atom 2 diameter 0.5\nrun 10\n")
+rr("N16_set_big_sphere", "set atom 2 diameter 0.5; run (engine decides)", "set atom 2 diameter 0.5\nrun 10\n")
+rr("N17_big_sphere_fff_lost_ignore", "box f f f, lost ignore, set atom 2 diameter 0.5; run", "change_box all boundary f f f\nthermo_modify lost ignore\nset atom 2 diameter 0.5\nrun 10\n")
+rr("N18_big_sphere_lost_ignore_then_run", "N15 then kn 5000 and another run", "thermo_modify lost ignore\nset atom 2 diameter 0.5\nrun 10\n" + K5 + "run 10\n")
+
+
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
           ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
