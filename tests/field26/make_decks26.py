@@ -517,6 +517,21 @@ rr("N16_set_big_sphere", "set atom 2 diameter 0.5; run (engine decides)", "set a
 rr("N17_big_sphere_fff_lost_ignore", "box f f f, lost ignore, set atom 2 diameter 0.5; run", "change_box all boundary f f f\nthermo_modify lost ignore\nset atom 2 diameter 0.5\nrun 10\n")
 rr("N18_big_sphere_lost_ignore_then_run", "N15 then kn 5000 and another run", "thermo_modify lost ignore\nset atom 2 diameter 0.5\nrun 10\n" + K5 + "run 10\n")
 
+rr("N19_deposit_default_size_lost_ignore", "lost ignore; fix deposit of type 2 without a size (LAMMPS default diameter 1 m) across two runs; kn 5000 last", "thermo_modify lost ignore\n" + INS + "fix dp all deposit 2 2 100 12345 region ins near 0.007 vz -0.1 -0.1\nrun 300\n" + K5 + "run 100\n")
+rr("N20_random_default_size_lost_ignore", "lost ignore; create_atoms 2 random 2 with no set (1 m default); one run", "thermo_modify lost ignore\nregion top block 0.005 0.035 0.005 0.035 0.05 0.09 units box\ncreate_atoms 2 random 2 777 top\nrun 10\n")
+
+
+# ================================================================ sixth set: cutoffs smaller than the contact, hybrid one sub-style with excludes
+hy("CU01_pair_cutoff_small_12", "pair_coeff 1 2 hooke ... cutoff 0.001 (below the 5 mm contact distance): engine decides whether 1 2 meet",
+   "pair_style granular\npair_coeff * * " + HK + "\npair_coeff 1 2 " + HK + " cutoff 0.001\n")
+hy("CU02_global_cutoff_small", "pair_style granular 0.001 (a global cutoff below every contact distance)", "pair_style granular 0.001\npair_coeff * * " + HK + "\n")
+hy("CU03_pair_cutoff_large", "pair_coeff * * ... cutoff 0.02 (above the contact)", "pair_style granular\npair_coeff * * " + HK + " cutoff 0.02\n")
+hy("CU04_cutoff_small_in_if_include", "cutoff 0.001 for 2 2 from an if's include", "pair_style granular\npair_coeff * * " + HK + "\nif 1 then \"include c.in\"\n", data={"c.in": "pair_coeff 2 2 " + HK + " cutoff 0.001\n"})
+hy("CU05_gran_hooke_history_no_cutoff_kw", "gran/hooke/history with limit_damping (control for CU)", "pair_style gran/hooke/history 2000 NULL 3000 NULL 0.5 1 limit_damping\npair_coeff * *\n")
+hy("CU06_hybrid_one_exclude_11", "hybrid granular (one sub-style) + neigh_modify exclude type 1 1", HN + "neigh_modify exclude type 1 1\n")
+hy("CU07_hybrid_two_granular_none_labels_loop", "hybrid granular granular; labels; none on small big set in pass 2 of a loop", "labelmap atom 1 small 2 big\npair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + "\npair_coeff 2 2 granular 2 " + hk(5000) + "\n",
+   atoms=TWO + "variable i loop 2\nlabel l\nif \"$i == 2\" then \"pair_coeff small big none\"\nrun 20\nnext i\njump SELF l\n")
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
