@@ -532,6 +532,85 @@ hy("CU06_hybrid_one_exclude_11", "hybrid granular (one sub-style) + neigh_modify
 hy("CU07_hybrid_two_granular_none_labels_loop", "hybrid granular granular; labels; none on small big set in pass 2 of a loop", "labelmap atom 1 small 2 big\npair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + "\npair_coeff 2 2 granular 2 " + hk(5000) + "\n",
    atoms=TWO + "variable i loop 2\nlabel l\nif \"$i == 2\" then \"pair_coeff small big none\"\nrun 20\nnext i\njump SELF l\n")
 
+rr("CU08_neigh_include_group", "atom_modify first g1? no: neigh_modify include g1 (group of type 1): pairs only with atoms of g1 (engine decides 1 2, 2 2)",
+   "group g1 type 1\nneigh_modify include g1\nrun 100\n")
+deck("CU09_neigh_include_first", "# atom_modify first g1 before the box, neigh_modify include g1 (the documented way)\n" + BASE().replace("boundary p p f\n", "boundary p p f\natom_modify first g1\n") + TWO + "group g1 type 1\nneigh_modify include g1\nrun 100\n", g=1)
+
+
+# ================================================================ seventh set: neighbour settings (pairs found late)
+rr("NB01_skin_zero_every20_nocheck", "neighbor 0.0 bin; neigh_modify every 20 delay 0 check no: pairs found up to 20 steps late", "neighbor 0.0 bin\nneigh_modify every 20 delay 0 check no\nrun 100\n")
+rr("NB02_skin_small_check_yes", "neighbor 0.0001 bin; neigh_modify every 1 delay 0 check yes (fine)", "neighbor 0.0001 bin\nneigh_modify every 1 delay 0 check yes\nrun 100\n")
+rr("NB03_every50_nocheck_default_skin", "neigh_modify every 50 delay 0 check no (skin 0.001 default)", "neigh_modify every 50 delay 0 check no\nrun 100\n")
+rr("NB04_once", "neigh_modify once yes (lists built once per run)", "neigh_modify once yes\nrun 100\n")
+rr("NB05_skin_zero_in_if_include", "neighbor 0.0 bin + every 20 check no from an if's include", "if 1 then \"include nb.in\"\nrun 100\n", data={"nb.in": "neighbor 0.0 bin\nneigh_modify every 20 delay 0 check no\n"})
+
+
+# ================================================================ eighth set: research-like decks mixing the classes
+TSU = "hertz/material 1e8 0.6 0.3 damping tsuji tangential mindlin NULL 1.0 0.5"
+CR = "hertz/material 1e8 0.5 0.3 damping coeff_restitution tangential mindlin NULL 1.0 0.5 limit_damping"
+deck("RL01_pour_two_types_cylinder_three_runs", "# pour of 2 types (diam poly) into a cylinder region wall (tsuji), floor coeff_restitution, 3 runs: pour, settle, wiggle floor\n"
+     "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.12 units box\ncreate_box 2 box\nneighbor 0.001 bin\nneigh_modify delay 0\n"
+     "pair_style granular\npair_coeff * * " + TSU + "\npair_coeff 2 2 " + TSU.replace("0.6 0.3", "0.8 0.3") + "\n"
+     "region cyl cylinder z 0.02 0.02 0.018 0 0.12 side in open 1 open 2 units box\nfix cw all wall/gran/region granular " + TSU + " region cyl\n"
+     "fix floor all wall/gran granular " + CR + " zplane 0 NULL\nfix grav all gravity 9.81 vector 0 0 -1\nfix integ all nve/sphere\ntimestep 2e-6\n"
+     "region ins cylinder z 0.02 0.02 0.014 0.06 0.11 units box\nfix p1 all pour 20 1 4767 region ins diam poly 2 0.002 0.5 0.003 0.5 dens 2500 2500\nfix p2 all pour 10 2 4768 region ins diam one 0.004 dens 7800 7800\n"
+     "run 20000\nunfix p1\nunfix p2\nrun 10000\nunfix floor\nfix floor all wall/gran granular " + CR + " zplane 0 NULL wiggle z 0.0005 0.01\nrun 5000\n", g="0.3 1 3")
+deck("RL02_read_data_labels_hybrid_loop_index", "# read_data with type labels (glass, steel), hybrid granular granular, a loop over kn by an index variable, region block wall\n"
+     "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data d.data\npair_style hybrid granular granular\n"
+     "variable kn index 3000 6000\nlabel l\npair_coeff * * granular 1 hooke ${kn} 3000 " + K + "\npair_coeff steel steel granular 2 hooke 9000 3000 " + K + "\n"
+     "region con block 0 0.04 0 0.04 0 0.1 side in units box\nfix cw all wall/gran/region granular " + HK + " region con\nfix grav all gravity 9.81 vector 0 0 -1\nfix integ all nve/sphere\ntimestep 1e-5\nrun 200\nunfix cw\nnext kn\njump SELF l\n",
+     g=1, data={"d.data": "# spheres\n\n3 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtom Type Labels\n\n1 glass\n2 steel\n\nAtoms # sphere\n\n1 glass 0.004 2500 0.01 0.02 0.02\n2 steel 0.006 7800 0.03 0.02 0.02\n3 glass 0.005 2500 0.02 0.03 0.03\n"})
+deck("RL03_drum_rotating_cylinder", "# rotating drum: region cylinder y rotating (variable defined first), hertz/material tsuji wall, box f f f\n"
+     "units si\natom_style sphere 1\nboundary f f f\ncomm_modify vel yes\nregion box block 0 0.06 0 0.02 0 0.06 units box\ncreate_box 2 box\n"
+     "pair_style granular\npair_coeff * * " + TSU + "\nvariable th equal 2*PI*0.5*time\nregion drum cylinder y 0.03 0.03 0.028 0 0.02 side in rotate v_th 0.03 0 0.03 0 1 0 units box\n"
+     "fix dw all wall/gran/region granular " + TSU + " region drum\nfix grav all gravity 9.81 vector 0 0 -1\nfix integ all nve/sphere\ntimestep 2e-6\n"
+     "region fill block 0.015 0.045 0.002 0.018 0.01 0.03 units box\ncreate_atoms 1 random 20 4242 fill overlap 0.005\ncreate_atoms 2 random 10 4343 fill overlap 0.005\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.003 density 7800\nrun 2000\n", g=1)
+deck("RL04_type_fraction_then_sizes", "# lattice of type 1, set type 1 type/fraction 2 0.5 (half become type 2), then sizes per type, chute gravity, yplane wall\n"
+     "units si\natom_style sphere 1\nboundary p f p\ncomm_modify vel yes\nregion box block 0 0.05 0 0.1 0 0.01 units box\ncreate_box 2 box\nlattice sc 0.006\nregion lay block 0.003 0.047 0.01 0.05 0.003 0.007 units box\ncreate_atoms 1 region lay\n"
+     "set type 1 type/fraction 2 0.5 12393\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.005 density 2500\n"
+     "pair_style granular\npair_coeff * * " + CR + "\nfix grav all gravity 9.81 chute 20\nfix wall all wall/gran granular " + CR + " yplane 0 NULL\nfix integ all nve/sphere\ntimestep 2e-6\nrun 1000\n", g=1)
+deck("RL05_cgs_realistic_region_walls", "# units cgs: hertz/material E 1e9 dyne/cm2 tsuji, gravity 981, region cylinder wall, pour diam range 0.2 0.4 cm; --g '30 100 300'\n"
+     "units cgs\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nregion box block 0 4 0 4 0 12 units box\ncreate_box 1 box\nneighbor 0.05 bin\n"
+     "pair_style granular\npair_coeff * * hertz/material 1e9 0.6 0.3 damping tsuji tangential mindlin NULL 1.0 0.5\nregion cyl cylinder z 2 2 1.9 0 12 side in open 1 open 2 units box\n"
+     "fix cw all wall/gran/region granular hertz/material 1e9 0.6 0.3 damping tsuji tangential mindlin NULL 1.0 0.5 region cyl\nfix floor all wall/gran granular hertz/material 1e9 0.6 0.3 damping tsuji tangential mindlin NULL 1.0 0.5 zplane 0 NULL\n"
+     "fix grav all gravity 981 vector 0 0 -1\nfix integ all nve/sphere\ntimestep 2e-6\nregion ins cylinder z 2 2 1.5 6 11 units box\nfix p all pour 30 1 4767 region ins diam range 0.2 0.4 dens 2.5 2.5\nrun 5000\n", g="30 100 300")
+deck("RL06_write_data_read_pour_more", "# a settle run, write_data, clear, read_data (pair coeffs from the file? no: nocoeff) + a new pour of type 2, kn 5000\n"
+     + BASE() + TWO + "run 100\nwrite_data s.data nocoeff\nclear\nunits si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data s.data\npair_style granular\n" + K5 + GRAV + FLOOR + TAIL
+     + INS + "fix p all pour 3 2 4767 region ins diam one 0.003 dens 7800 7800\nrun 2000\n", g=1)
+L("RL07_liggghts_three_materials_mesh", "# LIGGGHTS: 3 types, types 1 2 particles (insert/pack), type 3 mesh floor and primitive cylinder, e matrix via variables, settle then mesh moves\n"
+  + m.lhead() + m.MAT3 + "variable e11 equal 0.55\nvariable e12 equal 0.45\nvariable e22 equal 0.35\nfix m3 all property/global coefficientRestitution peratomtypepair 3 ${e11} ${e12} 0.7 ${e12} ${e22} 0.6 0.7 0.6 0.9\n"
+  + m.HERTZ + "fix cad all mesh/surface file floor.stl type 3\nfix wm all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\nfix wc all wall/gran model hertz tangential history primitive type 3 zcylinder 0.045 0 0\n"
+  + "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\nfix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 7800 radius constant 0.003\n"
+  + "fix pdd1 all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\nregion bc block -0.03 0.03 -0.03 0.03 0.02 0.1 units box\n" + m.LRUN
+  + "fix ins all insert/pack seed 32452867 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 20 region bc\nrun 2000\nfix mv all move/mesh mesh cad linear 0. 0. 0.01\nrun 1000\n",
+  g="0.5 1 2", data={"floor.stl": STL})
+deck("RL08_labels_three_types_tsuji_mixing_walls", "# labels a b c: per-pair tsuji e (a a 0.9, b b 0.5, c c 0.3) and explicit a c 0.6; b c mixed by LAMMPS; zplane wall with coeff_restitution\n"
+     + head(3) + "labelmap atom 1 a 2 b 3 c\npair_style granular\npair_coeff a a " + TSU.replace("0.6 0.3", "0.9 0.3") + "\npair_coeff b b " + TSU.replace("0.6 0.3", "0.5 0.3") + "\npair_coeff c c " + TSU.replace("0.6 0.3", "0.3 0.3") + "\npair_coeff a b " + TSU.replace("0.6 0.3", "0.7 0.3") + "\npair_coeff a c " + TSU + "\n"
+     + GRAV + "fix floor all wall/gran granular " + CR + " zplane 0 NULL\n" + TAIL + THREE + "run 100\n", g="0.3 1 3")
+
+
+# ================================================================ ninth set: a pour after clear (after RL06)
+POUR7800 = INS + "fix p all pour 3 2 4767 region ins diam one 0.003 dens 7800 7800\n"
+REBUILD = lambda model=HK: "clear\n" + BASE(model) + TWO
+rr("CL01_clear_rebuild_pour_last_run", "run; clear; the deck rebuilt by commands (kn 2000); fix pour of 3 type 2 spheres 3 mm 7800 in the last run", "run 100\n" + REBUILD() + POUR7800 + "run 2000\n")
+rr("CL02_clear_read_data_pour_last_run", "run; write_data; clear; read_data; fix pour type 2 3 mm 7800 in the last run (RL06 without the kn change)", "run 100\nwrite_data s.data nocoeff\nclear\nunits si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data s.data\npair_style granular\npair_coeff * * " + HK + "\n" + GRAV + FLOOR + TAIL + POUR7800 + "run 2000\n")
+rr("CL03_clear_pour_then_run", "CL01 with one more run after the pour run (made for real)", "run 100\n" + REBUILD() + POUR7800 + "run 2000\nrun 100\n")
+rr("CL04_clear_pour_type1_range", "run; clear; rebuild; fix pour of type 1 diam range 0.002 0.006 dens 1000 7800 in the last run", "run 100\n" + REBUILD() + INS + "fix p all pour 4 1 4767 region ins diam range 0.002 0.006 dens 1000 7800\nrun 2000\n")
+rr("CL05_clear_in_if_include_pour", "an if's include clears and rebuilds; the deck then pours type 2 (3 mm 7800) in its last run", "run 100\nif 1 then \"include new.in\"\n" + POUR7800 + "run 2000\n", data={"new.in": REBUILD()})
+rr("CL06_no_clear_pour_control", "control: the same pour in the last run without clear", "run 100\n" + POUR7800 + "run 2000\n")
+rr("CL07_clear_pour_in_first_sim_only", "a pour in the first simulation, clear, rebuild without a pour: the pour must not leak into the second", POUR7800 + "run 2000\n" + REBUILD() + "run 100\n")
+
+LCL = lambda: LT2((0.6, 0.5, 0.5)) + m.HERTZ + W2 + A1 + m.LRUN
+L("CL08_liggghts_clear_insert_type2", "# LIGGGHTS: run; clear; rebuild (3 types: e 0.6 0.5 0.7 / 0.5 0.4 0.45 ...); insert/pack of type 2 spheres in the last run\n" + LCL() + "run 100\nclear\n"
+  + m.lhead() + m.MAT3 + m.E3 + m.HERTZ + m.WALL3 + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+  + "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1500 radius constant 0.003\nfix pdd all particledistribution/discrete 32452843 1 pts2 1.0\nregion bc block -0.03 0.03 -0.03 0.03 0.02 0.1 units box\n"
+  + m.LRUN + "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes all_in yes particles_in_region 5 region bc\nrun 1000\n", g=1)
+L("CL09_liggghts_insert_type2_no_clear", "# control of CL08 without clear\n" + m.lhead() + m.MAT3 + m.E3 + m.HERTZ + m.WALL3 + "create_atoms 1 single 0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\n"
+  + "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1500 radius constant 0.003\nfix pdd all particledistribution/discrete 32452843 1 pts2 1.0\nregion bc block -0.03 0.03 -0.03 0.03 0.02 0.1 units box\n"
+  + m.LRUN + "run 100\nfix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes all_in yes particles_in_region 5 region bc\nrun 1000\n", g=1)
+rr("CL10_clear_deposit_last_run", "run; clear; rebuild; fix deposit of type 2 (diameter set by a set in the first run? no: default) then set type 2 diameter after a short run", "run 100\n" + REBUILD() + INS + "fix dp all deposit 2 2 50 777 region ins near 0.007 vz -0.1 -0.1\nrun 120\nset type 2 diameter 0.003 density 7800\nrun 500\n")
+rr("CL11_clear_create_random_last_run", "run; clear; rebuild; create_atoms 2 random 3 (3 mm 7800 by set) before the last run (the pass makes them)", "run 100\n" + REBUILD() + "region top block 0.005 0.035 0.005 0.035 0.05 0.09 units box\ncreate_atoms 2 random 3 999 top overlap 0.004\nset type 2 diameter 0.003 density 7800\nrun 100\n")
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
