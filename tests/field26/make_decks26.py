@@ -611,6 +611,21 @@ L("CL09_liggghts_insert_type2_no_clear", "# control of CL08 without clear\n" + m
 rr("CL10_clear_deposit_last_run", "run; clear; rebuild; fix deposit of type 2 (diameter set by a set in the first run? no: default) then set type 2 diameter after a short run", "run 100\n" + REBUILD() + INS + "fix dp all deposit 2 2 50 777 region ins near 0.007 vz -0.1 -0.1\nrun 120\nset type 2 diameter 0.003 density 7800\nrun 500\n")
 rr("CL11_clear_create_random_last_run", "run; clear; rebuild; create_atoms 2 random 3 (3 mm 7800 by set) before the last run (the pass makes them)", "run 100\n" + REBUILD() + "region top block 0.005 0.035 0.005 0.035 0.05 0.09 units box\ncreate_atoms 2 random 3 999 top overlap 0.004\nset type 2 diameter 0.003 density 7800\nrun 100\n")
 
+MOL2 = m.MOL(2, 0.003, m.mass(0.003, 7800))
+rr("CL12_clear_deposit_mol_last_run", "run; clear; rebuild; molecule (type 2, 3 mm, 7800); fix deposit mol in the last run", "run 100\n" + REBUILD() + "molecule m2 m2.mol\n" + INS + "fix dp all deposit 3 0 100 777 region ins near 0.007 mol m2 vz -0.5 -0.5\nrun 400\n", data={"m2.mol": MOL2})
+rr("CL13_clear_region_wall_second", "run; clear; rebuild; a region cylinder wall kn 8000 in the second simulation", "run 100\n" + REBUILD() + "region cyl cylinder z 0.02 0.02 0.019 0 0.1 side in open 1 open 2 units box\nfix cw all wall/gran/region granular " + hk(8000) + " region cyl\nrun 100\n")
+rr("CL14_clear_labels_second", "labelmap a b in sim 1 (pair a b kn 8000); clear; sim 2 with labelmap b a (swapped) and pair b b kn 5000", "labelmap atom 1 a 2 b\npair_coeff a b " + hk(8000) + "\nrun 100\n" + REBUILD() + "labelmap atom 1 b 2 a\npair_coeff b b " + hk(5000) + "\nrun 100\n")
+rr("CL15_clear_exclude_first_only", "neigh_modify exclude type 1 2 in sim 1; clear; sim 2 without it (1 2 meets)", "neigh_modify exclude type 1 2\nrun 100\n" + REBUILD() + "run 100\n")
+rr("CL16_clear_viscous_first_only", "fix viscous in sim 1; clear; sim 2 without it", "fix v all viscous 0.001\nrun 100\n" + REBUILD() + "run 100\n")
+rr("CL17_clear_timestep_default", "timestep 1e-5 in sim 1; clear; sim 2 without a timestep line (LAMMPS' si default)", "run 100\n" + REBUILD().replace("timestep 1e-5\n", "") + "run 100\n")
+rr("CL18_clear_units_default_lj", "sim 1 si; clear; sim 2 without a units line (lj by default) and lj-sized numbers", "run 100\nclear\n" + m.head(2, box="0 10 0 10 0 20").replace("units si\n", "") + m.G1("hooke 2000 3 " + K) + "fix floor all wall/gran granular hooke 2000 3 " + K + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-4\ncreate_atoms 1 single 5 5 2\ncreate_atoms 2 single 2 2 2\nset type 1 diameter 1 density 1\nset type 2 diameter 1.5 density 1\nrun 100\n")
+rr("CL19_clear_pour_type2_in_loop_pass", "a loop of 2 passes, each: clear, rebuild, pour of type 2 (3 mm 7800), run", "variable i loop 2\nlabel l\n" + REBUILD() + POUR7800 + "run 1500\nnext i\njump SELF l\n")
+
+LJS = lambda ts: (m.head(2, box="0 10 0 10 0 20", units="lj") + m.G1("hooke 2000 3 " + K) + "fix floor all wall/gran granular hooke 2000 3 " + K + " zplane 0 NULL\nfix integ all nve/sphere\n" + ts
+                  + "create_atoms 1 single 5 5 2\ncreate_atoms 2 single 2 2 2\nset type 1 diameter 1 density 1\nset type 2 diameter 1.5 density 1\n")
+deck("CL20_clear_lj_timestep_default_coarse", "# units lj, timestep 1e-4, run; clear; the same deck without its timestep line: LAMMPS' lj default 0.005 (about 7 steps per contact)\n" + LJS("timestep 1e-4\n") + "run 100\nclear\n" + LJS("") + "run 100\n", g=1)
+deck("CL21_lj_no_timestep_control", "# control: units lj without a timestep line at all (default 0.005)\n" + LJS("") + "run 100\n", g=1)
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
