@@ -42,9 +42,9 @@ for n in sorted(os.listdir(D)):
     if k in J:
         table[J[k]].append(n)
     elif ok[n] and not bad[n]:  # every referee line of the deck agrees
-        table["correct, engine-checked"].append(n)
+        table["correct-engine"].append(n)
     else:
         table["UNJUDGED"].append(n)
-for cls, names in table.items():
-    print(f"| {cls} | {len(names)} | {' '.join(x.split('_')[0] if not x.startswith('X_lig') else x for x in names)} |")
+for cls, names in sorted(table.items()):
+    print(f"| {cls} | {len(names)} | {' '.join(x.split('_')[0] if not x.startswith('X_lig') else x[6:] for x in names)} |")
 print("total", sum(len(v) for v in table.values()))

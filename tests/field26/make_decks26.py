@@ -627,6 +627,17 @@ deck("CL20_clear_lj_timestep_default_coarse", "# units lj, timestep 1e-4, run; c
 deck("CL21_lj_no_timestep_control", "# control: units lj without a timestep line at all (default 0.005)\n" + LJS("") + "run 100\n", g=1)
 
 
+# ================================================================ tenth set: LIGGGHTS property fixes given twice
+E2id = lambda fid, a, b, c: f"fix {fid} all property/global coefficientRestitution peratomtypepair 2 {a} {b} {b} {c}\n"
+L("LQ01_two_e_fixes_ids", "# LIGGGHTS: coefficientRestitution by fix m3 (0.6) then by fix m3b (0.3): which does LIGGGHTS use?\n" + LH2() + E2id("m3", 0.6, 0.6, 0.6) + E2id("m3b", 0.3, 0.3, 0.3) + m.HERTZ + W2 + A1 + LR, g=1)
+L("LQ02_two_e_fixes_ids_reversed", "# LIGGGHTS: m3b (0.3) first, m3 (0.6) second\n" + LH2() + E2id("m3b", 0.3, 0.3, 0.3) + E2id("m3", 0.6, 0.6, 0.6) + m.HERTZ + W2 + A1 + LR, g=1)
+L("LQ03_e_fix_unfixed_redefined_other_id", "# LIGGGHTS: m3 (0.6); run; unfix m3; fix m9 (0.3); run\n" + LH2() + E2id("m3", 0.6, 0.6, 0.6) + m.HERTZ + W2 + A1 + m.LRUN + "run 100\nunfix m3\n" + E2id("m9", 0.3, 0.3, 0.3) + "run 100\n", g=1)
+L("LQ04_second_e_fix_after_run", "# LIGGGHTS: m3 (0.6); run; fix m3b (0.3) added (m3 kept); run\n" + LH2() + E2id("m3", 0.6, 0.6, 0.6) + m.HERTZ + W2 + A1 + m.LRUN + "run 100\n" + E2id("m3b", 0.3, 0.3, 0.3) + "run 100\n", g=1)
+L("LQ05_two_youngs_hooke_stiffness", "# LIGGGHTS hooke/stiffness kn given twice by two fixes (k1 2000, k1b 8000): which kn?\n" + LH2() + "fix k1 all property/global kn peratomtypepair 2 2000 2000 2000 2000\nfix k1b all property/global kn peratomtypepair 2 8000 8000 8000 8000\nfix k2 all property/global kt peratomtypepair 2 2000 2000 2000 2000\n"
+  + "fix k3 all property/global gamman peratomtypepair 2 10 10 10 10\nfix k4 all property/global gammat peratomtypepair 2 10 10 10 10\npair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+  + "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.0\n" + A1 + LR, g=1)
+
+
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
           ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
