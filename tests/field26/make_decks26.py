@@ -637,6 +637,11 @@ L("LQ05_two_youngs_hooke_stiffness", "# LIGGGHTS hooke/stiffness kn given twice 
   + "fix k3 all property/global gamman peratomtypepair 2 10 10 10 10\nfix k4 all property/global gammat peratomtypepair 2 10 10 10 10\npair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
   + "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.0\n" + A1 + LR, g=1)
 
+deck("CL22_clear_first_line_pour", "# clear as the deck's first line, then the base deck, a fix pour of type 2 (3 mm 7800) in its only run\nclear\n" + BASE() + TWO + POUR7800 + "run 2000\n", g=1)
+deck("CL24_clear_top_pour_only", "# a pour-only deck that starts with clear (as generated scripts often do): hertz/material tsuji, 2 mm to 4 mm spheres\nclear\n"
+     + head(1) + "pair_style granular\npair_coeff * * " + TSU + "\nfix grav all gravity 9.81 vector 0 0 -1\nfix floor all wall/gran granular " + TSU + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 2e-6\n"
+     + INS + "fix p all pour 20 1 4767 region ins diam range 0.002 0.004 dens 2500 2500\nrun 20000\n", g=1)
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
@@ -656,6 +661,7 @@ def copy_examples():
                  ("mesh_tet", "in.mesh_tet"), ("multisphere_stone_restitution", "in.multisphere"), ("superquadric", "in.particle_particle"),
                  ("sph_1", "in.sph_1")):
         ex.append(("X_lig_" + t + "_" + f[3:], os.path.join(T, t), f, True))
+    ex.append(("CL23_lammps_pour_example_clear_first", "/usr/share/lammps/examples/pour", "in.pour", False))  # in.pour with clear prepended below
     for name, src, f, lig in ex:
         d = os.path.join(m.D, name)
         if os.path.exists(d):
@@ -669,6 +675,9 @@ def copy_examples():
             for extra in os.listdir(src):
                 if extra.startswith("molecule") or extra.endswith(".mol"):
                     shutil.copy(os.path.join(src, extra), d)
+        if name.startswith("CL23"):
+            txt = open(os.path.join(d, f)).read()
+            open(os.path.join(d, f), "w").write("clear\n" + txt)
         open(os.path.join(d, "DECK"), "w").write(f + "\n")
         open(os.path.join(d, "G"), "w").write("1\n")
 
