@@ -642,6 +642,13 @@ deck("CL24_clear_top_pour_only", "# a pour-only deck that starts with clear (as 
      + head(1) + "pair_style granular\npair_coeff * * " + TSU + "\nfix grav all gravity 9.81 vector 0 0 -1\nfix floor all wall/gran granular " + TSU + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 2e-6\n"
      + INS + "fix p all pour 20 1 4767 region ins diam range 0.002 0.004 dens 2500 2500\nrun 20000\n", g=1)
 
+H10L = "thermo_modify lost ignore\ngroup t2 type 2\nvariable i loop 2\nlabel l\nif \"$i == 2\" then \"velocity t2 set 0 0 100\"\nrun 200\nnext i\njump SELF l\nif \"$(count(all)) < 2\" then \"" + K5.strip() + "\"\nrun 10\n"
+deck("CL25_clear_first_H10", "# H10 (lost ignore; pass 2 of a loop throws type 2 out; an if on count(all) sets kn 5000) with clear on its first line\nclear\n" + BASE() + TWO + H10L, g=1)
+deck("CL26_clear_first_H06", "# H06 (lost ignore; type 2 thrown out in run 1; kn 5000; run 2) with clear on its first line\nclear\n" + BASE() + TWO + "thermo_modify lost ignore\ngroup t2 type 2\nvelocity t2 set 0 0 100\nrun 300\n" + K5 + "run 50\n", g=1)
+deck("CL27_clear_first_loop_lost", "# clear first; a loop of 2 runs; pass 1 throws type 2 out (lost ignore); kn 5000 after the loop\nclear\n" + BASE() + TWO + "thermo_modify lost ignore\ngroup t2 type 2\nvariable i loop 2\nlabel l\nif \"$i == 1\" then \"velocity t2 set 0 0 100\"\nrun 200\nnext i\njump SELF l\n" + K5 + "run 10\n", g=1)
+
+deck("CL28_clear_first_N19", "# N19 (lost ignore; fix deposit of 1 m default spheres across two runs: LAMMPS loses every atom) with clear on its first line\nclear\n" + BASE() + TWO + "thermo_modify lost ignore\n" + INS + "fix dp all deposit 2 2 100 12345 region ins near 0.007 vz -0.1 -0.1\nrun 300\n" + K5 + "run 100\n", g=1)
+
 
 def copy_examples():
     ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
