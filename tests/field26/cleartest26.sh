@@ -1,5 +1,5 @@
 #!/bin/sh
-# Field round 26: a differential test: `clear` as a deck's first line changes nothing in LAMMPS (it starts from the
+# Field round 26: a differential test: `clear` (or the lines in PREFIX, e.g. "echo both\\nnewton off\\n") as a deck's first lines changes nothing in LAMMPS (it starts from the
 # same empty state), so the audit's rc and rows must not change (stage headers cite line numbers, shifted by one,
 # and are left out). For each deck folder given, a scratch copy with
 # `clear` prepended to its deck is audited; folders whose rc or stdout differ are listed with the first differing line.
@@ -8,7 +8,7 @@ for d in "$@"; do
   d=${d%/}; deck=$(cat "$d/DECK"); g=$(cat "$d/G")
   [ -f "$d/LIGGGHTS" ] && continue
   t=$(mktemp -d /tmp/field26-clear.XXXXXX); cp -r "$d"/. "$t"/
-  { echo clear; cat "$d/$deck"; } > "$t/$deck"
+  { printf "%b" "${PREFIX:-clear\n}"; cat "$d/$deck"; } > "$t/$deck"
   restitution deck "$t/$deck" --g $g > "$t/c.out" 2>/dev/null; rc=$?
   grep -E '^(types|type) |^  g ' "$d/audit.out" | sed 's/ (stage [^)]*)//' > "$t/a.rows"; grep -E '^(types|type) |^  g ' "$t/c.out" | sed 's/ (stage [^)]*)//' > "$t/c.rows"
   if [ "$rc" != "$(cat $d/audit.rc)" ] || ! cmp -s "$t/a.rows" "$t/c.rows"; then
