@@ -152,16 +152,30 @@ def test_an_if_between_the_parts_is_read_by_its_branches(tmp_path, between, audi
 
 @needs_lammps
 @pytest.mark.dem
-def test_a_step_read_between_the_parts_is_the_decks(tmp_path):
-    """Field round 25, M25: ``variable s equal $(step)`` between the parts was refused. Made as the
-    parts, the step it reads after a part of the copy is set to the deck's (the pass made again, its
-    runs for real): an if on it after the run picks LAMMPS' branch (s = 300: kn 3000; the pass with
-    its runs skipped would read 0 and pick kn 9000)."""
-    stiff = {kn: LINE.replace("1000", kn) for kn in ("3000", "9000")}
-    deck = HEAD_ON.format(line=LINE) + ('run 300 every 100 "variable s equal $(step)"\n'
-                                        f'if "${{s}} >= 300" then "{stiff["3000"]}" else "{stiff["9000"]}"\n'
-                                        "run 30000\n")
-    (tmp_path / "in.deck").write_text(deck)
-    got, err = audit(tmp_path / "in.deck", "--g", "1")
-    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
-    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 5e-5, (row["eps"], err)
+@pytest.mark.parametrize("line", ["variable s equal $(step)", LINE.replace("1000", "$(step*2+1000)")],
+                         ids=["a variable", "a coefficient"])
+def test_a_step_read_between_the_parts_keeps_the_refusal(tmp_path, line):
+    """The step between a run's parts is LAMMPS' own (1000, 2000, ...), never the pass's (its runs
+    skipped): field round 27, E64, E77: $(step*2+1000) as a kn or $(2500+step) as a density, read at
+    step 0 after a part of the copy, printed kn 1000 where LAMMPS ran kn 5000. Refused in one line."""
+    (tmp_path / "in.deck").write_text(HEAD_ON.format(line=LINE) + f'run 3000 every 1000 "{line}"\nrun 100\n')
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert "between the run's parts" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_like_pair_changed_before_pre_no_keeps_the_old_mix_and_is_refused(tmp_path):
+    """Field round 27, P29: 1 1 and 2 2 set, 1 2 mixed from them; 1 1 made stiffer after a first run,
+    then run N pre no: LAMMPS mixes only at a set-up, so 1 2 keeps the old mix (measured here: the
+    same speed as without the change), where the audit printed the new one. Refused in one line."""
+    own = LINE.split(None, 3)[3]
+    base = HEAD_ON.format(line=f"pair_coeff 1 1 {own}\npair_coeff 2 2 {own}") + "run 0\n"
+    changed = base + f"pair_coeff 1 1 {own.replace('1000', '3000')}\n"
+    old = lammps_separation_speed(base + "run 30000 pre no\n", tmp_path)
+    assert lammps_separation_speed(changed + "run 30000 pre no\n", tmp_path) == pytest.approx(old, abs=1e-12)
+    assert abs(lammps_separation_speed(changed + "run 30000\n", tmp_path) - old) > 1e-2
+    (tmp_path / "in.deck").write_text(changed + "run 30000 pre no\n")
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and "pre no after a contact setting changed" in err, err

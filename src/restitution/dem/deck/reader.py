@@ -1084,7 +1084,8 @@ def set_up_key(deck: Deck) -> str:
     style, the coefficients of pairs of two types, the fixes (walls, material properties, what acts
     beside the contact), exclusions and movers; not the atoms' sizes, which it reads from the atoms
     at every step, nor LAMMPS' coefficients of a type with itself, which pair_coeff sets where the
-    forces read them (its set-up copies a pair i < j to j > i: measured, below).
+    forces read them (its set-up copies a pair i < j to j > i: measured, below) unless a pair of it
+    with another type is mixed from them.
 
     Parameters
     ----------
@@ -1103,11 +1104,18 @@ def set_up_key(deck: Deck) -> str:
     True
     """
     return repr((deck.code, deck.style, deck.model, deck.limit_force, deck.absolute_damping, deck.gran,
-                 sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1]),
+                 sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1] or _mixes(deck, k[0])),
                  sorted((k, repr(v)) for k, (_, v) in deck.props.items()),
                  [(w, t) for _, w, t in deck.walls], repr(deck.meshes), [w for _, w in deck.beside],
                  repr(deck.others), repr(deck.idle), repr(deck.granular_of), [w for _, _, w in deck.excludes],
                  sorted((k, repr(v)) for k, v in deck.movers.items())))
+
+
+def _mixes(deck: Deck, t: int) -> bool:
+    """Whether LAMMPS mixes a pair of type ``t`` with another from their own coefficients (no
+    pair_coeff sets it): it mixes them at the run's set-up (field round 27, P29: 1 1 made stiffer,
+    then run pre no: the 1 2 pair mixed from it kept the old law, 0.413435, not the audit's 0.543252)."""
+    return any((min(t, u), max(t, u)) not in deck.coeffs for u in range(1, deck.ntypes + 1) if u != t)
 
 
 def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:

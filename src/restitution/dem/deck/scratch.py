@@ -89,12 +89,9 @@ _UNSPLIT = frozenset({"run", "minimize", "quit", "include", "jump", "label", "ne
 #: What a run's every may evaluate that differs where its commands run between runs of their own: a
 #: value substituted or referenced (a ramp() or the step read inside the run, as LAMMPS runs them,
 #: is not the one read after a run of the copy: field round 22, t02's ramp(2000,8000) read 2000
-#: where LAMMPS reads 8000), or a function of the run's own start and end
+#: where LAMMPS reads 8000; round 27, E64: $(step*2+1000) read at the pass's step 0), or a function of
+#: the run's own start and end
 _IN_RUN = re.compile(r"\$|\b(?:[vcf]|[id]2?)_\w|\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(")
-#: An immediate value of the step and time alone, which LAMMPS evaluates alike inside a run's every
-#: and after a run of the copy whose clock the audit sets to the deck's (a pass made again where a
-#: value read after a run depends on them: field round 25, M25's $(step))
-_CLOCK_ONLY = re.compile(r"\$\((?:[\s\d.eE+\-*/()]|\bstep\b|\btime\b|\bdt\b)*\)")
 #: The label that opens stage k's marker where it stands inline in an if (its echo marks the stage)
 STAGE_LABEL = "restitution_stage_"
 #: A deck's folder copied whole; a larger one is refused (with the files above it that it names)
@@ -732,8 +729,8 @@ def split_every(run: str) -> tuple[list[str], list[str]] | None:
     (True, True)
     >>> split_every('run 300 every 100 "pair_coeff * * hooke $(v_kn) 0"') is None
     True
-    >>> split_every('run 200 every 100 "variable s equal $(step)"')[0]
-    ['run 100 pre yes', 'run 100']
+    >>> split_every('run 200 every 100 "variable s equal $(step)"') is None
+    True
     """
     try:
         split = words(run)
@@ -750,7 +747,7 @@ def split_every(run: str) -> tuple[list[str], list[str]] | None:
     firsts = [command.split()[0] if command.split() else "" for command in commands]
     if not commands or all(first in SKIPPED_COMMANDS or first == "NULL" for first in firsts) \
             or any(first in _UNSPLIT or not first for first in firsts) \
-            or any(_IN_RUN.search(_CLOCK_ONLY.sub("", command)) for command in commands):
+            or any(_IN_RUN.search(command) for command in commands):
         return None
     steps, every = int(split[1]), int(split[at + 1])
     count = max(1, -(-steps // every))
