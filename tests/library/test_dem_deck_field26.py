@@ -144,3 +144,17 @@ def test_a_folder_that_changes_while_copied_is_refused_in_one_line(tmp_path, mon
     status, out, err = run(tmp_path / "in.deck", "--g", "1")
     assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
     assert "changed or could not be read while the audit copied it" in err and "No such file" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_every_cutoff_small_with_a_skin_that_reaches_the_contact_is_answered(tmp_path):
+    """Field round 27, CU03: every cutoff 1 mm, contact distance 10 mm, neighbor skin 10 mm: LAMMPS'
+    lists reach 11 mm and the pair meets at first touch; the audit left it out with a false word.
+    Its row is now LAMMPS' own run's within 5e-5."""
+    law = "hooke 3000 300 damping mass_velocity tangential linear_nohistory 1 0.3 cutoff 0.001"
+    deck = HEAD_ON.format(line=f"pair_coeff * * {law}\nneighbor 0.01 bin") + "run 30000\n"
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 5e-5, row["eps"]

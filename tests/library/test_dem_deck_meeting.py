@@ -305,7 +305,7 @@ def test_a_thermostatted_integrator_is_named_beside_the_contact(tmp_path):
     ("pair_style granular 0.004", "", set()),              # LAMMPS: eps 619 for the r 0.005 pair
     ("pair_style granular", " cutoff 0.015", {(1, 1), (1, 2)})])   # below 0.02, the two r 0.01 spheres' distance
 def test_a_granular_cutoff_is_read_against_the_contact_distance(tmp_path, style, coeff, answered):
-    """LAMMPS lists a pair within its cutoff (and the neighbor skin) only. Measured: `pair_style granular
+    """LAMMPS lists a pair within the largest cutoff (and the neighbor skin) only. Measured: `pair_style granular
     0.004` on spheres r 0.005 (contact distance 0.01, skin 0.001) gives eps 618.87 at 0.1 m/s, where the
     same deck without the cutoff gives 0.974618 (the law's): spheres listed late meet deep in overlap.
     A pair beyond its cutoff is not audited, the others are (field round 13: the whole deck was
@@ -319,9 +319,9 @@ def test_a_granular_cutoff_is_read_against_the_contact_distance(tmp_path, style,
         assert {tuple(p["types"]) for p in res["pairs"]} == answered
         assert all(math.isfinite(p["eps"][0]) for p in res["pairs"])
         left = {(1, 1), (1, 2), (2, 2)} - answered
-        assert all(f"types {i} {j}: cutoff" in err for i, j in left) and err.count("below the contact") == len(left)
+        assert all(f"types {i} {j}: cutoff" in err for i, j in left) and err.count("short of the contact") == len(left)
     else:
-        assert status == 2 and "is below the contact distance" in err and err.count("\n") == 1
+        assert status == 2 and "short of the contact distance" in err and err.count("\n") == 1
 
 
 def test_an_electric_field_on_charged_spheres_is_named_beside_the_contact(tmp_path):

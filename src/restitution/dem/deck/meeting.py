@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 from dataclasses import replace
 
-from ..dialect.state import Deck, number_or_none, place
+from ..dialect.state import DEFAULT_SKIN, Deck, number_or_none, place
 
 __all__ = ["MOVERS", "INTEGRATORS", "neigh_modify", "special_bonds", "excluded", "motion", "held_contact",
            "group_types", "integrators", "late_speeds", "phantom_velocity", "rigid", "unlisted"]
@@ -103,8 +103,6 @@ def neigh_modify(deck: Deck, words: list, loc, line: str) -> None:
             k += 1
 
 
-#: The neighbor command's default skin by units (LAMMPS' documentation; LIGGGHTS the same for si)
-_DEFAULT_SKIN = {"si": 0.001, "cgs": 0.1, "micro": 0.1, "nano": 0.1, "lj": 0.3, "real": 2.0, "metal": 2.0}
 
 
 def late_speeds(deck: Deck) -> dict:
@@ -191,7 +189,7 @@ def _late_in(deck: Deck, neigh: dict, skin, dt) -> dict:
     # the defaults: LAMMPS' every 1 delay 0 check yes; LIGGGHTS 3.8.0 keeps the older delay 10
     every, delay = neigh.get("every", 1), neigh.get("delay", 10 if deck.code == "LIGGGHTS" else 0)
     check = neigh.get("check", "yes")
-    skin = skin if skin is not None else _DEFAULT_SKIN.get(deck.units or "lj")
+    skin = skin if skin is not None else DEFAULT_SKIN.get(deck.units or "lj")
     if not isinstance(every, int) or not isinstance(delay, int) or skin is None or not dt:
         return {}
     every = max(every, 1)

@@ -19,8 +19,12 @@ from ...core.errors import InputFileError, ParameterError
 from ..calibrate import calibrate
 from ..pair import Pair
 
-__all__ = ["DeckError", "PairNotMapped", "Deck", "DeckDialect", "MAX_TYPES", "FLAT_WALLS", "types", "type_pairs", "number", "number_or_none", "pour_into",
+__all__ = ["DeckError", "PairNotMapped", "Deck", "DeckDialect", "MAX_TYPES", "DEFAULT_SKIN", "FLAT_WALLS", "types", "type_pairs", "number", "number_or_none", "pour_into",
            "atom_type", "place", "fetch", "unlabeled", "labelmap", "spheres", "exact_e", "wall_faces"]
+
+
+#: The neighbor command's default skin by units (LAMMPS' documentation; LIGGGHTS the same for si)
+DEFAULT_SKIN = {"si": 0.001, "cgs": 0.1, "micro": 0.1, "nano": 0.1, "lj": 0.3, "real": 2.0, "metal": 2.0}
 
 
 class DeckError(InputFileError):
