@@ -158,3 +158,21 @@ def test_every_cutoff_small_with_a_skin_that_reaches_the_contact_is_answered(tmp
     got, err = audit(tmp_path / "in.deck", "--g", "1")
     row = next(r for r in got["pairs"] if r["types"] == [1, 2])
     assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 5e-5, row["eps"]
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between", ["group a id 1\ndelete_atoms group a", "set atom 1 type 2"],
+                         ids=["delete by ID", "retype"])
+def test_a_type_emptied_between_runs_has_no_pairs_after(tmp_path, between):
+    """Field round 27, G01, G17: a type whose atoms a command between runs removes (a delete_atoms of a
+    group by ID, a set that retypes them) kept its pairs and wall rows in the later stage, where LAMMPS
+    holds none of it (measured here)."""
+    from deck_cli import lammps_held_at_end
+    deck = (LOSING.format(lost="error").replace("thermo_modify lost error\nset atom 2 diameter 0.5\nrun 10\n", "")
+            + f"run 100\n{between}\nrun 100\n")
+    (tmp_path / "in.deck").write_text(deck)
+    assert set(lammps_held_at_end(tmp_path / "in.deck")) == {2}
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    last = got["stages"][-1]
+    assert {tuple(r["types"]) for r in last["pairs"]} <= {(2, 2)} and all(w["types"] == [2] for w in last["walls"]), last

@@ -557,9 +557,20 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
     if deck.ran:
         # the runs made: a type whose atoms the runs or the commands since retyped, deleted or lost
         # has none at this run, whatever size it had at the last
-        for t in set(deck.held or ()) - set(atoms):
-            for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
-                known.pop(t, None)
+        gone = set(deck.held or ()) - set(atoms)
+    else:
+        # runs skipped: a type the engine held at the last run and holds no more lost its atoms to
+        # the commands since (a delete_atoms of a group by ID, a set type), unless an inserting fix
+        # may make more of it, whose spheres the pass never holds (field round 27, G11, E33: a
+        # delete_atoms group of IDs left the type's pairs printed)
+        inserting = set().union(*(t for t in deck.inserts if t is not None)) if deck.inserts else set()
+        if any(t is None for t in deck.inserts):
+            inserting = set(deck.held or ())
+        sources = inserting | set(deck.poured) | {t for t, _ in deck.pours.values()} | set(deck.deposits)
+        gone = set(deck.held or ()) - set(atoms) - sources
+    for t in gone:
+        for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
+            known.pop(t, None)
     deck.held = {t: sorted(v) for t, v in atoms.items()}
     deck.once = {t: set(v.once) for t, v in atoms.items() if getattr(v, "once", None)}
     deck.atoms = deck.atoms or bool(atoms)
