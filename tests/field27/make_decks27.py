@@ -1,0 +1,235 @@
+"""Field round 27: write the decks as decks/NAME/in.deck (G, LIVE, extra files, LIGGGHTS marker), with round 23's helpers.
+Most decks carry a LIVE pair (groups lv1, lv2): two spheres approaching at 1 m/s, timed to meet in the run named in the
+LIVE file, refereed by live27.py (the deck run as written). Prefixes: E run N every M, P run pre no after a change,
+Y hybrid with one sub-style and none, CU per-pair cutoffs, CL clear and losses, M mixed older classes, L LIGGGHTS.
+usage: python make_decks27.py [NAME ...]"""
+import os, sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "field23"))
+import make_decks23 as m  # noqa: E402
+
+m.DECKS.clear()
+m.D = os.path.join(HERE, "decks")
+deck, hk, HK, K, TL, head, GRAV = m.deck, m.hk, m.HK, m.K, m.TL, m.head, m.GRAV
+LIVE = {}
+FL = lambda model=HK: f"fix floor all wall/gran granular {model} zplane 0 NULL\n"
+TAILL = "fix integ all nve/sphere\ntimestep 1e-6\n"
+
+
+def lv(gap, ta=1, tb=2, da=0.004, db=0.006, rev=False, z=0.05):
+    """the live pair: type ta (diameter da) on the left, tb on the right, gap (m) apart, approaching at 1 m/s (gap/1e-6 steps)"""
+    xa, xb = 0.02 - da / 2 - gap / 2, 0.02 + db / 2 + gap / 2
+    va, vb = db ** 3 / (da ** 3 + db ** 3), -da ** 3 / (da ** 3 + db ** 3)
+    a = f"create_atoms {ta} single {xa:.9g} 0.02 {z}\n"; b = f"create_atoms {tb} single {xb:.9g} 0.02 {z}\n"
+    ia, ib = ("2", "1") if rev else ("1", "2")
+    return ((b + a) if rev else (a + b)) + (f"set atom {ia} diameter {da} density 2500\nset atom {ib} diameter {db} density 2500\n"
+            f"group lv1 id {ia}\ngroup lv2 id {ib}\nvelocity lv1 set {va:.10f} 0 0 units box\nvelocity lv2 set {vb:.10f} 0 0 units box\n")
+
+
+BL = lambda model=HK, nt=2: head(nt) + "pair_style granular\npair_coeff * * " + model + "\n" + GRAV + FL(model.split(" cutoff")[0]) + TAILL
+
+
+def E(name, comment, lines, gap=2.1e-3, live="last run", pre=None, data=None, pair=None, sep=None, **kw):
+    """a LAMMPS deck: base (kn 2000 everywhere, dt 1e-6), the live pair, then lines"""
+    body = (pre or BL()) + (pair if pair is not None else lv(gap)) + lines
+    deck(name, "# " + comment + "\n" + body, g=1, data=data, **kw)
+    LIVE[name] = live + (f"\nSEP {sep}" if sep else "")
+
+
+P5 = lambda i="1", j="2", k=5000: f"pair_coeff {i} {j} {hk(k)}"
+P8 = lambda i="1", j="2": P5(i, j, 8000)
+R3 = 'run 3000 every 1000 "{}"\n'
+
+# ------------------------------------------------------------ E: run N every M with every kind of command
+E("E01_pair_coeff", "every pair_coeff 1 2 kn 5000: live pair meets in part 3 (kn 5000)", R3.format(P5()))
+E("E02_pair_coeff_part2", "every pair_coeff 1 2 kn 5000: live pair meets in part 2 (after 1 change: kn 5000)", R3.format(P5()), gap=1.1e-3, live="part 2")
+E("E03_part1_before_change", "every pair_coeff 1 2 kn 5000: live pair meets in part 1 (kn 2000, before any change)", R3.format(P5()), gap=0.1e-3, live="part 1")
+E("E04_not_multiple", "run 2500 every 1000 (parts 1000 1000 500): live pair meets in the 500-step part (kn 5000)", 'run 2500 every 1000 "' + P5() + '"\n', gap=2.05e-3)
+E("E05_N_zero", "run 0 every 1 pair_coeff 1 2 kn 5000, then run 3000: live pair in the last run", 'run 0 every 1 "' + P5() + '"\nrun 3000\n', gap=0.1e-3)
+E("E06_two_commands", "every 'pair_coeff 1 2 kn 5000' 'pair_coeff 1 2 kn 8000': last wins (8000)", 'run 3000 every 1000 "' + P5() + '" "' + P8() + '"\n')
+E("E07_set_density", "every set type 2 density 7800: sizes change (live pair meets in part 3 with 7800)", R3.format("set type 2 density 7800"))
+E("E08_set_diameter_step", "every set type 2 diameter $(0.006+step*1e-7): 6.2 mm in part 3 (live pair gap for 6.2 mm)", R3.format("set type 2 diameter $(0.006+step*1e-7)"), sep=0.0051)
+E("E09_unfix_refix_floor", "every unfix floor + fix floor kn 8000: wall changes; pair unchanged (kn 2000)", 'run 3000 every 1000 "unfix floor" "fix floor all wall/gran granular ' + hk(8000) + ' zplane 0 NULL"\n')
+E("E10_fix_redefine", "every fix floor (same id, same style) kn 8000: replaces the wall", R3.format("fix floor all wall/gran granular " + hk(8000) + " zplane 0 NULL"))
+E("E11_group_set", "every group g2 type 2 + set group g2 density 5000", 'run 3000 every 1000 "group g2 type 2" "set group g2 density 5000"\n')
+E("E12_delete_create", "every delete_atoms region far + create_atoms 1 single far away (a sphere made each part, 4 mm)", "region far block 0 0.04 0 0.04 0.08 0.1 units box\n" + 'run 3000 every 1000 "delete_atoms region far" "create_atoms 1 single 0.01 0.01 0.09"\n')
+E("E13_velocity", "every velocity lv1 set 0.7714285714 0 0 (the live pair's own speed reset each part)", R3.format("velocity lv1 set 0.7714285714 0 0 units box"))
+E("E14_timestep", "every timestep 5e-7 (dt halves after part 1; live pair meets in part 3)", R3.format("timestep 5e-7"), gap=1.05e-3)
+E("E15_timestep_dt", "every timestep $(dt*0.5): 1e-6, 5e-7, 2.5e-7", R3.format("timestep $(dt*0.5)"), gap=1.02e-3)
+E("E16_neigh_exclude", "every neigh_modify exclude type 1 2: live pair passes through in part 3", R3.format("neigh_modify exclude type 1 2"))
+E("E17_neigh_exclude_none", "neigh_modify exclude type 1 2 before, every neigh_modify exclude none: live pair collides in part 3", "neigh_modify exclude type 1 2\n" + R3.format("neigh_modify exclude none"))
+E("E18_displace", "every displace_atoms lv2 move 0 0 0.001 (the pair still meets)", R3.format("displace_atoms lv2 move 0 0 0.001 units box"))
+E("E19_change_box", "every change_box all z final 0 0.2 units box", R3.format("change_box all z final 0 0.2 units box"))
+E("E20_region_wall", "every fix w all wall/gran/region granular kn 8000 region cyl (same id): cylinder wall", "region cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box\n" + R3.format("fix w all wall/gran/region granular " + hk(8000) + " region cyl"))
+E("E21_region_reuse", "every region r2 block ... (the second part reuses the region id: LAMMPS decides)", R3.format("region r2 block 0 0.01 0 0.01 0 0.01 units box"))
+E("E22_start_stop", "run 3000 start 0 stop 6000 every 1000 pair_coeff 1 2 kn 5000", 'run 3000 start 0 stop 6000 every 1000 "' + P5() + '"\n')
+E("E23_pre_no", "run 3000 pre no every 1000 pair_coeff 1 2 kn 5000 (parts 2, 3 without set-up)", 'run 3000 pre no every 1000 "' + P5() + '"\n')
+E("E23b_pre_no_rev", "E23 with the type-2 sphere made first (atom order 2 1)", 'run 3000 pre no every 1000 "' + P5() + '"\n', pair=lv(2.1e-3, rev=True))
+E("E24_post_no", "run 3000 post no every 1000 pair_coeff 1 2 kn 5000", 'run 3000 post no every 1000 "' + P5() + '"\n')
+E("E25_upto", "run 3000 upto every 1000 (upto: refused before, engine decides)", 'run 3000 upto every 1000 "' + P5() + '"\n')
+E("E26_include_file", "the every run inside an included file", "include r.in\n", data={"r.in": R3.format(P5())})
+E("E27_in_loop", "loop of 2: each pass run 1500 every 500 pair_coeff 1 2 kn $(1000*v_i+3000) hmm no: kn 5000 then kn 8000 by if before", 'variable i loop 2\nlabel l\nif "$i == 2" then "' + P8() + '"\nrun 1500 every 500 "print hi"\nnext i\njump SELF l\n', gap=2.1e-3)
+E("E28_in_if", "if then run every (triple quotes)", 'if "1 > 0" then """run 3000 every 1000 "' + P5() + '" """\n')
+E("E29_step_var_if", "every 'variable s equal $(step)'; after the run if s == 3000 then kn 5000; run 1000 (live pair there)", R3.format("variable s equal $(step)") + 'if "${s} == 3000" then "' + P5() + '" else "' + P8() + '"\nrun 1000\n', gap=3.1e-3)
+E("E30_step_coeff", "every pair_coeff 1 2 hooke $(step) 3000 ...: kn 1000 after part 1, 2000 after part 2 (part 3: kn 2000)", R3.format("pair_coeff 1 2 hooke $(step) 3000 " + K))
+E("E31_step_coeff_part2", "E30 with the live pair in part 2 (kn 1000)", R3.format("pair_coeff 1 2 hooke $(step) 3000 " + K), gap=1.1e-3, live="part 2")
+E("E32_unfix_twice", "every unfix floor (part 2's unfix finds no fix: LAMMPS stops)", R3.format("unfix floor"))
+E("E33_delete_live", "every delete_atoms group lv1 (the left sphere deleted after part 1: no 1 2 contact)", R3.format("delete_atoms group lv1"))
+E("E34_write_data", "every write_data d.data (files the deck writes)", R3.format("write_data d.data"))
+E("E35_lost_ignore", "every thermo_modify lost ignore", R3.format("thermo_modify lost ignore"))
+E("E36_dollar_var", "every pair_coeff 1 2 hooke ${k} (a substitution: refused before)", "variable k equal 5000\n" + R3.format("pair_coeff 1 2 hooke ${k} 3000 " + K))
+E("E37_include_cmd", "every include kn.in (include excluded)", R3.format("include kn.in"), data={"kn.in": P5() + "\n"})
+E("E38_1001_parts", "run 1001 every 1 print x (1001 parts)", 'run 1001 every 1 "print x"\nrun 2000\n', gap=1.1e-3)
+E("E39_1000_parts", "run 1000 every 1 pair_coeff 1 2 kn 5000 (1000 parts), then run 2000", 'run 1000 every 1 "' + P5() + '"\nrun 2000\n', gap=1.1e-3)
+E("E40_M_gt_N", "run 500 every 1000 (M > N: LAMMPS decides)", 'run 500 every 1000 "' + P5() + '"\nrun 3000\n', gap=0.6e-3)
+E("E41_two_every_runs", "two every runs: kn 5000 then kn 8000 in the second (live pair in the last part)", R3.format(P5()) + R3.format(P8()), gap=5.1e-3)
+E("E42_pair_style_restyle", "every pair_style granular + pair_coeff * * kn 5000", 'run 3000 every 1000 "pair_style granular" "pair_coeff * * ' + hk(5000) + '"\n')
+E("E43_fix_adapt_var", "every fix ad all adapt 1 atom diameter v_d (a variable reference)", "variable d equal 0.006\n" + R3.format("fix ad all adapt 1 atom diameter v_d"))
+E("E44_property_atom", "every set type 1 mass 1e-4 (mass set directly)", R3.format("set type 1 mass 1e-4"))
+E("E45_labels", "labelmap atom 1 small 2 big; every pair_coeff small big kn 5000", "labelmap atom 1 small 2 big\n" + R3.format(P5("small", "big")))
+E("E46_range_every", "every pair_coeff 1*2 2 kn 5000 (1 2 and 2 2)", R3.format(P5("1*2", "2")))
+E("E47_exclude_group", "every neigh_modify exclude group lv1 lv2", R3.format("neigh_modify exclude group lv1 lv2"))
+E("E48_pour_across", "fix pour of 4 mm type 1 spheres in a band above, run 20000 every 5000 print: the pour runs across parts", "region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nfix p all pour 5 1 4767 region ins diam one 0.003 dens 7800 7800\n" + 'run 20000 every 5000 "print part"\n', gap=15.1e-3)
+E("E49_create_set_size", "every create_atoms 1 single ... + set type 1 diameter 0.005 (the live sphere grows too)", 'run 3000 every 1000 "create_atoms 1 single 0.01 0.01 0.09" "set type 1 diameter 0.005"\n', sep=0.0055)
+E("E50_nested_every_include", "include r.in twice (each an every run with another kn)", "include r.in\ninclude r2.in\n", data={"r.in": R3.format(P5()), "r2.in": R3.format(P8())}, gap=5.1e-3)
+E("E51_every_in_jump_file", "jump to a file whose every run changes kn", "jump r.in\n", data={"r.in": R3.format(P5())})
+E("E52_time_print", "every print $(time) $(dt) (only printing)", R3.format("print 't $(time) dt $(dt)'"))
+E("E53_every_then_pre_no", "every run changes kn 5000, then run 1000 pre no (no change since the last set-up)", R3.format(P5()) + "run 1000 pre no\n", gap=3.1e-3)
+E("E54_every_pair_none_hybrid", "hybrid granular granular; every pair_coeff 1 2 none", 'run 3000 every 1000 "pair_coeff 1 2 none"\n', pre=head(2) + "pair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + "\n" + GRAV + FL() + TAILL)
+E("E55_every_hybrid_back", "hybrid granular granular; 1 2 none, every pair_coeff 1 2 granular 2 kn 5000", 'pair_coeff 1 2 none\nrun 3000 every 1000 "pair_coeff 1 2 granular 2 ' + hk(5000) + '"\n', pre=head(2) + "pair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + "\n" + GRAV + FL() + TAILL)
+E("E56_every_fix_viscous", "every fix v all viscous 1e-4 (a damping fix)", R3.format("fix v all viscous 1e-4"))
+E("E57_every_unfix_integ", "every unfix integ + fix integ all nve/sphere", 'run 3000 every 1000 "unfix integ" "fix integ all nve/sphere"\n')
+E("E58_every_reset_timestep", "every reset_timestep 0", R3.format("reset_timestep 0"))
+E("E59_every_comm", "every comm_modify cutoff 0.02", R3.format("comm_modify cutoff 0.02"))
+E("E60_every_kspace_dielectric", "every pair_coeff 1 2 hertz/material (model change in every)", R3.format("pair_coeff 1 2 " + m.HM))
+
+# ------------------------------------------------------------ P: run pre no after a contact change
+E("P01_pair12_pre_no", "run 1000, pair_coeff 1 2 kn 5000, run 3000 pre no (live pair there)", "run 1000\n" + P5() + "\nrun 3000 pre no\n", gap=1.1e-3)
+E("P02_pair12_pre_no_rev", "P01 with the type-2 sphere made first", "run 1000\n" + P5() + "\nrun 3000 pre no\n", gap=1.1e-3, pair=lv(1.1e-3, rev=True))
+E("P03_pair11_pre_no", "run 1000, pair_coeff 1 1 kn 5000, run 3000 pre no; live pair two type-1 spheres", "run 1000\n" + P5("1", "1") + "\nrun 3000 pre no\n", gap=1.1e-3, pair=lv(1.1e-3, 1, 1, 0.004, 0.004), sep=0.004)
+E("P04_set_pre_no", "run 1000, set type 2 density 7800, run 3000 pre no", "run 1000\nset type 2 density 7800\nrun 3000 pre no\n", gap=1.1e-3)
+E("P05_starstar_pre_no", "run 1000, pair_coeff * * kn 5000, run 3000 pre no", "run 1000\npair_coeff * * " + hk(5000) + "\nrun 3000 pre no\n", gap=1.1e-3)
+E("P06_wall_pre_no", "run 1000, fix floor kn 8000 (same id), run 3000 pre no", "run 1000\n" + FL(hk(8000)) + "run 3000 pre no\n", gap=1.1e-3)
+E("P07_restyle_pre_no", "run 1000, pair_style granular + * * kn 5000, run 3000 pre no", "run 1000\npair_style granular\npair_coeff * * " + hk(5000) + "\nrun 3000 pre no\n", gap=1.1e-3)
+E("P08_run0_between", "run 1000, pair_coeff 1 2 kn 5000, run 0, run 3000 pre no (set up by run 0)", "run 1000\n" + P5() + "\nrun 0\nrun 3000 pre no\n", gap=1.1e-3)
+E("P09_labels_pre_no", "labels small big; run 1000; pair_coeff big small kn 5000; run pre no", "labelmap atom 1 small 2 big\nrun 1000\n" + P5("big", "small") + "\nrun 3000 pre no\n", gap=1.1e-3)
+E("P10_reversed_pre_no", "pair_coeff 2 1 kn 5000 then run pre no", "run 1000\n" + P5("2", "1") + "\nrun 3000 pre no\n", gap=1.1e-3)
+E("P11_change_run_then_pre_no", "change, run 1000 (set up), run 3000 pre no", "run 1000\n" + P5() + "\nrun 1000\nrun 3000 pre no\n", gap=2.1e-3)
+E("P12_exclude_pre_no", "run 1000, neigh_modify exclude type 1 2, run 3000 pre no", "run 1000\nneigh_modify exclude type 1 2\nrun 3000 pre no\n", gap=1.1e-3)
+E("P13_pair22_pre_no", "run 1000, pair_coeff 2 2 kn 5000, run 3000 pre no; live pair 1 2 (unchanged)", "run 1000\n" + P5("2", "2") + "\nrun 3000 pre no\n", gap=1.1e-3)
+E("P14_first_run_pre_no", "pair_coeff 1 2 kn 5000, then the deck's FIRST run with pre no (LAMMPS sets up the first run anyway)", P5() + "\nrun 3000 pre no\n", gap=0.1e-3)
+E("P15_pre_no_in_include", "the change and the pre no run in an include", "run 1000\ninclude c.in\n", gap=1.1e-3, data={"c.in": P5() + "\nrun 3000 pre no\n"})
+E("P16_unfix_floor_pre_no", "run 1000, unfix floor, run 3000 pre no", "run 1000\nunfix floor\nrun 3000 pre no\n", gap=1.1e-3)
+E("P17_timestep_pre_no", "run 1000, timestep 5e-7, run 3000 pre no", "run 1000\ntimestep 5e-7\nrun 6000 pre no\n", gap=2.1e-3)
+E("P18_hertz_pre_no", "hertz/material base; run 1000; pair_coeff 1 2 other E; run pre no", "run 1000\npair_coeff 1 2 hertz/material 3e7 1.4e7 0.3 damping viscoelastic " + TL + "\nrun 3000 pre no\n", gap=1.1e-3, pre=BL(m.HM))
+E("P19_mixed_pre_no", "run 1000; pair_coeff 1 1 kn 8000 (the 1 2 pair mixes from 1 1 and 2 2? explicit * * first); run pre no", "run 1000\n" + P8("1", "1") + "\nrun 3000 pre no\n", gap=1.1e-3, pre=head(2) + "pair_style granular\npair_coeff 1 1 " + HK + "\npair_coeff 2 2 " + HK + "\n" + GRAV + FL() + TAILL)
+
+# ------------------------------------------------------------ Y: hybrid with one sub-style and none
+HY = lambda lines, nt=2, sub="granular": head(nt) + f"pair_style hybrid {sub}\n" + lines + GRAV + FL() + TAILL
+GG = "pair_coeff * * granular " + HK + "\n"
+E("Y01_none12", "hybrid granular, * * granular, 1 2 none (LAMMPS collides 1 2)", "run 3000\n", pre=HY(GG + "pair_coeff 1 2 none\n"), gap=0.1e-3)
+E("Y02_none_then_back", "1 2 none then pair_coeff 1 2 granular kn 5000", "run 3000\n", pre=HY(GG + "pair_coeff 1 2 none\npair_coeff 1 2 granular " + hk(5000) + "\n"), gap=0.1e-3)
+E("Y03_none11_and_12", "1 1 none and 1 2 none", "run 3000\n", pre=HY(GG + "pair_coeff 1 1 none\npair_coeff 1 2 none\n"), gap=0.1e-3)
+E("Y04_star2_none", "pair_coeff * 2 none (1 2 and 2 2)", "run 3000\n", pre=HY(GG + "pair_coeff * 2 none\n"), gap=0.1e-3)
+E("Y05_none12_then_22", "1 2 none, then 2 2 none (j j none later)", "run 3000\n", pre=HY(GG + "pair_coeff 1 2 none\npair_coeff 2 2 none\n"), gap=0.1e-3)
+E("Y06_overlay_one_none", "hybrid/overlay granular, * * granular, 1 2 none", "run 3000\n", pre=HY(GG + "pair_coeff 1 2 none\n", sub="overlay granular".replace("overlay ", "")).replace("hybrid granular", "hybrid/overlay granular"), gap=0.1e-3)
+E("Y07_none_restyle_plain", "1 2 none, then pair_style granular + * * kn 5000", "run 3000\n", pre=HY(GG + "pair_coeff 1 2 none\npair_style granular\npair_coeff * * " + hk(5000) + "\n"), gap=0.1e-3)
+E("Y08_none_after_run", "run 1000 (collides), then 1 2 none, run 3000", "run 1000\npair_coeff 1 2 none\nrun 3000\n", pre=HY(GG), gap=1.1e-3)
+E("Y09_three_13_none", "3 types; 1 3 none; live pair 1 3", "run 3000\n", pre=HY(GG + "pair_coeff 1 3 none\n", nt=3), pair=lv(0.1e-3, 1, 3, 0.004, 0.006), gap=0.1e-3)
+E("Y10_three_22_none_12", "3 types; 2 2 none then 1 2 none (j j none)", "run 3000\n", pre=HY(GG + "pair_coeff 2 2 none\npair_coeff 1 2 none\n", nt=3), gap=0.1e-3)
+E("Y11_none_per_type_only", "pair_coeff 1 1 granular, 2 2 granular (no * *), 1 2 none: LAMMPS mixes?", "run 3000\n", pre=HY("pair_coeff 1 1 granular " + HK + "\npair_coeff 2 2 granular " + hk(8000) + "\npair_coeff 1 2 none\n"), gap=0.1e-3)
+E("Y12_hooke_history_none", "hybrid gran/hooke/history one sub-style, 1 2 none", "run 3000\n", pre=HY("pair_coeff * * gran/hooke/history\npair_coeff 1 2 none\n", sub="gran/hooke/history 2000 NULL 3000 NULL 0.5 1"), gap=0.1e-3)
+E("Y13_none_exclude", "1 2 none and neigh_modify exclude type 1 2", "neigh_modify exclude type 1 2\nrun 3000\n", pre=HY(GG + "pair_coeff 1 2 none\n"), gap=0.1e-3)
+E("Y14_none_every_back", "1 2 none, run 3000 every 1000 pair_coeff 1 2 granular kn 5000", 'run 3000 every 1000 "pair_coeff 1 2 granular ' + hk(5000) + '"\n', pre=HY(GG + "pair_coeff 1 2 none\n"))
+E("Y15_none_label_range", "labels; pair_coeff small big* none (range with labels? engine decides)", "run 3000\n", pre=HY("labelmap atom 1 small 2 big\n" + GG + "pair_coeff small big none\n"), gap=0.1e-3)
+
+# ------------------------------------------------------------ CU: per-pair cutoffs
+CUt = lambda c: f" cutoff {c}"
+E("CU01_all_small", "pair_coeff * * ... cutoff 0.001 (every cutoff small)", "run 3000\n", pre=BL(HK + CUt(0.001)), gap=0.1e-3)
+E("CU02_one_small", "pair_coeff 1 2 ... cutoff 0.001, others default", "run 3000\n", pre=BL() + "pair_coeff 1 2 " + HK + CUt(0.001) + "\n", gap=0.1e-3)
+E("CU03_all_small_big_skin", "every cutoff 0.001, neighbor 0.01 bin (skin larger than the gap)", "neighbor 0.01 bin\nrun 3000\n", pre=BL(HK + CUt(0.001)), gap=0.1e-3)
+E("CU04_global_small_one_big", "pair_style granular 0.001 (global), pair_coeff 1 1 cutoff 0.02", "run 3000\n", pre=head(2) + "pair_style granular 0.001\npair_coeff * * " + HK + "\npair_coeff 1 1 " + HK + CUt(0.02) + "\n" + GRAV + FL() + TAILL, gap=0.1e-3)
+E("CU05_all_small_then_restyle", "every cutoff small, then pair_coeff * * default (no cutoff) after", "pair_coeff * * " + HK + "\nrun 3000\n", pre=BL(HK + CUt(0.001)), gap=0.1e-3)
+E("CU06_cutoff_every", "every pair_coeff * * ... cutoff 0.001 (all small after part 1)", R3.format("pair_coeff * * " + HK + CUt(0.001)))
+E("CU07_all_small_approach", "every cutoff 0.004 (below 0.005), default skin 0.001: 0.005 total", "run 3000\n", pre=BL(HK + CUt(0.004)), gap=0.1e-3)
+E("CU08_cutoff_exact", "every cutoff 0.005 (= the contact distance)", "run 3000\n", pre=BL(HK + CUt(0.005)), gap=0.1e-3)
+
+# ------------------------------------------------------------ CL: clear and losses
+CLB = lambda: BL()
+POUR = "region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nfix p all pour 3 2 4767 region ins diam one 0.003 dens 7800 7800\n"
+E("CL01_clear_pour", "run 100, clear, base again, live pair, pour of 3 mm type 2 7800, run 20000", "run 100\nclear\n" + CLB() + lv(15.1e-3) + POUR + "run 20000\n")
+E("CL02_clear_first_pour_only", "clear first line, pour-only deck (was refused: give --radius)", "", pre="clear\n" + head(1) + "pair_style granular\npair_coeff * * " + HK + "\n" + GRAV + FL() + TAILL + "region ins block 0.005 0.035 0.005 0.035 0.05 0.09 units box\nfix p all pour 20 1 4767 region ins diam range 0.002 0.004\nrun 20000\n", pair="", live="none")
+E("CL03_clear_read_data", "write_data, clear, read_data, kn 5000, run", "write_data d.data\nclear\nunits si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data d.data\npair_style granular\npair_coeff * * " + hk(5000) + "\n" + GRAV + FL() + TAILL + "group lv1 id 1\ngroup lv2 id 2\nrun 3000\n", gap=0.1e-3)
+E("CL04_clear_restart", "write_restart, clear, read_restart, pair_coeff kn 5000, run", "write_restart a.rst\nclear\nread_restart a.rst\npair_coeff * * " + hk(5000) + "\n" + GRAV + FL() + TAILL + "group lv1 id 1\ngroup lv2 id 2\nrun 3000\n", gap=0.1e-3)
+E("CL05_lost_ignore_setup", "thermo_modify lost ignore; a 0.5 m type-2 sphere made: LAMMPS loses others at set-up", "thermo_modify lost ignore\ncreate_atoms 2 single 0.03 0.03 0.05\nset atom 3 diameter 0.5\nrun 3000\n", gap=0.1e-3)
+E("CL06_lost_warn_setup", "CL05 with lost warn", "thermo_modify lost warn\ncreate_atoms 2 single 0.03 0.03 0.05\nset atom 3 diameter 0.5\nrun 3000\n", gap=0.1e-3)
+E("CL07_clear_lost_ignore", "clear first; CL05", "thermo_modify lost ignore\ncreate_atoms 2 single 0.03 0.03 0.05\nset atom 3 diameter 0.5\nrun 3000\n", pre="clear\n" + BL(), gap=0.1e-3)
+E("CL08_lost_in_include", "lost ignore in an include, loss at set-up", "include l.in\ncreate_atoms 2 single 0.03 0.03 0.05\nset atom 3 diameter 0.5\nrun 3000\n", data={"l.in": "thermo_modify lost ignore\n"}, gap=0.1e-3)
+E("CL09_clear_deposit", "clear, base, fix deposit of 3 mm type 2 spheres", "run 100\nclear\n" + CLB() + lv(15.1e-3) + "region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nfix dep all deposit 3 2 5000 4767 region ins near 0.004\nset type 2 diameter 0.006\nrun 20000\n")
+E("CL10_clear_loop_pour", "loop 2: clear, base, pour type 2 (3 mm then 5 mm by if), run", "", pair="", live="none", pre='variable i loop 2\nlabel l\nclear\n' + BL() + lv(15.1e-3) + 'region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nif "$i == 1" then "fix p all pour 3 2 4767 region ins diam one 0.003 dens 7800 7800" else "fix p all pour 3 2 4767 region ins diam one 0.005 dens 7800 7800"\nrun 20000\nnext i\njump SELF l\n')
+E("CL11_lost_in_every", "lost ignore; every set atom 3 diameter 0.5 (a sphere grows: other atoms lost in part 2)", "thermo_modify lost ignore\ncreate_atoms 2 single 0.03 0.03 0.05\n" + R3.format("set atom 3 diameter 0.5"))
+E("CL12_lost_ignore_outside", "lost ignore; a type-2 sphere made outside the f face by displace: lost at set-up", "thermo_modify lost ignore\ncreate_atoms 2 single 0.03 0.03 0.05\ndisplace_atoms lv2 move 0 0 0.2 units box\nrun 3000\n", gap=0.1e-3)
+
+# ------------------------------------------------------------ M: older classes mixed with the new ones
+E("M01_every_units_cgs", "units cgs version of E01 (hooke 2e6, g 100 cm/s) ... live in cm", "", pair="", live="none", pre=head(2, box="0 4 0 4 0 10", units="cgs") + "pair_style granular\npair_coeff * * hooke 2e6 3000 " + K + "\nfix grav all gravity 981 vector 0 0 -1\nfix floor all wall/gran granular hooke 2e6 3000 " + K + " zplane 0 NULL\n" + TAILL + "create_atoms 1 single 1.5 2 5\ncreate_atoms 2 single 2.5 2 5\nset type 1 diameter 0.4 density 2.5\nset type 2 diameter 0.6 density 2.5\n" + 'run 3000 every 1000 "pair_coeff 1 2 hooke 5e6 3000 ' + K + '"\n')
+E("M02_every_jump_label_after", "every run followed by a jump to a label that changes kn, then run", R3.format(P5()) + "jump SELF x\n" + P8() + "\nlabel x\nrun 1000\n", gap=3.1e-3)
+E("M03_every_format_if", "every variable s equal $(step); if $(v_s:%.0f) == 3000 then include kn8.in", R3.format("variable s equal $(step)") + 'if "$(v_s:%.0f) == 3000" then "include kn8.in"\nrun 1000\n', gap=3.1e-3, data={"kn8.in": P8() + "\n"})
+E("M04_every_with_halt", "fix halt on step > 1500 error continue, run 3000 every 1000 kn 5000, then run 2000", "variable st equal step\nfix h all halt 1 v_st > 1500 error continue\n" + R3.format(P5()) + "unfix h\nrun 2000\n", gap=2.2e-3)
+E("M05_every_then_set_order", "every set type 2 diameter 0.008; then set type 2 density 7800", R3.format("set type 2 diameter 0.008") + "set type 2 density 7800\nrun 1000\n", gap=3.1e-3, sep=0.006)
+E("M06_every_timer_timeout", "timer timeout 1000 (s), every run; nothing stops", "timer timeout 1000\n" + R3.format(P5()))
+E("M07_every_next_loop_var", "loop i 3 with every run inside printing $(step); kn changes by if on i", 'variable i loop 3\nlabel l\nif "$i == 3" then "' + P5() + '"\nrun 1000 every 500 "print $(step)"\nnext i\njump SELF l\n', gap=2.1e-3)
+E("M08_every_lj", "units lj; dt 0.005 default; every pair_coeff", "", pair="", live="none", pre=head(2, units="lj", box="0 40 0 40 0 100") + "pair_style granular\npair_coeff * * hooke 2000 30 " + K + "\nfix grav all gravity 1 vector 0 0 -1\nfix floor all wall/gran granular hooke 2000 30 " + K + " zplane 0 NULL\nfix integ all nve/sphere\ncreate_atoms 1 single 10 20 5\ncreate_atoms 2 single 20 20 5\nset type 1 diameter 1 density 1\nset type 2 diameter 1.5 density 1\n" + 'run 3000 every 1000 "pair_coeff 1 2 hooke 5000 30 ' + K + '"\n')
+E("M09_every_2d", "dimension 2 every set type 2 density 7800", "", pair="", live="none", pre=head(2, dim=2, box="0 0.04 0 0.1 -0.001 0.001", bnd="p f p") + "pair_style granular\npair_coeff * * " + HK + "\nfix grav all gravity 9.81 vector 0 -1 0\nfix floor all wall/gran granular " + HK + " yplane 0 NULL\nfix e2 all enforce2d\n" + TAILL + "create_atoms 1 single 0.01 0.01 0\ncreate_atoms 2 single 0.03 0.01 0\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n" + R3.format("set type 2 density 7800"))
+E("M10_every_restyle_hooke_history", "every pair_style gran/hooke/history 5000 ...: restyle in parts", R3.format("pair_style gran/hooke/history 5000 NULL 3000 NULL 0.5 1") [:-2] + '" "pair_coeff * *"\n')
+E("M11_every_quit", "every quit (quit excluded: refused? engine stops after part 1)", R3.format("quit"))
+E("M12_every_clear", "every clear (LAMMPS decides)", R3.format("clear"))
+E("M13_every_label", "every label x (LAMMPS decides)", R3.format("label x"))
+E("M14_every_if_cmd", "every if 1 then pair_coeff (if excluded)", 'run 3000 every 1000 "if 1 then \'' + P5() + '\'"\n')
+E("M15_every_semicolon_quote", "every 'pair_coeff ...' with single quotes", "run 3000 every 1000 '" + P5() + "'\n")
+E("M16_every_dt_timestep_fixdt", "fix dt/reset + every print", "fix dtr all dt/reset 10 NULL 1e-6 1e-6 units box\n" + R3.format("print hi"))
+E("M17_every_read_data_add", "every read_data add append of one sphere file (LAMMPS decides)", R3.format("read_data one.data add append"), data={"one.data": "# one\n\n1 atoms\n1 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 1 0.004 2500 0.01 0.01 0.09\n"})
+E("M18_every_velocity_all_zero", "every velocity all set 0 0 0 (the live pair stops: no contact)", R3.format("velocity all set 0 0 0"))
+E("M19_every_molecule", "every group + set group lv2 diameter 0.008 (live sphere grows)", R3.format("set group lv2 diameter 0.008"), sep=0.006, gap=2.1e-3)
+E("M20_every_fix_freeze", "every fix fr lv2 freeze (the right sphere frozen in parts 2,3)", R3.format("fix fr lv2 freeze"))
+
+# ------------------------------------------------------------ L: LIGGGHTS (typed e: 1 1 0.6, 1 2 0.5, 2 2 0.4; wall type 3)
+E3b = m.E3b
+
+
+def Ll(name, comment, lines, gap=2.1e-3, live="last run", head_=None):
+    xa, xb = -0.002 - gap / 2, 0.003 + gap / 2
+    va, vb = 27 / 35, -8 / 35
+    pair = (f"create_atoms 1 single {xa:.9g} 0 0.1 units box\ncreate_atoms 2 single {xb:.9g} 0 0.1 units box\n"
+            "set atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\ngroup lv1 id 1\ngroup lv2 id 2\n"
+            f"velocity lv1 set {va:.10f} 0 0\nvelocity lv2 set {vb:.10f} 0 0\n")
+    body = (head_ or m.LB()) + pair + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n" + lines
+    m.L(name, "# LIGGGHTS: " + comment + "\n" + body, g=1)
+    LIVE[name] = live
+
+
+E3x = lambda e12: f"fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 {e12} 0.7 {e12} 0.4 0.45 0.7 0.45 0.8"
+Ll("L01_every_property_e", "every fix m3 property/global e 1 2 = 0.9 (same id)", R3.format(E3x(0.9)))
+Ll("L02_every_set_density", "every set type 2 density 5000", R3.format("set type 2 density 5000"))
+Ll("L03_every_print", "every print hi (nothing changes)", R3.format("print hi"))
+Ll("L04_pre_no_property", "run 1000, fix m3 e 1 2 = 0.9, run 3000 pre no", "run 1000\n" + E3x(0.9) + "\nrun 3000 pre no\n", gap=1.1e-3)
+Ll("L05_every_wall", "every unfix wprim + fix wprim hooke (wall)", 'run 3000 every 1000 "unfix wprim" "fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0"\n')
+Ll("L06_every_neigh_exclude", "every neigh_modify exclude type 1 2", R3.format("neigh_modify exclude type 1 2"))
+Ll("L07_every_two_runs", "every e 0.9 then second every run e 0.2", R3.format(E3x(0.9)) + R3.format(E3x(0.2)), gap=5.1e-3)
+Ll("L08_every_step_coeff", "every fix m3 with e 1 2 $(0.1+step/10000) (0.3 in part 3)", R3.format("fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 $(0.1+step/10000) 0.7 $(0.1+step/10000) 0.4 0.45 0.7 0.45 0.8"))
+Ll("L09_every_insert", "an insertion fix runs across parts (particletemplate, insert/pack)", m.PTS + "region ins block -0.04 0.04 -0.04 0.04 0.11 0.14 units box\nfix ins all insert/pack seed 32452843 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 3 region ins\n" + R3.format("print hi"))
+Ll("L10_every_restyle", "every pair_style gran model hooke + pair_coeff * *", 'run 3000 every 1000 "pair_style gran model hooke tangential history" "pair_coeff * *"\n')
+
+
+def write_all(names):
+    for n in names:
+        m.write(n)
+        if n in LIVE:
+            open(os.path.join(m.D, n, "LIVE"), "w").write(LIVE[n].split("\nSEP")[0] + "\n")
+            if "\nSEP " in LIVE[n]:
+                open(os.path.join(m.D, n, "SEP"), "w").write(LIVE[n].split("\nSEP ")[1] + "\n")
+
+
+if __name__ == "__main__":
+    write_all(sys.argv[1:] or list(m.DECKS))
+    print(len(m.DECKS), "decks")
