@@ -14,7 +14,7 @@ for n in sorted(live):
     if not os.path.exists(d + "/audit.rc"):
         print(n, "not audited"); continue
     rc = open(d + "/audit.rc").read().strip()
-    pair = "types 1 1" if "pair11" in n else ("types 1 3" if n.startswith("Y09") else "types 1 2")
+    pair = "type 1 on wall floor" if "WALL" in open(d + "/LIVE").read() else ("types 1 1" if "pair11" in n else ("types 1 3" if n.startswith("Y09") else "types 1 2"))
     rows = subprocess.run([sys.executable, os.path.join(H, "rows27.py"), d, pair], capture_output=True, text=True).stdout.strip()
     m = re.search(r"LIVE27 eps (\S+)", live[n])
     flag = ""

@@ -11,7 +11,10 @@ for d in sys.argv[1:]:
     shutil.copytree(d, tmp)
     lig = os.path.exists(os.path.join(d, "LIGGGHTS"))
     sep = float(open(os.path.join(d, "SEP")).read()) if os.path.exists(os.path.join(d, "SEP")) else 0.005
-    if lig:
+    wall = "WALL" in open(os.path.join(d, "LIVE")).read()
+    if wall:  # the speed the sphere left the floor with, from its speed and height at the end (energy under gravity 9.81)
+        tail = '\nprint "LIVE27 eps $(sqrt(vcm(lv1,z)^2+2*9.81*(xcm(lv1,z)-0.002)):%.6f) vz $(vcm(lv1,z):%.6f) h $(xcm(lv1,z)-0.002:%.6f) n $(count(all)) step $(step)"\n'
+    elif lig:
         tail = f'\nvariable l27e equal vx[2]-vx[1]\nvariable l27g equal x[2]-x[1]-{sep}\nprint "LIVE27 eps ${{l27e}} gap ${{l27g}} n $(atoms)"\n'
     else:
         tail = f'\nprint "LIVE27 eps $(vcm(lv2,x)-vcm(lv1,x):%.6f) gap $(xcm(lv2,x)-xcm(lv1,x)-{sep}:%.6f) n $(count(all)) step $(step)"\n'

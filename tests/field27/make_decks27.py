@@ -221,6 +221,64 @@ Ll("L09_every_insert", "an insertion fix runs across parts (particletemplate, in
 Ll("L10_every_restyle", "every pair_style gran model hooke + pair_coeff * *", 'run 3000 every 1000 "pair_style gran model hooke tangential history" "pair_coeff * *"\n')
 
 
+
+# ------------------------------------------------------------ batch 2: holes around the first batch's findings
+def lvw(gap, t=1, d=0.004):
+    """a live sphere for walls: type t falling onto the floor at 1 m/s from gap above it (group lv1; lv2 = the same atom)"""
+    return f"create_atoms {t} single 0.02 0.02 {d / 2 + gap:.9g}\nset atom 1 diameter {d} density 2500\ngroup lv1 id 1\ngroup lv2 id 1\nvelocity lv1 set 0 0 -1 units box\n"
+
+
+def W(name, comment, lines, gap=2.1e-3, live="last run", pre=None, **kw):
+    E(name, comment, lines, pair=lvw(gap), pre=pre, live=live, **kw)
+    LIVE[name] = live + "\nWALL"
+
+
+E("CU09_all_small_skin5", "every cutoff 0.001, neighbor 0.005 bin (cutoff+skin 0.006 >= 0.005)", "neighbor 0.005 bin\nrun 3000\n", pre=BL(HK + CUt(0.001)), gap=0.1e-3)
+E("CU10_all_0035", "every cutoff 0.0035, default skin 0.001 (0.0045 < 0.005)", "run 3000\n", pre=BL(HK + CUt(0.0035)), gap=0.1e-3)
+E("CU11_all_small_skin4", "every cutoff 0.001, neighbor 0.004 bin (0.005 = the 1 2 contact distance)", "neighbor 0.004 bin\nrun 3000\n", pre=BL(HK + CUt(0.001)), gap=0.1e-3)
+E("CU12_all_small_comm", "every cutoff 0.001, comm_modify cutoff 0.05 (ghost cutoff only)", "comm_modify cutoff 0.05\nrun 3000\n", pre=BL(HK + CUt(0.001)), gap=0.1e-3)
+E("CU13_hybrid_all_small", "hybrid granular granular, every cutoff 0.001", "run 3000\n", pre=head(2) + "pair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + CUt(0.001) + "\npair_coeff 1 2 granular 2 " + hk(5000) + CUt(0.001) + "\n" + GRAV + FL() + TAILL, gap=0.1e-3)
+E("CU14_all_small_skin_in_every", "every cutoff 0.001; run 3000 every 1000 neighbor 0.01 bin", R3.format("neighbor 0.01 bin"), pre=BL(HK + CUt(0.001)))
+E("CU15_all_small_bigger_sphere", "every cutoff 0.001, neighbor 0.01 bin; live pair 4 mm and 20 mm (0.012 > 0.011)", "neighbor 0.01 bin\nrun 3000\n", pre=BL(HK + CUt(0.001)), pair=lv(0.1e-3, 1, 2, 0.004, 0.02), sep=0.012, gap=0.1e-3)
+E("E61_start_stop_pre_no", "run 3000 start 0 stop 3000 pre no every 1000 kn 5000", 'run 3000 start 0 stop 3000 pre no every 1000 "' + P5() + '"\n')
+E("E62_every_NULL", "run 3000 every 1000 NULL (no commands)", "run 3000 every 1000 NULL\n")
+E("E63_every_vref", "every pair_coeff 1 2 hooke $(v_k) (a variable read: refused before)", "variable k equal 5000\n" + R3.format("pair_coeff 1 2 hooke $(v_k) 3000 " + K))
+E("E64_step_expr", "every pair_coeff 1 2 hooke $(step*2+1000): part 3 kn 5000", R3.format("pair_coeff 1 2 hooke $(step*2+1000) 3000 " + K))
+E("E65_step_var_then_coeff", "every variable s equal $(step); then pair_coeff 1 2 hooke ${s} (kn 3000), run 1000", R3.format("variable s equal $(step)") + "pair_coeff 1 2 hooke ${s} 3000 " + K + "\nrun 1000\n", gap=3.1e-3)
+E("E66_step_jump_loop", "loop: run 1000 every 500 variable s equal $(step); if s >= 2000 jump out; kn 5000 after", 'label l\nrun 1000 every 500 "variable s equal $(step)"\nif "${s} >= 2000" then "jump SELF out"\njump SELF l\nlabel out\n' + P5() + "\nrun 1000\n", gap=2.1e-3)
+E("E67_exclude_pre_no_every", "run 3000 pre no every 1000 neigh_modify exclude type 1 2 (parts 2, 3 without set-up)", 'run 3000 pre no every 1000 "neigh_modify exclude type 1 2"\n')
+E("E68_one_part", "run 1000 every 1000 kn 5000, then run 2000", 'run 1000 every 1000 "' + P5() + '"\nrun 2000\n', gap=1.1e-3)
+E("E69_delete_pre_no", "run 3000 pre no every 1000 delete_atoms group lv1", 'run 3000 pre no every 1000 "delete_atoms group lv1"\n')
+E("E70_set_diam_pre_no", "run 3000 pre no every 1000 set type 2 density 7800", 'run 3000 pre no every 1000 "set type 2 density 7800"\n')
+E("E71_every_restyle_pre_no", "run 3000 pre no every 1000 pair_style granular + * * kn 5000", 'run 3000 pre no every 1000 "pair_style granular" "pair_coeff * * ' + hk(5000) + '"\n')
+E("E72_every_hybrid_none_one", "hybrid granular (one sub-style); every pair_coeff 1 2 none", 'run 3000 every 1000 "pair_coeff 1 2 none"\n', pre=HY(GG))
+E("E73_every_cutoff12", "every pair_coeff 1 2 ... cutoff 0.001 (one pair small)", R3.format("pair_coeff 1 2 " + HK + CUt(0.001)))
+E("E74_every_lost", "lost ignore; every displace_atoms lv2 move 0 0 0.2 (lv2 lost in part 2)", "thermo_modify lost ignore\n" + R3.format("displace_atoms lv2 move 0 0 0.2 units box"))
+E("E75_every_clear_after", "every run, then clear, base, live pair, run (the every before a clear)", R3.format(P5()) + "clear\n" + BL() + lv(0.1e-3) + "run 3000\n")
+E("E76_every_in_loop_include", "loop 2 passes, each include r.in (an every run)", "variable i loop 2\nlabel l\ninclude r.in\nnext i\njump SELF l\n", data={"r.in": 'run 1500 every 500 "' + P5() + '"\n'}, gap=2.1e-3)
+P21 = "run 1000\nset type 1 diameter 0.005\nrun 3000 pre no\n"
+E("P20_exclude_none_pre_no", "neigh_modify exclude type 1 2; run 1000; exclude none; run 3000 pre no", "neigh_modify exclude type 1 2\nrun 1000\nneigh_modify exclude none\nrun 3000 pre no\n", gap=1.1e-3)
+E("P21_diameter_pre_no", "run 1000, set type 1 diameter 0.005, run pre no (sizes: not refused)", P21, gap=2.1e-3, sep=0.0055)
+E("P22_hybrid_pre_no", "hybrid granular granular; run 1000; pair_coeff 1 2 granular 2 kn 5000; run pre no", "run 1000\npair_coeff 1 2 granular 2 " + hk(5000) + "\nrun 3000 pre no\n", pre=head(2) + "pair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + "\npair_coeff 2 2 granular 2 " + HK + "\n" + GRAV + FL() + TAILL, gap=1.1e-3)
+E("P23_hybrid_none_pre_no", "hybrid granular granular; run 1000; pair_coeff 1 2 none; run pre no", "run 1000\npair_coeff 1 2 none\nrun 3000 pre no\n", pre=head(2) + "pair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + "\npair_coeff 2 2 granular 2 " + HK + "\n" + GRAV + FL() + TAILL, gap=1.1e-3)
+E("P24_pre_no_every_first", "pair_coeff 1 2 kn 5000, then run 3000 pre no every 1000 print (first part sets up)", P5() + '\nrun 3000 pre no every 1000 "print x"\n', gap=0.1e-3)
+E("P25_two_pre_no", "run 1000; kn 5000; run 1000 pre no; kn 8000; run 3000 pre no", "run 1000\n" + P5() + "\nrun 1000 pre no\n" + P8() + "\nrun 3000 pre no\n", gap=2.1e-3)
+E("P26_exclude_type_pre_no_11", "run 1000; neigh_modify exclude type 1 1; run pre no (live pair 1 2)", "run 1000\nneigh_modify exclude type 1 1\nrun 3000 pre no\n", gap=1.1e-3)
+W("W01_every_floor_redefine", "wall live: every fix floor kn 8000 (same id)", R3.format("fix floor all wall/gran granular " + hk(8000) + " zplane 0 NULL"))
+W("W02_pre_no_floor", "wall live: run 1000, fix floor kn 8000, run 3000 pre no", "run 1000\n" + FL(hk(8000)) + "run 3000 pre no\n", gap=1.1e-3)
+W("W03_every_unfix_fix_floor", "wall live: every unfix floor + fix floor kn 8000", 'run 3000 every 1000 "unfix floor" "fix floor all wall/gran granular ' + hk(8000) + ' zplane 0 NULL"\n')
+W("W04_pre_no_unfix_floor", "wall live: run 1000, unfix floor, run 3000 pre no (no wall)", "run 1000\nunfix floor\nrun 3000 pre no\n", gap=1.1e-3)
+W("W05_every_pre_no_floor", "wall live: run 3000 pre no every 1000 fix floor kn 8000", 'run 3000 pre no every 1000 "fix floor all wall/gran granular ' + hk(8000) + ' zplane 0 NULL"\n')
+W("W06_plain_control", "wall live control: floor kn 2000, run 3000", "run 3000\n", gap=0.1e-3)
+W("W07_plain_control_8000", "wall live control: floor kn 8000 from the start", FL(hk(8000)) + "run 3000\n", gap=0.1e-3)
+E("Y16_reversed_none", "hybrid granular; pair_coeff 2 1 none", "run 3000\n", pre=HY(GG + "pair_coeff 2 1 none\n"), gap=0.1e-3)
+E("Y17_three_all_unlike_none", "3 types, 1 2, 1 3, 2 3 none; live 1 2", "run 3000\n", pre=HY(GG + "pair_coeff 1 2 none\npair_coeff 1 3 none\npair_coeff 2 3 none\n", nt=3), gap=0.1e-3)
+E("Y18_star_none_star_back", "* * none then * * granular kn 5000", "run 3000\n", pre=HY("pair_coeff * * none\npair_coeff * * granular " + hk(5000) + "\n"), gap=0.1e-3)
+E("Y19_range_none_then_11", "1*2 1*2 none then 1 1 granular (2 2 none)", "run 3000\n", pre=HY("pair_coeff 1*2 1*2 none\npair_coeff 1 1 granular " + HK + "\n"), gap=0.1e-3)
+E("Y20_none_12_then_11none", "1 2 none, then 1 1 none later", "run 3000\n", pre=HY(GG + "pair_coeff 1 2 none\npair_coeff 1 1 none\n"), gap=0.1e-3)
+E("Y21_none_in_if", "1 2 none given by an if", 'if "1 > 0" then "pair_coeff 1 2 none"\nrun 3000\n', pre=HY(GG), gap=0.1e-3)
+E("Y22_none_22_three", "3 types; 2 2 none only; live 1 2", "run 3000\n", pre=HY(GG + "pair_coeff 2 2 none\n", nt=3), gap=0.1e-3)
+
 def write_all(names):
     for n in names:
         m.write(n)
