@@ -279,6 +279,16 @@ E("Y20_none_12_then_11none", "1 2 none, then 1 1 none later", "run 3000\n", pre=
 E("Y21_none_in_if", "1 2 none given by an if", 'if "1 > 0" then "pair_coeff 1 2 none"\nrun 3000\n', pre=HY(GG), gap=0.1e-3)
 E("Y22_none_22_three", "3 types; 2 2 none only; live 1 2", "run 3000\n", pre=HY(GG + "pair_coeff 2 2 none\n", nt=3), gap=0.1e-3)
 
+MIX = head(2) + "pair_style granular\npair_coeff 1 1 " + HK + "\npair_coeff 2 2 " + HK + "\n" + GRAV + FL() + TAILL
+E("P27_mixed_then_explicit_pre_no", "1 1 and 2 2 only (1 2 mixed); run 1000; pair_coeff 1 2 kn 5000; run pre no", "run 1000\n" + P5() + "\nrun 3000 pre no\n", pre=MIX, gap=1.1e-3)
+E("P28_mixed_then_explicit_pre_no_rev", "P27 with the type-2 sphere made first", "run 1000\n" + P5() + "\nrun 3000 pre no\n", pre=MIX, pair=lv(1.1e-3, rev=True), gap=1.1e-3)
+E("P29_mixed_11_change_pre_no", "1 1 and 2 2 only; run 1000; pair_coeff 1 1 kn 8000 (mixed 1 2 would change); run pre no", "run 1000\n" + P8("1", "1") + "\nrun 3000 pre no\n", pre=MIX, gap=1.1e-3)
+E("P30_mixed_11_change_run", "control of P29 without pre no (the mixed 1 2 follows 1 1)", "run 1000\n" + P8("1", "1") + "\nrun 3000\n", pre=MIX, gap=1.1e-3)
+E("E77_step_in_set", "every set type 2 density $(2500+step) (3500 in part 2, 4500 in part 3)", R3.format("set type 2 density $(2500+step)"))
+E("E78_step_timestep", "every timestep $(1e-6/(1+step/1000)) (dt 5e-7 then 3.33e-7)", R3.format("timestep $(1e-6/(1+step/1000))"), gap=1.55e-3)
+E("E79_step_pair_coeff_after_run", "run 2000 then every pair_coeff 1 2 hooke $(step): part 2 of run 2000 every 1000 sees kn 3000", "run 2000\n" + 'run 2000 every 1000 "pair_coeff 1 2 hooke $(step) 3000 ' + K + '"\n', gap=3.1e-3)
+E("E80_time_coeff", "every pair_coeff 1 2 hooke $(time*2.5e6) (kn 2500, 5000)", R3.format("pair_coeff 1 2 hooke $(time*2.5e6) 3000 " + K))
+
 def write_all(names):
     for n in names:
         m.write(n)
