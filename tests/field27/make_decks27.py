@@ -289,6 +289,21 @@ E("E78_step_timestep", "every timestep $(1e-6/(1+step/1000)) (dt 5e-7 then 3.33e
 E("E79_step_pair_coeff_after_run", "run 2000 then every pair_coeff 1 2 hooke $(step): part 2 of run 2000 every 1000 sees kn 3000", "run 2000\n" + 'run 2000 every 1000 "pair_coeff 1 2 hooke $(step) 3000 ' + K + '"\n', gap=3.1e-3)
 E("E80_time_coeff", "every pair_coeff 1 2 hooke $(time*2.5e6) (kn 2500, 5000)", R3.format("pair_coeff 1 2 hooke $(time*2.5e6) 3000 " + K))
 
+E("P31_newton_off_pre_no", "newton off; run 1000; pair_coeff 1 2 kn 5000; run 3000 pre no", "run 1000\n" + P5() + "\nrun 3000 pre no\n", pre=head(2, extra="newton off\n") + "pair_style granular\npair_coeff * * " + HK + "\n" + GRAV + FL() + TAILL, gap=1.1e-3)
+E("P32_newton_off_pre_no_rev", "P31 with the type-2 sphere first", "run 1000\n" + P5() + "\nrun 3000 pre no\n", pre=head(2, extra="newton off\n") + "pair_style granular\npair_coeff * * " + HK + "\n" + GRAV + FL() + TAILL, pair=lv(1.1e-3, rev=True), gap=1.1e-3)
+E("P33_history_pre_no_rev", "tangential linear_history; type-2 sphere first; run 1000; pair_coeff 1 2 kn 5000; run pre no", "run 1000\npair_coeff 1 2 hooke 5000 3000 damping mass_velocity tangential linear_history 1000 1 0.3\nrun 3000 pre no\n", pre=BL("hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1 0.3"), pair=lv(1.1e-3, rev=True), gap=1.1e-3)
+E("P34_old_style_pre_no_rev", "gran/hooke/history restyle kn 5000 then pre no; type-2 first", "run 1000\npair_style gran/hooke/history 5000 NULL 3000 NULL 0.5 1\npair_coeff * *\nrun 3000 pre no\n", pair=lv(1.1e-3, rev=True), gap=1.1e-3)
+E("P35_three_types_pre_no", "3 types (live 1 3, type-3 first); run 1000; pair_coeff 1 3 kn 5000; run pre no", "run 1000\n" + P5("1", "3") + "\nrun 3000 pre no\n", pre=BL(nt=3), pair=lv(1.1e-3, 1, 3, rev=True), gap=1.1e-3)
+
+E("P36_left2_pre_no", "type-2 sphere on the LEFT (made first); run 1000; pair_coeff 1 2 kn 5000; run 3000 pre no", "run 1000\n" + P5() + "\nrun 3000 pre no\n", pair=lv(1.1e-3, 2, 1, 0.006, 0.004), gap=1.1e-3)
+E("P37_left2_second_pre_no", "type-2 sphere on the LEFT made second", "run 1000\n" + P5() + "\nrun 3000 pre no\n", pair=lv(1.1e-3, 2, 1, 0.006, 0.004, rev=True), gap=1.1e-3)
+E("E23c_pre_no_left2", "run 3000 pre no every 1000 pair_coeff 1 2 kn 5000, type-2 sphere on the left", 'run 3000 pre no every 1000 "' + P5() + '"\n', pair=lv(2.1e-3, 2, 1, 0.006, 0.004))
+E("P38_left2_mixed_explicit", "P27 (1 2 mixed, then explicit) with the type-2 sphere on the left", "run 1000\n" + P5() + "\nrun 3000 pre no\n", pre=MIX, pair=lv(1.1e-3, 2, 1, 0.006, 0.004), gap=1.1e-3)
+E("P39_left2_plain_control", "control: type-2 sphere on the left, kn 5000 by a run with set-up", "run 1000\n" + P5() + "\nrun 3000\n", pair=lv(1.1e-3, 2, 1, 0.006, 0.004), gap=1.1e-3)
+
+E("E81_step_expr_then_run", "E64 followed by run 1000 (the every run made for real); pair meets in part 3", R3.format("pair_coeff 1 2 hooke $(step*2+1000) 3000 " + K) + "run 1000\n", live="part 3 of the every run")
+E("E82_step_set_then_run", "E77 followed by run 1000; pair meets in part 3", R3.format("set type 2 density $(2500+step)") + "run 1000\n", live="part 3 of the every run")
+
 def write_all(names):
     for n in names:
         m.write(n)

@@ -9,7 +9,7 @@ for l in open(d + "/audit.out"):
         st += 1
         stages = int(l.split()[4].rstrip(":")) if l.split()[3] == "of" else stages
     elif not l.startswith(" "):
-        m = re.match(r"(types \d+ \d+|type \d+ on wall \S+)", l)
+        m = re.match(r"(types \d+ \d+|type \d+ on wall [^:\s]+)", l)
         name = (m.group(1) + ("*" if "does not happen" in l else "")) if m else None
     elif l.split()[:2] == ["g", G] and name and name.rstrip("*") == want:
         res.setdefault(st, []).append(l.split()[3] + ("*" if name.endswith("*") else ""))
