@@ -304,6 +304,50 @@ E("P39_left2_plain_control", "control: type-2 sphere on the left, kn 5000 by a r
 E("E81_step_expr_then_run", "E64 followed by run 1000 (the every run made for real); pair meets in part 3", R3.format("pair_coeff 1 2 hooke $(step*2+1000) 3000 " + K) + "run 1000\n", live="part 3 of the every run")
 E("E82_step_set_then_run", "E77 followed by run 1000; pair meets in part 3", R3.format("set type 2 density $(2500+step)") + "run 1000\n", live="part 3 of the every run")
 
+MIXHM = head(2) + "pair_style granular\npair_coeff 1 1 " + m.HM + "\npair_coeff 2 2 " + m.HM + "\n" + GRAV + FL(m.HM) + TAILL
+E("P40_mixed_22_change_pre_no", "1 1, 2 2 only; run 1000; pair_coeff 2 2 kn 8000; run pre no (live 1 2, mixed)", "run 1000\n" + P8("2", "2") + "\nrun 3000 pre no\n", pre=MIX, gap=1.1e-3)
+E("P41_mixed_hertz_pre_no", "hertz/material 1 1, 2 2 only; run 1000; pair_coeff 1 1 E 3e7; run pre no (live 1 2, mixed E)", "run 1000\npair_coeff 1 1 hertz/material 3e7 1.4e7 0.3 damping viscoelastic " + TL + "\nrun 3000 pre no\n", pre=MIXHM, gap=1.1e-3)
+E("P42_mixed_every_pre_no", "1 1, 2 2 only; run 3000 pre no every 1000 pair_coeff 1 1 kn 8000 (live 1 2 in part 3)", 'run 3000 pre no every 1000 "' + P8("1", "1") + '"\n', pre=MIX)
+E("P43_mixed_every_control", "P42 without pre no", 'run 3000 every 1000 "' + P8("1", "1") + '"\n', pre=MIX)
+E("P44_mixed_left2_pre_no", "P29 with the type-2 sphere on the left", "run 1000\n" + P8("1", "1") + "\nrun 3000 pre no\n", pre=MIX, pair=lv(1.1e-3, 2, 1, 0.006, 0.004), gap=1.1e-3)
+GB = lambda: m.BASE() + m.TWO
+def G(name, comment, lines):
+    deck(name, "# " + comment + "\n" + GB() + lines, g=1)
+G("G01_group_id_delete", "group a id 1; run 100; delete_atoms group a; run 100", "group a id 1\nrun 100\ndelete_atoms group a\nrun 100\n")
+G("G02_group_id_range_delete", "group a id 1:1; delete_atoms group a; run 100", "group a id 1:1\nrun 100\ndelete_atoms group a\nrun 100\n")
+G("G03_group_idlt_delete", "group a id < 2; delete_atoms group a", "group a id < 2\nrun 100\ndelete_atoms group a\nrun 100\n")
+G("G04_group_region_delete", "region r around atom 1; group a region r; delete_atoms group a", "region r sphere 0.02 0.02 0.01 0.003 units box\ngroup a region r\nrun 100\ndelete_atoms group a\nrun 100\n")
+G("G05_group_subtract_delete", "group b type 2; group a subtract all b; delete_atoms group a", "group b type 2\ngroup a subtract all b\nrun 100\ndelete_atoms group a\nrun 100\n")
+G("G06_group_id_delete_last", "group a id 2 (the 6 mm sphere); delete_atoms group a; run 100", "group a id 2\ndelete_atoms group a\nrun 100\n")
+G("G07_group_variable_delete", "variable v atom id==1; group a variable v; delete_atoms group a", "variable v atom id==1\ngroup a variable v\nrun 100\ndelete_atoms group a\nrun 100\n")
+G("G08_group_type_control", "control: group a type 1; delete_atoms group a", "group a type 1\nrun 100\ndelete_atoms group a\nrun 100\n")
+G("G09_group_id_every_delete", "group a id 1; run 300 every 100 delete_atoms group a (second part: the group is empty)", 'group a id 1\nrun 300 every 100 "delete_atoms group a"\n')
+G("G10_delete_atoms_atom_id", "delete_atoms group from group a id 1 with compress no", "group a id 1\nrun 100\ndelete_atoms group a compress no\nrun 100\n")
+
+E("E83_dt_coeff", "every pair_coeff 1 2 hooke $(dt*5e9) (dt 1e-6: kn 5000 each time)", R3.format("pair_coeff 1 2 hooke $(dt*5e9) 3000 " + K))
+E("E84_step_print_only", "every print $(step) and pair_coeff 1 2 kn 5000 (the step only printed)", 'run 3000 every 1000 "print $(step)" "' + P5() + '"\n')
+E("E85_step_in_fix_wall", "every fix floor kn $(step+7000) (wall from step)", R3.format("fix floor all wall/gran granular hooke $(step+7000) 3000 " + K + " zplane 0 NULL"))
+E("E86_step_not_last", "E64 then clear and a new simulation with its own run (the every run not the last of the deck)", R3.format("pair_coeff 1 2 hooke $(step*2+1000) 3000 " + K) + "clear\n" + BL() + lv(0.1e-3) + "run 3000\n", live="the run after clear")
+G("G11_group_after_run", "run 100; group a id 1; delete_atoms group a; run 100", "run 100\ngroup a id 1\ndelete_atoms group a\nrun 100\n")
+G("G12_delete_overlap", "a third sphere overlapping atom 1 (type 1); delete_atoms overlap 0.003 all all after a run", "create_atoms 1 single 0.021 0.02 0.01\nset atom 3 diameter 0.004 density 2500\nrun 100\ndelete_atoms overlap 0.003 all all\nrun 100\n")
+G("G13_group_id_delete_then_create", "group a id 1; run; delete_atoms group a; create_atoms 1 single (type 1 made again); run", "group a id 1\nrun 100\ndelete_atoms group a\ncreate_atoms 1 single 0.03 0.03 0.01\nset type 1 diameter 0.004 density 2500\nrun 100\n")
+G("G14_group_id_in_include", "the delete by an id group inside an include", "group a id 1\nrun 100\ninclude del.in\nrun 100\n")
+m.DECKS["G14_group_id_in_include"] = (m.DECKS["G14_group_id_in_include"][0], 1, {"del.in": "delete_atoms group a\n"}, False, "in.deck")
+E("P45_mixed_set_pre_no", "1 1, 2 2 only (1 2 mixed); run 1000; set type 2 density 7800; run pre no (sizes: the mix does not read them)", "run 1000\nset type 2 density 7800\nrun 3000 pre no\n", pre=MIX, gap=1.1e-3)
+E("P46_mixed_like_back_same", "1 1, 2 2 only; run 1000; pair_coeff 1 1 with the SAME law again; run pre no", "run 1000\npair_coeff 1 1 " + HK + "\nrun 3000 pre no\n", pre=MIX, gap=1.1e-3)
+E("P47_mixed_like_then_run0", "P29 with run 0 before the pre no run (set up again)", "run 1000\n" + P8("1", "1") + "\nrun 0\nrun 3000 pre no\n", pre=MIX, gap=1.1e-3)
+E("P48_mixed_like_include", "P29 with the like change in an include", "run 1000\ninclude c.in\nrun 3000 pre no\n", pre=MIX, gap=1.1e-3, data={"c.in": P8("1", "1") + "\n"})
+E("CL13_every_clear_every", "every run; clear; base again; every run with kn 8000", R3.format(P5()) + "clear\n" + BL() + lv(2.1e-3) + R3.format(P8()))
+E("CL14_lost_warn_every", "lost warn; every displace lv2 up (lost in part 2)", "thermo_modify lost warn\n" + R3.format("displace_atoms lv2 move 0 0 0.2 units box"))
+Ll("L11_pre_no_every", "LIGGGHTS run 3000 pre no every 1000 e 1 2 0.9", 'run 3000 pre no every 1000 "' + E3x(0.9) + '"\n')
+Ll("L12_every_include", "LIGGGHTS every run in an include", "include r.in\n")
+m.DECKS["L12_every_include"] = (m.DECKS["L12_every_include"][0], 1, {"r.in": R3.format(E3x(0.9))}, True, "in.deck")
+Ll("L13_every_delete_group_id", "LIGGGHTS every delete_atoms group lv1 (id group)", R3.format("delete_atoms group lv1"))
+Ll("L14_every_set_diameter", "LIGGGHTS every set type 2 diameter 0.008", R3.format("set type 2 diameter 0.008"), gap=3.1e-3)
+
+W("W08_every_floor_step", "wall live: every fix floor hooke $(step+7000) (kn 8000 in part 2, 9000 in part 3; sphere hits in part 3)", R3.format("fix floor all wall/gran granular hooke $(step+7000) 3000 " + K + " zplane 0 NULL"))
+W("W09_floor_9000_control", "wall live control: floor kn 9000, the sphere hits after 2.1 mm", FL(hk(9000)) + "run 3000\n")
+
 def write_all(names):
     for n in names:
         m.write(n)
