@@ -348,6 +348,12 @@ Ll("L14_every_set_diameter", "LIGGGHTS every set type 2 diameter 0.008", R3.form
 W("W08_every_floor_step", "wall live: every fix floor hooke $(step+7000) (kn 8000 in part 2, 9000 in part 3; sphere hits in part 3)", R3.format("fix floor all wall/gran granular hooke $(step+7000) 3000 " + K + " zplane 0 NULL"))
 W("W09_floor_9000_control", "wall live control: floor kn 9000, the sphere hits after 2.1 mm", FL(hk(9000)) + "run 3000\n")
 
+G("G15_set_group_id_type", "group a id 1; run; set group a type 2 (type 1 now empty); run", "group a id 1\nrun 100\nset group a type 2\nrun 100\n")
+G("G16_set_atom_type", "run; set atom 1 type 2; run", "run 100\nset atom 1 type 2\nrun 100\n")
+G("G17_set_type_type", "run; set type 1 type 2; run (control, a type group)", "run 100\nset type 1 type 2\nrun 100\n")
+G("G18_set_group_id_fraction", "group a id 1; run; set group a type/fraction 2 1.0 12345; run", "group a id 1\nrun 100\nset group a type/fraction 2 1.0 12345\nrun 100\n")
+G("G19_set_atom_type_first", "set atom 1 type 2 before the only run", "set atom 1 type 2\nrun 100\n")
+
 def write_all(names):
     for n in names:
         m.write(n)
