@@ -354,6 +354,11 @@ G("G17_set_type_type", "run; set type 1 type 2; run (control, a type group)", "r
 G("G18_set_group_id_fraction", "group a id 1; run; set group a type/fraction 2 1.0 12345; run", "group a id 1\nrun 100\nset group a type/fraction 2 1.0 12345\nrun 100\n")
 G("G19_set_atom_type_first", "set atom 1 type 2 before the only run", "set atom 1 type 2\nrun 100\n")
 
+HY2 = head(2) + "pair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + "\npair_coeff 2 2 granular 2 " + HK + "\n" + GRAV + FL() + TAILL
+E("E87_every_none_two_sub", "hybrid granular granular (both used); every pair_coeff 1 2 none (LAMMPS keeps none with two sub-styles)", 'run 3000 every 1000 "pair_coeff 1 2 none"\n', pre=HY2)
+E("E88_every_back_two_sub", "hybrid granular granular; 1 2 none; every pair_coeff 1 2 granular 2 kn 5000", 'pair_coeff 1 2 none\nrun 3000 every 1000 "pair_coeff 1 2 granular 2 ' + hk(5000) + '"\n', pre=HY2)
+E("E89_every_none_then_pre_no", "hybrid granular granular; run 1000; 1 2 none; run 3000 pre no (LAMMPS decides)", "run 1000\npair_coeff 1 2 none\nrun 3000 pre no\n", pre=HY2, gap=1.1e-3)
+
 def write_all(names):
     for n in names:
         m.write(n)
