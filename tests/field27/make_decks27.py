@@ -359,6 +359,9 @@ E("E87_every_none_two_sub", "hybrid granular granular (both used); every pair_co
 E("E88_every_back_two_sub", "hybrid granular granular; 1 2 none; every pair_coeff 1 2 granular 2 kn 5000", 'pair_coeff 1 2 none\nrun 3000 every 1000 "pair_coeff 1 2 granular 2 ' + hk(5000) + '"\n', pre=HY2)
 E("E89_every_none_then_pre_no", "hybrid granular granular; run 1000; 1 2 none; run 3000 pre no (LAMMPS decides)", "run 1000\npair_coeff 1 2 none\nrun 3000 pre no\n", pre=HY2, gap=1.1e-3)
 
+E("E90_1001_parts_coeff", "run 1001 every 1 pair_coeff 1 2 kn 5000 (1001 parts), then run 2000", 'run 1001 every 1 "' + P5() + '"\nrun 2000\n', gap=1.1e-3)
+E("E91_every_2000_parts_set", "run 2000 every 1 set type 2 density 7800 (2000 parts), live pair in part 1100-1700", 'run 2000 every 1 "set type 2 density 7800"\n', gap=1.1e-3, live="part ~1100")
+
 def write_all(names):
     for n in names:
         m.write(n)
