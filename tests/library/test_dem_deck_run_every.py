@@ -152,8 +152,8 @@ def test_an_if_between_the_parts_is_read_by_its_branches(tmp_path, between, audi
 
 @needs_lammps
 @pytest.mark.dem
-@pytest.mark.parametrize("line", ["variable s equal $(step)", LINE.replace("1000", "$(step*2+1000)")],
-                         ids=["a variable", "a coefficient"])
+@pytest.mark.parametrize("line", [LINE.replace("1000", "$(step*2+1000)"), "set type 2 density $(2500+step)"],
+                         ids=["a coefficient", "a density"])
 def test_a_step_read_between_the_parts_keeps_the_refusal(tmp_path, line):
     """The step between a run's parts is LAMMPS' own (1000, 2000, ...), never the pass's (its runs
     skipped): field round 27, E64, E77: $(step*2+1000) as a kn or $(2500+step) as a density, read at
@@ -179,3 +179,19 @@ def test_a_like_pair_changed_before_pre_no_keeps_the_old_mix_and_is_refused(tmp_
     (tmp_path / "in.deck").write_text(changed + "run 30000 pre no\n")
     status, out, err = run(tmp_path / "in.deck", "--g", "1")
     assert status == 2 and out == "" and "pre no after a contact setting changed" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_step_a_variable_reads_between_the_parts_is_the_decks(tmp_path):
+    """Field round 27, E29, E65: ``variable s equal $(step)`` between the parts, an if on it after the
+    run: the pass is made again with its runs made, and the if picks LAMMPS' branch (s = 300: kn
+    3000; with the runs skipped it would read 0 and pick kn 9000)."""
+    stiff = {kn: LINE.replace("1000", kn) for kn in ("3000", "9000")}
+    deck = HEAD_ON.format(line=LINE) + ('run 300 every 100 "variable s equal $(step)"\n'
+                                        f'if "${{s}} >= 300" then "{stiff["3000"]}" else "{stiff["9000"]}"\n'
+                                        "run 30000\n")
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 5e-5, (row["eps"], err)

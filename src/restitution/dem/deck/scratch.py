@@ -92,6 +92,21 @@ _UNSPLIT = frozenset({"run", "minimize", "quit", "include", "jump", "label", "ne
 #: where LAMMPS reads 8000; round 27, E64: $(step*2+1000) read at the pass's step 0), or a function of
 #: the run's own start and end
 _IN_RUN = re.compile(r"\$|\b(?:[vcf]|[id]2?)_\w|\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(")
+#: Immediate values the copy reads as LAMMPS does inside the run: the time step alone (set by the
+#: commands the copy runs too; field round 27, E15's timestep $(dt*0.5) was right) and, in a variable's
+#: definition, the step and time, whose later reads after a run the pass makes again with its runs
+#: made (E29, E65, E66: right; E64's $(step*2+1000) as a coefficient was not: read at step 0)
+_DT_ONLY = re.compile(r"\$\((?:[\s\d.eE+\-*/()]|\bdt\b)*\)")
+_CLOCK_ONLY = re.compile(r"\$\((?:[\s\d.eE+\-*/()]|\bstep\b|\btime\b|\bdt\b)*\)")
+
+
+def _in_run(command: str) -> bool:
+    """Whether a command a run's every names reads a value that differs inside the run from after a
+    run of the copy (:data:`_IN_RUN`); a command the copy never runs (print, dump, ...) reads none."""
+    first = command.split()[0]
+    if first in SKIPPED_COMMANDS:
+        return False
+    return bool(_IN_RUN.search((_CLOCK_ONLY if first == "variable" else _DT_ONLY).sub("", command)))
 #: The label that opens stage k's marker where it stands inline in an if (its echo marks the stage)
 STAGE_LABEL = "restitution_stage_"
 #: A deck's folder copied whole; a larger one is refused (with the files above it that it names)
@@ -729,8 +744,10 @@ def split_every(run: str) -> tuple[list[str], list[str]] | None:
     (True, True)
     >>> split_every('run 300 every 100 "pair_coeff * * hooke $(v_kn) 0"') is None
     True
-    >>> split_every('run 200 every 100 "variable s equal $(step)"') is None
+    >>> split_every('run 200 every 100 "pair_coeff * * hooke $(step*2+1000) 0"') is None
     True
+    >>> split_every('run 200 every 100 "variable s equal $(step)" "print $(step)" "timestep $(dt*0.5)"')[0]
+    ['run 100 pre yes', 'run 100']
     """
     try:
         split = words(run)
@@ -747,7 +764,7 @@ def split_every(run: str) -> tuple[list[str], list[str]] | None:
     firsts = [command.split()[0] if command.split() else "" for command in commands]
     if not commands or all(first in SKIPPED_COMMANDS or first == "NULL" for first in firsts) \
             or any(first in _UNSPLIT or not first for first in firsts) \
-            or any(_IN_RUN.search(command) for command in commands):
+            or any(_in_run(command) for command in commands):
         return None
     steps, every = int(split[1]), int(split[at + 1])
     count = max(1, -(-steps // every))
