@@ -856,27 +856,21 @@ def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
         if f"{sub} 1" in deck.substyle.split(" and ") and len(words) > 4:
             # one of several instances of a sub-style, named by its number (LAMMPS stops without it)
             sub, words = f"{sub} {words[4]}", [*words[:4], *words[5:]]
-        if sub == deck.substyle:
+        if sub in deck.substyle.split(" and "):
+            # its granular sub-style (one of two: the pairs LAMMPS' loop sets now take it under hybrid,
+            # or add it under hybrid/overlay, a pair of both then refused); under hybrid it gives the
+            # pairs back that a none took from it (field round 26, T14: the later pair_coeff 1 2
+            # granular ... was left out, the none read)
             words = [*words[:3], *words[4:]]
             DIALECTS[deck.code].pair_coeff(deck, words, where, line, loc)
-            if deck.hybrid == "hybrid":
-                # the sub-style given back to pairs a none took from it (field round 26, T14: the
-                # later pair_coeff 1 2 granular ... was left out, the none read)
-                for key, (_, set_by) in deck.coeffs.items():
-                    if set_by is words:
-                        deck.others.pop(key, None)
-            return
-        elif sub in deck.substyle.split(" and "):
-            # one of two granular sub-styles: the pairs LAMMPS' loop sets now take it (hybrid), or add
-            # it (hybrid/overlay, a pair of both then refused)
-            words = [*words[:3], *words[4:]]
-            DIALECTS[deck.code].pair_coeff(deck, words, where, line, loc)
+            several = " and " in deck.substyle
             for key, (_, set_by) in deck.coeffs.items():
                 if set_by is words:
                     if deck.hybrid == "hybrid":
-                        deck.granular_of[key] = {sub}
                         deck.others.pop(key, None)
-                    else:
+                        if several:
+                            deck.granular_of[key] = {sub}
+                    elif several:
                         deck.granular_of.setdefault(key, set()).add(sub)
             return
         else:
