@@ -532,24 +532,19 @@ def engine_of(text: str) -> str:
     return "LIGGGHTS" if _LIGGGHTS_DECK.search(text) else "LAMMPS"
 
 
-def _with_included(text: str, folder: Path, depth: int = 3) -> str:
-    """The deck's text and that of the files its include lines name as written in its folder, to
-    ``depth`` levels: a LIGGGHTS deck may keep every line only LIGGGHTS knows in an included
-    settings file (field round 21, N01 was run in LAMMPS, which stopped on it)."""
-    texts, seen = [text], set()
-    todo = [(text, depth)]
-    while todo:
-        current, left = todo.pop()
-        for line in current.splitlines():
-            words = line.split("#", 1)[0].split()
-            if left and words[:1] == ["include"] and len(words) > 1 and "$" not in words[1]:
-                name = folder / words[1].strip("\"'")
-                if name in seen or not name.is_file() or name.stat().st_size > 2 ** 24:
-                    continue
-                seen.add(name)
-                included = name.read_text(encoding="utf-8", errors="replace")
-                texts.append(included)
-                todo.append((included, left - 1))
+def _with_included(text: str, deck: Path) -> str:
+    """The deck's text and that of the files its include and jump lines name as written: a LIGGGHTS
+    deck may keep every line only LIGGGHTS knows in an included settings file (field round 21, N01
+    was run in LAMMPS, which stopped on it)."""
+    from .scratch import scripts_named
+    texts = [text]
+    for path in scripts_named(deck, literal=True):
+        try:
+            # a regular file of sane size: not a device or pipe a read would never end
+            if path.is_file() and path.stat().st_size <= 2 ** 24:
+                texts.append(path.read_text(encoding="utf-8", errors="replace"))
+        except OSError:
+            continue
     return "\n".join(texts)
 
 
@@ -1342,7 +1337,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     if not RUN_BUDGET_RANGE[0] <= run_budget <= RUN_BUDGET_RANGE[1]:
         raise ParameterError("run_budget", run_budget,
                              f"must be in [{RUN_BUDGET_RANGE[0]:g}, {RUN_BUDGET_RANGE[1]:g}] seconds")
-    engine = engine_of(text if path is None else _with_included(text, Path(path).parent))
+    engine = engine_of(text if path is None else _with_included(text, Path(path)))
     if path is None:
         with tempfile.TemporaryDirectory(prefix="restitution-text-") as tmp:
             (Path(tmp) / "in.deck").write_text(text)

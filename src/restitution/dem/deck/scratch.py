@@ -459,10 +459,34 @@ def _text_file(path: Path) -> bool:
     return stat.S_ISREG(info.st_mode) and info.st_size <= _MAX_TEXT_BYTES
 
 
-def _named_files(deck: Path, literal: bool = False) -> set | None:
-    """The names of the files the deck's include and jump lines name (None where one comes from a
-    variable; with ``literal``, those named as written, the others passed over); files named in
-    those files too, by the same rule, are found as their names repeat."""
+def scripts_named(deck: Path, literal: bool = False) -> list | None:
+    """The files a deck's include and jump lines name, and those the files they name name in
+    turn, each once (the engines resolve a name from the deck's folder, where they run).
+
+    Parameters
+    ----------
+    deck : Path
+        The input script.
+    literal : bool
+        Pass over a name that comes from a variable (``include ${part}``); else return None there,
+        as no reading of the text can say which file the engine will read.
+
+    Returns
+    -------
+    list of Path or None
+        The paths in the order met; files that do not exist are named too.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     deck = Path(d, "in.main")
+    ...     _ = deck.write_text('include walls.in\\nif "1 > 0" then "include laws.in"\\ninclude ${extra}\\n')
+    ...     _ = Path(d, "walls.in").write_text("jump SELF end\\n")
+    ...     [p.name for p in scripts_named(deck, literal=True)], scripts_named(deck)
+    (['walls.in', 'laws.in'], None)
+    """
+    paths: list = []
     names: set = set()
     todo = [deck]
     while todo:
@@ -476,27 +500,28 @@ def _named_files(deck: Path, literal: bool = False) -> set | None:
         for line in text.splitlines():
             words = normalised(line).split()
             if len(words) >= 2 and words[0] in ("include", "jump") and words[1] != "SELF":
-                if "$" in words[1]:
+                named = [words[1].strip("\"'")]
+            else:
+                # an if's quoted include (field round 24, V07: '"include kn.in"' is no word "include",
+                # and kn.in's commands were never read); the files it names are followed as above
+                named = [words[k + 1].strip("\"'") for k, w in enumerate(words[:-1])
+                         if w.strip("\"'") in ("include", "jump")]
+            for name in named:
+                if "$" in name:
                     if literal:
                         continue
                     return None
-                name = Path(words[1]).name
-                if name not in names:
-                    names.add(name)
-                    todo.append(deck.parent / words[1])
-            elif any(w.strip("\"'") in ("include", "jump") for w in words):
-                # an if's quoted include (field round 24, V07: '"include kn.in"' is no word "include",
-                # and kn.in's commands were never read); the files it names are followed as above
-                for k, w in enumerate(words[:-1]):
-                    if w.strip("\"'") in ("include", "jump") and "$" in words[k + 1]:
-                        if literal:
-                            continue
-                        return None
-                    name = words[k + 1].strip("\"'")
-                    if w.strip("\"'") in ("include", "jump") and name != "SELF" and Path(name).name not in names:
-                        names.add(Path(name).name)
-                        todo.append(deck.parent / name)
-    return names
+                if name != "SELF" and Path(name).name not in names:
+                    names.add(Path(name).name)
+                    paths.append(deck.parent / name)
+                    todo.append(deck.parent / name)
+    return paths
+
+
+def _named_files(deck: Path, literal: bool = False) -> set | None:
+    """The names (without folders) of :func:`scripts_named`."""
+    paths = scripts_named(deck, literal)
+    return None if paths is None else {p.name for p in paths}
 
 
 def _rewritten(text: str, label, scratch: Scratch, marker) -> str:
