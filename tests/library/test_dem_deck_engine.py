@@ -393,6 +393,17 @@ def test_a_file_inside_the_deck_folder_named_by_a_variable_is_run(tmp_path, how)
     assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(2000, 1.0), rel=1e-10)
 
 
+@pytest.mark.parametrize("name", ["part.in", '"part.in"', "'part.in'"])
+def test_an_include_name_in_quotes_is_read_as_the_engine_reads_it(tmp_path, name):
+    """Session 23: ``include "part.in"`` (LAMMPS takes the name without its quotes) was followed under
+    the name with its quotes, so the contact in part.in was never read and the deck was refused with
+    "no pair_style granular"."""
+    p = pairs(tmp_path, BOX + "create_box 3 box\ncreate_atoms 1 single 0 0 0\nset type 1 diameter 0.02 density 2500\n"
+              f"fix integrate all nve/sphere\ninclude {name}\nrun 1\n",
+              files={"part.in": f"pair_style granular\npair_coeff * * hooke 2000 1 {T}\n"})
+    assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(2000, 1.0), rel=1e-10)
+
+
 def test_echoed_commands_are_the_lines_they_came_from_never_another_file_or_the_audits_own(tmp_path):
     """Field test: the audit's marker runs "timer timeout off" and "run 0 post no"; matched by text
     they were another file's line 1 (not understood) and more runs of the deck's own line 15. Each
