@@ -29,6 +29,16 @@ import sys
 from fieldkit import scratch
 
 
+def _push(v, g):
+    """The lines that set the pair (groups v+a1, v+a2) moving at relative speed g along x, centre of mass still."""
+    return f"""variable {v}m1 equal mass({v}a1)
+variable {v}m2 equal mass({v}a2)
+velocity all set 0 0 0 units box
+velocity {v}a1 set $({g}*v_{v}m2/(v_{v}m1+v_{v}m2)) 0 0 units box
+velocity {v}a2 set $(-{g}*v_{v}m1/(v_{v}m1+v_{v}m2)) 0 0 units box
+"""
+
+
 def pair(argv, *, round, var, tag, steps="3000000", gap=False):
     """Run the head-on probe for command line `argv` (see the module's usage) and print its line."""
     d, t1, t2, d1, r1, d2, r2 = argv[0:7]
@@ -55,13 +65,7 @@ group {v}a1 id ${{{v}i1}}
 group {v}a2 id ${{{v}i2}}
 set group {v}a1 diameter {d1} density {r1}
 set group {v}a2 diameter {d2} density {r2}
-""" + scratch.commands("PROBE_MID") + f"""
-variable {v}m1 equal mass({v}a1)
-variable {v}m2 equal mass({v}a2)
-velocity all set 0 0 0 units box
-velocity {v}a1 set $({g}*v_{v}m2/(v_{v}m1+v_{v}m2)) 0 0 units box
-velocity {v}a2 set $(-{g}*v_{v}m1/(v_{v}m1+v_{v}m2)) 0 0 units box
-variable {v}d equal xcm({v}a2,x)-xcm({v}a1,x)-({float(d1) / 2 + float(d2) / 2})
+""" + scratch.commands("PROBE_MID") + "\n" + _push(v, g) + f"""variable {v}d equal xcm({v}a2,x)-xcm({v}a1,x)-({float(d1) / 2 + float(d2) / 2})
 variable {v}s equal {parted}
 fix {v}h all halt 1 v_{v}s == 1 error continue
 timestep {dt}
@@ -97,12 +101,7 @@ group {v}a1 id $(v_{v}n-1)
 group {v}a2 id $(v_{v}n)
 set group {v}a1 diameter {d1} density {r1}
 set group {v}a2 diameter {d2} density {r2}
-variable {v}m1 equal mass({v}a1)
-variable {v}m2 equal mass({v}a2)
-velocity all set 0 0 0 units box
-velocity {v}a1 set $({g}*v_{v}m2/(v_{v}m1+v_{v}m2)) 0 0 units box
-velocity {v}a2 set $(-{g}*v_{v}m1/(v_{v}m1+v_{v}m2)) 0 0 units box
-thermo 0
+""" + _push(v, g) + f"""thermo 0
 run {steps}
 print "{tag} eps $((vcm({v}a2,x)-vcm({v}a1,x))/{g}:%.6f) gap $(xcm({v}a2,x)-xcm({v}a1,x)-{(float(d1) + float(d2)) / 2}:%.6f)"
 """
