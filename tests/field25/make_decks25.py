@@ -1,5 +1,5 @@
 """Field round 25: write the decks as decks/NAME/in.deck with G, extra files and a LIGGGHTS marker, with round 23's
-helpers (make_decks23.py, imported). Prefixes: M multi-run decks the engine runs to the end (outputs, slow or
+helpers (now tests/fieldkit/decks.py). Prefixes: M multi-run decks the engine runs to the end (outputs, slow or
 file-writing fixes, pours across runs, run N every M, loops), I commands of a file an if includes (groups, regions,
 region walls, pours, change_box, labelmap, variables, nested ifs, includes by an if inside the included file, LIGGGHTS),
 X the engines' own example decks (copied by copy_examples below).
@@ -7,10 +7,9 @@ usage: python make_decks25.py [NAME ...]"""
 import os, shutil, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "field23"))
-import make_decks23 as m  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, ".."))
+from fieldkit import decks as m  # noqa: E402  (round 23's helpers, tests/fieldkit/decks.py)
 
-m.DECKS.clear()
 m.D = os.path.join(HERE, "decks")
 deck, L, BASE, TWO, hk, HK = m.deck, m.L, m.BASE, m.TWO, m.hk, m.HK
 rr = lambda name, comment, lines, **kw: deck(name, "# " + comment + "\n" + BASE() + TWO + lines, g=1, **kw)

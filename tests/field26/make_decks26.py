@@ -1,5 +1,5 @@
 """Field round 26: write the decks as decks/NAME/in.deck with G, extra files and a LIGGGHTS marker, with round 23's
-helpers (make_decks23.py, imported). Classes of all earlier rounds mixed in new combinations. Prefixes: F formats
+helpers (now tests/fieldkit/decks.py). Classes of all earlier rounds mixed in new combinations. Prefixes: F formats
 $(expr:%fmt) feeding ifs/includes/loops, T type ranges and labels with hybrid, S set order and size distributions,
 W walls, U units other than si, D time step, K fixes that change eps, C control flow, V variable styles, R restyles
 and clear and files the deck writes, H runs the engine stops or ends, L LIGGGHTS, X engine examples, E public decks.
@@ -7,10 +7,9 @@ usage: python make_decks26.py [NAME ...]"""
 import os, shutil, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "field23"))
-import make_decks23 as m  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, ".."))
+from fieldkit import decks as m  # noqa: E402  (round 23's helpers, tests/fieldkit/decks.py)
 
-m.DECKS.clear()
 m.D = os.path.join(HERE, "decks")
 deck, L, BASE, TWO, hk, HK, K, TL, head = m.deck, m.L, m.BASE, m.TWO, m.hk, m.HK, m.K, m.TL, m.head
 GRAV, FLOOR, TAIL = m.GRAV, m.FLOOR, m.TAIL

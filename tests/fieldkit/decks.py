@@ -1,0 +1,107 @@
+"""The deck-writing helpers of field rounds 21-27 (round 23's make_decks23.py, which rounds 24-27 imported): the
+contact strings, a LAMMPS and a LIGGGHTS head, the atoms and run tails the decks share, the registry the round's
+decks go into (`deck`, `L`) and the writer of a deck folder (decks/NAME/DECKFILE with G, DECK, a LIGGGHTS marker and
+its extra files). A round's make_decksNN.py sets `D` (its decks folder), registers its decks and calls `main`.
+"""
+import math, os
+
+D = None  # the round's decks folder, set by its make_decksNN.py
+
+TL = "tangential linear_nohistory 1 0.3"
+K = f"damping mass_velocity {TL}"
+HK = f"hooke 2000 3000 {K}"
+HM = f"hertz/material 1e7 1.4e7 0.3 damping viscoelastic {TL}"
+
+
+def hk(k, gam=3000):
+    return f"hooke {k} {gam} {K}"
+
+
+def head(ntypes=2, box="0 0.04 0 0.04 0 0.1", bnd="p p f", style="sphere 1", units="si", dim=3, extra=""):
+    return (f"units {units}\n" + (f"dimension {dim}\n" if dim != 3 else "") + f"atom_style {style}\nboundary {bnd}\n"
+            f"comm_modify vel yes\n{extra}region box block {box} units box\ncreate_box {ntypes} box\n")
+
+
+GRAV = "fix grav all gravity 9.81 vector 0 0 -1\n"
+FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
+TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
+TWO = ("create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.01\n"
+       "set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n")
+G1 = lambda model: "pair_style granular\npair_coeff * * " + model + "\n"
+BASE = lambda model=HK, nt=2: head(nt) + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
+PRB = 'print "PROBE kn ${kn}"\n'
+DECKS = {}
+
+
+def deck(name, text, g="0.1 1", data=None, liggghts=False, deckname="in.deck"):
+    DECKS[name] = (text, g, data or {}, liggghts, deckname)
+
+
+def lhead(nt=3, extra="", units="si", box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f"):
+    return (f"atom_style granular\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
+            f"region reg block {box} units box\ncreate_box {nt} reg\nneighbor 0.002 bin\nneigh_modify delay 0\n{extra}")
+
+
+MAT3 = ("fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3\n"
+        "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5\n")
+E3 = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
+HERTZ = "pair_style gran model hertz tangential history\npair_coeff * *\n"
+HOOKE = "pair_style gran model hooke tangential history\npair_coeff * *\n"
+WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\n"
+ATOMS = "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\n"
+LRUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
+RUN = LRUN + "run 1000\n"
+LB = lambda: lhead() + MAT3 + E3 + HERTZ + WALL3
+E3b = lambda e: "fix m3 all property/global coefficientRestitution peratomtypepair 3 " + " ".join([str(e)] * 9) + "\n"
+
+
+def L(name, text, **kw):
+    deck(name, text, liggghts=True, **kw)
+
+
+# names the decks of rounds 23-27 share, defined among round 23's decks
+RUN1 = "run 100\n"
+CGS_HK = f"hooke 2e6 3000 {K}"
+CGS_HM = "hertz/material 1e8 1.4e5 0.3 damping viscoelastic " + TL  # 1e7 Pa, 1.4e7 1/(m s) in cgs
+
+
+def ubase(units, model, box, sizes, g="1"):
+    """A two-type deck head in `units` with a floor of `model`, spheres of diameters and densities `sizes`."""
+    d1, d2, r1, r2 = sizes
+    return (head(2, box=box, units=units) + G1(model) + f"fix floor all wall/gran granular {model} zplane 0 NULL\nfix integ all nve/sphere\n"
+            + f"create_atoms 1 single {d1*5} {d1*5} {d1*2.5}\ncreate_atoms 2 single {d1*2.5} {d1*2.5} {d1*2.5}\nset type 1 diameter {d1} density {r1}\nset type 2 diameter {d2} density {r2}\n")
+
+
+MOL = lambda t, d, m: f"# one sphere\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 {t}\n\nDiameters\n\n1 {d}\n\nMasses\n\n1 {m}\n"
+mass = lambda d, rho: f"{rho * math.pi / 6 * d ** 3:.9g}"
+PTS = ("fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\n"
+       "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1500 radius constant 0.003\n"
+       "fix pdd1 all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\n"
+       "region bc block -0.03 0.03 -0.03 0.03 0.02 0.1 units box\n")
+HS = ("fix k1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\nfix k2 all property/global kt peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+      "fix k3 all property/global gamman peratomtypepair 3 500 500 500 500 500 500 500 500 500\nfix k4 all property/global gammat peratomtypepair 3 500 500 500 500 500 500 500 500 500\n"
+      "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\nfix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n")
+LATIN1 = set()  # decks written in Latin-1 bytes (an old editor)
+
+
+def write(name):
+    """Write deck `name`'s folder under `D`: the deck file, G (its speeds), DECK (its file name), the LIGGGHTS marker
+    and its extra files."""
+    text, g, data, lig, deckname = DECKS[name]
+    d = os.path.join(D, name)
+    os.makedirs(d, exist_ok=True)
+    open(os.path.join(d, deckname), "w", encoding="latin-1" if name in LATIN1 else "utf-8").write(text)
+    open(os.path.join(d, "G"), "w").write(f"{g}\n")
+    open(os.path.join(d, "DECK"), "w").write(deckname + "\n")
+    if lig:
+        open(os.path.join(d, "LIGGGHTS"), "w").write("")
+    for f, t in data.items():
+        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
+        open(os.path.join(d, f), "w").write(t)
+
+
+def main(argv):
+    """Write the decks named in `argv` (all registered ones when it is empty) and print how many are registered."""
+    for n in (argv or DECKS):
+        write(n)
+    print(len(DECKS), "decks")
