@@ -1,6 +1,8 @@
 """Field round 14: write the LAMMPS decks (decks/NAME/in.deck, G, ARGS) from a shared header.
 Each deck's first comment says what it tries. usage: python make_decks.py [NAME ...]"""
 import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 HK = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
@@ -352,17 +354,8 @@ deck("x01_shell_devshm_proc_root", "# shell builtins at /dev/shm and /proc/1/roo
 
 def write(name):
     text, g, args, extra = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if args:
-        open(os.path.join(d, "ARGS"), "w").write(args + "\n")
-    for f, t in extra.items():
-        open(os.path.join(d, f), "w").write(t)
+    kit.write_folder(os.path.join(D, name), text, g, args=args, data=extra)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

@@ -1,9 +1,10 @@
 """Field round 14: write the LIGGGHTS decks (decks/NAME/in.deck, a LIGGGHTS marker file, G, STL files).
 usage: python make_ldecks.py [NAME ...]"""
-import os, sys, subprocess
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
-HERE = os.path.dirname(os.path.abspath(__file__))
 
 
 def head(nt=3, extra=""):
@@ -148,18 +149,8 @@ Atoms
 
 def write(name):
     text, g, files, data = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, liggghts=True, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

@@ -1,6 +1,8 @@
 """Field round 15: write the LAMMPS decks (decks/NAME/in.deck, G, ARGS) from round 14's shared header.
 Each deck's first comment says what it tries. usage: python make_decks.py [NAME ...]"""
 import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 HK = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
@@ -440,18 +442,8 @@ deck("x10_molecule_fifo", "# molecule template read from a named pipe (made by l
 
 def write(name):
     text, g, args, extra = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if args:
-        open(os.path.join(d, "ARGS"), "w").write(args + "\n")
-    for f, t in extra.items():
-        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
-        open(os.path.join(d, f), "w").write(t)
+    kit.write_folder(os.path.join(D, name), text, g, args=args, data=extra)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

@@ -1,6 +1,8 @@
 """Field round 16: write the LIGGGHTS decks (decks/NAME/in.deck, a LIGGGHTS marker file, G, STL files) on round
 14's header and materials (tests/field14/make_ldecks.py). usage: python make_ldecks16.py [NAME ...]"""
-import importlib.util, os, subprocess, sys
+import importlib.util, os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -98,18 +100,8 @@ deck("L24_clear_restores_delay10", "# skin 1e-4 and delay 0 in stage 1; write_re
 
 def write(name):
     text, g, files, data = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, liggghts=True, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

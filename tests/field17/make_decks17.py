@@ -1,7 +1,9 @@
 """Field round 17: write the LAMMPS (a*, m*, w*) and LIGGGHTS (G*) decks (decks/NAME/in.deck, G, extra files, a
 LIGGGHTS marker) on round 15's LAMMPS header and round 14's LIGGGHTS header. Each deck's first comment says what it
 tries. usage: python make_decks17.py [NAME ...]"""
-import importlib.util, os, subprocess, sys
+import importlib.util, os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -413,19 +415,8 @@ deck("G25_liggghts_writers_outside", "# LIGGGHTS: writers aimed outside the fold
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, liggghts=lig, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

@@ -3,7 +3,9 @@ and non-granular styles beside granular, e* region and primitive walls moving, d
 neighbour/exclusion/communication settings, m* damping sub-models not tried before; LIGGGHTS: L*) as
 decks/NAME/in.deck with G (the speeds), extra files and a LIGGGHTS marker. Each deck's first comment says what it
 tries. usage: python make_decks19.py [NAME ...]"""
-import os, subprocess, sys
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -644,19 +646,8 @@ deck("c40_region_block_open_top", "# wall/gran/region on a block (side in) with 
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, liggghts=lig, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

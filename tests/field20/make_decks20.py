@@ -3,7 +3,9 @@ Prefixes: x* number formats and substitution, p* pair_coeff ranges/labels/restyl
 step, i* LAMMPS pour/deposit, w* walls, m* damping, h* hybrid/omp/none/clear, L* LIGGGHTS. Each deck's first
 comment says what it tries and what the engine does (PROBE lines print the engine's own values).
 usage: python make_decks20.py [NAME ...]"""
-import os, subprocess, sys
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -978,21 +980,8 @@ deck("z42_if_set_density", "# LAMMPS if \"1 > 0\" then \"set type 2 density 7800
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    open(os.path.join(d, "DECK"), "w").write("in.deck\n")  # else the scripts take the first in.* (in.2 sorts before in.deck)
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, deck_file=True, liggghts=lig, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

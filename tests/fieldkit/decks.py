@@ -3,7 +3,7 @@ contact strings, a LAMMPS and a LIGGGHTS head, the atoms and run tails the decks
 decks go into (`deck`, `L`) and the writer of a deck folder (decks/NAME/DECKFILE with G, DECK, a LIGGGHTS marker and
 its extra files). A round's make_decksNN.py sets `D` (its decks folder), registers its decks and calls `main`.
 """
-import math, os
+import math, os, subprocess, sys
 
 D = None  # the round's decks folder, set by its make_decksNN.py
 
@@ -84,24 +84,56 @@ HS = ("fix k1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 
 LATIN1 = set()  # decks written in Latin-1 bytes (an old editor)
 
 
-def write(name):
-    """Write deck `name`'s folder under `D`: the deck file, G (its speeds), DECK (its file name), the LIGGGHTS marker
-    and its extra files."""
-    text, g, data, lig, deckname = DECKS[name]
-    d = os.path.join(D, name)
+STL = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "field13", "stl.py")  # round 13's STL maker
+
+
+def write_folder(d, text, g, *, deckname="in.deck", deck_file=False, args=None, liggghts=False, data=None, stl=None,
+                 encoding="utf-8"):
+    r"""Write a deck folder `d` as the field rounds lay it out.
+
+    The deck file `deckname` holding `text`; G, the speeds `g` to audit at; DECK naming the deck file (`deck_file`,
+    from round 20: else the scripts take the first in.*, and in.2 sorts before in.deck); ARGS, the audit's further
+    arguments (`args`); the empty LIGGGHTS marker (`liggghts`); extra files `data` ({path: text}, folders made);
+    STL files `stl` ({path: arguments of tests/field13/stl.py}).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> d = os.path.join(tempfile.mkdtemp(), "a01")
+    >>> write_folder(d, "units si\n", "0.1 1", deck_file=True, data={"sub/x.data": "1\n"})
+    >>> sorted(os.listdir(d)), open(os.path.join(d, "G")).read()
+    (['DECK', 'G', 'in.deck', 'sub'], '0.1 1\n')
+    """
     os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, deckname), "w", encoding="latin-1" if name in LATIN1 else "utf-8").write(text)
+    open(os.path.join(d, deckname), "w", encoding=encoding).write(text)
     open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    open(os.path.join(d, "DECK"), "w").write(deckname + "\n")
-    if lig:
+    if deck_file:
+        open(os.path.join(d, "DECK"), "w").write(deckname + "\n")
+    if args:
+        open(os.path.join(d, "ARGS"), "w").write(args + "\n")
+    if liggghts:
         open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
+    for f, t in (data or {}).items():
         os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
         open(os.path.join(d, f), "w").write(t)
+    for f, a in (stl or {}).items():
+        subprocess.run([sys.executable, STL, *a, os.path.join(d, f)], check=True)
+
+
+def write(name):
+    """Write registered deck `name`'s folder under `D` (its deck file, G, DECK, LIGGGHTS marker and extra files)."""
+    text, g, data, lig, deckname = DECKS[name]
+    write_folder(os.path.join(D, name), text, g, deckname=deckname, deck_file=True, liggghts=lig, data=data,
+                 encoding="latin-1" if name in LATIN1 else "utf-8")
+
+
+def make(decks, write, argv):
+    """Write the decks named in `argv` (every one of `decks` when it is empty) with `write`; print how many there are."""
+    for n in (argv or decks):
+        write(n)
+    print(len(decks), "decks")
 
 
 def main(argv):
-    """Write the decks named in `argv` (all registered ones when it is empty) and print how many are registered."""
-    for n in (argv or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    """Write the registered decks named in `argv` (all when it is empty) and print how many are registered."""
+    make(DECKS, write, argv)
