@@ -3,6 +3,7 @@ usage: python make_ldecks.py [NAME ...]"""
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import E3, HERTZ, WALL3  # noqa: E402  (the same lines as there)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 
@@ -25,9 +26,6 @@ MAT3 = """fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
 fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3
 fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5
 """
-E3 = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
-HERTZ = "pair_style gran model hertz tangential history\npair_coeff * *\n"
-WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\n"
 ATOMS = """create_atoms 1 single 0.01 0 0.01 units box
 create_atoms 2 single -0.01 0 0.01 units box
 set type 1 diameter 0.004 density 2500

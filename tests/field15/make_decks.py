@@ -3,6 +3,7 @@ Each deck's first comment says what it tries. usage: python make_decks.py [NAME 
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import FLOOR, GRAV, TAIL, TWO  # noqa: E402  (the same lines as there)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 HK = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
@@ -21,15 +22,7 @@ create_box {ntypes} box
 """
 
 
-FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
-TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
-TWO = """create_atoms 1 single 0.02 0.02 0.01
-create_atoms 2 single 0.01 0.01 0.01
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 2500
-"""
 TWO4 = TWO.replace("0.006 density", "0.004 density")
-GRAV = "fix grav all gravity 9.81 vector 0 0 -1\n"
 BASE = head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
 COUNT = 'variable n equal count(all)\nif "${n} < 1" then "pair_coeff * * hooke 9999 3000 damping mass_velocity tangential linear_nohistory 1 0.3"\n'
 
