@@ -4,7 +4,7 @@ file-writing fixes, pours across runs, run N every M, loops), I commands of a fi
 region walls, pours, change_box, labelmap, variables, nested ifs, includes by an if inside the included file, LIGGGHTS),
 X the engines' own example decks (copied by copy_examples below).
 usage: python make_decks25.py [NAME ...]"""
-import os, shutil, sys
+import os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, ".."))
@@ -245,20 +245,7 @@ def copy_examples():
                  ("hysteresis", "in.noHysteresis"), ("movingMeshGran", "in.movingMeshGran"), ("chute_wear", "in.chute_wear")):
         ex.append(("X_lig_" + t + "_" + f[3:], os.path.join(T, t), f, True))
     for name, src, f, lig in ex:
-        d = os.path.join(m.D, name)
-        if os.path.exists(d):
-            continue
-        if lig:
-            shutil.copytree(src, d)
-            open(os.path.join(d, "LIGGGHTS"), "w").write("")
-        else:
-            os.makedirs(d)
-            shutil.copy(os.path.join(src, f), d)
-            for extra in os.listdir(src):
-                if extra.startswith("molecule") or extra.endswith(".mol"):
-                    shutil.copy(os.path.join(src, extra), d)
-        open(os.path.join(d, "DECK"), "w").write(f + "\n")
-        open(os.path.join(d, "G"), "w").write("1\n")
+        m.copy_example(os.path.join(m.D, name), src, f, lig)
 
 
 if __name__ == "__main__":

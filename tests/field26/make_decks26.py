@@ -4,7 +4,7 @@ $(expr:%fmt) feeding ifs/includes/loops, T type ranges and labels with hybrid, S
 W walls, U units other than si, D time step, K fixes that change eps, C control flow, V variable styles, R restyles
 and clear and files the deck writes, H runs the engine stops or ends, L LIGGGHTS, X engine examples, E public decks.
 usage: python make_decks26.py [NAME ...]"""
-import os, shutil, sys
+import os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, ".."))
@@ -669,23 +669,7 @@ def copy_examples():
         ex.append(("X_lig_" + t + "_" + f[3:], os.path.join(T, t), f, True))
     ex.append(("CL23_lammps_pour_example_clear_first", "/usr/share/lammps/examples/pour", "in.pour", False))  # in.pour with clear prepended below
     for name, src, f, lig in ex:
-        d = os.path.join(m.D, name)
-        if os.path.exists(d):
-            continue
-        if lig:
-            shutil.copytree(src, d)
-            open(os.path.join(d, "LIGGGHTS"), "w").write("")
-        else:
-            os.makedirs(d)
-            shutil.copy(os.path.join(src, f), d)
-            for extra in os.listdir(src):
-                if extra.startswith("molecule") or extra.endswith(".mol"):
-                    shutil.copy(os.path.join(src, extra), d)
-        if name.startswith("CL23"):
-            txt = open(os.path.join(d, f)).read()
-            open(os.path.join(d, f), "w").write("clear\n" + txt)
-        open(os.path.join(d, "DECK"), "w").write(f + "\n")
-        open(os.path.join(d, "G"), "w").write("1\n")
+        m.copy_example(os.path.join(m.D, name), src, f, lig, first="clear\n" if name.startswith("CL23") else "")
 
 
 if __name__ == "__main__":

@@ -3,7 +3,7 @@ contact strings, a LAMMPS and a LIGGGHTS head, the atoms and run tails the decks
 decks go into (`deck`, `L`) and the writer of a deck folder (decks/NAME/DECKFILE with G, DECK, a LIGGGHTS marker and
 its extra files). A round's make_decksNN.py sets `D` (its decks folder), registers its decks and calls `main`.
 """
-import math, os, subprocess, sys
+import math, os, shutil, subprocess, sys
 
 D = None  # the round's decks folder, set by its make_decksNN.py
 
@@ -125,6 +125,28 @@ def write(name):
     text, g, data, lig, deckname = DECKS[name]
     write_folder(os.path.join(D, name), text, g, deckname=deckname, deck_file=True, liggghts=lig, data=data,
                  encoding="latin-1" if name in LATIN1 else "utf-8")
+
+
+def copy_example(d, src, f, lig, first=""):
+    """Copy an engine's example deck `f` from folder `src` to deck folder `d` (skipped when `d` exists), with G 1 and
+    DECK: a LIGGGHTS example whole (and its marker), a LAMMPS one with its molecule files; `first` put before its
+    first line."""
+    if os.path.exists(d):
+        return
+    if lig:
+        shutil.copytree(src, d)
+        open(os.path.join(d, "LIGGGHTS"), "w").write("")
+    else:
+        os.makedirs(d)
+        shutil.copy(os.path.join(src, f), d)
+        for extra in os.listdir(src):
+            if extra.startswith("molecule") or extra.endswith(".mol"):
+                shutil.copy(os.path.join(src, extra), d)
+    if first:
+        txt = open(os.path.join(d, f)).read()
+        open(os.path.join(d, f), "w").write(first + txt)
+    open(os.path.join(d, "DECK"), "w").write(f + "\n")
+    open(os.path.join(d, "G"), "w").write("1\n")
 
 
 def make(decks, write, argv):
