@@ -3,40 +3,10 @@ usage: python make_ldecks.py [NAME ...]"""
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
-from fieldkit.decks import E3, HERTZ, WALL3  # noqa: E402  (the same lines as there)
+from fieldkit.decks import ATOMS, E3, HERTZ, MAT3, STIFF3, WALL3, lhead as head, RUN2000 as RUN  # noqa: E402,F401
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 
-
-def head(nt=3, extra=""):
-    return f"""atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-region reg block -0.05 0.05 -0.05 0.05 -0.01 0.15 units box
-create_box {nt} reg
-neighbor 0.002 bin
-neigh_modify delay 0
-{extra}"""
-
-
-MAT3 = """fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3
-fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5
-"""
-ATOMS = """create_atoms 1 single 0.01 0 0.01 units box
-create_atoms 2 single -0.01 0 0.01 units box
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 1500
-"""
-RUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 2000\n"
-STIFF3 = """fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000
-fix m5 all property/global gamman peratomtypepair 3 3000 2000 1000 2000 2500 1500 1000 1500 2000
-fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000
-fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50
-"""
 
 DECKS = {}
 

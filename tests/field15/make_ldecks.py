@@ -1,15 +1,12 @@
 """Field round 15: write the LIGGGHTS decks (decks/NAME/in.deck, a LIGGGHTS marker file, G, STL files),
-with round 14's header and materials (tests/field14/make_ldecks.py). usage: python make_ldecks.py [NAME ...]"""
-import importlib.util, os, sys
+with round 14's header and materials (now tests/fieldkit/decks.py). usage: python make_ldecks.py [NAME ...]"""
+import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import ATOMS, E3, HERTZ, MAT3, STIFF3, WALL3, lhead as head, RUN2000 as RUN  # noqa: E402,F401  (round 14's)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-_s = importlib.util.spec_from_file_location("ml14", os.path.join(HERE, "..", "field14", "make_ldecks.py"))
-M = importlib.util.module_from_spec(_s)
-_s.loader.exec_module(M)
-head, MAT3, E3, HERTZ, WALL3, ATOMS, RUN, STIFF3 = M.head, M.MAT3, M.E3, M.HERTZ, M.WALL3, M.ATOMS, M.RUN, M.STIFF3
 
 DECKS = {}
 

@@ -4,6 +4,7 @@ tries. usage: python make_decks17.py [NAME ...]"""
 import importlib.util, os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import ATOMS, E3, HERTZ, MAT3, WALL3, lhead, RUN2000 as RUN  # noqa: E402  (round 14's LIGGGHTS lines)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -17,9 +18,7 @@ def _load(name, path):
 
 
 M = _load("md15", ("field15", "make_decks.py"))
-L = _load("ml14", ("field14", "make_ldecks.py"))
 head, HK, HM, TWO, TWO4, GRAV, FLOOR, TAIL = M.head, M.HK, M.HM, M.TWO, M.TWO4, M.GRAV, M.FLOOR, M.TAIL
-lhead, MAT3, E3, HERTZ, WALL3, ATOMS, RUN = L.head, L.MAT3, L.E3, L.HERTZ, L.WALL3, L.ATOMS, L.RUN
 BASE = head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
 NB = "neighbor 1e-4 bin\n"
 DECKS = {}

@@ -6,7 +6,7 @@ tries. usage: python make_decks19.py [NAME ...]"""
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
-from fieldkit.decks import E3, FLOOR, G1, GRAV, HERTZ, HK, HM, K, TAIL, TL, TWO, WALL3, head  # noqa: E402  (the same lines as there)
+from fieldkit.decks import ATOMS, E3, FLOOR, G1, GRAV, HERTZ, HK, HM, K, MAT3, TAIL, TL, TWO, WALL3, head, lhead, RUN2000 as RUN  # noqa: E402  (the same lines as there)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -304,22 +304,8 @@ deck("r02_long_loop_then_change_recheck", "# round 18 D5 re-check: a 20000-pass 
      + "pair_coeff * * hooke 9000 3000 " + K + "\nrun 100\n", g=1)
 
 # ================================================================ LIGGGHTS
-def lhead(nt=3, extra="", style="granular", units="si", neigh="neighbor 0.002 bin\nneigh_modify delay 0\n",
-          box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f"):
-    return (f"atom_style {style}\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
-            f"region reg block {box} units box\ncreate_box {nt} reg\n{neigh}{extra}")
 
 
-MAT3 = """fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3
-fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5
-"""
-ATOMS = """create_atoms 1 single 0.01 0 0.01 units box
-create_atoms 2 single -0.01 0 0.01 units box
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 1500
-"""
-RUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 2000\n"
 PLANE = {"plane0.stl": ("plane", "0", "0.04")}
 LST = """fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000
 fix m5 all property/global gamman peratomtypepair 3 300 200 100 200 250 150 100 150 200

@@ -37,9 +37,11 @@ def deck(name, text, g="0.1 1", data=None, liggghts=False, deckname="in.deck"):
     DECKS[name] = (text, g, data or {}, liggghts, deckname)
 
 
-def lhead(nt=3, extra="", units="si", box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f"):
-    return (f"atom_style granular\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
-            f"region reg block {box} units box\ncreate_box {nt} reg\nneighbor 0.002 bin\nneigh_modify delay 0\n{extra}")
+def lhead(nt=3, extra="", units="si", box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f", style="granular",
+          neigh="neighbor 0.002 bin\nneigh_modify delay 0\n"):
+    """The head of a LIGGGHTS deck (round 14's, with the keywords rounds 18-19 added): `nt` types, then `extra`."""
+    return (f"atom_style {style}\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
+            f"region reg block {box} units box\ncreate_box {nt} reg\n{neigh}{extra}")
 
 
 MAT3 = ("fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3\n"
@@ -51,6 +53,13 @@ WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3
 ATOMS = "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\n"
 LRUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
 RUN = LRUN + "run 1000\n"
+RUN2000 = LRUN + "run 2000\n"  # rounds 14-19's LIGGGHTS run
+# round 14's hooke/stiffness lines (rounds 14-16)
+STIFF3 = """fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000
+fix m5 all property/global gamman peratomtypepair 3 3000 2000 1000 2000 2500 1500 1000 1500 2000
+fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000
+fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50
+"""
 LB = lambda: lhead() + MAT3 + E3 + HERTZ + WALL3
 E3b = lambda e: "fix m3 all property/global coefficientRestitution peratomtypepair 3 " + " ".join([str(e)] * 9) + "\n"
 
