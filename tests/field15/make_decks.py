@@ -3,7 +3,7 @@ Each deck's first comment says what it tries. usage: python make_decks.py [NAME 
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
-from fieldkit.decks import FLOOR, GRAV, TAIL, TWO  # noqa: E402  (the same lines as there)
+from fieldkit.decks import FLOOR, GRAV, TAIL, TWO, TWO4  # noqa: E402  (the same lines as there)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 HK = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
@@ -22,7 +22,6 @@ create_box {ntypes} box
 """
 
 
-TWO4 = TWO.replace("0.006 density", "0.004 density")
 BASE = head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
 COUNT = 'variable n equal count(all)\nif "${n} < 1" then "pair_coeff * * hooke 9999 3000 damping mass_velocity tangential linear_nohistory 1 0.3"\n'
 

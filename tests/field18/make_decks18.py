@@ -5,7 +5,8 @@ Each deck's first comment says what it tries. usage: python make_decks18.py [NAM
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
-from fieldkit.decks import ATOMS, E3, FLOOR, GRAV, HERTZ, HK, MAT3, TAIL, TL, TWO, WALL3, head, lhead, RUN2000 as RUN  # noqa: E402  (the same lines as there)
+from fieldkit.decks import (ATOMS, E3, FLOOR, GRAV, HERTZ, HK, MAT3, TAIL, TL, TWO, TWO4, WALL3, head, lhead,  # noqa: E402
+                            RUN2000 as RUN)  # the same lines as there
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -13,7 +14,6 @@ K = "damping mass_velocity tangential linear_nohistory 1 0.3"
 HM = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"
 
 
-TWO4 = TWO.replace("0.006 density", "0.004 density")
 BASEH = lambda model: head() + f"pair_style granular\npair_coeff * * {model}\n" + GRAV + FLOOR.replace(HK, model) + TAIL
 DECKS = {}
 

@@ -6,15 +6,11 @@ usage: python make_decks20.py [NAME ...]"""
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
-from fieldkit.decks import (ATOMS, E3, FLOOR, G1, GRAV, HERTZ, HK, HM, HOOKE, K, LB, LRUN, MAT3, RUN, TAIL, TL, TWO,  # noqa: E402
-                            WALL3, head, hk, lhead)  # the same lines as there
+from fieldkit.decks import (ATOMS, BASE, E3, FLOOR, G1, GRAV, HERTZ, HK, HM, HOOKE, K, LB, LRUN, MAT3, RUN,  # noqa: E402
+                            TAIL, TL, TWO, TWO4, WALL3, head, hk, lhead)  # the same lines as there
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-
-
-TWO4 = TWO.replace("0.006 density", "0.004 density")
-BASE = lambda model, nt=2: head(nt) + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
 DECKS = {}
 
 

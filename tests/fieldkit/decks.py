@@ -27,6 +27,7 @@ FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
 TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
 TWO = ("create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.01\n"
        "set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n")
+TWO4 = TWO.replace("0.006 density", "0.004 density")  # both spheres 4 mm (rounds 15-20)
 G1 = lambda model: "pair_style granular\npair_coeff * * " + model + "\n"
 BASE = lambda model=HK, nt=2: head(nt) + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
 PRB = 'print "PROBE kn ${kn}"\n'
