@@ -3,13 +3,11 @@ Each deck's first comment says what it tries. usage: python make_decks.py [NAME 
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
-from fieldkit.decks import FLOOR, GRAV, TAIL, TWO  # noqa: E402  (the same lines as there)
+from fieldkit.decks import FLOOR, GRAV, HK, HM, TAIL, TWO  # noqa: E402  (the same lines as there)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
-HK = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
 JKR = "jkr 1e7 3000 0.3 0.5 damping mass_velocity tangential linear_nohistory 1 0.3"
 DMT = "dmt 1e7 3000 0.3 0.5 damping mass_velocity tangential linear_nohistory 1 0.3"
-HM = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"  # eps about 0.5 at r 2 mm, 1 m/s
 
 
 def head(ntypes=2, box="0 0.04 0 0.04 0 0.1", bnd="p p f", style="sphere"):

@@ -5,8 +5,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 from fieldkit.decks import ATOMS, E3, HERTZ, MAT3, STIFF3, WALL3, lhead as head, RUN2000 as RUN  # noqa: E402,F401  (round 14's)
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-D = os.path.join(HERE, "decks")
+D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 DECKS = {}
 
 
