@@ -4,15 +4,10 @@ Sizes and masses are the engine's own (tests/field16/engine_stages.py for LAMMPS
 LIGGGHTS, run on the deck). usage: python specs19.py [NAME ...]"""
 import math, os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from fieldkit.specs import GL, HK, HM, K, LE3, LMAT, P, TL, W, hk, m, m2, m3, write  # noqa: E402,F401
+from fieldkit.specs import GL, HK, HM, K, LE3, LMAT, LST, P, TL, W, hk, m, m2, m3, write  # noqa: E402,F401
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-LST = ["fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000",
-       "fix m5 all property/global gamman peratomtypepair 3 300 200 100 200 250 150 100 150 200",
-       "fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000",
-       "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50",
-       "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"]
 LWST = "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0"
 
 S = {

@@ -5,15 +5,10 @@ the deck; ENGINE_STATE.txt beside the deck). The contact lines are the deck's ow
 (type ranges, labels, repeated keywords). usage: python specs20.py [NAME ...]"""
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-from fieldkit.specs import GL, HK, HM, K, LE3, LMAT, P, TL, W, hk, m, m2, m3, write  # noqa: E402,F401
+from fieldkit.specs import GL, HK, HM, K, LE3, LMAT, LST, P, TL, W, hk, m, m2, m3, write  # noqa: E402,F401
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-LST = ["fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000",
-       "fix m5 all property/global gamman peratomtypepair 3 300 200 100 200 250 150 100 150 200",
-       "fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000",
-       "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50",
-       "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"]
 LE = lambda e: [f"fix m3 all property/global coefficientRestitution peratomtypepair 3 " + " ".join([str(e)] * 9)]
 CV = ["fix m9 all property/global characteristicVelocity scalar 2.0"]
 LIG = lambda **kw: dict({"engine": "liggghts", "ntypes": 3}, **kw)

@@ -15,6 +15,30 @@ LMAT = ["fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6",
         "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5"]
 LE3 = ["fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8"]
 
+# rounds 19-21's LIGGGHTS hooke/stiffness lines
+LST = ["fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000",
+       "fix m5 all property/global gamman peratomtypepair 3 300 200 100 200 250 150 100 150 200",
+       "fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000",
+       "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50",
+       "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"]
+# rounds 13-14's granular hooke and floor, and their check builders (the middle speed; r2, m2 default to r1, m1)
+LL = ["pair_style granular", f"pair_coeff * * {HK}"]
+FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL"
+
+
+def P13(t1, t2, r1, m1, r2=None, m2=None, **kw):
+    """Rounds 13-14's pair check: the third speed; the second sphere the first's unless given."""
+    c = {"t1": t1, "t2": t2, "r1": r1, "m1": m1, "r2": r2 or r1, "m2": m2 or m1, "speed_idx": [2]}
+    c.update(kw)
+    return c
+
+
+def W13(t1, r1, m1, wall=FLOOR, wall_id="floor", **kw):
+    """Rounds 13-14's wall check: the third speed, the granular hooke floor unless a wall is given."""
+    c = {"t1": t1, "wall_id": wall_id, "wall": wall, "r1": r1, "m1": m1, "z0": r1, "zw": 0, "speed_idx": [2]}
+    c.update(kw)
+    return c
+
 
 def P(t1, t2, r1, m1, r2, m2_, **kw):
     """A pair check: types, radii and masses (the engine's), the first speed unless `speed_idx` says others.
