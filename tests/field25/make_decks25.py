@@ -232,20 +232,16 @@ L("M67_liggghts_loop_if_e", "# LIGGGHTS: loop of 3 runs; pass 2 sets e 0.3 by an
 
 
 def copy_examples():
-    ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
-          ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
-          ("X03_lammps_pour_flatwall", "/usr/share/lammps/examples/granular", "in.pour.flatwall", False),
-          ("X04_lammps_granregion_box", "/usr/share/lammps/examples/granregion", "in.granregion.box", False),
-          ("X05_lammps_granregion_funnel", "/usr/share/lammps/examples/granregion", "in.granregion.funnel", False),
-          ("X06_lammps_granregion_mixer", "/usr/share/lammps/examples/granregion", "in.granregion.mixer", False)]
-    T = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
-    for t, f in (("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
-                 ("hysteresis", "in.hysteresis"), ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"),
-                 ("insert_stream", "in.insert_stream_reset_timestep"), ("cohesion", "in.noCohesion"), ("contactModels", "in.oldModels"),
-                 ("hysteresis", "in.noHysteresis"), ("movingMeshGran", "in.movingMeshGran"), ("chute_wear", "in.chute_wear")):
-        ex.append(("X_lig_" + t + "_" + f[3:], os.path.join(T, t), f, True))
-    for name, src, f, lig in ex:
-        m.copy_example(os.path.join(m.D, name), src, f, lig)
+    m.copy_examples([("X01_lammps_pour_drum", "granular", "in.pour.drum"), ("X02_lammps_pour", "pour", "in.pour"),
+                     ("X03_lammps_pour_flatwall", "granular", "in.pour.flatwall"),
+                     ("X04_lammps_granregion_box", "granregion", "in.granregion.box"),
+                     ("X05_lammps_granregion_funnel", "granregion", "in.granregion.funnel"),
+                     ("X06_lammps_granregion_mixer", "granregion", "in.granregion.mixer")],
+                    [("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
+                     ("hysteresis", "in.hysteresis"), ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"),
+                     ("insert_stream", "in.insert_stream_reset_timestep"), ("cohesion", "in.noCohesion"),
+                     ("contactModels", "in.oldModels"), ("hysteresis", "in.noHysteresis"),
+                     ("movingMeshGran", "in.movingMeshGran"), ("chute_wear", "in.chute_wear")])
 
 
 if __name__ == "__main__":

@@ -650,26 +650,23 @@ deck("CL28_clear_first_N19", "# N19 (lost ignore; fix deposit of 1 m default sph
 
 
 def copy_examples():
-    ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
-          ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
-          ("X03_lammps_pour_2d", "/usr/share/lammps/examples/pour", "in.pour.2d", False),
-          ("X04_lammps_pour_2d_molecule", "/usr/share/lammps/examples/pour", "in.pour.2d.molecule", False),
-          ("X05_lammps_pour_flatwall", "/usr/share/lammps/examples/granular", "in.pour.flatwall", False),
-          ("X06_lammps_granregion_box", "/usr/share/lammps/examples/granregion", "in.granregion.box", False),
-          ("X07_lammps_granregion_funnel", "/usr/share/lammps/examples/granregion", "in.granregion.funnel", False),
-          ("X08_lammps_granregion_mixer", "/usr/share/lammps/examples/granregion", "in.granregion.mixer", False)]
-    T = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
-    for t, f in (("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
-                 ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"), ("cohesion", "in.noCohesion"),
-                 ("hysteresis", "in.noHysteresis"), ("movingMeshGran", "in.movingMeshGran"), ("chute_wear", "in.chute_wear"),
-                 ("meshGran", "in.meshGran"), ("heatTransfer_1", "in.heatGran"), ("heatTransfer_2", "in.heatGran"),
-                 ("hydrogel_multicontact", "in.hydrogel_default"), ("hydrogel_multicontact", "in.hydrogel_multicontact"),
-                 ("mesh_tet", "in.mesh_tet"), ("multisphere_stone_restitution", "in.multisphere"), ("superquadric", "in.particle_particle"),
-                 ("sph_1", "in.sph_1")):
-        ex.append(("X_lig_" + t + "_" + f[3:], os.path.join(T, t), f, True))
-    ex.append(("CL23_lammps_pour_example_clear_first", "/usr/share/lammps/examples/pour", "in.pour", False))  # in.pour with clear prepended below
-    for name, src, f, lig in ex:
-        m.copy_example(os.path.join(m.D, name), src, f, lig, first="clear\n" if name.startswith("CL23") else "")
+    m.copy_examples([("X01_lammps_pour_drum", "granular", "in.pour.drum"), ("X02_lammps_pour", "pour", "in.pour"),
+                     ("X03_lammps_pour_2d", "pour", "in.pour.2d"),
+                     ("X04_lammps_pour_2d_molecule", "pour", "in.pour.2d.molecule"),
+                     ("X05_lammps_pour_flatwall", "granular", "in.pour.flatwall"),
+                     ("X06_lammps_granregion_box", "granregion", "in.granregion.box"),
+                     ("X07_lammps_granregion_funnel", "granregion", "in.granregion.funnel"),
+                     ("X08_lammps_granregion_mixer", "granregion", "in.granregion.mixer"),
+                     ("CL23_lammps_pour_example_clear_first", "pour", "in.pour")],
+                    [("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
+                     ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"), ("cohesion", "in.noCohesion"),
+                     ("hysteresis", "in.noHysteresis"), ("movingMeshGran", "in.movingMeshGran"),
+                     ("chute_wear", "in.chute_wear"), ("meshGran", "in.meshGran"), ("heatTransfer_1", "in.heatGran"),
+                     ("heatTransfer_2", "in.heatGran"), ("hydrogel_multicontact", "in.hydrogel_default"),
+                     ("hydrogel_multicontact", "in.hydrogel_multicontact"), ("mesh_tet", "in.mesh_tet"),
+                     ("multisphere_stone_restitution", "in.multisphere"), ("superquadric", "in.particle_particle"),
+                     ("sph_1", "in.sph_1")],
+                    first={"CL23_lammps_pour_example_clear_first": "clear\n"})
 
 
 if __name__ == "__main__":

@@ -159,6 +159,20 @@ def copy_example(d, src, f, lig, first=""):
     open(os.path.join(d, "G"), "w").write("1\n")
 
 
+LAMMPS_EXAMPLES = "/usr/share/lammps/examples"  # the Debian packages' example decks
+LIGGGHTS_TUTORIALS = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
+
+
+def copy_examples(lammps, tutorials, first=None):
+    """Copy engine examples into deck folders under `D` (rounds 25, 26): `lammps` as (name, subfolder, deck),
+    LIGGGHTS `tutorials` as (subfolder, deck), named X_lig_SUBFOLDER_DECK (less its 'in.'); `first`: {name: a line put
+    first}."""
+    ex = [(n, os.path.join(LAMMPS_EXAMPLES, sub), f, False) for n, sub, f in lammps]
+    ex += [("X_lig_" + t + "_" + f[3:], os.path.join(LIGGGHTS_TUTORIALS, t), f, True) for t, f in tutorials]
+    for name, src, f, lig in ex:
+        copy_example(os.path.join(D, name), src, f, lig, (first or {}).get(name, ""))
+
+
 def make(decks, write, argv):
     """Write the decks named in `argv` (every one of `decks` when it is empty) with `write`; print how many there are."""
     for n in (argv or decks):
