@@ -1,12 +1,12 @@
 """Field round 13: write each deck's spec.json for referee13.py from the engine's own sizes and masses
 (engine_state.txt beside each deck, or the deck's own set lines where no run changes them).
 usage: python specs.py [DECKID ...]"""
-import json, math, os, sys
+import json, os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit.specs import FLOOR, LL, P13 as P, W13 as W, m  # noqa: E402,F401  (rounds 13-14's)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 HOOKE = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
-LL = ["pair_style granular", f"pair_coeff * * {HOOKE}"]
-FLOOR = f"fix floor all wall/gran granular {HOOKE} zplane 0 NULL"
 GL = ["fix m1 all property/global youngsModulus peratomtype 5e6 5e6",
       "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3",
       "fix m3 all property/global kn peratomtypepair 2 2000 2000 2000 2000",
@@ -16,22 +16,6 @@ GL = ["fix m1 all property/global youngsModulus peratomtype 5e6 5e6",
       "fix m7 all property/global coefficientFriction peratomtypepair 2 0.5 0.5 0.5 0.5",
       "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"]
 GWALL = "fix wall all wall/gran model hooke/stiffness tangential history primitive type 2 zplane 0.0"
-
-
-def m(r, rho):
-    return rho * 4.0 / 3.0 * math.pi * r ** 3
-
-
-def P(t1, t2, r1, m1, r2=None, m2=None, **kw):
-    c = {"t1": t1, "t2": t2, "r1": r1, "m1": m1, "r2": r2 or r1, "m2": m2 or m1, "speed_idx": [2]}
-    c.update(kw)
-    return c
-
-
-def W(t1, r1, m1, wall=FLOOR, wall_id="floor", **kw):
-    c = {"t1": t1, "wall_id": wall_id, "wall": wall, "r1": r1, "m1": m1, "z0": r1, "zw": 0, "speed_idx": [2]}
-    c.update(kw)
-    return c
 
 
 m4, m6 = m(0.002, 2500), m(0.003, 2500)

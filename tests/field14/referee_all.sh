@@ -1,6 +1,4 @@
 #!/bin/sh
 # Field round 14: run round 13's referee over deck folders that have a spec.json, one at a time, niced
-for d in "$@"; do
-  [ -f "$d/spec.json" ] || continue
-  echo "### $d"; nice -n 10 python tests/field13/referee13.py "$d" 2>&1 | tail -12
-done
+# (tests/fieldkit/referee_all.sh). usage (from the worktree): sh tests/field14/referee_all.sh DECKDIR ...
+REFEREE=tests/field13/referee13.py exec sh tests/fieldkit/referee_all.sh "$@"

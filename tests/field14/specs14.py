@@ -2,31 +2,15 @@
 10's head-on referee unchanged), from the sizes and masses the engine itself holds at the end of the deck
 (engine_state.txt beside each deck, written by tests/field12/engine_state.py or tests/field13/liggghts_state.py)
 and the deck's own contact lines. usage: python specs14.py [DECKID ...]"""
-import json, math, os, sys
+import json, os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit.specs import FLOOR, LL, P13 as P, W13 as W, m  # noqa: E402,F401  (rounds 13-14's)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 HK = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
 JKR = "jkr 1e7 3000 0.3 0.5 damping mass_velocity tangential linear_nohistory 1 0.3"
 DMT = "dmt 1e7 3000 0.3 0.5 damping mass_velocity tangential linear_nohistory 1 0.3"
 HM = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"
-LL = ["pair_style granular", f"pair_coeff * * {HK}"]
-FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL"
-
-
-def m(r, rho):
-    return rho * 4.0 / 3.0 * math.pi * r ** 3
-
-
-def P(t1, t2, r1, m1, r2=None, m2=None, **kw):
-    c = {"t1": t1, "t2": t2, "r1": r1, "m1": m1, "r2": r2 or r1, "m2": m2 or m1, "speed_idx": [2]}
-    c.update(kw)
-    return c
-
-
-def W(t1, r1, m1, wall=FLOOR, wall_id="floor", **kw):
-    c = {"t1": t1, "wall_id": wall_id, "wall": wall, "r1": r1, "m1": m1, "z0": r1, "zw": 0, "speed_idx": [2]}
-    c.update(kw)
-    return c
 
 
 m2, m3 = m(0.002, 2500), m(0.003, 2500)
@@ -153,7 +137,6 @@ def main(names):
             continue
         json.dump(S[n], open(os.path.join(D, n, "spec.json"), "w"), indent=1)
     print("specs:", len([n for n in (names or S) if n in S]))
-
 
 
 # ---------------------------------------------------------------- LIGGGHTS

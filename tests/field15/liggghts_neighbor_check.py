@@ -3,29 +3,17 @@
 neighbour settings (`neighbor 1e-5 bin`, `neigh_modify delay 0 every 200 check no`) and with the usual
 `neighbor 0.002 bin`, `neigh_modify delay 0`. eps = relative normal speed after / before, read after 600 steps
 (the contact over, no gravity). No import from the project. usage: python liggghts_neighbor_check.py"""
-import math, os, subprocess, tempfile
+import math, os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import liggghts  # noqa: E402  (the head, materials, run and readers rounds 15-19 share)
+from fieldkit.liggghts import MAT  # noqa: E402
 
-MAT = """fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8
-fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5
-pair_style gran model hertz tangential history
-pair_coeff * *
-"""
 
 
 def run(gap, neigh):
     r1, r2 = 0.002, 0.003
     m1, m2 = 2500 * 4 / 3 * math.pi * r1 ** 3, 1500 * 4 / 3 * math.pi * r2 ** 3
-    deck = f"""atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
-create_box 3 reg
-{neigh}
+    deck = liggghts.head("-0.05 0.05 -0.05 0.05 -0.05 0.05") + f"""{neigh}
 {MAT}create_atoms 1 single {-r1 - gap / 2} 0 0 units box
 create_atoms 2 single {r2 + gap / 2} 0 0 units box
 set atom 1 diameter {2 * r1} density 2500
@@ -40,10 +28,7 @@ run 600
 variable e equal vx[2]-vx[1]
 print "F15EPS ${{e}}"
 """
-    with tempfile.TemporaryDirectory(prefix="field15-lnb.") as d:
-        open(os.path.join(d, "in.n"), "w").write(deck)
-        p = subprocess.run(["liggghts", "-in", "in.n", "-log", "none"], cwd=d, capture_output=True, text=True, errors="replace")
-    for ln in p.stdout.splitlines():
+    for ln in liggghts.run(deck, "field15-lnb.", "in.n").splitlines():
         if ln.startswith("F15EPS"):
             return float(ln.split()[1])
     return float("nan")
@@ -59,15 +44,7 @@ if __name__ == "__main__":
 def run_wall(gap, neigh):
     """Type 1 (r 2 mm, rho 2500) dropped at 1 m/s on deck L15's primitive floor (e 0.7 for 1 with 3) from a gap."""
     r1 = 0.002
-    deck = f"""atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-region reg block -0.05 0.05 -0.05 0.05 -0.01 0.05 units box
-create_box 3 reg
-{neigh}
+    deck = liggghts.head("-0.05 0.05 -0.05 0.05 -0.01 0.05") + f"""{neigh}
 {MAT}fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0
 create_atoms 1 single 0 0 {r1 + gap} units box
 set atom 1 diameter {2 * r1} density 2500
@@ -78,10 +55,7 @@ run 600
 variable e equal vz[1]
 print "F15EPS ${{e}}"
 """
-    with tempfile.TemporaryDirectory(prefix="field15-lnb.") as d:
-        open(os.path.join(d, "in.n"), "w").write(deck)
-        p = subprocess.run(["liggghts", "-in", "in.n", "-log", "none"], cwd=d, capture_output=True, text=True, errors="replace")
-    for ln in p.stdout.splitlines():
+    for ln in liggghts.run(deck, "field15-lnb.", "in.n").splitlines():
         if ln.startswith("F15EPS"):
             return float(ln.split()[1])
     return float("nan")

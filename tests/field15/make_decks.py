@@ -1,12 +1,13 @@
 """Field round 15: write the LAMMPS decks (decks/NAME/in.deck, G, ARGS) from round 14's shared header.
 Each deck's first comment says what it tries. usage: python make_decks.py [NAME ...]"""
 import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import FLOOR, GRAV, HK, HM, TAIL, TWO, TWO4  # noqa: E402  (the same lines as there)
 
 D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
-HK = "hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
 JKR = "jkr 1e7 3000 0.3 0.5 damping mass_velocity tangential linear_nohistory 1 0.3"
 DMT = "dmt 1e7 3000 0.3 0.5 damping mass_velocity tangential linear_nohistory 1 0.3"
-HM = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"
 
 
 def head(ntypes=2, box="0 0.04 0 0.04 0 0.1", bnd="p p f", style="sphere", units="si"):
@@ -19,15 +20,6 @@ create_box {ntypes} box
 """
 
 
-FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
-TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
-TWO = """create_atoms 1 single 0.02 0.02 0.01
-create_atoms 2 single 0.01 0.01 0.01
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 2500
-"""
-TWO4 = TWO.replace("0.006 density", "0.004 density")
-GRAV = "fix grav all gravity 9.81 vector 0 0 -1\n"
 BASE = head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
 COUNT = 'variable n equal count(all)\nif "${n} < 1" then "pair_coeff * * hooke 9999 3000 damping mass_velocity tangential linear_nohistory 1 0.3"\n'
 
@@ -440,18 +432,8 @@ deck("x10_molecule_fifo", "# molecule template read from a named pipe (made by l
 
 def write(name):
     text, g, args, extra = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if args:
-        open(os.path.join(d, "ARGS"), "w").write(args + "\n")
-    for f, t in extra.items():
-        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
-        open(os.path.join(d, f), "w").write(t)
+    kit.write_folder(os.path.join(D, name), text, g, args=args, data=extra)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

@@ -1,13 +1,11 @@
 """Field round 15: write the LIGGGHTS decks (decks/NAME/in.deck, a LIGGGHTS marker file, G, STL files),
-with round 14's header and materials (tests/field14/make_ldecks.py). usage: python make_ldecks.py [NAME ...]"""
-import importlib.util, os, subprocess, sys
+with round 14's header and materials (now tests/fieldkit/decks.py). usage: python make_ldecks.py [NAME ...]"""
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import ATOMS, E3, HERTZ, MAT3, STIFF3, WALL3, lhead as head, RUN2000 as RUN  # noqa: E402,F401  (round 14's)
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-D = os.path.join(HERE, "decks")
-_s = importlib.util.spec_from_file_location("ml14", os.path.join(HERE, "..", "field14", "make_ldecks.py"))
-M = importlib.util.module_from_spec(_s)
-_s.loader.exec_module(M)
-head, MAT3, E3, HERTZ, WALL3, ATOMS, RUN, STIFF3 = M.head, M.MAT3, M.E3, M.HERTZ, M.WALL3, M.ATOMS, M.RUN, M.STIFF3
+D = os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")
 
 DECKS = {}
 
@@ -95,18 +93,8 @@ deck("L16_neigh_exclude_type_12", "# LIGGGHTS neigh_modify exclude type 1 2: no 
 
 def write(name):
     text, g, files, data = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, liggghts=True, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

@@ -1,8 +1,4 @@
 #!/bin/sh
-# Field round 15: for each deck folder, run it in its engine (engine.sh) then audit it (audit.sh), niced.
+# Field round 15: for each deck folder, run it in its engine (engine.sh) then audit it (audit.sh), niced (tests/fieldkit/run_batch.sh).
 # usage (from the worktree): sh tests/field15/run_batch.sh DECKDIR ...
-. tests/field15/env.sh
-for d in "$@"; do
-  nice -n 10 sh tests/field15/engine.sh "$d" > /dev/null 2>&1
-  nice -n 10 sh tests/field15/audit.sh "$d"
-done
+ROUND=15 exec sh tests/fieldkit/run_batch.sh "$@"

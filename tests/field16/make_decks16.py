@@ -2,6 +2,8 @@
 (tests/field15/make_decks.py: head, HK, HM, TWO, TWO4, GRAV, FLOOR, TAIL). Each deck's first comment says what
 it tries. usage: python make_decks16.py [NAME ...]"""
 import importlib.util, os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -284,18 +286,8 @@ deck("n27_cutoff_keyword_widens_lists", "# pair_coeff ... cutoff 0.006 (contact 
 
 def write(name):
     text, g, args, extra = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if args:
-        open(os.path.join(d, "ARGS"), "w").write(args + "\n")
-    for f, t in extra.items():
-        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
-        open(os.path.join(d, f), "w").write(t)
+    kit.write_folder(os.path.join(D, name), text, g, args=args, data=extra)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

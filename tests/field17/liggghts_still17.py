@@ -2,27 +2,15 @@
 head-on, touching at t = 0, at contact time / (1000, 2000, 4000, 8000), extrapolated to dt -> 0 (Richardson on the
 two finest; wobble = change between the two triples). Materials: round 14's (hertz, typed e). No import from the
 project. usage: python liggghts_still17.py T1 R1 RHO1 T2 R2 RHO2 G [VX VY VZ: a velocity the still partner holds]"""
-import os, subprocess, sys, tempfile
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import liggghts  # noqa: E402  (the head, materials, run and readers rounds 15-19 share)
+from fieldkit.liggghts import MAT  # noqa: E402
 
-MAT = """fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3
-fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8
-fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5
-pair_style gran model hertz tangential history
-pair_coeff * *
-"""
 
 
 def run(t1, r1, rho1, t2, r2, rho2, g, dt, nmax, v2=(0, 0, 0)):
-    deck = f"""atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
-create_box 3 reg
-neighbor 0.002 bin
+    deck = liggghts.head() + f"""neighbor 0.002 bin
 neigh_modify delay 0
 {MAT}create_atoms {t1} single {-r1} 0 0 units box
 create_atoms {t2} single {r2} 0 0 units box
@@ -41,21 +29,7 @@ thermo 1
 thermo_modify format float %.17g norm no
 run {nmax}
 """
-    with tempfile.TemporaryDirectory(prefix="field17-still.") as d:
-        open(os.path.join(d, "in.s"), "w").write(deck)
-        p = subprocess.run(["liggghts", "-in", "in.s", "-log", "none"], cwd=d, capture_output=True, text=True, errors="replace")
-    rows = []
-    for ln in p.stdout.splitlines():
-        f = ln.split()
-        if len(f) == 3 and f[0].isdigit():
-            try:
-                rows.append((int(f[0]), float(f[1]), float(f[2])))
-            except ValueError:
-                pass
-    for s, dd, v in rows:
-        if s > 0 and dd > 0:
-            return -v / g, s * dt
-    raise RuntimeError(p.stdout[-800:])
+    return liggghts.parting(liggghts.run(deck, "field17-still.", "in.s"), g, dt)
 
 
 if __name__ == "__main__":
@@ -63,6 +37,6 @@ if __name__ == "__main__":
     v2 = [float(x) for x in sys.argv[8:11]] or [0.0, 0.0, 0.0]
     t1, t2, r1, rho1, r2, rho2, g = int(t1), int(t2), float(r1), float(rho1), float(r2), float(rho2), float(g)
     _, tc = run(t1, r1, rho1, t2, r2, rho2, g, 1e-7, 200000, v2)
-    e = [run(t1, r1, rho1, t2, r2, rho2, g, tc / n, 3 * n, v2)[0] for n in (1000, 2000, 4000, 8000)]
-    x1, x2 = 2 * e[2] - e[1], 2 * e[3] - e[2]
+    e = [run(t1, r1, rho1, t2, r2, rho2, g, tc / n, 3 * n, v2)[0] for n in liggghts.LADDER]
+    x1, x2 = liggghts.richardson(e)
     print(f"types {t1} {t2} still partner holding velocity {v2}, g {g:g}: eps {x2:.8f} (wobble {abs(x2 - x1):.1e}; from {' '.join(f'{v:.8f}' for v in e)}) tc {tc:.4g}")

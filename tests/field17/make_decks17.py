@@ -1,7 +1,10 @@
 """Field round 17: write the LAMMPS (a*, m*, w*) and LIGGGHTS (G*) decks (decks/NAME/in.deck, G, extra files, a
 LIGGGHTS marker) on round 15's LAMMPS header and round 14's LIGGGHTS header. Each deck's first comment says what it
 tries. usage: python make_decks17.py [NAME ...]"""
-import importlib.util, os, subprocess, sys
+import importlib.util, os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import ATOMS, E3, HERTZ, MAT3, WALL3, lhead, RUN2000 as RUN  # noqa: E402  (round 14's LIGGGHTS lines)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -15,9 +18,7 @@ def _load(name, path):
 
 
 M = _load("md15", ("field15", "make_decks.py"))
-L = _load("ml14", ("field14", "make_ldecks.py"))
 head, HK, HM, TWO, TWO4, GRAV, FLOOR, TAIL = M.head, M.HK, M.HM, M.TWO, M.TWO4, M.GRAV, M.FLOOR, M.TAIL
-lhead, MAT3, E3, HERTZ, WALL3, ATOMS, RUN = L.head, L.MAT3, L.E3, L.HERTZ, L.WALL3, L.ATOMS, L.RUN
 BASE = head() + f"pair_style granular\npair_coeff * * {HK}\n" + GRAV + FLOOR + TAIL
 NB = "neighbor 1e-4 bin\n"
 DECKS = {}
@@ -413,19 +414,8 @@ deck("G25_liggghts_writers_outside", "# LIGGGHTS: writers aimed outside the fold
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, liggghts=lig, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

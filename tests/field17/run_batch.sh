@@ -1,8 +1,4 @@
 #!/bin/sh
-# Field round 17: for each deck folder, run it in its engine (engine.sh) then audit it (audit.sh), niced.
+# Field round 17: for each deck folder, run it in its engine (engine.sh) then audit it (audit.sh), niced (tests/fieldkit/run_batch.sh).
 # usage (from the worktree): sh tests/field17/run_batch.sh DECKDIR ...
-. tests/field17/env.sh
-for d in "$@"; do
-  nice -n 10 sh tests/field17/engine.sh "$d" > /dev/null 2>&1
-  nice -n 10 sh tests/field17/audit.sh "$d"
-done
+ROUND=17 exec sh tests/fieldkit/run_batch.sh "$@"

@@ -1,6 +1,9 @@
 """Field round 18: the outcome of each deck (by prefix of its folder name), checked to cover every folder once.
 usage: python classify18.py   (prints the table rows for FINDINGS.md)"""
-import os
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import classify  # noqa: E402
+
 C = {
  "correct, engine-checked": "p01 p02 p03 p06 p07 p08 p09 p10 p14 p15 p16 p18 p21 p22 p28 s01 s03 s06 s11 u01 u02 u03 u04 u08 u10 u11 u12 "
                             "w02 w03 w04 w09 w13 k05 k18 b07 b17 b22 b27 b28 b30 b39 b42 b54 x01 x02 G01 G03 G04 G11 G14 G22 G29 G32 G36 G37 G40",
@@ -17,16 +20,4 @@ C = {
  "fair refusal": "p04 p05 p12 p24 p27 b08 b18 b21 b32 b43 b51 G12 G31",
  "AVOIDABLE REFUSAL": "s04 s13 b09 b25 b46 b49 b41",
 }
-folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
-seen = {}
-for cat, names in C.items():
-    for n in names.split():
-        hits = [f for f in folders if f.split("_")[0] == n]
-        assert len(hits) == 1, (n, hits)
-        assert hits[0] not in seen, (n, seen.get(hits[0]))
-        seen[hits[0]] = cat
-missing = [f for f in folders if f not in seen]
-assert not missing, missing
-for cat, names in C.items():
-    print(f"| {cat} | {len(names.split())} | {names} |")
-print(f"| total | {len(folders)} | |")
+classify.by_prefix(C, os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks"))  # the check and the table: tests/fieldkit/classify.py

@@ -2,30 +2,18 @@
 styles, w* walls, k* kinematics, partners and time) and the LIGGGHTS decks (G*) as decks/NAME/in.deck with G (the
 speeds), extra files and a LIGGGHTS marker. The headers are written out here (the shape of rounds 14 and 15's).
 Each deck's first comment says what it tries. usage: python make_decks18.py [NAME ...]"""
-import os, subprocess, sys
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import (ATOMS, E3, FLOOR, GRAV, HERTZ, HK, MAT3, TAIL, TL, TWO, TWO4, WALL3, head, lhead,  # noqa: E402
+                            RUN2000 as RUN)  # the same lines as there
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
 K = "damping mass_velocity tangential linear_nohistory 1 0.3"
-HK = f"hooke 2000 3000 {K}"
 HM = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_nohistory 1 0.3"
-TL = "tangential linear_nohistory 1 0.3"
 
 
-def head(ntypes=2, box="0 0.04 0 0.04 0 0.1", bnd="p p f", style="sphere 1", units="si", dim=3):
-    return (f"units {units}\n" + (f"dimension {dim}\n" if dim != 3 else "") + f"atom_style {style}\nboundary {bnd}\n"
-            f"comm_modify vel yes\nregion box block {box} units box\ncreate_box {ntypes} box\n")
-
-
-GRAV = "fix grav all gravity 9.81 vector 0 0 -1\n"
-FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
-TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
-TWO = """create_atoms 1 single 0.02 0.02 0.01
-create_atoms 2 single 0.01 0.01 0.01
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 2500
-"""
-TWO4 = TWO.replace("0.006 density", "0.004 density")
 BASEH = lambda model: head() + f"pair_style granular\npair_coeff * * {model}\n" + GRAV + FLOOR.replace(HK, model) + TAIL
 DECKS = {}
 
@@ -318,25 +306,8 @@ deck("k20_momentum_zero", "# fix momentum every 1 linear 1 1 1 (zeroes the total
 
 
 # ================================================================ LIGGGHTS
-def lhead(nt=3, extra="", style="granular", units="si", neigh="neighbor 0.002 bin\nneigh_modify delay 0\n",
-          box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f"):
-    return (f"atom_style {style}\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
-            f"region reg block {box} units box\ncreate_box {nt} reg\n{neigh}{extra}")
 
 
-MAT3 = """fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3
-fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5
-"""
-E3 = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
-HERTZ = "pair_style gran model hertz tangential history\npair_coeff * *\n"
-WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\n"
-ATOMS = """create_atoms 1 single 0.01 0 0.01 units box
-create_atoms 2 single -0.01 0 0.01 units box
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 1500
-"""
-RUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 2000\n"
 LB = MAT3 + E3 + HERTZ + WALL3 + ATOMS
 PLANE = {"plane0.stl": ("plane", "0", "0.04")}
 
@@ -833,19 +804,8 @@ deck("b55_evaporate_type2", "# fix evaporate removes every type-2 sphere in the 
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, liggghts=lig, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

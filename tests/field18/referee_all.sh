@@ -1,7 +1,4 @@
 #!/bin/sh
 # Field round 18: run round 13's referee over deck folders that have a spec.json, one at a time, niced
-# usage (from the worktree): sh tests/field18/referee_all.sh DECKDIR ...
-. tests/field18/env.sh
-for d in "$@"; do
-  echo "### $d"; nice -n 10 python tests/field13/referee13.py "$d" 2>&1 | tail -12
-done
+# (tests/fieldkit/referee_all.sh). usage (from the worktree): sh tests/field18/referee_all.sh DECKDIR ...
+REFEREE=tests/field13/referee13.py exec sh tests/fieldkit/referee_all.sh "$@"

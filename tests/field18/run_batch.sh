@@ -1,8 +1,4 @@
 #!/bin/sh
-# Field round 18: for each deck folder, run it in its engine (engine.sh) then audit it (audit.sh), niced.
+# Field round 18: for each deck folder, run it in its engine (engine.sh) then audit it (audit.sh), niced (tests/fieldkit/run_batch.sh).
 # usage (from the worktree): sh tests/field18/run_batch.sh DECKDIR ...
-. tests/field18/env.sh
-for d in "$@"; do
-  nice -n 10 sh tests/field18/engine.sh "$d" > /dev/null 2>&1
-  nice -n 10 sh tests/field18/audit.sh "$d"
-done
+ROUND=18 exec sh tests/fieldkit/run_batch.sh "$@"

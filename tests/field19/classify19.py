@@ -1,6 +1,9 @@
 """Field round 19: the outcome of each deck (by prefix of its folder name), checked to cover every folder once.
 usage: python classify19.py   (prints the table rows for FINDINGS.md)"""
-import os
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import classify  # noqa: E402
+
 C = {
  "correct, engine-checked": "a02 a04 a08 a09 a11 a12 a14 b02 b05 d01 d03 d04 d07 d10 e08 e13 f01 f06 m01 m02 m05 m07 m09 m10 m11 m13 "
                             "v02 v05 v08 v14 L08 L10 L17 L20 L25 L26 L28 R04 R05 c02 c05 c07 c11 c19",
@@ -19,16 +22,4 @@ C = {
  "AVOIDABLE REFUSAL (C2)": "a10 f02 c26",
  "AVOIDABLE REFUSAL (round 18 D4's family: set after an insertion run)": "c21",
 }
-folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
-seen = {}
-for cat, names in C.items():
-    for n in names.split():
-        hits = [f for f in folders if f.split("_")[0] == n]
-        assert len(hits) == 1, (n, hits)
-        assert hits[0] not in seen, (n, seen.get(hits[0]))
-        seen[hits[0]] = cat
-missing = [f for f in folders if f not in seen]
-assert not missing, missing
-for cat, names in C.items():
-    print(f"| {cat} | {len(names.split())} | {names} |")
-print(f"| total | {len(folders)} | |")
+classify.by_prefix(C, os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks"))  # the check and the table: tests/fieldkit/classify.py

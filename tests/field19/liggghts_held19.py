@@ -3,18 +3,12 @@ moves at g onto a type-2 sphere (r2, rho2) that no fix integrates, touching at t
 step the two no longer overlap; dt = tc/1000 ... tc/8000, Richardson on the two finest (as round 10's referee).
 No import from the project. usage: python liggghts_held19.py G"""
 import math, os, subprocess, sys, tempfile
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import liggghts  # noqa: E402  (the head and the Richardson step rounds 15-19 share)
 
 g = float(sys.argv[1])
 r1, rho1, r2, rho2 = 0.002, 2500.0, 0.003, 1500.0
-HEAD = """atom_style granular
-atom_modify map array
-boundary f f f
-newton off
-communicate single vel yes
-units si
-region reg block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
-create_box 3 reg
-neighbor 0.0004 bin
+HEAD = liggghts.head() + """neighbor 0.0004 bin
 fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
 fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3
 fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5
@@ -50,6 +44,6 @@ def run(dt, n):
 
 e, s = run(1e-7, 200000)
 tc = s * 1e-7
-vals = [run(tc / N, 40 * N)[0] for N in (1000, 2000, 4000, 8000)]
-a, b = 2 * vals[2] - vals[1], 2 * vals[3] - vals[2]
+vals = [run(tc / N, 40 * N)[0] for N in liggghts.LADDER]
+a, b = liggghts.richardson(vals)
 print(f"g {g}: LIGGGHTS held partner eps {b:.8f} (wobble {abs(b-a):.1e}; from {', '.join('%.8f' % v for v in vals)}) tc {tc:.4g}")

@@ -3,32 +3,14 @@ and non-granular styles beside granular, e* region and primitive walls moving, d
 neighbour/exclusion/communication settings, m* damping sub-models not tried before; LIGGGHTS: L*) as
 decks/NAME/in.deck with G (the speeds), extra files and a LIGGGHTS marker. Each deck's first comment says what it
 tries. usage: python make_decks19.py [NAME ...]"""
-import os, subprocess, sys
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import (ATOMS, BASE, E3, FLOOR, G1, GRAV, HERTZ, HK, HM, K, MAT3, TAIL, TL, TWO, TWO4,  # noqa: E402
+                            WALL3, head, lhead, RUN2000 as RUN)  # the same lines as there
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-TL = "tangential linear_nohistory 1 0.3"
-K = f"damping mass_velocity {TL}"
-HK = f"hooke 2000 3000 {K}"
-HM = f"hertz/material 1e7 1.4e7 0.3 damping viscoelastic {TL}"
-
-
-def head(ntypes=2, box="0 0.04 0 0.04 0 0.1", bnd="p p f", style="sphere 1", units="si", dim=3, extra=""):
-    return (f"units {units}\n" + (f"dimension {dim}\n" if dim != 3 else "") + f"atom_style {style}\nboundary {bnd}\n"
-            f"comm_modify vel yes\n{extra}region box block {box} units box\ncreate_box {ntypes} box\n")
-
-
-GRAV = "fix grav all gravity 9.81 vector 0 0 -1\n"
-FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
-TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
-TWO = """create_atoms 1 single 0.02 0.02 0.01
-create_atoms 2 single 0.01 0.01 0.01
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 2500
-"""
-TWO4 = TWO.replace("0.006 density", "0.004 density")
-G1 = lambda model: "pair_style granular\npair_coeff * * " + model + "\n"
-BASE = lambda model, nt=2: head(nt) + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
 DECKS = {}
 
 
@@ -319,25 +301,8 @@ deck("r02_long_loop_then_change_recheck", "# round 18 D5 re-check: a 20000-pass 
      + "pair_coeff * * hooke 9000 3000 " + K + "\nrun 100\n", g=1)
 
 # ================================================================ LIGGGHTS
-def lhead(nt=3, extra="", style="granular", units="si", neigh="neighbor 0.002 bin\nneigh_modify delay 0\n",
-          box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f"):
-    return (f"atom_style {style}\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
-            f"region reg block {box} units box\ncreate_box {nt} reg\n{neigh}{extra}")
 
 
-MAT3 = """fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6
-fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3
-fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5
-"""
-E3 = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
-HERTZ = "pair_style gran model hertz tangential history\npair_coeff * *\n"
-WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\n"
-ATOMS = """create_atoms 1 single 0.01 0 0.01 units box
-create_atoms 2 single -0.01 0 0.01 units box
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 1500
-"""
-RUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 2000\n"
 PLANE = {"plane0.stl": ("plane", "0", "0.04")}
 LST = """fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000
 fix m5 all property/global gamman peratomtypepair 3 300 200 100 200 250 150 100 150 200
@@ -644,19 +609,8 @@ deck("c40_region_block_open_top", "# wall/gran/region on a block (side in) with 
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, liggghts=lig, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

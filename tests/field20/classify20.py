@@ -1,6 +1,9 @@
 """Field round 20: the outcome of each deck folder (by the prefix of its name), checked to cover every folder once.
 usage: python classify20.py   (prints the table rows for FINDINGS.md)"""
-import os
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import classify  # noqa: E402
+
 C = {
  "correct, engine-checked (head-on referee agrees)":
     "p02 p03 p05 p07 p21 s01 s08 x01 x03 x36 m06 m07 m21 h05 w07 w15 w18 w19 t09 R01 L13 L24 L27 L36 L42 L43 L51 L54 L56 L57 L61",
@@ -27,16 +30,4 @@ C = {
  "AVOIDABLE REFUSAL with a false engine error: `if ... then quit` or `if ... then \"run N\"` in LIGGGHTS (the audit's own rewrite into an include)": "L84 L95 L97",
  "AVOIDABLE REFUSAL, left classes (pair_style none stage; fix adapt reset yes)": "h06 h08 s18 s23",
 }
-folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
-seen = {}
-for cat, names in C.items():
-    for n in names.split():
-        hits = [f for f in folders if f.split("_")[0] == n]
-        assert len(hits) == 1, (n, hits)
-        assert hits[0] not in seen, (n, seen.get(hits[0]))
-        seen[hits[0]] = cat
-missing = [f for f in folders if f not in seen]
-assert not missing, missing
-for cat, names in C.items():
-    print(f"| {cat} | {len(names.split())} | {names} |")
-print(f"| total | {len(folders)} | |")
+classify.by_prefix(C, os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks"))  # the check and the table: tests/fieldkit/classify.py

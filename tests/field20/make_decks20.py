@@ -3,41 +3,19 @@ Prefixes: x* number formats and substitution, p* pair_coeff ranges/labels/restyl
 step, i* LAMMPS pour/deposit, w* walls, m* damping, h* hybrid/omp/none/clear, L* LIGGGHTS. Each deck's first
 comment says what it tries and what the engine does (PROBE lines print the engine's own values).
 usage: python make_decks20.py [NAME ...]"""
-import os, subprocess, sys
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the deck-folder writer of every round)
+from fieldkit.decks import (ATOMS, BASE, E3, FLOOR, G1, GRAV, HERTZ, HK, HM, HOOKE, K, LB, LRUN, MAT3, RUN,  # noqa: E402
+                            TAIL, TL, TWO, TWO4, WALL3, head, hk, lhead)  # the same lines as there
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-TL = "tangential linear_nohistory 1 0.3"
-K = f"damping mass_velocity {TL}"
-HK = f"hooke 2000 3000 {K}"
-HM = f"hertz/material 1e7 1.4e7 0.3 damping viscoelastic {TL}"
-
-
-def head(ntypes=2, box="0 0.04 0 0.04 0 0.1", bnd="p p f", style="sphere 1", units="si", dim=3, extra=""):
-    return (f"units {units}\n" + (f"dimension {dim}\n" if dim != 3 else "") + f"atom_style {style}\nboundary {bnd}\n"
-            f"comm_modify vel yes\n{extra}region box block {box} units box\ncreate_box {ntypes} box\n")
-
-
-GRAV = "fix grav all gravity 9.81 vector 0 0 -1\n"
-FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
-TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
-TWO = """create_atoms 1 single 0.02 0.02 0.01
-create_atoms 2 single 0.01 0.01 0.01
-set type 1 diameter 0.004 density 2500
-set type 2 diameter 0.006 density 2500
-"""
-TWO4 = TWO.replace("0.006 density", "0.004 density")
-G1 = lambda model: "pair_style granular\npair_coeff * * " + model + "\n"
-BASE = lambda model, nt=2: head(nt) + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
 DECKS = {}
 
 
 def deck(name, text, g="0.1 1", files=None, data=None, liggghts=False):
     DECKS[name] = (text, g, files or {}, data or {}, liggghts)
-
-
-def hk(k, gam=3000):
-    return f"hooke {k} {gam} {K}"
 
 
 # ================================================================ x*: formats, substitution, if
@@ -323,21 +301,9 @@ deck("h12_special_clear_in_include", "# clear inside an included file, the secon
      + BASE(HK) + TWO + "run 100\ninclude in.second\n", data={"in.second": "clear\n" + BASE(HM.replace("1e7", "1e8")) + TWO + "run 100\n"})
 
 # ================================================================ L*: LIGGGHTS
-def lhead(nt=3, extra="", units="si", box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f"):
-    return (f"atom_style granular\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
-            f"region reg block {box} units box\ncreate_box {nt} reg\nneighbor 0.002 bin\nneigh_modify delay 0\n{extra}")
 
 
-MAT3 = ("fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3\n"
-        "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5\n")
-E3 = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
-HERTZ = "pair_style gran model hertz tangential history\npair_coeff * *\n"
-HOOKE = "pair_style gran model hooke tangential history\npair_coeff * *\n"
-WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\n"
 WALLH = "fix wprim all wall/gran model hooke tangential history primitive type 3 zplane 0.0\n"
-ATOMS = "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\n"
-LRUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
-RUN = LRUN + "run 1000\n"
 LST = ("fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000\n"
        "fix m5 all property/global gamman peratomtypepair 3 300 200 100 200 250 150 100 150 200\n"
        "fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000\n"
@@ -347,7 +313,6 @@ LWST = "fix wprim all wall/gran model hooke/stiffness tangential history primiti
 INSREG = "region ins block -0.03 0.03 -0.03 0.03 0.04 0.1 units box\n"
 T2 = "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 1500 radius constant 0.0015\nfix pdd all particledistribution/discrete 32452843 1 pts1 1.0\n"
 PACK = "fix ins all insert/pack seed 32452867 distributiontemplate pdd insert_every once overlapcheck yes particles_in_region 10 region ins\n"
-LB = lambda: lhead() + MAT3 + E3 + HERTZ + WALL3
 
 
 def L(name, text, **kw):
@@ -978,21 +943,8 @@ deck("z42_if_set_density", "# LAMMPS if \"1 > 0\" then \"set type 2 density 7800
 
 def write(name):
     text, g, files, data, lig = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, "in.deck"), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    open(os.path.join(d, "DECK"), "w").write("in.deck\n")  # else the scripts take the first in.* (in.2 sorts before in.deck)
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
-        open(os.path.join(d, f), "w").write(t)
-    for f, args in files.items():
-        subprocess.run([sys.executable, os.path.join(HERE, "..", "field13", "stl.py"), *args, os.path.join(d, f)], check=True)
+    kit.write_folder(os.path.join(D, name), text, g, deck_file=True, liggghts=lig, data=data, stl=files)
 
 
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.make(DECKS, write, sys.argv[1:])

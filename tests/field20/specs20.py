@@ -3,37 +3,12 @@ round 10's head-on referee unchanged: two bodies touching at t = 0, contact time
 dt -> 0). Sizes and masses are the engine's own (engine_stages20.py for LAMMPS, liggghts_state20.py for LIGGGHTS, run on
 the deck; ENGINE_STATE.txt beside the deck). The contact lines are the deck's own, so the engine decides what they mean
 (type ranges, labels, repeated keywords). usage: python specs20.py [NAME ...]"""
-import json, math, os, sys
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit.specs import GL, HK, HM, K, LE3, LMAT, LST, P, TL, W, hk, m, m2, m3, write  # noqa: E402,F401
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-m = lambda r, rho: rho * 4 / 3 * math.pi * r ** 3
-TL = "tangential linear_nohistory 1 0.3"
-K = f"damping mass_velocity {TL}"
-HK = f"hooke 2000 3000 {K}"
-HM = f"hertz/material 1e7 1.4e7 0.3 damping viscoelastic {TL}"
-m2, m3 = m(0.002, 2500), m(0.003, 2500)
-
-
-def P(t1, t2, r1, m1, r2, m2_, **kw):
-    return dict({"t1": t1, "t2": t2, "r1": r1, "m1": m1, "r2": r2, "m2": m2_, "speed_idx": [0]}, **kw)
-
-
-def W(t1, r1, m1, wall, wall_id="floor", **kw):
-    return dict({"t1": t1, "wall_id": wall_id, "wall": wall, "r1": r1, "m1": m1, "z0": r1, "zw": 0, "speed_idx": [0]}, **kw)
-
-
-GL = lambda *l: ["pair_style granular"] + [f"pair_coeff {x}" for x in l]
-hk = lambda k, gam=3000: f"hooke {k} {gam} {K}"
-LMAT = ["fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6",
-        "fix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3",
-        "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5"]
-LST = ["fix m4 all property/global kn peratomtypepair 3 2000 2500 3000 2500 4000 3500 3000 3500 5000",
-       "fix m5 all property/global gamman peratomtypepair 3 300 200 100 200 250 150 100 150 200",
-       "fix m6 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000",
-       "fix m8 all property/global gammat peratomtypepair 3 50 50 50 50 50 50 50 50 50",
-       "pair_style gran model hooke/stiffness tangential history", "pair_coeff * *"]
-LE3 = ["fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8"]
 LE = lambda e: [f"fix m3 all property/global coefficientRestitution peratomtypepair 3 " + " ".join([str(e)] * 9)]
 CV = ["fix m9 all property/global characteristicVelocity scalar 2.0"]
 LIG = lambda **kw: dict({"engine": "liggghts", "ntypes": 3}, **kw)
@@ -100,11 +75,5 @@ S = {
 }
 
 
-def main(names):
-    for n in names or S:
-        s = dict({"engine": "lammps"}, **S[n])
-        json.dump(s, open(os.path.join(D, n, "spec.json"), "w"), indent=1)
-    print(len(names or S), "specs")
-
-
-main(sys.argv[1:])
+if __name__ == "__main__":
+    write(S, D, sys.argv[1:])

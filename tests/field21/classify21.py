@@ -1,6 +1,9 @@
 """Field round 21: the outcome of each deck folder (by the prefix of its name), checked to cover every folder once.
 usage: python classify21.py   (prints the table rows for FINDINGS.md)"""
-import os
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import classify  # noqa: E402
+
 C = {
  "correct, engine-checked (probe21/wprobe21: the deck run to its end in LAMMPS, then a head-on pair or a floor drop at dt 1e-8 s; |audit - engine| <= 2e-5)":
     "a01 a02 a03 a04 a06 a07 a08 a09 a11 a14 a15 a16 a18 a23 a26 c07 c08 c10 c12 c13 c16 c17 d01 d02 d04 d05 d06 d08 d10 "
@@ -23,16 +26,4 @@ C = {
  "fair refusal (run ... every with include/variable/if-quit; or the engine itself stops on the deck)":
     "c09 c14 c15 c25 c26 c34 c35 c36 c37 a27 N41 R03 N03 N11 N12 N37 a10 c11 c24 d03 d07 d09 f14 r05 r12 v01 v04 v14 v15",
 }
-folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
-seen = {}
-for cat, names in C.items():
-    for n in names.split():
-        hits = [f for f in folders if f.split("_")[0] == n]
-        assert len(hits) == 1, (n, hits)
-        assert hits[0] not in seen, (n, seen.get(hits[0]))
-        seen[hits[0]] = cat
-missing = [f for f in folders if f not in seen]
-assert not missing, missing
-for cat, names in C.items():
-    print(f"| {cat} | {len(names.split())} | {names} |")
-print(f"| total | {len(folders)} | |")
+classify.by_prefix(C, os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks"))  # the check and the table: tests/fieldkit/classify.py

@@ -1,14 +1,7 @@
-"""Field round 21: eps of one head-on collision in LAMMPS at a given time step (round 10's referee run function,
-unchanged), to set the time step a deck's last run really uses beside the one the audit states.
-usage: python dtcheck20.py DT [DT ...]   (types 1 1, 4 mm, 2500 kg/m3, hooke 2000 3000 mass_velocity, g = 1)"""
-import importlib.util, math, os, sys
-here = os.path.dirname(os.path.abspath(__file__))
-spec_ = importlib.util.spec_from_file_location("referee10", os.path.join(here, "..", "field10", "referee.py"))
-R = importlib.util.module_from_spec(spec_); spec_.loader.exec_module(R)
-m = 2500 * 4 / 3 * math.pi * 0.002 ** 3
-spec = {"engine": "lammps", "lines": ["pair_style granular",
-        "pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"]}
-chk = {"t1": 1, "t2": 1, "r1": 0.002, "m1": m, "r2": 0.002, "m2": m}
-for dt in map(float, sys.argv[1:]):
-    e, n, sep = R._lammps_run(spec, chk, 1.0, dt, 100000)
-    print(f"dt {dt:g}: eps {e:.6f} after {n} steps (separated: {sep})")
+"""Field round 21: eps of one head-on collision in LAMMPS at given time steps (the tool: tests/fieldkit/dtcheck.py).
+usage: python dtcheck21.py DT [DT ...]"""
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import dtcheck  # noqa: E402
+
+dtcheck.main(sys.argv[1:])

@@ -5,38 +5,14 @@ f* fixes beside the contact, u* units/2d/time step, k* shell/escape (files outsi
 d* data files and restart round trips, N* LIGGGHTS. Each deck's first comment says what it tries and what the engine
 does (PROBE lines print the engine's own values). usage: python make_decks21.py [NAME ...]"""
 import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the helpers rounds 21-27 share)
+from fieldkit.decks import (ATOMS, BASE, DECKS, E3, E3b, FLOOR, G1, GRAV, HERTZ, HK, HM, HOOKE, K, L, LB,  # noqa: E402,F401
+                            LRUN, MAT3, PRB, RUN, TAIL, TL, TWO, WALL3, deck, head, hk, lhead)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-TL = "tangential linear_nohistory 1 0.3"
-K = f"damping mass_velocity {TL}"
-HK = f"hooke 2000 3000 {K}"
-HM = f"hertz/material 1e7 1.4e7 0.3 damping viscoelastic {TL}"
-
-
-def hk(k, gam=3000):
-    return f"hooke {k} {gam} {K}"
-
-
-def head(ntypes=2, box="0 0.04 0 0.04 0 0.1", bnd="p p f", style="sphere 1", units="si", dim=3, extra=""):
-    return (f"units {units}\n" + (f"dimension {dim}\n" if dim != 3 else "") + f"atom_style {style}\nboundary {bnd}\n"
-            f"comm_modify vel yes\n{extra}region box block {box} units box\ncreate_box {ntypes} box\n")
-
-
-GRAV = "fix grav all gravity 9.81 vector 0 0 -1\n"
-FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
-TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
-TWO = ("create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.01\n"
-       "set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n")
-G1 = lambda model: "pair_style granular\npair_coeff * * " + model + "\n"
-BASE = lambda model=HK, nt=2: head(nt) + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
-PRB = 'print "PROBE kn ${kn}"\n'
-DECKS = {}
-
-
-def deck(name, text, g="0.1 1", data=None, liggghts=False, deckname="in.deck"):
-    DECKS[name] = (text, g, data or {}, liggghts, deckname)
-
+kit.D = D
 
 # ================================================================ a*: comments, continuation, UTF-8, quoting
 deck("a01_comment_ending_amp_swallows_next", "# a comment line ending in & joins the next line to it: LAMMPS never runs the pair_coeff kn 9000 below (kn 2000 stays)\n"
@@ -438,26 +414,6 @@ deck("d10_write_data_pair_ij_read_back", "# write_data then clear and read_data:
      + BASE() + TWO + "pair_coeff * * " + hk(7000) + "\nwrite_data state.data\nclear\nunits si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data state.data\n" + G1(HK) + GRAV + FLOOR + TAIL + "run 100\n", g=1)
 
 # ================================================================ N*: LIGGGHTS
-def lhead(nt=3, extra="", units="si", box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f"):
-    return (f"atom_style granular\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
-            f"region reg block {box} units box\ncreate_box {nt} reg\nneighbor 0.002 bin\nneigh_modify delay 0\n{extra}")
-
-
-MAT3 = ("fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3\n"
-        "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5\n")
-E3 = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
-HERTZ = "pair_style gran model hertz tangential history\npair_coeff * *\n"
-HOOKE = "pair_style gran model hooke tangential history\npair_coeff * *\n"
-WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\n"
-ATOMS = "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\n"
-LRUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
-RUN = LRUN + "run 1000\n"
-LB = lambda: lhead() + MAT3 + E3 + HERTZ + WALL3
-E3b = lambda e: "fix m3 all property/global coefficientRestitution peratomtypepair 3 " + " ".join([str(e)] * 9) + "\n"
-
-
-def L(name, text, **kw):
-    deck(name, text, liggghts=True, **kw)
 
 
 L("N01_settings_in_include_only", "# all LIGGGHTS markers (atom_style granular, property/global, pair_style gran model) in an include: the main file looks like LAMMPS; LIGGGHTS runs it (e 0.6/0.5/0.4)\n"
@@ -562,21 +518,5 @@ L("N42_run_every_if_quit_continued_liggghts", "# LIGGGHTS, R01's form: run 2000 
   + LB() + ATOMS + LRUN + "variable s equal step\nrun 2000 every 1000 &\n    \"if '${s} >= 1000' then &\n        'print PROBE-done' &\n        'quit'\"\n" + E3b(0.2) + "run 100\n")
 
 
-def write(name):
-    text, g, data, lig, deckname = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, deckname), "w").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    open(os.path.join(d, "DECK"), "w").write(deckname + "\n")
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
-        open(os.path.join(d, f), "w").write(t)
-
-
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.main(sys.argv[1:])

@@ -1,48 +1,7 @@
-"""Field round 21: the eps LAMMPS itself gives a head-on pair with the contact settings a deck leaves it holding: the deck
-is run to its end in a scratch copy (nested so ../ stays inside), then its atoms are deleted, two spheres of the types
-asked for are made far above any wall, touching, at relative speed g along x, and run at dt = 1e-8 s until they part
-(gravity moves both alike; fixes of the deck stay). No import from the project: the engine decides. Resolution: at
-dt = 1e-8 s a 4 mm hooke contact (~5e-4 s) lasts ~5e4 steps, so the step error in eps is below 1e-4.
+"""Field round 21: the eps LAMMPS gives a head-on pair with the contact settings a deck leaves it holding (the tool: tests/fieldkit/probe.py, which says how it works).
 usage: python probe21.py DECKDIR T1 T2 D1 RHO1 D2 RHO2 [G] [Z] [XC] [DT]"""
-import os, shutil, subprocess, sys, tempfile
-d, t1, t2, d1, r1, d2, r2 = sys.argv[1:8]
-g = float(sys.argv[8]) if len(sys.argv) > 8 else 1.0
-z = sys.argv[9] if len(sys.argv) > 9 else "0.05"
-xc = float(sys.argv[10]) if len(sys.argv) > 10 else 0.02
-dt = sys.argv[11] if len(sys.argv) > 11 else "1e-8"
-deck = open(os.path.join(d, "DECK")).read().strip()
-top = tempfile.mkdtemp(prefix="field21-probe."); tmp = os.path.join(top, "a", "b", "c")
-shutil.copytree(d, tmp)
-x1, x2 = -float(d1) / 2, float(d2) / 2
-tail = f"""
-delete_atoms group all
-create_atoms {t1} single {xc + x1} {xc} {z} units box
-create_atoms {t2} single {xc + x2} {xc} {z} units box
-variable f21n equal count(all)
-variable f21i1 equal $(v_f21n-1)
-variable f21i2 equal $(v_f21n)
-group f21a1 id ${{f21i1}}
-group f21a2 id ${{f21i2}}
-set group f21a1 diameter {d1} density {r1}
-set group f21a2 diameter {d2} density {r2}
-variable f21m1 equal mass(f21a1)
-variable f21m2 equal mass(f21a2)
-velocity all set 0 0 0
-velocity f21a1 set $({g}*v_f21m2/(v_f21m1+v_f21m2)) 0 0
-velocity f21a2 set $(-{g}*v_f21m1/(v_f21m1+v_f21m2)) 0 0
-variable f21d equal xcm(f21a2,x)-xcm(f21a1,x)-({float(d1) / 2 + float(d2) / 2})
-variable f21s equal (v_f21d>0)&&(step>10)
-fix f21h all halt 1 v_f21s == 1 error continue
-timestep {dt}
-thermo 0
-run 20000000
-print "PROBE21 eps $((vcm(f21a2,x)-vcm(f21a1,x))/{g}:%.6f) steps $(step) m $(v_f21m1) $(v_f21m2)"
-"""
-txt = open(os.path.join(tmp, deck)).read()
-open(os.path.join(tmp, deck), "w").write(txt + tail)
-if os.path.exists(os.path.join(d, "LIGGGHTS")):
-    sys.exit("LAMMPS only")
-p = subprocess.run(["lmp", "-in", deck, "-log", "none"], cwd=tmp, capture_output=True, text=True)
-out = [l for l in p.stdout.splitlines() if l.startswith("PROBE21") or "ERROR" in l]
-print(os.path.basename(d.rstrip("/")), t1, t2, *out)
-shutil.rmtree(top)
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import probe  # noqa: E402
+
+probe.pair(sys.argv[1:], round=21, var="f21", tag="PROBE21", steps="20000000")

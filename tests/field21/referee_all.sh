@@ -1,7 +1,4 @@
 #!/bin/sh
-# Field round 21: run round 13's referee over deck folders that have a spec.json, one at a time, niced
-# usage (from the worktree): sh tests/field21/referee_all.sh DECKDIR ...
-. tests/field21/env.sh
-for d in "$@"; do
-  echo "### $d"; nice -n 10 python tests/field21/referee21.py "$d" 2>&1 | tail -12
-done
+# Field round 21: run this round's copy of round 13's referee over deck folders that have a spec.json, one at a time, niced
+# (tests/fieldkit/referee_all.sh). usage (from the worktree): sh tests/field21/referee_all.sh DECKDIR ...
+REFEREE=tests/field21/referee21.py exec sh tests/fieldkit/referee_all.sh "$@"

@@ -1,6 +1,9 @@
 """Field round 22: the outcome of each deck folder (by the prefix of its name), checked to cover every folder once.
 usage: python classify22.py   (prints the table rows for FINDINGS.md)"""
-import os
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import classify  # noqa: E402
+
 C = {
  "correct, engine-checked (state22: the engine's atoms at the deck's end; probe22: head-on pair at dt 1e-8 s; abs(audit - engine) <= 2e-5)":
     "t19 t23 t24 t25 t21 q01 q04 q05 q06 q08 q12 q14 q17 x07 x10 x11 w01 w07 w09 y03 y04 y06 y07 y08 y10 y12 z01 z02 z04 z05 t14 t15 t17 t20 t28 t29 t32 t33 x08 x09 x12 v02 z07",
@@ -20,16 +23,4 @@ C = {
  "fair refusal (run ... every with commands; or the engine itself stops on the deck)":
     "t02 t06 t07 t35 t36 x05 t04 t09 t22 t26 t27 q10 q16 N02 N14 w03",
 }
-folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
-seen = {}
-for cat, names in C.items():
-    for n in names.split():
-        hits = [f for f in folders if f.split("_")[0] == n]
-        assert len(hits) == 1, (n, hits)
-        assert hits[0] not in seen, (n, seen.get(hits[0]))
-        seen[hits[0]] = cat
-missing = [f for f in folders if f not in seen]
-assert not missing, missing
-for cat, names in C.items():
-    print(f"| {cat} | {len(names.split())} | {names} |")
-print(f"| total | {len(folders)} | |")
+classify.by_prefix(C, os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks"))  # the check and the table: tests/fieldkit/classify.py

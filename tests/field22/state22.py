@@ -1,17 +1,7 @@
-"""Field round 22: the atoms LAMMPS holds at a deck's end (id type radius mass density), the deck run to its end in a
-scratch copy with a loop of prints appended. No import from the project. usage: python state22.py DECKDIR"""
-import os, shutil, subprocess, sys, tempfile
-d = sys.argv[1]
-deck = open(os.path.join(d, "DECK")).read().strip()
-top = tempfile.mkdtemp(prefix="field22-state."); tmp = os.path.join(top, "a", "b", "c")
-shutil.copytree(d, tmp)
-tail = "\nwrite_dump all custom f22state.txt id type radius mass z modify sort id\n"
-open(os.path.join(tmp, deck), "a").write(tail)
-p = subprocess.run(["lmp", "-in", deck, "-log", "none"], cwd=tmp, capture_output=True, text=True)
-import math
-rows = []
-if os.path.exists(os.path.join(tmp, "f22state.txt")):
-    for l in open(os.path.join(tmp, "f22state.txt")).read().split("ITEM: ATOMS")[1].splitlines()[1:]:
-        i, ty, r, m, z = l.split(); rows.append(f"STATE22 id {i} type {ty} radius {r} mass {m} rho {float(m)/(4/3*math.pi*float(r)**3):.6g} z {z}")
-print(os.path.basename(d.rstrip("/")), *rows[:6], *[l for l in p.stdout.splitlines() if "ERROR" in l][:2], sep="\n  ")
-shutil.rmtree(top)
+"""Field round 22: the atoms LAMMPS holds at a deck's end (the tool: tests/fieldkit/state.py, which says how it works).
+usage: python state22.py DECKDIR"""
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import state  # noqa: E402
+
+state.main(sys.argv[1:], round=22, var="f22", tag="STATE22")

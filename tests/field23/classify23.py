@@ -1,6 +1,9 @@
 """Field round 23: the outcome of each deck folder (by the prefix of its name), checked to cover every folder once.
 usage: python classify23.py   (prints the table rows for FINDINGS.md)"""
-import os
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import classify  # noqa: E402
+
 C = {
  "correct, engine-checked (LAMMPS: referee23/probe23 head-on pairs of the engine's end-state sizes at dt 1e-8 s, wprobe23 for walls where named in FINDINGS; abs(audit - engine) <= 2e-5; pairs the audit leaves out as excluded measured -1 = no contact)":
     "R01 R02 R03 R06 R07 R08 R09 R10 R13 R14 R16 R18 a01 a02 a03 a04 a05 a06 a07 a08 a09 a10 a11 a12 a13 b02 b04 b05 b06 b08 b09 "
@@ -37,16 +40,4 @@ C = {
  "fair refusal (the engine itself stops on the deck; or the contact is not mapped: dmt/jkr with cohesion, hybrid/scaled, hybrid/overlay; or an earlier round's deliberate refusal: timer timeout 0, random() draws, a lone CR; d24: coeff_restitution 0, LAMMPS' positions become NaN)":
     "L06 L11 L12 L21 L23 L26 L30 L32 b01 b03 b07 d06 d07 d25 d26 e17 e18 f10 h12 k07 k14 n05 n11 n15 p04 r05 r10 r11 r21 v01 v15 v17 v20 w07 n09 n19 d29 d30 n17 n18 R15 e09 e12 d24 Q11 Q12 Q18 Q19 Q20 Q22 Q23 L48 Q33 k21 k22 k23",
 }
-folders = sorted(os.listdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks")))
-seen = {}
-for cat, names in C.items():
-    for n in names.split():
-        hits = [f for f in folders if f.split("_")[0] == n]
-        assert len(hits) == 1, (n, hits)
-        assert hits[0] not in seen, (n, seen.get(hits[0]))
-        seen[hits[0]] = cat
-missing = [f for f in folders if f not in seen]
-assert not missing, missing
-for cat, names in C.items():
-    print(f"| {cat} | {len(names.split())} | {names} |")
-print(f"| total | {len(folders)} | |")
+classify.by_prefix(C, os.path.join(os.path.dirname(os.path.abspath(__file__)), "decks"))  # the check and the table: tests/fieldkit/classify.py

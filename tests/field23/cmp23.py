@@ -1,14 +1,7 @@
-"""Field round 23: the referee lines (referee23.py output) where the engine's eps and the audit's differ by more than 2e-5
-(or either is missing). usage: python cmp23.py referee*.log"""
-import re, sys
-for f in sys.argv[1:]:
-    for l in open(f):
-        m = re.match(r"(\S+) (\d) (\d) PROBE23 eps (\S+) .*\| audit (\S+)", l)
-        if not m:
-            print("?", l.strip()[:220]); continue
-        n, t, u, e, a = m.groups()
-        try:
-            ok = abs(float(e) - float(a)) <= 2e-5
-        except ValueError:
-            ok = False
-        print(("ok  " if ok else "DIFF"), n, t, u, "engine", e, "audit", a)
+"""Field round 23: the referee23.py lines where the engine's eps and the audit's differ by more than 2e-5 (the tool: tests/fieldkit/cmp.py, which says how it works).
+usage: python cmp23.py referee*.log"""
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import cmp  # noqa: E402
+
+cmp.main(sys.argv[1:], tag="PROBE23")

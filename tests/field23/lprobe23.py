@@ -1,34 +1,7 @@
-"""Field round 23: the eps LIGGGHTS itself gives a head-on pair with the contact settings a deck leaves it holding: the
-deck run to its end in a scratch copy (byte for byte), its atoms deleted, two spheres made touching far above the walls
-at relative speed G along x, run at dt 1e-7 s for 20000 steps (they part long before), eps = (vx2 - vx1)/G.
-Needs `atom_modify map array` in the deck. No import from the project. usage: python lprobe23.py DECKDIR T1 T2 D1 RHO1 D2 RHO2 [G] [Z]"""
-import os, shutil, subprocess, sys, tempfile
-d, t1, t2, d1, r1, d2, r2 = sys.argv[1:8]
-g = float(sys.argv[8]) if len(sys.argv) > 8 else 1.0
-z = sys.argv[9] if len(sys.argv) > 9 else "0.1"
-deck = open(os.path.join(d, "DECK")).read().strip()
-top = tempfile.mkdtemp(prefix="field23-lprobe."); tmp = os.path.join(top, "a", "b", "c")
-shutil.copytree(d, tmp)
-m1 = float(r1) * float(d1) ** 3; m2 = float(r2) * float(d2) ** 3
-v1, v2 = g * m2 / (m1 + m2), -g * m1 / (m1 + m2)
-tail = f"""
-delete_atoms group all
-create_atoms {t1} single {-float(d1) / 2} 0 {z} units box
-create_atoms {t2} single {float(d2) / 2} 0 {z} units box
-group f23a1 id 1
-group f23a2 id 2
-set group f23a1 diameter {d1} density {r1}
-set group f23a2 diameter {d2} density {r2}
-velocity f23a1 set {v1} 0 0
-velocity f23a2 set {v2} 0 0
-timestep 1e-7
-thermo 0
-run 20000
-variable f23e equal (vx[2]-vx[1])/{g}
-print "LPROBE23 eps ${{f23e}}"
-"""
-txt = open(os.path.join(tmp, deck), newline="", encoding="latin-1").read()
-open(os.path.join(tmp, deck), "w", newline="", encoding="latin-1").write(txt + tail)
-p = subprocess.run(["liggghts", "-in", deck, "-log", "none"], cwd=tmp, capture_output=True, text=True, errors="replace")
-print(os.path.basename(d.rstrip("/")), t1, t2, *[l for l in p.stdout.splitlines() if l.startswith("LPROBE23") or "ERROR" in l][:3])
-shutil.rmtree(top)
+"""Field round 23: the eps LIGGGHTS gives a head-on pair with the contact settings a deck leaves it holding (the tool: tests/fieldkit/lprobe.py, which says how it works).
+usage: python lprobe23.py DECKDIR T1 T2 D1 RHO1 D2 RHO2 [G] [Z]"""
+import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import lprobe  # noqa: E402
+
+lprobe.pair(sys.argv[1:], round=23, var="f23", tag="LPROBE23")

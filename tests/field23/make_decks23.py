@@ -3,66 +3,19 @@ Prefixes: a* labelmap, r* read_data/read_restart, m* molecule templates, p* pour
 u* units, d* damping models and older pair styles, n* pairs that cannot meet, w* walls, v* variable styles, R* run forms,
 L* LIGGGHTS, e* re-checks of earlier rounds.  Each deck first comment says what it tries. usage: python make_decks23.py [NAME ...]"""
 import os, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import decks as kit  # noqa: E402  (the helpers rounds 21-27 share; round 23 wrote them)
+from fieldkit.decks import (ATOMS, BASE, CGS_HK, CGS_HM, DECKS, E3, E3b, FLOOR, G1, GRAV, HERTZ, HK, HM, HOOKE, HS, K, L, LB,  # noqa: E402,F401
+                            LRUN, MAT3, MOL, PRB, PTS, RUN, RUN1, TAIL, TL, TWO, WALL3, deck, head, hk, lhead, mass, ubase)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
-TL = "tangential linear_nohistory 1 0.3"
-K = f"damping mass_velocity {TL}"
-HK = f"hooke 2000 3000 {K}"
-HM = f"hertz/material 1e7 1.4e7 0.3 damping viscoelastic {TL}"
-
-
-def hk(k, gam=3000):
-    return f"hooke {k} {gam} {K}"
-
-
-def head(ntypes=2, box="0 0.04 0 0.04 0 0.1", bnd="p p f", style="sphere 1", units="si", dim=3, extra=""):
-    return (f"units {units}\n" + (f"dimension {dim}\n" if dim != 3 else "") + f"atom_style {style}\nboundary {bnd}\n"
-            f"comm_modify vel yes\n{extra}region box block {box} units box\ncreate_box {ntypes} box\n")
-
-
-GRAV = "fix grav all gravity 9.81 vector 0 0 -1\n"
-FLOOR = f"fix floor all wall/gran granular {HK} zplane 0 NULL\n"
-TAIL = "fix integ all nve/sphere\ntimestep 1e-5\n"
-TWO = ("create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.01\n"
-       "set type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 2500\n")
-G1 = lambda model: "pair_style granular\npair_coeff * * " + model + "\n"
-BASE = lambda model=HK, nt=2: head(nt) + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
-PRB = 'print "PROBE kn ${kn}"\n'
-DECKS = {}
-
-
-def deck(name, text, g="0.1 1", data=None, liggghts=False, deckname="in.deck"):
-    DECKS[name] = (text, g, data or {}, liggghts, deckname)
-
-
-def lhead(nt=3, extra="", units="si", box="-0.05 0.05 -0.05 0.05 -0.01 0.15", bnd="f f f"):
-    return (f"atom_style granular\natom_modify map array\nboundary {bnd}\nnewton off\ncommunicate single vel yes\nunits {units}\n"
-            f"region reg block {box} units box\ncreate_box {nt} reg\nneighbor 0.002 bin\nneigh_modify delay 0\n{extra}")
-
-
-MAT3 = ("fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3\n"
-        "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5\n")
-E3 = "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
-HERTZ = "pair_style gran model hertz tangential history\npair_coeff * *\n"
-HOOKE = "pair_style gran model hooke tangential history\npair_coeff * *\n"
-WALL3 = "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\n"
-ATOMS = "create_atoms 1 single 0.01 0 0.01 units box\ncreate_atoms 2 single -0.01 0 0.01 units box\nset type 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 1500\n"
-LRUN = "timestep 1e-5\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
-RUN = LRUN + "run 1000\n"
-LB = lambda: lhead() + MAT3 + E3 + HERTZ + WALL3
-E3b = lambda e: "fix m3 all property/global coefficientRestitution peratomtypepair 3 " + " ".join([str(e)] * 9) + "\n"
-
-
-def L(name, text, **kw):
-    deck(name, text, liggghts=True, **kw)
+kit.D = D
 
 
 # ==== decks (field round 23): a* labelmap, r* read_data/read_restart, m* molecule templates, p* fix pour/deposit ranges,
 # b* replicate/change_box/displace/delete_atoms, u* units, d* damping models and older pair styles, n* exclusions,
 # w* walls, v* variable styles, R* run forms/time step, L* LIGGGHTS, e* re-checks of earlier rounds' classes
-HM = "hertz/material 1e7 1.4e7 0.3 damping viscoelastic " + TL  # E, eta_n0, nu (round 22's)
-RUN1 = "run 100\n"
 SPH = lambda d, rho, x=0.02, y=0.02, z=0.01, t=1: f"create_atoms {t} single {x} {y} {z}\n"
 
 def base2(model=HK, nt=2, extra="", units="si", box="0 0.04 0 0.04 0 0.1"):
@@ -131,9 +84,6 @@ deck("r14_read_data_in_include_relative", "# read_data of a file in a subfolder 
      + "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\ninclude sub/rd.in\n" + G1(HK) + GRAV + FLOOR + TAIL + RUN1, g=1,
      data={"sub/rd.in": "read_data sub/d.data\n", "sub/d.data": DATA2.format(nt=2)})
 # ---------------------------------------------------------------- m*: molecule templates
-MOL = lambda t, d, m: f"# one sphere\n\n1 atoms\n\nCoords\n\n1 0 0 0\n\nTypes\n\n1 {t}\n\nDiameters\n\n1 {d}\n\nMasses\n\n1 {m}\n"
-import math
-mass = lambda d, rho: f"{rho * math.pi / 6 * d ** 3:.9g}"
 deck("m01_create_atoms_mol", "# molecule m1 (type 2, 6 mm, mass for rho 7800); create_atoms 0 single ... mol m1 1234\n"
      + BASE() + "create_atoms 1 single 0.02 0.02 0.01\nset type 1 diameter 0.004 density 2500\nmolecule m1 m1.mol\ncreate_atoms 0 single 0.01 0.01 0.01 mol m1 1234\n" + RUN1, g=1,
      data={"m1.mol": MOL(2, 0.006, mass(0.006, 7800))})
@@ -191,12 +141,6 @@ deck("b08_delete_atoms_mol", "# delete_atoms random count 1 no all NULL 4711 (on
 deck("b09_displace_rotate", "# displace_atoms all rotate about z (90 deg about 0.02 0.02): type 2 moves to x 0.03 y 0.01; set region\n"
      + BASE() + TWO + "displace_atoms all rotate 0.02 0.02 0 0 0 1 90 units box\nregion rt block 0.025 INF INF INF INF INF units box\nset region rt density 7800\n" + RUN1, g=1)
 # ---------------------------------------------------------------- u*: units
-CGS_HK = f"hooke 2e6 3000 {K}"
-CGS_HM = "hertz/material 1e8 1.4e5 0.3 damping viscoelastic " + TL  # 1e7 Pa, 1.4e7 1/(m s) in cgs
-def ubase(units, model, box, sizes, g="1"):
-    d1, d2, r1, r2 = sizes
-    return (head(2, box=box, units=units) + G1(model) + f"fix floor all wall/gran granular {model} zplane 0 NULL\nfix integ all nve/sphere\n"
-            + f"create_atoms 1 single {d1*5} {d1*5} {d1*2.5}\ncreate_atoms 2 single {d1*2.5} {d1*2.5} {d1*2.5}\nset type 1 diameter {d1} density {r1}\nset type 2 diameter {d2} density {r2}\n")
 deck("u01_cgs_hooke", "# units cgs: hooke kn 2e6 dyne/cm, gamma 3000 1/s, 0.4/0.6 cm rho 2.5 g/cm3 (= the si base)\n"
      + ubase("cgs", CGS_HK, "0 4 0 4 0 10", (0.4, 0.6, 2.5, 2.5)) + "timestep 1e-5\n" + RUN1, g=1)
 deck("u02_cgs_hertz_material", "# units cgs: hertz/material E 1e8 dyne/cm2 (1e7 Pa), viscoelastic: eps depends on speed: is g taken in m/s or cm/s?\n"
@@ -330,10 +274,6 @@ L("L02_e_from_variables", "# LIGGGHTS: e11 0.3, e12 0.45, e22 0.55 from equal va
   + lhead() + MAT3 + "variable e11 equal 0.3\nvariable e12 equal 0.45\nvariable e22 equal 0.3+0.25\n"
   + "fix m3 all property/global coefficientRestitution peratomtypepair 3 ${e11} ${e12} 0.7 ${e12} ${e22} 0.65 0.7 0.65 0.8\n" + HERTZ + WALL3 + ATOMS + RUN)
 L("L03_e_one", "# LIGGGHTS hertz e = 1.0 everywhere (engine says: no damping -> eps 1)\n" + lhead() + MAT3 + E3b(1.0) + HERTZ + WALL3 + ATOMS + RUN)
-PTS = ("fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\n"
-       "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1500 radius constant 0.003\n"
-       "fix pdd1 all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\n"
-       "region bc block -0.03 0.03 -0.03 0.03 0.02 0.1 units box\n")
 L("L04_insert_pack_discrete_two", "# LIGGGHTS insert/pack with particledistribution/discrete of two templates (type 1 2 mm r, type 2 3 mm r)\n"
   + LB() + PTS + LRUN + "fix ins all insert/pack seed 32452867 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 20 region bc\nrun 1000\n")
 L("L05_mesh_floor_type3", "# LIGGGHTS mesh/surface floor (STL) of type 3 with hooke: e 0.7 for 1 on wall\n"
@@ -576,9 +516,6 @@ rr("R12_fix_halt_soft", "fix halt ... error soft: run 1 ends early, the deck goe
 rr("R13_fix_halt_hard_never", "fix halt with a condition never true (error hard): the deck runs on (kn 5000)",
    "variable t equal time\nfix h all halt 10 v_t > 1.0 error hard\nrun 100\npair_coeff * * " + hk(5000) + "\nrun 100\n")
 
-HS = ("fix k1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\nfix k2 all property/global kt peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
-      "fix k3 all property/global gamman peratomtypepair 3 500 500 500 500 500 500 500 500 500\nfix k4 all property/global gammat peratomtypepair 3 500 500 500 500 500 500 500 500 500\n"
-      "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\nfix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n")
 L("L37_lost_then_new_atom_id_liggghts", "# LIGGGHTS hooke/stiffness (eps depends on masses): the type 2 sphere (id 2) thrown out of the f f f box in run 1 (LIGGGHTS loses it without error), create_atoms 2 (engine id 2 = max+1), set atom 2 density 500\n"
   + lhead() + MAT3 + HS + ATOMS + LRUN + "group up type 2\nvelocity up set 0 0 200\nrun 1000\ncreate_atoms 2 single -0.01 0 0.05 units box\nset atom 2 diameter 0.006 density 500\nrun 100\n")
 L("L38_lost_then_set_type_liggghts", "# LIGGGHTS hooke/stiffness: type 2 sphere lost in run 1; the only type 2 pairs left are none; then create_atoms 2 + set type 2 diameter 0.008\n"
@@ -719,24 +656,5 @@ L("L50_run_stop_before_end_liggghts", "# LIGGGHTS run 1000 start 0 stop 500 (eng
 L("L51_run_negative_liggghts", "# LIGGGHTS run -100 (engine says), e 0.3 before it\n" + LB() + ATOMS + LRUN + E3b(0.3) + "run -100\n")
 
 
-LATIN1 = set()  # written in Latin-1 bytes (an old editor)
-
-
-def write(name):
-    text, g, data, lig, deckname = DECKS[name]
-    d = os.path.join(D, name)
-    os.makedirs(d, exist_ok=True)
-    open(os.path.join(d, deckname), "w", encoding="latin-1" if name in LATIN1 else "utf-8").write(text)
-    open(os.path.join(d, "G"), "w").write(f"{g}\n")
-    open(os.path.join(d, "DECK"), "w").write(deckname + "\n")
-    if lig:
-        open(os.path.join(d, "LIGGGHTS"), "w").write("")
-    for f, t in data.items():
-        os.makedirs(os.path.dirname(os.path.join(d, f)), exist_ok=True)
-        open(os.path.join(d, f), "w").write(t)
-
-
 if __name__ == "__main__":
-    for n in (sys.argv[1:] or DECKS):
-        write(n)
-    print(len(DECKS), "decks")
+    kit.main(sys.argv[1:])

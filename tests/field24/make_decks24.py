@@ -1,15 +1,14 @@
 """Field round 24: write the decks as decks/NAME/in.deck with G, extra files and a LIGGGHTS marker, with round 23's
-helpers (make_decks23.py, imported). Prefixes: U units (speed unit line), S stops inside a run (f faces, lost atoms,
+helpers (now tests/fieldkit/decks.py). Prefixes: U units (speed unit line), S stops inside a run (f faces, lost atoms,
 runs the audit cannot make), H fix halt error soft, R run arguments after reset_timestep/read_restart/loops, E LIGGGHTS
 f faces and inserts, N lone types, W curved walls (zcylinder, region cylinder/sphere), G rigid bodies (clumps).
 usage: python make_decks24.py [NAME ...]"""
 import os, subprocess, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "field23"))
-import make_decks23 as m  # noqa: E402  (its own DECKS are dropped below)
+sys.path.insert(0, os.path.join(HERE, ".."))
+from fieldkit import decks as m  # noqa: E402  (round 23's helpers, tests/fieldkit/decks.py)
 
-m.DECKS.clear()
 m.D = os.path.join(HERE, "decks")
 deck, L, BASE, TWO, hk, K, TL, HK = m.deck, m.L, m.BASE, m.TWO, m.hk, m.K, m.TL, m.HK
 rr = lambda name, comment, lines, **kw: deck(name, "# " + comment + "\n" + BASE() + TWO + lines, g=1, **kw)

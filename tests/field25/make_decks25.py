@@ -1,16 +1,15 @@
 """Field round 25: write the decks as decks/NAME/in.deck with G, extra files and a LIGGGHTS marker, with round 23's
-helpers (make_decks23.py, imported). Prefixes: M multi-run decks the engine runs to the end (outputs, slow or
+helpers (now tests/fieldkit/decks.py). Prefixes: M multi-run decks the engine runs to the end (outputs, slow or
 file-writing fixes, pours across runs, run N every M, loops), I commands of a file an if includes (groups, regions,
 region walls, pours, change_box, labelmap, variables, nested ifs, includes by an if inside the included file, LIGGGHTS),
 X the engines' own example decks (copied by copy_examples below).
 usage: python make_decks25.py [NAME ...]"""
-import os, shutil, sys
+import os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "field23"))
-import make_decks23 as m  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, ".."))
+from fieldkit import decks as m  # noqa: E402  (round 23's helpers, tests/fieldkit/decks.py)
 
-m.DECKS.clear()
 m.D = os.path.join(HERE, "decks")
 deck, L, BASE, TWO, hk, HK = m.deck, m.L, m.BASE, m.TWO, m.hk, m.HK
 rr = lambda name, comment, lines, **kw: deck(name, "# " + comment + "\n" + BASE() + TWO + lines, g=1, **kw)
@@ -233,33 +232,16 @@ L("M67_liggghts_loop_if_e", "# LIGGGHTS: loop of 3 runs; pass 2 sets e 0.3 by an
 
 
 def copy_examples():
-    ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
-          ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
-          ("X03_lammps_pour_flatwall", "/usr/share/lammps/examples/granular", "in.pour.flatwall", False),
-          ("X04_lammps_granregion_box", "/usr/share/lammps/examples/granregion", "in.granregion.box", False),
-          ("X05_lammps_granregion_funnel", "/usr/share/lammps/examples/granregion", "in.granregion.funnel", False),
-          ("X06_lammps_granregion_mixer", "/usr/share/lammps/examples/granregion", "in.granregion.mixer", False)]
-    T = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
-    for t, f in (("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
-                 ("hysteresis", "in.hysteresis"), ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"),
-                 ("insert_stream", "in.insert_stream_reset_timestep"), ("cohesion", "in.noCohesion"), ("contactModels", "in.oldModels"),
-                 ("hysteresis", "in.noHysteresis"), ("movingMeshGran", "in.movingMeshGran"), ("chute_wear", "in.chute_wear")):
-        ex.append(("X_lig_" + t + "_" + f[3:], os.path.join(T, t), f, True))
-    for name, src, f, lig in ex:
-        d = os.path.join(m.D, name)
-        if os.path.exists(d):
-            continue
-        if lig:
-            shutil.copytree(src, d)
-            open(os.path.join(d, "LIGGGHTS"), "w").write("")
-        else:
-            os.makedirs(d)
-            shutil.copy(os.path.join(src, f), d)
-            for extra in os.listdir(src):
-                if extra.startswith("molecule") or extra.endswith(".mol"):
-                    shutil.copy(os.path.join(src, extra), d)
-        open(os.path.join(d, "DECK"), "w").write(f + "\n")
-        open(os.path.join(d, "G"), "w").write("1\n")
+    m.copy_examples([("X01_lammps_pour_drum", "granular", "in.pour.drum"), ("X02_lammps_pour", "pour", "in.pour"),
+                     ("X03_lammps_pour_flatwall", "granular", "in.pour.flatwall"),
+                     ("X04_lammps_granregion_box", "granregion", "in.granregion.box"),
+                     ("X05_lammps_granregion_funnel", "granregion", "in.granregion.funnel"),
+                     ("X06_lammps_granregion_mixer", "granregion", "in.granregion.mixer")],
+                    [("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
+                     ("hysteresis", "in.hysteresis"), ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"),
+                     ("insert_stream", "in.insert_stream_reset_timestep"), ("cohesion", "in.noCohesion"),
+                     ("contactModels", "in.oldModels"), ("hysteresis", "in.noHysteresis"),
+                     ("movingMeshGran", "in.movingMeshGran"), ("chute_wear", "in.chute_wear")])
 
 
 if __name__ == "__main__":

@@ -2,7 +2,9 @@
 by hand from the engine's own values: referee logs, ENGINE.txt, state26); folders not in J whose every referee line
 agrees within 2.5e-5 (LAMMPS probe26 at dt 1e-8 s) or 1e-4 (LIGGGHTS lprobe26/lprobe26s at dt 1e-7 s, its step error)
 are 'correct, engine-checked'. usage: python classify26.py"""
-import collections, glob, os, re
+import collections, glob, os, re, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import classify, referee  # noqa: E402
 H = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(H, "decks")
 ok, bad = collections.defaultdict(int), collections.defaultdict(int)
@@ -18,27 +20,15 @@ for f in glob.glob(os.path.join(H, "*.log")):
                 bad[n] += 1
         elif lig:
             n, t, u, e = lig.groups()
-            rows, name = {}, None
-            for r in open(os.path.join(D, n, "audit.out")):
-                if r.startswith("# stage"):
-                    rows = {}
-                elif not r.startswith(" "):
-                    name = r.split(":")[0].split(" [")[0]
-                elif r.split()[:2] == ["g", "1"]:
-                    rows[name] = r.split()[3]
+            rows = referee.audit_rows(os.path.join(D, n, "audit.out"))
             try:
                 (ok if abs(float(e) - float(rows.get(f"types {t} {u}"))) <= 1e-4 else bad)[n] += 1
             except (TypeError, ValueError):
                 bad[n] += 1
-J = {}
-for line in open(os.path.join(H, "judged26.txt")):
-    if line.strip() and not line.startswith("#"):
-        cls, names = line.split(" => ", 1)
-        for n in names.split():
-            J[n] = cls.strip()
+J = classify.judged(os.path.join(H, "judged26.txt"))
 table = collections.defaultdict(list)
 for n in sorted(os.listdir(D)):
-    k = n if n.startswith("X_lig") else n.split("_")[0]
+    k = classify.key(n)
     if k in J:
         table[J[k]].append(n)
     elif ok[n] and not bad[n]:  # every referee line of the deck agrees

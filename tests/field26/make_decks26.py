@@ -1,16 +1,15 @@
 """Field round 26: write the decks as decks/NAME/in.deck with G, extra files and a LIGGGHTS marker, with round 23's
-helpers (make_decks23.py, imported). Classes of all earlier rounds mixed in new combinations. Prefixes: F formats
+helpers (now tests/fieldkit/decks.py). Classes of all earlier rounds mixed in new combinations. Prefixes: F formats
 $(expr:%fmt) feeding ifs/includes/loops, T type ranges and labels with hybrid, S set order and size distributions,
 W walls, U units other than si, D time step, K fixes that change eps, C control flow, V variable styles, R restyles
 and clear and files the deck writes, H runs the engine stops or ends, L LIGGGHTS, X engine examples, E public decks.
 usage: python make_decks26.py [NAME ...]"""
-import os, shutil, sys
+import os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "field23"))
-import make_decks23 as m  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, ".."))
+from fieldkit import decks as m  # noqa: E402  (round 23's helpers, tests/fieldkit/decks.py)
 
-m.DECKS.clear()
 m.D = os.path.join(HERE, "decks")
 deck, L, BASE, TWO, hk, HK, K, TL, head = m.deck, m.L, m.BASE, m.TWO, m.hk, m.HK, m.K, m.TL, m.head
 GRAV, FLOOR, TAIL = m.GRAV, m.FLOOR, m.TAIL
@@ -651,42 +650,23 @@ deck("CL28_clear_first_N19", "# N19 (lost ignore; fix deposit of 1 m default sph
 
 
 def copy_examples():
-    ex = [("X01_lammps_pour_drum", "/usr/share/lammps/examples/granular", "in.pour.drum", False),
-          ("X02_lammps_pour", "/usr/share/lammps/examples/pour", "in.pour", False),
-          ("X03_lammps_pour_2d", "/usr/share/lammps/examples/pour", "in.pour.2d", False),
-          ("X04_lammps_pour_2d_molecule", "/usr/share/lammps/examples/pour", "in.pour.2d.molecule", False),
-          ("X05_lammps_pour_flatwall", "/usr/share/lammps/examples/granular", "in.pour.flatwall", False),
-          ("X06_lammps_granregion_box", "/usr/share/lammps/examples/granregion", "in.granregion.box", False),
-          ("X07_lammps_granregion_funnel", "/usr/share/lammps/examples/granregion", "in.granregion.funnel", False),
-          ("X08_lammps_granregion_mixer", "/usr/share/lammps/examples/granregion", "in.granregion.mixer", False)]
-    T = "/usr/share/doc/liggghts/examples/LIGGGHTS/Tutorials_public"
-    for t, f in (("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
-                 ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"), ("cohesion", "in.noCohesion"),
-                 ("hysteresis", "in.noHysteresis"), ("movingMeshGran", "in.movingMeshGran"), ("chute_wear", "in.chute_wear"),
-                 ("meshGran", "in.meshGran"), ("heatTransfer_1", "in.heatGran"), ("heatTransfer_2", "in.heatGran"),
-                 ("hydrogel_multicontact", "in.hydrogel_default"), ("hydrogel_multicontact", "in.hydrogel_multicontact"),
-                 ("mesh_tet", "in.mesh_tet"), ("multisphere_stone_restitution", "in.multisphere"), ("superquadric", "in.particle_particle"),
-                 ("sph_1", "in.sph_1")):
-        ex.append(("X_lig_" + t + "_" + f[3:], os.path.join(T, t), f, True))
-    ex.append(("CL23_lammps_pour_example_clear_first", "/usr/share/lammps/examples/pour", "in.pour", False))  # in.pour with clear prepended below
-    for name, src, f, lig in ex:
-        d = os.path.join(m.D, name)
-        if os.path.exists(d):
-            continue
-        if lig:
-            shutil.copytree(src, d)
-            open(os.path.join(d, "LIGGGHTS"), "w").write("")
-        else:
-            os.makedirs(d)
-            shutil.copy(os.path.join(src, f), d)
-            for extra in os.listdir(src):
-                if extra.startswith("molecule") or extra.endswith(".mol"):
-                    shutil.copy(os.path.join(src, extra), d)
-        if name.startswith("CL23"):
-            txt = open(os.path.join(d, f)).read()
-            open(os.path.join(d, f), "w").write("clear\n" + txt)
-        open(os.path.join(d, "DECK"), "w").write(f + "\n")
-        open(os.path.join(d, "G"), "w").write("1\n")
+    m.copy_examples([("X01_lammps_pour_drum", "granular", "in.pour.drum"), ("X02_lammps_pour", "pour", "in.pour"),
+                     ("X03_lammps_pour_2d", "pour", "in.pour.2d"),
+                     ("X04_lammps_pour_2d_molecule", "pour", "in.pour.2d.molecule"),
+                     ("X05_lammps_pour_flatwall", "granular", "in.pour.flatwall"),
+                     ("X06_lammps_granregion_box", "granregion", "in.granregion.box"),
+                     ("X07_lammps_granregion_funnel", "granregion", "in.granregion.funnel"),
+                     ("X08_lammps_granregion_mixer", "granregion", "in.granregion.mixer"),
+                     ("CL23_lammps_pour_example_clear_first", "pour", "in.pour")],
+                    [("packing", "in.packing"), ("insert_stream", "in.insert_stream"), ("cohesion", "in.cohesion"),
+                     ("contactModels", "in.newModels"), ("conveyor", "in.conveyor"), ("cohesion", "in.noCohesion"),
+                     ("hysteresis", "in.noHysteresis"), ("movingMeshGran", "in.movingMeshGran"),
+                     ("chute_wear", "in.chute_wear"), ("meshGran", "in.meshGran"), ("heatTransfer_1", "in.heatGran"),
+                     ("heatTransfer_2", "in.heatGran"), ("hydrogel_multicontact", "in.hydrogel_default"),
+                     ("hydrogel_multicontact", "in.hydrogel_multicontact"), ("mesh_tet", "in.mesh_tet"),
+                     ("multisphere_stone_restitution", "in.multisphere"), ("superquadric", "in.particle_particle"),
+                     ("sph_1", "in.sph_1")],
+                    first={"CL23_lammps_pour_example_clear_first": "clear\n"})
 
 
 if __name__ == "__main__":

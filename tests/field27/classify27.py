@@ -1,13 +1,10 @@
 """Field round 27: the outcome table. judged27.txt (by hand, from the engine's own values) first; the rest from cmp27.out
 (the live pair measured in the deck as written agrees with the audit's last stage). usage: python classify27.py"""
-import collections, os, re
+import collections, os, re, sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from fieldkit import classify  # noqa: E402
 H = os.path.dirname(os.path.abspath(__file__)); D = os.path.join(H, "decks")
-J = {}
-for line in open(os.path.join(H, "judged27.txt")):
-    if line.strip() and not line.startswith("#"):
-        cls, names = line.rsplit(" => ", 1)
-        for n in names.split():
-            J[n] = cls.strip()
+J = classify.judged(os.path.join(H, "judged27.txt"))
 ok = set()
 for l in open(os.path.join(H, "cmp27.out")):
     p = l.split()
@@ -15,7 +12,7 @@ for l in open(os.path.join(H, "cmp27.out")):
         ok.add(p[0])
 table = collections.defaultdict(list)
 for n in sorted(os.listdir(D)):
-    k = n if n.startswith("X_lig") else n.split("_")[0]
+    k = classify.key(n)
     if k in J:
         table[J[k]].append(k)
     elif n in ok:

@@ -6,10 +6,9 @@ usage: python make_decks27.py [NAME ...]"""
 import os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "field23"))
-import make_decks23 as m  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, ".."))
+from fieldkit import decks as m  # noqa: E402  (round 23's helpers, tests/fieldkit/decks.py)
 
-m.DECKS.clear()
 m.D = os.path.join(HERE, "decks")
 deck, hk, HK, K, TL, head, GRAV = m.deck, m.hk, m.HK, m.K, m.TL, m.head, m.GRAV
 LIVE = {}
