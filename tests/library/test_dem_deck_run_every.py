@@ -104,8 +104,8 @@ def test_a_run_with_pre_no_keeps_the_old_coefficients_for_one_order_of_the_pair(
 @pytest.mark.dem
 @pytest.mark.parametrize("between, refused", [
     ("pair_coeff 1 2 {law}", True), ("pair_coeff * * {law}", True), ("pair_coeff 1 1 {law}", False),
-    ("set type 1 diameter 0.012", False), ("", False)],
-    ids=["1 2", "* *", "1 1", "a size", "nothing"])
+    ("set type 1 diameter 0.008", False), ("", False)],
+    ids=["1 2", "* *", "1 1", "a shrink", "nothing"])     # a growth: test_dem_deck_field28.py
 def test_a_run_with_pre_no_after_new_coefficients_of_two_types_is_refused(tmp_path, between, refused):
     law = LINE.split(None, 3)[3].replace("1000", "3000")
     deck = HEAD_ON.format(line=LINE) + "run 0\n" + between.format(law=law) + "\nrun 30000 pre no\n"

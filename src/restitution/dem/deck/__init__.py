@@ -838,7 +838,11 @@ _CONFINED = ("Read-only file system", "No space left on device")
 #: formula's value out of its domain (a count of atoms, an energy, 0), or no atom to act on (not a
 #: variable that does not exist, which the deck run by hand meets too)
 _RUN_STATE = re.compile(r"Divide by 0|Modulo 0|Sqrt of negative|Log of zero|Power by 0|no atoms|without atoms|"
-                        r"atoms existing")
+                        r"atoms existing|"
+                        # field round 28: a restart file a run writes (C03, R43), a crash on a value
+                        # the runs set (V23: a density 0 from the step), the atoms a run moves
+                        # out of a region deleted (L06): the engine runs each of these decks
+                        r"Cannot open restart file|ended without an error message|Atom types must start from 1")
 #: The fixes that make atoms as a run goes, which a pass whose runs are skipped never makes
 _INSERTING = re.compile(r"fix\s+\S+\s+\S+\s+(pour|deposit|insert/\S+)\b")
 

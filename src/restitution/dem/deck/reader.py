@@ -702,6 +702,12 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
             deck.skin = float(words[1])
         except ValueError:
             deck.skin = None
+        deck.neighbor_style = words[2] if len(words) > 2 else deck.neighbor_style
+    elif cmd == "boundary" and len(words) >= 4:
+        deck.periodic = any("p" in w for w in words[1:4])
+    elif cmd == "change_box" and "boundary" in words:
+        k = words.index("boundary")
+        deck.periodic = any("p" in w for w in words[k + 1:k + 4])
     elif cmd == "velocity" and len(words) >= 3:
         still = words[2] == "set" and all(w in ("0", "0.0", "NULL") for w in words[3:6]) and len(words) >= 6
         if not still:
@@ -1004,6 +1010,10 @@ def _where_the_run_left(split: list, placed: set, cmd) -> None:
             why = f"group {split[2]}, picked by where its atoms were after a run"
         elif any(v.startswith("v_") for _, v in sizing):
             why = next(f"{k} {v}, an atom-style variable that may read positions" for k, v in sizing if v.startswith("v_"))
+        elif drawn := [k for k, _ in sizing if k in _DRAWN]:
+            # field round 28, R22, R25: set group lv1 type/fraction 3 0.5 seed after a run retyped the
+            # atom in LAMMPS and not in the pass, or the other way, by the seed
+            why = f"{drawn[0]}, {_DRAWN[drawn[0]]}"
     elif split[0] == "delete_atoms" and len(split) > 2:
         if split[1] in ("region", "overlap", "porosity"):
             why = f"delete_atoms {split[1]}"
@@ -1109,6 +1119,7 @@ def set_up_key(deck: Deck) -> str:
     True
     """
     return repr((deck.code, deck.style, deck.model, deck.limit_force, deck.absolute_damping, deck.gran,
+                 deck.skin, deck.neighbor_style,
                  sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1] or _mixes(deck, k[0])),
                  sorted((k, repr(v)) for k, (_, v) in deck.props.items()),
                  [(w, t) for _, w, t in deck.walls], repr(deck.meshes), [w for _, w in deck.beside],
@@ -1132,14 +1143,35 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
     Refused in one line where such a setting changed; any other run records what its set-up read."""
     pre = [words[k + 1] for k in range(2, len(words) - 1) if words[k] == "pre" and "every" not in words[2:k]]
     key = set_up_key(deck)
+    radii = {t: {r for r, _ in sizes} for t, sizes in (deck.held or {}).items()}
     if pre[-1:] == ["no"] and deck.set_up is not None:
         if key != deck.set_up:
             raise DeckError(where, line, "pre no after a contact setting changed since the last run: the engine does "
                                          "not set this run up again, so the change acts in part or not at all (LAMMPS "
                                          "measured: a pair_coeff of types 1 2 acts on one order of the pair's atoms "
-                                         "only); not audited (remove pre no)")
+                                         "only; a neighbor skin is not read); not audited (remove pre no)")
+        if grown := _grown(deck, radii):
+            raise DeckError(where, line, f"pre no after atoms of type {grown} grew since the last run: the engine does "
+                                         "not build its neighbour lists again at this run, and lists built with the "
+                                         "smaller radii find a contact late in overlap or never until their next "
+                                         "build (LAMMPS measured: a 6 mm sphere set to 12 mm met its partner deep in "
+                                         "overlap, eps 0.84 for 0.41); not audited (remove pre no)")
         return
-    deck.set_up = key
+    deck.set_up, deck.set_up_radii = key, radii
+
+
+def _grown(deck: Deck, radii: dict) -> int | None:
+    """The first type whose atoms hold a radius (``radii``, type -> radii held now) larger than the
+    smallest it held at the last set-up and not one it held then (field round 28, Q01: ``set type 2
+    diameter`` up, then ``run pre no``: LAMMPS and LIGGGHTS kept the lists of the smaller spheres;
+    a shrink, Q19, keeps them finding every contact); sizes its pours make are not counted, as an
+    inserting fix has the lists built again itself."""
+    for t in sorted(radii):
+        before = deck.set_up_radii.get(t)
+        poured = {r for r, _ in deck.poured.get(t, ())}
+        if before and any(r > min(before) for r in radii[t] - before - poured):
+            return t
+    return None
 
 
 def contact_key(deck: Deck) -> str:
@@ -1180,10 +1212,19 @@ def contact_key(deck: Deck) -> str:
                        {g: deck.groups.get(g, "undefined") for _, _, g, _ in deck.movers.values()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
                        bool(deck.bonds), deck.special_lj, deck.dt_reset[1:],
+                       # where a cutoff may leave a pair out, the lists' reach is the run's (field round
+                       # 28, N19: a skin made small after the first run was audited with the first's)
+                       (deck.skin, deck.neighbor_style, deck.periodic) if _cut(deck) else None,
                        # a velocity given to atoms no fix moves is read by their contacts' damping (field
                        # round 17: a velocity command between two runs of one stage was not seen)
                        sorted({g for _, _, g in deck.velocities}
                               - {g for _, _, g, st in deck.movers.values() if not rigid(st)}))))
+
+
+def _cut(deck: Deck) -> bool:
+    """Whether a pair_style granular cutoff (global, or a pair's own) is set: the only case where the
+    neighbour lists' reach (skin, list style, periodic box) decides whether a pair meets."""
+    return deck.cutoff is not None or any("cutoff" in words for _, words in deck.coeffs.values())
 
 
 def _coarsest_dt(stage: Deck, deck: Deck) -> None:
@@ -1944,6 +1985,12 @@ _SET_VALUES = {"image": 3, "omega": 3, "angmom": 3, "dipole": 3, "quat": 4, "dip
 _RETYPE = ("type", "type/fraction", "type/ratio", "type/subset")
 #: set keywords that change an atom's size or type
 _SIZING_SET = frozenset({"diameter", "density", "density/disc", "mass", *_RETYPE})
+#: The set keywords that draw their atoms at random, and what the draw reads that a run changes
+#: (LAMMPS' set.cpp: type/fraction seeds each atom's draw with its coordinates; type/ratio and
+#: type/subset pick by the atoms' order, which the runs' sorting of atoms changes)
+_DRAWN = {"type/fraction": "whose draw LAMMPS seeds with each atom's position",
+          "type/ratio": "which draws from the atoms in the order the runs' sorting leaves them",
+          "type/subset": "which draws from the atoms in the order the runs' sorting leaves them"}
 
 
 def set_poured(deck: Deck, made: dict, words: list, loc, text: str) -> bool:

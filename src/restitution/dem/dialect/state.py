@@ -169,6 +169,10 @@ class Deck:
     dt_reset: tuple = ()                          # (loc, text, fix ID) of a fix dt/reset in force, else ()
     dt_reset_runs: int = 0                        # the runs recorded when that fix was defined
     skin: float | None = None                     # the neighbor command's skin, None where it has none
+    neighbor_style: str = "bin"                   # the neighbor command's style (bin, nsq, multi)
+    # whether the box is periodic in some direction (boundary's default p p p): ghost atoms across
+    # it reach only the lists' cutoff, whatever the list style
+    periodic: bool = True
     # neigh_modify's every, delay and check as set so far (meeting.late_speeds: the engine's defaults
     # where the deck sets none)
     neigh: dict = field(default_factory=dict)
@@ -239,6 +243,8 @@ class Deck:
     # what the engine's set-up of the last run that made one read (reader.set_up_key), None before
     # the first run: a run with pre no after a change of it is not set up again
     set_up: str | None = None
+    # type -> the radii its atoms held at that set-up, whose neighbour lists hold them till a rebuild
+    set_up_radii: dict = field(default_factory=dict)
     # type -> {charge q} its atoms hold, as the engine holds them at the deck's end (LAMMPS, an atom
     # style with a charge), where no command after the first run changes a charge; None: not known
     charges: dict | None = None

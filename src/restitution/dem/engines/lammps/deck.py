@@ -423,15 +423,22 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     pair = spheres(deck, i, j)
     cutoff = c.cutoff if c.cutoff is not None else deck.cutoff
     skin = deck.skin if deck.skin is not None else DEFAULT_SKIN.get(deck.units or "lj", 0.0)
-    if cutoff is not None and _largest_cutoff(deck) + skin < pair.R1 + pair.R2:
+    nsq = deck.neighbor_style == "nsq"
+    if cutoff is not None and _largest_cutoff(deck) + skin < pair.R1 + pair.R2 and (deck.periodic or not nsq):
         # LAMMPS' lists reach the largest cutoff and the skin, its bins perhaps further: spheres
         # that reach each other may first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005:
-        # eps 619 measured), later, or at first touch (field round 27, CU10, CU15)
+        # eps 619 measured), later, or at first touch (field round 27, CU10, CU15). Its nsq lists
+        # have no bins and take every pair within its radii and skin: at first touch in a box
+        # with no periodic boundary (field round 28, N01, N11, N14, N25), but across a periodic
+        # one the ghost atoms reach only the cutoff and skin (N02: met late, 1.904665)
+        how = ("its nsq list finds the pair at first touch inside the box, but across a periodic boundary its "
+               "ghost atoms reach only that far, so there it may find the pair late in overlap or never" if nsq
+               else "so whether it finds the pair at first touch, late in overlap or never depends on how it bins "
+                    "the atoms")
         raise PairNotMapped(loc, " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
                             f"cutoff {cutoff:g}: LAMMPS' neighbour lists reach the largest cutoff plus the skin "
                             f"({_largest_cutoff(deck) + skin:g}), short of the contact distance "
-                            f"{pair.R1 + pair.R2:g} (the sum of their radii), so whether it finds the pair at first "
-                            "touch, late in overlap or never depends on how it bins the atoms")
+                            f"{pair.R1 + pair.R2:g} (the sum of their radii); {how}")
     contact = lammps_contact(pair, **c.setting(stiffness))
     typed = c.args[1] if c.damping in E_DAMPINGS else None
     exact = None

@@ -1,0 +1,125 @@
+"""Field round 28's classes, each measured here in LAMMPS 22 Jul 2025 running the deck as written.
+
+Q: ``run N pre no`` after a sphere grew. LAMMPS does not build its neighbour lists again at such a
+run, so lists built with the smaller radii meet the pair late, deep in overlap (Q01: 0.841701 where
+the audit printed 0.414916). Such a run is now refused in one line, as a pre-no run after a changed
+coefficient is; a ``neighbor`` skin changed before it is refused too (Q46: not read by LAMMPS).
+N: where a pair_style granular cutoff may leave a pair out, the neighbour lists' reach (the largest
+cutoff plus the skin) is each run's own: a skin set after the first run was read as the first's
+(N19: a pair LAMMPS met 8.09 deep was printed as met at first touch; N15 the other way). A
+``neighbor ... nsq`` list has no bins: it takes every pair within the radii plus the skin, so in a
+box with no periodic boundary a small cutoff leaves no pair out (N01).
+R: ``set ... type/fraction`` after a run draws each atom with a seed made from its position, which
+the pass (its runs skipped) does not know (R22, R25: the other atom retyped); such a deck now has its
+runs made for real first."""
+
+import pytest
+
+from deck_cli import HEAD_ON, audit, lammps_separation_speed, needs_lammps, run
+
+LAW = "pair_coeff * * hooke 2000 300 damping mass_velocity tangential linear_nohistory 1 0.3"
+
+
+def _grown(pre: str) -> str:
+    """Two 1 cm spheres 15.5 mm apart (out of each other's lists: their radii and the 1 mm skin reach
+    11 mm), approaching at 1 m/s; after one step type 2 is made 2 cm wide, so they touch after a
+    further 0.5 mm, before either has moved the half skin that makes LAMMPS build its lists again."""
+    deck = HEAD_ON.format(line=LAW).replace("single -0.0051 0 0", "single -0.00775 0 0")
+    return deck.replace("single 0.0051 0 0", "single 0.00775 0 0") + \
+        f"run 1\nset type 2 diameter 0.02\nrun 40000 pre {pre}\n"
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_run_with_pre_no_after_a_sphere_grew_is_refused_as_lammps_meets_the_pair_late(tmp_path):
+    """With pre yes the audit's eps is LAMMPS'; with pre no LAMMPS' lists still hold the small
+    sphere and meet the pair deep in overlap: the audit refuses that run in one line."""
+    (tmp_path / "in.deck").write_text(_grown("yes"))
+    got, _ = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["pairs"] if r["types"] == [1, 2])
+    set_up = lammps_separation_speed(_grown("yes"), tmp_path)
+    assert abs(row["eps"][0] - set_up) < 1e-4, (row["eps"], set_up)
+    late = lammps_separation_speed(_grown("no"), tmp_path)
+    assert abs(late - set_up) > 0.05, (late, set_up)
+    (tmp_path / "in.deck").write_text(_grown("no"))
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert "pre no after atoms of type 2 grew since the last run" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_shrink_before_a_run_with_pre_no_is_audited(tmp_path):
+    """A sphere made smaller keeps every pair the lists held: LAMMPS meets it at first touch."""
+    deck = HEAD_ON.format(line=LAW) + "run 1\nset type 2 diameter 0.009\nrun 40000 pre no\n"
+    (tmp_path / "in.deck").write_text(deck)
+    got, _ = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-4, row["eps"]
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_skin_changed_before_a_run_with_pre_no_is_refused(tmp_path):
+    (tmp_path / "in.deck").write_text(HEAD_ON.format(line=LAW) + "run 1\nneighbor 0.005 bin\nrun 40000 pre no\n")
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and "pre no after a contact setting changed" in err, err
+
+
+def _cut(lines: str, boundary: str = "") -> str:
+    return HEAD_ON.format(line=LAW + " cutoff 0.001").replace("units si\n", f"units si\n{boundary}") + lines
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_each_run_reaches_as_far_as_its_own_skin(tmp_path):
+    """Cutoff 0.001 on 1 cm spheres: a skin of 0.01 reaches them (0.011), one of 0.001 does not
+    (0.002). Made small after the first run, the pair of the second is left out with the reach
+    that run has; made large, the second run's pair is met at first touch (LAMMPS' eps)."""
+    (tmp_path / "in.deck").write_text(_cut("neighbor 0.01 bin\nrun 1\nneighbor 0.001 bin\nrun 30000\n"))
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert [[1, 2] in [r["types"] for r in s["pairs"]] for s in got["stages"]] == [True, False], got["stages"]
+    assert "reach the largest cutoff plus the skin (0.002)" in err, err
+    deck = _cut("neighbor 0.001 bin\nrun 1\nneighbor 0.01 bin\nrun 30000\n")
+    (tmp_path / "in.deck").write_text(deck)
+    got, _ = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-4, row["eps"]
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_an_nsq_list_in_a_box_with_no_periodic_boundary_meets_the_pair_whatever_the_cutoff(tmp_path):
+    deck = _cut("neighbor 0.001 nsq\nrun 30000\n", boundary="boundary f f f\n")
+    (tmp_path / "in.deck").write_text(deck)
+    got, _ = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-4, row["eps"]
+    # across a periodic boundary its ghost atoms reach the cutoff and skin only: left out, and said
+    (tmp_path / "in.deck").write_text(_cut("neighbor 0.001 nsq\nrun 30000\n"))
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and "across a periodic boundary" in err, err      # no pair audited
+
+
+def _drawn(seed: int) -> str:
+    """Two spheres of type 1 meet in the second run; between the runs one of them may be drawn into
+    type 2 (a fraction of a half, by the seed), whose pair with type 1 is stiffer."""
+    deck = HEAD_ON.format(line=LAW).replace("create_atoms 2 single", "create_atoms 1 single")
+    deck = deck.replace("set type 2 diameter 0.01 density 2500\n", "")
+    return deck + (f"pair_coeff 1 2 hooke 8000 300 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+                   f"run 1000\nset group all type/fraction 2 0.5 {seed}\nrun 40000\n")
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("seed", [2, 5, 11])
+def test_a_type_fraction_after_a_run_retypes_the_atoms_lammps_retypes(tmp_path, seed):
+    """The audit's last stage holds the one pair LAMMPS' draw makes (a 1 2 pair under kn 8000 where
+    one sphere was drawn, 1 1 or 2 2 under kn 2000 where none or both were): its eps is the one
+    LAMMPS measures."""
+    deck = _drawn(seed)
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    measured = lammps_separation_speed(deck, tmp_path)
+    rows = [r for r in got["stages"][-1]["pairs"] if not r.get("lone")]    # not a type's one sphere with itself
+    assert len(rows) == 1 and abs(rows[0]["eps"][0] - measured) < 1e-4, (rows, measured, err)
