@@ -178,7 +178,23 @@ def test_a_like_pair_changed_before_pre_no_keeps_the_old_mix_and_is_refused(tmp_
     assert abs(lammps_separation_speed(changed + "run 30000\n", tmp_path) - old) > 1e-2
     (tmp_path / "in.deck").write_text(changed + "run 30000 pre no\n")
     status, out, err = run(tmp_path / "in.deck", "--g", "1")
-    assert status == 2 and out == "" and "pre no after a contact setting changed" in err, err
+    assert status == 2 and out == "" and "pre no after the coefficients of types 1 1 changed" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_like_pair_changed_before_pre_no_whose_mixed_partners_have_no_atom_is_audited(tmp_path):
+    """Field round 28, Q18, Q26: type 3 holds no atom and no fix makes one, so the pairs LAMMPS would
+    mix from its 3 3 coefficients never meet: a change of those before run N pre no changes nothing
+    that happens, and the deck is audited (its 1 2 pair as LAMMPS meets it)."""
+    own = LINE.split(None, 3)[3]
+    lines = "\n".join(f"pair_coeff {i} {j} {own}" for i, j in ((1, 1), (2, 2), (1, 2), (3, 3)))
+    deck = HEAD_ON.format(line=lines).replace("create_box 2 box", "create_box 3 box") + "run 0\n" + \
+        f"pair_coeff 3 3 {own.replace('1000', '3000')}\nrun 30000 pre no\n"
+    (tmp_path / "in.deck").write_text(deck)
+    got, _ = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-4, row["eps"]
 
 
 @needs_lammps

@@ -1099,8 +1099,8 @@ def set_up_key(deck: Deck) -> str:
     style, the coefficients of pairs of two types, the fixes (walls, material properties, what acts
     beside the contact), exclusions and movers; not the atoms' sizes, which it reads from the atoms
     at every step, nor LAMMPS' coefficients of a type with itself, which pair_coeff sets where the
-    forces read them (its set-up copies a pair i < j to j > i: measured, below) unless a pair of it
-    with another type is mixed from them.
+    forces read them (its set-up copies a pair i < j to j > i: measured, below), though a pair of
+    it with another type may be mixed from them (:func:`_not_set_up` checks those).
 
     Parameters
     ----------
@@ -1120,7 +1120,7 @@ def set_up_key(deck: Deck) -> str:
     """
     return repr((deck.code, deck.style, deck.model, deck.limit_force, deck.absolute_damping, deck.gran,
                  deck.skin, deck.neighbor_style,
-                 sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1] or _mixes(deck, k[0])),
+                 sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1]),
                  sorted((k, repr(v)) for k, (_, v) in deck.props.items()),
                  [(w, t) for _, w, t in deck.walls], repr(deck.meshes), [w for _, w in deck.beside],
                  repr(deck.others), repr(deck.idle), repr(deck.granular_of), [w for _, _, w in deck.excludes],
@@ -1129,9 +1129,17 @@ def set_up_key(deck: Deck) -> str:
 
 def _mixes(deck: Deck, t: int) -> bool:
     """Whether LAMMPS mixes a pair of type ``t`` with another from their own coefficients (no
-    pair_coeff sets it): it mixes them at the run's set-up (field round 27, P29: 1 1 made stiffer,
-    then run pre no: the 1 2 pair mixed from it kept the old law, 0.413435, not the audit's 0.543252)."""
-    return any((min(t, u), max(t, u)) not in deck.coeffs for u in range(1, deck.ntypes + 1) if u != t)
+    pair_coeff sets it) and both types may hold atoms in the run: it mixes them at the run's set-up
+    (field round 27, P29: 1 1 made stiffer, then run pre no: the 1 2 pair mixed from it kept the old
+    law, 0.413435, not the audit's 0.543252); a mixed pair of a type with no atom and no inserting
+    fix to make one never meets (round 28, Q18, Q26: refused though no such pair could happen)."""
+    inserting = [types for types in deck.inserts]
+    if deck.held is None or None in inserting:
+        live = set(range(1, deck.ntypes + 1))
+    else:
+        live = set(deck.held).union(*inserting)
+    return t in live and any((min(t, u), max(t, u)) not in deck.coeffs
+                             for u in range(1, deck.ntypes + 1) if u != t and u in live)
 
 
 def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
@@ -1150,6 +1158,13 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
                                          "not set this run up again, so the change acts in part or not at all (LAMMPS "
                                          "measured: a pair_coeff of types 1 2 acts on one order of the pair's atoms "
                                          "only; a neighbor skin is not read); not audited (remove pre no)")
+        own = {k[0]: tuple(w) for k, (_, w) in deck.coeffs.items() if k[0] == k[1]}
+        if mixed := [t for t in sorted(set(own) | set(deck.set_up_own)) if own.get(t) != deck.set_up_own.get(t)
+                     and _mixes(deck, t)]:
+            raise DeckError(where, line, f"pre no after the coefficients of types {mixed[0]} {mixed[0]} changed since "
+                                         "the last run, from which LAMMPS mixes a pair of that type with another at "
+                                         "a run's set-up: this run is not set up again, so the mixed pair keeps the "
+                                         "old law (LAMMPS measured); not audited (remove pre no)")
         if grown := _grown(deck, radii):
             raise DeckError(where, line, f"pre no after atoms of type {grown} grew since the last run: the engine does "
                                          "not build its neighbour lists again at this run, and lists built with the "
@@ -1158,6 +1173,7 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
                                          "overlap, eps 0.84 for 0.41); not audited (remove pre no)")
         return
     deck.set_up, deck.set_up_radii = key, radii
+    deck.set_up_own = {k[0]: tuple(w) for k, (_, w) in deck.coeffs.items() if k[0] == k[1]}
 
 
 def _grown(deck: Deck, radii: dict) -> int | None:

@@ -245,6 +245,9 @@ class Deck:
     set_up: str | None = None
     # type -> the radii its atoms held at that set-up, whose neighbour lists hold them till a rebuild
     set_up_radii: dict = field(default_factory=dict)
+    # type -> the coefficients of its pair with itself at that set-up, from which a pair of it with
+    # another type may be mixed
+    set_up_own: dict = field(default_factory=dict)
     # type -> {charge q} its atoms hold, as the engine holds them at the deck's end (LAMMPS, an atom
     # style with a charge), where no command after the first run changes a charge; None: not known
     charges: dict | None = None
