@@ -123,3 +123,41 @@ def test_a_type_fraction_after_a_run_retypes_the_atoms_lammps_retypes(tmp_path, 
     measured = lammps_separation_speed(deck, tmp_path)
     rows = [r for r in got["stages"][-1]["pairs"] if not r.get("lone")]    # not a type's one sphere with itself
     assert len(rows) == 1 and abs(rows[0]["eps"][0] - measured) < 1e-4, (rows, measured, err)
+
+
+def _later(lines: str) -> str:
+    """The head-on pair 0.5 mm apart, meeting after 5000 steps (in the deck's second run)."""
+    deck = HEAD_ON.format(line=LAW).replace("single -0.0051 0 0", "single -0.00525 0 0")
+    return deck.replace("single 0.0051 0 0", "single 0.00525 0 0") + lines
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_variable_redefined_from_the_step_in_an_every_is_read_as_lammps_reads_it(tmp_path):
+    """V63: defined before the run, redefined from $(step) between its parts, the variable's value
+    after the run was read as the pass's step 0 (kn 8000 printed, LAMMPS ran kn 5000): the read after
+    the run now has the runs made."""
+    law = LAW.split(None, 3)[3]
+    deck = _later(f'variable s equal 1\nrun 3000 every 1000 "variable s equal $(step)"\n'
+                  f'if "${{s}} == 3000" then "pair_coeff 1 2 {law.replace("2000", "5000")}" '
+                  f'else "pair_coeff 1 2 {law.replace("2000", "8000")}"\nrun 40000\n')
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-3, (row["eps"], err)
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("line", ["include k$(step).in", "variable n equal step\ninclude k${n}.in"])
+def test_a_file_named_from_the_step_after_a_run_is_the_one_lammps_reads(tmp_path, line):
+    """V81, V78: an include named from the step after a run read k0.in in the pass (runs skipped),
+    k3000.in in LAMMPS; an include was not among the commands whose reads make the runs for real."""
+    law = LAW.split(None, 3)[3]
+    (tmp_path / "k0.in").write_text(f"pair_coeff 1 2 {law.replace('2000', '8000')}\n")
+    (tmp_path / "k3000.in").write_text(f"pair_coeff 1 2 {law.replace('2000', '5000')}\n")
+    deck = _later(f"run 3000\n{line}\nrun 40000\n")
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
+    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-3, (row["eps"], err)

@@ -1181,18 +1181,25 @@ def _run_dependent(commands: list, scratch, clocked: bool = False) -> list:
     from .runtime import run_dependent
     commands_at: dict = {}
 
-    def at(name) -> dict:
-        """{first physical line: command} of a copied file, read once."""
-        if name not in commands_at:
+    def at(name, folder=None) -> dict:
+        """{first physical line: command} of a copied file (of the deck's own, from ``folder``), read once."""
+        if (name, folder) not in commands_at:
+            path = scratch.deck if name is None else scratch.deck.parent / name
             try:
-                text = (scratch.deck if name is None else scratch.deck.parent / name).read_text(
+                text = (path if folder is None else folder / path.relative_to(scratch.deck.parent)).read_text(
                     encoding="utf-8", errors="replace")
-            except OSError:
+            except (OSError, ValueError):
                 text = ""
-            commands_at[name] = dict(logical_lines(text))
-        return commands_at[name]
+            commands_at[(name, folder)] = dict(logical_lines(text))
+        return commands_at[(name, folder)]
     source = {loc: _unguarded(at(loc[0]).get(loc[1])) for loc in {cmd.loc for cmd in commands}
               if isinstance(loc, tuple) and len(loc) == 2 and loc[1]}
+    for loc, text in source.items():
+        if text and text.startswith("include ") and str(scratch.root) in text:
+            # a run made as its parts (scratch.split_every): the copy's line includes them, the
+            # deck's own holds the commands its every runs, which run_dependent reads
+            written = at(loc[0], scratch.origin).get(loc[1])
+            source[loc] = written if written and written.split()[:1] == ["run"] else text
     return run_dependent(commands, {loc: text for loc, text in source.items() if text}, clocked)
 
 

@@ -33,9 +33,14 @@ _MATH = frozenset({"sqrt", "exp", "ln", "log", "abs", "sin", "cos", "tan", "asin
 _DRAWN = frozenset({"random", "normal"})
 _NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _NUMBER = re.compile(r"(?<![A-Za-z0-9_.])(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?")
-#: Commands after a run whose substituted values can change what the audit reads.
-_WATCHED = frozenset({"if", "pair_coeff", "pair_style", "fix", "set", "timestep", "create_atoms", "variable",
-                      "region", "mass", "neigh_modify", "special_bonds", "velocity", "fix_modify"})
+#: Commands after a run whose substituted values cannot change what the audit reads: outputs (the
+#: pass writes none) and the runs themselves (their own checks). Every other command is watched: a
+#: file an include or jump names, a label, a group's atoms (field round 28, V81: ``include
+#: k$(step).in`` read k0.in in the pass, k3000.in in LAMMPS; V84: ``group g id $(step/1500)``).
+_UNWATCHED = frozenset({"print", "thermo", "thermo_style", "thermo_modify", "dump", "dump_modify", "undump",
+                        "write_dump", "write_data", "write_restart", "write_coeff", "restart", "log", "echo",
+                        "shell", "python", "run", "rerun", "minimize", "min_style", "min_modify", "clear",
+                        "quit", "next"})
 
 
 def _references(text: str, formula: bool = True) -> tuple[list, list, str]:
@@ -181,6 +186,12 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
         split = text.split()
         if not split:
             continue
+        if split[0] == "run" and cmd.stage is None:
+            # a command a run's every runs between its parts, known by the run's line: its own text
+            # there, before substitution (field round 28, V63: variable s equal $(step) redefining
+            # an s defined before the run was read as the echoed number, fixed)
+            text = _every_command(text, cmd.text)
+            split = text.split()
         if split[0] == "variable" and len(split) >= 3 and cmd.stage is None:
             # the text before substitution: an immediate $() in a definition is read as the
             # formula it substitutes, so run-dependent where that is
@@ -199,12 +210,26 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
             after_run = True
             if halts and allowed is not _MATH:
                 allowed, version = _MATH, version + 1
-        elif after_run and split[0] in _WATCHED and cmd.loc not in seen and checked.get(cmd.loc) != version:
-            checked[cmd.loc] = version
+        elif after_run and split[0] not in _UNWATCHED and (cmd.loc, text) not in seen \
+                and checked.get((cmd.loc, text)) != version:
+            checked[(cmd.loc, text)] = version
             if not _fixed(text, styles, allowed=allowed):
-                seen.add(cmd.loc)
+                seen.add((cmd.loc, text))
                 found.append((cmd.loc, text))
     return found
+
+
+def _every_command(run: str, echoed: str) -> str:
+    """The command of ``run ... every M c1 c2 ...`` as written whose first two words are the echoed
+    command's (the engine echoes it substituted); the echoed text where none is."""
+    from ..deck_text import ScriptError, words
+    try:
+        split = words(run)
+    except ScriptError:
+        return echoed
+    k = split.index("every") if "every" in split else len(split)
+    head = echoed.split()[:2]
+    return next((c for c in split[k + 2:] if c.split()[:2] == head), echoed)
 
 
 def resized_by_runs(commands: list) -> list:
