@@ -1,0 +1,313 @@
+"""Field round 28: write the decks as decks/NAME/in.deck (G, LIVE, SEP, extra files, LIGGGHTS marker), with round 27's
+helpers (base: kn 2000 everywhere, dt 1e-6; the LIVE pair: two spheres far above the floor approaching at 1 m/s, timed to
+meet in the run named in LIVE, refereed by live28.py running the deck as written).
+Prefixes: V run N every M with variables of the step/time and $(dt), D types emptied or refilled between runs (and
+position-dependent commands after skipped runs), Q run pre no, N neighbour reach, H hybrid, C clear / lost / restart,
+O older classes mixed in, L LIGGGHTS.   usage: python make_decks28.py [NAME ...]"""
+import os, sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "field28"))
+import make_decks27 as r  # noqa: E402
+
+m = r.m
+m.DECKS.clear(); r.LIVE.clear()
+m.D = os.path.join(HERE, "decks")
+deck, hk, HK, K, TL, head, GRAV, HM = m.deck, m.hk, m.HK, m.K, m.TL, m.head, m.GRAV, m.HM
+LIVE = r.LIVE
+BL, FL, E, P5, P8, R3, lv, lvw, W, Ll, E3x = r.BL, r.FL, r.E, r.P5, r.P8, r.R3, r.lv, r.lvw, r.W, r.Ll, r.E3x
+TAILL = r.TAILL
+P3 = lambda i="1", j="2": P5(i, j, 3000)
+EXTRA = {}
+
+
+def lvi(gap, ids=(3, 4), ta=1, tb=2, da=0.004, db=0.006, x0=0.02, z=0.05, remap=""):
+    """the live pair made after other atoms: ids (ia, ib); ta on the left; approaching at 1 m/s from gap"""
+    xa, xb = x0 - da / 2 - gap / 2, x0 + db / 2 + gap / 2
+    va, vb = db ** 3 / (da ** 3 + db ** 3), -da ** 3 / (da ** 3 + db ** 3)
+    ia, ib = ids
+    return (f"create_atoms {ta} single {xa:.9g} 0.02 {z}{remap}\ncreate_atoms {tb} single {xb:.9g} 0.02 {z}{remap}\n"
+            f"set atom {ia} diameter {da} density 2500\nset atom {ib} diameter {db} density 2500\n"
+            f"group lv1 id {ia}\ngroup lv2 id {ib}\nvelocity lv1 set {va:.10f} 0 0 units box\nvelocity lv2 set {vb:.10f} 0 0 units box\n")
+
+
+VIC = ("create_atoms 1 single 0.01 0.01 0.01\ncreate_atoms 2 single 0.03 0.03 0.01\n"
+       "set atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\n")
+XA0 = lambda gap: 0.02 - 0.002 - gap / 2           # lv1's centre x at the start
+XA1 = lambda gap, t=1e-3: XA0(gap) + t * 216 / 280  # after t seconds
+IFS = lambda cond: f'if "{cond}" then "{P5()}" else "{P8()}"\n'
+
+# ------------------------------------------------------------ V: every with step/time variables and $(dt)
+VS = R3.format("variable s equal $(step)")
+E("V01_step_if_elif", "every variable s equal $(step); if s==1000 kn 8000 elif s==3000 kn 5000 else kn 1000; run 1000",
+  VS + f'if "${{s}} == 1000" then "{P8()}" elif "${{s}} == 3000" then "{P5()}" else "{P5("1", "2", 1000)}"\nrun 1000\n', gap=3.1e-3)
+E("V02_step_loop_after", "every variable s; n = s/1000; loop i 1..n: pair_coeff 1 2 kn 1000*i+2000 (last 5000); run 1000",
+  VS + "variable n equal ${s}/1000\nvariable i loop ${n}\nlabel l\npair_coeff 1 2 hooke $(1000*v_i+2000) 3000 " + K + "\nnext i\njump SELF l\nrun 1000\n", gap=3.1e-3)
+E("V03_time_dtchange_hi", "every timestep 5e-7 + variable t equal $(time) (LAMMPS t 2e-3); if t > 0.0025 kn 8000 else 5000; run 2000",
+  'run 3000 every 1000 "timestep 5e-7" "variable t equal $(time)"\n' + f'if "${{t}} > 0.0025" then "{P8()}" else "{P5()}"\n' + "run 2000\n", gap=2.1e-3)
+E("V04_time_dtchange_lo", "as V03 with if t > 0.0017 then kn 5000 else 8000 (LAMMPS t 2e-3: kn 5000)",
+  'run 3000 every 1000 "timestep 5e-7" "variable t equal $(time)"\n' + IFS("${t} > 0.0017") + "run 2000\n", gap=2.1e-3)
+E("V05_index_not_redefined", "every variable s index $(step): an index variable is not redefined (s stays 1000); if s==1000 kn 5000 else 8000",
+  R3.format("variable s index $(step)") + IFS("${s} == 1000") + "run 1000\n", gap=3.1e-3)
+E("V06_string_step", "every variable s string $(step) (3000); if s==3000 kn 5000 else 8000",
+  R3.format("variable s string $(step)") + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V07_internal_step", "every variable s internal $(step) (3000); if s==3000 kn 5000 else 8000",
+  R3.format("variable s internal $(step)") + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V08_not_multiple_step", "run 2500 every 1000 variable s equal $(step) (2500 at the end); if s==2500 kn 5000 else 8000",
+  'run 2500 every 1000 "variable s equal $(step)"\n' + IFS("${s} == 2500") + "run 1000\n", gap=2.6e-3)
+E("V09_start_stop_step", "run 3000 start 0 stop 5000 every 1000 variable s; if s==3000 kn 5000 else 8000",
+  'run 3000 start 0 stop 5000 every 1000 "variable s equal $(step)"\n' + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V10_reset_timestep_step", "reset_timestep 5000; every variable s (8000); if s==8000 kn 5000 else 8000",
+  "reset_timestep 5000\n" + VS + IFS("${s} == 8000") + "run 1000\n", gap=3.1e-3)
+E("V11_after_run_step", "run 1000 then every variable s (4000); if s==4000 kn 5000 else 8000",
+  "run 1000\n" + VS + IFS("${s} == 4000") + "run 1000\n", gap=4.1e-3)
+E("V12_step_to_kn", "every variable k equal $(step+2000) (5000); pair_coeff 1 2 hooke ${k}; run 1000",
+  R3.format("variable k equal $(step+2000)") + "pair_coeff 1 2 hooke ${k} 3000 " + K + "\nrun 1000\n", gap=3.1e-3)
+E("V13_lazy_second_var", "every variable s; variable b equal v_s*2 (6000); if b==6000 kn 5000 else 8000",
+  VS + "variable b equal v_s*2\n" + IFS("${b} == 6000") + "run 1000\n", gap=3.1e-3)
+E("V14_print_other_vars", "variable k equal 5000; every print with ${k} $(v_k) $(step) and pair_coeff 1 2 kn 5000",
+  "variable k equal 5000\n" + 'run 3000 every 1000 \'print "k ${k} $(v_k) $(step)"\' "' + P5() + '"\n')
+E("V15_triple_quote", "every with a triple-quoted pair_coeff and a single-quoted print", 'run 3000 every 1000 """' + P5() + '""" \'print "x y"\'\n')
+E("V16_dt_after_timestep_same_every", "every timestep 5e-7 then pair_coeff 1 2 hooke $(dt*1e10) (kn 5000: the dt just set)",
+  'run 3000 every 1000 "timestep 5e-7" "pair_coeff 1 2 hooke $(dt*1e10) 3000 ' + K + '"\n', gap=1.55e-3)
+E("V17_dt_before_timestep_same_every", "every pair_coeff 1 2 hooke $(dt*5e9) then timestep $(dt*0.5): kn 5000, 2500 (part 3: 2500); run 4000 after",
+  'run 3000 every 1000 "pair_coeff 1 2 hooke $(dt*5e9) 3000 ' + K + '" "timestep $(dt*0.5)"\nrun 4000\n', gap=1.76e-3)
+E("V18_dt_density", "every set type 2 density $(dt*7.8e9) (7800)", R3.format("set type 2 density $(dt*7.8e9)"))
+W("V19_dt_wall", "wall live: every fix floor kn $(dt*8e9) (8000)", R3.format("fix floor all wall/gran granular hooke $(dt*8e9) 3000 " + K + " zplane 0 NULL"))
+E("V20_dollar_brace_step_var", "every variable s equal $(step) then pair_coeff 1 2 hooke ${s} (part 3: kn 2000)",
+  'run 3000 every 1000 "variable s equal $(step)" "pair_coeff 1 2 hooke ${s} 3000 ' + K + '"\n')
+E("V21_quoted_step_var", 'every variable s equal "$(step) + 0" (quoted expression); if s==3000 kn 5000 else 8000',
+  "run 3000 every 1000 'variable s equal \"$(step) + 0\"'\n" + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+W("V22_step_var_wall", "wall live: every variable s; fix floor kn $(v_s+5000) (8000); run 1000 (hits there)",
+  VS + "fix floor all wall/gran granular hooke $(v_s+5000) 3000 " + K + " zplane 0 NULL\nrun 1000\n", gap=3.1e-3)
+E("V23_step_var_density", "every variable s; set type 2 density ${s} (3000); run 1000", VS + "set type 2 density ${s}\nrun 1000\n", gap=3.1e-3)
+E("V24_step_var_clear", "every variable s; clear (variables stay); base, live pair, pair_coeff 1 2 kn $(v_s+2000) (5000), run",
+  VS + "clear\n" + BL() + lv(0.1e-3) + "pair_coeff 1 2 hooke $(v_s+2000) 3000 " + K + "\nrun 3000\n", live="the run after clear")
+E("V25_time_var_kn", "every variable t equal $(time) (3e-3); pair_coeff 1 2 hooke $(v_t*1e6+2000) (5000)",
+  R3.format("variable t equal $(time)") + "pair_coeff 1 2 hooke $(v_t*1e6+2000) 3000 " + K + "\nrun 1000\n", gap=3.1e-3)
+E("V26_time_var_after_dt_change", "run 1000 (dt 1e-6), timestep 5e-7, every variable t equal $(time) (2.5e-3); kn $(v_t*2e6) (5000); run 2000",
+  "run 1000\ntimestep 5e-7\n" + R3.format("variable t equal $(time)") + "pair_coeff 1 2 hooke $(v_t*2e6) 3000 " + K + "\nrun 2000\n", gap=2.6e-3)
+E("V27_plain_time_after_runs", "no every: run 1000, timestep 5e-7, run 3000, if $(time) > 0.0022 kn 5000 else 8000 (LAMMPS time 2.5e-3)",
+  "run 1000\ntimestep 5e-7\nrun 3000\n" + IFS("$(time) > 0.0022") + "run 2000\n", gap=2.6e-3)
+E("V28_plain_step_after_runs", "no every: run 3000; if $(step) == 3000 kn 5000 else 8000", "run 3000\n" + IFS("$(step) == 3000") + "run 1000\n", gap=3.1e-3)
+E("V29_lazy_step_var_after_runs", "variable s equal step (lazy, no every); run 3000; if ${s} == 3000 kn 5000 else 8000",
+  "variable s equal step\nrun 3000\n" + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V30_run0_every1_step", "run 0 every 1 variable s equal $(step) (0); if s == 0 kn 5000 else 8000", 'run 0 every 1 "variable s equal $(step)"\n' + IFS("${s} == 0") + "run 3000\n", gap=0.1e-3)
+E("V31_one_part_step", "run 1000 every 1000 variable s (1000); if s == 1000 kn 5000 else 8000; run 2000",
+  'run 1000 every 1000 "variable s equal $(step)"\n' + IFS("${s} == 1000") + "run 2000\n", gap=1.1e-3)
+E("V32_step_var_include_if", "every variable s in an include; if in a second include", "include a.in\ninclude b.in\nrun 1000\n", gap=3.1e-3,
+  data={"a.in": VS, "b.in": IFS("${s} == 3000")})
+E("V33_step_format", "every variable s; pair_coeff 1 2 hooke $(v_s*5/3:%.0f) (5000)", VS + "pair_coeff 1 2 hooke $(v_s*5/3:%.0f) 3000 " + K + "\nrun 1000\n", gap=3.1e-3)
+E("V34_step_two_every_runs", "two every runs each defining s; if s==6000 kn 5000 else 8000", VS + VS + IFS("${s} == 6000") + "run 1000\n", gap=6.1e-3)
+E("V35_step_var_jump_skip", "every variable s; if s == 3000 jump SELF skip; kn 8000; label skip; kn 5000 ... (LAMMPS jumps: kn 2000)",
+  VS + 'if "${s} == 3000" then "jump SELF skip"\n' + P8() + "\nlabel skip\nrun 1000\n", gap=3.1e-3)
+E("V36_step_var_pre_no_run", "every variable s; if s==3000 kn 5000; run 1000 (then pre no run where the pair meets)",
+  VS + IFS("${s} == 3000") + "run 1000\nrun 2000 pre no\n", gap=4.1e-3)
+E("V37_every_timestep_and_kn_part2", "every timestep 5e-7 + pair_coeff 1 2 kn 5000; live pair meets in part 2",
+  'run 3000 every 1000 "timestep 5e-7" "' + P5() + '"\n', gap=1.1e-3, live="part 2")
+E("V38_every_NULL_after_change", "pair_coeff 1 2 kn 5000; run 3000 every 1000 NULL", P5() + "\nrun 3000 every 1000 NULL\n", gap=2.1e-3)
+E("V39_every_pre_no_start", "run 3000 every 1000 post no pre yes with a step variable", 'run 3000 pre yes post no every 1000 "variable s equal $(step)"\n' + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V40_step_var_then_step_plain", "every variable s; if $(step) == 3000 (plain, not the variable) kn 5000 else 8000", VS + IFS("$(step) == 3000") + "run 1000\n", gap=3.1e-3)
+E("V41_step_var_loop_every", "loop 3: run 1000 every 500 variable s; if s == 3000 then kn 5000 (only last pass)", 'variable i loop 3\nlabel l\nrun 1000 every 500 "variable s equal $(step)"\n'
+  + f'if "${{s}} == 3000" then "{P5()}"\nnext i\njump SELF l\nrun 1000\n', gap=3.1e-3)
+E("V42_every_wall_kn_part1", "every fix floor kn 8000; live pair (no wall) in part 1 (kn 2000 pair)", R3.format("fix floor all wall/gran granular " + hk(8000) + " zplane 0 NULL"), gap=0.1e-3, live="part 1")
+E("V43_step_density_via_var", "every variable d equal $(2500+step) (5500); set type 2 density ${d}; run 1000", R3.format("variable d equal $(2500+step)") + "set type 2 density ${d}\nrun 1000\n", gap=3.1e-3)
+
+# ------------------------------------------------------------ D: types emptied or refilled; position-dependent commands after skipped runs
+DB = lambda: BL(nt=3) + VIC
+
+
+def Dk(name, comment, lines, gap=1.1e-3, live="run after the change", ids=(3, 4), **kw):
+    E(name, comment, lines, gap=gap, live=live, pre=DB(), pair=lvi(gap, ids), **kw)
+
+
+g11 = 1.1e-3
+E("D01_static_type_group", "group a type 1 made before the live pair; run; delete_atoms group a (the live type-1 sphere stays)", "run 1000\ndelete_atoms group a\nrun 3000\n",
+  gap=g11, pre=DB() + "group a type 1\n", pair=lvi(g11))
+E("D02_static_id_range_group", "group a id 1:2 (victims); delete after run 1000", "run 1000\ndelete_atoms group a\nrun 3000\n", gap=g11, pre=DB() + "group a id 1:2\n", pair=lvi(g11))
+E("D03_region_initial_place", "delete_atoms region around lv1's START place after run 1000 (it has moved 0.77 mm: LAMMPS keeps it)",
+  f"region r sphere {XA0(g11):.9g} 0.02 0.05 0.0003 units box\nrun 1000\ndelete_atoms region r\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D04_region_later_place", "delete_atoms region around where lv1 IS after run 1000 (LAMMPS deletes it: no contact)",
+  f"region r sphere {XA1(g11):.9g} 0.02 0.05 0.0003 units box\nrun 1000\ndelete_atoms region r\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D05_set_region_initial_place", "set region (lv1's start place) type 3 after run 1000 (LAMMPS: lv1 has left; stays type 1); pair_coeff 2 3 kn 8000",
+  f"region r sphere {XA0(g11):.9g} 0.02 0.05 0.0003 units box\n" + P8("2", "3") + "\nrun 1000\nset region r type 3\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D06_set_region_later_place", "set region (where lv1 is after run 1000) type 3; pair_coeff 2 3 kn 8000 (LAMMPS: lv1 becomes type 3)",
+  f"region r sphere {XA1(g11):.9g} 0.02 0.05 0.0003 units box\n" + P8("2", "3") + "\nrun 1000\nset region r type 3\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D07_group_region_after_run", "group a region (lv1's later place) made after run 1000; set group a type 3; 2 3 kn 8000",
+  f"region r sphere {XA1(g11):.9g} 0.02 0.05 0.0003 units box\n" + P8("2", "3") + "\nrun 1000\ngroup a region r\nset group a type 3\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D08_variable_atom_group_after_run", "variable v atom x > (lv1's start + 0.5 mm) and type 1; group a variable v after run 1000; set group a type 3",
+  f"variable v atom x>{XA0(g11) + 0.0005:.9g}&&type==1\n" + P8("2", "3") + "\nrun 1000\ngroup a variable v\nset group a type 3\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D09_evaporate_lv1", "fix evaporate in a region around lv1's start (deleted at step 1 by LAMMPS); run 1000; unfix; run 3000 (no 1 2 contact)",
+  f"region r sphere {XA0(g11):.9g} 0.02 0.05 0.0003 units box\nfix ev all evaporate 1 1 r 4767\nrun 1000\nunfix ev\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D10_evaporate_elsewhere", "fix evaporate in an empty region (deletes nothing); run 1000; unfix; run 3000 (1 2 contact)",
+  "region r sphere 0.035 0.035 0.09 0.001 units box\nfix ev all evaporate 1 1 r 4767\nrun 1000\nunfix ev\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D11_evaporate_victim_type3", "the only type-3 sphere evaporated in run 1000; live pair 1 2 (control of a type emptied by a fix)",
+  "create_atoms 3 single 0.01 0.01 0.08\nset atom 3 diameter 0.004 density 2500\nregion r sphere 0.01 0.01 0.08 0.001 units box\nfix ev all evaporate 1 1 r 4767\nrun 1000\nunfix ev\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D12_dynamic_group_delete", "group a dynamic all region (lv1's later place); run 1000; delete_atoms group a (LAMMPS: membership from the run)",
+  f"region r sphere {XA1(g11):.9g} 0.02 0.05 0.0003 units box\ngroup a dynamic all region r\nrun 1000\ndelete_atoms group a\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D13_delete_overlap_after_move", "a fixed type-3 sphere 3.2 mm behind lv1's start; after run 1000 delete_atoms overlap 0.0035 lv1 g3 (LAMMPS: lv1 is 3.97 mm away, kept)",
+  f"create_atoms 3 single {XA0(g11) - 0.0032:.9g} 0.02 0.05\nset atom 3 diameter 0.002 density 2500\ngroup g3 id 3\nfix fr3 g3 setforce 0 0 0\nrun 1000\ndelete_atoms overlap 0.0035 lv1 g3\nrun 3000\n",
+  gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D14_lost_during_run", "lost ignore; lv2 shot up at 200 m/s in run 1 (leaves the top, lost); run 3000 (no 1 2 contact)",
+  "thermo_modify lost ignore\nvelocity lv2 set 0 0 200 units box\nrun 1000\nrun 3000\n", gap=g11)
+E("D15_lost_type3_during_run", "lost ignore; the only type-3 sphere shot out in run 1; live 1 2 (rows for 3 after)",
+  "thermo_modify lost ignore\ncreate_atoms 3 single 0.01 0.01 0.08\nset atom 3 diameter 0.004 density 2500\ngroup g3 id 3\nvelocity g3 set 0 0 300 units box\nrun 1000\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+Dk("D16_delete_type_then_create_random", "delete_atoms group of type 1 (victim + lv1?) no: victims id 1; delete id 1; create_atoms 1 random 1 in a far region",
+   "group a id 1\nrun 1000\ndelete_atoms group a\nregion far block 0.005 0.01 0.005 0.01 0.08 0.09 units box\ncreate_atoms 1 random 1 4767 far\nset atom 5 diameter 0.004 density 2500\nrun 3000\n")
+E("D17_delete_all_type1_read_data_add", "all type-1 atoms deleted (victim group type 1 before lv); read_data add append brings the live type-1 sphere",
+  "group a type 1\nrun 1000\ndelete_atoms group a\nread_data lv1.data add append group lv1\nset group lv1 diameter 0.004 density 2500\nvelocity lv1 set 0.7714285714 0 0 units box\nrun 3000\n",
+  gap=0.1e-3, pre=BL(nt=3) + VIC, pair="create_atoms 2 single {:.9g} 0.02 0.05\nset atom 3 diameter 0.006 density 2500\ngroup lv2 id 3\nvelocity lv2 set -0.2285714286 0 0 units box\n".format(0.02 + 0.003 + 0.00005 + 0.00077142857),
+  data={"lv1.data": "# the live type-1 sphere\n\n1 atoms\n3 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n10 1 0.004 2500 {:.9g} 0.02 0.049995095\n".format(0.02 - 0.002 - 0.00005 + 0.00077142857 - 0.00077142857)})
+Dk("D18_set_type_then_back", "run; set atom 3 type 3 (lv1); run 100; set atom 3 type 1 (back); run 3000",
+   "run 1000\nset atom 3 type 3\nrun 100\nset atom 3 type 1\nrun 3000\n", gap=1.2e-3)
+Dk("D19_pour_unfixed_then_delete", "fix pour of 2 type-3 spheres (inserted in run 1), unfix pour, delete type-3 by group, run; live 1 2",
+   "region ins block 0.005 0.035 0.005 0.035 0.08 0.095 units box\nfix p all pour 2 3 4767 region ins diam one 0.003 dens 2500 2500\nrun 1000\nunfix p\ngroup g3 type 3\ndelete_atoms group g3\nrun 3000\n")
+Dk("D20_pour_after_delete", "delete victims by id; fix pour type 1 defined after; run; live 1 2", "group a id 1\nrun 1000\ndelete_atoms group a\nregion ins block 0.005 0.035 0.005 0.035 0.08 0.095 units box\nfix p all pour 2 1 4767 region ins diam one 0.003 dens 2500 2500\nrun 3000\n")
+Dk("D21_porosity", "delete_atoms porosity in a region holding victims only, fraction 1.0", "region vr block 0 0.04 0 0.04 0 0.02 units box\nrun 1000\ndelete_atoms porosity vr 1.0 4767\nrun 3000\n")
+Dk("D22_delete_region_leaves_some", "delete_atoms region around the victims only (lives stay)", "region vr block 0 0.04 0 0.04 0 0.02 units box\nrun 1000\ndelete_atoms region vr\nrun 3000\n")
+Dk("D23_group_clear_delete", "group a type 1; group a clear; delete_atoms group a (nothing)", "group a type 1\ngroup a clear\nrun 1000\ndelete_atoms group a\nrun 3000\n")
+Dk("D24_group_redefine_union", "group a id 1 then group a type 2 (a union: ids 1,2,4); delete_atoms group a after the run (lv2 gone)",
+   "group a id 1\ngroup a type 2\nrun 1000\ndelete_atoms group a\nrun 3000\n")
+Dk("D25_set_type_lv1_to_3", "run; set group lv1 type 3 (lv1 now type 3); pair_coeff 2 3 kn 8000; run (live 3 2)", "run 1000\nset group lv1 type 3\n" + P8("2", "3") + "\nrun 3000\n")
+Dk("D26_delete_lv1_mol", "delete_atoms group lv1 mol no compress yes after run; then create_atoms 1 single at lv1's place with its speed (type 1 refilled)",
+   "run 1000\ndelete_atoms group lv1 compress yes\n" + f"create_atoms 1 single {XA1(g11):.9g} 0.02 0.049995095\nvariable n equal count(all)\ngroup lvn id $(count(all))\nset group lvn diameter 0.004 density 2500\nvelocity lvn set 0.7714285714 0 0 units box\ngroup lv1 delete\ngroup lv1 union lvn\nrun 3000\n")
+W("D27_wall_type_emptied_by_region", "wall live: delete_atoms region around the falling sphere's START after run 1000 (it fell 1 mm: LAMMPS keeps it)",
+  "region r sphere 0.02 0.02 {:.9g} 0.0003 units box\nrun 1000\ndelete_atoms region r\nrun 3000\n".format(0.002 + 1.1e-3), gap=1.1e-3)
+
+# ------------------------------------------------------------ Q: run pre no after a change
+g41 = 4.1e-3
+E("Q01_diam_up_pre_no", "run 1000; set type 2 diameter 0.012 (contact 8 mm, stale list); run 3000 pre no", "run 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+E("Q02_diam_up_control", "Q01 without pre no", "run 1000\nset type 2 diameter 0.012\nrun 3000\n", gap=g41, sep=0.008)
+E("Q03_diam_up_pre_no_skin", "Q01 with neighbor 0.01 bin from the start", "run 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008, pre=BL() + "neighbor 0.01 bin\n")
+E("Q04_diam_huge_pre_no", "run 1000; set type 2 diameter 0.030 (contact 17 mm); run 3000 pre no", "run 1000\nset type 2 diameter 0.030\nrun 3000 pre no\n", gap=0.0131, sep=0.017)
+E("Q05_diam_huge_control", "Q04 without pre no", "run 1000\nset type 2 diameter 0.030\nrun 3000\n", gap=0.0131, sep=0.017)
+E("Q06_diam_up_hertz_pre_no", "hertz/material; run 1000; set type 2 diameter 0.012; run 3000 pre no", "run 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008, pre=BL(HM))
+E("Q07_mass_pre_no", "run 1000; set type 2 density 7800 (mass_velocity damping reads mass); run 3000 pre no", "run 1000\nset type 2 density 7800\nrun 3000 pre no\n", gap=1.1e-3)
+E("Q08_mass_set_pre_no", "run 1000; set type 2 mass 5e-4; run 3000 pre no", "run 1000\nset type 2 mass 5e-4\nrun 3000 pre no\n", gap=1.1e-3)
+E("Q09_diam_every_pre_no", "run 3000 pre no every 1000 set type 2 diameter 0.008 (grows after part 1)", 'run 3000 pre no every 1000 "set type 2 diameter 0.008"\n', gap=3.1e-3, sep=0.006)
+E("Q10_pre_no_after_skin", "run 1000; neighbor 0.0001 bin; run 3000 pre no", "run 1000\nneighbor 0.0001 bin\nrun 3000 pre no\n", gap=1.1e-3)
+E("Q11_pre_no_after_neigh_modify", "run 1000; neigh_modify every 100 delay 0 check no; run 3000 pre no", "run 1000\nneigh_modify every 100 delay 0 check no\nrun 3000 pre no\n", gap=1.1e-3)
+E("Q12_pre_no_after_timestep_change_kn_same", "run 1000; timestep 2e-6; run 2000 pre no", "run 1000\ntimestep 2e-6\nrun 2000 pre no\n", gap=1.1e-3)
+E("Q13_like_change_explicit_unlike", "* * (1 2 explicit); run 1000; pair_coeff 1 1 kn 8000; run 3000 pre no (1 2 stays 2000)", "run 1000\n" + P8("1", "1") + "\nrun 3000 pre no\n", gap=1.1e-3)
+E("Q14_like_change_live_11", "run 1000; pair_coeff 1 1 kn 8000; run pre no; live pair 1 1", "run 1000\n" + P8("1", "1") + "\nrun 3000 pre no\n", gap=1.1e-3, pair=lv(1.1e-3, 1, 1, 0.004, 0.004), sep=0.004)
+E("Q15_first_run_pre_no_diam", "set type 2 diameter 0.012 then the first run pre no", "set type 2 diameter 0.012\nrun 3000 pre no\n", gap=0.1e-3 + 0.003, sep=0.008)
+W("Q16_wall_pre_no", "wall live: run 1000; fix floor kn 8000 (same id); run 3000 pre no", "run 1000\n" + FL(hk(8000)) + "run 3000 pre no\n", gap=1.1e-3)
+W("Q17_wall_unfix_fix_pre_no", "wall live: run 1000; unfix floor; fix floor2 kn 8000; run 3000 pre no", "run 1000\nunfix floor\nfix floor2 all wall/gran granular " + hk(8000) + " zplane 0 NULL\nrun 3000 pre no\n", gap=1.1e-3)
+E("Q18_mixed_like_change_no_unlike_atoms", "1 1, 2 2 only (1 2 mixed); live pair 1 1; run 1000; pair_coeff 1 1 kn 8000; run pre no", "run 1000\n" + P8("1", "1") + "\nrun 3000 pre no\n", pre=r.MIX, pair=lv(1.1e-3, 1, 1, 0.004, 0.004), gap=1.1e-3, sep=0.004)
+E("Q19_diam_down_pre_no", "run 1000; set type 2 diameter 0.004; run pre no", "run 1000\nset type 2 diameter 0.004\nrun 3000 pre no\n", gap=1.1e-3, sep=0.004)
+E("Q20_every_diam_up_no_pre", "run 3000 every 1000 set type 2 diameter 0.012 (parts set up)", R3.format("set type 2 diameter 0.012"), gap=2.1e-3 + 0.003, sep=0.008)
+E("Q21_diam_up_pre_no_cutoff", "per-pair cutoff 0.02 for * *; run 1000; set type 2 diameter 0.012; run pre no", "run 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008, pre=BL(HK + " cutoff 0.02"))
+
+# ------------------------------------------------------------ N: neighbour reach
+CU = lambda c: BL(HK + f" cutoff {c}")
+E("N01_nsq_small_cutoff", "every cutoff 0.001, neighbor 0.001 nsq (all pairs checked)", "neighbor 0.001 nsq\nrun 3000\n", pre=CU(0.001), gap=0.1e-3)
+E("N02_nsq_small_cutoff_periodic", "N01 with the pair across the periodic x boundary", "neighbor 0.001 nsq\nrun 3000\n", pre=CU(0.001), pair=lvi(0.1e-3, (1, 2), x0=0.0, remap=" remap yes"), gap=0.1e-3)
+E("N16_bin_small_cutoff_periodic_comm", "every cutoff 0.001, bin, comm_modify cutoff 0.02, pair across the periodic x boundary", "neighbor 0.001 bin\ncomm_modify cutoff 0.02\nrun 3000\n", pre=CU(0.001), pair=lvi(0.1e-3, (1, 2), x0=0.0, remap=" remap yes"), gap=0.1e-3)
+E("N17_default_periodic", "default cutoffs, pair across the periodic x boundary (control)", "run 3000\n", pair=lvi(0.1e-3, (1, 2), x0=0.0, remap=" remap yes"), gap=0.1e-3)
+E("N03_multi_small_cutoff", "every cutoff 0.001, neighbor 0.001 multi", "neighbor 0.001 multi\nrun 3000\n", pre=CU(0.001), gap=0.1e-3)
+E("N04_bin_zero_skin", "default cutoffs, neighbor 0.0 bin", "neighbor 0.0 bin\nrun 3000\n", gap=0.1e-3)
+E("N05_exclude_11_live12", "neigh_modify exclude type 1 1; live 1 2 (collides)", "neigh_modify exclude type 1 1\nrun 3000\n", gap=0.1e-3)
+E("N06_exclude_group_lv1_all", "neigh_modify exclude group lv1 all (passes)", "neigh_modify exclude group lv1 all\nrun 3000\n", gap=0.1e-3)
+E("N07_exclude_then_none_then_22", "exclude type 1 2, exclude none, exclude type 2 2 (1 2 collides)", "neigh_modify exclude type 1 2\nneigh_modify exclude none\nneigh_modify exclude type 2 2\nrun 3000\n", gap=0.1e-3)
+E("N08_bin_0035_big_sphere", "every cutoff 0.0035, default skin; pair 4 mm / 20 mm (contact 12 mm)", "run 3000\n", pre=CU(0.0035), pair=lv(0.1e-3, 1, 2, 0.004, 0.02), sep=0.012, gap=0.1e-3)
+E("N09_multi_big_small", "neighbor 0.001 multi; pair 4 mm / 20 mm default cutoffs", "neighbor 0.001 multi\nrun 3000\n", pair=lv(0.1e-3, 1, 2, 0.004, 0.02), sep=0.012, gap=0.1e-3)
+E("N10_exclude_type_range", "neigh_modify exclude type 1 2 given as type 2 1", "neigh_modify exclude type 2 1\nrun 3000\n", gap=0.1e-3)
+E("N11_comm_cutoff_small_cutoffs_nsq", "every cutoff 0.001, nsq, comm_modify cutoff 0.02", "neighbor 0.001 nsq\ncomm_modify cutoff 0.02\nrun 3000\n", pre=CU(0.001), gap=0.1e-3)
+E("N12_exclude_every_then_run", "run 3000 every 1000 neigh_modify exclude type 1 2 then run 1000 (still excluded)", R3.format("neigh_modify exclude type 1 2") + "run 2000\n", gap=3.1e-3)
+E("N13_one_cutoff_11_small_others_default_nsq", "pair_coeff 1 1 cutoff 0.0001 only, nsq (1 2 default)", "neighbor 0.001 nsq\nrun 3000\n", pre=BL() + "pair_coeff 1 1 " + HK + " cutoff 0.0001\n", gap=0.1e-3)
+E("N14_global_cutoff_small_nsq", "pair_style granular 0.001 (global), nsq", "neighbor 0.001 nsq\nrun 3000\n", pre=head(2) + "pair_style granular 0.001\npair_coeff * * " + HK + "\n" + GRAV + FL() + TAILL, gap=0.1e-3)
+E("N15_small_cutoff_big_skin_every", "every cutoff 0.001; run 1000; neighbor 0.01 bin; run 3000", "run 1000\nneighbor 0.01 bin\nrun 3000\n", pre=CU(0.001), gap=1.1e-3)
+
+# ------------------------------------------------------------ H: hybrid
+HYB = lambda style, lines: head(2) + f"pair_style {style}\n" + lines + GRAV + FL() + TAILL
+GG = "pair_coeff * * granular " + HK + "\n"
+E("H01_hybrid_scaled_half", "pair_style hybrid/scaled 0.5 granular (forces halved)", "run 3000\n", pre=HYB("hybrid/scaled 0.5 granular", GG), gap=0.1e-3)
+E("H02_hybrid_zero_12", "hybrid granular zero 0.01; pair_coeff 1 2 zero (passes)", "run 3000\n", pre=HYB("hybrid granular zero 0.01", GG + "pair_coeff 1 2 zero\n"), gap=0.1e-3)
+E("H03_hybrid_lj_eps0_12", "hybrid granular lj/cut 0.001; pair_coeff 1 2 lj/cut 0 0.001 (passes)", "run 3000\n", pre=HYB("hybrid granular lj/cut 0.001", GG + "pair_coeff 1 2 lj/cut 0 0.001\n"), gap=0.1e-3)
+E("H04_hybrid_zero_back", "hybrid granular zero; 1 2 zero then 1 2 granular kn 5000", "run 3000\n", pre=HYB("hybrid granular zero 0.01", GG + "pair_coeff 1 2 zero\npair_coeff 1 2 granular " + hk(5000) + "\n"), gap=0.1e-3)
+E("H05_overlay_zero", "hybrid/overlay granular zero 0.01; 1 2 zero as well (granular still acts)", "run 3000\n", pre=HYB("hybrid/overlay granular zero 0.01", GG + "pair_coeff 1 2 zero\n"), gap=0.1e-3)
+E("H06_star_none_then_12", "hybrid granular; * * none; pair_coeff 1 2 granular (only 1 2)", "run 3000\n", pre=HYB("hybrid granular", "pair_coeff * * none\npair_coeff 1 2 granular " + HK + "\n"), gap=0.1e-3)
+E("H07_none_11_live12", "hybrid granular; * * granular; 1 1 none; live 1 2", "run 3000\n", pre=HYB("hybrid granular", GG + "pair_coeff 1 1 none\n"), gap=0.1e-3)
+E("H08_scaled_var", "hybrid/scaled v_s granular with variable s equal 0.5", "run 3000\n", pre="variable s equal 0.5\n" + HYB("hybrid/scaled v_s granular", GG), gap=0.1e-3)
+E("H09_two_sub_none_back_to_1", "hybrid granular granular; 1 2 granular 2 kn 5000; 1 2 none; 1 2 granular 1 (kn 2000)", "run 3000\n",
+  pre=HYB("hybrid granular granular", "pair_coeff * * granular 1 " + HK + "\npair_coeff 2 2 granular 2 " + HK + "\npair_coeff 1 2 granular 2 " + hk(5000) + "\npair_coeff 1 2 none\npair_coeff 1 2 granular 1 " + HK + "\n"), gap=0.1e-3)
+E("H10_mix_arithmetic", "1 1 kn 1000, 2 2 kn 8000 only (1 2 mixed); pair_modify mix arithmetic", "run 3000\n",
+  pre=head(2) + "pair_style granular\npair_coeff 1 1 " + hk(1000) + "\npair_coeff 2 2 " + hk(8000) + "\npair_modify mix arithmetic\n" + GRAV + FL() + TAILL, gap=0.1e-3)
+E("H11_mix_geometric_control", "1 1 kn 1000, 2 2 kn 8000 only (1 2 mixed)", "run 3000\n",
+  pre=head(2) + "pair_style granular\npair_coeff 1 1 " + hk(1000) + "\npair_coeff 2 2 " + hk(8000) + "\n" + GRAV + FL() + TAILL, gap=0.1e-3)
+E("H12_scaled_two_granular", "hybrid/scaled 0.5 granular 0.5 granular: same law twice on 1 2? (engine decides)", "run 3000\n",
+  pre=HYB("hybrid/scaled 1.0 granular", GG), gap=0.1e-3)
+E("H13_hybrid_zero_none_mixed", "hybrid granular zero: 1 1 granular kn 1000, 2 2 granular kn 8000 only, 1 2 never set (mixed within granular)", "run 3000\n",
+  pre=HYB("hybrid granular zero 0.01", "pair_coeff 1 1 granular " + hk(1000) + "\npair_coeff 2 2 granular " + hk(8000) + "\n"), gap=0.1e-3)
+E("H14_hybrid_zero_every", "hybrid granular zero; every pair_coeff 1 2 zero (passes in part 3)", R3.format("pair_coeff 1 2 zero"), pre=HYB("hybrid granular zero 0.01", GG))
+E("H15_hybrid_one_none_range", "hybrid granular; pair_coeff 1*2 2 none, then 1 2 granular kn 5000 (2 2 none)", "run 3000\n", pre=HYB("hybrid granular", GG + "pair_coeff 1*2 2 none\npair_coeff 1 2 granular " + hk(5000) + "\n"), gap=0.1e-3)
+
+# ------------------------------------------------------------ C: clear, restart, lost
+CB = lambda: BL()
+E("C01_restart_keeps_coeff", "pair_coeff 1 2 kn 5000; write_restart; clear; read_restart (no pair_coeff: the restart's); walls and integrator again; run",
+  P5() + "\nwrite_restart a.rst\nclear\nread_restart a.rst\n" + GRAV + FL() + TAILL + "run 3000\n", gap=0.1e-3)
+E("C02_restart_mixed_then_like", "1 1, 2 2 only; write_restart; clear; read_restart; pair_coeff 1 1 kn 8000 (1 2 re-mixed at set-up); run",
+  "write_restart a.rst\nclear\nread_restart a.rst\n" + P8("1", "1") + "\n" + GRAV + FL() + TAILL + "run 3000\n", pre=r.MIX, gap=0.1e-3)
+E("C03_restart_file_from_run", "restart 1000 r.*; run 1000; clear; read_restart r.1000 (the file only a made run writes)",
+  "restart 1000 r.*\nrun 1000\nclear\nread_restart r.1000\n" + P5() + "\n" + GRAV + FL() + TAILL + "run 3000\n", gap=1.1e-3)
+E("C04_restart_after_run_velocity", "run 1000; write_restart; clear; read_restart; pair_coeff 1 2 kn 5000; run 3000 (pair meets in it)",
+  "run 1000\nwrite_restart a.rst\nclear\nread_restart a.rst\n" + P5() + "\n" + GRAV + FL() + TAILL + "run 3000\n", gap=1.1e-3)
+E("C05_clear_lost_ignore_then_data", "thermo_modify lost ignore; clear; base; read live pair; run", "clear\n" + BL() + "thermo_modify lost ignore\n" + lv(0.1e-3) + "run 3000\n", live="the run after clear")
+E("C06_restart_hybrid", "hybrid granular zero, 1 2 zero; write_restart; clear; read_restart (the hybrid's none/zero kept)",
+  "write_restart a.rst\nclear\nread_restart a.rst\n" + GRAV + FL() + TAILL + "run 3000\n", pre=HYB("hybrid granular zero 0.01", GG + "pair_coeff 1 2 zero\n"), gap=0.1e-3)
+E("C07_restart_excluded", "neigh_modify exclude type 1 2; write_restart; clear; read_restart (exclusions are not in a restart)",
+  "neigh_modify exclude type 1 2\nwrite_restart a.rst\nclear\nread_restart a.rst\n" + GRAV + FL() + TAILL + "run 3000\n", gap=0.1e-3)
+E("C08_restart_cutoff_small", "every cutoff 0.001 with neighbor 0.001 bin; restart; read; run", "neighbor 0.001 bin\nwrite_restart a.rst\nclear\nread_restart a.rst\n" + GRAV + FL() + TAILL + "run 3000\n", pre=CU(0.001), gap=0.1e-3)
+E("C09_lost_warn_lv2_out", "lost warn; lv2 shot through the top in run 1; run 3000", "thermo_modify lost warn\nvelocity lv2 set 0 0 200 units box\nrun 1000\nrun 3000\n", gap=1.1e-3)
+E("C10_clear_every_step", "every variable s; clear; base; if s == 3000 kn 5000 else 8000 (variables survive a clear)",
+  VS + "clear\n" + BL() + lv(0.1e-3) + IFS("${s} == 3000") + "run 3000\n", live="the run after clear")
+E("C11_restart_timestep", "timestep 5e-7 before write_restart; read_restart keeps dt", "timestep 5e-7\nwrite_restart a.rst\nclear\nread_restart a.rst\n" + P5() + "\n" + GRAV + FL() + "fix integ all nve/sphere\nrun 6000\n", gap=0.1e-3)
+
+# ------------------------------------------------------------ O: older classes mixed in
+E("O01_format_kn", "pair_coeff 1 2 hooke $(5000.4:%.0f)", "pair_coeff 1 2 hooke $(5000.4:%.0f) 3000 " + K + "\nrun 3000\n", gap=0.1e-3)
+E("O02_format_var", "variable k format x %.0f with x 4999.6", "variable x equal 4999.6\nvariable k format x %.0f\npair_coeff 1 2 hooke ${k} 3000 " + K + "\nrun 3000\n", gap=0.1e-3)
+E("O03_range_star2_every", "every pair_coeff * 2 kn 5000 (1 2, 2 2)", R3.format(P5("*", "2")))
+E("O04_labels_every_step_var", "labelmap; every variable s; if s==3000 pair_coeff small big kn 5000", "labelmap atom 1 small 2 big\n" + VS + f'if "${{s}} == 3000" then "{P5("small", "big")}"\nrun 1000\n', gap=3.1e-3)
+E("O05_set_order_every", "every set type 2 density 7800 then set type 2 diameter 0.008 (mass by 7800 at 8 mm)", 'run 3000 every 1000 "set type 2 density 7800" "set type 2 diameter 0.008"\n', sep=0.006)
+E("O06_set_order_every_rev", "every set type 2 diameter 0.008 then density 7800", 'run 3000 every 1000 "set type 2 diameter 0.008" "set type 2 density 7800"\n', sep=0.006)
+E("O07_loop_next_jump_every_kn", "loop i 2: run 1500 every 500 pair_coeff 1 2 hooke $(dt*5e9); next; jump", 'variable i loop 2\nlabel l\nrun 1500 every 500 "pair_coeff 1 2 hooke $(dt*5e9) 3000 ' + K + '"\nnext i\njump SELF l\n')
+E("O08_include_every_delete", "include with every deleting victims (types 3)", "create_atoms 3 single 0.01 0.01 0.08\nset atom 3 diameter 0.004 density 2500\ngroup g3 id 3\ninclude d.in\n", pre=BL(nt=3), data={"d.in": R3.format("delete_atoms group g3")})
+E("O09_if_step_formatted", "every variable s; if $(v_s:%.3f) == 3000.000 kn 5000", VS + IFS("$(v_s:%.3f) == 3000.000") + "run 1000\n", gap=3.1e-3)
+E("O10_15g", "variable k equal 5000/3*3 (15g); pair_coeff hooke ${k}", "variable k equal 5000/3*3\npair_coeff 1 2 hooke ${k} 3000 " + K + "\nrun 3000\n", gap=0.1e-3)
+E("O11_star_star_after_every_pre_no", "every pair_coeff 1 2 kn 5000; then run 1000 pre no (no change since)", R3.format(P5()) + "run 1000 pre no\n", gap=3.1e-3)
+E("O12_label_type_range_every", "labelmap; every pair_coeff small* big kn 5000? (range from a label is LAMMPS' call)", "labelmap atom 1 small 2 big\n" + R3.format(P5("*", "big")))
+
+# ------------------------------------------------------------ L: LIGGGHTS
+LH = lambda style="hertz", extra_pair="", e="0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8": (m.lhead() + m.MAT3 + f"fix m3 all property/global coefficientRestitution peratomtypepair 3 {e}\n"
+      + f"pair_style gran model {style} tangential history{extra_pair}\npair_coeff * *\n" + m.WALL3)
+Ll("L01_e_one", "LIGGGHTS hertz, e = 1.0 everywhere", "run 3000\n", gap=0.1e-3, head_=LH(e=" ".join(["1.0"] * 9)))
+Ll("L02_limitForce_hooke", "LIGGGHTS hooke limitForce on (e 1 2 = 0.5)", "run 3000\n", gap=0.1e-3, head_=LH("hooke", " limitForce on"))
+Ll("L03_limitForce_hertz", "LIGGGHTS hertz limitForce on", "run 3000\n", gap=0.1e-3, head_=LH("hertz", " limitForce on"))
+Ll("L04_no_history", "LIGGGHTS hertz tangential no_history", "run 3000\n", gap=0.1e-3, head_=LH().replace("tangential history\n", "tangential no_history\n"))
+Ll("L05_step_var_if", "LIGGGHTS every variable s equal $(step); if s==3000 e 1 2 0.9", R3.format("variable s equal $(step)") + f'if "${{s}} == 3000" then "{E3x(0.9)}" else "{E3x(0.2)}"\nrun 1000\n', gap=3.1e-3)
+Ll("L06_region_delete_initial", "LIGGGHTS delete_atoms region around lv1's start after run 1000 (moved: stays)", "region r sphere {:.9g} 0 0.1 0.0003 units box\nrun 1000\ndelete_atoms region r\nrun 3000\n".format(-0.002 - 1.1e-3 / 2), gap=1.1e-3)
+Ll("L07_hooke_e_one", "LIGGGHTS hooke e = 1.0", "run 3000\n", gap=0.1e-3, head_=LH("hooke", e=" ".join(["1.0"] * 9)))
+Ll("L08_hooke_stiffness", "LIGGGHTS hooke/stiffness kn 2000 kt 1000 gamman 0 (no damping: 1.0)", "run 3000\n", gap=0.1e-3,
+   head_=m.lhead() + m.MAT3 + "fix m4 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\nfix m5 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000\n"
+   "fix m6 all property/global gamman peratomtypepair 3 0 0 0 0 0 0 0 0 0\nfix m8 all property/global gammat peratomtypepair 3 0 0 0 0 0 0 0 0 0\npair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
+   "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n")
+Ll("L09_every_dt_e", "LIGGGHTS every timestep 5e-7 then e 1 2 0.9", 'run 3000 every 1000 "timestep 5e-7" "' + E3x(0.9) + '"\n', gap=1.55e-3)
+Ll("L10_group_type_delete_then_create", "LIGGGHTS group a type 1 (lv1); a second type-1 sphere made after; delete a; pair 1 2 with the new one? (no: live gone)",
+   "run 1000\nset atom 1 type 3\nrun 3000\n", gap=1.1e-3)
+Ll("L11_exclude_type", "LIGGGHTS neigh_modify exclude type 1 2", "neigh_modify exclude type 1 2\nrun 3000\n", gap=0.1e-3)
+Ll("L12_rolling_cdt", "LIGGGHTS hertz rolling_friction cdt (coefficientRollingFriction 0.1)", "run 3000\n", gap=0.1e-3,
+   head_=LH().replace("tangential history\n", "tangential history rolling_friction cdt\n").replace(m.WALL3, "fix m9 all property/global coefficientRollingFriction peratomtypepair 3 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1\n" + m.WALL3))
+
+
+def write_all(names):
+    for n in names:
+        m.write(n)
+        if n in LIVE:
+            open(os.path.join(m.D, n, "LIVE"), "w").write(LIVE[n].split("\nSEP")[0] + "\n")
+            if "\nSEP " in LIVE[n]:
+                open(os.path.join(m.D, n, "SEP"), "w").write(LIVE[n].split("\nSEP ")[1] + "\n")
+
+
+if __name__ == "__main__":
+    write_all(sys.argv[1:] or list(m.DECKS))
+    print(len(m.DECKS), "decks")
