@@ -14,7 +14,9 @@ for n in sorted(live):
     if not os.path.exists(d + "/audit.rc"):
         print(n, "not audited"); continue
     rc = open(d + "/audit.rc").read().strip()
-    pair = "type 1 on wall floor" if "WALL" in open(d + "/LIVE").read() else ("types 1 1" if "pair11" in n else ("types 1 3" if n.startswith("Y09") else "types 1 2"))
+    pair = "type 1 on wall floor" if "WALL" in open(d + "/LIVE").read() else "types 1 2"
+    if os.path.exists(d + "/PAIR"):
+        pair = open(d + "/PAIR").read().strip()
     rows = subprocess.run([sys.executable, os.path.join(H, "rows28.py"), d, pair], capture_output=True, text=True).stdout.strip()
     m = re.search(r"LIVE28 eps (\S+)", live[n])
     flag = ""
@@ -22,6 +24,9 @@ for n in sorted(live):
     lastrow = dict(x.split(":", 1) for x in rows.split() if x.startswith("s") and ":" in x).get("s" + ns)
     if rc == "0" and m:
         e = float(m.group(1))
+        if "WALL" in open(d + "/LIVE").read():  # the end speed over the impact speed sqrt(1 + 2 g gap)
+            z = float(re.search(r"create_atoms 1 single 0.02 0.02 (\S+)", open(d + "/in.deck").read()).group(1))
+            e = e / (1 + 2 * 9.81 * (z - 0.002)) ** 0.5
         if lastrow is None or lastrow.endswith("*"):
             flag = "ok(no contact)" if e < 0 else "CHECK(no row, engine collides)"
         else:

@@ -7,7 +7,7 @@ O older classes mixed in, L LIGGGHTS.   usage: python make_decks28.py [NAME ...]
 import os, sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "field28"))
+sys.path.insert(0, os.path.join(HERE, "..", "field27"))
 import make_decks27 as r  # noqa: E402
 
 m = r.m
@@ -281,17 +281,17 @@ E("O12_label_type_range_every", "labelmap; every pair_coeff small* big kn 5000? 
 LH = lambda style="hertz", extra_pair="", e="0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8": (m.lhead() + m.MAT3 + f"fix m3 all property/global coefficientRestitution peratomtypepair 3 {e}\n"
       + f"pair_style gran model {style} tangential history{extra_pair}\npair_coeff * *\n" + m.WALL3)
 Ll("L01_e_one", "LIGGGHTS hertz, e = 1.0 everywhere", "run 3000\n", gap=0.1e-3, head_=LH(e=" ".join(["1.0"] * 9)))
-Ll("L02_limitForce_hooke", "LIGGGHTS hooke limitForce on (e 1 2 = 0.5)", "run 3000\n", gap=0.1e-3, head_=LH("hooke", " limitForce on"))
+Ll("L02_limitForce_hooke", "LIGGGHTS hooke limitForce on (e 1 2 = 0.5)", "run 3000\n", gap=0.1e-3, head_=LH("hooke", " limitForce on").replace("pair_style", "fix m10 all property/global characteristicVelocity scalar 1.0\npair_style"))
 Ll("L03_limitForce_hertz", "LIGGGHTS hertz limitForce on", "run 3000\n", gap=0.1e-3, head_=LH("hertz", " limitForce on"))
 Ll("L04_no_history", "LIGGGHTS hertz tangential no_history", "run 3000\n", gap=0.1e-3, head_=LH().replace("tangential history\n", "tangential no_history\n"))
 Ll("L05_step_var_if", "LIGGGHTS every variable s equal $(step); if s==3000 e 1 2 0.9", R3.format("variable s equal $(step)") + f'if "${{s}} == 3000" then "{E3x(0.9)}" else "{E3x(0.2)}"\nrun 1000\n', gap=3.1e-3)
 Ll("L06_region_delete_initial", "LIGGGHTS delete_atoms region around lv1's start after run 1000 (moved: stays)", "region r sphere {:.9g} 0 0.1 0.0003 units box\nrun 1000\ndelete_atoms region r\nrun 3000\n".format(-0.002 - 1.1e-3 / 2), gap=1.1e-3)
-Ll("L07_hooke_e_one", "LIGGGHTS hooke e = 1.0", "run 3000\n", gap=0.1e-3, head_=LH("hooke", e=" ".join(["1.0"] * 9)))
+Ll("L07_hooke_e_one", "LIGGGHTS hooke e = 1.0", "run 3000\n", gap=0.1e-3, head_=LH("hooke", e=" ".join(["1.0"] * 9)).replace("pair_style", "fix m10 all property/global characteristicVelocity scalar 1.0\npair_style"))
 Ll("L08_hooke_stiffness", "LIGGGHTS hooke/stiffness kn 2000 kt 1000 gamman 0 (no damping: 1.0)", "run 3000\n", gap=0.1e-3,
    head_=m.lhead() + m.MAT3 + "fix m4 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\nfix m5 all property/global kt peratomtypepair 3 1000 1000 1000 1000 1000 1000 1000 1000 1000\n"
    "fix m6 all property/global gamman peratomtypepair 3 0 0 0 0 0 0 0 0 0\nfix m8 all property/global gammat peratomtypepair 3 0 0 0 0 0 0 0 0 0\npair_style gran model hooke/stiffness tangential history\npair_coeff * *\n"
    "fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n")
-Ll("L09_every_dt_e", "LIGGGHTS every timestep 5e-7 then e 1 2 0.9", 'run 3000 every 1000 "timestep 5e-7" "' + E3x(0.9) + '"\n', gap=1.55e-3)
+Ll("L09_every_dt_e", "LIGGGHTS every timestep 5e-7 then e 1 2 0.9", 'run 3000 every 1000 "timestep 5e-7" "' + E3x(0.9) + '"\nrun 4000\n', gap=1.55e-3)
 Ll("L10_group_type_delete_then_create", "LIGGGHTS group a type 1 (lv1); a second type-1 sphere made after; delete a; pair 1 2 with the new one? (no: live gone)",
    "run 1000\nset atom 1 type 3\nrun 3000\n", gap=1.1e-3)
 Ll("L11_exclude_type", "LIGGGHTS neigh_modify exclude type 1 2", "neigh_modify exclude type 1 2\nrun 3000\n", gap=0.1e-3)
@@ -299,11 +299,132 @@ Ll("L12_rolling_cdt", "LIGGGHTS hertz rolling_friction cdt (coefficientRollingFr
    head_=LH().replace("tangential history\n", "tangential history rolling_friction cdt\n").replace(m.WALL3, "fix m9 all property/global coefficientRollingFriction peratomtypepair 3 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1\n" + m.WALL3))
 
 
+# ------------------------------------------------------------ R (batch 2): values the runs change that the clocked pass may not follow,
+# position- or order-dependent picks the audit's list may not hold, files the runs write
+DTR = "fix dtr all dt/reset 1 NULL 5e-7 0.001 units box\n"
+E("R01_dtreset_if_dt", "fix dt/reset caps dt at 5e-7 in run 1; unfix; if $(dt) < 8e-7 kn 5000 else 8000 (LAMMPS: 5000)",
+  DTR + "run 1000\nunfix dtr\n" + IFS("$(dt) < 8e-7") + "run 4000\n", gap=0.6e-3)
+E("R02_dtreset_if_time", "fix dt/reset caps dt at 5e-7 in run 1 (time 5e-4); unfix; if $(time) < 8e-4 kn 5000 else 8000",
+  DTR + "run 1000\nunfix dtr\n" + IFS("$(time) < 8e-4") + "run 4000\n", gap=0.6e-3)
+E("R03_dtreset_every_dt", "fix dt/reset (dt 5e-7); run 3000 every 1000 pair_coeff 1 2 hooke $(dt*1e10) (LAMMPS kn 5000)",
+  DTR + R3.format("pair_coeff 1 2 hooke $(dt*1e10) 3000 " + K), gap=1.05e-3)
+E("R04_dtreset_every_time_var", "fix dt/reset (dt 5e-7); every variable t equal $(time) (1.5e-3); if t < 2e-3 kn 5000 else 8000; run 4000",
+  DTR + R3.format("variable t equal $(time)") + "unfix dtr\n" + IFS("${t} < 2e-3") + "run 4000\n", gap=1.6e-3)
+E("R05_dtreset_timestep_after", "fix dt/reset (dt 5e-7) in run 1; unfix; timestep $(dt*2) (LAMMPS 1e-6); if $(dt) > 8e-7 kn 5000 else 8000",
+  DTR + "run 1000\nunfix dtr\ntimestep $(dt*2)\n" + IFS("$(dt) > 8e-7") + "run 3000\n", gap=0.6e-3)
+
+XB0 = 0.023 + 0.00005 + 0.2285714286e-3
+E("R10_create_overlap_blocked_at_start", "a tiny type-2 blocker at the place lv1 is made, falling at 10 m/s; after run 1000 create_atoms 1 single there overlap 0.005 (LAMMPS: blocker 10 mm away, made)",
+  "create_atoms 2 single 0.01795 0.02 0.05\nset atom 2 diameter 0.0002 density 2500\ngroup blk id 2\nvelocity blk set 0 0 -10 units box\nrun 1000\n"
+  "create_atoms 1 single 0.01795 0.02 0.05 overlap 0.005\nset type 1 diameter 0.004 density 2500\ngroup lv1 type 1\nvelocity lv1 set 0.7714285714 0 0 units box\nrun 3000\n",
+  pair=f"create_atoms 2 single {XB0:.9g} 0.02 0.05\nset atom 1 diameter 0.006 density 2500\ngroup lv2 id 1\nvelocity lv2 set -0.2285714286 0 0 units box\n", gap=0)
+E("R11_create_overlap_made_at_start", "lv1 moving; after run 1000 create_atoms 2 single 5.6 mm ahead of lv1's start, overlap 0.005 (LAMMPS: lv1 4.83 mm away, not made)",
+  f"run 1000\ncreate_atoms 2 single {XA0(0) + 0.0056:.9g} 0.02 0.05 overlap 0.005\nset type 2 diameter 0.006 density 2500\ngroup lv2 type 2\nvelocity lv2 set -0.2285714286 0 0 units box\nrun 3000\n",
+  pair=f"create_atoms 1 single {XA0(0):.9g} 0.02 0.05\nset atom 1 diameter 0.004 density 2500\ngroup lv1 id 1\nvelocity lv1 set 0.7714285714 0 0 units box\n", gap=0)
+for seed in (1, 2, 3, 4, 5, 6):
+    E(f"R2{seed}_type_fraction_seed{seed}", f"after run 1000: set group lv1 type/fraction 3 0.5 {seed} (LAMMPS seeds each atom's draw by its position); 2 3 kn 8000",
+      "run 1000\nset group lv1 type/fraction 3 0.5 " + str(seed) + "\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+for seed in (11, 12, 13, 14):
+    E(f"R3{seed - 10}_delete_random_seed{seed}", f"victim type-1 sphere (id 1) and lv1 (id 3) in group t1; after run 1000 delete_atoms random count 1 yes t1 NULL {seed}",
+      "group t1 type 1\nrun 1000\ndelete_atoms random count 1 yes t1 NULL " + str(seed) + "\nrun 3000\n", gap=g11, pre=DB(), pair=lvi(g11))
+E("R40_read_dump", "dump every 1000 steps; run 1000; read_dump of step 1000 (x y z vx vy vz); run 3000",
+  "dump d all custom 1000 pos.dump id type x y z vx vy vz\nrun 1000\nundump d\nread_dump pos.dump 1000 x y z vx vy vz\nrun 3000\n", gap=g11)
+E("R41_fix_print_include", "fix print writes a pair_coeff line (kn 5000) to kn.in at step 1000; include kn.in; run 3000",
+  'fix fp all print 1000 "' + P5() + '" file kn.in screen no\nrun 1000\nunfix fp\ninclude kn.in\nrun 3000\n', gap=g11)
+E("R42_fix_print_variable_file", "fix print writes $(2000+step*3) (5000 at step 1000) to kn.txt; variable k file kn.txt; pair_coeff 1 2 hooke ${k}",
+  'fix fp all print 1000 "$(2000+step*3)" file kn.txt screen no\nrun 1000\nunfix fp\nvariable k file kn.txt\npair_coeff 1 2 hooke ${k} 3000 ' + K + "\nrun 3000\n", gap=g11)
+E("R43_restart_file_no_clear_data", "restart 1000 r.*; run 1000; write nothing else; clear; read_restart r.1000; run 3000 (C03 without a change)",
+  "restart 1000 r.*\nrun 1000\nclear\nread_restart r.1000\n" + GRAV + FL() + TAILL + "run 3000\n", gap=g11)
+E("R50_evaporate_last_run", "fix evaporate in a region around lv1's start, in the deck's only run (LAMMPS deletes lv1 at step 1: no contact)",
+  f"region r sphere {XA0(0.1e-3):.9g} 0.02 0.05 0.0003 units box\nfix ev all evaporate 1 1 r 4767\nrun 3000\n", gap=0.1e-3, pre=BL(nt=3), pair=lvi(0.1e-3, (1, 2)))
+E("R51_evaporate_last_run_after_run", "run 1000; then fix evaporate around lv1's place then; run 3000 (deleted in the last run)",
+  f"run 1000\nregion r sphere {XA1(g11):.9g} 0.02 0.05 0.0003 units box\nfix ev all evaporate 1 1 r 4767\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("R52_evaporate_type_last_run", "fix evaporate 1 1 of group lv1 in a region the size of the box, in the last run", "region all2 block 0 0.04 0 0.04 0 0.1 units box\nfix ev lv1 evaporate 1 1 all2 4767\nrun 3000\n",
+  gap=0.1e-3)
+POUR3 = "region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nfix p all pour 1 3 4767 region ins diam one 0.004 dens 2500 2500\n"
+HD = "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\n"
+AFTER = (GRAV + FL() + TAILL + "group lv1 type 3\ngroup lv2 type 2\nset group lv1 x 0.01795 y 0.02 z 0.05\nset group lv2 x 0.02305 y 0.02 z 0.05\n"
+         "set group lv1 diameter 0.004 density 2500\nvelocity lv1 set 0.7714285714 0 0 units box\nvelocity lv2 set -0.2285714286 0 0 units box\nrun 3000\n")
+E("R60_pour_write_data_read", "pour of one type-3 sphere in run 1000; write_data; clear; read_data; the poured sphere made the live partner (3 2) by set x y z",
+  POUR3 + "run 1000\nunfix p\nwrite_data d.data\nclear\n" + HD + "read_data d.data\npair_style granular\npair_coeff * * " + HK + "\n" + AFTER,
+  pre=BL(nt=3), pair="create_atoms 2 single 0.023 0.02 0.05\nset atom 1 diameter 0.006 density 2500\n", gap=0)
+E("R61_pour_write_restart_read", "R60 with write_restart / read_restart", POUR3 + "run 1000\nunfix p\nwrite_restart d.rst\nclear\nread_restart d.rst\n" + AFTER,
+  pre=BL(nt=3), pair="create_atoms 2 single 0.023 0.02 0.05\nset atom 1 diameter 0.006 density 2500\n", gap=0)
+E("R62_pour_set_xyz_live", "no clear: pour one type-3 sphere in run 1000, unfix, then make it the live partner by set x y z (3 2)",
+  POUR3 + "run 1000\nunfix p\n" + AFTER.replace(GRAV + FL() + TAILL, ""), pre=BL(nt=3), pair="create_atoms 2 single 0.023 0.02 0.05\nset atom 1 diameter 0.006 density 2500\n", gap=0)
+for nme in ("R60_pour_write_data_read", "R61_pour_write_restart_read", "R62_pour_set_xyz_live"):
+    EXTRA[nme] = {"PAIR": "types 2 3"}
+E("R63_every_delete_region_later", "run 3000 every 1000 delete_atoms region (lv1's place at step 1000): LAMMPS deletes it after part 1",
+  f"region r sphere {XA1(2.1e-3):.9g} 0.02 0.05 0.0003 units box\n" + R3.format("delete_atoms region r"), pre=BL(nt=3), pair=lvi(2.1e-3, (1, 2)), gap=2.1e-3)
+E("R64_every_set_fraction", "run 3000 every 1000 set group lv1 type/fraction 3 0.5 7 (position-seeded draw each part); 2 3 kn 8000",
+  P8("2", "3") + "\n" + R3.format("set group lv1 type/fraction 3 0.5 7"), pre=BL(nt=3), pair=lvi(2.1e-3, (1, 2)), gap=2.1e-3)
+E("R65_set_fraction_before_run", "control: set group lv1 type/fraction 3 0.5 1 before any run; 2 3 kn 8000", "set group lv1 type/fraction 3 0.5 1\n" + P8("2", "3") + "\nrun 3000\n",
+  gap=0.1e-3, pre=BL(nt=3), pair=lvi(0.1e-3, (1, 2)))
+E("R66_type_ratio", "after run 1000: set type 1 type/ratio 3 0.5 9 with the victim and lv1 of type 1", "run 1000\nset type 1 type/ratio 3 0.5 9\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=DB(), pair=lvi(g11))
+E("R67_type_subset", "after run 1000: set type 1 type/subset 3 1 9 (one of the victim and lv1)", "run 1000\nset type 1 type/subset 3 1 9\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=DB(), pair=lvi(g11))
+E("R68_create_random_overlap", "after run 1000: create_atoms 1 random 1 4767 r overlap 0.004 maxtry 1 in a tiny region at lv1's start (LAMMPS: lv1 left, made)",
+  f"run 1000\nregion r sphere {XA0(g11):.9g} 0.02 0.05 0.00001 units box\ncreate_atoms 3 random 1 4767 r overlap 0.004 maxtry 1\nset type 3 diameter 0.002 density 2500\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("R69_displace_then_region_set", "run 1000; displace_atoms lv1 move 0.005 0 0; set region (lv1's start + 5 mm) type 3 (the displacement is known; the run's move not)",
+  f"run 1000\ndisplace_atoms lv1 move 0 0.005 0 units box\nregion r sphere {XA0(g11):.9g} 0.025 0.05 0.0003 units box\nset region r type 3\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+
+# ------------------------------------------------------------ batch 2: more every / pre no / neighbour / LIGGGHTS
+E("N18_skin_after_run_first_touch", "every cutoff 0.001; run 1000; neighbor 0.004 bin (reach 0.005); run 3000 (N15 at the edge)", "run 1000\nneighbor 0.004 bin\nrun 3000\n", pre=CU(0.001), gap=1.1e-3)
+E("N19_skin_big_then_small", "every cutoff 0.001; neighbor 0.01 bin; run 1000; neighbor 0.001 bin; run 3000 (reach 0.002 in the last run)", "neighbor 0.01 bin\nrun 1000\nneighbor 0.001 bin\nrun 3000\n", pre=CU(0.001), gap=1.1e-3)
+E("N20_skin_in_include", "every cutoff 0.001; neighbor 0.01 bin in an include before the run", "include nb.in\nrun 3000\n", pre=CU(0.001), gap=0.1e-3, data={"nb.in": "neighbor 0.01 bin\n"})
+E("N21_skin_every_part2", "every cutoff 0.001; run 3000 every 1000 neighbor 0.01 bin; live pair in part 3", R3.format("neighbor 0.01 bin"), pre=CU(0.001), gap=2.1e-3)
+E("N22_skin_by_variable", "every cutoff 0.001; variable s equal 0.01; neighbor ${s} bin", "variable s equal 0.01\nneighbor ${s} bin\nrun 3000\n", pre=CU(0.001), gap=0.1e-3)
+E("N23_cutoff_changed_after_run", "cutoff 0.001 for * * with skin 0.001; run 1000; pair_coeff * * default (no cutoff); run 3000", "run 1000\npair_coeff * * " + HK + "\nrun 3000\n", pre=CU(0.001), gap=1.1e-3)
+E("N24_cutoff_set_after_run", "default; run 1000; pair_coeff * * cutoff 0.001 (skin 0.001); run 3000", "run 1000\npair_coeff * * " + HK + " cutoff 0.001\nrun 3000\n", gap=1.1e-3)
+E("N25_nsq_after_run", "every cutoff 0.001; run 1000; neighbor 0.001 nsq; run 3000", "run 1000\nneighbor 0.001 nsq\nrun 3000\n", pre=CU(0.001), gap=1.1e-3)
+E("N26_skin_pre_no", "every cutoff 0.001; run 1000; neighbor 0.01 bin; run 3000 pre no (no new set-up: the old lists' reach?)", "run 1000\nneighbor 0.01 bin\nrun 3000 pre no\n", pre=CU(0.001), gap=1.1e-3)
+E("N27_clear_skin", "neighbor 0.01 bin; clear; base with cutoff 0.001 (skin back to 0.001)", "neighbor 0.01 bin\nclear\n" + CU(0.001) + lv(0.1e-3) + "run 3000\n", pre=BL(), live="the run after clear")
+W("N28_wall_small_cutoff", "wall live: every cutoff 0.001 for pairs (walls have no list)", "run 3000\n", pre=CU(0.001), gap=0.1e-3)
+E("V44_every_dt_neighbor", "every timestep $(dt*0.5) and pair_coeff 1 2 hooke $(dt*5e9) (after part 2: dt 2.5e-7 first then kn 1250)", 'run 3000 every 1000 "timestep $(dt*0.5)" "pair_coeff 1 2 hooke $(dt*5e9) 3000 ' + K + '"\nrun 4000\n', gap=1.76e-3)
+E("V45_every_step_var_then_if_pair_none_hybrid", "hybrid granular zero; every variable s; if s==3000 pair_coeff 1 2 zero else nothing (passes)", VS + 'if "${s} == 3000" then "pair_coeff 1 2 zero"\nrun 1000\n',
+  pre=HYB("hybrid granular zero 0.01", GG + "pair_coeff 1 1 zero\n"), gap=3.1e-3)
+E("V46_every_start_stop_time", "run 3000 start 0 stop 10000 every 1000 variable t equal $(time); if t == 0.003 kn 5000 else 8000", 'run 3000 start 0 stop 10000 every 1000 "variable t equal $(time)"\n' + IFS("${t} == 0.003") + "run 1000\n", gap=3.1e-3)
+E("V47_every_elapsed", "run 3000 every 1000 variable e equal $(elapsed) (1000 after each part?); if e == 1000 kn 5000 else 8000", R3.format("variable e equal $(elapsed)") + IFS("${e} == 1000") + "run 1000\n", gap=3.1e-3)
+E("V48_every_elaplong", "run 3000 every 1000 variable e equal $(elaplong) (3000 at the end); if e == 3000 kn 5000 else 8000", R3.format("variable e equal $(elaplong)") + IFS("${e} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V49_plain_elapsed_after_run", "run 3000; if $(elapsed) == 3000 kn 5000 else 8000", "run 3000\n" + IFS("$(elapsed) == 3000") + "run 1000\n", gap=3.1e-3)
+E("V50_every_step_equal_not_immediate", "run 3000 every 1000 variable s equal step (no $: lazy); if ${s} == 3000 kn 5000 else 8000", R3.format("variable s equal step") + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V51_every_string_time_fmt", "every variable t string $(time:%.4f); if ${t} == 0.0030", R3.format("variable t string $(time:%.4f)") + IFS("${t} == 0.0030") + "run 1000\n", gap=3.1e-3)
+E("V52_every_step_var_run_length", "every variable s; run $(v_s/3) (run 1000 where LAMMPS is); the pair meets in it; then pair_coeff kn 8000 and run 0",
+  VS + "run $(v_s/3)\n" + P8() + "\nrun 0\n", gap=3.1e-3, live="run $(v_s/3)")
+E("V53_every_step_var_loop_count", "every variable s; variable i loop $(v_s/1000); loop sets kn 1000*i+2000 with run 0 between", VS + "variable i loop $(v_s/1000)\nlabel l\npair_coeff 1 2 hooke $(1000*v_i+2000) 3000 " + K + "\nrun 0\nnext i\njump SELF l\nrun 1000\n", gap=3.1e-3)
+E("V54_every_step_reset_timestep_after", "every variable s; reset_timestep 0; if ${s} == 3000 kn 5000 else 8000", VS + "reset_timestep 0\n" + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V55_every_step_in_fix_halt", "fix halt at step > 2500 (error continue) then every variable s: the run stops at 2501; if s == 2501 or not", "variable st equal step\nfix h all halt 1 v_st > 2500 error continue\n" + 'run 3000 every 1000 "variable s equal $(step)"\n'
+  + "unfix h\n" + IFS("${s} == 2000") + "run 2000\n", gap=2.6e-3)
+Q = lambda *a, **k: E(*a, **k)
+Q("Q22_like_change_pre_no_diam", "run 1000; set type 1 diameter 0.005 and pair_coeff 1 1 kn 8000 (1 2 explicit); run 3000 pre no", "run 1000\nset type 1 diameter 0.005\n" + P8("1", "1") + "\nrun 3000 pre no\n", gap=2.1e-3, sep=0.0055)
+Q("Q23_pre_no_after_exclude_none", "neigh_modify exclude type 1 1; run 1000; exclude none; run pre no (live 1 2)", "neigh_modify exclude type 1 1\nrun 1000\nneigh_modify exclude none\nrun 3000 pre no\n", gap=1.1e-3)
+Q("Q24_pre_no_every_timestep", "run 3000 pre no every 1000 timestep 5e-7", 'run 3000 pre no every 1000 "timestep 5e-7"\n', gap=1.55e-3)
+Q("Q25_pre_no_hertz_mass", "hertz/material; run 1000; set type 2 density 7800; run 3000 pre no", "run 1000\nset type 2 density 7800\nrun 3000 pre no\n", gap=1.1e-3, pre=BL(HM))
+Q("Q26_pre_no_like_hertz_unlike_mixed", "hertz/material 1 1, 2 2 only; run 1000; pair_coeff 2 2 E 3e7; run pre no; live pair 2 2", "run 1000\npair_coeff 2 2 hertz/material 3e7 1.4e7 0.3 damping viscoelastic " + TL + "\nrun 3000 pre no\n",
+  pre=r.MIXHM, pair=lv(1.1e-3, 2, 2, 0.006, 0.006), gap=1.1e-3, sep=0.006)
+EXTRA["Q26_pre_no_like_hertz_unlike_mixed"] = {"PAIR": "types 2 2"}
+Q("Q27_pre_no_diam_up_hertz_material_control", "Q06 without pre no", "run 1000\nset type 2 diameter 0.012\nrun 3000\n", gap=g41, sep=0.008, pre=BL(HM))
+Q("Q28_pre_no_diam_grow_small", "run 1000; set type 2 diameter 0.0064 (radius +0.2 mm, below the skin); run 3000 pre no", "run 1000\nset type 2 diameter 0.0064\nrun 3000 pre no\n", gap=1.3e-3, sep=0.0052)
+Q("Q29_pre_no_diam_grow_1mm", "run 1000; set type 2 diameter 0.008 (+1 mm radius); run 3000 pre no", "run 1000\nset type 2 diameter 0.008\nrun 3000 pre no\n", gap=2.1e-3, sep=0.006)
+Q("Q30_pre_no_diam_grow_2mm", "run 1000; set type 2 diameter 0.010 (+2 mm radius); run 3000 pre no", "run 1000\nset type 2 diameter 0.010\nrun 3000 pre no\n", gap=3.1e-3, sep=0.007)
+Q("Q31_pre_no_diam_lv1_grow", "run 1000; set type 1 diameter 0.010 (+3 mm radius of the 4 mm sphere); run 3000 pre no", "run 1000\nset type 1 diameter 0.010\nrun 3000 pre no\n", gap=4.1e-3, sep=0.008)
+Q("Q32_pre_no_diam_group", "run 1000; set group lv2 diameter 0.012; run 3000 pre no", "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+Q("Q33_every_pre_no_diam_big", "run 3000 pre no every 1000 set type 2 diameter 0.012 (live pair in part 3)", 'run 3000 pre no every 1000 "set type 2 diameter 0.012"\n', gap=5.1e-3, sep=0.008)
+W("Q34_wall_pre_no_diam", "wall live: run 1000; set type 1 diameter 0.012; run 3000 pre no (walls have no list)", "run 1000\nset type 1 diameter 0.012\nrun 3000 pre no\n", gap=1.1e-3 + 0.004)
+Ll("L13_pre_no_diam_up", "LIGGGHTS run 1000; set type 2 diameter 0.012; run 3000 pre no", "run 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=4.1e-3)
+Ll("L14_every_step_var_e", "LIGGGHTS every variable s equal $(step); e 1 2 by if (s == 3000: 0.9)", R3.format("variable s equal $(step)") + f'if "${{s}} == 3000" then "{E3x(0.9)}" else "{E3x(0.2)}"\nrun 1000\n', gap=3.1e-3)
+Ll("L15_limitForce_hooke_e05", "LIGGGHTS hooke limitForce on (characteristicVelocity set)", "run 3000\n", gap=0.1e-3, head_=LH("hooke", " limitForce on").replace("pair_style", "fix m10 all property/global characteristicVelocity scalar 1.0\npair_style"))
+Ll("L16_hooke_plain", "LIGGGHTS hooke (characteristicVelocity set), e 1 2 0.5", "run 3000\n", gap=0.1e-3, head_=LH("hooke").replace("pair_style", "fix m10 all property/global characteristicVelocity scalar 1.0\npair_style"))
+Ll("L17_neighbor_skin_after", "LIGGGHTS run 1000; neighbor 0.0001 bin; run 3000", "run 1000\nneighbor 0.0001 bin\nrun 3000\n", gap=1.1e-3)
+Ll("L18_dtreset_every", "LIGGGHTS every timestep $(dt*0.5) and e 1 2 0.9", 'run 3000 every 1000 "timestep $(dt*0.5)" "' + E3x(0.9) + '"\nrun 6000\n', gap=1.76e-3)
+Ll("L19_delete_region_later_place", "LIGGGHTS delete_atoms region where lv1 is after run 1000 (deleted: no contact)", "region r sphere {:.9g} 0 0.1 0.0003 units box\nrun 1000\ndelete_atoms region r\nrun 3000\n".format(-0.002 - 1.1e-3 / 2 + 0.7714285714e-3), gap=1.1e-3)
+
 def write_all(names):
     for n in names:
         m.write(n)
         if n in LIVE:
             open(os.path.join(m.D, n, "LIVE"), "w").write(LIVE[n].split("\nSEP")[0] + "\n")
+            for f, t in EXTRA.get(n, {}).items():
+                open(os.path.join(m.D, n, f), "w").write(t + "\n")
             if "\nSEP " in LIVE[n]:
                 open(os.path.join(m.D, n, "SEP"), "w").write(LIVE[n].split("\nSEP ")[1] + "\n")
 
