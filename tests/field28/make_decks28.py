@@ -40,7 +40,7 @@ IFS = lambda cond: f'if "{cond}" then "{P5()}" else "{P8()}"\n'
 # ------------------------------------------------------------ V: every with step/time variables and $(dt)
 VS = R3.format("variable s equal $(step)")
 E("V01_step_if_elif", "every variable s equal $(step); if s==1000 kn 8000 elif s==3000 kn 5000 else kn 1000; run 1000",
-  VS + f'if "${{s}} == 1000" then "{P8()}" elif "${{s}} == 3000" then "{P5()}" else "{P5("1", "2", 1000)}"\nrun 1000\n', gap=3.1e-3)
+  VS + f'if "${{s}} == 1000" then "{P8()}" elif "${{s}} == 3000" "{P5()}" else "{P5("1", "2", 1000)}"\nrun 1000\n', gap=3.1e-3)
 E("V02_step_loop_after", "every variable s; n = s/1000; loop i 1..n: pair_coeff 1 2 kn 1000*i+2000 (last 5000); run 1000",
   VS + "variable n equal ${s}/1000\nvariable i loop ${n}\nlabel l\npair_coeff 1 2 hooke $(1000*v_i+2000) 3000 " + K + "\nnext i\njump SELF l\nrun 1000\n", gap=3.1e-3)
 E("V03_time_dtchange_hi", "every timestep 5e-7 + variable t equal $(time) (LAMMPS t 2e-3); if t > 0.0025 kn 8000 else 5000; run 2000",
@@ -71,7 +71,7 @@ E("V15_triple_quote", "every with a triple-quoted pair_coeff and a single-quoted
 E("V16_dt_after_timestep_same_every", "every timestep 5e-7 then pair_coeff 1 2 hooke $(dt*1e10) (kn 5000: the dt just set)",
   'run 3000 every 1000 "timestep 5e-7" "pair_coeff 1 2 hooke $(dt*1e10) 3000 ' + K + '"\n', gap=1.55e-3)
 E("V17_dt_before_timestep_same_every", "every pair_coeff 1 2 hooke $(dt*5e9) then timestep $(dt*0.5): kn 5000, 2500 (part 3: 2500); run 4000 after",
-  'run 3000 every 1000 "pair_coeff 1 2 hooke $(dt*5e9) 3000 ' + K + '" "timestep $(dt*0.5)"\nrun 4000\n', gap=1.76e-3)
+  'run 3000 every 1000 "pair_coeff 1 2 hooke $(dt*5e9) 3000 ' + K + '" "timestep $(dt*0.5)"\nrun 16000\n', gap=1.76e-3)
 E("V18_dt_density", "every set type 2 density $(dt*7.8e9) (7800)", R3.format("set type 2 density $(dt*7.8e9)"))
 W("V19_dt_wall", "wall live: every fix floor kn $(dt*8e9) (8000)", R3.format("fix floor all wall/gran granular hooke $(dt*8e9) 3000 " + K + " zplane 0 NULL"))
 E("V20_dollar_brace_step_var", "every variable s equal $(step) then pair_coeff 1 2 hooke ${s} (part 3: kn 2000)",
@@ -379,7 +379,7 @@ E("N25_nsq_after_run", "every cutoff 0.001; run 1000; neighbor 0.001 nsq; run 30
 E("N26_skin_pre_no", "every cutoff 0.001; run 1000; neighbor 0.01 bin; run 3000 pre no (no new set-up: the old lists' reach?)", "run 1000\nneighbor 0.01 bin\nrun 3000 pre no\n", pre=CU(0.001), gap=1.1e-3)
 E("N27_clear_skin", "neighbor 0.01 bin; clear; base with cutoff 0.001 (skin back to 0.001)", "neighbor 0.01 bin\nclear\n" + CU(0.001) + lv(0.1e-3) + "run 3000\n", pre=BL(), live="the run after clear")
 W("N28_wall_small_cutoff", "wall live: every cutoff 0.001 for pairs (walls have no list)", "run 3000\n", pre=CU(0.001), gap=0.1e-3)
-E("V44_every_dt_neighbor", "every timestep $(dt*0.5) and pair_coeff 1 2 hooke $(dt*5e9) (after part 2: dt 2.5e-7 first then kn 1250)", 'run 3000 every 1000 "timestep $(dt*0.5)" "pair_coeff 1 2 hooke $(dt*5e9) 3000 ' + K + '"\nrun 4000\n', gap=1.76e-3)
+E("V44_every_dt_neighbor", "every timestep $(dt*0.5) and pair_coeff 1 2 hooke $(dt*5e9) (after part 2: dt 2.5e-7 first then kn 1250)", 'run 3000 every 1000 "timestep $(dt*0.5)" "pair_coeff 1 2 hooke $(dt*5e9) 3000 ' + K + '"\nrun 16000\n', gap=1.76e-3)
 E("V45_every_step_var_then_if_pair_none_hybrid", "hybrid granular zero; every variable s; if s==3000 pair_coeff 1 2 zero else nothing (passes)", VS + 'if "${s} == 3000" then "pair_coeff 1 2 zero"\nrun 1000\n',
   pre=HYB("hybrid granular zero 0.01", GG + "pair_coeff 1 1 zero\n"), gap=3.1e-3)
 E("V46_every_start_stop_time", "run 3000 start 0 stop 10000 every 1000 variable t equal $(time); if t == 0.003 kn 5000 else 8000", 'run 3000 start 0 stop 10000 every 1000 "variable t equal $(time)"\n' + IFS("${t} == 0.003") + "run 1000\n", gap=3.1e-3)
@@ -397,7 +397,7 @@ E("V55_every_step_in_fix_halt", "fix halt at step > 2500 (error continue) then e
 Q = lambda *a, **k: E(*a, **k)
 Q("Q22_like_change_pre_no_diam", "run 1000; set type 1 diameter 0.005 and pair_coeff 1 1 kn 8000 (1 2 explicit); run 3000 pre no", "run 1000\nset type 1 diameter 0.005\n" + P8("1", "1") + "\nrun 3000 pre no\n", gap=2.1e-3, sep=0.0055)
 Q("Q23_pre_no_after_exclude_none", "neigh_modify exclude type 1 1; run 1000; exclude none; run pre no (live 1 2)", "neigh_modify exclude type 1 1\nrun 1000\nneigh_modify exclude none\nrun 3000 pre no\n", gap=1.1e-3)
-Q("Q24_pre_no_every_timestep", "run 3000 pre no every 1000 timestep 5e-7", 'run 3000 pre no every 1000 "timestep 5e-7"\n', gap=1.55e-3)
+Q("Q24_pre_no_every_timestep", "run 3000 pre no every 1000 timestep 5e-7, then run 2000 (the contact ends there)", 'run 3000 pre no every 1000 "timestep 5e-7"\nrun 2000\n', gap=1.55e-3)
 Q("Q25_pre_no_hertz_mass", "hertz/material; run 1000; set type 2 density 7800; run 3000 pre no", "run 1000\nset type 2 density 7800\nrun 3000 pre no\n", gap=1.1e-3, pre=BL(HM))
 Q("Q26_pre_no_like_hertz_unlike_mixed", "hertz/material 1 1, 2 2 only; run 1000; pair_coeff 2 2 E 3e7; run pre no; live pair 2 2", "run 1000\npair_coeff 2 2 hertz/material 3e7 1.4e7 0.3 damping viscoelastic " + TL + "\nrun 3000 pre no\n",
   pre=r.MIXHM, pair=lv(1.1e-3, 2, 2, 0.006, 0.006), gap=1.1e-3, sep=0.006)
@@ -417,6 +417,51 @@ Ll("L16_hooke_plain", "LIGGGHTS hooke (characteristicVelocity set), e 1 2 0.5", 
 Ll("L17_neighbor_skin_after", "LIGGGHTS run 1000; neighbor 0.0001 bin; run 3000", "run 1000\nneighbor 0.0001 bin\nrun 3000\n", gap=1.1e-3)
 Ll("L18_dtreset_every", "LIGGGHTS every timestep $(dt*0.5) and e 1 2 0.9", 'run 3000 every 1000 "timestep $(dt*0.5)" "' + E3x(0.9) + '"\nrun 6000\n', gap=1.76e-3)
 Ll("L19_delete_region_later_place", "LIGGGHTS delete_atoms region where lv1 is after run 1000 (deleted: no contact)", "region r sphere {:.9g} 0 0.1 0.0003 units box\nrun 1000\ndelete_atoms region r\nrun 3000\n".format(-0.002 - 1.1e-3 / 2 + 0.7714285714e-3), gap=1.1e-3)
+
+# ------------------------------------------------------------ batch 3: around SW1 (pre no, sizes), SW2 (lists after the first run), SW3
+Q("Q35_pre_no_diam_include", "Q01 with the set in an include", "run 1000\ninclude g.in\nrun 3000 pre no\n", gap=g41, sep=0.008, data={"g.in": "set type 2 diameter 0.012\n"})
+Q("Q36_pre_no_diam_variable", "Q01 with the diameter from a variable", "variable d equal 0.012\nrun 1000\nset type 2 diameter ${d}\nrun 3000 pre no\n", gap=g41, sep=0.008)
+Q("Q37_pre_no_diam_then_run0", "Q01 with run 0 before the pre no run (set up again)", "run 1000\nset type 2 diameter 0.012\nrun 0\nrun 3000 pre no\n", gap=g41, sep=0.008)
+Q("Q38_pre_no_diam_two_pre_no", "run 1000; set diameter 0.012; run 100 pre no; run 3000 pre no (still stale?)", "run 1000\nset type 2 diameter 0.012\nrun 100 pre no\nrun 3000 pre no\n", gap=g41 + 0.1e-3, sep=0.008)
+Q("Q39_pre_no_diam_labels", "labels; run 1000; set type big diameter 0.012; run 3000 pre no", "labelmap atom 1 small 2 big\nrun 1000\nset type big diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+Q("Q40_pre_no_diam_first_run_then", "set diameter 0.012 BEFORE run 1000 (set up), then run 3000 pre no (nothing changed)", "set type 2 diameter 0.012\nrun 1000\nrun 3000 pre no\n", gap=1.1e-3 + 0.003, sep=0.008)
+Q("Q41_pre_no_create_near", "run 1000; create lv2 (type 2) 0.1 mm ahead of lv1; run 3000 pre no (a new atom, no set-up)",
+  "run 1000\ncreate_atoms 2 single {:.9g} 0.02 0.05\nset atom 2 diameter 0.006 density 2500\ngroup lv2 id 2\nvelocity lv2 set -0.2285714286 0 0 units box\nrun 3000 pre no\n".format(XA0(0) + 0.00077142857 + 0.002 + 0.0001 + 0.003),
+  pair=f"create_atoms 1 single {XA0(0):.9g} 0.02 0.05\nset atom 1 diameter 0.004 density 2500\ngroup lv1 id 1\nvelocity lv1 set 0.7714285714 0 0 units box\n", gap=0)
+Q("Q42_pre_no_displace_close", "run 1000 (pair 10 mm apart); displace_atoms lv2 to 0.1 mm from lv1; run 3000 pre no", "run 1000\ndisplace_atoms lv2 move -0.0099 0 0 units box\nrun 3000 pre no\n", gap=0.0111)
+Q("Q43_pre_no_mass_and_diam_hertz", "hertz/material; run 1000; set type 2 diameter 0.008 density 7800; run 3000 pre no", "run 1000\nset type 2 diameter 0.008 density 7800\nrun 3000 pre no\n", gap=2.1e-3, sep=0.006, pre=BL(HM))
+Q("Q44_pre_no_diam_every_first_part", "run 3000 pre no every 1000 set type 2 diameter 0.012; the pair meets in part 2 (just after the growth)", 'run 3000 pre no every 1000 "set type 2 diameter 0.012"\n', gap=4.1e-3, sep=0.008, live="part 2")
+Q("Q45_pre_no_diam_neigh_every10", "neigh_modify every 10 delay 0 check yes; Q01", "neigh_modify every 10 delay 0 check yes\nrun 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+Ll("L20_pre_no_diam_hooke", "LIGGGHTS hooke; run 1000; set type 2 diameter 0.012; run 3000 pre no", "run 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=4.1e-3,
+   head_=LH("hooke").replace("pair_style", "fix m10 all property/global characteristicVelocity scalar 1.0\npair_style"))
+Ll("L21_pre_no_diam_control", "LIGGGHTS L13 without pre no", "run 1000\nset type 2 diameter 0.012\nrun 3000\n", gap=4.1e-3)
+for nme in ("L13_pre_no_diam_up", "L20_pre_no_diam_hooke", "L21_pre_no_diam_control"):
+    EXTRA.setdefault(nme, {})["SEP"] = "0.008"
+E("N29_neigh_once", "neigh_modify once yes; the pair 2.1 mm apart at the start (beyond the skin): never in a list", "neigh_modify once yes\nrun 3000\n", gap=2.1e-3)
+E("N30_neigh_every2000_nocheck", "neigh_modify every 2000 delay 0 check no; gap 1.5 mm: missed until step 2000", "neigh_modify every 2000 delay 0 check no\nrun 3000\n", gap=1.5e-3)
+E("N31_neigh_once_after_run", "run 1000; neigh_modify once yes; run 3000 (gap 2.1 mm at its start)", "run 1000\nneigh_modify once yes\nrun 3000\n", gap=3.1e-3)
+E("N32_neigh_delay_big", "neigh_modify delay 2000 every 1 check yes; gap 1.5 mm", "neigh_modify delay 2000 every 1 check yes\nrun 3000\n", gap=1.5e-3)
+E("N33_neigh_once_close", "neigh_modify once yes; the pair 0.1 mm apart at the start (inside the skin: listed)", "neigh_modify once yes\nrun 3000\n", gap=0.1e-3)
+E("N34_skin_after_run_big_cutoffs", "default cutoffs; run 1000; neighbor 0.0 bin; run 3000 (reach = radii: first touch?)", "run 1000\nneighbor 0.0 bin\nrun 3000\n", gap=1.1e-3)
+E("N35_skin_small_then_big_include", "every cutoff 0.001; neighbor 0.01 bin; run 1000; include with neighbor 0.001 bin; run 3000 (N19 via include)", "neighbor 0.01 bin\nrun 1000\ninclude nb.in\nrun 3000\n", pre=CU(0.001), gap=1.1e-3, data={"nb.in": "neighbor 0.001 bin\n"})
+E("N36_skin_big_then_small_every", "every cutoff 0.001; neighbor 0.01 bin; run 3000 every 1000 neighbor 0.001 bin (parts 2, 3 reach 0.002)", "neighbor 0.01 bin\n" + R3.format("neighbor 0.001 bin"), pre=CU(0.001), gap=2.1e-3)
+E("N37_skin_big_then_small_hertz", "hertz/material, every cutoff 0.001; neighbor 0.01; run; neighbor 0.001; run", "neighbor 0.01 bin\nrun 1000\nneighbor 0.001 bin\nrun 3000\n", pre=BL(HM + " cutoff 0.001"), gap=1.1e-3)
+E("N38_skin_then_clear_loop", "loop 2: clear, base with cutoff 0.001, neighbor 0.01 in pass 1 only; run (pass 2 reach 0.002)", "", pair="", live="pass 2",
+  pre='variable i loop 2\nlabel l\nclear\n' + CU(0.001) + 'if "$i == 1" then "neighbor 0.01 bin"\n' + lv(0.1e-3) + "run 3000\nnext i\njump SELF l\n")
+E("N39_global_cutoff_skin_after", "pair_style granular 0.001; neighbor 0.01 bin; run 1000; neighbor 0.001 bin; run 3000", "neighbor 0.01 bin\nrun 1000\nneighbor 0.001 bin\nrun 3000\n",
+  pre=head(2) + "pair_style granular 0.001\npair_coeff * * " + HK + "\n" + GRAV + FL() + TAILL, gap=1.1e-3)
+DB2 = lambda: BL(nt=3) + ("create_atoms 1 single 0.01 0.01 0.01\ncreate_atoms 2 single 0.03 0.03 0.01\nset atom 1 diameter 0.002 density 2500\nset atom 2 diameter 0.006 density 2500\n")
+for seed in (12, 13, 14, 11):
+    E(f"R3{seed - 6}_delete_random_small_victim{seed}", f"a 2 mm type-1 victim (id 1) and lv1 (4 mm, id 3) in group t1; after run 1000 delete_atoms random count 1 yes t1 NULL {seed}",
+      "group t1 type 1\nrun 1000\ndelete_atoms random count 1 yes t1 NULL " + str(seed) + "\nrun 3000\n", gap=g11, pre=DB2(), pair=lvi(g11))
+E("R39_delete_random_small_control", "control for R35-R38: the 2 mm victim and a live 2 mm type-1 sphere against lv2 (6 mm), no delete", "run 3000\n", gap=0.1e-3, pre=BL(nt=3), pair=lvi(0.1e-3, (1, 2), da=0.002), sep=0.004)
+E("R70_type_fraction_include", "R22 with the set in an include", "run 1000\ninclude t.in\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)), data={"t.in": "set group lv1 type/fraction 3 0.5 2\n"})
+E("R71_type_fraction_type_style", "after run 1000: set type 1 type/fraction 3 0.5 2 (by type, not group)", "run 1000\nset type 1 type/fraction 3 0.5 2\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("R72_type_fraction_seed5_atom", "after run 1000: set atom 1 type/fraction 3 0.5 5", "run 1000\nset atom 1 type/fraction 3 0.5 5\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+for nme in ("R70_type_fraction_include", "R71_type_fraction_type_style", "R72_type_fraction_seed5_atom"):
+    EXTRA[nme] = {"PAIR": "types 1 2"}
+Ll("L22_type_fraction_after_run", "LIGGGHTS run 1000; set group lv1 type/fraction 3 0.5 2; run 3000", "run 1000\nset group lv1 type/fraction 3 0.5 2\nrun 3000\n", gap=1.1e-3)
+Ll("L23_skin_big_then_small", "LIGGGHTS neighbor 0.01 bin; run 1000; neighbor 0.0001 bin; run 3000", "neighbor 0.01 bin\nrun 1000\nneighbor 0.0001 bin\nrun 3000\n", gap=1.1e-3)
 
 def write_all(names):
     for n in names:
