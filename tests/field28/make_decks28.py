@@ -463,6 +463,30 @@ for nme in ("R70_type_fraction_include", "R71_type_fraction_type_style", "R72_ty
 Ll("L22_type_fraction_after_run", "LIGGGHTS run 1000; set group lv1 type/fraction 3 0.5 2; run 3000", "run 1000\nset group lv1 type/fraction 3 0.5 2\nrun 3000\n", gap=1.1e-3)
 Ll("L23_skin_big_then_small", "LIGGGHTS neighbor 0.01 bin; run 1000; neighbor 0.0001 bin; run 3000", "neighbor 0.01 bin\nrun 1000\nneighbor 0.0001 bin\nrun 3000\n", gap=1.1e-3)
 
+# ------------------------------------------------------------ batch 4: edges of SW1-SW3, the segfault refusal (V23)
+E("N40_neigh_every2000_after_run", "run 1000; neigh_modify every 2000 delay 0 check no; run 3000 (gap 2.5 mm at its start: missed until a build)", "run 1000\nneigh_modify every 2000 delay 0 check no\nrun 3000\n", gap=2.5e-3)
+E("N41_neigh_every2000_then_default", "neigh_modify every 2000 check no; run 1000; neigh_modify every 1 delay 0 check yes; run 3000 (fresh lists in the last run)", "neigh_modify every 2000 delay 0 check no\nrun 1000\nneigh_modify every 1 delay 0 check yes\nrun 3000\n", gap=1.1e-3)
+E("N42_nsq_then_bin_after_run", "every cutoff 0.001; neighbor 0.001 nsq; run 1000; neighbor 0.001 bin; run 3000", "neighbor 0.001 nsq\nrun 1000\nneighbor 0.001 bin\nrun 3000\n", pre=CU(0.001), gap=1.1e-3)
+E("N43_skin_big_then_small_pre_no", "every cutoff 0.001; neighbor 0.01 bin; run 1000; neighbor 0.001 bin; run 3000 pre no", "neighbor 0.01 bin\nrun 1000\nneighbor 0.001 bin\nrun 3000 pre no\n", pre=CU(0.001), gap=1.1e-3)
+E("N44_skin_big_small_big", "every cutoff 0.001; neighbor 0.01; run 1000; neighbor 0.001; run 1000; neighbor 0.01; run 3000 (the pair meets in the last)", "neighbor 0.01 bin\nrun 1000\nneighbor 0.001 bin\nrun 1000\nneighbor 0.01 bin\nrun 3000\n", pre=CU(0.001), gap=2.1e-3)
+E("N45_skin_small_big_small", "every cutoff 0.001; neighbor 0.001; run 1000; neighbor 0.01; run 1000 (the pair meets in it); neighbor 0.001; run 1000", "run 1000\nneighbor 0.01 bin\nrun 1000\nneighbor 0.001 bin\nrun 1000\n", pre=CU(0.001), gap=1.1e-3, live="the second run")
+E("N46_skin_cutoff_0035_after", "every cutoff 0.0035; neighbor 0.01 bin; run 1000; neighbor 0.0005 bin; run 3000 (reach 0.004 < 0.005)", "neighbor 0.01 bin\nrun 1000\nneighbor 0.0005 bin\nrun 3000\n", pre=CU(0.0035), gap=1.1e-3)
+Ll("L24_skin_after_run_small_cutoff_hertz", "LIGGGHTS neighbor 0.01 bin; run 1000; neighbor 0.00001 bin; run 3000 (sizes-based lists)", "neighbor 0.01 bin\nrun 1000\nneighbor 0.00001 bin\nrun 3000\n", gap=1.1e-3)
+Q("Q46_pre_no_diam_big_skin_after", "run 1000; neighbor 0.005 bin; set type 2 diameter 0.012; run 3000 pre no (skin 5 mm > growth, but not set up)", "run 1000\nneighbor 0.005 bin\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+Q("Q47_pre_no_diam_skin5_from_start", "neighbor 0.005 bin from the start; run 1000; set type 2 diameter 0.012; run 3000 pre no (control of the edge)", "run 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008, pre=BL() + "neighbor 0.005 bin\n")
+Q("Q48_pre_no_diam_growth_0p4", "run 1000; set type 2 diameter 0.0068 (radius +0.4 mm, below the skin 1 mm); run 3000 pre no", "run 1000\nset type 2 diameter 0.0068\nrun 3000 pre no\n", gap=1.5e-3, sep=0.0054)
+Q("Q49_pre_no_diam_growth_0p8", "run 1000; set type 2 diameter 0.0076 (radius +0.8 mm); run 3000 pre no", "run 1000\nset type 2 diameter 0.0076\nrun 3000 pre no\n", gap=1.9e-3, sep=0.0058)
+Q("Q50_pre_no_diam_in_loop", "loop 2: run 500; set type 2 diameter 0.012 in pass 2 then run 3000 pre no", 'variable i loop 2\nlabel l\nrun 500\nnext i\njump SELF l\nset type 2 diameter 0.012\nrun 3000 pre no\n', gap=g41, sep=0.008)
+E("R73_type_fraction_one", "after run 1000: set group lv1 type/fraction 3 1.0 2 (every atom: no draw matters)", "run 1000\nset group lv1 type/fraction 3 1.0 2\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+EXTRA["R73_type_fraction_one"] = {"PAIR": "types 2 3"}
+E("R74_type_fraction_zero", "after run 1000: set group lv1 type/fraction 3 0.0 2 (no atom)", "run 1000\nset group lv1 type/fraction 3 0.0 2\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("R75_type_fraction_lv2", "after run 1000: set group lv2 type/fraction 3 0.5 2 (the 6 mm sphere); 1 3 kn 8000", "run 1000\nset group lv2 type/fraction 3 0.5 2\n" + P8("1", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("R76_type_fraction_lv2_seed9", "as R75 with seed 9", "run 1000\nset group lv2 type/fraction 3 0.5 9\n" + P8("1", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("R77_type_fraction_every", "run 3000 every 1000 set group lv1 type/fraction 3 0.5 2; 2 3 kn 8000 (live pair in part 3)", P8("2", "3") + "\n" + R3.format("set group lv1 type/fraction 3 0.5 2"), pre=BL(nt=3), pair=lvi(2.1e-3, (1, 2)), gap=2.1e-3)
+E("V56_step_density_plus_one", "every variable s; set type 2 density $(v_s+1) (V23 without a zero in a pass at step 0)", VS + "set type 2 density $(v_s+1)\nrun 1000\n", gap=3.1e-3)
+E("V57_step_diameter", "every variable s; set type 2 diameter $(0.006+v_s*1e-7) (6.3 mm)", VS + "set type 2 diameter $(0.006+v_s*1e-7)\nrun 1000\n", gap=3.1e-3 + 0.00015, sep=0.00515)
+E("V58_step_mass_zero_guard", "every variable s; set type 2 mass $(v_s*1e-7) (3e-4 kg; 0 at step 0)", VS + "set type 2 mass $(v_s*1e-7)\nrun 1000\n", gap=3.1e-3)
+
 def write_all(names):
     for n in names:
         m.write(n)
