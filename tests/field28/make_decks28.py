@@ -487,6 +487,34 @@ E("V56_step_density_plus_one", "every variable s; set type 2 density $(v_s+1) (V
 E("V57_step_diameter", "every variable s; set type 2 diameter $(0.006+v_s*1e-7) (6.3 mm)", VS + "set type 2 diameter $(0.006+v_s*1e-7)\nrun 1000\n", gap=3.1e-3 + 0.00015, sep=0.00515)
 E("V58_step_mass_zero_guard", "every variable s; set type 2 mass $(v_s*1e-7) (3e-4 kg; 0 at step 0)", VS + "set type 2 mass $(v_s*1e-7)\nrun 1000\n", gap=3.1e-3)
 
+# ------------------------------------------------------------ batch 5: commands that write or run outside the deck (canaries under /tmp, named f28_*), next in an every
+CAN = "/tmp/f28_canary_"
+E("S01_shell_top", "shell touch a canary at the top level (LAMMPS runs it; the audit must not)", f"shell touch {CAN}S01\nrun 3000\n", gap=0.1e-3)
+E("S02_shell_every", "shell touch in an every", R3.format(f"shell touch {CAN}S02"))
+E("S03_log_abs", "log to an absolute path", f"log {CAN}S03.log\nrun 3000\n", gap=0.1e-3)
+E("S04_print_file_top", "print to an absolute file", f'print "x" file {CAN}S04.txt\nrun 3000\n', gap=0.1e-3)
+E("S05_print_append_every", "print append to an absolute file in an every", "run 3000 every 1000 'print \"x\" append " + CAN + "S05.txt'\n")
+E("S06_write_dump_after_run", "write_dump after a run (runs made for real: a step read later)", f"run 1000\nwrite_dump all atom {CAN}S06.dump\n" + IFS("$(step) == 1000") + "run 3000\n", gap=1.1e-3)
+E("S07_fix_print_file", "fix print to an absolute file during the runs, a step read later (runs made for real)", f'fix fp all print 100 "x" file {CAN}S07.txt screen no\nrun 1000\n' + IFS("$(step) == 1000") + "run 3000\n", gap=1.1e-3)
+E("S08_write_restart_abs", "write_restart to an absolute path", f"write_restart {CAN}S08.rst\nrun 3000\n", gap=0.1e-3)
+E("S09_restart_every_abs", "restart 500 to an absolute path; a step read later (runs made for real)", f"restart 500 {CAN}S09.*\nrun 1000\n" + IFS("$(step) == 1000") + "run 3000\n", gap=1.1e-3)
+E("S10_dump_abs_made_runs", "dump to an absolute path; runs made for real (a set by region after a run)", f"dump d all atom 100 {CAN}S10.dump\nregion far block 0 0.04 0 0.04 0.09 0.1 units box\nrun 1000\nset region far density 3000\nrun 3000\n", gap=1.1e-3)
+E("S11_write_data_every_abs", "write_data in an every to an absolute path", R3.format(f"write_data {CAN}S11.data"))
+E("S12_shell_cd", "shell cd .. then write_data x (relative to the changed cwd)", "shell cd ..\nwrite_data f28_canary_S12.data\nrun 3000\n", gap=0.1e-3)
+E("V59_every_next", "variable i loop 5; run 3000 every 1000 next i (i = 4 after); if i == 4 kn 5000 else 8000", "variable i loop 5\n" + R3.format("next i") + IFS("${i} == 4") + "run 1000\n", gap=3.1e-3)
+E("V60_every_variable_delete", "variable s equal 1; run 3000 every 1000 variable s delete + variable s equal $(step)", "variable s equal 1\n" + 'run 3000 every 1000 "variable s delete" "variable s equal $(step)"\n' + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V61_every_label_var_print", "every print with a format of the step: print $(step:%08d)", R3.format("print $(step:%08d)") + P5() + "\nrun 1000\n", gap=3.1e-3)
+
+# ------------------------------------------------------------ batch 6: around V60 (a step variable deleted and made again in an every)
+E("V62_every_delete_define_no_prior", "no prior s; run 3000 every 1000 variable s delete + variable s equal $(step); if s == 3000 kn 5000 else 8000", 'run 3000 every 1000 "variable s delete" "variable s equal $(step)"\n' + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V63_prior_def_every_define", "variable s equal 1 first; run 3000 every 1000 variable s equal $(step) (no delete); if s == 3000", "variable s equal 1\n" + VS + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V64_prior_string_every_string", "variable s string x first; every variable s string $(step); if s == 3000", "variable s string x\n" + R3.format("variable s string $(step)") + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V65_delete_after_every", "every variable s; variable s delete; variable s equal $(step) outside (3000); if s == 3000", VS + "variable s delete\nvariable s equal $(step)\n" + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V66_every_define_then_delete", "every variable t equal $(step) + variable s equal ${t}? no: every variable s equal $(step) + variable s delete + variable s equal $(2*step)", 'run 3000 every 1000 "variable s equal $(step)" "variable s delete" "variable s equal $(2*step)"\n' + IFS("${s} == 6000") + "run 1000\n", gap=3.1e-3)
+E("V67_prior_equal_step_lazy_every_delete", "variable s equal step (lazy) first; every variable s delete + variable s equal $(step)", "variable s equal step\n" + 'run 3000 every 1000 "variable s delete" "variable s equal $(step)"\n' + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V68_prior_def_delete_kn", "variable k equal 8000 first; every variable k delete + variable k equal $(step+2000); pair_coeff 1 2 hooke ${k}", "variable k equal 8000\n" + 'run 3000 every 1000 "variable k delete" "variable k equal $(step+2000)"\n' + "pair_coeff 1 2 hooke ${k} 3000 " + K + "\nrun 1000\n", gap=3.1e-3)
+E("V69_every_delete_only_then_define", "variable s equal 1; run 3000 every 1000 variable s delete; variable s equal $(step) after", "variable s equal 1\n" + R3.format("variable s delete") + "variable s equal $(step)\n" + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+
 def write_all(names):
     for n in names:
         m.write(n)
