@@ -515,6 +515,31 @@ E("V67_prior_equal_step_lazy_every_delete", "variable s equal step (lazy) first;
 E("V68_prior_def_delete_kn", "variable k equal 8000 first; every variable k delete + variable k equal $(step+2000); pair_coeff 1 2 hooke ${k}", "variable k equal 8000\n" + 'run 3000 every 1000 "variable k delete" "variable k equal $(step+2000)"\n' + "pair_coeff 1 2 hooke ${k} 3000 " + K + "\nrun 1000\n", gap=3.1e-3)
 E("V69_every_delete_only_then_define", "variable s equal 1; run 3000 every 1000 variable s delete; variable s equal $(step) after", "variable s equal 1\n" + R3.format("variable s delete") + "variable s equal $(step)\n" + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
 
+# ------------------------------------------------------------ batch 7: SW4 reach (where the prior definition comes from, how it is read later)
+E("V70_prior_def_include", "variable s equal 1 in an include; every variable s equal $(step); if s == 3000", "include v.in\n" + VS + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3, data={"v.in": "variable s equal 1\n"})
+E("V71_prior_def_lazy_use", "variable s equal 1; every variable s equal $(step); variable b equal v_s*2; if b == 6000", "variable s equal 1\n" + VS + "variable b equal v_s*2\n" + IFS("${b} == 6000") + "run 1000\n", gap=3.1e-3)
+E("V72_prior_def_density", "variable s equal 2500; every variable s equal $(step+2000) (5000); set type 2 density ${s}", "variable s equal 2500\n" + R3.format("variable s equal $(step+2000)") + "set type 2 density ${s}\nrun 1000\n", gap=3.1e-3)
+E("V73_prior_def_wall_time", "variable t equal 0; every variable t equal $(time) (3e-3); if t > 0.002 kn 5000 else 8000", "variable t equal 0\n" + R3.format("variable t equal $(time)") + IFS("${t} > 0.002") + "run 1000\n", gap=3.1e-3)
+E("V74_prior_def_after_run", "run 1000; variable s equal 1; every variable s equal $(step) (4000); if s == 4000", "run 1000\nvariable s equal 1\n" + VS + IFS("${s} == 4000") + "run 1000\n", gap=4.1e-3)
+E("V75_prior_def_loop_style", "variable s loop 3 (a loop variable); every variable s delete + variable s equal $(step); if s == 3000", "variable s loop 3\n" + 'run 3000 every 1000 "variable s delete" "variable s equal $(step)"\n' + IFS("${s} == 3000") + "run 1000\n", gap=3.1e-3)
+E("V76_prior_def_step_part2", "variable s equal 1; run 3000 every 1000 variable s + pair_coeff 1 2 kn 5000 (the if after the run; pair meets in part 3)", "variable s equal 1\n" + 'run 3000 every 1000 "variable s equal $(step)" "' + P5() + '"\n' + f'if "${{s}} == 3000" then "{P8()}"\nrun 1000\n', gap=3.1e-3)
+W("V77_prior_def_wall", "wall live: variable s equal 1; every variable s equal $(step); fix floor kn $(v_s+5000) (8000); run 1000", "variable s equal 1\n" + VS + "fix floor all wall/gran granular hooke $(v_s+5000) 3000 " + K + " zplane 0 NULL\nrun 1000\n", gap=3.1e-3)
+Ll("L25_prior_def_every_step", "LIGGGHTS variable s equal 1; every variable s equal $(step); if s == 3000 e 1 2 0.9 else 0.2", "variable s equal 1\n" + R3.format("variable s equal $(step)") + f'if "${{s}} == 3000" then "{E3x(0.9)}" else "{E3x(0.2)}"\nrun 1000\n', gap=3.1e-3)
+E("N47_neigh_delay_then_default", "neigh_modify delay 2000; run 1000; neigh_modify delay 0 every 1 check yes; run 3000 (fresh lists in the last run)", "neigh_modify delay 2000 every 1 check yes\nrun 1000\nneigh_modify delay 0 every 1 check yes\nrun 3000\n", gap=1.1e-3)
+E("N48_neigh_once_then_no", "neigh_modify once yes; run 1000; neigh_modify once no; run 3000", "neigh_modify once yes\nrun 1000\nneigh_modify once no\nrun 3000\n", gap=1.1e-3)
+
+# ------------------------------------------------------------ batch 8: X07's crash (a region wall whose region is deleted and made again, then run pre no)
+RW = "region cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box\nfix rw all wall/gran/region granular " + HK + " region cyl\n"
+E("Q51_region_redefined_pre_no", "region wall; run 1000; region cyl delete + made again (same shape); run 3000 pre no", "run 1000\nregion cyl delete\nregion cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box\nrun 3000 pre no\n", pre=BL() + RW, gap=1.1e-3)
+E("Q52_region_redefined_run", "Q51 without pre no (control)", "run 1000\nregion cyl delete\nregion cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box\nrun 3000\n", pre=BL() + RW, gap=1.1e-3)
+E("Q53_region_redefined_every", "region wall; run 3000 every 1000 region cyl delete + made again", 'run 3000 every 1000 "region cyl delete" "region cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box"\n', pre=BL() + RW, gap=2.1e-3)
+E("Q54_region_redefined_pre_no_every", "region wall; run 3000 pre no every 1000 region cyl delete + made again", 'run 3000 pre no every 1000 "region cyl delete" "region cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box"\n', pre=BL() + RW, gap=2.1e-3)
+
+E("Q55_region_rotating_redefined_pre_no", "region wall; run 1000; region cyl delete + made again rotating by a variable of the step (X07's form); run 3000 pre no",
+  "run 1000\nregion cyl delete\nvariable th equal (step-1000)*1e-3\nregion cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box rotate v_th 0.02 0.02 0 0 0 1\nrun 3000 pre no\n", pre=BL() + RW, gap=1.1e-3)
+E("Q56_region_rotating_redefined_run", "Q55 without pre no (control)",
+  "run 1000\nregion cyl delete\nvariable th equal (step-1000)*1e-3\nregion cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box rotate v_th 0.02 0.02 0 0 0 1\nrun 3000\n", pre=BL() + RW, gap=1.1e-3)
+
 def write_all(names):
     for n in names:
         m.write(n)
