@@ -540,6 +540,19 @@ E("Q55_region_rotating_redefined_pre_no", "region wall; run 1000; region cyl del
 E("Q56_region_rotating_redefined_run", "Q55 without pre no (control)",
   "run 1000\nregion cyl delete\nvariable th equal (step-1000)*1e-3\nregion cyl cylinder z 0.02 0.02 0.019 0 0.1 side in units box rotate v_th 0.02 0.02 0 0 0 1\nrun 3000\n", pre=BL() + RW, gap=1.1e-3)
 
+# ------------------------------------------------------------ batch 9: files the deck writes outside runs and reads back; random draws the runs consume
+E("T01_print_file_include", "print a pair_coeff line (kn 5000) to kn.in at the top level; include kn.in", 'print "' + P5() + '" file kn.in screen no\ninclude kn.in\nrun 3000\n', gap=0.1e-3)
+E("T02_print_file_variable_file", "print 5000 to kn.txt; variable k file kn.txt; pair_coeff 1 2 hooke ${k}", 'print "5000" file kn.txt screen no\nvariable k file kn.txt\npair_coeff 1 2 hooke ${k} 3000 ' + K + "\nrun 3000\n", gap=0.1e-3)
+E("T03_print_append_include", "print append two lines (kn 5000 then kn 8000) to kn.in; include kn.in (kn 8000)", 'print "' + P5() + '" append kn.in screen no\nprint "' + P8() + '" append kn.in screen no\ninclude kn.in\nrun 3000\n', gap=0.1e-3)
+E("T04_write_coeff_include", "write_coeff c.txt (the coefficients kn 5000); pair_coeff * * kn 2000; include c.txt (kn 5000 back)", P5() + "\nwrite_coeff c.txt\npair_coeff * * " + HK + "\ninclude c.txt\nrun 3000\n", gap=0.1e-3)
+E("T05_print_file_after_run_include", "run 1000; print kn 5000 to kn.in; include kn.in; run 3000", 'run 1000\nprint "' + P5() + '" file kn.in screen no\ninclude kn.in\nrun 3000\n', gap=1.1e-3)
+E("T06_write_data_pair_ij_read", "pair_coeff 1 2 kn 5000; write_data d.data pair ij; clear; read_data (the data file's PairIJ Coeffs)", P5() + "\nwrite_data d.data pair ij\nclear\n" + m.RD("d.data").replace("timestep 1e-5", "timestep 1e-6").replace("pair_coeff * * " + HK + "\n", "") + "group lv1 id 1\ngroup lv2 id 2\nrun 3000\n", gap=0.1e-3)
+for k, seed in enumerate((4767, 1234, 99, 31337, 2024, 7)):
+    E(f"T1{k}_random_thermo_seed{seed}", f"variable r equal random(0,1,{seed}) printed by thermo every 100 steps in run 1000 (11 draws); if $(v_r) > 0.5 kn 5000 else 8000",
+      f"variable r equal random(0,1,{seed})\nthermo_style custom step v_r\nthermo 100\nrun 1000\n" + IFS("$(v_r) > 0.5") + "run 3000\n", gap=g11)
+E("T16_random_no_thermo", "control: random(0,1,4767) read first after the run (no draw in it); if > 0.5 kn 5000 else 8000", "variable r equal random(0,1,4767)\nrun 1000\n" + IFS("$(v_r) > 0.5") + "run 3000\n", gap=g11)
+E("T17_random_fix_print", "fix print of v_r every 100 steps in run 1000; if $(v_r) > 0.5", 'variable r equal random(0,1,1234)\nfix fp all print 100 "r ${r}" screen no\nrun 1000\nunfix fp\n' + IFS("$(v_r) > 0.5") + "run 3000\n", gap=g11)
+
 def write_all(names):
     for n in names:
         m.write(n)
