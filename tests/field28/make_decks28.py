@@ -553,6 +553,15 @@ for k, seed in enumerate((4767, 1234, 99, 31337, 2024, 7)):
 E("T16_random_no_thermo", "control: random(0,1,4767) read first after the run (no draw in it); if > 0.5 kn 5000 else 8000", "variable r equal random(0,1,4767)\nrun 1000\n" + IFS("$(v_r) > 0.5") + "run 3000\n", gap=g11)
 E("T17_random_fix_print", "fix print of v_r every 100 steps in run 1000; if $(v_r) > 0.5", 'variable r equal random(0,1,1234)\nfix fp all print 100 "r ${r}" screen no\nrun 1000\nunfix fp\n' + IFS("$(v_r) > 0.5") + "run 3000\n", gap=g11)
 
+# ------------------------------------------------------------ batch 10: a like pair's cutoff changed under pre no (kept by the audit; LAMMPS' lists and bins not set up again)
+L11 = lambda: lv(1.1e-3, 1, 1, 0.004, 0.004)
+Q("Q57_pre_no_like_cutoff_small", "run 1000; pair_coeff 1 1 ... cutoff 0.001 (skin 0.001: reach 0.002 < 0.004); run 3000 pre no; live pair 1 1", "run 1000\npair_coeff 1 1 " + HK + " cutoff 0.001\nrun 3000 pre no\n", gap=1.1e-3, pair=L11(), sep=0.004)
+Q("Q58_pre_no_like_cutoff_back", "* * cutoff 0.001 (reach 0.002); run 1000; pair_coeff 1 1 without cutoff; run 3000 pre no; live pair 1 1", "run 1000\npair_coeff 1 1 " + HK + "\nrun 3000 pre no\n", gap=1.1e-3, pair=L11(), sep=0.004, pre=CU(0.001))
+Q("Q59_like_cutoff_back_control", "Q58 without pre no", "run 1000\npair_coeff 1 1 " + HK + "\nrun 3000\n", gap=1.1e-3, pair=L11(), sep=0.004, pre=CU(0.001))
+Q("Q60_like_cutoff_small_control", "Q57 without pre no", "run 1000\npair_coeff 1 1 " + HK + " cutoff 0.001\nrun 3000\n", gap=1.1e-3, pair=L11(), sep=0.004)
+for nme in ("Q57_pre_no_like_cutoff_small", "Q58_pre_no_like_cutoff_back", "Q59_like_cutoff_back_control", "Q60_like_cutoff_small_control"):
+    EXTRA[nme] = {"PAIR": "types 1 1"}
+
 def write_all(names):
     for n in names:
         m.write(n)
