@@ -562,6 +562,12 @@ Q("Q60_like_cutoff_small_control", "Q57 without pre no", "run 1000\npair_coeff 1
 for nme in ("Q57_pre_no_like_cutoff_small", "Q58_pre_no_like_cutoff_back", "Q59_like_cutoff_back_control", "Q60_like_cutoff_small_control"):
     EXTRA[nme] = {"PAIR": "types 1 1"}
 
+# ------------------------------------------------------------ batch 11: type/ratio, type/subset with a 2 mm victim (which atom is drawn shows in the sizes)
+for k, (kw, seed) in enumerate((("type/ratio 3 0.5", 9), ("type/subset 3 1", 9), ("type/ratio 3 0.5", 3), ("type/subset 3 1", 4))):
+    tag = kw.split()[0].replace("/", "_")
+    E(f"R8{k}_{tag}_seed{seed}_small_victim", f"a 2 mm type-1 victim and lv1 (4 mm); after run 1000 set type 1 {kw} {seed}; pair_coeff 2 3 kn 8000",
+      f"run 1000\nset type 1 {kw} {seed}\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=DB2(), pair=lvi(g11))
+
 def write_all(names):
     for n in names:
         m.write(n)
