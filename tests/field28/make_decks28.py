@@ -568,6 +568,13 @@ for k, (kw, seed) in enumerate((("type/ratio 3 0.5", 9), ("type/subset 3 1", 9),
     E(f"R8{k}_{tag}_seed{seed}_small_victim", f"a 2 mm type-1 victim and lv1 (4 mm); after run 1000 set type 1 {kw} {seed}; pair_coeff 2 3 kn 8000",
       f"run 1000\nset type 1 {kw} {seed}\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=DB2(), pair=lvi(g11))
 
+# ------------------------------------------------------------ batch 12: a type emptied after its inserting fix has finished (still defined)
+E("D28_pour_done_then_delete", "fix pour of 1 type-3 sphere (made at the first step); run 1000; delete the type-3 atoms (group by type made after); run 3000 with the pour still defined",
+  POUR3 + "run 1000\ngroup g3 type 3\ndelete_atoms group g3\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D29_deposit_done_then_delete", "fix deposit of 1 type-3 sphere at step 1 (N 1, every 100000); run 1000; delete it; run 3000",
+  "region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nfix dep all deposit 1 3 100000 4767 region ins near 0.004\nrun 1000\ngroup g3 type 3\ndelete_atoms group g3\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("D30_pour_done_live_type3", "fix pour of 1 type-3 sphere made in run 1000; the live pair 1 2; state at the end: one type-3 sphere (control of D28)", POUR3 + "run 1000\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+
 def write_all(names):
     for n in names:
         m.write(n)
