@@ -24,6 +24,8 @@ for n in sorted(os.listdir(D)):
         table["LIGGGHTS tutorial (see FINDINGS)"].append(n[6:])
     else:
         table["UNJUDGED"].append(k)
-for cls, names in sorted(table.items(), key=lambda x: (not x[0].startswith(("SIL", "FALSE", "WRONG", "AVOID")), x[0])):
+ORDER = ("SIL", "ANSWERED", "ROWS", "WRONG", "left out", "FALSE", "AVOID")   # worst first, then the rest by name
+rank = lambda c: next((k for k, p in enumerate(ORDER) if c.startswith(p)), len(ORDER))
+for cls, names in sorted(table.items(), key=lambda x: (rank(x[0]), x[0])):
     print(f"| {cls} | {len(names)} | {' '.join(names)} |")
 print("total", sum(len(v) for v in table.values()))
