@@ -575,6 +575,24 @@ E("D29_deposit_done_then_delete", "fix deposit of 1 type-3 sphere at step 1 (N 1
   "region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nfix dep all deposit 1 3 100000 4767 region ins near 0.004\nrun 1000\ngroup g3 type 3\ndelete_atoms group g3\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
 E("D30_pour_done_live_type3", "fix pour of 1 type-3 sphere made in run 1000; the live pair 1 2; state at the end: one type-3 sphere (control of D28)", POUR3 + "run 1000\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
 
+# ------------------------------------------------------------ batch 13: a step variable set in an every read by commands the audit does not watch (include, jump, label names)
+KF = {"k3000.in": P5() + "\n", "k0.in": P8() + "\n", "k1000.in": P8() + "\n", "k2000.in": P8() + "\n"}
+E("V78_every_step_include_name", "every variable s; include k${s}.in (k3000.in: kn 5000; k0.in: kn 8000)", VS + "include k${s}.in\nrun 1000\n", gap=3.1e-3, data=KF)
+E("V79_every_step_jump_label", "every variable s; jump SELF L${s}; label L0: kn 8000; label L3000: kn 5000", VS + "jump SELF L${s}\nlabel L0\n" + P8() + "\njump SELF end\nlabel L3000\n" + P5() + "\nlabel end\nrun 1000\n", gap=3.1e-3)
+E("V80_every_step_jump_file", "every variable s; jump k${s}.in (the deck goes on in that file: kn then run 1000)", VS + "jump j${s}.in\n", gap=3.1e-3,
+  data={"j3000.in": P5() + "\nrun 1000\n", "j0.in": P8() + "\nrun 1000\n"})
+E("V81_plain_step_include_name", "no every: run 3000; include k$(step).in", "run 3000\ninclude k$(step).in\nrun 1000\n", gap=3.1e-3, data=KF)
+E("V82_every_time_include_name", "every variable t equal $(time*1e6:%.0f) -> 3000; include k${t}.in", R3.format("variable t equal $(time*1e6)") + "include k$(v_t:%.0f).in\nrun 1000\n", gap=3.1e-3, data=KF)
+E("V83_every_step_next_loop_count", "every variable s; variable n loop ${s} (3000 passes? no: a loop of ${s}/1000 via label jump) - if-free branch by loop count", VS + "variable n loop $(v_s/1000)\nlabel l\n" + P3() + "\nnext n\njump SELF l\nrun 1000\n", gap=3.1e-3)
+
+E("V84_plain_step_group_id", "no every: run 3000; group g id $(step/1500) (id 2, lv2); set group g type 3; 1 3 kn 8000; run 1000", "run 3000\ngroup g id $(step/1500)\nset group g type 3\n" + P8("1", "3") + "\nrun 1000\n", gap=3.1e-3, pre=BL(nt=3), pair=lvi(3.1e-3, (1, 2)))
+EXTRA["V84_plain_step_group_id"] = {"PAIR": "types 1 3"}
+E("V85_plain_step_jump_label", "no every: run 3000; jump SELF L$(step); label L0 kn 8000; label L3000 kn 5000", "run 3000\njump SELF L$(step)\nlabel L0\n" + P8() + "\njump SELF end\nlabel L3000\n" + P5() + "\nlabel end\nrun 1000\n", gap=3.1e-3)
+E("V86_plain_time_include", "no every: run 3000; include k$(time*1e6:%.0f).in", "run 3000\ninclude k$(time*1e6:%.0f).in\nrun 1000\n", gap=3.1e-3, data=KF)
+E("V87_plain_step_include_then_if", "V81 plus a watched read after it (if $(step) > 0 print): does the clocked pass come back?", "run 3000\ninclude k$(step).in\nif \"$(step) > 0\" then \"print yes\"\nrun 1000\n", gap=3.1e-3, data=KF)
+
+E("V88_plain_step_include_only_real_file", "V81 with only k3000.in present (the file the deck's run reaches)", "run 3000\ninclude k$(step).in\nrun 1000\n", gap=3.1e-3, data={"k3000.in": P5() + "\n"})
+
 def write_all(names):
     for n in names:
         m.write(n)
