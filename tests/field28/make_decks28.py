@@ -593,6 +593,13 @@ E("V87_plain_step_include_then_if", "V81 plus a watched read after it (if $(step
 
 E("V88_plain_step_include_only_real_file", "V81 with only k3000.in present (the file the deck's run reaches)", "run 3000\ninclude k$(step).in\nrun 1000\n", gap=3.1e-3, data={"k3000.in": P5() + "\n"})
 
+E("V89_plain_step_delete_group_name", "group g0 id 1 (lv1), group g3000 id 3 (a far type-1 victim); run 3000; delete_atoms group g$(step) (LAMMPS: the victim)",
+  "create_atoms 1 single 0.01 0.01 0.08\nset atom 3 diameter 0.004 density 2500\ngroup g0 id 1\ngroup g3000 id 3\nrun 3000\ndelete_atoms group g$(step)\nrun 1000\n", gap=3.1e-3, pre=BL(nt=3), pair=lvi(3.1e-3, (1, 2)))
+E("V90_count_after_pour_include", "pour of 2 type-3 spheres in run 1000; include k$(count(all)).in (LAMMPS 4 atoms: k4.in kn 5000; 2 atoms: k2.in kn 8000)",
+  POUR3.replace("pour 1 3", "pour 2 3") + "run 1000\ninclude k$(count(all)).in\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)), data={"k4.in": P5() + "\n", "k2.in": P8() + "\n", "k3.in": P3() + "\n"})
+E("V91_xcm_jump_label", "run 1000; jump SELF L$(xcm(lv1,x)>0.018) (lv1 has moved past 0.018: L1 kn 5000; at its start: L0 kn 8000)",
+  "run 1000\njump SELF L$(xcm(lv1,x)>0.018)\nlabel L0\n" + P8() + "\njump SELF end\nlabel L1\n" + P5() + "\nlabel end\nrun 3000\n", gap=g11)
+
 def write_all(names):
     for n in names:
         m.write(n)
