@@ -600,6 +600,13 @@ E("V90_count_after_pour_include", "pour of 2 type-3 spheres in run 1000; include
 E("V91_xcm_jump_label", "run 1000; jump SELF L$(xcm(lv1,x)>0.018) (lv1 has moved past 0.018: L1 kn 5000; at its start: L0 kn 8000)",
   "run 1000\njump SELF L$(xcm(lv1,x)>0.018)\nlabel L0\n" + P8() + "\njump SELF end\nlabel L1\n" + P5() + "\nlabel end\nrun 3000\n", gap=g11)
 
+LKF = {"k3000.in": E3x(0.9) + "\n", "k0.in": E3x(0.2) + "\n", "k1.in": E3x(0.2) + "\n", "k3.in": E3x(0.2) + "\n"}
+Ll("L26_plain_step_include_name", "LIGGGHTS run 3000; include k$(step).in (k3000.in: e 1 2 0.9; others 0.2)", "run 3000\ninclude k$(step).in\nrun 1000\n", gap=3.1e-3)
+m.DECKS["L26_plain_step_include_name"] = (m.DECKS["L26_plain_step_include_name"][0], 1, LKF, True, "in.deck")
+Ll("L27_plain_step_include_only_real", "LIGGGHTS L26 with only k3000.in", "run 3000\ninclude k$(step).in\nrun 1000\n", gap=3.1e-3)
+m.DECKS["L27_plain_step_include_only_real"] = (m.DECKS["L27_plain_step_include_only_real"][0], 1, {"k3000.in": E3x(0.9) + "\n"}, True, "in.deck")
+Ll("L28_plain_step_if", "LIGGGHTS run 3000; if $(step) == 3000 e 1 2 0.9 else 0.2 (a watched read)", "run 3000\n" + f'if "$(step) == 3000" then "{E3x(0.9)}" else "{E3x(0.2)}"\nrun 1000\n', gap=3.1e-3)
+
 def write_all(names):
     for n in names:
         m.write(n)
