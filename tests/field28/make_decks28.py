@@ -607,6 +607,9 @@ Ll("L27_plain_step_include_only_real", "LIGGGHTS L26 with only k3000.in", "run 3
 m.DECKS["L27_plain_step_include_only_real"] = (m.DECKS["L27_plain_step_include_only_real"][0], 1, {"k3000.in": E3x(0.9) + "\n"}, True, "in.deck")
 Ll("L28_plain_step_if", "LIGGGHTS run 3000; if $(step) == 3000 e 1 2 0.9 else 0.2 (a watched read)", "run 3000\n" + f'if "$(step) == 3000" then "{E3x(0.9)}" else "{E3x(0.2)}"\nrun 1000\n', gap=3.1e-3)
 
+E("R78_type_fraction_region", "R22 by a region holding the whole box (a pick by position: runs made for real?)", "region box2 block 0 0.04 0 0.04 0 0.1 units box\nrun 1000\nset region box2 type/fraction 3 0.5 2\n" + P8("2", "3") + "\nrun 3000\n", gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+E("R79_type_fraction_made_runs", "R22 with a step read after it (if $(step) > 0 print): runs made for real", "run 1000\nset group lv1 type/fraction 3 0.5 2\n" + P8("2", "3") + '\nif "$(step) > 0" then "print yes"\nrun 3000\n', gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
+
 def write_all(names):
     for n in names:
         m.write(n)
