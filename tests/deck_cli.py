@@ -251,6 +251,17 @@ timestep 1e-7
 """
 
 
+def audited_and_measured(deck: str, tmp_path, types=(1, 2)) -> tuple:
+    """(the audit's eps at g = 1 for the pair ``types`` of the deck's last stage, LAMMPS' separation
+    speed running ``deck`` as written, the audit's stderr): the two numbers a head-on deck's test
+    sets side by side."""
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    row = next((r for r in got["pairs"] if r["types"] == list(types)), None)
+    assert row is not None, (got["pairs"], err)
+    return row["eps"][0], lammps_separation_speed(deck, tmp_path), err
+
+
 def lammps_separation_speed(deck: str, tmp_path) -> float:
     """The speed at which LAMMPS, running ``deck`` as written (its runs made), leaves the two spheres
     apart: eps, as they met at 1 m/s."""

@@ -15,7 +15,7 @@ runs made for real first."""
 
 import pytest
 
-from deck_cli import HEAD_ON, audit, lammps_separation_speed, needs_lammps, run
+from deck_cli import HEAD_ON, audit, audited_and_measured, lammps_separation_speed, needs_lammps, run
 
 LAW = "pair_coeff * * hooke 2000 300 damping mass_velocity tangential linear_nohistory 1 0.3"
 
@@ -52,10 +52,8 @@ def test_a_run_with_pre_no_after_a_sphere_grew_is_refused_as_lammps_meets_the_pa
 def test_a_shrink_before_a_run_with_pre_no_is_audited(tmp_path):
     """A sphere made smaller keeps every pair the lists held: LAMMPS meets it at first touch."""
     deck = HEAD_ON.format(line=LAW) + "run 1\nset type 2 diameter 0.009\nrun 40000 pre no\n"
-    (tmp_path / "in.deck").write_text(deck)
-    got, _ = audit(tmp_path / "in.deck", "--g", "1")
-    row = next(r for r in got["pairs"] if r["types"] == [1, 2])
-    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-4, row["eps"]
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 1e-4, (eps, measured, err)
 
 
 @needs_lammps
@@ -81,20 +79,16 @@ def test_each_run_reaches_as_far_as_its_own_skin(tmp_path):
     assert [[1, 2] in [r["types"] for r in s["pairs"]] for s in got["stages"]] == [True, False], got["stages"]
     assert "reach the largest cutoff plus the skin (0.002)" in err, err
     deck = _cut("neighbor 0.001 bin\nrun 1\nneighbor 0.01 bin\nrun 30000\n")
-    (tmp_path / "in.deck").write_text(deck)
-    got, _ = audit(tmp_path / "in.deck", "--g", "1")
-    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
-    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-4, row["eps"]
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 1e-4, (eps, measured, err)
 
 
 @needs_lammps
 @pytest.mark.dem
 def test_an_nsq_list_in_a_box_with_no_periodic_boundary_meets_the_pair_whatever_the_cutoff(tmp_path):
     deck = _cut("neighbor 0.001 nsq\nrun 30000\n", boundary="boundary f f f\n")
-    (tmp_path / "in.deck").write_text(deck)
-    got, _ = audit(tmp_path / "in.deck", "--g", "1")
-    row = next(r for r in got["pairs"] if r["types"] == [1, 2])
-    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-4, row["eps"]
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 1e-4, (eps, measured, err)
     # across a periodic boundary its ghost atoms reach the cutoff and skin only: left out, and said
     (tmp_path / "in.deck").write_text(_cut("neighbor 0.001 nsq\nrun 30000\n"))
     status, out, err = run(tmp_path / "in.deck", "--g", "1")
@@ -141,10 +135,8 @@ def test_a_variable_redefined_from_the_step_in_an_every_is_read_as_lammps_reads_
     deck = _later(f'variable s equal 1\nrun 3000 every 1000 "variable s equal $(step)"\n'
                   f'if "${{s}} == 3000" then "pair_coeff 1 2 {law.replace("2000", "5000")}" '
                   f'else "pair_coeff 1 2 {law.replace("2000", "8000")}"\nrun 40000\n')
-    (tmp_path / "in.deck").write_text(deck)
-    got, err = audit(tmp_path / "in.deck", "--g", "1")
-    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
-    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-3, (row["eps"], err)
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 1e-3, (eps, measured, err)
 
 
 @needs_lammps
@@ -157,7 +149,5 @@ def test_a_file_named_from_the_step_after_a_run_is_the_one_lammps_reads(tmp_path
     (tmp_path / "k0.in").write_text(f"pair_coeff 1 2 {law.replace('2000', '8000')}\n")
     (tmp_path / "k3000.in").write_text(f"pair_coeff 1 2 {law.replace('2000', '5000')}\n")
     deck = _later(f"run 3000\n{line}\nrun 40000\n")
-    (tmp_path / "in.deck").write_text(deck)
-    got, err = audit(tmp_path / "in.deck", "--g", "1")
-    row = next(r for r in got["stages"][-1]["pairs"] if r["types"] == [1, 2])
-    assert abs(row["eps"][0] - lammps_separation_speed(deck, tmp_path)) < 1e-3, (row["eps"], err)
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 1e-3, (eps, measured, err)
