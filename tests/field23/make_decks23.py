@@ -6,7 +6,7 @@ import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import decks as kit  # noqa: E402  (the helpers rounds 21-27 share; round 23 wrote them)
 from fieldkit.decks import (ATOMS, BASE, CGS_HK, CGS_HM, DECKS, E3, E3b, FLOOR, G1, GRAV, HERTZ, HK, HM, HOOKE, HS, K, L, LB,  # noqa: E402,F401
-                            LRUN, MAT3, MOL, PRB, PTS, RUN, RUN1, TAIL, TL, TWO, WALL3, deck, head, hk, lhead, mass, ubase)
+                            LRUN, MAT3, MOL, PRB, PTS, RD, RUN, RUN1, TAIL, TL, TWO, WALL3, deck, head, hk, lhead, mass, ubase)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 D = os.path.join(HERE, "decks")
@@ -52,7 +52,6 @@ deck("a12_labelmap_script_file", "# labelmap atom in an include file (labels.in)
      + BASE() + TWO + "include labels.in\n" + f"pair_coeff big big {hk(8000)}\n" + RUN1, g=1, data={"labels.in": LM})
 # ---------------------------------------------------------------- r*: read_data / read_restart
 DATA2 = "# two spheres\n\n2 atoms\n{nt} atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 1 0.004 2500 0.02 0.02 0.01\n2 2 0.006 7800 0.01 0.01 0.01\n"
-RD = lambda f="d.data", kw="": "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data " + f + kw + "\n" + G1(HK) + GRAV + FLOOR + TAIL
 deck("r01_read_data_sphere", "# read_data: Atoms # sphere (4 mm rho 2500 type 1, 6 mm rho 7800 type 2)\n" + RD() + RUN1, g=1, data={"d.data": DATA2.format(nt=2)})
 deck("r02_read_data_extra_types", "# read_data extra/atom/types 1; create_atoms 3 single; set type 3 diameter 0.008 density 1000\n"
      + RD(kw=" extra/atom/types 1") + "create_atoms 3 single 0.03 0.03 0.01\nset type 3 diameter 0.008 density 1000\n" + RUN1, g=1, data={"d.data": DATA2.format(nt=2)})

@@ -362,12 +362,7 @@ E("E90_1001_parts_coeff", "run 1001 every 1 pair_coeff 1 2 kn 5000 (1001 parts),
 E("E91_every_2000_parts_set", "run 2000 every 1 set type 2 density 7800 (2000 parts), live pair in part 1100-1700", 'run 2000 every 1 "set type 2 density 7800"\n', gap=1.1e-3, live="part ~1100")
 
 def write_all(names):
-    for n in names:
-        m.write(n)
-        if n in LIVE:
-            open(os.path.join(m.D, n, "LIVE"), "w").write(LIVE[n].split("\nSEP")[0] + "\n")
-            if "\nSEP " in LIVE[n]:
-                open(os.path.join(m.D, n, "SEP"), "w").write(LIVE[n].split("\nSEP ")[1] + "\n")
+    m.write_live(names, LIVE)
 
 
 if __name__ == "__main__":

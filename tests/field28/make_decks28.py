@@ -611,14 +611,7 @@ E("R78_type_fraction_region", "R22 by a region holding the whole box (a pick by 
 E("R79_type_fraction_made_runs", "R22 with a step read after it (if $(step) > 0 print): runs made for real", "run 1000\nset group lv1 type/fraction 3 0.5 2\n" + P8("2", "3") + '\nif "$(step) > 0" then "print yes"\nrun 3000\n', gap=g11, pre=BL(nt=3), pair=lvi(g11, (1, 2)))
 
 def write_all(names):
-    for n in names:
-        m.write(n)
-        if n in LIVE:
-            open(os.path.join(m.D, n, "LIVE"), "w").write(LIVE[n].split("\nSEP")[0] + "\n")
-            for f, t in EXTRA.get(n, {}).items():
-                open(os.path.join(m.D, n, f), "w").write(t + "\n")
-            if "\nSEP " in LIVE[n]:
-                open(os.path.join(m.D, n, "SEP"), "w").write(LIVE[n].split("\nSEP ")[1] + "\n")
+    m.write_live(names, LIVE, EXTRA)
 
 
 if __name__ == "__main__":

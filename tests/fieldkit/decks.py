@@ -1,4 +1,4 @@
-"""The deck-writing helpers of field rounds 21-27 (round 23's make_decks23.py, which rounds 24-27 imported): the
+"""The deck-writing helpers of field rounds 21-28 (round 23's make_decks23.py, which rounds 24-28 imported): the
 contact strings, a LAMMPS and a LIGGGHTS head, the atoms and run tails the decks share, the registry the round's
 decks go into (`deck`, `L`) and the writer of a deck folder (decks/NAME/DECKFILE with G, DECK, a LIGGGHTS marker and
 its extra files). A round's make_decksNN.py sets `D` (its decks folder), registers its decks and calls `main`.
@@ -30,6 +30,8 @@ TWO = ("create_atoms 1 single 0.02 0.02 0.01\ncreate_atoms 2 single 0.01 0.01 0.
 TWO4 = TWO.replace("0.006 density", "0.004 density")  # both spheres 4 mm (rounds 15-20)
 G1 = lambda model: "pair_style granular\npair_coeff * * " + model + "\n"
 BASE = lambda model=HK, nt=2: head(nt) + G1(model) + GRAV + f"fix floor all wall/gran granular {model} zplane 0 NULL\n" + TAIL
+# a deck that reads its two spheres from a data file (round 23, and round 28 through round 27's generator)
+RD = lambda f="d.data", kw="": "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data " + f + kw + "\n" + G1(HK) + GRAV + FLOOR + TAIL
 PRB = 'print "PROBE kn ${kn}"\n'
 DECKS = {}
 
@@ -135,6 +137,20 @@ def write(name):
     text, g, data, lig, deckname = DECKS[name]
     write_folder(os.path.join(D, name), text, g, deckname=deckname, deck_file=True, liggghts=lig, data=data,
                  encoding="latin-1" if name in LATIN1 else "utf-8")
+
+
+def write_live(names, live, extra=None):
+    """Write registered decks `names` (`write`) with their live pair's files (rounds 27, 28): LIVE, the run the pair
+    meets in (``live[name]``, up to a line ``SEP s``), SEP (the pair's touching distance, when given), and the files
+    ``extra[name]`` names ({file: text}, e.g. PAIR); a deck with no live pair gets none of them."""
+    for n in names:
+        write(n)
+        if n in live:
+            open(os.path.join(D, n, "LIVE"), "w").write(live[n].split("\nSEP")[0] + "\n")
+            for f, t in (extra or {}).get(n, {}).items():
+                open(os.path.join(D, n, f), "w").write(t + "\n")
+            if "\nSEP " in live[n]:
+                open(os.path.join(D, n, "SEP"), "w").write(live[n].split("\nSEP ")[1] + "\n")
 
 
 def copy_example(d, src, f, lig, first=""):

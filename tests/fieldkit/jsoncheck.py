@@ -1,5 +1,5 @@
 """Every deck folder with audit rc 0: its --json parses, and the last stage's eps at each speed of each pair and wall in
---json equals the text rows (to the text's 10 decimals); rc 2 folders: audit.json empty or a refusal (rounds 24-27).
+--json equals the text rows (to the text's 10 decimals); rc 2 folders: audit.json empty or a refusal (rounds 24-28).
 usage: python jsoncheckNN.py
 """
 import json, os, re

@@ -71,13 +71,7 @@ def wall(argv, *, round, var, tag):
     deck, top, tmp = scratch.copy(d, round, "lwprobe")
     v = var
     r = float(dia) / 2
-    tail = f"""
-unfix {grav}
-delete_atoms group all
-create_atoms {t} single 0 0 {r} units box
-group {v}a id 1
-set group {v}a diameter {dia} density {rho}
-velocity {v}a set 0 0 {-g}
+    tail = scratch.one_sphere(grav, t, f"0 0 {r}", v, dia, rho, group="id 1") + f"""velocity {v}a set 0 0 {-g}
 timestep 1e-7
 thermo 0
 run 20000

@@ -37,6 +37,30 @@ def commands(name):
     return os.environ.get(name, "").replace(";", "\n")
 
 
+def one_sphere(grav, t, at, v, dia, rho, group=None):
+    """The commands that leave a deck's end holding one sphere alone: its gravity fix `grav` removed, its atoms
+    deleted, a sphere of type `t` made at `at` ("x y z", box units) in group `v` + 'a' (by type `t`, or `group`),
+    with diameter `dia` and density `rho`; the wall probes then set it moving.
+
+    Examples
+    --------
+    >>> print(one_sphere("grav", 2, "0 0 0.002", "f26", "0.004", "2500", group="id 1"), end="")
+    <BLANKLINE>
+    unfix grav
+    delete_atoms group all
+    create_atoms 2 single 0 0 0.002 units box
+    group f26a id 1
+    set group f26a diameter 0.004 density 2500
+    """
+    return f"""
+unfix {grav}
+delete_atoms group all
+create_atoms {t} single {at} units box
+group {v}a {group or f"type {t}"}
+set group {v}a diameter {dia} density {rho}
+"""
+
+
 def append(tmp, target, tail):
     """Append `tail` to file `target` of the copy, keeping its bytes as they are (read and written as Latin-1)."""
     path = os.path.join(tmp, target)

@@ -37,13 +37,7 @@ def floor(argv, *, round, var, tag, steps="3000000"):
     deck, top, tmp = scratch.copy(d, round, "wprobe")
     v = var
     r = float(dia) / 2
-    tail = f"""
-unfix {grav}
-delete_atoms group all
-create_atoms {t} single 0.02 0.02 {r} units box
-group {v}a type {t}
-set group {v}a diameter {dia} density {rho}
-velocity all set 0 0 {-g}
+    tail = scratch.one_sphere(grav, t, f"0.02 0.02 {r}", v, dia, rho) + f"""velocity all set 0 0 {-g}
 variable {v}s equal (xcm({v}a,z)>{r})&&(step>10)
 fix {v}h all halt 1 v_{v}s == 1 error continue
 timestep 1e-8
@@ -62,13 +56,7 @@ def curved(argv, *, round, var, tag):
     deck, top, tmp = scratch.copy(d, round, "wcprobe")
     w = var
     v = float(s) * g
-    tail = f"""
-unfix {grav}
-delete_atoms group all
-create_atoms {t} single {x} {y} {z} units box
-group {w}a type {t}
-set group {w}a diameter {dia} density {rho}
-velocity all set {v} 0 0 units box
+    tail = scratch.one_sphere(grav, t, f"{x} {y} {z}", w, dia, rho) + f"""velocity all set {v} 0 0 units box
 variable {w}s equal ({float(s)}*(xcm({w}a,x)-{x})<0)&&(step>10)
 fix {w}h all halt 1 v_{w}s == 1 error continue
 timestep 1e-8
