@@ -2,8 +2,9 @@
 
 Q: ``run N pre no`` after a sphere grew. LAMMPS does not build its neighbour lists again at such a
 run, so lists built with the smaller radii meet the pair late, deep in overlap (Q01: 0.841701 where
-the audit printed 0.414916). Such a run is now refused in one line, as a pre-no run after a changed
-coefficient is; a ``neighbor`` skin changed before it is refused too (Q46: not read by LAMMPS).
+the audit printed 0.414916). The grown type's pairs of such a run are now left out with the reason
+(walls use no list); a ``neighbor`` skin changed before it is refused, as a changed coefficient is
+(Q46: not read by LAMMPS).
 N: where a pair_style granular cutoff may leave a pair out, the neighbour lists' reach (the largest
 cutoff plus the skin) is each run's own: a skin set after the first run was read as the first's
 (N19: a pair LAMMPS met 8.09 deep was printed as met at first touch; N15 the other way). A
@@ -31,9 +32,10 @@ def _grown(pre: str) -> str:
 
 @needs_lammps
 @pytest.mark.dem
-def test_a_run_with_pre_no_after_a_sphere_grew_is_refused_as_lammps_meets_the_pair_late(tmp_path):
+def test_a_run_with_pre_no_after_a_sphere_grew_leaves_its_pairs_out_as_lammps_meets_them_late(tmp_path):
     """With pre yes the audit's eps is LAMMPS'; with pre no LAMMPS' lists still hold the small
-    sphere and meet the pair deep in overlap: the audit refuses that run in one line."""
+    sphere and meet the pair deep in overlap: the audit leaves the grown type's pairs of that run
+    out, saying why (its other pairs and walls stay audited)."""
     (tmp_path / "in.deck").write_text(_grown("yes"))
     got, _ = audit(tmp_path / "in.deck", "--g", "1")
     row = next(r for r in got["pairs"] if r["types"] == [1, 2])
@@ -42,9 +44,9 @@ def test_a_run_with_pre_no_after_a_sphere_grew_is_refused_as_lammps_meets_the_pa
     late = lammps_separation_speed(_grown("no"), tmp_path)
     assert abs(late - set_up) > 0.05, (late, set_up)
     (tmp_path / "in.deck").write_text(_grown("no"))
-    status, out, err = run(tmp_path / "in.deck", "--g", "1")
-    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
-    assert "pre no after atoms of type 2 grew since the last run" in err, err
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert [r["types"] for r in got["stages"][-1]["pairs"]] == [[1, 1]], got["stages"][-1]     # 1 1: lone
+    assert "types 1 2: line 20 (run 40000 pre no): pre no after the type 2 spheres grew" in err, err
 
 
 @needs_lammps

@@ -248,6 +248,9 @@ class Deck:
     # type -> the coefficients of its pair with itself at that set-up, from which a pair of it with
     # another type may be mixed
     set_up_own: dict = field(default_factory=dict)
+    # type -> (where, line) of a run with pre no after its atoms grew: the neighbour lists hold its
+    # smaller radii till their next build, so its pairs are not audited in that run
+    stale: dict = field(default_factory=dict)
     # type -> {charge q} its atoms hold, as the engine holds them at the deck's end (LAMMPS, an atom
     # style with a charge), where no command after the first run changes a charge; None: not known
     charges: dict | None = None
