@@ -393,14 +393,23 @@ def test_a_file_inside_the_deck_folder_named_by_a_variable_is_run(tmp_path, how)
     assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(2000, 1.0), rel=1e-10)
 
 
-@pytest.mark.parametrize("name", ["part.in", '"part.in"', "'part.in'"])
-def test_an_include_name_in_quotes_is_read_as_the_engine_reads_it(tmp_path, name):
+@pytest.mark.parametrize("name, setting", [
+    ("part.in", ""), ('"part.in"', ""), ("'part.in'", ""), ('"sub dir/part.in"', ""),
+    ('"${f}"', "variable f string part.in\n"), ('"p${a}.in"', "variable a string art\n"),
+    ('"p$(2*0).in"', "")],
+    ids=["plain", "double", "single", "space", "variable", "part variable", "formula"])
+def test_an_include_name_in_quotes_is_read_as_the_engine_reads_it(tmp_path, name, setting):
     """Session 23: ``include "part.in"`` (LAMMPS takes the name without its quotes) was followed under
     the name with its quotes, so the contact in part.in was never read and the deck was refused with
-    "no pair_style granular"."""
+    "no pair_style granular". Field round 29 (I14, I18, V02, I45): a quoted name with a space, or with
+    a variable or formula LAMMPS substitutes as it opens the file (its echo keeps them): the included
+    contact was not read, and the deck's earlier one printed (0.414916 where LAMMPS ran 0.578975)."""
+    (tmp_path / "sub dir").mkdir()
+    part = f"pair_coeff * * hooke 2000 1 {T}\n"
+    (tmp_path / "sub dir" / "part.in").write_text(part)
     p = pairs(tmp_path, BOX + "create_box 3 box\ncreate_atoms 1 single 0 0 0\nset type 1 diameter 0.02 density 2500\n"
-              f"fix integrate all nve/sphere\ninclude {name}\nrun 1\n",
-              files={"part.in": f"pair_style granular\npair_coeff * * hooke 2000 1 {T}\n"})
+              f"fix integrate all nve/sphere\npair_style granular\npair_coeff * * hooke 9000 1 {T}\n"
+              f"{setting}include {name}\nrun 1\n", files={"part.in": part, "p0.in": part})
     assert p[(1, 1)]["eps"][2] == pytest.approx(eps_hooke(2000, 1.0), rel=1e-10)
 
 

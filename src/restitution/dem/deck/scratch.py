@@ -25,6 +25,7 @@ from pathlib import Path
 
 from ..dialect.state import DeckError, place
 from ..deck_text import TRIPLE, ScriptError, segments as segments_of, strip_comment, words
+from ..deck_text import words as words_of
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
            "AUDIT", "split_every", "MAX_PARTS"]
@@ -500,7 +501,11 @@ def scripts_named(deck: Path, literal: bool = False) -> list | None:
         for line in text.splitlines():
             words = normalised(line).split()
             if len(words) >= 2 and words[0] in ("include", "jump") and words[1] != "SELF":
-                named = [words[1].strip("\"'")]
+                try:
+                    # a quoted name is one word, spaces and all (field round 29, I14: "sub dir/k.in")
+                    named = words_of(normalised(line))[1:2]
+                except ScriptError:
+                    named = [words[1].strip("\"'")]
             else:
                 # an if's quoted include (field round 24, V07: '"include kn.in"' is no word "include",
                 # and kn.in's commands were never read); the files it names are followed as above

@@ -184,6 +184,9 @@ def executed(echo: str, scratch: Scratch) -> list[Executed]:
             loc = next((where for where in reversed(ifs) if key in scratch.quoted.get(where, ())), None)
             if loc is None:
                 for depth in range(len(files) - 1, -1, -1):
+                    if files[depth] is _ANY_FILE:
+                        files[depth] = next((label for label, known in scratch.files.items()
+                                             if label not in scratch.tagged and key in known), _ANY_FILE)
                     loc = scratch.files.get(files[depth], {}).get(key)
                     if loc is not None:
                         del files[depth + 1:]     # the files opened inside it have ended
@@ -222,15 +225,27 @@ _RUN_PRINTED = f"{RUN_PRINTED} "
 _MARK = re.compile(r"label restitution_(skipped|unchecked)_\d+")
 
 
+#: What _opened gives for a file named through a variable left unsubstituted in the echo: the
+#: untagged file whose line the engine echoes next
+_ANY_FILE = object()
+
+
 def _opened(text: str, scratch: Scratch):
     """The copied file an include or jump opens where none of its lines carries a tag (a file the
     deck names by a variable), as the scratch's ``files`` names it; else None."""
     if not text.startswith(("include", "jump")):      # most commands: no split
         return None
-    words = text.split()
-    if len(words) < 2 or words[0] not in ("include", "jump") or words[1] == "SELF":
+    try:
+        split = words(text)          # a quoted name is one word, spaces and all, without its quotes
+    except ScriptError:
         return None
-    name = words[1].strip("\"'")
+    if len(split) < 2 or split[0] not in ("include", "jump") or split[1] == "SELF":
+        return None
+    name = split[1]
+    if "$" in name:
+        # quoted, its variables are left in the echo, and the engine substitutes them as it opens
+        # the file (field round 29, I18: include "${f}"): the file is the one whose lines come next
+        return _ANY_FILE
     folder = scratch.deck.parent
     where = Path(os.path.normpath(folder / name))
     # a file named by an absolute path, read from its copy in the scratch
