@@ -1452,10 +1452,11 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list,
             if stale := [deck.stale[t] for t in (i, j) if t in deck.stale]:
                 (where, line), t = stale[0], i if i in deck.stale else j
                 not_audited.append((*deck.style_line[0], deck.style_line[1],
-                                    f"types {i} {j}: {where} ({line}): pre no after the type {t} spheres grew: the "
-                                    "engine does not build its neighbour lists again at this run, and lists built "
-                                    "with the smaller radii find a contact late in overlap or never until their next "
-                                    "build (LAMMPS measured: 0.84 where the contact gives 0.41): not audited"))
+                                    f"types {i} {j}: {where} ({line}): pre no after type {t} came to hold spheres "
+                                    "larger than at the last run set up (grown, or made since): the engine does not "
+                                    "build its neighbour lists again at this run, and lists built with smaller radii "
+                                    "find a contact late in overlap or never until their next build (LAMMPS "
+                                    "measured: 0.84 where the contact gives 0.41): not audited"))
                 continue
             moves = [motion(deck, t, ran) for t in (i, j)]
             phantom = [why for t, (kind, _) in zip((i, j), moves)

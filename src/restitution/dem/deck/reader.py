@@ -1178,13 +1178,17 @@ def _grown(deck: Deck, radii: dict) -> list:
     type 2 diameter`` up, then ``run pre no``: LAMMPS and LIGGGHTS kept the lists of the smaller
     spheres and met the pair deep in overlap, 0.841701 for 0.414916, or never; a shrink, Q19, keeps
     them finding every contact). A pair outside the lists at their last build may be missed after
-    any growth until the next build, whatever the skin: each atom moved less than half of it. Sizes
-    a pour makes are not counted, as an inserting fix has the lists built again itself."""
+    any growth until the next build, whatever the skin: each atom moved less than half of it. A size
+    a pour makes counts too: a sphere set to it is not told from the pour's (field round 29, Q08:
+    lv2 set to the 12 mm a pour made, then pre no: LAMMPS 0.843542, the audit had printed 0.414916),
+    though the pour's own spheres are in the lists (it has them built again as it inserts)."""
     grown = []
     for t in sorted(radii):
-        before = deck.set_up_radii.get(t)
-        poured = {r for r, _ in deck.poured.get(t, ())}
-        if before and any(r > min(before) for r in radii[t] - before - poured):
+        before, now = deck.set_up_radii.get(t), radii[t]
+        # a new radius above the smallest then; or a radius gone whose atoms may have grown to a
+        # larger one held already (Q08's lv2, 3 mm to the pour's 6 mm: the sizes held show no new one)
+        gone = before - now if before else set()
+        if before and (any(r > min(before) for r in now - before) or gone and max(now, default=0) > min(gone)):
             grown.append(t)
     return grown
 
