@@ -301,6 +301,38 @@ E("Q41_pour_done_grow_pre_no", "a pour of one 12 mm type-2 sphere; run 1000; run
 E("Q42_step_read_grow_pre_no_control", "Q37 without pre no", 'run 1000\nif "$(step) > 0" then "print yes"\nset type 2 diameter 0.012\nrun 3000\n', gap=g41, sep=0.008)
 E("N25_restart_fff_plain", "f f f, pair in the middle; write_restart; clear; read_restart (no boundary command); nsq", RSTR.replace("boundary f f f\n", ""), pre=FFF(C1), gap=0.1e-3)
 
+# ------------------------------------------------------------ wave 3: what a quoted include with a variable carries (coefficients vs engine state), and SW-B's neighbours
+FV = 'variable f string x.in\ninclude "${f}"\n'
+XI = lambda name, comment, inc, lines="run 3000\n", **kw: E(name, comment, FV + lines, data={"x.in": inc}, **kw)
+XI("I29_var_include_density", 'include "${f}" holding set type 2 density 7800', "set type 2 density 7800\n", gap=0.1e-3)
+XI("I30_var_include_delete_lv1", 'include "${f}" holding delete_atoms group lv1 (no 1 2 pair)', "delete_atoms group lv1\n", gap=0.1e-3)
+XI("I31_var_include_timestep", 'include "${f}" holding timestep 2e-5 (dt 20x: eps at dt)', "timestep 2e-5\n", lines="run 150\n", gap=0.1e-3)
+XI("I32_var_include_restyle_hm", 'include "${f}" holding pair_style granular + hertz/material', "pair_style granular\npair_coeff * * " + HM + "\n", gap=0.1e-3)
+W("I33_var_include_wall", 'wall live: include "${f}" holding fix floor kn 8000', FV + "run 3000\n", gap=0.1e-3, data={"x.in": "fix floor all wall/gran granular " + hk(8000) + " zplane 0 NULL\n"})
+XI("I34_var_include_retype", 'include "${f}" holding set group lv1 type 3 (2 3 kn 8000)', "set group lv1 type 3\n" + P8("2", "3") + "\n", gap=0.1e-3, pre=B3())
+extra("I34_var_include_retype", PAIR="types 2 3")
+XI("I35_var_include_hybrid_none", 'hybrid granular zero; include "${f}" holding pair_coeff 1 2 zero (passes through)', "pair_coeff 1 2 zero\n", gap=0.1e-3,
+   pre=r.HYB("hybrid granular zero 0.01", r.GG))
+E("I36_if_dq_include_var", 'variable f string k.in; if 1 then "include ${f}"', 'variable f string k.in\nif "1 > 0" then "include ${f}"\nrun 3000\n', gap=0.1e-3, data=KIN)
+E("I37_var_include_every", 'run 3000 every 1000 with the file name from a variable: include "${f}" (part 3 kn 5000)', "variable f string k.in\nrun 3000 every 1000 'include \"${f}\"'\n", gap=2.1e-3, data=KIN)
+E("I38_var_include_after_clear", 'clear; base; include "${f}" (variables survive clear)', "variable f string k.in\nrun 100\nclear\n" + BL() + lv(0.1e-3) + 'include "${f}"\nrun 3000\n', gap=0.1e-3, data=KIN, live="the run after clear")
+E("I39_var_include_labels", 'labelmap; include "${f}" holding pair_coeff small big kn 5000', 'labelmap atom 1 small 2 big\nvariable f string k.in\ninclude "${f}"\nrun 3000\n', gap=0.1e-3,
+  data={"k.in": "pair_coeff small big " + hk(5000) + "\n"})
+E("I40_space_include_cutoff_every", 'include "sub dir/c.in" holding pair_coeff * * ... cutoff 0.001 (the reach: LAMMPS never meets the pair? bin)', 'include "sub dir/c.in"\nrun 3000\n', gap=1.1e-3,
+  data={"sub dir/c.in": "pair_coeff * * " + HK + " cutoff 0.001\n"})
+E("I41_var_include_unquoted_next_line", "include ${f} where f holds a space-free name with $ in the file (k$.in? no: kk.in) (control)", 'variable f string kk.in\ninclude ${f}\nrun 3000\n', gap=0.1e-3, data={"kk.in": P5() + "\n"})
+E("Q43_pour_range_grow_pre_no", "a pour of type-2 spheres diam range 0.004 0.012; set group lv2 diameter 0.010; run 3000 pre no",
+  POUR12.replace("pour 1 2", "pour 2 2").replace("diam one 0.012", "diam range 0.004 0.012") + "run 1000\nset group lv2 diameter 0.010\nrun 3000 pre no\n", gap=3.1e-3, sep=0.007)
+E("Q44_pour_big_grow_every_pre_no", "a pour of one 12 mm type-2 sphere; run 3000 pre no every 1000 set group lv2 diameter 0.012 (pair meets in part 3)",
+  POUR12 + 'run 3000 pre no every 1000 "set group lv2 diameter 0.012"\n', gap=5.1e-3, sep=0.008)
+E("Q45_pour_big_grow_type_pre_no", "Q08 by set type 2 diameter 0.012 (the poured sphere too)", POUR12 + "run 1000\nset type 2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+E("Q46_pour_big_grow_hertz_pre_no", "Q08 with hertz/material", POUR12 + "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008, pre=BL(HM))
+E("Q47_pour_big_grow_hertz_control", "Q46 without pre no", POUR12 + "run 1000\nset group lv2 diameter 0.012\nrun 3000\n", gap=g41, sep=0.008, pre=BL(HM))
+E("Q48_pour_big_grow_density_pre_no", "Q08 with set group lv2 diameter 0.012 density 2500 (mass up 8x)", POUR12 + "run 1000\nset group lv2 diameter 0.012 density 2500\nrun 3000 pre no\n", gap=g41, sep=0.008)
+E("Q49_pour_big_grow_density_control", "Q48 without pre no", POUR12 + "run 1000\nset group lv2 diameter 0.012 density 2500\nrun 3000\n", gap=g41, sep=0.008)
+E("Q50_pour_big_grow_skin_pre_no", "Q08 with neighbor 0.01 bin from the start (skin covers the growth: LAMMPS right?)", POUR12 + "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008,
+  pre=BL() + "neighbor 0.01 bin\n")
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
