@@ -333,6 +333,29 @@ E("Q49_pour_big_grow_density_control", "Q48 without pre no", POUR12 + "run 1000\
 E("Q50_pour_big_grow_skin_pre_no", "Q08 with neighbor 0.01 bin from the start (skin covers the growth: LAMMPS right?)", POUR12 + "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008,
   pre=BL() + "neighbor 0.01 bin\n")
 
+# ------------------------------------------------------------ wave 4: quoted names without spaces or variables, step reads inside includes, LIGGGHTS insertion then growth under pre no
+E("I42_include_subdir_dq", 'include "sub/k.in" (a path, no space, no variable)', 'include "sub/k.in"\nrun 3000\n', gap=0.1e-3, data={"sub/k.in": P5() + "\n"})
+E("I43_include_subdir_plain", "include sub/k.in (control)", "include sub/k.in\nrun 3000\n", gap=0.1e-3, data={"sub/k.in": P5() + "\n"})
+E("I44_include_dq_dollar_escape", 'include "k.in" after a variable of the same name defined (f), no substitution in the name', 'variable k string zz.in\ninclude "k.in"\nrun 3000\n', gap=0.1e-3, data=KIN)
+E("I45_include_var_mixed", 'variable d string sub; include "${d}/k.in" (no space)', 'variable d string sub\ninclude "${d}/k.in"\nrun 3000\n', gap=0.1e-3, data={"sub/k.in": P5() + "\n"})
+E("I46_include_var_unquoted_mixed", "variable d string sub; include ${d}/k.in (control)", "variable d string sub\ninclude ${d}/k.in\nrun 3000\n", gap=0.1e-3, data={"sub/k.in": P5() + "\n"})
+E("V38_include_holds_step", "run 3000; include k.in holding pair_coeff 1 2 hooke $(step+2000) (kn 5000)", "run 3000\ninclude ks.in\nrun 1000\n", gap=g31, data={"ks.in": "pair_coeff 1 2 hooke $(step+2000) 3000 " + K + "\n"})
+E("V39_quoted_include_holds_lazy_step", 'variable k equal step; run 3000; include "ks.in" holding pair_coeff 1 2 hooke $(v_k+2000)', 'variable k equal step\nrun 3000\ninclude "ks.in"\nrun 1000\n', gap=g31,
+  data={"ks.in": "pair_coeff 1 2 hooke $(v_k+2000) 3000 " + K + "\n"})
+E("V40_exclude_via_var_step", "run 3000; variable t equal $(1+step/3000); neigh_modify exclude type 1 ${t} (1 2: passes)", "run 3000\nvariable t equal $(1+step/3000)\nneigh_modify exclude type 1 ${t}\nrun 1000\n", gap=g31)
+E("V41_include_name_var_from_step", "run 3000; variable n equal $(step); include k${n}.in", "run 3000\nvariable n equal $(step)\ninclude k${n}.in\nrun 1000\n", gap=g31, data=KF)
+LINS = ("fix pts3 all particletemplate/sphere 15485863 atom_type 2 density constant 2500 radius constant 0.006\n"
+        "fix pdd3 all particledistribution/discrete 32452843 1 pts3 1.0\nregion ins block 0.02 0.045 0.02 0.045 0.115 0.145 units box\n"
+        "fix ins all insert/pack seed 49979687 distributiontemplate pdd3 insert_every once overlapcheck yes all_in yes particles_in_region 1 region ins\n")
+Ll("L12_insert_big_grow_pre_no", "LIGGGHTS insert/pack of one 12 mm type-2 sphere; run 1000; set group lv2 diameter 0.012; run 3000 pre no", LINS + "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=4.1e-3)
+Ll("L13_insert_big_grow_control", "L12 without pre no", LINS + "run 1000\nset group lv2 diameter 0.012\nrun 3000\n", gap=4.1e-3)
+Ll("L14_grow_pre_no_plain", "LIGGGHTS run 1000; set group lv2 diameter 0.012; run 3000 pre no (no insertion; round 28 L13)", "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=4.1e-3)
+for n in ("L12_insert_big_grow_pre_no", "L13_insert_big_grow_control", "L14_grow_pre_no_plain"):
+    extra(n, SEP="0.008")
+E("Q51_pour_big_grow_run0_prenono", "Q08 with run 0 pre no between (still no set-up)", POUR12 + "run 1000\nset group lv2 diameter 0.012\nrun 0 pre no\nrun 3000 pre no\n", gap=g41, sep=0.008)
+E("Q52_pour_big_grow_labels", "Q08 with labels (type big)", "labelmap atom 1 small 2 big\n" + POUR12.replace("pour 1 2", "pour 1 big") + "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+E("Q53_pour_big_two_types_grow_pre_no", "pour of 12 mm type 2 (one); lv1 (type 1) grows to 12 mm (no pour of type 1)", POUR12 + "run 1000\nset group lv1 diameter 0.012\nrun 3000 pre no\n", gap=6.1e-3, sep=0.009)
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
