@@ -356,6 +356,8 @@ E("Q51_pour_big_grow_run0_prenono", "Q08 with run 0 pre no between (still no set
 E("Q52_pour_big_grow_labels", "Q08 with labels (type big)", "labelmap atom 1 small 2 big\n" + POUR12.replace("pour 1 2", "pour 1 big") + "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
 E("Q53_pour_big_two_types_grow_pre_no", "pour of 12 mm type 2 (one); lv1 (type 1) grows to 12 mm (no pour of type 1)", POUR12 + "run 1000\nset group lv1 diameter 0.012\nrun 3000 pre no\n", gap=6.1e-3, sep=0.009)
 
+E("I47_jump_space_file", 'jump "sub dir/j.in" (the deck goes on there: kn 5000 and the run)', 'jump "sub dir/j.in"\n', gap=0.1e-3, data={"sub dir/j.in": P5() + "\nrun 3000\n"})
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
