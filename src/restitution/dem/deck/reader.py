@@ -19,7 +19,7 @@ from .beside import ADAPT, BESIDE, adapt_parts, adapted_diameter
 from .meeting import MOVERS, neigh_modify, rigid, special_bonds
 from .scratch import GUARDED
 from .stream import SEEDED
-from .runtime import constant_in_time
+from .runtime import boundary_faces, constant_in_time
 from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, number_or_none, place, pour_into,
                              type_pairs, types, unlabeled)
 from ..deck_text import ScriptError, words
@@ -703,11 +703,8 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         except ValueError:
             deck.skin = None
         deck.neighbor_style = words[2] if len(words) > 2 else deck.neighbor_style
-    elif cmd == "boundary" and len(words) >= 4:
-        deck.periodic = any("p" in w for w in words[1:4])
-    elif cmd == "change_box" and "boundary" in words:
-        k = words.index("boundary")
-        deck.periodic = any("p" in w for w in words[k + 1:k + 4])
+    elif (faces := boundary_faces(words)) is not None:
+        deck.periodic = "p" in faces
     elif cmd == "velocity" and len(words) >= 3:
         still = words[2] == "set" and all(w in ("0", "0.0", "NULL") for w in words[3:6]) and len(words) >= 6
         if not still:
@@ -1133,11 +1130,10 @@ def _mixes(deck: Deck, t: int) -> bool:
     (field round 27, P29: 1 1 made stiffer, then run pre no: the 1 2 pair mixed from it kept the old
     law, 0.413435, not the audit's 0.543252); a mixed pair of a type with no atom and no inserting
     fix to make one never meets (round 28, Q18, Q26: refused though no such pair could happen)."""
-    inserting = [types for types in deck.inserts]
-    if deck.held is None or None in inserting:
+    if deck.held is None or None in deck.inserts:
         live = set(range(1, deck.ntypes + 1))
     else:
-        live = set(deck.held).union(*inserting)
+        live = set(deck.held).union(*deck.inserts)
     return t in live and any((min(t, u), max(t, u)) not in deck.coeffs
                              for u in range(1, deck.ntypes + 1) if u != t and u in live)
 
@@ -1152,13 +1148,13 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
     pre = [words[k + 1] for k in range(2, len(words) - 1) if words[k] == "pre" and "every" not in words[2:k]]
     key = set_up_key(deck)
     radii = {t: {r for r, _ in sizes} for t, sizes in (deck.held or {}).items()}
+    own = {k[0]: tuple(w) for k, (_, w) in deck.coeffs.items() if k[0] == k[1]}
     if pre[-1:] == ["no"] and deck.set_up is not None:
         if key != deck.set_up:
             raise DeckError(where, line, "pre no after a contact setting changed since the last run: the engine does "
                                          "not set this run up again, so the change acts in part or not at all (LAMMPS "
                                          "measured: a pair_coeff of types 1 2 acts on one order of the pair's atoms "
                                          "only; a neighbor skin is not read); not audited (remove pre no)")
-        own = {k[0]: tuple(w) for k, (_, w) in deck.coeffs.items() if k[0] == k[1]}
         if mixed := [t for t in sorted(set(own) | set(deck.set_up_own)) if own.get(t) != deck.set_up_own.get(t)
                      and _mixes(deck, t)]:
             raise DeckError(where, line, f"pre no after the coefficients of types {mixed[0]} {mixed[0]} changed since "
@@ -1168,8 +1164,7 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
         # a grown type's pairs are left out (walls use no list, other pairs are met as set up)
         deck.stale = {**deck.stale, **{t: (where, line) for t in _grown(deck, radii)}}
         return
-    deck.set_up, deck.set_up_radii, deck.stale = key, radii, {}
-    deck.set_up_own = {k[0]: tuple(w) for k, (_, w) in deck.coeffs.items() if k[0] == k[1]}
+    deck.set_up, deck.set_up_radii, deck.set_up_own, deck.stale = key, radii, own, {}
 
 
 def _grown(deck: Deck, radii: dict) -> list:

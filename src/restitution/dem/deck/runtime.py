@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["run_dependent", "resized_by_runs", "lost_in_runs", "stops_in_runs", "fixed_face", "constant_in_time", "CLOCK"]
+__all__ = ["run_dependent", "boundary_faces", "resized_by_runs", "lost_in_runs", "stops_in_runs", "fixed_face", "constant_in_time", "CLOCK"]
 
 #: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
 #: is not one: it formats an equal-style variable when used).
@@ -455,11 +455,35 @@ def _fixed_after(split: list) -> bool | None:
     """Whether the box has a fixed face after a ``boundary`` or ``change_box ... boundary`` command
     (only a plain ``f`` loses atoms: ``p`` wraps them, ``s`` and ``m`` follow them); None for any
     other command."""
+    faces = boundary_faces(split)
+    return None if faces is None else "f" in faces
+
+
+def boundary_faces(split: list) -> list | None:
+    """The six faces' letters a ``boundary`` or ``change_box ... boundary`` command sets, None for
+    any other command.
+
+    Parameters
+    ----------
+    split : list of str
+        The command's words.
+
+    Returns
+    -------
+    list of str or None
+
+    Examples
+    --------
+    >>> boundary_faces("boundary p p fm".split()), boundary_faces("change_box all boundary f f p".split())
+    (['p', 'p', 'p', 'p', 'f', 'm'], ['f', 'f', 'f', 'f', 'p', 'p'])
+    >>> boundary_faces("run 10".split()) is None
+    True
+    """
     if split[:1] == ["boundary"]:
-        return "f" in _faces(split[1:])
+        return _faces(split[1:])
     if split[:1] == ["change_box"] and "boundary" in split:
         k = split.index("boundary")
-        return "f" in _faces(split[k + 1:k + 4])
+        return _faces(split[k + 1:k + 4])
     return None
 
 
