@@ -60,8 +60,15 @@ def test_a_shrink_before_a_run_with_pre_no_is_audited(tmp_path):
 
 @needs_lammps
 @pytest.mark.dem
-def test_a_skin_changed_before_a_run_with_pre_no_is_refused(tmp_path):
-    (tmp_path / "in.deck").write_text(HEAD_ON.format(line=LAW) + "run 1\nneighbor 0.005 bin\nrun 40000 pre no\n")
+@pytest.mark.parametrize("given", ["neighbor 0.005 bin", "neighbor 0.001 nsq", "neighbor 0.001 bin"])
+def test_a_skin_changed_before_a_run_with_pre_no_is_refused_only_where_a_cutoff_makes_it_count(tmp_path, given):
+    """LAMMPS reads a new skin or list style only when it sets a run up, which pre no skips: its lists
+    keep the last set-up's reach, which holds every contact where no cutoff is set (field round 29,
+    Q28, Q29: refused, though LAMMPS met the pair at first touch); with a cutoff the reach decides."""
+    eps, measured, err = audited_and_measured(HEAD_ON.format(line=LAW) + f"run 1\n{given}\nrun 40000 pre no\n",
+                                              tmp_path)
+    assert abs(eps - measured) < 1e-4, (eps, measured, err)
+    (tmp_path / "in.deck").write_text(_cut(f"neighbor 0.01 bin\nrun 1\n{given}\nrun 40000 pre no\n"))
     status, out, err = run(tmp_path / "in.deck", "--g", "1")
     assert status == 2 and "pre no after a contact setting changed" in err, err
 
@@ -95,6 +102,20 @@ def test_an_nsq_list_in_a_box_with_no_periodic_boundary_meets_the_pair_whatever_
     (tmp_path / "in.deck").write_text(_cut("neighbor 0.001 nsq\nrun 30000\n"))
     status, out, err = run(tmp_path / "in.deck", "--g", "1")
     assert status == 2 and out == "" and "across a periodic boundary" in err, err      # no pair audited
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("before", ["", "boundary p p p\n"])
+def test_a_box_read_from_a_restart_has_the_files_boundary(tmp_path, before):
+    """Field round 29, N11 and N25: a restart of a box with no periodic boundary was read as periodic
+    (the default after clear, or a boundary given before the read), so an nsq list's pair was left
+    out where LAMMPS meets it at first touch; the boundary is the file's, as LAMMPS' info says."""
+    again = (f"write_restart a.rst\nclear\n{before}read_restart a.rst\ncomm_modify vel yes\n"
+             "neighbor 0.001 nsq\nfix integrate all nve/sphere\ntimestep 1e-7\nrun 30000\n")
+    deck = _cut("neighbor 0.001 nsq\n" + again, boundary="boundary f f f\n")
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 1e-4, (eps, measured, err)
 
 
 def _drawn(seed: int) -> str:

@@ -20,7 +20,7 @@ from .meeting import MOVERS, neigh_modify, rigid, special_bonds
 from .scratch import GUARDED
 from .stream import SEEDED
 from .runtime import boundary_faces, constant_in_time
-from ..dialect.state import (Deck, DeckError, atom_type, fetch, labelmap, number, number_or_none, place, pour_into,
+from ..dialect.state import (DEFAULT_SKIN, Deck, DeckError, atom_type, fetch, labelmap, number, number_or_none, place, pour_into,
                              type_pairs, types, unlabeled)
 from ..deck_text import ScriptError, words
 from ..engines import ENGINES
@@ -351,7 +351,7 @@ _RESTORED = ("code", "ntypes", "units", "dimension", "atom_style", "atom_style_l
              "unmapped", "reset", "coeffs", "gran", "cutoff", "hybrid", "substyle", "hybrid_one", "none_at",
              "granular_of", "others",
              "idle", "groups", "empty_groups", "filled_groups", "partial_groups", "labels", "dt", "atoms", "present",
-             "present_unknown", "bonds", "special_lj")
+             "present_unknown", "bonds", "special_lj", "periodic")
 #: What a LIGGGHTS 3.8.0 restart file stores of them (measured after write_restart, clear,
 #: read_restart): the pair style with its normal model (a hooke/stiffness pair style not given again
 #: stops the next run for want of its kn, a fix property/global, which the restart does not hold)
@@ -392,7 +392,8 @@ def restart_state(deck: Deck, made: dict, deposited: set) -> tuple:
 
 def _restart_info(info: str) -> dict:
     """What LAMMPS' ``info system coeffs groups`` says it holds: units, atom style, number of types,
-    pair style, time step and step number, the pairs whose coefficients are set, the groups."""
+    pair style, time step and step number, the pairs whose coefficients are set, the groups, whether
+    a boundary of the box is periodic."""
     found: dict = {"set": set(), "unset": set(), "groups": set()}
     for line in info.splitlines():
         if m := re.match(r"Units\s*=\s*(\S+)", line):
@@ -409,6 +410,8 @@ def _restart_info(info: str) -> dict:
             found["unset" if m.group(3) else "set"].add((int(m.group(1)), int(m.group(2))))
         elif m := re.match(r"Group\[\s*\d+\]:\s*(\S+)", line):
             found["groups"].add(m.group(1))
+        elif m := re.match(r"Boundaries\s*=\s*(.+)", line):
+            found["periodic"] = "p" in m.group(1)
     return found
 
 
@@ -474,6 +477,7 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
         # the file's step, as LAMMPS says it (a run's start, stop or upto is checked against it:
         # field round 24, R06)
         deck.held, deck.atoms, deck.step = {}, True, held.get("step")
+        deck.periodic = held.get("periodic", deck.periodic)
         if held.get("pair_style") == "granular":
             # LAMMPS restores the style (its models come per pair_coeff line), which the deck need not
             # give again (its manual; field round 24, V33): read as given here
@@ -521,6 +525,9 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     for name, value in copy.deepcopy(state).items():
         setattr(deck, name, value)
     deck.step = held.get("step")      # the file's step, as LAMMPS says it after the read
+    # the box's boundary is the file's, whatever a boundary command before the read said (field
+    # round 29, N11 and N25: an f f f box read as periodic, its pairs left out where LAMMPS met them)
+    deck.periodic = held.get("periodic", deck.periodic)
     for key in held["unset"]:
         # a sub-style whose coefficients a restart does not store: LAMMPS holds none for the pair
         deck.coeffs.pop(key, None)
@@ -1115,8 +1122,12 @@ def set_up_key(deck: Deck) -> str:
     >>> set_up_key(a) == set_up_key(b)
     True
     """
+    # the lists' reach decides a meeting only where a cutoff may leave a pair out (_cut); the skin given
+    # as the units' default is no change (field round 29, Q28: neighbor 0.001 bin in si refused, Q29
+    # nsq: without a cutoff the lists built at the last set-up hold every contact, LAMMPS met the pair)
+    skin = deck.skin if deck.skin is not None else DEFAULT_SKIN.get(deck.units or "lj")
     return repr((deck.code, deck.style, deck.model, deck.limit_force, deck.absolute_damping, deck.gran,
-                 deck.skin, deck.neighbor_style,
+                 (skin, deck.neighbor_style) if _cut(deck) else None,
                  sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1]),
                  sorted((k, repr(v)) for k, (_, v) in deck.props.items()),
                  [(w, t) for _, w, t in deck.walls], repr(deck.meshes), [w for _, w in deck.beside],
