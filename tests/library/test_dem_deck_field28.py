@@ -118,6 +118,19 @@ def test_a_box_read_from_a_restart_has_the_files_boundary(tmp_path, before):
     assert abs(eps - measured) < 1e-4, (eps, measured, err)
 
 
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("first", ["neigh_modify every 2000000 delay 0 check no", "neigh_modify once yes",
+                                   "neigh_modify delay 2000000"])
+def test_a_later_run_rebuilds_its_lists_as_its_own_neigh_modify_says(tmp_path, first):
+    """A first run whose lists may find the pair late (a rebuild every 2e6 steps unlooked: above
+    5 mm/s at this skin and step; once; a long delay) made the later runs' pair go without an eps
+    too (field round 28, N41, N47, N48): the later run, rebuilding every step, meets it at first touch."""
+    deck = HEAD_ON.format(line=LAW) + f"{first}\nrun 1\nneigh_modify every 1 delay 0 check yes once no\nrun 40000\n"
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 1e-4, (eps, measured, err)
+
+
 def _drawn(seed: int) -> str:
     """Two spheres of type 1 meet in the second run; between the runs one of them may be drawn into
     type 2 (a fraction of a half, by the seed), whose pair with type 1 is stiffer."""

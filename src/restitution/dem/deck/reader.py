@@ -1240,6 +1240,10 @@ def contact_key(deck: Deck) -> str:
                        # where a cutoff may leave a pair out, the lists' reach is the run's (field round
                        # 28, N19: a skin made small after the first run was audited with the first's)
                        (deck.skin, deck.neighbor_style, deck.periodic) if _cut(deck) else None,
+                       # how often the lists are rebuilt is each run's own too, read at every step (pre no
+                       # or not): a first run's once yes or long delay said nothing of a later run's
+                       # contacts (field round 28, N41, N47, N48: no eps, LAMMPS met the pair at first touch)
+                       deck.neigh,
                        sorted(deck.stale),
                        # a velocity given to atoms no fix moves is read by their contacts' damping (field
                        # round 17: a velocity command between two runs of one stage was not seen)
