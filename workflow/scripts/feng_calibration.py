@@ -56,7 +56,7 @@ for power in powers:
             row[f"ref_dev_{end}"] = abs(ref / eps - 1.0)
         rows.append(row)
 table = pd.DataFrame(rows)
-# the text says the overlap rule returns e within the exact family's rounding bound: refuse otherwise
+# the text says the overlap rule returns e within the exact family's estimated rounding error: refuse otherwise
 within = (table["rel_overlap"].abs() <= table["bound_overlap"]).all()
 assert within, "Feng's formula misses e under the overlap rule by more than rounding"
 write_csv(snakemake.output.table, table)
@@ -66,7 +66,7 @@ hertz = table[table["p"] == str(HERTZ)]
 lines = [r"\begin{tabular}{rrrrrr}", r"\toprule",
          r"$e$ & $\phi_{\mathrm F}$ & $\Omega = \phi_{\mathrm F}^{-2}$ & $\varepsilon/e - 1$, overlap & "
          r"$\varepsilon$, force & $\varepsilon/e - 1$, force \\", r"\midrule"]
-# a deviation within the exact formula's rounding bound is zero to the accuracy available: marked, as
+# a deviation within the exact formula's estimated rounding error is zero to the accuracy available: marked, as
 # the article marks entries below its stated accuracy
 def within_rounding(x: float, bound: float) -> str:
     return sci(x, 2) + (r"$^\dagger$" if abs(x) <= bound else "")

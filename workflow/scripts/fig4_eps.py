@@ -13,8 +13,12 @@
 import numpy as np
 import pandas as pd
 from matplotlib.transforms import ScaledTranslation
+from scipy.optimize import brentq
 from restitution_workflow.latex import sci
 from restitution_workflow.pipeline import TEXT_WIDTH_PT, save_figure, setup_matplotlib, start, write_text
+
+from restitution.core.connection import eps_from_connection
+from restitution.core.exponents import Exponents
 
 start(snakemake)
 plt = setup_matplotlib()
@@ -31,6 +35,7 @@ STYLE = {"printed": dict(ls="--", color="tab:red"), "derived": dict(ls="-.", col
 
 # %%
 p = snakemake.params
+ex = Exponents.parse(p.exponents["alpha"], p.exponents["gamma"])
 curves = pd.read_csv(snakemake.input.curves)
 errors = pd.read_csv(snakemake.input.errors, keep_default_na=False)
 
@@ -110,8 +115,17 @@ def draw_eps_of_g():
             out = np.nonzero(y > clip["top"])[0]
             i = out[-1]
             if i + 1 < len(y) and np.isfinite(y[i + 1]):
-                t = np.log(y[i] / clip["top"]) / np.log(y[i] / y[i + 1])
-                clip["below_g"] = float(np.exp(np.log(g[i]) + t * np.log(g[i + 1] / g[i])))
+                # where the relation itself reaches the top, between the two sampled speeds (the drawn line,
+                # straight between them, left it at 0.0058 where the relation does at 0.0055: referee r33).
+                # Omega is a power of g, so its logarithm is exactly linear in log g between the samples
+                c = [float(rel[k]) for k in ("c0", "c1", "c2")]
+                lw = np.log(curves["omega"].to_numpy()[[i, i + 1]])
+                lg = np.log(g[[i, i + 1]])
+
+                def above_top(x):
+                    omega = float(np.exp(lw[0] + (x - lg[0]) * (lw[1] - lw[0]) / (lg[1] - lg[0])))
+                    return np.log(float(eps_from_connection(ex, omega, c)) / clip["top"])
+                clip["below_g"] = float(np.exp(brentq(above_top, lg[0], lg[1], xtol=1e-14)))
     # the label sits at the top of its line, where no curve runs at g = 0.1
     ax.annotate(rf"$g = {p.g_figure:g}$", (p.g_figure, 1.0), xycoords=("data", "axes fraction"), xytext=(3, -3),
                 textcoords="offset points", va="top", color="grey")
