@@ -146,5 +146,6 @@ def test_a_fix_adapt_with_reset_yes_is_read_at_its_runs_sizes(tmp_path, folder):
         assert status == 0, err
         return [[(r["types"], r["eps"]) for r in stage["pairs"]] for stage in json.loads(out)["stages"]]
     adapted, by_hand_rows = rows(DECKS.parents[1] / folder / "in.deck"), rows(tmp_path / "in.deck")
-    assert len(adapted) == 2 and adapted == by_hand_rows
-    assert adapted[0] != adapted[1]
+    # the adapted run's pairs are named, not audited: LAMMPS builds its lists with the 4 mm spheres
+    # before the fix makes them 8 mm (field round 30, A01, A05: met late, 1.59 for 0.37)
+    assert len(adapted) == 2 and adapted[0] == [] and by_hand_rows[0] and adapted[1] == by_hand_rows[1]

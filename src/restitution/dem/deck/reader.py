@@ -233,6 +233,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError(place(cmd.loc), cmd.text, f"the deck wrote {split[1]} after poured atoms were made "
                                                       "(write_data); the engine's pass skips runs, so its file "
                                                       "lacks them: not audited")
+        if split[:1] == ["set"] and "diameter" in split[3:]:
+            deck.diameters_set = True  # a fix adapt resizes them again at the next set-up (_adapted_late)
         if not split or split[0] in _ENGINE_ONLY:
             continue
         halting = halting or split[0] == "fix" and len(split) > 3 and split[3] == "halt"
@@ -579,6 +581,7 @@ def _held(deck: Deck, atoms: dict, radius: dict, density: dict) -> None:
         for known in (deck.radius, deck.density, deck.sizes, deck.sampled):
             known.pop(t, None)
     deck.held = {t: sorted(v) for t, v in atoms.items()}
+    deck.seen_before, deck.seen = deck.seen, atoms
     deck.once = {t: set(v.once) for t, v in atoms.items() if getattr(v, "once", None)}
     deck.atoms = deck.atoms or bool(atoms)
     deck.present |= set(atoms)
@@ -646,6 +649,7 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         ending = _run_every(words, where, line)
         deck.ended = ending == "quits"
         _not_set_up(deck, words, where, line)
+        _adapted_late(deck, where, line)
         if _no_step(deck, words):
             return                        # a run of 0 steps: no contact happens in it (field round 19, C1)
         if deck.inserting:
@@ -1173,9 +1177,11 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
                                          "a run's set-up: this run is not set up again, so the mixed pair keeps the "
                                          "old law (LAMMPS measured); not audited (remove pre no)")
         # a grown type's pairs are left out (walls use no list, other pairs are met as set up)
-        deck.stale = {**deck.stale, **{t: (where, line) for t in _grown(deck, radii)}}
+        stale = set(_grown(deck, radii)) | _changed_atoms(deck)
+        deck.stale = {**deck.stale, **{t: (where, line) for t in sorted(stale)}}
         return
     deck.set_up, deck.set_up_radii, deck.set_up_own, deck.stale = key, radii, own, {}
+    deck.set_up_seen = deck.seen
 
 
 def _grown(deck: Deck, radii: dict) -> list:
@@ -1197,6 +1203,70 @@ def _grown(deck: Deck, radii: dict) -> list:
         if before and (any(r > min(before) for r in now - before) or gone and max(now, default=0) > min(gone)):
             grown.append(t)
     return grown
+
+
+def _adapted_late(deck: Deck, where: str, line: str) -> None:
+    """A run with a fix adapt of atom diameter in force: LAMMPS builds the run's neighbour lists at
+    its set-up before the fix sizes the spheres (and the fix grows them as the run goes where its
+    diameter varies), so a pair brought within reach by a growth is found late, deep in overlap
+    (field round 30, A01: 1.591978 where the audit printed the grown size's 0.370354; A13, A14, A24).
+    The types of its group are left out of the run (``deck.stale``) where the adapt's diameter varies,
+    or an atom of them grew at the set-up: LAMMPS' pass writes the atoms before it (a shrink, A16,
+    and a size kept, A17, are audited). Where the pass has no such account (its runs made for real),
+    unless the same adapt of one constant diameter, reset no, was in force at the run before,
+    neither it nor a set of diameters ran since, and no atom of them is new or grew since (A12)."""
+    adapts = tuple(tuple(w) for _, w in deck.beside if w[3] in ADAPT
+                   and any(kind == "atom" and args[:1] == ["diameter"] for kind, args in adapt_parts(w)[0]))
+    previous, resized = deck.adapts_before, deck.diameters_set
+    deck.adapts_before, deck.diameters_set = adapts, False
+    if not adapts or deck.code != "LAMMPS":
+        return                  # LIGGGHTS 3.8.0 sized them before its lists (round 30, L14, L15: met in time)
+    now, before = getattr(deck.seen, "by_id", None), getattr(deck.seen_before, "by_id", None)
+    set_up = getattr(deck.seen, "before", None)
+    for w in adapts:
+        types = whole_types(deck, w[2]) or set(range(1, deck.ntypes + 1))
+        constant = adapted_diameter(deck, list(w)) is not None
+        if set_up is not None and now is not None:
+            # the radii the set-up's lists saw: no atom of the group grown from them, no growth to come
+            held = constant and all(r <= set_up.get(atom, (t, r))[1] for atom, (t, r) in now.items() if t in types)
+        else:
+            held = (w in previous and not resized and constant
+                    and adapt_parts(list(w))[1].get("reset", "no") != "yes"
+                    and now is not None and before is not None
+                    and all(atom in before and r <= before[atom][1] for atom, (t, r) in now.items() if t in types))
+        if not held:
+            deck.stale = {**deck.stale, **{t: (where, line, f"fix {w[1]} adapt") for t in sorted(types)
+                                           if t not in deck.stale}}
+
+
+def _changed_atoms(deck: Deck) -> set:
+    """The types now held by an atom that has grown since the last set-up, or changed type where an
+    exclusion is in force, read atom by atom (by ID, where the engine gives them): the sizes a type
+    holds may stay the same set though one atom grew, to a size another of its type already had,
+    while a third kept the old one, or two swapped sizes; a type empty at the set-up has none to
+    compare (field round 30, G01, G03, G04: printed at first touch, LAMMPS met the pair late, 0.84).
+    The lists built with an exclusion hold no pair of a retyped atom that left it (R09: 0.84) and
+    keep one that entered it (R06: met at first touch, where no contact was said).
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Snapshot
+    >>> before = Snapshot({2: {(0.003, 2500.0), (0.006, 2500.0)}}, by_id={1: (2, 0.003), 2: (2, 0.006), 3: (2, 0.003)})
+    >>> now = Snapshot({2: {(0.003, 2500.0), (0.006, 2500.0)}}, by_id={1: (2, 0.006), 2: (2, 0.006), 3: (2, 0.003)})
+    >>> _changed_atoms(Deck(seen=now, set_up_seen=before)), _changed_atoms(Deck(seen=before, set_up_seen=now))
+    ({2}, set())
+    """
+    before = getattr(deck.set_up_seen, "by_id", None)
+    now = getattr(deck.seen, "by_id", None)
+    if before is None or now is None or now == before:
+        return set()
+    changed = set()
+    for atom, (t, r) in now.items():
+        held = before.get(atom)
+        # an atom made since has no list entry either: _grown reads those by the sizes they bring
+        if held is not None and (r > held[1] or t != held[0] and deck.excludes):
+            changed.add(t)
+    return changed
 
 
 def contact_key(deck: Deck) -> str:
@@ -1693,6 +1763,9 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if style.startswith("bond/create"):
         deck.bonds = (loc, line)
     if style in ADAPT:
+        # defined anew, it sizes the spheres again at the next set-up (field round 30, A24: 1.210230
+        # where the audit printed 0.370354, the fix given again in a loop's include)
+        deck.diameters_set = True
         parts, keys = adapt_parts(words)
         if keys.get("reset") == "yes" and any(kind == "atom" and args[:1] != ["charge"] for kind, args in parts) \
                 and (deck.code != "LAMMPS" or deck.ran):

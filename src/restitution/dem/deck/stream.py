@@ -9,6 +9,7 @@ carrying no tag and not being a command quoted in an ``if`` it ran.
 
 from __future__ import annotations
 
+import copy
 import math
 import os
 import re
@@ -20,7 +21,7 @@ from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, STAGE_LABEL, UNSET, Scratch,
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS, RUN_PRINTED, SETUP_DUMP
 
-__all__ = ["Executed", "HeldSizes", "executed", "skipped", "unchecked", "written_then_read", "snapshots", "engine_error", "first_unchecked",
+__all__ = ["Executed", "HeldSizes", "Snapshot", "executed", "skipped", "unchecked", "written_then_read", "snapshots", "engine_error", "first_unchecked",
            "SEEDED", "deck_commands"]
 
 
@@ -562,10 +563,36 @@ class HeldSizes(set):
         return repr(set(self))
 
 
-def snapshots(atoms: str) -> list[dict]:
-    """Each run's atoms, from the markers' dumps (columns type radius mass): {type: {(radius,
-    density)}} (a :class:`HeldSizes`, whose ``once`` are the sizes one atom alone has), density =
-    mass / (4/3 pi r^3) (a point particle's None).
+class Snapshot(dict):
+    """The atoms a run saw, {type: :class:`HeldSizes`}; ``by_id`` each atom's (type, radius) by its
+    ID where the dump gives IDs (else None): a growth or a retype of one atom shows there where the
+    sizes a type holds stay the same set (field round 30, G01: lv2 grown to the size another sphere
+    of its type had, while a third kept the old one). Copies share ``by_id``: nothing changes it.
+
+    Examples
+    --------
+    >>> import copy
+    >>> snap = Snapshot({1: HeldSizes({(0.5, 1.0)})}, by_id={7: (1, 0.5)})
+    >>> copy.deepcopy(snap).by_id is snap.by_id, snap
+    (True, {1: {(0.5, 1.0)}})
+    """
+
+    def __init__(self, sizes: dict, by_id: dict | None = None, before: dict | None = None):
+        super().__init__(sizes)
+        self.by_id = by_id
+        # each atom's (type, radius) by ID as the run's set-up found them, before its fixes acted
+        # (LAMMPS' marker writes them: a fix adapt sizes the atoms after the lists are built)
+        self.before = before
+
+    def __deepcopy__(self, memo):
+        return Snapshot({t: copy.deepcopy(v, memo) for t, v in self.items()}, self.by_id, self.before)
+
+
+def snapshots(atoms: str) -> list[Snapshot]:
+    """Each run's atoms, from the markers' dumps (columns id type radius mass, or type radius mass):
+    {type: {(radius, density)}} (a :class:`HeldSizes`, whose ``once`` are the sizes one atom alone
+    has), density = mass / (4/3 pi r^3) (a point particle's None), and each atom's type and radius
+    by its ID (:class:`Snapshot`).
 
     Parameters
     ----------
@@ -573,28 +600,42 @@ def snapshots(atoms: str) -> list[dict]:
 
     Returns
     -------
-    list of dict
+    list of Snapshot
 
     Examples
     --------
     >>> snapshots("ITEM: TIMESTEP\\n0\\nITEM: NUMBER OF ATOMS\\n1\\nITEM: BOX BOUNDS pp pp pp\\n0 1\\n0 1\\n0 1\\n"
-    ...           "ITEM: ATOMS type radius mass\\n2 0.5 0.5235987755982988\\n")
+    ...           "ITEM: ATOMS id type radius mass\\n4 2 0.5 0.5235987755982988\\n")
     [{2: {(0.5, 1.0)}}]
-    >>> sorted(_[0][2].once)
-    [(0.5, 1.0)]
+    >>> sorted(_[0][2].once), _[0].by_id
+    ([(0.5, 1.0)], {4: (2, 0.5)})
     """
     out, lines, k = [], atoms.split("\n"), 0
+    before = None
     while k < len(lines):
         if lines[k].startswith("ITEM: NUMBER OF ATOMS"):
             n = int(lines[k + 1])
             k += 2
             while not lines[k].startswith("ITEM: ATOMS"):
                 k += 1
+            rows = lines[k + 1:k + 1 + n]
+            if lines[k].split()[2:] == ["id", "type", "radius"]:
+                # the atoms before the set-up that the next block shows
+                before = {int(i): (int(t), float(r)) for i, t, r in (row.split()[:3] for row in rows)}
+                k += 1 + n
+                continue
+            by_id = None
+            if lines[k].split()[2:3] == ["id"]:
+                by_id, rows = {}, [row.split(None, 1) for row in rows]
+                for row in rows:
+                    t, r = row[1].split()[:2]
+                    by_id[int(row[0])] = (int(t), float(r))
+                rows = [row[1] for row in rows]
             snap: dict = {}
             counts: dict = {}
             # atoms of one size print the same row: each distinct row read once, with how many
             # atoms print it (a tutorial's tens of thousands of atoms are a handful of rows)
-            for row, many in Counter(lines[k + 1:k + 1 + n]).items():
+            for row, many in Counter(rows).items():
                 t, r, m = row.split()[:3]
                 r, m = float(r), float(m)
                 volume = 4.0 / 3.0 * math.pi * r ** 3
@@ -605,7 +646,8 @@ def snapshots(atoms: str) -> list[dict]:
                 counts[(int(t), size)] = counts.get((int(t), size), 0) + many
             for t, sizes in snap.items():
                 sizes.once = frozenset(size for size in sizes if counts[(t, size)] == 1)
-            out.append(snap)
+            out.append(Snapshot(snap, by_id, before))
+            before = None
             k += 1 + n
         else:
             k += 1

@@ -251,6 +251,15 @@ class Deck:
     # type -> (where, line) of a run with pre no after its atoms grew: the neighbour lists hold its
     # smaller radii till their next build, so its pairs are not audited in that run
     stale: dict = field(default_factory=dict)
+    # the atoms the engine held at the last run read, and at the last run set up (each an
+    # engine's snapshot: {type: sizes}, with each atom's type and radius by ID where known)
+    seen: dict | None = None
+    set_up_seen: dict | None = None
+    # the atoms at the run before the last read, and the fix adapts of atom diameter in force there
+    seen_before: dict | None = None
+    adapts_before: tuple = ()
+    # a set of atom diameters run since the last run
+    diameters_set: bool = False
     # type -> {charge q} its atoms hold, as the engine holds them at the deck's end (LAMMPS, an atom
     # style with a charge), where no command after the first run changes a charge; None: not known
     charges: dict | None = None

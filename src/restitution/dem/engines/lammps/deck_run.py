@@ -89,11 +89,11 @@ def marker(root: Path, clock: bool = False, real: bool = False):
     --------
     >>> print(marker(Path("/s"))(0, "run 10"))
     run 10
-    if "${restitution_check_0} != 0" then "variable restitution_check_0 string ${restitution_every}" "timer timeout off" "dump restitution_atoms_0 all custom 1 /s/atoms type radius mass" "dump_modify restitution_atoms_0 format float %.17g append yes" "run 0 post no" "undump restitution_atoms_0" "timer timeout 0 every 1"
+    if "${restitution_check_0} != 0" then "variable restitution_check_0 string ${restitution_every}" "timer timeout off" "write_dump all custom /s/atoms id type radius modify format float %.17g append yes" "dump restitution_atoms_0 all custom 1 /s/atoms id type radius mass" "dump_modify restitution_atoms_0 format float %.17g append yes" "run 0 post no" "undump restitution_atoms_0" "timer timeout 0 every 1"
     <BLANKLINE>
     >>> print(marker(Path("/s"), real=True)(0, "run 10"))
     run 10
-    write_dump all custom /s/atoms type radius mass modify format float %.17g append yes
+    write_dump all custom /s/atoms id type radius mass modify format float %.17g append yes
     <BLANKLINE>
     """
     def text(k: int | None, run: str) -> str:
@@ -108,8 +108,11 @@ def marker(root: Path, clock: bool = False, real: bool = False):
         # the atoms are written by a dump at that run's set-up, as the run sees them: a fix adapt with
         # reset yes puts their sizes back when a run ends, before any command after it could read them
         # (field rounds 19, 20: f02, s18 were refused)
+        # the atoms as the set-up's neighbour lists see them, before a fix adapt sizes them there
+        # (stream.snapshots: a block without masses)
         return (f'{run}\nif "${{restitution_check_{k}}} != 0" then "variable restitution_check_{k} string '
-                f'${{restitution_every}}" "timer timeout off" "{_setup_dump(root / ATOMS, k)}" "run 0 post no" '
+                f'${{restitution_every}}" "timer timeout off" "{_before_dump(root / ATOMS)}" '
+                f'"{_setup_dump(root / ATOMS, k)}" "run 0 post no" '
                 f'"undump {SETUP_DUMP}{k}" "timer timeout 0 every 1"\n' + (_clock(run) if clock else ""))
 
     def restart(read: str) -> str:
@@ -161,15 +164,21 @@ def _python_folders() -> list:
 
 
 def _dump(path: Path) -> str:
-    """The command that writes each atom's type, radius and mass, all digits kept, to ``path``."""
-    return f"write_dump all custom {path} type radius mass modify format float %.17g"
+    """The command that writes each atom's ID, type, radius and mass, all digits kept, to ``path``."""
+    return f"write_dump all custom {path} id type radius mass modify format float %.17g"
+
+
+def _before_dump(path: Path) -> str:
+    """The command that writes each atom's ID, type and radius (no mass: the block the set-up's
+    dump follows) to ``path``, appended."""
+    return f"write_dump all custom {path} id type radius modify format float %.17g append yes"
 
 
 def _setup_dump(path: Path, k: int) -> str:
     """The two commands, as an if's quoted arguments, of the dump (ID restitution_atoms_k) that
-    writes each atom's type, radius and mass, all digits kept, to ``path`` at the next run's set-up,
+    writes each atom's ID, type, radius and mass, all digits kept, to ``path`` at the next run's set-up,
     appended."""
-    return (f'dump {SETUP_DUMP}{k} all custom 1 {path} type radius mass" '
+    return (f'dump {SETUP_DUMP}{k} all custom 1 {path} id type radius mass" '
             f'"dump_modify {SETUP_DUMP}{k} format float %.17g append yes')
 
 

@@ -31,7 +31,7 @@ MAKES_RUNS = True
 INSTALL = "the deck is run by LIGGGHTS itself, whose binary liggghts is not on PATH: as root, apt-get install " \
           "liggghts (Debian's package, LIGGGHTS 3.8.0)"
 #: Full precision for the dump's columns (LIGGGHTS' default %g keeps 6 digits of a mass)
-_FORMAT = 'modify format "%d %.17g %.17g"'
+_FORMAT = 'modify format "%d %d %.17g %.17g"'
 
 
 def available() -> bool:
@@ -49,7 +49,7 @@ def marker(root: Path, real: bool = False):
     --------
     >>> print(marker(Path("/s"))(0, "run 10"))
     run 1 pre yes post no
-    write_dump all custom /s/atoms type radius mass modify format "%d %.17g %.17g" append yes
+    write_dump all custom /s/atoms id type radius mass modify format "%d %d %.17g %.17g" append yes
     <BLANKLINE>
     >>> print(marker(Path("/s"), real=True)(0, "run 10").splitlines()[0])
     run 10
@@ -78,7 +78,7 @@ def marker(root: Path, real: bool = False):
         # variable (field round 15, R01: run ${r_1step}) is printed as LIGGGHTS substitutes it
         # (print substitutes inside its quotes, which no echo does)
         said = f'print "{RUN_PRINTED} {run}"\n' if not real and "$" in run and not set("\"'") & set(run) else ""
-        return f"{said}{made}\nwrite_dump all custom {root / ATOMS} type radius mass {_FORMAT} append yes\n"
+        return f"{said}{made}\nwrite_dump all custom {root / ATOMS} id type radius mass {_FORMAT} append yes\n"
 
     def restart(read: str) -> str:
         # units, atom style, types, pair style and groups, in LIGGGHTS 3.8.0's words (its info has
@@ -93,7 +93,7 @@ def marker(root: Path, real: bool = False):
 
 def _ending(root: Path) -> str:
     """The commands that write the atoms where the deck ends, into ``root``."""
-    return f"write_dump all custom {root / ATOMS_AT_END} type radius mass {_FORMAT}\n"
+    return f"write_dump all custom {root / ATOMS_AT_END} id type radius mass {_FORMAT}\n"
 
 
 def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
