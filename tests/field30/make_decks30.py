@@ -340,6 +340,44 @@ E("C30_dt_8e6_plain", "timestep 8e-6 (73 steps per contact)", "timestep 8e-6\nru
 E("C31_dt_11e6_plain", "timestep 1.1e-5 (53 steps per contact)", "timestep 1.1e-5\nrun 400\n", gap=0.1e-3)
 E("C32_dt_2e5_plain", "timestep 2e-5 (29 steps: the note)", "timestep 2e-5\nrun 200\n", gap=0.1e-3)
 
+# ------------------------------------------------------------ wave 4: what the every refusals key on; fix adapt's keywords; LIGGGHTS adapt; pair_coeff ranges without the swap; %.15g names
+E("V21_every_coeff_plain", "run 3000 every 1000 pair_coeff 1 2 kn 5000 (round 27 E01)", R3.format(P5()), gap=2.1e-3)
+E("V22_every_density_plain", "run 3000 every 1000 set group lv2 density 5500 (no step)", R3.format("set group lv2 density 5500"), gap=2.1e-3)
+E("V23_every_coeff_step", "run 3000 every 1000 pair_coeff 1 2 hooke $(step+2000) (part 3: 4000)", R3.format("pair_coeff 1 2 hooke $(step+2000) 3000 " + K), gap=2.1e-3)
+E("V24_every_density_var", "variable d equal 5500; run 3000 every 1000 set group lv2 density ${d}", "variable d equal 5500\n" + R3.format("set group lv2 density ${d}"), gap=2.1e-3)
+E("V25_every_set_type_plain", "1 3 kn 5000; run 3000 every 1000 set group lv2 type 3", P13 + R3.format("set group lv2 type 3"), gap=2.1e-3, pre=B3())
+extra("V25_every_set_type_plain", PAIR="types 1 3")
+E("V26_every_if_plain", "run 3000 every 1000 if 1 then pair_coeff 1 2 kn 5000", 'run 3000 every 1000 \'if "1 > 0" then "' + P5() + '"\'\n', gap=2.1e-3)
+E("A19_adapt_mass_no", "fix adapt lv2 diameter 0.012 mass no (reset no) from the start", DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no mass no\nrun 4000\n", gap=g31, sep=0.008)
+E("A20_adapt_const_gap_in_skin", "A01 with 0.6 mm between them after the growth (inside the skin, found by the next build?)", DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=3.6e-3, sep=0.008)
+E("A21_adapt_scale_no_growth_var_equal_same", "fix adapt lv2 diameter v_dd, dd = 0.006+0*step (no growth) reset no", "variable dd equal 0.006+0*step\nfix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=0.1e-3)
+E("A22_adapt_all_victims_const", "victims; fix adapt all diameter 0.012 from the start: every sphere 12 mm (lv1 too)", V26 + DD + "fix ad all adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=7.1e-3, sep=0.012)
+Ld("L14_adapt_const_from_start", "LIGGGHTS fix adapt lv2 diameter 0.012 (reset no) from the start", "variable dd equal 0.012\nfix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=g31, sep=0.008)
+Ld("L15_adapt_const_far", "L14 with the pair 2.1 mm apart after the growth", "variable dd equal 0.012\nfix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 5000\n", gap=5.1e-3, sep=0.008)
+E("C33_range_2_1star2", "pair_coeff 2 1*2 kn 5000 (a range: no swap; i = 2, j from 2: only 2 2; 1 2 stays 2000)", "pair_coeff 2 1*2 " + hk(5000) + "\nrun 3000\n", gap=0.1e-3)
+E("C34_range_1star2_1", "pair_coeff 1*2 1 kn 5000 (only 1 1)", "pair_coeff 1*2 1 " + hk(5000) + "\nrun 3000\n", gap=0.1e-3)
+E("C35_range_1star2_2", "pair_coeff 1*2 2 kn 5000 (1 2 and 2 2)", "pair_coeff 1*2 2 " + hk(5000) + "\nrun 3000\n", gap=0.1e-3)
+E("C36_round_neg_half", "pair_coeff 1 2 hooke $(2000-round(-2.5)*1000) (C round(-2.5) = -3: kn 5000)", "pair_coeff 1 2 hooke $(2000-round(-2.5)*1000) 3000 " + K + "\nrun 3000\n", gap=0.1e-3)
+E("C37_name_15g", "variable k equal 1/3*15000 (4999.999999999999: %.15g prints 5000); include k${k}.in", "variable k equal 1/3*15000\ninclude k${k}.in\nrun 3000\n", gap=0.1e-3,
+  data={"k5000.in": KIN5, "k4999.999999999999.in": KIN8, "k4999.99999999999.in": KIN8})
+E("C38_labels_range_big_star", "labels small big; pair_coeff small big* kn 5000 (a label with a star: the engine decides)", "labelmap atom 1 small 2 big\npair_coeff small big* " + hk(5000) + "\nrun 3000\n", gap=0.1e-3)
+E("C39_labels_reversed_after_run", "labels; run 1000; pair_coeff big small kn 5000; run 3000", "labelmap atom 1 small 2 big\nrun 1000\npair_coeff big small " + hk(5000) + "\nrun 3000\n", gap=g11)
+E("C40_if_immediate_eq_int", 'if "$(10/4) == 2.5" kn 5000 else 8000', q.IFS("$(10/4) == 2.5") + "run 3000\n", gap=0.1e-3)
+
+# ------------------------------------------------------------ wave 5: the quoted names around SW-D (an if's else, jump in an if, single quotes with two spaces, extra blanks)
+E("I36_if_jump_space", "if 1 then 'jump \"j j.in\"' (the deck goes on there)", "if \"1 > 0\" then 'jump \"j j.in\"'\n", gap=0.1e-3, data={"j j.in": KIN5 + "run 3000\n"})
+E("I37_nested_two_spaces", 'include a.in holding include "k  k.in"', "include a.in\nrun 3000\n", gap=0.1e-3, data={"a.in": 'include "k  k.in"\n', "k  k.in": KIN5})
+E("I38_if_else_include_space", "if 0 then 'include \"x x.in\"' else 'include \"k k.in\"'", "if \"0 > 1\" then 'include \"x x.in\"' else 'include \"k k.in\"'\nrun 3000\n", gap=0.1e-3,
+  data={"k k.in": KIN5, "x x.in": KIN8})
+E("I39_single_two_spaces", "include 'k  k.in'", "include 'k  k.in'\nrun 3000\n", gap=0.1e-3, data={"k  k.in": KIN5})
+E("I40_blanks_around", 'include    "k k.in"    # a comment', 'include    "k k.in"    # a comment\nrun 3000\n', gap=0.1e-3, data={"k k.in": KIN5})
+E("I41_if_include_space_wall", "wall live: if 1 then 'include \"w w.in\"' (fix floor kn 8000)", "if \"1 > 0\" then 'include \"w w.in\"'\nrun 3000\n", gap=2.1e-3, pair=q.r.lvw(2.1e-3),
+  data={"w w.in": "fix floor all wall/gran granular " + hk(8000) + " zplane 0 NULL\n"})
+LIVE["I41_if_include_space_wall"] = "last run\nWALL"
+E("I42_if_include_space_timestep", "if 1 then 'include \"t t.in\"' (timestep 2e-5)", "if \"1 > 0\" then 'include \"t t.in\"'\nrun 150\n", gap=0.1e-3, data={"t t.in": "timestep 2e-5\n"})
+E("I43_if_include_space_exclude", "if 1 then 'include \"x x.in\"' (neigh_modify exclude type 1 2: passes)", "if \"1 > 0\" then 'include \"x x.in\"'\nrun 3000\n", gap=0.1e-3, data={"x x.in": "neigh_modify exclude type 1 2\n"})
+E("I44_tab_in_name", 'include "k\tk.in" (a tab inside the quotes)', 'include "k\tk.in"\nrun 3000\n', gap=0.1e-3, data={"k\tk.in": KIN5, "k k.in": KIN8})
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
