@@ -378,6 +378,14 @@ E("I42_if_include_space_timestep", "if 1 then 'include \"t t.in\"' (timestep 2e-
 E("I43_if_include_space_exclude", "if 1 then 'include \"x x.in\"' (neigh_modify exclude type 1 2: passes)", "if \"1 > 0\" then 'include \"x x.in\"'\nrun 3000\n", gap=0.1e-3, data={"x x.in": "neigh_modify exclude type 1 2\n"})
 E("I44_tab_in_name", 'include "k\tk.in" (a tab inside the quotes)', 'include "k\tk.in"\nrun 3000\n', gap=0.1e-3, data={"k\tk.in": KIN5, "k k.in": KIN8})
 
+# ------------------------------------------------------------ wave 6: where the engine's eps at the deck's time step leaves the printed dt -> 0 value (no note above 50 steps per contact)
+E("C41_dt_2e6_plain", "timestep 2e-6 (293 steps per contact)", "timestep 2e-6\nrun 2000\n", gap=0.1e-3)
+E("C42_dt_3e6_plain", "timestep 3e-6 (195 steps per contact)", "timestep 3e-6\nrun 1500\n", gap=0.1e-3)
+E("C43_dt_6e6_plain", "timestep 6e-6 (98 steps per contact)", "timestep 6e-6\nrun 700\n", gap=0.1e-3)
+E("C44_dt_1e5_plain", "timestep 1e-5 (59 steps per contact)", "timestep 1e-5\nrun 400\n", gap=0.1e-3)
+E("C45_dt_4e6_offset", "C29 with the contact starting at another phase of a step (gap 0.1022 mm)", "timestep 4e-6\nrun 1000\n", gap=0.1022e-3)
+E("C46_dt_11e6_offset", "C31 with the contact starting at another phase of a step (gap 0.1055 mm)", "timestep 1.1e-5\nrun 400\n", gap=0.1055e-3)
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
