@@ -386,6 +386,46 @@ E("C44_dt_1e5_plain", "timestep 1e-5 (59 steps per contact)", "timestep 1e-5\nru
 E("C45_dt_4e6_offset", "C29 with the contact starting at another phase of a step (gap 0.1022 mm)", "timestep 4e-6\nrun 1000\n", gap=0.1022e-3)
 E("C46_dt_11e6_offset", "C31 with the contact starting at another phase of a step (gap 0.1055 mm)", "timestep 1.1e-5\nrun 400\n", gap=0.1055e-3)
 
+# ------------------------------------------------------------ wave 7: values read from where a run over the budget leaves the atoms; clear before pre no; LIGGGHTS insertion with a victim; SW-C/E neighbours
+TM = "create_atoms 3 single 0.03 0.03 0.05\nset atom 1 diameter 0.004 density 2500\ngroup tm id 1\n"
+E("V27_budget_out_position_if", "--run-budget 1: a timer sphere falls for run 3000000 (3 s: at rest on the floor); if $(xcm(tm,z)) < 0.01 kn 5000 else 8000; the pair made after",
+  "run 3000000\n" + q.IFS("$(xcm(tm,z)) < 0.01") + pairA(g11, ia=2, ib=3) + "run 3000\n", gap=g11, pre=B3() + TM, pair="")
+extra("V27_budget_out_position_if", ARGS="--run-budget 1")
+E("V28_budget_enough_position_if", "V27 at the default budget", "run 3000000\n" + q.IFS("$(xcm(tm,z)) < 0.01") + pairA(g11, ia=2, ib=3) + "run 3000\n", gap=g11, pre=B3() + TM, pair="")
+E("V29_budget_out_lazy_position", "V27 with variable z equal xcm(tm,z) defined first and if ${z} < 0.01 after the run", "variable z equal xcm(tm,z)\nrun 3000000\n" + q.IFS("${z} < 0.01") + pairA(g11, ia=2, ib=3) + "run 3000\n",
+  gap=g11, pre=B3() + TM, pair="")
+extra("V29_budget_out_lazy_position", ARGS="--run-budget 1")
+E("G40_clear_restart_grow_pre_no", "victims; run 1000; write_restart; clear; read_restart; lv2 grows to 12 mm; run 3000 pre no (the first run after clear is set up)",
+  V26 + "run 1000\nwrite_restart a.rst\nclear\nread_restart a.rst\n" + q.r.GRAV + q.r.FL() + q.r.TAILL + "group lv1 id 1\ngroup lv2 id 2\nset group lv2 diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+LINS12 = q.LINS.replace("radius constant 0.006", "radius constant 0.006")
+Ld("L16_insert_big_victim_grow_pre_no", "LIGGGHTS insert/pack of one 12 mm type-2 sphere, a 6 mm type-2 victim; lv2 grows to 12; run 3000 pre no",
+   "create_atoms 2 single -0.03 -0.03 0.02 units box\nset atom 3 diameter 0.006 density 2500\n" + q.LINS + GROW, gap=g41, sep=0.008)
+E("A23_adapt_run0_then_pre_no", "fix adapt lv2 12 mm; run 0 (set up: sized after the lists); run 4000 pre no", DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 0\nrun 4000 pre no\n", gap=g31, sep=0.008)
+E("A24_adapt_loop_include", "fix adapt lv2 12 mm defined in an include inside a loop's first pass; runs of 500", DD + 'variable i loop 2\nlabel l\nif "${i} == 1" then "include a.in"\nrun 500\nnext i\njump SELF l\nrun 3000\n',
+  gap=g31, sep=0.008, data={"a.in": "fix ad lv2 adapt 1 atom diameter v_dd reset no\n"})
+E("R14_exclude_12_retype_lv1_pre_no", "neigh_modify exclude type 1 2; run 1000; set group lv1 type 3; run 3000 pre no (pair 2 3)", "neigh_modify exclude type 1 2\nrun 1000\nset group lv1 type 3\nrun 3000 pre no\n", gap=g11, pre=B3())
+extra("R14_exclude_12_retype_lv1_pre_no", PAIR="types 2 3")
+E("R15_exclude_12_retype_include_pre_no", "R09 with the set in an include", "neigh_modify exclude type 1 2\nrun 1000\ninclude t.in\nrun 3000 pre no\n", gap=g11, pre=B3(), data={"t.in": "set group lv2 type 3\n"})
+E("R16_exclude_12_fraction_pre_no", "R09 by set group lv2 type/fraction 3 1.0 5", "neigh_modify exclude type 1 2\nrun 1000\nset group lv2 type/fraction 3 1.0 5\nrun 3000 pre no\n", gap=g11, pre=B3())
+E("R17_exclude_labels_retype_pre_no", "R09 with labels (exclude type small big; set type huge)", "labelmap atom 1 small 2 big 3 huge\nneigh_modify exclude type small big\nrun 1000\nset group lv2 type huge\nrun 3000 pre no\n", gap=g11, pre=B3())
+for n in ("R15_exclude_12_retype_include_pre_no", "R16_exclude_12_fraction_pre_no", "R17_exclude_labels_retype_pre_no"):
+    extra(n, PAIR="types 1 3")
+E("R18_exclude_12_retype_far_pre_no", "R09 with the pair 3 mm apart at the retype (the lists' next build comes first?)", "neigh_modify exclude type 1 2\nrun 1000\nset group lv2 type 3\nrun 5000 pre no\n", gap=4.1e-3, pre=B3())
+extra("R18_exclude_12_retype_far_pre_no", PAIR="types 1 3")
+
+E("V30_over_1e7_position_if", "a timer sphere falls for run 20000000 (over the pass's 1e7 steps); if $(xcm(tm,z)) < 0.01 kn 5000 else 8000; the pair made after",
+  "run 20000000\n" + q.IFS("$(xcm(tm,z)) < 0.01") + pairA(g11, ia=2, ib=3) + "run 3000\n", gap=g11, pre=B3() + TM, pair="")
+E("V31_over_1e7_count_pour", "a pour of 2 type-3 spheres over run 20000000; if $(count(all)) == 4 kn 5000 else 8000; the pair made after",
+  "region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nfix p all pour 2 3 4767 region ins diam one 0.004 dens 2500 2500\nrun 20000000\n" + q.IFS("$(count(all)) == 3") + pairA(g11, ia=4, ib=5) + "run 3000\n",
+  gap=g11, pre=B3() + TM, pair="")
+
+# ------------------------------------------------------------ wave 8: time step changed before pre no; a plain one-space quoted name; LIGGGHTS exclusion then retype under pre no
+E("C47_timestep_pre_no", "run 1000 (dt 1e-6); timestep 2e-5; run 150 pre no (the pair meets there)", "run 1000\ntimestep 2e-5\nrun 150 pre no\n", gap=g11)
+W("C48_timestep_pre_no_wall", "wall live: run 1000; timestep 2e-5; run 150 pre no", "run 1000\ntimestep 2e-5\nrun 150 pre no\n", gap=g11 + 1e-3)
+E("I45_one_space_plain", 'include "k k.in" (one space, no folder: control)', 'include "k k.in"\nrun 3000\n', gap=0.1e-3, data={"k k.in": KIN5})
+Ld("L17_exclude_retype_pre_no", "LIGGGHTS neigh_modify exclude type 1 2; run 1000; set group lv2 type 3; run 3000 pre no (e 1 3 0.7)", "neigh_modify exclude type 1 2\nrun 1000\nset group lv2 type 3\nrun 3000 pre no\n", gap=g11, pair="types 1 3")
+Ld("L18_exclude_retype_control", "L17 without pre no", "neigh_modify exclude type 1 2\nrun 1000\nset group lv2 type 3\nrun 3000\n", gap=g11, pair="types 1 3")
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
