@@ -4,5 +4,5 @@ import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import classify  # noqa: E402
 
-ORDER = ("SIL", "WRONG", "AVOID", "left out", "correct", "fair", "not")   # worst first, then the rest by name
+ORDER = ("SIL", "WRONG", "FALSE", "AVOID", "left out", "correct", "fair", "not")   # worst first, then the rest by name
 classify.outcome(os.path.dirname(os.path.abspath(__file__)), round=30, order=ORDER)

@@ -426,6 +426,39 @@ E("I45_one_space_plain", 'include "k k.in" (one space, no folder: control)', 'in
 Ld("L17_exclude_retype_pre_no", "LIGGGHTS neigh_modify exclude type 1 2; run 1000; set group lv2 type 3; run 3000 pre no (e 1 3 0.7)", "neigh_modify exclude type 1 2\nrun 1000\nset group lv2 type 3\nrun 3000 pre no\n", gap=g11, pair="types 1 3")
 Ld("L18_exclude_retype_control", "L17 without pre no", "neigh_modify exclude type 1 2\nrun 1000\nset group lv2 type 3\nrun 3000\n", gap=g11, pair="types 1 3")
 
+# ------------------------------------------------------------ wave 9: coefficients a data file or a restart file carries, named with quotes, spaces, in an if
+PIJ = lambda k12: ("\nPairIJ Coeffs # granular\n\n1 1 " + HK + "\n1 2 " + hk(k12) + "\n2 2 " + HK + "\n")
+DAT = lambda k12: q.RDB(0.01795, 0.02305) + PIJ(k12)
+RDH = ("units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\npair_style granular\n")
+RDT = q.r.GRAV + q.r.FL() + q.r.TAILL + "group lv1 id 1\ngroup lv2 id 2\nrun 3000\n"
+E("D01_read_data_quoted_space_pairij", 'read_data "d d.data" carrying PairIJ Coeffs (1 2 kn 5000)', RDH + 'read_data "d d.data"\n' + RDT, pre="\n", pair="", gap=0.1e-3, data={"d d.data": DAT(5000)})
+E("D02_read_data_two_spaces_pairij", 'read_data "d  d.data" (two spaces; "d d.data" beside it with kn 8000)', RDH + 'read_data "d  d.data"\n' + RDT, pre="\n", pair="", gap=0.1e-3,
+  data={"d  d.data": DAT(5000), "d d.data": DAT(8000)})
+E("D03_read_data_if_quoted_space", "if 1 then 'read_data \"d d.data\"'", RDH + "if \"1 > 0\" then 'read_data \"d d.data\"'\n" + RDT, pre="\n", pair="", gap=0.1e-3, data={"d d.data": DAT(5000)})
+E("D04_read_data_plain_pairij", "read_data d.data carrying PairIJ Coeffs (control)", RDH + "read_data d.data\n" + RDT, pre="\n", pair="", gap=0.1e-3, data={"d.data": DAT(5000)})
+E("D05_read_data_var_two_spaces", 'variable f string "d  d.data"; read_data "${f}"', RDH + 'variable f string "d  d.data"\nread_data "${f}"\n' + RDT, pre="\n", pair="", gap=0.1e-3,
+  data={"d  d.data": DAT(5000), "d d.data": DAT(8000)})
+RST = lambda name: (P5() + "\nwrite_restart " + name + "\nclear\nread_restart " + name + "\n" + q.r.GRAV + q.r.FL() + q.r.TAILL + "group lv1 id 1\ngroup lv2 id 2\nrun 3000\n")
+E("D06_restart_quoted_space_coeffs", 'pair_coeff 1 2 kn 5000; write_restart "a a.rst"; clear; read_restart "a a.rst" (coefficients from the file)', RST('"a a.rst"'), gap=0.1e-3)
+E("D07_restart_two_spaces_coeffs", 'D06 with "a  a.rst" (two spaces)', RST('"a  a.rst"'), gap=0.1e-3)
+E("D08_restart_plain_coeffs", "D06 with a.rst (control)", RST("a.rst"), gap=0.1e-3)
+E("D09_restart_if_read", "D06 with if 1 then 'read_restart \"a a.rst\"'", RST('"a a.rst"').replace('read_restart "a a.rst"', "if \"1 > 0\" then 'read_restart \"a a.rst\"'"), gap=0.1e-3)
+E("D10_write_data_read_two_spaces", 'pair_coeff 1 2 kn 5000; write_data "w  w.data"; clear; pair_style granular; read_data "w  w.data" (its PairIJ)',
+  P5() + '\nwrite_data "w  w.data"\nclear\n' + RDH + 'read_data "w  w.data"\n' + RDT, gap=0.1e-3)
+
+# ------------------------------------------------------------ wave 10: around D02 (the one-space file read for a two-space name), D07 and D09 (the engine said to stop where it does not)
+E("D11_write_read_data_two_spaces", 'write_data "w  w.data"; clear; read_data "w  w.data"; pair_coeff 1 2 kn 5000 after it', '\nwrite_data "w  w.data"\nclear\n' + RDH + 'read_data "w  w.data"\npair_coeff * * ' + HK + "\n" + P5() + "\n" + RDT, gap=0.1e-3)
+E("D12_restart_two_spaces_include", 'include r.in holding write_restart "a  a.rst", clear, read_restart "a  a.rst"', "include r.in\n" + q.r.GRAV + q.r.FL() + q.r.TAILL + "group lv1 id 1\ngroup lv2 id 2\nrun 3000\n", gap=0.1e-3,
+  data={"r.in": P5() + '\nwrite_restart "a  a.rst"\nclear\nread_restart "a  a.rst"\n'})
+E("D13_restart_if_plain", "D09 with a.rst (no space): if 1 then 'read_restart a.rst'", RST("a.rst").replace("read_restart a.rst", "if \"1 > 0\" then 'read_restart a.rst'"), gap=0.1e-3)
+E("D14_restart_include_plain", "read_restart a.rst in an include", RST("a.rst").replace("read_restart a.rst", "include rr.in"), gap=0.1e-3, data={"rr.in": "read_restart a.rst\n"})
+E("D15_read_data_add_two_spaces_sizes", 'victims read by read_data "v  v.data" add append (a 12 mm type-2 sphere; "v v.data" beside it: 6 mm)', 'read_data "v  v.data" add append\nrun 3000\n', gap=0.1e-3,
+  data={"v  v.data": q.RDX(0.012).replace("1 2 0.012 2500", "1 2 0.012 2500").replace("0.049995095", "0.012").replace("2 atom types", "2 atom types"), "v v.data": q.RDX(0.006).replace("0.049995095", "0.012")}, pre=B3())
+E("D16_read_data_two_spaces_pair_coeffs_section", 'read_data "d  d.data" with a Pair Coeffs section (per type: 1 kn 2000, 2 kn 5000; 1 2 mixed)', RDH + 'read_data "d  d.data"\n' + RDT, pre="\n", pair="", gap=0.1e-3,
+  data={"d  d.data": q.RDB(0.01795, 0.02305) + "\nPair Coeffs # granular\n\n1 " + HK + "\n2 " + hk(5000) + "\n", "d d.data": DAT(8000)})
+E("D17_if_read_data_two_spaces", "if 1 then 'read_data \"d  d.data\"' (two spaces)", RDH + "if \"1 > 0\" then 'read_data \"d  d.data\"'\n" + RDT, pre="\n", pair="", gap=0.1e-3,
+  data={"d  d.data": DAT(5000), "d d.data": DAT(8000)})
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
