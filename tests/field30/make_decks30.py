@@ -459,6 +459,43 @@ E("D16_read_data_two_spaces_pair_coeffs_section", 'read_data "d  d.data" with a 
 E("D17_if_read_data_two_spaces", "if 1 then 'read_data \"d  d.data\"' (two spaces)", RDH + "if \"1 > 0\" then 'read_data \"d  d.data\"'\n" + RDT, pre="\n", pair="", gap=0.1e-3,
   data={"d  d.data": DAT(5000), "d d.data": DAT(8000)})
 
+# ------------------------------------------------------------ wave 11: outputs named with spaces, quotes, variables, in an if (nothing may be written beside the deck); read_restart in an if, more forms
+RUNO = "run 3000\n"
+E("O01_dump_two_spaces", 'dump d all custom 100 "x  x.dump" id x', 'dump d all custom 100 "x  x.dump" id x\n' + RUNO, gap=0.1e-3)
+E("O02_log_two_spaces", 'log "l  l.log"', 'log "l  l.log"\n' + RUNO, gap=0.1e-3)
+E("O03_print_file_space", 'print "hi" file "p  p.txt"', 'print "hi" file "p  p.txt"\n' + RUNO, gap=0.1e-3)
+E("O04_fix_print_file_space", 'fix pr all print 100 "hi" file "q q.txt"', 'fix pr all print 100 "hi" file "q q.txt"\n' + RUNO, gap=0.1e-3)
+E("O05_if_print_file_space", "if 1 then 'print \"x\" file \"pp p.txt\"'", "if \"1 > 0\" then 'print \"x\" file \"pp p.txt\"'\n" + RUNO, gap=0.1e-3)
+E("O06_dump_var_space", 'variable f string "y  y.dump"; dump d all custom 100 ${f} id (two words: LAMMPS decides)', 'variable f string "y  y.dump"\ndump d all custom 100 ${f} id\n' + RUNO, gap=0.1e-3)
+E("O07_restart_periodic_space", 'restart 1000 "r  r.rst"', 'restart 1000 "r  r.rst"\n' + RUNO, gap=0.1e-3)
+E("O08_write_dump_space", 'write_dump all custom "wd  w.dump" id x', 'write_dump all custom "wd  w.dump" id x\n' + RUNO, gap=0.1e-3)
+E("O09_ave_time_file_space", 'variable x equal step; fix at all ave/time 100 1 100 v_x file "a  a.txt"', 'variable x equal step\nfix at all ave/time 100 1 100 v_x file "a  a.txt"\n' + RUNO, gap=0.1e-3)
+E("O10_shell_touch", 'shell touch "f30 s.txt"', 'shell touch "f30 s.txt"\n' + RUNO, gap=0.1e-3)
+E("O11_if_write_restart_then_read", "if 1 then 'write_restart \"a a.rst\"'; clear; read_restart \"a a.rst\"", RST('"a a.rst"').replace('write_restart "a a.rst"', "if \"1 > 0\" then 'write_restart \"a a.rst\"'"), gap=0.1e-3)
+E("D18_restart_if_double_quotes", 'if 1 then "read_restart a.rst"', RST("a.rst").replace("read_restart a.rst", 'if "1 > 0" then "read_restart a.rst"'), gap=0.1e-3)
+E("D19_restart_if_else", "if 0 then 'print no' else 'read_restart a.rst'", RST("a.rst").replace("read_restart a.rst", "if \"0 > 1\" then 'print no' else 'read_restart a.rst'"), gap=0.1e-3)
+E("D20_clear_and_restart_in_if", "if 1 then 'clear' 'read_restart a.rst'", RST("a.rst").replace("clear\nread_restart a.rst", "if \"1 > 0\" then 'clear' 'read_restart a.rst'"), gap=0.1e-3)
+E("D21_restart_if_after_run", "run 1000; write_restart; clear; if 1 then 'read_restart a.rst'; run 3000", (P5() + "\nrun 1000\nwrite_restart a.rst\nclear\nif \"1 > 0\" then 'read_restart a.rst'\n" + q.r.GRAV + q.r.FL() + q.r.TAILL
+  + "group lv1 id 1\ngroup lv2 id 2\nrun 3000\n"), gap=g11)
+E("D22_read_data_if_plain", "if 1 then 'read_data d.data' (PairIJ 1 2 kn 5000)", RDH + "if \"1 > 0\" then 'read_data d.data'\n" + RDT, pre="\n", pair="", gap=0.1e-3, data={"d.data": DAT(5000)})
+
+# ------------------------------------------------------------ wave 12: around O09 (fix ave/time file "a  a.txt" refused with the audit's own rewritten line)
+AT = 'variable x equal step\nfix at all ave/time 100 1 100 v_x file {}\n'
+E("O12_ave_time_one_space", 'fix ave/time ... file "a a.txt" (one space)', AT.format('"a a.txt"') + RUNO, gap=0.1e-3)
+E("O13_ave_time_plain", "fix ave/time ... file a.txt (control)", AT.format("a.txt") + RUNO, gap=0.1e-3)
+E("O14_ave_time_quoted_nospace", 'fix ave/time ... file "a.txt"', AT.format('"a.txt"') + RUNO, gap=0.1e-3)
+E("O15_fix_print_two_spaces", 'fix pr all print 100 "hi" file "q  q.txt"', 'fix pr all print 100 "hi" file "q  q.txt"\n' + RUNO, gap=0.1e-3)
+E("O16_ave_time_single_quotes", "fix ave/time ... file 'a a.txt'", AT.format("'a a.txt'") + RUNO, gap=0.1e-3)
+E("O17_ave_time_file_then_kn", 'fix ave/time ... file "a a.txt"; pair_coeff 1 2 kn 5000 after it', AT.format('"a a.txt"') + P5() + "\n" + RUNO, gap=0.1e-3)
+E("O18_ave_time_space_mode", 'fix ave/time ... file "a a.txt" mode scalar ave one', 'variable x equal step\nfix at all ave/time 100 1 100 v_x file "a a.txt" mode scalar ave one\n' + RUNO, gap=0.1e-3)
+
+# ------------------------------------------------------------ wave 13: other fixes with a file keyword and a spaced quoted name
+E("O19_ave_histo_space", 'fix ave/histo ... file "h h.txt"', 'variable x atom vx\nfix ah all ave/histo 100 1 100 -1 1 10 v_x file "h h.txt"\n' + RUNO, gap=0.1e-3)
+E("O20_ave_correlate_space", 'fix ave/correlate ... file "c c.txt"', 'variable x equal step\nfix ac all ave/correlate 100 1 100 v_x file "c c.txt"\n' + RUNO, gap=0.1e-3)
+E("O21_ave_chunk_space", 'compute chunk/atom type; fix ave/chunk ... file "k k.txt"', 'compute ch all chunk/atom type\nfix ak all ave/chunk 100 1 100 ch vx file "k k.txt"\n' + RUNO, gap=0.1e-3)
+E("O22_print_screen_file_space", 'fix pr all print 100 "hi" screen no file "q q.txt"', 'fix pr all print 100 "hi" screen no file "q q.txt"\n' + RUNO, gap=0.1e-3)
+E("O23_dump_modify_space", 'dump d ...; dump_modify d format line "%d %g"', 'dump d all custom 100 d.dump id x\ndump_modify d format line "%d %g"\n' + RUNO, gap=0.1e-3)
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
