@@ -496,6 +496,17 @@ E("O21_ave_chunk_space", 'compute chunk/atom type; fix ave/chunk ... file "k k.t
 E("O22_print_screen_file_space", 'fix pr all print 100 "hi" screen no file "q q.txt"', 'fix pr all print 100 "hi" screen no file "q q.txt"\n' + RUNO, gap=0.1e-3)
 E("O23_dump_modify_space", 'dump d ...; dump_modify d format line "%d %g"', 'dump d all custom 100 d.dump id x\ndump_modify d format line "%d %g"\n' + RUNO, gap=0.1e-3)
 
+# ------------------------------------------------------------ wave 14: walls acting on a static group (group g3 type 3) and a sphere retyped after the group was made
+HB = lambda: m.head(3, box="0 0.04 0 0.04 -0.05 0.1") + "pair_style granular\npair_coeff * * " + HK + "\n" + q.r.GRAV + q.r.FL() + q.r.TAILL
+W("W01_wall_static_group_retyped_after", "box down to z -0.05; group g3 type 3 (empty); unfix floor; fix floor2 g3 wall kn 8000; set group lv1 type 3 (not in g3: passes through)",
+  "group g3 type 3\nunfix floor\nfix floor2 g3 wall/gran granular " + hk(8000) + " zplane 0 NULL\nset group lv1 type 3\nrun 3000\n", gap=g11, pre=HB())
+W("W02_wall_static_group_retyped_before", "W01 with lv1 retyped before group g3 (in it: kn 8000)", "set group lv1 type 3\ngroup g3 type 3\nunfix floor\nfix floor2 g3 wall/gran granular " + hk(8000) + " zplane 0 NULL\nrun 3000\n",
+  gap=g11, pre=HB())
+W("W03_wall_static_group_retyped_out", "lv1 type 1 in g1 (group g1 type 1); floor only on g1 kn 8000; set group lv1 type 3 after (still in g1: kn 8000)",
+  "group g1 type 1\nunfix floor\nfix floor2 g1 wall/gran granular " + hk(8000) + " zplane 0 NULL\nset group lv1 type 3\nrun 3000\n", gap=g11, pre=HB())
+W("W04_wall_static_group_retyped_after_run", "W01 with a run 1000 before the retype", "group g3 type 3\nunfix floor\nfix floor2 g3 wall/gran granular " + hk(8000) + " zplane 0 NULL\nrun 1000\nset group lv1 type 3\nrun 3000\n",
+  gap=g11 + 1e-3, pre=HB())
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
