@@ -507,6 +507,18 @@ W("W03_wall_static_group_retyped_out", "lv1 type 1 in g1 (group g1 type 1); floo
 W("W04_wall_static_group_retyped_after_run", "W01 with a run 1000 before the retype", "group g3 type 3\nunfix floor\nfix floor2 g3 wall/gran granular " + hk(8000) + " zplane 0 NULL\nrun 1000\nset group lv1 type 3\nrun 3000\n",
   gap=g11 + 1e-3, pre=HB())
 
+# ------------------------------------------------------------ wave 15: change_box before run pre no (bins of the old box); a wall met by a sphere fix adapt grew
+VQ = q.VICQ
+E("N19_change_box_grow_new_pair_pre_no", "victims; run 1000; change_box all x final -0.04 0.04; the live pair made at x -0.02 (outside the old box); run 3000 pre no",
+  "run 1000\nchange_box all x final -0.04 0.04 units box\n" + pairA(g11, ia=3, ib=4, x0=-0.02) + "run 3000 pre no\n", gap=g11, pre=BL() + VQ, pair="")
+E("N20_change_box_grow_new_pair_control", "N19 without pre no", "run 1000\nchange_box all x final -0.04 0.04 units box\n" + pairA(g11, ia=3, ib=4, x0=-0.02) + "run 3000\n", gap=g11, pre=BL() + VQ, pair="")
+E("N21_change_box_grow_old_pair_pre_no", "live pair inside the old box; run 1000; change_box all x final -0.04 0.04; run 3000 pre no", "run 1000\nchange_box all x final -0.04 0.04 units box\nrun 3000 pre no\n", gap=g11)
+E("N22_change_box_shrink_new_pair_pre_no", "victims; run 1000; change_box all y final 0.01 0.03; the pair made; run 3000 pre no",
+  "run 1000\nchange_box all y final 0.015 0.025 units box\n" + pairA(g11, ia=3, ib=4) + "run 3000 pre no\n", gap=g11, pre=BL() + "create_atoms 1 single 0.01 0.02 0.01\ncreate_atoms 2 single 0.03 0.02 0.01\nset atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\n", pair="")
+W("W05_wall_adapt_grown_sphere", "wall live: fix adapt lv1 diameter 0.008 from the start (mass scaled), falling onto the floor", "variable dd equal 0.008\nfix ad lv1 adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=g31)
+
+W("W06_wall_adapt_grown_sphere_long", "W05 with run 12000 (the 8 mm sphere's contact is long)", "variable dd equal 0.008\nfix ad lv1 adapt 1 atom diameter v_dd reset no\nrun 12000\n", gap=g31)
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
