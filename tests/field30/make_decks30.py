@@ -519,6 +519,22 @@ W("W05_wall_adapt_grown_sphere", "wall live: fix adapt lv1 diameter 0.008 from t
 
 W("W06_wall_adapt_grown_sphere_long", "W05 with run 12000 (the 8 mm sphere's contact is long)", "variable dd equal 0.008\nfix ad lv1 adapt 1 atom diameter v_dd reset no\nrun 12000\n", gap=g31)
 
+# ------------------------------------------------------------ wave 16: inputs that may trip the audit's reader (tracebacks hunted); the engine decides
+E("T01_include_directory", "include sub (a folder)", "include sub\nrun 3000\n", gap=0.1e-3, data={"sub/x.in": KIN5})
+E("T02_self_include_recursion", "include self.in, which includes itself without end", "include self.in\nrun 3000\n", gap=0.1e-3, data={"self.in": "include self.in\n"})
+E("T03_continuation_at_end", "the deck's last line ends with & (after the run)", "run 3000\nprint hi &", gap=0.1e-3)
+E("T04_empty_include_spaced", 'include "e e.in" (an empty file)', 'include "e e.in"\nrun 3000\n', gap=0.1e-3, data={"e e.in": ""})
+E("T05_include_no_arg", "include (no name)", "include\nrun 3000\n", gap=0.1e-3)
+E("T06_long_comment", "a 200000-character comment line, then kn 5000", "# " + "x" * 200000 + "\n" + P5() + "\nrun 3000\n", gap=0.1e-3)
+E("T07_nested_ifs_quotes", "if 1 then 'if \"2 > 1\" then \"pair_coeff ... kn 5000\"'", "if \"1 > 0\" then 'if \"2 > 1\" then \"" + P5() + "\"'\nrun 3000\n", gap=0.1e-3)
+E("T08_unicode_include", 'include "κ.in" (a Greek letter)', 'include "κ.in"\nrun 3000\n', gap=0.1e-3, data={"κ.in": KIN5})
+E("T09_self_reference_var", 'variable a string "${a}x" (undefined at first)', 'variable a string "${a}x"\nrun 3000\n', gap=0.1e-3)
+E("T10_include_dev_null", "include /dev/null", "include /dev/null\n" + P5() + "\nrun 3000\n", gap=0.1e-3)
+E("T11_include_no_newline_amp", "include k.in whose last line ends in & and no newline", "include k.in\nrun 3000\n", gap=0.1e-3, data={"k.in": "pair_coeff 1 2 hooke 5000 3000 &\n damping mass_velocity tangential linear_nohistory 1 0.3 &"})
+E("T12_jump_self_counter", "label top; variable n loop 3; ...; jump SELF with no label (the file again) guarded by a loop variable", 'variable n loop 2\nif "${n} == 2" then "jump SELF done"\nnext n\njump SELF\nlabel done\n' + P5() + "\nrun 3000\n", gap=0.1e-3)
+E("T13_triple_quote_multiline", 'print """ two lines """ across lines, then kn 5000', 'print """\nline one\nline two\n"""\n' + P5() + "\nrun 3000\n", gap=0.1e-3)
+E("T14_quote_inside_comment", "a # comment holding an unmatched quote \" then kn 5000", '# it\'s a "comment\n' + P5() + " # and a ' here\nrun 3000\n", gap=0.1e-3)
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
