@@ -535,6 +535,15 @@ E("T12_jump_self_counter", "label top; variable n loop 3; ...; jump SELF with no
 E("T13_triple_quote_multiline", 'print """ two lines """ across lines, then kn 5000', 'print """\nline one\nline two\n"""\n' + P5() + "\nrun 3000\n", gap=0.1e-3)
 E("T14_quote_inside_comment", "a # comment holding an unmatched quote \" then kn 5000", '# it\'s a "comment\n' + P5() + " # and a ' here\nrun 3000\n", gap=0.1e-3)
 
+# ------------------------------------------------------------ wave 17: growth in an every's commands right before the meeting (pre no: parts 2, 3 not set up)
+E("G42_every_pre_no_grow_meet_part2", "run 3000 pre no every 1000 set group lv2 diameter 0.012; 0.1 mm apart after the growth: meets early in part 2",
+  'run 3000 pre no every 1000 "set group lv2 diameter 0.012"\n', gap=g41, sep=0.008, live="part 2")
+E("G43_every_pre_no_grow_victims_part2", "G42 with type-2 victims of 12 and 6 mm", V26 + 'run 3000 pre no every 1000 "set group lv2 diameter 0.012"\n', gap=g41, sep=0.008, live="part 2")
+E("G44_every_grow_meet_part2_control", "G42 without pre no", 'run 3000 every 1000 "set group lv2 diameter 0.012"\n', gap=g41, sep=0.008, live="part 2")
+E("G45_every_pre_no_retype_grow_part2", "3 types; run 3000 pre no every 1000 set group lv2 type 3 diameter 0.012 (type 3 empty); meets in part 2", 'run 3000 pre no every 1000 "set group lv2 type 3 diameter 0.012"\n',
+  gap=g41, sep=0.008, live="part 2", pre=B3())
+extra("G45_every_pre_no_retype_grow_part2", PAIR="types 1 3")
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
