@@ -544,6 +544,11 @@ E("G45_every_pre_no_retype_grow_part2", "3 types; run 3000 pre no every 1000 set
   gap=g41, sep=0.008, live="part 2", pre=B3())
 extra("G45_every_pre_no_retype_grow_part2", PAIR="types 1 3")
 
+# ------------------------------------------------------------ wave 18: LIGGGHTS at coarser time steps (the note's threshold there)
+Ld("L19_dt_1e5", "LIGGGHTS timestep 1e-5 before the run", "timestep 1e-5\nrun 400\n", gap=0.1e-3)
+Ld("L20_dt_3e5", "LIGGGHTS timestep 3e-5 before the run", "timestep 3e-5\nrun 150\n", gap=0.1e-3)
+Ld("L21_dt_3e6", "LIGGGHTS timestep 3e-6 before the run", "timestep 3e-6\nrun 1300\n", gap=0.1e-3)
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
