@@ -549,6 +549,11 @@ Ld("L19_dt_1e5", "LIGGGHTS timestep 1e-5 before the run", "timestep 1e-5\nrun 40
 Ld("L20_dt_3e5", "LIGGGHTS timestep 3e-5 before the run", "timestep 3e-5\nrun 150\n", gap=0.1e-3)
 Ld("L21_dt_3e6", "LIGGGHTS timestep 3e-6 before the run", "timestep 3e-6\nrun 1300\n", gap=0.1e-3)
 
+# ------------------------------------------------------------ wave 19: labels and strings with two spaces (SW-D's neighbours)
+E("I46_jump_label_two_spaces", 'jump SELF "l  x" (label "l x" first: kn 8000; label "l  x": kn 5000)', 'jump SELF "l  x"\nlabel "l x"\n' + P8() + '\njump SELF e\nlabel "l  x"\n' + P5() + "\nlabel e\nrun 3000\n", gap=0.1e-3)
+E("I47_if_string_two_spaces", "variable s string \"a  b\"; if \"'${s}' == 'a  b'\" kn 5000 else 8000", "variable s string \"a  b\"\n" + q.IFS("'${s}' == 'a  b'") + "run 3000\n", gap=0.1e-3)
+E("I48_include_var_two_spaces", 'variable f string "k  k.in"; include "${f}" ("k k.in" beside it: kn 8000)', 'variable f string "k  k.in"\ninclude "${f}"\nrun 3000\n', gap=0.1e-3, data={"k  k.in": KIN5, "k k.in": KIN8})
+
 
 def write_all(names):
     m.write_live(names, LIVE, EXTRA)
