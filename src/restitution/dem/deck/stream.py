@@ -612,6 +612,15 @@ def snapshots(atoms: str) -> list[Snapshot]:
     """
     out, lines, k = [], atoms.split("\n"), 0
     before = None
+    # a loop's runs write the same atoms again and again: a block equal to the last of its kind
+    # shares its table (ten thousand runs of a tutorial's atoms would hold ten thousand copies)
+    last: dict = {}
+
+    def table(kind: str, rows: list) -> dict:
+        if kind not in last or last[kind][0] != rows:
+            last[kind] = (rows, {int(w[0]): (int(w[1]), float(w[2])) for w in (row.split()[:3] for row in rows)})
+        return last[kind][1]
+
     while k < len(lines):
         if lines[k].startswith("ITEM: NUMBER OF ATOMS"):
             n = int(lines[k + 1])
@@ -620,17 +629,13 @@ def snapshots(atoms: str) -> list[Snapshot]:
                 k += 1
             rows = lines[k + 1:k + 1 + n]
             if lines[k].split()[2:] == ["id", "type", "radius"]:
-                # the atoms before the set-up that the next block shows
-                before = {int(i): (int(t), float(r)) for i, t, r in (row.split()[:3] for row in rows)}
+                before = table("before", rows)     # the atoms before the set-up the next block shows
                 k += 1 + n
                 continue
             by_id = None
             if lines[k].split()[2:3] == ["id"]:
-                by_id, rows = {}, [row.split(None, 1) for row in rows]
-                for row in rows:
-                    t, r = row[1].split()[:2]
-                    by_id[int(row[0])] = (int(t), float(r))
-                rows = [row[1] for row in rows]
+                by_id = table("set-up", rows)
+                rows = [row.split(None, 1)[1] for row in rows]
             snap: dict = {}
             counts: dict = {}
             # atoms of one size print the same row: each distinct row read once, with how many
