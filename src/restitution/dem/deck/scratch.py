@@ -173,7 +173,9 @@ class Scratch:
 
 def normalised(text: str) -> str:
     """A command as the audit compares it with an engine's echo: comment and continuation marks
-    removed, whitespace collapsed.
+    removed, whitespace collapsed outside quotes. A quoted text is kept as written: the engines
+    take it so, quotes removed, and echo it so (LAMMPS 22 Jul 2025 and LIGGGHTS 3.8 measured:
+    ``include "k  k.in"`` opens the file of two spaces, not "k k.in"; a tab in a name likewise).
 
     Parameters
     ----------
@@ -187,8 +189,24 @@ def normalised(text: str) -> str:
     --------
     >>> normalised("pair_coeff  * * hooke 1 0   # soft")
     'pair_coeff * * hooke 1 0'
+    >>> normalised('  include   "k  k.in"  # two spaces')
+    'include "k  k.in"'
+    >>> normalised('if "1 > 0"  then  \\'include "a\\tb.in"\\'')
+    'if "1 > 0" then \\'include "a\\tb.in"\\''
     """
-    return " ".join(strip_comment(text).split())
+    text = strip_comment(text)
+    if '"' not in text and "'" not in text:
+        return " ".join(text.split())
+    out = []
+    for piece, quote in segments_of(text):
+        closed = quote and piece.endswith(quote) and len(piece) >= 2 * len(quote)
+        # an unclosed quote (the engine stops on it) is collapsed as before: no name is read from it
+        out.append(piece if closed else _BLANKS.sub(" ", piece))
+    return "".join(out).strip()
+
+
+#: A run of whitespace, as str.split() splits at it
+_BLANKS = re.compile(r"\s+")
 
 
 def _not_copied(root: Path) -> tuple:
@@ -499,19 +517,7 @@ def scripts_named(deck: Path, literal: bool = False) -> list | None:
         except OSError:
             continue
         for line in text.splitlines():
-            words = normalised(line).split()
-            if len(words) >= 2 and words[0] in ("include", "jump") and words[1] != "SELF":
-                try:
-                    # a quoted name is one word, spaces and all (field round 29, I14: "sub dir/k.in")
-                    named = words_of(normalised(line))[1:2]
-                except ScriptError:
-                    named = [words[1].strip("\"'")]
-            else:
-                # an if's quoted include (field round 24, V07: '"include kn.in"' is no word "include",
-                # and kn.in's commands were never read); the files it names are followed as above
-                named = [words[k + 1].strip("\"'") for k, w in enumerate(words[:-1])
-                         if w.strip("\"'") in ("include", "jump")]
-            for name in named:
+            for name in _file_names(normalised(line)):
                 if "$" in name:
                     if literal:
                         continue
@@ -521,6 +527,37 @@ def scripts_named(deck: Path, literal: bool = False) -> list | None:
                     paths.append(deck.parent / name)
                     todo.append(deck.parent / name)
     return paths
+
+
+#: Commands whose quoted arguments are commands the engine runs (an if's branches, a run's every, a
+#: partition's command)
+_RUNNING = ("if", "run", "partition")
+
+
+def _file_names(command: str) -> list:
+    """The file names an include or jump gives in ``command`` (normalised), or in a command that
+    ``command`` runs (an if's, at any depth), each as the engine takes it: quotes removed, its
+    spaces and tabs kept (field round 30, I05: ``include "k  k.in"`` opens the file of two spaces;
+    I21: the if's quoted ``'include "k k.in"'`` was read as naming "k").
+
+    Examples
+    --------
+    >>> _file_names('include "k  k.in"'), _file_names("jump j.in loop")
+    (['k  k.in'], ['j.in'])
+    >>> _file_names('''if "1 > 0" then 'include "k k.in"' else "jump SELF a"''')
+    ['k k.in', 'SELF']
+    """
+    try:
+        split = words_of(command)
+    except ScriptError:
+        # the engine stops on the line; its words read as whitespace splits them, quotes dropped
+        split = [w.strip("\"'") for w in command.split()]
+        return [split[k + 1] for k, w in enumerate(split[:-1]) if w in ("include", "jump")]
+    if len(split) >= 2 and split[0] in ("include", "jump"):
+        return [split[1]]
+    if split[:1] and split[0] in _RUNNING:
+        return [name for word in split[1:] if len(word.split()) > 1 for name in _file_names(normalised(word))]
+    return []
 
 
 def _named_files(deck: Path, literal: bool = False) -> set | None:
