@@ -4,11 +4,15 @@ SW-D: a quoted file name is taken by the engines as written between its quotes, 
 and all (``include "k  k.in"`` opens that file, never "k k.in"). The audit collapsed the spaces,
 so it read the file named with one space (a decoy of other coefficients: read_data's PairIJ Coeffs
 printed 0.652169 where LAMMPS ran 0.578975) or no file at all (the deck's earlier contact printed);
-an if's quoted ``'include "k k.in"'`` was followed as naming "k", and its file's commands lost."""
+an if's quoted ``'include "k k.in"'`` was followed as naming "k", and its file's commands lost.
+
+F-2: the copy's averaging fixes run without their ``file`` keyword; a quoted name with a space was
+taken out as two words, leaving ``a.txt"`` behind, an unmatched quote the engine stopped on: the
+deck was refused where LAMMPS runs it (O09: 0.413435)."""
 
 import pytest
 
-from deck_cli import HEAD_ON, audited_and_measured, needs_lammps
+from deck_cli import HEAD_ON, audit, audited_and_measured, lammps_separation_speed, needs_lammps
 
 LAW = "hooke {kn} 300 damping mass_velocity tangential linear_nohistory 1 0.3"
 
@@ -59,4 +63,26 @@ def test_read_data_of_a_name_with_two_spaces_reads_that_file(tmp_path, line):
     deck = ("units si\natom_style sphere\natom_modify map array\ncomm_modify vel yes\npair_style granular\n"
             f"{line}\nfix integrate all nve/sphere\ntimestep 1e-7\nrun 40000\n")
     eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 1e-4, (eps, measured, err)
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("fix", [
+    'fix at all ave/time 100 1 100 v_x file "a  a.txt"',
+    "fix at all ave/time 100 1 100 v_x file 'a a.txt' mode scalar ave one",
+    'fix ac all ave/correlate 100 1 100 v_x file "a a.txt"',
+    'compute ch all chunk/atom type\nfix ak all ave/chunk 100 1 100 ch vx file "a a.txt"',
+], ids=["ave/time", "single quotes", "ave/correlate", "ave/chunk"])
+def test_an_averaging_fix_writing_to_a_quoted_name_with_spaces_is_audited(tmp_path, fix):
+    """Field round 30, O09 O16 O18 O20 O21: refused ('LAMMPS stops here: Unmatched double quote');
+    the deck now runs in the copy without the file keyword, nothing written beside it, and its
+    contact is LAMMPS' (a kn 5000 after the fix: the pass went on past it, O17)."""
+    deck = (HEAD_ON.format(line=f"pair_coeff * * {LAW.format(kn=2000)}") + f"variable x equal step\n{fix}\n"
+            + _coeff(5000) + "run 40000\n")
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["in.deck"], err
+    eps = next(r for r in got["pairs"] if r["types"] == [1, 2])["eps"][0]
+    measured = lammps_separation_speed(deck, tmp_path)
     assert abs(eps - measured) < 1e-4, (eps, measured, err)

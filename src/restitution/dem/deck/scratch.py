@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..dialect.state import DeckError, place
-from ..deck_text import TRIPLE, ScriptError, segments as segments_of, strip_comment, words
+from ..deck_text import TRIPLE, ScriptError, segments as segments_of, strip_comment, words, written_words
 from ..deck_text import words as words_of
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
@@ -690,12 +690,18 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         if len(words) > 3 and words[3] in _AVERAGING_FIXES:
             # it computes what a variable may read after a run (field round 14, r10: an if on
             # $(f_at) after the run stopped on the stand-in, "Mismatched fix in variable formula");
-            # its one way to write, the file keyword, is dropped
-            kept = [w for k, w in enumerate(words) if w != "file" and (k == 0 or words[k - 1] != "file")]
-            if kept == words:
+            # its one way to write, the file keyword, is dropped with its name as the engine reads
+            # it: a quoted name is one word, spaces and all (field round 30, O09: file "a a.txt" left
+            # 'a.txt"' behind, an unmatched quote the engine stopped on)
+            try:
+                read, written = words_of(key), written_words(key)
+            except ScriptError:
+                read = written = words       # the engine stops on the line: nothing written
+            kept = [w for k, w in enumerate(written) if read[k] != "file" and (k == 0 or read[k - 1] != "file")]
+            if kept == written:
                 return None
             scratch.skipped.append((f"the file keyword of fix {words[3]}", loc, key))
-            scratch.silenced[(loc, " ".join(kept))] = len(scratch.skipped) - 1
+            scratch.silenced[(loc, normalised(" ".join(kept)))] = len(scratch.skipped) - 1
             return " ".join(kept)
         if len(words) > 3 and words[3] == "halt" and "message" in words[4:-1]:
             # its message is how the audit sees a soft halt met in the runs made for real (field
