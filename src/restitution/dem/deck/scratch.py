@@ -24,7 +24,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..dialect.state import DeckError, place
-from ..deck_text import TRIPLE, ScriptError, segments as segments_of, strip_comment, words, written_words
+from ..deck_text import (TRIPLE, ScriptError, logical_lines, segments as segments_of, strip_comment, words,
+                         written_words)
 from ..deck_text import words as words_of
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
@@ -169,6 +170,7 @@ class Scratch:
     left_out: set = field(default_factory=set)
     after: dict = field(default_factory=dict)
     parts: dict = field(default_factory=dict)
+    granular: bool = False
 
 
 def normalised(text: str) -> str:
@@ -338,7 +340,8 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         absolute[name] = target
     # a nonce: a deck cannot write a tag that passes for another line's
     scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
-                      origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(left_out))
+                      origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(left_out),
+                      granular=_granular_only(src))
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(root / "deck") for name in sorted(names)
                               if Path(base, name) != scratch.deck] + sorted(absolute.values())
@@ -560,6 +563,34 @@ def _file_names(command: str) -> list:
     return []
 
 
+def _granular_only(deck: Path) -> bool:
+    """Whether the deck and the scripts it names as written set a pair style, and every one they
+    set is LAMMPS' ``pair_style granular`` (a global cutoff or none): a restart they read then
+    holds that style (a pair_style in an if's quoted command, or in a file named by a variable,
+    is not read here, and a line naming pair_style anywhere else counts as another style).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     deck = Path(d, "in.main")
+    ...     _ = deck.write_text("pair_style granular\\nread_restart a.rst\\n")
+    ...     first = _granular_only(deck)
+    ...     _ = deck.write_text('pair_style granular\\nif "1 > 0" then "pair_style hybrid granular"\\n')
+    ...     first, _granular_only(deck)
+    (True, False)
+    """
+    styles = set()
+    for path in [deck, *(scripts_named(deck, literal=True) or [])]:
+        if not _text_file(path):
+            continue
+        for _, line in logical_lines(path.read_text(encoding="utf-8", errors="replace")):
+            split = normalised(line).split()
+            if "pair_style" in line:
+                styles.add(split[1] if split[:1] == ["pair_style"] and len(split) in (2, 3) else "")
+    return styles == {"granular"}
+
+
 def _named_files(deck: Path, literal: bool = False) -> set | None:
     """The names (without folders) of :func:`scripts_named`."""
     paths = scripts_named(deck, literal)
@@ -654,7 +685,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         k = len(scratch.restarts)
         scratch.restarts.append((loc[0], loc[1], key))
         path = scratch.root / f"restart_{k}"
-        path.write_text(_audit_lines(scratch, restart(key)))
+        granular = scratch.granular and getattr(marker, "granular_restart", False)
+        path.write_text(_audit_lines(scratch, restart(key, granular=True) if granular else restart(key)))
         return f"include {path}"
     if word == "shell" and scratch.confined and key.split()[1:2] and key.split()[1] in SHELL_BUILTINS:
         # the engine does these itself (no program runs), where nothing outside the copy is writable
