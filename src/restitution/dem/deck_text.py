@@ -126,6 +126,15 @@ def written_words(line: str) -> list[str]:
     kept as the engine reads them (a quoted name with spaces stays one word). ScriptError as
     :func:`words` raises it.
 
+    Parameters
+    ----------
+    line : str
+        A command, its comment removed.
+
+    Returns
+    -------
+    list of str
+
     Examples
     --------
     >>> written_words('fix a all ave/time 1 1 1 v_x file "a  a.txt" mode scalar')[-4:]
