@@ -15,7 +15,7 @@ does :func:`logical_lines` with :func:`words`:
 
 from __future__ import annotations
 
-__all__ = ["ScriptError", "TRIPLE", "segments", "logical_lines", "strip_comment", "words"]
+__all__ = ["ScriptError", "TRIPLE", "segments", "logical_lines", "strip_comment", "words", "written_words"]
 
 #: LAMMPS' triple quote, which may span lines
 TRIPLE = '"""'
@@ -117,6 +117,37 @@ def words(line: str) -> list[str]:
     on both)."""
     if '"' not in line and "'" not in line:
         return line.split()       # no quote: whitespace alone splits it (str.isspace's whitespace)
+    return [line[start:end] for _, _, start, end in _spans(line)]
+
+
+def written_words(line: str) -> list[str]:
+    """The words of a command as written, a quoted word with its quotes: the k-th is the k-th of
+    :func:`words`, so that a command can be written again without some of its words, the others
+    kept as the engine reads them (a quoted name with spaces stays one word). ScriptError as
+    :func:`words` raises it.
+
+    Parameters
+    ----------
+    line : str
+        A command, its comment removed.
+
+    Returns
+    -------
+    list of str
+
+    Examples
+    --------
+    >>> written_words('fix a all ave/time 1 1 1 v_x file "a  a.txt" mode scalar')[-4:]
+    ['file', '"a  a.txt"', 'mode', 'scalar']
+    """
+    if '"' not in line and "'" not in line:
+        return line.split()
+    return [line[start:end] for start, end, _, _ in _spans(line)]
+
+
+def _spans(line: str) -> list[tuple[int, int, int, int]]:
+    """(start, end) of each word of ``line`` as written and (start, end) of what the engine takes of
+    it (a quoted word without its quotes)."""
     out, k, n = [], 0, len(line)
     while k < n:
         if line[k].isspace():
@@ -130,12 +161,12 @@ def words(line: str) -> list[str]:
             after = end + len(quote)
             if after < n and not line[after].isspace():
                 raise ScriptError(f"text runs on after a closing {quote} quote (LAMMPS stops: unbalanced quotes)")
-            out.append(line[k + len(quote):end])
+            out.append((k, after, k + len(quote), end))
             k = after
         else:
             end = k
             while end < n and not line[end].isspace():
                 end += 1
-            out.append(line[k:end])
+            out.append((k, end, k, end))
             k = end
     return out

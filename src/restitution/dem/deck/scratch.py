@@ -24,7 +24,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..dialect.state import DeckError, place
-from ..deck_text import TRIPLE, ScriptError, segments as segments_of, strip_comment, words
+from ..deck_text import (TRIPLE, ScriptError, logical_lines, segments as segments_of, strip_comment, words,
+                         written_words)
 from ..deck_text import words as words_of
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
@@ -169,11 +170,14 @@ class Scratch:
     left_out: set = field(default_factory=set)
     after: dict = field(default_factory=dict)
     parts: dict = field(default_factory=dict)
+    granular: bool = False
 
 
 def normalised(text: str) -> str:
     """A command as the audit compares it with an engine's echo: comment and continuation marks
-    removed, whitespace collapsed.
+    removed, whitespace collapsed outside quotes. A quoted text is kept as written: the engines
+    take it so, quotes removed, and echo it so (LAMMPS 22 Jul 2025 and LIGGGHTS 3.8 measured:
+    ``include "k  k.in"`` opens the file of two spaces, not "k k.in"; a tab in a name likewise).
 
     Parameters
     ----------
@@ -187,8 +191,24 @@ def normalised(text: str) -> str:
     --------
     >>> normalised("pair_coeff  * * hooke 1 0   # soft")
     'pair_coeff * * hooke 1 0'
+    >>> normalised('  include   "k  k.in"  # two spaces')
+    'include "k  k.in"'
+    >>> normalised('if "1 > 0"  then  \\'include "a\\tb.in"\\'')
+    'if "1 > 0" then \\'include "a\\tb.in"\\''
     """
-    return " ".join(strip_comment(text).split())
+    text = strip_comment(text)
+    if '"' not in text and "'" not in text:
+        return " ".join(text.split())
+    out = []
+    for piece, quote in segments_of(text):
+        closed = quote and piece.endswith(quote) and len(piece) >= 2 * len(quote)
+        # an unclosed quote (the engine stops on it) is collapsed as before: no name is read from it
+        out.append(piece if closed else _BLANKS.sub(" ", piece))
+    return "".join(out).strip()
+
+
+#: A run of whitespace, as str.split() splits at it
+_BLANKS = re.compile(r"\s+")
 
 
 def _not_copied(root: Path) -> tuple:
@@ -320,7 +340,8 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         absolute[name] = target
     # a nonce: a deck cannot write a tag that passes for another line's
     scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
-                      origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(left_out))
+                      origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(left_out),
+                      granular=_granular_only(src))
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(root / "deck") for name in sorted(names)
                               if Path(base, name) != scratch.deck] + sorted(absolute.values())
@@ -499,19 +520,7 @@ def scripts_named(deck: Path, literal: bool = False) -> list | None:
         except OSError:
             continue
         for line in text.splitlines():
-            words = normalised(line).split()
-            if len(words) >= 2 and words[0] in ("include", "jump") and words[1] != "SELF":
-                try:
-                    # a quoted name is one word, spaces and all (field round 29, I14: "sub dir/k.in")
-                    named = words_of(normalised(line))[1:2]
-                except ScriptError:
-                    named = [words[1].strip("\"'")]
-            else:
-                # an if's quoted include (field round 24, V07: '"include kn.in"' is no word "include",
-                # and kn.in's commands were never read); the files it names are followed as above
-                named = [words[k + 1].strip("\"'") for k, w in enumerate(words[:-1])
-                         if w.strip("\"'") in ("include", "jump")]
-            for name in named:
+            for name in _file_names(normalised(line)):
                 if "$" in name:
                     if literal:
                         continue
@@ -521,6 +530,65 @@ def scripts_named(deck: Path, literal: bool = False) -> list | None:
                     paths.append(deck.parent / name)
                     todo.append(deck.parent / name)
     return paths
+
+
+#: Commands whose quoted arguments are commands the engine runs (an if's branches, a run's every, a
+#: partition's command)
+_RUNNING = ("if", "run", "partition")
+
+
+def _file_names(command: str) -> list:
+    """The file names an include or jump gives in ``command`` (normalised), or in a command that
+    ``command`` runs (an if's, at any depth), each as the engine takes it: quotes removed, its
+    spaces and tabs kept (field round 30, I05: ``include "k  k.in"`` opens the file of two spaces;
+    I21: the if's quoted ``'include "k k.in"'`` was read as naming "k").
+
+    Examples
+    --------
+    >>> _file_names('include "k  k.in"'), _file_names("jump j.in loop")
+    (['k  k.in'], ['j.in'])
+    >>> _file_names('''if "1 > 0" then 'include "k k.in"' else "jump SELF a"''')
+    ['k k.in', 'SELF']
+    """
+    try:
+        split = words_of(command)
+    except ScriptError:
+        # the engine stops on the line; its words read as whitespace splits them, quotes dropped
+        split = [w.strip("\"'") for w in command.split()]
+        return [split[k + 1] for k, w in enumerate(split[:-1]) if w in ("include", "jump")]
+    if len(split) >= 2 and split[0] in ("include", "jump"):
+        return [split[1]]
+    if split[:1] and split[0] in _RUNNING:
+        return [name for word in split[1:] if len(word.split()) > 1 for name in _file_names(normalised(word))]
+    return []
+
+
+def _granular_only(deck: Path) -> bool:
+    """Whether the deck and the scripts it names as written set a pair style, and every one they
+    set is LAMMPS' ``pair_style granular`` (a global cutoff or none): a restart they read then
+    holds that style (a pair_style in an if's quoted command, or in a file named by a variable,
+    is not read here, and a line naming pair_style anywhere else counts as another style).
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     deck = Path(d, "in.main")
+    ...     _ = deck.write_text("pair_style granular\\nread_restart a.rst\\n")
+    ...     first = _granular_only(deck)
+    ...     _ = deck.write_text('pair_style granular\\nif "1 > 0" then "pair_style hybrid granular"\\n')
+    ...     first, _granular_only(deck)
+    (True, False)
+    """
+    styles = set()
+    for path in [deck, *(scripts_named(deck, literal=True) or [])]:
+        if not _text_file(path):
+            continue
+        for _, line in logical_lines(path.read_text(encoding="utf-8", errors="replace")):
+            split = normalised(line).split()
+            if "pair_style" in line:
+                styles.add(split[1] if split[:1] == ["pair_style"] and len(split) in (2, 3) else "")
+    return styles == {"granular"}
 
 
 def _named_files(deck: Path, literal: bool = False) -> set | None:
@@ -617,7 +685,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         k = len(scratch.restarts)
         scratch.restarts.append((loc[0], loc[1], key))
         path = scratch.root / f"restart_{k}"
-        path.write_text(_audit_lines(scratch, restart(key)))
+        granular = scratch.granular and getattr(marker, "granular_restart", False)
+        path.write_text(_audit_lines(scratch, restart(key, granular=True) if granular else restart(key)))
         return f"include {path}"
     if word == "shell" and scratch.confined and key.split()[1:2] and key.split()[1] in SHELL_BUILTINS:
         # the engine does these itself (no program runs), where nothing outside the copy is writable
@@ -653,12 +722,18 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         if len(words) > 3 and words[3] in _AVERAGING_FIXES:
             # it computes what a variable may read after a run (field round 14, r10: an if on
             # $(f_at) after the run stopped on the stand-in, "Mismatched fix in variable formula");
-            # its one way to write, the file keyword, is dropped
-            kept = [w for k, w in enumerate(words) if w != "file" and (k == 0 or words[k - 1] != "file")]
-            if kept == words:
+            # its one way to write, the file keyword, is dropped with its name as the engine reads
+            # it: a quoted name is one word, spaces and all (field round 30, O09: file "a a.txt" left
+            # 'a.txt"' behind, an unmatched quote the engine stopped on)
+            try:
+                read, written = words_of(key), written_words(key)
+            except ScriptError:
+                read = written = words       # the engine stops on the line: nothing written
+            kept = [w for k, w in enumerate(written) if read[k] != "file" and (k == 0 or read[k - 1] != "file")]
+            if kept == written:
                 return None
             scratch.skipped.append((f"the file keyword of fix {words[3]}", loc, key))
-            scratch.silenced[(loc, " ".join(kept))] = len(scratch.skipped) - 1
+            scratch.silenced[(loc, normalised(" ".join(kept)))] = len(scratch.skipped) - 1
             return " ".join(kept)
         if len(words) > 3 and words[3] == "halt" and "message" in words[4:-1]:
             # its message is how the audit sees a soft halt met in the runs made for real (field

@@ -115,12 +115,20 @@ def marker(root: Path, clock: bool = False, real: bool = False):
                 f'"{_setup_dump(root / ATOMS, k)}" "run 0 post no" '
                 f'"undump {SETUP_DUMP}{k}" "timer timeout 0 every 1"\n' + (_clock(run) if clock else ""))
 
-    def restart(read: str) -> str:
+    def restart(read: str, granular: bool = False) -> str:
         # what LAMMPS holds after the read, in its own words: units, atom and pair style, types,
         # time step, which pair coefficients are set, the groups (the audit reads it back, never
-        # the binary file)
-        return f"{read}\ninfo system coeffs groups out append {root / RESTART_INFO}\n"
+        # the binary file). With ``granular`` (the deck sets no pair style but granular), the
+        # style given again first: LAMMPS' pair granular keeps no global cutoff through a
+        # restart, and reads one from memory it never set (measured: 0 in a fresh process, where
+        # the deck run by hand goes on; inf in the pass of field round 30's D13, an if's read,
+        # which stopped at its run, "Cannot use neighbor bins - box size << cutoff"); the same
+        # style given again keeps every coefficient and sets the default, a cutoff from the radii
+        again = "pair_style granular\n" if granular else ""
+        return f"{read}\n{again}info system coeffs groups out append {root / RESTART_INFO}\n"
     text.restart = restart
+    # its restart takes ``granular`` (:func:`restitution.dem.deck.scratch.scratch_copy`)
+    text.granular_restart = True
     # LAMMPS stops on a set that meets no atom: the copy guards each one (scratch.UNSET)
     text.guards_set = True
     # LAMMPS reads typographic quotes and spaces as ASCII ones: the copy is made of what it reads
