@@ -331,15 +331,24 @@ def skipped(commands: list, scratch: Scratch) -> dict:
 _READS = {"include": 1, "read_data": 1, "molecule": 2, "read_dump": 1}
 
 
+def _split(text: str) -> list:
+    """A command's words as the engine reads them (a quoted name with spaces one word, without its
+    quotes: field round 30, SW-D), or split at whitespace where its quotes do not balance."""
+    try:
+        return words(text)
+    except ScriptError:
+        return [w.strip("\"'") for w in text.split()]
+
+
 def _read_file(text: str) -> str | None:
     """The file a command reads, where it is one of those a skipped command could have written."""
-    words = text.split()
-    if words and words[0] in _READS and len(words) > _READS[words[0]]:
-        return words[_READS[words[0]]].strip("\"'")
-    if words[:1] == ["variable"] and len(words) > 3 and words[2] in ("file", "atomfile"):
-        return words[3].strip("\"'")
-    if words[:1] == ["fix"] and "file" in words[4:-1]:           # a LIGGGHTS mesh
-        return words[words.index("file", 4) + 1].strip("\"'")
+    split = _split(text)
+    if split and split[0] in _READS and len(split) > _READS[split[0]]:
+        return split[_READS[split[0]]]
+    if split[:1] == ["variable"] and len(split) > 3 and split[2] in ("file", "atomfile"):
+        return split[3]
+    if split[:1] == ["fix"] and "file" in split[4:-1]:           # a LIGGGHTS mesh
+        return split[split.index("file", 4) + 1]
     return None
 
 
@@ -427,6 +436,13 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     >>> written_then_read([Executed((None, 3), "label restitution_skipped_0"),
     ...                    Executed((None, 4), "include p.in")], s)
     (((None, 3), 'shell cp p9.in p.in'), ((None, 4), 'include p.in'))
+
+    A quoted name with spaces is one name (the file "k  k.in", not "k"):
+
+    >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), skipped=[("print", (None, 3), 'print "x" file "k  k.in"')])
+    >>> cmds = [Executed((None, 3), "label restitution_skipped_0"), Executed((None, 4), 'include "j  k"')]
+    >>> written_then_read(cmds, s) is None, written_then_read(cmds[:1] + [Executed((None, 4), 'include "k  k.in"')], s)[1]
+    (True, ((None, 4), 'include "k  k.in"'))
     """
     reached = []
     for cmd in commands:
@@ -439,7 +455,7 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
             continue
         base = os.path.basename(name)
         for loc, text in reached:
-            if base and any(os.path.basename(word.strip("\"'")) == base for word in text.split()[1:]):
+            if base and any(os.path.basename(word) == base for word in _split(text)[1:]):
                 return (loc, text), (cmd.loc, cmd.text)
     return None
 
