@@ -88,3 +88,18 @@ def test_a_fix_adapt_growing_spheres_after_the_lists_are_built_leaves_their_pair
     assert "fix ad adapt sizes the spheres" in err, err
     grown_first = deck.replace("fix ad two adapt", "set atom 2 diameter 0.02\nfix ad two adapt")
     assert abs(lammps_separation_speed(deck, tmp_path) - lammps_separation_speed(grown_first, tmp_path)) > 0.1
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_sphere_made_at_a_new_id_before_pre_no_larger_than_its_type_held_leaves_the_pair_out(tmp_path):
+    """Field round 31, SW-G: lv2 deleted (compress no) and made again at a new ID, of the 2 cm a
+    still sphere of its type already had: the sizes the type holds and every old ID look unchanged,
+    the first touch was printed; LAMMPS' lists, built before the sphere was made, meet it late."""
+    remade = ("run 1\ngroup two id 2\ndelete_atoms group two compress no\ncreate_atoms 2 single 0.00775 0 0\n"
+              "set atom 5 diameter 0.02 density 2500\nset atom 5 vx -0.5\nrun 40000 pre no\n")
+    deck = _apart() + remade
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert [1, 2] not in [r["types"] for r in got["stages"][-1]["pairs"]], (got["stages"][-1]["pairs"], err)
+    assert "pre no after type 2" in err, err
