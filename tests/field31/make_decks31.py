@@ -23,28 +23,29 @@ REMAKE = lambda d, cmp="", grp="group lv2 id 2\n", idn=2: (
     f"delete_atoms group lv2{cmp}\ncreate_atoms 2 single ${{xx}} 0.02 ${{zz}} units box\n"
     f"set atom {idn} diameter {d} density 2500\n" + grp + f"velocity lv2 set -0.2285714286 0 ${{vz}} units box\n")
 
-# ------------------------------------------------------------ X: ID reuse before run pre no
+# ------------------------------------------------------------ X: ID reuse before run pre no (x[2] needs an atom map)
+MAP = BL().replace("atom_style sphere 1\n", "atom_style sphere 1\natom_modify map array\n")
 E("X01_delete_remake_id2_bigger_pre_no", "run 1000; delete lv2 (ID 2), create it again (ID 2 again) 12 mm; run 3000 pre no",
-  "run 1000\n" + REMAKE(0.012) + "run 3000 pre no\n", gap=g41, sep=0.008)
-E("X02_delete_remake_id2_bigger_control", "X01 without pre no", "run 1000\n" + REMAKE(0.012) + "run 3000\n", gap=g41, sep=0.008)
-E("X03_delete_remake_id2_same_pre_no", "X01 with the same 6 mm (no growth)", "run 1000\n" + REMAKE(0.006) + "run 3000 pre no\n", gap=p.g11)
+  "run 1000\n" + REMAKE(0.012) + "run 3000 pre no\n", gap=g41, sep=0.008, pre=MAP)
+E("X02_delete_remake_id2_bigger_control", "X01 without pre no", "run 1000\n" + REMAKE(0.012) + "run 3000\n", gap=g41, sep=0.008, pre=MAP)
+E("X03_delete_remake_id2_same_pre_no", "X01 with the same 6 mm (no growth)", "run 1000\n" + REMAKE(0.006) + "run 3000 pre no\n", gap=p.g11, pre=MAP)
 E("X04_delete_remake_compress_victims_pre_no", "victims 12, 6 mm (IDs 3, 4); delete lv2: compress renumbers them 2, 3; the new 12 mm lv2 takes ID 4; run 3000 pre no",
-  V26 + "run 1000\n" + REMAKE(0.012, grp="group lv2 id 4\n", idn=4) + "run 3000 pre no\n", gap=g41, sep=0.008)
+  V26 + "run 1000\n" + REMAKE(0.012, grp="group lv2 id 4\n", idn=4) + "run 3000 pre no\n", gap=g41, sep=0.008, pre=MAP)
 E("X05_delete_remake_nocompress_victims_pre_no", "X04 with compress no (the new lv2 takes ID 5)",
-  V26 + "run 1000\n" + REMAKE(0.012, cmp=" compress no", grp="group lv2 id 5\n", idn=5) + "run 3000 pre no\n", gap=g41, sep=0.008)
+  V26 + "run 1000\n" + REMAKE(0.012, cmp=" compress no", grp="group lv2 id 5\n", idn=5) + "run 3000 pre no\n", gap=g41, sep=0.008, pre=MAP)
 E("X06_delete_victim_remake_id_pre_no", "victim ID 3 (6 mm, type 2) deleted, a 12 mm type 2 made far away takes ID 3; lv2 grows to 12 mm; run 3000 pre no",
   vic(2, 0.006, 0.006) + "group v4 id 4\nrun 1000\ndelete_atoms group v4\ncreate_atoms 2 single 0.03 0.01 0.012\nset atom 4 diameter 0.012 density 2500\nset group lv2 diameter 0.012\nrun 3000 pre no\n",
-  gap=g41, sep=0.008, pre=BL() + "")
+  gap=g41, sep=0.008, pre=MAP)
 RDA = ("# lv2 again\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n"
-       "2 2 0.012 2500 0.0238 0.02 0.049995095\n\nVelocities\n\n2 -0.2285714286 0 0 0 0 0\n")
+       "2 2 0.012 2500 0.024821 0.02 0.049995095\n\nVelocities\n\n2 -0.2285714286 0 -0.00981 0 0 0\n")
 E("X07_delete_read_data_add_merge_id2_pre_no", 'run 1000; delete lv2; read_data "new  lv2.data" add merge (ID 2, 12 mm, 0.1 mm from lv1); run 3000 pre no',
-  "run 1000\ndelete_atoms group lv2\nread_data \"new  lv2.data\" add merge\ngroup lv2 id 2\nrun 3000 pre no\n", gap=g41, sep=0.008, data={"new  lv2.data": RDA})
+  "run 1000\ndelete_atoms group lv2\nread_data \"new  lv2.data\" add merge\ngroup lv2 id 2\nrun 3000 pre no\n", gap=g41, sep=0.008, data={"new  lv2.data": RDA}, pre=MAP)
 E("X08_delete_read_data_add_merge_id2_control", "X07 without pre no", "run 1000\ndelete_atoms group lv2\nread_data \"new  lv2.data\" add merge\ngroup lv2 id 2\nrun 3000\n",
-  gap=g41, sep=0.008, data={"new  lv2.data": RDA})
+  gap=g41, sep=0.008, data={"new  lv2.data": RDA}, pre=MAP)
 E("X09_remake_in_include_tab_pre_no", "X01 with the delete/create in include \"a\\tb.in\" (a tab)", "run 1000\ninclude \"a\tb.in\"\nrun 3000 pre no\n", gap=g41, sep=0.008,
-  data={"a\tb.in": REMAKE(0.012)})
+  data={"a\tb.in": REMAKE(0.012)}, pre=MAP)
 E("X10_remake_twice_shrink_grow_pre_no", "lv2 remade 12 mm, run 100 pre no, remade 6 mm, remade 12 mm again; run 3000 pre no",
-  "run 1000\n" + REMAKE(0.012) + "run 100 pre no\n" + REMAKE(0.006) + REMAKE(0.012) + "run 3000 pre no\n", gap=g41 + 0.1e-3, sep=0.008)
+  "run 1000\n" + REMAKE(0.012) + "run 100 pre no\n" + REMAKE(0.006) + REMAKE(0.012) + "run 3000 pre no\n", gap=g41 + 0.1e-3, sep=0.008, pre=MAP)
 
 # ------------------------------------------------------------ K: atom_modify id no (no IDs)
 KP = ("create_atoms 1 single 0.01595 0.02 0.05\ncreate_atoms 2 single 0.02505 0.02 0.05\n"
@@ -52,7 +53,7 @@ KP = ("create_atoms 1 single 0.01595 0.02 0.05\ncreate_atoms 2 single 0.02505 0.
       "group lv1 region r1\ngroup lv2 region r2\nset group lv1 diameter 0.004 density 2500\nset group lv2 diameter 0.006 density 2500\n"
       "velocity lv1 set 0.7714285714 0 0 units box\nvelocity lv2 set -0.2285714286 0 0 units box\n")
 KB = lambda: BL().replace("atom_style sphere 1\n", "atom_style sphere 1\natom_modify id no\n")
-E("K01_id_no_plain", "atom_modify id no; the live pair by regions; run 3000", "run 3000\n", pair=KP, pre=KB(), gap=2.1e-3)
+E("K01_id_no_plain", "atom_modify id no; the live pair by regions; run 5000", "run 5000\n", pair=KP, pre=KB(), gap=2.1e-3)
 E("K02_id_no_grow_pre_no", "atom_modify id no; run 1000; set group lv2 diameter 0.012; run 3000 pre no", "run 1000\nset group lv2 diameter 0.012\nrun 3000 pre no\n", pair=KP, pre=KB(), sep=0.008)
 E("K03_id_no_victims_grow_pre_no", "K02 with type 2 victims of 12 and 6 mm (by region)",
   "create_atoms 2 single 0.01 0.01 0.012\ncreate_atoms 2 single 0.03 0.03 0.012\nregion rv1 sphere 0.01 0.01 0.012 0.001 units box\nregion rv2 sphere 0.03 0.03 0.012 0.001 units box\n"
@@ -70,7 +71,7 @@ E("A03_adapt_two_groups", "fix adapt lv1 to 8 mm and lv2 to 12 mm from the first
 E("A04_adapt_two_groups_after_run_unfix", "run 1000; fix adapt lv1 8 mm, lv2 12 mm; run 0; unfix both; run 3000 (sized before the lists)",
   "variable d1 equal 0.008\n" + DD + "run 1000\nfix a1 lv1 adapt 1 atom diameter v_d1 reset no\n" + AD + "run 0\nunfix a1\nunfix ad\nrun 3000\n", gap=g41 + 2e-3, sep=0.010)
 E("A05_adapt_shrink_then_grow", "fix adapt lv2 v_dd: 12 mm in run 1000, dd 6 mm in run 1000, dd 12 mm in run 3000 (no unfix)",
-  DD + AD + "run 1000\nvariable dd equal 0.006\nrun 1000\nvariable dd equal 0.012\nrun 3000\n", gap=g41 + 1e-3 + 3e-3, sep=0.008)
+  DD + AD + "run 1000\nvariable dd equal 0.006\nrun 1000\nvariable dd equal 0.012\nrun 4000\n", gap=g41 + 1e-3 + 3e-3, sep=0.008)
 E("A06_adapt_shrink_then_grow_unfix", "A05 with unfix ad before the last run (sizes left 12 mm at its set-up? no: 6 mm)",
   DD + AD + "run 1000\nvariable dd equal 0.006\nrun 1000\nvariable dd equal 0.012\nrun 0\nunfix ad\nrun 3000\n", gap=g41 + 1e-3, sep=0.008)
 E("A07_adapt_other_group_only", "fix adapt of a far victim (group v) 12 mm; the live pair 6 mm untouched; run 3000", vic(2, 0.006, 0.006) + "group v id 3\n" + DD +
