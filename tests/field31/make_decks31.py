@@ -104,6 +104,28 @@ for nm, dt, gp in (("T01_60steps", 1.12e-5, 0.1e-3), ("T02_60steps_phase", 1.12e
                    ("T05_900steps", 7.5e-7, 0.1e-3), ("T06_1100steps", 6.1e-7, 0.1e-3), ("T07_150steps_phase", 4.5e-6, 0.1029e-3), ("T08_52steps", 1.29e-5, 0.1031e-3)):
     E(nm + "_damped", f"damping 6000 (eps ~0.13); timestep {dt:g} (~{nm.split('_')[1]} per contact); gap {gp:g}", f"timestep {dt:g}\nrun {int(2.5e-3 / dt)}\n", gap=gp, pre=BL(HD))
 
+# ------------------------------------------------------------ Y (wave 2): X05's neighbours, a sphere made at a new ID before pre no
+X5 = lambda make, grp="group lv2 id 5\n", idn=5, d=0.012, pre="": (V26 + pre + "run 1000\n" + "variable xx equal $(x[2])\nvariable zz equal $(z[2])\nvariable vz equal $(vz[2])\n"
+    "delete_atoms group lv2 compress no\n" + make + (f"set atom {idn} diameter {d} density 2500\n" if d else "") + grp + "velocity lv2 set -0.2285714286 0 ${vz} units box\nrun 3000 pre no\n")
+CA = "create_atoms 2 single ${xx} 0.02 ${zz} units box\n"
+RAP = ("# new\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n"
+       "1 2 0.012 2500 0.024821 0.02 0.049995095\n")
+E("Y01_new_id_read_data_append_pre_no", 'X05 with read_data "n  a.data" add append (file ID 1 -> 5, 12 mm)', X5('read_data "n  a.data" add append\n', d=None),
+  gap=g41, sep=0.008, pre=MAP, data={"n  a.data": RAP})
+E("Y02_new_id_molecule_pre_no", 'X05 with molecule "m  b.mol" (12 mm type 2) made by create_atoms 0 single ... mol', X5('molecule m "m  b.mol"\ncreate_atoms 0 single ${xx} 0.02 ${zz} mol m 4711 units box\n', d=None),
+  gap=g41, sep=0.008, pre=MAP, data={"m  b.mol": MOL})
+E("Y03_new_id_same_size_6mm_pre_no", "X05 with the new sphere 6 mm (no growth: a new ID, the lists by index)", X5(CA, d=0.006), gap=p.g11, pre=MAP)
+E("Y04_new_id_12mm_no_victims_pre_no", "X05 without victims (type 2 held only 6 mm: the new 12 mm is new to it); new ID 3", X5(CA, grp="group lv2 id 3\n", idn=3).replace(V26, ""), gap=g41, sep=0.008, pre=MAP)
+E("Y05_new_id_12mm_control", "X05 without pre no", X5(CA).replace("run 3000 pre no", "run 3000"), gap=g41, sep=0.008, pre=MAP)
+E("Y06_new_id_in_include_quoted_pre_no", 'X05 with the delete/create in include "x  y.in"', V26 + 'run 1000\ninclude "x  y.in"\nrun 3000 pre no\n', gap=g41, sep=0.008, pre=MAP,
+  data={"x  y.in": X5(CA).replace(V26 + "run 1000\n", "").replace("run 3000 pre no\n", "")})
+E("Y07_new_id_victims_12_12_pre_no", "X05 with both victims 12 mm (type 2 held 6 and 12 mm at set-up; after: 12 12 12)", X5(CA).replace(V26, vic(2, 0.012, 0.012)), gap=g41, sep=0.008, pre=MAP)
+E("Y08_new_id_loop_pre_no", "X05 with the delete/create in a loop's second pass (run 500 twice)", V26 + 'variable i loop 2\nlabel l\nrun 500\nif "${i} == 2" then "include mk.in"\nnext i\njump SELF l\nrun 3000 pre no\n',
+  gap=g41, sep=0.008, pre=MAP, data={"mk.in": X5(CA).replace(V26 + "run 1000\n", "").replace("run 3000 pre no\n", "")})
+E("Y09_new_id_type1_victim_pre_no", "type 1 holds a 12 mm victim; lv1 deleted (compress no), made again 4 mm at a new ID (type 1 radii 2 and 6 mm)",
+  vic(1, 0.012, 0.004) + "run 1000\nvariable xx equal $(x[1])\nvariable zz equal $(z[1])\nvariable vz equal $(vz[1])\ndelete_atoms group lv1 compress no\ncreate_atoms 1 single ${xx} 0.02 ${zz} units box\n"
+  "set atom 5 diameter 0.004 density 2500\ngroup lv1 id 5\nvelocity lv1 set 0.7714285714 0 ${vz} units box\nrun 3000 pre no\n", gap=p.g11, pre=MAP)
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
