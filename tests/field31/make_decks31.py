@@ -126,6 +126,17 @@ E("Y09_new_id_type1_victim_pre_no", "type 1 holds a 12 mm victim; lv1 deleted (c
   vic(1, 0.012, 0.004) + "run 1000\nvariable xx equal $(x[1])\nvariable zz equal $(z[1])\nvariable vz equal $(vz[1])\ndelete_atoms group lv1 compress no\ncreate_atoms 1 single ${xx} 0.02 ${zz} units box\n"
   "set atom 5 diameter 0.004 density 2500\ngroup lv1 id 5\nvelocity lv1 set 0.7714285714 0 ${vz} units box\nrun 3000 pre no\n", gap=p.g11, pre=MAP)
 
+# ------------------------------------------------------------ Z (wave 3): the new-ID class's edges
+E("Z01_new_id_run0_then_pre_no_control", "X05 with run 0 (a set-up) before run 3000 pre no", X5(CA).replace("run 3000 pre no", "run 0\nrun 3000 pre no"), gap=g41, sep=0.008, pre=MAP)
+E("Z02_new_id_run10_pre_no_twice", "X05 with run 10 pre no before run 3000 pre no (stale over two runs)", X5(CA).replace("run 3000 pre no", "run 10 pre no\nrun 3000 pre no"), gap=g41 + 0.01e-3, sep=0.008, pre=MAP)
+E("Z03_new_id_create_random_pre_no", "X05 by create_atoms 2 random 1 in a 0.02 mm cube at lv2's place (new ID 5)",
+  X5("region nb block $(v_xx-1e-5) $(v_xx+1e-5) 0.01999 0.02001 $(v_zz-1e-5) $(v_zz+1e-5) units box\ncreate_atoms 2 random 1 4711 nb\n"), gap=g41, sep=0.008, pre=MAP)
+E("Z04_new_id_delete_region_pre_no", "X05 with lv2 deleted by region (compress no)",
+  X5(CA).replace("delete_atoms group lv2 compress no", "region dl sphere ${xx} 0.02 ${zz} 0.001 units box\ndelete_atoms region dl compress no"), gap=g41, sep=0.008, pre=MAP)
+E("Z05_new_id_9mm_new_radius_pre_no", "X05 with the new sphere 9 mm (a radius type 2 never held: caught?)", X5(CA, d=0.009), gap=2.6e-3, sep=0.0065, pre=MAP)
+E("Z06_new_id_density_pre_no", "X05 with the new sphere 12 mm density 7800 (heavier, same radius)", X5(CA).replace("set atom 5 diameter 0.012 density 2500", "set atom 5 diameter 0.012 density 7800"),
+  gap=g41, sep=0.008, pre=MAP)
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
