@@ -137,6 +137,21 @@ E("Z05_new_id_9mm_new_radius_pre_no", "X05 with the new sphere 9 mm (a radius ty
 E("Z06_new_id_density_pre_no", "X05 with the new sphere 12 mm density 7800 (heavier, same radius)", X5(CA).replace("set atom 5 diameter 0.012 density 2500", "set atom 5 diameter 0.012 density 7800"),
   gap=g41, sep=0.008, pre=MAP)
 
+# ------------------------------------------------------------ K (wave 4): atom_modify id no with a sphere made again before pre no
+KV = ("create_atoms 2 single 0.01 0.01 0.012\ncreate_atoms 2 single 0.03 0.03 0.012\nregion rv1 sphere 0.01 0.01 0.012 0.001 units box\nregion rv2 sphere 0.03 0.03 0.012 0.001 units box\n"
+      "set region rv1 diameter 0.012 density 2500\nset region rv2 diameter 0.006 density 2500\n")
+KR = lambda d: ("run 1000\nvariable xx equal $(xcm(lv2,x))\nvariable zz equal $(xcm(lv2,z))\nvariable vz equal $(vcm(lv2,z))\ndelete_atoms group lv2\n"
+                "create_atoms 2 single ${xx} 0.02 ${zz} units box\nregion rn sphere ${xx} 0.02 ${zz} 0.0005 units box\ngroup lv2 region rn\n"
+                f"set group lv2 diameter {d} density 2500\nvelocity lv2 set -0.2285714286 0 ${{vz}} units box\nrun 3000 pre no\n")
+E("K04_id_no_remade_12mm_victims_pre_no", "atom_modify id no; victims 12, 6 mm; lv2 deleted and made again 12 mm; run 3000 pre no", KV + KR(0.012), pair=KP, pre=KB(), gap=g41, sep=0.008)
+E("K05_id_no_remade_6mm_victims_pre_no", "K04 with the new sphere 6 mm (no growth)", KV + KR(0.006), pair=KP, pre=KB(), gap=g41)
+E("K06_id_no_remade_12mm_control", "K04 without pre no", KV + KR(0.012).replace("run 3000 pre no", "run 3000"), pair=KP, pre=KB(), gap=g41, sep=0.008)
+
+E("K07_id_no_moved_new_12mm_victims_pre_no", "atom_modify id no; victims 12, 6 mm; lv2 moved far (set x y) and stopped, a new 12 mm type 2 made at its place; run 3000 pre no",
+  KV + KR(0.012).replace("delete_atoms group lv2\n", "set group lv2 x 0.035 y 0.035\nvelocity lv2 set 0 0 0 units box\ngroup lv2 clear\n"), pair=KP, pre=KB(), gap=g41, sep=0.008)
+E("K08_id_no_moved_new_12mm_control", "K07 without pre no", KV + KR(0.012).replace("delete_atoms group lv2\n", "set group lv2 x 0.035 y 0.035\nvelocity lv2 set 0 0 0 units box\ngroup lv2 clear\n").replace("run 3000 pre no", "run 3000"),
+  pair=KP, pre=KB(), gap=g41, sep=0.008)
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
