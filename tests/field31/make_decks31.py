@@ -152,6 +152,13 @@ E("K07_id_no_moved_new_12mm_victims_pre_no", "atom_modify id no; victims 12, 6 m
 E("K08_id_no_moved_new_12mm_control", "K07 without pre no", KV + KR(0.012).replace("delete_atoms group lv2\n", "set group lv2 x 0.035 y 0.035\nvelocity lv2 set 0 0 0 units box\ngroup lv2 clear\n").replace("run 3000 pre no", "run 3000"),
   pair=KP, pre=KB(), gap=g41, sep=0.008)
 
+# ------------------------------------------------------------ wave 5: SW-G with type 1, and with lists built every step
+E("Y10_new_id_type1_12mm_victim_pre_no", "type 1 holds a 12 mm victim; lv1 deleted (compress no), made again 12 mm at a new ID (5); run 3000 pre no",
+  vic(1, 0.012, 0.004) + "run 1000\nvariable xx equal $(x[1])\nvariable zz equal $(z[1])\nvariable vz equal $(vz[1])\ndelete_atoms group lv1 compress no\ncreate_atoms 1 single $(v_xx-0.004) 0.02 ${zz} units box\n"
+  "set atom 5 diameter 0.012 density 2500\ngroup lv1 id 5\nvelocity lv1 set 0.7714285714 0 ${vz} units box\nrun 5000 pre no\n", gap=3.1e-3, sep=0.009, pre=MAP)
+E("Y11_new_id_skin_big_pre_no", "X05 with neighbor 0.01 bin from the start", X5(CA), gap=g41, sep=0.008, pre=MAP + "neighbor 0.01 bin\n")
+E("Y12_new_id_check_no_every1_pre_no", "X05 with neigh_modify every 1 delay 0 check no (lists built every step)", X5(CA), gap=g41, sep=0.008, pre=MAP + "neigh_modify every 1 delay 0 check no\n")
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
