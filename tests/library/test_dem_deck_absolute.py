@@ -58,3 +58,56 @@ def test_a_file_by_absolute_path_named_in_a_variable_gives_its_coefficients(tmp_
     got, err = audit(case / "in.deck", "--g", "1")
     (row,) = got["pairs"]
     assert row["typed_e"] == 0.7 and row["file"] == str(shared / "materials.in")
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_an_absolute_name_with_two_spaces_is_read_as_the_engine_opens_it(tmp_path):
+    """variable k file "/abs/k  v.txt": the scan for absolute names split it at whitespace, so the
+    file was not copied and the confined engine stopped (an avoidable refusal, its message showing
+    the name with one space). The name is one word, spaces kept: its copy is read, not the decoy
+    of one space beside it."""
+    shared, case = tmp_path / "shared  dir", tmp_path / "case"
+    shared.mkdir(), case.mkdir()
+    (shared / "k  v.txt").write_text("0.7\n")
+    (shared / "k v.txt").write_text("0.2\n")
+    (case / "in.deck").write_text(lammps_spheres((0.004, 2500.0)) + f'variable e file "{shared / "k  v.txt"}"\n'
+                                  + LINE.replace("0.7", "${e}") + "\ntimestep 1e-6\nrun 10\n")
+    got, err = audit(case / "in.deck", "--g", "1")
+    (row,) = got["pairs"]
+    assert row["typed_e"] == 0.7
+    agrees_with_lammps(got["pairs"], {1: (0.002, 2500.0)}, LINE, 1)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_data_file_written_and_read_at_an_absolute_name_with_spaces_is_read_back(tmp_path):
+    """write_data "/abs/o  x.data", then read_data of it: the write was redirected into the scratch
+    under the name cut at its first space, an unclosed quote the engine stopped on. The file is
+    written in the scratch and read back from there; nothing is written at the path."""
+    outside, case = tmp_path / "out  dir" / "o  x.data", tmp_path / "case"
+    case.mkdir()
+    (case / "in.deck").write_text(lammps_spheres((0.004, 2500.0)) + LINE + "\n"
+                                  f'write_data "{outside}"\ndelete_atoms group all\n'
+                                  f'read_data "{outside}" add merge\ntimestep 1e-6\nrun 10\n')
+    got, err = audit(case / "in.deck", "--g", "1")
+    (row,) = got["pairs"]
+    assert row["typed_e"] == 0.7
+    assert not outside.parent.exists() and sorted(p.name for p in case.iterdir()) == ["in.deck"]
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_file_above_the_folder_named_with_two_spaces_is_included(tmp_path):
+    """include "../m  m.in": the scan of names above the folder split it at whitespace and did not
+    copy it, and the check of an include's reach read its first half ('"../m'), a name outside the
+    copy: refused, though LAMMPS reads the file. Its coefficient now, not the decoy's of one space."""
+    case = tmp_path / "case"
+    case.mkdir()
+    (tmp_path / "m  m.in").write_text(LINE + "\n")
+    (tmp_path / "m m.in").write_text(LINE.replace("0.7", "0.2") + "\n")
+    (case / "in.deck").write_text(lammps_spheres((0.004, 2500.0)) + 'include "../m  m.in"\ntimestep 1e-6\nrun 10\n')
+    got, err = audit(case / "in.deck", "--g", "1")
+    (row,) = got["pairs"]
+    assert row["typed_e"] == 0.7
+    agrees_with_lammps(got["pairs"], {1: (0.002, 2500.0)}, LINE, 1)

@@ -464,9 +464,29 @@ def _words_named(deck: Path, todo: list):
         except OSError:
             continue
         for n, line in enumerate(text.splitlines(), 1):
-            for word in normalised(line).split():
-                yield path, n, line, word.strip("\"'")
+            for word in _all_words(normalised(line)):
+                yield path, n, line, word
         todo += [deck.parent / name for name in _named_files(path) or () if not _UP.search(name)]
+
+
+def _all_words(text: str) -> list:
+    """The words of a command as the engine takes them, a quoted name one word, spaces and tabs
+    kept (``"/data/k  v.txt"``), and the words of each quoted command in it (an if's), alike;
+    where a quote is not closed (the engine stops there), the text split at whitespace."""
+    try:
+        found = words_of(text)
+    except ScriptError:
+        return [word.strip("\"'") for word in text.split()]
+    return found + [inner for word in found if word != text and len(word.split()) > 1
+                    for inner in _all_words(word)]
+
+
+def _path_word(path) -> str:
+    """A path as one word of a command: quoted where it holds whitespace."""
+    text = str(path)
+    if not any(c.isspace() for c in text):
+        return text
+    return f"'{text}'" if '"' in text else f'"{text}"'
 
 
 def _text_file(path: Path) -> bool:
@@ -652,9 +672,16 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
     key = normalised(command)
     if not key:
         return None
-    if scratch.absolute and any(w.strip("\"'") in scratch.absolute for w in key.split()[1:]):
-        # a file named by an absolute path: its copy in the scratch, the command made safe as written
-        swapped = " ".join(str(scratch.absolute.get(w.strip("\"'"), w)) for w in key.split())
+    try:
+        read, written = words_of(key), written_words(key)
+    except ScriptError:
+        read = written = key.split()
+    if scratch.absolute and any(w in scratch.absolute for w in read[1:]):
+        # a file named by an absolute path: its copy in the scratch, the command made safe as
+        # written (a quoted name is one word, spaces and tabs kept: the engine opens it so; a name
+        # in an if's quoted command is swapped where _safe_if makes that command safe)
+        swapped = " ".join(_path_word(scratch.absolute[r]) if r in scratch.absolute else w
+                           for r, w in zip(read, written))
         safe = _safe(swapped, loc, scratch, marker, top)
         return swapped if safe is None else safe
     word = key.split()[0]
@@ -664,22 +691,21 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
     restart = getattr(marker, "restart", None)
     # a restart file (where the engine's marker reads restarts back) and a data file are written
     # into the copy: a later read_restart or read_data of them reads what the deck wrote
-    if (word == "write_restart" and restart is not None or word == "write_data") and len(key.split()) > 1:
-        name = key.split()[1]
+    if (word == "write_restart" and restart is not None or word == "write_data") and len(read) > 1:
+        name = read[1]
         if _outside(name, scratch):
             # a file outside the copy (an absolute path: read-only for the confined engine, which
             # stopped there) is written into the scratch instead, where a read of the same name
             # reads it back; its base name kept (a * in it is the step, as LAMMPS writes it)
-            name = name.strip("\"'")
             target = scratch.redirected.setdefault(name, scratch.root / f"written_{len(scratch.redirected)}_"
                                                                         f"{Path(name).name}")
-            return " ".join([word, str(target), *key.split()[2:]])
+            return " ".join([word, _path_word(target), *written[2:]])
         if scratch.confined or "$" not in name:
             # its file lands in the copy (the engine's working folder; confined, nothing else is
             # writable): the deck's read reads it back, in the audit's scratch alone
             return None
-    if word == "read_data" and (read := _read_back(key, scratch)) is not None:
-        return read
+    if word == "read_data" and (back := _read_back(key, scratch)) is not None:
+        return back
     if word == "read_restart" and restart is not None:
         key = _read_back(key, scratch) or key
         k = len(scratch.restarts)
@@ -697,8 +723,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word in SKIPPED_COMMANDS or word == "labelmap" and "write" in key.split()[1:2]:
         return _labelled(scratch, scratch.skipped, NOOP, (word, loc, key), loc)
-    if word in ("include", "jump") and len(key.split()) > 1 and (
-            _outside(key.split()[1], scratch) or not scratch.confined and "$" in key.split()[1]):
+    if word in ("include", "jump") and len(read) > 1 and (
+            _outside(read[1], scratch) or not scratch.confined and "$" in read[1]):
         # a file outside the copied folder is read as it is, shell lines and all: never run
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
     if word == "partition" and len(key.split()) > 3 and key.split()[1] in ("yes", "no") \
@@ -804,11 +830,13 @@ def _timeout_zero(key: str) -> bool:
 def _read_back(key: str, scratch: Scratch) -> str | None:
     """A read (read_data, read_restart) of a file a write redirected into the scratch
     (:attr:`Scratch.redirected`), made to read that file; None where it names no such file."""
-    words = key.split()
-    name = words[1].strip("\"'") if len(words) > 1 else None
-    if name not in scratch.redirected:
+    try:
+        read, written = words_of(key), written_words(key)
+    except ScriptError:
+        return None             # the engine stops on the line
+    if len(read) < 2 or read[1] not in scratch.redirected:
         return None
-    return " ".join([words[0], str(scratch.redirected[name]), *words[2:]])
+    return " ".join([written[0], _path_word(scratch.redirected[read[1]]), *written[2:]])
 
 
 def remark(scratch: Scratch, marker) -> None:
