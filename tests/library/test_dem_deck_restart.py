@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from deck_cli import needs_lammps, run
+from deck_cli import audited_and_measured, lammps_separation_speed, needs_lammps, run
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps import run as lammps_run
 
@@ -24,6 +24,7 @@ HEAD = """units si
 atom_style sphere
 atom_modify map array
 comm_modify vel yes
+boundary f f f
 region box block 0 1 0 1 0 1
 create_box 2 box
 create_atoms 1 single 0.3 0.5 0.5
@@ -146,3 +147,57 @@ def test_a_restart_written_to_an_absolute_path_is_redirected_into_the_scratch(tm
     assert status == 0, err
     assert not outside.parent.exists() and sorted(p.name for p in folder.iterdir()) == ["in.deck"]
     _as_through_restart(tmp_path, json.loads(out)["pairs"])
+
+
+ACROSS = """units si
+atom_style sphere 1
+boundary p p f
+comm_modify vel yes
+region box block 0 0.04 0 0.04 0 0.1 units box
+create_box 2 box
+pair_style granular
+pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
+fix move all nve/sphere
+timestep 1e-6
+create_atoms 1 single 0.03745 0.02 0.05
+create_atoms 2 single 0.00355 0.02 0.05
+set atom 1 diameter 0.004 density 2500
+set atom 2 diameter 0.006 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.7714285714
+set atom 2 vx -0.2285714286
+run 1000
+write_restart across.restart
+clear
+read_restart across.restart
+{again}comm_modify vel yes
+fix move all nve/sphere
+run 3000
+"""
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_pair_across_a_periodic_boundary_after_read_restart_is_left_out(tmp_path):
+    """LAMMPS keeps no granular cutoff through a restart: 'Communication cutoff is 0.0', no ghost
+    atoms, so two spheres meeting across the periodic x boundary are found deep in overlap (field
+    round 32, R04: LAMMPS 8.094838; the audit printed 0.414916 at first touch). Every pair of the
+    stage after the read is left out with the reason and the remedy."""
+    deck = ACROSS.format(again="")
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
+    assert status == 0, err
+    assert json.loads(out)["pairs"] == []
+    assert "types 1 2: after read_restart LAMMPS holds pair_style granular with no cutoff" in err
+    assert "give pair_style granular again after the read" in err
+    assert abs(lammps_separation_speed(deck, tmp_path)) > 2     # met late in overlap: pushed apart
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_pair_style_granular_given_again_after_the_read_is_audited(tmp_path):
+    """The remedy: with pair_style granular given again after the read, LAMMPS meets the pair at
+    first touch (0.414679 at 586 steps per contact) and the audit prints it."""
+    printed, engine, err = audited_and_measured(ACROSS.format(again="pair_style granular\n"), tmp_path)
+    engine = abs(engine)       # (the atoms' order in LAMMPS' arrays after the read decides the sign)
+    assert abs(printed - engine) < 0.004 and abs(engine - 0.4149) < 0.004

@@ -484,6 +484,7 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
             # LAMMPS restores the style (its models come per pair_coeff line), which the deck need not
             # give again (its manual; field round 24, V33): read as given here
             _pair_style(deck, ["pair_style", "granular"], where, line, loc)
+            deck.cutoff, deck.restored_cut = 0.0, True
         if held.get("pair_style", "none") != "none" and held["set"]:
             deck.restart_pairs = (loc, line, held["pair_style"], set(held["set"]))
         return {}
@@ -530,6 +531,9 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     # the box's boundary is the file's, whatever a boundary command before the read said (field
     # round 29, N11 and N25: an f f f box read as periodic, its pairs left out where LAMMPS met them)
     deck.periodic = held.get("periodic", deck.periodic)
+    if engine == "LAMMPS" and held.get("pair_style") == "granular":
+        # LAMMPS keeps no global cutoff through the file, a pair_style granular CUTOFF's included
+        deck.cutoff, deck.restored_cut = 0.0, True
     for key in held["unset"]:
         # a sub-style whose coefficients a restart does not store: LAMMPS holds none for the pair
         deck.coeffs.pop(key, None)
@@ -1319,7 +1323,7 @@ def contact_key(deck: Deck) -> str:
                        bool(deck.bonds), deck.special_lj, deck.dt_reset[1:],
                        # where a cutoff may leave a pair out, the lists' reach is the run's (field round
                        # 28, N19: a skin made small after the first run was audited with the first's)
-                       (deck.skin, deck.neighbor_style, deck.periodic) if _cut(deck) else None,
+                       (deck.skin, deck.neighbor_style, deck.periodic, deck.restored_cut) if _cut(deck) else None,
                        # how often the lists are rebuilt is each run's own too, read at every step (pre no
                        # or not): a first run's once yes or long delay said nothing of a later run's
                        # contacts (field round 28, N41, N47, N48: no eps, LAMMPS met the pair at first touch)

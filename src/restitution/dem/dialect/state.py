@@ -130,6 +130,9 @@ class Deck:
     shaken: dict = field(default_factory=dict)    # LIGGGHTS fix move/mesh ID -> (loc, text, mesh ID) of an oscillation
     gran: dict = field(default_factory=dict)      # LAMMPS' older gran/* pair style: style, k_n, gamma_n, limit
     cutoff: float | None = None                   # LAMMPS pair_style granular's global cutoff, None where none
+    # LAMMPS after a read_restart that restored pair_style granular, not given again since: its
+    # global cutoff reads as 0 (measured: 'master list distance cutoff = 0', no ghost atoms)
+    restored_cut: bool = False
     # Groups are static: a group holds the atoms present when it is defined, and those a later
     # command inserts into it by name (LAMMPS and LIGGGHTS alike; measured in LAMMPS: a wall on a
     # group by type defined before create_atoms lets the sphere through)

@@ -97,6 +97,7 @@ def pair_style(deck: Deck, words: list, where: str, line: str) -> None:
     if words[1] != "granular":
         deck.gran = _gran_law(words[1], words[2:], where, line)
     deck.cutoff = number(words[2], where, line) if words[1] == "granular" and len(words) > 2 else None
+    deck.restored_cut = False
 
 
 def accelerated(contact, units: str):
@@ -424,7 +425,20 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     cutoff = c.cutoff if c.cutoff is not None else deck.cutoff
     skin = deck.skin if deck.skin is not None else DEFAULT_SKIN.get(deck.units or "lj", 0.0)
     nsq = deck.neighbor_style == "nsq"
-    if cutoff is not None and _largest_cutoff(deck) + skin < pair.R1 + pair.R2 and (deck.periodic or not nsq):
+    # after a read_restart (pair_style granular not given again) LAMMPS' lists and ghost atoms reach
+    # nothing: one bin takes every pair inside the box by its radii, but no ghost atom stands for a
+    # sphere across a periodic boundary (field round 32, R04: 8.094838 where the pair meets across
+    # one, 0.414679 with pair_style granular given again after the read)
+    restored = deck.restored_cut and _largest_cutoff(deck) == 0
+    if restored and deck.periodic:
+        raise PairNotMapped(loc, " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
+                            "after read_restart LAMMPS holds pair_style granular with no cutoff (the deck does "
+                            "not give pair_style granular again; LAMMPS: 'Communication cutoff is 0.0'): inside "
+                            "the box it finds the pair at first touch, but it makes no ghost atoms, so across a "
+                            "periodic boundary it finds the pair late in overlap or never; give pair_style "
+                            "granular again after the read")
+    if not restored and cutoff is not None and _largest_cutoff(deck) + skin < pair.R1 + pair.R2 \
+            and (deck.periodic or not nsq):
         # LAMMPS' lists reach the largest cutoff and the skin, its bins perhaps further: spheres
         # that reach each other may first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005:
         # eps 619 measured), later, or at first touch (field round 27, CU10, CU15). Its nsq lists
