@@ -176,28 +176,45 @@ run 3000
 """
 
 
+#: the same law as LAMMPS' older style (kn 2000, damping 3000 of the relative velocity; no friction)
+OLDER = ("pair_style gran/hooke/history 2000 NULL 3000 NULL 0 0\npair_coeff * *\n")
+STYLES = pytest.mark.parametrize("style", ["granular", "gran/hooke/history"])
+
+
+def _across(style: str, again: bool) -> str:
+    """ACROSS under ``style``, given again after the read or not."""
+    deck = ACROSS.format(again="{again}")
+    if style != "granular":
+        deck = deck.replace("pair_style granular\npair_coeff * * hooke 2000 3000 damping mass_velocity tangential "
+                            "linear_nohistory 1 0.3\n", OLDER)
+    return deck.format(again=(OLDER if style != "granular" else "pair_style granular\n") if again else "")
+
+
 @needs_lammps
 @pytest.mark.dem
-def test_a_pair_across_a_periodic_boundary_after_read_restart_is_left_out(tmp_path):
+@STYLES
+def test_a_pair_across_a_periodic_boundary_after_read_restart_is_left_out(tmp_path, style):
     """LAMMPS keeps no granular cutoff through a restart: 'Communication cutoff is 0.0', no ghost
-    atoms, so two spheres meeting across the periodic x boundary are found deep in overlap (field
-    round 32, R04: LAMMPS 8.094838; the audit printed 0.414916 at first touch). Every pair of the
-    stage after the read is left out with the reason and the remedy."""
-    deck = ACROSS.format(again="")
+    atoms, so two spheres meeting across the periodic x boundary are found late in overlap (field
+    round 32, R04: LAMMPS 8.094838, RP05 under gran/hooke/history 0.483961; the audit printed
+    0.414916 at first touch). Every pair of the stage after the read is left out with the reason
+    and the remedy."""
+    deck = _across(style, again=False)
     (tmp_path / "in.deck").write_text(deck)
     status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
     assert status == 0, err
     assert json.loads(out)["pairs"] == []
-    assert "types 1 2: after read_restart LAMMPS holds pair_style granular with no cutoff" in err
-    assert "give pair_style granular again after the read" in err
-    assert abs(lammps_separation_speed(deck, tmp_path)) > 2     # met late in overlap: pushed apart
+    assert f"types 1 2: after read_restart LAMMPS holds pair_style {style} with no cutoff" in err
+    assert f"give pair_style {style} again after the read" in err
+    assert abs(abs(lammps_separation_speed(deck, tmp_path)) - 0.4149) > 0.05     # met late in overlap
 
 
 @needs_lammps
 @pytest.mark.dem
-def test_pair_style_granular_given_again_after_the_read_is_audited(tmp_path):
-    """The remedy: with pair_style granular given again after the read, LAMMPS meets the pair at
-    first touch (0.414679 at 586 steps per contact) and the audit prints it."""
-    printed, engine, err = audited_and_measured(ACROSS.format(again="pair_style granular\n"), tmp_path)
+@STYLES
+def test_pair_style_granular_given_again_after_the_read_is_audited(tmp_path, style):
+    """The remedy: with the pair style given again after the read, LAMMPS meets the pair at first
+    touch (0.414679 at 586 steps per contact) and the audit prints it."""
+    printed, engine, err = audited_and_measured(_across(style, again=True), tmp_path)
     engine = abs(engine)       # (the atoms' order in LAMMPS' arrays after the read decides the sign)
     assert abs(printed - engine) < 0.004 and abs(engine - 0.4149) < 0.004

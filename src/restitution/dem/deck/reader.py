@@ -417,6 +417,11 @@ def _restart_info(info: str) -> dict:
     return found
 
 
+#: LAMMPS' granular pair styles that a restart restores with no cutoff, which the deck's own
+#: pair_style sets again (field round 32: R04 granular, RP05 gran/hooke/history)
+_UNCUT_BY_RESTART = frozenset({"granular", "gran/hooke", "gran/hooke/history", "gran/hertz/history"})
+
+
 def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None, info: str | None) -> dict:
     """read_restart FILE (LAMMPS, LIGGGHTS): the settings the deck had at its ``write_restart FILE``
     that a restart stores (:data:`_RESTORED`, :data:`_RESTORED_LIGGGHTS`), the rest afresh as after
@@ -531,7 +536,7 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     # the box's boundary is the file's, whatever a boundary command before the read said (field
     # round 29, N11 and N25: an f f f box read as periodic, its pairs left out where LAMMPS met them)
     deck.periodic = held.get("periodic", deck.periodic)
-    if engine == "LAMMPS" and held.get("pair_style") == "granular":
+    if engine == "LAMMPS" and held.get("pair_style") in _UNCUT_BY_RESTART:
         # LAMMPS keeps no global cutoff through the file, a pair_style granular CUTOFF's included
         deck.cutoff, deck.restored_cut = 0.0, True
     for key in held["unset"]:
