@@ -1,0 +1,196 @@
+"""Field round 32: write decks/NAME/in.deck with rounds 30-31's helpers (make_decks31.py, make_decks30.py: kn 2000,
+dt 1e-6, the live pair 4 mm type 1 / 6 mm type 2 meeting at 1 m/s), refereed by live32.py (the deck run as written;
+a GROUPS file names the two groups printed where the deck makes a sphere again under another group).
+Prefixes: L LIGGGHTS spheres made again or grown before run pre no; P LAMMPS spheres made, moved or renumbered before
+pre no (IDs reused, compress, read_data add merge, delete_atoms overlap); A fix adapt (several groups, index and ramp
+variables, unfix and re-add, a pair coefficient); R restart round trips (global cutoff, hybrid, periodic, pair_coeff
+given again); Q quoted file names with spaces or tabs; F a modeller's other commands (time step, start/stop,
+velocity mid-contact, viscous, freeze, integrators on a subset, newton, replicate, damping options, walls).
+usage: python make_decks32.py [NAME ...]"""
+import os, sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "field31"))
+import make_decks31 as p31  # noqa: E402
+
+p = p31.p
+m, q = p.m, p.q
+m.DECKS.clear(); p.LIVE.clear(); p.EXTRA.clear()
+m.D = os.path.join(HERE, "decks")
+E, Ld, vic, extra, BL, B3, HK, hk, K = p.E, p.Ld, p.vic, p.extra, p.BL, p.B3, p.HK, p.hk, p.K
+g11, g31, g41 = p.g11, p.g31, p.g41
+V26, MAP, X5, CA, LV = p31.V26, p31.MAP, p31.X5, p31.CA, p.LV
+W = p.W
+
+
+def groups(name, a="lv1", b="lvn"):
+    extra(name, GROUPS=f"{a} {b}")
+
+
+# ------------------------------------------------------------ L: LIGGGHTS, a sphere made again or grown before pre no
+# victims (LV): IDs 3 (12 mm) and 4 (6 mm), type 2; lv2 deleted with compress no and made again at its place (ID 5)
+LRE = lambda d, run="run 3000 pre no\n", make=None: (
+    LV + "run 1000\nvariable xx equal x[2]\nvariable zz equal z[2]\nvariable vz equal vz[2]\nvariable x0 equal ${xx}\n"
+    "variable z0 equal ${zz}\nvariable v0 equal ${vz}\ndelete_atoms group lv2 compress no\n"
+    + (make or f"create_atoms 2 single ${{x0}} 0 ${{z0}} units box\nset atom 5 diameter {d} density 2500\n")
+    + "group lvn id 5\nvelocity lvn set -0.2285714286 0 ${v0}\n" + run)
+Ld("L01_lig_new_id_12mm_victims_pre_no", "LIGGGHTS SW-G: victims 12, 6 mm; lv2 deleted (compress no), made again 12 mm at a new ID (5); run 3000 pre no",
+   LRE(0.012), gap=g41, sep=0.008)
+Ld("L02_lig_new_id_12mm_control", "L01 without pre no", LRE(0.012, run="run 3000\n"), gap=g41, sep=0.008)
+Ld("L03_lig_new_id_6mm_pre_no", "L01 with the new sphere 6 mm (no growth)", LRE(0.006), gap=g11)
+Ld("L04_lig_new_id_12mm_no_victims_pre_no", "L01 without victims (12 mm new to type 2)", LRE(0.012).replace(LV, "").replace("set atom 5", "set atom 3").replace("id 5", "id 3"),
+   gap=g41, sep=0.008)
+Ld("L05_lig_grow_loop_victims_pre_no", "LIGGGHTS victims 12, 6 mm; loop 2 x run 500, lv2 grows in pass 2 (if); run 3000 pre no",
+   LV + 'variable i loop 2\nlabel l\nrun 500\nif "${i} == 2" then "set group lv2 diameter 0.012"\nnext i\njump SELF l\nrun 3000 pre no\n', gap=g41, sep=0.008)
+LINSB = ("fix pts9 all particletemplate/sphere 15485863 atom_type 2 density constant 2500 radius constant 0.006\n"
+         "fix pdd9 all particledistribution/discrete 32452843 1 pts9 1.0\n"
+         "variable xa equal ${x0}-1e-5\nvariable xb equal ${x0}+1e-5\nvariable za equal ${z0}-1e-5\nvariable zb equal ${z0}+1e-5\n"
+         "region nb block ${xa} ${xb} -1e-5 1e-5 ${za} ${zb} units box\n"
+         "fix ins all insert/pack seed 49979687 distributiontemplate pdd9 vel constant -0.2285714286 0 ${v0} insert_every once overlapcheck yes all_in no particles_in_region 1 region nb\n")
+Ld("L06_lig_insert_pack_at_lv2_pre_no", "LIGGGHTS victims 12, 6 mm; lv2 deleted, insert/pack puts one 12 mm type 2 at its place (moving as lv2 did); run 3000 pre no; group after",
+   LRE(0.012, make=LINSB, run="run 3000 pre no\ngroup lvn id 5\n").replace("group lvn id 5\nvelocity lvn set -0.2285714286 0 ${v0}\n", ""), gap=g41, sep=0.008)
+Ld("L07_lig_insert_pack_at_lv2_control", "L06 without pre no",
+   LRE(0.012, make=LINSB, run="run 3000\ngroup lvn id 5\n").replace("group lvn id 5\nvelocity lvn set -0.2285714286 0 ${v0}\n", ""), gap=g41, sep=0.008)
+for n in ("L01_lig_new_id_12mm_victims_pre_no", "L02_lig_new_id_12mm_control", "L03_lig_new_id_6mm_pre_no", "L04_lig_new_id_12mm_no_victims_pre_no",
+          "L06_lig_insert_pack_at_lv2_pre_no", "L07_lig_insert_pack_at_lv2_control"):
+    groups(n)
+Ld("L08_lig_victims_grow_region_pre_no", "LIGGGHTS victims 12, 6 mm; set region (a block around lv2) diameter 0.012; run 3000 pre no",
+   LV + "region rg block 0.002 0.02 -0.005 0.005 0.09 0.11 units box\nrun 1000\nset region rg diameter 0.012\nrun 3000 pre no\n", gap=g41, sep=0.008)
+
+# ------------------------------------------------------------ P: LAMMPS, spheres made, moved or renumbered before pre no (by ID the sizes look unchanged)
+PRE = "variable xx equal $(x[2])\nvariable zz equal $(z[2])\nvariable vz equal $(vz[2])\n"
+E("P01_overlap_delete_new_in_old_slot_pre_no", "victims 12, 6 mm; a 12 mm type 2 made at lv2's place (ID 5), then delete_atoms overlap removes lv2 (its slot takes the new atom); run 3000 pre no",
+  V26 + "run 1000\n" + PRE + CA + "set atom 5 diameter 0.012 density 2500\ngroup lvn id 5\nvelocity lvn set -0.2285714286 0 ${vz} units box\n"
+  "delete_atoms overlap 0.0001 lv2 all compress no\nrun 3000 pre no\n", gap=g41, sep=0.008, pre=MAP)
+E("P02_compress_id_reused_same_size_pre_no", "victims 12 (ID 3), 6 mm (ID 4); lv2 and the 12 mm victim deleted (compress yes): the 6 mm takes ID 2; the new 12 mm at lv2's place takes ID 3 (held 12 mm); run 3000 pre no",
+  V26 + "group v3 id 3\nrun 1000\n" + PRE + "delete_atoms group lv2\ndelete_atoms group v3\n" + CA + "set atom 3 diameter 0.012 density 2500\ngroup lvn id 3\nvelocity lvn set -0.2285714286 0 ${vz} units box\nrun 3000 pre no\n",
+  gap=g41, sep=0.008, pre=MAP)
+E("P03_compress_id_reused_control", "P02 without pre no",
+  V26 + "group v3 id 3\nrun 1000\n" + PRE + "delete_atoms group lv2\ndelete_atoms group v3\n" + CA + "set atom 3 diameter 0.012 density 2500\ngroup lvn id 3\nvelocity lvn set -0.2285714286 0 ${vz} units box\nrun 3000\n",
+  gap=g41, sep=0.008, pre=MAP)
+RDM = ("# ID 3 again\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n"
+       "3 2 0.012 2500 0.024821 0.02 0.049995095\n\nVelocities\n\n3 -0.2285714286 0 -0.00981 0 0 0\n")
+E("P04_read_data_merge_id3_same_size_pre_no", "victims 12 (ID 3), 6 mm; lv2 and the 12 mm victim deleted (compress no); read_data add merge of ID 3, 12 mm, at lv2's place; run 3000 pre no",
+  V26 + "group v3 id 3\nrun 1000\ndelete_atoms group lv2 compress no\ndelete_atoms group v3 compress no\nread_data r3.data add merge\ngroup lvn id 3\nrun 3000 pre no\n",
+  gap=g41, sep=0.008, pre=MAP, data={"r3.data": RDM})
+E("P05_move_victim_into_place_pre_no", "victims 12 (ID 3), 6 mm; lv2 deleted (compress no); the 12 mm victim moved to lv2's place with its velocity (set atom 3 x y z); run 3000 pre no",
+  V26 + "run 1000\n" + PRE + "delete_atoms group lv2 compress no\nset atom 3 x ${xx} y 0.02 z ${zz}\ngroup lvn id 3\nvelocity lvn set -0.2285714286 0 ${vz} units box\nrun 3000 pre no\n",
+  gap=g41, sep=0.008, pre=MAP)
+E("P06_swap_places_pre_no", "victims 12 (ID 3), 6 mm; lv2 and the 12 mm victim swap places and velocities (no size changes); run 3000 pre no",
+  V26 + "run 1000\n" + PRE + "set atom 2 x 0.01 y 0.01 z 0.012\nvelocity lv2 set 0 0 0 units box\nset atom 3 x ${xx} y 0.02 z ${zz}\ngroup lvn id 3\nvelocity lvn set -0.2285714286 0 ${vz} units box\nrun 3000 pre no\n",
+  gap=g41, sep=0.008, pre=MAP)
+E("P07_displace_lv2_within_half_skin_grown_pre_no", "no victims; lv2 grows 6 -> 6.8 mm (within the skin) and is displaced 0.3 mm toward lv1; run 3000 pre no",
+  "run 1000\nset group lv2 diameter 0.0068\ndisplace_atoms lv2 move -0.0003 0 0 units box\nrun 3000 pre no\n", gap=g11 + 0.7e-3, sep=0.0054)
+E("P08_new_id_type_held_none_then_pre_no_twice", "X05 with run 0 pre no between (no set-up; new 12 mm at new ID)", X5(CA).replace("run 3000 pre no", "run 0 pre no\nrun 3000 pre no"),
+  gap=g41, sep=0.008, pre=MAP)
+E("P09_pour_12mm_then_new_id_pre_no", "pour of one 12 mm type 2 during run 1000 (none at its set-up); lv2 deleted and made 12 mm at a new ID; run 3000 pre no",
+  q.POUR12 + "run 1000\n" + PRE + "delete_atoms group lv2 compress no\n" + CA + "set atom 4 diameter 0.012 density 2500\ngroup lvn id 4\nvelocity lvn set -0.2285714286 0 ${vz} units box\nrun 3000 pre no\n",
+  gap=g41, sep=0.008, pre=MAP)
+E("P10_create_molecule_two_atoms_new_ids_pre_no", "victims 12, 6 mm; lv2 deleted; a two-sphere molecule (12 mm at lv2's place, 6 mm far off) made at new IDs; run 3000 pre no",
+  V26 + "run 1000\n" + PRE + "delete_atoms group lv2 compress no\nmolecule m2 two.mol\ncreate_atoms 0 single ${xx} 0.02 ${zz} mol m2 4711 units box\ngroup lvn id 5\nvelocity lvn set -0.2285714286 0 ${vz} units box\n"
+  "run 3000 pre no\n", gap=g41, sep=0.008, pre=MAP,
+  data={"two.mol": "# two\n\n2 atoms\n\nCoords\n\n1 0 0 0\n2 0 0.015 -0.03\n\nTypes\n\n1 2\n2 2\n\nDiameters\n\n1 0.012\n2 0.006\n\nMasses\n\n1 0.0022619467\n2 0.00028274334\n"})
+for n in ("P01_overlap_delete_new_in_old_slot_pre_no", "P02_compress_id_reused_same_size_pre_no", "P03_compress_id_reused_control", "P04_read_data_merge_id3_same_size_pre_no",
+          "P05_move_victim_into_place_pre_no", "P06_swap_places_pre_no", "P09_pour_12mm_then_new_id_pre_no", "P10_create_molecule_two_atoms_new_ids_pre_no"):
+    groups(n)
+
+# ------------------------------------------------------------ A: fix adapt
+DD = "variable dd equal 0.012\n"
+E("A01_adapt_index_next_between_runs", "variable dd index 0.006 0.012; fix adapt lv2 v_dd reset no; run 1000; next dd; run 3000 (12 mm at the set-up, pair 0.1 mm apart)",
+  "variable dd index 0.006 0.012\nfix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 1000\nnext dd\nrun 3000\n", gap=g41, sep=0.008)
+E("A02_adapt_unfix_readd_same_size", "fix adapt lv2 12 mm over run 1000 (grown at its set-up, far); unfix; fix adapt again 12 mm; run 3000 (no growth at this set-up)",
+  DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 1000\nunfix ad\nfix ad2 lv2 adapt 1 atom diameter v_dd reset no\nrun 3000\n", gap=g41 + 3e-3, sep=0.008)
+E("A03_adapt_two_groups_one_shrinks", "fix adapt lv1 4 -> 2 mm (shrink) and lv2 6 -> 12 mm (a far victim group v, type 2) from the first run; live pair 1 2 shrunk lv1",
+  vic(2, 0.006, 0.006) + "group v id 3\nvariable d1 equal 0.002\n" + DD + "fix a1 lv1 adapt 1 atom diameter v_d1 reset no\nfix a2 v adapt 1 atom diameter v_dd reset no\nrun 4000\n",
+  gap=g31 + 1e-3, sep=0.004)
+E("A04_adapt_ramp_start_stop", "fix adapt lv2 v_dd = ramp(0.006,0.012); run 1000 start 0 stop 1000 (12 mm at its end); run 3000 (the ramp starts again: 6 -> 12 mm in the meeting run)",
+  "variable dd equal ramp(0.006,0.012)\nfix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 1000 start 0 stop 1000\nrun 3000\n", gap=g41, sep=0.008)
+E("A05_adapt_group_redefined", "fix adapt on group g (a far victim, 12 mm); run 1000; group g clear + group g id 2 (lv2); run 3000 (lv2 grown at set-up, pair 0.1 mm apart)",
+  vic(2, 0.006, 0.006) + "group g id 3\n" + DD + "fix ad g adapt 1 atom diameter v_dd reset no\nrun 1000\ngroup g clear\ngroup g id 2\nrun 3000\n", gap=g41, sep=0.008)
+E("A06_adapt_pair_granular_kn", "fix adapt 1 pair granular kn 1 2 v_k (LAMMPS: not supported)", "variable k equal 5000\nfix ad all adapt 1 pair granular kn 1 2 v_k\nrun 3000\n", gap=0.1e-3)
+E("A07_adapt_mass_no_shrink", "fix adapt lv2 6 -> 4 mm mass no (its mass kept) from the start; pair meets after", "variable dd equal 0.004\nfix ad lv2 adapt 1 atom diameter v_dd reset no mass no\nrun 6000\n",
+  gap=g31 + 1e-3, sep=0.004)
+E("A08_adapt_scale_yes", "fix adapt lv2 atom diameter v_s scale yes (s = 2: 12 mm) from the start, pair 2.1 mm apart after", "variable s equal 2\nfix ad lv2 adapt 1 atom diameter v_s scale yes reset no\nrun 5000\n",
+  gap=5.1e-3, sep=0.008)
+E("A09_adapt_unfix_then_pre_no_readd", "fix adapt lv2 12 mm over run 1000; unfix; run 100; fix adapt again (12 mm, no growth); run 3000 pre no",
+  DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 1000\nunfix ad\nrun 100\nfix ad2 lv2 adapt 1 atom diameter v_dd reset no\nrun 3000 pre no\n", gap=g41 + 3e-3 + 0.1e-3, sep=0.008)
+E("A10_adapt_every_large_then_var_changes", "fix adapt lv2 every 100000 v_dd (6 mm); run 1000; variable dd equal 0.012; run 3000 (grown at the set-up)",
+  "variable dd equal 0.006\nfix ad lv2 adapt 100000 atom diameter v_dd reset no\nrun 1000\nvariable dd equal 0.012\nrun 3000\n", gap=g41, sep=0.008)
+
+# ------------------------------------------------------------ R: restart round trips
+RS = lambda after="", before="": (before + "run 1000\nwrite_restart a.rst\nclear\nread_restart a.rst\ncomm_modify vel yes\n" + after + m.GRAV + q.r.FL() + q.r.TAILL.replace("timestep 1e-6\n", "") + "run 3000\n")
+GCUT = lambda c: BL().replace("pair_style granular\n", f"pair_style granular {c}\n")
+E("R01_restart_global_cutoff_0p02", "pair_style granular 0.02; write_restart; clear; read_restart; run (pair 0.1 mm apart after)", RS(), gap=g11, pre=GCUT(0.02))
+E("R02_restart_global_cutoff_small", "pair_style granular 0.001 (skin 0.001); restart; run: the pair 1.1 mm apart at the restart", RS(), gap=g11 + 1e-3, pre=GCUT(0.001))
+PER = lambda gap: (f"create_atoms 1 single {0.04 - 0.002 - gap / 2 + 0.0:.9g} 0.02 0.05\ncreate_atoms 2 single {0.003 + gap / 2:.9g} 0.02 0.05\n"
+                   "set atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\ngroup lv1 id 1\ngroup lv2 id 2\n"
+                   "velocity lv1 set 0.7714285714 0 0 units box\nvelocity lv2 set -0.2285714286 0 0 units box\n")
+E("R03_restart_periodic_pair_global_cutoff", "pair across the periodic x boundary; pair_style granular 0.02; restart; run", RS(), gap=g11, pre=GCUT(0.02), pair=PER(g11))
+E("R04_restart_periodic_pair_plain", "pair across the periodic x boundary; pair_style granular; restart; run", RS(), gap=g11, pair=PER(g11))
+E("R05_restart_pair_coeff_regiven", "restart; pair_coeff 1 2 kn 5000 given after read_restart", RS(after=p.P5() + "\n"), gap=g11)
+E("R06_restart_hybrid", "pair_style hybrid granular granular (1 2 kn 5000 by instance 2); restart; run", RS(), gap=g11,
+  pre=q.r.head(2) + "pair_style hybrid granular granular\npair_coeff * * granular 1 " + HK + "\npair_coeff 1 2 granular 2 " + hk(5000) + "\n" + m.GRAV + q.r.FL() + q.r.TAILL)
+E("R07_restart_gran_hooke_omp", "suffix omp; pair_style gran/hooke/history (omp) 2000 NULL 3000 NULL 0.3 0; restart; run", RS(), gap=g11,
+  pre=q.r.head(2).replace("units si\n", "units si\npackage omp 1\nsuffix omp\n") + "pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 0\npair_coeff * *\n" + m.GRAV
+  + "fix floor all wall/gran hooke/history 2000 NULL 3000 NULL 0.3 0 zplane 0 NULL\n" + q.r.TAILL)
+E("R08_restart_grow_then_pre_no", "lv2 grown to 12 mm before write_restart; clear; read_restart; run 3000 pre no (first run after a read: set up anyway)",
+  "run 1000\nset group lv2 diameter 0.012\nwrite_restart a.rst\nclear\nread_restart a.rst\n" + m.GRAV + q.r.FL() + q.r.TAILL + "run 3000 pre no\n", gap=g41, sep=0.008)
+E("R09_restart_timestep_kept", "timestep 2e-5 before write_restart; after read_restart none given (the file's dt); run 200", "timestep 2e-5\nrun 50\nwrite_restart a.rst\nclear\nread_restart a.rst\n"
+  + m.GRAV + q.r.FL() + "fix integ all nve/sphere\nrun 400\n", gap=g11)
+E("R10_restart_neighbor_lost_small_cutoff", "pair_style granular 0.001, neighbor 0.005 bin before the restart (not kept by it: skin 0.001 after); pair 2 mm apart at the read",
+  RS(before="neighbor 0.005 bin\n"), gap=g11 + 2e-3, pre=GCUT(0.001))
+
+# ------------------------------------------------------------ Q: quoted file names
+E("Q01_restart_two_spaces", 'write_restart "a  a.rst"; clear; read_restart "a  a.rst" (pair_coeff 1 2 kn 5000 before)', RS().replace("a.rst", '"a  a.rst"').replace("run 1000\n", p.P5() + "\nrun 1000\n"), gap=g11)
+E("Q02_write_read_data_tab", 'write_data "w\tw.data"; clear; read_data "w\tw.data" (kn 5000 in its PairIJ)',
+  p.P5() + "\nrun 1000\nwrite_data \"w\tw.data\" pair ij\nclear\n" + q.r.head(2).split("region box")[0] + "pair_style granular\nread_data \"w\tw.data\"\ngroup lv1 id 1\ngroup lv2 id 2\n" + m.GRAV + q.r.FL() + q.r.TAILL + "run 3000\n", gap=g11)
+E("Q03_atomfile_two_spaces_grow_pre_no", 'variable a atomfile "d  d.txt" (lv2 12 mm; "d d.txt" 6 mm); run 1000; set group lv2 diameter v_a; run 3000 pre no',
+  'variable a atomfile "d  d.txt"\nrun 1000\nset group lv2 diameter v_a\nrun 3000 pre no\n', gap=g41, sep=0.008,
+  data={"d  d.txt": "# d\n1\n2 0.012\n", "d d.txt": "# d\n1\n2 0.006\n"})
+E("Q04_atomfile_two_spaces_grow", "Q03 without pre no", 'variable a atomfile "d  d.txt"\nrun 1000\nset group lv2 diameter v_a\nrun 3000\n', gap=g41, sep=0.008,
+  data={"d  d.txt": "# d\n1\n2 0.012\n", "d d.txt": "# d\n1\n2 0.006\n"})
+E("Q05_file_var_next_two_spaces", 'variable k file "k  k.txt" (2000, 5000); run 1000; next k; pair_coeff 1 2 hooke ${k}; run 3000',
+  'variable k file "k  k.txt"\nrun 1000\nnext k\npair_coeff 1 2 hooke ${k} 3000 ' + K + "\nrun 3000\n", gap=g11, data={"k  k.txt": "2000\n5000\n", "k k.txt": "8000\n8000\n"})
+E("Q06_include_else_tab_in_loop", 'loop 2: if i == 2 then print else include "k\tk.in" (kn 5000 in pass 1)',
+  'variable i loop 2\nlabel l\nif "${i} == 2" then "print two" else "include \'k\tk.in\'"\nrun 500\nnext i\njump SELF l\nrun 3000\n', gap=g11 + 1e-3,
+  data={"k\tk.in": p.P5() + "\n", "k k.in": p.P8() + "\n"})
+E("Q07_jump_label_two_spaces", 'jump "j  j.in" go (the file: skip, label go, kn 5000, run)', 'jump "j  j.in" go\n', gap=g11,
+  data={"j  j.in": "pair_coeff 1 2 " + hk(8000) + "\nlabel go\n" + p.P5() + "\nrun 3000\n", "j j.in": "label go\n" + p.P8() + "\nrun 3000\n"})
+E("Q08_read_data_add_pair_coeffs_two_spaces", 'read_data "v  v.data" add append (a far victim; its PairIJ Coeffs 1 2 kn 5000); run 3000',
+  'read_data "v  v.data" add append\nrun 3000\n', gap=g11,
+  data={"v  v.data": "# victim\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nPairIJ Coeffs # granular\n\n1 1 " + HK + "\n1 2 " + hk(5000) + "\n2 2 " + HK
+        + "\n\nAtoms # sphere\n\n1 2 0.006 2500 0.01 0.01 0.012\n",
+        "v v.data": "# victim\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nPairIJ Coeffs # granular\n\n1 1 " + HK + "\n1 2 " + hk(8000) + "\n2 2 " + HK
+        + "\n\nAtoms # sphere\n\n1 2 0.006 2500 0.01 0.01 0.012\n"})
+
+# ------------------------------------------------------------ F: a modeller's other commands
+E("F01_velocity_set_mid_contact", "run 1000 stops mid-contact (0.15 ms in); velocity lv2 set 0 (it stops); run 3000", "run 1150\nvelocity lv2 set 0 0 0 units box\nrun 3000\n", gap=g11 + 0.0e-3)
+E("F02_fix_viscous_all", "fix viscous all 0.001 (the drag beside the contact)", "fix visc all viscous 0.001\nrun 3000\n", gap=0.1e-3)
+E("F03_freeze_lv2", "fix freeze lv2; lv1 at 1 m/s onto it (the live print: v2 - v1 = -v1 after)", "fix fr lv2 freeze\nvelocity lv1 set 1 0 0 units box\nvelocity lv2 set 0 0 0 units box\nrun 3000\n", gap=0.1e-3)
+E("F04_nve_sphere_lv1_only", "integrator on lv1 only (fix integ lv1); lv2 still, no velocity", "unfix integ\nfix integ lv1 nve/sphere\nvelocity lv1 set 1 0 0 units box\nvelocity lv2 set 0 0 0 units box\nrun 3000\n", gap=0.1e-3)
+E("F05_newton_off", "newton off", "run 3000\n", gap=0.1e-3, pre=BL().replace("comm_modify vel yes\n", "comm_modify vel yes\nnewton off\n"))
+E("F06_limit_damping_heavy", "hooke 2000 damping 6000 with limit_damping (the attraction cut)", "run 3000\n", gap=0.1e-3,
+  pre=BL("hooke 2000 6000 damping mass_velocity tangential linear_nohistory 1 0.3 limit_damping"))
+E("F07_tsuji_hertz_material", "hertz/material 1e7 e 0.5 damping tsuji", "run 3000\n", gap=0.1e-3,
+  pre=BL("hertz/material 1e7 0.5 0.3 damping tsuji tangential linear_nohistory 1 0.3"))
+E("F08_coeff_restitution_hooke_limit", "hooke 2000 e 0.5 damping coeff_restitution limit_damping", "run 3000\n", gap=0.1e-3,
+  pre=BL("hooke 2000 0.5 damping coeff_restitution tangential linear_nohistory 1 0.3 limit_damping"))
+E("F09_replicate_before_pre_no", "run 1000; replicate 1 1 2 (a copy of the pair above); run 3000 pre no", "run 1000\nreplicate 1 1 2\nrun 3000 pre no\n", gap=g11)
+E("F10_timestep_in_loop_include", "loop 2 of run 500 with include dt.in (timestep 2e-5 in pass 2); run 400", 'variable i loop 2\nlabel l\nrun 500\nif "${i} == 2" then "include dt.in"\nnext i\njump SELF l\nrun 400\n',
+  gap=g11 + 0.0, data={"dt.in": "timestep 2e-5\n"})
+E("F11_run_start_stop_timestep_var", "pair_coeff kn from a ramp over run start/stop (v_k = ramp(2000,8000) read at the run's start by $() ? no: by pair_coeff ${k} after run 1000 start 0 stop 4000)",
+  "variable k equal ramp(2000,8000)\nrun 1000 start 0 stop 4000\npair_coeff 1 2 hooke ${k} 3000 " + K + "\nrun 3000\n", gap=g11)
+W("F12_wall_tsuji_limit", "floor: hertz/material 1e7 e 0.5 damping tsuji limit_damping", "run 4000\n", gap=2.1e-3,
+  pre=BL().replace("fix floor all wall/gran granular " + HK, "fix floor all wall/gran granular hertz/material 1e7 0.5 0.3 damping tsuji tangential linear_nohistory 1 0.3 limit_damping"))
+E("F13_nve_sphere_twice_subset", "a second nve/sphere on lv2 only (lv2 integrated twice)", "fix integ2 lv2 nve/sphere\nrun 3000\n", gap=0.1e-3)
+E("R11_restart_no_comm_vel_after", "R04 (pair across the periodic x boundary) without comm_modify vel yes after read_restart", RS().replace("comm_modify vel yes\n", ""), gap=g11, pair=PER(g11))
+E("F14_no_comm_vel", "comm_modify vel yes left out (pair granular needs it)", "run 3000\n", gap=0.1e-3, pre=BL().replace("comm_modify vel yes\n", ""))
+
+
+def write_all(names):
+    m.write_live(names, p.LIVE, p.EXTRA)
+
+
+if __name__ == "__main__":
+    write_all(sys.argv[1:] or list(m.DECKS))
+    print(len(m.DECKS), "decks")
