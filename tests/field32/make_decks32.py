@@ -38,7 +38,7 @@ Ld("L01_lig_new_id_12mm_victims_pre_no", "LIGGGHTS SW-G: victims 12, 6 mm; lv2 d
    LRE(0.012), gap=g41, sep=0.008)
 Ld("L02_lig_new_id_12mm_control", "L01 without pre no", LRE(0.012, run="run 3000\n"), gap=g41, sep=0.008)
 Ld("L03_lig_new_id_6mm_pre_no", "L01 with the new sphere 6 mm (no growth)", LRE(0.006), gap=g11)
-Ld("L04_lig_new_id_12mm_no_victims_pre_no", "L01 without victims (12 mm new to type 2)", LRE(0.012).replace(LV, "").replace("set atom 5", "set atom 3").replace("id 5", "id 3"),
+Ld("L04_lig_new_id_12mm_no_victims_pre_no", "L01 without victims: LIGGGHTS gives the new sphere ID 2 again (the largest ID + 1), 12 mm", LRE(0.012).replace(LV, "").replace("set atom 5", "set atom 2").replace("id 5", "id 2"),
    gap=g41, sep=0.008)
 Ld("L05_lig_grow_loop_victims_pre_no", "LIGGGHTS victims 12, 6 mm; loop 2 x run 500, lv2 grows in pass 2 (if); run 3000 pre no",
    LV + 'variable i loop 2\nlabel l\nrun 500\nif "${i} == 2" then "set group lv2 diameter 0.012"\nnext i\njump SELF l\nrun 3000 pre no\n', gap=g41, sep=0.008)
@@ -185,6 +185,113 @@ W("F12_wall_tsuji_limit", "floor: hertz/material 1e7 e 0.5 damping tsuji limit_d
 E("F13_nve_sphere_twice_subset", "a second nve/sphere on lv2 only (lv2 integrated twice)", "fix integ2 lv2 nve/sphere\nrun 3000\n", gap=0.1e-3)
 E("R11_restart_no_comm_vel_after", "R04 (pair across the periodic x boundary) without comm_modify vel yes after read_restart", RS().replace("comm_modify vel yes\n", ""), gap=g11, pair=PER(g11))
 E("F14_no_comm_vel", "comm_modify vel yes left out (pair granular needs it)", "run 3000\n", gap=0.1e-3, pre=BL().replace("comm_modify vel yes\n", ""))
+
+# ============================================================ wave 2
+# ------------------------------------------------------------ RP: restart round trips with a pair across a periodic boundary (R04's class) and what a restart keeps
+E("RP01_periodic_restart_pair_style_regiven", "R04 with pair_style granular and pair_coeff * * given again after read_restart", RS(after="pair_style granular\npair_coeff * * " + HK + "\n"), gap=g11, pair=PER(g11))
+E("RP02_periodic_restart_pair_coeff_12_regiven", "R04 with pair_coeff 1 2 (kn 2000) given again after read_restart", RS(after="pair_coeff 1 2 " + HK + "\n"), gap=g11, pair=PER(g11))
+E("RP03_periodic_restart_comm_cutoff", "R04 with comm_modify cutoff 0.01 after read_restart", RS(after="comm_modify cutoff 0.01\n"), gap=g11, pair=PER(g11))
+E("RP04_periodic_restart_neighbor_big", "R04 with neighbor 0.01 bin after read_restart", RS(after="neighbor 0.01 bin\n"), gap=g11, pair=PER(g11))
+E("RP05_periodic_restart_gran_hooke_history", "R04 with pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 0", RS(), gap=g11, pair=PER(g11),
+  pre=q.r.head(2) + "pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 0\npair_coeff * *\n" + m.GRAV + "fix floor all wall/gran hooke/history 2000 NULL 3000 NULL 0.3 0 zplane 0 NULL\n" + q.r.TAILL)
+PER11 = lambda gap: (f"create_atoms 1 single {0.04 - 0.002 - gap / 2:.9g} 0.02 0.05\ncreate_atoms 1 single {0.002 + gap / 2:.9g} 0.02 0.05\n"
+                     "create_atoms 2 single 0.01 0.01 0.012\nset atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.004 density 2500\nset atom 3 diameter 0.006 density 2500\n"
+                     "group lv1 id 1\ngroup lv2 id 2\nvelocity lv1 set 0.5 0 0 units box\nvelocity lv2 set -0.5 0 0 units box\n")
+E("RP06_periodic_restart_pair11", "R04 with a type 1 1 pair (4 mm each, 1 m/s) across the boundary; a 6 mm type 2 far", RS(), gap=g11, pair=PER11(g11), sep=0.004)
+extra("RP06_periodic_restart_pair11", PAIR="types 1 1")
+E("RP07_periodic_restart_run0_first", "R04 with run 0 after read_restart, then run 3000", RS().replace("run 3000\n", "run 0\nrun 3000\n"), gap=g11, pair=PER(g11))
+E("RP08_periodic_restart_pair_cutoff_kw", "R04 with pair_coeff * * ... cutoff 0.01 (per pair) before the restart", RS(), gap=g11, pair=PER(g11), pre=BL(HK + " cutoff 0.01"))
+E("RP09_periodic_restart_hybrid_one", "R04 with pair_style hybrid granular (one instance)", RS(), gap=g11, pair=PER(g11),
+  pre=q.r.head(2) + "pair_style hybrid granular\npair_coeff * * granular " + HK + "\n" + m.GRAV + q.r.FL() + q.r.TAILL)
+E("RP10_periodic_restart_newton_off", "R04 with newton off (given again after the read)", RS(after="newton off\n"), gap=g11, pair=PER(g11), pre=BL().replace("comm_modify vel yes\n", "comm_modify vel yes\nnewton off\n"))
+E("RP11_periodic_pair_made_after_read", "victims only before the restart; the live pair made after read_restart across the boundary; run 3000",
+  "run 100\nwrite_restart a.rst\nclear\nread_restart a.rst\ncomm_modify vel yes\n" + PER(0.1e-3).replace("id 1\n", "id 3\n").replace("id 2\n", "id 4\n").replace("set atom 1 ", "set atom 3 ").replace("set atom 2 ", "set atom 4 ")
+  + m.GRAV + q.r.FL() + "fix integ all nve/sphere\nrun 3000\n", pair="create_atoms 2 single 0.01 0.01 0.012\ncreate_atoms 2 single 0.03 0.03 0.012\nset type 2 diameter 0.006 density 2500\n", gap=0.1e-3)
+E("RP12_periodic_write_read_data_control", "R04 with write_data / clear / read_data (pair style and coefficients given before the read)",
+  "run 1000\nwrite_data w.data nocoeff\nclear\n" + q.r.head(2).split("region box")[0] + "pair_style granular\nread_data w.data\npair_coeff * * " + HK + "\ngroup lv1 id 1\ngroup lv2 id 2\n" + m.GRAV + q.r.FL() + q.r.TAILL + "run 3000\n",
+  gap=g11, pair=PER(g11))
+E("RP13_periodic_restart_pair_inside_too", "R04 with a second type 1 2 pair inside the box meeting too (the live pair is the boundary one)", RS(), gap=g11,
+  pair=PER(g11) + "create_atoms 1 single 0.01795 0.02 0.03\ncreate_atoms 2 single 0.02355 0.02 0.03\nset atom 3 diameter 0.004 density 2500\nset atom 4 diameter 0.006 density 2500\n")
+RL = lambda model: dict(pre=BL(model), gap=g11)
+E("RL01_restart_limit_damping", "hooke 2000 6000 limit_damping; restart; run (is limit_damping kept?)", RS(), **RL("hooke 2000 6000 damping mass_velocity tangential linear_nohistory 1 0.3 limit_damping"))
+E("RL02_restart_tsuji_hooke", "hooke 2000 e 0.5 damping tsuji; restart; run", RS(), **RL("hooke 2000 0.5 damping tsuji tangential linear_nohistory 1 0.3"))
+E("RL03_restart_coeff_restitution", "hertz/material 1e7 e 0.5 damping coeff_restitution; restart; run", RS(), **RL("hertz/material 1e7 0.5 0.3 damping coeff_restitution tangential linear_nohistory 1 0.3"))
+E("RL04_restart_mixed_pair", "pair_coeff 1 1 kn 2000, 2 2 kn 8000 (1 2 mixed); restart; run", RS(), gap=g11,
+  pre=q.r.head(2) + "pair_style granular\npair_coeff 1 1 " + HK + "\npair_coeff 2 2 " + hk(8000) + "\n" + m.GRAV + q.r.FL() + q.r.TAILL)
+E("RL05_restart_12_explicit_then_22_changed", "pair_coeff * * kn 2000, 1 2 kn 5000; restart; pair_coeff 2 2 kn 8000 after the read (1 2 stays 5000?)", RS(after="pair_coeff 2 2 " + hk(8000) + "\n"), gap=g11,
+  pre=BL() .replace("pair_coeff * * " + HK + "\n", "pair_coeff * * " + HK + "\npair_coeff 1 2 " + hk(5000) + "\n"))
+E("RL06_restart_11_changed_mixed", "pair_coeff 1 1 kn 2000, 2 2 kn 2000 (1 2 mixed); restart; pair_coeff 1 1 kn 8000 after the read (1 2 mixed again?)", RS(after="pair_coeff 1 1 " + hk(8000) + "\n"), gap=g11,
+  pre=q.r.head(2) + "pair_style granular\npair_coeff 1 1 " + HK + "\npair_coeff 2 2 " + HK + "\n" + m.GRAV + q.r.FL() + q.r.TAILL)
+
+# ------------------------------------------------------------ F: integrators and frozen partners by type
+E("F15_nve_twice_type_group", "a second nve/sphere on group t2 (type 2)", "group t2 type 2\nfix integ2 t2 nve/sphere\nrun 3000\n", gap=0.1e-3)
+E("F16_nve_twice_region_group", "a second nve/sphere on a group by region (lv2's side)", "region rr block 0.021 0.04 0 0.04 0 0.1 units box\ngroup gr region rr\nfix integ2 gr nve/sphere\nrun 3000\n", gap=0.1e-3)
+E("F17_nve_type1_only_still_partner", "integrator on type 1 only (group t1 type 1); lv2 still; lv1 at 1 m/s", "group t1 type 1\nunfix integ\nfix integ t1 nve/sphere\nvelocity lv1 set 1 0 0 units box\nvelocity lv2 set 0 0 0 units box\nrun 3000\n", gap=0.1e-3)
+E("F18_freeze_type2", "fix freeze on type 2 (group t2); lv1 at 1 m/s onto lv2", "group t2 type 2\nfix fr t2 freeze\nvelocity lv1 set 1 0 0 units box\nvelocity lv2 set 0 0 0 units box\nrun 3000\n", gap=0.1e-3)
+E("F19_tsuji_hooke_limit", "hooke 2000 e 0.5 damping tsuji limit_damping", "run 3000\n", gap=0.1e-3, pre=BL("hooke 2000 0.5 damping tsuji tangential linear_nohistory 1 0.3 limit_damping"))
+E("F20_nve_twice_type_group_after_run", "run 1000; a second nve/sphere on type 2 (group t2) added; run 3000 (the pair meets in it)", "run 1000\ngroup t2 type 2\nfix integ2 t2 nve/sphere\nrun 3000\n", gap=g11)
+E("F21_nve_twice_id_group_after_run", "F20 with the group by id (lv2)", "run 1000\nfix integ2 lv2 nve/sphere\nrun 3000\n", gap=g11)
+
+# ------------------------------------------------------------ A: fix adapt (wave 1's timing mended; dynamic groups)
+E("A11_adapt_unfix_readd_same_size_t", "A02 timed: fix adapt lv2 12 mm at run 1000's set-up (1.1 mm apart then); unfix; fix adapt again 12 mm; run 3000",
+  DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 1000\nunfix ad\nfix ad2 lv2 adapt 1 atom diameter v_dd reset no\nrun 3000\n", gap=g41, sep=0.008)
+E("A12_adapt_two_groups_one_shrinks_t", "A03 timed (run 6000)", vic(2, 0.006, 0.006) + "group v id 3\nvariable d1 equal 0.002\n" + DD + "fix a1 lv1 adapt 1 atom diameter v_d1 reset no\nfix a2 v adapt 1 atom diameter v_dd reset no\nrun 6000\n",
+  gap=g31, sep=0.004)
+E("A13_adapt_unfix_run_readd_pre_no_t", "A09 timed: 12 mm at run 1000's set-up; unfix; run 100; fix adapt again (12 mm); run 3000 pre no",
+  DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 1000\nunfix ad\nrun 100\nfix ad2 lv2 adapt 1 atom diameter v_dd reset no\nrun 3000 pre no\n", gap=g41 + 0.1e-3, sep=0.008)
+E("A14_adapt_dynamic_region_group", "fix adapt 12 mm (constant) on a dynamic group (region x < 0.02485): lv2 enters it 0.9 ms into the run, 3.2 mm from lv1",
+  "region rr block 0 0.02485 0 0.04 0 0.1 units box\ngroup dg dynamic all region rr\n" + DD + "fix ad dg adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=g41, sep=0.008,
+  pre=BL().replace("create_box 2 box\n", "create_box 2 box\n"))
+E("A15_adapt_dynamic_var_group", "fix adapt 12 mm (constant) on group dynamic lv2 var (time > 0.0009): lv2 joins 0.9 ms into the run",
+  "variable in atom time>0.0009\ngroup dg dynamic lv2 var in\n" + DD + "fix ad dg adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=g41, sep=0.008)
+E("A16_adapt_two_fixes_same_group", "fix adapt lv2 12 mm and a second fix adapt lv2 6 mm after it (the second sizes last) from the start", DD + "variable d6 equal 0.006\nfix a1 lv2 adapt 1 atom diameter v_dd reset no\nfix a2 lv2 adapt 1 atom diameter v_d6 reset no\nrun 3000\n",
+  gap=g11)
+E("A17_adapt_dynamic_group_far", "A14 with lv2 entering the region 2.6 mm further (the pair then 5.8 mm apart: met on time?)",
+  "region rr block 0 0.0246 0 0.04 0 0.1 units box\ngroup dg dynamic all region rr\n" + DD + "fix ad dg adapt 1 atom diameter v_dd reset no\nrun 6000\n", gap=g41 + 4e-3, sep=0.008)
+
+# ------------------------------------------------------------ Q: quoted names (wave 1's atomfile mended; more places)
+QA = {"d  d.txt": "# d\n1\n2 0.012\n", "d d.txt": "# d\n1\n2 0.006\n"}
+E("Q09_atomfile_two_spaces_grow_pre_no_map", 'Q03 with atom_modify map array', 'variable a atomfile "d  d.txt"\nrun 1000\nset group lv2 diameter v_a\nrun 3000 pre no\n', gap=g41, sep=0.008, data=QA, pre=MAP)
+E("Q10_atomfile_two_spaces_grow_map", 'Q04 with atom_modify map array', 'variable a atomfile "d  d.txt"\nrun 1000\nset group lv2 diameter v_a\nrun 3000\n', gap=g41, sep=0.008, data=QA, pre=MAP)
+E("Q11_restart_tab", 'write_restart "a\ta.rst"; clear; read_restart "a\ta.rst" (kn 5000 before)', RS().replace("a.rst", '"a\ta.rst"').replace("run 1000\n", p.P5() + "\nrun 1000\n"), gap=g11)
+E("Q12_include_folder_two_spaces", 'include "sub  dir/k.in" (kn 5000; "sub dir/k.in" kn 8000)', 'include "sub  dir/k.in"\nrun 3000\n', gap=0.1e-3,
+  data={"sub  dir/k.in": p.P5() + "\n", "sub dir/k.in": p.P8() + "\n"})
+E("Q13_include_hash_in_quotes", 'include "k#1.in" (kn 5000; "k" with kn 8000)', 'include "k#1.in"\nrun 3000\n', gap=0.1e-3, data={"k#1.in": p.P5() + "\n", "k": p.P8() + "\n"})
+E("Q14_string_var_two_spaces_quoted", 'variable f string "k  k.in"; include "${f}"', 'variable f string "k  k.in"\ninclude "${f}"\nrun 3000\n', gap=0.1e-3,
+  data={"k  k.in": p.P5() + "\n", "k k.in": p.P8() + "\n"})
+E("Q15_if_read_restart_two_spaces_after_run", 'write_restart "a  a.rst" (kn 5000); clear; if "1 > 0" then "read_restart \'a  a.rst\'"',
+  RS().replace("write_restart a.rst", 'write_restart "a  a.rst"').replace("read_restart a.rst", 'if "1 > 0" then "read_restart \'a  a.rst\'"').replace("run 1000\n", p.P5() + "\nrun 1000\n"), gap=g11)
+RD2 = lambda d2, k: ("# the pair\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nPairIJ Coeffs # granular\n\n1 1 " + HK + "\n1 2 " + hk(k) + "\n2 2 " + HK
+                     + f"\n\nAtoms # sphere\n\n1 1 0.004 2500 0.01745 0.02 0.05\n2 2 {d2} 2500 {0.02 + d2 / 2 + 0.00055:.9g} 0.02 0.05\n\nVelocities\n\n1 0.7714285714 0 0 0 0 0\n2 -0.2285714286 0 0 0 0 0\n")
+E("Q16_read_data_main_two_spaces", 'read_data "d  d.data" (the pair, PairIJ 1 2 kn 5000); "d d.data" beside it (lv2 12 mm, kn 8000)',
+  "run 3000\n", pre="units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\npair_style granular\nread_data \"d  d.data\"\n" + m.GRAV + q.r.FL() + q.r.TAILL,
+  pair="group lv1 id 1\ngroup lv2 id 2\n", gap=g11, data={"d  d.data": RD2(0.006, 5000), "d d.data": RD2(0.012, 8000)})
+
+# ------------------------------------------------------------ L: LIGGGHTS (more)
+LRE3 = (LV + "group v3 id 3\nrun 1000\nvariable xx equal x[2]\nvariable zz equal z[2]\nvariable vz equal vz[2]\nvariable x0 equal ${xx}\nvariable z0 equal ${zz}\nvariable v0 equal ${vz}\n"
+        "delete_atoms group lv2\ndelete_atoms group v3\ncreate_atoms 2 single ${x0} 0 ${z0} units box\nset atom 3 diameter 0.012 density 2500\ngroup lvn id 3\nvelocity lvn set -0.2285714286 0 ${v0}\n")
+Ld("L09_lig_compress_id_reused_same_size_pre_no", "LIGGGHTS P02: lv2 and the 12 mm victim deleted (compress yes), a new 12 mm takes ID 3 (held 12 mm) at lv2's place; run 3000 pre no",
+   LRE3 + "run 3000 pre no\n", gap=g41, sep=0.008)
+Ld("L10_lig_compress_id_reused_control", "L09 without pre no", LRE3 + "run 3000\n", gap=g41, sep=0.008)
+Ld("L11_lig_nve_twice_lv2", "LIGGGHTS a second nve/sphere on lv2", "fix integr2 lv2 nve/sphere\nrun 3000\n", gap=0.1e-3)
+Ld("L12_lig_grow_include_loop_victims_pre_no", "LIGGGHTS victims 12, 6 mm; loop 2 of run 500 with include g.in in pass 2 (lv2 12 mm); run 3000 pre no",
+   LV + 'variable i loop 2\nlabel l\nrun 500\nif "${i} == 2" then "include g.in"\nnext i\njump SELF l\nrun 3000 pre no\n', gap=g41, sep=0.008, data={"g.in": "set group lv2 diameter 0.012\n"})
+for n in ("L09_lig_compress_id_reused_same_size_pre_no", "L10_lig_compress_id_reused_control"):
+    groups(n)
+
+# ------------------------------------------------------------ P: LAMMPS (more)
+MOL2 = "# two\n\n2 atoms\n\nCoords\n\n1 0 0 0\n2 0 0.015 -0.03\n\nTypes\n\n1 2\n2 2\n\nDiameters\n\n1 0.012\n2 0.006\n\nMasses\n\n1 0.0022619467\n2 0.00028274334\n"
+E("P11_create_molecule_two_atoms_rotate0_pre_no", "P10 mended: the molecule's centre placed so its 12 mm atom sits at lv2's place, rotate 0; run 3000 pre no",
+  V26 + "run 1000\n" + PRE + "delete_atoms group lv2 compress no\nmolecule m2 two.mol\ncreate_atoms 0 single ${xx} 0.0275 $(v_zz-0.015) mol m2 4711 rotate 0 1 0 0 units box\ngroup lvn id 5\n"
+  "velocity lvn set -0.2285714286 0 ${vz} units box\nrun 3000 pre no\n", gap=g41, sep=0.008, pre=MAP, data={"two.mol": MOL2})
+E("P12_create_molecule_two_atoms_rotate0_control", "P11 without pre no",
+  V26 + "run 1000\n" + PRE + "delete_atoms group lv2 compress no\nmolecule m2 two.mol\ncreate_atoms 0 single ${xx} 0.0275 $(v_zz-0.015) mol m2 4711 rotate 0 1 0 0 units box\ngroup lvn id 5\n"
+  "velocity lvn set -0.2285714286 0 ${vz} units box\nrun 3000\n", gap=g41, sep=0.008, pre=MAP, data={"two.mol": MOL2})
+E("P13_new_id_same_size_sort_off_pre_no", "round 31 Y03 (a 6 mm new ID, printed) with atom_modify sort 0 0", X5(CA, d=0.006), gap=g11, pre=MAP.replace("atom_modify map array\n", "atom_modify map array sort 0 0\n"))
+E("P14_new_id_same_size_no_victim_deleted_pre_no", "victims 12, 6 mm; the 6 mm victim deleted too (compress no); lv2 made again 6 mm at a new ID; run 3000 pre no",
+  X5(CA, d=0.006).replace("delete_atoms group lv2 compress no\n", "delete_atoms group lv2 compress no\ngroup v4 id 4\ndelete_atoms group v4 compress no\n"), gap=g11, pre=MAP)
+for n in ("P11_create_molecule_two_atoms_rotate0_pre_no", "P12_create_molecule_two_atoms_rotate0_control"):
+    groups(n)
 
 
 def write_all(names):
