@@ -293,6 +293,97 @@ E("P14_new_id_same_size_no_victim_deleted_pre_no", "victims 12, 6 mm; the 6 mm v
 for n in ("P11_create_molecule_two_atoms_rotate0_pre_no", "P12_create_molecule_two_atoms_rotate0_control"):
     groups(n)
 
+# ============================================================ wave 3
+# ------------------------------------------------------------ N: a new sphere (a new ID) of a size its type held, made near the live sphere before pre no (no deletion, nothing moved)
+NEWP = ("create_atoms 1 single 0.01795 0.02 0.05\ncreate_atoms 2 single 0.03 0.035 0.05\nset atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\n"
+        "group lv1 id 1\nvelocity lv1 set 0.7714285714 0 0 units box\n")
+NEWM = lambda d=0.006, run="run 3000 pre no\n", t=2, idn=5: (
+    "run 1000\ncreate_atoms %d single $(x[1]+0.002+%g+0.0001) 0.02 $(z[1]) units box\nset atom %d diameter %g density 2500\ngroup lvn id %d\n"
+    "velocity lvn set -0.2285714286 0 $(vz[1]) units box\n" % (t, d / 2, idn, d, idn) + run)
+E("N01_new_same_size_near_pre_no", "victims 12, 6 mm (type 2), lv2 far; run 1000; a new 6 mm type 2 (ID 5, a size type 2 holds) made 0.1 mm from lv1, moving at it; run 3000 pre no",
+  V26 + NEWM(), pair=NEWP, pre=MAP, gap=g11)
+E("N02_new_same_size_near_control", "N01 without pre no", V26 + NEWM(run="run 3000\n"), pair=NEWP, pre=MAP, gap=g11)
+E("N03_new_same_size_near_no_victims_pre_no", "N01 without victims (type 2: lv2's 6 mm only; the new one ID 3)", NEWM(idn=3), pair=NEWP, pre=MAP, gap=g11)
+E("N04_new_smaller_near_pre_no", "N01 with the new sphere 4 mm (smaller than any type 2 held)", V26 + NEWM(d=0.004), pair=NEWP, pre=MAP, gap=g11, sep=0.004)
+E("N05_new_type1_near_pre_no", "N01 with the new sphere of type 1, 4 mm (lv1's size; pair 1 1)", V26 + NEWM(d=0.004, t=1), pair=NEWP, pre=MAP, gap=g11, sep=0.004)
+extra("N05_new_type1_near_pre_no", PAIR="types 1 1")
+for n in ("N01_new_same_size_near_pre_no", "N02_new_same_size_near_control", "N03_new_same_size_near_no_victims_pre_no", "N04_new_smaller_near_pre_no", "N05_new_type1_near_pre_no"):
+    groups(n)
+
+E("N06_delete_far_victim_new_same_size_near_pre_no", "N01 with the 12 mm victim (ID 3) deleted first (compress no): the new 6 mm made near lv1 at ID 5",
+  V26 + "group v3 id 3\n" + NEWM().replace("run 1000\n", "run 1000\ndelete_atoms group v3 compress no\n"), pair=NEWP, pre=MAP, gap=g11)
+E("N07_delete_lv2far_new_same_size_near_pre_no", "N01 with the far 6 mm lv2 (ID 2) deleted first (compress no)",
+  V26 + "group far id 2\n" + NEWM().replace("run 1000\n", "run 1000\ndelete_atoms group far compress no\n"), pair=NEWP, pre=MAP, gap=g11)
+for n in ("N06_delete_far_victim_new_same_size_near_pre_no", "N07_delete_lv2far_new_same_size_near_pre_no"):
+    groups(n)
+
+# ------------------------------------------------------------ I: second integrators and motion fixes on groups the audit cannot type (F13's class)
+E("I01_second_nve_all", "a second integrator of another style: fix integ2 all nve", "fix integ2 all nve\nrun 3000\n", gap=0.1e-3)
+E("I02_second_nve_lv2", "fix integ2 lv2 nve (by id)", "fix integ2 lv2 nve\nrun 3000\n", gap=0.1e-3)
+E("I03_second_nve_limit_lv2", "fix integ2 lv2 nve/limit 1.0 (a cap far above the step's move)", "fix integ2 lv2 nve/limit 1.0\nrun 3000\n", gap=0.1e-3)
+E("I04_second_nve_sphere_before_pre_no", "run 1000; fix integ2 lv2 nve/sphere added; run 3000 pre no (is a fix added before pre no set up?)", "run 1000\nfix integ2 lv2 nve/sphere\nrun 3000 pre no\n", gap=g11)
+E("I05_move_linear_lv2", "fix move lv2 linear (its approach speed), lv2 integrated by nve/sphere too", "fix mv lv2 move linear -0.2285714286 0 0 units box\nrun 3000\n", gap=0.1e-3)
+E("I06_addforce_lv2", "fix addforce lv2 -0.001 0 0 (a push of 1 mN toward lv1)", "fix af lv2 addforce -0.001 0 0\nrun 3000\n", gap=0.1e-3)
+E("I07_setforce_lv2_x0", "fix setforce lv2 0.0 NULL NULL (lv2 keeps its x velocity)", "fix sf lv2 setforce 0.0 NULL NULL\nrun 3000\n", gap=0.1e-3)
+E("I08_freeze_before_pre_no", "run 1000; fix freeze lv2 added; velocity lv2 0; run 3000 pre no", "run 1000\nfix fr lv2 freeze\nvelocity lv2 set 0 0 0 units box\nrun 3000 pre no\n", gap=g11)
+W("I09_wall_added_before_pre_no", "wall live: the floor unfixed before run 1000 and added again before run 3000 pre no (sphere falls onto it in that run)",
+  "unfix floor\nrun 1000\nfix floor all wall/gran granular " + HK + " zplane 0 NULL\nrun 4000 pre no\n", gap=2.1e-3 + 1e-3)
+E("I10_second_nve_sphere_lv1_only_plus_type2", "control: lv1 by its own nve/sphere (by id), type 2 by another (by type): each sphere integrated once",
+  "unfix integ\ngroup t2 type 2\nfix i1 lv1 nve/sphere\nfix i2 t2 nve/sphere\nrun 3000\n", gap=0.1e-3)
+Ld("I11_lig_second_nve_all", "LIGGGHTS fix integr2 all nve/sphere (every sphere twice)", "fix integr2 all nve/sphere\nrun 3000\n", gap=0.1e-3)
+E("I12_rigid_single_lv2", "fix rg lv2 rigid single (lv2 also under nve/sphere)", "fix rg lv2 rigid single\nrun 3000\n", gap=0.1e-3)
+
+# ------------------------------------------------------------ A: fix adapt whose variable holds step but is constant in the meeting run
+E("A18_adapt_step_saturating", "fix adapt lv2 v_dd = 0.006+0.006*(step>=500) (grows mid run 1, far); run 3000 meets at 12 mm (no growth at its set-up)",
+  "variable dd equal 0.006+0.006*(step>=500)\nfix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 1000\nrun 3000\n", gap=g41 + 1e-3, sep=0.008)
+E("A19_adapt_lv1_grows_lv2_kept", "fix adapt lv1 4 -> 8 mm at run 1000's set-up (far), run 3000 meets (no growth at its set-up)",
+  "variable d1 equal 0.008\nfix a1 lv1 adapt 1 atom diameter v_d1 reset no\nrun 1000\nrun 3000\n", gap=g31 + 1e-3, sep=0.007)
+
+# ------------------------------------------------------------ RP: more restart round trips
+E("RP14_periodic_restart_pair_coeff_all_regiven", "R04 with pair_coeff * * given again after read_restart (no pair_style)", RS(after="pair_coeff * * " + HK + "\n"), gap=g11, pair=PER(g11))
+E("RP15_periodic_restart_by_restart_cmd", "R04 with the file written by restart 1000 r.rst during run 1000 (no write_restart)",
+  RS().replace("run 1000\nwrite_restart a.rst\n", "restart 1000 r.rst\nrun 1000\n").replace("read_restart a.rst", "read_restart r.rst"), gap=g11, pair=PER(g11))
+E("RP16_inside_restart_by_restart_cmd", "RP15 with the pair inside the box (R01's)", RS().replace("run 1000\nwrite_restart a.rst\n", "restart 1000 r.rst\nrun 1000\n").replace("read_restart a.rst", "read_restart r.rst"), gap=g11)
+LPER = lambda gap: (f"create_atoms 1 single {0.05 - 0.002 - gap / 2:.9g} 0 0.1 units box\ncreate_atoms 2 single {-0.05 + 0.003 + gap / 2:.9g} 0 0.1 units box\n"
+                    "set atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\ngroup lv1 id 1\ngroup lv2 id 2\n"
+                    "velocity lv1 set 0.7714285714 0 0\nvelocity lv2 set -0.2285714286 0 0\n")
+LREST = ("run 1000\nwrite_restart a.rst\nclear\nread_restart a.rst\ncommunicate single vel yes\nneighbor 0.002 bin\nneigh_modify delay 0\n" + m.MAT3 + m.E3
+         + "fix wprim all wall/gran model hertz tangential history primitive type 3 zplane 0.0\ntimestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 3000\n")
+m.L("RP17_lig_periodic_restart", "# LIGGGHTS: the live pair across the periodic x boundary; write_restart, clear, read_restart; run 3000\n"
+    + m.lhead(bnd="p f f") + m.MAT3 + m.E3 + m.HERTZ + m.WALL3 + LPER(g11) + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n" + LREST, g=1)
+p.LIVE["RP17_lig_periodic_restart"] = "last run"
+m.L("RP18_lig_periodic_norestart_control", "# LIGGGHTS: RP17 without the restart (run 4000)\n"
+    + m.lhead(bnd="p f f") + m.MAT3 + m.E3 + m.HERTZ + m.WALL3 + LPER(g11) + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 4000\n", g=1)
+p.LIVE["RP18_lig_periodic_norestart_control"] = "last run"
+E("RP19_periodic_restart_two_stage_files", "R04 as a modeller's two files: in.deck writes the restart and includes stage2.in (clear, read_restart, run)",
+  "run 1000\nwrite_restart a.rst\ninclude stage2.in\n", gap=g11, pair=PER(g11),
+  data={"stage2.in": "clear\nread_restart a.rst\ncomm_modify vel yes\n" + m.GRAV + q.r.FL() + "fix integ all nve/sphere\nrun 3000\n"})
+
+# ------------------------------------------------------------ Q: more quoted names
+E("Q17_read_restart_var_two_spaces", 'variable f string "a  a.rst"; write_restart "${f}"; clear; read_restart "${f}" (kn 5000)',
+  'variable f string "a  a.rst"\n' + p.P5() + '\nrun 1000\nwrite_restart "${f}"\nclear\nvariable f string "a  a.rst"\nread_restart "${f}"\ncomm_modify vel yes\n' + m.GRAV + q.r.FL() + "fix integ all nve/sphere\nrun 3000\n", gap=g11)
+E("Q18_include_dotdot_path", 'include "sub dir/../k  k.in" (the folder exists; kn 5000)', 'include "sub dir/../k  k.in"\nrun 3000\n', gap=0.1e-3,
+  data={"k  k.in": p.P5() + "\n", "k k.in": p.P8() + "\n", "sub dir/x.txt": "x\n"})
+E("Q19_file_var_tab", 'variable k file "k\tv.txt" (5000); pair_coeff 1 2 hooke ${k}', 'variable k file "k\tv.txt"\npair_coeff 1 2 hooke ${k} 3000 ' + K + "\nrun 3000\n", gap=0.1e-3,
+  data={"k\tv.txt": "5000\n", "k v.txt": "8000\n"})
+E("Q20_if_jump_two_spaces", "if \"1 > 0\" then 'jump \"j  j.in\"' (the file: kn 5000, run)", "if \"1 > 0\" then 'jump \"j  j.in\"'\n", gap=0.1e-3,
+  data={"j  j.in": p.P5() + "\nrun 3000\n", "j j.in": p.P8() + "\nrun 3000\n"})
+E("Q21_write_data_nocoeff_two_spaces", 'write_data "w  w.data" nocoeff; clear; read_data "w  w.data"; pair_coeff * * (kn 2000) and 1 2 kn 5000 after',
+  "run 1000\nwrite_data \"w  w.data\" nocoeff\nclear\n" + q.r.head(2).split("region box")[0] + "pair_style granular\nread_data \"w  w.data\"\npair_coeff * * " + HK + "\n" + p.P5()
+  + "\ngroup lv1 id 1\ngroup lv2 id 2\n" + m.GRAV + q.r.FL() + q.r.TAILL + "run 3000\n", gap=g11)
+
+# ------------------------------------------------------------ F: units cgs, exclusion by groups changed before pre no
+CGS = (m.head(2, box="0 4 0 4 0 10", units="cgs") + "pair_style granular\npair_coeff * * hooke 2e6 3000 " + K + "\nfix grav all gravity 981 vector 0 0 -1\n"
+       "fix floor all wall/gran granular hooke 2e6 3000 " + K + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1e-6\n")
+CGSP = ("create_atoms 1 single 1.795 2 5\ncreate_atoms 2 single 2.305 2 5\nset atom 1 diameter 0.4 density 2.5\nset atom 2 diameter 0.6 density 2.5\n"
+        "group lv1 id 1\ngroup lv2 id 2\nvelocity lv1 set 0.7714285714 0 0 units box\nvelocity lv2 set -0.2285714286 0 0 units box\n")
+E("F22_units_cgs", "units cgs, kn 2e6 dyne/cm, 4 and 6 mm (0.4, 0.6 cm), approaching at 1 cm/s from 0.01 cm; run 11000", "run 11000\n", pre=CGS, pair=CGSP, gap=0.1e-3, sep=0.5)
+E("F23_exclude_groups_cleared_pre_no", "neigh_modify exclude group lv1 lv2; run 1000; group lv2 clear (the exclusion no longer holds the pair); run 3000 pre no",
+  "neigh_modify exclude group lv1 lv2\nrun 1000\ngroup lv2 clear\ngroup lv2 id 2\nrun 3000 pre no\n", gap=g11)
+E("F24_exclude_groups_cleared_control", "F23 without pre no", "neigh_modify exclude group lv1 lv2\nrun 1000\ngroup lv2 clear\ngroup lv2 id 2\nrun 3000\n", gap=g11)
+E("F25_exclude_groups_joined_pre_no", "neigh_modify exclude group ga gb (ga holds lv1, gb empty); run 1000; group gb id 2 (lv2 joins: now excluded); run 3000 pre no",
+  "group ga id 1\ngroup gb empty\nneigh_modify exclude group ga gb\nrun 1000\ngroup gb id 2\nrun 3000 pre no\n", gap=g11)
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
