@@ -384,6 +384,73 @@ E("F24_exclude_groups_cleared_control", "F23 without pre no", "neigh_modify excl
 E("F25_exclude_groups_joined_pre_no", "neigh_modify exclude group ga gb (ga holds lv1, gb empty); run 1000; group gb id 2 (lv2 joins: now excluded); run 3000 pre no",
   "group ga id 1\ngroup gb empty\nneigh_modify exclude group ga gb\nrun 1000\ngroup gb id 2\nrun 3000 pre no\n", gap=g11)
 
+# ============================================================ wave 4
+# ------------------------------------------------------------ PB: the pair across the periodic boundary, a command between runs that reshuffles atoms or ghosts, then pre no (no size changed)
+PBV = "create_atoms 2 single 0.01 0.01 0.012\ncreate_atoms 2 single 0.03 0.03 0.012\nset atom 3 diameter 0.006 density 2500\nset atom 4 diameter 0.006 density 2500\ngroup v3 id 3\n"
+PB = lambda mid, run="run 3000 pre no\n": dict(lines=PBV + "run 1000\n" + mid + run)
+E("PB01_periodic_delete_far_victim_pre_no", "pair across the periodic x boundary; victims 6, 6 mm far; run 1000; delete the victim ID 3 (compress no); run 3000 pre no",
+  gap=g11, pair=PER(g11), pre=MAP, **PB("delete_atoms group v3 compress no\n"))
+E("PB02_periodic_delete_far_victim_control", "PB01 without pre no", gap=g11, pair=PER(g11), pre=MAP, **PB("delete_atoms group v3 compress no\n", run="run 3000\n"))
+E("PB03_periodic_create_far_victim_pre_no", "PB01 with a far 6 mm type 2 made (ID 5) instead of a deletion", gap=g11, pair=PER(g11), pre=MAP,
+  **PB("create_atoms 2 single 0.02 0.03 0.012\nset atom 5 diameter 0.006 density 2500\n"))
+E("PB04_periodic_write_restart_pre_no", "PB01 with write_restart a.rst (no clear) instead of a deletion", gap=g11, pair=PER(g11), pre=MAP, **PB("write_restart a.rst\n"))
+E("PB05_periodic_write_data_pre_no", "PB01 with write_data w.data instead of a deletion", gap=g11, pair=PER(g11), pre=MAP, **PB("write_data w.data\n"))
+E("PB06_periodic_displace_zero_pre_no", "PB01 with displace_atoms all move 0 0 0 instead of a deletion", gap=g11, pair=PER(g11), pre=MAP, **PB("displace_atoms all move 0 0 0 units box\n"))
+E("PB07_periodic_delete_compress_yes_pre_no", "PB01 with compress yes (the victim ID 4 becomes 3)", gap=g11, pair=PER(g11), pre=MAP, **PB("delete_atoms group v3\n"))
+E("PB08_inside_delete_far_victim_pre_no", "PB01 with the pair inside the box", gap=g11, pre=MAP, **PB("delete_atoms group v3 compress no\n"))
+E("PB09_periodic_shrink_far_victim_pre_no", "PB01 with the victim shrunk to 4 mm instead (a shrink: audited)", gap=g11, pair=PER(g11), pre=MAP, **PB("set atom 3 diameter 0.004\n"))
+E("PB10_periodic_nothing_pre_no", "PB01 with nothing between the runs (control)", gap=g11, pair=PER(g11), pre=MAP, **PB(""))
+E("PB11_periodic_delete_overlap_far_pre_no", "PB01 with delete_atoms overlap of a far victim pair (a 6 mm made on the victim ID 4)", gap=g11, pair=PER(g11), pre=MAP,
+  **PB("create_atoms 2 single 0.03 0.03 0.012\nset atom 5 diameter 0.006 density 2500\ngroup v5 id 5\ndelete_atoms overlap 0.0001 v5 all compress no\n"))
+E("PB12_periodic_delete_far_victim_run0_pre_no", "PB01 with run 0 pre no between (no set-up either)", gap=g11, pair=PER(g11), pre=MAP,
+  **PB("delete_atoms group v3 compress no\nrun 0 pre no\n"))
+Ld("PB13_lig_periodic_delete_far_victim_pre_no", "LIGGGHTS: the pair across the periodic x boundary; victims far; run 1000; delete a victim; run 3000 pre no", "", gap=g11)
+L13 = m.DECKS["PB13_lig_periodic_delete_far_victim_pre_no"]
+m.DECKS["PB13_lig_periodic_delete_far_victim_pre_no"] = ("# LIGGGHTS: the pair across the periodic x boundary; victims 6, 6 mm far; run 1000; delete victim ID 3; run 3000 pre no\n"
+    + m.lhead(bnd="p f f") + m.MAT3 + m.E3 + m.HERTZ + m.WALL3 + LPER(g11) + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
+    + "create_atoms 2 single 0.03 0.03 0.02 units box\ncreate_atoms 2 single -0.03 -0.03 0.02 units box\nset atom 3 diameter 0.006 density 2500\nset atom 4 diameter 0.006 density 2500\ngroup v3 id 3\n"
+    + "run 1000\ndelete_atoms group v3 compress no\nrun 3000 pre no\n",) + L13[1:]
+m.L("RP20_lig_periodic_restart_newton_off", "# LIGGGHTS: RP17 with newton off given again after read_restart\n"
+    + m.lhead(bnd="p f f") + m.MAT3 + m.E3 + m.HERTZ + m.WALL3 + LPER(g11) + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
+    + LREST.replace("communicate single vel yes\n", "newton off\ncommunicate single vel yes\n"), g=1)
+p.LIVE["RP20_lig_periodic_restart_newton_off"] = "last run"
+E("RP21_periodic_restart_hertz_material", "R04 with hertz/material 1e7 viscoelastic (pair and floor)", RS(), gap=g11, pair=PER(g11), pre=BL(p.q.HM))
+
+# ------------------------------------------------------------ F: a proper referee of fix viscous (run ends just after the contact), 2d, set mass
+E("F26_viscous_short_run", "fix viscous all 0.001; the run ends 0.1 ms after the contact (drag outside it small)", "fix visc all viscous 0.001\nrun 800\n", gap=0.1e-3)
+D2 = ("units si\ndimension 2\natom_style sphere 1\nboundary p f p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.1 -0.001 0.001 units box\ncreate_box 2 box\n"
+      "pair_style granular\npair_coeff * * " + HK + "\nfix grav all gravity 9.81 vector 0 -1 0\nfix floor all wall/gran granular " + HK + " yplane 0 NULL\n"
+      "fix e2d all enforce2d\nfix integ all nve/sphere\ntimestep 1e-6\n")
+D2P = lambda dens="density 2500", va=0.7714285714, vb=-0.2285714286: (
+    f"create_atoms 1 single 0.01795 0.05 0\ncreate_atoms 2 single 0.02305 0.05 0\nset atom 1 diameter 0.004 {dens}\nset atom 2 diameter 0.006 {dens}\n"
+    f"group lv1 id 1\ngroup lv2 id 2\nvelocity lv1 set {va} 0 0 units box\nvelocity lv2 set {vb} 0 0 units box\n")
+E("F27_2d_density", "dimension 2, set density 2500 (LAMMPS: a sphere's mass in 2d too?)", "run 3000\n", pre=D2, pair=D2P(), gap=0.1e-3)
+E("F28_2d_density_disc", "dimension 2, set density/disc 2500 (mass of a disc of unit thickness: r^2); run 30000 (a long contact)", "run 30000\n", pre=D2, pair=D2P("density/disc 2500", 9 / 13, -4 / 13), gap=0.1e-3)
+E("F29_set_mass_lv2", "set atom 2 mass 5e-4 after its diameter (heavier than 6 mm at 2500: 2.83e-4)", "set atom 2 mass 5e-4\nvelocity lv1 set 0.8561643836 0 0 units box\nvelocity lv2 set -0.1438356164 0 0 units box\nrun 3000\n", gap=0.1e-3)
+
+# ------------------------------------------------------------ I: SW-I's edges
+E("I13_second_nve_group_subtract", "fix integ2 on group g subtract all lv1 (lv2 and a far victim)", vic(2, 0.006, 0.006) + "group g subtract all lv1\nfix integ2 g nve/sphere\nrun 3000\n", gap=0.1e-3)
+E("I14_second_nve_lv1", "fix integ2 lv1 nve/sphere (type 1's one sphere, by id)", "fix integ2 lv1 nve/sphere\nrun 3000\n", gap=0.1e-3)
+E("I15_integ_split_by_id_groups", "unfix integ; fix i1 lv1 nve/sphere; fix i2 lv2 nve/sphere (each once, by id: control)", "unfix integ\nfix i1 lv1 nve/sphere\nfix i2 lv2 nve/sphere\nrun 3000\n", gap=0.1e-3)
+
+# ============================================================ wave 5: PB06's class (displace_atoms before pre no, a pair across a periodic boundary)
+E("PB14_periodic_displace_far_victim_pre_no", "PB06 with displace_atoms v3 move 0.001 0 0 (a far victim only)", gap=g11, pair=PER(g11), pre=MAP, **PB("displace_atoms v3 move 0.001 0 0 units box\n"))
+E("PB15_inside_displace_zero_pre_no", "PB06 with the pair inside the box", gap=g11, pre=MAP, **PB("displace_atoms all move 0 0 0 units box\n"))
+E("PB16_periodic_displace_lv1_zero_pre_no", "PB06 with displace_atoms lv1 move 0 0 0", gap=g11, pair=PER(g11), pre=MAP, **PB("displace_atoms lv1 move 0 0 0 units box\n"))
+E("PB17_periodic_change_box_same_pre_no", "PB06 with change_box all x final 0 0.04 units box (the box as it was)", gap=g11, pair=PER(g11), pre=MAP, **PB("change_box all x final 0 0.04 units box\n"))
+E("PB18_periodic_set_x_far_victim_pre_no", "PB06 with set atom 3 x 0.015 (a far victim moved by set)", gap=g11, pair=PER(g11), pre=MAP, **PB("set atom 3 x 0.015\n"))
+E("PB19_periodic_displace_zero_control", "PB06 without pre no", gap=g11, pair=PER(g11), pre=MAP, **PB("displace_atoms all move 0 0 0 units box\n", run="run 3000\n"))
+E("PB20_periodic_displace_no_victims_pre_no", "PB06 without victims", "run 1000\ndisplace_atoms all move 0 0 0 units box\nrun 3000 pre no\n", gap=g11, pair=PER(g11))
+E("PB21_periodic_displace_in_include_pre_no", "PB06 with the displace_atoms in an include", gap=g11, pair=PER(g11), pre=MAP, **PB("include d.in\n"), data={"d.in": "displace_atoms all move 0 0 0 units box\n"})
+E("PB22_periodic_displace_random_zero_pre_no", "PB06 with displace_atoms all random 0 0 0 4711", gap=g11, pair=PER(g11), pre=MAP, **PB("displace_atoms all random 0 0 0 4711 units box\n"))
+E("PB23_periodic_change_box_remap_pre_no", "PB06 with change_box all x final 0 0.04 remap units box", gap=g11, pair=PER(g11), pre=MAP, **PB("change_box all x final 0 0.04 remap units box\n"))
+E("PB24_periodic_balance_pre_no", "PB06 with balance 1.0 x uniform (one processor)", gap=g11, pair=PER(g11), pre=MAP, **PB("balance 1.0 x uniform\n"))
+Ld("PB25_lig_periodic_displace_zero_pre_no", "LIGGGHTS PB06 (periodic x, displace_atoms all move 0 0 0, pre no)", "", gap=g11)
+m.DECKS["PB25_lig_periodic_displace_zero_pre_no"] = (m.DECKS["PB13_lig_periodic_delete_far_victim_pre_no"][0].replace("delete_atoms group v3 compress no\n", "displace_atoms all move 0 0 0 units box\n")
+    .replace("delete victim ID 3", "displace_atoms all move 0 0 0"),) + m.DECKS["PB25_lig_periodic_displace_zero_pre_no"][1:]
+E("PB26_periodic_y_displace_zero_pre_no", "PB06 with the box periodic in x only (f p f)? no: p f f and the pair across x", gap=g11, pair=PER(g11), pre=MAP.replace("boundary p p f", "boundary p f f"),
+  **PB("displace_atoms all move 0 0 0 units box\n"))
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
