@@ -451,6 +451,64 @@ m.DECKS["PB25_lig_periodic_displace_zero_pre_no"] = (m.DECKS["PB13_lig_periodic_
 E("PB26_periodic_y_displace_zero_pre_no", "PB06 with the box periodic in x only (f p f)? no: p f f and the pair across x", gap=g11, pair=PER(g11), pre=MAP.replace("boundary p p f", "boundary p f f"),
   **PB("displace_atoms all move 0 0 0 units box\n"))
 
+# ============================================================ wave 6
+E("PB27_inside_reset_atoms_id_sort_pre_no", "the pair inside the box, victims; run 1000; reset_atoms id sort yes; run 3000 pre no", gap=g11, pre=MAP, **PB("reset_atoms id sort yes\n"))
+E("PB28_periodic_reset_atoms_id_pre_no", "PB06 with reset_atoms id instead", gap=g11, pair=PER(g11), pre=MAP, **PB("reset_atoms id\n"))
+E("PB29_periodic_reset_timestep_pre_no", "PB06 with reset_timestep 0 instead", gap=g11, pair=PER(g11), pre=MAP, **PB("reset_timestep 0\n"))
+E("PB30_periodic_change_box_boundary_same_pre_no", "PB06 with change_box all boundary p p f (as it was) instead", gap=g11, pair=PER(g11), pre=MAP, **PB("change_box all boundary p p f\n"))
+RDV = ("# a far victim\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 2 0.006 2500 0.02 0.03 0.012\n")
+E("PB31_periodic_read_data_add_pre_no", "PB06 with read_data v.data add append (a far victim) instead", gap=g11, pair=PER(g11), pre=MAP, data={"v.data": RDV}, **PB("read_data v.data add append\n"))
+E("PB32_inside_reset_atoms_id_sort_victims_between", "PB27 with the victims between lv1 and lv2 in ID order (lv1 ID 1, victims 2 3, lv2 ID 4)", "run 1000\nreset_atoms id sort yes\nrun 3000 pre no\n", gap=g11, pre=MAP,
+  pair=q.r.lvi(g11, ids=(1, 4)).replace("create_atoms 2 single", "create_atoms 2 single 0.01 0.01 0.012\ncreate_atoms 2 single 0.03 0.03 0.012\ncreate_atoms 2 single", 1)
+  .replace("set atom 1 diameter", "set atom 2 diameter 0.006 density 2500\nset atom 3 diameter 0.006 density 2500\nset atom 1 diameter"))
+E("PB33_periodic_displace_zero_then_run0", "PB06 with run 0 (a set-up) after the displace: control", gap=g11, pair=PER(g11), pre=MAP, **PB("displace_atoms all move 0 0 0 units box\nrun 0\n"))
+E("PB34_periodic_displace_hertz_material_pre_no", "PB06 with hertz/material 1e7 viscoelastic", gap=g11, pair=PER(g11), pre=BL(p.q.HM).replace("atom_style sphere 1\n", "atom_style sphere 1\natom_modify map array\n"),
+  **PB("displace_atoms all move 0 0 0 units box\n"))
+
+# ------------------------------------------------------------ PX: fixes replaced before pre no; omp styles; walls with keywords
+E("PX01_unfix_refix_integ_pre_no", "run 1000; unfix integ; fix integ all nve/sphere (the same again); run 3000 pre no", "run 1000\nunfix integ\nfix integ all nve/sphere\nrun 3000 pre no\n", gap=g11)
+E("PX02_timestep_before_pre_no", "run 1000; timestep 2e-6; run 1500 pre no (met at dt 2e-6)", "run 1000\ntimestep 2e-6\nrun 1500 pre no\n", gap=g11)
+E("PX03_suffix_omp_gran_hooke_history", "package omp 1, suffix omp, pair_style gran/hooke/history (no restart)", "run 3000\n", gap=0.1e-3,
+  pre=q.r.head(2).replace("units si\n", "units si\npackage omp 1\nsuffix omp\n") + "pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 0\npair_coeff * *\n" + m.GRAV
+  + "fix floor all wall/gran hooke/history 2000 NULL 3000 NULL 0.3 0 zplane 0 NULL\n" + q.r.TAILL)
+E("PX04_explicit_gran_hooke_history_omp", "pair_style gran/hooke/history/omp named", "run 3000\n", gap=0.1e-3,
+  pre=q.r.head(2) + "pair_style gran/hooke/history/omp 2000 NULL 3000 NULL 0.3 0\npair_coeff * *\n" + m.GRAV
+  + "fix floor all wall/gran hooke/history 2000 NULL 3000 NULL 0.3 0 zplane 0 NULL\n" + q.r.TAILL)
+E("PX05_unfix_grav_pre_no", "run 1000; unfix grav; run 3000 pre no (the pair far above the floor)", "run 1000\nunfix grav\nrun 3000 pre no\n", gap=g11)
+W("PX06_wall_coeff_restitution_hooke", "floor: hooke 2000 e 0.5 damping coeff_restitution", "run 4000\n", gap=2.1e-3,
+  pre=BL().replace("fix floor all wall/gran granular " + HK, "fix floor all wall/gran granular hooke 2000 0.5 damping coeff_restitution tangential linear_nohistory 1 0.3"))
+W("PX07_wall_hertz_material_limit", "floor: hertz/material 1e7 viscoelastic with limit_damping", "run 4000\n", gap=2.1e-3,
+  pre=BL().replace("fix floor all wall/gran granular " + HK, "fix floor all wall/gran granular hertz/material 1e7 1.4e7 0.3 damping viscoelastic tangential linear_nohistory 1 0.3 limit_damping"))
+W("PX08_wall_restart_periodic_box", "wall live after write_restart / clear / read_restart (no list for walls)", "run 500\nwrite_restart a.rst\nclear\nread_restart a.rst\ncomm_modify vel yes\n" + m.GRAV + q.r.FL() + "fix integ all nve/sphere\nrun 4000\n", gap=2.1e-3)
+
+# ============================================================ wave 7
+MIC = ("units micro\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nregion box block 0 40000 0 40000 0 100000 units box\ncreate_box 2 box\n"
+       "pair_style granular\npair_coeff * * hooke 2e6 0.003 " + K + "\nfix grav all gravity 9.81e-6 vector 0 0 -1\n"
+       "fix floor all wall/gran granular hooke 2e6 0.003 " + K + " zplane 0 NULL\nfix integ all nve/sphere\ntimestep 1\n")
+MICP = ("create_atoms 1 single 17950 20000 50000\ncreate_atoms 2 single 23050 20000 50000\nset atom 1 diameter 4000 density 2.5\nset atom 2 diameter 6000 density 2.5\n"
+        "group lv1 id 1\ngroup lv2 id 2\nvelocity lv1 set 0.7714285714 0 0 units box\nvelocity lv2 set -0.2285714286 0 0 units box\n")
+E("F30_units_micro", "units micro (um, us, pg): kn 2e6 (2000 N/m), gamma 0.003 per us, 4000 and 6000 um at 2.5 pg/um3, 1 um/us, dt 1 us", "run 3000\n", pre=MIC, pair=MICP, gap=0.1e-3, sep=5000)
+E("F31_units_lj", "units lj with the si deck's numbers (kn 2000, gamma 3000, 0.004/0.006, density 2500, dt 1e-6, 1 sigma/tau)", "run 3000\n", pre=BL().replace("units si", "units lj"), gap=0.1e-3)
+E("RP22_periodic_restart_nsq", "R04 with neighbor 0.001 nsq after read_restart", RS(after="neighbor 0.001 nsq\n"), gap=g11, pair=PER(g11))
+E("RP23_periodic_restart_first_run_pre_no", "R04 with run 3000 pre no as the first run after the read (LAMMPS sets it up anyway)", RS().replace("run 3000\n", "run 3000 pre no\n"), gap=g11, pair=PER(g11))
+E("RP24_periodic_restart_pair_style_regiven_later", "R04 with run 100 after the read, then pair_style granular and pair_coeff * * again, run 3000 (the pair meets in the last)",
+  RS().replace("run 3000\n", "run 100\npair_style granular\npair_coeff * * " + HK + "\nrun 3000\n"), gap=g11 + 0.1e-3, pair=PER(g11 + 0.1e-3))
+E("PB35_periodic_displace_lv2_small_pre_no", "PB20 with displace_atoms lv2 move -0.0001 0 0 (toward lv1 across the boundary)", "run 1000\ndisplace_atoms lv2 move -0.0001 0 0 units box\nrun 3000 pre no\n",
+  gap=g11 + 0.1e-3, pair=PER(g11 + 0.1e-3))
+E("PB36_periodic_displace_then_run_pre_no_twice", "PB20 with run 100 pre no after the displace, the pair meeting in the run 3000 pre no after it",
+  "run 1000\ndisplace_atoms all move 0 0 0 units box\nrun 100 pre no\nrun 3000 pre no\n", gap=g11 + 0.1e-3, pair=PER(g11 + 0.1e-3))
+POURL = ("region ins block 0.005 0.035 0.005 0.035 0.07 0.095 units box\nfix p all pour 2 2 4767 region ins diam one 0.012 dens 2500 2500\n")
+E("P15_pour_loop_pre_no", "a pour of 12 mm type 2 running through a loop of run 500 pre no (after a first run 500); lv2 6 mm meets lv1 in the third pass, parts in the fourth",
+  POURL + 'run 500\nvariable i loop 4\nlabel l\nrun 500 pre no\nnext i\njump SELF l\n', gap=g11 + 0.5e-3, live="last run")
+Ld("LQ01_lig_include_tab", "LIGGGHTS include \"k\tk.in\" (e 1 2 0.9; \"k k.in\" 0.2)", 'include "k\tk.in"\nrun 3000\n', gap=0.1e-3,
+   data={"k\tk.in": p.E3x(0.9) + "\n", "k k.in": p.E3x(0.2) + "\n"})
+Ld("LQ02_lig_variable_file_two_spaces", "LIGGGHTS variable e file \"e  e.txt\" (0.9); the e 1 2 entry ${e}", 'variable e file "e  e.txt"\n' + p.E3x("${e}") + "\nrun 3000\n", gap=0.1e-3,
+   data={"e  e.txt": "0.9\n", "e e.txt": "0.2\n"})
+Ld("LQ03_lig_read_restart_two_spaces", "LIGGGHTS write_restart \"a  a.rst\", clear, read_restart \"a  a.rst\" (inside the box; newton off again)", "", gap=g11)
+m.DECKS["LQ03_lig_read_restart_two_spaces"] = ("# LIGGGHTS: write_restart \"a  a.rst\"; clear; read_restart \"a  a.rst\"; the pair inside the box\n" + m.lhead() + m.MAT3 + m.E3x if False else
+    "# LIGGGHTS: write_restart \"a  a.rst\"; clear; read_restart \"a  a.rst\"; the pair inside the box\n" + m.DECKS["LQ03_lig_read_restart_two_spaces"][0].split("\n", 1)[1]
+    + LREST.replace("a.rst", '"a  a.rst"').replace("communicate single vel yes\n", "newton off\ncommunicate single vel yes\n"),) + m.DECKS["LQ03_lig_read_restart_two_spaces"][1:]
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
