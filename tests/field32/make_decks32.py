@@ -505,9 +505,48 @@ Ld("LQ01_lig_include_tab", "LIGGGHTS include \"k\tk.in\" (e 1 2 0.9; \"k k.in\" 
 Ld("LQ02_lig_variable_file_two_spaces", "LIGGGHTS variable e file \"e  e.txt\" (0.9); the e 1 2 entry ${e}", 'variable e file "e  e.txt"\n' + p.E3x("${e}") + "\nrun 3000\n", gap=0.1e-3,
    data={"e  e.txt": "0.9\n", "e e.txt": "0.2\n"})
 Ld("LQ03_lig_read_restart_two_spaces", "LIGGGHTS write_restart \"a  a.rst\", clear, read_restart \"a  a.rst\" (inside the box; newton off again)", "", gap=g11)
-m.DECKS["LQ03_lig_read_restart_two_spaces"] = ("# LIGGGHTS: write_restart \"a  a.rst\"; clear; read_restart \"a  a.rst\"; the pair inside the box\n" + m.lhead() + m.MAT3 + m.E3x if False else
-    "# LIGGGHTS: write_restart \"a  a.rst\"; clear; read_restart \"a  a.rst\"; the pair inside the box\n" + m.DECKS["LQ03_lig_read_restart_two_spaces"][0].split("\n", 1)[1]
+m.DECKS["LQ03_lig_read_restart_two_spaces"] = ("# LIGGGHTS: write_restart \"a  a.rst\"; clear; read_restart \"a  a.rst\"; the pair inside the box\n" + m.DECKS["LQ03_lig_read_restart_two_spaces"][0].split("\n", 1)[1]
     + LREST.replace("a.rst", '"a  a.rst"').replace("communicate single vel yes\n", "newton off\ncommunicate single vel yes\n"),) + m.DECKS["LQ03_lig_read_restart_two_spaces"][1:]
+
+# ============================================================ wave 8: LIGGGHTS ghost velocities
+LPB = lambda comm="communicate single vel yes\n", bnd="p f f", extra_="": ("# LIGGGHTS: the pair across the periodic x boundary; " + ("no communicate line" if not comm else comm.strip()) + "\n"
+    + m.lhead(bnd=bnd).replace("communicate single vel yes\n", comm) + extra_ + m.MAT3 + m.E3 + m.HERTZ + m.WALL3 + LPER(g11)
+    + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 3000\n")
+m.L("LX01_lig_periodic_no_comm_vel", LPB(comm=""), g=1); p.LIVE["LX01_lig_periodic_no_comm_vel"] = "last run"
+m.L("LX02_lig_periodic_comm_vel_no", LPB(comm="communicate single vel no\n"), g=1); p.LIVE["LX02_lig_periodic_comm_vel_no"] = "last run"
+m.L("LX03_lig_periodic_comm_vel_yes_control", LPB(), g=1); p.LIVE["LX03_lig_periodic_comm_vel_yes_control"] = "last run"
+Ld("LX04_lig_inside_no_comm_vel", "LIGGGHTS the pair inside the box, no communicate line", "run 3000\n", gap=0.1e-3, head_=m.LB().replace("communicate single vel yes\n", ""))
+m.L("LX05_lig_periodic_hooke_no_comm_vel", LPB(comm="").replace(m.HERTZ, m.HOOKE).replace("model hertz tangential history primitive", "model hooke tangential history primitive"), g=1)
+p.LIVE["LX05_lig_periodic_hooke_no_comm_vel"] = "last run"
+
+# ============================================================ wave 9: a new sphere made across the periodic boundary from lv1 before pre no
+NEWPB = ("create_atoms 1 single 0.03745 0.02 0.05\ncreate_atoms 2 single 0.02 0.035 0.05\nset atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\n"
+         "group lv1 id 1\nvelocity lv1 set 0.7714285714 0 0 units box\n")
+NEWMB = lambda run="run 3000 pre no\n", idn=3, how=None: (
+    "run 1000\n" + (how or "create_atoms 2 single $(x[1]+0.005+0.0001-0.04) 0.02 $(z[1]) units box\nset atom %d diameter 0.006 density 2500\n" % idn)
+    + "group lvn id %d\nvelocity lvn set -0.2285714286 0 $(vz[1]) units box\n" % idn + run)
+E("N08_new_across_boundary_pre_no", "lv1 near the upper x face; run 1000; a new 6 mm type 2 (ID 3; type 2 holds 6 mm) made across the periodic x boundary 0.1 mm from it; run 3000 pre no",
+  NEWMB(), pair=NEWPB, pre=MAP, gap=g11)
+E("N09_new_across_boundary_control", "N08 without pre no", NEWMB(run="run 3000\n"), pair=NEWPB, pre=MAP, gap=g11)
+E("N10_new_across_boundary_victims_pre_no", "N08 with victims 12, 6 mm of type 2 (new ID 5)", V26.replace("atom 3", "atom 3").replace("atom 4", "atom 4") + NEWMB(idn=5).replace("set atom 5", "set atom 5"),
+  pair=NEWPB, pre=MAP, gap=g11)
+RDB1 = ("# one sphere across the boundary\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 2 0.006 2500 0.00355 0.02 0.049995095\n\n"
+        "Velocities\n\n1 -0.2285714286 0 -0.00981 0 0 0\n")
+E("N11_read_data_add_across_boundary_pre_no", "N08 with the new sphere by read_data n.data add append (ID 3)", "run 1000\nread_data n.data add append\ngroup lvn id 3\nrun 3000 pre no\n",
+  pair=NEWPB, pre=MAP, gap=g11, data={"n.data": RDB1})
+E("N12_move_across_boundary_pre_no", "N08 with lv2 (far, 6 mm) moved across the boundary by set atom 2 x y z and given its velocity (no new atom)", NEWMB(idn=2, how="set atom 2 x $(x[1]+0.005+0.0001-0.04) y 0.02 z $(z[1])\n"),
+  pair=NEWPB, pre=MAP, gap=g11)
+Ld("N13_lig_new_across_boundary_pre_no", "LIGGGHTS N08 (p f f; a new 6 mm type 2 made across the boundary; run 3000 pre no)", "", gap=g11)
+m.DECKS["N13_lig_new_across_boundary_pre_no"] = ("# LIGGGHTS: lv1 near the upper x face; run 1000; a new 6 mm type 2 made across the periodic x boundary 0.1 mm from it; run 3000 pre no\n"
+    + m.lhead(bnd="p f f") + m.MAT3 + m.E3 + m.HERTZ + m.WALL3
+    + "create_atoms 1 single 0.04745 0 0.1 units box\nset atom 1 diameter 0.004 density 2500\ngroup lv1 id 1\nvelocity lv1 set 0.7714285714 0 0\n"
+    + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\nrun 1000\nvariable xa equal x[1]\nvariable za equal z[1]\nvariable va equal vz[1]\n"
+    + "variable xb equal ${xa}+0.0051-0.1\nvariable zb equal ${za}\nvariable vb equal ${va}\ncreate_atoms 2 single ${xb} 0 ${zb} units box\nset atom 2 diameter 0.006 density 2500\ngroup lvn id 2\n"
+    + "velocity lvn set -0.2285714286 0 ${vb}\nrun 3000 pre no\n",) + m.DECKS["N13_lig_new_across_boundary_pre_no"][1:]
+for n in ("N08_new_across_boundary_pre_no", "N09_new_across_boundary_control", "N10_new_across_boundary_victims_pre_no", "N11_read_data_add_across_boundary_pre_no", "N12_move_across_boundary_pre_no",
+          "N13_lig_new_across_boundary_pre_no"):
+    groups(n)
+groups("N12_move_across_boundary_pre_no", "lv1", "lvn")
 
 
 def write_all(names):
