@@ -548,6 +548,21 @@ for n in ("N08_new_across_boundary_pre_no", "N09_new_across_boundary_control", "
     groups(n)
 groups("N12_move_across_boundary_pre_no", "lv1", "lvn")
 
+# ============================================================ wave 10: SW-P inside run ... every (LAMMPS sets up only the first part)
+E("PB37_periodic_every_balance", "the pair across the periodic x boundary; run 3000 every 1000 \"balance 1.0 x uniform\" (meets in part 2)", 'run 3000 every 1000 "balance 1.0 x uniform"\n',
+  gap=g11, pair=PER(g11), live="part 2")
+E("PB38_periodic_every_print_control", "PB37 with print instead of balance", 'run 3000 every 1000 "print hi"\n', gap=g11, pair=PER(g11), live="part 2")
+E("PB39_periodic_every_displace_zero", "PB37 with displace_atoms all move 0 0 0 units box", 'run 3000 every 1000 "displace_atoms all move 0 0 0 units box"\n', gap=g11, pair=PER(g11), live="part 2")
+E("PB40_periodic_loop_balance_pre_no", "the pair across the boundary; run 500; loop 4 of balance 1.0 x uniform and run 500 pre no (meets in pass 2)",
+  'run 500\nvariable i loop 4\nlabel l\nbalance 1.0 x uniform\nrun 500 pre no\nnext i\njump SELF l\n', gap=g11 + 0.5e-3, pair=PER(g11 + 0.5e-3))
+E("PB41_periodic_every_change_box_same", "PB37 with change_box all x final 0 0.04 units box", 'run 3000 every 1000 "change_box all x final 0 0.04 units box"\n', gap=g11, pair=PER(g11), live="part 2")
+
+E("I16_move_linear_type2_group", "fix move on group t2 (type 2) at lv2's approach speed, lv2 integrated by nve/sphere too", "group t2 type 2\nfix mv t2 move linear -0.2285714286 0 0 units box\nrun 3000\n", gap=0.1e-3)
+E("I17_move_linear_type2_not_integrated", "fix move on group t2 (type 2), nve/sphere on type 1 only (a driven partner, the modeller's way)",
+  "group t1 type 1\ngroup t2 type 2\nunfix integ\nfix integ t1 nve/sphere\nfix mv t2 move linear -0.2285714286 0 0 units box\nrun 3000\n", gap=0.1e-3)
+E("I18_move_linear_lv2_not_integrated", "I17 with the groups by id (fix integ lv1, fix move lv2)",
+  "unfix integ\nfix integ lv1 nve/sphere\nfix mv lv2 move linear -0.2285714286 0 0 units box\nrun 3000\n", gap=0.1e-3)
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
