@@ -563,6 +563,26 @@ E("I17_move_linear_type2_not_integrated", "fix move on group t2 (type 2), nve/sp
 E("I18_move_linear_lv2_not_integrated", "I17 with the groups by id (fix integ lv1, fix move lv2)",
   "unfix integ\nfix integ lv1 nve/sphere\nfix mv lv2 move linear -0.2285714286 0 0 units box\nrun 3000\n", gap=0.1e-3)
 
+# ============================================================ wave 11: fixes that act on the motion, by id (the hedges), short runs
+E("H01_spring_self_lv2", "fix spring/self lv2 10 (a tether on lv2); the run ends 0.2 ms after the contact", "fix ss lv2 spring/self 10\nrun 900\n", gap=0.1e-3)
+E("H02_temp_rescale_all", "fix temp/rescale 1 on all (T 1e15 to 1e15 window 1e14: rescales each step the velocities)", "compute tt all temp\nfix tr all temp/rescale 1 5e17 5e17 1e17 1.0\nrun 900\n", gap=0.1e-3)
+E("H03_aveforce_lv2_zero", "fix aveforce lv2 0 0 0 on a one-atom group (the force set to its own average: no change)", "fix af lv2 aveforce 0.0 0.0 0.0\nrun 900\n", gap=0.1e-3)
+E("H04_viscous_lv2_short", "fix viscous lv2 0.001 (by id); the run ends 0.2 ms after the contact", "fix visc lv2 viscous 0.001\nrun 900\n", gap=0.1e-3)
+E("H05_lineforce_lv2_x", "fix lineforce lv2 1 0 0 (the force along the line of centres kept)", "fix lf lv2 lineforce 1 0 0\nrun 900\n", gap=0.1e-3)
+E("H06_nve_noforce_lv2", "fix nve/noforce on lv2 beside the nve/sphere on all (positions stepped twice, velocities once)", "fix nf lv2 nve/noforce\nrun 900\n", gap=0.1e-3)
+E("H07_momentum_all", "fix momentum 1 linear 1 1 1 on all (the pair's momentum is zero: no change)", "fix mo all momentum 1 linear 1 1 1\nrun 900\n", gap=0.1e-3)
+E("H08_langevin_zero_lv2", "fix langevin lv2 0 0 0.001 4711 (a drag of damp 1 ms, no noise at T 0)", "fix lg lv2 langevin 0.0 0.0 0.001 4711\nrun 900\n", gap=0.1e-3)
+
+# ============================================================ wave 12: atom_style sphere 0 (radii fixed in a run), growth between full set-ups
+S0 = lambda: BL().replace("atom_style sphere 1\n", "atom_style sphere 0\n")
+E("S01_sphere0_grow_24mm_between_runs", "atom_style sphere 0; run 1000; set group lv2 diameter 0.024; run 3000 (a full set-up)", "run 1000\nset group lv2 diameter 0.024\nrun 3000\n", gap=g11 + 9e-3, sep=0.014, pre=S0())
+E("S02_sphere1_grow_24mm_control", "S01 with atom_style sphere 1", "run 1000\nset group lv2 diameter 0.024\nrun 3000\n", gap=g11 + 9e-3, sep=0.014)
+E("S03_sphere0_grow_12mm_between_runs", "atom_style sphere 0; run 1000; set group lv2 diameter 0.012; run 3000", "run 1000\nset group lv2 diameter 0.012\nrun 3000\n", gap=g41, sep=0.008, pre=S0())
+E("S04_sphere0_new_big_atom_between_runs", "atom_style sphere 0; run 1000; lv2 deleted, a 24 mm type 2 made in its place (new ID); run 3000",
+  "run 1000\nvariable xx equal $(x[2])\nvariable zz equal $(z[2])\nvariable vz equal $(vz[2])\ndelete_atoms group lv2\ncreate_atoms 2 single $(v_xx+0.009) 0.02 ${zz} units box\n"
+  "set atom 2 diameter 0.024 density 2500\ngroup lv2 id 2\nvelocity lv2 set -0.2285714286 0 ${vz} units box\nrun 3000\n", gap=g11, sep=0.014, pre=S0().replace("atom_style sphere 0\n", "atom_style sphere 0\natom_modify map array\n"))
+E("S05_sphere0_fix_adapt", "atom_style sphere 0 with fix adapt of lv2's diameter (LAMMPS may refuse)", DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=g31 + 2e-3, sep=0.008, pre=S0())
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
