@@ -583,6 +583,40 @@ E("S04_sphere0_new_big_atom_between_runs", "atom_style sphere 0; run 1000; lv2 d
   "set atom 2 diameter 0.024 density 2500\ngroup lv2 id 2\nvelocity lv2 set -0.2285714286 0 ${vz} units box\nrun 3000\n", gap=g11, sep=0.014, pre=S0().replace("atom_style sphere 0\n", "atom_style sphere 0\natom_modify map array\n"))
 E("S05_sphere0_fix_adapt", "atom_style sphere 0 with fix adapt of lv2's diameter (LAMMPS may refuse)", DD + "fix ad lv2 adapt 1 atom diameter v_dd reset no\nrun 4000\n", gap=g31 + 2e-3, sep=0.008, pre=S0())
 
+# ============================================================ wave 13: SW-R in the box: after read_restart LAMMPS bins by the box's x extent with a stencil of
+# one bin, so a pair meeting along z across a bin face (z = 0.0333 in a 0.04 x 0.04 x 0.1 box) is not in the lists
+VZ = lambda gap, zc=0.1 / 3, x=0.02: (f"create_atoms 1 single {x} 0.02 {zc - 0.002 - gap / 2:.9g}\ncreate_atoms 2 single {x} 0.02 {zc + 0.003 + gap / 2:.9g}\n"
+                                      "set atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\ngroup lv1 id 1\ngroup lv2 id 2\n"
+                                      "velocity lv1 set 0 0 0.7714285714 units box\nvelocity lv2 set 0 0 -0.2285714286 units box\n")
+E("RZ01_restart_vertical_pair_across_bin_face", "the live pair along z meeting at z = 0.0333 (inside the p p f box); write_restart, clear, read_restart; run 3000", RS(), gap=g11, pair=VZ(g11))
+E("RZ02_vertical_pair_no_restart_control", "RZ01 without the restart (run 4000)", "run 4000\n", gap=g11, pair=VZ(g11))
+E("RZ03_restart_vertical_pair_mid_bin", "RZ01 with the pair meeting at z = 0.05 (the middle of a bin after the read)", RS(), gap=g11, pair=VZ(g11, zc=0.05))
+E("RZ04_restart_vertical_pair_fff", "RZ01 in an f f f box", RS(), gap=g11, pair=VZ(g11), pre=p.FFF(BL()))
+E("RZ05_restart_vertical_pair_pair_style_regiven", "RZ01 with pair_style granular and pair_coeff * * given again after the read", RS(after="pair_style granular\npair_coeff * * " + HK + "\n"), gap=g11, pair=VZ(g11))
+E("RZ06_restart_vertical_pair_hertz_material", "RZ01 with hertz/material viscoelastic", RS(), gap=g11, pair=VZ(g11), pre=BL(p.q.HM))
+E("RZ07_restart_fall_on_resting_sphere", "a 6 mm sphere resting on a 6 mm sphere's top? no: lv1 (4 mm) falls at 1 m/s onto lv2 (6 mm) held by fix freeze? no: both free, lv2 below at rest; restart; run",
+  RS(), gap=g11, pair=VZ(g11).replace("velocity lv1 set 0 0 0.7714285714", "velocity lv1 set 0 0 1.0").replace("velocity lv2 set 0 0 -0.2285714286", "velocity lv2 set 0 0 0"))
+del m.DECKS["RZ07_restart_fall_on_resting_sphere"]
+for n in ("RZ01_restart_vertical_pair_across_bin_face", "RZ02_vertical_pair_no_restart_control", "RZ03_restart_vertical_pair_mid_bin", "RZ04_restart_vertical_pair_fff",
+          "RZ05_restart_vertical_pair_pair_style_regiven", "RZ06_restart_vertical_pair_hertz_material"):
+    extra(n, AXIS="z")
+
+E("RZ07_restart_vertical_pair_mid_fff", "RZ03 (meeting at z = 0.05) in an f f f box", RS(), gap=g11, pair=VZ(g11, zc=0.05), pre=p.FFF(BL()))
+E("RZ08_restart_vertical_pair_mid_hertz_material", "RZ03 with hertz/material viscoelastic", RS(), gap=g11, pair=VZ(g11, zc=0.05), pre=BL(p.q.HM))
+E("RZ09_restart_vertical_pair_mid_pair_style_regiven", "RZ03 with pair_style granular and pair_coeff * * given again after the read", RS(after="pair_style granular\npair_coeff * * " + HK + "\n"),
+  gap=g11, pair=VZ(g11, zc=0.05))
+E("RZ10_restart_vertical_pair_mid_z0455", "RZ03 with the pair meeting at z = 0.0455 (both centres below 0.05)", RS(), gap=g11, pair=VZ(g11, zc=0.0455))
+YB = lambda: BL().replace("region box block 0 0.04 0 0.04 0 0.1", "region box block 0 0.04 0 0.1 0 0.1")
+VY = lambda gap, yc=0.05: (f"create_atoms 1 single 0.02 {yc - 0.002 - gap / 2:.9g} 0.05\ncreate_atoms 2 single 0.02 {yc + 0.003 + gap / 2:.9g} 0.05\n"
+                           "set atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\ngroup lv1 id 1\ngroup lv2 id 2\n"
+                           "velocity lv1 set 0 0.7714285714 0 units box\nvelocity lv2 set 0 -0.2285714286 0 units box\n")
+E("RZ11_restart_y_pair_mid_box", "a 0.04 x 0.1 x 0.1 box; the live pair along y meeting at y = 0.05; restart; run 3000", RS(), gap=g11, pair=VY(g11), pre=YB())
+E("RZ12_y_pair_mid_box_control", "RZ11 without the restart", "run 4000\n", gap=g11, pair=VY(g11), pre=YB())
+for n in ("RZ07_restart_vertical_pair_mid_fff", "RZ08_restart_vertical_pair_mid_hertz_material", "RZ09_restart_vertical_pair_mid_pair_style_regiven", "RZ10_restart_vertical_pair_mid_z0455"):
+    extra(n, AXIS="z")
+for n in ("RZ11_restart_y_pair_mid_box", "RZ12_y_pair_mid_box_control"):
+    extra(n, AXIS="y")
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
