@@ -18,9 +18,10 @@ def _tail(d, var, tag):
         return lig, tail
     if lig:
         sep = float(open(os.path.join(d, "SEP")).read()) if os.path.exists(os.path.join(d, "SEP")) else 0.005
-        return lig, (f"\nvariable {var}e equal vcm({b},x)-vcm({a},x)\nvariable {var}g equal xcm({b},x)-xcm({a},x)-{sep}\n"
-                     f"print \"{tag} eps ${{{var}e}} gap ${{{var}g}} n $(atoms)\"\n")
-    tail = tail.replace("(lv1,", f"({a},").replace("(lv2,", f"({b},")
+        tail = (f"\nvariable {var}e equal vcm({b},x)-vcm({a},x)\nvariable {var}g equal xcm({b},x)-xcm({a},x)-{sep}\n"
+                f"print \"{tag} eps ${{{var}e}} gap ${{{var}g}} n $(atoms)\"\n")
+    else:
+        tail = tail.replace("(lv1,", f"({a},").replace("(lv2,", f"({b},")
     if os.path.exists(os.path.join(d, "AXIS")):    # the pair meets along this axis (round 32: z, across a bin face)
         ax = open(os.path.join(d, "AXIS")).read().strip()
         tail = tail.replace(",x)", f",{ax})")

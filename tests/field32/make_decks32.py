@@ -617,6 +617,21 @@ for n in ("RZ07_restart_vertical_pair_mid_fff", "RZ08_restart_vertical_pair_mid_
 for n in ("RZ11_restart_y_pair_mid_box", "RZ12_y_pair_mid_box_control"):
     extra(n, AXIS="y")
 
+GHH = (q.r.head(2) + "pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 0\npair_coeff * *\n" + m.GRAV
+       + "fix floor all wall/gran hooke/history 2000 NULL 3000 NULL 0.3 0 zplane 0 NULL\n" + q.r.TAILL)
+E("RZ13_restart_vertical_pair_mid_gran_hooke_history", "RZ03 with pair_style gran/hooke/history", RS(), gap=g11, pair=VZ(g11, zc=0.05), pre=GHH)
+extra("RZ13_restart_vertical_pair_mid_gran_hooke_history", AXIS="z")
+LVZ = lambda gap, zc=0.07: (f"create_atoms 1 single 0 0 {zc - 0.002 - gap / 2:.9g} units box\ncreate_atoms 2 single 0 0 {zc + 0.003 + gap / 2:.9g} units box\n"
+                            "set atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.006 density 2500\ngroup lv1 id 1\ngroup lv2 id 2\n"
+                            "velocity lv1 set 0 0 0.7714285714\nvelocity lv2 set 0 0 -0.2285714286\n")
+for zc, tag in ((0.07, "mid"), (0.0455, "low")):
+    nm = f"RZ{14 if tag == 'mid' else 15}_lig_restart_vertical_pair_{tag}"
+    m.L(nm, f"# LIGGGHTS: the live pair along z meeting at z = {zc} inside the f f f box; write_restart, clear, read_restart (newton off again); run 3000\n"
+        + m.lhead() + m.MAT3 + m.E3 + m.HERTZ + m.WALL3 + LVZ(g11, zc) + "timestep 1e-6\nfix gravi all gravity 9.81 vector 0.0 0.0 -1.0\nfix integr all nve/sphere\n"
+        + LREST.replace("communicate single vel yes\n", "newton off\ncommunicate single vel yes\n"), g=1)
+    p.LIVE[nm] = "last run"
+    extra(nm, AXIS="z")
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
