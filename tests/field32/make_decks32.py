@@ -632,6 +632,12 @@ for zc, tag in ((0.07, "mid"), (0.0455, "low")):
     p.LIVE[nm] = "last run"
     extra(nm, AXIS="z")
 
+# ============================================================ wave 14: run_style respa, comm_style tiled
+E("F32_run_style_respa", "run_style respa 2 2 (pair at the outer level, nve/sphere)", "run_style respa 2 2\nrun 3000\n", gap=0.1e-3)
+E("F33_comm_tiled_periodic_pair", "comm_style tiled; the pair across the periodic x boundary; run 4000", "run 4000\n", gap=g11, pair=PER(g11), pre=BL().replace("comm_modify vel yes\n", "comm_style tiled\ncomm_modify vel yes\n"))
+E("F34_comm_tiled_periodic_displace_pre_no", "F33 with displace_atoms all move 0 0 0 and run 3000 pre no after run 1000", "run 1000\ndisplace_atoms all move 0 0 0 units box\nrun 3000 pre no\n", gap=g11, pair=PER(g11),
+  pre=BL().replace("comm_modify vel yes\n", "comm_style tiled\ncomm_modify vel yes\n"))
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
