@@ -638,6 +638,14 @@ E("F33_comm_tiled_periodic_pair", "comm_style tiled; the pair across the periodi
 E("F34_comm_tiled_periodic_displace_pre_no", "F33 with displace_atoms all move 0 0 0 and run 3000 pre no after run 1000", "run 1000\ndisplace_atoms all move 0 0 0 units box\nrun 3000 pre no\n", gap=g11, pair=PER(g11),
   pre=BL().replace("comm_modify vel yes\n", "comm_style tiled\ncomm_modify vel yes\n"))
 
+# ============================================================ wave 15: LAMMPS walls that move (wiggle, shear) and a moving region wall
+FLW = lambda kw: BL().replace("fix floor all wall/gran granular " + HK + " zplane 0 NULL", "fix floor all wall/gran granular " + HK + " zplane 0 NULL " + kw)
+W("W01_wall_wiggle_z", "floor wiggle z 0.0002 0.002 (amplitude 0.2 mm, period 2 ms: the floor accelerates under the sphere)", "run 4000\n", gap=2.1e-3, pre=FLW("wiggle z 0.0002 0.002"))
+W("W02_wall_shear_x", "floor shear x 0.5 (the floor slides; head-on normal contact)", "run 4000\n", gap=2.1e-3, pre=FLW("shear x 0.5"))
+W("W03_wall_region_move", "a wall/gran/region block whose region moves up at 0.1 m/s (region move v_)",
+  "variable zz equal 0.1*time\nregion up block INF INF INF INF -0.01 0 move NULL NULL v_zz units box\nfix rw all wall/gran/region granular " + HK + " region up\nrun 4000\n",
+  gap=2.1e-3, pre=BL().replace("fix floor all wall/gran granular " + HK + " zplane 0 NULL\n", ""))
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
