@@ -646,6 +646,10 @@ W("W03_wall_region_move", "a wall/gran/region block whose region moves up at 0.1
   "variable zz equal 0.1*time\nregion up block INF INF INF INF -0.01 0 move NULL NULL v_zz units box\nfix rw all wall/gran/region granular " + HK + " region up\nrun 4000\n",
   gap=2.1e-3, pre=BL().replace("fix floor all wall/gran granular " + HK + " zplane 0 NULL\n", ""))
 
+E("RZ16_restart_binsize_user_x_pair", "R01's pair along x inside the box (p p f); neigh_modify binsize 0.004 after read_restart (bins narrower than the pair)",
+  RS(after="neigh_modify binsize 0.004\n"), gap=g11)
+E("RZ17_binsize_user_x_pair_control", "RZ16 without the restart (neigh_modify binsize 0.004, run 4000)", "neigh_modify binsize 0.004\nrun 4000\n", gap=g11)
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
