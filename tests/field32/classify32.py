@@ -4,5 +4,5 @@ import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import classify  # noqa: E402
 
-ORDER = ("SIL", "ANSW", "AVOID", "conservative", "correct", "fair", "not")   # worst first, then the rest by name
+ORDER = ("SIL", "ANSW", "FALSE", "AVOID", "conservative", "correct", "fair", "not")   # worst first, then the rest by name
 classify.outcome(os.path.dirname(os.path.abspath(__file__)), round=32, order=ORDER)

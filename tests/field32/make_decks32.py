@@ -650,6 +650,16 @@ E("RZ16_restart_binsize_user_x_pair", "R01's pair along x inside the box (p p f)
   RS(after="neigh_modify binsize 0.004\n"), gap=g11)
 E("RZ17_binsize_user_x_pair_control", "RZ16 without the restart (neigh_modify binsize 0.004, run 4000)", "neigh_modify binsize 0.004\nrun 4000\n", gap=g11)
 
+# ============================================================ wave 17: ghost velocities switched off before pre no
+E("PC01_periodic_comm_vel_no_pre_no", "the pair across the periodic x boundary; run 1000; comm_modify vel no; run 3000 pre no (no set-up: LAMMPS' check not made)",
+  "run 1000\ncomm_modify vel no\nrun 3000 pre no\n", gap=g11, pair=PER(g11))
+E("PC02_periodic_comm_vel_no_control", "PC01 without pre no (LAMMPS stops: granular needs ghost velocities)", "run 1000\ncomm_modify vel no\nrun 3000\n", gap=g11, pair=PER(g11))
+E("PC03_inside_comm_vel_no_pre_no", "PC01 with the pair inside the box", "run 1000\ncomm_modify vel no\nrun 3000 pre no\n", gap=g11)
+
+E("PC04_adapt_dynamic_group_before_pre_no", "run 1000; a dynamic group and a fix adapt on it (LAMMPS refuses that at a set-up); run 3000 pre no",
+  "run 1000\nregion rr block 0 0.04 0 0.04 0 0.1 units box\ngroup dg dynamic all region rr\n" + DD + "fix ad dg adapt 1 atom diameter v_dd reset no\nrun 3000 pre no\n", gap=g11)
+E("PC05_inside_comm_vel_no_pre_no_far", "PC03 with the pair 2 mm apart (met in the pre-no run at 2 ms)", "run 1000\ncomm_modify vel no\nrun 3000 pre no\n", gap=g11 + 1e-3)
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
