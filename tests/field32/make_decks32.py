@@ -1,11 +1,14 @@
 """Field round 32: write decks/NAME/in.deck with rounds 30-31's helpers (make_decks31.py, make_decks30.py: kn 2000,
 dt 1e-6, the live pair 4 mm type 1 / 6 mm type 2 meeting at 1 m/s), refereed by live32.py (the deck run as written;
-a GROUPS file names the two groups printed where the deck makes a sphere again under another group).
-Prefixes: L LIGGGHTS spheres made again or grown before run pre no; P LAMMPS spheres made, moved or renumbered before
-pre no (IDs reused, compress, read_data add merge, delete_atoms overlap); A fix adapt (several groups, index and ramp
-variables, unfix and re-add, a pair coefficient); R restart round trips (global cutoff, hybrid, periodic, pair_coeff
-given again); Q quoted file names with spaces or tabs; F a modeller's other commands (time step, start/stop,
-velocity mid-contact, viscous, freeze, integrators on a subset, newton, replicate, damping options, walls).
+a GROUPS file names the two groups printed where the deck makes a sphere again under another group, an AXIS file the
+axis the pair meets along). Prefixes: L LIGGGHTS spheres made again or grown before run pre no; P LAMMPS spheres made,
+moved or renumbered before pre no (IDs reused, compress, read_data add merge, delete_atoms overlap, molecules, pours);
+N new spheres near the live one before pre no (in the box, across the periodic boundary); A fix adapt (several groups,
+index and ramp variables, unfix and re-add, dynamic groups, a pair coefficient); R RL RP RZ restart round trips (global
+cutoff, hybrid, omp, what a restart keeps, a pair across a periodic boundary or across a bin face in the box); PB a
+pair across a periodic boundary with a command between runs and pre no; PC set-up checks made before pre no; Q LQ
+quoted file names; F I H PX a modeller's other commands (integrators twice or on subsets, motion fixes, units, 2d,
+damping options, timestep); S atom_style sphere 0; W moving walls; LX LIGGGHTS ghost velocities.
 usage: python make_decks32.py [NAME ...]"""
 import os, sys
 
