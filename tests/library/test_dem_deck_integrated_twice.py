@@ -42,16 +42,17 @@ def test_two_types_integrated_a_different_number_of_times_are_not_audited_togeth
 @pytest.mark.dem
 @pytest.mark.parametrize("group", ["group two id 2", "region r block 0.4 0.6 -0.1 0.1 -0.1 0.1\ngroup two region r"],
                          ids=["by id", "by region"])
-def test_a_second_integrator_on_a_group_the_audit_cannot_type_leaves_its_pairs_out(tmp_path, group):
+@pytest.mark.parametrize("second", ["nve/sphere", "move linear -0.1 0 0"])
+def test_a_second_integrator_on_a_group_the_audit_cannot_type_leaves_its_pairs_out(tmp_path, group, second):
     """Field round 32, F13 F16 F21 (LIGGGHTS L11): fix nve/sphere on all and a second on a group made
     by ID or region, which the audit cannot type: the pair was printed with the untyped group's note
     ('a sphere outside the group never moves'), while the group's spheres are advanced twice a step
-    (LAMMPS 0.323422 where one integrator gives 0.413435). Every pair of a type both may integrate is
-    left out with the reason."""
+    (LAMMPS 0.323422 where one integrator gives 0.413435); I05, fix move linear on lv2 beside the
+    integrator: LAMMPS 0.465219. Every pair of a type both may move is left out with the reason."""
     deck = lammps_spheres((0.01, 2500.0), (0.01, 2500.0)).replace("fix integrate all nve/sphere\n", "")
-    (tmp_path / "in.deck").write_text(deck + LINE + f"\n{group}\nfix 1 all nve/sphere\nfix 2 two nve/sphere\n"
+    (tmp_path / "in.deck").write_text(deck + LINE + f"\n{group}\nfix 1 all nve/sphere\nfix 2 two {second}\n"
                                       "timestep 1e-6\nrun 100\n")
     got, err = audit(tmp_path / "in.deck", "--g", "1")
     assert got["pairs"] == [], got["pairs"]
-    assert "types 1 2: fix 1 (group all), fix 2 (group two) may each integrate type 1's spheres" in err, err
+    assert "types 1 2: fix 1 (group all), fix 2 (group two) may each move type 1's spheres" in err, err
     assert "advanced twice a step" in err

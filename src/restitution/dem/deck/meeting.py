@@ -390,15 +390,16 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
     if (body := _in_body(deck, t)) is not None:
         return "unknown", body
     integrated, moved = [], []
-    # integrators that may hold type t, one of them on a group the audit cannot type: a sphere in
-    # two of them is advanced twice a step (field round 32, F13: fix nve/sphere on all and on lv2, by
-    # ID: 0.414916 printed with the untyped group's note, LAMMPS 0.323422, LIGGGHTS 0.386151)
+    # moving fixes that may hold type t, one of them on a group the audit cannot type: a sphere in
+    # two of them is advanced twice a step, or moved and integrated (field round 32, F13: fix
+    # nve/sphere on all and on lv2, by ID: 0.414916 printed with the untyped group's note, LAMMPS
+    # 0.323422, LIGGGHTS 0.386151; I05, fix move linear on lv2: LAMMPS 0.465219)
     maybe = [(fix, group, held) for fix, (_, line, group, style) in deck.movers.items()
-             if not rigid(style) and _integrates(line) and ((held := group_types(deck, group)) is None or t in held)]
+             if not rigid(style) and ((held := group_types(deck, group)) is None or t in held)]
     if len(maybe) > 1 and any(held is None for _, _, held in maybe):
         named = ", ".join(f"fix {fix} (group {group})" for fix, group, _ in maybe)
-        return "unknown", (f"{named} may each integrate type {t}'s spheres, a group among them the audit cannot "
-                           "type: a sphere in two of them is advanced twice a step, and its eps differs")
+        return "unknown", (f"{named} may each move type {t}'s spheres, a group among them the audit cannot type: "
+                           "a sphere in two of them is advanced twice a step, and its eps differs")
     for fix, (loc, line, group, style) in deck.movers.items():
         if rigid(style):
             continue
