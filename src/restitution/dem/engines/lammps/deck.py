@@ -395,19 +395,19 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
         raise DeckError("pair_coeff", f"types {i} {j}", f"no pair_coeff line covers this type pair{mix}{why}: LAMMPS "
                                                          "stops (all pair coeffs are not set)")
     # after a read_restart (its granular style not given again) LAMMPS' lists and ghost atoms reach
-    # nothing: one bin takes every pair inside the box by its radii, but no ghost atom stands for a
-    # sphere across a periodic boundary (field round 32, R04: 8.094838 where the pair meets across
-    # one, 0.414679 with pair_style granular given again after the read; RP05, gran/hooke/history:
-    # 0.483961, given again 0.414679)
-    restored = deck.restored_cut and _largest_cutoff(deck) == 0
-    if restored and deck.periodic:
+    # nothing: it bins the box by its extent along x and looks in one bin, and no ghost atom stands
+    # for a sphere across a periodic boundary (field round 32, R04: 8.094838 where the pair meets
+    # across one, 0.414679 with pair_style granular given again after the read; RZ03, a pair along z
+    # in an f f f box whose centres lie in two bins: 8.228907; RP05, gran/hooke/history: 0.483961).
+    # An nsq list, which has no bins, takes every pair inside a box with no periodic boundary
+    if deck.restored_cut and _largest_cutoff(deck) == 0 and (deck.periodic or deck.neighbor_style != "nsq"):
         style = deck.style_line[1].split()[1]
         raise PairNotMapped(deck.style_line[0], deck.style_line[1],
                             f"types {i} {j}: after read_restart LAMMPS holds pair_style {style} with no cutoff (the "
                             f"deck does not give pair_style {style} again; LAMMPS: 'Communication cutoff is 0.0'): "
-                            "inside the box it finds the pair at first touch, but it makes no ghost atoms, so "
-                            "across a periodic boundary it finds the pair late in overlap or never; give "
-                            f"pair_style {style} again after the read")
+                            "it makes no ghost atoms and looks for partners in one bin only, so a pair whose "
+                            "spheres lie in two bins or across a periodic boundary is found late in overlap or "
+                            f"never; give pair_style {style} again after the read")
     # under a hybrid style of several granular sub-styles, the one that gives this pair its force
     older = _older_or_granular(deck, i, j) if deck.granular_of else bool(deck.gran)
     if older:
@@ -439,7 +439,7 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     cutoff = c.cutoff if c.cutoff is not None else deck.cutoff
     skin = deck.skin if deck.skin is not None else DEFAULT_SKIN.get(deck.units or "lj", 0.0)
     nsq = deck.neighbor_style == "nsq"
-    if not restored and cutoff is not None and _largest_cutoff(deck) + skin < pair.R1 + pair.R2 \
+    if cutoff is not None and _largest_cutoff(deck) + skin < pair.R1 + pair.R2 \
             and (deck.periodic or not nsq):
         # LAMMPS' lists reach the largest cutoff and the skin, its bins perhaps further: spheres
         # that reach each other may first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005:
