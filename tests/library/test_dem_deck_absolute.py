@@ -111,3 +111,17 @@ def test_a_file_above_the_folder_named_with_two_spaces_is_included(tmp_path):
     (row,) = got["pairs"]
     assert row["typed_e"] == 0.7
     agrees_with_lammps(got["pairs"], {1: (0.002, 2500.0)}, LINE, 1)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_name_that_climbs_back_into_the_folder_is_read_there(tmp_path):
+    """include "sub dir/../k  k.in" names a file of the deck's own folder: read as one word, its ..
+    was taken for a climb out of the folder and the deck refused (field round 32, Q18)."""
+    (tmp_path / "sub dir").mkdir()
+    (tmp_path / "k  k.in").write_text(LINE + "\n")
+    (tmp_path / "in.deck").write_text(lammps_spheres((0.004, 2500.0)) + 'include "sub dir/../k  k.in"\n'
+                                      "timestep 1e-6\nrun 10\n")
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    (row,) = got["pairs"]
+    assert row["typed_e"] == 0.7

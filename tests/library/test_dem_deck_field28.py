@@ -207,3 +207,39 @@ def test_a_sphere_grown_to_a_size_a_pour_made_before_pre_no_leaves_its_pairs_out
     got, err = audit(tmp_path / "in.deck", "--g", "1")
     assert [1, 2] not in [r["types"] for r in got["stages"][-1]["pairs"]], got["stages"][-1]["pairs"]
     assert "pre no after type 2 came to hold spheres larger" in err, err
+
+
+#: Round 28's Q58 (the sweep of session 25 found it still printed): two 4 mm type-1 spheres meeting
+#: at 1 m/s; cutoff 0.001 on every pair, then pair 1 1 given again without it before run pre no
+Q58 = """units si
+atom_style sphere 1
+boundary p p f
+comm_modify vel yes
+region box block 0 0.04 0 0.04 0 0.1 units box
+create_box 2 box
+pair_style granular
+pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 cutoff 0.001
+fix integ all nve/sphere
+timestep 1e-6
+create_atoms 1 single 0.01745 0.02 0.05
+create_atoms 1 single 0.02255 0.02 0.05
+set type 1 diameter 0.004 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.5
+set atom 2 vx -0.5
+run 1000
+pair_coeff 1 1 hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
+run 3000 pre no
+"""
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_pre_no_after_a_like_pairs_cutoff_changed_is_refused(tmp_path):
+    """A like pair's own cutoff is read into the lists' reach at a set-up only: with pre no LAMMPS
+    keeps the short lists and finds the pair late (measured below; round 28 Q58: -0.507), where the
+    audit printed the new law's 0.497262. Refused in one line, as for any setting pre no leaves."""
+    (tmp_path / "in.deck").write_text(Q58)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and "pre no after a contact setting changed" in err, (out, err)
+    assert abs(abs(lammps_separation_speed(Q58, tmp_path)) - 0.4973) > 0.05

@@ -110,6 +110,11 @@ _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "l
                                   "unfix", "timestep", "velocity", "displace_atoms", "change_box", "region",
                                   "reset_timestep", "special_bonds", "partition", "comm_modify", "dimension",
                                   "suffix", "package", "kspace_style", "run_style"})
+#: Commands after which LAMMPS makes its ghost atoms anew (pbc, exchange, borders) without building
+#: its neighbour lists: a run with pre no then uses lists that index the old ghosts (field round 32,
+#: PB20: displace_atoms all move 0 0 0, then run pre no: 3.005689 where the pair meets across the
+#: periodic boundary; change_box to the same box, balance: alike; LIGGGHTS 3.8.0 met it in time)
+_REGHOSTING = {"displace_atoms", "change_box", "balance", "comm_style"}
 #: Fixes that insert atoms as the run goes, into their own group (and all); LAMMPS' pour and
 #: deposit name the atoms' type (fix ID group pour|deposit N type ...), LIGGGHTS' take theirs from
 #: particle templates
@@ -235,6 +240,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                                                       "lacks them: not audited")
         if split[:1] == ["set"] and "diameter" in split[3:]:
             deck.diameters_set = True  # a fix adapt resizes them again at the next set-up (_adapted_late)
+        if split and split[0] in _REGHOSTING:
+            deck.reghosted = (place(cmd.loc), cmd.text)
         if not split or split[0] in _ENGINE_ONLY:
             continue
         halting = halting or split[0] == "fix" and len(split) > 3 and split[3] == "halt"
@@ -1139,8 +1146,13 @@ def set_up_key(deck: Deck) -> str:
     # as the units' default is no change (field round 29, Q28: neighbor 0.001 bin in si refused, Q29
     # nsq: without a cutoff the lists built at the last set-up hold every contact, LAMMPS met the pair)
     skin = deck.skin if deck.skin is not None else DEFAULT_SKIN.get(deck.units or "lj")
+    # a like pair's own cutoff is read into the lists' reach at the set-up only (field round 28, Q58:
+    # pair_coeff 1 1 given again without its cutoff 0.001 before pre no: LAMMPS kept the short lists
+    # and met the pair late, -0.507, where its new law was printed)
+    own_cut = sorted((k[0], next((w[n + 1] for n in range(len(w) - 1) if w[n] == "cutoff"), None))
+                     for k, (_, w) in deck.coeffs.items() if k[0] == k[1])
     return repr((deck.code, deck.style, deck.model, deck.limit_force, deck.absolute_damping, deck.gran,
-                 (skin, deck.neighbor_style) if _cut(deck) else None,
+                 (skin, deck.neighbor_style, own_cut) if _cut(deck) else None,
                  sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1]),
                  sorted((k, repr(v)) for k, (_, v) in deck.props.items()),
                  [(w, t) for _, w, t in deck.walls], repr(deck.meshes), [w for _, w in deck.beside],
@@ -1188,8 +1200,11 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
         # a grown type's pairs are left out (walls use no list, other pairs are met as set up)
         stale = set(_grown(deck, radii)) | _changed_atoms(deck)
         deck.stale = {**deck.stale, **{t: (where, line) for t in sorted(stale)}}
+        if deck.reghosted and deck.periodic and deck.code != "LIGGGHTS":
+            deck.ghosts_stale = deck.reghosted
         return
     deck.set_up, deck.set_up_radii, deck.set_up_own, deck.stale = key, radii, own, {}
+    deck.reghosted = deck.ghosts_stale = ()
     deck.set_up_seen = deck.seen
 
 
@@ -1333,7 +1348,7 @@ def contact_key(deck: Deck) -> str:
                        # or not): a first run's once yes or long delay said nothing of a later run's
                        # contacts (field round 28, N41, N47, N48: no eps, LAMMPS met the pair at first touch)
                        deck.neigh,
-                       sorted(deck.stale),
+                       sorted(deck.stale), deck.ghosts_stale,
                        # a velocity given to atoms no fix moves is read by their contacts' damping (field
                        # round 17: a velocity command between two runs of one stage was not seen)
                        sorted({g for _, _, g in deck.velocities}

@@ -962,8 +962,10 @@ def _outside(name: str, scratch: Scratch) -> bool:
     name = name.strip("\"'")
     if os.path.isabs(name) and Path(name).is_relative_to(scratch.root):
         return False          # a copy the scratch made (of a file named by an absolute path)
-    return "$" not in name and (os.path.isabs(name) or ".." in Path(name).parts
-                                and os.path.normpath(name) not in scratch.mirrored)
+    norm = os.path.normpath(name)
+    # (a name that climbs back into the folder, "sub dir/../k.in", stays in the copy: field round 32, Q18)
+    return "$" not in name and (os.path.isabs(name) or (norm == ".." or norm.startswith("../"))
+                                and norm not in scratch.mirrored)
 
 
 def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:

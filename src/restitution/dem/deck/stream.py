@@ -14,7 +14,7 @@ import math
 import os
 import re
 from collections import Counter
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, STAGE_LABEL, UNSET, Scratch, normalised
@@ -293,7 +293,17 @@ def deck_commands(commands: list, scratch: Scratch) -> list:
     ...                                 Executed((None, 4), "fix 2 all viscous 0.0")], s)]
     ['fix 1 all nve/sphere']
     """
-    return [cmd for cmd in commands if (cmd.loc, cmd.text) not in scratch.silenced]
+    out = []
+    for cmd in commands:
+        if (cmd.loc, cmd.text) in scratch.silenced:
+            continue
+        mark = _SKIPPED.fullmatch(cmd.text)
+        if mark and scratch.skipped[int(mark.group(1))][0] == "balance":
+            # never run in the pass (it may write a file), yet it makes LAMMPS' ghost atoms anew
+            # (reader._REGHOSTING): read as the deck's own command
+            cmd = replace(cmd, text=scratch.skipped[int(mark.group(1))][2])
+        out.append(cmd)
+    return out
 
 
 def skipped(commands: list, scratch: Scratch) -> dict:

@@ -254,6 +254,12 @@ class Deck:
     # type -> (where, line) of a run with pre no after its atoms grew: the neighbour lists hold its
     # smaller radii till their next build, so its pairs are not audited in that run
     stale: dict = field(default_factory=dict)
+    # (where, line) of the last command since the last set-up that made LAMMPS' ghost atoms anew
+    # (displace_atoms, change_box, balance, comm_style), and of the one a run with pre no met: lists
+    # built before it hold ghost atoms' old indices, so in a periodic box a pair across the boundary
+    # is found late (field round 32, PB20)
+    reghosted: tuple = ()
+    ghosts_stale: tuple = ()
     # the atoms the engine held at the last run read, and at the last run set up (each an
     # engine's snapshot: {type: sizes}, with each atom's type and radius by ID where known)
     seen: dict | None = None
