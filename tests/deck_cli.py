@@ -102,6 +102,30 @@ def lammps_spheres(*spheres) -> str:
     return "\n".join([*lines, "fix integrate all nve/sphere", "pair_style granular"]) + "\n"
 
 
+
+#: Two spheres (4 mm type 1, 6 mm type 2, 2500 kg/m3) 4.1 mm short of meeting at 1 m/s across the
+#: periodic x face of a p p f box, kn 2000, 586 steps per contact at dt 1e-6: the deck's first run
+#: (1000 steps) leaves them 3.1 mm apart, so they meet in the next
+PERIODIC_PAIR = """units si
+atom_style sphere 1
+boundary p p f
+comm_modify vel yes
+region box block 0 0.04 0 0.04 0 0.1 units box
+create_box 2 box
+pair_style granular
+pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
+fix move all nve/sphere
+timestep 1e-6
+create_atoms 1 single 0.03745 0.02 0.05
+create_atoms 2 single 0.00355 0.02 0.05
+set atom 1 diameter 0.004 density 2500
+set atom 2 diameter 0.006 density 2500
+velocity all set 0 0 0
+set atom 1 vx 0.7714285714
+set atom 2 vx -0.2285714286
+run 1000
+"""
+
 def lammps_pour(line: str, ntypes: int = 1, sphere: tuple | None = (1, 0.01, 2500.0), dynamic: bool = False) -> str:
     """A LAMMPS deck's start in SI units with a pour: one sphere of type sphere[0] (diameter, density
     sphere[1:]) at the floor of a 0.1 x 0.1 x 0.2 box (None: no atom but those poured), the contact

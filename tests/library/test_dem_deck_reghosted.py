@@ -10,31 +10,9 @@ import json
 
 import pytest
 
-from deck_cli import audited_and_measured, lammps_separation_speed, needs_lammps, run
+from deck_cli import PERIODIC_PAIR, audited_and_measured, lammps_separation_speed, needs_lammps, run
 
-#: two spheres (4 mm type 1, 6 mm type 2) meeting at 1 m/s across the periodic x face in the
-#: second run, 586 steps per contact
-ACROSS = """units si
-atom_style sphere 1
-boundary p p f
-comm_modify vel yes
-region box block 0 0.04 0 0.04 0 0.1 units box
-create_box 2 box
-pair_style granular
-pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
-fix move all nve/sphere
-timestep 1e-6
-create_atoms 1 single 0.03745 0.02 0.05
-create_atoms 2 single 0.00355 0.02 0.05
-set atom 1 diameter 0.004 density 2500
-set atom 2 diameter 0.006 density 2500
-velocity all set 0 0 0
-set atom 1 vx 0.7714285714
-set atom 2 vx -0.2285714286
-run 1000
-{between}
-run 3000{pre}
-"""
+ACROSS = PERIODIC_PAIR + "{between}\nrun 3000{pre}\n"
 
 BETWEEN = ["displace_atoms all move 0 0 0 units box", "change_box all x final 0 0.04 units box",
            "balance 1.0 x uniform"]

@@ -15,7 +15,7 @@ from pathlib import Path
 
 import pytest
 
-from deck_cli import audited_and_measured, lammps_separation_speed, needs_lammps, run
+from deck_cli import PERIODIC_PAIR, audited_and_measured, lammps_separation_speed, needs_lammps, run
 from restitution.dem.contact import Contact
 from restitution.dem.engines.lammps import run as lammps_run
 
@@ -151,31 +151,8 @@ def test_a_restart_written_to_an_absolute_path_is_redirected_into_the_scratch(tm
     _as_through_restart(tmp_path, json.loads(out)["pairs"])
 
 
-ACROSS = """units si
-atom_style sphere 1
-boundary p p f
-comm_modify vel yes
-region box block 0 0.04 0 0.04 0 0.1 units box
-create_box 2 box
-pair_style granular
-pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3
-fix move all nve/sphere
-timestep 1e-6
-create_atoms 1 single 0.03745 0.02 0.05
-create_atoms 2 single 0.00355 0.02 0.05
-set atom 1 diameter 0.004 density 2500
-set atom 2 diameter 0.006 density 2500
-velocity all set 0 0 0
-set atom 1 vx 0.7714285714
-set atom 2 vx -0.2285714286
-run 1000
-write_restart across.restart
-clear
-read_restart across.restart
-{again}comm_modify vel yes
-fix move all nve/sphere
-run 3000
-"""
+ACROSS = PERIODIC_PAIR + ("write_restart across.restart\nclear\nread_restart across.restart\n{again}"
+                          "comm_modify vel yes\nfix move all nve/sphere\nrun 3000\n")
 
 
 #: the same law as LAMMPS' older style (kn 2000, damping 3000 of the relative velocity; no friction)
