@@ -196,6 +196,58 @@ E("G21_every_comm_style_pre_no", "run 4000 pre no every 1000 \"comm_style brick\
 for n in ("G18_every_change_box_pre_no", "G21_every_comm_style_pre_no"):
     p.LIVE[n] = "part 2"
 
+# ============================================================ wave 4: the global cutoff given again; balance inside run every
+E("C09_global_cutoff_big_to_small_coeff_regiven", "C07 with pair_coeff * * given again after pair_style granular 0.001", "run 1000\n" + PSG(0.001) + "pair_coeff * * " + HK + "\nrun 3000\n", gap=g11, pre=GCUT(0.02))
+E("C10_coeff_cutoff_big_to_small", "pair_coeff * * ... cutoff 0.02; run 1000; pair_coeff * * ... cutoff 0.001; run 3000", "run 1000\npair_coeff * * " + HK + " cutoff 0.001\nrun 3000\n", gap=g11,
+  pre=BL(HK + " cutoff 0.02"))
+E("C11_global_cutoff_big_to_small_periodic", "C07 with the pair across the periodic x boundary", "run 1000\n" + PSG(0.001) + "run 3000\n", gap=g11, pre=GCUT(0.02), pair=PER(g11))
+E("C12_global_cutoff_big_to_small_in_include", "C07 with pair_style granular 0.001 in an include", "run 1000\ninclude c.in\nrun 3000\n", gap=g11, pre=GCUT(0.02), data={"c.in": PSG(0.001)})
+E("C13_global_cutoff_big_to_none", "pair_style granular 0.02; run 1000; pair_style granular (no cutoff: from the radii); run 3000", "run 1000\n" + PSG("") + "run 3000\n", gap=g11, pre=GCUT(0.02))
+E("C14_global_cutoff_first_stage_big_to_small_nsq_fff", "C07 in an f f f box with neighbor 0.001 nsq (no bins: every pair listed)", "neighbor 0.001 nsq\nrun 1000\n" + PSG(0.001) + "run 3000\n", gap=g11, pre=FFF(GCUT(0.02)))
+E("G22_every_balance_no_pre_no", "G07 without pre no (every part set up: right)", 'run 4000 every 1000 "balance 1.0 x uniform"\n', gap=g11, pair=PER(g11))
+E("G23_every_include_balance_pre_no", "run 4000 pre no every 1000 \"include b.in\" (balance in the file)", 'run 4000 pre no every 1000 "include b.in"\n', gap=g11, pair=PER(g11), data={"b.in": "balance 1.0 x uniform\n"})
+E("G24_every_balance_shift_pre_no", "run 4000 pre no every 1000 \"balance 1.1 shift x 5 1.05\"", 'run 4000 pre no every 1000 "balance 1.1 shift x 5 1.05"\n', gap=g11, pair=PER(g11))
+E("G25_every_balance_inside_box_pre_no", "G07 with the pair inside the box (LAMMPS: on time? conservative if left out)", 'run 4000 pre no every 1000 "balance 1.0 x uniform"\n', gap=g11)
+for n in ("G22_every_balance_no_pre_no", "G23_every_include_balance_pre_no", "G24_every_balance_shift_pre_no", "G25_every_balance_inside_box_pre_no"):
+    p.LIVE[n] = "part 2"
+
+# ============================================================ wave 5
+E("G26_read_dump_pre_no", "run 1000; write_dump all custom d.dump id type x y z vx vy vz; read_dump d.dump 1000 x y z vx vy vz; run 3000 pre no (pair across the boundary)",
+  "run 1000\nwrite_dump all custom d.dump id type x y z vx vy vz\nread_dump d.dump 1000 x y z vx vy vz\nrun 3000 pre no\n", gap=g11, pair=PER(g11))
+E("G27_reset_atoms_image_pre_no", "run 1000; reset_atoms image all; run 3000 pre no (pair across the boundary)", "run 1000\nreset_atoms image all\nrun 3000 pre no\n", gap=g11, pair=PER(g11))
+E("R24_restart_nsq_between_clear_and_read_fff", "f f f, vertical pair across z = 0.05; write_restart; clear; neighbor 0.001 nsq; read_restart (LAMMPS keeps nsq)",
+  "run 1000\nwrite_restart a.rst\nclear\nneighbor 0.001 nsq\nread_restart a.rst\ncomm_modify vel yes\n" + FIX + "run 3000\n", gap=g11, pair=VZ(g11, zc=0.05), pre=FFF(BL()))
+z("R24_restart_nsq_between_clear_and_read_fff")
+E("R25_restart_bin_between_clear_and_read_nsq_before", "f f f, vertical pair across z = 0.05; neighbor 0.001 nsq; write_restart; clear; neighbor 0.001 bin; read_restart",
+  "neighbor 0.001 nsq\nrun 1000\nwrite_restart a.rst\nclear\nneighbor 0.001 bin\nread_restart a.rst\ncomm_modify vel yes\n" + FIX + "run 3000\n", gap=g11, pair=VZ(g11, zc=0.05), pre=FFF(BL()))
+z("R25_restart_bin_between_clear_and_read_nsq_before")
+E("M15_lv1_made_type3_group_retyped_integ2", "3 types; lv1 made type 3; group g type 3; set atom 1 type 1; fix i2 g nve/sphere (lv1 stepped twice)",
+  "group g type 3\nset atom 1 type 1\nfix i2 g nve/sphere\nrun 3000\n", gap=0.1e-3, pre=B3, pair=p.lv(0.1e-3, 3, 2))
+
+# ============================================================ wave 6: other fixes that act on the motion
+E("M16_damping_cundall_all", "fix damping/cundall all 0.3 0.3 (Cundall's local damping, a DEM modeller's settling aid) left on in the meeting run",
+  "fix cd all damping/cundall 0.3 0.3\nrun 3000\n", gap=0.1e-3)
+E("M17_nvk_lv2", "fix nvk on lv2 beside nve/sphere on all", "fix k2 lv2 nvk\nrun 3000\n", gap=0.1e-3)
+E("M18_nvk_type2_group", "fix nvk on group t2 (type 2) beside nve/sphere on all", "group t2 type 2\nfix k2 t2 nvk\nrun 3000\n", gap=0.1e-3)
+E("M19_damping_cundall_settle_then_unfix", "modeller: damping/cundall during a settling run 1000, unfixed before the meeting run 3000 (right)",
+  "fix cd all damping/cundall 0.3 0.3\nrun 1000\nunfix cd\nrun 3000\n", gap=g11)
+
+# ============================================================ wave 7: the global cutoff given again after a restart
+E("R26_restart_cutoff_big_then_small_given", "pair_style granular 0.02; restart; pair_style granular 0.001 given after the read (its coefficients kept); run",
+  RS(after=PSG(0.001)), gap=g11, pre=GCUT(0.02))
+E("R27_restart_cutoff_small_then_big_given", "pair_style granular 0.001 (pair 1.1 mm apart at the write); restart; pair_style granular 0.02 given after the read; run",
+  RS(after=PSG(0.02)), gap=g11, pre=GCUT(0.001))
+E("R28_restart_plain_then_small_given", "pair_style granular; restart; pair_style granular 0.001 given after the read; run", RS(after=PSG(0.001)), gap=g11)
+
+# ============================================================ wave 8: the same older style given again with other settings
+GHH = p32.GHH
+E("C15_gran_hooke_history_regiven_kn5000", "pair_style gran/hooke/history 2000 ...; run 1000; pair_style gran/hooke/history 5000 NULL 3000 NULL 0.3 0 (same style, new kn); run 3000",
+  "run 1000\npair_style gran/hooke/history 5000 NULL 3000 NULL 0.3 0\nrun 3000\n", gap=g11, pre=GHH)
+E("C16_granular_regiven_then_coeff_cutoff_nsq", "pair_style granular 0.02; run 1000; pair_style granular 0.001; neighbor 0.001 nsq (p p f box); run 3000", "run 1000\n" + PSG(0.001) + "neighbor 0.001 nsq\nrun 3000\n",
+  gap=g11, pre=GCUT(0.02))
+E("C17_global_cutoff_big_to_small_every", "pair_style granular 0.02; run 4000 every 1000 \"pair_style granular 0.001\" (meets in part 2)", 'run 4000 every 1000 "pair_style granular 0.001"\n', gap=g11, pre=GCUT(0.02))
+p.LIVE["C17_global_cutoff_big_to_small_every"] = "part 2"
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
