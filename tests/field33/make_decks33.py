@@ -248,6 +248,13 @@ E("C16_granular_regiven_then_coeff_cutoff_nsq", "pair_style granular 0.02; run 1
 E("C17_global_cutoff_big_to_small_every", "pair_style granular 0.02; run 4000 every 1000 \"pair_style granular 0.001\" (meets in part 2)", 'run 4000 every 1000 "pair_style granular 0.001"\n', gap=g11, pre=GCUT(0.02))
 p.LIVE["C17_global_cutoff_big_to_small_every"] = "part 2"
 
+# ============================================================ wave 9: a like pair's own cutoff before pre no (round 32's answer to Q58)
+BC = BL(HK + " cutoff 0.02")
+E("K01_like_cutoff_same_pre_no", "pair_coeff * * ... cutoff 0.02; run 1000; pair_coeff 1 1 ... cutoff 0.02 again (unchanged); run 3000 pre no", "run 1000\npair_coeff 1 1 " + HK + " cutoff 0.02\nrun 3000 pre no\n", gap=g11, pre=BC)
+E("K02_like_kn_changed_same_cutoff_pre_no", "K01 with pair_coeff 1 1 kn 5000 (a like pair's law; the live pair 1 2 has its own line)", "run 1000\npair_coeff 1 1 " + hk(5000) + " cutoff 0.02\nrun 3000 pre no\n", gap=g11, pre=BC)
+E("K03_like_cutoff_small_pre_no", "K01 with pair_coeff 2 2 ... cutoff 0.001 (others keep 0.02)", "run 1000\npair_coeff 2 2 " + HK + " cutoff 0.001\nrun 3000 pre no\n", gap=g11, pre=BC)
+E("K04_like_cutoff_small_no_pre_no", "K03 without pre no (the other pairs' 0.02 keep the lists' reach)", "run 1000\npair_coeff 2 2 " + HK + " cutoff 0.001\nrun 3000\n", gap=g11, pre=BC)
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
