@@ -255,6 +255,12 @@ E("K02_like_kn_changed_same_cutoff_pre_no", "K01 with pair_coeff 1 1 kn 5000 (a 
 E("K03_like_cutoff_small_pre_no", "K01 with pair_coeff 2 2 ... cutoff 0.001 (others keep 0.02)", "run 1000\npair_coeff 2 2 " + HK + " cutoff 0.001\nrun 3000 pre no\n", gap=g11, pre=BC)
 E("K04_like_cutoff_small_no_pre_no", "K03 without pre no (the other pairs' 0.02 keep the lists' reach)", "run 1000\npair_coeff 2 2 " + HK + " cutoff 0.001\nrun 3000\n", gap=g11, pre=BC)
 
+# ============================================================ wave 10: LIGGGHTS analogue of SW-PE
+m.L("G28_lig_every_balance_pre_no", LPB().replace("run 3000\n", 'run 4000 pre no every 1000 "balance x uniform"\n'), g=1)
+p.LIVE["G28_lig_every_balance_pre_no"] = "part 2"
+m.L("G29_lig_balance_pre_no", LPB().replace("run 3000\n", "run 1000\nbalance x uniform\nrun 3000 pre no\n"), g=1)
+p.LIVE["G29_lig_balance_pre_no"] = "last run"
+
 
 def write_all(names):
     m.write_live(names, p.LIVE, p.EXTRA)
