@@ -35,3 +35,20 @@ def test_pre_no_after_the_ghost_atoms_are_made_anew_leaves_the_pairs_out(tmp_pat
 def test_without_pre_no_the_run_is_set_up_and_audited(tmp_path):
     printed, engine, err = audited_and_measured(ACROSS.format(between=BETWEEN[0], pre=""), tmp_path)
     assert abs(printed - abs(engine)) < 0.004, (printed, engine, err)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_balance_between_the_parts_of_a_run_with_pre_no_leaves_the_pairs_out(tmp_path):
+    """Field round 33, G07 G24: balance among a run every's commands, pre no: never run in the pass
+    (it may write a file), so the run was kept whole and printed 0.414916; LAMMPS sets up the first
+    part only and meets the pair late in a later one (3.005689). The run is now split, balance read
+    from its no-op, and the later parts' pairs are left out."""
+    deck = PERIODIC_PAIR + 'run 3000 pre no every 50 "balance 1.0 x uniform"\n'
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
+    assert status == 0, err
+    assert json.loads(out)["pairs"] == [], out
+    assert "(balance 1.0 x uniform): a run with pre no after it made the ghost atoms anew" in err, err
+    assert abs(abs(lammps_separation_speed(deck, tmp_path)) - 0.4149) > 0.05
+

@@ -1152,7 +1152,7 @@ def set_up_key(deck: Deck) -> str:
     own_cut = sorted((k[0], next((w[n + 1] for n in range(len(w) - 1) if w[n] == "cutoff"), None))
                      for k, (_, w) in deck.coeffs.items() if k[0] == k[1])
     return repr((deck.code, deck.style, deck.model, deck.limit_force, deck.absolute_damping, deck.gran,
-                 (skin, deck.neighbor_style, own_cut) if _cut(deck) else None,
+                 (skin, deck.neighbor_style, own_cut, deck.cutoff) if _cut(deck) else None,
                  sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1]),
                  sorted((k, repr(v)) for k, (_, v) in deck.props.items()),
                  [(w, t) for _, w, t in deck.walls], repr(deck.meshes), [w for _, w in deck.beside],
@@ -1343,7 +1343,10 @@ def contact_key(deck: Deck) -> str:
                        bool(deck.bonds), deck.special_lj, deck.dt_reset[1:],
                        # where a cutoff may leave a pair out, the lists' reach is the run's (field round
                        # 28, N19: a skin made small after the first run was audited with the first's)
-                       (deck.skin, deck.neighbor_style, deck.periodic, deck.restored_cut) if _cut(deck) else None,
+                       # and the global cutoff a pair_style granular given again sets (field round 33, C07:
+                       # 0.02, then 0.001 before the next run: one stage, audited with 0.02; LAMMPS 8.09)
+                       (deck.skin, deck.neighbor_style, deck.periodic, deck.restored_cut, deck.cutoff)
+                       if _cut(deck) else None,
                        # how often the lists are rebuilt is each run's own too, read at every step (pre no
                        # or not): a first run's once yes or long delay said nothing of a later run's
                        # contacts (field round 28, N41, N47, N48: no eps, LAMMPS met the pair at first touch)

@@ -895,7 +895,9 @@ def split_every(run: str) -> tuple[list[str], list[str]] | None:
     if any(key not in ("start", "stop", "pre", "post") for key in keywords[::2]):
         return None                 # upto (its steps counted from the step it starts at), or a typo
     firsts = [command.split()[0] if command.split() else "" for command in commands]
-    if not commands or all(first in SKIPPED_COMMANDS or first == "NULL" for first in firsts) \
+    # (balance, never run in the pass, makes LAMMPS' ghost atoms anew, which a part with pre no after
+    # it does not see: the reader reads it from its no-op, field round 33, G07)
+    if not commands or all(first in SKIPPED_COMMANDS and first != "balance" or first == "NULL" for first in firsts) \
             or any(first in _UNSPLIT or not first for first in firsts) \
             or any(_in_run(command) for command in commands):
         return None
