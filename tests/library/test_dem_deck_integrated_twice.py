@@ -56,3 +56,21 @@ def test_a_second_integrator_on_a_group_the_audit_cannot_type_leaves_its_pairs_o
     assert got["pairs"] == [], got["pairs"]
     assert "types 1 2: fix 1 (group all), fix 2 (group two) may each move type 1's spheres" in err, err
     assert "advanced twice a step" in err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("grown", [False, True], ids=["apart", "lid grown after"])
+def test_groups_made_apart_by_subtract_are_moved_once_each(tmp_path, grown):
+    """Field round 33, M12 (a modeller's lid): a lid picked by region and moved by fix move, the rest
+    integrated as ``group mobile subtract all lid``: no sphere is in both, and LAMMPS meets the pair
+    as one integrator gives (0.413435), where the audit left every pair out. A group command that
+    adds to the lid afterwards may put a mobile sphere in it: left out again."""
+    deck = lammps_spheres((0.01, 2500.0), (0.01, 2500.0)).replace("fix integrate all nve/sphere\n", "")
+    deck += (LINE + "\nregion top block -0.1 0.1 -0.1 0.1 0.5 0.6\ngroup lid region top\n"
+             "group mobile subtract all lid\n" + ("group lid type 1\n" if grown else "")
+             + "fix 1 mobile nve/sphere\nfix 2 lid move linear 0 0 0\ntimestep 1e-6\nrun 100\n")
+    (tmp_path / "in.deck").write_text(deck)
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    assert ([1, 2] in [r["types"] for r in got["pairs"]]) is not grown, (got["pairs"], err)
+    assert ("may each move type 1's spheres" in err) is grown, err

@@ -337,3 +337,15 @@ run 100
     assert first["pairs"] == [] and "no fix integrates type 1" in err
     (row,) = [p for p in last["pairs"] if p["types"] == [1, 1]]
     assert row["eps"][0] == pytest.approx(0.6, abs=1e-9) and "cannot type" in err
+
+
+@needs_liggghts
+@pytest.mark.parametrize("command", ["balance 1.0 x uniform", "timer timeout 0 every 1", "write_coeff c.txt"])
+def test_a_command_liggghts_does_not_have_stops_the_deck_as_it_stops_liggghts(tmp_path, command):
+    """Field round 33, G28 G29: balance, a no-op in the audit's pass (it may write a file), was
+    answered where LIGGGHTS 3.8.0 stops ('Unknown command': it has none of these). Such a command is
+    left as written in LIGGGHTS' pass, which stops on it: refused in one line, in its words."""
+    status, out, err = deck(tmp_path, HEAD.format(e=0.5) + PLAIN + TAIL.replace("run 1\n", f"run 1\n{command}\nrun 1\n"))
+    assert status == 2 and out == "", out
+    assert err.strip().endswith(f"LIGGGHTS stops here: Unknown command: {command}"), err
+    assert "#restitution" not in err

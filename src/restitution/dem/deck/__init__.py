@@ -882,6 +882,8 @@ def _stopped(engine: str, message: str, commands: list, read: list = ()) -> str:
     ...                [((None, 5), 'if "$(count(all)) > 9" then "jump SELF d"')]))
     LAMMPS stopped here in the audit's pass, in which the runs before are skipped, so it holds not what they make of the atoms, the step and the values computed from them, and line 5 (if "$(count(all)) > 9" then "jump SELF d") read such a value before this, which decided the branches and values from there on: Invalid variable reference v_c in variable formula; the deck run by hand may not stop here, but what it reads here depends on its runs, which the audit does not make: not audited
     """
+    # (LIGGGHTS' "Unknown command" repeats the line as it read it, the audit's tag comment and all)
+    message = re.sub(r"\s*#restitution-[0-9a-f]+@\S*", "", message)
     if any(cause in message for cause in _CONFINED):
         return (f"{engine}, run by the audit where it may write only in its copy of the deck's folder and a stand-in "
                 f"of the folders outside it, stopped here: {message}; the deck run by hand may not stop here: "

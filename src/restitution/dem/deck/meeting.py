@@ -394,10 +394,13 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
     # two of them is advanced twice a step, or moved and integrated (field round 32, F13: fix
     # nve/sphere on all and on lv2, by ID: 0.414916 printed with the untyped group's note, LAMMPS
     # 0.323422, LIGGGHTS 0.386151; I05, fix move linear on lv2: LAMMPS 0.465219)
+    # Groups made apart by subtract share no sphere (round 33, M12: a lid moved, the rest integrated)
     maybe = [(fix, group, held) for fix, (_, line, group, style) in deck.movers.items()
              if not rigid(style) and ((held := group_types(deck, group)) is None or t in held)]
-    if len(maybe) > 1 and any(held is None for _, _, held in maybe):
-        named = ", ".join(f"fix {fix} (group {group})" for fix, group, _ in maybe)
+    both = [(a, b) for k, a in enumerate(maybe) for b in maybe[k + 1:]
+            if (a[2] is None or b[2] is None) and frozenset((a[1], b[1])) not in deck.disjoint]
+    if both:
+        named = ", ".join(f"fix {fix} (group {group})" for fix, group, _ in both[0])
         return "unknown", (f"{named} may each move type {t}'s spheres, a group among them the audit cannot type: "
                            "a sphere in two of them is advanced twice a step, and its eps differs")
     for fix, (loc, line, group, style) in deck.movers.items():

@@ -2453,6 +2453,9 @@ def _group(deck: Deck, words: list) -> None:
     """group ID type T ... (T, A:B or <> A B): the types a wall acts on. Groups of other styles
     (region, id, molecule, ...) have no types the reader can know: None. A second type line adds."""
     name, style, args = words[1], words[2], words[3:]
+    deck.disjoint = {pair for pair in deck.disjoint if name not in pair}
+    if style == "subtract" and len(args) > 1 and name not in deck.groups:
+        deck.disjoint |= {frozenset((name, other)) for other in args[1:] if other != name}
     if style in ("delete", "clear"):
         deck.groups.pop(name, None)
         deck.empty_groups.discard(name)

@@ -688,6 +688,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
     if "$" in word:
         # what it would run cannot be checked first: never run; the deck is refused if it reaches it
         return _labelled(scratch, scratch.dynamic, DYNAMIC, (loc, key), loc)
+    if word in getattr(marker, "unknown", ()):
+        return None             # a command the engine does not have: it stops there, as on the deck
     restart = getattr(marker, "restart", None)
     # a restart file (where the engine's marker reads restarts back) and a data file are written
     # into the copy: a later read_restart or read_data of them reads what the deck wrote
