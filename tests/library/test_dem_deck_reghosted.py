@@ -52,3 +52,13 @@ def test_balance_between_the_parts_of_a_run_with_pre_no_leaves_the_pairs_out(tmp
     assert "(balance 1.0 x uniform): a run with pre no after it made the ghost atoms anew" in err, err
     assert abs(abs(lammps_separation_speed(deck, tmp_path)) - 0.4149) > 0.05
 
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_balance_in_a_run_of_more_parts_than_the_pass_splits_is_refused(tmp_path):
+    """1500 parts (the pass splits at most MAX_PARTS): the run is kept whole, and balance, inert where
+    each part is set up again, is not under pre no: refused in one line, not printed."""
+    (tmp_path / "in.deck").write_text(PERIODIC_PAIR + 'run 3000 pre no every 2 "balance 1.0 x uniform"\n')
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and "run ... every runs balance between the run's parts" in err, (out, err)

@@ -951,9 +951,15 @@ def _run_every(words: list, where: str, line: str) -> str | None:
     may follow, field round 21, c28), else None."""
     if "every" not in words:
         return None
-    commands = words[words.index("every") + 2:]
+    at = words.index("every")
+    commands = words[at + 2:]
+    pre_no = any(words[k:k + 2] == ["pre", "no"] for k in range(2, at))
     for command in commands:
         first = _first_not_inert(command)
+        if first is None and pre_no and command.split()[:1] and command.split()[0] in _REGHOSTING:
+            # inert in a part set up again; with pre no the parts after the first keep lists that
+            # index the ghost atoms it made anew (a run of more parts than the pass splits: round 33, G07)
+            first = command.split()[0]
         if first is not None:
             raise DeckError(where, line, f"run ... every runs {first} between the run's parts, which may change the "
                                          "contact from the second part on, and the engine's pass never runs them "
