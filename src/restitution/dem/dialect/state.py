@@ -259,11 +259,11 @@ class Deck:
     # built before it hold ghost atoms' old indices, so in a periodic box a pair across the boundary
     # is found late (field round 32, PB20)
     reghosted: tuple = ()
+    ghosts_stale: tuple = ()
     # pairs of group IDs (frozensets) that share no atom: ``group A subtract B C`` makes A apart from
     # C; a later group command of either may add atoms to it, and ends the pair (field round 33,
     # M12: a lid by region moved by fix move beside nve/sphere on ``all`` minus the lid)
     disjoint: set = field(default_factory=set)
-    ghosts_stale: tuple = ()
     # the atoms the engine held at the last run read, and at the last run set up (each an
     # engine's snapshot: {type: sizes}, with each atom's type and radius by ID where known)
     seen: dict | None = None
