@@ -15,7 +15,8 @@ does :func:`logical_lines` with :func:`words`:
 
 from __future__ import annotations
 
-__all__ = ["ScriptError", "TRIPLE", "segments", "logical_lines", "strip_comment", "words", "written_words"]
+__all__ = ["ScriptError", "TRIPLE", "segments", "logical_lines", "strip_comment", "words", "written_words",
+           "if_branches"]
 
 #: LAMMPS' triple quote, which may span lines
 TRIPLE = '"""'
@@ -118,6 +119,41 @@ def words(line: str) -> list[str]:
     if '"' not in line and "'" not in line:
         return line.split()       # no quote: whitespace alone splits it (str.isspace's whitespace)
     return [line[start:end] for _, _, start, end in _spans(line)]
+
+
+def if_branches(parts: list) -> list[str] | None:
+    """The commands an ``if COND then C... [elif COND C...]... [else C...]`` may run, given its
+    words (:func:`words`): the words after ``then``, each ``elif``'s condition skipped, and after
+    ``else``. None where the words are not such an if.
+
+    Parameters
+    ----------
+    parts : list of str
+        The if's words, its quoted commands without their quotes.
+
+    Returns
+    -------
+    list of str or None
+
+    Examples
+    --------
+    >>> if_branches(words('if "${a} > 1" then "print x" "pair_coeff * * 1" elif "${a} < 0" quit else "run 1"'))
+    ['print x', 'pair_coeff * * 1', 'quit', 'run 1']
+    >>> if_branches(["if", "1"]) is None
+    True
+    """
+    if len(parts) < 4 or parts[0] != "if" or parts[2] != "then":
+        return None
+    branches, k = [], 3
+    while k < len(parts):
+        if parts[k] == "elif":
+            k += 2
+        elif parts[k] == "else":
+            k += 1
+        else:
+            branches.append(parts[k])
+            k += 1
+    return branches
 
 
 def written_words(line: str) -> list[str]:

@@ -22,7 +22,7 @@ from .stream import SEEDED
 from .runtime import boundary_faces, constant_in_time
 from ..dialect.state import (DEFAULT_SKIN, Deck, DeckError, atom_type, fetch, labelmap, number, number_or_none, place, pour_into,
                              type_pairs, types, unlabeled)
-from ..deck_text import ScriptError, words
+from ..deck_text import ScriptError, if_branches, words
 from ..engines import ENGINES
 from ..engines.lammps.deck import DEFAULT_DT
 
@@ -982,19 +982,8 @@ def _first_not_inert(command: str) -> str | None:
         return command
     if not parts or parts[0] in _INERT or parts[0] in ("NULL", "quit"):
         return None
-    if parts[0] != "if" or len(parts) < 4 or parts[2] != "then":
+    if (branches := if_branches(parts)) is None:
         return parts[0]
-    # if COND then C... [elif COND C...]... [else C...]: the words after then, elif's condition and
-    # else are branch commands
-    branches, k = [], 3
-    while k < len(parts):
-        if parts[k] == "elif":
-            k += 2
-        elif parts[k] == "else":
-            k += 1
-        else:
-            branches.append(parts[k])
-            k += 1
     return next((first for first in map(_first_not_inert, branches) if first is not None), None)
 
 

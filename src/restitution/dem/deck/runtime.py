@@ -190,7 +190,7 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
             # a command a run's every runs between its parts, known by the run's line: its own text
             # there, before substitution (field round 28, V63: variable s equal $(step) redefining
             # an s defined before the run was read as the echoed number, fixed)
-            text = _every_command(text, cmd.text)
+            text = _every_command(text, cmd.text, lambda c: _fixed(c, styles, allowed=allowed))
             split = text.split()
         if split[0] == "variable" and len(split) >= 3 and cmd.stage is None:
             # the text before substitution: an immediate $() in a definition is read as the
@@ -219,9 +219,24 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
     return found
 
 
-def _every_command(run: str, echoed: str) -> str:
+def _every_command(run: str, echoed: str, fixed=None) -> str:
     """The command of ``run ... every M c1 c2 ...`` as written whose first two words are the echoed
-    command's (the engine echoes it substituted); the echoed text where none is."""
+    command's (the engine echoes it substituted), else its first word; the echoed text where none
+    is. Of several such
+    (``pair_coeff 1 2`` twice), the first that ``fixed`` (a test of a command's text) finds not
+    fixed by the run: which of them the echo is, the substituted words do not tell.
+
+    Examples
+    --------
+    >>> run = 'run 20 every 10 "pair_coeff 1 2 hooke 2000 0" "pair_coeff 1 2 hooke $(step) 0"'
+    >>> _every_command(run, "pair_coeff 1 2 hooke 10 0")
+    'pair_coeff 1 2 hooke 2000 0'
+    >>> _every_command(run, "pair_coeff 1 2 hooke 10 0", lambda c: "$" not in c)
+    'pair_coeff 1 2 hooke $(step) 0'
+    >>> quoted = "'if " + '"$(step) > 15"' + " then quit'"
+    >>> _every_command("run 20 every 10 " + quoted, 'if "20 > 15" then quit')
+    'if "$(step) > 15" then quit'
+    """
     from ..deck_text import ScriptError, words
     try:
         split = words(run)
@@ -229,7 +244,12 @@ def _every_command(run: str, echoed: str) -> str:
         return echoed
     k = split.index("every") if "every" in split else len(split)
     head = echoed.split()[:2]
-    return next((c for c in split[k + 2:] if c.split()[:2] == head), echoed)
+    # (an if's condition is substituted in its second word: its first word alone tells it)
+    alike = [c for c in split[k + 2:] if c.split()[:2] == head] or \
+        [c for c in split[k + 2:] if c.split()[:1] == head[:1]]
+    if not alike:
+        return echoed
+    return next((c for c in alike if fixed is not None and not fixed(c)), alike[0])
 
 
 def resized_by_runs(commands: list) -> list:

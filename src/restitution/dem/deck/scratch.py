@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from ..dialect.state import DeckError, place
-from ..deck_text import (TRIPLE, ScriptError, logical_lines, segments as segments_of, strip_comment, words,
+from ..deck_text import (TRIPLE, ScriptError, if_branches, logical_lines, segments as segments_of, strip_comment, words,
                          written_words)
 from ..deck_text import words as words_of
 
@@ -85,21 +85,54 @@ _ASCII = str.maketrans({**{c: " " for c in "\u00a0\u202f\u2060\ufeff"},
 #: The most parts a ``run N every M`` with commands between them is written out in, each a run of the
 #: copy's own (:func:`split_every`); one in more parts stays as written
 MAX_PARTS = 1000
-#: What a run's every may run that keeps the run as written: a run, quit, clear or branch between
+#: What a run's every may run that keeps the run as written: a run, quit, clear or jump between
 #: the parts, or a file opened there, is the deck's control flow, which the copy does not rewrite
-_UNSPLIT = frozenset({"run", "minimize", "quit", "include", "jump", "label", "next", "clear", "if"})
+#: (an if is judged by its branches, :func:`_flow`; a label, which LAMMPS passes over where it
+#: runs it, is none)
+_UNSPLIT = frozenset({"run", "minimize", "quit", "include", "jump", "next", "clear"})
+#: How deep includes a run's every names are read for control flow (:func:`_flow`)
+_INCLUDE_DEPTH = 4
 #: What a run's every may evaluate that differs where its commands run between runs of their own: a
-#: value substituted or referenced (a ramp() or the step read inside the run, as LAMMPS runs them,
-#: is not the one read after a run of the copy: field round 22, t02's ramp(2000,8000) read 2000
-#: where LAMMPS reads 8000; round 27, E64: $(step*2+1000) read at the pass's step 0), or a function of
-#: the run's own start and end
-_IN_RUN = re.compile(r"\$|\b(?:[vcf]|[id]2?)_\w|\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(")
-#: Immediate values the copy reads as LAMMPS does inside the run: the time step alone (set by the
-#: commands the copy runs too; field round 27, E15's timestep $(dt*0.5) was right) and, in a variable's
-#: definition, the step and time, whose later reads after a run the pass makes again with its runs
-#: made (E29, E65, E66: right; E64's $(step*2+1000) as a coefficient was not: read at step 0)
-_DT_ONLY = re.compile(r"\$\((?:[\s\d.eE+\-*/()]|\bdt\b)*\)")
-_CLOCK_ONLY = re.compile(r"\$\((?:[\s\d.eE+\-*/()]|\bstep\b|\btime\b|\bdt\b)*\)")
+#: function of the run's own start and end (field round 22, t02's ramp(2000,8000) read 2000 where
+#: LAMMPS reads 8000; LAMMPS refuses a ramp between runs), or a compute's or fix's value, current
+#: inside the run and not between runs of the copy. A value substituted from the step, the time or
+#: a variable is not among them: the commands then run after each part, where the copy's step and
+#: time are the deck's in a clocked pass or in runs made for real, and the pass reads them as run
+#: dependent (runtime.run_dependent), as after any run (round 27, E64: $(step*2+1000) as a
+#: coefficient read at the pass's step 0 was refused until the clocked pass existed)
+_IN_RUN = re.compile(r"\b(?:[cf]|[id]2?)_\w|\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(")
+
+
+def _flow(command: str, opened=None, depth: int = 0) -> bool:
+    """Whether a command a run's every names is the deck's control flow (:data:`_UNSPLIT`), or an
+    if any branch of which is, or an include of a file that holds such a command; a command that
+    does not parse counts as such. ``opened`` gives the text of a file an include names (None where
+    it does not read it: the include then counts as flow); a file named by a variable counts so.
+
+    Examples
+    --------
+    >>> _flow("if 1 then 'pair_coeff 1 2 hooke 5000 0'"), _flow('if "${a} > 1" then "print x" else quit')
+    (False, True)
+    >>> _flow("label x"), _flow('include "k.in"'), _flow("")
+    (False, True, True)
+    >>> files = {"k.in": "pair_coeff 1 2 hooke 5000 0", "r.in": "run 10", "n.in": "include r.in"}
+    >>> _flow("include k.in", files.get), _flow("include n.in", files.get), _flow("include ${f}", files.get)
+    (False, True, True)
+    """
+    try:
+        parts = words(command)
+    except ScriptError:
+        return True
+    if not parts:
+        return True
+    if parts[0] == "include" and opened is not None and len(parts) == 2 and "$" not in parts[1] \
+            and depth < _INCLUDE_DEPTH:
+        text = opened(parts[1])
+        return text is None or any(_flow(line, opened, depth + 1) for _, line in logical_lines(text))
+    if parts[0] != "if":
+        return parts[0] in _UNSPLIT
+    branches = if_branches(parts)
+    return branches is None or any(_flow(branch, opened, depth) for branch in branches)
 
 
 def _in_run(command: str) -> bool:
@@ -108,7 +141,7 @@ def _in_run(command: str) -> bool:
     first = command.split()[0]
     if first in SKIPPED_COMMANDS:
         return False
-    return bool(_IN_RUN.search((_CLOCK_ONLY if first == "variable" else _DT_ONLY).sub("", command)))
+    return bool(_IN_RUN.search(command))
 #: The label that opens stage k's marker where it stands inline in an if (its echo marks the stage)
 STAGE_LABEL = "restitution_stage_"
 #: A deck's folder copied whole; a larger one is refused (with the files above it that it names)
@@ -780,7 +813,7 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
             scratch.silenced[(loc, noop)] = len(scratch.skipped) - 1
             return noop
         return None
-    if word in RUN_COMMANDS and top and (parts := split_every(key)) is not None:
+    if word in RUN_COMMANDS and top and (parts := split_every(key, lambda name: _copied_text(scratch, name))) is not None:
         return _parts(scratch, loc, key, marker, *parts)
     if word in RUN_COMMANDS:
         k = len(scratch.stages)
@@ -848,14 +881,28 @@ def remark(scratch: Scratch, marker) -> None:
         (scratch.root / f"stage_{k}").write_text(_audit_lines(scratch, marker(k, key)) + scratch.after.get(k, ""))
 
 
-def split_every(run: str) -> tuple[list[str], list[str]] | None:
+def _copied_text(scratch: Scratch, name: str) -> str | None:
+    """The text of a file of the copy a command names relative to the deck's folder, None where it
+    is not one (outside the copy, not a file, not text)."""
+    if _outside(name, scratch):
+        return None
+    path = scratch.deck.parent / name.strip("\"'")
+    try:
+        return path.read_text(encoding="utf-8") if path.is_file() and path.stat().st_size <= _MAX_TEXT_BYTES else None
+    except (OSError, UnicodeDecodeError):
+        return None
+
+
+def split_every(run: str, opened=None) -> tuple[list[str], list[str]] | None:
     """``run N every M c1 c2 ...`` as the runs of its parts and the commands LAMMPS runs after each
     (the last part too), where the pass must run them to see the contact of each part: N and M
     literal, no ``upto`` (its parts depend on the step then), at most :data:`MAX_PARTS` parts, and
-    among the commands one the copy does not make a no-op, none of which runs, quits, clears,
-    branches or opens a file, nor substitutes or references a value (the step, a ramp, a compute:
-    LAMMPS evaluates them inside its run, where they differ from between two runs): those keep the
-    run as written. The first part sets the run up as
+    among the commands one the copy does not make a no-op, none of which runs, quits, clears or
+    jumps, alone, in an if's branch or in a file it includes (:func:`_flow`), nor reads a ramp or a
+    compute (:data:`_IN_RUN`: LAMMPS evaluates them inside its run, where they differ from between
+    two runs): those keep the run as written.
+    A value substituted from the step or a variable is read after each part of the copy, where
+    the pass reads it as after any run. The first part sets the run up as
     LAMMPS' first part always does (``pre yes``); each keeps the run's start, stop and post, which
     LAMMPS applies to every part alike (its run.cpp, 22 Jul 2025). None where it is not such a run.
 
@@ -863,6 +910,9 @@ def split_every(run: str) -> tuple[list[str], list[str]] | None:
     ----------
     run : str
         A run command, normalised.
+    opened : callable, optional
+        The text of a file an include among the commands names (None where not read): an include
+        of a file that holds no control flow is run between the parts as the rest.
 
     Returns
     -------
@@ -877,10 +927,10 @@ def split_every(run: str) -> tuple[list[str], list[str]] | None:
     (['run 0 pre yes'], ['variable a equal 2'])
     >>> split_every('run 100 every 10 "print x"') is None, split_every("run 100 every 10 NULL") is None
     (True, True)
-    >>> split_every('run 300 every 100 "pair_coeff * * hooke $(v_kn) 0"') is None
+    >>> split_every('run 300 every 100 "pair_coeff * * hooke $(ramp(1000,2000)) 0"') is None
     True
-    >>> split_every('run 200 every 100 "pair_coeff * * hooke $(step*2+1000) 0"') is None
-    True
+    >>> split_every('run 200 every 100 "pair_coeff * * hooke $(step*2+1000) 0"')[1]
+    ['pair_coeff * * hooke $(step*2+1000) 0']
     >>> split_every('run 200 every 100 "variable s equal $(step)" "print $(step)" "timestep $(dt*0.5)"')[0]
     ['run 100 pre yes', 'run 100']
     """
@@ -900,7 +950,7 @@ def split_every(run: str) -> tuple[list[str], list[str]] | None:
     # (balance, never run in the pass, makes LAMMPS' ghost atoms anew, which a part with pre no after
     # it does not see: the reader reads it from its no-op, field round 33, G07)
     if not commands or all(first in SKIPPED_COMMANDS and first != "balance" or first == "NULL" for first in firsts) \
-            or any(first in _UNSPLIT or not first for first in firsts) \
+            or any(_flow(command, opened) for command in commands) \
             or any(_in_run(command) for command in commands):
         return None
     steps, every = int(split[1]), int(split[at + 1])
