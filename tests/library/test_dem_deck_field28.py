@@ -9,7 +9,8 @@ N: where a pair_style granular cutoff may leave a pair out, the neighbour lists'
 cutoff plus the skin) is each run's own: a skin set after the first run was read as the first's
 (N19: a pair LAMMPS met 8.09 deep was printed as met at first touch; N15 the other way). A
 ``neighbor ... nsq`` list has no bins: it takes every pair within the radii plus the skin, so in a
-box with no periodic boundary a small cutoff leaves no pair out (N01).
+box with no periodic boundary a small cutoff leaves no pair out on one process (N01); on several
+it misses a pair across two sub-domains (round 34), and the pair is left out.
 R: ``set ... type/fraction`` after a run draws each atom with a seed made from its position, which
 the pass (its runs skipped) does not know (R22, R25: the other atom retyped); such a deck now has its
 runs made for real first."""
@@ -94,14 +95,20 @@ def test_each_run_reaches_as_far_as_its_own_skin(tmp_path):
 
 @needs_lammps
 @pytest.mark.dem
-def test_an_nsq_list_in_a_box_with_no_periodic_boundary_meets_the_pair_whatever_the_cutoff(tmp_path):
+def test_an_nsq_list_short_of_the_contact_is_left_out_in_any_box(tmp_path):
+    """An nsq list in a box with no periodic boundary meets the pair at first touch on one process
+    (field round 28, N01), but on two (processors 2 1 1: the spheres in two sub-domains, held
+    through ghost atoms that reach the cutoff and skin only) never (field round 34: they pass
+    through each other). The audit, which cannot know how many processes run the deck, leaves the
+    pair out with the reason, as across a periodic boundary."""
     deck = _cut("neighbor 0.001 nsq\nrun 30000\n", boundary="boundary f f f\n")
-    eps, measured, err = audited_and_measured(deck, tmp_path)
-    assert abs(eps - measured) < 1e-4, (eps, measured, err)
-    # across a periodic boundary its ghost atoms reach the cutoff and skin only: left out, and said
-    (tmp_path / "in.deck").write_text(_cut("neighbor 0.001 nsq\nrun 30000\n"))
-    status, out, err = run(tmp_path / "in.deck", "--g", "1")
-    assert status == 2 and out == "" and "across a periodic boundary" in err, err      # no pair audited
+    one = lammps_separation_speed(deck, tmp_path)
+    two = lammps_separation_speed(deck.replace("units si\n", "units si\nprocessors 2 1 1\n"), tmp_path, processes=2)
+    assert abs(two - one) > 0.1, (one, two)
+    for boundary in ("boundary f f f\n", ""):
+        (tmp_path / "in.deck").write_text(_cut("neighbor 0.001 nsq\nrun 30000\n", boundary=boundary))
+        status, out, err = run(tmp_path / "in.deck", "--g", "1")
+        assert status == 2 and out == "" and "two processes' sub-domains" in err, err      # no pair audited
 
 
 @needs_lammps
@@ -109,11 +116,12 @@ def test_an_nsq_list_in_a_box_with_no_periodic_boundary_meets_the_pair_whatever_
 @pytest.mark.parametrize("before", ["", "boundary p p p\n"])
 def test_a_box_read_from_a_restart_has_the_files_boundary(tmp_path, before):
     """Field round 29, N11 and N25: a restart of a box with no periodic boundary was read as periodic
-    (the default after clear, or a boundary given before the read), so an nsq list's pair was left
-    out where LAMMPS meets it at first touch; the boundary is the file's, as LAMMPS' info says."""
+    (the default after clear, or a boundary given before the read); the boundary is the file's, as
+    LAMMPS' info says. With the pair style given again after the read and no cutoff short of the
+    contact, LAMMPS meets the pair at first touch and the audit prints it."""
     again = (f"write_restart a.rst\nclear\n{before}read_restart a.rst\ncomm_modify vel yes\n"
-             "neighbor 0.001 nsq\nfix integrate all nve/sphere\ntimestep 1e-7\nrun 30000\n")
-    deck = _cut("neighbor 0.001 nsq\n" + again, boundary="boundary f f f\n")
+             "pair_style granular\nfix integrate all nve/sphere\ntimestep 1e-7\nrun 30000\n")
+    deck = HEAD_ON.format(line=LAW).replace("units si\n", "units si\nboundary f f f\n") + again
     eps, measured, err = audited_and_measured(deck, tmp_path)
     assert abs(eps - measured) < 1e-4, (eps, measured, err)
 

@@ -3,14 +3,16 @@
 rebuild the ghosts (pbc, exchange, borders) without building the neighbour lists, and a run with
 pre no builds none, so its lists index the old ghost atoms: two spheres meeting across a periodic
 boundary were found late (PB20: LAMMPS 3.005689) where the audit printed 0.414916 at first touch.
-Every pair of such a run in a box with a periodic boundary is left out with the reason; without
-pre no the pair is audited and agrees with LAMMPS."""
+Every pair of such a run is left out with the reason; without pre no the pair is audited and agrees
+with LAMMPS. In a box with no periodic boundary too (field round 34, P47 P48 P50 P53): on several
+processes the ghost atoms stand for the spheres of the other sub-domains, and a pair across two is
+found late the same way (2 processes: 3.0056), where one process meets it at first touch."""
 
 import json
 
 import pytest
 
-from deck_cli import PERIODIC_PAIR, audited_and_measured, lammps_separation_speed, needs_lammps, run
+from deck_cli import PERIODIC_PAIR, SUBDOMAIN_PAIR, audited_and_measured, lammps_separation_speed, needs_lammps, run
 
 ACROSS = PERIODIC_PAIR + "{between}\nrun 3000{pre}\n"
 
@@ -62,3 +64,20 @@ def test_balance_in_a_run_of_more_parts_than_the_pass_splits_is_refused(tmp_path
     (tmp_path / "in.deck").write_text(PERIODIC_PAIR + 'run 3000 pre no every 2 "balance 1.0 x uniform"\n')
     status, out, err = run(tmp_path / "in.deck", "--g", "1")
     assert status == 2 and "run ... every runs balance between the run's parts" in err, (out, err)
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between", BETWEEN[::2], ids=["displace_atoms", "balance"])
+def test_pre_no_after_the_ghost_atoms_are_made_anew_leaves_the_pairs_out_in_any_box(tmp_path, between):
+    """No periodic face: one process meets the pair at first touch, two (the deck's own processors
+    2 1 1, the spheres in the two sub-domains) late; the audit, which cannot know how many processes
+    run the deck, leaves it out with the reason."""
+    deck = SUBDOMAIN_PAIR + f"{between}\nrun 3000 pre no\n"
+    one = lammps_separation_speed(deck.replace("processors 2 1 1\n", ""), tmp_path)
+    two = lammps_separation_speed(deck, tmp_path, processes=2)
+    assert abs(one - 0.4149) < 0.004 and abs(two - 0.4149) > 0.05, (one, two)
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
+    assert status == 2 or json.loads(out)["pairs"] == [], out
+    assert "across two processes' sub-domains" in err, err

@@ -1465,11 +1465,11 @@ def _audit_stage(deck: Deck, speeds: list, ran: bool) -> tuple[list, list, list,
                 where, line = deck.ghosts_stale
                 not_audited.append((*deck.style_line[0], deck.style_line[1],
                                     f"types {i} {j}: {where} ({line}): a run with pre no after it made the ghost "
-                                    "atoms anew, in a box with a periodic boundary: LAMMPS does not build its "
-                                    "neighbour lists again at this run, and the lists built before index the old "
-                                    "ghost atoms, so a pair across the boundary is found late in overlap or never "
-                                    "(LAMMPS measured: 3.01 where the contact gives 0.41): not audited (remove pre "
-                                    "no)"))
+                                    "atoms anew: LAMMPS does not build its neighbour lists again at this run, and "
+                                    "the lists built before index the old ghost atoms, so a pair held through them "
+                                    "(across a periodic boundary, or across two processes' sub-domains where the "
+                                    "deck runs on several) is found late in overlap or never (LAMMPS measured: 3.01 "
+                                    "where the contact gives 0.41): not audited (remove pre no)"))
                 continue
             if stale := [deck.stale[t] for t in (i, j) if t in deck.stale]:
                 (where, line, *adapt), t = stale[0], i if i in deck.stale else j

@@ -1195,7 +1195,9 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
         # a grown type's pairs are left out (walls use no list, other pairs are met as set up)
         stale = set(_grown(deck, radii)) | _changed_atoms(deck)
         deck.stale = {**deck.stale, **{t: (where, line) for t in sorted(stale)}}
-        if deck.reghosted and deck.periodic and deck.code != "LIGGGHTS":
+        # (in any box: on several processes the ghost atoms stand for the other sub-domains' spheres
+        # too, field round 34, P47: boundary f f f, balance, pre no, 2 processes: 3.01)
+        if deck.reghosted and deck.code != "LIGGGHTS":
             deck.ghosts_stale = deck.reghosted
         return
     deck.set_up, deck.set_up_radii, deck.set_up_own, deck.stale = key, radii, own, {}

@@ -256,8 +256,8 @@ class Deck:
     stale: dict = field(default_factory=dict)
     # (where, line) of the last command since the last set-up that made LAMMPS' ghost atoms anew
     # (displace_atoms, change_box, balance, comm_style), and of the one a run with pre no met: lists
-    # built before it hold ghost atoms' old indices, so in a periodic box a pair across the boundary
-    # is found late (field round 32, PB20)
+    # built before it hold ghost atoms' old indices, so a pair across a periodic boundary, or across
+    # two processes' sub-domains, is found late (field rounds 32, PB20; 34, P47)
     reghosted: tuple = ()
     ghosts_stale: tuple = ()
     # pairs of group IDs (frozensets) that share no atom: ``group A subtract B C`` makes A apart from

@@ -399,15 +399,18 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     # for a sphere across a periodic boundary (field round 32, R04: 8.094838 where the pair meets
     # across one, 0.414679 with pair_style granular given again after the read; RZ03, a pair along z
     # in an f f f box whose centres lie in two bins: 8.228907; RP05, gran/hooke/history: 0.483961).
-    # An nsq list, which has no bins, takes every pair inside a box with no periodic boundary
-    if deck.restored_cut and _largest_cutoff(deck) == 0 and (deck.periodic or deck.neighbor_style != "nsq"):
+    # An nsq list, which has no bins, takes every pair inside a box with no periodic boundary on one
+    # process; on several, with no ghost atoms, a pair across two sub-domains is never met (field
+    # round 34: processors 2 1 1, mpirun -np 2, the spheres passed through each other)
+    if deck.restored_cut and _largest_cutoff(deck) == 0:
         style = deck.style_line[1].split()[1]
         raise PairNotMapped(deck.style_line[0], deck.style_line[1],
                             f"types {i} {j}: after read_restart LAMMPS holds pair_style {style} with no cutoff (the "
                             f"deck does not give pair_style {style} again; LAMMPS: 'Communication cutoff is 0.0'): "
                             "it makes no ghost atoms and looks for partners in one bin only, so a pair whose "
-                            "spheres lie in two bins or across a periodic boundary is found late in overlap or "
-                            f"never; give pair_style {style} again after the read")
+                            "spheres lie in two bins, across a periodic boundary, or in two processes' "
+                            "sub-domains where the deck runs on several (an nsq list's too) is found late in "
+                            f"overlap or never; give pair_style {style} again after the read")
     # under a hybrid style of several granular sub-styles, the one that gives this pair its force
     older = _older_or_granular(deck, i, j) if deck.granular_of else bool(deck.gran)
     if older:
@@ -439,16 +442,17 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
     cutoff = c.cutoff if c.cutoff is not None else deck.cutoff
     skin = deck.skin if deck.skin is not None else DEFAULT_SKIN.get(deck.units or "lj", 0.0)
     nsq = deck.neighbor_style == "nsq"
-    if cutoff is not None and _largest_cutoff(deck) + skin < pair.R1 + pair.R2 \
-            and (deck.periodic or not nsq):
+    if cutoff is not None and _largest_cutoff(deck) + skin < pair.R1 + pair.R2:
         # LAMMPS' lists reach the largest cutoff and the skin, its bins perhaps further: spheres
         # that reach each other may first meet deep in overlap (cutoff 0.004 on r 0.005 + 0.005:
         # eps 619 measured), later, or at first touch (field round 27, CU10, CU15). Its nsq lists
         # have no bins and take every pair within its radii and skin: at first touch in a box
-        # with no periodic boundary (field round 28, N01, N11, N14, N25), but across a periodic
-        # one the ghost atoms reach only the cutoff and skin (N02: met late, 1.904665)
-        how = ("its nsq list finds the pair at first touch inside the box, but across a periodic boundary its "
-               "ghost atoms reach only that far, so there it may find the pair late in overlap or never" if nsq
+        # with no periodic boundary on one process (field round 28, N01, N11, N14, N25), but across
+        # a periodic one the ghost atoms reach only the cutoff and skin (N02: met late, 1.904665),
+        # and across two processes' sub-domains alike (round 34: processors 2 1 1 on 2, never met)
+        how = ("its nsq list finds the pair at first touch inside the box on one process, but across a periodic "
+               "boundary, or across two processes' sub-domains where the deck runs on several, its ghost atoms "
+               "reach only that far, so there it may find the pair late in overlap or never" if nsq
                else "so whether it finds the pair at first touch, late in overlap or never depends on how it bins "
                     "the atoms")
         raise PairNotMapped(loc, " ".join(words) if (i, j) in deck.coeffs else f"types {i} {j}",
