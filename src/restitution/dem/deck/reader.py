@@ -24,7 +24,7 @@ from ..dialect.state import (DEFAULT_SKIN, Deck, DeckError, atom_type, fetch, la
                              type_pairs, types, unlabeled)
 from ..deck_text import ScriptError, if_branches, words
 from ..engines import ENGINES
-from ..engines.lammps.deck import DEFAULT_DT
+from ..engines.lammps.deck import DEFAULT_DT, own_cutoff
 
 __all__ = ["DIALECTS", "PAIR_STYLES", "MAX_STAGES", "read_executed", "contact_key", "repour", "adapt_poured",
            "by_position"]
@@ -488,15 +488,12 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
         deck.__dict__.update(fresh.__dict__)
         deck.units, deck.atom_style, deck.ntypes, deck.dt = held.get("units"), held.get("atom_style"), \
             held["ntypes"], held["dt"]
-        # the file's step, as LAMMPS says it (a run's start, stop or upto is checked against it:
-        # field round 24, R06)
-        deck.held, deck.atoms, deck.step = {}, True, held.get("step")
-        deck.periodic = held.get("periodic", deck.periodic)
+        deck.held, deck.atoms = {}, True
         if held.get("pair_style") == "granular":
             # LAMMPS restores the style (its models come per pair_coeff line), which the deck need not
             # give again (its manual; field round 24, V33): read as given here
             _pair_style(deck, ["pair_style", "granular"], where, line, loc)
-            deck.cutoff, deck.restored_cut = 0.0, True
+        _as_read(deck, held, "LAMMPS")
         if held.get("pair_style", "none") != "none" and held["set"]:
             deck.restart_pairs = (loc, line, held["pair_style"], set(held["set"]))
         return {}
@@ -539,13 +536,7 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     deck.__dict__.update(fresh.__dict__)
     for name, value in copy.deepcopy(state).items():
         setattr(deck, name, value)
-    deck.step = held.get("step")      # the file's step, as LAMMPS says it after the read
-    # the box's boundary is the file's, whatever a boundary command before the read said (field
-    # round 29, N11 and N25: an f f f box read as periodic, its pairs left out where LAMMPS met them)
-    deck.periodic = held.get("periodic", deck.periodic)
-    if engine == "LAMMPS" and held.get("pair_style") in _UNCUT_BY_RESTART:
-        # LAMMPS keeps no global cutoff through the file, a pair_style granular CUTOFF's included
-        deck.cutoff, deck.restored_cut = 0.0, True
+    _as_read(deck, held, engine)
     for key in held["unset"]:
         # a sub-style whose coefficients a restart does not store: LAMMPS holds none for the pair
         deck.coeffs.pop(key, None)
@@ -556,6 +547,18 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
         deck.poured[t] = set(sizes)
         pour_into(deck, t, set())
     return copy.deepcopy(made)
+
+
+def _as_read(deck: Deck, held: dict, engine: str) -> None:
+    """What any read_restart leaves, as the engine says it holds (``held``): the file's step (a
+    run's start, stop or upto is checked against it: field round 24, R06), the file's boundary,
+    whatever a boundary command before the read said (field round 29, N11 and N25: an f f f box
+    read as periodic), and in LAMMPS no global cutoff through the file, a pair_style granular
+    CUTOFF's included (field round 32, R04)."""
+    deck.step = held.get("step")
+    deck.periodic = held.get("periodic", deck.periodic)
+    if engine == "LAMMPS" and held.get("pair_style") in _UNCUT_BY_RESTART:
+        deck.cutoff, deck.restored_cut = 0.0, True
 
 
 def _shown(value) -> str:
@@ -1144,8 +1147,7 @@ def set_up_key(deck: Deck) -> str:
     # a like pair's own cutoff is read into the lists' reach at the set-up only (field round 28, Q58:
     # pair_coeff 1 1 given again without its cutoff 0.001 before pre no: LAMMPS kept the short lists
     # and met the pair late, -0.507, where its new law was printed)
-    own_cut = sorted((k[0], next((w[n + 1] for n in range(len(w) - 1) if w[n] == "cutoff"), None))
-                     for k, (_, w) in deck.coeffs.items() if k[0] == k[1])
+    own_cut = sorted((k[0], own_cutoff(w)) for k, (_, w) in deck.coeffs.items() if k[0] == k[1])
     return repr((deck.code, deck.style, deck.model, deck.limit_force, deck.absolute_damping, deck.gran,
                  (skin, deck.neighbor_style, own_cut, deck.cutoff) if _cut(deck) else None,
                  sorted((k, tuple(w)) for k, (_, w) in deck.coeffs.items() if k[0] != k[1]),

@@ -26,7 +26,7 @@ from .contact import (DAMPING_MODELS, E_DAMPINGS, LAMMPS_GRAN_STYLES, lammps_con
 
 __all__ = ["ENGINE", "DEFAULT_DT", "SPEED_UNITS", "FTM2V", "NKTV2P", "Region", "read_region", "region_moves", "REGION_UNBOUNDED", "region_number",
            "PAIR_STYLES", "MAPPED", "FIXES", "pair_style", "pair_coeff", "pair_row", "wall", "concave_cylinder",
-           "accelerated"]
+           "accelerated", "own_cutoff"]
 
 #: LAMMPS' default time step per unit style (checked in LAMMPS 22 Jul 2025), where a deck sets none
 DEFAULT_DT = {"lj": 0.005, "real": 1.0, "metal": 0.001, "si": 1e-8, "cgs": 1e-8, "electron": 0.001, "micro": 2.0,
@@ -341,6 +341,27 @@ def _mixed(a: _Coeff, b: _Coeff) -> tuple[_Coeff, dict]:
     return mixed, stiffness
 
 
+def own_cutoff(words: list) -> str | None:
+    """The value a ``pair_coeff``'s own ``cutoff`` keyword gives (pair_style granular), as written;
+    None where it gives none.
+
+    Parameters
+    ----------
+    words : list of str
+        The pair_coeff's words after its two types.
+
+    Returns
+    -------
+    str or None
+
+    Examples
+    --------
+    >>> own_cutoff(["hooke", "2000", "0", "cutoff", "0.001"]), own_cutoff(["hooke", "2000", "0"])
+    ('0.001', None)
+    """
+    return next((w for k, w in enumerate(words[1:]) if words[k] == "cutoff"), None)
+
+
 def _largest_cutoff(deck: Deck) -> float:
     """The largest cutoff of any pair (infinite where one has none, its cutoff then the radii's):
     LAMMPS' granular neighbour lists take a pair by its radii and skin, the cutoffs setting only how
@@ -359,7 +380,7 @@ def _largest_cutoff(deck: Deck) -> float:
     """
     largest = 0.0
     for _, words in deck.coeffs.values():
-        own = next((w for k, w in enumerate(words[1:]) if words[k] == "cutoff"), None)
+        own = own_cutoff(words)
         try:
             cut = float(own) if own is not None else deck.cutoff
         except ValueError:
