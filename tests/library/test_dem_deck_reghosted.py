@@ -81,3 +81,19 @@ def test_pre_no_after_the_ghost_atoms_are_made_anew_leaves_the_pairs_out_in_any_
     status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
     assert status == 2 or json.loads(out)["pairs"] == [], out
     assert "across two processes' sub-domains" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_pre_no_after_replicate_is_refused_as_no_atom_moves(tmp_path):
+    """Field round 34, P76: replicate 1 1 1, then run N pre no: LAMMPS counts the steps and moves no
+    atom (the spheres never meet), where the audit printed the law. A run of no step between them
+    sets the atoms up, and the pair is met."""
+    still = PERIODIC_PAIR + "replicate 1 1 1\nrun 3000 pre no\n"
+    assert abs(lammps_separation_speed(still, tmp_path)) == pytest.approx(1.0, abs=1e-9)    # as they came
+    (tmp_path / "in.deck").write_text(still)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and "(replicate 1 1 1), which makes the atoms anew" in err, err
+    printed, engine, err = audited_and_measured(still.replace("replicate 1 1 1\n", "replicate 1 1 1\nrun 0\n"),
+                                                tmp_path)
+    assert abs(printed - abs(engine)) < 0.004, (printed, engine, err)

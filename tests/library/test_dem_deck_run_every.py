@@ -243,3 +243,20 @@ def test_an_include_between_the_parts_is_read_by_what_its_file_holds(tmp_path, i
         (tmp_path / "in.deck").write_text(deck)
         status, out, err = run(tmp_path / "in.deck", "--g", "1")
         assert status == 2 and out == "" and "runs include between the run's parts" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("value", ["2000+3*elapsed", "ramp(1000,3000)"], ids=["elapsed", "ramp"])
+def test_a_value_only_a_run_gives_between_the_parts_is_refused_as_such(tmp_path, value):
+    """Field round 34, E05: a variable of elapsed read between the parts, which LAMMPS evaluates
+    inside its run; the copy, whose parts are runs of their own, stopped on it, and the refusal said
+    "LAMMPS stops here", which the deck run by hand does not. A ramp so read gave the copy its start
+    (kn 1000: 0.6811 printed) where LAMMPS' run gives its end (kn 3000: 0.8020). One line naming the
+    run and why."""
+    deck = HEAD_ON.format(line=LINE) + (f"run 10\nvariable k equal {value}\n"
+                                        f'run 1000 every 500 "{LINE.replace("1000", "${k}")}"\n')
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert "every runs pair_coeff" in err and "reads a value LAMMPS gives only inside a run" in err, err

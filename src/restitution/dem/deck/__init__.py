@@ -606,7 +606,7 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
     from .scratch import PUSHING_FIX_PREFIXES, scratch_copy
-    from .runtime import fixed_face, lost_in_runs, resized_by_runs, stops_in_runs
+    from .runtime import fixed_face, lost_in_runs, read_in_run, resized_by_runs, stops_in_runs
     from .stream import (deck_commands, engine_error, random_drawn, skipped, snapshots, unchecked,
                          written_then_read)
     if engine == "LAMMPS":
@@ -656,6 +656,15 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                                           f"budget ({done.spent}; runs skipped): {cause} (--budget SECONDS allows "
                                           "more time); not audited")
 
+        if scratch.parts and (hit := read_in_run(commands, _source(commands, scratch),
+                                                 {scratch.stages[k][:2] for k in scratch.parts})) is not None:
+            loc, text = hit
+            raise DeckError(place(loc), {scratch.stages[k][:2]: key for k, (key, _) in scratch.parts.items()}[loc],
+                            f"run ... every runs {text} between the run's parts, which reads a value {engine} gives "
+                            "only inside a run (a ramp, a wiggle, the steps elapsed, a compute's), and the audit "
+                            "runs it between runs of its own copy, where that value is another: not audited; split "
+                            "the run into runs with the commands between them, each reading what a run leaves")
+
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
         restarts = _restart_infos(root) if scratch.restarts else None
@@ -688,6 +697,16 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
+            parted = {scratch.stages[k][:2]: key for k, (key, _) in scratch.parts.items()}
+            if commands and commands[-1].stage is None and commands[-1].loc in parted:
+                # a command a run's every runs, which the copy runs between runs of its own: LAMMPS
+                # evaluates it inside its run, where what stopped the copy (elapsed, a ramp, a
+                # compute's value through a variable) is defined (field round 34, E05)
+                raise DeckError(where, parted[commands[-1].loc],
+                                f"run ... every runs {line} between the run's parts, where {engine} evaluates it "
+                                "inside the run; the audit runs it between runs of its own copy, where "
+                                f"{engine} stops on it ({message}): not audited; split the run into runs with "
+                                "the commands between them, each reading what a run leaves")
             # where the runs were not made (made[1]: the commands of a pass that made them and stopped
             # too), what the pass read after a run decided where it went, and its stop is its own
             unmade = found if made is None or made[1] is None else []
@@ -1190,8 +1209,14 @@ def _unseen_after(commands: list, deck: Path) -> tuple | None:
 def _run_dependent(commands: list, scratch, clocked: bool = False) -> list:
     """The commands after a run that read a value the skipped runs would have changed
     (:func:`restitution.dem.deck.runtime.run_dependent`), read in the deck's own text."""
-    from ..deck_text import logical_lines
     from .runtime import run_dependent
+    return run_dependent(commands, _source(commands, scratch), clocked)
+
+
+def _source(commands: list, scratch) -> dict:
+    """(file, line) -> the deck's own text of each line the engine ran (a run the copy made as its
+    parts: the run as written, which holds the commands its every runs)."""
+    from ..deck_text import logical_lines
     commands_at: dict = {}
 
     def at(name, folder=None) -> dict:
@@ -1213,7 +1238,7 @@ def _run_dependent(commands: list, scratch, clocked: bool = False) -> list:
             # deck's own holds the commands its every runs, which run_dependent reads
             written = at(loc[0], scratch.origin).get(loc[1])
             source[loc] = written if written and written.split()[:1] == ["run"] else text
-    return run_dependent(commands, {loc: text for loc, text in source.items() if text}, clocked)
+    return {loc: text for loc, text in source.items() if text}
 
 
 def _engine_pass(deck_run, scratch, budget: float, folder: Path) -> tuple:

@@ -242,6 +242,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             deck.diameters_set = True  # a fix adapt resizes them again at the next set-up (_adapted_late)
         if split and split[0] in _REGHOSTING:
             deck.reghosted = (place(cmd.loc), cmd.text)
+        if split and split[0] == "replicate":
+            deck.replicated = (place(cmd.loc), cmd.text)
         if not split or split[0] in _ENGINE_ONLY:
             continue
         halting = halting or split[0] == "fix" and len(split) > 3 and split[3] == "halt"
@@ -1183,6 +1185,13 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
     radii = {t: {r for r, _ in sizes} for t, sizes in (deck.held or {}).items()}
     own = {k[0]: tuple(w) for k, (_, w) in deck.coeffs.items() if k[0] == k[1]}
     if pre[-1:] == ["no"] and deck.set_up is not None:
+        if deck.replicated:
+            # field round 34, P75 P76: replicate 1 1 1, then run 3000 pre no: the step count went on
+            # and no atom moved (positions and velocities the same after the run, 1 and 2 processes)
+            raise DeckError(where, line, f"pre no after {deck.replicated[0]} ({deck.replicated[1]}), which makes the "
+                                         "atoms anew: the engine does not set this run up again, and no atom moves "
+                                         "in it (LAMMPS measured: positions and velocities unchanged over the run); "
+                                         "not audited (remove pre no)")
         if key != deck.set_up:
             raise DeckError(where, line, "pre no after a contact setting changed since the last run: the engine does "
                                          "not set this run up again, so the change acts in part or not at all (LAMMPS "
@@ -1203,7 +1212,7 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
             deck.ghosts_stale = deck.reghosted
         return
     deck.set_up, deck.set_up_radii, deck.set_up_own, deck.stale = key, radii, own, {}
-    deck.reghosted = deck.ghosts_stale = ()
+    deck.reghosted = deck.ghosts_stale = deck.replicated = ()
     deck.set_up_seen = deck.seen
 
 

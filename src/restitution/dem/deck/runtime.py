@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["run_dependent", "boundary_faces", "resized_by_runs", "lost_in_runs", "stops_in_runs", "fixed_face", "constant_in_time", "CLOCK"]
+__all__ = ["run_dependent", "read_in_run", "boundary_faces", "resized_by_runs", "lost_in_runs", "stops_in_runs", "fixed_face", "constant_in_time", "CLOCK"]
 
 #: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
 #: is not one: it formats an equal-style variable when used).
@@ -217,6 +217,77 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
                 seen.add((cmd.loc, text))
                 found.append((cmd.loc, text))
     return found
+
+
+#: What a formula reads that LAMMPS gives only inside a run: a function of the run's own start and
+#: end (a ramp, a wiggle, the steps elapsed), or a compute's or fix's value, current there
+_IN_RUN_ONLY = re.compile(r"\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(|\belap(?:sed|long)\b|\b(?:[cf]|[id]2?)_\w")
+
+
+def _reads_in_run(text: str, styles: dict, seen: frozenset = frozenset()) -> bool:
+    """Whether ``text``, through its substitutions and the variables they (or its ``v_`` words)
+    name, reads a value LAMMPS gives only inside a run (:data:`_IN_RUN_ONLY`)."""
+    names, formulas, _ = _references(text)
+    if any(_IN_RUN_ONLY.search(f) for f in formulas):
+        return True
+    for name in names:
+        if name in seen or name not in styles:
+            continue
+        style, formula = styles[name]
+        if _IN_RUN_ONLY.search(formula) or _reads_in_run(formula, styles, seen | {name}):
+            return True
+    return False
+
+
+def read_in_run(commands: list, source: dict, parted: set) -> tuple | None:
+    """The first command a run's ``every`` runs between the parts of a run the copy made as its parts
+    (its line among ``parted``) that reads a value LAMMPS gives only inside a run, directly or
+    through a variable: a ramp, a wiggle, the steps elapsed, a compute's value. The copy runs such a
+    command between runs of its own, where that value is another (field round 34: a ramp(1000,3000)
+    read through ${k} gave 1000 in the copy, 3000 in LAMMPS' run). ((file, line), text as written)
+    or None.
+
+    Parameters
+    ----------
+    commands : list of Executed
+        The commands as the engine ran them, ``stage`` set on the runs.
+    source : dict
+        (file, line) -> the deck's text of that line, before substitution.
+    parted : set
+        The (file, line) of each run the copy made as its parts.
+
+    Returns
+    -------
+    tuple or None
+
+    Examples
+    --------
+    >>> from restitution.dem.deck.stream import Executed
+    >>> run = 'run 20 every 10 "pair_coeff * * hooke ${k} 0"'
+    >>> cmds = [Executed((None, 1), "variable k equal ramp(1,3)"), Executed((None, 2), "run 10", stage=0),
+    ...         Executed((None, 2), "pair_coeff * * hooke 1 0")]
+    >>> read_in_run(cmds, {(None, 1): "variable k equal ramp(1,3)", (None, 2): run}, {(None, 2)})
+    ((None, 2), 'pair_coeff * * hooke ${k} 0')
+    >>> read_in_run(cmds[1:], {(None, 2): run}, {(None, 2)}) is None
+    True
+    """
+    styles: dict = {}
+    for cmd in commands:
+        text = source.get(cmd.loc, cmd.text)
+        split = text.split()
+        if not split:
+            continue
+        if split[0] == "run" and cmd.stage is None and cmd.loc in parted:
+            written = _every_command(text, cmd.text, lambda c: not _reads_in_run(c, styles))
+            if _reads_in_run(written, styles):
+                return cmd.loc, written
+            split = written.split()
+        if split[0] == "variable" and len(split) >= 3 and cmd.stage is None:
+            if split[2] == "delete":
+                styles.pop(split[1], None)
+            else:
+                styles[split[1]] = (split[2], " ".join(split[3:]))
+    return None
 
 
 def _every_command(run: str, echoed: str, fixed=None) -> str:
