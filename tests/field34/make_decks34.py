@@ -569,6 +569,39 @@ LG("L34_lig_restitution_other_id_between_runs", "run 1000; fix m3b coefficientRe
 LG("L35_lig_unfix_m3_refix_other_id", "run 1000; unfix m3; fix m3b coefficientRestitution (e 1 2 0.8); run 3000",
    "run 1000\nunfix m3\nfix m3b all property/global coefficientRestitution peratomtypepair 3 0.6 0.8 0.7 0.8 0.4 0.45 0.7 0.45 0.8\nrun 3000\n", pair=LIN(G11))
 
+DECKS["O04_lig_snow_slope_kunwar"] = (open(os.path.join(OD, "O04.in")).read(), "last run",
+                                      {"slope.stl": stl_plane("slope", (0, -150, 240), (150, -150, 240), (600, 150, 0), (0, 150, 240)).replace(
+                                          "vertex 600 150 0", "vertex 150 150 240")},
+                                      {"LIGGGHTS": "", "SEP": "0.01", "PAIR": "types 1 1"})
+DECKS["O05_lig_screw_conveyor_ortiz"] = (open(os.path.join(OD, "O05.in")).read(), "run 1",
+                                         {"case_remesh.stl": stl_plane("case", (-0.01, -0.01, 0), (0.42, -0.01, 0), (0.42, 0.05, 0), (-0.01, 0.05, 0)),
+                                          "screw_simplified.stl": stl_plane("screw", (0.15, 0.017, 0.0115), (0.25, 0.017, 0.0115), (0.25, 0.021, 0.0115), (0.15, 0.021, 0.0115)),
+                                          "feed.stl": stl_plane("feed", (0.0, 0.0, 0.05), (0.05, 0.0, 0.05), (0.05, 0.04, 0.05), (0.0, 0.04, 0.05)),
+                                          "outlet_1.stl": stl_plane("outlet", (0.38, 0.0, 0.001), (0.42, 0.0, 0.001), (0.42, 0.04, 0.001), (0.38, 0.04, 0.001))},
+                                         {"LIGGGHTS": "", "SEP": "0.001", "PAIR": "types 1 1"})
+
+L("E47_every_pair_coeff_constant_pre_no", "every \"pair_coeff 1 2 hooke 5000 ...\" (constant) with pre no", 'run 4000 pre no every 1000 "' + PC12.format(k="5000") + '"\n', pair=IN(G11), live="part 2")
+L("E48_every_set_type_constant_pre_no", "pair_coeff 1 1 kn 5000; every \"set atom 2 type 1\" with pre no (the pair 1 1 from part 2)",
+  "pair_coeff 1 1 " + HK5 + '\nrun 4000 pre no every 1000 "set atom 2 type 1"\n', pair=IN(G11), live="part 2", PAIR="types 1 1")
+L("E49_every_wall_constant_pre_no", "WALL: every \"fix floor all wall/gran ... hooke 5000 ...\" (constant, same ID) with pre no",
+  'run 4000 pre no every 1000 "fix floor all wall/gran granular ' + HK5 + ' zplane 0 NULL"\n', pair=WALLP(0.0011), live="part 2", **WALL)
+L("E50_every_set_density_constant", "every \"set type 2 density 3500\" (constant)", 'run 4000 every 1000 "set type 2 density 3500"\n', pair=IN(G11), live="part 2")
+L("E51_every_set_density_constant_pre_no", "E50 with pre no", 'run 4000 pre no every 1000 "set type 2 density 3500"\n', pair=IN(G11), live="part 2")
+L("E52_every_pair_coeff_other_pair_pre_no", "every \"pair_coeff 1 1 hooke 5000 ...\" with pre no (not the live pair)", 'run 4000 pre no every 1000 "pair_coeff 1 1 ' + HK5 + '"\n',
+  pair=IN(G11), live="part 2")
+L("E53_every_exclude_constant_part3_pre_no", "every \"neigh_modify exclude type 1 2\" pre no, meets in part 3", 'run 4000 pre no every 1000 "neigh_modify exclude type 1 2"\n',
+  pair=IN(2.1e-3), live="part 3")
+
+L("P63_fff_displace_pre_no_no_processors", "the plainest SW-NP deck: f f f box, no processors command (2 processes split z at 0.05), the pair along z across 0.05; run 1000; displace_atoms all move 0 0 0; run 3000 pre no",
+  "run 1000\ndisplace_atoms all move 0 0 0 units box\nrun 3000 pre no\n", pre=BASE(boundary="f f f"), pair=IN(G11, ax="z"), **VZ)
+
+LG("P64_lig_fff_displace_pre_no_np2", "LIGGGHTS f f f box, processors 2 1 1, the pair across x = 0; run 1000; displace_atoms 0; run 3000 pre no",
+   "run 1000\ndisplace_atoms all move 0 0 0 units box\nrun 3000 pre no\n", pre=LBASE(head="processors 2 1 1\n", boundary="f f f"), pair=LIN(G11), NP="2")
+LG("P65_lig_fff_change_box_pre_no_np2", "LIGGGHTS f f f box, processors 2 1 1; run 1000; change_box all x final -0.05 0.05; run 3000 pre no",
+   "run 1000\nchange_box all x final -0.05 0.05 units box\nrun 3000 pre no\n", pre=LBASE(head="processors 2 1 1\n", boundary="f f f"), pair=LIN(G11), NP="2")
+LG("P66_lig_fff_displace_pre_no_default_grid", "LIGGGHTS f f f box, no processors command (2 processes), the pair along x at x = 0; displace_atoms; run 3000 pre no (1 and 2 processes)",
+   "run 1000\ndisplace_atoms all move 0 0 0 units box\nrun 3000 pre no\n", pre=LBASE(boundary="f f f"), pair=LIN(G11))
+
 
 # ================================================================ write
 def write(only=()):
