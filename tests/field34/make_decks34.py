@@ -602,6 +602,20 @@ LG("P65_lig_fff_change_box_pre_no_np2", "LIGGGHTS f f f box, processors 2 1 1; r
 LG("P66_lig_fff_displace_pre_no_default_grid", "LIGGGHTS f f f box, no processors command (2 processes), the pair along x at x = 0; displace_atoms; run 3000 pre no (1 and 2 processes)",
    "run 1000\ndisplace_atoms all move 0 0 0 units box\nrun 3000 pre no\n", pre=LBASE(boundary="f f f"), pair=LIN(G11))
 
+L("P67_fff_delete_far_pre_no", "f f f box, processors * 1 1, the pair across x = 0.02; run 1000; delete_atoms of a far sphere; run 3000 pre no",
+  "group v3 id 3\nrun 1000\ndelete_atoms group v3\nrun 3000 pre no\n", pre=FB, pair=IN(G11) + "create_atoms 2 single 0.005 0.01 0.012\nset atom 3 diameter 0.006 density 2500\n")
+L("P68_fff_create_far_pre_no", "f f f box, processors * 1 1; run 1000; create_atoms 2 single far; set; run 3000 pre no",
+  "run 1000\ncreate_atoms 2 single 0.005 0.01 0.012\nset atom 3 diameter 0.006 density 2500\nrun 3000 pre no\n", pre=FB, pair=IN(G11))
+L("P69_fff_read_data_add_pre_no", "f f f box, processors * 1 1; run 1000; read_data far.data add append; run 3000 pre no",
+  "run 1000\nread_data far.data add append\nrun 3000 pre no\n", pre=FB, pair=IN(G11),
+  data={"far.data": "# far\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 2 0.006 2500 0.005 0.01 0.012\n"})
+L("P70_fff_set_x_across_border_pre_no", "f f f box, processors * 1 1, map array; lv1 left of x = 0.02; run 1000; set atom 1 x +0.1 mm; run 3000 pre no",
+  "run 1000\nset atom 1 x $(x[1]+0.0001)\nrun 3000 pre no\n", pre=BASE(head="atom_modify map array\nprocessors * 1 1\n", boundary="f f f"), pair=IN(G11 + 0.1e-3))
+L("P71_fff_write_restart_pre_no", "f f f box, processors * 1 1; run 1000; write_restart; run 3000 pre no", "run 1000\nwrite_restart a.rst\nrun 3000 pre no\n", pre=FB, pair=IN(G11))
+L("P72_fff_delete_overlap_far_pre_no", "f f f box; run 1000; delete_atoms overlap 0.001 of two far spheres; run 3000 pre no",
+  "run 1000\ndelete_atoms overlap 0.001 v34 v34\nrun 3000 pre no\n", pre=FB,
+  pair=IN(G11) + "create_atoms 2 single 0.005 0.01 0.012\ncreate_atoms 2 single 0.0055 0.01 0.012\nset atom 3*4 diameter 0.006 density 2500\ngroup v34 id 3 4\n")
+
 
 # ================================================================ write
 def write(only=()):
