@@ -616,6 +616,20 @@ L("P72_fff_delete_overlap_far_pre_no", "f f f box; run 1000; delete_atoms overla
   "run 1000\ndelete_atoms overlap 0.001 v34 v34\nrun 3000 pre no\n", pre=FB,
   pair=IN(G11) + "create_atoms 2 single 0.005 0.01 0.012\ncreate_atoms 2 single 0.0055 0.01 0.012\nset atom 3*4 diameter 0.006 density 2500\ngroup v34 id 3 4\n")
 
+L("D30_labelmap_pair_coeff_labels", "labelmap atom 1 small 2 big; pair_coeff small big hooke 5000 ... (type labels)", "run 3000\n",
+  pre=BASE().replace("pair_coeff * * " + HK + "\n", "labelmap atom 1 small 2 big\npair_coeff * * " + HK + "\npair_coeff small big " + HK5 + "\n"))
+L("D31_labelmap_swapped_order", "labelmap atom 2 small 1 big (label 'small' is type 2); pair_coeff big big kn 5000 (types 1 1), pair_coeff small big kn 8000 (1 2)", "run 3000\n",
+  pre=BASE().replace("pair_coeff * * " + HK + "\n", "labelmap atom 2 small 1 big\npair_coeff * * " + HK + "\npair_coeff big big " + HK5 + "\npair_coeff small big " + HK8 + "\n"))
+DECKS["D32_read_data_type_labels"] = ("# read_data with an Atom Type Labels section (1 small, 2 big) and a PairIJ-free deck: pair_coeff big small kn 5000 after\n" +
+    "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data d.data\npair_style granular\npair_coeff * * " + HK + "\npair_coeff big small " + HK5 + "\n" + TAIL + "run 3000\n", "last run",
+    {"d.data": DATA_HEAD.format(n=2) + "Atom Type Labels\n\n1 small\n2 big\n\n" + ATOMS.replace("\n1 1 0.004", "\n1 small 0.004").replace("\n2 2 0.006", "\n2 big 0.006") + VELS}, {})
+L("D33_create_atoms_by_label", "labelmap atom 1 small 2 big; the pair made by create_atoms small/big; pair_coeff 1 2 kn 5000 by number", "run 3000\n",
+  pre=BASE().replace("pair_coeff * * " + HK + "\n", "labelmap atom 1 small 2 big\npair_coeff * * " + HK + "\npair_coeff 1 2 " + HK5 + "\n"),
+  pair=IN(0.1e-3).replace("create_atoms 1 single", "create_atoms small single").replace("create_atoms 2 single", "create_atoms big single"))
+L("D34_fix_freeze_lv2", "fix freeze on lv2 (the 6 mm sphere held still); lv1 at 1 m/s onto it (relative speed 1)", "unfix integ\ngroup mob subtract all lv2\nfix integ mob nve/sphere\nfix fr lv2 freeze\nrun 3000\n",
+  pair=IN(0.1e-3).replace(f"velocity lv1 set {V1:.10f} 0 0", "velocity lv1 set 1 0 0").replace(f"velocity lv2 set {V2:.10f} 0 0", "velocity lv2 set 0 0 0"))
+L("D35_setforce_lv2_zero", "fix setforce 0 0 0 on lv2 beside nve/sphere on all (lv2 keeps its velocity)", "fix sf lv2 setforce 0 0 0\nrun 3000\n")
+
 
 # ================================================================ write
 def write(only=()):
