@@ -630,6 +630,24 @@ L("D34_fix_freeze_lv2", "fix freeze on lv2 (the 6 mm sphere held still); lv1 at 
   pair=IN(0.1e-3).replace(f"velocity lv1 set {V1:.10f} 0 0", "velocity lv1 set 1 0 0").replace(f"velocity lv2 set {V2:.10f} 0 0", "velocity lv2 set 0 0 0"))
 L("D35_setforce_lv2_zero", "fix setforce 0 0 0 on lv2 beside nve/sphere on all (lv2 keeps its velocity)", "fix sf lv2 setforce 0 0 0\nrun 3000\n")
 
+L("P73_replicate_111_pre_no_no_wall", "no wall fix; run 1000; replicate 1 1 1; run 3000 pre no (the pair across the periodic x boundary)", "run 1000\nreplicate 1 1 1\nrun 3000 pre no\n",
+  pre=BASE(wall=False), pair=PER(G11))
+L("P74_fff_replicate_111_pre_no_no_wall", "f f f box, no wall fix, processors * 1 1, the pair across x = 0.02; run 1000; replicate 1 1 1; run 3000 pre no",
+  "run 1000\nreplicate 1 1 1\nrun 3000 pre no\n", pre=BASE(wall=False, boundary="f f f", head="processors * 1 1\n"), pair=IN(G11))
+L("P75_replicate_111_pre_no_inside_no_wall", "p p f box, no wall fix; the pair inside; run 1000; replicate 1 1 1; run 3000 pre no", "run 1000\nreplicate 1 1 1\nrun 3000 pre no\n",
+  pre=BASE(wall=False, head="processors * 1 1\n"), pair=IN(G11))
+
+L("P76_replicate_pre_no_plain", "the plainest: no wall fix, no processors command; the pair inside; run 1000; replicate 1 1 1; run 3000 pre no (LAMMPS moves no atom in that run)",
+  "run 1000\nreplicate 1 1 1\nrun 3000 pre no\n", pre=BASE(wall=False), pair=IN(G11))
+L("P77_replicate_211_pre_no", "no wall fix; the pair inside; run 1000; replicate 2 1 1; run 3000 pre no", "run 1000\nreplicate 2 1 1\nrun 3000 pre no\n",
+  pre=BASE(wall=False), pair=IN(G11))
+L("P78_replicate_run0_pre_no", "P76 with run 0 between the replicate and the pre-no run (set up again: right)", "run 1000\nreplicate 1 1 1\nrun 0\nrun 3000 pre no\n",
+  pre=BASE(wall=False), pair=IN(G11))
+L("P79_replicate_pre_no_then_run", "P76 then run 3000 (no pre no): the pair meets in the last run (gap 3.1 mm: after the frozen run)", "run 1000\nreplicate 1 1 1\nrun 1000 pre no\nrun 3000\n",
+  pre=BASE(wall=False), pair=IN(G11 + 1e-3))
+L("P80_replicate_pre_no_wall_sphere_only", "WALL: f f f box... no: a wall deck without a wall/gran per-atom history (fix wall/gran granular hooke with linear_nohistory); run 500; replicate 1 1 1; run 3000 pre no",
+  "run 500\nreplicate 1 1 1\nrun 3000 pre no\n", pair=WALLP(0.0011), **WALL)
+
 
 # ================================================================ write
 def write(only=()):
