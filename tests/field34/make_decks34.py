@@ -648,6 +648,32 @@ L("P79_replicate_pre_no_then_run", "P76 then run 3000 (no pre no): the pair meet
 L("P80_replicate_pre_no_wall_sphere_only", "WALL: f f f box... no: a wall deck without a wall/gran per-atom history (fix wall/gran granular hooke with linear_nohistory); run 500; replicate 1 1 1; run 3000 pre no",
   "run 500\nreplicate 1 1 1\nrun 3000 pre no\n", pair=WALLP(0.0011), **WALL)
 
+# ---- Q: fixes removed, added or replaced before `run N pre no` (after SW-RP: a run that is not set up may not integrate)
+L("Q01_unfix_gravity_pre_no", "run 1000; unfix grav; run 3000 pre no", "run 1000\nunfix grav\nrun 3000 pre no\n", pair=IN(G11))
+L("Q02_fix_viscous_zero_added_pre_no", "run 1000; fix vz all viscous 0.0; run 3000 pre no", "run 1000\nfix vz all viscous 0.0\nrun 3000 pre no\n", pair=IN(G11))
+L("Q03_integrator_replaced_pre_no", "run 1000; unfix integ; fix integ all nve/sphere; run 3000 pre no", "run 1000\nunfix integ\nfix integ all nve/sphere\nrun 3000 pre no\n", pair=IN(G11))
+L("Q04_wall_replaced_same_id_pre_no", "WALL: run 500; fix floor all wall/gran ... hooke 5000 (same ID, replaced); run 3000 pre no",
+  "run 500\nfix floor all wall/gran granular " + HK5 + " zplane 0 NULL\nrun 3000 pre no\n", pair=WALLP(0.0011), **WALL)
+L("Q05_unfix_wall_pre_no", "run 1000; unfix floor; run 3000 pre no (the pair far above the floor)", "run 1000\nunfix floor\nrun 3000 pre no\n", pair=IN(G11))
+L("Q06_unfix_wall_refix_pre_no", "WALL: run 500; unfix floor; fix floor ... hooke 5000; run 3000 pre no",
+  "run 500\nunfix floor\nfix floor all wall/gran granular " + HK5 + " zplane 0 NULL\nrun 3000 pre no\n", pair=WALLP(0.0011), **WALL)
+L("Q07_second_gravity_added_pre_no", "run 1000; fix g2 all gravity 9.81 vector 0 0 -1; run 3000 pre no", "run 1000\nfix g2 all gravity 9.81 vector 0 0 -1\nrun 3000 pre no\n", pair=IN(G11))
+L("Q08_integrator_added_other_group_pre_no", "integrator on lv1 only at first (fix i1 lv1, fix i2 lv2); run 1000; unfix i2; fix i2 lv2 nve/sphere; run 3000 pre no",
+  "unfix integ\nfix i1 lv1 nve/sphere\nfix i2 lv2 nve/sphere\nrun 1000\nunfix i2\nfix i2 lv2 nve/sphere\nrun 3000 pre no\n", pair=IN(G11))
+L("Q09_unfix_gravity_pre_no_wall", "WALL: run 500; unfix grav; run 3000 pre no (no gravity: the sphere keeps 1 m/s)", "run 500\nunfix grav\nrun 3000 pre no\n", pair=WALLP(0.0011), **WALL)
+L("Q10_compute_added_pre_no", "run 1000; compute ke all ke/atom; run 3000 pre no (harmless)", "run 1000\ncompute kea all ke/atom\nrun 3000 pre no\n", pair=IN(G11))
+LG("Q11_lig_unfix_gravity_pre_no", "LIGGGHTS: run 1000; unfix gravi; run 3000 pre no", "run 1000\nunfix gravi\nrun 3000 pre no\n", pair=LIN(G11))
+LG("Q12_lig_integrator_replaced_pre_no", "LIGGGHTS: run 1000; unfix integr; fix integr all nve/sphere; run 3000 pre no", "run 1000\nunfix integr\nfix integr all nve/sphere\nrun 3000 pre no\n", pair=LIN(G11))
+
+FAR = "create_atoms 2 single 0.005 0.01 0.012\nset atom 1 diameter 0.006 density 2500\n"
+NEWPAIR = IN(0.1e-3).replace("set atom 1 ", "set atom 2 ").replace("set atom 2 diameter 0.006", "set atom 3 diameter 0.006").replace("group lv1 id 1", "group lv1 id 2").replace("group lv2 id 2", "group lv2 id 3")
+L("Q13_pair_created_after_run_pre_no", "a far sphere; run 1000; the live pair created (ids 2 3), set, velocity; run 3000 pre no", "run 1000\n" + NEWPAIR + "run 3000 pre no\n", pair=FAR)
+L("Q14_all_deleted_pair_created_pre_no", "the pair; run 1000; delete_atoms group all; the pair created again (ids 1 2 after compress), velocity; run 3000 pre no",
+  "run 1000\ndelete_atoms group all compress yes\n" + IN(0.1e-3).replace("group lv1 id 1\ngroup lv2 id 2\n", "group lv1 id 1\ngroup lv2 id 2\n") + "run 3000 pre no\n", pair=IN(0.1e-3, y=0.01))
+L("Q15_pair_created_after_run_no_pre_no", "Q13 without pre no (control)", "run 1000\n" + NEWPAIR + "run 3000\n", pair=FAR)
+L("Q16_read_data_add_pair_pre_no", "a far sphere; run 1000; read_data pair.data add append (the live pair, ids 2 3, with Velocities); run 3000 pre no",
+  "run 1000\nread_data pair.data add append\ngroup lv1 id 2\ngroup lv2 id 3\nrun 3000 pre no\n", pair=FAR, data={"pair.data": DATA_HEAD.format(n=2) + ATOMS + VELS})
+
 
 # ================================================================ write
 def write(only=()):
