@@ -8,6 +8,7 @@ engine test below repeats it."""
 
 import json
 import re
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -349,3 +350,22 @@ def test_a_command_liggghts_does_not_have_stops_the_deck_as_it_stops_liggghts(tm
     assert status == 2 and out == "", out
     assert err.strip().endswith(f"LIGGGHTS stops here: Unknown command: {command}"), err
     assert "#restitution" not in err
+
+
+@needs_liggghts
+@pytest.mark.dem
+def test_an_include_between_a_runs_parts_is_refused_as_liggghts_runs_it_after_the_run(tmp_path):
+    """Field round 35, L06: LIGGGHTS 3.8.0 queues a file a run's every includes and runs it after
+    the whole run (measured here: the prints after each part come first, the included file's after
+    the last), where LAMMPS runs it at once after the part. The audit made the include act from the
+    second part on (e 0.6 printed where LIGGGHTS kept 0.5); such a run is refused in LIGGGHTS."""
+    (tmp_path / "p.in").write_text("print INCLUDED_$(step)\n")
+    (tmp_path / "in.order").write_text(HEAD.format(e=0.5) + PLAIN + TAIL
+                                       + 'run 20 every 10 "print PART_$(step)" "include p.in"\n')
+    done = subprocess.run(["liggghts", "-in", "in.order", "-log", "none"], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=120)
+    said = re.findall(r"^(PART_\d+|INCLUDED_\d+)$", done.stdout, re.M)
+    assert said == ["PART_11", "PART_21", "INCLUDED_21", "INCLUDED_21"], done.stdout[-2000:]
+    (tmp_path / "m.in").write_text("fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9\n")
+    status, out, err = deck(tmp_path, HEAD.format(e=0.5) + PLAIN + TAIL + 'run 40 every 10 "include m.in"\n')
+    assert status == 2 and out == "" and "every runs include between the run's parts" in err, err

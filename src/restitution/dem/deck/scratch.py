@@ -813,7 +813,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
             scratch.silenced[(loc, noop)] = len(scratch.skipped) - 1
             return noop
         return None
-    if word in RUN_COMMANDS and top and (parts := split_every(key, lambda name: _copied_text(scratch, name))) is not None:
+    opened = (lambda name: _copied_text(scratch, name)) if getattr(marker, "includes_in_every", False) else None
+    if word in RUN_COMMANDS and top and (parts := split_every(key, opened)) is not None:
         return _parts(scratch, loc, key, marker, *parts)
     if word in RUN_COMMANDS:
         k = len(scratch.stages)

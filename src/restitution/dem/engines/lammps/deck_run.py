@@ -133,6 +133,9 @@ def marker(root: Path, clock: bool = False, real: bool = False):
     text.guards_set = True
     # LAMMPS reads typographic quotes and spaces as ASCII ones: the copy is made of what it reads
     text.ascii = True
+    # LAMMPS runs a file a run's every includes at once, after the part (field round 35, E14);
+    # LIGGGHTS 3.8.0 queues it until the run has ended (L06: four includes after the last part)
+    text.includes_in_every = True
     return text
 
 
