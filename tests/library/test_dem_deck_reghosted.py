@@ -85,10 +85,11 @@ def test_pre_no_after_the_ghost_atoms_are_made_anew_leaves_the_pairs_out_in_any_
 
 @needs_lammps
 @pytest.mark.dem
-def test_pre_no_after_replicate_is_refused_as_no_atom_moves(tmp_path):
+def test_pre_no_after_replicate_leaves_the_pairs_out_as_no_atom_moves(tmp_path):
     """Field round 34, P76: replicate 1 1 1, then run N pre no: LAMMPS counts the steps and moves no
-    atom (the spheres never meet), where the audit printed the law. A run of no step between them
-    sets the atoms up, and the pair is met."""
+    atom (the spheres never meet), where the audit printed the law. That run's pairs are left out
+    with the reason (a run set up after it is audited: P79); a run of no step between them sets the
+    atoms up, and the pair is met."""
     still = PERIODIC_PAIR + "replicate 1 1 1\nrun 3000 pre no\n"
     try:
         assert abs(lammps_separation_speed(still, tmp_path)) == pytest.approx(1.0, abs=1e-9)    # as they came
@@ -97,8 +98,26 @@ def test_pre_no_after_replicate_is_refused_as_no_atom_moves(tmp_path):
         # a pair met there is no law's either
         assert "(-11," in str(crash), crash
     (tmp_path / "in.deck").write_text(still)
-    status, out, err = run(tmp_path / "in.deck", "--g", "1")
-    assert status == 2 and out == "" and "(replicate 1 1 1), which makes the atoms anew" in err, err
+    status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
+    if status == 2:
+        # the audit makes the runs for real to see whether each ends (a sphere may leave a fixed face,
+        # a run may stop), and in the run after replicate with pre no LAMMPS crashes now and then,
+        # as its own run of the deck does (the folder decides, not the deck: memory it never set):
+        # refused, naming the crash
+        assert out == "" and "LAMMPS crashed making the deck's runs for real" in err, err
+    else:
+        assert status == 0 and json.loads(out)["pairs"] == [], (out, err)
+        assert "(replicate 1 1 1) made the atoms anew and this run has pre no: LAMMPS moves no atom" in err, err
     printed, engine, err = audited_and_measured(still.replace("replicate 1 1 1\n", "replicate 1 1 1\nrun 0\n"),
                                                 tmp_path)
     assert abs(printed - abs(engine)) < 0.004, (printed, engine, err)
+
+
+def test_a_run_that_moves_no_atom_meets_no_pair_and_no_wall():
+    """The reading behind the left-out (whatever LAMMPS' crash in the runs made for real decides):
+    a run with pre no after replicate moves no sphere of any type."""
+    from restitution.dem.deck.meeting import motion
+    from restitution.dem.dialect.state import Deck
+    kind, why = motion(Deck(still=("line 3", "replicate 1 1 1"), movers={"i": ((None, 2), "fix i all nve/sphere",
+                                                                               "all", "nve/sphere")}), 1)
+    assert kind == "unknown" and "LAMMPS moves no atom in it" in why, why

@@ -383,6 +383,11 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
     no atom (LAMMPS says so: "No fixes with time integration, atoms won't move"): "held". Settings
     read where the deck has no run (``ran`` False: the decks written to be audited, not run) give
     "free": their pairs are audited as an integrator would move them."""
+    if deck.still:
+        where, line = deck.still
+        return "unknown", (f"{where} ({line}) made the atoms anew and this run has pre no: LAMMPS moves no atom in "
+                           "it (measured: positions and velocities unchanged over the run), so no contact happens "
+                           "there")
     if not deck.movers:
         if ran:
             return "held", "no fix integrates any atom in this run"

@@ -1185,13 +1185,10 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
     radii = {t: {r for r, _ in sizes} for t, sizes in (deck.held or {}).items()}
     own = {k[0]: tuple(w) for k, (_, w) in deck.coeffs.items() if k[0] == k[1]}
     if pre[-1:] == ["no"] and deck.set_up is not None:
-        if deck.replicated:
-            # field round 34, P75 P76: replicate 1 1 1, then run 3000 pre no: the step count went on
-            # and no atom moved (positions and velocities the same after the run, 1 and 2 processes)
-            raise DeckError(where, line, f"pre no after {deck.replicated[0]} ({deck.replicated[1]}), which makes the "
-                                         "atoms anew: the engine does not set this run up again, and no atom moves "
-                                         "in it (LAMMPS measured: positions and velocities unchanged over the run); "
-                                         "not audited (remove pre no)")
+        # field round 34, P75 P76: replicate 1 1 1, then run 3000 pre no: the step count went on and
+        # no atom moved (positions and velocities the same after the run, 1 and 2 processes); its
+        # pairs and walls are left out (meeting.motion), the runs after it set up again (P79)
+        deck.still = deck.replicated
         if key != deck.set_up:
             raise DeckError(where, line, "pre no after a contact setting changed since the last run: the engine does "
                                          "not set this run up again, so the change acts in part or not at all (LAMMPS "
@@ -1212,7 +1209,7 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
             deck.ghosts_stale = deck.reghosted
         return
     deck.set_up, deck.set_up_radii, deck.set_up_own, deck.stale = key, radii, own, {}
-    deck.reghosted = deck.ghosts_stale = deck.replicated = ()
+    deck.reghosted = deck.ghosts_stale = deck.replicated = deck.still = ()
     deck.set_up_seen = deck.seen
 
 
@@ -1359,7 +1356,7 @@ def contact_key(deck: Deck) -> str:
                        # or not): a first run's once yes or long delay said nothing of a later run's
                        # contacts (field round 28, N41, N47, N48: no eps, LAMMPS met the pair at first touch)
                        deck.neigh,
-                       sorted(deck.stale), deck.ghosts_stale,
+                       sorted(deck.stale), deck.ghosts_stale, deck.still,
                        # a velocity given to atoms no fix moves is read by their contacts' damping (field
                        # round 17: a velocity command between two runs of one stage was not seen)
                        sorted({g for _, _, g in deck.velocities}

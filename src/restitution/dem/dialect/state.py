@@ -260,9 +260,10 @@ class Deck:
     # two processes' sub-domains, is found late (field rounds 32, PB20; 34, P47)
     reghosted: tuple = ()
     ghosts_stale: tuple = ()
-    # (where, line) of a replicate since the last set-up: a run with pre no after it moves no atom
-    # (field round 34, P76)
+    # (where, line) of a replicate since the last set-up, and of the one a run with pre no met: that
+    # run moves no atom (field round 34, P76)
     replicated: tuple = ()
+    still: tuple = ()
     # pairs of group IDs (frozensets) that share no atom: ``group A subtract B C`` makes A apart from
     # C; a later group command of either may add atoms to it, and ends the pair (field round 33,
     # M12: a lid by region moved by fix move beside nve/sphere on ``all`` minus the lid)
