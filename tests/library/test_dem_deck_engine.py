@@ -327,9 +327,28 @@ run 1
     assert set(tmp_path.iterdir()) == before | {tmp_path / "in.deck"}
     # field test r7: fix phonon (its log to a path of the deck's choosing) ran in the engine's pass
     # fix ave/time runs without its file (its values may be read after a run: field round 14, r10)
-    for word, line in (("fix print", 14), ("the file keyword of fix ave/time", 15), ("fix balance", 16),
+    for word, line in (("fix print", 14), ("the file keyword of fix ave/time", 15), ("the out keyword of fix balance", 16),
                        ("fix phonon", 18)):
         assert f"restitution deck: {word} (line {line} and any like it): not executed" in err, err
+
+
+@pytest.mark.parametrize("before", [True, False], ids=["before the pair style", "after it"])
+def test_fix_balance_runs_so_its_order_check_is_lammps(tmp_path, before):
+    """Field round 35, X01 (and LAMMPS' own examples/granular/in.pour.drum): fix balance defined
+    before a pair style with a contact history stops LAMMPS at the run ("Pair styles using neighbor
+    history must be defined before fix bal balance"); the copy made the fix a no-op and printed the
+    law. It now runs in the copy (without its out file), and LAMMPS says it; after the pair style
+    the deck is audited."""
+    balance = "fix bal all balance 1000 1.1 shift x 10 1.1 out balanced.txt\n"
+    style = HEAD.split("pair_style")[0], "pair_style" + HEAD.split("pair_style", 1)[1]
+    text = (style[0] + (balance if before else "") + style[1] + "pair_coeff * * hooke 1000 1 tangential linear_history 10 0 0.3\n"
+            + ("" if before else balance) + "run 1\n")
+    status, out, err = deck(tmp_path, text)
+    if before:
+        assert status == 2 and "must be defined before fix bal balance" in err, err
+    else:
+        assert status == 0, err
+    assert not (tmp_path / "balanced.txt").exists()
 
 
 def test_a_size_given_for_a_type_the_deck_has_not_is_named(tmp_path):
