@@ -333,6 +333,47 @@ L("R16_replicate_first_then_pre_no", "replicate 1 1 1 before any run; run 1000 p
   "replicate 1 1 1\nrun 1000 pre no\nrun 3000\n", pre=RB, pair=IN(G11))
 
 
+# ---- wave 3: after SW-LI (LIGGGHTS runs an include named in run every only after the whole run), files the every
+# writes, next in the every, exclusions and pair_style again on the step, reset_timestep with a time
+LG("L09_lig_every_include_part3", "L06 meeting in part 3 (the audit: 0.7)", "variable e equal 0.5+step/10000\n" + LEV("include m.in"),
+   pair=LIN(G(3)), live="part 3", data={"m.in": LE.format(e="${e}") + "\n"})
+LG("L10_lig_every_include_nested", "LIGGGHTS every \"include a.in\" (a.in includes m.in), meets in part 2", "variable e equal 0.5+step/10000\n" + LEV("include a.in"),
+   pair=LIN(G(2)), live="part 2", data={"a.in": "include m.in\n", "m.in": LE.format(e="${e}") + "\n"})
+LG("L11_lig_every_include_then_run", "L06 then run 3000 where the pair meets (after the run LIGGGHTS runs the four includes at step 4000: e 0.9)",
+   "variable e equal 0.5+step/10000\n" + LEV("include m.in") + "run 3000\n", pair=LIN(4.1e-3), live="run 2", data={"m.in": LE.format(e="${e}") + "\n"})
+LG("L12_lig_every_include_const", "LIGGGHTS every \"include m.in\" with a constant e 0.8 in m.in (meets in part 2)", LEV("include m.in"),
+   pair=LIN(G(2)), live="part 2", data={"m.in": LE.format(e="0.8") + "\n"})
+LG("L13_lig_every_if_include", "LIGGGHTS every 'if \"${s} >= 1000\" then \"include m.in\"' (m.in: e 0.8), meets in part 2",
+   "variable s equal step\nrun 4000 every 1000 'if \"${s} >= 1000\" then \"include m.in\"'\n", pair=LIN(G(2)), live="part 2", data={"m.in": LE.format(e="0.8") + "\n"})
+LG("L14_lig_every_include_wall", "LIGGGHTS WALL (type 1 on the xplane-less floor, e 1-3 0.7): every \"include w.in\" (w.in: fix m3 with 1-3 0.9), meets in part 2",
+   LEV("include w.in"), pair=LWALL(0.0011), live="part 2", data={"w.in": "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.9 0.5 0.4 0.45 0.9 0.45 0.8\n"},
+   PAIR="type 1 on wall wprim")
+L("E71_next_index_five", "variable kk index 3000 4000 5000 6000 7000; every \"pair_coeff ${kk}\" \"next kk\" (part 3: 4000)",
+  "variable kk index 3000 4000 5000 6000 7000\n" + EV(PCs("${kk}"), "next kk"), pair=IN(G(3)), live="part 3")
+L("E72_print_file_then_include", "every \"print 'pair_coeff ... $(2000+step) ...' file k.in\" \"include k.in\" (a file the every writes; part 2: 3000)",
+  "run 4000 every 1000 \"print '" + PCs("$(2000+step)") + "' file f35k.in screen no\" \"include f35k.in\"\n", pair=IN(G(2)), live="part 2")
+L("E73_if_step_exclude", "every 'if \"$(step) >= 1000\" then \"neigh_modify exclude type 1 2\"' (from part 2 the pair is not seen)",
+  "run 4000 every 1000 'if \"$(step) >= 1000\" then \"neigh_modify exclude type 1 2\"'\n", pair=IN(G(2)), live="part 2")
+L("E74_pair_style_again_step", "every \"pair_style granular\" \"pair_coeff * * hooke $(2000+step) ...\" (part 2: 3000)",
+  EV("pair_style granular", "pair_coeff * * hooke $(2000+step) 3000 damping mass_velocity tangential linear_nohistory 1 0.3"), pair=IN(G(2)), live="part 2")
+L("E75_reset_timestep_time", "reset_timestep 0 time 0.005; every \"pair_coeff $(1000+1e6*time)\" (time 0.006 after part 1: 7000)",
+  "reset_timestep 0 time 0.005\n" + EV(PCs("$(1000+1e6*time)")), pair=IN(G(2)), live="part 2")
+L("E76_time_var_after_run_dt_change", "run 2000 every 1000 \"timestep 2e-6\"; pair_coeff $(1000+1e6*time) after it (time 0.003: 4000); run 3000 meets",
+  'run 2000 every 1000 "timestep 2e-6"\n' + PCs("$(1000+1e6*time)") + "\ntimestep 1e-6\nrun 3000\n", pair=IN(3.1e-3), live="run 2")
+L("E77_every_include_print_var", "every \"include p.in\" (p.in: variable kk equal $(2000+step); print ${kk}); pair_coeff ${kk} after the run (6000)",
+  EV("include p.in") + PCs("${kk}") + "\nrun 3000\n", pair=IN(4.1e-3), live="run 2", data={"p.in": "variable kk equal $(2000+step)\nprint ${kk}\n"})
+L("E78_if_elif_var_string", "variable kn string 2000; every 'if \"$(step) == 2000\" then \"variable kn string 5000\"' \"pair_coeff ${kn}\" (part 2: 2000, part 3: 5000)",
+  "variable kn string 2000\nrun 4000 every 1000 'if \"$(step) == 2000\" then \"variable kn string 5000\"' \"" + PCs("${kn}") + "\"\n", pair=IN(G(3)), live="part 3")
+L("N23_fff_nsq_cutoff_short", "f f f processors * 1 1: pair_style granular 0.0045 (a global cutoff short of the 5 mm contact), neighbor 0.0003 nsq; one run",
+  "run 3000\n", pre=BASE(boundary="f f f", head="processors * 1 1\n", pstyle="pair_style granular 0.0045\n") + "neighbor 0.0003 nsq\n", pair=IN(G11))
+L("N24_fff_bin_cutoff_short", "N23 with a bin list", "run 3000\n", pre=BASE(boundary="f f f", head="processors * 1 1\n", pstyle="pair_style granular 0.0045\n") + "neighbor 0.0003 bin\n", pair=IN(G11))
+L("N25_ppf_nsq_pre_no_periodic", "p p f processors * 1 1, nsq; the pair across the periodic x boundary; run 1000; run 3000 pre no", "neighbor 0.001 nsq\nrun 1000\nrun 3000 pre no\n",
+  pre=BASE(head="processors * 1 1\n"), pair=PER(G11))
+L("N26_restart_no_pair_style_two_bins", "f f f processors * 1 1: restart without pair_style again, the pair 1.1 mm apart across a bin border and the sub-domain border (x 0.02)",
+  RST.format(pair=""), pre=FFFX, pair=IN(G11, xc=0.0201))
+L("R17_replicate_every_no_pre", "run 4000 every 1000 \"replicate 1 1 1\" \"run 0\"? no: replicate then run 0 post no in the every, pre no run (meets in part 2)",
+  'run 4000 pre no every 1000 "replicate 1 1 1" "run 0 post no"\n', pre=RB, pair=IN(G11), live="part 2")
+
 # ================================================================ O: ordinary modeller decks, shortened (sources in FINDINGS.md)
 OD = os.path.join(HERE, "odecks")
 F34 = os.path.join(HERE, "..", "field34", "decks")
@@ -347,6 +388,22 @@ DECKS["O05_lig_snow_slope_np_every"] = (open(os.path.join(OD, "O05.in")).read(),
                                         {"slope.stl": open(os.path.join(F34, "O04_lig_snow_slope_kunwar", "slope.stl")).read()},
                                         {"LIGGGHTS": "", "SEP": "0.01", "PAIR": "types 1 1", "NP": "2"})
 
+
+DECKS["O06_drum_pour_balance_after_pair"] = (open(os.path.join(OD, "O06.in")).read(), "run 2", {}, dict(O11))
+DECKS["O07_pour_flatwall"] = (open(os.path.join(OD, "O07.in")).read(), "run 1", {}, {"PAIR": "types 2 2", "SEP": "1.0"})
+RAW("X01_fix_balance_before_pair_history", "O02's stop made small: fix balance before pair_style granular with a history (linear_history); LAMMPS stops at the run",
+    "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.1 units box\ncreate_box 2 box\n"
+    "fix bal all balance 100 1.0 shift x 5 1.1\npair_style granular\npair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1 0.3\n"
+    "fix grav all gravity 9.81 vector 0 0 -1\nfix integ all nve/sphere\ntimestep 1e-6\n" + IN(0.1e-3) + "run 3000\n")
+RAW("X02_fix_balance_after_pair_history", "X01 with fix balance after pair_style (control)",
+    "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.1 units box\ncreate_box 2 box\n"
+    "pair_style granular\npair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1 0.3\nfix bal all balance 100 1.0 shift x 5 1.1\n"
+    "fix grav all gravity 9.81 vector 0 0 -1\nfix integ all nve/sphere\ntimestep 1e-6\n" + IN(0.1e-3) + "run 3000\n")
+RAW("X03_fix_wall_gran_history_before_pair", "a wall/gran with history given before pair_style (the order LAMMPS may refuse likewise)",
+    "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.1 units box\ncreate_box 2 box\n"
+    "fix floor all wall/gran granular hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1 0.3 zplane 0 NULL\n"
+    "pair_style granular\npair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1 0.3\n"
+    "fix grav all gravity 9.81 vector 0 0 -1\nfix integ all nve/sphere\ntimestep 1e-6\n" + IN(0.1e-3) + "run 3000\n")
 
 # ================================================================ write
 def write(only=()):
