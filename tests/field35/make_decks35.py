@@ -374,6 +374,33 @@ L("N26_restart_no_pair_style_two_bins", "f f f processors * 1 1: restart without
 L("R17_replicate_every_no_pre", "run 4000 every 1000 \"replicate 1 1 1\" \"run 0\"? no: replicate then run 0 post no in the every, pre no run (meets in part 2)",
   'run 4000 pre no every 1000 "replicate 1 1 1" "run 0 post no"\n', pre=RB, pair=IN(G11), live="part 2")
 
+# ---- wave 5: an include under an if and with control flow in the every, time-dependent fixes (runs made for real),
+# an adaptive time step, several processes with balance in the every
+L("E79_if_then_include", "every 'if \"$(step) >= 1000\" then \"include m.in\"' (m.in: pair_coeff 5000), meets in part 2",
+  "run 4000 every 1000 'if \"$(step) >= 1000\" then \"include m.in\"'\n", pair=IN(G(2)), live="part 2", data={"m.in": PCs("5000") + "\n"})
+L("E80_include_with_jump", "every \"include j.in\" (j.in: jump SELF skip; a pair_coeff 5000 skipped; label skip; pair_coeff $(2000+step))",
+  EV("include j.in"), pair=IN(G(2)), live="part 2", data={"j.in": "jump SELF skip\n" + PCs("5000") + "\nlabel skip\n" + PCs("$(2000+step)") + "\n"})
+L("E81_wiggle_wall_time_fix", "WALL: fix floor ... wiggle z 0 1 (a time-dependent fix, amplitude 0); every \"pair_coeff 1 2 $(2000+step)\"; the pair meets in part 2",
+  EV(PCs("$(2000+step)")), pre=BASE().replace("zplane 0 NULL\n", "zplane 0 NULL wiggle z 0.0 1.0\n"), pair=IN(G(2)), live="part 2")
+L("E82_fix_move_far_sphere_time", "fix move linear on a far sphere (time-dependent); every \"pair_coeff $(2000+1e6*time)\" (part 3: 4000)",
+  "create_atoms 2 single 0.005 0.005 0.03\nset atom 3 diameter 0.004 density 2500\ngroup far id 3\nfix mv far move linear 0.01 0 0\nunfix integ\ngroup rest id 1 2\nfix integ rest nve/sphere\n"
+  + EV(PCs("$(2000+1e6*time)")), pair=IN(G(3)), live="part 3")
+L("E83_dt_reset_time", "fix dt/reset 1 NULL NULL 5e-7 units box (dt from the fastest sphere: 6.5e-7); every \"pair_coeff $(2000+1e6*time)\" (part 2: 2648)",
+  "fix dtr all dt/reset 1 NULL NULL 5e-7 units box\n" + EV(PCs("$(2000+1e6*time)")), pair=IN(0.70e-3), live="part 2")
+L("E84_include_timestep_time", "every \"include t.in\" (t.in: timestep 5e-7; pair_coeff $(2000+1e6*time)) in parts of 2000 (part 3: 5000)",
+  EV2("include t.in"), pair=IN(3.1e-3), live="part 3", data={"t.in": "timestep 5e-7\n" + PCs("$(2000+1e6*time)") + "\n"})
+L("E85_fff_np_every_balance_step", "f f f processors * 1 1; the pair across x 0.02; run 4000 every 1000 \"balance 1.0 x uniform\" \"pair_coeff $(2000+step)\" (part 2: 3000)",
+  EV("balance 1.0 x uniform", PCs("$(2000+step)")), pre=FFFX, pair=IN(G(2)), live="part 2")
+L("E86_elaplong", "variable ke equal 2000+elaplong; every \"pair_coeff ${ke}\" (elaplong: steps since the run's first step, 3000 in part 2)",
+  "variable ke equal 2000+elaplong\n" + EV(PCs("${ke}")), pair=IN(G(2)), live="part 2")
+L("E87_elaplong_start", "run 500; variable ke equal 2000+elaplong; run 4000 start 0 stop 8000 every 1000 \"pair_coeff ${ke}\" (elaplong from start 0: 3500 in part 2 of run 2)",
+  'run 500\nvariable ke equal 2000+elaplong\nrun 4000 start 0 stop 8000 every 1000 "' + PCs("${ke}") + '"\n', pair=IN(1.6e-3), live="part 2 of run 2")
+LG("L15_lig_every_direct_then_include", "LIGGGHTS every \"fix m3 ... 0.8\" \"include m.in\" (m.in: e 0.6): LIGGGHTS 0.8 from part 2 (the include after the run)",
+   LEV(LE.format(e="0.8"), "include m.in"), pair=LIN(G(2)), live="part 2", data={"m.in": LE.format(e="0.6") + "\n"})
+LG("L16_lig_loop_every_include", "LIGGGHTS loop of 2 around run 2000 every 1000 \"include m.in\" (e of step), meets at step 2100 (the includes of pass 1 ran at 2000: e 0.7)",
+   "variable e equal 0.5+step/10000\nvariable i loop 2\nlabel lp\nrun 2000 every 1000 \"include m.in\"\nnext i\njump SELF lp\n", pair=LIN(G(3)), live="pass 2",
+   data={"m.in": LE.format(e="${e}") + "\n"})
+
 # ================================================================ O: ordinary modeller decks, shortened (sources in FINDINGS.md)
 OD = os.path.join(HERE, "odecks")
 F34 = os.path.join(HERE, "..", "field34", "decks")
@@ -389,6 +416,9 @@ DECKS["O05_lig_snow_slope_np_every"] = (open(os.path.join(OD, "O05.in")).read(),
                                         {"LIGGGHTS": "", "SEP": "0.01", "PAIR": "types 1 1", "NP": "2"})
 
 
+DECKS["O08_granregion_box"] = (open(os.path.join(OD, "O08.in")).read(), "run 1", {}, dict(O11))
+DECKS["O09_pour_chute"] = (open(os.path.join(OD, "O09.in")).read(), "run 1", {}, dict(O11))
+DECKS["O10_lig_contact_models"] = (open(os.path.join(OD, "O10.in")).read(), "run 1", {}, {"LIGGGHTS": "", "SEP": "0.005", "PAIR": "types 1 1"})
 DECKS["O06_drum_pour_balance_after_pair"] = (open(os.path.join(OD, "O06.in")).read(), "run 2", {}, dict(O11))
 DECKS["O07_pour_flatwall"] = (open(os.path.join(OD, "O07.in")).read(), "run 1", {}, {"PAIR": "types 2 2", "SEP": "1.0"})
 RAW("X01_fix_balance_before_pair_history", "O02's stop made small: fix balance before pair_style granular with a history (linear_history); LAMMPS stops at the run",
