@@ -401,6 +401,51 @@ LG("L16_lig_loop_every_include", "LIGGGHTS loop of 2 around run 2000 every 1000 
    "variable e equal 0.5+step/10000\nvariable i loop 2\nlabel lp\nrun 2000 every 1000 \"include m.in\"\nnext i\njump SELF lp\n", pair=LIN(G(3)), live="pass 2",
    data={"m.in": LE.format(e="${e}") + "\n"})
 
+# ---- wave 6: commands in the every whose effect hangs on where the spheres are after a part (a region lv2 enters
+# during part 1: x 0.02355 at the start, 0.023321 after 1000 steps)
+RG = "region R block 0.0230 0.0234 0 0.04 0 0.1 units box\n"
+L("E88_set_region_type", "pair_coeff 1 1 kn 5000; every \"set region R type 1\" (R holds lv2 after part 1 only: the pair is 1 1 from part 2, 0.578975)",
+  "pair_coeff 1 1 " + HK5 + "\n" + RG + EV("set region R type 1"), pair=IN(G(2)), live="part 2", PAIR="types 1 1")
+L("E89_group_region_set", "pair_coeff 1 1 kn 5000; every \"group gr region R\" \"set group gr type 1\" (as E88 by a group)",
+  "pair_coeff 1 1 " + HK5 + "\n" + RG + EV("group gr region R", "set group gr type 1"), pair=IN(G(2)), live="part 2", PAIR="types 1 1")
+L("E90_count_region", "every \"pair_coeff 1 2 hooke $(2000+1000*count(all,R))\" (R holds lv2 after part 1: 3000)",
+  RG + EV(PCs("$(2000+1000*count(all,R))")), pair=IN(G(2)), live="part 2")
+L("E91_set_region_density", "every \"set region R density 5000\" (lv2 in R after part 1: its density doubled in part 2)",
+  RG + EV("set region R density 5000"), pair=IN(G(2)), live="part 2")
+L("E92_if_x_set_type", "pair_coeff 1 1 kn 5000; every 'if \"$(x[2]) < 0.0234\" then \"set atom 2 type 1\"' with the map (lv2 passes 0.0234 during part 1)",
+  "pair_coeff 1 1 " + HK5 + "\nrun 4000 every 1000 'if \"$(x[2]) < 0.0234\" then \"set atom 2 type 1\"'\n", pre=MAP, pair=IN(G(2)), live="part 2", PAIR="types 1 1")
+L("E93_set_region_type_pre_no", "E88 with pre no", "pair_coeff 1 1 " + HK5 + "\n" + RG + 'run 4000 pre no every 1000 "set region R type 1"\n', pair=IN(G(2)), live="part 2", PAIR="types 1 1")
+L("E94_set_region_type_between_runs", "pair_coeff 1 1 kn 5000; run 1000; set region R type 1; run 3000 (the same as separate runs: control)",
+  "pair_coeff 1 1 " + HK5 + "\n" + RG + "run 1000\nset region R type 1\nrun 3000\n", pair=IN(G(2)), PAIR="types 1 1")
+
+# ---- wave 7: after a run every whose commands read the step (a clocked pass), a command whose effect hangs on where
+# the spheres are (lv2 enters R2 only during the every run: x 0.02505 at the start, 0.024136 after 4000 steps)
+RG2 = "region R2 block 0.0239 0.0243 0 0.04 0 0.1 units box\n"
+CLK = 'run 4000 every 1000 "' + PCs("$(2000+0*step)") + '"\n'
+L("E95_clocked_then_set_region", "every \"pair_coeff $(2000+0*step)\" (reads the step); then set region R2 type 1 (lv2 there after the run only); pair_coeff 1 1 kn 5000; run 3000 (0.578975)",
+  RG2 + CLK + "set region R2 type 1\npair_coeff 1 1 " + HK5 + "\nrun 3000\n", pair=IN(4.1e-3), live="run 2", PAIR="types 1 1")
+L("E96_clocked_then_delete_region", "E95 with delete_atoms region R2 after the every run (lv2 gone: no contact)",
+  RG2 + CLK + "delete_atoms region R2\nrun 3000\n", pair=IN(4.1e-3), live="run 2")
+L("E97_clocked_then_group_region", "E95 by group gr region R2 / set group gr type 1", RG2 + CLK + "group gr region R2\nset group gr type 1\npair_coeff 1 1 " + HK5 + "\nrun 3000\n",
+  pair=IN(4.1e-3), live="run 2", PAIR="types 1 1")
+L("E98_clocked_then_if_x", "with the map: E95 by if \"$(x[2]) < 0.0243\" then \"set atom 2 type 1\" after the every run", CLK + "if \"$(x[2]) < 0.0243\" then \"set atom 2 type 1\"\npair_coeff 1 1 " + HK5 + "\nrun 3000\n",
+  pre=MAP, pair=IN(4.1e-3), live="run 2", PAIR="types 1 1")
+L("E99_time_clocked_then_set_region", "every \"pair_coeff $(2000+0*time)\"; then E95's set region R2 type 1", RG2 + 'run 4000 every 1000 "' + PCs("$(2000+0*time)") + '"\n'
+  + "set region R2 type 1\npair_coeff 1 1 " + HK5 + "\nrun 3000\n", pair=IN(4.1e-3), live="run 2", PAIR="types 1 1")
+L("EA0_include_clocked_then_set_region", "every \"include k.in\" (k.in: pair_coeff $(2000+0*step)); then E95's set region", RG2 + EV("include k.in")
+  + "set region R2 type 1\npair_coeff 1 1 " + HK5 + "\nrun 3000\n", pair=IN(4.1e-3), live="run 2", PAIR="types 1 1", data={"k.in": PCs("$(2000+0*step)") + "\n"})
+
+# ---- wave 8: part lengths, post no, a single part, a loop variable read in the every
+L("EB1_parts_uneven", "run 3500 every 1000 \"pair_coeff $(2000+step)\" (parts 1000 1000 1000 500?), meets in part 3 (4000)",
+  'run 3500 every 1000 "' + PCs("$(2000+step)") + '"\n', pair=IN(G(3)), live="part 3")
+L("EB2_post_no", "run 4000 post no every 1000 \"pair_coeff $(2000+step)\" (part 2: 3000)", 'run 4000 post no every 1000 "' + PCs("$(2000+step)") + '"\n', pair=IN(G(2)), live="part 2")
+L("EB3_single_part_then_run", "run 2000 every 2000 \"pair_coeff $(2000+step)\" (one part; 4000 after it); run 3000 meets (4000)",
+  'run 2000 every 2000 "' + PCs("$(2000+step)") + '"\nrun 3000\n', pair=IN(2.1e-3), live="run 2")
+L("EB4_loop_var_in_every", "variable i loop 3; label l; run 1000 every 500 \"pair_coeff $(1000+1000*v_i)\"; next i; jump SELF l (meets at step 1600: 3000)",
+  'variable i loop 3\nlabel l\nrun 1000 every 500 "' + PCs("$(1000+1000*v_i)") + '"\nnext i\njump SELF l\n', pair=IN(1.6e-3), live="pass 2 part 2")
+L("EB5_every_500_meets_part3", "run 2000 every 500 'if \"$(step) == 1000\" then \"pair_coeff 5000\"' (meets at step 1100: 5000)",
+  "run 2000 every 500 'if \"$(step) == 1000\" then \"" + PCs("5000") + "\"'\n", pair=IN(G(2)), live="part 3")
+
 # ================================================================ O: ordinary modeller decks, shortened (sources in FINDINGS.md)
 OD = os.path.join(HERE, "odecks")
 F34 = os.path.join(HERE, "..", "field34", "decks")
