@@ -446,6 +446,11 @@ L("EB4_loop_var_in_every", "variable i loop 3; label l; run 1000 every 500 \"pai
 L("EB5_every_500_meets_part3", "run 2000 every 500 'if \"$(step) == 1000\" then \"pair_coeff 5000\"' (meets at step 1100: 5000)",
   "run 2000 every 500 'if \"$(step) == 1000\" then \"" + PCs("5000") + "\"'\n", pair=IN(G(2)), live="part 3")
 
+L("EC1_reset_timestep0_time", "every \"reset_timestep 0\" \"pair_coeff $(2000+1e6*time)\" (the time goes on over the reset? part 3)",
+  EV("reset_timestep 0", PCs("$(2000+1e6*time)")), pair=IN(G(3)), live="part 3")
+L("EC2_reset_timestep0_time0", "every \"reset_timestep 0 time 0\" \"pair_coeff $(3000+1e6*time)\" (time 0 after each part: 3000)",
+  EV("reset_timestep 0 time 0", PCs("$(3000+1e6*time)")), pair=IN(G(3)), live="part 3")
+
 # ================================================================ O: ordinary modeller decks, shortened (sources in FINDINGS.md)
 OD = os.path.join(HERE, "odecks")
 F34 = os.path.join(HERE, "..", "field34", "decks")
