@@ -656,14 +656,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                                           f"budget ({done.spent}; runs skipped): {cause} (--budget SECONDS allows "
                                           "more time); not audited")
 
-        if scratch.parts and (hit := read_in_run(commands, _source(commands, scratch),
-                                                 {scratch.stages[k][:2] for k in scratch.parts})) is not None:
+        parted = {scratch.stages[k][:2]: key for k, (key, _) in scratch.parts.items()}
+        if parted and (hit := read_in_run(commands, _source(commands, scratch), set(parted))) is not None:
             loc, text = hit
-            raise DeckError(place(loc), {scratch.stages[k][:2]: key for k, (key, _) in scratch.parts.items()}[loc],
-                            f"run ... every runs {text} between the run's parts, which reads a value {engine} gives "
-                            "only inside a run (a ramp, a wiggle, the steps elapsed, a compute's), and the audit "
-                            "runs it between runs of its own copy, where that value is another: not audited; split "
-                            "the run into runs with the commands between them, each reading what a run leaves")
+            raise DeckError(place(loc), parted[loc], _read_in_run(engine, text))
 
         def read_file(name: str) -> str:
             return (scratch.deck.parent / name).read_text(encoding="utf-8", errors="replace")
@@ -697,16 +693,11 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                     named[0].strip("\"'"), scratch.deck.parent, path.resolve().parent):
                 message += (": the engine sees the deck's folder only (a copy of it, made safe), so a file outside "
                             "the deck's folder is not run; copy it beside the deck")
-            parted = {scratch.stages[k][:2]: key for k, (key, _) in scratch.parts.items()}
             if commands and commands[-1].stage is None and commands[-1].loc in parted:
-                # a command a run's every runs, which the copy runs between runs of its own: LAMMPS
-                # evaluates it inside its run, where what stopped the copy (elapsed, a ramp, a
-                # compute's value through a variable) is defined (field round 34, E05)
-                raise DeckError(where, parted[commands[-1].loc],
-                                f"run ... every runs {line} between the run's parts, where {engine} evaluates it "
-                                "inside the run; the audit runs it between runs of its own copy, where "
-                                f"{engine} stops on it ({message}): not audited; split the run into runs with "
-                                "the commands between them, each reading what a run leaves")
+                # a command a run's every runs, which the copy runs between runs of its own: the
+                # engine evaluates it inside its run, where what stopped the copy may be defined
+                # (field round 34, E05: elapsed, before read_in_run foresaw it)
+                raise DeckError(where, parted[commands[-1].loc], _read_in_run(engine, line, message))
             # where the runs were not made (made[1]: the commands of a pass that made them and stopped
             # too), what the pass read after a run decided where it went, and its stop is its own
             unmade = found if made is None or made[1] is None else []
@@ -875,6 +866,26 @@ _RUN_STATE = re.compile(r"Divide by 0|Modulo 0|Sqrt of negative|Log of zero|Powe
                         r"Cannot open restart file|ended without an error message|Atom types must start from 1")
 #: The fixes that make atoms as a run goes, which a pass whose runs are skipped never makes
 _INSERTING = re.compile(r"fix\s+\S+\s+\S+\s+(pour|deposit|insert/\S+)\b")
+
+
+def _read_in_run(engine: str, command: str, stop: str | None = None) -> str:
+    """The refusal of a command a run's every runs between its parts that reads, or may read, what
+    the engine gives only inside a run (a ramp, a wiggle, the steps elapsed, a compute's value),
+    which the copy runs between runs of its own; ``stop``: the engine's message where the copy
+    stopped on it.
+
+    Examples
+    --------
+    >>> _read_in_run("LAMMPS", "pair_coeff * * hooke ${k} 0")[:60]
+    'run ... every runs pair_coeff * * hooke ${k} 0 between the r'
+    >>> "(LAMMPS stops on it there: x)" in _read_in_run("LAMMPS", "set type 1 density ${d}", "x")
+    True
+    """
+    there = f" ({engine} stops on it there: {stop})" if stop else ""
+    return (f"run ... every runs {command} between the run's parts, which reads a value {engine} gives only inside "
+            f"a run (a ramp, a wiggle, the steps elapsed, a compute's), and the audit runs it between runs of its "
+            f"own copy, where that value is another{there}: not audited; split the run into runs with the commands "
+            "between them, each reading what a run leaves")
 
 
 def _stopped(engine: str, message: str, commands: list, read: list = ()) -> str:
