@@ -332,6 +332,18 @@ run 1
         assert f"restitution deck: {word} (line {line} and any like it): not executed" in err, err
 
 
+@pytest.mark.parametrize("fix", ['fix a all ave/time 1 1 1 c_ke file "a.txt', 'fix b all balance 1 1.1 shift x 5 1.1 out "b.txt'],
+                         ids=["ave/time", "balance"])
+def test_an_output_fix_whose_file_name_is_not_closed_stops_as_the_engine_does(tmp_path, fix):
+    """An unclosed quote in an output fix's file name stops LAMMPS ("Unmatched double quote"); the
+    copy split the line at whitespace and dropped the file keyword with the broken name, so it ran a
+    line the engine never runs and printed the law. The line is now left as written: one line,
+    LAMMPS' message, the line as the deck wrote it."""
+    status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\ncompute ke all ke\n{fix}\nrun 1\n")
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert "Unmatched double quote" in err and f"({fix}):" in err and "#restitution" not in err, err
+
+
 @pytest.mark.parametrize("before", [True, False], ids=["before the pair style", "after it"])
 def test_fix_balance_runs_so_its_order_check_is_lammps(tmp_path, before):
     """Field round 35, X01 (and LAMMPS' own examples/granular/in.pour.drum): fix balance defined

@@ -674,7 +674,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             where, line, message = engine_error(done.error + "\n" + done.echo[-4000:], scratch, done.status)
             if commands:     # echoed before it runs: the last command echoed is the one the engine stopped on
                 # (as the deck wrote it, not as the copy guards a set)
-                where, line = place(commands[-1].loc), _unguarded(commands[-1].text)
+                # (an unclosed quote holds the copy's tag comment: not the deck's)
+                where, line = place(commands[-1].loc), _untagged(_unguarded(commands[-1].text))
             if _marker_stopped(done.echo, root):
                 # the atoms have no radius to write (an atom style without one): the deck's own
                 # refusal where it has one (its pair style, say), else this
@@ -888,6 +889,12 @@ def _read_in_run(engine: str, command: str, stop: str | None = None) -> str:
             "between them, each reading what a run leaves")
 
 
+def _untagged(text: str) -> str:
+    """``text`` without the copy's tag comments, which LIGGGHTS repeats in its "Unknown command" and
+    an unclosed quote keeps inside the line."""
+    return re.sub(r"\s*#restitution-[0-9a-f]+@\S*", "", text)
+
+
 def _stopped(engine: str, message: str, commands: list, read: list = ()) -> str:
     """The reason a deck is refused where its engine stopped in the audit's pass, said truly: the
     engine's own stop, the audit's confinement, or the pass's runs (skipped by LAMMPS, cut to one
@@ -912,8 +919,7 @@ def _stopped(engine: str, message: str, commands: list, read: list = ()) -> str:
     ...                [((None, 5), 'if "$(count(all)) > 9" then "jump SELF d"')]))
     LAMMPS stopped here in the audit's pass, in which the runs before are skipped, so it holds not what they make of the atoms, the step and the values computed from them, and line 5 (if "$(count(all)) > 9" then "jump SELF d") read such a value before this, which decided the branches and values from there on: Invalid variable reference v_c in variable formula; the deck run by hand may not stop here, but what it reads here depends on its runs, which the audit does not make: not audited
     """
-    # (LIGGGHTS' "Unknown command" repeats the line as it read it, the audit's tag comment and all)
-    message = re.sub(r"\s*#restitution-[0-9a-f]+@\S*", "", message)
+    message = _untagged(message)
     if any(cause in message for cause in _CONFINED):
         return (f"{engine}, run by the audit where it may write only in its copy of the deck's folder and a stand-in "
                 f"of the folders outside it, stopped here: {message}; the deck run by hand may not stop here: "

@@ -784,34 +784,13 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
             # it runs: LAMMPS checks at a run's set-up that a pair style with a neighbour history is
             # defined before it, and stops where not (field round 35, X01, and LAMMPS' own
             # examples/granular/in.pour.drum: "Pair styles using neighbor history must be defined
-            # before fix bal balance"), which the copy must show; its one way to write, the out
-            # keyword, is dropped with its file name
-            try:
-                read, written = words_of(key), written_words(key)
-            except ScriptError:
-                return None                  # the engine stops on the line: nothing written
-            kept = [w for k, w in enumerate(written) if read[k] != "out" and (k == 0 or read[k - 1] != "out")]
-            if kept == written:
-                return None
-            scratch.skipped.append(("the out keyword of fix balance", loc, key))
-            scratch.silenced[(loc, normalised(" ".join(kept)))] = len(scratch.skipped) - 1
-            return " ".join(kept)
+            # before fix bal balance"), which the copy must show; its one way to write is dropped
+            return _without_file(scratch, loc, key, "out", "the out keyword of fix balance")
         if len(words) > 3 and words[3] in _AVERAGING_FIXES:
             # it computes what a variable may read after a run (field round 14, r10: an if on
             # $(f_at) after the run stopped on the stand-in, "Mismatched fix in variable formula");
-            # its one way to write, the file keyword, is dropped with its name as the engine reads
-            # it: a quoted name is one word, spaces and all (field round 30, O09: file "a a.txt" left
-            # 'a.txt"' behind, an unmatched quote the engine stopped on)
-            try:
-                read, written = words_of(key), written_words(key)
-            except ScriptError:
-                read = written = words       # the engine stops on the line: nothing written
-            kept = [w for k, w in enumerate(written) if read[k] != "file" and (k == 0 or read[k - 1] != "file")]
-            if kept == written:
-                return None
-            scratch.skipped.append((f"the file keyword of fix {words[3]}", loc, key))
-            scratch.silenced[(loc, normalised(" ".join(kept)))] = len(scratch.skipped) - 1
-            return " ".join(kept)
+            # its one way to write is dropped
+            return _without_file(scratch, loc, key, "file", f"the file keyword of fix {words[3]}")
         if len(words) > 3 and words[3] == "halt" and "message" in words[4:-1]:
             # its message is how the audit sees a soft halt met in the runs made for real (field
             # round 24, H01: message no hid it); it prints, nothing more
@@ -856,6 +835,25 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
         _quoted(scratch, probe, loc)
         return f'if "$(count(all)) > 0" then "{key}" else "{probe}"'
     return None
+
+
+def _without_file(scratch: Scratch, loc, key: str, keyword: str, what: str) -> str | None:
+    """A fix that runs in the copy without the keyword by which it writes a file (``keyword`` and
+    the name after it), named on stderr as ``what``; None where it has none. The name is dropped as
+    the engine reads it: a quoted name is one word, spaces and all (field round 30, O09: file
+    "a a.txt" left 'a.txt"' behind, an unmatched quote the engine stopped on). A line that does not
+    parse is left as written, for the engine stops on it (an unclosed quote: split at whitespace
+    and rewritten without its file, it had become a line the engine ran)."""
+    try:
+        read, written = words_of(key), written_words(key)
+    except ScriptError:
+        return None
+    kept = [w for k, w in enumerate(written) if read[k] != keyword and (k == 0 or read[k - 1] != keyword)]
+    if kept == written:
+        return None
+    scratch.skipped.append((what, loc, key))
+    scratch.silenced[(loc, normalised(" ".join(kept)))] = len(scratch.skipped) - 1
+    return " ".join(kept)
 
 
 def _inline(text: str) -> list:
