@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["run_dependent", "read_in_run", "boundary_faces", "resized_by_runs", "lost_in_runs", "stops_in_runs", "fixed_face", "constant_in_time", "CLOCK"]
+__all__ = ["run_dependent", "read_in_run", "IN_RUN_ONLY", "boundary_faces", "resized_by_runs", "lost_in_runs", "stops_in_runs", "fixed_face", "constant_in_time", "CLOCK"]
 
 #: Variable styles whose value is set when defined or by ``next``, never by a run (``format``
 #: is not one: it formats an equal-style variable when used).
@@ -221,20 +221,20 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
 
 #: What a formula reads that LAMMPS gives only inside a run: a function of the run's own start and
 #: end (a ramp, a wiggle, the steps elapsed), or a compute's or fix's value, current there
-_IN_RUN_ONLY = re.compile(r"\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(|\belap(?:sed|long)\b|\b(?:[cf]|[id]2?)_\w")
+IN_RUN_ONLY = re.compile(r"\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(|\belap(?:sed|long)\b|\b(?:[cf]|[id]2?)_\w")
 
 
 def _reads_in_run(text: str, styles: dict, seen: frozenset = frozenset()) -> bool:
     """Whether ``text``, through its substitutions and the variables they (or its ``v_`` words)
-    name, reads a value LAMMPS gives only inside a run (:data:`_IN_RUN_ONLY`)."""
+    name, reads a value LAMMPS gives only inside a run (:data:`IN_RUN_ONLY`)."""
     names, formulas, _ = _references(text)
-    if any(_IN_RUN_ONLY.search(f) for f in formulas):
+    if any(IN_RUN_ONLY.search(f) for f in formulas):
         return True
     for name in names:
         if name in seen or name not in styles:
             continue
         style, formula = styles[name]
-        if _IN_RUN_ONLY.search(formula) or _reads_in_run(formula, styles, seen | {name}):
+        if IN_RUN_ONLY.search(formula) or _reads_in_run(formula, styles, seen | {name}):
             return True
     return False
 

@@ -27,6 +27,7 @@ from ..dialect.state import DeckError, place
 from ..deck_text import (TRIPLE, ScriptError, if_branches, logical_lines, segments as segments_of, strip_comment, words,
                          written_words)
 from ..deck_text import words as words_of
+from .runtime import IN_RUN_ONLY
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
            "AUDIT", "split_every", "MAX_PARTS"]
@@ -92,17 +93,6 @@ MAX_PARTS = 1000
 _UNSPLIT = frozenset({"run", "minimize", "quit", "include", "jump", "next", "clear"})
 #: How deep includes a run's every names are read for control flow (:func:`_flow`)
 _INCLUDE_DEPTH = 4
-#: What a run's every may evaluate that differs where its commands run between runs of their own: a
-#: function of the run's own start and end (field round 22, t02's ramp(2000,8000) read 2000 where
-#: LAMMPS reads 8000; LAMMPS refuses a ramp between runs), or a compute's or fix's value, current
-#: inside the run and not between runs of the copy. A value substituted from the step, the time or
-#: a variable is not among them: the commands then run after each part, where the copy's step and
-#: time are the deck's in a clocked pass or in runs made for real, and the pass reads them as run
-#: dependent (runtime.run_dependent), as after any run (round 27, E64: $(step*2+1000) as a
-#: coefficient read at the pass's step 0 was refused until the clocked pass existed)
-_IN_RUN = re.compile(r"\b(?:[cf]|[id]2?)_\w|\b(?:ramp|vdisplace|swiggle|cwiggle)\s*\(")
-
-
 def _flow(command: str, opened=None, depth: int = 0) -> bool:
     """Whether a command a run's every names is the deck's control flow (:data:`_UNSPLIT`), or an
     if any branch of which is, or an include of a file that holds such a command; a command that
@@ -137,11 +127,17 @@ def _flow(command: str, opened=None, depth: int = 0) -> bool:
 
 def _in_run(command: str) -> bool:
     """Whether a command a run's every names reads a value that differs inside the run from after a
-    run of the copy (:data:`_IN_RUN`); a command the copy never runs (print, dump, ...) reads none."""
+    run of the copy (:data:`restitution.dem.deck.runtime.IN_RUN_ONLY`: a function of the run's own
+    start and end, field round 22, t02's ramp(2000,8000) read 2000 where LAMMPS reads 8000; a
+    compute's or fix's value, current inside the run). A value substituted from the step, the time
+    or a variable is not among them: the commands run after each part, where the copy's step and
+    time are the deck's in a clocked pass or in runs made for real, and the pass reads them as run
+    dependent, as after any run (round 27, E64); a variable that reads such a value is found after
+    the pass (runtime.read_in_run). A command the copy never runs (print, dump, ...) reads none."""
     first = command.split()[0]
     if first in SKIPPED_COMMANDS:
         return False
-    return bool(_IN_RUN.search(command))
+    return bool(IN_RUN_ONLY.search(command))
 #: The label that opens stage k's marker where it stands inline in an if (its echo marks the stage)
 STAGE_LABEL = "restitution_stage_"
 #: A deck's folder copied whole; a larger one is refused (with the files above it that it names)
@@ -914,7 +910,7 @@ def split_every(run: str, opened=None) -> tuple[list[str], list[str]] | None:
     literal, no ``upto`` (its parts depend on the step then), at most :data:`MAX_PARTS` parts, and
     among the commands one the copy does not make a no-op, none of which runs, quits, clears or
     jumps, alone, in an if's branch or in a file it includes (:func:`_flow`), nor reads a ramp or a
-    compute (:data:`_IN_RUN`: LAMMPS evaluates them inside its run, where they differ from between
+    compute (:func:`_in_run`: LAMMPS evaluates them inside its run, where they differ from between
     two runs): those keep the run as written.
     A value substituted from the step or a variable is read after each part of the copy, where
     the pass reads it as after any run. The first part sets the run up as
