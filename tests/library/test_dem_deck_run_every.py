@@ -226,14 +226,17 @@ def test_a_step_a_variable_reads_between_the_parts_is_the_decks(tmp_path):
 
 @needs_lammps
 @pytest.mark.dem
-@pytest.mark.parametrize("included, audited", [(LINE.replace("1000", "3000"), True),
-                                                (LINE.replace("1000", "3000") + "\nrun 10", False)],
-                         ids=["a pair_coeff", "a run"])
+@pytest.mark.parametrize("included, audited", [
+    (LINE.replace("1000", "3000"), True), (LINE.replace("1000", "3000") + "\nrun 10", False),
+    (f"jump SELF over\n{LINE.replace('1000', '9000')}\nlabel over\n{LINE.replace('1000', '3000')}", True),
+    (f"jump SELF nowhere\n{LINE.replace('1000', '3000')}\nlabel over", False)],
+    ids=["a pair_coeff", "a run", "a jump to its own label", "a jump to no label of its own"])
 def test_an_include_between_the_parts_is_read_by_what_its_file_holds(tmp_path, included, audited):
     """Field rounds 27, 29, 30 (E37, I06, I10): ``run N every M "include k.in"`` with a pair_coeff
     in k.in was refused, though LAMMPS runs it after each part as any command there. A file that
-    holds no control flow (run, jump, quit, clear, next, include of such a file) makes the run its
-    parts; one that runs keeps the refusal."""
+    holds no control flow (run, jump, quit, clear, include of such a file) makes the run its parts;
+    one that runs keeps the refusal. ``jump SELF`` to a label of the file itself stays in that file,
+    which the copy includes as the deck does (field round 35, E80 was refused)."""
     (tmp_path / "k  k.in").write_text(included + "\n")
     deck = HEAD_ON.format(line=LINE) + "run 1000 every 500 'include \"k  k.in\"'\nrun 40000\n"
     if audited:
@@ -243,6 +246,21 @@ def test_an_include_between_the_parts_is_read_by_what_its_file_holds(tmp_path, i
         (tmp_path / "in.deck").write_text(deck)
         status, out, err = run(tmp_path / "in.deck", "--g", "1")
         assert status == 2 and out == "" and "runs include between the run's parts" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_next_between_the_parts_steps_the_variable_as_lammps_does(tmp_path):
+    """Field round 35, E71: ``next kk`` between the parts was refused as control flow. It only steps
+    the variable (and arms the skip of the deck's next jump, which LAMMPS keeps across the copy's
+    includes): the parts read 1000, then 3000, and the run after them keeps 3000 (with next never
+    run it would keep 1000)."""
+    deck = HEAD_ON.format(line=LINE) + ("variable kk index 1000 3000 5000\n"
+                                        f'run 1000 every 500 "{LINE.replace("1000", "${kk}")}" "next kk"\n'
+                                        "run 40000\n")
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 5e-5, (eps, measured, err)
+    assert abs(lammps_separation_speed(HEAD_ON.format(line=LINE) + "run 40000\n", tmp_path) - measured) > 1e-3
 
 
 @needs_lammps

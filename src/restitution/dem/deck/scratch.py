@@ -89,24 +89,31 @@ MAX_PARTS = 1000
 #: What a run's every may run that keeps the run as written: a run, quit, clear or jump between
 #: the parts, or a file opened there, is the deck's control flow, which the copy does not rewrite
 #: (an if is judged by its branches, :func:`_flow`; a label, which LAMMPS passes over where it
-#: runs it, is none)
-_UNSPLIT = frozenset({"run", "minimize", "quit", "include", "jump", "next", "clear"})
+#: runs it, is none; ``next`` only steps a variable and arms the skip of the deck's next jump,
+#: which LAMMPS keeps across includes, so the copy's parts behave alike: field round 35, E71)
+_UNSPLIT = frozenset({"run", "minimize", "quit", "include", "jump", "clear"})
 #: How deep includes a run's every names are read for control flow (:func:`_flow`)
 _INCLUDE_DEPTH = 4
-def _flow(command: str, opened=None, depth: int = 0) -> bool:
+def _flow(command: str, opened=None, depth: int = 0, labels: frozenset | None = None) -> bool:
     """Whether a command a run's every names is the deck's control flow (:data:`_UNSPLIT`), or an
     if any branch of which is, or an include of a file that holds such a command; a command that
     does not parse counts as such. ``opened`` gives the text of a file an include names (None where
     it does not read it: the include then counts as flow); a file named by a variable counts so.
+    Inside an included file, ``jump SELF L`` to a label ``L`` of that file (``labels``) stays in
+    the file, which the copy includes as the deck does, so it is none (field round 35, E80); in
+    the every's own commands SELF would name the copy's file, not the deck's.
 
     Examples
     --------
     >>> _flow("if 1 then 'pair_coeff 1 2 hooke 5000 0'"), _flow('if "${a} > 1" then "print x" else quit')
     (False, True)
-    >>> _flow("label x"), _flow('include "k.in"'), _flow("")
-    (False, True, True)
-    >>> files = {"k.in": "pair_coeff 1 2 hooke 5000 0", "r.in": "run 10", "n.in": "include r.in"}
+    >>> _flow("label x"), _flow('include "k.in"'), _flow(""), _flow("next a"), _flow("jump SELF x")
+    (False, True, True, False, True)
+    >>> files = {"k.in": "pair_coeff 1 2 hooke 5000 0", "r.in": "run 10", "n.in": "include r.in",
+    ...          "j.in": "jump SELF b\\nprint a\\nlabel b", "o.in": "jump SELF c\\nlabel b", "f.in": "jump in.x b"}
     >>> _flow("include k.in", files.get), _flow("include n.in", files.get), _flow("include ${f}", files.get)
+    (False, True, True)
+    >>> _flow("include j.in", files.get), _flow("include o.in", files.get), _flow("include f.in", files.get)
     (False, True, True)
     """
     try:
@@ -118,11 +125,17 @@ def _flow(command: str, opened=None, depth: int = 0) -> bool:
     if parts[0] == "include" and opened is not None and len(parts) == 2 and "$" not in parts[1] \
             and depth < _INCLUDE_DEPTH:
         text = opened(parts[1])
-        return text is None or any(_flow(line, opened, depth + 1) for _, line in logical_lines(text))
+        if text is None:
+            return True
+        lines = [line for _, line in logical_lines(text)]
+        own = frozenset(line.split()[1] for line in lines if line.split()[:1] == ["label"] and len(line.split()) > 1)
+        return any(_flow(line, opened, depth + 1, own) for line in lines)
+    if parts[0] == "jump" and labels is not None and len(parts) == 3 and parts[1] == "SELF" and parts[2] in labels:
+        return False
     if parts[0] != "if":
         return parts[0] in _UNSPLIT
     branches = if_branches(parts)
-    return branches is None or any(_flow(branch, opened, depth) for branch in branches)
+    return branches is None or any(_flow(branch, opened, depth, labels) for branch in branches)
 
 
 def _in_run(command: str) -> bool:
