@@ -354,18 +354,27 @@ def test_a_command_liggghts_does_not_have_stops_the_deck_as_it_stops_liggghts(tm
 
 @needs_liggghts
 @pytest.mark.dem
-def test_an_include_between_a_runs_parts_is_refused_as_liggghts_runs_it_after_the_run(tmp_path):
-    """Field round 35, L06: LIGGGHTS 3.8.0 queues a file a run's every includes and runs it after
-    the whole run (measured here: the prints after each part come first, the included file's after
-    the last), where LAMMPS runs it at once after the part. The audit made the include act from the
-    second part on (e 0.6 printed where LIGGGHTS kept 0.5); such a run is refused in LIGGGHTS."""
-    (tmp_path / "p.in").write_text("print INCLUDED_$(step)\n")
+def test_an_include_between_a_runs_parts_is_read_as_liggghts_reads_it_after_the_run(tmp_path):
+    """Field round 35, L06: LIGGGHTS 3.8.0 only opens a file a run's every includes and reads it
+    after the whole run, the file opened last first (measured here with prints), where LAMMPS runs
+    it at once after the part. The audit had made the include act from the second part on (e 0.6
+    printed where LIGGGHTS kept 0.5), then refused such runs; the copy now reads the files after
+    the run in LIGGGHTS' order: e 0.5 in every part, and the later run has the file read last
+    (m.in, e 0.9; n.in read last would give 0.7)."""
+    (tmp_path / "a.in").write_text("print A_$(step)\n")
+    (tmp_path / "b.in").write_text("print B_$(step)\n")
     (tmp_path / "in.order").write_text(HEAD.format(e=0.5) + PLAIN + TAIL
-                                       + 'run 20 every 10 "print PART_$(step)" "include p.in"\n')
+                                       + 'run 20 every 10 "include a.in" "print PART_$(step)" "include b.in"\n')
     done = subprocess.run(["liggghts", "-in", "in.order", "-log", "none"], cwd=tmp_path, capture_output=True,
                           text=True, timeout=120)
-    said = re.findall(r"^(PART_\d+|INCLUDED_\d+)$", done.stdout, re.M)
-    assert said == ["PART_11", "PART_21", "INCLUDED_21", "INCLUDED_21"], done.stdout[-2000:]
-    (tmp_path / "m.in").write_text("fix m3 all property/global coefficientRestitution peratomtypepair 1 0.9\n")
-    status, out, err = deck(tmp_path, HEAD.format(e=0.5) + PLAIN + TAIL + 'run 40 every 10 "include m.in"\n')
-    assert status == 2 and out == "" and "every runs include between the run's parts" in err, err
+    said = re.findall(r"^([A-Z]+_\d+)$", done.stdout, re.M)
+    assert said == ["PART_11", "PART_21", "B_21", "A_21", "B_21", "A_21"], done.stdout[-2000:]
+    for name, e in (("m.in", 0.9), ("n.in", 0.7)):
+        (tmp_path / name).write_text(f"fix m3 all property/global coefficientRestitution peratomtypepair 1 {e}\n")
+    status, out, err = deck(tmp_path, HEAD.format(e=0.5) + PLAIN + TAIL
+                            + 'run 40 every 10 "include m.in" "include n.in"\nrun 10\n')
+    assert status == 0, err
+    stages = json.loads(out)["stages"]
+    eps = [next(p for p in stage["pairs"] if p["types"] == [1, 1])["eps"][0] for stage in stages]
+    assert eps[:-1] and all(e == pytest.approx(0.5, rel=1e-9) for e in eps[:-1]), (eps, err)
+    assert eps[-1] == pytest.approx(0.9, rel=1e-9), (eps, err)

@@ -818,7 +818,8 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
             return noop
         return None
     opened = (lambda name: _copied_text(scratch, name)) if getattr(marker, "includes_in_every", False) else None
-    if word in RUN_COMMANDS and top and (parts := split_every(key, opened)) is not None:
+    queued = getattr(marker, "includes_after_run", False)
+    if word in RUN_COMMANDS and top and (parts := split_every(key, opened, queued)) is not None:
         return _parts(scratch, loc, key, marker, *parts)
     if word in RUN_COMMANDS:
         k = len(scratch.stages)
@@ -917,7 +918,7 @@ def _copied_text(scratch: Scratch, name: str) -> str | None:
         return None
 
 
-def split_every(run: str, opened=None) -> tuple[list[str], list[str]] | None:
+def split_every(run: str, opened=None, queued: bool = False) -> tuple[list[str], list[str], list[str]] | None:
     """``run N every M c1 c2 ...`` as the runs of its parts and the commands LAMMPS runs after each
     (the last part too), where the pass must run them to see the contact of each part: N and M
     literal, no ``upto`` (its parts depend on the step then), at most :data:`MAX_PARTS` parts, and
@@ -929,6 +930,11 @@ def split_every(run: str, opened=None) -> tuple[list[str], list[str]] | None:
     the pass reads it as after any run. The first part sets the run up as
     LAMMPS' first part always does (``pre yes``); each keeps the run's start, stop and post, which
     LAMMPS applies to every part alike (its run.cpp, 22 Jul 2025). None where it is not such a run.
+    With ``queued`` (LIGGGHTS 3.8.0) an ``include`` among the commands only opens its file, which
+    is read after the whole run, the file opened last first (measured: ``run 300 every 100 "include
+    a.in" "print X" "include b.in"`` prints X three times, then b's lines, a's, b's, a's, b's, a's,
+    all at step 300; field round 35, L06 L12): such includes, of files named without a variable (a
+    variable would be read at the part's end), are left out of the parts and read after the last.
 
     Parameters
     ----------
@@ -937,18 +943,25 @@ def split_every(run: str, opened=None) -> tuple[list[str], list[str]] | None:
     opened : callable, optional
         The text of a file an include among the commands names (None where not read): an include
         of a file that holds no control flow is run between the parts as the rest.
+    queued : bool, optional
+        Whether the engine reads a file an include among the commands names only after the run.
 
     Returns
     -------
-    (list of str, list of str) or None
-        The parts' runs and the commands between them.
+    (list of str, list of str, list of str) or None
+        The parts' runs, the commands between them, and the includes read after the last part's
+        commands, in the order the engine reads them.
 
     Examples
     --------
     >>> split_every('run 250 every 100 "pair_coeff * * 2000 0" "print x"')
-    (['run 100 pre yes', 'run 100', 'run 50'], ['pair_coeff * * 2000 0', 'print x'])
+    (['run 100 pre yes', 'run 100', 'run 50'], ['pair_coeff * * 2000 0', 'print x'], [])
     >>> split_every('run 0 pre no every 10 "variable a equal 2"')
-    (['run 0 pre yes'], ['variable a equal 2'])
+    (['run 0 pre yes'], ['variable a equal 2'], [])
+    >>> split_every('run 200 every 100 "include a.in" "print x" "include b.in"', queued=True)
+    (['run 100 pre yes', 'run 100'], ['print x'], ['include b.in', 'include a.in', 'include b.in', 'include a.in'])
+    >>> split_every('run 200 every 100 "include a${n}.in"', queued=True) is None
+    True
     >>> split_every('run 100 every 10 "print x"') is None, split_every("run 100 every 10 NULL") is None
     (True, True)
     >>> split_every('run 300 every 100 "pair_coeff * * hooke $(ramp(1000,2000)) 0"') is None
@@ -971,9 +984,15 @@ def split_every(run: str, opened=None) -> tuple[list[str], list[str]] | None:
     if any(key not in ("start", "stop", "pre", "post") for key in keywords[::2]):
         return None                 # upto (its steps counted from the step it starts at), or a typo
     firsts = [command.split()[0] if command.split() else "" for command in commands]
+    includes = [command for command, first in zip(commands, firsts) if queued and first == "include"]
+    if any(len(include.split()) != 2 or "$" in include for include in includes):
+        return None
+    commands = [command for command in commands if command not in includes]
+    firsts = [command.split()[0] if command.split() else "" for command in commands]
     # (balance, never run in the pass, makes LAMMPS' ghost atoms anew, which a part with pre no after
     # it does not see: the reader reads it from its no-op, field round 33, G07)
-    if not commands or all(first in SKIPPED_COMMANDS and first != "balance" or first == "NULL" for first in firsts) \
+    if not (commands or includes) or all(first in SKIPPED_COMMANDS and first != "balance" or first == "NULL"
+                                         for first in firsts) and not includes \
             or any(_flow(command, opened) for command in commands) \
             or any(_in_run(command) for command in commands):
         return None
@@ -985,21 +1004,25 @@ def split_every(run: str, opened=None) -> tuple[list[str], list[str]] | None:
     later = [f"pre {value}" for key, value in zip(keywords[::2], keywords[1::2]) if key == "pre"][-1:]
     runs = [" ".join(["run", str(min(every, steps - j * every)), *kept, *(["pre yes"] if j == 0 else later)])
             for j in range(count)]
-    return runs, commands
+    return runs, commands, [include for _ in range(count) for include in reversed(includes)]
 
 
-def _parts(scratch: Scratch, loc, key: str, marker, runs: list, between: list) -> str:
+def _parts(scratch: Scratch, loc, key: str, marker, runs: list, between: list, last: list = ()) -> str:
     """A run in parts (:func:`split_every`) as the copy runs it: a marker for each part, a stage of
-    its own, the commands made safe after each; the first marker's file holds the rest (after
-    its marker: :attr:`Scratch.after`), so the run's line stays one include. The commands are
-    echoed without a tag, known as the run's line's, as LAMMPS echoes those its every runs."""
-    lines = []
-    for command in between:
-        made = _safe(command, loc, scratch, marker)
-        line = command if made is None else made
-        _quoted(scratch, normalised(command), loc)
-        _quoted(scratch, normalised(line), loc)
-        lines.append(line)
+    its own, the commands made safe after each, and ``last`` (includes the engine reads after the
+    run) after the last part's; the first marker's file holds the rest (after its marker:
+    :attr:`Scratch.after`), so the run's line stays one include. The commands are echoed without
+    a tag, known as the run's line's, as LAMMPS echoes those its every runs."""
+    def made_safe(commands: list) -> list:
+        lines = []
+        for command in commands:
+            made = _safe(command, loc, scratch, marker)
+            line = command if made is None else made
+            _quoted(scratch, normalised(command), loc)
+            _quoted(scratch, normalised(line), loc)
+            lines.append(line)
+        return lines
+    lines, read_last = made_safe(between), made_safe(list(last))
     first = len(scratch.stages)
     for run in runs:
         scratch.stages.append((loc[0], loc[1], run))
@@ -1008,6 +1031,7 @@ def _parts(scratch: Scratch, loc, key: str, marker, runs: list, between: list) -
         after.extend(lines)
         if j + 1 < len(runs):
             after.append(f"include {scratch.root / f'stage_{first + j + 1}'} {scratch.tag}{AUDIT}")
+    after.extend(read_last)
     scratch.after[first] = "\n".join(after) + "\n"
     scratch.parts[first] = (key, len(runs))
     for j, run in enumerate(runs):
