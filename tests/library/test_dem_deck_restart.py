@@ -220,3 +220,27 @@ def test_pair_style_granular_given_again_after_the_read_is_audited(tmp_path, sty
     printed, engine, err = audited_and_measured(_across(style, again=True), tmp_path)
     engine = abs(engine)       # (the atoms' order in LAMMPS' arrays after the read decides the sign)
     assert abs(printed - engine) < 0.004 and abs(engine - 0.4149) < 0.004
+
+
+#: Field round 36, M15 M17: a restart file named by the step (``*``) after a run
+STEP_NAMED = PERIODIC_PAIR + ("set atom 2 density 5000\nwrite_restart r.*\n{between}clear\nread_restart {read}\n"
+                              "pair_style granular\npair_coeff * * hooke 2000 3000 damping mass_velocity tangential "
+                              "linear_nohistory 1 0.3\ncomm_modify vel yes\nfix move all nve/sphere\nrun 3000\n")
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between, read", [("reset_timestep 0\nset atom 2 density 2500\nwrite_restart r.*\n", "r.*"),
+                                           ("", "r.1000")], ids=["the largest step read", "the step named"])
+def test_a_restart_named_by_the_step_is_the_one_lammps_writes(tmp_path, between, read):
+    """LAMMPS puts the step in place of a ``*`` in write_restart's name: r.1000 after the first run.
+    The audit's pass, its runs skipped, wrote r.0 twice, the second over the first, and read that
+    (M15: 0.4149 printed, sphere 2 at density 2500, where LAMMPS reads r.1000 at 5000: 0.390402),
+    or stopped on a missing r.1000 (M17). A * so written after a run now makes the pass clocked:
+    each file is written at the deck's step and the read finds the file LAMMPS reads."""
+    deck = STEP_NAMED.format(between=between, read=read)
+    printed, engine, err = audited_and_measured(deck, tmp_path)
+    engine = abs(engine)       # (the atoms' order in LAMMPS' arrays after the read decides the sign)
+    assert abs(printed - engine) < 0.004, (printed, engine, err)
+    # the file of density 2500 gives another eps: the test tells the two files apart
+    assert abs(engine - 0.4149) > 0.02, engine

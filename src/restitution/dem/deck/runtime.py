@@ -80,6 +80,9 @@ def _references(text: str, formula: bool = True) -> tuple[list, list, str]:
 #: What a pass whose step and time are set after each skipped run to those the deck's run reaches
 #: (a clocked pass) reads as the deck's own run does
 CLOCK = frozenset({"step", "time", "dt"})
+#: The commands that write a file the copy keeps for the deck's later reads, and name it by the
+#: step where its name holds a ``*`` (LAMMPS measured: ``write_data d.*`` at step 10 wrote d.10)
+STEP_NAMED = frozenset({"write_restart", "write_data"})
 
 
 def _fixed(text: str, styles: dict, seen: frozenset = frozenset(), allowed: frozenset = _MATH) -> bool:
@@ -170,6 +173,12 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
     >>> halted = cmds[:2] + [Executed((None, 6), "fix h all halt 10 v_t > 1"), *cmds[2:]]
     >>> [loc for loc, _ in run_dependent(halted, clocked=True)]
     [(None, 5)]
+
+    A file named by the step (its ``*``) after a run:
+
+    >>> written = cmds[2:3] + [Executed((None, 7), "write_restart r.*"), Executed((None, 8), "write_data d.0")]
+    >>> run_dependent(written), run_dependent(written, clocked=True)
+    ([((None, 7), 'write_restart r.*')], [])
     """
     allowed = _MATH | CLOCK if clocked else _MATH
     source = source or {}
@@ -210,6 +219,13 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
             after_run = True
             if halts and allowed is not _MATH:
                 allowed, version = _MATH, version + 1
+        elif after_run and split[0] in STEP_NAMED and "*" in " ".join(split[1:2]) and "step" not in allowed:
+            # the engine puts the step in place of the *, and a later read (``read_restart r.*``, the
+            # largest step; a name written out) finds the file by it (field round 36, M15: two files
+            # of the pass's step 0, one overwriting the other, where LAMMPS wrote r.1000 and r.0)
+            if (cmd.loc, text) not in seen:
+                seen.add((cmd.loc, text))
+                found.append((cmd.loc, text))
         elif after_run and split[0] not in _UNWATCHED and (cmd.loc, text) not in seen \
                 and checked.get((cmd.loc, text)) != version:
             checked[(cmd.loc, text)] = version
