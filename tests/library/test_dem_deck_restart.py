@@ -244,3 +244,25 @@ def test_a_restart_named_by_the_step_is_the_one_lammps_writes(tmp_path, between,
     assert abs(printed - engine) < 0.004, (printed, engine, err)
     # the file of density 2500 gives another eps: the test tells the two files apart
     assert abs(engine - 0.4149) > 0.02, engine
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("writer", ["restart 500 r.*", "restart 1000 r.1000 s.1000"])
+def test_a_restart_file_the_runs_would_write_is_not_read_from_a_stale_copy(tmp_path, writer):
+    """Field round 36, M05 M06: ``restart N r.*`` during a run, then ``read_restart r.1000``. The
+    pass makes no run, so it writes no such file, and where the deck's folder held an r.1000 from
+    an earlier run (here sphere 2 at density 5000), the copy read that one where LAMMPS overwrites
+    it first. A read of a file a skipped command names, its * read as any step, is refused in one
+    line, the user's file untouched."""
+    folder = tmp_path / "deck"
+    folder.mkdir()
+    lammps_separation_speed(PERIODIC_PAIR + "set atom 2 density 5000\nwrite_restart r.1000\n", folder)
+    (folder / "in.engine").unlink()
+    stale = (folder / "r.1000").read_bytes()
+    (folder / "in.deck").write_text(PERIODIC_PAIR.replace("run 1000\n", f"{writer}\nrun 1000\n")
+                                    + "clear\n" + STEP_NAMED.split("clear\n", 1)[1].format(read="r.1000"))
+    status, out, err = run(folder / "in.deck", "--g", "1")
+    assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
+    assert f"read_restart r.1000): it reads a file that line 18 ({writer}) names" in err, err
+    assert (folder / "r.1000").read_bytes() == stale

@@ -338,7 +338,7 @@ def skipped(commands: list, scratch: Scratch) -> dict:
 
 
 #: Commands that read a file the deck names (its word, the index of the file name among its words)
-_READS = {"include": 1, "read_data": 1, "molecule": 2, "read_dump": 1}
+_READS = {"include": 1, "read_data": 1, "molecule": 2, "read_dump": 1, "read_restart": 1}
 
 
 def _split(text: str) -> list:
@@ -465,9 +465,28 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
             continue
         base = os.path.basename(name)
         for loc, text in reached:
-            if base and any(os.path.basename(word) == base for word in _split(text)[1:]):
+            if base and any(_may_name(os.path.basename(word), base) for word in _split(text)[1:]):
                 return (loc, text), (cmd.loc, cmd.text)
     return None
+
+
+def _may_name(written: str, read: str) -> bool:
+    """Whether a file name a skipped command writes may be the one read: the same, or the same with
+    the step (or the process) in place of its ``*`` (``%``), which the engines put there (field
+    round 36, M05: ``restart 500 r.*`` then ``read_restart r.1000``; a stale r.1000 in the deck's
+    folder would have been read).
+
+    Examples
+    --------
+    >>> _may_name("r.*", "r.1000"), _may_name("r.*", "r.*"), _may_name("d.%.*", "d.3.20"), _may_name("r.*", "s.1")
+    (True, True, True, False)
+    """
+    if written == read:
+        return True
+    if not set("*%") & set(written):
+        return False
+    pattern = "".join(r"\d+" if c in "*%" else re.escape(c) for c in written)
+    return re.fullmatch(pattern, read) is not None
 
 
 def unchecked(commands: list, scratch: Scratch) -> list:
