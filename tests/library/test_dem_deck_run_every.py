@@ -121,6 +121,20 @@ def test_a_run_with_pre_no_after_new_coefficients_of_two_types_is_refused(tmp_pa
 
 @needs_lammps
 @pytest.mark.dem
+def test_a_run_in_parts_with_pre_no_is_set_up_at_its_first_part(tmp_path):
+    """Field round 36, L04 (LIGGGHTS) and P08 P25 (LAMMPS): ``run N pre no every M "print ..."``
+    after a change of the coefficients was refused as a run not set up again, but both engines set
+    up a run in parts at its first part whatever pre says (run.cpp: ``preflag || iter == 0``; one
+    "Setting up run" measured): the new law is met, as the audit now prints."""
+    law = LINE.split(None, 3)[3].replace("1000", "3000")
+    deck = HEAD_ON.format(line=LINE) + f"run 0\npair_coeff 1 2 {law}\nrun 30000 pre no every 10000 \"print x\"\n"
+    eps, measured, err = audited_and_measured(deck, tmp_path)
+    assert abs(eps - measured) < 5e-5, (eps, measured, err)
+    assert abs(lammps_separation_speed(HEAD_ON.format(line=LINE) + "run 30000\n", tmp_path) - measured) > 1e-2
+
+
+@needs_lammps
+@pytest.mark.dem
 def test_a_run_in_parts_with_nothing_between_is_audited_as_one_run(tmp_path):
     (tmp_path / "in.deck").write_text(DECK + "run 30 every 10 NULL\n")
     got, err = audit(tmp_path / "in.deck", "--g", "0.5")
