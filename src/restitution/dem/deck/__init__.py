@@ -643,6 +643,11 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                                               "can check first (no shell, python or file output), and did not run it")
         if (hit := written_then_read(commands, scratch)) is not None:
             (wrote, writer), (read, reader) = hit
+            if writer.split()[:2] == ["shell", "mv"]:
+                raise DeckError(place(read), reader, f"it runs a file that {place(wrote)} ({writer}) names: the engine "
+                                                     "runs its commands, but the audit knows a file's commands by the "
+                                                     "files the deck's folder held when it copied it, so it would not "
+                                                     "see them; not audited (include the file by its own name)")
             raise DeckError(place(read), reader, f"it reads a file that {place(wrote)} ({writer}) names, which the "
                                                  "audit does not run (it may run code or write files): the file read "
                                                  "may not be the one the engine run by hand reads; not audited")

@@ -291,6 +291,31 @@ def _not_copied(root: Path) -> tuple:
     return ignore, left
 
 
+def _materialise_links(copy: Path, source: Path) -> None:
+    """Each link in the copy to a regular file of at most _MAX_TEXT_BYTES made a file holding what
+    it points to, read where the deck's folder ``source`` (of which ``copy`` is the copy) has the
+    link, never in the scratch (a relative link leaving the folder would name the scratch's own
+    files there), so that a script read through a link is mapped and made safe as any other
+    (field round 36, F14 F17: ``include link.in``, a link to a file of the folder, ran its
+    pair_coeff unseen, and F15, a link to a file outside the folder, which the confined engine
+    could not open). A link to a folder stays a link; one to anything else was left out
+    (:func:`_not_copied`) or is too big to read whole."""
+    for base, _, names in os.walk(copy):
+        for name in names:
+            link = Path(base, name)
+            if not link.is_symlink():
+                continue
+            try:
+                target = (source / link.relative_to(copy)).resolve(strict=True)
+                info = target.stat()
+            except (OSError, RuntimeError):
+                continue                 # dangling or looping: the engine finds nothing there either
+            if stat.S_ISREG(info.st_mode) and info.st_size <= _MAX_TEXT_BYTES:
+                data = target.read_bytes()
+                link.unlink()
+                link.write_bytes(data)
+
+
 def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, confined: bool = True) -> Scratch:
     """Copy the deck's folder into ``where``/deck and make the copy safe to run.
 
@@ -372,6 +397,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
                                                  f"changed or could not be read while the audit copied it "
                                                  f"({' '.join(str(first).split())[:200]}); not audited: run "
                                                  "the audit again once nothing writes there") from None
+    _materialise_links(copy, src.parent)
     # a file named by an absolute path (a cluster's /home/... parameter file): copied into the
     # scratch, where the copy's commands read it, made safe as the folder's files are
     absolute = {}
@@ -394,9 +420,16 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     named = _named_files(scratch.deck)
     literal = _named_files(scratch.deck, literal=True)
     for p in files:
-        if p.is_symlink() or p.stat().st_size > _MAX_TEXT_BYTES:
+        if p.is_symlink():
             continue
         mapped = named is None or p == scratch.deck or p.name in named
+        if p.stat().st_size > _MAX_TEXT_BYTES:
+            if mapped and (p == scratch.deck or p.name in literal):
+                # the engine runs it, and its lines would come back unmapped (field round 36, F19:
+                # a 22 MB include, its pair_coeff at the end unseen: 0.4149 printed, LAMMPS 0.578975)
+                raise DeckError("deck", p.name, f"a script the deck runs holds more than {_MAX_TEXT_BYTES >> 20} MB, "
+                                                "more than the audit maps line by line; not audited")
+            continue
         try:
             # bytes that are not UTF-8 (a Latin-1 comment from another editor) kept as they are:
             # the engines read bytes, and a file passed over here would run unmade safe

@@ -427,8 +427,10 @@ def random_drawn(commands: list, scratch: Scratch, runs_draw: bool = True) -> tu
 def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     """The first read of a file that a skipped command reached before it names (``shell cp a b``
     then ``include b``; ``print ... file b`` then ``include b``): the engine's pass never wrote it,
-    so what it read there is not what the engine run by hand reads. ((file, line), text) of the
-    skipped command and of the read, or None.
+    so what it read there is not what the engine run by hand reads; or an include or jump of a
+    file a ``shell mv`` (which runs, in the copy) named before: the engine reads it, but its
+    commands are not mapped to the deck's lines. ((file, line), text) of the skipped or moving
+    command and of the read, or None.
 
     Parameters
     ----------
@@ -454,17 +456,25 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     >>> written_then_read(cmds, s) is None, written_then_read(cmds[:1] + [Executed((None, 4), 'include "k  k.in"')], s)[1]
     (True, ((None, 4), 'include "k  k.in"'))
     """
-    reached = []
+    reached, moved = [], []
     for cmd in commands:
         k = _skipped_index(cmd, scratch)
         if k is not None:
             reached.append(scratch.skipped[k][1:])
             continue
+        if cmd.text.startswith("shell") and _split(cmd.text)[1:2] == ["mv"]:
+            moved.append((cmd.loc, cmd.text))
+            continue
         name = _read_file(cmd.text)
-        if name is None or not reached:
+        if name is None or not (reached or moved):
             continue
         base = os.path.basename(name)
-        for loc, text in reached:
+        # a file shell mv put in place (it runs, in the copy) is read by the engine, but its lines
+        # are not mapped to the deck's: only the files the copy found when it was made are (field
+        # round 36, F09: shell mv new.in pc.in, include pc.in: its pair_coeff unseen, 0.4149
+        # printed where LAMMPS ran kn 5000, 0.578975); a file read as data the engine reads itself
+        writers = reached + (moved if _split(cmd.text)[:1] in (["include"], ["jump"]) else [])
+        for loc, text in writers:
             if base and any(_may_name(os.path.basename(word), base) for word in _split(text)[1:]):
                 return (loc, text), (cmd.loc, cmd.text)
     return None
