@@ -237,6 +237,25 @@ L("M17_restart_named_step", "write_restart r.* at step 1000; read_restart r.1000
   "run 1000\nwrite_restart r.*\nclear\nread_restart r.1000\npair_style granular\npair_coeff * * " + HKk(4000) + "\n" + TAILR + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
 L("M18_restart_star_density_fff_np2", "M15 in f f f processors * 1 1 (1 and 2 processes)", RSTD("5000", "2500"), pre=MB, pair=IN(G11))
 
+L("M19_restart_var_step_density", "M15 with the names r.${s} (s = step: 1000) and r.0 written explicitly; read_restart ${f} (r.1000: lv2 5000)",
+  "run 1000\nvariable s equal step\nvariable f string r.${s}\nset atom 2 density 5000\nwrite_restart ${f}\nset atom 2 density 2500\nwrite_restart r.0\nclear\nread_restart ${f}\n"
+  "pair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
+L("M20_restart_star_then_explicit_r0", "no reset_timestep: write_restart r.* at step 1000 (lv2 5000), then write_restart r.0 (2500); read_restart r.* (LAMMPS: r.1000, 5000)",
+  "run 1000\nset atom 2 density 5000\nwrite_restart r.*\nset atom 2 density 2500\nwrite_restart r.0\nclear\nread_restart r.*\n"
+  "pair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
+L("M21_restart_star_kn_after_read", "M15 with lv2 density 5000 in r.1000 and the law changed after the read (kn 5000): LAMMPS 5000 with lv2 5000",
+  RSTD("5000", "2500").replace("pair_coeff * * " + HK, "pair_coeff * * " + HK5), pre=BASE(wall=False), pair=IN(G11))
+
+L("M22_restart_periodic_and_star", "write_restart r.* at step 0 (lv2 2500); restart 1000 r.*; run 1000; set lv2 density 5000; run 1000 (r.2000: 5000); read_restart r.* (LAMMPS r.2000)",
+  "write_restart r.*\nrestart 1000 r.*\nrun 1000\nset atom 2 density 5000\nrun 1000\nclear\nread_restart r.*\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n",
+  pre=BASE(wall=False), pair=IN(2.1e-3))
+L("M23_restart_star_every_step_density", "run 2000 every 1000 \"set atom 2 density $(2500+2.5*step)\" \"write_restart r.*\" (r.1000 5000, r.2000 7500); read_restart r.1000 by name",
+  "run 2000 every 1000 \"set atom 2 density $(2500+2.5*step)\" \"write_restart r.*\"\nclear\nread_restart r.1000\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n",
+  pre=BASE(wall=False), pair=IN(2.1e-3))
+L("M24_restart_star_every_read_star", "M23 read back by read_restart r.* (LAMMPS: r.2000, lv2 7500)",
+  "run 2000 every 1000 \"set atom 2 density $(2500+2.5*step)\" \"write_restart r.*\"\nclear\nread_restart r.*\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n",
+  pre=BASE(wall=False), pair=IN(2.1e-3))
+
 # ================================================================ K: pair_coeff type ranges and labels (3 types)
 B3 = BASE(nt=3, wall=False)
 PCk = lambda spec, k: f"pair_coeff {spec} " + HKk(k) + "\n"
@@ -283,8 +302,8 @@ L("Q02_set_before_create", "set type 1 diameter 0.004 density 2500 before create
   "run 3000\n", pre=BASE() + "set type 1 diameter 0.004 density 2500\n", pair=PAIRQ("set atom 1 diameter 0.004\n", "set atom 2 diameter 0.006 density 2500\n"))
 L("Q03_type_fraction_all", "set group lv1 type/fraction 2 1.0 12345 (lv1 becomes type 2: pair 2 2)", "set group lv1 type/fraction 2 1.0 12345\nrun 3000\n", PAIR="types 2 2")
 L("Q04_mass_then_diameter", "set atom 2 mass 1e-4 after diameter/density (mass wins)", "set atom 2 mass 1e-4\nrun 3000\n")
-L("Q05_diameter_after_density_type", "set type 2 density 5000 then set type 2 diameter 0.006 (mass from 6 mm at 2500 then 5000? LAMMPS: density sets mass from the radius then)",
-  "set type 2 density 5000\nset type 2 diameter 0.008\nrun 3000\n", pair=IN(0.1e-3))
+L("Q05_diameter_after_density_type", "set type 2 density 5000 then set type 2 diameter 0.005 (the mass stays that of 6 mm at 5000; the contact at 4.5 mm)",
+  "set type 2 density 5000\nset type 2 diameter 0.005\nrun 3000\n", pair=IN(0.1e-3))
 L("Q06_set_atom_range", "set atom 1*2 density 4000 (both)", "set atom 1*2 density 4000\nrun 3000\n")
 L("Q07_type_ratio", "set group lv1 type/ratio 2 1.0 777 (lv1 type 2)", "set group lv1 type/ratio 2 1.0 777\nrun 3000\n", PAIR="types 2 2")
 L("Q08_set_type_then_density_of_old_type", "set atom 2 type 1 then set type 2 density 5000 (acts on none): pair 1 1", "set atom 2 type 1\nset type 2 density 5000\nrun 3000\n", PAIR="types 1 1")
@@ -306,6 +325,17 @@ LG("Y12_lig_restyle_hooke", "LIGGGHTS: restyle to gran model hooke (characterist
 LG("Y13_lig_limitforce_after_restyle", "LIGGGHTS: hertz, then pair_style again with limitForce on and e 0.1 set after", "pair_style gran model hertz tangential history limitForce on\npair_coeff * *\n" + LE1(0.1) + "run 3000\n")
 LG("Y14_lig_e_before_and_after_wall", "LIGGGHTS WALL: e 1-3 0.7, then property/global given again with 1-3 0.9 after the wall fix (0.9)",
    "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.9 0.5 0.4 0.45 0.9 0.45 0.8\nrun 3000\n", pair=LWALL(1e-4), PAIR="type 1 on wall wprim")
+
+L("Y15_same_style_keeps_explicit", "pair_coeff * * 2000 (1 2 explicit); pair_style granular again (same style: coefficients kept); pair_coeff 1 1 and 2 2 kn 5000 (1 2 stays 2000)",
+  "pair_style granular\npair_coeff 1 1 " + HK5 + "\npair_coeff 2 2 " + HK5 + "\nrun 3000\n")
+L("Y16_same_style_remix", "pair_coeff 1 1 and 2 2 only (1 2 mixed); pair_style granular again; 1 1 and 2 2 kn 5000 (1 2 mixed again: 5000)",
+  "pair_style granular\npair_coeff 1 1 " + HK5 + "\npair_coeff 2 2 " + HK5 + "\nrun 3000\n", pre=BASE(coeff="pair_coeff 1 1 " + HK + "\npair_coeff 2 2 " + HK + "\n"))
+L("Y17_other_style_then_back", "pair_style gran/hooke (resets), then pair_style granular with 1 1 and 2 2 kn 5000 only (1 2 mixed: 5000)",
+  "pair_style gran/hooke 2000 NULL 3000 NULL 0.3 0\npair_coeff * *\npair_style granular\npair_coeff 1 1 " + HK5 + "\npair_coeff 2 2 " + HK5 + "\nrun 3000\n")
+L("Y18_same_style_between_runs", "run 1000 (2000); pair_style granular again; pair_coeff 2 2 kn 5000; run 3000 (1 2 stays 2000)",
+  "run 1000\npair_style granular\npair_coeff 2 2 " + HK5 + "\nrun 3000\n", pair=IN(G11))
+LG("Y19_lig_same_style_hooke_no_cv", "LIGGGHTS: pair_style gran again with model hooke and no characteristicVelocity (LIGGGHTS stops?)",
+   "pair_style gran model hooke tangential history\npair_coeff * *\nrun 3000\n")
 
 # ================================================================ W: walls-only material types
 LG("W01_lig_wall_type3", "LIGGGHTS WALL: type 3 is the wall's only (e 1-3 0.7)", "run 3000\n", pair=LWALL(1e-4), PAIR="type 1 on wall wprim")
@@ -336,6 +366,21 @@ LG("S09_lig_templates_two_sizes", "LIGGGHTS: insert/pack of type 1 with radii 1 
    "fix pdd1 all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\nregion bc block -0.04 0.04 -0.04 0.04 0.13 0.145 units box\n"
    "fix ins all insert/pack seed 49979687 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 10 region bc\nrun 3000\n")
 
+LHS = LBASE(model="hooke/stiffness", extra="fix k1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+             "fix k2 all property/global kt peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+             "fix k3 all property/global gamman peratomtypepair 3 500 500 500 500 500 500 500 500 500\n"
+             "fix k4 all property/global gammat peratomtypepair 3 500 500 500 500 500 500 500 500 500\n")
+INS = lambda r1, r2: (f"fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant {r1}\n"
+                      f"fix pts2 all particletemplate/sphere 15485867 atom_type 1 density constant 2500 radius constant {r2}\n"
+                      "fix pdd1 all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\nregion bc block -0.04 0.04 -0.04 0.04 0.13 0.145 units box\n"
+                      "fix ins all insert/pack seed 49979687 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 10 region bc\n")
+LG("S10_lig_hooke_stiffness_templates_small", "LIGGGHTS hooke/stiffness (size-dependent), type 1 inserted with radii 1 and 1.5 mm, the live 4 mm type 1: the row must cover 4 mm",
+   INS(0.001, 0.0015) + "run 3000\n", pre=LHS)
+LG("S11_lig_hooke_stiffness_templates_incl", "LIGGGHTS hooke/stiffness, type 1 inserted with radii 1.5 and 2.5 mm (the 2 mm live sphere between)",
+   INS(0.0015, 0.0025) + "run 3000\n", pre=LHS)
+LG("S12_lig_hooke_stiffness_two_sizes_created", "LIGGGHTS hooke/stiffness, a far type 2 sphere of 2 mm (type 2 sizes 6 and 2 mm)",
+   "create_atoms 2 single 0.04 0 0.12 units box\nset atom 3 diameter 0.002 density 2500\nrun 3000\n", pre=LHS)
+
 # ================================================================ T: the time-step note (steps per contact)
 def TD(dt, k=2000, gap=0.1e-3, steps=None, wall=False):
     n = steps or int(round((gap + 0.004) / dt)) + int(2e-3 / dt) + 10
@@ -351,6 +396,31 @@ L("T09_wall_dt1e-4", "WALL at dt 1e-4 (the floor row and note)", body, pre=pre, 
 L("T10_dt_changed_before_meet", "run 1000 at dt 1e-6, then timestep 1e-4 and run 60 (meets there)", "run 1000\ntimestep 1e-4\nrun 80\n", pair=IN(1.1e-3 + 0.13e-3))
 LG("T11_lig_dt2e-5", "LIGGGHTS hertz e 0.5 at dt 2e-5", "run 500\n", pre=LBASE().replace("timestep 1e-6", "timestep 2e-5"), pair=LIN(0.13e-3))
 LG("T12_lig_dt5e-5_wall", "LIGGGHTS WALL at dt 5e-5 (e 0.7)", "run 300\n", pre=LBASE().replace("timestep 1e-6", "timestep 5e-5"), pair=LWALL(0.17e-3), PAIR="type 1 on wall wprim")
+
+L("T13_dt_reset_large", "fix dt/reset 1 1e-7 2e-4 0.001 units box (dt becomes 2e-4 in the run: 3 steps a contact); the deck's timestep 1e-6",
+  "fix dtr all dt/reset 1 1e-7 2e-4 0.001 units box\nrun 40\n", pair=IN(0.29e-3))
+L("T14_dt_reset_then_run", "fix dt/reset (dt up to 1e-4) in run 1, unfix, run 2 where they meet (the dt run 1 left: 1e-4)",
+  "fix dtr all dt/reset 1 1e-7 1e-4 0.001 units box\nrun 5\nunfix dtr\nrun 60\n", pair=IN(0.1e-3 + 5 * 1e-4 * 1 + 0.07e-3))
+L("T15_dt_reset_small_note", "fix dt/reset 1 1e-7 5e-5 0.001 units box (12 steps a contact)", "fix dtr all dt/reset 1 1e-7 5e-5 0.001 units box\nrun 100\n", pair=IN(0.13e-3))
+
+# ================================================================ X: fix balance, which the copy now runs (session 26)
+XH = "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.1 units box\ncreate_box 2 box\n"
+XT = "fix grav all gravity 9.81 vector 0 0 -1\nfix integ all nve/sphere\ntimestep 1e-6\n" + IN(0.1e-3) + "run 3000\n"
+HKH = "hooke 2000 3000 damping mass_velocity tangential linear_history 1000 1 0.3"
+RAW("X01_balance_out_nohistory", "fix balance ... out bal.txt before pair_style granular without history (LAMMPS runs; the file written only in the engine's run)",
+    XH + "fix bal all balance 100 1.0 shift x 5 1.1 out bal.txt\npair_style granular\npair_coeff * * " + HK + "\n" + XT)
+RAW("X02_balance_out_quoted_space", "fix balance out \"b a l.txt\" (a quoted name with spaces), after the pair (history)",
+    XH + "pair_style granular\npair_coeff * * " + HKH + "\nfix bal all balance 100 1.0 shift x 5 1.1 out \"b a l.txt\"\n" + XT)
+RAW("X03_balance_include_before_history", "fix balance in an include before pair_style granular with linear_history (LAMMPS stops)",
+    XH + "include b.in\npair_style granular\npair_coeff * * " + HKH + "\n" + XT, data={"b.in": "fix bal all balance 100 1.0 shift x 5 1.1\n"})
+RAW("X04_balance_then_restyle_history", "pair granular (history), fix balance, then pair_style granular given again (history) after it (LAMMPS stops?)",
+    XH + "pair_style granular\npair_coeff * * " + HKH + "\nfix bal all balance 100 1.0 shift x 5 1.1\npair_style granular\npair_coeff * * " + HKH + "\n" + XT)
+RAW("X05_balance_unfixed_before_run", "fix balance before the history pair, unfix bal before the run (LAMMPS runs?)",
+    XH + "fix bal all balance 100 1.0 shift x 5 1.1\npair_style granular\npair_coeff * * " + HKH + "\nunfix bal\n" + XT)
+LG("X06_lig_balance_before_history", "LIGGGHTS: fix balance before pair gran hertz tangential history",
+   "run 3000\n", pre=LBASE().replace("pair_style gran", "fix bal all balance 100 1.0 shift x 5 1.1\npair_style gran"))
+RAW("X07_balance_np2_fff_after", "f f f processors * 1 1: pair (history), fix balance shift x every 100, the pair across x 0.02 (1 and 2 processes)",
+    XH.replace("p p f", "f f f") .replace("units si\n", "units si\nprocessors * 1 1\n") + "pair_style granular\npair_coeff * * " + HKH + "\nfix bal all balance 100 1.0 shift x 5 1.1\n" + XT)
 
 # ================================================================ O: public decks, shortened (sources in FINDINGS.md and each file's head)
 OD = os.path.join(HERE, "odecks")
