@@ -256,6 +256,24 @@ L("M24_restart_star_every_read_star", "M23 read back by read_restart r.* (LAMMPS
   "run 2000 every 1000 \"set atom 2 density $(2500+2.5*step)\" \"write_restart r.*\"\nclear\nread_restart r.*\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n",
   pre=BASE(wall=False), pair=IN(2.1e-3))
 
+L("M25_restart_star_old_file_shipped", "the folder holds r.500 (an older restart: lv2 density 8000); the deck writes r.* at step 1000 (2500) and reads r.* (LAMMPS: r.1000)",
+  "run 1000\nwrite_restart r.*\nclear\nread_restart r.*\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
+# r.500 of M25, made by LAMMPS itself when the folder is written (a binary file): the same pair, lv2 at density 8000, step 500
+GEN_M25 = (BASE(wall=False) + IN(G11).replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000") + "run 500\nwrite_restart r.*\n")
+
+L("M26_restart_r0_then_star", "write_restart r.0 (lv2 2500) at step 0; run 1000; lv2 density 5000; write_restart r.* (LAMMPS r.1000; the pass: r.0 again); read_restart r.0 (LAMMPS: 2500)",
+  "write_restart r.0\nrun 1000\nset atom 2 density 5000\nwrite_restart r.*\nclear\nread_restart r.0\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n",
+  pre=BASE(wall=False), pair=IN(G11))
+MDH = "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nread_data {f}\npair_style granular\npair_coeff * * " + HK + "\ngroup lv1 id 1\ngroup lv2 id 2\n" + TAILR + "timestep 1e-6\n"
+L("M27_write_data_d0_then_star", "write_data d.0 (lv2 2500) at step 0; run 1000; lv2 density 5000; write_data d.* (LAMMPS d.1000; the pass: d.0 again); clear; read_data d.0 (LAMMPS: 2500)",
+  "write_data d.0\nrun 1000\nset atom 2 density 5000\nwrite_data d.*\nclear\n" + MDH.format(f="d.0") + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
+L("M28_write_data_star_read_named", "run 1000; lv2 density 5000; write_data d.*; clear; read_data d.1000 (LAMMPS 5000; the pass has no d.1000)",
+  "run 1000\nset atom 2 density 5000\nwrite_data d.*\nclear\n" + MDH.format(f="d.1000") + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
+
+L("M29_restart_named_stale_file_shipped", "the folder holds a stale r.1000 (an older run: lv2 density 8000); the deck writes r.* at step 1000 (2500) and reads r.1000 (LAMMPS: its own, 2500)",
+  "run 1000\nwrite_restart r.*\nclear\nread_restart r.1000\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
+GEN_M29 = (BASE(wall=False) + IN(G11).replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000") + "run 1000\nwrite_restart r.*\n")
+
 # ================================================================ K: pair_coeff type ranges and labels (3 types)
 B3 = BASE(nt=3, wall=False)
 PCk = lambda spec, k: f"pair_coeff {spec} " + HKk(k) + "\n"
@@ -422,6 +440,45 @@ LG("X06_lig_balance_before_history", "LIGGGHTS: fix balance before pair gran her
 RAW("X07_balance_np2_fff_after", "f f f processors * 1 1: pair (history), fix balance shift x every 100, the pair across x 0.02 (1 and 2 processes)",
     XH.replace("p p f", "f f f") .replace("units si\n", "units si\nprocessors * 1 1\n") + "pair_style granular\npair_coeff * * " + HKH + "\nfix bal all balance 100 1.0 shift x 5 1.1\n" + XT)
 
+LHSR = ("fix m1 all property/global youngsModulus peratomtype 5e6 5e6 5e6\nfix m2 all property/global poissonsRatio peratomtype 0.3 0.3 0.3\n"
+        "fix m7 all property/global coefficientFriction peratomtypepair 3 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5 0.5\n"
+        "fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8\n"
+        "fix k1 all property/global kn peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+        "fix k2 all property/global kt peratomtypepair 3 2000 2000 2000 2000 2000 2000 2000 2000 2000\n"
+        "fix k3 all property/global gamman peratomtypepair 3 500 500 500 500 500 500 500 500 500\n"
+        "fix k4 all property/global gammat peratomtypepair 3 500 500 500 500 500 500 500 500 500\n"
+        "pair_style gran model hooke/stiffness tangential history\npair_coeff * *\nfix integr all nve/sphere\n")
+LG("L15_lig_restart_star_density", "LIGGGHTS hooke/stiffness: write_restart r.* at step 1000 (lv2 density 5000), reset_timestep 0, 2500, write r.0; read_restart r.* (LIGGGHTS: r.1000?)",
+   "run 1000\nset atom 2 density 5000\nwrite_restart r.*\nreset_timestep 0\nset atom 2 density 2500\nwrite_restart r.*\nclear\natom_modify map array\nnewton off\ncommunicate single vel yes\nread_restart r.*\nneighbor 0.002 bin\n" + LHSR + "timestep 1e-6\nrun 3000\n",
+   pre=LHS.replace("fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n", "").replace("fix gravi all gravity 9.81 vector 0.0 0.0 -1.0\n", ""), pair=LIN(G11))
+
+# ================================================================ Z: group membership changed after the command that reads it; LIGGGHTS asymmetric e
+FAR3 = "create_atoms 1 single 0.005 0.005 0.08\nset atom 3 diameter 0.004 density 2500\n"
+L("Z01_exclude_group_grown", "neigh_modify exclude group g1 g2 with g2 = the far sphere; then group g2 id 2 (lv2 joins: the pair is excluded, LAMMPS passes)",
+  FAR3 + "group g1 id 1\ngroup g2 id 3\nneigh_modify exclude group g1 g2\ngroup g2 id 2\nrun 3000\n")
+L("Z02_integrator_group_grown", "fix integ on group mv (lv1 only), then group mv id 2 (lv2 joins: both integrated)",
+  "unfix integ\ngroup mv id 1\nfix integ2 mv nve/sphere\ngroup mv id 2\nrun 3000\n")
+L("Z03_freeze_group_grown", "fix freeze on group fz (the far sphere), then group fz id 2 (lv2 frozen from then on)",
+  FAR3 + "group fz id 3\nfix fr fz freeze\ngroup fz id 2\nrun 3000\n")
+L("Z04_exclude_group_shrunk", "neigh_modify exclude group g1 g2 with g2 = lv2; then group g2 clear (the pair meets again)",
+  "group g1 id 1\ngroup g2 id 2\nneigh_modify exclude group g1 g2\ngroup g2 clear\nrun 3000\n")
+L("Z05_exclude_group_grown_between_runs", "exclude group g1 g2 (g2 far), run 500, group g2 id 2, run 3000 (meets in run 2: excluded)",
+  FAR3 + "group g1 id 1\ngroup g2 id 3\nneigh_modify exclude group g1 g2\nrun 500\ngroup g2 id 2\nrun 3000\n", pair=IN(0.6e-3))
+L("Z06_setforce_group_grown", "fix setforce 0 0 0 on group sf (far), then group sf id 1 (lv1 gets no force: passes? it keeps its speed through lv2)",
+  FAR3 + "group sf id 3\nfix sfx sf setforce 0.0 0.0 0.0\ngroup sf id 1\nrun 3000\n")
+L("Z07_gravity_group_grown", "WALL: fix gravity on group gg (far only; the base gravity removed), group gg id 1 later (lv1 falls under gravity)",
+  FAR3.replace("set atom 3", "set atom 2") + "unfix grav\ngroup gg id 2\nfix g2 gg gravity 9.81 vector 0 0 -1\ngroup gg id 1\nrun 3000\n", pair=WALLP(), **WALL)
+L("Z11_freeze_group_first", "control of Z03: group fz id 2 before fix freeze (lv2 frozen throughout)", FAR3 + "group fz id 3\ngroup fz id 2\nfix fr fz freeze\nrun 3000\n")
+L("Z12_setforce_group_first", "control of Z06: group sf id 1 before fix setforce", FAR3 + "group sf id 3\ngroup sf id 1\nfix sfx sf setforce 0.0 0.0 0.0\nrun 3000\n")
+L("Z13_freeze_group_grown_between_runs", "fix freeze on fz (far), run 500, group fz id 2, run 3000 (lv2 frozen in run 2, where they meet)",
+  FAR3 + "group fz id 3\nfix fr fz freeze\nrun 500\ngroup fz id 2\nrun 3000\n", pair=IN(0.6e-3))
+L("Z14_freeze_by_region_group_grown", "group fz region (an empty block), fix freeze fz, then group fz id 2", "region rb block 0.001 0.002 0.001 0.002 0.001 0.002 units box\ngroup fz region rb\nfix fr fz freeze\ngroup fz id 2\nrun 3000\n")
+
+LZ = lambda e12, e21: f"0.6 {e12} 0.7 {e21} 0.4 0.45 0.7 0.45 0.8"
+LG("Z08_lig_asym_e", "LIGGGHTS e 1-2 0.5, 2-1 0.8 (asymmetric matrix)", "run 3000\n", pre=LBASE(e=LZ(0.5, 0.8)))
+LG("Z09_lig_asym_e_swapped_order", "Z08 with type 2 made first (atom 1 of type 2)", "run 3000\n", pre=LBASE(e=LZ(0.5, 0.8)), pair=LIN(0.1e-3, t1=2, t2=1))
+LG("Z10_lig_asym_e_np2", "Z08 with processors 2 1 1 (the pair across the border)", "run 3000\n", pre=LBASE(e=LZ(0.5, 0.8), head="processors 2 1 1\n"), NP="2")
+
 # ================================================================ O: public decks, shortened (sources in FINDINGS.md and each file's head)
 OD = os.path.join(HERE, "odecks")
 OMETA = {"O01_pour_loop_gravelle": ("pass 2", {"PAIR": "types 1 2", "SEP": "1.0"}),
@@ -453,6 +510,18 @@ def write(only=()):
             p = os.path.join(d, f)
             os.makedirs(os.path.dirname(p), exist_ok=True)
             open(p, "w").write(t)
+        if name.startswith("M25") and not os.path.exists(os.path.join(d, "r.500")):
+            import subprocess, tempfile
+            t = tempfile.mkdtemp()
+            open(os.path.join(t, "g.in"), "w").write(GEN_M25)
+            subprocess.run(["lmp", "-in", "g.in", "-log", "none"], cwd=t, capture_output=True)
+            os.replace(os.path.join(t, "r.500"), os.path.join(d, "r.500"))
+        if name.startswith("M29") and not os.path.exists(os.path.join(d, "r.1000")):
+            import subprocess, tempfile
+            t = tempfile.mkdtemp()
+            open(os.path.join(t, "g.in"), "w").write(GEN_M29)
+            subprocess.run(["lmp", "-in", "g.in", "-log", "none"], cwd=t, capture_output=True)
+            os.replace(os.path.join(t, "r.1000"), os.path.join(d, "r.1000"))
     print(len(DECKS), "decks")
 
 
