@@ -479,6 +479,35 @@ LG("Z08_lig_asym_e", "LIGGGHTS e 1-2 0.5, 2-1 0.8 (asymmetric matrix)", "run 300
 LG("Z09_lig_asym_e_swapped_order", "Z08 with type 2 made first (atom 1 of type 2)", "run 3000\n", pre=LBASE(e=LZ(0.5, 0.8)), pair=LIN(0.1e-3, t1=2, t2=1))
 LG("Z10_lig_asym_e_np2", "Z08 with processors 2 1 1 (the pair across the border)", "run 3000\n", pre=LBASE(e=LZ(0.5, 0.8), head="processors 2 1 1\n"), NP="2")
 
+# ================================================================ F: files the deck writes and reads back, a stale copy in the folder
+STALE = PCs(3000) + "\n"     # the file as an earlier run left it (kn 3000)
+L("F01_print_file_include_stale", "print \"pair_coeff ... 5000\" file pc.in; include pc.in (the folder holds a stale pc.in: kn 3000; LAMMPS writes it anew: 5000)",
+  'print "' + PCs(5000) + '" file pc.in screen no\ninclude pc.in\nrun 3000\n', data={"pc.in": STALE})
+L("F02_shell_cp_include_stale", "shell cp new.in pc.in; include pc.in (the folder holds new.in: 5000 and a stale pc.in: 3000)",
+  "shell cp new.in pc.in\ninclude pc.in\nrun 3000\n", data={"pc.in": STALE, "new.in": PCs(5000) + "\n"})
+L("F03_write_coeff_include_stale", "pair_coeff 1 2 kn 5000; write_coeff wc.in; pair_coeff * * 2000; include wc.in (a stale wc.in: 3000)",
+  PCs(5000) + "\nwrite_coeff wc.in\npair_coeff * * " + HK + "\ninclude wc.in\nrun 3000\n", data={"wc.in": STALE})
+L("F04_print_append_include_stale", "print ... append pc.in (a stale pc.in holding kn 3000: the append puts 5000 after it, the include ends at 5000)",
+  'print "' + PCs(5000) + '" append pc.in screen no\ninclude pc.in\nrun 3000\n', data={"pc.in": STALE})
+L("F05_fix_print_file_next_run", "fix print every 1000 writes pc.in in run 1 (\"pair_coeff ... 5000\"), unfix, include pc.in (a stale pc.in: 3000), run 2",
+  'fix fp all print 1000 "' + PCs(5000) + '" file pc.in screen no title "# pc"\nrun 1000\nunfix fp\ninclude pc.in\nrun 3000\n', pair=IN(G11), data={"pc.in": STALE})
+L("F06_shell_mv_include_stale", "shell mv new.in pc.in (LAMMPS' own mv); include pc.in", "shell mv new.in pc.in\ninclude pc.in\nrun 3000\n",
+  data={"pc.in": STALE, "new.in": PCs(5000) + "\n"})
+L("F07_print_file_no_stale", "F01 without a stale file (control: refused as round 35 E72?)", 'print "' + PCs(5000) + '" file pc.in screen no\ninclude pc.in\nrun 3000\n')
+LG("F08_lig_print_file_include_stale", "LIGGGHTS: print \"fix m3 ... 0.8\" file m.in; include m.in (a stale m.in with 0.6)",
+   'print "' + LE.format(e="0.8") + '" file m.in screen no\ninclude m.in\nrun 3000\n', data={"m.in": LE.format(e="0.6") + "\n"})
+
+L("F09_shell_mv_include_no_stale", "shell mv new.in pc.in; include pc.in; shell mv pc.in new.in (no stale file; the folder as it was after the run)",
+  "shell mv new.in pc.in\ninclude pc.in\nshell mv pc.in new.in\nrun 3000\n", data={"new.in": PCs(5000) + "\n"})
+L("F10_shell_mv_include_between_runs", "run 1000; shell mv new.in pc.in; include pc.in (kn 5000); run 3000 (meets there)",
+  "run 1000\nshell mv new.in pc.in\ninclude pc.in\nshell mv pc.in new.in\nrun 3000\n", pair=IN(G11), data={"new.in": PCs(5000) + "\n"})
+L("F11_shell_mv_wall_include", "WALL: shell mv w.in wall.in; include wall.in (the floor made kn 5000)",
+  "shell mv w.in wall.in\ninclude wall.in\nshell mv wall.in w.in\nrun 3000\n", pair=WALLP(), data={"w.in": "fix floor all wall/gran granular " + HK5 + " zplane 0 NULL\n"}, **WALL)
+LG("F12_lig_shell_mv_include", "LIGGGHTS: shell mv new.in m.in; include m.in (e 1 2 0.8); shell mv back",
+   "shell mv new.in m.in\ninclude m.in\nshell mv m.in new.in\nrun 3000\n", data={"new.in": LE.format(e="0.8") + "\n"})
+L("F13_shell_mv_include_in_every", "run 4000 every 1000 \"include pc.in\" with pc.in made by shell mv before the run (kn 5000 from part 2; the pair meets in part 2)",
+  "shell mv new.in pc.in\nrun 4000 every 1000 \"include pc.in\"\nshell mv pc.in new.in\n", pair=IN(G(2)), live="part 2", data={"new.in": PCs(5000) + "\n"})
+
 # ================================================================ O: public decks, shortened (sources in FINDINGS.md and each file's head)
 OD = os.path.join(HERE, "odecks")
 OMETA = {"O01_pour_loop_gravelle": ("pass 2", {"PAIR": "types 1 2", "SEP": "1.0"}),
