@@ -508,6 +508,18 @@ LG("F12_lig_shell_mv_include", "LIGGGHTS: shell mv new.in m.in; include m.in (e 
 L("F13_shell_mv_include_in_every", "run 4000 every 1000 \"include pc.in\" with pc.in made by shell mv before the run (kn 5000 from part 2; the pair meets in part 2)",
   "shell mv new.in pc.in\nrun 4000 every 1000 \"include pc.in\"\nshell mv pc.in new.in\n", pair=IN(G(2)), live="part 2", data={"new.in": PCs(5000) + "\n"})
 
+L("F14_include_symlink_inside", "include link.in, link.in a symbolic link to real.in in the same folder (kn 5000)", "include link.in\nrun 3000\n",
+  data={"real.in": PCs(5000) + "\n"})
+L("F15_include_symlink_outside", "include link.in, a symbolic link to ../../shared/mat.in outside the deck's folder (kn 5000)", "include link.in\nrun 3000\n")
+L("F16_include_symlink_between_runs", "run 1000; include link.in (symlink to real.in: kn 5000); run 3000", "run 1000\ninclude link.in\nrun 3000\n", pair=IN(G11),
+  data={"real.in": PCs(5000) + "\n"})
+LG("F17_lig_include_symlink", "LIGGGHTS: include link.in (symlink to real.in: fix m3 e 1 2 0.8)", "include link.in\nrun 3000\n", data={"real.in": LE.format(e="0.8") + "\n"})
+L("F18_include_through_dir_symlink", "include sub/pc.in, sub a symbolic link to the folder real_sub (pc.in: kn 5000)", "include sub/pc.in\nrun 3000\n",
+  data={"real_sub/pc.in": PCs(5000) + "\n"})
+L("F19_include_over_20MB", "include big.in: 22 MB of comment lines, then pair_coeff 1 2 kn 5000 (big.in is written by make_decks36.py, not committed)",
+  "include big.in\nrun 3000\n")
+SYMLINKS = {"F18": ("sub", "real_sub"), "F14": ("link.in", "real.in"), "F15": ("link.in", "../../shared/mat.in"), "F16": ("link.in", "real.in"), "F17": ("link.in", "real.in")}
+
 # ================================================================ O: public decks, shortened (sources in FINDINGS.md and each file's head)
 OD = os.path.join(HERE, "odecks")
 OMETA = {"O01_pour_loop_gravelle": ("pass 2", {"PAIR": "types 1 2", "SEP": "1.0"}),
@@ -539,6 +551,11 @@ def write(only=()):
             p = os.path.join(d, f)
             os.makedirs(os.path.dirname(p), exist_ok=True)
             open(p, "w").write(t)
+        if name[:3] in SYMLINKS and not os.path.lexists(os.path.join(d, SYMLINKS[name[:3]][0])):
+            os.symlink(SYMLINKS[name[:3]][1], os.path.join(d, SYMLINKS[name[:3]][0]))
+        if name.startswith("F19") and not os.path.exists(os.path.join(d, "big.in")):
+            with open(os.path.join(d, "big.in"), "w") as f:
+                f.write(("# " + "x" * 98 + "\n") * 220000 + PCs(5000) + "\n")
         if name.startswith("M25") and not os.path.exists(os.path.join(d, "r.500")):
             import subprocess, tempfile
             t = tempfile.mkdtemp()
