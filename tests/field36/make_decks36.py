@@ -334,7 +334,7 @@ L("Y04_variable_delete_restyle", "variable k equal 3000; variable k delete; vari
 L("Y05_index_not_redefined", "variable k index 3000; variable k index 5000 (ignored: 3000)", "variable k index 3000\nvariable k index 5000\n" + PCs("${k}") + "\nrun 3000\n")
 L("Y06_equal_redefined_after_use", "variable k equal 3000; pair_coeff ${k}; variable k equal 5000 (the pair_coeff keeps 3000)", "variable k equal 3000\n" + PCs("${k}") + "\nvariable k equal 5000\nrun 3000\n")
 L("Y07_pair_style_gran_hertz_history", "restyle to gran/hertz/history 2e7 NULL 3000 NULL 0.3 0", "pair_style gran/hertz/history 2e7 NULL 3000 NULL 0.3 0\npair_coeff * *\nrun 3000\n")
-L("Y08_pair_style_again_no_coeff", "pair_style granular again and no pair_coeff (LAMMPS stops)", "pair_style granular\nrun 3000\n")
+L("Y08_pair_style_again_no_coeff", "pair_style granular again and no pair_coeff (the same style keeps the coefficients: LAMMPS runs)", "pair_style granular\nrun 3000\n")
 LE1 = lambda e: f"fix m3 all property/global coefficientRestitution peratomtypepair 3 0.6 {e} 0.7 {e} 0.4 0.45 0.7 0.45 0.8\n"
 LG("Y09_lig_limitforce_low_e", "LIGGGHTS hertz limitForce on, e 1 2 0.1", "run 3000\n", pre=LBASE(e="0.6 0.1 0.7 0.1 0.4 0.45 0.7 0.45 0.8").replace("tangential history\npair_coeff", "tangential history limitForce on\npair_coeff"))
 LG("Y10_lig_no_limitforce_low_e", "LIGGGHTS hertz without limitForce, e 1 2 0.1 (control)", "run 3000\n", pre=LBASE(e="0.6 0.1 0.7 0.1 0.4 0.45 0.7 0.45 0.8"))
@@ -518,6 +518,12 @@ L("F18_include_through_dir_symlink", "include sub/pc.in, sub a symbolic link to 
   data={"real_sub/pc.in": PCs(5000) + "\n"})
 L("F19_include_over_20MB", "include big.in: 22 MB of comment lines, then pair_coeff 1 2 kn 5000 (big.in is written by make_decks36.py, not committed)",
   "include big.in\nrun 3000\n")
+L("F20_fix_print_file_variable_stale", "fix print writes k.txt (5000) in run 1; variable k file k.txt; pair_coeff 1 2 ${k} (a stale k.txt: 3000)",
+  'fix fp all print 1000 "5000" file k.txt screen no\nrun 1000\nunfix fp\nvariable k file k.txt\n' + PCs("${k}") + "\nrun 3000\n", pair=IN(G11), data={"k.txt": "3000\n"})
+L("F21_print_file_variable_stale", "print \"5000\" file k.txt; variable k file k.txt; kn ${k} (a stale k.txt: 3000)",
+  'print "5000" file k.txt screen no\nvariable k file k.txt\n' + PCs("${k}") + "\nrun 3000\n", data={"k.txt": "3000\n"})
+L("F22_shell_mv_variable_file", "shell mv new.txt k.txt; variable k file k.txt; kn ${k} (new.txt: 5000)", "shell mv new.txt k.txt\nvariable k file k.txt\n" + PCs("${k}") + "\nshell mv k.txt new.txt\nrun 3000\n",
+  data={"new.txt": "5000\n"})
 SYMLINKS = {"F18": ("sub", "real_sub"), "F14": ("link.in", "real.in"), "F15": ("link.in", "../../shared/mat.in"), "F16": ("link.in", "real.in"), "F17": ("link.in", "real.in")}
 
 # ================================================================ O: public decks, shortened (sources in FINDINGS.md and each file's head)
