@@ -274,6 +274,9 @@ L("M29_restart_named_stale_file_shipped", "the folder holds a stale r.1000 (an o
   "run 1000\nwrite_restart r.*\nclear\nread_restart r.1000\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
 GEN_M29 = (BASE(wall=False) + IN(G11).replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000") + "run 1000\nwrite_restart r.*\n")
 
+L("M30_restart_toggle_stale_shipped", "restart 500 ra.rst rb.rst in the runs (rb.rst at step 1000: lv2 2500); the folder holds a stale rb.rst (lv2 8000); read_restart rb.rst (LAMMPS: its own)",
+  "restart 500 ra.rst rb.rst\nrun 1000\nclear\nread_restart rb.rst\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pre=BASE(wall=False), pair=IN(G11))
+GEN_M30 = (BASE(wall=False) + IN(G11).replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000") + "run 1000\nwrite_restart rb.rst\n")
 # ================================================================ K: pair_coeff type ranges and labels (3 types)
 B3 = BASE(nt=3, wall=False)
 PCk = lambda spec, k: f"pair_coeff {spec} " + HKk(k) + "\n"
@@ -524,7 +527,14 @@ L("F21_print_file_variable_stale", "print \"5000\" file k.txt; variable k file k
   'print "5000" file k.txt screen no\nvariable k file k.txt\n' + PCs("${k}") + "\nrun 3000\n", data={"k.txt": "3000\n"})
 L("F22_shell_mv_variable_file", "shell mv new.txt k.txt; variable k file k.txt; kn ${k} (new.txt: 5000)", "shell mv new.txt k.txt\nvariable k file k.txt\n" + PCs("${k}") + "\nshell mv k.txt new.txt\nrun 3000\n",
   data={"new.txt": "5000\n"})
+L("F23_shell_mv_sweep_loop", "a parameter sweep: loop i 1..2: shell mv p_${i}.in p.in; include p.in; run 1000; shell mv p.in p_${i}.in (pass 2 kn 5000; the pair meets in pass 2)",
+  "variable i loop 2\nlabel sweep\nshell mv p_${i}.in p.in\ninclude p.in\nrun 1000\nshell mv p.in p_${i}.in\nnext i\njump SELF sweep\n", pair=IN(G11), live="pass 2",
+  data={"p_1.in": PCs(3000) + "\n", "p_2.in": PCs(5000) + "\n"})
 SYMLINKS = {"F18": ("sub", "real_sub"), "F14": ("link.in", "real.in"), "F15": ("link.in", "../../shared/mat.in"), "F16": ("link.in", "real.in"), "F17": ("link.in", "real.in")}
+
+LG("L16_lig_restart_stale_shipped", "LIGGGHTS hooke/stiffness: the folder holds a stale r.1000 (lv2 8000); the deck writes r.* at step 1000 and reads r.1000",
+   "run 1000\nwrite_restart r.*\nclear\natom_modify map array\nnewton off\ncommunicate single vel yes\nread_restart r.1000\nneighbor 0.002 bin\n" + LHSR + "timestep 1e-6\nrun 3000\n",
+   pre=LHS.replace("fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n", "").replace("fix gravi all gravity 9.81 vector 0.0 0.0 -1.0\n", ""), pair=LIN(G11))
 
 # ================================================================ O: public decks, shortened (sources in FINDINGS.md and each file's head)
 OD = os.path.join(HERE, "odecks")
@@ -568,6 +578,19 @@ def write(only=()):
             open(os.path.join(t, "g.in"), "w").write(GEN_M25)
             subprocess.run(["lmp", "-in", "g.in", "-log", "none"], cwd=t, capture_output=True)
             os.replace(os.path.join(t, "r.500"), os.path.join(d, "r.500"))
+        if name.startswith("M30") and not os.path.exists(os.path.join(d, "rb.rst")):
+            import subprocess, tempfile
+            t = tempfile.mkdtemp()
+            open(os.path.join(t, "g.in"), "w").write(GEN_M30)
+            subprocess.run(["lmp", "-in", "g.in", "-log", "none"], cwd=t, capture_output=True)
+            os.replace(os.path.join(t, "rb.rst"), os.path.join(d, "rb.rst"))
+        if name.startswith("L16") and not os.path.exists(os.path.join(d, "r.1000")):
+            import subprocess, tempfile
+            t = tempfile.mkdtemp()
+            txt = DECKS[name][0].split("run 1000")[0].replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000")
+            open(os.path.join(t, "g.in"), "w").write(txt + "run 1000\nwrite_restart r.*\n")
+            subprocess.run(["liggghts", "-in", "g.in", "-log", "none"], cwd=t, capture_output=True)
+            os.replace(os.path.join(t, "r.1000"), os.path.join(d, "r.1000"))
         if name.startswith("M29") and not os.path.exists(os.path.join(d, "r.1000")):
             import subprocess, tempfile
             t = tempfile.mkdtemp()
