@@ -530,11 +530,30 @@ L("F22_shell_mv_variable_file", "shell mv new.txt k.txt; variable k file k.txt; 
 L("F23_shell_mv_sweep_loop", "a parameter sweep: loop i 1..2: shell mv p_${i}.in p.in; include p.in; run 1000; shell mv p.in p_${i}.in (pass 2 kn 5000; the pair meets in pass 2)",
   "variable i loop 2\nlabel sweep\nshell mv p_${i}.in p.in\ninclude p.in\nrun 1000\nshell mv p.in p_${i}.in\nnext i\njump SELF sweep\n", pair=IN(G11), live="pass 2",
   data={"p_1.in": PCs(3000) + "\n", "p_2.in": PCs(5000) + "\n"})
-SYMLINKS = {"F18": ("sub", "real_sub"), "F14": ("link.in", "real.in"), "F15": ("link.in", "../../shared/mat.in"), "F16": ("link.in", "real.in"), "F17": ("link.in", "real.in")}
+SYMLINKS = {"D05": ("link.data", "d.data"), "F18": ("sub", "real_sub"), "F14": ("link.in", "real.in"), "F15": ("link.in", "../../shared/mat.in"), "F16": ("link.in", "real.in"), "F17": ("link.in", "real.in")}
 
 LG("L16_lig_restart_stale_shipped", "LIGGGHTS hooke/stiffness: the folder holds a stale r.1000 (lv2 8000); the deck writes r.* at step 1000 and reads r.1000",
    "run 1000\nwrite_restart r.*\nclear\natom_modify map array\nnewton off\ncommunicate single vel yes\nread_restart r.1000\nneighbor 0.002 bin\n" + LHSR + "timestep 1e-6\nrun 3000\n",
    pre=LHS.replace("fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n", "").replace("fix gravi all gravity 9.81 vector 0.0 0.0 -1.0\n", ""), pair=LIN(G11))
+
+# ================================================================ D: pair coefficients in a data file
+def DDATA(sec, extra=""):
+    return ("two spheres\n\n2 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\n" + sec +
+            "Atoms # sphere\n\n1 1 0.004 2500 0.017450 0.02 0.05\n2 2 0.006 2500 0.022550 0.02 0.05\n\n"
+            "Velocities\n\n1 0.7714285714 0 0 0 0 0\n2 -0.2285714286 0 0 0 0 0\n" + extra)
+PIJ = lambda k12: ("PairIJ Coeffs # granular\n\n1 1 " + HK + "\n1 2 " + HKk(k12) + "\n2 2 " + HK + "\n\n")
+PII = lambda k: ("Pair Coeffs # granular\n\n1 " + HKk(k) + "\n2 " + HKk(k) + "\n\n")
+DH = "units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\npair_style granular\n"
+DT = "group lv1 id 1\ngroup lv2 id 2\nfix integ all nve/sphere\ntimestep 1e-6\n"
+RAW("D01_data_pairij_coeffs", "read_data with a PairIJ Coeffs section (1 2 kn 5000)", DH + "read_data d.data\n" + DT + "run 3000\n", data={"d.data": DDATA(PIJ(5000))})
+RAW("D02_data_pair_coeffs_mixed", "read_data with Pair Coeffs (1 1 and 2 2 kn 5000): 1 2 mixed, 5000", DH + "read_data d.data\n" + DT + "run 3000\n", data={"d.data": DDATA(PII(5000))})
+RAW("D03_data_coeffs_then_pair_coeff", "PairIJ Coeffs 1 2 kn 5000, then pair_coeff 1 2 kn 3000 in the deck (3000)", DH + "read_data d.data\n" + PCs(3000) + "\n" + DT + "run 3000\n",
+    data={"d.data": DDATA(PIJ(5000))})
+RAW("D04_data_nocoeff", "read_data d.data nocoeff (PairIJ 5000 ignored), pair_coeff * * kn 4000 in the deck", DH + "read_data d.data nocoeff\npair_coeff * * " + HKk(4000) + "\n" + DT + "run 3000\n",
+    data={"d.data": DDATA(PIJ(5000))})
+RAW("D05_data_symlink_coeffs", "read_data link.data, a symbolic link to d.data (PairIJ 1 2 kn 5000)", DH + "read_data link.data\n" + DT + "run 3000\n", data={"d.data": DDATA(PIJ(5000))})
+RAW("D06_data_shell_mv_coeffs", "shell mv new.data d.data; read_data d.data (PairIJ 1 2 kn 5000 in the moved file)", DH + "shell mv new.data d.data\nread_data d.data\nshell mv d.data new.data\n" + DT + "run 3000\n",
+    data={"new.data": DDATA(PIJ(5000))})
 
 # ================================================================ O: public decks, shortened (sources in FINDINGS.md and each file's head)
 OD = os.path.join(HERE, "odecks")
