@@ -230,15 +230,20 @@ STEP_NAMED = PERIODIC_PAIR + ("set atom 2 density 5000\nwrite_restart r.*\n{betw
 
 @needs_lammps
 @pytest.mark.dem
-@pytest.mark.parametrize("between, read", [("reset_timestep 0\nset atom 2 density 2500\nwrite_restart r.*\n", "r.*"),
-                                           ("", "r.1000")], ids=["the largest step read", "the step named"])
-def test_a_restart_named_by_the_step_is_the_one_lammps_writes(tmp_path, between, read):
+@pytest.mark.parametrize("between, read, written", [
+    ("reset_timestep 0\nset atom 2 density 2500\nwrite_restart r.*\n", "r.*", "write_restart r.*"),
+    ("", "r.1000", "write_restart r.*"), ("", "r.1000", "if '1 > 0' then 'write_restart r.*'"),
+    ("", "r.1000", "variable f string r.*\nwrite_restart ${f}")],
+    ids=["the largest step read", "the step named", "in an if", "named by a variable"])
+def test_a_restart_named_by_the_step_is_the_one_lammps_writes(tmp_path, between, read, written):
     """LAMMPS puts the step in place of a ``*`` in write_restart's name: r.1000 after the first run.
     The audit's pass, its runs skipped, wrote r.0 twice, the second over the first, and read that
     (M15: 0.4149 printed, sphere 2 at density 2500, where LAMMPS reads r.1000 at 5000: 0.390402),
     or stopped on a missing r.1000 (M17). A * so written after a run now makes the pass clocked:
-    each file is written at the deck's step and the read finds the file LAMMPS reads."""
-    deck = STEP_NAMED.format(between=between, read=read)
+    each file is written at the deck's step and the read finds the file LAMMPS reads; also where
+    the write is an if's branch or its name a variable's (field round 37, R26 R27, read as written
+    before)."""
+    deck = STEP_NAMED.format(between=between, read=read).replace("write_restart r.*\n", written + "\n", 1)
     printed, engine, err = audited_and_measured(deck, tmp_path)
     engine = abs(engine)       # (the atoms' order in LAMMPS' arrays after the read decides the sign)
     assert abs(printed - engine) < 0.004, (printed, engine, err)
@@ -248,21 +253,28 @@ def test_a_restart_named_by_the_step_is_the_one_lammps_writes(tmp_path, between,
 
 @needs_lammps
 @pytest.mark.dem
-@pytest.mark.parametrize("writer", ["restart 500 r.*", "restart 1000 r.1000 s.1000"])
-def test_a_restart_file_the_runs_would_write_is_not_read_from_a_stale_copy(tmp_path, writer):
+@pytest.mark.parametrize("writer, read", [("restart 500 r.*", "r.1000"), ("restart 1000 r.1000 s.1000", "r.1000"),
+                                          ("restart 500 r%.*", "r%.1000"),
+                                          ('run 1000 every 1000 "write_restart r.1000"', "r.1000")],
+                         ids=["by the step", "toggled", "per process", "in a run's every"])
+def test_a_restart_file_the_runs_would_write_is_not_read_from_a_stale_copy(tmp_path, writer, read):
     """Field round 36, M05 M06: ``restart N r.*`` during a run, then ``read_restart r.1000``. The
     pass makes no run, so it writes no such file, and where the deck's folder held an r.1000 from
     an earlier run (here sphere 2 at density 5000), the copy read that one where LAMMPS overwrites
     it first. A read of a file a skipped command names, its * read as any step, is refused in one
-    line, the user's file untouched."""
+    line, the user's file untouched; also a % (field round 37, R07: r%.1000 was not matched) and a
+    writer in a run's every, which the pass never runs where the run is kept whole (F16 F35)."""
     folder = tmp_path / "deck"
     folder.mkdir()
     lammps_separation_speed(PERIODIC_PAIR + "set atom 2 density 5000\nwrite_restart r.1000\n", folder)
     (folder / "in.engine").unlink()
     stale = (folder / "r.1000").read_bytes()
     (folder / "in.deck").write_text(PERIODIC_PAIR.replace("run 1000\n", f"{writer}\nrun 1000\n")
-                                    + "clear\n" + STEP_NAMED.split("clear\n", 1)[1].format(read="r.1000"))
+                                    + "clear\n" + STEP_NAMED.split("clear\n", 1)[1].format(read=read))
+    if read != "r.1000":
+        lammps_separation_speed(PERIODIC_PAIR + "set atom 2 density 5000\nwrite_restart r%.1000\n", folder)
     status, out, err = run(folder / "in.deck", "--g", "1")
     assert status == 2 and out == "" and len(err.strip().splitlines()) == 1, err
-    assert f"read_restart r.1000): it reads a file that line 18 ({writer}) names" in err, err
+    said = writer.split('"')[1] if '"' in writer else writer
+    assert f"read_restart {read}): it reads a file that line 18 ({said}) names" in err, err
     assert (folder / "r.1000").read_bytes() == stale

@@ -605,9 +605,9 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
     """
     path = Path(path)
     engine = engine or engine_of(path.read_text(encoding="utf-8", errors="replace"))
-    from .scratch import PUSHING_FIX_PREFIXES, scratch_copy
+    from .scratch import MAX_TEXT_BYTES, PUSHING_FIX_PREFIXES, scratch_copy
     from .runtime import fixed_face, lost_in_runs, read_in_run, resized_by_runs, stops_in_runs
-    from .stream import (deck_commands, engine_error, random_drawn, skipped, snapshots, unchecked,
+    from .stream import (deck_commands, engine_error, random_drawn, skipped, snapshots, unchecked, unmapped_script,
                          written_then_read)
     if engine == "LAMMPS":
         from ..engines.lammps import deck_run
@@ -651,6 +651,10 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError(place(read), reader, f"it reads a file that {place(wrote)} ({writer}) names, which the "
                                                  "audit does not run (it may run code or write files): the file read "
                                                  "may not be the one the engine run by hand reads; not audited")
+        if (hit := unmapped_script(commands, scratch)) is not None:
+            raise DeckError(place(hit[0]), hit[1], f"the script it runs holds more than {MAX_TEXT_BYTES >> 20} MB, or is "
+                                                   "a link to such a file: more than the audit maps line by line; "
+                                                   "not audited")
         atoms = snapshots(done.atoms) + snapshots(done.at_end)
         if done.timed_out and not atoms:
             # no run and no end reached (a loop without a run): nothing to audit, and "no particle"

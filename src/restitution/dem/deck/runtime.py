@@ -179,6 +179,8 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
     >>> written = cmds[2:3] + [Executed((None, 7), "write_restart r.*"), Executed((None, 8), "write_data d.0")]
     >>> run_dependent(written), run_dependent(written, clocked=True)
     ([((None, 7), 'write_restart r.*')], [])
+    >>> run_dependent(cmds[2:3] + [Executed((None, 9), "write_restart r.*")], {(None, 9): "write_restart ${f}"})
+    [((None, 9), 'write_restart ${f}')]
     """
     allowed = _MATH | CLOCK if clocked else _MATH
     source = source or {}
@@ -219,7 +221,10 @@ def run_dependent(commands: list, source: dict | None = None, clocked: bool = Fa
             after_run = True
             if halts and allowed is not _MATH:
                 allowed, version = _MATH, version + 1
-        elif after_run and split[0] in STEP_NAMED and "*" in " ".join(split[1:2]) and "step" not in allowed:
+        elif after_run and "step" not in allowed and any(
+                said[:1] and said[0] in STEP_NAMED and "*" in " ".join(said[1:2]) for said in (split, cmd.text.split())):
+            # (as written, or as the engine ran it: a branch of an if, a name from a variable: field
+            # round 37, R26 R27)
             # the engine puts the step in place of the *, and a later read (``read_restart r.*``, the
             # largest step; a name written out) finds the file by it (field round 36, M15: two files
             # of the pass's step 0, one overwriting the other, where LAMMPS wrote r.1000 and r.0)

@@ -30,7 +30,7 @@ from ..deck_text import words as words_of
 from .runtime import IN_RUN_ONLY
 
 __all__ = ["Scratch", "scratch_copy", "NOOP", "DYNAMIC", "SKIPPED_COMMANDS", "MAX_FOLDER_BYTES", "normalised",
-           "AUDIT", "split_every", "MAX_PARTS"]
+           "AUDIT", "split_every", "MAX_PARTS", "MAX_TEXT_BYTES"]
 
 #: The no-op the k-th skipped command becomes (both engines have label; nothing jumps to it): its
 #: echo tells that the deck reached it
@@ -158,7 +158,8 @@ MAX_FOLDER_BYTES = 200 * 2 ** 20
 #: How many folders above the deck's its files may reach by ``..`` (a CFDEM case's ``../DEM/...``):
 #: what they name there is copied beside the copy, at the same place; further is refused
 MAX_UP = 3
-_MAX_TEXT_BYTES = 20 * 2 ** 20
+#: The largest file the copy reads whole: a script the deck runs that is larger is refused
+MAX_TEXT_BYTES = 20 * 2 ** 20
 
 
 @dataclass
@@ -190,7 +191,10 @@ class Scratch:
     folder not copied (a pipe, a device, a link to one: :func:`_not_copied`); ``after`` what stage
     k's marker file holds after its marker, where its run is the first part of a run in parts
     (:func:`split_every`): the commands between the parts and the markers of the later ones;
-    ``parts`` that run's text as written and its number of parts, by k."""
+    ``parts`` that run's text as written and its number of parts, by k; ``aliases`` each name in
+    the deck's folder that is one file with others there (a link, its target, hard links) -> the
+    names of the others: a write under one changes what a read under another reads by hand, where
+    the copy holds them apart (:func:`_materialise_links`)."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -212,6 +216,7 @@ class Scratch:
     left_out: set = field(default_factory=set)
     after: dict = field(default_factory=dict)
     parts: dict = field(default_factory=dict)
+    aliases: dict = field(default_factory=dict)
     granular: bool = False
 
 
@@ -291,29 +296,42 @@ def _not_copied(root: Path) -> tuple:
     return ignore, left
 
 
-def _materialise_links(copy: Path, source: Path) -> None:
-    """Each link in the copy to a regular file of at most _MAX_TEXT_BYTES made a file holding what
+def _materialise_links(copy: Path, source: Path) -> dict:
+    """Each link in the copy to a regular file of at most MAX_TEXT_BYTES made a file holding what
     it points to, read where the deck's folder ``source`` (of which ``copy`` is the copy) has the
     link, never in the scratch (a relative link leaving the folder would name the scratch's own
     files there), so that a script read through a link is mapped and made safe as any other
     (field round 36, F14 F17: ``include link.in``, a link to a file of the folder, ran its
     pair_coeff unseen, and F15, a link to a file outside the folder, which the confined engine
     could not open). A link to a folder stays a link; one to anything else was left out
-    (:func:`_not_copied`) or is too big to read whole."""
+    (:func:`_not_copied`) or is too big to read whole. Returns the names that are one file with
+    others (:attr:`Scratch.aliases`): each link with its target, hard links with each other; a
+    write or a removal under one name is then seen under the others by hand only (field round 37,
+    F47: write_restart a.rst, read_restart link.rst, read the old a.rst frozen in the copy)."""
+    same: dict = {}
     for base, _, names in os.walk(copy):
         for name in names:
             link = Path(base, name)
+            original = source / link.relative_to(copy)
+            try:
+                info = original.stat()
+            except OSError:
+                info = None
             if not link.is_symlink():
+                if info is not None and info.st_nlink > 1:
+                    same.setdefault((info.st_dev, info.st_ino), set()).add(name)
                 continue
             try:
-                target = (source / link.relative_to(copy)).resolve(strict=True)
+                target = original.resolve(strict=True)
                 info = target.stat()
             except (OSError, RuntimeError):
                 continue                 # dangling or looping: the engine finds nothing there either
-            if stat.S_ISREG(info.st_mode) and info.st_size <= _MAX_TEXT_BYTES:
+            same.setdefault((info.st_dev, info.st_ino), set()).update({name, target.name})
+            if stat.S_ISREG(info.st_mode) and info.st_size <= MAX_TEXT_BYTES:
                 data = target.read_bytes()
                 link.unlink()
                 link.write_bytes(data)
+    return {name: frozenset(group - {name}) for group in same.values() if len(group) > 1 for name in group}
 
 
 def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, confined: bool = True) -> Scratch:
@@ -397,7 +415,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
                                                  f"changed or could not be read while the audit copied it "
                                                  f"({' '.join(str(first).split())[:200]}); not audited: run "
                                                  "the audit again once nothing writes there") from None
-    _materialise_links(copy, src.parent)
+    aliases = _materialise_links(copy, src.parent)
     # a file named by an absolute path (a cluster's /home/... parameter file): copied into the
     # scratch, where the copy's commands read it, made safe as the folder's files are
     absolute = {}
@@ -409,7 +427,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     # a nonce: a deck cannot write a tag that passes for another line's
     scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
                       origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(left_out),
-                      granular=_granular_only(src))
+                      granular=_granular_only(src), aliases=aliases)
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(root / "deck") for name in sorted(names)
                               if Path(base, name) != scratch.deck] + sorted(absolute.values())
@@ -423,11 +441,11 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         if p.is_symlink():
             continue
         mapped = named is None or p == scratch.deck or p.name in named
-        if p.stat().st_size > _MAX_TEXT_BYTES:
+        if p.stat().st_size > MAX_TEXT_BYTES:
             if mapped and (p == scratch.deck or p.name in literal):
                 # the engine runs it, and its lines would come back unmapped (field round 36, F19:
                 # a 22 MB include, its pair_coeff at the end unseen: 0.4149 printed, LAMMPS 0.578975)
-                raise DeckError("deck", p.name, f"a script the deck runs holds more than {_MAX_TEXT_BYTES >> 20} MB, "
+                raise DeckError("deck", p.name, f"a script the deck runs holds more than {MAX_TEXT_BYTES >> 20} MB, "
                                                 "more than the audit maps line by line; not audited")
             continue
         try:
@@ -527,7 +545,7 @@ def _words_named(deck: Path, todo: list):
     """(file, line number, line, word without quotes) of every word of the scripts in ``todo``, of
     the scripts each names by include or jump as written (a name by .. or an absolute path is a
     word, which the caller follows or not) and of what the caller appends to ``todo`` as it goes;
-    each file read once, one larger than _MAX_TEXT_BYTES or unreadable passed over."""
+    each file read once, one larger than MAX_TEXT_BYTES or unreadable passed over."""
     seen = set()
     while todo:
         path = todo.pop()
@@ -565,7 +583,7 @@ def _path_word(path) -> str:
 
 
 def _text_file(path: Path) -> bool:
-    """Whether ``path`` (a link followed) is a regular file of at most _MAX_TEXT_BYTES, which the
+    """Whether ``path`` (a link followed) is a regular file of at most MAX_TEXT_BYTES, which the
     scan of named files may read whole: not a device, a pipe (whose read would wait) or a link to
     one, nor a huge or sparse file (field round 15, x05-x07: an include of a link to /dev/zero or to
     a 3 GB sparse file ran out of memory, one of a named pipe hung)."""
@@ -573,7 +591,7 @@ def _text_file(path: Path) -> bool:
         info = path.stat()
     except OSError:
         return False
-    return stat.S_ISREG(info.st_mode) and info.st_size <= _MAX_TEXT_BYTES
+    return stat.S_ISREG(info.st_mode) and info.st_size <= MAX_TEXT_BYTES
 
 
 def scripts_named(deck: Path, literal: bool = False) -> list | None:
@@ -946,7 +964,7 @@ def _copied_text(scratch: Scratch, name: str) -> str | None:
         return None
     path = scratch.deck.parent / name.strip("\"'")
     try:
-        return path.read_text(encoding="utf-8") if path.is_file() and path.stat().st_size <= _MAX_TEXT_BYTES else None
+        return path.read_text(encoding="utf-8") if path.is_file() and path.stat().st_size <= MAX_TEXT_BYTES else None
     except (OSError, UnicodeDecodeError):
         return None
 

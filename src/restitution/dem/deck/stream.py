@@ -17,7 +17,8 @@ from collections import Counter
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-from .scratch import AUDIT, DYNAMIC, GUARDED, NOOP, STAGE_LABEL, UNSET, Scratch, normalised
+from .scratch import (AUDIT, DYNAMIC, GUARDED, MAX_TEXT_BYTES, NOOP, SKIPPED_COMMANDS, STAGE_LABEL, UNSET, Scratch,
+                      normalised)
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS, RUN_PRINTED, SETUP_DUMP
 
@@ -338,7 +339,7 @@ def skipped(commands: list, scratch: Scratch) -> dict:
 
 
 #: Commands that read a file the deck names (its word, the index of the file name among its words)
-_READS = {"include": 1, "read_data": 1, "molecule": 2, "read_dump": 1, "read_restart": 1}
+_READS = {"include": 1, "jump": 1, "read_data": 1, "molecule": 2, "read_dump": 1, "read_restart": 1}
 
 
 def _split(text: str) -> list:
@@ -456,27 +457,81 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     >>> written_then_read(cmds, s) is None, written_then_read(cmds[:1] + [Executed((None, 4), 'include "k  k.in"')], s)[1]
     (True, ((None, 4), 'include "k  k.in"'))
     """
-    reached, moved = [], []
+    reached, moved, ran = [], [], []
     for cmd in commands:
         k = _skipped_index(cmd, scratch)
         if k is not None:
             reached.append(scratch.skipped[k][1:])
             continue
-        if cmd.text.startswith("shell") and _split(cmd.text)[1:2] == ["mv"]:
+        split = _split(cmd.text)
+        if cmd.stage is not None and "every" in split:
+            # a run kept whole: the commands its every names never run in the pass (field round 37,
+            # F16: run 1000 every 1000 "shell mv new.in pc.in", then include pc.in); a run made
+            # as its parts runs them, echoed as the deck's own
+            for quoted in split[split.index("every") + 2:]:
+                first = quoted.split()[:1]
+                if first and (first[0] in SKIPPED_COMMANDS or first[0] in _RAN_WRITERS):
+                    reached.append((cmd.loc, quoted))
+            continue
+        if split[:1] == ["shell"] and split[1:2] in (["mv"], ["rm"]):
             moved.append((cmd.loc, cmd.text))
             continue
+        if split[:1] and split[0] in _RAN_WRITERS:
+            ran.append((cmd.loc, cmd.text))
+            continue
         name = _read_file(cmd.text)
-        if name is None or not (reached or moved):
+        if name is None or name == "SELF" or not (reached or moved or ran):
             continue
         base = os.path.basename(name)
+        # the same file under another name (a link, its target, a hard link): the copy holds them
+        # apart, so a write or a removal under one is unseen under the other (field round 37, F47)
+        others = scratch.aliases.get(base, frozenset())
         # a file shell mv put in place (it runs, in the copy) is read by the engine, but its lines
         # are not mapped to the deck's: only the files the copy found when it was made are (field
         # round 36, F09: shell mv new.in pc.in, include pc.in: its pair_coeff unseen, 0.4149
         # printed where LAMMPS ran kn 5000, 0.578975); a file read as data the engine reads itself
-        writers = reached + (moved if _split(cmd.text)[:1] in (["include"], ["jump"]) else [])
-        for loc, text in writers:
-            if base and any(_may_name(os.path.basename(word), base) for word in _split(text)[1:]):
+        script = split[:1] in (["include"], ["jump"])
+        for loc, text, names in [*((loc, text, {base} | others) for loc, text in reached),
+                                 *((loc, text, {base} | others if script else others) for loc, text in moved),
+                                 *((loc, text, others) for loc, text in ran)]:
+            if any(_may_name(os.path.basename(word), one) for word in _split(text)[1:] for one in names):
                 return (loc, text), (cmd.loc, cmd.text)
+    return None
+
+
+#: The writers the copy runs, into itself: a read of their file under its own name reads what they
+#: wrote, one under another name of the same file does not (:attr:`Scratch.aliases`)
+_RAN_WRITERS = frozenset({"write_restart", "write_data"})
+
+
+def unmapped_script(commands: list, scratch: Scratch) -> tuple | None:
+    """The first include or jump the engine ran of a file in the copy whose lines the copy did not
+    map: one over MAX_TEXT_BYTES, or a link left as a link (to such a file): its commands run in
+    the engine and come back without a tag (field round 37, F20: ``include ${f}`` of a 22 MB file,
+    F21: a link to it; round 36, F19). ((file, line), text) of the command, or None.
+
+    Examples
+    --------
+    >>> import tempfile
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     s = Scratch(Path(d), Path(d, "in.x"))
+    ...     with open(Path(d, "big.in"), "wb") as big:
+    ...         _ = big.truncate(MAX_TEXT_BYTES + 1)
+    ...     unmapped_script([Executed((None, 2), "include big.in"), Executed((None, 3), "include in.x")], s)
+    ((None, 2), 'include big.in')
+    """
+    for cmd in commands:
+        if not cmd.text.startswith(("include", "jump")):
+            continue
+        split = _split(cmd.text)
+        if len(split) < 2 or split[0] not in ("include", "jump") or split[1] == "SELF" or "$" in split[1]:
+            continue
+        path = scratch.deck.parent / split[1]
+        try:
+            if path.is_symlink() or path.is_file() and path.stat().st_size > MAX_TEXT_BYTES:
+                return cmd.loc, cmd.text
+        except OSError:
+            continue
     return None
 
 
@@ -490,13 +545,24 @@ def _may_name(written: str, read: str) -> bool:
     --------
     >>> _may_name("r.*", "r.1000"), _may_name("r.*", "r.*"), _may_name("d.%.*", "d.3.20"), _may_name("r.*", "s.1")
     (True, True, True, False)
+    >>> _may_name("r%.*", "r%.1000"), _may_name("r%.*", "rbase.1000"), _may_name("${f}", "r.1"), _may_name("d.${i}.txt", "e.1")
+    (True, True, True, False)
     """
     if written == read:
         return True
-    if not set("*%") & set(written):
+    if not set("*%$") & set(written):
         return False
-    pattern = "".join(r"\d+" if c in "*%" else re.escape(c) for c in written)
+    # a read may name the same pattern (read_restart r%.*, field round 37, R07) or a step of it; a
+    # variable in a skipped command's name (never substituted: it never ran) may stand for anything
+    # (R30: restart 1000 ${f}, f = r%.*)
+    pattern = "".join(".*" if piece.startswith("$") else
+                      "".join({"*": r"(?:\d+|\*)", "%": r"(?:\d+|base|%)"}.get(c, re.escape(c)) for c in piece)
+                      for piece in _VARIABLE.split(written) if piece)
     return re.fullmatch(pattern, read) is not None
+
+
+#: A variable's reference in a name: ${name}, $(formula), $x
+_VARIABLE = re.compile(r"(\$\{[^}]*\}|\$\([^)]*\)|\$\w)")
 
 
 def unchecked(commands: list, scratch: Scratch) -> list:
