@@ -201,6 +201,19 @@ L("R22_restart_every_stale_star_read", "restart 1000 r.*; run 1000; read_restart
 L("R23_dump_star_include", "dump of custom text d.* then include d.1000? (LAMMPS stops: not a script); fair", "dump dd all custom 1000 d.* id\nrun 1000\nundump dd\ninclude d.1000\nrun 3000\n", pair=IN(G11))
 L("R24_write_restart_star_before_run_only", "write_restart r.* at step 0 (no run before: step 0 alike), lv2 5000 after; run 1000; read r.0 (2500)",
   "write_restart r.*\nset atom 2 density 5000\nrun 1000\nclear\nread_restart r.0\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pair=IN(G11))
+L("R25_write_data_in_if_stale", "R04 with a stale d.1000 in the folder (lv2 8000): run 1000; 5000; if then write_data d.*; reset 0; 2500; write_data d.0; read_data d.1000 (LAMMPS: its own, 5000)",
+  "run 1000\nset atom 2 density 5000\nif \"1 > 0\" then \"write_data d.*\"\nreset_timestep 0\nset atom 2 density 2500\nwrite_data d.0\nclear\n"
+  + m6.MDH.format(f="d.1000") + "run 3000\n", pair=IN(G11))
+L("R26_write_restart_in_if_stale_named", "a stale r.1000 (lv2 8000); run 1000; if then write_restart r.* (LAMMPS r.1000, 2500); read_restart r.1000",
+  "run 1000\nif \"1 > 0\" then \"write_restart r.*\"\nclear\nread_restart r.1000\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pair=IN(G11))
+L("R27_write_restart_var_stale_named", "a stale r.1000 (lv2 8000); variable f string r.*; run 1000; write_restart ${f} (LAMMPS r.1000, 2500); read_restart r.1000",
+  "variable f string r.*\nrun 1000\nwrite_restart ${f}\nclear\nread_restart r.1000\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pair=IN(G11))
+L("R28_write_restart_in_include_stale", "a stale r.1000 (lv2 8000); run 1000; include w.in (write_restart r.*); read_restart r.1000 (LAMMPS: its own, 2500)",
+  "run 1000\ninclude w.in\nclear\nread_restart r.1000\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pair=IN(G11), data={"w.in": "write_restart r.*\n"})
+L("R29_write_dump_var_read_dump", "run 1000; variable f string d.*; write_dump all custom ${f} ... (d.1000); velocity lv2 0; read_dump d.1000 (refused?)",
+  "variable f string d.*\nrun 1000\nwrite_dump all custom ${f} id type x y z vx vy vz\nvelocity lv2 set 0 0 0 units box\nread_dump d.1000 1000 x y z vx vy vz\nrun 3000\n", pair=IN(G11))
+L("R30_restart_percent_var_stale", "R07 with the restart name from a variable (f string r%.*) and the stale r%.1000 files", 
+  "variable f string r%.*\nrestart 1000 ${f}\nrun 1000\nclear\nread_restart r%.1000\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pre=MB, pair=IN(G11))
 
 # ================================================================ P: run N pre no every M; the still run after replicate
 L("P01_rep_pc_preno_every_meets_part1", "run 1000; replicate; pc 5000; run 2000 pre no every 1000 \"print x\" (set up at part 1: meets there, 5000)",
@@ -287,7 +300,9 @@ L("F20_big_by_variable", "variable f string big.in; include ${f} (22 MB: comment
   "variable f string big.in\ninclude ${f}\nrun 3000\n")
 L("F21_big_through_link", "include link.in -> big.in (22 MB; kn 5000 at its end)", "include link.in\nrun 3000\n")
 LINKS["F21"] = [("link.in", "big.in")]
-L("F22_jump_moved_file", "shell mv new.in j.in; jump j.in (j.in: kn 5000, run 3000)", "shell mv new.in j.in\njump j.in\n", data={"new.in": PC5 + "run 3000\n"})
+JB = "jump in.deck back\n"
+L("F22_jump_moved_file", "shell mv new.in j.in; jump j.in (j.in: kn 5000, run 3000, jump back to the deck's label back)", "shell mv new.in j.in\njump j.in\nlabel back\n",
+  data={"new.in": PC5 + "run 3000\n" + JB})
 L("F23_link_chain", "a.in -> b.in -> real.in (kn 5000); include a.in", "include a.in\nrun 3000\n", data={"real.in": PC5})
 LINKS["F23"] = [("b.in", "real.in"), ("a.in", "b.in")]
 L("F24_shell_mv_link_itself", "shell mv link.in x.in (a link to real.in, kn 5000); include x.in", "shell mv link.in x.in\ninclude x.in\nrun 3000\n", data={"real.in": PC5})
@@ -323,6 +338,28 @@ L("F33_molecule_after_mv", "shell mv big.mol s.mol (a 6 mm sphere); molecule s s
 L("F34_read_data_after_mv_stale", "shell mv new.data d.data (lv2 5000); read_data d.data; a stale d.data (lv2 8000) in the folder",
   "", pre="", pair=m6.MDH.replace("read_data {f}", "shell mv new.data d.data\nread_data d.data") + "run 3000\n")
 GEN["F34"] = "data"
+
+L("F35_every_print_file_include", "run 1000 every 500 \"print 'pc 5000' file pc.in\" (after each part); include pc.in (a stale pc.in 3000; LAMMPS 5000)",
+  "run 1000 every 500 \"print '" + PCs(5000) + "' file pc.in screen no\"\ninclude pc.in\nrun 3000\n", pair=IN(G11), data={"pc.in": PC3})
+L("F36_every_shell_cp_include", "run 1000 every 1000 \"shell cp new.in pc.in\"; include pc.in (stale 3000; LAMMPS 5000)",
+  "run 1000 every 1000 \"shell cp new.in pc.in\"\ninclude pc.in\nrun 3000\n", pair=IN(G11), data={"pc.in": PC3, "new.in": PC5})
+LG("F37_lig_every_shell_mv_include", "LIGGGHTS: run 1000 every 1000 \"shell mv new.in m.in\"; include m.in (stale e 0.6; LIGGGHTS 0.8)",
+   "run 1000 every 1000 \"shell mv new.in m.in\"\ninclude m.in\nrun 3000\n", pair=LIN(G11), data={"m.in": LEe(0.6), "new.in": LEe(0.8)})
+L("F38_every_write_coeff_include", "pc 5000; run 1000 every 1000 \"write_coeff wc.in\"; pair_coeff * * 2000; include wc.in (stale 3000; LAMMPS 5000)",
+  PC5 + "run 1000 every 1000 \"write_coeff wc.in\"\npair_coeff * * " + HK + "\ninclude wc.in\nrun 3000\n", pair=IN(G11), data={"wc.in": PC3})
+L("F39_every_shell_mv_split", "run 2000 every 1000 \"shell mv new.in pc.in\" \"pc $(2000+step)\" (split: part 2 kn 3000); include pc.in after (5000; stale 3000 ... the mv runs after part 1)",
+  "run 2000 every 1000 \"shell mv new.in pc.in\" \"" + STEP + "\"\ninclude pc.in\nrun 3000\n", pair=IN(G(3)), data={"pc.in": PC3, "new.in": PC5})
+L("F40_print_file_jump", "print pc 5000 file j.in; print run 3000 append j.in; jump j.in (a stale j.in: kn 3000, run 3000)",
+  'print "' + PCs(5000) + '" file j.in screen no\nprint "run 3000" append j.in screen no\nprint "jump in.deck back" append j.in screen no\njump j.in\nlabel back\n', data={"j.in": PC3 + "run 3000\n" + JB})
+L("F41_shell_mv_jump_stale", "shell mv new.in j.in (kn 5000 + run 3000); jump j.in; a stale j.in (3000 + run 3000)", "shell mv new.in j.in\njump j.in\nlabel back\n",
+  data={"j.in": PC3 + "run 3000\n" + JB, "new.in": PC5 + "run 3000\n" + JB})
+L("F42_jump_big_file", "jump big.in (22 MB: comments, then kn 5000 and run 3000; written by make_decks37.py, not committed)", "jump big.in\nlabel back\n")
+L("F43_include_in_if_after_mv", "shell mv new.in pc.in; if then \"include pc.in\" (5000; stale 3000)", "shell mv new.in pc.in\nif \"1 > 0\" then \"include pc.in\"\nrun 3000\n",
+  data={"pc.in": PC3, "new.in": PC5})
+L("F44_shell_cp_jump", "shell cp new.in j.in (kn 5000 + run 3000); jump j.in (stale j.in 3000)", "shell cp new.in j.in\njump j.in\nlabel back\n",
+  data={"j.in": PC3 + "run 3000\n" + JB, "new.in": PC5 + "run 3000\n" + JB})
+L("F45_include_jump_moved_inside_include", "include a.in where a.in: shell mv new.in j.in; jump j.in (j.in kn 5000, then the deck's run: jump ends a.in)",
+  "include a.in\nrun 3000\n", data={"a.in": "shell mv new.in j.in\njump j.in\n", "new.in": PC5})
 
 # ================================================================ K V Q Y W S T: the issue's nine classes, fresh variants
 B3 = BASE(nt=3, wall=False)
@@ -364,6 +401,8 @@ L("W02_lammps_wall_granular_kn5000", "LAMMPS WALL: the floor kn 5000 given again
   pre=BASE(), pair=WALLP(), **WALL)
 L("W03_lammps_wall_region", "LAMMPS WALL: wall/gran/region on a block region (hooke kn 4000)", "run 3000\n",
   pre=BASE(wall=False) + "region flr block 0 0.04 0 0.04 0 0.05 side out units box\nfix floor all wall/gran/region granular " + HKk(4000) + " region flr\n", pair=WALLP(), **WALL)
+L("W05_lammps_wall_region_side_in", "LAMMPS WALL: wall/gran/region on the box's block region, side in (hooke kn 4000): the sphere falls on its bottom face", "run 3000\n",
+  pre=BASE(wall=False) + "region flr block 0 0.04 0 0.04 0 0.1 side in units box\nfix floor all wall/gran/region granular " + HKk(4000) + " region flr\n", pair=WALLP(), **WALL)
 L("S01_create_two_sizes_type2", "a far type 2 sphere of 8 mm (type 2 sizes 6 and 8 mm)", "create_atoms 2 single 0.005 0.005 0.08\nset atom 3 diameter 0.008 density 2500\nrun 3000\n")
 L("S02_pour_type2_range", "fix pour type 2 diam range 0.005 0.007 + the 6 mm lv2", m6.POUR("diam range 0.005 0.007").replace(" 1 4767548", " 2 4767548") + "run 3000\n")
 L("S03_set_type_diameter_random", "set type 1 diameter then a far type 1 of 3 mm and density 1000: sizes and masses", "create_atoms 1 single 0.005 0.005 0.08\nset atom 3 diameter 0.003 density 1000\nrun 3000\n")
@@ -372,6 +411,38 @@ L("T02_dt1.2e-4_kn4000", "dt 1.2e-4 kn 4000", m6.TD(1.2e-4, 4000, 0.21e-3)[1], p
 LG("T03_lig_dt4e-5", "LIGGGHTS hertz e 0.5 dt 4e-5", "run 300\n", pre=LBASE().replace("timestep 1e-6", "timestep 4e-5"), pair=LIN(0.13e-3))
 L("T04_dt_changed_in_every", "run 2000 every 1000 \"timestep 8e-5\" (the pair meets in part 2 at dt 8e-5)", "run 2000 every 1000 \"timestep 8e-5\"\n", pair=IN(1.1e-3 + 60 * 8e-5), live="part 2")
 
+L("V08_round_tie_literal", "kn 1000*round(4.4999999999999999) (the literal is 4.5 in double: 5000)", PCs("$(1000*round(4.4999999999999999))") + "\nrun 3000\n")
+L("V09_ternary", "variable k equal ternary(1>0,5000,3000)", "variable k equal ternary(1>0,5000,3000)\n" + PCs("${k}") + "\nrun 3000\n")
+L("V10_logical_sum", "kn 2000*(1+(2>1)) (4000)", PCs("$(2000*(1+(2>1)))") + "\nrun 3000\n")
+L("V11_string_quoted", "variable k string \"4000\" (quoted)", "variable k string \"4000\"\n" + PCs("${k}") + "\nrun 3000\n")
+L("V12_immediate_fmt_3f", "kn $(4999.9996:%.3f) (5000.000)", PCs("$(4999.9996:%.3f)") + "\nrun 3000\n")
+L("V13_index_next_before", "variable k index 3000 5000; next k; kn ${k} (5000)", "variable k index 3000 5000\nnext k\n" + PCs("${k}") + "\nrun 3000\n")
+L("V14_equal_15g_roundtrip", "a = 1/3*15000 (4999.999999999999); b = ${a} (5000 at %.15g); if b == 5000 then kn 5000 else 3000",
+  "variable a equal 1/3*15000\nvariable b equal ${a}\nif \"${b} == 5000\" then \"" + PCs(5000) + "\" else \"" + PCs(3000) + "\"\nrun 3000\n")
+L("Q05_set_density_then_diameter_type", "set type 2 density 5000 (6 mm) then set type 2 diameter 0.006 again (mass kept)", "set type 2 density 5000\nset type 2 diameter 0.006\nrun 3000\n")
+L("Q06_set_one_command_order", "set atom 2 density 5000 diameter 0.006 (one command: density first)", "set atom 2 density 5000 diameter 0.006\nrun 3000\n")
+L("Q07_set_all_density_then_diameter_bigger", "set group all density 2500; set atom 2 diameter 0.008 (mass kept at 6 mm's? the contact at 8 mm)", "set group all density 2500\nset atom 2 diameter 0.008\nrun 3000\n",
+  pair=IN(0.1e-3).replace("create_atoms 2 single 0.023050", "create_atoms 2 single 0.024050"))
+LG("Y06_lig_restyle_hooke_stiffness", "LIGGGHTS: restyle to hooke/stiffness (kn 2000 gamman 500 typed), e ignored", "run 3000\n", pre=m6.LHS)
+LG("Y07_lig_e_from_variable_later", "LIGGGHTS: e given again from a variable set after (0.75)", "variable ee equal 0.75\n" + LE.format(e="${ee}") + "\nrun 3000\n")
+L("S04_pour_type2_poly", "fix pour type 2 diam poly 2 0.005 0.5 0.007 0.5 + the 6 mm lv2", m6.POUR("diam poly 2 0.005 0.5 0.007 0.5").replace(" 1 4767548", " 2 4767548") + "run 3000\n")
+LG("S05_lig_templates_type2_range", "LIGGGHTS: type 2 inserted with radii 2 and 4 mm (the 3 mm lv2 between), hertz e 0.5", m6.INS(0.002, 0.004).replace("atom_type 1", "atom_type 2") + "run 3000\n")
+LG("T05_lig_hooke_dt6e-5", "LIGGGHTS hooke (characteristicVelocity 1) e 0.5 at dt 6e-5", "run 300\n",
+   pre=LBASE(model="hooke", extra="fix m9 all property/global characteristicVelocity scalar 1.0\n").replace("timestep 1e-6", "timestep 6e-5"), pair=LIN(0.13e-3))
+LG("W04_lig_wall_xplane_type2", "LIGGGHTS WALLX: an xplane wall of type 2 only (e 1-2 0.5 ... the pair 1-2 e 0.5; the wall 0.65)", "run 3000\n",
+   pre=LBASE(e="0.6 0.65 0.7 0.65 0.4 0.45 0.7 0.45 0.8").replace("primitive type 3 zplane 0.0", "primitive type 2 xplane 0.0"),
+   pair="create_atoms 1 single 0.0021 0 0.1 units box\nset atom 1 diameter 0.004 density 2500\ngroup lv1 id 1\nvelocity lv1 set -0.9990185184 0 0\nfix nog all gravity 9.81 vector 0 0 -1\n",
+   PAIR="type 1 on wall wprim", WALLX="")
+L("P19_rep_preno_every_null_meets", "run 1000; replicate; pc 5000; run 2000 pre no every 1000 NULL (set up at part 1: meets there, 5000)",
+  "run 1000\nreplicate 1 1 1\n" + PC5 + "run 2000 pre no every 1000 NULL\n", pair=IN(G11), live="part 1")
+LG("P20_lig_first_run_preno_every_e", "LIGGGHTS: e 0.8 before the first run, run 3000 pre no every 1000 \"fix m3 e 0.7\" (part 1 0.8; part 2 0.7)",
+   LEe(0.8) + "run 3000 pre no every 1000 \"" + LE.format(e="0.7") + "\"\n", pair=LIN(G(2)), live="part 2")
+L("N18_next_every_skip_consumed_by_if_jump", "a loop 2; run 2000 every \"next a\" (armed); if then \"jump SELF skip\" (the skip consumed there); pc 5000; label skip; run 3000 (5000)",
+  "variable a loop 2\nrun 2000 every 1000 \"next a\"\nif \"1 > 0\" then \"jump SELF skip\"\n" + PC5 + "label skip\nrun 3000\n", pair=IN(G(3)))
+L("N19_next_every_skip_consumed_in_include", "a loop 2; run 2000 every \"next a\" (armed); include j.in (j.in: jump SELF e, which is skipped; pc 4000; label e); run 3000 (4000)",
+  "variable a loop 2\nrun 2000 every 1000 \"next a\"\ninclude j.in\nrun 3000\n", pair=IN(G(3)), data={"j.in": "jump SELF e\n" + PC4 + "label e\n"})
+L("N20_next_every_then_next_deck_exhaust", "a loop 2, b loop 1; run 2000 every \"next a\" (armed); next b (exhausts too); jump SELF skip (skipped); pc 5000; label skip; run 3000",
+  "variable a loop 2\nvariable b loop 1\nrun 2000 every 1000 \"next a\"\nnext b\njump SELF skip\n" + PC5 + "label skip\nrun 3000\n", pair=IN(G(3)))
 
 # ================================================================ O: public decks, shortened (sources in FINDINGS.md and each file's head)
 OD = os.path.join(HERE, "odecks")
@@ -385,9 +456,9 @@ for n, meta in OMETA.items():
     DECKS[n] = (open(os.path.join(OD, n[:3] + ".in")).read(), "last run", {"10x10m-ground.stl": STL} if n.startswith("O08") else {}, meta)
 
 # ================================================================ write
-def big(path):
+def big(path, tail=""):
     with open(path, "w") as f:
-        f.write(("# " + "x" * 98 + "\n") * 220000 + PCs(5000) + "\n")
+        f.write(("# " + "x" * 98 + "\n") * 220000 + PCs(5000) + "\n" + tail)
 
 
 def lmp_gen(text, outs, d):
@@ -426,10 +497,17 @@ def write(only=()):
             if not os.path.exists(os.path.join(d, a)):
                 os.link(os.path.join(d, b), os.path.join(d, a))
             open(os.path.join(d, "HARDLINKS"), "w").write("".join(f"{x} {y}\n" for x, y in HARD[k3]))
-        if k3 in ("F20", "F21") and not os.path.exists(os.path.join(d, "big.in")):
-            big(os.path.join(d, "big.in"))
+        if k3 in ("F20", "F21", "F42") and not os.path.exists(os.path.join(d, "big.in")):
+            big(os.path.join(d, "big.in"), "run 3000\n" + JB if k3 == "F42" else "")
         if k3 == "R07" and not os.path.exists(os.path.join(d, "rbase.1000")):
             lmp_gen(MB + IN(G11).replace("density 2500\ngroup lv1", "density 2500\ngroup lv1").replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000")
+                    + "run 1000\nwrite_restart r%.*\n", [("rbase.1000", "rbase.1000"), ("r0.1000", "r0.1000")], d)
+        if k3 in ("R25",) and not os.path.exists(os.path.join(d, "d.1000")):
+            lmp_gen(D8000 + "run 1000\nwrite_data d.1000\n", [("d.1000", "d.1000")], d)
+        if k3 in ("R26", "R27", "R28") and not os.path.exists(os.path.join(d, "r.1000")):
+            lmp_gen(D8000 + "run 1000\nwrite_restart r.*\n", [("r.1000", "r.1000")], d)
+        if k3 == "R30" and not os.path.exists(os.path.join(d, "rbase.1000")):
+            lmp_gen(MB + IN(G11).replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000")
                     + "run 1000\nwrite_restart r%.*\n", [("rbase.1000", "rbase.1000"), ("r0.1000", "r0.1000")], d)
         if k3 == "R09" and not os.path.exists(os.path.join(d, "r.2000")):
             lmp_gen(D8000 + "run 2000\nwrite_restart r.*\n", [("r.2000", "r.2000")], d)
