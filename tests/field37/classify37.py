@@ -5,5 +5,5 @@ import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from fieldkit import classify  # noqa: E402
 
-ORDER = ("SIL", "TRACE", "ANSW", "NP", "AVOID", "conservative", "left out", "correct", "fair", "not")   # worst first
+ORDER = ("SIL", "TRACE", "ANSW", "REF", "NP", "AVOID", "conservative", "left out", "correct", "fair", "not")   # worst first
 classify.outcome(os.path.dirname(os.path.abspath(__file__)), round=37, order=ORDER)

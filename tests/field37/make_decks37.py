@@ -143,6 +143,10 @@ LG("I24_lig_inc_next_deck_jump", "LIGGGHTS: q loop 1? a.in: next q (q loop 2): r
    "variable q loop 2\nrun 2000 every 1000 \"include a.in\"\njump SELF skip\n" + LEe(0.8) + "label skip\nrun 3000\n", pair=LPart(3), data={"a.in": "next q\n"})
 LG("I25_lig_last_part_if_step", "LIGGGHTS: every 'if \"$(step) >= 3000\" then \"include a.in\"' (only after the last part); run 3000 (0.8)",
    "run 3000 every 1000 'if \"$(step) >= 3000\" then \"include a.in\"'\nrun 3000\n", pair=LPart(4), data={"a.in": LEe(0.8)})
+LG("I26_lig_next_index_every", "LIGGGHTS: e index 0.6 0.7 0.8 0.9; every \"fix m3 ${e}\" \"next e\" (part 2 0.6, part 3 0.7)",
+   "variable e index 0.6 0.7 0.8 0.9\nrun 4000 every 1000 \"" + LE.format(e="${e}") + "\" \"next e\"\n", pair=LPart(3), live="part 3")
+LG("I27_lig_next_exhausts_skips_jump", "LIGGGHTS: a loop 2; run 2000 every \"next a\" (exhausted: the skip armed); jump SELF skip (skipped); e 0.8; label skip; run 3000 (0.8)",
+   "variable a loop 2\nrun 2000 every 1000 \"next a\"\njump SELF skip\n" + LEe(0.8) + "label skip\nrun 3000\n", pair=LPart(3))
 
 # ================================================================ R: files named by the step; reads of what skipped commands write
 RS = lambda w1, w2, rd: ("run 1000\nset atom 2 density 5000\n" + w1 + "\nreset_timestep 0\nset atom 2 density 2500\n" + w2 + "\nclear\n" + rd + "\n"
@@ -214,6 +218,14 @@ L("R29_write_dump_var_read_dump", "run 1000; variable f string d.*; write_dump a
   "variable f string d.*\nrun 1000\nwrite_dump all custom ${f} id type x y z vx vy vz\nvelocity lv2 set 0 0 0 units box\nread_dump d.1000 1000 x y z vx vy vz\nrun 3000\n", pair=IN(G11))
 L("R30_restart_percent_var_stale", "R07 with the restart name from a variable (f string r%.*) and the stale r%.1000 files", 
   "variable f string r%.*\nrestart 1000 ${f}\nrun 1000\nclear\nread_restart r%.1000\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pre=MB, pair=IN(G11))
+LHSp = m6.LHS.replace("fix wprim all wall/gran model hooke/stiffness tangential history primitive type 3 zplane 0.0\n", "").replace("fix gravi all gravity 9.81 vector 0.0 0.0 -1.0\n", "")
+LRD = "clear\natom_modify map array\nnewton off\ncommunicate single vel yes\nread_restart {f}\nneighbor 0.002 bin\n" + m6.LHSR + "timestep 1e-6\nrun 3000\n"
+LG("R31_lig_restart_in_if_star", "LIGGGHTS hooke/stiffness: run 1000; lv2 5000; if then write_restart r.*; reset 0; 2500; write_restart r.0; read_restart r.* (LIGGGHTS: r.1000, 5000)",
+   "run 1000\nset atom 2 density 5000\nif \"1 > 0\" then \"write_restart r.*\"\nreset_timestep 0\nset atom 2 density 2500\nwrite_restart r.0\n" + LRD.format(f="r.*"), pre=LHSp, pair=LIN(G11))
+LG("R32_lig_restart_var_star", "LIGGGHTS hooke/stiffness: variable f string r.*; run 1000; 5000; write_restart ${f}; reset 0; 2500; write_restart ${f}; read_restart r.* (r.1000: 5000)",
+   "variable f string r.*\nrun 1000\nset atom 2 density 5000\nwrite_restart ${f}\nreset_timestep 0\nset atom 2 density 2500\nwrite_restart ${f}\n" + LRD.format(f="r.*"), pre=LHSp, pair=LIN(G11))
+LG("R33_lig_restart_cmd_stale", "LIGGGHTS hooke/stiffness: restart 1000 r.*; run 1000; read_restart r.1000 (refused: a skipped restart writes it)",
+   "restart 1000 r.*\nrun 1000\n" + LRD.format(f="r.1000"), pre=LHSp, pair=LIN(G11))
 
 # ================================================================ P: run N pre no every M; the still run after replicate
 L("P01_rep_pc_preno_every_meets_part1", "run 1000; replicate; pc 5000; run 2000 pre no every 1000 \"print x\" (set up at part 1: meets there, 5000)",
@@ -360,6 +372,17 @@ L("F44_shell_cp_jump", "shell cp new.in j.in (kn 5000 + run 3000); jump j.in (st
   data={"j.in": PC3 + "run 3000\n" + JB, "new.in": PC5 + "run 3000\n" + JB})
 L("F45_include_jump_moved_inside_include", "include a.in where a.in: shell mv new.in j.in; jump j.in (j.in kn 5000, then the deck's run: jump ends a.in)",
   "include a.in\nrun 3000\n", data={"a.in": "shell mv new.in j.in\njump j.in\n", "new.in": PC5})
+L("F46_write_data_read_through_link", "link.data -> d.data (a stale d.data: lv2 8000); run 1000; lv2 5000; write_data d.data; clear; read_data link.data (LAMMPS: the new file, 5000)",
+  "run 1000\nset atom 2 density 5000\nwrite_data d.data\nclear\n" + m6.MDH.format(f="link.data") + "run 3000\n", pair=IN(G11))
+LINKS["F46"] = [("link.data", "d.data")]
+L("F47_write_restart_read_through_link", "link.rst -> a.rst (a stale a.rst: lv2 8000); run 1000; write_restart a.rst (2500); clear; read_restart link.rst (LAMMPS 2500)",
+  "run 1000\nwrite_restart a.rst\nclear\nread_restart link.rst\npair_style granular\npair_coeff * * " + HK + "\n" + TAILR + "run 3000\n", pair=IN(G11))
+LINKS["F47"] = [("link.rst", "a.rst")]
+L("F48_jump_deck_by_name_loop", "a loop by jump in.deck lp (the deck names itself): 2 passes of run 1000, kn 3000 then 5000 (the pair meets in pass 2: 5000)",
+  "variable i loop 2\nlabel lp\n" + PCs("$(1000+2000*v_i)") + "\nrun 1000\nnext i\njump in.deck lp\n", pair=IN(G11), live="pass 2")
+L("F49_variable_file_through_link", "k.txt -> real.txt (3000); print 5000 file real.txt; variable k file k.txt; kn ${k} (LAMMPS 5000)",
+  'print "5000" file real.txt screen no\nvariable k file k.txt\n' + PCs("${k}") + "\nrun 3000\n", data={"real.txt": "3000\n"})
+LINKS["F49"] = [("k.txt", "real.txt")]
 
 # ================================================================ K V Q Y W S T: the issue's nine classes, fresh variants
 B3 = BASE(nt=3, wall=False)
@@ -502,6 +525,10 @@ def write(only=()):
         if k3 == "R07" and not os.path.exists(os.path.join(d, "rbase.1000")):
             lmp_gen(MB + IN(G11).replace("density 2500\ngroup lv1", "density 2500\ngroup lv1").replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000")
                     + "run 1000\nwrite_restart r%.*\n", [("rbase.1000", "rbase.1000"), ("r0.1000", "r0.1000")], d)
+        if k3 == "F46" and not os.path.exists(os.path.join(d, "d.data")):
+            lmp_gen(D8000 + "run 1000\nwrite_data d.data\n", [("d.data", "d.data")], d)
+        if k3 == "F47" and not os.path.exists(os.path.join(d, "a.rst")):
+            lmp_gen(D8000 + "run 1000\nwrite_restart a.rst\n", [("a.rst", "a.rst")], d)
         if k3 in ("R25",) and not os.path.exists(os.path.join(d, "d.1000")):
             lmp_gen(D8000 + "run 1000\nwrite_data d.1000\n", [("d.1000", "d.1000")], d)
         if k3 in ("R26", "R27", "R28") and not os.path.exists(os.path.join(d, "r.1000")):
