@@ -1,0 +1,3 @@
+#!/bin/sh
+# Field round 37: the field kit's audit (tests/fieldkit/audit.sh) of deck folders. usage (from the worktree): sh tests/field37/audit.sh DECKDIR ...
+ROUND=37 exec sh tests/fieldkit/audit.sh "$@"
