@@ -643,6 +643,11 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                                               "can check first (no shell, python or file output), and did not run it")
         if (hit := written_then_read(commands, scratch)) is not None:
             (wrote, writer), (read, reader) = hit
+            if writer.split()[:2] == ["shell", "rm"] or writer.split()[:1] in (["write_restart"], ["write_data"]):
+                raise DeckError(place(read), reader, f"it reads, under another name of the same file (a link or a hard "
+                                                     f"link), a file that {place(wrote)} ({writer}) removes or writes: "
+                                                     "the audit's copy holds the two names apart, so it would not read "
+                                                     "what the engine reads; not audited (name the file as written)")
             if writer.split()[:2] == ["shell", "mv"]:
                 raise DeckError(place(read), reader, f"it runs a file that {place(wrote)} ({writer}) names: the engine "
                                                      "runs its commands, but the audit knows a file's commands by the "

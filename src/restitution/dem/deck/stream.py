@@ -428,10 +428,12 @@ def random_drawn(commands: list, scratch: Scratch, runs_draw: bool = True) -> tu
 def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     """The first read of a file that a skipped command reached before it names (``shell cp a b``
     then ``include b``; ``print ... file b`` then ``include b``): the engine's pass never wrote it,
-    so what it read there is not what the engine run by hand reads; or an include or jump of a
-    file a ``shell mv`` (which runs, in the copy) named before: the engine reads it, but its
-    commands are not mapped to the deck's lines. ((file, line), text) of the skipped or moving
-    command and of the read, or None.
+    so what it read there is not what the engine run by hand reads (a skipped command among those a
+    run kept whole names in its every too); an include or jump of a file a ``shell mv`` (which runs,
+    in the copy) named before: the engine reads it, but its commands are not mapped to the deck's
+    lines; or a read under another name of the same file (:attr:`Scratch.aliases`) of one that a
+    shell mv or rm, a write_restart or a write_data named before. ((file, line), text) of the
+    writing, moving or removing command and of the read, or None.
 
     Parameters
     ----------
