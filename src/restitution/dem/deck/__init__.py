@@ -642,8 +642,8 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
             raise DeckError(place(loc), text, "the command's name comes from a variable: the audit runs only what it "
                                               "can check first (no shell, python or file output), and did not run it")
         if (hit := written_then_read(commands, scratch)) is not None:
-            (wrote, writer), (read, reader) = hit
-            if writer.split()[:2] == ["shell", "rm"] or writer.split()[:1] in (["write_restart"], ["write_data"]):
+            (wrote, writer), (read, reader), aliased = hit
+            if aliased:
                 raise DeckError(place(read), reader, f"it reads, under another name of the same file (a link or a hard "
                                                      f"link), a file that {place(wrote)} ({writer}) removes or writes: "
                                                      "the audit's copy holds the two names apart, so it would not read "

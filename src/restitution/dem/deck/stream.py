@@ -22,7 +22,7 @@ from .scratch import (AUDIT, DYNAMIC, GUARDED, MAX_TEXT_BYTES, NOOP, SKIPPED_COM
 from ..deck_text import TRIPLE, ScriptError, segments, words
 from ..dialect.child import ATOMS, RUN_PRINTED, SETUP_DUMP
 
-__all__ = ["Executed", "HeldSizes", "Snapshot", "executed", "skipped", "unchecked", "written_then_read", "snapshots", "engine_error", "first_unchecked",
+__all__ = ["Executed", "HeldSizes", "Snapshot", "executed", "skipped", "unchecked", "written_then_read", "unmapped_script", "snapshots", "engine_error", "first_unchecked",
            "SEEDED", "deck_commands"]
 
 
@@ -433,7 +433,8 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     in the copy) named before: the engine reads it, but its commands are not mapped to the deck's
     lines; or a read under another name of the same file (:attr:`Scratch.aliases`) of one that a
     shell mv or rm, a write_restart or a write_data named before. ((file, line), text) of the
-    writing, moving or removing command and of the read, or None.
+    writing, moving or removing command and of the read, and whether the read names the file
+    otherwise, or None.
 
     Parameters
     ----------
@@ -450,7 +451,7 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     >>> s = Scratch(Path("/s"), Path("/s/deck/in.x"), skipped=[("shell", (None, 3), "shell cp p9.in p.in")])
     >>> written_then_read([Executed((None, 3), "label restitution_skipped_0"),
     ...                    Executed((None, 4), "include p.in")], s)
-    (((None, 3), 'shell cp p9.in p.in'), ((None, 4), 'include p.in'))
+    (((None, 3), 'shell cp p9.in p.in'), ((None, 4), 'include p.in'), False)
 
     A quoted name with spaces is one name (the file "k  k.in", not "k"):
 
@@ -496,8 +497,9 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
         for loc, text, names in [*((loc, text, {base} | others) for loc, text in reached),
                                  *((loc, text, {base} | others if script else others) for loc, text in moved),
                                  *((loc, text, others) for loc, text in ran)]:
-            if any(_may_name(os.path.basename(word), one) for word in _split(text)[1:] for one in names):
-                return (loc, text), (cmd.loc, cmd.text)
+            for one in names:
+                if any(_may_name(os.path.basename(word), one) for word in _split(text)[1:]):
+                    return (loc, text), (cmd.loc, cmd.text), one != base
     return None
 
 
