@@ -253,6 +253,9 @@ L("A22_link_to_parent_unnamed", "the folder holds up -> .. (its parent) the deck
 LINKS["A22"] = [("up", "..")]
 L("A23_link_to_self_dir", "the folder holds here -> . ; include here/pc.in (5000)", "include here/pc.in\nrun 3000\n", data={"pc.in": PC5})
 LINKS["A23"] = [("here", ".")]
+L("R27_write_restart_pct_link_nostale", "R26 without the stale rbase.rst and r0.rst: the links lbase.rst, l0.rst dangle until write_restart r%.rst (LAMMPS 2500: 0.413435)",
+  "run 1000\nwrite_restart r%.rst\n" + RR("l%.rst"), pre=MB, pair=IN(G11))
+LINKS["R27"] = [("l0.rst", "r0.rst"), ("lbase.rst", "rbase.rst")]
 
 D8000 = m7.D8000
 
