@@ -256,6 +256,14 @@ LINKS["A23"] = [("here", ".")]
 L("R27_write_restart_pct_link_nostale", "R26 without the stale rbase.rst and r0.rst: the links lbase.rst, l0.rst dangle until write_restart r%.rst (LAMMPS 2500: 0.413435)",
   "run 1000\nwrite_restart r%.rst\n" + RR("l%.rst"), pre=MB, pair=IN(G11))
 LINKS["R27"] = [("l0.rst", "r0.rst"), ("lbase.rst", "rbase.rst")]
+L("R28_restart_pct_dirlink", "d -> real_d (a folder link); stale real_d/r%.1000 (8000); restart 1000 real_d/r%.*; run 1000; read_restart d/r%.1000 (LAMMPS 2500)",
+  "restart 1000 real_d/r%.*\nrun 1000\n" + RR("d/r%.1000"), pre=MB, pair=IN(G11))
+LINKS["R28"] = [("d", "real_d")]
+STALE["R28"] = [("real_d/r%", "pct8000")]
+L("R29_restart_pct_star_read_star_link", "stale r%.1000 (8000); restart 1000 r%.*; run 1000; read_restart l%.* (lbase.1000 -> rbase.1000, l0.1000 -> r0.1000; LAMMPS 2500)",
+  "restart 1000 r%.*\nrun 1000\n" + RR("l%.*"), pre=MB, pair=IN(G11))
+LINKS["R29"] = [("l0.1000", "r0.1000"), ("lbase.1000", "rbase.1000")]
+STALE["R29"] = [("r%", "pct8000")]
 
 D8000 = m7.D8000
 
@@ -266,6 +274,9 @@ def stale(d, f, kind):
         m7.lmp_gen(D8000 + "run 1000\nwrite_restart x.rst\n", [("x.rst", f)], d)
     if kind == "data8000" and not os.path.exists(os.path.join(d, f)):
         m7.lmp_gen(D8000 + "run 1000\nwrite_data x.data\n", [("x.data", f)], d)
+    if kind == "pct8000" and f != "r%":      # in a subfolder: sub/r%
+        sub = os.path.join(d, os.path.dirname(f))
+        return stale(sub, "r%", kind)
     if kind == "pct8000" and not os.path.exists(os.path.join(d, "rbase.1000")):
         m7.lmp_gen(MB + IN(G11).replace("set atom 2 diameter 0.006 density 2500", "set atom 2 diameter 0.006 density 8000")
                    + "run 1000\nwrite_restart r%.*\n", [("rbase.1000", "rbase.1000"), ("r0.1000", "r0.1000")], d)
