@@ -264,6 +264,12 @@ L("R29_restart_pct_star_read_star_link", "stale r%.1000 (8000); restart 1000 r%.
   "restart 1000 r%.*\nrun 1000\n" + RR("l%.*"), pre=MB, pair=IN(G11))
 LINKS["R29"] = [("l0.1000", "r0.1000"), ("lbase.1000", "rbase.1000")]
 STALE["R29"] = [("r%", "pct8000")]
+L("A24_link_loop_in_sub_unnamed", "sub holds a link loop (sub/a.in -> b.in -> a.in) the deck never names; plain kn 5000", PC5 + "run 3000\n", data={"sub/keep.txt": "x\n"})
+LINKS["A24"] = [("sub/a.in", "b.in"), ("sub/b.in", "a.in")]
+L("A25_include_link_loop", "include a.in where a.in -> b.in -> a.in (a loop: LAMMPS stops, Cannot open); kn 5000 before", PC5 + "include a.in\nrun 3000\n")
+LINKS["A25"] = [("a.in", "b.in"), ("b.in", "a.in")]
+L("A26_self_link_unnamed", "the folder holds x.in -> x.in (a link to itself) the deck never names; plain kn 5000", PC5 + "run 3000\n")
+LINKS["A26"] = [("x.in", "x.in")]
 
 D8000 = m7.D8000
 
