@@ -1,0 +1,3 @@
+#!/bin/sh
+# Field round 38: the field kit's audit (tests/fieldkit/audit.sh) of deck folders. usage (from the worktree): sh tests/field38/audit.sh DECKDIR ...
+ROUND=38 exec sh tests/fieldkit/audit.sh "$@"
