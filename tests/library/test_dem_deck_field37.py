@@ -11,7 +11,7 @@ import os
 
 import pytest
 
-from deck_cli import HEAD_ON, lammps_separation_speed, needs_lammps, run
+from deck_cli import HEAD_ON, audited_and_measured, lammps_separation_speed, needs_lammps, run
 
 LAW = "hooke {kn} 300 damping mass_velocity tangential linear_nohistory 1 0.3"
 BASE = HEAD_ON.format(line=f"pair_coeff * * {LAW.format(kn=1000)}")
@@ -72,3 +72,47 @@ def test_a_script_too_big_to_map_reached_by_a_variable_or_a_link_is_refused(tmp_
     else:
         deck = BASE + "variable f string big.in\ninclude ${f}\nrun 40000\n"
     _refused(tmp_path, deck, "holds more than 20 MB")
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("links", [{"a.in": "b.in", "b.in": "a.in"}, {"x.in": "x.in"}], ids=["a loop", "a link to itself"])
+def test_a_loop_of_links_no_command_names_is_copied_as_it_is(tmp_path, links):
+    """Field round 38, A20 A26: the copy's walk resolved every link and stopped on a loop with a
+    traceback ('Symlink loop'); LAMMPS never opens them (0.578975)."""
+    for name, target in links.items():
+        os.symlink(target, tmp_path / name)
+    eps, measured, err = audited_and_measured(BASE + f"{NEW}\nrun 40000\n", tmp_path)
+    assert abs(eps - measured) < 5e-5, (eps, measured, err)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_shell_cd_up_with_a_link_in_the_folder_is_audited(tmp_path):
+    """Field round 38, A18: shell cd sub, include pc.in, shell cd ..: the copy copies the folder
+    above the deck's (named by ..) over its own, and a link copied twice stopped it ('File
+    exists'), refused as a folder that changed while copied."""
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "pc.in").write_text(NEW + "\n")
+    (tmp_path / "r.in").write_text(NEW + "\n")
+    os.symlink("../r.in", tmp_path / "sub" / "other.in")
+    eps, measured, err = audited_and_measured(BASE + "shell cd sub\ninclude pc.in\nshell cd ..\nrun 40000\n", tmp_path)
+    assert abs(eps - measured) < 5e-5, (eps, measured, err)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_per_process_restart_read_through_links_after_a_write_is_refused(tmp_path):
+    """Field round 38, R26: the folder holds lbase.rst -> rbase.rst and l0.rst -> r0.rst; the deck
+    writes r%.rst and reads l%.rst. The read's % was not matched to the links' names, and the copy
+    read the stale files the links had pointed to when it was made (0.3809 where LAMMPS reads the
+    deck's own, 0.413435)."""
+    from deck_cli import PERIODIC_PAIR
+    lammps_separation_speed(PERIODIC_PAIR + "set atom 2 density 8000\nwrite_restart r%.rst\n", tmp_path)
+    (tmp_path / "in.engine").unlink()
+    for name in ("base", "0"):
+        os.symlink(f"r{name}.rst", tmp_path / f"l{name}.rst")
+    deck = PERIODIC_PAIR + ("write_restart r%.rst\nclear\nread_restart l%.rst\npair_style granular\n"
+                            "pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+                            "comm_modify vel yes\nfix move all nve/sphere\nrun 3000\n")
+    _refused(tmp_path, deck, "read_restart l%.rst): it reads, under another name of the same file")

@@ -278,7 +278,13 @@ def _not_copied(root: Path) -> tuple:
             except OSError:
                 out.add(name)
                 continue
-            if p.resolve() == held:
+            try:
+                resolved = p.resolve()
+            except (OSError, RuntimeError):
+                # a loop of links (a -> b -> a; x -> x): copied as links, the engine stops on them
+                # where it opens one, as by hand (field round 38, A20: a traceback)
+                resolved = None
+            if resolved == held:
                 out.add(name)
             elif stat.S_ISLNK(mode):
                 # a link is copied as a link, which the engine follows: one to a device or a pipe
@@ -404,7 +410,12 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             target.parent.mkdir(parents=True, exist_ok=True)
             source = Path(os.path.normpath(src.parent / name))
             if source.is_dir():
-                shutil.copytree(source, target, symlinks=True, dirs_exist_ok=True, ignore=ignore)
+                # (the folder above holds the deck's, copied already: a link copied there again
+                # stopped the copy, "File exists", field round 38, A18: shell cd .. with a link)
+                def again(folder, names, source=source, target=target):
+                    there = target / os.path.relpath(folder, source)
+                    return ignore(folder, names) | {name for name in names if (there / name).is_symlink()}
+                shutil.copytree(source, target, symlinks=True, dirs_exist_ok=True, ignore=again)
             else:
                 shutil.copyfile(source, target)
     except (shutil.Error, OSError) as why:

@@ -489,6 +489,10 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
         # the same file under another name (a link, its target, a hard link): the copy holds them
         # apart, so a write or a removal under one is unseen under the other (field round 37, F47)
         others = scratch.aliases.get(base, frozenset())
+        if set("*%") & set(base):
+            # a read by a pattern (read_restart l%.rst): the aliases of every name it may open
+            # (field round 38, R26: lbase.rst and l0.rst, links to stale rbase.rst and r0.rst)
+            others = others.union(*(names for name, names in scratch.aliases.items() if _may_name(base, name)))
         # a file shell mv put in place (it runs, in the copy) is read by the engine, but its lines
         # are not mapped to the deck's: only the files the copy found when it was made are (field
         # round 36, F09: shell mv new.in pc.in, include pc.in: its pair_coeff unseen, 0.4149
