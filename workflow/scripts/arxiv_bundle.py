@@ -29,16 +29,25 @@ EPOCH = int(os.environ.get("SOURCE_DATE_EPOCH", "1700000000"))
 SOURCES = "anc/restitution-sources.tar.gz"
 
 
-def tar_gz(contents: dict[str, bytes], executable: frozenset = frozenset()) -> bytes:
+def tar_gz(contents: dict[str, bytes], modes: dict[str, str] | None = None) -> bytes:
     """A gzipped tar of ``contents`` whose bytes depend on the contents alone: sorted members, the fixed
-    build date, no owners, mode 644 (755 for the names in ``executable``)."""
+    build date, no owners, mode 644. ``modes`` gives git's mode of a name where it is not a plain file:
+    "100755" (mode 755) or "120000" (a symbolic link, whose content is its target)."""
+    modes = modes or {}
     buffer = io.BytesIO()
     with tarfile.TarFile(fileobj=buffer, mode="w", format=tarfile.USTAR_FORMAT) as tar:   # in memory
         for name in sorted(contents):
             data = contents[name]
             info = tarfile.TarInfo(name)
-            info.size, info.mtime = len(data), EPOCH
-            info.mode = 0o755 if name in executable else 0o644
+            info.mtime = EPOCH
+            if modes.get(name) == "120000":
+                # the field rounds' decks hold links (to files, folders, loops): kept as links, so that the
+                # unpacked tree is the commit's
+                info.type, info.linkname, info.mode = tarfile.SYMTYPE, data.decode(), 0o777
+                tar.addfile(info)
+                continue
+            info.size = len(data)
+            info.mode = 0o755 if modes.get(name) == "100755" else 0o644
             tar.addfile(info, io.BytesIO(data))
     raw = io.BytesIO()
     with gzip.GzipFile(filename="", fileobj=raw, mode="wb", mtime=EPOCH) as gz:
@@ -46,27 +55,30 @@ def tar_gz(contents: dict[str, bytes], executable: frozenset = frozenset()) -> b
     return raw.getvalue()
 
 
-def tracked_sources() -> tuple[dict[str, bytes], frozenset] | None:
+def tracked_sources() -> tuple[dict[str, bytes], dict[str, str]] | None:
     """Every file git tracks in this checkout, as it is on disk (at a clean commit: the commit's bytes),
-    under restitution-sources/; None where this is not a git checkout (a copy made without .git)."""
+    under restitution-sources/, with git's mode of each; a link's content is its target. None where this
+    is not a git checkout (a copy made without .git)."""
     listed = subprocess.run(["git", "ls-files", "-s", "-z"], capture_output=True)
     if listed.returncode != 0:
         return None
-    contents, executable = {}, set()
+    contents, modes = {}, {}
     for entry in listed.stdout.decode().split("\0"):
         if not entry:
             continue
         meta, path = entry.split("\t", 1)
-        mode = meta.split()[0]
-        if not Path(path).is_file():   # deleted in an uncommitted change: not part of what was built
-            continue
         name = f"restitution-sources/{path}"
-        contents[name] = Path(path).read_bytes()
-        if mode == "100755":
-            executable.add(name)
-    return contents, frozenset(executable)
+        modes[name] = meta.split()[0]
+        if modes[name] == "120000":
+            contents[name] = os.readlink(path).encode()
+        elif Path(path).is_file():
+            contents[name] = Path(path).read_bytes()
+        else:   # deleted in an uncommitted change: not part of what was built
+            del modes[name]
+    return contents, modes
 
-def git_tree(files: dict[str, bytes], executable: frozenset) -> str:
+
+def git_tree(files: dict[str, bytes], modes: dict[str, str]) -> str:
     """The git tree hash of ``files`` (names under restitution-sources/), found as a reader finds it from
     the unpacked archive (``git init``, ``git add -A -f``, ``git write-tree``), so that the hash the README
     states is the one their check prints; it equals ``git rev-parse COMMIT^{tree}`` of a clean build."""
@@ -75,8 +87,11 @@ def git_tree(files: dict[str, bytes], executable: frozenset) -> str:
         for name, data in files.items():
             tmp_file = Path(tmp_dir) / name
             tmp_file.parent.mkdir(parents=True, exist_ok=True)
+            if modes[name] == "120000":
+                os.symlink(data.decode(), tmp_file)
+                continue
             tmp_file.write_bytes(data)
-            tmp_file.chmod(0o755 if name in executable else 0o644)
+            tmp_file.chmod(0o755 if modes[name] == "100755" else 0o644)
         # no user or system git settings (autocrlf, filters) may change what is hashed
         env = {**os.environ, "GIT_CONFIG_GLOBAL": os.devnull, "GIT_CONFIG_NOSYSTEM": "1"}
         for command in (["init", "-q"], ["add", "-A", "-f"]):
@@ -162,9 +177,9 @@ if sources is None:
     note = ("This bundle was made from a copy of the project that is not a git checkout, so it does not carry\n"
             "the sources (a bundle made in the git checkout has them under anc/).")
 else:
-    files, executable = sources
-    contents[SOURCES] = tar_gz(files, executable)
-    tree = git_tree(files, executable)
+    files, modes = sources
+    contents[SOURCES] = tar_gz(files, modes)
+    tree = git_tree(files, modes)
     same = ("the tree of that commit" if tree == commit_tree() else
             "NOT the tree of that commit: the build was made with uncommitted changes")
     note = (f"{SOURCES} holds the project's sources: the {len(files)} files under version control, as built\n"
