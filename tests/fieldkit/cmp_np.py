@@ -1,7 +1,7 @@
 """The live pair's eps measured by the engine beside the audit's rows, rounds 35-38 (live_np.py's logs: the deck
 as written, on 1 process and on 2).
 
-`main(folder, tag=...)` (cmpNN.py): for each deck folder of the round in ``folder``, the audit's rows for the pair in
+`main(folder, tag=..., match=True)` (cmpNN.py; round 34's without `match=`): for each deck folder of the round in ``folder``, the audit's rows for the pair in
 every stage, the engine's values by process count (their lines start with ``tag``), a flag for the last stage's row
 against the 1-process value (within 0.004, the step error at dt 1e-6 s being 0.0015), NPDIFF where the process counts
 disagree, and `match=`: the stages whose row is within 0.004 of the 1-process value (a run every is made as its parts,
@@ -19,7 +19,7 @@ def _f(d, name, default=None):
     return open(p).read().strip() if os.path.exists(p) else default
 
 
-def main(folder, *, tag):
+def main(folder, *, tag, match=True):
     live = {}
     for f in sorted(glob.glob(os.path.join(folder, "live*.log"))):
         for l in open(f):
@@ -56,10 +56,11 @@ def main(folder, *, tag):
         if rc == "0" and len(got_np) > 1 and (None in got_np and any(v is not None for v in got_np) or
                                               (None not in got_np and max(got_np) - min(got_np) > 0.002)):
             flag += " NPDIFF"
-        st = dict(x.split(":", 1) for x in got.split() if x.startswith("s") and ":" in x)
-        match = [k for k, r in st.items() if e is not None and all(y.rstrip("*").replace(".", "", 1).isdigit() for y in r.split(".."))
-                 and min(float(y.rstrip("*")) for y in r.split("..")) - 0.004 <= e <= max(float(y.rstrip("*")) for y in r.split("..")) + 0.004]
-        flag += " match=" + (",".join(match) or "none")
+        if match:
+            st = dict(x.split(":", 1) for x in got.split() if x.startswith("s") and ":" in x)
+            near = [k for k, r in st.items() if e is not None and all(y.rstrip("*").replace(".", "", 1).isdigit() for y in r.split(".."))
+                    and min(float(y.rstrip("*")) for y in r.split("..")) - 0.004 <= e <= max(float(y.rstrip("*")) for y in r.split("..")) + 0.004]
+            flag += " match=" + (",".join(near) or "none")
         err = open(d + "/audit.err").read().strip().splitlines()
         lv = " ".join(f"np{k}={v}" for k, v in sorted(vals.items()))
         print(f"{n} rc={rc} {flag} | live {lv} | audit {pair}: {got} | {err[-1][:220] if rc != '0' and err else ''}")
