@@ -54,7 +54,7 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      "ave/time", "ave/atom", "print", "move/mesh", "halt",
                      # averaging fixes push nothing (field round 16, v01b v03 v04: "may add forces" said)
                      "ave/chunk", "ave/correlate", "ave/correlate/long", "ave/histo", "ave/histo/weight", "vector",
-                     "wall/region", "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
+                     "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
                      "nve/noforce"}
 #: Fixes that push no atom but change what the runs see, each with what it does: named as such, not
 #: as a force (field round 15: "may add forces" said of each). Where a run sees fix set or atom/swap,
@@ -198,7 +198,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     active: set = set()            # the fixes defined now (a deposit still in force makes more atoms)
     placed: set = set()            # groups picked by where the atoms were, after a run
     stepless = None                # the first run that made no step (run 0)
-    for cmd in commands:
+    last_run = max((n for n, c in enumerate(commands) if c.stage is not None), default=-1)
+    for position, cmd in enumerate(commands):
         try:
             split = words(cmd.text)
         except ScriptError as why:
@@ -231,6 +232,12 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _deleted(deck, made, split[2], active)
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
+        if (split and moved_since and position < last_run and _kicks(split)
+                and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == KICKED for u in deck.unknown)):
+            # a contact under way at this step is changed mid-way, and the pass (its runs skipped) cannot
+            # say whether one is (field round 39, E03: velocity lv2 set every 250 steps of a 586-step
+            # contact, LAMMPS 0.332 where the law's 0.4149 was printed with no word); a line said once
+            deck.unknown.append((*cmd.loc, cmd.text, KICKED))
         if split and split[0] == "write_data" and len(split) > 1:
             data_written[split[1]] = bool(made)
         if split and split[0] == "read_data" and len(split) > 1 and data_written.get(split[1]):
@@ -1261,7 +1268,8 @@ def _adapted_late(deck: Deck, where: str, line: str) -> None:
     now, before = getattr(deck.seen, "by_id", None), getattr(deck.seen_before, "by_id", None)
     set_up = getattr(deck.seen, "before", None)
     for w in adapts:
-        types = whole_types(deck, w[2]) or set(range(1, deck.ntypes + 1))
+        typed = whole_types(deck, w[2])
+        types = typed or set(range(1, deck.ntypes + 1))
         constant = adapted_diameter(deck, list(w)) is not None
         if set_up is not None and now is not None:
             # the radii the set-up's lists saw: no atom of the group grown from them, no growth to come
@@ -1272,7 +1280,10 @@ def _adapted_late(deck: Deck, where: str, line: str) -> None:
                     and now is not None and before is not None
                     and all(atom in before and r <= before[atom][1] for atom, (t, r) in now.items() if t in types))
         if not held:
-            deck.stale = {**deck.stale, **{t: (where, line, f"fix {w[1]} adapt") for t in sorted(types)
+            # a group the audit cannot type is named as the group (field round 39, D12: "type 1" was said
+            # of an adapt on an ID group of a type 2 sphere)
+            whose = None if typed else f"group {w[2]}"
+            deck.stale = {**deck.stale, **{t: (where, line, f"fix {w[1]} adapt", whose) for t in sorted(types)
                                            if t not in deck.stale}}
 
 
@@ -2138,6 +2149,27 @@ _SET_VALUES = {"image": 3, "omega": 3, "angmom": 3, "dipole": 3, "quat": 4, "dip
 _RETYPE = ("type", "type/fraction", "type/ratio", "type/subset")
 #: set keywords that change an atom's size or type
 _SIZING_SET = frozenset({"diameter", "density", "density/disc", "mass", *_RETYPE})
+#: What is said of a command that changes the atoms between runs (:func:`_kicks`)
+KICKED = ("changes the atoms' velocities, places or sizes between runs: a contact under way at that step is "
+          "changed mid-way, and its eps is none of those printed")
+#: set keywords that change an atom's motion, place or size
+_KICKING_SET = frozenset({"vx", "vy", "vz", "omega", "angmom", "x", "y", "z", "image", "diameter", "density",
+                          "density/disc", "mass"})
+
+
+def _kicks(split: list) -> bool:
+    """Whether the command ``split`` changes the velocities, places or sizes of existing atoms.
+
+    Examples
+    --------
+    >>> _kicks(["velocity", "lv2", "set", "0", "0", "-1"]), _kicks(["set", "type", "1", "vx", "0"])
+    (True, True)
+    >>> _kicks(["set", "type", "1", "type", "2"]), _kicks(["fix", "f", "all", "nve/sphere"])
+    (False, False)
+    """
+    return (split[0] in ("velocity", "displace_atoms") or
+            split[0] == "set" and any(k in _KICKING_SET for k in split[3::2]))
+
 #: The set keywords that draw their atoms at random, and what the draw reads that a run changes
 #: (LAMMPS' set.cpp: type/fraction seeds each atom's draw with its coordinates; type/ratio and
 #: type/subset pick by the atoms' order, which the runs' sorting of atoms changes)

@@ -1,0 +1,88 @@
+"""What the audit's pass cannot see, said (field round 39): it skips the runs, so it does not know
+whether a contact is under way where the deck changes the contact law or the atoms between runs.
+
+- SW-SPAN: a pair law changed between runs, or between the parts of a run's every, while the pair is
+  in contact (E08: run 300 with the pair meeting at step 100, kn 2000 then 5000: LAMMPS 0.798 where
+  0.4149 and 0.5806 were printed with no word); a velocity set between a run's parts (E03: LAMMPS
+  0.332, 0.4149 printed).
+- SW-WALL-REGION: fix wall/region was taken to push nothing (W20: a harmonic region wall near the
+  floor, LAMMPS 0.514 where the floor's 0.3630 was printed with no word)."""
+
+import json
+
+import pytest
+
+from deck_cli import PERIODIC_PAIR, lammps_separation_speed, needs_lammps, run
+
+STIFFER = "pair_coeff 1 2 hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3"
+
+
+def audited(deck: str, tmp_path) -> tuple:
+    (tmp_path / "in.deck").write_text(deck)
+    status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
+    assert status == 0, err
+    return json.loads(out), err
+
+
+def stage_eps(got: dict) -> list:
+    return [next(r["eps"][0] for r in stage["pairs"] if r["types"] == [1, 2]) for stage in got["stages"]]
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_law_changed_while_the_pair_may_be_in_contact_is_said(tmp_path):
+    # PERIODIC_PAIR's run 1000 ends 100 steps before the pair meets; the next run ends within the contact
+    # (one stage with the first: the same law; 1,300 steps, longer than the contact)
+    deck = PERIODIC_PAIR + f"run 300\n{STIFFER}\nrun 2000\n"
+    got, err = audited(deck, tmp_path)
+    first, second = stage_eps(got)
+    engine = abs(lammps_separation_speed(deck, tmp_path))
+    assert min(abs(engine - first), abs(engine - second)) > 0.05, (engine, first, second)   # neither law's
+    assert ("types 1 2: the contact's eps changes at the start of stage 2 of 2; a contact under way at such a "
+            "change (one lasts up to 586 steps at the deck's time step) feels both stages' laws") in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_law_changed_after_the_contact_is_said_without_the_short_stage(tmp_path):
+    got, err = audited(PERIODIC_PAIR + f"run 3000\n{STIFFER}\nrun 2000\n", tmp_path)
+    assert "the contact's eps changes at the start of stage 2 of 2" in err, err
+    assert "fewer steps than one contact lasts" not in err, err
+    assert "changes the atoms' velocities" not in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_run_whose_parts_change_the_law_says_each_part_is_shorter_than_a_contact(tmp_path):
+    deck = PERIODIC_PAIR + f'run 2000 every 200 "pair_coeff 1 2 hooke $(2000+2*step) 3000 damping mass_velocity ' \
+                           f'tangential linear_nohistory 1 0.3"\n'
+    got, err = audited(deck, tmp_path)
+    # stage 1: run 1000 and the first part, with the law before the every's first pair_coeff
+    assert "stages 2-10 of 10" in err and "stages 2-9 run fewer steps than one contact lasts" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_velocity_set_between_a_runs_parts_is_said_once(tmp_path):
+    deck = PERIODIC_PAIR + 'run 2000 every 250 "set atom 2 vx -0.2285714286"\n'
+    got, err = audited(deck, tmp_path)
+    assert "changes the atoms' velocities, places or sizes between runs: a contact under way" in err, err
+    assert err.count("changes the atoms' velocities") == 1, err        # said once for the line
+    engine = abs(lammps_separation_speed(deck, tmp_path))
+    assert abs(engine - stage_eps(got)[-1]) > 0.05, engine
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_no_velocity_note_where_no_run_follows(tmp_path):
+    _, err = audited(PERIODIC_PAIR + "velocity all set 0 0 0\n", tmp_path)
+    assert "changes the atoms' velocities" not in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_region_wall_is_named_as_a_force_the_eps_do_not_include(tmp_path):
+    deck = PERIODIC_PAIR + "region cage block 0 0.04 0 0.04 0 0.1 units box\n" \
+                           "fix soft all wall/region cage harmonic 20.0 0.0 0.0025\nrun 3000\n"
+    _, err = audited(deck, tmp_path)
+    assert "fix wall/region may add forces to its atoms (group all)" in err, err
