@@ -51,6 +51,16 @@ def test_a_diameter_that_may_change_as_the_run_goes_is_not_computed(tmp_path):
 
 @needs_lammps
 @pytest.mark.dem
+def test_an_adapt_on_a_group_the_audit_cannot_type_names_the_group(tmp_path):
+    """Field round 39, D12: an adapt on an ID group of a type 2 sphere was said to size "type 1"."""
+    deck = _deck(tmp_path, value="0.006+1e-6*step")
+    deck.write_text(deck.read_text().replace("fix ad all adapt", "group one id 1\nfix ad one adapt"))
+    got, err = audit(deck, "--g", "0.5")
+    assert got["pairs"] == [] and "fix ad adapt sizes the spheres of group one after" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
 def test_sizes_put_back_after_the_run_are_read_as_the_run_sees_them(tmp_path):
     """Before: eps at the original diameter 0.01, exit 0; then refused. LAMMPS' marker now dumps the
     atoms at the run's set-up, where the adaptation stands: the rows are those of reset no, whose

@@ -575,8 +575,12 @@ def _size(entry: dict, deck, row: dict, contact: Contact, pair: Pair, types: tup
         return
     elif style == "freeze":
         if all(acted) or wall:
-            entry["why"] = ("every body of this collision is held still: it does not happen" if all(acted) else
-                            "the sphere is held still: it never meets the wall")
+            # freeze zeroes forces and torques, not velocities: a frozen sphere in flight goes on through
+            # what it meets (field round 39, X33: through the floor, LAMMPS then loses the atom)
+            entry["why"] = ("every body of this collision is frozen (no force moves it; it keeps its velocity): no "
+                            "contact force turns them back, so the collision has no eps" if all(acted) else
+                            "the sphere is frozen (no force moves it; it keeps its velocity): the wall cannot turn "
+                            "it back, so the collision has no eps")
             return
         # the engine's granular pair styles take the moving atom's mass for m_eff where the other
         # is frozen (checked in LAMMPS): the contact of that atom against an immovable one
