@@ -1,0 +1,359 @@
+"""Field round 39: write decks/NAME/ (in.deck and the files it reads) for the referee (round 37's live37.py, links kept)
+and the audit. An adversarial round on main bacc15ed in families little attacked before: pair_coeff ranges whose i > j
+half LAMMPS drops and type labels (K); formats and variables in if conditions, file names, restyles, `$x` one-letter
+names, round() at .5 (V); set order, ids renumbered by delete_atoms compress, set type/ratio, set region after
+displace_atoms (Q); pair_style hybrid, hybrid/overlay, hybrid/scaled (H); fixes that change the pair's motion: freeze,
+setforce, viscous, langevin, nve/limit, a second integrator, one integrated sphere, fix move, fix adapt diameter,
+neigh_modify exclude (D); runs in parts, minimize, replicate, change_box, displace_atoms, velocity, processors (U);
+LAMMPS walls (types with no atoms, region cylinder/plane walls, shear, two floors) (W); sizes (S); LIGGGHTS
+property/global forms, e 1.0 and near 0, limitForce, tangential_damping, rolling_friction, cohesion, insert/pack,
+insert/stream, mesh walls from an STL written here, freeze, exclude, two e fixes (G); plain controls (C).
+Helpers are rounds 35-37's (make_decks37.py imported; its decks are not written). Live pair and controls as round 37
+(FINDINGS.md): LAMMPS kn 2000 0.413435, 3000 0.490898, 4000 0.542172, 5000 0.578975; lv2 5000 kg/m3 0.390402;
+LIGGGHTS e 0.5 0.499928, 0.8 0.800005.
+usage: python make_decks39.py [NAME-PREFIX ...]"""
+import math
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "field37"))
+import make_decks37 as m7  # noqa: E402
+
+m7.DECKS.clear(); m7.LINKS.clear(); m7.HARD.clear()
+m7.D = os.path.join(HERE, "decks")
+L, LG = m7.L, m7.LG
+PCs, PC3, PC4, PC5, LEe, LE, IN, LIN, G, G11, HK, HK5, TAILR, RB, HKk = (m7.PCs, m7.PC3, m7.PC4, m7.PC5, m7.LEe, m7.LE, m7.IN,
+                                                                    m7.LIN, m7.G, m7.G11, m7.HK, m7.HK5, m7.TAILR, m7.RB, m7.HKk)
+m = m7.m
+BASE, LBASE, LWALL, WALLP, WALL = m.BASE, m.LBASE, m.LWALL, m.WALLP, m.WALL
+V1, V2 = m.V1, m.V2
+B3 = BASE(nt=3, wall=False)
+PCk = lambda spec, k: f"pair_coeff {spec} " + HKk(k) + "\n"
+# the live pair with lv1 at 1 m/s and lv2 at rest (a pair whose lv2 is held)
+IN10 = lambda gap=0.1e-3: IN(gap).replace(f"velocity lv1 set {V1:.10f} 0 0", "velocity lv1 set 1.0 0 0").replace(f"velocity lv2 set {V2:.10f} 0 0", "velocity lv2 set 0 0 0")
+STLP = lambda z=0.0, a=0.05: (f"solid floor\n facet normal 0 0 1\n  outer loop\n   vertex {-a} {-a} {z}\n   vertex {a} {-a} {z}\n   vertex {a} {a} {z}\n  endloop\n endfacet\n"
+                             f" facet normal 0 0 1\n  outer loop\n   vertex {-a} {-a} {z}\n   vertex {a} {a} {z}\n   vertex {-a} {a} {z}\n  endloop\n endfacet\nendsolid floor\n")
+STLF = lambda x0, x1, y0, y1, z: (f"solid face\n facet normal 0 0 -1\n  outer loop\n   vertex {x0} {y0} {z}\n   vertex {x1} {y1} {z}\n   vertex {x1} {y0} {z}\n  endloop\n endfacet\n"
+                                  f" facet normal 0 0 -1\n  outer loop\n   vertex {x0} {y0} {z}\n   vertex {x0} {y1} {z}\n   vertex {x1} {y1} {z}\n  endloop\n endfacet\nendsolid face\n")
+LW = dict(PAIR="type 1 on wall wprim")
+
+# ================================================================ K: pair_coeff ranges (LAMMPS sets i <= j only) and labels
+L("K01_range_2x3_1x2_only_22", "3 types: pair_coeff 2*3 1*2 kn 5000 sets only 2 2 (j from max(jlo,i)): 1 2 stays kn 2000 (0.413)", PCk("2*3 1*2", 5000) + "run 3000\n", pre=B3)
+L("K02_star_1_only_11", "pair_coeff * 1 kn 5000 sets only 1 1: 1 2 stays 2000", PCk("* 1", 5000) + "run 3000\n")
+L("K03_star_2_sets_12", "pair_coeff * 2 kn 5000 sets 1 2 and 2 2 (5000)", PCk("* 2", 5000) + "run 3000\n")
+L("K04_2_1x2_only_22", "pair_coeff 2 1*2 kn 5000 sets only 2 2: 1 2 stays 2000", PCk("2 1*2", 5000) + "run 3000\n")
+L("K05_label_swapped_names", "labelmap atom 1 big 2 small (names the wrong way round); pair_coeff small big kn 5000 (2 1: reordered to 1 2: 5000)",
+  "labelmap atom 1 big 2 small\n" + PCk("small big", 5000) + "run 3000\n")
+L("K06_1x2_then_22", "pair_coeff 1*2 1*2 kn 5000; pair_coeff 2 2 kn 3000 (1 2: 5000)", PCk("1*2 1*2", 5000) + PCk("2 2", 3000) + "run 3000\n")
+L("K07_lo_star_hi_star", "3 types: pair_coeff *2 2* kn 4000 (1 2, 1 3, 2 2, 2 3: 4000)", PCk("*2 2*", 4000) + "run 3000\n", pre=B3)
+L("K08_numeric_reorder_13", "3 types, lv2 of type 3: pair_coeff 3 1 kn 5000 (reordered to 1 3: 5000)", PCk("3 1", 5000) + "run 3000\n", pre=B3, pair=IN(0.1e-3, t2=3), PAIR="types 1 3")
+L("K09_label_in_set_type", "labelmap atom 1 a 2 b; set type b density 5000 (lv2: 0.390)", "labelmap atom 1 a 2 b\nset type b density 5000\nrun 3000\n")
+L("K10_var_range_only_22", "variable lo equal 2; pair_coeff ${lo}*3 1*2 kn 5000 (only 2 2: 2000)", "variable lo equal 2\n" + PCk("${lo}*3 1*2", 5000) + "run 3000\n", pre=B3)
+L("K11_2_star_only_22", "2 types: pair_coeff 2 * kn 5000 (\"type 2 with all\": only 2 2; 1 2 stays 2000)", PCk("2 *", 5000) + "run 3000\n")
+L("K12_star_1x2", "pair_coeff * 1*2 kn 5000 (1 1, 1 2, 2 2: 5000)", PCk("* 1*2", 5000) + "run 3000\n")
+L("K13_2x3_1_none", "3 types: pair_coeff 2*3 1 kn 5000 (no pair i <= j: LAMMPS stops)", PCk("2*3 1", 5000) + "run 3000\n", pre=B3)
+L("K14_label_range_mixed_swap", "3 types, labelmap atom 1 s 2 b 3 r; lv2 of type 3; pair_coeff r s kn 4000 (reordered 1 3: 4000)",
+  "labelmap atom 1 s 2 b 3 r\n" + PCk("r s", 4000) + "run 3000\n", pre=B3, pair=IN(0.1e-3, t2=3), PAIR="types 1 3")
+L("K15_label_then_relabel", "labelmap atom 2 b; pair_coeff 1 b kn 5000; labelmap atom 2 c (a second label for 2? or rename); pair_coeff 1 c kn 3000 (3000 if accepted)",
+  "labelmap atom 2 b\n" + PCk("1 b", 5000) + "labelmap atom 2 c\n" + PCk("1 c", 3000) + "run 3000\n")
+
+# ================================================================ V: formats, variables, if conditions, file names
+IFE = lambda cond, a, b: f'if "{cond}" then "' + PCs(a) + '" else "' + PCs(b) + '"\n'
+L("V01_if_fmt_e", "if \"$(5000:%e) == 5000\" (5.000000e+03 == 5000: true: 5000)", IFE("$(5000:%e) == 5000", 5000, 3000) + "run 3000\n")
+L("V02_if_fmt_1f", "if \"$(4999.96:%.1f) == 5000\" (5000.0: true: 5000)", IFE("$(4999.96:%.1f) == 5000", 5000, 3000) + "run 3000\n")
+L("V03_if_fmt_0f_false", "if \"$(4999.4:%.0f) == 5000\" (4999: false: 3000)", IFE("$(4999.4:%.0f) == 5000", 5000, 3000) + "run 3000\n")
+L("V04_if_fmt_17g", "if \"$(0.1+0.2:%.17g) == 0.3\" (0.30000000000000004: false: 3000)", IFE("$(0.1+0.2:%.17g) == 0.3", 5000, 3000) + "run 3000\n")
+L("V05_if_immediate_default", "if \"$(0.1+0.2) == 0.3\" (the immediate's own format: 3000 if 0.30000000000000004)", IFE("$(0.1+0.2) == 0.3", 5000, 3000) + "run 3000\n")
+L("V06_elif_fmt_e", "k = 4500; if k < 3000 ... elif \"$(v_k:%.2e) == 4.50e+03\" kn 4000 else 5000 (4000)",
+  "variable k equal 4500\nif \"${k} < 3000\" then \"" + PCs(3000) + "\" elif \"$(v_k:%.2e) == 4.50e+03\" \"" + PCs(4000) + "\" else \"" + PCs(5000) + "\"\nrun 3000\n")
+L("V07_if_unary_plus", "if \"+1 > 0\" then kn 5000 else 3000", IFE("+1 > 0", 5000, 3000) + "run 3000\n")
+L("V08_if_not_paren", "if \"!(1 > 2)\" then kn 5000 else 3000", IFE("!(1 > 2)", 5000, 3000) + "run 3000\n")
+L("V09_round_2p5", "variable k equal 1000*round(2.5)+2000 (half away from zero: 5000; half even: 4000)", "variable k equal 1000*round(2.5)+2000\n" + PCs("${k}") + "\nrun 3000\n")
+L("V10_round_immediate_neg", "kn $(6000+1000*round(-0.5)) (-1: 5000; -0: 6000)", PCs("$(6000+1000*round(-0.5))") + "\nrun 3000\n")
+L("V11_fmt_0e_half_even", "kn $(4500:%.0e) (4e+03: 4000; 5e+03 if half up)", PCs("$(4500:%.0e)") + "\nrun 3000\n")
+L("V12_fmt_0e_35", "kn $(3500:%.0e) (4e+03: 4000)", PCs("$(3500:%.0e)") + "\nrun 3000\n")
+L("V13_15g_file_name", "k = 0.1*3*10000 (3000.0000000000005; %.15g: 3000): include pc${k}.in (pc3000.in: kn 3000; a pc3000.0000000000005.in of 5000 beside)",
+  "variable k equal 0.1*3*10000\ninclude pc${k}.in\nrun 3000\n", data={"pc3000.in": PC3, "pc3000.0000000000005.in": PC5})
+L("V14_15g_third_file", "n = 1/3: include k${n}.in (k0.333333333333333.in: 4000; k0.3333333333333333.in: 5000)",
+  "variable n equal 1/3\ninclude k${n}.in\nrun 3000\n", data={"k0.333333333333333.in": PC4, "k0.3333333333333333.in": PC5})
+L("V15_immediate_file_name", "include k$(1/3).in (the immediate's format: %.20g? k0.33333333333333331483.in: 4000; %.15g name: 5000)",
+  "include k$(1/3).in\nrun 3000\n", data={"k0.33333333333333331483.in": PC4, "k0.333333333333333.in": PC5})
+L("V16_index_redefined_ignored", "variable k index 3000; variable k index 5000 (ignored: 3000)", "variable k index 3000\nvariable k index 5000\n" + PCs("${k}") + "\nrun 3000\n")
+L("V17_delete_then_index", "variable k equal 3000; variable k delete; variable k index 5000 (5000)", "variable k equal 3000\nvariable k delete\nvariable k index 5000\n" + PCs("${k}") + "\nrun 3000\n")
+L("V18_equal_dollar_frozen", "kk = 3000; k equal ${kk} (3000 then); kk = 5000; kn ${k} (3000)", "variable kk equal 3000\nvariable k equal ${kk}\nvariable kk equal 5000\n" + PCs("${k}") + "\nrun 3000\n")
+L("V19_equal_vref_live", "kk = 3000; k equal v_kk; kk = 5000; kn ${k} (5000)", "variable kk equal 3000\nvariable k equal v_kk\nvariable kk equal 5000\n" + PCs("${k}") + "\nrun 3000\n")
+L("V20_string_redefined", "variable k string 3000; variable k string 5000 (5000)", "variable k string 3000\nvariable k string 5000\n" + PCs("${k}") + "\nrun 3000\n")
+L("V21_one_letter_dollar", "variable k equal 5; kn $k000 ($k then 000: 5000)", "variable k equal 5\n" + PCs("$k000") + "\nrun 3000\n")
+L("V22_format_of_later_value", "kk 3000; k format kk %.0f; kk = 4999.7; kn ${k} (5000)", "variable kk equal 3000\nvariable k format kk %.0f\nvariable kk equal 4999.7\n" + PCs("${k}") + "\nrun 3000\n")
+L("V23_internal_redefined", "variable k internal 3000; variable k internal 5000 (5000)", "variable k internal 3000\nvariable k internal 5000\n" + PCs("${k}") + "\nrun 3000\n")
+L("V24_triple_quoted_if", "if \"1 > 0\" then \"\"\"pair_coeff 1 2 kn 5000\"\"\" (5000)", 'if "1 > 0" then """' + PCs(5000) + '"""\nrun 3000\n')
+L("V25_continuation_amp", "pair_coeff 1 2 hooke 5000 & (continued on the next line) (5000)", PCs(5000).replace(" 3000 damping", " &\n 3000 damping") + "\nrun 3000\n")
+L("V26_index_style_change_error", "variable k string 3000; variable k index 5000 (another style: LAMMPS stops)", "variable k string 3000\nvariable k index 5000\n" + PCs("${k}") + "\nrun 3000\n")
+L("V27_loop_pad_file", "variable i loop 8 10 pad (08 09 10); each pass includes pc${i}.in and runs 1000; meets in pass 2 (pc09.in: 4000; a pc9.in of 3000 beside)",
+  "variable i loop 8 10 pad\nlabel lp\ninclude pc${i}.in\nrun 1000\nnext i\njump SELF lp\n", pair=IN(G(2)), live="pass 2",
+  data={"pc08.in": PC3, "pc09.in": PC4, "pc10.in": PC5, "pc8.in": PC5, "pc9.in": PC3})
+L("V28_if_string_compare", "variable s string abc; if \"${s} == abc\" then kn 5000 else 3000", "variable s string abc\n" + IFE("${s} == abc", 5000, 3000) + "run 3000\n")
+L("V29_equal_15g_in_if_file", "variable k equal 2.5e3*2 (5000); if \"${k} > 4999\" then \"include hi.in\" else \"include lo.in\" (hi.in 5000)",
+  "variable k equal 2.5e3*2\nif \"${k} > 4999\" then \"include hi.in\" else \"include lo.in\"\nrun 3000\n", data={"hi.in": PC5, "lo.in": PC3})
+L("V30_fmt_g_in_if", "if \"$(49999.5/10:%g) == 5000\" (%g: 4999.95 -> 4999.95: false: 3000)", IFE("$(49999.5/10:%g) == 5000", 5000, 3000) + "run 3000\n")
+L("V31_fmt_3g_in_if", "if \"$(4999.5:%.3g) == 5000\" (5e+03: true: 5000)", IFE("$(4999.5:%.3g) == 5000", 5000, 3000) + "run 3000\n")
+L("V32_next_two_vars", "a index 3000 4000 5000, b index x y; next a b (both); kn ${a} (4000)", "variable a index 3000 4000 5000\nvariable b index x y\nnext a b\n" + PCs("${a}") + "\nrun 3000\n")
+
+# ================================================================ Q: set order, ids renumbered, type/ratio, set region after a move
+FAR3 = ("create_atoms 1 single 0.005 0.005 0.08\ncreate_atoms 1 single 0.017950 0.02 0.05\ncreate_atoms 2 single 0.023050 0.02 0.05\n"
+        "set atom 1 diameter 0.004 density 2500\nset atom 2 diameter 0.004 density 2500\nset atom 3 diameter 0.006 density 2500\n")
+VEL = f"velocity lv1 set {V1:.10f} 0 0 units box\nvelocity lv2 set {V2:.10f} 0 0 units box\n"
+L("Q01_delete_compress_renumber", "a far atom id 1, lv1 id 2, lv2 id 3; delete_atoms group far compress yes (ids made 1 2 again in LAMMPS' order); set atom 2 density 5000 (lv1 or lv2?); groups by region",
+  "group far id 1\ndelete_atoms group far compress yes\nset atom 2 density 5000\nregion lft block 0 0.02 0 0.04 0 0.1 units box\nregion rgt block 0.02 0.04 0 0.04 0 0.1 units box\n"
+  "group lv1 region lft\ngroup lv2 region rgt\n" + VEL + "run 3000\n", pair=FAR3)
+L("Q02_delete_no_compress", "Q01 with compress no: set atom 2 density 5000 hits lv1 (id 2)",
+  "group far id 1\ndelete_atoms group far compress no\nset atom 2 density 5000\ngroup lv1 id 2\ngroup lv2 id 3\n" + VEL + "run 3000\n", pair=FAR3)
+L("Q03_set_type_ratio", "3 types: set type 2 type/ratio 3 1.0 (lv2 -> type 3); set type 2 density 5000 (nobody); pair 1 3 kn 4000 (0.542)",
+  "set type 2 type/ratio 3 1.0 482793\nset type 2 density 5000\n" + PCk("1 3", 4000) + "run 3000\n", pre=B3, PAIR="types 1 3")
+L("Q04_set_type_fraction_1", "3 types: set type 2 type/fraction 3 1.0 (all); set type 3 density 5000 (lv2 now type 3: 0.390)",
+  "set type 2 type/fraction 3 1.0 482793\nset type 3 density 5000\nrun 3000\n", pre=B3, PAIR="types 1 3")
+L("Q05_set_atom_type_then_type_density", "3 types: set atom 2 type 3; set type 2 density 5000 (nobody); 1 3 kn 2000 (0.413)",
+  "set atom 2 type 3\nset type 2 density 5000\nrun 3000\n", pre=B3, PAIR="types 1 3")
+L("Q06_set_region_after_displace", "region rr x > 0.021 (lv2 there at first); displace_atoms all move -0.01 0 0; set region rr density 5000 (nobody now: 0.413)",
+  "region rr block 0.021 0.04 0 0.04 0 0.1 units box\ndisplace_atoms all move -0.01 0 0 units box\nset region rr density 5000\nrun 3000\n")
+L("Q07_group_region_static_after_displace", "group right region rr (lv2); displace_atoms all -0.01; set group right density 5000 (still lv2: 0.390)",
+  "region rr block 0.021 0.04 0 0.04 0 0.1 units box\ngroup right region rr\ndisplace_atoms all move -0.01 0 0 units box\nset group right density 5000\nrun 3000\n")
+L("Q08_set_region_picks_lv1_after_move", "displace_atoms all move 0.005 (lv1 now at x 0.02295); region rr x 0.021..0.025; set region rr density 5000 (lv1 only: lv1 5000)",
+  "displace_atoms all move 0.005 0 0 units box\nregion rr block 0.021 0.025 0 0.04 0 0.1 units box\nset region rr density 5000\nrun 3000\n")
+L("Q09_mass_then_diameter", "set atom 2 mass 5.65487e-4 (2x); set atom 2 diameter 0.006 (mass kept or remade?)", "set atom 2 mass 5.65487e-4\nset atom 2 diameter 0.006\nrun 3000\n")
+L("Q10_set_atom_range_density", "set atom 1*2 density 5000 (both: 5000 each)", "set atom 1*2 density 5000\nrun 3000\n")
+L("Q11_set_atom_star_density", "set atom * density 5000 (both)", "set atom * density 5000\nrun 3000\n")
+L("Q12_set_type_before_create", "set type 2 diameter 0.006 density 5000 before lv2 exists; lv2 created; set atom 2 diameter 0.006 only (lv2's density: the default?)",
+  "run 3000\n", pair="create_atoms 1 single 0.017950 0.02 0.05\nset atom 1 diameter 0.004 density 2500\nset type 2 diameter 0.006 density 5000\n"
+  "create_atoms 2 single 0.023050 0.02 0.05\nset atom 2 diameter 0.006\ngroup lv1 id 1\ngroup lv2 id 2\n" + VEL)
+L("Q13_set_density_var_fmt", "variable d equal 2500*2; set type 2 density $(v_d:%e) (5.000000e+03: 0.390)", "variable d equal 2500*2\nset type 2 density $(v_d:%e)\nrun 3000\n")
+L("Q14_set_group_by_type_after_retype", "group two type 2 (lv2); set atom 2 type 1; set group two density 5000 (still lv2, now type 1: pair 1 1 at 5000)",
+  "group two type 2\nset atom 2 type 1\nset group two density 5000\nrun 3000\n", PAIR="types 1 1")
+L("Q15_create_atoms_after_delete_reuses_id", "delete lv2 (id 2); create lv2 again (id 2 reused: atom_modify map; a 6 mm of default size?); set atom 2 diameter 0.006 density 5000",
+  "group gone id 2\ndelete_atoms group gone\ncreate_atoms 2 single 0.023050 0.02 0.05\nset atom 2 diameter 0.006 density 5000\ngroup lv2b id 2\nvelocity lv2b set " + f"{V2:.10f}" + " 0 0 units box\nrun 3000\n",
+  GROUPS="lv1 lv2b")
+
+# ================================================================ H: pair_style hybrid forms
+HY = lambda ps, coeffs: BASE(wall=False, pstyle=f"pair_style {ps}\n", coeff=coeffs)
+L("H01_hybrid_zero_12", "pair_style hybrid granular zero 0.01: * * granular; 1 2 zero (no contact: the pair passes)", "run 3000\n",
+  pre=HY("hybrid granular zero 0.01", "pair_coeff * * granular " + HK + "\npair_coeff 1 2 zero\n"))
+L("H02_hybrid_none_12", "pair_style hybrid granular: 1 1 and 2 2 granular, 1 2 none (no contact)", "run 3000\n",
+  pre=HY("hybrid granular zero 0.01", "pair_coeff 1 1 granular " + HK + "\npair_coeff 2 2 granular " + HK + "\npair_coeff 1 2 none\n"))
+L("H03_overlay_two_granular", "hybrid/overlay granular granular: 1 and 2 both kn 2000 on all pairs (forces add: kn 4000 damping 6000?)", "run 3000\n",
+  pre=HY("hybrid/overlay granular granular", "pair_coeff * * granular 1 " + HK + "\npair_coeff * * granular 2 " + HK + "\n"))
+L("H04_scaled_2", "pair_style hybrid/scaled 2.0 granular (forces doubled)", "run 3000\n", pre=HY("hybrid/scaled 2.0 granular", "pair_coeff * * granular " + HK + "\n"))
+L("H05_scaled_1", "pair_style hybrid/scaled 1.0 granular (as plain: 0.413)", "run 3000\n", pre=HY("hybrid/scaled 1.0 granular", "pair_coeff * * granular " + HK + "\n"))
+L("H06_overlay_granular_lj", "hybrid/overlay granular lj/cut 0.01; pair_coeff 1 2 lj/cut 1e-5 0.005 (an extra force on the pair)", "run 3000\n",
+  pre=HY("hybrid/overlay granular lj/cut 0.01", "pair_coeff * * granular " + HK + "\npair_coeff * * lj/cut 0 0.005\npair_coeff 1 2 lj/cut 1e-5 0.005\n"))
+L("H07_hybrid_gran_hooke_on_12", "hybrid granular gran/hooke 5000 NULL 3000 NULL 0.3 0: 1 2 by gran/hooke (5000)", "run 3000\n",
+  pre=HY("hybrid granular gran/hooke 5000 NULL 3000 NULL 0.3 0", "pair_coeff * * granular " + HK + "\npair_coeff 1 2 gran/hooke\n"))
+L("H08_hybrid_soft_others_gran_12", "hybrid granular soft 0.01: * * soft 0; 1 2 granular kn 5000 (5000)", "run 3000\n",
+  pre=HY("hybrid granular soft 0.01", "pair_coeff * * soft 0.0\npair_coeff 1 2 granular " + HK5 + "\n"))
+L("H09_overlay_soft_zero", "hybrid/overlay granular soft 0.01; soft 0.0 on all (adds nothing: 0.413)", "run 3000\n",
+  pre=HY("hybrid/overlay granular soft 0.01", "pair_coeff * * granular " + HK + "\npair_coeff * * soft 0.0\n"))
+L("H10_hybrid_granular_twice", "hybrid granular granular: 1 1, 2 2 granular 1 (2000); 1 2 granular 2 kn 5000 (5000)", "run 3000\n",
+  pre=HY("hybrid granular granular", "pair_coeff 1 1 granular 1 " + HK + "\npair_coeff 2 2 granular 1 " + HK + "\npair_coeff 1 2 granular 2 " + HK5 + "\n"))
+L("H11_overlay_zero_all", "hybrid/overlay granular zero 0.01; zero on all (adds nothing: 0.413)", "run 3000\n",
+  pre=HY("hybrid/overlay granular zero 0.01", "pair_coeff * * granular " + HK + "\npair_coeff * * zero\n"))
+L("H12_scaled_var", "variable s equal 0.5; hybrid/scaled v_s granular (forces halved)", "run 3000\n",
+  pre="variable s equal 0.5\n" + HY("hybrid/scaled v_s granular", "pair_coeff * * granular " + HK + "\n"))
+L("H13_scaled_two_granular", "hybrid/scaled 0.5 granular 0.5 granular (halves of the same: kn 2000 total: 0.413?)", "run 3000\n",
+  pre=HY("hybrid/scaled 0.5 granular 0.5 granular", "pair_coeff * * granular 1 " + HK + "\npair_coeff * * granular 2 " + HK + "\n"))
+L("H14_hybrid_restyle_to_plain", "hybrid granular zero (1 2 zero); then pair_style granular; pair_coeff * * kn 5000 (5000)", "pair_style granular\npair_coeff * * " + HK5 + "\nrun 3000\n",
+  pre=HY("hybrid granular zero 0.01", "pair_coeff * * granular " + HK + "\npair_coeff 1 2 zero\n"))
+
+# ================================================================ D: fixes that change the pair's motion
+L("D01_freeze_lv2", "fix freeze lv2 (lv2 at rest, lv1 at 1 m/s): pair granular takes meff = m1 for a frozen partner", "fix fz lv2 freeze\nrun 3000\n", pair=IN10())
+L("D02_setforce_lv2_zero", "fix setforce lv2 0 0 0 (lv2 at rest, lv1 1 m/s; lv2 held, meff still m1 m2/(m1+m2))", "fix sf lv2 setforce 0.0 0.0 0.0\nrun 3000\n", pair=IN10())
+L("D03_setforce_z_only", "fix setforce lv2 NULL NULL 0.0 (z only: the x contact as ever: 0.413)", "fix sf lv2 setforce NULL NULL 0.0\nrun 3000\n")
+L("D04_viscous_all", "fix viscous all 0.01 (drag through the contact)", "fix visc all viscous 0.01\nrun 3000\n")
+L("D05_viscous_zero", "fix viscous all 0.0 (no drag: 0.413)", "fix visc all viscous 0.0\nrun 3000\n")
+L("D06_langevin_t0", "fix langevin all 0 0 0.001 48279 (T 0: a drag of damp 1 ms)", "fix lang all langevin 0.0 0.0 0.001 48279\nrun 3000\n")
+L("D07_nve_limit_loose", "unfix integ; fix integ all nve/limit 0.01 (never limits: 0.413)", "unfix integ\nfix integ all nve/limit 0.01\nrun 3000\n")
+L("D08_nve_limit_tight", "unfix integ; fix integ all nve/limit 2e-7 (limits 0.77 m/s steps of 7.7e-7 m)", "unfix integ\nfix integ all nve/limit 2e-7\nrun 3000\n")
+L("D09_second_integrator_lv2", "fix integ all nve/sphere and fix i2 lv2 nve (lv2 moved twice a step)", "fix i2 lv2 nve\nrun 3000\n")
+L("D10_only_lv1_integrated", "unfix integ; fix integ lv1 nve/sphere (lv2 at rest never moves; lv1 at 1 m/s)", "unfix integ\nfix integ lv1 nve/sphere\nrun 3000\n", pair=IN10())
+L("D11_move_lv2_still", "unfix integ; fix integ lv1 nve/sphere; fix mv lv2 move linear 0 0 0 (lv2 held by fix move; lv1 at 1 m/s)",
+  "unfix integ\nfix integ lv1 nve/sphere\nfix mv lv2 move linear 0 0 0\nrun 3000\n", pair=IN10())
+L("D12_adapt_diameter_mass", "variable d equal 0.008; fix adapt lv2 atom diameter v_d (mass yes: lv2 8 mm 2500 kg/m3 in the run; neighbor skin 3 mm so the larger sphere is seen in time)",
+  "neighbor 0.003 bin\nvariable d equal 0.008\nfix ad lv2 adapt 0 atom diameter v_d\nrun 3000\n", pair=IN(1.1e-3), SEP="0.006")
+L("D13_adapt_diameter_no_mass", "fix adapt lv2 atom diameter v_d mass no (8 mm, the 6 mm mass: 0.413)",
+  "neighbor 0.003 bin\nvariable d equal 0.008\nfix ad lv2 adapt 0 atom diameter v_d mass no\nrun 3000\n", pair=IN(1.1e-3), SEP="0.006")
+L("D14_exclude_type_12", "neigh_modify exclude type 1 2 (no contact: the pair passes)", "neigh_modify exclude type 1 2\nrun 3000\n")
+L("D15_exclude_then_none", "neigh_modify exclude type 1 2; neigh_modify exclude none (contact: 0.413)", "neigh_modify exclude type 1 2\nneigh_modify exclude none\nrun 3000\n")
+L("D16_exclude_group", "neigh_modify exclude group lv1 lv2 (no contact)", "neigh_modify exclude group lv1 lv2\nrun 3000\n")
+L("D17_nve_plain", "unfix integ; fix integ all nve (no rotation: head-on 0.413)", "unfix integ\nfix integ all nve\nrun 3000\n")
+L("D18_two_nve_sphere", "a second fix nve/sphere on all (every sphere moved twice)", "fix integ2 all nve/sphere\nrun 3000\n")
+L("D19_freeze_lv2_moving", "fix freeze lv2 with lv2 moving at -0.2286 m/s (freeze zeroes force, keeps velocity)", "fix fz lv2 freeze\nrun 3000\n")
+L("D20_adapt_diameter_reset_then_run", "fix adapt diameter 8 mm (mass yes, reset yes) in run 1 (no contact), unfix; run 2 (meets, 6 mm again?)",
+  "neighbor 0.003 bin\nvariable d equal 0.008\nfix ad lv2 adapt 0 atom diameter v_d\nrun 100\nunfix ad\nrun 3000\n", pair=IN(1.1e-3))
+L("D21_addforce_lv1", "fix addforce lv1 0.05 0 0 (a push toward lv2 through the contact)", "fix af lv1 addforce 0.05 0.0 0.0\nrun 3000\n")
+L("D22_exclude_in_every", "run 2000 every 1000 \"neigh_modify exclude type 1 2\" (exclusion after part 1; meets in part 2: passes)",
+  "run 2000 every 1000 \"neigh_modify exclude type 1 2\"\n", pair=IN(G(2)), live="part 2")
+
+# ================================================================ U: runs in parts, minimize, replicate, change_box, displace, velocity
+L("U01_start_stop_then_pc", "run 1000 start 0 stop 5000; pc 5000; run 3000 (5000)", "run 1000 start 0 stop 5000\n" + PC5 + "run 3000\n", pair=IN(G11))
+L("U02_minimize_before", "min_style cg; minimize 0 0 10 10 (no overlap); run 3000 (0.413)", "min_style cg\nminimize 0 0 10 10\nrun 3000\n")
+L("U03_every_set_density", "run 2000 every 1000 \"set atom 2 density 5000\" (meets in part 2: 0.390)", "run 2000 every 1000 \"set atom 2 density 5000\"\n", pair=IN(G(2)), live="part 2")
+L("U04_every_set_density_step", "run 3000 every 1000 \"set atom 2 density $(2500+2.5*step)\" (part 2: 5000)", "run 3000 every 1000 \"set atom 2 density $(2500+2.5*step)\"\n", pair=IN(G(2)), live="part 2")
+L("U05_replicate_211", "run 0; replicate 2 1 1 (a copy 0.04 away); run 3000 (0.413)", "run 0\nreplicate 2 1 1\nrun 3000\n")
+L("U06_change_box_final", "change_box all x final 0 0.05 units box; run 3000", "change_box all x final 0 0.05 units box\nrun 3000\n")
+L("U07_change_box_boundary", "change_box all boundary f f f; run 3000", "change_box all boundary f f f\nrun 3000\n")
+L("U08_displace_lv2", "displace_atoms lv2 move 0.001 0 0 (meets 1 ms later: 0.413)", "displace_atoms lv2 move 0.001 0 0 units box\nrun 3000\n")
+L("U09_velocity_null", "velocity lv1 set NULL 0 0 units box (x kept)", "velocity lv1 set NULL 0 0 units box\nrun 3000\n")
+L("U10_processors", "processors 1 1 1 first; run 3000", "run 3000\n", pre=BASE(wall=False, head="processors 1 1 1\n"))
+L("U11_clear_second_pass", "a first deck with kn 2000 run 100; clear; the same deck again with kn 5000 (5000)",
+  "run 100\nclear\n" + BASE(wall=False, coeff="pair_coeff * * " + HK5 + "\n") + IN(0.1e-3) + "run 3000\n", pair=IN(5e-3))
+L("U12_restart_remap", "run 1000; write_restart a.rst; clear; read_restart a.rst remap; pair again kn 5000 (5000)",
+  "run 1000\nwrite_restart a.rst\nclear\nread_restart a.rst remap\npair_style granular\npair_coeff * * " + HK5 + "\n" + TAILR + "run 3000\n", pair=IN(G11))
+L("U13_run_post_no_pre_no", "run 500 post no; pc 5000; run 3000 pre no (pre no after a pair_coeff: LAMMPS sets up? kn 5000 or 2000)",
+  "run 500 post no\n" + PC5 + "run 3000 pre no\n", pair=IN(0.6e-3))
+L("U14_every_null_preno_loop", "loop 2 { run 1000 every 500 NULL }; pc 5000; run 3000 (5000)", "variable i loop 2\nlabel lp\nrun 1000 every 500 NULL\nnext i\njump SELF lp\n" + PC5 + "run 3000\n",
+  pair=IN(2.1e-3))
+L("U15_delete_overlap_none", "delete_atoms overlap 0.0045 all all (none that close: 0.413)", "delete_atoms overlap 0.0045 all all\nrun 3000\n")
+L("U16_reset_timestep_if_step", "run 1000; reset_timestep 0; if \"$(step) < 500\" then pc 5000 else pc 3000 (5000)",
+  "run 1000\nreset_timestep 0\n" + IFE("$(step) < 500", 5000, 3000) + "run 3000\n", pair=IN(G11))
+L("U17_velocity_zero_linear", "velocity all zero linear (momentum already 0: 0.413)", "velocity all zero linear\nrun 3000\n")
+L("U18_upto_after_reset", "reset_timestep 5000; run 8000 upto (3000 steps; 0.413)", "reset_timestep 5000\nrun 8000 upto\n")
+L("U19_run_every_pc_then_restart", "run 2000 every 1000 \"pc 5000\"; write_restart a.rst; clear; read_restart a.rst (pair_coeff kept in the file? pair granular writes its coeffs); run 3000",
+  "run 2000 every 1000 \"" + PCs(5000) + "\"\nwrite_restart a.rst\nclear\nread_restart a.rst\n" + TAILR + "run 3000\n", pair=IN(2.1e-3 + 1e-3))
+L("U20_timestep_change_between", "run 1000; timestep 2e-6; run 2000 (meets at dt 2e-6: 0.413)", "run 1000\ntimestep 2e-6\nrun 2000\n", pair=IN(G11 + 0.1e-3))
+
+# ================================================================ W: LAMMPS walls
+WB = lambda nt=2, wall="", wall_coeff=HK: BASE(nt=nt, wall=False, coeff="pair_coeff * * " + wall_coeff + "\n") + wall
+L("W01_type3_no_atoms_floor_kn5000", "3 types (type 3 has no atoms), floor wall/gran granular kn 5000 (WALL)", "run 3000\n",
+  pre=WB(3, "fix floor all wall/gran granular " + HK5 + " zplane 0 NULL\n"), pair=WALLP(), **WALL)
+L("W02_cylinder_region_side_in", "WALLX: wall/gran/region on a z cylinder (r 0.015 about 0.02 0.02), lv1 moving +x at 1 m/s into it", "run 3000\n",
+  pre=WB(2, "region cyl cylinder z 0.02 0.02 0.015 0 0.1 side in units box\nfix cw all wall/gran/region granular " + HKk(4000) + " region cyl\n"),
+  pair="create_atoms 1 single 0.0329 0.02 0.05\nset atom 1 diameter 0.004 density 2500\ngroup lv1 id 1\nvelocity lv1 set 1.0 0 0 units box\n",
+  PAIR="type 1 on wall cw", WALLX="")
+L("W03_floor_shear_x", "WALL: floor wall/gran zplane with shear x 0.1 (normal as ever)", "run 3000\n",
+  pre=WB(2, "fix floor all wall/gran granular " + HK + " zplane 0 NULL shear x 0.1\n"), pair=WALLP(), **WALL)
+L("W04_plane_region_floor", "WALL: wall/gran/region on a plane region (point 0 0 0, normal 0 0 1), kn 4000", "run 3000\n",
+  pre=WB(2, "region pl plane 0 0 0 0 0 1 side in units box\nfix floor all wall/gran/region granular " + HKk(4000) + " region pl\n"), pair=WALLP(), **WALL)
+L("W05_two_floors", "WALL: two floors at z 0 (fix floor and fix floor2, kn 2000 each: forces add)", "run 3000\n",
+  pre=WB(2, "fix floor all wall/gran granular " + HK + " zplane 0 NULL\nfix floor2 all wall/gran granular " + HK + " zplane 0 NULL\n"), pair=WALLP(), **WALL)
+L("W06_floor_limit_damping", "WALL: floor hooke kn 2000 with limit_damping", "run 3000\n",
+  pre=WB(2, "fix floor all wall/gran granular " + HK + " limit_damping zplane 0 NULL\n"), pair=WALLP(), **WALL)
+L("W07_floor_group_lv2_only", "WALL: floor fix on group lv2 only (lv1 falls through: no wall contact for lv1)", "group lv2x id 2\nfix floor lv2x wall/gran granular " + HK + " zplane 0 NULL\nrun 3000\n",
+  pre=WB(2), pair=WALLP(), **WALL)
+L("W08_floor_wiggle", "WALL: floor wiggle z 1e-6 0.01 (a tiny motion)", "run 3000\n",
+  pre=WB(2, "fix floor all wall/gran granular " + HK + " zplane 0 NULL wiggle z 1e-6 0.01\n"), pair=WALLP(), **WALL)
+L("W09_floor_gran_hooke_history", "WALL: wall/gran hooke/history 5000 NULL 3000 NULL 0.3 0 (the old style)", "run 3000\n",
+  pre=BASE(wall=False, pstyle="pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 0\n", coeff="pair_coeff * *\n") +
+  "fix floor all wall/gran hooke/history 5000 NULL 3000 NULL 0.3 0 zplane 0 NULL\n", pair=WALLP(), **WALL)
+
+# ================================================================ S: sizes
+POUR = lambda spec, t=1: ("region pr block 0.005 0.035 0.005 0.035 0.08 0.095 units box\n"
+                          f"fix p all pour 5 {t} 4767548 region pr {spec}\n")
+L("S01_pour_range_type2", "fix pour type 2 diam range 0.004 0.008 dens 2500 2500 + the 6 mm lv2", POUR("diam range 0.004 0.008 dens 2500 2500", 2) + "run 3000\n")
+L("S02_create_random_type2_set_type", "create_atoms 2 random 3 seed in a far region; set type 2 diameter 0.006 density 2500 (all alike: 0.413)",
+  "region far block 0.002 0.012 0.002 0.012 0.08 0.095 units box\ncreate_atoms 2 random 3 48271 far\nset type 2 diameter 0.006 density 2500\nrun 3000\n")
+L("S03_far_heavy_type2", "a far type 2 of 6 mm at density 8000 (type 2 masses 2500 and 8000)", "create_atoms 2 single 0.005 0.005 0.08\nset atom 3 diameter 0.006 density 8000\nrun 3000\n")
+L("S04_pour_dens_range_type2", "fix pour type 2 diam one 0.006 dens 1000 8000 (masses vary)", POUR("diam one 0.006 dens 1000 8000", 2) + "run 3000\n")
+L("S05_set_region_far_density", "a far type 2 at 6 mm; set region far density 5000 (only the far one: lv2 2500)",
+  "create_atoms 2 single 0.005 0.005 0.08\nset atom 3 diameter 0.006 density 2500\nregion far block 0 0.01 0 0.01 0.07 0.09 units box\nset region far density 5000\nrun 3000\n")
+
+# ================================================================ G: LIGGGHTS
+LB = lambda e=None, **kw: LBASE(e=e or "0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8", **kw)
+LG("G01_e_one", "LIGGGHTS e 1 2 = 1.0", "run 3000\n", pre=LB("0.6 1.0 0.7 1.0 0.4 0.45 0.7 0.45 0.8"))
+LG("G02_e_0999", "LIGGGHTS e 1 2 = 0.999", "run 3000\n", pre=LB("0.6 0.999 0.7 0.999 0.4 0.45 0.7 0.45 0.8"))
+LG("G03_e_006", "LIGGGHTS e 1 2 = 0.06 (very low; 0.05 is refused by LIGGGHTS)", "run 3000\n", pre=LB("0.6 0.06 0.7 0.06 0.4 0.45 0.7 0.45 0.8"))
+LG("G04_n_from_var", "LIGGGHTS peratomtypepair ${n} (n equal 3), e 1 2 0.8", "run 3000\n",
+   pre="variable n equal 3\n" + LB("0.6 0.8 0.7 0.8 0.4 0.45 0.7 0.45 0.8").replace("coefficientRestitution peratomtypepair 3", "coefficientRestitution peratomtypepair ${n}"))
+LG("G05_entries_from_vars", "LIGGGHTS matrix entries ${e12} (0.8)", "run 3000\n",
+   pre="variable e12 equal 0.8\n" + LB("0.6 ${e12} 0.7 ${e12} 0.4 0.45 0.7 0.45 0.8"))
+LG("G06_asymmetric_matrix", "LIGGGHTS e 1 2 = 0.6, e 2 1 = 0.8 (an asymmetric matrix)", "run 3000\n", pre=LB("0.6 0.6 0.7 0.8 0.4 0.45 0.7 0.45 0.8"))
+LG("G07_rows_as_strings", "LIGGGHTS rows from string variables r1 r2 r3 (e 1 2 0.8)", "run 3000\n",
+   pre='variable r1 string "0.6 0.8 0.7"\nvariable r2 string "0.8 0.4 0.45"\nvariable r3 string "0.7 0.45 0.8"\n' + LB("${r1} ${r2} ${r3}"))
+LG("G08_tangential_damping_off", "LIGGGHTS hertz tangential history tangential_damping off (normal e 0.5)", "run 3000\n",
+   pre=LB().replace("pair_style gran model hertz tangential history\n", "pair_style gran model hertz tangential history tangential_damping off\n"))
+LG("G09_rolling_cdt", "LIGGGHTS rolling_friction cdt (coefficientRollingFriction 0.1): e 0.5", "run 3000\n",
+   pre=LB(extra="fix m8 all property/global coefficientRollingFriction peratomtypepair 3 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1\n").replace(
+       "pair_style gran model hertz tangential history\n", "pair_style gran model hertz tangential history rolling_friction cdt\n"))
+LG("G10_rolling_epsd2", "LIGGGHTS rolling_friction epsd2: e 0.5", "run 3000\n",
+   pre=LB(extra="fix m8 all property/global coefficientRollingFriction peratomtypepair 3 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1 0.1\n").replace(
+       "pair_style gran model hertz tangential history\n", "pair_style gran model hertz tangential history rolling_friction epsd2\n"))
+LG("G11_cohesion_sjkr", "LIGGGHTS cohesion sjkr, cohesionEnergyDensity 20000 (an attraction: eps below e)", "run 3000\n",
+   pre=LB(extra="fix m9 all property/global cohesionEnergyDensity peratomtypepair 3 20000 20000 20000 20000 20000 20000 20000 20000 20000\n").replace(
+       "pair_style gran model hertz tangential history\n", "pair_style gran model hertz tangential history cohesion sjkr\n"))
+LG("G12_cohesion_sjkr_zero", "LIGGGHTS cohesion sjkr with cohesionEnergyDensity 0 (e 0.5)", "run 3000\n",
+   pre=LB(extra="fix m9 all property/global cohesionEnergyDensity peratomtypepair 3 0 0 0 0 0 0 0 0 0\n").replace(
+       "pair_style gran model hertz tangential history\n", "pair_style gran model hertz tangential history cohesion sjkr\n"))
+LG("G13_limitforce_e05", "LIGGGHTS hertz limitForce on, e 0.5", "run 3000\n",
+   pre=LB().replace("pair_style gran model hertz tangential history\n", "pair_style gran model hertz tangential history limitForce on\n"))
+LG("G14_hooke_e_one", "LIGGGHTS hooke (characteristicVelocity 1), e 1 2 = 1.0", "run 3000\n",
+   pre=LB("0.6 1.0 0.7 1.0 0.4 0.45 0.7 0.45 0.8", model="hooke", extra="fix m9 all property/global characteristicVelocity scalar 1.0\n"))
+LG("G15_insert_pack_type1_range", "LIGGGHTS insert/pack of type 1 radii 1.5 and 3 mm far above (hertz e 0.5)",
+   "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.0015\n"
+   "fix pts2 all particletemplate/sphere 15485867 atom_type 1 density constant 2500 radius constant 0.003\n"
+   "fix pdd1 all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\nregion bc block -0.04 0.04 -0.04 0.04 0.13 0.145 units box\n"
+   "fix ins all insert/pack seed 49979687 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 6 region bc\nrun 3000\n")
+LG("G16_insert_stream_face", "LIGGGHTS insert/stream from an STL face far from the pair (types 1 and 2 templates; e 0.5)",
+   "fix pts1 all particletemplate/sphere 15485863 atom_type 1 density constant 2500 radius constant 0.002\n"
+   "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 2500 radius constant 0.0025\n"
+   "fix pdd1 all particledistribution/discrete 32452843 2 pts1 0.5 pts2 0.5\n"
+   "fix inface all mesh/surface file face.stl type 1\n"
+   "fix ins all insert/stream seed 32452867 distributiontemplate pdd1 nparticles 4 massrate 0.1 overlapcheck yes vel constant 0 0 -0.1 insertion_face inface extrude_length 0.01\nrun 3000\n",
+   data={"face.stl": STLF(0.02, 0.045, -0.045, -0.02, 0.14)})
+LG("G17_three_templates_type2", "LIGGGHTS three templates of type 2 (radii 1, 3, 5 mm; weights 0.2 0.3 0.5), insert/pack far above (e 0.5)",
+   "fix pts1 all particletemplate/sphere 15485863 atom_type 2 density constant 2500 radius constant 0.001\n"
+   "fix pts2 all particletemplate/sphere 15485867 atom_type 2 density constant 1000 radius constant 0.003\n"
+   "fix pts3 all particletemplate/sphere 49979693 atom_type 2 density constant 2500 radius constant 0.005\n"
+   "fix pdd1 all particledistribution/discrete 32452843 3 pts1 0.2 pts2 0.3 pts3 0.5\nregion bc block -0.04 0.04 -0.04 0.04 0.13 0.145 units box\n"
+   "fix ins all insert/pack seed 49979687 distributiontemplate pdd1 insert_every once overlapcheck yes all_in yes particles_in_region 6 region bc\nrun 3000\n")
+MESHW = lambda t=3, f="floor.stl", extra="": (f"fix cad all mesh/surface file {f} type {t}{extra}\n"
+                                             "fix walls all wall/gran model hertz tangential history mesh n_meshes 1 meshes cad\n")
+LG("G18_mesh_floor_type3", "LIGGGHTS WALL: lv1 falls on a mesh floor (STL at z 0) of type 3: e 1 3 0.7", MESHW() + "run 3000\n",
+   pre=LB(wall=False), pair=LWALL(1e-4), PAIR="type 1 on wall walls", data={"floor.stl": STLP()})
+LG("G19_mesh_type2_walls_only", "LIGGGHTS WALL: mesh of type 2 (walls-only type; spheres type 1): e 1 2 0.65", MESHW(2) + "run 3000\n",
+   pre=LB("0.6 0.65 0.7 0.65 0.4 0.45 0.7 0.45 0.8", wall=False), pair=LWALL(1e-4), PAIR="type 1 on wall walls", data={"floor.stl": STLP()})
+LG("G20_mesh_scale_mm", "LIGGGHTS WALL: a floor STL in mm, scale 0.001 (e 1 3 0.7)", MESHW(3, "floor_mm.stl", " scale 0.001") + "run 3000\n",
+   pre=LB(wall=False), pair=LWALL(1e-4), PAIR="type 1 on wall walls", data={"floor_mm.stl": STLP(0.0, 50)})
+LG("G21_mesh_plus_primitive", "LIGGGHTS WALL: mesh floor and primitive zplane 0 both (type 3; forces add?)", MESHW() + "run 3000\n",
+   pre=LB(), pair=LWALL(1e-4), PAIR="type 1 on wall walls", data={"floor.stl": STLP()})
+LG("G22_freeze_lv2", "LIGGGHTS fix freeze lv2 (lv2 at rest, lv1 1 m/s; e 0.5)", "fix fz lv2 freeze\nrun 3000\n",
+   pair=LIN(0.1e-3).replace(f"velocity lv1 set {V1:.10f} 0 0", "velocity lv1 set 1.0 0 0").replace(f"velocity lv2 set {V2:.10f} 0 0", "velocity lv2 set 0 0 0"))
+LG("G23_exclude_type_12", "LIGGGHTS neigh_modify exclude type 1 2 (no contact)", "neigh_modify exclude type 1 2\nrun 3000\n")
+LG("G24_two_e_fixes", "LIGGGHTS a second coefficientRestitution fix (m3b, e 1 2 0.8) beside m3 (0.5): which one?", LEe(0.8).replace("fix m3 ", "fix m3b ") + "run 3000\n")
+LG("G25_e_refix_between_runs", "LIGGGHTS run 100 (no contact); unfix m3; fix m3 e 1 2 0.8; run 3000 (0.8)", "run 100\nunfix m3\n" + LEe(0.8) + "run 3000\n", pair=LIN(0.2e-3))
+LG("G26_e_continuation", "LIGGGHTS coefficientRestitution matrix over three lines with & (e 1 2 0.8)", "run 3000\n",
+   pre=LB().replace("coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8", "coefficientRestitution peratomtypepair 3 &\n 0.6 0.8 0.7 &\n 0.8 0.4 0.45 &\n 0.7 0.45 0.8"))
+LG("G27_viscous", "LIGGGHTS fix viscous all 0.01 (drag)", "fix visc all viscous 0.01\nrun 3000\n")
+LG("G28_set_density_hertz", "LIGGGHTS set atom 2 density 5000 (hertz e 0.5 any mass)", "set atom 2 density 5000\nrun 3000\n")
+LG("G29_e_fmt_immediate", "LIGGGHTS e 1 2 $(0.85:%.1f) (0.8: 0.85 is 0.8499999 in binary)", "run 3000\n", pre=LB("0.6 $(0.85:%.1f) 0.7 $(0.85:%.1f) 0.4 0.45 0.7 0.45 0.8"))
+LG("G30_atomtypepair_form", "LIGGGHTS coefficientRestitution atomtypepair 3 (the older keyword) e 1 2 0.8", "run 3000\n",
+   pre=LB("0.6 0.8 0.7 0.8 0.4 0.45 0.7 0.45 0.8").replace("coefficientRestitution peratomtypepair", "coefficientRestitution atomtypepair"))
+LG("G31_hooke_limitforce_e_low", "LIGGGHTS hooke limitForce on (characteristicVelocity 1), e 1 2 0.3", "run 3000\n",
+   pre=LB("0.6 0.3 0.7 0.3 0.4 0.45 0.7 0.45 0.8", model="hooke", extra="fix m9 all property/global characteristicVelocity scalar 1.0\n").replace(
+       "pair_style gran model hooke tangential history\n", "pair_style gran model hooke tangential history limitForce on\n"))
+LG("G32_e_in_if", "LIGGGHTS if \"1 > 0\" then \"fix m3 ... e 0.8\" (0.8)", "if \"1 > 0\" then \"" + LE.format(e="0.8") + "\"\nrun 3000\n")
+LG("G33_e_loop_last", "LIGGGHTS loop i 3: e 1 2 $(0.5+0.1*v_i) then run 200 (meets in pass 3: 0.8)",
+   "variable i loop 3\nlabel lp\n" + LE.format(e="$(0.5+0.1*v_i)") + "\nrun 1000\nnext i\njump SELF lp\n", pair=LIN(G(3)), live="pass 3")
+LG("G34_insert_pack_type2_sizes", "LIGGGHTS insert/pack of type 2 radii 2 and 4 mm far above + the 3 mm lv2 (hooke: mass dependent? e fixed: 0.5)",
+   m7.m6.INS(0.002, 0.004).replace("atom_type 1", "atom_type 2") + "run 3000\n",
+   pre=LB(model="hooke", extra="fix m9 all property/global characteristicVelocity scalar 1.0\n"))
+LG("G35_mesh_type_var", "LIGGGHTS WALL: mesh type ${wt} (wt 3) e 1 3 0.7", "variable wt equal 3\n" + MESHW("${wt}") + "run 3000\n",
+   pre=LB(wall=False), pair=LWALL(1e-4), PAIR="type 1 on wall walls", data={"floor.stl": STLP()})
+LG("G36_wall_type_label_primitive_type2", "LIGGGHTS WALL: primitive wall type 2 and e 1 2 0.65 (walls-only type 2; spheres type 1)", "run 3000\n",
+   pre=LB("0.6 0.65 0.7 0.65 0.4 0.45 0.7 0.45 0.8").replace("primitive type 3", "primitive type 2"), pair=LWALL(1e-4), **LW)
+
+# ================================================================ C: controls
+L("C01_plain_2000", "control: kn 2000 (0.413435)", "run 3000\n")
+L("C02_plain_5000", "control: pc 5000 (0.578975)", PC5 + "run 3000\n")
+L("C03_lv2_5000", "control: lv2 5000 kg/m3 (0.390402)", "set atom 2 density 5000\nrun 3000\n")
+L("C04_wall", "control: WALL floor kn 2000", "run 3000\n", pre=BASE(), pair=WALLP(), **WALL)
+LG("C05_lig_05", "control: LIGGGHTS e 0.5 (0.499928)", "run 3000\n")
+LG("C06_lig_08", "control: LIGGGHTS e 0.8 (0.800005)", LEe(0.8) + "run 3000\n")
+LG("C07_lig_wall", "control: LIGGGHTS WALL primitive type 3 (e 1 3 0.7)", "run 3000\n", pair=LWALL(1e-4), **LW)
+
+NP2 = ["C01", "C05", "D01", "D12", "H04", "Q01", "G22", "G24"]   # also on 2 processes
+if __name__ == "__main__":
+    names = sys.argv[1:]
+    m7.write(names)
+    for n in m7.DECKS:
+        if n[:3] in NP2 and (not names or any(n.startswith(p) for p in names)):
+            open(os.path.join(m7.D, n, "NP"), "w").write("1 2\n")
+        elif os.path.isdir(os.path.join(m7.D, n)):
+            open(os.path.join(m7.D, n, "NP"), "w").write("1\n")
