@@ -58,6 +58,22 @@ L("K14_label_range_mixed_swap", "3 types, labelmap atom 1 s 2 b 3 r; lv2 of type
 L("K15_label_then_relabel", "labelmap atom 2 b; pair_coeff 1 b kn 5000; labelmap atom 2 c (a second label for 2? or rename); pair_coeff 1 c kn 3000 (3000 if accepted)",
   "labelmap atom 2 b\n" + PCk("1 b", 5000) + "labelmap atom 2 c\n" + PCk("1 c", 3000) + "run 3000\n")
 
+L("K16_star_then_ii_jj", "pair_coeff * * kn 2000; pair_coeff 1 1 kn 5000; pair_coeff 2 2 kn 5000 (1 2 set by * *: 2000)", PCk("1 1", 5000) + PCk("2 2", 5000) + "run 3000\n")
+L("K17_ii_jj_only_mixed", "pair_style granular with only 1 1 kn 2000 and 2 2 kn 5000 given (1 2 mixed)", "run 3000\n",
+  pre=BASE(wall=False, coeff="pair_coeff 1 1 " + HK + "\npair_coeff 2 2 " + HK5 + "\n"))
+L("K18_restyle_same_keeps", "pc 5000; pair_style granular again (same style: coefficients kept); run (5000)", PC5 + "pair_style granular\nrun 3000\n")
+L("K19_gran_hooke_history_resettings", "pair_style gran/hooke/history 2000 ...; pair_coeff * *; pair_style gran/hooke/history 5000 ... again (5000)",
+  "pair_style gran/hooke/history 5000 NULL 3000 NULL 0.3 0\nrun 3000\n", pre=BASE(wall=False, pstyle="pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 0\n", coeff="pair_coeff * *\n"))
+L("K20_restyle_granular_cutoff", "pc 5000; pair_style granular 0.01 (same style, a cutoff: coefficients kept? 5000)", PC5 + "pair_style granular 0.01\nrun 3000\n")
+L("Q16_set_density_atom_var", "variable rho atom 2500+2500*(x>0.02); set group all density v_rho (lv2 right of 0.02: 5000: 0.390)",
+  "variable rho atom 2500+2500*(x>0.02)\nset group all density v_rho\nrun 3000\n")
+L("Q17_set_diameter_atom_var_mass", "variable m atom 2.82743e-4*(1+(type==2)); set type 2 mass v_m (lv2 mass doubled: 0.390)",
+  "variable m atom 2.82743e-4*(1+(type==2))\nset type 2 mass v_m\nrun 3000\n")
+L("Q18_set_density_equal_var_of_mass", "variable r equal 2*mass(lv2)/(PI/6*0.006^3) (5000); set atom 2 density ${r} (0.390)",
+  "variable r equal 2*mass(lv2)/(PI/6*0.006^3)\nset atom 2 density ${r}\nrun 3000\n")
+L("Q19_read_data_then_set_diameter", "write_data d.data; clear; read_data d.data; set type 2 diameter 0.006 (mass kept); set type 2 density 5000 (0.390)",
+  "write_data d.data\nclear\n" + m7.m6.MDH.format(f="d.data") + "set type 2 diameter 0.006\nset type 2 density 5000\nrun 3000\n")
+
 # ================================================================ V: formats, variables, if conditions, file names
 IFE = lambda cond, a, b: f'if "{cond}" then "' + PCs(a) + '" else "' + PCs(b) + '"\n'
 L("V01_if_fmt_e", "if \"$(5000:%e) == 5000\" (5.000000e+03 == 5000: true: 5000)", IFE("$(5000:%e) == 5000", 5000, 3000) + "run 3000\n")
@@ -133,6 +149,42 @@ L("Q14_set_group_by_type_after_retype", "group two type 2 (lv2); set atom 2 type
 L("Q15_create_atoms_after_delete_reuses_id", "delete lv2 (id 2); create lv2 again (id 2 reused: atom_modify map; a 6 mm of default size?); set atom 2 diameter 0.006 density 5000",
   "group gone id 2\ndelete_atoms group gone\ncreate_atoms 2 single 0.023050 0.02 0.05\nset atom 2 diameter 0.006 density 5000\ngroup lv2b id 2\nvelocity lv2b set " + f"{V2:.10f}" + " 0 0 units box\nrun 3000\n",
   GROUPS="lv1 lv2b")
+
+L("Q20_region_lattice_units_forgot_box", "lattice sc 0.01; region rr block 0.021 0.04 0 0.04 0 0.1 (no units box: lattice units, 0.00021..0.0004 m: nobody); set region rr density 5000 (0.413)",
+  "lattice sc 0.01\nregion rr block 0.021 0.04 0 0.04 0 0.1\nset region rr density 5000\nrun 3000\n")
+L("Q21_region_lattice_units_scaled", "lattice sc 0.01; region rr block 2.1 4 0 4 0 10 (lattice units: 0.021..0.04 m: lv2); set region rr density 5000 (0.390)",
+  "lattice sc 0.01\nregion rr block 2.1 4 0 4 0 10\nset region rr density 5000\nrun 3000\n")
+L("Q22_region_moving_var", "run 1000 (no contact yet); region rr block 0.011 0.03 ... move v_dx NULL NULL (dx = 1e-5*step: +0.01 at step 1000: 0.021..0.04, lv2 only); set region rr density 5000; run 3000 (0.390)",
+  "run 1000\nvariable dx equal 1e-5*step\nregion rr block 0.011 0.03 0 0.04 0 0.1 move v_dx NULL NULL units box\nset region rr density 5000\nrun 3000\n", pair=IN(G11))
+L("Q23_region_side_out", "region rr block 0 0.02 0 0.04 0 0.1 side out units box (x > 0.02: lv2); set region rr density 5000 (0.390)",
+  "region rr block 0 0.02 0 0.04 0 0.1 side out units box\nset region rr density 5000\nrun 3000\n")
+L("Q24_region_union", "region a sphere at lv2's centre r 1 mm; region b block x < 0.02 (lv1); region u union 2 a b; set region u density 5000 (both: 0.273)",
+  "region a sphere 0.02305 0.02 0.05 0.001 units box\nregion b block 0 0.02 0 0.04 0 0.1 units box\nregion u union 2 a b\nset region u density 5000\nrun 3000\n")
+L("Q25_region_intersect_none", "region a (lv2's sphere) intersect b (x < 0.02): none (0.413)",
+  "region a sphere 0.02305 0.02 0.05 0.001 units box\nregion b block 0 0.02 0 0.04 0 0.1 units box\nregion i intersect 2 a b\nset region i density 5000\nrun 3000\n")
+L("Q26_region_cylinder_x", "region c cylinder x 0.02 0.05 0.001 0.021 0.03 units box (lv2's centre inside); set region c density 5000 (0.390)",
+  "region c cylinder x 0.02 0.05 0.001 0.021 0.03 units box\nset region c density 5000\nrun 3000\n")
+L("Q27_region_plane", "region p plane 0.02 0 0 1 0 0 units box (side in: x >= 0.02: lv2); set region p density 5000 (0.390)",
+  "region p plane 0.02 0 0 1 0 0 units box\nset region p density 5000\nrun 3000\n")
+L("Q28_group_variable", "variable sel atom x>0.02; group right variable sel (lv2); set group right density 5000 (0.390)",
+  "variable sel atom x>0.02\ngroup right variable sel\nset group right density 5000\nrun 3000\n")
+L("Q29_group_subtract", "group left region b (x < 0.02: lv1); group right subtract all left (lv2); set group right density 5000 (0.390)",
+  "region b block 0 0.02 0 0.04 0 0.1 units box\ngroup left region b\ngroup right subtract all left\nset group right density 5000\nrun 3000\n")
+L("Q30_displace_lattice_units", "lattice sc 0.5; displace_atoms all move 0.01 0 0 (lattice units: +0.005 m: lv1 at 0.02295); region rr block 0.021 0.025 units box; set region rr density 5000 (lv1: 0.316)",
+  "lattice sc 0.5\ndisplace_atoms all move 0.01 0 0\nregion rr block 0.021 0.025 0 0.04 0 0.1 units box\nset region rr density 5000\nrun 3000\n")
+L("Q31_region_rotate_block", "region rr block 0.021 0.025 ... rotate v_a 0.02 0.02 0.05 0 0 1 (a = 180 deg at step 0: the block turned about x 0.02: 0.015..0.019: lv1); set region rr density 5000 (0.316)",
+  "variable a equal PI\nregion rr block 0.021 0.025 0.0 0.04 0.0 0.1 rotate v_a 0.02 0.02 0.05 0 0 1 units box\nset region rr density 5000\nrun 3000\n")
+L("Q32_read_data_offset_type", "lv1 created (type 1); read_data l2.data add append offset 1 0 0 0 0 (its type 1 atom becomes type 2: 6 mm 5000 kg/m3); groups; run (0.390)",
+  "run 3000\n", pair="create_atoms 1 single 0.017950 0.02 0.05\nset atom 1 diameter 0.004 density 2500\nread_data l2.data add append offset 1 0 0 0 0\ngroup lv1 id 1\ngroup lv2 id 2\n" + VEL,
+  data={"l2.data": "lv2 at 5000 kg/m3, as type 1 of its own file\n\n1 atoms\n1 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 1 0.006 5000 0.023050 0.02 0.05\n"})
+L("Q33_read_data_shift", "read_data l2.data add append shift 0.001 0 0 (lv2 type 2 5000 kg/m3, 1 mm further: meets 1 ms later: 0.390)",
+  "run 3000\n", pair="create_atoms 1 single 0.017950 0.02 0.05\nset atom 1 diameter 0.004 density 2500\nread_data l2.data add append shift 0.001 0 0\ngroup lv1 id 1\ngroup lv2 id 2\n" + VEL,
+  data={"l2.data": "lv2 at 5000 kg/m3\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 2 0.006 5000 0.022050 0.02 0.05\n"})
+LG("G37_lig_hooke_stiffness_set_region", "LIGGGHTS hooke/stiffness (mass dependent): region x > 0 (lv2); set region rr density 5000",
+   "region rr block 0.0 0.05 -0.05 0.05 -0.01 0.15 units box\nset region rr density 5000\nrun 3000\n", pre=m7.m6.LHS)
+LG("G38_lig_hooke_stiffness_region_lattice", "LIGGGHTS hooke/stiffness: lattice sc 0.01; region rr block 0 5 -5 5 -1 15 (lattice units: x > 0: lv2); set region rr density 5000",
+   "lattice sc 0.01\nregion rr block 0 5 -5 5 -1 15\nset region rr density 5000\nrun 3000\n", pre=m7.m6.LHS)
+LG("G39_lig_hooke_stiffness_control", "LIGGGHTS hooke/stiffness control (lv2 2500)", "run 3000\n", pre=m7.m6.LHS)
 
 # ================================================================ H: pair_style hybrid forms
 HY = lambda ps, coeffs: BASE(wall=False, pstyle=f"pair_style {ps}\n", coeff=coeffs)
@@ -339,6 +391,76 @@ LG("G35_mesh_type_var", "LIGGGHTS WALL: mesh type ${wt} (wt 3) e 1 3 0.7", "vari
 LG("G36_wall_type_label_primitive_type2", "LIGGGHTS WALL: primitive wall type 2 and e 1 2 0.65 (walls-only type 2; spheres type 1)", "run 3000\n",
    pre=LB("0.6 0.65 0.7 0.65 0.4 0.45 0.7 0.45 0.8").replace("primitive type 3", "primitive type 2"), pair=LWALL(1e-4), **LW)
 
+# ================================================================ X: further fixes that act on the pair's atoms (flagged or not?)
+L("X01_aveforce_all", "fix aveforce all 0.0 NULL NULL (x forces averaged over the pair: 0 each: no bounce)", "fix avf all aveforce 0.0 NULL NULL\nrun 3000\n")
+L("X02_spring_self_lv2", "fix spring/self lv2 10.0 (a tether on lv2)", "fix ss lv2 spring/self 10.0\nrun 3000\n")
+L("X03_temp_rescale", "fix temp/rescale 10 1e20 1e20 0.1 1.0 (rescales the pair's kinetic energy every 10 steps)", "fix tr all temp/rescale 10 1e20 1e20 0.1 1.0\nrun 3000\n")
+L("X04_temp_berendsen", "fix temp/berendsen all 1e20 1e20 1e-4 (scales velocities every step)", "fix tb all temp/berendsen 1e20 1e20 1e-4\nrun 3000\n")
+L("X05_nvt_sphere", "unfix integ; fix integ all nvt/sphere temp 1e20 1e20 1e-4 (a thermostatted integrator)", "unfix integ\nfix integ all nvt/sphere temp 1e20 1e20 1e-4\nrun 3000\n")
+L("X06_planeforce_z", "fix planeforce all 0 0 1 (motion in xy only: the x contact as ever, gravity removed: 0.413)", "fix pf all planeforce 0 0 1\nrun 3000\n")
+L("X07_lineforce_y", "fix lineforce all 0 1 0 (motion along y only: x forces removed: no bounce)", "fix lf all lineforce 0 1 0\nrun 3000\n")
+L("X08_momentum_linear", "fix momentum 1 linear 1 1 1 (total momentum zero already: 0.413)", "fix mom all momentum 1 linear 1 1 1\nrun 3000\n")
+L("X09_viscous_sphere", "fix viscous/sphere all 1e-3 (a torque drag only: head-on 0.413)", "fix vs all viscous/sphere 1e-3\nrun 3000\n")
+L("X10_recenter", "fix recenter INIT INIT INIT (shifts the pair as a whole: 0.413)", "fix rc all recenter INIT INIT INIT\nrun 3000\n")
+L("X11_spring_tether_lv1", "fix spring lv1 tether 50.0 0.01795 NULL NULL 0.0 (a spring on lv1's centre of mass)", "fix sp lv1 spring tether 50.0 0.01795 NULL NULL 0.0\nrun 3000\n")
+L("X12_wall_reflect_between", "fix wall/reflect xlo 0.0205 on lv2 only (lv2 bounces off x = 0.0205 before lv1 meets it? lv2's left edge at 0.02005)",
+  "group l2 id 2\nfix wr l2 wall/reflect xlo 0.0205 units box\nrun 3000\n")
+L("X13_deform_remap_v", "fix deform 1 x scale 1.5 remap v (the box stretches in x with the velocities remapped)", "fix df all deform 1 x scale 1.5 remap v\nrun 3000\n")
+L("X14_setforce_var_zero", "variable f equal 0; fix setforce lv2 v_f v_f v_f (forces set to zero by a variable; lv2 at rest, lv1 1 m/s)",
+  "variable f equal 0\nfix sf lv2 setforce v_f v_f v_f\nrun 3000\n", pair=IN10())
+L("X15_freeze_type2_group", "group t2 type 2; fix freeze t2 (lv2 at rest, lv1 1 m/s: meff = m1)", "group t2 type 2\nfix fz t2 freeze\nrun 3000\n", pair=IN10())
+L("X16_nve_noforce_lv2", "unfix integ; fix integ lv1 nve/sphere; fix nf lv2 nve/noforce (lv2 moves at its own velocity, no force)",
+  "unfix integ\nfix integ lv1 nve/sphere\nfix nf lv2 nve/noforce\nrun 3000\n", pair=IN10())
+L("X17_rigid_small_lv2", "unfix integ; fix integ lv1 nve/sphere; fix rg lv2 rigid/small molecule? (rigid of one atom: LAMMPS stops?) -> fix rg lv2 rigid single",
+  "unfix integ\nfix integ lv1 nve/sphere\nfix rg lv2 rigid single\nrun 3000\n")
+L("X18_efield_no_charge", "fix efield 1 0 0 on atoms without charge (LAMMPS stops)", "fix ef all efield 1.0 0.0 0.0\nrun 3000\n")
+L("X19_viscous_lv2_scale", "fix viscous lv2 0.0 scale 2 100? (gamma 0 on all types: 0.413)", "fix visc all viscous 0.0 scale 2 100.0\nrun 3000\n")
+L("X20_gravity_x", "fix grav replaced by a gravity along x (the pair's axis: both fall alike: 0.413)", "unfix grav\nfix grav all gravity 9.81 vector 1 0 0\nrun 3000\n")
+L("X21_freeze_in_if", "if \"1 > 0\" then \"fix fz lv2 freeze\" (lv2 at rest, lv1 1 m/s)", "if \"1 > 0\" then \"fix fz lv2 freeze\"\nrun 3000\n", pair=IN10())
+L("X22_freeze_by_include", "include fz.in (fix fz lv2 freeze) (lv2 at rest, lv1 1 m/s)", "include fz.in\nrun 3000\n", pair=IN10(), data={"fz.in": "fix fz lv2 freeze\n"})
+L("X23_freeze_in_every", "run 2000 every 1000 \"fix fz lv2 freeze\" (frozen after part 1; meets in part 2; lv2 at rest, lv1 1 m/s)",
+  "run 2000 every 1000 \"fix fz lv2 freeze\"\n", pair=IN10(G(2)), live="part 2")
+L("X24_viscous_by_variable_id", "variable s string viscous; fix visc all ${s} 0.01 (the style from a variable)", "variable s string viscous\nfix visc all ${s} 0.01\nrun 3000\n")
+L("X25_setforce_unfixed_before", "fix setforce lv2 0 0 0; run 100 (no contact); unfix sf; run 3000 (0.413)", "fix sf lv2 setforce 0.0 0.0 0.0\nrun 100\nunfix sf\nrun 3000\n", pair=IN(0.2e-3))
+L("X29_integ_redefined_same_id", "fix integ all nve/sphere, then fix integ lv1 nve/sphere (same id: replaced; lv2 at rest never moves; lv1 1 m/s)",
+  "fix integ lv1 nve/sphere\nrun 3000\n", pair=IN10())
+L("X30_viscous_redefined_zero", "fix visc all viscous 0.01, then fix visc all viscous 0.0 (same id: no drag: 0.413)", "fix visc all viscous 0.01\nfix visc all viscous 0.0\nrun 3000\n")
+L("X31_freeze_unfixed_in_include", "fix fz lv2 freeze; include u.in (unfix fz): 0.413", "fix fz lv2 freeze\ninclude u.in\nrun 3000\n", data={"u.in": "unfix fz\n"})
+L("X32_integ_replaced_by_limit", "fix integ all nve/limit 2e-7 over the base's fix integ (same id, no unfix)", "fix integ all nve/limit 2e-7\nrun 3000\n")
+L("X33_freeze_type1_wall", "WALL: fix freeze on type 1 (the falling sphere: it never moves... LAMMPS: no fall)", "group t1 type 1\nfix fz t1 freeze\nrun 3000\n", pre=BASE(), pair=WALLP(), **WALL)
+LG("X26_lig_addforce_lv1", "LIGGGHTS fix addforce lv1 0.05 0 0 (a push through the contact)", "fix af lv1 addforce 0.05 0.0 0.0\nrun 3000\n")
+LG("X27_lig_aveforce_all", "LIGGGHTS fix aveforce all 0.0 NULL NULL (no bounce)", "fix avf all aveforce 0.0 NULL NULL\nrun 3000\n")
+LG("X28_lig_setforce_lv2", "LIGGGHTS fix setforce lv2 0 0 0 (lv2 at rest, lv1 1 m/s)", "fix sf lv2 setforce 0.0 0.0 0.0\nrun 3000\n",
+   pair=LIN(0.1e-3).replace(f"velocity lv1 set {V1:.10f} 0 0", "velocity lv1 set 1.0 0 0").replace(f"velocity lv2 set {V2:.10f} 0 0", "velocity lv2 set 0 0 0"))
+
+# ================================================================ Y: fixes that act during the runs the audit skips
+L("Y01_fix_set_density_every_step", "fix fs all set 1 0 atom 2 density 5000 (a set command every step of the run: lv2 5000: 0.390)",
+  "fix fs all set 1 0 atom 2 density 5000\nrun 3000\n")
+L("Y02_fix_set_type_density_100", "fix fs all set 50 0 type 2 density 5000 (every 50 steps, before the pair meets at step 100: 0.390)",
+  "fix fs all set 50 0 type 2 density 5000\nrun 3000\n")
+L("Y03_fix_set_type_change", "3 types: fix fs all set 50 0 atom 2 type 3 (lv2 made type 3 at step 50; 1 3 kn 4000: 0.542)",
+  "fix fs all set 50 0 atom 2 type 3\n" + PCk("1 3", 4000) + "run 3000\n", pre=B3, PAIR="types 1 3")
+L("Y04_fix_set_mass", "fix fs all set 1 0 atom 2 mass 5.65487e-4 (lv2's mass doubled in the run: 0.390)", "fix fs all set 1 0 atom 2 mass 5.65487e-4\nrun 3000\n")
+L("Y05_damping_cundall", "fix damping/cundall all 0.3 0.3 (Cundall's global damping)", "fix dc all damping/cundall 0.3 0.3\nrun 3000\n")
+L("Y06_drag_point", "fix drag all 0.02 0.02 0.05 1e-3 0.0 (a drag toward a point)", "fix dr all drag 0.02 0.02 0.05 1e-3 0.0\nrun 3000\n")
+L("Y07_propel_self_velocity", "fix propel/self velocity 0.01 (a force along each atom's velocity)", "fix ps all propel/self velocity 0.01\nrun 3000\n")
+L("Y08_oneway_region", "fix oneway 1 on region x > 0.021 in +x (lv2 moving -x there is turned)", "region rr block 0.021 0.04 0 0.04 0 0.1 units box\nfix ow all oneway 1 rr x\nrun 3000\n")
+L("Y09_indent_far", "fix indent sphere far away (no effect: 0.413)", "fix ind all indent 10.0 sphere 0.005 0.005 0.005 0.001 units box\nrun 3000\n")
+L("Y10_temp_csvr", "fix temp/csvr all 1e20 1e20 1e-4 48279 (a stochastic thermostat)", "fix cs all temp/csvr 1e20 1e20 1e-4 48279\nrun 3000\n")
+L("Y11_spring_rg", "fix spring/rg all 100 0.0 (pulls the pair together)", "fix sr all spring/rg 100.0 0.0\nrun 3000\n")
+L("Y12_flow_gauss_x", "fix flow/gauss all 1 0 0 (the pair's net x force is zero anyway: 0.413)", "fix fg all flow/gauss 1 0 0\nrun 3000\n")
+L("Y13_heat_remove", "fix heat all heat 1 -1e-9 (kinetic energy taken every step)", "fix ht all heat 1 -1e-9\nrun 3000\n")
+L("Y14_addtorque", "fix addtorque all 0 0 1e-9 (a torque: head-on normal as ever: 0.413)", "fix at all addtorque 0.0 0.0 1e-9\nrun 3000\n")
+L("Y15_viscosity_swap", "fix viscosity 1 x z 5 (momentum swaps between slabs)", "fix vs all viscosity 1 x z 5\nrun 3000\n")
+L("Y16_adapt_diameter_growing", "fix adapt lv2 diameter 0.006+2e-6*step (mass yes: lv2 grows through the contact)",
+  "neighbor 0.003 bin\nvariable d equal 0.006+2e-6*step\nfix ad lv2 adapt 1 atom diameter v_d\nrun 3000\n", pair=IN(0.3e-3))
+L("Y17_nve_bpm_sphere", "unfix integ; fix integ all nve/bpm/sphere (the BPM integrator on plain spheres: 0.413?)", "unfix integ\nfix integ all nve/bpm/sphere\nrun 3000\n")
+L("Y18_brownian_sphere", "unfix integ; fix integ all brownian/sphere 1e-20 48279 gamma_t 1e-3 gamma_r 1e-3 (an overdamped integrator)",
+  "unfix integ\nfix integ all brownian/sphere 1e-20 48279 gamma_t 1e-3 gamma_r 1e-3\nrun 3000\n")
+L("Y19_fix_set_in_include", "include s.in (fix fs all set 1 0 atom 2 density 5000): 0.390", "include s.in\nrun 3000\n", data={"s.in": "fix fs all set 1 0 atom 2 density 5000\n"})
+L("Y20_fix_set_diameter_only", "fix fs all set 1 0 atom 2 diameter 0.006 (no change: 0.413)", "fix fs all set 1 0 atom 2 diameter 0.006\nrun 3000\n")
+LG("Y21_lig_hooke_stiffness_fix_viscous_zero", "LIGGGHTS hooke/stiffness with fix viscous 0 (control)", "fix visc all viscous 0.0\nrun 3000\n", pre=m7.m6.LHS)
+
 # ================================================================ C: controls
 L("C01_plain_2000", "control: kn 2000 (0.413435)", "run 3000\n")
 L("C02_plain_5000", "control: pc 5000 (0.578975)", PC5 + "run 3000\n")
@@ -353,7 +475,5 @@ if __name__ == "__main__":
     names = sys.argv[1:]
     m7.write(names)
     for n in m7.DECKS:
-        if n[:3] in NP2 and (not names or any(n.startswith(p) for p in names)):
-            open(os.path.join(m7.D, n, "NP"), "w").write("1 2\n")
-        elif os.path.isdir(os.path.join(m7.D, n)):
-            open(os.path.join(m7.D, n, "NP"), "w").write("1\n")
+        if not names or any(n.startswith(p) for p in names):
+            open(os.path.join(m7.D, n, "NP"), "w").write("1 2\n" if n[:3] in NP2 else "1\n")
