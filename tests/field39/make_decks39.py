@@ -240,6 +240,15 @@ L("D18_two_nve_sphere", "a second fix nve/sphere on all (every sphere moved twic
 L("D19_freeze_lv2_moving", "fix freeze lv2 with lv2 moving at -0.2286 m/s (freeze zeroes force, keeps velocity)", "fix fz lv2 freeze\nrun 3000\n")
 L("D20_adapt_diameter_reset_then_run", "fix adapt diameter 8 mm (mass yes, reset yes) in run 1 (no contact), unfix; run 2 (meets, 6 mm again?)",
   "neighbor 0.003 bin\nvariable d equal 0.008\nfix ad lv2 adapt 0 atom diameter v_d\nrun 100\nunfix ad\nrun 3000\n", pair=IN(1.1e-3))
+L("D23_adapt_scale_yes", "fix adapt lv2 atom diameter v_f scale yes (f = 4/3: 8 mm, mass yes: 0.386)",
+  "neighbor 0.003 bin\nvariable f equal 4/3\nfix ad lv2 adapt 0 atom diameter v_f scale yes\nrun 3000\n", pair=IN(1.1e-3), SEP="0.006")
+L("D24_adapt_reset_no_then_set_density", "fix adapt lv2 diameter 8 mm mass no reset no; run 100 (no contact); unfix; set atom 2 density 2500 (now from the 8 mm volume); run 3000 (0.386?)",
+  "neighbor 0.003 bin\nvariable d equal 0.008\nfix ad lv2 adapt 0 atom diameter v_d mass no reset no\nrun 100\nunfix ad\nset atom 2 density 2500\nrun 3000\n", pair=IN(1.2e-3), SEP="0.006")
+L("D25_adapt_reset_yes_then_set_density", "D24 with reset yes (the diameter back to 6 mm after run 1; set density: the 6 mm mass; 0.413?)",
+  "neighbor 0.003 bin\nvariable d equal 0.008\nfix ad lv2 adapt 0 atom diameter v_d mass no reset yes\nrun 100\nunfix ad\nset atom 2 density 2500\nrun 3000\n", pair=IN(1.2e-3))
+L("D26_adapt_reset_no_mass_yes_then_write_data", "fix adapt lv2 8 mm (mass yes, reset no); run 100; unfix; write_data d.data; clear; read_data d.data; run 3000 (8 mm 2500: 0.386)",
+  "neighbor 0.003 bin\nvariable d equal 0.008\nfix ad lv2 adapt 0 atom diameter v_d reset no\nrun 100\nunfix ad\nwrite_data d.data\nclear\n" + m7.m6.MDH.format(f="d.data") + "neighbor 0.003 bin\nrun 3000\n",
+  pair=IN(1.2e-3), SEP="0.006")
 L("D21_addforce_lv1", "fix addforce lv1 0.05 0 0 (a push toward lv2 through the contact)", "fix af lv1 addforce 0.05 0.0 0.0\nrun 3000\n")
 L("D22_exclude_in_every", "run 2000 every 1000 \"neigh_modify exclude type 1 2\" (exclusion after part 1; meets in part 2: passes)",
   "run 2000 every 1000 \"neigh_modify exclude type 1 2\"\n", pair=IN(G(2)), live="part 2")
@@ -295,6 +304,27 @@ L("W08_floor_wiggle", "WALL: floor wiggle z 1e-6 0.01 (a tiny motion)", "run 300
 L("W09_floor_gran_hooke_history", "WALL: wall/gran hooke/history 5000 NULL 3000 NULL 0.3 0 (the old style)", "run 3000\n",
   pre=BASE(wall=False, pstyle="pair_style gran/hooke/history 2000 NULL 3000 NULL 0.3 0\n", coeff="pair_coeff * *\n") +
   "fix floor all wall/gran hooke/history 5000 NULL 3000 NULL 0.3 0 zplane 0 NULL\n", pair=WALLP(), **WALL)
+
+L("W10_region_harmonic_near_floor", "WALL: fix wall/region on a region filling the box, harmonic eps 20 cutoff 2.5 mm (a soft push within 2.5 mm of the floor the granular floor stands on)",
+  "region cage block 0 0.04 0 0.04 0 0.1 units box\nfix soft all wall/region cage harmonic 20.0 0.0 0.0025\nrun 3000\n", pre=BASE(), pair=WALLP(), **WALL)
+L("W11_region_harmonic_near_floor_weak", "WALL: W10 with eps 0.02 (a weak push: about the floor's own)",
+  "region cage block 0 0.04 0 0.04 0 0.1 units box\nfix soft all wall/region cage harmonic 0.02 0.0 0.0025\nrun 3000\n", pre=BASE(), pair=WALLP(), **WALL)
+L("W12_region_lj93_near_floor", "WALL: fix wall/region cage lj93 1e-4 0.001 0.0025 (an LJ 9-3 container wall at the floor)",
+  "region cage block 0 0.04 0 0.04 0 0.1 units box\nfix soft all wall/region cage lj93 1e-4 0.001 0.0025\nrun 3000\n", pre=BASE(), pair=WALLP(), **WALL)
+L("W13_wall_harmonic_zlo", "WALL: fix wall/harmonic zlo EDGE 20.0 0.0 0.0025 (the same push from a plain wall fix)",
+  "fix soft all wall/harmonic zlo EDGE 20.0 0.0 0.0025\nrun 3000\n", pre=BASE(), pair=WALLP(), **WALL)
+L("W14_region_harmonic_pair_near_face", "the pair beside a region face: region block x < 0.0265 (lv2's centre 3.45 mm inside), harmonic eps 5 cutoff 5 mm on lv2",
+  "region cage block 0 0.0265 0 0.04 0 0.1 units box\nfix soft all wall/region cage harmonic 5.0 0.0 0.005\nrun 3000\n")
+L("W15_region_cylinder_lj93_pair", "the pair inside a z cylinder region (r 6 mm about lv2's centre... about 0.0205 0.02), fix wall/region lj93 1e-4 0.001 0.0025",
+  "region cyl cylinder z 0.0205 0.02 0.006 0 0.1 units box\nfix soft all wall/region cyl lj93 1e-4 0.001 0.0025\nrun 3000\n")
+L("W17_region_cylinder_lj93_pair_near", "the pair inside a z cylinder region of radius 4.5 mm about 0.0205 0.02 (each centre 1.95 mm from its face), fix wall/region lj93 1e-4 0.001 0.0025",
+  "region cyl cylinder z 0.0205 0.02 0.0045 0 0.1 units box\nfix soft all wall/region cyl lj93 1e-4 0.001 0.0025\nrun 3000\n")
+L("W18_region_sphere_out_obstacle_floor", "WALL: a spherical obstacle region side out (centre 0.02 0.02 -0.0475, r 0.048: its top 0.5 mm above the floor under lv1), fix wall/region harmonic 20 0 0.002",
+  "region obs sphere 0.02 0.02 -0.0475 0.048 side out units box\nfix soft all wall/region obs harmonic 20.0 0.0 0.002\nrun 3000\n", pre=BASE(), pair=WALLP(), **WALL)
+LG("W19_lig_region_lj93_pair", "LIGGGHTS: the pair inside a z cylinder region of radius 4.5 mm about its contact point, fix wall/region lj93 1e-4 0.001 0.0025 (e 0.5)",
+   "region cyl cylinder z -0.0005 0 0.0045 -0.01 0.15 units box\nfix soft all wall/region cyl lj93 1e-4 0.001 0.0025\nrun 3000\n")
+LG("W16_lig_region_lj93_near_floor", "LIGGGHTS WALL: primitive floor (type 3, e 0.7) and fix wall/region lj93 on a box-filling region near it",
+   "region cage block -0.05 0.05 -0.05 0.05 0.0 0.15 units box\nfix soft all wall/region cage lj93 1e-4 0.001 0.0025\nrun 3000\n", pair=LWALL(1e-4), **LW)
 
 # ================================================================ S: sizes
 POUR = lambda spec, t=1: ("region pr block 0.005 0.035 0.005 0.035 0.08 0.095 units box\n"
@@ -434,13 +464,13 @@ LG("X28_lig_setforce_lv2", "LIGGGHTS fix setforce lv2 0 0 0 (lv2 at rest, lv1 1 
    pair=LIN(0.1e-3).replace(f"velocity lv1 set {V1:.10f} 0 0", "velocity lv1 set 1.0 0 0").replace(f"velocity lv2 set {V2:.10f} 0 0", "velocity lv2 set 0 0 0"))
 
 # ================================================================ Y: fixes that act during the runs the audit skips
-L("Y01_fix_set_density_every_step", "fix fs all set 1 0 atom 2 density 5000 (a set command every step of the run: lv2 5000: 0.390)",
-  "fix fs all set 1 0 atom 2 density 5000\nrun 3000\n")
+L("Y01_fix_set_density_every_step", "fix fs all set 1 0 atom 2 density 5000 (v_rho an atom variable 5000: a set command every step of the run: lv2 5000: 0.390)",
+  "variable rho atom 5000\nfix fs all set 1 0 atom 2 density v_rho\nrun 3000\n")
 L("Y02_fix_set_type_density_100", "fix fs all set 50 0 type 2 density 5000 (every 50 steps, before the pair meets at step 100: 0.390)",
-  "fix fs all set 50 0 type 2 density 5000\nrun 3000\n")
+  "variable rho atom 5000\nfix fs all set 50 0 type 2 density v_rho\nrun 3000\n")
 L("Y03_fix_set_type_change", "3 types: fix fs all set 50 0 atom 2 type 3 (lv2 made type 3 at step 50; 1 3 kn 4000: 0.542)",
-  "fix fs all set 50 0 atom 2 type 3\n" + PCk("1 3", 4000) + "run 3000\n", pre=B3, PAIR="types 1 3")
-L("Y04_fix_set_mass", "fix fs all set 1 0 atom 2 mass 5.65487e-4 (lv2's mass doubled in the run: 0.390)", "fix fs all set 1 0 atom 2 mass 5.65487e-4\nrun 3000\n")
+  "variable t3 atom 3\nfix fs all set 50 0 atom 2 type v_t3\n" + PCk("1 3", 4000) + "run 3000\n", pre=B3, PAIR="types 1 3")
+L("Y04_fix_set_mass", "fix fs all set 1 0 atom 2 mass 5.65487e-4 (lv2's mass doubled in the run: 0.390)", "variable m2 atom 5.65487e-4\nfix fs all set 1 0 atom 2 mass v_m2\nrun 3000\n")
 L("Y05_damping_cundall", "fix damping/cundall all 0.3 0.3 (Cundall's global damping)", "fix dc all damping/cundall 0.3 0.3\nrun 3000\n")
 L("Y06_drag_point", "fix drag all 0.02 0.02 0.05 1e-3 0.0 (a drag toward a point)", "fix dr all drag 0.02 0.02 0.05 1e-3 0.0\nrun 3000\n")
 L("Y07_propel_self_velocity", "fix propel/self velocity 0.01 (a force along each atom's velocity)", "fix ps all propel/self velocity 0.01\nrun 3000\n")
@@ -451,15 +481,68 @@ L("Y11_spring_rg", "fix spring/rg all 100 0.0 (pulls the pair together)", "fix s
 L("Y12_flow_gauss_x", "fix flow/gauss all 1 0 0 (the pair's net x force is zero anyway: 0.413)", "fix fg all flow/gauss 1 0 0\nrun 3000\n")
 L("Y13_heat_remove", "fix heat all heat 1 -1e-9 (kinetic energy taken every step)", "fix ht all heat 1 -1e-9\nrun 3000\n")
 L("Y14_addtorque", "fix addtorque all 0 0 1e-9 (a torque: head-on normal as ever: 0.413)", "fix at all addtorque 0.0 0.0 1e-9\nrun 3000\n")
-L("Y15_viscosity_swap", "fix viscosity 1 x z 5 (momentum swaps between slabs)", "fix vs all viscosity 1 x z 5\nrun 3000\n")
+L("Y15_viscosity_swap", "fix viscosity 1 x z 5 (momentum swaps between slabs)", "fix vs all viscosity 1 x z 20\nrun 3000\n")
 L("Y16_adapt_diameter_growing", "fix adapt lv2 diameter 0.006+2e-6*step (mass yes: lv2 grows through the contact)",
   "neighbor 0.003 bin\nvariable d equal 0.006+2e-6*step\nfix ad lv2 adapt 1 atom diameter v_d\nrun 3000\n", pair=IN(0.3e-3))
 L("Y17_nve_bpm_sphere", "unfix integ; fix integ all nve/bpm/sphere (the BPM integrator on plain spheres: 0.413?)", "unfix integ\nfix integ all nve/bpm/sphere\nrun 3000\n")
 L("Y18_brownian_sphere", "unfix integ; fix integ all brownian/sphere 1e-20 48279 gamma_t 1e-3 gamma_r 1e-3 (an overdamped integrator)",
   "unfix integ\nfix integ all brownian/sphere 1e-20 48279 gamma_t 1e-3 gamma_r 1e-3\nrun 3000\n")
-L("Y19_fix_set_in_include", "include s.in (fix fs all set 1 0 atom 2 density 5000): 0.390", "include s.in\nrun 3000\n", data={"s.in": "fix fs all set 1 0 atom 2 density 5000\n"})
-L("Y20_fix_set_diameter_only", "fix fs all set 1 0 atom 2 diameter 0.006 (no change: 0.413)", "fix fs all set 1 0 atom 2 diameter 0.006\nrun 3000\n")
+L("Y19_fix_set_in_include", "include s.in (fix fs all set 1 0 atom 2 density 5000): 0.390", "include s.in\nrun 3000\n", data={"s.in": "variable rho atom 5000\nfix fs all set 1 0 atom 2 density v_rho\n"})
+L("Y20_fix_set_diameter_only", "fix fs all set 1 0 atom 2 diameter 0.006 (no change: 0.413)", "variable d atom 0.006\nfix fs all set 1 0 atom 2 diameter v_d\nrun 3000\n")
 LG("Y21_lig_hooke_stiffness_fix_viscous_zero", "LIGGGHTS hooke/stiffness with fix viscous 0 (control)", "fix visc all viscous 0.0\nrun 3000\n", pre=m7.m6.LHS)
+
+# ================================================================ Z: 2d decks; LIGGGHTS matrices of another size
+Z2 = lambda extra="": ("units si\ndimension 2\natom_style sphere 1\nboundary p p p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 -0.001 0.001 units box\ncreate_box 2 box\n"
+                       "pair_style granular\npair_coeff * * " + HK + "\nfix grav all gravity 9.81 vector 0 -1 0\nfix integ all nve/sphere\nfix e2 all enforce2d\ntimestep 1e-6\n" + extra)
+P2 = lambda how="density": (f"create_atoms 1 single 0.017950 0.02 0.0\ncreate_atoms 2 single 0.023050 0.02 0.0\nset atom 1 diameter 0.004 {how} 2500\n"
+                            f"set atom 2 diameter 0.006 {how} 2500\ngroup lv1 id 1\ngroup lv2 id 2\n" + VEL)
+L("Z01_2d_density_sphere_mass", "dimension 2, set density (LAMMPS takes the sphere's volume: the 3d masses: 0.413)", "run 3000\n", pre=Z2(), pair=P2("density"))
+L("Z02_2d_density_disc", "dimension 2, set density/disc (disc masses pi r^2 rho: ratio 4:9)", "run 3000\n", pre=Z2(), pair=P2("density/disc"))
+L("Z03_2d_disc_then_type_density", "dimension 2, set density/disc for both, then set type 2 density 5000 (3d volume for lv2)", "set type 2 density 5000\nrun 3000\n", pre=Z2(), pair=P2("density/disc"))
+L("Z04_2d_nve_sphere_disc", "dimension 2, fix nve/sphere disc, density/disc (0.? as Z02)", "run 3000\n", pre=Z2().replace("fix integ all nve/sphere\n", "fix integ all nve/sphere disc\n"), pair=P2("density/disc"))
+LG("G40_lig_matrix_4_for_3_types", "LIGGGHTS 3 types, coefficientRestitution peratomtypepair 4 (16 numbers; 1 2 entry 0.8)", "run 3000\n",
+   pre=LB().replace("coefficientRestitution peratomtypepair 3 0.6 0.5 0.7 0.5 0.4 0.45 0.7 0.45 0.8", "coefficientRestitution peratomtypepair 4 0.6 0.8 0.7 0.9 0.8 0.4 0.45 0.9 0.7 0.45 0.8 0.9 0.9 0.9 0.9 0.9"))
+LG("G41_lig_youngs_4_for_3_types", "LIGGGHTS 3 types, youngsModulus peratomtype with 4 values (e 0.5)", "run 3000\n",
+   pre=LB().replace("youngsModulus peratomtype 5e6 5e6 5e6", "youngsModulus peratomtype 5e6 5e6 5e6 5e6"))
+
+# ================================================================ N: neighbour lists built late or once; integrators by group
+L("N01_skin_small_every_1000_nocheck", "neighbor 1e-5 bin; neigh_modify every 1000 delay 0 check no (gap 0.5 mm: the pair is listed only at step 1000, deep in overlap)",
+  "neighbor 1e-5 bin\nneigh_modify every 1000 delay 0 check no\nrun 3000\n", pair=IN(0.5e-3))
+L("N02_once_yes_far", "neigh_modify once yes (the list built at the run's start only; gap 2.1 mm > the skin 1 mm: never listed: the pair passes)",
+  "neigh_modify once yes\nrun 4000\n", pair=IN(G(3)))
+L("N03_once_yes_near", "neigh_modify once yes, gap 0.1 mm within the skin (listed: 0.413)", "neigh_modify once yes\nrun 3000\n")
+L("N04_skin_02_every_1000_check", "neighbor 2e-4 bin; neigh_modify every 1000 delay 0 check yes (gap 0.5 mm: first checked at step 1000)",
+  "neighbor 2e-4 bin\nneigh_modify every 1000 delay 0 check yes\nrun 3000\n", pair=IN(0.5e-3))
+L("N05_delay_1000", "neighbor 2e-4 bin; neigh_modify delay 1000 every 1 check yes (gap 0.5 mm)", "neighbor 2e-4 bin\nneigh_modify delay 1000 every 1 check yes\nrun 3000\n", pair=IN(0.5e-3))
+L("N06_zero_skin_every_step", "neighbor 0.0 bin; neigh_modify every 1 delay 0 check yes (0.413)", "neighbor 0.0 bin\nneigh_modify every 1 delay 0 check yes\nrun 3000\n")
+LG("N07_lig_skin_small_every_1000", "LIGGGHTS neighbor 1e-5 bin; neigh_modify every 1000 delay 0 check no (gap 0.5 mm)",
+   "neighbor 1e-5 bin\nneigh_modify every 1000 delay 0 check no\nrun 3000\n", pair=LIN(0.5e-3))
+L("N08_two_integrators_by_group", "unfix integ; fix i1 lv1 nve/sphere; fix i2 lv2 nve/sphere (both move: 0.413)", "unfix integ\nfix i1 lv1 nve/sphere\nfix i2 lv2 nve/sphere\nrun 3000\n")
+L("N09_integrators_by_type_groups", "unfix integ; group t1 type 1; group t2 type 2; fix i1 t1 nve/sphere; fix i2 t2 nve/sphere (0.413)",
+  "unfix integ\ngroup t1 type 1\ngroup t2 type 2\nfix i1 t1 nve/sphere\nfix i2 t2 nve/sphere\nrun 3000\n")
+L("N10_skin_small_every_1000_np2", "N01 on 1 and 2 processes (processors * 1 1, f f f)", "neighbor 1e-5 bin\nneigh_modify every 1000 delay 0 check no\nrun 3000\n",
+  pre=BASE(boundary="f f f", head="processors * 1 1\n", wall=False), pair=IN(0.5e-3), NP="1 2")
+
+LHSX = m7.m6.LHS
+LG("G42_lig_hooke_stiffness_absolute_damping", "LIGGGHTS hooke/stiffness absolute_damping on (gamman not scaled by the mass)", "run 3000\n",
+   pre=LHSX.replace("pair_style gran model hooke/stiffness tangential history\n", "pair_style gran model hooke/stiffness tangential history absolute_damping on\n"))
+LG("G43_lig_hertz_stiffness", "LIGGGHTS hertz/stiffness (kn gamman kt gammat as hooke/stiffness's; a soft contact of 12 ms: run 30000)", "run 30000\n",
+   pre=LHSX.replace("model hooke/stiffness", "model hertz/stiffness"))
+LG("G44_lig_cohesion_sjkr2_zero", "LIGGGHTS cohesion sjkr2 with cohesionEnergyDensity 0 (e 0.5)", "run 3000\n",
+   pre=LB(extra="fix m9 all property/global cohesionEnergyDensity peratomtypepair 3 0 0 0 0 0 0 0 0 0\n").replace(
+       "pair_style gran model hertz tangential history\n", "pair_style gran model hertz tangential history cohesion sjkr2\n"))
+LG("G45_lig_hooke_charvel_2", "LIGGGHTS hooke, characteristicVelocity 2.0, e 1 2 0.5 (the linear spring keeps e: 0.5)", "run 3000\n",
+   pre=LB(model="hooke", extra="fix m9 all property/global characteristicVelocity scalar 2.0\n"))
+LG("G46_lig_hooke_stiffness_limitforce", "LIGGGHTS hooke/stiffness limitForce on", "run 3000\n",
+   pre=LHSX.replace("pair_style gran model hooke/stiffness tangential history\n", "pair_style gran model hooke/stiffness tangential history limitForce on\n"))
+LG("G47_lig_hooke_stiffness_absolute_damping_density", "LIGGGHTS hooke/stiffness absolute_damping on, lv2 density 5000", "set atom 2 density 5000\nrun 3000\n",
+   pre=LHSX.replace("pair_style gran model hooke/stiffness tangential history\n", "pair_style gran model hooke/stiffness tangential history absolute_damping on\n"))
+LG("G48_lig_set_type_pair_13", "LIGGGHTS set atom 2 type 3 (the pair 1 3: e 0.7)", "set atom 2 type 3\nrun 3000\n", PAIR="types 1 3")
+LG("G49_lig_hooke_disable_bonded", "LIGGGHTS hooke disableNormalWhenBonded on (no bond model: e 0.5)", "run 3000\n",
+   pre=LB(model="hooke", extra="fix m9 all property/global characteristicVelocity scalar 1.0\n").replace(
+       "pair_style gran model hooke tangential history\n", "pair_style gran model hooke tangential history disableNormalWhenBonded on\n"))
+LG("G50_lig_hertz_tangential_no_history", "LIGGGHTS hertz tangential no_history (e 0.5)", "run 3000\n",
+   pre=LB().replace("model hertz tangential history", "model hertz tangential no_history"))
 
 # ================================================================ C: controls
 L("C01_plain_2000", "control: kn 2000 (0.413435)", "run 3000\n")
@@ -470,7 +553,7 @@ LG("C05_lig_05", "control: LIGGGHTS e 0.5 (0.499928)", "run 3000\n")
 LG("C06_lig_08", "control: LIGGGHTS e 0.8 (0.800005)", LEe(0.8) + "run 3000\n")
 LG("C07_lig_wall", "control: LIGGGHTS WALL primitive type 3 (e 1 3 0.7)", "run 3000\n", pair=LWALL(1e-4), **LW)
 
-NP2 = ["C01", "C05", "D01", "D12", "H04", "Q01", "G22", "G24"]   # also on 2 processes
+NP2 = ["C01", "C05", "D01", "D12", "H04", "Q01", "G22", "G24", "N10"]   # also on 2 processes
 if __name__ == "__main__":
     names = sys.argv[1:]
     m7.write(names)
