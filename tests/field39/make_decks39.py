@@ -323,6 +323,8 @@ L("W18_region_sphere_out_obstacle_floor", "WALL: a spherical obstacle region sid
   "region obs sphere 0.02 0.02 -0.0475 0.048 side out units box\nfix soft all wall/region obs harmonic 20.0 0.0 0.002\nrun 3000\n", pre=BASE(), pair=WALLP(), **WALL)
 LG("W19_lig_region_lj93_pair", "LIGGGHTS: the pair inside a z cylinder region of radius 4.5 mm about its contact point, fix wall/region lj93 1e-4 0.001 0.0025 (e 0.5)",
    "region cyl cylinder z -0.0005 0 0.0045 -0.01 0.15 units box\nfix soft all wall/region cyl lj93 1e-4 0.001 0.0025\nrun 3000\n")
+L("W20_region_harmonic_floor_minimal", "WALL (minimal): lv1 starts 1 mm above the floor (above the 2.5 mm reach of the region wall's push); fix wall/region on the box's block, harmonic 20 0 0.0025",
+  "region cage block 0 0.04 0 0.04 0 0.1 units box\nfix soft all wall/region cage harmonic 20.0 0.0 0.0025\nrun 4000\n", pre=BASE(), pair=WALLP(1e-3), **WALL)
 LG("W16_lig_region_lj93_near_floor", "LIGGGHTS WALL: primitive floor (type 3, e 0.7) and fix wall/region lj93 on a box-filling region near it",
    "region cage block -0.05 0.05 -0.05 0.05 0.0 0.15 units box\nfix soft all wall/region cage lj93 1e-4 0.001 0.0025\nrun 3000\n", pair=LWALL(1e-4), **LW)
 
