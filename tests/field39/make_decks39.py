@@ -58,6 +58,18 @@ L("K14_label_range_mixed_swap", "3 types, labelmap atom 1 s 2 b 3 r; lv2 of type
 L("K15_label_then_relabel", "labelmap atom 2 b; pair_coeff 1 b kn 5000; labelmap atom 2 c (a second label for 2? or rename); pair_coeff 1 c kn 3000 (3000 if accepted)",
   "labelmap atom 2 b\n" + PCk("1 b", 5000) + "labelmap atom 2 c\n" + PCk("1 c", 3000) + "run 3000\n")
 
+PCm = lambda model: "pair_coeff 1 2 " + model + "\n"
+L("K21_default_damping", "pair_coeff 1 2 hooke 2000 3000 tangential ... (no damping keyword: viscoelastic, LAMMPS' default)", PCm("hooke 2000 3000 tangential linear_nohistory 1 0.3") + "run 3000\n")
+L("K22_damping_velocity", "pair_coeff 1 2 hooke 2000 0.2 damping velocity (a force 0.2 v, no mass)", PCm("hooke 2000 0.2 damping velocity tangential linear_nohistory 1 0.3") + "run 3000\n")
+L("K23_hooke_tsuji", "pair_coeff 1 2 hooke 2000 0.5 damping tsuji (the damping from e 0.5)", PCm("hooke 2000 0.5 damping tsuji tangential linear_nohistory 1 0.3") + "run 3000\n")
+L("K24_hooke_coeff_restitution", "pair_coeff 1 2 hooke 2000 0.5 damping coeff_restitution (e 0.5)", PCm("hooke 2000 0.5 damping coeff_restitution tangential linear_nohistory 1 0.3") + "run 3000\n")
+L("K25_hertz_material_tsuji", "pair_coeff 1 2 hertz/material 1e7 0.5 0.3 damping tsuji", PCm("hertz/material 1e7 0.5 0.3 damping tsuji tangential linear_nohistory 1 0.3") + "run 3000\n")
+L("K26_hertz_mass_velocity", "pair_coeff 1 2 hertz 1e6 3000 damping mass_velocity", PCm("hertz 1e6 3000 damping mass_velocity tangential linear_nohistory 1 0.3") + "run 3000\n")
+L("K27_damping_before_tangential_order", "pair_coeff 1 2 hooke 5000 3000 tangential ... damping mass_velocity (damping given last: 5000)", PCm("hooke 5000 3000 tangential linear_nohistory 1 0.3 damping mass_velocity") + "run 3000\n")
+L("K28_dmt", "pair_coeff 1 2 dmt 1e7 0.5 0.3 0.0 damping tsuji (an adhesion 0: as hertz/material?)", PCm("dmt 1e7 0.5 0.3 0.0 damping tsuji tangential linear_nohistory 1 0.3") + "run 3000\n")
+L("K29_limit_damping_pair", "pair_coeff 1 2 hooke 2000 3000 damping mass_velocity ... limit_damping", PCm("hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 limit_damping") + "run 3000\n")
+L("K30_gran_hertz_history", "pair_style gran/hertz/history 2e6 NULL 3000 NULL 0.3 0", "run 3000\n",
+  pre=BASE(wall=False, pstyle="pair_style gran/hertz/history 2e6 NULL 3000 NULL 0.3 0\n", coeff="pair_coeff * *\n"))
 L("K16_star_then_ii_jj", "pair_coeff * * kn 2000; pair_coeff 1 1 kn 5000; pair_coeff 2 2 kn 5000 (1 2 set by * *: 2000)", PCk("1 1", 5000) + PCk("2 2", 5000) + "run 3000\n")
 L("K17_ii_jj_only_mixed", "pair_style granular with only 1 1 kn 2000 and 2 2 kn 5000 given (1 2 mixed)", "run 3000\n",
   pre=BASE(wall=False, coeff="pair_coeff 1 1 " + HK + "\npair_coeff 2 2 " + HK5 + "\n"))
@@ -546,6 +558,24 @@ LG("G49_lig_hooke_disable_bonded", "LIGGGHTS hooke disableNormalWhenBonded on (n
 LG("G50_lig_hertz_tangential_no_history", "LIGGGHTS hertz tangential no_history (e 0.5)", "run 3000\n",
    pre=LB().replace("model hertz tangential history", "model hertz tangential no_history"))
 
+# ================================================================ E: a run's every shorter than a contact (the contact spans parts)
+L("E01_every_200_kn_ramp", "run 2000 every 200 \"pc $(2000+2*step)\" (kn 2000, 2400, 2800, 3200 ...): the pair meets at step 100 in part 1; its contact (586 steps at kn 2000) spans parts 1-4",
+  "run 2000 every 200 \"" + PCs("$(2000+2*step)") + "\"\n", live="part 1 (and 2-4)")
+L("E02_every_200_density_ramp", "run 2000 every 200 \"set atom 2 density $(2500+5*step)\": lv2 heavier every 200 steps through the contact",
+  "run 2000 every 200 \"set atom 2 density $(2500+5*step)\"\n", live="part 1 (and 2-4)")
+L("E03_every_250_velocity_reset", "run 2000 every 250 \"velocity lv2 set V2 0 0\": lv2's velocity set back to its approach value at step 250, within the contact",
+  "run 2000 every 250 \"velocity lv2 set " + f"{V2:.10f}" + " 0 0 units box\"\n", live="part 1 (and 2-3)")
+L("E04_every_1000_kn_control", "run 4000 every 1000 \"pc $(2000+step)\" with the pair meeting at step 1100 (part 2, kn 3000, the contact inside it: 0.491)",
+  "run 4000 every 1000 \"" + PCs("$(2000+step)") + "\"\n", pair=IN(G(2)), live="part 2")
+L("E05_every_100_kn_small_ramp", "run 3000 every 100 \"pc $(2000+step)\": kn 2000 + the step, changed every 100 steps (the contact from step 100 to about 650)",
+  "run 3000 every 100 \"" + PCs("$(2000+step)") + "\"\n", live="part 1 (and 2-6)")
+L("E07_loop_runs_200_kn_ramp", "a loop of 10 runs of 200 steps, pc $(2000+400*(v_i-1)) before each: the contact from step 100 spans passes 1-4",
+  "variable i loop 10\nlabel lp\n" + PCs("$(2000+400*(v_i-1))") + "\nrun 200\nnext i\njump SELF lp\n", live="pass 1 (and 2-4)")
+L("E08_two_runs_split_contact", "run 300 (the pair meets at step 100); pc 5000; run 2000: the contact (586 steps at kn 2000) ends under kn 5000",
+  "run 300\n" + PC5 + "run 2000\n", live="run 1 (and run 2)")
+LG("E06_lig_every_200_e_ramp", "LIGGGHTS run 2000 every 200 \"fix m3 ... e $(0.5+0.0002*step)\" (e 0.5, 0.54, 0.58 ...): the contact (675 steps) spans parts",
+   "run 2000 every 200 \"" + LE.format(e="$(0.5+0.0002*step)") + "\"\n", live="part 1 (and 2-4)")
+
 # ================================================================ C: controls
 L("C01_plain_2000", "control: kn 2000 (0.413435)", "run 3000\n")
 L("C02_plain_5000", "control: pc 5000 (0.578975)", PC5 + "run 3000\n")
@@ -555,7 +585,7 @@ LG("C05_lig_05", "control: LIGGGHTS e 0.5 (0.499928)", "run 3000\n")
 LG("C06_lig_08", "control: LIGGGHTS e 0.8 (0.800005)", LEe(0.8) + "run 3000\n")
 LG("C07_lig_wall", "control: LIGGGHTS WALL primitive type 3 (e 1 3 0.7)", "run 3000\n", pair=LWALL(1e-4), **LW)
 
-NP2 = ["C01", "C05", "D01", "D12", "H04", "Q01", "G22", "G24", "N10"]   # also on 2 processes
+NP2 = ["C01", "C05", "D01", "D12", "H04", "Q01", "G22", "G24", "N10", "W20", "E01", "W14", "W16"]   # also on 2 processes
 if __name__ == "__main__":
     names = sys.argv[1:]
     m7.write(names)
