@@ -585,7 +585,7 @@ LG("C05_lig_05", "control: LIGGGHTS e 0.5 (0.499928)", "run 3000\n")
 LG("C06_lig_08", "control: LIGGGHTS e 0.8 (0.800005)", LEe(0.8) + "run 3000\n")
 LG("C07_lig_wall", "control: LIGGGHTS WALL primitive type 3 (e 1 3 0.7)", "run 3000\n", pair=LWALL(1e-4), **LW)
 
-NP2 = ["C01", "C05", "D01", "D12", "H04", "Q01", "G22", "G24", "N10", "W20", "E01", "W14", "W16"]   # also on 2 processes
+NP2 = ["C01", "C05", "D01", "D12", "H04", "Q01", "G22", "G24", "N10", "W20", "E01", "W14", "W16", "E08"]   # also on 2 processes
 if __name__ == "__main__":
     names = sys.argv[1:]
     m7.write(names)
