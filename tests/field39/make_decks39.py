@@ -576,6 +576,36 @@ L("E08_two_runs_split_contact", "run 300 (the pair meets at step 100); pc 5000; 
 LG("E06_lig_every_200_e_ramp", "LIGGGHTS run 2000 every 200 \"fix m3 ... e $(0.5+0.0002*step)\" (e 0.5, 0.54, 0.58 ...): the contact (675 steps) spans parts",
    "run 2000 every 200 \"" + LE.format(e="$(0.5+0.0002*step)") + "\"\n", live="part 1 (and 2-4)")
 
+# ================================================================ checks behind FINDINGS' "what held" (run by hand first)
+BOND = lambda tail: (RB.replace("atom_style sphere 1", "atom_style hybrid sphere 1 bond").replace("create_box 2 box", "create_box 2 box bond/types 1 extra/bond/per/atom 1 extra/special/per/atom 1")
+                     + IN(0.1e-3) + tail)
+m7.DECKS["D27_bond_zero_excludes"] = ("# create_bonds single/bond 1 1 2 with bond_style zero (special lj 0: the bonded pair gets no contact: passes)\n" +
+    BOND("bond_style zero\nbond_coeff 1 0.005\ncreate_bonds single/bond 1 1 2\nrun 3000\n"), "last run", {}, {})
+m7.DECKS["D28_bond_harmonic"] = ("# create_bonds with a harmonic bond (no contact; the bond's spring)\n" +
+    BOND("bond_style harmonic\nbond_coeff 1 5.0 0.0051\ncreate_bonds single/bond 1 1 2\nrun 3000\n"), "last run", {}, {})
+m7.DECKS["D29_bond_zero_special_111"] = ("# bond_style zero with special_bonds lj 1 1 1 (the bonded pair keeps its contact: 0.413)\n" +
+    BOND("bond_style zero\nbond_coeff 1 0.005\nspecial_bonds lj 1.0 1.0 1.0\ncreate_bonds single/bond 1 1 2\nrun 3000\n"), "last run", {}, {})
+L("D30_exclude_molecule_intra", "fix property/atom mol; both atoms mol 7; neigh_modify exclude molecule/intra all (no contact)",
+  "fix pa all property/atom mol\nset atom 1*2 mol 7\nneigh_modify exclude molecule/intra all\nrun 3000\n")
+L("D31_exclude_molecule_inter", "fix property/atom mol ghost yes; mol 7 and 8; neigh_modify exclude molecule/inter all (no contact)",
+  "fix pa all property/atom mol ghost yes\nset atom 1 mol 7\nset atom 2 mol 8\nneigh_modify exclude molecule/inter all\nrun 3000\n")
+L("X34_nve_noforce_by_type", "unfix integ; type groups; nve/sphere on type 1, nve/noforce on type 2 (lv2 at its velocity through the contact)",
+  "unfix integ\ngroup t1 type 1\ngroup t2 type 2\nfix i1 t1 nve/sphere\nfix i2 t2 nve/noforce\nrun 3000\n")
+L("X35_move_by_type", "unfix integ; type groups; nve/sphere on type 1, fix move linear at lv2's velocity on type 2",
+  "unfix integ\ngroup t1 type 1\ngroup t2 type 2\nfix i1 t1 nve/sphere\nfix i2 t2 move linear " + f"{V2:.10f}" + " 0 0 units box\nrun 3000\n")
+m7.DECKS["X36_freeze_falling_periodic"] = ("# a periodic box with a plane region floor at z 0.05: fix freeze on the falling sphere's type (it keeps -1 m/s, goes through the floor)\n"
+  "units si\natom_style sphere 1\nboundary p p p\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.1 units box\ncreate_box 2 box\npair_style granular\n"
+  "pair_coeff * * " + HK + "\nregion flr plane 0 0 0.05 0 0 1 side in units box\nfix floor all wall/gran/region granular " + HK + " region flr\n"
+  "fix integ all nve/sphere\ntimestep 1e-6\ncreate_atoms 1 single 0.02 0.02 0.0521\nset atom 1 diameter 0.004 density 2500\ngroup lv1 id 1\n"
+  "velocity lv1 set 0 0 -1.0 units box\ngroup t1 type 1\nfix fz t1 freeze\nrun 3000\n", "last run", {}, {"PAIR": "type 1 on wall floor", "WALLX": ""})
+CYL = lambda R: ("units si\natom_style sphere 1\nboundary p p f\ncomm_modify vel yes\nregion box block 0 0.04 0 0.04 0 0.1 units box\ncreate_box 2 box\npair_style granular\n"
+                 "pair_coeff * * hertz/material 1e7 2.0 0.3 damping viscoelastic tangential linear_nohistory 1 0.3\nregion cyl cylinder z 0.02 0.02 " + str(R) + " 0 0.1 side in units box\n"
+                 "fix cw all wall/gran/region granular hertz/material 1e7 2.0 0.3 damping viscoelastic tangential linear_nohistory 1 0.3 region cyl\nfix integ all nve/sphere\ntimestep 1e-7\n"
+                 "create_atoms 1 single " + f"{0.02 + R - 0.0021:.6f}" + " 0.02 0.05\nset atom 1 diameter 0.004 density 2500\ngroup lv1 id 1\nvelocity lv1 set 1.0 0 0 units box\nrun 20000\n")
+for nm, R in (("W21_cylinder_hertz_material_r15", 0.015), ("W22_cylinder_hertz_material_r3p5", 0.0035)):
+    m7.DECKS[nm] = ("# WALLX: a hertz/material viscoelastic sphere into the inside of a cylinder region wall of radius " + str(R) + " (the curvature in the law)\n" + CYL(R),
+                    "last run", {}, {"PAIR": "type 1 on wall cw", "WALLX": ""})
+
 # ================================================================ C: controls
 L("C01_plain_2000", "control: kn 2000 (0.413435)", "run 3000\n")
 L("C02_plain_5000", "control: pc 5000 (0.578975)", PC5 + "run 3000\n")
