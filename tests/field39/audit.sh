@@ -1,0 +1,3 @@
+#!/bin/sh
+# Field round 39: the field kit's audit (tests/fieldkit/audit.sh) of deck folders. usage (from the worktree): sh tests/field39/audit.sh DECKDIR ...
+ROUND=39 exec sh tests/fieldkit/audit.sh "$@"
