@@ -116,3 +116,25 @@ def test_a_per_process_restart_read_through_links_after_a_write_is_refused(tmp_p
                             "pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
                             "comm_modify vel yes\nfix move all nve/sphere\nrun 3000\n")
     _refused(tmp_path, deck, "read_restart l%.rst): it reads, under another name of the same file")
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("printed", ["print ${kk}", 'print "${kk}" screen no', "print $(v_kk)"])
+def test_a_print_of_a_number_then_an_include_is_audited(tmp_path, printed):
+    """Field round 35, E77, refused since the writers' checks took every word of a skipped print for
+    a file it may write: a print with no file keyword writes none, and a variable that is a number
+    cannot bring one (LAMMPS 0.490898 with kn 3000 from the included file)."""
+    (tmp_path / "pc.in").write_text("pair_coeff 1 2 " + LAW.format(kn="${kk}") + "\n")
+    printed_eps, engine, err = audited_and_measured(BASE + f"variable kk equal 3000\n{printed}\ninclude pc.in\n"
+                                                    "run 40000\n", tmp_path)
+    assert abs(printed_eps - abs(engine)) < 5e-5, (printed_eps, engine, err)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_print_whose_unquoted_string_may_hold_a_file_keyword_stays_refused(tmp_path):
+    """A string variable substituted unquoted is read again as words: here it names the file."""
+    (tmp_path / "pc.in").write_text(f"pair_coeff 1 2 {LAW.format(kn=3000)}\n")
+    _refused(tmp_path, BASE + f"variable s string '\"{NEW}\" file pc.in'\nprint ${{s}}\ninclude pc.in\nrun 40000\n",
+             "print ${s}")

@@ -461,12 +461,16 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
     (True, ((None, 4), 'include "k  k.in"'))
     """
     reached, moved, ran = [], [], []
+    numeric: set = set()           # the variables whose value is a number where a skipped command runs
     for cmd in commands:
         k = _skipped_index(cmd, scratch)
         if k is not None:
-            reached.append(scratch.skipped[k][1:])
+            loc, text = scratch.skipped[k][1:]
+            reached.append((loc, text, _written_words(text, numeric)))
             continue
         split = _split(cmd.text)
+        if split[:1] == ["variable"] and len(split) > 2:
+            (numeric.add if split[2] in _NUMERIC_STYLES else numeric.discard)(split[1])
         if cmd.stage is not None and "every" in split:
             # a run kept whole: the commands its every names never run in the pass (field round 37,
             # F16: run 1000 every 1000 "shell mv new.in pc.in", then include pc.in); a run made
@@ -474,7 +478,7 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
             for quoted in split[split.index("every") + 2:]:
                 first = quoted.split()[:1]
                 if first and (first[0] in SKIPPED_COMMANDS or first[0] in _RAN_WRITERS):
-                    reached.append((cmd.loc, quoted))
+                    reached.append((cmd.loc, quoted, _written_words(quoted, numeric)))
             continue
         if split[:1] == ["shell"] and split[1:2] in (["mv"], ["rm"]):
             moved.append((cmd.loc, cmd.text))
@@ -498,13 +502,57 @@ def written_then_read(commands: list, scratch: Scratch) -> tuple | None:
         # round 36, F09: shell mv new.in pc.in, include pc.in: its pair_coeff unseen, 0.4149
         # printed where LAMMPS ran kn 5000, 0.578975); a file read as data the engine reads itself
         script = split[:1] in (["include"], ["jump"])
-        for loc, text, names in [*((loc, text, {base} | others) for loc, text in reached),
-                                 *((loc, text, {base} | others if script else others) for loc, text in moved),
-                                 *((loc, text, others) for loc, text in ran)]:
+        for loc, text, written, names in [
+                *((loc, text, written, {base} | others) for loc, text, written in reached),
+                *((loc, text, _split(text)[1:], {base} | others if script else others) for loc, text in moved),
+                *((loc, text, _split(text)[1:], others) for loc, text in ran)]:
             for one in names:
-                if any(_may_name(os.path.basename(word), one) for word in _split(text)[1:]):
+                if any(_may_name(os.path.basename(word), one) for word in written):
                     return (loc, text), (cmd.loc, cmd.text), one != base
     return None
+
+
+#: Variable styles whose value, substituted, is one number
+_NUMERIC_STYLES = frozenset({"equal", "internal", "format", "timer"})
+#: A word of a command line as the engine splits it, quotes kept (to tell a quoted argument)
+_RAW_WORD = re.compile(r'"""[\s\S]*?"""|"[^"]*"|\'[^\']*\'|\S+')
+
+
+def _written_words(text: str, numeric: set) -> list:
+    """The words of a skipped command that may name a file it writes: for print and fix print, the
+    value of a file or append keyword (field round 35, E77: ``print ${kk}`` then an include was
+    refused as a write of any file); every word where a variable may bring such a keyword (an
+    unquoted string holding a variable that is not a number, or a variable among the keywords).
+
+    Examples
+    --------
+    >>> _written_words('print "k ${kk}" screen no file out.txt', set()), _written_words("print ${kk}", {"kk"})
+    (['out.txt'], [])
+    >>> _written_words("print ${s}", set()), _written_words("shell cp a.in b.in", set())
+    (['${s}'], ['cp', 'a.in', 'b.in'])
+    >>> _written_words("fix p all print 10 $(step) append log.txt", set())
+    ['log.txt']
+    """
+    split = _split(text)
+    if split[:1] == ["print"]:
+        at = 2
+    elif split[:1] == ["fix"] and split[3:4] == ["print"]:
+        at = 6
+    else:
+        return split[1:]
+    raw = _RAW_WORD.findall(text)
+    string = raw[at - 1] if len(raw) >= at else ""
+    # a variable substituted unquoted may split into several words (an engine re-reads the line),
+    # keywords among them, unless its value is one number
+    unnumbered = _VARIABLE.sub(lambda m: "" if _numeric_ref(m.group(), numeric) else m.group(), string)
+    if "$" in unnumbered and not string.startswith(("'", '"')) or any("$" in w for w in split[at:]):
+        return split[1:]
+    return [split[i + 1] for i in range(at, len(split) - 1) if split[i] in ("file", "append")]
+
+
+def _numeric_ref(ref: str, numeric: set) -> bool:
+    """Whether a variable reference (``${x}``, ``$(...)``, ``$x``) is replaced by one number."""
+    return ref.startswith("$(") or ref.strip("${}") in numeric
 
 
 #: The writers the copy runs, into itself: a read of their file under its own name reads what they
