@@ -102,6 +102,20 @@ def test_shell_cd_up_with_a_link_in_the_folder_is_audited(tmp_path):
 
 @needs_lammps
 @pytest.mark.dem
+def test_a_name_climbing_back_from_a_folder_shell_cd_entered_is_the_decks_own(tmp_path):
+    """Field round 38, A19: shell cd sub, include ../l.in (the deck's own l.in, a link to r.in):
+    refused as a file outside the deck's folder; LAMMPS reads it (0.578975)."""
+    (tmp_path / "sub").mkdir()
+    (tmp_path / "sub" / "keep.txt").write_text("x\n")
+    (tmp_path / "r.in").write_text(NEW + "\n")
+    os.symlink("r.in", tmp_path / "l.in")
+    eps, measured, err = audited_and_measured(BASE + "shell cd sub\ninclude ../l.in\nshell cd ..\nrun 40000\n",
+                                              tmp_path)
+    assert abs(eps - measured) < 5e-5, (eps, measured, err)
+
+
+@needs_lammps
+@pytest.mark.dem
 def test_a_per_process_restart_read_through_links_after_a_write_is_refused(tmp_path):
     """Field round 38, R26: the folder holds lbase.rst -> rbase.rst and l0.rst -> r0.rst; the deck
     writes r%.rst and reads l%.rst. The read's % was not matched to the links' names, and the copy

@@ -194,7 +194,9 @@ class Scratch:
     ``parts`` that run's text as written and its number of parts, by k; ``aliases`` each name in
     the deck's folder that is one file with others there (a link, its target, hard links) -> the
     names of the others: a write under one changes what a read under another reads by hand, where
-    the copy holds them apart (:func:`_materialise_links`)."""
+    the copy holds them apart (:func:`_materialise_links`); ``cd_folders`` the folders in the deck's
+    folder that its ``shell cd`` commands name as written (normalised), from which a name climbing by
+    .. may land in the copy (:func:`_outside`)."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -210,6 +212,7 @@ class Scratch:
     origin: Path | None = None
     restarts: list = field(default_factory=list)
     mirrored: set = field(default_factory=set)
+    cd_folders: set = field(default_factory=set)
     silenced: dict = field(default_factory=dict)
     redirected: dict = field(default_factory=dict)
     absolute: dict = field(default_factory=dict)
@@ -387,19 +390,12 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     src = Path(deck).resolve()
     root = Path(where)
     ignore, left_out = _not_copied(root)
-    total = 0
-    for base, folders, names in os.walk(src.parent):
-        skipped = ignore(base, folders + names)
-        folders[:] = [f for f in folders if f not in skipped]
-        for name in names:
-            p = Path(base, name)
-            if name not in skipped and not p.is_symlink():
-                total += p.stat().st_size
-        if total > MAX_FOLDER_BYTES:
-            raise DeckError("deck", str(src.parent), f"its folder holds more than {MAX_FOLDER_BYTES >> 20} MB, copied "
-                                                     "whole to run the deck safely: put the deck and the files it "
-                                                     "reads in a folder of their own")
-    above, depth = _above(src, total)
+    total = _bytes_copied(src.parent, ignore, MAX_FOLDER_BYTES)
+    if total > MAX_FOLDER_BYTES:
+        raise DeckError("deck", str(src.parent), f"its folder holds more than {MAX_FOLDER_BYTES >> 20} MB, copied "
+                                                 "whole to run the deck safely: put the deck and the files it "
+                                                 "reads in a folder of their own")
+    above, depth = _above(src, total, ignore)
     # a deck that names files above its folder: the copy as deep in the scratch as they reach, and
     # each file named copied at its place relative to it (never the folders' other files)
     copy = root.joinpath("deck", *src.parent.parts[len(src.parent.parts) - depth:])
@@ -438,7 +434,7 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
     # a nonce: a deck cannot write a tag that passes for another line's
     scratch = Scratch(root, copy / src.name, confined=confined, tag=f"#restitution-{secrets.token_hex(4)}@",
                       origin=src.parent, mirrored=set(above), absolute=absolute, left_out=set(left_out),
-                      granular=_granular_only(src), aliases=aliases)
+                      granular=_granular_only(src), aliases=aliases, cd_folders=_cd_folders(src))
     # the deck first: a command written alike in several files is located in the deck
     files = [scratch.deck] + [Path(base, name) for base, _, names in os.walk(root / "deck") for name in sorted(names)
                               if Path(base, name) != scratch.deck] + sorted(absolute.values())
@@ -495,10 +491,37 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
 _UP = re.compile(r"(?:^|/)\.\.(?:/|$)")
 
 
-def _above(deck: Path, total: int) -> tuple[list, int]:
+def _bytes_copied(top: Path, ignore, limit: int) -> int:
+    """The bytes of the regular files under ``top`` (or of the file ``top``) that the copy takes: not
+    links, not what ``ignore`` leaves out; counted until they pass ``limit``. A file or folder that
+    goes while they are counted counts nothing (a folder above the deck's, ``shell cd ..``, may be
+    the temporary directory, whose entries come and go: field round 38, A19 run from there)."""
+    if not top.is_dir():
+        try:
+            return top.stat().st_size
+        except OSError:
+            return 0
+    total = 0
+    for base, folders, names in os.walk(top):
+        skipped = ignore(base, folders + names)
+        folders[:] = [f for f in folders if f not in skipped]
+        for name in names:
+            p = Path(base, name)
+            try:
+                if name not in skipped and not p.is_symlink():
+                    total += p.stat().st_size
+            except OSError:
+                continue
+        if total > limit:
+            break
+    return total
+
+
+def _above(deck: Path, total: int, ignore) -> tuple[list, int]:
     """The paths above the deck's folder that the deck and the files it names (include, jump, and
     those named above it) name by ``..`` as written, normalised (``../DEM/data.txt``), each one that
-    exists; and how many folders up the furthest reaches. ``total``: the bytes of the folder."""
+    exists; and how many folders up the furthest reaches. ``total``: the bytes of the folder;
+    ``ignore``: what the copy leaves out (:func:`_not_copied`)."""
     folder, found, todo = deck.parent, set(), [deck]
     for path, n, line, word in _words_named(deck, todo):
         if "$" in word or not _UP.search(word) or os.path.isabs(word):
@@ -520,8 +543,7 @@ def _above(deck: Path, total: int) -> tuple[list, int]:
             continue            # as in the folder's copy, a link is not followed
         found.add(name)
         todo.append(source)
-        total += sum(p.stat().st_size for p in ([source] if source.is_file() else source.rglob("*"))
-                     if p.is_file() and not p.is_symlink())
+        total += _bytes_copied(source, ignore, MAX_FOLDER_BYTES - total)
         if total > MAX_FOLDER_BYTES:
             raise DeckError(f"line {n}" if path == deck else f"{path.name} line {n}", line.strip(),
                             f"the deck's folder and the files above it that the deck names hold more than "
@@ -568,6 +590,22 @@ def _words_named(deck: Path, todo: list):
             for word in _all_words(normalised(line)):
                 yield path, n, line, word
         todo += [deck.parent / name for name in _named_files(path) or () if not _UP.search(name)]
+
+
+def _cd_folders(deck: Path) -> set:
+    """The folders inside the deck's that ``shell cd`` commands of the deck and the scripts it names
+    name as written (normalised; none by a variable, an absolute path or a climb out)."""
+    found, read = set(), set()
+    for path, n, line, _ in _words_named(deck, [deck]):
+        if (path, n) in read:
+            continue             # a line is named once for each of its words
+        read.add((path, n))
+        said = _all_words(normalised(line))
+        if said[:2] == ["shell", "cd"] and len(said) > 2 and "$" not in said[2] and not os.path.isabs(said[2]):
+            name = os.path.normpath(said[2])
+            if name != ".." and not name.startswith("../"):
+                found.add(name)
+    return found
 
 
 def _all_words(text: str) -> list:
@@ -1124,9 +1162,13 @@ def _outside(name: str, scratch: Scratch) -> bool:
     if os.path.isabs(name) and Path(name).is_relative_to(scratch.root):
         return False          # a copy the scratch made (of a file named by an absolute path)
     norm = os.path.normpath(name)
-    # (a name that climbs back into the folder, "sub dir/../k.in", stays in the copy: field round 32, Q18)
+    # (a name that climbs back into the folder, "sub dir/../k.in", stays in the copy: field round 32, Q18;
+    # so does one read from a folder of the deck's that a shell cd enters, "include ../l.in" after
+    # "shell cd sub": round 38, A19, refused as outside, LAMMPS read the deck's own l.in; where the
+    # deck reads it from elsewhere, the copy holds nothing there and the engine stops, as it says)
+    inside = any(not os.path.normpath(os.path.join(folder, norm)).startswith("..") for folder in scratch.cd_folders)
     return "$" not in name and (os.path.isabs(name) or (norm == ".." or norm.startswith("../"))
-                                and norm not in scratch.mirrored)
+                                and norm not in scratch.mirrored and not inside)
 
 
 def _safe_if(command: str, loc, scratch: Scratch, marker) -> str | None:
