@@ -926,7 +926,8 @@ run 1
 
 @pytest.mark.parametrize("fix, words", [
     ("fix ev all evaporate 1000 1 box 12345", "fix evaporate deletes atoms as the runs go; it adds no force"),
-    ("fix df all deform 1 x final 0 2", "fix deform changes the box as the runs go; it adds no force"),
+    # remap v: the atoms stay where they are (remap x, the default, moves them with the box: field round 40)
+    ("fix df all deform 1 x final 0 2 remap v", "fix deform changes the box as the runs go; it adds no force"),
 ])
 def test_a_fix_that_pushes_no_atom_is_not_said_to_add_forces(tmp_path, fix, words):
     """Field round 15 (n06-n08, a10): evaporate, deform, atom/swap and set were each said to "add

@@ -6,7 +6,12 @@ whether a contact is under way where the deck changes the contact law or the ato
   0.4149 and 0.5806 were printed with no word); a velocity set between a run's parts (E03: LAMMPS
   0.332, 0.4149 printed).
 - SW-WALL-REGION: fix wall/region was taken to push nothing (W20: a harmonic region wall near the
-  floor, LAMMPS 0.514 where the floor's 0.3630 was printed with no word)."""
+  floor, LAMMPS 0.514 where the floor's 0.3630 was printed with no word).
+
+Field round 40 found the same hole in other forms: a law whose eps stays while its stiffness changes
+(A01: coeff_restitution 0.5 at kn 2000 then 5000, LAMMPS 0.771), a sphere retyped mid-contact (A41,
+0.323), change_box with remap (A17, 0.117), fix deform with its default remap x (B23, 0.331), the floor
+defined again 0.1 mm higher (A59, 0.620) or unfixed (A15: the contact never ends)."""
 
 import json
 
@@ -38,7 +43,7 @@ def test_a_law_changed_while_the_pair_may_be_in_contact_is_said(tmp_path):
     first, second = stage_eps(got)
     engine = abs(lammps_separation_speed(deck, tmp_path))
     assert min(abs(engine - first), abs(engine - second)) > 0.05, (engine, first, second)   # neither law's
-    assert ("types 1 2: the contact's eps changes at the start of stage 2 of 2; a contact under way at such a "
+    assert ("types 1 2: the contact law changes at the start of stage 2 of 2; a contact under way at such a "
             "change (one lasts up to 586 steps at the deck's time step) feels both stages' laws") in err, err
 
 
@@ -46,7 +51,7 @@ def test_a_law_changed_while_the_pair_may_be_in_contact_is_said(tmp_path):
 @pytest.mark.dem
 def test_a_law_changed_after_the_contact_is_said_without_the_short_stage(tmp_path):
     got, err = audited(PERIODIC_PAIR + f"run 3000\n{STIFFER}\nrun 2000\n", tmp_path)
-    assert "the contact's eps changes at the start of stage 2 of 2" in err, err
+    assert "the contact law changes at the start of stage 2 of 2" in err, err
     assert "fewer steps than one contact lasts" not in err, err
     assert "changes the atoms' velocities" not in err, err
 
@@ -66,7 +71,7 @@ def test_a_run_whose_parts_change_the_law_says_each_part_is_shorter_than_a_conta
 def test_a_velocity_set_between_a_runs_parts_is_said_once(tmp_path):
     deck = PERIODIC_PAIR + 'run 2000 every 250 "set atom 2 vx -0.2285714286"\n'
     got, err = audited(deck, tmp_path)
-    assert "changes the atoms' velocities, places or sizes between runs: a contact under way" in err, err
+    assert "changes the atoms' velocities, places, sizes or types, or the box, between runs: a contact under way" in err, err
     assert err.count("changes the atoms' velocities") == 1, err        # said once for the line
     engine = abs(lammps_separation_speed(deck, tmp_path))
     assert abs(engine - stage_eps(got)[-1]) > 0.05, engine
@@ -86,3 +91,45 @@ def test_a_region_wall_is_named_as_a_force_the_eps_do_not_include(tmp_path):
                            "fix soft all wall/region cage harmonic 20.0 0.0 0.0025\nrun 3000\n"
     _, err = audited(deck, tmp_path)
     assert "fix wall/region may add forces to its atoms (group all)" in err, err
+
+
+SAME_E = "hooke {kn} 0.5 damping coeff_restitution tangential linear_nohistory 1 0.3"
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_stiffness_changed_under_the_same_eps_is_said(tmp_path):
+    deck = PERIODIC_PAIR.replace("hooke 2000 3000 damping mass_velocity", SAME_E.format(kn=2000).rsplit(" tangential", 1)[0]) \
+        + f"run 300\npair_coeff 1 2 {SAME_E.format(kn=5000)}\nrun 2000\n"
+    got, err = audited(deck, tmp_path)
+    assert stage_eps(got)[0] == pytest.approx(stage_eps(got)[1], abs=1e-12)      # the same e printed
+    assert "types 1 2: the contact law changes at the start of stage 2 of 2" in err, err
+    assert abs(abs(lammps_separation_speed(deck, tmp_path)) - 0.5) > 0.05
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between", ["set atom 2 type 1", "change_box all x scale 1.02 remap units box"])
+def test_a_retype_or_a_box_change_between_runs_is_said(tmp_path, between):
+    _, err = audited(PERIODIC_PAIR + f"run 300\n{between}\nrun 2000\n", tmp_path)
+    assert f"between runs: a contact under way at that step is changed mid-way, and its eps is none of those " \
+           f"printed: {between}" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("change", ["unfix floor", "fix floor all wall/gran granular hooke 2000 3000 damping mass_velocity "
+                                              "tangential linear_nohistory 1 0.3 zplane 0.0001 NULL"])
+def test_a_wall_defined_again_or_removed_between_runs_is_said(tmp_path, change):
+    floor = "fix floor all wall/gran granular hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 " \
+            "zplane 0 NULL\n"
+    _, err = audited(PERIODIC_PAIR + floor + f"run 300\n{change}\nrun 2000\n", tmp_path)
+    assert "defines again or removes a wall between runs" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("remap, moved", [("", True), (" remap x", True), (" remap v", False)])
+def test_fix_deform_moving_the_atoms_is_said(tmp_path, remap, moved):
+    _, err = audited(PERIODIC_PAIR + f"fix df all deform 1 x scale 1.05{remap}\nrun 3000\n", tmp_path)
+    assert ("moves the atoms with it (remap x): a contact under way is squeezed or stretched" in err) == moved, err

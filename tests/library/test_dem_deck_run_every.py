@@ -10,6 +10,7 @@ refused, as before). A ``run ... pre no`` after a change of the coefficients of 
 up again by LAMMPS, which then uses the new coefficients for one order of the pair's atoms and the
 old for the other (measured below): refused in one line."""
 
+import json
 import re
 import subprocess
 import sys
@@ -193,10 +194,11 @@ def test_a_step_read_between_the_parts_is_the_decks(tmp_path, between):
 
 @needs_lammps
 @pytest.mark.dem
-def test_a_like_pair_changed_before_pre_no_keeps_the_old_mix_and_is_refused(tmp_path):
+def test_a_like_pair_changed_before_pre_no_keeps_the_old_mix(tmp_path):
     """Field round 27, P29: 1 1 and 2 2 set, 1 2 mixed from them; 1 1 made stiffer after a first run,
     then run N pre no: LAMMPS mixes only at a set-up, so 1 2 keeps the old mix (measured here: the
-    same speed as without the change), where the audit printed the new one. Refused in one line."""
+    same speed as without the change), where the audit printed the new one. Refused next (the
+    re-audit of rounds 27-38), now audited with the old mix; a run set up after it mixes anew."""
     own = LINE.split(None, 3)[3]
     base = HEAD_ON.format(line=f"pair_coeff 1 1 {own}\npair_coeff 2 2 {own}") + "run 0\n"
     changed = base + f"pair_coeff 1 1 {own.replace('1000', '3000')}\n"
@@ -204,8 +206,15 @@ def test_a_like_pair_changed_before_pre_no_keeps_the_old_mix_and_is_refused(tmp_
     assert lammps_separation_speed(changed + "run 30000 pre no\n", tmp_path) == pytest.approx(old, abs=1e-12)
     assert abs(lammps_separation_speed(changed + "run 30000\n", tmp_path) - old) > 1e-2
     (tmp_path / "in.deck").write_text(changed + "run 30000 pre no\n")
-    status, out, err = run(tmp_path / "in.deck", "--g", "1")
-    assert status == 2 and out == "" and "pre no after the coefficients of types 1 1 changed" in err, err
+    got, err = audit(tmp_path / "in.deck", "--g", "1")
+    (row,) = [r for r in got["pairs"] if r["types"] == [1, 2]]
+    assert abs(row["eps"][0] - old) < 5e-5 and "a run with pre no does not mix again" in row["model"], (row, err)
+    # the next run set up mixes from the new coefficients: a stage of its own
+    (tmp_path / "in.deck").write_text(changed + "run 10 pre no\nrun 30000\n")
+    status, out, err = run(tmp_path / "in.deck", "--g", "1", "--json")
+    stages = [next(r["eps"][0] for r in stage["pairs"] if r["types"] == [1, 2]) for stage in json.loads(out)["stages"]]
+    assert status == 0 and abs(stages[-1] - abs(lammps_separation_speed(changed + "run 30000\n", tmp_path))) < 5e-5, err
+    assert abs(stages[-1] - stages[-2]) > 1e-2, stages
 
 
 @needs_lammps

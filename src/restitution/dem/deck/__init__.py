@@ -1485,7 +1485,7 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
 
 
 def _law_changes(stages: list) -> list:
-    """A note for each contact whose eps differs from one stage to the next: a contact under way at the
+    """A note for each contact whose law differs from one stage to the next: a contact under way at the
     change feels both laws, and its eps is none of the stages' (field round 39, E08: run 300 with the pair
     meeting at step 100, kn 2000 then 5000, LAMMPS 0.798 where 0.4149 and 0.5806 were printed with no word).
     The pass skips the runs, so whether a contact is under way there is not known; a stage shorter than
@@ -1496,7 +1496,7 @@ def _law_changes(stages: list) -> list:
     >>> row = lambda e: {"types": [1, 2], "eps": [e], "steps_per_contact": [586.0]}
     >>> stage = lambda e, n: {"runs": [{"text": f"run {n}"}], "pairs": [row(e)], "walls": []}
     >>> print(_law_changes([stage(0.41, 300), stage(0.58, 2000)])[0])
-    types 1 2: the contact's eps changes at the start of stage 2 of 2; a contact under way at such a change \
+    types 1 2: the contact law changes at the start of stage 2 of 2; a contact under way at such a change \
 (one lasts up to 586 steps at the deck's time step) feels both stages' laws, and its eps is none of those \
 printed; stage 1 runs fewer steps than one contact lasts, so no contact that starts in it ends under its law
     >>> _law_changes([stage(0.41, 300), stage(0.41, 2000)])
@@ -1516,15 +1516,15 @@ printed; stage 1 runs fewer steps than one contact lasts, so no contact that sta
     changes: dict = {}
     for k in range(1, len(stages)):
         before, after = keyed(stages[k - 1]), keyed(stages[k])
-        for label in before.keys() & after.keys():
-            if before[label]["eps"] != after[label]["eps"]:
+        for label in [label for label in before if label in after]:     # in the rows' order, every run alike
+            if _law(before[label]) != _law(after[label]):
                 lasts = [n for n in before[label].get("steps_per_contact") or [] if n is not None]
                 changes.setdefault(label, []).append((k, max(lasts, default=None), steps(stages[k - 1])))
     notes = []
     for label, at in changes.items():
         longest = max((n for _, n, _ in at if n is not None), default=None)
         short = [k for k, n, length in at if n is not None and length is not None and length < n]
-        notes.append(f"{label}: the contact's eps changes at the start of stage{'s' * (len(at) > 1)} "
+        notes.append(f"{label}: the contact law changes at the start of stage{'s' * (len(at) > 1)} "
                      f"{_listed([k + 1 for k, _, _ in at])} of {len(stages)}; a contact under way at such a change "
                      + (f"(one lasts up to {longest:.0f} steps at the deck's time step) " if longest else "")
                      + "feels both stages' laws, and its eps is none of those printed"
@@ -1533,6 +1533,14 @@ printed; stage 1 runs fewer steps than one contact lasts, so no contact that sta
                         f"{'them' if len(short) > 1 else 'it'} ends under {'their' if len(short) > 1 else 'its'} law"
                         if short else ""))
     return notes
+
+
+def _law(row: dict) -> tuple:
+    """What of a row tells one contact law from another: its eps, model, parameters, reach and time
+    step (field round 40, A01: kn 2000 then 5000 with coeff_restitution 0.5, the same eps in both
+    stages and no note, LAMMPS 0.771)."""
+    return tuple(repr(row.get(k)) for k in ("eps", "model", "alpha", "gamma", "D1", "D2", "overlap_limit", "dt",
+                                            "steps_per_contact"))
 
 
 def _listed(numbers: list) -> str:

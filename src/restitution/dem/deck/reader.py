@@ -232,12 +232,14 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _deleted(deck, made, split[2], active)
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
-        if (split and moved_since and position < last_run and _kicks(split)
-                and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == KICKED for u in deck.unknown)):
+        if split and moved_since and position < last_run and (why := _kicks(split) or _wall_changed(deck, split)) \
+                and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == why for u in deck.unknown):
             # a contact under way at this step is changed mid-way, and the pass (its runs skipped) cannot
             # say whether one is (field round 39, E03: velocity lv2 set every 250 steps of a 586-step
-            # contact, LAMMPS 0.332 where the law's 0.4149 was printed with no word); a line said once
-            deck.unknown.append((*cmd.loc, cmd.text, KICKED))
+            # contact, LAMMPS 0.332 where the law's 0.4149 was printed with no word; round 40, A41: set
+            # atom 2 type 1, 0.323; A17: change_box ... remap, 0.117; A59: the floor defined again 0.1 mm
+            # higher, 0.620; A15: the floor unfixed, the sphere goes on through it); a line said once
+            deck.unknown.append((*cmd.loc, cmd.text, why))
         if split and split[0] == "write_data" and len(split) > 1:
             data_written[split[1]] = bool(made)
         if split and split[0] == "read_data" and len(split) > 1 and data_written.get(split[1]):
@@ -1211,10 +1213,15 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
                                          "only; a neighbor skin is not read); not audited (remove pre no)")
         if mixed := [t for t in sorted(set(own) | set(deck.set_up_own)) if own.get(t) != deck.set_up_own.get(t)
                      and _mixes(deck, t)]:
-            raise DeckError(where, line, f"pre no after the coefficients of types {mixed[0]} {mixed[0]} changed since "
-                                         "the last run, from which LAMMPS mixes a pair of that type with another at "
-                                         "a run's set-up: this run is not set up again, so the mixed pair keeps the "
-                                         "old law (LAMMPS measured); not audited (remove pre no)")
+            if any((t, t) not in deck.set_up_like for t in mixed):
+                raise DeckError(where, line, f"pre no after the coefficients of types {mixed[0]} {mixed[0]} were given "
+                                             "since the last run, from which LAMMPS mixes a pair of that type with "
+                                             "another at a run's set-up: this run is not set up again; not audited "
+                                             "(remove pre no)")
+            # LAMMPS mixes only at a set-up: the mixed pairs keep the last one's mix, the like pair
+            # itself takes its new coefficients (field round 27, P19 P29 P40-P48: refused since,
+            # LAMMPS 0.413435, the old mix; measured: 1 1 changed, either order of the atoms alike)
+            deck.mixed_own = dict(deck.set_up_like)
         # a grown type's pairs are left out (walls use no list, other pairs are met as set up)
         stale = set(_grown(deck, radii)) | _changed_atoms(deck)
         deck.stale = {**deck.stale, **{t: (where, line) for t in sorted(stale)}}
@@ -1224,6 +1231,7 @@ def _not_set_up(deck: Deck, words: list, where: str, line: str) -> None:
             deck.ghosts_stale = deck.reghosted
         return
     deck.set_up, deck.set_up_radii, deck.set_up_own, deck.stale = key, radii, own, {}
+    deck.set_up_like, deck.mixed_own = {k: v for k, v in deck.coeffs.items() if k[0] == k[1]}, None
     deck.reghosted = deck.ghosts_stale = deck.replicated = deck.still = ()
     deck.set_up_seen = deck.seen
 
@@ -1355,6 +1363,8 @@ def contact_key(deck: Deck) -> str:
     return repr(plain((deck.code, deck.style, deck.ntypes, deck.radius, deck.density, deck.units, deck.soft,
                        deck.hard, deck.model, deck.limit_force, deck.absolute_damping, deck.gran, deck.atom_style, deck.missing,
                        {k: w for k, (_, w) in deck.coeffs.items()}, {k: v for k, (_, v) in deck.props.items()},
+                       # the mix a run with pre no keeps (a later run set up mixes anew: another stage)
+                       {k: w for k, (_, w) in (deck.mixed_own or {}).items()},
                        [(w, t) for _, w, t in deck.walls], deck.meshes, deck.empty_groups, deck.filled_groups, deck.partial_groups,
                        deck.pending,
                        set(deck.shapes), deck.sizes, {t: deck.once.get(t, set()) - deck.poured.get(t, set())
@@ -1870,13 +1880,27 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
         handler(deck, words, where, line, loc)
         if wall_again is not None and deck.walls and deck.walls[-1][1][1] == words[1]:
             deck.walls.insert(wall_again, deck.walls.pop())
+    elif style == "deform" and _remaps_atoms(words):
+        # the atoms are moved with the box every step (remap x, its default): a contact under way is
+        # squeezed or stretched (field round 40, B23: x scale 1.05, LAMMPS 0.331 where 0.4149 was printed
+        # under "adds no force"; remap v 0.413435)
+        deck.unknown.append((*loc, line, "fix deform changes the box as the runs go and moves the atoms with it (remap "
+                                         "x): a contact under way is squeezed or stretched, and its eps is none of "
+                                         "those printed"))
     elif style in _NO_FORCE:
-        deck.unknown.append((*loc, line, f"fix {style} {_NO_FORCE[style]}; it adds no force to a contact"))
+        deck.unknown.append((*loc, line, f"fix {style} {_NO_FORCE[style]}; it adds no force to a contact" + (
+            " (a pair across a periodic face meets its image as the box changes)" if style == "deform" else "")))
     elif style not in _IRRELEVANT_FIXES:
         # a fix the audit does not know may push its atoms (a wall potential, a field): the rows
         # do not include what it does, and say so
         deck.unknown.append((*loc, line, f"not understood: fix {style} may add forces to its atoms (group "
                                          f"{words[2]}), which the eps printed do not include"))
+
+
+def _remaps_atoms(words: list) -> bool:
+    """Whether a fix deform moves the atoms with the box: its remap keyword x, the default."""
+    remap = [words[k + 1] for k in range(4, len(words) - 1) if words[k] == "remap"]
+    return (remap[-1:] or ["x"])[0] == "x"
 
 
 def _runs_recorded(deck: Deck) -> int:
@@ -2150,25 +2174,39 @@ _RETYPE = ("type", "type/fraction", "type/ratio", "type/subset")
 #: set keywords that change an atom's size or type
 _SIZING_SET = frozenset({"diameter", "density", "density/disc", "mass", *_RETYPE})
 #: What is said of a command that changes the atoms between runs (:func:`_kicks`)
-KICKED = ("changes the atoms' velocities, places or sizes between runs: a contact under way at that step is "
-          "changed mid-way, and its eps is none of those printed")
-#: set keywords that change an atom's motion, place or size
+KICKED = ("changes the atoms' velocities, places, sizes or types, or the box, between runs: a contact under way "
+          "at that step is changed mid-way, and its eps is none of those printed")
+#: What is said of a wall fix defined again or removed between runs (:func:`_wall_changed`)
+WALL_CHANGED = ("defines again or removes a wall between runs: a contact with it under way at that step is changed "
+                "mid-way or never ends, and its eps is none of those printed")
+#: set keywords that change an atom's motion, place, size or type
 _KICKING_SET = frozenset({"vx", "vy", "vz", "omega", "angmom", "x", "y", "z", "image", "diameter", "density",
-                          "density/disc", "mass"})
+                          "density/disc", "mass", *_RETYPE})
 
 
-def _kicks(split: list) -> bool:
-    """Whether the command ``split`` changes the velocities, places or sizes of existing atoms.
+def _kicks(split: list) -> str | None:
+    """KICKED where the command ``split`` changes the velocities, places, sizes or types of existing
+    atoms, or the box (a remap moves them; a periodic image moves without one), else None.
 
     Examples
     --------
-    >>> _kicks(["velocity", "lv2", "set", "0", "0", "-1"]), _kicks(["set", "type", "1", "vx", "0"])
-    (True, True)
-    >>> _kicks(["set", "type", "1", "type", "2"]), _kicks(["fix", "f", "all", "nve/sphere"])
-    (False, False)
+    >>> _kicks(["velocity", "lv2", "set", "0", "0", "-1"]) == _kicks(["set", "type", "1", "type", "2"]) == KICKED
+    True
+    >>> _kicks(["change_box", "all", "x", "scale", "1.02"]) == KICKED, _kicks(["fix", "f", "all", "nve/sphere"])
+    (True, None)
     """
-    return (split[0] in ("velocity", "displace_atoms") or
-            split[0] == "set" and any(k in _KICKING_SET for k in split[3::2]))
+    if split[0] in ("velocity", "displace_atoms", "change_box") or \
+            split[0] == "set" and any(k in _KICKING_SET for k in split[3::2]):
+        return KICKED
+    return None
+
+
+def _wall_changed(deck: Deck, split: list) -> str | None:
+    """WALL_CHANGED where ``split`` defines again (otherwise) or removes a wall fix of the deck, else None."""
+    if split[0] not in ("fix", "unfix") or len(split) < 2:
+        return None
+    walls = [list(w) for _, w, _ in deck.walls if w[1] == split[1]]
+    return WALL_CHANGED if walls and (split[0] == "unfix" or list(split) not in walls) else None
 
 #: The set keywords that draw their atoms at random, and what the draw reads that a run changes
 #: (LAMMPS' set.cpp: type/fraction seeds each atom's draw with its coordinates; type/ratio and

@@ -251,6 +251,10 @@ class Deck:
     # type -> the coefficients of its pair with itself at that set-up, from which a pair of it with
     # another type may be mixed
     set_up_own: dict = field(default_factory=dict)
+    # (t, t) -> (loc, words) of those coefficients at that set-up; in a run with pre no after they
+    # changed, the pairs LAMMPS mixes from them (no pair_coeff of their own) keep that mix: mixed_own
+    set_up_like: dict = field(default_factory=dict)
+    mixed_own: dict | None = None
     # type -> (where, line) of a run with pre no after its atoms grew: the neighbour lists hold its
     # smaller radii till their next build, so its pairs are not audited in that run
     stale: dict = field(default_factory=dict)

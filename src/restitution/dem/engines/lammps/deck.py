@@ -448,7 +448,9 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
         stiffness = None
         mixed_from = None
     else:
-        (loc, wi), (loc_j, wj) = deck.coeffs[(i, i)], deck.coeffs[(j, j)]
+        # a run with pre no keeps the mix of the last set-up (reader._not_set_up)
+        like = {**deck.coeffs, **(deck.mixed_own or {})}
+        (loc, wi), (loc_j, wj) = like[(i, i)], like[(j, j)]
         wi, wj = _mixed_cohesion(wi, wj)
         ci, cj = _mapped(deck, loc, wi), _mapped(deck, loc_j, wj)
         if ci.models != cj.models:
@@ -458,7 +460,8 @@ def pair_row(deck: Deck, i: int, j: int) -> dict:
                                                              "cannot mix them and stops; give pair_coeff "
                                                              f"{i} {j}")
         c, stiffness = _mixed(ci, cj)
-        mixed_from = f"mixed from {place(loc)} and {place(loc_j)}"
+        mixed_from = f"mixed from {place(loc)} and {place(loc_j)}" + (
+            ", as at the last run set up (a run with pre no does not mix again)" if deck.mixed_own else "")
     pair = spheres(deck, i, j)
     cutoff = c.cutoff if c.cutoff is not None else deck.cutoff
     skin = deck.skin if deck.skin is not None else DEFAULT_SKIN.get(deck.units or "lj", 0.0)
