@@ -53,7 +53,7 @@ def test_a_law_changed_after_the_contact_is_said_without_the_short_stage(tmp_pat
     got, err = audited(PERIODIC_PAIR + f"run 3000\n{STIFFER}\nrun 2000\n", tmp_path)
     assert "the contact law changes at the start of stage 2 of 2" in err, err
     assert "fewer steps than one contact lasts" not in err, err
-    assert "changes the atoms' velocities" not in err, err
+    assert "changes the atoms (their" not in err, err
 
 
 @needs_lammps
@@ -71,8 +71,8 @@ def test_a_run_whose_parts_change_the_law_says_each_part_is_shorter_than_a_conta
 def test_a_velocity_set_between_a_runs_parts_is_said_once(tmp_path):
     deck = PERIODIC_PAIR + 'run 2000 every 250 "set atom 2 vx -0.2285714286"\n'
     got, err = audited(deck, tmp_path)
-    assert "changes the atoms' velocities, places, sizes or types, or the box, between runs: a contact under way" in err, err
-    assert err.count("changes the atoms' velocities") == 1, err        # said once for the line
+    assert "changes the atoms (their velocities, places, sizes or types, or which atoms there are) or the box between runs: a contact under way" in err, err
+    assert err.count("changes the atoms (their") == 1, err        # said once for the line
     engine = abs(lammps_separation_speed(deck, tmp_path))
     assert abs(engine - stage_eps(got)[-1]) > 0.05, engine
 
@@ -81,7 +81,7 @@ def test_a_velocity_set_between_a_runs_parts_is_said_once(tmp_path):
 @pytest.mark.dem
 def test_no_velocity_note_where_no_run_follows(tmp_path):
     _, err = audited(PERIODIC_PAIR + "velocity all set 0 0 0\n", tmp_path)
-    assert "changes the atoms' velocities" not in err, err
+    assert "changes the atoms (their" not in err, err
 
 
 @needs_lammps
@@ -124,7 +124,7 @@ def test_a_wall_defined_again_or_removed_between_runs_is_said(tmp_path, change):
     floor = "fix floor all wall/gran granular hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 " \
             "zplane 0 NULL\n"
     _, err = audited(PERIODIC_PAIR + floor + f"run 300\n{change}\nrun 2000\n", tmp_path)
-    assert "defines again or removes a wall between runs" in err, err
+    assert "defines again, moves or removes a wall between runs" in err, err
 
 
 @needs_lammps
@@ -133,3 +133,14 @@ def test_a_wall_defined_again_or_removed_between_runs_is_said(tmp_path, change):
 def test_fix_deform_moving_the_atoms_is_said(tmp_path, remap, moved):
     _, err = audited(PERIODIC_PAIR + f"fix df all deform 1 x scale 1.05{remap}\nrun 3000\n", tmp_path)
     assert ("moves the atoms with it (remap x): a contact under way is squeezed or stretched" in err) == moved, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_atoms_added_between_runs_are_said(tmp_path):
+    """Field round 41, M53: read_data ... add append of a sphere at the pair mid-contact (0.407)."""
+    (tmp_path / "t.data").write_text("one more\n\n1 atoms\n2 atom types\n\n0 0.04 xlo xhi\n0 0.04 ylo yhi\n"
+                                     "0 0.1 zlo zhi\n\nAtoms # sphere\n\n1 1 0.004 2500 0.0279 0.02 0.05\n")
+    _, err = audited(PERIODIC_PAIR + "run 300\nread_data t.data add append\nrun 2000\n", tmp_path)
+    assert "changes the atoms (their velocities, places, sizes or types, or which atoms there are) or the box " \
+           "between runs" in err and "read_data t.data add append" in err, err

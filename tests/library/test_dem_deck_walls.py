@@ -736,6 +736,22 @@ def test_an_accelerating_liggghts_mesh_is_named_not_audited(tmp_path, motion, va
         assert "mesh mesh1 moves with an acceleration (fix shake all move/mesh" in named[0]["why"]
 
 
+@needs_liggghts
+@pytest.mark.parametrize("folder, change", [("G06_lig_move_mesh_added_mid", "fix mm all move/mesh"),
+                                            ("G12_lig_move_mesh_unfixed_mid", "unfix mm")])
+def test_a_liggghts_mesh_set_moving_or_stopped_between_runs_is_said(tmp_path, folder, change):
+    """Field round 41, G06: move/mesh linear 0 0 0.3 added after run 300 with a sphere on the mesh:
+    LIGGGHTS 1.142 where 0.7 was printed with no word (a steady motion alone leaves the contact as it
+    is); G12: a mesh moving down at 0.1 m/s stopped by unfix after run 300: 0.677."""
+    import shutil
+    shutil.copytree(Path(__file__).parents[1] / "field41" / "decks" / folder, tmp_path / "d",
+                    ignore=shutil.ignore_patterns("audit.*", "escape.txt"))
+    status, out, err = run_deck(tmp_path / "d" / "in.deck", "--g", "1", "--json")
+    assert status == 0, err
+    assert any("defines again, moves or removes a wall between runs" in row["why"] and row["text"].startswith(change)
+               for row in json.loads(out)["unknown_lines"]), err
+
+
 def test_liggghts_torsion_torque_of_the_rolling_model_leaves_the_normal_contact(tmp_path):
     """Field round 8: torsionTorque on (an option LIGGGHTS 3.8.0's rolling model epsd3 registers, a
     torque about the contact normal) was refused as a keyword that may change the normal force.

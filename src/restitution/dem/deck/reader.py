@@ -199,6 +199,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     placed: set = set()            # groups picked by where the atoms were, after a run
     stepless = None                # the first run that made no step (run 0)
     last_run = max((n for n, c in enumerate(commands) if c.stage is not None), default=-1)
+    mesh_movers: set = set()       # the IDs of LIGGGHTS move/mesh fixes defined so far
     for position, cmd in enumerate(commands):
         try:
             split = words(cmd.text)
@@ -232,13 +233,18 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _deleted(deck, made, split[2], active)
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
-        if split and moved_since and position < last_run and (why := _kicks(split) or _wall_changed(deck, split)) \
+        if split and split[0] == "fix" and len(split) > 3 and split[3] == "move/mesh":
+            mesh_movers.add(split[1])
+        if split and moved_since and position < last_run and (
+                why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, mesh_movers)) \
                 and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == why for u in deck.unknown):
             # a contact under way at this step is changed mid-way, and the pass (its runs skipped) cannot
             # say whether one is (field round 39, E03: velocity lv2 set every 250 steps of a 586-step
             # contact, LAMMPS 0.332 where the law's 0.4149 was printed with no word; round 40, A41: set
             # atom 2 type 1, 0.323; A17: change_box ... remap, 0.117; A59: the floor defined again 0.1 mm
-            # higher, 0.620; A15: the floor unfixed, the sphere goes on through it); a line said once
+            # higher, 0.620; A15: the floor unfixed, the sphere goes on through it; round 41, M53: read_data
+            # add append of a sphere at the pair, 0.407; G06: a LIGGGHTS move/mesh added under a sphere on
+            # the mesh, 1.142 where 0.7 was printed); a line said once
             deck.unknown.append((*cmd.loc, cmd.text, why))
         if split and split[0] == "write_data" and len(split) > 1:
             data_written[split[1]] = bool(made)
@@ -2174,11 +2180,11 @@ _RETYPE = ("type", "type/fraction", "type/ratio", "type/subset")
 #: set keywords that change an atom's size or type
 _SIZING_SET = frozenset({"diameter", "density", "density/disc", "mass", *_RETYPE})
 #: What is said of a command that changes the atoms between runs (:func:`_kicks`)
-KICKED = ("changes the atoms' velocities, places, sizes or types, or the box, between runs: a contact under way "
-          "at that step is changed mid-way, and its eps is none of those printed")
+KICKED = ("changes the atoms (their velocities, places, sizes or types, or which atoms there are) or the box "
+          "between runs: a contact under way at that step is changed mid-way, and its eps is none of those printed")
 #: What is said of a wall fix defined again or removed between runs (:func:`_wall_changed`)
-WALL_CHANGED = ("defines again or removes a wall between runs: a contact with it under way at that step is changed "
-                "mid-way or never ends, and its eps is none of those printed")
+WALL_CHANGED = ("defines again, moves or removes a wall between runs: a contact with it under way at that step is "
+                "changed mid-way or never ends, and its eps is none of those printed")
 #: set keywords that change an atom's motion, place, size or type
 _KICKING_SET = frozenset({"vx", "vy", "vz", "omega", "angmom", "x", "y", "z", "image", "diameter", "density",
                           "density/disc", "mass", *_RETYPE})
@@ -2195,9 +2201,18 @@ def _kicks(split: list) -> str | None:
     >>> _kicks(["change_box", "all", "x", "scale", "1.02"]) == KICKED, _kicks(["fix", "f", "all", "nve/sphere"])
     (True, None)
     """
-    if split[0] in ("velocity", "displace_atoms", "change_box") or \
-            split[0] == "set" and any(k in _KICKING_SET for k in split[3::2]):
+    if split[0] in ("velocity", "displace_atoms", "change_box", "read_dump", "create_atoms", "delete_atoms") or \
+            split[0] == "set" and any(k in _KICKING_SET for k in split[3::2]) or \
+            split[0] == "read_data" and "add" in split[2:]:
         return KICKED
+    return None
+
+
+def _mesh_move_changed(split: list, movers: set) -> str | None:
+    """WALL_CHANGED where ``split`` defines or removes a LIGGGHTS move/mesh fix (``movers``: their IDs)."""
+    if split[0] == "fix" and len(split) > 3 and split[3] == "move/mesh" or split[0] == "unfix" and split[1:2] and \
+            split[1] in movers:
+        return WALL_CHANGED
     return None
 
 
