@@ -144,3 +144,33 @@ def test_atoms_added_between_runs_are_said(tmp_path):
     _, err = audited(PERIODIC_PAIR + "run 300\nread_data t.data add append\nrun 2000\n", tmp_path)
     assert "changes the atoms (their velocities, places, sizes or types, or which atoms there are) or the box " \
            "between runs" in err and "read_data t.data add append" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("before, between, said", [
+    ("group gx id 5\nfix sf gx setforce 0.0 0.0 0.0\n", "group gx id 2", "defines again a group a fix acts on"),
+    ("neigh_modify exclude type 1 2\n", "neigh_modify exclude none", "changes which pairs the engine excludes")],
+    ids=["a fix's group filled", "an exclusion lifted"])
+def test_a_fix_group_or_an_exclusion_changed_between_runs_is_said(tmp_path, before, between, said):
+    """Field round 42, R09 (setforce on a group filled with a sphere of the pair mid-contact: LAMMPS
+    0.395 where 0.4149 was printed with no word) and N04 (an exclusion lifted with the spheres in
+    overlap: 0.848)."""
+    deck = PERIODIC_PAIR.replace("fix move all nve/sphere\n", "fix move all nve/sphere\n" + before) \
+        + f"run 300\n{between}\nrun 2000\n"
+    _, err = audited(deck, tmp_path)
+    assert f"{said}, between runs" in err and between in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_pair_left_out_in_the_next_stage_is_said_as_a_change(tmp_path):
+    """Field round 42, H01: kn changed mid-contact in a stage whose pair is left out (two integrators
+    on groups the audit cannot type): the first stage's 0.4149 stood with no word, LAMMPS 0.798."""
+    deck = PERIODIC_PAIR + "group one id 1\ngroup two id 2\nrun 300\n" \
+        "pair_coeff 1 2 hooke 5000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n" \
+        "unfix move\nfix i1 one nve/sphere\nfix i2 two nve/sphere\nrun 2000\n"
+    got, err = audited(deck, tmp_path)
+    assert not any(r["types"] == [1, 2] for r in got["stages"][-1]["pairs"]), got["stages"][-1]
+    assert "types 1 2: the contact law changes (or the pair is left out, its reason said) at the start of stage 2" \
+        in err, err

@@ -200,6 +200,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     stepless = None                # the first run that made no step (run 0)
     last_run = max((n for n, c in enumerate(commands) if c.stage is not None), default=-1)
     mesh_movers: set = set()       # the IDs of LIGGGHTS move/mesh fixes defined so far
+    fix_groups: dict = {}          # fix ID -> the group it acts on, for the fixes in force
     for position, cmd in enumerate(commands):
         try:
             split = words(cmd.text)
@@ -236,7 +237,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         if split and split[0] == "fix" and len(split) > 3 and split[3] == "move/mesh":
             mesh_movers.add(split[1])
         if split and moved_since and position < last_run and (
-                why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, mesh_movers)) \
+                why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, mesh_movers)
+                or _regrouped(split, fix_groups) or _unexcluded(split)) \
                 and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == why for u in deck.unknown):
             # a contact under way at this step is changed mid-way, and the pass (its runs skipped) cannot
             # say whether one is (field round 39, E03: velocity lv2 set every 250 steps of a 586-step
@@ -246,6 +248,10 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             # add append of a sphere at the pair, 0.407; G06: a LIGGGHTS move/mesh added under a sphere on
             # the mesh, 1.142 where 0.7 was printed); a line said once
             deck.unknown.append((*cmd.loc, cmd.text, why))
+        if split and split[0] == "fix" and len(split) > 2:
+            fix_groups[split[1]] = split[2]
+        elif split and split[0] == "unfix" and len(split) > 1:
+            fix_groups.pop(split[1], None)
         if split and split[0] == "write_data" and len(split) > 1:
             data_written[split[1]] = bool(made)
         if split and split[0] == "read_data" and len(split) > 1 and data_written.get(split[1]):
@@ -2206,6 +2212,27 @@ def _kicks(split: list) -> str | None:
             split[0] == "read_data" and "add" in split[2:]:
         return KICKED
     return None
+
+
+#: What is said of a group a fix acts on defined again between runs (:func:`_regrouped`)
+REGROUPED = ("defines again a group a fix acts on, between runs: a contact under way at that step meets that fix "
+             "(or loses it) mid-way, and its eps is none of those printed")
+#: What is said of an exclusion set or lifted between runs (:func:`_unexcluded`)
+UNEXCLUDED = ("changes which pairs the engine excludes, between runs: a pair excluded while its spheres came to "
+              "overlap is met deep in overlap when the exclusion goes, and its eps is none of those printed")
+
+
+def _regrouped(split: list, fix_groups: dict) -> str | None:
+    """REGROUPED where ``split`` defines (again) a group that a fix in force acts on (field round 42, R09:
+    group gx id 5 before any atom, fix sf gx setforce 0 0 0, run 300, group gx id 2: LAMMPS 0.395 where
+    0.4149 was printed with no word)."""
+    return REGROUPED if split[0] == "group" and len(split) > 2 and split[1] in fix_groups.values() else None
+
+
+def _unexcluded(split: list) -> str | None:
+    """UNEXCLUDED where ``split`` sets or lifts a neigh_modify exclusion (field round 42, N04: exclude
+    type 1 2, run 300, exclude none: LAMMPS 0.848 where 0.4149 was printed)."""
+    return UNEXCLUDED if split[0] == "neigh_modify" and "exclude" in split[1:] else None
 
 
 def _mesh_move_changed(split: list, movers: set) -> str | None:
