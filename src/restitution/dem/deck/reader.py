@@ -195,12 +195,11 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     infos = iter(restarts or ())
     pending: list = []
     moved_since = False            # a run has gone: the atoms are where it left them, never the pass
-    active: set = set()            # the fixes defined now (a deposit still in force makes more atoms)
+    active: dict = {}              # the fixes defined now, ID -> their words (a deposit still in force makes more
+                                   # atoms; a group or move/mesh they use changed between runs is said)
     placed: set = set()            # groups picked by where the atoms were, after a run
     stepless = None                # the first run that made no step (run 0)
     last_run = max((n for n, c in enumerate(commands) if c.stage is not None), default=-1)
-    mesh_movers: set = set()       # the IDs of LIGGGHTS move/mesh fixes defined so far
-    fix_groups: dict = {}          # fix ID -> the group it acts on, for the fixes in force
     for position, cmd in enumerate(commands):
         try:
             split = words(cmd.text)
@@ -226,19 +225,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                                                              "which keep their groups")
             if made and set_poured(deck, made, split, cmd.loc, cmd.text):
                 block, same = None, False        # the poured sizes changed: no pass repeats the last
-        if split and split[0] == "fix" and len(split) > 1:
-            active.add(split[1])
-        elif split and split[0] == "unfix" and len(split) > 1:
-            active.discard(split[1])
         if split and split[0] == "delete_atoms" and split[1:2] == ["group"] and len(split) > 2 and moved_since:
             _deleted(deck, made, split[2], active)
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
-        if split and split[0] == "fix" and len(split) > 3 and split[3] == "move/mesh":
-            mesh_movers.add(split[1])
         if split and moved_since and position < last_run and (
-                why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, mesh_movers)
-                or _regrouped(split, fix_groups) or _unexcluded(split)) \
+                why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, active)
+                or _regrouped(split, active) or _unexcluded(split)) \
                 and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == why for u in deck.unknown):
             # a contact under way at this step is changed mid-way, and the pass (its runs skipped) cannot
             # say whether one is (field round 39, E03: velocity lv2 set every 250 steps of a 586-step
@@ -248,10 +241,11 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             # add append of a sphere at the pair, 0.407; G06: a LIGGGHTS move/mesh added under a sphere on
             # the mesh, 1.142 where 0.7 was printed); a line said once
             deck.unknown.append((*cmd.loc, cmd.text, why))
-        if split and split[0] == "fix" and len(split) > 2:
-            fix_groups[split[1]] = split[2]
+        # after the check above, which judges an unfix or a group against the fixes before it
+        if split and split[0] == "fix" and len(split) > 1:
+            active[split[1]] = split
         elif split and split[0] == "unfix" and len(split) > 1:
-            fix_groups.pop(split[1], None)
+            active.pop(split[1], None)
         if split and split[0] == "write_data" and len(split) > 1:
             data_written[split[1]] = bool(made)
         if split and split[0] == "read_data" and len(split) > 1 and data_written.get(split[1]):
@@ -1486,7 +1480,7 @@ def whole_types(deck: Deck, group: str) -> set | None:
     return set(static)
 
 
-def _deleted(deck: Deck, made: dict, group: str, active: set) -> None:
+def _deleted(deck: Deck, made: dict, group: str, active: dict) -> None:
     """delete_atoms group G after a run: every atom of the types G holds whole (a group by type with
     no atom of its types made after it) is gone, those the pours and deposits made in the runs
     before included, which the engine's pass never held (field round 18, b24, b45: their pairs were
@@ -2222,11 +2216,13 @@ UNEXCLUDED = ("changes which pairs the engine excludes, between runs: a pair exc
               "overlap is met deep in overlap when the exclusion goes, and its eps is none of those printed")
 
 
-def _regrouped(split: list, fix_groups: dict) -> str | None:
-    """REGROUPED where ``split`` defines (again) a group that a fix in force acts on (field round 42, R09:
+def _regrouped(split: list, fixes: dict) -> str | None:
+    """REGROUPED where ``split`` defines (again) a group that a fix in force (``fixes``: ID -> its words)
+    acts on (field round 42, R09:
     group gx id 5 before any atom, fix sf gx setforce 0 0 0, run 300, group gx id 2: LAMMPS 0.395 where
     0.4149 was printed with no word)."""
-    return REGROUPED if split[0] == "group" and len(split) > 2 and split[1] in fix_groups.values() else None
+    return REGROUPED if split[0] == "group" and len(split) > 2 and any(w[2:3] == split[1:2] for w in fixes.values()) \
+        else None
 
 
 def _unexcluded(split: list) -> str | None:
@@ -2235,12 +2231,11 @@ def _unexcluded(split: list) -> str | None:
     return UNEXCLUDED if split[0] == "neigh_modify" and "exclude" in split[1:] else None
 
 
-def _mesh_move_changed(split: list, movers: set) -> str | None:
-    """WALL_CHANGED where ``split`` defines or removes a LIGGGHTS move/mesh fix (``movers``: their IDs)."""
-    if split[0] == "fix" and len(split) > 3 and split[3] == "move/mesh" or split[0] == "unfix" and split[1:2] and \
-            split[1] in movers:
-        return WALL_CHANGED
-    return None
+def _mesh_move_changed(split: list, fixes: dict) -> str | None:
+    """WALL_CHANGED where ``split`` defines or removes a LIGGGHTS move/mesh fix (``fixes``: the fixes in
+    force, ID -> their words)."""
+    removed = fixes.get(split[1], []) if split[0] == "unfix" and len(split) > 1 else split
+    return WALL_CHANGED if removed[:1] == ["fix"] and removed[3:4] == ["move/mesh"] else None
 
 
 def _wall_changed(deck: Deck, split: list) -> str | None:
