@@ -174,3 +174,43 @@ def test_a_pair_left_out_in_the_next_stage_is_said_as_a_change(tmp_path):
     assert not any(r["types"] == [1, 2] for r in got["stages"][-1]["pairs"]), got["stages"][-1]
     assert "types 1 2: the contact law changes (or the pair is left out, its reason said) at the start of stage 2" \
         in err, err
+
+
+#: A plane region wall 2 mm under the pair's centres: neither sphere touches it
+PLATE = ("region plate plane 0 0 0.045 0 0 1 units box\nfix plate all wall/gran/region granular hooke 2000 3000 damping "
+         "mass_velocity tangential linear_nohistory 1 0.3 region plate\n")
+BETWEEN = "is run between runs, and the audit does not know it to leave a contact as it was"
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_region_moved_under_its_wall_mid_contact_is_said(tmp_path):
+    # found while listing the harmless: the region wall's region deleted and defined again 3.5 mm
+    # higher, under the type 2 sphere, 200 steps into the contact: LAMMPS 0.337 where 0.4149 was
+    # printed with no word (the wall's own words unchanged, so no wall note)
+    deck = PERIODIC_PAIR.replace("run 1000\n", PLATE + "run 1000\n") + \
+        "run 300\nregion plate delete\nregion plate plane 0 0 0.0485 0 0 1 units box\nrun 2000\n"
+    got, err = audited(deck, tmp_path)
+    assert f"line 23 {BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none " \
+           "of those printed: region plate plane 0 0 0.0485 0 0 1 units box" in err, err
+    assert abs(abs(lammps_separation_speed(deck, tmp_path)) - stage_eps(got)[-1]) > 0.05
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between, said", [
+    ("fix vv all viscous 0.001", True),
+    ("variable f equal 0.01", True),                 # the force of the addforce in force
+    ("fix w2 all wall/gran granular hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3 "
+     "zplane 0.0485 NULL", True),                   # a new wall, under the type 2 sphere
+    ("region spare block 0 1 0 1 0 1 units box", False),    # no fix names it
+    ("variable q equal 3", False),
+    ("fix av all ave/time 10 1 10 c_thermo_temp", False),
+    (PLATE.splitlines()[1], False),                  # the wall given again in its own words
+    ('print "half way"', False)])
+def test_what_runs_between_runs_is_said_unless_it_is_harmless(tmp_path, between, said):
+    deck = PERIODIC_PAIR.replace("run 1000\n", f"variable f equal 0.0\nfix af all addforce 0 0 v_f\n{PLATE}run 1000\n") \
+        + f"run 300\n{between}\nrun 2000\n"
+    _, err = audited(deck, tmp_path)
+    assert (f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of those "
+            f"printed: {between}" in err) == said, err

@@ -231,7 +231,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _variable(deck, split)
         if split and moved_since and position < last_run and (
                 why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, active)
-                or _regrouped(split, active) or _unexcluded(split)) \
+                or _regrouped(split, active) or _unexcluded(split) or _unlisted(split, active, deck.regions)) \
                 and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == why for u in deck.unknown):
             # a contact under way at this step is changed mid-way, and the pass (its runs skipped) cannot
             # say whether one is (field round 39, E03: velocity lv2 set every 250 steps of a 586-step
@@ -2229,6 +2229,72 @@ def _unexcluded(split: list) -> str | None:
     """UNEXCLUDED where ``split`` sets or lifts a neigh_modify exclusion (field round 42, N04: exclude
     type 1 2, run 300, exclude none: LAMMPS 0.848 where 0.4149 was printed)."""
     return UNEXCLUDED if split[0] == "neigh_modify" and "exclude" in split[1:] else None
+
+
+#: What is said of any other command between runs that is not known to leave a contact as it was
+#: (:func:`_unlisted`)
+BETWEEN_RUNS = ("is run between runs, and the audit does not know it to leave a contact as it was: a contact under "
+                "way at that step may be changed mid-way, and its eps may be none of those printed")
+#: Commands that leave a contact under way as it was when run between runs: output, control flow,
+#: bookkeeping, a new deck (clear and what follows it), and those whose changes another note says
+#: (the stage note compares the pair laws and the time step; the notes above name the kicks, walls,
+#: groups and exclusions). Anything else is named: the field rounds found one class of changes made
+#: mid-contact after another (rounds 39-42, thirteen), so the harmless are listed, not the harmful.
+_HARMLESS_BETWEEN = frozenset({
+    "print", "echo", "log", "info", "timer", "shell", "python", "thermo", "thermo_style", "thermo_modify",
+    "dump", "dump_modify", "undump", "write_dump", "write_data", "write_restart", "write_coeff", "restart",
+    "compute", "compute_modify", "uncompute", "label", "jump", "if", "include", "quit", "run", "minimize",
+    "reset_timestep", "run_style", "min_style", "min_modify", "balance", "partition", "package", "suffix",
+    "processors", "comm_modify", "comm_style", "communicate", "atom_modify", "neighbor", "neigh_modify",
+    "modify_timing", "lattice", "molecule", "replicate", "hard_particles", "soft_particles", "special_bonds",
+    "clear", "units", "atom_style", "boundary", "dimension", "newton", "create_box", "read_data", "read_restart",
+    "pair_style", "pair_coeff", "timestep", "group", "set", "velocity", "displace_atoms", "change_box",
+    "create_atoms", "delete_atoms", "read_dump"})
+#: Fix styles that change no contact under way where defined or removed between runs: output and
+#: averaging, integrators of the spheres (a pair a stage leaves unmoved is said by the stage note),
+#: gravity (weighed as in any run), pours and insertions (into free space), LIGGGHTS' material
+#: properties (compared by the stage note) and templates
+_HARMLESS_FIX_STYLES = frozenset({
+    "ave/time", "ave/atom", "ave/chunk", "ave/correlate", "ave/correlate/long", "ave/histo", "ave/histo/weight",
+    "ave/euler", "vector", "print", "store/state", "halt", "balance", "check/timestep/gran", "nve/sphere", "nve",
+    "gravity", "pour", "deposit", "insert/pack", "insert/stream", "insert/rate/region",
+    "particletemplate/sphere", "particledistribution/discrete", "property/global", "property/atom",
+    "heat/gran", "heat/gran/conduction", "enforce2d"})
+
+
+def _unlisted(split: list, fixes: dict, regions: dict) -> str | None:
+    """BETWEEN_RUNS where ``split``, run between runs, is not known to leave a contact under way as
+    it was (``fixes``: the fixes in force, ID -> their words; ``regions``: region ID -> its words),
+    else None. A variable or region counts where a fix in force that is not harmless names it (or a
+    region it names uses the variable); a fix defined again with its own words changes nothing.
+
+    Examples
+    --------
+    >>> _unlisted("fix v all viscous 0.01".split(), {}, {}) == BETWEEN_RUNS, _unlisted(["print", "hi"], {}, {})
+    (True, None)
+    >>> wall = {"w": "fix w all wall/gran/region granular hooke 1 1 region r".split()}
+    >>> _unlisted("region r block 0 1 0 1 0 1".split(), wall, {}) == BETWEEN_RUNS
+    True
+    >>> _unlisted("variable k equal 2".split(), wall, {}), _unlisted(["fix", *wall["w"][1:]], wall, {})
+    (None, None)
+    """
+    def harmful(fix: list) -> bool:
+        return fix[3:4] == [] or fix[3] not in _HARMLESS_FIX_STYLES
+
+    def named(name: str) -> bool:
+        fix_words = [w for fix in fixes.values() if harmful(fix) for w in fix[4:]]
+        return name in fix_words or any(
+            f"v_{name}" in w for w in fix_words + [w for r in fix_words if r in regions for w in regions[r]])
+    command = split[0]
+    if command == "fix" and len(split) > 3:
+        return None if fixes.get(split[1]) == list(split) or not harmful(split) else BETWEEN_RUNS
+    if command == "unfix" and len(split) > 1:
+        return BETWEEN_RUNS if split[1] in fixes and harmful(fixes[split[1]]) else None
+    if command == "fix_modify":
+        return None if _accounting(split) else BETWEEN_RUNS
+    if command in ("variable", "next", "region"):
+        return BETWEEN_RUNS if any(named(name) for name in split[1:2 if command != "next" else None]) else None
+    return None if command in _HARMLESS_BETWEEN else BETWEEN_RUNS
 
 
 def _mesh_move_changed(split: list, fixes: dict) -> str | None:
