@@ -214,3 +214,13 @@ def test_what_runs_between_runs_is_said_unless_it_is_harmless(tmp_path, between,
     _, err = audited(deck, tmp_path)
     assert (f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of those "
             f"printed: {between}" in err) == said, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_nothing_is_under_way_after_a_run_of_no_steps(tmp_path):
+    # run 0 sets up and prints; the spheres have not moved, so what follows it changes no contact
+    deck = PERIODIC_PAIR.replace("run 1000\n", "run 0\nfix vv all viscous 0.001\nvelocity all set 0 0 0\n"
+                                               "set atom 1 vx 0.7714285714\nset atom 2 vx -0.2285714286\nrun 1000\n")
+    _, err = audited(deck, tmp_path)
+    assert "between runs" not in err, err

@@ -195,6 +195,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     infos = iter(restarts or ())
     pending: list = []
     moved_since = False            # a run has gone: the atoms are where it left them, never the pass
+    stepped = False                # a run has made a step (or a minimize moved the atoms)
     active: dict = {}              # the fixes defined now, ID -> their words (a deposit still in force makes more
                                    # atoms; a group or move/mesh they use changed between runs is said)
     placed: set = set()            # groups picked by where the atoms were, after a run
@@ -207,6 +208,9 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
         if split and split[0] in ("run", "minimize"):
             moved_since = True
+            # a run 0 makes no step: no contact is under way after it that was not before it
+            steps = number_or_none(split[1]) if len(split) > 1 else None
+            stepped = stepped or split[0] == "minimize" or "upto" in split or steps != 0
         elif split and moved_since and not ran and split[0] in ("group", "set", "delete_atoms"):
             _where_the_run_left(split, placed, cmd)
         elif split and split[:1] == ["group"] and len(split) > 2 and split[2] == "dynamic":
@@ -229,9 +233,10 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _deleted(deck, made, split[2], active)
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
-        if split and moved_since and position < last_run and (
+        if split and stepped and position < last_run and (
                 why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, active)
-                or _regrouped(split, active) or _unexcluded(split) or _unlisted(split, active, deck.regions)) \
+                or _regrouped(split, active) or _unexcluded(split)
+                or _unlisted(split, active, deck.regions, deck.variables)) \
                 and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == why for u in deck.unknown):
             # a contact under way at this step is changed mid-way, and the pass (its runs skipped) cannot
             # say whether one is (field round 39, E03: velocity lv2 set every 250 steps of a 586-step
@@ -2259,32 +2264,40 @@ _HARMLESS_FIX_STYLES = frozenset({
     "ave/euler", "vector", "print", "store/state", "halt", "balance", "check/timestep/gran", "nve/sphere", "nve",
     "gravity", "pour", "deposit", "insert/pack", "insert/stream", "insert/rate/region",
     "particletemplate/sphere", "particledistribution/discrete", "property/global", "property/atom",
-    "heat/gran", "heat/gran/conduction", "enforce2d"})
+    "heat/gran", "heat/gran/conduction", "heat/flow", "enforce2d"})
 
 
-def _unlisted(split: list, fixes: dict, regions: dict) -> str | None:
+def _unlisted(split: list, fixes: dict, regions: dict, variables: dict) -> str | None:
     """BETWEEN_RUNS where ``split``, run between runs, is not known to leave a contact under way as
-    it was (``fixes``: the fixes in force, ID -> their words; ``regions``: region ID -> its words),
-    else None. A variable or region counts where a fix in force that is not harmless names it (or a
-    region it names uses the variable); a fix defined again with its own words changes nothing.
+    it was (``fixes``: the fixes in force, ID -> their words; ``regions``: region ID -> its words;
+    ``variables``: an equal-style variable's formula by name), else None. A variable or region counts
+    where a fix in force that is not harmless names it, or a region it names does, or a formula they
+    name does, however deep; a fix defined again with its own words changes nothing.
 
     Examples
     --------
-    >>> _unlisted("fix v all viscous 0.01".split(), {}, {}) == BETWEEN_RUNS, _unlisted(["print", "hi"], {}, {})
+    >>> _unlisted("fix v all viscous 0.01".split(), {}, {}, {}) == BETWEEN_RUNS, _unlisted(["print", "x"], {}, {}, {})
     (True, None)
     >>> wall = {"w": "fix w all wall/gran/region granular hooke 1 1 region r".split()}
-    >>> _unlisted("region r block 0 1 0 1 0 1".split(), wall, {}) == BETWEEN_RUNS
+    >>> _unlisted("region r block 0 1 0 1 0 1".split(), wall, {}, {}) == BETWEEN_RUNS
     True
-    >>> _unlisted("variable k equal 2".split(), wall, {}), _unlisted(["fix", *wall["w"][1:]], wall, {})
+    >>> _unlisted("variable k equal 2".split(), wall, {}, {}), _unlisted(["fix", *wall["w"][1:]], wall, {}, {})
     (None, None)
+    >>> pushed = {"f": "fix f all addforce v_fx 0 0".split()}
+    >>> _unlisted("variable k equal 2".split(), pushed, {}, {"fx": "2*v_k"}) == BETWEEN_RUNS
+    True
     """
     def harmful(fix: list) -> bool:
         return fix[3:4] == [] or fix[3] not in _HARMLESS_FIX_STYLES
 
-    def named(name: str) -> bool:
-        fix_words = [w for fix in fixes.values() if harmful(fix) for w in fix[4:]]
-        return name in fix_words or any(
-            f"v_{name}" in w for w in fix_words + [w for r in fix_words if r in regions for w in regions[r]])
+    fix_words = [w for fix in fixes.values() if harmful(fix) for w in fix[4:]]
+    text = " ".join(fix_words + [w for r in fix_words if r in regions for w in regions[r]])
+    # the variables the force fixes and their regions read, and those their formulas read
+    read, todo = set(), re.findall(r"v_(\w+)", text)
+    while todo:
+        if (name := todo.pop()) not in read:
+            read.add(name)
+            todo += re.findall(r"v_(\w+)", variables.get(name) or "")
     command = split[0]
     if command == "fix" and len(split) > 3:
         return None if fixes.get(split[1]) == list(split) or not harmful(split) else BETWEEN_RUNS
@@ -2292,8 +2305,10 @@ def _unlisted(split: list, fixes: dict, regions: dict) -> str | None:
         return BETWEEN_RUNS if split[1] in fixes and harmful(fixes[split[1]]) else None
     if command == "fix_modify":
         return None if _accounting(split) else BETWEEN_RUNS
-    if command in ("variable", "next", "region"):
-        return BETWEEN_RUNS if any(named(name) for name in split[1:2 if command != "next" else None]) else None
+    if command == "region":
+        return BETWEEN_RUNS if len(split) > 1 and split[1] in fix_words else None
+    if command in ("variable", "next"):
+        return BETWEEN_RUNS if read & set(split[1:2 if command == "variable" else None]) else None
     return None if command in _HARMLESS_BETWEEN else BETWEEN_RUNS
 
 
