@@ -2272,7 +2272,8 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict) -> str |
     it was (``fixes``: the fixes in force, ID -> their words; ``regions``: region ID -> its words;
     ``variables``: an equal-style variable's formula by name), else None. A variable or region counts
     where a fix in force that is not harmless names it, or a region it names does, or a formula they
-    name does, however deep; a fix defined again with its own words changes nothing.
+    name does, however deep; so does a compute, or a harmless fix, whose value (c_ID, f_ID) they read;
+    a fix defined again with its own words changes nothing.
 
     Examples
     --------
@@ -2286,21 +2287,28 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict) -> str |
     >>> pushed = {"f": "fix f all addforce v_fx 0 0".split()}
     >>> _unlisted("variable k equal 2".split(), pushed, {}, {"fx": "2*v_k"}) == BETWEEN_RUNS
     True
+    >>> _unlisted("compute m all reduce max vx".split(), pushed, {}, {"fx": "c_m/2"}) == BETWEEN_RUNS
+    True
+    >>> _unlisted("compute n all reduce max vx".split(), pushed, {}, {"fx": "c_m/2"})
     """
     def harmful(fix: list) -> bool:
         return fix[3:4] == [] or fix[3] not in _HARMLESS_FIX_STYLES
 
     fix_words = [w for fix in fixes.values() if harmful(fix) for w in fix[4:]]
     text = " ".join(fix_words + [w for r in fix_words if r in regions for w in regions[r]])
-    # the variables the force fixes and their regions read, and those their formulas read
-    read, todo = set(), re.findall(r"v_(\w+)", text)
+    # the variables, computes and fixes (v_, c_, f_) the force fixes and their regions read, and those
+    # the variables' formulas read
+    read, todo = set(), re.findall(r"\b([vcf])_(\w+)", text)
     while todo:
-        if (name := todo.pop()) not in read:
-            read.add(name)
-            todo += re.findall(r"v_(\w+)", variables.get(name) or "")
+        if (ref := todo.pop()) not in read:
+            read.add(ref)
+            todo += re.findall(r"\b([vcf])_(\w+)", variables.get(ref[1]) or "") if ref[0] == "v" else []
     command = split[0]
+    if command in ("compute", "uncompute") and len(split) > 1:
+        return BETWEEN_RUNS if ("c", split[1]) in read else None
     if command == "fix" and len(split) > 3:
-        return None if fixes.get(split[1]) == list(split) or not harmful(split) else BETWEEN_RUNS
+        return None if fixes.get(split[1]) == list(split) or not harmful(split) and ("f", split[1]) not in read \
+            else BETWEEN_RUNS
     if command == "unfix" and len(split) > 1:
         return BETWEEN_RUNS if split[1] in fixes and harmful(fixes[split[1]]) else None
     if command == "fix_modify":
@@ -2308,7 +2316,7 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict) -> str |
     if command == "region":
         return BETWEEN_RUNS if len(split) > 1 and split[1] in fix_words else None
     if command in ("variable", "next"):
-        return BETWEEN_RUNS if read & set(split[1:2 if command == "variable" else None]) else None
+        return BETWEEN_RUNS if read & {("v", name) for name in split[1:2 if command == "variable" else None]} else None
     return None if command in _HARMLESS_BETWEEN else BETWEEN_RUNS
 
 
