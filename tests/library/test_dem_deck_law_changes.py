@@ -224,3 +224,39 @@ def test_nothing_is_under_way_after_a_run_of_no_steps(tmp_path):
                                                "set atom 1 vx 0.7714285714\nset atom 2 vx -0.2285714286\nrun 1000\n")
     _, err = audited(deck, tmp_path)
     assert "between runs" not in err, err
+
+
+#: Field round 43's pair: 4 mm and 6 mm spheres meeting head-on at 1 m/s at step 100, gravity across
+FIELD_PAIR = PERIODIC_PAIR.replace("fix move all nve/sphere", "fix grav all gravity 9.81 vector 0 0 -1\n"
+                                   "fix integ all nve/sphere").replace("0.03745 0.02", "0.017950 0.02") \
+    .replace("0.00355 0.02", "0.023050 0.02").replace("run 1000\n", "")
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_part_of_a_wall_region_moved_mid_contact_is_said(tmp_path):
+    # field round 43, B73: the wall's region is the intersection of two planes far off; one of them,
+    # defined again under the type 2 sphere 200 steps into the contact: LAMMPS 0.365, 0.4149 printed
+    deck = FIELD_PAIR + ("region a plane 0.035 0 0 -1 0 0 units box\nregion b plane 0.036 0 0 -1 0 0 units box\n"
+                         "region u intersect 2 a b\nfix w2 all wall/gran/region granular hooke 2000 3000 damping "
+                         "mass_velocity tangential linear_nohistory 1 0.3 region u\nrun 300\nregion a delete\n"
+                         "region a plane 0.0259 0 0 -1 0 0 units box\nrun 2000\n")
+    got, err = audited(deck, tmp_path)
+    assert f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of those " \
+           "printed: region a plane 0.0259 0 0 -1 0 0 units box" in err, err
+    assert "region a delete" not in err, err          # its next definition is what is weighed
+    assert abs(abs(lammps_separation_speed(deck, tmp_path)) - stage_eps(got)[-1]) > 0.03
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between, said", [
+    # field round 43, B85: a sphere poured at the pair mid-contact (LAMMPS 0.732 where 0.4149 was printed)
+    ("region pr block 0.0282 0.0312 0.018 0.022 0.048 0.052 units box\nfix pour all pour 1 1 4767548 region pr "
+     "diam one 0.004 dens 2500 2500 vol 1.0 100 vel -10.0 -10.0 0.0 0.0 0.0", True),
+    ("variable k equal 0.0", False),              # given again in its own words
+    ("region plate delete\nregion plate plane 0 0 0.045 0 0 1 units box", False)])
+def test_a_pour_mid_contact_is_said_and_a_definition_repeated_is_not(tmp_path, between, said):
+    deck = FIELD_PAIR + f"variable k equal 0.0\nfix af all addforce 0 0 v_k\n{PLATE}run 300\n{between}\nrun 2000\n"
+    _, err = audited(deck, tmp_path)
+    assert (BETWEEN in err) == said, err
