@@ -260,3 +260,17 @@ def test_a_pour_mid_contact_is_said_and_a_definition_repeated_is_not(tmp_path, b
     deck = FIELD_PAIR + f"variable k equal 0.0\nfix af all addforce 0 0 v_k\n{PLATE}run 300\n{between}\nrun 2000\n"
     _, err = audited(deck, tmp_path)
     assert (BETWEEN in err) == said, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("reset, said", [("", False), (" reset yes", True)])
+def test_an_adapt_unfixed_is_said_where_the_engine_puts_the_sizes_back(tmp_path, reset, said):
+    # re-audit of rounds 27-42: with reset no (the default) the engine keeps the adapted sizes when the
+    # fix goes (round 39, D20: LAMMPS 0.386313 as audited); with reset yes it restores them mid-way
+    deck = PERIODIC_PAIR.replace("run 1000\n", f"variable d equal 0.005\nfix ad all adapt 1 atom diameter v_d{reset}\n"
+                                               "run 1000\n") + "run 300\nunfix ad\nreset_atoms id\nrun 2000\n"
+    _, err = audited(deck, tmp_path)
+    assert (f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of those "
+            "printed: unfix ad" in err) == said, err
+    assert "printed: reset_atoms id" not in err, err      # IDs given anew move no sphere

@@ -2257,7 +2257,10 @@ _HARMLESS_BETWEEN = frozenset({
     "modify_timing", "lattice", "molecule", "replicate", "hard_particles", "soft_particles", "special_bonds",
     "clear", "units", "atom_style", "boundary", "dimension", "newton", "create_box", "read_data", "read_restart",
     "pair_style", "pair_coeff", "pair_modify", "timestep", "group", "set", "velocity", "displace_atoms",
-    "change_box", "create_atoms", "delete_atoms", "read_dump"})
+    "change_box", "create_atoms", "delete_atoms", "read_dump",
+    # atom IDs given anew: the spheres, their places and velocities stay (field rounds 27-42 re-audited:
+    # the rows as before in six decks)
+    "reset_atoms", "reset_atom_ids"})
 #: Fix styles that change no contact under way where defined or removed between runs: output and
 #: averaging, integrators of the spheres (a pair a stage leaves unmoved is said by the stage note),
 #: gravity (weighed in each stage), LIGGGHTS' material properties (compared by the stage note) and
@@ -2335,8 +2338,7 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, last: di
             else BETWEEN_RUNS
     if command == "unfix" and len(split) > 1:
         stopped = fixes.get(split[1], [])
-        return BETWEEN_RUNS if stopped and harmful(stopped) and stopped[3:4] != [] and \
-            stopped[3] not in _INSERTING_FIXES else None
+        return BETWEEN_RUNS if stopped and harmful(stopped) and not _stops_harmlessly(stopped) else None
     if command == "fix_modify":
         return None if _accounting(split) else BETWEEN_RUNS
     if command == "region":
@@ -2346,6 +2348,28 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, last: di
     if split[:2] == ["kspace_style", "none"]:
         return None
     return None if command in _HARMLESS_BETWEEN else BETWEEN_RUNS
+
+
+def _stops_harmlessly(fix: list) -> bool:
+    """Whether unfixing ``fix`` (its words) leaves a contact under way as it was: a pour or insertion
+    stops making spheres, an evaporate deleting them, a dt/reset changing the step (the last one
+    stays, which the stage note weighs), a fix adapt without ``reset yes`` (the engine keeps the
+    adapted values: field round 39, D20, LAMMPS 0.386313 as audited) and a fix deform that moves no
+    atom (``remap none`` or ``v``).
+
+    Examples
+    --------
+    >>> _stops_harmlessly("fix a all adapt 1 atom diameter v_d".split())
+    True
+    >>> _stops_harmlessly("fix a all adapt 1 atom diameter v_d reset yes".split())
+    False
+    >>> _stops_harmlessly("fix d all deform 1 x scale 1.05".split())
+    False
+    """
+    style, keywords = fix[3] if len(fix) > 3 else "", list(zip(fix[4:], fix[5:]))
+    return style in _INSERTING_FIXES or style in ("evaporate", "dt/reset") or \
+        style == "adapt" and ("reset", "yes") not in keywords or \
+        style == "deform" and not _remaps_atoms(fix)
 
 
 def _mesh_move_changed(split: list, fixes: dict) -> str | None:
