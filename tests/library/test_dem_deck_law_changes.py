@@ -274,3 +274,16 @@ def test_an_adapt_unfixed_is_said_where_the_engine_puts_the_sizes_back(tmp_path,
     assert (f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of those "
             "printed: unfix ad" in err) == said, err
     assert "printed: reset_atoms id" not in err, err      # IDs given anew move no sphere
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("between, said", [("fix grav all gravity 30 vector 0 0 -1", True), ("unfix grav", True),
+                                           ("fix grav all gravity 9.81 vector 0 0 -1", False)])
+def test_gravity_changed_between_runs_is_said(tmp_path, between, said):
+    # each stage weighs its gravity on a sphere at a wall; a contact spanning a change feels both
+    deck = PERIODIC_PAIR.replace("run 1000\n", "fix grav all gravity 9.81 vector 0 0 -1\nrun 1000\n") + \
+        f"run 300\n{between}\nrun 2000\n"
+    _, err = audited(deck, tmp_path)
+    assert (f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of those "
+            f"printed: {between}" in err) == said, err

@@ -2263,13 +2263,14 @@ _HARMLESS_BETWEEN = frozenset({
     "reset_atoms", "reset_atom_ids"})
 #: Fix styles that change no contact under way where defined or removed between runs: output and
 #: averaging, integrators of the spheres (a pair a stage leaves unmoved is said by the stage note),
-#: gravity (weighed in each stage), LIGGGHTS' material properties (compared by the stage note) and
-#: templates. Not pours and insertions: a sphere poured mid-contact may strike the pair (field round
-#: 43, B85: LAMMPS 0.732 where 0.4149 was printed), though stopping one (unfix) is harmless.
+#: LIGGGHTS' material properties (compared by the stage note) and templates. Not pours and
+#: insertions: a sphere poured mid-contact may strike the pair (field round 43, B85: LAMMPS 0.732
+#: where 0.4149 was printed), though stopping one (unfix) is harmless; nor gravity, which each stage
+#: weighs on a sphere at a wall, but not a contact that spans a change of it.
 _HARMLESS_FIX_STYLES = frozenset({
     "ave/time", "ave/atom", "ave/chunk", "ave/correlate", "ave/correlate/long", "ave/histo", "ave/histo/weight",
     "ave/euler", "vector", "print", "store/state", "halt", "balance", "check/timestep/gran", "nve/sphere", "nve",
-    "gravity", "particletemplate/sphere", "particledistribution/discrete", "property/global", "property/atom",
+    "particletemplate/sphere", "particledistribution/discrete", "property/global", "property/atom",
     "heat/gran", "heat/gran/conduction", "heat/flow", "enforce2d"})
 
 
@@ -2279,7 +2280,7 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, last: di
     ``variables``: an equal-style variable's formula by name; ``last``: (region|variable, name) ->
     the words that last defined it), else None. A region counts where a fix in force that is not
     harmless names it, or a region such a fix names does (a union's or intersection's parts, however
-    deep); a variable where those fixes (or a gravity) or regions read it, or a formula they read does,
+    deep); a variable where those fixes or regions read it, or a formula they read does,
     however deep; so does a compute, or a harmless fix, whose value (c_ID, f_ID) they read. A fix, a
     region or a variable defined again in its own words changes nothing, nor does deleting a region or
     a variable (its next definition is what is weighed).
@@ -2320,7 +2321,7 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, last: di
             named.add(region)
             todo += [w for w in regions[region][2:] if w in regions]
     region_words = fix_words + [w for r in named for w in regions[r]]
-    text = " ".join(region_words + [w for fix in fixes.values() if fix[3:4] == ["gravity"] for w in fix[4:]])
+    text = " ".join(region_words)
     # the variables, computes and fixes (v_, c_, f_) they read, and those the variables' formulas read
     read, refs = set(), re.findall(r"\b([vcf])_(\w+)", text)
     while refs:
