@@ -287,3 +287,29 @@ def test_gravity_changed_between_runs_is_said(tmp_path, between, said):
     _, err = audited(deck, tmp_path)
     assert (f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of those "
             f"printed: {between}" in err) == said, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_wall_region_given_again_under_another_lattice_is_said(tmp_path):
+    # field round 44, V09: the same words in lattice units under a finer lattice put the wall 9 mm nearer,
+    # under the type 2 sphere mid-contact: LAMMPS 0.365 where 0.4149 was printed with no word
+    wall = ("region a plane 3.5 0 0 -1 0 0\nfix w2 all wall/gran/region granular hooke 2000 3000 damping mass_velocity "
+            "tangential linear_nohistory 1 0.3 region a\n")
+    deck = FIELD_PAIR + f"lattice sc 0.01\n{wall}run 300\nlattice sc 0.0074\nregion a delete\n" \
+                        "region a plane 3.5 0 0 -1 0 0\nrun 2000\n"
+    got, err = audited(deck, tmp_path)
+    assert f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of those " \
+           "printed: region a plane 3.5 0 0 -1 0 0" in err, err
+    assert abs(abs(lammps_separation_speed(deck, tmp_path)) - stage_eps(got)[-1]) > 0.03
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_set_keyword_after_one_of_two_values_is_read(tmp_path):
+    # field round 44, K23: dipole/random takes two values; the vx after it was read as a value
+    deck = PERIODIC_PAIR.replace("atom_style sphere 1", "atom_style hybrid sphere 1 dipole") + \
+        "run 300\nset atom 2 dipole/random 4321 1.0 vx 0.5\nrun 2000\n"
+    _, err = audited(deck, tmp_path)
+    assert "between runs: a contact under way at that step is changed mid-way, and its eps is none of those " \
+           "printed: set atom 2 dipole/random 4321 1.0 vx 0.5" in err, err

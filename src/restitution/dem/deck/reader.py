@@ -222,7 +222,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             raise DeckError(place(cmd.loc), cmd.text, f"LAMMPS stops here: {GUARDED[split[0]]}")
         if split and split[0] == "set":
             _resized(deck, deposited_ran)
-            if any(k in _RETYPE for k in split[3::2]):
+            if any(k in _RETYPE for k, _ in _set_keywords(split)):
                 # its members keep their group under their new type
                 for name, static in deck.groups.items():
                     if static and name not in deck.empty_groups:
@@ -237,7 +237,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
         if split and stepped and position < last_run and (
                 why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, active)
                 or _regrouped(split, active) or _unexcluded(split)
-                or _unlisted(split, active, deck.regions, deck.variables, defined)) \
+                or _unlisted(split, active, deck.regions, deck.variables,
+                             len(split) > 1 and defined.get((split[0], split[1])) == _definition(split, deck))) \
                 and not any(tuple(u[:2]) == tuple(cmd.loc) and u[3] == why for u in deck.unknown):
             # a contact under way at this step is changed mid-way, and the pass (its runs skipped) cannot
             # say whether one is (field round 39, E03: velocity lv2 set every 250 steps of a 586-step
@@ -249,7 +250,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             deck.unknown.append((*cmd.loc, cmd.text, why))
         # after the check above, which judges an unfix or a group against the fixes before it
         if split and split[0] in ("region", "variable") and len(split) > 2 and split[2] != "delete":
-            defined[split[0], split[1]] = list(split)
+            defined[split[0], split[1]] = _definition(split, deck)
         if split and split[0] == "fix" and len(split) > 1:
             active[split[1]] = split
         elif split and split[0] == "unfix" and len(split) > 1:
@@ -1048,7 +1049,7 @@ def _where_the_run_left(split: list, placed: set, cmd) -> None:
         return None
     why = None
     if split[0] == "set" and len(split) > 3:
-        sizing = [(k, v) for k, v in zip(split[3::2], split[4::2]) if k in _SIZING_SET]
+        sizing = [(k, v[0]) for k, v in _set_keywords(split) if k in _SIZING_SET and v]
         if not sizing:
             return None
         if split[1] == "region":
@@ -2183,6 +2184,25 @@ _SIZELESS_SET = frozenset({"x", "y", "z", "vx", "vy", "vz", "omega", "angmom", "
 #: set keywords that take more than one value (LIGGGHTS' property/atom: a name and a value)
 _SET_VALUES = {"image": 3, "omega": 3, "angmom": 3, "dipole": 3, "quat": 4, "dipole/random": 2, "spin": 4,
                "spin/random": 2, "property/atom": 2, "type/fraction": 3, "type/ratio": 3, "type/subset": 3}
+def _set_keywords(words: list) -> list:
+    """A set command's keywords with their values, [(keyword, [values])], each keyword taking as many
+    values as ``_SET_VALUES`` says (one where it says nothing): reading them two words at a time
+    takes a value for a keyword after dipole/random (field round 44, K18: ``set atom 2 dipole/random
+    4321 1.0 density 5000`` between runs, its density unseen: 0.4149 printed, LAMMPS 0.376).
+
+    Examples
+    --------
+    >>> _set_keywords("set atom 2 dipole/random 4321 1.0 vx 0.5".split())
+    [('dipole/random', ['4321', '1.0']), ('vx', ['0.5'])]
+    """
+    out, k = [], 3
+    while k < len(words):
+        n = _SET_VALUES.get(words[k], 1)
+        out.append((words[k], words[k + 1:k + 1 + n]))
+        k += 1 + n
+    return out
+
+
 #: set keywords that give some of the atoms chosen another type (the new type their first value)
 _RETYPE = ("type", "type/fraction", "type/ratio", "type/subset")
 #: set keywords that change an atom's size or type
@@ -2210,7 +2230,7 @@ def _kicks(split: list) -> str | None:
     (True, None)
     """
     if split[0] in ("velocity", "displace_atoms", "change_box", "read_dump", "create_atoms", "delete_atoms") or \
-            split[0] == "set" and any(k in _KICKING_SET for k in split[3::2]) or \
+            split[0] == "set" and any(k in _KICKING_SET for k, _ in _set_keywords(split)) or \
             split[0] == "read_data" and "add" in split[2:]:
         return KICKED
     return None
@@ -2274,11 +2294,21 @@ _HARMLESS_FIX_STYLES = frozenset({
     "heat/gran", "heat/gran/conduction", "heat/flow", "enforce2d"})
 
 
-def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, last: dict) -> str | None:
+def _definition(split: list, deck: Deck) -> list:
+    """What a region or variable command defines, to tell a definition given again unchanged: its
+    words, and for a region not in box units the lattice in force, whose spacings scale its numbers
+    (field round 44, V09: ``lattice sc 0.0074`` between runs, the wall's region given again in its
+    own words 2.6 mm nearer: LAMMPS 0.365 where 0.4149 was printed with no word)."""
+    if split[0] == "region" and split[-2:] != ["units", "box"]:
+        return [*split, "|lattice", *(deck.lattice or [])]
+    return list(split)
+
+
+def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, repeated: bool) -> str | None:
     """BETWEEN_RUNS where ``split``, run between runs, is not known to leave a contact under way as
     it was (``fixes``: the fixes in force, ID -> their words; ``regions``: region ID -> its words;
-    ``variables``: an equal-style variable's formula by name; ``last``: (region|variable, name) ->
-    the words that last defined it), else None. A region counts where a fix in force that is not
+    ``variables``: an equal-style variable's formula by name; ``repeated``: whether it is a region or
+    variable defined again as it was last (:func:`_definition`)), else None. A region counts where a fix in force that is not
     harmless names it, or a region such a fix names does (a union's or intersection's parts, however
     deep); a variable where those fixes or regions read it, or a formula they read does,
     however deep; so does a compute, or a harmless fix, whose value (c_ID, f_ID) they read. A fix, a
@@ -2287,28 +2317,28 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, last: di
 
     Examples
     --------
-    >>> _unlisted("fix v all viscous 0.01".split(), {}, {}, {}, {}) == BETWEEN_RUNS
+    >>> _unlisted("fix v all viscous 0.01".split(), {}, {}, {}, False) == BETWEEN_RUNS
     True
-    >>> _unlisted(["print", "x"], {}, {}, {}, {}), _unlisted("pair_modify shift yes".split(), {}, {}, {}, {})
+    >>> _unlisted(["print", "x"], {}, {}, {}, False), _unlisted("pair_modify shift yes".split(), {}, {}, {}, False)
     (None, None)
     >>> wall = {"w": "fix w all wall/gran/region granular hooke 1 1 region u".split()}
     >>> parts = {"u": "region u union 2 a b".split(), "b": "region b plane 0 0 0 0 0 1 move NULL NULL v_z".split()}
-    >>> [_unlisted(f"region {r} block 0 1 0 1 0 1".split(), wall, parts, {}, {}) == BETWEEN_RUNS for r in "uac"]
+    >>> [_unlisted(f"region {r} block 0 1 0 1 0 1".split(), wall, parts, {}, False) == BETWEEN_RUNS for r in "uac"]
     [True, True, False]
-    >>> _unlisted("variable z equal 2".split(), wall, parts, {}, {}) == BETWEEN_RUNS
+    >>> _unlisted("variable z equal 2".split(), wall, parts, {}, False) == BETWEEN_RUNS
     True
-    >>> _unlisted("variable z equal 2".split(), wall, parts, {}, {("variable", "z"): "variable z equal 2".split()})
-    >>> _unlisted("variable k equal 2".split(), wall, {}, {}, {}), _unlisted(["fix", *wall["w"][1:]], wall, {}, {}, {})
+    >>> _unlisted("variable z equal 2".split(), wall, parts, {}, True)
+    >>> _unlisted("variable k equal 2".split(), wall, {}, {}, False), _unlisted(["fix", *wall["w"][1:]], wall, {}, {}, False)
     (None, None)
     >>> pushed = {"f": "fix f all addforce v_fx 0 0".split()}
-    >>> _unlisted("variable k equal 2".split(), pushed, {}, {"fx": "2*v_k"}, {}) == BETWEEN_RUNS
+    >>> _unlisted("variable k equal 2".split(), pushed, {}, {"fx": "2*v_k"}, False) == BETWEEN_RUNS
     True
-    >>> _unlisted("compute m all reduce max vx".split(), pushed, {}, {"fx": "c_m/2"}, {}) == BETWEEN_RUNS
+    >>> _unlisted("compute m all reduce max vx".split(), pushed, {}, {"fx": "c_m/2"}, False) == BETWEEN_RUNS
     True
-    >>> _unlisted("compute n all reduce max vx".split(), pushed, {}, {"fx": "c_m/2"}, {})
-    >>> _unlisted("fix p all pour 1 1 7 region r".split(), {}, {}, {}, {}) == BETWEEN_RUNS
+    >>> _unlisted("compute n all reduce max vx".split(), pushed, {}, {"fx": "c_m/2"}, False)
+    >>> _unlisted("fix p all pour 1 1 7 region r".split(), {}, {}, {}, False) == BETWEEN_RUNS
     True
-    >>> _unlisted("unfix p".split(), {"p": "fix p all pour 1 1 7 region r".split()}, {}, {}, {})
+    >>> _unlisted("unfix p".split(), {"p": "fix p all pour 1 1 7 region r".split()}, {}, {}, False)
     """
     def harmful(fix: list) -> bool:
         return fix[3:4] == [] or fix[3] not in _HARMLESS_FIX_STYLES
@@ -2329,9 +2359,10 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, last: di
             read.add(ref)
             refs += re.findall(r"\b([vcf])_(\w+)", variables.get(ref[1]) or "") if ref[0] == "v" else []
     command = split[0]
-    if command in ("region", "variable") and len(split) > 1 and (
-            split[2:3] == ["delete"] or last.get((command, split[1])) == list(split)):
+    if command in ("region", "variable") and len(split) > 1 and (split[2:3] == ["delete"] or repeated):
         return None
+    if command == "pair_modify" and "compute" in split:
+        return BETWEEN_RUNS      # compute no: the pair style's forces are not computed at all
     if command in ("compute", "uncompute") and len(split) > 1:
         return BETWEEN_RUNS if ("c", split[1]) in read else None
     if command == "fix" and len(split) > 3:
