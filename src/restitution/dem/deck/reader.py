@@ -2184,6 +2184,8 @@ _SIZELESS_SET = frozenset({"x", "y", "z", "vx", "vy", "vz", "omega", "angmom", "
 #: set keywords that take more than one value (LIGGGHTS' property/atom: a name and a value)
 _SET_VALUES = {"image": 3, "omega": 3, "angmom": 3, "dipole": 3, "quat": 4, "dipole/random": 2, "spin": 4,
                "spin/random": 2, "property/atom": 2, "type/fraction": 3, "type/ratio": 3, "type/subset": 3}
+
+
 def _set_keywords(words: list) -> list:
     """A set command's keywords with their values, [(keyword, [values])], each keyword taking as many
     values as ``_SET_VALUES`` says (one where it says nothing): reading them two words at a time
@@ -2298,8 +2300,8 @@ def _definition(split: list, deck: Deck) -> list:
     """What a region or variable command defines, to tell a definition given again unchanged: its
     words, and for a region not in box units the lattice in force, whose spacings scale its numbers
     (field round 44, V09: ``lattice sc 0.0074`` between runs, the wall's region given again in its
-    own words 2.6 mm nearer: LAMMPS 0.365 where 0.4149 was printed with no word)."""
-    if split[0] == "region" and split[-2:] != ["units", "box"]:
+    own words 9 mm nearer: LAMMPS 0.365 where 0.4149 was printed with no word)."""
+    if split[0] == "region" and ("units", "box") not in zip(split, split[1:]):
         return [*split, "|lattice", *(deck.lattice or [])]
     return list(split)
 
