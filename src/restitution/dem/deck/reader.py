@@ -2345,30 +2345,36 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, repeated
     def harmful(fix: list) -> bool:
         return fix[3:4] == [] or fix[3] not in _HARMLESS_FIX_STYLES
 
-    fix_words = [w for fix in fixes.values() if harmful(fix) for w in fix[4:]]
-    # the regions those fixes name, and the parts of those, however deep
-    named, todo = set(), [w for w in fix_words if w in regions]
-    while todo:
-        if (region := todo.pop()) not in named:
-            named.add(region)
-            todo += [w for w in regions[region][2:] if w in regions]
-    region_words = fix_words + [w for r in named for w in regions[r]]
-    text = " ".join(region_words)
-    # the variables, computes and fixes (v_, c_, f_) they read, and those the variables' formulas read
-    read, refs = set(), re.findall(r"\b([vcf])_(\w+)", text)
-    while refs:
-        if (ref := refs.pop()) not in read:
-            read.add(ref)
-            refs += re.findall(r"\b([vcf])_(\w+)", variables.get(ref[1]) or "") if ref[0] == "v" else []
+    def region_words() -> list:
+        """The words of the force fixes, of the regions they name and of those regions' parts."""
+        fix_words = [w for fix in fixes.values() if harmful(fix) for w in fix[4:]]
+        named, todo = set(), [w for w in fix_words if w in regions]
+        while todo:
+            if (region := todo.pop()) not in named:
+                named.add(region)
+                todo += [w for w in regions[region][2:] if w in regions]
+        return fix_words + [w for r in named for w in regions[r]]
+
+    def read() -> set:
+        """The variables, computes and fixes (v_, c_, f_) those words read, and those the variables'
+        formulas read, however deep."""
+        out, refs = set(), re.findall(r"\b([vcf])_(\w+)", " ".join(region_words()))
+        while refs:
+            if (ref := refs.pop()) not in out:
+                out.add(ref)
+                refs += re.findall(r"\b([vcf])_(\w+)", variables.get(ref[1]) or "") if ref[0] == "v" else []
+        return out
+
+    # only the commands that may name what a force fix reads pay for finding it
     command = split[0]
     if command in ("region", "variable") and len(split) > 1 and (split[2:3] == ["delete"] or repeated):
         return None
     if command == "pair_modify" and "compute" in split:
         return BETWEEN_RUNS      # compute no: the pair style's forces are not computed at all
     if command in ("compute", "uncompute") and len(split) > 1:
-        return BETWEEN_RUNS if ("c", split[1]) in read else None
+        return BETWEEN_RUNS if ("c", split[1]) in read() else None
     if command == "fix" and len(split) > 3:
-        return None if fixes.get(split[1]) == list(split) or not harmful(split) and ("f", split[1]) not in read \
+        return None if fixes.get(split[1]) == list(split) or not harmful(split) and ("f", split[1]) not in read() \
             else BETWEEN_RUNS
     if command == "unfix" and len(split) > 1:
         stopped = fixes.get(split[1], [])
@@ -2376,9 +2382,10 @@ def _unlisted(split: list, fixes: dict, regions: dict, variables: dict, repeated
     if command == "fix_modify":
         return None if _accounting(split) else BETWEEN_RUNS
     if command == "region":
-        return BETWEEN_RUNS if len(split) > 1 and split[1] in region_words else None
+        return BETWEEN_RUNS if len(split) > 1 and split[1] in region_words() else None
     if command in ("variable", "next"):
-        return BETWEEN_RUNS if read & {("v", name) for name in split[1:2 if command == "variable" else None]} else None
+        names = {("v", name) for name in split[1:2 if command == "variable" else None]}
+        return BETWEEN_RUNS if read() & names else None
     if split[:2] == ["kspace_style", "none"]:
         return None
     return None if command in _HARMLESS_BETWEEN else BETWEEN_RUNS
