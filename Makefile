@@ -12,7 +12,8 @@ export PYTHONHASHSEED := 0
 .PHONY: venv test test-fast fuzz docs
 
 $(STAMP): pyproject.toml workflow/pyproject.toml constraints.txt
-	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	@# a venv whose creation was interrupted has a python but no pip: made again, not patched
+	@$(BIN)/python -c 'import pip' 2>/dev/null || $(PYTHON) -m venv --clear $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	@# the library and, beside it, the pipeline's helpers (workflow/pyproject.toml: not in the wheel)
 	$(BIN)/python -m pip install --quiet -c constraints.txt -e '.[test]' -e ./workflow
