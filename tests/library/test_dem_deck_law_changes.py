@@ -313,3 +313,48 @@ def test_a_set_keyword_after_one_of_two_values_is_read(tmp_path):
     _, err = audited(deck, tmp_path)
     assert "between runs: a contact under way at that step is changed mid-way, and its eps is none of those " \
            "printed: set atom 2 dipole/random 4321 1.0 vx 0.5" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+@pytest.mark.parametrize("before, said", [("run 300\n", True), ("", False)], ids=["after a run", "before any run"])
+def test_a_minimize_after_a_run_is_said(tmp_path, before, said):
+    # field round 45, B60: a minimize 200 steps into the contact moves the spheres at once (LAMMPS
+    # 0.0053 where 0.4149 was printed with no word); one before any run moves them before a contact
+    deck = FIELD_PAIR + f"{before}min_style fire\nminimize 0.0 0.0 200 2000\nrun 2000\n"
+    got, err = audited(deck, tmp_path)
+    assert (f"{BETWEEN}: a contact under way at that step may be changed mid-way, and its eps may be none of "
+            "those printed: minimize 0.0 0.0 200 2000" in err) == said, err
+    if said:
+        assert abs(abs(lammps_separation_speed(deck, tmp_path)) - stage_eps(got)[-1]) > 0.05
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_group_a_fix_names_as_its_argument_given_again_is_said(tmp_path):
+    # field round 45, B29: the second group of a spring couple, filled with a sphere of the pair
+    # mid-contact (LAMMPS 4.44 where 0.4149 was printed with no word)
+    deck = FIELD_PAIR + ("create_atoms 1 single 0.005 0.02 0.08\nset atom 3 diameter 0.004 density 2500\n"
+                         "group g3 id 3\ngroup gx id 3\nfix sp g3 spring couple gx 50.0 0.0 0.0 0.0 0.0\nrun 300\n"
+                         "group gx clear\ngroup gx id 2\nrun 2000\n")
+    _, err = audited(deck, tmp_path)
+    assert "(group g3, and group gx it names)" in err, err
+    assert "defines again a group a fix acts on, between runs: a contact under way at that step meets that fix " \
+           "(or loses it) mid-way, and its eps is none of those printed: group gx id 2" in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_wall_region_whose_part_moves_in_a_run_is_not_audited(tmp_path):
+    # field round 45, B54: a plane part of the wall's intersect region moved by move v_dx within the run
+    # (LAMMPS 0.365 where 0.4149 was printed with no word)
+    deck = FIELD_PAIR + ("variable dx equal -0.0091*(step>=300)\n"
+                         "region a plane 0.035 0 0 -1 0 0 move v_dx NULL NULL units box\n"
+                         "region far plane 0.0 0.0 0.0 0 0 1 units box\nregion u intersect 2 a far\n"
+                         "fix w2 all wall/gran/region granular hooke 2000 3000 damping mass_velocity tangential "
+                         "linear_nohistory 1 0.3 region u\nrun 3000\n")
+    got, err = audited(deck, tmp_path)
+    assert "region a moves (keyword move), a part of region u: its faces may move under a sphere during a contact" \
+           in err and "the wall's contacts are not audited" in err, err
+    assert not any(s["walls"] for s in got["stages"]), got
+    assert abs(abs(lammps_separation_speed(deck, tmp_path)) - stage_eps(got)[-1]) > 0.03

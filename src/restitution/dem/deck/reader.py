@@ -207,6 +207,10 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             split = words(cmd.text)
         except ScriptError as why:
             raise DeckError(place(cmd.loc), cmd.text, str(why)) from None
+        # a minimize is judged by the runs before it, not by its own steps: it moves the atoms at
+        # once, so one after a run that made a step changes a contact under way (field round 45,
+        # B60: run 300, minimize, run 2000: LAMMPS 0.0053 where 0.4149 was printed with no word)
+        before = stepped
         if split and split[0] in ("run", "minimize"):
             moved_since = True
             # a run 0 makes no step: no contact is under way after it that was not before it
@@ -234,7 +238,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _deleted(deck, made, split[2], active)
         if split and split[0] == "variable" and len(split) > 2:
             _variable(deck, split)
-        if split and stepped and position < last_run and (
+        if split and before and position < last_run and (
                 why := _kicks(split) or _wall_changed(deck, split) or _mesh_move_changed(split, active)
                 or _regrouped(split, active) or _unexcluded(split)
                 or _unlisted(split, active, deck.regions, deck.variables,
@@ -1908,8 +1912,12 @@ def _fix(deck: Deck, words: list, where: str, line: str, loc) -> None:
     elif style not in _IRRELEVANT_FIXES:
         # a fix the audit does not know may push its atoms (a wall potential, a field): the rows
         # do not include what it does, and say so
+        # and to those of every group it names (field round 45, B46: fix spring couple with its second
+        # group lv2, only its first was named)
+        named = sorted({w for w in words[3:] if w in deck.groups and w != words[2]})
         deck.unknown.append((*loc, line, f"not understood: fix {style} may add forces to its atoms (group "
-                                         f"{words[2]}), which the eps printed do not include"))
+                                         f"{words[2]}{''.join(f', and group {g} it names' for g in named)}), "
+                                         "which the eps printed do not include"))
 
 
 def _remaps_atoms(words: list) -> bool:
@@ -2248,10 +2256,10 @@ UNEXCLUDED = ("changes which pairs the engine excludes, between runs: a pair exc
 
 def _regrouped(split: list, fixes: dict) -> str | None:
     """REGROUPED where ``split`` defines (again) a group that a fix in force (``fixes``: ID -> its words)
-    acts on (field round 42, R09:
-    group gx id 5 before any atom, fix sf gx setforce 0 0 0, run 300, group gx id 2: LAMMPS 0.395 where
-    0.4149 was printed with no word)."""
-    return REGROUPED if split[0] == "group" and len(split) > 2 and any(w[2:3] == split[1:2] for w in fixes.values()) \
+    acts on or names among its arguments (field round 42, R09: group gx id 5 before any atom, fix sf gx
+    setforce 0 0 0, run 300, group gx id 2: LAMMPS 0.395 where 0.4149 was printed with no word; round
+    45, B29: fix sp g3 spring couple gx ..., run 300, group gx clear, group gx id 2: LAMMPS 4.44)."""
+    return REGROUPED if split[0] == "group" and len(split) > 2 and any(split[1] in w[2:] for w in fixes.values()) \
         else None
 
 
@@ -2273,7 +2281,7 @@ BETWEEN_RUNS = ("is run between runs, and the audit does not know it to leave a 
 _HARMLESS_BETWEEN = frozenset({
     "print", "echo", "log", "info", "timer", "shell", "python", "thermo", "thermo_style", "thermo_modify",
     "dump", "dump_modify", "undump", "write_dump", "write_data", "write_restart", "write_coeff", "restart",
-    "compute", "compute_modify", "uncompute", "label", "jump", "if", "include", "quit", "run", "minimize",
+    "compute", "compute_modify", "uncompute", "label", "jump", "if", "include", "quit", "run",
     "reset_timestep", "run_style", "min_style", "min_modify", "balance", "partition", "package", "suffix",
     "processors", "comm_modify", "comm_style", "communicate", "atom_modify", "neighbor", "neigh_modify",
     "modify_timing", "lattice", "molecule", "replicate", "hard_particles", "soft_particles", "special_bonds",

@@ -792,8 +792,27 @@ def region_moves(deck: Deck, rid: str) -> str | None:
     ...          variables={"zw": "0.001*sin(time)", "lo": "0.002*time", "th": "0"})
     >>> region_moves(d, "pl"), region_moves(d, "up"), region_moves(d, "box"), region_moves(d, "still")
     ('region pl moves (keyword move)', 'region up is placed by a variable (v_lo), which LAMMPS evaluates at every step', None, None)
+
+    A union or intersect moves where any of its parts does, however deep:
+
+    >>> d.regions["u"] = "region u intersect 2 box pl".split()
+    >>> d.regions["uu"] = "region uu union 1 u units box".split()
+    >>> region_moves(d, "uu")
+    'region pl moves (keyword move), a part of region u, a part of region uu'
     """
+    return _moves(deck, rid, set())
+
+
+def _moves(deck: Deck, rid: str, seen: set) -> str | None:
+    """:func:`region_moves` of ``rid``, the regions in ``seen`` (those it is a part of) left out."""
     words = deck.regions.get(rid) or []
+    # the parts of a union or intersect are the regions LAMMPS asks at every step (field round 45,
+    # B54: an intersect under a wall whose plane part moved by move v_dx mid-run, LAMMPS 0.365 where
+    # 0.4149 was printed with no word)
+    if words[2:3] in (["union"], ["intersect"]) and (count := number_or_none(words[3] if len(words) > 3 else "")):
+        for part in words[4:4 + int(count)]:
+            if part not in seen and (why := _moves(deck, part, seen | {rid})) is not None:
+                return f"{why}, a part of region {rid}"
     # a variable that is one number keeps the region where it is (field round 15, w06/w09: a face at
     # v_zl = 0, a rotation by v_th = 0, were named as moving and not audited)
     changing = [w for w in words[3:] if w.startswith("v_") and number_or_none(deck.variables.get(w[2:])) is None]
