@@ -353,6 +353,33 @@ def test_a_command_liggghts_does_not_have_stops_the_deck_as_it_stops_liggghts(tm
 
 
 @needs_liggghts
+@pytest.mark.parametrize("ending", ["clear\n", "next e\nclear\njump SELF loop\n"],
+                         ids=["clear last", "a loop's last jump skipped"])
+def test_a_deck_that_ends_after_clear_is_audited(tmp_path, ending):
+    """Field round 45, M02 M03 and LIGGGHTS-PFM's contact-model tests (R12-R19): a deck that clears
+    after its last run (its last line, or a loop whose jump the exhausted next skips) was refused,
+    "LIGGGHTS stops here: Dumping an atom property that isn't allocated": the audit's own dump of
+    the atoms at the deck's end met no box and no radius after the clear. LIGGGHTS runs such a deck
+    to its end (M02: 0.499928 with e 0.5; M03: 0.499928 and 0.700061), as LAMMPS' pass does."""
+    loop = "variable e universe 0.5 0.7\nlabel loop\n" if ending.startswith("next") else ""
+    text = loop + HEAD.format(e="${e}" if loop else 0.5) + PLAIN + TAIL + ending
+    status, out, err = deck(tmp_path, text)
+    assert status == 0, err
+    eps = [next(p for p in stage["pairs"] if p["types"] == [1, 1])["eps"][0] for stage in json.loads(out)["stages"]]
+    assert eps == pytest.approx([0.5, 0.7] if loop else [0.5], rel=1e-9), (eps, err)
+
+
+@needs_liggghts
+def test_a_deck_that_stops_after_clear_is_still_refused(tmp_path):
+    """The end's dump is the audit's own only where nothing after the clear made a box: a stop of the
+    deck's own after it, or a box of atoms without a radius, stays the deck's refusal."""
+    for after, said in (("fix f all nve/sphere\n", "Fix command before simulation box is defined"),
+                        ("region r2 block 0 1 0 1 0 1 units box\ncreate_box 1 r2\n", "not spheres")):
+        status, out, err = deck(tmp_path, HEAD.format(e=0.5) + PLAIN + TAIL + "clear\n" + after)
+        assert status == 2 and out == "" and said in err, err
+
+
+@needs_liggghts
 @pytest.mark.dem
 def test_an_include_between_a_runs_parts_is_read_as_liggghts_reads_it_after_the_run(tmp_path):
     """Field round 35, L06: LIGGGHTS 3.8.0 only opens a file a run's every includes and reads it

@@ -108,6 +108,33 @@ def _ending(root: Path) -> str:
     return f"write_dump all custom {root / ATOMS_AT_END} id type radius mass {_FORMAT}\n"
 
 
+def _cleared_at_end(echo: str, root: Path) -> bool:
+    """Whether LIGGGHTS stopped on the end's dump of the atoms (:func:`_ending`, into ``root``) after
+    the deck's last box was cleared (a ``clear`` echoed after every command that makes a box), so
+    that nothing is left to write: after ``clear`` the atom style has no radius and there is no box.
+
+    Examples
+    --------
+    >>> end = _ending(Path("/s")).strip()
+    >>> _cleared_at_end(f"create_box 1 r\\nrun 1\\nclear\\n{end}\\nERROR: Dumping an atom property that "
+    ...                 "isn't allocated", Path("/s"))
+    True
+
+    A box made after the ``clear``, or a stop elsewhere, is the deck's own:
+
+    >>> _cleared_at_end(f"clear\\ncreate_box 1 r\\n{end}\\nERROR: Invalid atom property", Path("/s"))
+    False
+    >>> _cleared_at_end("clear\\nread_data x\\nERROR: Cannot open file x", Path("/s"))
+    False
+    """
+    lines = echo.split("\nERROR", 1)[0].splitlines() if "\nERROR" in echo else []
+    if not lines or lines[-1].strip() != _ending(root).strip():
+        return False
+    last = next((ln.split()[0] for ln in reversed(lines[:-1])
+                 if ln.split()[:1] and ln.split()[0] in ("clear", "create_box", "read_data", "read_restart")), None)
+    return last == "clear"
+
+
 def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
              check_every: bool = True, tag: str | None = None,
              ceiling: float | None = None, real: bool = False) -> EngineRun:
@@ -139,7 +166,12 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
     # LIGGGHTS' quit ends with status 1 and no message: after its marker wrote the atoms where the
     # deck ends, no ERROR on the screen, it is the deck's end, no error
     quit = (root / ATOMS_AT_END).exists() and not any(ln.startswith("ERROR") for ln in done.echo.splitlines())
-    if done.status and not done.timed_out and not quit:
+    if done.status and not done.timed_out and not quit and _cleared_at_end(done.echo, root):
+        # the deck ran to its end, its last box cleared (field round 45, M02, R12-R19): the end's
+        # dump has no atoms to write, and its stop is the audit's own, not the deck's (as LAMMPS'
+        # child, which writes no atoms where there is no box)
+        done.error = ""
+    elif done.status and not done.timed_out and not quit:
         # LIGGGHTS writes its ERROR to the screen file, and ends with status 1
         done.error = next((ln for ln in reversed(done.echo.splitlines()) if ln.startswith("ERROR")), "") \
             or done.error or f"LIGGGHTS ended with status {done.status}"
