@@ -147,6 +147,32 @@ def test_a_print_of_a_number_then_an_include_is_audited(tmp_path, printed):
 
 @needs_lammps
 @pytest.mark.dem
+@pytest.mark.parametrize("writer", ["dump d all custom ${df} d.txt id x vx",
+                                    "dump d all custom 100 d.txt id x vx\ndump_modify d every ${df}\nundump d",
+                                    "restart ${df} r.*", "write_dump all custom d.txt id x modify every ${df}"],
+                         ids=["dump", "dump_modify", "restart", "write_dump"])
+def test_a_writer_with_a_number_from_a_variable_then_an_include_is_audited(tmp_path, writer):
+    """Field round 45, M15 (and M10 M12 M14, LIGGGHTS-PFM's epsd tc0 deck R23), refused since every
+    word of a skipped writer other than print was taken for a file it may write, a variable's word
+    for any file: a dump whose every is ${df} then an include of another file. Only the word where
+    the writer names its file can (LAMMPS 0.490898 with kn 3000 from the included file)."""
+    (tmp_path / "pc.in").write_text("pair_coeff 1 2 " + LAW.format(kn="${kk}") + "\n")
+    printed_eps, engine, err = audited_and_measured(BASE + f"variable kk equal 3000\nvariable df equal 100000\n"
+                                                    f"{writer}\ninclude pc.in\nrun 40000\n", tmp_path)
+    assert abs(printed_eps - abs(engine)) < 5e-5, (printed_eps, engine, err)
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_writer_whose_file_is_a_variable_then_an_include_stays_refused(tmp_path):
+    """A variable in the writer's file word may name the file read (here it does)."""
+    (tmp_path / "pc.in").write_text(f"pair_coeff 1 2 {LAW.format(kn=3000)}\n")
+    _refused(tmp_path, BASE + "variable f string pc.in\ndump d all custom 100 ${f} id x\ninclude pc.in\nrun 40000\n",
+             "dump d all custom 100 ${f} id x")
+
+
+@needs_lammps
+@pytest.mark.dem
 def test_a_print_whose_unquoted_string_may_hold_a_file_keyword_stays_refused(tmp_path):
     """A string variable substituted unquoted is read again as words: here it names the file."""
     (tmp_path / "pc.in").write_text(f"pair_coeff 1 2 {LAW.format(kn=3000)}\n")

@@ -522,7 +522,9 @@ def _written_words(text: str, numeric: set) -> list:
     """The words of a skipped command that may name a file it writes: for print and fix print, the
     value of a file or append keyword (field round 35, E77: ``print ${kk}`` then an include was
     refused as a write of any file); every word where a variable may bring such a keyword (an
-    unquoted string holding a variable that is not a number, or a variable among the keywords).
+    unquoted string holding a variable that is not a number, or a variable among the keywords);
+    for a writer whose file has a fixed place (:data:`_FILE_WORD`), that word; every word of any
+    other command.
 
     Examples
     --------
@@ -532,12 +534,34 @@ def _written_words(text: str, numeric: set) -> list:
     (['${s}'], ['cp', 'a.in', 'b.in'])
     >>> _written_words("fix p all print 10 $(step) append log.txt", set())
     ['log.txt']
+
+    A writer whose file has a fixed place: that word, a number's variable before it or not (field
+    round 45, M15); a variable in it may name any file, and one before it that is not a number may
+    move it:
+
+    >>> _written_words("dump d all custom ${df} d.txt id x vx", {"df"}), _written_words("undump d", set())
+    (['d.txt'], [])
+    >>> _written_words("dump d all custom 100 ${f} id x", set()), _written_words("restart 1000 a.rst b.rst", set())
+    (['${f}'], ['a.rst', 'b.rst'])
+    >>> _written_words("dump d all ${s} 100 d.txt id x", set())
+    ['d', 'all', '${s}', '100', 'd.txt', 'id', 'x']
     """
     split = _split(text)
     if split[:1] == ["print"]:
         at = 2
     elif split[:1] == ["fix"] and split[3:4] == ["print"]:
         at = 6
+    elif split[:1] and split[0] in _FILE_WORD:
+        # a writer whose file is the word at a fixed place: only that word names what it writes,
+        # unless a variable before it that is not one number may shift it (field round 45, M15:
+        # dump d all custom ${df} d.txt, then include k.in, was refused as a write of any file)
+        first = _FILE_WORD[split[0]]
+        if first is None:
+            return []
+        if any(_VARIABLE.sub(lambda m: "" if _numeric_ref(m.group(), numeric) else m.group(), w).count("$")
+               for w in split[1:first]):
+            return split[1:]
+        return split[first:] if split[0] == "restart" else split[first:first + 1]
     else:
         return split[1:]
     raw = _RAW_WORD.findall(text)
@@ -548,6 +572,16 @@ def _written_words(text: str, numeric: set) -> list:
     if "$" in unnumbered and not string.startswith(("'", '"')) or any("$" in w for w in split[at:]):
         return split[1:]
     return [split[i + 1] for i in range(at, len(split) - 1) if split[i] in ("file", "append")]
+
+
+#: The writers whose file is the word at a fixed place (LAMMPS' and LIGGGHTS' manuals): that word's
+#: index in the command's words (``dump ID group style N file``, ``write_dump group style file``,
+#: ``pair_write i j N style inner outer file``, ...); restart's every word from there (one root
+#: or two files, its keywords); None where the command names no file it writes (dump_modify,
+#: undump)
+_FILE_WORD = {"dump": 5, "write_dump": 3, "write_restart": 1, "write_data": 1, "write_coeff": 1, "log": 1,
+              "restart": 2, "pair_write": 7, "bond_write": 5, "angle_write": 3, "dihedral_write": 3,
+              "dump_modify": None, "undump": None}
 
 
 def _numeric_ref(ref: str, numeric: set) -> bool:
