@@ -558,8 +558,7 @@ def _written_words(text: str, numeric: set) -> list:
         first = _FILE_WORD[split[0]]
         if first is None:
             return []
-        if any(_VARIABLE.sub(lambda m: "" if _numeric_ref(m.group(), numeric) else m.group(), w).count("$")
-               for w in split[1:first]):
+        if any("$" in _unnumbered(w, numeric) for w in split[1:first]):
             return split[1:]
         return split[first:] if split[0] == "restart" else split[first:first + 1]
     else:
@@ -568,8 +567,7 @@ def _written_words(text: str, numeric: set) -> list:
     string = raw[at - 1] if len(raw) >= at else ""
     # a variable substituted unquoted may split into several words (an engine re-reads the line),
     # keywords among them, unless its value is one number
-    unnumbered = _VARIABLE.sub(lambda m: "" if _numeric_ref(m.group(), numeric) else m.group(), string)
-    if "$" in unnumbered and not string.startswith(("'", '"')) or any("$" in w for w in split[at:]):
+    if "$" in _unnumbered(string, numeric) and not string.startswith(("'", '"')) or any("$" in w for w in split[at:]):
         return split[1:]
     return [split[i + 1] for i in range(at, len(split) - 1) if split[i] in ("file", "append")]
 
@@ -582,6 +580,11 @@ def _written_words(text: str, numeric: set) -> list:
 _FILE_WORD = {"dump": 5, "write_dump": 3, "write_restart": 1, "write_data": 1, "write_coeff": 1, "log": 1,
               "restart": 2, "pair_write": 7, "bond_write": 5, "angle_write": 3, "dihedral_write": 3,
               "dump_modify": None, "undump": None}
+
+
+def _unnumbered(text: str, numeric: set) -> str:
+    """``text`` without its variable references that are replaced by one number (:func:`_numeric_ref`)."""
+    return _VARIABLE.sub(lambda m: "" if _numeric_ref(m.group(), numeric) else m.group(), text)
 
 
 def _numeric_ref(ref: str, numeric: set) -> bool:

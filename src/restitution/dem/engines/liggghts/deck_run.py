@@ -130,9 +130,9 @@ def _cleared_at_end(echo: str, root: Path) -> bool:
     lines = echo.split("\nERROR", 1)[0].splitlines() if "\nERROR" in echo else []
     if not lines or lines[-1].strip() != _ending(root).strip():
         return False
-    last = next((ln.split()[0] for ln in reversed(lines[:-1])
-                 if ln.split()[:1] and ln.split()[0] in ("clear", "create_box", "read_data", "read_restart")), None)
-    return last == "clear"
+    firsts = [ln.split()[0] for ln in lines[:-1] if ln.split()]
+    return next((w for w in reversed(firsts) if w in ("clear", "create_box", "read_data", "read_restart")), None) \
+        == "clear"
 
 
 def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None,
@@ -166,13 +166,12 @@ def run_copy(deck: Path, root: Path, budget: float, original: Path | None = None
     # LIGGGHTS' quit ends with status 1 and no message: after its marker wrote the atoms where the
     # deck ends, no ERROR on the screen, it is the deck's end, no error
     quit = (root / ATOMS_AT_END).exists() and not any(ln.startswith("ERROR") for ln in done.echo.splitlines())
-    if done.status and not done.timed_out and not quit and _cleared_at_end(done.echo, root):
+    if done.status and not done.timed_out and not quit:
         # the deck ran to its end, its last box cleared (field round 45, M02, R12-R19): the end's
         # dump has no atoms to write, and its stop is the audit's own, not the deck's (as LAMMPS'
-        # child, which writes no atoms where there is no box)
-        done.error = ""
-    elif done.status and not done.timed_out and not quit:
-        # LIGGGHTS writes its ERROR to the screen file, and ends with status 1
-        done.error = next((ln for ln in reversed(done.echo.splitlines()) if ln.startswith("ERROR")), "") \
+        # child, which writes no atoms where there is no box); else LIGGGHTS writes its ERROR to
+        # the screen file, and ends with status 1
+        done.error = "" if _cleared_at_end(done.echo, root) else \
+            next((ln for ln in reversed(done.echo.splitlines()) if ln.startswith("ERROR")), "") \
             or done.error or f"LIGGGHTS ended with status {done.status}"
     return done
