@@ -358,3 +358,25 @@ def test_a_wall_region_whose_part_moves_in_a_run_is_not_audited(tmp_path):
            in err and "the wall's contacts are not audited" in err, err
     assert not any(s["walls"] for s in got["stages"]), got
     assert abs(abs(lammps_separation_speed(deck, tmp_path)) - stage_eps(got)[-1]) > 0.03
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_deck_run_again_after_clear_is_not_said_to_change_a_contact(tmp_path):
+    # LIGGGHTS-PFM's contact-model tests (field round 45, R12-R19) loop over clear and the deck again:
+    # the new deck's create_atoms, set and velocity were each said to change a contact under way
+    _, err = audited(PERIODIC_PAIR + "run 300\nclear\n" + PERIODIC_PAIR + "run 300\n", tmp_path)
+    assert "between runs" not in err, err
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_kick_after_a_restart_of_a_contact_under_way_is_said(tmp_path):
+    # the atoms a restart file brings back after clear are where the run left them: mid-contact here
+    deck = PERIODIC_PAIR + ("run 300\nwrite_restart mid.rst\nclear\nread_restart mid.rst\npair_style granular\n"
+                            "pair_coeff * * hooke 2000 3000 damping mass_velocity tangential linear_nohistory 1 0.3\n"
+                            "comm_modify vel yes\nfix move all nve/sphere\nvelocity all set 0 0 0\nrun 2000\n")
+    _, err = audited(deck, tmp_path)
+    assert "or the box between runs: a contact under way at that step is changed mid-way, and its eps is none of " \
+           "those printed: velocity all set 0 0 0" in err, err
+    assert "fix move all nve/sphere" not in err, err

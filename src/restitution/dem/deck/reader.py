@@ -195,7 +195,9 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     infos = iter(restarts or ())
     pending: list = []
     moved_since = False            # a run has gone: the atoms are where it left them, never the pass
-    stepped = False                # a run has made a step (or a minimize moved the atoms)
+    stepped = False                # a run has made a step (or a minimize moved the atoms) since the last clear
+    stepped_ever = False           # one has, clear or not (a restart file may hold the atoms it moved)
+    cleared: tuple = ({}, {})      # active and defined (below) as the last clear found them
     defined: dict = {}             # (region|variable, name) -> the words that last defined it
     active: dict = {}              # the fixes defined now, ID -> their words (a deposit still in force makes more
                                    # atoms; a group or move/mesh they use changed between runs is said)
@@ -216,6 +218,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             # a run 0 makes no step: no contact is under way after it that was not before it
             steps = number_or_none(split[1]) if len(split) > 1 else None
             stepped = stepped or split[0] == "minimize" or "upto" in split or steps != 0
+            stepped_ever = stepped_ever or stepped
         elif split and moved_since and not ran and split[0] in ("group", "set", "delete_atoms"):
             _where_the_run_left(split, placed, cmd)
         elif split and split[:1] == ["group"] and len(split) > 2 and split[2] == "dynamic":
@@ -297,7 +300,18 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
                 made.setdefault(t, set()).update(sizes)
             repour(deck, made, resized | starting | adapt_poured(deck, made, cmd.loc, cmd.text, during=True))
         elif split[0] == "clear":
+            # a new deck begins: no contact, fix, region or variable of the old one goes on, and its
+            # first commands are not run between runs (a deck run again after clear: its
+            # create_atoms and velocity were each said to change a contact under way)
             deposited_ran, made = set(), {}
+            stepped = moved_since = False
+            cleared = active, defined
+            active, defined, placed = {}, {}, set()
+        elif split[0] == "read_restart":
+            # the atoms come back where a run left them: a contact under way there goes on, and what
+            # is defined next is weighed against the fixes, regions and variables in force before
+            stepped = moved_since = stepped_ever
+            active, defined = (dict(d) for d in cleared) if stepped_ever else (active, defined)
         plain_run = split[0] == "run" and "every" not in split
         if cmd.stage is None and block is not None and (pour := _pour_again(split)) is not None:
             block = block + [pour]
