@@ -935,3 +935,15 @@ def test_a_fix_that_pushes_no_atom_is_not_said_to_add_forces(tmp_path, fix, word
     status, out, err = deck(tmp_path, HEAD + f"pair_coeff * * hooke 1000 1 {T}\n{fix}\nrun 1\n")
     assert status == 0, err
     assert words in err and "may add forces" not in err, err
+
+
+@pytest.mark.parametrize("where, stops", [("before", False), ("after", True)])
+def test_processors_after_the_box_stops_as_the_engine_does(tmp_path, where, stops):
+    """processors is never run in the pass (the audit's engine has one process); after the box
+    LAMMPS and LIGGGHTS stop on it ("Processors command after simulation box is defined", both
+    measured), where the audit printed the rows with exit 0 (field round 46, lists)."""
+    body = HEAD + f"pair_coeff * * hooke 1000 1 {T}\n"
+    text = "processors * * *\n" + body + "run 1\n" if where == "before" else body + "processors * * *\nrun 1\n"
+    status, out, err = deck(tmp_path, text)
+    assert (status, "LAMMPS stops here: Processors command after simulation box is defined" in err) == \
+        ((2, True) if stops else (0, False)), err

@@ -198,6 +198,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     stepped = False                # a run has made a step (or a minimize moved the atoms) since the last clear
     stepped_ever = False           # one has, clear or not (a restart file may hold the atoms it moved)
     cleared: tuple = ({}, {})      # active and defined (below) as the last clear found them
+    boxed = False                  # a simulation box is defined
     defined: dict = {}             # (region|variable, name) -> the words that last defined it
     active: dict = {}              # the fixes defined now, ID -> their words (a deposit still in force makes more
                                    # atoms; a group or move/mesh they use changed between runs is said)
@@ -223,6 +224,13 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             _where_the_run_left(split, placed, cmd)
         elif split and split[:1] == ["group"] and len(split) > 2 and split[2] == "dynamic":
             placed.add(split[1])     # its members change as the runs move the atoms
+        if split and split[0] == "processors" and boxed:
+            # never run in the pass (the audit's engine has one process), so the engine's own stop
+            # is the reader's to say (field round 46, lists: rows printed for a deck LAMMPS stops on)
+            raise DeckError(place(cmd.loc), cmd.text, f"{deck.code} stops here: Processors command after simulation "
+                                                      "box is defined")
+        if split and split[0] in ("create_box", "read_data", "read_restart", "clear"):
+            boxed = split[0] != "clear"
         if split and cmd.unset and not made and not deposited_ran:
             # no atom in the pass, and no pour or deposit has made any in the runs before: the
             # deck's own run stops here too

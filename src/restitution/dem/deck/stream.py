@@ -299,9 +299,10 @@ def deck_commands(commands: list, scratch: Scratch) -> list:
         if (cmd.loc, cmd.text) in scratch.silenced:
             continue
         mark = _SKIPPED.fullmatch(cmd.text)
-        if mark and scratch.skipped[int(mark.group(1))][0] == "balance":
-            # never run in the pass (it may write a file), yet it makes LAMMPS' ghost atoms anew
-            # (reader._REGHOSTING): read as the deck's own command
+        if mark and scratch.skipped[int(mark.group(1))][0] in ("balance", "processors"):
+            # never run in the pass (balance may write a file; processors would stop the audit's one
+            # process), yet balance makes LAMMPS' ghost atoms anew (reader._REGHOSTING) and the engine
+            # stops on a processors after the box: read as the deck's own command
             cmd = replace(cmd, text=scratch.skipped[int(mark.group(1))][2])
         out.append(cmd)
     return out
