@@ -47,7 +47,10 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "partition", "suffix", "package", "kspace_style", "special_bonds", "hard_particles",
                "soft_particles", "modify_timing", "compute_modify", "comm_style", "dimension",
                # copies of the atoms there are, sizes, types and groups kept (the engine holds them)
-               "replicate"}
+               "replicate",
+               # atom IDs given anew, the spheres, their places and velocities kept; a minimizer's
+               # settings (field round 46, lists: both "not understood" from the start)
+               "reset_atoms", "reset_atom_ids", "min_modify"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "deposit",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "enforce2d", "move",
@@ -55,7 +58,10 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      # averaging fixes push nothing (field round 16, v01b v03 v04: "may add forces" said)
                      "ave/chunk", "ave/correlate", "ave/correlate/long", "ave/histo", "ave/histo/weight", "vector",
                      "heat/gran", "heat/gran/conduction", "heat/flow", "multisphere", "property/atom",
-                     "nve/noforce"}
+                     "nve/noforce",
+                     # stores values, and the plain integrators an accelerator's suffix names (field
+                     # round 46, lists: "may add forces" said of each)
+                     "store/state", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk"}
 #: Fixes that push no atom but change what the runs see, each with what it does: named as such, not
 #: as a force (field round 15: "may add forces" said of each). Where a run sees fix set or atom/swap,
 #: the runs are made for real (:func:`restitution.dem.deck.runtime.resized_by_runs`)
@@ -96,7 +102,7 @@ MAX_STAGES = 100
 #: Commands that neither make atoms, nor run, nor change what the reader reads (units, atom_style and
 #: soft_/hard_particles, though in _IRRELEVANT, are read): a run's ``every`` may run them
 _INERT = frozenset(_IRRELEVANT - {"create_atoms", "run", "clear", "minimize", "label", "delete_atoms", "units",
-                                  "replicate",
+                                  "replicate", "reset_atoms", "reset_atom_ids",
                                   "atom_style", "soft_particles", "hard_particles",
                                   # how often the lists are rebuilt decides whether a contact is found in
                                   # time (field round 16, n25: run 1000 every 500 "neigh_modify every 10
