@@ -92,8 +92,10 @@ def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0), p
     Returns
     -------
     float or None
-        eps to about RTOL; None where the bodies do not part (within 10^4 drag or contact times:
-        a push that holds a slow sphere on the wall).
+        eps to about RTOL (0.0 where the energy of the relative motion, which a drag equal on both
+        bodies only lowers, falls below what a parting at RTOL g needs: a drag that overdamps the
+        contact); None where the bodies do not part (within 10^4 drag or contact times: a push
+        that holds a slow sphere on the wall).
 
     Examples
     --------
@@ -104,6 +106,9 @@ def drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple = (0.0, 0.0), p
     >>> # a drag rate b on both bodies adds b to the dashpot's: the same eps as D2 + b
     >>> abs(drag_eps(c, 1.0, p, (5.0, 5.0)) - Contact(1, 0, 1e4, 15.0, "overlap").eps(1.0)) < 1e-7
     True
+    >>> # a drag far stronger than the spring: the pair creeps apart for ever, eps 0 to RTOL
+    >>> drag_eps(c, 1.0, p, (1e4, 1e4))
+    0.0
     >>> # a push into a wall: the sphere rebounds slower (in.pour's wall law, gravity 1 into it)
     >>> w = Contact(1, 0, D1=2000 / (math.pi / 6), D2=50.0, end="overlap")
     >>> round(drag_eps(w, 1.0, Pair.wall(0.5, 1.0), push=1.0) - w.eps(1.0), 4)
@@ -141,8 +146,10 @@ def _drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple, push: float) 
 
     def parted(_t, y):
         return y[0]
-    events = [parted]
-    if push > 0.0 and (wall or rate[0] == rate[1]):
+    events, spent = [parted], None
+    # each body's drag the same (or a wall): the relative motion alone has an energy (below)
+    conserved = wall or rate[0] == rate[1]
+    if push > 0.0 and conserved:
         # The relative motion then has the energy E = v^2/2 + k D1 x^(a+1)/(a+1) - push x (per unit
         # m_eff), which the dashpot, an equal drag and the clipping only lower; parting at x = 0
         # needs E = v^2/2 >= 0. Once E < 0 the push holds the sphere for good: stop there, not after
@@ -155,19 +162,37 @@ def _drag_eps(contact: Contact, g: float, pair: Pair, drag: tuple, push: float) 
             v = v1 - v2
             return 0.5 * v * v + (k * D1 * x ** (a + 1.0) / (a + 1.0) if x > 0.0 else 0.0) - push * x - floor
         events.append(held)
+    if push == 0.0 and conserved:
+        # The same energy (no push) only falls; once below (RTOL g)^2 / 2 no parting is faster than
+        # RTOL g: eps is 0 to RTOL. A drag stronger than the spring leaves the pair creeping apart
+        # for ever (an overdamped Hooke contact never reaches x = 0): field round 45, O42, fix
+        # langevin damp 1e-4, LAMMPS not parted after 3000 steps, where 10^4 contact times of steps
+        # took 50 s per speed and printed a stray 1.6e-4.
+        spent_below = 0.5 * (RTOL * g) ** 2
+
+        def spent(_t, y):
+            x, v1, v2 = y
+            v = v1 - v2
+            return 0.5 * v * v + (D1 * x ** (a + 1.0) / (a + 1.0) if x > 0.0 else 0.0) - spent_below
+        events.append(spent)
     # Under the force rule the clipped force has a kink where the unclipped one changes sign, which
     # a step across it does not see (it cost 4e-7 of an eps of 0.019): the integration stops
     # there and starts again, the kink's sign flipped (it may come back: a push, a drag).
     def unclipped(_t, y):
         return sign * (D1 * y[0] ** a + D2 * y[0] ** c * (y[1] - y[2])) if y[0] > 0.0 else sign
     y, t, sign = [0.0, *v0], 0.0, 1.0
+    kinds = events + ([unclipped] if clip else [])
     while True:
-        got = solve(rhs, y, t_max - t, events + ([unclipped] if clip else []), rtol=_SOLVER_TOL,
+        got = solve(rhs, y, t_max - t, kinds, rtol=_SOLVER_TOL,
                     atol=[reach * _SOLVER_TOL, g * _SOLVER_TOL, g * _SOLVER_TOL], first_step=t_el * 1e-6,
                     max_step=t_el / 50)
-        if got is None or got[0] == 1 and len(events) == 2:
-            return None              # not parted by t_max, or held on the wall for good
-        if got[0] == 0 or got[2][0] <= 0.0:     # parted (at the kink too, where the two meet)
+        if got is None:
+            return None              # not parted by t_max
+        if kinds[got[0]] is spent:
+            return 0.0               # too little energy left to part faster than RTOL g
+        if kinds[got[0]] is not parted and kinds[got[0]] is not unclipped:
+            return None              # held on the wall for good
+        if kinds[got[0]] is parted or got[2][0] <= 0.0:     # parted (at the kink too, where the two meet)
             _, v1, v2 = got[2]
             return float(-(v1 - v2) / g)
         t, y, sign = t + got[1], got[2], -sign
