@@ -331,6 +331,21 @@ def test_a_minimize_after_a_run_is_said(tmp_path, before, said):
 
 @needs_lammps
 @pytest.mark.dem
+@pytest.mark.parametrize("style, said", [("fire", True), ("quickmin", True), ("cg", False)])
+def test_a_minimizer_that_stops_the_atoms_is_said(tmp_path, style, said):
+    # field round 46, Z14 Z16: fire and quickmin set the velocities to zero before any run, so the
+    # pair never meets (LAMMPS: at rest 0.1 mm apart) where 0.4149 was printed with no word; cg keeps
+    # them (Z15: 0.413435); the velocity lines after such a minimize are no change mid-contact (Z17)
+    minimized = FIELD_PAIR + f"min_style {style}\nminimize 0.0 0.0 10 100\n"
+    _, err = audited(minimized + "set atom 1 vx 0.7714285714\nrun 3000\n", tmp_path)
+    assert (f"minimize under min_style {style} sets every atom's velocity to zero" in err) == said, err
+    assert "between runs" not in err, err
+    (tmp_path / "check").mkdir()
+    assert (abs(lammps_separation_speed(minimized + "run 3000\n", tmp_path / "check")) < 1e-6) == said
+
+
+@needs_lammps
+@pytest.mark.dem
 def test_a_group_a_fix_names_as_its_argument_given_again_is_said(tmp_path):
     # field round 45, B29: the second group of a spring couple, filled with a sphere of the pair
     # mid-contact (LAMMPS 4.44 where 0.4149 was printed with no word)

@@ -205,6 +205,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     stepped_ever = False           # one has, clear or not (a restart file may hold the atoms it moved)
     cleared: tuple = ({}, {})      # active and defined (below) as the last clear found them
     boxed = False                  # a simulation box is defined
+    min_style = "cg"               # the minimizer in force (the engines' default)
     defined: dict = {}             # (region|variable, name) -> the words that last defined it
     active: dict = {}              # the fixes defined now, ID -> their words (a deposit still in force makes more
                                    # atoms; a group or move/mesh they use changed between runs is said)
@@ -224,8 +225,14 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             moved_since = True
             # a run 0 makes no step: no contact is under way after it that was not before it
             steps = number_or_none(split[1]) if len(split) > 1 else None
-            stepped = stepped or split[0] == "minimize" or "upto" in split or steps != 0
+            # nor a minimize before any run: it ends with the atoms where their forces balance, no
+            # contact under way (field round 46, Z17: velocity lines after one were said to change one)
+            stepped = stepped or split[0] == "run" and ("upto" in split or steps != 0)
             stepped_ever = stepped_ever or stepped
+            if split[0] == "minimize" and min_style in _AT_REST_MINIMIZERS:
+                deck.unknown.append((*cmd.loc, cmd.text, AT_REST.format(style=min_style)))
+        elif split and split[0] == "min_style" and len(split) > 1:
+            min_style = split[1]
         elif split and moved_since and not ran and split[0] in ("group", "set", "delete_atoms"):
             _where_the_run_left(split, placed, cmd)
         elif split and split[:1] == ["group"] and len(split) > 2 and split[2] == "dynamic":
@@ -319,6 +326,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             # create_atoms and velocity were each said to change a contact under way)
             deposited_ran, made = set(), {}
             stepped = moved_since = False
+            min_style = "cg"
             cleared = active, defined
             active, defined, placed = {}, {}, set()
         elif split[0] == "read_restart":
@@ -2297,6 +2305,14 @@ def _unexcluded(split: list) -> str | None:
     return UNEXCLUDED if split[0] == "neigh_modify" and "exclude" in split[1:] else None
 
 
+#: The minimizers that set every atom's velocity to zero as they start (damped dynamics; LAMMPS
+#: measured: a pair given its velocities, then ``min_style fire``, ``minimize``: left at rest, 0.1 mm
+#: apart, field round 46, Z14 Z16; cg keeps them: Z15 met at 0.413435 as without it)
+_AT_REST_MINIMIZERS = frozenset({"fire", "quickmin", "fire/old"})
+#: What is said of a minimize under one of them (:data:`_AT_REST_MINIMIZERS`)
+AT_REST = ("minimize under min_style {style} sets every atom's velocity to zero: the velocities given before it "
+           "are gone, so a pair meets only by what moves its spheres after it, and its eps is the one printed "
+           "only where it does")
 #: What is said of any other command between runs that is not known to leave a contact as it was
 #: (:func:`_unlisted`)
 BETWEEN_RUNS = ("is run between runs, and the audit does not know it to leave a contact as it was: a contact under "
