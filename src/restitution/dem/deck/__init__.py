@@ -657,9 +657,9 @@ def engine_read(path, radius: dict | None = None, density: dict | None = None, b
                                                  "audit does not run (it may run code or write files): the file read "
                                                  "may not be the one the engine run by hand reads; not audited")
         if (hit := unmapped_script(commands, scratch)) is not None:
-            raise DeckError(place(hit[0]), hit[1], f"a script the deck runs holds more than {MAX_TEXT_BYTES >> 20} MB, "
-                                                   "or is a link to such a file: more than the audit maps line by "
-                                                   "line; not audited")
+            raise DeckError(place(hit[0]), hit[1], f"a script the deck runs holds more than {MAX_TEXT_BYTES >> 20} MB "
+                                                   "or a NUL byte (binary), or is a link to such a file: not what the "
+                                                   "audit maps line by line; not audited")
         atoms = snapshots(done.atoms) + snapshots(done.at_end)
         if done.timed_out and not atoms:
             # no run and no end reached (a loop without a run): nothing to audit, and "no particle"

@@ -458,6 +458,19 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             raw = p.read_bytes()
         except OSError:
             continue
+        if not mapped and scratch.confined:
+            # no include or jump names it (each name literal): the engine reads it as data (a
+            # molecule template, a mesh, a table), never as commands, so it is kept as it is: a
+            # template titled "run 7 template" was made a run's marker and refused as one (field
+            # round 46, Z04; Z09: a phantom stage)
+            continue
+        if b"\0" in raw and scratch.confined:
+            # a binary file (a mesh in binary STL, ...) is the engine's to read byte for byte: a
+            # line of its bytes made safe shortened it (field round 46, Y11: a binary STL floor,
+            # LIGGGHTS 0.699141, refused as "Corrupt STL file"). Not mapped, as a large file: an
+            # include or jump the engine runs of it is refused after the pass, the view confining
+            # what its lines may do (stream.unmapped_script)
+            continue
         label = None if p == scratch.deck else labels.get(p) or os.path.relpath(p, copy)
         if mapped and (cr := re.search(rb"\r(?!\n)", raw)) is not None:
             # the engines end a line at a line feed only, where Python's text reading ends one at a

@@ -600,7 +600,8 @@ _RAN_WRITERS = frozenset({"write_restart", "write_data"})
 
 def unmapped_script(commands: list, scratch: Scratch) -> tuple | None:
     """The first include or jump the engine ran of a file in the copy whose lines the copy did not
-    map: one over MAX_TEXT_BYTES, or a link left as a link (to such a file): its commands run in
+    map: one over MAX_TEXT_BYTES, a binary one (a NUL byte, in a confined copy: scratch_copy), or a
+    link left as a link (to such a file): its commands run in
     the engine and come back without a tag (field round 37, F20: ``include ${f}`` of a 22 MB file,
     F21: a link to it; round 36, F19). ((file, line), text) of the command, or None.
 
@@ -622,7 +623,8 @@ def unmapped_script(commands: list, scratch: Scratch) -> tuple | None:
             continue
         path = scratch.deck.parent / split[1]
         try:
-            if path.is_symlink() or path.is_file() and path.stat().st_size > MAX_TEXT_BYTES:
+            if path.is_symlink() or path.is_file() and (path.stat().st_size > MAX_TEXT_BYTES or scratch.confined
+                                                        and b"\0" in path.read_bytes()):
                 return cmd.loc, cmd.text
         except OSError:
             continue
