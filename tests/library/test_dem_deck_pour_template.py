@@ -66,14 +66,28 @@ def test_a_pour_of_a_one_atom_template_is_audited_at_its_size(tmp_path, mass, de
     assert abs(engine / rows[0]["eps"][2] - 1) < 1e-6
 
 
+TWO = "# two spheres\n2 atoms\n{tie}\nCoords\n\n1 0 0 0\n2 0.03 0 0\n\nTypes\n\n1 1\n2 2\n\nDiameters\n\n1 0.02\n2 0.01\n"
+
+
 @needs_lammps
 @pytest.mark.dem
-def test_a_pour_of_a_two_atom_template_stays_refused(tmp_path):
-    template = ("# two spheres\n2 atoms\n\nCoords\n\n1 0 0 0\n2 0.02 0 0\n\nTypes\n\n1 1\n2 1\n\n"
-                "Diameters\n\n1 0.02\n2 0.02\n")
-    status, out, err = _deck(tmp_path, template)
+def test_a_pour_of_a_template_of_untied_atoms_pours_each_as_a_sphere(tmp_path):
+    """Field round 46, I03: refused as clumps, where LAMMPS pours each atom of a template that no
+    bond ties (and no rigid or shake keyword) as a free sphere: here types 1 and 2, of their sizes."""
+    status, out, err = _deck(tmp_path, TWO.format(tie=""))
+    assert status == 0, err
+    rows = {tuple(r["types"]): r for r in json.loads(out)["pairs"]}
+    assert sorted(rows) == [(1, 1), (1, 2), (2, 2)], rows
+    engine = _in_lammps(rows[(1, 1)], 0.01, 1.0)
+    assert abs(engine / rows[(1, 1)]["eps"][2] - 1) < 1e-6
+
+
+@needs_lammps
+@pytest.mark.dem
+def test_a_pour_of_a_bonded_template_stays_refused(tmp_path):
+    status, out, err = _deck(tmp_path, TWO.format(tie="1 bonds\n"))
     assert status == 2 and out == ""
-    assert len(err.strip().splitlines()) == 1 and "holds 2 atoms" in err
+    assert len(err.strip().splitlines()) == 1 and "holds 2 atoms, tied" in err, err
 
 
 @needs_lammps

@@ -2059,15 +2059,22 @@ def _template(words: list, where: str, line: str, read_file) -> list | str:
         return f"molecule {words[1]} has keywords (offset, scale, ...) that the reader does not map"
     spheres = []
     for name in words[2:]:
-        one = _one_sphere(words[1], fetch(read_file, name, where, line))
-        if isinstance(one, str):
-            return one
-        spheres.append(one)
+        atoms = _free_spheres(words[1], fetch(read_file, name, where, line))
+        if isinstance(atoms, str):
+            return atoms
+        spheres.append(atoms)
     return spheres
 
 
-def _one_sphere(mol: str, text: str) -> tuple | str:
-    """(type, radius, density) of a molecule file's one atom, or why it is not one sphere."""
+#: Molecule file header counts of what ties a template's atoms together
+_TIES = ("bonds", "angles", "dihedrals", "impropers", "fragments", "body")
+
+
+def _free_spheres(mol: str, text: str) -> list | str:
+    """[(type, radius, density)] of a molecule file's atoms, each poured as a single sphere, or why
+    they are not: one atom, or several that nothing ties (no bonds, angles, ...; the pour's rigid and
+    shake keywords are refused by :func:`template_types`): LAMMPS pours each as a free sphere (field
+    round 46, I03: a two-atom template poured, the deck run to its end, 0.413435 for its pair)."""
     counts, sections, current = {}, {}, None
     for n, raw in enumerate(text.splitlines()):
         body = raw.partition("#")[0].split()
@@ -2080,21 +2087,26 @@ def _one_sphere(mol: str, text: str) -> tuple | str:
             sections[current] = []
         elif current is not None:
             sections[current].append(body)
-    if counts.get("atoms") != 1:
-        return (f"molecule {mol} holds {counts.get('atoms', 'no')} atoms: a pour of it inserts clumps of "
+    n = counts.get("atoms", 0)
+    if n < 1 or n > 1 and any(counts.get(tie, 0) for tie in _TIES):
+        return (f"molecule {mol} holds {n or 'no'} atoms{', tied' if n > 1 else ''}: a pour of it inserts clumps of "
                 "spheres (rigid or bonded), and the reader audits the head-on contact of two single spheres only")
     if "Diameters" not in sections:
         return f"molecule {mol} has no Diameters section: LAMMPS stops when it pours it"
-    try:
-        kind = int(sections["Types"][0][1]) if "Types" in sections else None
-        radius = 0.5 * float(sections["Diameters"][0][1])
-        volume = 4.0 / 3.0 * math.pi * radius ** 3
-        density = float(sections["Masses"][0][1]) / volume if "Masses" in sections else 1.0
-    except (IndexError, ValueError, ZeroDivisionError):
-        return f"molecule {mol}'s Types, Diameters or Masses section does not read as one atom's numbers"
-    if kind is None:
+    if "Types" not in sections:
         return f"molecule {mol} has no Types section"
-    return (kind, radius, density)
+    try:
+        # each section's lines by atom ID
+        types, diameters, masses = ({int(row[0]): row[1] for row in sections[key]} if key in sections else None
+                                    for key in ("Types", "Diameters", "Masses"))
+        out = []
+        for atom in range(1, n + 1):
+            radius = 0.5 * float(diameters[atom])
+            volume = 4.0 / 3.0 * math.pi * radius ** 3
+            out.append((int(types[atom]), radius, float(masses[atom]) / volume if masses is not None else 1.0))
+    except (IndexError, KeyError, ValueError, ZeroDivisionError):
+        return f"molecule {mol}'s Types, Diameters or Masses section does not read as {n} atoms' numbers"
+    return out
 
 
 def _keywords(words: list) -> list:
@@ -2104,7 +2116,7 @@ def _keywords(words: list) -> list:
 
 def template_types(deck: Deck, words: list, where: str, line: str) -> dict:
     """{type: {(radius, density)}} that a fix pour or deposit of ``mol TEMPLATE`` makes: each
-    one-sphere template of the set, of its own size (diam and dens are ignored: LAMMPS measured),
+    template's free spheres (:func:`_free_spheres`), of their own size (diam and dens are ignored: LAMMPS measured),
     of type offset + its type (the fix's type word is that offset, 0 allowed); anything else is
     refused.
 
@@ -2128,7 +2140,7 @@ def template_types(deck: Deck, words: list, where: str, line: str) -> dict:
 
     Examples
     --------
-    >>> d = Deck(ntypes=3, templates={"ball": [(1, 0.003, 2500.0)]})
+    >>> d = Deck(ntypes=3, templates={"ball": [[(1, 0.003, 2500.0)]]})
     >>> template_types(d, "fix dep all deposit 5 1 200 7 region r mol ball".split(), "line 9", "")
     {2: {(0.003, 2500.0)}}
     >>> template_types(d, "fix p all pour 5 0 7 region r mol ball".split(), "line 9", "")
@@ -2154,7 +2166,7 @@ def template_types(deck: Deck, words: list, where: str, line: str) -> dict:
     if len(fractions) == len(made):
         made = [m for m, f in zip(made, fractions) if f > 0]
     types: dict = {}
-    for kind, radius, density in made:
+    for kind, radius, density in (sphere for template in made for sphere in template):
         types.setdefault(atom_type(str(offset + kind), where, line), set()).add((radius, density))
     return types
 
