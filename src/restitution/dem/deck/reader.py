@@ -201,7 +201,7 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
     infos = iter(restarts or ())
     pending: list = []
     moved_since = False            # a run has gone: the atoms are where it left them, never the pass
-    stepped = False                # a run has made a step (or a minimize moved the atoms) since the last clear
+    stepped = False                # a run has made a step since the last clear
     stepped_ever = False           # one has, clear or not (a restart file may hold the atoms it moved)
     cleared: tuple = ({}, {})      # active and defined (below) as the last clear found them
     boxed = False                  # a simulation box is defined
@@ -333,7 +333,8 @@ def read_executed(commands, atoms: list, radius: dict | None = None, density: di
             # the atoms come back where a run left them: a contact under way there goes on, and what
             # is defined next is weighed against the fixes, regions and variables in force before
             stepped = moved_since = stepped_ever
-            active, defined = (dict(d) for d in cleared) if stepped_ever else (active, defined)
+            if stepped_ever:
+                active, defined = dict(cleared[0]), dict(cleared[1])
         plain_run = split[0] == "run" and "every" not in split
         if cmd.stage is None and block is not None and (pour := _pour_again(split)) is not None:
             block = block + [pour]

@@ -448,6 +448,12 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
         if p.is_symlink():
             continue
         mapped = named is None or p == scratch.deck or p.name in named
+        if not mapped and scratch.confined:
+            # no include or jump names it (each name literal): the engine reads it as data (a
+            # molecule template, a mesh, a table), never as commands, so it is kept as it is: a
+            # template titled "run 7 template" was made a run's marker and refused as one (field
+            # round 46, Z04; Z09: a phantom stage)
+            continue
         if p.stat().st_size > MAX_TEXT_BYTES:
             # not mapped: an include or jump the engine runs of it is refused after the pass
             # (stream.unmapped_script; field round 36, F19: a 22 MB include, its pair_coeff unseen)
@@ -457,12 +463,6 @@ def scratch_copy(deck: str | os.PathLike, where: str | os.PathLike, marker, conf
             # the engines read bytes, and a file passed over here would run unmade safe
             raw = p.read_bytes()
         except OSError:
-            continue
-        if not mapped and scratch.confined:
-            # no include or jump names it (each name literal): the engine reads it as data (a
-            # molecule template, a mesh, a table), never as commands, so it is kept as it is: a
-            # template titled "run 7 template" was made a run's marker and refused as one (field
-            # round 46, Z04; Z09: a phantom stage)
             continue
         if b"\0" in raw and scratch.confined:
             # a binary file (a mesh in binary STL, ...) is the engine's to read byte for byte: a
