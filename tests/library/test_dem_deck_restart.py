@@ -186,12 +186,10 @@ def test_a_pair_across_a_periodic_boundary_after_read_restart_is_left_out(tmp_pa
     assert json.loads(out)["pairs"] == []
     assert f"types 1 2: after read_restart LAMMPS holds pair_style {style} with no cutoff" in err
     assert f"give pair_style {style} again after the read" in err
-    try:
-        assert abs(abs(lammps_separation_speed(deck, tmp_path)) - 0.4149) > 0.05     # met late in overlap
-    except AssertionError as stop:
-        # LAMMPS reads the cutoff it never set from memory: now and then a huge one, and it stops
-        # ("box size << cutoff", seen once in 5 under load); it then meets no pair either
-        assert "Cannot use neighbor bins - box size << cutoff" in str(stop), stop
+    # LAMMPS itself is not checked here: it reads the cutoff it never set from memory, so its outcome
+    # varies from run to run (met late in overlap, 8.094838 in round 32; a stop, "box size <<
+    # cutoff", once in 5 under load; met in time, 0.414679, once in a clean-clone run): the audit
+    # cannot know which, which is why the pairs are left out
 
 
 @needs_lammps

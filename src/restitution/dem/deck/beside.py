@@ -359,7 +359,7 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
             return entry
         if held is None:
             entry["why"] = f"group {words[2]} has atoms the audit cannot type: the sphere may not fall; "
-        _pushed_against(entry, deck, words, row, contact, pair, faces)
+        _pushed_against(entry, deck, words, types[0], row, contact, pair, faces)
         if entry.get("faces") and not any(face["push"] for face in entry["faces"]):
             return None              # the field lies along every face: it moves the sphere across the contact only
         return entry
@@ -390,12 +390,13 @@ def _gravity(deck, loc, words: list, types: tuple, row: dict, contact: Contact, 
     if kept.count(True) == 1 and not any(still):
         moving = kept.index(False)
         alone = contact if unmoved is not None else held_contact(contact, pair, moving)
-        return _onto_still(entry, deck, words, row, pair, acted, moving, alone, "its partner (which never moves)")
+        return _onto_still(entry, deck, words, row, pair, types, acted, moving, alone,
+                           "its partner (which never moves)")
     if kept.count(True) == 2 and not any(still):
         return None                  # neither moves: the collision does not happen (said beside it)
     if still.count(True) == 1 and frozen_contact is not None:
         moving = still.index(False)
-        return _onto_still(entry, deck, words, row, pair, acted, moving, frozen_contact(1 - moving),
+        return _onto_still(entry, deck, words, row, pair, types, acted, moving, frozen_contact(1 - moving),
                            "its frozen partner")
     if acted[0] == acted[1]:
         return None                  # both bodies fall alike, or neither falls: the relative motion is the contact's
@@ -424,7 +425,7 @@ def _cut(deck, types: tuple, entry: dict, alike: bool = False) -> bool:
     return bool(cutting)
 
 
-def _onto_still(entry: dict, deck, words: list, row: dict, pair: Pair, acted: list, moving: int,
+def _onto_still(entry: dict, deck, words: list, row: dict, pair: Pair, types: tuple, acted: list, moving: int,
                 alone: Contact, partner: str) -> dict | None:
     """The gravity ``words`` on a pair whose body ``moving`` meets a partner that does not move
     (``alone``: the contact the moving body sees), entry updated; None where the gravity does not
@@ -436,7 +437,7 @@ def _onto_still(entry: dict, deck, words: list, row: dict, pair: Pair, acted: li
                         "computed for LAMMPS only (whose m_eff there was checked)")
         return entry
     entry["what"] = f"a gravity on the moving sphere, which pushes it into {partner} or pulls it off during a contact"
-    _pushed_against(entry, deck, words, row, alone,
+    _pushed_against(entry, deck, words, types[moving], row, alone,
                     Pair((pair.R1, pair.R2)[moving], WALL_SIZE, (pair.m1, pair.m2)[moving], WALL_SIZE), None,
                     sphere=True)
     return entry
@@ -519,17 +520,20 @@ def gravity_vector(words: list, dimension: int = 3) -> tuple | None:
     return None
 
 
-def _pushed_against(entry: dict, deck, words: list, row: dict, contact: Contact, pair: Pair, faces,
+def _pushed_against(entry: dict, deck, words: list, t: int, row: dict, contact: Contact, pair: Pair, faces,
                     sphere: bool = False) -> None:
-    """entry's "faces" and "eps_engine" under the gravity ``words`` along the normals ``faces``
+    """entry's "faces" and "eps_engine" under the gravity ``words``, with every other fix gravity on
+    the moving sphere (type ``t``), along the normals ``faces``
     (:func:`restitution.dem.dialect.state.wall_faces`; None: the two extreme directions).
     ``sphere``: the sphere moves against an immovable sphere (``pair`` the moving one against an
     infinite mass, ``contact`` its own)."""
-    field = gravity_vector(words, getattr(deck, "dimension", 3))
+    field, others = _gravities(deck, words, t)
     if field is None or deck.units not in _GRAVITY_UNITS:
-        entry["why"] += ("its size is not computed (a magnitude or direction this does not read)" if field is None
+        entry["why"] += (f"its size is not computed ({others})" if field is None
                          else f"its size is not computed in units {deck.units}")
         return
+    if others:
+        entry["why"] += f"with the fix gravity {', '.join(others)} on the same sphere (their sum acts): "
     size = math.sqrt(sum(c * c for c in field))
     partner, line = ("its partner", "line of centres") if sphere else ("the wall", "wall's normal")
     if faces is None:
@@ -556,6 +560,37 @@ def _pushed_against(entry: dict, deck, words: list, row: dict, contact: Contact,
         entry["eps_engine"] = entry["faces"][0]["eps_engine"]
     entry["why"] += (f"the contact law integrated with gravity's component along the {line} acting on the "
                      f"sphere (0 where the sphere does not leave {partner})")
+
+
+def _gravities(deck, words: list, t: int) -> tuple:
+    """(the acceleration of the gravity ``words`` and every other fix gravity on type t's spheres
+    together, [the others' IDs]): LAMMPS and LIGGGHTS add them (field round 47, G07: two fixes of 250
+    down, LAMMPS 0.260657 off the floor where each fix's note computed alone said 0.316664). (None,
+    why) where one's magnitude or direction is not read, or its group cannot be typed.
+
+    >>> from restitution.dem.dialect.state import Deck
+    >>> d = Deck(ntypes=1, groups={"all": {1}}, beside=[((None, 3), "fix a all gravity 9 vector 0 0 -1".split()),
+    ...                                                  ((None, 4), "fix b all gravity 3 vector 0 0 -1".split())])
+    >>> _gravities(d, d.beside[0][1], 1)
+    ((0.0, 0.0, -12.0), ['b'])
+    """
+    dimension = getattr(deck, "dimension", 3)
+    total, others = [0.0, 0.0, 0.0], []
+    for _, w in deck.beside:
+        if w[3] != "gravity":
+            continue
+        if w[1] != words[1]:
+            held = group_types(deck, w[2])
+            if held is None:
+                return None, f"beside the fix gravity {w[1]}, whose group the audit cannot type"
+            if t not in held:
+                continue
+            others.append(w[1])
+        field = gravity_vector(w, dimension)
+        if field is None:
+            return None, "a magnitude or direction this does not read"
+        total = [a + b for a, b in zip(total, field)]
+    return tuple(total), others
 
 
 def _pushed_eps(contact: Contact, g: float, pair: Pair, push: float) -> float:

@@ -35,7 +35,10 @@ INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sp
 CLUMP_MOVERS = frozenset({"multisphere"})
 #: Fix styles that move the atoms of their group: the integrators, fix move (a prescribed motion),
 #: nve/noforce (each atom at its own velocity, which no force changes) and the clumps' movers
-MOVERS = INTEGRATORS | {"move", "nve/noforce"} | CLUMP_MOVERS
+MOVERS = INTEGRATORS | {"move", "nve/noforce"} | CLUMP_MOVERS | {"brownian", "brownian/sphere", "brownian/asphere"}
+#: Movers whose steps are overdamped and random, the force read as a drift (field round 47, F36: as
+#: the only mover the pair never met in LAMMPS, where the audit refused the deck as one no fix moves)
+_BROWNIAN = ("brownian", "brownian/sphere", "brownian/asphere")
 def rigid(style: str) -> bool:
     """Whether a fix style joins its atoms into rigid bodies (rigid, rigid/small, rigid/nve, ...),
     whose pairs are named, not audited (:func:`motion`).
@@ -356,8 +359,8 @@ def _outside(deck: Deck, group: str, t: int) -> bool:
 
 
 def excluded(deck: Deck, i: int, j: int) -> tuple | None:
-    """(loc, text, why) where the engine never makes a contact between types i and j, or cannot be
-    known to make it; None where it does."""
+    """(loc, text, why) where the engine never makes a contact between types i and j, cannot be
+    known to make it, or adds to it a force of bonds; None where the contact is the law's alone."""
     for loc, line, (style, *args) in deck.excludes:
         if style == "include":
             if _outside(deck, args[0], i) or _outside(deck, args[0], j):
@@ -386,13 +389,43 @@ def excluded(deck: Deck, i: int, j: int) -> tuple | None:
             if held is None or (i in held and j in held):
                 return (*loc, line, f"types {i} {j}: neigh_modify excludes pairs by molecule, which the audit does "
                                     "not read: not audited")
-    if deck.bonds and deck.special_lj[0] != 1.0:
-        loc, line = deck.bonds
-        w = deck.special_lj[0]
-        what = "no contact" if w == 0 else f"their contact scaled by special_bonds' weight {w:g}"
-        return (*loc, line, f"types {i} {j}: bonded atoms get {what}, and the audit cannot tell which atoms are "
-                            "bonded: not audited")
-    return None
+    return _bonded(deck, i, j)
+
+
+def _bonded(deck: Deck, i: int, j: int) -> tuple | None:
+    """(loc, text, why) where the deck has bonds and a pair of types i j may hold bonded atoms whose
+    contact is not the law's alone; None where it is. The audit cannot tell which atoms are bonded,
+    so every pair is named. LAMMPS scales the pair force of 1-2, 1-3 and 1-4 neighbours along the
+    bonds by special_bonds' three lj weights, leaving a weight-0 pair out of its lists (field round 47,
+    Y21 Y22 Y27: weights 1 0 1 and 1 1 0 on a chain through the pair: LAMMPS -1, no contact, where the
+    audit printed 0.4149 with no word, looking at the 1-2 weight only); and a bond style with a
+    force pulls on its atoms during a contact (Y08: harmonic, LAMMPS 0.291769, the audit 0.4149).
+
+    >>> d = Deck(ntypes=1, bonds=((None, 5), "create_bonds single/bond 1 1 3"), special_lj=(1.0, 0.0, 1.0))
+    >>> _bonded(d, 1, 1)[3][:60]
+    "types 1 1: bonded atoms' neighbours 1-3 get no contact (spec"
+    >>> _bonded(replace(d, special_lj=(1.0, 1.0, 1.0)), 1, 1) is None
+    True
+    >>> _bonded(replace(d, special_lj=(1.0, 1.0, 1.0), bond_forces={"bond": ((None, 4), "bond_style harmonic")}),
+    ...         1, 1)[3][:52]
+    'types 1 1: bond_style harmonic pulls on bonded atoms'
+    """
+    if not deck.bonds:
+        return None
+    loc, line = deck.bonds
+    if deck.bond_forces:
+        kind, (where, text) = next(iter(deck.bond_forces.items()))
+        return (*where, text, f"types {i} {j}: {text} pulls on bonded atoms during a contact (a {kind} force beside "
+                              "the contact law's), and the audit cannot tell which atoms are bonded: not audited")
+    scaled = [(n, w) for n, w in zip(("1-2", "1-3", "1-4"), deck.special_lj) if w != 1.0]
+    if not scaled:
+        return None
+    n, w = scaled[0]
+    what = "no contact" if w == 0 else f"their contact scaled by {w:g}"
+    whom = "bonded atoms" if n == "1-2" else f"bonded atoms' neighbours {n}"
+    return (*loc, line, f"types {i} {j}: {whom} get {what} (special_bonds' lj weights "
+                        f"{' '.join(f'{x:g}' for x in deck.special_lj)}), and the audit cannot tell which atoms are "
+                        "bonded: not audited")
 
 
 def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
@@ -440,6 +473,9 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
                              "type: the pairs are audited as spheres that move freely; a sphere outside the group "
                              "never moves, and its eps differs")
         if t in held:
+            if style in _BROWNIAN:
+                return "unknown", (f"fix {fix} ({style}) moves type {t} by overdamped random steps, its velocity "
+                                   "not the contact's: no eps of the law is its")
             if (integrates := _integrates(line)) is None:
                 return "unknown", (f"fix {fix} moves type {t} at a set velocity along some axes and integrates "
                                    "it under the force along the others (NULL): its eps depends on the "

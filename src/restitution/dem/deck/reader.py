@@ -50,7 +50,12 @@ _IRRELEVANT = {"units", "atom_style", "atom_modify", "boundary", "newton", "comm
                "replicate",
                # atom IDs given anew, the spheres, their places and velocities kept; a minimizer's
                # settings (field round 46, lists: both "not understood" from the start)
-               "reset_atoms", "reset_atom_ids", "min_modify"}
+               "reset_atoms", "reset_atom_ids", "min_modify",
+               # a bonded interaction's coefficients: where its style has a force, the pairs are named
+               # for the style (meeting.excluded)
+               "bond_coeff", "angle_coeff", "dihedral_coeff", "improper_coeff"}
+#: The styles of bonded interactions, read for whether they have a force (field round 47, Y08)
+_BONDED_STYLES = {"bond_style", "angle_style", "dihedral_style", "improper_style"}
 _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "deposit",
                      "insert/stream", "insert/rate/region", "particledistribution/discrete", "check/timestep/gran",
                      "enforce2d", "move",
@@ -61,7 +66,9 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      "nve/noforce",
                      # stores values, and the plain integrators an accelerator's suffix names (field
                      # round 46, lists: "may add forces" said of each)
-                     "store/state", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk"}
+                     "store/state", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk",
+                     # movers whose pairs meeting.motion names (field round 47, F36)
+                     "brownian", "brownian/sphere", "brownian/asphere"}
 #: Fixes that push no atom but change what the runs see, each with what it does: named as such, not
 #: as a force (field round 15: "may add forces" said of each). Where a run sees fix set or atom/swap,
 #: the runs are made for real (:func:`restitution.dem.deck.runtime.resized_by_runs`)
@@ -427,7 +434,7 @@ _RESTORED = ("code", "ntypes", "units", "dimension", "atom_style", "atom_style_l
              "unmapped", "reset", "coeffs", "gran", "cutoff", "hybrid", "substyle", "hybrid_one", "none_at",
              "granular_of", "others",
              "idle", "groups", "empty_groups", "filled_groups", "partial_groups", "labels", "dt", "atoms", "present",
-             "present_unknown", "bonds", "special_lj", "periodic")
+             "present_unknown", "bonds", "special_lj", "bond_forces", "periodic")
 #: What a LIGGGHTS 3.8.0 restart file stores of them (measured after write_restart, clear,
 #: read_restart): the pair style with its normal model (a hooke/stiffness pair style not given again
 #: stops the next run for want of its kn, a fix property/global, which the restart does not hold)
@@ -812,6 +819,11 @@ def _execute(deck: Deck, words: list, line: str, loc, read_file) -> None:
         special_bonds(deck, words, where, line)
     elif cmd == "create_bonds":
         deck.bonds = (loc, line)
+    elif cmd in _BONDED_STYLES and len(words) >= 2:
+        kind = cmd.removesuffix("_style")
+        deck.bond_forces = {k: v for k, v in deck.bond_forces.items() if k != kind}
+        if not set(words[1:]) <= {"zero", "none", "nocoeff"}:
+            deck.bond_forces[kind] = (loc, line)
     elif cmd == "timestep" and len(words) >= 2:
         deck.dt = number(words[1], where, line)
         deck.dt_reset = ()           # a step known again, whatever a fix dt/reset left
@@ -1430,7 +1442,7 @@ def contact_key(deck: Deck) -> str:
                        # a moving fix's group given again between runs holds other atoms from there on
                        {g: deck.groups.get(g, "undefined") for _, _, g, _ in deck.movers.values()},
                        {k: (t, m) for k, (_, t, m) in deck.shaken.items()},
-                       bool(deck.bonds), deck.special_lj, deck.dt_reset[1:],
+                       bool(deck.bonds), deck.special_lj, sorted(deck.bond_forces), deck.dt_reset[1:],
                        # where a cutoff may leave a pair out, the lists' reach is the run's (field round
                        # 28, N19: a skin made small after the first run was audited with the first's)
                        # and the global cutoff a pair_style granular given again sets (field round 33, C07:
@@ -1787,7 +1799,7 @@ def _read_data(deck: Deck, words: list, where: str, line: str, read_file) -> Non
             section, hint = body, comment.strip()
             if section in ("Pair Coeffs", "PairIJ Coeffs") and coeffs and deck.code != "LAMMPS":
                 raise DeckError(here, body, "a data file's pair coefficients before pair_style granular")
-            if section == "Bonds":
+            if section in ("Bonds", "Angles", "Dihedrals", "Impropers"):
                 deck.bonds = ((name, n), body)
             if section not in {"Atoms", "Pair Coeffs", "PairIJ Coeffs", "Atom Type Labels"} | _DATA_IRRELEVANT:
                 deck.unknown.append((name, n, raw.strip(), "data-file section not read"))

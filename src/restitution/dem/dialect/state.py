@@ -219,11 +219,14 @@ class Deck:
     idle: dict = field(default_factory=dict)
     # who meets whom (restitution.dem.deck.meeting): neigh_modify exclude settings in force, (loc,
     # text, [style, args...]); fix ID -> (loc, text, group, style) of the fixes that move atoms (an
-    # integrator, fix move); (loc, text) of a command that made bonds, and special_bonds' lj weights
+    # integrator, fix move); (loc, text) of a command that made bonds (or angles, ...), and special_bonds' lj weights
     excludes: list = field(default_factory=list)
     movers: dict = field(default_factory=dict)
     bonds: tuple = ()
     special_lj: tuple = (0.0, 0.0, 0.0)
+    # the bonded interactions with a force: "bond", "angle", ... -> (loc, text) of their style
+    # command (not zero or none, which give none)
+    bond_forces: dict = field(default_factory=dict)
     # (inserting fix ID, type) -> (the type, the (radius, density) it inserts of that type), for
     # the inserting fixes in force (a LAMMPS pour, a LIGGGHTS insert/* of one-sized sphere
     # templates); type -> why a set after their runs leaves the size of the atoms they made unknown
