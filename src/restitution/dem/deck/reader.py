@@ -571,6 +571,21 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
         if held.get("pair_style", "none") != "none" and held["set"]:
             deck.restart_pairs = (loc, line, held["pair_style"], set(held["set"]))
         return {}
+    if written is None and "ntypes" in held and "dt" not in held:
+        # LIGGGHTS' account (no time step, no coefficients): after the read it has its units' default
+        # step, the file's pair style with its model, and no fix (materials, walls): the deck's own
+        # lines after the read decide, and a pair style not given again leaves its pairs not audited
+        # (field round 47a, M10 and CFDEM's Ergun run decks R03-R06, which give each again: refused,
+        # where LIGGGHTS measured 0.500006, 0.295686)
+        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
+        deck.__dict__.update(fresh.__dict__)
+        deck.units, deck.atom_style, deck.ntypes = held.get("units"), held.get("atom_style"), held["ntypes"]
+        deck.held, deck.atoms = {}, True
+        _as_read(deck, held, "LIGGGHTS")
+        n = held["ntypes"]
+        deck.restart_pairs = (loc, line, f"pair_style {held.get('pair_style')} (its model the file's)",
+                              {(i, j) for i in range(1, n + 1) for j in range(i, n + 1)})
+        return {}
     if written is None:
         raise DeckError(where, line, f"read_restart reads {words[1]}, which the deck did not write before (with "
                                      "write_restart, in the engine's pass): neither engine gives an account of the "
@@ -961,6 +976,10 @@ def _idle(sub: str, args: list) -> bool:
 def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if deck.unmapped:
         return                           # its coefficients are the engine's to check
+    if deck.code not in DIALECTS and deck.restart_pairs:
+        at, text, style, _ = deck.restart_pairs
+        raise DeckError(where, line, f"the pair style is the one {place(at)} ({text}) read, {style}, of which the "
+                                     "engine gives no account: not audited (give pair_style again after the read)")
     if deck.code not in DIALECTS:
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     if deck.hybrid and len(words) > 3:
@@ -1485,7 +1504,7 @@ def _stage(deck: Deck, loc, line: str) -> None:
         pairs = ", ".join(f"{i} {j}" for i, j in sorted(kept))
         raise DeckError(place(at), text, f"the restart file holds {style} coefficients for types {pairs}, which the "
                                          "deck did not set again before the run at "
-                                         f"{place(loc)}: LAMMPS gives no account of them, not audited")
+                                         f"{place(loc)}: the engine gives no account of them, not audited")
     key = contact_key(deck)
     if deck.stages and deck.stages[-1][2] == key:
         deck.stages[-1][0].append((loc, line))

@@ -42,6 +42,9 @@ DYNAMIC = "label restitution_unchecked_{}"
 SKIPPED_COMMANDS = frozenset({
     "shell", "python", "plugin", "pair_write", "bond_write", "angle_write", "dihedral_write", "write_data", "write_restart", "write_dump", "write_coeff", "dump",
     "dump_modify", "undump", "restart", "log", "print", "info", "echo", "timer", "group2ndx",
+    # LIGGGHTS' log of the thermo output: its folder may not be in the copy (field round 47a, M04:
+    # thermo_log ../DEM/post/thermo.txt, "Cannot open thermo log file" in the audit's pass only)
+    "thermo_log",
     "balance", "rerun", "message", "server", "mdi", "kim", "net", "geturl", "fitpod",
     # these write a file of their own (a VMD script of a region, a matrix of second or third
     # derivatives of the energy)
@@ -196,7 +199,8 @@ class Scratch:
     names of the others: a write under one changes what a read under another reads by hand, where
     the copy holds them apart (:func:`_materialise_links`); ``cd_folders`` the folders in the deck's
     folder that its ``shell cd`` commands name as written (normalised), from which a name climbing by
-    .. may land in the copy (:func:`_outside`)."""
+    .. may land in the copy (:func:`_outside`); ``coupled`` whether the last ``fix couple/cfd``
+    met couples in memory, so that it and its sub-fixes run as written."""
     root: Path
     deck: Path
     skipped: list = field(default_factory=list)
@@ -221,6 +225,7 @@ class Scratch:
     parts: dict = field(default_factory=dict)
     aliases: dict = field(default_factory=dict)
     granular: bool = False
+    coupled: bool = False
 
 
 def normalised(text: str) -> str:
@@ -917,6 +922,16 @@ def _safe(command: str, loc, scratch: Scratch, marker, top: bool = True) -> str 
             if words[k + 1] != "yes":
                 return " ".join(words[:k + 1] + ["yes"] + words[k + 2:])
             return None
+        if len(words) > 3 and words[3].startswith("couple/cfd"):
+            # LIGGGHTS' CFD coupling exchanging in memory (mpi) writes nothing, and run alone it
+            # exchanges nothing; its sub-fixes hold the per-atom forces a variable or compute may
+            # read (field round 47a, M01 M02 and CFDEM's Ergun run decks: the stand-in stopped
+            # LIGGGHTS, "Mismatched fix in variable formula", where LIGGGHTS runs them, 0.500006).
+            # Coupling through files (file) is not run, nor are the sub-fixes of a coupling not run
+            if words[3] == "couple/cfd":
+                scratch.coupled = "file" not in words[4:]
+            if scratch.coupled:
+                return None
         if len(words) > 3 and words[3].startswith(_SKIPPED_FIX_PREFIXES):
             scratch.skipped.append((f"fix {words[3]}", loc, key))
             # a fix of the same ID that never acts, for unfix and fix_modify; its echo from this

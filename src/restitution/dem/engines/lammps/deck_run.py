@@ -136,6 +136,9 @@ def marker(root: Path, clock: bool = False, real: bool = False):
     # LAMMPS runs a file a run's every includes at once, after the part (field round 35, E14);
     # LIGGGHTS 3.8.0 queues it until the run has ended (L06: four includes after the last part)
     text.includes_in_every = True
+    # commands the copy skips that LAMMPS does not have: left as written, so that LAMMPS stops where
+    # the deck's own run would (LIGGGHTS' thermo_log: "Unknown command", measured)
+    text.unknown = frozenset({"thermo_log"})
     return text
 
 
