@@ -118,3 +118,12 @@ def test_a_run_deck_reading_its_init_decks_restart(tmp_path, again):
         assert abs(_liggghts_eps(deck) - 0.5) < 1e-4           # measured 0.500006
     else:
         assert status == 2 and "pair_style gran (its model the file's), of which the engine gives no account" in err, err
+
+
+@needs_liggghts
+@pytest.mark.dem
+def test_a_deck_no_fix_moves_is_refused_in_liggghts_words(tmp_path):
+    """B10 (a CFD case whose sphere is held): the refusal quoted a LAMMPS warning LIGGGHTS does not print."""
+    deck = _in_dem(tmp_path, PAIR.replace("fix integr all nve/sphere\n", "") + "run 5000\n")
+    status, out, err = run(deck, "--g", "1")
+    assert status == 2 and "no fix integrates any atom in the deck's runs: no contact" in err, err

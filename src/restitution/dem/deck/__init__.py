@@ -1433,10 +1433,11 @@ def audit_deck(text: str, speeds, radius: dict | None = None, density: dict | No
     if deck.stages and not any(snap.movers for _, snap in stages):
         # the engine's runs move no atom: no two spheres ever meet, and no eps is theirs
         (source, n), line = stages[0][0][0]
-        raise DeckError(place((source, n)), line, "no fix integrates any atom in the deck's runs (LAMMPS: \"No fixes "
-                                                  "with time integration, atoms won't move\"): no contact ever "
-                                                  "happens, so there is no eps to audit; an integrator (fix nve/sphere) "
-                                                  "makes one")
+        # LAMMPS warns so; LIGGGHTS 3.8.0 says nothing (field round 47a, B10: a CFD case's held sphere)
+        said = ' (LAMMPS: "No fixes with time integration, atoms won\'t move")' if deck.code == "LAMMPS" else ""
+        raise DeckError(place((source, n)), line, f"no fix integrates any atom in the deck's runs{said}: no contact "
+                                                  "ever happens, so there is no eps to audit; an integrator (fix "
+                                                  "nve/sphere) makes one")
     audited, unmapped = [], []
     # a loop runs one line many times: each run says which time it is, where there are several
     times = {loc: n for loc, n in Counter(loc for runs, _ in stages for loc, _ in runs).items() if n > 1}
