@@ -18,7 +18,7 @@ from dataclasses import replace
 
 from ..dialect.state import DEFAULT_SKIN, Deck, number_or_none, place
 
-__all__ = ["MOVERS", "INTEGRATORS", "CLUMP_MOVERS", "neigh_modify", "special_bonds", "excluded", "motion",
+__all__ = ["MOVERS", "INTEGRATORS", "CLUMP_MOVERS", "BROWNIAN", "neigh_modify", "special_bonds", "excluded", "motion",
            "held_contact", "group_types", "integrators", "late_speeds", "phantom_velocity", "rigid", "unlisted"]
 
 #: Fix styles that move the atoms of their group by integrating the forces on them. Not LIGGGHTS'
@@ -35,10 +35,10 @@ INTEGRATORS = frozenset({"nve/sphere", "nve", "nve/limit", "nvt/sphere", "npt/sp
 CLUMP_MOVERS = frozenset({"multisphere"})
 #: Fix styles that move the atoms of their group: the integrators, fix move (a prescribed motion),
 #: nve/noforce (each atom at its own velocity, which no force changes) and the clumps' movers
-MOVERS = INTEGRATORS | {"move", "nve/noforce"} | CLUMP_MOVERS | {"brownian", "brownian/sphere", "brownian/asphere"}
 #: Movers whose steps are overdamped and random, the force read as a drift (field round 47, F36: as
 #: the only mover the pair never met in LAMMPS, where the audit refused the deck as one no fix moves)
-_BROWNIAN = ("brownian", "brownian/sphere", "brownian/asphere")
+BROWNIAN = frozenset({"brownian", "brownian/sphere", "brownian/asphere"})
+MOVERS = INTEGRATORS | {"move", "nve/noforce"} | CLUMP_MOVERS | BROWNIAN
 def rigid(style: str) -> bool:
     """Whether a fix style joins its atoms into rigid bodies (rigid, rigid/small, rigid/nve, ...),
     whose pairs are named, not audited (:func:`motion`).
@@ -412,7 +412,6 @@ def _bonded(deck: Deck, i: int, j: int) -> tuple | None:
     """
     if not deck.bonds:
         return None
-    loc, line = deck.bonds
     if deck.bond_forces:
         kind, (where, text) = next(iter(deck.bond_forces.items()))
         return (*where, text, f"types {i} {j}: {text} pulls on bonded atoms during a contact (a {kind} force beside "
@@ -421,6 +420,7 @@ def _bonded(deck: Deck, i: int, j: int) -> tuple | None:
     if not scaled:
         return None
     n, w = scaled[0]
+    loc, line = deck.bonds
     what = "no contact" if w == 0 else f"their contact scaled by {w:g}"
     whom = "bonded atoms" if n == "1-2" else f"bonded atoms' neighbours {n}"
     return (*loc, line, f"types {i} {j}: {whom} get {what} (special_bonds' lj weights "
@@ -473,7 +473,7 @@ def motion(deck: Deck, t: int, ran: bool = True) -> tuple[str, str]:
                              "type: the pairs are audited as spheres that move freely; a sphere outside the group "
                              "never moves, and its eps differs")
         if t in held:
-            if style in _BROWNIAN:
+            if style in BROWNIAN:
                 return "unknown", (f"fix {fix} ({style}) moves type {t} by overdamped random steps, its velocity "
                                    "not the contact's: no eps of the law is its")
             if (integrates := _integrates(line)) is None:

@@ -16,7 +16,7 @@ import os
 import re
 
 from .beside import ADAPT, BESIDE, adapt_parts, adapted_diameter
-from .meeting import MOVERS, neigh_modify, rigid, special_bonds
+from .meeting import BROWNIAN, MOVERS, neigh_modify, rigid, special_bonds
 from .scratch import GUARDED
 from .stream import SEEDED
 from .runtime import boundary_faces, constant_in_time
@@ -66,9 +66,8 @@ _IRRELEVANT_FIXES = {"gravity", "nve/sphere", "nve", "balance", "insert/pack", "
                      "nve/noforce",
                      # stores values, and the plain integrators an accelerator's suffix names (field
                      # round 46, lists: "may add forces" said of each)
-                     "store/state", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk",
-                     # movers whose pairs meeting.motion names (field round 47, F36)
-                     "brownian", "brownian/sphere", "brownian/asphere"}
+                     "store/state", "nve/sphere/omp", "nve/omp", "nve/sphere/kk", "nve/kk"} \
+    | BROWNIAN                       # movers whose pairs meeting.motion names (field round 47, F36)
 #: Fixes that push no atom but change what the runs see, each with what it does: named as such, not
 #: as a force (field round 15: "may add forces" said of each). Where a run sees fix set or atom/swap,
 #: the runs are made for real (:func:`restitution.dem.deck.runtime.resized_by_runs`)
@@ -553,16 +552,27 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
     """
     where = place(loc)
     held = _restart_info(info) if info is not None else {}
-    if written is None and "dt" in held and "ntypes" in held:
-        # a restart the deck did not write (shipped beside it): LAMMPS says what it holds but not its
-        # contact coefficients (write_coeff writes none for the granular styles), so the deck's own
-        # lines after the read decide, and a pair whose coefficients only the file holds is not
-        # audited (field round 18, D3: b09 refused though it set every pair again)
+    if written is None and "ntypes" in held:
+        # a restart the deck did not write (shipped beside it, or written by a separate init deck):
+        # neither engine says what contact coefficients it holds (LAMMPS' write_coeff writes none for
+        # the granular styles), so the deck's own lines after the read decide, and a pair whose
+        # coefficients only the file holds is not audited (field round 18, D3: b09 refused though it
+        # set every pair again). LIGGGHTS' account has no time step (after the read it has its units'
+        # default) and no coefficients; its restart holds the pair style with its model and no fix,
+        # so a pair style not given again leaves the pairs not audited (field round 47a, M10 and
+        # CFDEM's Ergun run decks R03-R06, which give each again: refused, where LIGGGHTS measured
+        # 0.500006, 0.295686)
         fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
         deck.__dict__.update(fresh.__dict__)
         deck.units, deck.atom_style, deck.ntypes, deck.dt = held.get("units"), held.get("atom_style"), \
-            held["ntypes"], held["dt"]
+            held["ntypes"], held.get("dt")
         deck.held, deck.atoms = {}, True
+        if "dt" not in held:
+            _as_read(deck, held, "LIGGGHTS")
+            n = held["ntypes"]
+            deck.restart_pairs = (loc, line, f"pair_style {held.get('pair_style')} (its model the file's)",
+                                  {(i, j) for i in range(1, n + 1) for j in range(i, n + 1)})
+            return {}
         if held.get("pair_style") == "granular":
             # LAMMPS restores the style (its models come per pair_coeff line), which the deck need not
             # give again (its manual; field round 24, V33): read as given here
@@ -570,21 +580,6 @@ def read_restart(deck: Deck, words: list, loc, line: str, written: tuple | None,
         _as_read(deck, held, "LAMMPS")
         if held.get("pair_style", "none") != "none" and held["set"]:
             deck.restart_pairs = (loc, line, held["pair_style"], set(held["set"]))
-        return {}
-    if written is None and "ntypes" in held and "dt" not in held:
-        # LIGGGHTS' account (no time step, no coefficients): after the read it has its units' default
-        # step, the file's pair style with its model, and no fix (materials, walls): the deck's own
-        # lines after the read decide, and a pair style not given again leaves its pairs not audited
-        # (field round 47a, M10 and CFDEM's Ergun run decks R03-R06, which give each again: refused,
-        # where LIGGGHTS measured 0.500006, 0.295686)
-        fresh = Deck(unknown=deck.unknown, ignored=deck.ignored, stages=deck.stages)
-        deck.__dict__.update(fresh.__dict__)
-        deck.units, deck.atom_style, deck.ntypes = held.get("units"), held.get("atom_style"), held["ntypes"]
-        deck.held, deck.atoms = {}, True
-        _as_read(deck, held, "LIGGGHTS")
-        n = held["ntypes"]
-        deck.restart_pairs = (loc, line, f"pair_style {held.get('pair_style')} (its model the file's)",
-                              {(i, j) for i in range(1, n + 1) for j in range(i, n + 1)})
         return {}
     if written is None:
         raise DeckError(where, line, f"read_restart reads {words[1]}, which the deck did not write before (with "
@@ -976,11 +971,12 @@ def _idle(sub: str, args: list) -> bool:
 def _pair_coeff(deck: Deck, words: list, where: str, line: str, loc) -> None:
     if deck.unmapped:
         return                           # its coefficients are the engine's to check
-    if deck.code not in DIALECTS and deck.restart_pairs:
-        at, text, style, _ = deck.restart_pairs
-        raise DeckError(where, line, f"the pair style is the one {place(at)} ({text}) read, {style}, of which the "
-                                     "engine gives no account: not audited (give pair_style again after the read)")
     if deck.code not in DIALECTS:
+        if deck.restart_pairs:
+            at, text, style, _ = deck.restart_pairs
+            raise DeckError(where, line, f"the pair style is the one {place(at)} ({text}) read, {style}, of which "
+                                         "the engine gives no account: not audited (give pair_style again after "
+                                         "the read)")
         raise DeckError(where, line, "pair_coeff before a pair_style the reader maps")
     if deck.hybrid and len(words) > 3:
         sub = words[3]
